@@ -1,0 +1,103 @@
+//! The headless command line: `rivet check`, `rivet fmt`.
+
+#![allow(clippy::print_stdout, clippy::print_stderr)] // Printing is what a CLI is for.
+
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand};
+use project_model::{LoadError, load_project, save_project};
+
+/// Rivet: an engineering studio for IEC 61131-3 controllers.
+#[derive(Debug, Parser)]
+#[command(name = "rivet", version, about)]
+pub struct Cli {
+    /// What to do headless; without a subcommand the studio opens.
+    #[command(subcommand)]
+    pub command: Option<Command>,
+    /// The project folder the studio opens (default: the example machine project).
+    pub project: Option<PathBuf>,
+}
+
+/// Headless subcommands.
+#[derive(Debug, Subcommand)]
+pub enum Command {
+    /// Load a project and print every problem as `file:line: message`; exit 1 on any error.
+    Check {
+        /// The project folder (the folder holding rivet.toml).
+        project: PathBuf,
+    },
+    /// Load a project and save it in canonical form; a canonical project is left untouched.
+    Fmt {
+        /// The project folder (the folder holding rivet.toml).
+        project: PathBuf,
+    },
+}
+
+/// Runs a subcommand and returns the process exit code.
+pub fn run(command: Command) -> ExitCode {
+    let result = match command {
+        Command::Check { project } => check(&project),
+        Command::Fmt { project } => fmt(&project),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(error) => {
+            report_error(&error);
+            ExitCode::FAILURE
+        }
+    }
+}
+
+/// Prints an error and its causes to standard error.
+pub fn report_error(error: &anyhow::Error) {
+    eprintln!("{error}");
+    for cause in error.chain().skip(1) {
+        eprintln!("  caused by: {cause}");
+    }
+}
+
+fn check(dir: &Path) -> anyhow::Result<()> {
+    let loaded = load_project(dir).map_err(describe_load_error)?;
+    for warning in &loaded.warnings {
+        eprintln!("{warning}");
+    }
+    println!(
+        "{}: project '{}' is fine ({} objects, {} tasks)",
+        dir.display(),
+        loaded.project.name,
+        loaded.project.application.objects().len(),
+        loaded.project.tasks.len()
+    );
+    Ok(())
+}
+
+fn fmt(dir: &Path) -> anyhow::Result<()> {
+    let loaded = load_project(dir).map_err(describe_load_error)?;
+    for warning in &loaded.warnings {
+        eprintln!("{warning}");
+    }
+    let report = save_project(&loaded.project, dir, &loaded.files)?;
+    for file in &report.written {
+        println!("formatted {}", dir.join(file).display());
+    }
+    for file in &report.removed {
+        println!("removed {}", dir.join(file).display());
+    }
+    if report.written.is_empty() && report.removed.is_empty() {
+        println!("{}: already canonical", dir.display());
+    }
+    Ok(())
+}
+
+/// Turns a load error into one message with a line per problem and a count.
+fn describe_load_error(error: LoadError) -> anyhow::Error {
+    let errors = error
+        .problems
+        .iter()
+        .filter(|problem| problem.severity == project_model::Severity::Error)
+        .count();
+    anyhow::anyhow!(
+        "{error}\n{errors} error(s); the project was not loaded and nothing was changed"
+    )
+}

@@ -1,0 +1,12 @@
+//! The Rivet studio and its headless command line.
+//!
+//! `rivet` without a subcommand opens the studio (an eframe window) on a project folder, or on
+//! the example machine project when none is given. With a subcommand it works headless:
+//! `rivet check` and `rivet fmt` today; build, simulate, download and the online commands as
+//! they arrive.
+//!
+//! This is the only crate that knows eframe; it owns the window, the docking layout, the device
+//! tree and the menus, and it applies the edits that editors emit.
+
+pub mod cli;
+pub mod studio;

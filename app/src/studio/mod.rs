@@ -1,0 +1,50 @@
+//! The studio window.
+
+mod device_tree;
+mod document_view;
+mod documents;
+mod fonts;
+mod i18n;
+mod property_view;
+mod session;
+mod settings;
+mod studio_app;
+mod tree_node;
+
+use std::path::PathBuf;
+
+pub use i18n::{Language, Text};
+pub use session::{SaveAsError, Session};
+pub use settings::{Settings, Theme};
+pub use studio_app::{StatusMessage, StudioApp};
+pub use tree_node::TreeNode;
+
+/// Opens the studio window on `project` (the example project when `None`) and returns when the
+/// window closes.
+pub fn run(project: Option<PathBuf>) -> anyhow::Result<()> {
+    let project_dir = project.unwrap_or_else(assets::example_project_dir);
+    let options = eframe::NativeOptions {
+        viewport: egui::ViewportBuilder::default()
+            .with_title("Rivet")
+            .with_app_id("rivet")
+            .with_inner_size([1280.0, 800.0])
+            .with_min_inner_size([640.0, 400.0]),
+        ..Default::default()
+    };
+    eframe::run_native(
+        "Rivet",
+        options,
+        Box::new(move |creation| {
+            let settings = creation
+                .storage
+                .and_then(|storage| eframe::get_value(storage, settings::SETTINGS_KEY))
+                .unwrap_or_default();
+            Ok(Box::new(StudioApp::new(
+                &creation.egui_ctx,
+                settings,
+                Some(project_dir),
+            )))
+        }),
+    )
+    .map_err(|error| anyhow::anyhow!("the studio window could not be opened: {error}"))
+}

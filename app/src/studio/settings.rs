@@ -1,0 +1,38 @@
+//! Settings remembered between runs of the studio.
+
+use serde::{Deserialize, Serialize};
+
+use super::i18n::Language;
+
+/// The key under which the settings are kept in eframe's storage.
+pub const SETTINGS_KEY: &str = "rivet.settings";
+
+/// User preferences kept in eframe's storage (a RON file in the platform's config folder).
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct Settings {
+    /// The interface language.
+    pub language: Language,
+    /// The colour theme.
+    pub theme: Theme,
+}
+
+/// The colour theme.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub enum Theme {
+    /// Dark background.
+    #[default]
+    Dark,
+    /// Light background.
+    Light,
+}
+
+impl Theme {
+    /// The egui theme to apply.
+    pub fn egui_theme(self) -> egui::Theme {
+        match self {
+            Self::Dark => egui::Theme::Dark,
+            Self::Light => egui::Theme::Light,
+        }
+    }
+}

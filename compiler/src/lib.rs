@@ -1,0 +1,7 @@
+//! The IEC 61131-3 front end and code generator of Rivet.
+//!
+//! It owns the resilient Structured Text parser (a lossless tree plus errors, never a failure),
+//! name resolution, type checking, diagnostics with stable codes, the lowering of graphical
+//! networks to the same tree, code generation into a `program_image`, and the `ide` facade that
+//! the editors use.
+//! It reads the project model and never changes it.

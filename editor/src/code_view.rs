@@ -1,0 +1,121 @@
+//! A read-only, selectable view of source text with line numbers and highlighting.
+
+use egui::text::{LayoutJob, TextFormat};
+use egui::{Color32, FontId, TextStyle, Ui};
+
+use crate::{TokenClass, classify_tokens};
+
+/// A read-only code view: line numbers in a gutter, Structured Text highlighting, text that can
+/// be selected and copied but not changed.
+pub struct CodeView<'a> {
+    id_salt: egui::IdSalt,
+    text: &'a str,
+    highlight: bool,
+}
+
+impl<'a> CodeView<'a> {
+    /// A view of `text`, highlighted as Structured Text. `id_salt` keeps scroll and selection
+    /// state apart for views shown side by side.
+    pub fn new(id_salt: impl egui::AsIdSalt, text: &'a str) -> Self {
+        Self {
+            id_salt: egui::IdSalt::new(id_salt),
+            text,
+            highlight: true,
+        }
+    }
+
+    /// Shows the text without highlighting (for text that is not Structured Text).
+    pub fn plain(mut self) -> Self {
+        self.highlight = false;
+        self
+    }
+
+    /// Draws the view.
+    pub fn show(self, ui: &mut Ui) -> egui::Response {
+        let font = TextStyle::Monospace.resolve(ui.style());
+        let line_count = self.text.lines().count().max(1);
+        let digits = line_count.to_string().len();
+        let numbers: String = (1..=line_count)
+            .map(|line| format!("{line:>digits$}\n"))
+            .collect();
+        let gutter_color = ui.visuals().weak_text_color();
+        let highlight = self.highlight;
+        let dark = ui.visuals().dark_mode;
+        ui.horizontal_top(|ui| {
+            ui.add(
+                egui::Label::new(
+                    egui::RichText::new(numbers)
+                        .font(font.clone())
+                        .color(gutter_color),
+                )
+                .selectable(false),
+            );
+            let mut layouter = move |ui: &Ui, text: &dyn egui::TextBuffer, wrap_width: f32| {
+                let mut job = if highlight {
+                    highlighted_job(text.as_str(), &font, dark, ui.visuals().text_color())
+                } else {
+                    LayoutJob::simple(
+                        text.as_str().to_owned(),
+                        font.clone(),
+                        ui.visuals().text_color(),
+                        f32::INFINITY,
+                    )
+                };
+                job.wrap.max_width = wrap_width.max(f32::INFINITY);
+                ui.fonts_mut(|fonts| fonts.layout_job(job))
+            };
+            let mut text = self.text;
+            ui.add(
+                egui::TextEdit::multiline(&mut text)
+                    .id_salt(self.id_salt)
+                    .code_editor()
+                    .desired_width(f32::INFINITY)
+                    .desired_rows(line_count)
+                    .frame(egui::Frame::NONE)
+                    .layouter(&mut layouter),
+            )
+        })
+        .inner
+    }
+}
+
+fn highlighted_job(text: &str, font: &FontId, dark: bool, plain: Color32) -> LayoutJob {
+    let mut job = LayoutJob::default();
+    for (range, class) in classify_tokens(text) {
+        let color = class_color(class, dark).unwrap_or(plain);
+        job.append(&text[range], 0.0, TextFormat::simple(font.clone(), color));
+    }
+    job
+}
+
+/// Colours of the token classes; `None` means the theme's text colour.
+fn class_color(class: TokenClass, dark: bool) -> Option<Color32> {
+    let (dark_color, light_color) = match class {
+        TokenClass::Plain => return None,
+        TokenClass::Keyword => (
+            Color32::from_rgb(86, 156, 214),
+            Color32::from_rgb(0, 70, 180),
+        ),
+        TokenClass::Comment => (
+            Color32::from_rgb(106, 153, 85),
+            Color32::from_rgb(0, 128, 0),
+        ),
+        TokenClass::String => (
+            Color32::from_rgb(206, 145, 120),
+            Color32::from_rgb(163, 21, 21),
+        ),
+        TokenClass::Number => (
+            Color32::from_rgb(181, 206, 168),
+            Color32::from_rgb(9, 134, 88),
+        ),
+        TokenClass::Address => (
+            Color32::from_rgb(220, 180, 90),
+            Color32::from_rgb(150, 90, 0),
+        ),
+        TokenClass::Pragma => (
+            Color32::from_rgb(197, 134, 192),
+            Color32::from_rgb(140, 40, 140),
+        ),
+    };
+    Some(if dark { dark_color } else { light_color })
+}

@@ -1,0 +1,573 @@
+//! Reversible edits of a project: the only way the studio changes it.
+//!
+//! Every edit's [`Edit::apply`] returns the edit that undoes it, so undo and redo never store
+//! snapshots of the project. An edit that cannot be applied leaves the project unchanged.
+
+use std::ops::Range;
+
+use thiserror::Error;
+
+use crate::list_edit::IndexOutOfRange;
+use crate::validate::object_problem;
+use crate::{
+    Axis, Body, Controller, Folder, IoArea, ListEdit, ModbusDevice, Node, Object, Project, Task,
+    Variable, is_valid_identifier, same_identifier,
+};
+
+/// A reversible change to a project.
+#[derive(Clone, Debug, PartialEq)]
+#[allow(clippy::large_enum_variant)] // Edits are built one at a time by gestures.
+pub enum Edit {
+    /// Sets the project's display name and description.
+    SetProjectInfo {
+        /// The new name.
+        name: String,
+        /// The new description.
+        description: String,
+    },
+    /// Replaces the controller node's settings.
+    SetController(Controller),
+    /// Edits the task configuration.
+    Tasks(ListEdit<Task>),
+    /// Edits the I/O areas.
+    IoAreas(ListEdit<IoArea>),
+    /// Edits the Modbus TCP devices.
+    ModbusDevices(ListEdit<ModbusDevice>),
+    /// Edits the motion axes.
+    Axes(ListEdit<Axis>),
+    /// Adds, removes, moves or renames folders and objects of the application.
+    Tree(TreeEdit),
+    /// Replaces an object with a new version of the same name and kind.
+    ReplaceObject(Object),
+    /// Edits the declarations of a POU, method, property accessor or global variable list.
+    Variables {
+        /// Whose declarations.
+        owner: VarOwner,
+        /// The change.
+        edit: ListEdit<Variable>,
+    },
+    /// Replaces a byte range of an ST body with new text.
+    ReplaceText {
+        /// Which body.
+        target: TextTarget,
+        /// The byte range replaced; it must lie on character boundaries.
+        range: Range<usize>,
+        /// The new text.
+        text: String,
+    },
+    /// Several edits applied in order as one; undone in reverse order.
+    Group(Vec<Edit>),
+}
+
+/// A change to the application tree. Folders are named by their path of folder names from the
+/// application root; the root is the empty path.
+#[derive(Clone, Debug, PartialEq)]
+#[allow(clippy::large_enum_variant)] // Edits are built one at a time by gestures.
+pub enum TreeEdit {
+    /// Inserts a folder or object at `index` in `folder`.
+    Insert {
+        /// The parent folder.
+        folder: Vec<String>,
+        /// The position among its children.
+        index: usize,
+        /// The new folder or object.
+        node: Node,
+    },
+    /// Removes the node at `index` in `folder`, with everything below it.
+    Remove {
+        /// The parent folder.
+        folder: Vec<String>,
+        /// The position among its children.
+        index: usize,
+    },
+    /// Moves a node to another place.
+    Move {
+        /// The current parent folder.
+        from_folder: Vec<String>,
+        /// The current position.
+        from_index: usize,
+        /// The new parent folder (as it is before the move).
+        to_folder: Vec<String>,
+        /// The position among the new parent's children after the move.
+        to_index: usize,
+    },
+    /// Renames the node at `index` in `folder`.
+    Rename {
+        /// The parent folder.
+        folder: Vec<String>,
+        /// The position among its children.
+        index: usize,
+        /// The new name.
+        name: String,
+    },
+}
+
+/// Whose variable declarations an edit changes.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum VarOwner {
+    /// A POU's declarations.
+    Pou(String),
+    /// A method's declarations.
+    Method {
+        /// The POU.
+        pou: String,
+        /// The method.
+        method: String,
+    },
+    /// A global variable list.
+    Gvl(String),
+}
+
+/// Which ST body an edit changes.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub enum TextTarget {
+    /// A POU's body.
+    Pou(String),
+    /// A method's body.
+    Method {
+        /// The POU.
+        pou: String,
+        /// The method.
+        method: String,
+    },
+    /// A property's getter (`get == true`) or setter body.
+    Property {
+        /// The POU.
+        pou: String,
+        /// The property.
+        property: String,
+        /// The getter rather than the setter.
+        get: bool,
+    },
+    /// An action's body.
+    Action {
+        /// The POU.
+        pou: String,
+        /// The action.
+        action: String,
+    },
+}
+
+/// Why an edit could not be applied. The project is unchanged when one is returned.
+#[derive(Clone, Debug, PartialEq, Eq, Error)]
+pub enum EditError {
+    /// No object has that name.
+    #[error("there is no object named '{0}'")]
+    NoSuchObject(String),
+    /// No folder has that path.
+    #[error("there is no folder '{0}'")]
+    NoSuchFolder(String),
+    /// The POU has no such method, property or action.
+    #[error("'{pou}' has no {what} named '{name}'")]
+    NoSuchMember {
+        /// The POU.
+        pou: String,
+        /// `method`, `property` or `action`.
+        what: &'static str,
+        /// The missing name.
+        name: String,
+    },
+    /// An index past the end of a list.
+    #[error("position {index} is out of range (the list has {len} entries)")]
+    IndexOutOfRange {
+        /// The index asked for.
+        index: usize,
+        /// The list's length.
+        len: usize,
+    },
+    /// A name is not an identifier.
+    #[error(
+        "'{0}' is not a valid name: use letters, digits and '_', starting with a letter or '_'"
+    )]
+    InvalidName(String),
+    /// A name is already taken.
+    #[error("the name '{0}' is already used")]
+    DuplicateName(String),
+    /// The object's content cannot be stored, for example two methods of the same name.
+    #[error("{0}")]
+    InvalidObject(String),
+    /// The targeted body is not Structured Text.
+    #[error("the body of {0} is not Structured Text")]
+    NotText(String),
+    /// A text range outside the text or inside a character.
+    #[error("the range {start}..{end} is not a valid range of a text of {len} bytes")]
+    BadTextRange {
+        /// Range start.
+        start: usize,
+        /// Range end.
+        end: usize,
+        /// Text length in bytes.
+        len: usize,
+    },
+    /// A folder would be moved into itself.
+    #[error("a folder cannot be moved into itself")]
+    MoveIntoItself,
+    /// A replacement object has another kind than the object it replaces.
+    #[error("'{0}' cannot change its kind")]
+    KindChanged(String),
+}
+
+impl From<IndexOutOfRange> for EditError {
+    fn from(error: IndexOutOfRange) -> Self {
+        Self::IndexOutOfRange {
+            index: error.index,
+            len: error.len,
+        }
+    }
+}
+
+impl Edit {
+    /// Applies the edit and returns the edit that undoes it.
+    pub fn apply(self, project: &mut Project) -> Result<Self, EditError> {
+        match self {
+            Self::SetProjectInfo { name, description } => Ok(Self::SetProjectInfo {
+                name: std::mem::replace(&mut project.name, name),
+                description: std::mem::replace(&mut project.description, description),
+            }),
+            Self::SetController(controller) => Ok(Self::SetController(std::mem::replace(
+                &mut project.controller,
+                controller,
+            ))),
+            Self::Tasks(edit) => Ok(Self::Tasks(edit.apply(&mut project.tasks)?)),
+            Self::IoAreas(edit) => Ok(Self::IoAreas(edit.apply(&mut project.io_areas)?)),
+            Self::ModbusDevices(edit) => Ok(Self::ModbusDevices(
+                edit.apply(&mut project.modbus_devices)?,
+            )),
+            Self::Axes(edit) => Ok(Self::Axes(edit.apply(&mut project.axes)?)),
+            Self::Tree(edit) => Ok(Self::Tree(apply_tree_edit(edit, &mut project.application)?)),
+            Self::ReplaceObject(object) => replace_object(object, &mut project.application),
+            Self::Variables { owner, edit } => {
+                let list = variables_mut(&mut project.application, &owner)?;
+                let edit = edit.apply(list)?;
+                Ok(Self::Variables { owner, edit })
+            }
+            Self::ReplaceText {
+                target,
+                range,
+                text,
+            } => {
+                let body = text_mut(&mut project.application, &target)?;
+                let len = body.len();
+                let bad_range = EditError::BadTextRange {
+                    start: range.start,
+                    end: range.end,
+                    len,
+                };
+                if range.start > range.end
+                    || !body.is_char_boundary(range.start)
+                    || !body.is_char_boundary(range.end)
+                {
+                    return Err(bad_range);
+                }
+                let old = body[range.clone()].to_owned();
+                body.replace_range(range.clone(), &text);
+                Ok(Self::ReplaceText {
+                    target,
+                    range: range.start..range.start + text.len(),
+                    text: old,
+                })
+            }
+            Self::Group(edits) => {
+                let mut inverses = Vec::with_capacity(edits.len());
+                for edit in edits {
+                    match edit.apply(project) {
+                        Ok(inverse) => inverses.push(inverse),
+                        Err(error) => {
+                            // Roll back what was applied, so a failed group changes nothing.
+                            // The inverses of applied edits always apply.
+                            for inverse in inverses.into_iter().rev() {
+                                inverse.apply(project).ok();
+                            }
+                            return Err(error);
+                        }
+                    }
+                }
+                inverses.reverse();
+                Ok(Self::Group(inverses))
+            }
+        }
+    }
+}
+
+fn folder_mut<'a>(root: &'a mut Folder, path: &[String]) -> Result<&'a mut Folder, EditError> {
+    root.folder_mut(path)
+        .ok_or_else(|| EditError::NoSuchFolder(path.join("/")))
+}
+
+fn apply_tree_edit(edit: TreeEdit, root: &mut Folder) -> Result<TreeEdit, EditError> {
+    match edit {
+        TreeEdit::Insert {
+            folder,
+            index,
+            node,
+        } => {
+            check_node_names(&node)?;
+            check_names_free(root, &folder, &node)?;
+            let parent = folder_mut(root, &folder)?;
+            ListEdit::Insert { index, item: node }.apply(&mut parent.children)?;
+            Ok(TreeEdit::Remove { folder, index })
+        }
+        TreeEdit::Remove { folder, index } => {
+            let parent = folder_mut(root, &folder)?;
+            let ListEdit::Insert { item: node, .. } =
+                ListEdit::Remove { index }.apply(&mut parent.children)?
+            else {
+                unreachable!("the inverse of a removal is an insertion");
+            };
+            Ok(TreeEdit::Insert {
+                folder,
+                index,
+                node,
+            })
+        }
+        TreeEdit::Move {
+            from_folder,
+            from_index,
+            to_folder,
+            to_index,
+        } => {
+            let source = folder_mut(root, &from_folder)?;
+            let len = source.children.len();
+            let moved = source
+                .children
+                .get(from_index)
+                .ok_or(EditError::IndexOutOfRange {
+                    index: from_index,
+                    len,
+                })?;
+            // A folder cannot go below itself.
+            if let Node::Folder(moved_folder) = moved {
+                let mut moved_path = from_folder.clone();
+                moved_path.push(moved_folder.name.clone());
+                if to_folder.starts_with(&moved_path) {
+                    return Err(EditError::MoveIntoItself);
+                }
+            }
+            let moved_name = moved.name().to_owned();
+            let is_folder = matches!(moved, Node::Folder(_));
+            if from_folder != to_folder {
+                let target = root
+                    .folder(&to_folder)
+                    .ok_or_else(|| EditError::NoSuchFolder(to_folder.join("/")))?;
+                if is_folder && has_folder_named(target, &moved_name) {
+                    return Err(EditError::DuplicateName(moved_name));
+                }
+                let target_len = target.children.len();
+                if to_index > target_len {
+                    return Err(EditError::IndexOutOfRange {
+                        index: to_index,
+                        len: target_len,
+                    });
+                }
+            } else if to_index >= len {
+                return Err(EditError::IndexOutOfRange {
+                    index: to_index,
+                    len,
+                });
+            }
+            let node = folder_mut(root, &from_folder)?.children.remove(from_index);
+            // The target path stays valid: removing a node never renames folders above it.
+            let target = folder_mut(root, &to_folder)?;
+            target.children.insert(to_index, node);
+            Ok(TreeEdit::Move {
+                from_folder: to_folder,
+                from_index: to_index,
+                to_folder: from_folder,
+                to_index: from_index,
+            })
+        }
+        TreeEdit::Rename {
+            folder,
+            index,
+            name,
+        } => {
+            if !is_valid_identifier(&name) {
+                return Err(EditError::InvalidName(name));
+            }
+            let parent = root
+                .folder(&folder)
+                .ok_or_else(|| EditError::NoSuchFolder(folder.join("/")))?;
+            let len = parent.children.len();
+            let node = parent
+                .children
+                .get(index)
+                .ok_or(EditError::IndexOutOfRange { index, len })?;
+            let old = node.name().to_owned();
+            let taken = match node {
+                Node::Folder(_) => parent.children.iter().enumerate().any(|(other, sibling)| {
+                    other != index
+                        && matches!(sibling, Node::Folder(f) if same_identifier(&f.name, &name))
+                }),
+                Node::Object(_) => root
+                    .objects()
+                    .iter()
+                    .any(|object| object.name() != old && same_identifier(object.name(), &name)),
+            };
+            if taken {
+                return Err(EditError::DuplicateName(name));
+            }
+            match &mut folder_mut(root, &folder)?.children[index] {
+                Node::Folder(renamed) => renamed.name = name,
+                Node::Object(renamed) => renamed.set_name(name),
+            }
+            Ok(TreeEdit::Rename {
+                folder,
+                index,
+                name: old,
+            })
+        }
+    }
+}
+
+fn has_folder_named(folder: &Folder, name: &str) -> bool {
+    folder
+        .children
+        .iter()
+        .any(|node| matches!(node, Node::Folder(f) if same_identifier(&f.name, name)))
+}
+
+/// Checks that every name in a node about to be inserted is valid and storable.
+fn check_node_names(node: &Node) -> Result<(), EditError> {
+    match node {
+        Node::Folder(folder) => {
+            if !is_valid_identifier(&folder.name) {
+                return Err(EditError::InvalidName(folder.name.clone()));
+            }
+            folder.children.iter().try_for_each(check_node_names)
+        }
+        Node::Object(object) => {
+            if !is_valid_identifier(object.name()) {
+                return Err(EditError::InvalidName(object.name().to_owned()));
+            }
+            match object_problem(object) {
+                Some(problem) => Err(EditError::InvalidObject(problem)),
+                None => Ok(()),
+            }
+        }
+    }
+}
+
+/// Checks that a node inserted into `folder` clashes with no folder beside it and that its
+/// objects clash with no object of the application.
+fn check_names_free(root: &Folder, folder: &[String], node: &Node) -> Result<(), EditError> {
+    let parent = root
+        .folder(folder)
+        .ok_or_else(|| EditError::NoSuchFolder(folder.join("/")))?;
+    if let Node::Folder(new_folder) = node
+        && has_folder_named(parent, &new_folder.name)
+    {
+        return Err(EditError::DuplicateName(new_folder.name.clone()));
+    }
+    let existing = root.objects();
+    let mut new_objects: Vec<&Object> = Vec::new();
+    match node {
+        Node::Folder(new_folder) => new_objects.extend(new_folder.objects()),
+        Node::Object(object) => new_objects.push(object),
+    }
+    for (position, object) in new_objects.iter().enumerate() {
+        let name = object.name();
+        let clash_existing = existing
+            .iter()
+            .any(|other| same_identifier(other.name(), name));
+        let clash_new = new_objects[..position]
+            .iter()
+            .any(|other| same_identifier(other.name(), name));
+        if clash_existing || clash_new {
+            return Err(EditError::DuplicateName(name.to_owned()));
+        }
+    }
+    Ok(())
+}
+
+fn replace_object(object: Object, root: &mut Folder) -> Result<Edit, EditError> {
+    if let Some(problem) = object_problem(&object) {
+        return Err(EditError::InvalidObject(problem));
+    }
+    let name = object.name().to_owned();
+    let slot = root
+        .object_mut(&name)
+        .ok_or_else(|| EditError::NoSuchObject(name.clone()))?;
+    if slot.name() != name {
+        // Renaming goes through `TreeEdit::Rename`, which checks for clashes.
+        return Err(EditError::NoSuchObject(name));
+    }
+    if slot.kind() != object.kind() {
+        return Err(EditError::KindChanged(name));
+    }
+    Ok(Edit::ReplaceObject(std::mem::replace(slot, object)))
+}
+
+fn pou_mut<'a>(root: &'a mut Folder, name: &str) -> Result<&'a mut crate::Pou, EditError> {
+    match root.object_mut(name) {
+        Some(Object::Pou(pou)) => Ok(pou),
+        _ => Err(EditError::NoSuchObject(name.to_owned())),
+    }
+}
+
+fn no_member(pou: &str, what: &'static str, name: &str) -> EditError {
+    EditError::NoSuchMember {
+        pou: pou.to_owned(),
+        what,
+        name: name.to_owned(),
+    }
+}
+
+fn variables_mut<'a>(
+    root: &'a mut Folder,
+    owner: &VarOwner,
+) -> Result<&'a mut Vec<Variable>, EditError> {
+    match owner {
+        VarOwner::Pou(pou) => Ok(&mut pou_mut(root, pou)?.variables),
+        VarOwner::Method { pou, method } => pou_mut(root, pou)?
+            .methods
+            .iter_mut()
+            .find(|m| m.name == *method)
+            .map(|m| &mut m.variables)
+            .ok_or_else(|| no_member(pou, "method", method)),
+        VarOwner::Gvl(name) => match root.object_mut(name) {
+            Some(Object::Gvl(gvl)) => Ok(&mut gvl.variables),
+            _ => Err(EditError::NoSuchObject(name.clone())),
+        },
+    }
+}
+
+fn text_mut<'a>(root: &'a mut Folder, target: &TextTarget) -> Result<&'a mut String, EditError> {
+    let body: &mut Body = match target {
+        TextTarget::Pou(pou) => &mut pou_mut(root, pou)?.body,
+        TextTarget::Method { pou, method } => pou_mut(root, pou)?
+            .methods
+            .iter_mut()
+            .find(|m| m.name == *method)
+            .map(|m| &mut m.body)
+            .ok_or_else(|| no_member(pou, "method", method))?,
+        TextTarget::Property { pou, property, get } => pou_mut(root, pou)?
+            .properties
+            .iter_mut()
+            .find(|p| p.name == *property)
+            .and_then(|p| if *get { p.get.as_mut() } else { p.set.as_mut() })
+            .map(|accessor| &mut accessor.body)
+            .ok_or_else(|| no_member(pou, "property", property))?,
+        TextTarget::Action { pou, action } => pou_mut(root, pou)?
+            .actions
+            .iter_mut()
+            .find(|a| a.name == *action)
+            .map(|a| &mut a.body)
+            .ok_or_else(|| no_member(pou, "action", action))?,
+    };
+    body.st_text_mut()
+        .ok_or_else(|| EditError::NotText(target.to_string()))
+}
+
+impl std::fmt::Display for TextTarget {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Self::Pou(pou) => write!(f, "'{pou}'"),
+            Self::Method { pou, method } => write!(f, "method '{pou}.{method}'"),
+            Self::Property { pou, property, get } => {
+                let accessor = if *get { "Get" } else { "Set" };
+                write!(f, "property '{pou}.{property}.{accessor}'")
+            }
+            Self::Action { pou, action } => write!(f, "action '{pou}.{action}'"),
+        }
+    }
+}

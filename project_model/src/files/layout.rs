@@ -1,0 +1,164 @@
+//! Where each part of a project lives in its folder.
+
+use std::path::PathBuf;
+
+use super::APPLICATION_DIR;
+use super::canonical::to_canonical_toml;
+use crate::{Body, Object, ObjectKind, Pou};
+
+/// The path, relative to the project folder, of the file of an object named `name` of `kind`
+/// in the application folder `folder`.
+pub(crate) fn object_file(folder: &[String], name: &str, kind: ObjectKind) -> PathBuf {
+    let mut path = folder_dir(folder);
+    path.push(format!("{name}{}", kind.file_suffix()));
+    path
+}
+
+/// The directory, relative to the project folder, of the application folder `folder`.
+pub(crate) fn folder_dir(folder: &[String]) -> PathBuf {
+    let mut path = PathBuf::from(APPLICATION_DIR);
+    path.extend(folder);
+    path
+}
+
+/// The manifest entry of an object: its path below `application/` with `/` separators.
+pub(crate) fn object_entry(folder: &[String], name: &str, kind: ObjectKind) -> String {
+    let mut entry = folder_entry(folder);
+    entry.push_str(name);
+    entry.push_str(kind.file_suffix());
+    entry
+}
+
+/// The manifest entry of a folder: its path below `application/` ending in `/`.
+pub(crate) fn folder_entry(folder: &[String]) -> String {
+    folder.iter().map(|name| format!("{name}/")).collect()
+}
+
+/// A place in a POU that holds a body, and the suffix of its `.st` file.
+pub(crate) struct BodySlot<'a> {
+    /// The file name suffix after the POU's name, such as `.st` or `.Reset.st`.
+    pub suffix: String,
+    /// The body.
+    pub body: &'a Body,
+}
+
+/// Every body of a POU with the suffix of its `.st` file, in a fixed order.
+pub(crate) fn body_slots(pou: &Pou) -> Vec<BodySlot<'_>> {
+    let mut slots = vec![BodySlot {
+        suffix: ".st".into(),
+        body: &pou.body,
+    }];
+    for method in &pou.methods {
+        slots.push(BodySlot {
+            suffix: format!(".{}.st", method.name),
+            body: &method.body,
+        });
+    }
+    for property in &pou.properties {
+        for (accessor, which) in [(&property.get, "get"), (&property.set, "set")] {
+            if let Some(accessor) = accessor {
+                slots.push(BodySlot {
+                    suffix: format!(".{}.{which}.st", property.name),
+                    body: &accessor.body,
+                });
+            }
+        }
+    }
+    for action in &pou.actions {
+        slots.push(BodySlot {
+            suffix: format!(".{}.st", action.name),
+            body: &action.body,
+        });
+    }
+    slots
+}
+
+/// Every mutable body of a POU, in the same order as [`body_slots`].
+pub(crate) fn bodies_mut(pou: &mut Pou) -> Vec<&mut Body> {
+    let mut bodies = vec![&mut pou.body];
+    bodies.extend(pou.methods.iter_mut().map(|m| &mut m.body));
+    for property in &mut pou.properties {
+        if let Some(get) = &mut property.get {
+            bodies.push(&mut get.body);
+        }
+        if let Some(set) = &mut property.set {
+            bodies.push(&mut set.body);
+        }
+    }
+    bodies.extend(pou.actions.iter_mut().map(|a| &mut a.body));
+    bodies
+}
+
+/// Serialises an object to the text of its TOML file.
+pub(crate) fn object_toml(object: &Object) -> Result<String, String> {
+    match object {
+        Object::Pou(pou) => to_canonical_toml(pou),
+        Object::Gvl(gvl) => to_canonical_toml(gvl),
+        Object::DataType(data_type) => to_canonical_toml(data_type),
+        Object::CamTable(cam) => to_canonical_toml(cam),
+        Object::Trace(trace) => to_canonical_toml(trace),
+        Object::WatchList(watch) => to_canonical_toml(watch),
+    }
+}
+
+/// Splits a manifest entry into its folder path and, for an object, its name and kind.
+pub(crate) enum Entry {
+    /// A folder, given by its full path.
+    Folder(Vec<String>),
+    /// An object in a folder.
+    Object {
+        /// The folder path.
+        folder: Vec<String>,
+        /// The object's name, from its file name.
+        name: String,
+        /// The object's kind, from its file suffix.
+        kind: ObjectKind,
+    },
+}
+
+/// Parses a manifest entry, or explains what is wrong with it.
+pub(crate) fn parse_entry(entry: &str) -> Result<Entry, String> {
+    let expected = "expected a path below application/ such as 'Main.pou.toml' or 'Motion/'";
+    if entry.is_empty() {
+        return Err(format!("empty entry; {expected}"));
+    }
+    let (folder_part, file_part) = match entry.strip_suffix('/') {
+        Some(folder) => (folder, None),
+        None => match entry.rsplit_once('/') {
+            Some((folder, file)) => (folder, Some(file)),
+            None => ("", Some(entry)),
+        },
+    };
+    let folder: Vec<String> = if folder_part.is_empty() {
+        Vec::new()
+    } else {
+        folder_part.split('/').map(str::to_owned).collect()
+    };
+    if let Some(bad) = folder.iter().find(|name| !crate::is_valid_identifier(name)) {
+        return Err(format!(
+            "'{bad}' in '{entry}' is not a valid folder name (letters, digits and '_'); {expected}"
+        ));
+    }
+    let Some(file) = file_part else {
+        return Ok(Entry::Folder(folder));
+    };
+    let Some((kind, name)) = ObjectKind::ALL.iter().find_map(|kind| {
+        file.strip_suffix(kind.file_suffix())
+            .map(|name| (*kind, name))
+    }) else {
+        return Err(format!(
+            "'{entry}' has no known object suffix; expected one of .pou.toml, .gvl.toml, \
+             .type.toml, .cam.toml, .trace.toml, .watch.toml, or '/' for a folder"
+        ));
+    };
+    if !crate::is_valid_identifier(name) {
+        return Err(format!(
+            "'{name}' in '{entry}' is not a valid object name (letters, digits and '_')"
+        ));
+    }
+    Ok(Entry::Object {
+        folder,
+        name: name.to_owned(),
+        kind,
+    })
+}

@@ -1,0 +1,323 @@
+//! Reading a project folder into a [`Project`], collecting every problem on the way.
+
+use std::collections::BTreeSet;
+use std::path::{Path, PathBuf};
+
+use serde::de::DeserializeOwned;
+
+use super::layout::{Entry, bodies_mut, body_slots, folder_dir, object_file, parse_entry};
+use super::manifest::{Manifest, VersionProbe};
+use super::problem::{LoadError, LoadProblem, Severity, line_of, toml_problem};
+use super::{APPLICATION_DIR, FORMAT_VERSION, MANIFEST_FILE_NAME};
+use crate::validate::object_problem;
+use crate::{Body, Folder, Node, Object, ObjectKind, Pou, Project, same_identifier};
+
+/// A project read from disk.
+#[derive(Clone, Debug)]
+pub struct LoadedProject {
+    /// The project.
+    pub project: Project,
+    /// Things in the folder that are not part of the project, such as unlisted files.
+    pub warnings: Vec<LoadProblem>,
+    /// The files the project was read from, relative to its folder. Saving removes those of
+    /// them that the project no longer needs, and never touches any other file.
+    pub files: BTreeSet<PathBuf>,
+}
+
+/// Reads the project in folder `dir`.
+///
+/// Nothing on disk is changed. On failure every problem found is returned, each naming its file
+/// and, where it has one, its line.
+pub fn load_project(dir: &Path) -> Result<LoadedProject, LoadError> {
+    let mut loader = Loader {
+        dir,
+        problems: Vec::new(),
+        files: BTreeSet::new(),
+    };
+    let project = loader.load();
+    let has_errors = loader
+        .problems
+        .iter()
+        .any(|problem| problem.severity == Severity::Error);
+    match project {
+        Some(project) if !has_errors => {
+            loader.report_unlisted_files();
+            Ok(LoadedProject {
+                project,
+                warnings: loader.problems,
+                files: loader.files,
+            })
+        }
+        _ => Err(LoadError {
+            problems: loader.problems,
+        }),
+    }
+}
+
+struct Loader<'a> {
+    dir: &'a Path,
+    problems: Vec<LoadProblem>,
+    files: BTreeSet<PathBuf>,
+}
+
+impl Loader<'_> {
+    fn load(&mut self) -> Option<Project> {
+        let manifest_file = PathBuf::from(MANIFEST_FILE_NAME);
+        let text = self.read_text(&manifest_file)?;
+        let display = self.dir.join(&manifest_file);
+        if !self.check_version(&display, &text) {
+            return None;
+        }
+        let manifest: Manifest = self.parse(&manifest_file, &text)?;
+        let mut application = Folder::default();
+        for entry in &manifest.application {
+            let line = line_of(&text, entry.span().start);
+            self.load_entry(&mut application, entry.get_ref(), &display, line);
+        }
+        Some(Project {
+            name: manifest.name,
+            description: manifest.description,
+            controller: manifest.controller,
+            tasks: manifest.tasks,
+            io_areas: manifest.io_areas,
+            modbus_devices: manifest.modbus_devices,
+            axes: manifest.axes,
+            application,
+        })
+    }
+
+    /// Reports a missing or foreign format version; returns whether loading can go on.
+    fn check_version(&mut self, display: &Path, text: &str) -> bool {
+        let probe = match toml::from_str::<VersionProbe>(text) {
+            Ok(probe) => probe,
+            Err(error) => {
+                self.problems
+                    .push(toml_problem(display.into(), text, &error));
+                return false;
+            }
+        };
+        let Some(version) = probe.format_version else {
+            self.problems.push(LoadProblem::error(
+                display,
+                Some(1),
+                format!("missing 'format_version'; expected 'format_version = {FORMAT_VERSION}'"),
+            ));
+            return false;
+        };
+        let line = line_of(text, version.span().start);
+        let found = *version.get_ref();
+        if found == i64::from(FORMAT_VERSION) {
+            return true;
+        }
+        let message = if found > i64::from(FORMAT_VERSION) {
+            format!(
+                "format_version {found} was written by a newer Rivet; this one reads version \
+                 {FORMAT_VERSION}"
+            )
+        } else {
+            format!(
+                "format_version {found} is not a Rivet project format; expected {FORMAT_VERSION}"
+            )
+        };
+        self.problems
+            .push(LoadProblem::error(display, Some(line), message));
+        false
+    }
+
+    fn load_entry(&mut self, root: &mut Folder, entry: &str, manifest: &Path, line: usize) {
+        let entry_error = |message: String| LoadProblem::error(manifest, Some(line), message);
+        let parsed = match parse_entry(entry) {
+            Ok(parsed) => parsed,
+            Err(message) => return self.problems.push(entry_error(message)),
+        };
+        let folder_path: Vec<String> = match &parsed {
+            Entry::Folder(path) => path[..path.len().saturating_sub(1)].to_vec(),
+            Entry::Object { folder, .. } => folder.clone(),
+        };
+        let folder_path = &folder_path[..];
+        let Some(parent) = root.folder(folder_path) else {
+            return self.problems.push(entry_error(format!(
+                "'{entry}' is in folder '{}', which is not listed before it; list the folder \
+                 first, as '{}/'",
+                folder_path.join("/"),
+                folder_path.join("/")
+            )));
+        };
+        match parsed {
+            Entry::Folder(path) => {
+                let Some(name) = path.last() else {
+                    return self
+                        .problems
+                        .push(entry_error("'/' is not a folder; name the folder".into()));
+                };
+                let duplicate = parent.children.iter().any(|node| {
+                    matches!(node, Node::Folder(folder) if same_identifier(&folder.name, name))
+                });
+                if duplicate {
+                    return self
+                        .problems
+                        .push(entry_error(format!("folder '{entry}' is listed twice")));
+                }
+                let folder = Folder {
+                    name: name.clone(),
+                    children: Vec::new(),
+                };
+                if let Some(parent) = root.folder_mut(folder_path) {
+                    parent.children.push(Node::Folder(folder));
+                }
+                if !self.dir.join(folder_dir(&path)).is_dir() {
+                    self.problems.push(entry_error(format!(
+                        "folder '{entry}' does not exist in {APPLICATION_DIR}/"
+                    )));
+                }
+            }
+            Entry::Object { folder, name, kind } => {
+                if let Some(other) = root.object(&name) {
+                    return self.problems.push(entry_error(format!(
+                        "'{entry}': the name '{name}' is already used by '{}' (names are \
+                         compared without case)",
+                        other.name()
+                    )));
+                }
+                let Some(object) = self.load_object(&folder, &name, kind) else {
+                    return;
+                };
+                if let Some(parent) = root.folder_mut(&folder) {
+                    parent.children.push(Node::Object(object));
+                }
+            }
+        }
+    }
+
+    fn load_object(&mut self, folder: &[String], name: &str, kind: ObjectKind) -> Option<Object> {
+        let file = object_file(folder, name, kind);
+        let text = self.read_text(&file)?;
+        let mut object = match kind {
+            ObjectKind::Pou => Object::Pou(self.parse(&file, &text)?),
+            ObjectKind::Gvl => Object::Gvl(self.parse(&file, &text)?),
+            ObjectKind::DataType => Object::DataType(self.parse(&file, &text)?),
+            ObjectKind::CamTable => Object::CamTable(self.parse(&file, &text)?),
+            ObjectKind::Trace => Object::Trace(self.parse(&file, &text)?),
+            ObjectKind::WatchList => Object::WatchList(self.parse(&file, &text)?),
+        };
+        object.set_name(name.to_owned());
+        if let Some(problem) = object_problem(&object) {
+            self.problems
+                .push(LoadProblem::error(self.dir.join(&file), None, problem));
+            return None;
+        }
+        if let Object::Pou(pou) = &mut object {
+            self.load_st_bodies(folder, pou, &file)?;
+        }
+        Some(object)
+    }
+
+    /// Fills the text of every ST body of `pou` from its `.st` file.
+    fn load_st_bodies(&mut self, folder: &[String], pou: &mut Pou, pou_file: &Path) -> Option<()> {
+        let suffixes: Vec<Option<String>> = body_slots(pou)
+            .into_iter()
+            .map(|slot| matches!(slot.body, Body::St { .. }).then_some(slot.suffix))
+            .collect();
+        let pou_name = pou.name.clone();
+        let mut complete = true;
+        for (body, suffix) in bodies_mut(pou).into_iter().zip(suffixes) {
+            let Some(suffix) = suffix else { continue };
+            let mut st_file = folder_dir(folder);
+            st_file.push(format!("{pou_name}{suffix}"));
+            if !self.dir.join(&st_file).is_file() {
+                self.problems.push(LoadProblem::error(
+                    self.dir.join(&st_file),
+                    None,
+                    format!(
+                        "file not found; {} declares a Structured Text body, whose text belongs \
+                         in this file",
+                        self.dir.join(pou_file).display()
+                    ),
+                ));
+                complete = false;
+                continue;
+            }
+            match self.read_text(&st_file) {
+                Some(text) => *body = Body::St { text },
+                None => complete = false,
+            }
+        }
+        complete.then_some(())
+    }
+
+    /// Reads a UTF-8 file and records it as part of the project.
+    fn read_text(&mut self, file: &Path) -> Option<String> {
+        let path = self.dir.join(file);
+        let bytes = match std::fs::read(&path) {
+            Ok(bytes) => bytes,
+            Err(error) if error.kind() == std::io::ErrorKind::NotFound => {
+                let message = if file == Path::new(MANIFEST_FILE_NAME) {
+                    format!("file not found; a Rivet project folder holds a {MANIFEST_FILE_NAME}")
+                } else {
+                    "file not found; it is listed in the manifest".into()
+                };
+                self.problems.push(LoadProblem::error(path, None, message));
+                return None;
+            }
+            Err(error) => {
+                self.problems.push(LoadProblem::error(
+                    path,
+                    None,
+                    format!("cannot read: {error}"),
+                ));
+                return None;
+            }
+        };
+        self.files.insert(file.to_owned());
+        match String::from_utf8(bytes) {
+            Ok(text) => Some(text),
+            Err(error) => {
+                let valid = error.utf8_error().valid_up_to();
+                let bytes = error.as_bytes();
+                let line = bytes[..valid].iter().filter(|&&b| b == b'\n').count() + 1;
+                self.problems.push(LoadProblem::error(
+                    path,
+                    Some(line),
+                    format!("not UTF-8 text (invalid byte at offset {valid}); save it as UTF-8"),
+                ));
+                None
+            }
+        }
+    }
+
+    fn parse<T: DeserializeOwned>(&mut self, file: &Path, text: &str) -> Option<T> {
+        match toml::from_str(text) {
+            Ok(value) => Some(value),
+            Err(error) => {
+                self.problems
+                    .push(toml_problem(self.dir.join(file), text, &error));
+                None
+            }
+        }
+    }
+
+    /// Warns about files under `application/` that the project does not use, so a file added
+    /// by hand or left by a merge is not silently ignored.
+    fn report_unlisted_files(&mut self) {
+        let mut pending = vec![PathBuf::from(APPLICATION_DIR)];
+        while let Some(relative) = pending.pop() {
+            let Ok(entries) = std::fs::read_dir(self.dir.join(&relative)) else {
+                continue;
+            };
+            let mut names: Vec<_> = entries.filter_map(Result::ok).collect();
+            names.sort_by_key(|entry| entry.file_name());
+            for entry in names {
+                let path = relative.join(entry.file_name());
+                if entry.file_type().is_ok_and(|t| t.is_dir()) {
+                    pending.push(path);
+                } else if !self.files.contains(&path) {
+                    self.problems.push(LoadProblem::warning(
+                        self.dir.join(&path),
+                        "not part of the project: it is not listed in rivet.toml and belongs to \
+                         no listed object; it is left untouched",
+                    ));
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,26 @@
+//! Loading and saving projects as folders of text files.
+//!
+//! The format is specified in `docs/project-format.md`: a manifest `rivet.toml` plus one TOML
+//! file per application object under `application/`, with ST bodies in `.st` files beside them.
+//! Files are written in a canonical form, unchanged files are not rewritten, and each file is
+//! replaced atomically.
+
+mod canonical;
+mod layout;
+mod load;
+mod manifest;
+mod problem;
+mod save;
+
+pub use load::{LoadedProject, load_project};
+pub use problem::{LoadError, LoadProblem, Severity};
+pub use save::{SaveError, SaveReport, save_project};
+
+/// The project format version this build reads and writes.
+pub const FORMAT_VERSION: u32 = 1;
+
+/// The name of the manifest file at the root of a project folder.
+pub const MANIFEST_FILE_NAME: &str = "rivet.toml";
+
+/// The folder, relative to the project folder, that holds the application's objects.
+pub const APPLICATION_DIR: &str = "application";

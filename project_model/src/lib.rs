@@ -1,0 +1,66 @@
+//! The Rivet project as plain data.
+//!
+//! This crate is the ground truth of the studio: the device tree (controller, tasks, I/O areas,
+//! Modbus TCP devices, motion axes) and the application (folders, POUs, global variable lists,
+//! data types, cam tables, trace configurations, watch lists).
+//! It loads and saves projects as folders of text files (see `docs/project-format.md`), and
+//! changes them only through [`Edit`]s, each of which returns its inverse so [`History`] can undo
+//! and redo.
+//!
+//! It depends on no other crate of the workspace, does no network I/O and spawns no threads.
+
+mod application;
+mod axis;
+mod cam;
+mod data_type;
+mod declaration_text;
+mod edit;
+mod files;
+mod gvl;
+mod history;
+mod identifier;
+mod io_area;
+mod list_edit;
+mod modbus_device;
+mod network;
+mod pou;
+mod project;
+mod task;
+mod trace;
+mod validate;
+mod variable;
+mod watch;
+
+#[cfg(feature = "proptest")]
+pub mod arb;
+
+pub use application::{Folder, Node, Object, ObjectKind};
+pub use axis::{Axis, AxisKind, AxisLimits, AxisScaling, SoftwareLimits};
+pub use cam::{
+    CamCompileFormat, CamContinuity, CamKeyPoint, CamPeriod, CamProfile, CamRange, CamSegment,
+    CamTable, CamTablePoint, MotionLaw, PointInterpolation, Tappet, TappetAction, TappetTrack,
+};
+pub use data_type::{DataType, EnumValue, StructMember, TypeDefinition};
+pub use edit::{Edit, EditError, TextTarget, TreeEdit, VarOwner};
+pub use files::{
+    APPLICATION_DIR, FORMAT_VERSION, LoadError, LoadProblem, LoadedProject, MANIFEST_FILE_NAME,
+    SaveError, SaveReport, Severity, load_project, save_project,
+};
+pub use gvl::GlobalVarList;
+pub use history::{History, Transaction};
+pub use identifier::{is_valid_identifier, same_identifier};
+pub use io_area::{IoArea, IoDirection};
+pub use list_edit::ListEdit;
+pub use modbus_device::{ModbusBinding, ModbusDataType, ModbusDevice, ModbusTable, WordOrder};
+pub use network::{
+    ActionAssociation, ActionQualifier, BranchKind, CoilKind, Connection, Edge, Element, ElementId,
+    ElementKind, Network, PinRef,
+};
+pub use pou::{
+    AccessSpecifier, Body, Language, Method, Pou, PouAction, PouKind, Property, PropertyAccessor,
+};
+pub use project::{Controller, ModbusServerMap, ModbusServerRange, Project};
+pub use task::{Task, TaskKind, Watchdog};
+pub use trace::{TraceConfig, TraceTrigger, TraceTriggerCondition, TraceVariable};
+pub use variable::{VarSection, Variable};
+pub use watch::{WatchEntry, WatchList};

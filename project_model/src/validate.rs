@@ -1,0 +1,37 @@
+//! Checks that keep an object storable: what the loader rejects and edits refuse.
+
+use crate::{Object, is_valid_identifier, same_identifier};
+
+/// Describes why an object cannot be stored as it is, or returns `None` when it can.
+///
+/// Methods, properties and actions of a POU get files named after them, so their names must be
+/// identifiers and differ from each other. Everything else in an object is free text that the
+/// compiler checks.
+pub(crate) fn object_problem(object: &Object) -> Option<String> {
+    let Object::Pou(pou) = object else {
+        return None;
+    };
+    let members = pou
+        .methods
+        .iter()
+        .map(|method| ("method", method.name.as_str()))
+        .chain(pou.properties.iter().map(|p| ("property", p.name.as_str())))
+        .chain(pou.actions.iter().map(|a| ("action", a.name.as_str())));
+    let mut seen: Vec<&str> = Vec::new();
+    for (what, name) in members {
+        if !is_valid_identifier(name) {
+            return Some(format!(
+                "the {what} name '{name}' of '{}' is not an identifier",
+                pou.name
+            ));
+        }
+        if seen.iter().any(|other| same_identifier(other, name)) {
+            return Some(format!(
+                "'{}' has two methods, properties or actions named '{name}'",
+                pou.name
+            ));
+        }
+        seen.push(name);
+    }
+    None
+}
