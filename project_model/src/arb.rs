@@ -6,7 +6,7 @@
 
 use proptest::prelude::*;
 
-use crate::{Folder, Node, Object, Project};
+use crate::{Body, Folder, GlobalVarList, Node, Object, Pou, Project};
 
 /// An IEC identifier of one to eight characters, sometimes with a Chinese letter.
 pub fn ident() -> impl Strategy<Value = String> {
@@ -48,13 +48,32 @@ pub fn leaf_folder() -> impl Strategy<Value = Folder> {
     (ident(), children).prop_map(|(name, children)| Folder { name, children })
 }
 
-/// A project whose object and folder names are unique, as a loaded project's are.
+/// A project whose object and folder names are unique, as a loaded project's are. It always
+/// holds at least one POU with an ST body and one global variable list, so text and variable
+/// edits have something to work on.
 pub fn project() -> impl Strategy<Value = Project> {
-    any::<Project>().prop_map(|mut project| {
-        let mut counter = 0usize;
-        make_names_unique(&mut project.application, &mut counter);
-        project
-    })
+    (
+        any::<Project>(),
+        any::<Pou>(),
+        any::<GlobalVarList>(),
+        text(),
+    )
+        .prop_map(|(mut project, mut pou, gvl, body)| {
+            pou.body = Body::St { text: body };
+            project
+                .application
+                .children
+                .push(Node::Object(Object::Pou(pou)));
+            project
+                .application
+                .children
+                .push(Node::Object(Object::Gvl(gvl)));
+            // The root folder is the application itself; its name is not stored.
+            project.application.name.clear();
+            let mut counter = 0usize;
+            make_names_unique(&mut project.application, &mut counter);
+            project
+        })
 }
 
 /// Appends a running number to every name in the tree, so no two objects or folders collide.

@@ -33,7 +33,7 @@ pub enum TaskKind {
     /// Runs every `interval_us` microseconds.
     Cyclic {
         /// The cycle interval in microseconds.
-        interval_us: u64,
+        interval_us: u32,
     },
     /// Runs again as soon as it finishes, yielding to higher priorities.
     Freewheeling,
@@ -52,7 +52,7 @@ pub enum TaskKind {
 #[serde(deny_unknown_fields)]
 pub struct Watchdog {
     /// The longest allowed cycle time in microseconds.
-    pub time_us: u64,
+    pub time_us: u32,
     /// How many consecutive overruns trip the watchdog (1 = the first one).
     pub sensitivity: u32,
 }

@@ -224,7 +224,7 @@ impl TreeUi<'_> {
 }
 
 /// `10000` µs as `10 ms`, `500` as `500 µs`.
-fn format_interval(interval_us: u64) -> String {
+fn format_interval(interval_us: u32) -> String {
     if interval_us.is_multiple_of(1000) {
         format!("{} ms", interval_us / 1000)
     } else {

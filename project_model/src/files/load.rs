@@ -165,11 +165,7 @@ impl Loader<'_> {
                 if let Some(parent) = root.folder_mut(folder_path) {
                     parent.children.push(Node::Folder(folder));
                 }
-                if !self.dir.join(folder_dir(&path)).is_dir() {
-                    self.problems.push(entry_error(format!(
-                        "folder '{entry}' does not exist in {APPLICATION_DIR}/"
-                    )));
-                }
+                // An empty folder has no directory on disk: git keeps no empty directories.
             }
             Entry::Object { folder, name, kind } => {
                 if let Some(other) = root.object(&name) {

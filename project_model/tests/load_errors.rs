@@ -1,0 +1,321 @@
+//! Bad project folders: every problem names its file and, where it has one, its line; nothing
+//! on disk changes.
+
+use std::fs;
+use std::path::{Path, PathBuf};
+
+use project_model::{LoadError, Severity, load_project, save_project};
+
+/// A copy of the example project in a temporary folder, to break on purpose.
+fn example_copy() -> tempfile::TempDir {
+    let dir = tempfile::tempdir().unwrap();
+    copy_dir(&example_dir(), dir.path());
+    dir
+}
+
+fn example_dir() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../assets/examples/packaging_machine")
+}
+
+fn copy_dir(from: &Path, to: &Path) {
+    fs::create_dir_all(to).unwrap();
+    for entry in fs::read_dir(from).unwrap() {
+        let entry = entry.unwrap();
+        let target = to.join(entry.file_name());
+        if entry.file_type().unwrap().is_dir() {
+            copy_dir(&entry.path(), &target);
+        } else {
+            fs::copy(entry.path(), target).unwrap();
+        }
+    }
+}
+
+/// Every file's bytes, to check that loading changed nothing.
+fn snapshot(dir: &Path) -> Vec<(PathBuf, Vec<u8>)> {
+    let mut files = Vec::new();
+    let mut pending = vec![dir.to_owned()];
+    while let Some(current) = pending.pop() {
+        for entry in fs::read_dir(&current).unwrap() {
+            let path = entry.unwrap().path();
+            if path.is_dir() {
+                pending.push(path);
+            } else {
+                files.push((path.clone(), fs::read(&path).unwrap()));
+            }
+        }
+    }
+    files.sort();
+    files
+}
+
+/// Loads `dir`, expects failure, checks that nothing changed, and returns the error.
+#[track_caller]
+fn load_fails(dir: &Path) -> LoadError {
+    let before = snapshot(dir);
+    let error = load_project(dir).expect_err("the project should not load");
+    assert_eq!(snapshot(dir), before, "loading changed files");
+    error
+}
+
+/// Asserts that one error names `file` (relative to `dir`), `line` and a message containing
+/// `expected`.
+#[track_caller]
+fn assert_error(error: &LoadError, dir: &Path, file: &str, line: Option<usize>, expected: &str) {
+    let found = error.problems.iter().any(|problem| {
+        problem.severity == Severity::Error
+            && problem.file == dir.join(file)
+            && problem.line == line
+            && problem.message.contains(expected)
+    });
+    assert!(
+        found,
+        "no error in {file} at {line:?} containing {expected:?}:\n{error}"
+    );
+}
+
+fn replace_in(path: &Path, from: &str, to: &str) {
+    let text = fs::read_to_string(path).unwrap();
+    assert!(text.contains(from), "{from:?} not in {}", path.display());
+    fs::write(path, text.replacen(from, to, 1)).unwrap();
+}
+
+#[test]
+fn the_example_project_loads_without_warnings() {
+    let loaded = load_project(&example_dir()).unwrap();
+    assert!(loaded.warnings.is_empty(), "{:?}", loaded.warnings);
+    assert_eq!(loaded.project.tasks.len(), 2);
+    assert_eq!(loaded.project.axes.len(), 2);
+}
+
+#[test]
+fn the_example_project_is_canonical() {
+    let dir = example_copy();
+    let loaded = load_project(dir.path()).unwrap();
+    let report = save_project(&loaded.project, dir.path(), &loaded.files).unwrap();
+    assert!(
+        report.written.is_empty(),
+        "not canonical: {:?}",
+        report.written
+    );
+}
+
+#[test]
+fn a_folder_without_manifest_is_reported() {
+    let dir = tempfile::tempdir().unwrap();
+    let error = load_fails(dir.path());
+    assert_error(&error, dir.path(), "rivet.toml", None, "file not found");
+}
+
+#[test]
+fn malformed_toml_names_file_and_line() {
+    let dir = example_copy();
+    replace_in(
+        &dir.path().join("rivet.toml"),
+        "priority = 0",
+        "priority = ",
+    );
+    let error = load_fails(dir.path());
+    assert_error(&error, dir.path(), "rivet.toml", Some(31), "expected");
+}
+
+#[test]
+fn a_newer_format_version_is_refused_with_both_versions() {
+    let dir = example_copy();
+    replace_in(
+        &dir.path().join("rivet.toml"),
+        "format_version = 1",
+        "format_version = 7",
+    );
+    let error = load_fails(dir.path());
+    assert_error(
+        &error,
+        dir.path(),
+        "rivet.toml",
+        Some(1),
+        "format_version 7 was written by a newer Rivet",
+    );
+}
+
+#[test]
+fn a_missing_format_version_is_reported() {
+    let dir = example_copy();
+    replace_in(&dir.path().join("rivet.toml"), "format_version = 1\n", "");
+    let error = load_fails(dir.path());
+    assert_error(
+        &error,
+        dir.path(),
+        "rivet.toml",
+        Some(1),
+        "missing 'format_version'",
+    );
+}
+
+#[test]
+fn unknown_fields_are_reported_not_dropped() {
+    let dir = example_copy();
+    let pou = dir.path().join("application/Main.pou.toml");
+    replace_in(
+        &pou,
+        "kind = \"program\"",
+        "kind = \"program\"\ncolour = \"red\"",
+    );
+    let error = load_fails(dir.path());
+    assert_error(
+        &error,
+        dir.path(),
+        "application/Main.pou.toml",
+        Some(2),
+        "unknown field `colour`",
+    );
+}
+
+#[test]
+fn a_wrong_value_names_what_was_expected() {
+    let dir = example_copy();
+    let pou = dir.path().join("application/Sequence.pou.toml");
+    replace_in(&pou, "kind = \"program\"", "kind = \"programme\"");
+    let error = load_fails(dir.path());
+    assert_error(
+        &error,
+        dir.path(),
+        "application/Sequence.pou.toml",
+        Some(1),
+        "expected one of",
+    );
+}
+
+#[test]
+fn a_listed_file_that_is_missing_is_reported_at_its_manifest_line() {
+    let dir = example_copy();
+    fs::remove_file(dir.path().join("application/GVL_IO.gvl.toml")).unwrap();
+    let error = load_fails(dir.path());
+    assert_error(
+        &error,
+        dir.path(),
+        "application/GVL_IO.gvl.toml",
+        None,
+        "file not found",
+    );
+}
+
+#[test]
+fn a_missing_st_body_file_names_the_pou_file() {
+    let dir = example_copy();
+    fs::remove_file(dir.path().join("application/FB_Conveyor.Reset.st")).unwrap();
+    let error = load_fails(dir.path());
+    assert_error(
+        &error,
+        dir.path(),
+        "application/FB_Conveyor.Reset.st",
+        None,
+        "FB_Conveyor.pou.toml",
+    );
+}
+
+#[test]
+fn a_file_that_is_not_utf8_names_its_line() {
+    let dir = example_copy();
+    fs::write(
+        dir.path().join("application/Main.st"),
+        b"x := 1;\ny := \xff;\n",
+    )
+    .unwrap();
+    let error = load_fails(dir.path());
+    assert_error(
+        &error,
+        dir.path(),
+        "application/Main.st",
+        Some(2),
+        "not UTF-8",
+    );
+}
+
+#[test]
+fn an_unreadable_file_is_reported() {
+    let dir = example_copy();
+    // A directory where a file should be cannot be read as a file, even by root.
+    let manifest = dir.path().join("rivet.toml");
+    fs::remove_file(&manifest).unwrap();
+    fs::create_dir(&manifest).unwrap();
+    let error = load_fails(dir.path());
+    assert_error(&error, dir.path(), "rivet.toml", None, "cannot read");
+}
+
+#[test]
+fn bad_manifest_entries_name_their_line() {
+    let dir = example_copy();
+    let manifest = dir.path().join("rivet.toml");
+    replace_in(&manifest, "\"Main.pou.toml\",", "\"Main.txt\",");
+    replace_in(
+        &manifest,
+        "\"Motion/\",",
+        "\"Motion/\",\n    \"Missing/Thing.cam.toml\",",
+    );
+    replace_in(
+        &manifest,
+        "\"Sequence.pou.toml\",",
+        "\"Sequence.pou.toml\",\n    \"sequence.pou.toml\",",
+    );
+    let error = load_fails(dir.path());
+    assert_error(
+        &error,
+        dir.path(),
+        "rivet.toml",
+        Some(5),
+        "no known object suffix",
+    );
+    assert_error(
+        &error,
+        dir.path(),
+        "rivet.toml",
+        Some(8),
+        "already used by 'Sequence'",
+    );
+    assert_error(
+        &error,
+        dir.path(),
+        "rivet.toml",
+        Some(15),
+        "not listed before it",
+    );
+}
+
+#[test]
+fn unlisted_files_are_warned_about_and_left_alone() {
+    let dir = example_copy();
+    let stray = dir.path().join("application/Notes.pou.toml");
+    fs::write(&stray, "kind = \"program\"\n").unwrap();
+    let loaded = load_project(dir.path()).unwrap();
+    assert_eq!(loaded.warnings.len(), 1);
+    assert_eq!(loaded.warnings[0].file, stray);
+    assert_eq!(loaded.warnings[0].severity, Severity::Warning);
+    save_project(&loaded.project, dir.path(), &loaded.files).unwrap();
+    assert!(
+        stray.exists(),
+        "saving removed a file the project does not own"
+    );
+}
+
+#[test]
+fn every_problem_is_reported_in_one_pass() {
+    let dir = example_copy();
+    replace_in(
+        &dir.path().join("application/Main.pou.toml"),
+        "kind = \"program\"",
+        "kind = 3",
+    );
+    replace_in(
+        &dir.path().join("application/GVL_IO.gvl.toml"),
+        "[[variable]]",
+        "[[variabel]]",
+    );
+    let error = load_fails(dir.path());
+    assert_error(&error, dir.path(), "application/Main.pou.toml", Some(1), "");
+    assert_error(
+        &error,
+        dir.path(),
+        "application/GVL_IO.gvl.toml",
+        Some(3),
+        "unknown field `variabel`",
+    );
+}
