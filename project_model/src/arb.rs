@@ -97,7 +97,7 @@ fn make_names_unique(folder: &mut Folder, counter: &mut usize) {
 }
 
 /// Methods, properties and actions get files named after them, so their names must differ too.
-fn make_member_names_unique(pou: &mut crate::Pou) {
+fn make_member_names_unique(pou: &mut Pou) {
     let names = pou
         .methods
         .iter_mut()

@@ -1,6 +1,8 @@
 //! Bad project folders: every problem names its file and, where it has one, its line; nothing
 //! on disk changes.
 
+#![allow(clippy::unwrap_used, clippy::expect_used)] // Test helpers may panic: a panic is a failed test.
+
 use std::fs;
 use std::path::{Path, PathBuf};
 

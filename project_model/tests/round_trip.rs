@@ -1,6 +1,8 @@
 //! Property tests of the project files: saving and loading gives back the same project, and
 //! saving an unchanged project rewrites nothing.
 
+#![allow(clippy::unwrap_used, clippy::expect_used)] // Test helpers may panic: a panic is a failed test.
+
 use std::collections::BTreeSet;
 
 use proptest::prelude::*;

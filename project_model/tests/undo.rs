@@ -1,6 +1,8 @@
 //! Property test: applying any edit and then its inverse restores the project exactly, and a
 //! failing edit leaves it untouched.
 
+#![allow(clippy::unwrap_used, clippy::expect_used)] // Test helpers may panic: a panic is a failed test.
+
 use proptest::prelude::*;
 use proptest::sample::Index;
 

@@ -98,8 +98,8 @@ impl Text {
             Self::Axes => ("Axes", "轴"),
             Self::NoProjectOpen => ("No project is open", "未打开项目"),
             Self::NoProjectHint => (
-                "Open a project folder with File ▸ Open project…",
-                "请通过 文件 ▸ 打开项目… 打开项目文件夹",
+                "Open a project folder with File > Open project…",
+                "请通过 文件 > 打开项目… 打开项目文件夹",
             ),
             Self::OpenObjectHint => (
                 "Double-click an object in the device tree to open it",

@@ -39,11 +39,7 @@ pub fn run(project: Option<PathBuf>) -> anyhow::Result<()> {
                 .storage
                 .and_then(|storage| eframe::get_value(storage, settings::SETTINGS_KEY))
                 .unwrap_or_default();
-            Ok(Box::new(StudioApp::new(
-                &creation.egui_ctx,
-                settings,
-                Some(project_dir),
-            )))
+            Ok(Box::new(StudioApp::new(settings, Some(project_dir))))
         }),
     )
     .map_err(|error| anyhow::anyhow!("the studio window could not be opened: {error}"))

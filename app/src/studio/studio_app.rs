@@ -28,6 +28,8 @@ pub struct StudioApp {
     /// Commands requested while drawing, run after the frame's UI.
     pending: Vec<Command>,
     title: String,
+    /// Whether fonts and theme were installed into the egui context (done on the first frame).
+    style_installed: bool,
 }
 
 /// A line for the status bar: what the last action did.
@@ -50,10 +52,9 @@ enum Command {
 }
 
 impl StudioApp {
-    /// Creates the studio, installs fonts and theme, and opens `project_dir` if given.
-    pub fn new(ctx: &egui::Context, settings: Settings, project_dir: Option<PathBuf>) -> Self {
-        install_fonts(ctx);
-        ctx.set_theme(settings.theme.egui_theme());
+    /// Creates the studio and opens `project_dir` if given. Fonts and theme are installed on
+    /// the first frame, so the studio runs the same in a window and in a test harness.
+    pub fn new(settings: Settings, project_dir: Option<PathBuf>) -> Self {
         let mut app = Self {
             settings,
             session: None,
@@ -64,6 +65,7 @@ impl StudioApp {
             status: None,
             pending: Vec::new(),
             title: String::new(),
+            style_installed: false,
         };
         if let Some(dir) = project_dir {
             app.open_project(&dir);
@@ -179,6 +181,11 @@ impl StudioApp {
 
     /// Draws the whole studio into `ui` and then runs the commands requested while drawing.
     pub fn ui(&mut self, ui: &mut Ui) {
+        if !self.style_installed {
+            install_fonts(ui.ctx());
+            ui.ctx().set_theme(self.settings.theme.egui_theme());
+            self.style_installed = true;
+        }
         self.handle_shortcuts(ui.ctx());
         self.update_title(ui.ctx());
         egui::Panel::top("menu_bar").show(ui, |ui| self.menu_bar_ui(ui));

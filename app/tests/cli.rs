@@ -1,0 +1,133 @@
+//! The headless command line: `rivet check` and `rivet fmt` on the example and broken copies.
+
+#![allow(clippy::unwrap_used, clippy::expect_used)] // Test helpers may panic: a panic is a failed test.
+
+use std::fs;
+use std::path::Path;
+use std::process::{Command, Output};
+
+fn rivet(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_rivet"))
+        .args(args)
+        .output()
+        .expect("rivet runs")
+}
+
+fn text(bytes: &[u8]) -> String {
+    String::from_utf8_lossy(bytes).into_owned()
+}
+
+fn example_copy() -> tempfile::TempDir {
+    let dir = tempfile::tempdir().unwrap();
+    copy_dir(&assets::example_project_dir(), dir.path());
+    dir
+}
+
+fn copy_dir(from: &Path, to: &Path) {
+    fs::create_dir_all(to).unwrap();
+    for entry in fs::read_dir(from).unwrap() {
+        let entry = entry.unwrap();
+        let target = to.join(entry.file_name());
+        if entry.file_type().unwrap().is_dir() {
+            copy_dir(&entry.path(), &target);
+        } else {
+            fs::copy(entry.path(), target).unwrap();
+        }
+    }
+}
+
+fn path_str(path: &Path) -> &str {
+    path.to_str().unwrap()
+}
+
+#[test]
+fn check_accepts_the_example() {
+    let output = rivet(&["check", path_str(&assets::example_project_dir())]);
+    assert!(output.status.success(), "{}", text(&output.stderr));
+    assert!(text(&output.stdout).contains("project 'Packaging machine' is fine"));
+}
+
+#[test]
+fn check_fails_on_a_broken_copy_with_file_and_line() {
+    let dir = example_copy();
+    let pou = dir.path().join("application/Main.pou.toml");
+    let broken = fs::read_to_string(&pou)
+        .unwrap()
+        .replace("kind = \"program\"", "kind = \"prgram\"");
+    fs::write(&pou, broken).unwrap();
+    let output = rivet(&["check", path_str(dir.path())]);
+    assert_eq!(output.status.code(), Some(1));
+    let stderr = text(&output.stderr);
+    let location = format!("{}:1: error:", pou.display());
+    assert!(stderr.contains(&location), "{stderr}");
+    assert!(stderr.contains("unknown variant `prgram`"), "{stderr}");
+    assert!(stderr.contains("nothing was changed"), "{stderr}");
+}
+
+#[test]
+fn fmt_leaves_a_canonical_project_untouched() {
+    let dir = example_copy();
+    let manifest = dir.path().join("rivet.toml");
+    let modified = fs::metadata(&manifest).unwrap().modified().unwrap();
+    let output = rivet(&["fmt", path_str(dir.path())]);
+    assert!(output.status.success(), "{}", text(&output.stderr));
+    assert!(text(&output.stdout).contains("already canonical"));
+    assert_eq!(
+        fs::metadata(&manifest).unwrap().modified().unwrap(),
+        modified
+    );
+}
+
+#[test]
+fn fmt_rewrites_a_hand_edited_file_into_canonical_form() {
+    let dir = example_copy();
+    let task_file = dir.path().join("rivet.toml");
+    let original = fs::read_to_string(&task_file).unwrap();
+    // Same content, written the long way.
+    let long_form = original.replacen(
+        "controller = { name = \"PLC\", host = \"127.0.0.1\", port = 5020 }\n",
+        "\n[controller]\nport = 5020\nname = \"PLC\"\nhost = \"127.0.0.1\"\n",
+        1,
+    );
+    assert_ne!(long_form, original);
+    // Tables must follow the plain keys in TOML, so move the controller table to the end.
+    let (head, tail) = long_form.split_once("\n[controller]").unwrap();
+    let (controller, rest) = tail.split_once("\n\n").unwrap();
+    fs::write(
+        &task_file,
+        format!("{head}\n{rest}\n[controller]{controller}\n"),
+    )
+    .unwrap();
+
+    let output = rivet(&["fmt", path_str(dir.path())]);
+    assert!(output.status.success(), "{}", text(&output.stderr));
+    assert!(text(&output.stdout).contains("formatted"));
+    assert_eq!(fs::read_to_string(&task_file).unwrap(), original);
+}
+
+#[test]
+fn fmt_refuses_a_broken_project_and_writes_nothing() {
+    let dir = example_copy();
+    let manifest = dir.path().join("rivet.toml");
+    fs::write(&manifest, "format_version = 2\n").unwrap();
+    let output = rivet(&["fmt", path_str(dir.path())]);
+    assert_eq!(output.status.code(), Some(1));
+    assert!(text(&output.stderr).contains("newer Rivet"));
+    assert_eq!(
+        fs::read_to_string(&manifest).unwrap(),
+        "format_version = 2\n"
+    );
+}
+
+#[test]
+fn check_of_a_missing_folder_says_what_is_missing() {
+    let dir = tempfile::tempdir().unwrap();
+    let missing = dir.path().join("nope");
+    let output = rivet(&["check", path_str(&missing)]);
+    assert_eq!(output.status.code(), Some(1));
+    let stderr = text(&output.stderr);
+    assert!(
+        stderr.contains("rivet.toml: error: file not found"),
+        "{stderr}"
+    );
+}

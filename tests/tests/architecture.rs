@@ -1,0 +1,165 @@
+//! The architecture rules of ARCHITECTURE.md, checked against `cargo metadata`.
+//!
+//! Each rule names which of our crates may depend on which, and which crates may use the UI
+//! frameworks and tokio. A change that breaks a rule fails here with the edge that broke it.
+
+#![allow(clippy::unwrap_used, clippy::expect_used)] // Test helpers may panic: a panic is a failed test.
+
+use std::collections::{BTreeMap, BTreeSet};
+use std::process::Command;
+
+use serde_json::Value;
+
+/// Our crates and the crates of ours each may depend on (normal dependencies).
+const ALLOWED_INTERNAL: &[(&str, &[&str])] = &[
+    ("project_model", &[]),
+    ("program_image", &[]),
+    ("motion", &[]),
+    ("assets", &[]),
+    ("compiler", &["project_model", "program_image"]),
+    ("runtime", &["program_image", "motion"]),
+    ("online", &["program_image"]),
+    ("editor", &["project_model", "compiler"]),
+    ("cam_editor", &["project_model", "motion"]),
+    (
+        "app",
+        &[
+            "assets",
+            "cam_editor",
+            "compiler",
+            "editor",
+            "motion",
+            "online",
+            "program_image",
+            "project_model",
+            "runtime",
+        ],
+    ),
+    ("tests", &[]),
+];
+
+/// Third-party crates that only some of our crates may use directly.
+const RESTRICTED: &[(&str, &[&str])] = &[
+    ("eframe", &["app"]),
+    ("egui", &["app", "editor", "cam_editor"]),
+    ("egui_tiles", &["app"]),
+    ("egui_extras", &["app", "editor", "cam_editor"]),
+    ("egui_plot", &["app", "editor", "cam_editor"]),
+    ("tokio", &["app", "online", "runtime"]),
+    ("tokio-modbus", &["app", "online", "runtime"]),
+];
+
+/// Each workspace crate with its normal (non-dev, non-build) dependencies by package name.
+fn workspace_dependencies() -> BTreeMap<String, BTreeSet<String>> {
+    let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
+    let output = Command::new(cargo)
+        .args([
+            "metadata",
+            "--format-version",
+            "1",
+            "--no-deps",
+            "--offline",
+        ])
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .expect("cargo metadata runs");
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    let metadata: Value = serde_json::from_slice(&output.stdout).expect("cargo metadata is JSON");
+    let mut crates = BTreeMap::new();
+    for package in metadata["packages"].as_array().expect("packages") {
+        let name = package["name"].as_str().expect("name").to_owned();
+        let dependencies = package["dependencies"]
+            .as_array()
+            .expect("dependencies")
+            .iter()
+            .filter(|dependency| dependency["kind"].is_null())
+            .map(|dependency| dependency["name"].as_str().expect("name").to_owned())
+            .collect();
+        crates.insert(name, dependencies);
+    }
+    crates
+}
+
+#[test]
+fn every_workspace_crate_has_a_rule() {
+    let crates = workspace_dependencies();
+    let ruled: BTreeSet<&str> = ALLOWED_INTERNAL.iter().map(|(name, _)| *name).collect();
+    let found: BTreeSet<&str> = crates.keys().map(String::as_str).collect();
+    assert_eq!(
+        found, ruled,
+        "add the new crate to ARCHITECTURE.md and to this test"
+    );
+}
+
+type CrateMap = BTreeMap<String, BTreeSet<String>>;
+
+/// The edges between our crates that no rule allows.
+fn internal_violations(crates: &CrateMap) -> Vec<String> {
+    let mut violations = Vec::new();
+    for (name, dependencies) in crates {
+        let allowed = ALLOWED_INTERNAL
+            .iter()
+            .find(|(ruled, _)| ruled == name)
+            .map_or(&[][..], |(_, allowed)| *allowed);
+        for dependency in dependencies {
+            if crates.contains_key(dependency) && !allowed.contains(&dependency.as_str()) {
+                violations.push(format!("{name} -> {dependency}"));
+            }
+        }
+    }
+    violations
+}
+
+/// The uses of UI frameworks and tokio outside the crates allowed them.
+fn restricted_violations(crates: &CrateMap) -> Vec<String> {
+    let mut violations = Vec::new();
+    for (name, dependencies) in crates {
+        for (restricted, allowed) in RESTRICTED {
+            if dependencies.contains(*restricted) && !allowed.contains(&name.as_str()) {
+                violations.push(format!("{name} -> {restricted}"));
+            }
+        }
+    }
+    violations
+}
+
+#[test]
+fn crates_depend_only_on_the_crates_of_ours_they_may() {
+    let violations = internal_violations(&workspace_dependencies());
+    assert!(
+        violations.is_empty(),
+        "forbidden dependencies: {violations:?}"
+    );
+}
+
+#[test]
+fn ui_frameworks_and_tokio_stay_in_their_crates() {
+    let violations = restricted_violations(&workspace_dependencies());
+    assert!(
+        violations.is_empty(),
+        "forbidden dependencies: {violations:?}"
+    );
+}
+
+#[test]
+fn the_checks_catch_forbidden_edges() {
+    let mut crates = workspace_dependencies();
+    crates
+        .get_mut("project_model")
+        .unwrap()
+        .insert("egui".into());
+    crates
+        .get_mut("editor")
+        .unwrap()
+        .insert("cam_editor".into());
+    crates.get_mut("compiler").unwrap().insert("tokio".into());
+    assert_eq!(internal_violations(&crates), ["editor -> cam_editor"]);
+    assert_eq!(
+        restricted_violations(&crates),
+        ["compiler -> tokio", "project_model -> egui"]
+    );
+}
