@@ -81,7 +81,16 @@ impl TreeUi<'_> {
 
     /// One selectable row: a tag, the name (the row's accessible label) and a weak detail.
     fn row(&mut self, ui: &mut Ui, node: TreeNode, tag: &str, label: &str, detail: &str) {
-        ui.label(RichText::new(tag).monospace().small().color(tag_color(tag)));
+        // A fixed-width tag column keeps the names aligned.
+        let tag_size = egui::vec2(30.0, ui.spacing().interact_size.y);
+        ui.allocate_ui_with_layout(
+            tag_size,
+            egui::Layout::left_to_right(egui::Align::Center),
+            |ui| {
+                ui.set_min_size(tag_size);
+                ui.label(RichText::new(tag).monospace().small().color(tag_color(tag)));
+            },
+        );
         let selected = self.selection == Some(&node);
         let response = ui.selectable_label(selected, label);
         if !detail.is_empty() {

@@ -5,6 +5,7 @@ use editor::CodeView;
 use egui::{RichText, Ui};
 use project_model::{Body, Object, Pou, Project};
 
+use super::cam_view::cam_view_ui;
 use super::i18n::{Language, Text};
 use super::property_view::property_view_ui;
 use super::tree_node::TreeNode;
@@ -75,7 +76,7 @@ fn content_ui(ui: &mut Ui, node: &TreeNode, content: Content<'_>, language: Lang
         Content::Object(Object::DataType(data_type)) => {
             CodeView::new((&salt, "decl"), &data_type.declaration_text()).show(ui);
         }
-        Content::Object(Object::CamTable(cam)) => property_view_ui(ui, &salt, cam),
+        Content::Object(Object::CamTable(cam)) => cam_view_ui(ui, cam, language),
         Content::Object(Object::Trace(trace)) => property_view_ui(ui, &salt, trace),
         Content::Object(Object::WatchList(watch)) => property_view_ui(ui, &salt, watch),
         Content::Controller(controller) => property_view_ui(ui, &salt, controller),
@@ -97,6 +98,10 @@ fn pou_ui(ui: &mut Ui, pou: &Pou, language: Language) {
 
     for method in &pou.methods {
         ui.separator();
+        section_heading(
+            ui,
+            &format!("{} {}", Text::Method.get(language), method.name),
+        );
         CodeView::new(
             (&pou.name, &method.name, "decl"),
             &method.declaration_text(),
@@ -111,6 +116,10 @@ fn pou_ui(ui: &mut Ui, pou: &Pou, language: Language) {
     }
     for property in &pou.properties {
         ui.separator();
+        section_heading(
+            ui,
+            &format!("{} {}", Text::Property.get(language), property.name),
+        );
         CodeView::new(
             (&pou.name, &property.name, "decl"),
             &property.declaration_text(),
@@ -132,7 +141,7 @@ fn pou_ui(ui: &mut Ui, pou: &Pou, language: Language) {
         ui.separator();
         section_heading(
             ui,
-            &format!("{} {}", Text::Actions.get(language), action.name),
+            &format!("{} {}", Text::Action.get(language), action.name),
         );
         body_ui(
             ui,

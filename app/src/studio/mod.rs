@@ -1,5 +1,6 @@
 //! The studio window.
 
+mod cam_view;
 mod device_tree;
 mod document_view;
 mod documents;
