@@ -96,3 +96,20 @@ fn the_interface_speaks_chinese_when_chosen() {
     assert!(harness.query_by_label("任务配置").is_some());
     assert!(harness.query_by_label("文件").is_some());
 }
+
+#[test]
+fn switching_the_language_in_settings_translates_the_interface() {
+    let mut harness = studio(Some(&example_dir()), Settings::default());
+    harness.get_by_label("Settings").click();
+    harness.run();
+    harness.get_by_label("Language").click();
+    harness.run();
+    harness.get_by_label("简体中文").click();
+    harness.run();
+    assert_eq!(
+        harness.state().settings().language,
+        Language::SimplifiedChinese
+    );
+    assert!(harness.query_by_label("任务配置").is_some());
+    assert!(harness.query_by_label("Task configuration").is_none());
+}
