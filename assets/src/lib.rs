@@ -22,3 +22,23 @@ pub fn examples_dir() -> PathBuf {
 pub fn example_project_dir() -> PathBuf {
     examples_dir().join("packaging_machine")
 }
+
+/// Copies the example project into `target` (created if missing), so it can be changed without
+/// touching the shipped copy: used by tests, and by anyone who wants to start from it.
+pub fn copy_example_project(target: &std::path::Path) -> std::io::Result<()> {
+    copy_dir(&example_project_dir(), target)
+}
+
+fn copy_dir(from: &std::path::Path, to: &std::path::Path) -> std::io::Result<()> {
+    std::fs::create_dir_all(to)?;
+    for entry in std::fs::read_dir(from)? {
+        let entry = entry?;
+        let target = to.join(entry.file_name());
+        if entry.file_type()?.is_dir() {
+            copy_dir(&entry.path(), &target)?;
+        } else {
+            std::fs::copy(entry.path(), target)?;
+        }
+    }
+    Ok(())
+}

@@ -11,25 +11,8 @@ use project_model::{LoadError, Severity, load_project, save_project};
 /// A copy of the example project in a temporary folder, to break on purpose.
 fn example_copy() -> tempfile::TempDir {
     let dir = tempfile::tempdir().unwrap();
-    copy_dir(&example_dir(), dir.path());
+    assets::copy_example_project(dir.path()).unwrap();
     dir
-}
-
-fn example_dir() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../assets/examples/packaging_machine")
-}
-
-fn copy_dir(from: &Path, to: &Path) {
-    fs::create_dir_all(to).unwrap();
-    for entry in fs::read_dir(from).unwrap() {
-        let entry = entry.unwrap();
-        let target = to.join(entry.file_name());
-        if entry.file_type().unwrap().is_dir() {
-            copy_dir(&entry.path(), &target);
-        } else {
-            fs::copy(entry.path(), target).unwrap();
-        }
-    }
 }
 
 /// Every file's bytes, to check that loading changed nothing.
@@ -83,7 +66,7 @@ fn replace_in(path: &Path, from: &str, to: &str) {
 
 #[test]
 fn the_example_project_loads_without_warnings() {
-    let loaded = load_project(&example_dir()).unwrap();
+    let loaded = load_project(&assets::example_project_dir()).unwrap();
     assert!(loaded.warnings.is_empty(), "{:?}", loaded.warnings);
     assert_eq!(loaded.project.tasks.len(), 2);
     assert_eq!(loaded.project.axes.len(), 2);
