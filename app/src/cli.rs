@@ -10,7 +10,12 @@ use project_model::{LoadError, load_project, save_project};
 
 /// Rivet: an engineering studio for IEC 61131-3 controllers.
 #[derive(Debug, Parser)]
-#[command(name = "rivet", version, about)]
+#[command(
+    name = "rivet",
+    version,
+    about = "Rivet: an engineering studio for IEC 61131-3 controllers",
+    args_conflicts_with_subcommands = true
+)]
 pub struct Cli {
     /// What to do headless; without a subcommand the studio opens.
     #[command(subcommand)]

@@ -426,12 +426,26 @@ fn has_folder_named(folder: &Folder, name: &str) -> bool {
         .any(|node| matches!(node, Node::Folder(f) if same_identifier(&f.name, name)))
 }
 
+/// Whether a folder among the first `before` children of `folder` is named `name`.
+fn has_folder_named_before(folder: &Folder, before: usize, name: &str) -> bool {
+    folder.children[..before]
+        .iter()
+        .any(|node| matches!(node, Node::Folder(f) if same_identifier(&f.name, name)))
+}
+
 /// Checks that every name in a node about to be inserted is valid and storable.
 fn check_node_names(node: &Node) -> Result<(), EditError> {
     match node {
         Node::Folder(folder) => {
             if !is_valid_identifier(&folder.name) {
                 return Err(EditError::InvalidName(folder.name.clone()));
+            }
+            for (index, child) in folder.children.iter().enumerate() {
+                if let Node::Folder(sub) = child
+                    && has_folder_named_before(folder, index, &sub.name)
+                {
+                    return Err(EditError::DuplicateName(sub.name.clone()));
+                }
             }
             folder.children.iter().try_for_each(check_node_names)
         }
@@ -569,5 +583,99 @@ impl std::fmt::Display for TextTarget {
             }
             Self::Action { pou, action } => write!(f, "action '{pou}.{action}'"),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::GlobalVarList;
+
+    fn gvl(name: &str) -> Node {
+        Node::Object(Object::Gvl(GlobalVarList {
+            name: name.into(),
+            ..GlobalVarList::default()
+        }))
+    }
+
+    fn folder(name: &str, children: Vec<Node>) -> Node {
+        Node::Folder(Folder {
+            name: name.into(),
+            children,
+        })
+    }
+
+    fn project() -> Project {
+        let mut project = Project::default();
+        project.application.children = vec![gvl("GVL_A"), folder("Motion", vec![gvl("GVL_B")])];
+        project
+    }
+
+    #[track_caller]
+    fn refused(edit: TreeEdit, expected: EditError) {
+        let mut edited = project();
+        assert_eq!(Edit::Tree(edit).apply(&mut edited), Err(expected));
+        assert_eq!(edited, project(), "a refused edit changed the project");
+    }
+
+    #[test]
+    fn names_that_clash_are_refused_without_regard_to_case() {
+        let insert = |node| TreeEdit::Insert {
+            folder: vec!["Motion".into()],
+            index: 0,
+            node,
+        };
+        refused(
+            insert(gvl("gvl_a")),
+            EditError::DuplicateName("gvl_a".into()),
+        );
+        refused(
+            insert(folder(
+                "X",
+                vec![folder("Sub", vec![]), folder("SUB", vec![])],
+            )),
+            EditError::DuplicateName("SUB".into()),
+        );
+        refused(insert(gvl("1st")), EditError::InvalidName("1st".into()));
+        refused(
+            TreeEdit::Rename {
+                folder: Vec::new(),
+                index: 0,
+                name: "GVL_b".into(),
+            },
+            EditError::DuplicateName("GVL_b".into()),
+        );
+    }
+
+    #[test]
+    fn a_folder_cannot_move_into_itself() {
+        refused(
+            TreeEdit::Move {
+                from_folder: Vec::new(),
+                from_index: 1,
+                to_folder: vec!["Motion".into()],
+                to_index: 0,
+            },
+            EditError::MoveIntoItself,
+        );
+    }
+
+    #[test]
+    fn an_object_moves_between_folders_and_back() {
+        let mut edited = project();
+        let inverse = Edit::Tree(TreeEdit::Move {
+            from_folder: Vec::new(),
+            from_index: 0,
+            to_folder: vec!["Motion".into()],
+            to_index: 1,
+        })
+        .apply(&mut edited)
+        .unwrap();
+        assert_eq!(
+            edited.application.locate("GVL_A"),
+            Some((vec!["Motion".into()], 1))
+        );
+        inverse.apply(&mut edited).unwrap();
+        assert_eq!(edited, project());
     }
 }

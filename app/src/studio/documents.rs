@@ -28,21 +28,18 @@ impl Documents {
     pub fn open(&mut self, node: TreeNode) {
         if self.tree.tiles.find_pane(&node).is_none() {
             let pane = self.tree.tiles.insert_pane(node.clone());
-            let root_tabs = self.tree.root().filter(|root| {
-                matches!(
-                    self.tree.tiles.get(*root),
-                    Some(Tile::Container(egui_tiles::Container::Tabs(_)))
-                )
+            // New tabs join the first tab group (the user may have split the area into
+            // several); with none left, a new group holding the old layout is made the root.
+            let tab_group = self.tree.tiles.iter().find_map(|(id, tile)| {
+                matches!(tile, Tile::Container(egui_tiles::Container::Tabs(_))).then_some(*id)
             });
-            match root_tabs {
-                Some(root) => {
-                    if let Some(Tile::Container(container)) = self.tree.tiles.get_mut(root) {
+            match tab_group {
+                Some(group) => {
+                    if let Some(Tile::Container(container)) = self.tree.tiles.get_mut(group) {
                         container.add_child(pane);
                     }
                 }
                 None => {
-                    // The tree was emptied or is not a tab container: start a new tab group
-                    // holding the old root and the new pane.
                     let mut children: Vec<TileId> = self.tree.root().into_iter().collect();
                     children.push(pane);
                     let root = self.tree.tiles.insert_tab_tile(children);
