@@ -5,3 +5,11 @@
 //! networks to the same tree, code generation into a `program_image`, and the `ide` facade that
 //! the editors use.
 //! It reads the project model and never changes it.
+//!
+//! Today it holds the lexer and the resilient parser ([`syntax::parse`]) and the diagnostic
+//! codes ([`Code`]).
+
+pub mod diagnostic;
+pub mod syntax;
+
+pub use diagnostic::{Code, Diagnostic, Severity};

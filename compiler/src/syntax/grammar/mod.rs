@@ -1,0 +1,57 @@
+//! The Structured Text grammar, as recursive descent over the parser's tokens.
+//!
+//! IEC 61131-3 3rd edition plus the CODESYS dialect: methods, properties, interfaces,
+//! `EXTENDS`/`IMPLEMENTS`, `REFERENCE TO`, `S=`/`R=`/`REF=`/`?=`, nestable comments.
+
+mod declarations;
+mod expressions;
+mod items;
+mod statements;
+
+use super::SyntaxKind::*;
+use super::parser::Parser;
+use super::token_set::TokenSet;
+
+pub(crate) use items::source_file;
+
+/// Entry point for the body of a POU stored on its own: statements up to the end.
+pub(crate) fn statement_file(p: &mut Parser<'_>) {
+    let root = p.open();
+    let list = p.open();
+    while !p.at_end() {
+        let before = p.depth;
+        statements::statement_or_recover(p, TokenSet::EMPTY, false);
+        debug_assert_eq!(before, p.depth);
+    }
+    list.complete(p, STATEMENT_LIST);
+    root.complete(p, SOURCE_FILE);
+}
+
+/// Parses a name being declared: one identifier as a `NAME` node.
+pub(crate) fn name(p: &mut Parser<'_>) -> bool {
+    if p.at(IDENT) {
+        let m = p.open();
+        p.bump();
+        m.complete(p, NAME);
+        true
+    } else {
+        p.error(format!("expected a name, found {}", p.found()));
+        false
+    }
+}
+
+/// Parses a reference to a named thing, possibly qualified: `FB_Conveyor`, `MyLib.FB_X`.
+pub(crate) fn name_ref(p: &mut Parser<'_>) -> bool {
+    if !p.at(IDENT) {
+        p.error(format!("expected a name, found {}", p.found()));
+        return false;
+    }
+    let m = p.open();
+    p.bump();
+    while p.at(DOT) && p.nth(1) == IDENT {
+        p.bump();
+        p.bump();
+    }
+    m.complete(p, NAME_REF);
+    true
+}
