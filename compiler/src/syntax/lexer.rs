@@ -154,6 +154,15 @@ impl Lexer<'_> {
     }
 
     fn nested_comment(&mut self, start: usize) -> SyntaxKind {
+        // OSCAT exports put free text between these two markers; it is all one comment.
+        const DESCRIPTION: &str = "(*@KEY@:DESCRIPTION*)";
+        const END_DESCRIPTION: &str = "(*@KEY@:END_DESCRIPTION*)";
+        if self.text[start..].starts_with(DESCRIPTION)
+            && let Some(end) = self.text[start..].find(END_DESCRIPTION)
+        {
+            self.at = start + end + END_DESCRIPTION.len();
+            return BLOCK_COMMENT;
+        }
         let mut depth = 0usize;
         while self.at + 1 < self.bytes.len() {
             match (self.bytes[self.at], self.bytes[self.at + 1]) {

@@ -41,7 +41,7 @@ fn var_block(p: &mut Parser<'_>) {
         p.bump();
     }
     let stop = TokenSet::new(&[END_VAR]).union(VAR_BLOCK_START);
-    while !p.at_set(stop) && !p.at_end() && (p.at(IDENT) || !is_section_end(p)) {
+    while !p.at_set(stop) && !p.at_end() && (p.at(IDENT) || p.at(AT) || !is_section_end(p)) {
         var_decl(p, stop);
     }
     p.expect_with(END_VAR, "to close the variable section");
@@ -71,12 +71,30 @@ fn is_section_end(p: &Parser<'_>) -> bool {
     )
 }
 
-/// `a, b AT %IX0.0 : Type := init;` (also instance paths in `VAR_CONFIG`).
+/// `a, b AT %IX0.0 : Type := init;` (also instance paths in `VAR_CONFIG`, nameless located
+/// variables `AT %IX1.0 : BOOL;`, edge inputs `x : BOOL R_EDGE;` and access paths
+/// `name : path : Type READ_ONLY;`).
 pub(crate) fn var_decl(p: &mut Parser<'_>, stop: TokenSet) {
     let m = p.open();
-    let names = p.open();
-    if !declared_name(p) {
-        names.abandon(p);
+    if p.at(IDENT) {
+        let names = p.open();
+        declared_name(p);
+        while p.eat(COMMA) {
+            if !declared_name(p) {
+                p.error(format!(
+                    "expected a variable name after ',', found {}",
+                    p.found()
+                ));
+            }
+        }
+        // matiec's library marks extensible inputs as `IN 1 .. : REAL`.
+        if p.at(INT_NUMBER) && p.nth(1) == DOTDOT {
+            p.bump();
+            p.bump();
+            p.eat(INT_NUMBER);
+        }
+        names.complete(p, VAR_NAME_LIST);
+    } else if !p.at(AT) {
         let recovery = stop.union(TokenSet::new(&[SEMICOLON, IDENT]));
         p.error_recover(
             format!("expected a variable name, found {}", p.found()),
@@ -86,10 +104,6 @@ pub(crate) fn var_decl(p: &mut Parser<'_>, stop: TokenSet) {
         m.complete(p, VAR_DECL);
         return;
     }
-    while p.eat(COMMA) {
-        declared_name(p);
-    }
-    names.complete(p, VAR_NAME_LIST);
     if p.at(AT) {
         let address = p.open();
         p.bump();
@@ -99,12 +113,21 @@ pub(crate) fn var_decl(p: &mut Parser<'_>, stop: TokenSet) {
     if p.expect_with(COLON, "before the type") || p.at_set(TYPE_START) {
         // A forgotten ':' is reported once and the type still parsed.
         type_ref(p);
+        // An access path: `name : Program.path : Type`.
+        if p.eat(COLON) {
+            type_ref(p);
+        }
     } else {
         let skipped = p.open();
         while !p.at_set(stop.union(TokenSet::new(&[SEMICOLON, ASSIGN]))) && !p.at_end() {
             p.bump();
         }
         skipped.complete(p, ERROR);
+    }
+    for word in ["R_EDGE", "F_EDGE", "READ_ONLY", "READ_WRITE"] {
+        if p.nth_is_word(0, word) {
+            p.bump();
+        }
     }
     if p.at(ASSIGN) {
         initializer(p);
@@ -143,7 +166,10 @@ pub(crate) fn type_ref(p: &mut Parser<'_>) {
                     } else {
                         expression(p);
                         p.expect_with(DOTDOT, "in the array bounds");
-                        expression(p);
+                        // matiec accepts an open upper bound, `ARRAY[1..] OF REAL`.
+                        if !matches!(p.current(), R_BRACK | COMMA) {
+                            expression(p);
+                        }
                     }
                     range.complete(p, ARRAY_RANGE);
                     if !p.eat(COMMA) {
@@ -224,7 +250,17 @@ pub(crate) fn type_ref(p: &mut Parser<'_>) {
 pub(crate) fn initializer(p: &mut Parser<'_>) {
     let m = p.open();
     p.bump();
+    let first = p.open();
     init_value(p);
+    if p.at(COMMA) {
+        // IEC 61131-3 2nd edition writes array initialisers without brackets: `:= 2, 7, 18`.
+        while p.eat(COMMA) {
+            init_value(p);
+        }
+        first.complete(p, ARRAY_INIT);
+    } else {
+        first.abandon(p);
+    }
     m.complete(p, INITIALIZER);
 }
 

@@ -168,6 +168,11 @@ fn primary(p: &mut Parser<'_>) -> Option<CompletedMarker> {
             }
             TYPED_LITERAL
         }
+        // Operators called like functions, `MOD(a, b)`, `OR(a, b, c)`, as matiec allows.
+        MOD | AND | OR | XOR if p.nth(1) == L_PAREN => {
+            p.bump();
+            NAME_EXPR
+        }
         IDENT | THIS | SUPER => {
             p.bump();
             NAME_EXPR

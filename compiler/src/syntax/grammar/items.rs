@@ -93,9 +93,15 @@ fn pou(p: &mut Parser<'_>) {
 fn body_with_members(p: &mut Parser<'_>, end: SyntaxKind) {
     var_blocks(p);
     members(p);
+    // Statements, SFC elements and actions may interleave in a body, as in textual SFC.
     let stops = MEMBER_START.union(TokenSet::new(&[end]));
-    statement_list(p, stops);
-    members(p);
+    loop {
+        statement_list(p, stops);
+        if !p.at_set(MEMBER_START) {
+            break;
+        }
+        members(p);
+    }
     p.expect_with(end, "to close the declaration");
 }
 

@@ -29,7 +29,8 @@ pub(crate) fn statement_file(p: &mut Parser<'_>) {
 
 /// Parses a name being declared: one identifier as a `NAME` node.
 pub(crate) fn name(p: &mut Parser<'_>) -> bool {
-    if p.at(IDENT) {
+    // The operator functions of the standard library are declared under operator names.
+    if p.at(IDENT) || (matches!(p.current(), MOD | AND | OR | XOR | NOT) && p.nth(1) == COLON) {
         let m = p.open();
         p.bump();
         m.complete(p, NAME);

@@ -99,6 +99,12 @@ fn depth_exceeded(p: &mut Parser<'_>, stops: TokenSet) {
 }
 
 fn statement(p: &mut Parser<'_>, stops: TokenSet, in_case: bool) {
+    if at_step(p) {
+        return sfc_step(p);
+    }
+    if at_transition(p) {
+        return sfc_transition(p);
+    }
     match p.current() {
         IF => if_statement(p),
         CASE => case_statement(p),
@@ -141,6 +147,97 @@ fn statement(p: &mut Parser<'_>, stops: TokenSet, in_case: bool) {
             p.eat(SEMICOLON);
             m.complete(p, ERROR);
         }
+    }
+}
+
+/// `INITIAL_STEP Name:` or `STEP Name:`, which are words, not keywords, so variables may
+/// still be called `Step`.
+fn at_step(p: &Parser<'_>) -> bool {
+    (p.nth_is_word(0, "STEP") || p.nth_is_word(0, "INITIAL_STEP"))
+        && p.nth(1) == IDENT
+        && p.nth(2) == COLON
+}
+
+/// `TRANSITION [Name] [(PRIORITY := n)] FROM`.
+fn at_transition(p: &Parser<'_>) -> bool {
+    p.nth_is_word(0, "TRANSITION")
+        && (p.nth_is_word(1, "FROM")
+            || (p.nth(1) == IDENT && p.nth_is_word(2, "FROM"))
+            || p.nth(1) == L_PAREN)
+}
+
+/// A textual SFC step: `STEP Name: action associations END_STEP`.
+fn sfc_step(p: &mut Parser<'_>) {
+    let m = p.open();
+    p.bump();
+    super::name(p);
+    p.bump();
+    while !p.nth_is_word(0, "END_STEP")
+        && !p.at_set(LIST_END)
+        && !p.at_end()
+        && !at_step(p)
+        && !at_transition(p)
+    {
+        statement_or_recover(p, LIST_END, false);
+    }
+    expect_word(p, "END_STEP", "to close the step");
+    m.complete(p, STEP_DECL);
+}
+
+/// A textual SFC transition: `TRANSITION FROM a TO (b, c) := condition; END_TRANSITION`.
+fn sfc_transition(p: &mut Parser<'_>) {
+    let m = p.open();
+    p.bump();
+    if p.at(IDENT) && !p.nth_is_word(0, "FROM") {
+        super::name(p);
+    }
+    if p.at(L_PAREN) {
+        super::expressions::arg_list(p);
+    }
+    expect_word(p, "FROM", "in the transition");
+    step_list(p);
+    p.expect_with(TO, "after the transition's source steps");
+    step_list(p);
+    if p.eat(ASSIGN) {
+        expression(p);
+        p.expect_with(SEMICOLON, "after the transition condition");
+    } else if p.eat(COLON) {
+        while !p.nth_is_word(0, "END_TRANSITION") && !p.at_set(LIST_END) && !p.at_end() {
+            statement_or_recover(p, LIST_END, false);
+        }
+    } else {
+        p.error(format!(
+            "expected ':=' and the transition condition, found {}",
+            p.found()
+        ));
+    }
+    expect_word(p, "END_TRANSITION", "to close the transition");
+    m.complete(p, TRANSITION_DECL);
+}
+
+/// `Step` or `(Step1, Step2)`.
+fn step_list(p: &mut Parser<'_>) {
+    let m = p.open();
+    if p.eat(L_PAREN) {
+        loop {
+            super::name_ref(p);
+            if !p.eat(COMMA) {
+                break;
+            }
+        }
+        p.expect_with(R_PAREN, "to close the step list");
+    } else {
+        super::name_ref(p);
+    }
+    m.complete(p, STEP_LIST);
+}
+
+/// Consumes the word `word` (a contextual keyword such as `END_STEP`) or reports it missing.
+fn expect_word(p: &mut Parser<'_>, word: &str, context: &str) {
+    if p.nth_is_word(0, word) {
+        p.bump();
+    } else {
+        p.error_before_current(format!("expected {word} {context}, found {}", p.found()));
     }
 }
 

@@ -1,0 +1,107 @@
+//! Third-party IEC 61131-3 sources from `../shared/corpora` (see its README): the parser must
+//! accept what their authors' tools accept and reject the files named as syntax errors.
+
+#![allow(clippy::unwrap_used, clippy::expect_used)] // Test helpers may panic: a panic is a failed test.
+
+use std::path::{Path, PathBuf};
+
+use compiler::syntax::parse;
+
+fn corpora() -> PathBuf {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../shared/corpora");
+    assert!(
+        dir.is_dir(),
+        "{} is missing: the corpora live in the shared folder beside the repository",
+        dir.display()
+    );
+    dir
+}
+
+fn files(dir: &Path, extension: &str) -> Vec<PathBuf> {
+    let mut found = Vec::new();
+    let mut pending = vec![dir.to_owned()];
+    while let Some(current) = pending.pop() {
+        for entry in std::fs::read_dir(&current).unwrap() {
+            let path = entry.unwrap().path();
+            if path.is_dir() {
+                pending.push(path);
+            } else if path
+                .extension()
+                .is_some_and(|e| e.eq_ignore_ascii_case(extension))
+            {
+                found.push(path);
+            }
+        }
+    }
+    found.sort();
+    found
+}
+
+/// Parses every file and returns those whose outcome differs from `expect_ok`, with the first
+/// error of each.
+fn mismatches(paths: &[PathBuf], expect_ok: impl Fn(&Path) -> bool) -> Vec<String> {
+    let mut wrong = Vec::new();
+    for path in paths {
+        let bytes = std::fs::read(path).unwrap();
+        let text = String::from_utf8_lossy(&bytes);
+        let parse = parse(&text);
+        assert_eq!(
+            parse.syntax().to_string(),
+            text,
+            "{} lost text",
+            path.display()
+        );
+        let ok = parse.errors().is_empty();
+        if ok != expect_ok(path) {
+            let detail = parse
+                .errors()
+                .first()
+                .map_or("no error".to_owned(), |error| {
+                    let line = text[..error.range.start].matches('\n').count() + 1;
+                    format!("line {line}: {}", error.message)
+                });
+            wrong.push(format!("{}: {detail}", path.display()));
+        }
+    }
+    wrong
+}
+
+#[test]
+fn ironplc_files_are_accepted_or_rejected_as_their_names_say() {
+    let paths = files(&corpora().join("ironplc"), "st");
+    assert!(paths.len() > 50);
+    // A binary file is not source text, whatever its name. var_decl_rendered.st is ironplc's
+    // pretty-printer output, which writes the repeated initialiser `[3(2)]` of var_decl.st as
+    // `3 2`; that is not IEC 61131-3 syntax, so we reject it (var_decl.st itself is accepted).
+    let wrong = mismatches(&paths, |path| {
+        let name = path.file_name().unwrap().to_string_lossy();
+        !name.contains("syntax_error") && !name.contains("binary") && name != "var_decl_rendered.st"
+    });
+    assert!(
+        wrong.is_empty(),
+        "{} of {} files:\n{}",
+        wrong.len(),
+        paths.len(),
+        wrong.join("\n")
+    );
+}
+
+#[test]
+fn matiec_annex_f_st_examples_and_library_files_are_accepted() {
+    let mut paths: Vec<PathBuf> = files(&corpora().join("matiec/AnnexF"), "txt")
+        .into_iter()
+        .filter(|path| path.to_string_lossy().ends_with("_st.txt"))
+        .collect();
+    paths.extend(files(&corpora().join("matiec/lib"), "txt"));
+    // delay_st.txt lacks the ';' after its last declaration, a typo of the standard's Annex F
+    // that matiec forgives; IEC 61131-3, CODESYS and ironplc (first_steps_syntax_error.st has
+    // the very same mistake) reject it, and so do we.
+    let wrong = mismatches(&paths, |path| !path.ends_with("AnnexF/delay_st.txt"));
+    assert!(
+        wrong.is_empty(),
+        "{} of {} files:\n{}",
+        wrong.len(),
+        paths.len(),
+        wrong.join("\n")
+    );
+}
