@@ -105,3 +105,60 @@ fn matiec_annex_f_st_examples_and_library_files_are_accepted() {
         wrong.join("\n")
     );
 }
+
+/// The texts inside `<tag><![CDATA[…]]></tag>` elements of a TwinCAT XML file.
+fn cdata_of(xml: &str, tag: &str) -> Vec<String> {
+    let open = format!("<{tag}><![CDATA[");
+    let mut found = Vec::new();
+    let mut rest = xml;
+    while let Some(start) = rest.find(&open) {
+        let after = &rest[start + open.len()..];
+        let Some(end) = after.find("]]>") else { break };
+        found.push(after[..end].to_owned());
+        rest = &after[end..];
+    }
+    found
+}
+
+#[test]
+fn tcunit_declarations_and_bodies_parse_without_syntax_errors() {
+    let root = corpora().join("TcUnit");
+    let mut paths = files(&root, "TcPOU");
+    paths.extend(files(&root, "TcDUT"));
+    paths.extend(files(&root, "TcGVL"));
+    assert!(paths.len() > 90, "{} TwinCAT files", paths.len());
+    let mut wrong = Vec::new();
+    let mut parts = 0;
+    for path in &paths {
+        let xml = std::fs::read_to_string(path).unwrap();
+        let declarations = cdata_of(&xml, "Declaration");
+        let bodies = cdata_of(&xml, "ST");
+        for (text, parse) in declarations
+            .iter()
+            .map(|text| (text, compiler::syntax::parse_declaration_part(text)))
+            .chain(
+                bodies
+                    .iter()
+                    .map(|text| (text, compiler::syntax::parse_statements(text))),
+            )
+        {
+            parts += 1;
+            assert_eq!(parse.syntax().to_string(), *text);
+            if let Some(error) = parse.errors().first() {
+                let line = text[..error.range.start].matches('\n').count() + 1;
+                wrong.push(format!(
+                    "{} (part line {line}): {}",
+                    path.display(),
+                    error.message
+                ));
+            }
+        }
+    }
+    assert!(parts > 500, "only {parts} parts found");
+    assert!(
+        wrong.is_empty(),
+        "{} of {parts} parts:\n{}",
+        wrong.len(),
+        wrong.join("\n")
+    );
+}

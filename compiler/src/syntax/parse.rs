@@ -71,17 +71,24 @@ impl Parse {
 
 /// Parses a source file: POUs, types, global variable lists, configurations. Never fails.
 pub fn parse(text: &str) -> Parse {
-    parse_with(text, grammar::source_file)
+    parse_with(text, grammar::source_file, false)
 }
 
 /// Parses the statements of a POU body, as stored in a `.st` file of a project.
 pub fn parse_statements(text: &str) -> Parse {
-    parse_with(text, grammar::statement_file)
+    parse_with(text, grammar::statement_file, false)
 }
 
-fn parse_with(text: &str, entry: fn(&mut Parser<'_>)) -> Parse {
+/// Parses a declaration part stored apart from its body, as CODESYS and TwinCAT keep POUs,
+/// methods and properties: `FUNCTION_BLOCK F VAR … END_VAR` without `END_FUNCTION_BLOCK`.
+pub fn parse_declaration_part(text: &str) -> Parse {
+    parse_with(text, grammar::source_file, true)
+}
+
+fn parse_with(text: &str, entry: fn(&mut Parser<'_>), declaration_part: bool) -> Parse {
     let (tokens, lex_errors) = tokenize(text);
     let mut parser = Parser::new(text, &tokens);
+    parser.declaration_part = declaration_part;
     entry(&mut parser);
     let Parser { events, errors, .. } = parser;
     let green = build_tree(text, &tokens, events);

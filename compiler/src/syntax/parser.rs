@@ -42,6 +42,9 @@ pub(crate) struct Parser<'t> {
     pub(crate) depth: u32,
     /// Current nesting of expressions, counted apart so either limit alone bounds the stack.
     pub(crate) expression_depth: u32,
+    /// Parsing a declaration part alone (as CODESYS and TwinCAT store it): POUs, methods and
+    /// properties may end at the end of the text without their `END_…`.
+    pub(crate) declaration_part: bool,
 }
 
 impl<'t> Parser<'t> {
@@ -69,6 +72,7 @@ impl<'t> Parser<'t> {
             errors: Vec::new(),
             depth: 0,
             expression_depth: 0,
+            declaration_part: false,
         }
     }
 
@@ -166,6 +170,15 @@ impl<'t> Parser<'t> {
         );
         self.error_before_current(message);
         false
+    }
+
+    /// Consumes the `END_…` keyword `end` that closes a declaration, which a declaration part
+    /// parsed alone may leave out.
+    pub(crate) fn expect_end(&mut self, end: SyntaxKind, context: &str) {
+        if self.declaration_part && self.at_end() {
+            return;
+        }
+        self.expect_with(end, context);
     }
 
     /// How the current token is described in messages: `'foo'` or `the end of the file`.

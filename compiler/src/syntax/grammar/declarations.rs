@@ -225,6 +225,11 @@ pub(crate) fn type_ref(p: &mut Parser<'_>) {
                 expression(p);
                 p.expect_with(close, "after the string length");
                 m.complete(p, STRING_TYPE);
+            } else if p.at(L_PAREN) && !subrange_follows(p) {
+                // An FB instance with initialisation arguments (TwinCAT FB_init),
+                // `FB_Logger(TestResults)`.
+                super::expressions::arg_list(p);
+                m.complete(p, NAMED_TYPE);
             } else if p.at(L_PAREN) {
                 let range = p.open();
                 p.bump();
@@ -243,6 +248,26 @@ pub(crate) fn type_ref(p: &mut Parser<'_>) {
             m.abandon(p);
         }
     }
+}
+
+/// Whether the parenthesis here holds a subrange `(lo..hi)`: a `..` before its closing `)`.
+fn subrange_follows(p: &Parser<'_>) -> bool {
+    let mut depth = 0usize;
+    for n in 0..256 {
+        match p.nth(n) {
+            L_PAREN => depth += 1,
+            R_PAREN => {
+                depth -= 1;
+                if depth == 0 {
+                    return false;
+                }
+            }
+            DOTDOT if depth == 1 => return true,
+            SEMICOLON | EOF => return false,
+            _ => {}
+        }
+    }
+    false
 }
 
 /// `:= value`: an expression, an array initialiser `[1, 2, 3(0)]` or a structure initialiser

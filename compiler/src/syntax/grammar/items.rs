@@ -46,6 +46,8 @@ pub(crate) fn source_file(p: &mut Parser<'_>) {
                 var_blocks(p);
                 m.complete(p, GLOBAL_VAR_LIST);
             }
+            // A property accessor's declaration part is just its variable sections.
+            kind if p.declaration_part && VAR_BLOCK_START.contains(kind) => var_blocks(p),
             _ => p.error_recover(
                 format!(
                     "expected PROGRAM, FUNCTION_BLOCK, FUNCTION, TYPE, VAR_GLOBAL or \
@@ -85,6 +87,8 @@ fn pou(p: &mut Parser<'_>) {
         return_type(p);
     }
     inheritance(p);
+    // CODESYS tolerates a ';' after the header.
+    p.eat(SEMICOLON);
     body_with_members(p, end_keyword(start));
     m.complete(p, POU);
 }
@@ -102,7 +106,7 @@ fn body_with_members(p: &mut Parser<'_>, end: SyntaxKind) {
         }
         members(p);
     }
-    p.expect_with(end, "to close the declaration");
+    p.expect_end(end, "to close the declaration");
 }
 
 fn members(p: &mut Parser<'_>) {
@@ -155,9 +159,10 @@ fn method(p: &mut Parser<'_>) {
     if p.at(COLON) {
         return_type(p);
     }
+    p.eat(SEMICOLON);
     var_blocks(p);
     statement_list(p, TokenSet::new(&[END_METHOD]).union(ITEM_START));
-    p.expect_with(END_METHOD, "to close the method");
+    p.expect_end(END_METHOD, "to close the method");
     m.complete(p, METHOD_DECL);
 }
 
@@ -174,9 +179,10 @@ fn property(p: &mut Parser<'_>) {
     } else {
         p.error_before_current("expected ':' and the property's type");
     }
+    p.eat(SEMICOLON);
     var_blocks(p);
     statement_list(p, TokenSet::new(&[END_PROPERTY]).union(ITEM_START));
-    p.expect_with(END_PROPERTY, "to close the property");
+    p.expect_end(END_PROPERTY, "to close the property");
     m.complete(p, PROPERTY_DECL);
 }
 
@@ -187,7 +193,7 @@ fn action(p: &mut Parser<'_>) {
     name(p);
     p.eat(COLON);
     statement_list(p, TokenSet::new(&[END_ACTION]).union(ITEM_START));
-    p.expect_with(END_ACTION, "to close the action");
+    p.expect_end(END_ACTION, "to close the action");
     m.complete(p, ACTION_DECL);
 }
 
@@ -214,7 +220,7 @@ fn interface(p: &mut Parser<'_>) {
             break;
         }
     }
-    p.expect_with(END_INTERFACE, "to close the interface");
+    p.expect_end(END_INTERFACE, "to close the interface");
     m.complete(p, INTERFACE_DECL);
 }
 
