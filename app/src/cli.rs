@@ -27,9 +27,10 @@ pub struct Cli {
 /// Headless subcommands.
 #[derive(Debug, Subcommand)]
 pub enum Command {
-    /// Load a project and print every problem as `file:line: message`; exit 1 on any error.
+    /// Check a project (or one `.st` file): load it and parse every Structured Text body;
+    /// print each problem as `file:line:col: severity[CODE]: message`; exit 1 on any error.
     Check {
-        /// The project folder (the folder holding rivet.toml).
+        /// The project folder (the folder holding rivet.toml), or a `.st` source file.
         project: PathBuf,
     },
     /// Load a project and save it in canonical form; a canonical project is left untouched.
@@ -62,18 +63,73 @@ pub fn report_error(error: &anyhow::Error) {
     }
 }
 
-fn check(dir: &Path) -> anyhow::Result<()> {
-    let loaded = load_project(dir).map_err(describe_load_error)?;
+fn check(path: &Path) -> anyhow::Result<()> {
+    if path.is_file() {
+        return check_source_file(path);
+    }
+    let loaded = load_project(path).map_err(describe_load_error)?;
     for warning in &loaded.warnings {
         eprintln!("{warning}");
     }
+    let mut errors = 0usize;
+    let mut warnings = 0usize;
+    for (file, text) in project_model::st_body_files(&loaded.project) {
+        let parse = compiler::syntax::parse_statements(text);
+        let shown = path.join(&file).display().to_string();
+        for diagnostic in parse.errors() {
+            eprint!("{}", diagnostic.render(&shown, text));
+            match diagnostic.severity {
+                compiler::Severity::Error => errors += 1,
+                compiler::Severity::Warning => warnings += 1,
+            }
+        }
+    }
+    if errors > 0 {
+        anyhow::bail!(
+            "{}: {errors} error(s), {warnings} warning(s)",
+            path.display()
+        );
+    }
     println!(
-        "{}: project '{}' is fine ({} objects, {} tasks)",
-        dir.display(),
+        "{}: project '{}' is fine ({} objects, {} tasks, {warnings} warning(s))",
+        path.display(),
         loaded.project.name,
         loaded.project.application.objects().len(),
         loaded.project.tasks.len()
     );
+    Ok(())
+}
+
+/// Checks one source file holding whole POUs, types or global variable lists.
+fn check_source_file(path: &Path) -> anyhow::Result<()> {
+    let bytes = std::fs::read(path)
+        .map_err(|error| anyhow::anyhow!("{}: cannot read: {error}", path.display()))?;
+    let text = String::from_utf8(bytes).map_err(|error| {
+        let valid = error.utf8_error().valid_up_to();
+        let line = error.as_bytes()[..valid]
+            .iter()
+            .filter(|&&b| b == b'\n')
+            .count()
+            + 1;
+        anyhow::anyhow!(
+            "{}:{line}: error: not UTF-8 text; save it as UTF-8",
+            path.display()
+        )
+    })?;
+    let parse = compiler::syntax::parse(&text);
+    let shown = path.display().to_string();
+    for diagnostic in parse.errors() {
+        eprint!("{}", diagnostic.render(&shown, &text));
+    }
+    let errors = parse
+        .errors()
+        .iter()
+        .filter(|d| d.severity == compiler::Severity::Error)
+        .count();
+    if errors > 0 {
+        anyhow::bail!("{shown}: {errors} error(s)");
+    }
+    println!("{shown}: no problems found");
     Ok(())
 }
 

@@ -13,7 +13,7 @@ fn rivet(args: &[&str]) -> Output {
         .expect("rivet runs")
 }
 
-fn text(bytes: &[u8]) -> String {
+fn text_of(bytes: &[u8]) -> String {
     String::from_utf8_lossy(bytes).into_owned()
 }
 
@@ -30,8 +30,8 @@ fn path_str(path: &Path) -> &str {
 #[test]
 fn check_accepts_the_example() {
     let output = rivet(&["check", path_str(&assets::example_project_dir())]);
-    assert!(output.status.success(), "{}", text(&output.stderr));
-    assert!(text(&output.stdout).contains("project 'Packaging machine' is fine"));
+    assert!(output.status.success(), "{}", text_of(&output.stderr));
+    assert!(text_of(&output.stdout).contains("project 'Packaging machine' is fine"));
 }
 
 #[test]
@@ -44,7 +44,7 @@ fn check_fails_on_a_broken_copy_with_file_and_line() {
     fs::write(&pou, broken).unwrap();
     let output = rivet(&["check", path_str(dir.path())]);
     assert_eq!(output.status.code(), Some(1));
-    let stderr = text(&output.stderr);
+    let stderr = text_of(&output.stderr);
     let location = format!("{}:1: error:", pou.display());
     assert!(stderr.contains(&location), "{stderr}");
     assert!(stderr.contains("unknown variant `prgram`"), "{stderr}");
@@ -57,8 +57,8 @@ fn fmt_leaves_a_canonical_project_untouched() {
     let manifest = dir.path().join("rivet.toml");
     let modified = fs::metadata(&manifest).unwrap().modified().unwrap();
     let output = rivet(&["fmt", path_str(dir.path())]);
-    assert!(output.status.success(), "{}", text(&output.stderr));
-    assert!(text(&output.stdout).contains("already canonical"));
+    assert!(output.status.success(), "{}", text_of(&output.stderr));
+    assert!(text_of(&output.stdout).contains("already canonical"));
     assert_eq!(
         fs::metadata(&manifest).unwrap().modified().unwrap(),
         modified
@@ -87,8 +87,8 @@ fn fmt_rewrites_a_hand_edited_file_into_canonical_form() {
     .unwrap();
 
     let output = rivet(&["fmt", path_str(dir.path())]);
-    assert!(output.status.success(), "{}", text(&output.stderr));
-    assert!(text(&output.stdout).contains("formatted"));
+    assert!(output.status.success(), "{}", text_of(&output.stderr));
+    assert!(text_of(&output.stdout).contains("formatted"));
     assert_eq!(fs::read_to_string(&task_file).unwrap(), original);
 }
 
@@ -99,7 +99,7 @@ fn fmt_refuses_a_broken_project_and_writes_nothing() {
     fs::write(&manifest, "format_version = 2\n").unwrap();
     let output = rivet(&["fmt", path_str(dir.path())]);
     assert_eq!(output.status.code(), Some(1));
-    assert!(text(&output.stderr).contains("newer Rivet"));
+    assert!(text_of(&output.stderr).contains("newer Rivet"));
     assert_eq!(
         fs::read_to_string(&manifest).unwrap(),
         "format_version = 2\n"
@@ -112,9 +112,59 @@ fn check_of_a_missing_folder_says_what_is_missing() {
     let missing = dir.path().join("nope");
     let output = rivet(&["check", path_str(&missing)]);
     assert_eq!(output.status.code(), Some(1));
-    let stderr = text(&output.stderr);
+    let stderr = text_of(&output.stderr);
     assert!(
         stderr.contains("rivet.toml: error: file not found"),
+        "{stderr}"
+    );
+}
+
+#[test]
+fn check_reports_syntax_errors_in_st_bodies_with_line_column_and_code() {
+    let dir = example_copy();
+    let body = dir.path().join("application/Sequence.st");
+    let text = fs::read_to_string(&body).unwrap().replacen(
+        "eState := E_MachineState.Starting;",
+        "eState := E_MachineState.Starting",
+        1,
+    );
+    fs::write(&body, text).unwrap();
+    let output = rivet(&["check", path_str(dir.path())]);
+    assert_eq!(output.status.code(), Some(1));
+    let stderr = text_of(&output.stderr);
+    let location = format!(
+        "{}:4:46: error[E0001]: expected ';' after the statement, found END_IF",
+        body.display()
+    );
+    assert!(stderr.contains(&location), "{stderr}");
+    assert!(
+        stderr.contains("4 |             eState := E_MachineState.Starting\n"),
+        "{stderr}"
+    );
+}
+
+#[test]
+fn check_of_a_single_st_file_parses_whole_pous() {
+    let dir = tempfile::tempdir().unwrap();
+    let good = dir.path().join("good.st");
+    fs::write(
+        &good,
+        "FUNCTION F : INT VAR_INPUT a : INT; END_VAR F := a * 2; END_FUNCTION\n",
+    )
+    .unwrap();
+    let output = rivet(&["check", path_str(&good)]);
+    assert!(output.status.success(), "{}", text_of(&output.stderr));
+
+    let bad = dir.path().join("bad.st");
+    fs::write(&bad, "PROGRAM P\nx := (1 + ;\nEND_PROGRAM\n").unwrap();
+    let output = rivet(&["check", path_str(&bad)]);
+    assert_eq!(output.status.code(), Some(1));
+    let stderr = text_of(&output.stderr);
+    assert!(
+        stderr.contains(&format!(
+            "{}:2:11: error[E0001]: expected an expression, found ';'",
+            bad.display()
+        )),
         "{stderr}"
     );
 }

@@ -78,3 +78,73 @@ impl Diagnostic {
         }
     }
 }
+
+/// The 1-based line and column (in characters) of byte `offset` in `text`.
+pub fn line_column(text: &str, offset: usize) -> (usize, usize) {
+    let offset = floor_char_boundary(text, offset.min(text.len()));
+    let before = &text[..offset];
+    let line_start = before.rfind('\n').map_or(0, |index| index + 1);
+    let line = before.matches('\n').count() + 1;
+    let column = before[line_start..].chars().count() + 1;
+    (line, column)
+}
+
+fn floor_char_boundary(text: &str, mut offset: usize) -> usize {
+    while !text.is_char_boundary(offset) {
+        offset -= 1;
+    }
+    offset
+}
+
+impl Diagnostic {
+    /// Renders the diagnostic as `file:line:col: severity[CODE]: message` followed by the source
+    /// line with the span underlined, the form terminals and editors link to.
+    pub fn render(&self, file: &str, text: &str) -> String {
+        let (line, column) = line_column(text, self.range.start);
+        let severity = match self.severity {
+            Severity::Error => "error",
+            Severity::Warning => "warning",
+        };
+        let start = floor_char_boundary(text, self.range.start.min(text.len()));
+        let line_start = text[..start].rfind('\n').map_or(0, |index| index + 1);
+        let line_end = text[start..]
+            .find('\n')
+            .map_or(text.len(), |index| start + index);
+        let source_line = text[line_start..line_end].trim_end_matches('\r');
+        let end = floor_char_boundary(text, self.range.end.clamp(start, line_end));
+        let width = text[start..end].chars().count().max(1);
+        let number = line.to_string();
+        let gutter = " ".repeat(number.len());
+        // Tabs keep their width in the underline so the caret sits under the span.
+        let lead: String = text[line_start..start]
+            .chars()
+            .map(|c| if c == '\t' { '\t' } else { ' ' })
+            .collect();
+        format!(
+            "{file}:{line}:{column}: {severity}[{}]: {}\n{gutter} |\n{number} | {source_line}\n{gutter} | {lead}{}\n",
+            self.code.id(),
+            self.message,
+            "^".repeat(width)
+        )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_rendered_diagnostic_points_at_its_span() {
+        let text = "x := 1;\ny := 中文 + ;\n";
+        let start = text.rfind(';').unwrap();
+        let diagnostic = Diagnostic::new(
+            Code::UnexpectedToken,
+            start..start + 1,
+            "expected an expression, found ';'",
+        );
+        assert_eq!(
+            diagnostic.render("Main.st", text),
+            "Main.st:2:11: error[E0001]: expected an expression, found ';'\n  |\n2 | y := 中文 + ;\n  |           ^\n"
+        );
+    }
+}

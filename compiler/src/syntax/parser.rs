@@ -42,6 +42,9 @@ pub(crate) struct Parser<'t> {
     pub(crate) depth: u32,
     /// Current nesting of expressions, counted apart so either limit alone bounds the stack.
     pub(crate) expression_depth: u32,
+    /// The token position of the last error, so a mistake is reported once and not again by
+    /// every rule that trips over the same token.
+    last_error_at: Option<usize>,
     /// Parsing a declaration part alone (as CODESYS and TwinCAT store it): POUs, methods and
     /// properties may end at the end of the text without their `END_…`.
     pub(crate) declaration_part: bool,
@@ -73,6 +76,7 @@ impl<'t> Parser<'t> {
             depth: 0,
             expression_depth: 0,
             declaration_part: false,
+            last_error_at: None,
         }
     }
 
@@ -196,9 +200,16 @@ impl<'t> Parser<'t> {
 
     /// Reports an error at the current token.
     pub(crate) fn error(&mut self, message: impl Into<String>) {
-        let range = self.ranges[self.pos.min(self.ranges.len() - 1)].clone();
-        self.errors
-            .push(Diagnostic::new(Code::UnexpectedToken, range, message));
+        self.error_with_code(Code::UnexpectedToken, message);
+    }
+
+    /// Records an error unless one was already reported at the current token.
+    fn push_error(&mut self, code: Code, range: Range<usize>, message: impl Into<String>) {
+        if self.last_error_at == Some(self.pos) {
+            return;
+        }
+        self.last_error_at = Some(self.pos);
+        self.errors.push(Diagnostic::new(code, range, message));
     }
 
     /// Reports an error for something missing: at the end of the previous token, where the
@@ -211,14 +222,13 @@ impl<'t> Parser<'t> {
             }
             None => self.ranges[0].clone(),
         };
-        self.errors
-            .push(Diagnostic::new(Code::UnexpectedToken, range, message));
+        self.push_error(Code::UnexpectedToken, range, message);
     }
 
     /// Reports an error with a given code at the current token.
     pub(crate) fn error_with_code(&mut self, code: Code, message: impl Into<String>) {
         let range = self.ranges[self.pos.min(self.ranges.len() - 1)].clone();
-        self.errors.push(Diagnostic::new(code, range, message));
+        self.push_error(code, range, message);
     }
 
     /// Reports an error and wraps tokens into an `ERROR` node until one in `recovery` (or the

@@ -4,7 +4,7 @@ use std::path::PathBuf;
 
 use super::APPLICATION_DIR;
 use super::canonical::to_canonical_toml;
-use crate::{Body, Object, ObjectKind, Pou};
+use crate::{Body, Folder, Node, Object, ObjectKind, Pou, Project};
 
 /// The path, relative to the project folder, of the file of an object named `name` of `kind`
 /// in the application folder `folder`.
@@ -161,4 +161,33 @@ pub(crate) fn parse_entry(entry: &str) -> Result<Entry, String> {
         name: name.to_owned(),
         kind,
     })
+}
+
+/// Every Structured Text body of `project` with the path of its `.st` file relative to the
+/// project folder, in tree order: what a checker reads and reports against.
+pub fn st_body_files(project: &Project) -> Vec<(PathBuf, &str)> {
+    fn walk<'a>(folder: &'a Folder, path: &mut Vec<String>, out: &mut Vec<(PathBuf, &'a str)>) {
+        for node in &folder.children {
+            match node {
+                Node::Folder(child) => {
+                    path.push(child.name.clone());
+                    walk(child, path, out);
+                    path.pop();
+                }
+                Node::Object(Object::Pou(pou)) => {
+                    for slot in body_slots(pou) {
+                        if let Some(text) = slot.body.st_text() {
+                            let mut file = folder_dir(path);
+                            file.push(format!("{}{}", pou.name, slot.suffix));
+                            out.push((file, text));
+                        }
+                    }
+                }
+                Node::Object(_) => {}
+            }
+        }
+    }
+    let mut out = Vec::new();
+    walk(&project.application, &mut Vec::new(), &mut out);
+    out
 }
