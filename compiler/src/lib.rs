@@ -10,6 +10,7 @@
 //! codes ([`Code`]).
 
 pub mod diagnostic;
+pub mod ide;
 pub mod syntax;
 
 pub use diagnostic::{Code, Diagnostic, Severity};

@@ -1,0 +1,49 @@
+//! The IDE facade: what editors ask the compiler, answered with plain structs (byte ranges,
+//! names, kinds). Syntax trees never cross this boundary.
+//!
+//! Today it answers from the syntax of one text: diagnostics, the document outline, semantic
+//! token classes and folding ranges. Hover, go to definition, references and completion need
+//! the project-wide semantic model and come with it.
+
+mod folding;
+mod outline;
+mod semantic_tokens;
+
+use std::ops::Range;
+
+pub use folding::folding_ranges;
+pub use outline::{OutlineItem, OutlineKind, outline};
+pub use semantic_tokens::{SemanticClass, SemanticToken, semantic_tokens};
+
+use crate::Diagnostic;
+
+/// The diagnostics of a source text holding whole POUs, types or variable lists.
+pub fn diagnostics(text: &str) -> Vec<Diagnostic> {
+    crate::syntax::parse(text).errors().to_vec()
+}
+
+/// The diagnostics of a POU body stored on its own (a project's `.st` file).
+pub fn body_diagnostics(text: &str) -> Vec<Diagnostic> {
+    crate::syntax::parse_statements(text).errors().to_vec()
+}
+
+/// A byte range of `node` without its leading and trailing trivia.
+fn trimmed_range(node: &crate::syntax::SyntaxNode) -> Range<usize> {
+    let significant = |token: &crate::syntax::SyntaxToken| {
+        !token.kind().is_trivia() && token.kind() != crate::syntax::SyntaxKind::PRAGMA
+    };
+    let tokens: Vec<_> = node
+        .descendants_with_tokens()
+        .filter_map(|element| element.into_token())
+        .filter(significant)
+        .collect();
+    match (tokens.first(), tokens.last()) {
+        (Some(first), Some(last)) => {
+            usize::from(first.text_range().start())..usize::from(last.text_range().end())
+        }
+        _ => {
+            let range = node.text_range();
+            usize::from(range.start())..usize::from(range.end())
+        }
+    }
+}
