@@ -285,3 +285,47 @@ fn the_golden_tree_of_a_small_statement() {
     "#]]
     .assert_eq(&parse.debug_tree());
 }
+
+#[test]
+fn the_lc1200_operator_and_conversion_examples_parse() {
+    // The expressions of the LC1200 digest §2.4 and §2.5; their values are runtime tests.
+    let expressions = [
+        "9 MOD 2",
+        "SIZEOF(aInts)",
+        "2#1001_0011 AND 2#1000_1010",
+        "NOT 2#1001_0011",
+        "SHL(BYTE#16#45, 2)",
+        "ROR(WORD#16#45, 2)",
+        "SEL(TRUE, 3, 4)",
+        "MAX(40, MAX(90, 30))",
+        "LIMIT(30, 90, 80)",
+        "MUX(0, 30, 40, 50)",
+        "EXPT(7, 2)",
+        "SQRT(16)",
+        "BOOL_TO_TIME(TRUE)",
+        "TIME_TO_BOOL(T#5ms)",
+        "STRING_TO_BOOL('TRUE')",
+        "TO_INT(4.22)",
+        "INT_TO_SINT(4223)",
+        "REAL_TO_INT(-1.5)",
+        "TIME_TO_DWORD(T#5m)",
+        "TOD_TO_SINT(TOD#00:00:00.012)",
+        "DATE_TO_INT(D#1970-01-15)",
+        "DT_TO_BYTE(DT#1970-01-15-05:05:05)",
+        "DT_TO_STRING(DT#1998-02-13-14:20)",
+        "STRING_TO_TIME('T#127ms')",
+        "TRUNC(-1.4)",
+        "LTIME#1000d15h23m12s34ms2us44ns",
+        "TOD#23:59:59.999 - TOD#00:00:00.001",
+        "DT#2106-2-7-6:28:15",
+        "pValue^ + ADR(x)",
+        "a AND_THEN b OR_ELSE c",
+        "E_Color#Red",
+        "INT#-5",
+        "'$N$$$L$''",
+    ];
+    for expression in expressions {
+        let parse = parse_statements(&format!("x := {expression};"));
+        assert!(parse.errors().is_empty(), "{expression}: {:?}", parse.errors());
+    }
+}
