@@ -118,6 +118,25 @@ impl<'t> Parser<'t> {
             && self.ranges[index - 1].end == self.ranges[index].start
     }
 
+    /// The index of the current token, to tell whether a rule made progress.
+    pub(crate) fn position(&self) -> usize {
+        self.pos
+    }
+
+    /// Wraps the current token in an `ERROR` node unless the parser moved since `before`: a
+    /// loop that calls a rule which consumed nothing must still move on, or it would never end.
+    pub(crate) fn ensure_progress(&mut self, before: usize) {
+        if self.pos == before && !self.at_end() {
+            if self.last_error_at != Some(self.pos) {
+                let message = format!("unexpected {}", self.found());
+                self.error(message);
+            }
+            let m = self.open();
+            self.bump();
+            m.complete(self, ERROR);
+        }
+    }
+
     /// Whether the input is used up.
     pub(crate) fn at_end(&self) -> bool {
         self.at(EOF)

@@ -42,7 +42,9 @@ fn var_block(p: &mut Parser<'_>) {
     }
     let stop = TokenSet::new(&[END_VAR]).union(VAR_BLOCK_START);
     while !p.at_set(stop) && !p.at_end() && (p.at(IDENT) || p.at(AT) || !is_section_end(p)) {
+        let before = p.position();
         var_decl(p, stop);
+        p.ensure_progress(before);
     }
     p.expect_with(END_VAR, "to close the variable section");
     m.complete(p, VAR_BLOCK);

@@ -43,7 +43,8 @@ const PREFIX_POWER: u8 = 15;
 
 /// Whether the current token can start an expression.
 pub(crate) fn at_expression_start(p: &Parser<'_>) -> bool {
-    p.at_set(EXPRESSION_START)
+    // A leading dot starts an expression only as `.global`.
+    p.at_set(EXPRESSION_START) && (!p.at(DOT) || p.nth(1) == IDENT)
 }
 
 /// One expression; `None` (after reporting) when there is none here.

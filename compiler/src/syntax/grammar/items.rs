@@ -33,6 +33,7 @@ const MEMBER_START: TokenSet = TokenSet::new(&[METHOD, PROPERTY, ACTION]);
 pub(crate) fn source_file(p: &mut Parser<'_>) {
     let root = p.open();
     while !p.at_end() {
+        let before = p.position();
         match p.current() {
             PROGRAM | FUNCTION | FUNCTION_BLOCK => pou(p),
             INTERFACE => interface(p),
@@ -57,6 +58,7 @@ pub(crate) fn source_file(p: &mut Parser<'_>) {
                 ITEM_START,
             ),
         }
+        p.ensure_progress(before);
     }
     root.complete(p, SOURCE_FILE);
 }
@@ -229,6 +231,7 @@ fn type_decl(p: &mut Parser<'_>) {
     let m = p.open();
     p.bump();
     loop {
+        let before = p.position();
         match p.current() {
             IDENT => type_definition(p),
             END_TYPE | EOF => break,
@@ -239,6 +242,7 @@ fn type_decl(p: &mut Parser<'_>) {
             ),
         }
         p.eat(SEMICOLON);
+        p.ensure_progress(before);
     }
     p.expect_with(END_TYPE, "to close the type declaration");
     m.complete(p, TYPE_DECL);
@@ -270,7 +274,9 @@ fn struct_type(p: &mut Parser<'_>, open: SyntaxKind, close: SyntaxKind, kind: Sy
     let m = p.open();
     p.expect(open);
     while !p.at(close) && !p.at_end() && !p.at(END_TYPE) {
+        let before = p.position();
         super::declarations::var_decl(p, TokenSet::new(&[close, END_TYPE]));
+        p.ensure_progress(before);
     }
     p.expect_with(close, "to close the structure");
     m.complete(p, kind);
@@ -310,6 +316,7 @@ fn configuration(p: &mut Parser<'_>) {
 
 fn configuration_content(p: &mut Parser<'_>, end: SyntaxKind) {
     loop {
+        let before = p.position();
         match p.current() {
             kind if VAR_BLOCK_START.contains(kind) => var_blocks(p),
             RESOURCE => {
@@ -360,5 +367,6 @@ fn configuration_content(p: &mut Parser<'_>, end: SyntaxKind) {
             ),
         }
         p.eat(SEMICOLON);
+        p.ensure_progress(before);
     }
 }

@@ -69,7 +69,9 @@ pub(crate) fn statement_or_recover(p: &mut Parser<'_>, stops: TokenSet, in_case:
         return;
     }
     p.depth += 1;
+    let before = p.position();
     statement(p, stops, in_case);
+    p.ensure_progress(before);
     p.depth -= 1;
 }
 
