@@ -6,11 +6,14 @@
 //! the editors use.
 //! It reads the project model and never changes it.
 //!
-//! Today it holds the lexer and the resilient parser ([`syntax::parse`]) and the diagnostic
-//! codes ([`Code`]).
+//! Today it holds the lexer and the resilient parser ([`syntax::parse`]), the diagnostic codes
+//! ([`Code`]), the syntax-level IDE facade ([`ide`]), literal values ([`literal`]) and the
+//! elementary types with their implicit conversions ([`elementary`]).
 
 pub mod diagnostic;
+pub mod elementary;
 pub mod ide;
+pub mod literal;
 pub mod syntax;
 
 pub use diagnostic::{Code, Diagnostic, Severity};

@@ -326,14 +326,24 @@ fn the_lc1200_operator_and_conversion_examples_parse() {
     ];
     for expression in expressions {
         let parse = parse_statements(&format!("x := {expression};"));
-        assert!(parse.errors().is_empty(), "{expression}: {:?}", parse.errors());
+        assert!(
+            parse.errors().is_empty(),
+            "{expression}: {:?}",
+            parse.errors()
+        );
     }
 }
 
 #[test]
 fn inputs_found_by_fuzzing_end_quickly() {
     // A lone '.' once made the statement loop spin without consuming anything.
-    for text in [".", "x := 1; . ; .x := 2;", "TYPE . END_TYPE", "VAR_GLOBAL . END_VAR", "CONFIGURATION C . END_CONFIGURATION"] {
+    for text in [
+        ".",
+        "x := 1; . ; .x := 2;",
+        "TYPE . END_TYPE",
+        "VAR_GLOBAL . END_VAR",
+        "CONFIGURATION C . END_CONFIGURATION",
+    ] {
         let parse = parse_statements(text);
         assert_eq!(parse.syntax().to_string(), text);
         assert!(!parse.errors().is_empty());
