@@ -140,17 +140,7 @@ pub(crate) fn var_decl(p: &mut Parser<'_>, stop: TokenSet) {
 
 /// A declared name; in `VAR_CONFIG` a dotted instance path.
 fn declared_name(p: &mut Parser<'_>) -> bool {
-    if !p.at(IDENT) {
-        return false;
-    }
-    let m = p.open();
-    p.bump();
-    while p.at(DOT) && p.nth(1) == IDENT {
-        p.bump();
-        p.bump();
-    }
-    m.complete(p, NAME);
-    true
+    super::dotted_name(p, NAME)
 }
 
 /// A type: `INT`, `STRING(20)`, `ARRAY[1..3, 0..1] OF REAL`, `POINTER TO FB`, `INT(0..100)`,
@@ -203,19 +193,7 @@ pub(crate) fn type_ref(p: &mut Parser<'_>) {
         }
         L_PAREN => {
             // An anonymous enumeration in a declaration.
-            p.bump();
-            loop {
-                let value = p.open();
-                name(p);
-                if p.eat(ASSIGN) {
-                    expression(p);
-                }
-                value.complete(p, ENUM_VALUE);
-                if !p.eat(COMMA) {
-                    break;
-                }
-            }
-            p.expect_with(R_PAREN, "to close the enumeration");
+            enum_values(p);
             m.complete(p, ENUM_TYPE);
         }
         IDENT => {
@@ -250,6 +228,23 @@ pub(crate) fn type_ref(p: &mut Parser<'_>) {
             m.abandon(p);
         }
     }
+}
+
+/// `(Idle := 0, Running, Stopped)`: the values of an enumeration.
+pub(crate) fn enum_values(p: &mut Parser<'_>) {
+    p.expect(L_PAREN);
+    loop {
+        let value = p.open();
+        name(p);
+        if p.eat(ASSIGN) {
+            expression(p);
+        }
+        value.complete(p, ENUM_VALUE);
+        if !p.eat(COMMA) {
+            break;
+        }
+    }
+    p.expect_with(R_PAREN, "to close the enumeration");
 }
 
 /// Whether the parenthesis here holds a subrange `(lo..hi)`: a `..` before its closing `)`.

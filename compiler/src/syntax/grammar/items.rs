@@ -152,24 +152,17 @@ fn inheritance(p: &mut Parser<'_>) {
 
 /// `METHOD [modifiers] Name [: Type]` declarations, statements, `END_METHOD`.
 fn method(p: &mut Parser<'_>) {
-    let m = p.open();
-    p.bump();
-    while p.at_set(MODIFIERS) {
-        p.bump();
-    }
-    name(p);
-    if p.at(COLON) {
-        return_type(p);
-    }
-    p.eat(SEMICOLON);
-    var_blocks(p);
-    statement_list(p, TokenSet::new(&[END_METHOD]).union(ITEM_START));
-    p.expect_end(END_METHOD, "to close the method");
-    m.complete(p, METHOD_DECL);
+    member(p, END_METHOD, METHOD_DECL, "method");
 }
 
 /// `PROPERTY [modifiers] Name : Type` declarations, statements, `END_PROPERTY`.
 fn property(p: &mut Parser<'_>) {
+    member(p, END_PROPERTY, PROPERTY_DECL, "property");
+}
+
+/// A method or property: keyword, modifiers, name, type (required for a property), a tolerated
+/// `;`, declarations, statements and the `END_…` keyword.
+fn member(p: &mut Parser<'_>, end: SyntaxKind, kind: SyntaxKind, what: &str) {
     let m = p.open();
     p.bump();
     while p.at_set(MODIFIERS) {
@@ -178,14 +171,14 @@ fn property(p: &mut Parser<'_>) {
     name(p);
     if p.at(COLON) {
         return_type(p);
-    } else {
+    } else if kind == PROPERTY_DECL {
         p.error_before_current("expected ':' and the property's type");
     }
     p.eat(SEMICOLON);
     var_blocks(p);
-    statement_list(p, TokenSet::new(&[END_PROPERTY]).union(ITEM_START));
-    p.expect_end(END_PROPERTY, "to close the property");
-    m.complete(p, PROPERTY_DECL);
+    statement_list(p, TokenSet::new(&[end]).union(ITEM_START));
+    p.expect_end(end, &format!("to close the {what}"));
+    m.complete(p, kind);
 }
 
 /// `ACTION Name:` statements `END_ACTION`.
@@ -285,19 +278,7 @@ fn struct_type(p: &mut Parser<'_>, open: SyntaxKind, close: SyntaxKind, kind: Sy
 /// `(Idle := 0, Running, Stopped) [BaseType]`.
 fn enum_type(p: &mut Parser<'_>) {
     let m = p.open();
-    p.bump();
-    loop {
-        let value = p.open();
-        name(p);
-        if p.eat(ASSIGN) {
-            super::expressions::expression(p);
-        }
-        value.complete(p, ENUM_VALUE);
-        if !p.eat(COMMA) {
-            break;
-        }
-    }
-    p.expect_with(R_PAREN, "to close the enumeration");
+    super::declarations::enum_values(p);
     if p.at(IDENT) {
         type_ref(p);
     }

@@ -43,8 +43,17 @@ pub(crate) fn name(p: &mut Parser<'_>) -> bool {
 
 /// Parses a reference to a named thing, possibly qualified: `FB_Conveyor`, `MyLib.FB_X`.
 pub(crate) fn name_ref(p: &mut Parser<'_>) -> bool {
-    if !p.at(IDENT) {
+    if !dotted_name(p, NAME_REF) {
         p.error(format!("expected a name, found {}", p.found()));
+        return false;
+    }
+    true
+}
+
+/// An identifier followed by `.identifier`s, as one node of `kind`; `false` (consuming
+/// nothing) when no identifier is here.
+pub(crate) fn dotted_name(p: &mut Parser<'_>, kind: super::SyntaxKind) -> bool {
+    if !p.at(IDENT) {
         return false;
     }
     let m = p.open();
@@ -53,6 +62,6 @@ pub(crate) fn name_ref(p: &mut Parser<'_>) -> bool {
         p.bump();
         p.bump();
     }
-    m.complete(p, NAME_REF);
+    m.complete(p, kind);
     true
 }
