@@ -2,6 +2,7 @@
 
 #![allow(clippy::print_stdout, clippy::print_stderr)] // Printing is what a CLI is for.
 
+use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
@@ -27,7 +28,8 @@ pub struct Cli {
 /// Headless subcommands.
 #[derive(Debug, Subcommand)]
 pub enum Command {
-    /// Check a project (or one `.st` file): load it and parse every Structured Text body;
+    /// Check a project (or one `.st` file): load it, parse every Structured Text body and
+    /// resolve every name and type;
     /// print each problem as `file:line:col: severity[CODE]: message`; exit 1 on any error.
     Check {
         /// The project folder (the folder holding rivet.toml), or a `.st` source file.
@@ -71,17 +73,33 @@ fn check(path: &Path) -> anyhow::Result<()> {
     for warning in &loaded.warnings {
         eprintln!("{warning}");
     }
+    let bodies: HashMap<PathBuf, &str> = project_model::st_body_files(&loaded.project)
+        .into_iter()
+        .map(|body| (body.file, body.text))
+        .collect();
     let mut errors = 0usize;
     let mut warnings = 0usize;
-    for (file, text) in project_model::st_body_files(&loaded.project) {
-        let parse = compiler::syntax::parse_statements(text);
-        let shown = path.join(&file).display().to_string();
-        for diagnostic in parse.errors() {
-            eprint!("{}", diagnostic.render(&shown, text));
-            match diagnostic.severity {
-                compiler::Severity::Error => errors += 1,
-                compiler::Severity::Warning => warnings += 1,
+    for found in compiler::sema::check_project(&loaded.project) {
+        let shown = path.join(&found.file).display().to_string();
+        match (&found.declaration, bodies.get(&found.file)) {
+            (None, Some(text)) => eprint!("{}", found.diagnostic.render(&shown, text)),
+            (declaration, _) => {
+                // A finding in data: point at the line that declares the name, if it is found.
+                let line = declaration
+                    .as_deref()
+                    .and_then(|name| declaration_line(&path.join(&found.file), name));
+                let location = line.map_or(shown.clone(), |line| format!("{shown}:{line}"));
+                eprintln!(
+                    "{location}: {}[{}]: {}",
+                    severity_word(found.diagnostic.severity),
+                    found.diagnostic.code.id(),
+                    found.diagnostic.message
+                );
             }
+        }
+        match found.diagnostic.severity {
+            compiler::Severity::Error => errors += 1,
+            compiler::Severity::Warning => warnings += 1,
         }
     }
     if errors > 0 {
@@ -98,6 +116,22 @@ fn check(path: &Path) -> anyhow::Result<()> {
         loaded.project.tasks.len()
     );
     Ok(())
+}
+
+/// The 1-based line of `name = "NAME"` in a project file, where a declaration stored as data
+/// begins.
+fn declaration_line(file: &Path, name: &str) -> Option<usize> {
+    let text = std::fs::read_to_string(file).ok()?;
+    let needle = format!("name = \"{name}\"");
+    let offset = text.find(&needle)?;
+    Some(text[..offset].matches('\n').count() + 1)
+}
+
+fn severity_word(severity: compiler::Severity) -> &'static str {
+    match severity {
+        compiler::Severity::Error => "error",
+        compiler::Severity::Warning => "warning",
+    }
 }
 
 /// Checks one source file holding whole POUs, types or global variable lists.

@@ -168,3 +168,33 @@ fn check_of_a_single_st_file_parses_whole_pous() {
         "{stderr}"
     );
 }
+
+#[test]
+fn check_reports_unknown_names_and_types() {
+    let dir = example_copy();
+    let body = dir.path().join("application/Main.st");
+    let text =
+        fs::read_to_string(&body)
+            .unwrap()
+            .replacen("GVL_IO.xStopButton", "GVL_IO.xStopButon", 1);
+    fs::write(&body, text).unwrap();
+    let pou = dir.path().join("application/FB_Conveyor.pou.toml");
+    let text = fs::read_to_string(&pou)
+        .unwrap()
+        .replacen("type = \"TON\"", "type = \"TONN\"", 1);
+    fs::write(&pou, text).unwrap();
+    let output = rivet(&["check", path_str(dir.path())]);
+    assert_eq!(output.status.code(), Some(1));
+    let stderr = text_of(&output.stderr);
+    assert!(
+        stderr.contains(&format!("{}:4:21: error[E0101]: 'GVL_IO' has no member 'xStopButon'; did you mean 'xStopButton'?", body.display())),
+        "{stderr}"
+    );
+    assert!(
+        stderr.contains(&format!(
+            "{}:41: error[E0102]: tonStart: unknown type 'TONN'; did you mean 'TON'?",
+            pou.display()
+        )),
+        "{stderr}"
+    );
+}

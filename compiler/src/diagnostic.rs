@@ -52,6 +52,9 @@ codes! {
     UnterminatedString = "E0003", Error, "String not closed";
     InvalidCharacter = "E0004", Error, "Character that is not part of Structured Text";
     NestingTooDeep = "E0005", Error, "Nesting too deep";
+    UnknownName = "E0101", Error, "Unknown name";
+    UnknownType = "E0102", Error, "Unknown type";
+    UnknownProgram = "E0103", Error, "Task calls something that is not a program";
 }
 
 /// One finding of the compiler about the source.

@@ -14,6 +14,7 @@ pub mod diagnostic;
 pub mod elementary;
 pub mod ide;
 pub mod literal;
+pub mod sema;
 pub mod syntax;
 
 pub use diagnostic::{Code, Diagnostic, Severity};

@@ -44,7 +44,8 @@ pub use data_type::{DataType, EnumValue, StructMember, TypeDefinition};
 pub use edit::{Edit, EditError, TextTarget, TreeEdit, VarOwner};
 pub use files::{
     APPLICATION_DIR, FORMAT_VERSION, LoadError, LoadProblem, LoadedProject, MANIFEST_FILE_NAME,
-    SaveError, SaveReport, Severity, load_project, save_project, st_body_files,
+    SaveError, SaveReport, Severity, StBody, load_project, object_files, save_project,
+    st_body_files,
 };
 pub use gvl::GlobalVarList;
 pub use history::{History, Transaction};

@@ -13,7 +13,9 @@ mod token_set;
 
 pub use kind::{StLanguage, SyntaxKind, SyntaxNode, SyntaxToken};
 pub use lexer::{LexError, Token, tokenize};
-pub use parse::{Parse, first_significant_token, parse, parse_declaration_part, parse_statements};
+pub use parse::{
+    Parse, first_significant_token, parse, parse_declaration_part, parse_statements, parse_type,
+};
 pub use token_set::TokenSet;
 
 #[cfg(test)]

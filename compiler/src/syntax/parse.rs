@@ -85,6 +85,12 @@ pub fn parse_declaration_part(text: &str) -> Parse {
     parse_with(text, grammar::source_file, true)
 }
 
+/// Parses a type written on its own, such as a variable's type in a project:
+/// `ARRAY[1..3] OF FB_Axis`, `STRING(20)`, `POINTER TO INT`.
+pub fn parse_type(text: &str) -> Parse {
+    parse_with(text, grammar::type_file, false)
+}
+
 fn parse_with(text: &str, entry: fn(&mut Parser<'_>), declaration_part: bool) -> Parse {
     let (tokens, lex_errors) = tokenize(text);
     let mut parser = Parser::new(text, &tokens);

@@ -163,10 +163,72 @@ pub(crate) fn parse_entry(entry: &str) -> Result<Entry, String> {
     })
 }
 
-/// Every Structured Text body of `project` with the path of its `.st` file relative to the
-/// project folder, in tree order: what a checker reads and reports against.
-pub fn st_body_files(project: &Project) -> Vec<(PathBuf, &str)> {
-    fn walk<'a>(folder: &'a Folder, path: &mut Vec<String>, out: &mut Vec<(PathBuf, &'a str)>) {
+/// A Structured Text body of a project with where it is stored.
+#[derive(Clone, Debug)]
+pub struct StBody<'a> {
+    /// The `.st` file, relative to the project folder.
+    pub file: PathBuf,
+    /// The POU it belongs to.
+    pub pou: &'a Pou,
+    /// Which body of the POU it is.
+    pub target: crate::TextTarget,
+    /// The text.
+    pub text: &'a str,
+}
+
+/// Every Structured Text body of `project` with its file, in tree order: what a checker reads
+/// and reports against.
+pub fn st_body_files(project: &Project) -> Vec<StBody<'_>> {
+    let mut out = Vec::new();
+    for (file, object) in object_files(project) {
+        let Object::Pou(pou) = object else { continue };
+        let folder = file.parent().map(PathBuf::from).unwrap_or_default();
+        let targets = body_targets(pou);
+        for (slot, target) in body_slots(pou).into_iter().zip(targets) {
+            if let Some(text) = slot.body.st_text() {
+                out.push(StBody {
+                    file: folder.join(format!("{}{}", pou.name, slot.suffix)),
+                    pou,
+                    target,
+                    text,
+                });
+            }
+        }
+    }
+    out
+}
+
+/// The edit targets of a POU's bodies, in the order of [`body_slots`].
+fn body_targets(pou: &Pou) -> Vec<crate::TextTarget> {
+    use crate::TextTarget;
+    let name = || pou.name.clone();
+    let mut targets = vec![TextTarget::Pou(name())];
+    targets.extend(pou.methods.iter().map(|m| TextTarget::Method {
+        pou: name(),
+        method: m.name.clone(),
+    }));
+    for property in &pou.properties {
+        for (accessor, get) in [(&property.get, true), (&property.set, false)] {
+            if accessor.is_some() {
+                targets.push(TextTarget::Property {
+                    pou: name(),
+                    property: property.name.clone(),
+                    get,
+                });
+            }
+        }
+    }
+    targets.extend(pou.actions.iter().map(|a| TextTarget::Action {
+        pou: name(),
+        action: a.name.clone(),
+    }));
+    targets
+}
+
+/// Every application object with the path of its file relative to the project folder, in
+/// tree order.
+pub fn object_files(project: &Project) -> Vec<(PathBuf, &Object)> {
+    fn walk<'a>(folder: &'a Folder, path: &mut Vec<String>, out: &mut Vec<(PathBuf, &'a Object)>) {
         for node in &folder.children {
             match node {
                 Node::Folder(child) => {
@@ -174,16 +236,9 @@ pub fn st_body_files(project: &Project) -> Vec<(PathBuf, &str)> {
                     walk(child, path, out);
                     path.pop();
                 }
-                Node::Object(Object::Pou(pou)) => {
-                    for slot in body_slots(pou) {
-                        if let Some(text) = slot.body.st_text() {
-                            let mut file = folder_dir(path);
-                            file.push(format!("{}{}", pou.name, slot.suffix));
-                            out.push((file, text));
-                        }
-                    }
+                Node::Object(object) => {
+                    out.push((object_file(path, object.name(), object.kind()), object));
                 }
-                Node::Object(_) => {}
             }
         }
     }

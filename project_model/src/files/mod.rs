@@ -12,7 +12,7 @@ mod manifest;
 mod problem;
 mod save;
 
-pub use layout::st_body_files;
+pub use layout::{StBody, object_files, st_body_files};
 pub use load::{LoadedProject, load_project};
 pub use problem::{LoadError, LoadProblem, Severity};
 pub use save::{SaveError, SaveReport, save_project};

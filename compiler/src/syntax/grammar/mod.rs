@@ -27,6 +27,21 @@ pub(crate) fn statement_file(p: &mut Parser<'_>) {
     root.complete(p, SOURCE_FILE);
 }
 
+/// Entry point for a type written on its own, as a project stores a variable's type.
+pub(crate) fn type_file(p: &mut Parser<'_>) {
+    let root = p.open();
+    declarations::type_ref(p);
+    if !p.at_end() {
+        p.error(format!("expected the end of the type, found {}", p.found()));
+        let rest = p.open();
+        while !p.at_end() {
+            p.bump();
+        }
+        rest.complete(p, ERROR);
+    }
+    root.complete(p, SOURCE_FILE);
+}
+
 /// Parses a name being declared: one identifier as a `NAME` node.
 pub(crate) fn name(p: &mut Parser<'_>) -> bool {
     // The operator functions of the standard library are declared under operator names.

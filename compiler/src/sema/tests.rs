@@ -1,0 +1,165 @@
+//! Name resolution tests on small projects built in code.
+
+use project_model::{
+    Body, GlobalVarList, Node, Object, Pou, PouKind, Project, Task, TaskKind, VarSection, Variable,
+};
+
+use super::*;
+
+fn pou(name: &str, kind: PouKind, variables: Vec<Variable>, body: &str) -> Node {
+    Node::Object(Object::Pou(Pou {
+        name: name.into(),
+        kind,
+        return_type: (kind == PouKind::Function).then(|| "INT".into()),
+        extends: None,
+        implements: Vec::new(),
+        comment: String::new(),
+        variables,
+        body: Body::st(body),
+        methods: Vec::new(),
+        properties: Vec::new(),
+        actions: Vec::new(),
+    }))
+}
+
+fn project(nodes: Vec<Node>) -> Project {
+    let mut project = Project::default();
+    project.application.children = nodes;
+    project
+}
+
+fn messages(project: &Project) -> Vec<String> {
+    check_project(project)
+        .into_iter()
+        .map(|found| {
+            format!(
+                "{} {}: {}",
+                found.file.display(),
+                found.diagnostic.code.id(),
+                found.diagnostic.message
+            )
+        })
+        .collect()
+}
+
+#[test]
+fn the_example_project_has_no_findings() {
+    let loaded = project_model::load_project(
+        &std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("../assets/examples/packaging_machine"),
+    )
+    .expect("the example loads");
+    assert_eq!(messages(&loaded.project), Vec::<String>::new());
+}
+
+#[test]
+fn unknown_names_are_reported_with_a_suggestion() {
+    let gvl = Node::Object(Object::Gvl(GlobalVarList {
+        name: "GVL".into(),
+        comment: String::new(),
+        variables: vec![Variable {
+            section: VarSection::VarGlobal,
+            ..Variable::new("xStartButton", "BOOL")
+        }],
+    }));
+    let main = pou(
+        "Main",
+        PouKind::Program,
+        vec![
+            Variable::new("tonDelay", "TON"),
+            Variable::new("iCount", "INT"),
+        ],
+        "tonDelay(IN := xStartButon, PT := T#1s);\niCount := iCount + ABS(-1) + REAL_TO_INT(1.5) + F(1);\nundefined := GVL.xStartButton OR GVL.xStopButton;\n",
+    );
+    let function = pou(
+        "F",
+        PouKind::Function,
+        vec![Variable {
+            section: VarSection::VarInput,
+            ..Variable::new("a", "INT")
+        }],
+        "F := a;",
+    );
+    assert_eq!(
+        messages(&project(vec![gvl, main, function])),
+        vec![
+            "application/Main.st E0101: unknown name 'xStartButon'; did you mean 'xStartButton'?",
+            "application/Main.st E0101: unknown name 'undefined'",
+            "application/Main.st E0101: 'GVL' has no member 'xStopButton'; did you mean 'xStartButton'?",
+        ]
+    );
+}
+
+#[test]
+fn unknown_types_and_programs_are_reported() {
+    let main = pou(
+        "Main",
+        PouKind::Program,
+        vec![
+            Variable::new("fb", "FB_Conveyr"),
+            Variable::new("a", "ARRAY[1..3] OF FB_Conveyor"),
+            Variable::new("s", "STRING(20)"),
+            Variable::new("p", "POINTER TO Missing"),
+        ],
+        "",
+    );
+    let fb = pou("FB_Conveyor", PouKind::FunctionBlock, Vec::new(), "");
+    let mut project = project(vec![main, fb]);
+    project.tasks.push(Task {
+        name: "MainTask".into(),
+        kind: TaskKind::Cyclic {
+            interval_us: 10_000,
+        },
+        priority: 1,
+        watchdog: None,
+        programs: vec!["Main".into(), "FB_Conveyor".into()],
+    });
+    assert_eq!(
+        messages(&project),
+        vec![
+            "application/Main.pou.toml E0102: fb: unknown type 'FB_Conveyr'; did you mean 'FB_Conveyor'?",
+            "application/Main.pou.toml E0102: p: unknown type 'Missing'",
+            "rivet.toml E0103: task 'MainTask' calls 'FB_Conveyor', which is not a PROGRAM of the project",
+        ]
+    );
+}
+
+#[test]
+fn inherited_members_method_locals_and_sfc_steps_resolve() {
+    let mut base = pou(
+        "FB_Base",
+        PouKind::FunctionBlock,
+        vec![Variable::new("xBusy", "BOOL")],
+        "",
+    );
+    let mut derived = pou(
+        "FB_Derived",
+        PouKind::FunctionBlock,
+        Vec::new(),
+        "xBusy := TRUE;\nINITIAL_STEP Idle: Reset(N); END_STEP\nx := Idle.X;",
+    );
+    if let Node::Object(Object::Pou(pou)) = &mut derived {
+        pou.extends = Some("FB_Base".into());
+        pou.variables.push(Variable::new("x", "BOOL"));
+        pou.actions.push(project_model::PouAction {
+            name: "Reset".into(),
+            body: Body::st("xBusy := FALSE;"),
+        });
+        pou.methods.push(project_model::Method {
+            name: "Start".into(),
+            return_type: Some("BOOL".into()),
+            access: project_model::AccessSpecifier::Public,
+            is_abstract: false,
+            comment: String::new(),
+            variables: vec![Variable::new("iTry", "INT")],
+            body: Body::st("iTry := iTry + 1; Start := xBusy;"),
+        });
+    }
+    if let Node::Object(Object::Pou(pou)) = &mut base {
+        pou.body = Body::st("xBusy := NOT xBusy;");
+    }
+    assert_eq!(
+        messages(&project(vec![base, derived])),
+        Vec::<String>::new()
+    );
+}
