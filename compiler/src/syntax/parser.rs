@@ -48,7 +48,14 @@ pub(crate) struct Parser<'t> {
     /// Parsing a declaration part alone (as CODESYS and TwinCAT store it): POUs, methods and
     /// properties may end at the end of the text without their `END_…`.
     pub(crate) declaration_part: bool,
+    /// Nodes opened since the last token was consumed. Rules nest only a few levels deep at
+    /// one token, so a large count means a loop that makes no progress: debug builds (and
+    /// the fuzzer) stop there at once instead of spinning until memory runs out.
+    opens_since_bump: u32,
 }
+
+/// More nodes than any grammar rule nests at a single token.
+const MAX_OPENS_WITHOUT_PROGRESS: u32 = 10_000;
 
 impl<'t> Parser<'t> {
     /// A parser over the tokens of `text`.
@@ -77,6 +84,7 @@ impl<'t> Parser<'t> {
             expression_depth: 0,
             declaration_part: false,
             last_error_at: None,
+            opens_since_bump: 0,
         }
     }
 
@@ -144,6 +152,12 @@ impl<'t> Parser<'t> {
 
     /// Opens a node at the current position.
     pub(crate) fn open(&mut self) -> Marker {
+        self.opens_since_bump += 1;
+        debug_assert!(
+            self.opens_since_bump < MAX_OPENS_WITHOUT_PROGRESS,
+            "the parser loops without consuming a token at token {}",
+            self.pos
+        );
         let position = self.events.len() as u32;
         self.events.push(Event::Start {
             kind: TOMBSTONE,
@@ -158,6 +172,7 @@ impl<'t> Parser<'t> {
             return;
         }
         self.pos += 1;
+        self.opens_since_bump = 0;
         self.events.push(Event::Token);
     }
 

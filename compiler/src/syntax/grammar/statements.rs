@@ -331,36 +331,11 @@ fn case_statement(p: &mut Parser<'_>) {
     expression(p);
     p.expect_with(OF, "after the CASE selector");
     while !p.at(END_CASE) && !p.at(ELSE) && !p.at_set(LIST_END) && !p.at_end() {
-        if !at_case_label(p) {
-            p.error_recover(
-                format!(
-                    "expected a case label such as '1:' or '2..5:', found {}",
-                    p.found()
-                ),
-                TokenSet::new(&[SEMICOLON, END_CASE, ELSE]).union(LIST_END),
-            );
-            p.eat(SEMICOLON);
-            continue;
-        }
-        let branch = p.open();
-        let labels = p.open();
-        loop {
-            let start = p.open();
-            expression(p);
-            if p.eat(DOTDOT) {
-                expression(p);
-                start.complete(p, CASE_RANGE);
-            } else {
-                start.abandon(p);
-            }
-            if !p.eat(COMMA) {
-                break;
-            }
-        }
-        labels.complete(p, CASE_LABELS);
-        p.expect_with(COLON, "after the case labels");
-        case_branch_statements(p);
-        branch.complete(p, CASE_BRANCH);
+        // A label that starts with a token no expression can start (`)`, `*`) would
+        // otherwise be retried forever: each branch must consume something.
+        let before = p.position();
+        case_branch(p);
+        p.ensure_progress(before);
     }
     if p.at(ELSE) {
         let branch = p.open();
@@ -371,6 +346,40 @@ fn case_statement(p: &mut Parser<'_>) {
     p.expect_with(END_CASE, "to close the CASE");
     p.eat(SEMICOLON);
     m.complete(p, CASE_STMT);
+}
+
+/// One `labels: statements` branch of a CASE, or an error up to the next branch.
+fn case_branch(p: &mut Parser<'_>) {
+    if !at_case_label(p) {
+        p.error_recover(
+            format!(
+                "expected a case label such as '1:' or '2..5:', found {}",
+                p.found()
+            ),
+            TokenSet::new(&[SEMICOLON, END_CASE, ELSE]).union(LIST_END),
+        );
+        p.eat(SEMICOLON);
+        return;
+    }
+    let branch = p.open();
+    let labels = p.open();
+    loop {
+        let start = p.open();
+        expression(p);
+        if p.eat(DOTDOT) {
+            expression(p);
+            start.complete(p, CASE_RANGE);
+        } else {
+            start.abandon(p);
+        }
+        if !p.eat(COMMA) {
+            break;
+        }
+    }
+    labels.complete(p, CASE_LABELS);
+    p.expect_with(COLON, "after the case labels");
+    case_branch_statements(p);
+    branch.complete(p, CASE_BRANCH);
 }
 
 /// Whether a case label list (`1, 3..5, E.Idle:`) starts here: a colon (not `:=`) comes

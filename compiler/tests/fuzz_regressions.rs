@@ -1,0 +1,29 @@
+//! Inputs the fuzzer found (crashes, hangs, slow cases), kept so they stay fixed.
+
+#![allow(clippy::unwrap_used, clippy::expect_used)] // Test helpers may panic: a panic is a failed test.
+
+use std::path::Path;
+
+#[test]
+fn every_fuzz_finding_parses_losslessly() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fuzz_regressions");
+    let mut count = 0;
+    for entry in std::fs::read_dir(&dir).unwrap() {
+        let path = entry.unwrap().path();
+        let bytes = std::fs::read(&path).unwrap();
+        let text = String::from_utf8_lossy(&bytes);
+        for parse in [
+            compiler::syntax::parse(&text),
+            compiler::syntax::parse_statements(&text),
+            compiler::syntax::parse_declaration_part(&text),
+        ] {
+            assert_eq!(parse.syntax().to_string(), text, "{}", path.display());
+            for error in parse.errors() {
+                assert!(error.range.end <= text.len());
+                error.render("fuzz.st", &text);
+            }
+        }
+        count += 1;
+    }
+    assert!(count > 0);
+}
