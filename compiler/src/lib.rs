@@ -15,6 +15,7 @@ pub mod elementary;
 pub mod ide;
 pub mod literal;
 pub mod sema;
+pub mod source_project;
 pub mod syntax;
 
 pub use diagnostic::{Code, Diagnostic, Severity};

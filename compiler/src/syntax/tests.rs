@@ -351,3 +351,19 @@ fn inputs_found_by_fuzzing_end_quickly() {
         assert_eq!(parse.syntax().to_string(), text);
     }
 }
+
+#[test]
+fn property_accessors_written_inline_parse_as_accessors() {
+    let text = "FUNCTION_BLOCK FB\nPROPERTY P : INT\nGET\nVAR x : INT; END_VAR\nP := x;\nEND_GET\nSET\nx := P;\nEND_SET\nEND_PROPERTY\nEND_FUNCTION_BLOCK\n";
+    let parse = parse(text);
+    assert!(parse.errors().is_empty(), "{:?}", parse.errors());
+    let accessors = parse
+        .syntax()
+        .descendants()
+        .filter(|node| node.kind() == super::SyntaxKind::ACCESSOR_DECL)
+        .count();
+    assert_eq!(accessors, 2);
+    // The words are not reserved: a statement may still assign a variable called GET.
+    let parse = parse_statements("GET := 1; SET(x);");
+    assert!(parse.errors().is_empty(), "{:?}", parse.errors());
+}

@@ -2,7 +2,7 @@
 //! lists and configurations.
 
 use super::declarations::{VAR_BLOCK_START, type_ref, var_blocks};
-use super::statements::statement_list;
+use super::statements::{statement_list, statement_or_recover};
 use super::{name, name_ref};
 use crate::syntax::SyntaxKind::{self, *};
 use crate::syntax::parser::Parser;
@@ -176,9 +176,54 @@ fn member(p: &mut Parser<'_>, end: SyntaxKind, kind: SyntaxKind, what: &str) {
     }
     p.eat(SEMICOLON);
     var_blocks(p);
+    if kind == PROPERTY_DECL {
+        while let Some(end_word) = at_accessor(p) {
+            accessor(p, end_word);
+        }
+    }
     statement_list(p, TokenSet::new(&[end]).union(ITEM_START));
     p.expect_end(end, &format!("to close the {what}"));
     m.complete(p, kind);
+}
+
+/// `GET` or `SET` opening a property accessor written inline, with the word that closes it.
+/// The words are not reserved, so `GET := 1;` or `SET(x)` stay statements.
+fn at_accessor(p: &Parser<'_>) -> Option<&'static str> {
+    if matches!(p.nth(1), ASSIGN | L_PAREN | DOT | L_BRACK | EQ | CARET) {
+        return None;
+    }
+    if p.nth_is_word(0, "GET") {
+        Some("END_GET")
+    } else if p.nth_is_word(0, "SET") {
+        Some("END_SET")
+    } else {
+        None
+    }
+}
+
+/// `GET` declarations statements `END_GET` (or the same with `SET`), as a property's accessor
+/// is written in a text export.
+fn accessor(p: &mut Parser<'_>, end_word: &str) {
+    let m = p.open();
+    p.bump();
+    p.eat(SEMICOLON);
+    var_blocks(p);
+    let stops = TokenSet::new(&[END_PROPERTY]).union(ITEM_START);
+    let list = p.open();
+    while !p.nth_is_word(0, end_word) && !p.at_set(stops) && !p.at_end() {
+        statement_or_recover(p, stops, false);
+    }
+    list.complete(p, STATEMENT_LIST);
+    if p.nth_is_word(0, end_word) {
+        p.bump();
+    } else {
+        p.error_before_current(format!(
+            "expected {end_word} to close the accessor, found {}",
+            p.found()
+        ));
+    }
+    p.eat(SEMICOLON);
+    m.complete(p, ACCESSOR_DECL);
 }
 
 /// `ACTION Name:` statements `END_ACTION`.

@@ -1,0 +1,636 @@
+//! A project built from one Structured Text source file, so a plain `.st` file (a text export,
+//! a library, a test case) is checked exactly like a project folder.
+//!
+//! Every POU, method, property accessor and action of the file becomes an object of the project
+//! model with its ST body as a slice of the file; `TYPE` blocks become data types and
+//! `VAR_GLOBAL` blocks global variable lists. The project remembers where each body and each
+//! declaration came from, so a finding about the project is reported at its place in the file.
+
+use std::collections::HashMap;
+use std::ops::Range;
+use std::path::PathBuf;
+
+use project_model::{
+    AccessSpecifier, Body, DataType, EnumValue, GlobalVarList, Method, Node, Object, Pou,
+    PouAction, PouKind, Project, Property, PropertyAccessor, StructMember, TypeDefinition,
+    VarSection, Variable,
+};
+
+use crate::sema::ProjectDiagnostic;
+use crate::syntax::{Parse, SyntaxKind, SyntaxNode, parse};
+
+/// A project made from one source file, with the way back from the project to the file.
+#[derive(Debug)]
+pub struct SourceProject {
+    /// The project.
+    pub project: Project,
+    /// The parse of the whole file, with its syntax errors.
+    pub parse: Parse,
+    /// Where each body file's text starts in the source.
+    body_offsets: HashMap<PathBuf, usize>,
+    /// Where each declared name is in the source: (object name, declared name), lower case.
+    declarations: HashMap<(String, String), Range<usize>>,
+    /// The object each project file belongs to.
+    file_objects: HashMap<PathBuf, String>,
+}
+
+impl SourceProject {
+    /// Builds the project of `text`. It never fails: what does not parse is left out of the
+    /// project and reported by [`SourceProject::parse`].
+    pub fn new(text: &str) -> Self {
+        let parse = parse(text);
+        let mut builder = Builder::default();
+        for item in parse.syntax().children() {
+            match item.kind() {
+                SyntaxKind::POU | SyntaxKind::INTERFACE_DECL => builder.pou(&item),
+                SyntaxKind::TYPE_DECL => builder.types(&item),
+                SyntaxKind::GLOBAL_VAR_LIST => builder.globals(&item),
+                _ => {}
+            }
+        }
+        let mut project = Project {
+            name: "source".to_owned(),
+            ..Project::default()
+        };
+        project.application.children = builder.objects.into_iter().map(Node::Object).collect();
+        let mut body_offsets = HashMap::new();
+        for body in project_model::st_body_files(&project) {
+            let key = (body.pou.name.to_lowercase(), target_key(&body.target));
+            if let Some(offset) = builder.body_offsets.get(&key) {
+                body_offsets.insert(body.file.clone(), *offset);
+            }
+        }
+        let file_objects = project_model::object_files(&project)
+            .into_iter()
+            .map(|(file, object)| (file, object.name().to_lowercase()))
+            .collect();
+        Self {
+            project,
+            parse,
+            body_offsets,
+            declarations: builder.declarations,
+            file_objects,
+        }
+    }
+
+    /// Where in the source a finding about the project is: the body text shifted to its place,
+    /// or the declaration it names. `None` for findings about things the file does not hold.
+    pub fn locate(&self, diagnostic: &ProjectDiagnostic) -> Option<Range<usize>> {
+        if let Some(name) = &diagnostic.declaration {
+            let object = self.file_objects.get(&diagnostic.file)?;
+            return self
+                .declarations
+                .get(&(object.clone(), name.to_lowercase()))
+                .cloned();
+        }
+        let offset = self.body_offsets.get(&diagnostic.file)?;
+        let range = &diagnostic.diagnostic.range;
+        Some(range.start + offset..range.end + offset)
+    }
+}
+
+fn target_key(target: &project_model::TextTarget) -> String {
+    use project_model::TextTarget;
+    match target {
+        TextTarget::Pou(_) => String::new(),
+        TextTarget::Method { method, .. } => format!("method {}", method.to_lowercase()),
+        TextTarget::Property { property, get, .. } => {
+            format!("property {} {get}", property.to_lowercase())
+        }
+        TextTarget::Action { action, .. } => format!("action {}", action.to_lowercase()),
+    }
+}
+
+/// Collects objects while walking the tree.
+#[derive(Default)]
+struct Builder {
+    objects: Vec<Object>,
+    /// (POU name, target key) → offset of the body text.
+    body_offsets: HashMap<(String, String), usize>,
+    declarations: HashMap<(String, String), Range<usize>>,
+    global_lists: usize,
+}
+
+impl Builder {
+    fn declare(&mut self, object: &str, name: &str, range: Range<usize>) {
+        self.declarations
+            .entry((object.to_lowercase(), name.to_lowercase()))
+            .or_insert(range);
+    }
+
+    fn pou(&mut self, node: &SyntaxNode) {
+        let kind = match first_keyword(node) {
+            Some(SyntaxKind::PROGRAM) => PouKind::Program,
+            Some(SyntaxKind::FUNCTION_BLOCK) => PouKind::FunctionBlock,
+            Some(SyntaxKind::FUNCTION) => PouKind::Function,
+            Some(SyntaxKind::INTERFACE) => PouKind::Interface,
+            _ => return,
+        };
+        let Some((name, name_range)) = name_of(node) else {
+            return;
+        };
+        self.declare(&name, &name, name_range);
+        let mut pou = Pou {
+            name: name.clone(),
+            kind,
+            return_type: return_type(node),
+            extends: None,
+            implements: Vec::new(),
+            comment: String::new(),
+            variables: Vec::new(),
+            body: if kind == PouKind::Interface {
+                Body::None
+            } else {
+                Body::st("")
+            },
+            methods: Vec::new(),
+            properties: Vec::new(),
+            actions: Vec::new(),
+        };
+        for child in node.children() {
+            match child.kind() {
+                SyntaxKind::EXTENDS_CLAUSE => {
+                    pou.extends = name_refs(&child).into_iter().next();
+                }
+                SyntaxKind::IMPLEMENTS_CLAUSE => pou.implements = name_refs(&child),
+                SyntaxKind::VAR_BLOCK => {
+                    pou.variables.extend(self.variables(&name, &child));
+                }
+                SyntaxKind::STATEMENT_LIST => {
+                    if !is_blank(&child) && matches!(pou.body.st_text(), Some("")) {
+                        pou.body = Body::st(child.text().to_string());
+                        self.body_offsets
+                            .insert((name.to_lowercase(), String::new()), start(&child));
+                    }
+                }
+                SyntaxKind::METHOD_DECL => {
+                    if let Some(method) = self.method(&name, &child) {
+                        pou.methods.push(method);
+                    }
+                }
+                SyntaxKind::PROPERTY_DECL => {
+                    if let Some(property) = self.property(&name, &child) {
+                        pou.properties.push(property);
+                    }
+                }
+                SyntaxKind::ACTION_DECL => {
+                    if let Some((action, range)) = name_of(&child) {
+                        self.declare(&name, &action, range);
+                        let (body, offset) = statements_of(&child);
+                        if let Some(offset) = offset {
+                            let key = format!("action {}", action.to_lowercase());
+                            self.body_offsets.insert((name.to_lowercase(), key), offset);
+                        }
+                        pou.actions.push(PouAction { name: action, body });
+                    }
+                }
+                _ => {}
+            }
+        }
+        self.objects.push(Object::Pou(pou));
+    }
+
+    fn method(&mut self, pou: &str, node: &SyntaxNode) -> Option<Method> {
+        let (name, range) = name_of(node)?;
+        self.declare(pou, &name, range);
+        let mut variables = Vec::new();
+        for block in node
+            .children()
+            .filter(|child| child.kind() == SyntaxKind::VAR_BLOCK)
+        {
+            variables.extend(self.variables(pou, &block));
+        }
+        let (body, offset) = statements_of(node);
+        if let Some(offset) = offset {
+            let key = format!("method {}", name.to_lowercase());
+            self.body_offsets.insert((pou.to_lowercase(), key), offset);
+        }
+        Some(Method {
+            return_type: return_type(node),
+            access: access(node),
+            is_abstract: has_token(node, SyntaxKind::ABSTRACT),
+            comment: String::new(),
+            variables,
+            body,
+            name,
+        })
+    }
+
+    fn property(&mut self, pou: &str, node: &SyntaxNode) -> Option<Property> {
+        let (name, range) = name_of(node)?;
+        self.declare(pou, &name, range);
+        let mut property = Property {
+            ty: return_type(node).unwrap_or_default(),
+            access: access(node),
+            comment: String::new(),
+            get: None,
+            set: None,
+            name: name.clone(),
+        };
+        for accessor in node
+            .children()
+            .filter(|child| child.kind() == SyntaxKind::ACCESSOR_DECL)
+        {
+            let get = accessor
+                .first_token()
+                .is_some_and(|token| token.text().eq_ignore_ascii_case("GET"));
+            let mut variables = Vec::new();
+            for block in accessor
+                .children()
+                .filter(|child| child.kind() == SyntaxKind::VAR_BLOCK)
+            {
+                variables.extend(self.variables(pou, &block));
+            }
+            let (body, offset) = statements_of(&accessor);
+            if let Some(offset) = offset {
+                let key = format!("property {} {get}", name.to_lowercase());
+                self.body_offsets.insert((pou.to_lowercase(), key), offset);
+            }
+            let slot = if get {
+                &mut property.get
+            } else {
+                &mut property.set
+            };
+            *slot = Some(PropertyAccessor { variables, body });
+        }
+        Some(property)
+    }
+
+    fn types(&mut self, node: &SyntaxNode) {
+        for definition in node
+            .children()
+            .filter(|child| child.kind() == SyntaxKind::TYPE_DEFINITION)
+        {
+            let Some((name, range)) = name_of(&definition) else {
+                continue;
+            };
+            self.declare(&name, &name, range);
+            let Some(shape) = definition
+                .children()
+                .find(|child| !matches!(child.kind(), SyntaxKind::NAME | SyntaxKind::INITIALIZER))
+            else {
+                continue;
+            };
+            let extends = definition
+                .children()
+                .chain(shape.children())
+                .find(|child| child.kind() == SyntaxKind::EXTENDS_CLAUSE)
+                .and_then(|clause| name_refs(&clause).into_iter().next());
+            let definition_model = match shape.kind() {
+                SyntaxKind::STRUCT_TYPE => TypeDefinition::Struct {
+                    extends,
+                    members: self.members(&name, &shape),
+                },
+                SyntaxKind::UNION_TYPE => TypeDefinition::Union {
+                    members: self.members(&name, &shape),
+                },
+                SyntaxKind::ENUM_TYPE => {
+                    let mut values = Vec::new();
+                    for value in shape
+                        .children()
+                        .filter(|child| child.kind() == SyntaxKind::ENUM_VALUE)
+                    {
+                        let Some((value_name, range)) = name_of(&value) else {
+                            continue;
+                        };
+                        self.declare(&name, &value_name, range);
+                        values.push(EnumValue {
+                            name: value_name,
+                            value: value
+                                .children()
+                                .find(|child| child.kind() != SyntaxKind::NAME)
+                                .map(|expression| trimmed(&expression)),
+                            comment: String::new(),
+                        });
+                    }
+                    let base = shape
+                        .children()
+                        .find(|child| child.kind() == SyntaxKind::NAMED_TYPE)
+                        .map(|base| trimmed(&base));
+                    TypeDefinition::Enum { base, values }
+                }
+                _ => TypeDefinition::Alias {
+                    ty: trimmed(&shape),
+                    initial: initializer(&definition),
+                },
+            };
+            self.objects.push(Object::DataType(DataType {
+                name,
+                comment: String::new(),
+                definition: definition_model,
+            }));
+        }
+    }
+
+    fn members(&mut self, type_name: &str, node: &SyntaxNode) -> Vec<StructMember> {
+        let mut members = Vec::new();
+        for declaration in node
+            .children()
+            .filter(|child| child.kind() == SyntaxKind::VAR_DECL)
+        {
+            for variable in self.declared(type_name, &declaration, VarSection::Var) {
+                members.push(StructMember {
+                    name: variable.name,
+                    ty: variable.ty,
+                    initial: variable.initial,
+                    comment: String::new(),
+                });
+            }
+        }
+        members
+    }
+
+    fn globals(&mut self, node: &SyntaxNode) {
+        self.global_lists += 1;
+        let name = if self.global_lists == 1 {
+            "GVL".to_owned()
+        } else {
+            format!("GVL_{}", self.global_lists)
+        };
+        let mut variables = Vec::new();
+        for block in node
+            .children()
+            .filter(|child| child.kind() == SyntaxKind::VAR_BLOCK)
+        {
+            variables.extend(self.variables(&name, &block));
+        }
+        self.objects.push(Object::Gvl(GlobalVarList {
+            name,
+            comment: String::new(),
+            variables,
+        }));
+    }
+
+    /// The variables of one `VAR… END_VAR` section.
+    fn variables(&mut self, object: &str, block: &SyntaxNode) -> Vec<Variable> {
+        let section = match first_keyword(block) {
+            Some(SyntaxKind::VAR_INPUT) => VarSection::VarInput,
+            Some(SyntaxKind::VAR_OUTPUT) => VarSection::VarOutput,
+            Some(SyntaxKind::VAR_IN_OUT) => VarSection::VarInOut,
+            Some(SyntaxKind::VAR_GLOBAL) => VarSection::VarGlobal,
+            Some(SyntaxKind::VAR_EXTERNAL) => VarSection::VarExternal,
+            Some(SyntaxKind::VAR_TEMP) => VarSection::VarTemp,
+            Some(SyntaxKind::VAR_STAT) => VarSection::VarStat,
+            Some(SyntaxKind::VAR_INST) => VarSection::VarInst,
+            Some(SyntaxKind::VAR) => VarSection::Var,
+            // Configuration and access paths name other variables; they declare none.
+            _ => return Vec::new(),
+        };
+        let constant = has_token(block, SyntaxKind::CONSTANT);
+        let retain = has_token(block, SyntaxKind::RETAIN);
+        let persistent = has_token(block, SyntaxKind::PERSISTENT);
+        let mut variables = Vec::new();
+        for declaration in block
+            .children()
+            .filter(|child| child.kind() == SyntaxKind::VAR_DECL)
+        {
+            for mut variable in self.declared(object, &declaration, section) {
+                variable.constant = constant;
+                variable.retain = retain;
+                variable.persistent = persistent;
+                variables.push(variable);
+            }
+        }
+        variables
+    }
+
+    /// The variables of one declaration `a, b AT %IX0.0 : BOOL := TRUE;`.
+    fn declared(
+        &mut self,
+        object: &str,
+        declaration: &SyntaxNode,
+        section: VarSection,
+    ) -> Vec<Variable> {
+        let ty = declaration
+            .children()
+            .find(|child| is_type_node(child.kind()))
+            .map(|ty| trimmed(&ty))
+            .unwrap_or_default();
+        let address = declaration
+            .children()
+            .find(|child| child.kind() == SyntaxKind::ADDRESS)
+            .and_then(|address| {
+                address
+                    .children_with_tokens()
+                    .filter_map(|element| element.into_token())
+                    .find(|token| token.kind() == SyntaxKind::DIRECT_ADDRESS)
+                    .map(|token| token.text().to_owned())
+            });
+        let initial = initializer(declaration);
+        let mut variables = Vec::new();
+        let Some(names) = declaration
+            .children()
+            .find(|child| child.kind() == SyntaxKind::VAR_NAME_LIST)
+        else {
+            return variables;
+        };
+        for name in names
+            .children()
+            .filter(|child| child.kind() == SyntaxKind::NAME)
+        {
+            let text = trimmed(&name);
+            self.declare(object, &text, range(&name));
+            variables.push(Variable {
+                name: text,
+                section,
+                ty: ty.clone(),
+                initial: initial.clone(),
+                address: address.clone(),
+                ..Variable::default()
+            });
+        }
+        variables
+    }
+}
+
+fn is_type_node(kind: SyntaxKind) -> bool {
+    matches!(
+        kind,
+        SyntaxKind::NAMED_TYPE
+            | SyntaxKind::STRING_TYPE
+            | SyntaxKind::ARRAY_TYPE
+            | SyntaxKind::POINTER_TYPE
+            | SyntaxKind::REFERENCE_TYPE
+            | SyntaxKind::SUBRANGE
+            | SyntaxKind::ENUM_TYPE
+            | SyntaxKind::STRUCT_TYPE
+            | SyntaxKind::TYPE_REF
+    )
+}
+
+/// The statements of a method, accessor or action with the offset where they start.
+fn statements_of(node: &SyntaxNode) -> (Body, Option<usize>) {
+    match node
+        .children()
+        .find(|child| child.kind() == SyntaxKind::STATEMENT_LIST)
+    {
+        Some(list) => (Body::st(list.text().to_string()), Some(start(&list))),
+        None => (Body::st(""), None),
+    }
+}
+
+fn initializer(node: &SyntaxNode) -> Option<String> {
+    let initializer = node
+        .children()
+        .find(|child| child.kind() == SyntaxKind::INITIALIZER)?;
+    let value = initializer.children().next()?;
+    Some(trimmed(&value))
+}
+
+fn return_type(node: &SyntaxNode) -> Option<String> {
+    let return_type = node
+        .children()
+        .find(|child| child.kind() == SyntaxKind::RETURN_TYPE)?;
+    let ty = return_type.children().next()?;
+    Some(trimmed(&ty))
+}
+
+fn access(node: &SyntaxNode) -> AccessSpecifier {
+    if has_token(node, SyntaxKind::PRIVATE) {
+        AccessSpecifier::Private
+    } else if has_token(node, SyntaxKind::PROTECTED) {
+        AccessSpecifier::Protected
+    } else if has_token(node, SyntaxKind::INTERNAL) {
+        AccessSpecifier::Internal
+    } else {
+        AccessSpecifier::Public
+    }
+}
+
+/// The first keyword token directly in `node`.
+fn first_keyword(node: &SyntaxNode) -> Option<SyntaxKind> {
+    node.children_with_tokens()
+        .filter_map(|element| element.into_token())
+        .map(|token| token.kind())
+        .find(|kind| kind.is_keyword())
+}
+
+fn has_token(node: &SyntaxNode, kind: SyntaxKind) -> bool {
+    node.children_with_tokens()
+        .filter_map(|element| element.into_token())
+        .any(|token| token.kind() == kind)
+}
+
+/// The declared name directly under `node`, with its range.
+fn name_of(node: &SyntaxNode) -> Option<(String, Range<usize>)> {
+    let name = node
+        .children()
+        .find(|child| child.kind() == SyntaxKind::NAME)?;
+    let text = trimmed(&name);
+    (!text.is_empty()).then(|| (text, range(&name)))
+}
+
+fn name_refs(node: &SyntaxNode) -> Vec<String> {
+    node.children()
+        .filter(|child| child.kind() == SyntaxKind::NAME_REF)
+        .map(|name| trimmed(&name))
+        .collect()
+}
+
+fn is_blank(node: &SyntaxNode) -> bool {
+    node.text().to_string().trim().is_empty()
+}
+
+fn trimmed(node: &SyntaxNode) -> String {
+    node.text().to_string().trim().to_owned()
+}
+
+fn start(node: &SyntaxNode) -> usize {
+    usize::from(node.text_range().start())
+}
+
+fn range(node: &SyntaxNode) -> Range<usize> {
+    let range = node.text_range();
+    usize::from(range.start())..usize::from(range.end())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const SOURCE: &str = "TYPE
+    E_State : (Idle := 0, Run, Fault) DINT;
+    ST_Point : STRUCT x : REAL; y : REAL := 1.5; END_STRUCT;
+END_TYPE
+VAR_GLOBAL CONSTANT
+    N : INT := 10;
+END_VAR
+FUNCTION_BLOCK FB_A EXTENDS FB_B
+VAR_INPUT
+    a, b AT %IX0.0 : BOOL := TRUE;
+END_VAR
+a := b;
+METHOD PRIVATE M : INT
+VAR_INPUT k : INT; END_VAR
+M := k;
+END_METHOD
+PROPERTY P : INT
+GET
+P := 1;
+END_GET
+END_PROPERTY
+ACTION Act:
+a := FALSE;
+END_ACTION
+END_FUNCTION_BLOCK
+";
+
+    #[test]
+    fn every_kind_of_declaration_becomes_an_object() {
+        let source = SourceProject::new(SOURCE);
+        assert!(
+            source.parse.errors().is_empty(),
+            "{:?}",
+            source.parse.errors()
+        );
+        let app = &source.project.application;
+        let Some(Object::DataType(state)) = app.object("E_State") else {
+            panic!("no enum");
+        };
+        assert!(matches!(
+            &state.definition,
+            TypeDefinition::Enum { base: Some(base), values } if base == "DINT" && values.len() == 3
+        ));
+        let Some(Object::Gvl(gvl)) = app.object("GVL") else {
+            panic!("no GVL");
+        };
+        assert!(gvl.variables[0].constant);
+        assert_eq!(gvl.variables[0].initial.as_deref(), Some("10"));
+        let Some(Object::Pou(fb)) = app.object("FB_A") else {
+            panic!("no FB");
+        };
+        assert_eq!(fb.extends.as_deref(), Some("FB_B"));
+        assert_eq!(fb.variables.len(), 2);
+        assert_eq!(fb.variables[1].address.as_deref(), Some("%IX0.0"));
+        assert_eq!(fb.body.st_text(), Some("a := b;"));
+        assert_eq!(fb.methods[0].access, AccessSpecifier::Private);
+        assert_eq!(fb.methods[0].return_type.as_deref(), Some("INT"));
+        assert!(fb.properties[0].get.is_some() && fb.properties[0].set.is_none());
+        assert_eq!(fb.actions[0].body.st_text(), Some("a := FALSE;"));
+    }
+
+    #[test]
+    fn findings_in_bodies_and_declarations_map_back_to_the_file() {
+        let source = SourceProject::new(SOURCE);
+        for body in project_model::st_body_files(&source.project) {
+            let finding = ProjectDiagnostic {
+                file: body.file.clone(),
+                declaration: None,
+                diagnostic: crate::Diagnostic::new(crate::Code::UnknownName, 0..1, "x"),
+            };
+            let at = source.locate(&finding).expect("every body maps back");
+            assert!(SOURCE[at.start..].starts_with(body.text));
+        }
+        let (file, _) = project_model::object_files(&source.project)
+            .into_iter()
+            .find(|(_, object)| object.name() == "FB_A")
+            .expect("FB_A has a file");
+        let finding = ProjectDiagnostic {
+            file,
+            declaration: Some("b".to_owned()),
+            diagnostic: crate::Diagnostic::new(crate::Code::UnknownType, 0..0, "x"),
+        };
+        let at = source.locate(&finding).expect("declarations map back");
+        assert_eq!(&SOURCE[at], "b");
+    }
+}
