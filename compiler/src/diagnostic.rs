@@ -55,6 +55,21 @@ codes! {
     UnknownName = "E0101", Error, "Unknown name";
     UnknownType = "E0102", Error, "Unknown type";
     UnknownProgram = "E0103", Error, "Task calls something that is not a program";
+    TypeMismatch = "E0104", Error, "Value of the wrong type";
+    InvalidOperands = "E0105", Error, "Operator not defined for its operands";
+    InvalidCall = "E0106", Error, "Call does not match what is called";
+    NotAssignable = "E0107", Error, "Assignment to something that cannot be written";
+    DuplicateName = "E0108", Error, "Name declared twice";
+    NotConstant = "E0109", Error, "Constant expression needed";
+    InvalidAddress = "E0110", Error, "Invalid direct address";
+    IndexOutOfRange = "E0111", Error, "Index or bit outside the declared range";
+    Inaccessible = "E0112", Error, "Member not visible from outside";
+    UnusedVariable = "W0001", Warning, "Variable never used";
+    UnassignedVariable = "W0002", Warning, "Variable read but never written";
+    OverlappingAddresses = "W0003", Warning, "Located variables overlap";
+    AssignmentToInput = "W0004", Warning, "Input assigned inside its POU";
+    DuplicateCaseLabel = "W0005", Warning, "CASE label already covered";
+    AddressSizeMismatch = "W0006", Warning, "Located variable's type does not match the address size";
 }
 
 /// One finding of the compiler about the source.

@@ -78,9 +78,19 @@ impl SourceProject {
     pub fn locate(&self, diagnostic: &ProjectDiagnostic) -> Option<Range<usize>> {
         if let Some(name) = &diagnostic.declaration {
             let object = self.file_objects.get(&diagnostic.file)?;
+            let repeated = diagnostic.diagnostic.code == crate::Code::DuplicateName;
+            let exact = if repeated {
+                format!("last={name}")
+            } else {
+                format!("={name}")
+            };
             return self
                 .declarations
-                .get(&(object.clone(), name.to_lowercase()))
+                .get(&(object.clone(), exact))
+                .or_else(|| {
+                    self.declarations
+                        .get(&(object.clone(), name.to_lowercase()))
+                })
                 .cloned();
         }
         let offset = self.body_offsets.get(&diagnostic.file)?;
@@ -113,6 +123,16 @@ struct Builder {
 
 impl Builder {
     fn declare(&mut self, object: &str, name: &str, range: Range<usize>) {
+        // By exact spelling (so `XTWICE` declared after `xTwice` is found as itself) and
+        // without case.
+        self.declarations
+            .entry((object.to_lowercase(), format!("={name}")))
+            .or_insert(range.clone());
+        // The last one too: a name declared twice is reported where it is repeated.
+        self.declarations.insert(
+            (object.to_lowercase(), format!("last={name}")),
+            range.clone(),
+        );
         self.declarations
             .entry((object.to_lowercase(), name.to_lowercase()))
             .or_insert(range);
@@ -156,12 +176,12 @@ impl Builder {
                 SyntaxKind::VAR_BLOCK => {
                     pou.variables.extend(self.variables(&name, &child));
                 }
-                SyntaxKind::STATEMENT_LIST => {
-                    if !is_blank(&child) && matches!(pou.body.st_text(), Some("")) {
-                        pou.body = Body::st(child.text().to_string());
-                        self.body_offsets
-                            .insert((name.to_lowercase(), String::new()), start(&child));
-                    }
+                SyntaxKind::STATEMENT_LIST
+                    if !is_blank(&child) && matches!(pou.body.st_text(), Some("")) =>
+                {
+                    pou.body = Body::st(child.text().to_string());
+                    self.body_offsets
+                        .insert((name.to_lowercase(), String::new()), start(&child));
                 }
                 SyntaxKind::METHOD_DECL => {
                     if let Some(method) = self.method(&name, &child) {

@@ -1,19 +1,27 @@
-//! Semantic checks over a whole project: name resolution of every identifier in every ST body,
-//! of every type in every declaration, and of the programs the tasks call.
-//!
-//! The type checker proper builds on the same scopes; this first layer already finds
-//! misspelt variables, types and programs, with a suggestion where one is close.
+//! Semantic checks over a whole project: name resolution and type checking of every ST body,
+//! the declarations (types, initial values, duplicates, direct addresses), the programs the
+//! tasks call, and the warnings a PLC engineer expects: unused and unassigned variables,
+//! inputs written inside their POU, overlapping located variables.
 
+mod address;
+mod body;
+mod constant;
 mod scope;
+mod signatures;
 mod stdlib;
+mod ty;
+mod types;
 
-use std::collections::HashSet;
+use std::collections::{HashMap, HashSet};
 use std::path::PathBuf;
 
-use project_model::{DataType, Object, PouKind, Project, TypeDefinition, Variable};
+use project_model::{
+    Body, DataType, Object, Pou, PouKind, Project, TypeDefinition, VarSection, Variable,
+};
 
 use crate::diagnostic::{Code, Diagnostic};
-use crate::syntax::{SyntaxKind, SyntaxNode, parse_statements, parse_type};
+use crate::syntax::{SyntaxKind, parse_statements, parse_type};
+use body::{BodyChecker, Usage};
 use scope::{Globals, Scope};
 
 pub use stdlib::{is_built_in_type, is_function, is_function_block};
@@ -34,24 +42,7 @@ pub struct ProjectDiagnostic {
 pub fn check_project(project: &Project) -> Vec<ProjectDiagnostic> {
     let globals = Globals::new(project);
     let mut found = Vec::new();
-    for body in project_model::st_body_files(project) {
-        let parse = parse_statements(body.text);
-        for error in parse.errors() {
-            found.push(ProjectDiagnostic {
-                file: body.file.clone(),
-                declaration: None,
-                diagnostic: error.clone(),
-            });
-        }
-        let scope = Scope::for_body(&globals, body.pou, &body.target, &parse.syntax());
-        for diagnostic in resolve_names(&parse.syntax(), &scope) {
-            found.push(ProjectDiagnostic {
-                file: body.file.clone(),
-                declaration: None,
-                diagnostic,
-            });
-        }
-    }
+    let bodies = project_model::st_body_files(project);
     for (file, object) in project_model::object_files(project) {
         let mut report = |name: &str, diagnostic: Diagnostic| {
             found.push(ProjectDiagnostic {
@@ -62,41 +53,51 @@ pub fn check_project(project: &Project) -> Vec<ProjectDiagnostic> {
         };
         match object {
             Object::Pou(pou) => {
-                check_variables(&globals, &pou.variables, &mut report);
-                if let Some(ty) = &pou.return_type {
-                    check_type(&globals, &pou.name, ty, &mut report);
+                check_pou_declarations(&globals, pou, &mut report);
+                let mut usage = Usage::new();
+                let mut clean = true;
+                for body in bodies.iter().filter(|body| std::ptr::eq(body.pou, pou)) {
+                    let parse = parse_statements(body.text);
+                    clean &= parse.errors().is_empty();
+                    let mut findings: Vec<Diagnostic> = parse.errors().to_vec();
+                    let root = parse.syntax();
+                    let scope = Scope::for_body(&globals, body.pou, &body.target, &root);
+                    let mut checker = BodyChecker::new(&scope, &mut usage);
+                    checker.check(&root);
+                    let mut checked = checker.diagnostics;
+                    checked.sort_by_key(|diagnostic| diagnostic.range.start);
+                    findings.extend(checked);
+                    found.extend(findings.into_iter().map(|diagnostic| ProjectDiagnostic {
+                        file: body.file.clone(),
+                        declaration: None,
+                        diagnostic,
+                    }));
                 }
-                for base in pou.extends.iter().chain(&pou.implements) {
-                    if !globals.is_pou(base) {
-                        report(
-                            &pou.name,
-                            unknown(
-                                Code::UnknownType,
-                                "function block or interface",
-                                base,
-                                &globals,
-                            ),
-                        );
-                    }
-                }
-                for method in &pou.methods {
-                    check_variables(&globals, &method.variables, &mut report);
-                    if let Some(ty) = &method.return_type {
-                        check_type(&globals, &method.name, ty, &mut report);
-                    }
-                }
-                for property in &pou.properties {
-                    check_type(&globals, &property.name, &property.ty, &mut report);
-                    for accessor in property.get.iter().chain(&property.set) {
-                        check_variables(&globals, &accessor.variables, &mut report);
-                    }
+                // Usage is only complete when every body is Structured Text that parsed.
+                if clean && all_bodies_are_text(pou) {
+                    usage_warnings(&globals, pou, &usage, &mut |name, diagnostic| {
+                        found.push(ProjectDiagnostic {
+                            file: file.clone(),
+                            declaration: Some(name.to_owned()),
+                            diagnostic,
+                        });
+                    });
                 }
             }
-            Object::Gvl(gvl) => check_variables(&globals, &gvl.variables, &mut report),
+            Object::Gvl(gvl) => {
+                check_variables(&globals, None, &gvl.variables, &mut report);
+                duplicates(
+                    gvl.variables.iter().map(|v| v.name.as_str()),
+                    "global variable list",
+                    &gvl.name,
+                    &mut report,
+                );
+            }
             Object::DataType(data_type) => check_data_type(&globals, data_type, &mut report),
             Object::CamTable(_) | Object::Trace(_) | Object::WatchList(_) => {}
         }
     }
+    overlapping_addresses(project, &mut found);
     for task in &project.tasks {
         for program in &task.programs {
             let is_program = project.application.object(program).is_some_and(
@@ -118,112 +119,267 @@ pub fn check_project(project: &Project) -> Vec<ProjectDiagnostic> {
     found
 }
 
-/// Reports every name in `root` that is neither declared in `scope` nor known globally.
-fn resolve_names(root: &SyntaxNode, scope: &Scope<'_>) -> Vec<Diagnostic> {
-    let mut found = Vec::new();
-    found.extend(resolve_members(root, scope));
-    for node in root
-        .descendants()
-        .filter(|node| node.kind() == SyntaxKind::NAME_EXPR)
-    {
-        // The arguments of an SFC action association are qualifiers and times, not variables.
-        if node.ancestors().any(|a| a.kind() == SyntaxKind::STEP_DECL)
-            && node.ancestors().any(|a| a.kind() == SyntaxKind::ARG_LIST)
+/// A POU's header and declarations: types, base types, initial values, addresses, and names
+/// declared twice.
+fn check_pou_declarations<'p>(
+    globals: &Globals<'p>,
+    pou: &'p Pou,
+    report: &mut impl FnMut(&str, Diagnostic),
+) {
+    check_variables(globals, Some(pou), &pou.variables, report);
+    if let Some(ty) = &pou.return_type {
+        check_type(globals, &pou.name, ty, report);
+    }
+    for base in pou.extends.iter().chain(&pou.implements) {
+        if !globals.is_pou(base) {
+            report(
+                &pou.name,
+                unknown(
+                    Code::UnknownType,
+                    "function block or interface",
+                    base,
+                    globals,
+                ),
+            );
+        }
+    }
+    let members = pou
+        .variables
+        .iter()
+        .map(|v| v.name.as_str())
+        .chain(pou.methods.iter().map(|m| m.name.as_str()))
+        .chain(pou.properties.iter().map(|p| p.name.as_str()))
+        .chain(pou.actions.iter().map(|a| a.name.as_str()));
+    duplicates(members, "POU", &pou.name, report);
+    for method in &pou.methods {
+        check_variables(globals, Some(pou), &method.variables, report);
+        duplicates(
+            method.variables.iter().map(|v| v.name.as_str()),
+            "method",
+            &method.name,
+            report,
+        );
+        if let Some(ty) = &method.return_type {
+            check_type(globals, &method.name, ty, report);
+        }
+    }
+    for property in &pou.properties {
+        check_type(globals, &property.name, &property.ty, report);
+        for accessor in property.get.iter().chain(&property.set) {
+            check_variables(globals, Some(pou), &accessor.variables, report);
+        }
+    }
+}
+
+fn all_bodies_are_text(pou: &Pou) -> bool {
+    let text = |body: &Body| matches!(body, Body::St { .. } | Body::None);
+    text(&pou.body)
+        && pou.methods.iter().all(|m| text(&m.body))
+        && pou.actions.iter().all(|a| text(&a.body))
+        && pou
+            .properties
+            .iter()
+            .flat_map(|p| p.get.iter().chain(&p.set))
+            .all(|a| text(&a.body))
+}
+
+/// Reports every name of `names` declared a second time.
+fn duplicates<'n>(
+    names: impl Iterator<Item = &'n str>,
+    what: &str,
+    owner: &str,
+    report: &mut impl FnMut(&str, Diagnostic),
+) {
+    let mut seen = HashSet::new();
+    for name in names {
+        if !seen.insert(name.to_lowercase()) {
+            report(
+                name,
+                Diagnostic::new(
+                    Code::DuplicateName,
+                    0..0,
+                    format!(
+                        "'{name}' is declared twice in the {what} '{owner}'; names compare without case"
+                    ),
+                ),
+            );
+        }
+    }
+}
+
+/// Unused and unassigned local variables of a POU, its methods and accessors.
+fn usage_warnings(
+    globals: &Globals<'_>,
+    pou: &Pou,
+    usage: &Usage,
+    report: &mut impl FnMut(&str, Diagnostic),
+) {
+    let locals = pou
+        .variables
+        .iter()
+        .chain(pou.methods.iter().flat_map(|m| &m.variables))
+        .chain(
+            pou.properties
+                .iter()
+                .flat_map(|p| p.get.iter().chain(&p.set))
+                .flat_map(|a| &a.variables),
+        );
+    for variable in locals {
+        if !matches!(
+            variable.section,
+            VarSection::Var | VarSection::VarTemp | VarSection::VarStat
+        ) || variable.address.is_some()
+            || variable.constant && pou.kind == PouKind::Program
         {
             continue;
         }
-        let mut tokens = node
-            .children_with_tokens()
-            .filter_map(|element| element.into_token())
-            .filter(|token| !token.kind().is_trivia());
-        let Some(first) = tokens.next() else { continue };
-        let (token, global_only) = match first.kind() {
-            SyntaxKind::IDENT => (first, false),
-            // `.name` is a global even where a local hides it.
-            SyntaxKind::DOT => match tokens.next() {
-                Some(token) if token.kind() == SyntaxKind::IDENT => (token, true),
-                _ => continue,
-            },
+        let access = usage
+            .get(&std::ptr::from_ref(variable))
+            .copied()
+            .unwrap_or_default();
+        if !access.read && !access.written {
+            report(
+                &variable.name,
+                Diagnostic::new(
+                    Code::UnusedVariable,
+                    0..0,
+                    format!("'{}' is declared but never used", variable.name),
+                ),
+            );
+        } else if access.read
+            && !access.written
+            && variable.initial.is_none()
+            && !variable.constant
+            && globals.resolve_type(&variable.ty).as_elementary().is_some()
+        {
+            report(
+                &variable.name,
+                Diagnostic::new(
+                    Code::UnassignedVariable,
+                    0..0,
+                    format!(
+                        "'{}' is read but never written, so it always holds its default value",
+                        variable.name
+                    ),
+                ),
+            );
+        }
+    }
+}
+
+/// Located variables of different sizes that share bits, as CODESYS warns.
+fn overlapping_addresses(project: &Project, found: &mut Vec<ProjectDiagnostic>) {
+    let mut located: Vec<(PathBuf, &Variable, address::Address)> = Vec::new();
+    for (file, object) in project_model::object_files(project) {
+        let variables: Vec<&Variable> = match object {
+            Object::Pou(pou) => pou.variables.iter().collect(),
+            Object::Gvl(gvl) => gvl.variables.iter().collect(),
             _ => continue,
         };
-        let name = token.text();
-        let known = if global_only {
-            scope.globals.knows(name)
-        } else {
-            scope.knows(name)
-        };
-        if !known {
-            let range = token.text_range();
-            let mut diagnostic = unknown(Code::UnknownName, "name", name, scope.globals);
-            if let Some(suggestion) = scope.suggest(name) {
-                diagnostic.message = format!("unknown name '{name}'; did you mean '{suggestion}'?");
+        for variable in variables {
+            if let Some(Ok(Some(address))) = variable.address.as_deref().map(address::parse_address)
+            {
+                located.push((file.clone(), variable, address));
             }
-            diagnostic.range = usize::from(range.start())..usize::from(range.end());
-            found.push(diagnostic);
         }
     }
-    found.sort_by_key(|diagnostic| diagnostic.range.start);
-    found
-}
-
-/// Checks `Container.member` where the container is a global variable list or an enumeration,
-/// whose members are known without types: `GVL_IO.xStart`, `E_State.Idle`.
-fn resolve_members(root: &SyntaxNode, scope: &Scope<'_>) -> Vec<Diagnostic> {
-    let mut found = Vec::new();
-    for field in root
-        .descendants()
-        .filter(|node| node.kind() == SyntaxKind::FIELD_EXPR)
-    {
-        let Some(base) = field
-            .children()
-            .next()
-            .filter(|base| base.kind() == SyntaxKind::NAME_EXPR)
-        else {
-            continue;
-        };
-        let container = base.text().to_string();
-        let container = container.trim();
-        if scope.is_local(container) {
-            continue;
-        }
-        let Some(members) = scope.globals.members(container) else {
-            continue;
-        };
-        let Some(member) = field
-            .children_with_tokens()
-            .filter_map(|element| element.into_token())
-            .filter(|token| token.kind() == SyntaxKind::IDENT)
-            .last()
-        else {
-            continue;
-        };
-        let name = member.text();
-        if !members
-            .iter()
-            .any(|known| project_model::same_identifier(known, name))
-        {
-            let range = member.text_range();
-            let message = match closest(name, members.iter().copied()) {
-                Some(suggestion) => {
-                    format!("'{container}' has no member '{name}'; did you mean '{suggestion}'?")
+    located.sort_by_key(|(_, _, address)| (address.area as u8, address.first_bit));
+    let mut by_area: HashMap<u8, Vec<usize>> = HashMap::new();
+    for (index, (_, _, address)) in located.iter().enumerate() {
+        by_area.entry(address.area as u8).or_default().push(index);
+    }
+    for indices in by_area.values() {
+        for (position, &i) in indices.iter().enumerate() {
+            let (_, first, a) = &located[i];
+            for &j in &indices[position + 1..] {
+                let (file, second, b) = &located[j];
+                if b.first_bit >= a.bits().end {
+                    break;
                 }
-                None => format!("'{container}' has no member '{name}'"),
-            };
-            let mut diagnostic = Diagnostic::new(Code::UnknownName, 0..0, message);
-            diagnostic.range = usize::from(range.start())..usize::from(range.end());
-            found.push(diagnostic);
+                if a.size_bits != b.size_bits {
+                    let message = format!(
+                        "'{}' at {} overlaps '{}' at {}: writing one changes the other",
+                        second.name,
+                        second.address.as_deref().unwrap_or_default(),
+                        first.name,
+                        first.address.as_deref().unwrap_or_default()
+                    );
+                    found.push(ProjectDiagnostic {
+                        file: file.clone(),
+                        declaration: Some(second.name.clone()),
+                        diagnostic: Diagnostic::new(Code::OverlappingAddresses, 0..0, message),
+                    });
+                }
+            }
         }
     }
-    found
 }
 
-fn check_variables(
-    globals: &Globals<'_>,
+fn check_variables<'p>(
+    globals: &Globals<'p>,
+    pou: Option<&'p Pou>,
     variables: &[Variable],
     report: &mut impl FnMut(&str, Diagnostic),
 ) {
     for variable in variables {
         check_type(globals, &variable.name, &variable.ty, report);
+        let declared = globals.resolve_type(&variable.ty);
+        if let Some(initial) = variable.initial.as_deref()
+            && let Some(expression) = constant::parse_expression(initial)
+        {
+            let scope = match pou {
+                Some(pou) => Scope::for_declarations(globals, pou),
+                None => Scope::globals_only(globals),
+            };
+            let mut usage = Usage::new();
+            let mut checker = BodyChecker::new(&scope, &mut usage);
+            checker.check_value(
+                &expression,
+                &declared,
+                &format!("the initial value of '{}'", variable.name),
+            );
+            for mut diagnostic in checker.diagnostics {
+                diagnostic.range = 0..0;
+                report(&variable.name, diagnostic);
+            }
+        }
+        if let Some(text) = variable.address.as_deref() {
+            match address::parse_address(text) {
+                Err(message) => report(
+                    &variable.name,
+                    Diagnostic::new(
+                        Code::InvalidAddress,
+                        0..0,
+                        format!("{}: {message}", variable.name),
+                    ),
+                ),
+                Ok(Some(address)) => {
+                    let size = declared.as_elementary().map(|e| {
+                        if e == crate::elementary::Elementary::Bool {
+                            1
+                        } else {
+                            e.size_bits()
+                        }
+                    });
+                    if let Some(size) = size
+                        && size != address.size_bits
+                    {
+                        report(
+                            &variable.name,
+                            Diagnostic::new(
+                                Code::AddressSizeMismatch,
+                                0..0,
+                                format!(
+                                    "'{}' is {} ({size} bit(s)) but {text} addresses {} bit(s)",
+                                    variable.name, declared, address.size_bits
+                                ),
+                            ),
+                        );
+                    }
+                }
+                Ok(None) => {}
+            }
+        }
     }
 }
 
@@ -245,16 +401,34 @@ fn check_data_type(
             for member in members {
                 check_type(globals, &member.name, &member.ty, report);
             }
+            duplicates(
+                members.iter().map(|m| m.name.as_str()),
+                "structure",
+                &data_type.name,
+                report,
+            );
         }
         TypeDefinition::Union { members } => {
             for member in members {
                 check_type(globals, &member.name, &member.ty, report);
             }
+            duplicates(
+                members.iter().map(|m| m.name.as_str()),
+                "union",
+                &data_type.name,
+                report,
+            );
         }
-        TypeDefinition::Enum { base, .. } => {
+        TypeDefinition::Enum { base, values } => {
             if let Some(base) = base {
                 check_type(globals, &data_type.name, base, report);
             }
+            duplicates(
+                values.iter().map(|v| v.name.as_str()),
+                "enumeration",
+                &data_type.name,
+                report,
+            );
         }
         TypeDefinition::Alias { ty, .. } => check_type(globals, &data_type.name, ty, report),
     }

@@ -1,21 +1,46 @@
-//! What a name can refer to: the project's globals and a body's locals.
+//! What a name can refer to: the project's globals and a body's locals, as symbols that know
+//! their declarations.
 
+use std::cell::RefCell;
 use std::collections::HashMap;
 
-use project_model::{Object, Pou, PouKind, Project, TextTarget, TypeDefinition};
+use project_model::{
+    DataType, GlobalVarList, Method, Object, Pou, PouKind, Project, Property, TextTarget,
+    TypeDefinition, VarSection, Variable,
+};
 
-use super::{closest, stdlib};
+use super::ty::Type;
+use super::{closest, stdlib, types};
 use crate::syntax::{SyntaxKind, SyntaxNode};
 
+/// What a global name stands for.
+#[derive(Clone, Copy, Debug)]
+pub(crate) enum GlobalSymbol<'p> {
+    /// A variable of a global variable list.
+    Var(&'p Variable),
+    /// A program, function block, function or interface.
+    Pou(&'p Pou),
+    /// A global variable list, as the container of `GVL.x`.
+    Gvl(&'p GlobalVarList),
+    /// A data type.
+    DataType(&'p DataType),
+    /// A value of the enumeration.
+    EnumValue(&'p DataType),
+    /// A motion axis of the device tree.
+    Axis,
+}
+
 /// Names visible everywhere in a project: POUs, global variable lists and their variables,
-/// data types and enumeration values, cam tables and axes. Keys are lower case, as IEC names
-/// compare without case; values keep the spelling of the declaration for messages.
+/// data types and enumeration values, and axes. Keys are lower case, as IEC names compare
+/// without case.
 pub(crate) struct Globals<'p> {
-    names: HashMap<String, &'p str>,
+    names: HashMap<String, GlobalSymbol<'p>>,
     pous: HashMap<String, &'p Pou>,
-    types: HashMap<String, &'p str>,
-    /// The members reachable as `Container.member`: variables of a GVL, values of an enum.
-    members: HashMap<String, Vec<&'p str>>,
+    data_types: HashMap<String, &'p DataType>,
+    /// Resolved type texts, as the same few type texts are declared many times.
+    type_cache: RefCell<HashMap<String, Type>>,
+    /// Spellings of every global name, for suggestions.
+    spellings: Vec<&'p str>,
 }
 
 impl<'p> Globals<'p> {
@@ -23,62 +48,59 @@ impl<'p> Globals<'p> {
         let mut globals = Self {
             names: HashMap::new(),
             pous: HashMap::new(),
-            types: HashMap::new(),
-            members: HashMap::new(),
+            data_types: HashMap::new(),
+            type_cache: RefCell::new(HashMap::new()),
+            spellings: Vec::new(),
         };
-        for object in project.application.objects() {
-            globals.add_name(object.name());
+        let objects = project.application.objects();
+        // Variables first: a variable wins over an enumeration value of the same name, as an
+        // unqualified value is the last resort in CODESYS too.
+        for object in &objects {
+            if let Object::Gvl(gvl) = object {
+                for variable in &gvl.variables {
+                    globals.add(&variable.name, GlobalSymbol::Var(variable));
+                }
+            }
+        }
+        for object in &objects {
             match object {
                 Object::Pou(pou) => {
                     globals.pous.insert(pou.name.to_lowercase(), pou);
-                    if matches!(pou.kind, PouKind::FunctionBlock | PouKind::Interface) {
-                        globals.types.insert(pou.name.to_lowercase(), &pou.name);
-                    }
+                    globals.add(&pou.name, GlobalSymbol::Pou(pou));
                 }
-                Object::Gvl(gvl) => {
-                    for variable in &gvl.variables {
-                        globals.add_name(&variable.name);
-                    }
-                    let names = gvl.variables.iter().map(|v| v.name.as_str()).collect();
-                    globals.members.insert(gvl.name.to_lowercase(), names);
-                }
+                Object::Gvl(gvl) => globals.add(&gvl.name, GlobalSymbol::Gvl(gvl)),
                 Object::DataType(data_type) => {
                     globals
-                        .types
-                        .insert(data_type.name.to_lowercase(), &data_type.name);
-                    if let TypeDefinition::Enum { values, .. } = &data_type.definition {
-                        for value in values {
-                            globals.add_name(&value.name);
-                        }
-                        let names = values.iter().map(|v| v.name.as_str()).collect();
-                        globals.members.insert(data_type.name.to_lowercase(), names);
-                    }
+                        .data_types
+                        .insert(data_type.name.to_lowercase(), data_type);
+                    globals.add(&data_type.name, GlobalSymbol::DataType(data_type));
                 }
                 Object::CamTable(_) | Object::Trace(_) | Object::WatchList(_) => {}
             }
         }
+        for object in &objects {
+            if let Object::DataType(data_type) = object
+                && let TypeDefinition::Enum { values, .. } = &data_type.definition
+            {
+                for value in values {
+                    globals.add(&value.name, GlobalSymbol::EnumValue(data_type));
+                }
+            }
+        }
         for axis in &project.axes {
-            globals.add_name(&axis.name);
+            globals.add(&axis.name, GlobalSymbol::Axis);
         }
         globals
     }
 
-    fn add_name(&mut self, name: &'p str) {
-        self.names.entry(name.to_lowercase()).or_insert(name);
+    fn add(&mut self, name: &'p str, symbol: GlobalSymbol<'p>) {
+        self.spellings.push(name);
+        self.names.entry(name.to_lowercase()).or_insert(symbol);
     }
 
-    /// Whether `name` is a global or a standard library function or function block.
-    pub(crate) fn knows(&self, name: &str) -> bool {
-        self.names.contains_key(&name.to_lowercase())
-            || stdlib::is_function(name)
-            || stdlib::is_function_block(name)
-    }
-
-    /// The members of a global variable list or enumeration called `container`, if it is one.
-    pub(crate) fn members(&self, container: &str) -> Option<&[&'p str]> {
-        self.members
-            .get(&container.to_lowercase())
-            .map(Vec::as_slice)
+    /// The global called `name`.
+    pub(crate) fn lookup(&self, name: &str) -> Option<GlobalSymbol<'p>> {
+        self.names.get(&name.to_lowercase()).copied()
     }
 
     /// Whether `name` is a POU of the project.
@@ -91,124 +113,231 @@ impl<'p> Globals<'p> {
         self.pous.get(&name.to_lowercase()).copied()
     }
 
+    /// The data type called `name`.
+    pub(crate) fn data_type(&self, name: &str) -> Option<&'p DataType> {
+        self.data_types.get(&name.to_lowercase()).copied()
+    }
+
     /// Whether `name` names a type: built in, a data type, a function block or an interface.
     pub(crate) fn is_type(&self, name: &str) -> bool {
-        stdlib::is_built_in_type(name) || self.types.contains_key(&name.to_lowercase())
+        stdlib::is_built_in_type(name)
+            || self.data_types.contains_key(&name.to_lowercase())
+            || self
+                .pou(name)
+                .is_some_and(|pou| matches!(pou.kind, PouKind::FunctionBlock | PouKind::Interface))
+    }
+
+    /// The type written as `text`, resolved once per distinct text.
+    pub(crate) fn resolve_type(&self, text: &str) -> Type {
+        if let Some(ty) = self.type_cache.borrow().get(text) {
+            return ty.clone();
+        }
+        let ty = types::resolve_type_text(self, text);
+        self.type_cache
+            .borrow_mut()
+            .insert(text.to_owned(), ty.clone());
+        ty
+    }
+
+    /// The members of a global variable list or enumeration called `container`, for messages.
+    pub(crate) fn member_names(&self, container: &str) -> Vec<&'p str> {
+        match self.lookup(container) {
+            Some(GlobalSymbol::Gvl(gvl)) => gvl.variables.iter().map(|v| v.name.as_str()).collect(),
+            Some(GlobalSymbol::DataType(data_type)) => match &data_type.definition {
+                TypeDefinition::Enum { values, .. } => {
+                    values.iter().map(|v| v.name.as_str()).collect()
+                }
+                TypeDefinition::Struct { members, .. } | TypeDefinition::Union { members } => {
+                    members.iter().map(|m| m.name.as_str()).collect()
+                }
+                TypeDefinition::Alias { .. } => Vec::new(),
+            },
+            _ => Vec::new(),
+        }
     }
 
     /// A declared global or type close to `name`, for "did you mean".
     pub(crate) fn suggest(&self, name: &str) -> Option<String> {
-        let mut candidates: Vec<&str> = self
-            .names
-            .values()
-            .chain(self.types.values())
+        let candidates = self
+            .spellings
+            .iter()
             .copied()
-            .collect();
-        for standard in stdlib::all_names() {
-            candidates.push(standard);
-        }
-        closest(name, candidates.into_iter()).map(str::to_owned)
+            .chain(stdlib::all_names().map(|name| -> &'p str { name }));
+        closest(name, candidates).map(str::to_owned)
     }
+}
+
+/// What a name declared in or for one body stands for.
+#[derive(Clone, Copy, Debug)]
+pub(crate) enum LocalSymbol<'p> {
+    /// A variable of the POU, of a base function block, or of the method or accessor.
+    Var(&'p Variable),
+    /// The function's, method's or property's own name inside its body: its result.
+    Result(&'p str),
+    /// A method of the POU or a base.
+    Method(&'p Method),
+    /// A property of the POU or a base.
+    Property(&'p Property),
+    /// An action of the POU.
+    Action,
+    /// A step of a textual SFC.
+    Step,
 }
 
 /// The names visible in one body: the POU's declarations and members, inherited ones, those of
 /// the method or accessor the body belongs to, and SFC steps and actions declared in the text.
-pub(crate) struct Scope<'a> {
-    pub(crate) globals: &'a Globals<'a>,
-    locals: HashMap<String, String>,
+pub(crate) struct Scope<'a, 'p> {
+    pub(crate) globals: &'a Globals<'p>,
+    /// The POU the body belongs to; `None` for global declarations.
+    pub(crate) pou: Option<&'p Pou>,
+    locals: HashMap<String, LocalSymbol<'p>>,
+    /// The type of the body's result variable (a function's, method's or property's name).
+    pub(crate) result_type: Option<&'p str>,
+    spellings: Vec<String>,
 }
 
 /// How many `EXTENDS` levels are followed; deeper chains (or cycles) stop there.
-const MAX_INHERITANCE: usize = 32;
+pub(crate) const MAX_INHERITANCE: usize = 32;
 
-impl<'a> Scope<'a> {
+impl<'a, 'p> Scope<'a, 'p> {
     pub(crate) fn for_body(
-        globals: &'a Globals<'a>,
-        pou: &Pou,
+        globals: &'a Globals<'p>,
+        pou: &'p Pou,
         target: &TextTarget,
         root: &SyntaxNode,
     ) -> Self {
         let mut scope = Self {
             globals,
+            pou: Some(pou),
             locals: HashMap::new(),
+            result_type: None,
+            spellings: Vec::new(),
         };
-        scope.add_pou(pou);
-        let mut base = pou.extends.clone();
-        for _ in 0..MAX_INHERITANCE {
-            let Some(parent) = base.as_deref().and_then(|name| globals.pou(name)) else {
-                break;
-            };
-            scope.add_pou(parent);
-            base = parent.extends.clone();
-        }
+        // The innermost declarations first: a method's locals hide the POU's variables.
         match target {
             TextTarget::Method { method, .. } => {
                 if let Some(method) = pou.methods.iter().find(|m| m.name == *method) {
-                    scope.add(&method.name);
+                    if let Some(ty) = &method.return_type {
+                        scope.add(&method.name, LocalSymbol::Result(ty));
+                        scope.result_type = Some(ty);
+                    }
                     for variable in &method.variables {
-                        scope.add(&variable.name);
+                        scope.add(&variable.name, LocalSymbol::Var(variable));
                     }
                 }
             }
             TextTarget::Property { property, get, .. } => {
                 if let Some(property) = pou.properties.iter().find(|p| p.name == *property) {
-                    scope.add(&property.name);
+                    scope.add(&property.name, LocalSymbol::Result(&property.ty));
+                    scope.result_type = Some(&property.ty);
                     let accessor = if *get { &property.get } else { &property.set };
                     for variable in accessor.iter().flat_map(|a| &a.variables) {
-                        scope.add(&variable.name);
+                        scope.add(&variable.name, LocalSymbol::Var(variable));
                     }
                 }
             }
             TextTarget::Pou(_) | TextTarget::Action { .. } => {}
         }
+        if let Some(ty) = &pou.return_type
+            && pou.kind == PouKind::Function
+        {
+            scope.add(&pou.name, LocalSymbol::Result(ty));
+            scope.result_type = scope.result_type.or(Some(ty));
+        }
+        for current in inheritance_chain(globals, pou) {
+            scope.add_pou(current);
+        }
         // Textual SFC: steps (for `Step.X`, `Step.T`) and actions declared in the body.
         for node in root.descendants() {
-            if matches!(node.kind(), SyntaxKind::STEP_DECL | SyntaxKind::ACTION_DECL)
-                && let Some(name) = node
-                    .children()
-                    .find(|child| child.kind() == SyntaxKind::NAME)
+            let symbol = match node.kind() {
+                SyntaxKind::STEP_DECL => LocalSymbol::Step,
+                SyntaxKind::ACTION_DECL => LocalSymbol::Action,
+                _ => continue,
+            };
+            if let Some(name) = node
+                .children()
+                .find(|child| child.kind() == SyntaxKind::NAME)
             {
-                scope.add(name.text().to_string().trim());
+                scope.add(name.text().to_string().trim(), symbol);
             }
         }
         scope
     }
 
-    fn add_pou(&mut self, pou: &Pou) {
-        self.add(&pou.name);
+    /// The scope of a POU's declarations (initial values may use its constants).
+    pub(crate) fn for_declarations(globals: &'a Globals<'p>, pou: &'p Pou) -> Self {
+        let mut scope = Self::globals_only(globals);
+        scope.pou = Some(pou);
+        for current in inheritance_chain(globals, pou) {
+            scope.add_pou(current);
+        }
+        scope
+    }
+
+    /// A scope with only the globals, for declarations outside any POU.
+    pub(crate) fn globals_only(globals: &'a Globals<'p>) -> Self {
+        Self {
+            globals,
+            pou: None,
+            locals: HashMap::new(),
+            result_type: None,
+            spellings: Vec::new(),
+        }
+    }
+
+    fn add_pou(&mut self, pou: &'p Pou) {
         for variable in &pou.variables {
-            self.add(&variable.name);
+            self.add(&variable.name, LocalSymbol::Var(variable));
         }
         for method in &pou.methods {
-            self.add(&method.name);
+            self.add(&method.name, LocalSymbol::Method(method));
         }
         for property in &pou.properties {
-            self.add(&property.name);
+            self.add(&property.name, LocalSymbol::Property(property));
         }
         for action in &pou.actions {
-            self.add(&action.name);
+            self.add(&action.name, LocalSymbol::Action);
         }
     }
 
-    fn add(&mut self, name: &str) {
-        self.locals
-            .entry(name.to_lowercase())
-            .or_insert_with(|| name.to_owned());
+    fn add(&mut self, name: &str, symbol: LocalSymbol<'p>) {
+        let key = name.to_lowercase();
+        if !self.locals.contains_key(&key) {
+            self.spellings.push(name.to_owned());
+            self.locals.insert(key, symbol);
+        }
     }
 
-    /// Whether `name` is declared in this body's POU (which hides globals of the same name).
-    pub(crate) fn is_local(&self, name: &str) -> bool {
-        self.locals.contains_key(&name.to_lowercase())
-    }
-
-    /// Whether `name` is declared here or globally.
-    pub(crate) fn knows(&self, name: &str) -> bool {
-        self.locals.contains_key(&name.to_lowercase()) || self.globals.knows(name)
+    /// The local called `name`.
+    pub(crate) fn local(&self, name: &str) -> Option<LocalSymbol<'p>> {
+        self.locals.get(&name.to_lowercase()).copied()
     }
 
     /// A local or global name close to `name`.
     pub(crate) fn suggest(&self, name: &str) -> Option<String> {
-        let local = closest(name, self.locals.values().map(String::as_str)).map(str::to_owned);
+        let local = closest(name, self.spellings.iter().map(String::as_str)).map(str::to_owned);
         local.or_else(|| self.globals.suggest(name))
     }
+}
+
+/// `pou` and the function blocks it extends, nearest first, stopping at cycles.
+pub(crate) fn inheritance_chain<'p>(globals: &Globals<'p>, pou: &'p Pou) -> Vec<&'p Pou> {
+    let mut chain = vec![pou];
+    let mut base = pou.extends.as_deref();
+    while let Some(parent) = base.and_then(|name| globals.pou(name)) {
+        if chain.len() >= MAX_INHERITANCE || chain.iter().any(|seen| std::ptr::eq(*seen, parent)) {
+            break;
+        }
+        chain.push(parent);
+        base = parent.extends.as_deref();
+    }
+    chain
+}
+
+/// Whether a variable of this section can be read from outside its POU (`fb.Q`, `fb.IN`).
+pub(crate) fn is_visible_outside(section: VarSection) -> bool {
+    matches!(
+        section,
+        VarSection::VarInput | VarSection::VarOutput | VarSection::VarInOut
+    )
 }

@@ -31,6 +31,7 @@ fn project(nodes: Vec<Node>) -> Project {
 fn messages(project: &Project) -> Vec<String> {
     check_project(project)
         .into_iter()
+        .filter(|found| found.diagnostic.severity == crate::Severity::Error)
         .map(|found| {
             format!(
                 "{} {}: {}",

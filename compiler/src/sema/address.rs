@@ -1,0 +1,131 @@
+//! Direct addresses (`%IX0.3`, `%QW4`, `%MD10`, `%I*`): their syntax, size and place in the
+//! memory areas, with CODESYS's layout where `%MWn` covers bytes `2n` and `2n+1`.
+
+/// A memory area.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Area {
+    /// `%I`, inputs.
+    Input,
+    /// `%Q`, outputs.
+    Output,
+    /// `%M`, markers.
+    Memory,
+}
+
+/// A parsed direct address.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct Address {
+    /// The area.
+    pub(crate) area: Area,
+    /// The size in bits: 1 for `X`, 8, 16, 32 or 64.
+    pub(crate) size_bits: u32,
+    /// The first bit covered, counted from the start of the area.
+    pub(crate) first_bit: u64,
+}
+
+impl Address {
+    /// The bits covered, end exclusive.
+    pub(crate) fn bits(&self) -> std::ops::Range<u64> {
+        self.first_bit..self.first_bit + u64::from(self.size_bits)
+    }
+}
+
+/// Parses `text`; `Ok(None)` for an address left to the I/O mapping (`%I*`), `Err` with what is
+/// wrong otherwise.
+pub(crate) fn parse_address(text: &str) -> Result<Option<Address>, String> {
+    let upper = text.to_ascii_uppercase();
+    let Some(rest) = upper.strip_prefix('%') else {
+        return Err(format!(
+            "'{text}' is not a direct address: it must start with '%'"
+        ));
+    };
+    let mut chars = rest.chars();
+    let area = match chars.next() {
+        Some('I') => Area::Input,
+        Some('Q') => Area::Output,
+        Some('M') => Area::Memory,
+        _ => {
+            return Err(format!(
+                "'{text}' names no memory area: write %I (inputs), %Q (outputs) or %M (markers)"
+            ));
+        }
+    };
+    let rest = chars.as_str();
+    if rest == "*" {
+        return Ok(None);
+    }
+    let (size_bits, numbers) = match rest.chars().next() {
+        Some('X') => (1, &rest[1..]),
+        Some('B') => (8, &rest[1..]),
+        Some('W') => (16, &rest[1..]),
+        Some('D') => (32, &rest[1..]),
+        Some('L') => (64, &rest[1..]),
+        Some(c) if c.is_ascii_digit() => (1, rest),
+        _ => {
+            return Err(format!(
+                "'{text}' has no valid size: write X (bit), B (byte), W (word), D (double word) or L (long word)"
+            ));
+        }
+    };
+    let parts: Vec<&str> = numbers.split('.').collect();
+    let mut values = Vec::new();
+    for part in &parts {
+        match part.parse::<u64>() {
+            Ok(value) => values.push(value),
+            Err(_) => {
+                return Err(format!(
+                    "'{text}' is not a valid address: '{part}' is not a number"
+                ));
+            }
+        }
+    }
+    let first_bit = match (size_bits, values.as_slice()) {
+        (1, [byte, bit]) => {
+            if *bit > 7 {
+                return Err(format!(
+                    "'{text}' names bit {bit}, but a byte has bits 0 to 7"
+                ));
+            }
+            byte * 8 + bit
+        }
+        (1, [_]) => {
+            return Err(format!(
+                "'{text}' needs a bit number: write it as byte.bit, such as %IX0.3"
+            ));
+        }
+        (_, [index]) => index * u64::from(size_bits),
+        _ => {
+            return Err(format!(
+                "'{text}' has too many parts: a bit address is byte.bit, others a single number"
+            ));
+        }
+    };
+    Ok(Some(Address {
+        area,
+        size_bits,
+        first_bit,
+    }))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn addresses_follow_the_codesys_layout() {
+        let word = parse_address("%MW1").unwrap().unwrap();
+        assert_eq!(word.bits(), 16..32);
+        let bit = parse_address("%IX2.3").unwrap().unwrap();
+        assert_eq!(
+            (bit.area, bit.first_bit, bit.size_bits),
+            (Area::Input, 19, 1)
+        );
+        assert_eq!(parse_address("%QD2").unwrap().unwrap().bits(), 64..96);
+        assert_eq!(parse_address("%I*"), Ok(None));
+        assert_eq!(parse_address("%Q*"), Ok(None));
+        assert!(parse_address("%IX0.8").unwrap_err().contains("bits 0 to 7"));
+        assert!(parse_address("%IX3").is_err());
+        assert!(parse_address("%ZW1").is_err());
+        assert!(parse_address("%IW1.2").is_err());
+    }
+}

@@ -1,0 +1,355 @@
+//! The signatures of the standard functions and function blocks: what the checker knows of a
+//! call to `LIMIT`, `CONCAT` or `TON` without any source for them.
+
+use crate::elementary::Elementary::{self, *};
+
+use super::ty::{Generic, Type};
+
+/// The type of one parameter or result of a standard function.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum Sig {
+    /// A fixed elementary type.
+    E(Elementary),
+    /// `STRING` or `WSTRING`, the same for every `Str` parameter and the result of one call.
+    Str,
+    /// Any type of the class; each such parameter is independent.
+    Class(Generic),
+    /// The call's type variable: every `T` argument converges to one type of the class, and a
+    /// `T` result is that type.
+    T(Generic),
+    /// A real result: the `T` type when it is real, `LREAL` otherwise.
+    RealOfT,
+    /// An integer literal result that fits any integer place (`SIZEOF`).
+    AnyInt,
+    /// A pointer to anything (`ADR`).
+    Pointer,
+    /// No result.
+    Void,
+}
+
+/// A standard function.
+#[derive(Clone, Debug)]
+pub(crate) struct FunctionSig {
+    /// The inputs in order, with their formal names.
+    pub(crate) inputs: Vec<(std::string::String, Sig)>,
+    /// The last input may repeat, numbered on from its name (`IN1`, `IN2`, `IN3`…).
+    pub(crate) extensible: bool,
+    /// The result.
+    pub(crate) result: Sig,
+}
+
+fn sig(inputs: &[(&str, Sig)], result: Sig) -> FunctionSig {
+    FunctionSig {
+        inputs: inputs
+            .iter()
+            .map(|(name, sig)| ((*name).to_owned(), *sig))
+            .collect(),
+        extensible: false,
+        result,
+    }
+}
+
+fn extensible(inputs: &[(&str, Sig)], result: Sig) -> FunctionSig {
+    FunctionSig {
+        extensible: true,
+        ..sig(inputs, result)
+    }
+}
+
+/// The signature of the standard function `name` (any case), conversions included.
+pub(crate) fn function(name: &str) -> Option<FunctionSig> {
+    use Generic as G;
+    use Sig::*;
+    let upper = name.to_ascii_uppercase();
+    let one = |class: Generic, result: Sig| sig(&[("IN", T(class))], result);
+    Some(match upper.as_str() {
+        "ABS" => one(G::Num, T(G::Num)),
+        "SQRT" | "LN" | "LOG" | "EXP" | "SIN" | "COS" | "TAN" | "ASIN" | "ACOS" | "ATAN" => {
+            one(G::Num, RealOfT)
+        }
+        "EXPT" => sig(&[("IN1", T(G::Num)), ("IN2", Class(G::Num))], RealOfT),
+        "ATAN2" => sig(&[("Y", T(G::Num)), ("X", T(G::Num))], RealOfT),
+        "ADD" | "MUL" => extensible(
+            &[("IN1", T(G::Magnitude)), ("IN2", T(G::Magnitude))],
+            T(G::Magnitude),
+        ),
+        "SUB" | "DIV" => sig(
+            &[("IN1", T(G::Magnitude)), ("IN2", T(G::Magnitude))],
+            T(G::Magnitude),
+        ),
+        "MOD" => sig(&[("IN1", T(G::Int)), ("IN2", T(G::Int))], T(G::Int)),
+        "MOVE" => one(G::Any, T(G::Any)),
+        "SHL" | "SHR" | "ROL" | "ROR" => sig(&[("IN", T(G::Bit)), ("N", Class(G::Int))], T(G::Bit)),
+        "AND" | "OR" | "XOR" => extensible(&[("IN1", T(G::Bit)), ("IN2", T(G::Bit))], T(G::Bit)),
+        "NOT" => one(G::Bit, T(G::Bit)),
+        "SEL" => sig(
+            &[("G", E(Bool)), ("IN0", T(G::Any)), ("IN1", T(G::Any))],
+            T(G::Any),
+        ),
+        "MAX" | "MIN" => extensible(
+            &[("IN1", T(G::Elementary)), ("IN2", T(G::Elementary))],
+            T(G::Elementary),
+        ),
+        "LIMIT" => sig(
+            &[
+                ("MN", T(G::Elementary)),
+                ("IN", T(G::Elementary)),
+                ("MX", T(G::Elementary)),
+            ],
+            T(G::Elementary),
+        ),
+        "MUX" => extensible(
+            &[("K", Class(G::Int)), ("IN0", T(G::Any)), ("IN1", T(G::Any))],
+            T(G::Any),
+        ),
+        "GT" | "GE" | "EQ" | "LE" | "LT" => extensible(
+            &[("IN1", T(G::Elementary)), ("IN2", T(G::Elementary))],
+            E(Bool),
+        ),
+        "NE" => sig(
+            &[("IN1", T(G::Elementary)), ("IN2", T(G::Elementary))],
+            E(Bool),
+        ),
+        "LEN" => sig(&[("STR", Str)], E(Int)),
+        "LEFT" | "RIGHT" => sig(&[("STR", Str), ("SIZE", Class(G::Int))], Str),
+        "MID" => sig(
+            &[("STR", Str), ("LEN", Class(G::Int)), ("POS", Class(G::Int))],
+            Str,
+        ),
+        "CONCAT" => extensible(&[("STR1", Str), ("STR2", Str)], Str),
+        "INSERT" => sig(&[("STR1", Str), ("STR2", Str), ("POS", Class(G::Int))], Str),
+        "DELETE" => sig(
+            &[("STR", Str), ("LEN", Class(G::Int)), ("POS", Class(G::Int))],
+            Str,
+        ),
+        "REPLACE" => sig(
+            &[
+                ("STR1", Str),
+                ("STR2", Str),
+                ("L", Class(G::Int)),
+                ("P", Class(G::Int)),
+            ],
+            Str,
+        ),
+        "FIND" => sig(&[("STR1", Str), ("STR2", Str)], E(Int)),
+        "ADD_TIME" | "SUB_TIME" => sig(&[("IN1", E(Time)), ("IN2", E(Time))], E(Time)),
+        "MUL_TIME" | "DIV_TIME" => sig(&[("IN1", E(Time)), ("IN2", Class(G::Num))], E(Time)),
+        "ADD_TOD_TIME" | "SUB_TOD_TIME" => {
+            sig(&[("IN1", E(TimeOfDay)), ("IN2", E(Time))], E(TimeOfDay))
+        }
+        "ADD_DT_TIME" | "SUB_DT_TIME" => {
+            sig(&[("IN1", E(DateAndTime)), ("IN2", E(Time))], E(DateAndTime))
+        }
+        "SUB_DATE_DATE" => sig(&[("IN1", E(Date)), ("IN2", E(Date))], E(Time)),
+        "SUB_TOD_TOD" => sig(&[("IN1", E(TimeOfDay)), ("IN2", E(TimeOfDay))], E(Time)),
+        "SUB_DT_DT" => sig(&[("IN1", E(DateAndTime)), ("IN2", E(DateAndTime))], E(Time)),
+        "CONCAT_DATE_TOD" => sig(&[("IN1", E(Date)), ("IN2", E(TimeOfDay))], E(DateAndTime)),
+        "TRUNC" => sig(&[("IN", Class(G::Real))], E(Dint)),
+        "TRUNC_INT" => sig(&[("IN", Class(G::Real))], E(Int)),
+        "ROUND" => one(G::Real, T(G::Real)),
+        "BCD_TO_INT" => sig(&[("IN", Class(G::Bit))], E(Int)),
+        "INT_TO_BCD" => sig(&[("IN", Class(G::Int))], E(Word)),
+        "ADR" | "ADRINST" | "__NEW" => sig(&[("IN", Class(G::Any))], Pointer),
+        "BITADR" => sig(&[("IN", Class(G::Any))], E(Dword)),
+        "SIZEOF" | "XSIZEOF" => sig(&[("IN", Class(G::Any))], AnyInt),
+        "INDEXOF" => sig(&[("IN", Class(G::Any))], AnyInt),
+        "LOWER_BOUND" | "UPPER_BOUND" => {
+            sig(&[("ARR", Class(G::Any)), ("DIM", Class(G::Int))], E(Dint))
+        }
+        "ISVALIDREF" | "__ISVALIDREF" => sig(&[("IN", Class(G::Any))], E(Bool)),
+        "__DELETE" => sig(&[("IN", Class(G::Any))], Void),
+        "__QUERYINTERFACE" | "__QUERYPOINTER" => {
+            sig(&[("ITF", Class(G::Any)), ("OUT", Class(G::Any))], E(Bool))
+        }
+        _ => return conversion(&upper),
+    })
+}
+
+/// `A_TO_B`, `TO_B` and the BCD conversions.
+fn conversion(upper: &str) -> Option<FunctionSig> {
+    use Sig::*;
+    let target = |name: &str| -> Option<Sig> {
+        match Elementary::from_name(name)? {
+            String | Wstring => Some(Str),
+            other => Some(E(other)),
+        }
+    };
+    if let Some(to) = upper.strip_prefix("TO_") {
+        return Some(sig(&[("IN", Class(Generic::Elementary))], target(to)?));
+    }
+    for (at, _) in upper.match_indices("_TO_") {
+        let (from, to) = (&upper[..at], &upper[at + 4..]);
+        let from_sig = match from {
+            "BCD" => Some(Class(Generic::Bit)),
+            _ => Elementary::from_name(from).map(|e| match e {
+                String | Wstring => Class(Generic::String),
+                other => E(other),
+            }),
+        };
+        let to_sig = match to {
+            "BCD" => Some(Class(Generic::Bit)),
+            _ => target(to),
+        };
+        if let (Some(from), Some(to)) = (from_sig, to_sig) {
+            // The result of a conversion to BCD is a bit string of the input's size.
+            let to = if to == Class(Generic::Bit) {
+                E(Dword)
+            } else {
+                to
+            };
+            return Some(sig(&[("IN", from)], to));
+        }
+    }
+    None
+}
+
+/// A standard function block's interface.
+#[derive(Debug)]
+pub(crate) struct FunctionBlockSig {
+    /// Inputs: formal name and type.
+    pub(crate) inputs: &'static [(&'static str, Elementary)],
+    /// Outputs.
+    pub(crate) outputs: &'static [(&'static str, Elementary)],
+    /// Other names an input may be given, as (alias, input): CODESYS names the counters'
+    /// reset `RESET` where IEC writes `R`.
+    pub(crate) aliases: &'static [(&'static str, &'static str)],
+}
+
+const TIMER: FunctionBlockSig = FunctionBlockSig {
+    inputs: &[("IN", Bool), ("PT", Time)],
+    outputs: &[("Q", Bool), ("ET", Time)],
+    aliases: &[],
+};
+
+const LONG_TIMER: FunctionBlockSig = FunctionBlockSig {
+    inputs: &[("IN", Bool), ("PT", Ltime)],
+    outputs: &[("Q", Bool), ("ET", Ltime)],
+    aliases: &[],
+};
+
+const CTU: FunctionBlockSig = FunctionBlockSig {
+    inputs: &[("CU", Bool), ("R", Bool), ("PV", Int)],
+    outputs: &[("Q", Bool), ("CV", Int)],
+    aliases: &[("RESET", "R")],
+};
+
+const CTD: FunctionBlockSig = FunctionBlockSig {
+    inputs: &[("CD", Bool), ("LD", Bool), ("PV", Int)],
+    outputs: &[("Q", Bool), ("CV", Int)],
+    aliases: &[("LOAD", "LD")],
+};
+
+const CTUD: FunctionBlockSig = FunctionBlockSig {
+    inputs: &[
+        ("CU", Bool),
+        ("CD", Bool),
+        ("R", Bool),
+        ("LD", Bool),
+        ("PV", Int),
+    ],
+    outputs: &[("QU", Bool), ("QD", Bool), ("CV", Int)],
+    aliases: &[("RESET", "R"), ("LOAD", "LD")],
+};
+
+const TRIG: FunctionBlockSig = FunctionBlockSig {
+    inputs: &[("CLK", Bool)],
+    outputs: &[("Q", Bool)],
+    aliases: &[],
+};
+
+const SR: FunctionBlockSig = FunctionBlockSig {
+    inputs: &[("SET1", Bool), ("RESET", Bool)],
+    outputs: &[("Q1", Bool)],
+    aliases: &[],
+};
+
+const RS: FunctionBlockSig = FunctionBlockSig {
+    inputs: &[("SET", Bool), ("RESET1", Bool)],
+    outputs: &[("Q1", Bool)],
+    aliases: &[],
+};
+
+const RTC: FunctionBlockSig = FunctionBlockSig {
+    inputs: &[("EN", Bool), ("PDT", DateAndTime)],
+    outputs: &[("Q", Bool), ("CDT", DateAndTime)],
+    aliases: &[],
+};
+
+/// The interface of the standard function block `name` (any case).
+pub(crate) fn function_block(name: &str) -> Option<&'static FunctionBlockSig> {
+    Some(match name.to_ascii_uppercase().as_str() {
+        "TON" | "TOF" | "TP" => &TIMER,
+        "LTON" | "LTOF" | "LTP" => &LONG_TIMER,
+        "CTU" => &CTU,
+        "CTD" => &CTD,
+        "CTUD" => &CTUD,
+        "R_TRIG" | "F_TRIG" => &TRIG,
+        "SR" => &SR,
+        "RS" => &RS,
+        "RTC" => &RTC,
+        _ => return None,
+    })
+}
+
+impl FunctionBlockSig {
+    /// The type of the input or output called `name`, and whether it is an output.
+    pub(crate) fn member(&self, name: &str) -> Option<(Type, bool)> {
+        let name = self
+            .aliases
+            .iter()
+            .find(|(alias, _)| alias.eq_ignore_ascii_case(name))
+            .map_or(name, |(_, input)| input);
+        let find = |list: &[(&str, Elementary)]| {
+            list.iter()
+                .find(|(formal, _)| formal.eq_ignore_ascii_case(name))
+                .map(|(_, ty)| Type::elementary(*ty))
+        };
+        find(self.inputs)
+            .map(|ty| (ty, false))
+            .or_else(|| find(self.outputs).map(|ty| (ty, true)))
+    }
+
+    /// Every input and output name, for suggestions.
+    pub(crate) fn names(&self) -> impl Iterator<Item = &'static str> {
+        self.inputs
+            .iter()
+            .chain(self.outputs)
+            .map(|(name, _)| *name)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_standard_name_has_a_signature() {
+        for name in super::super::stdlib::all_names() {
+            assert!(
+                function(name).is_some() || function_block(name).is_some(),
+                "{name} has no signature"
+            );
+        }
+    }
+
+    #[test]
+    fn conversions_know_both_ends() {
+        let real_to_int = function("REAL_TO_INT").unwrap();
+        assert_eq!(real_to_int.inputs[0].1, Sig::E(Real));
+        assert_eq!(real_to_int.result, Sig::E(Int));
+        assert_eq!(function("TO_STRING").unwrap().result, Sig::Str);
+        assert_eq!(
+            function("TIME_OF_DAY_TO_DINT").unwrap().inputs[0].1,
+            Sig::E(TimeOfDay)
+        );
+        assert!(function("REAL_TO_FOO").is_none());
+    }
+
+    #[test]
+    fn counters_accept_the_codesys_reset_name() {
+        let ctu = function_block("ctu").unwrap();
+        assert_eq!(ctu.member("RESET"), Some((Type::BOOL, false)));
+        assert_eq!(ctu.member("CV"), Some((Type::Elementary(Int), true)));
+        assert!(ctu.member("ET").is_none());
+    }
+}
