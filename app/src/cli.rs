@@ -28,8 +28,8 @@ pub struct Cli {
 /// Headless subcommands.
 #[derive(Debug, Subcommand)]
 pub enum Command {
-    /// Check a project (or one `.st` file): load it, parse every Structured Text body and
-    /// resolve every name and type;
+    /// Check a project (or one `.st` file): load it, parse and type-check every Structured
+    /// Text body and declaration;
     /// print each problem as `file:line:col: severity[CODE]: message`; exit 1 on any error.
     Check {
         /// The project folder (the folder holding rivet.toml), or a `.st` source file.
@@ -150,20 +150,28 @@ fn check_source_file(path: &Path) -> anyhow::Result<()> {
             path.display()
         )
     })?;
-    let parse = compiler::syntax::parse(&text);
+    // The file becomes a project of its own, so it is type-checked exactly like a folder.
+    let source = compiler::source_project::SourceProject::new(&text);
     let shown = path.display().to_string();
-    for diagnostic in parse.errors() {
+    let mut findings: Vec<compiler::Diagnostic> = source.parse.errors().to_vec();
+    for found in compiler::sema::check_project(&source.project) {
+        let mut diagnostic = found.diagnostic.clone();
+        diagnostic.range = source.locate(&found).unwrap_or(0..0);
+        findings.push(diagnostic);
+    }
+    findings.sort_by_key(|diagnostic| diagnostic.range.start);
+    for diagnostic in &findings {
         eprint!("{}", diagnostic.render(&shown, &text));
     }
-    let errors = parse
-        .errors()
+    let errors = findings
         .iter()
         .filter(|d| d.severity == compiler::Severity::Error)
         .count();
+    let warnings = findings.len() - errors;
     if errors > 0 {
-        anyhow::bail!("{shown}: {errors} error(s)");
+        anyhow::bail!("{shown}: {errors} error(s), {warnings} warning(s)");
     }
-    println!("{shown}: no problems found");
+    println!("{shown}: no errors ({warnings} warning(s))");
     Ok(())
 }
 

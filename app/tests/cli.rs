@@ -198,3 +198,33 @@ fn check_reports_unknown_names_and_types() {
         "{stderr}"
     );
 }
+
+#[test]
+fn check_type_checks_a_single_st_file_and_reports_warnings() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("types.st");
+    fs::write(
+        &file,
+        "PROGRAM P\nVAR\n    iCount : INT;\n    diTotal : DINT := 5;\n    iSpare : INT;\nEND_VAR\niCount := diTotal;\nEND_PROGRAM\n",
+    )
+    .unwrap();
+    let output = rivet(&["check", path_str(&file)]);
+    assert_eq!(output.status.code(), Some(1));
+    let stderr = text_of(&output.stderr);
+    assert!(
+        stderr.contains(&format!(
+            "{}:7:11: error[E0104]: the assignment expects INT, found DINT; IEC converts only to wider types, so write DINT_TO_INT(…)",
+            file.display()
+        )),
+        "{stderr}"
+    );
+    assert!(stderr.contains("7 | iCount := diTotal;\n"), "{stderr}");
+    assert!(
+        stderr.contains(&format!(
+            "{}:5:5: warning[W0001]: 'iSpare' is declared but never used",
+            file.display()
+        )),
+        "{stderr}"
+    );
+    assert!(stderr.contains("1 error(s), 1 warning(s)"), "{stderr}");
+}

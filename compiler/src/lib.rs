@@ -6,9 +6,11 @@
 //! the editors use.
 //! It reads the project model and never changes it.
 //!
-//! Today it holds the lexer and the resilient parser ([`syntax::parse`]), the diagnostic codes
-//! ([`Code`]), the syntax-level IDE facade ([`ide`]), literal values ([`literal`]) and the
-//! elementary types with their implicit conversions ([`elementary`]).
+//! Today it holds the lexer and the resilient parser ([`syntax::parse`]), the project checker
+//! ([`sema::check_project`]: names, types, calls, declarations, warnings), one source file as a
+//! project ([`source_project`]), the diagnostic codes ([`Code`]), the syntax-level IDE facade
+//! ([`ide`]), literal values ([`literal`]) and the elementary types with their implicit
+//! conversions ([`elementary`]).
 
 pub mod diagnostic;
 pub mod elementary;

@@ -88,17 +88,12 @@ pub(crate) fn parse_address(text: &str) -> Result<Option<Address>, String> {
             }
             byte * 8 + bit
         }
-        (1, [_]) => {
-            return Err(format!(
-                "'{text}' needs a bit number: write it as byte.bit, such as %IX0.3"
-            ));
-        }
+        // IEC's single-level bit address, `%QX75`: bit 75 of the area.
+        (1, [bit]) => *bit,
         (_, [index]) => index * u64::from(size_bits),
-        _ => {
-            return Err(format!(
-                "'{text}' has too many parts: a bit address is byte.bit, others a single number"
-            ));
-        }
+        // Hierarchical addresses (`%IW2.5.7`) are valid IEC but their layout belongs to the
+        // I/O configuration, so they take part in no overlap check.
+        _ => return Ok(None),
     };
     Ok(Some(Address {
         area,
@@ -124,8 +119,9 @@ mod tests {
         assert_eq!(parse_address("%I*"), Ok(None));
         assert_eq!(parse_address("%Q*"), Ok(None));
         assert!(parse_address("%IX0.8").unwrap_err().contains("bits 0 to 7"));
-        assert!(parse_address("%IX3").is_err());
+        assert_eq!(parse_address("%QX75").unwrap().unwrap().first_bit, 75);
+        assert_eq!(parse_address("%IW1.2.3"), Ok(None));
         assert!(parse_address("%ZW1").is_err());
-        assert!(parse_address("%IW1.2").is_err());
+        assert!(parse_address("%IWx").is_err());
     }
 }

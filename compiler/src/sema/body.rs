@@ -139,6 +139,17 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                     let target_ty = self.expression(target, Mode::Write);
                     self.assignable_target(target);
                     let value_ty = self.expression(value, Mode::Read);
+                    if target_ty == Type::Void {
+                        self.error(
+                            Code::NotAssignable,
+                            range_of(target),
+                            format!(
+                                "'{}' is not a variable and cannot be assigned",
+                                text(target)
+                            ),
+                        );
+                        return;
+                    }
                     self.expect_type(&value_ty, &target_ty, value, "the assignment");
                 } else if let [only] = children.as_slice() {
                     self.expression(only, Mode::Read);
@@ -494,6 +505,8 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                 match self.expression(&base, Mode::Read) {
                     Type::Pointer(target) | Type::Reference(target) => *target,
                     Type::Error => Type::Error,
+                    // A CODESYS reference is used as its target, but `r^` is accepted too.
+                    other if self.declared_reference(&base) => other,
                     other => {
                         self.error(
                             Code::InvalidOperands,
@@ -511,9 +524,23 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                 .next()
                 .map_or(Type::Error, |token| address_type(token.text())),
             _ => {
-                // Array initialisers and error nodes: check what is inside for names.
+                // Array initialisers and error nodes: check what is inside for names. In an
+                // initialiser `3(0)` repeats a value: only the value is an expression.
                 for child in node.children() {
-                    self.expression(&child, Mode::Read);
+                    let repeated = child.kind() == SyntaxKind::CALL_EXPR
+                        && child
+                            .children()
+                            .next()
+                            .is_some_and(|callee| callee.kind() == SyntaxKind::LITERAL);
+                    if repeated {
+                        for value in child.descendants().filter(|d| d.kind() == SyntaxKind::ARG) {
+                            if let Some(value) = value.children().next() {
+                                self.expression(&value, Mode::Read);
+                            }
+                        }
+                    } else {
+                        self.expression(&child, Mode::Read);
+                    }
                 }
                 Type::Error
             }
@@ -815,27 +842,45 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                 Type::Error
             }
             other => {
-                // `x.3` or `x.%X3`: one bit of an integer or bit string.
+                // `x.3`, `x.%X3`: one bit of an integer or bit string; `x.%B1`, `x.%W0`,
+                // `x.%D0`: one byte, word or double word of it.
                 let bits = other
                     .as_elementary()
                     .filter(|e| e.is_integer() || (e.is_bit_string() && *e != Elementary::Bool))
                     .map(Elementary::size_bits);
-                let index = if member.kind() == SyntaxKind::INT_NUMBER {
-                    literal::parse_integer(name).ok()
+                let (part, index) = if member.kind() == SyntaxKind::INT_NUMBER {
+                    (Elementary::Bool, literal::parse_integer(name).ok())
                 } else {
-                    name.trim_start_matches(['%', 'X', 'x'])
-                        .parse::<u128>()
-                        .ok()
+                    let upper = name.to_ascii_uppercase();
+                    let rest = upper.trim_start_matches('%');
+                    let part = match rest.chars().next() {
+                        Some('B') => Elementary::Byte,
+                        Some('W') => Elementary::Word,
+                        Some('D') => Elementary::Dword,
+                        _ => Elementary::Bool,
+                    };
+                    let digits = rest.trim_start_matches(['X', 'B', 'W', 'D']);
+                    (part, digits.parse::<u128>().ok())
+                };
+                let part_bits = if part == Elementary::Bool {
+                    1
+                } else {
+                    part.size_bits()
                 };
                 match (bits, index) {
-                    (Some(bits), Some(index)) if index < u128::from(bits) => Type::BOOL,
+                    (Some(bits), Some(index))
+                        if (index + 1) * u128::from(part_bits) <= u128::from(bits) =>
+                    {
+                        Type::Elementary(part)
+                    }
                     (Some(bits), Some(_)) => {
+                        let count = bits / part_bits;
+                        let unit = if part_bits == 1 { "bit" } else { part.name() };
                         self.error(
                             Code::IndexOutOfRange,
                             token_range(&member),
                             format!(
-                                "bit {name} does not exist in {other}, which has bits 0..{}",
-                                bits - 1
+                                "{unit} {name} does not exist in {other}, which has {count} of them numbered from 0"
                             ),
                         );
                         Type::Error
@@ -1255,6 +1300,22 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
             })
     }
 
+    /// Whether `node` names a variable declared `REFERENCE TO`.
+    fn declared_reference(&self, node: &SyntaxNode) -> bool {
+        if node.kind() != SyntaxKind::NAME_EXPR {
+            return false;
+        }
+        let name = text(node);
+        let variable = match self.scope.local(&name) {
+            Some(LocalSymbol::Var(variable)) => Some(variable),
+            _ => match self.scope.globals.lookup(&name) {
+                Some(GlobalSymbol::Var(variable)) => Some(variable),
+                _ => None,
+            },
+        };
+        variable.is_some_and(|v| matches!(self.resolve(&v.ty), Type::Reference(_)))
+    }
+
     /// The type of an expression without reporting anything (used to look ahead).
     fn peek_type(&self, node: &SyntaxNode) -> Option<Type> {
         let mut usage = Usage::new();
@@ -1334,7 +1395,7 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
         callee: &str,
         params: &[Param],
         arguments: &[SyntaxNode],
-        positional_allowed: bool,
+        function_like: bool,
     ) {
         let positional_params: Vec<&Param> = params
             .iter()
@@ -1349,6 +1410,28 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                 .iter()
                 .position(|t| matches!(t.kind(), SyntaxKind::ASSIGN | SyntaxKind::OUTPUT_ASSIGN))
                 .and_then(|at| Some((parts.get(at.checked_sub(1)?)?.clone(), parts[at].kind())));
+            // EN and ENO belong to every call in IEC 61131-3.
+            if let Some((name, arrow)) = &formal
+                && (name.text().eq_ignore_ascii_case("EN") && *arrow == SyntaxKind::ASSIGN
+                    || name.text().eq_ignore_ascii_case("ENO")
+                        && *arrow == SyntaxKind::OUTPUT_ASSIGN)
+            {
+                if let Some(value) = &value {
+                    let mode = if *arrow == SyntaxKind::ASSIGN {
+                        Mode::Read
+                    } else {
+                        Mode::Write
+                    };
+                    let ty = self.expression(value, mode);
+                    self.expect_type(
+                        &ty,
+                        &Type::BOOL,
+                        value,
+                        &format!("{} of '{callee}'", name.text()),
+                    );
+                }
+                continue;
+            }
             let (param, output) = match &formal {
                 Some((name, arrow)) => {
                     let output = *arrow == SyntaxKind::OUTPUT_ASSIGN;
@@ -1373,33 +1456,22 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                     }
                 }
                 None => {
-                    if !positional_allowed && !params.is_empty() {
+                    let param = positional_params.get(positional).copied();
+                    positional += 1;
+                    if param.is_none() {
                         self.error(
                             Code::InvalidCall,
                             range_of(argument),
                             format!(
-                                "the call of '{callee}' needs named arguments, such as 'IN := …'"
+                                "'{callee}' takes {} input(s), but more are given",
+                                positional_params.len()
                             ),
                         );
-                        (None, false)
-                    } else {
-                        let param = positional_params.get(positional).copied();
-                        positional += 1;
-                        if param.is_none() {
-                            self.error(
-                                Code::InvalidCall,
-                                range_of(argument),
-                                format!(
-                                    "'{callee}' takes {} input(s), but more are given",
-                                    positional_params.len()
-                                ),
-                            );
-                        }
-                        if let Some(param) = param {
-                            given.push(param.name.to_lowercase());
-                        }
-                        (param, false)
                     }
+                    if let Some(param) = param {
+                        given.push(param.name.to_lowercase());
+                    }
+                    (param, false)
                 }
             };
             let Some(value) = value else { continue };
@@ -1467,7 +1539,7 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
             }
         }
         // VAR_IN_OUT must be connected in every call of a function; an FB keeps its last one.
-        if positional_allowed {
+        if function_like {
             for param in params.iter().filter(|p| p.section == VarSection::VarInOut) {
                 if !given.contains(&param.name.to_lowercase()) {
                     let range = arguments

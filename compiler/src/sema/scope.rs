@@ -247,8 +247,20 @@ impl<'a, 'p> Scope<'a, 'p> {
         for current in inheritance_chain(globals, pou) {
             scope.add_pou(current);
         }
-        // Textual SFC: steps (for `Step.X`, `Step.T`) and actions declared in the body.
-        for node in root.descendants() {
+        // Textual SFC: steps (for `Step.X`, `Step.T`) and actions declared in the body, or
+        // in the POU's body when this is one of its actions.
+        let pou_body = match target {
+            TextTarget::Action { .. } => pou
+                .body
+                .st_text()
+                .filter(|text| text.to_ascii_uppercase().contains("STEP"))
+                .map(|text| crate::syntax::parse_statements(text).syntax()),
+            _ => None,
+        };
+        for node in root
+            .descendants()
+            .chain(pou_body.iter().flat_map(SyntaxNode::descendants))
+        {
             let symbol = match node.kind() {
                 SyntaxKind::STEP_DECL => LocalSymbol::Step,
                 SyntaxKind::ACTION_DECL => LocalSymbol::Action,

@@ -148,7 +148,8 @@ pub(crate) fn function(name: &str) -> Option<FunctionSig> {
         "TRUNC_INT" => sig(&[("IN", Class(G::Real))], E(Int)),
         "ROUND" => one(G::Real, T(G::Real)),
         "BCD_TO_INT" => sig(&[("IN", Class(G::Bit))], E(Int)),
-        "INT_TO_BCD" => sig(&[("IN", Class(G::Int))], E(Word)),
+        // The width of a BCD result depends on where it goes.
+        "INT_TO_BCD" => sig(&[("IN", Class(G::Int))], Class(G::Bit)),
         "ADR" | "ADRINST" | "__NEW" => sig(&[("IN", Class(G::Any))], Pointer),
         "BITADR" => sig(&[("IN", Class(G::Any))], E(Dword)),
         "SIZEOF" | "XSIZEOF" => sig(&[("IN", Class(G::Any))], AnyInt),
@@ -191,12 +192,6 @@ fn conversion(upper: &str) -> Option<FunctionSig> {
             _ => target(to),
         };
         if let (Some(from), Some(to)) = (from_sig, to_sig) {
-            // The result of a conversion to BCD is a bit string of the input's size.
-            let to = if to == Class(Generic::Bit) {
-                E(Dword)
-            } else {
-                to
-            };
             return Some(sig(&[("IN", from)], to));
         }
     }
@@ -257,16 +252,17 @@ const TRIG: FunctionBlockSig = FunctionBlockSig {
     aliases: &[],
 };
 
+// IEC names the bistables' inputs S1/R and S/R1; CODESYS SET1/RESET and SET/RESET1.
 const SR: FunctionBlockSig = FunctionBlockSig {
-    inputs: &[("SET1", Bool), ("RESET", Bool)],
+    inputs: &[("S1", Bool), ("R", Bool)],
     outputs: &[("Q1", Bool)],
-    aliases: &[],
+    aliases: &[("SET1", "S1"), ("RESET", "R")],
 };
 
 const RS: FunctionBlockSig = FunctionBlockSig {
-    inputs: &[("SET", Bool), ("RESET1", Bool)],
+    inputs: &[("S", Bool), ("R1", Bool)],
     outputs: &[("Q1", Bool)],
-    aliases: &[],
+    aliases: &[("SET", "S"), ("RESET1", "R1")],
 };
 
 const RTC: FunctionBlockSig = FunctionBlockSig {

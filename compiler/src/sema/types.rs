@@ -116,7 +116,17 @@ pub(crate) fn resolve_type_node(
         }
         SyntaxKind::POINTER_TYPE => Type::Pointer(Box::new(inner(globals, node, depth, constants))),
         SyntaxKind::REFERENCE_TYPE => {
-            Type::Reference(Box::new(inner(globals, node, depth, constants)))
+            let target = Box::new(inner(globals, node, depth, constants));
+            // IEC's REF_TO is dereferenced with '^' like a pointer; CODESYS's REFERENCE TO is
+            // used as the variable it refers to.
+            let iec_reference = node
+                .first_token()
+                .is_some_and(|token| token.kind() == SyntaxKind::REF_TO);
+            if iec_reference {
+                Type::Pointer(target)
+            } else {
+                Type::Reference(target)
+            }
         }
         SyntaxKind::TYPE_REF => node.children().next().map_or(Type::Error, |child| {
             resolve_type_node(globals, &child, depth + 1, constants)
