@@ -484,18 +484,25 @@ fn unknown(code: Code, what: &str, name: &str, globals: &Globals<'_>) -> Diagnos
     Diagnostic::new(code, 0..0, message)
 }
 
-/// The Levenshtein distance of two names compared without case.
+/// The edit distance of two names compared without case, counting a swap of two neighbouring
+/// letters (`TP` for `PT`) as one edit, as typing mistakes often are.
 fn edit_distance(a: &str, b: &str) -> usize {
     let a: Vec<char> = a.chars().flat_map(char::to_lowercase).collect();
     let b: Vec<char> = b.chars().flat_map(char::to_lowercase).collect();
+    // Rows i-2, i-1 and i of the optimal string alignment table.
+    let mut before: Vec<usize> = Vec::new();
     let mut previous: Vec<usize> = (0..=b.len()).collect();
     for (i, ca) in a.iter().enumerate() {
         let mut current = vec![i + 1];
         for (j, cb) in b.iter().enumerate() {
             let substitution = previous[j] + usize::from(ca != cb);
-            current.push(substitution.min(previous[j + 1] + 1).min(current[j] + 1));
+            let mut best = substitution.min(previous[j + 1] + 1).min(current[j] + 1);
+            if i > 0 && j > 0 && *ca == b[j - 1] && a[i - 1] == *cb {
+                best = best.min(before[j - 1] + 1);
+            }
+            current.push(best);
         }
-        previous = current;
+        before = std::mem::replace(&mut previous, current);
     }
     previous[b.len()]
 }

@@ -164,3 +164,15 @@ fn inherited_members_method_locals_and_sfc_steps_resolve() {
         Vec::<String>::new()
     );
 }
+
+#[test]
+fn swapped_letters_count_as_one_edit() {
+    assert_eq!(edit_distance("TP", "PT"), 1);
+    assert_eq!(edit_distance("xStartButon", "xStartButton"), 1);
+    assert_eq!(edit_distance("abc", "abc"), 0);
+    assert_eq!(edit_distance("", "abc"), 3);
+    assert_eq!(
+        closest("TP", ["IN", "PT", "Q", "ET"].into_iter()),
+        Some("PT")
+    );
+}
