@@ -154,6 +154,7 @@ fn check_source_file(path: &Path) -> anyhow::Result<()> {
     let source = compiler::source_project::SourceProject::new(&text);
     let shown = path.display().to_string();
     let mut findings: Vec<compiler::Diagnostic> = source.parse.errors().to_vec();
+    findings.extend(source.diagnostics.iter().cloned());
     for found in compiler::sema::check_project(&source.project) {
         let mut diagnostic = found.diagnostic.clone();
         diagnostic.range = source.locate(&found).unwrap_or(0..0);

@@ -26,6 +26,9 @@ pub struct SourceProject {
     pub project: Project,
     /// The parse of the whole file, with its syntax errors.
     pub parse: Parse,
+    /// What the file holds that a project cannot: a POU or type declared twice (the second is
+    /// left out of the project).
+    pub diagnostics: Vec<crate::Diagnostic>,
     /// Where each body file's text starts in the source.
     body_offsets: HashMap<PathBuf, usize>,
     /// Where each declared name is in the source: (object name, declared name), lower case.
@@ -67,6 +70,7 @@ impl SourceProject {
         Self {
             project,
             parse,
+            diagnostics: builder.diagnostics,
             body_offsets,
             declarations: builder.declarations,
             file_objects,
@@ -119,9 +123,27 @@ struct Builder {
     body_offsets: HashMap<(String, String), usize>,
     declarations: HashMap<(String, String), Range<usize>>,
     global_lists: usize,
+    /// Names of the objects so far, lower case.
+    object_names: std::collections::HashSet<String>,
+    diagnostics: Vec<crate::Diagnostic>,
 }
 
 impl Builder {
+    /// Takes `name` for a new object; a name already taken is reported and refused.
+    fn claim(&mut self, name: &str, range: Range<usize>) -> bool {
+        if self.object_names.insert(name.to_lowercase()) {
+            return true;
+        }
+        self.diagnostics.push(crate::Diagnostic::new(
+            crate::Code::DuplicateName,
+            range,
+            format!(
+                "'{name}' is declared twice in this file; the second declaration is not checked"
+            ),
+        ));
+        false
+    }
+
     fn declare(&mut self, object: &str, name: &str, range: Range<usize>) {
         // By exact spelling (so `XTWICE` declared after `xTwice` is found as itself) and
         // without case.
@@ -149,6 +171,9 @@ impl Builder {
         let Some((name, name_range)) = name_of(node) else {
             return;
         };
+        if !self.claim(&name, name_range.clone()) {
+            return;
+        }
         self.declare(&name, &name, name_range);
         let mut pou = Pou {
             name: name.clone(),
@@ -284,6 +309,9 @@ impl Builder {
             let Some((name, range)) = name_of(&definition) else {
                 continue;
             };
+            if !self.claim(&name, range.clone()) {
+                continue;
+            }
             self.declare(&name, &name, range);
             let Some(shape) = definition
                 .children()
@@ -362,11 +390,15 @@ impl Builder {
 
     fn globals(&mut self, node: &SyntaxNode) {
         self.global_lists += 1;
-        let name = if self.global_lists == 1 {
+        let mut name = if self.global_lists == 1 {
             "GVL".to_owned()
         } else {
             format!("GVL_{}", self.global_lists)
         };
+        // A POU or type of the file may already be called so.
+        while !self.object_names.insert(name.to_lowercase()) {
+            name.push('_');
+        }
         let mut variables = Vec::new();
         for block in node
             .children()

@@ -46,7 +46,7 @@ fn expected(text: &str) -> BTreeSet<Expectation> {
 fn actual(text: &str) -> (BTreeSet<Expectation>, Vec<String>) {
     let source = SourceProject::new(text);
     let mut ranges = Vec::new();
-    for error in source.parse.errors() {
+    for error in source.parse.errors().iter().chain(&source.diagnostics) {
         ranges.push((error.range.clone(), error.code.id(), error.message.clone()));
     }
     for finding in check_project(&source.project) {

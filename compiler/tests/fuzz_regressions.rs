@@ -5,7 +5,7 @@
 use std::path::Path;
 
 #[test]
-fn every_fuzz_finding_parses_losslessly() {
+fn every_fuzz_finding_parses_losslessly_and_checks() {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fuzz_regressions");
     let mut count = 0;
     for entry in std::fs::read_dir(&dir).unwrap() {
@@ -21,6 +21,18 @@ fn every_fuzz_finding_parses_losslessly() {
             for error in parse.errors() {
                 assert!(error.range.end <= text.len());
                 error.render("fuzz.st", &text);
+            }
+        }
+        // The checker, on the file as a project of its own: every finding it maps back must
+        // point inside the text.
+        let source = compiler::source_project::SourceProject::new(&text);
+        for found in compiler::sema::check_project(&source.project) {
+            if let Some(range) = source.locate(&found) {
+                assert!(
+                    range.start <= range.end && range.end <= text.len(),
+                    "{}: {found:?} maps to {range:?}",
+                    path.display()
+                );
             }
         }
         count += 1;

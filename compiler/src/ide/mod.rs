@@ -1,18 +1,23 @@
 //! The IDE facade: what editors ask the compiler, answered with plain structs (byte ranges,
 //! names, kinds). Syntax trees never cross this boundary.
 //!
-//! Today it answers from the syntax of one text: diagnostics, the document outline, semantic
-//! token classes and folding ranges. Hover, go to definition, references and completion need
-//! the project-wide semantic model and come with it.
+//! From the syntax of one text: diagnostics, the document outline, semantic token classes and
+//! folding ranges. From the project: hover, go to definition, find references, completion
+//! candidates and the diagnostics of one POU ([`semantic`]).
 
 mod folding;
 mod outline;
+pub mod semantic;
 mod semantic_tokens;
 
 use std::ops::Range;
 
 pub use folding::folding_ranges;
 pub use outline::{OutlineItem, OutlineKind, outline};
+pub use semantic::{
+    Completion, Definition, DefinitionKind, Hover, Reference, completions, definition, hover,
+    pou_diagnostics, references,
+};
 pub use semantic_tokens::{SemanticClass, SemanticToken, semantic_tokens};
 
 use crate::Diagnostic;

@@ -8,6 +8,7 @@ use std::ops::Range;
 use project_model::{Pou, PouKind, VarSection, Variable};
 
 use super::constant::{Const, evaluate, parse_expression};
+use super::definition::{Definition, DefinitionKind, Resolution};
 use super::scope::{GlobalSymbol, LocalSymbol, Scope, inheritance_chain, is_visible_outside};
 use super::signatures::{self, FunctionSig, Sig};
 use super::ty::{DEFAULT_STRING_LENGTH, Type, common_type, implicitly_converts};
@@ -50,6 +51,8 @@ pub(crate) struct BodyChecker<'s, 'a, 'p> {
     /// What was found.
     pub(crate) diagnostics: Vec<Diagnostic>,
     usage: &'s mut Usage,
+    /// What each name refers to, collected only when asked for (hover, references).
+    pub(crate) resolutions: Option<Vec<Resolution>>,
 }
 
 fn range_of(node: &SyntaxNode) -> Range<usize> {
@@ -86,7 +89,71 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
             scope,
             diagnostics: Vec::new(),
             usage,
+            resolutions: None,
         }
+    }
+
+    /// Records what the name at `range` refers to, when resolutions are collected.
+    fn note(
+        &mut self,
+        range: Range<usize>,
+        ty: &Type,
+        definition: impl FnOnce(&Self) -> Definition,
+    ) {
+        if self.resolutions.is_none() {
+            return;
+        }
+        let definition = definition(self);
+        if let Some(resolutions) = &mut self.resolutions {
+            resolutions.push(Resolution {
+                range,
+                definition,
+                ty: ty.to_string(),
+            });
+        }
+    }
+
+    /// The definition of a variable, with the object (and method or property) declaring it.
+    fn variable_definition(&self, variable: &Variable) -> Definition {
+        let detail = variable_detail(variable);
+        let make = |object: &str, container: Option<&str>| Definition {
+            kind: DefinitionKind::Variable,
+            object: Some(object.to_owned()),
+            container: container.map(str::to_owned),
+            name: variable.name.clone(),
+            detail: detail.clone(),
+        };
+        let is = |candidate: &Variable| std::ptr::eq(candidate, variable);
+        if let Some(pou) = self.scope.pou {
+            for current in inheritance_chain(self.scope.globals, pou) {
+                if current.variables.iter().any(is) {
+                    return make(&current.name, None);
+                }
+                for method in &current.methods {
+                    if method.variables.iter().any(is) {
+                        return make(&current.name, Some(&method.name));
+                    }
+                }
+                for property in &current.properties {
+                    if property
+                        .get
+                        .iter()
+                        .chain(&property.set)
+                        .any(|a| a.variables.iter().any(is))
+                    {
+                        return make(&current.name, Some(&property.name));
+                    }
+                }
+            }
+        }
+        for gvl_name in self.scope.globals.gvl_names() {
+            if let Some(GlobalSymbol::Gvl(gvl)) = self.scope.globals.lookup(gvl_name)
+                && gvl.variables.iter().any(is)
+            {
+                return make(&gvl.name, None);
+            }
+        }
+        make("", None)
     }
 
     fn error(&mut self, code: Code, range: Range<usize>, message: impl Into<String>) {
@@ -111,6 +178,11 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
     pub(crate) fn check_value(&mut self, node: &SyntaxNode, expected: &Type, context: &str) {
         let ty = self.expression(node, Mode::Read);
         self.expect_type(&ty, expected, node, context);
+    }
+
+    /// The type of an expression, read.
+    pub(crate) fn type_of(&mut self, node: &SyntaxNode) -> Type {
+        self.expression(node, Mode::Read)
     }
 
     /// Checks every statement under `root`.
@@ -621,6 +693,151 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
     }
 
     fn name(&mut self, node: &SyntaxNode, mode: Mode) -> Type {
+        let ty = self.name_type(node, mode);
+        if self.resolutions.is_some()
+            && let Some(token) = tokens(node).find(|t| t.kind() == SyntaxKind::IDENT)
+            && let Some(definition) = self.definition_of_name(&token, node)
+        {
+            self.note(token_range(&token), &ty, |_| definition);
+        }
+        ty
+    }
+
+    /// What the name `token` (in the name expression `node`) refers to.
+    fn definition_of_name(&self, token: &SyntaxToken, node: &SyntaxNode) -> Option<Definition> {
+        let name = token.text();
+        let global_only = tokens(node)
+            .next()
+            .is_some_and(|t| t.kind() == SyntaxKind::DOT);
+        let pou_name = self.scope.pou.map(|pou| pou.name.clone());
+        let simple = |kind,
+                      object: Option<String>,
+                      container: Option<String>,
+                      name: &str,
+                      detail: String| Definition {
+            kind,
+            object,
+            container,
+            name: name.to_owned(),
+            detail,
+        };
+        if !global_only && let Some(local) = self.scope.local(name) {
+            return Some(match local {
+                LocalSymbol::Var(variable) => self.variable_definition(variable),
+                LocalSymbol::Result(ty) => simple(
+                    DefinitionKind::Result,
+                    pou_name,
+                    None,
+                    name,
+                    format!("{name} : {ty} (the result)"),
+                ),
+                LocalSymbol::Method(method) => simple(
+                    DefinitionKind::Method,
+                    self.owner_of_member(name),
+                    None,
+                    &method.name,
+                    format!(
+                        "METHOD {}{}",
+                        method.name,
+                        method
+                            .return_type
+                            .as_deref()
+                            .map(|t| format!(" : {t}"))
+                            .unwrap_or_default()
+                    ),
+                ),
+                LocalSymbol::Property(property) => simple(
+                    DefinitionKind::Property,
+                    self.owner_of_member(name),
+                    None,
+                    &property.name,
+                    format!("PROPERTY {} : {}", property.name, property.ty),
+                ),
+                LocalSymbol::Action => simple(
+                    DefinitionKind::Action,
+                    pou_name,
+                    None,
+                    name,
+                    format!("ACTION {name}"),
+                ),
+                LocalSymbol::Step => simple(
+                    DefinitionKind::Step,
+                    pou_name,
+                    None,
+                    name,
+                    format!("STEP {name}"),
+                ),
+            });
+        }
+        let globals = self.scope.globals;
+        Some(match globals.lookup(name)? {
+            GlobalSymbol::Var(variable) => self.variable_definition(variable),
+            GlobalSymbol::Pou(pou) => simple(
+                DefinitionKind::Pou,
+                Some(pou.name.clone()),
+                None,
+                &pou.name,
+                pou_detail(pou),
+            ),
+            GlobalSymbol::Gvl(gvl) => simple(
+                DefinitionKind::GlobalVarList,
+                Some(gvl.name.clone()),
+                None,
+                &gvl.name,
+                format!("global variable list {}", gvl.name),
+            ),
+            GlobalSymbol::DataType(data_type) => simple(
+                DefinitionKind::DataType,
+                Some(data_type.name.clone()),
+                None,
+                &data_type.name,
+                format!("TYPE {}", data_type.name),
+            ),
+            GlobalSymbol::EnumValue(data_type) => {
+                let value = globals
+                    .enum_value(data_type, name, 0)
+                    .and_then(Const::as_int);
+                let detail = match value {
+                    Some(value) => format!("{}.{name} = {value}", data_type.name),
+                    None => format!("{}.{name}", data_type.name),
+                };
+                simple(
+                    DefinitionKind::EnumValue,
+                    Some(data_type.name.clone()),
+                    None,
+                    name,
+                    detail,
+                )
+            }
+            GlobalSymbol::Axis => simple(
+                DefinitionKind::Axis,
+                None,
+                None,
+                name,
+                format!("axis {name}"),
+            ),
+        })
+    }
+
+    /// The POU (this one or a base) that declares the method or property `name`.
+    fn owner_of_member(&self, name: &str) -> Option<String> {
+        let pou = self.scope.pou?;
+        inheritance_chain(self.scope.globals, pou)
+            .into_iter()
+            .find(|current| {
+                current
+                    .methods
+                    .iter()
+                    .any(|m| m.name.eq_ignore_ascii_case(name))
+                    || current
+                        .properties
+                        .iter()
+                        .any(|p| p.name.eq_ignore_ascii_case(name))
+            })
+            .map(|current| current.name.clone())
+    }
+
+    fn name_type(&mut self, node: &SyntaxNode, mode: Mode) -> Type {
         let mut parts = tokens(node);
         let Some(first) = parts.next() else {
             return Type::Error;
@@ -748,7 +965,13 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                     .iter()
                     .find(|v| v.name.eq_ignore_ascii_case(name))
                 {
-                    Some(variable) => self.variable(variable, mode, &member, false),
+                    Some(variable) => {
+                        let ty = self.variable(variable, mode, &member, false);
+                        self.note(token_range(&member), &ty, |checker| {
+                            checker.variable_definition(variable)
+                        });
+                        ty
+                    }
                     None => {
                         self.unknown_member(&gvl_name, &member, globals.member_names(&gvl_name));
                         Type::Error
@@ -815,11 +1038,63 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                         format!("'{}' is a CONSTANT and cannot be assigned", text(node)),
                     );
                 }
-                if found.is_method {
+                let ty = if found.is_method {
                     Type::Void
                 } else {
                     dereferenced(found.ty)
-                }
+                };
+                let owner = match globals.shape(&type_name) {
+                    Some(Shape::Pou(pou)) => inheritance_chain(globals, pou)
+                        .into_iter()
+                        .find(|p| {
+                            p.variables
+                                .iter()
+                                .any(|v| v.name.eq_ignore_ascii_case(name))
+                                || p.methods.iter().any(|m| m.name.eq_ignore_ascii_case(name))
+                                || p.properties
+                                    .iter()
+                                    .any(|m| m.name.eq_ignore_ascii_case(name))
+                        })
+                        .map(|p| p.name.clone()),
+                    Some(Shape::Struct(data_type)) => Some(data_type.name.clone()),
+                    _ => None,
+                };
+                let declared = owner.as_deref().and_then(|o| globals.pou(o)).and_then(|p| {
+                    p.variables
+                        .iter()
+                        .find(|v| v.name.eq_ignore_ascii_case(name))
+                });
+                let detail = match declared {
+                    Some(variable) => variable_detail(variable),
+                    None => format!("{type_name}.{name} : {ty}"),
+                };
+                // A function block's variables, methods and properties are the same
+                // declarations whether reached from inside or through an instance.
+                let kind = match (&owner, globals.shape(&type_name)) {
+                    (None, _) => DefinitionKind::Standard,
+                    (Some(_), Some(Shape::Pou(_))) if found.is_method => DefinitionKind::Method,
+                    (Some(owner_name), Some(Shape::Pou(_))) => {
+                        let is_property = globals.pou(owner_name).is_some_and(|p| {
+                            p.properties
+                                .iter()
+                                .any(|q| q.name.eq_ignore_ascii_case(name))
+                        });
+                        if is_property {
+                            DefinitionKind::Property
+                        } else {
+                            DefinitionKind::Variable
+                        }
+                    }
+                    (Some(_), _) => DefinitionKind::Member,
+                };
+                self.note(token_range(&member), &ty, |_| Definition {
+                    kind,
+                    object: owner,
+                    container: None,
+                    name: name.to_owned(),
+                    detail,
+                });
+                ty
             }
             Type::Step => match name.to_ascii_uppercase().as_str() {
                 "X" => Type::BOOL,
@@ -1186,6 +1461,26 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
         };
         let globals = self.scope.globals;
         // Functions and methods called by name.
+        if let Some(name) = &callee_name
+            && self.resolutions.is_some()
+            && let Some(token) = tokens(&callee).find(|t| t.kind() == SyntaxKind::IDENT)
+        {
+            let definition = self.definition_of_name(&token, &callee).or_else(|| {
+                let signature = signatures::function(name).map(|sig| signature_detail(name, &sig));
+                let block = signatures::function_block(name)
+                    .map(|_| format!("FUNCTION_BLOCK {}", name.to_ascii_uppercase()));
+                signature.or(block).map(|detail| Definition {
+                    kind: DefinitionKind::Standard,
+                    object: None,
+                    container: None,
+                    name: name.to_ascii_uppercase(),
+                    detail,
+                })
+            });
+            if let Some(definition) = definition {
+                self.note(token_range(&token), &Type::Void, |_| definition);
+            }
+        }
         if let Some(name) = &callee_name {
             let global_only = tokens(&callee)
                 .next()
@@ -1726,6 +2021,65 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
             Sig::Class(_) => Type::Error,
         }
     }
+}
+
+/// `name : TYPE := initial` for hover.
+fn variable_detail(variable: &Variable) -> String {
+    let mut detail = format!("{} : {}", variable.name, variable.ty);
+    if let Some(initial) = &variable.initial {
+        detail.push_str(&format!(" := {initial}"));
+    }
+    if let Some(address) = &variable.address {
+        detail = format!("{} AT {address} : {}", variable.name, variable.ty);
+    }
+    if !variable.comment.is_empty() {
+        detail.push_str(&format!(" // {}", variable.comment));
+    }
+    detail
+}
+
+/// `LIMIT(MN, IN, MX) : ANY_ELEMENTARY` for hover.
+fn signature_detail(name: &str, signature: &FunctionSig) -> String {
+    let show = |sig: &Sig| match sig {
+        Sig::E(e) => e.name().to_owned(),
+        Sig::Str => "STRING".to_owned(),
+        Sig::Class(g) | Sig::T(g) => Type::Generic(*g).to_string(),
+        Sig::RealOfT => "ANY_REAL".to_owned(),
+        Sig::AnyInt => "ANY_INT".to_owned(),
+        Sig::Pointer => "POINTER".to_owned(),
+        Sig::Void => String::new(),
+    };
+    let mut inputs: Vec<String> = signature
+        .inputs
+        .iter()
+        .map(|(input, sig)| format!("{input} : {}", show(sig)))
+        .collect();
+    if signature.extensible {
+        inputs.push("…".to_owned());
+    }
+    let result = show(&signature.result);
+    if result.is_empty() {
+        format!(
+            "FUNCTION {}({})",
+            name.to_ascii_uppercase(),
+            inputs.join(", ")
+        )
+    } else {
+        format!(
+            "FUNCTION {}({}) : {result}",
+            name.to_ascii_uppercase(),
+            inputs.join(", ")
+        )
+    }
+}
+
+/// `FUNCTION F_Scale : REAL` for hover.
+fn pou_detail(pou: &Pou) -> String {
+    let mut detail = format!("{} {}", pou.kind.keyword(), pou.name);
+    if let Some(ty) = &pou.return_type {
+        detail.push_str(&format!(" : {ty}"));
+    }
+    detail
 }
 
 /// Whether an array type (at any depth) has a bound that did not resolve.

@@ -5,7 +5,9 @@
 
 mod address;
 mod body;
+mod complete;
 mod constant;
+mod definition;
 mod scope;
 mod signatures;
 mod stdlib;
@@ -16,7 +18,7 @@ use std::collections::{HashMap, HashSet};
 use std::path::PathBuf;
 
 use project_model::{
-    Body, DataType, Object, Pou, PouKind, Project, TypeDefinition, VarSection, Variable,
+    Body, DataType, Object, Pou, PouKind, Project, StBody, TypeDefinition, VarSection, Variable,
 };
 
 use crate::diagnostic::{Code, Diagnostic};
@@ -24,6 +26,8 @@ use crate::syntax::{SyntaxKind, parse_statements, parse_type};
 use body::{BodyChecker, Usage};
 use scope::{Globals, Scope};
 
+pub use complete::{Completion, completions};
+pub use definition::{Definition, DefinitionKind, Resolution};
 pub use stdlib::{is_built_in_type, is_function, is_function_block};
 
 /// A finding about a project: where it is and what it is.
@@ -54,35 +58,7 @@ pub fn check_project(project: &Project) -> Vec<ProjectDiagnostic> {
         match object {
             Object::Pou(pou) => {
                 check_pou_declarations(&globals, pou, &mut report);
-                let mut usage = Usage::new();
-                let mut clean = true;
-                for body in bodies.iter().filter(|body| std::ptr::eq(body.pou, pou)) {
-                    let parse = parse_statements(body.text);
-                    clean &= parse.errors().is_empty();
-                    let mut findings: Vec<Diagnostic> = parse.errors().to_vec();
-                    let root = parse.syntax();
-                    let scope = Scope::for_body(&globals, body.pou, &body.target, &root);
-                    let mut checker = BodyChecker::new(&scope, &mut usage);
-                    checker.check(&root);
-                    let mut checked = checker.diagnostics;
-                    checked.sort_by_key(|diagnostic| diagnostic.range.start);
-                    findings.extend(checked);
-                    found.extend(findings.into_iter().map(|diagnostic| ProjectDiagnostic {
-                        file: body.file.clone(),
-                        declaration: None,
-                        diagnostic,
-                    }));
-                }
-                // Usage is only complete when every body is Structured Text that parsed.
-                if clean && all_bodies_are_text(pou) {
-                    usage_warnings(&globals, pou, &usage, &mut |name, diagnostic| {
-                        found.push(ProjectDiagnostic {
-                            file: file.clone(),
-                            declaration: Some(name.to_owned()),
-                            diagnostic,
-                        });
-                    });
-                }
+                found.extend(check_pou_bodies(&globals, &file, pou, &bodies));
             }
             Object::Gvl(gvl) => {
                 check_variables(&globals, None, &gvl.variables, &mut report);
@@ -115,6 +91,119 @@ pub fn check_project(project: &Project) -> Vec<ProjectDiagnostic> {
                 });
             }
         }
+    }
+    found
+}
+
+/// Checks one POU (declarations and every body) of `project`: what an editor re-checks after an
+/// edit of that POU, without the rest of the project.
+pub fn check_pou(project: &Project, pou_name: &str) -> Vec<ProjectDiagnostic> {
+    let globals = Globals::new(project);
+    let Some(pou) = globals.pou(pou_name) else {
+        return Vec::new();
+    };
+    let Some((file, _)) = project_model::object_files(project)
+        .into_iter()
+        .find(|(_, object)| std::ptr::eq(object.name(), pou.name.as_str()))
+    else {
+        return Vec::new();
+    };
+    let mut found = Vec::new();
+    check_pou_declarations(&globals, pou, &mut |name, diagnostic| {
+        found.push(ProjectDiagnostic {
+            file: file.clone(),
+            declaration: Some(name.to_owned()),
+            diagnostic,
+        });
+    });
+    let bodies: Vec<StBody<'_>> = project_model::st_body_files(project)
+        .into_iter()
+        .filter(|body| std::ptr::eq(body.pou, pou))
+        .collect();
+    found.extend(check_pou_bodies(&globals, &file, pou, &bodies));
+    found
+}
+
+/// What every name of one body refers to, in order.
+pub fn body_resolutions(project: &Project, body: &StBody<'_>) -> Vec<Resolution> {
+    let globals = Globals::new(project);
+    resolutions_with(&globals, body)
+}
+
+fn resolutions_with(globals: &Globals<'_>, body: &StBody<'_>) -> Vec<Resolution> {
+    let parse = parse_statements(body.text);
+    let root = parse.syntax();
+    let scope = Scope::for_body(globals, body.pou, &body.target, &root);
+    let mut usage = Usage::new();
+    let mut checker = BodyChecker::new(&scope, &mut usage);
+    checker.resolutions = Some(Vec::new());
+    checker.check(&root);
+    let mut resolutions = checker.resolutions.unwrap_or_default();
+    resolutions.sort_by_key(|resolution| resolution.range.start);
+    resolutions
+}
+
+/// Every place in every body that refers to `definition`, with its body.
+pub fn references_to(
+    project: &Project,
+    definition: &Definition,
+) -> Vec<(PathBuf, project_model::TextTarget, std::ops::Range<usize>)> {
+    let globals = Globals::new(project);
+    let mut found = Vec::new();
+    for body in project_model::st_body_files(project) {
+        // Only bodies that mention the name can refer to it; the text search is cheap.
+        if !body
+            .text
+            .to_lowercase()
+            .contains(&definition.name.to_lowercase())
+        {
+            continue;
+        }
+        for resolution in resolutions_with(&globals, &body) {
+            if resolution.definition.same_declaration(definition) {
+                found.push((body.file.clone(), body.target.clone(), resolution.range));
+            }
+        }
+    }
+    found
+}
+
+/// The bodies of one POU checked, with the usage warnings of its variables.
+fn check_pou_bodies(
+    globals: &Globals<'_>,
+    file: &std::path::Path,
+    pou: &Pou,
+    bodies: &[StBody<'_>],
+) -> Vec<ProjectDiagnostic> {
+    let mut found = Vec::new();
+    let mut usage = Usage::new();
+    let mut clean = true;
+    for body in bodies.iter().filter(|body| std::ptr::eq(body.pou, pou)) {
+        let parse = parse_statements(body.text);
+        clean &= parse.errors().is_empty();
+        let mut findings: Vec<Diagnostic> = parse.errors().to_vec();
+        let root = parse.syntax();
+        let scope = Scope::for_body(globals, body.pou, &body.target, &root);
+        let mut checker = BodyChecker::new(&scope, &mut usage);
+        checker.check(&root);
+        let mut checked = checker.diagnostics;
+        checked.sort_by_key(|diagnostic| diagnostic.range.start);
+        findings.extend(checked);
+        found.extend(findings.into_iter().map(|diagnostic| ProjectDiagnostic {
+            file: body.file.clone(),
+            declaration: None,
+            diagnostic,
+        }));
+    }
+    // Usage is only complete when every body is Structured Text that parsed.
+    if clean && all_bodies_are_text(pou) {
+        usage_warnings(globals, pou, &usage, &mut |name, diagnostic| {
+            found.push(ProjectDiagnostic {
+                file: file.to_owned(),
+                declaration: Some(name.to_owned()),
+                diagnostic,
+            });
+        });
     }
     found
 }

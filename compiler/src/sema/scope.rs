@@ -103,6 +103,17 @@ impl<'p> Globals<'p> {
         self.names.get(&name.to_lowercase()).copied()
     }
 
+    /// The names of every global variable list.
+    pub(crate) fn gvl_names(&self) -> Vec<&'p str> {
+        self.names
+            .values()
+            .filter_map(|symbol| match symbol {
+                GlobalSymbol::Gvl(gvl) => Some(gvl.name.as_str()),
+                _ => None,
+            })
+            .collect()
+    }
+
     /// Whether `name` is a POU of the project.
     pub(crate) fn is_pou(&self, name: &str) -> bool {
         self.pous.contains_key(&name.to_lowercase())
@@ -323,6 +334,14 @@ impl<'a, 'p> Scope<'a, 'p> {
     /// The local called `name`.
     pub(crate) fn local(&self, name: &str) -> Option<LocalSymbol<'p>> {
         self.locals.get(&name.to_lowercase()).copied()
+    }
+
+    /// Every local name with its symbol, in the spelling of its declaration.
+    pub(crate) fn local_symbols(&self) -> Vec<(String, LocalSymbol<'p>)> {
+        self.spellings
+            .iter()
+            .filter_map(|name| self.local(name).map(|symbol| (name.clone(), symbol)))
+            .collect()
     }
 
     /// A local or global name close to `name`.
