@@ -1303,7 +1303,8 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
         let result = self.binary_type(operator.kind(), &left, &right);
         if let Some(ty) = result {
             // Fold literal arithmetic so `-128` or `2 * 64` still fit a SINT.
-            if let (Type::IntLiteral(_), Some(Const::Int(value))) = (&ty, self.constant_value(node))
+            if matches!(ty, Type::IntLiteral(_))
+                && let Some(Const::Int(value)) = self.constant_value(node)
             {
                 return Type::IntLiteral(Some(value));
             }
