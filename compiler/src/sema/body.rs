@@ -1776,15 +1776,20 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                 continue;
             };
             match (param.section, output) {
-                (VarSection::VarOutput, false) => {
-                    self.expression(&value, Mode::Read);
+                // The wrong arrow: ':=' to an output or '=>' from an input.
+                (VarSection::VarOutput, false) | (_, true)
+                    if (param.section == VarSection::VarOutput) != output =>
+                {
+                    self.expression(&value, if output { Mode::Write } else { Mode::Read });
+                    let (what, arrow) = if output {
+                        ("an input", "pass it with ':='")
+                    } else {
+                        ("an output", "connect it with '=>'")
+                    };
                     self.error(
                         Code::InvalidCall,
                         range_of(argument),
-                        format!(
-                            "'{}' is an output of '{callee}'; connect it with '=>'",
-                            param.name
-                        ),
+                        format!("'{}' is {what} of '{callee}'; {arrow}", param.name),
                     );
                 }
                 (VarSection::VarOutput, true) => {
@@ -1801,17 +1806,6 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                             format!("{context} must hold {}, but it is {target}", param.ty),
                         );
                     }
-                }
-                (_, true) => {
-                    self.expression(&value, Mode::Write);
-                    self.error(
-                        Code::InvalidCall,
-                        range_of(argument),
-                        format!(
-                            "'{}' is an input of '{callee}'; pass it with ':='",
-                            param.name
-                        ),
-                    );
                 }
                 (VarSection::VarInOut, false) => {
                     let ty = self.expression(&value, Mode::Write);
