@@ -136,22 +136,43 @@ module.exports = grammar({
       $.configuration_declaration,
     ),
 
-    // A POU, method, property or interface without its end keyword, or bare variable blocks
-    // (a property accessor's declarations): what a declaration part alone holds.
+    // A POU, method, property, action or interface without its end keyword, or bare variable
+    // blocks (a property accessor's declarations): what a declaration part stored apart from
+    // its body holds. Like the compiler, it may run on into statements up to the end of the
+    // text.
     _declaration_part: $ => choice(
       alias($._program_declaration_part, $.program_declaration),
       alias($._function_block_declaration_part, $.function_block_declaration),
       alias($._function_declaration_part, $.function_declaration),
       alias($._method_declaration_part, $.method_declaration),
       alias($._property_declaration_part, $.property_declaration),
+      alias($._action_declaration_part, $.action_declaration),
       alias($._interface_head, $.interface_declaration),
       seq(alias($._local_var_block, $.var_block), repeat($.var_block)),
     ),
-    _program_declaration_part: $ => seq($._program_head, optional($._var_blocks)),
-    _function_block_declaration_part: $ => seq($._function_block_head, optional($._var_blocks)),
-    _function_declaration_part: $ => seq($._function_head, optional($._var_blocks)),
-    _method_declaration_part: $ => seq($._method_head, optional($._var_blocks)),
-    _property_declaration_part: $ => seq($._property_head, optional($._var_blocks)),
+    _program_declaration_part: $ => seq(
+      $._program_head,
+      optional($._var_blocks),
+      optional(alias($._pou_body, $.body)),
+    ),
+    _function_block_declaration_part: $ => seq(
+      $._function_block_head,
+      optional($._var_blocks),
+      optional(alias($._pou_body, $.body)),
+    ),
+    _function_declaration_part: $ => seq(
+      $._function_head,
+      optional($._var_blocks),
+      optional(alias($._pou_body, $.body)),
+    ),
+    _method_declaration_part: $ => seq($._method_head, optional($._var_blocks), optional($.body)),
+    _property_declaration_part: $ => seq(
+      $._property_head,
+      optional($._var_blocks),
+      repeat($.property_accessor),
+      optional($.body),
+    ),
+    _action_declaration_part: $ => seq($._action_head, optional($.body)),
 
     // ---------------------------------------------------------------- POUs and members
 
@@ -260,13 +281,8 @@ module.exports = grammar({
       optional(';'),
     )),
 
-    action_declaration: $ => seq(
-      kw('ACTION'),
-      field('name', $._declared_name),
-      optional(':'),
-      optional($.body),
-      kw('END_ACTION'),
-    ),
+    action_declaration: $ => seq($._action_head, optional($.body), kw('END_ACTION')),
+    _action_head: $ => seq(kw('ACTION'), field('name', $._declared_name), optional(':')),
 
     interface_declaration: $ => seq(
       $._interface_head,
