@@ -785,12 +785,13 @@ module.exports = grammar({
 
     _name_ref: $ => choice($.identifier, $.qualified_name),
 
-    // `Lib.Type`, `Main.fb.xIn`: nested to the left, so `a.b.c` is `(a.b).c`.
-    qualified_name: $ => prec.left(PREC.name, seq(
-      field('qualifier', choice($.identifier, $.qualified_name)),
-      '.',
-      field('name', $.identifier),
-    )),
+    // `Lib.Type`, `Main.fb.xIn`: the identifiers side by side. A dot after a name always
+    // continues it, as in the compiler, though a body could start with `.global`.
+    qualified_name: $ => prec(PREC.name, seq($.identifier, '.', $._qualified_name_rest)),
+    _qualified_name_rest: $ => choice(
+      prec(PREC.name, seq($.identifier, '.', $._qualified_name_rest)),
+      $.identifier,
+    ),
 
     _literal: $ => choice(
       $.integer,

@@ -30,6 +30,10 @@
 
 (direct_address) @constant
 
+((typed_literal
+  type: (identifier) @type.builtin)
+  (#match? @type.builtin "^(?i)(BOOL|BYTE|WORD|DWORD|LWORD|SINT|INT|DINT|LINT|USINT|UINT|UDINT|ULINT|REAL|LREAL|STRING|WSTRING|CHAR|WCHAR)$"))
+
 (typed_literal
   type: (identifier) @type)
 
@@ -88,6 +92,11 @@
   label: (identifier) @label)
 
 ; Types
+
+; The elementary types of IEC 61131-3, whatever their case.
+((named_type
+  name: (identifier) @type.builtin)
+  (#match? @type.builtin "^(?i)(BOOL|BYTE|WORD|DWORD|LWORD|SINT|INT|DINT|LINT|USINT|UINT|UDINT|ULINT|REAL|LREAL|TIME|LTIME|DATE|LDATE|TIME_OF_DAY|TOD|LTIME_OF_DAY|LTOD|DATE_AND_TIME|DT|LDATE_AND_TIME|LDT|CHAR|WCHAR|BIT|__XWORD|__UXINT|__XINT|ANY|ANY_NUM|ANY_INT|ANY_REAL|ANY_BIT|ANY_STRING|ANY_DATE)$"))
 
 (named_type
   name: (identifier) @type)

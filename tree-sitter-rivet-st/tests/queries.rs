@@ -82,6 +82,8 @@ FUNCTION_BLOCK FB_Demo
 VAR
     nCount : INT := 16#FF; // counter
     sName : STRING(20) := 'abc';
+    fbTimer : FB_Timer;
+    aThings : ARRAY[1..2] OF Lib.T_Thing;
 END_VAR
 (* block (* nested *) *)
 IF nCount > 0 AND xReady THEN
@@ -101,7 +103,10 @@ fn highlights_capture_keywords_types_literals_comments_calls_variables_and_opera
         ("IF", 0, "keyword.conditional"),
         ("AND", 0, "keyword.operator"),
         ("FB_Demo", 0, "type"),
-        ("INT", 0, "type"),
+        ("INT", 0, "type.builtin"),
+        ("FB_Timer", 0, "type"),
+        ("Lib", 0, "type"),
+        ("T_Thing", 0, "type"),
         ("STRING", 0, "type.builtin"),
         ("16#FF", 0, "number"),
         ("20", 0, "number"),
@@ -110,13 +115,14 @@ fn highlights_capture_keywords_types_literals_comments_calls_variables_and_opera
         ("TRUE", 0, "constant.builtin"),
         ("// counter", 0, "comment"),
         ("(* block (* nested *) *)", 0, "comment"),
-        ("fbTimer", 0, "function.call"),
+        ("fbTimer", 0, "variable"),
+        ("fbTimer", 1, "function.call"),
         ("Reset", 0, "function.method.call"),
         ("IN", 0, "variable.parameter"),
         ("nCount", 0, "variable"),
         ("nCount", 1, "variable"),
         ("xReady", 0, "variable"),
-        ("fbTimer", 1, "variable"),
+        ("fbTimer", 2, "variable"),
         ("ET", 0, "property"),
         (":=", 0, "operator"),
         (">", 0, "operator"),
