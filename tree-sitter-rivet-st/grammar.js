@@ -23,6 +23,7 @@ const PREC = {
   power: 9,
   postfix: 10,
   name: 11,
+  repeat: 12,
 };
 
 /**
@@ -112,6 +113,8 @@ module.exports = grammar({
     // After a statement of a CASE branch, an identifier may start the next statement or the
     // labels of the next branch; the token after the label's expression decides.
     [$.case_branch],
+    // In a declaration part, a method may be the last one, left open at the end of the text.
+    [$._interface_head],
   ],
 
   rules: {
@@ -144,26 +147,37 @@ module.exports = grammar({
       alias($._program_declaration_part, $.program_declaration),
       alias($._function_block_declaration_part, $.function_block_declaration),
       alias($._function_declaration_part, $.function_declaration),
-      alias($._method_declaration_part, $.method_declaration),
-      alias($._property_declaration_part, $.property_declaration),
-      alias($._action_declaration_part, $.action_declaration),
-      alias($._interface_head, $.interface_declaration),
+      alias($._interface_declaration_part, $.interface_declaration),
+      $._member_declaration_part,
       seq(alias($._local_var_block, $.var_block), repeat($.var_block)),
     ),
     _program_declaration_part: $ => seq(
       $._program_head,
       optional($._var_blocks),
       optional(alias($._pou_body, $.body)),
+      optional($._member_declaration_part),
     ),
     _function_block_declaration_part: $ => seq(
       $._function_block_head,
       optional($._var_blocks),
       optional(alias($._pou_body, $.body)),
+      optional($._member_declaration_part),
     ),
     _function_declaration_part: $ => seq(
       $._function_head,
       optional($._var_blocks),
       optional(alias($._pou_body, $.body)),
+      optional($._member_declaration_part),
+    ),
+    _interface_declaration_part: $ => seq(
+      $._interface_head,
+      optional($._member_declaration_part),
+    ),
+    // A method, property or action whose end keyword is missing at the end of the text.
+    _member_declaration_part: $ => choice(
+      alias($._method_declaration_part, $.method_declaration),
+      alias($._property_declaration_part, $.property_declaration),
+      alias($._action_declaration_part, $.action_declaration),
     ),
     _method_declaration_part: $ => seq($._method_head, optional($._var_blocks), optional($.body)),
     _property_declaration_part: $ => seq(
@@ -437,12 +451,13 @@ module.exports = grammar({
       ']',
     ),
 
-    repeated_initializer: $ => seq(
+    // In an array initialiser `3(` repeats, though elsewhere it would call the literal.
+    repeated_initializer: $ => prec(PREC.repeat, seq(
       field('count', $.integer),
       '(',
       optional(field('value', $._initial_value)),
       ')',
-    ),
+    )),
 
     // ---------------------------------------------------------------- configurations
 
@@ -672,17 +687,18 @@ module.exports = grammar({
     // ---------------------------------------------------------------- expressions
 
     _expression: $ => choice(
-      $._postfix_operand,
-      $._literal,
-      $.typed_literal,
-      $.direct_address,
-      $.array_initializer,
+      $._primary_expression,
       $.unary_expression,
       $.binary_expression,
     ),
 
-    // What member access, indexing, dereference and calls apply to.
-    _postfix_operand: $ => choice(
+    // Operands; member access, indexing, dereference and calls apply to any of them, as in
+    // the compiler (the type checker rejects what makes no sense, such as `3.0(x)`).
+    _primary_expression: $ => choice(
+      $._literal,
+      $.typed_literal,
+      $.direct_address,
+      $.array_initializer,
       $.identifier,
       $.this,
       $.super,
@@ -700,27 +716,27 @@ module.exports = grammar({
     global_reference: $ => seq('.', $.identifier),
 
     field_expression: $ => prec(PREC.postfix, seq(
-      field('object', $._postfix_operand),
+      field('object', $._primary_expression),
       '.',
       field('field', choice($.identifier, $.integer, $.direct_address)),
     )),
 
     index_expression: $ => prec(PREC.postfix, seq(
-      field('array', $._postfix_operand),
+      field('array', $._primary_expression),
       '[',
       commaSep1(field('index', $._expression)),
       ']',
     )),
 
     dereference_expression: $ => prec(PREC.postfix, seq(
-      field('pointer', $._postfix_operand),
+      field('pointer', $._primary_expression),
       '^',
     )),
 
     // Also the operators called like functions, `MOD(a, b)`, as matiec allows.
     call_expression: $ => prec(PREC.postfix, seq(
       field('function', choice(
-        $._postfix_operand,
+        $._primary_expression,
         alias(choice(kw('MOD'), kw('AND'), kw('OR'), kw('XOR')), $.identifier),
       )),
       field('arguments', $.argument_list),

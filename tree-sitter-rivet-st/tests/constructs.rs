@@ -452,6 +452,28 @@ fn declaration_parts_alone_parse() {
         &["property_declaration", "property_accessor"],
     );
     declaration_part("ACTION A:\nx := 1;", &["action_declaration", "body"]);
+    declaration_part(
+        "FUNCTION F : INT\nMETHOD PRIVATE M : BOOL\nVAR END_VAR",
+        &["function_declaration", "method_declaration"],
+    );
+    declaration_part(
+        "INTERFACE I\nMETHOD A END_METHOD\nPROPERTY P : INT",
+        &["interface_declaration", "property_declaration"],
+    );
+}
+
+#[test]
+fn postfix_operators_apply_to_any_operand_as_in_the_compiler() {
+    // Nonsense the type checker rejects, but the syntax is the compiler's.
+    statements(
+        "x := 3.0 (y) + [1, 2][0] + 1 (NOT a AND b) + INT#5.x + 'abc'[1];",
+        &["call_expression", "index_expression", "field_expression"],
+    );
+    // In an array initialiser, `3(` repeats instead.
+    source(
+        "PROGRAM P VAR a : ARRAY[1..5] OF INT := [2(0), 3(), 4]; END_VAR END_PROGRAM",
+        &["repeated_initializer"],
+    );
 }
 
 #[test]
