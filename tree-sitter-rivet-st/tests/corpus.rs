@@ -214,6 +214,71 @@ fn lower_cased(samples: &[Sample]) -> Vec<Sample> {
         .collect()
 }
 
+/// A small deterministic random number generator (xorshift), so the mutations are the same
+/// on every run.
+struct Xorshift(u64);
+
+impl Xorshift {
+    fn below(&mut self, bound: usize) -> usize {
+        self.0 ^= self.0 << 13;
+        self.0 ^= self.0 >> 7;
+        self.0 ^= self.0 << 17;
+        usize::try_from(self.0 % u64::try_from(bound).unwrap()).unwrap()
+    }
+}
+
+/// Variants of each text with a few pieces (split after whitespace and punctuation) removed,
+/// repeated or swapped. Most variants are wrong and the compiler rejects them; those it
+/// accepts probe corners of its grammar that no corpus file shows.
+fn mutated(samples: &[Sample], per_text: usize) -> Vec<Sample> {
+    let mut random = Xorshift(0x5EED_1E55);
+    let mut variants = Vec::new();
+    for sample in samples {
+        let pieces: Vec<&str> = sample
+            .text
+            .split_inclusive(|c: char| c.is_whitespace() || ";:=(),[]".contains(c))
+            .collect();
+        if pieces.len() < 3 {
+            continue;
+        }
+        for variant in 0..per_text {
+            let mut changed = pieces.clone();
+            for _ in 0..=random.below(3) {
+                let at = random.below(changed.len());
+                let other = random.below(changed.len());
+                match random.below(3) {
+                    0 => {
+                        changed.remove(at);
+                    }
+                    1 => changed.insert(at, changed[other]),
+                    _ => changed.swap(at, other),
+                }
+                if changed.len() < 2 {
+                    break;
+                }
+            }
+            variants.push(Sample {
+                origin: format!("{} (variant {variant})", sample.origin),
+                text: changed.concat(),
+                entry: sample.entry,
+            });
+        }
+    }
+    variants
+}
+
+#[test]
+fn mutated_corpus_texts_the_compiler_accepts_parse_without_errors() {
+    let mut samples = whole_files(files(&corpora().join("ironplc"), "st"), Entry::SourceFile);
+    let matiec = corpora().join("matiec");
+    samples.extend(whole_files(files(&matiec, "txt"), Entry::SourceFile));
+    samples.extend(tcunit_parts());
+    samples.retain(compiler_accepts);
+    let variants = mutated(&samples, 12);
+    // About a third of the variants stay valid; the count guards against a broken mutator.
+    assert_agreement(&variants, variants.len() / 5);
+}
+
 #[test]
 fn the_check_finds_error_and_missing_nodes() {
     let mut parser = Parser::new();
