@@ -19,7 +19,10 @@ const ALLOWED_INTERNAL: &[(&str, &[&str])] = &[
     ("compiler", &["project_model", "program_image"]),
     ("runtime", &["program_image", "motion"]),
     ("online", &["program_image"]),
-    ("editor", &["project_model", "compiler"]),
+    (
+        "editor",
+        &["project_model", "compiler", "tree-sitter-rivet-st"],
+    ),
     ("cam_editor", &["project_model", "motion"]),
     (
         "app",
@@ -36,7 +39,13 @@ const ALLOWED_INTERNAL: &[(&str, &[&str])] = &[
         ],
     ),
     ("tests", &[]),
+    // The editor's grammar: no crate of ours at run time (it uses `compiler` only in tests).
+    ("tree-sitter-rivet-st", &[]),
 ];
+
+/// Our crates and the crates of ours each may use in its tests (dev-dependencies), where that
+/// is narrower than "any": the grammar is checked against the compiler and nothing else.
+const ALLOWED_INTERNAL_DEV: &[(&str, &[&str])] = &[("tree-sitter-rivet-st", &["compiler"])];
 
 /// Third-party crates that only some of our crates may use directly.
 const RESTRICTED: &[(&str, &[&str])] = &[
@@ -47,10 +56,18 @@ const RESTRICTED: &[(&str, &[&str])] = &[
     ("egui_plot", &["app", "editor", "cam_editor"]),
     ("tokio", &["app", "online", "runtime"]),
     ("tokio-modbus", &["app", "online", "runtime"]),
+    // Tree-sitter serves editor highlighting and folding only; diagnostics come from the compiler.
+    ("tree-sitter", &["tree-sitter-rivet-st", "editor"]),
 ];
 
 /// Each workspace crate with its normal (non-dev, non-build) dependencies by package name.
 fn workspace_dependencies() -> BTreeMap<String, BTreeSet<String>> {
+    workspace_dependencies_of_kind(None)
+}
+
+/// Each workspace crate with its dependencies of one kind by package name: `None` for normal
+/// dependencies, `Some("dev")` or `Some("build")` for the others.
+fn workspace_dependencies_of_kind(kind: Option<&str>) -> BTreeMap<String, BTreeSet<String>> {
     let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
     let output = Command::new(cargo)
         .args([
@@ -76,7 +93,7 @@ fn workspace_dependencies() -> BTreeMap<String, BTreeSet<String>> {
             .as_array()
             .expect("dependencies")
             .iter()
-            .filter(|dependency| dependency["kind"].is_null())
+            .filter(|dependency| dependency["kind"].as_str() == kind)
             .map(|dependency| dependency["name"].as_str().expect("name").to_owned())
             .collect();
         crates.insert(name, dependencies);
@@ -133,6 +150,24 @@ fn crates_depend_only_on_the_crates_of_ours_they_may() {
     assert!(
         violations.is_empty(),
         "forbidden dependencies: {violations:?}"
+    );
+}
+
+#[test]
+fn crates_use_in_their_tests_only_the_crates_of_ours_they_may() {
+    let dev = workspace_dependencies_of_kind(Some("dev"));
+    let ours: BTreeSet<&str> = dev.keys().map(String::as_str).collect();
+    let mut violations = Vec::new();
+    for (name, allowed) in ALLOWED_INTERNAL_DEV {
+        for dependency in dev.get(*name).into_iter().flatten() {
+            if ours.contains(dependency.as_str()) && !allowed.contains(&dependency.as_str()) {
+                violations.push(format!("{name} -> {dependency}"));
+            }
+        }
+    }
+    assert!(
+        violations.is_empty(),
+        "forbidden dev-dependencies: {violations:?}"
     );
 }
 
