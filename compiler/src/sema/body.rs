@@ -209,17 +209,9 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
             SyntaxKind::ASSIGN_STMT => {
                 if let [target, value, ..] = children.as_slice() {
                     let target_ty = self.expression(target, Mode::Write);
-                    self.assignable_target(target);
                     let value_ty = self.expression(value, Mode::Read);
-                    if target_ty == Type::Void {
-                        self.error(
-                            Code::NotAssignable,
-                            range_of(target),
-                            format!(
-                                "'{}' is not a variable and cannot be assigned",
-                                text(target)
-                            ),
-                        );
+                    // A POU or action name has no value to assign to.
+                    if !self.assignable_target(target, &target_ty) {
                         return;
                     }
                     self.expect_type(&value_ty, &target_ty, value, "the assignment");
@@ -230,8 +222,9 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
             SyntaxKind::SET_STMT | SyntaxKind::RESET_STMT => {
                 if let [target, value, ..] = children.as_slice() {
                     let target_ty = self.expression(target, Mode::Write);
-                    self.assignable_target(target);
-                    self.expect_type(&target_ty, &Type::BOOL, target, "S= and R=");
+                    if self.assignable_target(target, &target_ty) {
+                        self.expect_type(&target_ty, &Type::BOOL, target, "S= and R=");
+                    }
                     let value_ty = self.expression(value, Mode::Read);
                     self.expect_type(&value_ty, &Type::BOOL, value, "S= and R=");
                 }
@@ -326,8 +319,7 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
             .collect();
         if let Some((variable, bounds)) = expressions.split_first() {
             let ty = self.expression(variable, Mode::Write);
-            self.assignable_target(variable);
-            if !ty.is_integer_like() {
+            if self.assignable_target(variable, &ty) && !ty.is_integer_like() {
                 self.error(
                     Code::TypeMismatch,
                     range_of(variable),
@@ -456,18 +448,20 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
         self.scope.globals.constant(name, container, depth)
     }
 
-    /// Reports a place that cannot be written: a literal, a call, a constant, an enumeration
-    /// value. (Members and variables are checked where they resolve.)
-    fn assignable_target(&mut self, target: &SyntaxNode) {
+    /// Reports a place that cannot be written: a literal, a call, an expression, or a name
+    /// without a value (`target_ty` is `Void`); returns whether the place can be written.
+    /// (Constants, outputs and enumeration values are checked where they resolve.)
+    fn assignable_target(&mut self, target: &SyntaxNode, target_ty: &Type) -> bool {
         let root = target.kind();
-        if matches!(
+        let not_a_place = matches!(
             root,
             SyntaxKind::LITERAL
                 | SyntaxKind::TYPED_LITERAL
                 | SyntaxKind::CALL_EXPR
                 | SyntaxKind::BINARY_EXPR
                 | SyntaxKind::UNARY_EXPR
-        ) {
+        );
+        if not_a_place || *target_ty == Type::Void {
             self.error(
                 Code::NotAssignable,
                 range_of(target),
@@ -476,7 +470,9 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                     text(target)
                 ),
             );
+            return false;
         }
+        true
     }
 
     /// Reports `value` where `expected` is needed, unless it converts implicitly.
@@ -1794,7 +1790,9 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                 }
                 (VarSection::VarOutput, true) => {
                     let target = self.expression(&value, Mode::Write);
-                    self.assignable_target(&value);
+                    if !self.assignable_target(&value, &target) {
+                        continue;
+                    }
                     let context = format!(
                         "the variable connected to output '{}' of '{callee}'",
                         param.name
