@@ -101,15 +101,19 @@ fn significant_tokens(node: &SyntaxNode) -> impl Iterator<Item = SyntaxToken> {
 
 fn literal_value(token: &SyntaxToken) -> Option<Const> {
     match token.kind() {
-        SyntaxKind::INT_NUMBER => literal::parse_integer(token.text())
-            .ok()
-            .and_then(|value| i128::try_from(value).ok())
-            .map(Const::Int),
+        SyntaxKind::INT_NUMBER => integer_value(token.text()).map(Const::Int),
         SyntaxKind::REAL_NUMBER => literal::parse_real(token.text()).ok().map(Const::Real),
         SyntaxKind::TRUE => Some(Const::Bool(true)),
         SyntaxKind::FALSE => Some(Const::Bool(false)),
         _ => None,
     }
+}
+
+/// The value of an integer literal (`1_000`, `16#FF`), if it fits an `i128`.
+pub(crate) fn integer_value(text: &str) -> Option<i128> {
+    literal::parse_integer(text)
+        .ok()
+        .and_then(|value| i128::try_from(value).ok())
 }
 
 fn negate(value: Const) -> Option<Const> {

@@ -46,7 +46,14 @@ pub struct ProjectDiagnostic {
 pub fn check_project(project: &Project) -> Vec<ProjectDiagnostic> {
     let globals = Globals::new(project);
     let mut found = Vec::new();
-    let bodies = project_model::st_body_files(project);
+    // Each POU's bodies, grouped once rather than searched for every POU.
+    let mut bodies: HashMap<*const Pou, Vec<StBody<'_>>> = HashMap::new();
+    for body in project_model::st_body_files(project) {
+        bodies
+            .entry(std::ptr::from_ref(body.pou))
+            .or_default()
+            .push(body);
+    }
     for (file, object) in project_model::object_files(project) {
         let mut report = |name: &str, diagnostic: Diagnostic| {
             found.push(ProjectDiagnostic {
@@ -58,7 +65,10 @@ pub fn check_project(project: &Project) -> Vec<ProjectDiagnostic> {
         match object {
             Object::Pou(pou) => {
                 check_pou_declarations(&globals, pou, &mut report);
-                found.extend(check_pou_bodies(&globals, &file, pou, &bodies));
+                let own = bodies
+                    .get(&std::ptr::from_ref(pou))
+                    .map_or(&[][..], Vec::as_slice);
+                found.extend(check_pou_bodies(&globals, &file, pou, own));
             }
             Object::Gvl(gvl) => {
                 check_variables(&globals, None, &gvl.variables, &mut report);
@@ -168,7 +178,8 @@ pub fn references_to(
     found
 }
 
-/// The bodies of one POU checked, with the usage warnings of its variables.
+/// The bodies of one POU (`bodies` are all its own) checked, with the usage warnings of its
+/// variables.
 fn check_pou_bodies(
     globals: &Globals<'_>,
     file: &std::path::Path,
@@ -178,7 +189,7 @@ fn check_pou_bodies(
     let mut found = Vec::new();
     let mut usage = Usage::new();
     let mut clean = true;
-    for body in bodies.iter().filter(|body| std::ptr::eq(body.pou, pou)) {
+    for body in bodies {
         let parse = parse_statements(body.text);
         clean &= parse.errors().is_empty();
         let mut findings: Vec<Diagnostic> = parse.errors().to_vec();
@@ -410,18 +421,20 @@ fn check_variables<'p>(
     variables: &[Variable],
     report: &mut impl FnMut(&str, Diagnostic),
 ) {
+    // The scope of initial values, built once and only if some variable has one.
+    let mut scope = None;
     for variable in variables {
         check_type(globals, &variable.name, &variable.ty, report);
         let declared = globals.resolve_type(&variable.ty);
         if let Some(initial) = variable.initial.as_deref()
             && let Some(expression) = constant::parse_expression(initial)
         {
-            let scope = match pou {
+            let scope = scope.get_or_insert_with(|| match pou {
                 Some(pou) => Scope::for_declarations(globals, pou),
                 None => Scope::globals_only(globals),
-            };
+            });
             let mut usage = Usage::new();
-            let mut checker = BodyChecker::new(&scope, &mut usage);
+            let mut checker = BodyChecker::new(scope, &mut usage);
             checker.check_value(
                 &expression,
                 &declared,

@@ -1,6 +1,6 @@
 //! Names of the IEC 61131-3 standard library and the CODESYS system functions the checker
-//! knows. Their signatures come with the type checker; this list lets name resolution tell a
-//! misspelt name from a library call.
+//! knows, for suggestions and for the built-in type names. Whether a name is a library function
+//! is decided by its signature in `signatures`.
 
 use crate::elementary::Elementary;
 
@@ -123,15 +123,15 @@ const BUILT_IN_TYPES: &[&str] = &[
     "__XINT",
 ];
 
-/// Whether `name` (any case) is a standard function or operator function.
+/// Whether `name` (any case) is a standard function, operator function or conversion: whether
+/// the checker knows its signature.
 pub fn is_function(name: &str) -> bool {
-    let upper = name.to_ascii_uppercase();
-    FUNCTIONS.contains(&upper.as_str()) || is_conversion(&upper)
+    super::signatures::function(name).is_some()
 }
 
 /// Whether `name` (any case) is a standard function block.
 pub fn is_function_block(name: &str) -> bool {
-    FUNCTION_BLOCKS.contains(&name.to_ascii_uppercase().as_str())
+    super::signatures::function_block(name).is_some()
 }
 
 /// Whether `name` (any case) names a type every project has: elementary, generic or a standard
@@ -140,19 +140,7 @@ pub fn is_built_in_type(name: &str) -> bool {
     let upper = name.to_ascii_uppercase();
     Elementary::from_name(&upper).is_some()
         || BUILT_IN_TYPES.contains(&upper.as_str())
-        || FUNCTION_BLOCKS.contains(&upper.as_str())
-}
-
-/// `<T1>_TO_<T2>` and `TO_<T2>` conversions between elementary types (and `BCD`).
-fn is_conversion(upper: &str) -> bool {
-    let known = |name: &str| Elementary::from_name(name).is_some() || name == "BCD";
-    if let Some(target) = upper.strip_prefix("TO_") {
-        return known(target);
-    }
-    // Type names may themselves hold '_' (TIME_OF_DAY), so try every "_TO_".
-    upper
-        .match_indices("_TO_")
-        .any(|(at, _)| known(&upper[..at]) && known(&upper[at + 4..]))
+        || is_function_block(&upper)
 }
 
 /// Every standard name, for suggestions.
