@@ -6,3 +6,7 @@
 //! It depends on no other crate of the workspace, so the client side never needs the runtime.
 //!
 //! The image format is specified in `docs/program-image.md` (written with the code generator).
+
+mod elementary;
+
+pub use elementary::Elementary;
