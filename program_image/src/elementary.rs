@@ -5,7 +5,10 @@
 ///
 /// The strings are not elementary here: `STRING(n)` and `WSTRING(n)` carry a length and are
 /// types of their own in the image.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+/// Encoded (with serde) as its variant index, which is its tag.
+#[derive(
+    Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, serde::Serialize, serde::Deserialize,
+)]
 #[repr(u8)]
 #[allow(missing_docs)] // Each variant is the IEC type of the same name.
 pub enum Elementary {

@@ -5,8 +5,25 @@
 //! the identity hash of the whole image and its format version.
 //! It depends on no other crate of the workspace, so the client side never needs the runtime.
 //!
-//! The image format is specified in `docs/program-image.md` (written with the code generator).
+//! The format is specified in `docs/program-image.md`: [`ProgramImage::encode`] and
+//! [`ProgramImage::decode`] implement its container, [`ProgramImage::verify`] its load-time
+//! checks, [`code`] its instructions and [`std_blocks`] the instance layouts of the standard
+//! function blocks.
 
+pub mod code;
 mod elementary;
+mod encoding;
+mod image;
+pub mod std_blocks;
+mod types;
+mod verify;
 
+pub use code::{BinaryOp, CompareOp, Instr, Operand, StdBlock, StdFunction, Transfer, UnaryOp};
 pub use elementary::Elementary;
+pub use encoding::{FORMAT_VERSION, ImageError, ImageHash, MAGIC, MAX_IMAGE_BYTES, identity_of};
+pub use image::{
+    Info, InitRun, InitialValues, Layout, LineEntry, Located, Pou, PouKind, ProgramCall,
+    ProgramImage, Region, RetainLayout, Symbol, SymbolFlags, Task, TaskKind,
+};
+pub use types::{Member, StructKind, TypeDef, TypeId};
+pub use verify::MAX_REGION_BYTES;

@@ -1,0 +1,349 @@
+//! The target-independent code of a POU: instructions over pre-resolved memory operands
+//! (`docs/program-image.md` §7).
+
+use serde::{Deserialize, Serialize};
+
+use crate::Elementary;
+
+/// A place in memory that an instruction reads or writes, with its byte offset resolved by the
+/// compiler.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+pub enum Operand {
+    /// The data region: globals and program instances.
+    Global(u32),
+    /// The instance of the FB or program whose body runs (`THIS`).
+    Instance(u32),
+    /// The current stack frame: parameters and locals of functions, temporaries of every POU.
+    Frame(u32),
+    /// The constant pool of the image.
+    Const(u32),
+    /// The `%I` area.
+    Input(u32),
+    /// The `%Q` area.
+    Output(u32),
+    /// The `%M` area.
+    Memory(u32),
+}
+
+/// Operations with one operand.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[allow(missing_docs)] // Each is the IEC function of the same name.
+pub enum UnaryOp {
+    Neg,
+    Not,
+    Abs,
+    Sqrt,
+    Ln,
+    Log,
+    Exp,
+    Sin,
+    Cos,
+    Tan,
+    Asin,
+    Acos,
+    Atan,
+    /// Rounds a real to the nearest integer value, keeping the real type.
+    Round,
+}
+
+/// Operations with two operands of one type giving that type.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[allow(missing_docs)] // Each is the IEC operator or function of the same name.
+pub enum BinaryOp {
+    Add,
+    Sub,
+    Mul,
+    /// Integer division by zero is a fault; real division gives an infinity or NaN.
+    Div,
+    /// The remainder with the sign of the dividend; by zero is a fault.
+    Mod,
+    Expt,
+    And,
+    Or,
+    Xor,
+    Min,
+    Max,
+    /// Shifts and rotations take the count in the second operand, of the same type.
+    Shl,
+    Shr,
+    Rol,
+    Ror,
+}
+
+/// Comparisons, giving BOOL.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[allow(missing_docs)]
+pub enum CompareOp {
+    Eq,
+    Ne,
+    Lt,
+    Le,
+    Gt,
+    Ge,
+}
+
+/// A copy between the caller's frame and the callee's frame around a function call.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub struct Transfer {
+    /// The caller's place (read for inputs, written for outputs).
+    pub caller: Operand,
+    /// Byte offset in the callee's frame.
+    pub callee_offset: u32,
+    /// Bytes copied.
+    pub size: u32,
+}
+
+/// The standard function blocks the runtime implements natively; their instance layouts are
+/// in [`crate::std_blocks`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[allow(missing_docs)] // Each is the IEC function block of the same name.
+pub enum StdBlock {
+    Ton,
+    Tof,
+    Tp,
+    Ctu,
+    Ctd,
+    Ctud,
+    RTrig,
+    FTrig,
+    Sr,
+    Rs,
+}
+
+/// The standard functions on strings and times that are more than one instruction; the runtime
+/// implements them. Arguments and result are operands of the types the function's signature
+/// gives, strings with their capacity in characters.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[allow(missing_docs)] // Each is the IEC function of the same name.
+pub enum StdFunction {
+    Len,
+    Left,
+    Right,
+    Mid,
+    Concat,
+    Insert,
+    Delete,
+    Replace,
+    Find,
+}
+
+/// One instruction. A statement such as `x := a + b` is one instruction with three operands.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub enum Instr {
+    /// `dst := src` for one elementary value.
+    Move {
+        /// The type moved.
+        ty: Elementary,
+        /// Where to.
+        dst: Operand,
+        /// From where.
+        src: Operand,
+    },
+    /// Copies `size` bytes (structures, arrays, strings, instances).
+    Copy {
+        /// Bytes copied.
+        size: u32,
+        /// Where to.
+        dst: Operand,
+        /// From where.
+        src: Operand,
+    },
+    /// `dst := op(src)`.
+    Unary {
+        /// The operation.
+        op: UnaryOp,
+        /// The type of operand and result.
+        ty: Elementary,
+        /// The result.
+        dst: Operand,
+        /// The operand.
+        src: Operand,
+    },
+    /// `dst := a op b`.
+    Binary {
+        /// The operation.
+        op: BinaryOp,
+        /// The type of operands and result.
+        ty: Elementary,
+        /// The result.
+        dst: Operand,
+        /// The left operand.
+        a: Operand,
+        /// The right operand.
+        b: Operand,
+    },
+    /// `dst := a op b` giving BOOL.
+    Compare {
+        /// The comparison.
+        op: CompareOp,
+        /// The type of both operands.
+        ty: Elementary,
+        /// The BOOL result.
+        dst: Operand,
+        /// The left operand.
+        a: Operand,
+        /// The right operand.
+        b: Operand,
+    },
+    /// `dst := FROM_TO_TO(src)` with the IEC and CODESYS conversion rules.
+    Convert {
+        /// The source type.
+        from: Elementary,
+        /// The result type.
+        to: Elementary,
+        /// The result.
+        dst: Operand,
+        /// The value converted.
+        src: Operand,
+    },
+    /// `dst := TRUNC(src)`: a real to an integer, towards zero.
+    Trunc {
+        /// The real type.
+        from: Elementary,
+        /// The integer type.
+        to: Elementary,
+        /// The result.
+        dst: Operand,
+        /// The value.
+        src: Operand,
+    },
+    /// `dst := src.bit` (BOOL) for a bit of a value of type `ty`.
+    GetBit {
+        /// The type of `src`.
+        ty: Elementary,
+        /// The BOOL result.
+        dst: Operand,
+        /// The value read.
+        src: Operand,
+        /// The bit number, below the width of `ty`.
+        bit: u8,
+    },
+    /// `dst.bit := src` (BOOL), leaving the other bits of `dst` as they are.
+    SetBit {
+        /// The type of `dst`.
+        ty: Elementary,
+        /// The value changed.
+        dst: Operand,
+        /// The bit number, below the width of `ty`.
+        bit: u8,
+        /// The BOOL written.
+        src: Operand,
+    },
+    /// Continues at instruction `target` of the same POU.
+    Jump {
+        /// The instruction index.
+        target: u32,
+    },
+    /// Continues at `target` when the BOOL `cond` is TRUE.
+    JumpIf {
+        /// The BOOL tested.
+        cond: Operand,
+        /// The instruction index.
+        target: u32,
+    },
+    /// Continues at `target` when the BOOL `cond` is FALSE.
+    JumpIfNot {
+        /// The BOOL tested.
+        cond: Operand,
+        /// The instruction index.
+        target: u32,
+    },
+    /// `dst := ADR(place)`: a pointer value (§5.2).
+    Address {
+        /// The pointer written.
+        dst: Operand,
+        /// The place pointed to.
+        place: Operand,
+    },
+    /// `dst := base + (index - low) * stride`, a fault when `index` is outside
+    /// `low ..= low + count - 1`.
+    Element {
+        /// The pointer written.
+        dst: Operand,
+        /// A pointer to the array's first element.
+        base: Operand,
+        /// The index, of type `index_ty`.
+        index: Operand,
+        /// The integer type of the index.
+        index_ty: Elementary,
+        /// The lowest index.
+        low: i64,
+        /// The number of elements.
+        count: u64,
+        /// Bytes per element.
+        stride: u32,
+    },
+    /// `dst := base + offset` on pointers (a member reached through a pointer).
+    Offset {
+        /// The pointer written.
+        dst: Operand,
+        /// The pointer.
+        base: Operand,
+        /// Bytes added.
+        offset: u32,
+    },
+    /// Copies `size` bytes from where the pointer `ptr` points to `dst`.
+    Load {
+        /// Bytes copied.
+        size: u32,
+        /// Where to.
+        dst: Operand,
+        /// The pointer.
+        ptr: Operand,
+    },
+    /// Copies `size` bytes from `src` to where the pointer `ptr` points.
+    Store {
+        /// Bytes copied.
+        size: u32,
+        /// The pointer.
+        ptr: Operand,
+        /// From where.
+        src: Operand,
+    },
+    /// Calls a function or method: a new frame, the inputs copied in, the body run, the
+    /// outputs copied out.
+    CallFunction {
+        /// The callee's index in the image's POU list.
+        pou: u32,
+        /// The instance a method runs on, as a pointer operand; `None` for a function.
+        instance: Option<Operand>,
+        /// Copies into the new frame before the body runs.
+        inputs: Vec<Transfer>,
+        /// Copies out of the frame after the body returns.
+        outputs: Vec<Transfer>,
+    },
+    /// Runs the body of a function block or program on an instance.
+    CallBlock {
+        /// The callee's index in the image's POU list.
+        pou: u32,
+        /// The instance: the place itself, or a pointer to it when `indirect`.
+        instance: Operand,
+        /// Whether `instance` holds a pointer to the instance.
+        indirect: bool,
+    },
+    /// Runs a standard function block of the runtime on an instance laid out as
+    /// [`crate::std_blocks::layout`] says.
+    CallStdBlock {
+        /// The block.
+        block: StdBlock,
+        /// Whether the times are the long forms (`LTON`, `LTOF`, `LTP`).
+        long: bool,
+        /// The instance: the place itself, or a pointer to it when `indirect`.
+        instance: Operand,
+        /// Whether `instance` holds a pointer to the instance.
+        indirect: bool,
+    },
+    /// A string function of the runtime.
+    CallStdFunction {
+        /// The function.
+        function: StdFunction,
+        /// Whether the strings are WSTRING.
+        wide: bool,
+        /// The result and its capacity in characters (for string results).
+        dst: (Operand, u32),
+        /// The arguments, strings with their capacity in characters, integers as DINT.
+        args: Vec<(Operand, u32)>,
+    },
+    /// Returns from the POU.
+    Return,
+}

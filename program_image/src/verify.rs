@@ -1,0 +1,370 @@
+//! Load-time verification (`docs/program-image.md` §7.2): every reference inside an image is
+//! checked before anything runs, so a runtime can trust the image's shape and report a bad one
+//! by the name of what is wrong.
+
+use crate::code::{Instr, Operand, StdFunction};
+use crate::encoding::ImageError;
+use crate::image::{InitRun, PouKind, Region};
+use crate::types::TypeDef;
+use crate::{ProgramImage, std_blocks};
+
+/// The largest region accepted, so a hostile layout cannot make a runtime allocate without
+/// bound.
+pub const MAX_REGION_BYTES: u32 = 64 * 1024 * 1024;
+
+impl ProgramImage {
+    /// Checks that every index, offset and size refers to something that exists.
+    pub fn verify(&self) -> Result<(), ImageError> {
+        let layout = &self.layout;
+        for (name, size) in [
+            ("data_size", layout.data_size),
+            ("input_size", layout.input_size),
+            ("output_size", layout.output_size),
+            ("memory_size", layout.memory_size),
+            ("stack_size", layout.stack_size),
+        ] {
+            if size > MAX_REGION_BYTES {
+                return invalid(format!(
+                    "layout.{name} is {size} bytes, more than {MAX_REGION_BYTES}"
+                ));
+            }
+        }
+        self.verify_types()?;
+        self.verify_initial()?;
+        for (index, symbol) in self.symbols.iter().enumerate() {
+            let Some(ty) = self.types.get(symbol.ty as usize) else {
+                return invalid(format!("symbol {} ('{}') has no type", index, symbol.path));
+            };
+            let size = if symbol.bit.is_some() {
+                1
+            } else {
+                ty.size_bytes(&self.types)
+            };
+            let region = self.region_size(symbol.region);
+            if u64::from(symbol.offset) + size > u64::from(region) {
+                return invalid(format!("symbol '{}' lies outside its region", symbol.path));
+            }
+        }
+        for (index, pou) in self.pous.iter().enumerate() {
+            self.verify_pou(index)
+                .map_err(|message| ImageError::Invalid(format!("POU '{}': {message}", pou.name)))?;
+        }
+        for task in &self.tasks {
+            if task.priority > 31 {
+                return invalid(format!(
+                    "task '{}' has priority {}",
+                    task.name, task.priority
+                ));
+            }
+            if let Some(trigger) = task.trigger
+                && trigger as usize >= self.symbols.len()
+            {
+                return invalid(format!("task '{}' has no trigger symbol", task.name));
+            }
+            for call in &task.programs {
+                let program = self
+                    .pous
+                    .get(call.pou as usize)
+                    .filter(|pou| pou.kind == PouKind::Program);
+                let Some(program) = program else {
+                    return invalid(format!(
+                        "task '{}' calls a POU that is not a program",
+                        task.name
+                    ));
+                };
+                if u64::from(call.instance_offset) + u64::from(program.instance_size)
+                    > u64::from(layout.data_size)
+                {
+                    return invalid(format!(
+                        "task '{}' calls '{}' on an instance outside the data region",
+                        task.name, program.name
+                    ));
+                }
+            }
+        }
+        for (offset, length) in self.retain.retain.iter().chain(&self.retain.persistent) {
+            if u64::from(*offset) + u64::from(*length) > u64::from(layout.data_size) {
+                return invalid("a retain range lies outside the data region".to_owned());
+            }
+        }
+        Ok(())
+    }
+
+    /// The size of a symbol region.
+    pub fn region_size(&self, region: Region) -> u32 {
+        match region {
+            Region::Data => self.layout.data_size,
+            Region::Input => self.layout.input_size,
+            Region::Output => self.layout.output_size,
+            Region::Memory => self.layout.memory_size,
+        }
+    }
+
+    fn verify_types(&self) -> Result<(), ImageError> {
+        // A type refers only to types before it, so the table has no cycles.
+        for (index, ty) in self.types.iter().enumerate() {
+            let before = |id: u32| (id as usize) < index;
+            let ok = match ty {
+                TypeDef::Elementary(_) | TypeDef::String { .. } | TypeDef::WString { .. } => true,
+                TypeDef::Array { element, dims } => {
+                    before(*element) && !dims.is_empty() && dims.iter().all(|(l, h)| l <= h)
+                }
+                TypeDef::Struct { members, .. } => members.iter().all(|m| before(m.ty)),
+                TypeDef::Enum { .. } => true,
+                TypeDef::Pointer { target, .. } => {
+                    target.is_none_or(|t| (t as usize) < self.types.len())
+                }
+            };
+            if !ok {
+                return invalid(format!(
+                    "type {index} refers to a type that does not come before it"
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    fn verify_initial(&self) -> Result<(), ImageError> {
+        let check = |runs: &[InitRun], size: u32, name: &str| {
+            for run in runs {
+                if u64::from(run.offset) + run.bytes.len() as u64 > u64::from(size) {
+                    return invalid(format!("an initial value lies outside the {name} region"));
+                }
+            }
+            Ok(())
+        };
+        check(&self.initial.data, self.layout.data_size, "data")?;
+        check(&self.initial.input, self.layout.input_size, "%I")?;
+        check(&self.initial.output, self.layout.output_size, "%Q")?;
+        check(&self.initial.memory, self.layout.memory_size, "%M")
+    }
+
+    fn verify_pou(&self, index: usize) -> Result<(), String> {
+        let pou = &self.pous[index];
+        if pou.frame_size > self.layout.stack_size {
+            return Err(format!(
+                "its frame of {} bytes exceeds the stack",
+                pou.frame_size
+            ));
+        }
+        for run in &pou.frame_init {
+            if u64::from(run.offset) + run.bytes.len() as u64 > u64::from(pou.frame_size) {
+                return Err("an initial value lies outside its frame".to_owned());
+            }
+        }
+        for entry in &pou.lines {
+            if entry.file as usize >= self.sources.len() {
+                return Err("its line table names an unknown file".to_owned());
+            }
+        }
+        let operand = |op: Operand, size: u64, word: usize| -> Result<(), String> {
+            let (offset, limit) = match op {
+                Operand::Global(o) => (o, self.layout.data_size),
+                Operand::Instance(o) => (o, pou.instance_size),
+                Operand::Frame(o) => (o, pou.frame_size),
+                Operand::Const(o) => (o, self.constants.len() as u32),
+                Operand::Input(o) => (o, self.layout.input_size),
+                Operand::Output(o) => (o, self.layout.output_size),
+                Operand::Memory(o) => (o, self.layout.memory_size),
+            };
+            if u64::from(offset) + size > u64::from(limit) {
+                return Err(format!(
+                    "instruction {word}: operand {op:?} of {size} bytes is outside its region"
+                ));
+            }
+            Ok(())
+        };
+        let target = |t: u32, word: usize| {
+            if (t as usize) < pou.code.len() {
+                Ok(())
+            } else {
+                Err(format!(
+                    "instruction {word}: jump target {t} is outside the code"
+                ))
+            }
+        };
+        let callee = |p: u32, word: usize| {
+            self.pous
+                .get(p as usize)
+                .ok_or_else(|| format!("instruction {word}: calls POU {p}, which does not exist"))
+        };
+        for (word, instr) in pou.code.iter().enumerate() {
+            match instr {
+                Instr::Move { ty, dst, src } => {
+                    let size = u64::from(ty.size_bytes());
+                    operand(*dst, size, word)?;
+                    operand(*src, size, word)?;
+                }
+                Instr::Copy { size, dst, src } => {
+                    operand(*dst, u64::from(*size), word)?;
+                    operand(*src, u64::from(*size), word)?;
+                }
+                Instr::Unary { ty, dst, src, .. } => {
+                    let size = u64::from(ty.size_bytes());
+                    operand(*dst, size, word)?;
+                    operand(*src, size, word)?;
+                }
+                Instr::Binary { ty, dst, a, b, .. } => {
+                    let size = u64::from(ty.size_bytes());
+                    operand(*dst, size, word)?;
+                    operand(*a, size, word)?;
+                    operand(*b, size, word)?;
+                }
+                Instr::Compare { ty, dst, a, b, .. } => {
+                    let size = u64::from(ty.size_bytes());
+                    operand(*dst, 1, word)?;
+                    operand(*a, size, word)?;
+                    operand(*b, size, word)?;
+                }
+                Instr::Convert { from, to, dst, src } | Instr::Trunc { from, to, dst, src } => {
+                    operand(*dst, u64::from(to.size_bytes()), word)?;
+                    operand(*src, u64::from(from.size_bytes()), word)?;
+                }
+                Instr::GetBit { ty, dst, src, bit } => {
+                    if u32::from(*bit) >= ty.size_bytes() * 8 {
+                        return Err(format!("instruction {word}: bit {bit} of a {}", ty.name()));
+                    }
+                    operand(*dst, 1, word)?;
+                    operand(*src, u64::from(ty.size_bytes()), word)?;
+                }
+                Instr::SetBit { ty, dst, bit, src } => {
+                    if u32::from(*bit) >= ty.size_bytes() * 8 {
+                        return Err(format!("instruction {word}: bit {bit} of a {}", ty.name()));
+                    }
+                    operand(*dst, u64::from(ty.size_bytes()), word)?;
+                    operand(*src, 1, word)?;
+                }
+                Instr::Jump { target: t } => target(*t, word)?,
+                Instr::JumpIf { cond, target: t } | Instr::JumpIfNot { cond, target: t } => {
+                    operand(*cond, 1, word)?;
+                    target(*t, word)?;
+                }
+                Instr::Address { dst, place } => {
+                    operand(*dst, 8, word)?;
+                    operand(*place, 0, word)?;
+                }
+                Instr::Element {
+                    dst,
+                    base,
+                    index,
+                    index_ty,
+                    count,
+                    ..
+                } => {
+                    if *count == 0 {
+                        return Err(format!("instruction {word}: an array of no elements"));
+                    }
+                    operand(*dst, 8, word)?;
+                    operand(*base, 8, word)?;
+                    operand(*index, u64::from(index_ty.size_bytes()), word)?;
+                }
+                Instr::Offset { dst, base, .. } => {
+                    operand(*dst, 8, word)?;
+                    operand(*base, 8, word)?;
+                }
+                Instr::Load { size, dst, ptr } => {
+                    operand(*dst, u64::from(*size), word)?;
+                    operand(*ptr, 8, word)?;
+                }
+                Instr::Store { size, ptr, src } => {
+                    operand(*ptr, 8, word)?;
+                    operand(*src, u64::from(*size), word)?;
+                }
+                Instr::CallFunction {
+                    pou: p,
+                    instance,
+                    inputs,
+                    outputs,
+                } => {
+                    let callee = callee(*p, word)?;
+                    if !matches!(callee.kind, PouKind::Function | PouKind::Method) {
+                        return Err(format!(
+                            "instruction {word}: calls '{}' as a function",
+                            callee.name
+                        ));
+                    }
+                    if let Some(instance) = instance {
+                        operand(*instance, 8, word)?;
+                    }
+                    for transfer in inputs.iter().chain(outputs) {
+                        operand(transfer.caller, u64::from(transfer.size), word)?;
+                        if u64::from(transfer.callee_offset) + u64::from(transfer.size)
+                            > u64::from(callee.frame_size)
+                        {
+                            return Err(format!(
+                                "instruction {word}: a parameter lies outside the frame of '{}'",
+                                callee.name
+                            ));
+                        }
+                    }
+                }
+                Instr::CallBlock {
+                    pou: p,
+                    instance,
+                    indirect,
+                } => {
+                    let callee = callee(*p, word)?;
+                    if !matches!(
+                        callee.kind,
+                        PouKind::Program | PouKind::FunctionBlock | PouKind::Action
+                    ) {
+                        return Err(format!(
+                            "instruction {word}: calls '{}' as a block",
+                            callee.name
+                        ));
+                    }
+                    let size = if *indirect {
+                        8
+                    } else {
+                        u64::from(callee.instance_size)
+                    };
+                    operand(*instance, size, word)?;
+                }
+                Instr::CallStdBlock {
+                    block,
+                    long,
+                    instance,
+                    indirect,
+                } => {
+                    let size = if *indirect {
+                        8
+                    } else {
+                        u64::from(std_blocks::layout(*block, *long).size)
+                    };
+                    operand(*instance, size, word)?;
+                }
+                Instr::CallStdFunction {
+                    function,
+                    wide,
+                    dst,
+                    args,
+                } => {
+                    let unit = if *wide { 2 } else { 1 };
+                    let size = |capacity: u32| {
+                        if capacity == 0 {
+                            4
+                        } else {
+                            (u64::from(capacity) + 1) * unit
+                        }
+                    };
+                    let integer_result = matches!(function, StdFunction::Len | StdFunction::Find);
+                    if integer_result != (dst.1 == 0) {
+                        return Err(format!(
+                            "instruction {word}: {function:?} gives the wrong kind of result"
+                        ));
+                    }
+                    operand(dst.0, size(dst.1), word)?;
+                    for (arg, capacity) in args {
+                        operand(*arg, size(*capacity), word)?;
+                    }
+                }
+                Instr::Return => {}
+            }
+        }
+        Ok(())
+    }
+}
+
+fn invalid<T>(message: String) -> Result<T, ImageError> {
+    Err(ImageError::Invalid(message))
+}

@@ -1,0 +1,209 @@
+//! The execution state of one task while its programs run: memory, the current instance and
+//! frame, the stack pointer, the task clock and the watchdog.
+
+use std::time::Instant;
+
+use super::fault::FaultKind;
+use super::lower::{Compiled, Flow};
+use super::memory::Regions;
+use super::scalar::Scalar;
+
+/// Which base an [`Addr`] is relative to.
+pub(crate) const ABSOLUTE: u8 = 0;
+/// The current instance (`THIS`).
+pub(crate) const INSTANCE: u8 = 1;
+/// The current frame.
+pub(crate) const FRAME: u8 = 2;
+
+/// An operand resolved at load time: a base and a byte offset from it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct Addr {
+    pub(crate) base: u8,
+    pub(crate) offset: u32,
+}
+
+/// How many backward jumps run between two looks at the clock.
+const WATCHDOG_STRIDE: u32 = 4096;
+
+/// The deepest nesting of calls, whatever the stack size, so recursion ends as a fault long
+/// before the thread's own stack would.
+pub(crate) const MAX_CALL_DEPTH: u32 = 2000;
+
+/// One task's run through its programs.
+pub(crate) struct Exec<'a> {
+    pub(crate) mem: &'a mut [u8],
+    /// Absolute, instance and frame bases, indexed by [`Addr::base`].
+    pub(crate) bases: [usize; 3],
+    pub(crate) sp: usize,
+    pub(crate) stack_end: usize,
+    pub(crate) regions: &'a Regions,
+    pub(crate) code: &'a Compiled,
+    /// The task clock in nanoseconds, read by the timers.
+    pub(crate) now_ns: i64,
+    pub(crate) deadline: Option<(Instant, u64)>,
+    budget: u32,
+    depth: u32,
+    /// Where the first fault happened: POU index and instruction index.
+    pub(crate) fault_at: Option<(usize, usize)>,
+}
+
+impl<'a> Exec<'a> {
+    /// An execution over `mem` whose stack starts at `stack_start`.
+    pub(crate) fn new(
+        mem: &'a mut [u8],
+        regions: &'a Regions,
+        code: &'a Compiled,
+        stack_start: usize,
+        stack_end: usize,
+        now_ns: i64,
+        deadline: Option<(Instant, u64)>,
+    ) -> Self {
+        Self {
+            mem,
+            bases: [0, 0, stack_start],
+            sp: stack_start,
+            stack_end,
+            regions,
+            code,
+            now_ns,
+            deadline,
+            budget: WATCHDOG_STRIDE,
+            depth: 0,
+            fault_at: None,
+        }
+    }
+
+    /// The absolute offset of an operand.
+    #[inline(always)]
+    pub(crate) fn at(&self, addr: Addr) -> usize {
+        self.bases[usize::from(addr.base)] + addr.offset as usize
+    }
+
+    /// Reads a value.
+    #[inline(always)]
+    pub(crate) fn get<T: Scalar>(&self, addr: Addr) -> Result<T, FaultKind> {
+        let at = self.at(addr);
+        match self.mem.get(at..at + T::SIZE) {
+            Some(bytes) => Ok(T::read(bytes)),
+            None => Err(FaultKind::Memory),
+        }
+    }
+
+    /// Writes a value.
+    #[inline(always)]
+    pub(crate) fn set<T: Scalar>(&mut self, addr: Addr, value: T) -> Result<(), FaultKind> {
+        let at = self.at(addr);
+        match self.mem.get_mut(at..at + T::SIZE) {
+            Some(bytes) => {
+                value.write(bytes);
+                Ok(())
+            }
+            None => Err(FaultKind::Memory),
+        }
+    }
+
+    /// Copies `size` bytes between absolute offsets.
+    pub(crate) fn copy(&mut self, dst: usize, src: usize, size: usize) -> Result<(), FaultKind> {
+        if src.checked_add(size).is_none_or(|end| end > self.mem.len())
+            || dst.checked_add(size).is_none_or(|end| end > self.mem.len())
+        {
+            return Err(FaultKind::Memory);
+        }
+        self.mem.copy_within(src..src + size, dst);
+        Ok(())
+    }
+
+    /// The pointer value of an absolute offset.
+    pub(crate) fn pointer_to(&self, at: usize) -> u64 {
+        self.regions.pointer_to(at, self.stack_end)
+    }
+
+    /// The absolute offset a pointer refers to, checked for `size` bytes.
+    pub(crate) fn deref(&self, pointer: u64, size: usize) -> Result<usize, FaultKind> {
+        self.regions.resolve(pointer, size, self.stack_end)
+    }
+
+    /// Counts a backward jump, and looks at the clock every so often.
+    #[inline(always)]
+    pub(crate) fn tick(&mut self) -> Result<(), FaultKind> {
+        self.budget -= 1;
+        if self.budget == 0 {
+            self.budget = WATCHDOG_STRIDE;
+            if let Some((deadline, limit_us)) = self.deadline
+                && Instant::now() > deadline
+            {
+                return Err(FaultKind::Watchdog { limit_us });
+            }
+        }
+        Ok(())
+    }
+
+    /// Runs POU `index` with the current bases.
+    pub(crate) fn run(&mut self, index: usize) -> Result<(), FaultKind> {
+        let code = self.code;
+        let Some(pou) = code.pous.get(index) else {
+            return Err(FaultKind::Memory);
+        };
+        let ops = &pou.ops;
+        let mut pc = 0usize;
+        while let Some(op) = ops.get(pc) {
+            match op(self) {
+                Ok(Flow::Next) => pc += 1,
+                Ok(Flow::Jump(target)) => {
+                    let target = target as usize;
+                    if target <= pc {
+                        if let Err(fault) = self.tick() {
+                            self.fault_at.get_or_insert((index, pc));
+                            return Err(fault);
+                        }
+                    }
+                    pc = target;
+                }
+                Ok(Flow::Return) => break,
+                Err(fault) => {
+                    self.fault_at.get_or_insert((index, pc));
+                    return Err(fault);
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Pushes a frame for POU `index`, initialised from its template, and returns its start.
+    pub(crate) fn push_frame(&mut self, index: usize) -> Result<usize, FaultKind> {
+        let code = self.code;
+        let pou = code.pous.get(index).ok_or(FaultKind::Memory)?;
+        let frame = self.sp;
+        let end = frame + pou.frame_size;
+        if end > self.stack_end || self.depth >= MAX_CALL_DEPTH {
+            return Err(FaultKind::StackOverflow);
+        }
+        let bytes = self.mem.get_mut(frame..end).ok_or(FaultKind::Memory)?;
+        bytes.fill(0);
+        for (offset, init) in &pou.frame_init {
+            if let Some(place) = bytes.get_mut(*offset..*offset + init.len()) {
+                place.copy_from_slice(init);
+            }
+        }
+        self.sp = end;
+        self.depth += 1;
+        Ok(frame)
+    }
+
+    /// Undoes the depth count of [`Exec::push_frame`].
+    pub(crate) fn pop_depth(&mut self) {
+        self.depth = self.depth.saturating_sub(1);
+    }
+
+    /// Runs POU `index` on the instance at `instance` with a new frame.
+    pub(crate) fn call_block(&mut self, index: usize, instance: usize) -> Result<Flow, FaultKind> {
+        let saved = (self.bases, self.sp);
+        let frame = self.push_frame(index)?;
+        self.bases = [0, instance, frame];
+        let result = self.run(index);
+        self.bases = saved.0;
+        self.sp = saved.1;
+        self.pop_depth();
+        result.map(|()| Flow::Next)
+    }
+}

@@ -1,0 +1,548 @@
+//! Turns verified image code into the engine's own form: one closure per instruction with its
+//! operands resolved to a base and an offset, and the type's arithmetic chosen once.
+
+use program_image::Elementary::{self as E};
+use program_image::{BinaryOp, CompareOp, Instr, Operand, ProgramImage, UnaryOp};
+
+use super::blocks;
+use super::convert;
+use super::exec::{ABSOLUTE, Addr, Exec, FRAME, INSTANCE};
+use super::fault::FaultKind;
+use super::memory::Regions;
+use super::scalar::{Arith, Bits, Real, Scalar};
+use super::strings;
+
+/// What the next instruction is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Flow {
+    Next,
+    Jump(u32),
+    Return,
+}
+
+/// One executable instruction.
+pub(crate) type Op = Box<dyn Fn(&mut Exec<'_>) -> Result<Flow, FaultKind> + Send + Sync>;
+
+/// A POU ready to run.
+pub(crate) struct CompiledPou {
+    pub(crate) ops: Vec<Op>,
+    pub(crate) frame_size: usize,
+    pub(crate) frame_init: Vec<(usize, Vec<u8>)>,
+}
+
+/// Every POU of an image ready to run.
+pub(crate) struct Compiled {
+    pub(crate) pous: Vec<CompiledPou>,
+}
+
+/// Why an instruction cannot run (a type the operation does not apply to).
+#[derive(Debug, thiserror::Error)]
+#[error("POU '{pou}', instruction {index}: {message}")]
+pub struct LowerError {
+    pou: String,
+    index: usize,
+    message: String,
+}
+
+impl Compiled {
+    /// Lowers every POU of a verified image.
+    pub(crate) fn new(image: &ProgramImage, regions: &Regions) -> Result<Self, LowerError> {
+        let mut pous = Vec::with_capacity(image.pous.len());
+        for pou in &image.pous {
+            let mut ops = Vec::with_capacity(pou.code.len());
+            for (index, instr) in pou.code.iter().enumerate() {
+                ops.push(lower(instr, regions).map_err(|message| LowerError {
+                    pou: pou.name.clone(),
+                    index,
+                    message,
+                })?);
+            }
+            pous.push(CompiledPou {
+                ops,
+                frame_size: pou.frame_size as usize,
+                frame_init: pou
+                    .frame_init
+                    .iter()
+                    .map(|run| (run.offset as usize, run.bytes.clone()))
+                    .collect(),
+            });
+        }
+        Ok(Self { pous })
+    }
+}
+
+fn addr(operand: Operand, regions: &Regions) -> Addr {
+    let absolute = |start: usize, offset: u32| Addr {
+        base: ABSOLUTE,
+        offset: (start + offset as usize) as u32,
+    };
+    match operand {
+        Operand::Global(o) => absolute(regions.data, o),
+        Operand::Input(o) => absolute(regions.input, o),
+        Operand::Output(o) => absolute(regions.output, o),
+        Operand::Memory(o) => absolute(regions.memory, o),
+        Operand::Const(o) => absolute(regions.constants, o),
+        Operand::Instance(o) => Addr {
+            base: INSTANCE,
+            offset: o,
+        },
+        Operand::Frame(o) => Addr {
+            base: FRAME,
+            offset: o,
+        },
+    }
+}
+
+/// Calls `$f::<T>($args)` with the Rust type that holds values of the elementary type `$ty`,
+/// for every type (`all`), for those with arithmetic (`num`), bit operations (`bits`) or real
+/// functions (`real`).
+macro_rules! dispatch {
+    (all $ty:expr, $f:ident($($arg:expr),*)) => {
+        match $ty {
+            E::Real => $f::<f32>($($arg),*),
+            E::Lreal => $f::<f64>($($arg),*),
+            other => dispatch!(bits other, $f($($arg),*)),
+        }
+    };
+    (num $ty:expr, $f:ident($($arg:expr),*)) => {
+        match $ty {
+            E::Real => Ok($f::<f32>($($arg),*)),
+            E::Lreal => Ok($f::<f64>($($arg),*)),
+            E::Bool => Err(format!("arithmetic on {}", $ty.name())),
+            other => Ok(dispatch!(bits other, $f($($arg),*))),
+        }
+    };
+    (bits $ty:expr, $f:ident($($arg:expr),*)) => {
+        match $ty {
+            E::Bool | E::Byte | E::Usint | E::Char => $f::<u8>($($arg),*),
+            E::Word | E::Uint | E::Wchar => $f::<u16>($($arg),*),
+            E::Dword | E::Udint | E::Date | E::TimeOfDay | E::DateAndTime => $f::<u32>($($arg),*),
+            E::Lword | E::Ulint => $f::<u64>($($arg),*),
+            E::Sint => $f::<i8>($($arg),*),
+            E::Int => $f::<i16>($($arg),*),
+            E::Dint | E::Time => $f::<i32>($($arg),*),
+            E::Lint | E::Ltime | E::Ldate | E::LtimeOfDay | E::LdateAndTime => $f::<i64>($($arg),*),
+            // Reals reach here only through the arms above; on their bits the operations
+            // are still well defined.
+            E::Real => $f::<u32>($($arg),*),
+            E::Lreal => $f::<u64>($($arg),*),
+        }
+    };
+}
+
+fn lower(instr: &Instr, regions: &Regions) -> Result<Op, String> {
+    let a = |operand: &Operand| addr(*operand, regions);
+    Ok(match instr {
+        Instr::Move { ty, dst, src } => dispatch!(all ty, mov(a(dst), a(src))),
+        Instr::Copy { size, dst, src } => {
+            let (dst, src, size) = (a(dst), a(src), *size as usize);
+            Box::new(move |x| {
+                let (d, s) = (x.at(dst), x.at(src));
+                x.copy(d, s, size)?;
+                Ok(Flow::Next)
+            })
+        }
+        Instr::Unary { op, ty, dst, src } => unary(*op, *ty, a(dst), a(src))?,
+        Instr::Binary {
+            op,
+            ty,
+            dst,
+            a: l,
+            b: r,
+        } => binary(*op, *ty, a(dst), a(l), a(r))?,
+        Instr::Compare {
+            op,
+            ty,
+            dst,
+            a: l,
+            b: r,
+        } => {
+            dispatch!(all ty, compare(*op, a(dst), a(l), a(r)))
+        }
+        Instr::Convert { from, to, dst, src } => {
+            let (from, to, dst, src) = (*from, *to, a(dst), a(src));
+            Box::new(move |x| {
+                let raw = read_raw(x, src, from)?;
+                write_raw(x, dst, to, convert::convert(raw, from, to))?;
+                Ok(Flow::Next)
+            })
+        }
+        Instr::Trunc { from, to, dst, src } => {
+            let (from, to, dst, src) = (*from, *to, a(dst), a(src));
+            Box::new(move |x| {
+                let raw = read_raw(x, src, from)?;
+                write_raw(x, dst, to, convert::trunc(raw, from, to))?;
+                Ok(Flow::Next)
+            })
+        }
+        Instr::GetBit { ty, dst, src, bit } => {
+            let (ty, dst, src, bit) = (*ty, a(dst), a(src), *bit);
+            Box::new(move |x| {
+                let raw = read_raw(x, src, ty)?;
+                x.set::<u8>(dst, ((raw >> bit) & 1) as u8)?;
+                Ok(Flow::Next)
+            })
+        }
+        Instr::SetBit { ty, dst, bit, src } => {
+            let (ty, dst, src, bit) = (*ty, a(dst), a(src), *bit);
+            Box::new(move |x| {
+                let raw = read_raw(x, dst, ty)?;
+                let on = x.get::<u8>(src)? != 0;
+                let raw = if on {
+                    raw | (1 << bit)
+                } else {
+                    raw & !(1 << bit)
+                };
+                write_raw(x, dst, ty, raw)?;
+                Ok(Flow::Next)
+            })
+        }
+        Instr::Jump { target } => {
+            let target = *target;
+            Box::new(move |_| Ok(Flow::Jump(target)))
+        }
+        Instr::JumpIf { cond, target } => {
+            let (cond, target) = (a(cond), *target);
+            Box::new(move |x| {
+                Ok(if x.get::<u8>(cond)? != 0 {
+                    Flow::Jump(target)
+                } else {
+                    Flow::Next
+                })
+            })
+        }
+        Instr::JumpIfNot { cond, target } => {
+            let (cond, target) = (a(cond), *target);
+            Box::new(move |x| {
+                Ok(if x.get::<u8>(cond)? == 0 {
+                    Flow::Jump(target)
+                } else {
+                    Flow::Next
+                })
+            })
+        }
+        Instr::Address { dst, place } => {
+            let (dst, place) = (a(dst), a(place));
+            Box::new(move |x| {
+                let pointer = x.pointer_to(x.at(place));
+                x.set::<u64>(dst, pointer)?;
+                Ok(Flow::Next)
+            })
+        }
+        Instr::Element {
+            dst,
+            base,
+            index,
+            index_ty,
+            low,
+            count,
+            stride,
+        } => {
+            let (dst, base, index, index_ty) = (a(dst), a(base), a(index), *index_ty);
+            let (low, count, stride) = (*low, *count, u64::from(*stride));
+            let high = low.saturating_add(count as i64 - 1);
+            Box::new(move |x| {
+                let raw = read_raw(x, index, index_ty)?;
+                let i = sign_extend(raw, index_ty);
+                if i < low || i > high {
+                    return Err(FaultKind::IndexOutOfBounds {
+                        index: i,
+                        low,
+                        high,
+                    });
+                }
+                let pointer = x.get::<u64>(base)?;
+                let moved = pointer.wrapping_add((i - low) as u64 * stride);
+                x.set::<u64>(dst, moved)?;
+                Ok(Flow::Next)
+            })
+        }
+        Instr::Offset { dst, base, offset } => {
+            let (dst, base, offset) = (a(dst), a(base), u64::from(*offset));
+            Box::new(move |x| {
+                let pointer = x.get::<u64>(base)?;
+                if pointer >> 56 == 0 {
+                    return Err(FaultKind::NullPointer);
+                }
+                x.set::<u64>(dst, pointer.wrapping_add(offset))?;
+                Ok(Flow::Next)
+            })
+        }
+        Instr::Load { size, dst, ptr } => {
+            let (size, dst, ptr) = (*size as usize, a(dst), a(ptr));
+            Box::new(move |x| {
+                let from = x.deref(x.get::<u64>(ptr)?, size)?;
+                let to = x.at(dst);
+                x.copy(to, from, size)?;
+                Ok(Flow::Next)
+            })
+        }
+        Instr::Store { size, ptr, src } => {
+            let (size, ptr, src) = (*size as usize, a(ptr), a(src));
+            Box::new(move |x| {
+                let to = x.deref(x.get::<u64>(ptr)?, size)?;
+                let from = x.at(src);
+                x.copy(to, from, size)?;
+                Ok(Flow::Next)
+            })
+        }
+        Instr::CallBlock {
+            pou,
+            instance,
+            indirect,
+        } => {
+            let (pou, instance, indirect) = (*pou as usize, a(instance), *indirect);
+            Box::new(move |x| {
+                let at = if indirect {
+                    x.deref(x.get::<u64>(instance)?, 0)?
+                } else {
+                    x.at(instance)
+                };
+                x.call_block(pou, at)
+            })
+        }
+        Instr::CallFunction {
+            pou,
+            instance,
+            inputs,
+            outputs,
+        } => {
+            let pou = *pou as usize;
+            let instance = instance.map(|operand| a(&operand));
+            let inputs: Vec<(Addr, usize, usize)> = inputs
+                .iter()
+                .map(|t| (a(&t.caller), t.callee_offset as usize, t.size as usize))
+                .collect();
+            let outputs: Vec<(Addr, usize, usize)> = outputs
+                .iter()
+                .map(|t| (a(&t.caller), t.callee_offset as usize, t.size as usize))
+                .collect();
+            Box::new(move |x| {
+                let this = match instance {
+                    Some(pointer) => x.deref(x.get::<u64>(pointer)?, 0)?,
+                    None => x.bases[usize::from(INSTANCE)],
+                };
+                let saved = (x.bases, x.sp);
+                let frame = x.push_frame(pou)?;
+                for (caller, offset, size) in &inputs {
+                    let from = x.at(*caller);
+                    x.copy(frame + offset, from, *size)?;
+                }
+                x.bases = [0, this, frame];
+                let result = x.run(pou);
+                x.bases = saved.0;
+                if result.is_ok() {
+                    for (caller, offset, size) in &outputs {
+                        let to = x.at(*caller);
+                        x.copy(to, frame + offset, *size)?;
+                    }
+                }
+                x.sp = saved.1;
+                x.pop_depth();
+                result.map(|()| Flow::Next)
+            })
+        }
+        Instr::CallStdBlock {
+            block,
+            long,
+            instance,
+            indirect,
+        } => blocks::lower(*block, *long, a(instance), *indirect),
+        Instr::CallStdFunction {
+            function,
+            wide,
+            dst,
+            args,
+        } => strings::lower(
+            *function,
+            *wide,
+            (a(&dst.0), dst.1),
+            args.iter()
+                .map(|(operand, capacity)| (a(operand), *capacity))
+                .collect(),
+        )?,
+        Instr::Return => Box::new(|_| Ok(Flow::Return)),
+    })
+}
+
+/// Reads a value of type `ty` as raw bits.
+pub(crate) fn read_raw(x: &Exec<'_>, at: Addr, ty: E) -> Result<u64, FaultKind> {
+    Ok(match ty.size_bytes() {
+        1 => u64::from(x.get::<u8>(at)?),
+        2 => u64::from(x.get::<u16>(at)?),
+        4 => u64::from(x.get::<u32>(at)?),
+        _ => x.get::<u64>(at)?,
+    })
+}
+
+/// Writes raw bits as a value of type `ty`.
+pub(crate) fn write_raw(x: &mut Exec<'_>, at: Addr, ty: E, raw: u64) -> Result<(), FaultKind> {
+    match ty.size_bytes() {
+        1 => x.set::<u8>(at, raw as u8),
+        2 => x.set::<u16>(at, raw as u16),
+        4 => x.set::<u32>(at, raw as u32),
+        _ => x.set::<u64>(at, raw),
+    }
+}
+
+/// Raw bits of an integer type as a signed number.
+pub(crate) fn sign_extend(raw: u64, ty: E) -> i64 {
+    let shift = 64 - ty.size_bytes() * 8;
+    if ty.is_signed() {
+        ((raw << shift) as i64) >> shift
+    } else {
+        raw as i64
+    }
+}
+
+fn mov<T: Scalar>(dst: Addr, src: Addr) -> Op {
+    Box::new(move |x| {
+        let value = x.get::<T>(src)?;
+        x.set(dst, value)?;
+        Ok(Flow::Next)
+    })
+}
+
+fn compare<T: Scalar>(op: CompareOp, dst: Addr, a: Addr, b: Addr) -> Op {
+    macro_rules! cmp {
+        ($e:tt) => {
+            Box::new(move |x| {
+                let (l, r) = (x.get::<T>(a)?, x.get::<T>(b)?);
+                x.set::<u8>(dst, u8::from(l $e r))?;
+                Ok(Flow::Next)
+            })
+        };
+    }
+    match op {
+        CompareOp::Eq => cmp!(==),
+        CompareOp::Ne => cmp!(!=),
+        CompareOp::Lt => cmp!(<),
+        CompareOp::Le => cmp!(<=),
+        CompareOp::Gt => cmp!(>),
+        CompareOp::Ge => cmp!(>=),
+    }
+}
+
+fn unary(op: UnaryOp, ty: E, dst: Addr, src: Addr) -> Result<Op, String> {
+    match op {
+        UnaryOp::Not if ty == E::Bool => Ok(Box::new(move |x| {
+            let value = x.get::<u8>(src)?;
+            x.set::<u8>(dst, u8::from(value == 0))?;
+            Ok(Flow::Next)
+        })),
+        UnaryOp::Not if !ty.is_real() => Ok(dispatch!(bits ty, not_op(dst, src))),
+        UnaryOp::Neg => dispatch!(num ty, arith1(dst, src, Arith::neg)),
+        UnaryOp::Abs => dispatch!(num ty, arith1(dst, src, Arith::abs)),
+        _ if ty == E::Real => Ok(real1::<f32>(op, dst, src)),
+        _ if ty == E::Lreal => Ok(real1::<f64>(op, dst, src)),
+        _ => Err(format!("{op:?} on {}", ty.name())),
+    }
+}
+
+fn not_op<T: Bits>(dst: Addr, src: Addr) -> Op {
+    Box::new(move |x| {
+        let value = x.get::<T>(src)?.not();
+        x.set(dst, value)?;
+        Ok(Flow::Next)
+    })
+}
+
+fn arith1<T: Arith>(dst: Addr, src: Addr, f: fn(T) -> T) -> Op {
+    Box::new(move |x| {
+        let value = f(x.get::<T>(src)?);
+        x.set(dst, value)?;
+        Ok(Flow::Next)
+    })
+}
+
+fn real1<T: Real>(op: UnaryOp, dst: Addr, src: Addr) -> Op {
+    let f: fn(f64) -> f64 = match op {
+        UnaryOp::Sqrt => f64::sqrt,
+        UnaryOp::Ln => f64::ln,
+        UnaryOp::Log => f64::log10,
+        UnaryOp::Exp => f64::exp,
+        UnaryOp::Sin => f64::sin,
+        UnaryOp::Cos => f64::cos,
+        UnaryOp::Tan => f64::tan,
+        UnaryOp::Asin => f64::asin,
+        UnaryOp::Acos => f64::acos,
+        UnaryOp::Atan => f64::atan,
+        UnaryOp::Round => f64::round,
+        UnaryOp::Neg => |v| -v,
+        UnaryOp::Abs => f64::abs,
+        UnaryOp::Not => |v| v,
+    };
+    Box::new(move |x| {
+        let value = x.get::<T>(src)?.apply(f);
+        x.set(dst, value)?;
+        Ok(Flow::Next)
+    })
+}
+
+fn binary(op: BinaryOp, ty: E, dst: Addr, a: Addr, b: Addr) -> Result<Op, String> {
+    let bit_op = matches!(
+        op,
+        BinaryOp::And
+            | BinaryOp::Or
+            | BinaryOp::Xor
+            | BinaryOp::Shl
+            | BinaryOp::Shr
+            | BinaryOp::Rol
+            | BinaryOp::Ror
+    );
+    if bit_op {
+        if ty.is_real() {
+            return Err(format!("{op:?} on {}", ty.name()));
+        }
+        return Ok(dispatch!(bits ty, bits2(op, dst, a, b)));
+    }
+    dispatch!(num ty, arith2(op, dst, a, b))
+}
+
+fn bits2<T: Bits>(op: BinaryOp, dst: Addr, a: Addr, b: Addr) -> Op {
+    let f: fn(T, T) -> T = match op {
+        BinaryOp::And => Bits::and,
+        BinaryOp::Or => Bits::or,
+        BinaryOp::Xor => Bits::xor,
+        BinaryOp::Shl => Bits::shl,
+        BinaryOp::Shr => Bits::shr,
+        BinaryOp::Rol => Bits::rol,
+        _ => Bits::ror,
+    };
+    Box::new(move |x| {
+        let value = f(x.get::<T>(a)?, x.get::<T>(b)?);
+        x.set(dst, value)?;
+        Ok(Flow::Next)
+    })
+}
+
+fn arith2<T: Arith>(op: BinaryOp, dst: Addr, a: Addr, b: Addr) -> Op {
+    macro_rules! total {
+        ($f:expr) => {
+            Box::new(move |x| {
+                let value = $f(x.get::<T>(a)?, x.get::<T>(b)?);
+                x.set(dst, value)?;
+                Ok(Flow::Next)
+            })
+        };
+    }
+    macro_rules! partial {
+        ($f:expr) => {
+            Box::new(move |x| {
+                let value = $f(x.get::<T>(a)?, x.get::<T>(b)?).ok_or(FaultKind::DivisionByZero)?;
+                x.set(dst, value)?;
+                Ok(Flow::Next)
+            })
+        };
+    }
+    match op {
+        BinaryOp::Add => total!(T::add),
+        BinaryOp::Sub => total!(T::sub),
+        BinaryOp::Mul => total!(T::mul),
+        BinaryOp::Div => partial!(T::div),
+        BinaryOp::Mod => partial!(T::rem),
+        BinaryOp::Expt => total!(T::expt),
+        BinaryOp::Min => total!(|l: T, r: T| if r < l { r } else { l }),
+        _ => total!(|l: T, r: T| if r > l { r } else { l }),
+    }
+}
