@@ -153,7 +153,7 @@ mod tests {
         let lton = layout(StdBlock::Ton, true);
         assert_eq!(
             lton.member("et").map(|m| (m.ty, m.offset)),
-            Some((Ltime, 16))
+            Some((Ltime, 24))
         );
     }
 
