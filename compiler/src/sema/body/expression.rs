@@ -4,8 +4,17 @@ use super::resolution::variable_detail;
 use super::*;
 
 impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
-    /// The type of an expression, reporting what is wrong inside it.
+    /// The type of an expression, reporting what is wrong inside it, and noting it when the
+    /// types are collected.
     pub(super) fn expression(&mut self, node: &SyntaxNode, mode: Mode) -> Type {
+        let ty = self.expression_type(node, mode);
+        if let Some(types) = &mut self.types {
+            types.insert(node.clone(), ty.clone());
+        }
+        ty
+    }
+
+    fn expression_type(&mut self, node: &SyntaxNode, mode: Mode) -> Type {
         match node.kind() {
             SyntaxKind::LITERAL => literal_type(node),
             SyntaxKind::TYPED_LITERAL => self.typed_literal(node),

@@ -53,6 +53,8 @@ pub(crate) struct BodyChecker<'s, 'a, 'p> {
     usage: &'s mut Usage,
     /// What each name refers to, collected only when asked for (hover, references).
     pub(crate) resolutions: Option<Vec<Resolution>>,
+    /// The type of every expression checked, collected only when asked for (code generation).
+    pub(crate) types: Option<HashMap<SyntaxNode, Type>>,
     /// Types resolved with the POU's own constants (open array bounds), by their text, so an
     /// `ARRAY[*]` parameter is not parsed again at every use.
     local_types: std::cell::RefCell<HashMap<String, Type>>,
@@ -93,6 +95,7 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
             diagnostics: Vec::new(),
             usage,
             resolutions: None,
+            types: None,
             local_types: std::cell::RefCell::default(),
         }
     }
