@@ -11,6 +11,8 @@ pub mod bits;
 pub mod convert;
 pub mod numeric;
 pub mod string;
+pub mod text;
+pub mod time;
 
 use program_image::Elementary;
 
