@@ -72,7 +72,7 @@ pub fn fraction(x: f64) -> f64 {
     x.fract()
 }
 
-/// Delta's `MODREAL(a, b)`: the real remainder with the sign of `a` (`MODREAL(10.5, 2.5)` is 0);
+/// Delta's `MODREAL(a, b)`: the real remainder with the sign of `a` (`MODREAL(10.5, 2.5)` is 0.5);
 /// a divisor of 0 gives 0, as `MOD` does.
 pub fn modreal(a: f64, b: f64) -> f64 {
     if b == 0.0 {
