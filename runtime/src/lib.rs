@@ -7,9 +7,11 @@
 //!
 //! - [`engine`]: the execution engine ([`engine::Engine`]: an image's memory and code, one task
 //!   cycle at a time, faults with POU and source line).
+//! - [`stdlib`]: the standard library's pure functions (conversions, strings, dates).
 //! - [`value`]: values of symbols read and written by path, as IEC literals.
 //! - [`simulation`]: N cycles on a simulated clock, as `rivet simulate` runs them.
 
 pub mod engine;
 pub mod simulation;
+pub mod stdlib;
 pub mod value;
