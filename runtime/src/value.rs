@@ -411,74 +411,7 @@ pub fn json_string(text: &str) -> String {
 
 /// A time, date or time of day as an IEC literal: `T#1s500ms`, `D#2024-01-31`.
 pub fn time_literal(value: i64, ty: E) -> String {
-    match ty {
-        E::Time => format!("T#{}", duration(i128::from(value) * 1_000_000)),
-        E::Ltime => format!("LTIME#{}", duration(i128::from(value))),
-        E::TimeOfDay => format!("TOD#{}", clock(i128::from(value) * 1_000_000)),
-        E::LtimeOfDay => format!("LTOD#{}", clock(i128::from(value))),
-        E::Date => format!("D#{}", date(value.div_euclid(86_400))),
-        E::Ldate => format!("LDATE#{}", date(value.div_euclid(86_400_000_000_000))),
-        E::DateAndTime => format!(
-            "DT#{}-{}",
-            date(value.div_euclid(86_400)),
-            clock(i128::from(value.rem_euclid(86_400)) * 1_000_000_000)
-        ),
-        _ => format!(
-            "LDT#{}-{}",
-            date(value.div_euclid(86_400_000_000_000)),
-            clock(i128::from(value.rem_euclid(86_400_000_000_000)))
-        ),
-    }
-}
-
-fn duration(ns: i128) -> String {
-    if ns == 0 {
-        return "0ms".to_owned();
-    }
-    let mut out = String::new();
-    if ns < 0 {
-        out.push('-');
-    }
-    let mut rest = ns.unsigned_abs();
-    for (unit, size) in [
-        ("d", 86_400_000_000_000u128),
-        ("h", 3_600_000_000_000),
-        ("m", 60_000_000_000),
-        ("s", 1_000_000_000),
-        ("ms", 1_000_000),
-        ("us", 1_000),
-        ("ns", 1),
-    ] {
-        if rest >= size {
-            out.push_str(&format!("{}{unit}", rest / size));
-            rest %= size;
-        }
-    }
-    out
-}
-
-fn clock(ns: i128) -> String {
-    let ms = (ns / 1_000_000) as i64;
-    let (h, m, s, milli) = (ms / 3_600_000, ms / 60_000 % 60, ms / 1000 % 60, ms % 1000);
-    if milli == 0 {
-        format!("{h:02}:{m:02}:{s:02}")
-    } else {
-        format!("{h:02}:{m:02}:{s:02}.{milli:03}")
-    }
-}
-
-/// The civil date of a day number since 1970-01-01 (proleptic Gregorian).
-fn date(days: i64) -> String {
-    let z = days + 719_468;
-    let era = z.div_euclid(146_097);
-    let doe = z - era * 146_097;
-    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
-    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
-    let mp = (5 * doy + 2) / 153;
-    let day = doy - (153 * mp + 2) / 5 + 1;
-    let month = if mp < 10 { mp + 3 } else { mp - 9 };
-    let year = yoe + era * 400 + i64::from(month <= 2);
-    format!("{year:04}-{month:02}-{day:02}")
+    crate::stdlib::text::to_text(value as u64 & crate::stdlib::mask(ty), ty)
 }
 
 #[cfg(test)]

@@ -5,12 +5,12 @@ use program_image::Elementary::{self as E};
 use program_image::{BinaryOp, CompareOp, Instr, Operand, ProgramImage, UnaryOp};
 
 use super::blocks;
-use super::convert;
 use super::exec::{ABSOLUTE, Addr, Exec, FRAME, INSTANCE};
 use super::fault::FaultKind;
 use super::memory::Regions;
 use super::scalar::{Arith, Bits, Real, Scalar};
 use super::strings;
+use crate::stdlib::convert;
 
 /// What the next instruction is.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -5,7 +5,6 @@
 //! [`FaultRecord`] naming the POU and source line.
 
 mod blocks;
-mod convert;
 mod exec;
 mod fault;
 mod lower;
