@@ -1,4 +1,4 @@
-//! The headless command line: `rivet check`, `rivet fmt`.
+//! The headless command line: `rivet check`, `rivet fmt`, `rivet build`, `rivet simulate`.
 
 #![allow(clippy::print_stdout, clippy::print_stderr)] // Printing is what a CLI is for.
 
@@ -40,6 +40,31 @@ pub enum Command {
         /// The project folder (the folder holding rivet.toml).
         project: PathBuf,
     },
+    /// Compile a project (or one `.st` file) into a program image that `rivet-runtime` runs.
+    Build {
+        /// The project folder, or a `.st` source file.
+        project: PathBuf,
+        /// Where to write the image.
+        #[arg(short, long, default_value = "image.bin")]
+        output: PathBuf,
+    },
+    /// Compile and run N cycles on a simulated clock, then print the watched variables.
+    ///
+    /// Time advances by the task interval each cycle (a single `.st` file with one PROGRAM
+    /// runs in an implicit 10 ms task); with several tasks, N counts cycles of the fastest.
+    Simulate {
+        /// The project folder, or a `.st` source file.
+        project: PathBuf,
+        /// How many cycles to run.
+        #[arg(long, default_value_t = 1)]
+        cycles: u64,
+        /// Variables to print, by path (`main.x`, `Main.fb.ET`, `Main.a[3]`), comma-separated.
+        #[arg(long, value_delimiter = ',')]
+        watch: Vec<String>,
+        /// Print one JSON object mapping each watched path to its value.
+        #[arg(long)]
+        json: bool,
+    },
 }
 
 /// Runs a subcommand and returns the process exit code.
@@ -47,6 +72,13 @@ pub fn run(command: Command) -> ExitCode {
     let result = match command {
         Command::Check { project } => check(&project),
         Command::Fmt { project } => fmt(&project),
+        Command::Build { project, output } => crate::build_cli::build(&project, &output),
+        Command::Simulate {
+            project,
+            cycles,
+            watch,
+            json,
+        } => crate::build_cli::simulate(&project, cycles, &watch, json),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -194,8 +226,17 @@ fn fmt(dir: &Path) -> anyhow::Result<()> {
     Ok(())
 }
 
+/// Runs the checker on `path` to print its problems, and returns the error that ends the
+/// command (also when, unexpectedly, the checker finds nothing).
+pub(crate) fn check_for_errors(path: &Path) -> anyhow::Error {
+    match check(path) {
+        Err(error) => error,
+        Ok(()) => anyhow::anyhow!("{}: the project does not compile", path.display()),
+    }
+}
+
 /// Turns a load error into one message with a line per problem and a count.
-fn describe_load_error(error: LoadError) -> anyhow::Error {
+pub(crate) fn describe_load_error(error: LoadError) -> anyhow::Error {
     let errors = error
         .problems
         .iter()

@@ -2,11 +2,12 @@
 //!
 //! `rivet` without a subcommand opens the studio (an eframe window) on a project folder, or on
 //! the example machine project when none is given. With a subcommand it works headless:
-//! `rivet check` and `rivet fmt` today; build, simulate, download and the online commands as
-//! they arrive.
+//! `rivet check`, `rivet fmt`, `rivet build` and `rivet simulate` today; download and the
+//! online commands as they arrive.
 //!
 //! This is the only crate that knows eframe; it owns the window, the docking layout, the device
 //! tree and the menus, and it applies the edits that editors emit.
 
+mod build_cli;
 pub mod cli;
 pub mod studio;

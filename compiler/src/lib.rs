@@ -12,6 +12,7 @@
 //! ([`ide`]), literal values ([`literal`]) and the elementary types with their implicit
 //! conversions ([`elementary`]).
 
+pub mod codegen;
 pub mod diagnostic;
 pub mod elementary;
 pub mod ide;
@@ -20,4 +21,6 @@ pub mod sema;
 pub mod source_project;
 pub mod syntax;
 
+pub use codegen::{CompileError, compile_project, compile_source};
 pub use diagnostic::{Code, Diagnostic, Severity};
+pub use source_project::SourceProject;

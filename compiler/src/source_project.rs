@@ -101,6 +101,14 @@ impl SourceProject {
         let range = &diagnostic.diagnostic.range;
         Some(range.start + offset..range.end + offset)
     }
+
+    /// The 1-based line of the source on which the text of the body file `file` starts.
+    pub fn body_first_line(&self, file: &std::path::Path) -> Option<u32> {
+        let offset = *self.body_offsets.get(file)?;
+        let text = self.parse.syntax().text().to_string();
+        let before = text.get(..offset)?;
+        Some(before.matches('\n').count() as u32 + 1)
+    }
 }
 
 fn target_key(target: &project_model::TextTarget) -> String {

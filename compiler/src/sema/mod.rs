@@ -3,16 +3,16 @@
 //! tasks call, and the warnings a PLC engineer expects: unused and unassigned variables,
 //! inputs written inside their POU, overlapping located variables.
 
-mod address;
+pub(crate) mod address;
 mod body;
 mod complete;
-mod constant;
+pub(crate) mod constant;
 mod definition;
-mod scope;
-mod signatures;
+pub(crate) mod scope;
+pub(crate) mod signatures;
 mod stdlib;
-mod ty;
-mod types;
+pub(crate) mod ty;
+pub(crate) mod types;
 
 use std::collections::{HashMap, HashSet};
 use std::path::PathBuf;
@@ -151,6 +151,18 @@ fn resolutions_with(globals: &Globals<'_>, body: &StBody<'_>) -> Vec<Resolution>
     let mut resolutions = checker.resolutions.unwrap_or_default();
     resolutions.sort_by_key(|resolution| resolution.range.start);
     resolutions
+}
+
+/// The checker's type of every expression of a body, for code generation.
+pub(crate) fn expression_types(
+    scope: &Scope<'_, '_>,
+    root: &crate::syntax::SyntaxNode,
+) -> HashMap<crate::syntax::SyntaxNode, ty::Type> {
+    let mut usage = Usage::new();
+    let mut checker = BodyChecker::new(scope, &mut usage);
+    checker.types = Some(HashMap::new());
+    checker.check(root);
+    checker.types.unwrap_or_default()
 }
 
 /// Every place in every body that refers to `definition`, with its body.

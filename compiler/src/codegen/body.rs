@@ -1,0 +1,640 @@
+//! Code generation for one body: the generator's state, temporaries, places and statements.
+//! Expressions are in `expr.rs`, calls in `call.rs` and `std_call.rs`.
+
+use std::collections::HashMap;
+use std::rc::Rc;
+
+use program_image::{Elementary as IE, Instr, LineEntry, Operand};
+use project_model::{Pou, Variable};
+
+use super::layout::{Instance, Lay, LayShape};
+use super::program::Build;
+use crate::sema::scope::Scope;
+use crate::sema::ty::Type;
+use crate::syntax::{SyntaxKind, SyntaxNode};
+
+/// A result of code generation: a message saying what cannot be compiled.
+pub(crate) type Gen<T> = Result<T, String>;
+
+/// Where a value is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Place {
+    /// At an operand.
+    Direct(Operand),
+    /// Where the pointer held at the operand points.
+    Indirect(Operand),
+    /// One bit of a value of type `ty` at the operand (located BOOLs, `x.3`).
+    Bit { operand: Operand, ty: IE, bit: u8 },
+}
+
+/// A place with its type.
+#[derive(Clone, Debug)]
+pub(crate) struct Typed {
+    pub(crate) place: Place,
+    pub(crate) ty: Type,
+    pub(crate) lay: Lay,
+}
+
+/// A variable in the frame of a function, method or body (VAR_TEMP).
+#[derive(Clone, Debug)]
+pub(crate) struct FrameVar {
+    pub(crate) offset: u32,
+    pub(crate) ty: Type,
+    pub(crate) lay: Lay,
+    pub(crate) by_ref: bool,
+}
+
+/// The frame layout of a function, method or body: its own variables and result.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct Frame<'p> {
+    pub(crate) vars: Vec<(&'p Variable, FrameVar)>,
+    pub(crate) result: Option<FrameVar>,
+    /// Bytes taken by the variables and the result; temporaries follow.
+    pub(crate) size: u32,
+}
+
+impl Frame<'_> {
+    /// The variable `name` (any case).
+    pub(crate) fn var(&self, name: &str) -> Option<&FrameVar> {
+        self.vars
+            .iter()
+            .find(|(v, _)| v.name.eq_ignore_ascii_case(name))
+            .map(|(_, fv)| fv)
+    }
+}
+
+/// Jumps to patch at the end of a loop, and where CONTINUE goes.
+struct Loop {
+    exits: Vec<usize>,
+    continues: Vec<usize>,
+}
+
+/// Generates the code of one body.
+pub(crate) struct BodyGen<'b, 'g, 'p> {
+    pub(crate) build: &'b mut Build<'g, 'p>,
+    pub(crate) scope: Scope<'g, 'p>,
+    pub(crate) pou: &'p Pou,
+    pub(crate) types: HashMap<SyntaxNode, Type>,
+    /// The instance whose variables `Operand::Instance` addresses.
+    pub(crate) instance: Option<Rc<Instance<'p>>>,
+    pub(crate) frame: Frame<'p>,
+    pub(crate) code: Vec<Instr>,
+    pub(crate) lines: Vec<LineEntry>,
+    temp_top: u32,
+    pub(crate) frame_max: u32,
+    loops: Vec<Loop>,
+    file: u32,
+    line_starts: Vec<usize>,
+    /// Lines of the file before the body's first line.
+    line_offset: u32,
+    /// Set while resolving the target of `REF=`: references are not followed.
+    pub(crate) raw_references: bool,
+}
+
+impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
+    #[allow(clippy::too_many_arguments)]
+    pub(crate) fn new(
+        build: &'b mut Build<'g, 'p>,
+        scope: Scope<'g, 'p>,
+        pou: &'p Pou,
+        types: HashMap<SyntaxNode, Type>,
+        instance: Option<Rc<Instance<'p>>>,
+        frame: Frame<'p>,
+        file: u32,
+        text: &str,
+        line_offset: u32,
+    ) -> Self {
+        let mut line_starts = vec![0];
+        line_starts.extend(text.match_indices('\n').map(|(at, _)| at + 1));
+        let temp_top = frame.size.next_multiple_of(8);
+        Self {
+            build,
+            scope,
+            pou,
+            types,
+            instance,
+            frame,
+            code: Vec::new(),
+            lines: Vec::new(),
+            temp_top,
+            frame_max: temp_top,
+            loops: Vec::new(),
+            file,
+            line_starts,
+            line_offset,
+            raw_references: false,
+        }
+    }
+
+    /// Emits an instruction and returns its index.
+    pub(crate) fn emit(&mut self, instr: Instr) -> usize {
+        self.code.push(instr);
+        self.code.len() - 1
+    }
+
+    /// The index the next instruction will have.
+    pub(crate) fn here(&self) -> u32 {
+        self.code.len() as u32
+    }
+
+    /// Points the jump at `at` to `target`.
+    pub(crate) fn patch(&mut self, at: usize, target: u32) {
+        match &mut self.code[at] {
+            Instr::Jump { target: t }
+            | Instr::JumpIf { target: t, .. }
+            | Instr::JumpIfNot { target: t, .. } => *t = target,
+            _ => {}
+        }
+    }
+
+    /// A frame temporary of `size` bytes, alive until the statement ends.
+    pub(crate) fn temp(&mut self, size: u32) -> Operand {
+        let at = self.temp_top;
+        self.temp_top = (at + size.max(1)).next_multiple_of(8);
+        self.frame_max = self.frame_max.max(self.temp_top);
+        Operand::Frame(at)
+    }
+
+    /// The checker's type of an expression.
+    pub(crate) fn type_of(&self, node: &SyntaxNode) -> Type {
+        self.types.get(node).cloned().unwrap_or(Type::Error)
+    }
+
+    /// Generates every statement under `root`.
+    pub(crate) fn body(&mut self, root: &SyntaxNode) -> Gen<()> {
+        for child in root.children() {
+            self.statement_or_list(&child)?;
+        }
+        Ok(())
+    }
+
+    fn statement_or_list(&mut self, node: &SyntaxNode) -> Gen<()> {
+        match node.kind() {
+            SyntaxKind::STATEMENT_LIST | SyntaxKind::ELSE_BRANCH => {
+                for child in node.children() {
+                    self.statement_or_list(&child)?;
+                }
+                Ok(())
+            }
+            _ => {
+                let mark = self.temp_top;
+                let line = self.line_of(node);
+                let index = self.here();
+                if self.lines.last().is_none_or(|last| last.line != line) {
+                    self.lines.push(LineEntry {
+                        index,
+                        file: self.file,
+                        line,
+                    });
+                }
+                let result = self.statement(node).map_err(|message| {
+                    if message.starts_with("line ") {
+                        message
+                    } else {
+                        format!("line {line}: {message}")
+                    }
+                });
+                self.temp_top = mark;
+                result
+            }
+        }
+    }
+
+    fn line_of(&self, node: &SyntaxNode) -> u32 {
+        let offset = usize::from(node.text_range().start());
+        let trimmed = node
+            .first_token()
+            .map_or(offset, |t| usize::from(t.text_range().start()));
+        let offset = offset.max(trimmed);
+        self.line_starts.partition_point(|&start| start <= offset) as u32 + self.line_offset
+    }
+
+    fn statement(&mut self, node: &SyntaxNode) -> Gen<()> {
+        let children: Vec<SyntaxNode> = node.children().collect();
+        match node.kind() {
+            SyntaxKind::ASSIGN_STMT => match children.as_slice() {
+                [target, value, ..] => self.assign(target, value),
+                [only] => self.call_statement(only),
+                _ => Ok(()),
+            },
+            SyntaxKind::SET_STMT | SyntaxKind::RESET_STMT => {
+                let [target, value, ..] = children.as_slice() else {
+                    return Ok(());
+                };
+                let target = self.place(target)?;
+                let condition = self.expr_as(value, &Type::BOOL)?;
+                let skip = self.emit(Instr::JumpIfNot {
+                    cond: condition,
+                    target: 0,
+                });
+                let constant = self
+                    .build
+                    .constant(&[u8::from(node.kind() == SyntaxKind::SET_STMT)]);
+                self.store(&target, constant)?;
+                let end = self.here();
+                self.patch(skip, end);
+                Ok(())
+            }
+            SyntaxKind::REF_ASSIGN_STMT => {
+                let [target, value, ..] = children.as_slice() else {
+                    return Ok(());
+                };
+                self.raw_references = true;
+                let slot = self.place(target);
+                self.raw_references = false;
+                let slot = slot?;
+                let pointer = self.address_of(value)?;
+                self.store(&slot, pointer)
+            }
+            SyntaxKind::CALL_STMT => {
+                for child in &children {
+                    self.call_statement(child)?;
+                }
+                Ok(())
+            }
+            SyntaxKind::IF_STMT => self.if_statement(&children),
+            SyntaxKind::CASE_STMT => self.case_statement(&children),
+            SyntaxKind::FOR_STMT => self.for_statement(&children),
+            SyntaxKind::WHILE_STMT => {
+                let start = self.here();
+                let mut exit = None;
+                self.loops.push(Loop {
+                    exits: Vec::new(),
+                    continues: Vec::new(),
+                });
+                for child in &children {
+                    if child.kind() == SyntaxKind::STATEMENT_LIST {
+                        self.statement_or_list(child)?;
+                    } else {
+                        let condition = self.expr_as(child, &Type::BOOL)?;
+                        exit = Some(self.emit(Instr::JumpIfNot {
+                            cond: condition,
+                            target: 0,
+                        }));
+                    }
+                }
+                self.emit(Instr::Jump { target: start });
+                let end = self.here();
+                let finished = self.loops.pop().unwrap_or(Loop {
+                    exits: Vec::new(),
+                    continues: Vec::new(),
+                });
+                for at in exit.into_iter().chain(finished.exits) {
+                    self.patch(at, end);
+                }
+                for at in finished.continues {
+                    self.patch(at, start);
+                }
+                Ok(())
+            }
+            SyntaxKind::REPEAT_STMT => {
+                let start = self.here();
+                self.loops.push(Loop {
+                    exits: Vec::new(),
+                    continues: Vec::new(),
+                });
+                let mut condition_at = start;
+                for child in &children {
+                    if child.kind() == SyntaxKind::STATEMENT_LIST {
+                        self.statement_or_list(child)?;
+                    } else {
+                        condition_at = self.here();
+                        let condition = self.expr_as(child, &Type::BOOL)?;
+                        self.emit(Instr::JumpIfNot {
+                            cond: condition,
+                            target: start,
+                        });
+                    }
+                }
+                let end = self.here();
+                let finished = self.loops.pop().unwrap_or(Loop {
+                    exits: Vec::new(),
+                    continues: Vec::new(),
+                });
+                for at in finished.exits {
+                    self.patch(at, end);
+                }
+                for at in finished.continues {
+                    self.patch(at, condition_at);
+                }
+                Ok(())
+            }
+            SyntaxKind::EXIT_STMT | SyntaxKind::CONTINUE_STMT => {
+                let exit = node.kind() == SyntaxKind::EXIT_STMT;
+                let at = self.emit(Instr::Jump { target: 0 });
+                let Some(current) = self.loops.last_mut() else {
+                    return Err(format!(
+                        "{} outside a loop",
+                        if exit { "EXIT" } else { "CONTINUE" }
+                    ));
+                };
+                if exit {
+                    current.exits.push(at);
+                } else {
+                    current.continues.push(at);
+                }
+                Ok(())
+            }
+            SyntaxKind::RETURN_STMT => {
+                self.emit(Instr::Return);
+                Ok(())
+            }
+            SyntaxKind::EMPTY_STMT => Ok(()),
+            SyntaxKind::JMP_STMT | SyntaxKind::LABEL_STMT => {
+                Err("JMP and labels are not supported by the code generator yet".to_owned())
+            }
+            SyntaxKind::STEP_DECL | SyntaxKind::TRANSITION_DECL | SyntaxKind::ACTION_DECL => {
+                Err("textual SFC is not supported by the code generator yet".to_owned())
+            }
+            other => Err(format!("cannot compile a {other:?}")),
+        }
+    }
+
+    fn assign(&mut self, target: &SyntaxNode, value: &SyntaxNode) -> Gen<()> {
+        let target = self.place(target)?;
+        let operand = self.expr_as(value, &target.ty)?;
+        self.store(&target, operand)
+    }
+
+    fn call_statement(&mut self, node: &SyntaxNode) -> Gen<()> {
+        match node.kind() {
+            SyntaxKind::CALL_EXPR => self.call(node, None).map(|_| ()),
+            // A bare name such as `Action;` or `fb;` is a call without arguments.
+            SyntaxKind::NAME_EXPR | SyntaxKind::FIELD_EXPR => self.call_without_arguments(node),
+            _ => self.expr(node, None).map(|_| ()),
+        }
+    }
+
+    fn if_statement(&mut self, children: &[SyntaxNode]) -> Gen<()> {
+        let mut ends = Vec::new();
+        let mut pending: Option<usize> = None;
+        for child in children {
+            match child.kind() {
+                SyntaxKind::STATEMENT_LIST => {
+                    self.statement_or_list(child)?;
+                    ends.push(self.emit(Instr::Jump { target: 0 }));
+                    if let Some(at) = pending.take() {
+                        let next = self.here();
+                        self.patch(at, next);
+                    }
+                }
+                SyntaxKind::ELSIF_BRANCH => {
+                    for part in child.children() {
+                        if part.kind() == SyntaxKind::STATEMENT_LIST {
+                            self.statement_or_list(&part)?;
+                            ends.push(self.emit(Instr::Jump { target: 0 }));
+                            if let Some(at) = pending.take() {
+                                let next = self.here();
+                                self.patch(at, next);
+                            }
+                        } else {
+                            let condition = self.expr_as(&part, &Type::BOOL)?;
+                            pending = Some(self.emit(Instr::JumpIfNot {
+                                cond: condition,
+                                target: 0,
+                            }));
+                        }
+                    }
+                }
+                SyntaxKind::ELSE_BRANCH => self.statement_or_list(child)?,
+                _ => {
+                    let condition = self.expr_as(child, &Type::BOOL)?;
+                    pending = Some(self.emit(Instr::JumpIfNot {
+                        cond: condition,
+                        target: 0,
+                    }));
+                }
+            }
+        }
+        let end = self.here();
+        if let Some(at) = pending {
+            self.patch(at, end);
+        }
+        for at in ends {
+            self.patch(at, end);
+        }
+        Ok(())
+    }
+
+    fn case_statement(&mut self, children: &[SyntaxNode]) -> Gen<()> {
+        let Some((selector, branches)) = children.split_first() else {
+            return Ok(());
+        };
+        let (value, ty) = self.expr(selector, None)?;
+        let scalar = self
+            .scalar_of(&ty)
+            .ok_or_else(|| format!("a CASE selector of type {ty}"))?;
+        // The selector is kept in a temporary so the branches cannot change it.
+        let kept = self.temp(8);
+        self.emit(Instr::Move {
+            ty: scalar,
+            dst: kept,
+            src: value,
+        });
+        let mut ends = Vec::new();
+        for branch in branches {
+            if branch.kind() != SyntaxKind::CASE_BRANCH {
+                self.statement_or_list(branch)?;
+                continue;
+            }
+            let mut matches = Vec::new();
+            let mut body = None;
+            for part in branch.children() {
+                if part.kind() != SyntaxKind::CASE_LABELS {
+                    body = Some(part);
+                    continue;
+                }
+                for label in part.children() {
+                    let hit = self.temp(1);
+                    if label.kind() == SyntaxKind::CASE_RANGE {
+                        let bounds: Vec<SyntaxNode> = label.children().collect();
+                        let [low, high] = bounds.as_slice() else {
+                            continue;
+                        };
+                        let low = self.expr_as(low, &ty)?;
+                        let high = self.expr_as(high, &ty)?;
+                        let above = self.temp(1);
+                        self.emit(Instr::Compare {
+                            op: program_image::CompareOp::Ge,
+                            ty: scalar,
+                            dst: above,
+                            a: kept,
+                            b: low,
+                        });
+                        self.emit(Instr::Compare {
+                            op: program_image::CompareOp::Le,
+                            ty: scalar,
+                            dst: hit,
+                            a: kept,
+                            b: high,
+                        });
+                        self.emit(Instr::Binary {
+                            op: program_image::BinaryOp::And,
+                            ty: IE::Bool,
+                            dst: hit,
+                            a: hit,
+                            b: above,
+                        });
+                    } else {
+                        let label = self.expr_as(&label, &ty)?;
+                        self.emit(Instr::Compare {
+                            op: program_image::CompareOp::Eq,
+                            ty: scalar,
+                            dst: hit,
+                            a: kept,
+                            b: label,
+                        });
+                    }
+                    matches.push(self.emit(Instr::JumpIf {
+                        cond: hit,
+                        target: 0,
+                    }));
+                }
+            }
+            let skip = self.emit(Instr::Jump { target: 0 });
+            let start = self.here();
+            for at in matches {
+                self.patch(at, start);
+            }
+            if let Some(body) = body {
+                self.statement_or_list(&body)?;
+            }
+            ends.push(self.emit(Instr::Jump { target: 0 }));
+            let next = self.here();
+            self.patch(skip, next);
+        }
+        let end = self.here();
+        for at in ends {
+            self.patch(at, end);
+        }
+        Ok(())
+    }
+
+    /// `FOR i := a TO b BY s`: the end and step are evaluated once, before the first
+    /// iteration; after the loop `i` holds the first value past the end, as in CODESYS.
+    fn for_statement(&mut self, children: &[SyntaxNode]) -> Gen<()> {
+        let expressions: Vec<&SyntaxNode> = children
+            .iter()
+            .filter(|c| c.kind() != SyntaxKind::STATEMENT_LIST)
+            .collect();
+        let [variable, start, end, rest @ ..] = expressions.as_slice() else {
+            return Err("a FOR loop needs a variable, a start and an end".to_owned());
+        };
+        let counter = self.place(variable)?;
+        let ty = counter.ty.clone();
+        let scalar = self
+            .scalar_of(&ty)
+            .ok_or("the FOR variable must be an integer")?;
+        let first = self.expr_as(start, &ty)?;
+        self.store(&counter, first)?;
+        let last = self.temp(8);
+        let end_value = self.expr_as(end, &ty)?;
+        self.emit(Instr::Move {
+            ty: scalar,
+            dst: last,
+            src: end_value,
+        });
+        let step = self.temp(8);
+        match rest.first() {
+            Some(step_node) => {
+                let value = self.expr_as(step_node, &ty)?;
+                self.emit(Instr::Move {
+                    ty: scalar,
+                    dst: step,
+                    src: value,
+                });
+            }
+            None => {
+                let one = self.build.scalar_constant(1, scalar);
+                self.emit(Instr::Move {
+                    ty: scalar,
+                    dst: step,
+                    src: one,
+                });
+            }
+        }
+        let zero = self.build.scalar_constant(0, scalar);
+        let negative = self.temp(1);
+        self.emit(Instr::Compare {
+            op: program_image::CompareOp::Lt,
+            ty: scalar,
+            dst: negative,
+            a: step,
+            b: zero,
+        });
+        let top = self.here();
+        let current = self.load(&counter)?;
+        let done = self.temp(1);
+        // Counting up ends past the end; counting down ends below it.
+        let down = self.emit(Instr::JumpIf {
+            cond: negative,
+            target: 0,
+        });
+        self.emit(Instr::Compare {
+            op: program_image::CompareOp::Gt,
+            ty: scalar,
+            dst: done,
+            a: current,
+            b: last,
+        });
+        let checked = self.emit(Instr::Jump { target: 0 });
+        let down_at = self.here();
+        self.patch(down, down_at);
+        self.emit(Instr::Compare {
+            op: program_image::CompareOp::Lt,
+            ty: scalar,
+            dst: done,
+            a: current,
+            b: last,
+        });
+        let after_check = self.here();
+        self.patch(checked, after_check);
+        let exit = self.emit(Instr::JumpIf {
+            cond: done,
+            target: 0,
+        });
+        self.loops.push(Loop {
+            exits: Vec::new(),
+            continues: Vec::new(),
+        });
+        for child in children
+            .iter()
+            .filter(|c| c.kind() == SyntaxKind::STATEMENT_LIST)
+        {
+            self.statement_or_list(child)?;
+        }
+        let finished = self.loops.pop().unwrap_or(Loop {
+            exits: Vec::new(),
+            continues: Vec::new(),
+        });
+        let increment = self.here();
+        let current = self.load(&counter)?;
+        let next = self.temp(8);
+        self.emit(Instr::Binary {
+            op: program_image::BinaryOp::Add,
+            ty: scalar,
+            dst: next,
+            a: current,
+            b: step,
+        });
+        self.store(&counter, next)?;
+        self.emit(Instr::Jump { target: top });
+        let end_at = self.here();
+        self.patch(exit, end_at);
+        for at in finished.exits {
+            self.patch(at, end_at);
+        }
+        for at in finished.continues {
+            self.patch(at, increment);
+        }
+        Ok(())
+    }
+
+    /// The instruction type of a scalar type: elementary types, subranges and enumerations.
+    pub(crate) fn scalar_of(&mut self, ty: &Type) -> Option<IE> {
+        match self.build.layouts.of(ty).ok()?.shape {
+            LayShape::Scalar(e) | LayShape::Enum(e) => Some(e),
+            _ => None,
+        }
+    }
+}

@@ -1,0 +1,580 @@
+//! Calls: functions, methods and actions of the project, programs, and instances of function
+//! blocks (the project's and the standard ones).
+
+use program_image::{Instr, Operand, Transfer};
+use project_model::{Pou, PouKind, VarSection};
+
+use super::body::{BodyGen, Gen, Place, Typed};
+use super::expr::tokens;
+use super::layout::LayShape;
+use crate::sema::scope::{GlobalSymbol, LocalSymbol};
+use crate::sema::ty::Type;
+use crate::syntax::{SyntaxKind, SyntaxNode};
+
+/// One argument of a call: its formal name if given, whether it is an output (`=>`), and its
+/// expression.
+pub(crate) struct Argument {
+    pub(crate) formal: Option<String>,
+    pub(crate) output: bool,
+    pub(crate) value: Option<SyntaxNode>,
+}
+
+/// The arguments of a call expression, in order.
+pub(crate) fn arguments(node: &SyntaxNode) -> Vec<Argument> {
+    let Some(list) = node.children().find(|c| c.kind() == SyntaxKind::ARG_LIST) else {
+        return Vec::new();
+    };
+    list.children()
+        .filter(|c| c.kind() == SyntaxKind::ARG)
+        .map(|argument| {
+            let parts: Vec<_> = tokens(&argument).collect();
+            let arrow = parts
+                .iter()
+                .position(|t| matches!(t.kind(), SyntaxKind::ASSIGN | SyntaxKind::OUTPUT_ASSIGN));
+            let formal =
+                arrow.and_then(|at| Some(parts.get(at.checked_sub(1)?)?.text().to_owned()));
+            let output = arrow.is_some_and(|at| parts[at].kind() == SyntaxKind::OUTPUT_ASSIGN);
+            Argument {
+                formal,
+                output,
+                value: argument.children().next(),
+            }
+        })
+        .collect()
+}
+
+/// What a call's callee is.
+enum Callee<'p> {
+    /// A function of the project.
+    Function(&'p Pou),
+    /// A method of the current POU or of an instance; the instance pointer, `None` for THIS.
+    Method {
+        owner: &'p Pou,
+        name: String,
+        instance: Option<Operand>,
+    },
+    /// An action of the current POU or of an instance.
+    Action {
+        owner: &'p Pou,
+        name: String,
+        instance: Place,
+    },
+    /// An instance of a function block or a program.
+    Instance(Typed),
+    /// A standard function.
+    Standard(String),
+}
+
+impl<'p> BodyGen<'_, '_, 'p> {
+    /// `name;` or `fb.Action;` without parentheses.
+    pub(crate) fn call_without_arguments(&mut self, node: &SyntaxNode) -> Gen<()> {
+        let callee = self.callee(node)?;
+        self.call_callee(callee, &[], None).map(|_| ())
+    }
+
+    /// A call; its result when it has one.
+    pub(crate) fn call(
+        &mut self,
+        node: &SyntaxNode,
+        want: Option<&Type>,
+    ) -> Gen<Option<(Operand, Type)>> {
+        let callee_node = node.children().next().ok_or("a call of nothing")?;
+        let args = arguments(node);
+        if args.iter().any(|a| {
+            a.formal
+                .as_deref()
+                .is_some_and(|f| f.eq_ignore_ascii_case("EN") || f.eq_ignore_ascii_case("ENO"))
+        }) {
+            return Err("EN and ENO are not supported by the code generator yet".to_owned());
+        }
+        let callee = self.callee(&callee_node)?;
+        self.call_callee(callee, &args, Some((node, want)))
+    }
+
+    fn call_callee(
+        &mut self,
+        callee: Callee<'p>,
+        args: &[Argument],
+        node: Option<(&SyntaxNode, Option<&Type>)>,
+    ) -> Gen<Option<(Operand, Type)>> {
+        match callee {
+            Callee::Function(pou) => {
+                let index = self.build.pou_index(&pou.name, None)?;
+                self.call_frame(
+                    index,
+                    pou,
+                    &pou.variables,
+                    pou.return_type.as_deref(),
+                    None,
+                    args,
+                )
+            }
+            Callee::Method {
+                owner,
+                name,
+                instance,
+            } => {
+                let method = owner
+                    .methods
+                    .iter()
+                    .find(|m| m.name.eq_ignore_ascii_case(&name))
+                    .ok_or_else(|| format!("'{}' has no method '{name}'", owner.name))?;
+                let index = self.build.pou_index(&owner.name, Some(&method.name))?;
+                let instance = match instance {
+                    Some(pointer) => pointer,
+                    None => {
+                        let dst = self.temp(8);
+                        self.emit(Instr::Address {
+                            dst,
+                            place: Operand::Instance(0),
+                        });
+                        dst
+                    }
+                };
+                self.call_frame(
+                    index,
+                    owner,
+                    &method.variables,
+                    method.return_type.as_deref(),
+                    Some(instance),
+                    args,
+                )
+            }
+            Callee::Action {
+                owner,
+                name,
+                instance,
+            } => {
+                let index = self.build.pou_index(&owner.name, Some(&name))?;
+                let (instance, indirect) = match instance {
+                    Place::Direct(op) => (op, false),
+                    Place::Indirect(pointer) => (pointer, true),
+                    Place::Bit { .. } => return Err("an action of a bit".to_owned()),
+                };
+                self.emit(Instr::CallBlock {
+                    pou: index,
+                    instance,
+                    indirect,
+                });
+                Ok(None)
+            }
+            Callee::Instance(typed) => {
+                self.call_instance(typed, args)?;
+                Ok(None)
+            }
+            Callee::Standard(name) => {
+                let (node, want) = node.ok_or_else(|| format!("'{name}' needs arguments"))?;
+                self.call_standard(&name, node, args, want)
+            }
+        }
+    }
+
+    fn callee(&mut self, node: &SyntaxNode) -> Gen<Callee<'p>> {
+        if node.kind() == SyntaxKind::NAME_EXPR {
+            let parts: Vec<_> = tokens(node).collect();
+            let global_only = parts.first().is_some_and(|t| t.kind() == SyntaxKind::DOT);
+            let name = parts
+                .iter()
+                .find(|t| {
+                    matches!(
+                        t.kind(),
+                        SyntaxKind::IDENT
+                            | SyntaxKind::MOD
+                            | SyntaxKind::AND
+                            | SyntaxKind::OR
+                            | SyntaxKind::XOR
+                            | SyntaxKind::NOT
+                    )
+                })
+                .map(|t| t.text().to_owned())
+                .ok_or("a call without a name")?;
+            let local = if global_only {
+                None
+            } else {
+                self.scope.local(&name)
+            };
+            match local {
+                Some(LocalSymbol::Method(method)) => {
+                    let owner = self.owner_of_method(&method.name)?;
+                    return Ok(Callee::Method {
+                        owner,
+                        name: method.name.clone(),
+                        instance: None,
+                    });
+                }
+                Some(LocalSymbol::Action) => {
+                    return Ok(Callee::Action {
+                        owner: self.action_owner(self.pou, &name)?,
+                        name,
+                        instance: Place::Direct(Operand::Instance(0)),
+                    });
+                }
+                Some(_) => {}
+                None => match self.scope.globals.lookup(&name) {
+                    Some(GlobalSymbol::Pou(pou)) if pou.kind == PouKind::Function => {
+                        return Ok(Callee::Function(pou));
+                    }
+                    Some(GlobalSymbol::Pou(pou)) if pou.kind == PouKind::Program => {}
+                    Some(GlobalSymbol::Pou(pou)) => {
+                        return Err(format!("'{}' is a type; call an instance of it", pou.name));
+                    }
+                    Some(_) => {}
+                    None => return Ok(Callee::Standard(name)),
+                },
+            }
+        }
+        if node.kind() == SyntaxKind::FIELD_EXPR
+            && let Some(base) = node.children().next()
+            && let Some(member) = tokens(node)
+                .filter(|t| t.kind() == SyntaxKind::IDENT)
+                .last()
+            && let Type::Named(type_name) = self.type_of(&base)
+            && let Some(pou) = self.scope.globals.pou(&type_name)
+            && pou.kind != PouKind::Function
+        {
+            let member = member.text().to_owned();
+            let chain = crate::sema::scope::inheritance_chain(self.scope.globals, pou);
+            if let Some(owner) = chain.iter().find(|p| {
+                p.methods
+                    .iter()
+                    .any(|m| m.name.eq_ignore_ascii_case(&member))
+            }) {
+                let typed = self.place(&base)?;
+                let pointer = self.pointer_to(&typed)?;
+                return Ok(Callee::Method {
+                    owner,
+                    name: member,
+                    instance: Some(pointer),
+                });
+            }
+            if pou
+                .actions
+                .iter()
+                .any(|a| a.name.eq_ignore_ascii_case(&member))
+            {
+                let typed = self.place(&base)?;
+                return Ok(Callee::Action {
+                    owner: pou,
+                    name: member,
+                    instance: typed.place,
+                });
+            }
+        }
+        let typed = self.place(node)?;
+        match typed.lay.shape {
+            LayShape::Pou(_) | LayShape::Std(..) => Ok(Callee::Instance(typed)),
+            _ => Err(format!(
+                "'{}' cannot be called",
+                node.text().to_string().trim()
+            )),
+        }
+    }
+
+    /// The POU declaring method `name` seen from the current POU (itself or a base).
+    fn owner_of_method(&self, name: &str) -> Gen<&'p Pou> {
+        crate::sema::scope::inheritance_chain(self.scope.globals, self.pou)
+            .into_iter()
+            .find(|p| p.methods.iter().any(|m| m.name.eq_ignore_ascii_case(name)))
+            .ok_or_else(|| format!("no method '{name}'"))
+    }
+
+    fn action_owner(&self, pou: &'p Pou, name: &str) -> Gen<&'p Pou> {
+        if pou
+            .actions
+            .iter()
+            .any(|a| a.name.eq_ignore_ascii_case(name))
+        {
+            Ok(pou)
+        } else {
+            Err(format!("no action '{name}'"))
+        }
+    }
+
+    /// A call of a function or method: a new frame with the inputs copied in, the outputs and
+    /// the result copied out.
+    fn call_frame(
+        &mut self,
+        index: u32,
+        owner: &'p Pou,
+        variables: &'p [project_model::Variable],
+        return_type: Option<&str>,
+        instance: Option<Operand>,
+        args: &[Argument],
+    ) -> Gen<Option<(Operand, Type)>> {
+        let frame = self.build.frame_of(owner, variables, return_type)?;
+        let params: Vec<&project_model::Variable> = variables
+            .iter()
+            .filter(|v| {
+                matches!(
+                    v.section,
+                    VarSection::VarInput | VarSection::VarInOut | VarSection::VarOutput
+                )
+            })
+            .collect();
+        let positional: Vec<&&project_model::Variable> = params
+            .iter()
+            .filter(|v| matches!(v.section, VarSection::VarInput | VarSection::VarInOut))
+            .collect();
+        let mut inputs = Vec::new();
+        let mut outputs: Vec<(Transfer, Typed)> = Vec::new();
+        for (position, arg) in args.iter().enumerate() {
+            let Some(value) = &arg.value else { continue };
+            let param = match &arg.formal {
+                Some(formal) => params
+                    .iter()
+                    .find(|v| v.name.eq_ignore_ascii_case(formal))
+                    .copied(),
+                None => positional.get(position).map(|v| **v),
+            }
+            .ok_or_else(|| format!("no parameter for argument {}", position + 1))?;
+            let slot = frame
+                .var(&param.name)
+                .cloned()
+                .ok_or("a parameter without a place")?;
+            if arg.output {
+                let target = self.place(value)?;
+                let temp = self.temp(slot.lay.size);
+                outputs.push((
+                    Transfer {
+                        caller: temp,
+                        callee_offset: slot.offset,
+                        size: slot.lay.size,
+                    },
+                    target,
+                ));
+                continue;
+            }
+            let caller = if slot.by_ref {
+                self.address_of(value)?
+            } else {
+                self.expr_as(value, &slot.ty)?
+            };
+            inputs.push(Transfer {
+                caller,
+                callee_offset: slot.offset,
+                size: slot.lay.size,
+            });
+        }
+        let result = match &frame.result {
+            Some(result) => {
+                let temp = self.temp(result.lay.size);
+                Some((
+                    Transfer {
+                        caller: temp,
+                        callee_offset: result.offset,
+                        size: result.lay.size,
+                    },
+                    result.ty.clone(),
+                ))
+            }
+            None => None,
+        };
+        let mut transfers_out: Vec<Transfer> = outputs.iter().map(|(t, _)| *t).collect();
+        if let Some((transfer, _)) = &result {
+            transfers_out.push(*transfer);
+        }
+        self.emit(Instr::CallFunction {
+            pou: index,
+            instance,
+            inputs,
+            outputs: transfers_out,
+        });
+        for (transfer, target) in outputs {
+            let value = self.convert(
+                transfer.caller,
+                &frame_type(&frame, transfer.callee_offset),
+                &target.ty,
+            )?;
+            self.store(&target, value)?;
+        }
+        Ok(result.map(|(transfer, ty)| (transfer.caller, ty)))
+    }
+
+    /// A call of an instance: inputs written into it, its body run, outputs read out.
+    fn call_instance(&mut self, typed: Typed, args: &[Argument]) -> Gen<()> {
+        let input_names: Vec<String> = match &typed.lay.shape {
+            LayShape::Pou(name) => {
+                let pou = self
+                    .scope
+                    .globals
+                    .pou(name)
+                    .ok_or("unknown function block")?;
+                let instance = self.build.layouts.instance(pou)?;
+                instance
+                    .slots
+                    .iter()
+                    .filter(|s| {
+                        matches!(s.var.section, VarSection::VarInput | VarSection::VarInOut)
+                    })
+                    .map(|s| s.var.name.clone())
+                    .collect()
+            }
+            LayShape::Std(block, long) => program_image::std_blocks::layout(*block, *long)
+                .members
+                .iter()
+                .filter(|m| m.input)
+                .map(|m| m.name.to_owned())
+                .collect(),
+            _ => return Err("not an instance".to_owned()),
+        };
+        let aliases = [
+            ("RESET", "R"),
+            ("LOAD", "LD"),
+            ("SET1", "S1"),
+            ("SET", "S"),
+            ("RESET1", "R1"),
+        ];
+        let mut outputs = Vec::new();
+        for (position, arg) in args.iter().enumerate() {
+            let Some(value) = &arg.value else { continue };
+            let name = match &arg.formal {
+                Some(formal) => {
+                    let std = matches!(typed.lay.shape, LayShape::Std(..));
+                    aliases
+                        .iter()
+                        .find(|(alias, _)| std && alias.eq_ignore_ascii_case(formal))
+                        .map_or(formal.clone(), |(_, name)| (*name).to_owned())
+                }
+                None => input_names
+                    .get(position)
+                    .cloned()
+                    .ok_or_else(|| format!("no input for argument {}", position + 1))?,
+            };
+            if arg.output {
+                outputs.push((name, value.clone()));
+                continue;
+            }
+            let member = self.instance_member(&typed, &name, true)?;
+            if member.1 {
+                let pointer = self.address_of(value)?;
+                self.store(&member.0, pointer)?;
+            } else {
+                let operand = self.expr_as(value, &member.0.ty)?;
+                self.store(&member.0, operand)?;
+            }
+        }
+        let (instance, indirect) = match typed.place {
+            Place::Direct(op) => (op, false),
+            Place::Indirect(pointer) => (pointer, true),
+            Place::Bit { .. } => return Err("a bit is no instance".to_owned()),
+        };
+        match &typed.lay.shape {
+            LayShape::Pou(name) => {
+                let index = self.build.pou_index(name, None)?;
+                self.emit(Instr::CallBlock {
+                    pou: index,
+                    instance,
+                    indirect,
+                });
+            }
+            LayShape::Std(block, long) => {
+                self.emit(Instr::CallStdBlock {
+                    block: *block,
+                    long: *long,
+                    instance,
+                    indirect,
+                });
+            }
+            _ => {}
+        }
+        for (name, target) in outputs {
+            let (member, _) = self.instance_member(&typed, &name, false)?;
+            let value = self.load(&member)?;
+            let target = self.place(&target)?;
+            let value = self.convert(value, &member.ty, &target.ty)?;
+            self.store(&target, value)?;
+        }
+        Ok(())
+    }
+
+    /// A member of an instance as a place; `true` when it is a VAR_IN_OUT slot (to be given
+    /// an address), in which case the place is the slot itself.
+    fn instance_member(
+        &mut self,
+        typed: &Typed,
+        name: &str,
+        for_input: bool,
+    ) -> Gen<(Typed, bool)> {
+        if let LayShape::Pou(pou_name) = &typed.lay.shape
+            && let Some(pou) = self.scope.globals.pou(pou_name)
+        {
+            let instance = self.build.layouts.instance(pou)?;
+            let slot = instance
+                .slot(name)
+                .cloned()
+                .ok_or_else(|| format!("'{pou_name}' has no variable '{name}'"))?;
+            if slot.by_ref && for_input {
+                let place = self.offset_place(typed.place, slot.offset)?;
+                let lay = slot.lay.clone();
+                return Ok((
+                    Typed {
+                        place,
+                        ty: slot.ty,
+                        lay,
+                    },
+                    true,
+                ));
+            }
+        }
+        let (offset, lay) = self.build.layouts.member_of(&typed.lay, name)?;
+        let place = self.offset_place(typed.place, offset)?;
+        let ty = match &typed.lay.shape {
+            LayShape::Std(..) => Type::Elementary(super::init::elementary_of(match lay.shape {
+                LayShape::Scalar(e) => e,
+                _ => program_image::Elementary::Bool,
+            })),
+            _ => match &typed.ty {
+                Type::Named(type_name) => self
+                    .scope
+                    .globals
+                    .member(type_name, name)
+                    .map(|m| m.ty)
+                    .ok_or_else(|| format!("'{type_name}' has no member '{name}'"))?,
+                other => return Err(format!("{other} has no members")),
+            },
+        };
+        if let Type::Reference(target) = ty {
+            let Place::Direct(op) = place else {
+                return Err("a reference reached through a pointer".to_owned());
+            };
+            let lay = self.lay(&target)?;
+            return Ok((
+                Typed {
+                    place: Place::Indirect(op),
+                    ty: *target,
+                    lay,
+                },
+                false,
+            ));
+        }
+        Ok((Typed { place, ty, lay }, false))
+    }
+
+    fn offset_place(&mut self, place: Place, offset: u32) -> Gen<Place> {
+        Ok(match place {
+            Place::Direct(op) => Place::Direct(super::expr::shifted(op, offset)),
+            Place::Indirect(pointer) if offset == 0 => Place::Indirect(pointer),
+            Place::Indirect(pointer) => {
+                let dst = self.temp(8);
+                self.emit(Instr::Offset {
+                    dst,
+                    base: pointer,
+                    offset,
+                });
+                Place::Indirect(dst)
+            }
+            Place::Bit { .. } => return Err("a bit has no members".to_owned()),
+        })
+    }
+}
+
+/// The type of the frame variable at `offset`.
+fn frame_type(frame: &super::body::Frame<'_>, offset: u32) -> Type {
+    frame
+        .vars
+        .iter()
+        .map(|(_, v)| v)
+        .chain(&frame.result)
+        .find(|v| v.offset == offset)
+        .map_or(Type::Error, |v| v.ty.clone())
+}

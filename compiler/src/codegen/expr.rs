@@ -1,0 +1,825 @@
+//! Places (variables, members, elements, dereferences) and expressions.
+
+use program_image::{BinaryOp, CompareOp, Elementary as IE, Instr, Operand, UnaryOp};
+use project_model::VarSection;
+
+use super::body::{BodyGen, Gen, Place, Typed};
+use super::constant::{Value, evaluate_node, raw_of, text_bytes};
+use super::layout::{Lay, LayShape, located_of};
+use crate::elementary::Elementary;
+use crate::sema::scope::{GlobalSymbol, LocalSymbol};
+use crate::sema::ty::{Type, common_type};
+use crate::syntax::{SyntaxKind, SyntaxNode, SyntaxToken};
+
+pub(crate) fn tokens(node: &SyntaxNode) -> impl Iterator<Item = SyntaxToken> {
+    node.children_with_tokens()
+        .filter_map(|element| element.into_token())
+        .filter(|token| !token.kind().is_trivia())
+}
+
+/// `op` moved on by `delta` bytes.
+pub(crate) fn shifted(op: Operand, delta: u32) -> Operand {
+    match op {
+        Operand::Global(o) => Operand::Global(o + delta),
+        Operand::Instance(o) => Operand::Instance(o + delta),
+        Operand::Frame(o) => Operand::Frame(o + delta),
+        Operand::Const(o) => Operand::Const(o + delta),
+        Operand::Input(o) => Operand::Input(o + delta),
+        Operand::Output(o) => Operand::Output(o + delta),
+        Operand::Memory(o) => Operand::Memory(o + delta),
+    }
+}
+
+/// The operand of a located variable's first byte, and its bit for a BOOL.
+pub(crate) fn located_operand(located: program_image::Located) -> (Operand, Option<u8>) {
+    let byte = (located.bit_offset / 8) as u32;
+    let op = match located.region {
+        program_image::Region::Input => Operand::Input(byte),
+        program_image::Region::Output => Operand::Output(byte),
+        program_image::Region::Memory => Operand::Memory(byte),
+        program_image::Region::Data => Operand::Global(byte),
+    };
+    let bit = (located.size_bits == 1).then_some((located.bit_offset % 8) as u8);
+    (op, bit)
+}
+
+/// A literal's type made concrete by where it goes, or by IEC's defaults (DINT, LREAL).
+pub(crate) fn concrete(ty: &Type, want: Option<&Type>) -> Type {
+    let wanted_number = want.filter(|w| {
+        matches!(w, Type::Elementary(e) | Type::Subrange { base: e, .. } if !matches!(e, Elementary::String | Elementary::Wstring))
+            || matches!(w, Type::Named(_))
+    });
+    match ty {
+        Type::IntLiteral(value) => match wanted_number {
+            Some(Type::Named(_)) | None => {
+                let fits_dint = value.is_none_or(|v| i32::try_from(v).is_ok());
+                Type::Elementary(if fits_dint {
+                    Elementary::Dint
+                } else {
+                    Elementary::Lint
+                })
+            }
+            Some(w) => w.clone(),
+        },
+        Type::RealLiteral => match wanted_number {
+            Some(w @ Type::Elementary(Elementary::Real | Elementary::Lreal)) => w.clone(),
+            _ => Type::Elementary(Elementary::Lreal),
+        },
+        Type::Subrange { base, .. } => Type::Elementary(*base),
+        other => other.clone(),
+    }
+}
+
+impl BodyGen<'_, '_, '_> {
+    /// Reads a place into an operand.
+    pub(crate) fn load(&mut self, typed: &Typed) -> Gen<Operand> {
+        Ok(match typed.place {
+            Place::Direct(op) => op,
+            Place::Indirect(pointer) => {
+                let dst = self.temp(typed.lay.size);
+                self.emit(Instr::Load {
+                    size: typed.lay.size,
+                    dst,
+                    ptr: pointer,
+                });
+                dst
+            }
+            Place::Bit { operand, ty, bit } => {
+                let dst = self.temp(1);
+                self.emit(Instr::GetBit {
+                    ty,
+                    dst,
+                    src: operand,
+                    bit,
+                });
+                dst
+            }
+        })
+    }
+
+    /// Writes an operand of the place's type into the place.
+    pub(crate) fn store(&mut self, typed: &Typed, src: Operand) -> Gen<()> {
+        match typed.place {
+            Place::Direct(dst) => {
+                if dst == src {
+                    return Ok(());
+                }
+                match typed.lay.shape {
+                    LayShape::Scalar(ty) | LayShape::Enum(ty) => {
+                        self.emit(Instr::Move { ty, dst, src })
+                    }
+                    _ => self.emit(Instr::Copy {
+                        size: typed.lay.size,
+                        dst,
+                        src,
+                    }),
+                };
+            }
+            Place::Indirect(pointer) => {
+                self.emit(Instr::Store {
+                    size: typed.lay.size,
+                    ptr: pointer,
+                    src,
+                });
+            }
+            Place::Bit { operand, ty, bit } => {
+                self.emit(Instr::SetBit {
+                    ty,
+                    dst: operand,
+                    bit,
+                    src,
+                });
+            }
+        }
+        Ok(())
+    }
+
+    /// A pointer to a place, in an operand.
+    pub(crate) fn pointer_to(&mut self, typed: &Typed) -> Gen<Operand> {
+        match typed.place {
+            Place::Direct(op) => {
+                let dst = self.temp(8);
+                self.emit(Instr::Address { dst, place: op });
+                Ok(dst)
+            }
+            Place::Indirect(pointer) => Ok(pointer),
+            Place::Bit { .. } => Err("the address of a single bit cannot be taken".to_owned()),
+        }
+    }
+
+    /// `ADR(x)` and the argument of a VAR_IN_OUT: a pointer to the place `node` names.
+    pub(crate) fn address_of(&mut self, node: &SyntaxNode) -> Gen<Operand> {
+        let typed = self.place(node)?;
+        self.pointer_to(&typed)
+    }
+
+    /// A typed place for an operand of layout `lay`.
+    fn typed(&mut self, place: Place, ty: Type) -> Gen<Typed> {
+        let lay = self.build.layouts.of(&ty)?;
+        Ok(Typed { place, ty, lay })
+    }
+
+    /// A stored variable: follows VAR_IN_OUT and reference slots to their target.
+    fn slot_place(&mut self, place: Place, declared: Type, by_ref: bool) -> Gen<Typed> {
+        let follow = (by_ref || matches!(declared, Type::Reference(_))) && !self.raw_references;
+        if follow {
+            let target = match declared {
+                Type::Reference(target) => *target,
+                other => other,
+            };
+            let Place::Direct(op) = place else {
+                return Err("a reference inside a reference".to_owned());
+            };
+            return self.typed(Place::Indirect(op), target);
+        }
+        self.typed(place, declared)
+    }
+
+    /// The place an expression names.
+    pub(crate) fn place(&mut self, node: &SyntaxNode) -> Gen<Typed> {
+        match node.kind() {
+            SyntaxKind::PAREN_EXPR => {
+                let inner = node.children().next().ok_or("empty parentheses")?;
+                self.place(&inner)
+            }
+            SyntaxKind::NAME_EXPR => self.name_place(node),
+            SyntaxKind::FIELD_EXPR => self.field_place(node),
+            SyntaxKind::INDEX_EXPR => self.index_place(node),
+            SyntaxKind::DEREF_EXPR => {
+                let base = node.children().next().ok_or("nothing to dereference")?;
+                let (pointer, ty) = self.expr(&base, None)?;
+                let target = match ty {
+                    Type::Pointer(target) | Type::Reference(target) => *target,
+                    other => other,
+                };
+                self.typed(Place::Indirect(pointer), target)
+            }
+            SyntaxKind::ADDRESS_EXPR => {
+                let text = tokens(node)
+                    .next()
+                    .map(|t| t.text().to_owned())
+                    .unwrap_or_default();
+                let variable = project_model::Variable {
+                    address: Some(text.clone()),
+                    ..Default::default()
+                };
+                let located = located_of(&variable)
+                    .ok_or_else(|| format!("'{text}' is not a direct address"))?;
+                let (operand, bit) = located_operand(located);
+                let ty = self.type_of(node);
+                let place = match bit {
+                    Some(bit) => Place::Bit {
+                        operand,
+                        ty: IE::Byte,
+                        bit,
+                    },
+                    None => Place::Direct(operand),
+                };
+                self.typed(place, ty)
+            }
+            _ => Err(format!(
+                "'{}' is not a variable",
+                node.text().to_string().trim()
+            )),
+        }
+    }
+
+    fn name_place(&mut self, node: &SyntaxNode) -> Gen<Typed> {
+        let mut parts = tokens(node);
+        let first = parts.next().ok_or("an empty name")?;
+        let (token, global_only) = match first.kind() {
+            SyntaxKind::IDENT => (first, false),
+            SyntaxKind::DOT => (parts.next().ok_or("a name after '.'")?, true),
+            SyntaxKind::THIS => {
+                return Err("THIS is not supported by the code generator yet".to_owned());
+            }
+            _ => return Err(format!("'{}' is not a variable", first.text())),
+        };
+        let name = token.text().to_owned();
+        if !global_only && let Some(local) = self.scope.local(&name) {
+            match local {
+                LocalSymbol::Var(variable) => {
+                    if variable.section == VarSection::VarExternal {
+                        return self.global_place(&name);
+                    }
+                    if let Some(frame_var) = self.frame.var(&name).cloned() {
+                        return self.slot_place(
+                            Place::Direct(Operand::Frame(frame_var.offset)),
+                            frame_var.ty,
+                            frame_var.by_ref,
+                        );
+                    }
+                    let slot = self
+                        .instance
+                        .as_ref()
+                        .and_then(|instance| instance.slot(&name).cloned())
+                        .ok_or_else(|| format!("'{name}' has no storage"))?;
+                    if let Some(located) = slot.located {
+                        let (operand, bit) = located_operand(located);
+                        let place = match bit {
+                            Some(bit) => Place::Bit {
+                                operand,
+                                ty: IE::Byte,
+                                bit,
+                            },
+                            None => Place::Direct(operand),
+                        };
+                        return self.typed(place, slot.ty);
+                    }
+                    return self.slot_place(
+                        Place::Direct(Operand::Instance(slot.offset)),
+                        slot.ty,
+                        slot.by_ref,
+                    );
+                }
+                LocalSymbol::Result(_) => {
+                    let result = self
+                        .frame
+                        .result
+                        .clone()
+                        .ok_or_else(|| format!("'{name}' has no result here"))?;
+                    return self.slot_place(
+                        Place::Direct(Operand::Frame(result.offset)),
+                        result.ty,
+                        false,
+                    );
+                }
+                LocalSymbol::Property(_) => {
+                    return Err("properties are not supported by the code generator yet".to_owned());
+                }
+                _ => return Err(format!("'{name}' is not a variable")),
+            }
+        }
+        self.global_place(&name)
+    }
+
+    fn global_place(&mut self, name: &str) -> Gen<Typed> {
+        match self.scope.globals.lookup(name) {
+            Some(GlobalSymbol::Var(variable)) => {
+                let slot = self
+                    .build
+                    .global(variable)
+                    .ok_or_else(|| format!("the global variable '{name}' has no storage"))?;
+                Ok(slot)
+            }
+            Some(GlobalSymbol::Pou(pou)) if pou.kind == project_model::PouKind::Program => {
+                let offset = self
+                    .build
+                    .program_offset(&pou.name)
+                    .ok_or_else(|| format!("the program '{name}' has no instance"))?;
+                self.typed(
+                    Place::Direct(Operand::Global(offset)),
+                    Type::Named(pou.name.clone()),
+                )
+            }
+            _ => Err(format!("'{name}' is not a variable")),
+        }
+    }
+
+    fn field_place(&mut self, node: &SyntaxNode) -> Gen<Typed> {
+        let base = node.children().next().ok_or("a member of nothing")?;
+        let member = tokens(node)
+            .filter(|t| {
+                matches!(
+                    t.kind(),
+                    SyntaxKind::IDENT | SyntaxKind::INT_NUMBER | SyntaxKind::DIRECT_ADDRESS
+                )
+            })
+            .last()
+            .ok_or("a member without a name")?;
+        let member_name = member.text().to_owned();
+        match self.type_of(&base) {
+            Type::Namespace(_) => {
+                let gvl = base.text().to_string();
+                let variable = self
+                    .build
+                    .gvl_variable(gvl.trim(), &member_name)
+                    .ok_or_else(|| format!("'{}' has no variable '{member_name}'", gvl.trim()))?;
+                return self
+                    .build
+                    .global(variable)
+                    .ok_or_else(|| format!("'{member_name}' has no storage"));
+            }
+            Type::EnumNamespace(_) => {
+                return Err(format!("'{member_name}' is a value, not a variable"));
+            }
+            _ => {}
+        }
+        let base = self.place(&base)?;
+        if member.kind() == SyntaxKind::INT_NUMBER {
+            // `x.3`: one bit of an integer or bit string.
+            let ty = match base.lay.shape {
+                LayShape::Scalar(e) => e,
+                _ => return Err("only integers and bit strings have bits".to_owned()),
+            };
+            let bit: u8 = member_name.parse().map_err(|_| "a bit number")?;
+            if u32::from(bit) >= ty.size_bytes() * 8 {
+                return Err(format!("{} has no bit {bit}", ty.name()));
+            }
+            let operand = match base.place {
+                Place::Direct(op) => op,
+                _ => {
+                    return Err(
+                        "bits of a value reached through a pointer are not supported yet"
+                            .to_owned(),
+                    );
+                }
+            };
+            return self.typed(Place::Bit { operand, ty, bit }, Type::BOOL);
+        }
+        if let LayShape::Pou(pou_name) = &base.lay.shape
+            && let Some(pou) = self.scope.globals.pou(pou_name)
+        {
+            let instance = self.build.layouts.instance(pou)?;
+            let slot = instance
+                .slot(&member_name)
+                .cloned()
+                .ok_or_else(|| format!("'{pou_name}' has no variable '{member_name}'"))?;
+            if let Some(located) = slot.located {
+                let (operand, bit) = located_operand(located);
+                let place = match bit {
+                    Some(bit) => Place::Bit {
+                        operand,
+                        ty: IE::Byte,
+                        bit,
+                    },
+                    None => Place::Direct(operand),
+                };
+                return self.typed(place, slot.ty);
+            }
+            let place = self.member_place(base.place, slot.offset)?;
+            return self.slot_place(place, slot.ty, slot.by_ref);
+        }
+        let (offset, lay) = self.build.layouts.member_of(&base.lay, &member_name)?;
+        let ty = self.member_type(&base, &member_name)?;
+        let place = self.member_place(base.place, offset)?;
+        match ty {
+            Type::Reference(_) => self.slot_place(place, ty, false),
+            ty => Ok(Typed { place, ty, lay }),
+        }
+    }
+
+    fn member_type(&mut self, base: &Typed, member: &str) -> Gen<Type> {
+        let name = match &base.ty {
+            Type::Named(name) => name.clone(),
+            other => return Err(format!("{other} has no members")),
+        };
+        self.scope
+            .globals
+            .member(&name, member)
+            .map(|m| m.ty)
+            .ok_or_else(|| format!("'{name}' has no member '{member}'"))
+    }
+
+    fn member_place(&mut self, base: Place, offset: u32) -> Gen<Place> {
+        Ok(match base {
+            Place::Direct(op) => Place::Direct(shifted(op, offset)),
+            Place::Indirect(pointer) => {
+                if offset == 0 {
+                    Place::Indirect(pointer)
+                } else {
+                    let dst = self.temp(8);
+                    self.emit(Instr::Offset {
+                        dst,
+                        base: pointer,
+                        offset,
+                    });
+                    Place::Indirect(dst)
+                }
+            }
+            Place::Bit { .. } => return Err("a bit has no members".to_owned()),
+        })
+    }
+
+    fn index_place(&mut self, node: &SyntaxNode) -> Gen<Typed> {
+        let mut children = node.children();
+        let base_node = children.next().ok_or("an index of nothing")?;
+        let indices: Vec<SyntaxNode> = children.collect();
+        let base = self.place(&base_node)?;
+        let LayShape::Array {
+            element,
+            element_ty,
+            dims,
+        } = base.lay.shape.clone()
+        else {
+            return Err(format!(
+                "'{}' is not an array",
+                base_node.text().to_string().trim()
+            ));
+        };
+        if dims.len() != indices.len() {
+            return Err(format!(
+                "{} index(es) for {} dimension(s)",
+                indices.len(),
+                dims.len()
+            ));
+        }
+        // Strides of each dimension: the size of what one step of its index skips.
+        let mut strides = vec![0u32; dims.len()];
+        let mut stride = element.size;
+        for (i, (low, high)) in dims.iter().enumerate().rev() {
+            strides[i] = stride;
+            stride = stride.saturating_mul((high - low + 1) as u32);
+        }
+        let mut place = base.place;
+        let mut constant_offset = 0u32;
+        for ((index, (low, high)), stride) in indices.iter().zip(&dims).zip(&strides) {
+            if let Some(Value::Int(value)) = evaluate_node(index, self.scope.globals) {
+                let value = i64::try_from(value).map_err(|_| "index out of range")?;
+                if value < *low || value > *high {
+                    return Err(format!("the index {value} is outside {low}..{high}"));
+                }
+                constant_offset += (value - low) as u32 * stride;
+                continue;
+            }
+            if constant_offset > 0 {
+                place = self.member_place(place, constant_offset)?;
+                constant_offset = 0;
+            }
+            let base_pointer = self.pointer_to(&Typed {
+                place,
+                ty: base.ty.clone(),
+                lay: base.lay.clone(),
+            })?;
+            let (index_value, index_ty) = self.expr(index, None)?;
+            let index_scalar = self
+                .scalar_of(&index_ty)
+                .ok_or("an array index must be an integer")?;
+            let dst = self.temp(8);
+            self.emit(Instr::Element {
+                dst,
+                base: base_pointer,
+                index: index_value,
+                index_ty: index_scalar,
+                low: *low,
+                count: (high - low + 1) as u64,
+                stride: *stride,
+            });
+            place = Place::Indirect(dst);
+        }
+        if constant_offset > 0 {
+            place = self.member_place(place, constant_offset)?;
+        }
+        Ok(Typed {
+            place,
+            ty: element_ty,
+            lay: *element,
+        })
+    }
+
+    /// Evaluates `node` into an operand of exactly type `target`.
+    pub(crate) fn expr_as(&mut self, node: &SyntaxNode, target: &Type) -> Gen<Operand> {
+        let (operand, ty) = self.expr(node, Some(target))?;
+        self.convert(operand, &ty, target)
+    }
+
+    /// Converts an operand between types (implicit conversions the checker allowed).
+    pub(crate) fn convert(&mut self, operand: Operand, from: &Type, to: &Type) -> Gen<Operand> {
+        let from_lay = self.build.layouts.of(from)?;
+        let to_lay = self.build.layouts.of(to)?;
+        if from_lay.id == to_lay.id {
+            return Ok(operand);
+        }
+        match (&from_lay.shape, &to_lay.shape) {
+            (LayShape::Scalar(a) | LayShape::Enum(a), LayShape::Scalar(b) | LayShape::Enum(b)) => {
+                if a == b {
+                    return Ok(operand);
+                }
+                let dst = self.temp(b.size_bytes());
+                self.emit(Instr::Convert {
+                    from: *a,
+                    to: *b,
+                    dst,
+                    src: operand,
+                });
+                Ok(dst)
+            }
+            (LayShape::Text { wide: a, .. }, LayShape::Text { wide: b, length }) if a == b => {
+                let dst = self.temp(to_lay.size);
+                let size = from_lay.size.min(to_lay.size);
+                self.emit(Instr::Copy {
+                    size,
+                    dst,
+                    src: operand,
+                });
+                // The copy may have cut the terminating zero.
+                let unit = if *b { 2 } else { 1 };
+                let zero = self.build.constant(&[0, 0]);
+                let terminator = shifted(dst, length * unit);
+                self.emit(Instr::Move {
+                    ty: if *b { IE::Word } else { IE::Byte },
+                    dst: terminator,
+                    src: zero,
+                });
+                Ok(dst)
+            }
+            (LayShape::Pointer, LayShape::Pointer) => Ok(operand),
+            _ if from_lay.size == to_lay.size => Ok(operand),
+            _ => Err(format!("cannot convert {from} to {to}")),
+        }
+    }
+
+    /// Evaluates an expression; the type returned is concrete (never a literal's).
+    pub(crate) fn expr(&mut self, node: &SyntaxNode, want: Option<&Type>) -> Gen<(Operand, Type)> {
+        let checked = self.type_of(node);
+        match node.kind() {
+            SyntaxKind::PAREN_EXPR => {
+                let inner = node.children().next().ok_or("empty parentheses")?;
+                self.expr(&inner, want)
+            }
+            SyntaxKind::LITERAL | SyntaxKind::TYPED_LITERAL => self.literal(node, &checked, want),
+            SyntaxKind::NAME_EXPR | SyntaxKind::FIELD_EXPR => {
+                if let Type::Named(name) = &checked
+                    && matches!(
+                        self.scope.globals.shape(name),
+                        Some(crate::sema::types::Shape::Enum(_))
+                    )
+                    && self.is_enum_value(node)
+                {
+                    return self.literal(node, &checked, want);
+                }
+                let typed = self.place(node)?;
+                let operand = self.load(&typed)?;
+                Ok((operand, typed.ty))
+            }
+            SyntaxKind::INDEX_EXPR | SyntaxKind::DEREF_EXPR | SyntaxKind::ADDRESS_EXPR => {
+                let typed = self.place(node)?;
+                let operand = self.load(&typed)?;
+                Ok((operand, typed.ty))
+            }
+            SyntaxKind::UNARY_EXPR => self.unary(node, &checked, want),
+            SyntaxKind::BINARY_EXPR => self.binary(node, &checked, want),
+            SyntaxKind::CALL_EXPR => self
+                .call(node, want)?
+                .ok_or_else(|| format!("'{}' gives no value", node.text().to_string().trim())),
+            _ => Err(format!(
+                "cannot compile the expression '{}'",
+                node.text().to_string().trim()
+            )),
+        }
+    }
+
+    /// Whether a name or member expression names an enumeration value rather than a variable.
+    fn is_enum_value(&self, node: &SyntaxNode) -> bool {
+        let Some(name) = tokens(node)
+            .filter(|t| t.kind() == SyntaxKind::IDENT)
+            .last()
+        else {
+            return false;
+        };
+        if node.kind() == SyntaxKind::FIELD_EXPR {
+            return node
+                .children()
+                .next()
+                .is_some_and(|base| matches!(self.type_of(&base), Type::EnumNamespace(_)));
+        }
+        self.scope.local(name.text()).is_none()
+            && matches!(
+                self.scope.globals.lookup(name.text()),
+                Some(GlobalSymbol::EnumValue(_))
+            )
+    }
+
+    fn literal(
+        &mut self,
+        node: &SyntaxNode,
+        checked: &Type,
+        want: Option<&Type>,
+    ) -> Gen<(Operand, Type)> {
+        let value = evaluate_node(node, self.scope.globals)
+            .ok_or_else(|| format!("'{}' is not a constant", node.text().to_string().trim()))?;
+        let ty = match (checked, want) {
+            (Type::String { wide, .. }, Some(Type::String { wide: w, length })) if wide == w => {
+                Type::String {
+                    wide: *w,
+                    length: *length,
+                }
+            }
+            (Type::String { wide, .. }, _) => {
+                let length = match &value {
+                    Value::Text(chars) => chars.len().max(1) as u32,
+                    _ => 1,
+                };
+                Type::String {
+                    wide: *wide,
+                    length,
+                }
+            }
+            _ => concrete(checked, want),
+        };
+        let lay = self.build.layouts.of(&ty)?;
+        let bytes = match (&lay.shape, &value) {
+            (LayShape::Scalar(e) | LayShape::Enum(e), _) => {
+                let raw = raw_of(&value, *e)
+                    .ok_or_else(|| format!("'{}' is not a {ty}", node.text().to_string().trim()))?;
+                raw.to_le_bytes()[..e.size_bytes() as usize].to_vec()
+            }
+            (LayShape::Text { wide, length }, Value::Text(chars)) => {
+                text_bytes(chars, *wide, *length)
+            }
+            _ => {
+                return Err(format!(
+                    "'{}' is not a {ty}",
+                    node.text().to_string().trim()
+                ));
+            }
+        };
+        Ok((self.build.constant(&bytes), ty))
+    }
+
+    fn unary(
+        &mut self,
+        node: &SyntaxNode,
+        checked: &Type,
+        want: Option<&Type>,
+    ) -> Gen<(Operand, Type)> {
+        let operator = tokens(node).next().ok_or("an operator")?.kind();
+        let operand_node = node.children().next().ok_or("an operand")?;
+        if matches!(checked, Type::IntLiteral(_) | Type::RealLiteral)
+            && operator == SyntaxKind::MINUS
+        {
+            // A negative literal is a constant of the type it goes to.
+            if let Some(value) = evaluate_node(node, self.scope.globals) {
+                let ty = concrete(checked, want);
+                let scalar = self.scalar_of(&ty).ok_or("a number")?;
+                let raw = raw_of(&value, scalar).ok_or("a number")?;
+                return Ok((self.build.scalar_constant(raw, scalar), ty));
+            }
+        }
+        let ty = concrete(checked, want);
+        let value = self.expr_as(&operand_node, &ty)?;
+        let scalar = self
+            .scalar_of(&ty)
+            .ok_or_else(|| format!("an operator on {ty}"))?;
+        let op = match operator {
+            SyntaxKind::NOT => UnaryOp::Not,
+            SyntaxKind::MINUS => UnaryOp::Neg,
+            SyntaxKind::PLUS => return Ok((value, ty)),
+            other => return Err(format!("the operator {other:?}")),
+        };
+        let dst = self.temp(scalar.size_bytes());
+        self.emit(Instr::Unary {
+            op,
+            ty: scalar,
+            dst,
+            src: value,
+        });
+        Ok((dst, ty))
+    }
+
+    fn binary(
+        &mut self,
+        node: &SyntaxNode,
+        checked: &Type,
+        want: Option<&Type>,
+    ) -> Gen<(Operand, Type)> {
+        let mut operands = node.children();
+        let (Some(left), Some(right)) = (operands.next(), operands.next()) else {
+            return Err("an operator needs two operands".to_owned());
+        };
+        let operator = tokens(node).next().ok_or("an operator")?.kind();
+        use SyntaxKind as K;
+        let compare = match operator {
+            K::EQ => Some(CompareOp::Eq),
+            K::NEQ => Some(CompareOp::Ne),
+            K::LT => Some(CompareOp::Lt),
+            K::LE => Some(CompareOp::Le),
+            K::GT => Some(CompareOp::Gt),
+            K::GE => Some(CompareOp::Ge),
+            _ => None,
+        };
+        if let Some(op) = compare {
+            let (lt, rt) = (self.type_of(&left), self.type_of(&right));
+            let common = common_type(&lt, &rt).unwrap_or(lt);
+            let ty = concrete(&common, None);
+            let scalar = self
+                .scalar_of(&ty)
+                .ok_or_else(|| format!("comparing values of type {ty} is not supported yet"))?;
+            let a = self.expr_as(&left, &ty)?;
+            let b = self.expr_as(&right, &ty)?;
+            let dst = self.temp(1);
+            self.emit(Instr::Compare {
+                op,
+                ty: scalar,
+                dst,
+                a,
+                b,
+            });
+            return Ok((dst, Type::BOOL));
+        }
+        if matches!(operator, K::AND_THEN | K::OR_ELSE) {
+            let dst = self.temp(1);
+            let a = self.expr_as(&left, &Type::BOOL)?;
+            self.emit(Instr::Move {
+                ty: IE::Bool,
+                dst,
+                src: a,
+            });
+            let skip = if operator == K::AND_THEN {
+                self.emit(Instr::JumpIfNot {
+                    cond: dst,
+                    target: 0,
+                })
+            } else {
+                self.emit(Instr::JumpIf {
+                    cond: dst,
+                    target: 0,
+                })
+            };
+            let b = self.expr_as(&right, &Type::BOOL)?;
+            self.emit(Instr::Move {
+                ty: IE::Bool,
+                dst,
+                src: b,
+            });
+            let end = self.here();
+            self.patch(skip, end);
+            return Ok((dst, Type::BOOL));
+        }
+        let op = match operator {
+            K::PLUS => BinaryOp::Add,
+            K::MINUS => BinaryOp::Sub,
+            K::STAR => BinaryOp::Mul,
+            K::SLASH => BinaryOp::Div,
+            K::MOD => BinaryOp::Mod,
+            K::POWER => BinaryOp::Expt,
+            K::AND | K::AMP => BinaryOp::And,
+            K::OR => BinaryOp::Or,
+            K::XOR => BinaryOp::Xor,
+            other => return Err(format!("the operator {other:?}")),
+        };
+        let ty = concrete(checked, want);
+        // Constant arithmetic is folded by the checker's rules, so `2 * 64` is one constant.
+        if matches!(checked, Type::IntLiteral(_) | Type::RealLiteral)
+            && let Some(value) = evaluate_node(node, self.scope.globals)
+            && let Some(scalar) = self.scalar_of(&ty)
+            && let Some(raw) = raw_of(&value, scalar)
+        {
+            return Ok((self.build.scalar_constant(raw, scalar), ty));
+        }
+        let scalar = self
+            .scalar_of(&ty)
+            .ok_or_else(|| format!("'{}' on {ty}", node.text().to_string().trim()))?;
+        let operand_ty = if op == BinaryOp::Expt {
+            ty.clone()
+        } else {
+            ty.clone()
+        };
+        let a = self.expr_as(&left, &operand_ty)?;
+        let b = self.expr_as(&right, &operand_ty)?;
+        let dst = self.temp(scalar.size_bytes());
+        self.emit(Instr::Binary {
+            op,
+            ty: scalar,
+            dst,
+            a,
+            b,
+        });
+        Ok((dst, ty))
+    }
+
+    /// The layout of a type.
+    pub(crate) fn lay(&mut self, ty: &Type) -> Gen<Lay> {
+        self.build.layouts.of(ty)
+    }
+}

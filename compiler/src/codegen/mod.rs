@@ -1,0 +1,74 @@
+//! Code generation: a checked project into a `program_image::ProgramImage`.
+//!
+//! The layout of every type and instance is computed once (`layout.rs`, initial values in
+//! `init.rs`); each body is then walked with the checker's type of every expression
+//! (`body.rs` statements, `expr.rs` places and expressions, `call.rs` and `std_call.rs`
+//! calls), and `program.rs` assembles the data region, symbols, tasks and code.
+//!
+//! Semantics decided here (written down in `docs/program-image.md` §14): integer arithmetic
+//! wraps in two's complement in the type of the expression; the FOR variable holds the first
+//! value past the end after the loop, and the end and step are evaluated once; `SHR` shifts
+//! in zeros on signed types too; a non-zero value converted to BOOL is TRUE; an integer
+//! literal assigned to a BYTE keeps its low bits only when the checker allowed it (it fits).
+
+mod body;
+mod call;
+mod constant;
+mod expr;
+mod init;
+mod layout;
+mod program;
+mod std_call;
+
+use std::path::Path;
+
+use program_image::ProgramImage;
+use project_model::Project;
+
+use crate::sema::{ProjectDiagnostic, check_project};
+use crate::{Severity, SourceProject};
+
+pub use program::BodyOrigin;
+
+/// Why a project does not compile.
+#[derive(Debug, thiserror::Error)]
+pub enum CompileError {
+    /// The checker found errors; nothing was generated.
+    #[error("the project has {} error(s)", .0.iter().filter(|d| d.diagnostic.severity == Severity::Error).count())]
+    Diagnostics(Vec<ProjectDiagnostic>),
+    /// Something the checker accepts that the code generator cannot compile yet, or a limit.
+    #[error("{0}")]
+    Unsupported(String),
+}
+
+/// Checks and compiles a project.
+pub fn compile_project(project: &Project) -> Result<ProgramImage, CompileError> {
+    let origin = |file: &Path| (file.to_string_lossy().into_owned(), 1);
+    compile_with(project, &origin)
+}
+
+/// Checks and compiles a project made from one source file; the line table points into that
+/// file, called `file_name`.
+pub fn compile_source(
+    source: &SourceProject,
+    file_name: &str,
+) -> Result<ProgramImage, CompileError> {
+    let origin = |file: &Path| {
+        (
+            file_name.to_owned(),
+            source.body_first_line(file).unwrap_or(1),
+        )
+    };
+    compile_with(&source.project, &origin)
+}
+
+fn compile_with(project: &Project, origin: BodyOrigin<'_>) -> Result<ProgramImage, CompileError> {
+    let diagnostics = check_project(project);
+    if diagnostics
+        .iter()
+        .any(|d| d.diagnostic.severity == Severity::Error)
+    {
+        return Err(CompileError::Diagnostics(diagnostics));
+    }
+    program::build_image(project, origin).map_err(CompileError::Unsupported)
+}

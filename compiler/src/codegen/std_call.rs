@@ -1,0 +1,393 @@
+//! Calls of the standard functions: conversions, numeric and bit functions, selection, and the
+//! string functions the runtime implements.
+
+use program_image::{BinaryOp, CompareOp, Elementary as IE, Instr, Operand, StdFunction, UnaryOp};
+
+use super::body::{BodyGen, Gen};
+use super::call::Argument;
+use super::expr::concrete;
+use super::layout::LayShape;
+use crate::elementary::Elementary;
+use crate::sema::ty::Type;
+use crate::syntax::SyntaxNode;
+
+/// The formal input names of the standard functions whose inputs are not `IN`/`IN1…`.
+fn formal_order(name: &str) -> &'static [&'static str] {
+    match name {
+        "LIMIT" => &["MN", "IN", "MX"],
+        "SEL" => &["G", "IN0", "IN1"],
+        "MID" => &["STR", "LEN", "POS"],
+        "LEFT" | "RIGHT" => &["STR", "SIZE"],
+        "INSERT" => &["STR1", "STR2", "POS"],
+        "DELETE" => &["STR", "LEN", "POS"],
+        "REPLACE" => &["STR1", "STR2", "LEN", "POS"],
+        "FIND" => &["STR1", "STR2"],
+        _ => &[],
+    }
+}
+
+impl BodyGen<'_, '_, '_> {
+    /// The argument expressions in positional order (formal arguments put in their place).
+    fn ordered(&self, name: &str, args: &[Argument]) -> Gen<Vec<SyntaxNode>> {
+        let order = formal_order(name);
+        let mut placed: Vec<(usize, SyntaxNode)> = Vec::new();
+        for (position, arg) in args.iter().enumerate() {
+            let Some(value) = arg.value.clone() else {
+                continue;
+            };
+            let at = match &arg.formal {
+                None => position,
+                Some(formal) => {
+                    let upper = formal.to_ascii_uppercase();
+                    if let Some(at) = order.iter().position(|f| *f == upper) {
+                        at
+                    } else if upper == "IN" {
+                        0
+                    } else if let Some(n) = upper
+                        .strip_prefix("IN")
+                        .and_then(|n| n.parse::<usize>().ok())
+                    {
+                        // IN1, IN2…, and MUX's IN0, IN1… after K.
+                        if name == "MUX" {
+                            n + 1
+                        } else {
+                            n.saturating_sub(1)
+                        }
+                    } else if upper == "K" || upper == "G" {
+                        0
+                    } else {
+                        return Err(format!("'{name}' has no input '{formal}'"));
+                    }
+                }
+            };
+            placed.push((at, value));
+        }
+        placed.sort_by_key(|(at, _)| *at);
+        Ok(placed.into_iter().map(|(_, v)| v).collect())
+    }
+
+    /// A call of the standard function `name`.
+    pub(crate) fn call_standard(
+        &mut self,
+        name: &str,
+        node: &SyntaxNode,
+        args: &[Argument],
+        want: Option<&Type>,
+    ) -> Gen<Option<(Operand, Type)>> {
+        let upper = name.to_ascii_uppercase();
+        let values = self.ordered(&upper, args)?;
+        let result_ty = concrete(&self.type_of(node), want);
+        let first = || {
+            values
+                .first()
+                .cloned()
+                .ok_or_else(|| format!("'{name}' needs an argument"))
+        };
+        // Conversions: `INT_TO_REAL`, `TRUNC`, `REAL_TO_INT`…
+        if let Some((from, _)) = upper
+            .split_once("_TO_")
+            .filter(|(f, t)| !f.is_empty() && !t.is_empty() && !upper.contains("BCD"))
+        {
+            let from_ty = Elementary::from_name(from)
+                .map(Type::elementary)
+                .unwrap_or(Type::Error);
+            let arg = first()?;
+            let natural = if from_ty == Type::Error {
+                self.type_of(&arg)
+            } else {
+                from_ty
+            };
+            let natural = concrete(&natural, None);
+            let value = self.expr_as(&arg, &natural)?;
+            return self
+                .conversion(value, &natural, &result_ty, upper.starts_with("TRUNC"))
+                .map(Some);
+        }
+        if upper == "TRUNC" || upper.starts_with("TRUNC_") {
+            let arg = first()?;
+            let natural = concrete(&self.type_of(&arg), None);
+            let value = self.expr_as(&arg, &natural)?;
+            return self.conversion(value, &natural, &result_ty, true).map(Some);
+        }
+        let unary = match upper.as_str() {
+            "ABS" => Some(UnaryOp::Abs),
+            "SQRT" => Some(UnaryOp::Sqrt),
+            "LN" => Some(UnaryOp::Ln),
+            "LOG" => Some(UnaryOp::Log),
+            "EXP" => Some(UnaryOp::Exp),
+            "SIN" => Some(UnaryOp::Sin),
+            "COS" => Some(UnaryOp::Cos),
+            "TAN" => Some(UnaryOp::Tan),
+            "ASIN" => Some(UnaryOp::Asin),
+            "ACOS" => Some(UnaryOp::Acos),
+            "ATAN" => Some(UnaryOp::Atan),
+            "NOT" => Some(UnaryOp::Not),
+            "NEG" => Some(UnaryOp::Neg),
+            _ => None,
+        };
+        if let Some(op) = unary {
+            let value = self.expr_as(&first()?, &result_ty)?;
+            let scalar = self
+                .scalar_of(&result_ty)
+                .ok_or_else(|| format!("'{name}' on {result_ty}"))?;
+            let dst = self.temp(scalar.size_bytes());
+            self.emit(Instr::Unary {
+                op,
+                ty: scalar,
+                dst,
+                src: value,
+            });
+            return Ok(Some((dst, result_ty)));
+        }
+        let binary = match upper.as_str() {
+            "ADD" => Some(BinaryOp::Add),
+            "SUB" => Some(BinaryOp::Sub),
+            "MUL" => Some(BinaryOp::Mul),
+            "DIV" => Some(BinaryOp::Div),
+            "MOD" => Some(BinaryOp::Mod),
+            "EXPT" => Some(BinaryOp::Expt),
+            "AND" => Some(BinaryOp::And),
+            "OR" => Some(BinaryOp::Or),
+            "XOR" => Some(BinaryOp::Xor),
+            "MIN" => Some(BinaryOp::Min),
+            "MAX" => Some(BinaryOp::Max),
+            "SHL" => Some(BinaryOp::Shl),
+            "SHR" => Some(BinaryOp::Shr),
+            "ROL" => Some(BinaryOp::Rol),
+            "ROR" => Some(BinaryOp::Ror),
+            _ => None,
+        };
+        if let Some(op) = binary {
+            let scalar = self
+                .scalar_of(&result_ty)
+                .ok_or_else(|| format!("'{name}' on {result_ty}"))?;
+            let mut operands = values.iter();
+            let first_node = operands
+                .next()
+                .ok_or_else(|| format!("'{name}' needs arguments"))?;
+            let mut acc = self.expr_as(first_node, &result_ty)?;
+            for next in operands {
+                let value = self.expr_as(next, &result_ty)?;
+                let dst = self.temp(scalar.size_bytes());
+                self.emit(Instr::Binary {
+                    op,
+                    ty: scalar,
+                    dst,
+                    a: acc,
+                    b: value,
+                });
+                acc = dst;
+            }
+            return Ok(Some((acc, result_ty)));
+        }
+        match upper.as_str() {
+            "MOVE" => {
+                let value = self.expr_as(&first()?, &result_ty)?;
+                Ok(Some((value, result_ty)))
+            }
+            "LIMIT" => {
+                let [mn, input, mx] = values.as_slice() else {
+                    return Err("LIMIT needs MN, IN and MX".to_owned());
+                };
+                let scalar = self.scalar_of(&result_ty).ok_or("LIMIT on a number")?;
+                let (mn, input, mx) = (
+                    self.expr_as(mn, &result_ty)?,
+                    self.expr_as(input, &result_ty)?,
+                    self.expr_as(mx, &result_ty)?,
+                );
+                let low = self.temp(8);
+                self.emit(Instr::Binary {
+                    op: BinaryOp::Max,
+                    ty: scalar,
+                    dst: low,
+                    a: input,
+                    b: mn,
+                });
+                let dst = self.temp(8);
+                self.emit(Instr::Binary {
+                    op: BinaryOp::Min,
+                    ty: scalar,
+                    dst,
+                    a: low,
+                    b: mx,
+                });
+                Ok(Some((dst, result_ty)))
+            }
+            "SEL" => {
+                let [g, in0, in1] = values.as_slice() else {
+                    return Err("SEL needs G, IN0 and IN1".to_owned());
+                };
+                let lay = self.lay(&result_ty)?;
+                let dst = self.temp(lay.size);
+                let condition = self.expr_as(g, &Type::BOOL)?;
+                let to_second = self.emit(Instr::JumpIf {
+                    cond: condition,
+                    target: 0,
+                });
+                let value = self.expr_as(in0, &result_ty)?;
+                self.copy_value(&lay.shape, lay.size, dst, value);
+                let end_jump = self.emit(Instr::Jump { target: 0 });
+                let second = self.here();
+                self.patch(to_second, second);
+                let value = self.expr_as(in1, &result_ty)?;
+                self.copy_value(&lay.shape, lay.size, dst, value);
+                let end = self.here();
+                self.patch(end_jump, end);
+                Ok(Some((dst, result_ty)))
+            }
+            "MUX" => {
+                let Some((k, inputs)) = values.split_first() else {
+                    return Err("MUX needs K and inputs".to_owned());
+                };
+                let lay = self.lay(&result_ty)?;
+                let dst = self.temp(lay.size);
+                let k_ty = concrete(&self.type_of(k), None);
+                let k_scalar = self.scalar_of(&k_ty).ok_or("MUX's K must be an integer")?;
+                let k_value = self.expr_as(k, &k_ty)?;
+                let mut ends = Vec::new();
+                // K outside 0..n-1 selects the last input, as CODESYS does.
+                for (index, input) in inputs.iter().enumerate() {
+                    let skip = if index + 1 < inputs.len() {
+                        let constant = self.build.scalar_constant(index as u64, k_scalar);
+                        let hit = self.temp(1);
+                        self.emit(Instr::Compare {
+                            op: CompareOp::Ne,
+                            ty: k_scalar,
+                            dst: hit,
+                            a: k_value,
+                            b: constant,
+                        });
+                        Some(self.emit(Instr::JumpIf {
+                            cond: hit,
+                            target: 0,
+                        }))
+                    } else {
+                        None
+                    };
+                    let value = self.expr_as(input, &result_ty)?;
+                    self.copy_value(&lay.shape, lay.size, dst, value);
+                    ends.push(self.emit(Instr::Jump { target: 0 }));
+                    if let Some(skip) = skip {
+                        let next = self.here();
+                        self.patch(skip, next);
+                    }
+                }
+                let end = self.here();
+                for at in ends {
+                    self.patch(at, end);
+                }
+                Ok(Some((dst, result_ty)))
+            }
+            "ADR" => {
+                let pointer = self.address_of(&first()?)?;
+                Ok(Some((pointer, result_ty)))
+            }
+            "SIZEOF" => {
+                let arg = first()?;
+                let ty = self.type_of(&arg);
+                let size = self.lay(&ty)?.size;
+                let scalar = self.scalar_of(&result_ty).unwrap_or(IE::Udint);
+                Ok(Some((
+                    self.build.scalar_constant(u64::from(size), scalar),
+                    result_ty,
+                )))
+            }
+            "LEN" | "LEFT" | "RIGHT" | "MID" | "CONCAT" | "INSERT" | "DELETE" | "REPLACE"
+            | "FIND" => self.string_function(&upper, &values, &result_ty).map(Some),
+            _ => Err(format!(
+                "the standard function '{name}' is not supported by the code generator yet"
+            )),
+        }
+    }
+
+    fn copy_value(&mut self, shape: &LayShape, size: u32, dst: Operand, src: Operand) {
+        match shape {
+            LayShape::Scalar(ty) | LayShape::Enum(ty) => {
+                self.emit(Instr::Move { ty: *ty, dst, src })
+            }
+            _ => self.emit(Instr::Copy { size, dst, src }),
+        };
+    }
+
+    fn conversion(
+        &mut self,
+        value: Operand,
+        from: &Type,
+        to: &Type,
+        trunc: bool,
+    ) -> Gen<(Operand, Type)> {
+        let (Some(a), Some(b)) = (self.scalar_of(from), self.scalar_of(to)) else {
+            return Err(format!("converting {from} to {to} is not supported yet"));
+        };
+        let dst = self.temp(b.size_bytes());
+        if trunc {
+            self.emit(Instr::Trunc {
+                from: a,
+                to: b,
+                dst,
+                src: value,
+            });
+        } else {
+            self.emit(Instr::Convert {
+                from: a,
+                to: b,
+                dst,
+                src: value,
+            });
+        }
+        Ok((dst, to.clone()))
+    }
+
+    fn string_function(
+        &mut self,
+        name: &str,
+        values: &[SyntaxNode],
+        result_ty: &Type,
+    ) -> Gen<(Operand, Type)> {
+        let function = match name {
+            "LEN" => StdFunction::Len,
+            "LEFT" => StdFunction::Left,
+            "RIGHT" => StdFunction::Right,
+            "MID" => StdFunction::Mid,
+            "CONCAT" => StdFunction::Concat,
+            "INSERT" => StdFunction::Insert,
+            "DELETE" => StdFunction::Delete,
+            "REPLACE" => StdFunction::Replace,
+            _ => StdFunction::Find,
+        };
+        let mut wide = false;
+        let mut args = Vec::new();
+        for value in values {
+            let ty = self.type_of(value);
+            match ty {
+                Type::String { wide: w, .. } => {
+                    wide = w;
+                    let (operand, actual) = self.expr(value, None)?;
+                    let Type::String { length, .. } = actual else {
+                        return Err("a string argument".to_owned());
+                    };
+                    args.push((operand, length));
+                }
+                _ => {
+                    let dint = Type::Elementary(Elementary::Dint);
+                    let operand = self.expr_as(value, &dint)?;
+                    args.push((operand, 0));
+                }
+            }
+        }
+        let (dst, result_ty) = match result_ty {
+            Type::String { length, .. } => {
+                let lay = self.lay(result_ty)?;
+                ((self.temp(lay.size), *length), result_ty.clone())
+            }
+            _ => ((self.temp(4), 0), Type::Elementary(Elementary::Dint)),
+        };
+        self.emit(Instr::CallStdFunction {
+            function,
+            wide,
+            dst,
+            args,
+        });
+        Ok((dst.0, result_ty))
+    }
+}
