@@ -1,9 +1,22 @@
 #!/usr/bin/env bash
 # Runs every test of the workspace. This is the README's test command; .ci/run calls it.
-# It installs the system packages the tests need (none yet beyond the Rust toolchain), runs
-# `cargo test`, and ends with one line adding up the passed and failed tests of all binaries.
+# It installs the system packages the tests need, runs `cargo test`, and ends with one line
+# adding up the passed and failed tests of all binaries.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+
+# The runtime's Modbus tests use mbpoll and pymodbus as independent clients (Debian packages).
+# Debian's pymodbus is seen by /usr/bin/python3 only, not by a pyenv python3 earlier on the
+# path; the test tries both.
+pymodbus_importable() {
+    python3 -c 'import pymodbus' 2>/dev/null || /usr/bin/python3 -c 'import pymodbus' 2>/dev/null
+}
+if ! command -v mbpoll >/dev/null || ! pymodbus_importable; then
+    sudo=""
+    if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
+    $sudo apt-get update
+    $sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y mbpoll python3-pymodbus
+fi
 
 log=$(mktemp)
 trap 'rm -f "$log"' EXIT

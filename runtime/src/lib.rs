@@ -10,8 +10,14 @@
 //! - [`stdlib`]: the standard library's pure functions (conversions, strings, dates).
 //! - [`value`]: values of symbols read and written by path, as IEC literals.
 //! - [`simulation`]: N cycles on a simulated clock, as `rivet simulate` runs them.
+//! - [`areas`]: the located areas `%I`, `%Q` and `%M` as bytes in the CODESYS layout, shared by
+//!   the engine and the Modbus server behind one mutex.
+//! - [`modbus`]: the Modbus TCP server that maps the standard function codes onto the located
+//!   areas (the default map is `docs/modbus-map.md`) and leaves a hook for the online services.
 
+pub mod areas;
 pub mod engine;
+pub mod modbus;
 pub mod simulation;
 pub mod stdlib;
 pub mod value;
