@@ -11,6 +11,20 @@ use crate::elementary::Elementary;
 use crate::sema::ty::Type;
 use crate::syntax::SyntaxNode;
 
+/// The operation of a date and time function, if `name` is one.
+fn time_arithmetic(name: &str) -> Option<BinaryOp> {
+    Some(match name {
+        "ADD_TIME" | "ADD_LTIME" | "ADD_TOD_TIME" | "ADD_DT_TIME" | "ADD_LTOD_LTIME"
+        | "ADD_LDT_LTIME" | "CONCAT_DATE_TOD" | "CONCAT_DATE_LTOD" => BinaryOp::Add,
+        "SUB_TIME" | "SUB_LTIME" | "SUB_TOD_TIME" | "SUB_DT_TIME" | "SUB_DATE_DATE"
+        | "SUB_TOD_TOD" | "SUB_DT_DT" | "SUB_LTOD_LTIME" | "SUB_LDT_LTIME" | "SUB_LDATE_LDATE"
+        | "SUB_LTOD_LTOD" | "SUB_LDT_LDT" => BinaryOp::Sub,
+        "MUL_TIME" | "MUL_LTIME" => BinaryOp::Mul,
+        "DIV_TIME" | "DIV_LTIME" => BinaryOp::Div,
+        _ => return None,
+    })
+}
+
 /// The formal input names of the standard functions whose inputs are not `IN`/`IN1…`.
 fn formal_order(name: &str) -> &'static [&'static str] {
     match name {
@@ -180,6 +194,9 @@ impl BodyGen<'_, '_, '_> {
             }
             return Ok(Some((acc, result_ty)));
         }
+        if let Some(op) = time_arithmetic(&upper) {
+            return self.time_arithmetic(op, &values, &result_ty).map(Some);
+        }
         match upper.as_str() {
             "MOVE" => {
                 let value = self.expr_as(&first()?, &result_ty)?;
@@ -245,7 +262,21 @@ impl BodyGen<'_, '_, '_> {
                 let k_scalar = self.scalar_of(&k_ty).ok_or("MUX's K must be an integer")?;
                 let k_value = self.expr_as(k, &k_ty)?;
                 let mut ends = Vec::new();
-                // K outside 0..n-1 selects the last input, as CODESYS does.
+                // K below 0 selects the first input and K past the end the last.
+                let zero = self.build.scalar_constant(0, k_scalar);
+                let below = self.temp(1);
+                self.emit(Instr::Compare {
+                    op: CompareOp::Lt,
+                    ty: k_scalar,
+                    dst: below,
+                    a: k_value,
+                    b: zero,
+                });
+                let to_first = self.emit(Instr::JumpIf {
+                    cond: below,
+                    target: 0,
+                });
+                let mut first_at = None;
                 for (index, input) in inputs.iter().enumerate() {
                     let skip = if index + 1 < inputs.len() {
                         let constant = self.build.scalar_constant(index as u64, k_scalar);
@@ -264,6 +295,9 @@ impl BodyGen<'_, '_, '_> {
                     } else {
                         None
                     };
+                    if index == 0 {
+                        first_at = Some(self.here());
+                    }
                     let value = self.expr_as(input, &result_ty)?;
                     self.copy_value(&lay.shape, lay.size, dst, value);
                     ends.push(self.emit(Instr::Jump { target: 0 }));
@@ -275,6 +309,9 @@ impl BodyGen<'_, '_, '_> {
                 let end = self.here();
                 for at in ends {
                     self.patch(at, end);
+                }
+                if let Some(first) = first_at {
+                    self.patch(to_first, first);
                 }
                 Ok(Some((dst, result_ty)))
             }
@@ -298,6 +335,75 @@ impl BodyGen<'_, '_, '_> {
                 "the standard function '{name}' is not supported by the code generator yet"
             )),
         }
+    }
+
+    /// `ADD_DT_TIME`, `SUB_DT_DT`, `CONCAT_DATE_TOD`…: every operand is taken to nanoseconds
+    /// (LTIME), combined, and the result converted to the function's type, so units never
+    /// mix.
+    fn time_arithmetic(
+        &mut self,
+        op: BinaryOp,
+        values: &[SyntaxNode],
+        result_ty: &Type,
+    ) -> Gen<(Operand, Type)> {
+        let [a, b] = values else {
+            return Err("a time function takes two arguments".to_owned());
+        };
+        let result = self.scalar_of(result_ty).ok_or("a time result")?;
+        let nanos = Type::Elementary(Elementary::Ltime);
+        if matches!(op, BinaryOp::Mul | BinaryOp::Div) {
+            // MUL_TIME and DIV_TIME scale a duration by a number.
+            let time = self.expr_as(a, result_ty)?;
+            let factor = self.expr_as(b, result_ty)?;
+            let dst = self.temp(8);
+            self.emit(Instr::Binary {
+                op,
+                ty: result,
+                dst,
+                a: time,
+                b: factor,
+            });
+            return Ok((dst, result_ty.clone()));
+        }
+        let mut operands = Vec::new();
+        for value in [a, b] {
+            let (operand, ty) = self.expr(value, None)?;
+            let ty = concrete(&ty, Some(&nanos));
+            operands.push(self.convert_explicit(operand, &ty, &nanos)?);
+        }
+        let sum = self.temp(8);
+        self.emit(Instr::Binary {
+            op,
+            ty: IE::Ltime,
+            dst: sum,
+            a: operands[0],
+            b: operands[1],
+        });
+        let dst = self.temp(8);
+        self.emit(Instr::Convert {
+            from: IE::Ltime,
+            to: result,
+            dst,
+            src: sum,
+        });
+        Ok((dst, result_ty.clone()))
+    }
+
+    fn convert_explicit(&mut self, value: Operand, from: &Type, to: &Type) -> Gen<Operand> {
+        let (Some(a), Some(b)) = (self.scalar_of(from), self.scalar_of(to)) else {
+            return Err(format!("converting {from} to {to}"));
+        };
+        if a == b {
+            return Ok(value);
+        }
+        let dst = self.temp(8);
+        self.emit(Instr::Convert {
+            from: a,
+            to: b,
+            dst,
+            src: value,
+        });
+        Ok(dst)
     }
 
     fn copy_value(&mut self, shape: &LayShape, size: u32, dst: Operand, src: Operand) {

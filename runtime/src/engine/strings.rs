@@ -1,18 +1,138 @@
-//! The string functions of the standard library as engine instructions.
+//! The string functions of the standard library as engine instructions: operands are read as
+//! STRING/WSTRING of their declared capacity, computed by `stdlib::string`, and stored cut to
+//! the result's capacity.
 
 use program_image::StdFunction;
 
-use super::exec::Addr;
-use super::lower::Op;
+use super::exec::{Addr, Exec};
+use super::fault::FaultKind;
+use super::lower::{Flow, Op};
+use crate::stdlib::string;
+
+/// An argument of a string function: a string of some capacity, or an integer (DINT).
+#[derive(Clone, Copy)]
+enum Arg {
+    Text(Addr, usize),
+    Int(Addr),
+}
+
+/// The characters of one kind of string, read from and written to memory.
+trait Unit: Copy + PartialEq + Send + Sync + 'static {
+    fn load(x: &Exec<'_>, at: Addr, capacity: usize) -> Result<Vec<Self>, FaultKind>;
+    fn store(x: &mut Exec<'_>, at: Addr, capacity: usize, chars: &[Self]) -> Result<(), FaultKind>;
+}
+
+impl Unit for u8 {
+    fn load(x: &Exec<'_>, at: Addr, capacity: usize) -> Result<Vec<Self>, FaultKind> {
+        let start = x.at(at);
+        let bytes = x
+            .mem
+            .get(start..start + capacity + 1)
+            .ok_or(FaultKind::Memory)?;
+        Ok(string::load(bytes, capacity).to_vec())
+    }
+    fn store(x: &mut Exec<'_>, at: Addr, capacity: usize, chars: &[Self]) -> Result<(), FaultKind> {
+        let start = x.at(at);
+        let bytes = x
+            .mem
+            .get_mut(start..start + capacity + 1)
+            .ok_or(FaultKind::Memory)?;
+        string::store(bytes, chars, capacity);
+        Ok(())
+    }
+}
+
+impl Unit for u16 {
+    fn load(x: &Exec<'_>, at: Addr, capacity: usize) -> Result<Vec<Self>, FaultKind> {
+        let start = x.at(at);
+        let bytes = x
+            .mem
+            .get(start..start + 2 * (capacity + 1))
+            .ok_or(FaultKind::Memory)?;
+        Ok(string::load_wide(bytes, capacity))
+    }
+    fn store(x: &mut Exec<'_>, at: Addr, capacity: usize, chars: &[Self]) -> Result<(), FaultKind> {
+        let start = x.at(at);
+        let bytes = x
+            .mem
+            .get_mut(start..start + 2 * (capacity + 1))
+            .ok_or(FaultKind::Memory)?;
+        string::store_wide(bytes, chars, capacity);
+        Ok(())
+    }
+}
 
 /// The instruction for a string function.
 pub(crate) fn lower(
     function: StdFunction,
-    _wide: bool,
-    _dst: (Addr, u32),
-    _args: Vec<(Addr, u32)>,
+    wide: bool,
+    dst: (Addr, u32),
+    args: Vec<(Addr, u32)>,
 ) -> Result<Op, String> {
-    Err(format!(
-        "the string function {function:?} is not available in this runtime"
-    ))
+    let args: Vec<Arg> = args
+        .into_iter()
+        .map(|(at, capacity)| {
+            if capacity == 0 {
+                Arg::Int(at)
+            } else {
+                Arg::Text(at, capacity as usize)
+            }
+        })
+        .collect();
+    let expected: &[bool] = match function {
+        StdFunction::Len => &[true],
+        StdFunction::Left | StdFunction::Right => &[true, false],
+        StdFunction::Mid | StdFunction::Delete => &[true, false, false],
+        StdFunction::Concat | StdFunction::Find => &[true, true],
+        StdFunction::Insert => &[true, true, false],
+        StdFunction::Replace => &[true, true, false, false],
+    };
+    let shape_ok = args.len() == expected.len()
+        && args
+            .iter()
+            .zip(expected)
+            .all(|(arg, text)| matches!(arg, Arg::Text(..)) == *text);
+    if !shape_ok {
+        return Err(format!("{function:?} has the wrong arguments"));
+    }
+    Ok(if wide {
+        run::<u16>(function, dst, args)
+    } else {
+        run::<u8>(function, dst, args)
+    })
+}
+
+fn run<C: Unit>(function: StdFunction, dst: (Addr, u32), args: Vec<Arg>) -> Op {
+    let (dst, capacity) = (dst.0, dst.1 as usize);
+    Box::new(move |x| {
+        let text = |x: &Exec<'_>, i: usize| match args[i] {
+            Arg::Text(at, capacity) => C::load(x, at, capacity),
+            Arg::Int(_) => Ok(Vec::new()),
+        };
+        let int = |x: &Exec<'_>, i: usize| match args[i] {
+            Arg::Int(at) => x.get::<i32>(at).map(i64::from),
+            Arg::Text(..) => Ok(0),
+        };
+        let result = match function {
+            StdFunction::Len => {
+                x.set::<i32>(dst, string::len(&text(x, 0)?) as i32)?;
+                return Ok(Flow::Next);
+            }
+            StdFunction::Find => {
+                x.set::<i32>(dst, string::find(&text(x, 0)?, &text(x, 1)?) as i32)?;
+                return Ok(Flow::Next);
+            }
+            StdFunction::Left => string::left(&text(x, 0)?, int(x, 1)?),
+            StdFunction::Right => string::right(&text(x, 0)?, int(x, 1)?),
+            StdFunction::Mid => string::mid(&text(x, 0)?, int(x, 1)?, int(x, 2)?),
+            StdFunction::Concat => string::concat(&text(x, 0)?, &text(x, 1)?),
+            StdFunction::Insert => string::insert(&text(x, 0)?, &text(x, 1)?, int(x, 2)?),
+            StdFunction::Delete => string::delete(&text(x, 0)?, int(x, 1)?, int(x, 2)?),
+            StdFunction::Replace => {
+                string::replace(&text(x, 0)?, &text(x, 1)?, int(x, 2)?, int(x, 3)?)
+            }
+        };
+        C::store(x, dst, capacity, &result)?;
+        Ok(Flow::Next)
+    })
 }

@@ -1,0 +1,146 @@
+//! The ironplc execution cases (`../shared/corpora/ironplc/extracted/e2e_cases.json`) run
+//! through `rivet simulate --json` and compared with their expected values.
+
+use std::path::PathBuf;
+use std::process::Command;
+
+use serde_json::Value;
+
+/// Cases whose expectation contradicts IEC 61131-3 or CODESYS, with the reason; every other
+/// case must match.
+const DELIBERATE: &[(&str, &str)] = &[
+    (
+        "end_to_end_when_byte_not_zero_in_if_then_enters_body",
+        "an IF condition must be BOOL (IEC 61131-3 and CODESYS refuse a BYTE)",
+    ),
+    (
+        "end_to_end_when_not_zero_then_one",
+        "NOT on a DINT is the bitwise complement, so NOT 0 = -1 as in CODESYS",
+    ),
+    (
+        "end_to_end_when_eq_function_then_returns_bool",
+        "a BOOL result does not convert implicitly to DINT",
+    ),
+    (
+        "end_to_end_when_ne_function_then_returns_bool",
+        "a BOOL result does not convert implicitly to DINT",
+    ),
+    (
+        "end_to_end_when_or_function_then_returns_bool",
+        "a BOOL result does not convert implicitly to DINT",
+    ),
+    (
+        "end_to_end_when_expt_lint_then_correct",
+        "EXPT gives REAL or LREAL (LC1200 digest), which does not convert implicitly to LINT",
+    ),
+];
+
+fn corpus() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("../../shared/corpora/ironplc/extracted/e2e_cases.json")
+}
+
+/// A JSON value as a number: numbers as they are, BOOL as 0/1, times and dates (printed as
+/// IEC literals) in the raw units the runtime stores (TIME ms, DATE and DT s, TOD ms).
+fn number(value: &Value) -> Option<f64> {
+    match value {
+        Value::Number(n) => n.as_f64(),
+        Value::Bool(b) => Some(f64::from(u8::from(*b))),
+        Value::String(text) => {
+            let prefix = text.split('#').next()?.to_ascii_uppercase();
+            let ns = match prefix.as_str() {
+                "T" | "TIME" => compiler::literal::parse_duration(text).ok()? / 1_000_000,
+                "LTIME" => compiler::literal::parse_duration(text).ok()?,
+                "D" | "DATE" => i128::from(compiler::literal::parse_date(text).ok()?) * 86_400,
+                "TOD" | "TIME_OF_DAY" => {
+                    compiler::literal::parse_time_of_day(text).ok()? / 1_000_000
+                }
+                "DT" | "DATE_AND_TIME" => {
+                    compiler::literal::parse_date_and_time(text).ok()? / 1_000_000_000
+                }
+                _ => return None,
+            };
+            Some(ns as f64)
+        }
+        _ => None,
+    }
+}
+
+#[test]
+fn every_ironplc_execution_case_matches_or_is_a_documented_difference() {
+    let text = std::fs::read_to_string(corpus()).expect("the ironplc corpus is beside the project");
+    let cases: Vec<Value> = serde_json::from_str(&text).expect("valid JSON");
+    assert!(cases.len() > 100, "the corpus holds the cases");
+    let dir = tempfile::tempdir().unwrap();
+    let mut failures = Vec::new();
+    let mut matched = 0;
+    for case in &cases {
+        let id = case["id"].as_str().unwrap();
+        let source = case["source"].as_str().unwrap();
+        let program = source
+            .split_whitespace()
+            .skip_while(|word| !word.eq_ignore_ascii_case("PROGRAM"))
+            .nth(1)
+            .unwrap_or("main");
+        let file = dir.path().join(format!("{id}.st"));
+        std::fs::write(&file, source).unwrap();
+        let expect = case["expect"].as_array().unwrap();
+        let paths: Vec<String> = expect
+            .iter()
+            .map(|e| format!("{program}.{}", e["var"].as_str().unwrap()))
+            .collect();
+        let output = Command::new(env!("CARGO_BIN_EXE_rivet"))
+            .arg("simulate")
+            .arg(&file)
+            .arg("--cycles")
+            .arg(case["scans"].as_u64().unwrap().to_string())
+            .arg("--watch")
+            .arg(paths.join(","))
+            .arg("--json")
+            .output()
+            .unwrap();
+        let deliberate = DELIBERATE.iter().any(|(known, _)| *known == id);
+        let outcome: Result<(), String> = (|| {
+            if !output.status.success() {
+                return Err(String::from_utf8_lossy(&output.stderr).into_owned());
+            }
+            let values: Value =
+                serde_json::from_slice(&output.stdout).map_err(|e| e.to_string())?;
+            let tolerance = case["tolerance"]
+                .as_str()
+                .and_then(|t| t.parse::<f64>().ok())
+                .or(case["tolerance"].as_f64())
+                .unwrap_or(0.0);
+            let kind = case["kind"].as_str().unwrap_or_default();
+            for (e, path) in expect.iter().zip(&paths) {
+                let expected = e["value_num"].as_f64().ok_or("no expected number")?;
+                let got =
+                    number(&values[path]).ok_or_else(|| format!("{path} = {}", values[path]))?;
+                // The corpus keeps integers in 32- or 64-bit signed slots.
+                let got = match kind {
+                    "e2e_i32" => f64::from(got as i64 as i32),
+                    _ => got,
+                };
+                if (got - expected).abs() > tolerance {
+                    return Err(format!("{path} = {got}, expected {expected}"));
+                }
+            }
+            Ok(())
+        })();
+        match (outcome, deliberate) {
+            (Ok(()), false) => matched += 1,
+            (Ok(()), true) => failures.push(format!(
+                "{id}: listed as a deliberate difference but matches"
+            )),
+            (Err(_), true) => {}
+            (Err(message), false) => failures.push(format!("{id}: {message}")),
+        }
+    }
+    assert!(
+        failures.is_empty(),
+        "{} case(s) differ:\n{}",
+        failures.len(),
+        failures.join("\n")
+    );
+    assert_eq!(matched + DELIBERATE.len(), cases.len());
+}
