@@ -12,6 +12,8 @@ pub const FREEWHEELING_INTERVAL_NS: u64 = 1_000_000;
 pub struct Simulation {
     engine: Engine,
     now_ns: i64,
+    /// The end of the simulated time run so far.
+    horizon_ns: i64,
     /// When each task is next due, and how many cycles it has run.
     next_due_ns: Vec<i64>,
     cycles: Vec<u64>,
@@ -27,6 +29,7 @@ impl Simulation {
         Ok(Self {
             engine,
             now_ns: 0,
+            horizon_ns: 0,
             next_due_ns: vec![0; tasks],
             cycles: vec![0; tasks],
             faults: Vec::new(),
@@ -71,22 +74,26 @@ impl Simulation {
         self.faults.iter().any(|f| &f.task == name)
     }
 
-    /// Runs `cycles` cycles of the fastest task (the one with the shortest interval), and
-    /// every other task as often as it falls due meanwhile.
+    /// Runs `cycles` periods of the fastest task (the shortest interval): the simulated clock
+    /// advances by that much, and every task runs as often as it falls due meanwhile, highest
+    /// priority first. A faulted task stops; the clock and the others go on.
     pub fn run(&mut self, cycles: u64) {
         let tasks = self.engine.image().tasks.len();
-        let Some(fastest) = (0..tasks)
-            .min_by_key(|&t| (self.interval_ns(t), self.engine.image().tasks[t].priority))
-        else {
+        let Some(period) = (0..tasks).map(|t| self.interval_ns(t)).min() else {
             return;
         };
-        let target = self.cycles[fastest] + cycles;
-        while self.cycles[fastest] < target {
+        let end = self
+            .horizon_ns
+            .saturating_add((period as i64).saturating_mul(cycles as i64));
+        self.horizon_ns = end;
+        loop {
             let Some(now) = (0..tasks)
                 .filter(|&t| !self.faulted(t))
                 .map(|t| self.next_due_ns[t])
                 .min()
+                .filter(|&due| due < end)
             else {
+                self.now_ns = self.now_ns.max(end - period as i64).max(0);
                 return;
             };
             self.now_ns = now;
@@ -95,18 +102,12 @@ impl Simulation {
                 .collect();
             due.sort_by_key(|&t| self.engine.image().tasks[t].priority);
             for task in due {
-                if task == fastest && self.cycles[fastest] >= target {
-                    break;
-                }
                 let cycle = self.cycles[task];
                 if let Err(fault) = self.engine.run_cycle(task, now, cycle) {
                     self.faults.push(fault);
                 }
                 self.cycles[task] += 1;
                 self.next_due_ns[task] = now + self.interval_ns(task) as i64;
-            }
-            if self.faulted(fastest) {
-                return;
             }
         }
     }

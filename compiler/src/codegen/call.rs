@@ -209,6 +209,17 @@ impl<'p> BodyGen<'_, '_, 'p> {
                         instance: Place::Direct(Operand::Instance(0)),
                     });
                 }
+                Some(LocalSymbol::Result(_))
+                    if self
+                        .scope
+                        .globals
+                        .pou(&name)
+                        .is_some_and(|p| p.kind == PouKind::Function) =>
+                {
+                    if let Some(pou) = self.scope.globals.pou(&name) {
+                        return Ok(Callee::Function(pou));
+                    }
+                }
                 Some(_) => {}
                 None => match self.scope.globals.lookup(&name) {
                     Some(GlobalSymbol::Pou(pou)) if pou.kind == PouKind::Function => {

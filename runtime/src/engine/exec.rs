@@ -29,6 +29,20 @@ const WATCHDOG_STRIDE: u32 = 4096;
 /// before the thread's own stack would.
 pub(crate) const MAX_CALL_DEPTH: u32 = 2000;
 
+/// The native stack a cycle may use. Every PLC call nests a few Rust calls, so deep recursion
+/// in a user program would exhaust the thread's stack (and abort the process) before the
+/// PLC stack fills; measured against the address of a local at the start of the cycle, this
+/// bound turns it into a fault. 512 KiB fits the smallest thread stack Rust gives (2 MiB).
+pub(crate) const NATIVE_STACK_BUDGET: usize = 512 * 1024;
+
+/// The address of a local of the caller: how deep the native stack is (it grows down on
+/// every platform the runtime supports). Only compared, never dereferenced.
+#[inline(never)]
+fn stack_position() -> usize {
+    let marker = 0u8;
+    std::hint::black_box(std::ptr::from_ref(&marker)).addr()
+}
+
 /// One task's run through its programs.
 pub(crate) struct Exec<'a> {
     pub(crate) mem: &'a mut [u8],
@@ -45,6 +59,8 @@ pub(crate) struct Exec<'a> {
     depth: u32,
     /// Where the first fault happened: POU index and instruction index.
     pub(crate) fault_at: Option<(usize, usize)>,
+    /// [`stack_position`] when the cycle started.
+    native_base: usize,
 }
 
 impl<'a> Exec<'a> {
@@ -70,6 +86,7 @@ impl<'a> Exec<'a> {
             budget: WATCHDOG_STRIDE,
             depth: 0,
             fault_at: None,
+            native_base: stack_position(),
         }
     }
 
@@ -175,7 +192,11 @@ impl<'a> Exec<'a> {
         let pou = code.pous.get(index).ok_or(FaultKind::Memory)?;
         let frame = self.sp;
         let end = frame + pou.frame_size;
-        if end > self.stack_end || self.depth >= MAX_CALL_DEPTH {
+        let native_depth = self.native_base.abs_diff(stack_position());
+        if end > self.stack_end
+            || self.depth >= MAX_CALL_DEPTH
+            || native_depth > NATIVE_STACK_BUDGET
+        {
             return Err(FaultKind::StackOverflow);
         }
         let bytes = self.mem.get_mut(frame..end).ok_or(FaultKind::Memory)?;

@@ -84,6 +84,13 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                     self.arguments(name, &[], &arguments, true);
                     return Type::Void;
                 }
+                // Inside a function its name is its result, but called it is the function:
+                // recursion.
+                Some(LocalSymbol::Result(_)) if globals.pou(name).is_some() => {
+                    if let Some(pou) = globals.pou(name) {
+                        return self.call_pou(name, pou, &callee, &arguments);
+                    }
+                }
                 Some(_) => {}
                 None => match globals.lookup(name) {
                     Some(GlobalSymbol::Pou(pou)) => {

@@ -295,7 +295,11 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
         let Some(selector) = children.first() else {
             return;
         };
-        let selector_ty = self.expression(selector, Mode::Read);
+        let selector_ty = match self.expression(selector, Mode::Read) {
+            // A constant selector is a DINT, so its labels are checked against one.
+            Type::IntLiteral(_) => Type::Elementary(Elementary::Dint),
+            other => other,
+        };
         let is_enum = matches!(&selector_ty, Type::Named(name)
             if matches!(self.scope.globals.shape(name), Some(Shape::Enum(_))));
         if !selector_ty.is_integer_like()

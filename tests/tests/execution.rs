@@ -1,0 +1,500 @@
+//! End-to-end execution: Structured Text compiled into an image and run in the runtime's
+//! engine on a simulated clock, every construct checked by the values it leaves.
+
+use program_image::ProgramImage;
+use runtime::simulation::Simulation;
+
+/// Compiles one source file, panicking with the compiler's message when it does not.
+#[track_caller]
+fn compile(source: &str) -> ProgramImage {
+    let project = compiler::SourceProject::new(source);
+    assert!(
+        project.parse.errors().is_empty(),
+        "syntax errors: {:?}",
+        project.parse.errors()
+    );
+    match compiler::compile_source(&project, "test.st") {
+        Ok(image) => image,
+        Err(compiler::CompileError::Diagnostics(found)) => {
+            let errors: Vec<String> = found.iter().map(|d| d.diagnostic.message.clone()).collect();
+            panic!("the source does not check: {errors:#?}")
+        }
+        Err(error) => panic!("the source does not compile: {error}"),
+    }
+}
+
+/// Runs `cycles` cycles and returns the simulation.
+#[track_caller]
+fn run(source: &str, cycles: u64) -> Simulation {
+    let image = compile(source);
+    // Every image the compiler writes survives its own encoding.
+    let decoded = ProgramImage::decode(&image.encode()).expect("the image decodes");
+    assert_eq!(decoded, image);
+    let mut simulation = Simulation::new(image).expect("the image loads");
+    simulation.run(cycles);
+    simulation
+}
+
+/// The value of `path` as an IEC literal.
+#[track_caller]
+fn value(simulation: &Simulation, path: &str) -> String {
+    runtime::value::read(simulation.engine(), path)
+        .unwrap_or_else(|e| panic!("{path}: {e}"))
+        .to_string()
+}
+
+#[track_caller]
+fn check(simulation: &Simulation, expected: &[(&str, &str)]) {
+    assert!(
+        simulation.faults().is_empty(),
+        "faults: {:?}",
+        simulation.faults()
+    );
+    for (path, want) in expected {
+        assert_eq!(value(simulation, path), *want, "{path}");
+    }
+}
+
+#[test]
+fn integer_arithmetic_wraps_in_the_type_of_the_expression() {
+    let s = run(
+        "PROGRAM main VAR a : INT := 32767; b : INT; c : DINT; d : SINT := -128; e : UINT; m : INT; q : DINT; END_VAR
+         b := a + 1; c := 7 / 2; d := -d; e := 0; e := e - 1; m := -7 MOD 3; q := -7 / 2;
+         END_PROGRAM",
+        1,
+    );
+    check(
+        &s,
+        &[
+            ("main.b", "-32768"),
+            ("main.c", "3"),
+            ("main.d", "-128"),
+            ("main.e", "65535"),
+            ("main.m", "-1"),
+            ("main.q", "-3"),
+        ],
+    );
+}
+
+#[test]
+fn reals_booleans_and_comparisons() {
+    let s = run(
+        "PROGRAM main VAR r : REAL := 1.5; l : LREAL; b1 : BOOL := TRUE; b2 : BOOL; b3 : BOOL; x : BOOL; y : BOOL; z : BOOL; END_VAR
+         l := r * 2.0 + 0.25; b2 := NOT b1; b3 := b1 XOR b2; x := r > 1.0 AND l < 3.5; y := r = 1.5; z := b1 AND_THEN (r <> 1.5);
+         END_PROGRAM",
+        1,
+    );
+    check(
+        &s,
+        &[
+            ("main.l", "3.25"),
+            ("main.b2", "FALSE"),
+            ("main.b3", "TRUE"),
+            ("main.x", "TRUE"),
+            ("main.y", "TRUE"),
+            ("main.z", "FALSE"),
+        ],
+    );
+}
+
+#[test]
+fn the_lc1200_conversion_and_bit_vectors_hold_in_compiled_code() {
+    let s = run(
+        "PROGRAM main VAR a : INT; b : SINT; w : WORD; w2 : WORD; t : DINT; r : REAL; bt : BYTE; bo : BOOL; END_VAR
+         a := REAL_TO_INT(-1.5); b := INT_TO_SINT(4223); w := ROR(WORD#16#45, 2); w2 := SHL(WORD#16#1, 4);
+         t := TRUNC(-2.7); r := DINT_TO_REAL(7) / 2.0; bt := WORD_TO_BYTE(16#1234); bo := INT_TO_BOOL(300);
+         END_PROGRAM",
+        1,
+    );
+    check(
+        &s,
+        &[
+            ("main.a", "-2"),
+            ("main.b", "127"),
+            ("main.w", "16401"),
+            ("main.w2", "16"),
+            ("main.t", "-2"),
+            ("main.r", "3.5"),
+            ("main.bt", "52"),
+            ("main.bo", "TRUE"),
+        ],
+    );
+}
+
+#[test]
+fn if_case_and_loops_take_the_right_branches() {
+    let s = run(
+        "PROGRAM main VAR i : INT; n : INT; k : INT; w : INT; r : INT; c1 : INT; c2 : INT; c3 : INT; sum : INT; odd : INT; END_VAR
+         IF n > 0 THEN k := 1; ELSIF n = 0 THEN k := 2; ELSE k := 3; END_IF;
+         CASE 7 OF 1, 2: c1 := 1; 5..8: c1 := 2; ELSE c1 := 3; END_CASE;
+         CASE 42 OF 1: c2 := 1; ELSE c2 := 9; END_CASE;
+         CASE k OF 2: c3 := 20; 3: c3 := 30; END_CASE;
+         FOR i := 10 TO 1 BY -3 DO sum := sum + i; END_FOR;
+         FOR n := 1 TO 100 DO IF n MOD 2 = 0 THEN CONTINUE; END_IF; odd := odd + 1; IF n >= 9 THEN EXIT; END_IF; END_FOR;
+         WHILE w < 5 DO w := w + 2; END_WHILE;
+         REPEAT r := r + 10; UNTIL r >= 25 END_REPEAT;
+         END_PROGRAM",
+        1,
+    );
+    // FOR leaves the variable at the first value past the end: 10, 7, 4, 1, then -2.
+    check(
+        &s,
+        &[
+            ("main.k", "2"),
+            ("main.c1", "2"),
+            ("main.c2", "9"),
+            ("main.c3", "20"),
+            ("main.sum", "22"),
+            ("main.i", "-2"),
+            ("main.odd", "5"),
+            ("main.n", "9"),
+            ("main.w", "6"),
+            ("main.r", "30"),
+        ],
+    );
+}
+
+#[test]
+fn functions_take_inputs_in_outs_and_outputs_and_may_recurse() {
+    let s = run(
+        "FUNCTION Fact : DINT VAR_INPUT n : DINT; END_VAR IF n <= 1 THEN Fact := 1; RETURN; END_IF; Fact := n * Fact(n - 1); END_FUNCTION
+         FUNCTION Swap : BOOL VAR_IN_OUT a, b : INT; END_VAR VAR t : INT; END_VAR t := a; a := b; b := t; Swap := TRUE; END_FUNCTION
+         FUNCTION Split : INT VAR_INPUT x : INT; END_VAR VAR_OUTPUT hi, lo : INT; END_VAR hi := x / 100; lo := x MOD 100; Split := hi + lo; END_FUNCTION
+         FUNCTION Counter : INT VAR n : INT := 5; END_VAR n := n + 1; Counter := n; END_FUNCTION
+         PROGRAM main VAR f : DINT; x : INT := 1; y : INT := 2; ok : BOOL; h : INT; l : INT; s : INT; c : INT; END_VAR
+         f := Fact(10); ok := Swap(x, y); s := Split(1234, hi => h, lo => l); c := Counter(); c := Counter();
+         END_PROGRAM",
+        1,
+    );
+    // A function's variables start from their initial values at every call.
+    check(
+        &s,
+        &[
+            ("main.f", "3628800"),
+            ("main.x", "2"),
+            ("main.y", "1"),
+            ("main.ok", "TRUE"),
+            ("main.h", "12"),
+            ("main.l", "34"),
+            ("main.s", "46"),
+            ("main.c", "6"),
+        ],
+    );
+}
+
+#[test]
+fn function_blocks_keep_their_state_with_methods_and_actions() {
+    let s = run(
+        "FUNCTION_BLOCK FB_Acc VAR_INPUT step : INT := 1; END_VAR VAR_OUTPUT total : INT; END_VAR VAR calls : INT; END_VAR
+         total := total + step; calls := calls + 1;
+         METHOD Reset : BOOL VAR_INPUT target : INT; END_VAR total := target; Reset := TRUE; END_METHOD
+         ACTION Double: total := total * 2; END_ACTION
+         END_FUNCTION_BLOCK
+         PROGRAM main VAR a : FB_Acc; b : FB_Acc; t : INT; r : BOOL; END_VAR
+         a(); a(step := 5); b(step := 2, total => t);
+         END_PROGRAM",
+        3,
+    );
+    // Inputs keep their last value: after `a(step := 5)` a bare `a()` adds 5 too.
+    check(
+        &s,
+        &[
+            ("main.a.total", "26"),
+            ("main.a.calls", "6"),
+            ("main.b.total", "6"),
+            ("main.t", "6"),
+        ],
+    );
+}
+
+#[test]
+fn methods_and_actions_run_on_their_instance() {
+    let s = run(
+        "FUNCTION_BLOCK FB_Acc VAR_OUTPUT total : INT; END_VAR
+         METHOD Add : INT VAR_INPUT n : INT; END_VAR total := total + n; Add := total; END_METHOD
+         ACTION Double: total := total * 2; END_ACTION
+         END_FUNCTION_BLOCK
+         PROGRAM main VAR a : FB_Acc; r : INT; END_VAR
+         r := a.Add(3); a.Double(); r := a.Add(1);
+         END_PROGRAM",
+        1,
+    );
+    check(&s, &[("main.a.total", "7"), ("main.r", "7")]);
+}
+
+#[test]
+fn structures_enumerations_and_arrays_are_laid_out_and_initialised() {
+    let s = run(
+        "TYPE E_Mode : (Idle, Run := 5, Stop); END_TYPE
+         TYPE ST_Point : STRUCT x : INT := 3; y : REAL; END_STRUCT END_TYPE
+         TYPE ST_Line : STRUCT a : ST_Point; b : ST_Point := (x := 7, y := 1.5); END_STRUCT END_TYPE
+         PROGRAM main VAR m : E_Mode; n : E_Mode := E_Mode.Stop; l : ST_Line; arr : ARRAY[1..5] OF INT := [1, 2, 3(9)];
+         grid : ARRAY[0..2, 0..3] OF DINT; pts : ARRAY[1..3] OF ST_Point; i : INT; j : INT; total : DINT; isRun : BOOL; END_VAR
+         l.a.y := l.b.y * 2.0; m := Run; isRun := m = E_Mode.Run;
+         FOR i := 0 TO 2 DO FOR j := 0 TO 3 DO grid[i, j] := i * 10 + j; END_FOR; END_FOR;
+         total := grid[2, 3] + grid[1, 0]; pts[2].x := arr[5] + arr[1]; arr[i] := 42;
+         END_PROGRAM",
+        1,
+    );
+    check(
+        &s,
+        &[
+            ("main.m", "Run"),
+            ("main.n", "Stop"),
+            ("main.l.a.x", "3"),
+            ("main.l.b.x", "7"),
+            ("main.l.a.y", "3"),
+            ("main.arr", "[1, 2, 42, 9, 9]"),
+            ("main.grid[2, 1]", "21"),
+            ("main.total", "33"),
+            ("main.pts[2].x", "10"),
+            ("main.pts[1].x", "3"),
+            ("main.isRun", "TRUE"),
+        ],
+    );
+}
+
+#[test]
+fn strings_hold_their_declared_length() {
+    let s = run(
+        "PROGRAM main VAR s : STRING(5); t : STRING := 'abc'; u : STRING; n : INT; w : WSTRING := \"wide\"; p : INT; END_VAR
+         s := 'truncated'; u := CONCAT(t, 'def'); n := LEN(u); p := FIND(u, 'cd'); u := REPLACE(u, 'XY', 2, 3); u := INSERT(u, '-', 1);
+         END_PROGRAM",
+        1,
+    );
+    check(
+        &s,
+        &[
+            ("main.s", "'trunc'"),
+            ("main.n", "6"),
+            ("main.p", "3"),
+            ("main.u", "'a-bXYef'"),
+            ("main.w", "'wide'"),
+        ],
+    );
+}
+
+#[test]
+fn pointers_and_references_reach_their_targets() {
+    let s = run(
+        "PROGRAM main VAR x : INT := 5; arr : ARRAY[0..3] OF INT; p : POINTER TO INT; r : REFERENCE TO INT; y : INT; q : POINTER TO ARRAY[0..3] OF INT; END_VAR
+         p := ADR(x); p^ := p^ + 1; r REF= arr[2]; r := 7; y := r + x; q := ADR(arr); q^[3] := 11;
+         END_PROGRAM",
+        1,
+    );
+    check(
+        &s,
+        &[
+            ("main.x", "6"),
+            ("main.arr", "[0, 0, 7, 11]"),
+            ("main.y", "13"),
+        ],
+    );
+}
+
+#[test]
+fn timers_count_simulated_time() {
+    // The implicit task runs every 10 ms.
+    let source = "PROGRAM main VAR tOn : TON; off : TOF; pulse : TP; start : BOOL := TRUE; cycles : INT; END_VAR
+         cycles := cycles + 1;
+         tOn(IN := start, PT := T#45ms); off(IN := cycles < 3, PT := T#20ms); pulse(IN := TRUE, PT := T#25ms);
+         END_PROGRAM";
+    let s = run(source, 4);
+    // Cycles at 0, 10, 20, 30 ms: TON has seen 30 ms of its 45.
+    check(
+        &s,
+        &[
+            ("main.tOn.Q", "FALSE"),
+            ("main.tOn.ET", "T#30ms"),
+            ("main.off.Q", "TRUE"),
+            ("main.off.ET", "T#10ms"),
+            ("main.pulse.Q", "FALSE"),
+            ("main.pulse.ET", "T#25ms"),
+        ],
+    );
+    let s = run(source, 6);
+    check(
+        &s,
+        &[
+            ("main.tOn.Q", "TRUE"),
+            ("main.tOn.ET", "T#45ms"),
+            ("main.off.Q", "FALSE"),
+            ("main.off.ET", "T#20ms"),
+        ],
+    );
+}
+
+#[test]
+fn counters_edges_and_bistables_follow_iec() {
+    let source = "PROGRAM main VAR up : CTU; down : CTD; ud : CTUD; rt : R_TRIG; ft : F_TRIG; sr : SR; rs : RS; clk : BOOL; n : INT; rises : INT; falls : INT; END_VAR
+         n := n + 1; clk := NOT clk;
+         up(CU := clk, PV := 3); down(CD := clk, LD := n = 1, PV := 2); ud(CU := clk, CD := FALSE, PV := 2);
+         rt(CLK := clk); IF rt.Q THEN rises := rises + 1; END_IF; ft(CLK := clk); IF ft.Q THEN falls := falls + 1; END_IF;
+         sr(SET1 := n = 2, RESET := n = 2); rs(SET := n = 2, RESET1 := n = 2);
+         END_PROGRAM";
+    let s = run(source, 7);
+    check(
+        &s,
+        &[
+            ("main.up.CV", "4"),
+            ("main.up.Q", "TRUE"),
+            ("main.down.CV", "-1"),
+            ("main.down.Q", "TRUE"),
+            ("main.ud.QU", "TRUE"),
+            ("main.rises", "4"),
+            ("main.falls", "3"),
+            ("main.sr.Q1", "TRUE"),
+            ("main.rs.Q1", "FALSE"),
+        ],
+    );
+}
+
+#[test]
+fn located_variables_share_bytes_as_codesys_lays_them_out() {
+    let s = run(
+        "PROGRAM main VAR w AT %MW1 : WORD; lo AT %MB2 : BYTE; hi AT %MB3 : BYTE; bit AT %MX2.1 : BOOL; q AT %QX0.3 : BOOL; qb AT %QB0 : BYTE; d AT %MD1 : DINT; END_VAR
+         w := 16#1234; q := TRUE; d := 16#01020304;
+         END_PROGRAM",
+        1,
+    );
+    // %MW1 is bytes 2..3, little-endian; %MX2.1 is bit 1 of byte 2 (0x34); %MD1 is bytes 4..7.
+    check(
+        &s,
+        &[
+            ("main.lo", "52"),
+            ("main.hi", "18"),
+            ("main.bit", "FALSE"),
+            ("main.qb", "8"),
+            ("main.d", "16909060"),
+        ],
+    );
+    let memory = s.engine().region(program_image::Region::Memory);
+    assert_eq!(&memory[2..8], &[0x34, 0x12, 0x04, 0x03, 0x02, 0x01]);
+}
+
+#[test]
+fn globals_and_temporaries() {
+    let s = run(
+        "VAR_GLOBAL gCount : DINT := 100; gLimit : INT := 3; END_VAR
+         FUNCTION_BLOCK FB_Use VAR_TEMP t : INT := 4; END_VAR VAR_OUTPUT seen : INT; END_VAR t := t + 1; seen := t; gCount := gCount + 1; END_FUNCTION_BLOCK
+         PROGRAM main VAR fb : FB_Use; n : INT; END_VAR fb(); fb(); n := gLimit; END_PROGRAM",
+        2,
+    );
+    check(
+        &s,
+        &[
+            ("main.fb.seen", "5"),
+            ("main.n", "3"),
+            ("GVL.gCount", "104"),
+        ],
+    );
+}
+
+#[test]
+fn time_and_date_arithmetic() {
+    let s = run(
+        "PROGRAM main VAR t : TIME := T#1s; u : TIME; d : DT := DT#2024-01-31-12:00:00; e : DT; diff : TIME; lt : LTIME; tod : TOD; END_VAR
+         u := t * 3 + T#250ms; e := ADD_DT_TIME(d, T#13h); diff := SUB_DT_DT(e, d); lt := TIME_TO_LTIME(u); tod := DT_TO_TOD(e);
+         END_PROGRAM",
+        1,
+    );
+    check(
+        &s,
+        &[
+            ("main.u", "T#3s250ms"),
+            ("main.e", "DT#2024-02-01-01:00:00"),
+            ("main.diff", "T#13h"),
+            ("main.lt", "LTIME#3s250ms"),
+            ("main.tod", "TOD#01:00:00"),
+        ],
+    );
+}
+
+#[test]
+fn a_division_by_zero_stops_the_task_with_the_pou_and_line() {
+    let s = run(
+        "FUNCTION_BLOCK FB_Div VAR_INPUT d : INT; END_VAR VAR_OUTPUT q : INT; END_VAR
+q := 10 / d;
+END_FUNCTION_BLOCK
+PROGRAM main VAR fb : FB_Div; n : INT; END_VAR
+n := n + 1;
+fb(d := 0);
+END_PROGRAM",
+        5,
+    );
+    let [fault] = s.faults() else {
+        panic!("one fault: {:?}", s.faults())
+    };
+    assert_eq!(fault.kind, runtime::engine::FaultKind::DivisionByZero);
+    assert_eq!(fault.pou, "FB_Div");
+    assert_eq!(
+        (fault.file.as_deref(), fault.line),
+        (Some("test.st"), Some(2))
+    );
+    // The task stopped at its first cycle; nothing after the fault ran again.
+    assert_eq!(value(&s, "main.n"), "1");
+}
+
+#[test]
+fn an_index_out_of_bounds_and_runaway_recursion_are_faults_not_crashes() {
+    let s = run(
+        "PROGRAM main VAR a : ARRAY[1..3] OF INT; i : INT := 4; END_VAR a[i] := 1; END_PROGRAM",
+        1,
+    );
+    assert!(matches!(
+        s.faults()[0].kind,
+        runtime::engine::FaultKind::IndexOutOfBounds {
+            index: 4,
+            low: 1,
+            high: 3
+        }
+    ));
+    let s = run(
+        "FUNCTION Down : DINT VAR_INPUT n : DINT; END_VAR Down := Down(n + 1); END_FUNCTION
+         PROGRAM main VAR x : DINT; END_VAR x := Down(0); END_PROGRAM",
+        1,
+    );
+    assert_eq!(
+        s.faults()[0].kind,
+        runtime::engine::FaultKind::StackOverflow
+    );
+    let s = run(
+        "PROGRAM main VAR p : POINTER TO INT; x : INT; END_VAR x := p^; END_PROGRAM",
+        1,
+    );
+    assert_eq!(s.faults()[0].kind, runtime::engine::FaultKind::NullPointer);
+}
+
+#[test]
+fn an_endless_loop_trips_the_watchdog_and_other_tasks_keep_running() {
+    let source = compiler::SourceProject::new(
+        "PROGRAM hang VAR n : DINT; END_VAR WHILE TRUE DO n := n + 1; END_WHILE; END_PROGRAM
+         PROGRAM tick VAR n : DINT; END_VAR n := n + 1; END_PROGRAM",
+    );
+    let mut project = source.project.clone();
+    let task = |name: &str, program: &str, watchdog_us: u32| project_model::Task {
+        name: name.to_owned(),
+        kind: project_model::TaskKind::Cyclic {
+            interval_us: 10_000,
+        },
+        priority: 1,
+        watchdog: Some(project_model::Watchdog {
+            time_us: watchdog_us,
+            sensitivity: 1,
+        }),
+        programs: vec![program.to_owned()],
+    };
+    project.tasks = vec![task("Slow", "hang", 20_000), task("Fast", "tick", 100_000)];
+    let image = compiler::compile_project(&project).expect("compiles");
+    let mut simulation = Simulation::new(image).unwrap();
+    simulation.run(5);
+    let [fault] = simulation.faults() else {
+        panic!("one fault")
+    };
+    assert_eq!(fault.task, "Slow");
+    assert!(matches!(
+        fault.kind,
+        runtime::engine::FaultKind::Watchdog { .. }
+    ));
+    assert_eq!(value(&simulation, "tick.n"), "5");
+}
