@@ -1,6 +1,9 @@
 //! End-to-end execution: Structured Text compiled into an image and run in the runtime's
 //! engine on a simulated clock, every construct checked by the values it leaves.
 
+// The helpers below are test code too: a failure should stop the test where it happens.
+#![allow(clippy::expect_used, clippy::unwrap_used)]
+
 use program_image::ProgramImage;
 use runtime::simulation::Simulation;
 

@@ -800,13 +800,8 @@ impl BodyGen<'_, '_, '_> {
         let scalar = self
             .scalar_of(&ty)
             .ok_or_else(|| format!("'{}' on {ty}", node.text().to_string().trim()))?;
-        let operand_ty = if op == BinaryOp::Expt {
-            ty.clone()
-        } else {
-            ty.clone()
-        };
-        let a = self.expr_as(&left, &operand_ty)?;
-        let b = self.expr_as(&right, &operand_ty)?;
+        let a = self.expr_as(&left, &ty)?;
+        let b = self.expr_as(&right, &ty)?;
         let dst = self.temp(scalar.size_bytes());
         self.emit(Instr::Binary {
             op,
