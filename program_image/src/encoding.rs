@@ -87,7 +87,7 @@ pub enum ImageError {
 }
 
 /// Section ids (§3), in the order they appear.
-const SECTIONS: [(u16, &str, bool); 10] = [
+const SECTIONS: [(u16, &str, bool); 11] = [
     (1, "types", true),
     (2, "layout", true),
     (3, "initial", true),
@@ -98,6 +98,8 @@ const SECTIONS: [(u16, &str, bool); 10] = [
     (8, "retain", true),
     (9, "sources", false),
     (10, "info", false),
+    // Critical: a reader that skipped it would serve the wrong addresses.
+    (11, "modbus_map", true),
 ];
 
 const HEADER_BYTES: usize = 16;
@@ -113,7 +115,7 @@ fn payload<T: Serialize>(value: &T) -> Vec<u8> {
 impl ProgramImage {
     /// The image as bytes: header, sections, trailer.
     pub fn encode(&self) -> Vec<u8> {
-        let sections: [Vec<u8>; 10] = [
+        let sections: [Vec<u8>; 11] = [
             payload(&self.types),
             payload(&self.layout),
             payload(&self.initial),
@@ -124,13 +126,20 @@ impl ProgramImage {
             payload(&self.retain),
             payload(&self.sources),
             payload(&self.info),
+            self.modbus_map.as_ref().map(payload).unwrap_or_default(),
         ];
         let mut bytes = Vec::new();
         bytes.extend_from_slice(MAGIC);
         bytes.extend_from_slice(&FORMAT_VERSION.to_le_bytes());
         bytes.extend_from_slice(&0u16.to_le_bytes());
-        bytes.extend_from_slice(&(sections.len() as u32).to_le_bytes());
+        // The Modbus map section is written only when the project has its own map.
+        let present = |id: u16| id != 11 || self.modbus_map.is_some();
+        let count = SECTIONS.iter().filter(|(id, _, _)| present(*id)).count();
+        bytes.extend_from_slice(&(count as u32).to_le_bytes());
         for ((id, _, critical), body) in SECTIONS.iter().zip(&sections) {
+            if !present(*id) {
+                continue;
+            }
             bytes.extend_from_slice(&id.to_le_bytes());
             bytes.extend_from_slice(&(if *critical { CRITICAL } else { 0 }).to_le_bytes());
             bytes.extend_from_slice(&(body.len() as u32).to_le_bytes());
@@ -166,7 +175,7 @@ impl ProgramImage {
             return Err(ImageError::HashMismatch);
         }
         let count = u32::from_le_bytes([bytes[12], bytes[13], bytes[14], bytes[15]]);
-        let mut found: [Option<&[u8]>; 10] = [None; 10];
+        let mut found: [Option<&[u8]>; 11] = [None; 11];
         let mut rest = &content[HEADER_BYTES..];
         let mut last_id = 0u16;
         for _ in 0..count {
@@ -212,6 +221,10 @@ impl ProgramImage {
             retain: section(&found, 7)?,
             sources: optional_section(&found, 8)?,
             info: optional_section(&found, 9)?,
+            modbus_map: match found[10] {
+                Some(body) => Some(decode_payload(SECTIONS[10].1, body)?),
+                None => None,
+            },
         };
         image.verify()?;
         Ok(image)
@@ -234,7 +247,7 @@ pub fn identity_of(bytes: &[u8]) -> ImageHash {
 }
 
 fn section<T: DeserializeOwned>(
-    found: &[Option<&[u8]>; 10],
+    found: &[Option<&[u8]>; 11],
     index: usize,
 ) -> Result<T, ImageError> {
     let name = SECTIONS[index].1;
@@ -243,7 +256,7 @@ fn section<T: DeserializeOwned>(
 }
 
 fn optional_section<T: DeserializeOwned + Default>(
-    found: &[Option<&[u8]>; 10],
+    found: &[Option<&[u8]>; 11],
     index: usize,
 ) -> Result<T, ImageError> {
     match found[index] {

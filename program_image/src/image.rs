@@ -28,6 +28,39 @@ pub struct ProgramImage {
     pub sources: Vec<String>,
     /// Project name, compiler version: shown, never interpreted.
     pub info: Info,
+    /// The project's own Modbus server map; `None` for the runtime's default map
+    /// (`docs/modbus-map.md`).
+    pub modbus_map: Option<Vec<ModbusRange>>,
+}
+
+/// A Modbus table.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+pub enum ModbusTable {
+    /// Coils (function codes 1, 5, 15).
+    Coils,
+    /// Discrete inputs (function code 2).
+    DiscreteInputs,
+    /// Input registers (function code 4).
+    InputRegisters,
+    /// Holding registers (function codes 3, 6, 16, 23).
+    HoldingRegisters,
+}
+
+/// A range of Modbus addresses mapped onto consecutive bytes of a located area.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub struct ModbusRange {
+    /// The table.
+    pub table: ModbusTable,
+    /// The first Modbus address (0-based).
+    pub start: u16,
+    /// How many coils or registers.
+    pub count: u16,
+    /// The area: `%I`, `%Q` or `%M`.
+    pub region: Region,
+    /// The byte the first address reaches (bit 0 of it, in a bit table).
+    pub byte_offset: u32,
+    /// Registers per value: 1 (`W`), 2 (`D`) or 4 (`L`), most significant word first.
+    pub words_per_value: u8,
 }
 
 /// Sizes of the memory regions in bytes.

@@ -22,8 +22,8 @@ pub use code::{BinaryOp, CompareOp, Instr, Operand, StdBlock, StdFunction, Trans
 pub use elementary::Elementary;
 pub use encoding::{FORMAT_VERSION, ImageError, ImageHash, MAGIC, MAX_IMAGE_BYTES, identity_of};
 pub use image::{
-    Info, InitRun, InitialValues, Layout, LineEntry, Located, Pou, PouKind, ProgramCall,
-    ProgramImage, Region, RetainLayout, Symbol, SymbolFlags, Task, TaskKind,
+    Info, InitRun, InitialValues, Layout, LineEntry, Located, ModbusRange, ModbusTable, Pou,
+    PouKind, ProgramCall, ProgramImage, Region, RetainLayout, Symbol, SymbolFlags, Task, TaskKind,
 };
 pub use types::{Member, StructKind, TypeDef, TypeId};
 pub use verify::MAX_REGION_BYTES;

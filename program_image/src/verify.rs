@@ -82,6 +82,29 @@ impl ProgramImage {
                 }
             }
         }
+        for range in self.modbus_map.iter().flatten() {
+            let bits = matches!(
+                range.table,
+                crate::ModbusTable::Coils | crate::ModbusTable::DiscreteInputs
+            );
+            let bytes = if bits {
+                u64::from(range.count).div_ceil(8)
+            } else {
+                u64::from(range.count) * 2
+            };
+            let ok = range.count > 0
+                && matches!(range.words_per_value, 1 | 2 | 4)
+                && range.region != Region::Data
+                && u64::from(range.start) + u64::from(range.count) <= 65_536
+                && u64::from(range.byte_offset) + bytes
+                    <= u64::from(self.region_size(range.region));
+            if !ok {
+                return invalid(format!(
+                    "the Modbus range {:?} {} +{} does not fit its area",
+                    range.table, range.start, range.count
+                ));
+            }
+        }
         for (offset, length) in self.retain.retain.iter().chain(&self.retain.persistent) {
             if u64::from(*offset) + u64::from(*length) > u64::from(layout.data_size) {
                 return invalid("a retain range lies outside the data region".to_owned());

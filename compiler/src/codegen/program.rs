@@ -437,6 +437,10 @@ pub(crate) fn build_image(project: &Project, origin: BodyOrigin<'_>) -> Gen<Prog
         }
     }
 
+    let modbus_map = match &project.controller.modbus_map {
+        Some(map) => Some(modbus_ranges(map)?),
+        None => None,
+    };
     let [input_runs, output_runs, memory_runs] = std::mem::take(&mut data.located_runs);
     let [input_end, output_end, memory_end] = data.area_ends;
     let image = ProgramImage {
@@ -468,11 +472,74 @@ pub(crate) fn build_image(project: &Project, origin: BodyOrigin<'_>) -> Gen<Prog
             project: project.name.clone(),
             compiler: format!("rivet {}", env!("CARGO_PKG_VERSION")),
         },
+        modbus_map,
     };
     image
         .verify()
         .map_err(|e| format!("internal error, the image does not verify: {e}"))?;
     Ok(image)
+}
+
+/// The project's Modbus map as image ranges: each range's located address says the area, the
+/// first byte and (by its size letter) how many registers make one value.
+fn modbus_ranges(map: &project_model::ModbusServerMap) -> Gen<Vec<program_image::ModbusRange>> {
+    use program_image::ModbusTable as T;
+    let mut ranges = Vec::new();
+    for (index, range) in map.ranges.iter().enumerate() {
+        let field = format!(
+            "controller.modbus_map.range[{}] ({:?} {})",
+            index + 1,
+            range.table,
+            range.start
+        );
+        let variable = Variable {
+            address: Some(range.area_address.clone()),
+            ..Default::default()
+        };
+        let located = located_of(&variable).ok_or_else(|| {
+            format!(
+                "{field}: '{}' is not a direct address such as %MW0 or %QX0.0",
+                range.area_address
+            )
+        })?;
+        let table = match range.table {
+            project_model::ModbusTable::Coil => T::Coils,
+            project_model::ModbusTable::DiscreteInput => T::DiscreteInputs,
+            project_model::ModbusTable::InputRegister => T::InputRegisters,
+            project_model::ModbusTable::HoldingRegister => T::HoldingRegisters,
+        };
+        let bits = matches!(table, T::Coils | T::DiscreteInputs);
+        let words_per_value = match (bits, located.size_bits) {
+            (true, 1) if located.bit_offset % 8 == 0 => 1,
+            (true, _) => {
+                return Err(format!(
+                    "{field}: a bit table starts at bit 0 of a byte, such as %QX4.0, not {}",
+                    range.area_address
+                ));
+            }
+            (false, 16) => 1,
+            (false, 32) => 2,
+            (false, 64) => 4,
+            (false, _) => {
+                return Err(format!(
+                    "{field}: a register table starts at a W, D or L address, such as %MW0, not {}",
+                    range.area_address
+                ));
+            }
+        };
+        if range.count == 0 {
+            return Err(format!("{field}: the count must be at least 1"));
+        }
+        ranges.push(program_image::ModbusRange {
+            table,
+            start: range.start,
+            count: range.count,
+            region: located.region,
+            byte_offset: (located.bit_offset / 8) as u32,
+            words_per_value,
+        });
+    }
+    Ok(ranges)
 }
 
 /// Places a global variable: in its area when located, else in the data region.

@@ -310,6 +310,32 @@ impl ModbusMap {
         Self { ranges_by_table }
     }
 
+    /// The map an image asks for: its project's own ranges, or the default map when it has
+    /// none. Registers of multi-register values come most significant word first.
+    pub fn for_image(image: &program_image::ProgramImage) -> Result<Self, MapError> {
+        let Some(ranges) = &image.modbus_map else {
+            return Ok(Self::openplc());
+        };
+        Self::new(ranges.iter().map(|range| MapRange {
+            table: match range.table {
+                program_image::ModbusTable::Coils => Table::Coils,
+                program_image::ModbusTable::DiscreteInputs => Table::DiscreteInputs,
+                program_image::ModbusTable::InputRegisters => Table::InputRegisters,
+                program_image::ModbusTable::HoldingRegisters => Table::HoldingRegisters,
+            },
+            start: range.start,
+            count: range.count,
+            area: match range.region {
+                program_image::Region::Input => Area::Input,
+                program_image::Region::Output => Area::Output,
+                _ => Area::Memory,
+            },
+            byte_offset: range.byte_offset,
+            words_per_value: range.words_per_value,
+            word_order: WordOrder::HighWordFirst,
+        }))
+    }
+
     /// Every range of the map, table by table, each table's ranges by start address.
     pub fn ranges(&self) -> impl Iterator<Item = &MapRange> {
         self.ranges_by_table.iter().flatten()
