@@ -125,6 +125,8 @@ pub enum StdFunction {
     Delete,
     Replace,
     Find,
+    /// Compares two strings character by character: -1, 0 or 1 (a DINT), for `=`, `<`, ….
+    Compare,
 }
 
 /// One instruction. A statement such as `x := a + b` is one instruction with three operands.

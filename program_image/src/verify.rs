@@ -370,7 +370,10 @@ impl ProgramImage {
                             (u64::from(capacity) + 1) * unit
                         }
                     };
-                    let integer_result = matches!(function, StdFunction::Len | StdFunction::Find);
+                    let integer_result = matches!(
+                        function,
+                        StdFunction::Len | StdFunction::Find | StdFunction::Compare
+                    );
                     if integer_result != (dst.1 == 0) {
                         return Err(format!(
                             "instruction {word}: {function:?} gives the wrong kind of result"

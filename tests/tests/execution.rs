@@ -501,3 +501,41 @@ fn an_endless_loop_trips_the_watchdog_and_other_tasks_keep_running() {
     ));
     assert_eq!(value(&simulation, "tick.n"), "5");
 }
+
+#[test]
+fn properties_and_this_reach_the_instance() {
+    let s = run(
+        "FUNCTION_BLOCK FB_Box VAR mValue : INT; END_VAR VAR_OUTPUT doubled : INT; END_VAR
+         PROPERTY Value : INT
+         GET Value := mValue; END_GET
+         SET mValue := Value * 2; END_SET
+         END_PROPERTY
+         METHOD Grow : INT THIS^.mValue := THIS^.mValue + 1; doubled := Value; Grow := doubled; END_METHOD
+         END_FUNCTION_BLOCK
+         PROGRAM main VAR b : FB_Box; v : INT; g : INT; END_VAR b.Value := 5; v := b.Value; g := b.Grow(); END_PROGRAM",
+        1,
+    );
+    check(
+        &s,
+        &[("main.v", "10"), ("main.g", "11"), ("main.b.doubled", "11")],
+    );
+}
+
+#[test]
+fn strings_compare_by_their_characters() {
+    let s = run(
+        "PROGRAM main VAR a : STRING := 'abc'; b : STRING(10) := 'abd'; eq : BOOL; lt : BOOL; ne : BOOL; ge : BOOL; END_VAR
+         eq := a = 'abc'; lt := a < b; ne := a <> b; ge := b >= 'abd';
+         END_PROGRAM",
+        1,
+    );
+    check(
+        &s,
+        &[
+            ("main.eq", "TRUE"),
+            ("main.lt", "TRUE"),
+            ("main.ne", "TRUE"),
+            ("main.ge", "TRUE"),
+        ],
+    );
+}

@@ -351,6 +351,9 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
     }
 
     fn assign(&mut self, target: &SyntaxNode, value: &SyntaxNode) -> Gen<()> {
+        if let Some((owner, property, instance)) = self.property_of(target)? {
+            return self.property_set(owner, property, instance, value);
+        }
         let target = self.place(target)?;
         let operand = self.expr_as(value, &target.ty)?;
         self.store(&target, operand)

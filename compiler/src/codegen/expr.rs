@@ -569,6 +569,20 @@ impl BodyGen<'_, '_, '_> {
             }
             SyntaxKind::LITERAL | SyntaxKind::TYPED_LITERAL => self.literal(node, &checked, want),
             SyntaxKind::NAME_EXPR | SyntaxKind::FIELD_EXPR => {
+                if let Some(first) = tokens(node).next()
+                    && matches!(first.kind(), SyntaxKind::THIS | SyntaxKind::SUPER)
+                {
+                    // THIS and SUPER are pointers to the running instance.
+                    let dst = self.temp(8);
+                    self.emit(Instr::Address {
+                        dst,
+                        place: Operand::Instance(0),
+                    });
+                    return Ok((dst, checked));
+                }
+                if let Some((owner, property, instance)) = self.property_of(node)? {
+                    return self.property_get(owner, property, instance);
+                }
                 if let Type::Named(name) = &checked
                     && matches!(
                         self.scope.globals.shape(name),
@@ -732,6 +746,9 @@ impl BodyGen<'_, '_, '_> {
             let (lt, rt) = (self.type_of(&left), self.type_of(&right));
             let common = common_type(&lt, &rt).unwrap_or(lt);
             let ty = concrete(&common, None);
+            if let Type::String { wide, .. } = ty {
+                return self.compare_strings(op, &left, &right, wide);
+            }
             let scalar = self
                 .scalar_of(&ty)
                 .ok_or_else(|| format!("comparing values of type {ty} is not supported yet"))?;
@@ -811,6 +828,41 @@ impl BodyGen<'_, '_, '_> {
             b,
         });
         Ok((dst, ty))
+    }
+
+    /// `a op b` on strings: the runtime compares them, the result is compared with 0.
+    fn compare_strings(
+        &mut self,
+        op: CompareOp,
+        left: &SyntaxNode,
+        right: &SyntaxNode,
+        wide: bool,
+    ) -> Gen<(Operand, Type)> {
+        let mut args = Vec::new();
+        for node in [left, right] {
+            let (operand, ty) = self.expr(node, None)?;
+            let Type::String { length, .. } = ty else {
+                return Err(format!("comparing a string with {ty}"));
+            };
+            args.push((operand, length));
+        }
+        let order = self.temp(4);
+        self.emit(Instr::CallStdFunction {
+            function: program_image::StdFunction::Compare,
+            wide,
+            dst: (order, 0),
+            args,
+        });
+        let zero = self.build.scalar_constant(0, IE::Dint);
+        let dst = self.temp(1);
+        self.emit(Instr::Compare {
+            op,
+            ty: IE::Dint,
+            dst,
+            a: order,
+            b: zero,
+        });
+        Ok((dst, Type::BOOL))
     }
 
     /// The layout of a type.

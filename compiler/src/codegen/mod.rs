@@ -18,6 +18,7 @@ mod expr;
 mod init;
 mod layout;
 mod program;
+mod property;
 mod std_call;
 
 use std::path::Path;

@@ -330,6 +330,25 @@ pub(crate) fn build_image(project: &Project, origin: BodyOrigin<'_>) -> Gen<Prog
                 },
             });
         }
+        for property in &pou.properties {
+            for (get, present) in [
+                (true, property.get.is_some()),
+                (false, property.set.is_some()),
+            ] {
+                if present {
+                    units.push(Unit {
+                        pou,
+                        member: Some(super::property::accessor_name(&property.name, get)),
+                        kind: ImageKind::Method,
+                        target: TextTarget::Property {
+                            pou: pou.name.clone(),
+                            property: property.name.clone(),
+                            get,
+                        },
+                    });
+                }
+            }
+        }
         for action in &pou.actions {
             units.push(Unit {
                 pou,
@@ -718,6 +737,18 @@ fn compile_unit<'g, 'p>(
                 .ok_or("a method without a declaration")?;
             build.frame_of(pou, &method.variables, method.return_type.as_deref())
         }
+        TextTarget::Property { property, get, .. } => {
+            let property = pou
+                .properties
+                .iter()
+                .find(|p| &p.name == property)
+                .ok_or("a property without a declaration")?;
+            let accessor = if *get { &property.get } else { &property.set };
+            let accessor = accessor
+                .as_ref()
+                .ok_or("a property accessor without a declaration")?;
+            build.frame_of(pou, &accessor.variables, Some(&property.ty))
+        }
         _ if pou.kind == PouKind::Function => {
             build.frame_of(pou, &pou.variables, pou.return_type.as_deref())
         }
@@ -750,7 +781,12 @@ fn compile_unit<'g, 'p>(
                 .iter()
                 .find(|a| &a.name == action)
                 .map_or(pou.body.language(), |a| a.body.language()),
-            TextTarget::Property { .. } => pou.body.language(),
+            TextTarget::Property { property, get, .. } => pou
+                .properties
+                .iter()
+                .find(|p| &p.name == property)
+                .and_then(|p| if *get { p.get.as_ref() } else { p.set.as_ref() })
+                .map_or(pou.body.language(), |a| a.body.language()),
         };
         if language != project_model::Language::None {
             return Err(format!(

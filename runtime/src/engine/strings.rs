@@ -17,7 +17,7 @@ enum Arg {
 }
 
 /// The characters of one kind of string, read from and written to memory.
-trait Unit: Copy + PartialEq + Send + Sync + 'static {
+trait Unit: Copy + Ord + Send + Sync + 'static {
     fn load(x: &Exec<'_>, at: Addr, capacity: usize) -> Result<Vec<Self>, FaultKind>;
     fn store(x: &mut Exec<'_>, at: Addr, capacity: usize, chars: &[Self]) -> Result<(), FaultKind>;
 }
@@ -83,7 +83,7 @@ pub(crate) fn lower(
         StdFunction::Len => &[true],
         StdFunction::Left | StdFunction::Right => &[true, false],
         StdFunction::Mid | StdFunction::Delete => &[true, false, false],
-        StdFunction::Concat | StdFunction::Find => &[true, true],
+        StdFunction::Concat | StdFunction::Find | StdFunction::Compare => &[true, true],
         StdFunction::Insert => &[true, true, false],
         StdFunction::Replace => &[true, true, false, false],
     };
@@ -120,6 +120,11 @@ fn run<C: Unit>(function: StdFunction, dst: (Addr, u32), args: Vec<Arg>) -> Op {
             }
             StdFunction::Find => {
                 x.set::<i32>(dst, string::find(&text(x, 0)?, &text(x, 1)?) as i32)?;
+                return Ok(Flow::Next);
+            }
+            StdFunction::Compare => {
+                let ordering = text(x, 0)?.cmp(&text(x, 1)?);
+                x.set::<i32>(dst, ordering as i32)?;
                 return Ok(Flow::Next);
             }
             StdFunction::Left => string::left(&text(x, 0)?, int(x, 1)?),
