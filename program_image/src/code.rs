@@ -44,6 +44,10 @@ pub enum UnaryOp {
     Atan,
     /// Rounds a real to the nearest integer value, keeping the real type.
     Round,
+    /// Binary-coded decimal of an unsigned value (`INT_TO_BCD`): one decimal digit a nibble.
+    ToBcd,
+    /// The value of a binary-coded decimal (`BCD_TO_INT`); a nibble above 9 counts as 9.
+    FromBcd,
 }
 
 /// Operations with two operands of one type giving that type.
@@ -348,4 +352,30 @@ pub enum Instr {
     },
     /// Returns from the POU.
     Return,
+    /// `dst := *_TO_STRING(src)` (or `*_TO_WSTRING`): the value as text, cut to `capacity`.
+    ToText {
+        /// The type of `src`.
+        from: Elementary,
+        /// Whether `dst` is a WSTRING.
+        wide: bool,
+        /// The string written.
+        dst: Operand,
+        /// Its capacity in characters.
+        capacity: u32,
+        /// The value.
+        src: Operand,
+    },
+    /// `dst := STRING_TO_*(src)`: the value a text spells (0 when it spells none).
+    FromText {
+        /// The type of `dst`.
+        to: Elementary,
+        /// Whether `src` is a WSTRING.
+        wide: bool,
+        /// The value written.
+        dst: Operand,
+        /// The string read.
+        src: Operand,
+        /// Its capacity in characters.
+        capacity: u32,
+    },
 }

@@ -385,6 +385,28 @@ impl ProgramImage {
                     }
                 }
                 Instr::Return => {}
+                Instr::ToText {
+                    from,
+                    wide,
+                    dst,
+                    capacity,
+                    src,
+                } => {
+                    let unit = if *wide { 2 } else { 1 };
+                    operand(*dst, (u64::from(*capacity) + 1) * unit, word)?;
+                    operand(*src, u64::from(from.size_bytes()), word)?;
+                }
+                Instr::FromText {
+                    to,
+                    wide,
+                    dst,
+                    src,
+                    capacity,
+                } => {
+                    let unit = if *wide { 2 } else { 1 };
+                    operand(*dst, u64::from(to.size_bytes()), word)?;
+                    operand(*src, (u64::from(*capacity) + 1) * unit, word)?;
+                }
             }
         }
         Ok(())

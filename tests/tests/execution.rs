@@ -539,3 +539,29 @@ fn strings_compare_by_their_characters() {
         ],
     );
 }
+
+#[test]
+fn text_bcd_and_partial_access_conversions() {
+    let s = run(
+        "PROGRAM main VAR t : STRING; n : INT; r : REAL; w : WORD; b : INT; d : DWORD := 16#11223344; hi : BYTE; bit : BOOL; x : DINT; tt : STRING; END_VAR
+         t := INT_TO_STRING(-42); n := STRING_TO_INT('123'); r := STRING_TO_REAL('2.5'); w := INT_TO_BCD(1234); b := BCD_TO_INT(16#0099);
+         hi := d.%B3; bit := d.%X2; d.%X0 := TRUE; x := TO_DINT(n); tt := TIME_TO_STRING(T#1m30s);
+         END_PROGRAM",
+        1,
+    );
+    check(
+        &s,
+        &[
+            ("main.t", "'-42'"),
+            ("main.n", "123"),
+            ("main.r", "2.5"),
+            ("main.w", "4660"),
+            ("main.b", "99"),
+            ("main.hi", "17"),
+            ("main.bit", "TRUE"),
+            ("main.d", "287454021"),
+            ("main.x", "123"),
+            ("main.tt", "'T#1m30s'"),
+        ],
+    );
+}

@@ -346,6 +346,9 @@ impl BodyGen<'_, '_, '_> {
             _ => {}
         }
         let base = self.place(&base)?;
+        if member.kind() == SyntaxKind::DIRECT_ADDRESS {
+            return self.partial_access(base, &member_name);
+        }
         if member.kind() == SyntaxKind::INT_NUMBER {
             // `x.3`: one bit of an integer or bit string.
             let ty = match base.lay.shape {
@@ -396,6 +399,50 @@ impl BodyGen<'_, '_, '_> {
         match ty {
             Type::Reference(_) => self.slot_place(place, ty, false),
             ty => Ok(Typed { place, ty, lay }),
+        }
+    }
+
+    /// `w.%X3`, `d.%B1`, `l.%W2`, `l.%D1`: a bit, byte, word or double word inside a bit
+    /// string, counted from the least significant end.
+    fn partial_access(&mut self, base: Typed, text: &str) -> Gen<Typed> {
+        let upper = text.to_ascii_uppercase();
+        let rest = upper
+            .strip_prefix('%')
+            .ok_or("a partial access starts with %")?;
+        let (size, number) = rest.split_at(1);
+        let index: u32 = number
+            .parse()
+            .map_err(|_| format!("'{text}' is no partial access"))?;
+        let LayShape::Scalar(ty) = base.lay.shape else {
+            return Err(format!("'{text}' needs a bit string"));
+        };
+        let width = ty.size_bytes() * 8;
+        let (part, bits) = match size {
+            "X" => (None, 1),
+            "B" => (Some(Elementary::Byte), 8),
+            "W" => (Some(Elementary::Word), 16),
+            "D" => (Some(Elementary::Dword), 32),
+            _ => return Err(format!("'{text}' is no partial access")),
+        };
+        if (index + 1) * bits > width {
+            return Err(format!("{} has no {text}", ty.name()));
+        }
+        let Place::Direct(operand) = base.place else {
+            return Err("partial access through a pointer is not supported yet".to_owned());
+        };
+        match part {
+            None => self.typed(
+                Place::Bit {
+                    operand,
+                    ty,
+                    bit: index as u8,
+                },
+                Type::BOOL,
+            ),
+            Some(part) => {
+                let place = Place::Direct(shifted(operand, index * bits / 8));
+                self.typed(place, Type::Elementary(part))
+            }
         }
     }
 

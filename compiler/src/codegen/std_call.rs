@@ -90,32 +90,58 @@ impl BodyGen<'_, '_, '_> {
     ) -> Gen<Option<(Operand, Type)>> {
         let upper = name.to_ascii_uppercase();
         let values = self.ordered(&upper, args)?;
-        let result_ty = concrete(&self.type_of(node), want);
+        let result_ty = match self.type_of(node) {
+            // A generic result (`INT_TO_BCD` gives ANY_BIT) takes the type of where it goes.
+            Type::Generic(_) | Type::Error => {
+                want.cloned().unwrap_or(Type::Elementary(Elementary::Word))
+            }
+            other => concrete(&other, want),
+        };
         let first = || {
             values
                 .first()
                 .cloned()
                 .ok_or_else(|| format!("'{name}' needs an argument"))
         };
-        // Conversions: `INT_TO_REAL`, `TRUNC`, `REAL_TO_INT`…
-        if let Some((from, _)) = upper
-            .split_once("_TO_")
-            .filter(|(f, t)| !f.is_empty() && !t.is_empty() && !upper.contains("BCD"))
-        {
-            let from_ty = Elementary::from_name(from)
-                .map(Type::elementary)
-                .unwrap_or(Type::Error);
+        // Conversions: `INT_TO_REAL`, `TO_INT`, `TRUNC_INT`, `INT_TO_BCD`, `BCD_TO_INT`…
+        let conversion = upper.strip_prefix("TO_").map(|_| "").or_else(|| {
+            upper
+                .split_once("_TO_")
+                .map(|(from, _)| from)
+                .filter(|from| !from.is_empty())
+        });
+        if let Some(from) = conversion {
             let arg = first()?;
-            let natural = if from_ty == Type::Error {
-                self.type_of(&arg)
-            } else {
-                from_ty
-            };
-            let natural = concrete(&natural, None);
-            let value = self.expr_as(&arg, &natural)?;
-            return self
-                .conversion(value, &natural, &result_ty, upper.starts_with("TRUNC"))
-                .map(Some);
+            let from_bcd = from == "BCD" || from.ends_with("_BCD");
+            let from_ty =
+                Elementary::from_name(from.trim_end_matches("_BCD")).map(Type::elementary);
+            let natural = concrete(&from_ty.unwrap_or_else(|| self.type_of(&arg)), None);
+            let mut value = self.expr_as(&arg, &natural)?;
+            if from_bcd {
+                let scalar = self.scalar_of(&natural).ok_or("BCD of a bit string")?;
+                let dst = self.temp(8);
+                self.emit(Instr::Unary {
+                    op: UnaryOp::FromBcd,
+                    ty: scalar,
+                    dst,
+                    src: value,
+                });
+                value = dst;
+            }
+            let trunc = upper.starts_with("TRUNC");
+            let (value, ty) = self.conversion(value, &natural, &result_ty, trunc)?;
+            if upper.ends_with("_TO_BCD") || upper.contains("_TO_BCD_") {
+                let scalar = self.scalar_of(&ty).ok_or("BCD into a bit string")?;
+                let dst = self.temp(8);
+                self.emit(Instr::Unary {
+                    op: UnaryOp::ToBcd,
+                    ty: scalar,
+                    dst,
+                    src: value,
+                });
+                return Ok(Some((dst, ty)));
+            }
+            return Ok(Some((value, ty)));
         }
         if upper == "TRUNC" || upper.starts_with("TRUNC_") {
             let arg = first()?;
@@ -422,9 +448,48 @@ impl BodyGen<'_, '_, '_> {
         to: &Type,
         trunc: bool,
     ) -> Gen<(Operand, Type)> {
+        // To and from text: the runtime prints and parses values as CODESYS does.
+        match (from, to) {
+            (Type::String { .. }, Type::String { .. }) => {
+                return Ok((self.convert(value, from, to)?, to.clone()));
+            }
+            (_, Type::String { wide, length }) => {
+                let scalar = self
+                    .scalar_of(from)
+                    .ok_or_else(|| format!("converting {from} to text"))?;
+                let lay = self.lay(to)?;
+                let dst = self.temp(lay.size);
+                self.emit(Instr::ToText {
+                    from: scalar,
+                    wide: *wide,
+                    dst,
+                    capacity: *length,
+                    src: value,
+                });
+                return Ok((dst, to.clone()));
+            }
+            (Type::String { wide, length }, _) => {
+                let scalar = self
+                    .scalar_of(to)
+                    .ok_or_else(|| format!("converting text to {to}"))?;
+                let dst = self.temp(8);
+                self.emit(Instr::FromText {
+                    to: scalar,
+                    wide: *wide,
+                    dst,
+                    src: value,
+                    capacity: *length,
+                });
+                return Ok((dst, to.clone()));
+            }
+            _ => {}
+        }
         let (Some(a), Some(b)) = (self.scalar_of(from), self.scalar_of(to)) else {
             return Err(format!("converting {from} to {to} is not supported yet"));
         };
+        if a == b && !trunc {
+            return Ok((value, to.clone()));
+        }
         let dst = self.temp(b.size_bytes());
         if trunc {
             self.emit(Instr::Trunc {

@@ -362,6 +362,20 @@ fn lower(instr: &Instr, regions: &Regions) -> Result<Op, String> {
                 .collect(),
         )?,
         Instr::Return => Box::new(|_| Ok(Flow::Return)),
+        Instr::ToText {
+            from,
+            wide,
+            dst,
+            capacity,
+            src,
+        } => strings::to_text(*from, *wide, a(dst), *capacity, a(src)),
+        Instr::FromText {
+            to,
+            wide,
+            dst,
+            src,
+            capacity,
+        } => strings::from_text(*to, *wide, a(dst), a(src), *capacity),
     })
 }
 
@@ -431,6 +445,19 @@ fn unary(op: UnaryOp, ty: E, dst: Addr, src: Addr) -> Result<Op, String> {
             Ok(Flow::Next)
         })),
         UnaryOp::Not if !ty.is_real() => Ok(dispatch!(bits ty, not_op(dst, src))),
+        UnaryOp::ToBcd | UnaryOp::FromBcd if !ty.is_real() => {
+            let to_bcd = op == UnaryOp::ToBcd;
+            Ok(Box::new(move |x| {
+                let raw = read_raw(x, src, ty)?;
+                let value = if to_bcd {
+                    crate::stdlib::numeric::to_bcd(raw)
+                } else {
+                    crate::stdlib::numeric::from_bcd(raw)
+                };
+                write_raw(x, dst, ty, value)?;
+                Ok(Flow::Next)
+            }))
+        }
         UnaryOp::Neg => dispatch!(num ty, arith1(dst, src, Arith::neg)),
         UnaryOp::Abs => dispatch!(num ty, arith1(dst, src, Arith::abs)),
         _ if ty == E::Real => Ok(real1::<f32>(op, dst, src)),
@@ -470,7 +497,7 @@ fn real1<T: Real>(op: UnaryOp, dst: Addr, src: Addr) -> Op {
         UnaryOp::Round => f64::round,
         UnaryOp::Neg => |v| -v,
         UnaryOp::Abs => f64::abs,
-        UnaryOp::Not => |v| v,
+        UnaryOp::Not | UnaryOp::ToBcd | UnaryOp::FromBcd => |v| v,
     };
     Box::new(move |x| {
         let value = x.get::<T>(src)?.apply(f);

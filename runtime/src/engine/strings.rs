@@ -2,12 +2,12 @@
 //! STRING/WSTRING of their declared capacity, computed by `stdlib::string`, and stored cut to
 //! the result's capacity.
 
-use program_image::StdFunction;
+use program_image::{Elementary, StdFunction};
 
 use super::exec::{Addr, Exec};
 use super::fault::FaultKind;
 use super::lower::{Flow, Op};
-use crate::stdlib::string;
+use crate::stdlib::{string, text};
 
 /// An argument of a string function: a string of some capacity, or an integer (DINT).
 #[derive(Clone, Copy)]
@@ -138,6 +138,34 @@ fn run<C: Unit>(function: StdFunction, dst: (Addr, u32), args: Vec<Arg>) -> Op {
             }
         };
         C::store(x, dst, capacity, &result)?;
+        Ok(Flow::Next)
+    })
+}
+
+/// `*_TO_STRING`: the value's text, cut to the string's capacity.
+pub(crate) fn to_text(from: Elementary, wide: bool, dst: Addr, capacity: u32, src: Addr) -> Op {
+    let capacity = capacity as usize;
+    Box::new(move |x| {
+        let raw = super::lower::read_raw(x, src, from)?;
+        if wide {
+            u16::store(x, dst, capacity, &text::to_wtext(raw, from))?;
+        } else {
+            u8::store(x, dst, capacity, &text::to_text_bytes(raw, from))?;
+        }
+        Ok(Flow::Next)
+    })
+}
+
+/// `STRING_TO_*`: the value the text spells.
+pub(crate) fn from_text(to: Elementary, wide: bool, dst: Addr, src: Addr, capacity: u32) -> Op {
+    let capacity = capacity as usize;
+    Box::new(move |x| {
+        let raw = if wide {
+            text::from_wtext(&u16::load(x, src, capacity)?, to)
+        } else {
+            text::from_text(&u8::load(x, src, capacity)?, to)
+        };
+        super::lower::write_raw(x, dst, to, raw)?;
         Ok(Flow::Next)
     })
 }

@@ -140,3 +140,39 @@ mod tests {
         assert_eq!(modabs(1.0, 0.0), 0.0);
     }
 }
+
+/// Binary-coded decimal: each decimal digit of `raw` (unsigned) in one nibble, lowest digit in
+/// the lowest nibble; digits beyond 16 are dropped with the bits that would hold them.
+pub fn to_bcd(raw: u64) -> u64 {
+    let mut value = raw;
+    let mut bcd = 0u64;
+    for nibble in 0..16 {
+        bcd |= (value % 10) << (4 * nibble);
+        value /= 10;
+        if value == 0 {
+            break;
+        }
+    }
+    bcd
+}
+
+/// The value of a binary-coded decimal; a nibble above 9 counts as 9, as the digit it
+/// cannot be.
+pub fn from_bcd(raw: u64) -> u64 {
+    (0..16).rev().fold(0u64, |value, nibble| {
+        value * 10 + ((raw >> (4 * nibble)) & 0xF).min(9)
+    })
+}
+
+#[cfg(test)]
+mod bcd_tests {
+    use super::*;
+
+    #[test]
+    fn bcd_round_trips_decimal_digits() {
+        assert_eq!(to_bcd(1234), 0x1234);
+        assert_eq!(from_bcd(0x1234), 1234);
+        assert_eq!(to_bcd(0), 0);
+        assert_eq!(from_bcd(0x9A), 99);
+    }
+}
