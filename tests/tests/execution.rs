@@ -565,3 +565,25 @@ fn text_bcd_and_partial_access_conversions() {
         ],
     );
 }
+
+#[test]
+fn jumps_and_enable_inputs_steer_execution() {
+    let s = run(
+        "FUNCTION Twice : INT VAR_INPUT x : INT; END_VAR Twice := x * 2; END_FUNCTION
+         PROGRAM main VAR n : INT; a : INT; b : INT := 7; ok1 : BOOL; ok2 : BOOL := TRUE; END_VAR
+         again: n := n + 1; IF n < 5 THEN JMP again; END_IF; JMP done; n := 100;
+         done: a := Twice(EN := TRUE, x := 4, ENO => ok1); b := Twice(EN := n > 10, x := 4, ENO => ok2);
+         END_PROGRAM",
+        1,
+    );
+    check(
+        &s,
+        &[
+            ("main.n", "5"),
+            ("main.a", "8"),
+            ("main.ok1", "TRUE"),
+            ("main.b", "0"),
+            ("main.ok2", "FALSE"),
+        ],
+    );
+}

@@ -89,6 +89,17 @@ pub(crate) struct BodyGen<'b, 'g, 'p> {
     line_offset: u32,
     /// Set while resolving the target of `REF=`: references are not followed.
     pub(crate) raw_references: bool,
+    /// Labels by lower-case name, and the jumps waiting for them.
+    labels: HashMap<String, u32>,
+    jumps: Vec<(usize, String)>,
+}
+
+/// The lower-case name of a label or of the label a JMP names.
+fn label_name(node: &SyntaxNode, kind: SyntaxKind) -> Gen<String> {
+    node.children()
+        .find(|child| child.kind() == kind)
+        .map(|name| name.text().to_string().trim().to_lowercase())
+        .ok_or_else(|| "a label without a name".to_owned())
 }
 
 impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
@@ -123,6 +134,8 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
             line_starts,
             line_offset,
             raw_references: false,
+            labels: HashMap::new(),
+            jumps: Vec::new(),
         }
     }
 
@@ -164,6 +177,14 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
     pub(crate) fn body(&mut self, root: &SyntaxNode) -> Gen<()> {
         for child in root.children() {
             self.statement_or_list(&child)?;
+        }
+        // JMP goes to a label anywhere in the body, before or after it.
+        for (at, name) in std::mem::take(&mut self.jumps) {
+            let target = *self
+                .labels
+                .get(&name)
+                .ok_or_else(|| format!("JMP to '{name}', which is no label of this body"))?;
+            self.patch(at, target);
         }
         Ok(())
     }
@@ -340,8 +361,19 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
                 Ok(())
             }
             SyntaxKind::EMPTY_STMT => Ok(()),
-            SyntaxKind::JMP_STMT | SyntaxKind::LABEL_STMT => {
-                Err("JMP and labels are not supported by the code generator yet".to_owned())
+            SyntaxKind::LABEL_STMT => {
+                let name = label_name(node, SyntaxKind::NAME)?;
+                let here = self.here();
+                if self.labels.insert(name.clone(), here).is_some() {
+                    return Err(format!("the label '{name}' is declared twice"));
+                }
+                Ok(())
+            }
+            SyntaxKind::JMP_STMT => {
+                let name = label_name(node, SyntaxKind::NAME_REF)?;
+                let at = self.emit(Instr::Jump { target: 0 });
+                self.jumps.push((at, name));
+                Ok(())
             }
             SyntaxKind::STEP_DECL | SyntaxKind::TRANSITION_DECL | SyntaxKind::ACTION_DECL => {
                 Err("textual SFC is not supported by the code generator yet".to_owned())

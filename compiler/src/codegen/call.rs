@@ -13,6 +13,7 @@ use crate::syntax::{SyntaxKind, SyntaxNode};
 
 /// One argument of a call: its formal name if given, whether it is an output (`=>`), and its
 /// expression.
+#[derive(Clone)]
 pub(crate) struct Argument {
     pub(crate) formal: Option<String>,
     pub(crate) output: bool,
@@ -79,16 +80,68 @@ impl<'p> BodyGen<'_, '_, 'p> {
         want: Option<&Type>,
     ) -> Gen<Option<(Operand, Type)>> {
         let callee_node = node.children().next().ok_or("a call of nothing")?;
-        let args = arguments(node);
-        if args.iter().any(|a| {
-            a.formal
-                .as_deref()
-                .is_some_and(|f| f.eq_ignore_ascii_case("EN") || f.eq_ignore_ascii_case("ENO"))
-        }) {
-            return Err("EN and ENO are not supported by the code generator yet".to_owned());
-        }
+        let all = arguments(node);
+        let named = |name: &str| {
+            all.iter()
+                .find(|a| {
+                    a.formal
+                        .as_deref()
+                        .is_some_and(|f| f.eq_ignore_ascii_case(name))
+                })
+                .and_then(|a| a.value.clone())
+        };
+        let (enable, enabled_out) = (named("EN"), named("ENO"));
+        let args: Vec<Argument> = all
+            .iter()
+            .filter(|a| {
+                !a.formal
+                    .as_deref()
+                    .is_some_and(|f| f.eq_ignore_ascii_case("EN") || f.eq_ignore_ascii_case("ENO"))
+            })
+            .cloned()
+            .collect();
         let callee = self.callee(&callee_node)?;
-        self.call_callee(callee, &args, Some((node, want)))
+        // EN = FALSE skips the call (a result reads as zero) and ENO tells whether it ran.
+        let skip = match &enable {
+            Some(condition) => {
+                let condition = self.expr_as(condition, &Type::BOOL)?;
+                Some(self.emit(Instr::JumpIfNot {
+                    cond: condition,
+                    target: 0,
+                }))
+            }
+            None => None,
+        };
+        let result = self.call_callee(callee, &args, Some((node, want)))?;
+        let enabled_place = match &enabled_out {
+            Some(target) => Some(self.place(target)?),
+            None => None,
+        };
+        if let Some(place) = &enabled_place {
+            let on = self.build.constant(&[1]);
+            self.store(place, on)?;
+        }
+        if let Some(skip) = skip {
+            let done = self.emit(Instr::Jump { target: 0 });
+            let skipped = self.here();
+            self.patch(skip, skipped);
+            if let Some(place) = &enabled_place {
+                let off = self.build.constant(&[0]);
+                self.store(place, off)?;
+            }
+            if let Some((operand, ty)) = &result {
+                let size = self.lay(ty)?.size;
+                let zeros = self.build.constant(&vec![0; size as usize]);
+                self.emit(Instr::Copy {
+                    size,
+                    dst: *operand,
+                    src: zeros,
+                });
+            }
+            let end = self.here();
+            self.patch(done, end);
+        }
+        Ok(result)
     }
 
     fn call_callee(
