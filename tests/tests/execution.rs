@@ -587,3 +587,23 @@ fn jumps_and_enable_inputs_steer_execution() {
         ],
     );
 }
+
+#[test]
+fn static_variables_are_shared_by_every_instance_and_call() {
+    let s = run(
+        "FUNCTION_BLOCK FB_Count VAR_STAT shared : INT; END_VAR VAR own : INT; END_VAR VAR_OUTPUT seen : INT; END_VAR
+         shared := shared + 1; own := own + 1; seen := shared * 10 + own; END_FUNCTION_BLOCK
+         FUNCTION Calls : INT VAR_STAT n : INT; END_VAR n := n + 1; Calls := n; END_FUNCTION
+         PROGRAM main VAR a : FB_Count; b : FB_Count; c : INT; END_VAR a(); b(); c := Calls(); c := Calls(); END_PROGRAM",
+        2,
+    );
+    check(
+        &s,
+        &[
+            ("main.a.seen", "32"),
+            ("main.b.seen", "42"),
+            ("main.c", "4"),
+            ("FB_Count.shared", "4"),
+        ],
+    );
+}

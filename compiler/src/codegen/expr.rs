@@ -242,6 +242,13 @@ impl BodyGen<'_, '_, '_> {
                     if variable.section == VarSection::VarExternal {
                         return self.global_place(&name);
                     }
+                    if variable.section == VarSection::VarStat {
+                        // Static variables are shared by every instance and call.
+                        return self
+                            .build
+                            .global(variable)
+                            .ok_or_else(|| format!("the static variable '{name}' has no storage"));
+                    }
                     if let Some(frame_var) = self.frame.var(&name).cloned() {
                         return self.slot_place(
                             Place::Direct(Operand::Frame(frame_var.offset)),

@@ -105,7 +105,6 @@ pub(crate) fn in_instance(section: VarSection) -> bool {
             | VarSection::VarOutput
             | VarSection::VarInOut
             | VarSection::Var
-            | VarSection::VarStat
             | VarSection::VarInst
     )
 }

@@ -271,8 +271,33 @@ pub(crate) fn build_image(project: &Project, origin: BodyOrigin<'_>) -> Gen<Prog
         }
     }
 
-    // Program instances, each with the symbols of everything inside it.
+    // Static variables (VAR_STAT) of every POU and method, one copy shared by all calls.
     let objects = project.application.objects();
+    for object in &objects {
+        let Object::Pou(pou) = object else { continue };
+        let variables = pou
+            .variables
+            .iter()
+            .chain(pou.methods.iter().flat_map(|m| &m.variables));
+        for var in variables.filter(|v| v.section == VarSection::VarStat) {
+            let ty = globals.resolve_type(&var.ty);
+            let lay = build
+                .layouts
+                .of(&ty)
+                .map_err(|e| format!("{}.{}: {e}", pou.name, var.name))?;
+            let bytes = build
+                .layouts
+                .initial_bytes(&lay, var.initial.as_deref())
+                .map_err(|e| format!("{}.{}: {e}", pou.name, var.name))?;
+            let path = format!("{}.{}", pou.name, var.name);
+            let place = place_variable(&mut data, var, &lay, &bytes, &path, flags_of(var));
+            build
+                .globals_by_var
+                .insert(std::ptr::from_ref(var), Typed { place, ty, lay });
+        }
+    }
+
+    // Program instances, each with the symbols of everything inside it.
     let programs: Vec<&Pou> = objects
         .iter()
         .filter_map(|o| match o {
