@@ -378,4 +378,17 @@ pub enum Instr {
         /// Its capacity in characters.
         capacity: u32,
     },
+    /// Calls a method through an interface: the class in the interface value selects the
+    /// method from `table`, which then runs as [`Instr::CallFunction`] does on the instance
+    /// the interface value points to. A null interface is a fault.
+    CallVirtual {
+        /// (class: the POU index of a function block, method: the POU index of its method).
+        table: Vec<(u32, u32)>,
+        /// The 16-byte interface value.
+        interface: Operand,
+        /// Copies into the new frame before the body runs (the same for every method).
+        inputs: Vec<Transfer>,
+        /// Copies out of the frame after the body returns.
+        outputs: Vec<Transfer>,
+    },
 }

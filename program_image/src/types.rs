@@ -56,6 +56,12 @@ pub enum TypeDef {
         /// Whether it is a reference (used as its target) rather than a pointer.
         reference: bool,
     },
+    /// A variable of an interface type: 16 bytes, a pointer to the instance (§5.2) and the
+    /// POU index of the instance's function block (its class), which selects the methods.
+    Interface {
+        /// The interface's name.
+        name: String,
+    },
 }
 
 /// What a [`TypeDef::Struct`] is.
@@ -112,6 +118,7 @@ impl TypeDef {
             Self::Struct { size, .. } => u64::from(*size),
             Self::Enum { base, .. } => u64::from(base.size_bytes()),
             Self::Pointer { .. } => 8,
+            Self::Interface { .. } => 16,
         }
     }
 }

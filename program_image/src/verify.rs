@@ -133,7 +133,7 @@ impl ProgramImage {
                     before(*element) && !dims.is_empty() && dims.iter().all(|(l, h)| l <= h)
                 }
                 TypeDef::Struct { members, .. } => members.iter().all(|m| before(m.ty)),
-                TypeDef::Enum { .. } => true,
+                TypeDef::Enum { .. } | TypeDef::Interface { .. } => true,
                 TypeDef::Pointer { target, .. } => {
                     target.is_none_or(|t| (t as usize) < self.types.len())
                 }
@@ -385,6 +385,35 @@ impl ProgramImage {
                     }
                 }
                 Instr::Return => {}
+                Instr::CallVirtual {
+                    table,
+                    interface,
+                    inputs,
+                    outputs,
+                } => {
+                    operand(*interface, 16, word)?;
+                    for (class, method) in table {
+                        callee(*class, word)?;
+                        let target = callee(*method, word)?;
+                        if target.kind != PouKind::Method {
+                            return Err(format!(
+                                "instruction {word}: '{}' is not a method",
+                                target.name
+                            ));
+                        }
+                        for transfer in inputs.iter().chain(outputs) {
+                            operand(transfer.caller, u64::from(transfer.size), word)?;
+                            if u64::from(transfer.callee_offset) + u64::from(transfer.size)
+                                > u64::from(target.frame_size)
+                            {
+                                return Err(format!(
+                                    "instruction {word}: a parameter lies outside the frame of '{}'",
+                                    target.name
+                                ));
+                            }
+                        }
+                    }
+                }
                 Instr::ToText {
                     from,
                     wide,

@@ -607,3 +607,29 @@ fn static_variables_are_shared_by_every_instance_and_call() {
         ],
     );
 }
+
+#[test]
+fn methods_called_through_an_interface_run_the_instance_s_own() {
+    let s = run(
+        "INTERFACE I_Shape METHOD Area : REAL VAR_INPUT scale : REAL; END_VAR END_METHOD END_INTERFACE
+         FUNCTION_BLOCK FB_Square IMPLEMENTS I_Shape VAR_INPUT side : REAL; END_VAR
+         METHOD Area : REAL VAR_INPUT scale : REAL; END_VAR VAR tmp : REAL; END_VAR tmp := side * side; Area := tmp * scale; END_METHOD
+         END_FUNCTION_BLOCK
+         FUNCTION_BLOCK FB_Circle IMPLEMENTS I_Shape VAR_INPUT r : REAL; END_VAR
+         METHOD Area : REAL VAR_INPUT scale : REAL; END_VAR Area := 3.0 * r * r * scale; END_METHOD
+         END_FUNCTION_BLOCK
+         PROGRAM main VAR sq : FB_Square := (side := 2.0); ci : FB_Circle := (r := 1.0); shapes : ARRAY[1..2] OF I_Shape; total : REAL; i : INT; none : I_Shape; empty : BOOL; END_VAR
+         shapes[1] := sq; shapes[2] := ci; total := 0.0;
+         FOR i := 1 TO 2 DO total := total + shapes[i].Area(scale := 10.0); END_FOR;
+         empty := none = 0;
+         END_PROGRAM",
+        1,
+    );
+    check(&s, &[("main.total", "70"), ("main.empty", "TRUE")]);
+    let s = run(
+        "INTERFACE I_Run METHOD Go : BOOL END_METHOD END_INTERFACE
+         PROGRAM main VAR none : I_Run; ok : BOOL; END_VAR ok := none.Go(); END_PROGRAM",
+        1,
+    );
+    assert_eq!(s.faults()[0].kind, runtime::engine::FaultKind::NullPointer);
+}

@@ -62,6 +62,12 @@ enum Callee<'p> {
     },
     /// An instance of a function block or a program.
     Instance(Typed),
+    /// A method called through an interface value.
+    Virtual {
+        interface: &'p Pou,
+        name: String,
+        base: SyntaxNode,
+    },
     /// A standard function.
     Standard(String),
 }
@@ -215,6 +221,11 @@ impl<'p> BodyGen<'_, '_, 'p> {
                 self.call_instance(typed, args)?;
                 Ok(None)
             }
+            Callee::Virtual {
+                interface,
+                name,
+                base,
+            } => self.call_virtual(interface, &name, &base, args),
             Callee::Standard(name) => {
                 let (node, want) = node.ok_or_else(|| format!("'{name}' needs arguments"))?;
                 self.call_standard(&name, node, args, want)
@@ -286,6 +297,19 @@ impl<'p> BodyGen<'_, '_, 'p> {
                     None => return Ok(Callee::Standard(name)),
                 },
             }
+        }
+        if node.kind() == SyntaxKind::FIELD_EXPR
+            && let Some(base) = node.children().next()
+            && let Some(member) = tokens(node)
+                .filter(|t| t.kind() == SyntaxKind::IDENT)
+                .last()
+            && let Some(interface) = self.interface_of(&self.type_of(&base))
+        {
+            return Ok(Callee::Virtual {
+                interface,
+                name: member.text().to_owned(),
+                base,
+            });
         }
         if node.kind() == SyntaxKind::FIELD_EXPR
             && let Some(base) = node.children().next()

@@ -563,6 +563,9 @@ impl BodyGen<'_, '_, '_> {
 
     /// Evaluates `node` into an operand of exactly type `target`.
     pub(crate) fn expr_as(&mut self, node: &SyntaxNode, target: &Type) -> Gen<Operand> {
+        if self.interface_of(target).is_some() {
+            return self.interface_value(node, target);
+        }
         let (operand, ty) = self.expr(node, Some(target))?;
         self.convert(operand, &ty, target)
     }
@@ -800,6 +803,41 @@ impl BodyGen<'_, '_, '_> {
             let (lt, rt) = (self.type_of(&left), self.type_of(&right));
             let common = common_type(&lt, &rt).unwrap_or(lt);
             let ty = concrete(&common, None);
+            let sides = [self.type_of(&left), self.type_of(&right)];
+            if sides.iter().any(|t| matches!(t, Type::Pointer(_))) {
+                // Pointers compare as addresses; a literal on the other side is an address too.
+                let mut operands = Vec::new();
+                for node in [&left, &right] {
+                    let operand = match evaluate_node(node, self.scope.globals) {
+                        Some(Value::Int(v)) => self.build.scalar_constant(v as u64, IE::Lword),
+                        _ => self.expr(node, None)?.0,
+                    };
+                    operands.push(operand);
+                }
+                let dst = self.temp(1);
+                self.emit(Instr::Compare {
+                    op,
+                    ty: IE::Lword,
+                    dst,
+                    a: operands[0],
+                    b: operands[1],
+                });
+                return Ok((dst, Type::BOOL));
+            }
+            if let Some(interface) = sides.into_iter().find(|t| self.interface_of(t).is_some()) {
+                // Interfaces compare by the instance they point to (`itf <> 0`).
+                let a = self.interface_value(&left, &interface)?;
+                let b = self.interface_value(&right, &interface)?;
+                let dst = self.temp(1);
+                self.emit(Instr::Compare {
+                    op,
+                    ty: IE::Lword,
+                    dst,
+                    a,
+                    b,
+                });
+                return Ok((dst, Type::BOOL));
+            }
             if let Type::String { wide, .. } = ty {
                 return self.compare_strings(op, &left, &right, wide);
             }

@@ -48,6 +48,8 @@ pub(crate) enum LayShape {
     Std(StdBlock, bool),
     /// A pointer or reference (8 bytes).
     Pointer,
+    /// An interface value (16 bytes: a pointer to the instance and its class).
+    Interface,
 }
 
 /// A member of a structure.
@@ -353,6 +355,14 @@ impl<'g, 'p> Layouts<'g, 'p> {
                     shape: LayShape::Struct(data_type.name.clone()),
                 })
             }
+            Some(Shape::Pou(pou)) if pou.kind == PouKind::Interface => Ok(Lay {
+                size: 16,
+                align: 8,
+                id: self.add(TypeDef::Interface {
+                    name: pou.name.clone(),
+                }),
+                shape: LayShape::Interface,
+            }),
             Some(Shape::Pou(pou))
                 if matches!(pou.kind, PouKind::FunctionBlock | PouKind::Program) =>
             {

@@ -16,6 +16,7 @@ mod call;
 mod constant;
 mod expr;
 mod init;
+mod interface;
 mod layout;
 mod program;
 mod property;

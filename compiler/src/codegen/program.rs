@@ -37,6 +37,7 @@ pub(crate) struct Build<'g, 'p> {
     globals_by_var: HashMap<*const Variable, Typed>,
     gvls: HashMap<String, &'p GlobalVarList>,
     programs: HashMap<String, u32>,
+    blocks: Vec<&'p Pou>,
 }
 
 impl<'g, 'p> Build<'g, 'p> {
@@ -49,6 +50,7 @@ impl<'g, 'p> Build<'g, 'p> {
             globals_by_var: HashMap::new(),
             gvls: HashMap::new(),
             programs: HashMap::new(),
+            blocks: Vec::new(),
         }
     }
 
@@ -95,6 +97,11 @@ impl<'g, 'p> Build<'g, 'p> {
             .find(|v| v.name.eq_ignore_ascii_case(name))
     }
 
+    /// Every function block of the project.
+    pub(crate) fn function_blocks(&self) -> Vec<&'p Pou> {
+        self.blocks.clone()
+    }
+
     /// The data offset of a program's instance.
     pub(crate) fn program_offset(&self, name: &str) -> Option<u32> {
         self.programs.get(&name.to_lowercase()).copied()
@@ -113,6 +120,42 @@ impl<'g, 'p> Build<'g, 'p> {
         let function_like = return_type.is_some()
             || owner.kind == PouKind::Function
             || !std::ptr::eq(variables, owner.variables.as_slice());
+        // Parameters come first, so every implementation of an interface method, whatever
+        // its locals, takes its inputs and outputs at the same offsets.
+        let parameter = |v: &&Variable| {
+            matches!(
+                v.section,
+                VarSection::VarInput | VarSection::VarOutput | VarSection::VarInOut
+            )
+        };
+        let parameters: Vec<&'p Variable> = variables.iter().filter(parameter).collect();
+        let others: Vec<&'p Variable> = variables.iter().filter(|v| !parameter(v)).collect();
+        self.frame_vars(&mut frame, &mut offset, &parameters, function_like)?;
+        // The result follows the parameters, also at the same offset in every implementation.
+        if let Some(text) = return_type {
+            let ty = self.layouts.globals.resolve_type(text);
+            let lay = self.layouts.of(&ty)?;
+            let at = offset.next_multiple_of(lay.align);
+            offset = at + lay.size;
+            frame.result = Some(FrameVar {
+                offset: at,
+                ty,
+                lay,
+                by_ref: false,
+            });
+        }
+        self.frame_vars(&mut frame, &mut offset, &others, function_like)?;
+        frame.size = offset;
+        Ok(frame)
+    }
+
+    fn frame_vars(
+        &mut self,
+        frame: &mut Frame<'p>,
+        offset: &mut u32,
+        variables: &[&'p Variable],
+        function_like: bool,
+    ) -> Gen<()> {
         for var in variables {
             let in_frame = match var.section {
                 VarSection::VarTemp => true,
@@ -138,7 +181,7 @@ impl<'g, 'p> Build<'g, 'p> {
                 .of(&ty)
                 .map_err(|e| format!("{}: {e}", var.name))?;
             let at = offset.next_multiple_of(lay.align);
-            offset = at + lay.size;
+            *offset = at + lay.size;
             frame.vars.push((
                 var,
                 FrameVar {
@@ -149,20 +192,7 @@ impl<'g, 'p> Build<'g, 'p> {
                 },
             ));
         }
-        if let Some(text) = return_type {
-            let ty = self.layouts.globals.resolve_type(text);
-            let lay = self.layouts.of(&ty)?;
-            let at = offset.next_multiple_of(lay.align);
-            offset = at + lay.size;
-            frame.result = Some(FrameVar {
-                offset: at,
-                ty,
-                lay,
-                by_ref: false,
-            });
-        }
-        frame.size = offset;
-        Ok(frame)
+        Ok(())
     }
 
     /// The initial bytes of a frame's variables.
@@ -273,6 +303,13 @@ pub(crate) fn build_image(project: &Project, origin: BodyOrigin<'_>) -> Gen<Prog
 
     // Static variables (VAR_STAT) of every POU and method, one copy shared by all calls.
     let objects = project.application.objects();
+    build.blocks = objects
+        .iter()
+        .filter_map(|o| match o {
+            Object::Pou(pou) if pou.kind == PouKind::FunctionBlock => Some(pou),
+            _ => None,
+        })
+        .collect();
     for object in &objects {
         let Object::Pou(pou) = object else { continue };
         let variables = pou

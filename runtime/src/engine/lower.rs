@@ -309,37 +309,14 @@ fn lower(instr: &Instr, regions: &Regions) -> Result<Op, String> {
         } => {
             let pou = *pou as usize;
             let instance = instance.map(|operand| a(&operand));
-            let inputs: Vec<(Addr, usize, usize)> = inputs
-                .iter()
-                .map(|t| (a(&t.caller), t.callee_offset as usize, t.size as usize))
-                .collect();
-            let outputs: Vec<(Addr, usize, usize)> = outputs
-                .iter()
-                .map(|t| (a(&t.caller), t.callee_offset as usize, t.size as usize))
-                .collect();
+            let inputs = transfers(inputs, regions);
+            let outputs = transfers(outputs, regions);
             Box::new(move |x| {
                 let this = match instance {
                     Some(pointer) => x.deref(x.get::<u64>(pointer)?, 0)?,
                     None => x.bases[usize::from(INSTANCE)],
                 };
-                let saved = (x.bases, x.sp);
-                let frame = x.push_frame(pou)?;
-                for (caller, offset, size) in &inputs {
-                    let from = x.at(*caller);
-                    x.copy(frame + offset, from, *size)?;
-                }
-                x.bases = [0, this, frame];
-                let result = x.run(pou);
-                x.bases = saved.0;
-                if result.is_ok() {
-                    for (caller, offset, size) in &outputs {
-                        let to = x.at(*caller);
-                        x.copy(to, frame + offset, *size)?;
-                    }
-                }
-                x.sp = saved.1;
-                x.pop_depth();
-                result.map(|()| Flow::Next)
+                call_frame(x, pou, this, &inputs, &outputs)
             })
         }
         Instr::CallStdBlock {
@@ -362,6 +339,34 @@ fn lower(instr: &Instr, regions: &Regions) -> Result<Op, String> {
                 .collect(),
         )?,
         Instr::Return => Box::new(|_| Ok(Flow::Return)),
+        Instr::CallVirtual {
+            table,
+            interface,
+            inputs,
+            outputs,
+        } => {
+            let table: Vec<(u32, usize)> = table
+                .iter()
+                .map(|(class, method)| (*class, *method as usize))
+                .collect();
+            let interface = a(interface);
+            let inputs = transfers(inputs, regions);
+            let outputs = transfers(outputs, regions);
+            Box::new(move |x| {
+                let pointer = x.get::<u64>(interface)?;
+                let class = x.get::<u32>(Addr {
+                    offset: interface.offset + 8,
+                    ..interface
+                })?;
+                let this = x.deref(pointer, 0)?;
+                let method = table
+                    .iter()
+                    .find(|(known, _)| *known == class)
+                    .map(|(_, method)| *method)
+                    .ok_or(FaultKind::BadPointer(pointer))?;
+                call_frame(x, method, this, &inputs, &outputs)
+            })
+        }
         Instr::ToText {
             from,
             wide,
@@ -377,6 +382,48 @@ fn lower(instr: &Instr, regions: &Regions) -> Result<Op, String> {
             capacity,
         } => strings::from_text(*to, *wide, a(dst), a(src), *capacity),
     })
+}
+
+/// Transfers with their caller operands resolved.
+fn transfers(list: &[program_image::Transfer], regions: &Regions) -> Vec<(Addr, usize, usize)> {
+    list.iter()
+        .map(|t| {
+            (
+                addr(t.caller, regions),
+                t.callee_offset as usize,
+                t.size as usize,
+            )
+        })
+        .collect()
+}
+
+/// Calls a function or method: a new frame, the inputs copied in, the body run on `this`,
+/// the outputs copied out.
+fn call_frame(
+    x: &mut Exec<'_>,
+    pou: usize,
+    this: usize,
+    inputs: &[(Addr, usize, usize)],
+    outputs: &[(Addr, usize, usize)],
+) -> Result<Flow, FaultKind> {
+    let saved = (x.bases, x.sp);
+    let frame = x.push_frame(pou)?;
+    for (caller, offset, size) in inputs {
+        let from = x.at(*caller);
+        x.copy(frame + offset, from, *size)?;
+    }
+    x.bases = [0, this, frame];
+    let result = x.run(pou);
+    x.bases = saved.0;
+    if result.is_ok() {
+        for (caller, offset, size) in outputs {
+            let to = x.at(*caller);
+            x.copy(to, frame + offset, *size)?;
+        }
+    }
+    x.sp = saved.1;
+    x.pop_depth();
+    result.map(|()| Flow::Next)
 }
 
 /// Reads a value of type `ty` as raw bits.

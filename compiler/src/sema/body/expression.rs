@@ -740,6 +740,18 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                     (enumeration, other) | (other, enumeration) if is_enum(enumeration) => {
                         other.is_integer_like()
                     }
+                    // `itf <> 0`: whether an interface holds an instance, as CODESYS allows.
+                    (Type::Named(name), Type::IntLiteral(Some(0)))
+                    | (Type::IntLiteral(Some(0)), Type::Named(name))
+                        if matches!(operator, EQ | NEQ)
+                            && self
+                                .scope
+                                .globals
+                                .pou(name)
+                                .is_some_and(|p| p.kind == PouKind::Interface) =>
+                    {
+                        true
+                    }
                     _ => common_type(left, right).is_some(),
                 };
                 comparable.then_some(Type::BOOL)

@@ -1,0 +1,227 @@
+//! Interfaces: an interface value is a pointer to an instance and the instance's class (the
+//! POU index of its function block); a method called through it is chosen by the class from a
+//! table of every function block that implements the interface.
+
+use program_image::{Elementary as IE, Instr, Operand, Transfer};
+use project_model::{Pou, PouKind};
+
+use super::body::{BodyGen, Gen};
+use super::call::Argument;
+use super::expr::shifted;
+use super::layout::LayShape;
+use crate::sema::scope::inheritance_chain;
+use crate::sema::ty::Type;
+use crate::syntax::SyntaxNode;
+
+impl<'p> BodyGen<'_, '_, 'p> {
+    /// The interface `ty` names, if it names one.
+    pub(crate) fn interface_of(&self, ty: &Type) -> Option<&'p Pou> {
+        match ty {
+            Type::Named(name) => self
+                .scope
+                .globals
+                .pou(name)
+                .filter(|p| p.kind == PouKind::Interface),
+            _ => None,
+        }
+    }
+
+    /// Whether the function block `pou` (or a base) implements `interface` (or an interface
+    /// extending it).
+    fn implements(&self, pou: &'p Pou, interface: &str) -> bool {
+        inheritance_chain(self.scope.globals, pou)
+            .iter()
+            .any(|current| {
+                current
+                    .implements
+                    .iter()
+                    .any(|name| self.extends_interface(name, interface, 0))
+            })
+    }
+
+    fn extends_interface(&self, name: &str, wanted: &str, depth: usize) -> bool {
+        name.eq_ignore_ascii_case(wanted)
+            || depth < 32
+                && self.scope.globals.pou(name).is_some_and(|itf| {
+                    itf.extends
+                        .iter()
+                        .chain(&itf.implements)
+                        .any(|base| self.extends_interface(base, wanted, depth + 1))
+                })
+    }
+
+    /// An interface value for `node`: an instance of a function block that implements it, the
+    /// literal 0 (no instance), or another interface value.
+    pub(crate) fn interface_value(&mut self, node: &SyntaxNode, interface: &Type) -> Gen<Operand> {
+        let checked = self.type_of(node);
+        if let Type::IntLiteral(Some(0)) = checked {
+            return Ok(self.build.constant(&[0; 16]));
+        }
+        if let Type::Named(name) = &checked
+            && let Some(pou) = self
+                .scope
+                .globals
+                .pou(name)
+                .filter(|p| p.kind == PouKind::FunctionBlock)
+        {
+            let typed = self.place(node)?;
+            let pointer = self.pointer_to(&typed)?;
+            let class = self.build.pou_index(&pou.name, None)?;
+            let value = self.temp(16);
+            self.emit(Instr::Move {
+                ty: IE::Lword,
+                dst: value,
+                src: pointer,
+            });
+            let class = self.build.scalar_constant(u64::from(class), IE::Udint);
+            self.emit(Instr::Move {
+                ty: IE::Udint,
+                dst: shifted(value, 8),
+                src: class,
+            });
+            return Ok(value);
+        }
+        let (value, ty) = self.expr(node, Some(interface))?;
+        match self.lay(&ty)?.shape {
+            LayShape::Interface => Ok(value),
+            _ => Err(format!(
+                "{ty} is not an instance that implements {interface}"
+            )),
+        }
+    }
+
+    /// `itf.Method(args)`: a call chosen at run time by the instance's class.
+    pub(crate) fn call_virtual(
+        &mut self,
+        interface: &'p Pou,
+        method_name: &str,
+        base: &SyntaxNode,
+        args: &[Argument],
+    ) -> Gen<Option<(Operand, Type)>> {
+        let declared = interface
+            .methods
+            .iter()
+            .find(|m| m.name.eq_ignore_ascii_case(method_name))
+            .ok_or_else(|| {
+                format!(
+                    "the interface '{}' has no method '{method_name}'",
+                    interface.name
+                )
+            })?;
+        let frame = self.build.frame_of(
+            interface,
+            &declared.variables,
+            declared.return_type.as_deref(),
+        )?;
+        let mut table = Vec::new();
+        let classes: Vec<&'p Pou> = self
+            .build
+            .function_blocks()
+            .into_iter()
+            .filter(|pou| self.implements(pou, &interface.name))
+            .collect();
+        for class in classes {
+            let owner = inheritance_chain(self.scope.globals, class)
+                .into_iter()
+                .find(|p| {
+                    p.methods
+                        .iter()
+                        .any(|m| m.name.eq_ignore_ascii_case(method_name))
+                })
+                .ok_or_else(|| {
+                    format!(
+                        "'{}' implements '{}' but has no method '{method_name}'",
+                        class.name, interface.name
+                    )
+                })?;
+            let method = owner
+                .methods
+                .iter()
+                .find(|m| m.name.eq_ignore_ascii_case(method_name))
+                .ok_or("a method")?;
+            // Every implementation must take its parameters where the interface puts them.
+            let own =
+                self.build
+                    .frame_of(owner, &method.variables, method.return_type.as_deref())?;
+            let same = frame
+                .vars
+                .iter()
+                .all(|(var, slot)| own.var(&var.name).is_some_and(|o| o.offset == slot.offset))
+                && frame.result.as_ref().map(|r| r.offset) == own.result.as_ref().map(|r| r.offset);
+            if !same {
+                return Err(format!(
+                    "'{}.{method_name}' does not declare the parameters of '{}.{method_name}' in the same order",
+                    owner.name, interface.name
+                ));
+            }
+            table.push((
+                self.build.pou_index(&class.name, None)?,
+                self.build.pou_index(&owner.name, Some(&method.name))?,
+            ));
+        }
+        let (value, _) = self.expr(base, None)?;
+        let params: Vec<_> = frame
+            .vars
+            .iter()
+            .filter(|(v, _)| v.section != project_model::VarSection::Var)
+            .collect();
+        let mut inputs = Vec::new();
+        let mut outputs = Vec::new();
+        let mut outputs_to = Vec::new();
+        for (position, arg) in args.iter().enumerate() {
+            let Some(node) = &arg.value else { continue };
+            let (var, slot) = match &arg.formal {
+                Some(formal) => params
+                    .iter()
+                    .find(|(v, _)| v.name.eq_ignore_ascii_case(formal)),
+                None => params.get(position),
+            }
+            .ok_or_else(|| format!("no parameter for argument {}", position + 1))?;
+            if arg.output {
+                let temp = self.temp(slot.lay.size);
+                outputs.push(Transfer {
+                    caller: temp,
+                    callee_offset: slot.offset,
+                    size: slot.lay.size,
+                });
+                outputs_to.push((temp, slot.ty.clone(), node.clone()));
+                continue;
+            }
+            let _ = var;
+            let caller = if slot.by_ref {
+                self.address_of(node)?
+            } else {
+                self.expr_as(node, &slot.ty)?
+            };
+            inputs.push(Transfer {
+                caller,
+                callee_offset: slot.offset,
+                size: slot.lay.size,
+            });
+        }
+        let result = match &frame.result {
+            Some(result) => {
+                let temp = self.temp(result.lay.size);
+                outputs.push(Transfer {
+                    caller: temp,
+                    callee_offset: result.offset,
+                    size: result.lay.size,
+                });
+                Some((temp, result.ty.clone()))
+            }
+            None => None,
+        };
+        self.emit(Instr::CallVirtual {
+            table,
+            interface: value,
+            inputs,
+            outputs,
+        });
+        for (temp, ty, node) in outputs_to {
+            let target = self.place(&node)?;
+            let value = self.convert(temp, &ty, &target.ty)?;
+            self.store(&target, value)?;
+        }
+        Ok(result)
+    }
+}
