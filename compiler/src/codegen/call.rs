@@ -4,7 +4,7 @@
 use program_image::{Instr, Operand, Transfer};
 use project_model::{Pou, PouKind, VarSection};
 
-use super::body::{BodyGen, Gen, Place, Typed};
+use super::body::{BodyGen, Frame, FrameVar, Gen, Place, Typed};
 use super::expr::tokens;
 use super::layout::LayShape;
 use crate::sema::scope::{GlobalSymbol, LocalSymbol};
@@ -42,6 +42,17 @@ pub(crate) fn arguments(node: &SyntaxNode) -> Vec<Argument> {
             }
         })
         .collect()
+}
+
+/// The transfers of a call with a frame, and where its outputs go afterwards.
+#[derive(Default)]
+pub(crate) struct FrameCall {
+    pub(crate) inputs: Vec<Transfer>,
+    pub(crate) outputs: Vec<Transfer>,
+    /// (temporary, its type, the target) for each `=>` output.
+    pub(crate) stores: Vec<(Operand, Type, Typed)>,
+    /// The result's temporary and type.
+    pub(crate) result: Option<(Operand, Type)>,
 }
 
 /// What a call's callee is.
@@ -390,46 +401,60 @@ impl<'p> BodyGen<'_, '_, 'p> {
         args: &[Argument],
     ) -> Gen<Option<(Operand, Type)>> {
         let frame = self.build.frame_of(owner, variables, return_type)?;
-        let params: Vec<&project_model::Variable> = variables
+        let call = self.frame_arguments(&frame, args)?;
+        self.emit(Instr::CallFunction {
+            pou: index,
+            instance,
+            inputs: call.inputs,
+            outputs: call.outputs,
+        });
+        self.store_outputs(call.stores)?;
+        Ok(call.result)
+    }
+
+    /// The transfers of a call of a function or method with frame `frame`: each argument
+    /// copied into its parameter (an address for a VAR_IN_OUT), each `=>` output and the
+    /// result copied out into temporaries.
+    pub(crate) fn frame_arguments(
+        &mut self,
+        frame: &Frame<'p>,
+        args: &[Argument],
+    ) -> Gen<FrameCall> {
+        let is_parameter = |v: &project_model::Variable| {
+            matches!(
+                v.section,
+                VarSection::VarInput | VarSection::VarInOut | VarSection::VarOutput
+            )
+        };
+        let params: Vec<&(&project_model::Variable, FrameVar)> =
+            frame.vars.iter().filter(|(v, _)| is_parameter(v)).collect();
+        // Frames keep declaration order within the parameters, so positions count inputs and
+        // in-outs as declared.
+        let positional: Vec<&&(&project_model::Variable, FrameVar)> = params
             .iter()
-            .filter(|v| {
-                matches!(
-                    v.section,
-                    VarSection::VarInput | VarSection::VarInOut | VarSection::VarOutput
-                )
-            })
+            .filter(|(v, _)| matches!(v.section, VarSection::VarInput | VarSection::VarInOut))
             .collect();
-        let positional: Vec<&&project_model::Variable> = params
-            .iter()
-            .filter(|v| matches!(v.section, VarSection::VarInput | VarSection::VarInOut))
-            .collect();
-        let mut inputs = Vec::new();
-        let mut outputs: Vec<(Transfer, Typed)> = Vec::new();
+        let mut call = FrameCall::default();
         for (position, arg) in args.iter().enumerate() {
             let Some(value) = &arg.value else { continue };
-            let param = match &arg.formal {
+            let (_, slot) = match &arg.formal {
                 Some(formal) => params
                     .iter()
-                    .find(|v| v.name.eq_ignore_ascii_case(formal))
+                    .find(|(v, _)| v.name.eq_ignore_ascii_case(formal))
                     .copied(),
-                None => positional.get(position).map(|v| **v),
+                None => positional.get(position).map(|p| **p),
             }
             .ok_or_else(|| format!("no parameter for argument {}", position + 1))?;
-            let slot = frame
-                .var(&param.name)
-                .cloned()
-                .ok_or("a parameter without a place")?;
+            let transfer = |caller| Transfer {
+                caller,
+                callee_offset: slot.offset,
+                size: slot.lay.size,
+            };
             if arg.output {
                 let target = self.place(value)?;
                 let temp = self.temp(slot.lay.size);
-                outputs.push((
-                    Transfer {
-                        caller: temp,
-                        callee_offset: slot.offset,
-                        size: slot.lay.size,
-                    },
-                    target,
-                ));
+                call.outputs.push(transfer(temp));
+                call.stores.push((temp, slot.ty.clone(), target));
                 continue;
             }
             let caller = if slot.by_ref {
@@ -437,45 +462,27 @@ impl<'p> BodyGen<'_, '_, 'p> {
             } else {
                 self.expr_as(value, &slot.ty)?
             };
-            inputs.push(Transfer {
-                caller,
-                callee_offset: slot.offset,
-                size: slot.lay.size,
+            call.inputs.push(transfer(caller));
+        }
+        if let Some(result) = &frame.result {
+            let temp = self.temp(result.lay.size);
+            call.outputs.push(Transfer {
+                caller: temp,
+                callee_offset: result.offset,
+                size: result.lay.size,
             });
+            call.result = Some((temp, result.ty.clone()));
         }
-        let result = match &frame.result {
-            Some(result) => {
-                let temp = self.temp(result.lay.size);
-                Some((
-                    Transfer {
-                        caller: temp,
-                        callee_offset: result.offset,
-                        size: result.lay.size,
-                    },
-                    result.ty.clone(),
-                ))
-            }
-            None => None,
-        };
-        let mut transfers_out: Vec<Transfer> = outputs.iter().map(|(t, _)| *t).collect();
-        if let Some((transfer, _)) = &result {
-            transfers_out.push(*transfer);
-        }
-        self.emit(Instr::CallFunction {
-            pou: index,
-            instance,
-            inputs,
-            outputs: transfers_out,
-        });
-        for (transfer, target) in outputs {
-            let value = self.convert(
-                transfer.caller,
-                &frame_type(&frame, transfer.callee_offset),
-                &target.ty,
-            )?;
+        Ok(call)
+    }
+
+    /// Stores the outputs a call copied into temporaries into their targets.
+    pub(crate) fn store_outputs(&mut self, stores: Vec<(Operand, Type, Typed)>) -> Gen<()> {
+        for (temp, ty, target) in stores {
+            let value = self.convert(temp, &ty, &target.ty)?;
             self.store(&target, value)?;
         }
-        Ok(result.map(|(transfer, ty)| (transfer.caller, ty)))
+        Ok(())
     }
 
     /// A call of an instance: inputs written into it, its body run, outputs read out.
@@ -592,7 +599,7 @@ impl<'p> BodyGen<'_, '_, 'p> {
                 .cloned()
                 .ok_or_else(|| format!("'{pou_name}' has no variable '{name}'"))?;
             if slot.by_ref && for_input {
-                let place = self.offset_place(typed.place, slot.offset)?;
+                let place = self.member_place(typed.place, slot.offset)?;
                 let lay = slot.lay.clone();
                 return Ok((
                     Typed {
@@ -605,7 +612,7 @@ impl<'p> BodyGen<'_, '_, 'p> {
             }
         }
         let (offset, lay) = self.build.layouts.member_of(&typed.lay, name)?;
-        let place = self.offset_place(typed.place, offset)?;
+        let place = self.member_place(typed.place, offset)?;
         let ty = match &typed.lay.shape {
             LayShape::Std(..) => Type::Elementary(super::init::elementary_of(match lay.shape {
                 LayShape::Scalar(e) => e,
@@ -637,32 +644,4 @@ impl<'p> BodyGen<'_, '_, 'p> {
         }
         Ok((Typed { place, ty, lay }, false))
     }
-
-    fn offset_place(&mut self, place: Place, offset: u32) -> Gen<Place> {
-        Ok(match place {
-            Place::Direct(op) => Place::Direct(super::expr::shifted(op, offset)),
-            Place::Indirect(pointer) if offset == 0 => Place::Indirect(pointer),
-            Place::Indirect(pointer) => {
-                let dst = self.temp(8);
-                self.emit(Instr::Offset {
-                    dst,
-                    base: pointer,
-                    offset,
-                });
-                Place::Indirect(dst)
-            }
-            Place::Bit { .. } => return Err("a bit has no members".to_owned()),
-        })
-    }
-}
-
-/// The type of the frame variable at `offset`.
-fn frame_type(frame: &super::body::Frame<'_>, offset: u32) -> Type {
-    frame
-        .vars
-        .iter()
-        .map(|(_, v)| v)
-        .chain(&frame.result)
-        .find(|v| v.offset == offset)
-        .map_or(Type::Error, |v| v.ty.clone())
 }

@@ -43,6 +43,18 @@ pub(crate) fn located_operand(located: program_image::Located) -> (Operand, Opti
     (op, bit)
 }
 
+/// The place of a located variable: its bytes in the area, or its bit for a BOOL.
+pub(crate) fn located_place(located: program_image::Located) -> Place {
+    match located_operand(located) {
+        (operand, Some(bit)) => Place::Bit {
+            operand,
+            ty: IE::Byte,
+            bit,
+        },
+        (operand, None) => Place::Direct(operand),
+    }
+}
+
 /// A literal's type made concrete by where it goes, or by IEC's defaults (DINT, LREAL).
 pub(crate) fn concrete(ty: &Type, want: Option<&Type>) -> Type {
     let wanted_number = want.filter(|w| {
@@ -205,16 +217,8 @@ impl BodyGen<'_, '_, '_> {
                 };
                 let located = located_of(&variable)
                     .ok_or_else(|| format!("'{text}' is not a direct address"))?;
-                let (operand, bit) = located_operand(located);
                 let ty = self.type_of(node);
-                let place = match bit {
-                    Some(bit) => Place::Bit {
-                        operand,
-                        ty: IE::Byte,
-                        bit,
-                    },
-                    None => Place::Direct(operand),
-                };
+                let place = located_place(located);
                 self.typed(place, ty)
             }
             _ => Err(format!(
@@ -262,15 +266,7 @@ impl BodyGen<'_, '_, '_> {
                         .and_then(|instance| instance.slot(&name).cloned())
                         .ok_or_else(|| format!("'{name}' has no storage"))?;
                     if let Some(located) = slot.located {
-                        let (operand, bit) = located_operand(located);
-                        let place = match bit {
-                            Some(bit) => Place::Bit {
-                                operand,
-                                ty: IE::Byte,
-                                bit,
-                            },
-                            None => Place::Direct(operand),
-                        };
+                        let place = located_place(located);
                         return self.typed(place, slot.ty);
                     }
                     return self.slot_place(
@@ -386,15 +382,7 @@ impl BodyGen<'_, '_, '_> {
                 .cloned()
                 .ok_or_else(|| format!("'{pou_name}' has no variable '{member_name}'"))?;
             if let Some(located) = slot.located {
-                let (operand, bit) = located_operand(located);
-                let place = match bit {
-                    Some(bit) => Place::Bit {
-                        operand,
-                        ty: IE::Byte,
-                        bit,
-                    },
-                    None => Place::Direct(operand),
-                };
+                let place = located_place(located);
                 return self.typed(place, slot.ty);
             }
             let place = self.member_place(base.place, slot.offset)?;
@@ -465,7 +453,8 @@ impl BodyGen<'_, '_, '_> {
             .ok_or_else(|| format!("'{name}' has no member '{member}'"))
     }
 
-    fn member_place(&mut self, base: Place, offset: u32) -> Gen<Place> {
+    /// A member `offset` bytes into `base`: a shifted operand, or a pointer moved on.
+    pub(crate) fn member_place(&mut self, base: Place, offset: u32) -> Gen<Place> {
         Ok(match base {
             Place::Direct(op) => Place::Direct(shifted(op, offset)),
             Place::Indirect(pointer) => {

@@ -2,7 +2,7 @@
 //! POU index of its function block); a method called through it is chosen by the class from a
 //! table of every function block that implements the interface.
 
-use program_image::{Elementary as IE, Instr, Operand, Transfer};
+use program_image::{Elementary as IE, Instr, Operand};
 use project_model::{Pou, PouKind};
 
 use super::body::{BodyGen, Gen};
@@ -160,68 +160,14 @@ impl<'p> BodyGen<'_, '_, 'p> {
             ));
         }
         let (value, _) = self.expr(base, None)?;
-        let params: Vec<_> = frame
-            .vars
-            .iter()
-            .filter(|(v, _)| v.section != project_model::VarSection::Var)
-            .collect();
-        let mut inputs = Vec::new();
-        let mut outputs = Vec::new();
-        let mut outputs_to = Vec::new();
-        for (position, arg) in args.iter().enumerate() {
-            let Some(node) = &arg.value else { continue };
-            let (var, slot) = match &arg.formal {
-                Some(formal) => params
-                    .iter()
-                    .find(|(v, _)| v.name.eq_ignore_ascii_case(formal)),
-                None => params.get(position),
-            }
-            .ok_or_else(|| format!("no parameter for argument {}", position + 1))?;
-            if arg.output {
-                let temp = self.temp(slot.lay.size);
-                outputs.push(Transfer {
-                    caller: temp,
-                    callee_offset: slot.offset,
-                    size: slot.lay.size,
-                });
-                outputs_to.push((temp, slot.ty.clone(), node.clone()));
-                continue;
-            }
-            let _ = var;
-            let caller = if slot.by_ref {
-                self.address_of(node)?
-            } else {
-                self.expr_as(node, &slot.ty)?
-            };
-            inputs.push(Transfer {
-                caller,
-                callee_offset: slot.offset,
-                size: slot.lay.size,
-            });
-        }
-        let result = match &frame.result {
-            Some(result) => {
-                let temp = self.temp(result.lay.size);
-                outputs.push(Transfer {
-                    caller: temp,
-                    callee_offset: result.offset,
-                    size: result.lay.size,
-                });
-                Some((temp, result.ty.clone()))
-            }
-            None => None,
-        };
+        let call = self.frame_arguments(&frame, args)?;
         self.emit(Instr::CallVirtual {
             table,
             interface: value,
-            inputs,
-            outputs,
+            inputs: call.inputs,
+            outputs: call.outputs,
         });
-        for (temp, ty, node) in outputs_to {
-            let target = self.place(&node)?;
-            let value = self.convert(temp, &ty, &target.ty)?;
-            self.store(&target, value)?;
-        }
-        Ok(result)
+        self.store_outputs(call.stores)?;
+        Ok(call.result)
     }
 }

@@ -667,7 +667,7 @@ fn place_located(
     path: &str,
     flags: u16,
 ) -> Place {
-    let (operand, bit) = super::expr::located_operand(located);
+    let (_, bit) = super::expr::located_operand(located);
     let byte = (located.bit_offset / 8) as u32;
     let index = area_index(located.region);
     let end = byte + if bit.is_some() { 1 } else { lay.size };
@@ -686,14 +686,7 @@ fn place_located(
         bit,
         flags: SymbolFlags(flags | SymbolFlags::LOCATED),
     });
-    match bit {
-        Some(bit) => Place::Bit {
-            operand,
-            ty: IE::Byte,
-            bit,
-        },
-        None => Place::Direct(operand),
-    }
+    super::expr::located_place(located)
 }
 
 /// The symbols of an instance's variables at `base` in the data region, recursively into
