@@ -182,7 +182,7 @@ impl Instance<'_, '_> {
         self.set_bool(o.of("Q"), q)?;
         self.set_time_ns(o.of("ET"), long, et)?;
         self.x.set::<i64>(start_at, start)?;
-        let state = u8::from(input) * PREVIOUS_IN | u8::from(running) * RUNNING;
+        let state = (u8::from(input) * PREVIOUS_IN) | (u8::from(running) * RUNNING);
         let at = self.addr(o.of("_STATE"));
         self.x.set::<u8>(at, state)
     }

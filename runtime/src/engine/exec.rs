@@ -151,11 +151,11 @@ impl<'a> Exec<'a> {
                 Ok(Flow::Next) => pc += 1,
                 Ok(Flow::Jump(target)) => {
                     let target = target as usize;
-                    if target <= pc {
-                        if let Err(fault) = self.tick() {
-                            self.fault_at.get_or_insert((index, pc));
-                            return Err(fault);
-                        }
+                    if target <= pc
+                        && let Err(fault) = self.tick()
+                    {
+                        self.fault_at.get_or_insert((index, pc));
+                        return Err(fault);
                     }
                     pc = target;
                 }

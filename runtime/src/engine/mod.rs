@@ -128,6 +128,8 @@ impl Engine {
 
     /// Runs one cycle of task `task` at task time `now_ns`: its programs in order. A fault
     /// stops the cycle where it happened and is returned with its place.
+    // A fault is rare and ends the task, so its record need not be boxed to keep `Ok` small.
+    #[allow(clippy::result_large_err)]
     pub fn run_cycle(&mut self, task: usize, now_ns: i64, cycle: u64) -> Result<(), FaultRecord> {
         let Some(info) = self.image.tasks.get(task) else {
             return Ok(());
