@@ -37,6 +37,38 @@ pub struct RetainStore {
     last: Option<(LayoutHash, Vec<u8>)>,
 }
 
+/// The retained bytes of an engine at one moment, with its layout hash: what a save writes.
+///
+/// Taking one is a copy of the retained ranges, cheap enough between two cycles; writing it can
+/// then happen on another thread.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct RetainSnapshot {
+    /// The layout hash of the engine's image.
+    pub layout_hash: LayoutHash,
+    /// The RETAIN ranges' bytes, then the PERSISTENT ranges' bytes.
+    pub bytes: Vec<u8>,
+}
+
+impl RetainSnapshot {
+    /// The retained values of `engine`, or `None` when its image has no retained variables.
+    pub fn of(engine: &Engine) -> Option<Self> {
+        let ranges = retained_ranges(engine.image());
+        if ranges.is_empty() {
+            return None;
+        }
+        let data = engine.region(Region::Data);
+        let mut bytes = Vec::new();
+        for (offset, length) in ranges {
+            let start = offset as usize;
+            bytes.extend_from_slice(data.get(start..start + length as usize).unwrap_or(&[]));
+        }
+        Some(Self {
+            layout_hash: layout_hash(engine.image()),
+            bytes,
+        })
+    }
+}
+
 /// What [`RetainStore::restore`] did.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum RetainRestore {
@@ -165,26 +197,24 @@ impl RetainStore {
     /// or restored; returns whether it wrote. An image without retained variables writes
     /// nothing, so it does not destroy data saved for another image.
     pub fn save(&mut self, engine: &Engine) -> Result<bool, RetainError> {
-        let ranges = retained_ranges(engine.image());
-        if ranges.is_empty() {
-            return Ok(false);
+        match RetainSnapshot::of(engine) {
+            Some(snapshot) => self.write(snapshot),
+            None => Ok(false),
         }
-        let hash = layout_hash(engine.image());
-        let data = engine.region(Region::Data);
-        let mut retained = Vec::new();
-        for (offset, length) in ranges {
-            let start = offset as usize;
-            retained.extend_from_slice(data.get(start..start + length as usize).unwrap_or(&[]));
-        }
+    }
+
+    /// Writes `snapshot` when it differs from what this store last saved or restored; returns
+    /// whether it wrote.
+    pub fn write(&mut self, snapshot: RetainSnapshot) -> Result<bool, RetainError> {
         if self
             .last
             .as_ref()
-            .is_some_and(|(last_hash, last)| *last_hash == hash && *last == retained)
+            .is_some_and(|(hash, bytes)| *hash == snapshot.layout_hash && *bytes == snapshot.bytes)
         {
             return Ok(false);
         }
-        self.write_atomically(&encode(&hash, &retained))?;
-        self.last = Some((hash, retained));
+        self.write_atomically(&encode(&snapshot.layout_hash, &snapshot.bytes))?;
+        self.last = Some((snapshot.layout_hash, snapshot.bytes));
         Ok(true)
     }
 

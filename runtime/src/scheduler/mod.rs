@@ -29,9 +29,12 @@
 //!
 //! With a data directory, RETAIN and PERSISTENT variables are restored when an image is loaded,
 //! saved when the scheduler stops or shuts down and, while it runs, every
-//! [`SchedulerOptions::retain_save_interval`] when they changed (see [`crate::retain`]).
+//! [`SchedulerOptions::retain_save_interval`] when they changed (see [`crate::retain`]). While it
+//! runs, the scheduler only copies the retained bytes between two cycles; a thread of its own
+//! writes them, so the disk never delays a task.
 
 mod plan;
+mod retain_writer;
 mod statistics;
 mod worker;
 

@@ -260,3 +260,35 @@ fn retained_values_survive_a_restart_and_resets_treat_them_by_kind() {
     second.reset(ResetKind::Origin).unwrap();
     assert!(!dir.path().join(crate::retain::RETAIN_FILE).exists());
 }
+
+#[test]
+fn retained_values_are_saved_periodically_while_running() {
+    let dir = tempfile::tempdir().unwrap();
+    let options = SchedulerOptions {
+        data_dir: Some(dir.path().to_owned()),
+        retain_save_interval: Duration::from_millis(10),
+        ..SchedulerOptions::default()
+    };
+    let retained = image(
+        &[TestTask::cyclic(MS, 1)],
+        &[(crate::test_images::count(0), 4)],
+    );
+    let (scheduler, _areas) = scheduler(options);
+    scheduler.load(retained.clone()).unwrap();
+    scheduler.start().unwrap();
+    let file = dir.path().join(crate::retain::RETAIN_FILE);
+    let start = Instant::now();
+    while !file.exists() {
+        assert!(start.elapsed() < PATIENCE, "no periodic save");
+        std::thread::sleep(Duration::from_millis(2));
+    }
+    assert_eq!(scheduler.status().state, SchedulerState::Running);
+    assert_eq!(scheduler.status().retain_problem, None);
+    // The file is whole while the scheduler keeps writing it.
+    let mut engine = Engine::new(retained).unwrap();
+    let restored = crate::retain::RetainStore::new(dir.path()).restore(&mut engine);
+    assert!(
+        matches!(restored, RetainRestore::Restored { .. }),
+        "{restored}"
+    );
+}

@@ -6,20 +6,21 @@ use std::time::{Duration, Instant};
 use program_image::{ImageHash, Region};
 
 use super::plan::{self, TaskPlan};
+use super::retain_writer::RetainWriter;
 use super::{
     Command, LoadReport, MAX_FAULTS, SchedulerError, SchedulerOptions, SchedulerState,
     SchedulerStatus,
 };
 use crate::areas::LocatedAreas;
 use crate::engine::{Engine, FaultKind, FaultRecord, ResetKind};
-use crate::retain::RetainStore;
+use crate::retain::{RetainSnapshot, RetainStore};
 
 /// Everything the scheduler's thread owns.
 pub(super) struct Worker {
     areas: Arc<Mutex<LocatedAreas>>,
     status: Arc<Mutex<SchedulerStatus>>,
     options: SchedulerOptions,
-    retain: Option<RetainStore>,
+    retain: Option<RetainWriter>,
     /// The origin of the scheduler's clock; task time is nanoseconds since then.
     epoch: Instant,
     program: Option<Program>,
@@ -47,10 +48,17 @@ impl Worker {
         status: Arc<Mutex<SchedulerStatus>>,
         options: SchedulerOptions,
     ) -> Self {
+        let report_status = Arc::clone(&status);
+        let report = Arc::new(move |problem: Option<String>| {
+            lock(&report_status).retain_problem = problem;
+        });
         Self {
             areas,
             status,
-            retain: options.data_dir.clone().map(RetainStore::new),
+            retain: options
+                .data_dir
+                .clone()
+                .map(|dir| RetainWriter::spawn(RetainStore::new(dir), report.clone())),
             options,
             epoch: Instant::now(),
             program: None,
@@ -230,7 +238,10 @@ impl Worker {
         // The old program's retained values go to the disk first, so an image with the same
         // retained layout takes them over.
         let saved = self.stop();
-        let retain = self.retain.as_mut().map(|store| store.restore(&mut engine));
+        let retain = self
+            .retain
+            .as_ref()
+            .map(|writer| writer.with_store(|store| store.restore(&mut engine)));
         {
             let mut areas = lock(&self.areas);
             areas.input = engine.region(Region::Input).to_vec();
@@ -272,8 +283,10 @@ impl Worker {
         let saved = match self.program.as_mut() {
             Some(program) => {
                 program.plans.iter_mut().for_each(TaskPlan::stop);
-                match (&mut self.retain, was_running) {
-                    (Some(store), true) => store.save(&program.engine).map(|_| ()),
+                match (&self.retain, was_running) {
+                    (Some(writer), true) => {
+                        writer.with_store(|store| store.save(&program.engine).map(|_| ()))
+                    }
                     _ => Ok(()),
                 }
             }
@@ -301,9 +314,9 @@ impl Worker {
             copy(program.engine.region(Region::Output), &mut areas.output);
             copy(program.engine.region(Region::Memory), &mut areas.memory);
         }
-        let retain = match (&mut self.retain, kind) {
-            (Some(store), ResetKind::Origin) => store.delete(),
-            (Some(store), _) => store.save(&program.engine).map(|_| ()),
+        let retain = match (&self.retain, kind) {
+            (Some(writer), ResetKind::Origin) => writer.with_store(RetainStore::delete),
+            (Some(writer), _) => writer.with_store(|store| store.save(&program.engine).map(|_| ())),
             (None, _) => Ok(()),
         };
         let identity = lock(&self.status).image;
@@ -312,16 +325,15 @@ impl Worker {
         retain.map_err(Into::into)
     }
 
-    /// Saves changed retained values while running; a failure is shown in the status.
+    /// Queues the retained values for the writer thread while running; it writes them when
+    /// they changed and shows a failure in the status.
     fn save_retain_periodically(&mut self) {
-        let (Some(store), Some(program)) = (&mut self.retain, &self.program) else {
+        let (Some(writer), Some(program)) = (&self.retain, &self.program) else {
             return;
         };
-        let problem = store
-            .save(&program.engine)
-            .err()
-            .map(|error| error.to_string());
-        lock(&self.status).retain_problem = problem;
+        if let Some(snapshot) = RetainSnapshot::of(&program.engine) {
+            writer.write_later(snapshot);
+        }
     }
 
     /// Publishes the whole status after a load or reset.
