@@ -73,6 +73,10 @@ pub struct SchedulerOptions {
     pub freewheeling_pause: Duration,
     /// The longest time between two looks at the triggers of event tasks.
     pub event_poll_interval: Duration,
+    /// How long before a planned start the scheduler stops sleeping and yields the processor
+    /// in a loop instead: less start jitter (a sleep wakes late by the system's timer slack and
+    /// wake-up latency) for that much busy time per cycle. Zero always sleeps.
+    pub spin_before_start: Duration,
 }
 
 /// A snapshot of the scheduler's state, statistics and faults.
@@ -127,13 +131,14 @@ pub struct Scheduler {
 
 impl Default for SchedulerOptions {
     /// No data directory; retained values saved every second; a freewheeling task pauses
-    /// 500 µs; event triggers looked at every millisecond at least.
+    /// 500 µs; event triggers looked at every millisecond at least; no spinning.
     fn default() -> Self {
         Self {
             data_dir: None,
             retain_save_interval: Duration::from_secs(1),
             freewheeling_pause: Duration::from_micros(500),
             event_poll_interval: Duration::from_millis(1),
+            spin_before_start: Duration::ZERO,
         }
     }
 }

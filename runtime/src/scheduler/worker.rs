@@ -136,7 +136,15 @@ impl Worker {
         {
             wake = wake.min(now + duration_ns(self.options.event_poll_interval));
         }
-        Some(Duration::from_nanos(wake.saturating_sub(now)))
+        let wait = wake.saturating_sub(now);
+        let spin = duration_ns(self.options.spin_before_start);
+        if wait <= spin {
+            // Close to the start: give the processor away without sleeping, so the wake-up
+            // latency of a sleep does not add to the jitter.
+            std::thread::yield_now();
+            return Some(Duration::ZERO);
+        }
+        Some(Duration::from_nanos(wait - spin))
     }
 
     /// Runs one cycle of `task` with the located areas locked, then plans its next one.
