@@ -132,12 +132,14 @@ struct Runtime {
 }
 
 impl Runtime {
-    /// Starts the binary on port 0 of 127.0.0.1 and reads the address it bound.
-    fn start(data_dir: &Path, image: Option<&Path>) -> Self {
+    /// Starts the binary on port 0 of 127.0.0.1 with `extra` arguments and reads the address
+    /// it bound.
+    fn start(data_dir: &Path, image: Option<&Path>, extra: &[&str]) -> Self {
         let mut command = Command::new(env!("CARGO_BIN_EXE_rivet-runtime"));
         command
             .args(["--listen", "127.0.0.1:0", "--data-dir"])
             .arg(data_dir)
+            .args(extra)
             .stdout(Stdio::piped())
             .stderr(Stdio::piped());
         if let Some(image) = image {
@@ -197,9 +199,9 @@ impl Runtime {
         }
     }
 
-    /// Sends SIGTERM and waits for a successful exit.
+    /// Sends SIGTERM, waits for a successful exit, and returns all it said on standard error.
     #[track_caller]
-    fn terminate(mut self) {
+    fn terminate(mut self) -> Vec<String> {
         let pid = self.child.id().to_string();
         let sent = Command::new("kill").args(["-TERM", &pid]).status().unwrap();
         assert!(sent.success());
@@ -213,6 +215,7 @@ impl Runtime {
         };
         assert!(status.success(), "rivet-runtime exited with {status}");
         self.wait_for_message("terminated");
+        std::mem::take(&mut self.said)
     }
 }
 
@@ -316,7 +319,7 @@ async fn run(program: String, args: Vec<String>) -> String {
 async fn the_binary_runs_its_image_for_tokio_modbus_mbpoll_and_pymodbus() {
     let dir = tempfile::tempdir().unwrap();
     let image = write_image(dir.path(), &image().encode());
-    let mut runtime = Runtime::start(&dir.path().join("data"), Some(&image));
+    let mut runtime = Runtime::start(&dir.path().join("data"), Some(&image), &[]);
     runtime.wait_for_message("running");
     let mut client = connect(runtime.address).await;
 
@@ -398,7 +401,7 @@ async fn a_retain_variable_survives_a_restart_of_the_binary() {
     let image = write_image(dir.path(), &image().encode());
     let total = |words: &[u16]| (u32::from(words[0]) << 16) | u32::from(words[1]);
 
-    let mut first = Runtime::start(&data, Some(&image));
+    let mut first = Runtime::start(&data, Some(&image), &[]);
     first.wait_for_message("no retain data saved");
     let mut client = connect(first.address).await;
     client
@@ -430,7 +433,7 @@ async fn a_retain_variable_survives_a_restart_of_the_binary() {
     drop(client);
     first.terminate();
 
-    let mut second = Runtime::start(&data, Some(&image));
+    let mut second = Runtime::start(&data, Some(&image), &[]);
     second.wait_for_message("restored RETAIN and PERSISTENT variables");
     let mut client = connect(second.address).await;
     // %MD1 shows the total from the first cycle on.
@@ -462,7 +465,7 @@ async fn a_damaged_image_is_refused_with_the_reason_and_modbus_is_still_served()
     ];
     for (bytes, reason) in cases {
         let image = write_image(dir.path(), &bytes);
-        let mut runtime = Runtime::start(&dir.path().join("data"), Some(&image));
+        let mut runtime = Runtime::start(&dir.path().join("data"), Some(&image), &[]);
         let message = runtime.wait_for_message("refusing the program image");
         assert!(message.contains(reason), "{message}");
         assert!(message.contains("program.rimg"), "{message}");
@@ -485,4 +488,25 @@ fn a_missing_data_dir_argument_is_refused_by_the_argument_parser() {
     assert!(!output.status.success());
     let said = String::from_utf8_lossy(&output.stderr);
     assert!(said.contains("--data-dir"), "{said}");
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_runtime_started_stopped_loads_its_image_and_runs_nothing() {
+    let dir = tempfile::tempdir().unwrap();
+    let image = write_image(dir.path(), &image().encode());
+    let mut runtime = Runtime::start(&dir.path().join("data"), Some(&image), &["--stopped"]);
+    runtime.wait_for_message("loaded");
+    let mut client = connect(runtime.address).await;
+    // The image's areas exist, and no cycle changes them.
+    for _ in 0..10 {
+        let counter = client.read_holding_registers(COUNTER, 1).await.unwrap();
+        assert_eq!(counter, Ok(vec![0]));
+        tokio::time::sleep(Duration::from_millis(5)).await;
+    }
+    drop(client);
+    let said = runtime.terminate();
+    assert!(
+        !said.iter().any(|line| line.ends_with(": running")),
+        "{said:#?}"
+    );
 }

@@ -292,3 +292,31 @@ fn retained_values_are_saved_periodically_while_running() {
         "{restored}"
     );
 }
+
+#[test]
+fn cycles_that_finish_past_the_watchdog_time_fault_the_task_at_the_sensitivity() {
+    let (scheduler, _areas) = scheduler(SchedulerOptions::default());
+    // Every cycle takes longer than 1 ns, and without a loop the engine never looks at its
+    // clock: only the scheduler's count of overruns can stop the task.
+    let watched = TestTask {
+        watchdog_ns: 1,
+        watchdog_sensitivity: 3,
+        ..TestTask::cyclic(MS, 0)
+    };
+    scheduler.load(image(&[watched], &[])).unwrap();
+    scheduler.start().unwrap();
+    let status = wait_for(&scheduler, "the watchdog", |status| {
+        !status.faults.is_empty()
+    });
+    let fault = &status.faults[0];
+    assert_eq!(
+        fault.kind,
+        crate::engine::FaultKind::Watchdog { limit_us: 0 }
+    );
+    assert_eq!((fault.cycle, status.tasks[0].cycles), (2, 3));
+    assert_eq!(status.tasks[0].consecutive_overruns, 3);
+    assert_eq!(
+        fault.to_string(),
+        "task 'Task0' stopped: watchdog: the cycle ran longer than 0 µs in Program0 (instruction 0)"
+    );
+}

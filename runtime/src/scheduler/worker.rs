@@ -1,5 +1,6 @@
 //! The scheduler's thread: commands from the handle, and task cycles when they are due.
 
+use std::panic::AssertUnwindSafe;
 use std::sync::{Arc, Mutex, MutexGuard, PoisonError, mpsc};
 use std::time::{Duration, Instant};
 
@@ -161,7 +162,7 @@ impl Worker {
         copy(&areas.input, program.engine.region_mut(Region::Input));
         copy(&areas.output, program.engine.region_mut(Region::Output));
         copy(&areas.memory, program.engine.region_mut(Region::Memory));
-        let result = program.engine.run_cycle(task, started as i64, cycle);
+        let result = run_guarded(&mut program.engine, task, started, cycle);
         copy(program.engine.region(Region::Output), &mut areas.output);
         copy(program.engine.region(Region::Memory), &mut areas.memory);
         let ended = self.epoch.elapsed().as_nanos() as u64;
@@ -172,7 +173,11 @@ impl Worker {
         let overrun = plan.finish(planned, started, ended, pause);
         let fault = match result {
             Err(fault) => Some(fault),
-            Ok(()) if overrun => Some(overrun_fault(&program.engine, task, cycle)),
+            Ok(()) if overrun => {
+                let limit_us = program.engine.image().tasks[task].watchdog_ns / 1000;
+                let kind = FaultKind::Watchdog { limit_us };
+                Some(task_fault(&program.engine, task, cycle, kind))
+            }
             Ok(()) => None,
         };
         if fault.is_some() {
@@ -419,16 +424,45 @@ fn trigger_is_set(engine: &Engine, areas: &LocatedAreas, task: usize) -> bool {
     }
 }
 
-/// The fault of a task whose cycles overran the watchdog time too often in a row; it names the
-/// task's first program, as the overrun belongs to no single instruction.
-fn overrun_fault(engine: &Engine, task: usize, cycle: u64) -> FaultRecord {
+/// Runs one cycle of `task`. A panic of the engine is a bug of the runtime, not of the program:
+/// it faults the task instead of ending the process (and poisoning the areas, which are locked
+/// during the cycle, for the Modbus server).
+// As for `Engine::run_cycle`: a fault is rare and ends the task, so its record is not boxed.
+#[allow(clippy::result_large_err)]
+fn run_guarded(
+    engine: &mut Engine,
+    task: usize,
+    now_ns: u64,
+    cycle: u64,
+) -> Result<(), FaultRecord> {
+    match std::panic::catch_unwind(AssertUnwindSafe(|| {
+        engine.run_cycle(task, now_ns as i64, cycle)
+    })) {
+        Ok(result) => result,
+        Err(panic) => {
+            let message = panic
+                .downcast_ref::<&str>()
+                .map(|text| (*text).to_owned())
+                .or_else(|| panic.downcast_ref::<String>().cloned())
+                .unwrap_or_else(|| "the engine panicked".to_owned());
+            Err(task_fault(
+                engine,
+                task,
+                cycle,
+                FaultKind::Internal(message),
+            ))
+        }
+    }
+}
+
+/// A fault of task `task` that belongs to no single instruction (too many watchdog overruns
+/// in a row, a failure of the engine); it names the task's first program.
+fn task_fault(engine: &Engine, task: usize, cycle: u64, kind: FaultKind) -> FaultRecord {
     let image = engine.image();
     let info = image.tasks.get(task);
     FaultRecord {
         task: info.map(|task| task.name.clone()).unwrap_or_default(),
-        kind: FaultKind::Watchdog {
-            limit_us: info.map_or(0, |task| task.watchdog_ns / 1000),
-        },
+        kind,
         pou: info
             .and_then(|task| task.programs.first())
             .and_then(|call| image.pous.get(call.pou as usize))
