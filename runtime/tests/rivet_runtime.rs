@@ -11,6 +11,7 @@
 //! counter AT %QW1 := counter + 1;
 //! IF count AT %MX0.1 THEN total := total + 1; END_IF   (total : DINT RETAIN)
 //! shown AT %MD1 := total;
+//! quotient := 1 / (divisor AT %MW4 + 1);   (a division by zero when %MW4 is -1)
 //! ```
 
 #![allow(clippy::unwrap_used, clippy::expect_used)]
@@ -37,6 +38,8 @@ const COUNTER: u16 = 1;
 const FLAGS: u16 = 1024;
 /// Holding registers of `%MD1`, high word first.
 const TOTAL: u16 = 2048 + 2;
+/// Holding register of `%MW4`.
+const DIVISOR: u16 = 1024 + 4;
 
 fn image() -> ProgramImage {
     let code = vec![
@@ -81,6 +84,20 @@ fn image() -> ProgramImage {
             dst: Operand::Memory(4),
             src: Operand::Global(4),
         },
+        Instr::Binary {
+            op: BinaryOp::Add,
+            ty: Elementary::Int,
+            dst: Operand::Global(2),
+            a: Operand::Memory(8),
+            b: Operand::Const(0),
+        },
+        Instr::Binary {
+            op: BinaryOp::Div,
+            ty: Elementary::Int,
+            dst: Operand::Global(2),
+            a: Operand::Const(0),
+            b: Operand::Global(2),
+        },
         Instr::Return,
     ];
     ProgramImage {
@@ -88,7 +105,7 @@ fn image() -> ProgramImage {
             data_size: 8,
             input_size: 2,
             output_size: 4,
-            memory_size: 8,
+            memory_size: 10,
             stack_size: 64,
         },
         pous: vec![Pou {
@@ -509,4 +526,37 @@ async fn a_runtime_started_stopped_loads_its_image_and_runs_nothing() {
         !said.iter().any(|line| line.ends_with(": running")),
         "{said:#?}"
     );
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_fault_is_reported_on_standard_error_and_modbus_goes_on() {
+    let dir = tempfile::tempdir().unwrap();
+    let image = write_image(dir.path(), &image().encode());
+    let mut runtime = Runtime::start(&dir.path().join("data"), Some(&image), &[]);
+    runtime.wait_for_message("running");
+    let mut client = connect(runtime.address).await;
+    client
+        .write_single_register(DIVISOR, 0xffff)
+        .await
+        .unwrap()
+        .unwrap();
+    let message = runtime.wait_for_message("stopped");
+    assert_eq!(
+        message,
+        "rivet-runtime: task 'MainTask' stopped: division by zero in Main (instruction 8)"
+    );
+    let stood = client
+        .read_holding_registers(COUNTER, 1)
+        .await
+        .unwrap()
+        .unwrap();
+    tokio::time::sleep(Duration::from_millis(20)).await;
+    let now = client
+        .read_holding_registers(COUNTER, 1)
+        .await
+        .unwrap()
+        .unwrap();
+    assert_eq!(now, stood, "the faulted task went on counting");
+    drop(client);
+    runtime.terminate();
 }

@@ -103,11 +103,14 @@ async fn run(arguments: Arguments) -> anyhow::Result<()> {
                 break Ok(());
             }
             _ = fault_check.tick() => {
-                let faults = scheduler.status().faults;
-                for fault in faults.iter().skip(reported_faults) {
+                let status = scheduler.status();
+                let new = status.faults_total - reported_faults;
+                let kept = status.faults.len();
+                let unseen = usize::try_from(new).unwrap_or(usize::MAX).min(kept);
+                for fault in &status.faults[kept - unseen..] {
                     eprintln!("rivet-runtime: {fault}");
                 }
-                reported_faults = faults.len();
+                reported_faults = status.faults_total;
             }
         }
     };

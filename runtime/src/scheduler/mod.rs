@@ -90,6 +90,8 @@ pub struct SchedulerStatus {
     pub tasks: Vec<TaskStatistics>,
     /// The last faults, oldest first (at most [`MAX_FAULTS`]); kept over resets and loads.
     pub faults: Vec<FaultRecord>,
+    /// How many faults there have been since the scheduler started, older ones included.
+    pub faults_total: u64,
     /// Why the last periodic save of retained values failed; `None` once one succeeds.
     pub retain_problem: Option<String>,
 }
@@ -155,6 +157,7 @@ impl Scheduler {
             image: None,
             tasks: Vec::new(),
             faults: Vec::new(),
+            faults_total: 0,
             retain_problem: None,
         }));
         let worker = worker::Worker::new(areas, Arc::clone(&status), options);

@@ -192,6 +192,7 @@ impl Worker {
                 status.faults.remove(0);
             }
             status.faults.push(fault);
+            status.faults_total += 1;
             status.state = SchedulerState::Faulted;
         }
     }
