@@ -29,6 +29,10 @@ use program_image::{
 };
 use tokio_modbus::client::{Context, Reader, Writer};
 
+mod peers;
+
+use peers::{python_with_pymodbus, required_program, run};
+
 /// How long any one step may take before the test gives up on the runtime.
 const PATIENCE: Duration = Duration::from_secs(10);
 
@@ -281,55 +285,6 @@ async fn read_until(
         );
         tokio::time::sleep(Duration::from_millis(5)).await;
     }
-}
-
-/// The path of a program that a test needs, or a failure that says how to get it (as in
-/// `modbus_server.rs`).
-#[track_caller]
-fn required_program(name: &str) -> String {
-    let found = Command::new("sh")
-        .args(["-c", &format!("command -v {name}")])
-        .output()
-        .unwrap();
-    assert!(
-        found.status.success(),
-        "{name} is not installed: run scripts/test.sh, which installs mbpoll and python3-pymodbus"
-    );
-    String::from_utf8(found.stdout).unwrap().trim().to_owned()
-}
-
-/// A Python interpreter that can import pymodbus (as in `modbus_server.rs`).
-#[track_caller]
-fn python_with_pymodbus() -> String {
-    let candidates = std::env::var("RIVET_PYTHON")
-        .into_iter()
-        .chain(["python3".to_owned(), "/usr/bin/python3".to_owned()]);
-    for python in candidates {
-        let imports = Command::new(&python)
-            .args(["-c", "import pymodbus"])
-            .output();
-        if imports.is_ok_and(|output| output.status.success()) {
-            return python;
-        }
-    }
-    panic!("no python3 can import pymodbus: run scripts/test.sh, which installs python3-pymodbus");
-}
-
-/// Runs a program to its end off the async workers and returns its standard output.
-async fn run(program: String, args: Vec<String>) -> String {
-    let command_line = format!("{program} {}", args.join(" "));
-    let output =
-        tokio::task::spawn_blocking(move || Command::new(&program).args(&args).output().unwrap())
-            .await
-            .unwrap();
-    let stdout = String::from_utf8_lossy(&output.stdout).into_owned();
-    assert!(
-        output.status.success(),
-        "{command_line} failed with {}:\n{stdout}\n{}",
-        output.status,
-        String::from_utf8_lossy(&output.stderr)
-    );
-    stdout
 }
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
