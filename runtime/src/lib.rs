@@ -12,12 +12,20 @@
 //! - [`simulation`]: N cycles on a simulated clock, as `rivet simulate` runs them.
 //! - [`areas`]: the located areas `%I`, `%Q` and `%M` as bytes in the CODESYS layout, shared by
 //!   the engine and the Modbus server behind one mutex.
+//! - [`scheduler`]: the real-time scheduler that runs an engine's tasks on their own thread,
+//!   with priorities, statistics and the watchdog, behind a handle.
+//! - [`retain`]: RETAIN and PERSISTENT variables saved in the data directory.
 //! - [`modbus`]: the Modbus TCP server that maps the standard function codes onto the located
 //!   areas (the default map is `docs/modbus-map.md`) and leaves a hook for the online services.
 
 pub mod areas;
 pub mod engine;
 pub mod modbus;
+pub mod retain;
+pub mod scheduler;
 pub mod simulation;
 pub mod stdlib;
 pub mod value;
+
+#[cfg(test)]
+mod test_images;

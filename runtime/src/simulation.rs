@@ -104,7 +104,7 @@ impl Simulation {
             for task in due {
                 let cycle = self.cycles[task];
                 if let Err(fault) = self.engine.run_cycle(task, now, cycle) {
-                    self.faults.push(*fault);
+                    self.faults.push(fault);
                 }
                 self.cycles[task] += 1;
                 self.next_due_ns[task] = now + self.interval_ns(task) as i64;

@@ -36,6 +36,9 @@ pub enum FaultKind {
     /// A memory access outside the engine's memory; verification should make this impossible.
     #[error("memory access outside the program's memory")]
     Memory,
+    /// The engine itself failed (a bug in the runtime, caught so that the process goes on).
+    #[error("internal error of the runtime: {0}")]
+    Internal(String),
 }
 
 /// A fault with the place it happened.

@@ -128,12 +128,9 @@ impl Engine {
 
     /// Runs one cycle of task `task` at task time `now_ns`: its programs in order. A fault
     /// stops the cycle where it happened and is returned with its place.
-    pub fn run_cycle(
-        &mut self,
-        task: usize,
-        now_ns: i64,
-        cycle: u64,
-    ) -> Result<(), Box<FaultRecord>> {
+    // A fault is rare and ends the task, so its record need not be boxed to keep `Ok` small.
+    #[allow(clippy::result_large_err)]
+    pub fn run_cycle(&mut self, task: usize, now_ns: i64, cycle: u64) -> Result<(), FaultRecord> {
         let Some(info) = self.image.tasks.get(task) else {
             return Ok(());
         };
@@ -162,13 +159,7 @@ impl Engine {
             let instance = self.regions.data + call.instance_offset as usize;
             if let Err(kind) = exec.call_block(call.pou as usize, instance) {
                 let (pou, instruction) = exec.fault_at.unwrap_or((call.pou as usize, 0));
-                return Err(Box::new(self.fault_record(
-                    task,
-                    kind,
-                    pou,
-                    instruction,
-                    cycle,
-                )));
+                return Err(self.fault_record(task, kind, pou, instruction, cycle));
             }
         }
         Ok(())

@@ -1,0 +1,179 @@
+//! `rivet-runtime`: the Rivet soft PLC as a process.
+//!
+//! It loads a program image, runs its tasks on the scheduler, serves the located areas over
+//! Modbus TCP, keeps RETAIN and PERSISTENT variables in its data directory, and saves them when
+//! it is interrupted or terminated. The first line on standard output is the address it
+//! listens on (`listening on 127.0.0.1:5020`), so a caller that asked for port 0 learns the
+//! port; everything else it says goes to standard error.
+
+// A command-line program talks to its operator through standard output and standard error.
+#![allow(clippy::print_stdout, clippy::print_stderr)]
+
+use std::net::SocketAddr;
+use std::path::{Path, PathBuf};
+use std::sync::{Arc, Mutex};
+use std::time::Duration;
+
+use anyhow::Context;
+use clap::Parser;
+use program_image::ProgramImage;
+use runtime::areas::LocatedAreas;
+use runtime::modbus::{ModbusMap, ServerOptions, serve};
+use runtime::scheduler::{Scheduler, SchedulerOptions};
+use tokio::net::TcpListener;
+
+/// The Rivet soft PLC: runs a program image and serves Modbus TCP.
+#[derive(Debug, Parser)]
+#[command(name = "rivet-runtime", version)]
+struct Arguments {
+    /// The address to serve Modbus TCP on; port 0 picks a free port.
+    #[arg(long, default_value = "127.0.0.1:5020")]
+    listen: SocketAddr,
+    /// The directory for RETAIN and PERSISTENT variables; created if missing.
+    #[arg(long)]
+    data_dir: PathBuf,
+    /// The program image to run (written by `rivet build`).
+    #[arg(long)]
+    image: Option<PathBuf>,
+    /// Load the image but do not start its tasks.
+    #[arg(long)]
+    stopped: bool,
+}
+
+/// How often the runtime looks for new faults to report.
+const FAULT_REPORT_INTERVAL: Duration = Duration::from_millis(100);
+
+fn main() -> anyhow::Result<()> {
+    let arguments = Arguments::parse();
+    tokio::runtime::Builder::new_current_thread()
+        .enable_all()
+        .build()
+        .context("cannot start the async runtime")?
+        .block_on(run(arguments))
+}
+
+async fn run(arguments: Arguments) -> anyhow::Result<()> {
+    std::fs::create_dir_all(&arguments.data_dir).with_context(|| {
+        format!(
+            "cannot create the data directory {}",
+            arguments.data_dir.display()
+        )
+    })?;
+    let listener = TcpListener::bind(arguments.listen)
+        .await
+        .with_context(|| format!("cannot listen on {}", arguments.listen))?;
+    let address = listener
+        .local_addr()
+        .context("cannot read the bound address")?;
+    println!("listening on {address}");
+
+    let areas = Arc::new(Mutex::new(LocatedAreas::default()));
+    let options = SchedulerOptions {
+        data_dir: Some(arguments.data_dir.clone()),
+        ..SchedulerOptions::default()
+    };
+    let scheduler = Scheduler::spawn(Arc::clone(&areas), options)?;
+    let loaded = match &arguments.image {
+        Some(path) => load(&scheduler, path),
+        None => {
+            eprintln!("rivet-runtime: no program image given; serving Modbus without a program");
+            None
+        }
+    };
+    // The image's own Modbus map, or the default map without a program.
+    let map = match &loaded {
+        Some(map) => map.clone(),
+        None => ModbusMap::default(),
+    };
+    let loaded = loaded.is_some();
+    if loaded && !arguments.stopped {
+        scheduler.start()?;
+        eprintln!("rivet-runtime: running");
+    }
+
+    let server = serve(listener, areas, Arc::new(map), ServerOptions::default());
+    let mut reported_faults = 0;
+    let mut fault_check = tokio::time::interval(FAULT_REPORT_INTERVAL);
+    let mut ended = std::pin::pin!(end_signal());
+    let mut server = std::pin::pin!(server);
+    let outcome = loop {
+        tokio::select! {
+            served = &mut server => break served.context("the Modbus server stopped"),
+            signal = &mut ended => {
+                eprintln!("rivet-runtime: {signal}; stopping");
+                break Ok(());
+            }
+            _ = fault_check.tick() => {
+                let status = scheduler.status();
+                let new = status.faults_total - reported_faults;
+                let kept = status.faults.len();
+                let unseen = usize::try_from(new).unwrap_or(usize::MAX).min(kept);
+                for fault in &status.faults[kept - unseen..] {
+                    eprintln!("rivet-runtime: {fault}");
+                }
+                reported_faults = status.faults_total;
+            }
+        }
+    };
+    scheduler
+        .shutdown()
+        .context("cannot save the retained values")?;
+    outcome
+}
+
+/// Loads the image at `path` and gives the Modbus map it asks for; a file that cannot be read
+/// or is not a valid image is refused with the reason, and the runtime goes on without a
+/// program.
+fn load(scheduler: &Scheduler, path: &Path) -> Option<ModbusMap> {
+    let refuse = |reason: &dyn std::fmt::Display| {
+        eprintln!(
+            "rivet-runtime: refusing the program image {}: {reason}; serving Modbus without a program",
+            path.display()
+        );
+        None
+    };
+    let bytes = match std::fs::read(path) {
+        Ok(bytes) => bytes,
+        Err(error) => return refuse(&error),
+    };
+    let image = match ProgramImage::decode(&bytes) {
+        Ok(image) => image,
+        Err(error) => return refuse(&error),
+    };
+    let map = match ModbusMap::for_image(&image) {
+        Ok(map) => map,
+        Err(error) => return refuse(&error),
+    };
+    match scheduler.load(image) {
+        Ok(report) => {
+            eprintln!("rivet-runtime: loaded {}", path.display());
+            if let Some(retain) = report.retain {
+                eprintln!("rivet-runtime: {retain}");
+            }
+            Some(map)
+        }
+        Err(error) => refuse(&error),
+    }
+}
+
+/// Waits for SIGINT (Ctrl+C) or, on Unix, SIGTERM, and names it.
+async fn end_signal() -> &'static str {
+    let interrupted = async {
+        // Without a handler there is no interruption to wait for.
+        if tokio::signal::ctrl_c().await.is_err() {
+            std::future::pending::<()>().await;
+        }
+    };
+    #[cfg(unix)]
+    {
+        use tokio::signal::unix::{SignalKind, signal};
+        if let Ok(mut terminate) = signal(SignalKind::terminate()) {
+            return tokio::select! {
+                () = interrupted => "interrupted",
+                _ = terminate.recv() => "terminated",
+            };
+        }
+    }
+    interrupted.await;
+    "interrupted"
+}

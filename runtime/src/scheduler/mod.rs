@@ -1,0 +1,262 @@
+//! The real-time scheduler: runs an engine's tasks on their own thread, as the task table says.
+//!
+//! [`Scheduler`] is a handle on that thread. The thread owns the [`Engine`] and runs one task
+//! cycle at a time:
+//!
+//! - a cyclic task every `interval_ns`, keeping its phase (a cycle that overruns its interval
+//!   makes the next start at once, and the cycles missed meanwhile are dropped);
+//! - a freewheeling task again [`SchedulerOptions::freewheeling_pause`] after each cycle, so
+//!   that tasks of lower priority get their turn;
+//! - an event task once per rising edge of its BOOL trigger, which the scheduler looks at before
+//!   each decision and at least every [`SchedulerOptions::event_poll_interval`] (an edge that
+//!   comes and goes between two looks is missed).
+//!
+//! When several tasks are due, the one with the highest priority (0 highest, 31 lowest) runs
+//! first, then the one planned earliest. There is no preemption: a cycle, once started, runs to
+//! its end (or its watchdog abort) before any other task starts, so a long cycle of a
+//! low-priority task delays a high-priority one by up to its own length, which shows in that
+//! task's jitter.
+//!
+//! A cycle copies `%I`, `%Q` and `%M` from the shared [`LocatedAreas`] into the engine, runs the
+//! task's programs, and copies `%Q` and `%M` back, all with the areas locked, so a Modbus request
+//! always sees them between two cycles.
+//!
+//! The watchdog has two parts. The engine aborts a cycle that runs longer than `watchdog_ns ×
+//! watchdog_sensitivity`; the scheduler counts cycles that ran longer than `watchdog_ns` but
+//! finished, and faults the task at `watchdog_sensitivity` of them in a row. A faulted task runs
+//! no more until a reset; the other tasks go on and the scheduler's state is
+//! [`SchedulerState::Faulted`].
+//!
+//! With a data directory, RETAIN and PERSISTENT variables are restored when an image is loaded,
+//! saved when the scheduler stops or shuts down and, while it runs, every
+//! [`SchedulerOptions::retain_save_interval`] when they changed (see [`crate::retain`]). While it
+//! runs, the scheduler only copies the retained bytes between two cycles; a thread of its own
+//! writes them, so the disk never delays a task.
+
+mod plan;
+mod retain_writer;
+mod statistics;
+mod worker;
+
+use std::path::PathBuf;
+use std::sync::{Arc, Mutex, PoisonError, mpsc};
+use std::thread::JoinHandle;
+use std::time::Duration;
+
+use program_image::{ImageHash, ProgramImage};
+
+use crate::areas::LocatedAreas;
+use crate::engine::{Engine, FaultRecord, LoadError, ResetKind};
+use crate::retain::{RetainError, RetainRestore};
+
+pub use statistics::TaskStatistics;
+
+/// What the scheduler is doing.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SchedulerState {
+    /// No task runs (no program, or stopped).
+    Stopped,
+    /// Every task runs.
+    Running,
+    /// Running, but at least one task has faulted and runs no more.
+    Faulted,
+}
+
+/// How the scheduler behaves; fixed for its life.
+#[derive(Clone, Debug)]
+pub struct SchedulerOptions {
+    /// Where RETAIN and PERSISTENT variables are saved; `None` keeps them in memory only.
+    pub data_dir: Option<PathBuf>,
+    /// How often changed retained values are saved while running.
+    pub retain_save_interval: Duration,
+    /// The pause after each cycle of a freewheeling task.
+    pub freewheeling_pause: Duration,
+    /// The longest time between two looks at the triggers of event tasks.
+    pub event_poll_interval: Duration,
+    /// How long before a planned start the scheduler stops sleeping and yields the processor
+    /// in a loop instead: less start jitter (a sleep wakes late by the system's timer slack and
+    /// wake-up latency) for that much busy time per cycle. Zero always sleeps.
+    pub spin_before_start: Duration,
+}
+
+/// A snapshot of the scheduler's state, statistics and faults.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct SchedulerStatus {
+    /// Stopped, running or faulted.
+    pub state: SchedulerState,
+    /// The identity hash of the loaded image, if any.
+    pub image: Option<ImageHash>,
+    /// The statistics of each task, in task-table order.
+    pub tasks: Vec<TaskStatistics>,
+    /// The last faults, oldest first (at most [`MAX_FAULTS`]); kept over resets and loads.
+    pub faults: Vec<FaultRecord>,
+    /// How many faults there have been since the scheduler started, older ones included.
+    pub faults_total: u64,
+    /// Why the last periodic save of retained values failed; `None` once one succeeds.
+    pub retain_problem: Option<String>,
+}
+
+/// How many fault records the status keeps.
+pub const MAX_FAULTS: usize = 64;
+
+/// What loading an image did besides loading it.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct LoadReport {
+    /// What became of the saved retained values; `None` without a data directory.
+    pub retain: Option<RetainRestore>,
+}
+
+/// Why the scheduler could not do what it was asked.
+#[derive(Debug, thiserror::Error)]
+pub enum SchedulerError {
+    /// Starting without a program.
+    #[error("no program is loaded")]
+    NoProgram,
+    /// The image cannot be loaded; the scheduler keeps what it had.
+    #[error("the program image cannot be loaded: {0}")]
+    Load(#[from] LoadError),
+    /// Retained values could not be saved or deleted; the rest of the command was done.
+    #[error(transparent)]
+    Retain(#[from] RetainError),
+    /// The scheduler's thread could not be started or has ended.
+    #[error("the scheduler thread is not running")]
+    Gone,
+}
+
+/// A handle on the scheduler's thread. Dropping it stops the tasks, saves retained values and
+/// ends the thread.
+pub struct Scheduler {
+    commands: mpsc::Sender<Command>,
+    status: Arc<Mutex<SchedulerStatus>>,
+    thread: Option<JoinHandle<()>>,
+}
+
+impl Default for SchedulerOptions {
+    /// No data directory; retained values saved every second; a freewheeling task pauses
+    /// 500 µs; event triggers looked at every millisecond at least; no spinning.
+    fn default() -> Self {
+        Self {
+            data_dir: None,
+            retain_save_interval: Duration::from_secs(1),
+            freewheeling_pause: Duration::from_micros(500),
+            event_poll_interval: Duration::from_millis(1),
+            spin_before_start: Duration::ZERO,
+        }
+    }
+}
+
+impl Scheduler {
+    /// Starts the scheduler's thread, stopped and without a program, on `areas`.
+    pub fn spawn(
+        areas: Arc<Mutex<LocatedAreas>>,
+        options: SchedulerOptions,
+    ) -> Result<Self, SchedulerError> {
+        let (commands, received) = mpsc::channel();
+        let status = Arc::new(Mutex::new(SchedulerStatus {
+            state: SchedulerState::Stopped,
+            image: None,
+            tasks: Vec::new(),
+            faults: Vec::new(),
+            faults_total: 0,
+            retain_problem: None,
+        }));
+        let worker = worker::Worker::new(areas, Arc::clone(&status), options);
+        let thread = std::thread::Builder::new()
+            .name("rivet-scheduler".to_owned())
+            .spawn(move || worker.run(&received))
+            .map_err(|_| SchedulerError::Gone)?;
+        Ok(Self {
+            commands,
+            status,
+            thread: Some(thread),
+        })
+    }
+
+    /// Verifies and loads `image`, replacing the program (after saving its retained values),
+    /// and restores retained values saved for the same layout. The scheduler keeps running if
+    /// it ran. When the image is refused, everything stays as it was.
+    pub fn load(&self, image: ProgramImage) -> Result<LoadReport, SchedulerError> {
+        let identity = image.identity();
+        let engine = Engine::new(image)?;
+        self.ask(|reply| Command::Load(Box::new(engine), identity, reply))?
+    }
+
+    /// Starts every task that has not faulted.
+    pub fn start(&self) -> Result<(), SchedulerError> {
+        self.ask(Command::Start)?
+    }
+
+    /// Stops every task after its current cycle and saves the retained values.
+    pub fn stop(&self) -> Result<(), SchedulerError> {
+        self.ask(Command::Stop)?
+    }
+
+    /// Stops, re-initialises memory as `kind` says (an origin reset also deletes the saved
+    /// retained values), clears the tasks' faults and statistics, and stays stopped.
+    pub fn reset(&self, kind: ResetKind) -> Result<(), SchedulerError> {
+        self.ask(|reply| Command::Reset(kind, reply))?
+    }
+
+    /// The state, statistics and faults now.
+    pub fn status(&self) -> SchedulerStatus {
+        self.status
+            .lock()
+            .unwrap_or_else(PoisonError::into_inner)
+            .clone()
+    }
+
+    /// Stops, saves the retained values and ends the thread.
+    pub fn shutdown(mut self) -> Result<(), SchedulerError> {
+        let saved = self.ask(Command::Shutdown);
+        if let Some(thread) = self.thread.take() {
+            // The worker catches nothing: a panic there has already been reported by the
+            // panic hook, and the handle has nothing left to do about it.
+            let _ = thread.join();
+        }
+        saved?
+    }
+
+    /// Sends a command and waits for its answer.
+    fn ask<T>(
+        &self,
+        command: impl FnOnce(mpsc::Sender<T>) -> Command,
+    ) -> Result<T, SchedulerError> {
+        let (reply, answer) = mpsc::channel();
+        self.commands
+            .send(command(reply))
+            .map_err(|_| SchedulerError::Gone)?;
+        answer.recv().map_err(|_| SchedulerError::Gone)
+    }
+}
+
+impl Drop for Scheduler {
+    fn drop(&mut self) {
+        if let Some(thread) = self.thread.take() {
+            // A failed save cannot be reported from a drop; `shutdown` reports it.
+            let (reply, answer) = mpsc::channel();
+            if self.commands.send(Command::Shutdown(reply)).is_ok() {
+                let _ = answer.recv();
+            }
+            let _ = thread.join();
+        }
+    }
+}
+
+/// The answer to a command.
+type Reply = mpsc::Sender<Result<(), SchedulerError>>;
+
+/// What the handle asks of the thread.
+enum Command {
+    Load(
+        Box<Engine>,
+        ImageHash,
+        mpsc::Sender<Result<LoadReport, SchedulerError>>,
+    ),
+    Start(Reply),
+    Stop(Reply),
+    Reset(ResetKind, Reply),
+    Shutdown(Reply),
+}
+
+#[cfg(test)]
+mod tests;

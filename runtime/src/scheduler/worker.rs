@@ -1,0 +1,477 @@
+//! The scheduler's thread: commands from the handle, and task cycles when they are due.
+
+use std::panic::AssertUnwindSafe;
+use std::sync::{Arc, Mutex, MutexGuard, PoisonError, mpsc};
+use std::time::{Duration, Instant};
+
+use program_image::{ImageHash, Region};
+
+use super::plan::{self, TaskPlan};
+use super::retain_writer::RetainWriter;
+use super::{
+    Command, LoadReport, MAX_FAULTS, SchedulerError, SchedulerOptions, SchedulerState,
+    SchedulerStatus,
+};
+use crate::areas::LocatedAreas;
+use crate::engine::{Engine, FaultKind, FaultRecord, ResetKind};
+use crate::retain::{RetainSnapshot, RetainStore};
+
+/// Everything the scheduler's thread owns.
+pub(super) struct Worker {
+    areas: Arc<Mutex<LocatedAreas>>,
+    status: Arc<Mutex<SchedulerStatus>>,
+    options: SchedulerOptions,
+    retain: Option<RetainWriter>,
+    /// The origin of the scheduler's clock; task time is nanoseconds since then.
+    epoch: Instant,
+    program: Option<Program>,
+    running: bool,
+    /// When retained values are next saved, while running.
+    next_retain_save_ns: u64,
+}
+
+/// A loaded program and the schedule of its tasks.
+struct Program {
+    engine: Engine,
+    plans: Vec<TaskPlan>,
+}
+
+/// Whether the thread goes on after a command.
+#[derive(PartialEq)]
+enum Next {
+    Continue,
+    Exit,
+}
+
+impl Worker {
+    pub(super) fn new(
+        areas: Arc<Mutex<LocatedAreas>>,
+        status: Arc<Mutex<SchedulerStatus>>,
+        options: SchedulerOptions,
+    ) -> Self {
+        let report_status = Arc::clone(&status);
+        let report = Arc::new(move |problem: Option<String>| {
+            lock(&report_status).retain_problem = problem;
+        });
+        Self {
+            areas,
+            status,
+            retain: options
+                .data_dir
+                .clone()
+                .map(|dir| RetainWriter::spawn(RetainStore::new(dir), report.clone())),
+            options,
+            epoch: Instant::now(),
+            program: None,
+            running: false,
+            next_retain_save_ns: 0,
+        }
+    }
+
+    /// Runs until the handle asks it to end or goes away.
+    pub(super) fn run(mut self, commands: &mpsc::Receiver<Command>) {
+        loop {
+            // Commands first, so the handle is never kept waiting by a busy schedule.
+            loop {
+                match commands.try_recv() {
+                    Ok(command) => {
+                        if self.handle(command) == Next::Exit {
+                            return;
+                        }
+                    }
+                    Err(mpsc::TryRecvError::Empty) => break,
+                    Err(mpsc::TryRecvError::Disconnected) => return self.exit(),
+                }
+            }
+            let Some(wait) = self.run_due() else {
+                match commands.recv() {
+                    Ok(command) => {
+                        if self.handle(command) == Next::Exit {
+                            return;
+                        }
+                        continue;
+                    }
+                    Err(_) => return self.exit(),
+                }
+            };
+            if wait.is_zero() {
+                continue;
+            }
+            match commands.recv_timeout(wait) {
+                Ok(command) => {
+                    if self.handle(command) == Next::Exit {
+                        return;
+                    }
+                }
+                Err(mpsc::RecvTimeoutError::Timeout) => {}
+                Err(mpsc::RecvTimeoutError::Disconnected) => return self.exit(),
+            }
+        }
+    }
+
+    /// Runs the task that is due, if any, and returns how long to wait before looking again:
+    /// zero after a cycle, `None` when nothing will ever be due without a command.
+    fn run_due(&mut self) -> Option<Duration> {
+        if !self.running {
+            return None;
+        }
+        let now = self.now_ns();
+        self.observe_triggers(now);
+        if now >= self.next_retain_save_ns {
+            self.save_retain_periodically();
+            self.next_retain_save_ns = now + duration_ns(self.options.retain_save_interval);
+        }
+        let program = self.program.as_ref()?;
+        if let Some(task) = plan::pick(&program.plans, now) {
+            self.run_cycle(task);
+            return Some(Duration::ZERO);
+        }
+        let mut wake = self.next_retain_save_ns;
+        if let Some(start) = plan::next_start_ns(&program.plans) {
+            wake = wake.min(start);
+        }
+        if program
+            .plans
+            .iter()
+            .any(|plan| plan.is_event() && !plan.statistics.faulted)
+        {
+            wake = wake.min(now + duration_ns(self.options.event_poll_interval));
+        }
+        let wait = wake.saturating_sub(now);
+        let spin = duration_ns(self.options.spin_before_start);
+        if wait <= spin {
+            // Close to the start: give the processor away without sleeping, so the wake-up
+            // latency of a sleep does not add to the jitter.
+            std::thread::yield_now();
+            return Some(Duration::ZERO);
+        }
+        Some(Duration::from_nanos(wait - spin))
+    }
+
+    /// Runs one cycle of `task` with the located areas locked, then plans its next one.
+    fn run_cycle(&mut self, task: usize) {
+        let Some(program) = self.program.as_mut() else {
+            return;
+        };
+        let Some(planned) = program.plans[task].next_start_ns() else {
+            return;
+        };
+        let cycle = program.plans[task].statistics.cycles;
+        let mut areas = lock(&self.areas);
+        let started = self.epoch.elapsed().as_nanos() as u64;
+        copy(&areas.input, program.engine.region_mut(Region::Input));
+        copy(&areas.output, program.engine.region_mut(Region::Output));
+        copy(&areas.memory, program.engine.region_mut(Region::Memory));
+        let result = run_guarded(&mut program.engine, task, started, cycle);
+        copy(program.engine.region(Region::Output), &mut areas.output);
+        copy(program.engine.region(Region::Memory), &mut areas.memory);
+        let ended = self.epoch.elapsed().as_nanos() as u64;
+        drop(areas);
+
+        let pause = duration_ns(self.options.freewheeling_pause);
+        let plan = &mut program.plans[task];
+        let overrun = plan.finish(planned, started, ended, pause);
+        let fault = match result {
+            Err(fault) => Some(fault),
+            Ok(()) if overrun => {
+                let limit_us = program.engine.image().tasks[task].watchdog_ns / 1000;
+                let kind = FaultKind::Watchdog { limit_us };
+                Some(task_fault(&program.engine, task, cycle, kind))
+            }
+            Ok(()) => None,
+        };
+        if fault.is_some() {
+            plan.fault();
+        }
+        let mut status = lock(&self.status);
+        if let Some(published) = status.tasks.get_mut(task) {
+            published.clone_from(&plan.statistics);
+        }
+        if let Some(fault) = fault {
+            if status.faults.len() >= MAX_FAULTS {
+                status.faults.remove(0);
+            }
+            status.faults.push(fault);
+            status.faults_total += 1;
+            status.state = SchedulerState::Faulted;
+        }
+    }
+
+    /// Looks at the triggers of the event tasks.
+    fn observe_triggers(&mut self, now: u64) {
+        let Some(program) = self.program.as_mut() else {
+            return;
+        };
+        if !program.plans.iter().any(TaskPlan::is_event) {
+            return;
+        }
+        let areas = lock(&self.areas);
+        for (task, plan) in program.plans.iter_mut().enumerate() {
+            if plan.is_event() {
+                let set = trigger_is_set(&program.engine, &areas, task);
+                plan.observe_trigger(set, now);
+            }
+        }
+    }
+
+    /// Does what the handle asked.
+    fn handle(&mut self, command: Command) -> Next {
+        match command {
+            Command::Load(engine, identity, reply) => {
+                let _ = reply.send(self.load(*engine, identity));
+            }
+            Command::Start(reply) => {
+                let _ = reply.send(self.start());
+            }
+            Command::Stop(reply) => {
+                let _ = reply.send(self.stop());
+            }
+            Command::Reset(kind, reply) => {
+                let _ = reply.send(self.reset(kind));
+            }
+            Command::Shutdown(reply) => {
+                let _ = reply.send(self.stop());
+                return Next::Exit;
+            }
+        }
+        Next::Continue
+    }
+
+    /// Ends the thread after the handle went away without asking.
+    fn exit(mut self) {
+        // Nobody is left to hear about a failed save.
+        let _ = self.stop();
+    }
+
+    fn load(
+        &mut self,
+        mut engine: Engine,
+        identity: ImageHash,
+    ) -> Result<LoadReport, SchedulerError> {
+        let was_running = self.running;
+        // The old program's retained values go to the disk first, so an image with the same
+        // retained layout takes them over.
+        let saved = self.stop();
+        let retain = self
+            .retain
+            .as_ref()
+            .map(|writer| writer.with_store(|store| store.restore(&mut engine)));
+        {
+            let mut areas = lock(&self.areas);
+            areas.input = engine.region(Region::Input).to_vec();
+            areas.output = engine.region(Region::Output).to_vec();
+            areas.memory = engine.region(Region::Memory).to_vec();
+        }
+        let plans = engine.image().tasks.iter().map(TaskPlan::new).collect();
+        self.program = Some(Program { engine, plans });
+        self.publish(Some(identity));
+        if was_running {
+            self.start()?;
+        }
+        saved?;
+        Ok(LoadReport { retain })
+    }
+
+    fn start(&mut self) -> Result<(), SchedulerError> {
+        if self.running {
+            return Ok(());
+        }
+        let now = self.now_ns();
+        let Some(program) = self.program.as_mut() else {
+            return Err(SchedulerError::NoProgram);
+        };
+        {
+            let areas = lock(&self.areas);
+            for (task, plan) in program.plans.iter_mut().enumerate() {
+                plan.start(now, trigger_is_set(&program.engine, &areas, task));
+            }
+        }
+        self.running = true;
+        self.next_retain_save_ns = now + duration_ns(self.options.retain_save_interval);
+        self.publish_state();
+        Ok(())
+    }
+
+    fn stop(&mut self) -> Result<(), SchedulerError> {
+        let was_running = std::mem::replace(&mut self.running, false);
+        let saved = match self.program.as_mut() {
+            Some(program) => {
+                program.plans.iter_mut().for_each(TaskPlan::stop);
+                match (&self.retain, was_running) {
+                    (Some(writer), true) => {
+                        writer.with_store(|store| store.save(&program.engine).map(|_| ()))
+                    }
+                    _ => Ok(()),
+                }
+            }
+            None => Ok(()),
+        };
+        self.publish_state();
+        saved.map_err(Into::into)
+    }
+
+    fn reset(&mut self, kind: ResetKind) -> Result<(), SchedulerError> {
+        let saved = self.stop();
+        let Some(program) = self.program.as_mut() else {
+            return Err(SchedulerError::NoProgram);
+        };
+        program.engine.reset(kind);
+        program.plans = program
+            .engine
+            .image()
+            .tasks
+            .iter()
+            .map(TaskPlan::new)
+            .collect();
+        {
+            let mut areas = lock(&self.areas);
+            copy(program.engine.region(Region::Output), &mut areas.output);
+            copy(program.engine.region(Region::Memory), &mut areas.memory);
+        }
+        let retain = match (&self.retain, kind) {
+            (Some(writer), ResetKind::Origin) => writer.with_store(RetainStore::delete),
+            (Some(writer), _) => writer.with_store(|store| store.save(&program.engine).map(|_| ())),
+            (None, _) => Ok(()),
+        };
+        let identity = lock(&self.status).image;
+        self.publish(identity);
+        saved?;
+        retain.map_err(Into::into)
+    }
+
+    /// Queues the retained values for the writer thread while running; it writes them when
+    /// they changed and shows a failure in the status.
+    fn save_retain_periodically(&mut self) {
+        let (Some(writer), Some(program)) = (&self.retain, &self.program) else {
+            return;
+        };
+        if let Some(snapshot) = RetainSnapshot::of(&program.engine) {
+            writer.write_later(snapshot);
+        }
+    }
+
+    /// Publishes the whole status after a load or reset.
+    fn publish(&self, identity: Option<ImageHash>) {
+        let mut status = lock(&self.status);
+        status.image = identity;
+        status.tasks = self
+            .program
+            .iter()
+            .flat_map(|program| program.plans.iter().map(|plan| plan.statistics.clone()))
+            .collect();
+        status.state = self.state();
+    }
+
+    fn publish_state(&self) {
+        lock(&self.status).state = self.state();
+    }
+
+    fn state(&self) -> SchedulerState {
+        let faulted = self
+            .program
+            .iter()
+            .flat_map(|program| &program.plans)
+            .any(|plan| plan.statistics.faulted);
+        match (self.running, faulted) {
+            (false, _) => SchedulerState::Stopped,
+            (true, false) => SchedulerState::Running,
+            (true, true) => SchedulerState::Faulted,
+        }
+    }
+
+    fn now_ns(&self) -> u64 {
+        self.epoch.elapsed().as_nanos() as u64
+    }
+}
+
+/// Locks a mutex whose holder may have panicked: the scheduler's data stays usable, and the
+/// Modbus server reports a poisoned area lock on its own.
+fn lock<T>(mutex: &Mutex<T>) -> MutexGuard<'_, T> {
+    mutex.lock().unwrap_or_else(PoisonError::into_inner)
+}
+
+/// Copies as many bytes as both slices have.
+fn copy(from: &[u8], to: &mut [u8]) {
+    let length = from.len().min(to.len());
+    to[..length].copy_from_slice(&from[..length]);
+}
+
+fn duration_ns(duration: Duration) -> u64 {
+    u64::try_from(duration.as_nanos()).unwrap_or(u64::MAX)
+}
+
+/// The value of the BOOL trigger of event task `task`: a located one in the shared areas, where
+/// Modbus clients write it, another in the engine's data region.
+fn trigger_is_set(engine: &Engine, areas: &LocatedAreas, task: usize) -> bool {
+    let image = engine.image();
+    let Some(symbol) = image
+        .tasks
+        .get(task)
+        .and_then(|task| task.trigger)
+        .and_then(|trigger| image.symbols.get(trigger as usize))
+    else {
+        return false;
+    };
+    let bytes = match symbol.region {
+        Region::Data => engine.region(Region::Data),
+        Region::Input => &areas.input,
+        Region::Output => &areas.output,
+        Region::Memory => &areas.memory,
+    };
+    let byte = bytes.get(symbol.offset as usize).copied().unwrap_or(0);
+    match symbol.bit {
+        Some(bit) => byte >> (bit & 7) & 1 == 1,
+        None => byte != 0,
+    }
+}
+
+/// Runs one cycle of `task`. A panic of the engine is a bug of the runtime, not of the program:
+/// it faults the task instead of ending the process (and poisoning the areas, which are locked
+/// during the cycle, for the Modbus server).
+// As for `Engine::run_cycle`: a fault is rare and ends the task, so its record is not boxed.
+#[allow(clippy::result_large_err)]
+fn run_guarded(
+    engine: &mut Engine,
+    task: usize,
+    now_ns: u64,
+    cycle: u64,
+) -> Result<(), FaultRecord> {
+    match std::panic::catch_unwind(AssertUnwindSafe(|| {
+        engine.run_cycle(task, now_ns as i64, cycle)
+    })) {
+        Ok(result) => result,
+        Err(panic) => {
+            let message = panic
+                .downcast_ref::<&str>()
+                .map(|text| (*text).to_owned())
+                .or_else(|| panic.downcast_ref::<String>().cloned())
+                .unwrap_or_else(|| "the engine panicked".to_owned());
+            Err(task_fault(
+                engine,
+                task,
+                cycle,
+                FaultKind::Internal(message),
+            ))
+        }
+    }
+}
+
+/// A fault of task `task` that belongs to no single instruction (too many watchdog overruns
+/// in a row, a failure of the engine); it names the task's first program.
+fn task_fault(engine: &Engine, task: usize, cycle: u64, kind: FaultKind) -> FaultRecord {
+    let image = engine.image();
+    let info = image.tasks.get(task);
+    FaultRecord {
+        task: info.map(|task| task.name.clone()).unwrap_or_default(),
+        kind,
+        pou: info
+            .and_then(|task| task.programs.first())
+            .and_then(|call| image.pous.get(call.pou as usize))
+            .map(|pou| pou.name.clone())
+            .unwrap_or_default(),
+        file: None,
+        line: None,
+        instruction: 0,
+        cycle,
+    }
+}

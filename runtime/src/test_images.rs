@@ -1,0 +1,199 @@
+//! Small program images built by hand for the unit tests (`runtime` may not use the compiler).
+//!
+//! The data region starts with a sequence counter (`DINT` at 0); task `i` has its own slot at
+//! `8 * i + 4`, where its program writes the sequence number of its last cycle, and a cycle
+//! count at `8 * i + 8`. A task may instead run the "slow" program, which counts a `DINT` at
+//! the end of the data region up to the value of `%MD0`, so a test sets its duration through
+//! the located areas. A counting task also copies the sequence number to `%MD(2 + i)` and its
+//! cycle count to `%QD(i)`, where tests see them through the shared areas.
+
+use program_image::{
+    BinaryOp, CompareOp, Elementary, Instr, Layout, Operand, Pou, PouKind, ProgramCall,
+    ProgramImage, RetainLayout, Symbol, SymbolFlags, Task, TaskKind, TypeDef,
+};
+
+/// The sequence counter's offset.
+pub(crate) const SEQUENCE: u32 = 0;
+
+/// The offset of the sequence number of task `task`'s last cycle.
+pub(crate) fn slot(task: usize) -> u32 {
+    8 * task as u32 + 4
+}
+
+/// The offset of task `task`'s cycle count.
+pub(crate) fn count(task: usize) -> u32 {
+    8 * task as u32 + 8
+}
+
+/// Where in `%M` task `task` copies the sequence number of its last cycle (`%MD(2 + task)`).
+pub(crate) fn sequence_in_memory(task: usize) -> u32 {
+    8 + 4 * task as u32
+}
+
+/// Where in `%Q` task `task` copies its cycle count (`%QD(task)`).
+pub(crate) fn count_in_output(task: usize) -> u32 {
+    4 * task as u32
+}
+
+/// What a task of a test image runs.
+#[derive(Clone, Copy, Debug)]
+pub(crate) enum Body {
+    /// Counts the sequence and its own cycles.
+    Count,
+    /// Loops `%MD0` times.
+    Slow,
+}
+
+/// A task of a test image.
+#[derive(Clone, Debug)]
+pub(crate) struct TestTask {
+    pub kind: TaskKind,
+    pub interval_ns: u64,
+    pub priority: u8,
+    pub watchdog_ns: u64,
+    pub watchdog_sensitivity: u32,
+    pub body: Body,
+}
+
+impl TestTask {
+    /// A counting cyclic task.
+    pub(crate) fn cyclic(interval_ns: u64, priority: u8) -> Self {
+        Self {
+            kind: TaskKind::Cyclic,
+            interval_ns,
+            priority,
+            watchdog_ns: 0,
+            watchdog_sensitivity: 1,
+            body: Body::Count,
+        }
+    }
+}
+
+/// An image with `tasks`; task `i` runs program `i`. Symbol 0 is the BOOL `%MX4.0`, which
+/// an event task uses as its trigger. `retained` data-region ranges are RETAIN.
+pub(crate) fn image(tasks: &[TestTask], retained: &[(u32, u32)]) -> ProgramImage {
+    let task_count = tasks.len() as u32;
+    let loop_counter = count(tasks.len());
+    let flag = loop_counter + 4;
+    let data_size = flag + 4;
+    let one = Operand::Const(0);
+    let pous = tasks
+        .iter()
+        .enumerate()
+        .map(|(index, task)| {
+            let code = match task.body {
+                Body::Count => vec![
+                    add_one(Operand::Global(SEQUENCE), one),
+                    Instr::Move {
+                        ty: Elementary::Dint,
+                        dst: Operand::Global(slot(index)),
+                        src: Operand::Global(SEQUENCE),
+                    },
+                    add_one(Operand::Global(count(index)), one),
+                    Instr::Move {
+                        ty: Elementary::Dint,
+                        dst: Operand::Memory(sequence_in_memory(index)),
+                        src: Operand::Global(SEQUENCE),
+                    },
+                    Instr::Move {
+                        ty: Elementary::Dint,
+                        dst: Operand::Output(count_in_output(index)),
+                        src: Operand::Global(count(index)),
+                    },
+                    Instr::Return,
+                ],
+                Body::Slow => vec![
+                    Instr::Move {
+                        ty: Elementary::Dint,
+                        dst: Operand::Global(loop_counter),
+                        src: Operand::Const(4),
+                    },
+                    Instr::Compare {
+                        op: CompareOp::Ge,
+                        ty: Elementary::Dint,
+                        dst: Operand::Global(flag),
+                        a: Operand::Global(loop_counter),
+                        b: Operand::Memory(0),
+                    },
+                    Instr::JumpIf {
+                        cond: Operand::Global(flag),
+                        target: 5,
+                    },
+                    add_one(Operand::Global(loop_counter), one),
+                    Instr::Jump { target: 1 },
+                    add_one(Operand::Global(count(index)), one),
+                    Instr::Return,
+                ],
+            };
+            Pou {
+                name: format!("Program{index}"),
+                kind: PouKind::Program,
+                frame_size: 0,
+                frame_init: Vec::new(),
+                instance_size: 0,
+                code,
+                lines: Vec::new(),
+            }
+        })
+        .collect();
+    let tasks = tasks
+        .iter()
+        .enumerate()
+        .map(|(index, task)| Task {
+            name: format!("Task{index}"),
+            kind: task.kind,
+            interval_ns: task.interval_ns,
+            trigger: (task.kind == TaskKind::Event).then_some(0),
+            priority: task.priority,
+            watchdog_ns: task.watchdog_ns,
+            watchdog_sensitivity: task.watchdog_sensitivity,
+            programs: vec![ProgramCall {
+                pou: index as u32,
+                instance_offset: 0,
+            }],
+        })
+        .collect();
+    ProgramImage {
+        types: vec![TypeDef::Elementary(Elementary::Bool)],
+        layout: Layout {
+            data_size,
+            input_size: 4,
+            output_size: 4 * task_count,
+            memory_size: 8 + 4 * task_count,
+            stack_size: 64,
+        },
+        symbols: vec![Symbol {
+            path: "Trigger".to_owned(),
+            ty: 0,
+            region: program_image::Region::Memory,
+            offset: 4,
+            bit: Some(0),
+            flags: SymbolFlags(SymbolFlags::LOCATED | SymbolFlags::GLOBAL),
+        }],
+        pous,
+        constants: [1_i32.to_le_bytes(), 0_i32.to_le_bytes()].concat(),
+        tasks,
+        retain: RetainLayout {
+            retain: retained.to_vec(),
+            persistent: Vec::new(),
+        },
+        ..ProgramImage::default()
+    }
+}
+
+/// `place := place + 1` on a DINT.
+fn add_one(place: Operand, one: Operand) -> Instr {
+    Instr::Binary {
+        op: BinaryOp::Add,
+        ty: Elementary::Dint,
+        dst: place,
+        a: place,
+        b: one,
+    }
+}
+
+/// The DINT at `offset` of a data region.
+pub(crate) fn dint(data: &[u8], offset: u32) -> i32 {
+    let at = offset as usize;
+    i32::from_le_bytes([data[at], data[at + 1], data[at + 2], data[at + 3]])
+}
