@@ -196,3 +196,31 @@ proptest! {
         load_and_run(&content);
     }
 }
+
+#[test]
+fn an_array_element_of_extreme_bounds_does_not_panic() {
+    // The verifier accepts any non-zero count and any low bound; the engine must compute the
+    // bounds and the element offset without overflowing.
+    for (low, count) in [
+        (1, 1u64 << 63),
+        (i64::MIN, 1u64 << 63),
+        (i64::MIN, u64::MAX),
+        (i64::MAX, 2),
+    ] {
+        let mut bytes = seeds()[0].clone();
+        bytes.extend_from_slice(&Sha256::digest(&bytes));
+        let mut image = ProgramImage::decode(&bytes).unwrap();
+        for pou in &mut image.pous {
+            for instr in &mut pou.code {
+                if let program_image::Instr::Element {
+                    low: l, count: c, ..
+                } = instr
+                {
+                    (*l, *c) = (low, count);
+                }
+            }
+        }
+        let content = image.encode();
+        load_and_run(&content[..content.len() - 32]);
+    }
+}
