@@ -631,6 +631,23 @@ fn a_region_larger_than_the_limit_is_refused() {
 }
 
 #[test]
+fn task_stacks_larger_than_the_limit_together_are_refused() {
+    // Each task is a few bytes of the image but gets a stack of `stack_size` bytes.
+    let mut image = small_image();
+    image.layout.stack_size = MAX_REGION_BYTES;
+    image.tasks.push(image.tasks[0].clone());
+    assert_contains(
+        &invalid_message(&image),
+        &format!(
+            "2 tasks with a stack of {MAX_REGION_BYTES} bytes each need {} bytes",
+            2 * u64::from(MAX_REGION_BYTES)
+        ),
+    );
+    image.tasks.pop();
+    assert_eq!(ProgramImage::decode(&image.encode()), Ok(image));
+}
+
+#[test]
 fn initial_values_retain_ranges_and_frames_outside_their_region_are_refused() {
     let mut image = small_image();
     image.initial.data[0].offset = 10;
