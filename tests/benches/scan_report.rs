@@ -46,6 +46,17 @@ fn median_ns(mut f: impl FnMut()) -> f64 {
 }
 
 fn main() {
+    // `SCAN_PROFILE=dint` only runs that workload's engine for a while, for a profiler such as
+    // `valgrind --tool=callgrind`.
+    if let Some(name) = std::env::var_os("SCAN_PROFILE") {
+        for workload in workloads().into_iter().filter(|w| name == w.name) {
+            let mut engine = engine(&workload);
+            for cycle in 0..2000 {
+                black_box(engine.run_cycle(0, 0, cycle)).ok();
+            }
+        }
+        return;
+    }
     println!(
         "| workload | unit | units/cycle | instructions/cycle | runtime ns/cycle | runtime ns/unit | runtime ns/instruction | native ns/unit | ratio |"
     );
