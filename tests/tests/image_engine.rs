@@ -153,7 +153,7 @@ fn the_seed_programs_load_and_run() {
             }
         }
     }
-    // `SEED_DIR=program_image/fuzz/seeds` refreshes the fuzz target's seeds.
+    // `SEED_DIR=$PWD/program_image/fuzz/seeds` (absolute) refreshes the fuzz target's seeds.
     if let Some(dir) = std::env::var_os("SEED_DIR") {
         let dir = Path::new(&dir);
         std::fs::create_dir_all(dir).unwrap();
