@@ -29,6 +29,16 @@ impl ProgramImage {
                 ));
             }
         }
+        // The runtime gives every task a stack of `stack_size` bytes, so a few bytes of task
+        // table must not make it allocate without bound either.
+        let stacks = u64::from(layout.stack_size) * self.tasks.len().max(1) as u64;
+        if stacks > u64::from(MAX_REGION_BYTES) {
+            return invalid(format!(
+                "{} tasks with a stack of {} bytes each need {stacks} bytes, more than {MAX_REGION_BYTES}",
+                self.tasks.len(),
+                layout.stack_size
+            ));
+        }
         self.verify_types()?;
         self.verify_initial()?;
         for (index, symbol) in self.symbols.iter().enumerate() {

@@ -240,7 +240,8 @@ fn lower(instr: &Instr, regions: &Regions) -> Result<Op, String> {
         } => {
             let (dst, base, index, index_ty) = (a(dst), a(base), a(index), *index_ty);
             let (low, count, stride) = (*low, *count, u64::from(*stride));
-            let high = low.saturating_add(count as i64 - 1);
+            let high =
+                low.saturating_add(i64::try_from(count.saturating_sub(1)).unwrap_or(i64::MAX));
             Box::new(move |x| {
                 let raw = read_raw(x, index, index_ty)?;
                 let i = sign_extend(raw, index_ty);
@@ -252,7 +253,7 @@ fn lower(instr: &Instr, regions: &Regions) -> Result<Op, String> {
                     });
                 }
                 let pointer = x.get::<u64>(base)?;
-                let moved = pointer.wrapping_add((i - low) as u64 * stride);
+                let moved = pointer.wrapping_add((i.wrapping_sub(low) as u64).wrapping_mul(stride));
                 x.set::<u64>(dst, moved)?;
                 Ok(Flow::Next)
             })

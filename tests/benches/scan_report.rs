@@ -1,0 +1,131 @@
+//! The scan-time figures as a table to paste into a note:
+//! `cargo bench -p tests --bench scan_report`.
+//!
+//! Times one task cycle of each workload of `workloads` (the runtime) and one call of its
+//! native twin with `Instant` over many repetitions, takes the median of several batches, and
+//! prints nanoseconds per statement (or loop iteration) and per instruction, the native figure
+//! and their ratio. The fixed cost of a cycle (the empty program) is shown on its own line and
+//! not subtracted.
+
+#![allow(clippy::unwrap_used, clippy::expect_used, clippy::print_stdout)] // A bench binary.
+
+use std::hint::black_box;
+use std::time::Instant;
+
+mod workloads;
+
+use workloads::{Native, compile, engine, instructions, workloads};
+
+/// Batches timed per figure; the median is reported.
+const BATCHES: usize = 15;
+/// Roughly how long one batch runs.
+const BATCH_NS: f64 = 20_000_000.0;
+
+/// The median time of one call of `f` in nanoseconds.
+fn median_ns(mut f: impl FnMut()) -> f64 {
+    // Calibrate the repetitions so a batch takes about BATCH_NS.
+    let start = Instant::now();
+    let mut calls = 0u64;
+    while start.elapsed().as_nanos() < 5_000_000 {
+        f();
+        calls += 1;
+    }
+    let once = start.elapsed().as_nanos() as f64 / calls as f64;
+    let repetitions = ((BATCH_NS / once) as u64).max(1);
+    let mut times: Vec<f64> = (0..BATCHES)
+        .map(|_| {
+            let start = Instant::now();
+            for _ in 0..repetitions {
+                f();
+            }
+            start.elapsed().as_nanos() as f64 / repetitions as f64
+        })
+        .collect();
+    times.sort_by(f64::total_cmp);
+    times[BATCHES / 2]
+}
+
+fn main() {
+    // `SCAN_PROFILE=dint` only runs that workload's engine for a while, for a profiler such as
+    // `valgrind --tool=callgrind`.
+    if let Some(name) = std::env::var_os("SCAN_PROFILE") {
+        for workload in workloads().into_iter().filter(|w| name == w.name) {
+            let mut engine = engine(&workload);
+            for cycle in 0..2000 {
+                black_box(engine.run_cycle(0, 0, cycle)).ok();
+            }
+        }
+        return;
+    }
+    println!(
+        "| workload | unit | units/cycle | instructions/cycle | runtime ns/cycle | runtime ns/unit | runtime ns/instruction | native ns/unit | ratio |"
+    );
+    println!("|---|---|---:|---:|---:|---:|---:|---:|---:|");
+    for workload in workloads() {
+        let image = compile(&workload);
+        let static_instructions = instructions(&image);
+        let mut engine = engine(&workload);
+        let mut cycle = 0;
+        let runtime = median_ns(|| {
+            cycle += 1;
+            black_box(engine.run_cycle(0, 0, cycle)).ok();
+        });
+        let mut native = Native::default();
+        let native_ns = median_ns(|| (workload.native)(black_box(&mut native)));
+        // A loop runs its body's instructions once per iteration; the others run each once.
+        let executed = if workload.name == "array_loop" {
+            executed_loop_instructions(&image)
+        } else {
+            static_instructions as f64
+        };
+        let units = workload.units as f64;
+        println!(
+            "| {} | {} | {} | {} | {:.0} | {:.2} | {:.2} | {:.3} | {:.0} |",
+            workload.name,
+            workload.unit,
+            workload.units,
+            executed,
+            runtime,
+            runtime / units,
+            runtime / executed.max(1.0),
+            native_ns / units,
+            runtime / native_ns.max(f64::MIN_POSITIVE),
+        );
+    }
+    if std::env::var_os("SCAN_DUMP").is_some() {
+        for workload in workloads() {
+            let image = compile(&workload);
+            println!("\n{}:", workload.name);
+            for pou in &image.pous {
+                for (index, instr) in pou.code.iter().enumerate().take(24) {
+                    println!("  {} {index}: {instr:?}", pou.name);
+                }
+            }
+        }
+    }
+}
+
+/// Instructions executed by one cycle of the array loop: the code before the loop's backward
+/// jump runs once, the loop from the jump's target to the jump once per iteration, less one:
+/// the FOR loop tests `i > end` or `i < end` by the sign of the step, and only one of the two
+/// runs.
+fn executed_loop_instructions(image: &program_image::ProgramImage) -> f64 {
+    use program_image::Instr;
+    let Some(pou) = image
+        .pous
+        .iter()
+        .find(|pou| pou.name.eq_ignore_ascii_case("main"))
+    else {
+        return 0.0;
+    };
+    for (index, instr) in pou.code.iter().enumerate() {
+        if let Instr::Jump { target } = instr
+            && (*target as usize) <= index
+        {
+            let body = (index - *target as usize) as f64;
+            let before = *target as f64;
+            return before + body * workloads::COUNT as f64;
+        }
+    }
+    0.0
+}
