@@ -12,9 +12,11 @@ pub const MAGIC: &[u8; 8] = b"RIVETIMG";
 /// The format version this crate writes and reads.
 pub const FORMAT_VERSION: u16 = 1;
 
-/// The largest image accepted, so a hostile length cannot make a reader allocate without
-/// bound.
-pub const MAX_IMAGE_BYTES: usize = 256 * 1024 * 1024;
+/// The largest image accepted. Decoded, an image takes several times its encoded size (every
+/// one-byte `Return` becomes an instruction of tens of bytes, then an engine closure), so the
+/// limit keeps a hostile image from costing gigabytes; real images are far smaller (a
+/// 50,000-line project compiles to a few megabytes).
+pub const MAX_IMAGE_BYTES: usize = 16 * 1024 * 1024;
 
 /// The SHA-256 of an image's bytes before the trailer: its identity.
 pub type ImageHash = [u8; 32];

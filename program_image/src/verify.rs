@@ -185,8 +185,9 @@ impl ProgramImage {
                 return Err("an initial value lies outside its frame".to_owned());
             }
         }
+        // Without the optional `sources` section, faults name the POU and instruction only.
         for entry in &pou.lines {
-            if entry.file as usize >= self.sources.len() {
+            if !self.sources.is_empty() && entry.file as usize >= self.sources.len() {
                 return Err("its line table names an unknown file".to_owned());
             }
         }

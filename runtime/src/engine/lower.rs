@@ -48,10 +48,15 @@ impl Compiled {
     /// Lowers every POU of a verified image.
     pub(crate) fn new(image: &ProgramImage, regions: &Regions) -> Result<Self, LowerError> {
         let mut pous = Vec::with_capacity(image.pous.len());
+        let sizes: Vec<usize> = image
+            .pous
+            .iter()
+            .map(|p| p.instance_size as usize)
+            .collect();
         for pou in &image.pous {
             let mut ops = Vec::with_capacity(pou.code.len());
             for (index, instr) in pou.code.iter().enumerate() {
-                ops.push(lower(instr, regions).map_err(|message| LowerError {
+                ops.push(lower(instr, regions, &sizes).map_err(|message| LowerError {
                     pou: pou.name.clone(),
                     index,
                     message,
@@ -130,7 +135,7 @@ macro_rules! dispatch {
     };
 }
 
-fn lower(instr: &Instr, regions: &Regions) -> Result<Op, String> {
+fn lower(instr: &Instr, regions: &Regions, sizes: &[usize]) -> Result<Op, String> {
     let a = |operand: &Operand| addr(*operand, regions);
     Ok(match instr {
         Instr::Move { ty, dst, src } => dispatch!(all ty, mov(a(dst), a(src))),
@@ -293,9 +298,11 @@ fn lower(instr: &Instr, regions: &Regions) -> Result<Op, String> {
             indirect,
         } => {
             let (pou, instance, indirect) = (*pou as usize, a(instance), *indirect);
+            // A pointer to an instance must reach a whole instance of the callee.
+            let size = sizes.get(pou).copied().unwrap_or(0);
             Box::new(move |x| {
                 let at = if indirect {
-                    x.deref(x.get::<u64>(instance)?, 0)?
+                    x.deref(x.get::<u64>(instance)?, size)?
                 } else {
                     x.at(instance)
                 };
@@ -312,9 +319,10 @@ fn lower(instr: &Instr, regions: &Regions) -> Result<Op, String> {
             let instance = instance.map(|operand| a(&operand));
             let inputs = transfers(inputs, regions);
             let outputs = transfers(outputs, regions);
+            let size = sizes.get(pou).copied().unwrap_or(0);
             Box::new(move |x| {
                 let this = match instance {
-                    Some(pointer) => x.deref(x.get::<u64>(pointer)?, 0)?,
+                    Some(pointer) => x.deref(x.get::<u64>(pointer)?, size)?,
                     None => x.bases[usize::from(INSTANCE)],
                 };
                 call_frame(x, pou, this, &inputs, &outputs)
@@ -346,9 +354,12 @@ fn lower(instr: &Instr, regions: &Regions) -> Result<Op, String> {
             inputs,
             outputs,
         } => {
-            let table: Vec<(u32, usize)> = table
+            let table: Vec<(u32, usize, usize)> = table
                 .iter()
-                .map(|(class, method)| (*class, *method as usize))
+                .map(|(class, method)| {
+                    let method = *method as usize;
+                    (*class, method, sizes.get(method).copied().unwrap_or(0))
+                })
                 .collect();
             let interface = a(interface);
             let inputs = transfers(inputs, regions);
@@ -359,12 +370,13 @@ fn lower(instr: &Instr, regions: &Regions) -> Result<Op, String> {
                     offset: interface.offset + 8,
                     ..interface
                 })?;
-                let this = x.deref(pointer, 0)?;
-                let method = table
+                x.deref(pointer, 0)?;
+                let (method, size) = table
                     .iter()
-                    .find(|(known, _)| *known == class)
-                    .map(|(_, method)| *method)
+                    .find(|(known, _, _)| *known == class)
+                    .map(|(_, method, size)| (*method, *size))
                     .ok_or(FaultKind::BadPointer(pointer))?;
+                let this = x.deref(pointer, size)?;
                 call_frame(x, method, this, &inputs, &outputs)
             })
         }
