@@ -89,6 +89,8 @@ pub(crate) struct BodyGen<'b, 'g, 'p> {
     line_offset: u32,
     /// Set while resolving the target of `REF=`: references are not followed.
     pub(crate) raw_references: bool,
+    /// Every instruction index some jump goes to.
+    jump_targets: std::collections::HashSet<u32>,
     /// Labels by lower-case name, and the jumps waiting for them.
     labels: HashMap<String, u32>,
     jumps: Vec<(usize, String)>,
@@ -134,6 +136,7 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
             line_starts,
             line_offset,
             raw_references: false,
+            jump_targets: std::collections::HashSet::new(),
             labels: HashMap::new(),
             jumps: Vec::new(),
         }
@@ -141,6 +144,9 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
 
     /// Emits an instruction and returns its index.
     pub(crate) fn emit(&mut self, instr: Instr) -> usize {
+        if let Instr::Jump { target } | Instr::JumpIf { target, .. } | Instr::JumpIfNot { target, .. } = &instr {
+            self.jump_targets.insert(*target);
+        }
         self.code.push(instr);
         self.code.len() - 1
     }
@@ -158,6 +164,30 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
             | Instr::JumpIfNot { target: t, .. } => *t = target,
             _ => {}
         }
+        self.jump_targets.insert(target);
+    }
+
+    /// Makes the last instruction write `dst` instead of the temporary `src`, when that
+    /// instruction computed `src` as a value of `ty` and nothing jumps past it: then
+    /// `x := a + b` is one instruction rather than an operation and a move.
+    pub(crate) fn retarget_last(&mut self, dst: Operand, src: Operand, ty: IE) -> bool {
+        let Operand::Frame(offset) = src else { return false };
+        // Only temporaries, never a function's own variables.
+        if offset < self.frame.size || self.jump_targets.contains(&self.here()) {
+            return false;
+        }
+        let Some(last) = self.code.last_mut() else { return false };
+        let (written, result_ty) = match last {
+            Instr::Binary { dst, ty, .. } | Instr::Unary { dst, ty, .. } | Instr::Move { dst, ty, .. } => (dst, *ty),
+            Instr::Compare { dst, .. } => (dst, IE::Bool),
+            Instr::Convert { dst, to, .. } | Instr::Trunc { dst, to, .. } => (dst, *to),
+            _ => return false,
+        };
+        if *written != src || result_ty != ty {
+            return false;
+        }
+        *written = dst;
+        true
     }
 
     /// A frame temporary of `size` bytes, alive until the statement ends.
@@ -562,72 +592,59 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
             .ok_or("the FOR variable must be an integer")?;
         let first = self.expr_as(start, &ty)?;
         self.store(&counter, first)?;
-        let last = self.temp(8);
+        // The end and step are kept where the body cannot change them: a constant stays in
+        // the pool, anything else is copied once.
         let end_value = self.expr_as(end, &ty)?;
-        self.emit(Instr::Move {
-            ty: scalar,
-            dst: last,
-            src: end_value,
-        });
-        let step = self.temp(8);
-        match rest.first() {
-            Some(step_node) => {
-                let value = self.expr_as(step_node, &ty)?;
-                self.emit(Instr::Move {
-                    ty: scalar,
-                    dst: step,
-                    src: value,
-                });
-            }
-            None => {
-                let one = self.build.scalar_constant(1, scalar);
-                self.emit(Instr::Move {
-                    ty: scalar,
-                    dst: step,
-                    src: one,
-                });
-            }
-        }
-        let zero = self.build.scalar_constant(0, scalar);
-        let negative = self.temp(1);
-        self.emit(Instr::Compare {
-            op: program_image::CompareOp::Lt,
-            ty: scalar,
-            dst: negative,
-            a: step,
-            b: zero,
-        });
-        let top = self.here();
-        let current = self.load(&counter)?;
+        let last = if matches!(end_value, Operand::Const(_)) {
+            end_value
+        } else {
+            let kept = self.temp(8);
+            self.emit(Instr::Move { ty: scalar, dst: kept, src: end_value });
+            kept
+        };
+        let step_value = match rest.first() {
+            Some(step_node) => self.expr_as(step_node, &ty)?,
+            None => self.build.scalar_constant(1, scalar),
+        };
+        let constant_step = match rest.first() {
+            Some(step_node) => match super::constant::evaluate_node(step_node, self.scope.globals) {
+                Some(super::constant::Value::Int(v)) => Some(v),
+                _ => None,
+            },
+            None => Some(1),
+        };
+        let step = if matches!(step_value, Operand::Const(_)) {
+            step_value
+        } else {
+            let kept = self.temp(8);
+            self.emit(Instr::Move { ty: scalar, dst: kept, src: step_value });
+            kept
+        };
+        let top;
         let done = self.temp(1);
-        // Counting up ends past the end; counting down ends below it.
-        let down = self.emit(Instr::JumpIf {
-            cond: negative,
-            target: 0,
-        });
-        self.emit(Instr::Compare {
-            op: program_image::CompareOp::Gt,
-            ty: scalar,
-            dst: done,
-            a: current,
-            b: last,
-        });
-        let checked = self.emit(Instr::Jump { target: 0 });
-        let down_at = self.here();
-        self.patch(down, down_at);
-        self.emit(Instr::Compare {
-            op: program_image::CompareOp::Lt,
-            ty: scalar,
-            dst: done,
-            a: current,
-            b: last,
-        });
-        let after_check = self.here();
-        self.patch(checked, after_check);
-        let exit = self.emit(Instr::JumpIf {
-            cond: done,
-            target: 0,
-        });
+        if let Some(step) = constant_step {
+            // A constant step has a known direction: one comparison an iteration.
+            top = self.here();
+            let current = self.load(&counter)?;
+            let op = if step < 0 { program_image::CompareOp::Lt } else { program_image::CompareOp::Gt };
+            self.emit(Instr::Compare { op, ty: scalar, dst: done, a: current, b: last });
+        } else {
+            let zero = self.build.scalar_constant(0, scalar);
+            let negative = self.temp(1);
+            self.emit(Instr::Compare { op: program_image::CompareOp::Lt, ty: scalar, dst: negative, a: step, b: zero });
+            top = self.here();
+            let current = self.load(&counter)?;
+            // Counting up ends past the end; counting down ends below it.
+            let down = self.emit(Instr::JumpIf { cond: negative, target: 0 });
+            self.emit(Instr::Compare { op: program_image::CompareOp::Gt, ty: scalar, dst: done, a: current, b: last });
+            let checked = self.emit(Instr::Jump { target: 0 });
+            let down_at = self.here();
+            self.patch(down, down_at);
+            self.emit(Instr::Compare { op: program_image::CompareOp::Lt, ty: scalar, dst: done, a: current, b: last });
+            let after_check = self.here();
+            self.patch(checked, after_check);
+        }
+        let exit = self.emit(Instr::JumpIf { cond: done, target: 0 });
         self.loops.push(Loop {
             exits: Vec::new(),
             continues: Vec::new(),

@@ -118,6 +118,9 @@ impl BodyGen<'_, '_, '_> {
                 }
                 match typed.lay.shape {
                     LayShape::Scalar(ty) | LayShape::Enum(ty) => {
+                        if self.retarget_last(dst, src, ty) {
+                            return Ok(());
+                        }
                         self.emit(Instr::Move { ty, dst, src })
                     }
                     _ => self.emit(Instr::Copy {
