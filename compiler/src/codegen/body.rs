@@ -144,7 +144,10 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
 
     /// Emits an instruction and returns its index.
     pub(crate) fn emit(&mut self, instr: Instr) -> usize {
-        if let Instr::Jump { target } | Instr::JumpIf { target, .. } | Instr::JumpIfNot { target, .. } = &instr {
+        if let Instr::Jump { target }
+        | Instr::JumpIf { target, .. }
+        | Instr::JumpIfNot { target, .. } = &instr
+        {
             self.jump_targets.insert(*target);
         }
         self.code.push(instr);
@@ -171,14 +174,20 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
     /// instruction computed `src` as a value of `ty` and nothing jumps past it: then
     /// `x := a + b` is one instruction rather than an operation and a move.
     pub(crate) fn retarget_last(&mut self, dst: Operand, src: Operand, ty: IE) -> bool {
-        let Operand::Frame(offset) = src else { return false };
+        let Operand::Frame(offset) = src else {
+            return false;
+        };
         // Only temporaries, never a function's own variables.
         if offset < self.frame.size || self.jump_targets.contains(&self.here()) {
             return false;
         }
-        let Some(last) = self.code.last_mut() else { return false };
+        let Some(last) = self.code.last_mut() else {
+            return false;
+        };
         let (written, result_ty) = match last {
-            Instr::Binary { dst, ty, .. } | Instr::Unary { dst, ty, .. } | Instr::Move { dst, ty, .. } => (dst, *ty),
+            Instr::Binary { dst, ty, .. }
+            | Instr::Unary { dst, ty, .. }
+            | Instr::Move { dst, ty, .. } => (dst, *ty),
             Instr::Compare { dst, .. } => (dst, IE::Bool),
             Instr::Convert { dst, to, .. } | Instr::Trunc { dst, to, .. } => (dst, *to),
             _ => return false,
@@ -599,7 +608,11 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
             end_value
         } else {
             let kept = self.temp(8);
-            self.emit(Instr::Move { ty: scalar, dst: kept, src: end_value });
+            self.emit(Instr::Move {
+                ty: scalar,
+                dst: kept,
+                src: end_value,
+            });
             kept
         };
         let step_value = match rest.first() {
@@ -607,17 +620,23 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
             None => self.build.scalar_constant(1, scalar),
         };
         let constant_step = match rest.first() {
-            Some(step_node) => match super::constant::evaluate_node(step_node, self.scope.globals) {
-                Some(super::constant::Value::Int(v)) => Some(v),
-                _ => None,
-            },
+            Some(step_node) => {
+                match super::constant::evaluate_node(step_node, self.scope.globals) {
+                    Some(super::constant::Value::Int(v)) => Some(v),
+                    _ => None,
+                }
+            }
             None => Some(1),
         };
         let step = if matches!(step_value, Operand::Const(_)) {
             step_value
         } else {
             let kept = self.temp(8);
-            self.emit(Instr::Move { ty: scalar, dst: kept, src: step_value });
+            self.emit(Instr::Move {
+                ty: scalar,
+                dst: kept,
+                src: step_value,
+            });
             kept
         };
         let top;
@@ -626,25 +645,59 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
             // A constant step has a known direction: one comparison an iteration.
             top = self.here();
             let current = self.load(&counter)?;
-            let op = if step < 0 { program_image::CompareOp::Lt } else { program_image::CompareOp::Gt };
-            self.emit(Instr::Compare { op, ty: scalar, dst: done, a: current, b: last });
+            let op = if step < 0 {
+                program_image::CompareOp::Lt
+            } else {
+                program_image::CompareOp::Gt
+            };
+            self.emit(Instr::Compare {
+                op,
+                ty: scalar,
+                dst: done,
+                a: current,
+                b: last,
+            });
         } else {
             let zero = self.build.scalar_constant(0, scalar);
             let negative = self.temp(1);
-            self.emit(Instr::Compare { op: program_image::CompareOp::Lt, ty: scalar, dst: negative, a: step, b: zero });
+            self.emit(Instr::Compare {
+                op: program_image::CompareOp::Lt,
+                ty: scalar,
+                dst: negative,
+                a: step,
+                b: zero,
+            });
             top = self.here();
             let current = self.load(&counter)?;
             // Counting up ends past the end; counting down ends below it.
-            let down = self.emit(Instr::JumpIf { cond: negative, target: 0 });
-            self.emit(Instr::Compare { op: program_image::CompareOp::Gt, ty: scalar, dst: done, a: current, b: last });
+            let down = self.emit(Instr::JumpIf {
+                cond: negative,
+                target: 0,
+            });
+            self.emit(Instr::Compare {
+                op: program_image::CompareOp::Gt,
+                ty: scalar,
+                dst: done,
+                a: current,
+                b: last,
+            });
             let checked = self.emit(Instr::Jump { target: 0 });
             let down_at = self.here();
             self.patch(down, down_at);
-            self.emit(Instr::Compare { op: program_image::CompareOp::Lt, ty: scalar, dst: done, a: current, b: last });
+            self.emit(Instr::Compare {
+                op: program_image::CompareOp::Lt,
+                ty: scalar,
+                dst: done,
+                a: current,
+                b: last,
+            });
             let after_check = self.here();
             self.patch(checked, after_check);
         }
-        let exit = self.emit(Instr::JumpIf { cond: done, target: 0 });
+        let exit = self.emit(Instr::JumpIf {
+            cond: done,
+            target: 0,
+        });
         self.loops.push(Loop {
             exits: Vec::new(),
             continues: Vec::new(),

@@ -179,7 +179,7 @@ impl<'a> Exec<'a> {
                 Ok(Flow::Return) => break,
                 Err(fault) => {
                     self.fault_at.get_or_insert((index, pc));
-                    return Err(fault);
+                    return Err(*fault);
                 }
             }
         }

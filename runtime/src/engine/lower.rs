@@ -20,8 +20,12 @@ pub(crate) enum Flow {
     Return,
 }
 
+/// A fault as an instruction returns it: boxed, so the result of every instruction fits in
+/// two registers and the common case (no fault) costs no memory traffic.
+pub(crate) type Fault = Box<FaultKind>;
+
 /// One executable instruction.
-pub(crate) type Op = Box<dyn Fn(&mut Exec<'_>) -> Result<Flow, FaultKind> + Send + Sync>;
+pub(crate) type Op = Box<dyn Fn(&mut Exec<'_>) -> Result<Flow, Fault> + Send + Sync>;
 
 /// A POU ready to run.
 pub(crate) struct CompiledPou {
@@ -251,11 +255,11 @@ fn lower(instr: &Instr, regions: &Regions, sizes: &[usize]) -> Result<Op, String
                 let raw = read_raw(x, index, index_ty)?;
                 let i = sign_extend(raw, index_ty);
                 if i < low || i > high {
-                    return Err(FaultKind::IndexOutOfBounds {
+                    return Err(Box::new(FaultKind::IndexOutOfBounds {
                         index: i,
                         low,
                         high,
-                    });
+                    }));
                 }
                 let pointer = x.get::<u64>(base)?;
                 let moved = pointer.wrapping_add((i.wrapping_sub(low) as u64).wrapping_mul(stride));
@@ -268,7 +272,7 @@ fn lower(instr: &Instr, regions: &Regions, sizes: &[usize]) -> Result<Op, String
             Box::new(move |x| {
                 let pointer = x.get::<u64>(base)?;
                 if pointer >> 56 == 0 {
-                    return Err(FaultKind::NullPointer);
+                    return Err(Box::new(FaultKind::NullPointer));
                 }
                 x.set::<u64>(dst, pointer.wrapping_add(offset))?;
                 Ok(Flow::Next)
@@ -306,7 +310,7 @@ fn lower(instr: &Instr, regions: &Regions, sizes: &[usize]) -> Result<Op, String
                 } else {
                     x.at(instance)
                 };
-                x.call_block(pou, at)
+                Ok(x.call_block(pou, at)?)
             })
         }
         Instr::CallFunction {
@@ -325,7 +329,7 @@ fn lower(instr: &Instr, regions: &Regions, sizes: &[usize]) -> Result<Op, String
                     Some(pointer) => x.deref(x.get::<u64>(pointer)?, size)?,
                     None => x.bases[usize::from(INSTANCE)],
                 };
-                call_frame(x, pou, this, &inputs, &outputs)
+                Ok(call_frame(x, pou, this, &inputs, &outputs)?)
             })
         }
         Instr::CallStdBlock {
@@ -377,7 +381,7 @@ fn lower(instr: &Instr, regions: &Regions, sizes: &[usize]) -> Result<Op, String
                     .map(|(_, method, size)| (*method, *size))
                     .ok_or(FaultKind::BadPointer(pointer))?;
                 let this = x.deref(pointer, size)?;
-                call_frame(x, method, this, &inputs, &outputs)
+                Ok(call_frame(x, method, this, &inputs, &outputs)?)
             })
         }
         Instr::ToText {
