@@ -633,3 +633,16 @@ fn methods_called_through_an_interface_run_the_instance_s_own() {
     );
     assert_eq!(s.faults()[0].kind, runtime::engine::FaultKind::NullPointer);
 }
+
+#[test]
+fn array_bounds_may_name_local_constants() {
+    let s = run(
+        "FUNCTION_BLOCK FB_Buf VAR CONSTANT N : INT := 3; END_VAR VAR data : ARRAY[1..N] OF INT; END_VAR VAR_OUTPUT last : INT; END_VAR
+         data[N] := N * 2; last := data[N]; END_FUNCTION_BLOCK
+         FUNCTION Sum3 : INT VAR CONSTANT M : INT := 2; END_VAR VAR v : ARRAY[0..M] OF INT := [1, 2, 3]; i : INT; END_VAR
+         FOR i := 0 TO M DO Sum3 := Sum3 + v[i]; END_FOR; END_FUNCTION
+         PROGRAM main VAR b : FB_Buf; s : INT; END_VAR b(); s := Sum3(); END_PROGRAM",
+        1,
+    );
+    check(&s, &[("main.b.last", "6"), ("main.s", "6")]);
+}

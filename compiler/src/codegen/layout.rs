@@ -12,6 +12,7 @@ use project_model::{DataType, Pou, PouKind, TypeDefinition, VarSection, Variable
 
 use crate::elementary::Elementary;
 use crate::sema::address::{self, Area};
+use crate::sema::resolve_local_type;
 use crate::sema::scope::{Globals, inheritance_chain};
 use crate::sema::ty::Type;
 use crate::sema::types::Shape;
@@ -525,6 +526,8 @@ impl<'g, 'p> Layouts<'g, 'p> {
     fn build_instance(&mut self, pou: &'p Pou) -> Result<Instance<'p>, String> {
         let mut chain = inheritance_chain(self.globals, pou);
         chain.reverse();
+        // Array bounds may name constants of the POU or its bases.
+        let locals: Vec<&Variable> = chain.iter().flat_map(|p| &p.variables).collect();
         let mut slots = Vec::new();
         let mut offset = 0u32;
         let mut align = 1u32;
@@ -534,7 +537,7 @@ impl<'g, 'p> Layouts<'g, 'p> {
                     continue;
                 }
                 let by_ref = var.section == VarSection::VarInOut;
-                let declared = self.globals.resolve_type(&var.ty);
+                let declared = resolve_local_type(self.globals, &locals, &var.ty);
                 let ty = if by_ref {
                     Type::Reference(Box::new(declared))
                 } else {

@@ -130,7 +130,7 @@ impl<'g, 'p> Build<'g, 'p> {
         };
         let parameters: Vec<&'p Variable> = variables.iter().filter(parameter).collect();
         let others: Vec<&'p Variable> = variables.iter().filter(|v| !parameter(v)).collect();
-        self.frame_vars(&mut frame, &mut offset, &parameters, function_like)?;
+        self.frame_vars(owner, &mut frame, &mut offset, &parameters, function_like)?;
         // The result follows the parameters, also at the same offset in every implementation.
         if let Some(text) = return_type {
             let ty = self.layouts.globals.resolve_type(text);
@@ -144,18 +144,27 @@ impl<'g, 'p> Build<'g, 'p> {
                 by_ref: false,
             });
         }
-        self.frame_vars(&mut frame, &mut offset, &others, function_like)?;
+        self.frame_vars(owner, &mut frame, &mut offset, &others, function_like)?;
         frame.size = offset;
         Ok(frame)
     }
 
     fn frame_vars(
         &mut self,
+        owner: &'p Pou,
         frame: &mut Frame<'p>,
         offset: &mut u32,
         variables: &[&'p Variable],
         function_like: bool,
     ) -> Gen<()> {
+        // Array bounds may name constants of the frame's own declarations or of the POU.
+        let locals: Vec<&Variable> = frame
+            .vars
+            .iter()
+            .map(|(v, _)| *v)
+            .chain(variables.iter().copied())
+            .chain(frame_owner_variables(self.layouts.globals, owner))
+            .collect();
         for var in variables {
             let in_frame = match var.section {
                 VarSection::VarTemp => true,
@@ -170,7 +179,7 @@ impl<'g, 'p> Build<'g, 'p> {
                 continue;
             }
             let by_ref = var.section == VarSection::VarInOut;
-            let declared = self.layouts.globals.resolve_type(&var.ty);
+            let declared = crate::sema::resolve_local_type(self.layouts.globals, &locals, &var.ty);
             let ty = if by_ref {
                 Type::Reference(Box::new(declared))
             } else {
@@ -224,6 +233,16 @@ impl<'g, 'p> Build<'g, 'p> {
         }
         Ok(runs)
     }
+}
+
+/// The declarations of `owner` and its bases, whose constants array bounds may name.
+fn frame_owner_variables<'p>(
+    globals: &Globals<'p>,
+    owner: &'p Pou,
+) -> impl Iterator<Item = &'p Variable> {
+    crate::sema::scope::inheritance_chain(globals, owner)
+        .into_iter()
+        .flat_map(|p| &p.variables)
 }
 
 fn key(pou: &str, member: Option<&str>) -> String {
@@ -316,8 +335,9 @@ pub(crate) fn build_image(project: &Project, origin: BodyOrigin<'_>) -> Gen<Prog
             .variables
             .iter()
             .chain(pou.methods.iter().flat_map(|m| &m.variables));
+        let locals: Vec<&Variable> = frame_owner_variables(&globals, pou).collect();
         for var in variables.filter(|v| v.section == VarSection::VarStat) {
-            let ty = globals.resolve_type(&var.ty);
+            let ty = crate::sema::resolve_local_type(&globals, &locals, &var.ty);
             let lay = build
                 .layouts
                 .of(&ty)

@@ -4,7 +4,7 @@
 //! inputs written inside their POU, overlapping located variables.
 
 pub(crate) mod address;
-mod body;
+pub(crate) mod body;
 mod complete;
 pub(crate) mod constant;
 mod definition;
@@ -163,6 +163,45 @@ pub(crate) fn expression_types(
     checker.types = Some(HashMap::new());
     checker.check(root);
     checker.types.unwrap_or_default()
+}
+
+/// The type written as `text` in a declaration among `locals` (the declarations of a POU,
+/// its bases and the method or accessor at hand): array bounds may name their constants.
+pub(crate) fn resolve_local_type(
+    globals: &Globals<'_>,
+    locals: &[&Variable],
+    text: &str,
+) -> ty::Type {
+    let ty = globals.resolve_type(text);
+    if !body::has_open_bounds(&ty) {
+        return ty;
+    }
+    fn constant(
+        globals: &Globals<'_>,
+        locals: &[&Variable],
+        name: &str,
+        container: Option<&str>,
+        depth: u32,
+    ) -> Option<constant::Const> {
+        if depth > constant::MAX_CONSTANT_DEPTH {
+            return None;
+        }
+        if container.is_none()
+            && let Some(variable) = locals.iter().find(|v| v.name.eq_ignore_ascii_case(name))
+        {
+            if !variable.constant {
+                return None;
+            }
+            let expression = constant::parse_expression(variable.initial.as_deref()?)?;
+            return constant::evaluate(
+                &expression,
+                &|n, c, d| constant(globals, locals, n, c, d),
+                depth + 1,
+            );
+        }
+        globals.constant(name, container, depth)
+    }
+    types::resolve_type_text_with(globals, text, &|n, c, d| constant(globals, locals, n, c, d))
 }
 
 /// Every place in every body that refers to `definition`, with its body.

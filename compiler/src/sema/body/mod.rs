@@ -527,7 +527,7 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
 }
 
 /// Whether an array type (at any depth) has a bound that did not resolve.
-fn has_open_bounds(ty: &Type) -> bool {
+pub(crate) fn has_open_bounds(ty: &Type) -> bool {
     match ty {
         Type::Array { element, dims } => {
             dims.iter().any(Option::is_none) || has_open_bounds(element)
