@@ -391,4 +391,17 @@ pub enum Instr {
         /// Copies out of the frame after the body returns.
         outputs: Vec<Transfer>,
     },
+    /// `dst := ` the address of an element of an array with open bounds: the descriptor
+    /// (pointer, then low and high of each dimension as `i64`) gives the bounds, each index is
+    /// checked against them (a fault outside), and the element is `stride` bytes.
+    OpenElement {
+        /// The pointer written.
+        dst: Operand,
+        /// The open array's descriptor.
+        descriptor: Operand,
+        /// One index per dimension, with its integer type.
+        indices: Vec<(Operand, Elementary)>,
+        /// Bytes per element.
+        stride: u32,
+    },
 }

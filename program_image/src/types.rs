@@ -62,6 +62,15 @@ pub enum TypeDef {
         /// The interface's name.
         name: String,
     },
+    /// A VAR_IN_OUT of an array with open bounds (`ARRAY[*] OF T`): a descriptor of
+    /// `8 + 16 * rank` bytes, the pointer to the caller's array, then each dimension's low and
+    /// high bound as `i64`.
+    OpenArray {
+        /// The element type.
+        element: TypeId,
+        /// The number of dimensions.
+        rank: u32,
+    },
 }
 
 /// What a [`TypeDef::Struct`] is.
@@ -119,6 +128,7 @@ impl TypeDef {
             Self::Enum { base, .. } => u64::from(base.size_bytes()),
             Self::Pointer { .. } => 8,
             Self::Interface { .. } => 16,
+            Self::OpenArray { rank, .. } => 8 + 16 * u64::from(*rank),
         }
     }
 }

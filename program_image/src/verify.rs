@@ -144,6 +144,7 @@ impl ProgramImage {
                 }
                 TypeDef::Struct { members, .. } => members.iter().all(|m| before(m.ty)),
                 TypeDef::Enum { .. } | TypeDef::Interface { .. } => true,
+                TypeDef::OpenArray { element, rank } => before(*element) && (1..=8).contains(rank),
                 TypeDef::Pointer { target, .. } => {
                     target.is_none_or(|t| (t as usize) < self.types.len())
                 }
@@ -423,6 +424,24 @@ impl ProgramImage {
                                 ));
                             }
                         }
+                    }
+                }
+                Instr::OpenElement {
+                    dst,
+                    descriptor,
+                    indices,
+                    ..
+                } => {
+                    if indices.is_empty() || indices.len() > 8 {
+                        return Err(format!(
+                            "instruction {word}: an open array of {} dimensions",
+                            indices.len()
+                        ));
+                    }
+                    operand(*dst, 8, word)?;
+                    operand(*descriptor, 8 + 16 * indices.len() as u64, word)?;
+                    for (index, ty) in indices {
+                        operand(*index, u64::from(ty.size_bytes()), word)?;
                     }
                 }
                 Instr::ToText {

@@ -646,3 +646,41 @@ fn array_bounds_may_name_local_constants() {
     );
     check(&s, &[("main.b.last", "6"), ("main.s", "6")]);
 }
+
+#[test]
+fn open_arrays_take_any_length_with_their_bounds() {
+    let s = run(
+        "FUNCTION SumAll : DINT VAR_IN_OUT values : ARRAY[*] OF INT; END_VAR VAR i : DINT; END_VAR
+         FOR i := LOWER_BOUND(values, 1) TO UPPER_BOUND(values, 1) DO SumAll := SumAll + values[i]; values[i] := 0; END_FOR; END_FUNCTION
+         FUNCTION Corner : INT VAR_IN_OUT grid : ARRAY[*, *] OF INT; END_VAR Corner := grid[UPPER_BOUND(grid, 1), UPPER_BOUND(grid, 2)]; END_FUNCTION
+         FUNCTION_BLOCK FB_Pick VAR_IN_OUT data : ARRAY[*] OF INT; END_VAR VAR_INPUT pos : DINT; END_VAR VAR_OUTPUT picked : INT; END_VAR picked := data[pos]; END_FUNCTION_BLOCK
+         PROGRAM main VAR a : ARRAY[1..4] OF INT := [1, 2, 3, 4]; b : ARRAY[-2..0] OF INT := [10, 20, 30]; g : ARRAY[0..1, 5..7] OF INT;
+         sa : DINT; sb : DINT; c : INT; p : FB_Pick; n : INT; END_VAR
+         g[1, 7] := 99; sa := SumAll(a); sb := SumAll(b); c := Corner(g); p(data := b, pos := -1); n := a[2];
+         END_PROGRAM",
+        1,
+    );
+    check(
+        &s,
+        &[
+            ("main.sa", "10"),
+            ("main.sb", "60"),
+            ("main.c", "99"),
+            ("main.p.picked", "0"),
+            ("main.n", "0"),
+        ],
+    );
+    let s = run(
+        "FUNCTION Get : INT VAR_IN_OUT v : ARRAY[*] OF INT; END_VAR VAR_INPUT i : DINT; END_VAR Get := v[i]; END_FUNCTION
+         PROGRAM main VAR a : ARRAY[1..3] OF INT; x : INT; END_VAR x := Get(a, 4); END_PROGRAM",
+        1,
+    );
+    assert!(matches!(
+        s.faults()[0].kind,
+        runtime::engine::FaultKind::IndexOutOfBounds {
+            index: 4,
+            low: 1,
+            high: 3
+        }
+    ));
+}

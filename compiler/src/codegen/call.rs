@@ -457,7 +457,9 @@ impl<'p> BodyGen<'_, '_, 'p> {
                 call.stores.push((temp, slot.ty.clone(), target));
                 continue;
             }
-            let caller = if slot.by_ref {
+            let caller = if let LayShape::OpenArray { .. } = slot.lay.shape {
+                self.open_array_descriptor(value, &slot.lay)?
+            } else if slot.by_ref {
                 self.address_of(value)?
             } else {
                 self.expr_as(value, &slot.ty)?
@@ -541,7 +543,11 @@ impl<'p> BodyGen<'_, '_, 'p> {
             }
             let member = self.instance_member(&typed, &name, true)?;
             if member.1 {
-                let pointer = self.address_of(value)?;
+                let pointer = if let LayShape::OpenArray { .. } = member.0.lay.shape {
+                    self.open_array_descriptor(value, &member.0.lay)?
+                } else {
+                    self.address_of(value)?
+                };
                 self.store(&member.0, pointer)?;
             } else {
                 let operand = self.expr_as(value, &member.0.ty)?;

@@ -177,6 +177,14 @@ impl BodyGen<'_, '_, '_> {
     /// A stored variable: follows VAR_IN_OUT and reference slots to their target.
     fn slot_place(&mut self, place: Place, declared: Type, by_ref: bool) -> Gen<Typed> {
         let follow = (by_ref || matches!(declared, Type::Reference(_))) && !self.raw_references;
+        if by_ref && let Some(lay) = self.open_array_lay(&declared)? {
+            // An open array is reached through its descriptor, which stays where it is.
+            let ty = match declared {
+                Type::Reference(target) => *target,
+                other => other,
+            };
+            return Ok(Typed { place, ty, lay });
+        }
         if follow {
             let target = match declared {
                 Type::Reference(target) => *target,
@@ -482,6 +490,42 @@ impl BodyGen<'_, '_, '_> {
         let base_node = children.next().ok_or("an index of nothing")?;
         let indices: Vec<SyntaxNode> = children.collect();
         let base = self.place(&base_node)?;
+        if let LayShape::OpenArray {
+            element,
+            element_ty,
+            rank,
+        } = base.lay.shape.clone()
+        {
+            if indices.len() != rank as usize {
+                return Err(format!(
+                    "{} index(es) for {rank} dimension(s)",
+                    indices.len()
+                ));
+            }
+            let Place::Direct(descriptor) = base.place else {
+                return Err("an open array reached through a pointer".to_owned());
+            };
+            let mut operands = Vec::new();
+            for index in &indices {
+                let (value, ty) = self.expr(index, None)?;
+                let scalar = self
+                    .scalar_of(&ty)
+                    .ok_or("an array index must be an integer")?;
+                operands.push((value, scalar));
+            }
+            let dst = self.temp(8);
+            self.emit(Instr::OpenElement {
+                dst,
+                descriptor,
+                indices: operands,
+                stride: element.size,
+            });
+            return Ok(Typed {
+                place: Place::Indirect(dst),
+                ty: element_ty,
+                lay: *element,
+            });
+        }
         let LayShape::Array {
             element,
             element_ty,
@@ -947,6 +991,63 @@ impl BodyGen<'_, '_, '_> {
             b: zero,
         });
         Ok((dst, Type::BOOL))
+    }
+
+    /// The descriptor layout of a VAR_IN_OUT whose type (`declared`, as a reference) is an
+    /// array with open bounds.
+    pub(crate) fn open_array_lay(&mut self, declared: &Type) -> Gen<Option<Lay>> {
+        let target = match declared {
+            Type::Reference(target) => &**target,
+            other => other,
+        };
+        if super::layout::open_array(target).is_none() {
+            return Ok(None);
+        }
+        let reference = Type::Reference(Box::new(target.clone()));
+        Ok(Some(self.build.layouts.of(&reference)?))
+    }
+
+    /// The descriptor of the array `node` names, for a VAR_IN_OUT with open bounds: a pointer
+    /// to it and its bounds (an open array passed on gives its own descriptor).
+    pub(crate) fn open_array_descriptor(&mut self, node: &SyntaxNode, lay: &Lay) -> Gen<Operand> {
+        let typed = self.place(node)?;
+        if let LayShape::OpenArray { .. } = typed.lay.shape {
+            return match typed.place {
+                Place::Direct(descriptor) => Ok(descriptor),
+                _ => Err("an open array reached through a pointer".to_owned()),
+            };
+        }
+        let LayShape::Array { dims, .. } = typed.lay.shape.clone() else {
+            return Err(format!("{} is not an array", typed.ty));
+        };
+        let LayShape::OpenArray { rank, .. } = lay.shape else {
+            return Err("not an open array".to_owned());
+        };
+        if dims.len() != rank as usize {
+            return Err(format!(
+                "an array of {} dimension(s) for {rank}",
+                dims.len()
+            ));
+        }
+        let pointer = self.pointer_to(&typed)?;
+        let descriptor = self.temp(lay.size);
+        self.emit(Instr::Move {
+            ty: IE::Lword,
+            dst: descriptor,
+            src: pointer,
+        });
+        for (dim, (low, high)) in dims.iter().enumerate() {
+            for (k, bound) in [low, high].into_iter().enumerate() {
+                let value = self.build.scalar_constant(*bound as u64, IE::Lint);
+                let at = shifted(descriptor, 8 + 16 * dim as u32 + 8 * k as u32);
+                self.emit(Instr::Move {
+                    ty: IE::Lint,
+                    dst: at,
+                    src: value,
+                });
+            }
+        }
+        Ok(descriptor)
     }
 
     /// The layout of a type.

@@ -51,6 +51,12 @@ pub(crate) enum LayShape {
     Pointer,
     /// An interface value (16 bytes: a pointer to the instance and its class).
     Interface,
+    /// The descriptor of a VAR_IN_OUT array with open bounds: pointer, then bounds.
+    OpenArray {
+        element: Box<Lay>,
+        element_ty: Type,
+        rank: u32,
+    },
 }
 
 /// A member of a structure.
@@ -98,6 +104,16 @@ impl<'p> Instance<'p> {
 /// The image type of a checker elementary type; the strings are not elementary in the image.
 pub(crate) fn image_elementary(e: Elementary) -> Option<IE> {
     IE::ALL.iter().copied().find(|ie| ie.name() == e.name())
+}
+
+/// The element type and rank of an array whose bounds are all open (`ARRAY[*, *] OF T`).
+pub(crate) fn open_array(ty: &Type) -> Option<(&Type, u32)> {
+    match ty {
+        Type::Array { element, dims } if !dims.is_empty() && dims.iter().all(Option::is_none) => {
+            Some((element, dims.len() as u32))
+        }
+        _ => None,
+    }
 }
 
 /// Whether variables of this section live in the instance.
@@ -265,6 +281,23 @@ impl<'g, 'p> Layouts<'g, 'p> {
                         element: Box::new(element_lay),
                         element_ty: (**element).clone(),
                         dims: bounds,
+                    },
+                })
+            }
+            Type::Reference(target) if open_array(target).is_some() => {
+                let (element, rank) = open_array(target).ok_or("an open array")?;
+                let element_lay = self.of(element)?;
+                Ok(Lay {
+                    size: 8 + 16 * rank,
+                    align: 8,
+                    id: self.add(TypeDef::OpenArray {
+                        element: element_lay.id,
+                        rank,
+                    }),
+                    shape: LayShape::OpenArray {
+                        element: Box::new(element_lay),
+                        element_ty: element.clone(),
+                        rank,
                     },
                 })
             }

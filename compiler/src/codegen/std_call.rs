@@ -3,7 +3,7 @@
 
 use program_image::{BinaryOp, CompareOp, Elementary as IE, Instr, Operand, StdFunction, UnaryOp};
 
-use super::body::{BodyGen, Gen};
+use super::body::{BodyGen, Gen, Place};
 use super::call::Argument;
 use super::expr::concrete;
 use super::layout::LayShape;
@@ -339,6 +339,42 @@ impl BodyGen<'_, '_, '_> {
                 if let Some(first) = first_at {
                     self.patch(to_first, first);
                 }
+                Ok(Some((dst, result_ty)))
+            }
+            "LOWER_BOUND" | "UPPER_BOUND" => {
+                let [array, dim] = values.as_slice() else {
+                    return Err(format!("{name} needs an array and a dimension"));
+                };
+                let dim = match super::constant::evaluate_node(dim, self.scope.globals) {
+                    Some(super::constant::Value::Int(d)) if d >= 1 => d as u32,
+                    _ => return Err(format!("{name}'s dimension must be a constant from 1")),
+                };
+                let upper = upper == "UPPER_BOUND";
+                let typed = self.place(array)?;
+                let scalar = self.scalar_of(&result_ty).unwrap_or(IE::Dint);
+                let bound = match (&typed.lay.shape, typed.place) {
+                    (LayShape::OpenArray { rank, .. }, Place::Direct(descriptor))
+                        if dim <= *rank =>
+                    {
+                        super::expr::shifted(
+                            descriptor,
+                            8 + 16 * (dim - 1) + if upper { 8 } else { 0 },
+                        )
+                    }
+                    (LayShape::Array { dims, .. }, _) if dim as usize <= dims.len() => {
+                        let (low, high) = dims[dim as usize - 1];
+                        self.build
+                            .scalar_constant((if upper { high } else { low }) as u64, IE::Lint)
+                    }
+                    _ => return Err(format!("{name}: the array has no dimension {dim}")),
+                };
+                let dst = self.temp(8);
+                self.emit(Instr::Convert {
+                    from: IE::Lint,
+                    to: scalar,
+                    dst,
+                    src: bound,
+                });
                 Ok(Some((dst, result_ty)))
             }
             "ADR" => {

@@ -384,6 +384,43 @@ fn lower(instr: &Instr, regions: &Regions, sizes: &[usize]) -> Result<Op, String
                 Ok(call_frame(x, method, this, &inputs, &outputs)?)
             })
         }
+        Instr::OpenElement {
+            dst,
+            descriptor,
+            indices,
+            stride,
+        } => {
+            let (dst, descriptor, stride) = (a(dst), a(descriptor), u64::from(*stride));
+            let indices: Vec<(Addr, E)> = indices
+                .iter()
+                .map(|(operand, ty)| (a(operand), *ty))
+                .collect();
+            Box::new(move |x| {
+                let pointer = x.get::<u64>(descriptor)?;
+                let mut linear: u64 = 0;
+                for (dim, (index, ty)) in indices.iter().enumerate() {
+                    let bound = |k: u32| Addr {
+                        offset: descriptor.offset + 8 + 16 * dim as u32 + k,
+                        ..descriptor
+                    };
+                    let (low, high) = (x.get::<i64>(bound(0))?, x.get::<i64>(bound(8))?);
+                    let i = sign_extend(read_raw(x, *index, *ty)?, *ty);
+                    if i < low || i > high {
+                        return Err(Box::new(FaultKind::IndexOutOfBounds {
+                            index: i,
+                            low,
+                            high,
+                        }));
+                    }
+                    let count = high.wrapping_sub(low).wrapping_add(1) as u64;
+                    linear = linear
+                        .wrapping_mul(count)
+                        .wrapping_add(i.wrapping_sub(low) as u64);
+                }
+                x.set::<u64>(dst, pointer.wrapping_add(linear.wrapping_mul(stride)))?;
+                Ok(Flow::Next)
+            })
+        }
         Instr::ToText {
             from,
             wide,
