@@ -404,4 +404,10 @@ pub enum Instr {
         /// Bytes per element.
         stride: u32,
     },
+    /// `dst := ` the task clock (the start of the current cycle) in nanoseconds, as a LINT:
+    /// what SFC step times and timers measure against.
+    Now {
+        /// The LINT written.
+        dst: Operand,
+    },
 }

@@ -444,6 +444,7 @@ impl ProgramImage {
                         operand(*index, u64::from(ty.size_bytes()), word)?;
                     }
                 }
+                Instr::Now { dst } => operand(*dst, 8, word)?,
                 Instr::ToText {
                     from,
                     wide,

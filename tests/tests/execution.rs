@@ -684,3 +684,49 @@ fn open_arrays_take_any_length_with_their_bounds() {
         }
     ));
 }
+
+#[test]
+fn a_textual_sfc_chart_steps_through_its_transitions() {
+    let source = "FUNCTION_BLOCK FB_Seq VAR_INPUT go : BOOL; END_VAR VAR_OUTPUT filled : INT; pulses : INT; held : INT; phase : INT; atIdle : BOOL; atDone : BOOL; END_VAR
+         atIdle := Idle.X; atDone := Done.X;
+         INITIAL_STEP Idle: Mark(N); END_STEP
+         TRANSITION FROM Idle TO Fill := go; END_TRANSITION
+         STEP Fill: Count(N); Once(P); Hold(S); END_STEP
+         TRANSITION FROM Fill TO Done := Fill.T >= T#30ms; END_TRANSITION
+         STEP Done: Hold(R); END_STEP
+         TRANSITION FROM Done TO Idle := NOT go; END_TRANSITION
+         ACTION Mark: phase := 0; END_ACTION
+         ACTION Count: filled := filled + 1; phase := 1; END_ACTION
+         ACTION Once: pulses := pulses + 1; END_ACTION
+         ACTION Hold: held := held + 1; END_ACTION
+         END_FUNCTION_BLOCK
+         PROGRAM main VAR seq : FB_Seq; n : INT; idle : BOOL; done : BOOL; END_VAR
+         n := n + 1; seq(go := n >= 2, atIdle => idle, atDone => done);
+         END_PROGRAM";
+    // 10 ms cycles: Idle at 1, go from 2 (Fill acts from cycle 3), Fill for 30 ms, then Done;
+    // `idle` and `done` show the steps as the previous cycle left them.
+    let s = run(source, 3);
+    check(
+        &s,
+        &[
+            ("main.seq.phase", "1"),
+            ("main.seq.filled", "1"),
+            ("main.seq.pulses", "1"),
+            ("main.idle", "FALSE"),
+        ],
+    );
+    let s = run(source, 8);
+    // Fill became active at 10 ms, so its T reaches 30 ms in the cycle at 40 ms (its third).
+    check(
+        &s,
+        &[
+            ("main.seq.filled", "3"),
+            ("main.seq.pulses", "1"),
+            ("main.done", "TRUE"),
+            ("main.seq.held", "3"),
+            ("main.seq.Done.X", "TRUE"),
+            ("main.seq.Fill.X", "FALSE"),
+            ("main.seq.Done.T", "T#30ms"),
+        ],
+    );
+}

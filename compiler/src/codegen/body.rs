@@ -214,8 +214,13 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
 
     /// Generates every statement under `root`.
     pub(crate) fn body(&mut self, root: &SyntaxNode) -> Gen<()> {
-        for child in root.children() {
-            self.statement_or_list(&child)?;
+        let top = super::sfc::top_level(root);
+        if top.children().any(|c| c.kind() == SyntaxKind::STEP_DECL) {
+            self.chart(root)?;
+        } else {
+            for child in root.children() {
+                self.statement_or_list(&child)?;
+            }
         }
         // JMP goes to a label anywhere in the body, before or after it.
         for (at, name) in std::mem::take(&mut self.jumps) {
@@ -226,6 +231,11 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
             self.patch(at, target);
         }
         Ok(())
+    }
+
+    /// Generates a statement or a list of them.
+    pub(crate) fn statements_of(&mut self, node: &SyntaxNode) -> Gen<()> {
+        self.statement_or_list(node)
     }
 
     fn statement_or_list(&mut self, node: &SyntaxNode) -> Gen<()> {
@@ -415,7 +425,7 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
                 Ok(())
             }
             SyntaxKind::STEP_DECL | SyntaxKind::TRANSITION_DECL | SyntaxKind::ACTION_DECL => {
-                Err("textual SFC is not supported by the code generator yet".to_owned())
+                Err("SFC steps, transitions and actions belong at the top of a body".to_owned())
             }
             other => Err(format!("cannot compile a {other:?}")),
         }

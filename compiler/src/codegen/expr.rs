@@ -357,6 +357,26 @@ impl BodyGen<'_, '_, '_> {
             Type::EnumNamespace(_) => {
                 return Err(format!("'{member_name}' is a value, not a variable"));
             }
+            Type::Step => {
+                // `Step.X` (active) and `Step.T` (elapsed time) of a textual SFC step.
+                let step_name = base.text().to_string().trim().to_owned();
+                let sfc = self
+                    .instance
+                    .as_ref()
+                    .and_then(|i| i.sfc.clone())
+                    .ok_or("SFC steps outside a chart")?;
+                let step = sfc
+                    .step(&step_name)
+                    .ok_or_else(|| format!("no step '{step_name}'"))?;
+                return match member_name.to_ascii_uppercase().as_str() {
+                    "X" => self.typed(Place::Direct(Operand::Instance(step.active)), Type::BOOL),
+                    "T" => self.typed(
+                        Place::Direct(Operand::Instance(step.elapsed)),
+                        Type::Elementary(Elementary::Time),
+                    ),
+                    _ => Err(format!("a step has X and T, not '{member_name}'")),
+                };
+            }
             _ => {}
         }
         let base = self.place(&base)?;

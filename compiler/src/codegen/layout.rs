@@ -90,6 +90,8 @@ pub(crate) struct Instance<'p> {
     pub(crate) align: u32,
     pub(crate) id: TypeId,
     pub(crate) slots: Vec<Slot<'p>>,
+    /// The state of the chart when the body is textual SFC, after the variables.
+    pub(crate) sfc: Option<super::sfc::SfcLayout>,
 }
 
 impl<'p> Instance<'p> {
@@ -598,6 +600,18 @@ impl<'g, 'p> Layouts<'g, 'p> {
                 });
             }
         }
+        let sfc = match pou
+            .body
+            .st_text()
+            .and_then(|text| super::sfc::SfcLayout::of_body(text, offset))
+        {
+            Some((sfc, end)) => {
+                offset = end;
+                align = align.max(8);
+                Some(sfc)
+            }
+            None => None,
+        };
         // An empty instance still has a size, so two instances never share an address.
         let size = offset.max(1).next_multiple_of(align);
         let members = slots
@@ -625,6 +639,7 @@ impl<'g, 'p> Layouts<'g, 'p> {
             align,
             id,
             slots,
+            sfc,
         })
     }
 }

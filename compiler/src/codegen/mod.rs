@@ -20,6 +20,7 @@ mod interface;
 mod layout;
 mod program;
 mod property;
+mod sfc;
 mod std_call;
 
 use std::path::Path;

@@ -723,6 +723,27 @@ fn instance_symbols<'p>(
         return Ok(());
     }
     let instance = layouts.instance(pou)?;
+    // The steps of a chart can be watched like variables: `Main.Fill.X`, `Main.Fill.T`.
+    for step in instance.sfc.iter().flat_map(|sfc| &sfc.steps) {
+        for (member, ty, offset) in [
+            ("X", Type::BOOL, step.active),
+            (
+                "T",
+                Type::Elementary(crate::elementary::Elementary::Time),
+                step.elapsed,
+            ),
+        ] {
+            let id = layouts.of(&ty)?.id;
+            data.symbols.push(Symbol {
+                path: format!("{path}.{}.{member}", step.name),
+                ty: id,
+                region: Region::Data,
+                offset: base + offset,
+                bit: None,
+                flags: SymbolFlags(SymbolFlags::OUTPUT),
+            });
+        }
+    }
     for slot in &instance.slots {
         let child = format!("{path}.{}", slot.var.name);
         let flags = flags_of(slot.var);

@@ -421,6 +421,14 @@ fn lower(instr: &Instr, regions: &Regions, sizes: &[usize]) -> Result<Op, String
                 Ok(Flow::Next)
             })
         }
+        Instr::Now { dst } => {
+            let dst = a(dst);
+            Box::new(move |x| {
+                let now = x.now_ns;
+                x.set::<i64>(dst, now)?;
+                Ok(Flow::Next)
+            })
+        }
         Instr::ToText {
             from,
             wide,

@@ -1,0 +1,398 @@
+//! Textual SFC (IEC 61131-3 §6.7): steps, transitions and actions written in a POU's body.
+//!
+//! Each cycle the chart (1) activates its initial steps on the first cycle, (2) brings the
+//! elapsed time `T` of every active step up to date, (3) runs the actions of the active steps
+//! by their qualifiers (N while active, P once on activation, S and R setting and resetting a
+//! stored action that then runs while set), then (4) evaluates every transition against the
+//! steps active before any fires and fires those enabled: their source steps are deactivated
+//! and their target steps activated (with `T` from zero), to act from the next cycle on.
+
+use std::collections::HashMap;
+
+use program_image::{BinaryOp, Elementary as IE, Instr, Operand};
+
+use super::body::{BodyGen, Gen};
+use super::expr::tokens;
+use crate::sema::ty::Type;
+use crate::syntax::{SyntaxKind, SyntaxNode, parse_statements};
+
+/// One step's state in the instance.
+#[derive(Clone, Debug)]
+pub(crate) struct StepSlots {
+    pub(crate) name: String,
+    pub(crate) initial: bool,
+    /// BOOL: active (`Step.X`).
+    pub(crate) active: u32,
+    /// BOOL: activated by the last transition, so its P actions run this cycle.
+    pub(crate) fresh: u32,
+    /// TIME: elapsed since activation (`Step.T`).
+    pub(crate) elapsed: u32,
+    /// LINT: the task clock at activation.
+    pub(crate) started: u32,
+}
+
+/// The SFC state a chart keeps at the end of its instance.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct SfcLayout {
+    /// BOOL: the initial steps have been activated.
+    pub(crate) initialised: u32,
+    pub(crate) steps: Vec<StepSlots>,
+    /// BOOL per stored action (S and R qualifiers), by lower-case action name.
+    pub(crate) stored: Vec<(String, u32)>,
+}
+
+impl SfcLayout {
+    /// The layout of the chart in `text` placed from `offset` on, with its end; `None` when
+    /// the text has no steps.
+    pub(crate) fn of_body(text: &str, offset: u32) -> Option<(Self, u32)> {
+        if !text.to_ascii_uppercase().contains("STEP") {
+            return None;
+        }
+        let root = top_level(&parse_statements(text).syntax());
+        let mut layout = Self {
+            initialised: offset,
+            ..Self::default()
+        };
+        let mut at = (offset + 1).next_multiple_of(8);
+        for step in root
+            .children()
+            .filter(|n| n.kind() == SyntaxKind::STEP_DECL)
+        {
+            let Some(name) = step.children().find(|c| c.kind() == SyntaxKind::NAME) else {
+                continue;
+            };
+            let initial = tokens(&step)
+                .next()
+                .is_some_and(|t| t.text().eq_ignore_ascii_case("INITIAL_STEP"));
+            layout.steps.push(StepSlots {
+                name: name.text().to_string().trim().to_owned(),
+                initial,
+                active: at,
+                fresh: at + 1,
+                elapsed: at + 4,
+                started: at + 8,
+            });
+            at += 16;
+            for (action, qualifier) in associations(&step) {
+                if matches!(qualifier.as_str(), "S" | "R")
+                    && !layout.stored.iter().any(|(a, _)| *a == action)
+                {
+                    layout.stored.push((action, 0));
+                }
+            }
+        }
+        if layout.steps.is_empty() {
+            return None;
+        }
+        for (_, slot) in &mut layout.stored {
+            *slot = at;
+            at += 1;
+        }
+        Some((layout, at.next_multiple_of(8)))
+    }
+
+    /// The step called `name`.
+    pub(crate) fn step(&self, name: &str) -> Option<&StepSlots> {
+        self.steps
+            .iter()
+            .find(|s| s.name.eq_ignore_ascii_case(name))
+    }
+}
+
+/// The statements at the top of a body: a chart's steps, transitions and actions are among
+/// them.
+pub(crate) fn top_level(root: &SyntaxNode) -> SyntaxNode {
+    root.children()
+        .find(|n| n.kind() == SyntaxKind::STATEMENT_LIST)
+        .unwrap_or_else(|| root.clone())
+}
+
+/// The action associations of a step: (lower-case action name, upper-case qualifier).
+fn associations(step: &SyntaxNode) -> Vec<(String, String)> {
+    step.descendants()
+        .filter(|n| n.kind() == SyntaxKind::CALL_EXPR)
+        .filter_map(|call| {
+            let name = call
+                .children()
+                .next()?
+                .text()
+                .to_string()
+                .trim()
+                .to_lowercase();
+            let qualifier = call
+                .descendants()
+                .find(|n| n.kind() == SyntaxKind::ARG)
+                .map(|arg| arg.text().to_string().trim().to_ascii_uppercase())
+                .unwrap_or_else(|| "N".to_owned());
+            Some((name, qualifier))
+        })
+        .collect()
+}
+
+fn step_names(list: &SyntaxNode) -> Vec<String> {
+    list.children()
+        .filter(|n| n.kind() == SyntaxKind::NAME_REF)
+        .map(|n| n.text().to_string().trim().to_owned())
+        .collect()
+}
+
+impl BodyGen<'_, '_, '_> {
+    fn sfc(&self) -> Gen<SfcLayout> {
+        self.instance
+            .as_ref()
+            .and_then(|i| i.sfc.clone())
+            .ok_or_else(|| "SFC steps are only allowed in a program or function block".to_owned())
+    }
+
+    fn set_bool(&mut self, offset: u32, value: bool) {
+        let constant = self.build.constant(&[u8::from(value)]);
+        self.emit(Instr::Move {
+            ty: IE::Bool,
+            dst: Operand::Instance(offset),
+            src: constant,
+        });
+    }
+
+    fn activate(&mut self, step: &StepSlots, now: Operand) {
+        self.set_bool(step.active, true);
+        self.set_bool(step.fresh, true);
+        self.emit(Instr::Move {
+            ty: IE::Lint,
+            dst: Operand::Instance(step.started),
+            src: now,
+        });
+        let zero = self.build.constant(&[0; 4]);
+        self.emit(Instr::Move {
+            ty: IE::Time,
+            dst: Operand::Instance(step.elapsed),
+            src: zero,
+        });
+    }
+
+    /// Runs the action `name`: one declared in the chart (its statements, inline) or an action
+    /// of the POU.
+    fn run_action(&mut self, name: &str, inline: &HashMap<String, SyntaxNode>) -> Gen<()> {
+        if let Some(statements) = inline.get(name) {
+            let statements = statements.clone();
+            return self.statements_of(&statements);
+        }
+        let pou = self.pou;
+        let action = pou
+            .actions
+            .iter()
+            .find(|a| a.name.eq_ignore_ascii_case(name))
+            .ok_or_else(|| {
+                format!(
+                    "the step names '{name}', which is no action of '{}'",
+                    pou.name
+                )
+            })?;
+        let index = self.build.pou_index(&pou.name, Some(&action.name))?;
+        self.emit(Instr::CallBlock {
+            pou: index,
+            instance: Operand::Instance(0),
+            indirect: false,
+        });
+        Ok(())
+    }
+
+    /// Generates a body holding a chart: its plain statements, then one step of the chart.
+    pub(crate) fn chart(&mut self, root: &SyntaxNode) -> Gen<()> {
+        let root = &top_level(root);
+        let sfc = self.sfc()?;
+        let mut inline = HashMap::new();
+        for action in root
+            .children()
+            .filter(|n| n.kind() == SyntaxKind::ACTION_DECL)
+        {
+            let name = action.children().find(|c| c.kind() == SyntaxKind::NAME);
+            let body = action
+                .children()
+                .find(|c| c.kind() == SyntaxKind::STATEMENT_LIST);
+            if let (Some(name), Some(body)) = (name, body) {
+                inline.insert(name.text().to_string().trim().to_lowercase(), body);
+            }
+        }
+        for child in root.children() {
+            if !matches!(
+                child.kind(),
+                SyntaxKind::STEP_DECL | SyntaxKind::TRANSITION_DECL | SyntaxKind::ACTION_DECL
+            ) {
+                self.statements_of(&child)?;
+            }
+        }
+        let now = self.temp(8);
+        self.emit(Instr::Now { dst: now });
+        // (1) The first cycle activates the initial steps.
+        let initialised = Operand::Instance(sfc.initialised);
+        let skip = self.emit(Instr::JumpIf {
+            cond: initialised,
+            target: 0,
+        });
+        for step in sfc.steps.iter().filter(|s| s.initial) {
+            self.activate(step, now);
+        }
+        self.set_bool(sfc.initialised, true);
+        let after = self.here();
+        self.patch(skip, after);
+        // (2) Elapsed times of the active steps.
+        for step in &sfc.steps {
+            let skip = self.emit(Instr::JumpIfNot {
+                cond: Operand::Instance(step.active),
+                target: 0,
+            });
+            let nanos = self.temp(8);
+            self.emit(Instr::Binary {
+                op: BinaryOp::Sub,
+                ty: IE::Lint,
+                dst: nanos,
+                a: now,
+                b: Operand::Instance(step.started),
+            });
+            self.emit(Instr::Convert {
+                from: IE::Ltime,
+                to: IE::Time,
+                dst: Operand::Instance(step.elapsed),
+                src: nanos,
+            });
+            let after = self.here();
+            self.patch(skip, after);
+        }
+        // (3) Actions by qualifier.
+        let steps: Vec<SyntaxNode> = root
+            .children()
+            .filter(|n| n.kind() == SyntaxKind::STEP_DECL)
+            .collect();
+        for node in &steps {
+            let Some(name) = node.children().find(|c| c.kind() == SyntaxKind::NAME) else {
+                continue;
+            };
+            let step = sfc
+                .step(name.text().to_string().trim())
+                .cloned()
+                .ok_or("a step without state")?;
+            for (action, qualifier) in associations(node) {
+                let condition = match qualifier.as_str() {
+                    "N" => Operand::Instance(step.active),
+                    "P" | "P1" => {
+                        let both = self.temp(1);
+                        self.emit(Instr::Binary {
+                            op: BinaryOp::And,
+                            ty: IE::Bool,
+                            dst: both,
+                            a: Operand::Instance(step.active),
+                            b: Operand::Instance(step.fresh),
+                        });
+                        both
+                    }
+                    "S" | "R" => {
+                        let (_, stored) = sfc
+                            .stored
+                            .iter()
+                            .find(|(a, _)| *a == action)
+                            .ok_or("a stored action")?;
+                        let skip = self.emit(Instr::JumpIfNot {
+                            cond: Operand::Instance(step.active),
+                            target: 0,
+                        });
+                        self.set_bool(*stored, qualifier == "S");
+                        let after = self.here();
+                        self.patch(skip, after);
+                        continue;
+                    }
+                    other => {
+                        return Err(format!(
+                            "the action qualifier {other} is not supported yet (N, P, S and R are)"
+                        ));
+                    }
+                };
+                let skip = self.emit(Instr::JumpIfNot {
+                    cond: condition,
+                    target: 0,
+                });
+                self.run_action(&action, &inline)?;
+                let after = self.here();
+                self.patch(skip, after);
+            }
+        }
+        for (action, stored) in &sfc.stored {
+            let skip = self.emit(Instr::JumpIfNot {
+                cond: Operand::Instance(*stored),
+                target: 0,
+            });
+            self.run_action(action, &inline)?;
+            let after = self.here();
+            self.patch(skip, after);
+        }
+        for step in &sfc.steps {
+            self.set_bool(step.fresh, false);
+        }
+        // (4) Transitions: all evaluated first, then fired.
+        let mut fired = Vec::new();
+        for transition in root
+            .children()
+            .filter(|n| n.kind() == SyntaxKind::TRANSITION_DECL)
+        {
+            let lists: Vec<SyntaxNode> = transition
+                .children()
+                .filter(|n| n.kind() == SyntaxKind::STEP_LIST)
+                .collect();
+            let [from, to] = lists.as_slice() else {
+                return Err("a transition needs FROM and TO steps".to_owned());
+            };
+            let condition = transition
+                .children()
+                .find(|n| {
+                    !matches!(
+                        n.kind(),
+                        SyntaxKind::STEP_LIST
+                            | SyntaxKind::NAME
+                            | SyntaxKind::ARG_LIST
+                            | SyntaxKind::STATEMENT_LIST
+                    )
+                })
+                .ok_or("a transition needs a condition (':= condition;')")?;
+            let enabled = self.temp(1);
+            let value = self.expr_as(&condition, &Type::BOOL)?;
+            self.emit(Instr::Move {
+                ty: IE::Bool,
+                dst: enabled,
+                src: value,
+            });
+            for name in step_names(from) {
+                let step = sfc.step(&name).ok_or_else(|| format!("no step '{name}'"))?;
+                self.emit(Instr::Binary {
+                    op: BinaryOp::And,
+                    ty: IE::Bool,
+                    dst: enabled,
+                    a: enabled,
+                    b: Operand::Instance(step.active),
+                });
+            }
+            fired.push((enabled, step_names(from), step_names(to)));
+        }
+        for (enabled, from, to) in fired {
+            let skip = self.emit(Instr::JumpIfNot {
+                cond: enabled,
+                target: 0,
+            });
+            for name in &from {
+                let step = sfc
+                    .step(name)
+                    .ok_or_else(|| format!("no step '{name}'"))?
+                    .clone();
+                self.set_bool(step.active, false);
+            }
+            for name in &to {
+                let step = sfc
+                    .step(name)
+                    .ok_or_else(|| format!("no step '{name}'"))?
+                    .clone();
+                self.activate(&step, now);
+            }
+            let after = self.here();
+            self.patch(skip, after);
+        }
+        Ok(())
+    }
+}
