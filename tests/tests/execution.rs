@@ -687,11 +687,11 @@ fn open_arrays_take_any_length_with_their_bounds() {
 
 #[test]
 fn a_textual_sfc_chart_steps_through_its_transitions() {
-    let source = "FUNCTION_BLOCK FB_Seq VAR_INPUT go : BOOL; END_VAR VAR_OUTPUT filled : INT; pulses : INT; held : INT; phase : INT; atIdle : BOOL; atDone : BOOL; END_VAR
+    let source = "FUNCTION_BLOCK FB_Seq VAR_INPUT go : BOOL; END_VAR VAR_OUTPUT filled : INT; pulses : INT; held : INT; phase : INT; atIdle : BOOL; atDone : BOOL; valve : BOOL; END_VAR
          atIdle := Idle.X; atDone := Done.X;
          INITIAL_STEP Idle: Mark(N); END_STEP
          TRANSITION FROM Idle TO Fill := go; END_TRANSITION
-         STEP Fill: Count(N); Once(P); Hold(S); END_STEP
+         STEP Fill: Count(N); Once(P); Hold(S); valve(N); END_STEP
          TRANSITION FROM Fill TO Done := Fill.T >= T#30ms; END_TRANSITION
          STEP Done: Hold(R); END_STEP
          TRANSITION FROM Done TO Idle := NOT go; END_TRANSITION

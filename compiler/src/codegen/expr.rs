@@ -239,6 +239,21 @@ impl BodyGen<'_, '_, '_> {
         }
     }
 
+    /// The variable called `name` in this body's scope (an SFC boolean action).
+    pub(crate) fn variable_named(&mut self, name: &str) -> Gen<Typed> {
+        let node = crate::sema::constant::parse_expression(name)
+            .filter(|n| n.kind() == SyntaxKind::NAME_EXPR)
+            .ok_or_else(|| format!("'{name}' is neither an action nor a variable"))?;
+        let typed = self.name_place(&node)?;
+        if typed.ty != Type::BOOL {
+            return Err(format!(
+                "'{name}' is named as a step's action but is a {}, not an action or a BOOL",
+                typed.ty
+            ));
+        }
+        Ok(typed)
+    }
+
     fn name_place(&mut self, node: &SyntaxNode) -> Gen<Typed> {
         let mut parts = tokens(node);
         let first = parts.next().ok_or("an empty name")?;

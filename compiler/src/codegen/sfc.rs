@@ -196,6 +196,52 @@ impl BodyGen<'_, '_, '_> {
         Ok(())
     }
 
+    /// The condition under which an N or P association runs its action this cycle.
+    fn control(&mut self, qualifier: &str, step: &StepSlots) -> Gen<Operand> {
+        match qualifier {
+            "N" => Ok(Operand::Instance(step.active)),
+            "P" | "P1" => {
+                let both = self.temp(1);
+                self.emit(Instr::Binary {
+                    op: BinaryOp::And,
+                    ty: IE::Bool,
+                    dst: both,
+                    a: Operand::Instance(step.active),
+                    b: Operand::Instance(step.fresh),
+                });
+                Ok(both)
+            }
+            other => Err(format!(
+                "the action qualifier {other} is not supported yet (N, P, S and R are)"
+            )),
+        }
+    }
+
+    /// ORs `control` into the sum kept for the boolean action `name`.
+    fn or_into(&mut self, sums: &mut Vec<(String, Operand)>, name: String, control: Operand) {
+        match sums.iter().find(|(known, _)| *known == name) {
+            Some((_, sum)) => {
+                let sum = *sum;
+                self.emit(Instr::Binary {
+                    op: BinaryOp::Or,
+                    ty: IE::Bool,
+                    dst: sum,
+                    a: sum,
+                    b: control,
+                });
+            }
+            None => {
+                let sum = self.temp(1);
+                self.emit(Instr::Move {
+                    ty: IE::Bool,
+                    dst: sum,
+                    src: control,
+                });
+                sums.push((name, sum));
+            }
+        }
+    }
+
     /// Generates a body holding a chart: its plain statements, then one step of the chart.
     pub(crate) fn chart(&mut self, root: &SyntaxNode) -> Gen<()> {
         let root = &top_level(root);
@@ -263,6 +309,17 @@ impl BodyGen<'_, '_, '_> {
             .children()
             .filter(|n| n.kind() == SyntaxKind::STEP_DECL)
             .collect();
+        // An action may also be a BOOL variable (IEC's boolean action): it is TRUE exactly
+        // while some association controls it.
+        let is_action = |name: &str| {
+            inline.contains_key(name)
+                || self
+                    .pou
+                    .actions
+                    .iter()
+                    .any(|a| a.name.eq_ignore_ascii_case(name))
+        };
+        let mut boolean: Vec<(String, Operand)> = Vec::new();
         for node in &steps {
             let Some(name) = node.children().find(|c| c.kind() == SyntaxKind::NAME) else {
                 continue;
@@ -272,57 +329,51 @@ impl BodyGen<'_, '_, '_> {
                 .cloned()
                 .ok_or("a step without state")?;
             for (action, qualifier) in associations(node) {
-                let condition = match qualifier.as_str() {
-                    "N" => Operand::Instance(step.active),
-                    "P" | "P1" => {
-                        let both = self.temp(1);
-                        self.emit(Instr::Binary {
-                            op: BinaryOp::And,
-                            ty: IE::Bool,
-                            dst: both,
-                            a: Operand::Instance(step.active),
-                            b: Operand::Instance(step.fresh),
-                        });
-                        both
-                    }
-                    "S" | "R" => {
-                        let (_, stored) = sfc
-                            .stored
-                            .iter()
-                            .find(|(a, _)| *a == action)
-                            .ok_or("a stored action")?;
-                        let skip = self.emit(Instr::JumpIfNot {
-                            cond: Operand::Instance(step.active),
-                            target: 0,
-                        });
-                        self.set_bool(*stored, qualifier == "S");
-                        let after = self.here();
-                        self.patch(skip, after);
-                        continue;
-                    }
-                    other => {
-                        return Err(format!(
-                            "the action qualifier {other} is not supported yet (N, P, S and R are)"
-                        ));
-                    }
-                };
-                let skip = self.emit(Instr::JumpIfNot {
-                    cond: condition,
-                    target: 0,
-                });
-                self.run_action(&action, &inline)?;
-                let after = self.here();
-                self.patch(skip, after);
+                if matches!(qualifier.as_str(), "S" | "R") {
+                    let (_, stored) = sfc
+                        .stored
+                        .iter()
+                        .find(|(a, _)| *a == action)
+                        .ok_or("a stored action")?;
+                    let skip = self.emit(Instr::JumpIfNot {
+                        cond: Operand::Instance(step.active),
+                        target: 0,
+                    });
+                    self.set_bool(*stored, qualifier == "S");
+                    let after = self.here();
+                    self.patch(skip, after);
+                    continue;
+                }
+                let control = self.control(&qualifier, &step)?;
+                if is_action(&action) {
+                    let skip = self.emit(Instr::JumpIfNot {
+                        cond: control,
+                        target: 0,
+                    });
+                    self.run_action(&action, &inline)?;
+                    let after = self.here();
+                    self.patch(skip, after);
+                } else {
+                    self.or_into(&mut boolean, action, control);
+                }
             }
         }
         for (action, stored) in &sfc.stored {
-            let skip = self.emit(Instr::JumpIfNot {
-                cond: Operand::Instance(*stored),
-                target: 0,
-            });
-            self.run_action(action, &inline)?;
-            let after = self.here();
-            self.patch(skip, after);
+            if is_action(action) {
+                let skip = self.emit(Instr::JumpIfNot {
+                    cond: Operand::Instance(*stored),
+                    target: 0,
+                });
+                self.run_action(action, &inline)?;
+                let after = self.here();
+                self.patch(skip, after);
+            } else {
+                self.or_into(&mut boolean, action.clone(), Operand::Instance(*stored));
+            }
+        }
+        for (name, control) in boolean {
+            let variable = self.variable_named(&name)?;
+            self.store(&variable, control)?;
         }
         for step in &sfc.steps {
             self.set_bool(step.fresh, false);
