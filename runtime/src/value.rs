@@ -334,6 +334,8 @@ impl fmt::Display for Value {
         match self {
             Self::Bool(b) => write!(f, "{}", if *b { "TRUE" } else { "FALSE" }),
             Self::Int(v, _) => write!(f, "{v}"),
+            // A REAL prints with the digits an f32 holds (1.234, not 1.2339999675750732).
+            Self::Real(v, E::Real) => write!(f, "{}", *v as f32),
             Self::Real(v, _) => write!(f, "{v}"),
             Self::Time(v, ty) => write!(f, "{}", time_literal(*v, *ty)),
             Self::Text(text) => write!(f, "'{}'", text.replace('\'', "$'")),
@@ -371,10 +373,10 @@ impl Value {
         match self {
             Self::Bool(b) => b.to_string(),
             Self::Int(v, _) => v.to_string(),
-            Self::Real(v, _) if v.is_finite() => {
-                let text = format!("{v}");
-                text
-            }
+            Self::Real(v, ty) if v.is_finite() => match ty {
+                E::Real => format!("{}", *v as f32),
+                _ => format!("{v}"),
+            },
             Self::Enum(_, number) => number.to_string(),
             Self::Struct(members) => {
                 let inner: Vec<String> = members

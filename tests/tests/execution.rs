@@ -730,3 +730,62 @@ fn a_textual_sfc_chart_steps_through_its_transitions() {
         ],
     );
 }
+
+#[test]
+fn the_lc1200_conversion_table_holds_in_compiled_code() {
+    // LC1200 digest §2.5, row by row.
+    let s = run(
+        "PROGRAM main VAR a1 : INT; a2 : STRING; b1 : TIME; b2 : TOD; c1 : DATE; c2 : DT; d1 : BOOL; d2 : BOOL; d3 : BOOL; d4 : BOOL;
+         e1 : INT; e2 : BOOL; e3 : STRING; e4 : WORD; f1 : SINT; g1 : INT; g2 : INT; g3 : INT; g4 : INT; h1 : STRING; h2 : DWORD; h3 : SINT;
+         i1 : BOOL; i2 : INT; i3 : BYTE; k1 : WORD; k2 : WORD; k3 : TIME; k4 : REAL; k5 : BYTE; t1 : DINT; t2 : DINT; END_VAR
+         a1 := BOOL_TO_INT(TRUE); a2 := BOOL_TO_STRING(TRUE); b1 := BOOL_TO_TIME(TRUE); b2 := BOOL_TO_TOD(TRUE);
+         c1 := BOOL_TO_DATE(FALSE); c2 := BOOL_TO_DT(TRUE);
+         d1 := BYTE_TO_BOOL(2#11010101); d2 := INT_TO_BOOL(0); d3 := TIME_TO_BOOL(T#5ms); d4 := STRING_TO_BOOL('TRUE');
+         e1 := TO_INT(4.22); e2 := TO_BOOL(1); e3 := TO_STRING(342); e4 := TO_WORD('123');
+         f1 := INT_TO_SINT(4223);
+         g1 := REAL_TO_INT(1.5); g2 := REAL_TO_INT(1.4); g3 := REAL_TO_INT(-1.5); g4 := REAL_TO_INT(-1.4);
+         h1 := TIME_TO_STRING(T#12ms); h2 := TIME_TO_DWORD(T#5m); h3 := TOD_TO_SINT(TOD#00:00:00.012);
+         i1 := DATE_TO_BOOL(D#1970-01-01); i2 := DATE_TO_INT(D#1970-01-15); i3 := DT_TO_BYTE(DT#1970-01-15-05:05:05);
+         k1 := STRING_TO_WORD('abc34'); k2 := STRING_TO_WORD('34abc'); k3 := STRING_TO_TIME('T#127ms'); k4 := STRING_TO_REAL('1.234'); k5 := STRING_TO_BYTE('500');
+         t1 := TRUNC(1.9); t2 := TRUNC(-1.4);
+         END_PROGRAM",
+        1,
+    );
+    check(
+        &s,
+        &[
+            ("main.a1", "1"),
+            ("main.a2", "'TRUE'"),
+            ("main.b1", "T#1ms"),
+            ("main.b2", "TOD#00:00:00.001"),
+            ("main.c1", "D#1970-01-01"),
+            ("main.c2", "DT#1970-01-01-00:00:01"),
+            ("main.d1", "TRUE"),
+            ("main.d2", "FALSE"),
+            ("main.d3", "TRUE"),
+            ("main.d4", "TRUE"),
+            ("main.e1", "4"),
+            ("main.e2", "TRUE"),
+            ("main.e3", "'342'"),
+            ("main.e4", "123"),
+            ("main.f1", "127"),
+            ("main.g1", "2"),
+            ("main.g2", "1"),
+            ("main.g3", "-2"),
+            ("main.g4", "-1"),
+            ("main.h1", "'T#12ms'"),
+            ("main.h2", "300000"),
+            ("main.h3", "12"),
+            ("main.i1", "FALSE"),
+            ("main.i2", "29952"),
+            ("main.i3", "129"),
+            ("main.k1", "0"),
+            ("main.k2", "34"),
+            ("main.k3", "T#127ms"),
+            ("main.k4", "1.234"),
+            ("main.k5", "244"),
+            ("main.t1", "1"),
+            ("main.t2", "-1"),
+        ],
+    );
+}
