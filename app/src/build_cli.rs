@@ -14,6 +14,9 @@ use runtime::simulation::Simulation;
 /// Compiles `path` (a project folder or a `.st` file). Problems the checker finds are printed
 /// as `rivet check` prints them.
 pub fn compile_path(path: &Path) -> anyhow::Result<ProgramImage> {
+    if !path.exists() {
+        anyhow::bail!("{}: no such file or project folder", path.display());
+    }
     let result = if path.is_file() {
         let text = std::fs::read_to_string(path)
             .with_context(|| format!("{}: cannot read it as UTF-8 text", path.display()))?;

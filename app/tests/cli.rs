@@ -228,3 +228,86 @@ fn check_type_checks_a_single_st_file_and_reports_warnings() {
     );
     assert!(stderr.contains("1 error(s), 1 warning(s)"), "{stderr}");
 }
+
+#[test]
+fn build_writes_an_image_the_runtime_format_reads() {
+    let dir = tempfile::tempdir().unwrap();
+    let image = dir.path().join("app.img");
+    let output = rivet(&[
+        "build",
+        path_str(&assets::example_project_dir()),
+        "-o",
+        path_str(&image),
+    ]);
+    assert!(output.status.success(), "{}", text_of(&output.stderr));
+    assert!(
+        text_of(&output.stdout).contains("2 tasks"),
+        "{}",
+        text_of(&output.stdout)
+    );
+    let bytes = fs::read(&image).unwrap();
+    let decoded = program_image::ProgramImage::decode(&bytes).unwrap();
+    assert!(
+        decoded
+            .symbols
+            .iter()
+            .any(|s| s.path == "GVL_IO.xConveyorMotor")
+    );
+}
+
+#[test]
+fn simulate_prints_watched_values_as_text_and_json() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("count.st");
+    fs::write(&file, "PROGRAM main VAR n : INT; t : TIME; big : BOOL; END_VAR n := n + 1; t := t + T#10ms; big := n > 2; END_PROGRAM").unwrap();
+    let output = rivet(&[
+        "simulate",
+        path_str(&file),
+        "--cycles",
+        "3",
+        "--watch",
+        "main.n,main.t,main.big",
+    ]);
+    assert!(output.status.success(), "{}", text_of(&output.stderr));
+    assert_eq!(
+        text_of(&output.stdout),
+        "main.n = 3\nmain.t = T#30ms\nmain.big = TRUE\n"
+    );
+    let output = rivet(&[
+        "simulate",
+        path_str(&file),
+        "--cycles",
+        "3",
+        "--watch",
+        "main.n,main.t",
+        "--json",
+    ]);
+    assert_eq!(
+        text_of(&output.stdout).trim(),
+        r#"{"main.n": 3, "main.t": "T#30ms"}"#
+    );
+}
+
+#[test]
+fn simulate_reports_faults_unknown_variables_and_missing_files() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("div.st");
+    fs::write(
+        &file,
+        "PROGRAM main VAR x : INT; d : INT; END_VAR\nx := 1;\nx := x / d;\nEND_PROGRAM\n",
+    )
+    .unwrap();
+    let output = rivet(&["simulate", path_str(&file), "--watch", "main.x"]);
+    assert_eq!(output.status.code(), Some(1));
+    let stderr = text_of(&output.stderr);
+    assert!(
+        stderr.contains("division by zero in main") && stderr.contains("div.st:3"),
+        "{stderr}"
+    );
+    let output = rivet(&["simulate", path_str(&file), "--watch", "main.nope"]);
+    assert_eq!(output.status.code(), Some(1));
+    assert!(text_of(&output.stderr).contains("--watch main.nope: 'main' has no member 'nope'"));
+    let missing = dir.path().join("missing.st");
+    let output = rivet(&["simulate", path_str(&missing)]);
+    assert!(text_of(&output.stderr).contains("no such file or project folder"));
+}
