@@ -1,4 +1,6 @@
-//! The headless command line: `rivet check`, `rivet fmt`, `rivet build`, `rivet simulate`.
+//! The headless command line: `rivet check`, `rivet fmt`, `rivet build`, `rivet simulate`, and
+//! the online commands (`rivet status`, `download`, `start`, `stop`, `reset`, `read`, `write`,
+//! `force`, `unforce`, `forces`, `faults`).
 
 #![allow(clippy::print_stdout, clippy::print_stderr)] // Printing is what a CLI is for.
 
@@ -8,6 +10,8 @@ use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
 use project_model::{LoadError, load_project, save_project};
+
+use crate::online_cli::{self, OnlineCommand, Target};
 
 /// Rivet: an engineering studio for IEC 61131-3 controllers.
 #[derive(Debug, Parser)]
@@ -65,6 +69,97 @@ pub enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// Show a runtime's state, program identity, task statistics and forces.
+    Status {
+        /// The runtime to talk to.
+        #[command(flatten)]
+        target: Target,
+    },
+    /// Compile a project (or `.st` file) and download it to a runtime; the old program keeps
+    /// running unless the whole image arrives and verifies.
+    Download {
+        /// The project folder, or a `.st` source file.
+        project: PathBuf,
+        /// Start the program once it is loaded.
+        #[arg(long)]
+        start: bool,
+        /// The runtime to talk to.
+        #[command(flatten)]
+        target: Target,
+    },
+    /// Start the runtime's program.
+    Start {
+        /// The runtime to talk to.
+        #[command(flatten)]
+        target: Target,
+    },
+    /// Stop the runtime's program.
+    Stop {
+        /// The runtime to talk to.
+        #[command(flatten)]
+        target: Target,
+    },
+    /// Reset the program's memory: warm keeps RETAIN and PERSISTENT, cold keeps PERSISTENT,
+    /// origin keeps nothing.
+    Reset {
+        /// warm, cold or origin.
+        #[arg(value_parser = ["warm", "cold", "origin"])]
+        kind: String,
+        /// The runtime to talk to.
+        #[command(flatten)]
+        target: Target,
+    },
+    /// Read variables by path (`Main.fb.ET`, `GVL.x`, `Main.a[3]`), as IEC literals.
+    Read {
+        /// The variables.
+        #[arg(required = true)]
+        variables: Vec<String>,
+        /// The runtime to talk to.
+        #[command(flatten)]
+        target: Target,
+    },
+    /// Write values once: `VAR=VALUE` with the value as an IEC literal (`Main.speed=1500`,
+    /// `Main.t=T#2s`, `Main.on=TRUE`).
+    Write {
+        /// The assignments.
+        #[arg(required = true)]
+        assignments: Vec<String>,
+        /// The runtime to talk to.
+        #[command(flatten)]
+        target: Target,
+    },
+    /// Force values: held before and after every cycle until released.
+    Force {
+        /// The assignments, `VAR=VALUE`.
+        #[arg(required = true)]
+        assignments: Vec<String>,
+        /// The runtime to talk to.
+        #[command(flatten)]
+        target: Target,
+    },
+    /// Release forces of the given variables, or every force with --all.
+    Unforce {
+        /// The variables.
+        variables: Vec<String>,
+        /// Release every force.
+        #[arg(long, conflicts_with = "variables")]
+        all: bool,
+        /// The runtime to talk to.
+        #[command(flatten)]
+        target: Target,
+    },
+    /// List the forced places and their values.
+    Forces {
+        /// The runtime to talk to.
+        #[command(flatten)]
+        target: Target,
+    },
+    /// List the faults that stopped tasks, with POU and source line.
+    Faults {
+        /// The runtime to talk to.
+        #[command(flatten)]
+        target: Target,
+    },
 }
 
 /// Runs a subcommand and returns the process exit code.
@@ -79,6 +174,48 @@ pub fn run(command: Command) -> ExitCode {
             watch,
             json,
         } => crate::build_cli::simulate(&project, cycles, &watch, json),
+        Command::Status { target } => online_cli::run(&target, OnlineCommand::Status),
+        Command::Download {
+            project,
+            start,
+            target,
+        } => online_cli::run(&target, OnlineCommand::Download { project, start }),
+        Command::Start { target } => online_cli::run(&target, OnlineCommand::Start),
+        Command::Stop { target } => online_cli::run(&target, OnlineCommand::Stop),
+        Command::Reset { kind, target } => {
+            let kind = match kind.as_str() {
+                "warm" => online::Reset::Warm,
+                "cold" => online::Reset::Cold,
+                _ => online::Reset::Origin,
+            };
+            online_cli::run(&target, OnlineCommand::Reset(kind))
+        }
+        Command::Read { variables, target } => {
+            online_cli::run(&target, OnlineCommand::Read(variables))
+        }
+        Command::Write {
+            assignments,
+            target,
+        } => online_cli::run(&target, OnlineCommand::Write(assignments)),
+        Command::Force {
+            assignments,
+            target,
+        } => online_cli::run(&target, OnlineCommand::Force(assignments)),
+        Command::Unforce {
+            variables,
+            all,
+            target,
+        } => {
+            if variables.is_empty() && !all {
+                Err(anyhow::anyhow!(
+                    "name the variables to release, or give --all"
+                ))
+            } else {
+                online_cli::run(&target, OnlineCommand::Unforce(variables))
+            }
+        }
+        Command::Forces { target } => online_cli::run(&target, OnlineCommand::Forces),
+        Command::Faults { target } => online_cli::run(&target, OnlineCommand::Faults),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

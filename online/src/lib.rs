@@ -2,4 +2,16 @@
 //! run control, monitoring, write and force, trace upload, and polling of generic Modbus TCP
 //! devices.
 //!
-//! It exposes commands in and events and value snapshots out, and knows nothing of any UI.
+//! It knows nothing of any UI. Today it holds the protocol of `docs/protocol.md` as the client
+//! sees it ([`protocol`]), an async [`Client`] with one method per service, and
+//! [`OnlineError`], which says for every failure what happened and what to do.
+
+mod client;
+mod error;
+pub mod protocol;
+
+pub use client::{
+    Client, Fault, Identity, REQUEST_TIMEOUT, Reset, Resolved, Snapshot, TargetState, TaskInfo,
+};
+pub use error::OnlineError;
+pub use protocol::Place;

@@ -1,0 +1,290 @@
+//! The online commands of the command line: `rivet status`, `download`, `start`, `stop`,
+//! `reset`, `read`, `write`, `force`, `unforce`, `forces`, `faults`, each against
+//! `--target HOST:PORT` over Rivet's online protocol (`docs/protocol.md`).
+
+#![allow(clippy::print_stdout, clippy::print_stderr)] // Printing is what a CLI is for.
+
+use std::net::SocketAddr;
+use std::path::Path;
+
+use anyhow::Context as _;
+use online::{Client, OnlineError, Place, Reset, Resolved};
+use program_image::Elementary;
+
+/// Where and how to connect.
+#[derive(Clone, Debug, clap::Args)]
+pub struct Target {
+    /// The runtime's address.
+    #[arg(long, default_value = "127.0.0.1:5020")]
+    pub target: String,
+    /// The runtime's password, when it has one.
+    #[arg(long)]
+    pub password: Option<String>,
+}
+
+impl Target {
+    fn address(&self) -> anyhow::Result<SocketAddr> {
+        use std::net::ToSocketAddrs as _;
+        self.target
+            .to_socket_addrs()
+            .with_context(|| {
+                format!(
+                    "--target {}: not an address such as 127.0.0.1:5020",
+                    self.target
+                )
+            })?
+            .next()
+            .with_context(|| format!("--target {}: the name resolves to no address", self.target))
+    }
+}
+
+/// One online command.
+#[derive(Debug)]
+pub enum OnlineCommand {
+    /// Identity, tasks and forces.
+    Status,
+    /// Compile and download a project or `.st` file.
+    Download {
+        /// The project folder or source file.
+        project: std::path::PathBuf,
+        /// Start the program once loaded.
+        start: bool,
+    },
+    /// Start the program.
+    Start,
+    /// Stop the program.
+    Stop,
+    /// Reset the program's memory.
+    Reset(Reset),
+    /// Read variables.
+    Read(Vec<String>),
+    /// Write values once.
+    Write(Vec<String>),
+    /// Force values.
+    Force(Vec<String>),
+    /// Release forces (all when empty).
+    Unforce(Vec<String>),
+    /// List forces.
+    Forces,
+    /// List faults.
+    Faults,
+}
+
+/// Runs an online command to its end.
+pub fn run(target: &Target, command: OnlineCommand) -> anyhow::Result<()> {
+    let address = target.address()?;
+    let runtime = tokio::runtime::Builder::new_current_thread()
+        .enable_all()
+        .build()
+        .context("cannot start the async runtime")?;
+    runtime.block_on(async move {
+        let (mut client, identity) = Client::connect(address, target.password.as_deref()).await?;
+        match command {
+            OnlineCommand::Status => {
+                println!("{address}: rivet-runtime {}, {}", identity.runtime_version, identity.state.describe());
+                match identity.image_hash {
+                    Some(hash) => println!("program: '{}', identity {}", identity.project, hex(&hash[..8])),
+                    None => println!("program: none"),
+                }
+                if identity.password_required {
+                    println!("changes need a password");
+                }
+                for task in client.tasks().await? {
+                    println!(
+                        "task {}: {} cycles, last {} µs, min {} µs, max {} µs, average {} µs, jitter up to {} µs{}",
+                        task.name,
+                        task.cycles,
+                        task.last_ns / 1000,
+                        task.min_ns / 1000,
+                        task.max_ns / 1000,
+                        task.average_ns / 1000,
+                        task.jitter_max_ns / 1000,
+                        if task.faulted { ", stopped by a fault" } else { "" }
+                    );
+                }
+                let forces = client.forces().await?;
+                if !forces.is_empty() {
+                    println!("{} forced place(s); `rivet forces` lists them", forces.len());
+                }
+            }
+            OnlineCommand::Download { project, start } => download(&mut client, &identity, &project, start).await?,
+            OnlineCommand::Start => println!("{}", client.start().await?.describe()),
+            OnlineCommand::Stop => println!("{}", client.stop().await?.describe()),
+            OnlineCommand::Reset(kind) => println!("{}", client.reset(kind).await?.describe()),
+            OnlineCommand::Read(paths) => {
+                let resolved = resolve_all(&mut client, &paths).await?;
+                let places: Vec<Place> = resolved.iter().map(|r| r.place).collect();
+                let snapshot = client.read(&places).await?;
+                for ((path, resolved), (bytes, forced)) in paths.iter().zip(&resolved).zip(&snapshot.values) {
+                    let marker = if *forced { " (forced)" } else { "" };
+                    println!("{path} = {}{marker}", show(resolved, bytes));
+                }
+            }
+            OnlineCommand::Write(assignments) | OnlineCommand::Force(assignments) if assignments.is_empty() => {
+                anyhow::bail!("give at least one VAR=VALUE");
+            }
+            OnlineCommand::Write(assignments) => {
+                let values = parse_assignments(&mut client, &assignments).await?;
+                client.write(&values).await?;
+                println!("wrote {} value(s)", values.len());
+            }
+            OnlineCommand::Force(assignments) => {
+                let values = parse_assignments(&mut client, &assignments).await?;
+                client.force(&values).await?;
+                println!("forced {} value(s)", values.len());
+            }
+            OnlineCommand::Unforce(paths) => {
+                let resolved = resolve_all(&mut client, &paths).await?;
+                let places: Vec<Place> = resolved.iter().map(|r| r.place).collect();
+                client.unforce(&places).await?;
+                if paths.is_empty() {
+                    println!("released every force");
+                } else {
+                    println!("released {} force(s)", places.len());
+                }
+            }
+            OnlineCommand::Forces => {
+                let forces = client.forces().await?;
+                if forces.is_empty() {
+                    println!("no forces");
+                }
+                for (place, bytes) in forces {
+                    println!("{} = 16#{}", describe_place(&place), hex(&bytes));
+                }
+            }
+            OnlineCommand::Faults => {
+                let faults = client.faults().await?;
+                if faults.is_empty() {
+                    println!("no faults");
+                }
+                for fault in faults {
+                    let place = if fault.line > 0 { format!("{}:{}", fault.file, fault.line) } else { fault.file.clone() };
+                    println!("task '{}' cycle {}: {} in {} ({place})", fault.task, fault.cycle, fault.kind, fault.pou);
+                }
+            }
+        }
+        Ok::<(), anyhow::Error>(())
+    })
+}
+
+async fn download(
+    client: &mut Client,
+    identity: &online::Identity,
+    project: &Path,
+    start: bool,
+) -> anyhow::Result<()> {
+    let image = crate::build_cli::compile_path(project)?;
+    let bytes = image.encode();
+    let ours = program_image::identity_of(&bytes);
+    match identity.image_hash {
+        Some(theirs) if theirs == ours => {
+            println!("the target already runs this program; downloading it again")
+        }
+        Some(_) => println!(
+            "the target runs another program ('{}'); replacing it",
+            identity.project
+        ),
+        None => println!("the target has no program"),
+    }
+    let bar = indicatif::ProgressBar::new(bytes.len() as u64);
+    bar.set_style(
+        indicatif::ProgressStyle::with_template("{bar:40} {bytes}/{total_bytes} {msg}")
+            .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+    );
+    let retained = client
+        .download(&bytes, start, |sent, _| bar.set_position(sent as u64))
+        .await;
+    bar.finish_and_clear();
+    let retained = retained?;
+    println!(
+        "downloaded {} bytes, identity {}{}{}",
+        bytes.len(),
+        hex(&ours[..8]),
+        if retained {
+            ", retained values kept"
+        } else {
+            ""
+        },
+        if start { ", running" } else { "" }
+    );
+    Ok(())
+}
+
+async fn resolve_all(client: &mut Client, paths: &[String]) -> Result<Vec<Resolved>, OnlineError> {
+    let mut out = Vec::new();
+    for path in paths {
+        out.push(client.resolve(path).await?);
+    }
+    Ok(out)
+}
+
+async fn parse_assignments(
+    client: &mut Client,
+    assignments: &[String],
+) -> anyhow::Result<Vec<(Place, Vec<u8>)>> {
+    let mut values = Vec::new();
+    for assignment in assignments {
+        let (path, literal) = assignment
+            .split_once('=')
+            .with_context(|| format!("'{assignment}': write VAR=VALUE, such as Main.speed=1500"))?;
+        let resolved = client.resolve(path.trim()).await?;
+        let bytes = crate::literal_value::parse(literal.trim(), resolved.type_tag, resolved.length)
+            .map_err(|message| anyhow::anyhow!("{}: {message}", path.trim()))?;
+        values.push((resolved.place, bytes));
+    }
+    Ok(values)
+}
+
+/// A value's bytes as an IEC literal.
+fn show(resolved: &Resolved, bytes: &[u8]) -> String {
+    let mut raw = [0u8; 8];
+    let n = bytes.len().min(8);
+    raw[..n].copy_from_slice(&bytes[..n]);
+    let raw = u64::from_le_bytes(raw);
+    if resolved.place.bit.is_some() {
+        return if raw & 1 != 0 {
+            "TRUE".to_owned()
+        } else {
+            "FALSE".to_owned()
+        };
+    }
+    match resolved.type_tag {
+        0x20 => format!(
+            "'{}'",
+            bytes
+                .iter()
+                .take_while(|&&b| b != 0)
+                .map(|&b| char::from(b))
+                .collect::<String>()
+        ),
+        0x21 => {
+            let units: Vec<u16> = bytes
+                .chunks_exact(2)
+                .map(|c| u16::from_le_bytes([c[0], c[1]]))
+                .take_while(|&u| u != 0)
+                .collect();
+            format!("\"{}\"", String::from_utf16_lossy(&units))
+        }
+        tag => match Elementary::from_tag(tag) {
+            Some(ty) => runtime::value::elementary(raw, ty).to_string(),
+            None => format!("16#{}", hex(bytes)),
+        },
+    }
+}
+
+fn describe_place(place: &Place) -> String {
+    let region = match place.region {
+        0 => "data",
+        1 => "%I",
+        2 => "%Q",
+        _ => "%M",
+    };
+    match place.bit {
+        Some(bit) => format!("{region} byte {} bit {bit}", place.offset),
+        None => format!("{region} byte {} ({} bytes)", place.offset, place.size),
+    }
+}
+
+fn hex(bytes: &[u8]) -> String {
+    bytes.iter().map(|b| format!("{b:02x}")).collect()
+}

@@ -1,0 +1,51 @@
+//! Everything that can go wrong talking to a target, each with what to do about it.
+
+use std::net::SocketAddr;
+
+/// A failure of an online service.
+#[derive(Debug, thiserror::Error)]
+pub enum OnlineError {
+    /// Nothing listens at the address.
+    #[error("{0}: connection refused; is rivet-runtime running there and the port right?")]
+    Refused(SocketAddr),
+    /// No answer in time.
+    #[error("{0}: no answer within {1} ms; check the address and the network")]
+    Timeout(SocketAddr, u64),
+    /// The connection failed otherwise.
+    #[error("{0}: {1}")]
+    Io(SocketAddr, std::io::Error),
+    /// The device answers Modbus but not Rivet's online services.
+    #[error("{0} is a Modbus device but not a Rivet runtime (it does not know function code 100)")]
+    NotRivet(SocketAddr),
+    /// The target speaks another protocol version.
+    #[error(
+        "the target speaks online protocol version {theirs}, this client version {ours}; use matching Rivet versions"
+    )]
+    VersionMismatch {
+        /// Ours.
+        ours: u16,
+        /// The target's.
+        theirs: u16,
+    },
+    /// The target needs a password.
+    #[error("the target requires a password for this; give it with --password")]
+    PasswordRequired,
+    /// The password or token was refused.
+    #[error("the target refused the password")]
+    WrongPassword,
+    /// The target refused the image.
+    #[error("the target refused the image: {0}; the old program keeps running")]
+    ImageRefused(String),
+    /// No variable has that path.
+    #[error("unknown variable: {0}")]
+    UnknownSymbol(String),
+    /// Another refusal, with the target's words.
+    #[error("the target refused: {0}")]
+    Rejected(String),
+    /// A Modbus exception.
+    #[error("the target answered Modbus exception {0}")]
+    Exception(String),
+    /// A response that does not follow the protocol.
+    #[error("the target's answer does not follow the protocol: {0}")]
+    Protocol(String),
+}
