@@ -4,11 +4,14 @@
 //!
 //! It knows nothing of any UI. Today it holds the protocol of `docs/protocol.md` as the client
 //! sees it ([`protocol`]), an async [`Client`] with one method per service, and
-//! [`OnlineError`], which says for every failure what happened and what to do.
+//! [`OnlineError`], which says for every failure what happened and what to do, and a
+//! [`session`] that runs a client on a background task: commands in, events and value
+//! snapshots out, reconnecting when the target comes back.
 
 mod client;
 mod error;
 pub mod protocol;
+pub mod session;
 
 pub use client::{
     Client, Fault, Identity, REQUEST_TIMEOUT, Reset, Resolved, Snapshot, TargetState, TaskInfo,

@@ -1,0 +1,212 @@
+//! A session with one target on a background task: commands in over a bounded channel,
+//! events and value snapshots out, so a UI never waits on the network.
+//!
+//! The session connects, identifies and logs in; while a watch list is set it reads it every
+//! `poll_interval` and sends a [`Event::Snapshot`]. When the connection fails it says so
+//! ([`Event::Disconnected`]) and tries again every `reconnect_interval`; on reconnecting it
+//! identifies again (the program may have changed) before anything else.
+
+use std::net::SocketAddr;
+use std::time::Duration;
+
+use tokio::sync::mpsc;
+
+use crate::client::{Client, Identity, Reset, Snapshot, TargetState};
+use crate::error::OnlineError;
+use crate::protocol::Place;
+
+/// What a session is asked to do.
+#[derive(Debug)]
+pub enum Command {
+    /// Read these places every poll (an empty list stops polling).
+    Watch(Vec<Place>),
+    /// Download an image; `start` starts it once loaded.
+    Download {
+        /// The encoded image.
+        image: Vec<u8>,
+        /// Start it once loaded.
+        start: bool,
+    },
+    /// Start the program.
+    Start,
+    /// Stop the program.
+    Stop,
+    /// Reset the program's memory.
+    Reset(Reset),
+    /// Write values once.
+    Write(Vec<(Place, Vec<u8>)>),
+    /// Force values.
+    Force(Vec<(Place, Vec<u8>)>),
+    /// Release forces (all when empty).
+    Unforce(Vec<Place>),
+    /// End the session.
+    Close,
+}
+
+/// What a session reports.
+#[derive(Debug)]
+pub enum Event {
+    /// Connected (again), with what the target says about itself.
+    Connected(Identity),
+    /// The connection failed; the session tries again.
+    Disconnected(String),
+    /// The watched places, read in one go.
+    Snapshot(Snapshot),
+    /// Download progress: bytes sent of the total.
+    DownloadProgress(usize, usize),
+    /// A command finished; the target's state after it.
+    Done(TargetState),
+    /// A command failed; nothing changed on the target.
+    Failed(String),
+}
+
+/// How a session behaves.
+#[derive(Clone, Debug)]
+pub struct SessionOptions {
+    /// The target.
+    pub address: SocketAddr,
+    /// Its password, if it has one.
+    pub password: Option<String>,
+    /// How often watched places are read.
+    pub poll_interval: Duration,
+    /// How long to wait before connecting again after a failure.
+    pub reconnect_interval: Duration,
+}
+
+/// Starts a session on the current tokio runtime: commands go in through the returned sender,
+/// events come out of the returned receiver (both bounded).
+pub fn spawn(options: SessionOptions) -> (mpsc::Sender<Command>, mpsc::Receiver<Event>) {
+    let (commands, command_rx) = mpsc::channel(64);
+    let (event_tx, events) = mpsc::channel(256);
+    tokio::spawn(run(options, command_rx, event_tx));
+    (commands, events)
+}
+
+async fn run(
+    options: SessionOptions,
+    mut commands: mpsc::Receiver<Command>,
+    events: mpsc::Sender<Event>,
+) {
+    let mut watch: Vec<Place> = Vec::new();
+    'connect: loop {
+        let mut client = match Client::connect(options.address, options.password.as_deref()).await {
+            Ok((client, identity)) => {
+                if events.send(Event::Connected(identity)).await.is_err() {
+                    return;
+                }
+                client
+            }
+            Err(error) => {
+                if events
+                    .send(Event::Disconnected(error.to_string()))
+                    .await
+                    .is_err()
+                {
+                    return;
+                }
+                // Commands wait while the target is away; Close ends the session at once.
+                let deadline = tokio::time::sleep(options.reconnect_interval);
+                tokio::pin!(deadline);
+                loop {
+                    tokio::select! {
+                        () = &mut deadline => continue 'connect,
+                        command = commands.recv() => match command {
+                            None | Some(Command::Close) => return,
+                            Some(Command::Watch(places)) => watch = places,
+                            Some(_) => {
+                                let _ = events.send(Event::Failed(format!("{error}; not connected"))).await;
+                            }
+                        },
+                    }
+                }
+            }
+        };
+        let mut poll = tokio::time::interval(options.poll_interval);
+        loop {
+            tokio::select! {
+                _ = poll.tick(), if !watch.is_empty() => {
+                    match client.read(&watch).await {
+                        Ok(snapshot) => {
+                            if events.send(Event::Snapshot(snapshot)).await.is_err() {
+                                return;
+                            }
+                        }
+                        Err(error) => {
+                            let _ = events.send(Event::Disconnected(error.to_string())).await;
+                            continue 'connect;
+                        }
+                    }
+                }
+                command = commands.recv() => {
+                    let Some(command) = command else { return };
+                    let outcome = match command {
+                        Command::Close => return,
+                        Command::Watch(places) => {
+                            watch = places;
+                            continue;
+                        }
+                        Command::Download { image, start } => {
+                            let progress = events.clone();
+                            let result = client
+                                .download(&image, start, |sent, total| {
+                                    let _ = progress.try_send(Event::DownloadProgress(sent, total));
+                                })
+                                .await;
+                            match result {
+                                Ok(_) => client.identify().await.map(|identity| identity.state),
+                                Err(error) => Err(error),
+                            }
+                        }
+                        Command::Start => client.start().await,
+                        Command::Stop => client.stop().await,
+                        Command::Reset(kind) => client.reset(kind).await,
+                        Command::Write(values) => {
+                            let result = client_write(&mut client, values, false).await;
+                            finish(&mut client, result).await
+                        }
+                        Command::Force(values) => {
+                            let result = client_write(&mut client, values, true).await;
+                            finish(&mut client, result).await
+                        }
+                        Command::Unforce(places) => {
+                            let result = client.unforce(&places).await;
+                            finish(&mut client, result).await
+                        }
+                    };
+                    let lost = matches!(outcome, Err(OnlineError::Io(..) | OnlineError::Timeout(..)));
+                    let event = match outcome {
+                        Ok(state) => Event::Done(state),
+                        Err(error) => Event::Failed(error.to_string()),
+                    };
+                    if events.send(event).await.is_err() {
+                        return;
+                    }
+                    if lost {
+                        continue 'connect;
+                    }
+                }
+            }
+        }
+    }
+}
+
+async fn client_write(
+    client: &mut Client,
+    values: Vec<(Place, Vec<u8>)>,
+    force: bool,
+) -> Result<(), OnlineError> {
+    if force {
+        client.force(&values).await
+    } else {
+        client.write(&values).await
+    }
+}
+
+/// The target's state after a command that answers nothing of its own.
+async fn finish(
+    client: &mut Client,
+    result: Result<(), OnlineError>,
+) -> Result<TargetState, OnlineError> {
+    result?;
+    client.identify().await.map(|identity| identity.state)
+}
