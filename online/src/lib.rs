@@ -6,9 +6,11 @@
 //! sees it ([`protocol`]), an async [`Client`] with one method per service, and
 //! [`OnlineError`], which says for every failure what happened and what to do, and a
 //! [`session`] that runs a client on a background task: commands in, events and value
-//! snapshots out, reconnecting when the target comes back.
+//! snapshots out, reconnecting when the target comes back; and [`device`], which polls a
+//! third-party Modbus TCP device's coils and registers as typed values.
 
 mod client;
+pub mod device;
 mod error;
 pub mod protocol;
 pub mod session;
