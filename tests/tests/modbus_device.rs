@@ -139,3 +139,69 @@ async fn a_channel_that_cannot_hold_its_type_and_a_read_only_write_are_refused()
     let error = device.write(0, &[1, 0]).await.unwrap_err();
     assert!(error.to_string().contains("cannot be written"), "{error}");
 }
+
+/// Kills the pymodbus server when the test ends, however it ends.
+struct Peer(std::process::Child);
+
+impl Drop for Peer {
+    fn drop(&mut self) {
+        let _ = self.0.kill();
+        let _ = self.0.wait();
+    }
+}
+
+#[tokio::test]
+async fn a_pymodbus_server_is_monitored_written_forced_and_traced() {
+    let python = tests::peers::python_with_pymodbus();
+    // A free port on loopback for the server to take.
+    let port = std::net::TcpListener::bind("127.0.0.1:0")
+        .unwrap()
+        .local_addr()
+        .unwrap()
+        .port();
+    let script = concat!(env!("CARGO_MANIFEST_DIR"), "/peers/pymodbus_server.py");
+    let _peer = Peer(
+        std::process::Command::new(python)
+            .arg(script)
+            .arg(port.to_string())
+            .spawn()
+            .unwrap(),
+    );
+    let address: std::net::SocketAddr = format!("127.0.0.1:{port}").parse().unwrap();
+    for order in [WordOrder::HighFirst, WordOrder::LowFirst] {
+        let channels = vec![
+            channel("valve", Table::Coils, 5, Elementary::Bool),
+            channel("flow", Table::HoldingRegisters, 10, Elementary::Real),
+            channel("total", Table::HoldingRegisters, 20, Elementary::Udint),
+        ];
+        // The server takes a moment to start listening.
+        let started = std::time::Instant::now();
+        let mut device = loop {
+            match Device::connect(address, 1, order, Duration::from_secs(2), channels.clone()).await
+            {
+                Ok(device) => break device,
+                Err(error) if started.elapsed() < Duration::from_secs(20) => {
+                    let _ = error;
+                    tokio::time::sleep(Duration::from_millis(100)).await;
+                }
+                Err(error) => panic!("pymodbus did not start: {error}"),
+            }
+        };
+        device.write(0, &[1]).await.unwrap();
+        device.write(1, &(-3.75f32).to_le_bytes()).await.unwrap();
+        device
+            .force(2, 4_000_000_000u32.to_le_bytes().to_vec())
+            .await
+            .unwrap();
+        let trace = device.trace(3, Duration::from_millis(10)).await.unwrap();
+        for snapshot in &trace {
+            assert_eq!(snapshot.values[0], vec![1]);
+            assert_eq!(
+                snapshot.values[1],
+                (-3.75f32).to_le_bytes().to_vec(),
+                "{order:?}"
+            );
+            assert_eq!(snapshot.values[2], 4_000_000_000u32.to_le_bytes().to_vec());
+        }
+    }
+}
