@@ -3,6 +3,9 @@
 //! The device here is the runtime's own Modbus server over bare areas (no program), which
 //! answers exactly as the standard says.
 
+// The helpers below are test code too: a failure should stop the test where it happens.
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+
 use std::sync::{Arc, Mutex};
 use std::time::Duration;
 
