@@ -154,6 +154,43 @@ pub enum Command {
         #[command(flatten)]
         target: Target,
     },
+    /// Record a trace on the target (every cycle of a task, so nothing is lost) and save it as
+    /// CSV.
+    Trace {
+        /// The variables, comma-separated.
+        #[arg(long, value_delimiter = ',', required = true)]
+        vars: Vec<String>,
+        /// The task whose cycles are sampled.
+        #[arg(long)]
+        task: String,
+        /// How many samples to record.
+        #[arg(long, default_value_t = 1000)]
+        samples: u32,
+        /// Sample every n-th cycle.
+        #[arg(long, default_value_t = 1)]
+        every: u16,
+        /// A BOOL whose edge starts the recording.
+        #[arg(long)]
+        trigger: Option<String>,
+        /// Start on the trigger's rising edge (the default).
+        #[arg(long, conflicts_with_all = ["falling", "level"])]
+        rising: bool,
+        /// Start on the trigger's falling edge.
+        #[arg(long, conflicts_with = "level")]
+        falling: bool,
+        /// Record while the trigger is TRUE.
+        #[arg(long)]
+        level: bool,
+        /// Percent of the samples kept before the trigger.
+        #[arg(long, default_value_t = 0)]
+        pretrigger: u8,
+        /// Where to write the samples.
+        #[arg(long)]
+        csv: PathBuf,
+        /// The runtime to talk to.
+        #[command(flatten)]
+        target: Target,
+    },
     /// List the faults that stopped tasks, with POU and source line.
     Faults {
         /// The runtime to talk to.
@@ -216,6 +253,37 @@ pub fn run(command: Command) -> ExitCode {
         }
         Command::Forces { target } => online_cli::run(&target, OnlineCommand::Forces),
         Command::Faults { target } => online_cli::run(&target, OnlineCommand::Faults),
+        Command::Trace {
+            vars,
+            task,
+            samples,
+            every,
+            trigger,
+            rising: _,
+            falling,
+            level,
+            pretrigger,
+            csv,
+            target,
+        } => {
+            let kind = if falling {
+                "falling"
+            } else if level {
+                "level"
+            } else {
+                "rising"
+            };
+            let request = online_cli::TraceRequest {
+                variables: vars,
+                task,
+                samples,
+                every,
+                trigger: trigger.map(|variable| (variable, kind.to_owned())),
+                pretrigger,
+                csv,
+            };
+            online_cli::run(&target, OnlineCommand::Trace(request))
+        }
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

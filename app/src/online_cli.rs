@@ -68,6 +68,27 @@ pub enum OnlineCommand {
     Forces,
     /// List faults.
     Faults,
+    /// Record a trace on the target and save it as CSV.
+    Trace(TraceRequest),
+}
+
+/// What `rivet trace` records.
+#[derive(Clone, Debug)]
+pub struct TraceRequest {
+    /// The variables.
+    pub variables: Vec<String>,
+    /// The task by name.
+    pub task: String,
+    /// How many samples.
+    pub samples: u32,
+    /// Every n-th cycle.
+    pub every: u16,
+    /// The trigger variable and its kind (`rising`, `falling`, `level`).
+    pub trigger: Option<(String, String)>,
+    /// Percent of samples before the trigger.
+    pub pretrigger: u8,
+    /// Where to write the CSV.
+    pub csv: std::path::PathBuf,
 }
 
 /// Runs an online command to its end.
@@ -152,6 +173,7 @@ pub fn run(target: &Target, command: OnlineCommand) -> anyhow::Result<()> {
                     println!("{} = 16#{}", describe_place(&place), hex(&bytes));
                 }
             }
+            OnlineCommand::Trace(request) => trace(&mut client, &request).await?,
             OnlineCommand::Faults => {
                 let faults = client.faults().await?;
                 if faults.is_empty() {
@@ -206,6 +228,87 @@ async fn download(
             ""
         },
         if start { ", running" } else { "" }
+    );
+    Ok(())
+}
+
+async fn trace(client: &mut Client, request: &TraceRequest) -> anyhow::Result<()> {
+    let tasks = client.tasks().await?;
+    let task = tasks
+        .iter()
+        .position(|t| t.name.eq_ignore_ascii_case(&request.task))
+        .with_context(|| {
+            let names: Vec<&str> = tasks.iter().map(|t| t.name.as_str()).collect();
+            format!(
+                "--task {}: the target's tasks are {}",
+                request.task,
+                names.join(", ")
+            )
+        })?;
+    let resolved = resolve_all(client, &request.variables).await?;
+    let places: Vec<Place> = resolved.iter().map(|r| r.place).collect();
+    let trigger = match &request.trigger {
+        None => online::Trigger::None,
+        Some((variable, kind)) => {
+            let place = client.resolve(variable).await?.place;
+            match kind.as_str() {
+                "falling" => online::Trigger::Falling(place),
+                "level" => online::Trigger::Level(place),
+                _ => online::Trigger::Rising(place),
+            }
+        }
+    };
+    client
+        .trace_configure(&online::TraceConfig {
+            task: task as u8,
+            every: request.every,
+            samples: request.samples,
+            pretrigger_percent: request.pretrigger,
+            trigger,
+            places: places.clone(),
+        })
+        .await?;
+    client.trace_arm().await?;
+    let bar = indicatif::ProgressBar::new(u64::from(request.samples));
+    bar.set_message("recording");
+    loop {
+        let status = client.trace_status().await?;
+        bar.set_position(u64::from(status.recorded));
+        if status.state == 4 {
+            break;
+        }
+        tokio::time::sleep(std::time::Duration::from_millis(50)).await;
+    }
+    bar.set_message("uploading");
+    let samples = client
+        .trace_upload(&places, |n| bar.set_position(n as u64))
+        .await?;
+    bar.finish_and_clear();
+    let mut csv = String::from("cycle,time_ms");
+    for variable in &request.variables {
+        csv.push(',');
+        csv.push_str(variable);
+    }
+    csv.push('\n');
+    for sample in &samples {
+        csv.push_str(&format!(
+            "{},{:.3}",
+            sample.cycle,
+            sample.time_ns as f64 / 1e6
+        ));
+        for (resolved, bytes) in resolved.iter().zip(&sample.values) {
+            csv.push(',');
+            csv.push_str(&show(resolved, bytes));
+        }
+        csv.push('\n');
+    }
+    std::fs::write(&request.csv, csv)
+        .with_context(|| format!("{}: cannot write the trace", request.csv.display()))?;
+    println!(
+        "{} samples of {} variable(s) written to {}",
+        samples.len(),
+        places.len(),
+        request.csv.display()
     );
     Ok(())
 }

@@ -142,6 +142,58 @@ pub struct Fault {
     pub cycle: u64,
 }
 
+/// How a trace starts.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Trigger {
+    /// At once: the first samples are kept.
+    None,
+    /// On a rising edge of a BOOL.
+    Rising(Place),
+    /// On a falling edge of a BOOL.
+    Falling(Place),
+    /// While a BOOL is TRUE.
+    Level(Place),
+}
+
+/// A trace to record on the target.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct TraceConfig {
+    /// The task whose cycles are sampled (its index in the image's task table).
+    pub task: u8,
+    /// Sample every n-th cycle (1: every cycle).
+    pub every: u16,
+    /// How many samples to keep.
+    pub samples: u32,
+    /// The percentage of samples kept before the trigger.
+    pub pretrigger_percent: u8,
+    /// When recording starts.
+    pub trigger: Trigger,
+    /// The places sampled.
+    pub places: Vec<Place>,
+}
+
+/// Where a trace is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct TraceStatus {
+    /// 0 unconfigured, 1 configured, 2 armed, 3 triggered, 4 complete.
+    pub state: u8,
+    /// Samples recorded so far.
+    pub recorded: u32,
+    /// The index of the sample at the trigger, if it came.
+    pub trigger_sample: Option<u32>,
+}
+
+/// One sample of a trace.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Sample {
+    /// The task's cycle count.
+    pub cycle: u64,
+    /// The task clock in nanoseconds.
+    pub time_ns: u64,
+    /// Each place's bytes, in the configured order.
+    pub values: Vec<Vec<u8>>,
+}
+
 /// A connection to one target.
 pub struct Client {
     address: SocketAddr,
@@ -470,6 +522,99 @@ impl Client {
             let total = parse(&mut reader, &mut all).map_err(OnlineError::Protocol)?;
             if all.len() >= usize::from(total) || all.len() == before {
                 return Ok(all);
+            }
+        }
+    }
+
+    /// `TRACE_CONFIGURE`: returns the bytes of one sample's values.
+    pub async fn trace_configure(&mut self, config: &TraceConfig) -> Result<u16, OnlineError> {
+        let mut payload = vec![config.task];
+        payload.extend_from_slice(&config.every.max(1).to_le_bytes());
+        payload.extend_from_slice(&config.samples.to_le_bytes());
+        payload.push(config.pretrigger_percent.min(100));
+        let (kind, place) = match config.trigger {
+            Trigger::None => (0, None),
+            Trigger::Rising(place) => (1, Some(place)),
+            Trigger::Falling(place) => (2, Some(place)),
+            Trigger::Level(place) => (3, Some(place)),
+        };
+        payload.push(kind);
+        place
+            .unwrap_or(Place {
+                region: 0,
+                offset: 0,
+                bit: None,
+                size: 1,
+            })
+            .encode(&mut payload);
+        payload.push(config.places.len() as u8);
+        for place in &config.places {
+            place.encode(&mut payload);
+        }
+        let answer = self
+            .call(service::TRACE_CONFIGURE, &self.with_token(&payload))
+            .await?;
+        Reader::new(&answer).u16().map_err(OnlineError::Protocol)
+    }
+
+    /// `TRACE_ARM`: recording starts.
+    pub async fn trace_arm(&mut self) -> Result<(), OnlineError> {
+        self.call(service::TRACE_ARM, &self.with_token(&[]))
+            .await
+            .map(|_| ())
+    }
+
+    /// `TRACE_STATUS`.
+    pub async fn trace_status(&mut self) -> Result<TraceStatus, OnlineError> {
+        let answer = self.call(service::TRACE_STATUS, &[]).await?;
+        let mut reader = Reader::new(&answer);
+        let parse = |reader: &mut Reader<'_>| -> Result<TraceStatus, String> {
+            let state = reader.u8()?;
+            let recorded = reader.u32()?;
+            let trigger = reader.u32()?;
+            Ok(TraceStatus {
+                state,
+                recorded,
+                trigger_sample: (trigger != u32::MAX).then_some(trigger),
+            })
+        };
+        parse(&mut reader).map_err(OnlineError::Protocol)
+    }
+
+    /// `TRACE_UPLOAD`: every recorded sample, oldest first; `places` are the configured ones.
+    pub async fn trace_upload(
+        &mut self,
+        places: &[Place],
+        mut progress: impl FnMut(usize),
+    ) -> Result<Vec<Sample>, OnlineError> {
+        let mut samples = Vec::new();
+        loop {
+            let answer = self
+                .call(service::TRACE_UPLOAD, &(samples.len() as u32).to_le_bytes())
+                .await?;
+            let mut reader = Reader::new(&answer);
+            let parse =
+                |reader: &mut Reader<'_>, samples: &mut Vec<Sample>| -> Result<u8, String> {
+                    let count = reader.u8()?;
+                    for _ in 0..count {
+                        let cycle = reader.u64()?;
+                        let time_ns = reader.u64()?;
+                        let values = places
+                            .iter()
+                            .map(|p| reader.take(p.value_bytes()).map(<[u8]>::to_vec))
+                            .collect::<Result<_, _>>()?;
+                        samples.push(Sample {
+                            cycle,
+                            time_ns,
+                            values,
+                        });
+                    }
+                    Ok(count)
+                };
+            let count = parse(&mut reader, &mut samples).map_err(OnlineError::Protocol)?;
+            progress(samples.len());
+            if count == 0 {
+                return Ok(samples);
             }
         }
     }

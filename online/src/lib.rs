@@ -16,7 +16,8 @@ pub mod protocol;
 pub mod session;
 
 pub use client::{
-    Client, Fault, Identity, REQUEST_TIMEOUT, Reset, Resolved, Snapshot, TargetState, TaskInfo,
+    Client, Fault, Identity, REQUEST_TIMEOUT, Reset, Resolved, Sample, Snapshot, TargetState,
+    TaskInfo, TraceConfig, TraceStatus, Trigger,
 };
 pub use error::OnlineError;
 pub use protocol::Place;
