@@ -11,7 +11,7 @@ use std::time::{Duration, Instant};
 
 use program_image::ProgramImage;
 use runtime::areas::LocatedAreas;
-use runtime::modbus::{ModbusMap, ServerOptions, serve};
+use runtime::modbus::{MapSlot, ModbusMap, ServerOptions, serve};
 use runtime::online::codec::{FUNCTION_CODE, Reader, Request, TraceConfig, TriggerKind};
 use runtime::online::{CHUNK_BYTES, NO_BIT, OnlineServices, WirePlace};
 use runtime::scheduler::{Scheduler, SchedulerOptions};
@@ -75,7 +75,7 @@ impl Plc {
         let server = tokio::spawn(serve(
             listener,
             areas,
-            Arc::new(ModbusMap::default()),
+            MapSlot::new(ModbusMap::default()),
             ServerOptions {
                 custom: Some(services.handler()),
                 ..ServerOptions::default()

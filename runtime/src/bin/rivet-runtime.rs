@@ -18,7 +18,7 @@ use anyhow::Context;
 use clap::Parser;
 use program_image::ProgramImage;
 use runtime::areas::LocatedAreas;
-use runtime::modbus::{ModbusMap, ServerOptions, serve};
+use runtime::modbus::{MapSlot, ModbusMap, ServerOptions, serve};
 use runtime::online::OnlineServices;
 use runtime::scheduler::{Scheduler, SchedulerOptions};
 use tokio::net::TcpListener;
@@ -96,17 +96,18 @@ async fn run(arguments: Arguments) -> anyhow::Result<()> {
         eprintln!("rivet-runtime: running");
     }
 
-    // The map stays the one chosen here for the life of the process, also after a download.
-    let services = Arc::new(OnlineServices::new(
-        Arc::clone(&scheduler),
-        arguments.password.clone(),
-    ));
+    // A download replaces the map with the new image's.
+    let map = MapSlot::new(map);
+    let services = Arc::new(
+        OnlineServices::new(Arc::clone(&scheduler), arguments.password.clone())
+            .with_map(Arc::clone(&map)),
+    );
     let server_options = ServerOptions {
         custom: Some(services.handler()),
         ..ServerOptions::default()
     };
     drop(services);
-    let server = serve(listener, areas, Arc::new(map), server_options);
+    let server = serve(listener, areas, map, server_options);
     let mut reported_faults = 0;
     let mut fault_check = tokio::time::interval(FAULT_REPORT_INTERVAL);
     let mut ended = std::pin::pin!(end_signal());

@@ -12,7 +12,7 @@ use tokio::task::JoinSet;
 use crate::areas::LocatedAreas;
 use crate::modbus::exception::ExceptionCode;
 use crate::modbus::frame::{HEADER_BYTES, MbapHeader};
-use crate::modbus::map::ModbusMap;
+use crate::modbus::map_slot::MapSlot;
 use crate::modbus::pdu::{MAX_PDU_BYTES, handle_pdu, is_standard_function};
 
 /// A handler of the function codes the areas do not serve (Rivet's online services).
@@ -31,8 +31,9 @@ pub struct ServerOptions {
     pub custom: Option<CustomFunctions>,
 }
 
-/// Serves Modbus TCP on `listener`: the standard function codes on `areas` through `map`, the
-/// others through `options.custom`.
+/// Serves Modbus TCP on `listener`: the standard function codes on `areas` through the map in
+/// `map` (which may be replaced while serving, as a download does), the others through
+/// `options.custom`.
 ///
 /// Each connection is served on its own task, one request at a time in the order they come;
 /// each request locks `areas` while it is served. A connection whose frames cannot be trusted
@@ -42,7 +43,7 @@ pub struct ServerOptions {
 pub async fn serve(
     listener: TcpListener,
     areas: Arc<Mutex<LocatedAreas>>,
-    map: Arc<ModbusMap>,
+    map: Arc<MapSlot>,
     options: ServerOptions,
 ) -> io::Result<()> {
     let responder = Arc::new(Responder {
@@ -106,7 +107,7 @@ const ACCEPT_RETRY_DELAY: Duration = Duration::from_millis(100);
 /// What every connection answers with.
 struct Responder {
     areas: Arc<Mutex<LocatedAreas>>,
-    map: Arc<ModbusMap>,
+    map: Arc<MapSlot>,
     custom: Option<CustomFunctions>,
 }
 
@@ -117,8 +118,9 @@ impl Responder {
             return ExceptionCode::IllegalFunction.response(0);
         };
         if is_standard_function(function) {
+            let map = self.map.get();
             return match self.areas.lock() {
-                Ok(mut areas) => handle_pdu(&mut areas, &self.map, request),
+                Ok(mut areas) => handle_pdu(&mut areas, &map, request),
                 // The engine panicked while it held the areas: their state is unknown.
                 Err(_) => ExceptionCode::ServerDeviceFailure.response(function),
             };

@@ -16,7 +16,7 @@ use super::download::{CHUNK_BYTES, Transfer};
 use super::place::{NO_BIT, WirePlace};
 use super::trace::{MAX_TRACE_BYTES, Trace};
 use crate::engine::ResetKind;
-use crate::modbus::{CustomFunctions, ExceptionCode};
+use crate::modbus::{CustomFunctions, ExceptionCode, MapSlot, ModbusMap};
 use crate::retain::RetainRestore;
 use crate::scheduler::{Between, Scheduler, SchedulerError, SchedulerState};
 use crate::value;
@@ -36,6 +36,8 @@ pub struct OnlineServices {
     transfer: Mutex<Option<Transfer>>,
     /// The number of the last transfer begun.
     last_transfer: Mutex<u16>,
+    /// The Modbus server's map, replaced by the downloaded image's; `None` keeps the server's.
+    map: Option<Arc<MapSlot>>,
 }
 
 impl OnlineServices {
@@ -47,7 +49,15 @@ impl OnlineServices {
             tokens: Mutex::new(HashSet::new()),
             transfer: Mutex::new(None),
             last_transfer: Mutex::new(0),
+            map: None,
         }
+    }
+
+    /// The same services, replacing the map in `slot` with a downloaded image's own map (or
+    /// the default map) when the image is loaded.
+    pub fn with_map(mut self, slot: Arc<MapSlot>) -> Self {
+        self.map = Some(slot);
+        self
     }
 
     /// The hook for [`crate::modbus::ServerOptions::custom`]: function code 0x64 goes to
@@ -302,10 +312,20 @@ impl OnlineServices {
         let image = active
             .ok_or_else(|| not_now("no download is in progress"))?
             .finish()?;
-        let report = self.scheduler.load(image).map_err(|error| Refusal {
+        let refused = |message: String| Refusal {
             status: Status::ImageRefused,
-            message: error.to_string(),
-        })?;
+            message,
+        };
+        // The map is checked before loading, so that a refused map changes nothing.
+        let map = ModbusMap::for_image(&image)
+            .map_err(|error| refused(format!("the image's Modbus map is refused: {error}")))?;
+        let report = self
+            .scheduler
+            .load(image)
+            .map_err(|error| refused(error.to_string()))?;
+        if let Some(slot) = &self.map {
+            slot.set(map);
+        }
         if start {
             self.scheduler.start().map_err(scheduler_refusal)?;
         }

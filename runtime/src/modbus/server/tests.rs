@@ -1,9 +1,10 @@
 use super::*;
+use crate::modbus::ModbusMap;
 
 fn responder(custom: Option<CustomFunctions>) -> Responder {
     Responder {
         areas: Arc::new(Mutex::new(LocatedAreas::new(2, 2, 2))),
-        map: Arc::new(ModbusMap::default()),
+        map: MapSlot::new(ModbusMap::default()),
         custom,
     }
 }
