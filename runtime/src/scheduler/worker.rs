@@ -356,9 +356,11 @@ impl Worker {
             return Err(SchedulerError::NoProgram);
         };
         program.engine.reset(kind);
+        // Forces outlive a warm or cold reset and hold at once, also while stopped.
         if kind == ResetKind::Origin {
             self.forces.clear();
         }
+        self.forces.apply_to_engine(&mut program.engine);
         program.plans = program
             .engine
             .image()
