@@ -78,6 +78,7 @@ impl Plc {
             MapSlot::new(ModbusMap::default()),
             ServerOptions {
                 custom: Some(services.handler()),
+                closed: Some(services.closed_handler()),
                 ..ServerOptions::default()
             },
         ));
@@ -415,12 +416,24 @@ async fn a_corrupted_or_interrupted_download_leaves_the_running_program() {
     assert_eq!(identify(&mut client).await, (2, image.identity()));
 
     // Another client begins a download, sends part of it, and goes away.
-    {
+    let abandoned = {
         let mut interrupted = plc.connect().await;
-        send_image(&mut interrupted, 0, &other, hash, |index| index % 2 == 0).await;
-    }
+        send_image(&mut interrupted, 0, &other, hash, |index| index % 2 == 0).await
+    };
     let (status, _) = ask(&mut client, &commit).await;
     assert_eq!(status, 7, "the corrupted transfer is gone");
+    // The closed connection takes its transfer along (an empty chunk changes nothing).
+    let probe = Request::DownloadChunk {
+        token: 0,
+        transfer: abandoned,
+        offset: 0,
+        bytes: Vec::new(),
+    };
+    let deadline = Instant::now() + PATIENCE;
+    while ask(&mut client, &probe).await.0 != 7 {
+        assert!(Instant::now() < deadline, "the abandoned transfer lives on");
+        tokio::time::sleep(Duration::from_millis(5)).await;
+    }
     assert_eq!(identify(&mut client).await, (2, image.identity()));
     let (_, _, before) = read(&mut client, &[counter]).await;
     read_until(&mut client, counter, "the old program to go on", |value| {

@@ -104,6 +104,7 @@ async fn run(arguments: Arguments) -> anyhow::Result<()> {
     );
     let server_options = ServerOptions {
         custom: Some(services.handler()),
+        closed: Some(services.closed_handler()),
         ..ServerOptions::default()
     };
     drop(services);

@@ -24,4 +24,4 @@ pub use pdu::{
     MAX_PDU_BYTES, MAX_READ_BITS, MAX_READ_REGISTERS, MAX_READ_WRITE_REGISTERS, MAX_WRITE_BITS,
     MAX_WRITE_REGISTERS, handle_pdu, is_standard_function,
 };
-pub use server::{CustomFunctions, ServerOptions, serve};
+pub use server::{ConnectionClosed, CustomFunctions, ServerOptions, current_connection, serve};

@@ -19,6 +19,8 @@ pub const TRANSFER_TIMEOUT: Duration = Duration::from_secs(30);
 pub struct Transfer {
     /// The transfer's number, as the client names it.
     pub id: u16,
+    /// The Modbus connection that began it, whose closing drops it; `None` outside a server.
+    pub owner: Option<u64>,
     hash: ImageHash,
     bytes: Vec<u8>,
     /// Whether each byte has arrived.
@@ -37,6 +39,7 @@ impl Transfer {
         }
         Ok(Self {
             id,
+            owner: None,
             hash,
             bytes: vec![0; size as usize],
             arrived: vec![false; size as usize],

@@ -16,7 +16,9 @@ use super::download::{CHUNK_BYTES, Transfer};
 use super::place::{NO_BIT, WirePlace};
 use super::trace::{MAX_TRACE_BYTES, Trace};
 use crate::engine::ResetKind;
-use crate::modbus::{CustomFunctions, ExceptionCode, MapSlot, ModbusMap};
+use crate::modbus::{
+    ConnectionClosed, CustomFunctions, ExceptionCode, MapSlot, ModbusMap, current_connection,
+};
 use crate::retain::RetainRestore;
 use crate::scheduler::{Between, Scheduler, SchedulerError, SchedulerState};
 use crate::value;
@@ -69,6 +71,21 @@ impl OnlineServices {
                 return Err(ExceptionCode::IllegalFunction);
             }
             services.respond(data)
+        })
+    }
+
+    /// The hook for [`crate::modbus::ServerOptions::closed`]: a transfer ends with the
+    /// connection that began it.
+    pub fn closed_handler(self: &Arc<Self>) -> ConnectionClosed {
+        let services = Arc::clone(self);
+        Arc::new(move |connection| {
+            let mut transfer = lock(&services.transfer);
+            if transfer
+                .as_ref()
+                .is_some_and(|active| active.owner == Some(connection))
+            {
+                *transfer = None;
+            }
         })
     }
 
@@ -126,7 +143,8 @@ impl OnlineServices {
             Request::DownloadBegin { size, hash, .. } => {
                 let mut last = lock(&self.last_transfer);
                 *last = last.wrapping_add(1).max(1);
-                let transfer = Transfer::begin(*last, size, hash, Instant::now())?;
+                let mut transfer = Transfer::begin(*last, size, hash, Instant::now())?;
+                transfer.owner = current_connection();
                 *lock(&self.transfer) = Some(transfer);
                 let mut out = last.to_le_bytes().to_vec();
                 out.extend_from_slice(&CHUNK_BYTES.to_le_bytes());
