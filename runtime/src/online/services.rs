@@ -1,6 +1,6 @@
 //! The online services on a scheduler, as the Modbus server's hook for function code 0x64.
 
-use std::collections::HashSet;
+use std::collections::VecDeque;
 use std::hash::{BuildHasher, Hasher};
 use std::sync::{Arc, Mutex, MutexGuard, PoisonError};
 use std::time::{Duration, Instant};
@@ -23,6 +23,10 @@ use crate::retain::RetainRestore;
 use crate::scheduler::{Between, Scheduler, SchedulerError, SchedulerState};
 use crate::value;
 
+/// The most tokens kept; a login beyond them forgets the oldest, so that logins cannot fill
+/// the memory.
+pub const MAX_TOKENS: usize = 256;
+
 /// How long a wrong password delays its answer.
 pub const WRONG_PASSWORD_DELAY: Duration = Duration::from_millis(200);
 
@@ -32,8 +36,9 @@ pub struct OnlineServices {
     scheduler: Arc<Scheduler>,
     /// The password that changing services need; `None` lets everyone change the target.
     password: Option<String>,
-    /// The tokens given out by `LOGIN`.
-    tokens: Mutex<HashSet<u32>>,
+    /// The tokens given out by `LOGIN` with the password, oldest first (at most
+    /// [`MAX_TOKENS`]); without a password none are kept, as any token is accepted.
+    tokens: Mutex<VecDeque<u32>>,
     /// The download in progress, if any.
     transfer: Mutex<Option<Transfer>>,
     /// The number of the last transfer begun.
@@ -48,7 +53,7 @@ impl OnlineServices {
         Self {
             scheduler,
             password,
-            tokens: Mutex::new(HashSet::new()),
+            tokens: Mutex::new(VecDeque::new()),
             transfer: Mutex::new(None),
             last_transfer: Mutex::new(0),
             map: None,
@@ -294,30 +299,34 @@ impl OnlineServices {
     }
 
     fn login(&self, password: &str) -> Result<Vec<u8>, Refusal> {
-        if let Some(expected) = &self.password {
-            // Comparing digests takes the same time whatever the password and its length.
-            let given: [u8; 32] = Sha256::digest(password.as_bytes()).into();
-            let expected: [u8; 32] = Sha256::digest(expected.as_bytes()).into();
-            let difference = given
-                .iter()
-                .zip(&expected)
-                .fold(0u8, |difference, (a, b)| difference | (a ^ b));
-            if difference != 0 {
-                std::thread::sleep(WRONG_PASSWORD_DELAY);
-                return Err(Refusal {
-                    status: Status::WrongPassword,
-                    message: "wrong password".to_owned(),
-                });
-            }
+        let Some(expected) = &self.password else {
+            return Ok(random_token().to_le_bytes().to_vec());
+        };
+        // Comparing digests takes the same time whatever the password and its length.
+        let given: [u8; 32] = Sha256::digest(password.as_bytes()).into();
+        let expected: [u8; 32] = Sha256::digest(expected.as_bytes()).into();
+        let difference = given
+            .iter()
+            .zip(&expected)
+            .fold(0u8, |difference, (a, b)| difference | (a ^ b));
+        if difference != 0 {
+            std::thread::sleep(WRONG_PASSWORD_DELAY);
+            return Err(Refusal {
+                status: Status::WrongPassword,
+                message: "wrong password".to_owned(),
+            });
         }
         let mut tokens = lock(&self.tokens);
         let token = loop {
-            let token = random_u32();
-            if token != 0 && !tokens.contains(&token) {
+            let token = random_token();
+            if !tokens.contains(&token) {
                 break token;
             }
         };
-        tokens.insert(token);
+        if tokens.len() >= MAX_TOKENS {
+            tokens.pop_front();
+        }
+        tokens.push_back(token);
         Ok(token.to_le_bytes().to_vec())
     }
 
@@ -583,16 +592,22 @@ fn cut(text: &str, bytes: usize) -> &str {
     &text[..end]
 }
 
-/// A random u32 from the standard library's randomly keyed hasher, mixed with the time.
-fn random_u32() -> u32 {
-    let mut hasher = std::collections::hash_map::RandomState::new().build_hasher();
-    hasher.write_u128(
-        std::time::SystemTime::now()
-            .duration_since(std::time::UNIX_EPOCH)
-            .map(|elapsed| elapsed.as_nanos())
-            .unwrap_or(0),
-    );
-    hasher.finish() as u32
+/// A random token, not 0, from the standard library's randomly keyed hasher mixed with the
+/// time.
+fn random_token() -> u32 {
+    loop {
+        let mut hasher = std::collections::hash_map::RandomState::new().build_hasher();
+        hasher.write_u128(
+            std::time::SystemTime::now()
+                .duration_since(std::time::UNIX_EPOCH)
+                .map(|elapsed| elapsed.as_nanos())
+                .unwrap_or(0),
+        );
+        let token = hasher.finish() as u32;
+        if token != 0 {
+            return token;
+        }
+    }
 }
 
 fn lock<T>(mutex: &Mutex<T>) -> MutexGuard<'_, T> {

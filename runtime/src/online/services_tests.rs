@@ -52,6 +52,27 @@ fn changing_services_need_a_token_from_the_password_and_reading_ones_do_not() {
 }
 
 #[test]
+fn logins_keep_only_the_newest_tokens() {
+    let services = services(Some("secret"), true);
+    let login = Request::Login {
+        password: "secret".to_owned(),
+    };
+    let token = |(status, payload): (u8, Vec<u8>)| {
+        assert_eq!(status, 0);
+        u32::from_le_bytes(payload.try_into().unwrap())
+    };
+    let first = token(ask(&services, &login));
+    for _ in 0..MAX_TOKENS - 1 {
+        ask(&services, &login);
+    }
+    assert_eq!(ask(&services, &Request::Stop { token: first }).0, 0);
+    let newest = token(ask(&services, &login));
+    assert_eq!(ask(&services, &Request::Stop { token: first }).0, 4);
+    assert_eq!(ask(&services, &Request::Stop { token: newest }).0, 0);
+    assert_eq!(lock(&services.tokens).len(), MAX_TOKENS);
+}
+
+#[test]
 fn another_protocol_version_is_refused_with_both_versions() {
     let services = services(None, false);
     let (status, message) = ask(&services, &Request::Identify { protocol: 7 });
