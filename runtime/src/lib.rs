@@ -17,10 +17,13 @@
 //! - [`retain`]: RETAIN and PERSISTENT variables saved in the data directory.
 //! - [`modbus`]: the Modbus TCP server that maps the standard function codes onto the located
 //!   areas (the default map is `docs/modbus-map.md`) and leaves a hook for the online services.
+//! - [`online`]: the online services of `docs/protocol.md` (identity, download, run control,
+//!   monitor, write, force, trace, statistics, faults) on that hook.
 
 pub mod areas;
 pub mod engine;
 pub mod modbus;
+pub mod online;
 pub mod retain;
 pub mod scheduler;
 pub mod simulation;

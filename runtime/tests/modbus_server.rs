@@ -12,7 +12,7 @@ use std::sync::{Arc, Mutex};
 use std::time::Duration;
 
 use runtime::areas::{Area, LocatedAreas};
-use runtime::modbus::{ExceptionCode, ModbusMap, ServerOptions, serve};
+use runtime::modbus::{ExceptionCode, MapSlot, ModbusMap, ServerOptions, serve};
 use tokio::io::{AsyncReadExt, AsyncWriteExt};
 use tokio::net::{TcpListener, TcpStream};
 use tokio_modbus::client::{Client, Context, Reader, Writer};
@@ -38,7 +38,7 @@ async fn start_server(
     let listener = TcpListener::bind("127.0.0.1:0").await.unwrap();
     let address = listener.local_addr().unwrap();
     let areas = Arc::new(Mutex::new(areas));
-    let map = Arc::new(ModbusMap::default());
+    let map = MapSlot::new(ModbusMap::default());
     tokio::spawn(serve(listener, Arc::clone(&areas), map, options));
     (address, areas)
 }

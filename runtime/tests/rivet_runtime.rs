@@ -1,6 +1,7 @@
 //! The `rivet-runtime` binary as a process: it runs an image, serves it over Modbus TCP to
-//! tokio-modbus, mbpoll and pymodbus, keeps a RETAIN variable across a restart, and refuses a
-//! damaged image while it goes on serving.
+//! tokio-modbus, mbpoll and pymodbus, keeps a RETAIN variable across a restart, refuses a
+//! damaged image while it goes on serving, and with `--password` lets only a logged-in client
+//! change the target over the online services.
 //!
 //! The image is built by hand from `program_image` types (the runtime may not use the compiler;
 //! the `tests` crate runs compiled Structured Text in process). It is this program, with a
@@ -512,6 +513,55 @@ async fn a_fault_is_reported_on_standard_error_and_modbus_goes_on() {
         .unwrap()
         .unwrap();
     assert_eq!(now, stood, "the faulted task went on counting");
+    drop(client);
+    runtime.terminate();
+}
+
+/// Sends an online request (function code 0x64) and returns the status and payload.
+async fn online(client: &mut Context, request: &runtime::online::codec::Request) -> (u8, Vec<u8>) {
+    use tokio_modbus::client::Client;
+    let call = client.call(tokio_modbus::Request::Custom(
+        runtime::online::codec::FUNCTION_CODE,
+        std::borrow::Cow::Owned(request.encode()),
+    ));
+    let response = tokio::time::timeout(PATIENCE, call)
+        .await
+        .expect("the answer took too long")
+        .unwrap()
+        .unwrap();
+    let tokio_modbus::Response::Custom(_, body) = response else {
+        panic!("not a custom response: {response:?}");
+    };
+    (body[1], body[2..].to_vec())
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn with_a_password_the_binary_stops_only_for_a_logged_in_client() {
+    use runtime::online::codec::Request;
+
+    let dir = tempfile::tempdir().unwrap();
+    let image = write_image(dir.path(), &image().encode());
+    let mut runtime = Runtime::start(
+        &dir.path().join("data"),
+        Some(&image),
+        &["--password", "swordfish"],
+    );
+    runtime.wait_for_message("running");
+    let mut client = connect(runtime.address).await;
+    let (status, identity) = online(&mut client, &Request::Identify { protocol: 1 }).await;
+    assert_eq!(status, 0);
+    assert_eq!(identity.last(), Some(&1), "a password is required");
+    assert_eq!(online(&mut client, &Request::Stop { token: 0 }).await.0, 3);
+    let login = Request::Login {
+        password: "swordfish".to_owned(),
+    };
+    let (status, token) = online(&mut client, &login).await;
+    assert_eq!(status, 0);
+    let token = u32::from_le_bytes(token.try_into().unwrap());
+    assert_eq!(
+        online(&mut client, &Request::Stop { token }).await,
+        (0, vec![1])
+    );
     drop(client);
     runtime.terminate();
 }

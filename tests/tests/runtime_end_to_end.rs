@@ -11,7 +11,7 @@ use std::time::{Duration, Instant};
 use program_image::ProgramImage;
 use runtime::areas::{Area, LocatedAreas};
 use runtime::engine::{FaultKind, ResetKind};
-use runtime::modbus::{ModbusMap, ServerOptions, serve};
+use runtime::modbus::{MapSlot, ModbusMap, ServerOptions, serve};
 use runtime::retain::RetainRestore;
 use runtime::scheduler::{Scheduler, SchedulerOptions, SchedulerState, SchedulerStatus};
 use tests::peers::{python_with_pymodbus, required_program, run};
@@ -79,7 +79,7 @@ impl Plc {
         let server = tokio::spawn(serve(
             listener,
             Arc::clone(&areas),
-            Arc::new(ModbusMap::default()),
+            MapSlot::new(ModbusMap::default()),
             ServerOptions::default(),
         ));
         Self {

@@ -18,7 +18,8 @@ use anyhow::Context;
 use clap::Parser;
 use program_image::ProgramImage;
 use runtime::areas::LocatedAreas;
-use runtime::modbus::{ModbusMap, ServerOptions, serve};
+use runtime::modbus::{MapSlot, ModbusMap, ServerOptions, serve};
+use runtime::online::OnlineServices;
 use runtime::scheduler::{Scheduler, SchedulerOptions};
 use tokio::net::TcpListener;
 
@@ -38,6 +39,10 @@ struct Arguments {
     /// Load the image but do not start its tasks.
     #[arg(long)]
     stopped: bool,
+    /// The password the online services that change the target require (download, start,
+    /// stop, reset, write, force, trace); without one, every client may change it.
+    #[arg(long)]
+    password: Option<String>,
 }
 
 /// How often the runtime looks for new faults to report.
@@ -72,7 +77,7 @@ async fn run(arguments: Arguments) -> anyhow::Result<()> {
         data_dir: Some(arguments.data_dir.clone()),
         ..SchedulerOptions::default()
     };
-    let scheduler = Scheduler::spawn(Arc::clone(&areas), options)?;
+    let scheduler = Arc::new(Scheduler::spawn(Arc::clone(&areas), options)?);
     let loaded = match &arguments.image {
         Some(path) => load(&scheduler, path),
         None => {
@@ -91,11 +96,23 @@ async fn run(arguments: Arguments) -> anyhow::Result<()> {
         eprintln!("rivet-runtime: running");
     }
 
-    let server = serve(listener, areas, Arc::new(map), ServerOptions::default());
+    // A download replaces the map with the new image's.
+    let map = MapSlot::new(map);
+    let services = Arc::new(
+        OnlineServices::new(Arc::clone(&scheduler), arguments.password.clone())
+            .with_map(Arc::clone(&map)),
+    );
+    let server_options = ServerOptions {
+        custom: Some(services.handler()),
+        closed: Some(services.closed_handler()),
+        ..ServerOptions::default()
+    };
+    drop(services);
+    let server = serve(listener, areas, map, server_options);
     let mut reported_faults = 0;
     let mut fault_check = tokio::time::interval(FAULT_REPORT_INTERVAL);
     let mut ended = std::pin::pin!(end_signal());
-    let mut server = std::pin::pin!(server);
+    let mut server = Box::pin(server);
     let outcome = loop {
         tokio::select! {
             served = &mut server => break served.context("the Modbus server stopped"),
@@ -115,9 +132,15 @@ async fn run(arguments: Arguments) -> anyhow::Result<()> {
             }
         }
     };
-    scheduler
-        .shutdown()
-        .context("cannot save the retained values")?;
+    // The server's connections hold the online services, and they the scheduler.
+    drop(server);
+    match Arc::try_unwrap(scheduler) {
+        Ok(scheduler) => scheduler
+            .shutdown()
+            .context("cannot save the retained values")?,
+        // Cannot happen once the server is gone; dropping the last handle still saves.
+        Err(scheduler) => drop(scheduler),
+    }
     outcome
 }
 

@@ -12,14 +12,16 @@
 mod exception;
 mod frame;
 mod map;
+mod map_slot;
 mod pdu;
 mod server;
 
 pub use exception::ExceptionCode;
 pub use frame::{FrameError, HEADER_BYTES, MbapHeader};
 pub use map::{BitLocation, MapError, MapRange, ModbusMap, RegisterLocation, Table, WordOrder};
+pub use map_slot::MapSlot;
 pub use pdu::{
     MAX_PDU_BYTES, MAX_READ_BITS, MAX_READ_REGISTERS, MAX_READ_WRITE_REGISTERS, MAX_WRITE_BITS,
     MAX_WRITE_REGISTERS, handle_pdu, is_standard_function,
 };
-pub use server::{CustomFunctions, ServerOptions, serve};
+pub use server::{ConnectionClosed, CustomFunctions, ServerOptions, current_connection, serve};

@@ -12,7 +12,7 @@ use tokio::task::JoinSet;
 use crate::areas::LocatedAreas;
 use crate::modbus::exception::ExceptionCode;
 use crate::modbus::frame::{HEADER_BYTES, MbapHeader};
-use crate::modbus::map::ModbusMap;
+use crate::modbus::map_slot::MapSlot;
 use crate::modbus::pdu::{MAX_PDU_BYTES, handle_pdu, is_standard_function};
 
 /// A handler of the function codes the areas do not serve (Rivet's online services).
@@ -22,6 +22,20 @@ use crate::modbus::pdu::{MAX_PDU_BYTES, handle_pdu, is_standard_function};
 /// the areas locked, and should return quickly.
 pub type CustomFunctions = Arc<dyn Fn(u8, &[u8]) -> Result<Vec<u8>, ExceptionCode> + Send + Sync>;
 
+/// Told the number of a connection that has closed (see [`current_connection`]).
+pub type ConnectionClosed = Arc<dyn Fn(u64) + Send + Sync>;
+
+tokio::task_local! {
+    /// The number of the connection whose request is being served.
+    static CONNECTION: u64;
+}
+
+/// The number of the connection whose request a [`CustomFunctions`] hook is serving (unique
+/// for the life of the server), or `None` outside a server.
+pub fn current_connection() -> Option<u64> {
+    CONNECTION.try_with(|connection| *connection).ok()
+}
+
 /// How the server behaves; fixed for the life of one [`serve`] call.
 #[derive(Clone)]
 pub struct ServerOptions {
@@ -29,10 +43,13 @@ pub struct ServerOptions {
     pub max_clients: usize,
     /// The handler of the non-standard function codes; without one they get exception 1.
     pub custom: Option<CustomFunctions>,
+    /// Told when a connection has closed, so that state kept for it can go.
+    pub closed: Option<ConnectionClosed>,
 }
 
-/// Serves Modbus TCP on `listener`: the standard function codes on `areas` through `map`, the
-/// others through `options.custom`.
+/// Serves Modbus TCP on `listener`: the standard function codes on `areas` through the map in
+/// `map` (which may be replaced while serving, as a download does), the others through
+/// `options.custom`.
 ///
 /// Each connection is served on its own task, one request at a time in the order they come;
 /// each request locks `areas` while it is served. A connection whose frames cannot be trusted
@@ -42,7 +59,7 @@ pub struct ServerOptions {
 pub async fn serve(
     listener: TcpListener,
     areas: Arc<Mutex<LocatedAreas>>,
-    map: Arc<ModbusMap>,
+    map: Arc<MapSlot>,
     options: ServerOptions,
 ) -> io::Result<()> {
     let responder = Arc::new(Responder {
@@ -54,6 +71,7 @@ pub async fn serve(
         options.max_clients.min(Semaphore::MAX_PERMITS),
     ));
     let mut connections = JoinSet::new();
+    let mut connection = 0u64;
     loop {
         tokio::select! {
             accepted = listener.accept() => {
@@ -68,12 +86,18 @@ pub async fn serve(
                 // A connection beyond `max_clients` is dropped here, which closes it.
                 if let Ok(place) = Arc::clone(&places).try_acquire_owned() {
                     let responder = Arc::clone(&responder);
-                    connections.spawn(async move {
+                    let closed = options.closed.clone();
+                    connection += 1;
+                    let id = connection;
+                    connections.spawn(CONNECTION.scope(id, async move {
                         // An error ends only this connection, which is all there is to do
                         // about a peer that breaks the protocol or goes away.
                         let _ = serve_connection(stream, &responder).await;
+                        if let Some(closed) = closed {
+                            closed(id);
+                        }
                         drop(place);
-                    });
+                    }));
                 }
             }
             Some(_) = connections.join_next(), if !connections.is_empty() => {}
@@ -87,6 +111,7 @@ impl Default for ServerOptions {
         Self {
             max_clients: 64,
             custom: None,
+            closed: None,
         }
     }
 }
@@ -96,6 +121,7 @@ impl std::fmt::Debug for ServerOptions {
         f.debug_struct("ServerOptions")
             .field("max_clients", &self.max_clients)
             .field("custom", &self.custom.as_ref().map(|_| "Fn(u8, &[u8])"))
+            .field("closed", &self.closed.as_ref().map(|_| "Fn(u64)"))
             .finish()
     }
 }
@@ -106,7 +132,7 @@ const ACCEPT_RETRY_DELAY: Duration = Duration::from_millis(100);
 /// What every connection answers with.
 struct Responder {
     areas: Arc<Mutex<LocatedAreas>>,
-    map: Arc<ModbusMap>,
+    map: Arc<MapSlot>,
     custom: Option<CustomFunctions>,
 }
 
@@ -117,8 +143,9 @@ impl Responder {
             return ExceptionCode::IllegalFunction.response(0);
         };
         if is_standard_function(function) {
+            let map = self.map.get();
             return match self.areas.lock() {
-                Ok(mut areas) => handle_pdu(&mut areas, &self.map, request),
+                Ok(mut areas) => handle_pdu(&mut areas, &map, request),
                 // The engine panicked while it held the areas: their state is unknown.
                 Err(_) => ExceptionCode::ServerDeviceFailure.response(function),
             };

@@ -47,6 +47,7 @@ use program_image::{ImageHash, ProgramImage};
 
 use crate::areas::LocatedAreas;
 use crate::engine::{Engine, FaultRecord, LoadError, ResetKind};
+use crate::online::{Forces, Memory, Trace};
 use crate::retain::{RetainError, RetainRestore};
 
 pub use statistics::TaskStatistics;
@@ -104,6 +105,19 @@ pub const MAX_FAULTS: usize = 64;
 pub struct LoadReport {
     /// What became of the saved retained values; `None` without a data directory.
     pub retain: Option<RetainRestore>,
+}
+
+/// What an action run between two cycles (see [`Scheduler::between`]) may touch; it lives only
+/// while the action runs.
+pub struct Between<'a> {
+    /// The loaded program's memory and the located areas (locked); `None` without a program.
+    pub memory: Option<Memory<'a>>,
+    /// The force table.
+    pub forces: &'a mut Forces,
+    /// The trace recorder.
+    pub trace: &'a mut Trace,
+    /// Cycles run by all tasks since the scheduler started.
+    pub cycles: u64,
 }
 
 /// Why the scheduler could not do what it was asked.
@@ -197,6 +211,20 @@ impl Scheduler {
         self.ask(|reply| Command::Reset(kind, reply))?
     }
 
+    /// Runs `action` on the scheduler's thread between two cycles (at once when stopped), with
+    /// the located areas locked, and returns what it returns. It should be quick: no task runs
+    /// meanwhile.
+    pub fn between<T: Send + 'static>(
+        &self,
+        action: impl FnOnce(&mut Between<'_>) -> T + Send + 'static,
+    ) -> Result<T, SchedulerError> {
+        self.ask(|reply: mpsc::Sender<T>| {
+            Command::Between(Box::new(move |between| {
+                let _ = reply.send(action(between));
+            }))
+        })
+    }
+
     /// The state, statistics and faults now.
     pub fn status(&self) -> SchedulerStatus {
         self.status
@@ -255,8 +283,13 @@ enum Command {
     Start(Reply),
     Stop(Reply),
     Reset(ResetKind, Reply),
+    /// An action between two cycles, which sends its own answer.
+    Between(BetweenAction),
     Shutdown(Reply),
 }
+
+/// An action run between two cycles.
+type BetweenAction = Box<dyn FnOnce(&mut Between<'_>) + Send>;
 
 #[cfg(test)]
 mod tests;

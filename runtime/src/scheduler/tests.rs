@@ -320,3 +320,50 @@ fn cycles_that_finish_past_the_watchdog_time_fault_the_task_at_the_sensitivity()
         "task 'Task0' stopped: watchdog: the cycle ran longer than 0 µs in Program0 (instruction 0)"
     );
 }
+
+#[test]
+fn a_forced_count_holds_before_and_after_every_cycle_and_a_load_releases_it() {
+    use crate::online::{NO_BIT, WirePlace};
+    use crate::test_images::count;
+
+    let (scheduler, areas) = scheduler(SchedulerOptions::default());
+    let tasks = [TestTask::cyclic(MS, 1)];
+    scheduler.load(image(&tasks, &[])).unwrap();
+    let counted = WirePlace {
+        region: 0,
+        offset: count(0),
+        bit: NO_BIT,
+        size: 4,
+    };
+    let output = WirePlace {
+        region: 2,
+        offset: count_in_output(0),
+        bit: NO_BIT,
+        size: 4,
+    };
+    let forced = scheduler
+        .between(move |between| {
+            between.forces.set(counted, 7i32.to_le_bytes().to_vec());
+            between.cycles
+        })
+        .unwrap();
+    scheduler.start().unwrap();
+    wait_for(&scheduler, "ten cycles", |status| {
+        status.tasks[0].cycles >= 10
+    });
+    let (cycles, value, copied) = scheduler
+        .between(move |between| {
+            let memory = between.memory.as_ref().unwrap();
+            (between.cycles, memory.read(counted), memory.read(output))
+        })
+        .unwrap();
+    assert!(cycles >= forced + 10);
+    assert_eq!(value, 7i32.to_le_bytes());
+    // Within the cycle the program added one to the forced count and copied that out.
+    assert_eq!(copied, 8i32.to_le_bytes());
+    scheduler.load(image(&tasks, &[])).unwrap();
+    wait_for(&scheduler, "cycles of the new program", |status| {
+        status.tasks[0].cycles >= 20
+    });
+    assert!(dword(&areas.lock().unwrap().output, count_in_output(0)) >= 19);
+}

@@ -9,11 +9,12 @@ use program_image::{ImageHash, Region};
 use super::plan::{self, TaskPlan};
 use super::retain_writer::RetainWriter;
 use super::{
-    Command, LoadReport, MAX_FAULTS, SchedulerError, SchedulerOptions, SchedulerState,
+    Between, Command, LoadReport, MAX_FAULTS, SchedulerError, SchedulerOptions, SchedulerState,
     SchedulerStatus,
 };
 use crate::areas::LocatedAreas;
 use crate::engine::{Engine, FaultKind, FaultRecord, ResetKind};
+use crate::online::{Forces, Memory, Trace};
 use crate::retain::{RetainSnapshot, RetainStore};
 
 /// Everything the scheduler's thread owns.
@@ -28,6 +29,13 @@ pub(super) struct Worker {
     running: bool,
     /// When retained values are next saved, while running.
     next_retain_save_ns: u64,
+    /// The forced places, written before and after every cycle; cleared by a load and an
+    /// origin reset.
+    forces: Forces,
+    /// The trace recorder, sampling at the end of its task's cycles; reset by a load.
+    trace: Trace,
+    /// Cycles run by all tasks since the scheduler started.
+    cycles_total: u64,
 }
 
 /// A loaded program and the schedule of its tasks.
@@ -65,6 +73,9 @@ impl Worker {
             program: None,
             running: false,
             next_retain_save_ns: 0,
+            forces: Forces::default(),
+            trace: Trace::default(),
+            cycles_total: 0,
         }
     }
 
@@ -162,9 +173,22 @@ impl Worker {
         copy(&areas.input, program.engine.region_mut(Region::Input));
         copy(&areas.output, program.engine.region_mut(Region::Output));
         copy(&areas.memory, program.engine.region_mut(Region::Memory));
+        // Forced values hold before and after the cycle, whatever the program assigns.
+        self.forces.apply_to_engine(&mut program.engine);
         let result = run_guarded(&mut program.engine, task, started, cycle);
+        self.forces.apply_to_engine(&mut program.engine);
         copy(program.engine.region(Region::Output), &mut areas.output);
         copy(program.engine.region(Region::Memory), &mut areas.memory);
+        self.forces.apply_to_areas(&mut areas);
+        self.cycles_total += 1;
+        if self.trace.recording_task() == Some(task) {
+            let memory = Memory {
+                engine: &mut program.engine,
+                areas: &mut areas,
+            };
+            self.trace
+                .end_of_cycle(cycle + 1, started, |place| memory.read(place));
+        }
         let ended = self.epoch.elapsed().as_nanos() as u64;
         drop(areas);
 
@@ -229,6 +253,19 @@ impl Worker {
             Command::Reset(kind, reply) => {
                 let _ = reply.send(self.reset(kind));
             }
+            Command::Between(action) => {
+                let mut areas = lock(&self.areas);
+                let mut between = Between {
+                    memory: self.program.as_mut().map(|program| Memory {
+                        engine: &mut program.engine,
+                        areas: &mut areas,
+                    }),
+                    forces: &mut self.forces,
+                    trace: &mut self.trace,
+                    cycles: self.cycles_total,
+                };
+                action(&mut between);
+            }
             Command::Shutdown(reply) => {
                 let _ = reply.send(self.stop());
                 return Next::Exit;
@@ -264,6 +301,9 @@ impl Worker {
         }
         let plans = engine.image().tasks.iter().map(TaskPlan::new).collect();
         self.program = Some(Program { engine, plans });
+        // The new program's places are not the old one's.
+        self.forces.clear();
+        self.trace.unconfigure();
         self.publish(Some(identity));
         if was_running {
             self.start()?;
@@ -316,6 +356,11 @@ impl Worker {
             return Err(SchedulerError::NoProgram);
         };
         program.engine.reset(kind);
+        // Forces outlive a warm or cold reset and hold at once, also while stopped.
+        if kind == ResetKind::Origin {
+            self.forces.clear();
+        }
+        self.forces.apply_to_engine(&mut program.engine);
         program.plans = program
             .engine
             .image()

@@ -1,9 +1,10 @@
 use super::*;
+use crate::modbus::ModbusMap;
 
 fn responder(custom: Option<CustomFunctions>) -> Responder {
     Responder {
         areas: Arc::new(Mutex::new(LocatedAreas::new(2, 2, 2))),
-        map: Arc::new(ModbusMap::default()),
+        map: MapSlot::new(ModbusMap::default()),
         custom,
     }
 }
@@ -77,6 +78,6 @@ fn default_options_take_64_clients_and_no_hook() {
     };
     assert_eq!(
         format!("{with_hook:?}"),
-        r#"ServerOptions { max_clients: 64, custom: Some("Fn(u8, &[u8])") }"#
+        r#"ServerOptions { max_clients: 64, custom: Some("Fn(u8, &[u8])"), closed: None }"#
     );
 }

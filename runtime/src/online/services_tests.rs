@@ -1,0 +1,180 @@
+use proptest::prelude::*;
+
+use super::*;
+use crate::areas::LocatedAreas;
+use crate::scheduler::SchedulerOptions;
+use crate::test_images::{TestTask, image};
+
+fn services(password: Option<&str>, loaded: bool) -> OnlineServices {
+    let areas = Arc::new(Mutex::new(LocatedAreas::default()));
+    let scheduler = Scheduler::spawn(areas, SchedulerOptions::default()).unwrap();
+    if loaded {
+        scheduler
+            .load(image(&[TestTask::cyclic(10_000_000, 1)], &[]))
+            .unwrap();
+    }
+    OnlineServices::new(Arc::new(scheduler), password.map(str::to_owned))
+}
+
+/// The status and payload of the answer to `request`.
+fn ask(services: &OnlineServices, request: &Request) -> (u8, Vec<u8>) {
+    let body = services.respond(&request.encode()).unwrap();
+    assert_eq!(body[0], request.service());
+    (body[1], body[2..].to_vec())
+}
+
+#[test]
+fn changing_services_need_a_token_from_the_password_and_reading_ones_do_not() {
+    let services = services(Some("secret"), true);
+    let (status, identity) = ask(&services, &Request::Identify { protocol: 1 });
+    assert_eq!(status, 0);
+    assert_eq!(identity.last(), Some(&1), "a password is required");
+    assert_eq!(ask(&services, &Request::Start { token: 0 }).0, 3);
+    assert_eq!(ask(&services, &Request::Start { token: 1234 }).0, 4);
+    let wrong = Request::Login {
+        password: "guess".to_owned(),
+    };
+    let started = Instant::now();
+    assert_eq!(ask(&services, &wrong).0, 4);
+    assert!(started.elapsed() >= WRONG_PASSWORD_DELAY);
+    let (status, token) = ask(
+        &services,
+        &Request::Login {
+            password: "secret".to_owned(),
+        },
+    );
+    assert_eq!(status, 0);
+    let token = u32::from_le_bytes(token.try_into().unwrap());
+    assert_ne!(token, 0);
+    assert_eq!(ask(&services, &Request::Start { token }), (0, vec![2]));
+    assert_eq!(ask(&services, &Request::Stop { token }), (0, vec![1]));
+    assert_eq!(ask(&services, &Request::Tasks).0, 0);
+}
+
+#[test]
+fn logins_keep_only_the_newest_tokens() {
+    let services = services(Some("secret"), true);
+    let login = Request::Login {
+        password: "secret".to_owned(),
+    };
+    let token = |(status, payload): (u8, Vec<u8>)| {
+        assert_eq!(status, 0);
+        u32::from_le_bytes(payload.try_into().unwrap())
+    };
+    let first = token(ask(&services, &login));
+    for _ in 0..MAX_TOKENS - 1 {
+        ask(&services, &login);
+    }
+    assert_eq!(ask(&services, &Request::Stop { token: first }).0, 0);
+    let newest = token(ask(&services, &login));
+    assert_eq!(ask(&services, &Request::Stop { token: first }).0, 4);
+    assert_eq!(ask(&services, &Request::Stop { token: newest }).0, 0);
+    assert_eq!(lock(&services.tokens).len(), MAX_TOKENS);
+}
+
+#[test]
+fn another_protocol_version_is_refused_with_both_versions() {
+    let services = services(None, false);
+    let (status, message) = ask(&services, &Request::Identify { protocol: 7 });
+    assert_eq!(status, 9);
+    let message = String::from_utf8(message[1..].to_vec()).unwrap();
+    assert!(message.contains('7') && message.contains('1'), "{message}");
+}
+
+#[test]
+fn without_a_program_the_services_that_need_one_say_not_now() {
+    let services = services(None, false);
+    let place = WirePlace {
+        region: 0,
+        offset: 0,
+        bit: NO_BIT,
+        size: 1,
+    };
+    assert_eq!(ask(&services, &Request::Start { token: 0 }).0, 7);
+    assert_eq!(
+        ask(
+            &services,
+            &Request::Read {
+                places: vec![place]
+            }
+        )
+        .0,
+        7
+    );
+    assert_eq!(
+        ask(
+            &services,
+            &Request::Resolve {
+                path: "Main.x".to_owned()
+            }
+        )
+        .0,
+        7
+    );
+    let (status, identity) = ask(&services, &Request::Identify { protocol: 1 });
+    assert_eq!(status, 0);
+    assert!(identity.contains(&0) && identity.ends_with(&[0, 0]));
+}
+
+#[test]
+fn a_place_outside_its_region_is_refused_and_nothing_is_written() {
+    let services = services(None, true);
+    let inside = WirePlace {
+        region: 0,
+        offset: 0,
+        bit: NO_BIT,
+        size: 4,
+    };
+    let outside = WirePlace {
+        offset: 1 << 20,
+        ..inside
+    };
+    let write = Request::Write {
+        token: 0,
+        values: vec![(inside, vec![1, 2, 3, 4]), (outside, vec![0; 4])],
+    };
+    assert_eq!(ask(&services, &write).0, 5);
+    let (status, read) = ask(
+        &services,
+        &Request::Read {
+            places: vec![inside],
+        },
+    );
+    assert_eq!(status, 0);
+    assert_eq!(&read[9..], &[0, 0, 0, 0]);
+    let bad_bit = WirePlace {
+        region: 3,
+        offset: 0,
+        bit: 8,
+        size: 1,
+    };
+    assert_eq!(
+        ask(
+            &services,
+            &Request::Read {
+                places: vec![bad_bit]
+            }
+        )
+        .0,
+        5
+    );
+}
+
+#[test]
+fn an_empty_request_is_exception_3() {
+    let services = services(None, false);
+    assert_eq!(services.respond(&[]), Err(ExceptionCode::IllegalDataValue));
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+    #[test]
+    fn any_request_gets_an_answer_that_fits_without_a_panic(
+        request in proptest::collection::vec(any::<u8>(), 1..252),
+    ) {
+        let services = services(None, true);
+        let body = services.respond(&request).unwrap();
+        prop_assert!(body.len() <= MAX_PAYLOAD_BYTES + 2);
+        prop_assert_eq!(body[0], request[0]);
+    }
+}

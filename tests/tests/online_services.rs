@@ -1,0 +1,443 @@
+//! The online services (`docs/protocol.md`) end to end: a scheduler and a Modbus server in
+//! this process with the services wired in, and a tokio-modbus client sending function code
+//! 0x64 over 127.0.0.1.
+
+#![allow(clippy::unwrap_used, clippy::expect_used)] // A panic is a failed test.
+
+use std::borrow::Cow;
+use std::net::SocketAddr;
+use std::sync::{Arc, Mutex};
+use std::time::{Duration, Instant};
+
+use program_image::ProgramImage;
+use runtime::areas::LocatedAreas;
+use runtime::modbus::{MapSlot, ModbusMap, ServerOptions, serve};
+use runtime::online::codec::{FUNCTION_CODE, Reader, Request, TraceConfig, TriggerKind};
+use runtime::online::{CHUNK_BYTES, NO_BIT, OnlineServices, WirePlace};
+use runtime::scheduler::{Scheduler, SchedulerOptions};
+use sha2::{Digest, Sha256};
+use tokio_modbus::client::{Client, Context};
+use tokio_modbus::{Request as ModbusRequest, Response};
+
+/// How long any one step may take before the test gives up.
+const PATIENCE: Duration = Duration::from_secs(10);
+
+/// Counts, assigns a constant every cycle and pulses every tenth cycle.
+const COUNTING: &str = "\
+PROGRAM Main
+VAR
+    counter : DINT;
+    assigned : DINT;
+    pulse : BOOL;
+END_VAR
+counter := counter + 1;
+assigned := 5;
+pulse := (counter MOD 10) = 0;
+END_PROGRAM
+";
+
+/// Another program, to download over the first.
+const OTHER: &str = "\
+PROGRAM Main
+VAR
+    counter : DINT;
+END_VAR
+counter := counter + 2;
+END_PROGRAM
+";
+
+fn compile(text: &str) -> ProgramImage {
+    let source = compiler::SourceProject::new(text);
+    match compiler::compile_source(&source, "test.st") {
+        Ok(image) => image,
+        Err(error) => panic!("the test program does not compile: {error:?}"),
+    }
+}
+
+/// A scheduler and a Modbus server with the online services on 127.0.0.1 port 0.
+struct Plc {
+    scheduler: Arc<Scheduler>,
+    address: SocketAddr,
+    server: tokio::task::JoinHandle<std::io::Result<()>>,
+}
+
+impl Plc {
+    async fn start(password: Option<&str>) -> Self {
+        let areas = Arc::new(Mutex::new(LocatedAreas::default()));
+        let scheduler =
+            Arc::new(Scheduler::spawn(Arc::clone(&areas), SchedulerOptions::default()).unwrap());
+        let services = Arc::new(OnlineServices::new(
+            Arc::clone(&scheduler),
+            password.map(str::to_owned),
+        ));
+        let listener = tokio::net::TcpListener::bind("127.0.0.1:0").await.unwrap();
+        let address = listener.local_addr().unwrap();
+        let server = tokio::spawn(serve(
+            listener,
+            areas,
+            MapSlot::new(ModbusMap::default()),
+            ServerOptions {
+                custom: Some(services.handler()),
+                closed: Some(services.closed_handler()),
+                ..ServerOptions::default()
+            },
+        ));
+        Self {
+            scheduler,
+            address,
+            server,
+        }
+    }
+
+    async fn connect(&self) -> Context {
+        tokio::time::timeout(PATIENCE, tokio_modbus::client::tcp::connect(self.address))
+            .await
+            .expect("connecting took too long")
+            .unwrap()
+    }
+}
+
+impl Drop for Plc {
+    fn drop(&mut self) {
+        self.server.abort();
+    }
+}
+
+/// Sends `request` and returns the status and payload of the answer.
+async fn ask(client: &mut Context, request: &Request) -> (u8, Vec<u8>) {
+    let call = client.call(ModbusRequest::Custom(
+        FUNCTION_CODE,
+        Cow::Owned(request.encode()),
+    ));
+    let response = tokio::time::timeout(PATIENCE, call)
+        .await
+        .expect("the answer took too long")
+        .unwrap()
+        .unwrap();
+    let Response::Custom(function, body) = response else {
+        panic!("not a custom response: {response:?}");
+    };
+    assert_eq!(function, FUNCTION_CODE);
+    assert_eq!(body[0], request.service(), "the answer names its service");
+    (body[1], body[2..].to_vec())
+}
+
+/// Sends `request` and returns the payload of an answer that must be "done".
+async fn done(client: &mut Context, request: &Request) -> Vec<u8> {
+    let (status, payload) = ask(client, request).await;
+    assert_eq!(
+        status,
+        0,
+        "{request:?} was refused: {}",
+        String::from_utf8_lossy(payload.get(1..).unwrap_or_default())
+    );
+    payload
+}
+
+/// The state and image hash `IDENTIFY` gives.
+async fn identify(client: &mut Context) -> (u8, [u8; 32]) {
+    let payload = done(client, &Request::Identify { protocol: 1 }).await;
+    let mut reader = Reader::new(&payload);
+    assert_eq!(reader.u16().unwrap(), 1);
+    reader.str8().unwrap();
+    let state = reader.u8().unwrap();
+    (state, reader.hash().unwrap())
+}
+
+/// Begins a download of `bytes` announced with `hash` and sends the chunks `chunks` selects.
+async fn send_image(
+    client: &mut Context,
+    token: u32,
+    bytes: &[u8],
+    hash: [u8; 32],
+    chunks: impl Fn(usize) -> bool,
+) -> u16 {
+    let begin = Request::DownloadBegin {
+        token,
+        size: bytes.len() as u32,
+        hash,
+    };
+    let payload = done(client, &begin).await;
+    let mut reader = Reader::new(&payload);
+    let transfer = reader.u16().unwrap();
+    let chunk_size = reader.u16().unwrap();
+    assert_eq!(chunk_size, CHUNK_BYTES);
+    for (index, chunk) in bytes.chunks(usize::from(chunk_size)).enumerate() {
+        if !chunks(index) {
+            continue;
+        }
+        let request = Request::DownloadChunk {
+            token,
+            transfer,
+            offset: (index * usize::from(chunk_size)) as u32,
+            bytes: chunk.to_vec(),
+        };
+        done(client, &request).await;
+    }
+    transfer
+}
+
+/// Downloads `image` in chunks, commits it and starts it.
+async fn download(client: &mut Context, token: u32, image: &ProgramImage) {
+    let bytes = image.encode();
+    let hash = Sha256::digest(&bytes).into();
+    let transfer = send_image(client, token, &bytes, hash, |_| true).await;
+    let commit = Request::DownloadCommit {
+        token,
+        transfer,
+        start: true,
+    };
+    done(client, &commit).await;
+}
+
+async fn resolve(client: &mut Context, path: &str) -> WirePlace {
+    let payload = done(
+        client,
+        &Request::Resolve {
+            path: path.to_owned(),
+        },
+    )
+    .await;
+    Reader::new(&payload).place().unwrap()
+}
+
+/// The cycle count, the forced bitmap and the DINT values of `places`.
+async fn read(client: &mut Context, places: &[WirePlace]) -> (u64, u8, Vec<i32>) {
+    let payload = done(
+        client,
+        &Request::Read {
+            places: places.to_vec(),
+        },
+    )
+    .await;
+    let mut reader = Reader::new(&payload);
+    let cycle = reader.u64().unwrap();
+    let forced = reader.u8().unwrap();
+    let values = places
+        .iter()
+        .map(|_| i32::from_le_bytes(reader.take(4).unwrap().try_into().unwrap()))
+        .collect();
+    (cycle, forced, values)
+}
+
+/// Reads `place` until `done` accepts its value.
+async fn read_until(
+    client: &mut Context,
+    place: WirePlace,
+    what: &str,
+    done: impl Fn(i32) -> bool,
+) {
+    let deadline = Instant::now() + PATIENCE;
+    loop {
+        let (_, _, values) = read(client, &[place]).await;
+        if done(values[0]) {
+            return;
+        }
+        assert!(
+            Instant::now() < deadline,
+            "waited in vain for {what}: {values:?}"
+        );
+        tokio::time::sleep(Duration::from_millis(5)).await;
+    }
+}
+
+async fn login(client: &mut Context, password: &str) -> u32 {
+    let request = Request::Login {
+        password: password.to_owned(),
+    };
+    u32::from_le_bytes(done(client, &request).await.try_into().unwrap())
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_downloaded_program_is_monitored_written_forced_and_traced() {
+    let plc = Plc::start(None).await;
+    let mut client = plc.connect().await;
+    assert_eq!(identify(&mut client).await, (0, [0; 32]));
+
+    let image = compile(COUNTING);
+    download(&mut client, 0, &image).await;
+    assert_eq!(identify(&mut client).await, (2, image.identity()));
+
+    let counter = resolve(&mut client, "Main.counter").await;
+    let assigned = resolve(&mut client, "Main.assigned").await;
+    assert_eq!((counter.region, counter.bit, counter.size), (0, NO_BIT, 4));
+    let (first_cycle, _, first) = read(&mut client, &[counter]).await;
+    read_until(&mut client, counter, "the counter to count", |value| {
+        value > first[0] + 2
+    })
+    .await;
+    let (later_cycle, _, _) = read(&mut client, &[counter]).await;
+    assert!(later_cycle > first_cycle);
+
+    let write = Request::Write {
+        token: 0,
+        values: vec![(counter, 100_000i32.to_le_bytes().to_vec())],
+    };
+    done(&mut client, &write).await;
+    read_until(&mut client, counter, "the written counter", |value| {
+        (100_000..100_500).contains(&value)
+    })
+    .await;
+
+    // The program assigns 5 every cycle; the force wins before and after each one.
+    let force = Request::Force {
+        token: 0,
+        values: vec![(assigned, 77i32.to_le_bytes().to_vec())],
+    };
+    done(&mut client, &force).await;
+    let (forced_at, _, _) = read(&mut client, &[assigned]).await;
+    for _ in 0..5 {
+        tokio::time::sleep(Duration::from_millis(15)).await;
+        let (cycle, forced, values) = read(&mut client, &[counter, assigned]).await;
+        assert_eq!((forced, values[1]), (0b10, 77), "at cycle {cycle}");
+    }
+    let (after, _, _) = read(&mut client, &[assigned]).await;
+    assert!(after > forced_at + 2, "cycles ran while forced");
+    let forces = done(&mut client, &Request::Forces { from: 0 }).await;
+    assert_eq!(&forces[..3], &[1, 0, 1]);
+    let unforce = Request::Unforce {
+        token: 0,
+        places: vec![assigned],
+    };
+    done(&mut client, &unforce).await;
+    read_until(&mut client, assigned, "the program's own value", |value| {
+        value == 5
+    })
+    .await;
+    assert_eq!(read(&mut client, &[assigned]).await.1, 0);
+
+    // A trace of the counter around the rising edge of the pulse.
+    let pulse = resolve(&mut client, "Main.pulse").await;
+    let configure = Request::TraceConfigure {
+        token: 0,
+        config: TraceConfig {
+            task: 0,
+            every: 1,
+            samples: 8,
+            pretrigger: 25,
+            trigger: TriggerKind::Rising,
+            trigger_place: pulse,
+            places: vec![counter],
+        },
+    };
+    assert_eq!(done(&mut client, &configure).await, 4u16.to_le_bytes());
+    done(&mut client, &Request::TraceArm { token: 0 }).await;
+    let deadline = Instant::now() + PATIENCE;
+    let status = loop {
+        let status = done(&mut client, &Request::TraceStatus).await;
+        if status[0] == 4 {
+            break status;
+        }
+        assert!(
+            Instant::now() < deadline,
+            "the trace never completed: {status:?}"
+        );
+        tokio::time::sleep(Duration::from_millis(10)).await;
+    };
+    let mut reader = Reader::new(&status[1..]);
+    assert_eq!(reader.u32().unwrap(), 8);
+    assert_eq!(reader.u32().unwrap(), 2, "two samples before the trigger");
+    let upload = done(&mut client, &Request::TraceUpload { from: 0 }).await;
+    let mut reader = Reader::new(&upload);
+    assert_eq!(reader.u8().unwrap(), 8);
+    let samples: Vec<(u64, i32)> = (0..8)
+        .map(|_| {
+            let cycle = reader.u64().unwrap();
+            reader.u64().unwrap();
+            let value = i32::from_le_bytes(reader.take(4).unwrap().try_into().unwrap());
+            (cycle, value)
+        })
+        .collect();
+    for pair in samples.windows(2) {
+        assert_eq!(pair[1].0, pair[0].0 + 1, "consecutive cycles: {samples:?}");
+        assert_eq!(pair[1].1, pair[0].1 + 1, "consecutive counts: {samples:?}");
+    }
+    assert_eq!(samples[2].1 % 10, 0, "the trigger's sample: {samples:?}");
+    assert!(upload.len() == 1 + 8 * 20);
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn with_a_password_only_a_logged_in_client_changes_the_target() {
+    let plc = Plc::start(Some("open sesame")).await;
+    plc.scheduler.load(compile(COUNTING)).unwrap();
+    let mut client = plc.connect().await;
+
+    assert_eq!(ask(&mut client, &Request::Start { token: 0 }).await.0, 3);
+    assert_eq!(ask(&mut client, &Request::Start { token: 42 }).await.0, 4);
+    let wrong = Request::Login {
+        password: "sesame".to_owned(),
+    };
+    assert_eq!(ask(&mut client, &wrong).await.0, 4);
+    assert_eq!(identify(&mut client).await.0, 1, "still stopped");
+
+    // Reading needs no token.
+    let counter = resolve(&mut client, "Main.counter").await;
+    read(&mut client, &[counter]).await;
+    done(&mut client, &Request::Tasks).await;
+    done(&mut client, &Request::Faults { from: 0 }).await;
+
+    let token = login(&mut client, "open sesame").await;
+    assert_eq!(done(&mut client, &Request::Start { token }).await, [2]);
+    read_until(&mut client, counter, "the counter to count", |value| {
+        value > 3
+    })
+    .await;
+    let write = Request::Write {
+        token: token.wrapping_add(1),
+        values: vec![(counter, 0i32.to_le_bytes().to_vec())],
+    };
+    assert_eq!(ask(&mut client, &write).await.0, 4);
+    assert_eq!(done(&mut client, &Request::Stop { token }).await, [1]);
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_corrupted_or_interrupted_download_leaves_the_running_program() {
+    let plc = Plc::start(None).await;
+    let image = compile(COUNTING);
+    plc.scheduler.load(image.clone()).unwrap();
+    plc.scheduler.start().unwrap();
+    let mut client = plc.connect().await;
+    let counter = resolve(&mut client, "Main.counter").await;
+
+    // One chunk differs from the bytes the hash was taken of.
+    let other = compile(OTHER).encode();
+    let hash = Sha256::digest(&other).into();
+    let mut corrupted = other.clone();
+    corrupted[10] ^= 0xFF;
+    let transfer = send_image(&mut client, 0, &corrupted, hash, |_| true).await;
+    let commit = Request::DownloadCommit {
+        token: 0,
+        transfer,
+        start: true,
+    };
+    let (status, message) = ask(&mut client, &commit).await;
+    assert_eq!(status, 8);
+    assert!(String::from_utf8_lossy(&message).contains("SHA-256"));
+    assert_eq!(identify(&mut client).await, (2, image.identity()));
+
+    // Another client begins a download, sends part of it, and goes away.
+    let abandoned = {
+        let mut interrupted = plc.connect().await;
+        send_image(&mut interrupted, 0, &other, hash, |index| index % 2 == 0).await
+    };
+    let (status, _) = ask(&mut client, &commit).await;
+    assert_eq!(status, 7, "the corrupted transfer is gone");
+    // The closed connection takes its transfer along (an empty chunk changes nothing).
+    let probe = Request::DownloadChunk {
+        token: 0,
+        transfer: abandoned,
+        offset: 0,
+        bytes: Vec::new(),
+    };
+    let deadline = Instant::now() + PATIENCE;
+    while ask(&mut client, &probe).await.0 != 7 {
+        assert!(Instant::now() < deadline, "the abandoned transfer lives on");
+        tokio::time::sleep(Duration::from_millis(5)).await;
+    }
+    assert_eq!(identify(&mut client).await, (2, image.identity()));
+    let (_, _, before) = read(&mut client, &[counter]).await;
+    read_until(&mut client, counter, "the old program to go on", |value| {
+        value > before[0] + 2
+    })
+    .await;
+}
