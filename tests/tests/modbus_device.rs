@@ -12,7 +12,7 @@ use std::time::Duration;
 use online::device::{Channel, Device, Table, WordOrder};
 use program_image::Elementary;
 use runtime::areas::LocatedAreas;
-use runtime::modbus::{ModbusMap, ServerOptions, serve};
+use runtime::modbus::{MapSlot, ModbusMap, ServerOptions, serve};
 
 async fn device_server() -> (std::net::SocketAddr, Arc<Mutex<LocatedAreas>>) {
     let areas = Arc::new(Mutex::new(LocatedAreas::new(64, 64, 8192)));
@@ -21,7 +21,7 @@ async fn device_server() -> (std::net::SocketAddr, Arc<Mutex<LocatedAreas>>) {
     tokio::spawn(serve(
         listener,
         Arc::clone(&areas),
-        Arc::new(ModbusMap::default()),
+        MapSlot::new(ModbusMap::default()),
         ServerOptions::default(),
     ));
     (address, areas)

@@ -1,0 +1,183 @@
+//! The online commands against a real `rivet-runtime` on loopback: download, start, read,
+//! write, force, unforce, trace, stop, faults, and the password.
+
+#![allow(clippy::unwrap_used, clippy::expect_used)] // Test helpers may panic: a panic is a failed test.
+
+use std::io::{BufRead as _, BufReader};
+use std::path::{Path, PathBuf};
+use std::process::{Child, Command, Output, Stdio};
+
+/// The runtime binary, built beside `rivet` by `cargo test --workspace`.
+fn runtime_binary() -> PathBuf {
+    let rivet = Path::new(env!("CARGO_BIN_EXE_rivet"));
+    let path = rivet.with_file_name(format!("rivet-runtime{}", std::env::consts::EXE_SUFFIX));
+    assert!(
+        path.exists(),
+        "{} is missing: build it with `cargo build -p runtime` (scripts/test.sh does)",
+        path.display()
+    );
+    path
+}
+
+/// A runtime process, killed when the test ends.
+struct Runtime {
+    child: Child,
+    target: String,
+}
+
+impl Drop for Runtime {
+    fn drop(&mut self) {
+        let _ = self.child.kill();
+        let _ = self.child.wait();
+    }
+}
+
+fn start_runtime(data: &Path, password: Option<&str>) -> Runtime {
+    let mut command = Command::new(runtime_binary());
+    command
+        .args(["--listen", "127.0.0.1:0", "--data-dir"])
+        .arg(data);
+    if let Some(password) = password {
+        command.args(["--password", password]);
+    }
+    let mut child = command
+        .stdout(Stdio::piped())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    let mut first = String::new();
+    BufReader::new(child.stdout.take().unwrap())
+        .read_line(&mut first)
+        .unwrap();
+    let target = first
+        .trim()
+        .strip_prefix("listening on ")
+        .unwrap_or_else(|| panic!("unexpected first line {first:?}"))
+        .to_owned();
+    Runtime { child, target }
+}
+
+fn rivet(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_rivet"))
+        .args(args)
+        .output()
+        .unwrap()
+}
+
+#[track_caller]
+fn ok(args: &[&str]) -> String {
+    let output = rivet(args);
+    assert!(
+        output.status.success(),
+        "rivet {args:?}: {}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    String::from_utf8_lossy(&output.stdout).into_owned()
+}
+
+const PROGRAM: &str = "PROGRAM main VAR n : DINT; k : INT; level : DINT; tick : BOOL; END_VAR
+n := n + 1 + k - k; level := n * 2; tick := n MOD 4 = 0;
+END_PROGRAM
+";
+
+#[test]
+fn download_run_read_write_force_trace_and_stop_over_the_cli() {
+    let dir = tempfile::tempdir().unwrap();
+    let source = dir.path().join("counter.st");
+    std::fs::write(&source, PROGRAM).unwrap();
+    let runtime = start_runtime(&dir.path().join("data"), Some("secret"));
+    let target = runtime.target.as_str();
+    let auth = ["--target", target, "--password", "secret"];
+
+    assert!(ok(&["status", "--target", target]).contains("program: none"));
+    // Changing the target without the password is refused and changes nothing.
+    let refused = rivet(&["download", source.to_str().unwrap(), "--target", target]);
+    assert!(!refused.status.success());
+    assert!(
+        String::from_utf8_lossy(&refused.stderr).contains("password"),
+        "{}",
+        String::from_utf8_lossy(&refused.stderr)
+    );
+    let wrong = rivet(&["stop", "--target", target, "--password", "nope"]);
+    assert!(String::from_utf8_lossy(&wrong.stderr).contains("refused the password"));
+
+    let downloaded = ok(&[
+        &["download", source.to_str().unwrap(), "--start"][..],
+        &auth,
+    ]
+    .concat());
+    assert!(downloaded.contains("downloaded"), "{downloaded}");
+    std::thread::sleep(std::time::Duration::from_millis(100));
+    let status = ok(&["status", "--target", target]);
+    assert!(
+        status.contains("running") && status.contains("task MainTask"),
+        "{status}"
+    );
+    // Reading needs no password.
+    let read = ok(&["read", "main.n", "main.level", "--target", target]);
+    assert!(
+        read.starts_with("main.n = ") && read.contains("main.level = "),
+        "{read}"
+    );
+
+    ok(&[&["write", "main.k=42"][..], &auth].concat());
+    assert_eq!(ok(&["read", "main.k", "--target", target]), "main.k = 42\n");
+    let bad = rivet(&[&["write", "main.k=hello"][..], &auth].concat());
+    assert!(String::from_utf8_lossy(&bad.stderr).contains("'hello' is not a value of INT"));
+
+    // A force survives the program's own assignment, cycle after cycle.
+    ok(&[&["force", "main.level=-7"][..], &auth].concat());
+    for _ in 0..3 {
+        assert_eq!(
+            ok(&["read", "main.level", "--target", target]),
+            "main.level = -7 (forced)\n"
+        );
+        std::thread::sleep(std::time::Duration::from_millis(15));
+    }
+    assert!(ok(&["forces", "--target", target]).contains("16#f9ffffff"));
+    ok(&[&["unforce", "--all"][..], &auth].concat());
+    assert!(!ok(&["read", "main.level", "--target", target]).contains("forced"));
+
+    // A trace on a rising edge gives exactly the samples asked for, one per cycle.
+    let csv = dir.path().join("trace.csv");
+    let traced = ok(&[
+        &[
+            "trace",
+            "--vars",
+            "main.n,main.tick",
+            "--task",
+            "MainTask",
+            "--samples",
+            "10",
+            "--trigger",
+            "main.tick",
+            "--rising",
+            "--csv",
+            csv.to_str().unwrap(),
+        ][..],
+        &auth,
+    ]
+    .concat());
+    assert!(traced.contains("10 samples"), "{traced}");
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let rows: Vec<&str> = text.lines().skip(1).collect();
+    assert_eq!(rows.len(), 10, "{text}");
+    let cycles: Vec<u64> = rows
+        .iter()
+        .map(|r| r.split(',').next().unwrap().parse().unwrap())
+        .collect();
+    assert!(cycles.windows(2).all(|w| w[1] == w[0] + 1), "{cycles:?}");
+    assert!(
+        rows[0].ends_with(",TRUE"),
+        "the first sample is the trigger's: {text}"
+    );
+
+    assert!(ok(&[&["stop"][..], &auth].concat()).contains("stopped"));
+    assert!(ok(&["faults", "--target", target]).contains("no faults"));
+}
+
+#[test]
+fn a_missing_runtime_and_a_plain_modbus_device_are_told_apart() {
+    let refused = rivet(&["status", "--target", "127.0.0.1:1"]);
+    assert!(String::from_utf8_lossy(&refused.stderr).contains("connection refused"));
+}
