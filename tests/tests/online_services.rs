@@ -441,3 +441,104 @@ async fn a_corrupted_or_interrupted_download_leaves_the_running_program() {
     })
     .await;
 }
+
+/// The next number of a small linear congruential generator: reproducible "random" points.
+fn next(seed: &mut u64) -> u64 {
+    *seed = seed
+        .wrapping_mul(6_364_136_223_846_793_005)
+        .wrapping_add(1_442_695_040_888_963_407);
+    *seed >> 33
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_download_cut_or_corrupted_at_100_points_leaves_the_old_program_running() {
+    let plc = Plc::start(None).await;
+    let (mut client, _) = online::Client::connect(plc.address, None).await.unwrap();
+    client
+        .download(&compile(COUNTING).encode(), true, |_, _| {})
+        .await
+        .unwrap();
+    let running = client.identify().await.unwrap().image_hash;
+    assert!(running.is_some());
+    let counter = client.resolve("Main.counter").await.unwrap().place;
+    let other = compile(OTHER).encode();
+    let hash: [u8; 32] = Sha256::digest(&other).into();
+    let chunk = usize::from(CHUNK_BYTES);
+    let chunks = other.len().div_ceil(chunk);
+    let mut seed = 0x2545_F491_4F6C_DD1D;
+    for round in 0..100 {
+        let cut_at = next(&mut seed) as usize % chunks;
+        let corrupt = next(&mut seed) % 2 == 1;
+        let mut raw = plc.connect().await;
+        let begin = done(
+            &mut raw,
+            &Request::DownloadBegin {
+                token: 0,
+                size: other.len() as u32,
+                hash,
+            },
+        )
+        .await;
+        let transfer = u16::from_le_bytes([begin[0], begin[1]]);
+        let last = if corrupt { chunks - 1 } else { cut_at };
+        for k in 0..=last {
+            let start = k * chunk;
+            let mut bytes = other[start..(start + chunk).min(other.len())].to_vec();
+            if corrupt && k == cut_at {
+                let at = next(&mut seed) as usize % bytes.len();
+                bytes[at] ^= 0x5A;
+            }
+            done(
+                &mut raw,
+                &Request::DownloadChunk {
+                    token: 0,
+                    transfer,
+                    offset: start as u32,
+                    bytes,
+                },
+            )
+            .await;
+        }
+        if corrupt {
+            // Every byte arrived, one of them wrong: the image is refused.
+            let (status, _) = ask(
+                &mut raw,
+                &Request::DownloadCommit {
+                    token: 0,
+                    transfer,
+                    start: true,
+                },
+            )
+            .await;
+            assert_eq!(
+                status, 8,
+                "round {round}: a corrupted image must be refused"
+            );
+        }
+        // Dropping the connection mid-transfer abandons it.
+        drop(raw);
+        assert_eq!(
+            client.identify().await.unwrap().image_hash,
+            running,
+            "round {round}"
+        );
+        let before = client.read(&[counter]).await.unwrap().values[0].0.clone();
+        tokio::time::sleep(Duration::from_millis(25)).await;
+        let after = client.read(&[counter]).await.unwrap().values[0].0.clone();
+        let count = |bytes: &[u8]| i32::from_le_bytes([bytes[0], bytes[1], bytes[2], bytes[3]]);
+        assert!(
+            count(&after) > count(&before),
+            "round {round}: the old program keeps counting"
+        );
+    }
+}
+
+#[tokio::test]
+async fn another_protocol_version_is_refused_naming_both() {
+    let plc = Plc::start(None).await;
+    let mut raw = plc.connect().await;
+    let (status, payload) = ask(&mut raw, &Request::Identify { protocol: 2 }).await;
+    assert_eq!(status, 9);
+    let message = String::from_utf8_lossy(&payload[1..]).into_owned();
+    assert!(message.contains('1') && message.contains('2'), "{message}");
+}
