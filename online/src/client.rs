@@ -547,14 +547,30 @@ impl Client {
                 size: 1,
             })
             .encode(&mut payload);
-        payload.push(config.places.len() as u8);
-        for place in &config.places {
+        // As many places as fit this frame; the rest follow in TRACE_ADD frames.
+        let first = config
+            .places
+            .len()
+            .min((MAX_PAYLOAD - 4 - payload.len() - 1) / 8);
+        payload.push(first as u8);
+        for place in &config.places[..first] {
             place.encode(&mut payload);
         }
         let answer = self
             .call(service::TRACE_CONFIGURE, &self.with_token(&payload))
             .await?;
-        Reader::new(&answer).u16().map_err(OnlineError::Protocol)
+        let mut sample_bytes = Reader::new(&answer).u16().map_err(OnlineError::Protocol)?;
+        for batch in config.places[first..].chunks((MAX_PAYLOAD - 4 - 1) / 8) {
+            let mut payload = vec![batch.len() as u8];
+            for place in batch {
+                place.encode(&mut payload);
+            }
+            let answer = self
+                .call(service::TRACE_ADD, &self.with_token(&payload))
+                .await?;
+            sample_bytes = Reader::new(&answer).u16().map_err(OnlineError::Protocol)?;
+        }
+        Ok(sample_bytes)
     }
 
     /// `TRACE_ARM`: recording starts.

@@ -32,6 +32,7 @@ pub mod service {
     pub const TRACE_ARM: u8 = 0x41;
     pub const TRACE_STATUS: u8 = 0x42;
     pub const TRACE_UPLOAD: u8 = 0x43;
+    pub const TRACE_ADD: u8 = 0x44;
     pub const TASKS: u8 = 0x50;
     pub const FAULTS: u8 = 0x51;
 }

@@ -542,3 +542,50 @@ async fn another_protocol_version_is_refused_naming_both() {
     let message = String::from_utf8_lossy(&payload[1..]).into_owned();
     assert!(message.contains('1') && message.contains('2'), "{message}");
 }
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_trace_of_more_places_than_one_frame_holds_records_them_all() {
+    let mut declarations = String::new();
+    let mut body = String::from("n := n + 1;\n");
+    for i in 0..40 {
+        declarations.push_str(&format!("v{i} : DINT;\n"));
+        body.push_str(&format!("v{i} := n + {i};\n"));
+    }
+    let program =
+        format!("PROGRAM Main\nVAR\nn : DINT;\n{declarations}END_VAR\n{body}END_PROGRAM\n");
+    let plc = Plc::start(None).await;
+    let (mut client, _) = online::Client::connect(plc.address, None).await.unwrap();
+    client
+        .download(&compile(&program).encode(), true, |_, _| {})
+        .await
+        .unwrap();
+    let mut places = Vec::new();
+    for i in 0..40 {
+        places.push(client.resolve(&format!("Main.v{i}")).await.unwrap().place);
+    }
+    let config = online::TraceConfig {
+        task: 0,
+        every: 1,
+        samples: 5,
+        pretrigger_percent: 0,
+        trigger: online::Trigger::None,
+        places: places.clone(),
+    };
+    assert_eq!(client.trace_configure(&config).await.unwrap(), 160);
+    client.trace_arm().await.unwrap();
+    let started = Instant::now();
+    while client.trace_status().await.unwrap().state != 4 {
+        assert!(started.elapsed() < PATIENCE, "the trace never completed");
+        tokio::time::sleep(Duration::from_millis(10)).await;
+    }
+    let samples = client.trace_upload(&places, |_| {}).await.unwrap();
+    assert_eq!(samples.len(), 5);
+    for sample in &samples {
+        let value = |i: usize| i32::from_le_bytes(sample.values[i][..4].try_into().unwrap());
+        // Every place was sampled in the same cycle: v{i} = n + i.
+        assert!(
+            (0..40).all(|i| value(i) == value(0) + i as i32),
+            "{sample:?}"
+        );
+    }
+}

@@ -140,6 +140,10 @@ pub enum Request {
     Forces {
         from: u16,
     },
+    TraceAdd {
+        token: u32,
+        places: Vec<WirePlace>,
+    },
     TraceConfigure {
         token: u32,
         config: TraceConfig,
@@ -173,6 +177,7 @@ impl Request {
             | Force { token, .. }
             | Unforce { token, .. }
             | TraceConfigure { token, .. }
+            | TraceAdd { token, .. }
             | TraceArm { token } => Some(*token),
             Identify { .. }
             | Login { .. }
@@ -211,6 +216,7 @@ impl Request {
             TraceArm { .. } => 0x41,
             TraceStatus => 0x42,
             TraceUpload { .. } => 0x43,
+            TraceAdd { .. } => 0x44,
             Tasks => 0x50,
             Faults { .. } => 0x51,
         }
@@ -271,7 +277,7 @@ impl Request {
                     out.extend_from_slice(value);
                 }
             }
-            Unforce { token, places } => {
+            Unforce { token, places } | TraceAdd { token, places } => {
                 out.extend_from_slice(&token.to_le_bytes());
                 put_places(&mut out, places);
             }
@@ -394,6 +400,10 @@ pub fn parse_request(service: u8, payload: &[u8]) -> Result<Request, Refusal> {
         0x41 => Request::TraceArm { token: r.u32()? },
         0x42 => Request::TraceStatus,
         0x43 => Request::TraceUpload { from: r.u32()? },
+        0x44 => Request::TraceAdd {
+            token: r.u32()?,
+            places: r.places()?,
+        },
         0x50 => Request::Tasks,
         0x51 => Request::Faults { from: r.u16()? },
         other => {

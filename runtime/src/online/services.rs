@@ -250,6 +250,16 @@ impl OnlineServices {
             Request::TraceConfigure { config, .. } => {
                 self.between(move |between| configure_trace(between, config))
             }
+            Request::TraceAdd { places, .. } => self.between(move |between| {
+                // More places than one TRACE_CONFIGURE frame holds are added before arming.
+                let mut config = between
+                    .trace
+                    .pending_config()
+                    .cloned()
+                    .ok_or_else(|| not_now("configure the trace before adding places"))?;
+                config.places.extend(places);
+                configure_trace(between, config)
+            }),
             Request::TraceArm { .. } => self.between(|between| {
                 if between.trace.arm() {
                     Ok(Vec::new())

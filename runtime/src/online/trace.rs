@@ -76,6 +76,14 @@ impl Trace {
             .sum()
     }
 
+    /// The configuration, when it is configured and not armed yet.
+    pub fn pending_config(&self) -> Option<&TraceConfig> {
+        match self.state {
+            TraceState::Configured => self.config.as_ref(),
+            _ => None,
+        }
+    }
+
     /// Replaces the configuration (whose places the caller has checked) and drops the samples.
     pub fn configure(&mut self, config: TraceConfig) {
         *self = Self {
