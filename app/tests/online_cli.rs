@@ -100,6 +100,10 @@ fn download_run_read_write_force_trace_and_stop_over_the_cli() {
     );
     let wrong = rivet(&["stop", "--target", target, "--password", "nope"]);
     assert!(String::from_utf8_lossy(&wrong.stderr).contains("refused the password"));
+    // Logins are refused unchecked for a moment after a wrong password.
+    let hurried = rivet(&["stop", "--target", target, "--password", "secret"]);
+    assert!(String::from_utf8_lossy(&hurried.stderr).contains("too soon after a wrong password"));
+    std::thread::sleep(std::time::Duration::from_millis(250));
 
     let downloaded = ok(&[
         &["download", source.to_str().unwrap(), "--start"][..],

@@ -299,7 +299,7 @@ impl Client {
         let message = reader.str8().unwrap_or_default();
         Err(match code {
             status::PASSWORD_REQUIRED => OnlineError::PasswordRequired,
-            status::WRONG_PASSWORD => OnlineError::WrongPassword,
+            status::WRONG_PASSWORD => OnlineError::WrongPassword(message),
             status::IMAGE_REFUSED => OnlineError::ImageRefused(message),
             status::UNKNOWN_SYMBOL => OnlineError::UnknownSymbol(message),
             status::VERSION_MISMATCH => OnlineError::Rejected(message),

@@ -30,9 +30,9 @@ pub enum OnlineError {
     /// The target needs a password.
     #[error("the target requires a password for this; give it with --password")]
     PasswordRequired,
-    /// The password or token was refused.
-    #[error("the target refused the password")]
-    WrongPassword,
+    /// The password or token was refused, with the target's words.
+    #[error("the target refused the password: {0}")]
+    WrongPassword(String),
     /// The target refused the image.
     #[error("the target refused the image: {0}; the old program keeps running")]
     ImageRefused(String),

@@ -27,7 +27,8 @@ use crate::value;
 /// the memory.
 pub const MAX_TOKENS: usize = 256;
 
-/// How long a wrong password delays its answer.
+/// How long after a wrong password every login is refused unchecked, so passwords can be
+/// guessed at most five times a second, without holding up the server.
 pub const WRONG_PASSWORD_DELAY: Duration = Duration::from_millis(200);
 
 /// The online services of one runtime: lives as long as its Modbus server; nothing of it is
@@ -41,6 +42,8 @@ pub struct OnlineServices {
     tokens: Mutex<VecDeque<u32>>,
     /// The download in progress, if any.
     transfer: Mutex<Option<Transfer>>,
+    /// When the last wrong password came.
+    last_wrong_password: Mutex<Option<Instant>>,
     /// The number of the last transfer begun.
     last_transfer: Mutex<u16>,
     /// The Modbus server's map, replaced by the downloaded image's; `None` keeps the server's.
@@ -55,6 +58,7 @@ impl OnlineServices {
             password,
             tokens: Mutex::new(VecDeque::new()),
             transfer: Mutex::new(None),
+            last_wrong_password: Mutex::new(None),
             last_transfer: Mutex::new(0),
             map: None,
         }
@@ -96,8 +100,8 @@ impl OnlineServices {
 
     /// The response (after the function code) to a request (after the function code).
     ///
-    /// A request without a service byte gets exception 3. A wrong password blocks the calling
-    /// thread for [`WRONG_PASSWORD_DELAY`] before the answer.
+    /// A request without a service byte gets exception 3. For [`WRONG_PASSWORD_DELAY`] after a
+    /// wrong password, logins are refused without being checked.
     pub fn respond(&self, request: &[u8]) -> Result<Vec<u8>, ExceptionCode> {
         let Some((&service, payload)) = request.split_first() else {
             return Err(ExceptionCode::IllegalDataValue);
@@ -319,8 +323,15 @@ impl OnlineServices {
             .iter()
             .zip(&expected)
             .fold(0u8, |difference, (a, b)| difference | (a ^ b));
+        let mut last_wrong = lock(&self.last_wrong_password);
+        if last_wrong.is_some_and(|at| at.elapsed() < WRONG_PASSWORD_DELAY) {
+            return Err(Refusal {
+                status: Status::WrongPassword,
+                message: "too soon after a wrong password; try again in a moment".to_owned(),
+            });
+        }
         if difference != 0 {
-            std::thread::sleep(WRONG_PASSWORD_DELAY);
+            *last_wrong = Some(Instant::now());
             return Err(Refusal {
                 status: Status::WrongPassword,
                 message: "wrong password".to_owned(),
