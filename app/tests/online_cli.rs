@@ -124,6 +124,12 @@ fn download_run_read_write_force_trace_and_stop_over_the_cli() {
         "{read}"
     );
 
+    let unknown = rivet(&["read", "main.nope", "--target", target]);
+    assert!(
+        String::from_utf8_lossy(&unknown.stderr).contains("unknown variable"),
+        "{}",
+        String::from_utf8_lossy(&unknown.stderr)
+    );
     ok(&[&["write", "main.k=42"][..], &auth].concat());
     assert_eq!(ok(&["read", "main.k", "--target", target]), "main.k = 42\n");
     let bad = rivet(&[&["write", "main.k=hello"][..], &auth].concat());

@@ -63,6 +63,11 @@ struct Plc {
 
 impl Plc {
     async fn start(password: Option<&str>) -> Self {
+        Self::start_at("127.0.0.1:0".parse().unwrap(), password).await
+    }
+
+    /// A PLC listening on `address` (a PLC started again where one was).
+    async fn start_at(address: SocketAddr, password: Option<&str>) -> Self {
         let areas = Arc::new(Mutex::new(LocatedAreas::default()));
         let scheduler =
             Arc::new(Scheduler::spawn(Arc::clone(&areas), SchedulerOptions::default()).unwrap());
@@ -70,7 +75,7 @@ impl Plc {
             Arc::clone(&scheduler),
             password.map(str::to_owned),
         ));
-        let listener = tokio::net::TcpListener::bind("127.0.0.1:0").await.unwrap();
+        let listener = tokio::net::TcpListener::bind(address).await.unwrap();
         let address = listener.local_addr().unwrap();
         let server = tokio::spawn(serve(
             listener,
@@ -588,4 +593,66 @@ async fn a_trace_of_more_places_than_one_frame_holds_records_them_all() {
             "{sample:?}"
         );
     }
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_session_streams_snapshots_reports_a_lost_target_and_reconnects() {
+    use online::session::{Command, Event, SessionOptions};
+    let plc = Plc::start(None).await;
+    let (mut client, _) = online::Client::connect(plc.address, None).await.unwrap();
+    client
+        .download(&compile(COUNTING).encode(), true, |_, _| {})
+        .await
+        .unwrap();
+    let counter = client.resolve("Main.counter").await.unwrap().place;
+    drop(client);
+    let (commands, mut events) = online::session::spawn(SessionOptions {
+        address: plc.address,
+        password: None,
+        poll_interval: Duration::from_millis(10),
+        reconnect_interval: Duration::from_millis(50),
+    });
+    let mut next = async || {
+        tokio::time::timeout(PATIENCE, events.recv())
+            .await
+            .unwrap()
+            .unwrap()
+    };
+    assert!(matches!(next().await, Event::Connected(identity) if identity.image_hash.is_some()));
+    commands.send(Command::Watch(vec![counter])).await.unwrap();
+    let mut seen = Vec::new();
+    while seen.len() < 3 {
+        if let Event::Snapshot(snapshot) = next().await {
+            seen.push(snapshot.cycle);
+        }
+    }
+    assert!(seen.windows(2).all(|w| w[1] >= w[0]), "{seen:?}");
+    commands.send(Command::Stop).await.unwrap();
+    loop {
+        match next().await {
+            Event::Done(state) => {
+                assert_eq!(state, online::TargetState::Stopped);
+                break;
+            }
+            Event::Snapshot(_) => {}
+            other => panic!("unexpected {other:?}"),
+        }
+    }
+    // The target goes away: the session says so, then comes back when the target does.
+    let address = plc.address;
+    drop(plc);
+    loop {
+        if let Event::Disconnected(reason) = next().await {
+            assert!(!reason.is_empty());
+            break;
+        }
+    }
+    let again = Plc::start_at(address, None).await;
+    loop {
+        if let Event::Connected(_) = next().await {
+            break;
+        }
+    }
+    commands.send(Command::Close).await.unwrap();
+    drop(again);
 }
