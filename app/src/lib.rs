@@ -12,5 +12,6 @@
 mod build_cli;
 pub mod cli;
 mod literal_value;
+pub mod modbus_devices;
 pub mod online_cli;
 pub mod studio;
