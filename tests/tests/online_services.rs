@@ -656,3 +656,44 @@ async fn a_session_streams_snapshots_reports_a_lost_target_and_reconnects() {
     commands.send(Command::Close).await.unwrap();
     drop(again);
 }
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn retained_variables_that_keep_path_and_type_survive_a_download_of_a_changed_program() {
+    let first = "PROGRAM Main\nVAR RETAIN total : DINT; changed : INT; END_VAR\nVAR plain : DINT; END_VAR\ntotal := total + 1; changed := 7; plain := 5;\nEND_PROGRAM\n";
+    // More variables, `changed` of another type, `total` as it was.
+    let second = "PROGRAM Main\nVAR extra : LREAL; END_VAR\nVAR RETAIN fresh : DINT; total : DINT; changed : DINT; END_VAR\nVAR plain : DINT; END_VAR\ntotal := total + 0; extra := 1.0; fresh := 3;\nEND_PROGRAM\n";
+    let plc = Plc::start(None).await;
+    let (mut client, _) = online::Client::connect(plc.address, None).await.unwrap();
+    client
+        .download(&compile(first).encode(), true, |_, _| {})
+        .await
+        .unwrap();
+    tokio::time::sleep(Duration::from_millis(60)).await;
+    let total = client.resolve("Main.total").await.unwrap().place;
+    let before = client.read(&[total]).await.unwrap().values[0].0.clone();
+    let before = i32::from_le_bytes(before[..4].try_into().unwrap());
+    assert!(before > 1);
+    let carried = client
+        .download(&compile(second).encode(), true, |_, _| {})
+        .await
+        .unwrap();
+    assert!(carried, "the commit says values were carried over");
+    let places = [
+        client.resolve("Main.total").await.unwrap().place,
+        client.resolve("Main.changed").await.unwrap().place,
+        client.resolve("Main.plain").await.unwrap().place,
+    ];
+    let values = client.read(&places).await.unwrap().values;
+    let value = |i: usize| i32::from_le_bytes(values[i].0[..4].try_into().unwrap());
+    assert!(
+        value(0) >= before,
+        "total kept its value: {} < {before}",
+        value(0)
+    );
+    assert_eq!(
+        value(1),
+        0,
+        "a retained variable whose type changed starts again"
+    );
+    assert_eq!(value(2), 0, "a variable that is not retained starts again");
+}

@@ -5,6 +5,7 @@
 //! [`FaultRecord`] naming the POU and source line.
 
 mod blocks;
+mod carry;
 mod exec;
 mod fault;
 mod lower;
@@ -16,6 +17,7 @@ use std::time::{Duration, Instant};
 
 use program_image::{InitRun, ProgramImage, Region, SymbolFlags, TaskKind};
 
+pub use carry::carry_retained;
 pub use fault::{FaultKind, FaultRecord};
 pub use lower::LowerError;
 

@@ -377,7 +377,8 @@ impl OnlineServices {
         if start {
             self.scheduler.start().map_err(scheduler_refusal)?;
         }
-        let retained = matches!(report.retain, Some(RetainRestore::Restored { .. }));
+        let retained =
+            report.carried > 0 || matches!(report.retain, Some(RetainRestore::Restored { .. }));
         Ok(vec![u8::from(retained)])
     }
 

@@ -105,6 +105,9 @@ pub const MAX_FAULTS: usize = 64;
 pub struct LoadReport {
     /// What became of the saved retained values; `None` without a data directory.
     pub retain: Option<RetainRestore>,
+    /// How many RETAIN and PERSISTENT variables of the program loaded before kept their
+    /// values because they kept their path and type.
+    pub carried: usize,
 }
 
 /// What an action run between two cycles (see [`Scheduler::between`]) may touch; it lives only

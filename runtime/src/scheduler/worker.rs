@@ -293,6 +293,11 @@ impl Worker {
             .retain
             .as_ref()
             .map(|writer| writer.with_store(|store| store.restore(&mut engine)));
+        // Variables that keep their path and type keep their values, however the retained
+        // layout changed (and without a data directory too).
+        let carried = self.program.as_ref().map_or(0, |old| {
+            crate::engine::carry_retained(&old.engine, &mut engine)
+        });
         {
             let mut areas = lock(&self.areas);
             areas.input = engine.region(Region::Input).to_vec();
@@ -309,7 +314,7 @@ impl Worker {
             self.start()?;
         }
         saved?;
-        Ok(LoadReport { retain })
+        Ok(LoadReport { retain, carried })
     }
 
     fn start(&mut self) -> Result<(), SchedulerError> {
