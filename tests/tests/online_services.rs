@@ -373,6 +373,8 @@ async fn with_a_password_only_a_logged_in_client_changes_the_target() {
         password: "sesame".to_owned(),
     };
     assert_eq!(ask(&mut client, &wrong).await.0, 4);
+    // Logins are refused unchecked for a moment after a wrong password.
+    tokio::time::sleep(runtime::online::WRONG_PASSWORD_DELAY).await;
     assert_eq!(identify(&mut client).await.0, 1, "still stopped");
 
     // Reading needs no token.

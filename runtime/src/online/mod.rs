@@ -17,5 +17,5 @@ mod trace;
 pub use download::{CHUNK_BYTES, TRANSFER_TIMEOUT, Transfer};
 pub use forces::Forces;
 pub use place::{Memory, NO_BIT, WirePlace};
-pub use services::OnlineServices;
+pub use services::{OnlineServices, WRONG_PASSWORD_DELAY};
 pub use trace::{MAX_TRACE_BYTES, Sample, Trace, TraceState};
