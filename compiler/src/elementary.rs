@@ -104,35 +104,22 @@ impl Elementary {
 
     /// The IEC name, such as `TIME_OF_DAY`.
     pub fn name(self) -> &'static str {
-        match self {
-            Bool => "BOOL",
-            Byte => "BYTE",
-            Word => "WORD",
-            Dword => "DWORD",
-            Lword => "LWORD",
-            Sint => "SINT",
-            Int => "INT",
-            Dint => "DINT",
-            Lint => "LINT",
-            Usint => "USINT",
-            Uint => "UINT",
-            Udint => "UDINT",
-            Ulint => "ULINT",
-            Real => "REAL",
-            Lreal => "LREAL",
-            Time => "TIME",
-            Ltime => "LTIME",
-            Date => "DATE",
-            Ldate => "LDATE",
-            TimeOfDay => "TIME_OF_DAY",
-            LtimeOfDay => "LTIME_OF_DAY",
-            DateAndTime => "DATE_AND_TIME",
-            LdateAndTime => "LDATE_AND_TIME",
-            Char => "CHAR",
-            Wchar => "WCHAR",
-            String => "STRING",
-            Wstring => "WSTRING",
+        match self.image() {
+            Some(image) => image.name(),
+            None if self == String => "STRING",
+            None => "WSTRING",
         }
+    }
+
+    /// The type as the program image stores it; `None` for the strings, which are types of
+    /// their own there. The two enumerations list the elementary types in the same order.
+    pub fn image(self) -> Option<program_image::Elementary> {
+        program_image::Elementary::from_tag(self as u8)
+    }
+
+    /// The type of an image's elementary type.
+    pub fn of_image(image: program_image::Elementary) -> Self {
+        Self::ALL[usize::from(image.tag())]
     }
 
     /// The size in bits of a value (strings: of one character), as the LC1200 manual lists.
@@ -213,6 +200,16 @@ impl Elementary {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_image_lists_the_same_types_in_the_same_order() {
+        for ty in Elementary::ALL {
+            match ty.image() {
+                Some(image) => assert_eq!(Elementary::of_image(image), ty),
+                None => assert!(matches!(ty, String | Wstring)),
+            }
+        }
+    }
 
     #[test]
     fn names_round_trip_and_short_forms_resolve() {

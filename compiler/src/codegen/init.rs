@@ -200,11 +200,7 @@ impl Layouts<'_, '_> {
 
 /// The checker's elementary type of an image elementary type.
 pub(crate) fn elementary_of(ty: program_image::Elementary) -> crate::elementary::Elementary {
-    crate::elementary::Elementary::ALL
-        .iter()
-        .copied()
-        .find(|e| e.name() == ty.name())
-        .unwrap_or(crate::elementary::Elementary::Bool)
+    crate::elementary::Elementary::of_image(ty)
 }
 
 fn put(bytes: &mut [u8], offset: u32, value: &[u8]) {

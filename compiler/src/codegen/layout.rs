@@ -105,7 +105,7 @@ impl<'p> Instance<'p> {
 
 /// The image type of a checker elementary type; the strings are not elementary in the image.
 pub(crate) fn image_elementary(e: Elementary) -> Option<IE> {
-    IE::ALL.iter().copied().find(|ie| ie.name() == e.name())
+    e.image()
 }
 
 /// The element type and rank of an array whose bounds are all open (`ARRAY[*, *] OF T`).
