@@ -183,14 +183,16 @@ fn index(
         if i < low || i > high {
             return Err(PathError::BadIndex(path.to_owned()));
         }
-        linear = linear * (high - low + 1) as u64 + (i - low) as u64;
+        // Bounds of a hostile image may be extreme: the arithmetic saturates rather than panics.
+        let count = high.abs_diff(low).saturating_add(1);
+        linear = linear.saturating_mul(count).saturating_add(i.abs_diff(low));
     }
     let size = image
         .types
         .get(*element as usize)
         .map_or(0, |t| t.size_bytes(&image.types));
     Ok(Place {
-        offset: place.offset + linear * size,
+        offset: place.offset.saturating_add(linear.saturating_mul(size)),
         ty: *element,
         ..place
     })
@@ -284,7 +286,10 @@ fn value_at(
                 .collect(),
         ),
         TypeDef::Array { element, dims } if depth < 32 => {
-            let count: u64 = dims.iter().map(|(l, h)| (h - l + 1) as u64).product();
+            let count: u64 = dims
+                .iter()
+                .map(|(l, h)| h.abs_diff(*l).saturating_add(1))
+                .fold(1u64, u64::saturating_mul);
             let size = image
                 .types
                 .get(*element as usize)
@@ -297,7 +302,9 @@ fn value_at(
                         value_at(
                             image,
                             bytes,
-                            offset + (i * size) as usize,
+                            offset.saturating_add(
+                                usize::try_from(i.saturating_mul(size)).unwrap_or(usize::MAX),
+                            ),
                             None,
                             *element,
                             depth + 1,

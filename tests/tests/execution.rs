@@ -789,3 +789,14 @@ fn the_lc1200_conversion_table_holds_in_compiled_code() {
         ],
     );
 }
+
+#[test]
+fn arrays_larger_than_memory_are_refused_not_crashed_on() {
+    let source = compiler::SourceProject::new(
+        "PROGRAM main VAR a : ARRAY[-9223372036854775807..9223372036854775807] OF BYTE; END_VAR a[0] := 1; END_PROGRAM",
+    );
+    let error = compiler::compile_source(&source, "big.st")
+        .unwrap_err()
+        .to_string();
+    assert!(error.contains("larger than a memory region"), "{error}");
+}

@@ -584,7 +584,9 @@ impl BodyGen<'_, '_, '_> {
         let mut stride = element.size;
         for (i, (low, high)) in dims.iter().enumerate().rev() {
             strides[i] = stride;
-            stride = stride.saturating_mul((high - low + 1) as u32);
+            stride = stride.saturating_mul(
+                u32::try_from(high.abs_diff(*low).saturating_add(1)).unwrap_or(u32::MAX),
+            );
         }
         let mut place = base.place;
         let mut constant_offset = 0u32;
@@ -617,7 +619,7 @@ impl BodyGen<'_, '_, '_> {
                 index: index_value,
                 index_ty: index_scalar,
                 low: *low,
-                count: (high - low + 1) as u64,
+                count: high.abs_diff(*low).saturating_add(1),
                 stride: *stride,
             });
             place = Place::Indirect(dst);

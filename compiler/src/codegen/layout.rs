@@ -263,7 +263,7 @@ impl<'g, 'p> Layouts<'g, 'p> {
                     if high < low {
                         return Err(format!("the array bounds {low}..{high} are empty"));
                     }
-                    count = count.saturating_mul((high - low + 1) as u64);
+                    count = count.saturating_mul(high.abs_diff(low).saturating_add(1));
                     bounds.push((low, high));
                 }
                 let size = count.saturating_mul(u64::from(element_lay.size));
