@@ -187,7 +187,7 @@ fn download_run_read_write_force_trace_and_stop_over_the_cli() {
 }
 
 #[test]
-fn a_missing_runtime_and_a_plain_modbus_device_are_told_apart() {
+fn a_missing_runtime_says_what_to_check() {
     let refused = rivet(&["status", "--target", "127.0.0.1:1"]);
     assert!(String::from_utf8_lossy(&refused.stderr).contains("connection refused"));
 }

@@ -360,7 +360,6 @@ impl<'g, 'p> Layouts<'g, 'p> {
             }
             Some(Shape::Struct(data_type)) => {
                 let fields = self.fields(data_type)?;
-                let union = matches!(data_type.definition, TypeDefinition::Union { .. });
                 let align = fields.iter().map(|f| f.lay.align).max().unwrap_or(1);
                 let end = fields
                     .iter()
@@ -368,7 +367,6 @@ impl<'g, 'p> Layouts<'g, 'p> {
                     .max()
                     .unwrap_or(0);
                 let size = end.next_multiple_of(align);
-                let _ = union;
                 let members = fields
                     .iter()
                     .map(|f| ImageMember {

@@ -687,7 +687,7 @@ fn place_located(
     path: &str,
     flags: u16,
 ) -> Place {
-    let (_, bit) = super::expr::located_operand(located);
+    let bit = (located.size_bits == 1).then_some((located.bit_offset % 8) as u8);
     let byte = (located.bit_offset / 8) as u32;
     let index = area_index(located.region);
     let end = byte + if bit.is_some() { 1 } else { lay.size };

@@ -15,7 +15,7 @@ mod strings;
 
 use std::time::{Duration, Instant};
 
-use program_image::{InitRun, ProgramImage, Region, SymbolFlags, TaskKind};
+use program_image::{InitRun, ProgramImage, Region};
 
 pub use carry::carry_retained;
 pub use fault::{FaultKind, FaultRecord};
@@ -210,25 +210,5 @@ impl Engine {
         let start = self.regions.start(region);
         let size = self.image.region_size(region) as usize;
         self.memory.get_mut(start..start + size).unwrap_or_default()
-    }
-
-    /// The index of the symbol whose path is `path` (case-insensitive, as IEC names are).
-    pub fn symbol_index(&self, path: &str) -> Option<usize> {
-        self.image
-            .symbols
-            .iter()
-            .position(|symbol| symbol.path.eq_ignore_ascii_case(path))
-    }
-
-    /// The kinds of the tasks, in order.
-    pub fn task_kinds(&self) -> Vec<TaskKind> {
-        self.image.tasks.iter().map(|t| t.kind).collect()
-    }
-
-    /// Whether a symbol is retained over a warm reset.
-    pub fn is_retained(&self, symbol: usize) -> bool {
-        self.image.symbols.get(symbol).is_some_and(|s| {
-            s.flags.has(SymbolFlags::RETAIN) || s.flags.has(SymbolFlags::PERSISTENT)
-        })
     }
 }
