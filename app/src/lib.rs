@@ -15,3 +15,4 @@ mod literal_value;
 pub mod modbus_devices;
 pub mod online_cli;
 pub mod studio;
+pub mod value_text;

@@ -9,7 +9,8 @@ use std::path::Path;
 
 use anyhow::Context as _;
 use online::{Client, OnlineError, Place, Reset, Resolved};
-use program_image::Elementary;
+
+use crate::value_text::{describe_place, hex, show};
 
 /// Where and how to connect.
 #[derive(Clone, Debug, clap::Args)]
@@ -336,58 +337,4 @@ async fn parse_assignments(
         values.push((resolved.place, bytes));
     }
     Ok(values)
-}
-
-/// A value's bytes as an IEC literal.
-fn show(resolved: &Resolved, bytes: &[u8]) -> String {
-    let mut raw = [0u8; 8];
-    let n = bytes.len().min(8);
-    raw[..n].copy_from_slice(&bytes[..n]);
-    let raw = u64::from_le_bytes(raw);
-    if resolved.place.bit.is_some() {
-        return if raw & 1 != 0 {
-            "TRUE".to_owned()
-        } else {
-            "FALSE".to_owned()
-        };
-    }
-    match resolved.type_tag {
-        0x20 => format!(
-            "'{}'",
-            bytes
-                .iter()
-                .take_while(|&&b| b != 0)
-                .map(|&b| char::from(b))
-                .collect::<String>()
-        ),
-        0x21 => {
-            let units: Vec<u16> = bytes
-                .chunks_exact(2)
-                .map(|c| u16::from_le_bytes([c[0], c[1]]))
-                .take_while(|&u| u != 0)
-                .collect();
-            format!("\"{}\"", String::from_utf16_lossy(&units))
-        }
-        tag => match Elementary::from_tag(tag) {
-            Some(ty) => runtime::value::elementary(raw, ty).to_string(),
-            None => format!("16#{}", hex(bytes)),
-        },
-    }
-}
-
-fn describe_place(place: &Place) -> String {
-    let region = match place.region {
-        0 => "data",
-        1 => "%I",
-        2 => "%Q",
-        _ => "%M",
-    };
-    match place.bit {
-        Some(bit) => format!("{region} byte {} bit {bit}", place.offset),
-        None => format!("{region} byte {} ({} bytes)", place.offset, place.size),
-    }
-}
-
-fn hex(bytes: &[u8]) -> String {
-    bytes.iter().map(|b| format!("{b:02x}")).collect()
 }

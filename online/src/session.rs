@@ -11,7 +11,10 @@ use std::time::Duration;
 
 use tokio::sync::mpsc;
 
-use crate::client::{Client, Identity, Reset, Snapshot, TargetState};
+use crate::client::{
+    Client, Fault, Identity, Reset, Resolved, Sample, Snapshot, TargetState, TaskInfo, TraceConfig,
+    TraceStatus,
+};
 use crate::error::OnlineError;
 use crate::protocol::Place;
 
@@ -39,6 +42,21 @@ pub enum Command {
     Force(Vec<(Place, Vec<u8>)>),
     /// Release forces (all when empty).
     Unforce(Vec<Place>),
+    /// Resolve variable paths on the target; answered by [`Event::Resolved`].
+    Resolve(Vec<String>),
+    /// Ask for the forced places; answered by [`Event::Forces`].
+    Forces,
+    /// Ask for task statistics; answered by [`Event::Tasks`].
+    Tasks,
+    /// Ask for the fault log; answered by [`Event::Faults`].
+    Faults,
+    /// Configure a trace and arm it; answered by [`Event::Done`].
+    TraceStart(TraceConfig),
+    /// Ask where the trace is; answered by [`Event::TraceStatus`].
+    TraceStatus,
+    /// Upload the recorded samples; answered by [`Event::TraceSamples`] after
+    /// [`Event::TraceProgress`] events.
+    TraceUpload,
     /// End the session.
     Close,
 }
@@ -58,6 +76,25 @@ pub enum Event {
     Done(TargetState),
     /// A command failed; nothing changed on the target.
     Failed(String),
+    /// The answer to [`Command::Resolve`]: each path with what the target said about it.
+    Resolved(Vec<(String, Result<Resolved, String>)>),
+    /// The answer to [`Command::Forces`]: every forced place with its value.
+    Forces(Vec<(Place, Vec<u8>)>),
+    /// The answer to [`Command::Tasks`].
+    Tasks(Vec<TaskInfo>),
+    /// The answer to [`Command::Faults`].
+    Faults(Vec<Fault>),
+    /// The answer to [`Command::TraceStatus`].
+    TraceStatus(TraceStatus),
+    /// Trace upload progress: samples received of the total.
+    TraceProgress(usize, usize),
+    /// The answer to [`Command::TraceUpload`]: the samples, with the trigger's index if it came.
+    TraceSamples {
+        /// The samples in recording order.
+        samples: Vec<Sample>,
+        /// The sample at the trigger.
+        trigger_sample: Option<u32>,
+    },
 }
 
 /// How a session behaves.
@@ -88,6 +125,8 @@ async fn run(
     events: mpsc::Sender<Event>,
 ) {
     let mut watch: Vec<Place> = Vec::new();
+    // The places of the last trace configured, which an upload needs to split samples.
+    let mut trace_places: Vec<Place> = Vec::new();
     'connect: loop {
         let mut client = match Client::connect(options.address, options.password.as_deref()).await {
             Ok((client, identity)) => {
@@ -157,6 +196,85 @@ async fn run(
                                 Err(error) => Err(error),
                             }
                         }
+                        Command::Resolve(paths) => {
+                            let mut answers = Vec::with_capacity(paths.len());
+                            let mut lost = None;
+                            for path in paths {
+                                match client.resolve(&path).await {
+                                    Ok(resolved) => answers.push((path, Ok(resolved))),
+                                    Err(error @ (OnlineError::Io(..) | OnlineError::Timeout(..))) => {
+                                        lost = Some(error);
+                                        break;
+                                    }
+                                    Err(error) => answers.push((path, Err(error.to_string()))),
+                                }
+                            }
+                            match lost {
+                                Some(error) => Err(error),
+                                None => {
+                                    if events.send(Event::Resolved(answers)).await.is_err() {
+                                        return;
+                                    }
+                                    continue;
+                                }
+                            }
+                        }
+                        Command::Forces => match client.forces().await {
+                            Ok(forces) => {
+                                if events.send(Event::Forces(forces)).await.is_err() {
+                                    return;
+                                }
+                                continue;
+                            }
+                            Err(error) => Err(error),
+                        },
+                        Command::Tasks => match client.tasks().await {
+                            Ok(tasks) => {
+                                if events.send(Event::Tasks(tasks)).await.is_err() {
+                                    return;
+                                }
+                                continue;
+                            }
+                            Err(error) => Err(error),
+                        },
+                        Command::Faults => match client.faults().await {
+                            Ok(faults) => {
+                                if events.send(Event::Faults(faults)).await.is_err() {
+                                    return;
+                                }
+                                continue;
+                            }
+                            Err(error) => Err(error),
+                        },
+                        Command::TraceStart(config) => {
+                            trace_places.clone_from(&config.places);
+                            let result = match client.trace_configure(&config).await {
+                                Ok(_) => client.trace_arm().await,
+                                Err(error) => Err(error),
+                            };
+                            finish(&mut client, result).await
+                        }
+                        Command::TraceStatus => match client.trace_status().await {
+                            Ok(status) => {
+                                if events.send(Event::TraceStatus(status)).await.is_err() {
+                                    return;
+                                }
+                                continue;
+                            }
+                            Err(error) => Err(error),
+                        },
+                        Command::TraceUpload => {
+                            let result = trace_upload(&mut client, &trace_places, &events).await;
+                            match result {
+                                Ok(event) => {
+                                    if events.send(event).await.is_err() {
+                                        return;
+                                    }
+                                    continue;
+                                }
+                                Err(error) => Err(error),
+                            }
+                        }
                         Command::Start => client.start().await,
                         Command::Stop => client.stop().await,
                         Command::Reset(kind) => client.reset(kind).await,
@@ -200,6 +318,25 @@ async fn client_write(
     } else {
         client.write(&values).await
     }
+}
+
+/// Uploads a trace with progress events; the samples come back as one event.
+async fn trace_upload(
+    client: &mut Client,
+    places: &[Place],
+    events: &mpsc::Sender<Event>,
+) -> Result<Event, OnlineError> {
+    let status = client.trace_status().await?;
+    let total = status.recorded as usize;
+    let samples = client
+        .trace_upload(places, |received| {
+            let _ = events.try_send(Event::TraceProgress(received, total));
+        })
+        .await?;
+    Ok(Event::TraceSamples {
+        samples,
+        trigger_sample: status.trigger_sample,
+    })
 }
 
 /// The target's state after a command that answers nothing of its own.

@@ -1,20 +1,32 @@
 //! The studio window.
 
+mod build_job;
 mod cam_view;
+mod chrome;
 mod device_tree;
+mod dock;
 mod document_view;
 mod documents;
 mod fonts;
 mod i18n;
+mod online;
+mod pane;
+mod pane_behavior;
+mod panes;
 mod property_view;
 mod session;
 mod settings;
 mod studio_app;
+mod trace_view;
 mod tree_node;
 
 use std::path::PathBuf;
 
+pub use build_job::{BuildMessage, BuildOutcome};
+pub use dock::Dock;
 pub use i18n::{Language, Text};
+pub use online::{LiveValue, Online, Phase, TargetKind, TracePhase};
+pub use pane::Pane;
 pub use session::{SaveAsError, Session};
 pub use settings::{Settings, Theme};
 pub use studio_app::{StatusMessage, StudioApp};
@@ -40,7 +52,14 @@ pub fn run(project: Option<PathBuf>) -> anyhow::Result<()> {
                 .storage
                 .and_then(|storage| eframe::get_value(storage, settings::SETTINGS_KEY))
                 .unwrap_or_default();
-            Ok(Box::new(StudioApp::new(settings, Some(project_dir))))
+            let layout = creation
+                .storage
+                .and_then(|storage| eframe::get_value(storage, dock::LAYOUT_KEY));
+            Ok(Box::new(StudioApp::with_layout(
+                settings,
+                layout,
+                Some(project_dir),
+            )))
         }),
     )
     .map_err(|error| anyhow::anyhow!("the studio window could not be opened: {error}"))

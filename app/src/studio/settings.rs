@@ -3,6 +3,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::i18n::Language;
+use super::online::TargetKind;
 
 /// The key under which the settings are kept in eframe's storage.
 pub const SETTINGS_KEY: &str = "rivet.settings";
@@ -15,6 +16,8 @@ pub struct Settings {
     pub language: Language,
     /// The colour theme.
     pub theme: Theme,
+    /// The target the studio logs in to.
+    pub target: TargetKind,
 }
 
 /// The colour theme.

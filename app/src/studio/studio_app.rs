@@ -1,35 +1,27 @@
-//! The studio application: frame layout, menus, commands.
+//! The studio application: the docking layout, menus, shortcuts and the commands they run.
 
 use std::path::{Path, PathBuf};
+use std::time::Instant;
 
-use egui::{RichText, Ui};
-use project_model::{LoadProblem, Severity};
+use egui::Ui;
+use project_model::{LoadProblem, Object};
 
-use super::device_tree::device_tree_ui;
-use super::documents::Documents;
+use super::build_job::{BuildJob, BuildOutcome};
+use super::dock::{Dock, LAYOUT_KEY};
+use super::documents::close_stale_documents;
 use super::fonts::install_fonts;
-use super::i18n::{Language, Text};
+use super::i18n::Text;
+use super::online::{Online, TargetKind};
+use super::pane_behavior::PaneBehavior;
+use super::panes::{TracePaneState, WatchPaneState};
 use super::session::Session;
-use super::settings::{SETTINGS_KEY, Settings, Theme};
+use super::settings::{SETTINGS_KEY, Settings};
 use super::tree_node::TreeNode;
 
-/// The studio: the open project, what is selected and open, and the settings.
+/// The studio: the docking layout and everything the panes show.
 pub struct StudioApp {
-    settings: Settings,
-    session: Option<Session>,
-    /// Problems of the last attempt to open a project: errors when it failed, warnings when it
-    /// opened. Shown in the messages panel until the next attempt.
-    problems: Vec<LoadProblem>,
-    /// The folder whose opening failed, shown with its errors.
-    failed_dir: Option<PathBuf>,
-    selection: Option<TreeNode>,
-    documents: Documents,
-    status: Option<StatusMessage>,
-    /// Commands requested while drawing, run after the frame's UI.
-    pending: Vec<Command>,
-    title: String,
-    /// Whether fonts and theme were installed into the egui context (done on the first frame).
-    style_installed: bool,
+    dock: Dock,
+    studio: Studio,
 }
 
 /// A line for the status bar: what the last action did.
@@ -41,31 +33,98 @@ pub struct StatusMessage {
     pub is_error: bool,
 }
 
-/// Actions requested by menus and shortcuts, run after the UI pass so the project never changes
-/// while it is drawn.
+/// Actions requested by menus, panes and shortcuts, run after the UI pass so the project never
+/// changes while it is drawn.
 #[derive(Clone, Debug, PartialEq)]
-enum Command {
+pub(crate) enum Command {
     OpenDialog,
     Save,
     SaveAsDialog,
     Quit,
+    Undo,
+    Redo,
+    Build,
+    Login,
+    Logout,
+    Start,
+    Stop,
+    Reset(online::Reset),
+    WritePrepared,
+    ForcePrepared,
+    ReleaseAllForces,
+    ResetLayout,
+    /// Open a tree node's document.
+    Open(TreeNode),
+    /// Apply edits to the project as one undo step.
+    Edit(String, Vec<project_model::Edit>),
+}
+
+/// Everything but the layout, so panes can be drawn while the layout is borrowed.
+pub(crate) struct Studio {
+    pub settings: Settings,
+    pub session: Option<Session>,
+    /// Problems of the last attempt to open a project: errors when it failed, warnings when it
+    /// opened.
+    pub problems: Vec<LoadProblem>,
+    /// The folder whose opening failed, shown with its errors.
+    pub failed_dir: Option<PathBuf>,
+    pub selection: Option<TreeNode>,
+    pub status: Option<StatusMessage>,
+    /// Commands requested while drawing, run after the frame's UI.
+    pub pending: Vec<Command>,
+    title: String,
+    /// Whether fonts and theme were installed into the egui context (done on the first frame).
+    style_installed: bool,
+    /// The build running in the background.
+    pub build: Option<BuildJob>,
+    /// The last build's outcome.
+    pub last_build: Option<BuildOutcome>,
+    /// Log in as soon as the running build succeeds.
+    login_after_build: bool,
+    pub online: Online,
+    /// Online messages shown in the messages panel, newest last.
+    pub online_messages: Vec<super::online::OnlineMessage>,
+    /// The password typed for the controller (never saved).
+    pub password: String,
+    pub watch: WatchPaneState,
+    pub trace: TracePaneState,
 }
 
 impl StudioApp {
-    /// Creates the studio and opens `project_dir` if given. Fonts and theme are installed on
-    /// the first frame, so the studio runs the same in a window and in a test harness.
+    /// Creates the studio with the default layout and opens `project_dir` if given. Fonts and
+    /// theme are installed on the first frame, so the studio runs the same in a window and in a
+    /// test harness.
     pub fn new(settings: Settings, project_dir: Option<PathBuf>) -> Self {
+        Self::with_layout(settings, None, project_dir)
+    }
+
+    /// Creates the studio with a saved layout (checked, see [`Dock::restored`]).
+    pub fn with_layout(
+        settings: Settings,
+        layout: Option<Dock>,
+        project_dir: Option<PathBuf>,
+    ) -> Self {
         let mut app = Self {
-            settings,
-            session: None,
-            problems: Vec::new(),
-            failed_dir: None,
-            selection: None,
-            documents: Documents::default(),
-            status: None,
-            pending: Vec::new(),
-            title: String::new(),
-            style_installed: false,
+            dock: Dock::restored(layout),
+            studio: Studio {
+                settings,
+                session: None,
+                problems: Vec::new(),
+                failed_dir: None,
+                selection: None,
+                status: None,
+                pending: Vec::new(),
+                title: String::new(),
+                style_installed: false,
+                build: None,
+                last_build: None,
+                login_after_build: false,
+                online: Online::new(),
+                online_messages: Vec::new(),
+                password: String::new(),
+                watch: WatchPaneState::default(),
+                trace: TracePaneState::default(),
+            },
         };
         if let Some(dir) = project_dir {
             app.open_project(&dir);
@@ -76,23 +135,27 @@ impl StudioApp {
     /// Opens the project in `dir`. On failure the current project stays open and the errors
     /// are listed in the messages panel; nothing on disk is touched either way.
     pub fn open_project(&mut self, dir: &Path) {
-        let language = self.settings.language;
+        let studio = &mut self.studio;
+        let language = studio.settings.language;
         match Session::open(dir) {
             Ok(session) => {
-                self.problems = session.warnings.clone();
-                self.failed_dir = None;
-                self.selection = None;
-                self.documents.close_all();
-                self.status = Some(StatusMessage {
+                studio.online.logout();
+                studio.problems = session.warnings.clone();
+                studio.failed_dir = None;
+                studio.selection = None;
+                studio.last_build = None;
+                studio.build = None;
+                close_stale_documents(&mut self.dock, &session.project);
+                studio.status = Some(StatusMessage {
                     text: format!("{} {}", Text::Opened.get(language), dir.display()),
                     is_error: false,
                 });
-                self.session = Some(session);
+                studio.session = Some(session);
             }
             Err(error) => {
-                self.problems = error.problems;
-                self.failed_dir = Some(dir.to_owned());
-                self.status = Some(StatusMessage {
+                studio.problems = error.problems;
+                studio.failed_dir = Some(dir.to_owned());
+                studio.status = Some(StatusMessage {
                     text: format!("{}: {}", Text::CouldNotOpen.get(language), dir.display()),
                     is_error: true,
                 });
@@ -102,36 +165,124 @@ impl StudioApp {
 
     /// The open project, if any.
     pub fn session(&self) -> Option<&Session> {
-        self.session.as_ref()
+        self.studio.session.as_ref()
     }
 
     /// The selected device tree node.
     pub fn selection(&self) -> Option<&TreeNode> {
-        self.selection.as_ref()
+        self.studio.selection.as_ref()
     }
 
     /// The documents open in tabs.
     pub fn open_documents(&self) -> Vec<TreeNode> {
-        self.documents.open_documents()
+        self.dock.documents()
     }
 
-    /// The problems listed in the messages panel.
+    /// The problems of the last project load.
     pub fn problems(&self) -> &[LoadProblem] {
-        &self.problems
+        &self.studio.problems
+    }
+
+    /// The last build's outcome.
+    pub fn last_build(&self) -> Option<&BuildOutcome> {
+        self.studio.last_build.as_ref()
+    }
+
+    /// Whether a build is running.
+    pub fn is_building(&self) -> bool {
+        self.studio.build.is_some()
+    }
+
+    /// The online state.
+    pub fn online(&self) -> &Online {
+        &self.studio.online
     }
 
     /// The status bar's message.
     pub fn status(&self) -> Option<&StatusMessage> {
-        self.status.as_ref()
+        self.studio.status.as_ref()
     }
 
     /// The settings.
     pub fn settings(&self) -> &Settings {
-        &self.settings
+        &self.studio.settings
+    }
+
+    /// The docking layout.
+    pub fn dock(&self) -> &Dock {
+        &self.dock
+    }
+
+    /// Chooses the login target.
+    pub fn set_target(&mut self, target: TargetKind) {
+        self.studio.settings.target = target;
     }
 
     /// Saves the open project to its folder.
     pub fn save(&mut self) {
+        self.studio.save();
+    }
+
+    /// Saves the open project into `dir`, which must not hold another project.
+    pub fn save_as(&mut self, dir: &Path) {
+        self.studio.save_as(dir);
+    }
+
+    /// Draws the whole studio into `ui` and then runs the commands requested while drawing.
+    pub fn ui(&mut self, ui: &mut Ui) {
+        let studio = &mut self.studio;
+        if !studio.style_installed {
+            install_fonts(ui.ctx());
+            ui.ctx().set_theme(studio.settings.theme.egui_theme());
+            studio.style_installed = true;
+        }
+        studio.take_in_background_results(ui.ctx());
+        studio.handle_shortcuts(ui.ctx());
+        studio.update_title(ui.ctx());
+        egui::Panel::top("menu_bar").show(ui, |ui| studio.menu_bar_ui(ui));
+        egui::Panel::top("tool_bar").show(ui, |ui| studio.tool_bar_ui(ui));
+        egui::Panel::bottom("status_bar").show(ui, |ui| studio.status_bar_ui(ui));
+        studio.login_dialog_ui(ui.ctx());
+        egui::CentralPanel::default_margins().show(ui, |ui| {
+            let mut behavior = PaneBehavior { studio };
+            self.dock.tree.ui(&mut behavior, ui);
+        });
+        self.run_pending(ui.ctx());
+    }
+
+    fn run_pending(&mut self, ctx: &egui::Context) {
+        for command in std::mem::take(&mut self.studio.pending) {
+            match command {
+                Command::Open(node) => {
+                    self.studio.selection = Some(node.clone());
+                    self.dock.open_document(node);
+                }
+                Command::ResetLayout => {
+                    let open = self.dock.documents();
+                    self.dock = Dock::default();
+                    for node in open {
+                        self.dock.open_document(node);
+                    }
+                }
+                Command::OpenDialog => {
+                    if let Some(dir) = rfd::FileDialog::new()
+                        .set_title("Open Rivet project folder")
+                        .pick_folder()
+                    {
+                        self.open_project(&dir);
+                    }
+                }
+                other => self.studio.run(other, ctx),
+            }
+        }
+        if let Some(session) = &self.studio.session {
+            close_stale_documents(&mut self.dock, &session.project);
+        }
+    }
+}
+
+impl Studio {
+    fn save(&mut self) {
         let language = self.settings.language;
         let Some(session) = &mut self.session else {
             return;
@@ -157,8 +308,7 @@ impl StudioApp {
         });
     }
 
-    /// Saves the open project into `dir`, which must not hold another project.
-    pub fn save_as(&mut self, dir: &Path) {
+    fn save_as(&mut self, dir: &Path) {
         let language = self.settings.language;
         let Some(session) = &mut self.session else {
             return;
@@ -179,39 +329,267 @@ impl StudioApp {
         });
     }
 
-    /// Draws the whole studio into `ui` and then runs the commands requested while drawing.
-    pub fn ui(&mut self, ui: &mut Ui) {
-        if !self.style_installed {
-            install_fonts(ui.ctx());
-            ui.ctx().set_theme(self.settings.theme.egui_theme());
-            self.style_installed = true;
+    /// Collects what background work produced since the last frame: the build's outcome and
+    /// online events. Keeps the UI drawing while something is under way.
+    fn take_in_background_results(&mut self, ctx: &egui::Context) {
+        if let Some(job) = &self.build {
+            match job.poll() {
+                Some(outcome) => {
+                    self.build = None;
+                    self.finish_build(outcome, ctx);
+                }
+                None => ctx.request_repaint_after(std::time::Duration::from_millis(50)),
+            }
         }
-        self.handle_shortcuts(ui.ctx());
-        self.update_title(ui.ctx());
-        egui::Panel::top("menu_bar").show(ui, |ui| self.menu_bar_ui(ui));
-        egui::Panel::bottom("status_bar").show(ui, |ui| self.status_bar_ui(ui));
-        if !self.problems.is_empty() {
-            egui::Panel::bottom("messages")
-                .resizable(true)
-                .default_size(140.0)
-                .show(ui, |ui| self.messages_ui(ui));
+        self.online
+            .set_watch(self.watch.watched_paths(self.session.as_ref()));
+        self.online.poll(Instant::now());
+        for message in self.online.take_messages() {
+            self.status = Some(StatusMessage {
+                text: message.text.clone(),
+                is_error: message.is_error,
+            });
+            self.online_messages.push(message);
         }
-        egui::Panel::left("device_tree")
-            .resizable(true)
-            .default_size(260.0)
-            .show(ui, |ui| self.device_tree_panel_ui(ui));
-        egui::CentralPanel::default_margins().show(ui, |ui| self.central_ui(ui));
-        self.run_pending(ui.ctx());
+        if self.online_messages.len() > 200 {
+            let excess = self.online_messages.len() - 200;
+            self.online_messages.drain(..excess);
+        }
+        if self.online.is_logged_in() {
+            // Values, statistics and trace states arrive by polling; redraw to show them.
+            ctx.request_repaint_after(std::time::Duration::from_millis(100));
+        }
+    }
+
+    fn finish_build(&mut self, outcome: BuildOutcome, ctx: &egui::Context) {
+        let language = self.settings.language;
+        let (errors, warnings) = outcome.counts();
+        self.status = Some(match (&outcome.image, &outcome.failure) {
+            (Some(_), _) => StatusMessage {
+                text: format!(
+                    "{}: {errors} {}, {warnings} {} ({} ms)",
+                    Text::BuildSucceeded.get(language),
+                    Text::Errors.get(language),
+                    Text::Warnings.get(language),
+                    outcome.elapsed.as_millis()
+                ),
+                is_error: false,
+            },
+            (None, Some(reason)) => StatusMessage {
+                text: format!("{}: {reason}", Text::BuildFailed.get(language)),
+                is_error: true,
+            },
+            (None, None) => StatusMessage {
+                text: format!(
+                    "{}: {errors} {}, {warnings} {}",
+                    Text::BuildFailed.get(language),
+                    Text::Errors.get(language),
+                    Text::Warnings.get(language)
+                ),
+                is_error: true,
+            },
+        });
+        let login = std::mem::take(&mut self.login_after_build);
+        let built = outcome.image.is_some();
+        self.last_build = Some(outcome);
+        if login && built {
+            self.login(ctx);
+        }
+    }
+
+    /// The current project revision (changes with every edit, undo and redo).
+    fn revision(&self) -> Option<u64> {
+        self.session
+            .as_ref()
+            .map(|session| session.history.revision())
+    }
+
+    fn start_build(&mut self) {
+        let Some(session) = &self.session else { return };
+        let revision = session.history.revision();
+        if self
+            .build
+            .as_ref()
+            .is_some_and(|job| job.revision() == revision)
+        {
+            return;
+        }
+        self.build = Some(BuildJob::start(session.project.clone(), revision));
+        self.status = Some(StatusMessage {
+            text: Text::Building.get(self.settings.language).to_owned(),
+            is_error: false,
+        });
+    }
+
+    /// Logs in with the current build, building first when the project changed since.
+    fn login(&mut self, ctx: &egui::Context) {
+        let current = self
+            .last_build
+            .as_ref()
+            .filter(|outcome| Some(outcome.revision) == self.revision())
+            .and_then(|outcome| outcome.image.clone());
+        let Some(image) = current else {
+            let failed = self
+                .last_build
+                .as_ref()
+                .is_some_and(|outcome| Some(outcome.revision) == self.revision());
+            if failed {
+                self.status = Some(StatusMessage {
+                    text: "login needs a program that builds: see the messages".to_owned(),
+                    is_error: true,
+                });
+            } else {
+                self.login_after_build = true;
+                self.start_build();
+            }
+            return;
+        };
+        let address = self.session.as_ref().and_then(|session| {
+            use std::net::ToSocketAddrs as _;
+            let controller = &session.project.controller;
+            (controller.host.as_str(), controller.port)
+                .to_socket_addrs()
+                .ok()
+                .and_then(|mut addresses| addresses.next())
+        });
+        let password = (!self.password.is_empty()).then(|| self.password.clone());
+        let wake = ctx.clone();
+        self.online
+            .login(self.settings.target, address, password, image, move || {
+                wake.request_repaint();
+            });
+    }
+
+    fn run(&mut self, command: Command, ctx: &egui::Context) {
+        match command {
+            Command::Save => self.save(),
+            Command::SaveAsDialog => {
+                if let Some(dir) = rfd::FileDialog::new()
+                    .set_title("Save Rivet project into folder")
+                    .pick_folder()
+                {
+                    self.save_as(&dir);
+                }
+            }
+            Command::Quit => ctx.send_viewport_cmd(egui::ViewportCommand::Close),
+            Command::Undo | Command::Redo => self.undo_redo(command == Command::Undo),
+            Command::Build => self.start_build(),
+            Command::Login => self.login(ctx),
+            Command::Logout => self.online.logout(),
+            Command::Start => self.online.start(),
+            Command::Stop => self.online.stop(),
+            Command::Reset(kind) => self.online.reset(kind),
+            Command::WritePrepared | Command::ForcePrepared => {
+                let prepared = self.watch.prepared_values(self.session.as_ref());
+                let result = if command == Command::WritePrepared {
+                    self.online.write(&prepared)
+                } else {
+                    self.online.force(&prepared)
+                };
+                self.watch.refused = match result {
+                    Ok(()) => Vec::new(),
+                    Err(refused) => refused,
+                };
+            }
+            Command::ReleaseAllForces => self.online.unforce(Vec::new()),
+            Command::Edit(label, edits) => self.apply(&label, edits),
+            Command::Open(_) | Command::ResetLayout | Command::OpenDialog => {}
+        }
+    }
+
+    /// Applies one gesture's edits as one undo step.
+    pub fn apply(&mut self, label: &str, edits: Vec<project_model::Edit>) {
+        let Some(session) = &mut self.session else {
+            return;
+        };
+        if let Err(error) = session.history.apply(&mut session.project, label, edits) {
+            self.status = Some(StatusMessage {
+                text: format!("{label}: {error}"),
+                is_error: true,
+            });
+        }
+    }
+
+    fn undo_redo(&mut self, undo: bool) {
+        let Some(session) = &mut self.session else {
+            return;
+        };
+        let result = if undo {
+            session.history.undo(&mut session.project)
+        } else {
+            session.history.redo(&mut session.project)
+        };
+        let language = self.settings.language;
+        let verb = if undo { Text::Undo } else { Text::Redo }.get(language);
+        self.status = match result {
+            Ok(Some(label)) => Some(StatusMessage {
+                text: format!("{verb}: {label}"),
+                is_error: false,
+            }),
+            Ok(None) => None,
+            Err(error) => Some(StatusMessage {
+                text: format!("{verb}: {error}"),
+                is_error: true,
+            }),
+        };
     }
 
     fn handle_shortcuts(&mut self, ctx: &egui::Context) {
-        let save = egui::KeyboardShortcut::new(egui::Modifiers::COMMAND, egui::Key::S);
-        let open = egui::KeyboardShortcut::new(egui::Modifiers::COMMAND, egui::Key::O);
-        if ctx.input_mut(|input| input.consume_shortcut(&save)) {
-            self.pending.push(Command::Save);
-        }
-        if ctx.input_mut(|input| input.consume_shortcut(&open)) {
-            self.pending.push(Command::OpenDialog);
+        use egui::{Key, KeyboardShortcut, Modifiers};
+        let shortcuts = [
+            (
+                KeyboardShortcut::new(Modifiers::COMMAND, Key::S),
+                Command::Save,
+            ),
+            (
+                KeyboardShortcut::new(Modifiers::COMMAND, Key::O),
+                Command::OpenDialog,
+            ),
+            (
+                KeyboardShortcut::new(Modifiers::COMMAND, Key::Z),
+                Command::Undo,
+            ),
+            (
+                KeyboardShortcut::new(Modifiers::COMMAND, Key::Y),
+                Command::Redo,
+            ),
+            (
+                KeyboardShortcut::new(Modifiers::NONE, Key::F11),
+                Command::Build,
+            ),
+            (
+                KeyboardShortcut::new(Modifiers::ALT, Key::F8),
+                Command::Login,
+            ),
+            (
+                KeyboardShortcut::new(Modifiers::COMMAND, Key::F8),
+                Command::Logout,
+            ),
+            (
+                KeyboardShortcut::new(Modifiers::SHIFT, Key::F8),
+                Command::Stop,
+            ),
+            (
+                KeyboardShortcut::new(Modifiers::NONE, Key::F5),
+                Command::Start,
+            ),
+            (
+                KeyboardShortcut::new(Modifiers::COMMAND, Key::F7),
+                Command::WritePrepared,
+            ),
+            (
+                KeyboardShortcut::new(Modifiers::ALT, Key::F7),
+                Command::ReleaseAllForces,
+            ),
+            (
+                KeyboardShortcut::new(Modifiers::NONE, Key::F7),
+                Command::ForcePrepared,
+            ),
+        ];
+        for (shortcut, command) in shortcuts {
+            if ctx.input_mut(|input| input.consume_shortcut(&shortcut)) {
+                self.pending.push(command);
+            }
         }
     }
 
@@ -229,184 +607,18 @@ impl StudioApp {
         }
     }
 
-    fn menu_bar_ui(&mut self, ui: &mut Ui) {
-        let language = self.settings.language;
-        egui::MenuBar::new().ui(ui, |ui| {
-            ui.menu_button(Text::File.get(language), |ui| {
-                if ui.button(Text::Open.get(language)).clicked() {
-                    self.pending.push(Command::OpenDialog);
-                }
-                let has_project = self.session.is_some();
-                if ui
-                    .add_enabled(
-                        has_project,
-                        egui::Button::new(Text::Save.get(language)).shortcut_text("Ctrl+S"),
-                    )
-                    .clicked()
-                {
-                    self.pending.push(Command::Save);
-                }
-                if ui
-                    .add_enabled(has_project, egui::Button::new(Text::SaveAs.get(language)))
-                    .clicked()
-                {
-                    self.pending.push(Command::SaveAsDialog);
-                }
-                ui.separator();
-                if ui.button(Text::Quit.get(language)).clicked() {
-                    self.pending.push(Command::Quit);
-                }
-            });
-            ui.menu_button(Text::Settings.get(language), |ui| {
-                ui.menu_button(Text::LanguageMenu.get(language), |ui| {
-                    for choice in Language::ALL {
-                        ui.radio_value(&mut self.settings.language, choice, choice.native_name());
-                    }
-                });
-                ui.menu_button(Text::Theme.get(language), |ui| {
-                    for (theme, text) in [(Theme::Dark, Text::Dark), (Theme::Light, Text::Light)] {
-                        if ui
-                            .radio_value(&mut self.settings.theme, theme, text.get(language))
-                            .clicked()
-                        {
-                            ui.ctx().set_theme(theme.egui_theme());
-                        }
-                    }
-                });
-            });
-            ui.menu_button(Text::Help.get(language), |ui| {
-                ui.label(Text::AboutText.get(language));
-                ui.label(format!("Rivet {}", env!("CARGO_PKG_VERSION")));
-            });
-        });
-    }
-
-    fn status_bar_ui(&self, ui: &mut Ui) {
-        ui.horizontal(|ui| {
-            if let Some(session) = &self.session {
-                ui.label(RichText::new(session.dir.display().to_string()).weak());
-                ui.separator();
-                ui.label(format!(
-                    "{} objects",
-                    session.project.application.objects().len()
-                ));
-                ui.separator();
-                ui.label(RichText::new(Text::ReadOnly.get(self.settings.language)).weak());
-            }
-            if let Some(status) = &self.status {
-                ui.separator();
-                let text = RichText::new(&status.text);
-                ui.label(if status.is_error {
-                    text.color(ui.visuals().error_fg_color)
-                } else {
-                    text
-                });
-            }
-        });
-    }
-
-    fn messages_ui(&mut self, ui: &mut Ui) {
-        let language = self.settings.language;
-        ui.horizontal(|ui| {
-            ui.strong(Text::Messages.get(language));
-            ui.label(format!(
-                "{} {}",
-                self.problems.len(),
-                Text::ProblemsFound.get(language)
-            ));
-            if ui.small_button(Text::Close.get(language)).clicked() {
-                self.problems.clear();
-            }
-        });
-        egui::ScrollArea::vertical()
-            .auto_shrink([false, false])
-            .show(ui, |ui| {
-                for problem in &self.problems {
-                    let color = match problem.severity {
-                        Severity::Error => ui.visuals().error_fg_color,
-                        Severity::Warning => ui.visuals().warn_fg_color,
-                    };
-                    ui.label(RichText::new(problem.to_string()).monospace().color(color));
-                }
-            });
-    }
-
-    fn device_tree_panel_ui(&mut self, ui: &mut Ui) {
-        let language = self.settings.language;
-        ui.heading(Text::Devices.get(language));
-        ui.separator();
-        let Some(session) = &self.session else {
-            ui.label(Text::NoProjectOpen.get(language));
-            return;
-        };
-        let response = device_tree_ui(ui, &session.project, self.selection.as_ref(), language);
-        if let Some(node) = response.clicked {
-            self.selection = Some(node);
-        }
-        if let Some(node) = response.opened {
-            self.selection = Some(node.clone());
-            if node.is_document() {
-                self.documents.open(node);
-            }
-        }
-    }
-
-    fn central_ui(&mut self, ui: &mut Ui) {
-        let language = self.settings.language;
-        if let Some(dir) = &self.failed_dir
-            && self.session.is_none()
-        {
-            ui.heading(Text::CouldNotOpen.get(language));
-            ui.label(dir.display().to_string());
-            ui.label(Text::NoProjectHint.get(language));
-            return;
-        }
+    /// The project's watch list objects' names, in tree order.
+    pub fn objects_of<T>(&self, pick: impl Fn(&Object) -> Option<&T>) -> Vec<String>
+    where
+        T: ?Sized,
+    {
         match &self.session {
-            Some(session) if !self.documents.is_empty() => {
-                self.documents.ui(ui, Some(&session.project), language);
-            }
-            Some(session) => {
-                ui.vertical_centered(|ui| {
-                    ui.add_space(ui.available_height() / 3.0);
-                    ui.heading(session.title());
-                    if !session.project.description.is_empty() {
-                        ui.label(&session.project.description);
-                    }
-                    ui.label(RichText::new(Text::OpenObjectHint.get(language)).weak());
-                });
-            }
-            None => {
-                ui.vertical_centered(|ui| {
-                    ui.add_space(ui.available_height() / 3.0);
-                    ui.heading(Text::NoProjectOpen.get(language));
-                    ui.label(Text::NoProjectHint.get(language));
-                });
-            }
-        }
-    }
-
-    fn run_pending(&mut self, ctx: &egui::Context) {
-        for command in std::mem::take(&mut self.pending) {
-            match command {
-                Command::OpenDialog => {
-                    if let Some(dir) = rfd::FileDialog::new()
-                        .set_title("Open Rivet project folder")
-                        .pick_folder()
-                    {
-                        self.open_project(&dir);
-                    }
-                }
-                Command::Save => self.save(),
-                Command::SaveAsDialog => {
-                    if let Some(dir) = rfd::FileDialog::new()
-                        .set_title("Save Rivet project into folder")
-                        .pick_folder()
-                    {
-                        self.save_as(&dir);
-                    }
-                }
-                Command::Quit => ctx.send_viewport_cmd(egui::ViewportCommand::Close),
-            }
+            Some(session) => project_model::object_files(&session.project)
+                .into_iter()
+                .filter(|(_, object)| pick(object).is_some())
+                .map(|(_, object)| object.name().to_owned())
+                .collect(),
+            None => Vec::new(),
         }
     }
 }
@@ -417,6 +629,7 @@ impl eframe::App for StudioApp {
     }
 
     fn save(&mut self, storage: &mut dyn eframe::Storage) {
-        eframe::set_value(storage, SETTINGS_KEY, &self.settings);
+        eframe::set_value(storage, SETTINGS_KEY, &self.studio.settings);
+        eframe::set_value(storage, LAYOUT_KEY, &self.dock);
     }
 }

@@ -1,0 +1,54 @@
+//! The panes of the studio's docking layout.
+
+use serde::{Deserialize, Serialize};
+
+use super::i18n::{Language, Text};
+use super::tree_node::TreeNode;
+
+/// A pane of the docking layout: the fixed tool panes and one pane per open document.
+#[derive(Clone, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+pub enum Pane {
+    /// The device tree.
+    Devices,
+    /// The properties of the selected tree node.
+    Properties,
+    /// An open document.
+    Document(TreeNode),
+    /// Build, load and online messages.
+    Messages,
+    /// The watch lists.
+    Watch,
+    /// The forced variables.
+    Forces,
+    /// The trace view.
+    Trace,
+    /// Task statistics and the fault log.
+    Tasks,
+}
+
+impl Pane {
+    /// The tool panes every layout has, in their default order.
+    pub const TOOLS: [Pane; 7] = [
+        Pane::Devices,
+        Pane::Properties,
+        Pane::Messages,
+        Pane::Watch,
+        Pane::Forces,
+        Pane::Trace,
+        Pane::Tasks,
+    ];
+
+    /// The title of a tool pane's tab.
+    pub fn tool_title(&self, language: Language) -> &'static str {
+        match self {
+            Pane::Devices => Text::Devices.get(language),
+            Pane::Properties => Text::Properties.get(language),
+            Pane::Messages => Text::Messages.get(language),
+            Pane::Watch => Text::Watch.get(language),
+            Pane::Forces => Text::Forces.get(language),
+            Pane::Trace => Text::Trace.get(language),
+            Pane::Tasks => Text::TasksAndFaults.get(language),
+            Pane::Document(_) => "",
+        }
+    }
+}

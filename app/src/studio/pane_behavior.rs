@@ -1,0 +1,197 @@
+//! How the docking layout draws each pane and which tabs may close.
+
+use egui::{RichText, Ui};
+use egui_tiles::{Behavior, SimplificationOptions, Tile, TileId, Tiles, UiResponse};
+
+use super::device_tree::device_tree_ui;
+use super::dock::Dock;
+use super::document_view::document_ui;
+use super::i18n::Text;
+use super::pane::Pane;
+use super::panes;
+use super::property_view::property_view_ui;
+use super::studio_app::{Command, Studio};
+use super::tree_node::TreeNode;
+
+/// The egui_tiles behaviour of the studio: it draws panes from the studio's state and lets
+/// only document tabs close.
+pub(crate) struct PaneBehavior<'a> {
+    pub studio: &'a mut Studio,
+}
+
+impl Behavior<Pane> for PaneBehavior<'_> {
+    fn pane_ui(&mut self, ui: &mut Ui, _tile_id: TileId, pane: &mut Pane) -> UiResponse {
+        let studio = &mut *self.studio;
+        egui::Frame::new().inner_margin(4).show(ui, |ui| {
+            ui.set_min_size(ui.available_size());
+            match pane {
+                Pane::Devices => devices_ui(studio, ui),
+                Pane::Properties => properties_ui(studio, ui),
+                Pane::Document(node) => document_pane_ui(studio, ui, node),
+                Pane::Messages => panes::messages_ui(studio, ui),
+                Pane::Watch => panes::watch_ui(studio, ui),
+                Pane::Forces => panes::forces_ui(studio, ui),
+                Pane::Trace => panes::trace_ui(studio, ui),
+                Pane::Tasks => panes::tasks_ui(studio, ui),
+            }
+        });
+        UiResponse::None
+    }
+
+    fn tab_title_for_pane(&mut self, pane: &Pane) -> egui::WidgetText {
+        let language = self.studio.settings.language;
+        match pane {
+            Pane::Document(node) => {
+                let project = self.studio.session.as_ref().map(|s| &s.project);
+                node.title(project).into()
+            }
+            Pane::Messages => {
+                let count = panes::message_count(self.studio);
+                if count > 0 {
+                    format!("{} ({count})", pane.tool_title(language)).into()
+                } else {
+                    pane.tool_title(language).into()
+                }
+            }
+            Pane::Forces => {
+                let count = self.studio.online.forced_values().len();
+                if count > 0 {
+                    format!("{} ({count})", pane.tool_title(language)).into()
+                } else {
+                    pane.tool_title(language).into()
+                }
+            }
+            tool => tool.tool_title(language).into(),
+        }
+    }
+
+    fn is_tab_closable(&self, tiles: &Tiles<Pane>, tile_id: TileId) -> bool {
+        matches!(tiles.get(tile_id), Some(Tile::Pane(Pane::Document(_))))
+    }
+
+    fn simplification_options(&self) -> SimplificationOptions {
+        Dock::simplification_options()
+    }
+}
+
+fn devices_ui(studio: &mut Studio, ui: &mut Ui) {
+    let language = studio.settings.language;
+    let Some(session) = &studio.session else {
+        match &studio.failed_dir {
+            Some(dir) => {
+                ui.label(RichText::new(Text::CouldNotOpen.get(language)).strong());
+                ui.label(RichText::new(dir.display().to_string()).weak());
+            }
+            None => {
+                ui.label(Text::NoProjectOpen.get(language));
+            }
+        }
+        ui.label(RichText::new(Text::NoProjectHint.get(language)).weak());
+        return;
+    };
+    let response = device_tree_ui(ui, &session.project, studio.selection.as_ref(), language);
+    if let Some(node) = response.clicked {
+        studio.selection = Some(node);
+    }
+    if let Some(node) = response.opened {
+        studio.selection = Some(node.clone());
+        if node.is_document() {
+            studio.pending.push(Command::Open(node));
+        }
+    }
+}
+
+fn properties_ui(studio: &mut Studio, ui: &mut Ui) {
+    let (Some(session), Some(node)) = (&studio.session, &studio.selection) else {
+        ui.label(RichText::new(Text::OpenObjectHint.get(studio.settings.language)).weak());
+        return;
+    };
+    let project = &session.project;
+    ui.strong(node.title(Some(project)));
+    ui.separator();
+    egui::ScrollArea::both()
+        .id_salt("properties")
+        .auto_shrink([false, false])
+        .show(ui, |ui| {
+            let salt = format!("properties {node:?}");
+            match node {
+                TreeNode::Controller => property_view_ui(ui, &salt, &project.controller),
+                TreeNode::Task(name) => {
+                    if let Some(task) = project.task(name) {
+                        property_view_ui(ui, &salt, task);
+                    }
+                }
+                TreeNode::IoArea(name) => {
+                    if let Some(area) = project.io_areas.iter().find(|a| a.name == *name) {
+                        property_view_ui(ui, &salt, area);
+                    }
+                }
+                TreeNode::ModbusDevice(name) => {
+                    if let Some(device) = project.modbus_devices.iter().find(|d| d.name == *name) {
+                        property_view_ui(ui, &salt, device);
+                    }
+                }
+                TreeNode::Axis(name) => {
+                    if let Some(axis) = project.axes.iter().find(|a| a.name == *name) {
+                        property_view_ui(ui, &salt, axis);
+                    }
+                }
+                TreeNode::Object(name) => {
+                    if let Some(object) = project.application.object(name) {
+                        object_summary_ui(ui, object);
+                    }
+                }
+                _ => {}
+            }
+        });
+}
+
+/// What the properties pane shows for an application object: its kind and size, not its text
+/// (the document tab shows that).
+fn object_summary_ui(ui: &mut Ui, object: &project_model::Object) {
+    use project_model::Object;
+    egui::Grid::new("object_summary")
+        .num_columns(2)
+        .show(ui, |ui| {
+            let (kind, detail) = match object {
+                Object::Pou(pou) => (
+                    format!("{:?}", pou.kind),
+                    format!(
+                        "{} variables, {} methods, {} actions",
+                        pou.variables.len(),
+                        pou.methods.len(),
+                        pou.actions.len()
+                    ),
+                ),
+                Object::Gvl(gvl) => (
+                    "GVL".to_owned(),
+                    format!("{} variables", gvl.variables.len()),
+                ),
+                Object::DataType(_) => ("DUT".to_owned(), String::new()),
+                Object::CamTable(_) => ("CAM".to_owned(), String::new()),
+                Object::Trace(trace) => (
+                    "Trace".to_owned(),
+                    format!("{} variables, task {}", trace.variables.len(), trace.task),
+                ),
+                Object::WatchList(watch) => (
+                    "Watch list".to_owned(),
+                    format!("{} entries", watch.entries.len()),
+                ),
+            };
+            ui.label("Kind");
+            ui.label(kind);
+            ui.end_row();
+            if !detail.is_empty() {
+                ui.label("Content");
+                ui.label(detail);
+                ui.end_row();
+            }
+        });
+}
+
+fn document_pane_ui(studio: &mut Studio, ui: &mut Ui, node: &TreeNode) {
+    let language = studio.settings.language;
+    if let Some(session) = &studio.session {
+        document_ui(ui, &session.project, node, language);
+    }
+}

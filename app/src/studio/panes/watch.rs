@@ -1,0 +1,273 @@
+//! The watch pane: the project's watch lists with live values while online, prepared values
+//! for Ctrl+F7 (write) and F7 (force), and a field to add any variable path.
+
+use std::collections::HashMap;
+
+use egui::{Color32, RichText, Ui};
+use project_model::{Edit, Object, WatchEntry, WatchList};
+
+use crate::studio::i18n::Text;
+use crate::studio::session::Session;
+use crate::studio::studio_app::{Command, Studio};
+
+/// What the watch pane remembers between frames.
+#[derive(Default)]
+pub struct WatchPaneState {
+    /// The watch list shown; the first one when `None` or gone.
+    pub list: Option<String>,
+    /// The path typed in the "add variable" field.
+    new_path: String,
+    /// Prepared values being typed, by path, until Enter commits them.
+    typing: HashMap<String, String>,
+    /// Values the target or the type check refused, with the reason, by path.
+    pub refused: Vec<(String, String)>,
+}
+
+impl WatchPaneState {
+    fn current<'p>(&self, session: Option<&'p Session>) -> Option<&'p WatchList> {
+        let project = &session?.project;
+        let lists: Vec<&WatchList> = project_model::object_files(project)
+            .into_iter()
+            .filter_map(|(_, object)| match object {
+                Object::WatchList(list) => Some(list),
+                _ => None,
+            })
+            .collect();
+        self.list
+            .as_ref()
+            .and_then(|name| lists.iter().find(|list| list.name == *name).copied())
+            .or_else(|| lists.first().copied())
+    }
+
+    /// The paths of the shown watch list, which the studio reads while online.
+    pub fn watched_paths(&self, session: Option<&Session>) -> Vec<String> {
+        self.current(session)
+            .map(|list| {
+                list.entries
+                    .iter()
+                    .map(|entry| entry.path.clone())
+                    .collect()
+            })
+            .unwrap_or_default()
+    }
+
+    /// The prepared values of the shown watch list, as (path, text).
+    pub fn prepared_values(&self, session: Option<&Session>) -> Vec<(String, String)> {
+        self.current(session)
+            .map(|list| {
+                list.entries
+                    .iter()
+                    .filter_map(|entry| {
+                        let value = entry.prepared_value.as_deref()?.trim();
+                        (!value.is_empty()).then(|| (entry.path.clone(), value.to_owned()))
+                    })
+                    .collect()
+            })
+            .unwrap_or_default()
+    }
+}
+
+/// The edit that replaces a watch list with `changed`.
+fn replace(changed: WatchList) -> Vec<Edit> {
+    vec![Edit::ReplaceObject(Object::WatchList(changed))]
+}
+
+pub(crate) fn watch_ui(studio: &mut Studio, ui: &mut Ui) {
+    let language = studio.settings.language;
+    let names = studio.objects_of(|object| match object {
+        Object::WatchList(list) => Some(list),
+        _ => None,
+    });
+    let Some(list) = studio.watch.current(studio.session.as_ref()).cloned() else {
+        ui.label(RichText::new(Text::NoWatchList.get(language)).weak());
+        return;
+    };
+    ui.horizontal(|ui| {
+        let label = ui.label(Text::WatchList.get(language));
+        egui::ComboBox::from_id_salt("watch_list")
+            .selected_text(&list.name)
+            .show_ui(ui, |ui| {
+                for name in &names {
+                    if ui.selectable_label(*name == list.name, name).clicked() {
+                        studio.watch.list = Some(name.clone());
+                    }
+                }
+            })
+            .response
+            .labelled_by(label.id);
+        ui.separator();
+        let label = ui.label(Text::AddVariable.get(language));
+        let field = ui
+            .add(
+                egui::TextEdit::singleline(&mut studio.watch.new_path)
+                    .hint_text("Main.fbConveyor.xMotorOn")
+                    .desired_width(260.0),
+            )
+            .labelled_by(label.id);
+        let path = studio.watch.new_path.trim().to_owned();
+        if field.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter)) && !path.is_empty() {
+            let mut changed = list.clone();
+            changed.entries.push(WatchEntry {
+                path: path.clone(),
+                ..WatchEntry::default()
+            });
+            studio
+                .pending
+                .push(Command::Edit(format!("Watch {path}"), replace(changed)));
+            studio.watch.new_path.clear();
+        }
+    });
+    ui.separator();
+    let online = studio.online.is_online();
+    let mut edits: Vec<(String, Vec<Edit>)> = Vec::new();
+    egui::ScrollArea::both()
+        .id_salt("watch")
+        .auto_shrink([false, false])
+        .show(ui, |ui| {
+            egui::Grid::new("watch_grid")
+                .num_columns(5)
+                .striped(true)
+                .spacing([16.0, 4.0])
+                .min_col_width(60.0)
+                .show(ui, |ui| {
+                    for header in [
+                        Text::Expression,
+                        Text::Value,
+                        Text::PreparedValue,
+                        Text::Comment,
+                    ] {
+                        ui.strong(header.get(language));
+                    }
+                    ui.label("");
+                    ui.end_row();
+                    for (index, entry) in list.entries.iter().enumerate() {
+                        ui.label(RichText::new(&entry.path).monospace());
+                        value_cell(studio, ui, &entry.path, online);
+                        if let Some(committed) = prepared_cell(studio, ui, entry, online) {
+                            let mut changed = list.clone();
+                            changed.entries[index].prepared_value =
+                                (!committed.is_empty()).then_some(committed);
+                            edits.push((format!("Prepare {}", entry.path), replace(changed)));
+                        }
+                        ui.label(RichText::new(&entry.comment).weak());
+                        if ui
+                            .small_button("×")
+                            .on_hover_text(format!("{} {}", Text::Remove.get(language), entry.path))
+                            .clicked()
+                        {
+                            let mut changed = list.clone();
+                            changed.entries.remove(index);
+                            edits.push((
+                                format!("Remove {} from the watch list", entry.path),
+                                replace(changed),
+                            ));
+                        }
+                        ui.end_row();
+                    }
+                });
+        });
+    for (label, edit) in edits {
+        studio.pending.push(Command::Edit(label, edit));
+    }
+}
+
+/// The live value: forced values marked, changed values highlighted, unknown paths explained.
+fn value_cell(studio: &Studio, ui: &mut Ui, path: &str, online: bool) {
+    let language = studio.settings.language;
+    if !online {
+        ui.label(RichText::new("—").weak())
+            .on_hover_text(Text::NotOnline.get(language));
+        return;
+    }
+    if let Some(Err(reason)) = studio.online.resolution(path) {
+        ui.label(RichText::new(reason).color(ui.visuals().error_fg_color));
+        return;
+    }
+    match studio.online.value(path) {
+        Some(value) => {
+            let mut text = RichText::new(&value.text).monospace();
+            if value.changed {
+                text = text.strong();
+            }
+            ui.horizontal(|ui| {
+                if value.forced {
+                    ui.label(
+                        RichText::new(" F ")
+                            .monospace()
+                            .strong()
+                            .color(Color32::WHITE)
+                            .background_color(Color32::from_rgb(200, 40, 40)),
+                    )
+                    .on_hover_text("forced");
+                }
+                ui.label(text);
+            });
+        }
+        None => {
+            ui.spinner();
+        }
+    }
+}
+
+/// The prepared value field. Returns the value to keep in the list once the user commits it
+/// with Enter or by leaving the field; a value the type refuses is kept in the field with the
+/// reason beside it, and not committed.
+fn prepared_cell(
+    studio: &mut Studio,
+    ui: &mut Ui,
+    entry: &WatchEntry,
+    online: bool,
+) -> Option<String> {
+    let saved = entry.prepared_value.clone().unwrap_or_default();
+    let mut text = studio
+        .watch
+        .typing
+        .get(&entry.path)
+        .cloned()
+        .unwrap_or_else(|| saved.clone());
+    let refused = studio
+        .watch
+        .refused
+        .iter()
+        .find(|(path, _)| *path == entry.path)
+        .map(|(_, reason)| reason.clone());
+    let mut committed = None;
+    ui.horizontal(|ui| {
+        let field = ui.add(
+            egui::TextEdit::singleline(&mut text)
+                .desired_width(110.0)
+                .font(egui::TextStyle::Monospace),
+        );
+        field.widget_info(|| {
+            egui::WidgetInfo::labeled(
+                egui::Role::TextInput,
+                true,
+                format!("Prepared value of {}", entry.path),
+            )
+        });
+        if field.changed() {
+            studio.watch.typing.insert(entry.path.clone(), text.clone());
+            studio.watch.refused.retain(|(path, _)| *path != entry.path);
+        }
+        if field.lost_focus() && text.trim() != saved {
+            let check = if online && !text.trim().is_empty() {
+                studio.online.check_value(&entry.path, &text)
+            } else {
+                Ok(())
+            };
+            match check {
+                Ok(()) => {
+                    studio.watch.typing.remove(&entry.path);
+                    committed = Some(text.trim().to_owned());
+                }
+                Err(reason) => studio.watch.refused.push((entry.path.clone(), reason)),
+            }
+        } else if field.lost_focus() {
+            studio.watch.typing.remove(&entry.path);
+        }
+        if let Some(reason) = refused {
+            ui.label(RichText::new(reason).color(ui.visuals().error_fg_color));
+        }
+    });
+    committed
+}
