@@ -193,12 +193,14 @@ fn build_login_run_watch_force_release_write_trace_and_stop_in_the_simulator() {
     prepare(&mut harness, "GVL_IO.xConveyorMotor", "");
     watch(&mut harness, "GVL_IO.xStartButton");
     prepare(&mut harness, "GVL_IO.xStartButton", "TRUE");
-    let idle = value(harness.state(), "GVL_Machine.eMachineState");
-    assert!(idle.is_some());
+    // Enumerations show by name, as the program declares them.
+    assert_eq!(
+        value(harness.state(), "GVL_Machine.eMachineState"),
+        Some(("Idle".into(), false))
+    );
     harness.key_press_modifiers(Modifiers::COMMAND, Key::F7);
     wait_until(&mut harness, "the machine state to change", |app| {
-        let now = value(app, "GVL_Machine.eMachineState");
-        now.is_some() && now != idle
+        value(app, "GVL_Machine.eMachineState") == Some(("Starting".into(), false))
     });
     wait_until(&mut harness, "the complete trace", |app| {
         app.online().trace().phase() == TracePhase::Complete

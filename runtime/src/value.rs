@@ -212,6 +212,12 @@ pub fn read_place(engine: &Engine, place: Place) -> Value {
     value_at(image, bytes, place.offset as usize, place.bit, place.ty, 0)
 }
 
+/// Decodes the bytes of a value of type `ty` of `image`, as read from a target: enumerations
+/// by name, structures and arrays by member. Missing bytes read as zero.
+pub fn decode(image: &ProgramImage, ty: TypeId, bytes: &[u8]) -> Value {
+    value_at(image, bytes, 0, None, ty, 0)
+}
+
 fn raw_at(bytes: &[u8], offset: usize, size: usize) -> u64 {
     let mut raw = [0u8; 8];
     if let Some(source) = bytes.get(offset..offset + size) {

@@ -134,6 +134,7 @@ pub fn build(project: &Project, revision: u64) -> BuildOutcome {
                         bytes: Arc::new(bytes),
                         hash,
                         tasks,
+                        program: Arc::new(image),
                     }),
                     None,
                 )

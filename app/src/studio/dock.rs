@@ -136,6 +136,17 @@ impl Dock {
         group
     }
 
+    /// Where the editor area is on screen while it holds no document (for a hint to draw
+    /// there); `None` when documents are open or the area is gone.
+    pub fn empty_editor_area(&self) -> Option<egui::Rect> {
+        match self.tree.tiles.get(self.editor_area) {
+            Some(Tile::Container(Container::Tabs(tabs))) if tabs.children.is_empty() => {
+                self.tree.tiles.rect(self.editor_area)
+            }
+            _ => None,
+        }
+    }
+
     /// The open documents, in no particular order.
     pub fn documents(&self) -> Vec<TreeNode> {
         self.tree

@@ -157,6 +157,7 @@ pub enum Text {
     Recording,
     Complete,
     Uploading,
+    NoBuildYet,
 }
 
 impl Text {
@@ -306,6 +307,10 @@ impl Text {
             Self::Recording => ("recording", "正在记录"),
             Self::Complete => ("complete", "已完成"),
             Self::Uploading => ("uploading", "正在上传"),
+            Self::NoBuildYet => (
+                "Not built yet: F11 builds the project",
+                "尚未编译：按 F11 编译项目",
+            ),
         };
         match language {
             Language::English => english,

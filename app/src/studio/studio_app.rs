@@ -246,6 +246,9 @@ impl StudioApp {
         egui::CentralPanel::default_margins().show(ui, |ui| {
             let mut behavior = PaneBehavior { studio };
             self.dock.tree.ui(&mut behavior, ui);
+            if let Some(rect) = self.dock.empty_editor_area() {
+                editor_area_hint(ui, rect, studio);
+            }
         });
         self.run_pending(ui.ctx());
     }
@@ -278,6 +281,53 @@ impl StudioApp {
         if let Some(session) = &self.studio.session {
             close_stale_documents(&mut self.dock, &session.project);
         }
+    }
+}
+
+/// What the editor area shows while no document is open: the project and how to start.
+fn editor_area_hint(ui: &mut Ui, rect: egui::Rect, studio: &Studio) {
+    let language = studio.settings.language;
+    let mut lines = Vec::new();
+    match &studio.session {
+        Some(session) => {
+            lines.push((session.title(), 20.0, ui.visuals().strong_text_color()));
+            if !session.project.description.is_empty() {
+                lines.push((
+                    session.project.description.clone(),
+                    13.0,
+                    ui.visuals().text_color(),
+                ));
+            }
+            lines.push((
+                Text::OpenObjectHint.get(language).to_owned(),
+                13.0,
+                ui.visuals().weak_text_color(),
+            ));
+            lines.push((
+                "F11 build · Alt+F8 login · F5 start".to_owned(),
+                13.0,
+                ui.visuals().weak_text_color(),
+            ));
+        }
+        None => lines.push((
+            Text::NoProjectHint.get(language).to_owned(),
+            13.0,
+            ui.visuals().weak_text_color(),
+        )),
+    }
+    let painter = ui.painter_at(rect);
+    let mut y = rect.center().y - 40.0;
+    for (text, size, color) in lines {
+        let galley = painter.layout(
+            text,
+            egui::FontId::proportional(size),
+            color,
+            (rect.width() - 40.0).max(100.0),
+        );
+        let x = rect.center().x - galley.size().x / 2.0;
+        let height = galley.size().y;
+        painter.galley(egui::pos2(x, y), galley, color);
+        y += height + 8.0;
     }
 }
 

@@ -50,6 +50,9 @@ pub struct BuiltImage {
     pub hash: [u8; 32],
     /// Its task names in image order (a trace names its task by index).
     pub tasks: Vec<String>,
+    /// The image itself, whose types show values as the program declares them (enumerations
+    /// by name) once the target is known to run it.
+    pub program: Arc<program_image::ProgramImage>,
 }
 
 /// Where the login is.
@@ -529,7 +532,7 @@ impl Online {
                     let Some(Ok(resolved)) = self.resolved.get(path) else {
                         continue;
                     };
-                    let text = show(resolved, &bytes);
+                    let text = self.show(path, resolved, &bytes);
                     let changed = self.values.get(path).is_some_and(|old| old.text != text);
                     self.values.insert(
                         path.clone(),
@@ -591,6 +594,19 @@ impl Online {
                 self.trace.received(samples, trigger_sample);
             }
         }
+    }
+
+    /// A value as text: by the program's own types when the target runs the project's image,
+    /// else by the elementary type the target reports.
+    fn show(&self, path: &str, resolved: &Resolved, bytes: &[u8]) -> String {
+        if let Some(image) = &self.image
+            && self.phase == Phase::Online
+            && let Ok(place) = runtime::value::resolve(&image.program, path)
+            && place.bit.is_none()
+        {
+            return runtime::value::decode(&image.program, place.ty, bytes).to_string();
+        }
+        show(resolved, bytes)
     }
 
     /// Asks the target for the places of paths not known or asked for yet.

@@ -38,7 +38,7 @@ pub(crate) fn messages_ui(studio: &mut Studio, ui: &mut Ui) {
                 ));
             }
             None => {
-                ui.label(RichText::new("F11").weak());
+                ui.label(RichText::new(Text::NoBuildYet.get(language)).weak());
             }
         }
         if !studio.online_messages.is_empty()
