@@ -81,6 +81,14 @@ pub fn numeric(resolved: &Resolved, bytes: &[u8]) -> Option<f64> {
     }
 }
 
+/// The bytes of an elementary value as its IEC literal.
+pub fn describe_elementary(ty: Elementary, bytes: &[u8]) -> String {
+    let mut raw = [0u8; 8];
+    let n = bytes.len().min(8);
+    raw[..n].copy_from_slice(&bytes[..n]);
+    runtime::value::elementary(u64::from_le_bytes(raw), ty).to_string()
+}
+
 /// Whether the value is a BOOL (drawn as steps, toggled rather than typed).
 pub fn is_bool(resolved: &Resolved) -> bool {
     resolved.place.bit.is_some() || resolved.type_tag == Elementary::Bool as u8

@@ -3,114 +3,26 @@
 
 #![allow(clippy::unwrap_used, clippy::expect_used)] // Test helpers may panic: a panic is a failed test.
 
-use std::path::Path;
-use std::time::{Duration, Instant};
-
-use app::studio::{Phase, Settings, StudioApp, TracePhase};
+use app::studio::{Phase, TracePhase};
 use egui::{Key, Modifiers};
-use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable as _;
 use online::TargetState;
 
-/// How long a step may take on a loaded CI machine before the test fails.
-const PATIENCE: Duration = Duration::from_secs(30);
+mod support;
 
-/// A copy of the example project whose trace records 50 samples, so a trace completes quickly.
-fn example_copy() -> tempfile::TempDir {
-    let dir = tempfile::tempdir().unwrap();
-    copy_dir(&assets::example_project_dir(), dir.path());
-    let trace = dir
-        .path()
-        .join("application/Diagnostics/TRC_Conveyor.trace.toml");
-    let text = std::fs::read_to_string(&trace).unwrap();
-    std::fs::write(
-        &trace,
-        text.replace("record_count = 2000", "record_count = 50"),
-    )
-    .unwrap();
-    dir
-}
-
-fn copy_dir(from: &Path, to: &Path) {
-    std::fs::create_dir_all(to).unwrap();
-    for entry in std::fs::read_dir(from).unwrap() {
-        let entry = entry.unwrap();
-        let target = to.join(entry.file_name());
-        if entry.file_type().unwrap().is_dir() {
-            copy_dir(&entry.path(), &target);
-        } else {
-            std::fs::copy(entry.path(), target).unwrap();
-        }
-    }
-}
-
-fn studio(project: &Path) -> Harness<'static, StudioApp> {
-    let app = StudioApp::new(Settings::default(), Some(project.to_owned()));
-    let mut harness = Harness::builder()
-        .with_size([1400.0, 900.0])
-        .build_ui_state(|ui, app: &mut StudioApp| app.ui(ui), app);
-    harness.step();
-    harness
-}
-
-/// Steps the studio until `done` holds, failing with `what` after [`PATIENCE`].
-fn wait_until(harness: &mut Harness<'_, StudioApp>, what: &str, done: impl Fn(&StudioApp) -> bool) {
-    let start = Instant::now();
-    loop {
-        harness.step();
-        if done(harness.state()) {
-            return;
-        }
-        assert!(
-            start.elapsed() < PATIENCE,
-            "waited {PATIENCE:?} for {what}; status: {:?}, phase: {:?}",
-            harness.state().status(),
-            harness.state().online().phase()
-        );
-        std::thread::sleep(Duration::from_millis(20));
-    }
-}
-
-fn value(app: &StudioApp, path: &str) -> Option<(String, bool)> {
-    app.online()
-        .value(path)
-        .map(|value| (value.text.clone(), value.forced))
-}
-
-/// Brings the tab labelled `label` forward.
-fn show_tab(harness: &mut Harness<'_, StudioApp>, label: &str) {
-    harness.get_by_label(label).click();
-    harness.step();
-    harness.step();
-}
-
-/// Adds `path` to the shown watch list through the "Add variable" field.
-fn watch(harness: &mut Harness<'_, StudioApp>, path: &str) {
-    harness.get_by_label("Add variable").click();
-    harness.step();
-    harness.get_by_label("Add variable").type_text(path);
-    harness.step();
-    harness.key_press(Key::Enter);
-    harness.step();
-    harness.step();
-}
-
-/// Types a prepared value for `path` and commits it by pressing Enter.
-fn prepare(harness: &mut Harness<'_, StudioApp>, path: &str, text: &str) {
-    let label = format!("Prepared value of {path}");
-    harness.get_by_label(&label).click();
-    harness.step();
-    harness.key_press_modifiers(Modifiers::COMMAND, Key::A);
-    harness.get_by_label(&label).type_text(text);
-    harness.step();
-    harness.key_press(Key::Enter);
-    harness.step();
-    harness.step();
-}
+use support::{example_copy, prepare, show_tab, studio, value, wait_until, watch};
 
 #[test]
 fn build_login_run_watch_force_release_write_trace_and_stop_in_the_simulator() {
-    let project = example_copy();
+    // The project's trace records 50 samples here, so it completes quickly.
+    let project = example_copy(|dir| {
+        support::replace_in(
+            dir,
+            "application/Diagnostics/TRC_Conveyor.trace.toml",
+            "record_count = 2000",
+            "record_count = 50",
+        );
+    });
     let mut harness = studio(project.path());
 
     // F11 builds in the background; the messages panel then counts no error.

@@ -252,6 +252,7 @@ impl Studio {
                 });
             });
             ui.separator();
+            let online = self.online.can_write();
             if ui
                 .add_enabled(online, egui::Button::new(Text::WriteValues.get(language)))
                 .on_hover_text("Ctrl+F7")

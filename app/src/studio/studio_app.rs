@@ -88,6 +88,8 @@ pub(crate) struct Studio {
     pub password: String,
     pub watch: WatchPaneState,
     pub trace: TracePaneState,
+    /// Whether the online state was given a way to wake the UI.
+    waker_set: bool,
 }
 
 impl StudioApp {
@@ -124,6 +126,7 @@ impl StudioApp {
                 password: String::new(),
                 watch: WatchPaneState::default(),
                 trace: TracePaneState::default(),
+                waker_set: false,
             },
         };
         if let Some(dir) = project_dir {
@@ -391,8 +394,19 @@ impl Studio {
                 None => ctx.request_repaint_after(std::time::Duration::from_millis(50)),
             }
         }
+        if !self.waker_set {
+            let wake = ctx.clone();
+            self.online
+                .set_waker(std::sync::Arc::new(move || wake.request_repaint()));
+            self.waker_set = true;
+        }
+        let devices = self
+            .session
+            .as_ref()
+            .map(|session| session.project.modbus_devices.as_slice())
+            .unwrap_or_default();
         self.online
-            .set_watch(self.watch.watched_paths(self.session.as_ref()));
+            .set_watch(self.watch.watched_paths(self.session.as_ref()), devices);
         self.online.poll(Instant::now());
         for message in self.online.take_messages() {
             self.status = Some(StatusMessage {
@@ -405,7 +419,7 @@ impl Studio {
             let excess = self.online_messages.len() - 200;
             self.online_messages.drain(..excess);
         }
-        if self.online.is_logged_in() {
+        if self.online.is_logged_in() || self.online.can_write() {
             // Values, statistics and trace states arrive by polling; redraw to show them.
             ctx.request_repaint_after(std::time::Duration::from_millis(100));
         }
@@ -541,7 +555,7 @@ impl Studio {
                     Err(refused) => refused,
                 };
             }
-            Command::ReleaseAllForces => self.online.unforce(Vec::new()),
+            Command::ReleaseAllForces => self.online.unforce_all(),
             Command::Edit(label, edits) => self.apply(&label, edits),
             Command::Open(_) | Command::ResetLayout | Command::OpenDialog => {}
         }

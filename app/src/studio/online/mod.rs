@@ -5,12 +5,15 @@
 //! calls [`Online::poll`] once per frame to take in what arrived, and never waits.
 
 mod background;
+mod devices;
 mod link;
 mod simulator;
 mod trace_run;
 
 use std::collections::{HashMap, HashSet};
 use std::sync::Arc;
+
+use project_model::ModbusDevice;
 use std::time::{Duration, Instant};
 
 use online::session::{Command, Event, SessionOptions};
@@ -27,6 +30,9 @@ pub use trace_run::{TracePhase, TraceRun};
 const STATUS_INTERVAL: Duration = Duration::from_millis(500);
 /// How often watched values are read.
 const POLL_INTERVAL: Duration = Duration::from_millis(100);
+
+/// Wakes the UI when something arrived from the network.
+pub type Waker = Arc<dyn Fn() + Send + Sync>;
 
 /// A typed value the studio refused to send: the variable's path and the reason.
 pub type Refusal = (String, String);
@@ -97,10 +103,24 @@ pub struct LiveValue {
 pub struct ForcedValue {
     /// The variable's path, or where it is when no watched path names it.
     pub name: String,
-    /// Its path if known (needed to release it by name).
-    pub place: Place,
+    /// Where the force is held, to release it.
+    pub source: ForceSource,
     /// The forced value as text.
     pub value: String,
+}
+
+/// Where a force is held.
+#[derive(Clone, Debug, PartialEq)]
+pub enum ForceSource {
+    /// On the controller, at this place.
+    Target(Place),
+    /// By the studio on a Modbus device's channel.
+    Device {
+        /// The device's name.
+        device: String,
+        /// The channel's index.
+        channel: usize,
+    },
 }
 
 /// A message for the messages panel and the status bar.
@@ -134,6 +154,10 @@ pub struct Online {
     trace: TraceRun,
     messages: Vec<OnlineMessage>,
     last_status: Option<Instant>,
+    devices: devices::DeviceLinks,
+    /// The project's Modbus devices as of the last [`Online::set_watch`].
+    project_devices: Vec<ModbusDevice>,
+    waker: Option<Waker>,
 }
 
 impl Default for Online {
@@ -165,6 +189,9 @@ impl Online {
             trace: TraceRun::default(),
             messages: Vec::new(),
             last_status: None,
+            devices: devices::DeviceLinks::default(),
+            project_devices: Vec::new(),
+            waker: None,
         }
     }
 
@@ -229,14 +256,8 @@ impl Online {
         wake: impl Fn() + Send + 'static,
     ) {
         self.logout();
-        if self.background.is_none() {
-            match Background::start() {
-                Ok(background) => self.background = Some(background),
-                Err(error) => {
-                    self.error(format!("the online thread did not start: {error}"));
-                    return;
-                }
-            }
+        if !self.start_background() {
+            return;
         }
         let Some(background) = &self.background else {
             return;
@@ -275,6 +296,30 @@ impl Online {
             wake,
         ));
         self.phase = Phase::Connecting;
+    }
+
+    /// Starts the network thread if it is not running; `false` (with a message) when it cannot.
+    fn start_background(&mut self) -> bool {
+        if self.background.is_none() {
+            match Background::start() {
+                Ok(background) => self.background = Some(background),
+                Err(error) => {
+                    self.error(format!("the online thread did not start: {error}"));
+                    return false;
+                }
+            }
+        }
+        true
+    }
+
+    /// Sets what wakes the UI when something arrives from the network.
+    pub fn set_waker(&mut self, waker: Waker) {
+        self.waker = Some(waker);
+    }
+
+    /// Whether values can be written or forced now: logged in, or polling a Modbus device.
+    pub fn can_write(&self) -> bool {
+        self.is_online() || !self.devices.is_empty()
     }
 
     /// Ends the session; the target keeps running as it is.
@@ -333,14 +378,50 @@ impl Online {
     }
 
     /// Sets the variables whose values are read every poll; unknown ones are resolved first.
-    pub fn set_watch(&mut self, paths: Vec<String>) {
-        self.wanted = paths;
+    pub fn set_watch(&mut self, paths: Vec<String>, devices: &[ModbusDevice]) {
+        if devices != self.project_devices.as_slice() {
+            self.project_devices = devices.to_vec();
+        }
+        let on_device = |path: &String| devices::binding_of(devices, path).is_some();
+        // Devices are polled only while one of their variables is watched.
+        let needs_devices = paths.iter().any(on_device) || !self.devices.is_empty();
+        if needs_devices
+            && self.start_background()
+            && let (Some(background), Some(waker)) = (&self.background, &self.waker)
+        {
+            self.devices
+                .keep(background.handle(), devices, &paths, waker);
+        }
+        self.wanted = paths.into_iter().filter(|path| !on_device(path)).collect();
         self.refresh_watch();
     }
 
-    /// The last value of a watched variable.
+    /// The last value of a watched variable, from its Modbus device when it is bound to one.
     pub fn value(&self, path: &str) -> Option<&LiveValue> {
-        self.values.get(path)
+        match self.devices.value(&self.project_devices, path) {
+            Some(Ok(value)) => Some(value),
+            Some(Err(_)) => None,
+            None => self.values.get(path),
+        }
+    }
+
+    /// Why a watched variable has no value: unknown on the target, or its device unreachable.
+    pub fn problem(&self, path: &str) -> Option<String> {
+        if devices::binding_of(&self.project_devices, path).is_some() {
+            return match self.devices.value(&self.project_devices, path) {
+                Some(Err(problem)) => Some(problem),
+                _ => None,
+            };
+        }
+        match self.resolved.get(path) {
+            Some(Err(reason)) => Some(reason.clone()),
+            _ => None,
+        }
+    }
+
+    /// Whether a path is bound to a Modbus device of the project.
+    pub fn is_device_bound(&self, path: &str) -> bool {
+        devices::binding_of(&self.project_devices, path).is_some()
     }
 
     /// What the target said about a path: its place and type, or why it has none.
@@ -354,6 +435,19 @@ impl Online {
         let mut encoded = Vec::new();
         let mut refused = Vec::new();
         for (path, text) in values {
+            if let Some((device, index)) = devices::binding_of(&self.project_devices, path) {
+                let channels = crate::modbus_devices::channels_of(device);
+                if let Some(channel) = channels.get(index)
+                    && let Err(reason) =
+                        crate::literal_value::parse(text.trim(), channel.ty as u8, 0)
+                {
+                    refused.push((path.clone(), reason));
+                }
+                continue;
+            }
+            if !self.is_online() {
+                continue;
+            }
             match self.resolved.get(path) {
                 Some(Ok(resolved)) => {
                     match crate::literal_value::parse(
@@ -386,27 +480,101 @@ impl Online {
 
     /// Writes values once (Ctrl+F7). Refused values are returned with the reason.
     pub fn write(&mut self, values: &[(String, String)]) -> Result<(), Vec<Refusal>> {
-        let encoded = self.encode(values)?;
-        if !encoded.is_empty() {
-            self.command(Command::Write(encoded));
-        }
-        Ok(())
+        self.send(values, false)
     }
 
     /// Forces values (F7). Refused values are returned with the reason.
     pub fn force(&mut self, values: &[(String, String)]) -> Result<(), Vec<Refusal>> {
-        let encoded = self.encode(values)?;
-        if !encoded.is_empty() {
-            self.command(Command::Force(encoded));
-            self.command(Command::Forces);
-        }
-        Ok(())
+        self.send(values, true)
     }
 
-    /// Releases the forces of these places (all when empty; Alt+F7 releases all).
-    pub fn unforce(&mut self, places: Vec<Place>) {
-        self.command(Command::Unforce(places));
-        self.command(Command::Forces);
+    /// Writes or forces `values`: those bound to Modbus devices on their devices, the others
+    /// on the controller. A value its type refuses stops everything (nothing is sent); values
+    /// for the controller while logged out are refused on their own, and the devices' values
+    /// still go out.
+    fn send(&mut self, values: &[(String, String)], force: bool) -> Result<(), Vec<Refusal>> {
+        let (on_devices, on_target): (Vec<_>, Vec<_>) = values
+            .iter()
+            .cloned()
+            .partition(|(path, _)| self.is_device_bound(path));
+        let encoded = self.encode(values)?;
+        let mut refused = Vec::new();
+        if let Err(mut more) = self.send_to_devices(&on_devices, force) {
+            refused.append(&mut more);
+        }
+        if !on_target.is_empty() {
+            if self.is_online() {
+                self.command(if force {
+                    Command::Force(encoded)
+                } else {
+                    Command::Write(encoded)
+                });
+                if force {
+                    self.command(Command::Forces);
+                }
+            } else {
+                refused.extend(
+                    on_target
+                        .into_iter()
+                        .map(|(path, _)| (path, "log in to write it (Alt+F8)".to_owned())),
+                );
+            }
+        }
+        if refused.is_empty() {
+            Ok(())
+        } else {
+            Err(refused)
+        }
+    }
+
+    /// Writes or forces the device-bound values among `values` (already type-checked).
+    fn send_to_devices(
+        &mut self,
+        values: &[(String, String)],
+        force: bool,
+    ) -> Result<(), Vec<Refusal>> {
+        let mut refused = Vec::new();
+        for (path, text) in values {
+            let Some((device, index)) = devices::binding_of(&self.project_devices, path) else {
+                continue;
+            };
+            let channels = crate::modbus_devices::channels_of(device);
+            let Some(channel) = channels.get(index) else {
+                continue;
+            };
+            let sent = crate::literal_value::parse(text.trim(), channel.ty as u8, 0)
+                .and_then(|bytes| self.devices.send(&self.project_devices, path, bytes, force));
+            if let Err(reason) = sent {
+                refused.push((path.clone(), reason));
+            }
+        }
+        if refused.is_empty() {
+            Ok(())
+        } else {
+            Err(refused)
+        }
+    }
+
+    /// Releases every force, on the controller and on the devices (Alt+F7).
+    pub fn unforce_all(&mut self) {
+        self.devices.unforce(None);
+        if self.link.is_some() {
+            self.command(Command::Unforce(Vec::new()));
+            self.command(Command::Forces);
+        }
+    }
+
+    /// Releases one force.
+    pub fn unforce(&mut self, source: &ForceSource) {
+        match source {
+            ForceSource::Target(place) => {
+                self.command(Command::Unforce(vec![*place]));
+                self.command(Command::Forces);
+            }
+            ForceSource::Device { device, channel } => {
+                self.devices.unforce(Some((device, *channel)));
+            }
+        }
     }
 
     /// The place of a resolved path.
@@ -419,6 +587,14 @@ impl Online {
 
     /// Every forced variable, named by its path when a resolved path has its place.
     pub fn forced_values(&self) -> Vec<ForcedValue> {
+        let on_devices = self.devices.forces().into_iter().map(|force| ForcedValue {
+            name: force.path,
+            source: ForceSource::Device {
+                device: force.device,
+                channel: force.channel,
+            },
+            value: force.value,
+        });
         self.forces
             .iter()
             .map(|(place, bytes)| {
@@ -432,16 +608,17 @@ impl Online {
                 match named {
                     Some((path, resolved)) => ForcedValue {
                         name: path.clone(),
-                        place: *place,
+                        source: ForceSource::Target(*place),
                         value: show(resolved, bytes),
                     },
                     None => ForcedValue {
                         name: describe_place(place),
-                        place: *place,
+                        source: ForceSource::Target(*place),
                         value: format!("16#{}", crate::value_text::hex(bytes)),
                     },
                 }
             })
+            .chain(on_devices)
             .collect()
     }
 
@@ -467,6 +644,7 @@ impl Online {
     /// Takes in the events that arrived and asks for fresh statistics when due. Call once per
     /// frame.
     pub fn poll(&mut self, now: Instant) {
+        self.devices.poll();
         let events = match &self.link {
             Some(link) => link.drain(),
             None => return,

@@ -7,7 +7,7 @@ use crate::studio::studio_app::{Command, Studio};
 
 pub(crate) fn forces_ui(studio: &mut Studio, ui: &mut Ui) {
     let language = studio.settings.language;
-    if !studio.online.is_online() {
+    if !studio.online.can_write() {
         ui.label(RichText::new(Text::NotOnline.get(language)).weak());
         return;
     }
@@ -55,13 +55,13 @@ pub(crate) fn forces_ui(studio: &mut Studio, ui: &mut Ui) {
                         let button =
                             button.on_hover_text(format!("{} {name}", Text::Release.get(language)));
                         if button.clicked() {
-                            release = Some(value.place);
+                            release = Some(value.source.clone());
                         }
                         ui.end_row();
                     }
                 });
         });
     if let Some(place) = release {
-        studio.online.unforce(vec![place]);
+        studio.online.unforce(&place);
     }
 }

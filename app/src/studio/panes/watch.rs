@@ -118,7 +118,7 @@ pub(crate) fn watch_ui(studio: &mut Studio, ui: &mut Ui) {
         }
     });
     ui.separator();
-    let online = studio.online.is_online();
+    let online = studio.online.can_write();
     let mut edits: Vec<(String, Vec<Edit>)> = Vec::new();
     egui::ScrollArea::both()
         .id_salt("watch")
