@@ -57,6 +57,9 @@ pub enum Edit {
     },
     /// Several edits applied in order as one; undone in reverse order.
     Group(Vec<Edit>),
+    /// Replaces the whole project (recovering unsaved changes after a crash, for instance);
+    /// undone by putting the previous project back.
+    ReplaceProject(Box<Project>),
 }
 
 /// A change to the application tree. Folders are named by their path of folder names from the
@@ -236,6 +239,9 @@ impl Edit {
             Self::Axes(edit) => Ok(Self::Axes(edit.apply(&mut project.axes)?)),
             Self::Tree(edit) => Ok(Self::Tree(apply_tree_edit(edit, &mut project.application)?)),
             Self::ReplaceObject(object) => replace_object(object, &mut project.application),
+            Self::ReplaceProject(replacement) => Ok(Self::ReplaceProject(Box::new(
+                std::mem::replace(project, *replacement),
+            ))),
             Self::Variables { owner, edit } => {
                 let list = variables_mut(&mut project.application, &owner)?;
                 let edit = edit.apply(list)?;

@@ -158,6 +158,10 @@ pub enum Text {
     Complete,
     Uploading,
     NoBuildYet,
+    RecoverTitle,
+    RecoverQuestion,
+    Recover,
+    Discard,
 }
 
 impl Text {
@@ -307,6 +311,13 @@ impl Text {
             Self::Recording => ("recording", "正在记录"),
             Self::Complete => ("complete", "已完成"),
             Self::Uploading => ("uploading", "正在上传"),
+            Self::RecoverTitle => ("Unsaved changes found", "发现未保存的更改"),
+            Self::RecoverQuestion => (
+                "The studio closed without saving changes to this project. Recover them?",
+                "上次关闭时此项目有未保存的更改。是否恢复？",
+            ),
+            Self::Recover => ("Recover", "恢复"),
+            Self::Discard => ("Discard", "丢弃"),
             Self::NoBuildYet => (
                 "Not built yet: F11 builds the project",
                 "尚未编译：按 F11 编译项目",

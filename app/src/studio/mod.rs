@@ -14,6 +14,7 @@ mod pane;
 mod pane_behavior;
 mod panes;
 mod property_view;
+mod recovery;
 mod session;
 mod settings;
 mod studio_app;
@@ -27,9 +28,10 @@ pub use dock::Dock;
 pub use i18n::{Language, Text};
 pub use online::{LiveValue, Online, Phase, TargetKind, TracePhase};
 pub use pane::Pane;
+pub use recovery::{Recovered, Recovery};
 pub use session::{SaveAsError, Session};
 pub use settings::{Settings, Theme};
-pub use studio_app::{StatusMessage, StudioApp};
+pub use studio_app::{StatusMessage, StudioApp, StudioOptions};
 pub use tree_node::TreeNode;
 
 /// Opens the studio window on `project` (the example project when `None`) and returns when the
@@ -55,11 +57,12 @@ pub fn run(project: Option<PathBuf>) -> anyhow::Result<()> {
             let layout = creation
                 .storage
                 .and_then(|storage| eframe::get_value(storage, dock::LAYOUT_KEY));
-            Ok(Box::new(StudioApp::with_layout(
+            Ok(Box::new(StudioApp::with_options(StudioOptions {
                 settings,
                 layout,
-                Some(project_dir),
-            )))
+                project: Some(project_dir),
+                recovery: Recovery::default_location(),
+            })))
         }),
     )
     .map_err(|error| anyhow::anyhow!("the studio window could not be opened: {error}"))

@@ -14,6 +14,7 @@ use super::i18n::Text;
 use super::online::{Online, TargetKind};
 use super::pane_behavior::PaneBehavior;
 use super::panes::{TracePaneState, WatchPaneState};
+use super::recovery::{Recovered, Recovery};
 use super::session::Session;
 use super::settings::{SETTINGS_KEY, Settings};
 use super::tree_node::TreeNode;
@@ -90,22 +91,61 @@ pub(crate) struct Studio {
     pub trace: TracePaneState,
     /// Whether the online state was given a way to wake the UI.
     waker_set: bool,
+    /// Where copies of unsaved changes go; `None` keeps none.
+    recovery: Option<Recovery>,
+    /// Unsaved changes from an earlier session, offered when the project opened.
+    pub recovery_offer: Option<Recovered>,
+    recovery_state: RecoveryState,
 }
+
+/// How the studio starts.
+pub struct StudioOptions {
+    /// The settings.
+    pub settings: Settings,
+    /// The saved layout, if any.
+    pub layout: Option<Dock>,
+    /// The project folder to open.
+    pub project: Option<PathBuf>,
+    /// Where copies of unsaved changes are kept; `None` keeps none.
+    pub recovery: Option<Recovery>,
+}
+
+/// When the copy of unsaved changes was last written.
+#[derive(Default)]
+struct RecoveryState {
+    /// The revision and time of the last change seen.
+    last_change: Option<(u64, Instant)>,
+    /// The revision last copied.
+    written: Option<u64>,
+    /// Whether a copy exists that a save or an undo to the saved state makes stale.
+    exists: bool,
+}
+
+/// How long the project must rest after a change before a copy is written.
+const RECOVERY_DELAY: std::time::Duration = std::time::Duration::from_secs(2);
 
 impl StudioApp {
     /// Creates the studio with the default layout and opens `project_dir` if given. Fonts and
     /// theme are installed on the first frame, so the studio runs the same in a window and in a
     /// test harness.
     pub fn new(settings: Settings, project_dir: Option<PathBuf>) -> Self {
-        Self::with_layout(settings, None, project_dir)
+        Self::with_options(StudioOptions {
+            settings,
+            layout: None,
+            project: project_dir,
+            recovery: None,
+        })
     }
 
-    /// Creates the studio with a saved layout (checked, see [`Dock::restored`]).
-    pub fn with_layout(
-        settings: Settings,
-        layout: Option<Dock>,
-        project_dir: Option<PathBuf>,
-    ) -> Self {
+    /// Creates the studio with a saved layout (checked, see [`Dock::restored`]) and a recovery
+    /// folder for unsaved changes.
+    pub fn with_options(options: StudioOptions) -> Self {
+        let StudioOptions {
+            settings,
+            layout,
+            project: project_dir,
+            recovery,
+        } = options;
         let mut app = Self {
             dock: Dock::restored(layout),
             studio: Studio {
@@ -127,6 +167,9 @@ impl StudioApp {
                 watch: WatchPaneState::default(),
                 trace: TracePaneState::default(),
                 waker_set: false,
+                recovery,
+                recovery_offer: None,
+                recovery_state: RecoveryState::default(),
             },
         };
         if let Some(dir) = project_dir {
@@ -149,6 +192,12 @@ impl StudioApp {
                 studio.last_build = None;
                 studio.build = None;
                 close_stale_documents(&mut self.dock, &session.project);
+                studio.recovery_state = RecoveryState::default();
+                studio.recovery_offer = studio
+                    .recovery
+                    .as_ref()
+                    .and_then(|recovery| recovery.find(dir))
+                    .filter(|found| found.project != session.project);
                 studio.status = Some(StatusMessage {
                     text: format!("{} {}", Text::Opened.get(language), dir.display()),
                     is_error: false,
@@ -246,6 +295,7 @@ impl StudioApp {
         egui::Panel::top("tool_bar").show(ui, |ui| studio.tool_bar_ui(ui));
         egui::Panel::bottom("status_bar").show(ui, |ui| studio.status_bar_ui(ui));
         studio.login_dialog_ui(ui.ctx());
+        studio.recovery_dialog_ui(ui.ctx());
         egui::CentralPanel::default_margins().show(ui, |ui| {
             let mut behavior = PaneBehavior { studio };
             self.dock.tree.ui(&mut behavior, ui);
@@ -340,7 +390,14 @@ impl Studio {
         let Some(session) = &mut self.session else {
             return;
         };
-        self.status = Some(match session.save() {
+        let saved = session.save();
+        if saved.is_ok()
+            && let Some(recovery) = &self.recovery
+        {
+            recovery.clear(&session.dir);
+            self.recovery_state.exists = false;
+        }
+        self.status = Some(match saved {
             Ok(report) if report.written.is_empty() && report.removed.is_empty() => StatusMessage {
                 text: Text::NothingToSave.get(language).to_owned(),
                 is_error: false,
@@ -384,7 +441,95 @@ impl Studio {
 
     /// Collects what background work produced since the last frame: the build's outcome and
     /// online events. Keeps the UI drawing while something is under way.
+    /// Keeps the copy of unsaved changes current: written once the project rested
+    /// [`RECOVERY_DELAY`] after a change, removed once the project equals its files again.
+    fn keep_recovery_copy(&mut self, ctx: &egui::Context) {
+        let (Some(recovery), Some(session)) = (&self.recovery, &self.session) else {
+            return;
+        };
+        let revision = session.history.revision();
+        let state = &mut self.recovery_state;
+        if !session.history.is_dirty() {
+            if state.exists {
+                recovery.clear(&session.dir);
+                state.exists = false;
+            }
+            state.written = Some(revision);
+            return;
+        }
+        if state.written == Some(revision) {
+            return;
+        }
+        let now = Instant::now();
+        match state.last_change {
+            Some((seen, at)) if seen == revision => {
+                if now.duration_since(at) >= RECOVERY_DELAY {
+                    // The copy is written on a thread so a large project never stalls a frame.
+                    let recovery = recovery.clone();
+                    let dir = session.dir.clone();
+                    let project = session.project.clone();
+                    let _ = std::thread::Builder::new()
+                        .name("rivet-recovery".into())
+                        .spawn(move || recovery.write(&dir, &project));
+                    state.written = Some(revision);
+                    state.exists = true;
+                } else {
+                    ctx.request_repaint_after(RECOVERY_DELAY);
+                }
+            }
+            _ => {
+                state.last_change = Some((revision, now));
+                ctx.request_repaint_after(RECOVERY_DELAY);
+            }
+        }
+    }
+
+    /// Offers the unsaved changes of an earlier session, if any were found.
+    pub(crate) fn recovery_dialog_ui(&mut self, ctx: &egui::Context) {
+        let Some(offer) = &self.recovery_offer else {
+            return;
+        };
+        let language = self.settings.language;
+        let age = offer
+            .written
+            .elapsed()
+            .map(|age| format!("{} min", age.as_secs() / 60))
+            .unwrap_or_default();
+        let mut choice = None;
+        egui::Modal::new(egui::Id::unique("recovery_dialog")).show(ctx, |ui| {
+            ui.set_width(460.0);
+            ui.heading(Text::RecoverTitle.get(language));
+            ui.label(format!("{} ({age})", Text::RecoverQuestion.get(language)));
+            ui.horizontal(|ui| {
+                if ui.button(Text::Recover.get(language)).clicked() {
+                    choice = Some(true);
+                }
+                if ui.button(Text::Discard.get(language)).clicked() {
+                    choice = Some(false);
+                }
+            });
+        });
+        match choice {
+            Some(true) => {
+                if let Some(offer) = self.recovery_offer.take() {
+                    self.apply(
+                        "Recover unsaved changes",
+                        vec![project_model::Edit::ReplaceProject(Box::new(offer.project))],
+                    );
+                }
+            }
+            Some(false) => {
+                self.recovery_offer = None;
+                if let (Some(recovery), Some(session)) = (&self.recovery, &self.session) {
+                    recovery.clear(&session.dir);
+                }
+            }
+            None => {}
+        }
+    }
+
     fn take_in_background_results(&mut self, ctx: &egui::Context) {
+        self.keep_recovery_copy(ctx);
         if let Some(job) = &self.build {
             match job.poll() {
                 Some(outcome) => {
