@@ -328,7 +328,13 @@ impl Studio {
             if let Some(session) = &self.session {
                 ui.separator();
                 let dirty = if session.history.is_dirty() { " *" } else { "" };
-                ui.label(RichText::new(format!("{}{dirty}", session.dir.display())).weak());
+                // The folder's name is enough to tell projects apart; the full path is on hover.
+                let name = session.dir.file_name().map_or_else(
+                    || session.dir.display().to_string(),
+                    |n| n.to_string_lossy().into_owned(),
+                );
+                ui.label(RichText::new(format!("{name}{dirty}")).weak())
+                    .on_hover_text(session.dir.display().to_string());
             }
             if let Some(status) = &self.status {
                 ui.separator();

@@ -199,7 +199,7 @@ impl StudioApp {
                     .and_then(|recovery| recovery.find(dir))
                     .filter(|found| found.project != session.project);
                 studio.status = Some(StatusMessage {
-                    text: format!("{} {}", Text::Opened.get(language), dir.display()),
+                    text: format!("{} {}", Text::Opened.get(language), session.title()),
                     is_error: false,
                 });
                 studio.session = Some(session);

@@ -1,0 +1,95 @@
+//! A controller that disappears while the studio is logged in: the studio says so, keeps every
+//! edit, and connects again when the controller is back.
+
+#![allow(clippy::unwrap_used, clippy::expect_used)] // Test helpers may panic: a panic is a failed test.
+
+mod support;
+
+use std::sync::{Arc, Mutex};
+
+use app::studio::{Phase, TargetKind};
+use egui_kittest::kittest::Queryable as _;
+use runtime::areas::LocatedAreas;
+use runtime::modbus::{MapSlot, ModbusMap, ServerOptions, serve};
+use runtime::online::OnlineServices;
+use runtime::scheduler::{Scheduler, SchedulerOptions};
+use support::{example_copy, replace_in, show_tab, studio, wait_until, watch};
+use tokio::sync::oneshot;
+
+/// A soft PLC on `port` (0: any) in its own thread; dropping the sender stops it. Returns the
+/// port it listens on.
+fn controller(port: u16) -> (u16, oneshot::Sender<()>) {
+    let listener = std::net::TcpListener::bind(("127.0.0.1", port)).unwrap();
+    listener.set_nonblocking(true).unwrap();
+    let port = listener.local_addr().unwrap().port();
+    let (stop, stopped) = oneshot::channel::<()>();
+    std::thread::spawn(move || {
+        let runtime = tokio::runtime::Builder::new_current_thread()
+            .enable_all()
+            .build()
+            .unwrap();
+        runtime.block_on(async move {
+            let areas = Arc::new(Mutex::new(LocatedAreas::default()));
+            let scheduler = Arc::new(
+                Scheduler::spawn(Arc::clone(&areas), SchedulerOptions::default()).unwrap(),
+            );
+            let map = MapSlot::new(ModbusMap::default());
+            let services =
+                Arc::new(OnlineServices::new(scheduler, None).with_map(Arc::clone(&map)));
+            let options = ServerOptions {
+                custom: Some(services.handler()),
+                closed: Some(services.closed_handler()),
+                ..ServerOptions::default()
+            };
+            let listener = tokio::net::TcpListener::from_std(listener).unwrap();
+            tokio::select! {
+                _ = serve(listener, areas, map, options) => {}
+                _ = stopped => {}
+            }
+        });
+        // Dropping the runtime closes every connection, as a controller that lost power.
+    });
+    (port, stop)
+}
+
+#[test]
+fn a_lost_controller_is_reported_edits_are_kept_and_the_studio_reconnects() {
+    let (port, stop) = controller(0);
+    let project = example_copy(|dir| {
+        replace_in(dir, "rivet.toml", "port = 5020", &format!("port = {port}"));
+    });
+    let mut harness = studio(project.path());
+    harness.state_mut().set_target(TargetKind::Controller);
+    harness.key_press_modifiers(egui::Modifiers::ALT, egui::Key::F8);
+    wait_until(&mut harness, "the download question", |app| {
+        matches!(app.online().phase(), Phase::ConfirmDownload { .. })
+    });
+    harness.step();
+    harness.get_by_label("Download").click();
+    wait_until(&mut harness, "the download", |app| {
+        *app.online().phase() == Phase::Online
+    });
+
+    drop(stop);
+    wait_until(&mut harness, "the lost connection", |app| {
+        matches!(app.online().phase(), Phase::Lost(_))
+    });
+    let status = harness.state().status().unwrap().clone();
+    assert!(
+        status.is_error && status.text.contains("not reachable"),
+        "{status:?}"
+    );
+
+    // Editing goes on while the controller is away.
+    show_tab(&mut harness, "Watch");
+    watch(&mut harness, "Main.rtrigPackage.Q");
+    assert!(harness.state().session().unwrap().history.is_dirty());
+
+    // The controller comes back (without its program, as after a power cycle): the studio
+    // connects again by itself and offers the download.
+    let (_same_port, _keep) = controller(port);
+    wait_until(&mut harness, "the reconnection", |app| {
+        matches!(app.online().phase(), Phase::ConfirmDownload { .. })
+    });
+    assert!(harness.state().session().unwrap().history.is_dirty());
+}
