@@ -11,6 +11,9 @@ pub struct Transaction {
     pub forward: Vec<Edit>,
     /// The edits that undo them, in the order they must be applied.
     pub inverse: Vec<Edit>,
+    /// Gestures with the same key that follow each other join this step (typing a word is one
+    /// undo step, not one per character).
+    pub merge_key: Option<String>,
 }
 
 /// The undo and redo stacks of an open project.
@@ -58,9 +61,56 @@ impl History {
             label: label.into(),
             forward: edits,
             inverse,
+            merge_key: None,
         });
         self.revision += 1;
         Ok(())
+    }
+
+    /// Applies the edits of a gesture that continues the previous one when both carry the same
+    /// `merge_key` (consecutive characters typed in one body): they join the last undo step.
+    /// Otherwise, or when the last step is the saved state or was undone, it is a step of its
+    /// own. If any edit fails the project is unchanged.
+    pub fn apply_merging(
+        &mut self,
+        project: &mut Project,
+        label: impl Into<String>,
+        edits: Vec<Edit>,
+        merge_key: &str,
+    ) -> Result<(), EditError> {
+        let at_save_point = self.save_point == Some(self.undo.len());
+        let joins = self.redo.is_empty()
+            && !at_save_point
+            && self
+                .undo
+                .last()
+                .is_some_and(|last| last.merge_key.as_deref() == Some(merge_key));
+        if !joins {
+            self.apply(project, label, edits)?;
+            if let Some(last) = self.undo.last_mut() {
+                last.merge_key = Some(merge_key.to_owned());
+            }
+            return Ok(());
+        }
+        let mut inverse = match Edit::Group(edits.clone()).apply(project)? {
+            Edit::Group(inverse) => inverse,
+            other => vec![other],
+        };
+        if let Some(last) = self.undo.last_mut() {
+            last.forward.extend(edits);
+            // The newest change is undone first.
+            inverse.append(&mut last.inverse);
+            last.inverse = inverse;
+        }
+        self.revision += 1;
+        Ok(())
+    }
+
+    /// Ends merging: the next gesture starts its own undo step whatever its key.
+    pub fn break_merging(&mut self) {
+        if let Some(last) = self.undo.last_mut() {
+            last.merge_key = None;
+        }
     }
 
     /// Undoes the last step and returns its label, or `None` when there is nothing to undo.
@@ -122,6 +172,67 @@ impl History {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn typing_merges_into_one_step_until_the_key_changes_or_a_save() {
+        let mut project = Project::default();
+        project
+            .application
+            .children
+            .push(crate::Node::Object(crate::Object::Pou(crate::Pou {
+                name: "Main".into(),
+                kind: crate::PouKind::Program,
+                return_type: None,
+                extends: None,
+                implements: Vec::new(),
+                comment: String::new(),
+                variables: Vec::new(),
+                body: crate::Body::st(""),
+                methods: Vec::new(),
+                properties: Vec::new(),
+                actions: Vec::new(),
+            })));
+        let typed = |at: usize, text: &str| {
+            vec![Edit::ReplaceText {
+                target: crate::TextTarget::Pou("Main".into()),
+                range: at..at,
+                text: text.into(),
+            }]
+        };
+        let body = |project: &Project| match project.application.object("Main") {
+            Some(crate::Object::Pou(pou)) => pou.body.st_text().unwrap_or_default().to_owned(),
+            _ => String::new(),
+        };
+        let mut history = History::new();
+        for (at, c) in ["a", "b", "c"].iter().enumerate() {
+            history
+                .apply_merging(&mut project, "Typing", typed(at, c), "typing Main")
+                .unwrap_or_else(|e| panic!("{e}"));
+        }
+        assert_eq!(body(&project), "abc");
+        history.undo(&mut project).unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(body(&project), "");
+        history.redo(&mut project).unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(body(&project), "abc");
+        // After a save the next character starts a new step, so undo returns to the saved text.
+        history.mark_saved();
+        history
+            .apply_merging(&mut project, "Typing", typed(3, "d"), "typing Main")
+            .unwrap_or_else(|e| panic!("{e}"));
+        history.undo(&mut project).unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(body(&project), "abc");
+        assert!(!history.is_dirty());
+        // A different key starts a new step too.
+        history
+            .apply_merging(&mut project, "Typing", typed(3, "x"), "typing Main")
+            .unwrap_or_else(|e| panic!("{e}"));
+        history.break_merging();
+        history
+            .apply_merging(&mut project, "Typing", typed(4, "y"), "typing Main")
+            .unwrap_or_else(|e| panic!("{e}"));
+        history.undo(&mut project).unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(body(&project), "abcx");
+    }
 
     fn rename(name: &str) -> Vec<Edit> {
         vec![Edit::SetProjectInfo {
