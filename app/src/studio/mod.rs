@@ -1,6 +1,7 @@
 //! The studio window.
 
 mod cam_view;
+mod cycle_plot;
 mod device_tree;
 mod document_view;
 mod documents;
@@ -10,14 +11,21 @@ mod property_view;
 mod session;
 mod settings;
 mod studio_app;
+mod trace_plot;
 mod tree_node;
 
 use std::path::PathBuf;
 
+pub use cycle_plot::{CYCLE_HISTORY_POINTS, CycleFigures, CycleHistory, CyclePoint, cycle_plot_ui};
 pub use i18n::{Language, Text};
 pub use session::{SaveAsError, Session};
 pub use settings::{Settings, Theme};
 pub use studio_app::{StatusMessage, StudioApp};
+pub use trace_plot::{
+    CursorReading, CursorReadings, PngExportError, TraceData, TraceLayout, TracePlotOutput,
+    TracePlotView, TraceSample, TraceSeries, crop_to_png, format_reading, nearest_sample_time,
+    parse_color,
+};
 pub use tree_node::TreeNode;
 
 /// Opens the studio window on `project` (the example project when `None`) and returns when the
