@@ -232,7 +232,9 @@ impl TracePlotView {
         if reset {
             plot = plot.reset();
         }
-        let pixels_per_point = ui.ctx().pixels_per_point();
+        // The width of the whole area rather than of the plot's frame: the frames of stacked
+        // plots differ by their y-axis labels, and one width lets them share one decimation.
+        let width_px = f64::from(ui.available_width() * ui.ctx().pixels_per_point());
         let cursors = [self.cursor_a_ms, self.cursor_b_ms];
         let cache = &mut self.cache;
         let times_ref = &times;
@@ -243,7 +245,7 @@ impl TracePlotView {
                 data_fingerprint,
                 &plot_ui.plot_bounds(),
                 plot_ui.auto_bounds().x,
-                f64::from(plot_ui.transform().frame().width() * pixels_per_point),
+                width_px,
                 full_range,
             );
             let all = cache.series(data, times_ref, key);
@@ -284,8 +286,7 @@ impl TracePlotView {
         // Pan and zoom change the bounds after the closure ran; when the points drawn do not
         // cover the new view at pixel resolution, one more frame draws them.
         let new_bounds = response.transform.bounds();
-        let new_width_px = f64::from(response.transform.frame().width() * pixels_per_point);
-        if !covers(&response.inner, new_bounds, new_width_px, full_range) {
+        if !covers(&response.inner, new_bounds, width_px, full_range) {
             ui.ctx().request_repaint();
         }
         self.times_ms = times;
