@@ -294,7 +294,8 @@ impl TracePlotView {
 
     /// Sets cursor A on a click, cursor B on a Shift+click, on the nearest sample.
     fn place_cursor(&mut self, ui: &Ui, response: &PlotResponse<DecimationKey>, times: &[f64]) {
-        if !response.response.clicked() {
+        // A double click resets the view; its clicks should not move cursor A as well.
+        if !response.response.clicked() || response.response.double_clicked() {
             return;
         }
         let Some(pointer) = response.response.interact_pointer_pos() else {
