@@ -3,6 +3,7 @@
 mod build_job;
 mod cam_view;
 mod chrome;
+mod cycle_plot;
 mod device_tree;
 mod dock;
 mod document_view;
@@ -18,12 +19,14 @@ mod recovery;
 mod session;
 mod settings;
 mod studio_app;
+mod trace_plot;
 mod trace_view;
 mod tree_node;
 
 use std::path::PathBuf;
 
 pub use build_job::{BuildMessage, BuildOutcome};
+pub use cycle_plot::{CYCLE_HISTORY_POINTS, CycleFigures, CycleHistory, CyclePoint, cycle_plot_ui};
 pub use dock::Dock;
 pub use i18n::{Language, Text};
 pub use online::{LiveValue, Online, Phase, TargetKind, TracePhase};
@@ -32,6 +35,11 @@ pub use recovery::{Recovered, Recovery};
 pub use session::{SaveAsError, Session};
 pub use settings::{Settings, Theme};
 pub use studio_app::{StatusMessage, StudioApp, StudioOptions};
+pub use trace_plot::{
+    CursorReading, CursorReadings, PngExportError, TraceData, TraceLayout, TracePlotOutput,
+    TracePlotView, TraceSample, TraceSeries, crop_to_png, format_reading, nearest_sample_time,
+    parse_color,
+};
 pub use tree_node::TreeNode;
 
 /// Opens the studio window on `project` (the example project when `None`) and returns when the
