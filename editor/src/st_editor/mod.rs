@@ -1,0 +1,256 @@
+//! The editable Structured Text editor.
+//!
+//! The text lives in a line-indexed buffer; only the visible lines are laid out and painted,
+//! each line's galley is cached by its text and highlighting, and input is handled here rather
+//! than by an egui `TextEdit`, so a 20,000-line body stays fluid. The editor keeps no undo
+//! history: every change is reported to the app, which owns undo across all documents.
+
+mod buffer;
+mod completion;
+mod editing;
+mod find;
+mod folding;
+mod galleys;
+mod highlight;
+mod input;
+mod syntax;
+mod texts;
+mod types;
+mod view;
+
+use std::ops::Range;
+
+pub use buffer::TextBuffer;
+pub use highlight::Highlight;
+pub use texts::EditorTexts;
+pub use types::{
+    CompletionItem, CompletionKind, EditorDiagnostic, Gesture, InlineValue, KeywordCompletions,
+    LanguageServices, Severity, StEditorOutput, TextChange,
+};
+
+use completion::Completion;
+use find::FindBar;
+use folding::Folding;
+use galleys::GalleyCache;
+use syntax::Syntax;
+
+/// An editor for one Structured Text (a declaration part or a body).
+///
+/// The app keeps one per open text, shows it with [`StEditor::show`] every frame, applies the
+/// reported changes to its model, and calls [`StEditor::set_text`] when the model changes
+/// from elsewhere (undo, redo, the variable table, a reload).
+pub struct StEditor {
+    buffer: TextBuffer,
+    syntax: Syntax,
+    /// Whether the tree must be parsed again before it is used.
+    syntax_stale: bool,
+    /// Counts changes of the text, to know when cached results are stale.
+    revision: u64,
+    /// The end of the selection that does not move with Shift+movement.
+    anchor: usize,
+    /// The caret, the moving end of the selection.
+    caret: usize,
+    /// The column (in chars) that vertical movement tries to keep.
+    preferred_column: Option<usize>,
+    read_only: bool,
+    diagnostics: Vec<EditorDiagnostic>,
+    inline_values: Vec<InlineValue>,
+    folding: Folding,
+    find: FindBar,
+    completion: Option<Completion>,
+    galleys: GalleyCache,
+    texts: EditorTexts,
+    /// Set when the caret moved and the next frame must scroll it into view.
+    scroll_to_caret: bool,
+    /// Set by [`StEditor::request_focus`], honoured by the next `show`.
+    focus_requested: bool,
+    /// The number of the current typing run (see [`Gesture::Typing`]).
+    typing_run: u64,
+    /// Where the caret is after the last typed character, while a typing run goes on.
+    typing_end: Option<usize>,
+    /// The inline value whose prepared value is being typed, and the text typed so far.
+    value_editor: Option<(Range<usize>, String)>,
+    /// The last hover asked of the services: the offset of the word and the answer.
+    hover: Option<(usize, Option<String>)>,
+    /// The number of text rows the viewport showed last frame, for Page Up and Page Down.
+    page_rows: usize,
+    /// The longest line in bytes and the revision it was measured at.
+    widest: Option<(u64, usize)>,
+}
+
+impl StEditor {
+    /// An editor holding `text`.
+    pub fn new(text: &str) -> Self {
+        Self {
+            buffer: TextBuffer::new(text),
+            syntax: Syntax::new(text),
+            syntax_stale: false,
+            revision: 0,
+            anchor: 0,
+            caret: 0,
+            preferred_column: None,
+            read_only: false,
+            diagnostics: Vec::new(),
+            inline_values: Vec::new(),
+            folding: Folding::default(),
+            find: FindBar::default(),
+            completion: None,
+            galleys: GalleyCache::default(),
+            texts: EditorTexts::default(),
+            scroll_to_caret: false,
+            focus_requested: false,
+            typing_run: 0,
+            typing_end: None,
+            value_editor: None,
+            hover: None,
+            page_rows: 20,
+            widest: None,
+        }
+    }
+
+    /// The text the editor holds.
+    pub fn text(&self) -> &str {
+        self.buffer.text()
+    }
+
+    /// Replaces the text when it differs from `text` (after undo, redo or a change made
+    /// elsewhere); the selection is kept where it was, clamped to the new text.
+    pub fn set_text(&mut self, text: &str) {
+        if self.buffer.text() == text {
+            return;
+        }
+        self.buffer.set_text(text);
+        self.syntax.reset(text);
+        self.syntax_stale = false;
+        self.revision += 1;
+        self.anchor = self.buffer.clamp(self.anchor);
+        self.caret = self.buffer.clamp(self.caret);
+        self.folding.clamp(self.buffer.line_count());
+        self.completion = None;
+        self.typing_end = None;
+        self.value_editor = None;
+    }
+
+    /// The selected byte range, start before end; empty when nothing is selected.
+    pub fn selection(&self) -> Range<usize> {
+        self.anchor.min(self.caret)..self.anchor.max(self.caret)
+    }
+
+    /// The caret's byte offset.
+    pub fn caret(&self) -> usize {
+        self.caret
+    }
+
+    /// Selects `range` (clamped to the text), unfolds what hides it and scrolls it into view.
+    pub fn reveal(&mut self, range: Range<usize>) {
+        self.anchor = self.buffer.clamp(range.start);
+        self.caret = self.buffer.clamp(range.end.max(range.start));
+        self.folding.unfold_line(self.buffer.line_of(self.anchor));
+        self.folding.unfold_line(self.buffer.line_of(self.caret));
+        self.scroll_to_caret = true;
+        self.typing_end = None;
+    }
+
+    /// Makes the editor take keyboard focus at the next `show`.
+    pub fn request_focus(&mut self) {
+        self.focus_requested = true;
+    }
+
+    /// In read-only mode the text can be navigated, selected and copied but not changed.
+    pub fn set_read_only(&mut self, read_only: bool) {
+        self.read_only = read_only;
+        if read_only {
+            self.completion = None;
+        }
+    }
+
+    /// Whether the editor is read-only.
+    pub fn is_read_only(&self) -> bool {
+        self.read_only
+    }
+
+    /// The compiler's diagnostics for this text, shown until replaced.
+    pub fn set_diagnostics(&mut self, diagnostics: Vec<EditorDiagnostic>) {
+        self.diagnostics = diagnostics;
+    }
+
+    /// The monitored values to show inline; an empty list when offline.
+    pub fn set_inline_values(&mut self, mut values: Vec<InlineValue>) {
+        // Sorted by where the boxes go, so the boxes of a line are found by binary search.
+        values.sort_by_key(|value| (value.range.end, value.range.start));
+        self.inline_values = values;
+    }
+
+    /// The user-visible words of the find bar and the value box, in the app's language.
+    pub fn set_texts(&mut self, texts: EditorTexts) {
+        self.texts = texts;
+    }
+
+    /// Folds or unfolds the foldable block that starts on line `line` (counted from 0);
+    /// returns whether there was a block there.
+    pub fn toggle_fold(&mut self, line: usize) -> bool {
+        self.refresh_syntax();
+        let folds = self.syntax.folds_starting_in(&self.buffer, line..line + 1);
+        let Some(&(first, last)) = folds.first() else {
+            return false;
+        };
+        self.folding.toggle(first, last);
+        if self.folding.is_hidden(self.buffer.line_of(self.caret)) {
+            self.caret = self.buffer.line_range(first).end;
+            self.anchor = self.caret;
+        }
+        true
+    }
+
+    /// Whether line `line` is hidden inside a folded block.
+    pub fn is_line_hidden(&self, line: usize) -> bool {
+        self.folding.is_hidden(line)
+    }
+
+    /// Whether the find bar is open.
+    pub fn is_find_open(&self) -> bool {
+        self.find.open
+    }
+
+    /// The labels of the completion candidates the popup shows now, filtered by what was
+    /// typed; empty when the popup is closed.
+    pub fn completion_labels(&self) -> Vec<String> {
+        self.completion
+            .as_ref()
+            .map(|completion| {
+                completion
+                    .visible()
+                    .iter()
+                    .map(|item| item.label.clone())
+                    .collect()
+            })
+            .unwrap_or_default()
+    }
+
+    /// The byte ranges of the bracket or block keyword at the caret and of its partner.
+    pub fn matching_pair(&mut self) -> Option<(Range<usize>, Range<usize>)> {
+        self.refresh_syntax();
+        self.syntax.matching_pair(self.buffer.text(), self.caret)
+    }
+
+    /// The highlighted runs of line `line`, in bytes from the line's start.
+    pub fn line_highlights(&mut self, line: usize) -> Vec<(Range<usize>, Highlight)> {
+        self.refresh_syntax();
+        self.syntax
+            .highlight_lines(&self.buffer, line..line + 1)
+            .into_iter()
+            .next()
+            .unwrap_or_default()
+    }
+
+    /// Parses again after changes, once, before the tree is used.
+    fn refresh_syntax(&mut self) {
+        if self.syntax_stale {
+            self.syntax.reparse(self.buffer.text(), true);
+            self.syntax_stale = false;
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,356 @@
+//! Tests of the editor driven through egui, as a user would: keys, text and clipboard events.
+//! Each test keeps a model string the way the app would, applies the reported changes to it,
+//! and checks that it ends equal to the editor's own text.
+
+use egui::epaint::text::MissingGlyphPolicy;
+use egui::{Event, Key, Modifiers};
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable as _;
+
+use super::*;
+
+/// Services with a fixed list of names, as the app's project services would give.
+struct FakeServices;
+
+impl LanguageServices for FakeServices {
+    fn completions(&self, _text: &str, _offset: usize) -> Vec<CompletionItem> {
+        ["counter", "count_max", "motor_on"]
+            .into_iter()
+            .map(|label| CompletionItem {
+                label: label.to_owned(),
+                kind: CompletionKind::Variable,
+                detail: "INT".to_owned(),
+            })
+            .collect()
+    }
+
+    fn hover(&self, _text: &str, _offset: usize) -> Option<String> {
+        Some("counter : INT".to_owned())
+    }
+}
+
+/// What the app would keep: the editor, its own copy of the text and what came out.
+struct Host {
+    editor: StEditor,
+    model: String,
+    gestures: Vec<Gesture>,
+    change_lists: Vec<Vec<TextChange>>,
+    undo_left_for_app: bool,
+}
+
+fn harness(text: &str, caret: usize) -> Harness<'static, Host> {
+    let mut editor = StEditor::new(text);
+    editor.reveal(caret..caret);
+    editor.request_focus();
+    let host = Host {
+        editor,
+        model: text.to_owned(),
+        gestures: Vec::new(),
+        change_lists: Vec::new(),
+        undo_left_for_app: false,
+    };
+    let mut harness = Harness::builder()
+        .with_size(egui::vec2(800.0, 600.0))
+        .build_ui_state(
+            |ui, host: &mut Host| {
+                // The editor crate bundles no CJK font (the studio installs one), so Chinese
+                // text is drawn as boxes here rather than failing the test.
+                ui.ctx().set_missing_glyph_policy(MissingGlyphPolicy::Tofu);
+                let output = host.editor.show(ui, "Body of Main", &FakeServices);
+                TextChange::apply_all(&mut host.model, &output.changes);
+                if !output.changes.is_empty() {
+                    host.change_lists.push(output.changes);
+                }
+                host.gestures.extend(output.gesture);
+                if ui.input_mut(|input| input.consume_key(Modifiers::COMMAND, Key::Z)) {
+                    host.undo_left_for_app = true;
+                }
+            },
+            host,
+        );
+    harness.run_steps(2);
+    harness
+}
+
+fn type_text(harness: &mut Harness<'_, Host>, text: &str) {
+    for c in text.chars() {
+        harness.event(Event::Text(c.to_string()));
+        harness.run_steps(1);
+    }
+}
+
+fn press(harness: &mut Harness<'_, Host>, modifiers: Modifiers, key: Key) {
+    harness.key_press_modifiers(modifiers, key);
+    harness.run_steps(2);
+}
+
+#[track_caller]
+fn check_model(harness: &Harness<'_, Host>) {
+    assert_eq!(harness.state().model, harness.state().editor.text());
+}
+
+#[test]
+fn the_editor_has_its_accessible_label() {
+    let harness = harness("x := 1;", 0);
+    let _node = harness.get_by_label("Body of Main");
+}
+
+#[test]
+fn typed_text_is_inserted_and_reported_as_one_typing_run() {
+    let mut harness = harness("x := 1;\n", 7);
+    type_text(&mut harness, " // 计数");
+    assert_eq!(harness.state().editor.text(), "x := 1; // 计数\n");
+    check_model(&harness);
+    let gestures = &harness.state().gestures;
+    assert_eq!(gestures.len(), 6);
+    assert!(gestures.iter().all(|gesture| *gesture == gestures[0]));
+    assert!(matches!(gestures[0], Gesture::Typing { .. }));
+}
+
+#[test]
+fn enter_keeps_the_indentation_and_indents_after_then() {
+    let text = "IF a THEN\n    b := 1;\nEND_IF;";
+    let mut harness = harness(text, 18);
+    press(&mut harness, Modifiers::NONE, Key::End);
+    press(&mut harness, Modifiers::NONE, Key::Enter);
+    type_text(&mut harness, "c");
+    assert_eq!(
+        harness.state().editor.text(),
+        "IF a THEN\n    b := 1;\n    c\nEND_IF;"
+    );
+    press(&mut harness, Modifiers::COMMAND, Key::Home);
+    press(&mut harness, Modifiers::NONE, Key::End);
+    press(&mut harness, Modifiers::NONE, Key::Enter);
+    assert!(
+        harness
+            .state()
+            .editor
+            .text()
+            .starts_with("IF a THEN\n    \n    b")
+    );
+    check_model(&harness);
+    assert!(harness.state().gestures.contains(&Gesture::Other));
+}
+
+#[test]
+fn backspace_and_delete_remove_one_char_even_a_chinese_one() {
+    let mut harness = harness("// 计数器", 11);
+    press(&mut harness, Modifiers::NONE, Key::Backspace);
+    assert_eq!(harness.state().editor.text(), "// 计器");
+    press(&mut harness, Modifiers::NONE, Key::Delete);
+    assert_eq!(harness.state().editor.text(), "// 计");
+    check_model(&harness);
+}
+
+#[test]
+fn typing_over_a_selection_replaces_it() {
+    let mut harness = harness("a := old_value;", 5);
+    for _ in 0..9 {
+        press(&mut harness, Modifiers::SHIFT, Key::ArrowRight);
+    }
+    assert_eq!(harness.state().editor.selection(), 5..14);
+    type_text(&mut harness, "n");
+    assert_eq!(harness.state().editor.text(), "a := n;");
+    check_model(&harness);
+    assert_eq!(harness.state().gestures.first(), Some(&Gesture::Other));
+}
+
+#[test]
+fn paste_cut_and_copy_use_the_clipboard_events() {
+    let mut harness = harness("a := 1;", 7);
+    harness.event(Event::Paste("\r\nb := 2;".to_owned()));
+    harness.run_steps(2);
+    assert_eq!(harness.state().editor.text(), "a := 1;\nb := 2;");
+    press(&mut harness, Modifiers::COMMAND, Key::A);
+    harness.event(Event::Cut);
+    harness.run_steps(2);
+    assert_eq!(harness.state().editor.text(), "");
+    check_model(&harness);
+    assert_eq!(harness.state().change_lists.len(), 2);
+}
+
+#[test]
+fn tab_indents_and_shift_tab_outdents_the_selected_lines() {
+    let mut harness = harness("a;\nb;\nc;", 0);
+    press(&mut harness, Modifiers::SHIFT, Key::ArrowDown);
+    press(&mut harness, Modifiers::SHIFT, Key::ArrowDown);
+    press(&mut harness, Modifiers::NONE, Key::Tab);
+    assert_eq!(harness.state().editor.text(), "    a;\n    b;\nc;");
+    press(&mut harness, Modifiers::SHIFT, Key::Tab);
+    assert_eq!(harness.state().editor.text(), "a;\nb;\nc;");
+    check_model(&harness);
+}
+
+#[test]
+fn undo_and_redo_keys_are_left_to_the_app() {
+    let mut harness = harness("a := 1;", 7);
+    press(&mut harness, Modifiers::COMMAND, Key::Z);
+    assert!(harness.state().undo_left_for_app);
+    assert!(harness.state().change_lists.is_empty());
+    assert_eq!(harness.state().editor.text(), "a := 1;");
+}
+
+#[test]
+fn completion_filters_by_the_typed_prefix_and_replaces_it() {
+    let mut harness = harness("x := ;", 5);
+    press(&mut harness, Modifiers::CTRL, Key::Space);
+    assert_eq!(
+        harness.state().editor.completion_labels(),
+        ["counter", "count_max", "motor_on"]
+    );
+    type_text(&mut harness, "coun");
+    press(&mut harness, Modifiers::NONE, Key::ArrowDown);
+    assert_eq!(
+        harness.state().editor.completion_labels(),
+        ["counter", "count_max"]
+    );
+    press(&mut harness, Modifiers::NONE, Key::Enter);
+    assert_eq!(harness.state().editor.text(), "x := count_max;");
+    assert!(harness.state().editor.completion_labels().is_empty());
+    check_model(&harness);
+}
+
+#[test]
+fn a_dot_after_a_name_opens_completion_and_escape_closes_it() {
+    let mut harness = harness("motor", 5);
+    type_text(&mut harness, ".");
+    assert_eq!(harness.state().editor.completion_labels().len(), 3);
+    press(&mut harness, Modifiers::NONE, Key::Escape);
+    assert!(harness.state().editor.completion_labels().is_empty());
+}
+
+#[test]
+fn replace_all_of_a_whole_word_is_one_change_list() {
+    let text = "x := x + 1;\nmax := x1 + x;";
+    let mut harness = harness(text, 0);
+    let changes = {
+        let editor = &mut harness.state_mut().editor;
+        editor.set_find("x", "speed", true, true);
+        editor.replace_all()
+    };
+    assert_eq!(
+        harness.state().editor.text(),
+        "speed := speed + 1;\nmax := x1 + speed;"
+    );
+    let mut model = text.to_owned();
+    TextChange::apply_all(&mut model, &changes);
+    assert_eq!(model, harness.state().editor.text());
+    assert_eq!(changes.len(), 3);
+}
+
+#[test]
+fn ctrl_f_opens_the_find_bar_and_f3_selects_the_next_match() {
+    let mut harness = harness("a := 1;\nb := a;", 0);
+    press(&mut harness, Modifiers::SHIFT, Key::ArrowRight);
+    press(&mut harness, Modifiers::COMMAND, Key::F);
+    assert!(harness.state().editor.is_find_open());
+    harness.state_mut().editor.request_focus();
+    harness.run_steps(2);
+    press(&mut harness, Modifiers::NONE, Key::F3);
+    assert_eq!(harness.state().editor.selection(), 13..14);
+}
+
+#[test]
+fn folding_an_if_block_hides_its_lines() {
+    let text = "x := 0;\nIF a THEN\n    b := 1;\n    c := 2;\nEND_IF;\ny := 1;";
+    let mut harness = harness(text, 0);
+    assert!(harness.state_mut().editor.toggle_fold(1));
+    harness.run_steps(2);
+    let editor = &harness.state().editor;
+    assert!(!editor.is_line_hidden(1));
+    assert!(editor.is_line_hidden(2) && editor.is_line_hidden(3) && editor.is_line_hidden(4));
+    assert!(!editor.is_line_hidden(5));
+    // The caret moving down from the IF line skips the hidden lines.
+    harness.state_mut().editor.reveal(8..8);
+    press(&mut harness, Modifiers::NONE, Key::ArrowDown);
+    assert_eq!(
+        harness.state().editor.caret(),
+        text.find("y :=").unwrap_or_default()
+    );
+    assert!(!harness.state_mut().editor.toggle_fold(0));
+}
+
+#[test]
+fn read_only_editors_move_but_do_not_change() {
+    let mut harness = harness("a := 1;", 0);
+    harness.state_mut().editor.set_read_only(true);
+    type_text(&mut harness, "zz");
+    press(&mut harness, Modifiers::NONE, Key::Delete);
+    harness.event(Event::Paste("q".to_owned()));
+    press(&mut harness, Modifiers::NONE, Key::End);
+    assert_eq!(harness.state().editor.text(), "a := 1;");
+    assert_eq!(harness.state().editor.caret(), 7);
+    assert!(harness.state().change_lists.is_empty());
+}
+
+#[test]
+fn f12_and_shift_f12_report_the_caret() {
+    let mut harness = harness("a := b;", 5);
+    let goto = std::rc::Rc::new(std::cell::Cell::new(None));
+    let refs = std::rc::Rc::new(std::cell::Cell::new(None));
+    let (goto_seen, refs_seen) = (goto.clone(), refs.clone());
+    let mut editor = StEditor::new("a := b;");
+    editor.reveal(5..5);
+    editor.request_focus();
+    let mut other = Harness::new_ui(move |ui| {
+        ui.ctx().set_missing_glyph_policy(MissingGlyphPolicy::Tofu);
+        let output = editor.show(ui, "Other", &KeywordCompletions);
+        if output.goto_definition.is_some() {
+            goto_seen.set(output.goto_definition);
+        }
+        if output.find_references.is_some() {
+            refs_seen.set(output.find_references);
+        }
+    });
+    other.run_steps(2);
+    other.key_press(Key::F12);
+    other.run_steps(2);
+    other.key_press_modifiers(Modifiers::SHIFT, Key::F12);
+    other.run_steps(2);
+    assert_eq!(goto.get(), Some(5));
+    assert_eq!(refs.get(), Some(5));
+    harness.run_steps(1);
+}
+
+#[test]
+fn set_text_replaces_only_a_different_text_and_clamps_the_caret() {
+    let mut editor = StEditor::new("a := 1; // 计数器");
+    editor.reveal(20..20);
+    assert_eq!(editor.caret(), 20);
+    editor.set_text("a := 1; // 计");
+    assert_eq!(editor.caret(), editor.text().len());
+    editor.reveal(14..14);
+    editor.set_text("a := 1; // 计");
+    assert_eq!(editor.caret(), 14);
+    editor.set_text("a := 1; //数数");
+    // 14 is inside the second Chinese char: the caret goes back to its start.
+    assert_eq!(editor.caret(), 13);
+}
+
+#[test]
+fn inline_values_and_diagnostics_draw_without_hiding_text() {
+    let text = "counter := counter + 1;";
+    let mut harness = harness(text, 0);
+    {
+        let editor = &mut harness.state_mut().editor;
+        editor.set_inline_values(vec![InlineValue {
+            range: 0..7,
+            text: "42".to_owned(),
+            changed: true,
+            forced: true,
+        }]);
+        editor.set_diagnostics(vec![EditorDiagnostic {
+            range: 11..18,
+            severity: Severity::Warning,
+            code: "W0001".to_owned(),
+            message: "unused".to_owned(),
+        }]);
+    }
+    harness.run_steps(2);
+    // Typing after the name keeps the value on the (now longer) name's end.
+    press(&mut harness, Modifiers::NONE, Key::End);
+    type_text(&mut harness, " ");
+    assert_eq!(harness.state().editor.inline_values[0].range, 0..7);
+    assert_eq!(harness.state().editor.diagnostics[0].range, 11..18);
+    check_model(&harness);
+}
