@@ -157,20 +157,17 @@ impl StEditor {
         let texts = self.texts.clone();
         let mut focus_editor = false;
         ui.horizontal_wrapped(|ui| {
-            let query = ui.add(
-                egui::TextEdit::singleline(&mut self.find.query)
-                    .desired_width(160.0)
-                    .hint_text(texts.find.as_str()),
-            );
-            let query = query.labelled_by(ui.label(texts.find.as_str()).id);
+            let find_label = ui.label(texts.find.as_str());
+            let query = ui
+                .add(egui::TextEdit::singleline(&mut self.find.query).desired_width(160.0))
+                .labelled_by(find_label.id);
             if std::mem::take(&mut self.find.focus_query) {
                 query.request_focus();
             }
-            let replace = ui.add(
-                egui::TextEdit::singleline(&mut self.find.replacement)
-                    .desired_width(160.0)
-                    .hint_text(texts.replace.as_str()),
-            );
+            let replace_label = ui.label(texts.replace.as_str());
+            let replace = ui
+                .add(egui::TextEdit::singleline(&mut self.find.replacement).desired_width(160.0))
+                .labelled_by(replace_label.id);
             ui.checkbox(&mut self.find.match_case, texts.match_case.as_str());
             ui.checkbox(&mut self.find.whole_word, texts.whole_word.as_str());
             let count = self.matches().len();

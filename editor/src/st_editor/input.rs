@@ -42,15 +42,22 @@ impl StEditor {
         services: &dyn LanguageServices,
         result: &mut FrameResult,
     ) {
+        // Some platforms send the space of Ctrl+Space as text too; it must not be typed.
+        let mut after_ctrl_space = false;
         for event in events {
             match event {
+                Event::Text(text) if after_ctrl_space && text == " " => {}
                 Event::Text(text) => self.type_text(text, services, result),
                 Event::Key {
                     key,
                     pressed: true,
                     modifiers,
                     ..
-                } => self.key(*key, *modifiers, services, result),
+                } => {
+                    after_ctrl_space = *key == Key::Space && (modifiers.ctrl || modifiers.command);
+                    self.key(*key, *modifiers, services, result);
+                    continue;
+                }
                 Event::Copy => self.copy(ctx),
                 Event::Cut => {
                     self.copy(ctx);
@@ -68,6 +75,7 @@ impl StEditor {
                 }
                 _ => {}
             }
+            after_ctrl_space = false;
         }
         let caret_line = self.buffer.line_of(self.caret);
         if self.folding.is_hidden(caret_line) {

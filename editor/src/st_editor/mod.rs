@@ -70,8 +70,9 @@ pub struct StEditor {
     typing_end: Option<usize>,
     /// The inline value whose prepared value is being typed, and the text typed so far.
     value_editor: Option<(Range<usize>, String)>,
-    /// The last hover asked of the services: the offset of the word and the answer.
-    hover: Option<(usize, Option<String>)>,
+    /// The last hover asked of the services: the revision, the offset of the word and the
+    /// answer.
+    hover: Option<(u64, usize, Option<String>)>,
     /// The number of text rows the viewport showed last frame, for Page Up and Page Down.
     page_rows: usize,
     /// The longest line in bytes and the revision it was measured at.

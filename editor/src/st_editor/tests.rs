@@ -2,6 +2,8 @@
 //! Each test keeps a model string the way the app would, applies the reported changes to it,
 //! and checks that it ends equal to the editor's own text.
 
+use std::ops::Range;
+
 use egui::epaint::text::MissingGlyphPolicy;
 use egui::{Event, Key, Modifiers};
 use egui_kittest::Harness;
@@ -36,6 +38,7 @@ struct Host {
     gestures: Vec<Gesture>,
     change_lists: Vec<Vec<TextChange>>,
     undo_left_for_app: bool,
+    prepared: Option<(Range<usize>, String)>,
 }
 
 fn harness(text: &str, caret: usize) -> Harness<'static, Host> {
@@ -48,9 +51,12 @@ fn harness(text: &str, caret: usize) -> Harness<'static, Host> {
         gestures: Vec::new(),
         change_lists: Vec::new(),
         undo_left_for_app: false,
+        prepared: None,
     };
     let mut harness = Harness::builder()
         .with_size(egui::vec2(800.0, 600.0))
+        // Short steps, so two clicks in a row are a double-click.
+        .with_step_dt(1.0 / 60.0)
         .build_ui_state(
             |ui, host: &mut Host| {
                 // The editor crate bundles no CJK font (the studio installs one), so Chinese
@@ -62,6 +68,9 @@ fn harness(text: &str, caret: usize) -> Harness<'static, Host> {
                     host.change_lists.push(output.changes);
                 }
                 host.gestures.extend(output.gesture);
+                if output.prepared.is_some() {
+                    host.prepared = output.prepared;
+                }
                 if ui.input_mut(|input| input.consume_key(Modifiers::COMMAND, Key::Z)) {
                     host.undo_left_for_app = true;
                 }
@@ -353,4 +362,84 @@ fn inline_values_and_diagnostics_draw_without_hiding_text() {
     assert_eq!(harness.state().editor.inline_values[0].range, 0..7);
     assert_eq!(harness.state().editor.diagnostics[0].range, 11..18);
     check_model(&harness);
+}
+
+/// The screen position of a char column and line in the editor, from the editor's rectangle
+/// and the monospace font: the gutter is 6 chars wide (3 digits, markers) plus one char gap.
+fn text_pos(harness: &Harness<'_, Host>, line: usize, col: f32) -> egui::Pos2 {
+    let rect = harness.get_by_label("Body of Main").rect();
+    let font = egui::TextStyle::Monospace.resolve(&harness.ctx.global_style());
+    let (row_height, char_width) = harness
+        .ctx
+        .fonts_mut(|fonts| (fonts.row_height(&font), fonts.glyph_width(&font, '0')));
+    egui::pos2(
+        rect.min.x + (7.0 + col) * char_width,
+        rect.min.y + (line as f32 + 0.5) * row_height,
+    )
+}
+
+fn click_at(harness: &mut Harness<'_, Host>, pos: egui::Pos2) {
+    harness.event(Event::PointerMoved(pos));
+    for pressed in [true, false] {
+        harness.event(Event::PointerButton {
+            pos,
+            button: egui::PointerButton::Primary,
+            pressed,
+            modifiers: Modifiers::NONE,
+        });
+        harness.run_steps(1);
+    }
+}
+
+#[test]
+fn a_click_places_the_caret_and_a_double_click_selects_the_word() {
+    let mut harness = harness("counter := 1;\nspeed := counter;", 0);
+    let pos = text_pos(&harness, 1, 2.2);
+    click_at(&mut harness, pos);
+    harness.run_steps(2);
+    assert_eq!(harness.state().editor.caret(), 16);
+    click_at(&mut harness, pos);
+    assert_eq!(harness.state().editor.selection(), 14..19);
+    type_text(&mut harness, "v");
+    assert_eq!(
+        harness.state().editor.text(),
+        "counter := 1;\nv := counter;"
+    );
+    check_model(&harness);
+}
+
+#[test]
+fn typing_elsewhere_starts_a_new_typing_run() {
+    let mut harness = harness("a := 1;", 7);
+    type_text(&mut harness, "x");
+    press(&mut harness, Modifiers::NONE, Key::Home);
+    type_text(&mut harness, "y");
+    let gestures = &harness.state().gestures;
+    assert_eq!(gestures.len(), 2);
+    assert_ne!(gestures[0], gestures[1]);
+}
+
+#[test]
+fn clicking_an_inline_value_prepares_a_value_on_enter() {
+    let text = "counter := counter + 1;";
+    let mut harness = harness(text, 0);
+    harness
+        .state_mut()
+        .editor
+        .set_inline_values(vec![InlineValue {
+            range: 0..7,
+            text: "42".to_owned(),
+            changed: false,
+            forced: false,
+        }]);
+    harness.run_steps(2);
+    let pos = text_pos(&harness, 0, 8.5);
+    click_at(&mut harness, pos);
+    harness.run_steps(3);
+    type_text(&mut harness, "7");
+    press(&mut harness, Modifiers::NONE, Key::Enter);
+    harness.run_steps(2);
+    assert_eq!(harness.state().prepared, Some((0..7, "7".to_owned())));
+    // The value went to the box, not into the code.
+    assert_eq!(harness.state().editor.text(), text);
 }

@@ -891,11 +891,11 @@ impl StEditor {
                 let cached = self
                     .hover
                     .as_ref()
-                    .filter(|(at, _)| *at == word.start)
-                    .map(|(_, text)| text.clone());
+                    .filter(|(revision, at, _)| *revision == self.revision && *at == word.start)
+                    .map(|(_, _, text)| text.clone());
                 text = cached.unwrap_or_else(|| {
                     let answer = services.hover(self.buffer.text(), offset);
-                    self.hover = Some((word.start, answer.clone()));
+                    self.hover = Some((self.revision, word.start, answer.clone()));
                     answer
                 });
             }
