@@ -164,6 +164,13 @@ impl StEditor {
             if std::mem::take(&mut self.find.focus_query) {
                 query.request_focus();
             }
+            if query.changed() {
+                // Find as you type: the first match from the start of the selection.
+                let start = self.selection().start;
+                self.anchor = start;
+                self.caret = start;
+                self.find_next(true);
+            }
             let replace_label = ui.label(texts.replace.as_str());
             let replace = ui
                 .add(egui::TextEdit::singleline(&mut self.find.replacement).desired_width(160.0))

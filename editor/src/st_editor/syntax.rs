@@ -354,6 +354,34 @@ mod tests {
     }
 
     #[test]
+    fn every_block_keyword_finds_its_end() {
+        let text = "FUNCTION_BLOCK Fb\nVAR_INPUT\n    a : INT;\nEND_VAR\nFOR i := 1 TO 3 DO\n    WHILE a > 0 DO\n        REPEAT a := a - 1; UNTIL a < 5 END_REPEAT;\n    END_WHILE;\nEND_FOR;\nCASE a OF\n1: a := 2;\nEND_CASE;\nEND_FUNCTION_BLOCK\n";
+        let syntax = Syntax::new(text);
+        for (open, close) in [
+            ("FUNCTION_BLOCK", "END_FUNCTION_BLOCK"),
+            ("VAR_INPUT", "END_VAR"),
+            ("FOR", "END_FOR"),
+            ("WHILE", "END_WHILE"),
+            ("REPEAT", "END_REPEAT"),
+            ("CASE", "END_CASE"),
+        ] {
+            let open_at = text
+                .find(&format!("{open} "))
+                .or_else(|| text.find(&format!("{open}\n")))
+                .unwrap_or_default();
+            let close_at = text.find(close).unwrap_or_default();
+            assert_eq!(
+                syntax.matching_pair(text, open_at + 1),
+                Some((
+                    open_at..open_at + open.len(),
+                    close_at..close_at + close.len()
+                )),
+                "{open}"
+            );
+        }
+    }
+
+    #[test]
     fn brackets_match_after_an_incremental_edit() {
         let text = "x := (a + b) * 2;";
         let mut buffer = TextBuffer::new(text);

@@ -443,3 +443,44 @@ fn clicking_an_inline_value_prepares_a_value_on_enter() {
     // The value went to the box, not into the code.
     assert_eq!(harness.state().editor.text(), text);
 }
+
+fn rest_pointer_at(harness: &mut Harness<'_, Host>, pos: egui::Pos2) {
+    harness.event(Event::PointerMoved(pos));
+    // The pointer rests for more than the hover delay.
+    harness.run_steps(40);
+}
+
+#[test]
+fn hovering_a_name_shows_the_services_text_and_a_diagnostic_its_message() {
+    let mut harness = harness("counter := speed + 1;", 0);
+    harness
+        .state_mut()
+        .editor
+        .set_diagnostics(vec![EditorDiagnostic {
+            range: 11..16,
+            severity: Severity::Error,
+            code: "E0104".to_owned(),
+            message: "unknown name `speed`".to_owned(),
+        }]);
+    let pos = text_pos(&harness, 0, 2.5);
+    rest_pointer_at(&mut harness, pos);
+    let _hover = harness.get_by_label("counter : INT");
+    let pos = text_pos(&harness, 0, 13.5);
+    rest_pointer_at(&mut harness, pos);
+    let _diagnostic = harness.get_by_label("E0104: unknown name `speed`");
+}
+
+#[test]
+fn typing_in_the_find_field_selects_the_first_match() {
+    let mut harness = harness("a := 1;\nbeta := a;", 0);
+    press(&mut harness, Modifiers::COMMAND, Key::F);
+    harness.run_steps(2);
+    harness.event(Event::Text("beta".to_owned()));
+    harness.run_steps(2);
+    assert_eq!(harness.state().editor.selection(), 8..12);
+    // Escape in the field closes the bar and gives the keyboard back to the editor.
+    press(&mut harness, Modifiers::NONE, Key::Escape);
+    assert!(!harness.state().editor.is_find_open());
+    type_text(&mut harness, "x");
+    assert_eq!(harness.state().editor.text(), "a := 1;\nx := a;");
+}
