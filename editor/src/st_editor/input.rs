@@ -1,6 +1,6 @@
 //! Keyboard and clipboard input: egui events turned into caret moves and text changes.
 
-use egui::{Event, Key, Modifiers};
+use egui::{Event, ImeEvent, Key, Modifiers};
 
 use super::editing::{INDENT, is_word_char};
 use super::{Gesture, LanguageServices, StEditor, TextChange};
@@ -48,6 +48,8 @@ impl StEditor {
             match event {
                 Event::Text(text) if after_ctrl_space && text == " " => {}
                 Event::Text(text) => self.type_text(text, services, result),
+                // Text composed with an input method (Chinese, Japanese …) arrives committed.
+                Event::Ime(ImeEvent::Commit(text)) => self.type_text(text, services, result),
                 Event::Key {
                     key,
                     pressed: true,

@@ -117,6 +117,15 @@ fn typed_text_is_inserted_and_reported_as_one_typing_run() {
 }
 
 #[test]
+fn text_committed_by_an_input_method_is_inserted() {
+    let mut harness = harness("x := 1;", 7);
+    harness.event(Event::Ime(egui::ImeEvent::Commit(" // 计数器".to_owned())));
+    harness.run_steps(2);
+    assert_eq!(harness.state().editor.text(), "x := 1; // 计数器");
+    check_model(&harness);
+}
+
+#[test]
 fn enter_keeps_the_indentation_and_indents_after_then() {
     let text = "IF a THEN\n    b := 1;\nEND_IF;";
     let mut harness = harness(text, 18);

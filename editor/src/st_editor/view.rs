@@ -245,6 +245,15 @@ impl StEditor {
             ui.scroll_to_rect(caret_rect.expand2(margin), None);
         }
         if focused {
+            // Tells the platform where the caret is, so an input method's window opens there.
+            ui.output_mut(|output| {
+                output.ime = Some(egui::output::IMEOutput {
+                    purpose: egui::IMEPurpose::Normal,
+                    rect: clip,
+                    cursor_rect: caret_rect,
+                    should_interrupt_composition: false,
+                });
+            });
             self.completion_ui(ui.ctx(), id, caret_rect.left_bottom(), result);
         }
         self.value_editor_ui(ui, id, result);
