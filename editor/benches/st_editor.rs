@@ -5,6 +5,7 @@
 #![allow(missing_docs)] // criterion_group! writes an undocumented function.
 
 use std::hint::black_box;
+use std::time::{Duration, Instant};
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use editor::{InlineValue, KeywordCompletions, StEditor};
@@ -31,16 +32,22 @@ fn long_body() -> String {
     text
 }
 
-fn input(events: Vec<Event>) -> RawInput {
+fn input(events: Vec<Event>, time_s: Option<f64>) -> RawInput {
     RawInput {
         screen_rect: Some(Rect::from_min_size(pos2(0.0, 0.0), vec2(1280.0, 900.0))),
         events,
+        time: time_s,
         ..RawInput::default()
     }
 }
 
 fn frame(ctx: &Context, editor: &mut StEditor, events: Vec<Event>) {
-    let output = ctx.run_ui(input(events), |ui| {
+    frame_at(ctx, editor, events, None);
+}
+
+/// A frame at egui time `time_s`, or 1/60 s after the last one.
+fn frame_at(ctx: &Context, editor: &mut StEditor, events: Vec<Event>, time_s: Option<f64>) {
+    let output = ctx.run_ui(input(events, time_s), |ui| {
         let output = editor.show(ui, "Body", &KeywordCompletions);
         black_box(output.changes);
     });
@@ -82,6 +89,30 @@ fn benchmarks(c: &mut Criterion) {
     let (ctx, mut editor) = setup(&text, starts[LINES / 2] + 4);
     c.bench_function("type a character (20k lines)", |b| {
         b.iter(|| frame(&ctx, &mut editor, vec![Event::Text("a".to_owned())]));
+    });
+
+    // Typing pauses: one frame types, the next comes 0.2 s later and parses again; only the
+    // second is timed.
+    let (ctx, mut editor) = setup(&text, starts[LINES / 2] + 4);
+    let mut time_s = 100.0;
+    c.bench_function("re-parse after typing pauses (20k lines)", |b| {
+        b.iter_custom(|iterations| {
+            let mut total = Duration::ZERO;
+            for _ in 0..iterations {
+                time_s += 0.2;
+                frame_at(
+                    &ctx,
+                    &mut editor,
+                    vec![Event::Text("a".to_owned())],
+                    Some(time_s),
+                );
+                time_s += 0.2;
+                let start = Instant::now();
+                frame_at(&ctx, &mut editor, Vec::new(), Some(time_s));
+                total += start.elapsed();
+            }
+            total
+        });
     });
 
     let (ctx, mut editor) = setup(&text, starts[1000]);

@@ -37,6 +37,12 @@ use folding::Folding;
 use galleys::GalleyCache;
 use syntax::Syntax;
 
+/// Texts up to this size are parsed again in the frame that changed them.
+const IMMEDIATE_REPARSE_BYTES: usize = 64 * 1024;
+
+/// How long typing must pause before a longer text is parsed again, in seconds.
+const REPARSE_DELAY_S: f64 = 0.12;
+
 /// An editor for one Structured Text (a declaration part or a body).
 ///
 /// The app keeps one per open text, shows it with [`StEditor::show`] every frame, applies the
@@ -47,6 +53,9 @@ pub struct StEditor {
     syntax: Syntax,
     /// Whether the tree must be parsed again before it is used.
     syntax_stale: bool,
+    /// The egui time of the last change, in seconds; a long text is parsed again only when
+    /// typing pauses.
+    last_edit_s: f64,
     /// Counts changes of the text, to know when cached results are stale.
     revision: u64,
     /// The end of the selection that does not move with Shift+movement.
@@ -89,6 +98,7 @@ impl StEditor {
             buffer: TextBuffer::new(text),
             syntax: Syntax::new(text),
             syntax_stale: false,
+            last_edit_s: 0.0,
             revision: 0,
             anchor: 0,
             caret: 0,
@@ -245,6 +255,21 @@ impl StEditor {
             .into_iter()
             .next()
             .unwrap_or_default()
+    }
+
+    /// Parses again after changes when the text is short, or when typing paused; meanwhile
+    /// the edited old tree keeps highlighting (its ranges follow the edits). Parsing a
+    /// 20,000-line text again takes a few milliseconds, too long for every keystroke.
+    fn refresh_syntax_when_idle(&mut self, ctx: &egui::Context, now_s: f64) {
+        if !self.syntax_stale {
+            return;
+        }
+        let idle_s = now_s - self.last_edit_s;
+        if self.buffer.len() <= IMMEDIATE_REPARSE_BYTES || idle_s >= REPARSE_DELAY_S {
+            self.refresh_syntax();
+        } else {
+            ctx.request_repaint_after_secs((REPARSE_DELAY_S - idle_s) as f32);
+        }
     }
 
     /// Parses again after changes, once, before the tree is used.

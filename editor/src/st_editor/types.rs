@@ -228,9 +228,10 @@ impl LanguageServices for KeywordCompletions {
 pub struct StEditorOutput {
     /// The response of the text area (focus, hover, the accessible label).
     pub response: egui::Response,
-    /// The changes made this frame, to apply one after the other in this order; the editor
-    /// already applied them to its own text. Lists of several changes go from the end of
-    /// the text to its start, so each range is also valid in the text before the frame.
+    /// The changes made this frame, to apply one after the other in this order (each range
+    /// is in the text as the previous change left it); the editor already applied them to its
+    /// own text. A gesture that changes several places at once (replace all, indent) lists
+    /// them from the end of the text to its start.
     pub changes: Vec<TextChange>,
     /// The gesture of `changes`, `None` when there are none.
     pub gesture: Option<Gesture>,

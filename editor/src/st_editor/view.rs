@@ -39,7 +39,11 @@ impl StEditor {
             let events = ui.input(|input| input.filtered_events(&filter));
             self.handle_events(ui.ctx(), &events, services, &mut result);
         }
-        self.refresh_syntax();
+        let now_s = ui.input(|input| input.time);
+        if !result.changes.is_empty() {
+            self.last_edit_s = now_s;
+        }
+        self.refresh_syntax_when_idle(ui.ctx(), now_s);
         let line_count = self.buffer.line_count();
         let row_count = self.folding.row_count(line_count);
         let widest = self.widest_line();
