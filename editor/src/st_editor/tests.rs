@@ -493,3 +493,31 @@ fn typing_in_the_find_field_selects_the_first_match() {
     type_text(&mut harness, "x");
     assert_eq!(harness.state().editor.text(), "a := 1;\nx := a;");
 }
+
+#[test]
+fn dragging_selects_from_where_the_button_went_down() {
+    let mut harness = harness("counter := 1;\nspeed := counter;", 0);
+    let down = text_pos(&harness, 0, 2.2);
+    let up = text_pos(&harness, 1, 4.2);
+    harness.event(Event::PointerMoved(down));
+    harness.event(Event::PointerButton {
+        pos: down,
+        button: egui::PointerButton::Primary,
+        pressed: true,
+        modifiers: Modifiers::NONE,
+    });
+    harness.run_steps(1);
+    for step in 1..=5 {
+        let t = step as f32 / 5.0;
+        harness.event(Event::PointerMoved(down + (up - down) * t));
+        harness.run_steps(1);
+    }
+    harness.event(Event::PointerButton {
+        pos: up,
+        button: egui::PointerButton::Primary,
+        pressed: false,
+        modifiers: Modifiers::NONE,
+    });
+    harness.run_steps(2);
+    assert_eq!(harness.state().editor.selection(), 2..18);
+}

@@ -307,23 +307,7 @@ impl StEditor {
                 }
             }
         }
-        let col = match layout {
-            Some(layout) => layout.column(
-                layout
-                    .galley
-                    .cursor_from_pos(vec2(x, metrics.row_height * 0.5))
-                    .index
-                    .0,
-            ),
-            None => {
-                let galley = self.line_galley(ui, line, &[], &[], font, true, Color32::WHITE);
-                galley
-                    .cursor_from_pos(vec2(x, metrics.row_height * 0.5))
-                    .index
-                    .0
-            }
-        };
-        let offset = self.buffer.offset_of(line, col);
+        let offset = self.offset_at(ui, pos, layouts, origin, metrics, font);
         let shift = ui.input(|input| input.modifiers.shift);
         if response.double_clicked() {
             let word = self.word_at(offset);
@@ -332,13 +316,53 @@ impl StEditor {
         } else if pressed {
             self.caret = offset;
             if !shift {
-                self.anchor = offset;
+                // A drag is recognised only after the pointer moved: it starts where the
+                // button went down.
+                let origin_pos = ui.input(|input| input.pointer.press_origin());
+                self.anchor = match origin_pos {
+                    Some(down) if response.drag_started() => {
+                        self.offset_at(ui, down, layouts, origin, metrics, font)
+                    }
+                    _ => offset,
+                };
             }
         } else if response.dragged() {
             self.caret = offset;
+            // Dragging past the edge scrolls the text along with the caret.
+            self.scroll_to_caret = true;
         }
         self.typing_end = None;
         self.preferred_column = None;
         self.completion = None;
+    }
+
+    /// The text offset under screen position `pos`.
+    #[allow(clippy::too_many_arguments)]
+    fn offset_at(
+        &mut self,
+        ui: &Ui,
+        pos: Pos2,
+        layouts: &[LineLayout],
+        origin: Pos2,
+        metrics: &Metrics,
+        font: &FontId,
+    ) -> usize {
+        let line_count = self.buffer.line_count();
+        let row_count = self.folding.row_count(line_count).max(1);
+        let row = (((pos.y - origin.y) / metrics.row_height).floor().max(0.0) as usize)
+            .min(row_count - 1);
+        let line = self.folding.line_of_row(row, line_count);
+        let x = pos.x - origin.x - metrics.text_left;
+        let target = vec2(x, metrics.row_height * 0.5);
+        let col = match layouts.iter().find(|layout| layout.line == line) {
+            Some(layout) => layout.column(layout.galley.cursor_from_pos(target).index.0),
+            None => {
+                // A line outside the laid-out rows (a drag past the edge): its plain galley
+                // has the same geometry.
+                let galley = self.line_galley(ui, line, &[], &[], font, true, Color32::WHITE);
+                galley.cursor_from_pos(target).index.0
+            }
+        };
+        self.buffer.offset_of(line, col)
     }
 }
