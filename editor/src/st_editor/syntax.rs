@@ -354,6 +354,25 @@ mod tests {
     }
 
     #[test]
+    fn without_the_highlight_query_the_lexical_scanner_colours_the_text() {
+        let mut syntax = Syntax::new(SAMPLE);
+        syntax.highlights = None;
+        let buffer = TextBuffer::new(SAMPLE);
+        let spans = syntax.highlight_lines(&buffer, 2..3);
+        let line = buffer.line(2);
+        let class_at = |word: &str| {
+            let at = line.find(word).unwrap_or_default();
+            spans[0]
+                .iter()
+                .find(|(range, _)| range.contains(&at))
+                .map(|(_, class)| *class)
+        };
+        assert_eq!(class_at("INT"), Some(Highlight::Keyword));
+        assert_eq!(class_at("42"), Some(Highlight::Number));
+        assert_eq!(class_at("//"), Some(Highlight::Comment));
+    }
+
+    #[test]
     fn every_block_keyword_finds_its_end() {
         let text = "FUNCTION_BLOCK Fb\nVAR_INPUT\n    a : INT;\nEND_VAR\nFOR i := 1 TO 3 DO\n    WHILE a > 0 DO\n        REPEAT a := a - 1; UNTIL a < 5 END_REPEAT;\n    END_WHILE;\nEND_FOR;\nCASE a OF\n1: a := 2;\nEND_CASE;\nEND_FUNCTION_BLOCK\n";
         let syntax = Syntax::new(text);

@@ -521,3 +521,44 @@ fn dragging_selects_from_where_the_button_went_down() {
     harness.run_steps(2);
     assert_eq!(harness.state().editor.selection(), 2..18);
 }
+
+#[test]
+fn keys_move_by_words_lines_pages_and_to_the_ends() {
+    let text: String = (0..100)
+        .map(|line| format!("    value_{line} := {line};\n"))
+        .collect();
+    let mut harness = harness(&text, 0);
+    // Home goes to the first non-blank, then to the line start.
+    press(&mut harness, Modifiers::NONE, Key::Home);
+    assert_eq!(harness.state().editor.caret(), 4);
+    press(&mut harness, Modifiers::NONE, Key::Home);
+    assert_eq!(harness.state().editor.caret(), 0);
+    press(&mut harness, Modifiers::NONE, Key::End);
+    assert_eq!(harness.state().editor.caret(), 17);
+    for expected in [16, 15, 12, 4] {
+        press(&mut harness, Modifiers::COMMAND, Key::ArrowLeft);
+        assert_eq!(harness.state().editor.caret(), expected);
+    }
+    // Ctrl+Right goes to the start of the next word.
+    press(&mut harness, Modifiers::COMMAND, Key::ArrowRight);
+    assert_eq!(harness.state().editor.caret(), 12);
+    // Page Down moves by the rows the view shows, keeping the column.
+    press(&mut harness, Modifiers::NONE, Key::PageDown);
+    let (line, col) = harness
+        .state()
+        .editor
+        .buffer
+        .line_col(harness.state().editor.caret());
+    assert!(line > 10, "line {line}");
+    assert_eq!(col, 12);
+    press(&mut harness, Modifiers::NONE, Key::PageUp);
+    assert_eq!(harness.state().editor.caret(), 12);
+    press(
+        &mut harness,
+        Modifiers::COMMAND | Modifiers::SHIFT,
+        Key::End,
+    );
+    assert_eq!(harness.state().editor.selection(), 12..text.len());
+    press(&mut harness, Modifiers::COMMAND, Key::Home);
+    assert_eq!(harness.state().editor.selection(), 0..0);
+}
