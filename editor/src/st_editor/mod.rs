@@ -89,6 +89,8 @@ pub struct StEditor {
     page_rows: usize,
     /// The longest line in bytes and the revision it was measured at.
     widest: Option<(u64, usize)>,
+    /// The first and last buffer lines shown in the last frame.
+    visible: Range<usize>,
 }
 
 impl StEditor {
@@ -119,6 +121,7 @@ impl StEditor {
             hover: None,
             page_rows: 20,
             widest: None,
+            visible: 0..0,
         }
     }
 
@@ -219,6 +222,12 @@ impl StEditor {
     /// Whether line `line` is hidden inside a folded block.
     pub fn is_line_hidden(&self, line: usize) -> bool {
         self.folding.is_hidden(line)
+    }
+
+    /// The buffer lines the last frame showed (folded lines inside are hidden), so the app
+    /// can monitor only the variables on screen.
+    pub fn visible_lines(&self) -> Range<usize> {
+        self.visible.clone()
     }
 
     /// Whether the find bar is open.

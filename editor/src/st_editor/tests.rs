@@ -562,3 +562,18 @@ fn keys_move_by_words_lines_pages_and_to_the_ends() {
     press(&mut harness, Modifiers::COMMAND, Key::Home);
     assert_eq!(harness.state().editor.selection(), 0..0);
 }
+
+#[test]
+fn reveal_selects_and_scrolls_a_far_line_into_view() {
+    let text: String = (0..2000)
+        .map(|line| format!("x_{line} := {line};\n"))
+        .collect();
+    let mut harness = harness(&text, 0);
+    assert_eq!(harness.state().editor.visible_lines().start, 0);
+    let target = text.find("x_1500 ").unwrap_or_default();
+    harness.state_mut().editor.reveal(target..target + 6);
+    harness.run_steps(3);
+    let visible = harness.state().editor.visible_lines();
+    assert!(visible.contains(&1500), "{visible:?}");
+    assert_eq!(harness.state().editor.selection(), target..target + 6);
+}

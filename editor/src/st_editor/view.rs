@@ -115,6 +115,10 @@ impl StEditor {
             .saturating_sub(1)
             .max(1);
         let layouts = self.layout_rows(ui, first_row..last_row, font);
+        self.visible = match (layouts.first(), layouts.last()) {
+            (Some(first), Some(last)) => first.line..last.line + 1,
+            _ => 0..0,
+        };
         let text_x = origin.x + metrics.text_left;
         let row_top = |row: usize| origin.y + row as f32 * metrics.row_height;
         let clip = ui.clip_rect();
