@@ -49,7 +49,14 @@ impl StEditor {
                 Event::Text(text) if after_ctrl_space && text == " " => {}
                 Event::Text(text) => self.type_text(text, services, result),
                 // Text composed with an input method (Chinese, Japanese …) arrives committed.
-                Event::Ime(ImeEvent::Commit(text)) => self.type_text(text, services, result),
+                Event::Ime(ImeEvent::Commit(text)) => {
+                    self.preedit.clear();
+                    self.type_text(text, services, result);
+                }
+                // The text being composed is shown at the caret until it is committed.
+                Event::Ime(ImeEvent::Preedit { text, .. }) if !self.read_only => {
+                    text.clone_into(&mut self.preedit);
+                }
                 Event::Key {
                     key,
                     pressed: true,

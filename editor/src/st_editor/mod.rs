@@ -91,6 +91,8 @@ pub struct StEditor {
     widest: Option<(u64, usize)>,
     /// The first and last buffer lines shown in the last frame.
     visible: Range<usize>,
+    /// The text an input method is composing, shown at the caret, not yet in the buffer.
+    preedit: String,
 }
 
 impl StEditor {
@@ -122,6 +124,7 @@ impl StEditor {
             page_rows: 20,
             widest: None,
             visible: 0..0,
+            preedit: String::new(),
         }
     }
 

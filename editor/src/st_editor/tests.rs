@@ -126,6 +126,23 @@ fn text_committed_by_an_input_method_is_inserted() {
 }
 
 #[test]
+fn text_being_composed_is_not_in_the_text_until_committed() {
+    let mut harness = harness("x := 1;", 7);
+    harness.event(Event::Ime(egui::ImeEvent::Preedit {
+        text: "ji".to_owned(),
+        active_range_chars: None,
+    }));
+    harness.run_steps(2);
+    assert_eq!(harness.state().editor.preedit, "ji");
+    assert!(harness.state().change_lists.is_empty());
+    harness.event(Event::Ime(egui::ImeEvent::Commit("计".to_owned())));
+    harness.run_steps(2);
+    assert_eq!(harness.state().editor.preedit, "");
+    assert_eq!(harness.state().editor.text(), "x := 1;计");
+    check_model(&harness);
+}
+
+#[test]
 fn enter_keeps_the_indentation_and_indents_after_then() {
     let text = "IF a THEN\n    b := 1;\nEND_IF;";
     let mut harness = harness(text, 18);

@@ -234,6 +234,22 @@ impl StEditor {
                 [pos2(x, top), pos2(x, top + metrics.row_height)],
                 Stroke::new(2.0, visuals.text_cursor.stroke.color),
             );
+            if !self.preedit.is_empty() {
+                // The composition is drawn over the text after the caret, underlined, the way
+                // input methods expect; it becomes text only when committed.
+                let galley = painter.layout_no_wrap(
+                    self.preedit.clone(),
+                    font.clone(),
+                    visuals.text_color(),
+                );
+                let area = Rect::from_min_size(pos2(x, top), galley.size());
+                painter.rect_filled(area, 0.0, visuals.extreme_bg_color);
+                painter.galley(area.min, galley, visuals.text_color());
+                painter.line_segment(
+                    [area.left_bottom(), area.right_bottom()],
+                    Stroke::new(1.0, visuals.text_color()),
+                );
+            }
         }
         self.paint_gutter(&painter, &layouts, clip, &row_top, metrics, font, &visuals);
 
