@@ -123,6 +123,11 @@ impl StEditor {
         }
         if self.typing_end != Some(self.caret) {
             self.typing_run += 1;
+            // Changes earlier in this frame belong to another step, so the frame's changes
+            // cannot be merged into one typing run.
+            if !result.changes.is_empty() {
+                result.other = true;
+            }
         }
         let before_dot = self.prev_char(self.caret);
         let after_name = self.buffer.text()[before_dot..self.caret]
