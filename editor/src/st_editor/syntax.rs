@@ -12,6 +12,9 @@ use crate::classify_tokens;
 /// A run of highlighted text inside one line; the range is in bytes from the line's start.
 pub type LineSpan = (Range<usize>, Highlight);
 
+/// A result for a line range at a generation of the tree.
+type Cached<T> = (u64, Range<usize>, T);
+
 /// The syntax tree of the editor's text and the compiled queries.
 pub struct Syntax {
     parser: Option<Parser>,
@@ -20,6 +23,13 @@ pub struct Syntax {
     /// compile against the grammar, and the lexical scanner is used instead.
     highlights: Option<(Query, Vec<Option<Highlight>>)>,
     folds: Option<Query>,
+    /// Counts changes of the tree (edits and parses), to know when the caches are stale.
+    generation: u64,
+    /// The highlighting of the last line range asked for, with its generation: frames that
+    /// change nothing (hover, caret moves) reuse it.
+    span_cache: Option<Cached<Vec<Vec<LineSpan>>>>,
+    /// The foldable blocks of the last line range asked for, with its generation.
+    fold_cache: Option<Cached<Vec<(usize, usize)>>>,
 }
 
 impl Syntax {
@@ -44,6 +54,9 @@ impl Syntax {
             tree: None,
             highlights,
             folds,
+            generation: 0,
+            span_cache: None,
+            fold_cache: None,
         };
         syntax.reparse(text, false);
         syntax
@@ -57,6 +70,7 @@ impl Syntax {
     /// Tells the tree that `range` of `buffer` (the text before the change) becomes
     /// `new_text`; call [`Syntax::reparse`] after the buffer changed.
     pub fn edit(&mut self, buffer: &TextBuffer, range: &Range<usize>, new_text: &str) {
+        self.generation += 1;
         let Some(tree) = self.tree.as_mut() else {
             return;
         };
@@ -81,6 +95,7 @@ impl Syntax {
 
     /// Parses `text` again, reusing the edited old tree when `incremental`.
     pub fn reparse(&mut self, text: &str, incremental: bool) {
+        self.generation += 1;
         let Some(parser) = self.parser.as_mut() else {
             self.tree = None;
             return;
@@ -94,7 +109,23 @@ impl Syntax {
     }
 
     /// The highlighted runs of each line in `lines`, one list per line.
-    pub fn highlight_lines(&self, buffer: &TextBuffer, lines: Range<usize>) -> Vec<Vec<LineSpan>> {
+    pub fn highlight_lines(
+        &mut self,
+        buffer: &TextBuffer,
+        lines: Range<usize>,
+    ) -> Vec<Vec<LineSpan>> {
+        if let Some((generation, cached_lines, spans)) = &self.span_cache
+            && *generation == self.generation
+            && *cached_lines == lines
+        {
+            return spans.clone();
+        }
+        let spans = self.compute_highlights(buffer, lines.clone());
+        self.span_cache = Some((self.generation, lines, spans.clone()));
+        spans
+    }
+
+    fn compute_highlights(&self, buffer: &TextBuffer, lines: Range<usize>) -> Vec<Vec<LineSpan>> {
         let lines = lines.start.min(buffer.line_count())..lines.end.min(buffer.line_count());
         let mut per_byte: Vec<Vec<(usize, Highlight)>> = lines
             .clone()
@@ -144,10 +175,22 @@ impl Syntax {
     /// Foldable blocks that start on one of `lines` and end on a later line, as
     /// (first line, last line), the largest block of each first line.
     pub fn folds_starting_in(
-        &self,
+        &mut self,
         buffer: &TextBuffer,
         lines: Range<usize>,
     ) -> Vec<(usize, usize)> {
+        if let Some((generation, cached_lines, folds)) = &self.fold_cache
+            && *generation == self.generation
+            && *cached_lines == lines
+        {
+            return folds.clone();
+        }
+        let folds = self.compute_folds(buffer, lines.clone());
+        self.fold_cache = Some((self.generation, lines, folds.clone()));
+        folds
+    }
+
+    fn compute_folds(&self, buffer: &TextBuffer, lines: Range<usize>) -> Vec<(usize, usize)> {
         let (Some(tree), Some(query)) = (&self.tree, &self.folds) else {
             return Vec::new();
         };
@@ -310,7 +353,7 @@ mod tests {
 
     fn class_of(text: &str, word: &str) -> Option<Highlight> {
         let buffer = TextBuffer::new(text);
-        let syntax = Syntax::new(text);
+        let mut syntax = Syntax::new(text);
         let at = text.find(word)?;
         let line = buffer.line_of(at);
         let column = at - buffer.line_range(line).start;
@@ -338,7 +381,7 @@ mod tests {
     #[test]
     fn an_if_block_is_foldable_and_its_keywords_match() {
         let buffer = TextBuffer::new(SAMPLE);
-        let syntax = Syntax::new(SAMPLE);
+        let mut syntax = Syntax::new(SAMPLE);
         let folds = syntax.folds_starting_in(&buffer, 5..6);
         assert_eq!(folds, vec![(5, 7)]);
         let if_at = SAMPLE.find("IF count").unwrap_or_default();
