@@ -23,8 +23,9 @@ pub struct FindBar {
     pub whole_word: bool,
     /// Set when the find field must take focus at the next frame.
     focus_query: bool,
-    /// The matches of the query and the key they were computed for.
+    /// The matches of the query, start to end.
     matches: Vec<Range<usize>>,
+    /// The text revision, query and options `matches` was computed for.
     matches_key: Option<(u64, String, bool, bool)>,
 }
 

@@ -10,7 +10,9 @@ use egui::Galley;
 /// dropped, so the cache holds about the visible lines.
 #[derive(Default)]
 pub struct GalleyCache {
+    /// The galleys used this frame.
     current: HashMap<u64, Arc<Galley>>,
+    /// The galleys of the last frame not used yet this frame.
     previous: HashMap<u64, Arc<Galley>>,
 }
 

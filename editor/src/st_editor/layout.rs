@@ -17,6 +17,7 @@ pub(super) struct LineLayout {
     pub(super) line: usize,
     /// The row it is shown on.
     pub(super) row: usize,
+    /// The shaped text, with blank room for the inline value boxes.
     pub(super) galley: Arc<Galley>,
     /// Inline value boxes: the char column they follow, their width in chars and the index
     /// of the value.
@@ -50,6 +51,7 @@ impl LineLayout {
         index - shift
     }
 
+    /// The x of the caret position before buffer column `col`, from the galley's left.
     pub(super) fn x_of_col(&self, col: usize) -> f32 {
         self.galley
             .pos_from_cursor(CCursor::new(self.galley_index(col)))
@@ -61,13 +63,18 @@ impl LineLayout {
 /// Sizes of the monospace font and the gutter.
 #[derive(Clone, Copy)]
 pub(super) struct Metrics {
+    /// The height of a text row, in points.
     pub(super) row_height: f32,
+    /// The width of a monospace char, in points.
     pub(super) char_width: f32,
+    /// The width of the gutter (markers and line numbers), in points.
     pub(super) gutter_width: f32,
+    /// Where the text starts, from the content's left, in points.
     pub(super) text_left: f32,
 }
 
 impl StEditor {
+    /// The sizes of this frame's font and gutter.
     pub(super) fn metrics(&self, ui: &Ui, font: &FontId) -> Metrics {
         let (row_height, char_width) =
             ui.fonts_mut(|fonts| (fonts.row_height(font), fonts.glyph_width(font, '0')));

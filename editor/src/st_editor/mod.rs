@@ -49,7 +49,9 @@ const REPARSE_DELAY_S: f64 = 0.12;
 /// reported changes to its model, and calls [`StEditor::set_text`] when the model changes
 /// from elsewhere (undo, redo, the variable table, a reload).
 pub struct StEditor {
+    /// The text, the ground truth of what is shown; lives as long as the editor.
     buffer: TextBuffer,
+    /// The tree-sitter tree and queries over `buffer`.
     syntax: Syntax,
     /// Whether the tree must be parsed again before it is used.
     syntax_stale: bool,
@@ -64,13 +66,21 @@ pub struct StEditor {
     caret: usize,
     /// The column (in chars) that vertical movement tries to keep.
     preferred_column: Option<usize>,
+    /// Whether changes are refused.
     read_only: bool,
+    /// The app's latest diagnostics, moved along with edits until replaced.
     diagnostics: Vec<EditorDiagnostic>,
+    /// The app's latest monitored values, sorted by where their boxes go.
     inline_values: Vec<InlineValue>,
+    /// The folded blocks.
     folding: Folding,
+    /// The find bar's state.
     find: FindBar,
+    /// The open completion popup.
     completion: Option<Completion>,
+    /// Galleys of the lines shown recently.
     galleys: GalleyCache,
+    /// The words of the find bar and value box.
     texts: EditorTexts,
     /// Set when the caret moved and the next frame must scroll it into view.
     scroll_to_caret: bool,

@@ -17,11 +17,14 @@ type Cached<T> = (u64, Range<usize>, T);
 
 /// The syntax tree of the editor's text and the compiled queries.
 pub struct Syntax {
+    /// The parser; `None` if the grammar does not load (then nothing is parsed).
     parser: Option<Parser>,
+    /// The latest tree, edited along with the text between parses.
     tree: Option<Tree>,
     /// The highlight query and the class of each of its captures; `None` when it does not
     /// compile against the grammar, and the lexical scanner is used instead.
     highlights: Option<(Query, Vec<Option<Highlight>>)>,
+    /// The folding query; `None` when it does not compile, and nothing folds.
     folds: Option<Query>,
     /// Counts changes of the tree (edits and parses), to know when the caches are stale.
     generation: u64,
