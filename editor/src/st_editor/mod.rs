@@ -304,4 +304,6 @@ impl StEditor {
 }
 
 #[cfg(test)]
+mod random_tests;
+#[cfg(test)]
 mod tests;
