@@ -26,6 +26,28 @@ const OPENERS: &[&str] = &[
     "STRUCT",
 ];
 
+/// Words that close or continue a block; typed alone on an indented line, they move back one
+/// level to stand under their opener.
+const CLOSERS: &[&str] = &[
+    "END_IF",
+    "END_FOR",
+    "END_WHILE",
+    "END_REPEAT",
+    "END_CASE",
+    "END_VAR",
+    "END_STRUCT",
+    "END_TYPE",
+    "END_PROGRAM",
+    "END_FUNCTION",
+    "END_FUNCTION_BLOCK",
+    "END_METHOD",
+    "END_ACTION",
+    "END_PROPERTY",
+    "ELSE",
+    "ELSIF",
+    "UNTIL",
+];
+
 /// Whether `c` can be part of an identifier (Chinese names included).
 pub fn is_word_char(c: char) -> bool {
     c.is_alphanumeric() || c == '_'
@@ -183,6 +205,42 @@ impl StEditor {
             ""
         };
         format!("\n{indent}{extra}")
+    }
+
+    /// After a typed character completes a block closer (`END_IF`, `ELSE` …) alone on its
+    /// line, moves the line back one level when it is indented as deep as the line above.
+    /// Returns whether it did.
+    pub(super) fn outdent_closer(&mut self, changes: &mut Vec<TextChange>) -> bool {
+        let line = self.buffer.line_of(self.caret);
+        let range = self.buffer.line_range(line);
+        let text = self.buffer.line(line);
+        let word = text.trim();
+        if self.caret != range.end
+            || !CLOSERS
+                .iter()
+                .any(|closer| closer.eq_ignore_ascii_case(word))
+        {
+            return false;
+        }
+        let indent_of = |text: &str| text.len() - text.trim_start().len();
+        let indent = indent_of(text);
+        let above = (0..line)
+            .rev()
+            .map(|previous| self.buffer.line(previous))
+            .find(|previous| !previous.trim().is_empty())
+            .map_or(0, indent_of);
+        if indent == 0 || indent < above {
+            return false;
+        }
+        let remove = if text.starts_with('\t') {
+            1
+        } else {
+            indent.min(INDENT.len())
+        };
+        self.replace(range.start..range.start + remove, "", changes);
+        self.caret -= remove;
+        self.anchor = self.caret;
+        true
     }
 
     /// Indents (or outdents) every line the selection touches; one change per line, from

@@ -136,6 +136,10 @@ impl StEditor {
             .is_some_and(|c| is_word_char(c) || c == ')' || c == ']');
         self.replace_selection(text, &mut result.changes);
         self.typing_end = Some(self.caret);
+        if self.outdent_closer(&mut result.changes) {
+            result.other = true;
+            self.typing_end = None;
+        }
         if text == "." && after_name {
             self.open_completion(services, self.caret);
         }

@@ -168,6 +168,32 @@ fn enter_keeps_the_indentation_and_indents_after_then() {
 }
 
 #[test]
+fn a_block_closer_typed_on_its_own_line_moves_under_its_opener() {
+    let text = "IF a THEN\n    b := 1;";
+    let mut harness = harness(text, text.len());
+    press(&mut harness, Modifiers::NONE, Key::Enter);
+    type_text(&mut harness, "ELSE");
+    assert_eq!(
+        harness.state().editor.text(),
+        "IF a THEN\n    b := 1;\nELSE"
+    );
+    press(&mut harness, Modifiers::NONE, Key::Enter);
+    type_text(&mut harness, "c;");
+    press(&mut harness, Modifiers::NONE, Key::Enter);
+    type_text(&mut harness, "end_if");
+    assert_eq!(
+        harness.state().editor.text(),
+        "IF a THEN\n    b := 1;\nELSE\n    c;\nend_if"
+    );
+    // A closer already under its opener stays where it is.
+    type_text(&mut harness, ";");
+    press(&mut harness, Modifiers::NONE, Key::Home);
+    type_text(&mut harness, "x");
+    assert!(harness.state().editor.text().ends_with("\nxend_if;"));
+    check_model(&harness);
+}
+
+#[test]
 fn backspace_and_delete_remove_one_char_even_a_chinese_one() {
     let mut harness = harness("// 计数器", 11);
     press(&mut harness, Modifiers::NONE, Key::Backspace);
