@@ -620,3 +620,18 @@ fn reveal_selects_and_scrolls_a_far_line_into_view() {
     assert!(visible.contains(&1500), "{visible:?}");
     assert_eq!(harness.state().editor.selection(), target..target + 6);
 }
+
+#[test]
+fn clicking_the_fold_marker_in_the_gutter_folds_and_unfolds() {
+    let text = "x := 0;\nIF a THEN\n    b := 1;\nEND_IF;\ny := 1;";
+    let mut harness = harness(text, 0);
+    // The marker sits in the gutter, left of the text, on the IF line.
+    let marker = text_pos(&harness, 1, -2.5);
+    click_at(&mut harness, marker);
+    harness.run_steps(2);
+    assert!(harness.state().editor.is_line_hidden(2));
+    assert!(harness.state().editor.is_line_hidden(3));
+    click_at(&mut harness, marker);
+    harness.run_steps(2);
+    assert!(!harness.state().editor.is_line_hidden(2));
+}
