@@ -45,9 +45,16 @@ const REPARSE_DELAY_S: f64 = 0.12;
 
 /// An editor for one Structured Text (a declaration part or a body).
 ///
-/// The app keeps one per open text, shows it with [`StEditor::show`] every frame, applies the
-/// reported changes to its model, and calls [`StEditor::set_text`] when the model changes
-/// from elsewhere (undo, redo, the variable table, a reload).
+/// The app keeps one per open text and, every frame:
+/// - calls [`StEditor::set_text`] with the model's text (nothing happens when it is the same;
+///   after undo, redo, the variable table or a reload the editor takes the new text);
+/// - calls [`StEditor::show`] with a label and its [`LanguageServices`];
+/// - applies [`StEditorOutput::changes`] to its model after the frame, as one undo step per
+///   [`Gesture`] (consecutive `Typing` outputs with the same run merge into one step);
+/// - answers `goto_definition`, `find_references` and `prepared` from the output.
+///
+/// Diagnostics and inline values come from the app with [`StEditor::set_diagnostics`] and
+/// [`StEditor::set_inline_values`]; until the app sends new ones they move with the edits.
 pub struct StEditor {
     /// The text, the ground truth of what is shown; lives as long as the editor.
     buffer: TextBuffer,
