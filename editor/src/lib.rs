@@ -4,11 +4,18 @@
 //! Editors draw from the project model and never change it while drawing: they emit edits that
 //! the app applies after the frame. They see the compiler only through its `ide` facade.
 //!
-//! Today the crate offers the read-only [`CodeView`] with lexical highlighting of Structured
-//! Text, which the studio uses to show POUs, global variable lists and data types.
+//! Today the crate offers [`StEditor`], the editable Structured Text editor (tree-sitter
+//! highlighting, folding, diagnostics, find and replace, completion, inline values), and the
+//! read-only [`CodeView`] with lexical highlighting.
 
 mod code_view;
+mod st_editor;
 mod st_highlight;
 
 pub use code_view::CodeView;
+pub use st_editor::{
+    CompletionItem, CompletionKind, EditorDiagnostic, EditorTexts, Gesture, Highlight, InlineValue,
+    KeywordCompletions, LanguageServices, Severity, StEditor, StEditorOutput, TextBuffer,
+    TextChange,
+};
 pub use st_highlight::{TokenClass, classify_tokens};
