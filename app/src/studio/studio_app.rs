@@ -89,6 +89,14 @@ pub(crate) struct Studio {
     pub password: String,
     pub watch: WatchPaneState,
     pub trace: TracePaneState,
+    /// The trace plot's state.
+    pub trace_view: super::trace_view::TraceViewState,
+    /// Cycle times of every task over the last minutes, for the tasks pane's plot.
+    pub cycle_history: super::cycle_plot::CycleHistory,
+    /// The online state's task statistics generation last added to `cycle_history`.
+    cycles_seen: u64,
+    /// When the studio started, the time origin of the cycle plot.
+    started: Instant,
     /// Whether the online state was given a way to wake the UI.
     waker_set: bool,
     /// Where copies of unsaved changes go; `None` keeps none.
@@ -166,6 +174,10 @@ impl StudioApp {
                 password: String::new(),
                 watch: WatchPaneState::default(),
                 trace: TracePaneState::default(),
+                trace_view: super::trace_view::TraceViewState::default(),
+                cycle_history: super::cycle_plot::CycleHistory::default(),
+                cycles_seen: 0,
+                started: Instant::now(),
                 waker_set: false,
                 recovery,
                 recovery_offer: None,
@@ -553,6 +565,22 @@ impl Studio {
         self.online
             .set_watch(self.watch.watched_paths(self.session.as_ref()), devices);
         self.online.poll(Instant::now());
+        if self.online.tasks_generation() != self.cycles_seen {
+            self.cycles_seen = self.online.tasks_generation();
+            let at_s = self.started.elapsed().as_secs_f64();
+            for task in self.online.tasks() {
+                self.cycle_history.push(
+                    &task.name,
+                    at_s,
+                    task.last_ns,
+                    task.average_ns,
+                    task.max_ns,
+                    task.min_ns,
+                    task.jitter_max_ns,
+                    task.cycles,
+                );
+            }
+        }
         for message in self.online.take_messages() {
             self.status = Some(StatusMessage {
                 text: message.text.clone(),

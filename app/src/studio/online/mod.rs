@@ -150,6 +150,8 @@ pub struct Online {
     cycle: u64,
     forces: Vec<(Place, Vec<u8>)>,
     tasks: Vec<TaskInfo>,
+    /// Counts the task statistics received, so their history is extended once per answer.
+    tasks_generation: u64,
     faults: Vec<Fault>,
     trace: TraceRun,
     messages: Vec<OnlineMessage>,
@@ -185,6 +187,7 @@ impl Online {
             cycle: 0,
             forces: Vec::new(),
             tasks: Vec::new(),
+            tasks_generation: 0,
             faults: Vec::new(),
             trace: TraceRun::default(),
             messages: Vec::new(),
@@ -228,6 +231,11 @@ impl Online {
     /// Task statistics as last reported.
     pub fn tasks(&self) -> &[TaskInfo] {
         &self.tasks
+    }
+
+    /// How many task statistics answers arrived so far.
+    pub fn tasks_generation(&self) -> u64 {
+        self.tasks_generation
     }
 
     /// The target's fault log as last reported.
@@ -761,7 +769,10 @@ impl Online {
                 self.advance_trace();
             }
             Event::Forces(forces) => self.forces = forces,
-            Event::Tasks(tasks) => self.tasks = tasks,
+            Event::Tasks(tasks) => {
+                self.tasks = tasks;
+                self.tasks_generation += 1;
+            }
             Event::Faults(faults) => self.faults = faults,
             Event::TraceStatus(status) => self.trace.status(status),
             Event::TraceProgress(received, total) => self.trace.progress(received, total),

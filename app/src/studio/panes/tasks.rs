@@ -13,44 +13,32 @@ pub(crate) fn tasks_ui(studio: &mut Studio, ui: &mut Ui) {
         ui.label(RichText::new(Text::NotOnline.get(language)).weak());
         return;
     }
-    let micros = |ns: u64| format!("{:.1}", ns as f64 / 1000.0);
-    egui::Grid::new("task_statistics")
-        .num_columns(6)
-        .striped(true)
-        .spacing([16.0, 4.0])
-        .show(ui, |ui| {
-            for header in [
-                Text::Task,
-                Text::Cycles,
-                Text::LastCycle,
-                Text::AverageCycle,
-                Text::MaxCycle,
-                Text::Jitter,
-            ] {
-                ui.strong(header.get(language));
-            }
-            ui.end_row();
-            for task in studio.online.tasks() {
-                let name = RichText::new(&task.name).monospace();
-                ui.label(if task.faulted {
-                    name.color(ui.visuals().error_fg_color)
-                } else {
-                    name
-                });
-                ui.label(task.cycles.to_string());
-                ui.label(micros(task.last_ns));
-                ui.label(micros(task.average_ns));
-                ui.label(micros(task.max_ns));
-                ui.label(micros(task.jitter_max_ns));
-                ui.end_row();
-            }
+    // Cycle times on the left, where people look; the fault log on the right.
+    let width = ui.available_width();
+    let height = ui.available_height();
+    let mut open = None;
+    ui.horizontal_top(|ui| {
+        ui.allocate_ui(egui::vec2(width * 0.62, height), |ui| {
+            super::super::cycle_plot::cycle_plot_ui(ui, &studio.cycle_history, language);
         });
-    ui.separator();
+        ui.separator();
+        ui.vertical(|ui| open = faults_ui(studio, ui));
+    });
+    if let Some(pou) = open {
+        // The POU of a method or action is named `FB.Method`; the document is the POU's.
+        let object = pou.split('.').next().unwrap_or(&pou).to_owned();
+        studio.pending.push(Command::Open(TreeNode::Object(object)));
+    }
+}
+
+/// The fault log; returns the POU of a clicked fault.
+fn faults_ui(studio: &Studio, ui: &mut Ui) -> Option<String> {
+    let language = studio.settings.language;
     ui.strong(Text::Faults.get(language));
     let faults = studio.online.faults();
     if faults.is_empty() {
         ui.label(RichText::new(Text::NoFaults.get(language)).weak());
-        return;
+        return None;
     }
     let mut open = None;
     egui::ScrollArea::vertical()
@@ -75,9 +63,5 @@ pub(crate) fn tasks_ui(studio: &mut Studio, ui: &mut Ui) {
                 }
             }
         });
-    if let Some(pou) = open {
-        // The POU of a method or action is named `FB.Method`; the document is the POU's.
-        let object = pou.split('.').next().unwrap_or(&pou).to_owned();
-        studio.pending.push(Command::Open(TreeNode::Object(object)));
-    }
+    open
 }

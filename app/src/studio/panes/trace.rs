@@ -101,7 +101,7 @@ pub(crate) fn trace_ui(studio: &mut Studio, ui: &mut Ui) {
         .weak(),
     );
     ui.separator();
-    super::super::trace_view::trace_samples_ui(studio, ui);
+    super::super::trace_view::trace_samples_ui(studio, ui, Some(&config));
 }
 
 fn phase_ui(
