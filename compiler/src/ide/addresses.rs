@@ -164,6 +164,10 @@ pub struct LocatedVariable {
     pub name: String,
     /// The address as written.
     pub address: String,
+    /// The type as written.
+    pub ty: String,
+    /// The variable's comment.
+    pub comment: String,
 }
 
 /// Two located variables whose bits overlap: writing one changes the other. A warning, since
@@ -206,6 +210,8 @@ pub fn located_variables(project: &Project) -> Vec<(LocatedVariable, AddressInfo
                     owner: owner.to_owned(),
                     name: variable.name.clone(),
                     address: text.trim().to_owned(),
+                    ty: variable.ty.clone(),
+                    comment: variable.comment.clone(),
                 };
                 found.push((located, info));
             }
