@@ -486,6 +486,17 @@ mod tests {
     }
 
     #[test]
+    fn configuration_entries_keep_their_instance_paths() {
+        let parsed =
+            parse_declarations("VAR_CONFIG\n    Main.fbAxis.xLimit AT %IX1.0 : BOOL;\nEND_VAR\n")
+                .unwrap();
+        let entry = &parsed.variables[0];
+        assert_eq!(entry.section, VarSection::VarConfig);
+        assert_eq!(entry.name, "Main.fbAxis.xLimit");
+        assert_eq!(entry.address.as_deref(), Some("%IX1.0"));
+    }
+
+    #[test]
     fn broken_text_gives_diagnostics_with_ranges() {
         let text = "PROGRAM Main\nVAR\n    x : INT := ;\nEND_VAR\n";
         let errors = parse_declarations(text).unwrap_err();

@@ -154,6 +154,8 @@ mod tests {
         assert!(cell_error(&rows, 1, TextColumn::Name, " ").is_some());
         assert_eq!(cell_error(&rows, 0, TextColumn::Name, "xStart"), None);
         assert_eq!(cell_error(&rows, 1, TextColumn::Name, "rSpeed2"), None);
+        // Chinese names are identifiers, as in CODESYS with Unicode identifiers.
+        assert_eq!(cell_error(&rows, 1, TextColumn::Name, "速度"), None);
     }
 
     #[test]
