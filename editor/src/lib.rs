@@ -5,17 +5,23 @@
 //! the app applies after the frame. They see the compiler only through its `ide` facade.
 //!
 //! Today the crate offers [`StEditor`], the editable Structured Text editor (tree-sitter
-//! highlighting, folding, diagnostics, find and replace, completion, inline values), and the
-//! read-only [`CodeView`] with lexical highlighting.
+//! highlighting, folding, diagnostics, find and replace, completion, inline values); the
+//! [`VariableTable`] that edits declarations in place; the I/O mapping view ([`io_mapping_ui`])
+//! that lists each channel of the controller's I/O areas and of the Modbus TCP devices with the
+//! variables bound to it; and the read-only [`CodeView`] with lexical highlighting.
 
 mod code_view;
+mod io_mapping;
 mod st_editor;
 mod st_highlight;
+mod variable_table;
 
 pub use code_view::CodeView;
+pub use io_mapping::{IoMappingOutput, io_mapping_ui};
 pub use st_editor::{
     CompletionItem, CompletionKind, EditorDiagnostic, EditorTexts, Gesture, Highlight, InlineValue,
     KeywordCompletions, LanguageServices, Severity, StEditor, StEditorOutput, TextBuffer,
     TextChange,
 };
 pub use st_highlight::{TokenClass, classify_tokens};
+pub use variable_table::{VariableTable, VariableTableOutput, overlap_warnings};

@@ -3,8 +3,12 @@
 //!
 //! From the syntax of one text: diagnostics, the document outline, semantic token classes and
 //! folding ranges. From the project: hover, go to definition, find references, completion
-//! candidates and the diagnostics of one POU ([`semantic`]).
+//! candidates and the diagnostics of one POU ([`semantic`]). For the declaration table and the
+//! I/O mapping: direct addresses checked against their types, overlapping located variables, and
+//! declaration text read back into variables.
 
+mod addresses;
+mod declarations;
 mod folding;
 mod outline;
 pub mod semantic;
@@ -12,6 +16,13 @@ mod semantic_tokens;
 
 use std::ops::Range;
 
+pub use addresses::{
+    AddressArea, AddressInfo, LocatedVariable, Overlap, address_info, check_address,
+    located_overlaps, located_variables,
+};
+pub use declarations::{
+    DeclarationHeader, DeclarationKind, ParsedDeclarations, parse_declarations,
+};
 pub use folding::folding_ranges;
 pub use outline::{OutlineItem, OutlineKind, outline};
 pub use semantic::{
