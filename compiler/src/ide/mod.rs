@@ -26,8 +26,8 @@ pub use declarations::{
 pub use folding::folding_ranges;
 pub use outline::{OutlineItem, OutlineKind, outline};
 pub use semantic::{
-    Completion, Definition, DefinitionKind, Hover, Reference, completions, definition, hover,
-    pou_diagnostics, references,
+    Completion, Definition, DefinitionKind, Hover, MonitoredName, Reference, completions,
+    definition, hover, monitor_paths, pou_diagnostics, references,
 };
 pub use semantic_tokens::{SemanticClass, SemanticToken, semantic_tokens};
 

@@ -100,10 +100,156 @@ pub fn completions(project: &Project, target: &TextTarget, offset: usize) -> Vec
     }
 }
 
+/// A name in a body that online monitoring can show a value for.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct MonitoredName {
+    /// The name's byte range in the body (the last name of a member chain such as
+    /// `fbConveyor.tonStart.ET` covers `ET` only).
+    pub range: Range<usize>,
+    /// The variable's path on the target, such as `Main.fbConveyor.tonStart.ET` or
+    /// `GVL_IO.xStartButton`.
+    pub path: String,
+}
+
+/// The variables of the body `target` with their paths on the target, for values shown inline
+/// while online. `instance` is the path of the instance whose values are shown: the program's
+/// name for a program body, an instance path such as `Main.fbConveyor` for a function block's
+/// body. Locals of functions and methods (which live on the stack) have no path and are left
+/// out, as are names that are not variables.
+pub fn monitor_paths(project: &Project, target: &TextTarget, instance: &str) -> Vec<MonitoredName> {
+    let Some(body) = body(project, target) else {
+        return Vec::new();
+    };
+    let text = body.text;
+    let resolutions = crate::sema::body_resolutions(project, &body);
+    let mut out: Vec<MonitoredName> = Vec::new();
+    // Names that start a chain without a value of their own (`GVL_IO` in `GVL_IO.xStart`).
+    let mut namespaces: Vec<MonitoredName> = Vec::new();
+    for resolution in resolutions {
+        let definition = &resolution.definition;
+        if definition.kind == DefinitionKind::GlobalVarList {
+            namespaces.push(MonitoredName {
+                range: resolution.range.clone(),
+                path: definition.name.clone(),
+            });
+            continue;
+        }
+        if definition.kind != DefinitionKind::Variable {
+            continue;
+        }
+        // A member follows a `.` right after the previous name of its chain.
+        let before = text[..resolution.range.start.min(text.len())].trim_end();
+        let is_member = before.ends_with('.');
+        let path = if is_member {
+            let dot = before.len() - 1;
+            let owner_end = text[..dot].trim_end().len();
+            let owner = out
+                .iter()
+                .rev()
+                .chain(namespaces.iter().rev())
+                .find(|name| name.range.end == owner_end);
+            match owner {
+                Some(owner) => format!("{}.{}", owner.path, definition.name),
+                None => continue,
+            }
+        } else {
+            match (&definition.object, &definition.container) {
+                // Locals of methods and accessors live on the stack.
+                (_, Some(_)) => continue,
+                (Some(object), None) if object.eq_ignore_ascii_case(&body.pou.name) => {
+                    if body.pou.kind == project_model::PouKind::Function {
+                        continue;
+                    }
+                    format!("{instance}.{}", definition.name)
+                }
+                (Some(object), None) => format!("{object}.{}", definition.name),
+                (None, _) => continue,
+            }
+        };
+        out.push(MonitoredName {
+            range: resolution.range.clone(),
+            path,
+        });
+    }
+    // Members the checker does not name one by one (outputs of standard function blocks,
+    // members of structures) follow their owner in the text: `ctuPackages.CV`.
+    let mut index = 0;
+    while index < out.len() {
+        let owner = out[index].clone();
+        index += 1;
+        let rest = &text[owner.range.end.min(text.len())..];
+        let after_space = rest.trim_start();
+        let Some(after_dot) = after_space.strip_prefix('.') else {
+            continue;
+        };
+        let member = after_dot.trim_start();
+        let length = member
+            .char_indices()
+            .take_while(|(i, c)| {
+                c.is_ascii_alphabetic() || *c == '_' || (*i > 0 && c.is_ascii_digit())
+            })
+            .count();
+        if length == 0 {
+            continue;
+        }
+        let start = text.len() - member.len();
+        let range = start..start + length;
+        if out.iter().any(|name| name.range == range) {
+            continue;
+        }
+        out.push(MonitoredName {
+            range,
+            path: format!("{}.{}", owner.path, &member[..length]),
+        });
+    }
+    out.sort_by_key(|name| name.range.start);
+    out
+}
+
 /// The diagnostics of one POU, its declarations and all its bodies: what the editor shows
 /// after an edit of that POU.
 pub fn pou_diagnostics(project: &Project, pou: &str) -> Vec<ProjectDiagnostic> {
     crate::sema::check_pou(project, pou)
+}
+
+#[cfg(test)]
+mod monitor_tests {
+    use super::*;
+
+    #[test]
+    fn names_of_the_example_program_get_their_paths_on_the_target() {
+        let project = project_model::load_project(&assets::example_project_dir())
+            .map(|loaded| loaded.project)
+            .unwrap_or_else(|error| panic!("{error}"));
+        let names = monitor_paths(&project, &TextTarget::Pou("Main".into()), "Main");
+        let paths: Vec<&str> = names.iter().map(|n| n.path.as_str()).collect();
+        assert!(paths.contains(&"GVL_IO.xStartButton"), "{paths:?}");
+        assert!(paths.contains(&"Main.fbConveyor.xMotorOn"), "{paths:?}");
+        assert!(paths.contains(&"Main.ctuPackages.CV"), "{paths:?}");
+        // Every range covers the last name of its path.
+        let text = project_model::st_body_files(&project)
+            .into_iter()
+            .find(|b| b.target == TextTarget::Pou("Main".into()))
+            .map(|b| b.text.to_owned())
+            .unwrap_or_default();
+        for name in &names {
+            let last = name.path.rsplit('.').next().unwrap_or_default();
+            assert!(
+                text[name.range.clone()].eq_ignore_ascii_case(last),
+                "{name:?}"
+            );
+        }
+        // A function block's body is shown for one instance.
+        let fb = monitor_paths(
+            &project,
+            &TextTarget::Pou("FB_Conveyor".into()),
+            "Main.fbConveyor",
+        );
+        assert!(
+            fb.iter().any(|n| n.path == "Main.fbConveyor.xMotorOn"),
+            "{fb:?}"
+        );
+    }
 }
 
 #[cfg(test)]
