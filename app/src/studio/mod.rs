@@ -17,7 +17,9 @@ mod property_view;
 mod session;
 mod settings;
 mod studio_app;
+mod task_editor;
 mod trace_view;
+mod tree_actions;
 mod tree_node;
 
 use std::path::PathBuf;

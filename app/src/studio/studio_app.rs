@@ -16,6 +16,8 @@ use super::pane_behavior::PaneBehavior;
 use super::panes::{TracePaneState, WatchPaneState};
 use super::session::Session;
 use super::settings::{SETTINGS_KEY, Settings};
+use super::task_editor::TaskEditorState;
+use super::tree_actions::TreeEditState;
 use super::tree_node::TreeNode;
 
 /// The studio: the docking layout and everything the panes show.
@@ -88,6 +90,10 @@ pub(crate) struct Studio {
     pub password: String,
     pub watch: WatchPaneState,
     pub trace: TracePaneState,
+    /// The device tree's dialog and dirty markers.
+    pub tree_edit: TreeEditState,
+    /// The task configuration editor's selection and typed text.
+    pub task_editor: TaskEditorState,
 }
 
 impl StudioApp {
@@ -124,6 +130,8 @@ impl StudioApp {
                 password: String::new(),
                 watch: WatchPaneState::default(),
                 trace: TracePaneState::default(),
+                tree_edit: TreeEditState::default(),
+                task_editor: TaskEditorState::default(),
             },
         };
         if let Some(dir) = project_dir {
