@@ -161,13 +161,14 @@ pub fn device_tree_ui(
             );
         });
     // The Delete key deletes the selected node while the tree has the user's attention: a row
-    // has the keyboard focus, or the pointer is over the tree and no text field is being
-    // edited (the Delete key of a text editor must never delete a POU).
+    // has the keyboard focus, or the pointer is over the tree and no other widget has the
+    // focus (the Delete key of an editor must never delete a POU).
     let pointer_over_tree = ui
         .ctx()
         .pointer_hover_pos()
         .is_some_and(|pos| scroll.inner_rect.contains(pos));
-    let attention = tree.row_focused || (pointer_over_tree && !ui.ctx().text_edit_focused());
+    let attention =
+        tree.row_focused || (pointer_over_tree && !ui.ctx().egui_wants_keyboard_input());
     if keys
         && attention
         && let Some(node) = selection.filter(|node| rename_scope(node).is_some())

@@ -137,6 +137,10 @@ impl TreeDialog {
                     ui.add_enabled(problem.is_none(), egui::Button::new(Text::Ok.get(language)));
                 if ok.clicked() || (entered && problem.is_none()) {
                     outcome = DialogOutcome::Confirmed(self.action());
+                } else if entered {
+                    // Enter took the focus away from a refused name: give it back, so the
+                    // user can correct the name right away.
+                    self.refocus();
                 }
                 if ui.button(Text::Cancel.get(language)).clicked() {
                     outcome = DialogOutcome::Cancelled;
@@ -148,6 +152,13 @@ impl TreeDialog {
             return DialogOutcome::Cancelled;
         }
         modal.inner
+    }
+
+    /// Makes the name field take the keyboard focus again on the next frame.
+    fn refocus(&mut self) {
+        match self {
+            Self::NewPou { focused, .. } | Self::Rename { focused, .. } => *focused = false,
+        }
     }
 
     /// The dialog's title and fields; true when Enter was pressed in a field.

@@ -10,6 +10,8 @@ mod lists;
 mod moves;
 mod names;
 mod new_objects;
+#[cfg(test)]
+mod tests;
 
 use project_model::{Edit, EditError, Folder, Node, Object, PouKind, Project, TreeEdit};
 
