@@ -376,3 +376,56 @@ fn the_task_editor_changes_interval_priority_and_calls_and_refuses_bad_values() 
     );
     assert!(project(&harness).task("MainTask").is_some());
 }
+
+#[test]
+fn a_task_made_an_event_task_asks_for_its_trigger_and_takes_it() {
+    let dir = example_copy();
+    let mut harness = studio(dir.path());
+    harness.get_by_label("MotionTask").focus();
+    harness.run();
+    harness.key_press(Key::Enter);
+    harness.run();
+    harness.get_by_label("Kind of MotionTask").click();
+    harness.run();
+    harness.get_by_label("Event").click();
+    harness.run();
+    assert_eq!(
+        project(&harness).task("MotionTask").unwrap().kind,
+        TaskKind::Event {
+            trigger: String::new()
+        }
+    );
+    assert!(
+        harness
+            .query_by_label_contains("BOOL variable whose rising edge")
+            .is_some()
+    );
+    // An interval means nothing to an event task, so it has no interval field.
+    assert!(harness.query_by_label("Interval of MotionTask").is_none());
+
+    enter_text(
+        &mut harness,
+        "Trigger variable of MotionTask",
+        "GVL_IO.x Start",
+    );
+    assert!(
+        harness
+            .query_by_label_contains("is not a variable")
+            .is_some()
+    );
+    enter_text(
+        &mut harness,
+        "Trigger variable of MotionTask",
+        "GVL_IO.xStart",
+    );
+    assert_eq!(
+        project(&harness).task("MotionTask").unwrap().kind,
+        TaskKind::Event {
+            trigger: "GVL_IO.xStart".into()
+        }
+    );
+    assert_eq!(
+        undo_label(&harness).as_deref(),
+        Some("Set trigger of MotionTask to GVL_IO.xStart")
+    );
+}

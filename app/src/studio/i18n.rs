@@ -193,6 +193,7 @@ pub enum Text {
     ProgramToCall,
     ChooseProgram,
     AddCall,
+    TriggerNeeded,
 }
 
 impl Text {
@@ -381,6 +382,10 @@ impl Text {
             Self::ProgramToCall => ("Program to call", "要调用的程序"),
             Self::ChooseProgram => ("Choose program", "选择程序"),
             Self::AddCall => ("Add call", "添加调用"),
+            Self::TriggerNeeded => (
+                "Enter the BOOL variable whose rising edge starts the task",
+                "请输入其上升沿启动任务的 BOOL 变量",
+            ),
         };
         match language {
             Language::English => english,

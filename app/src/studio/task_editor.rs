@@ -255,11 +255,19 @@ impl Editor<'_> {
             {
                 ui.label(RichText::new(describe_time_us(micros)).weak().small());
             }
+            let missing_trigger = field == Field::Trigger && text.trim().is_empty();
             if let Some(reason) = self.state.refused.get(&key) {
                 ui.label(
                     RichText::new(reason)
                         .small()
                         .color(ui.visuals().error_fg_color),
+                );
+            } else if missing_trigger {
+                // A task just made an event task has no trigger yet: say what it needs.
+                ui.label(
+                    RichText::new(Text::TriggerNeeded.get(language))
+                        .small()
+                        .color(ui.visuals().warn_fg_color),
                 );
             }
         });
