@@ -429,3 +429,29 @@ fn a_task_made_an_event_task_asks_for_its_trigger_and_takes_it() {
         Some("Set trigger of MotionTask to GVL_IO.xStart")
     );
 }
+
+#[test]
+fn the_tree_menus_dialogs_and_task_editor_speak_chinese_when_chosen() {
+    let dir = example_copy();
+    let settings = Settings {
+        language: app::studio::Language::SimplifiedChinese,
+        ..Settings::default()
+    };
+    let app = StudioApp::new(settings, Some(dir.path().to_owned()));
+    let mut harness = Harness::builder()
+        .with_size([1280.0, 800.0])
+        .build_ui_state(|ui, app: &mut StudioApp| app.ui(ui), app);
+    harness.run();
+    menu(&mut harness, "应用", "添加 POU");
+    assert!(harness.query_by_label("功能块").is_some());
+    harness.get_by_label("取消").click();
+    harness.run();
+    assert!(project(&harness).application.object("POU").is_none());
+
+    harness.get_by_label("任务配置").focus();
+    harness.run();
+    harness.key_press(Key::Enter);
+    harness.run();
+    assert!(harness.query_by_label("MainTask 的优先级").is_some());
+    assert!(harness.query_by_label("添加任务").is_some());
+}

@@ -248,6 +248,7 @@ impl TreeUi<'_> {
         }
         if response.dragged() {
             ui.ctx().set_cursor_icon(egui::CursorIcon::Grabbing);
+            drag_preview(ui.ctx(), label);
         }
         self.drop_target(ui, &response, &node);
         response.context_menu(|ui| self.menu(ui, &node));
@@ -480,6 +481,22 @@ impl TreeUi<'_> {
             },
         );
     }
+}
+
+/// The name of the dragged node beside the pointer, so the user sees what is being moved.
+fn drag_preview(ctx: &egui::Context, label: &str) {
+    let Some(pointer) = ctx.pointer_interact_pos() else {
+        return;
+    };
+    egui::Area::new(egui::Id::unique("device_tree_drag_preview"))
+        .order(egui::Order::Tooltip)
+        .interactable(false)
+        .fixed_pos(pointer + egui::vec2(14.0, 4.0))
+        .show(ctx, |ui| {
+            egui::Frame::popup(ui.style()).show(ui, |ui| {
+                ui.label(label);
+            });
+        });
 }
 
 /// `10000` µs as `10 ms`, `500` as `500 µs`.
