@@ -1,10 +1,18 @@
-//! The device tree panel: controller, tasks, application, I/O, Modbus devices and axes.
+//! The device tree panel: controller, tasks, application, I/O, Modbus devices and axes, with
+//! context menus, drag and drop and dirty markers for editing it.
+
+use std::collections::HashSet;
 
 use egui::collapsing_header::CollapsingState;
-use egui::{Color32, RichText, Ui};
+use egui::{Color32, Key, Modifiers, RichText, Ui};
 use project_model::{Folder, IoDirection, Node, Project, TaskKind};
 
 use super::i18n::{Language, Text};
+use super::studio_app::{Command, Studio};
+use super::tree_actions::{
+    DialogOutcome, DropPlace, ListKind, NewObject, TreeAction, TreeDialog, accepts, place_at, plan,
+    rename_scope,
+};
 use super::tree_node::{TreeNode, object_tag};
 
 /// What the user did in the tree this frame.
@@ -12,22 +20,120 @@ use super::tree_node::{TreeNode, object_tag};
 pub struct TreeResponse {
     /// A node was clicked.
     pub clicked: Option<TreeNode>,
-    /// A node was double-clicked (or Enter was pressed on it): open it.
+    /// A node was double-clicked (or Enter was pressed on it, or Open chosen in its menu).
     pub opened: Option<TreeNode>,
+    /// Changes asked for through menus, drag and drop or the Delete key.
+    pub actions: Vec<TreeAction>,
+    /// A dialog to open (a new POU's name, a rename).
+    pub dialog: Option<TreeDialog>,
 }
 
-/// Draws the device tree of `project` and reports clicks; it never changes the project.
+/// The payload of a node being dragged in the tree.
+#[derive(Clone, Debug)]
+struct DraggedNode(TreeNode);
+
+/// Draws the devices pane: the tree, its dialog, and the changes they ask for, which are queued
+/// as commands (never applied while drawing).
+pub(crate) fn devices_pane_ui(studio: &mut Studio, ui: &mut Ui) {
+    let language = studio.settings.language;
+    let Some(session) = &studio.session else {
+        match &studio.failed_dir {
+            Some(dir) => {
+                ui.label(RichText::new(Text::CouldNotOpen.get(language)).strong());
+                ui.label(RichText::new(dir.display().to_string()).weak());
+            }
+            None => {
+                ui.label(Text::NoProjectOpen.get(language));
+            }
+        }
+        ui.label(RichText::new(Text::NoProjectHint.get(language)).weak());
+        return;
+    };
+    let project = &session.project;
+    let dirty = studio
+        .tree_edit
+        .dirty
+        .get(project, session.history.revision(), &session.saved);
+    let dialog_open = studio.tree_edit.dialog.is_some();
+    let mut response = device_tree_ui(
+        ui,
+        project,
+        studio.selection.as_ref(),
+        language,
+        dirty,
+        !dialog_open,
+    );
+    if let Some(dialog) = response.dialog.take() {
+        studio.tree_edit.dialog = Some(dialog);
+    }
+    if let Some(dialog) = &mut studio.tree_edit.dialog {
+        match dialog.ui(ui.ctx(), project, language) {
+            DialogOutcome::Open => {}
+            DialogOutcome::Cancelled => studio.tree_edit.dialog = None,
+            DialogOutcome::Confirmed(action) => {
+                studio.tree_edit.dialog = None;
+                response.actions.push(action);
+            }
+        }
+    }
+    let mut planned = Vec::new();
+    for action in &response.actions {
+        let deletes = matches!(action, TreeAction::Delete(_));
+        planned.push((deletes, plan(project, action)));
+    }
+    if let Some(node) = response.clicked {
+        studio.selection = Some(node);
+    }
+    if let Some(node) = response.opened {
+        studio.selection = Some(node.clone());
+        if node.is_document() {
+            studio.pending.push(Command::Open(node));
+        }
+    }
+    for (deletes, result) in planned {
+        match result {
+            Ok(Some(plan)) => {
+                studio.pending.push(Command::Edit(plan.label, plan.edits));
+                if deletes {
+                    studio.selection = None;
+                }
+                if let Some(node) = plan.select {
+                    studio.selection = Some(node);
+                }
+                if let Some(node) = plan.open {
+                    studio.pending.push(Command::Open(node));
+                }
+            }
+            Ok(None) => {}
+            Err(reason) => {
+                studio.status = Some(super::StatusMessage {
+                    text: reason,
+                    is_error: true,
+                });
+            }
+        }
+    }
+}
+
+/// Draws the device tree of `project` and reports what the user did; it never changes the
+/// project. `dirty` nodes get a `*` after their name; `keys` lets the Delete key act.
 pub fn device_tree_ui(
     ui: &mut Ui,
     project: &Project,
     selection: Option<&TreeNode>,
     language: Language,
+    dirty: &HashSet<TreeNode>,
+    keys: bool,
 ) -> TreeResponse {
     let mut tree = TreeUi {
+        project,
         selection,
+        language,
+        dirty,
+        row_focused: false,
         response: TreeResponse::default(),
     };
-    egui::ScrollArea::both()
+    let scroll = egui::ScrollArea::both()
         .auto_shrink([false, false])
         .show(ui, |ui| {
             tree.branch(
@@ -54,11 +160,32 @@ pub fn device_tree_ui(
                 },
             );
         });
+    // The Delete key deletes the selected node while the tree has the user's attention: a row
+    // has the keyboard focus, or the pointer is over the tree and no other widget has the
+    // focus (the Delete key of an editor must never delete a POU).
+    let pointer_over_tree = ui
+        .ctx()
+        .pointer_hover_pos()
+        .is_some_and(|pos| scroll.inner_rect.contains(pos));
+    let attention =
+        tree.row_focused || (pointer_over_tree && !ui.ctx().egui_wants_keyboard_input());
+    if keys
+        && attention
+        && let Some(node) = selection.filter(|node| rename_scope(node).is_some())
+        && ui.input_mut(|input| input.consume_key(Modifiers::NONE, Key::Delete))
+    {
+        tree.response.actions.push(TreeAction::Delete(node.clone()));
+    }
     tree.response
 }
 
 struct TreeUi<'a> {
+    project: &'a Project,
     selection: Option<&'a TreeNode>,
+    language: Language,
+    dirty: &'a HashSet<TreeNode>,
+    /// Whether a row had the keyboard focus this frame.
+    row_focused: bool,
     response: TreeResponse,
 }
 
@@ -79,7 +206,9 @@ impl TreeUi<'_> {
             .body(|ui| children(self, ui));
     }
 
-    /// One selectable row: a tag, the name (the row's accessible label) and a weak detail.
+    /// One selectable row: a tag, the name (the row's accessible label, with ` *` when the node
+    /// differs from the saved project) and a weak detail. The row opens a context menu, can be
+    /// dragged when the node can move, and takes drops of nodes that may land on it.
     fn row(&mut self, ui: &mut Ui, node: TreeNode, tag: &str, label: &str, detail: &str) {
         // A fixed-width tag column keeps the names aligned.
         let tag_size = egui::vec2(30.0, ui.spacing().interact_size.y);
@@ -92,17 +221,139 @@ impl TreeUi<'_> {
             },
         );
         let selected = self.selection == Some(&node);
-        let response = ui.selectable_label(selected, label);
+        let text = if self.dirty.contains(&node) {
+            format!("{label} *")
+        } else {
+            label.to_owned()
+        };
+        let movable = rename_scope(&node).is_some();
+        let mut response = ui.selectable_label(selected, text);
+        if movable {
+            response = response.interact(egui::Sense::drag());
+        }
         if !detail.is_empty() {
             ui.label(RichText::new(detail).weak().small());
         }
+        self.row_focused |= response.has_focus();
         if response.double_clicked()
-            || (response.has_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter)))
+            || (response.has_focus() && ui.input(|i| i.key_pressed(Key::Enter)))
         {
             self.response.opened = Some(node.clone());
         }
         if response.clicked() {
-            self.response.clicked = Some(node);
+            self.response.clicked = Some(node.clone());
+        }
+        if movable && response.drag_started() {
+            egui::DragAndDrop::set_payload(ui.ctx(), DraggedNode(node.clone()));
+        }
+        if response.dragged() {
+            ui.ctx().set_cursor_icon(egui::CursorIcon::Grabbing);
+            drag_preview(ui.ctx(), label);
+        }
+        self.drop_target(ui, &response, &node);
+        response.context_menu(|ui| self.menu(ui, &node));
+    }
+
+    /// Shows where a dragged node would land on this row, and reports the drop.
+    fn drop_target(&mut self, ui: &Ui, response: &egui::Response, node: &TreeNode) {
+        let Some(dragged) = response.dnd_hover_payload::<DraggedNode>() else {
+            return;
+        };
+        if !accepts(&dragged.0, node) {
+            return;
+        }
+        let rect = response.rect;
+        let pointer = ui.ctx().pointer_interact_pos().unwrap_or(rect.center());
+        let fraction = (pointer.y - rect.top()) / rect.height().max(1.0);
+        let place = place_at(node, fraction);
+        let stroke = egui::Stroke::new(2.0, ui.visuals().selection.stroke.color);
+        let right = ui.clip_rect().right();
+        match place {
+            DropPlace::Before => {
+                ui.painter().hline(rect.left()..=right, rect.top(), stroke);
+            }
+            DropPlace::After => {
+                ui.painter()
+                    .hline(rect.left()..=right, rect.bottom(), stroke);
+            }
+            DropPlace::Into => {
+                ui.painter()
+                    .rect_stroke(rect, 2.0, stroke, egui::StrokeKind::Outside);
+            }
+        }
+        if let Some(dropped) = response.dnd_release_payload::<DraggedNode>() {
+            self.response.actions.push(TreeAction::Move {
+                node: dropped.0.clone(),
+                target: node.clone(),
+                place,
+            });
+        }
+    }
+
+    /// The context menu of a node: what can be added below it and done with it.
+    fn menu(&mut self, ui: &mut Ui, node: &TreeNode) {
+        let language = self.language;
+        let item = |ui: &mut Ui, text: Text| ui.button(text.get(language)).clicked();
+        if node.is_document() && item(ui, Text::OpenNode) {
+            self.response.opened = Some(node.clone());
+        }
+        let folder = match node {
+            TreeNode::Application => Some(Vec::new()),
+            TreeNode::Folder(path) => Some(path.clone()),
+            _ => None,
+        };
+        if let Some(folder) = folder {
+            if item(ui, Text::AddPou) {
+                self.response.dialog = Some(TreeDialog::new_pou(self.project, folder.clone()));
+            }
+            for (text, kind) in [
+                (Text::AddGvl, NewObject::Gvl),
+                (Text::AddDataType, NewObject::Structure),
+                (Text::AddWatchList, NewObject::WatchList),
+                (Text::AddTrace, NewObject::Trace),
+            ] {
+                if item(ui, text) {
+                    self.response.actions.push(TreeAction::AddObject {
+                        folder: folder.clone(),
+                        kind,
+                    });
+                }
+            }
+            if item(ui, Text::AddFolder) {
+                self.response.actions.push(TreeAction::AddFolder { folder });
+            }
+        }
+        let list = match node {
+            TreeNode::TaskConfiguration => Some(ListKind::Tasks),
+            TreeNode::IoAreas => Some(ListKind::IoAreas),
+            TreeNode::ModbusDevices => Some(ListKind::ModbusDevices),
+            TreeNode::Axes => Some(ListKind::Axes),
+            other => ListKind::of_entry(other).map(|(kind, _)| kind),
+        };
+        if let Some(kind) = list {
+            let text = match kind {
+                ListKind::Tasks => Text::AddTask,
+                ListKind::IoAreas => Text::AddIoArea,
+                ListKind::ModbusDevices => Text::AddModbusDevice,
+                ListKind::Axes => Text::AddAxis,
+            };
+            if item(ui, text) {
+                self.response.actions.push(TreeAction::AddListEntry(kind));
+            }
+        }
+        if rename_scope(node).is_some() {
+            ui.separator();
+            if item(ui, Text::Rename) {
+                self.response.dialog = TreeDialog::rename(node.clone());
+            }
+            if item(ui, Text::Duplicate) {
+                self.response
+                    .actions
+                    .push(TreeAction::Duplicate(node.clone()));
+            }
+            if item(ui, Text::Delete) {
+                self.response.actions.push(TreeAction::Delete(node.clone()));
+            }
         }
     }
 
@@ -230,6 +481,22 @@ impl TreeUi<'_> {
             },
         );
     }
+}
+
+/// The name of the dragged node beside the pointer, so the user sees what is being moved.
+fn drag_preview(ctx: &egui::Context, label: &str) {
+    let Some(pointer) = ctx.pointer_interact_pos() else {
+        return;
+    };
+    egui::Area::new(egui::Id::unique("device_tree_drag_preview"))
+        .order(egui::Order::Tooltip)
+        .interactable(false)
+        .fixed_pos(pointer + egui::vec2(14.0, 4.0))
+        .show(ctx, |ui| {
+            egui::Frame::popup(ui.style()).show(ui, |ui| {
+                ui.label(label);
+            });
+        });
 }
 
 /// `10000` µs as `10 ms`, `500` as `500 µs`.

@@ -36,7 +36,6 @@ pub fn document_ui(ui: &mut Ui, project: &Project, node: &TreeNode, language: La
 enum Content<'a> {
     Object(&'a Object),
     Controller(&'a project_model::Controller),
-    Task(&'a project_model::Task),
     IoArea(&'a project_model::IoArea),
     ModbusDevice(&'a project_model::ModbusDevice),
     Axis(&'a project_model::Axis),
@@ -46,7 +45,6 @@ fn document_content<'a>(project: &'a Project, node: &TreeNode) -> Option<Content
     match node {
         TreeNode::Object(name) => project.application.object(name).map(Content::Object),
         TreeNode::Controller => Some(Content::Controller(&project.controller)),
-        TreeNode::Task(name) => project.task(name).map(Content::Task),
         TreeNode::IoArea(name) => project
             .io_areas
             .iter()
@@ -80,7 +78,6 @@ fn content_ui(ui: &mut Ui, node: &TreeNode, content: Content<'_>, language: Lang
         Content::Object(Object::Trace(trace)) => property_view_ui(ui, &salt, trace),
         Content::Object(Object::WatchList(watch)) => property_view_ui(ui, &salt, watch),
         Content::Controller(controller) => property_view_ui(ui, &salt, controller),
-        Content::Task(task) => property_view_ui(ui, &salt, task),
         Content::IoArea(area) => property_view_ui(ui, &salt, area),
         Content::ModbusDevice(device) => property_view_ui(ui, &salt, device),
         Content::Axis(axis) => property_view_ui(ui, &salt, axis),

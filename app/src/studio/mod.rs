@@ -19,8 +19,10 @@ mod recovery;
 mod session;
 mod settings;
 mod studio_app;
+mod task_editor;
 mod trace_plot;
 mod trace_view;
+mod tree_actions;
 mod tree_node;
 
 use std::path::PathBuf;

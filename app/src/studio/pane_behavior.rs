@@ -3,14 +3,15 @@
 use egui::{RichText, Ui};
 use egui_tiles::{Behavior, SimplificationOptions, Tile, TileId, Tiles, UiResponse};
 
-use super::device_tree::device_tree_ui;
+use super::device_tree::devices_pane_ui;
 use super::dock::Dock;
 use super::document_view::document_ui;
 use super::i18n::Text;
 use super::pane::Pane;
 use super::panes;
 use super::property_view::property_view_ui;
-use super::studio_app::{Command, Studio};
+use super::studio_app::Studio;
+use super::task_editor::task_editor_ui;
 use super::tree_node::TreeNode;
 
 /// The egui_tiles behaviour of the studio: it draws panes from the studio's state and lets
@@ -25,7 +26,7 @@ impl Behavior<Pane> for PaneBehavior<'_> {
         egui::Frame::new().inner_margin(4).show(ui, |ui| {
             ui.set_min_size(ui.available_size());
             match pane {
-                Pane::Devices => devices_ui(studio, ui),
+                Pane::Devices => devices_pane_ui(studio, ui),
                 Pane::Properties => properties_ui(studio, ui),
                 Pane::Document(node) => document_pane_ui(studio, ui, node),
                 Pane::Messages => panes::messages_ui(studio, ui),
@@ -41,6 +42,9 @@ impl Behavior<Pane> for PaneBehavior<'_> {
     fn tab_title_for_pane(&mut self, pane: &Pane) -> egui::WidgetText {
         let language = self.studio.settings.language;
         match pane {
+            Pane::Document(TreeNode::TaskConfiguration) => {
+                Text::TaskConfiguration.get(language).into()
+            }
             Pane::Document(node) => {
                 let project = self.studio.session.as_ref().map(|s| &s.project);
                 node.title(project).into()
@@ -71,33 +75,6 @@ impl Behavior<Pane> for PaneBehavior<'_> {
 
     fn simplification_options(&self) -> SimplificationOptions {
         Dock::simplification_options()
-    }
-}
-
-fn devices_ui(studio: &mut Studio, ui: &mut Ui) {
-    let language = studio.settings.language;
-    let Some(session) = &studio.session else {
-        match &studio.failed_dir {
-            Some(dir) => {
-                ui.label(RichText::new(Text::CouldNotOpen.get(language)).strong());
-                ui.label(RichText::new(dir.display().to_string()).weak());
-            }
-            None => {
-                ui.label(Text::NoProjectOpen.get(language));
-            }
-        }
-        ui.label(RichText::new(Text::NoProjectHint.get(language)).weak());
-        return;
-    };
-    let response = device_tree_ui(ui, &session.project, studio.selection.as_ref(), language);
-    if let Some(node) = response.clicked {
-        studio.selection = Some(node);
-    }
-    if let Some(node) = response.opened {
-        studio.selection = Some(node.clone());
-        if node.is_document() {
-            studio.pending.push(Command::Open(node));
-        }
     }
 }
 
@@ -190,6 +167,11 @@ fn object_summary_ui(ui: &mut Ui, object: &project_model::Object) {
 }
 
 fn document_pane_ui(studio: &mut Studio, ui: &mut Ui, node: &TreeNode) {
+    // Tasks are edited in place, so their editor needs the studio to queue its edits.
+    if matches!(node, TreeNode::Task(_) | TreeNode::TaskConfiguration) {
+        task_editor_ui(studio, ui, node);
+        return;
+    }
     let language = studio.settings.language;
     if let Some(session) = &studio.session {
         document_ui(ui, &session.project, node, language);

@@ -2,6 +2,7 @@
 
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
 
 use project_model::{
     History, LoadError, LoadProblem, MANIFEST_FILE_NAME, Project, SaveError, SaveReport,
@@ -24,6 +25,9 @@ pub struct Session {
     pub files: BTreeSet<PathBuf>,
     /// Warnings from loading, such as files in the folder that are not part of the project.
     pub warnings: Vec<LoadProblem>,
+    /// The project as last loaded or saved, which the device tree compares nodes with to mark
+    /// the changed ones. Shared, so a view can tell cheaply whether it was replaced.
+    pub saved: Arc<Project>,
 }
 
 /// Why "Save as" refused or failed.
@@ -43,6 +47,7 @@ impl Session {
         let loaded = load_project(dir)?;
         Ok(Self {
             dir: dir.to_owned(),
+            saved: Arc::new(loaded.project.clone()),
             project: loaded.project,
             history: History::new(),
             files: loaded.files,
@@ -55,6 +60,7 @@ impl Session {
         let report = save_project(&self.project, &self.dir, &self.files)?;
         self.files = report.files.clone();
         self.history.mark_saved();
+        self.saved = Arc::new(self.project.clone());
         Ok(report)
     }
 
@@ -73,6 +79,7 @@ impl Session {
         self.dir = dir.to_owned();
         self.files = report.files.clone();
         self.history.mark_saved();
+        self.saved = Arc::new(self.project.clone());
         Ok(report)
     }
 

@@ -17,6 +17,8 @@ use super::panes::{TracePaneState, WatchPaneState};
 use super::recovery::{Recovered, Recovery};
 use super::session::Session;
 use super::settings::{SETTINGS_KEY, Settings};
+use super::task_editor::TaskEditorState;
+use super::tree_actions::TreeEditState;
 use super::tree_node::TreeNode;
 
 /// The studio: the docking layout and everything the panes show.
@@ -104,6 +106,10 @@ pub(crate) struct Studio {
     /// Unsaved changes from an earlier session, offered when the project opened.
     pub recovery_offer: Option<Recovered>,
     recovery_state: RecoveryState,
+    /// The device tree's dialog and dirty markers.
+    pub tree_edit: TreeEditState,
+    /// The task configuration editor's selection and typed text.
+    pub task_editor: TaskEditorState,
 }
 
 /// How the studio starts.
@@ -182,6 +188,8 @@ impl StudioApp {
                 recovery,
                 recovery_offer: None,
                 recovery_state: RecoveryState::default(),
+                tree_edit: TreeEditState::default(),
+                task_editor: TaskEditorState::default(),
             },
         };
         if let Some(dir) = project_dir {

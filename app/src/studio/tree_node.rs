@@ -39,6 +39,7 @@ impl TreeNode {
         matches!(
             self,
             Self::Controller
+                | Self::TaskConfiguration
                 | Self::Task(_)
                 | Self::Object(_)
                 | Self::IoArea(_)

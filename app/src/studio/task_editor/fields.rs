@@ -1,0 +1,217 @@
+//! The typed fields of a task and the checks a value passes before it becomes an edit.
+
+use project_model::{Project, Task, TaskKind, Watchdog, is_valid_identifier};
+
+use super::time_literal::{format_time_us, parse_time_us};
+use crate::studio::i18n::Text;
+use crate::studio::tree_actions::{NameScope, name_problem};
+
+/// A field of a task typed as text.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Field {
+    /// The task's name.
+    Name,
+    /// A cyclic task's interval.
+    Interval,
+    /// An event task's trigger variable.
+    Trigger,
+    /// The priority, 0 to 31.
+    Priority,
+    /// The watchdog's time.
+    WatchdogTime,
+    /// The watchdog's sensitivity.
+    Sensitivity,
+}
+
+/// The highest priority number (the lowest priority), as in CODESYS.
+pub const LOWEST_PRIORITY: u8 = 31;
+
+/// What a watchdog starts with when it is switched on: twice the interval of a cyclic task,
+/// 100 ms otherwise, tripping on the first overrun.
+pub fn default_watchdog(task: &Task) -> Watchdog {
+    let time_us = match task.kind {
+        TaskKind::Cyclic { interval_us } => interval_us.saturating_mul(2),
+        _ => 100_000,
+    };
+    Watchdog {
+        time_us,
+        sensitivity: 1,
+    }
+}
+
+impl Field {
+    /// The field's name in the interface.
+    pub fn text(self) -> Text {
+        match self {
+            Self::Name => Text::Name,
+            Self::Interval => Text::Interval,
+            Self::Trigger => Text::TriggerVariable,
+            Self::Priority => Text::Priority,
+            Self::WatchdogTime => Text::WatchdogTime,
+            Self::Sensitivity => Text::Sensitivity,
+        }
+    }
+
+    /// The field's current value as text, or `None` when the task has no such field (the
+    /// interval of an event task, the time of a disabled watchdog).
+    pub fn current(self, task: &Task) -> Option<String> {
+        match (self, &task.kind) {
+            (Self::Name, _) => Some(task.name.clone()),
+            (Self::Interval, TaskKind::Cyclic { interval_us }) => {
+                Some(format_time_us(*interval_us))
+            }
+            (Self::Trigger, TaskKind::Event { trigger }) => Some(trigger.clone()),
+            (Self::Priority, _) => Some(task.priority.to_string()),
+            (Self::WatchdogTime, _) => task.watchdog.map(|w| format_time_us(w.time_us)),
+            (Self::Sensitivity, _) => task.watchdog.map(|w| w.sensitivity.to_string()),
+            (Self::Interval | Self::Trigger, _) => None,
+        }
+    }
+
+    /// The task with this field set to `input`, and the undo label of the change; or the reason
+    /// the input is refused.
+    pub fn apply(
+        self,
+        project: &Project,
+        task: &Task,
+        input: &str,
+    ) -> Result<(Task, String), String> {
+        let input = input.trim();
+        let mut changed = task.clone();
+        let name = &task.name;
+        let label = match self {
+            Self::Name => {
+                if let Some(problem) =
+                    name_problem(project, NameScope::Task, input, Some(name.as_str()))
+                {
+                    return Err(problem);
+                }
+                changed.name = input.to_owned();
+                format!("Rename task {name} to {input}")
+            }
+            Self::Interval => {
+                let interval_us = parse_time_us(input)?;
+                changed.kind = TaskKind::Cyclic { interval_us };
+                format!("Set interval of {name} to {}", format_time_us(interval_us))
+            }
+            Self::Trigger => {
+                let valid = !input.is_empty() && input.split('.').all(is_valid_identifier);
+                if !valid {
+                    return Err(format!(
+                        "'{input}' is not a variable: write its path, such as GVL_IO.xStart"
+                    ));
+                }
+                changed.kind = TaskKind::Event {
+                    trigger: input.to_owned(),
+                };
+                format!("Set trigger of {name} to {input}")
+            }
+            Self::Priority => {
+                let priority = input
+                    .parse::<u8>()
+                    .ok()
+                    .filter(|p| *p <= LOWEST_PRIORITY)
+                    .ok_or_else(|| {
+                        format!(
+                            "'{input}' is not a priority: use 0 (highest) to {LOWEST_PRIORITY} (lowest)"
+                        )
+                    })?;
+                changed.priority = priority;
+                format!("Set priority of {name} to {priority}")
+            }
+            Self::WatchdogTime => {
+                let time_us = parse_time_us(input)?;
+                let mut watchdog = task.watchdog.unwrap_or_else(|| default_watchdog(task));
+                watchdog.time_us = time_us;
+                changed.watchdog = Some(watchdog);
+                format!("Set watchdog time of {name} to {}", format_time_us(time_us))
+            }
+            Self::Sensitivity => {
+                let sensitivity = input
+                    .parse::<u32>()
+                    .ok()
+                    .filter(|s| *s >= 1)
+                    .ok_or_else(|| {
+                        format!(
+                            "'{input}' is not a sensitivity: give how many overruns in a row trip the watchdog (1 or more)"
+                        )
+                    })?;
+                let mut watchdog = task.watchdog.unwrap_or_else(|| default_watchdog(task));
+                watchdog.sensitivity = sensitivity;
+                changed.watchdog = Some(watchdog);
+                format!("Set watchdog sensitivity of {name} to {sensitivity}")
+            }
+        };
+        Ok((changed, label))
+    }
+}
+
+/// Why `program` cannot be added to `task`'s calls, or `None` when it can: it must be a
+/// PROGRAM of the project that the task does not call yet.
+pub fn call_problem(project: &Project, task: &Task, program: &str) -> Option<String> {
+    let program = program.trim();
+    if program.is_empty() {
+        return Some("choose a program to call".to_owned());
+    }
+    let is_program = matches!(
+        project.application.object(program),
+        Some(project_model::Object::Pou(pou)) if pou.kind == project_model::PouKind::Program
+    );
+    if !is_program {
+        return Some(format!("the project has no PROGRAM named '{program}'"));
+    }
+    if task
+        .programs
+        .iter()
+        .any(|called| project_model::same_identifier(called, program))
+    {
+        return Some(format!("{} already calls {program}", task.name));
+    }
+    None
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn task() -> Task {
+        Task {
+            name: "MainTask".into(),
+            kind: TaskKind::Cyclic {
+                interval_us: 10_000,
+            },
+            priority: 1,
+            watchdog: None,
+            programs: Vec::new(),
+        }
+    }
+
+    #[test]
+    fn valid_values_change_the_task_and_say_so() {
+        let project = Project::default();
+        let (changed, label) = Field::Priority.apply(&project, &task(), "5").unwrap();
+        assert_eq!(changed.priority, 5);
+        assert_eq!(label, "Set priority of MainTask to 5");
+        let (changed, _) = Field::Interval.apply(&project, &task(), "T#2ms").unwrap();
+        assert_eq!(changed.kind, TaskKind::Cyclic { interval_us: 2000 });
+        let (changed, _) = Field::Sensitivity.apply(&project, &task(), "3").unwrap();
+        assert_eq!(
+            changed.watchdog,
+            Some(Watchdog {
+                time_us: 20_000,
+                sensitivity: 3
+            })
+        );
+    }
+
+    #[test]
+    fn out_of_range_values_are_refused() {
+        let project = Project::default();
+        assert!(Field::Priority.apply(&project, &task(), "32").is_err());
+        assert!(Field::Priority.apply(&project, &task(), "-1").is_err());
+        assert!(Field::Interval.apply(&project, &task(), "0").is_err());
+        assert!(Field::Sensitivity.apply(&project, &task(), "0").is_err());
+        assert!(Field::Trigger.apply(&project, &task(), "a..b").is_err());
+        assert!(call_problem(&project, &task(), "Missing").is_some());
+    }
+}

@@ -1,0 +1,406 @@
+//! Editing the device tree: what the user asked for ([`TreeAction`]) and the edits that do it
+//! ([`Plan`]), plus the state the tree keeps between frames (its dialog and dirty markers).
+//!
+//! Planning reads the project and never changes it; the studio applies a plan's edits after the
+//! frame as one undo step, as every other view does.
+
+mod dialog;
+mod dirty;
+mod lists;
+mod moves;
+mod names;
+mod new_objects;
+#[cfg(test)]
+mod tests;
+
+use project_model::{Edit, EditError, Folder, Node, Object, PouKind, Project, TreeEdit};
+
+pub use dialog::{DialogOutcome, TreeDialog};
+pub use dirty::DirtyMarkers;
+pub use lists::ListKind;
+pub use moves::{DropPlace, accepts, place_at, plan_move};
+pub use names::{NameScope, name_problem, unique_name};
+pub use new_objects::NewObject;
+
+use self::new_objects::{new_pou, pou_kind_description};
+use super::tree_node::TreeNode;
+
+/// A change of the device tree the user asked for.
+#[derive(Clone, Debug, PartialEq)]
+pub enum TreeAction {
+    /// Adds a POU with an empty ST body to `folder`.
+    AddPou {
+        /// The folder's path (empty for the application).
+        folder: Vec<String>,
+        /// Program, function block or function.
+        kind: PouKind,
+        /// The name, already checked by the dialog.
+        name: String,
+        /// A function's return type.
+        return_type: Option<String>,
+    },
+    /// Adds an object with a fresh default name to `folder`.
+    AddObject {
+        /// The folder's path.
+        folder: Vec<String>,
+        /// What to add.
+        kind: NewObject,
+    },
+    /// Adds a folder with a fresh default name to `folder`.
+    AddFolder {
+        /// The parent folder's path.
+        folder: Vec<String>,
+    },
+    /// Appends an entry with a fresh default name to a list of the device tree.
+    AddListEntry(ListKind),
+    /// Gives a node another name.
+    Rename {
+        /// The node.
+        node: TreeNode,
+        /// The new name.
+        name: String,
+    },
+    /// Copies a node, with a fresh name, right after it.
+    Duplicate(TreeNode),
+    /// Deletes a node (undoable, like everything else).
+    Delete(TreeNode),
+    /// Moves a node to where it was dropped.
+    Move {
+        /// The dragged node.
+        node: TreeNode,
+        /// The node it was dropped on.
+        target: TreeNode,
+        /// Where, relative to the target.
+        place: DropPlace,
+    },
+}
+
+/// The edits that carry out a [`TreeAction`], applied as one undo step named `label`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Plan {
+    /// What the undo step is called ("Rename FB_Motor to FB_Drive").
+    pub label: String,
+    /// The edits, in order.
+    pub edits: Vec<Edit>,
+    /// A node to open in a tab once the edits are applied.
+    pub open: Option<TreeNode>,
+    /// A node to select once the edits are applied.
+    pub select: Option<TreeNode>,
+}
+
+/// What the device tree keeps between frames.
+#[derive(Default)]
+pub struct TreeEditState {
+    /// The dialog open over the tree, if any.
+    pub dialog: Option<TreeDialog>,
+    /// Which nodes differ from the saved project.
+    pub dirty: DirtyMarkers,
+}
+
+/// The edits that carry out `action` on `project`: `Ok(None)` when it changes nothing, or the
+/// reason it cannot be done.
+pub fn plan(project: &Project, action: &TreeAction) -> Result<Option<Plan>, String> {
+    match action {
+        TreeAction::AddPou {
+            folder,
+            kind,
+            name,
+            return_type,
+        } => {
+            if let Some(problem) = name_problem(project, NameScope::Object, name, None) {
+                return Err(problem);
+            }
+            let pou = new_pou(name.clone(), *kind, return_type.clone());
+            Ok(Some(add_object(
+                project,
+                folder,
+                Object::Pou(pou),
+                pou_kind_description(*kind),
+            )?))
+        }
+        TreeAction::AddObject { folder, kind } => {
+            let name = unique_name(kind.base_name(), |name| {
+                NameScope::Object.is_taken(project, name, None)
+            });
+            let object = kind.build(project, name);
+            Ok(Some(add_object(
+                project,
+                folder,
+                object,
+                kind.description(),
+            )?))
+        }
+        TreeAction::AddFolder { folder } => {
+            let parent = existing_folder(project, folder)?;
+            let name = unique_name("Folder", |name| {
+                NameScope::Folder(folder).is_taken(project, name, None)
+            });
+            let mut path = folder.clone();
+            path.push(name.clone());
+            Ok(Some(Plan {
+                label: format!("Add folder {name}"),
+                edits: vec![Edit::Tree(TreeEdit::Insert {
+                    folder: folder.clone(),
+                    index: parent.children.len(),
+                    node: Node::Folder(Folder {
+                        name,
+                        children: Vec::new(),
+                    }),
+                })],
+                open: None,
+                select: Some(TreeNode::Folder(path)),
+            }))
+        }
+        TreeAction::AddListEntry(kind) => {
+            let (edit, name) = kind.add(project);
+            Ok(Some(Plan {
+                label: format!("Add {} {name}", kind.noun()),
+                edits: vec![edit],
+                open: Some(kind.entry(name)),
+                select: None,
+            }))
+        }
+        TreeAction::Rename { node, name } => plan_rename(project, node, name),
+        TreeAction::Duplicate(node) => plan_duplicate(project, node).map(Some),
+        TreeAction::Delete(node) => plan_delete(project, node).map(Some),
+        TreeAction::Move {
+            node,
+            target,
+            place,
+        } => plan_move(project, node, target, *place),
+    }
+}
+
+/// The folder path and index of an application node (object or folder).
+pub fn locate(project: &Project, node: &TreeNode) -> Option<(Vec<String>, usize)> {
+    match node {
+        TreeNode::Object(name) => project.application.locate(name),
+        TreeNode::Folder(path) => {
+            let (last, parent) = path.split_last()?;
+            let index = project
+                .application
+                .folder(parent)?
+                .children
+                .iter()
+                .position(|child| matches!(child, Node::Folder(f) if f.name == *last))?;
+            Some((parent.to_vec(), index))
+        }
+        _ => None,
+    }
+}
+
+/// The name scope a node's name lives in, and its current name; `None` for nodes that cannot
+/// be renamed.
+pub fn rename_scope<'a>(node: &'a TreeNode) -> Option<(NameScope<'a>, &'a str)> {
+    match node {
+        TreeNode::Object(name) => Some((NameScope::Object, name)),
+        TreeNode::Folder(path) => {
+            let (last, parent) = path.split_last()?;
+            Some((NameScope::Folder(parent), last))
+        }
+        other => ListKind::of_entry(other).map(|(kind, name)| (kind.scope(), name)),
+    }
+}
+
+fn existing_folder<'a>(project: &'a Project, path: &[String]) -> Result<&'a Folder, String> {
+    project
+        .application
+        .folder(path)
+        .ok_or_else(|| EditError::NoSuchFolder(path.join("/")).to_string())
+}
+
+fn add_object(
+    project: &Project,
+    folder: &[String],
+    object: Object,
+    description: &str,
+) -> Result<Plan, String> {
+    let parent = existing_folder(project, folder)?;
+    let name = object.name().to_owned();
+    Ok(Plan {
+        label: format!("Add {description} {name}"),
+        edits: vec![Edit::Tree(TreeEdit::Insert {
+            folder: folder.to_vec(),
+            index: parent.children.len(),
+            node: Node::Object(object),
+        })],
+        open: Some(TreeNode::Object(name)),
+        select: None,
+    })
+}
+
+fn missing(project: &Project, node: &TreeNode) -> String {
+    EditError::NoSuchObject(node.title(Some(project))).to_string()
+}
+
+fn plan_rename(project: &Project, node: &TreeNode, name: &str) -> Result<Option<Plan>, String> {
+    let (scope, old) = rename_scope(node).ok_or_else(|| missing(project, node))?;
+    if old == name {
+        return Ok(None);
+    }
+    if let Some(problem) = name_problem(project, scope, name, Some(old)) {
+        return Err(problem);
+    }
+    let label = format!("Rename {old} to {name}");
+    if let Some((kind, _)) = ListKind::of_entry(node) {
+        let index = kind
+            .index_of(project, old)
+            .ok_or_else(|| missing(project, node))?;
+        let edit = kind
+            .renamed(project, index, name)
+            .ok_or_else(|| missing(project, node))?;
+        return Ok(Some(Plan {
+            label,
+            edits: vec![edit],
+            open: None,
+            select: Some(kind.entry(name.to_owned())),
+        }));
+    }
+    let (folder, index) = locate(project, node).ok_or_else(|| missing(project, node))?;
+    let mut edits = vec![Edit::Tree(TreeEdit::Rename {
+        folder: folder.clone(),
+        index,
+        name: name.to_owned(),
+    })];
+    let select = match node {
+        TreeNode::Folder(_) => {
+            let mut path = folder;
+            path.push(name.to_owned());
+            TreeNode::Folder(path)
+        }
+        _ => {
+            // Tasks call programs by name: they follow the rename in the same undo step, so
+            // renaming a program never leaves a task calling one that does not exist.
+            edits.extend(task_calls_renamed(project, old, name));
+            TreeNode::Object(name.to_owned())
+        }
+    };
+    Ok(Some(Plan {
+        label,
+        edits,
+        open: None,
+        select: Some(select),
+    }))
+}
+
+/// The task edits that make calls of program `old` call `new`.
+fn task_calls_renamed(project: &Project, old: &str, new: &str) -> Vec<Edit> {
+    let is_program = matches!(
+        project.application.object(old),
+        Some(Object::Pou(pou)) if pou.kind == PouKind::Program
+    );
+    if !is_program {
+        return Vec::new();
+    }
+    project
+        .tasks
+        .iter()
+        .enumerate()
+        .filter(|(_, task)| {
+            task.programs
+                .iter()
+                .any(|p| project_model::same_identifier(p, old))
+        })
+        .map(|(index, task)| {
+            let mut item = task.clone();
+            for program in &mut item.programs {
+                if project_model::same_identifier(program, old) {
+                    *program = new.to_owned();
+                }
+            }
+            Edit::Tasks(project_model::ListEdit::Replace { index, item })
+        })
+        .collect()
+}
+
+fn plan_duplicate(project: &Project, node: &TreeNode) -> Result<Plan, String> {
+    if let Some((kind, name)) = ListKind::of_entry(node) {
+        let index = kind
+            .index_of(project, name)
+            .ok_or_else(|| missing(project, node))?;
+        let copy = kind.fresh_name(project, name);
+        let edit = kind
+            .duplicated(project, index, &copy)
+            .ok_or_else(|| missing(project, node))?;
+        return Ok(Plan {
+            label: format!("Duplicate {name} as {copy}"),
+            edits: vec![edit],
+            open: None,
+            select: Some(kind.entry(copy)),
+        });
+    }
+    let (folder, index) = locate(project, node).ok_or_else(|| missing(project, node))?;
+    let original = existing_folder(project, &folder)?
+        .children
+        .get(index)
+        .ok_or_else(|| missing(project, node))?;
+    let mut copy = original.clone();
+    // Object names are global: every object in the copy needs a new one, different from the
+    // project's names and from the copy's other new names.
+    let mut chosen: Vec<String> = Vec::new();
+    let mut fresh_object_name = |object: &mut Object| {
+        let name = unique_name(object.name(), |candidate| {
+            NameScope::Object.is_taken(project, candidate, None)
+                || chosen
+                    .iter()
+                    .any(|other| project_model::same_identifier(other, candidate))
+        });
+        chosen.push(name.clone());
+        object.set_name(name);
+    };
+    let (copy_name, select) = match &mut copy {
+        Node::Object(object) => {
+            fresh_object_name(object);
+            let name = object.name().to_owned();
+            (name.clone(), TreeNode::Object(name))
+        }
+        Node::Folder(copied) => {
+            let name = unique_name(&copied.name, |candidate| {
+                NameScope::Folder(&folder).is_taken(project, candidate, None)
+            });
+            copied.name = name.clone();
+            rename_objects(copied, &mut fresh_object_name);
+            let mut path = folder.clone();
+            path.push(name.clone());
+            (name, TreeNode::Folder(path))
+        }
+    };
+    Ok(Plan {
+        label: format!("Duplicate {} as {copy_name}", original.name()),
+        edits: vec![Edit::Tree(TreeEdit::Insert {
+            folder,
+            index: index + 1,
+            node: copy,
+        })],
+        open: None,
+        select: Some(select),
+    })
+}
+
+fn rename_objects(folder: &mut Folder, rename: &mut impl FnMut(&mut Object)) {
+    for child in &mut folder.children {
+        match child {
+            Node::Object(object) => rename(object),
+            Node::Folder(sub) => rename_objects(sub, rename),
+        }
+    }
+}
+
+fn plan_delete(project: &Project, node: &TreeNode) -> Result<Plan, String> {
+    let name = node.title(Some(project));
+    let edit = if let Some((kind, entry)) = ListKind::of_entry(node) {
+        let index = kind
+            .index_of(project, entry)
+            .ok_or_else(|| missing(project, node))?;
+        kind.removed(index)
+    } else {
+        let (folder, index) = locate(project, node).ok_or_else(|| missing(project, node))?;
+        Edit::Tree(TreeEdit::Remove { folder, index })
+    };
+    Ok(Plan {
+        label: format!("Delete {name}"),
+        edits: vec![edit],
+        open: None,
+        select: None,
+    })
+}
