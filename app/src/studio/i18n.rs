@@ -198,6 +198,9 @@ pub enum Text {
     ChooseProgram,
     AddCall,
     TriggerNeeded,
+    AsText,
+    AsTable,
+    ReferencesTo,
 }
 
 impl Text {
@@ -354,6 +357,9 @@ impl Text {
             ),
             Self::Recover => ("Recover", "恢复"),
             Self::Discard => ("Discard", "丢弃"),
+            Self::AsText => ("Text", "文本"),
+            Self::AsTable => ("Table", "表格"),
+            Self::ReferencesTo => ("References to", "引用"),
             Self::NoBuildYet => (
                 "Not built yet: F11 builds the project",
                 "尚未编译：按 F11 编译项目",

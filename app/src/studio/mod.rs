@@ -20,6 +20,7 @@ mod session;
 mod settings;
 mod studio_app;
 mod task_editor;
+mod text_documents;
 mod trace_plot;
 mod trace_view;
 mod tree_actions;

@@ -18,6 +18,7 @@ use super::recovery::{Recovered, Recovery};
 use super::session::Session;
 use super::settings::{SETTINGS_KEY, Settings};
 use super::task_editor::TaskEditorState;
+use super::text_documents::{Reveal, TextDocuments};
 use super::tree_actions::TreeEditState;
 use super::tree_node::TreeNode;
 
@@ -60,6 +61,20 @@ pub(crate) enum Command {
     Open(TreeNode),
     /// Apply edits to the project as one undo step.
     Edit(String, Vec<project_model::Edit>),
+    /// Apply a text editor's edits; typing with the same merge key joins one undo step.
+    EditText {
+        label: String,
+        edits: Vec<project_model::Edit>,
+        merge_key: Option<String>,
+    },
+    /// Open a document and put the caret at a place in it.
+    Reveal(TreeNode, Reveal),
+    /// List every reference to the name at a byte offset of a body.
+    FindReferences(project_model::TextTarget, usize),
+    /// Bring a tool pane forward.
+    ShowPane(super::pane::Pane),
+    /// Say something in the status bar.
+    Status(String),
 }
 
 /// Everything but the layout, so panes can be drawn while the layout is borrowed.
@@ -91,6 +106,8 @@ pub(crate) struct Studio {
     pub password: String,
     pub watch: WatchPaneState,
     pub trace: TracePaneState,
+    /// The text editors of the open documents.
+    pub texts: TextDocuments,
     /// The trace plot's state.
     pub trace_view: super::trace_view::TraceViewState,
     /// Cycle times of every task over the last minutes, for the tasks pane's plot.
@@ -180,6 +197,7 @@ impl StudioApp {
                 password: String::new(),
                 watch: WatchPaneState::default(),
                 trace: TracePaneState::default(),
+                texts: TextDocuments::default(),
                 trace_view: super::trace_view::TraceViewState::default(),
                 cycle_history: super::cycle_plot::CycleHistory::default(),
                 cycles_seen: 0,
@@ -213,6 +231,7 @@ impl StudioApp {
                 studio.build = None;
                 close_stale_documents(&mut self.dock, &session.project);
                 studio.recovery_state = RecoveryState::default();
+                studio.texts.clear();
                 studio.recovery_offer = studio
                     .recovery
                     .as_ref()
@@ -280,6 +299,24 @@ impl StudioApp {
         &self.studio.settings
     }
 
+    /// The live check's findings in a POU as `CODE: message`, for tests and tools.
+    pub fn live_findings(&self, pou: &str) -> Vec<String> {
+        self.studio.texts.live_findings(pou)
+    }
+
+    /// The variable paths whose values the open editors show inline.
+    pub fn inline_paths(&self) -> Vec<String> {
+        self.studio.texts.inline.paths().cloned().collect()
+    }
+
+    /// The selection of the editor of a body, if it is open.
+    pub fn body_selection(
+        &self,
+        target: &project_model::TextTarget,
+    ) -> Option<std::ops::Range<usize>> {
+        self.studio.texts.body_selection(target)
+    }
+
     /// The docking layout.
     pub fn dock(&self) -> &Dock {
         &self.dock
@@ -332,6 +369,16 @@ impl StudioApp {
                 Command::Open(node) => {
                     self.studio.selection = Some(node.clone());
                     self.dock.open_document(node);
+                }
+                Command::Reveal(node, reveal) => {
+                    self.studio.selection = Some(node.clone());
+                    self.studio.texts.reveal = Some((node.clone(), reveal));
+                    self.dock.open_document(node);
+                }
+                Command::ShowPane(pane) => self.dock.show(&pane),
+                Command::FindReferences(target, offset) => {
+                    self.studio.find_references(&target, offset);
+                    self.dock.show(&super::pane::Pane::Messages);
                 }
                 Command::ResetLayout => {
                     let open = self.dock.documents();
@@ -550,6 +597,7 @@ impl Studio {
 
     fn take_in_background_results(&mut self, ctx: &egui::Context) {
         self.keep_recovery_copy(ctx);
+        self.texts.inline.begin_frame();
         if let Some(job) = &self.build {
             match job.poll() {
                 Some(outcome) => {
@@ -570,8 +618,13 @@ impl Studio {
             .as_ref()
             .map(|session| session.project.modbus_devices.as_slice())
             .unwrap_or_default();
-        self.online
-            .set_watch(self.watch.watched_paths(self.session.as_ref()), devices);
+        let mut watched = self.watch.watched_paths(self.session.as_ref());
+        for path in self.texts.inline.paths() {
+            if !watched.contains(path) {
+                watched.push(path.clone());
+            }
+        }
+        self.online.set_watch(watched, devices);
         self.online.poll(Instant::now());
         if self.online.tasks_generation() != self.cycles_seen {
             self.cycles_seen = self.online.tasks_generation();
@@ -634,6 +687,10 @@ impl Studio {
                 is_error: true,
             },
         });
+        if errors > 0 {
+            self.pending
+                .push(Command::ShowPane(super::pane::Pane::Messages));
+        }
         let login = std::mem::take(&mut self.login_after_build);
         let built = outcome.image.is_some();
         self.last_build = Some(outcome);
@@ -725,7 +782,13 @@ impl Studio {
             Command::Stop => self.online.stop(),
             Command::Reset(kind) => self.online.reset(kind),
             Command::WritePrepared | Command::ForcePrepared => {
-                let prepared = self.watch.prepared_values(self.session.as_ref());
+                let mut prepared = self.watch.prepared_values(self.session.as_ref());
+                // Values prepared in an editor's inline boxes go too, and are used up as
+                // CODESYS uses them up.
+                let inline: Vec<(String, String)> = std::mem::take(&mut self.texts.inline.prepared)
+                    .into_iter()
+                    .collect();
+                prepared.extend(inline);
                 let result = if command == Command::WritePrepared {
                     self.online.write(&prepared)
                 } else {
@@ -735,11 +798,88 @@ impl Studio {
                     Ok(()) => Vec::new(),
                     Err(refused) => refused,
                 };
+                if let Some((path, reason)) = self.watch.refused.first() {
+                    self.status = Some(StatusMessage {
+                        text: format!("{path}: {reason}"),
+                        is_error: true,
+                    });
+                }
             }
             Command::ReleaseAllForces => self.online.unforce_all(),
             Command::Edit(label, edits) => self.apply(&label, edits),
-            Command::Open(_) | Command::ResetLayout | Command::OpenDialog => {}
+            Command::EditText {
+                label,
+                edits,
+                merge_key,
+            } => self.apply_text(&label, edits, merge_key.as_deref()),
+            Command::Status(text) => {
+                self.status = Some(StatusMessage {
+                    text,
+                    is_error: false,
+                })
+            }
+            Command::Open(_)
+            | Command::ResetLayout
+            | Command::OpenDialog
+            | Command::Reveal(..)
+            | Command::ShowPane(_)
+            | Command::FindReferences(..) => {}
         }
+    }
+
+    /// Applies a text editor's edits: typing with the same merge key joins the last undo
+    /// step, anything else is a step of its own.
+    fn apply_text(
+        &mut self,
+        label: &str,
+        edits: Vec<project_model::Edit>,
+        merge_key: Option<&str>,
+    ) {
+        let Some(session) = &mut self.session else {
+            return;
+        };
+        let result = match merge_key {
+            Some(key) => session
+                .history
+                .apply_merging(&mut session.project, label, edits, key),
+            None => {
+                session.history.break_merging();
+                session.history.apply(&mut session.project, label, edits)
+            }
+        };
+        if let Err(error) = result {
+            self.status = Some(StatusMessage {
+                text: format!("{label}: {error}"),
+                is_error: true,
+            });
+        }
+    }
+
+    /// Lists every reference to the name at `offset` of `target` for the messages pane.
+    fn find_references(&mut self, target: &project_model::TextTarget, offset: usize) {
+        let Some(session) = &self.session else { return };
+        let project = &session.project;
+        let name = compiler::ide::definition(project, target, offset)
+            .map(|definition| definition.name)
+            .unwrap_or_default();
+        let bodies = project_model::st_body_files(project);
+        let found = compiler::ide::references(project, target, offset);
+        self.texts.references = found
+            .into_iter()
+            .filter_map(|reference| {
+                let body = bodies.iter().find(|body| body.target == reference.target)?;
+                let (line, column) =
+                    super::build_job::line_column(body.text, reference.range.start);
+                let text = body.text.lines().nth(line - 1).unwrap_or_default().trim();
+                Some(super::text_documents::ReferenceItem {
+                    label: format!("{}:{line}:{column}: {text}", reference.file.display()),
+                    node: TreeNode::Object(body.pou.name.clone()),
+                    target: reference.target.clone(),
+                    range: reference.range.clone(),
+                })
+            })
+            .collect();
+        self.texts.references_of = name;
     }
 
     /// Applies one gesture's edits as one undo step.

@@ -96,8 +96,14 @@ impl StEditor {
         let response = ui.interact(rect, id, Sense::click_and_drag());
         let label_text = label.to_owned();
         let enabled = ui.is_enabled();
-        response
-            .widget_info(|| WidgetInfo::labeled(Role::MultilineTextInput, enabled, &label_text));
+        // Screen readers (and UI tests) read the text as the widget's value, as egui's own
+        // text edits expose theirs; egui asks only while accessibility is on.
+        let buffer = &self.buffer;
+        response.widget_info(|| {
+            let mut info = WidgetInfo::labeled(Role::MultilineTextInput, enabled, &label_text);
+            info.current_text_value = Some(buffer.text().to_owned());
+            info
+        });
         if std::mem::take(&mut self.focus_requested)
             || response.clicked()
             || response.drag_started()

@@ -50,6 +50,7 @@ pub(crate) fn messages_ui(studio: &mut Studio, ui: &mut Ui) {
     });
     ui.separator();
     let mut open = None;
+    let mut reveal = None;
     egui::ScrollArea::vertical()
         .id_salt("messages")
         .auto_shrink([false, false])
@@ -98,6 +99,23 @@ pub(crate) fn messages_ui(studio: &mut Studio, ui: &mut Ui) {
                         }
                     });
             }
+            if !studio.texts.references.is_empty() {
+                ui.separator();
+                ui.strong(format!(
+                    "{} {} ({})",
+                    Text::ReferencesTo.get(language),
+                    studio.texts.references_of,
+                    studio.texts.references.len()
+                ));
+                for reference in &studio.texts.references {
+                    if ui
+                        .link(RichText::new(&reference.label).monospace())
+                        .clicked()
+                    {
+                        reveal = Some(reference.clone());
+                    }
+                }
+            }
             for message in &studio.online_messages {
                 let color = if message.is_error {
                     error
@@ -107,9 +125,21 @@ pub(crate) fn messages_ui(studio: &mut Studio, ui: &mut Ui) {
                 ui.label(RichText::new(format!("online: {}", message.text)).color(color));
             }
         });
+    if let Some(reference) = reveal {
+        studio.pending.push(Command::Reveal(
+            reference.node,
+            crate::studio::text_documents::Reveal::Body(reference.target, reference.range),
+        ));
+    }
     if let Some(message) = open
         && let Some(node) = message.node
     {
-        studio.pending.push(Command::Open(node));
+        match message.place {
+            Some((target, range)) => studio.pending.push(Command::Reveal(
+                node,
+                crate::studio::text_documents::Reveal::Body(target, range),
+            )),
+            None => studio.pending.push(Command::Open(node)),
+        }
     }
 }
