@@ -201,6 +201,13 @@ pub enum Text {
     AsText,
     AsTable,
     ReferencesTo,
+    RecordCount,
+    EveryNth,
+    TraceTrigger,
+    Rising,
+    Falling,
+    Level,
+    PreTrigger,
 }
 
 impl Text {
@@ -359,6 +366,13 @@ impl Text {
             Self::Discard => ("Discard", "丢弃"),
             Self::AsText => ("Text", "文本"),
             Self::AsTable => ("Table", "表格"),
+            Self::RecordCount => ("Samples", "采样数"),
+            Self::EveryNth => ("Every n-th cycle", "每 n 个周期"),
+            Self::TraceTrigger => ("Trigger", "触发"),
+            Self::Rising => ("rising", "上升沿"),
+            Self::Falling => ("falling", "下降沿"),
+            Self::Level => ("level", "电平"),
+            Self::PreTrigger => ("Pre-trigger", "预触发"),
             Self::ReferencesTo => ("References to", "引用"),
             Self::NoBuildYet => (
                 "Not built yet: F11 builds the project",

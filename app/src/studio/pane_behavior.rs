@@ -10,7 +10,7 @@ use super::i18n::Text;
 use super::pane::Pane;
 use super::panes;
 use super::property_view::property_view_ui;
-use super::studio_app::Studio;
+use super::studio_app::{Command, Studio};
 use super::task_editor::task_editor_ui;
 use super::tree_node::TreeNode;
 
@@ -172,6 +172,14 @@ fn document_pane_ui(studio: &mut Studio, ui: &mut Ui, node: &TreeNode) {
         task_editor_ui(studio, ui, node);
         return;
     }
+    // The controller, its I/O areas and the Modbus devices show their I/O mapping.
+    if matches!(
+        node,
+        TreeNode::Controller | TreeNode::IoArea(_) | TreeNode::ModbusDevice(_)
+    ) {
+        io_document_ui(studio, ui, node);
+        return;
+    }
     // Structured Text is edited in place; everything else is shown by the document views.
     if let TreeNode::Object(name) = node {
         let shown = super::text_documents::pou_document_ui(studio, ui, name)
@@ -183,5 +191,47 @@ fn document_pane_ui(studio: &mut Studio, ui: &mut Ui, node: &TreeNode) {
     let language = studio.settings.language;
     if let Some(session) = &studio.session {
         document_ui(ui, &session.project, node, language);
+    }
+}
+
+/// A controller, I/O area or Modbus device document: its settings, then the I/O mapping of
+/// every channel with the variable bound to it (a click opens the declaration).
+fn io_document_ui(studio: &mut Studio, ui: &mut Ui, node: &TreeNode) {
+    let Some(session) = &studio.session else {
+        return;
+    };
+    let project = &session.project;
+    egui::CollapsingHeader::new(RichText::new(node.title(Some(project))).strong())
+        .id_salt(("io_document_settings", node))
+        .default_open(false)
+        .show(ui, |ui| {
+            let salt = format!("io settings {node:?}");
+            match node {
+                TreeNode::IoArea(name) => {
+                    if let Some(area) = project.io_areas.iter().find(|a| a.name == *name) {
+                        property_view_ui(ui, &salt, area);
+                    }
+                }
+                TreeNode::ModbusDevice(name) => {
+                    if let Some(device) = project.modbus_devices.iter().find(|d| d.name == *name) {
+                        property_view_ui(ui, &salt, device);
+                    }
+                }
+                _ => property_view_ui(ui, &salt, &project.controller),
+            }
+        });
+    ui.separator();
+    let output = editor::io_mapping_ui(ui, project);
+    if let Some((owner, variable)) = output.open {
+        // A method's variables belong to its POU's document.
+        let object = owner.split('.').next().unwrap_or(&owner).to_owned();
+        let container = owner.split_once('.').map(|(_, method)| method.to_owned());
+        studio.pending.push(Command::Reveal(
+            TreeNode::Object(object),
+            super::text_documents::Reveal::Declaration {
+                container,
+                name: variable,
+            },
+        ));
     }
 }

@@ -322,6 +322,32 @@ impl StudioApp {
         &self.dock
     }
 
+    /// Opens a tree node's document in a tab, as double-clicking the node does.
+    pub fn open(&mut self, node: TreeNode) {
+        self.studio.selection = Some(node.clone());
+        self.dock.open_document(node);
+    }
+
+    /// Builds the project in the background, as F11 does.
+    pub fn build(&mut self) {
+        self.studio.start_build();
+    }
+
+    /// Logs in to the chosen target, as Alt+F8 does (building first when the project changed).
+    pub fn login(&mut self, ctx: &egui::Context) {
+        self.studio.login(ctx);
+    }
+
+    /// Answers the login dialog's question with Download.
+    pub fn confirm_download(&mut self) {
+        self.studio.online.confirm_download();
+    }
+
+    /// Starts the program on the target, as F5 does.
+    pub fn start(&mut self) {
+        self.studio.online.start();
+    }
+
     /// Chooses the login target.
     pub fn set_target(&mut self, target: TargetKind) {
         self.studio.settings.target = target;

@@ -2,17 +2,209 @@
 //! samples.
 
 use egui::{RichText, Ui};
-use project_model::{Object, TraceConfig};
+use project_model::{
+    Edit, Object, TraceConfig, TraceTrigger, TraceTriggerCondition, TraceVariable,
+};
 
 use crate::studio::i18n::Text;
 use crate::studio::online::TracePhase;
-use crate::studio::studio_app::Studio;
+use crate::studio::studio_app::{Command, Studio};
 
 /// What the trace pane remembers between frames.
 #[derive(Default)]
 pub struct TracePaneState {
     /// The trace shown; the first one when `None` or gone.
     pub selected: Option<String>,
+    /// The variable path typed in the "add variable" field.
+    new_variable: String,
+    /// The trigger variable being typed, until Enter commits it.
+    trigger_typing: Option<String>,
+}
+
+/// The edit that replaces a trace object, merged with the previous one of the same gesture.
+fn replace(studio: &mut Studio, label: &str, changed: TraceConfig, merge: bool) {
+    studio.pending.push(Command::EditText {
+        label: label.to_owned(),
+        merge_key: merge.then(|| format!("trace {} {label}", changed.name)),
+        edits: vec![Edit::ReplaceObject(Object::Trace(changed))],
+    });
+}
+
+/// The trace's configuration, edited in place: task, record count, every n-th cycle, trigger
+/// (variable, edge or level, pre-trigger share) and the recorded variables.
+fn configuration_ui(studio: &mut Studio, ui: &mut Ui, config: &TraceConfig) {
+    let language = studio.settings.language;
+    let tasks: Vec<String> = studio
+        .session
+        .as_ref()
+        .map(|session| {
+            session
+                .project
+                .tasks
+                .iter()
+                .map(|t| t.name.clone())
+                .collect()
+        })
+        .unwrap_or_default();
+    ui.horizontal_wrapped(|ui| {
+        let label = ui.label(Text::Task.get(language));
+        egui::ComboBox::from_id_salt("trace_task")
+            .selected_text(&config.task)
+            .show_ui(ui, |ui| {
+                for task in &tasks {
+                    if ui.selectable_label(*task == config.task, task).clicked()
+                        && *task != config.task
+                    {
+                        let mut changed = config.clone();
+                        changed.task = task.clone();
+                        replace(studio, "Change the trace's task", changed, false);
+                    }
+                }
+            })
+            .response
+            .labelled_by(label.id);
+        let mut count = config.record_count;
+        let label = ui.label(Text::RecordCount.get(language));
+        if ui
+            .add(egui::DragValue::new(&mut count).range(1..=1_000_000))
+            .labelled_by(label.id)
+            .changed()
+        {
+            let mut changed = config.clone();
+            changed.record_count = count;
+            replace(studio, "Change the record count", changed, true);
+        }
+        let mut every = config.every_n_cycles;
+        let label = ui.label(Text::EveryNth.get(language));
+        if ui
+            .add(egui::DragValue::new(&mut every).range(1..=u32::from(u16::MAX)))
+            .labelled_by(label.id)
+            .changed()
+        {
+            let mut changed = config.clone();
+            changed.every_n_cycles = every;
+            replace(studio, "Change the sampling", changed, true);
+        }
+    });
+    ui.horizontal_wrapped(|ui| {
+        let mut triggered = config.trigger.is_some();
+        if ui
+            .checkbox(&mut triggered, Text::TraceTrigger.get(language))
+            .changed()
+        {
+            let mut changed = config.clone();
+            changed.trigger = triggered.then(|| TraceTrigger {
+                variable: config
+                    .variables
+                    .first()
+                    .map(|v| v.path.clone())
+                    .unwrap_or_default(),
+                condition: TraceTriggerCondition::Rising,
+                level: None,
+                pre_trigger_percent: 10,
+            });
+            replace(studio, "Change the trigger", changed, false);
+        }
+        let Some(trigger) = &config.trigger else {
+            return;
+        };
+        let label = ui.label(Text::Variable.get(language));
+        let mut typed = studio
+            .trace
+            .trigger_typing
+            .clone()
+            .unwrap_or_else(|| trigger.variable.clone());
+        let field = ui
+            .add(egui::TextEdit::singleline(&mut typed).desired_width(200.0))
+            .labelled_by(label.id);
+        if field.changed() {
+            studio.trace.trigger_typing = Some(typed.clone());
+        }
+        if field.lost_focus() {
+            studio.trace.trigger_typing = None;
+            if typed.trim() != trigger.variable {
+                let mut changed = config.clone();
+                if let Some(t) = &mut changed.trigger {
+                    t.variable = typed.trim().to_owned();
+                }
+                replace(studio, "Change the trigger variable", changed, false);
+            }
+        }
+        let mut condition = trigger.condition;
+        for (value, text) in [
+            (TraceTriggerCondition::Rising, Text::Rising),
+            (TraceTriggerCondition::Falling, Text::Falling),
+            (TraceTriggerCondition::Level, Text::Level),
+        ] {
+            ui.radio_value(&mut condition, value, text.get(language));
+        }
+        if condition != trigger.condition {
+            let mut changed = config.clone();
+            if let Some(t) = &mut changed.trigger {
+                t.condition = condition;
+            }
+            replace(studio, "Change the trigger condition", changed, false);
+        }
+        let mut percent = trigger.pre_trigger_percent;
+        let label = ui.label(Text::PreTrigger.get(language));
+        if ui
+            .add(
+                egui::DragValue::new(&mut percent)
+                    .range(0..=100)
+                    .suffix(" %"),
+            )
+            .labelled_by(label.id)
+            .changed()
+        {
+            let mut changed = config.clone();
+            if let Some(t) = &mut changed.trigger {
+                t.pre_trigger_percent = percent;
+            }
+            replace(studio, "Change the pre-trigger", changed, true);
+        }
+    });
+    ui.horizontal_wrapped(|ui| {
+        let mut removed = None;
+        for (index, variable) in config.variables.iter().enumerate() {
+            ui.label(RichText::new(&variable.path).monospace());
+            if ui
+                .small_button("×")
+                .on_hover_text(format!("{} {}", Text::Remove.get(language), variable.path))
+                .clicked()
+            {
+                removed = Some(index);
+            }
+            ui.separator();
+        }
+        if let Some(index) = removed {
+            let mut changed = config.clone();
+            let gone = changed.variables.remove(index);
+            replace(
+                studio,
+                &format!("Stop tracing {}", gone.path),
+                changed,
+                false,
+            );
+        }
+        let label = ui.label(Text::AddVariable.get(language));
+        let field = ui
+            .add(
+                egui::TextEdit::singleline(&mut studio.trace.new_variable)
+                    .hint_text("Main.fbConveyor.xMotorOn")
+                    .desired_width(200.0),
+            )
+            .labelled_by(label.id);
+        let path = studio.trace.new_variable.trim().to_owned();
+        if field.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter)) && !path.is_empty() {
+            let mut changed = config.clone();
+            changed.variables.push(TraceVariable {
+                path: path.clone(),
+                color: None,
+            });
+            replace(studio, &format!("Trace {path}"), changed, false);
+            studio.trace.new_variable.clear();
+        }
+    });
 }
 
 fn traces(studio: &Studio) -> Vec<TraceConfig> {
@@ -82,24 +274,8 @@ pub(crate) fn trace_ui(studio: &mut Studio, ui: &mut Ui) {
         }
         phase_ui(ui, phase, config.record_count, language);
     });
-    ui.label(
-        RichText::new(format!(
-            "{} {} · {} {} · {}",
-            Text::Task.get(language),
-            config.task,
-            config.record_count,
-            Text::Samples.get(language),
-            config
-                .trigger
-                .as_ref()
-                .map(|t| format!(
-                    "{:?} {} ({}%)",
-                    t.condition, t.variable, t.pre_trigger_percent
-                ))
-                .unwrap_or_default()
-        ))
-        .weak(),
-    );
+    let editable = !studio.online.trace().is_recording();
+    ui.add_enabled_ui(editable, |ui| configuration_ui(studio, ui, &config));
     ui.separator();
     super::super::trace_view::trace_samples_ui(studio, ui, Some(&config));
 }
