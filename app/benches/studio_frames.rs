@@ -111,6 +111,7 @@ fn main() {
                     delta: Vec2::new(0.0, -3.0),
                     modifiers: Modifiers::NONE,
                     phase: egui::TouchPhase::Move,
+                    source: egui::MouseWheelSource::Wheel,
                 }],
             )
         })
