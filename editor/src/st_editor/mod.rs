@@ -65,6 +65,8 @@ pub struct StEditor {
     /// The egui time of the last change, in seconds; a long text is parsed again only when
     /// typing pauses.
     last_edit_s: f64,
+    /// The egui time of the last scroll over the editor, in seconds; hover waits for it to rest.
+    last_scroll_s: f64,
     /// Counts changes of the text, to know when cached results are stale.
     revision: u64,
     /// The end of the selection that does not move with Shift+movement.
@@ -120,6 +122,7 @@ impl StEditor {
             syntax: Syntax::new(text),
             syntax_stale: false,
             last_edit_s: 0.0,
+            last_scroll_s: 0.0,
             revision: 0,
             anchor: 0,
             caret: 0,

@@ -79,7 +79,27 @@ impl StEditor {
         let Some(pos) = response.hover_pos() else {
             return;
         };
-        let rest = ui.input(|input| input.pointer.time_since_last_movement());
+        // Asking the services can cost a check of the whole body, so it waits until the
+        // pointer, the view and the text have all rested: never on every frame of a scroll or
+        // of typing.
+        let (now_s, scrolling) = ui.input(|input| {
+            let wheel = input
+                .raw
+                .events
+                .iter()
+                .any(|event| matches!(event, egui::Event::MouseWheel { .. }));
+            (
+                input.time,
+                wheel || input.smooth_scroll_delta != egui::Vec2::ZERO,
+            )
+        });
+        if scrolling {
+            self.last_scroll_s = now_s;
+        }
+        let moved = ui.input(|input| input.pointer.time_since_last_movement());
+        let rest = moved
+            .min((now_s - self.last_scroll_s) as f32)
+            .min((now_s - self.last_edit_s) as f32);
         if rest < HOVER_DELAY_S {
             ui.ctx().request_repaint_after_secs(HOVER_DELAY_S - rest);
             return;
