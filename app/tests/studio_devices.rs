@@ -57,6 +57,12 @@ fn a_modbus_device_is_watched_written_forced_and_released_without_a_login() {
             "table = \"input_register\"",
             "table = \"holding_register\"",
         );
+        // The project's trace records the drive's speed, 20 polls.
+        std::fs::write(
+            dir.join("application/Diagnostics/TRC_Conveyor.trace.toml"),
+            "task = \"MainTask\"\nevery_n_cycles = 1\nrecord_count = 20\n\n[[variable]]\npath = \"GVL_Machine.rBeltSpeedActual\"\n",
+        )
+        .unwrap();
     });
     let mut harness = studio(project.path());
     show_tab(&mut harness, "Watch");
@@ -104,4 +110,21 @@ fn a_modbus_device_is_watched_written_forced_and_released_without_a_login() {
         value(app, "GVL_Machine.rBeltSpeedActual") == Some(("7.25".into(), false))
     });
     assert!(harness.state().online().forced_values().is_empty());
+
+    // The trace pane records the device by polling, without a login.
+    show_tab(&mut harness, "Trace");
+    harness.get_by_label("Start trace").click();
+    harness.step();
+    harness.step();
+    wait_until(&mut harness, "the device trace", |app| {
+        app.online().trace().phase() == app::studio::TracePhase::Uploaded
+    });
+    let trace = harness.state().online().trace();
+    assert_eq!(trace.samples().len(), 20);
+    assert!(
+        trace
+            .samples()
+            .iter()
+            .all(|s| s.values[0] == 7.25f32.to_le_bytes().to_vec())
+    );
 }

@@ -208,6 +208,14 @@ pub enum Text {
     Falling,
     Level,
     PreTrigger,
+    Find,
+    ReplaceWith,
+    MatchCase,
+    WholeWord,
+    Previous,
+    Next,
+    ReplaceOne,
+    ReplaceAll,
 }
 
 impl Text {
@@ -373,6 +381,14 @@ impl Text {
             Self::Falling => ("falling", "下降沿"),
             Self::Level => ("level", "电平"),
             Self::PreTrigger => ("Pre-trigger", "预触发"),
+            Self::Find => ("Find", "查找"),
+            Self::ReplaceWith => ("Replace with", "替换为"),
+            Self::MatchCase => ("Match case", "区分大小写"),
+            Self::WholeWord => ("Whole word", "全字匹配"),
+            Self::Previous => ("Previous", "上一个"),
+            Self::Next => ("Next", "下一个"),
+            Self::ReplaceOne => ("Replace", "替换"),
+            Self::ReplaceAll => ("Replace all", "全部替换"),
             Self::ReferencesTo => ("References to", "引用"),
             Self::NoBuildYet => (
                 "Not built yet: F11 builds the project",

@@ -624,6 +624,7 @@ impl Studio {
     fn take_in_background_results(&mut self, ctx: &egui::Context) {
         self.keep_recovery_copy(ctx);
         self.texts.inline.begin_frame();
+        self.texts.set_language(self.settings.language);
         if let Some(job) = &self.build {
             match job.poll() {
                 Some(outcome) => {
@@ -645,6 +646,18 @@ impl Studio {
             .map(|session| session.project.modbus_devices.as_slice())
             .unwrap_or_default();
         let mut watched = self.watch.watched_paths(self.session.as_ref());
+        // The shown trace's device channels are polled too, so the trace can record them.
+        for path in self.trace.variable_paths(self.session.as_ref()) {
+            if !watched.contains(&path)
+                && devices.iter().any(|d| {
+                    d.bindings
+                        .iter()
+                        .any(|b| b.variable.eq_ignore_ascii_case(&path))
+                })
+            {
+                watched.push(path);
+            }
+        }
         for path in self.texts.inline.paths() {
             if !watched.contains(path) {
                 watched.push(path.clone());

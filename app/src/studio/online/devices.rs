@@ -19,6 +19,8 @@ enum DeviceCommand {
     Write(usize, Vec<u8>),
     Force(usize, Vec<u8>),
     Unforce(Option<usize>),
+    /// Poll `samples` times, `interval` apart, and report every poll.
+    Trace(usize, Duration),
 }
 
 /// What a device's task reports.
@@ -28,6 +30,8 @@ enum DeviceEvent {
     Values(Vec<Vec<u8>>, Vec<usize>),
     /// The device cannot be reached or refused something; the task tries again.
     Problem(String),
+    /// A trace by polling ended: every poll with its time, or why it stopped.
+    Trace(Result<Vec<online::device::DeviceSnapshot>, String>),
 }
 
 /// One device being polled.
@@ -39,6 +43,8 @@ struct DeviceLink {
     values: Vec<Option<LiveValue>>,
     forced: Vec<usize>,
     problem: Option<String>,
+    /// A finished trace, until it is taken.
+    trace: Option<Result<Vec<online::device::DeviceSnapshot>, String>>,
     task: tokio::task::JoinHandle<()>,
 }
 
@@ -149,6 +155,7 @@ impl DeviceLinks {
                         link.forced = forced;
                     }
                     DeviceEvent::Problem(problem) => link.problem = Some(problem),
+                    DeviceEvent::Trace(result) => link.trace = Some(result),
                 }
             }
         }
@@ -192,6 +199,33 @@ impl DeviceLinks {
         link.commands
             .try_send(command)
             .map_err(|_| format!("device {} is busy; try again", device.name))
+    }
+
+    /// Starts a trace of a polled device: `samples` polls, `interval` apart.
+    pub fn trace(
+        &mut self,
+        device: &str,
+        samples: usize,
+        interval: Duration,
+    ) -> Result<(), String> {
+        let link = self
+            .links
+            .get_mut(device)
+            .ok_or_else(|| format!("device {device} is not polled; watch one of its variables"))?;
+        link.trace = None;
+        link.commands
+            .try_send(DeviceCommand::Trace(samples, interval))
+            .map_err(|_| format!("device {device} is busy; try again"))
+    }
+
+    /// A finished trace of `device`, once.
+    pub fn take_trace(
+        &mut self,
+        device: &str,
+    ) -> Option<Result<Vec<online::device::DeviceSnapshot>, String>> {
+        self.links
+            .get_mut(device)
+            .and_then(|link| link.trace.take())
     }
 
     /// Releases one device channel's force, or every device force with `None`.
@@ -293,6 +327,17 @@ fn start(handle: &tokio::runtime::Handle, config: ModbusDevice, wake: Waker) -> 
                                 connected.unforce(index);
                                 Ok(())
                             }
+                            Some(DeviceCommand::Trace(samples, every)) => {
+                                let traced = connected.trace(samples, every).await;
+                                let failed = traced.is_err();
+                                if !report(DeviceEvent::Trace(traced.map_err(|e| e.to_string()))) {
+                                    return;
+                                }
+                                if failed {
+                                    break;
+                                }
+                                Ok(())
+                            }
                         };
                         if let Err(error) = result
                             && !report(DeviceEvent::Problem(error.to_string()))
@@ -312,6 +357,7 @@ fn start(handle: &tokio::runtime::Handle, config: ModbusDevice, wake: Waker) -> 
         values: Vec::new(),
         forced: Vec::new(),
         problem: None,
+        trace: None,
         task,
     }
 }

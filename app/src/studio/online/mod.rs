@@ -157,6 +157,8 @@ pub struct Online {
     messages: Vec<OnlineMessage>,
     last_status: Option<Instant>,
     devices: devices::DeviceLinks,
+    /// The device whose polling trace is under way.
+    device_trace: Option<String>,
     /// The project's Modbus devices as of the last [`Online::set_watch`].
     project_devices: Vec<ModbusDevice>,
     waker: Option<Waker>,
@@ -193,6 +195,7 @@ impl Online {
             messages: Vec::new(),
             last_status: None,
             devices: devices::DeviceLinks::default(),
+            device_trace: None,
             project_devices: Vec::new(),
             waker: None,
         }
@@ -630,9 +633,23 @@ impl Online {
             .collect()
     }
 
-    /// Configures and arms a trace of `config` on the target.
+    /// Configures and arms a trace of `config` on the target, or, when its variables are the
+    /// channels of one Modbus device, records it by polling that device.
     pub fn trace_start(&mut self, config: &project_model::TraceConfig) {
-        let Some(image) = &self.image else { return };
+        if config
+            .variables
+            .iter()
+            .any(|v| self.is_device_bound(&v.path))
+        {
+            if let Err(reason) = self.device_trace_start(config) {
+                self.error(format!("trace '{}': {reason}", config.name));
+            }
+            return;
+        }
+        let Some(image) = &self.image else {
+            self.error(format!("trace '{}': log in first (Alt+F8)", config.name));
+            return;
+        };
         match self.trace.prepare(config, &image.tasks) {
             Ok(paths) => {
                 self.resolve(&paths);
@@ -640,6 +657,60 @@ impl Online {
             }
             Err(reason) => self.error(format!("trace '{}': {reason}", config.name)),
         }
+    }
+
+    /// Starts recording a trace of device channels by polling the device.
+    fn device_trace_start(&mut self, config: &project_model::TraceConfig) -> Result<(), String> {
+        let mut device_name = None;
+        let mut variables = Vec::new();
+        for variable in &config.variables {
+            let (device, index) = devices::binding_of(&self.project_devices, &variable.path)
+                .ok_or_else(|| {
+                    format!(
+                        "{} is not bound to a Modbus device; a trace records one device's channels or the controller's variables, not both",
+                        variable.path
+                    )
+                })?;
+            if device_name.get_or_insert_with(|| device.name.clone()) != &device.name {
+                return Err(
+                    "its variables are on different devices; trace one device at a time".to_owned(),
+                );
+            }
+            let channels = crate::modbus_devices::channels_of(device);
+            let channel = channels.get(index).ok_or("the binding has no channel")?;
+            let resolved = Resolved {
+                place: Place {
+                    region: 0,
+                    offset: u32::from(channel.address),
+                    bit: None,
+                    size: channel.ty.size_bytes() as u16,
+                },
+                type_tag: channel.ty as u8,
+                length: 0,
+            };
+            variables.push((variable.path.clone(), resolved));
+        }
+        if config.trigger.is_some() {
+            return Err(
+                "a device is traced by polling and records at once; remove the trigger".to_owned(),
+            );
+        }
+        let device_name = device_name.ok_or("no variables to record; add some first")?;
+        let device = self
+            .project_devices
+            .iter()
+            .find(|d| d.name == device_name)
+            .ok_or("the device is gone")?;
+        let interval = Duration::from_millis(
+            u64::from(device.poll_interval_ms.max(10)) * u64::from(config.every_n_cycles.max(1)),
+        );
+        let samples = usize::try_from(config.record_count)
+            .unwrap_or(usize::MAX)
+            .min(100_000);
+        self.devices.trace(&device_name, samples, interval)?;
+        self.device_trace = Some(device_name);
+        self.trace.device(config, variables);
+        Ok(())
     }
 
     /// Uploads the recorded samples of the current trace.
@@ -653,6 +724,41 @@ impl Online {
     /// frame.
     pub fn poll(&mut self, now: Instant) {
         self.devices.poll();
+        if let Some(device) = &self.device_trace
+            && let Some(result) = self.devices.take_trace(device)
+        {
+            self.device_trace = None;
+            match result {
+                Ok(snapshots) => {
+                    let channels: Vec<usize> = self
+                        .trace
+                        .variables()
+                        .iter()
+                        .filter_map(|(path, _)| devices::binding_of(&self.project_devices, path))
+                        .map(|(_, index)| index)
+                        .collect();
+                    let samples = snapshots
+                        .into_iter()
+                        .enumerate()
+                        .map(|(cycle, snapshot)| online::Sample {
+                            cycle: cycle as u64,
+                            time_ns: u64::try_from(snapshot.time.as_nanos()).unwrap_or(u64::MAX),
+                            values: channels
+                                .iter()
+                                .map(|&index| {
+                                    snapshot.values.get(index).cloned().unwrap_or_default()
+                                })
+                                .collect(),
+                        })
+                        .collect();
+                    self.trace.received(samples, None);
+                }
+                Err(reason) => {
+                    self.trace.command_failed_always();
+                    self.error(format!("device trace: {reason}"));
+                }
+            }
+        }
         let events = match &self.link {
             Some(link) => link.drain(),
             None => return,

@@ -189,6 +189,24 @@ impl TraceRun {
         Ok(Some(out))
     }
 
+    /// Starts a run recorded by polling a Modbus device: the variables are its channels.
+    pub fn device(
+        &mut self,
+        config: &project_model::TraceConfig,
+        variables: Vec<(String, Resolved)>,
+    ) {
+        *self = Self {
+            phase: TracePhase::Recording {
+                recorded: 0,
+                triggered: false,
+            },
+            name: config.name.clone(),
+            config: Some(config.clone()),
+            variables,
+            ..Self::default()
+        };
+    }
+
     /// The configuration was sent.
     pub fn armed(&mut self) {
         self.phase = TracePhase::Arming;
@@ -212,6 +230,11 @@ impl TraceRun {
         ) {
             self.phase = TracePhase::Idle;
         }
+    }
+
+    /// A trace recorded by polling failed: nothing to show.
+    pub fn command_failed_always(&mut self) {
+        self.phase = TracePhase::Idle;
     }
 
     /// The target reported the trace's status.

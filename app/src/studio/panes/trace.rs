@@ -21,6 +21,28 @@ pub struct TracePaneState {
     trigger_typing: Option<String>,
 }
 
+impl TracePaneState {
+    /// The variables of the trace the pane shows.
+    pub fn variable_paths(&self, session: Option<&crate::studio::session::Session>) -> Vec<String> {
+        let Some(session) = session else {
+            return Vec::new();
+        };
+        let traces: Vec<&TraceConfig> = project_model::object_files(&session.project)
+            .into_iter()
+            .filter_map(|(_, object)| match object {
+                Object::Trace(trace) => Some(trace),
+                _ => None,
+            })
+            .collect();
+        self.selected
+            .as_ref()
+            .and_then(|name| traces.iter().find(|t| t.name == *name).copied())
+            .or_else(|| traces.first().copied())
+            .map(|trace| trace.variables.iter().map(|v| v.path.clone()).collect())
+            .unwrap_or_default()
+    }
+}
+
 /// The edit that replaces a trace object, merged with the previous one of the same gesture.
 fn replace(studio: &mut Studio, label: &str, changed: TraceConfig, merge: bool) {
     studio.pending.push(Command::EditText {
@@ -251,8 +273,14 @@ pub(crate) fn trace_ui(studio: &mut Studio, ui: &mut Ui) {
             })
             .response
             .labelled_by(label.id);
+        // A trace of a Modbus device's channels records by polling, without a login.
+        let on_device = config
+            .variables
+            .iter()
+            .any(|v| studio.online.is_device_bound(&v.path));
+        let can_start = online || (on_device && studio.online.can_write());
         if ui
-            .add_enabled(online, egui::Button::new(Text::StartTrace.get(language)))
+            .add_enabled(can_start, egui::Button::new(Text::StartTrace.get(language)))
             .clicked()
         {
             studio.online.trace_start(&config);

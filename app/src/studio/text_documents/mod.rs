@@ -10,11 +10,11 @@ mod services;
 use std::collections::HashMap;
 use std::ops::Range;
 
-use editor::{EditorDiagnostic, Gesture, KeywordCompletions, StEditor, VariableTable};
+use editor::{EditorDiagnostic, EditorTexts, Gesture, KeywordCompletions, StEditor, VariableTable};
 use egui::{RichText, Ui};
 use project_model::{Edit, GlobalVarList, Object, Pou, Project, TextTarget, VarOwner};
 
-use super::i18n::Text;
+use super::i18n::{Language, Text};
 use super::studio_app::{Command, Studio};
 use super::tree_node::TreeNode;
 pub use inline::InlineValues;
@@ -104,6 +104,25 @@ pub struct TextDocuments {
     live: LiveCheck,
     /// Values shown inline while online, and the prepared ones typed in their boxes.
     pub inline: InlineValues,
+    /// The language the editors' own words are in.
+    language: Language,
+}
+
+/// The editor's own words (find bar, value box) in `language`.
+fn editor_texts(language: Language) -> EditorTexts {
+    let get = |text: Text| text.get(language).to_owned();
+    EditorTexts {
+        find: get(Text::Find),
+        replace: get(Text::ReplaceWith),
+        match_case: get(Text::MatchCase),
+        whole_word: get(Text::WholeWord),
+        previous: get(Text::Previous),
+        next: get(Text::Next),
+        replace_one: get(Text::ReplaceOne),
+        replace_all: get(Text::ReplaceAll),
+        close: get(Text::Close),
+        prepared_value: get(Text::PreparedValue),
+    }
 }
 
 impl TextDocuments {
@@ -132,10 +151,26 @@ impl TextDocuments {
             .map(|entry| entry.editor.selection())
     }
 
+    /// Puts the editors' own words in `language` (called every frame; changes only on a
+    /// switch of language).
+    pub fn set_language(&mut self, language: Language) {
+        if language != self.language {
+            self.language = language;
+            for entry in self.editors.values_mut() {
+                entry.editor.set_texts(editor_texts(language));
+            }
+        }
+    }
+
     fn editor(&mut self, key: TextKey, model: &str) -> &mut TextEditor {
-        let entry = self.editors.entry(key).or_insert_with(|| TextEditor {
-            editor: StEditor::new(model),
-            synced: model.to_owned(),
+        let language = self.language;
+        let entry = self.editors.entry(key).or_insert_with(|| {
+            let mut editor = StEditor::new(model);
+            editor.set_texts(editor_texts(language));
+            TextEditor {
+                editor,
+                synced: model.to_owned(),
+            }
         });
         if entry.synced != model {
             entry.editor.set_text(model);
