@@ -172,3 +172,50 @@ fn values_show_inline_while_online() {
             .contains(&"Main.fbConveyor".to_owned())
     );
 }
+
+#[test]
+fn a_variable_dragged_from_a_declaration_table_joins_the_watch_list() {
+    let project = example_copy(|_| {});
+    let mut harness = studio(project.path());
+    support::show_tab(&mut harness, "Watch");
+    harness.get_by_label("GVL_IO").focus();
+    harness.step();
+    harness.key_press(Key::Enter);
+    harness.step();
+    harness.step();
+    harness.get_by_label("Table").click();
+    harness.step();
+    harness.step();
+    let from = harness
+        .get_by_label("Drag GVL_IO.xStartButton")
+        .rect()
+        .center();
+    let to = harness
+        .get_by_label("GVL_Machine.eMachineState")
+        .rect()
+        .center();
+    harness.drag_at(from);
+    harness.step();
+    harness.hover_at(from + egui::vec2(10.0, 10.0));
+    harness.step();
+    harness.hover_at(to);
+    harness.step();
+    harness.drop_at(to);
+    harness.step();
+    harness.step();
+    let watched = match harness
+        .state()
+        .session()
+        .unwrap()
+        .project
+        .application
+        .object("WATCH_Machine")
+    {
+        Some(Object::WatchList(list)) => list.entries.iter().map(|e| e.path.clone()).collect(),
+        _ => Vec::new(),
+    };
+    assert!(
+        watched.contains(&"GVL_IO.xStartButton".to_owned()),
+        "{watched:?}"
+    );
+}

@@ -24,4 +24,4 @@ pub use st_editor::{
     TextChange,
 };
 pub use st_highlight::{TokenClass, classify_tokens};
-pub use variable_table::{VariableTable, VariableTableOutput, overlap_warnings};
+pub use variable_table::{VariablePath, VariableTable, VariableTableOutput, overlap_warnings};

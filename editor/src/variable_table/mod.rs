@@ -29,7 +29,13 @@ pub struct VariableTable {
     id_salt: IdSalt,
     read_only: bool,
     new_section: VarSection,
+    drag_prefix: Option<String>,
 }
+
+/// A variable's path on the target (`Main.iCount`, `GVL_IO.xStart`) being dragged, for a
+/// watch list or a trace to drop.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct VariablePath(pub String);
 
 /// What the user did with the table this frame.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -49,7 +55,15 @@ impl VariableTable {
             id_salt: IdSalt::new(id_salt),
             read_only: false,
             new_section: VarSection::Var,
+            drag_prefix: None,
         }
+    }
+
+    /// Lets each name be dragged as the path `prefix.name` (a program's or a global variable
+    /// list's name; a function block's variables have one path per instance, so none).
+    pub fn drag_prefix(mut self, prefix: Option<String>) -> Self {
+        self.drag_prefix = prefix;
+        self
     }
 
     /// Shows values without editing them (online, or a library POU).
@@ -82,6 +96,7 @@ impl VariableTable {
             warnings,
             state: &mut state,
             read_only: self.read_only,
+            drag_prefix: self.drag_prefix.as_deref(),
             edit: None,
             action: None,
         };

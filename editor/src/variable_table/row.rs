@@ -27,6 +27,8 @@ pub(crate) struct TableFrame<'a> {
     pub(crate) state: &'a mut TableState,
     /// Whether cells only show their values.
     pub(crate) read_only: bool,
+    /// The path prefix under which names can be dragged, if they can.
+    pub(crate) drag_prefix: Option<&'a str>,
     /// The committed cell edit of this frame, with its undo label.
     pub(crate) edit: Option<(String, ListEdit<Variable>)>,
     /// The row gesture of this frame.
@@ -95,6 +97,21 @@ impl TableFrame<'_> {
         let warning = (column == TextColumn::Address)
             .then(|| self.warnings.get(&variable.name))
             .flatten();
+        if column == TextColumn::Name
+            && let Some(prefix) = self.drag_prefix
+        {
+            // A handle beside the name drags the variable's path to a watch list.
+            let path = format!("{prefix}.{}", variable.name);
+            let handle = ui
+                .dnd_drag_source(
+                    self.id.with(("drag", row)),
+                    super::VariablePath(path.clone()),
+                    |ui| ui.label(RichText::new("::").weak()),
+                )
+                .response
+                .on_hover_text("Drag into a watch list");
+            handle.widget_info(|| WidgetInfo::labeled(Role::Button, true, format!("Drag {path}")));
+        }
         if self.read_only {
             ui.horizontal(|ui| {
                 if let Some(warning) = warning {

@@ -120,6 +120,37 @@ pub(crate) fn watch_ui(studio: &mut Studio, ui: &mut Ui) {
     ui.separator();
     let online = studio.online.can_write();
     let mut edits: Vec<(String, Vec<Edit>)> = Vec::new();
+    // A variable dragged from a declaration table anywhere onto the list joins it.
+    let (_, dropped) = ui.dnd_drop_zone::<editor::VariablePath, _>(egui::Frame::NONE, |ui| {
+        entries_ui(studio, ui, &list, online, &mut edits);
+    });
+    if let Some(dropped) = dropped
+        && !list
+            .entries
+            .iter()
+            .any(|e| e.path.eq_ignore_ascii_case(&dropped.0))
+    {
+        let mut changed = list.clone();
+        changed.entries.push(WatchEntry {
+            path: dropped.0.clone(),
+            ..WatchEntry::default()
+        });
+        edits.push((format!("Watch {}", dropped.0), replace(changed)));
+    }
+    for (label, edit) in edits {
+        studio.pending.push(Command::Edit(label, edit));
+    }
+}
+
+/// The rows of the watch list: path, live value, prepared value, comment, remove.
+fn entries_ui(
+    studio: &mut Studio,
+    ui: &mut Ui,
+    list: &WatchList,
+    online: bool,
+    edits: &mut Vec<(String, Vec<Edit>)>,
+) {
+    let language = studio.settings.language;
     egui::ScrollArea::both()
         .id_salt("watch")
         .auto_shrink([false, false])
@@ -166,9 +197,6 @@ pub(crate) fn watch_ui(studio: &mut Studio, ui: &mut Ui) {
                     }
                 });
         });
-    for (label, edit) in edits {
-        studio.pending.push(Command::Edit(label, edit));
-    }
 }
 
 /// The live value: forced values marked, changed values highlighted, unknown paths explained.

@@ -394,8 +394,11 @@ fn declarations_ui(
                 editor::overlap_warnings(&overlaps, &pou.name)
             })
             .unwrap_or_default();
+        let drag_prefix = (pou.kind == project_model::PouKind::Program && method.is_none())
+            .then(|| pou.name.clone());
         let output = VariableTable::new(("variables", &pou.name, &method))
             .read_only(read_only)
+            .drag_prefix(drag_prefix)
             .show(ui, &variables, &warnings);
         if let Some((label, edit)) = output.edit {
             studio
@@ -724,6 +727,7 @@ pub(crate) fn gvl_document_ui(studio: &mut Studio, ui: &mut Ui, name: &str) -> b
         };
         let output = VariableTable::new(("gvl", &gvl.name))
             .read_only(read_only)
+            .drag_prefix(Some(gvl.name.clone()))
             .show(ui, &gvl.variables, &warnings);
         if let Some((label, edit)) = output.edit {
             studio.pending.push(Command::Edit(
