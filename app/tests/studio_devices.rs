@@ -78,6 +78,9 @@ fn a_modbus_device_is_watched_written_forced_and_released_without_a_login() {
     wait_until(&mut harness, "the written speed", |app| {
         value(app, "GVL_Machine.rBeltSpeedActual") == Some(("33.5".into(), false))
     });
+    // The watch pane shows it, without a login.
+    harness.step();
+    assert!(harness.query_by_label("33.5").is_some());
     let registers = {
         let areas = areas.lock().unwrap();
         let q = &areas.output;

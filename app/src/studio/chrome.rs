@@ -86,6 +86,8 @@ impl Studio {
                     Command::Reset(Reset::Origin),
                 );
                 ui.separator();
+                // Modbus devices are written and forced without a login.
+                let online = self.online.can_write();
                 self.menu_item(
                     ui,
                     Text::WriteValues,

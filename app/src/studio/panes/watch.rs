@@ -173,7 +173,7 @@ fn entries_ui(
                     ui.end_row();
                     for (index, entry) in list.entries.iter().enumerate() {
                         ui.label(RichText::new(&entry.path).monospace());
-                        value_cell(studio, ui, &entry.path, online);
+                        value_cell(studio, ui, &entry.path);
                         if let Some(committed) = prepared_cell(studio, ui, entry, online) {
                             let mut changed = list.clone();
                             changed.entries[index].prepared_value =
@@ -200,15 +200,17 @@ fn entries_ui(
 }
 
 /// The live value: forced values marked, changed values highlighted, unknown paths explained.
-fn value_cell(studio: &Studio, ui: &mut Ui, path: &str, online: bool) {
+fn value_cell(studio: &Studio, ui: &mut Ui, path: &str) {
     let language = studio.settings.language;
-    if !online {
-        ui.label(RichText::new("—").weak())
-            .on_hover_text(Text::NotOnline.get(language));
+    // Why there is no value (unknown on the target, device unreachable) comes first; values of
+    // variables bound to Modbus devices show without a login.
+    if let Some(problem) = studio.online.problem(path) {
+        ui.label(RichText::new(problem).color(ui.visuals().error_fg_color));
         return;
     }
-    if let Some(Err(reason)) = studio.online.resolution(path) {
-        ui.label(RichText::new(reason).color(ui.visuals().error_fg_color));
+    if !studio.online.is_online() && !studio.online.is_device_bound(path) {
+        ui.label(RichText::new("—").weak())
+            .on_hover_text(Text::NotOnline.get(language));
         return;
     }
     match studio.online.value(path) {

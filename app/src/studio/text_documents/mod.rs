@@ -272,9 +272,7 @@ pub(crate) fn pou_document_ui(studio: &mut Studio, ui: &mut Ui, name: &str) -> b
 
     // The part selector: the POU and each method, action and property accessor.
     ui.horizontal_wrapped(|ui| {
-        let label =
-            ui.label(RichText::new(format!("{} {}", pou.kind.keyword(), pou.name)).strong());
-        let _ = label;
+        ui.label(RichText::new(format!("{} {}", pou.kind.keyword(), pou.name)).strong());
         ui.separator();
         let mut choices = vec![(Part::Main, Text::Implementation.get(language).to_owned())];
         choices.extend(pou.methods.iter().map(|m| {
