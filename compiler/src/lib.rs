@@ -13,6 +13,7 @@
 //! conversions ([`elementary`]).
 
 pub mod codegen;
+mod declaration_parts;
 pub mod diagnostic;
 pub mod elementary;
 pub mod ide;

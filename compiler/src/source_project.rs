@@ -11,11 +11,13 @@ use std::ops::Range;
 use std::path::PathBuf;
 
 use project_model::{
-    AccessSpecifier, Body, DataType, EnumValue, GlobalVarList, Method, Node, Object, Pou,
-    PouAction, PouKind, Project, Property, PropertyAccessor, StructMember, TypeDefinition,
-    VarSection, Variable,
+    Body, DataType, EnumValue, GlobalVarList, Method, Node, Object, Pou, PouAction, PouKind,
+    Project, Property, PropertyAccessor, StructMember, TypeDefinition, VarSection, Variable,
 };
 
+use crate::declaration_parts::{
+    access_of, block_section, declaration_parts, first_keyword, has_token,
+};
 use crate::sema::ProjectDiagnostic;
 use crate::syntax::{Parse, SyntaxKind, SyntaxNode, parse};
 
@@ -260,7 +262,7 @@ impl Builder {
         }
         Some(Method {
             return_type: return_type(node),
-            access: access(node),
+            access: access_of(node),
             is_abstract: has_token(node, SyntaxKind::ABSTRACT),
             comment: String::new(),
             variables,
@@ -274,7 +276,7 @@ impl Builder {
         self.declare(pou, &name, range);
         let mut property = Property {
             ty: return_type(node).unwrap_or_default(),
-            access: access(node),
+            access: access_of(node),
             comment: String::new(),
             get: None,
             set: None,
@@ -423,18 +425,10 @@ impl Builder {
 
     /// The variables of one `VAR… END_VAR` section.
     fn variables(&mut self, object: &str, block: &SyntaxNode) -> Vec<Variable> {
-        let section = match first_keyword(block) {
-            Some(SyntaxKind::VAR_INPUT) => VarSection::VarInput,
-            Some(SyntaxKind::VAR_OUTPUT) => VarSection::VarOutput,
-            Some(SyntaxKind::VAR_IN_OUT) => VarSection::VarInOut,
-            Some(SyntaxKind::VAR_GLOBAL) => VarSection::VarGlobal,
-            Some(SyntaxKind::VAR_EXTERNAL) => VarSection::VarExternal,
-            Some(SyntaxKind::VAR_TEMP) => VarSection::VarTemp,
-            Some(SyntaxKind::VAR_STAT) => VarSection::VarStat,
-            Some(SyntaxKind::VAR_INST) => VarSection::VarInst,
-            Some(SyntaxKind::VAR) => VarSection::Var,
+        let section = match block_section(block) {
             // Configuration and access paths name other variables; they declare none.
-            _ => return Vec::new(),
+            None | Some(VarSection::VarConfig) => return Vec::new(),
+            Some(section) => section,
         };
         let constant = has_token(block, SyntaxKind::CONSTANT);
         let retain = has_token(block, SyntaxKind::RETAIN);
@@ -461,61 +455,24 @@ impl Builder {
         declaration: &SyntaxNode,
         section: VarSection,
     ) -> Vec<Variable> {
-        let ty = declaration
-            .children()
-            .find(|child| is_type_node(child.kind()))
-            .map(|ty| trimmed(&ty))
-            .unwrap_or_default();
-        let address = declaration
-            .children()
-            .find(|child| child.kind() == SyntaxKind::ADDRESS)
-            .and_then(|address| {
-                address
-                    .children_with_tokens()
-                    .filter_map(|element| element.into_token())
-                    .find(|token| token.kind() == SyntaxKind::DIRECT_ADDRESS)
-                    .map(|token| token.text().to_owned())
-            });
-        let initial = initializer(declaration);
         let mut variables = Vec::new();
-        let Some(names) = declaration
-            .children()
-            .find(|child| child.kind() == SyntaxKind::VAR_NAME_LIST)
-        else {
+        let Some(parts) = declaration_parts(declaration, trimmed) else {
             return variables;
         };
-        for name in names
-            .children()
-            .filter(|child| child.kind() == SyntaxKind::NAME)
-        {
-            let text = trimmed(&name);
-            self.declare(object, &text, range(&name));
+        for name in &parts.names {
+            let text = trimmed(name);
+            self.declare(object, &text, range(name));
             variables.push(Variable {
                 name: text,
                 section,
-                ty: ty.clone(),
-                initial: initial.clone(),
-                address: address.clone(),
+                ty: parts.ty.clone(),
+                initial: parts.initial.clone(),
+                address: parts.address.clone(),
                 ..Variable::default()
             });
         }
         variables
     }
-}
-
-fn is_type_node(kind: SyntaxKind) -> bool {
-    matches!(
-        kind,
-        SyntaxKind::NAMED_TYPE
-            | SyntaxKind::STRING_TYPE
-            | SyntaxKind::ARRAY_TYPE
-            | SyntaxKind::POINTER_TYPE
-            | SyntaxKind::REFERENCE_TYPE
-            | SyntaxKind::SUBRANGE
-            | SyntaxKind::ENUM_TYPE
-            | SyntaxKind::STRUCT_TYPE
-            | SyntaxKind::TYPE_REF
-    )
 }
 
 /// The statements of a method, accessor or action with the offset where they start.
@@ -543,32 +500,6 @@ fn return_type(node: &SyntaxNode) -> Option<String> {
         .find(|child| child.kind() == SyntaxKind::RETURN_TYPE)?;
     let ty = return_type.children().next()?;
     Some(trimmed(&ty))
-}
-
-fn access(node: &SyntaxNode) -> AccessSpecifier {
-    if has_token(node, SyntaxKind::PRIVATE) {
-        AccessSpecifier::Private
-    } else if has_token(node, SyntaxKind::PROTECTED) {
-        AccessSpecifier::Protected
-    } else if has_token(node, SyntaxKind::INTERNAL) {
-        AccessSpecifier::Internal
-    } else {
-        AccessSpecifier::Public
-    }
-}
-
-/// The first keyword token directly in `node`.
-fn first_keyword(node: &SyntaxNode) -> Option<SyntaxKind> {
-    node.children_with_tokens()
-        .filter_map(|element| element.into_token())
-        .map(|token| token.kind())
-        .find(|kind| kind.is_keyword())
-}
-
-fn has_token(node: &SyntaxNode, kind: SyntaxKind) -> bool {
-    node.children_with_tokens()
-        .filter_map(|element| element.into_token())
-        .any(|token| token.kind() == kind)
 }
 
 /// The declared name directly under `node`, with its range.
@@ -607,6 +538,7 @@ fn range(node: &SyntaxNode) -> Range<usize> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use project_model::AccessSpecifier;
 
     const SOURCE: &str = "TYPE
     E_State : (Idle := 0, Run, Fault) DINT;

@@ -8,8 +8,11 @@
 
 use std::ops::Range;
 
-use project_model::{AccessSpecifier, PouKind, VarSection, Variable};
+use project_model::{AccessSpecifier, PouKind, Variable};
 
+use crate::declaration_parts::{
+    access_of, block_section, declaration_parts, first_keyword, has_token,
+};
 use crate::syntax::{SyntaxKind, SyntaxNode, SyntaxToken, parse_declaration_part};
 use crate::{Code, Diagnostic};
 
@@ -145,15 +148,7 @@ impl Reader<'_> {
             .find(|child| child.kind() == SyntaxKind::RETURN_TYPE)
             .and_then(|node| node.children().next())
             .map(|ty| trimmed(&ty));
-        let access = if has_token(item, SyntaxKind::PRIVATE) {
-            AccessSpecifier::Private
-        } else if has_token(item, SyntaxKind::PROTECTED) {
-            AccessSpecifier::Protected
-        } else if has_token(item, SyntaxKind::INTERNAL) {
-            AccessSpecifier::Internal
-        } else {
-            AccessSpecifier::Public
-        };
+        let access = access_of(item);
         self.header = Some(DeclarationHeader {
             kind,
             name: child_text(SyntaxKind::NAME).unwrap_or_default(),
@@ -198,24 +193,12 @@ impl Reader<'_> {
 
     /// One `VAR… END_VAR` section.
     fn block(&mut self, block: &SyntaxNode) {
-        let section = match first_keyword(block) {
-            Some(SyntaxKind::VAR_INPUT) => VarSection::VarInput,
-            Some(SyntaxKind::VAR_OUTPUT) => VarSection::VarOutput,
-            Some(SyntaxKind::VAR_IN_OUT) => VarSection::VarInOut,
-            Some(SyntaxKind::VAR_GLOBAL) => VarSection::VarGlobal,
-            Some(SyntaxKind::VAR_EXTERNAL) => VarSection::VarExternal,
-            Some(SyntaxKind::VAR_TEMP) => VarSection::VarTemp,
-            Some(SyntaxKind::VAR_STAT) => VarSection::VarStat,
-            Some(SyntaxKind::VAR_INST) => VarSection::VarInst,
-            Some(SyntaxKind::VAR_CONFIG) => VarSection::VarConfig,
-            Some(SyntaxKind::VAR) => VarSection::Var,
-            _ => {
-                self.refuse(
-                    block,
-                    "access paths (VAR_ACCESS) have no place in the model",
-                );
-                return;
-            }
+        let Some(section) = block_section(block) else {
+            self.refuse(
+                block,
+                "access paths (VAR_ACCESS) have no place in the model",
+            );
+            return;
         };
         let template = Variable {
             section,
@@ -234,50 +217,24 @@ impl Reader<'_> {
 
     /// One declaration `a, b AT %IX0.0 : BOOL := TRUE; // comment`.
     fn declaration(&mut self, declaration: &SyntaxNode, template: &Variable) {
-        let Some(names) = declaration
-            .children()
-            .find(|child| child.kind() == SyntaxKind::VAR_NAME_LIST)
-        else {
+        let Some(parts) = declaration_parts(declaration, trimmed) else {
             self.refuse(
                 declaration,
                 "a located variable needs a name: write `name AT %IX0.0 : BOOL;`",
             );
             return;
         };
-        let ty = declaration
-            .children()
-            .find(|child| is_type_node(child.kind()))
-            .map(|ty| trimmed(&ty))
-            .unwrap_or_default();
-        let address = declaration
-            .children()
-            .find(|child| child.kind() == SyntaxKind::ADDRESS)
-            .and_then(|address| {
-                address
-                    .children_with_tokens()
-                    .filter_map(|element| element.into_token())
-                    .find(|token| token.kind() == SyntaxKind::DIRECT_ADDRESS)
-                    .map(|token| token.text().to_owned())
-            });
-        let initial = declaration
-            .children()
-            .find(|child| child.kind() == SyntaxKind::INITIALIZER)
-            .and_then(|initializer| initializer.children().next())
-            .map(|value| trimmed(&value));
         let range = super::trimmed_range(declaration);
         let comment = self
             .trailing_comment(range.end)
             .or_else(|| self.comment_above(range.start))
             .unwrap_or_default();
-        for name in names
-            .children()
-            .filter(|child| child.kind() == SyntaxKind::NAME)
-        {
+        for name in &parts.names {
             self.variables.push(Variable {
-                name: trimmed(&name),
-                ty: ty.clone(),
-                initial: initial.clone(),
-                address: address.clone(),
+                name: trimmed(name),
+                ty: parts.ty.clone(),
+                initial: parts.initial.clone(),
+                address: parts.address.clone(),
                 comment: comment.clone(),
                 ..template.clone()
             });
@@ -382,34 +339,6 @@ fn comment_text(token: &str) -> String {
     inner.strip_suffix(' ').unwrap_or(inner).to_owned()
 }
 
-fn is_type_node(kind: SyntaxKind) -> bool {
-    matches!(
-        kind,
-        SyntaxKind::NAMED_TYPE
-            | SyntaxKind::STRING_TYPE
-            | SyntaxKind::ARRAY_TYPE
-            | SyntaxKind::POINTER_TYPE
-            | SyntaxKind::REFERENCE_TYPE
-            | SyntaxKind::SUBRANGE
-            | SyntaxKind::ENUM_TYPE
-            | SyntaxKind::STRUCT_TYPE
-            | SyntaxKind::TYPE_REF
-    )
-}
-
-fn first_keyword(node: &SyntaxNode) -> Option<SyntaxKind> {
-    node.children_with_tokens()
-        .filter_map(|element| element.into_token())
-        .map(|token| token.kind())
-        .find(|kind| kind.is_keyword())
-}
-
-fn has_token(node: &SyntaxNode, kind: SyntaxKind) -> bool {
-    node.children_with_tokens()
-        .filter_map(|element| element.into_token())
-        .any(|token| token.kind() == kind)
-}
-
 /// The node's text without surrounding trivia.
 fn trimmed(node: &SyntaxNode) -> String {
     let range = super::trimmed_range(node);
@@ -428,6 +357,7 @@ fn offset(token: &SyntaxToken) -> Range<usize> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use project_model::VarSection;
 
     #[test]
     fn a_pou_header_and_its_sections_become_variables() {

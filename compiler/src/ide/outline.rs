@@ -3,7 +3,8 @@
 use std::ops::Range;
 
 use super::trimmed_range;
-use crate::syntax::SyntaxKind::{self, *};
+use crate::declaration_parts::first_keyword;
+use crate::syntax::SyntaxKind::*;
 use crate::syntax::{SyntaxNode, parse};
 
 /// An entry of the outline.
@@ -85,13 +86,6 @@ fn item_kind(node: &SyntaxNode) -> Option<OutlineKind> {
         CONFIGURATION_DECL => OutlineKind::Configuration,
         _ => return None,
     })
-}
-
-fn first_keyword(node: &SyntaxNode) -> Option<SyntaxKind> {
-    node.children_with_tokens()
-        .filter_map(|element| element.into_token())
-        .map(|token| token.kind())
-        .find(|kind| kind.is_keyword())
 }
 
 fn item(node: &SyntaxNode, kind: OutlineKind) -> Option<OutlineItem> {
