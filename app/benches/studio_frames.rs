@@ -6,7 +6,6 @@
 
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::print_stdout)] // A bench prints.
 
-use std::path::Path;
 use std::time::{Duration, Instant};
 
 use app::studio::{Phase, Settings, StudioApp, TreeNode};
@@ -27,23 +26,10 @@ fn frame(ctx: &egui::Context, app: &mut StudioApp, events: Vec<Event>) -> Durati
     started.elapsed()
 }
 
-fn copy_dir(from: &Path, to: &Path) {
-    std::fs::create_dir_all(to).unwrap();
-    for entry in std::fs::read_dir(from).unwrap() {
-        let entry = entry.unwrap();
-        let target = to.join(entry.file_name());
-        if entry.file_type().unwrap().is_dir() {
-            copy_dir(&entry.path(), &target);
-        } else {
-            std::fs::copy(entry.path(), target).unwrap();
-        }
-    }
-}
-
 /// The example project with Main's body and declarations replaced.
 fn project_with_main(declarations: &str, body: &str) -> tempfile::TempDir {
     let dir = tempfile::tempdir().unwrap();
-    copy_dir(&assets::example_project_dir(), dir.path());
+    assets::copy_example_project(dir.path()).unwrap();
     std::fs::write(dir.path().join("application/Main.st"), body).unwrap();
     let pou = dir.path().join("application/Main.pou.toml");
     let text = std::fs::read_to_string(&pou).unwrap();

@@ -4,12 +4,18 @@
 use online::{Place, Resolved};
 use program_image::Elementary;
 
-/// A value's bytes as an IEC literal.
-pub fn show(resolved: &Resolved, bytes: &[u8]) -> String {
+/// The first eight bytes of a value, little-endian, as the raw bits of an elementary value
+/// (missing bytes read as zero).
+fn raw_of(bytes: &[u8]) -> u64 {
     let mut raw = [0u8; 8];
     let n = bytes.len().min(8);
     raw[..n].copy_from_slice(&bytes[..n]);
-    let raw = u64::from_le_bytes(raw);
+    u64::from_le_bytes(raw)
+}
+
+/// A value's bytes as an IEC literal.
+pub fn show(resolved: &Resolved, bytes: &[u8]) -> String {
+    let raw = raw_of(bytes);
     if resolved.place.bit.is_some() {
         return if raw & 1 != 0 {
             "TRUE".to_owned()
@@ -63,10 +69,7 @@ pub fn hex(bytes: &[u8]) -> String {
 /// A value's bytes as a number for plotting: BOOL as 0 or 1, integers, reals, times in their
 /// raw units; `None` for strings and anything that is not a number.
 pub fn numeric(resolved: &Resolved, bytes: &[u8]) -> Option<f64> {
-    let mut raw = [0u8; 8];
-    let n = bytes.len().min(8);
-    raw[..n].copy_from_slice(&bytes[..n]);
-    let raw = u64::from_le_bytes(raw);
+    let raw = raw_of(bytes);
     if resolved.place.bit.is_some() {
         return Some(f64::from(u8::from(raw & 1 != 0)));
     }
@@ -83,10 +86,7 @@ pub fn numeric(resolved: &Resolved, bytes: &[u8]) -> Option<f64> {
 
 /// The bytes of an elementary value as its IEC literal.
 pub fn describe_elementary(ty: Elementary, bytes: &[u8]) -> String {
-    let mut raw = [0u8; 8];
-    let n = bytes.len().min(8);
-    raw[..n].copy_from_slice(&bytes[..n]);
-    runtime::value::elementary(u64::from_le_bytes(raw), ty).to_string()
+    runtime::value::elementary(raw_of(bytes), ty).to_string()
 }
 
 /// Whether the value is a BOOL (drawn as steps, toggled rather than typed).

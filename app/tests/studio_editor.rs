@@ -6,12 +6,12 @@
 
 mod support;
 
-use app::studio::{Phase, StudioApp};
+use app::studio::StudioApp;
 use egui::{Key, Modifiers};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable as _;
 use project_model::{Object, TextTarget};
-use support::{example_copy, studio, wait_until};
+use support::{example_copy, login_with_download, studio, wait_until};
 
 fn main_body(app: &StudioApp) -> String {
     match app.session().unwrap().project.application.object("Main") {
@@ -148,15 +148,8 @@ fn values_show_inline_while_online() {
     let project = example_copy(|_| {});
     let mut harness = studio(project.path());
     open_main(&mut harness);
-    harness.key_press_modifiers(Modifiers::ALT, Key::F8);
-    wait_until(&mut harness, "the download question", |app| {
-        matches!(app.online().phase(), Phase::ConfirmDownload { .. })
-    });
-    harness.step();
-    harness.get_by_label("Download").click();
-    wait_until(&mut harness, "the download", |app| {
-        *app.online().phase() == Phase::Online
-    });
+    // Alt+F8 logs in; the target has no program, so the studio offers the download.
+    login_with_download(&mut harness);
     harness.key_press(Key::F5);
     wait_until(&mut harness, "the inline values", |app| {
         app.inline_paths()

@@ -3,14 +3,16 @@
 
 #![allow(clippy::unwrap_used, clippy::expect_used)] // Test helpers may panic: a panic is a failed test.
 
-use app::studio::{Phase, TracePhase};
+use app::studio::TracePhase;
 use egui::{Key, Modifiers};
 use egui_kittest::kittest::Queryable as _;
 use online::TargetState;
 
 mod support;
 
-use support::{example_copy, prepare, show_tab, studio, value, wait_until, watch};
+use support::{
+    example_copy, login_with_download, prepare, show_tab, studio, value, wait_until, watch,
+};
 
 #[test]
 fn build_login_run_watch_force_release_write_trace_and_stop_in_the_simulator() {
@@ -33,15 +35,8 @@ fn build_login_run_watch_force_release_write_trace_and_stop_in_the_simulator() {
     assert!(build.image.is_some());
 
     // Alt+F8 logs in to the simulator, which has no program: the studio offers a download.
-    harness.key_press_modifiers(Modifiers::ALT, Key::F8);
-    wait_until(&mut harness, "the download question", |app| {
-        matches!(app.online().phase(), Phase::ConfirmDownload { .. })
-    });
-    harness.step();
-    harness.get_by_label("Download").click();
-    wait_until(&mut harness, "the download", |app| {
-        *app.online().phase() == Phase::Online
-    });
+    // Alt+F8 logs in; the target has no program, so the studio offers the download.
+    login_with_download(&mut harness);
     assert_eq!(
         harness.state().online().target_state(),
         Some(TargetState::Stopped)

@@ -8,12 +8,11 @@ mod support;
 use std::sync::{Arc, Mutex};
 
 use app::studio::{Phase, TargetKind};
-use egui_kittest::kittest::Queryable as _;
 use runtime::areas::LocatedAreas;
 use runtime::modbus::{MapSlot, ModbusMap, ServerOptions, serve};
 use runtime::online::OnlineServices;
 use runtime::scheduler::{Scheduler, SchedulerOptions};
-use support::{example_copy, replace_in, show_tab, studio, wait_until, watch};
+use support::{example_copy, login_with_download, replace_in, show_tab, studio, wait_until, watch};
 use tokio::sync::oneshot;
 
 /// A soft PLC on `port` (0: any) in its own thread; dropping the sender stops it. Returns the
@@ -60,15 +59,8 @@ fn a_lost_controller_is_reported_edits_are_kept_and_the_studio_reconnects() {
     });
     let mut harness = studio(project.path());
     harness.state_mut().set_target(TargetKind::Controller);
-    harness.key_press_modifiers(egui::Modifiers::ALT, egui::Key::F8);
-    wait_until(&mut harness, "the download question", |app| {
-        matches!(app.online().phase(), Phase::ConfirmDownload { .. })
-    });
-    harness.step();
-    harness.get_by_label("Download").click();
-    wait_until(&mut harness, "the download", |app| {
-        *app.online().phase() == Phase::Online
-    });
+    // Alt+F8 logs in; the target has no program, so the studio offers the download.
+    login_with_download(&mut harness);
 
     drop(stop);
     wait_until(&mut harness, "the lost connection", |app| {

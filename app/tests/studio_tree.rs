@@ -12,20 +12,8 @@ use project_model::{Object, PouKind, Project, TaskKind};
 
 /// A copy of the example project in a temporary folder, so saving cannot touch the original.
 fn example_copy() -> tempfile::TempDir {
-    fn copy(from: &Path, to: &Path) {
-        std::fs::create_dir_all(to).unwrap();
-        for entry in std::fs::read_dir(from).unwrap() {
-            let entry = entry.unwrap();
-            let target = to.join(entry.file_name());
-            if entry.file_type().unwrap().is_dir() {
-                copy(&entry.path(), &target);
-            } else {
-                std::fs::copy(entry.path(), &target).unwrap();
-            }
-        }
-    }
     let dir = tempfile::tempdir().unwrap();
-    copy(&assets::example_project_dir(), dir.path());
+    assets::copy_example_project(dir.path()).unwrap();
     dir
 }
 

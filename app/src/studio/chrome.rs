@@ -142,6 +142,25 @@ impl Studio {
         }
     }
 
+    /// A tool bar button with its shortcut in the hover text.
+    fn tool_button(
+        &mut self,
+        ui: &mut Ui,
+        text: Text,
+        shortcut: &str,
+        enabled: bool,
+        command: Command,
+    ) {
+        let button = egui::Button::new(text.get(self.settings.language));
+        if ui
+            .add_enabled(enabled, button)
+            .on_hover_text(shortcut)
+            .clicked()
+        {
+            self.pending.push(command);
+        }
+    }
+
     /// The tool bar: build, the target choice, login and run control, as buttons with their
     /// shortcuts in the hover text.
     pub(crate) fn tool_bar_ui(&mut self, ui: &mut Ui) {
@@ -212,36 +231,14 @@ impl Studio {
             });
             ui.separator();
             if logged_in {
-                if ui
-                    .button(Text::Logout.get(language))
-                    .on_hover_text("Ctrl+F8")
-                    .clicked()
-                {
-                    self.pending.push(Command::Logout);
-                }
-            } else if ui
-                .add_enabled(has_project, egui::Button::new(Text::Login.get(language)))
-                .on_hover_text("Alt+F8")
-                .clicked()
-            {
-                self.pending.push(Command::Login);
+                self.tool_button(ui, Text::Logout, "Ctrl+F8", true, Command::Logout);
+            } else {
+                self.tool_button(ui, Text::Login, "Alt+F8", has_project, Command::Login);
             }
-            if ui
-                .add_enabled(online, egui::Button::new(Text::Start.get(language)))
-                .on_hover_text("F5")
-                .clicked()
-            {
-                self.pending.push(Command::Start);
-            }
-            if ui
-                .add_enabled(online, egui::Button::new(Text::Stop.get(language)))
-                .on_hover_text("Shift+F8")
-                .clicked()
-            {
-                self.pending.push(Command::Stop);
-            }
+            self.tool_button(ui, Text::Start, "F5", online, Command::Start);
+            self.tool_button(ui, Text::Stop, "Shift+F8", online, Command::Stop);
             ui.add_enabled_ui(online, |ui| {
-                ui.menu_button("Reset", |ui| {
+                ui.menu_button(Text::ResetMenu.get(language), |ui| {
                     for (text, kind) in [
                         (Text::ResetWarm, Reset::Warm),
                         (Text::ResetCold, Reset::Cold),
@@ -254,28 +251,29 @@ impl Studio {
                 });
             });
             ui.separator();
-            let online = self.online.can_write();
-            if ui
-                .add_enabled(online, egui::Button::new(Text::WriteValues.get(language)))
-                .on_hover_text("Ctrl+F7")
-                .clicked()
-            {
-                self.pending.push(Command::WritePrepared);
-            }
-            if ui
-                .add_enabled(online, egui::Button::new(Text::ForceValues.get(language)))
-                .on_hover_text("F7")
-                .clicked()
-            {
-                self.pending.push(Command::ForcePrepared);
-            }
-            if ui
-                .add_enabled(online, egui::Button::new(Text::ReleaseForces.get(language)))
-                .on_hover_text("Alt+F7")
-                .clicked()
-            {
-                self.pending.push(Command::ReleaseAllForces);
-            }
+            // Modbus devices are written and forced without a login.
+            let writable = self.online.can_write();
+            self.tool_button(
+                ui,
+                Text::WriteValues,
+                "Ctrl+F7",
+                writable,
+                Command::WritePrepared,
+            );
+            self.tool_button(
+                ui,
+                Text::ForceValues,
+                "F7",
+                writable,
+                Command::ForcePrepared,
+            );
+            self.tool_button(
+                ui,
+                Text::ReleaseForces,
+                "Alt+F7",
+                writable,
+                Command::ReleaseAllForces,
+            );
         });
     }
 

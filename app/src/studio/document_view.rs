@@ -3,10 +3,10 @@
 
 use editor::CodeView;
 use egui::{RichText, Ui};
-use project_model::{Body, Object, Pou, Project};
+use project_model::{Body, Object, Project};
 
 use super::cam_view::cam_view_ui;
-use super::i18n::{Language, Text};
+use super::i18n::Language;
 use super::property_view::property_view_ui;
 use super::tree_node::TreeNode;
 
@@ -67,100 +67,48 @@ fn document_content<'a>(project: &'a Project, node: &TreeNode) -> Option<Content
 fn content_ui(ui: &mut Ui, node: &TreeNode, content: Content<'_>, language: Language) {
     let salt = format!("{node:?}");
     match content {
-        Content::Object(Object::Pou(pou)) => pou_ui(ui, pou, language),
-        Content::Object(Object::Gvl(gvl)) => {
-            CodeView::new((&salt, "decl"), &gvl.declaration_text()).show(ui);
-        }
+        // POUs and global variable lists are edited in place (`text_documents`), and the
+        // settings of the device nodes are shown by `settings_ui` with their I/O mapping.
+        Content::Object(Object::Pou(_) | Object::Gvl(_)) => {}
         Content::Object(Object::DataType(data_type)) => {
             CodeView::new((&salt, "decl"), &data_type.declaration_text()).show(ui);
         }
         Content::Object(Object::CamTable(cam)) => cam_view_ui(ui, cam, language),
         Content::Object(Object::Trace(trace)) => property_view_ui(ui, &salt, trace),
         Content::Object(Object::WatchList(watch)) => property_view_ui(ui, &salt, watch),
-        Content::Controller(controller) => property_view_ui(ui, &salt, controller),
-        Content::IoArea(area) => property_view_ui(ui, &salt, area),
-        Content::ModbusDevice(device) => property_view_ui(ui, &salt, device),
+        Content::Controller(_) | Content::IoArea(_) | Content::ModbusDevice(_) => {}
         Content::Axis(axis) => property_view_ui(ui, &salt, axis),
     }
 }
 
-/// A POU as CODESYS shows it: declarations above, implementation below, then its methods,
-/// properties and actions.
-fn pou_ui(ui: &mut Ui, pou: &Pou, language: Language) {
-    section_heading(ui, Text::Declarations.get(language));
-    CodeView::new((&pou.name, "declarations"), &pou.declaration_text()).show(ui);
-    ui.separator();
-    section_heading(ui, Text::Implementation.get(language));
-    body_ui(ui, (&pou.name, "body"), &pou.body, language);
+/// A body that is not Structured Text (LD, FBD, CFC, SFC networks), shown as its data until
+/// the graphical editors come.
+pub fn graphical_body_ui(ui: &mut Ui, salt: &str, body: &Body) {
+    egui::ScrollArea::both()
+        .id_salt(("graphical body", salt))
+        .auto_shrink([false, false])
+        .show(ui, |ui| property_view_ui(ui, salt, body));
+}
 
-    for method in &pou.methods {
-        ui.separator();
-        section_heading(
-            ui,
-            &format!("{} {}", Text::Method.get(language), method.name),
-        );
-        CodeView::new(
-            (&pou.name, &method.name, "decl"),
-            &method.declaration_text(),
-        )
-        .show(ui);
-        body_ui(
-            ui,
-            (&pou.name, &method.name, "body"),
-            &method.body,
-            language,
-        );
-    }
-    for property in &pou.properties {
-        ui.separator();
-        section_heading(
-            ui,
-            &format!("{} {}", Text::Property.get(language), property.name),
-        );
-        CodeView::new(
-            (&pou.name, &property.name, "decl"),
-            &property.declaration_text(),
-        )
-        .show(ui);
-        for (accessor, name) in [(&property.get, "Get"), (&property.set, "Set")] {
-            if let Some(accessor) = accessor {
-                ui.label(RichText::new(name).strong());
-                body_ui(
-                    ui,
-                    (&pou.name, &property.name, name),
-                    &accessor.body,
-                    language,
-                );
+/// The settings of a device tree node that has some (controller, task, I/O area, Modbus
+/// device, axis) as a property grid; `false` when the node has none.
+pub fn settings_ui(ui: &mut Ui, project: &Project, node: &TreeNode) -> bool {
+    let salt = format!("settings {node:?}");
+    if let TreeNode::Task(name) = node {
+        return match project.task(name) {
+            Some(task) => {
+                property_view_ui(ui, &salt, task);
+                true
             }
-        }
+            None => false,
+        };
     }
-    for action in &pou.actions {
-        ui.separator();
-        section_heading(
-            ui,
-            &format!("{} {}", Text::Action.get(language), action.name),
-        );
-        body_ui(
-            ui,
-            (&pou.name, &action.name, "action"),
-            &action.body,
-            language,
-        );
+    match document_content(project, node) {
+        Some(Content::Controller(controller)) => property_view_ui(ui, &salt, controller),
+        Some(Content::IoArea(area)) => property_view_ui(ui, &salt, area),
+        Some(Content::ModbusDevice(device)) => property_view_ui(ui, &salt, device),
+        Some(Content::Axis(axis)) => property_view_ui(ui, &salt, axis),
+        Some(Content::Object(_)) | None => return false,
     }
-}
-
-fn body_ui(ui: &mut Ui, salt: impl egui::AsIdSalt, body: &Body, language: Language) {
-    match body {
-        Body::None => {
-            ui.label(RichText::new(Text::NoImplementation.get(language)).weak());
-        }
-        Body::St { text } => {
-            CodeView::new(salt, text).show(ui);
-        }
-        graphical => property_view_ui(ui, &format!("{salt:?}"), graphical),
-    }
-}
-
-fn section_heading(ui: &mut Ui, text: &str) {
-    ui.label(RichText::new(text).strong().size(13.0));
+    true
 }

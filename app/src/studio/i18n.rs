@@ -216,6 +216,7 @@ pub enum Text {
     Next,
     ReplaceOne,
     ReplaceAll,
+    ResetMenu,
 }
 
 impl Text {
@@ -389,6 +390,7 @@ impl Text {
             Self::Next => ("Next", "下一个"),
             Self::ReplaceOne => ("Replace", "替换"),
             Self::ReplaceAll => ("Replace all", "全部替换"),
+            Self::ResetMenu => ("Reset", "复位"),
             Self::ReferencesTo => ("References to", "引用"),
             Self::NoBuildYet => (
                 "Not built yet: F11 builds the project",

@@ -5,11 +5,10 @@ use egui_tiles::{Behavior, SimplificationOptions, Tile, TileId, Tiles, UiRespons
 
 use super::device_tree::devices_pane_ui;
 use super::dock::Dock;
-use super::document_view::document_ui;
+use super::document_view::{document_ui, settings_ui};
 use super::i18n::Text;
 use super::pane::Pane;
 use super::panes;
-use super::property_view::property_view_ui;
 use super::studio_app::{Command, Studio};
 use super::task_editor::task_editor_ui;
 use super::tree_node::TreeNode;
@@ -90,35 +89,12 @@ fn properties_ui(studio: &mut Studio, ui: &mut Ui) {
         .id_salt("properties")
         .auto_shrink([false, false])
         .show(ui, |ui| {
-            let salt = format!("properties {node:?}");
-            match node {
-                TreeNode::Controller => property_view_ui(ui, &salt, &project.controller),
-                TreeNode::Task(name) => {
-                    if let Some(task) = project.task(name) {
-                        property_view_ui(ui, &salt, task);
-                    }
-                }
-                TreeNode::IoArea(name) => {
-                    if let Some(area) = project.io_areas.iter().find(|a| a.name == *name) {
-                        property_view_ui(ui, &salt, area);
-                    }
-                }
-                TreeNode::ModbusDevice(name) => {
-                    if let Some(device) = project.modbus_devices.iter().find(|d| d.name == *name) {
-                        property_view_ui(ui, &salt, device);
-                    }
-                }
-                TreeNode::Axis(name) => {
-                    if let Some(axis) = project.axes.iter().find(|a| a.name == *name) {
-                        property_view_ui(ui, &salt, axis);
-                    }
-                }
-                TreeNode::Object(name) => {
-                    if let Some(object) = project.application.object(name) {
-                        object_summary_ui(ui, object);
-                    }
-                }
-                _ => {}
+            if let TreeNode::Object(name) = node
+                && let Some(object) = project.application.object(name)
+            {
+                object_summary_ui(ui, object);
+            } else {
+                settings_ui(ui, project, node);
             }
         });
 }
@@ -204,22 +180,7 @@ fn io_document_ui(studio: &mut Studio, ui: &mut Ui, node: &TreeNode) {
     egui::CollapsingHeader::new(RichText::new(node.title(Some(project))).strong())
         .id_salt(("io_document_settings", node))
         .default_open(false)
-        .show(ui, |ui| {
-            let salt = format!("io settings {node:?}");
-            match node {
-                TreeNode::IoArea(name) => {
-                    if let Some(area) = project.io_areas.iter().find(|a| a.name == *name) {
-                        property_view_ui(ui, &salt, area);
-                    }
-                }
-                TreeNode::ModbusDevice(name) => {
-                    if let Some(device) = project.modbus_devices.iter().find(|d| d.name == *name) {
-                        property_view_ui(ui, &salt, device);
-                    }
-                }
-                _ => property_view_ui(ui, &salt, &project.controller),
-            }
-        });
+        .show(ui, |ui| settings_ui(ui, project, node));
     ui.separator();
     let output = editor::io_mapping_ui(ui, project);
     if let Some((owner, variable)) = output.open {

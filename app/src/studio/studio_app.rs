@@ -4,7 +4,7 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use egui::Ui;
-use project_model::{LoadProblem, Object};
+use project_model::LoadProblem;
 
 use super::build_job::{BuildJob, BuildOutcome};
 use super::dock::{Dock, LAYOUT_KEY};
@@ -1028,21 +1028,6 @@ impl Studio {
         if title != self.title {
             ctx.send_viewport_cmd(egui::ViewportCommand::Title(title.clone()));
             self.title = title;
-        }
-    }
-
-    /// The project's watch list objects' names, in tree order.
-    pub fn objects_of<T>(&self, pick: impl Fn(&Object) -> Option<&T>) -> Vec<String>
-    where
-        T: ?Sized,
-    {
-        match &self.session {
-            Some(session) => project_model::object_files(&session.project)
-                .into_iter()
-                .filter(|(_, object)| pick(object).is_some())
-                .map(|(_, object)| object.name().to_owned())
-                .collect(),
-            None => Vec::new(),
         }
     }
 }

@@ -6,7 +6,7 @@
 use std::path::Path;
 use std::time::{Duration, Instant};
 
-use app::studio::{Settings, StudioApp};
+use app::studio::{Phase, Settings, StudioApp};
 use egui::{Key, Modifiers};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable as _;
@@ -17,22 +17,9 @@ pub const PATIENCE: Duration = Duration::from_secs(30);
 /// A copy of the example project, changed by `edit` (given the copy's folder).
 pub fn example_copy(edit: impl Fn(&Path)) -> tempfile::TempDir {
     let dir = tempfile::tempdir().unwrap();
-    copy_dir(&assets::example_project_dir(), dir.path());
+    assets::copy_example_project(dir.path()).unwrap();
     edit(dir.path());
     dir
-}
-
-fn copy_dir(from: &Path, to: &Path) {
-    std::fs::create_dir_all(to).unwrap();
-    for entry in std::fs::read_dir(from).unwrap() {
-        let entry = entry.unwrap();
-        let target = to.join(entry.file_name());
-        if entry.file_type().unwrap().is_dir() {
-            copy_dir(&entry.path(), &target);
-        } else {
-            std::fs::copy(entry.path(), target).unwrap();
-        }
-    }
 }
 
 pub fn studio(project: &Path) -> Harness<'static, StudioApp> {
@@ -110,4 +97,18 @@ pub fn replace_in(dir: &Path, file: &str, from: &str, to: &str) {
     let text = std::fs::read_to_string(&path).unwrap();
     assert!(text.contains(from), "{file} holds no '{from}'");
     std::fs::write(&path, text.replace(from, to)).unwrap();
+}
+
+/// Logs in with Alt+F8 to a target without the project's program, answers the download
+/// question with Download and waits until the studio is online.
+pub fn login_with_download(harness: &mut Harness<'_, StudioApp>) {
+    harness.key_press_modifiers(Modifiers::ALT, Key::F8);
+    wait_until(harness, "the download question", |app| {
+        matches!(app.online().phase(), Phase::ConfirmDownload { .. })
+    });
+    harness.step();
+    harness.get_by_label("Download").click();
+    wait_until(harness, "the download", |app| {
+        *app.online().phase() == Phase::Online
+    });
 }

@@ -37,6 +37,17 @@ pub type Waker = Arc<dyn Fn() + Send + Sync>;
 /// A typed value the studio refused to send: the variable's path and the reason.
 pub type Refusal = (String, String);
 
+/// Typed values turned into bytes, by where they go.
+#[derive(Default)]
+struct Encoded {
+    /// Values for the controller, by place.
+    target: Vec<(Place, Vec<u8>)>,
+    /// Values for Modbus device channels, by bound path.
+    devices: Vec<(String, Vec<u8>)>,
+    /// Paths for the controller while logged out.
+    logged_out: Vec<String>,
+}
+
 /// Which target the studio logs in to.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 pub enum TargetKind {
@@ -435,28 +446,27 @@ impl Online {
         devices::binding_of(&self.project_devices, path).is_some()
     }
 
-    /// What the target said about a path: its place and type, or why it has none.
-    pub fn resolution(&self, path: &str) -> Option<&Result<Resolved, String>> {
-        self.resolved.get(path)
-    }
-
-    /// Turns typed values into bytes of their variables' types. Each failure names the path
-    /// and the reason; nothing is sent when any value is refused.
-    fn encode(&self, values: &[(String, String)]) -> Result<Vec<(Place, Vec<u8>)>, Vec<Refusal>> {
-        let mut encoded = Vec::new();
+    /// Turns typed values into bytes of their variables' types: for the controller by the
+    /// places it resolved, for Modbus devices by their channels. Values for the controller
+    /// are left out while logged out (`send` refuses them). Each failure names the path and
+    /// the reason; nothing is sent when any value is refused.
+    fn encode(&self, values: &[(String, String)]) -> Result<Encoded, Vec<Refusal>> {
+        let mut encoded = Encoded::default();
         let mut refused = Vec::new();
         for (path, text) in values {
             if let Some((device, index)) = devices::binding_of(&self.project_devices, path) {
                 let channels = crate::modbus_devices::channels_of(device);
-                if let Some(channel) = channels.get(index)
-                    && let Err(reason) =
-                        crate::literal_value::parse(text.trim(), channel.ty as u8, 0)
-                {
-                    refused.push((path.clone(), reason));
+                let Some(channel) = channels.get(index) else {
+                    continue;
+                };
+                match crate::literal_value::parse(text.trim(), channel.ty as u8, 0) {
+                    Ok(bytes) => encoded.devices.push((path.clone(), bytes)),
+                    Err(reason) => refused.push((path.clone(), reason)),
                 }
                 continue;
             }
             if !self.is_online() {
+                encoded.logged_out.push(path.clone());
                 continue;
             }
             match self.resolved.get(path) {
@@ -466,7 +476,7 @@ impl Online {
                         resolved.type_tag,
                         resolved.length,
                     ) {
-                        Ok(bytes) => encoded.push((resolved.place, bytes)),
+                        Ok(bytes) => encoded.target.push((resolved.place, bytes)),
                         Err(reason) => refused.push((path.clone(), reason)),
                     }
                 }
@@ -504,59 +514,28 @@ impl Online {
     /// for the controller while logged out are refused on their own, and the devices' values
     /// still go out.
     fn send(&mut self, values: &[(String, String)], force: bool) -> Result<(), Vec<Refusal>> {
-        let (on_devices, on_target): (Vec<_>, Vec<_>) = values
-            .iter()
-            .cloned()
-            .partition(|(path, _)| self.is_device_bound(path));
         let encoded = self.encode(values)?;
-        let mut refused = Vec::new();
-        if let Err(mut more) = self.send_to_devices(&on_devices, force) {
-            refused.append(&mut more);
-        }
-        if !on_target.is_empty() {
-            if self.is_online() {
-                self.command(if force {
-                    Command::Force(encoded)
-                } else {
-                    Command::Write(encoded)
-                });
-                if force {
-                    self.command(Command::Forces);
-                }
-            } else {
-                refused.extend(
-                    on_target
-                        .into_iter()
-                        .map(|(path, _)| (path, "log in to write it (Alt+F8)".to_owned())),
-                );
+        let mut refused: Vec<Refusal> = encoded
+            .logged_out
+            .into_iter()
+            .map(|path| (path, "log in to write it (Alt+F8)".to_owned()))
+            .collect();
+        for (path, bytes) in encoded.devices {
+            if let Err(reason) = self
+                .devices
+                .send(&self.project_devices, &path, bytes, force)
+            {
+                refused.push((path, reason));
             }
         }
-        if refused.is_empty() {
-            Ok(())
-        } else {
-            Err(refused)
-        }
-    }
-
-    /// Writes or forces the device-bound values among `values` (already type-checked).
-    fn send_to_devices(
-        &mut self,
-        values: &[(String, String)],
-        force: bool,
-    ) -> Result<(), Vec<Refusal>> {
-        let mut refused = Vec::new();
-        for (path, text) in values {
-            let Some((device, index)) = devices::binding_of(&self.project_devices, path) else {
-                continue;
-            };
-            let channels = crate::modbus_devices::channels_of(device);
-            let Some(channel) = channels.get(index) else {
-                continue;
-            };
-            let sent = crate::literal_value::parse(text.trim(), channel.ty as u8, 0)
-                .and_then(|bytes| self.devices.send(&self.project_devices, path, bytes, force));
-            if let Err(reason) = sent {
-                refused.push((path.clone(), reason));
+        if !encoded.target.is_empty() {
+            self.command(if force {
+                Command::Force(encoded.target)
+            } else {
+                Command::Write(encoded.target)
+            });
+            if force {
+                self.command(Command::Forces);
             }
         }
         if refused.is_empty() {

@@ -22,22 +22,21 @@ pub struct TracePaneState {
 }
 
 impl TracePaneState {
+    /// Every trace of the project and the one shown.
+    fn traces<'p>(
+        &self,
+        session: Option<&'p crate::studio::session::Session>,
+    ) -> (Vec<&'p TraceConfig>, Option<&'p TraceConfig>) {
+        super::chosen_object(session, self.selected.as_deref(), |object| match object {
+            Object::Trace(trace) => Some(trace),
+            _ => None,
+        })
+    }
+
     /// The variables of the trace the pane shows.
     pub fn variable_paths(&self, session: Option<&crate::studio::session::Session>) -> Vec<String> {
-        let Some(session) = session else {
-            return Vec::new();
-        };
-        let traces: Vec<&TraceConfig> = project_model::object_files(&session.project)
-            .into_iter()
-            .filter_map(|(_, object)| match object {
-                Object::Trace(trace) => Some(trace),
-                _ => None,
-            })
-            .collect();
-        self.selected
-            .as_ref()
-            .and_then(|name| traces.iter().find(|t| t.name == *name).copied())
-            .or_else(|| traces.first().copied())
+        self.traces(session)
+            .1
             .map(|trace| trace.variables.iter().map(|v| v.path.clone()).collect())
             .unwrap_or_default()
     }
@@ -229,30 +228,11 @@ fn configuration_ui(studio: &mut Studio, ui: &mut Ui, config: &TraceConfig) {
     });
 }
 
-fn traces(studio: &Studio) -> Vec<TraceConfig> {
-    match &studio.session {
-        Some(session) => project_model::object_files(&session.project)
-            .into_iter()
-            .filter_map(|(_, object)| match object {
-                Object::Trace(trace) => Some(trace.clone()),
-                _ => None,
-            })
-            .collect(),
-        None => Vec::new(),
-    }
-}
-
 pub(crate) fn trace_ui(studio: &mut Studio, ui: &mut Ui) {
     let language = studio.settings.language;
-    let all = traces(studio);
-    let current = studio
-        .trace
-        .selected
-        .as_ref()
-        .and_then(|name| all.iter().find(|trace| trace.name == *name))
-        .or_else(|| all.first())
-        .cloned();
-    let Some(config) = current else {
+    let (traces, current) = studio.trace.traces(studio.session.as_ref());
+    let names: Vec<String> = traces.iter().map(|trace| trace.name.clone()).collect();
+    let Some(config) = current.cloned() else {
         ui.label(RichText::new(Text::NoTrace.get(language)).weak());
         return;
     };
@@ -262,12 +242,9 @@ pub(crate) fn trace_ui(studio: &mut Studio, ui: &mut Ui) {
         egui::ComboBox::from_id_salt("trace_choice")
             .selected_text(&config.name)
             .show_ui(ui, |ui| {
-                for trace in &all {
-                    if ui
-                        .selectable_label(trace.name == config.name, &trace.name)
-                        .clicked()
-                    {
-                        studio.trace.selected = Some(trace.name.clone());
+                for name in &names {
+                    if ui.selectable_label(*name == config.name, name).clicked() {
+                        studio.trace.selected = Some(name.clone());
                     }
                 }
             })

@@ -24,19 +24,19 @@ pub struct WatchPaneState {
 }
 
 impl WatchPaneState {
+    /// Every watch list of the project and the one shown.
+    fn lists<'p>(
+        &self,
+        session: Option<&'p Session>,
+    ) -> (Vec<&'p WatchList>, Option<&'p WatchList>) {
+        super::chosen_object(session, self.list.as_deref(), |object| match object {
+            Object::WatchList(list) => Some(list),
+            _ => None,
+        })
+    }
+
     fn current<'p>(&self, session: Option<&'p Session>) -> Option<&'p WatchList> {
-        let project = &session?.project;
-        let lists: Vec<&WatchList> = project_model::object_files(project)
-            .into_iter()
-            .filter_map(|(_, object)| match object {
-                Object::WatchList(list) => Some(list),
-                _ => None,
-            })
-            .collect();
-        self.list
-            .as_ref()
-            .and_then(|name| lists.iter().find(|list| list.name == *name).copied())
-            .or_else(|| lists.first().copied())
+        self.lists(session).1
     }
 
     /// The paths of the shown watch list, which the studio reads while online.
@@ -74,11 +74,9 @@ fn replace(changed: WatchList) -> Vec<Edit> {
 
 pub(crate) fn watch_ui(studio: &mut Studio, ui: &mut Ui) {
     let language = studio.settings.language;
-    let names = studio.objects_of(|object| match object {
-        Object::WatchList(list) => Some(list),
-        _ => None,
-    });
-    let Some(list) = studio.watch.current(studio.session.as_ref()).cloned() else {
+    let (lists, current) = studio.watch.lists(studio.session.as_ref());
+    let names: Vec<String> = lists.iter().map(|list| list.name.clone()).collect();
+    let Some(list) = current.cloned() else {
         ui.label(RichText::new(Text::NoWatchList.get(language)).weak());
         return;
     };

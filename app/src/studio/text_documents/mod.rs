@@ -12,7 +12,7 @@ use std::ops::Range;
 
 use editor::{EditorDiagnostic, EditorTexts, Gesture, KeywordCompletions, StEditor, VariableTable};
 use egui::{RichText, Ui};
-use project_model::{Edit, GlobalVarList, Object, Pou, Project, TextTarget, VarOwner};
+use project_model::{Body, Edit, GlobalVarList, Object, Pou, Project, TextTarget, VarOwner};
 
 use super::i18n::{Language, Text};
 use super::studio_app::{Command, Studio};
@@ -181,62 +181,45 @@ impl TextDocuments {
 }
 
 /// The body of a POU part, with its target.
-fn body_of<'p>(pou: &'p Pou, part: &Part) -> Option<(TextTarget, &'p str)> {
+fn body_of<'p>(pou: &'p Pou, part: &Part) -> Option<(TextTarget, &'p Body)> {
     let name = pou.name.clone();
-    match part {
-        Part::Main => pou.body.st_text().map(|text| (TextTarget::Pou(name), text)),
-        Part::Method(method) => pou
-            .methods
-            .iter()
-            .find(|m| m.name == *method)
-            .and_then(|m| {
-                m.body.st_text().map(|text| {
-                    (
-                        TextTarget::Method {
-                            pou: name,
-                            method: method.clone(),
-                        },
-                        text,
-                    )
-                })
-            }),
-        Part::Action(action) => pou
-            .actions
-            .iter()
-            .find(|a| a.name == *action)
-            .and_then(|a| {
-                a.body.st_text().map(|text| {
-                    (
-                        TextTarget::Action {
-                            pou: name,
-                            action: action.clone(),
-                        },
-                        text,
-                    )
-                })
-            }),
-        Part::Property(property, get) => pou
-            .properties
-            .iter()
-            .find(|p| p.name == *property)
-            .and_then(|p| if *get { p.get.as_ref() } else { p.set.as_ref() })
-            .and_then(|accessor| {
-                accessor.body.st_text().map(|text| {
-                    (
-                        TextTarget::Property {
-                            pou: name,
-                            property: property.clone(),
-                            get: *get,
-                        },
-                        text,
-                    )
-                })
-            }),
-    }
+    Some(match part {
+        Part::Main => (TextTarget::Pou(name), &pou.body),
+        Part::Method(method) => (
+            TextTarget::Method {
+                pou: name,
+                method: method.clone(),
+            },
+            &pou.methods.iter().find(|m| m.name == *method)?.body,
+        ),
+        Part::Action(action) => (
+            TextTarget::Action {
+                pou: name,
+                action: action.clone(),
+            },
+            &pou.actions.iter().find(|a| a.name == *action)?.body,
+        ),
+        Part::Property(property, get) => {
+            let property_data = pou.properties.iter().find(|p| p.name == *property)?;
+            let accessor = if *get {
+                property_data.get.as_ref()
+            } else {
+                property_data.set.as_ref()
+            }?;
+            (
+                TextTarget::Property {
+                    pou: name,
+                    property: property.clone(),
+                    get: *get,
+                },
+                &accessor.body,
+            )
+        }
+    })
 }
 
-/// Draws a POU document. Returns `false` when the POU has no text to edit here (graphical
-/// bodies are shown by the caller).
+/// Draws a POU document (graphical bodies as their data until their editors come). Returns
+/// `false` when `name` is not a POU.
 pub(crate) fn pou_document_ui(studio: &mut Studio, ui: &mut Ui, name: &str) -> bool {
     let Some(session) = &studio.session else {
         return false;
@@ -572,8 +555,19 @@ pub fn find_word(text: &str, word: &str) -> Option<Range<usize>> {
 /// and values inline while online.
 fn body_ui(studio: &mut Studio, ui: &mut Ui, pou: &Pou, part: &Part, reveal: Option<&Reveal>) {
     let language = studio.settings.language;
-    let Some((target, text)) = body_of(pou, part) else {
+    let Some((target, body)) = body_of(pou, part) else {
         ui.label(RichText::new(Text::NoImplementation.get(language)).weak());
+        return;
+    };
+    let Some(text) = body.st_text() else {
+        match body {
+            Body::None => {
+                ui.label(RichText::new(Text::NoImplementation.get(language)).weak());
+            }
+            graphical => {
+                super::document_view::graphical_body_ui(ui, &target_label(&target), graphical)
+            }
+        }
         return;
     };
     let Some(session) = &studio.session else {
