@@ -7,35 +7,9 @@ use std::path::{Path, PathBuf};
 
 use compiler::syntax::parse;
 
-fn corpora() -> PathBuf {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../shared/corpora");
-    assert!(
-        dir.is_dir(),
-        "{} is missing: the corpora live in the shared folder beside the repository",
-        dir.display()
-    );
-    dir
-}
+mod common;
 
-fn files(dir: &Path, extension: &str) -> Vec<PathBuf> {
-    let mut found = Vec::new();
-    let mut pending = vec![dir.to_owned()];
-    while let Some(current) = pending.pop() {
-        for entry in std::fs::read_dir(&current).unwrap() {
-            let path = entry.unwrap().path();
-            if path.is_dir() {
-                pending.push(path);
-            } else if path
-                .extension()
-                .is_some_and(|e| e.eq_ignore_ascii_case(extension))
-            {
-                found.push(path);
-            }
-        }
-    }
-    found.sort();
-    found
-}
+use common::{corpora, files};
 
 /// Parses every file and returns those whose outcome differs from `expect_ok`, with the first
 /// error of each.

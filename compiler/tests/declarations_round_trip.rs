@@ -4,11 +4,15 @@
 
 #![allow(clippy::unwrap_used, clippy::expect_used)] // Test helpers may panic: a panic is a failed test.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 use compiler::SourceProject;
 use compiler::ide::{DeclarationKind, parse_declarations};
 use project_model::{Object, Project};
+
+mod common;
+
+use common::{corpora, files};
 
 /// Round-trips every declaration part of `project` and returns one line per difference.
 fn round_trip_failures(origin: &str, project: &Project) -> (usize, Vec<String>) {
@@ -83,34 +87,9 @@ fn the_example_project_round_trips_through_its_declaration_text() {
     assert_eq!(parsed.variables[0].comment, "启动按钮 (start button)");
 }
 
-fn files(dir: &Path, extension: &str) -> Vec<PathBuf> {
-    let mut found = Vec::new();
-    let mut pending = vec![dir.to_owned()];
-    while let Some(current) = pending.pop() {
-        for entry in std::fs::read_dir(&current).unwrap() {
-            let path = entry.unwrap().path();
-            if path.is_dir() {
-                pending.push(path);
-            } else if path
-                .extension()
-                .is_some_and(|e| e.eq_ignore_ascii_case(extension))
-            {
-                found.push(path);
-            }
-        }
-    }
-    found.sort();
-    found
-}
-
 #[test]
 fn the_corpora_round_trip_through_their_declaration_text() {
-    let corpora = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../shared/corpora");
-    assert!(
-        corpora.is_dir(),
-        "{} is missing: the corpora live in the shared folder beside the repository",
-        corpora.display()
-    );
+    let corpora = corpora();
     let mut paths = files(&corpora.join("ironplc"), "st");
     paths.extend(files(&corpora.join("matiec/AnnexF"), "txt"));
     paths.extend(files(&corpora.join("matiec/lib"), "txt"));

@@ -11,6 +11,12 @@ use std::path::{Path, PathBuf};
 
 use tree_sitter::{Node, Parser};
 
+// The compiler's corpus tests find the corpora the same way; one file serves both crates.
+#[path = "../../compiler/tests/common/mod.rs"]
+mod common;
+
+use common::{corpora, files};
+
 /// How the compiler reads a text, which decides whether it is accepted.
 #[derive(Clone, Copy, Debug)]
 enum Entry {
@@ -27,36 +33,6 @@ struct Sample {
     origin: String,
     text: String,
     entry: Entry,
-}
-
-fn corpora() -> PathBuf {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../shared/corpora");
-    assert!(
-        dir.is_dir(),
-        "{} is missing: the corpora live in the shared folder beside the repository",
-        dir.display()
-    );
-    dir
-}
-
-fn files(dir: &Path, extension: &str) -> Vec<PathBuf> {
-    let mut found = Vec::new();
-    let mut pending = vec![dir.to_owned()];
-    while let Some(current) = pending.pop() {
-        for entry in std::fs::read_dir(&current).unwrap() {
-            let path = entry.unwrap().path();
-            if path.is_dir() {
-                pending.push(path);
-            } else if path
-                .extension()
-                .is_some_and(|e| e.eq_ignore_ascii_case(extension))
-            {
-                found.push(path);
-            }
-        }
-    }
-    found.sort();
-    found
 }
 
 /// Whole files, read as the compiler's corpus test reads them (invalid UTF-8 replaced).
