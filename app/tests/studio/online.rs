@@ -1,16 +1,12 @@
 //! The online workflow in the studio, driven through its accessibility tree against the built-in
 //! simulator: build, log in with download, start, watch, force, release, write, trace, stop.
 
-#![allow(clippy::unwrap_used, clippy::expect_used)] // Test helpers may panic: a panic is a failed test.
-
 use app::studio::TracePhase;
 use egui::{Key, Modifiers};
 use egui_kittest::kittest::Queryable as _;
 use online::TargetState;
 
-mod support;
-
-use support::{
+use crate::support::{
     example_copy, login_with_download, prepare, show_tab, studio, value, wait_until, watch,
 };
 
@@ -18,7 +14,7 @@ use support::{
 fn build_login_run_watch_force_release_write_trace_and_stop_in_the_simulator() {
     // The project's trace records 50 samples here, so it completes quickly.
     let project = example_copy(|dir| {
-        support::replace_in(
+        crate::support::replace_in(
             dir,
             "application/Diagnostics/TRC_Conveyor.trace.toml",
             "record_count = 2000",

@@ -2,8 +2,6 @@
 //! lavapipe): the main window, and the watch pane online. A changed look fails the test with a
 //! diff image beside the snapshot; `UPDATE_SNAPSHOTS=1` accepts the new look.
 
-#![allow(clippy::unwrap_used, clippy::expect_used)] // Test helpers may panic: a panic is a failed test.
-
 use app::studio::{Settings, StudioApp};
 use egui_kittest::Harness;
 

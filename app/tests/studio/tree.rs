@@ -1,7 +1,5 @@
 //! Editing the device tree and the task configuration through the studio's accessibility tree.
 
-#![allow(clippy::unwrap_used, clippy::expect_used)] // Test helpers may panic: a panic is a failed test.
-
 use std::path::Path;
 
 use app::studio::{Settings, StudioApp, TreeNode};

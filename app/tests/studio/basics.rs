@@ -1,7 +1,5 @@
 //! The studio driven through its accessibility tree, without a window or GPU.
 
-#![allow(clippy::unwrap_used, clippy::expect_used)] // Test helpers may panic: a panic is a failed test.
-
 use std::path::Path;
 
 use app::studio::{Language, Settings, StudioApp, Text, TreeNode};

@@ -1,17 +1,15 @@
 //! A third-party Modbus TCP device of the project monitored, written, forced and released from
 //! the watch and forces panes without logging in to the controller.
 
-#![allow(clippy::unwrap_used, clippy::expect_used)] // Test helpers may panic: a panic is a failed test.
-
-mod support;
-
 use std::sync::{Arc, Mutex};
 
+use crate::support::{
+    example_copy, prepare, replace_in, show_tab, studio, value, wait_until, watch,
+};
 use egui::{Key, Modifiers};
 use egui_kittest::kittest::Queryable as _;
 use runtime::areas::LocatedAreas;
 use runtime::modbus::{MapSlot, ModbusMap, ServerOptions, serve};
-use support::{example_copy, prepare, replace_in, show_tab, studio, value, wait_until, watch};
 
 /// A Modbus TCP server on loopback standing in for the drive: its holding registers are the
 /// `%QW` area of `areas`. Returns its port; it runs until the test ends.

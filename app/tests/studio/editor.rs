@@ -2,16 +2,12 @@
 //! diagnostics follow as you type, declarations typed as text become variables, a message
 //! jumps to its place, and values show inline while online.
 
-#![allow(clippy::unwrap_used, clippy::expect_used)] // Test helpers may panic: a panic is a failed test.
-
-mod support;
-
+use crate::support::{example_copy, login_with_download, studio, wait_until};
 use app::studio::StudioApp;
 use egui::{Key, Modifiers};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable as _;
 use project_model::{Object, TextTarget};
-use support::{example_copy, login_with_download, studio, wait_until};
 
 fn main_body(app: &StudioApp) -> String {
     match app.session().unwrap().project.application.object("Main") {
@@ -105,7 +101,7 @@ fn declarations_typed_as_text_become_variables() {
 #[test]
 fn a_build_message_opens_its_place() {
     let project = example_copy(|dir| {
-        support::replace_in(
+        crate::support::replace_in(
             dir,
             "application/Main.st",
             "GVL_Machine.xBatchComplete := ctuPackages.Q;",
@@ -170,7 +166,7 @@ fn values_show_inline_while_online() {
 fn a_variable_dragged_from_a_declaration_table_joins_the_watch_list() {
     let project = example_copy(|_| {});
     let mut harness = studio(project.path());
-    support::show_tab(&mut harness, "Watch");
+    crate::support::show_tab(&mut harness, "Watch");
     harness.get_by_label("GVL_IO").focus();
     harness.step();
     harness.key_press(Key::Enter);

@@ -1,18 +1,16 @@
 //! A controller that disappears while the studio is logged in: the studio says so, keeps every
 //! edit, and connects again when the controller is back.
 
-#![allow(clippy::unwrap_used, clippy::expect_used)] // Test helpers may panic: a panic is a failed test.
-
-mod support;
-
 use std::sync::{Arc, Mutex};
 
+use crate::support::{
+    example_copy, login_with_download, replace_in, show_tab, studio, wait_until, watch,
+};
 use app::studio::{Phase, TargetKind};
 use runtime::areas::LocatedAreas;
 use runtime::modbus::{MapSlot, ModbusMap, ServerOptions, serve};
 use runtime::online::OnlineServices;
 use runtime::scheduler::{Scheduler, SchedulerOptions};
-use support::{example_copy, login_with_download, replace_in, show_tab, studio, wait_until, watch};
 use tokio::sync::oneshot;
 
 /// A soft PLC on `port` (0: any) in its own thread; dropping the sender stops it. Returns the

@@ -1,8 +1,6 @@
 //! Helpers shared by the studio's workflow tests: a temporary copy of the example project, a
 //! harness, waiting for background work, and typing into the watch pane.
 
-#![allow(dead_code)] // Each test file uses the helpers it needs.
-
 use std::path::Path;
 use std::time::{Duration, Instant};
 

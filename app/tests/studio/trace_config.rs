@@ -1,14 +1,10 @@
 //! The trace pane edits the project's trace objects in place, one undo step per change.
 
-#![allow(clippy::unwrap_used, clippy::expect_used)] // Test helpers may panic: a panic is a failed test.
-
-mod support;
-
+use crate::support::{example_copy, show_tab, studio};
 use app::studio::StudioApp;
 use egui::{Key, Modifiers};
 use egui_kittest::kittest::Queryable as _;
 use project_model::{Object, TraceConfig};
-use support::{example_copy, show_tab, studio};
 
 fn trace(app: &StudioApp) -> TraceConfig {
     match app

@@ -1,18 +1,14 @@
 //! Unsaved changes survive the studio closing without a save: they are offered back when the
 //! project opens again, and a save or a discard removes the copy.
 
-#![allow(clippy::unwrap_used, clippy::expect_used)] // Test helpers may panic: a panic is a failed test.
-
-mod support;
-
 use std::path::Path;
 
+use crate::support::{example_copy, show_tab, wait_until, watch};
 use app::studio::{Recovery, Settings, StudioApp, StudioOptions};
 use egui::{Key, Modifiers};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable as _;
 use project_model::Object;
-use support::{example_copy, show_tab, wait_until, watch};
 
 fn studio_with_recovery(project: &Path, recovery: &Path) -> Harness<'static, StudioApp> {
     let app = StudioApp::with_options(StudioOptions {
