@@ -153,8 +153,8 @@ impl Checker {
             if let (ContinuityQuantity::Position, Some(period)) = (quantity, slave_period) {
                 difference -= period * (difference / period).round();
             }
-            // A NaN difference fails `<=` and is reported, which is what a broken value deserves.
-            if !(difference.abs() <= self.tolerances[index]) {
+            // A NaN difference is reported too, which is what a broken value deserves.
+            if difference.is_nan() || difference.abs() > self.tolerances[index] {
                 self.warnings.push(ContinuityWarning {
                     joint,
                     master,

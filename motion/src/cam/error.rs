@@ -152,7 +152,7 @@ pub enum CamError {
         previous_master: f64,
     },
     /// A table export was asked for fewer than two samples.
-    #[error("a table needs at least 2 elements, including both ends; {elements} were asked for")]
+    #[error("a table needs at least 2 elements, including both ends, not {elements}")]
     TooFewElements {
         /// The number of elements asked for.
         elements: usize,

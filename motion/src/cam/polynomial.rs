@@ -130,10 +130,12 @@ fn solve(mut matrix: [[f64; 4]; 4], mut rhs: [f64; 4], size: usize) -> [f64; 4] 
         }
         matrix.swap(pivot, best);
         rhs.swap(pivot, best);
+        let pivot_row = matrix[pivot];
         for row in pivot + 1..size {
-            let factor = matrix[row][pivot] / matrix[pivot][pivot];
-            for column in pivot..size {
-                matrix[row][column] -= factor * matrix[pivot][column];
+            let factor = matrix[row][pivot] / pivot_row[pivot];
+            let entries = matrix[row][pivot..size].iter_mut();
+            for (entry, above) in entries.zip(&pivot_row[pivot..size]) {
+                *entry -= factor * above;
             }
             rhs[row] -= factor * rhs[pivot];
         }

@@ -4,4 +4,6 @@
 
 mod errors;
 mod laws;
+mod point_tables;
+mod properties;
 mod worked_examples;
