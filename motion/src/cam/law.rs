@@ -159,15 +159,6 @@ impl MotionLaw {
             },
         }
     }
-
-    /// Whether the law is a polynomial solved from general boundary values (Poly3, Poly5, Poly7)
-    /// or a straight line, rather than a fixed rest-in-rest shape.
-    pub fn is_polynomial(self) -> bool {
-        matches!(
-            self,
-            MotionLaw::Line | MotionLaw::Poly3 | MotionLaw::Poly5 | MotionLaw::Poly7
-        )
-    }
 }
 
 impl fmt::Display for MotionLaw {

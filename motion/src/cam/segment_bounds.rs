@@ -2,9 +2,10 @@
 
 use crate::curve::CamSample;
 
-/// Number of sub-intervals scanned for sign changes of a derivative; every extremum of a law
-/// or of a polynomial of degree ≤ 7 lies in its own sub-interval at this resolution, except for
-/// extrema closer together than 1/256 of the segment, whose values then differ negligibly.
+/// Number of sub-intervals scanned for sign changes of a derivative. A polynomial of degree ≤ 7
+/// has at most six extrema and the laws at most three per quantity, so a pair of extrema can
+/// hide from the scan only when both fall inside one 1/256 of the segment, where the quantity
+/// hardly differs from its value at the sub-interval's ends.
 const SCAN_INTERVALS: usize = 256;
 
 /// Bisection steps that locate a sign change of a derivative to well below f64 resolution
