@@ -100,7 +100,10 @@ impl SegmentedCam {
     ///
     /// CODESYS allows the format only for cams of Line and Poly5 segments; any other law is an
     /// error naming its segment. Velocity and acceleration are taken from the curve itself, so a
-    /// Line segment contributes its slope whatever its key points say.
+    /// Line segment contributes its slope whatever its key points say. A point cannot hold a
+    /// kink: where the velocity jumps (a Line beside a Poly5 of another end velocity), the point
+    /// takes the values of the segment that starts there, and the last point those of the end
+    /// of the last segment; check the continuity first to know whether that loses anything.
     pub fn xyva_points(&self) -> Result<Vec<CamPoint>, CamError> {
         for (index, (segment, curve)) in self.segments.iter().zip(&self.curves).enumerate() {
             if !matches!(segment.law, MotionLaw::Line | MotionLaw::Poly5) {
