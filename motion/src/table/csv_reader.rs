@@ -67,16 +67,16 @@ pub fn read_points_csv(text: &str) -> Result<Vec<CamPoint>, CsvError> {
             velocity: values[2],
             acceleration: values[3],
         };
-        if let Some(previous) = points.last() {
-            if point.master <= previous.master {
-                return Err(CsvError::MasterNotIncreasing {
-                    line,
-                    column: columns[0].clone(),
-                    master: point.master,
-                    previous_line,
-                    previous: previous.master,
-                });
-            }
+        if let Some(previous) = points.last()
+            && point.master <= previous.master
+        {
+            return Err(CsvError::MasterNotIncreasing {
+                line,
+                column: columns[0].clone(),
+                master: point.master,
+                previous_line,
+                previous: previous.master,
+            });
         }
         points.push(point);
         previous_line = line;
