@@ -2,7 +2,7 @@
 
 use super::TableError;
 use super::number::{check_identifier, st_real};
-use super::sampling::sample_equidistant;
+use super::sampling::{CODESYS_MAX_ELEMENTS, check_count, sample_equidistant};
 use super::scaling::{CodesysScaling, table_type_declaration};
 use crate::curve::{CamCurve, CamPoint};
 
@@ -22,6 +22,7 @@ pub struct CodesysTable1d {
 impl CodesysTable1d {
     /// `count` equidistant samples of `curve`, both ends included.
     pub fn from_curve(curve: &dyn CamCurve, count: usize) -> Result<Self, TableError> {
+        check_count(count, CODESYS_MAX_ELEMENTS, "CODESYS (nElements is an INT)")?;
         let points = sample_equidistant(curve, count)?;
         let scaling = CodesysScaling::technical_units(&points);
         Ok(Self { points, scaling })

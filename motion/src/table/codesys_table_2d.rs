@@ -2,9 +2,12 @@
 
 use super::TableError;
 use super::number::{check_identifier, st_real};
-use super::sampling::{check_points, sample_equidistant};
+use super::sampling::{CODESYS_MAX_ELEMENTS, check_count, check_points, sample_equidistant};
 use super::scaling::{CodesysScaling, table_type_declaration};
 use crate::curve::{CamCurve, CamPoint};
+
+/// How errors name CODESYS when a table is too long for it.
+const CODESYS_SYSTEM: &str = "CODESYS (nElements is an INT)";
 
 /// Master/slave pairs for a CODESYS `SMC_CAMTable_LREAL_<N>_2`, in technical units.
 #[derive(Clone, Debug, PartialEq)]
@@ -18,11 +21,13 @@ pub struct CodesysTable2d {
 impl CodesysTable2d {
     /// `count` equidistant samples of `curve`, both ends included.
     pub fn from_curve(curve: &dyn CamCurve, count: usize) -> Result<Self, TableError> {
+        check_count(count, CODESYS_MAX_ELEMENTS, CODESYS_SYSTEM)?;
         Self::from_points(&sample_equidistant(curve, count)?)
     }
 
     /// The given points, which must be at least two, finite and strictly increasing in master.
     pub fn from_points(points: &[CamPoint]) -> Result<Self, TableError> {
+        check_count(points.len(), CODESYS_MAX_ELEMENTS, CODESYS_SYSTEM)?;
         check_points(points)?;
         Ok(Self {
             points: points.to_vec(),
@@ -139,6 +144,23 @@ END_TYPE
         let table = CodesysTable2d::from_curve(&Poly345, 128).unwrap();
         assert!(table.type_is_predefined());
         assert_eq!(table.type_name(), "SMC_CAMTable_LREAL_128_2");
+    }
+
+    #[test]
+    fn more_elements_than_an_int_counts_are_refused() {
+        assert_eq!(
+            CodesysTable2d::from_curve(&Poly345, 32_768)
+                .unwrap_err()
+                .to_string(),
+            "CODESYS (nElements is an INT) holds at most 32767 points in one cam table, but 32768 were given"
+        );
+        assert_eq!(
+            CodesysTable2d::from_curve(&Poly345, 32_767)
+                .unwrap()
+                .points()
+                .len(),
+            32_767
+        );
     }
 
     #[test]

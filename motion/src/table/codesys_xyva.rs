@@ -2,7 +2,7 @@
 
 use super::TableError;
 use super::number::{check_identifier, st_real};
-use super::sampling::check_points;
+use super::sampling::{CODESYS_MAX_ELEMENTS, check_count, check_points};
 use crate::curve::CamPoint;
 
 /// Points with slave position, dY/dX and d²Y/dX² for a CODESYS XYVA cam, which joins
@@ -16,6 +16,11 @@ pub struct CodesysXyva {
 impl CodesysXyva {
     /// The given points, which must be at least two, finite and strictly increasing in master.
     pub fn from_points(points: &[CamPoint]) -> Result<Self, TableError> {
+        check_count(
+            points.len(),
+            CODESYS_MAX_ELEMENTS,
+            "CODESYS (nElements is an INT)",
+        )?;
         check_points(points)?;
         Ok(Self {
             points: points.to_vec(),

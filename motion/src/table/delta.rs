@@ -3,7 +3,7 @@
 
 use super::TableError;
 use super::number::plain;
-use super::sampling::{check_points, sample_equidistant};
+use super::sampling::{check_count, check_points, sample_equidistant};
 use crate::curve::{CamCurve, CamPoint};
 
 /// The most key points one Delta DVP-15MC cam table holds.
@@ -20,13 +20,13 @@ impl DeltaKeyPoints {
     /// `count` equidistant samples of `curve` (2 to 2048), with slave velocity and
     /// acceleration with respect to the master.
     pub fn from_curve(curve: &dyn CamCurve, count: usize) -> Result<Self, TableError> {
-        check_count(count)?;
+        check_delta_count(count)?;
         Self::from_points(&sample_equidistant(curve, count)?)
     }
 
     /// The given points as key points: 2 to 2048, finite, strictly increasing in master.
     pub fn from_points(points: &[CamPoint]) -> Result<Self, TableError> {
-        check_count(points.len())?;
+        check_delta_count(points.len())?;
         check_points(points)?;
         Ok(Self {
             points: points.to_vec(),
@@ -56,15 +56,8 @@ impl DeltaKeyPoints {
 }
 
 /// Checks the number of key points against what one Delta cam table holds.
-fn check_count(count: usize) -> Result<(), TableError> {
-    if count > DELTA_MAX_KEY_POINTS {
-        return Err(TableError::TooManyPoints {
-            system: "a Delta DVP-15MC",
-            max: DELTA_MAX_KEY_POINTS,
-            count,
-        });
-    }
-    Ok(())
+fn check_delta_count(count: usize) -> Result<(), TableError> {
+    check_count(count, DELTA_MAX_KEY_POINTS, "a Delta DVP-15MC")
 }
 
 #[cfg(test)]

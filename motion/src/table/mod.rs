@@ -30,7 +30,7 @@ pub use delta::{DELTA_MAX_KEY_POINTS, DeltaKeyPoints};
 pub use error::TableError;
 pub use omron::{OMRON_MAX_POINTS, OmronCamData};
 pub use rivet_csv::{CsvColumns, write_points_csv};
-pub use sampling::{check_points, sample_equidistant};
+pub use sampling::{MAX_SAMPLES, check_points, sample_equidistant};
 pub use scaling::CodesysScaling;
 
 /// The version of the formats in `docs/cam-formats.md` this module writes and reads.

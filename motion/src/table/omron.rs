@@ -2,7 +2,7 @@
 
 use super::TableError;
 use super::number::{plain, round_significant};
-use super::sampling::sample_equidistant;
+use super::sampling::{check_count, sample_equidistant};
 use crate::curve::CamCurve;
 
 /// The most points one Omron cam table holds.
@@ -27,13 +27,7 @@ impl OmronCamData {
     /// is at least 1/65 534 of the largest phase, far more than the 10⁻⁶ of it that 7 digits
     /// resolve.
     pub fn from_curve(curve: &dyn CamCurve, count: usize) -> Result<Self, TableError> {
-        if count > OMRON_MAX_POINTS {
-            return Err(TableError::TooManyPoints {
-                system: "an Omron NJ/NX",
-                max: OMRON_MAX_POINTS,
-                count,
-            });
-        }
+        check_count(count, OMRON_MAX_POINTS, "an Omron NJ/NX")?;
         let points = sample_equidistant(curve, count)?;
         let (master_start, slave_start) = (points[0].master, points[0].slave);
         let rows: Vec<(f64, f64)> = points

@@ -4,16 +4,36 @@
 use super::TableError;
 use crate::curve::{CamCurve, CamPoint};
 
+/// The most points [`sample_equidistant`] makes, far beyond any controller's table, so a
+/// mistyped count fails with a message instead of exhausting memory.
+pub const MAX_SAMPLES: usize = 1 << 20;
+
+/// The most elements of a CODESYS table or XYVA array: `MC_CAM_REF.nElements` is an `INT`.
+pub(crate) const CODESYS_MAX_ELEMENTS: usize = 32_767;
+
+/// Fails when `count` exceeds `max`, the most points `system` holds in one cam table.
+pub(crate) fn check_count(
+    count: usize,
+    max: usize,
+    system: &'static str,
+) -> Result<(), TableError> {
+    if count > max {
+        return Err(TableError::TooManyPoints { system, max, count });
+    }
+    Ok(())
+}
+
 /// Samples `curve` at `count` equidistant master positions, both ends of its master range
 /// included: point i is at `start + i·(end − start)/(count − 1)` and the last one is exactly
 /// `end`. Each point carries the slave position, dY/dX and d²Y/dX² of the curve.
 ///
-/// Fails when `count` is below 2, when the master range is not a finite increasing range, or
+/// Fails when `count` is below 2 or above [`MAX_SAMPLES`], when the master range is not a finite increasing range, or
 /// when the curve returns a value that is not finite (naming the point).
 pub fn sample_equidistant(curve: &dyn CamCurve, count: usize) -> Result<Vec<CamPoint>, TableError> {
     if count < 2 {
         return Err(TableError::TooFewPoints { count });
     }
+    check_count(count, MAX_SAMPLES, "a Rivet export")?;
     let (start, end) = curve.master_range();
     if !(start.is_finite() && end.is_finite() && start < end) {
         return Err(TableError::InvalidMasterRange { start, end });
@@ -115,6 +135,19 @@ mod tests {
         assert_eq!(
             TableError::TooFewPoints { count: 1 }.to_string(),
             "a cam table needs at least 2 points, but 1 were given"
+        );
+    }
+
+    #[test]
+    fn an_absurd_number_of_samples_is_refused_before_allocating() {
+        assert_eq!(
+            sample_equidistant(&Poly345, usize::MAX)
+                .unwrap_err()
+                .to_string(),
+            format!(
+                "a Rivet export holds at most 1048576 points in one cam table, but {} were given",
+                usize::MAX
+            )
         );
     }
 
