@@ -432,3 +432,32 @@ fn invalid_configurations_are_refused_naming_track_and_tappet() {
         "track 5, tappet 1: the timed switch lasts 0 s; it must last a positive, finite number of seconds"
     );
 }
+
+proptest::proptest! {
+    /// On a modulo master moving back and forth with wraps in both directions, an invert tappet
+    /// without hysteresis toggles exactly once per crossing of its position, so its output tells
+    /// whether the unwrapped master crossed the tappet an odd number of times.
+    #[test]
+    fn an_invert_tappet_tracks_the_crossings_of_the_unwrapped_master(
+        steps in proptest::collection::vec(-4.9f64..4.9, 1..200),
+        start in 0.0f64..10.0,
+    ) {
+        let track = TappetTrack::new(1, vec![tappet(8.0, TappetAction::Invert, TappetAction::Invert)]);
+        let evaluator = TappetEvaluator::new(0.0, 10.0, true, vec![track]).unwrap();
+        let mut master = Master::new(evaluator, start);
+        let mut unwrapped = start;
+        let crossings_below = |u: f64| ((u - 8.0) / 10.0).floor();
+        for step in steps {
+            let next = unwrapped + step;
+            let wrap = match (next / 10.0).floor().total_cmp(&(unwrapped / 10.0).floor()) {
+                std::cmp::Ordering::Greater => MasterWrap::Forward,
+                std::cmp::Ordering::Less => MasterWrap::Backward,
+                std::cmp::Ordering::Equal => MasterWrap::None,
+            };
+            unwrapped = next;
+            master.step(unwrapped.rem_euclid(10.0), wrap, step / 0.01, 0.01);
+            let crossings = crossings_below(unwrapped) - crossings_below(start);
+            proptest::prop_assert_eq!(master.output(1), crossings.rem_euclid(2.0) == 1.0);
+        }
+    }
+}
