@@ -7,3 +7,5 @@
 
 pub mod cam;
 pub mod curve;
+pub mod table;
+pub mod tappet;
