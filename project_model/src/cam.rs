@@ -259,9 +259,11 @@ pub struct TappetTrack {
     #[serde(default, skip_serializing_if = "String::is_empty")]
     #[cfg_attr(feature = "proptest", proptest(strategy = "crate::arb::text()"))]
     pub name: String,
-    /// Switching is advanced by this many microseconds to make up for the actuator's delay.
-    #[serde(default, skip_serializing_if = "is_zero_u32")]
-    pub dead_time_us: u32,
+    /// Dead-time compensation in microseconds (CODESYS `DeadTimeCompensation`): a positive
+    /// value switches earlier by the distance the master travels in that time, to make up for
+    /// the actuator's delay; a negative value switches later.
+    #[serde(default, skip_serializing_if = "is_zero_i32")]
+    pub dead_time_us: i32,
     /// Master distance the direction must reverse by before a negative pass counts.
     #[serde(default, skip_serializing_if = "is_zero_f64")]
     #[cfg_attr(feature = "proptest", proptest(strategy = "crate::arb::finite()"))]
@@ -306,7 +308,7 @@ pub enum TappetAction {
     },
 }
 
-fn is_zero_u32(value: &u32) -> bool {
+fn is_zero_i32(value: &i32) -> bool {
     *value == 0
 }
 
