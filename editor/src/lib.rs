@@ -14,6 +14,7 @@ mod code_view;
 mod io_mapping;
 mod st_editor;
 mod st_highlight;
+mod table_texts;
 mod variable_table;
 
 pub use code_view::CodeView;
@@ -24,4 +25,5 @@ pub use st_editor::{
     TextChange,
 };
 pub use st_highlight::{TokenClass, classify_tokens};
+pub use table_texts::TableTexts;
 pub use variable_table::{VariablePath, VariableTable, VariableTableOutput, overlap_warnings};

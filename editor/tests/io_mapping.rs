@@ -2,7 +2,7 @@
 
 #![allow(clippy::unwrap_used, clippy::expect_used)] // Test helpers may panic: a panic is a failed test.
 
-use editor::{IoMappingOutput, io_mapping_ui};
+use editor::{IoMappingOutput, TableTexts, io_mapping_ui};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable as _;
 use project_model::Project;
@@ -41,7 +41,8 @@ fn harness() -> Harness<'static, App> {
         .with_context_setup(install_fonts)
         .build_ui_state(
             |ui, app: &mut App| {
-                let IoMappingOutput { open } = io_mapping_ui(ui, &app.project);
+                let IoMappingOutput { open } =
+                    io_mapping_ui(ui, &app.project, &TableTexts::default());
                 app.opened.extend(open);
             },
             app,
@@ -100,7 +101,7 @@ fn a_binding_to_an_undeclared_variable_is_marked() {
         .with_context_setup(install_fonts)
         .build_ui_state(
             |ui, project: &mut Project| {
-                io_mapping_ui(ui, project);
+                io_mapping_ui(ui, project, &TableTexts::default());
             },
             project,
         );

@@ -182,7 +182,8 @@ fn io_document_ui(studio: &mut Studio, ui: &mut Ui, node: &TreeNode) {
         .default_open(false)
         .show(ui, |ui| settings_ui(ui, project, node));
     ui.separator();
-    let output = editor::io_mapping_ui(ui, project);
+    let texts = super::text_documents::table_texts(studio.settings.language);
+    let output = editor::io_mapping_ui(ui, project, &texts);
     if let Some((owner, variable)) = output.open {
         // A method's variables belong to its POU's document.
         let object = owner.split('.').next().unwrap_or(&owner).to_owned();

@@ -96,6 +96,33 @@ fn the_interface_speaks_chinese_when_chosen() {
 }
 
 #[test]
+fn the_declaration_table_and_the_io_mapping_speak_chinese_too() {
+    let settings = Settings {
+        language: Language::SimplifiedChinese,
+        ..Settings::default()
+    };
+    let mut harness = studio(Some(&example_dir()), settings);
+    harness.get_by_label("GVL_IO").focus();
+    harness.step();
+    harness.key_press(egui::Key::Enter);
+    harness.run();
+    harness
+        .get_by_label(Text::AsTable.get(Language::SimplifiedChinese))
+        .click();
+    harness.run();
+    assert!(harness.query_by_label("xStartButton 的地址").is_some());
+    assert!(harness.query_by_label("在上方插入").is_some());
+    assert!(harness.query_by_label("拖动 GVL_IO.xStartButton").is_some());
+    assert!(harness.query_by_label("Address of xStartButton").is_none());
+
+    harness.state_mut().open(TreeNode::Controller);
+    harness.run();
+    // One channel table per I/O area, each with its header.
+    assert!(harness.query_all_by_label("通道").next().is_some());
+    assert!(harness.query_all_by_label("Channel").next().is_none());
+}
+
+#[test]
 fn switching_the_language_in_settings_translates_the_interface() {
     let mut harness = studio(Some(&example_dir()), Settings::default());
     harness.get_by_label("Settings").click();

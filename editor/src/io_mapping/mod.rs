@@ -13,6 +13,9 @@ use project_model::{IoDirection, ModbusDataType, ModbusDevice, ModbusTable, Proj
 
 use channels::{Channel, area_channels, outside_areas};
 
+use crate::TableTexts;
+use crate::table_texts::fill;
+
 /// What the user did in the I/O mapping view this frame.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct IoMappingOutput {
@@ -21,8 +24,8 @@ pub struct IoMappingOutput {
 }
 
 /// Shows the I/O mapping of `project`: each I/O area word by word and bit by bit, then each
-/// Modbus TCP device binding, each with the variables bound to it.
-pub fn io_mapping_ui(ui: &mut Ui, project: &Project) -> IoMappingOutput {
+/// Modbus TCP device binding, each with the variables bound to it, in the words of `texts`.
+pub fn io_mapping_ui(ui: &mut Ui, project: &Project, texts: &TableTexts) -> IoMappingOutput {
     let mut output = IoMappingOutput::default();
     let located = compiler::ide::located_variables(project);
     egui::ScrollArea::vertical()
@@ -31,13 +34,13 @@ pub fn io_mapping_ui(ui: &mut Ui, project: &Project) -> IoMappingOutput {
         .show(ui, |ui| {
             ui.heading(format!("{} I/O", project.controller.name));
             if project.io_areas.is_empty() {
-                ui.label("The controller has no I/O areas");
+                ui.label(&texts.no_io_areas);
             }
             for (index, area) in project.io_areas.iter().enumerate() {
                 let direction = match area.direction {
-                    IoDirection::Input => "inputs",
-                    IoDirection::Output => "outputs",
-                    IoDirection::Memory => "markers",
+                    IoDirection::Input => &texts.inputs,
+                    IoDirection::Output => &texts.outputs,
+                    IoDirection::Memory => &texts.markers,
                 };
                 let title = format!(
                     "{} ({direction}, %{}B{} to %{}B{})",
@@ -56,16 +59,13 @@ pub fn io_mapping_ui(ui: &mut Ui, project: &Project) -> IoMappingOutput {
                             ui.label(&area.comment);
                         }
                         let channels = area_channels(area, &located);
-                        channel_table_ui(ui, index, &channels, &mut output);
+                        channel_table_ui(ui, index, &channels, texts, &mut output);
                     });
             }
             let outside = outside_areas(project, &located);
             if !outside.is_empty() {
                 ui.separator();
-                ui.label(
-                    RichText::new("Located variables outside every I/O area")
-                        .color(ui.visuals().warn_fg_color),
-                );
+                ui.label(RichText::new(&texts.outside_areas).color(ui.visuals().warn_fg_color));
                 for variable in &outside {
                     ui.horizontal(|ui| {
                         ui.monospace(&variable.address);
@@ -75,14 +75,20 @@ pub fn io_mapping_ui(ui: &mut Ui, project: &Project) -> IoMappingOutput {
             }
             for (index, device) in project.modbus_devices.iter().enumerate() {
                 ui.separator();
-                device_ui(ui, index, device, project, &mut output);
+                device_ui(ui, index, device, project, texts, &mut output);
             }
         });
     output
 }
 
 /// One area's channels; only the rows in view are laid out, as marker areas have thousands.
-fn channel_table_ui(ui: &mut Ui, index: usize, channels: &[Channel], output: &mut IoMappingOutput) {
+fn channel_table_ui(
+    ui: &mut Ui,
+    index: usize,
+    channels: &[Channel],
+    texts: &TableTexts,
+    output: &mut IoMappingOutput,
+) {
     let row_height = ui.spacing().interact_size.y + 2.0;
     TableBuilder::new(ui)
         .id_salt(("io_channels", index))
@@ -96,7 +102,13 @@ fn channel_table_ui(ui: &mut Ui, index: usize, channels: &[Channel], output: &mu
         .column(Column::initial(80.0))
         .column(Column::remainder().clip(true))
         .header(row_height, |mut header| {
-            for title in ["Channel", "Type", "Variable", "Declared as", "Comment"] {
+            for title in [
+                &texts.channel,
+                &texts.data_type,
+                &texts.variable,
+                &texts.declared_as,
+                &texts.comment,
+            ] {
                 header.col(|ui| {
                     ui.strong(title);
                 });
@@ -156,6 +168,7 @@ fn device_ui(
     index: usize,
     device: &ModbusDevice,
     project: &Project,
+    texts: &TableTexts,
     output: &mut IoMappingOutput,
 ) {
     let title = format!(
@@ -167,7 +180,7 @@ fn device_ui(
         .default_open(true)
         .show(ui, |ui| {
             if device.bindings.is_empty() {
-                ui.label("No variable is bound to this device");
+                ui.label(&texts.no_binding);
                 return;
             }
             let row_height = ui.spacing().interact_size.y + 2.0;
@@ -181,7 +194,13 @@ fn device_ui(
                 .column(Column::initial(220.0).clip(true))
                 .column(Column::remainder().clip(true))
                 .header(row_height, |mut header| {
-                    for title in ["Table", "Address", "Data type", "Variable", "Comment"] {
+                    for title in [
+                        &texts.modbus_table,
+                        &texts.address,
+                        &texts.data_type,
+                        &texts.variable,
+                        &texts.comment,
+                    ] {
                         header.col(|ui| {
                             ui.strong(title);
                         });
@@ -191,7 +210,7 @@ fn device_ui(
                     for binding in &device.bindings {
                         body.row(row_height, |mut row| {
                             row.col(|ui| {
-                                ui.label(table_name(binding.table));
+                                ui.label(table_name(binding.table, texts));
                             });
                             row.col(|ui| {
                                 let width = binding.data_type.width();
@@ -210,7 +229,7 @@ fn device_ui(
                                 ui.label(data_type_name(binding.data_type));
                             });
                             row.col(|ui| {
-                                binding_variable_ui(ui, &binding.variable, project, output)
+                                binding_variable_ui(ui, &binding.variable, project, texts, output)
                             });
                             row.col(|ui| {
                                 ui.label(&binding.comment);
@@ -223,7 +242,13 @@ fn device_ui(
 
 /// A binding's variable path (`GVL_Machine.rBeltSpeedActual`) as a link when it names a declared
 /// variable, in the error colour when it does not.
-fn binding_variable_ui(ui: &mut Ui, path: &str, project: &Project, output: &mut IoMappingOutput) {
+fn binding_variable_ui(
+    ui: &mut Ui,
+    path: &str,
+    project: &Project,
+    texts: &TableTexts,
+    output: &mut IoMappingOutput,
+) {
     let declared = path.split_once('.').filter(|(owner, name)| {
         project
             .application
@@ -238,7 +263,8 @@ fn binding_variable_ui(ui: &mut Ui, path: &str, project: &Project, output: &mut 
         }
         None => {
             ui.label(
-                RichText::new(format!("{path} (not declared)")).color(ui.visuals().error_fg_color),
+                RichText::new(fill(&texts.not_declared, &[("path", path)]))
+                    .color(ui.visuals().error_fg_color),
             );
         }
     }
@@ -255,12 +281,12 @@ fn declares(object: &project_model::Object, name: &str) -> bool {
         .any(|variable| project_model::same_identifier(&variable.name, name))
 }
 
-fn table_name(table: ModbusTable) -> &'static str {
+fn table_name(table: ModbusTable, texts: &TableTexts) -> &str {
     match table {
-        ModbusTable::Coil => "Coil",
-        ModbusTable::DiscreteInput => "Discrete input",
-        ModbusTable::HoldingRegister => "Holding register",
-        ModbusTable::InputRegister => "Input register",
+        ModbusTable::Coil => &texts.coil,
+        ModbusTable::DiscreteInput => &texts.discrete_input,
+        ModbusTable::HoldingRegister => &texts.holding_register,
+        ModbusTable::InputRegister => &texts.input_register,
     }
 }
 

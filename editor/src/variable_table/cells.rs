@@ -5,6 +5,8 @@ use std::collections::HashMap;
 
 use project_model::Variable;
 
+use crate::TableTexts;
+
 /// A column edited as text.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub(crate) enum TextColumn {
@@ -16,14 +18,15 @@ pub(crate) enum TextColumn {
 }
 
 impl TextColumn {
-    /// The column's title, also the start of each cell's accessible label ("Address of xStart").
-    pub(crate) fn title(self) -> &'static str {
+    /// The column's title in `texts`, also part of each cell's accessible label ("Address of
+    /// xStart").
+    pub(crate) fn title(self, texts: &TableTexts) -> &str {
         match self {
-            Self::Name => "Name",
-            Self::Address => "Address",
-            Self::Type => "Type",
-            Self::Initial => "Initial value",
-            Self::Comment => "Comment",
+            Self::Name => &texts.name,
+            Self::Address => &texts.address,
+            Self::Type => &texts.data_type,
+            Self::Initial => &texts.initial_value,
+            Self::Comment => &texts.comment,
         }
     }
 

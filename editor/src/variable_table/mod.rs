@@ -20,6 +20,8 @@ pub use cells::overlap_warnings;
 use row::TableFrame;
 use state::{RowAction, TableState};
 
+use crate::TableTexts;
+
 /// The declaration table of one POU, method or global variable list.
 ///
 /// Built each frame; what it remembers between frames (selection, text being typed) lives in
@@ -30,6 +32,7 @@ pub struct VariableTable {
     read_only: bool,
     new_section: VarSection,
     drag_prefix: Option<String>,
+    texts: TableTexts,
 }
 
 /// A variable's path on the target (`Main.iCount`, `GVL_IO.xStart`) being dragged, for a
@@ -56,7 +59,14 @@ impl VariableTable {
             read_only: false,
             new_section: VarSection::Var,
             drag_prefix: None,
+            texts: TableTexts::default(),
         }
+    }
+
+    /// Shows the table's words in the user's language.
+    pub fn texts(mut self, texts: TableTexts) -> Self {
+        self.texts = texts;
+        self
     }
 
     /// Lets each name be dragged as the path `prefix.name` (a program's or a global variable
@@ -97,6 +107,7 @@ impl VariableTable {
             state: &mut state,
             read_only: self.read_only,
             drag_prefix: self.drag_prefix.as_deref(),
+            texts: &self.texts,
             edit: None,
             action: None,
         };
@@ -106,7 +117,7 @@ impl VariableTable {
         table_ui(ui, &mut frame);
         let TableFrame { edit, action, .. } = frame;
         let edit = edit.or_else(|| {
-            let (label, edit, selected) = action?.edit(variables, self.new_section)?;
+            let (label, edit, selected) = action?.edit(variables, self.new_section, &self.texts)?;
             state.selected = selected;
             Some((label, edit))
         });
@@ -122,27 +133,31 @@ fn toolbar_ui(ui: &mut Ui, frame: &mut TableFrame<'_>) {
     let len = frame.variables.len();
     ui.horizontal(|ui| {
         let at = selected.unwrap_or(len);
+        let texts = frame.texts;
         let buttons = [
-            ("Insert above", RowAction::InsertAbove(at), true),
+            (&texts.insert_above, RowAction::InsertAbove(at), true),
             (
-                "Insert below",
+                &texts.insert_below,
                 RowAction::InsertBelow(selected.unwrap_or(len)),
                 true,
             ),
-            ("Delete", RowAction::Delete(at), selected.is_some()),
+            (&texts.delete, RowAction::Delete(at), selected.is_some()),
             (
-                "Move up",
+                &texts.move_up,
                 RowAction::MoveUp(at),
                 selected.is_some_and(|row| row > 0),
             ),
             (
-                "Move down",
+                &texts.move_down,
                 RowAction::MoveDown(at),
                 selected.is_some_and(|row| row + 1 < len),
             ),
         ];
         for (text, action, enabled) in buttons {
-            if ui.add_enabled(enabled, egui::Button::new(text)).clicked() {
+            if ui
+                .add_enabled(enabled, egui::Button::new(text.as_str()))
+                .clicked()
+            {
                 frame.action = Some(action);
             }
         }
@@ -154,6 +169,7 @@ fn table_ui(ui: &mut Ui, frame: &mut TableFrame<'_>) {
     let line = ui.spacing().interact_size.y + 4.0;
     let error_lines = 2.0 * ui.text_style_height(&egui::TextStyle::Small) + 2.0;
     let selected = frame.state.selected;
+    let texts = frame.texts;
     TableBuilder::new(ui)
         .id_salt(frame.id.with("table"))
         .striped(true)
@@ -169,13 +185,13 @@ fn table_ui(ui: &mut Ui, frame: &mut TableFrame<'_>) {
         .column(Column::remainder().at_least(80.0).clip(true))
         .header(line, |mut header| {
             for title in [
-                "Section",
-                TextColumn::Name.title(),
-                TextColumn::Address.title(),
-                TextColumn::Type.title(),
-                TextColumn::Initial.title(),
-                "Retain",
-                TextColumn::Comment.title(),
+                texts.section.as_str(),
+                TextColumn::Name.title(texts),
+                TextColumn::Address.title(texts),
+                TextColumn::Type.title(texts),
+                TextColumn::Initial.title(texts),
+                texts.flags.as_str(),
+                TextColumn::Comment.title(texts),
             ] {
                 header.col(|ui| {
                     ui.strong(title);

@@ -7,6 +7,8 @@ use project_model::{ListEdit, VarSection, Variable};
 
 use super::cells::{self, TextColumn};
 use super::state::{Draft, RowAction, TableState};
+use crate::TableTexts;
+use crate::table_texts::fill;
 
 /// The colour of overlap warnings: a warning, not an error.
 const WARNING_COLOR: Color32 = Color32::from_rgb(0xE0, 0xB0, 0x20);
@@ -29,6 +31,8 @@ pub(crate) struct TableFrame<'a> {
     pub(crate) read_only: bool,
     /// The path prefix under which names can be dragged, if they can.
     pub(crate) drag_prefix: Option<&'a str>,
+    /// The table's words.
+    pub(crate) texts: &'a TableTexts,
     /// The committed cell edit of this frame, with its undo label.
     pub(crate) edit: Option<(String, ListEdit<Variable>)>,
     /// The row gesture of this frame.
@@ -73,7 +77,10 @@ impl TableFrame<'_> {
                     }
                 }
             });
-        let label = format!("Section of {}", variable.name);
+        let label = fill(
+            &self.texts.cell_of,
+            &[("column", &self.texts.section), ("name", &variable.name)],
+        );
         combo
             .response
             .widget_info(|| WidgetInfo::labeled(Role::ComboBox, true, &label));
@@ -93,7 +100,13 @@ impl TableFrame<'_> {
     pub(crate) fn text_cell(&mut self, ui: &mut Ui, row: usize, column: TextColumn) {
         let variables = self.variables;
         let variable = &variables[row];
-        let label = format!("{} of {}", column.title(), variable.name);
+        let label = fill(
+            &self.texts.cell_of,
+            &[
+                ("column", column.title(self.texts)),
+                ("name", &variable.name),
+            ],
+        );
         let warning = (column == TextColumn::Address)
             .then(|| self.warnings.get(&variable.name))
             .flatten();
@@ -109,13 +122,14 @@ impl TableFrame<'_> {
                     |ui| ui.label(RichText::new("::").weak()),
                 )
                 .response
-                .on_hover_text("Drag into a watch list");
-            handle.widget_info(|| WidgetInfo::labeled(Role::Button, true, format!("Drag {path}")));
+                .on_hover_text(&self.texts.drag_hint);
+            let label = fill(&self.texts.drag_path, &[("path", &path)]);
+            handle.widget_info(|| WidgetInfo::labeled(Role::Button, true, &label));
         }
         if self.read_only {
             ui.horizontal(|ui| {
                 if let Some(warning) = warning {
-                    warning_mark(ui, &variable.name, warning);
+                    warning_mark(ui, self.texts, &variable.name, warning);
                 }
                 ui.label(column.text(variable));
             });
@@ -133,7 +147,7 @@ impl TableFrame<'_> {
             let response = ui
                 .horizontal(|ui| {
                     if let Some(warning) = warning {
-                        warning_mark(ui, &variable.name, warning);
+                        warning_mark(ui, self.texts, &variable.name, warning);
                     }
                     let mut field = TextEdit::singleline(&mut text)
                         .id(self.id.with((column, row)))
@@ -211,16 +225,22 @@ impl TableFrame<'_> {
     pub(crate) fn flags_cell(&mut self, ui: &mut Ui, row: usize) {
         let variables = self.variables;
         let variable = &variables[row];
+        let texts = self.texts;
         let flags: [(&str, &str, bool, SetFlag); 3] = [
-            ("R", "Retain", variable.retain, |v, on| v.retain = on),
-            ("P", "Persistent", variable.persistent, |v, on| {
+            ("R", &texts.retain, variable.retain, |v, on| v.retain = on),
+            ("P", &texts.persistent, variable.persistent, |v, on| {
                 v.persistent = on
             }),
-            ("C", "Constant", variable.constant, |v, on| v.constant = on),
+            ("C", &texts.constant, variable.constant, |v, on| {
+                v.constant = on
+            }),
         ];
         for (short, title, value, set) in flags {
             let mut checked = value;
-            let label = format!("{title} of {}", variable.name);
+            let label = fill(
+                &texts.cell_of,
+                &[("column", title), ("name", &variable.name)],
+            );
             let response = ui
                 .add_enabled(!self.read_only, egui::Checkbox::new(&mut checked, short))
                 .on_hover_text(title);
@@ -244,16 +264,20 @@ impl TableFrame<'_> {
             return;
         }
         let len = self.variables.len();
+        let texts = self.texts;
         response.context_menu(|ui| {
             let entries = [
-                ("Insert above", RowAction::InsertAbove(row), true),
-                ("Insert below", RowAction::InsertBelow(row), true),
-                ("Delete", RowAction::Delete(row), true),
-                ("Move up", RowAction::MoveUp(row), row > 0),
-                ("Move down", RowAction::MoveDown(row), row + 1 < len),
+                (&texts.insert_above, RowAction::InsertAbove(row), true),
+                (&texts.insert_below, RowAction::InsertBelow(row), true),
+                (&texts.delete, RowAction::Delete(row), true),
+                (&texts.move_up, RowAction::MoveUp(row), row > 0),
+                (&texts.move_down, RowAction::MoveDown(row), row + 1 < len),
             ];
             for (text, action, enabled) in entries {
-                if ui.add_enabled(enabled, egui::Button::new(text)).clicked() {
+                if ui
+                    .add_enabled(enabled, egui::Button::new(text.as_str()))
+                    .clicked()
+                {
                     self.action = Some(action);
                     ui.close();
                 }
@@ -263,14 +287,13 @@ impl TableFrame<'_> {
 }
 
 /// The yellow mark of an overlap warning; the warning shows on hover and is its accessible label.
-fn warning_mark(ui: &mut Ui, name: &str, warning: &str) {
+fn warning_mark(ui: &mut Ui, texts: &TableTexts, name: &str, warning: &str) {
     let mark = ui
         .add(
             Label::new(RichText::new("!").strong().color(WARNING_COLOR))
                 .sense(egui::Sense::hover()),
         )
         .on_hover_text(warning);
-    mark.widget_info(|| {
-        WidgetInfo::labeled(Role::Image, true, format!("Warning for {name}: {warning}"))
-    });
+    let label = fill(&texts.warning_for, &[("name", name), ("warning", warning)]);
+    mark.widget_info(|| WidgetInfo::labeled(Role::Image, true, &label));
 }

@@ -6,6 +6,8 @@ use std::collections::HashMap;
 use project_model::{ListEdit, Variable};
 
 use super::cells::{self, TextColumn};
+use crate::TableTexts;
+use crate::table_texts::fill;
 
 /// Kept in egui's memory under the table's id; never saved.
 #[derive(Clone, Debug, Default)]
@@ -60,7 +62,9 @@ impl RowAction {
         self,
         variables: &[Variable],
         new_section: project_model::VarSection,
+        texts: &TableTexts,
     ) -> Option<(String, ListEdit<Variable>, Option<usize>)> {
+        let labelled = |template: &str, name: &str| fill(template, &[("name", name)]);
         let name = |row: usize| variables.get(row).map(|v| v.name.clone());
         let new_variable = |neighbour: Option<usize>| Variable {
             section: neighbour
@@ -76,11 +80,11 @@ impl RowAction {
                 };
                 let neighbour = variables.get(row).map(|_| row);
                 let item = new_variable(neighbour);
-                let label = format!("Insert variable {}", item.name);
+                let label = labelled(&texts.insert_variable, &item.name);
                 Some((label, ListEdit::Insert { index, item }, Some(index)))
             }
             Self::Delete(row) => {
-                let label = format!("Delete variable {}", name(row)?);
+                let label = labelled(&texts.delete_variable, &name(row)?);
                 let selected = (row + 1 < variables.len())
                     .then_some(row)
                     .or_else(|| row.checked_sub(1));
@@ -88,7 +92,7 @@ impl RowAction {
             }
             Self::MoveUp(row) => {
                 let to = row.checked_sub(1)?;
-                let label = format!("Move {} up", name(row)?);
+                let label = labelled(&texts.move_variable_up, &name(row)?);
                 Some((label, ListEdit::Move { from: row, to }, Some(to)))
             }
             Self::MoveDown(row) => {
@@ -96,7 +100,7 @@ impl RowAction {
                 if to >= variables.len() {
                     return None;
                 }
-                let label = format!("Move {} down", name(row)?);
+                let label = labelled(&texts.move_variable_down, &name(row)?);
                 Some((label, ListEdit::Move { from: row, to }, Some(to)))
             }
         }

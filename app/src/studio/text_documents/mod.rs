@@ -10,7 +10,9 @@ mod services;
 use std::collections::HashMap;
 use std::ops::Range;
 
-use editor::{EditorDiagnostic, EditorTexts, Gesture, KeywordCompletions, StEditor, VariableTable};
+use editor::{
+    EditorDiagnostic, EditorTexts, Gesture, KeywordCompletions, StEditor, TableTexts, VariableTable,
+};
 use egui::{RichText, Ui};
 use project_model::{Body, Edit, GlobalVarList, Object, Pou, Project, TextTarget, VarOwner};
 
@@ -122,6 +124,51 @@ fn editor_texts(language: Language) -> EditorTexts {
         replace_all: get(Text::ReplaceAll),
         close: get(Text::Close),
         prepared_value: get(Text::PreparedValue),
+    }
+}
+
+/// The declaration table's and the I/O mapping's words in `language`.
+pub(super) fn table_texts(language: Language) -> TableTexts {
+    let get = |text: Text| text.get(language).to_owned();
+    TableTexts {
+        section: get(Text::TableSection),
+        name: get(Text::Name),
+        address: get(Text::TableAddress),
+        data_type: get(Text::TableType),
+        initial_value: get(Text::TableInitialValue),
+        flags: get(Text::TableFlags),
+        comment: get(Text::Comment),
+        retain: get(Text::Retain),
+        persistent: get(Text::Persistent),
+        constant: get(Text::Constant),
+        insert_above: get(Text::InsertAbove),
+        insert_below: get(Text::InsertBelow),
+        delete: get(Text::Delete),
+        move_up: get(Text::MoveUp),
+        move_down: get(Text::MoveDown),
+        drag_hint: get(Text::DragIntoWatch),
+        cell_of: get(Text::CellOf),
+        drag_path: get(Text::DragPath),
+        warning_for: get(Text::WarningFor),
+        insert_variable: get(Text::InsertVariable),
+        delete_variable: get(Text::DeleteVariable),
+        move_variable_up: get(Text::MoveVariableUp),
+        move_variable_down: get(Text::MoveVariableDown),
+        no_io_areas: get(Text::NoIoAreas),
+        outside_areas: get(Text::OutsideAreas),
+        inputs: get(Text::AreaInputs),
+        outputs: get(Text::AreaOutputs),
+        markers: get(Text::AreaMarkers),
+        channel: get(Text::Channel),
+        variable: get(Text::Variable),
+        declared_as: get(Text::DeclaredAs),
+        modbus_table: get(Text::ModbusTable),
+        no_binding: get(Text::NoBinding),
+        not_declared: get(Text::NotDeclared),
+        coil: get(Text::Coil),
+        discrete_input: get(Text::DiscreteInput),
+        holding_register: get(Text::HoldingRegister),
+        input_register: get(Text::InputRegister),
     }
 }
 
@@ -380,6 +427,7 @@ fn declarations_ui(
         let output = VariableTable::new(("variables", &pou.name, &method))
             .read_only(read_only)
             .drag_prefix(drag_prefix)
+            .texts(table_texts(studio.settings.language))
             .show(ui, &variables, &warnings);
         if let Some((label, edit)) = output.edit {
             studio
@@ -720,6 +768,7 @@ pub(crate) fn gvl_document_ui(studio: &mut Studio, ui: &mut Ui, name: &str) -> b
         let output = VariableTable::new(("gvl", &gvl.name))
             .read_only(read_only)
             .drag_prefix(Some(gvl.name.clone()))
+            .texts(table_texts(studio.settings.language))
             .show(ui, &gvl.variables, &warnings);
         if let Some((label, edit)) = output.edit {
             studio.pending.push(Command::Edit(
