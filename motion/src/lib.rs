@@ -4,3 +4,8 @@
 //! This crate is pure computation: it does no I/O and spawns no threads.
 //! The runtime drives it from the task that calls the motion function blocks, and the cam editor
 //! uses it to plot position, velocity, acceleration and jerk.
+
+pub mod axis;
+pub mod curve;
+pub mod fb;
+pub mod kernel;
