@@ -392,7 +392,9 @@ impl AxisRuntime {
             self.velocity = sample.velocity;
             self.acceleration = sample.acceleration;
         }
-        if running.elapsed_s >= running.profile.duration_s() {
+        // The elapsed time is a sum of cycle intervals, which rounds; a profile that ends within
+        // a millionth of a cycle of now has ended now, not one cycle later.
+        if running.elapsed_s >= running.profile.duration_s() - dt_s * 1e-6 {
             self.finish(registry);
         }
         self.check_software_limits(registry);

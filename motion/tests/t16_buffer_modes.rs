@@ -1,0 +1,122 @@
+//! PLCopen Appendix A (digest T16): two MC_MoveAbsolute on one axis, Aborting against Buffered.
+
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+
+mod common;
+
+use common::{DT_S, powered, roomy_linear, snap};
+use motion::axis::AxisState;
+use motion::fb::MoveAbsolute;
+use motion::kernel::BufferMode;
+
+fn move_to(position: f64, velocity: f64, buffer_mode: BufferMode) -> MoveAbsolute {
+    let mut fb = MoveAbsolute::default();
+    fb.position = position;
+    fb.velocity = velocity;
+    fb.acceleration = 100.0;
+    fb.deceleration = 100.0;
+    fb.buffer_mode = buffer_mode;
+    fb
+}
+
+#[test]
+fn an_aborting_second_move_takes_over_at_once_without_stopping() {
+    let (mut kernel, axis) = powered(roomy_linear());
+    let mut fb1 = move_to(1000.0, 100.0, BufferMode::Aborting);
+    let mut fb2 = move_to(2000.0, 200.0, BufferMode::Aborting);
+    fb1.execute = true;
+    for cycle in 0..20_000 {
+        fb2.execute = cycle >= 3000;
+        fb1.call(&mut kernel, axis);
+        fb2.call(&mut kernel, axis);
+        if cycle == 3000 {
+            assert!(fb2.busy && fb2.active, "FB2 takes over in the call of its edge");
+        }
+        if cycle > 3000 {
+            assert!(fb1.command_aborted && !fb1.done && !fb1.busy);
+        }
+        if (3000..7000).contains(&cycle) {
+            assert!(snap(&kernel, axis).set_velocity > 0.0, "no stop between the moves");
+        }
+        kernel.advance(axis, DT_S).unwrap();
+    }
+    fb2.call(&mut kernel, axis);
+    assert!(fb2.done);
+    assert_eq!(snap(&kernel, axis).set_position, 2000.0);
+}
+
+#[test]
+fn a_buffered_second_move_starts_the_cycle_after_the_first_reaches_rest_at_its_target() {
+    let (mut kernel, axis) = powered(roomy_linear());
+    let mut fb1 = move_to(1000.0, 100.0, BufferMode::Aborting);
+    let mut fb2 = move_to(2000.0, 200.0, BufferMode::Buffered);
+    fb1.execute = true;
+    let mut fb1_done_cycle = None;
+    for cycle in 0..20_000 {
+        fb2.execute = cycle >= 3000;
+        fb1.call(&mut kernel, axis);
+        fb2.call(&mut kernel, axis);
+        let snapshot = snap(&kernel, axis);
+        if fb1.done && fb1_done_cycle.is_none() {
+            fb1_done_cycle = Some(cycle);
+            // The last cycle ended FB1 at rest on its target and handed the axis to FB2.
+            assert_eq!(snapshot.set_position, 1000.0);
+            assert_eq!(snapshot.set_velocity, 0.0);
+            assert!(fb2.active && fb2.busy);
+            assert_eq!(snapshot.state, AxisState::DiscreteMotion);
+        }
+        if (3000..20_000).contains(&cycle) && fb1_done_cycle.is_none() {
+            assert!(fb2.busy && !fb2.active, "FB2 waits in the buffer");
+            assert!(fb1.busy && fb1.active);
+        }
+        if fb1_done_cycle.map(|done| done + 1) == Some(cycle) {
+            assert!(snapshot.set_position > 1000.0, "FB2 moves from the next cycle on");
+        }
+        kernel.advance(axis, DT_S).unwrap();
+    }
+    assert!(fb1_done_cycle.is_some());
+    fb2.call(&mut kernel, axis);
+    assert!(fb2.done);
+    assert_eq!(snap(&kernel, axis).set_position, 2000.0);
+    assert_eq!(kernel.state(axis).unwrap(), AxisState::Standstill);
+}
+
+#[test]
+fn a_buffered_move_after_move_velocity_starts_once_the_velocity_is_reached() {
+    let (mut kernel, axis) = powered(roomy_linear());
+    let mut velocity = motion::fb::MoveVelocity::default();
+    velocity.velocity = 100.0;
+    velocity.acceleration = 100.0;
+    velocity.deceleration = 100.0;
+    velocity.direction = motion::axis::Direction::Positive;
+    velocity.execute = true;
+    let mut fb2 = move_to(500.0, 100.0, BufferMode::Buffered);
+    fb2.execute = true;
+    velocity.call(&mut kernel, axis);
+    fb2.call(&mut kernel, axis);
+    assert!(fb2.busy && !fb2.active);
+    for _ in 0..20_000 {
+        velocity.call(&mut kernel, axis);
+        fb2.call(&mut kernel, axis);
+        kernel.advance(axis, DT_S).unwrap();
+    }
+    velocity.call(&mut kernel, axis);
+    fb2.call(&mut kernel, axis);
+    assert!(velocity.command_aborted);
+    assert!(fb2.done);
+    assert_eq!(snap(&kernel, axis).set_position, 500.0);
+}
+
+#[test]
+fn a_second_buffered_command_while_one_waits_is_refused() {
+    let (mut kernel, axis) = powered(roomy_linear());
+    let mut fb1 = move_to(1000.0, 100.0, BufferMode::Aborting);
+    let mut fb2 = move_to(2000.0, 100.0, BufferMode::Buffered);
+    let mut fb3 = move_to(3000.0, 100.0, BufferMode::Buffered);
+    for fb in [&mut fb1, &mut fb2, &mut fb3] {
+        fb.execute = true;
+        fb.call(&mut kernel, axis);
+    }
+    assert!(fb1.active && fb2.busy && !fb2.active);
+    assert!(fb3.error && fb3.error_id == 7);
+}
