@@ -8,8 +8,8 @@ mod common;
 use common::{DT_S, powered, roomy_linear, snap};
 use motion::axis::{AxisConfig, AxisState, SoftwareLimits};
 use motion::fb::{
-    Halt, Home, Jog, MoveAbsolute, MoveAdditive, MoveRelative, MoveVelocity, Power, ReadActualPosition,
-    ReadActualVelocity, SetPosition,
+    Halt, Home, Jog, MoveAbsolute, MoveAdditive, MoveRelative, MoveVelocity, Power,
+    ReadActualPosition, ReadActualVelocity, SetPosition,
 };
 use motion::kernel::{AXIS_ERROR_SOFTWARE_LIMIT, AxisId, Kernel, MotionError};
 
@@ -33,7 +33,10 @@ fn absolute(position: f64) -> MoveAbsolute {
 
 fn limited_axis() -> (Kernel, AxisId) {
     let mut config = roomy_linear();
-    config.software_limits = Some(SoftwareLimits { min: -100.0, max: 100.0 });
+    config.software_limits = Some(SoftwareLimits {
+        min: -100.0,
+        max: 100.0,
+    });
     powered(config)
 }
 
@@ -118,7 +121,13 @@ fn an_invalid_input_is_refused_with_its_name_and_nothing_moves() {
     fb.call(&mut kernel, axis);
     assert!(fb.error && !fb.busy && fb.error_id == 4);
     let cause = fb.error_cause.unwrap();
-    assert!(matches!(cause, MotionError::InvalidParameter { input: "Velocity", .. }));
+    assert!(matches!(
+        cause,
+        MotionError::InvalidParameter {
+            input: "Velocity",
+            ..
+        }
+    ));
     assert!(cause.to_string().contains("Velocity"));
     assert_eq!(kernel.state(axis).unwrap(), AxisState::Standstill);
     // A velocity above the axis's maximum is refused too.
@@ -352,8 +361,10 @@ fn the_read_fbs_are_valid_while_enabled_and_report_an_unknown_axis() {
     position.enable = true;
     position.call(&kernel, unknown);
     assert!(position.error && !position.valid && position.error_id == 9);
-    let mut power = Power::default();
-    power.enable = true;
+    let mut power = Power {
+        enable: true,
+        ..Power::default()
+    };
     power.call(&mut kernel, unknown);
     assert!(power.error && !power.valid && !power.status);
     power.enable = false;

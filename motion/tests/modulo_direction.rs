@@ -20,7 +20,11 @@ fn rotary() -> (Kernel, AxisId) {
 /// The signed change between two wrapped positions, assuming less than half a turn per cycle.
 fn unwrapped_step(from: f64, to: f64) -> f64 {
     let step = (to - from).rem_euclid(PERIOD);
-    if step > PERIOD / 2.0 { step - PERIOD } else { step }
+    if step > PERIOD / 2.0 {
+        step - PERIOD
+    } else {
+        step
+    }
 }
 
 /// Moves from `start` at rest to `target` and returns the travelled distance and the final
@@ -65,7 +69,10 @@ fn from_350_to_10_each_direction_takes_its_way_round() {
     ];
     for (direction, expected) in cases {
         let (travelled, end) = travel(350.0, 10.0, direction);
-        assert!((travelled - expected).abs() < 1e-6, "{direction:?}: travelled {travelled}");
+        assert!(
+            (travelled - expected).abs() < 1e-6,
+            "{direction:?}: travelled {travelled}"
+        );
         assert_eq!(end, 10.0, "{direction:?}");
     }
 }

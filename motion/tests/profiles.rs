@@ -91,11 +91,23 @@ fn an_s_curve_keeps_jerk_acceleration_and_velocity_within_the_limits() {
     };
     for distance in [1000.0, 50.0, 5.0, 0.3, -1000.0, -7.0] {
         let trace = trace_move(distance, dynamics, 1.0e9, 0);
-        assert!(trace.max_speed <= 100.0 * (1.0 + 1e-12), "{distance}: {}", trace.max_speed);
+        assert!(
+            trace.max_speed <= 100.0 * (1.0 + 1e-12),
+            "{distance}: {}",
+            trace.max_speed
+        );
         assert!(trace.max_acceleration <= 400.0 * (1.0 + 1e-12));
         // The final cycle sets the acceleration from its last tiny value to exactly 0.
-        assert!(trace.max_jerk <= 2000.0 * (1.0 + 1e-9), "{distance}: jerk {}", trace.max_jerk);
-        let (low, high) = if distance > 0.0 { (0.0, distance) } else { (distance, 0.0) };
+        assert!(
+            trace.max_jerk <= 2000.0 * (1.0 + 1e-9),
+            "{distance}: jerk {}",
+            trace.max_jerk
+        );
+        let (low, high) = if distance > 0.0 {
+            (0.0, distance)
+        } else {
+            (distance, 0.0)
+        };
         assert!(trace.min_position >= low - 1e-9 && trace.max_position <= high + 1e-9);
     }
 }
@@ -111,7 +123,11 @@ fn an_s_curve_taking_over_an_accelerating_axis_keeps_the_jerk_limit() {
     // 150 cycles in, the velocity command is still ramping its acceleration.
     for distance in [500.0, 20.0, -30.0] {
         let trace = trace_move(distance, dynamics, 1.0e9, 150);
-        assert!(trace.max_jerk <= 2000.0 * (1.0 + 1e-9), "{distance}: jerk {}", trace.max_jerk);
+        assert!(
+            trace.max_jerk <= 2000.0 * (1.0 + 1e-9),
+            "{distance}: jerk {}",
+            trace.max_jerk
+        );
         assert!(trace.max_acceleration <= 400.0 * (1.0 + 1e-12));
     }
 }
@@ -127,10 +143,22 @@ fn a_trapezoid_never_overshoots_and_ends_exactly() {
     for distance in [10_000.0, 12.345, 0.001, -333.3] {
         // Neither the command nor the axis limits the jerk: a trapezoid.
         let trace = trace_move(distance, dynamics, 0.0, 0);
-        let (low, high) = if distance > 0.0 { (0.0, distance) } else { (distance, 0.0) };
+        let (low, high) = if distance > 0.0 {
+            (0.0, distance)
+        } else {
+            (distance, 0.0)
+        };
         let tolerance = 1e-9 * distance.abs();
-        assert!(trace.min_position >= low - tolerance, "{distance}: {}", trace.min_position);
-        assert!(trace.max_position <= high + tolerance, "{distance}: {}", trace.max_position);
+        assert!(
+            trace.min_position >= low - tolerance,
+            "{distance}: {}",
+            trace.min_position
+        );
+        assert!(
+            trace.max_position <= high + tolerance,
+            "{distance}: {}",
+            trace.max_position
+        );
         assert!(trace.max_speed <= 250.0 * (1.0 + 1e-12));
         assert!(trace.max_acceleration <= 3000.0 * (1.0 + 1e-12));
     }

@@ -60,7 +60,11 @@ fn a_halt_aborted_by_move_velocity_re_accelerates_without_reaching_standstill() 
         }
         let snapshot = snap(&kernel, axis);
         assert_ne!(snapshot.state, AxisState::Standstill);
-        assert!(snapshot.set_velocity > 39.0, "cycle {cycle}: v = {}", snapshot.set_velocity);
+        assert!(
+            snapshot.set_velocity > 39.0,
+            "cycle {cycle}: v = {}",
+            snapshot.set_velocity
+        );
         kernel.advance(axis, DT_S).unwrap();
     }
     velocity.call(&mut kernel, axis);

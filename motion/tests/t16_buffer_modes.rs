@@ -30,13 +30,19 @@ fn an_aborting_second_move_takes_over_at_once_without_stopping() {
         fb1.call(&mut kernel, axis);
         fb2.call(&mut kernel, axis);
         if cycle == 3000 {
-            assert!(fb2.busy && fb2.active, "FB2 takes over in the call of its edge");
+            assert!(
+                fb2.busy && fb2.active,
+                "FB2 takes over in the call of its edge"
+            );
         }
         if cycle > 3000 {
             assert!(fb1.command_aborted && !fb1.done && !fb1.busy);
         }
         if (3000..7000).contains(&cycle) {
-            assert!(snap(&kernel, axis).set_velocity > 0.0, "no stop between the moves");
+            assert!(
+                snap(&kernel, axis).set_velocity > 0.0,
+                "no stop between the moves"
+            );
         }
         kernel.advance(axis, DT_S).unwrap();
     }
@@ -70,7 +76,10 @@ fn a_buffered_second_move_starts_the_cycle_after_the_first_reaches_rest_at_its_t
             assert!(fb1.busy && fb1.active);
         }
         if fb1_done_cycle.map(|done| done + 1) == Some(cycle) {
-            assert!(snapshot.set_position > 1000.0, "FB2 moves from the next cycle on");
+            assert!(
+                snapshot.set_position > 1000.0,
+                "FB2 moves from the next cycle on"
+            );
         }
         kernel.advance(axis, DT_S).unwrap();
     }

@@ -13,8 +13,10 @@ use motion::kernel::{AxisId, Kernel, MotionError};
 #[track_caller]
 fn expect_state(kernel: &Kernel, axis: AxisId, state: AxisState) {
     assert_eq!(kernel.state(axis).unwrap(), state);
-    let mut status = ReadStatus::default();
-    status.enable = true;
+    let mut status = ReadStatus {
+        enable: true,
+        ..ReadStatus::default()
+    };
     status.call(kernel, axis);
     let flags = [
         (status.disabled, AxisState::PowerOff),
@@ -45,8 +47,10 @@ fn the_state_diagram_sequence_of_the_digest() {
     expect_state(&kernel, axis, AxisState::PowerOff);
     assert_eq!(AxisState::PowerOff.code(), 0);
 
-    let mut power = Power::default();
-    power.enable = true;
+    let mut power = Power {
+        enable: true,
+        ..Power::default()
+    };
     power.call(&mut kernel, axis);
     assert!(power.status && power.valid && !power.error);
     expect_state(&kernel, axis, AxisState::Standstill);
@@ -66,9 +70,14 @@ fn the_state_diagram_sequence_of_the_digest() {
     expect_state(&kernel, axis, AxisState::ErrorStop);
     velocity.call(&mut kernel, axis);
     assert!(velocity.error && !velocity.busy);
-    assert_eq!(velocity.error_cause, Some(MotionError::AxisError { axis_error_id: 42 }));
-    let mut axis_error = ReadAxisError::default();
-    axis_error.enable = true;
+    assert_eq!(
+        velocity.error_cause,
+        Some(MotionError::AxisError { axis_error_id: 42 })
+    );
+    let mut axis_error = ReadAxisError {
+        enable: true,
+        ..ReadAxisError::default()
+    };
     axis_error.call(&kernel, axis);
     assert_eq!(axis_error.axis_error_id, 42);
 

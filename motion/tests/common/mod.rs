@@ -27,7 +27,12 @@ pub fn snap(kernel: &Kernel, axis: AxisId) -> AxisSnapshot {
 }
 
 /// Runs `cycles` task cycles: `programs` first (the FB calls), then the kernel advances.
-pub fn run(kernel: &mut Kernel, axis: AxisId, cycles: usize, mut programs: impl FnMut(&mut Kernel, usize)) {
+pub fn run(
+    kernel: &mut Kernel,
+    axis: AxisId,
+    cycles: usize,
+    mut programs: impl FnMut(&mut Kernel, usize),
+) {
     for cycle in 0..cycles {
         programs(kernel, cycle);
         kernel.advance(axis, DT_S).unwrap();
