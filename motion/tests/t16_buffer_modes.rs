@@ -129,3 +129,71 @@ fn a_second_buffered_command_while_one_waits_is_refused() {
     assert!(fb1.active && fb2.busy && !fb2.active);
     assert!(fb3.error && fb3.error_id == 7);
 }
+
+/// Runs FB1 to 1000 at `v1` with FB2 to `target2` at `v2` buffered in `mode` from the start;
+/// returns the velocity when FB1 shows Done, the lowest velocity between 500 and 1500, and
+/// checks that FB2 ends exactly on its target.
+fn blend(v1: f64, v2: f64, target2: f64, mode: BufferMode) -> (f64, f64) {
+    let (mut kernel, axis) = powered(roomy_linear());
+    let mut fb1 = move_to(1000.0, v1, BufferMode::Aborting);
+    let mut fb2 = move_to(target2, v2, mode);
+    fb1.execute = true;
+    fb2.execute = true;
+    let mut at_done = None;
+    let mut lowest = f64::INFINITY;
+    for _ in 0..60_000 {
+        fb1.call(&mut kernel, axis);
+        fb2.call(&mut kernel, axis);
+        let snapshot = snap(&kernel, axis);
+        if fb1.done && at_done.is_none() {
+            at_done = Some(snapshot.set_velocity);
+            assert!(fb2.active);
+        }
+        if (500.0..1500.0).contains(&snapshot.set_position) {
+            lowest = lowest.min(snapshot.set_velocity);
+        }
+        kernel.advance(axis, DT_S).unwrap();
+    }
+    fb2.call(&mut kernel, axis);
+    assert!(fb2.done, "{mode:?}: FB2 not done");
+    assert_eq!(snap(&kernel, axis).set_position, target2);
+    (at_done.expect("FB1 never Done"), lowest)
+}
+
+#[test]
+fn the_blending_modes_pass_the_first_target_at_their_velocity_without_stopping() {
+    for (v1, v2) in [(100.0, 50.0), (50.0, 100.0)] {
+        let cases = [
+            (BufferMode::BlendingLow, f64::min(v1, v2)),
+            (BufferMode::BlendingPrevious, v1),
+            (BufferMode::BlendingNext, v2),
+            (BufferMode::BlendingHigh, f64::max(v1, v2)),
+        ];
+        for (mode, expected) in cases {
+            let (at_done, lowest) = blend(v1, v2, 2000.0, mode);
+            // FB2 has already run the rest of the cycle in which FB1 reached its target, at
+            // most 1 ms at 100 u/s².
+            assert!(
+                (at_done - expected).abs() <= 0.1 + 1e-9,
+                "{mode:?} {v1}/{v2}: {at_done} instead of {expected}"
+            );
+            assert!(
+                lowest >= f64::min(v1, v2) - 1e-9,
+                "{mode:?} {v1}/{v2}: slowed to {lowest}"
+            );
+        }
+    }
+}
+
+#[test]
+fn blending_into_a_move_that_turns_back_stops_at_the_first_target() {
+    let (at_done, _) = blend(100.0, 100.0, 500.0, BufferMode::BlendingHigh);
+    assert_eq!(at_done, 0.0);
+}
+
+#[test]
+fn blending_into_a_short_move_passes_the_target_only_as_fast_as_the_move_can_stop() {
+    // FB2 covers 12.5 u; braking from 50 u/s at 100 u/s² takes 12.5 u, so 50 u/s is the most.
+    let (at_done, _) = blend(100.0, 100.0, 1012.5, BufferMode::BlendingHigh);
+    assert!((at_done - 50.0).abs() <= 0.1 + 1e-9, "{at_done}");
+}

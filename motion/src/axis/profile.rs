@@ -27,6 +27,78 @@ pub struct ProfileLimits {
     pub jerk: f64,
 }
 
+impl ProfileLimits {
+    /// The acceleration limit for a speed change from `from` to `to` (same sign or zero).
+    fn ramp_limit(&self, from: f64, to: f64) -> f64 {
+        if to.abs() > from.abs() {
+            self.acceleration
+        } else {
+            self.deceleration
+        }
+    }
+
+    /// The durations of the jerk phases and of the constant-acceleration phase of a ramp.
+    fn ramp_times(&self, from: f64, to: f64) -> (f64, f64) {
+        let change = (to - from).abs();
+        let a_max = self.ramp_limit(from, to);
+        let jerk = self.jerk;
+        if jerk <= 0.0 {
+            (0.0, change / a_max)
+        } else if change >= a_max * a_max / jerk {
+            (a_max / jerk, change / a_max - a_max / jerk)
+        } else {
+            ((change / jerk).sqrt(), 0.0)
+        }
+    }
+
+    /// The distance a velocity ramp from `from` to `to` (same sign or zero) covers: a ramp is
+    /// symmetric about its middle, so it covers the mean velocity times its duration.
+    pub fn ramp_distance(&self, from: f64, to: f64) -> f64 {
+        let (jerk_s, constant_s) = self.ramp_times(from, to);
+        (from + to) / 2.0 * (2.0 * jerk_s + constant_s)
+    }
+
+    /// The highest speed up to `wanted` that a ramp from `from` reaches within `distance`
+    /// (speeds along the direction of travel, `from` below `wanted`).
+    #[must_use]
+    pub fn reachable_speed(&self, from: f64, wanted: f64, distance: f64) -> f64 {
+        if self.ramp_distance(from, wanted) <= distance {
+            return wanted;
+        }
+        bisect(from, wanted, |speed| {
+            self.ramp_distance(from, speed) <= distance
+        })
+    }
+
+    /// The highest speed up to `wanted` from which a ramp to rest fits within `distance`.
+    #[must_use]
+    pub fn stoppable_speed(&self, wanted: f64, distance: f64) -> f64 {
+        if self.ramp_distance(wanted, 0.0) <= distance {
+            return wanted;
+        }
+        bisect(0.0, wanted, |speed| {
+            self.ramp_distance(speed, 0.0) <= distance
+        })
+    }
+}
+
+/// The value between `fits` (where `test` holds) and `too_far` (where it does not) at which
+/// `test` stops holding, to the last bit; returns a value where `test` holds.
+fn bisect(mut fits: f64, mut too_far: f64, test: impl Fn(f64) -> bool) -> f64 {
+    for _ in 0..200 {
+        let middle = (fits + too_far) / 2.0;
+        if middle == fits || middle == too_far {
+            break;
+        }
+        if test(middle) {
+            fits = middle;
+        } else {
+            too_far = middle;
+        }
+    }
+    fits
+}
+
 /// The state of a profile at one time: displacement from the start and its derivatives.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct ProfileSample {
@@ -85,23 +157,55 @@ impl Profile {
         acceleration: f64,
         limits: ProfileLimits,
     ) -> Self {
+        Self::to_position_blending(distance, velocity, acceleration, limits, 0.0)
+    }
+
+    /// A profile that starts with `velocity` and `acceleration` and arrives exactly `distance`
+    /// away (signed) with the speed `end_speed` (not negative, along the direction of travel) and
+    /// zero acceleration, for the blending buffer modes. When the distance is too short to
+    /// reach `end_speed`, the axis arrives with the highest speed it can reach; when the axis
+    /// is too fast to slow down to `end_speed` in time, it comes to rest at the target instead.
+    #[must_use]
+    pub fn to_position_blending(
+        distance: f64,
+        velocity: f64,
+        acceleration: f64,
+        limits: ProfileLimits,
+        end_speed: f64,
+    ) -> Self {
         let mut plan = Builder::new(velocity, acceleration, limits);
         plan.settle_acceleration();
         let dir = if distance < 0.0 { -1.0 } else { 1.0 };
+        let end_speed = if distance == 0.0 {
+            0.0
+        } else {
+            end_speed.max(0.0)
+        };
         let speed = dir * plan.velocity;
         let remaining = dir * (distance - plan.displacement);
-        if speed < 0.0 {
+        let arrival = if speed < 0.0 {
             plan.ramp(dir, speed, 0.0);
             let remaining = dir * (distance - plan.displacement);
-            plan.forward(dir, 0.0, remaining);
-        } else if remaining >= plan.ramp_distance(speed, 0.0) {
-            plan.forward(dir, speed, remaining);
+            let end = limits.reachable_speed(0.0, end_speed, remaining);
+            plan.forward(dir, 0.0, remaining, end);
+            end
+        } else if speed <= end_speed {
+            let end = limits.reachable_speed(speed, end_speed, remaining);
+            plan.forward(dir, speed, remaining, end);
+            end
+        } else if remaining >= limits.ramp_distance(speed, end_speed) {
+            plan.forward(dir, speed, remaining, end_speed);
+            end_speed
+        } else if remaining >= limits.ramp_distance(speed, 0.0) {
+            plan.forward(dir, speed, remaining, 0.0);
+            0.0
         } else {
             plan.ramp(dir, speed, 0.0);
             let overshoot = dir * (plan.displacement - distance);
-            plan.forward(-dir, 0.0, overshoot);
-        }
-        plan.finish(distance, 0.0)
+            plan.forward(-dir, 0.0, overshoot, 0.0);
+            0.0
+        };
+        plan.finish(distance, dir * arrival)
     }
 
     /// A profile that starts with `velocity` and `acceleration` and reaches `target_velocity`
@@ -232,44 +336,14 @@ impl Builder {
         }
     }
 
-    /// The acceleration limit for a speed change from `from` to `to` (same sign or zero).
-    fn ramp_limit(&self, from: f64, to: f64) -> f64 {
-        if to.abs() > from.abs() {
-            self.limits.acceleration
-        } else {
-            self.limits.deceleration
-        }
-    }
-
-    /// The durations of the jerk phases and of the constant-acceleration phase of a ramp.
-    fn ramp_times(&self, from: f64, to: f64) -> (f64, f64) {
-        let change = (to - from).abs();
-        let a_max = self.ramp_limit(from, to);
-        let jerk = self.limits.jerk;
-        if jerk <= 0.0 {
-            (0.0, change / a_max)
-        } else if change >= a_max * a_max / jerk {
-            (a_max / jerk, change / a_max - a_max / jerk)
-        } else {
-            ((change / jerk).sqrt(), 0.0)
-        }
-    }
-
-    /// The distance a ramp from `from` to `to` covers: a ramp is symmetric about its middle,
-    /// so it covers the mean velocity times its duration.
-    fn ramp_distance(&self, from: f64, to: f64) -> f64 {
-        let (jerk_s, constant_s) = self.ramp_times(from, to);
-        (from + to) / 2.0 * (2.0 * jerk_s + constant_s)
-    }
-
     /// Appends a ramp from speed `from` to speed `to`, both measured along `dir`.
     fn ramp(&mut self, dir: f64, from: f64, to: f64) {
         if from == to {
             return;
         }
-        let (jerk_s, constant_s) = self.ramp_times(from, to);
+        let (jerk_s, constant_s) = self.limits.ramp_times(from, to);
         let sign = dir * (to - from).signum();
-        let a_max = self.ramp_limit(from, to);
+        let a_max = self.limits.ramp_limit(from, to);
         let jerk = self.limits.jerk;
         if jerk <= 0.0 {
             self.push(constant_s, sign * a_max, 0.0);
@@ -283,37 +357,26 @@ impl Builder {
         self.velocity = dir * to;
     }
 
-    /// Appends the motion along `dir` from speed `speed` (not negative) over `distance` (not
-    /// below the braking distance) to rest.
-    fn forward(&mut self, dir: f64, speed: f64, distance: f64) {
-        let cruise = self.limits.velocity;
-        let covered = |plan: &Self, peak: f64| {
-            plan.ramp_distance(speed, peak) + plan.ramp_distance(peak, 0.0)
-        };
-        let peak = if covered(self, cruise) <= distance {
+    /// Appends the motion along `dir` from speed `speed` (not negative) over `distance` to
+    /// speed `end` (not negative). The distance must allow it: at least the distance of the
+    /// ramp from `speed` to `end`.
+    fn forward(&mut self, dir: f64, speed: f64, distance: f64, end: f64) {
+        let limits = self.limits;
+        let cruise = limits.velocity.max(end);
+        let covered =
+            |peak: f64| limits.ramp_distance(speed, peak) + limits.ramp_distance(peak, end);
+        let peak = if covered(cruise) <= distance {
             cruise
         } else {
-            // `covered(speed)` is the braking distance, which fits; `covered(cruise)` does not.
-            let (mut fits, mut too_far) = (speed, cruise);
-            for _ in 0..200 {
-                let middle = (fits + too_far) / 2.0;
-                if middle == fits || middle == too_far {
-                    break;
-                }
-                if covered(self, middle) <= distance {
-                    fits = middle;
-                } else {
-                    too_far = middle;
-                }
-            }
-            fits
+            // At the lowest possible peak the ramps fit; at the cruise velocity they do not.
+            bisect(speed.max(end), cruise, |peak| covered(peak) <= distance)
         };
-        let cruise_distance = distance - covered(self, peak);
+        let cruise_distance = distance - covered(peak);
         self.ramp(dir, speed, peak);
         if peak > 0.0 && cruise_distance > 0.0 {
             self.push(cruise_distance / peak, 0.0, 0.0);
         }
-        self.ramp(dir, peak, 0.0);
+        self.ramp(dir, peak, end);
     }
 
     fn finish(mut self, displacement: f64, velocity: f64) -> Profile {

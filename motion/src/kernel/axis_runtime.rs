@@ -5,7 +5,7 @@ use crate::axis::direction::modulo_distances;
 use crate::axis::{AxisConfig, AxisState, Direction, Overrides, Profile, ProfileLimits};
 use crate::kernel::registry::Registry;
 use crate::kernel::{
-    CommandId, CommandStatus, Dynamics, MotionError, MotionRequest, PositionTarget,
+    BufferMode, CommandId, CommandStatus, Dynamics, MotionError, MotionRequest, PositionTarget,
 };
 
 /// What produces the set values of an axis while it moves. Every kind of motion is one variant;
@@ -66,6 +66,8 @@ pub(crate) struct Running {
     pub(crate) reached: bool,
     /// Whether a position move is held at rest by a velocity override of 0.
     pub(crate) paused: bool,
+    /// The speed a position move passes its target with, for a blending successor; 0 to stop.
+    pub(crate) end_speed: f64,
 }
 
 /// An axis with its set values and what controls it.
@@ -99,6 +101,7 @@ impl Running {
             displacement: 0.0,
             reached: false,
             paused: false,
+            end_speed: 0.0,
         }
     }
 }
@@ -151,11 +154,23 @@ impl AxisRuntime {
         }
     }
 
-    /// A profile over `distance`, or a hold at rest while the velocity override is 0.
-    fn position_profile(&self, distance: f64, dynamics: Dynamics) -> (Profile, bool) {
+    /// A profile over `distance` that passes its end with `end_speed`, or a hold at rest while
+    /// the velocity override is 0.
+    fn position_profile(
+        &self,
+        distance: f64,
+        dynamics: Dynamics,
+        end_speed: f64,
+    ) -> (Profile, bool) {
         let limits = self.limits(dynamics);
         if limits.velocity > 0.0 {
-            let profile = Profile::to_position(distance, self.velocity, self.acceleration, limits);
+            let profile = Profile::to_position_blending(
+                distance,
+                self.velocity,
+                self.acceleration,
+                limits,
+                end_speed,
+            );
             (profile, false)
         } else {
             let profile = Profile::to_velocity(0.0, self.velocity, self.acceleration, limits);
@@ -187,18 +202,21 @@ impl AxisRuntime {
         }
     }
 
-    /// The signed travel to an absolute target and the wrapped target.
+    /// The signed travel to an absolute target from `from` at `velocity`, and the wrapped
+    /// target.
     fn absolute_travel(
         &self,
+        from: f64,
+        velocity: f64,
         position: f64,
         direction: Direction,
         dynamics: Dynamics,
     ) -> (f64, f64) {
         let Some(period) = self.config.modulo_period else {
-            return (position - self.position, position);
+            return (position - from, position);
         };
         let target = self.config.wrap(position);
-        let (forward, backward) = modulo_distances(self.position, target, period);
+        let (forward, backward) = modulo_distances(from, target, period);
         let shortest = if forward <= -backward {
             forward
         } else {
@@ -208,13 +226,14 @@ impl AxisRuntime {
             Direction::Positive => forward,
             Direction::Negative => backward,
             Direction::Shortest => shortest,
-            Direction::Current if self.velocity > 0.0 => forward,
-            Direction::Current if self.velocity < 0.0 => backward,
+            Direction::Current if velocity > 0.0 => forward,
+            Direction::Current if velocity < 0.0 => backward,
             Direction::Current => shortest,
             Direction::Fastest => {
-                let forward_s = self.position_profile(forward, dynamics).0.duration_s();
-                let backward_s = self.position_profile(backward, dynamics).0.duration_s();
-                if forward_s <= backward_s {
+                let limits = self.limits(dynamics);
+                let duration_s =
+                    |travel: f64| Profile::to_position(travel, velocity, 0.0, limits).duration_s();
+                if limits.velocity <= 0.0 || duration_s(forward) <= duration_s(backward) {
                     forward
                 } else {
                     backward
@@ -233,7 +252,13 @@ impl AxisRuntime {
                     PositionTarget::Absolute {
                         position,
                         direction,
-                    } => self.absolute_travel(position, direction, dynamics),
+                    } => self.absolute_travel(
+                        self.position,
+                        self.velocity,
+                        position,
+                        direction,
+                        dynamics,
+                    ),
                     PositionTarget::Relative { distance } => {
                         (distance, self.config.wrap(self.position + distance))
                     }
@@ -255,7 +280,7 @@ impl AxisRuntime {
                         max: limits.max,
                     });
                 }
-                let (profile, paused) = self.position_profile(travel, dynamics);
+                let (profile, paused) = self.position_profile(travel, dynamics, 0.0);
                 let mut running = Running::new(
                     name,
                     Source::Position { target, dynamics },
@@ -310,6 +335,61 @@ impl AxisRuntime {
                     self.position,
                 ))
             }
+        }
+    }
+
+    /// Lets the running position move pass its target with the speed `mode` asks for, so the
+    /// buffered `next` command takes over without a stop. The speed is 0 when `next` goes the
+    /// other way, and no higher than `next` can brake from within its own distance. After
+    /// MC_MoveVelocity or MC_Halt, and before MC_MoveVelocity or MC_Halt, a blending command
+    /// acts like a buffered one.
+    pub(crate) fn blend_into(&mut self, next: MotionRequest, mode: BufferMode) {
+        let Some(running) = self.running else {
+            return;
+        };
+        let Source::Position { target, dynamics } = running.source else {
+            return;
+        };
+        let MotionRequest::Position {
+            target: next_target,
+            dynamics: next_dynamics,
+        } = next
+        else {
+            return;
+        };
+        let direction = running.distance.signum();
+        let previous_speed = dynamics.velocity.abs() * self.overrides.velocity;
+        let next_limits = self.limits(next_dynamics);
+        let next_travel = match next_target {
+            PositionTarget::Relative { distance } | PositionTarget::Additive { distance } => {
+                distance
+            }
+            PositionTarget::Absolute {
+                position,
+                direction: way,
+            } => {
+                let velocity = direction * previous_speed;
+                self.absolute_travel(target, velocity, position, way, next_dynamics)
+                    .0
+            }
+        };
+        let wanted = match mode {
+            BufferMode::Aborting | BufferMode::Buffered => 0.0,
+            BufferMode::BlendingLow => previous_speed.min(next_limits.velocity),
+            BufferMode::BlendingPrevious => previous_speed,
+            BufferMode::BlendingNext => next_limits.velocity,
+            BufferMode::BlendingHigh => previous_speed.max(next_limits.velocity),
+        };
+        let end_speed = if next_travel * direction > 0.0 {
+            next_limits.stoppable_speed(wanted, next_travel.abs())
+        } else {
+            0.0
+        };
+        if end_speed != running.end_speed {
+            if let Some(running) = &mut self.running {
+                running.end_speed = end_speed;
+            }
+            self.replan();
         }
     }
 
@@ -380,6 +460,22 @@ impl AxisRuntime {
             }
             return;
         }
+        self.integrate(dt_s);
+        // The elapsed time is a sum of cycle intervals, which rounds; a profile that ends within
+        // a millionth of a cycle of now has ended now, not one cycle later.
+        if let Some(running) = &self.running
+            && running.elapsed_s >= running.profile.duration_s() - dt_s * 1e-6
+        {
+            self.finish(registry);
+        }
+        self.check_software_limits(registry);
+    }
+
+    /// Moves the running motion on by `dt_s` and takes its set values.
+    fn integrate(&mut self, dt_s: f64) {
+        let Some(running) = &mut self.running else {
+            return;
+        };
         running.elapsed_s += dt_s;
         if running.reached && matches!(running.source, Source::Velocity { .. }) {
             // At constant velocity the position is integrated, so it stays exact on long runs.
@@ -392,12 +488,6 @@ impl AxisRuntime {
             self.velocity = sample.velocity;
             self.acceleration = sample.acceleration;
         }
-        // The elapsed time is a sum of cycle intervals, which rounds; a profile that ends within
-        // a millionth of a cycle of now has ended now, not one cycle later.
-        if running.elapsed_s >= running.profile.duration_s() - dt_s * 1e-6 {
-            self.finish(registry);
-        }
-        self.check_software_limits(registry);
     }
 
     /// Handles the end of the running profile.
@@ -408,17 +498,25 @@ impl AxisRuntime {
         self.acceleration = 0.0;
         match running.source {
             Source::Position { target, .. } => {
-                self.velocity = 0.0;
                 if running.paused {
+                    self.velocity = 0.0;
                     self.running = Some(running);
                     return;
                 }
                 self.position = target;
-                self.complete(running.id, registry);
+                self.velocity = running.profile.end().velocity;
+                // A blending successor takes over the part of the cycle after the target, so
+                // the axis moves on without a gap.
+                let carry_s = if self.velocity == 0.0 {
+                    0.0
+                } else {
+                    (running.elapsed_s - running.profile.duration_s()).max(0.0)
+                };
+                self.complete(running.id, registry, carry_s);
             }
             Source::Halt { .. } => {
                 self.velocity = 0.0;
-                self.complete(running.id, registry);
+                self.complete(running.id, registry, 0.0);
             }
             Source::Velocity { .. } => {
                 self.velocity = running.profile.end().velocity;
@@ -434,7 +532,7 @@ impl AxisRuntime {
                     if let Some(id) = running.id {
                         registry.set(id, CommandStatus::Aborted);
                     }
-                    self.start_buffered(next_id, request, registry);
+                    self.start_buffered(next_id, request, registry, 0.0);
                 } else {
                     self.running = Some(running);
                 }
@@ -467,27 +565,56 @@ impl AxisRuntime {
         }
     }
 
-    /// Marks a discrete command Done and starts the buffered one or comes to Standstill.
-    fn complete(&mut self, id: Option<CommandId>, registry: &mut Registry) {
+    /// Marks a discrete command Done and starts the buffered one (`carry_s` into its profile)
+    /// or comes to Standstill.
+    fn complete(&mut self, id: Option<CommandId>, registry: &mut Registry, carry_s: f64) {
         if let Some(id) = id {
             registry.set(id, CommandStatus::Done);
         }
         match self.buffered.take() {
-            Some((next_id, request)) => self.start_buffered(next_id, request, registry),
-            None => self.state = AxisState::Standstill,
+            Some((next_id, request)) => self.start_buffered(next_id, request, registry, carry_s),
+            None => {
+                // A move that was to blend into a successor that is gone still ends at rest.
+                self.velocity = 0.0;
+                self.state = AxisState::Standstill;
+            }
         }
     }
 
-    fn start_buffered(&mut self, id: CommandId, request: MotionRequest, registry: &mut Registry) {
+    /// Lets the buffered command take control, `carry_s` seconds into its profile.
+    fn start_buffered(
+        &mut self,
+        id: CommandId,
+        request: MotionRequest,
+        registry: &mut Registry,
+        carry_s: f64,
+    ) {
         match self.plan(request) {
             Ok(mut running) => {
                 running.id = Some(id);
                 registry.set(id, CommandStatus::Active { reached: false });
                 self.install(running);
+                if carry_s > 0.0 {
+                    self.integrate(carry_s);
+                }
             }
             Err(error) => {
                 registry.set(id, CommandStatus::Error(error));
-                self.state = AxisState::Standstill;
+                if self.velocity == 0.0 {
+                    self.state = AxisState::Standstill;
+                } else {
+                    // The move before blended into this one and passed its target moving, so
+                    // the axis brakes at its configured deceleration, as MC_Halt would.
+                    let dynamics = Dynamics {
+                        velocity: self.config.max_velocity,
+                        acceleration: self.config.max_deceleration,
+                        deceleration: self.config.max_deceleration,
+                        jerk: 0.0,
+                    };
+                    if let Ok(halt) = self.plan(MotionRequest::Halt { dynamics }) {
+                        self.install(halt);
+                    }
+                }
             }
         }
     }
@@ -547,7 +674,8 @@ impl AxisRuntime {
         let (profile, paused, distance) = match running.source {
             Source::Position { dynamics, .. } => {
                 let remaining = running.distance - running.displacement;
-                let (profile, paused) = self.position_profile(remaining, dynamics);
+                let (profile, paused) =
+                    self.position_profile(remaining, dynamics, running.end_speed);
                 (profile, paused, remaining)
             }
             Source::Velocity { velocity, dynamics } => {

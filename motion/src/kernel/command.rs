@@ -44,6 +44,36 @@ pub enum BufferMode {
     /// Start when the running command has finished (at rest at its target, or at its velocity
     /// for MC_MoveVelocity).
     Buffered,
+    /// Start at the end of the running position move without stopping, passing its target
+    /// with the lower of both commanded velocities.
+    BlendingLow,
+    /// Like [`BufferMode::BlendingLow`], with the velocity of the running move.
+    BlendingPrevious,
+    /// Like [`BufferMode::BlendingLow`], with the velocity of the new move.
+    BlendingNext,
+    /// Like [`BufferMode::BlendingLow`], with the higher of both commanded velocities.
+    BlendingHigh,
+}
+
+impl BufferMode {
+    /// Whether the new command waits for the running one instead of aborting it.
+    #[must_use]
+    pub fn waits(self) -> bool {
+        self != Self::Aborting
+    }
+
+    /// The CODESYS `MC_BUFFER_MODE` number.
+    #[must_use]
+    pub fn code(self) -> u16 {
+        match self {
+            Self::Aborting => 0,
+            Self::Buffered => 1,
+            Self::BlendingLow => 2,
+            Self::BlendingPrevious => 3,
+            Self::BlendingNext => 4,
+            Self::BlendingHigh => 5,
+        }
+    }
 }
 
 /// The dynamic inputs of a motion FB, magnitudes in user units per s, s², s³.

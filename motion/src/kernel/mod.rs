@@ -170,8 +170,10 @@ impl Kernel {
 
     /// Issues a motion command (MC_MoveAbsolute, MC_MoveRelative, MC_MoveAdditive,
     /// MC_MoveVelocity, MC_Jog, MC_Halt). With [`BufferMode::Aborting`], or when nothing runs,
-    /// it takes control at once and aborts what ran; with [`BufferMode::Buffered`] it waits
-    /// until the running command has finished. A refused command changes nothing.
+    /// it takes control at once and aborts what ran; with the other modes it waits until the
+    /// running command has finished (the blending modes replan a running position move so that
+    /// it passes its target at the blending velocity). The buffer holds one command. A refused
+    /// command changes nothing.
     pub fn issue(
         &mut self,
         axis: AxisId,
@@ -184,7 +186,7 @@ impl Kernel {
             .ok_or(MotionError::UnknownAxis(axis.0))?;
         Self::check_accepts_motion(runtime, request.fb_name())?;
         validate_request(runtime.config, request)?;
-        let waits = buffer_mode == BufferMode::Buffered
+        let waits = buffer_mode.waits()
             && runtime.running.is_some_and(|running| {
                 matches!(
                     running.source,
@@ -197,6 +199,7 @@ impl Kernel {
             }
             let id = registry.issue(CommandStatus::Buffered);
             runtime.buffered = Some((id, request));
+            runtime.blend_into(request, buffer_mode);
             return Ok(id);
         }
         let mut running = runtime.plan(request)?;
