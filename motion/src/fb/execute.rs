@@ -10,8 +10,13 @@
 //!   `CommandAborted`) stays while `Execute` is TRUE and is reset at the first call with
 //!   `Execute` FALSE after the call that showed it, so when `Execute` was already FALSE it is
 //!   shown for exactly one call.
+//! - `ContinuousUpdate` is read at the rising edge. When it was TRUE there, the motion inputs
+//!   are compared at every call while the command runs and changes are applied to it, for as
+//!   long as the input stays TRUE (FALSE freezes the last values applied).
 
-use crate::kernel::{AxisId, CommandId, CommandStatus, Kernel, MotionError};
+use crate::kernel::{
+    AxisId, BufferMode, CommandId, CommandStatus, Kernel, MotionError, MotionRequest,
+};
 
 /// The final outcome an instance shows.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -64,6 +69,10 @@ pub(crate) struct ExecuteCore {
     previous_execute: bool,
     command: Option<CommandId>,
     outcome: Outcome,
+    /// `ContinuousUpdate` as it was at the rising edge.
+    continuous: bool,
+    /// The request last issued or applied, to see whether the inputs changed.
+    last_request: Option<MotionRequest>,
 }
 
 impl ExecuteCore {
@@ -92,6 +101,38 @@ impl ExecuteCore {
             };
         }
         self.poll(kernel)
+    }
+
+    /// One call of a motion FB: issues `request` on a rising edge of `execute` and applies
+    /// changed inputs while `ContinuousUpdate` holds (see the module documentation).
+    pub(crate) fn call_motion(
+        &mut self,
+        execute: bool,
+        continuous_update: bool,
+        kernel: &mut Kernel,
+        axis: AxisId,
+        request: MotionRequest,
+        buffer_mode: BufferMode,
+    ) -> ExecuteOutputs {
+        let issues = execute && !self.previous_execute && self.command.is_none();
+        if !issues
+            && let Some(id) = self.command
+            && self.continuous
+            && continuous_update
+            && self.last_request != Some(request)
+        {
+            kernel.update(id, request);
+            self.last_request = Some(request);
+        }
+        let outputs = self.call(execute, kernel, |kernel| {
+            check_axis(kernel, axis)?;
+            kernel.issue(axis, request, buffer_mode).map(Some)
+        });
+        if issues {
+            self.continuous = continuous_update;
+            self.last_request = Some(request);
+        }
+        outputs
     }
 
     /// The command the instance follows, while it is busy.

@@ -20,6 +20,7 @@ pub mod read_actual_velocity;
 pub mod read_axis_error;
 pub mod read_status;
 pub mod reset;
+pub mod set_override;
 pub mod set_position;
 pub mod stop;
 
@@ -36,5 +37,6 @@ pub use read_actual_velocity::ReadActualVelocity;
 pub use read_axis_error::ReadAxisError;
 pub use read_status::ReadStatus;
 pub use reset::Reset;
+pub use set_override::SetOverride;
 pub use set_position::SetPosition;
 pub use stop::Stop;

@@ -1,7 +1,7 @@
 //! MC_MoveAbsolute.
 
 use crate::axis::Direction;
-use crate::fb::execute::{ExecuteCore, check_axis};
+use crate::fb::execute::ExecuteCore;
 use crate::kernel::{
     AxisId, BufferMode, Dynamics, Kernel, MotionError, MotionRequest, PositionTarget,
 };
@@ -11,6 +11,9 @@ use crate::kernel::{
 pub struct MoveAbsolute {
     /// `Execute`: a rising edge starts the command with the inputs of that call.
     pub execute: bool,
+    /// `ContinuousUpdate`: when TRUE at the rising edge, later changes of the motion inputs
+    /// apply to the running command while this input stays TRUE.
+    pub continuous_update: bool,
     /// `Position`: the target in user units (wrapped into the period on a modulo axis).
     pub position: f64,
     /// `Direction`: which way round a modulo axis goes.
@@ -57,11 +60,14 @@ impl MoveAbsolute {
                 jerk: self.jerk,
             },
         };
-        let buffer_mode = self.buffer_mode;
-        let outputs = self.core.call(self.execute, kernel, |kernel| {
-            check_axis(kernel, axis)?;
-            kernel.issue(axis, request, buffer_mode).map(Some)
-        });
+        let outputs = self.core.call_motion(
+            self.execute,
+            self.continuous_update,
+            kernel,
+            axis,
+            request,
+            self.buffer_mode,
+        );
         self.done = outputs.done();
         self.busy = outputs.busy;
         self.active = outputs.active;

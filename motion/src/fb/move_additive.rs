@@ -1,6 +1,6 @@
 //! MC_MoveAdditive.
 
-use crate::fb::execute::{ExecuteCore, check_axis};
+use crate::fb::execute::ExecuteCore;
 use crate::kernel::{
     AxisId, BufferMode, Dynamics, Kernel, MotionError, MotionRequest, PositionTarget,
 };
@@ -10,6 +10,9 @@ use crate::kernel::{
 pub struct MoveAdditive {
     /// `Execute`: a rising edge starts the command with the inputs of that call.
     pub execute: bool,
+    /// `ContinuousUpdate`: when TRUE at the rising edge, later changes of the motion inputs
+    /// apply to the running command while this input stays TRUE.
+    pub continuous_update: bool,
     /// `Distance`: the signed distance in user units.
     pub distance: f64,
     /// `Velocity`: the highest speed in user units per second (not necessarily reached).
@@ -53,11 +56,14 @@ impl MoveAdditive {
                 jerk: self.jerk,
             },
         };
-        let buffer_mode = self.buffer_mode;
-        let outputs = self.core.call(self.execute, kernel, |kernel| {
-            check_axis(kernel, axis)?;
-            kernel.issue(axis, request, buffer_mode).map(Some)
-        });
+        let outputs = self.core.call_motion(
+            self.execute,
+            self.continuous_update,
+            kernel,
+            axis,
+            request,
+            self.buffer_mode,
+        );
         self.done = outputs.done();
         self.busy = outputs.busy;
         self.active = outputs.active;

@@ -1,7 +1,7 @@
 //! MC_MoveVelocity.
 
 use crate::axis::Direction;
-use crate::fb::execute::{ExecuteCore, check_axis};
+use crate::fb::execute::ExecuteCore;
 use crate::kernel::{AxisId, BufferMode, Dynamics, Kernel, MotionError, MotionRequest};
 
 /// MC_MoveVelocity: reach a velocity and keep it (ContinuousMotion) until another command takes
@@ -10,6 +10,9 @@ use crate::kernel::{AxisId, BufferMode, Dynamics, Kernel, MotionError, MotionReq
 pub struct MoveVelocity {
     /// `Execute`: a rising edge starts the command with the inputs of that call.
     pub execute: bool,
+    /// `ContinuousUpdate`: when TRUE at the rising edge, later changes of the motion inputs
+    /// apply to the running command while this input stays TRUE.
+    pub continuous_update: bool,
     /// `Velocity` in user units per second; a negative value reverses `Direction`.
     pub velocity: f64,
     /// `Acceleration` in user units per second².
@@ -52,11 +55,14 @@ impl MoveVelocity {
             },
             jog: false,
         };
-        let buffer_mode = self.buffer_mode;
-        let outputs = self.core.call(self.execute, kernel, |kernel| {
-            check_axis(kernel, axis)?;
-            kernel.issue(axis, request, buffer_mode).map(Some)
-        });
+        let outputs = self.core.call_motion(
+            self.execute,
+            self.continuous_update,
+            kernel,
+            axis,
+            request,
+            self.buffer_mode,
+        );
         self.in_velocity = outputs.active && outputs.reached;
         self.busy = outputs.busy;
         self.active = outputs.active;

@@ -68,6 +68,10 @@ pub(crate) struct Running {
     pub(crate) paused: bool,
     /// The speed a position move passes its target with, for a blending successor; 0 to stop.
     pub(crate) end_speed: f64,
+    /// The displacement a position move covered under its earlier profiles (before a replan).
+    pub(crate) travelled_before: f64,
+    /// The request the motion came from, for ContinuousUpdate.
+    pub(crate) request: Option<MotionRequest>,
 }
 
 /// An axis with its set values and what controls it.
@@ -102,6 +106,8 @@ impl Running {
             reached: false,
             paused: false,
             end_speed: 0.0,
+            travelled_before: 0.0,
+            request: None,
         }
     }
 }
@@ -245,6 +251,13 @@ impl AxisRuntime {
 
     /// Plans a request from the axis's current state without changing the axis.
     pub(crate) fn plan(&self, request: MotionRequest) -> Result<Running, MotionError> {
+        self.plan_motion(request).map(|mut running| {
+            running.request = Some(request);
+            running
+        })
+    }
+
+    fn plan_motion(&self, request: MotionRequest) -> Result<Running, MotionError> {
         let name = request.fb_name();
         match request {
             MotionRequest::Position { target, dynamics } => {
@@ -666,6 +679,162 @@ impl AxisRuntime {
         }
     }
 
+    /// ContinuousUpdate: applies new inputs to the command `id`, running or buffered. A running
+    /// position move keeps its start: a new `Distance` counts from where MC_MoveRelative started
+    /// (from the target MC_MoveAdditive added to), a new `Position` is the new target. Inputs that
+    /// cannot be applied end the command in Error and the axis brakes as MC_Halt would.
+    pub(crate) fn update(
+        &mut self,
+        id: CommandId,
+        request: MotionRequest,
+        registry: &mut Registry,
+    ) {
+        if let Some((buffered_id, buffered_request)) = &mut self.buffered
+            && *buffered_id == id
+        {
+            *buffered_request = request;
+            return;
+        }
+        let Some(running) = self.running else {
+            return;
+        };
+        if running.id != Some(id) || running.request == Some(request) {
+            return;
+        }
+        let updated = match (running.source, request) {
+            (Source::Position { .. }, MotionRequest::Position { target, dynamics }) => {
+                self.update_position(running, target, dynamics)
+            }
+            (Source::Velocity { velocity, .. }, MotionRequest::Velocity { .. }) => {
+                self.plan(request).map(|mut next| {
+                    next.id = running.id;
+                    next.request = Some(request);
+                    if let Source::Velocity { velocity: new, .. } = next.source {
+                        if new == velocity {
+                            next.reached = running.reached;
+                        } else {
+                            registry.set(id, CommandStatus::Active { reached: false });
+                        }
+                    }
+                    next
+                })
+            }
+            _ => return,
+        };
+        match updated {
+            Ok(next) => {
+                if let Source::Position { target, .. } = next.source {
+                    self.commanded_position = target;
+                }
+                self.running = Some(next);
+            }
+            Err(error) => self.fail_running(error, registry),
+        }
+    }
+
+    /// The running position move replanned for a new target or new dynamics.
+    fn update_position(
+        &self,
+        running: Running,
+        target: PositionTarget,
+        dynamics: Dynamics,
+    ) -> Result<Running, MotionError> {
+        let travelled = running.travelled_before + running.displacement;
+        let planned_total = running.travelled_before + running.distance;
+        let total = match target {
+            PositionTarget::Relative { distance } => distance,
+            PositionTarget::Additive { distance } => {
+                let previous = match running.request {
+                    Some(MotionRequest::Position {
+                        target: PositionTarget::Additive { distance: previous },
+                        ..
+                    }) => previous,
+                    _ => 0.0,
+                };
+                planned_total - previous + distance
+            }
+            PositionTarget::Absolute {
+                position,
+                direction,
+            } => {
+                let (remaining, _) = self.absolute_travel(
+                    self.position,
+                    self.velocity,
+                    position,
+                    direction,
+                    dynamics,
+                );
+                travelled + remaining
+            }
+        };
+        let remaining = total - travelled;
+        let new_target = match target {
+            PositionTarget::Absolute { position, .. } => self.config.wrap(position),
+            PositionTarget::Relative { .. } | PositionTarget::Additive { .. } => {
+                self.config.wrap(self.position + remaining)
+            }
+        };
+        if let Some(limits) = self.config.active_software_limits()
+            && !(limits.min..=limits.max).contains(&new_target)
+        {
+            return Err(MotionError::OutsideSoftwareLimits {
+                target: new_target,
+                min: limits.min,
+                max: limits.max,
+            });
+        }
+        let (profile, paused) = self.position_profile(remaining, dynamics, running.end_speed);
+        Ok(Running {
+            source: Source::Position {
+                target: new_target,
+                dynamics,
+            },
+            profile,
+            paused,
+            distance: remaining,
+            origin: self.position,
+            elapsed_s: 0.0,
+            displacement: 0.0,
+            travelled_before: travelled,
+            request: Some(MotionRequest::Position { target, dynamics }),
+            ..running
+        })
+    }
+
+    /// Ends the running command in Error; a moving axis brakes with the command's deceleration
+    /// (or the axis's, when the command has none), as MC_Halt would.
+    pub(crate) fn fail_running(&mut self, error: MotionError, registry: &mut Registry) {
+        let deceleration = match self.running.map(|running| running.source) {
+            Some(
+                Source::Position { dynamics, .. }
+                | Source::Velocity { dynamics, .. }
+                | Source::Halt { dynamics },
+            ) => dynamics.deceleration,
+            _ => self.config.max_deceleration,
+        };
+        if let Some(running) = self.running.take()
+            && let Some(id) = running.id
+        {
+            registry.set(id, CommandStatus::Error(error));
+        }
+        if let Some((id, _)) = self.buffered.take() {
+            registry.set(id, CommandStatus::Aborted);
+        }
+        if self.velocity == 0.0 && self.acceleration == 0.0 {
+            self.state = AxisState::Standstill;
+            return;
+        }
+        let dynamics = Dynamics {
+            velocity: self.config.max_velocity,
+            acceleration: deceleration,
+            deceleration,
+            jerk: 0.0,
+        };
+        if let Ok(halt) = self.plan(MotionRequest::Halt { dynamics }) {
+            self.install(halt);
+        }
+    }
+
     /// Replans the running motion from the current set values, after the overrides changed.
     pub(crate) fn replan(&mut self) {
         let Some(running) = self.running else {
@@ -703,6 +872,7 @@ impl AxisRuntime {
             origin: self.position,
             elapsed_s: 0.0,
             displacement: 0.0,
+            travelled_before: running.travelled_before + running.displacement,
             // A velocity command keeps InVelocity once reached; the cruise resumes when the
             // new ramp ends.
             reached: false,

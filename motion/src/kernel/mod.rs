@@ -210,6 +210,34 @@ impl Kernel {
         Ok(id)
     }
 
+    /// ContinuousUpdate: applies changed inputs to a running or buffered command. Inputs
+    /// that are refused end the command in Error (its FB shows the reason) and a moving axis
+    /// brakes as MC_Halt would. A command that no longer runs is left alone.
+    pub fn update(&mut self, id: CommandId, request: MotionRequest) {
+        let Self { axes, registry } = self;
+        let Some(runtime) = axes.iter_mut().find(|runtime| {
+            runtime
+                .running
+                .is_some_and(|running| running.id == Some(id))
+                || runtime.buffered.is_some_and(|(buffered, _)| buffered == id)
+        }) else {
+            return;
+        };
+        let accepted = Self::check_accepts_motion(runtime, request.fb_name())
+            .and_then(|()| validate_request(runtime.config, request));
+        match accepted {
+            Ok(()) => runtime.update(id, request, registry),
+            Err(error) => {
+                if runtime.buffered.is_some_and(|(buffered, _)| buffered == id) {
+                    runtime.buffered = None;
+                    registry.set(id, CommandStatus::Error(error));
+                } else {
+                    runtime.fail_running(error, registry);
+                }
+            }
+        }
+    }
+
     /// MC_Stop: aborts every command on the axis and brakes it with `deceleration` and `jerk`
     /// (0 = the axis's jerk limit); the axis stays in Stopping until the stop has reached rest
     /// and [`Kernel::release_stop`] was called (Note 6).
