@@ -183,9 +183,11 @@ fn set_override_applies_its_factors_while_enabled_and_keeps_them_after() {
     velocity.deceleration = 1000.0;
     velocity.direction = Direction::Positive;
     velocity.execute = true;
-    let mut over = SetOverride::default();
-    over.enable = true;
-    over.vel_factor = 0.25;
+    let mut over = SetOverride {
+        enable: true,
+        vel_factor: 0.25,
+        ..SetOverride::default()
+    };
     for _ in 0..1000 {
         velocity.call(&mut kernel, axis);
         over.call(&mut kernel, axis);
