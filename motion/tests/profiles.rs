@@ -218,3 +218,113 @@ proptest! {
         prop_assert_eq!(profile.sample(profile.duration_s() + 10.0).velocity, target);
     }
 }
+
+/// One aborting MC_MoveAbsolute of a random program: when it is issued and what it asks for.
+#[derive(Clone, Copy, Debug)]
+struct RandomMove {
+    after_cycles: usize,
+    target: f64,
+    velocity: f64,
+    acceleration: f64,
+    jerk: f64,
+}
+
+fn random_moves(s_curve: bool) -> impl Strategy<Value = Vec<RandomMove>> {
+    let jerk = if s_curve {
+        500.0f64..20_000.0
+    } else {
+        0.0f64..f64::MIN_POSITIVE
+    };
+    prop::collection::vec(
+        (
+            1usize..3000,
+            -500.0f64..500.0,
+            5.0f64..200.0,
+            50.0f64..2000.0,
+            jerk,
+        )
+            .prop_map(
+                |(after_cycles, target, velocity, acceleration, jerk)| RandomMove {
+                    after_cycles,
+                    target,
+                    velocity,
+                    acceleration,
+                    jerk: if jerk < 1.0 { 0.0 } else { jerk },
+                },
+            ),
+        1..8,
+    )
+}
+
+/// Runs moves that abort each other at random times; checks the limits every cycle and the
+/// exact end on the last target.
+fn run_random_moves(moves: &[RandomMove], axis_jerk: f64) -> Result<(), TestCaseError> {
+    let mut config = AxisConfig::linear(1000.0, 5000.0, 5000.0);
+    config.max_jerk = axis_jerk;
+    let (mut kernel, axis) = powered(config);
+    let highest_acceleration = moves.iter().map(|m| m.acceleration).fold(0.0, f64::max);
+    let highest_jerk = moves.iter().map(|m| m.jerk).fold(0.0, f64::max);
+    let mut previous_acceleration = 0.0;
+    let mut last = None;
+    for (index, one) in moves.iter().enumerate() {
+        let request = MotionRequest::Position {
+            target: PositionTarget::Absolute {
+                position: one.target,
+                direction: motion::axis::Direction::Shortest,
+            },
+            dynamics: Dynamics {
+                velocity: one.velocity,
+                acceleration: one.acceleration,
+                deceleration: one.acceleration,
+                jerk: one.jerk,
+            },
+        };
+        let id = kernel.issue(axis, request, BufferMode::Aborting).unwrap();
+        last = Some((id, one.target));
+        let cycles = if index + 1 == moves.len() {
+            400_000
+        } else {
+            one.after_cycles
+        };
+        for _ in 0..cycles {
+            kernel.advance(axis, DT_S).unwrap();
+            let now = snap(&kernel, axis);
+            prop_assert!(now.set_acceleration.abs() <= highest_acceleration * (1.0 + 1e-9));
+            if axis_jerk > 0.0 {
+                let jerk = (now.set_acceleration - previous_acceleration).abs() / DT_S;
+                prop_assert!(
+                    jerk <= highest_jerk * (1.0 + 1e-6),
+                    "jerk {} above {}",
+                    jerk,
+                    highest_jerk
+                );
+            }
+            previous_acceleration = now.set_acceleration;
+            if kernel.command_status(id) == Some(CommandStatus::Done) {
+                break;
+            }
+        }
+    }
+    let (id, target) = last.unwrap();
+    prop_assert_eq!(kernel.command_status(id), Some(CommandStatus::Done));
+    prop_assert_eq!(snap(&kernel, axis).set_position, target);
+    Ok(())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(60))]
+
+    /// Trapezoids that abort each other at any moment keep the acceleration limit and the
+    /// last one ends exactly on its target.
+    #[test]
+    fn aborting_trapezoids_end_exactly_on_the_last_target(moves in random_moves(false)) {
+        run_random_moves(&moves, 0.0)?;
+    }
+
+    /// S-curves that abort each other at any moment, even mid-ramp, keep the jerk and
+    /// acceleration limits and the last one ends exactly on its target.
+    #[test]
+    fn aborting_s_curves_keep_their_limits_and_end_exactly(moves in random_moves(true)) {
+        run_random_moves(&moves, 50_000.0)?;
+    }
+}
