@@ -16,11 +16,13 @@
 //! is computed in `advance` from the master's set values, so a runtime advances master axes
 //! before their slaves.
 
+mod axis_planning;
 mod axis_runtime;
 pub mod command;
 pub mod error;
 mod registry;
 pub mod snapshot;
+mod validation;
 
 pub use command::{BufferMode, CommandId, CommandStatus, Dynamics, MotionRequest, PositionTarget};
 pub use error::{AXIS_ERROR_SOFTWARE_LIMIT, MotionError};
@@ -29,6 +31,7 @@ pub use snapshot::AxisSnapshot;
 use crate::axis::{AxisConfig, AxisState, ConfigError, Overrides};
 use axis_runtime::{AxisRuntime, Source};
 use registry::Registry;
+use validation::{check_cycle, check_jerk, check_magnitude, check_position, validate_request};
 
 /// The index of an axis in its kernel, as an `AXIS_REF` resolves to.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -443,149 +446,4 @@ impl Kernel {
         }
         Ok(())
     }
-}
-
-fn check_cycle(dt_s: f64) -> Result<(), MotionError> {
-    if dt_s.is_finite() && dt_s > 0.0 {
-        Ok(())
-    } else {
-        Err(MotionError::InvalidParameter {
-            input: "dt_s",
-            value: dt_s,
-            reason: "the task interval is a positive number of seconds",
-        })
-    }
-}
-
-/// Checks a magnitude input against zero and the axis's limit.
-fn check_magnitude(
-    input: &'static str,
-    value: f64,
-    axis_max: f64,
-    zero_allowed: bool,
-) -> Result<(), MotionError> {
-    let low_ok = if zero_allowed {
-        value >= 0.0
-    } else {
-        value > 0.0
-    };
-    if !(value.is_finite() && low_ok) {
-        return Err(MotionError::InvalidParameter {
-            input,
-            value,
-            reason: if zero_allowed {
-                "it must be a number of 0 or more"
-            } else {
-                "it must be a number above 0"
-            },
-        });
-    }
-    if value > axis_max {
-        return Err(MotionError::InvalidParameter {
-            input,
-            value,
-            reason: "it exceeds the axis's configured maximum",
-        });
-    }
-    Ok(())
-}
-
-fn check_jerk(jerk: f64, axis_max: f64) -> Result<(), MotionError> {
-    let max = if axis_max > 0.0 {
-        axis_max
-    } else {
-        f64::INFINITY
-    };
-    check_magnitude("Jerk", jerk, max, true)
-}
-
-fn check_position(
-    config: AxisConfig,
-    input: &'static str,
-    position: f64,
-) -> Result<(), MotionError> {
-    if !position.is_finite() {
-        return Err(MotionError::InvalidParameter {
-            input,
-            value: position,
-            reason: "it must be a finite number",
-        });
-    }
-    if let Some(limits) = config.active_software_limits()
-        && !(limits.min..=limits.max).contains(&position)
-    {
-        return Err(MotionError::OutsideSoftwareLimits {
-            target: position,
-            min: limits.min,
-            max: limits.max,
-        });
-    }
-    Ok(())
-}
-
-fn validate_request(config: AxisConfig, request: MotionRequest) -> Result<(), MotionError> {
-    match request {
-        MotionRequest::Position { target, dynamics } => {
-            let (input, value) = match target {
-                PositionTarget::Absolute { position, .. } => ("Position", position),
-                PositionTarget::Relative { distance } | PositionTarget::Additive { distance } => {
-                    ("Distance", distance)
-                }
-            };
-            if !value.is_finite() {
-                return Err(MotionError::InvalidParameter {
-                    input,
-                    value,
-                    reason: "it must be a finite number",
-                });
-            }
-            check_magnitude("Velocity", dynamics.velocity, config.max_velocity, false)?;
-            check_magnitude(
-                "Acceleration",
-                dynamics.acceleration,
-                config.max_acceleration,
-                false,
-            )?;
-            check_magnitude(
-                "Deceleration",
-                dynamics.deceleration,
-                config.max_deceleration,
-                false,
-            )?;
-        }
-        MotionRequest::Velocity { dynamics, .. } => {
-            check_magnitude(
-                "Velocity",
-                dynamics.velocity.abs(),
-                config.max_velocity,
-                true,
-            )?;
-            check_magnitude(
-                "Acceleration",
-                dynamics.acceleration,
-                config.max_acceleration,
-                false,
-            )?;
-            check_magnitude(
-                "Deceleration",
-                dynamics.deceleration,
-                config.max_deceleration,
-                false,
-            )?;
-        }
-        MotionRequest::Halt { dynamics } => {
-            check_magnitude(
-                "Deceleration",
-                dynamics.deceleration,
-                config.max_deceleration,
-                false,
-            )?;
-        }
-    }
-    let dynamics = match request {
-        MotionRequest::Position { dynamics, .. }
-        | MotionRequest::Velocity { dynamics, .. }
-        | MotionRequest::Halt { dynamics } => dynamics,
-    };
-    check_jerk(dynamics.jerk, config.max_jerk)
 }
