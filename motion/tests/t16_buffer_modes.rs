@@ -197,3 +197,32 @@ fn blending_into_a_short_move_passes_the_target_only_as_fast_as_the_move_can_sto
     let (at_done, _) = blend(100.0, 100.0, 1012.5, BufferMode::BlendingHigh);
     assert!((at_done - 50.0).abs() <= 0.1 + 1e-9, "{at_done}");
 }
+
+#[test]
+fn a_blending_move_after_move_velocity_takes_over_at_its_velocity_without_stopping() {
+    let (mut kernel, axis) = powered(roomy_linear());
+    let mut velocity = motion::fb::MoveVelocity::default();
+    velocity.velocity = 80.0;
+    velocity.acceleration = 100.0;
+    velocity.deceleration = 100.0;
+    velocity.direction = motion::axis::Direction::Positive;
+    velocity.execute = true;
+    let mut fb2 = move_to(1000.0, 100.0, BufferMode::BlendingLow);
+    fb2.execute = true;
+    velocity.call(&mut kernel, axis);
+    fb2.call(&mut kernel, axis);
+    let mut at_takeover = None;
+    for _ in 0..20_000 {
+        velocity.call(&mut kernel, axis);
+        fb2.call(&mut kernel, axis);
+        if fb2.active && at_takeover.is_none() {
+            at_takeover = Some(snap(&kernel, axis).set_velocity);
+        }
+        kernel.advance(axis, DT_S).unwrap();
+    }
+    fb2.call(&mut kernel, axis);
+    assert!(fb2.done);
+    // As BlendingPrevious: the move starts from the velocity MC_MoveVelocity reached.
+    assert_eq!(at_takeover, Some(80.0));
+    assert_eq!(snap(&kernel, axis).set_position, 1000.0);
+}

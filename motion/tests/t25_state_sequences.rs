@@ -214,3 +214,26 @@ fn switching_the_power_off_aborts_the_running_command() {
     expect_state(&kernel, axis, AxisState::PowerOff);
     assert_eq!(snap(&kernel, axis).set_velocity, 0.0);
 }
+
+#[test]
+fn a_reset_waiting_for_the_error_ramp_finishes_when_the_power_goes_off() {
+    let mut kernel = Kernel::new();
+    let axis = kernel.add_axis(roomy_linear()).unwrap();
+    kernel.power(axis, true).unwrap();
+    let mut velocity = MoveVelocity::default();
+    velocity.velocity = 1000.0;
+    velocity.acceleration = 10_000.0;
+    velocity.deceleration = 10_000.0;
+    velocity.direction = Direction::Positive;
+    velocity.execute = true;
+    cycles(&mut kernel, axis, 500, |kernel| velocity.call(kernel, axis));
+    kernel.inject_error(axis, 3).unwrap();
+    let mut reset = Reset::default();
+    reset.execute = true;
+    reset.call(&mut kernel, axis);
+    assert!(reset.busy);
+    kernel.power(axis, false).unwrap();
+    reset.call(&mut kernel, axis);
+    assert!(reset.done && !reset.busy);
+    expect_state(&kernel, axis, AxisState::PowerOff);
+}

@@ -146,6 +146,12 @@ impl Kernel {
             if runtime.state != AxisState::ErrorStop {
                 runtime.state = AxisState::PowerOff;
             }
+            // A reset that waited for the error stop ramp finds the axis at rest now, and with
+            // the power off it leads to Disabled (Note 3).
+            if let Some(reset_id) = runtime.pending_reset.take() {
+                runtime.reset();
+                registry.set(reset_id, CommandStatus::Done);
+            }
         }
         Ok(runtime.powered)
     }
