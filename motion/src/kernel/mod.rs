@@ -12,9 +12,21 @@
 //! cycle. Time only enters through `dt_s`; the kernel reads no clock, and `advance` does not
 //! allocate.
 //!
-//! A slave in synchronised motion is one more kind of motion source of an axis: its set point
-//! is computed in `advance` from the master's set values, so a runtime advances master axes
-//! before their slaves.
+//! # Motion sources, and where synchronised motion plugs in
+//!
+//! What drives an axis is one value of the private `Source` enum held in the axis's running
+//! motion (position move, velocity, MC_Halt, MC_Stop, error stop ramp, homing). A coupled slave
+//! (MC_CamIn, MC_GearIn, MC_GearInPos) is one more variant, issued through [`Kernel::issue`] as
+//! one more [`MotionRequest`] variant, so buffer modes, command statuses, MC_Stop, ErrorStop and
+//! the FB output rules apply to it unchanged; `install` puts the axis in SynchronizedMotion.
+//! Its set point is computed in `advance` from the master's set values: the kernel advances
+//! axes in the order they were added, so a master added before its slave is read with this
+//! cycle's values (a runtime should add masters first; otherwise the slave sees the previous
+//! cycle's master). The cam should be referenced by an index into cams the kernel owns (as
+//! `Box<dyn CamCurve>` registered when the image loads), so that the running motion stays a
+//! plain copyable value and `advance` does not allocate. MC_CamOut and MC_GearOut replace the
+//! source with a velocity source at the slave's current velocity, already reached, which is
+//! ContinuousMotion.
 
 mod axis_planning;
 mod axis_runtime;
