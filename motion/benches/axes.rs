@@ -46,6 +46,27 @@ fn advance_all(c: &mut Criterion) {
     c.bench_function("advance_all, 8 axes in a move", |b| {
         b.iter(|| kernel.advance_all(black_box(0.001)).unwrap());
     });
+    let mut cruising = kernel_with_moving_axes();
+    for index in 0..AXES {
+        let request = MotionRequest::Velocity {
+            direction: motion::axis::Direction::Positive,
+            dynamics: Dynamics {
+                velocity: 500.0,
+                acceleration: 10_000.0,
+                deceleration: 10_000.0,
+                jerk: 0.0,
+            },
+            jog: false,
+        };
+        let axis = motion::kernel::AxisId(index);
+        cruising.issue(axis, request, BufferMode::Aborting).unwrap();
+    }
+    for _ in 0..1000 {
+        cruising.advance_all(0.001).unwrap();
+    }
+    c.bench_function("advance_all, 8 axes at constant velocity", |b| {
+        b.iter(|| cruising.advance_all(black_box(0.001)).unwrap());
+    });
     let mut planning = kernel_with_moving_axes();
     let s_curve_axis = motion::kernel::AxisId(AXES - 1);
     let mut distance = 100.0;

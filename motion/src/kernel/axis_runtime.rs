@@ -179,7 +179,17 @@ impl AxisRuntime {
         if let Some(running) = &self.running
             && running.elapsed_s >= running.profile.duration_s() - dt_s * 1e-6
         {
-            self.finish(registry);
+            // A motion that has settled (cruising at its velocity, held by MC_Stop or by a
+            // velocity override of 0) has nothing left to finish until something changes.
+            let settled = match running.source {
+                Source::Velocity { .. } => running.reached && self.buffered.is_none(),
+                Source::Stop { held } => held && running.reached,
+                Source::Position { .. } => running.paused,
+                _ => false,
+            };
+            if !settled {
+                self.finish(registry);
+            }
         }
         self.check_software_limits(registry);
     }
