@@ -13,6 +13,12 @@
 //! axis cannot stop before the target, or moves away from it, it first brakes to rest and then
 //! travels back. Sampling at or after the end returns the exact target, so a move ends exactly
 //! where it was commanded to, without drift.
+//!
+//! For the blending buffer modes a move may instead pass its target with an end speed (and
+//! zero acceleration); the last ramp then ends at that speed rather than at rest.
+//!
+//! A profile is replanned from the axis's current set values (never from the old plan) when an
+//! override or a ContinuousUpdate input changes, so a replan cannot make the set values jump.
 
 /// The dynamic limits a profile is planned with, all magnitudes in user units per s, s², s³.
 #[derive(Clone, Copy, Debug, PartialEq)]
