@@ -6,7 +6,13 @@ use crate::kernel::{
     AxisId, BufferMode, Dynamics, Kernel, MotionError, MotionRequest, PositionTarget,
 };
 
-/// MC_MoveAbsolute: move to an absolute position and come to rest there. On a modulo axis `Direction` decides which way round; on a linear axis it is ignored and a target outside the software limits is refused.
+/// MC_MoveAbsolute: move to an absolute position and come to rest there.
+///
+/// On a modulo axis the target is wrapped into the period and `Direction` decides which way
+/// round: positive, negative, shortest, current (the way the axis moves; shortest at rest) or
+/// fastest (the way that arrives sooner given the current velocity, braking included). A target
+/// equal to the current position does not move, whatever the direction. On a linear axis
+/// `Direction` is ignored and a target outside the software limits is refused.
 #[derive(Clone, Debug, Default)]
 pub struct MoveAbsolute {
     /// `Execute`: a rising edge starts the command with the inputs of that call.
