@@ -5,7 +5,10 @@
 //! The runtime drives it from the task that calls the motion function blocks, and the cam editor
 //! uses it to plot position, velocity, acceleration and jerk.
 
+pub mod axis;
 pub mod cam;
 pub mod curve;
+pub mod fb;
+pub mod kernel;
 pub mod table;
 pub mod tappet;
