@@ -17,6 +17,7 @@ mod declaration_parts;
 pub mod diagnostic;
 pub mod elementary;
 pub mod ide;
+pub mod library;
 pub mod literal;
 pub mod sema;
 pub mod source_project;

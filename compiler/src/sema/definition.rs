@@ -32,6 +32,8 @@ pub enum DefinitionKind {
     Standard,
     /// A motion axis of the device tree.
     Axis,
+    /// A cam table of the application.
+    CamTable,
 }
 
 /// A declaration a name refers to.

@@ -26,8 +26,10 @@ pub(crate) enum GlobalSymbol<'p> {
     DataType(&'p DataType),
     /// A value of the enumeration.
     EnumValue(&'p DataType),
-    /// A motion axis of the device tree.
+    /// A motion axis of the device tree: a global `AXIS_REF`.
     Axis,
+    /// A cam table of the application: a global `MC_CAM_REF`.
+    Cam,
 }
 
 /// Names visible everywhere in a project: POUs, global variable lists and their variables,
@@ -75,10 +77,29 @@ impl<'p> Globals<'p> {
                         .insert(data_type.name.to_lowercase(), data_type);
                     globals.add(&data_type.name, GlobalSymbol::DataType(data_type));
                 }
-                Object::CamTable(_) | Object::Trace(_) | Object::WatchList(_) => {}
+                Object::CamTable(cam) => globals.add(&cam.name, GlobalSymbol::Cam),
+                Object::Trace(_) | Object::WatchList(_) => {}
             }
         }
-        for object in &objects {
+        // The libraries' POUs and types come after the project's own, which win a clash.
+        let libraries = crate::library::objects();
+        for object in &libraries {
+            match object {
+                Object::Pou(pou) => {
+                    globals.pous.entry(pou.name.to_lowercase()).or_insert(pou);
+                    globals.add(&pou.name, GlobalSymbol::Pou(pou));
+                }
+                Object::DataType(data_type) => {
+                    globals
+                        .data_types
+                        .entry(data_type.name.to_lowercase())
+                        .or_insert(data_type);
+                    globals.add(&data_type.name, GlobalSymbol::DataType(data_type));
+                }
+                _ => {}
+            }
+        }
+        for object in objects.iter().chain(&libraries) {
             if let Object::DataType(data_type) = object
                 && let TypeDefinition::Enum { values, .. } = &data_type.definition
             {

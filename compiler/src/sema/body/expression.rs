@@ -2,6 +2,7 @@
 
 use super::resolution::variable_detail;
 use super::*;
+use crate::library::{AXIS_REF, CAM_REF};
 
 impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
     /// The type of an expression, reporting what is wrong inside it, and noting it when the
@@ -207,7 +208,8 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
             Some(GlobalSymbol::Gvl(gvl)) => Type::Namespace(gvl.name.clone()),
             Some(GlobalSymbol::DataType(data_type)) => Type::EnumNamespace(data_type.name.clone()),
             Some(GlobalSymbol::EnumValue(data_type)) => Type::Named(data_type.name.clone()),
-            Some(GlobalSymbol::Axis) => Type::Error,
+            Some(GlobalSymbol::Axis) => Type::Named(AXIS_REF.to_owned()),
+            Some(GlobalSymbol::Cam) => Type::Named(CAM_REF.to_owned()),
             None if stdlib::is_function(name) || stdlib::is_function_block(name) => Type::Void,
             None => {
                 let mut diagnostic = Diagnostic::new(

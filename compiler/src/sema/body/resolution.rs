@@ -174,7 +174,14 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                 None,
                 None,
                 name,
-                format!("axis {name}"),
+                format!("axis {name} : AXIS_REF"),
+            ),
+            GlobalSymbol::Cam => simple(
+                DefinitionKind::CamTable,
+                None,
+                None,
+                name,
+                format!("cam table {name} : MC_CAM_REF"),
             ),
         })
     }
