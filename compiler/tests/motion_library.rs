@@ -123,6 +123,13 @@ iValue := Master;",
 #[test]
 fn a_project_may_declare_a_name_of_the_motion_library_itself() {
     let mut project = example_with(&[("fbOwn", "MC_Power")], "fbOwn(bOn := TRUE);");
+    // The example's own motion program calls the library's MC_Power.
+    project.application.children.retain(
+        |node| !matches!(node, Node::Object(Object::Pou(pou)) if pou.name == "MotionControl"),
+    );
+    project.tasks.iter_mut().for_each(|task| {
+        task.programs.retain(|program| program != "MotionControl");
+    });
     project
         .application
         .children

@@ -410,4 +410,10 @@ pub enum Instr {
         /// The LINT written.
         dst: Operand,
     },
+    /// Runs the runtime's native function block `block` (`MC_MoveAbsolute`) on the current
+    /// instance: the whole body of a library function block (`docs/motion.md` §3).
+    Native {
+        /// The block's name.
+        block: String,
+    },
 }

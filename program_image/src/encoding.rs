@@ -89,7 +89,7 @@ pub enum ImageError {
 }
 
 /// Section ids (§3), in the order they appear.
-const SECTIONS: [(u16, &str, bool); 11] = [
+const SECTIONS: [(u16, &str, bool); 12] = [
     (1, "types", true),
     (2, "layout", true),
     (3, "initial", true),
@@ -102,6 +102,8 @@ const SECTIONS: [(u16, &str, bool); 11] = [
     (10, "info", false),
     // Critical: a reader that skipped it would serve the wrong addresses.
     (11, "modbus_map", true),
+    // Critical: without it the motion function blocks would run without their axes.
+    (12, "motion", true),
 ];
 
 const HEADER_BYTES: usize = 16;
@@ -117,7 +119,7 @@ fn payload<T: Serialize>(value: &T) -> Vec<u8> {
 impl ProgramImage {
     /// The image as bytes: header, sections, trailer.
     pub fn encode(&self) -> Vec<u8> {
-        let sections: [Vec<u8>; 11] = [
+        let sections: [Vec<u8>; 12] = [
             payload(&self.types),
             payload(&self.layout),
             payload(&self.initial),
@@ -129,13 +131,19 @@ impl ProgramImage {
             payload(&self.sources),
             payload(&self.info),
             self.modbus_map.as_ref().map(payload).unwrap_or_default(),
+            self.motion.as_ref().map(payload).unwrap_or_default(),
         ];
         let mut bytes = Vec::new();
         bytes.extend_from_slice(MAGIC);
         bytes.extend_from_slice(&FORMAT_VERSION.to_le_bytes());
         bytes.extend_from_slice(&0u16.to_le_bytes());
-        // The Modbus map section is written only when the project has its own map.
-        let present = |id: u16| id != 11 || self.modbus_map.is_some();
+        // The Modbus map section is written only when the project has its own map, the motion
+        // section only when it has axes or cams.
+        let present = |id: u16| match id {
+            11 => self.modbus_map.is_some(),
+            12 => self.motion.is_some(),
+            _ => true,
+        };
         let count = SECTIONS.iter().filter(|(id, _, _)| present(*id)).count();
         bytes.extend_from_slice(&(count as u32).to_le_bytes());
         for ((id, _, critical), body) in SECTIONS.iter().zip(&sections) {
@@ -177,7 +185,7 @@ impl ProgramImage {
             return Err(ImageError::HashMismatch);
         }
         let count = u32::from_le_bytes([bytes[12], bytes[13], bytes[14], bytes[15]]);
-        let mut found: [Option<&[u8]>; 11] = [None; 11];
+        let mut found: [Option<&[u8]>; 12] = [None; 12];
         let mut rest = &content[HEADER_BYTES..];
         let mut last_id = 0u16;
         for _ in 0..count {
@@ -227,6 +235,10 @@ impl ProgramImage {
                 Some(body) => Some(decode_payload(SECTIONS[10].1, body)?),
                 None => None,
             },
+            motion: match found[11] {
+                Some(body) => Some(decode_payload(SECTIONS[11].1, body)?),
+                None => None,
+            },
         };
         image.verify()?;
         Ok(image)
@@ -249,7 +261,7 @@ pub fn identity_of(bytes: &[u8]) -> ImageHash {
 }
 
 fn section<T: DeserializeOwned>(
-    found: &[Option<&[u8]>; 11],
+    found: &[Option<&[u8]>; 12],
     index: usize,
 ) -> Result<T, ImageError> {
     let name = SECTIONS[index].1;
@@ -258,7 +270,7 @@ fn section<T: DeserializeOwned>(
 }
 
 fn optional_section<T: DeserializeOwned + Default>(
-    found: &[Option<&[u8]>; 11],
+    found: &[Option<&[u8]>; 12],
     index: usize,
 ) -> Result<T, ImageError> {
     match found[index] {

@@ -31,6 +31,8 @@ pub struct ProgramImage {
     /// The project's own Modbus server map; `None` for the runtime's default map
     /// (`docs/modbus-map.md`).
     pub modbus_map: Option<Vec<ModbusRange>>,
+    /// The project's axes and cam tables (`docs/motion.md`); `None` when it has neither.
+    pub motion: Option<crate::motion::MotionSection>,
 }
 
 /// A Modbus table.

@@ -14,6 +14,7 @@ pub mod code;
 mod elementary;
 mod encoding;
 mod image;
+pub mod motion;
 pub mod std_blocks;
 mod types;
 mod verify;

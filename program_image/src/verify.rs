@@ -13,6 +13,58 @@ use crate::{ProgramImage, std_blocks};
 pub const MAX_REGION_BYTES: u32 = 64 * 1024 * 1024;
 
 impl ProgramImage {
+    /// Axes name existing tasks, and axes and cams have their references inside the data
+    /// region with finite parameters.
+    fn verify_motion(&self) -> Result<(), ImageError> {
+        let Some(motion) = &self.motion else {
+            return Ok(());
+        };
+        for (index, axis) in motion.axes.iter().enumerate() {
+            let name = &axis.name;
+            if axis.task as usize >= self.tasks.len() {
+                return invalid(format!(
+                    "motion.axes[{index}] ('{name}') names task {}, but the image has {} tasks",
+                    axis.task,
+                    self.tasks.len()
+                ));
+            }
+            if axis.offset >= self.layout.data_size {
+                return invalid(format!(
+                    "motion.axes[{index}] ('{name}') is at offset {}, outside the data region",
+                    axis.offset
+                ));
+            }
+            let limits = axis
+                .software_limits
+                .map_or([0.0; 2], |(low, high)| [low, high]);
+            let numbers = [
+                axis.modulo_period.unwrap_or(1.0),
+                axis.max_velocity,
+                axis.max_acceleration,
+                axis.max_deceleration,
+                axis.max_jerk,
+            ];
+            if numbers
+                .iter()
+                .chain(&limits)
+                .any(|value| !value.is_finite())
+            {
+                return invalid(format!(
+                    "motion.axes[{index}] ('{name}') has a parameter that is not a finite number"
+                ));
+            }
+        }
+        for (index, cam) in motion.cams.iter().enumerate() {
+            if cam.offset >= self.layout.data_size {
+                return invalid(format!(
+                    "motion.cams[{index}] ('{}') is at offset {}, outside the data region",
+                    cam.name, cam.offset
+                ));
+            }
+        }
+        Ok(())
+    }
+
     /// Checks that every index, offset and size refers to something that exists.
     pub fn verify(&self) -> Result<(), ImageError> {
         let layout = &self.layout;
@@ -41,6 +93,7 @@ impl ProgramImage {
         }
         self.verify_types()?;
         self.verify_initial()?;
+        self.verify_motion()?;
         for (index, symbol) in self.symbols.iter().enumerate() {
             let Some(ty) = self.types.get(symbol.ty as usize) else {
                 return invalid(format!("symbol {} ('{}') has no type", index, symbol.path));
@@ -445,6 +498,8 @@ impl ProgramImage {
                     }
                 }
                 Instr::Now { dst } => operand(*dst, 8, word)?,
+                // The runtime resolves the block's name and its members at load.
+                Instr::Native { .. } => {}
                 Instr::ToText {
                     from,
                     wide,

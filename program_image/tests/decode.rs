@@ -197,6 +197,7 @@ fn small_image() -> ProgramImage {
             byte_offset: 0,
             words_per_value: 1,
         }]),
+        motion: None,
     }
 }
 

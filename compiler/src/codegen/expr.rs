@@ -341,6 +341,10 @@ impl BodyGen<'_, '_, '_> {
                     Type::Named(pou.name.clone()),
                 )
             }
+            Some(GlobalSymbol::Axis | GlobalSymbol::Cam) => self
+                .build
+                .device(name)
+                .ok_or_else(|| format!("the axis or cam '{name}' has no storage")),
             _ => Err(format!("'{name}' is not a variable")),
         }
     }

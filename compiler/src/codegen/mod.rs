@@ -18,6 +18,7 @@ mod expr;
 mod init;
 mod interface;
 mod layout;
+mod motion;
 mod program;
 mod property;
 mod sfc;

@@ -38,6 +38,8 @@ pub(crate) struct Build<'g, 'p> {
     gvls: HashMap<String, &'p GlobalVarList>,
     programs: HashMap<String, u32>,
     blocks: Vec<&'p Pou>,
+    /// The `AXIS_REF` and `MC_CAM_REF` globals of the axes and cams, by lower-case name.
+    devices: HashMap<String, Typed>,
 }
 
 impl<'g, 'p> Build<'g, 'p> {
@@ -51,6 +53,7 @@ impl<'g, 'p> Build<'g, 'p> {
             gvls: HashMap::new(),
             programs: HashMap::new(),
             blocks: Vec::new(),
+            devices: HashMap::new(),
         }
     }
 
@@ -86,6 +89,11 @@ impl<'g, 'p> Build<'g, 'p> {
     /// The place of a global variable.
     pub(crate) fn global(&self, var: &Variable) -> Option<Typed> {
         self.globals_by_var.get(&std::ptr::from_ref(var)).cloned()
+    }
+
+    /// The global of the axis or cam table `name`.
+    pub(crate) fn device(&self, name: &str) -> Option<Typed> {
+        self.devices.get(&name.to_lowercase()).cloned()
     }
 
     /// The variable `name` of the global variable list `gvl`.
@@ -262,6 +270,8 @@ struct Unit<'p> {
     member: Option<String>,
     kind: ImageKind,
     target: TextTarget,
+    /// A library function block the runtime runs natively (`docs/motion.md` §3).
+    native: bool,
 }
 
 /// The data region being laid out.
@@ -319,6 +329,23 @@ pub(crate) fn build_image(project: &Project, origin: BodyOrigin<'_>) -> Gen<Prog
                 .insert(std::ptr::from_ref(var), Typed { place, ty, lay });
         }
     }
+
+    // The axes' and cams' globals, and the motion section.
+    let devices = {
+        let Data {
+            size,
+            runs,
+            symbols,
+            ..
+        } = &mut data;
+        let mut allocate = |length: u32, align: u32| {
+            let at = size.next_multiple_of(align.max(1));
+            *size = at + length;
+            at
+        };
+        super::motion::device_globals(project, &mut build.layouts, &mut allocate, runs, symbols)?
+    };
+    build.devices = devices.places.into_iter().collect();
 
     // Static variables (VAR_STAT) of every POU and method, one copy shared by all calls.
     let objects = project.application.objects();
@@ -400,6 +427,7 @@ pub(crate) fn build_image(project: &Project, origin: BodyOrigin<'_>) -> Gen<Prog
             member: None,
             kind,
             target: TextTarget::Pou(pou.name.clone()),
+            native: false,
         });
         for method in &pou.methods {
             units.push(Unit {
@@ -410,6 +438,7 @@ pub(crate) fn build_image(project: &Project, origin: BodyOrigin<'_>) -> Gen<Prog
                     pou: pou.name.clone(),
                     method: method.name.clone(),
                 },
+                native: false,
             });
         }
         for property in &pou.properties {
@@ -427,6 +456,7 @@ pub(crate) fn build_image(project: &Project, origin: BodyOrigin<'_>) -> Gen<Prog
                             property: property.name.clone(),
                             get,
                         },
+                        native: false,
                     });
                 }
             }
@@ -440,6 +470,28 @@ pub(crate) fn build_image(project: &Project, origin: BodyOrigin<'_>) -> Gen<Prog
                     pou: pou.name.clone(),
                     action: action.name.clone(),
                 },
+                native: false,
+            });
+        }
+    }
+    // The library's function blocks the project uses and does not declare itself: their
+    // bodies are one native instruction.
+    let used = super::motion::used_library_blocks(project);
+    for object in crate::library::objects() {
+        let Object::Pou(pou) = object else { continue };
+        let declared = units
+            .iter()
+            .any(|unit| unit.member.is_none() && unit.pou.name.eq_ignore_ascii_case(&pou.name));
+        if pou.kind == PouKind::FunctionBlock
+            && !declared
+            && used.contains(&pou.name.to_lowercase())
+        {
+            units.push(Unit {
+                pou,
+                member: None,
+                kind: ImageKind::FunctionBlock,
+                target: TextTarget::Pou(pou.name.clone()),
+                native: true,
             });
         }
     }
@@ -574,6 +626,7 @@ pub(crate) fn build_image(project: &Project, origin: BodyOrigin<'_>) -> Gen<Prog
             compiler: format!("rivet {}", env!("CARGO_PKG_VERSION")),
         },
         modbus_map,
+        motion: devices.section,
     };
     image
         .verify()
@@ -855,6 +908,20 @@ fn compile_unit<'g, 'p>(
         .frame_init(&frame)
         .map_err(|e| format!("{name}: {e}"))?;
     let instance_size = instance.as_ref().map_or(0, |i| i.size);
+    if unit.native {
+        return Ok(ImagePou {
+            name: name.clone(),
+            kind: unit.kind,
+            frame_size: frame.size,
+            frame_init,
+            instance_size,
+            code: vec![
+                program_image::Instr::Native { block: name },
+                program_image::Instr::Return,
+            ],
+            lines: Vec::new(),
+        });
+    }
     let mut image_pou = ImagePou {
         name: name.clone(),
         kind: unit.kind,

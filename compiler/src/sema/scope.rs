@@ -58,11 +58,20 @@ impl<'p> Globals<'p> {
         // Variables first: a variable wins over an enumeration value of the same name, as an
         // unqualified value is the last resort in CODESYS too.
         for object in &objects {
-            if let Object::Gvl(gvl) = object {
-                for variable in &gvl.variables {
-                    globals.add(&variable.name, GlobalSymbol::Var(variable));
+            match object {
+                Object::Gvl(gvl) => {
+                    for variable in &gvl.variables {
+                        globals.add(&variable.name, GlobalSymbol::Var(variable));
+                    }
                 }
+                // A cam table is a global MC_CAM_REF, so it is a variable too.
+                Object::CamTable(cam) => globals.add(&cam.name, GlobalSymbol::Cam),
+                _ => {}
             }
+        }
+        // An axis is a global AXIS_REF.
+        for axis in &project.axes {
+            globals.add(&axis.name, GlobalSymbol::Axis);
         }
         for object in &objects {
             match object {
@@ -77,8 +86,7 @@ impl<'p> Globals<'p> {
                         .insert(data_type.name.to_lowercase(), data_type);
                     globals.add(&data_type.name, GlobalSymbol::DataType(data_type));
                 }
-                Object::CamTable(cam) => globals.add(&cam.name, GlobalSymbol::Cam),
-                Object::Trace(_) | Object::WatchList(_) => {}
+                Object::CamTable(_) | Object::Trace(_) | Object::WatchList(_) => {}
             }
         }
         // The libraries' POUs and types come after the project's own, which win a clash.
@@ -107,9 +115,6 @@ impl<'p> Globals<'p> {
                     globals.add(&value.name, GlobalSymbol::EnumValue(data_type));
                 }
             }
-        }
-        for axis in &project.axes {
-            globals.add(&axis.name, GlobalSymbol::Axis);
         }
         globals
     }

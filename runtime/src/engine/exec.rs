@@ -61,6 +61,8 @@ pub(crate) struct Exec<'a> {
     pub(crate) fault_at: Option<(usize, usize)>,
     /// [`stack_position`] when the cycle started.
     native_base: usize,
+    /// The motion kernel and the state of the native motion blocks.
+    pub(crate) motion: &'a mut super::native::MotionState,
 }
 
 impl<'a> Exec<'a> {
@@ -69,10 +71,10 @@ impl<'a> Exec<'a> {
         mem: &'a mut [u8],
         regions: &'a Regions,
         code: &'a Compiled,
-        stack_start: usize,
-        stack_end: usize,
+        (stack_start, stack_end): (usize, usize),
         now_ns: i64,
         deadline: Option<(Instant, u64)>,
+        motion: &'a mut super::native::MotionState,
     ) -> Self {
         Self {
             mem,
@@ -87,6 +89,7 @@ impl<'a> Exec<'a> {
             depth: 0,
             fault_at: None,
             native_base: stack_position(),
+            motion,
         }
     }
 

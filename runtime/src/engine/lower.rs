@@ -60,7 +60,11 @@ impl Compiled {
         for pou in &image.pous {
             let mut ops = Vec::with_capacity(pou.code.len());
             for (index, instr) in pou.code.iter().enumerate() {
-                ops.push(lower(instr, regions, &sizes).map_err(|message| LowerError {
+                let op = match instr {
+                    Instr::Native { block } => super::native::lower(block, &pou.name, image),
+                    other => lower(other, regions, &sizes),
+                };
+                ops.push(op.map_err(|message| LowerError {
                     pou: pou.name.clone(),
                     index,
                     message,
@@ -420,6 +424,11 @@ fn lower(instr: &Instr, regions: &Regions, sizes: &[usize]) -> Result<Op, String
                 x.set::<u64>(dst, pointer.wrapping_add(linear.wrapping_mul(stride)))?;
                 Ok(Flow::Next)
             })
+        }
+        Instr::Native { block } => {
+            return Err(format!(
+                "the native block '{block}' needs its function block's instance type"
+            ));
         }
         Instr::Now { dst } => {
             let dst = a(dst);

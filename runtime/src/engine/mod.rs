@@ -10,6 +10,7 @@ mod exec;
 mod fault;
 mod lower;
 mod memory;
+mod native;
 mod scalar;
 mod strings;
 
@@ -20,6 +21,7 @@ use program_image::{InitRun, ProgramImage, Region};
 pub use carry::carry_retained;
 pub use fault::{FaultKind, FaultRecord};
 pub use lower::LowerError;
+pub use native::MotionLoadError;
 
 use exec::Exec;
 use lower::Compiled;
@@ -42,6 +44,7 @@ pub struct Engine {
     regions: Regions,
     code: Compiled,
     memory: Vec<u8>,
+    motion: native::MotionState,
 }
 
 /// Why an image cannot be loaded.
@@ -53,6 +56,9 @@ pub enum LoadError {
     /// An instruction the engine cannot run.
     #[error(transparent)]
     Lower(#[from] LowerError),
+    /// An axis the motion kernel cannot run.
+    #[error(transparent)]
+    Motion(#[from] MotionLoadError),
 }
 
 impl Engine {
@@ -61,11 +67,13 @@ impl Engine {
         image.verify()?;
         let regions = Regions::of(&image, image.tasks.len());
         let code = Compiled::new(&image, &regions)?;
+        let motion = native::MotionState::new(&image)?;
         let mut engine = Self {
             memory: vec![0; regions.total],
             image,
             regions,
             code,
+            motion,
         };
         engine.reset(ResetKind::Origin);
         Ok(engine)
@@ -78,6 +86,12 @@ impl Engine {
 
     /// Re-initialises memory as `kind` says.
     pub fn reset(&mut self, kind: ResetKind) {
+        // The axes start again powered off at rest, and the motion blocks forget their
+        // commands, as their instances' memory is initialised again. The image was accepted
+        // with this motion section, so building its kernel again cannot fail.
+        if let Ok(motion) = native::MotionState::new(&self.image) {
+            self.motion = motion;
+        }
         let kept = self.kept_ranges(kind);
         let saved: Vec<(usize, Vec<u8>)> = kept
             .iter()
@@ -152,10 +166,10 @@ impl Engine {
             &mut self.memory,
             &self.regions,
             &self.code,
-            stack_start,
-            stack_end,
+            (stack_start, stack_end),
             now_ns,
             deadline,
+            &mut self.motion,
         );
         for call in &info.programs {
             let instance = self.regions.data + call.instance_offset as usize;
@@ -163,6 +177,12 @@ impl Engine {
                 let (pou, instruction) = exec.fault_at.unwrap_or((call.pou as usize, 0));
                 return Err(self.fault_record(task, kind, pou, instruction, cycle));
             }
+        }
+        let interval_ns = info.interval_ns;
+        let data_start = self.regions.data;
+        let data_end = data_start + self.image.layout.data_size as usize;
+        if let Some(data) = self.memory.get_mut(data_start..data_end) {
+            self.motion.after_cycle(task, now_ns, interval_ns, data);
         }
         Ok(())
     }

@@ -1,0 +1,255 @@
+//! The motion kernel driven from Structured Text through `rivet simulate`: the worked examples
+//! of the PLCopen motion digest (`../shared/reference/digests/plcopen-and-softmotion-cams.md`
+//! §3) on the example project's `MotionTask` (2 ms), with its axes and extra linear ones.
+
+#![allow(clippy::unwrap_used, clippy::expect_used)] // Test helpers may panic: a panic is a failed test.
+
+use std::fs;
+use std::process::Command;
+
+use serde_json::Value;
+
+/// A linear virtual axis in `MotionTask`, limits generous enough for the examples.
+fn linear_axis(name: &str) -> String {
+    format!(
+        r#"
+[[axis]]
+name = "{name}"
+kind = "virtual"
+task = "MotionTask"
+unit = "mm"
+software_limits = {{ enabled = false, min = 0.0, max = 0.0 }}
+limits = {{ velocity = 5000.0, acceleration = 20000.0, deceleration = 20000.0, jerk = 0.0 }}
+scaling = {{ numerator = 1.0, denominator = 1.0 }}
+"#
+    )
+}
+
+/// A copy of the example whose `MotionControl` program declares `variables` (name, type) and
+/// runs `body`, with `axes` (TOML) added to the device tree.
+fn project(axes: &[String], variables: &[(&str, &str)], body: &str) -> tempfile::TempDir {
+    let dir = tempfile::tempdir().unwrap();
+    assets::copy_example_project(dir.path()).unwrap();
+    let manifest = dir.path().join("rivet.toml");
+    let mut text = fs::read_to_string(&manifest).unwrap();
+    for axis in axes {
+        text.push_str(axis);
+    }
+    fs::write(&manifest, text).unwrap();
+    let mut declarations = String::from("kind = \"program\"\nbody = { language = \"st\" }\n");
+    for (name, ty) in variables {
+        declarations.push_str(&format!(
+            "\n[[variable]]\nname = \"{name}\"\nsection = \"VAR\"\ntype = \"{ty}\"\n"
+        ));
+    }
+    let application = dir.path().join("application");
+    fs::write(application.join("MotionControl.pou.toml"), declarations).unwrap();
+    fs::write(application.join("MotionControl.st"), body).unwrap();
+    dir
+}
+
+/// Runs `cycles` cycles of the fastest task and returns the watched values.
+fn simulate(
+    dir: &tempfile::TempDir,
+    cycles: u32,
+    watch: &[&str],
+) -> serde_json::Map<String, Value> {
+    let output = Command::new(env!("CARGO_BIN_EXE_rivet"))
+        .args(["simulate", dir.path().to_str().unwrap()])
+        .args(["--cycles", &cycles.to_string(), "--json", "--watch"])
+        .arg(watch.join(","))
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&output.stdout);
+    assert!(
+        output.status.success(),
+        "{stdout}{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    match serde_json::from_str(stdout.trim()).unwrap() {
+        Value::Object(map) => map,
+        other => panic!("not an object: {other}"),
+    }
+}
+
+fn number(values: &serde_json::Map<String, Value>, path: &str) -> f64 {
+    values[path]
+        .as_f64()
+        .unwrap_or_else(|| panic!("{path} is {:?}", values[path]))
+}
+
+fn boolean(values: &serde_json::Map<String, Value>, path: &str) -> bool {
+    match &values[path] {
+        Value::Bool(value) => *value,
+        Value::String(text) => text == "TRUE",
+        other => panic!("{path} is {other:?}"),
+    }
+}
+
+#[test]
+fn t13a_a_second_move_started_by_the_first_ones_done_ends_at_10000() {
+    let dir = project(
+        &[linear_axis("Feed")],
+        &[
+            ("fbPower", "MC_Power"),
+            ("fbFirst", "MC_MoveRelative"),
+            ("fbSecond", "MC_MoveRelative"),
+        ],
+        "fbPower(Axis := Feed, Enable := TRUE);
+fbFirst(Axis := Feed, Execute := fbPower.Status, Distance := 6000.0, Velocity := 2000.0,
+    Acceleration := 10000.0, Deceleration := 10000.0);
+fbSecond(Axis := Feed, Execute := fbFirst.Done, Distance := 4000.0, Velocity := 2000.0,
+    Acceleration := 10000.0, Deceleration := 10000.0);",
+    );
+    // 6000 at 2000/s takes 3.2 s, 4000 another 2.2 s: 3000 cycles of 2 ms are enough.
+    let values = simulate(
+        &dir,
+        3000,
+        &[
+            "Feed.fActPosition",
+            "MotionControl.fbSecond.Done",
+            "Feed.nAxisState",
+        ],
+    );
+    assert!(
+        (number(&values, "Feed.fActPosition") - 10000.0).abs() < 1e-6,
+        "{values:?}"
+    );
+    assert!(
+        boolean(&values, "MotionControl.fbSecond.Done"),
+        "{values:?}"
+    );
+    // SMC_AXIS_STATE.standstill.
+    assert_eq!(number(&values, "Feed.nAxisState"), 3.0);
+}
+
+#[test]
+fn t13b_move_relative_and_move_additive_aborting_at_3250() {
+    let dir = project(
+        &[linear_axis("Relative"), linear_axis("Additive")],
+        &[
+            ("fbPowerR", "MC_Power"),
+            ("fbPowerA", "MC_Power"),
+            ("fbFirstR", "MC_MoveRelative"),
+            ("fbFirstA", "MC_MoveRelative"),
+            ("fbSecondR", "MC_MoveRelative"),
+            ("fbSecondA", "MC_MoveAdditive"),
+            ("xTriggerR", "BOOL"),
+            ("xTriggerA", "BOOL"),
+            ("lrTriggerR", "LREAL"),
+        ],
+        "fbPowerR(Axis := Relative, Enable := TRUE);
+fbPowerA(Axis := Additive, Enable := TRUE);
+fbFirstR(Axis := Relative, Execute := fbPowerR.Status, Distance := 6000.0, Velocity := 1000.0,
+    Acceleration := 10000.0, Deceleration := 10000.0);
+fbFirstA(Axis := Additive, Execute := fbPowerA.Status, Distance := 6000.0, Velocity := 1000.0,
+    Acceleration := 10000.0, Deceleration := 10000.0);
+IF NOT xTriggerR AND Relative.fActPosition >= 3250.0 THEN
+    xTriggerR := TRUE;
+    lrTriggerR := Relative.fSetPosition;
+END_IF
+xTriggerA := xTriggerA OR Additive.fActPosition >= 3250.0;
+fbSecondR(Axis := Relative, Execute := xTriggerR, Distance := 4000.0, Velocity := 1000.0,
+    Acceleration := 10000.0, Deceleration := 10000.0);
+fbSecondA(Axis := Additive, Execute := xTriggerA, Distance := 4000.0, Velocity := 1000.0,
+    Acceleration := 10000.0, Deceleration := 10000.0);",
+    );
+    let values = simulate(
+        &dir,
+        6000,
+        &[
+            "Relative.fActPosition",
+            "Additive.fActPosition",
+            "MotionControl.lrTriggerR",
+            "MotionControl.fbFirstR.CommandAborted",
+            "MotionControl.fbFirstA.CommandAborted",
+        ],
+    );
+    let trigger = number(&values, "MotionControl.lrTriggerR");
+    // The trigger is the first 2 ms cycle at or past 3250 (1000 mm/s: 2 mm per cycle).
+    assert!((3250.0..3252.1).contains(&trigger), "{values:?}");
+    assert!((number(&values, "Relative.fActPosition") - (trigger + 4000.0)).abs() < 1e-6);
+    assert!((number(&values, "Additive.fActPosition") - 10000.0).abs() < 1e-6);
+}
+
+#[test]
+fn t14_a_stop_locks_the_axis_until_its_execute_falls() {
+    let dir = project(
+        &[linear_axis("Spindle")],
+        &[
+            ("fbPower", "MC_Power"),
+            ("fbVelocity", "MC_MoveVelocity"),
+            ("fbStop", "MC_Stop"),
+            ("fbAgain", "MC_MoveVelocity"),
+            ("iCycle", "INT"),
+        ],
+        "iCycle := iCycle + 1;
+fbPower(Axis := Spindle, Enable := TRUE);
+fbVelocity(Axis := Spindle, Execute := fbPower.Status, Velocity := 50.0, Acceleration := 10.0,
+    Deceleration := 10.0, Direction := MC_DIRECTION.positive);
+fbStop(Axis := Spindle, Execute := iCycle >= 3000, Deceleration := 10.0);
+fbAgain(Axis := Spindle, Execute := iCycle >= 3100, Velocity := 50.0, Acceleration := 10.0,
+    Deceleration := 10.0);",
+    );
+    // Cycle 3000 is 6 s in: the axis runs at 50 and needs 5 s to stop at 10 mm/s².
+    let values = simulate(
+        &dir,
+        6000,
+        &[
+            "Spindle.nAxisState",
+            "Spindle.fActVelocity",
+            "MotionControl.fbStop.Done",
+            "MotionControl.fbAgain.Error",
+            "MotionControl.fbAgain.ErrorID",
+            "MotionControl.fbVelocity.CommandAborted",
+        ],
+    );
+    // SMC_AXIS_STATE.stopping.
+    assert_eq!(number(&values, "Spindle.nAxisState"), 2.0, "{values:?}");
+    assert_eq!(number(&values, "Spindle.fActVelocity"), 0.0);
+    assert!(boolean(&values, "MotionControl.fbStop.Done"));
+    assert!(boolean(&values, "MotionControl.fbAgain.Error"));
+    assert_eq!(number(&values, "MotionControl.fbAgain.ErrorID"), 3.0);
+}
+
+#[test]
+fn a_modulo_axis_moves_the_way_the_direction_says() {
+    let dir = project(
+        &[],
+        &[
+            ("fbPower", "MC_Power"),
+            ("fbTo350", "MC_MoveAbsolute"),
+            ("fbPositive", "MC_MoveAbsolute"),
+            ("lrHighest", "LREAL"),
+        ],
+        "fbPower(Axis := Master, Enable := TRUE);
+fbTo350(Axis := Master, Execute := fbPower.Status, Position := 350.0, Velocity := 360.0,
+    Acceleration := 3600.0, Deceleration := 3600.0, Direction := MC_DIRECTION.positive);
+fbPositive(Axis := Master, Execute := fbTo350.Done, Position := 10.0, Velocity := 360.0,
+    Acceleration := 3600.0, Deceleration := 3600.0, Direction := MC_DIRECTION.positive);
+IF fbTo350.Done OR fbPositive.Busy THEN
+    lrHighest := MAX(lrHighest, Master.fSetPosition);
+END_IF",
+    );
+    let values = simulate(
+        &dir,
+        2000,
+        &[
+            "Master.fActPosition",
+            "MotionControl.fbPositive.Done",
+            "MotionControl.lrHighest",
+            "Master.fPositionPeriod",
+        ],
+    );
+    assert!(
+        (number(&values, "Master.fActPosition") - 10.0).abs() < 1e-6,
+        "{values:?}"
+    );
+    assert!(boolean(&values, "MotionControl.fbPositive.Done"));
+    // Positive from 350 to 10 passes 359.x and wraps, rather than going back through 180.
+    assert!(
+        number(&values, "MotionControl.lrHighest") > 359.0,
+        "{values:?}"
+    );
+    assert_eq!(number(&values, "Master.fPositionPeriod"), 360.0);
+}

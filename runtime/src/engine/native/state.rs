@@ -1,0 +1,258 @@
+//! What the engine keeps for motion between calls: the kernel with the image's axes, the
+//! `motion` function block of every native instance, and when each task last ran.
+
+use std::collections::HashMap;
+
+use motion::axis::{AxisConfig, SoftwareLimits};
+use motion::fb::{
+    Halt, Home, Jog, MoveAbsolute, MoveAdditive, MoveRelative, MoveVelocity, Power,
+    ReadActualPosition, ReadActualVelocity, ReadAxisError, ReadStatus, Reset, SetOverride,
+    SetPosition, Stop,
+};
+use motion::kernel::{AxisId, Kernel};
+use program_image::{ProgramImage, StructKind, TypeDef};
+
+/// One axis of the image in the kernel.
+#[derive(Clone, Copy, Debug)]
+struct AxisLink {
+    id: AxisId,
+    task: usize,
+    /// The data-region offset of its `AXIS_REF`.
+    offset: usize,
+}
+
+/// The offsets of the `AXIS_REF` members the runtime writes after each cycle.
+#[derive(Clone, Debug, Default)]
+struct AxisRefLayout {
+    state: Option<usize>,
+    regulator_on: Option<usize>,
+    error: Option<usize>,
+    error_id: Option<usize>,
+    is_homed: Option<usize>,
+    set_position: Option<usize>,
+    act_position: Option<usize>,
+    set_velocity: Option<usize>,
+    act_velocity: Option<usize>,
+    set_acceleration: Option<usize>,
+    act_acceleration: Option<usize>,
+    position_period: Option<usize>,
+}
+
+/// The motion state of a loaded image.
+pub(crate) struct MotionState {
+    kernel: Kernel,
+    axes: Vec<AxisLink>,
+    axis_ref: AxisRefLayout,
+    instances: HashMap<usize, Instance>,
+    last_cycle_ns: Vec<Option<i64>>,
+}
+
+/// Why an image's motion section cannot run.
+#[derive(Debug, thiserror::Error)]
+#[error("axis '{axis}': {message}")]
+pub struct MotionLoadError {
+    axis: String,
+    message: String,
+}
+
+impl MotionState {
+    /// The kernel of `image`'s axes, all powered off at position 0.
+    pub(crate) fn new(image: &ProgramImage) -> Result<Self, MotionLoadError> {
+        let mut kernel = Kernel::new();
+        let mut axes = Vec::new();
+        if let Some(section) = &image.motion {
+            for axis in &section.axes {
+                let config = AxisConfig {
+                    modulo_period: axis.modulo_period,
+                    software_limits: axis
+                        .software_limits
+                        .map(|(min, max)| SoftwareLimits { min, max }),
+                    max_velocity: axis.max_velocity,
+                    max_acceleration: axis.max_acceleration,
+                    max_deceleration: axis.max_deceleration,
+                    max_jerk: axis.max_jerk,
+                };
+                let id = kernel.add_axis(config).map_err(|error| MotionLoadError {
+                    axis: axis.name.clone(),
+                    message: error.to_string(),
+                })?;
+                axes.push(AxisLink {
+                    id,
+                    task: axis.task as usize,
+                    offset: axis.offset as usize,
+                });
+            }
+        }
+        Ok(Self {
+            kernel,
+            axes,
+            axis_ref: axis_ref_layout(image),
+            instances: HashMap::new(),
+            last_cycle_ns: vec![None; image.tasks.len()],
+        })
+    }
+
+    /// The kernel's axis for `nAxisId`.
+    pub(crate) fn axis(&self, id: usize) -> Option<AxisId> {
+        self.axes.get(id).map(|link| link.id)
+    }
+
+    /// The kernel and the function block kept for the instance at `instance` (an absolute
+    /// offset), made on first use.
+    pub(super) fn block<T: Kept>(&mut self, instance: usize) -> (&mut Kernel, &mut T) {
+        let slot = self
+            .instances
+            .entry(instance)
+            .or_insert_with(|| T::default().wrap());
+        if T::unwrap(slot).is_none() {
+            // Another block type at the same address: the image changed under the instance.
+            *slot = T::default().wrap();
+        }
+        let block = match T::unwrap(slot) {
+            Some(block) => block,
+            None => unreachable!("the slot was just filled with this block type"),
+        };
+        (&mut self.kernel, block)
+    }
+
+    /// After task `task`'s programs ran at `now_ns`: advances its axes by the time since its
+    /// previous cycle (`interval_ns` on the first) and writes their `AXIS_REF`s into `data`.
+    pub(crate) fn after_cycle(
+        &mut self,
+        task: usize,
+        now_ns: i64,
+        interval_ns: u64,
+        data: &mut [u8],
+    ) {
+        let Some(last) = self.last_cycle_ns.get_mut(task) else {
+            return;
+        };
+        let dt_ns = match *last {
+            Some(previous) if now_ns > previous => (now_ns - previous) as f64,
+            _ => interval_ns as f64,
+        };
+        *last = Some(now_ns);
+        let dt_s = dt_ns / 1e9;
+        for link in self.axes.iter().filter(|link| link.task == task) {
+            // An axis error is the axis's state (ErrorStop), shown in its AXIS_REF; it does not
+            // stop the task.
+            let _ = self.kernel.advance(link.id, dt_s);
+            if let Ok(snapshot) = self.kernel.snapshot(link.id) {
+                let layout = &self.axis_ref;
+                let base = link.offset;
+                let mut put = |at: Option<usize>, bytes: &[u8]| {
+                    if let Some(at) = at
+                        && let Some(place) = data.get_mut(base + at..base + at + bytes.len())
+                    {
+                        place.copy_from_slice(bytes);
+                    }
+                };
+                put(layout.state, &(snapshot.state.code() as i16).to_le_bytes());
+                put(layout.regulator_on, &[u8::from(snapshot.powered)]);
+                put(layout.error, &[u8::from(snapshot.error)]);
+                put(layout.error_id, &snapshot.axis_error_id.to_le_bytes());
+                put(layout.is_homed, &[u8::from(snapshot.is_homed)]);
+                put(layout.set_position, &snapshot.set_position.to_le_bytes());
+                put(layout.act_position, &snapshot.actual_position.to_le_bytes());
+                put(layout.set_velocity, &snapshot.set_velocity.to_le_bytes());
+                put(layout.act_velocity, &snapshot.actual_velocity.to_le_bytes());
+                put(
+                    layout.set_acceleration,
+                    &snapshot.set_acceleration.to_le_bytes(),
+                );
+                put(
+                    layout.act_acceleration,
+                    &snapshot.set_acceleration.to_le_bytes(),
+                );
+                put(
+                    layout.position_period,
+                    &snapshot.modulo_period.to_le_bytes(),
+                );
+            }
+        }
+    }
+}
+
+fn axis_ref_layout(image: &ProgramImage) -> AxisRefLayout {
+    let Some(members) = image.types.iter().find_map(|ty| match ty {
+        TypeDef::Struct {
+            name,
+            kind: StructKind::Struct,
+            members,
+            ..
+        } if name == "AXIS_REF" => Some(members),
+        _ => None,
+    }) else {
+        return AxisRefLayout::default();
+    };
+    let at = |name: &str| {
+        members
+            .iter()
+            .find(|member| member.name.eq_ignore_ascii_case(name))
+            .map(|member| member.offset as usize)
+    };
+    AxisRefLayout {
+        state: at("nAxisState"),
+        regulator_on: at("bRegulatorOn"),
+        error: at("bError"),
+        error_id: at("nErrorID"),
+        is_homed: at("bIsHomed"),
+        set_position: at("fSetPosition"),
+        act_position: at("fActPosition"),
+        set_velocity: at("fSetVelocity"),
+        act_velocity: at("fActVelocity"),
+        set_acceleration: at("fSetAcceleration"),
+        act_acceleration: at("fActAcceleration"),
+        position_period: at("fPositionPeriod"),
+    }
+}
+
+/// A `motion` function block kept between calls of its instance.
+pub(super) trait Kept: Default {
+    /// The block as a kept instance.
+    fn wrap(self) -> Instance;
+    /// The block, if `instance` holds this type.
+    fn unwrap(instance: &mut Instance) -> Option<&mut Self>;
+}
+
+macro_rules! kept {
+    ($($variant:ident),* $(,)?) => {
+        /// Every kind of kept function block.
+        pub(super) enum Instance {
+            $($variant($variant),)*
+        }
+        $(
+            impl Kept for $variant {
+                fn wrap(self) -> Instance {
+                    Instance::$variant(self)
+                }
+                fn unwrap(instance: &mut Instance) -> Option<&mut Self> {
+                    match instance {
+                        Instance::$variant(block) => Some(block),
+                        #[allow(unreachable_patterns)]
+                        _ => None,
+                    }
+                }
+            }
+        )*
+    };
+}
+
+kept!(
+    Power,
+    Home,
+    Stop,
+    Halt,
+    Reset,
+    MoveAbsolute,
+    MoveRelative,
+    MoveAdditive,
+    MoveVelocity,
+    Jog,
+    SetPosition,
+    SetOverride,
+    ReadActualPosition,
+    ReadActualVelocity,
+    ReadStatus,
+    ReadAxisError,
+);
