@@ -10,5 +10,6 @@ pub mod cam;
 pub mod curve;
 pub mod fb;
 pub mod kernel;
+pub mod sync;
 pub mod table;
 pub mod tappet;

@@ -30,18 +30,23 @@
 
 mod axis_planning;
 mod axis_runtime;
+mod cams;
 pub mod command;
+mod coupling;
 pub mod error;
 mod registry;
 pub mod snapshot;
+mod sync_api;
 mod validation;
 
 pub use command::{BufferMode, CommandId, CommandStatus, Dynamics, MotionRequest, PositionTarget};
 pub use error::{AXIS_ERROR_SOFTWARE_LIMIT, MotionError};
 pub use snapshot::AxisSnapshot;
+pub use sync_api::Decoupling;
 
 use crate::axis::{AxisConfig, AxisState, ConfigError, Overrides};
-use axis_runtime::{AxisRuntime, Source};
+use axis_runtime::{AxisRuntime, Source, SyncInputs};
+use cams::CamStore;
 use registry::Registry;
 use validation::{check_cycle, check_jerk, check_magnitude, check_position, validate_request};
 
@@ -54,6 +59,7 @@ pub struct AxisId(pub usize);
 pub struct Kernel {
     axes: Vec<AxisRuntime>,
     registry: Registry,
+    cams: CamStore,
 }
 
 impl Kernel {
@@ -141,7 +147,7 @@ impl Kernel {
     /// Switching on takes a Disabled axis to Standstill (Note 5); switching off takes any state
     /// but ErrorStop to Disabled (Note 2), stops the axis at once and aborts its commands.
     pub fn power(&mut self, axis: AxisId, enable: bool) -> Result<bool, MotionError> {
-        let Self { axes, registry } = self;
+        let Self { axes, registry, .. } = self;
         let runtime = axes
             .get_mut(axis.0)
             .ok_or(MotionError::UnknownAxis(axis.0))?;
@@ -201,7 +207,8 @@ impl Kernel {
         request: MotionRequest,
         buffer_mode: BufferMode,
     ) -> Result<CommandId, MotionError> {
-        let Self { axes, registry } = self;
+        self.check_coupling(axis, request)?;
+        let Self { axes, registry, .. } = self;
         let runtime = axes
             .get_mut(axis.0)
             .ok_or(MotionError::UnknownAxis(axis.0))?;
@@ -235,7 +242,7 @@ impl Kernel {
     /// that are refused end the command in Error (its FB shows the reason) and a moving axis
     /// brakes as MC_Halt would. A command that no longer runs is left alone.
     pub fn update(&mut self, id: CommandId, request: MotionRequest) {
-        let Self { axes, registry } = self;
+        let Self { axes, registry, .. } = self;
         let Some(runtime) = axes.iter_mut().find(|runtime| {
             runtime
                 .running
@@ -268,7 +275,7 @@ impl Kernel {
         deceleration: f64,
         jerk: f64,
     ) -> Result<CommandId, MotionError> {
-        let Self { axes, registry } = self;
+        let Self { axes, registry, .. } = self;
         let runtime = axes
             .get_mut(axis.0)
             .ok_or(MotionError::UnknownAxis(axis.0))?;
@@ -290,7 +297,7 @@ impl Kernel {
 
     /// MC_Stop.Execute went FALSE: the axis leaves Stopping as soon as it is at rest.
     pub fn release_stop(&mut self, id: CommandId) {
-        let Self { axes, registry } = self;
+        let Self { axes, registry, .. } = self;
         for runtime in axes.iter_mut() {
             let Some(running) = &mut runtime.running else {
                 continue;
@@ -313,7 +320,7 @@ impl Kernel {
     /// MC_Home on a virtual axis: from Standstill the axis goes to Homing at once and gets the
     /// reference `position` on the next cycle, which finishes the command.
     pub fn home(&mut self, axis: AxisId, position: f64) -> Result<CommandId, MotionError> {
-        let Self { axes, registry } = self;
+        let Self { axes, registry, .. } = self;
         let runtime = axes
             .get_mut(axis.0)
             .ok_or(MotionError::UnknownAxis(axis.0))?;
@@ -341,7 +348,7 @@ impl Kernel {
     /// Disabled (power off), once the error stop ramp has reached rest; in any other state it
     /// finishes at once without changing anything.
     pub fn reset(&mut self, axis: AxisId) -> Result<CommandId, MotionError> {
-        let Self { axes, registry } = self;
+        let Self { axes, registry, .. } = self;
         let runtime = axes
             .get_mut(axis.0)
             .ok_or(MotionError::UnknownAxis(axis.0))?;
@@ -429,7 +436,7 @@ impl Kernel {
     /// Raises an axis error, as a drive or limit fault would: every command on the axis ends
     /// in Error and the axis brakes to rest in ErrorStop (Note 1). `axis_error_id` must not be 0.
     pub fn inject_error(&mut self, axis: AxisId, axis_error_id: u16) -> Result<(), MotionError> {
-        let Self { axes, registry } = self;
+        let Self { axes, registry, .. } = self;
         let runtime = axes
             .get_mut(axis.0)
             .ok_or(MotionError::UnknownAxis(axis.0))?;
@@ -447,21 +454,36 @@ impl Kernel {
     /// Integrates one cycle of `dt_s` seconds on one axis.
     pub fn advance(&mut self, axis: AxisId, dt_s: f64) -> Result<(), MotionError> {
         check_cycle(dt_s)?;
-        let Self { axes, registry } = self;
-        let runtime = axes
-            .get_mut(axis.0)
-            .ok_or(MotionError::UnknownAxis(axis.0))?;
-        runtime.advance(dt_s, registry);
+        if axis.0 >= self.axes.len() {
+            return Err(MotionError::UnknownAxis(axis.0));
+        }
+        self.advance_index(axis.0, dt_s);
         Ok(())
     }
 
     /// Integrates one cycle of `dt_s` seconds on every axis, in the order they were added.
     pub fn advance_all(&mut self, dt_s: f64) -> Result<(), MotionError> {
         check_cycle(dt_s)?;
-        let Self { axes, registry } = self;
-        for runtime in axes.iter_mut() {
-            runtime.advance(dt_s, registry);
+        for index in 0..self.axes.len() {
+            self.advance_index(index, dt_s);
         }
         Ok(())
+    }
+
+    /// Integrates one cycle on the axis at `index`, giving a coupled slave its master's values.
+    fn advance_index(&mut self, index: usize, dt_s: f64) {
+        let Self {
+            axes,
+            registry,
+            cams,
+        } = self;
+        let master = axes
+            .get(index)
+            .and_then(AxisRuntime::coupled_master)
+            .and_then(|master| axes.get(master))
+            .map(AxisRuntime::master_view);
+        if let Some(runtime) = axes.get_mut(index) {
+            runtime.advance(dt_s, registry, SyncInputs { master, cams });
+        }
     }
 }
