@@ -12,7 +12,7 @@ use crate::kernel::{
     AxisId, CommandId, CommandStatus, Dynamics, Kernel, MotionError, MotionRequest,
 };
 use crate::sync::{
-    CamCoupling, CamId, CamSelection, CamTableId, CouplingKind, CouplingStatus, GearInPosState,
+    CamCoupling, CamId, CamSelection, CamSlaveValues, CamTableId, CouplingKind, CouplingStatus, GearInPosState,
     MasterView, PhaseRun, PhasingMode,
 };
 use crate::tappet::{TappetError, TappetEvaluator, TappetTrack};
@@ -259,6 +259,40 @@ impl Kernel {
         // The same computation the first cycle makes, to refuse a master outside the range of
         // a non-periodic cam at the call instead of one cycle later.
         crate::sync::cam_start_values(curve, coupling, &selection, &master_view, 0.0).map(|_| ())
+    }
+
+    /// SMC_GetCamSlaveSetPosition: the slave set values MC_CamIn would command first with
+    /// `coupling` for the master's and the slave's current values (the MC_CamIn formula,
+    /// without ramp-in). Nothing moves.
+    pub fn cam_slave_values(
+        &self,
+        master: AxisId,
+        slave: AxisId,
+        coupling: &CamCoupling,
+    ) -> Result<CamSlaveValues, MotionError> {
+        let selection = self.cams.selection(coupling.cam_table)?;
+        if selection.master != master || selection.slave != slave {
+            return Err(MotionError::UnknownCamTable(coupling.cam_table.0));
+        }
+        check_scaling("MasterScaling", coupling.master_scaling)?;
+        check_scaling("SlaveScaling", coupling.slave_scaling)?;
+        check_finite("MasterOffset", coupling.master_offset)?;
+        check_finite("SlaveOffset", coupling.slave_offset)?;
+        let curve = self.cams.cam(selection.cam)?.curve.as_ref();
+        let master_view = self.master_view(master)?;
+        let slave_position = self.axis(slave)?.position;
+        let set = crate::sync::cam_start_values(
+            curve,
+            coupling,
+            &selection,
+            &master_view,
+            slave_position,
+        )?;
+        Ok(CamSlaveValues {
+            position: set.position,
+            velocity: set.velocity,
+            acceleration: set.acceleration,
+        })
     }
 
     /// MC_CamOut / MC_GearOut: ends the coupling that drives `slave`; the slave keeps its

@@ -85,3 +85,15 @@ impl Default for CamCoupling {
         }
     }
 }
+
+/// The slave set values a cam commands at one master position
+/// (SMC_GetCamSlaveSetPosition's `fStartPosition`, `fStartVelocity`, `fStartAcceleration`).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct CamSlaveValues {
+    /// The slave set position.
+    pub position: f64,
+    /// The slave set velocity in slave units per second.
+    pub velocity: f64,
+    /// The slave set acceleration in slave units per second².
+    pub acceleration: f64,
+}

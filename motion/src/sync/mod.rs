@@ -19,7 +19,7 @@ mod phase;
 mod selection;
 mod status;
 
-pub use cam_coupling::{CamCoupling, StartMode};
+pub use cam_coupling::{CamCoupling, CamSlaveValues, StartMode};
 pub use gear_coupling::{GearCoupling, GearInPosCoupling};
 pub use phase::PhasingMode;
 pub use selection::{CamId, CamSelection, CamTableId};
