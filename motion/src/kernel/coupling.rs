@@ -166,7 +166,13 @@ impl Coupling {
                 )?;
                 self.mode = CouplingMode::GearInPos(state);
                 self.begin(master);
-                self.step_running(dt_s, estimated_first(master, dt_s), slave, cams)?
+                // The distance to the start point was measured from the master's position of
+                // this cycle, so the first step has no master motion left to take.
+                let seen = SeenMaster {
+                    displacement: 0.0,
+                    ..estimated_first(master, dt_s)
+                };
+                self.step_running(dt_s, seen, slave, cams)?
             }
             _ => {
                 let displacement = master.displacement_from(self.last_master);
