@@ -72,7 +72,9 @@ fn cam_out_leaves_the_slave_in_continuous_motion_at_its_last_velocity() {
     assert_eq!(again.error_id, 10);
     assert!(matches!(
         again.error_cause,
-        Some(MotionError::NotCoupled { command: "MC_CamOut" })
+        Some(MotionError::NotCoupled {
+            command: "MC_CamOut"
+        })
     ));
 }
 
@@ -184,7 +186,10 @@ fn ramp_in_removes_the_start_jump_within_its_limits() {
         // No jump: each step stays within what the cam (at most 1.875·36 u/s for the Poly5
         // rise of 180 over 180) and the compensation (50 u/s) move in 1 ms.
         let step = (now.set_position - previous.set_position).abs();
-        assert!(step <= (1.875 * 36.0 + 50.0) * 0.001 + 1e-9, "jump {step} at {k}");
+        assert!(
+            step <= (1.875 * 36.0 + 50.0) * 0.001 + 1e-9,
+            "jump {step} at {k}"
+        );
         previous = now;
         coupling.call(&mut kernel, master, slave);
         if coupling.in_sync && synced_at.is_none() {
@@ -196,7 +201,10 @@ fn ramp_in_removes_the_start_jump_within_its_limits() {
     assert!((400..=700).contains(&at), "in sync at cycle {at}");
     use motion::curve::CamCurve;
     let x = kernel.coupling_status(slave).unwrap().unwrap().cam_master;
-    assert_close(snap(&kernel, slave).set_position, rise_return().sample(x).position);
+    assert_close(
+        snap(&kernel, slave).set_position,
+        rise_return().sample(x).position,
+    );
 }
 
 #[test]
@@ -226,14 +234,24 @@ fn t7_get_cam_slave_set_position_of_the_codesys_default_cam() {
     let selection = select(&mut kernel, master, slave, cam, true, false, true);
     spin(&mut kernel, master, 100.0);
     kernel.advance_all(0.001).unwrap();
-    let mut get = GetCamSlaveSetPosition::default();
-    get.enable = true;
-    get.master_offset = 100.0;
-    get.cam_table_id = selection.cam_table_id;
+    let mut get = GetCamSlaveSetPosition {
+        enable: true,
+        master_offset: 100.0,
+        cam_table_id: selection.cam_table_id,
+        ..GetCamSlaveSetPosition::default()
+    };
     get.call(&kernel, master, slave);
     assert!(get.busy && !get.error, "{:?}", get.error_cause);
-    assert!((get.start_position - 98.379_629_6).abs() < 1e-6, "{}", get.start_position);
-    assert!((get.start_velocity - 121.527_78).abs() < 1e-4, "{}", get.start_velocity);
+    assert!(
+        (get.start_position - 98.379_629_6).abs() < 1e-6,
+        "{}",
+        get.start_position
+    );
+    assert!(
+        (get.start_velocity - 121.527_78).abs() < 1e-4,
+        "{}",
+        get.start_velocity
+    );
 
     // MC_CamIn's first command in absolute mode with the master at rest at 0 is the same.
     let (mut kernel, master, slave) = rig(roomy_linear(), roomy_linear());

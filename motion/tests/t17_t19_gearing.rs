@@ -284,18 +284,44 @@ fn t19_phasing_shifts_the_master_seen_by_the_slave() {
         kernel.advance_all(0.001).unwrap();
     }
     assert!(gear.in_gear);
-    let (lag, covered) = phase(&mut kernel, &mut gear, master, slave, PhasingMode::Absolute, 30.0);
+    let (lag, covered) = phase(
+        &mut kernel,
+        &mut gear,
+        master,
+        slave,
+        PhasingMode::Absolute,
+        30.0,
+    );
     assert!((lag - 30.0).abs() < 1e-6, "slave trails by 30 more: {lag}");
     assert!((covered - 30.0).abs() < 1e-6);
-    let (first, covered_first) =
-        phase(&mut kernel, &mut gear, master, slave, PhasingMode::Relative, 30.0);
-    let (second, covered_second) =
-        phase(&mut kernel, &mut gear, master, slave, PhasingMode::Relative, 30.0);
+    let (first, covered_first) = phase(
+        &mut kernel,
+        &mut gear,
+        master,
+        slave,
+        PhasingMode::Relative,
+        30.0,
+    );
+    let (second, covered_second) = phase(
+        &mut kernel,
+        &mut gear,
+        master,
+        slave,
+        PhasingMode::Relative,
+        30.0,
+    );
     assert!((first - 30.0).abs() < 1e-6 && (second - 30.0).abs() < 1e-6);
     assert!((covered_first - 30.0).abs() < 1e-6 && (covered_second - 30.0).abs() < 1e-6);
     let status = kernel.coupling_status(slave).unwrap().unwrap();
     assert_close(status.phase_shift, 90.0);
-    let (back, _) = phase(&mut kernel, &mut gear, master, slave, PhasingMode::Absolute, 30.0);
+    let (back, _) = phase(
+        &mut kernel,
+        &mut gear,
+        master,
+        slave,
+        PhasingMode::Absolute,
+        30.0,
+    );
     assert!((back + 60.0).abs() < 1e-6, "{back}");
     assert_close(
         kernel.coupling_status(slave).unwrap().unwrap().phase_shift,

@@ -59,7 +59,10 @@ fn t2_a_non_periodic_cam_holds_its_end_and_end_of_profile_stays_until_execute_fa
             ended_at = Some(k);
         }
         if let Some(at) = ended_at {
-            assert!(coupling.end_of_profile, "EndOfProfile stays TRUE (cycle {k}, from {at})");
+            assert!(
+                coupling.end_of_profile,
+                "EndOfProfile stays TRUE (cycle {k}, from {at})"
+            );
         }
     }
     // 360 master units at 360 u/s: the profile ends after about one second.
@@ -68,7 +71,11 @@ fn t2_a_non_periodic_cam_holds_its_end_and_end_of_profile_stays_until_execute_fa
     let slave_snap = snap(&kernel, slave);
     assert_close(slave_snap.set_position, 0.0);
     assert_close(slave_snap.set_velocity, 0.0);
-    assert_eq!(slave_snap.state.code(), 6, "the slave stays in SynchronizedMotion");
+    assert_eq!(
+        slave_snap.state.code(),
+        6,
+        "the slave stays in SynchronizedMotion"
+    );
     coupling.execute = false;
     cycle(&mut kernel, &mut coupling, master, slave, 0.001);
     assert!(!coupling.end_of_profile);
@@ -143,7 +150,10 @@ fn t3_slave_absolute_jumps_onto_the_cam_and_relative_counts_from_the_slave() {
             cycle(&mut kernel, &mut coupling, master, slave, 0.001);
             highest = highest.max(snap(&kernel, slave).set_position);
         }
-        assert!((highest - peak).abs() < 1e-6, "peak {highest}, expected {peak}");
+        assert!(
+            (highest - peak).abs() < 1e-6,
+            "peak {highest}, expected {peak}"
+        );
     }
 }
 
@@ -200,12 +210,21 @@ fn assert_pulses(pulses: &[f64], expected: &[f64]) {
 fn t4_scalings_and_offsets() {
     let (pulses, low, high) = t4_run(1.0, 1.0, 0.0, 0.0, 8);
     assert_pulses(&pulses, &[360.0, 720.0]);
-    assert!(low.abs() < 1e-6 && (high - 180.0).abs() < 1e-6, "{low}..{high}");
+    assert!(
+        low.abs() < 1e-6 && (high - 180.0).abs() < 1e-6,
+        "{low}..{high}"
+    );
 
     let (_, low, high) = t4_run(1.0, 2.0, 0.0, 0.0, 4);
-    assert!(low.abs() < 1e-6 && (high - 360.0).abs() < 1e-6, "{low}..{high}");
+    assert!(
+        low.abs() < 1e-6 && (high - 360.0).abs() < 1e-6,
+        "{low}..{high}"
+    );
     let (_, low, high) = t4_run(1.0, 0.5, 0.0, 0.0, 4);
-    assert!(low.abs() < 1e-6 && (high - 90.0).abs() < 1e-6, "{low}..{high}");
+    assert!(
+        low.abs() < 1e-6 && (high - 90.0).abs() < 1e-6,
+        "{low}..{high}"
+    );
 
     let (pulses, _, _) = t4_run(2.0, 1.0, 0.0, 0.0, 4);
     assert_pulses(&pulses, &[180.0, 360.0]);

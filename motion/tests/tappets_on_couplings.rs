@@ -190,7 +190,11 @@ fn t21_cam_register_evaluates_tappets_on_a_master_without_slave() {
     let mut previous = false;
     for _ in 0..8000 {
         register.call(&kernel, master, cam);
-        assert!(register.busy && !register.error, "{:?}", register.error_cause);
+        assert!(
+            register.busy && !register.error,
+            "{:?}",
+            register.error_cause
+        );
         let position = snap(&kernel, master).set_position;
         if register.end_of_profile {
             pulses.push(position);

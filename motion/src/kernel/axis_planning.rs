@@ -234,11 +234,9 @@ impl AxisRuntime {
             MotionRequest::Gear { master, coupling } => {
                 Ok(self.coupled(name, master.0, CouplingMode::PendingGear(coupling)))
             }
-            MotionRequest::GearInPos { master, coupling } => Ok(self.coupled(
-                name,
-                master.0,
-                CouplingMode::PendingGearInPos(coupling),
-            )),
+            MotionRequest::GearInPos { master, coupling } => {
+                Ok(self.coupled(name, master.0, CouplingMode::PendingGearInPos(coupling)))
+            }
         }
     }
 

@@ -22,6 +22,11 @@ pub(crate) struct SyncInputs<'a> {
 /// synchronised motion (a slave following a master through a cam or a gear) is added as one more
 /// variant whose set point the kernel computes from the master's snapshot each cycle.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[allow(
+    clippy::large_enum_variant,
+    reason = "the running motion stays a plain copyable value so that installing and advancing \
+              it never allocates; a boxed coupling would allocate and lose `Copy`"
+)]
 pub(crate) enum Source {
     /// Move to `target` (wrapped) and come to rest.
     Position {
@@ -163,8 +168,11 @@ impl AxisRuntime {
 
     /// The master a coupled slave follows.
     pub(crate) fn coupled_master(&self) -> Option<usize> {
-        match self.running.map(|running| running.source) {
-            Some(Source::Coupled(coupling)) => Some(coupling.master),
+        match &self.running {
+            Some(Running {
+                source: Source::Coupled(coupling),
+                ..
+            }) => Some(coupling.master),
             _ => None,
         }
     }

@@ -186,9 +186,9 @@ impl MotionRequest {
     #[must_use]
     pub fn master(&self) -> Option<AxisId> {
         match self {
-            Self::Cam { master, .. } | Self::Gear { master, .. } | Self::GearInPos { master, .. } => {
-                Some(*master)
-            }
+            Self::Cam { master, .. }
+            | Self::Gear { master, .. }
+            | Self::GearInPos { master, .. } => Some(*master),
             Self::Position { .. } | Self::Velocity { .. } | Self::Halt { .. } => None,
         }
     }

@@ -12,8 +12,8 @@ use crate::kernel::{
     AxisId, CommandId, CommandStatus, Dynamics, Kernel, MotionError, MotionRequest,
 };
 use crate::sync::{
-    CamCoupling, CamId, CamSelection, CamSlaveValues, CamTableId, CouplingKind, CouplingStatus, GearInPosState,
-    MasterView, PhaseRun, PhasingMode,
+    CamCoupling, CamId, CamSelection, CamSlaveValues, CamTableId, CouplingKind, CouplingStatus,
+    GearInPosState, MasterView, PhaseRun, PhasingMode,
 };
 use crate::tappet::{TappetError, TappetEvaluator, TappetTrack};
 

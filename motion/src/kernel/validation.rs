@@ -148,7 +148,9 @@ pub(crate) fn validate_request(
             )?;
         }
         // The kernel checks couplings against the master and the cams (`check_coupling`).
-        MotionRequest::Cam { .. } | MotionRequest::Gear { .. } | MotionRequest::GearInPos { .. } => {
+        MotionRequest::Cam { .. }
+        | MotionRequest::Gear { .. }
+        | MotionRequest::GearInPos { .. } => {
             return Ok(());
         }
     }
@@ -156,7 +158,9 @@ pub(crate) fn validate_request(
         MotionRequest::Position { dynamics, .. }
         | MotionRequest::Velocity { dynamics, .. }
         | MotionRequest::Halt { dynamics } => dynamics,
-        MotionRequest::Cam { .. } | MotionRequest::Gear { .. } | MotionRequest::GearInPos { .. } => {
+        MotionRequest::Cam { .. }
+        | MotionRequest::Gear { .. }
+        | MotionRequest::GearInPos { .. } => {
             return Ok(());
         }
     };

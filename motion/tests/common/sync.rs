@@ -43,7 +43,10 @@ pub fn rise_return() -> SegmentedCam {
 pub fn line(period: f64) -> SegmentedCam {
     SegmentedCam::new(
         KeyPoint::rest(0.0, 0.0),
-        vec![Segment::new(MotionLaw::Line, KeyPoint::rest(period, period))],
+        vec![Segment::new(
+            MotionLaw::Line,
+            KeyPoint::rest(period, period),
+        )],
     )
     .unwrap()
 }
