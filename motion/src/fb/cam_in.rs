@@ -47,7 +47,7 @@ pub struct CamIn {
     pub acceleration: f64,
     /// `Deceleration` of the ramp-in.
     pub deceleration: f64,
-    /// `Jerk` of the ramp-in; 0 for a trapezoid.
+    /// `Jerk` of the ramp-in; 0 uses the slave's jerk limit (none: trapezoid).
     pub jerk: f64,
     /// `TappetHysteresis` in cam master units; 0 keeps the tracks' own hysteresis.
     pub tappet_hysteresis: f64,
@@ -132,18 +132,21 @@ impl CamIn {
         let tappets = &mut self.tappets;
         let outputs = self.core.call(self.execute, kernel, |kernel| {
             check_axis(kernel, slave)?;
-            // The tappets are prepared first, so a refused hysteresis refuses the coupling.
+            // The tappets are prepared before the coupling is issued, so a refused hysteresis
+            // refuses the coupling, and taken only once the kernel has accepted it.
             let selection = kernel.cam_selection(cam_table)?;
             let curve = kernel.cam(selection.cam)?;
             let tracks = kernel.cam_tracks(selection.cam)?;
-            tappets
-                .begin(selection.cam, curve, tracks, selection.periodic, hysteresis)
+            let prepared = tappets
+                .prepare(selection.cam, curve, tracks, selection.periodic, hysteresis)
                 .map_err(|_| MotionError::InvalidParameter {
                     input: "TappetHysteresis",
                     value: hysteresis,
                     reason: "the hysteresis must be 0 or more and below half the cam's master period",
                 })?;
-            kernel.issue(slave, request, buffer_mode).map(Some)
+            let id = kernel.issue(slave, request, buffer_mode)?;
+            tappets.begin(prepared);
+            Ok(Some(id))
         });
         self.end_of_profile = false;
         if outputs.active

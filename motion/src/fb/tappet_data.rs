@@ -7,6 +7,15 @@ use crate::tappet::{
     MasterWrap, TappetCycle, TappetError, TappetEvaluator, TappetSwitch, TappetTrack,
 };
 
+/// What a coupling about to start does with its tappets.
+#[derive(Clone, Debug)]
+pub(crate) enum PreparedTappets {
+    /// Restart the evaluator the data already has.
+    Restart,
+    /// Replace it by a new one built for the given cam, periodicity and hysteresis.
+    New(Box<TappetEvaluator>, (CamId, bool, u64)),
+}
+
 /// `SMC_TappetData`: the tappet evaluator of one MC_CamIn instance. MC_CamIn evaluates it at
 /// every call on the cam master coordinate of its coupling, with the wrap of the coordinate
 /// at the period end taken as a continued motion; read it with [`TappetData::output`] or
@@ -56,24 +65,21 @@ impl TappetData {
         self.evaluator.as_mut()
     }
 
-    /// A coupling starts (MC_CamIn executed): the same cam restarts its evaluator (outputs
-    /// reset to their initial value where the track asks for it), another cam gets a new one.
-    /// A `hysteresis` other than 0 replaces the hysteresis of every track.
-    pub(crate) fn begin(
-        &mut self,
+    /// Prepares the tappets of a coupling about to start: the same cam, periodicity and
+    /// hysteresis restart the evaluator in place, anything else builds a new one. Nothing
+    /// changes until [`TappetData::begin`] takes the result, so a refused coupling leaves the
+    /// tappets as they were. A `hysteresis` other than 0 replaces the hysteresis of every track.
+    pub(crate) fn prepare(
+        &self,
         cam: CamId,
         curve: &dyn CamCurve,
         tracks: &[TappetTrack],
         periodic: bool,
         hysteresis: f64,
-    ) -> Result<(), TappetError> {
-        self.last = None;
+    ) -> Result<PreparedTappets, TappetError> {
         let key = (cam, periodic, hysteresis.to_bits());
-        if self.built_for == Some(key)
-            && let Some(evaluator) = &mut self.evaluator
-        {
-            evaluator.restart();
-            return Ok(());
+        if self.built_for == Some(key) && self.evaluator.is_some() {
+            return Ok(PreparedTappets::Restart);
         }
         let (start, end) = curve.master_range();
         let tracks = tracks
@@ -86,10 +92,26 @@ impl TappetData {
                 track
             })
             .collect();
-        self.evaluator = Some(TappetEvaluator::new(start, end, periodic, tracks)?);
-        self.built_for = Some(key);
-        self.generation += 1;
-        Ok(())
+        let evaluator = TappetEvaluator::new(start, end, periodic, tracks)?;
+        Ok(PreparedTappets::New(Box::new(evaluator), key))
+    }
+
+    /// A coupling started (MC_CamIn executed): takes what [`TappetData::prepare`] made. A
+    /// restart sets the outputs back to their initial value where the track asks for it.
+    pub(crate) fn begin(&mut self, prepared: PreparedTappets) {
+        self.last = None;
+        match prepared {
+            PreparedTappets::Restart => {
+                if let Some(evaluator) = &mut self.evaluator {
+                    evaluator.restart();
+                }
+            }
+            PreparedTappets::New(evaluator, key) => {
+                self.evaluator = Some(*evaluator);
+                self.built_for = Some(key);
+                self.generation += 1;
+            }
+        }
     }
 
     /// Evaluates the motion of the cam master coordinate since the last evaluation.

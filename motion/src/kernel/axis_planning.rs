@@ -228,10 +228,23 @@ impl AxisRuntime {
                     self.position,
                 ))
             }
-            MotionRequest::Cam { master, coupling } => {
+            MotionRequest::Cam {
+                master,
+                mut coupling,
+            } => {
+                // As for single-axis motion, a jerk of 0 uses the axis's jerk limit.
+                if coupling.jerk == 0.0 {
+                    coupling.jerk = self.config.max_jerk;
+                }
                 Ok(self.coupled(name, master.0, CouplingMode::PendingCam(coupling)))
             }
-            MotionRequest::Gear { master, coupling } => {
+            MotionRequest::Gear {
+                master,
+                mut coupling,
+            } => {
+                if coupling.jerk == 0.0 {
+                    coupling.jerk = self.config.max_jerk;
+                }
                 Ok(self.coupled(name, master.0, CouplingMode::PendingGear(coupling)))
             }
             MotionRequest::GearInPos { master, coupling } => {

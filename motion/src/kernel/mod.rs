@@ -12,21 +12,27 @@
 //! cycle. Time only enters through `dt_s`; the kernel reads no clock, and `advance` does not
 //! allocate.
 //!
-//! # Motion sources, and where synchronised motion plugs in
+//! # Motion sources and synchronised motion
 //!
 //! What drives an axis is one value of the private `Source` enum held in the axis's running
-//! motion (position move, velocity, MC_Halt, MC_Stop, error stop ramp, homing). A coupled slave
-//! (MC_CamIn, MC_GearIn, MC_GearInPos) is one more variant, issued through [`Kernel::issue`] as
-//! one more [`MotionRequest`] variant, so buffer modes, command statuses, MC_Stop, ErrorStop and
-//! the FB output rules apply to it unchanged; `install` puts the axis in SynchronizedMotion.
-//! Its set point is computed in `advance` from the master's set values: the kernel advances
-//! axes in the order they were added, so a master added before its slave is read with this
-//! cycle's values (a runtime should add masters first; otherwise the slave sees the previous
-//! cycle's master). The cam should be referenced by an index into cams the kernel owns (as
-//! `Box<dyn CamCurve>` registered when the image loads), so that the running motion stays a
-//! plain copyable value and `advance` does not allocate. MC_CamOut and MC_GearOut replace the
-//! source with a velocity source at the slave's current velocity, already reached, which is
-//! ContinuousMotion.
+//! motion (position move, velocity, MC_Halt, MC_Stop, error stop ramp, homing, coupling). A
+//! coupled slave (MC_CamIn, MC_GearIn, MC_GearInPos) is issued through [`Kernel::issue`] as a
+//! [`MotionRequest::Cam`], [`MotionRequest::Gear`] or [`MotionRequest::GearInPos`], so buffer
+//! modes, command statuses, MC_Stop, ErrorStop and the FB output rules apply to it unchanged;
+//! `install` puts the axis in SynchronizedMotion. A coupling starts at the first `advance`
+//! after it took control (so a buffered coupling starts from the values it finds then): that
+//! `advance` reads the master's set values and the slave's, and every later one computes the
+//! slave's set point from the master's displacement in the cycle (see [`crate::sync`]). The
+//! kernel advances axes in the order they were added, so a master added before its slave is
+//! read with this cycle's values (a runtime should add masters first; otherwise the slave sees
+//! the previous cycle's master). Cams are registered once with [`Kernel::add_cam`] and owned by
+//! the kernel; a coupling refers to its cam by index, so the running motion stays a plain
+//! copyable value and `advance` does not allocate. [`Kernel::decouple`] (MC_CamOut, MC_GearOut)
+//! replaces the coupling with a velocity source at the slave's current velocity, already
+//! reached, which is ContinuousMotion with no command in control. [`Kernel::phase`]
+//! (MC_Phasing) runs a position profile of the phase shift inside the coupling. Overrides do not
+//! act on a coupled slave. A buffered command does not wait for a coupling, which never ends by
+//! itself: it takes over at once, as an aborting one would.
 
 mod axis_planning;
 mod axis_runtime;

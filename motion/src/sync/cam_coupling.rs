@@ -65,7 +65,7 @@ pub struct CamCoupling {
     pub acceleration: f64,
     /// `Deceleration` of the ramp-in compensation.
     pub deceleration: f64,
-    /// `Jerk` of the ramp-in compensation; 0 for a trapezoid.
+    /// `Jerk` of the ramp-in compensation; 0 uses the slave's jerk limit (none: trapezoid).
     pub jerk: f64,
 }
 

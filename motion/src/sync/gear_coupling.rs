@@ -11,7 +11,7 @@ pub struct GearCoupling {
     pub acceleration: f64,
     /// `Deceleration` while the slave slows down to the geared velocity, above 0.
     pub deceleration: f64,
-    /// `Jerk` of the ramp; 0 for a trapezoid.
+    /// `Jerk` of the ramp; 0 uses the slave's jerk limit (none: trapezoid).
     pub jerk: f64,
 }
 

@@ -8,6 +8,28 @@
 //!
 //! The master seen by a slave is the master's set position, unwrapped across the modulo period
 //! (a master moves less than half its period per cycle), minus the phase shift of MC_Phasing.
+//!
+//! # How a runtime drives it
+//!
+//! When the image loads: add the axes, masters before their slaves
+//! ([`crate::kernel::Kernel::add_axis`]), and register every cam with its tappet tracks
+//! ([`crate::kernel::Kernel::add_cam`], which returns the [`CamId`] that `MC_CAM_REF` maps to).
+//!
+//! Every task cycle:
+//! 1. Run the programs. Their FB calls (`crate::fb::CamTableSelect`, `CamIn`, `GearIn`, …) issue
+//!    and follow commands through the kernel, as the single-axis FBs do. An MC_CamIn call also
+//!    evaluates the tappets of its coupling for the master motion of the previous `advance`
+//!    and shows `EndOfProfile`; read the tappet outputs from `CamIn::tappets` (or through
+//!    `crate::fb::GetTappetValue` called after the MC_CamIn). SMC_CamRegister and
+//!    MC_DigitalCamSwitch read the axis's set values at their call.
+//! 2. Call [`crate::kernel::Kernel::advance_all`] with the task interval (or `advance` per axis
+//!    in the order the axes were added). A slave's set point is computed from its master's values
+//!    of the same cycle when the master was added first.
+//!
+//! Like `Done` of a single-axis FB, `InSync`, `EndOfProfile` and the tappet outputs therefore
+//! appear at the FB call that follows the `advance` that produced them. A runtime that mirrors
+//! couplings into an online view reads [`crate::kernel::Kernel::coupling_status`] after
+//! `advance`.
 
 mod cam_coupling;
 mod cam_state;
