@@ -273,3 +273,77 @@ fn t7_get_cam_slave_set_position_of_the_codesys_default_cam() {
     get.call(&kernel, master, slave);
     assert_eq!(get.error_id, 4);
 }
+
+#[test]
+fn a_buffered_cam_in_starts_when_the_move_before_it_ends() {
+    let (mut kernel, master, slave) = rig(roomy_linear(), roomy_linear());
+    let cam = add(&mut kernel, line(360.0), Vec::new());
+    let selection = select(&mut kernel, master, slave, cam, true, true, false);
+    let mut mover = MoveAbsolute::default();
+    mover.execute = true;
+    mover.position = 50.0;
+    mover.velocity = 500.0;
+    mover.acceleration = 10_000.0;
+    mover.deceleration = 10_000.0;
+    mover.call(&mut kernel, slave);
+    let mut coupling = cam_in(&selection);
+    coupling.buffer_mode = motion::kernel::BufferMode::Buffered;
+    spin(&mut kernel, master, 100.0);
+    cycle(&mut kernel, &mut coupling, master, slave);
+    assert!(coupling.busy && !coupling.active, "waits in the buffer");
+    let mut started = None;
+    for k in 0..1000 {
+        mover.call(&mut kernel, slave);
+        cycle(&mut kernel, &mut coupling, master, slave);
+        if coupling.active && started.is_none() {
+            started = Some(k);
+            assert!(mover.done);
+            // The coupling started in this cycle's advance from the slave at rest at 50:
+            // relative slave, absolute master, line cam, so slave = 50 + master.
+            let master_position = snap(&kernel, master).set_position;
+            assert_close(snap(&kernel, slave).set_position, 50.0 + master_position);
+        }
+    }
+    // The move of 50 at 500 u/s with 10 000 u/s² takes 0.15 s.
+    let at = started.unwrap();
+    assert!((140..=160).contains(&at), "started at cycle {at}");
+    // Relative slave on a line cam: from 50, the slave follows the master's displacement.
+    assert!(coupling.in_sync);
+    assert_close(snap(&kernel, slave).set_velocity, 100.0);
+}
+
+#[test]
+fn an_axis_error_on_the_slave_ends_the_coupling_in_error() {
+    let (mut kernel, master, slave, mut coupling) = running_coupling();
+    kernel.inject_error(slave, 42).unwrap();
+    coupling.call(&mut kernel, master, slave);
+    assert!(coupling.error && !coupling.busy);
+    assert_eq!(coupling.error_id, 8);
+    assert_eq!(kernel.state(slave).unwrap(), AxisState::ErrorStop);
+    assert_eq!(kernel.state(master).unwrap(), AxisState::ContinuousMotion);
+}
+
+#[test]
+fn a_slave_leaving_its_software_limits_stops_in_error() {
+    let mut limited = roomy_linear();
+    limited.software_limits = Some(motion::axis::SoftwareLimits {
+        min: -10.0,
+        max: 100.0,
+    });
+    let (mut kernel, master, slave) = rig(roomy_linear(), limited);
+    let cam = add(&mut kernel, rise_return(), Vec::new());
+    let selection = select(&mut kernel, master, slave, cam, true, true, true);
+    let mut coupling = cam_in(&selection);
+    spin(&mut kernel, master, 360.0);
+    for _ in 0..1000 {
+        cycle(&mut kernel, &mut coupling, master, slave);
+    }
+    assert_eq!(kernel.state(slave).unwrap(), AxisState::ErrorStop);
+    assert!(coupling.error);
+    assert_eq!(
+        coupling.error_cause,
+        Some(MotionError::AxisError {
+            axis_error_id: motion::kernel::AXIS_ERROR_SOFTWARE_LIMIT
+        })
+    );
+}

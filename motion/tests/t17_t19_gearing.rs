@@ -329,3 +329,92 @@ fn t19_phasing_shifts_the_master_seen_by_the_slave() {
     );
     assert!(gear.busy && gear.in_gear);
 }
+
+#[test]
+fn a_jerk_limited_gear_in_keeps_acceleration_and_jerk_within_their_limits() {
+    let mut slave_config = roomy_linear();
+    slave_config.max_jerk = 2000.0;
+    let (mut kernel, master, slave) = rig(roomy_linear(), slave_config);
+    spin(&mut kernel, master, 50.0);
+    kernel.advance_all(0.001).unwrap();
+    let mut gear = GearIn::default();
+    gear.execute = true;
+    gear.acceleration = 100.0;
+    gear.deceleration = 100.0;
+    let mut previous_acceleration = 0.0;
+    let mut highest = 0.0_f64;
+    for _ in 0..2000 {
+        gear.call(&mut kernel, master, slave);
+        kernel.advance_all(0.001).unwrap();
+        let acceleration = snap(&kernel, slave).set_acceleration;
+        highest = highest.max(acceleration.abs());
+        assert!(acceleration.abs() <= 100.0 + 1e-9, "{acceleration}");
+        assert!(
+            (acceleration - previous_acceleration).abs() <= 2000.0 * 0.001 + 1e-9,
+            "jerk: {previous_acceleration} → {acceleration}"
+        );
+        previous_acceleration = acceleration;
+    }
+    assert!(
+        highest > 99.0,
+        "the ramp reaches its acceleration: {highest}"
+    );
+    assert!(gear.in_gear);
+    assert_close(snap(&kernel, slave).set_velocity, 50.0);
+}
+
+#[test]
+fn gear_in_slows_a_faster_slave_with_its_deceleration() {
+    let (mut kernel, master, slave) = rig(roomy_linear(), roomy_linear());
+    spin(&mut kernel, master, 20.0);
+    spin(&mut kernel, slave, 100.0);
+    kernel.advance_all(0.001).unwrap();
+    let mut gear = GearIn::default();
+    gear.execute = true;
+    gear.acceleration = 1.0;
+    gear.deceleration = 400.0;
+    let mut cycles = 0;
+    while !gear.in_gear {
+        gear.call(&mut kernel, master, slave);
+        kernel.advance_all(0.001).unwrap();
+        cycles += 1;
+        assert!(cycles < 1000, "never in gear");
+    }
+    // 100 → 20 u/s at 400 u/s² takes 0.2 s.
+    assert!((200..=202).contains(&cycles), "{cycles}");
+    assert_close(snap(&kernel, slave).set_velocity, 20.0);
+}
+
+#[test]
+fn gear_out_aborts_a_running_phase_change() {
+    let (mut kernel, master, slave) = rig(modulo(360.0), modulo(360.0));
+    spin(&mut kernel, master, 50.0);
+    kernel.advance_all(0.001).unwrap();
+    let mut gear = GearIn::default();
+    gear.execute = true;
+    gear.acceleration = 1000.0;
+    gear.deceleration = 1000.0;
+    for _ in 0..100 {
+        gear.call(&mut kernel, master, slave);
+        kernel.advance_all(0.001).unwrap();
+    }
+    let mut phasing = Phasing::default();
+    phasing.execute = true;
+    phasing.phase_shift = 90.0;
+    phasing.velocity = 10.0;
+    phasing.acceleration = 100.0;
+    phasing.deceleration = 100.0;
+    for _ in 0..100 {
+        phasing.call(&mut kernel, master, slave);
+        kernel.advance_all(0.001).unwrap();
+    }
+    assert!(phasing.busy && phasing.active);
+    let covered = phasing.covered_phase_shift;
+    assert!(covered > 0.0 && covered < 90.0, "{covered}");
+    let mut out = GearOut::default();
+    out.execute = true;
+    out.call(&mut kernel, slave);
+    phasing.call(&mut kernel, master, slave);
+    assert!(phasing.command_aborted && !phasing.busy);
+    assert_eq!(kernel.state(slave).unwrap(), AxisState::ContinuousMotion);
+}
