@@ -16,6 +16,11 @@ use crate::sync::{CamCoupling, CamTableId, StartMode};
 /// MC_CamOut, another command on the slave (`CommandAborted`) or an error end it, falling
 /// `Execute` does not. A rising edge while busy is ignored, as for every Execute FB.
 ///
+/// With `MasterAbsolute` the cam master coordinate starts from the master's set position,
+/// otherwise from 0 (plus `MasterOffset`); a periodic cam takes it into its master range, a
+/// non-periodic cam refuses a start outside the range (ErrorID 14). `SlaveOffset` applies in
+/// the absolute and the relative slave mode alike (CODESYS; Delta applies it only absolute).
+///
 /// `EndOfProfile` of a periodic cam is TRUE for one call after each wrap of the cam master
 /// coordinate (forward at the end, backward at the start); of a non-periodic cam it is TRUE
 /// once the master left the range, the slave holding the end value, until `Execute` is FALSE.
