@@ -39,6 +39,7 @@ mod axis_runtime;
 mod cams;
 pub mod command;
 mod coupling;
+mod coupling_checks;
 pub mod error;
 mod registry;
 pub mod snapshot;
