@@ -418,3 +418,37 @@ fn gear_out_aborts_a_running_phase_change() {
     assert!(phasing.command_aborted && !phasing.busy);
     assert_eq!(kernel.state(slave).unwrap(), AxisState::ContinuousMotion);
 }
+
+#[test]
+fn gear_in_pos_with_ratio_two_arrives_at_twice_the_master_velocity() {
+    let (mut kernel, master, slave) = rig(modulo(360.0), modulo(360.0));
+    let mut gear = GearInPos::default();
+    gear.execute = true;
+    gear.ratio_numerator = 2;
+    gear.master_sync_position = 180.0;
+    gear.master_start_distance = 90.0;
+    gear.slave_sync_position = 10.0;
+    spin(&mut kernel, master, 50.0);
+    let mut synced = false;
+    for _ in 0..10_000 {
+        gear.call(&mut kernel, master, slave);
+        if gear.in_sync {
+            synced = true;
+            break;
+        }
+        kernel.advance_all(0.001).unwrap();
+    }
+    assert!(synced);
+    let master_position = snap(&kernel, master).set_position;
+    let slave_snap = snap(&kernel, slave);
+    assert_close(slave_snap.set_velocity, 100.0);
+    assert!(
+        signed_360(slave_snap.set_position - (10.0 + 2.0 * (master_position - 180.0))).abs() < 1e-6
+    );
+    for _ in 0..100 {
+        gear.call(&mut kernel, master, slave);
+        kernel.advance_all(0.001).unwrap();
+    }
+    assert_close(snap(&kernel, slave).set_velocity, 100.0);
+    assert!(gear.in_sync && gear.start_sync && gear.busy);
+}
