@@ -1,5 +1,6 @@
 //! Motion control for Rivet: cam laws and cam table evaluation, tappets, virtual axes,
-//! the PLCopen axis state machine and the motion function blocks.
+//! the PLCopen axis state machine, synchronised motion (camming, gearing, phasing) and the
+//! motion function blocks.
 //!
 //! This crate is pure computation: it does no I/O and spawns no threads.
 //! The runtime drives it from the task that calls the motion function blocks, and the cam editor
@@ -10,5 +11,6 @@ pub mod cam;
 pub mod curve;
 pub mod fb;
 pub mod kernel;
+pub mod sync;
 pub mod table;
 pub mod tappet;

@@ -37,6 +37,21 @@ fn directions_have_the_codesys_mc_direction_numbers_both_ways() {
 }
 
 #[test]
+fn start_modes_have_the_codesys_mc_start_mode_numbers() {
+    use motion::sync::StartMode;
+    let table = [
+        (StartMode::Absolute, 0),
+        (StartMode::Relative, 1),
+        (StartMode::RampIn, 2),
+        (StartMode::RampInPositive, 3),
+        (StartMode::RampInNegative, 4),
+    ];
+    for (mode, code) in table {
+        assert_eq!(mode.code(), code);
+    }
+}
+
+#[test]
 fn buffer_modes_have_the_codesys_mc_buffer_mode_numbers() {
     let table = [
         (BufferMode::Aborting, 0),
@@ -86,6 +101,25 @@ fn error_ids_are_stable_and_messages_name_what_is_wrong() {
         (MotionError::BufferFull, 7, "buffered"),
         (MotionError::AxisError { axis_error_id: 42 }, 8, "42"),
         (MotionError::UnknownAxis(3), 9, "axis 3"),
+        (
+            MotionError::NotCoupled {
+                command: "MC_CamOut",
+            },
+            10,
+            "MC_CamOut",
+        ),
+        (MotionError::MasterIsSlave, 11, "different axes"),
+        (MotionError::UnknownCamTable(4), 12, "CamTableID 4"),
+        (MotionError::UnknownCam(2), 13, "cam 2"),
+        (
+            MotionError::MasterOutOfCamRange {
+                cam_master: 400.0,
+                start: 0.0,
+                end: 360.0,
+            },
+            14,
+            "400",
+        ),
     ];
     for (error, id, words) in table {
         assert_eq!(error.id(), id, "{error}");

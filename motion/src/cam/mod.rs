@@ -11,7 +11,7 @@ mod interpolation;
 mod key_point;
 mod law;
 mod points;
-mod polynomial;
+pub(crate) mod polynomial;
 mod sampling;
 mod segment;
 mod segment_bounds;

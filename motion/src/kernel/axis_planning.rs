@@ -3,7 +3,8 @@
 
 use crate::axis::direction::modulo_distances;
 use crate::axis::{AxisState, Direction, Profile, ProfileLimits};
-use crate::kernel::axis_runtime::{AxisRuntime, Running, Source};
+use crate::kernel::axis_runtime::{AxisRuntime, Running, Source, end_phasing};
+use crate::kernel::coupling::{Coupling, CouplingMode};
 use crate::kernel::registry::Registry;
 use crate::kernel::{
     BufferMode, CommandId, CommandStatus, Dynamics, MotionError, MotionRequest, PositionTarget,
@@ -227,7 +228,39 @@ impl AxisRuntime {
                     self.position,
                 ))
             }
+            MotionRequest::Cam {
+                master,
+                mut coupling,
+            } => {
+                // As for single-axis motion, a jerk of 0 uses the axis's jerk limit.
+                if coupling.jerk == 0.0 {
+                    coupling.jerk = self.config.max_jerk;
+                }
+                Ok(self.coupled(name, master.0, CouplingMode::PendingCam(coupling)))
+            }
+            MotionRequest::Gear {
+                master,
+                mut coupling,
+            } => {
+                if coupling.jerk == 0.0 {
+                    coupling.jerk = self.config.max_jerk;
+                }
+                Ok(self.coupled(name, master.0, CouplingMode::PendingGear(coupling)))
+            }
+            MotionRequest::GearInPos { master, coupling } => {
+                Ok(self.coupled(name, master.0, CouplingMode::PendingGearInPos(coupling)))
+            }
         }
+    }
+
+    /// A coupling that starts at the next `advance`.
+    fn coupled(&self, name: &'static str, master: usize, mode: CouplingMode) -> Running {
+        Running::new(
+            name,
+            Source::Coupled(Coupling::pending(master, mode)),
+            Profile::at_rest(),
+            self.position,
+        )
     }
 
     /// Plans an MC_Stop ramp.
@@ -440,10 +473,11 @@ impl AxisRuntime {
             ) => dynamics.deceleration,
             _ => self.config.max_deceleration,
         };
-        if let Some(running) = self.running.take()
-            && let Some(id) = running.id
-        {
-            registry.set(id, CommandStatus::Error(error));
+        if let Some(running) = self.running.take() {
+            if let Some(id) = running.id {
+                registry.set(id, CommandStatus::Error(error));
+            }
+            end_phasing(&running, CommandStatus::Aborted, registry);
         }
         if let Some((id, _)) = self.buffered.take() {
             registry.set(id, CommandStatus::Aborted);
@@ -491,7 +525,10 @@ impl AxisRuntime {
                 let profile = Profile::to_velocity(0.0, self.velocity, self.acceleration, limits);
                 (profile, false, 0.0)
             }
-            Source::Stop { .. } | Source::ErrorRamp | Source::Home { .. } => return,
+            // Overrides do not act on a coupled slave (PLCopen MC_SetOverride).
+            Source::Stop { .. } | Source::ErrorRamp | Source::Home { .. } | Source::Coupled(_) => {
+                return;
+            }
         };
         self.running = Some(Running {
             profile,

@@ -2,13 +2,31 @@
 //! drives it.
 
 use crate::axis::{AxisConfig, AxisState, Overrides, Profile};
+use crate::kernel::cams::CamStore;
+use crate::kernel::coupling::Coupling;
 use crate::kernel::registry::Registry;
 use crate::kernel::{CommandId, CommandStatus, Dynamics, MotionError, MotionRequest};
+use crate::sync::{MasterView, SlaveView};
+
+/// What `advance` needs besides the axis itself: the master's values of this cycle for a
+/// coupled slave, and the kernel's cams.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct SyncInputs<'a> {
+    /// The master of a coupled slave, `None` otherwise.
+    pub(crate) master: Option<MasterView>,
+    /// The cams the kernel owns.
+    pub(crate) cams: &'a CamStore,
+}
 
 /// What produces the set values of an axis while it moves. Every kind of motion is one variant;
 /// synchronised motion (a slave following a master through a cam or a gear) is added as one more
 /// variant whose set point the kernel computes from the master's snapshot each cycle.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[allow(
+    clippy::large_enum_variant,
+    reason = "the running motion stays a plain copyable value so that installing and advancing \
+              it never allocates; a boxed coupling would allocate and lose `Copy`"
+)]
 pub(crate) enum Source {
     /// Move to `target` (wrapped) and come to rest.
     Position {
@@ -41,6 +59,8 @@ pub(crate) enum Source {
         /// The position the reference gets.
         position: f64,
     },
+    /// A slave following a master (MC_CamIn, MC_GearIn, MC_GearInPos).
+    Coupled(Coupling),
 }
 
 /// The motion that controls an axis.
@@ -87,6 +107,9 @@ pub(crate) struct AxisRuntime {
     pub(crate) running: Option<Running>,
     pub(crate) buffered: Option<(CommandId, MotionRequest)>,
     pub(crate) pending_reset: Option<CommandId>,
+    /// The sum of the cycle intervals the axis was advanced by, the time base of its tappets
+    /// and cam switches.
+    pub(crate) time_s: f64,
 }
 
 impl Running {
@@ -125,19 +148,42 @@ impl AxisRuntime {
             running: None,
             buffered: None,
             pending_reset: None,
+            time_s: 0.0,
         }
     }
 
     /// Ends the running and the buffered command with `status`, as when another command takes
     /// over or the power goes off.
     pub(crate) fn end_commands(&mut self, status: CommandStatus, registry: &mut Registry) {
-        if let Some(running) = self.running.take()
-            && let Some(id) = running.id
-        {
-            registry.set(id, status);
+        if let Some(running) = self.running.take() {
+            if let Some(id) = running.id {
+                registry.set(id, status);
+            }
+            end_phasing(&running, status, registry);
         }
         if let Some((id, _)) = self.buffered.take() {
             registry.set(id, status);
+        }
+    }
+
+    /// The master a coupled slave follows.
+    pub(crate) fn coupled_master(&self) -> Option<usize> {
+        match &self.running {
+            Some(Running {
+                source: Source::Coupled(coupling),
+                ..
+            }) => Some(coupling.master),
+            _ => None,
+        }
+    }
+
+    /// The values a slave of this axis reads as its master.
+    pub(crate) fn master_view(&self) -> MasterView {
+        MasterView {
+            position: self.position,
+            velocity: self.velocity,
+            acceleration: self.acceleration,
+            period: self.config.modulo_period,
         }
     }
 
@@ -149,6 +195,7 @@ impl AxisRuntime {
             Source::Stop { .. } => AxisState::Stopping,
             Source::ErrorRamp => AxisState::ErrorStop,
             Source::Home { .. } => AxisState::Homing,
+            Source::Coupled(_) => AxisState::SynchronizedMotion,
         };
         if let Source::Position { target, .. } = running.source {
             self.commanded_position = target;
@@ -157,10 +204,16 @@ impl AxisRuntime {
     }
 
     /// Integrates one cycle of `dt_s` seconds.
-    pub(crate) fn advance(&mut self, dt_s: f64, registry: &mut Registry) {
+    pub(crate) fn advance(&mut self, dt_s: f64, registry: &mut Registry, sync: SyncInputs<'_>) {
+        self.time_s += dt_s;
         let Some(running) = &mut self.running else {
             return;
         };
+        if let Source::Coupled(_) = running.source {
+            self.advance_coupled(dt_s, registry, sync);
+            self.check_software_limits(registry);
+            return;
+        }
         if let Source::Home { position } = running.source {
             let id = running.id;
             self.running = None;
@@ -199,6 +252,10 @@ impl AxisRuntime {
         let Some(running) = &mut self.running else {
             return;
         };
+        if let Source::Coupled(_) = running.source {
+            // A coupling computes its set values from its master in `advance`.
+            return;
+        }
         running.elapsed_s += dt_s;
         if running.reached && matches!(running.source, Source::Velocity { .. }) {
             // At constant velocity the position is integrated, so it stays exact on long runs.
@@ -284,7 +341,7 @@ impl AxisRuntime {
                     registry.set(reset_id, CommandStatus::Done);
                 }
             }
-            Source::Home { .. } => {}
+            Source::Home { .. } | Source::Coupled(_) => {}
         }
     }
 
@@ -342,6 +399,42 @@ impl AxisRuntime {
         }
     }
 
+    /// One cycle of a coupled slave: the coupling computes the set values from the master's.
+    fn advance_coupled(&mut self, dt_s: f64, registry: &mut Registry, sync: SyncInputs<'_>) {
+        let slave = SlaveView {
+            position: self.position,
+            velocity: self.velocity,
+            period: self.config.modulo_period,
+        };
+        let Some(running) = &mut self.running else {
+            return;
+        };
+        let Source::Coupled(coupling) = &mut running.source else {
+            return;
+        };
+        let Some(master) = sync.master else {
+            return;
+        };
+        running.elapsed_s += dt_s;
+        match coupling.step(dt_s, &master, &slave, sync.cams) {
+            Ok(step) => {
+                self.position = self.config.wrap(step.set.position);
+                self.velocity = step.set.velocity;
+                self.acceleration = step.set.acceleration;
+                if let Some(id) = step.phase_done {
+                    registry.set(id, CommandStatus::Done);
+                }
+                if step.in_sync && !running.reached {
+                    running.reached = true;
+                    if let Some(id) = running.id {
+                        registry.set(id, CommandStatus::Active { reached: true });
+                    }
+                }
+            }
+            Err(error) => self.fail_running(error, registry),
+        }
+    }
+
     /// Clears the axis error and goes to Standstill or Disabled (Notes 3 and 4).
     pub(crate) fn reset(&mut self) {
         self.axis_error_id = 0;
@@ -387,5 +480,14 @@ impl AxisRuntime {
             self.velocity = 0.0;
             self.acceleration = 0.0;
         }
+    }
+}
+
+/// Ends the MC_Phasing command running on a coupling that ends with `status`.
+pub(crate) fn end_phasing(running: &Running, status: CommandStatus, registry: &mut Registry) {
+    if let Source::Coupled(coupling) = running.source
+        && let Some(run) = coupling.phase.run
+    {
+        registry.set(run.id, status);
     }
 }

@@ -2,7 +2,8 @@
 //! status, and the parameters the profile generator needs.
 
 use crate::axis::Direction;
-use crate::kernel::MotionError;
+use crate::kernel::{AxisId, MotionError};
+use crate::sync::{CamCoupling, GearCoupling, GearInPosCoupling};
 
 /// The id the kernel gives a command; the FB instance keeps it to learn what happened.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -139,6 +140,27 @@ pub enum MotionRequest {
         /// The deceleration and jerk inputs.
         dynamics: Dynamics,
     },
+    /// MC_CamIn: follow `master` through a selected cam.
+    Cam {
+        /// The master axis; it must be the one the cam selection was made for.
+        master: AxisId,
+        /// The MC_CamIn inputs.
+        coupling: CamCoupling,
+    },
+    /// MC_GearIn: follow `master` with a gear ratio.
+    Gear {
+        /// The master axis.
+        master: AxisId,
+        /// The MC_GearIn inputs.
+        coupling: GearCoupling,
+    },
+    /// MC_GearInPos: follow `master` with a gear ratio, in sync at given positions.
+    GearInPos {
+        /// The master axis.
+        master: AxisId,
+        /// The MC_GearInPos inputs.
+        coupling: GearInPosCoupling,
+    },
 }
 
 impl MotionRequest {
@@ -154,6 +176,20 @@ impl MotionRequest {
             Self::Velocity { jog: true, .. } => "MC_Jog",
             Self::Velocity { .. } => "MC_MoveVelocity",
             Self::Halt { .. } => "MC_Halt",
+            Self::Cam { .. } => "MC_CamIn",
+            Self::Gear { .. } => "MC_GearIn",
+            Self::GearInPos { .. } => "MC_GearInPos",
+        }
+    }
+
+    /// The master of a coupling request, `None` for single-axis motion.
+    #[must_use]
+    pub fn master(&self) -> Option<AxisId> {
+        match self {
+            Self::Cam { master, .. }
+            | Self::Gear { master, .. }
+            | Self::GearInPos { master, .. } => Some(*master),
+            Self::Position { .. } | Self::Velocity { .. } | Self::Halt { .. } => None,
         }
     }
 }

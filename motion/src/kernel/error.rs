@@ -61,6 +61,33 @@ pub enum MotionError {
     /// 9: the axis reference does not name an axis of the kernel.
     #[error("axis {0} does not exist in the motion kernel")]
     UnknownAxis(usize),
+    /// 10: MC_CamOut, MC_GearOut or MC_Phasing on a slave that no such coupling drives.
+    #[error("{command}: the slave is not coupled by the FB it would end or shift")]
+    NotCoupled {
+        /// The FB that needed the coupling, such as `MC_CamOut`.
+        command: &'static str,
+    },
+    /// 11: the master and the slave of a coupling are the same axis.
+    #[error("the master and the slave must be different axes")]
+    MasterIsSlave,
+    /// 12: `CamTableID` names no selection of MC_CamTableSelect, or one made for other axes.
+    #[error("CamTableID {0} was not selected by MC_CamTableSelect for this master and slave")]
+    UnknownCamTable(u32),
+    /// 13: the cam id names no cam of the kernel.
+    #[error("cam {0} is not registered in the motion kernel")]
+    UnknownCam(usize),
+    /// 14: a non-periodic cam starts with its master coordinate outside the cam's master range.
+    #[error(
+        "the cam master coordinate {cam_master} at the start lies outside the cam's master range {start} .. {end}"
+    )]
+    MasterOutOfCamRange {
+        /// The cam master coordinate X = MasterScaling·M + MasterOffset at the start.
+        cam_master: f64,
+        /// The first master position of the cam.
+        start: f64,
+        /// The last master position of the cam.
+        end: f64,
+    },
 }
 
 impl MotionError {
@@ -77,6 +104,11 @@ impl MotionError {
             Self::BufferFull => 7,
             Self::AxisError { .. } => 8,
             Self::UnknownAxis(_) => 9,
+            Self::NotCoupled { .. } => 10,
+            Self::MasterIsSlave => 11,
+            Self::UnknownCamTable(_) => 12,
+            Self::UnknownCam(_) => 13,
+            Self::MasterOutOfCamRange { .. } => 14,
         }
     }
 }

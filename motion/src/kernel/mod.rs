@@ -12,36 +12,48 @@
 //! cycle. Time only enters through `dt_s`; the kernel reads no clock, and `advance` does not
 //! allocate.
 //!
-//! # Motion sources, and where synchronised motion plugs in
+//! # Motion sources and synchronised motion
 //!
 //! What drives an axis is one value of the private `Source` enum held in the axis's running
-//! motion (position move, velocity, MC_Halt, MC_Stop, error stop ramp, homing). A coupled slave
-//! (MC_CamIn, MC_GearIn, MC_GearInPos) is one more variant, issued through [`Kernel::issue`] as
-//! one more [`MotionRequest`] variant, so buffer modes, command statuses, MC_Stop, ErrorStop and
-//! the FB output rules apply to it unchanged; `install` puts the axis in SynchronizedMotion.
-//! Its set point is computed in `advance` from the master's set values: the kernel advances
-//! axes in the order they were added, so a master added before its slave is read with this
-//! cycle's values (a runtime should add masters first; otherwise the slave sees the previous
-//! cycle's master). The cam should be referenced by an index into cams the kernel owns (as
-//! `Box<dyn CamCurve>` registered when the image loads), so that the running motion stays a
-//! plain copyable value and `advance` does not allocate. MC_CamOut and MC_GearOut replace the
-//! source with a velocity source at the slave's current velocity, already reached, which is
-//! ContinuousMotion.
+//! motion (position move, velocity, MC_Halt, MC_Stop, error stop ramp, homing, coupling). A
+//! coupled slave (MC_CamIn, MC_GearIn, MC_GearInPos) is issued through [`Kernel::issue`] as a
+//! [`MotionRequest::Cam`], [`MotionRequest::Gear`] or [`MotionRequest::GearInPos`], so buffer
+//! modes, command statuses, MC_Stop, ErrorStop and the FB output rules apply to it unchanged;
+//! `install` puts the axis in SynchronizedMotion. A coupling starts at the first `advance`
+//! after it took control (so a buffered coupling starts from the values it finds then): that
+//! `advance` reads the master's set values and the slave's, and every later one computes the
+//! slave's set point from the master's displacement in the cycle (see [`crate::sync`]). The
+//! kernel advances axes in the order they were added, so a master added before its slave is
+//! read with this cycle's values (a runtime should add masters first; otherwise the slave sees
+//! the previous cycle's master). Cams are registered once with [`Kernel::add_cam`] and owned by
+//! the kernel; a coupling refers to its cam by index, so the running motion stays a plain
+//! copyable value and `advance` does not allocate. [`Kernel::decouple`] (MC_CamOut, MC_GearOut)
+//! replaces the coupling with a velocity source at the slave's current velocity, already
+//! reached, which is ContinuousMotion with no command in control. [`Kernel::phase`]
+//! (MC_Phasing) runs a position profile of the phase shift inside the coupling. Overrides do not
+//! act on a coupled slave. A buffered command does not wait for a coupling, which never ends by
+//! itself: it takes over at once, as an aborting one would.
 
 mod axis_planning;
 mod axis_runtime;
+mod cams;
 pub mod command;
+mod coupling;
+mod coupling_checks;
 pub mod error;
 mod registry;
 pub mod snapshot;
+mod sync_api;
 mod validation;
 
 pub use command::{BufferMode, CommandId, CommandStatus, Dynamics, MotionRequest, PositionTarget};
 pub use error::{AXIS_ERROR_SOFTWARE_LIMIT, MotionError};
 pub use snapshot::AxisSnapshot;
+pub use sync_api::Decoupling;
 
 use crate::axis::{AxisConfig, AxisState, ConfigError, Overrides};
-use axis_runtime::{AxisRuntime, Source};
+use axis_runtime::{AxisRuntime, Source, SyncInputs};
+use cams::CamStore;
 use registry::Registry;
 use validation::{check_cycle, check_jerk, check_magnitude, check_position, validate_request};
 
@@ -54,6 +66,7 @@ pub struct AxisId(pub usize);
 pub struct Kernel {
     axes: Vec<AxisRuntime>,
     registry: Registry,
+    cams: CamStore,
 }
 
 impl Kernel {
@@ -141,7 +154,7 @@ impl Kernel {
     /// Switching on takes a Disabled axis to Standstill (Note 5); switching off takes any state
     /// but ErrorStop to Disabled (Note 2), stops the axis at once and aborts its commands.
     pub fn power(&mut self, axis: AxisId, enable: bool) -> Result<bool, MotionError> {
-        let Self { axes, registry } = self;
+        let Self { axes, registry, .. } = self;
         let runtime = axes
             .get_mut(axis.0)
             .ok_or(MotionError::UnknownAxis(axis.0))?;
@@ -201,7 +214,8 @@ impl Kernel {
         request: MotionRequest,
         buffer_mode: BufferMode,
     ) -> Result<CommandId, MotionError> {
-        let Self { axes, registry } = self;
+        self.check_coupling(axis, request)?;
+        let Self { axes, registry, .. } = self;
         let runtime = axes
             .get_mut(axis.0)
             .ok_or(MotionError::UnknownAxis(axis.0))?;
@@ -235,7 +249,7 @@ impl Kernel {
     /// that are refused end the command in Error (its FB shows the reason) and a moving axis
     /// brakes as MC_Halt would. A command that no longer runs is left alone.
     pub fn update(&mut self, id: CommandId, request: MotionRequest) {
-        let Self { axes, registry } = self;
+        let Self { axes, registry, .. } = self;
         let Some(runtime) = axes.iter_mut().find(|runtime| {
             runtime
                 .running
@@ -268,7 +282,7 @@ impl Kernel {
         deceleration: f64,
         jerk: f64,
     ) -> Result<CommandId, MotionError> {
-        let Self { axes, registry } = self;
+        let Self { axes, registry, .. } = self;
         let runtime = axes
             .get_mut(axis.0)
             .ok_or(MotionError::UnknownAxis(axis.0))?;
@@ -290,7 +304,7 @@ impl Kernel {
 
     /// MC_Stop.Execute went FALSE: the axis leaves Stopping as soon as it is at rest.
     pub fn release_stop(&mut self, id: CommandId) {
-        let Self { axes, registry } = self;
+        let Self { axes, registry, .. } = self;
         for runtime in axes.iter_mut() {
             let Some(running) = &mut runtime.running else {
                 continue;
@@ -313,7 +327,7 @@ impl Kernel {
     /// MC_Home on a virtual axis: from Standstill the axis goes to Homing at once and gets the
     /// reference `position` on the next cycle, which finishes the command.
     pub fn home(&mut self, axis: AxisId, position: f64) -> Result<CommandId, MotionError> {
-        let Self { axes, registry } = self;
+        let Self { axes, registry, .. } = self;
         let runtime = axes
             .get_mut(axis.0)
             .ok_or(MotionError::UnknownAxis(axis.0))?;
@@ -341,7 +355,7 @@ impl Kernel {
     /// Disabled (power off), once the error stop ramp has reached rest; in any other state it
     /// finishes at once without changing anything.
     pub fn reset(&mut self, axis: AxisId) -> Result<CommandId, MotionError> {
-        let Self { axes, registry } = self;
+        let Self { axes, registry, .. } = self;
         let runtime = axes
             .get_mut(axis.0)
             .ok_or(MotionError::UnknownAxis(axis.0))?;
@@ -429,7 +443,7 @@ impl Kernel {
     /// Raises an axis error, as a drive or limit fault would: every command on the axis ends
     /// in Error and the axis brakes to rest in ErrorStop (Note 1). `axis_error_id` must not be 0.
     pub fn inject_error(&mut self, axis: AxisId, axis_error_id: u16) -> Result<(), MotionError> {
-        let Self { axes, registry } = self;
+        let Self { axes, registry, .. } = self;
         let runtime = axes
             .get_mut(axis.0)
             .ok_or(MotionError::UnknownAxis(axis.0))?;
@@ -447,21 +461,36 @@ impl Kernel {
     /// Integrates one cycle of `dt_s` seconds on one axis.
     pub fn advance(&mut self, axis: AxisId, dt_s: f64) -> Result<(), MotionError> {
         check_cycle(dt_s)?;
-        let Self { axes, registry } = self;
-        let runtime = axes
-            .get_mut(axis.0)
-            .ok_or(MotionError::UnknownAxis(axis.0))?;
-        runtime.advance(dt_s, registry);
+        if axis.0 >= self.axes.len() {
+            return Err(MotionError::UnknownAxis(axis.0));
+        }
+        self.advance_index(axis.0, dt_s);
         Ok(())
     }
 
     /// Integrates one cycle of `dt_s` seconds on every axis, in the order they were added.
     pub fn advance_all(&mut self, dt_s: f64) -> Result<(), MotionError> {
         check_cycle(dt_s)?;
-        let Self { axes, registry } = self;
-        for runtime in axes.iter_mut() {
-            runtime.advance(dt_s, registry);
+        for index in 0..self.axes.len() {
+            self.advance_index(index, dt_s);
         }
         Ok(())
+    }
+
+    /// Integrates one cycle on the axis at `index`, giving a coupled slave its master's values.
+    fn advance_index(&mut self, index: usize, dt_s: f64) {
+        let Self {
+            axes,
+            registry,
+            cams,
+        } = self;
+        let master = axes
+            .get(index)
+            .and_then(AxisRuntime::coupled_master)
+            .and_then(|master| axes.get(master))
+            .map(AxisRuntime::master_view);
+        if let Some(runtime) = axes.get_mut(index) {
+            runtime.advance(dt_s, registry, SyncInputs { master, cams });
+        }
     }
 }

@@ -147,11 +147,22 @@ pub(crate) fn validate_request(
                 false,
             )?;
         }
+        // The kernel checks couplings against the master and the cams (`check_coupling`).
+        MotionRequest::Cam { .. }
+        | MotionRequest::Gear { .. }
+        | MotionRequest::GearInPos { .. } => {
+            return Ok(());
+        }
     }
     let dynamics = match request {
         MotionRequest::Position { dynamics, .. }
         | MotionRequest::Velocity { dynamics, .. }
         | MotionRequest::Halt { dynamics } => dynamics,
+        MotionRequest::Cam { .. }
+        | MotionRequest::Gear { .. }
+        | MotionRequest::GearInPos { .. } => {
+            return Ok(());
+        }
     };
     check_jerk(dynamics.jerk, config.max_jerk)
 }

@@ -110,6 +110,31 @@ impl TappetEvaluator {
             .map(|state| (state.track.id, state.output))
     }
 
+    /// Sets the initial value of track `track_id` and whether a restart returns to it
+    /// (`SMC_GetTappetValue.bInitValue` and `bSetInitValueAtReset`), and sets the track's output
+    /// to that value now, as the first call of SMC_GetTappetValue does. Returns FALSE when
+    /// there is no such track.
+    pub fn set_initial_value(
+        &mut self,
+        track_id: u16,
+        initial_value: bool,
+        reset_to_initial: bool,
+    ) -> bool {
+        match self
+            .tracks
+            .iter_mut()
+            .find(|state| state.track.id == track_id)
+        {
+            Some(state) => {
+                state.track.initial_value = initial_value;
+                state.track.reset_to_initial = reset_to_initial;
+                state.output = initial_value;
+                true
+            }
+            None => false,
+        }
+    }
+
     /// The switches of the last evaluated cycle.
     pub fn switches(&self) -> &[TappetSwitch] {
         &self.switches

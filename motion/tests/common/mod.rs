@@ -5,6 +5,8 @@
 use motion::axis::AxisConfig;
 use motion::kernel::{AxisId, AxisSnapshot, Kernel};
 
+pub mod sync;
+
 /// The task interval of the simulations: 1 ms.
 pub const DT_S: f64 = 0.001;
 

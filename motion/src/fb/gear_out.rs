@@ -1,0 +1,37 @@
+//! MC_GearOut.
+
+use crate::fb::decouple::DecoupleCore;
+use crate::kernel::{AxisId, Decoupling, Kernel, MotionError};
+
+/// MC_GearOut: ends the MC_GearIn or MC_GearInPos coupling of the slave at the rising edge,
+/// like [`crate::fb::CamOut`] ends a cam: the slave keeps its velocity in ContinuousMotion.
+#[derive(Clone, Debug, Default)]
+pub struct GearOut {
+    /// `Execute`: a rising edge decouples.
+    pub execute: bool,
+    /// `Done`: the slave is decoupled.
+    pub done: bool,
+    /// `Busy`: never TRUE after a call, since decoupling happens at once.
+    pub busy: bool,
+    /// `Error`: there was no gear coupling to end.
+    pub error: bool,
+    /// `ErrorID`: the [`MotionError::id`] of the error, 0 without error.
+    pub error_id: u16,
+    /// The error behind `ErrorID`, for a readable message.
+    pub error_cause: Option<MotionError>,
+    core: DecoupleCore,
+}
+
+impl GearOut {
+    /// One call of the instance for `slave`.
+    pub fn call(&mut self, kernel: &mut Kernel, slave: AxisId) {
+        let outputs = self
+            .core
+            .call(self.execute, kernel, slave, Decoupling::GearOut);
+        self.done = outputs.done;
+        self.busy = outputs.busy;
+        self.error = outputs.error.is_some();
+        self.error_id = outputs.error.map_or(0, |error| error.id());
+        self.error_cause = outputs.error;
+    }
+}
