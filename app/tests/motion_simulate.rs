@@ -253,3 +253,141 @@ END_IF",
     );
     assert_eq!(number(&values, "Master.fPositionPeriod"), 360.0);
 }
+
+/// The example's own motion program with the master turning from the first cycle instead of
+/// waiting for the start button.
+fn example_knife_turning() -> tempfile::TempDir {
+    let dir = tempfile::tempdir().unwrap();
+    assets::copy_example_project(dir.path()).unwrap();
+    let program = dir.path().join("application/MotionControl.st");
+    let text = fs::read_to_string(&program)
+        .unwrap()
+        .replace(
+            "xRunning := GVL_Machine.eMachineState = E_MachineState.Running;",
+            "xRunning := TRUE;",
+        )
+        .replace("Acceleration := 360.0", "Acceleration := 3600.0");
+    fs::write(&program, text).unwrap();
+    dir
+}
+
+#[test]
+fn the_example_knife_follows_its_cam_and_the_tappets_switch_the_outputs() {
+    let dir = example_knife_turning();
+    let watch = [
+        "Master.fActPosition",
+        "Knife.fActPosition",
+        "Knife.nAxisState",
+        "GVL_IO.xGlueValve",
+        "MotionControl.fbKnifeCam.InSync",
+    ];
+    // 400 cycles of 2 ms at 90 deg/s: the master is near 72 deg, between the glue valve's
+    // tappets at 30 (on) and 90 (off).
+    let early = simulate(&dir, 400, &watch);
+    let master = number(&early, "Master.fActPosition");
+    assert!((60.0..80.0).contains(&master), "{early:?}");
+    assert!(boolean(&early, "GVL_IO.xGlueValve"), "{early:?}");
+    assert!(boolean(&early, "MotionControl.fbKnifeCam.InSync"));
+    // SMC_AXIS_STATE.synchronized_motion.
+    assert_eq!(number(&early, "Knife.nAxisState"), 6.0);
+    // 1000 cycles: near 180 deg, on the cam's line from (120, 60) to (240, 180), past the
+    // tappet that closes the valve.
+    let later = simulate(&dir, 1000, &watch);
+    let master = number(&later, "Master.fActPosition");
+    assert!((150.0..200.0).contains(&master), "{later:?}");
+    let knife = number(&later, "Knife.fActPosition");
+    assert!((knife - (60.0 + master - 120.0)).abs() < 1e-6, "{later:?}");
+    assert!(!boolean(&later, "GVL_IO.xGlueValve"), "{later:?}");
+}
+
+/// A modulo axis in `MotionTask` with period `period_units`.
+fn modulo_axis(name: &str, period_units: f64) -> String {
+    linear_axis(name).replace(
+        "unit = \"mm\"\n",
+        &format!("unit = \"mm\"\nmodulo_period = {period_units:?}\n"),
+    )
+}
+
+#[test]
+fn t10_and_t1_an_invert_tappet_toggles_once_per_period_and_end_of_profile_pulses() {
+    let dir = project(
+        &[modulo_axis("Drum", 10.0), modulo_axis("Follower", 10.0)],
+        &[
+            ("fbPowerDrum", "MC_Power"),
+            ("fbPowerFollower", "MC_Power"),
+            ("fbTurn", "MC_MoveVelocity"),
+            ("fbSelect", "MC_CamTableSelect"),
+            ("fbCam", "MC_CamIn"),
+            ("fbTappet", "SMC_GetTappetValue"),
+            ("xLast", "BOOL"),
+            ("iToggles", "INT"),
+            ("iEndCycles", "INT"),
+        ],
+        "fbPowerDrum(Axis := Drum, Enable := TRUE);
+fbPowerFollower(Axis := Follower, Enable := TRUE);
+fbTurn(Axis := Drum, Execute := fbPowerDrum.Status, Velocity := 2.0, Acceleration := 10.0,
+    Deceleration := 10.0, Direction := MC_DIRECTION.positive);
+fbSelect(Master := Drum, Slave := Follower, CamTable := CAM_T10, Execute := fbPowerFollower.Status,
+    Periodic := TRUE, MasterAbsolute := TRUE, SlaveAbsolute := TRUE);
+fbCam(Master := Drum, Slave := Follower, Execute := fbSelect.Done,
+    CamTableID := fbSelect.CamTableID);
+fbTappet(Tappets := fbCam.Tappets, iID := 1);
+IF fbTappet.bTappet <> xLast THEN
+    iToggles := iToggles + 1;
+END_IF
+xLast := fbTappet.bTappet;
+IF fbCam.EndOfProfile THEN
+    iEndCycles := iEndCycles + 1;
+END_IF",
+    );
+    let cam = "master = { start = 0.0, end = 10.0, unit = \"mm\" }
+slave = { start = 0.0, end = 10.0, unit = \"mm\" }
+
+[profile]
+kind = \"segments\"
+start = { master = 0.0, slave = 0.0, velocity = 1.0, acceleration = 0.0, jerk = 0.0 }
+
+[[profile.segment]]
+law = \"line\"
+end = { master = 10.0, slave = 10.0, velocity = 1.0, acceleration = 0.0, jerk = 0.0 }
+
+[[track]]
+id = 1
+
+[[track.tappet]]
+position = 8.0
+on_positive = \"invert\"
+on_negative = \"invert\"
+";
+    fs::write(dir.path().join("application/CAM_T10.cam.toml"), cam).unwrap();
+    let manifest = dir.path().join("rivet.toml");
+    let text = fs::read_to_string(&manifest).unwrap().replace(
+        "    \"Motion/CAM_Knife.cam.toml\",\n",
+        "    \"Motion/CAM_Knife.cam.toml\",\n    \"CAM_T10.cam.toml\",\n",
+    );
+    fs::write(&manifest, text).unwrap();
+    // 20 s of 2 ms cycles: the drum (2 mm/s after a 0.2 s ramp) passes 8 at about 4.1 s and
+    // then every 5 s (9.1, 14.1, 19.1), and wraps at 10 at about 5.1, 10.1 and 15.1 s.
+    let values = simulate(
+        &dir,
+        10_000,
+        &[
+            "MotionControl.iToggles",
+            "MotionControl.iEndCycles",
+            "Follower.fActPosition",
+            "Drum.fActPosition",
+        ],
+    );
+    assert_eq!(number(&values, "MotionControl.iToggles"), 4.0, "{values:?}");
+    // EndOfProfile is one cycle per period, never longer.
+    assert_eq!(
+        number(&values, "MotionControl.iEndCycles"),
+        3.0,
+        "{values:?}"
+    );
+    let (drum, follower) = (
+        number(&values, "Drum.fActPosition"),
+        number(&values, "Follower.fActPosition"),
+    );
+    assert!((drum - follower).abs() < 1e-6, "{values:?}");
+}

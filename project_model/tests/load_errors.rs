@@ -94,13 +94,17 @@ fn a_folder_without_manifest_is_reported() {
 #[test]
 fn malformed_toml_names_file_and_line() {
     let dir = example_copy();
-    replace_in(
-        &dir.path().join("rivet.toml"),
-        "priority = 0",
-        "priority = ",
-    );
+    let manifest = dir.path().join("rivet.toml");
+    // The line of the first `priority = 0`, 1-based, wherever the example has it.
+    let line = fs::read_to_string(&manifest)
+        .unwrap()
+        .lines()
+        .position(|line| line.contains("priority = 0"))
+        .unwrap()
+        + 1;
+    replace_in(&manifest, "priority = 0", "priority = ");
     let error = load_fails(dir.path());
-    assert_error(&error, dir.path(), "rivet.toml", Some(31), "expected");
+    assert_error(&error, dir.path(), "rivet.toml", Some(line), "expected");
 }
 
 #[test]

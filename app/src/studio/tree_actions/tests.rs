@@ -106,7 +106,7 @@ fn a_duplicated_folder_gives_every_object_in_it_a_new_name() {
     );
     assert_eq!(
         names(&project, &["Diagnostics_1".into()]),
-        ["TRC_Conveyor_1", "WATCH_Machine_1"]
+        ["TRC_Conveyor_1", "TRC_Knife_1", "WATCH_Machine_1"]
     );
     assert!(matches!(
         project.application.object("TRC_Conveyor"),

@@ -27,17 +27,18 @@ impl Members {
         }
     }
 
-    /// The offset of `nAxisId` in the image's `AXIS_REF`.
-    pub(super) fn axis_id_offset(image: &ProgramImage) -> Option<u32> {
-        image.types.iter().find_map(|ty| match ty {
+    /// The offset of `field` in the image's structure `ty` (`AXIS_REF.nAxisId`), if the image
+    /// has that structure.
+    pub(super) fn field_offset(image: &ProgramImage, ty: &str, field: &str) -> Option<u32> {
+        image.types.iter().find_map(|candidate| match candidate {
             TypeDef::Struct {
                 name,
                 kind: StructKind::Struct,
                 members,
                 ..
-            } if name == "AXIS_REF" => members
+            } if name == ty => members
                 .iter()
-                .find(|member| member.name.eq_ignore_ascii_case("nAxisId"))
+                .find(|member| member.name.eq_ignore_ascii_case(field))
                 .map(|member| member.offset),
             _ => None,
         })
@@ -55,21 +56,189 @@ impl Members {
     }
 }
 
+/// Offsets of the library structures' fields a native block reads or writes through its
+/// members; `None` when the image has no such structure (no block that uses it).
+#[derive(Clone, Copy, Debug, Default)]
+pub(super) struct LibraryOffsets {
+    /// `AXIS_REF.nAxisId`.
+    pub(super) axis_id: Option<u32>,
+    /// `MC_CAM_REF.nCamId`.
+    pub(super) cam_id: Option<u32>,
+    /// `MC_CAM_ID.nCamId`, `nSelection`, `bPeriodic`, `bMasterAbsolute`, `bSlaveAbsolute`.
+    pub(super) selection: Option<[u32; 5]>,
+    /// `SMC_TappetData.nCoupling`.
+    pub(super) coupling: Option<u32>,
+}
+
+impl LibraryOffsets {
+    /// The offsets in `image`'s type table.
+    pub(super) fn of(image: &ProgramImage) -> Self {
+        let field = |ty: &str, name: &str| Members::field_offset(image, ty, name);
+        let selection = [
+            "nCamId",
+            "nSelection",
+            "bPeriodic",
+            "bMasterAbsolute",
+            "bSlaveAbsolute",
+        ]
+        .map(|name| field("MC_CAM_ID", name));
+        Self {
+            axis_id: field("AXIS_REF", "nAxisId"),
+            cam_id: field("MC_CAM_REF", "nCamId"),
+            selection: match selection {
+                [Some(a), Some(b), Some(c), Some(d), Some(e)] => Some([a, b, c, d, e]),
+                _ => None,
+            },
+            coupling: field("SMC_TappetData", "nCoupling"),
+        }
+    }
+}
+
+/// A library structure the image lacks although a native block needs it.
+fn missing(what: &str) -> FaultKind {
+    FaultKind::Internal(format!("the image has no {what} for its motion blocks"))
+}
+
 /// One native call's view of its instance.
 pub(super) struct Io<'x, 'a> {
     x: &'x mut Exec<'a>,
     members: &'x Members,
-    axis_id_offset: u32,
+    library: LibraryOffsets,
 }
 
 impl<'x, 'a> Io<'x, 'a> {
     /// A view of the current instance of `x`.
-    pub(super) fn new(x: &'x mut Exec<'a>, members: &'x Members, axis_id_offset: u32) -> Self {
+    pub(super) fn new(x: &'x mut Exec<'a>, members: &'x Members, library: LibraryOffsets) -> Self {
         Self {
             x,
             members,
-            axis_id_offset,
+            library,
         }
+    }
+
+    /// The absolute offset of the current instance.
+    pub(super) fn instance(&self) -> usize {
+        self.x.bases[usize::from(INSTANCE)]
+    }
+
+    fn absolute(at: usize) -> Addr {
+        Addr {
+            base: ABSOLUTE,
+            offset: at as u32,
+        }
+    }
+
+    /// A DINT member.
+    pub(super) fn dint(&self, name: &str) -> Result<i32, FaultKind> {
+        self.x.get::<i32>(self.addr(name)?)
+    }
+
+    /// A UDINT member.
+    pub(super) fn udint(&self, name: &str) -> Result<u32, FaultKind> {
+        self.x.get::<u32>(self.addr(name)?)
+    }
+
+    /// The absolute offset of what the VAR_IN_OUT `name` points to, checked for `size` bytes;
+    /// `None` when it is not connected.
+    fn target(&self, name: &str, size: usize) -> Result<Option<usize>, FaultKind> {
+        let pointer = self.x.get::<u64>(self.addr(name)?)?;
+        if pointer == 0 {
+            return Ok(None);
+        }
+        self.x.deref(pointer, size).map(Some)
+    }
+
+    /// The cam table (`nCamId`) the VAR_IN_OUT `name` points to; `None` when it is not
+    /// connected.
+    pub(super) fn cam(&self, name: &str) -> Result<Option<u32>, FaultKind> {
+        let offset = self.library.cam_id.ok_or_else(|| missing("MC_CAM_REF"))? as usize;
+        let Some(at) = self.target(name, offset + 4)? else {
+            return Ok(None);
+        };
+        self.x.get::<u32>(Self::absolute(at + offset)).map(Some)
+    }
+
+    /// The selection of the `MC_CAM_ID` member `name`.
+    pub(super) fn selection(&self, name: &str) -> Result<u32, FaultKind> {
+        let fields = self.library.selection.ok_or_else(|| missing("MC_CAM_ID"))?;
+        let base = self.addr(name)?;
+        self.x.get::<u32>(Addr {
+            base: base.base,
+            offset: base.offset + fields[1],
+        })
+    }
+
+    /// Writes the `MC_CAM_ID` member `name`: the cam, the selection and its three options.
+    pub(super) fn set_selection(
+        &mut self,
+        name: &str,
+        cam: u32,
+        selection: u32,
+        options: [bool; 3],
+    ) -> Result<(), FaultKind> {
+        let fields = self.library.selection.ok_or_else(|| missing("MC_CAM_ID"))?;
+        let base = self.addr(name)?;
+        let at = |field: u32| Addr {
+            base: base.base,
+            offset: base.offset + field,
+        };
+        self.x.set::<u32>(at(fields[0]), cam)?;
+        self.x.set::<u32>(at(fields[1]), selection)?;
+        for (field, value) in fields[2..].iter().zip(options) {
+            self.x.set::<u8>(at(*field), u8::from(value))?;
+        }
+        Ok(())
+    }
+
+    /// The coupling of the `SMC_TappetData` member `name`: the absolute offset of the MC_CamIn
+    /// instance that filled it, if any.
+    pub(super) fn coupling(&self, name: &str) -> Result<Option<usize>, FaultKind> {
+        let field = self
+            .library
+            .coupling
+            .ok_or_else(|| missing("SMC_TappetData"))?;
+        let base = self.addr(name)?;
+        let value = self.x.get::<u32>(Addr {
+            base: base.base,
+            offset: base.offset + field,
+        })?;
+        Ok(value.checked_sub(1).map(|at| at as usize))
+    }
+
+    /// Fills the `SMC_TappetData` member `name` with the current instance, an MC_CamIn.
+    pub(super) fn set_coupling(&mut self, name: &str) -> Result<(), FaultKind> {
+        let field = self
+            .library
+            .coupling
+            .ok_or_else(|| missing("SMC_TappetData"))?;
+        let base = self.addr(name)?;
+        let value = self.instance() as u32 + 1;
+        self.x.set::<u32>(
+            Addr {
+                base: base.base,
+                offset: base.offset + field,
+            },
+            value,
+        )
+    }
+
+    /// Writes element `index` (1-based) of the BOOL array the VAR_IN_OUT `name` points to,
+    /// which has `length` elements; an index outside it is ignored.
+    pub(super) fn set_array_bool(
+        &mut self,
+        name: &str,
+        length: usize,
+        index: usize,
+        value: bool,
+    ) -> Result<(), FaultKind> {
+        if index == 0 || index > length {
+            return Ok(());
+        }
+        if let Some(at) = self.target(name, length)? {
+            self.x
+                .set::<u8>(Self::absolute(at + index - 1), u8::from(value))?;
+        }
+        Ok(())
     }
 
     fn addr(&self, name: &str) -> Result<Addr, FaultKind> {
@@ -115,15 +284,11 @@ impl<'x, 'a> Io<'x, 'a> {
     /// The axis the VAR_IN_OUT `name` points to; `None` when it is not connected or its
     /// `nAxisId` names no axis of the image.
     pub(super) fn axis(&self, name: &str) -> Result<Option<AxisId>, FaultKind> {
-        let pointer = self.x.get::<u64>(self.addr(name)?)?;
-        if pointer == 0 {
+        let offset = self.library.axis_id.ok_or_else(|| missing("AXIS_REF"))? as usize;
+        let Some(at) = self.target(name, offset + 4)? else {
             return Ok(None);
-        }
-        let at = self.x.deref(pointer, self.axis_id_offset as usize + 4)?;
-        let id = self.x.get::<u32>(Addr {
-            base: ABSOLUTE,
-            offset: (at + self.axis_id_offset as usize) as u32,
-        })?;
+        };
+        let id = self.x.get::<u32>(Self::absolute(at + offset))?;
         Ok(self.x.motion.axis(id as usize))
     }
 

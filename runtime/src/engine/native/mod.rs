@@ -3,20 +3,22 @@
 //! instance's inputs by member name, calls the `motion` function block kept for that instance,
 //! and writes its outputs back.
 
+mod cams;
 mod io;
 mod single_axis;
 mod state;
+mod synchronised;
 
 use program_image::{ProgramImage, StructKind, TypeDef};
 
-use super::exec::{Exec, INSTANCE};
+use super::exec::Exec;
 use super::fault::FaultKind;
 use super::lower::{Flow, Op};
 
 pub use state::MotionLoadError;
 pub(crate) use state::MotionState;
 
-use io::{Io, Members};
+use io::{Io, LibraryOffsets, Members};
 
 /// The native blocks this runtime has.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -37,6 +39,16 @@ pub(crate) enum NativeBlock {
     ReadActualVelocity,
     ReadStatus,
     ReadAxisError,
+    CamTableSelect,
+    CamIn,
+    CamOut,
+    GearIn,
+    GearOut,
+    GearInPos,
+    Phasing,
+    CamRegister,
+    GetTappetValue,
+    GetCamSlaveSetPosition,
 }
 
 impl NativeBlock {
@@ -59,8 +71,36 @@ impl NativeBlock {
             "MC_READACTUALVELOCITY" => Self::ReadActualVelocity,
             "MC_READSTATUS" => Self::ReadStatus,
             "MC_READAXISERROR" => Self::ReadAxisError,
+            "MC_CAMTABLESELECT" => Self::CamTableSelect,
+            "MC_CAMIN" => Self::CamIn,
+            "MC_CAMOUT" => Self::CamOut,
+            "MC_GEARIN" => Self::GearIn,
+            "MC_GEAROUT" => Self::GearOut,
+            "MC_GEARINPOS" => Self::GearInPos,
+            "MC_PHASING" => Self::Phasing,
+            "SMC_CAMREGISTER" => Self::CamRegister,
+            "SMC_GETTAPPETVALUE" => Self::GetTappetValue,
+            "SMC_GETCAMSLAVESETPOSITION" => Self::GetCamSlaveSetPosition,
             _ => return None,
         })
+    }
+
+    /// Whether the block works on a master and a slave, a cam or a coupling rather than on
+    /// one `Axis`.
+    fn is_synchronised(self) -> bool {
+        matches!(
+            self,
+            Self::CamTableSelect
+                | Self::CamIn
+                | Self::CamOut
+                | Self::GearIn
+                | Self::GearOut
+                | Self::GearInPos
+                | Self::Phasing
+                | Self::CamRegister
+                | Self::GetTappetValue
+                | Self::GetCamSlaveSetPosition
+        )
     }
 }
 
@@ -82,10 +122,9 @@ pub(crate) fn lower(block: &str, pou: &str, image: &ProgramImage) -> Result<Op, 
             _ => None,
         })
         .ok_or_else(|| format!("the instance type of '{pou}' is missing"))?;
-    let axis_id = Members::axis_id_offset(image)
-        .ok_or_else(|| "the image has no AXIS_REF type with nAxisId".to_owned())?;
+    let library = LibraryOffsets::of(image);
     Ok(Box::new(move |x: &mut Exec<'_>| {
-        call(x, native, &members, axis_id).map_err(Box::new)?;
+        call(x, native, &members, library).map_err(Box::new)?;
         Ok(Flow::Next)
     }))
 }
@@ -95,9 +134,13 @@ fn call(
     x: &mut Exec<'_>,
     native: NativeBlock,
     members: &Members,
-    axis_id_offset: u32,
+    library: LibraryOffsets,
 ) -> Result<(), FaultKind> {
-    let instance = x.bases[usize::from(INSTANCE)];
-    let mut io = Io::new(x, members, axis_id_offset);
-    single_axis::call(&mut io, native, instance)
+    let mut io = Io::new(x, members, library);
+    let instance = io.instance();
+    if native.is_synchronised() {
+        synchronised::call(&mut io, native, instance)
+    } else {
+        single_axis::call(&mut io, native, instance)
+    }
 }

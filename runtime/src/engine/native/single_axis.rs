@@ -385,6 +385,9 @@ pub(super) fn call(
             }
             Ok(())
         }
+        other => Err(FaultKind::Internal(format!(
+            "{other:?} is not a single-axis block"
+        ))),
     }
 }
 

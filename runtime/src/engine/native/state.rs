@@ -4,12 +4,15 @@
 use std::collections::HashMap;
 
 use motion::axis::{AxisConfig, SoftwareLimits};
+use motion::fb::get_tappet_value::GetTappetValue;
 use motion::fb::{
-    Halt, Home, Jog, MoveAbsolute, MoveAdditive, MoveRelative, MoveVelocity, Power,
-    ReadActualPosition, ReadActualVelocity, ReadAxisError, ReadStatus, Reset, SetOverride,
-    SetPosition, Stop,
+    CamIn, CamOut, CamRegister, CamTableSelect, Halt, Home, Jog, MoveAbsolute, MoveAdditive,
+    MoveRelative, MoveVelocity, Power, ReadActualPosition, ReadActualVelocity, ReadAxisError,
+    ReadStatus, Reset, SetOverride, SetPosition, Stop,
 };
+use motion::fb::{GearIn, GearInPos, GearOut, GetCamSlaveSetPosition, Phasing};
 use motion::kernel::{AxisId, Kernel};
+use motion::sync::CamId;
 use program_image::{ProgramImage, StructKind, TypeDef};
 
 /// One axis of the image in the kernel.
@@ -42,6 +45,8 @@ struct AxisRefLayout {
 pub(crate) struct MotionState {
     kernel: Kernel,
     axes: Vec<AxisLink>,
+    /// The kernel's cam for each `nCamId`.
+    cams: Vec<CamId>,
     axis_ref: AxisRefLayout,
     instances: HashMap<usize, Instance>,
     last_cycle_ns: Vec<Option<i64>>,
@@ -49,9 +54,10 @@ pub(crate) struct MotionState {
 
 /// Why an image's motion section cannot run.
 #[derive(Debug, thiserror::Error)]
-#[error("axis '{axis}': {message}")]
+#[error("{what}: {message}")]
 pub struct MotionLoadError {
-    axis: String,
+    /// The axis or cam, as "axis 'Master'".
+    what: String,
     message: String,
 }
 
@@ -73,7 +79,7 @@ impl MotionState {
                     max_jerk: axis.max_jerk,
                 };
                 let id = kernel.add_axis(config).map_err(|error| MotionLoadError {
-                    axis: axis.name.clone(),
+                    what: format!("axis '{}'", axis.name),
                     message: error.to_string(),
                 })?;
                 axes.push(AxisLink {
@@ -83,9 +89,22 @@ impl MotionState {
                 });
             }
         }
+        let mut cams = Vec::new();
+        for cam in image.motion.iter().flat_map(|section| &section.cams) {
+            let failed = |message: String| MotionLoadError {
+                what: format!("cam table '{}'", cam.name),
+                message,
+            };
+            let curve = super::cams::curve_of(cam).map_err(failed)?;
+            let id = kernel
+                .add_cam(curve, super::cams::tracks_of(cam))
+                .map_err(|error| failed(error.to_string()))?;
+            cams.push(id);
+        }
         Ok(Self {
             kernel,
             axes,
+            cams,
             axis_ref: axis_ref_layout(image),
             instances: HashMap::new(),
             last_cycle_ns: vec![None; image.tasks.len()],
@@ -95,6 +114,36 @@ impl MotionState {
     /// The kernel's axis for `nAxisId`.
     pub(crate) fn axis(&self, id: usize) -> Option<AxisId> {
         self.axes.get(id).map(|link| link.id)
+    }
+
+    /// The kernel's cam for `nCamId`.
+    pub(crate) fn cam(&self, id: u32) -> Option<CamId> {
+        self.cams.get(id as usize).copied()
+    }
+
+    /// The function block kept for the instance at `instance`, taken out (a new one if there
+    /// was none) so that it can be called with another instance's state; give it back with
+    /// [`MotionState::put`].
+    pub(super) fn take<T: Kept>(&mut self, instance: usize) -> T {
+        match self
+            .instances
+            .remove(&instance)
+            .as_mut()
+            .and_then(T::unwrap)
+        {
+            Some(block) => std::mem::take(block),
+            None => T::default(),
+        }
+    }
+
+    /// Keeps `block` for the instance at `instance`.
+    pub(super) fn put<T: Kept>(&mut self, instance: usize, block: T) {
+        self.instances.insert(instance, block.wrap());
+    }
+
+    /// The MC_CamIn kept for the instance at `instance`, if that instance is one.
+    pub(super) fn cam_in(&mut self, instance: usize) -> Option<&mut CamIn> {
+        self.instances.get_mut(&instance).and_then(CamIn::unwrap)
     }
 
     /// The kernel and the function block kept for the instance at `instance` (an absolute
@@ -255,4 +304,14 @@ kept!(
     ReadActualVelocity,
     ReadStatus,
     ReadAxisError,
+    CamTableSelect,
+    CamIn,
+    CamOut,
+    GearIn,
+    GearOut,
+    GearInPos,
+    Phasing,
+    CamRegister,
+    GetTappetValue,
+    GetCamSlaveSetPosition,
 );

@@ -1,0 +1,393 @@
+//! The adapters of the synchronised blocks: cam selection and coupling, gearing, phasing, and
+//! the tappet blocks, which work on a master and a slave, a cam table or an MC_CamIn's tappets.
+
+use motion::fb::get_tappet_value::GetTappetValue;
+use motion::fb::{
+    CamIn, CamOut, CamRegister, CamTableSelect, GearIn, GearInPos, GearOut, GetCamSlaveSetPosition,
+    Phasing,
+};
+use motion::kernel::{AxisId, BufferMode};
+use motion::sync::{CamTableId, PhasingMode, StartMode};
+
+use super::NativeBlock;
+use super::io::Io;
+use crate::engine::fault::FaultKind;
+
+/// `ErrorID` for a VAR_IN_OUT that names no axis (`docs/motion.md` §5).
+const UNKNOWN_AXIS: u16 = 9;
+/// `ErrorID` for a VAR_IN_OUT that names no cam table.
+const UNKNOWN_CAM: u16 = 13;
+/// The length of `SMC_CamRegister.bTappet` (CODESYS `MAX_NUM_TAPPETS`).
+const MAX_NUM_TAPPETS: usize = 512;
+
+/// Writes the outputs every synchronised block has.
+fn status(io: &mut Io<'_, '_>, busy: bool, error: bool, error_id: u16) -> Result<(), FaultKind> {
+    io.set_bool("Busy", busy)?;
+    io.set_bool("Error", error)?;
+    io.set_word("ErrorID", error_id)
+}
+
+/// Writes `Active` and `CommandAborted` of a block that controls the slave.
+fn control(io: &mut Io<'_, '_>, active: bool, aborted: bool) -> Result<(), FaultKind> {
+    io.set_bool("Active", active)?;
+    io.set_bool("CommandAborted", aborted)
+}
+
+fn buffer_mode(code: i16) -> BufferMode {
+    match code {
+        1 => BufferMode::Buffered,
+        2 => BufferMode::BlendingLow,
+        3 => BufferMode::BlendingPrevious,
+        4 => BufferMode::BlendingNext,
+        5 => BufferMode::BlendingHigh,
+        _ => BufferMode::Aborting,
+    }
+}
+
+fn start_mode(code: i16) -> StartMode {
+    match code {
+        1 => StartMode::Relative,
+        2 => StartMode::RampIn,
+        3 => StartMode::RampInPositive,
+        4 => StartMode::RampInNegative,
+        _ => StartMode::Absolute,
+    }
+}
+
+/// The master and the slave, or `None` after writing the unknown-axis error.
+fn axes(io: &mut Io<'_, '_>) -> Result<Option<(AxisId, AxisId)>, FaultKind> {
+    match (io.axis("Master")?, io.axis("Slave")?) {
+        (Some(master), Some(slave)) => Ok(Some((master, slave))),
+        _ => {
+            status(io, false, true, UNKNOWN_AXIS)?;
+            Ok(None)
+        }
+    }
+}
+
+/// The slave alone, or `None` after writing the unknown-axis error.
+fn slave(io: &mut Io<'_, '_>) -> Result<Option<AxisId>, FaultKind> {
+    match io.axis("Slave")? {
+        Some(slave) => Ok(Some(slave)),
+        None => {
+            status(io, false, true, UNKNOWN_AXIS)?;
+            Ok(None)
+        }
+    }
+}
+
+/// Runs `native` on the instance at `instance`.
+pub(super) fn call(
+    io: &mut Io<'_, '_>,
+    native: NativeBlock,
+    instance: usize,
+) -> Result<(), FaultKind> {
+    match native {
+        NativeBlock::CamTableSelect => cam_table_select(io, instance),
+        NativeBlock::CamIn => cam_in(io, instance),
+        NativeBlock::CamOut | NativeBlock::GearOut => {
+            let Some(slave) = slave(io)? else {
+                return Ok(());
+            };
+            let execute = io.bool("Execute")?;
+            let (done, busy, error, error_id) = if native == NativeBlock::CamOut {
+                let (kernel, fb) = io.motion().block::<CamOut>(instance);
+                fb.execute = execute;
+                fb.call(kernel, slave);
+                (fb.done, fb.busy, fb.error, fb.error_id)
+            } else {
+                let (kernel, fb) = io.motion().block::<GearOut>(instance);
+                fb.execute = execute;
+                fb.call(kernel, slave);
+                (fb.done, fb.busy, fb.error, fb.error_id)
+            };
+            io.set_bool("Done", done)?;
+            status(io, busy, error, error_id)
+        }
+        NativeBlock::GearIn => {
+            let Some((master, slave)) = axes(io)? else {
+                return Ok(());
+            };
+            let execute = io.bool("Execute")?;
+            let ratio = (io.dint("RatioNumerator")?, io.udint("RatioDenominator")?);
+            let dynamics = (
+                io.lreal("Acceleration")?,
+                io.lreal("Deceleration")?,
+                io.lreal("Jerk")?,
+            );
+            let mode = buffer_mode(io.int("BufferMode")?);
+            let outputs = {
+                let (kernel, fb) = io.motion().block::<GearIn>(instance);
+                fb.execute = execute;
+                (fb.ratio_numerator, fb.ratio_denominator) = ratio;
+                (fb.acceleration, fb.deceleration, fb.jerk) = dynamics;
+                fb.buffer_mode = mode;
+                fb.call(kernel, master, slave);
+                (
+                    fb.in_gear,
+                    fb.busy,
+                    fb.active,
+                    fb.command_aborted,
+                    fb.error,
+                    fb.error_id,
+                )
+            };
+            io.set_bool("InGear", outputs.0)?;
+            control(io, outputs.2, outputs.3)?;
+            status(io, outputs.1, outputs.4, outputs.5)
+        }
+        NativeBlock::GearInPos => {
+            let Some((master, slave)) = axes(io)? else {
+                return Ok(());
+            };
+            let execute = io.bool("Execute")?;
+            let numerator = io.dint("RatioNumerator")?;
+            // A negative denominator is no ratio: 0 makes the block refuse it.
+            let denominator = u32::try_from(io.dint("RatioDenominator")?).unwrap_or(0);
+            let positions = (
+                io.lreal("MasterSyncPosition")?,
+                io.lreal("SlaveSyncPosition")?,
+                io.lreal("MasterStartDistance")?,
+            );
+            let mode = buffer_mode(io.int("BufferMode")?);
+            let outputs = {
+                let (kernel, fb) = io.motion().block::<GearInPos>(instance);
+                fb.execute = execute;
+                (fb.ratio_numerator, fb.ratio_denominator) = (numerator, denominator);
+                (
+                    fb.master_sync_position,
+                    fb.slave_sync_position,
+                    fb.master_start_distance,
+                ) = positions;
+                fb.buffer_mode = mode;
+                fb.call(kernel, master, slave);
+                (
+                    fb.start_sync,
+                    fb.in_sync,
+                    fb.busy,
+                    fb.active,
+                    fb.command_aborted,
+                    fb.error,
+                    fb.error_id,
+                )
+            };
+            io.set_bool("StartSync", outputs.0)?;
+            io.set_bool("InSync", outputs.1)?;
+            control(io, outputs.3, outputs.4)?;
+            status(io, outputs.2, outputs.5, outputs.6)
+        }
+        NativeBlock::Phasing => {
+            let Some((master, slave)) = axes(io)? else {
+                return Ok(());
+            };
+            let execute = io.bool("Execute")?;
+            let shift = io.lreal("PhaseShift")?;
+            let dynamics = (
+                io.lreal("Velocity")?,
+                io.lreal("Acceleration")?,
+                io.lreal("Deceleration")?,
+                io.lreal("Jerk")?,
+            );
+            let outputs = {
+                let (kernel, fb) = io.motion().block::<Phasing>(instance);
+                fb.execute = execute;
+                // CODESYS's MC_Phasing sets the phase shift absolutely.
+                fb.mode = PhasingMode::Absolute;
+                fb.phase_shift = shift;
+                (fb.velocity, fb.acceleration, fb.deceleration, fb.jerk) = dynamics;
+                fb.call(kernel, master, slave);
+                (
+                    fb.done,
+                    fb.busy,
+                    fb.active,
+                    fb.command_aborted,
+                    fb.error,
+                    fb.error_id,
+                )
+            };
+            io.set_bool("Done", outputs.0)?;
+            control(io, outputs.2, outputs.3)?;
+            status(io, outputs.1, outputs.4, outputs.5)
+        }
+        NativeBlock::CamRegister => cam_register(io, instance),
+        NativeBlock::GetTappetValue => get_tappet_value(io, instance),
+        NativeBlock::GetCamSlaveSetPosition => {
+            let Some((master, slave)) = axes(io)? else {
+                return Ok(());
+            };
+            let enable = io.bool("Enable")?;
+            let scaling = (
+                io.lreal("MasterOffset")?,
+                io.lreal("SlaveOffset")?,
+                io.lreal("MasterScaling")?,
+                io.lreal("SlaveScaling")?,
+            );
+            let selection = CamTableId(io.selection("CamTableID")?);
+            let outputs = {
+                let (kernel, fb) = io.motion().block::<GetCamSlaveSetPosition>(instance);
+                fb.enable = enable;
+                (
+                    fb.master_offset,
+                    fb.slave_offset,
+                    fb.master_scaling,
+                    fb.slave_scaling,
+                ) = scaling;
+                fb.cam_table_id = selection;
+                fb.call(kernel, master, slave);
+                (
+                    fb.start_position,
+                    fb.start_velocity,
+                    fb.start_acceleration,
+                    fb.busy,
+                    fb.error,
+                    fb.error_id,
+                )
+            };
+            io.set_lreal("fStartPosition", outputs.0)?;
+            io.set_lreal("fStartVelocity", outputs.1)?;
+            io.set_lreal("fStartAcceleration", outputs.2)?;
+            status(io, outputs.3, outputs.4, outputs.5)
+        }
+        other => Err(FaultKind::Internal(format!(
+            "{other:?} is not a synchronised block"
+        ))),
+    }
+}
+
+fn cam_table_select(io: &mut Io<'_, '_>, instance: usize) -> Result<(), FaultKind> {
+    let Some((master, slave)) = axes(io)? else {
+        return Ok(());
+    };
+    let Some((cam_ref, cam)) = io
+        .cam("CamTable")?
+        .and_then(|id| io.motion().cam(id).map(|cam| (id, cam)))
+    else {
+        io.set_bool("Done", false)?;
+        return status(io, false, true, UNKNOWN_CAM);
+    };
+    let execute = io.bool("Execute")?;
+    let options = [
+        io.bool("Periodic")?,
+        io.bool("MasterAbsolute")?,
+        io.bool("SlaveAbsolute")?,
+    ];
+    let outputs = {
+        let (kernel, fb) = io.motion().block::<CamTableSelect>(instance);
+        fb.execute = execute;
+        fb.cam_table = cam;
+        [fb.periodic, fb.master_absolute, fb.slave_absolute] = options;
+        fb.call(kernel, master, slave);
+        (fb.done, fb.busy, fb.error, fb.error_id, fb.cam_table_id)
+    };
+    io.set_bool("Done", outputs.0)?;
+    io.set_selection("CamTableID", cam_ref, outputs.4.0, options)?;
+    status(io, outputs.1, outputs.2, outputs.3)
+}
+
+fn cam_in(io: &mut Io<'_, '_>, instance: usize) -> Result<(), FaultKind> {
+    let Some((master, slave)) = axes(io)? else {
+        return Ok(());
+    };
+    let execute = io.bool("Execute")?;
+    let placement = (
+        io.lreal("MasterOffset")?,
+        io.lreal("SlaveOffset")?,
+        io.lreal("MasterScaling")?,
+        io.lreal("SlaveScaling")?,
+    );
+    let start = start_mode(io.int("StartMode")?);
+    let selection = CamTableId(io.selection("CamTableID")?);
+    let ramp = (
+        io.lreal("VelocityDiff")?,
+        io.lreal("Acceleration")?,
+        io.lreal("Deceleration")?,
+        io.lreal("Jerk")?,
+    );
+    let hysteresis = io.lreal("TappetHysteresis")?;
+    let mode = buffer_mode(io.int("BufferMode")?);
+    let outputs = {
+        let (kernel, fb) = io.motion().block::<CamIn>(instance);
+        fb.execute = execute;
+        (
+            fb.master_offset,
+            fb.slave_offset,
+            fb.master_scaling,
+            fb.slave_scaling,
+        ) = placement;
+        fb.start_mode = start;
+        fb.cam_table_id = selection;
+        (fb.velocity_diff, fb.acceleration, fb.deceleration, fb.jerk) = ramp;
+        fb.tappet_hysteresis = hysteresis;
+        fb.buffer_mode = mode;
+        fb.call(kernel, master, slave);
+        (
+            fb.in_sync,
+            fb.busy,
+            fb.active,
+            fb.command_aborted,
+            fb.error,
+            fb.error_id,
+            fb.end_of_profile,
+        )
+    };
+    io.set_bool("InSync", outputs.0)?;
+    io.set_bool("EndOfProfile", outputs.6)?;
+    io.set_coupling("Tappets")?;
+    control(io, outputs.2, outputs.3)?;
+    status(io, outputs.1, outputs.4, outputs.5)
+}
+
+fn cam_register(io: &mut Io<'_, '_>, instance: usize) -> Result<(), FaultKind> {
+    let Some(master) = io.axis("Master")? else {
+        io.set_bool("EndOfProfile", false)?;
+        return status(io, false, true, UNKNOWN_AXIS);
+    };
+    let Some(cam) = io.cam("CamTable")?.and_then(|id| io.motion().cam(id)) else {
+        io.set_bool("EndOfProfile", false)?;
+        return status(io, false, true, UNKNOWN_CAM);
+    };
+    let inputs = (
+        io.bool("Enable")?,
+        io.lreal("MasterOffset")?,
+        io.lreal("MasterScaling")?,
+        io.lreal("TappetHysteresis")?,
+        io.lreal("DeadTimeCompensation")?,
+    );
+    let (outputs, tappets) = {
+        let (kernel, fb) = io.motion().block::<CamRegister>(instance);
+        (
+            fb.enable,
+            fb.master_offset,
+            fb.master_scaling,
+            fb.tappet_hysteresis,
+            fb.dead_time_compensation_s,
+        ) = inputs;
+        fb.call(kernel, master, cam);
+        let tappets: Vec<(u16, bool)> = fb.tappets().collect();
+        ((fb.busy, fb.error, fb.error_id, fb.end_of_profile), tappets)
+    };
+    for (track, value) in tappets {
+        io.set_array_bool("bTappet", MAX_NUM_TAPPETS, usize::from(track), value)?;
+    }
+    io.set_bool("EndOfProfile", outputs.3)?;
+    status(io, outputs.0, outputs.1, outputs.2)
+}
+
+fn get_tappet_value(io: &mut Io<'_, '_>, instance: usize) -> Result<(), FaultKind> {
+    let coupling = io.coupling("Tappets")?;
+    let id = u16::try_from(io.int("iID")?).unwrap_or(0);
+    let init = (io.bool("bInitValue")?, io.bool("bSetInitValueAtReset")?);
+    let motion = io.motion();
+    let mut fb = motion.take::<GetTappetValue>(instance);
+    fb.id = id;
+    (fb.init_value, fb.set_init_value_at_reset) = init;
+    // The tappets live in the MC_CamIn whose instance filled `Tappets`; before that MC_CamIn
+    // ran, the block shows its initial value.
+    match coupling.and_then(|at| motion.cam_in(at)) {
+        Some(cam_in) => fb.call(&mut cam_in.tappets),
+        None => fb.tappet = fb.init_value,
+    }
+    let value = fb.tappet;
+    motion.put(instance, fb);
+    io.set_bool("bTappet", value)
+}
