@@ -280,6 +280,9 @@ fn the_example_knife_follows_its_cam_and_the_tappets_switch_the_outputs() {
         "Knife.nAxisState",
         "GVL_IO.xGlueValve",
         "MotionControl.fbKnifeCam.InSync",
+        "CAM_Knife.fMasterPosition",
+        "CAM_Knife.fSlavePosition",
+        "CAM_Knife.dwTappets",
     ];
     // 400 cycles of 2 ms at 90 deg/s: the master is near 72 deg, between the glue valve's
     // tappets at 30 (on) and 90 (off).
@@ -290,6 +293,14 @@ fn the_example_knife_follows_its_cam_and_the_tappets_switch_the_outputs() {
     assert!(boolean(&early, "MotionControl.fbKnifeCam.InSync"));
     // SMC_AXIS_STATE.synchronized_motion.
     assert_eq!(number(&early, "Knife.nAxisState"), 6.0);
+    // The cam shows the coupling live: its master coordinate, the knife's set position and
+    // the glue valve's track (bit 0).
+    assert!((number(&early, "CAM_Knife.fMasterPosition") - master).abs() < 1e-6);
+    assert_eq!(
+        number(&early, "CAM_Knife.fSlavePosition"),
+        number(&early, "Knife.fActPosition")
+    );
+    assert_eq!(number(&early, "CAM_Knife.dwTappets"), 1.0, "{early:?}");
     // 1000 cycles: near 180 deg, on the cam's line from (120, 60) to (240, 180), past the
     // tappet that closes the valve.
     let later = simulate(&dir, 1000, &watch);

@@ -106,6 +106,7 @@ impl Coupling {
             period_index: 0,
             cam_master_velocity: 0.0,
             phase_shift: self.phase.shift,
+            cam: None,
         };
         match &self.mode {
             CouplingMode::Cam(state) => {
@@ -116,6 +117,7 @@ impl Coupling {
                     state.ended
                 };
                 status.cam_master = state.cam_master;
+                status.cam = Some(state.selection.cam);
                 status.period_index = state.period_index;
                 status.cam_master_velocity = if state.ended {
                     0.0

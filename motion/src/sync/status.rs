@@ -42,4 +42,6 @@ pub struct CouplingStatus {
     pub cam_master_velocity: f64,
     /// The phase shift of MC_Phasing in force, in master units (positive: the slave lags).
     pub phase_shift: f64,
+    /// The cam of a cam coupling, so a runtime can show the coupling on that cam.
+    pub cam: Option<super::CamId>,
 }

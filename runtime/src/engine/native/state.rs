@@ -41,12 +41,23 @@ struct AxisRefLayout {
     position_period: Option<usize>,
 }
 
+/// The offsets of the live members of `MC_CAM_REF` (`docs/motion.md` §2).
+#[derive(Clone, Copy, Debug, Default)]
+struct CamRefLayout {
+    master_position: Option<usize>,
+    slave_position: Option<usize>,
+    tappets: Option<usize>,
+}
+
 /// The motion state of a loaded image.
 pub(crate) struct MotionState {
     kernel: Kernel,
     axes: Vec<AxisLink>,
     /// The kernel's cam for each `nCamId`.
     cams: Vec<CamId>,
+    /// The data-region offset of each cam's `MC_CAM_REF`, by `nCamId`.
+    cam_refs: Vec<usize>,
+    cam_ref: CamRefLayout,
     axis_ref: AxisRefLayout,
     instances: HashMap<usize, Instance>,
     last_cycle_ns: Vec<Option<i64>>,
@@ -90,7 +101,9 @@ impl MotionState {
             }
         }
         let mut cams = Vec::new();
+        let mut cam_refs = Vec::new();
         for cam in image.motion.iter().flat_map(|section| &section.cams) {
+            cam_refs.push(cam.offset as usize);
             let failed = |message: String| MotionLoadError {
                 what: format!("cam table '{}'", cam.name),
                 message,
@@ -105,6 +118,8 @@ impl MotionState {
             kernel,
             axes,
             cams,
+            cam_refs,
+            cam_ref: cam_ref_layout(image),
             axis_ref: axis_ref_layout(image),
             instances: HashMap::new(),
             last_cycle_ns: vec![None; image.tasks.len()],
@@ -217,8 +232,66 @@ impl MotionState {
                     layout.position_period,
                     &snapshot.modulo_period.to_le_bytes(),
                 );
+                if let Ok(Some(coupling)) = self.kernel.coupling_status(link.id)
+                    && let Some(cam) = coupling.cam
+                    && let Some(index) = self.cams.iter().position(|id| *id == cam)
+                    && let Some(&base) = self.cam_refs.get(index)
+                {
+                    let layout = self.cam_ref;
+                    let position = snapshot.set_position.to_le_bytes();
+                    write_at(
+                        data,
+                        base,
+                        layout.master_position,
+                        &coupling.cam_master.to_le_bytes(),
+                    );
+                    write_at(data, base, layout.slave_position, &position);
+                }
             }
         }
+        // The tappet outputs of each running MC_CamIn, as its cam's dwTappets.
+        for instance in self.instances.values() {
+            let Instance::CamIn(cam_in) = instance else {
+                continue;
+            };
+            let Ok(selection) = self.kernel.cam_selection(cam_in.cam_table_id) else {
+                continue;
+            };
+            let Some(index) = self.cams.iter().position(|id| *id == selection.cam) else {
+                continue;
+            };
+            if !cam_in.busy {
+                continue;
+            }
+            let bits = cam_in
+                .tappets
+                .outputs()
+                .filter(|(track, on)| *on && (1..=32).contains(track))
+                .fold(0u32, |bits, (track, _)| bits | (1 << (track - 1)));
+            if let Some(&base) = self.cam_refs.get(index) {
+                write_at(data, base, self.cam_ref.tappets, &bits.to_le_bytes());
+            }
+        }
+    }
+}
+
+/// Writes `bytes` at `base + at` in `data`, when the member exists and fits.
+fn write_at(data: &mut [u8], base: usize, at: Option<usize>, bytes: &[u8]) {
+    if let Some(at) = at
+        && let Some(place) = data.get_mut(base + at..base + at + bytes.len())
+    {
+        place.copy_from_slice(bytes);
+    }
+}
+
+fn cam_ref_layout(image: &ProgramImage) -> CamRefLayout {
+    let at = |field: &str| {
+        super::io::Members::field_offset(image, "MC_CAM_REF", field).map(|offset| offset as usize)
+    };
+    CamRefLayout {
+        master_position: at("fMasterPosition"),
+        slave_position: at("fSlavePosition"),
+        tappets: at("dwTappets"),
     }
 }
 
