@@ -402,3 +402,85 @@ on_negative = \"invert\"
     );
     assert!((drum - follower).abs() < 1e-6, "{values:?}");
 }
+
+#[test]
+fn t12_a_digital_cam_switch_with_compensation_switches_early_and_late() {
+    let dir = project(
+        &[modulo_axis("Table", 5000.0)],
+        &[
+            ("fbPower", "MC_Power"),
+            ("fbTurn", "MC_MoveVelocity"),
+            ("fbSwitch", "MC_DigitalCamSwitch"),
+            ("stSwitches", "MC_CAMSWITCH_REF"),
+            ("stTracks", "MC_TRACK_REF"),
+            ("stOutputs", "MC_OUTPUT_REF"),
+            ("xLast", "BOOL"),
+            ("iEdge", "INT"),
+            ("aEdges", "ARRAY[1..8] OF LREAL"),
+            ("xTimedSeen", "BOOL"),
+        ],
+        "stSwitches.NumberOfSwitches := 4;
+stSwitches.Switch[0].TrackNumber := 0;
+stSwitches.Switch[0].FirstOnPosition := 2000.0;
+stSwitches.Switch[0].LastOnPosition := 3000.0;
+stSwitches.Switch[0].AxisDirection := 1;
+stSwitches.Switch[1].TrackNumber := 0;
+stSwitches.Switch[1].FirstOnPosition := 2500.0;
+stSwitches.Switch[1].LastOnPosition := 3000.0;
+stSwitches.Switch[1].AxisDirection := 2;
+stSwitches.Switch[2].TrackNumber := 0;
+stSwitches.Switch[2].FirstOnPosition := 4000.0;
+stSwitches.Switch[2].LastOnPosition := 1000.0;
+stSwitches.Switch[3].TrackNumber := 1;
+stSwitches.Switch[3].FirstOnPosition := 3000.0;
+stSwitches.Switch[3].CamSwitchMode := 1;
+stSwitches.Switch[3].Duration := T#1350MS;
+stTracks.Track[0].OnCompensation := T#-125MS;
+stTracks.Track[0].OffCompensation := T#250MS;
+fbPower(Axis := Table, Enable := TRUE);
+fbTurn(Axis := Table, Execute := fbPower.Status, Velocity := 1000.0, Acceleration := 20000.0,
+    Deceleration := 20000.0, Direction := MC_DIRECTION.positive);
+fbSwitch(Axis := Table, Switches := stSwitches, Outputs := stOutputs, TrackOptions := stTracks,
+    Enable := TRUE);
+IF stOutputs.Output[0] <> xLast AND iEdge < 8 THEN
+    iEdge := iEdge + 1;
+    aEdges[iEdge] := Table.fSetPosition;
+END_IF
+xLast := stOutputs.Output[0];
+xTimedSeen := xTimedSeen OR stOutputs.Output[1];",
+    );
+    // 5 s at 1000 units/s: almost one revolution of 5000.
+    let values = simulate(
+        &dir,
+        2500,
+        &[
+            "MotionControl.iEdge",
+            "MotionControl.aEdges[1]",
+            "MotionControl.aEdges[2]",
+            "MotionControl.aEdges[3]",
+            "MotionControl.aEdges[4]",
+            "MotionControl.fbSwitch.Error",
+            "MotionControl.xTimedSeen",
+        ],
+    );
+    assert!(
+        !boolean(&values, "MotionControl.fbSwitch.Error"),
+        "{values:?}"
+    );
+    let edges: Vec<f64> = (1..=4)
+        .map(|index| number(&values, &format!("MotionControl.aEdges[{index}]")))
+        .collect();
+    // With OnCompensation -125 ms and OffCompensation +250 ms at 1000 units/s, Switch01's
+    // window 2000..3000 becomes 1875..3250 (one 2 ms cycle of tolerance).
+    let near = |value: f64, expected: f64| (value - expected).abs() <= 2.5;
+    assert!(
+        edges
+            .windows(2)
+            .any(|pair| near(pair[0], 1875.0) && near(pair[1], 3250.0)),
+        "{values:?}"
+    );
+    assert!(boolean(&values, "MotionControl.xTimedSeen"), "{values:?}");
+    // Switch03 (4000..1000 across the wrap) holds the track on from the start until its
+    // compensated end at 1250.
+    assert!(near(edges[0], 0.0) && near(edges[1], 1250.0), "{values:?}");
+}

@@ -68,6 +68,86 @@ pub(super) struct LibraryOffsets {
     pub(super) selection: Option<[u32; 5]>,
     /// `SMC_TappetData.nCoupling`.
     pub(super) coupling: Option<u32>,
+    /// The switch, track and output structures of MC_DigitalCamSwitch.
+    pub(super) switches: Option<SwitchLayout>,
+}
+
+/// Where MC_DigitalCamSwitch finds its switches, track options and outputs.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct SwitchLayout {
+    /// `MC_CAMSWITCH_REF`: its size, `NumberOfSwitches`, `Switch`.
+    pub(super) switches_size: u32,
+    pub(super) count: u32,
+    pub(super) switch: u32,
+    /// `MC_CAMSWITCH_TR`: its size (the array's stride) and its members.
+    pub(super) switch_size: u32,
+    pub(super) track_number: u32,
+    pub(super) first_on: u32,
+    pub(super) last_on: u32,
+    pub(super) direction: u32,
+    pub(super) mode: u32,
+    pub(super) duration: u32,
+    /// `MC_TRACK_REF`: its size and `Track`; `MC_TRACK_TR`: its size and members.
+    pub(super) tracks_size: u32,
+    pub(super) track: u32,
+    pub(super) track_size: u32,
+    pub(super) on_compensation: u32,
+    pub(super) off_compensation: u32,
+    pub(super) hysteresis: u32,
+    /// `MC_OUTPUT_REF`: its size and `Output`.
+    pub(super) outputs_size: u32,
+    pub(super) output: u32,
+}
+
+impl SwitchLayout {
+    fn of(image: &ProgramImage) -> Option<Self> {
+        let (switches_size, switches) = structure(image, "MC_CAMSWITCH_REF")?;
+        let (switch_size, switch) = structure(image, "MC_CAMSWITCH_TR")?;
+        let (tracks_size, tracks) = structure(image, "MC_TRACK_REF")?;
+        let (track_size, track) = structure(image, "MC_TRACK_TR")?;
+        let (outputs_size, outputs) = structure(image, "MC_OUTPUT_REF")?;
+        let at =
+            |members: &HashMap<String, u32>, name: &str| members.get(&name.to_lowercase()).copied();
+        Some(Self {
+            switches_size,
+            count: at(&switches, "NumberOfSwitches")?,
+            switch: at(&switches, "Switch")?,
+            switch_size,
+            track_number: at(&switch, "TrackNumber")?,
+            first_on: at(&switch, "FirstOnPosition")?,
+            last_on: at(&switch, "LastOnPosition")?,
+            direction: at(&switch, "AxisDirection")?,
+            mode: at(&switch, "CamSwitchMode")?,
+            duration: at(&switch, "Duration")?,
+            tracks_size,
+            track: at(&tracks, "Track")?,
+            track_size,
+            on_compensation: at(&track, "OnCompensation")?,
+            off_compensation: at(&track, "OffCompensation")?,
+            hysteresis: at(&track, "Hysteresis")?,
+            outputs_size,
+            output: at(&outputs, "Output")?,
+        })
+    }
+}
+
+/// The size and the member offsets (by lower-case name) of the image's structure `ty`.
+fn structure(image: &ProgramImage, ty: &str) -> Option<(u32, HashMap<String, u32>)> {
+    image.types.iter().find_map(|candidate| match candidate {
+        TypeDef::Struct {
+            name,
+            kind: StructKind::Struct,
+            size,
+            members,
+        } if name == ty => Some((
+            *size,
+            members
+                .iter()
+                .map(|member| (member.name.to_lowercase(), member.offset))
+                .collect(),
+        )),
+        _ => None,
+    })
 }
 
 impl LibraryOffsets {
@@ -90,6 +170,7 @@ impl LibraryOffsets {
                 _ => None,
             },
             coupling: field("SMC_TappetData", "nCoupling"),
+            switches: SwitchLayout::of(image),
         }
     }
 }
@@ -146,6 +227,41 @@ impl<'x, 'a> Io<'x, 'a> {
             return Ok(None);
         }
         self.x.deref(pointer, size).map(Some)
+    }
+
+    /// The absolute offset of what the VAR_IN_OUT `name` points to, checked for `size` bytes;
+    /// `None` when it is not connected.
+    pub(super) fn in_out(&self, name: &str, size: u32) -> Result<Option<usize>, FaultKind> {
+        self.target(name, size as usize)
+    }
+
+    /// The layout of the cam switch structures.
+    pub(super) fn switch_layout(&self) -> Result<SwitchLayout, FaultKind> {
+        self.library
+            .switches
+            .ok_or_else(|| missing("MC_CAMSWITCH_REF, MC_TRACK_REF or MC_OUTPUT_REF"))
+    }
+
+    /// A value at an absolute offset.
+    pub(super) fn read_at<T: crate::engine::scalar::Scalar>(
+        &self,
+        at: usize,
+    ) -> Result<T, FaultKind> {
+        self.x.get::<T>(Self::absolute(at))
+    }
+
+    /// Writes a value at an absolute offset.
+    pub(super) fn write_at<T: crate::engine::scalar::Scalar>(
+        &mut self,
+        at: usize,
+        value: T,
+    ) -> Result<(), FaultKind> {
+        self.x.set::<T>(Self::absolute(at), value)
+    }
+
+    /// A DWORD member.
+    pub(super) fn dword(&self, name: &str) -> Result<u32, FaultKind> {
+        self.x.get::<u32>(self.addr(name)?)
     }
 
     /// The cam table (`nCamId`) the VAR_IN_OUT `name` points to; `None` when it is not

@@ -3,6 +3,7 @@
 //! instance's inputs by member name, calls the `motion` function block kept for that instance,
 //! and writes its outputs back.
 
+mod cam_switch;
 mod cams;
 mod io;
 mod single_axis;
@@ -49,6 +50,7 @@ pub(crate) enum NativeBlock {
     CamRegister,
     GetTappetValue,
     GetCamSlaveSetPosition,
+    DigitalCamSwitch,
 }
 
 impl NativeBlock {
@@ -81,6 +83,7 @@ impl NativeBlock {
             "SMC_CAMREGISTER" => Self::CamRegister,
             "SMC_GETTAPPETVALUE" => Self::GetTappetValue,
             "SMC_GETCAMSLAVESETPOSITION" => Self::GetCamSlaveSetPosition,
+            "MC_DIGITALCAMSWITCH" => Self::DigitalCamSwitch,
             _ => return None,
         })
     }
@@ -138,7 +141,9 @@ fn call(
 ) -> Result<(), FaultKind> {
     let mut io = Io::new(x, members, library);
     let instance = io.instance();
-    if native.is_synchronised() {
+    if native == NativeBlock::DigitalCamSwitch {
+        cam_switch::call(&mut io, instance)
+    } else if native.is_synchronised() {
         synchronised::call(&mut io, native, instance)
     } else {
         single_axis::call(&mut io, native, instance)

@@ -10,7 +10,7 @@ use motion::fb::{
     MoveRelative, MoveVelocity, Power, ReadActualPosition, ReadActualVelocity, ReadAxisError,
     ReadStatus, Reset, SetOverride, SetPosition, Stop,
 };
-use motion::fb::{GearIn, GearInPos, GearOut, GetCamSlaveSetPosition, Phasing};
+use motion::fb::{DigitalCamSwitch, GearIn, GearInPos, GearOut, GetCamSlaveSetPosition, Phasing};
 use motion::kernel::{AxisId, Kernel};
 use motion::sync::CamId;
 use program_image::{ProgramImage, StructKind, TypeDef};
@@ -129,6 +129,11 @@ impl MotionState {
     /// The kernel's axis for `nAxisId`.
     pub(crate) fn axis(&self, id: usize) -> Option<AxisId> {
         self.axes.get(id).map(|link| link.id)
+    }
+
+    /// The kernel.
+    pub(super) fn kernel(&mut self) -> &mut Kernel {
+        &mut self.kernel
     }
 
     /// The kernel's cam for `nCamId`.
@@ -387,4 +392,5 @@ kept!(
     CamRegister,
     GetTappetValue,
     GetCamSlaveSetPosition,
+    DigitalCamSwitch,
 );
