@@ -6,6 +6,7 @@ use motion::fb::{
 };
 
 use super::io::Io;
+use super::member::M;
 use crate::engine::fault::FaultKind;
 
 /// `ErrorID` for a VAR_IN_OUT that names no axis or is not connected (`docs/motion.md` §5).
@@ -17,15 +18,15 @@ const INVALID_INPUT: u16 = 4;
 pub(super) fn call(io: &mut Io<'_, '_>, instance: usize) -> Result<(), FaultKind> {
     let layout = io.switch_layout()?;
     let (Some(axis), Some(switches_at), Some(tracks_at), Some(outputs_at)) = (
-        io.axis("Axis")?,
-        io.in_out("Switches", layout.switches_size)?,
-        io.in_out("TrackOptions", layout.tracks_size)?,
-        io.in_out("Outputs", layout.outputs_size)?,
+        io.axis(M::Axis)?,
+        io.in_out(M::Switches, layout.switches_size)?,
+        io.in_out(M::TrackOptions, layout.tracks_size)?,
+        io.in_out(M::Outputs, layout.outputs_size)?,
     ) else {
         return write_status(io, false, true, UNKNOWN_AXIS);
     };
-    let enable = io.bool("Enable")?;
-    let enable_mask = (io.dword("EnableMask")? & 0xFFFF) as u16;
+    let enable = io.bool(M::Enable)?;
+    let enable_mask = (io.dword(M::EnableMask)? & 0xFFFF) as u16;
     let declared = io.read_at::<u16>(switches_at + layout.count as usize)?;
     // The structure holds 64 switches: more than that would read past it.
     let capacity = (layout.switches_size - layout.switch) / layout.switch_size.max(1);
@@ -83,7 +84,7 @@ pub(super) fn call(io: &mut Io<'_, '_>, instance: usize) -> Result<(), FaultKind
     for (track, on) in outputs.iter().enumerate() {
         io.write_at::<u8>(outputs_at + layout.output as usize + track, u8::from(*on))?;
     }
-    io.set_bool("InOperation", status.0)?;
+    io.set_bool(M::InOperation, status.0)?;
     write_status(io, status.1, status.2, status.3)
 }
 
@@ -94,9 +95,9 @@ fn write_status(
     error_id: u16,
 ) -> Result<(), FaultKind> {
     if error {
-        io.set_bool("InOperation", false)?;
+        io.set_bool(M::InOperation, false)?;
     }
-    io.set_bool("Busy", busy)?;
-    io.set_bool("Error", error)?;
-    io.set_word("ErrorID", error_id)
+    io.set_bool(M::Busy, busy)?;
+    io.set_bool(M::Error, error)?;
+    io.set_word(M::ErrorID, error_id)
 }

@@ -6,24 +6,30 @@ use std::collections::HashMap;
 use motion::kernel::AxisId;
 use program_image::{Member, ProgramImage, StructKind, TypeDef};
 
+use super::member::M;
 use super::state::MotionState;
 use crate::engine::exec::{ABSOLUTE, Addr, Exec, INSTANCE};
 use crate::engine::fault::FaultKind;
 
-/// The byte offsets of an instance's members, by lower-case name.
+/// The byte offsets of an instance's members, resolved at load for every member the adapters
+/// use ([`M`]); `None` for a member the block does not have.
 #[derive(Clone, Debug)]
 pub(super) struct Members {
-    offsets: HashMap<String, u32>,
+    offsets: [Option<u32>; M::ALL.len()],
 }
 
 impl Members {
     /// The members of a function block's instance type.
-    pub(super) fn of(_image: &ProgramImage, members: &[Member]) -> Self {
+    pub(super) fn of(members: &[Member]) -> Self {
         Self {
-            offsets: members
-                .iter()
-                .map(|member| (member.name.to_lowercase(), member.offset))
-                .collect(),
+            offsets: M::ALL.map(|wanted| {
+                let name = wanted.name();
+                members
+                    .iter()
+                    .find(|member| member.name == name)
+                    .or_else(|| members.iter().find(|m| m.name.eq_ignore_ascii_case(name)))
+                    .map(|member| member.offset)
+            }),
         }
     }
 
@@ -44,15 +50,13 @@ impl Members {
         })
     }
 
-    fn offset(&self, name: &str) -> Result<u32, FaultKind> {
-        self.offsets
-            .get(&name.to_lowercase())
-            .copied()
-            .ok_or_else(|| {
-                FaultKind::Internal(format!(
-                    "a native function block has no member '{name}' (the image and the runtime disagree about the motion library)"
-                ))
-            })
+    fn offset(&self, name: M) -> Result<u32, FaultKind> {
+        self.offsets[name as usize].ok_or_else(|| {
+            FaultKind::Internal(format!(
+                "a native function block has no member '{}' (the image and the runtime disagree about the motion library)",
+                name.name()
+            ))
+        })
     }
 }
 
@@ -210,18 +214,18 @@ impl<'x, 'a> Io<'x, 'a> {
     }
 
     /// A DINT member.
-    pub(super) fn dint(&self, name: &str) -> Result<i32, FaultKind> {
+    pub(super) fn dint(&self, name: M) -> Result<i32, FaultKind> {
         self.x.get::<i32>(self.addr(name)?)
     }
 
     /// A UDINT member.
-    pub(super) fn udint(&self, name: &str) -> Result<u32, FaultKind> {
+    pub(super) fn udint(&self, name: M) -> Result<u32, FaultKind> {
         self.x.get::<u32>(self.addr(name)?)
     }
 
     /// The absolute offset of what the VAR_IN_OUT `name` points to, checked for `size` bytes;
     /// `None` when it is not connected.
-    fn target(&self, name: &str, size: usize) -> Result<Option<usize>, FaultKind> {
+    fn target(&self, name: M, size: usize) -> Result<Option<usize>, FaultKind> {
         let pointer = self.x.get::<u64>(self.addr(name)?)?;
         if pointer == 0 {
             return Ok(None);
@@ -231,7 +235,7 @@ impl<'x, 'a> Io<'x, 'a> {
 
     /// The absolute offset of what the VAR_IN_OUT `name` points to, checked for `size` bytes;
     /// `None` when it is not connected.
-    pub(super) fn in_out(&self, name: &str, size: u32) -> Result<Option<usize>, FaultKind> {
+    pub(super) fn in_out(&self, name: M, size: u32) -> Result<Option<usize>, FaultKind> {
         self.target(name, size as usize)
     }
 
@@ -260,13 +264,13 @@ impl<'x, 'a> Io<'x, 'a> {
     }
 
     /// A DWORD member.
-    pub(super) fn dword(&self, name: &str) -> Result<u32, FaultKind> {
+    pub(super) fn dword(&self, name: M) -> Result<u32, FaultKind> {
         self.x.get::<u32>(self.addr(name)?)
     }
 
     /// The cam table (`nCamId`) the VAR_IN_OUT `name` points to; `None` when it is not
     /// connected.
-    pub(super) fn cam(&self, name: &str) -> Result<Option<u32>, FaultKind> {
+    pub(super) fn cam(&self, name: M) -> Result<Option<u32>, FaultKind> {
         let offset = self.library.cam_id.ok_or_else(|| missing("MC_CAM_REF"))? as usize;
         let Some(at) = self.target(name, offset + 4)? else {
             return Ok(None);
@@ -275,7 +279,7 @@ impl<'x, 'a> Io<'x, 'a> {
     }
 
     /// The selection of the `MC_CAM_ID` member `name`.
-    pub(super) fn selection(&self, name: &str) -> Result<u32, FaultKind> {
+    pub(super) fn selection(&self, name: M) -> Result<u32, FaultKind> {
         let fields = self.library.selection.ok_or_else(|| missing("MC_CAM_ID"))?;
         let base = self.addr(name)?;
         self.x.get::<u32>(Addr {
@@ -287,7 +291,7 @@ impl<'x, 'a> Io<'x, 'a> {
     /// Writes the `MC_CAM_ID` member `name`: the cam, the selection and its three options.
     pub(super) fn set_selection(
         &mut self,
-        name: &str,
+        name: M,
         cam: u32,
         selection: u32,
         options: [bool; 3],
@@ -308,7 +312,7 @@ impl<'x, 'a> Io<'x, 'a> {
 
     /// The coupling of the `SMC_TappetData` member `name`: the absolute offset of the MC_CamIn
     /// instance that filled it, if any.
-    pub(super) fn coupling(&self, name: &str) -> Result<Option<usize>, FaultKind> {
+    pub(super) fn coupling(&self, name: M) -> Result<Option<usize>, FaultKind> {
         let field = self
             .library
             .coupling
@@ -322,7 +326,7 @@ impl<'x, 'a> Io<'x, 'a> {
     }
 
     /// Fills the `SMC_TappetData` member `name` with the current instance, an MC_CamIn.
-    pub(super) fn set_coupling(&mut self, name: &str) -> Result<(), FaultKind> {
+    pub(super) fn set_coupling(&mut self, name: M) -> Result<(), FaultKind> {
         let field = self
             .library
             .coupling
@@ -342,7 +346,7 @@ impl<'x, 'a> Io<'x, 'a> {
     /// which has `length` elements; an index outside it is ignored.
     pub(super) fn set_array_bool(
         &mut self,
-        name: &str,
+        name: M,
         length: usize,
         index: usize,
         value: bool,
@@ -357,7 +361,7 @@ impl<'x, 'a> Io<'x, 'a> {
         Ok(())
     }
 
-    fn addr(&self, name: &str) -> Result<Addr, FaultKind> {
+    fn addr(&self, name: M) -> Result<Addr, FaultKind> {
         Ok(Addr {
             base: INSTANCE,
             offset: self.members.offset(name)?,
@@ -365,41 +369,41 @@ impl<'x, 'a> Io<'x, 'a> {
     }
 
     /// A BOOL member.
-    pub(super) fn bool(&self, name: &str) -> Result<bool, FaultKind> {
+    pub(super) fn bool(&self, name: M) -> Result<bool, FaultKind> {
         Ok(self.x.get::<u8>(self.addr(name)?)? != 0)
     }
 
     /// An LREAL member.
-    pub(super) fn lreal(&self, name: &str) -> Result<f64, FaultKind> {
+    pub(super) fn lreal(&self, name: M) -> Result<f64, FaultKind> {
         self.x.get::<f64>(self.addr(name)?)
     }
 
     /// An INT member (the motion library's enumerations are INTs).
-    pub(super) fn int(&self, name: &str) -> Result<i16, FaultKind> {
+    pub(super) fn int(&self, name: M) -> Result<i16, FaultKind> {
         self.x.get::<i16>(self.addr(name)?)
     }
 
     /// Sets a BOOL member.
-    pub(super) fn set_bool(&mut self, name: &str, value: bool) -> Result<(), FaultKind> {
+    pub(super) fn set_bool(&mut self, name: M, value: bool) -> Result<(), FaultKind> {
         let addr = self.addr(name)?;
         self.x.set::<u8>(addr, u8::from(value))
     }
 
     /// Sets an LREAL member.
-    pub(super) fn set_lreal(&mut self, name: &str, value: f64) -> Result<(), FaultKind> {
+    pub(super) fn set_lreal(&mut self, name: M, value: f64) -> Result<(), FaultKind> {
         let addr = self.addr(name)?;
         self.x.set::<f64>(addr, value)
     }
 
     /// Sets a WORD member.
-    pub(super) fn set_word(&mut self, name: &str, value: u16) -> Result<(), FaultKind> {
+    pub(super) fn set_word(&mut self, name: M, value: u16) -> Result<(), FaultKind> {
         let addr = self.addr(name)?;
         self.x.set::<u16>(addr, value)
     }
 
     /// The axis the VAR_IN_OUT `name` points to; `None` when it is not connected or its
     /// `nAxisId` names no axis of the image.
-    pub(super) fn axis(&self, name: &str) -> Result<Option<AxisId>, FaultKind> {
+    pub(super) fn axis(&self, name: M) -> Result<Option<AxisId>, FaultKind> {
         let offset = self.library.axis_id.ok_or_else(|| missing("AXIS_REF"))? as usize;
         let Some(at) = self.target(name, offset + 4)? else {
             return Ok(None);

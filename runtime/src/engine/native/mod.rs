@@ -5,7 +5,9 @@
 
 mod cam_switch;
 mod cams;
+mod fast_hash;
 mod io;
+mod member;
 mod single_axis;
 mod state;
 mod synchronised;
@@ -121,7 +123,7 @@ pub(crate) fn lower(block: &str, pou: &str, image: &ProgramImage) -> Result<Op, 
                 kind: StructKind::FunctionBlock,
                 members,
                 ..
-            } if name == pou => Some(Members::of(image, members)),
+            } if name == pou => Some(Members::of(members)),
             _ => None,
         })
         .ok_or_else(|| format!("the instance type of '{pou}' is missing"))?;

@@ -11,6 +11,7 @@ use motion::kernel::{AxisId, BufferMode};
 
 use super::NativeBlock;
 use super::io::Io;
+use super::member::M;
 use crate::engine::fault::FaultKind;
 
 /// The id `ErrorID` shows for a VAR_IN_OUT that names no axis (`docs/motion.md` §5).
@@ -18,7 +19,7 @@ const UNKNOWN_AXIS: u16 = 9;
 
 /// The status outputs most blocks share; `None` for an output the block does not have.
 struct Status {
-    done: Option<(&'static str, bool)>,
+    done: Option<(M, bool)>,
     busy: Option<bool>,
     active: Option<bool>,
     command_aborted: Option<bool>,
@@ -32,16 +33,16 @@ impl Status {
             io.set_bool(name, value)?;
         }
         if let Some(busy) = self.busy {
-            io.set_bool("Busy", busy)?;
+            io.set_bool(M::Busy, busy)?;
         }
         if let Some(active) = self.active {
-            io.set_bool("Active", active)?;
+            io.set_bool(M::Active, active)?;
         }
         if let Some(aborted) = self.command_aborted {
-            io.set_bool("CommandAborted", aborted)?;
+            io.set_bool(M::CommandAborted, aborted)?;
         }
-        io.set_bool("Error", self.error)?;
-        io.set_word("ErrorID", self.error_id)
+        io.set_bool(M::Error, self.error)?;
+        io.set_word(M::ErrorID, self.error_id)
     }
 }
 
@@ -68,7 +69,7 @@ pub(super) fn call(
     native: NativeBlock,
     instance: usize,
 ) -> Result<(), FaultKind> {
-    let Some(axis) = io.axis("Axis")? else {
+    let Some(axis) = io.axis(M::Axis)? else {
         // Not connected, or an AXIS_REF that names no axis of this image.
         return Status {
             done: None,
@@ -83,14 +84,14 @@ pub(super) fn call(
     match native {
         NativeBlock::Power => power(io, axis, instance),
         NativeBlock::Home => {
-            let (execute, position) = (io.bool("Execute")?, io.lreal("Position")?);
+            let (execute, position) = (io.bool(M::Execute)?, io.lreal(M::Position)?);
             let status = {
                 let (kernel, fb) = io.motion().block::<Home>(instance);
                 fb.execute = execute;
                 fb.position = position;
                 fb.call(kernel, axis);
                 full(
-                    "Done",
+                    M::Done,
                     fb.done,
                     fb.busy,
                     fb.active,
@@ -103,16 +104,16 @@ pub(super) fn call(
         }
         NativeBlock::Stop => {
             let inputs = (
-                io.bool("Execute")?,
-                io.lreal("Deceleration")?,
-                io.lreal("Jerk")?,
+                io.bool(M::Execute)?,
+                io.lreal(M::Deceleration)?,
+                io.lreal(M::Jerk)?,
             );
             let status = {
                 let (kernel, fb) = io.motion().block::<Stop>(instance);
                 (fb.execute, fb.deceleration, fb.jerk) = inputs;
                 fb.call(kernel, axis);
                 Status {
-                    done: Some(("Done", fb.done)),
+                    done: Some((M::Done, fb.done)),
                     busy: Some(fb.busy),
                     active: None,
                     command_aborted: Some(fb.command_aborted),
@@ -124,17 +125,17 @@ pub(super) fn call(
         }
         NativeBlock::Halt => {
             let inputs = (
-                io.bool("Execute")?,
-                io.lreal("Deceleration")?,
-                io.lreal("Jerk")?,
-                buffer_mode(io.int("BufferMode")?),
+                io.bool(M::Execute)?,
+                io.lreal(M::Deceleration)?,
+                io.lreal(M::Jerk)?,
+                buffer_mode(io.int(M::BufferMode)?),
             );
             let status = {
                 let (kernel, fb) = io.motion().block::<Halt>(instance);
                 (fb.execute, fb.deceleration, fb.jerk, fb.buffer_mode) = inputs;
                 fb.call(kernel, axis);
                 full(
-                    "Done",
+                    M::Done,
                     fb.done,
                     fb.busy,
                     fb.active,
@@ -146,22 +147,22 @@ pub(super) fn call(
             status.write(io)
         }
         NativeBlock::Reset => {
-            let execute = io.bool("Execute")?;
+            let execute = io.bool(M::Execute)?;
             let status = {
                 let (kernel, fb) = io.motion().block::<Reset>(instance);
                 fb.execute = execute;
                 fb.call(kernel, axis);
-                simple("Done", fb.done, fb.busy, fb.error, fb.error_id)
+                simple(M::Done, fb.done, fb.busy, fb.error, fb.error_id)
             };
             status.write(io)
         }
         NativeBlock::MoveAbsolute => {
             let inputs = (
-                io.bool("Execute")?,
-                io.bool("ContinuousUpdate")?,
-                io.lreal("Position")?,
-                direction(io.int("Direction")?),
-                buffer_mode(io.int("BufferMode")?),
+                io.bool(M::Execute)?,
+                io.bool(M::ContinuousUpdate)?,
+                io.lreal(M::Position)?,
+                direction(io.int(M::Direction)?),
+                buffer_mode(io.int(M::BufferMode)?),
             );
             let (v, a, d, j) = dynamics(io)?;
             let status = {
@@ -176,7 +177,7 @@ pub(super) fn call(
                 (fb.velocity, fb.acceleration, fb.deceleration, fb.jerk) = (v, a, d, j);
                 fb.call(kernel, axis);
                 full(
-                    "Done",
+                    M::Done,
                     fb.done,
                     fb.busy,
                     fb.active,
@@ -189,11 +190,11 @@ pub(super) fn call(
         }
         NativeBlock::MoveRelative | NativeBlock::MoveAdditive => {
             let inputs = (
-                io.bool("Execute")?,
-                io.bool("ContinuousUpdate")?,
-                io.lreal("Distance")?,
+                io.bool(M::Execute)?,
+                io.bool(M::ContinuousUpdate)?,
+                io.lreal(M::Distance)?,
                 dynamics(io)?,
-                buffer_mode(io.int("BufferMode")?),
+                buffer_mode(io.int(M::BufferMode)?),
             );
             let (execute, update, distance, (v, a, d, j), mode) = inputs;
             let status = if native == NativeBlock::MoveRelative {
@@ -207,7 +208,7 @@ pub(super) fn call(
                 (fb.velocity, fb.acceleration, fb.deceleration, fb.jerk) = (v, a, d, j);
                 fb.call(kernel, axis);
                 full(
-                    "Done",
+                    M::Done,
                     fb.done,
                     fb.busy,
                     fb.active,
@@ -226,7 +227,7 @@ pub(super) fn call(
                 (fb.velocity, fb.acceleration, fb.deceleration, fb.jerk) = (v, a, d, j);
                 fb.call(kernel, axis);
                 full(
-                    "Done",
+                    M::Done,
                     fb.done,
                     fb.busy,
                     fb.active,
@@ -239,11 +240,11 @@ pub(super) fn call(
         }
         NativeBlock::MoveVelocity => {
             let inputs = (
-                io.bool("Execute")?,
-                io.bool("ContinuousUpdate")?,
+                io.bool(M::Execute)?,
+                io.bool(M::ContinuousUpdate)?,
                 dynamics(io)?,
-                direction(io.int("Direction")?),
-                buffer_mode(io.int("BufferMode")?),
+                direction(io.int(M::Direction)?),
+                buffer_mode(io.int(M::BufferMode)?),
             );
             let (execute, update, (v, a, d, j), dir, mode) = inputs;
             let status = {
@@ -257,7 +258,7 @@ pub(super) fn call(
                 (fb.velocity, fb.acceleration, fb.deceleration, fb.jerk) = (v, a, d, j);
                 fb.call(kernel, axis);
                 full(
-                    "InVelocity",
+                    M::InVelocity,
                     fb.in_velocity,
                     fb.busy,
                     fb.active,
@@ -269,7 +270,7 @@ pub(super) fn call(
             status.write(io)
         }
         NativeBlock::Jog => {
-            let (forward, backward) = (io.bool("JogForward")?, io.bool("JogBackward")?);
+            let (forward, backward) = (io.bool(M::JogForward)?, io.bool(M::JogBackward)?);
             let (v, a, d, j) = dynamics(io)?;
             let status = {
                 let (kernel, fb) = io.motion().block::<Jog>(instance);
@@ -277,7 +278,7 @@ pub(super) fn call(
                 (fb.velocity, fb.acceleration, fb.deceleration, fb.jerk) = (v, a, d, j);
                 fb.call(kernel, axis);
                 Status {
-                    done: Some(("Done", fb.done)),
+                    done: Some((M::Done, fb.done)),
                     busy: Some(fb.busy),
                     active: None,
                     command_aborted: Some(fb.command_aborted),
@@ -289,93 +290,93 @@ pub(super) fn call(
         }
         NativeBlock::SetPosition => {
             let inputs = (
-                io.bool("Execute")?,
-                io.lreal("Position")?,
-                io.bool("Relative")?,
+                io.bool(M::Execute)?,
+                io.lreal(M::Position)?,
+                io.bool(M::Relative)?,
             );
             let status = {
                 let (kernel, fb) = io.motion().block::<SetPosition>(instance);
                 (fb.execute, fb.position, fb.relative) = inputs;
                 fb.call(kernel, axis);
-                simple("Done", fb.done, fb.busy, fb.error, fb.error_id)
+                simple(M::Done, fb.done, fb.busy, fb.error, fb.error_id)
             };
             status.write(io)
         }
         NativeBlock::SetOverride => {
             let inputs = (
-                io.bool("Enable")?,
-                io.lreal("VelFactor")?,
-                io.lreal("AccFactor")?,
-                io.lreal("JerkFactor")?,
+                io.bool(M::Enable)?,
+                io.lreal(M::VelFactor)?,
+                io.lreal(M::AccFactor)?,
+                io.lreal(M::JerkFactor)?,
             );
             let status = {
                 let (kernel, fb) = io.motion().block::<SetOverride>(instance);
                 (fb.enable, fb.vel_factor, fb.acc_factor, fb.jerk_factor) = inputs;
                 fb.call(kernel, axis);
-                simple("Enabled", fb.enabled, fb.busy, fb.error, fb.error_id)
+                simple(M::Enabled, fb.enabled, fb.busy, fb.error, fb.error_id)
             };
             status.write(io)
         }
         NativeBlock::ReadActualPosition => {
-            let enable = io.bool("Enable")?;
+            let enable = io.bool(M::Enable)?;
             let (status, position) = {
                 let (kernel, fb) = io.motion().block::<ReadActualPosition>(instance);
                 fb.enable = enable;
                 fb.call(kernel, axis);
                 (
-                    simple("Valid", fb.valid, fb.busy, fb.error, fb.error_id),
+                    simple(M::Valid, fb.valid, fb.busy, fb.error, fb.error_id),
                     fb.position,
                 )
             };
             status.write(io)?;
-            io.set_lreal("Position", position)
+            io.set_lreal(M::Position, position)
         }
         NativeBlock::ReadActualVelocity => {
-            let enable = io.bool("Enable")?;
+            let enable = io.bool(M::Enable)?;
             let (status, velocity) = {
                 let (kernel, fb) = io.motion().block::<ReadActualVelocity>(instance);
                 fb.enable = enable;
                 fb.call(kernel, axis);
                 (
-                    simple("Valid", fb.valid, fb.busy, fb.error, fb.error_id),
+                    simple(M::Valid, fb.valid, fb.busy, fb.error, fb.error_id),
                     fb.velocity,
                 )
             };
             status.write(io)?;
-            io.set_lreal("Velocity", velocity)
+            io.set_lreal(M::Velocity, velocity)
         }
         NativeBlock::ReadAxisError => {
-            let enable = io.bool("Enable")?;
+            let enable = io.bool(M::Enable)?;
             let (status, axis_error) = {
                 let (kernel, fb) = io.motion().block::<ReadAxisError>(instance);
                 fb.enable = enable;
                 fb.call(kernel, axis);
                 (
-                    simple("Valid", fb.valid, fb.busy, fb.error, fb.error_id),
+                    simple(M::Valid, fb.valid, fb.busy, fb.error, fb.error_id),
                     fb.axis_error_id,
                 )
             };
             status.write(io)?;
-            io.set_word("AxisErrorID", axis_error)
+            io.set_word(M::AxisErrorID, axis_error)
         }
         NativeBlock::ReadStatus => {
-            let enable = io.bool("Enable")?;
+            let enable = io.bool(M::Enable)?;
             let (status, states) = {
                 let (kernel, fb) = io.motion().block::<ReadStatus>(instance);
                 fb.enable = enable;
                 fb.call(kernel, axis);
                 let states = [
-                    ("ErrorStop", fb.error_stop),
-                    ("Disabled", fb.disabled),
-                    ("Stopping", fb.stopping),
-                    ("Homing", fb.homing),
-                    ("Standstill", fb.standstill),
-                    ("DiscreteMotion", fb.discrete_motion),
-                    ("ContinuousMotion", fb.continuous_motion),
-                    ("SynchronizedMotion", fb.synchronized_motion),
+                    (M::ErrorStop, fb.error_stop),
+                    (M::Disabled, fb.disabled),
+                    (M::Stopping, fb.stopping),
+                    (M::Homing, fb.homing),
+                    (M::Standstill, fb.standstill),
+                    (M::DiscreteMotion, fb.discrete_motion),
+                    (M::ContinuousMotion, fb.continuous_motion),
+                    (M::SynchronizedMotion, fb.synchronized_motion),
                 ];
                 (
-                    simple("Valid", fb.valid, fb.busy, fb.error, fb.error_id),
+                    simple(M::Valid, fb.valid, fb.busy, fb.error, fb.error_id),
                     states,
                 )
             };
@@ -392,34 +393,34 @@ pub(super) fn call(
 }
 
 fn power(io: &mut Io<'_, '_>, axis: AxisId, instance: usize) -> Result<(), FaultKind> {
-    let enable = io.bool("Enable")?;
+    let enable = io.bool(M::Enable)?;
     let (status, powered) = {
         let (kernel, fb) = io.motion().block::<Power>(instance);
         fb.enable = enable;
         fb.call(kernel, axis);
         (
-            simple("Status", fb.status, false, fb.error, fb.error_id),
+            simple(M::Status, fb.status, false, fb.error, fb.error_id),
             fb.status,
         )
     };
     status.write(io)?;
-    io.set_bool("bRegulatorRealState", powered)?;
-    io.set_bool("bDriveStartRealState", powered)
+    io.set_bool(M::bRegulatorRealState, powered)?;
+    io.set_bool(M::bDriveStartRealState, powered)
 }
 
 /// `Velocity`, `Acceleration`, `Deceleration`, `Jerk`.
 fn dynamics(io: &Io<'_, '_>) -> Result<(f64, f64, f64, f64), FaultKind> {
     Ok((
-        io.lreal("Velocity")?,
-        io.lreal("Acceleration")?,
-        io.lreal("Deceleration")?,
-        io.lreal("Jerk")?,
+        io.lreal(M::Velocity)?,
+        io.lreal(M::Acceleration)?,
+        io.lreal(M::Deceleration)?,
+        io.lreal(M::Jerk)?,
     ))
 }
 
 /// The outputs of a buffered motion block.
 fn full(
-    done_name: &'static str,
+    done_name: M,
     done: bool,
     busy: bool,
     active: bool,
@@ -438,7 +439,7 @@ fn full(
 }
 
 /// The outputs of a block without Active and CommandAborted.
-fn simple(done_name: &'static str, done: bool, busy: bool, error: bool, error_id: u16) -> Status {
+fn simple(done_name: M, done: bool, busy: bool, error: bool, error_id: u16) -> Status {
     Status {
         done: Some((done_name, done)),
         busy: Some(busy),

@@ -59,7 +59,7 @@ pub(crate) struct MotionState {
     cam_refs: Vec<usize>,
     cam_ref: CamRefLayout,
     axis_ref: AxisRefLayout,
-    instances: HashMap<usize, Instance>,
+    instances: HashMap<usize, Instance, super::fast_hash::FastBuild>,
     last_cycle_ns: Vec<Option<i64>>,
 }
 
@@ -121,7 +121,7 @@ impl MotionState {
             cam_refs,
             cam_ref: cam_ref_layout(image),
             axis_ref: axis_ref_layout(image),
-            instances: HashMap::new(),
+            instances: HashMap::default(),
             last_cycle_ns: vec![None; image.tasks.len()],
         })
     }
@@ -344,14 +344,15 @@ pub(super) trait Kept: Default {
 
 macro_rules! kept {
     ($($variant:ident),* $(,)?) => {
-        /// Every kind of kept function block.
+        /// Every kind of kept function block, boxed: the blocks differ much in size (a cam
+        /// switch holds its switches and tracks), and the map of instances moves entries.
         pub(super) enum Instance {
-            $($variant($variant),)*
+            $($variant(Box<$variant>),)*
         }
         $(
             impl Kept for $variant {
                 fn wrap(self) -> Instance {
-                    Instance::$variant(self)
+                    Instance::$variant(Box::new(self))
                 }
                 fn unwrap(instance: &mut Instance) -> Option<&mut Self> {
                     match instance {

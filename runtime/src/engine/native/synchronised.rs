@@ -11,6 +11,7 @@ use motion::sync::{CamTableId, PhasingMode, StartMode};
 
 use super::NativeBlock;
 use super::io::Io;
+use super::member::M;
 use crate::engine::fault::FaultKind;
 
 /// `ErrorID` for a VAR_IN_OUT that names no axis (`docs/motion.md` §5).
@@ -22,15 +23,15 @@ const MAX_NUM_TAPPETS: usize = 512;
 
 /// Writes the outputs every synchronised block has.
 fn status(io: &mut Io<'_, '_>, busy: bool, error: bool, error_id: u16) -> Result<(), FaultKind> {
-    io.set_bool("Busy", busy)?;
-    io.set_bool("Error", error)?;
-    io.set_word("ErrorID", error_id)
+    io.set_bool(M::Busy, busy)?;
+    io.set_bool(M::Error, error)?;
+    io.set_word(M::ErrorID, error_id)
 }
 
 /// Writes `Active` and `CommandAborted` of a block that controls the slave.
 fn control(io: &mut Io<'_, '_>, active: bool, aborted: bool) -> Result<(), FaultKind> {
-    io.set_bool("Active", active)?;
-    io.set_bool("CommandAborted", aborted)
+    io.set_bool(M::Active, active)?;
+    io.set_bool(M::CommandAborted, aborted)
 }
 
 fn buffer_mode(code: i16) -> BufferMode {
@@ -56,7 +57,7 @@ fn start_mode(code: i16) -> StartMode {
 
 /// The master and the slave, or `None` after writing the unknown-axis error.
 fn axes(io: &mut Io<'_, '_>) -> Result<Option<(AxisId, AxisId)>, FaultKind> {
-    match (io.axis("Master")?, io.axis("Slave")?) {
+    match (io.axis(M::Master)?, io.axis(M::Slave)?) {
         (Some(master), Some(slave)) => Ok(Some((master, slave))),
         _ => {
             status(io, false, true, UNKNOWN_AXIS)?;
@@ -67,7 +68,7 @@ fn axes(io: &mut Io<'_, '_>) -> Result<Option<(AxisId, AxisId)>, FaultKind> {
 
 /// The slave alone, or `None` after writing the unknown-axis error.
 fn slave(io: &mut Io<'_, '_>) -> Result<Option<AxisId>, FaultKind> {
-    match io.axis("Slave")? {
+    match io.axis(M::Slave)? {
         Some(slave) => Ok(Some(slave)),
         None => {
             status(io, false, true, UNKNOWN_AXIS)?;
@@ -89,7 +90,7 @@ pub(super) fn call(
             let Some(slave) = slave(io)? else {
                 return Ok(());
             };
-            let execute = io.bool("Execute")?;
+            let execute = io.bool(M::Execute)?;
             let (done, busy, error, error_id) = if native == NativeBlock::CamOut {
                 let (kernel, fb) = io.motion().block::<CamOut>(instance);
                 fb.execute = execute;
@@ -101,21 +102,21 @@ pub(super) fn call(
                 fb.call(kernel, slave);
                 (fb.done, fb.busy, fb.error, fb.error_id)
             };
-            io.set_bool("Done", done)?;
+            io.set_bool(M::Done, done)?;
             status(io, busy, error, error_id)
         }
         NativeBlock::GearIn => {
             let Some((master, slave)) = axes(io)? else {
                 return Ok(());
             };
-            let execute = io.bool("Execute")?;
-            let ratio = (io.dint("RatioNumerator")?, io.udint("RatioDenominator")?);
+            let execute = io.bool(M::Execute)?;
+            let ratio = (io.dint(M::RatioNumerator)?, io.udint(M::RatioDenominator)?);
             let dynamics = (
-                io.lreal("Acceleration")?,
-                io.lreal("Deceleration")?,
-                io.lreal("Jerk")?,
+                io.lreal(M::Acceleration)?,
+                io.lreal(M::Deceleration)?,
+                io.lreal(M::Jerk)?,
             );
-            let mode = buffer_mode(io.int("BufferMode")?);
+            let mode = buffer_mode(io.int(M::BufferMode)?);
             let outputs = {
                 let (kernel, fb) = io.motion().block::<GearIn>(instance);
                 fb.execute = execute;
@@ -132,7 +133,7 @@ pub(super) fn call(
                     fb.error_id,
                 )
             };
-            io.set_bool("InGear", outputs.0)?;
+            io.set_bool(M::InGear, outputs.0)?;
             control(io, outputs.2, outputs.3)?;
             status(io, outputs.1, outputs.4, outputs.5)
         }
@@ -140,16 +141,16 @@ pub(super) fn call(
             let Some((master, slave)) = axes(io)? else {
                 return Ok(());
             };
-            let execute = io.bool("Execute")?;
-            let numerator = io.dint("RatioNumerator")?;
+            let execute = io.bool(M::Execute)?;
+            let numerator = io.dint(M::RatioNumerator)?;
             // A negative denominator is no ratio: 0 makes the block refuse it.
-            let denominator = u32::try_from(io.dint("RatioDenominator")?).unwrap_or(0);
+            let denominator = u32::try_from(io.dint(M::RatioDenominator)?).unwrap_or(0);
             let positions = (
-                io.lreal("MasterSyncPosition")?,
-                io.lreal("SlaveSyncPosition")?,
-                io.lreal("MasterStartDistance")?,
+                io.lreal(M::MasterSyncPosition)?,
+                io.lreal(M::SlaveSyncPosition)?,
+                io.lreal(M::MasterStartDistance)?,
             );
-            let mode = buffer_mode(io.int("BufferMode")?);
+            let mode = buffer_mode(io.int(M::BufferMode)?);
             let outputs = {
                 let (kernel, fb) = io.motion().block::<GearInPos>(instance);
                 fb.execute = execute;
@@ -171,8 +172,8 @@ pub(super) fn call(
                     fb.error_id,
                 )
             };
-            io.set_bool("StartSync", outputs.0)?;
-            io.set_bool("InSync", outputs.1)?;
+            io.set_bool(M::StartSync, outputs.0)?;
+            io.set_bool(M::InSync, outputs.1)?;
             control(io, outputs.3, outputs.4)?;
             status(io, outputs.2, outputs.5, outputs.6)
         }
@@ -180,13 +181,13 @@ pub(super) fn call(
             let Some((master, slave)) = axes(io)? else {
                 return Ok(());
             };
-            let execute = io.bool("Execute")?;
-            let shift = io.lreal("PhaseShift")?;
+            let execute = io.bool(M::Execute)?;
+            let shift = io.lreal(M::PhaseShift)?;
             let dynamics = (
-                io.lreal("Velocity")?,
-                io.lreal("Acceleration")?,
-                io.lreal("Deceleration")?,
-                io.lreal("Jerk")?,
+                io.lreal(M::Velocity)?,
+                io.lreal(M::Acceleration)?,
+                io.lreal(M::Deceleration)?,
+                io.lreal(M::Jerk)?,
             );
             let outputs = {
                 let (kernel, fb) = io.motion().block::<Phasing>(instance);
@@ -205,7 +206,7 @@ pub(super) fn call(
                     fb.error_id,
                 )
             };
-            io.set_bool("Done", outputs.0)?;
+            io.set_bool(M::Done, outputs.0)?;
             control(io, outputs.2, outputs.3)?;
             status(io, outputs.1, outputs.4, outputs.5)
         }
@@ -215,14 +216,14 @@ pub(super) fn call(
             let Some((master, slave)) = axes(io)? else {
                 return Ok(());
             };
-            let enable = io.bool("Enable")?;
+            let enable = io.bool(M::Enable)?;
             let scaling = (
-                io.lreal("MasterOffset")?,
-                io.lreal("SlaveOffset")?,
-                io.lreal("MasterScaling")?,
-                io.lreal("SlaveScaling")?,
+                io.lreal(M::MasterOffset)?,
+                io.lreal(M::SlaveOffset)?,
+                io.lreal(M::MasterScaling)?,
+                io.lreal(M::SlaveScaling)?,
             );
-            let selection = CamTableId(io.selection("CamTableID")?);
+            let selection = CamTableId(io.selection(M::CamTableID)?);
             let outputs = {
                 let (kernel, fb) = io.motion().block::<GetCamSlaveSetPosition>(instance);
                 fb.enable = enable;
@@ -243,9 +244,9 @@ pub(super) fn call(
                     fb.error_id,
                 )
             };
-            io.set_lreal("fStartPosition", outputs.0)?;
-            io.set_lreal("fStartVelocity", outputs.1)?;
-            io.set_lreal("fStartAcceleration", outputs.2)?;
+            io.set_lreal(M::fStartPosition, outputs.0)?;
+            io.set_lreal(M::fStartVelocity, outputs.1)?;
+            io.set_lreal(M::fStartAcceleration, outputs.2)?;
             status(io, outputs.3, outputs.4, outputs.5)
         }
         other => Err(FaultKind::Internal(format!(
@@ -259,17 +260,17 @@ fn cam_table_select(io: &mut Io<'_, '_>, instance: usize) -> Result<(), FaultKin
         return Ok(());
     };
     let Some((cam_ref, cam)) = io
-        .cam("CamTable")?
+        .cam(M::CamTable)?
         .and_then(|id| io.motion().cam(id).map(|cam| (id, cam)))
     else {
-        io.set_bool("Done", false)?;
+        io.set_bool(M::Done, false)?;
         return status(io, false, true, UNKNOWN_CAM);
     };
-    let execute = io.bool("Execute")?;
+    let execute = io.bool(M::Execute)?;
     let options = [
-        io.bool("Periodic")?,
-        io.bool("MasterAbsolute")?,
-        io.bool("SlaveAbsolute")?,
+        io.bool(M::Periodic)?,
+        io.bool(M::MasterAbsolute)?,
+        io.bool(M::SlaveAbsolute)?,
     ];
     let outputs = {
         let (kernel, fb) = io.motion().block::<CamTableSelect>(instance);
@@ -279,8 +280,8 @@ fn cam_table_select(io: &mut Io<'_, '_>, instance: usize) -> Result<(), FaultKin
         fb.call(kernel, master, slave);
         (fb.done, fb.busy, fb.error, fb.error_id, fb.cam_table_id)
     };
-    io.set_bool("Done", outputs.0)?;
-    io.set_selection("CamTableID", cam_ref, outputs.4.0, options)?;
+    io.set_bool(M::Done, outputs.0)?;
+    io.set_selection(M::CamTableID, cam_ref, outputs.4.0, options)?;
     status(io, outputs.1, outputs.2, outputs.3)
 }
 
@@ -288,23 +289,23 @@ fn cam_in(io: &mut Io<'_, '_>, instance: usize) -> Result<(), FaultKind> {
     let Some((master, slave)) = axes(io)? else {
         return Ok(());
     };
-    let execute = io.bool("Execute")?;
+    let execute = io.bool(M::Execute)?;
     let placement = (
-        io.lreal("MasterOffset")?,
-        io.lreal("SlaveOffset")?,
-        io.lreal("MasterScaling")?,
-        io.lreal("SlaveScaling")?,
+        io.lreal(M::MasterOffset)?,
+        io.lreal(M::SlaveOffset)?,
+        io.lreal(M::MasterScaling)?,
+        io.lreal(M::SlaveScaling)?,
     );
-    let start = start_mode(io.int("StartMode")?);
-    let selection = CamTableId(io.selection("CamTableID")?);
+    let start = start_mode(io.int(M::StartMode)?);
+    let selection = CamTableId(io.selection(M::CamTableID)?);
     let ramp = (
-        io.lreal("VelocityDiff")?,
-        io.lreal("Acceleration")?,
-        io.lreal("Deceleration")?,
-        io.lreal("Jerk")?,
+        io.lreal(M::VelocityDiff)?,
+        io.lreal(M::Acceleration)?,
+        io.lreal(M::Deceleration)?,
+        io.lreal(M::Jerk)?,
     );
-    let hysteresis = io.lreal("TappetHysteresis")?;
-    let mode = buffer_mode(io.int("BufferMode")?);
+    let hysteresis = io.lreal(M::TappetHysteresis)?;
+    let mode = buffer_mode(io.int(M::BufferMode)?);
     let outputs = {
         let (kernel, fb) = io.motion().block::<CamIn>(instance);
         fb.execute = execute;
@@ -330,28 +331,28 @@ fn cam_in(io: &mut Io<'_, '_>, instance: usize) -> Result<(), FaultKind> {
             fb.end_of_profile,
         )
     };
-    io.set_bool("InSync", outputs.0)?;
-    io.set_bool("EndOfProfile", outputs.6)?;
-    io.set_coupling("Tappets")?;
+    io.set_bool(M::InSync, outputs.0)?;
+    io.set_bool(M::EndOfProfile, outputs.6)?;
+    io.set_coupling(M::Tappets)?;
     control(io, outputs.2, outputs.3)?;
     status(io, outputs.1, outputs.4, outputs.5)
 }
 
 fn cam_register(io: &mut Io<'_, '_>, instance: usize) -> Result<(), FaultKind> {
-    let Some(master) = io.axis("Master")? else {
-        io.set_bool("EndOfProfile", false)?;
+    let Some(master) = io.axis(M::Master)? else {
+        io.set_bool(M::EndOfProfile, false)?;
         return status(io, false, true, UNKNOWN_AXIS);
     };
-    let Some(cam) = io.cam("CamTable")?.and_then(|id| io.motion().cam(id)) else {
-        io.set_bool("EndOfProfile", false)?;
+    let Some(cam) = io.cam(M::CamTable)?.and_then(|id| io.motion().cam(id)) else {
+        io.set_bool(M::EndOfProfile, false)?;
         return status(io, false, true, UNKNOWN_CAM);
     };
     let inputs = (
-        io.bool("Enable")?,
-        io.lreal("MasterOffset")?,
-        io.lreal("MasterScaling")?,
-        io.lreal("TappetHysteresis")?,
-        io.lreal("DeadTimeCompensation")?,
+        io.bool(M::Enable)?,
+        io.lreal(M::MasterOffset)?,
+        io.lreal(M::MasterScaling)?,
+        io.lreal(M::TappetHysteresis)?,
+        io.lreal(M::DeadTimeCompensation)?,
     );
     let (outputs, tappets) = {
         let (kernel, fb) = io.motion().block::<CamRegister>(instance);
@@ -367,16 +368,16 @@ fn cam_register(io: &mut Io<'_, '_>, instance: usize) -> Result<(), FaultKind> {
         ((fb.busy, fb.error, fb.error_id, fb.end_of_profile), tappets)
     };
     for (track, value) in tappets {
-        io.set_array_bool("bTappet", MAX_NUM_TAPPETS, usize::from(track), value)?;
+        io.set_array_bool(M::bTappet, MAX_NUM_TAPPETS, usize::from(track), value)?;
     }
-    io.set_bool("EndOfProfile", outputs.3)?;
+    io.set_bool(M::EndOfProfile, outputs.3)?;
     status(io, outputs.0, outputs.1, outputs.2)
 }
 
 fn get_tappet_value(io: &mut Io<'_, '_>, instance: usize) -> Result<(), FaultKind> {
-    let coupling = io.coupling("Tappets")?;
-    let id = u16::try_from(io.int("iID")?).unwrap_or(0);
-    let init = (io.bool("bInitValue")?, io.bool("bSetInitValueAtReset")?);
+    let coupling = io.coupling(M::Tappets)?;
+    let id = u16::try_from(io.int(M::iID)?).unwrap_or(0);
+    let init = (io.bool(M::bInitValue)?, io.bool(M::bSetInitValueAtReset)?);
     let motion = io.motion();
     let mut fb = motion.take::<GetTappetValue>(instance);
     fb.id = id;
@@ -389,5 +390,5 @@ fn get_tappet_value(io: &mut Io<'_, '_>, instance: usize) -> Result<(), FaultKin
     }
     let value = fb.tappet;
     motion.put(instance, fb);
-    io.set_bool("bTappet", value)
+    io.set_bool(M::bTappet, value)
 }
