@@ -30,6 +30,9 @@ pub struct CamEditor {
     view: Option<CurveView>,
     /// The model's cam last shown, to notice changes from elsewhere (undo, another view).
     seen: Option<CamTable>,
+    /// The cam of the last edit returned, which the model holds next frame if the app applied
+    /// it: that change keeps the selection, any other clears what was being done.
+    emitted: Option<CamTable>,
 }
 
 /// The tabs of the editor, as in the CODESYS cam editor.
@@ -116,12 +119,14 @@ impl CamEditor {
         read_only: bool,
     ) -> CamEditorOutput {
         if self.seen.as_ref() != Some(cam) {
-            if self.seen.is_some() {
+            let own_edit = self.emitted.as_ref() == Some(cam);
+            if self.seen.is_some() && !own_edit {
                 self.drafts.clear();
                 self.plots.cancel_drag();
                 self.lanes.cancel();
             }
             self.seen = Some(cam.clone());
+            self.emitted = None;
         }
         if read_only {
             self.plots.cancel_drag();
@@ -200,6 +205,7 @@ impl CamEditor {
             Some(Gesture::Edit(label, changed)) => {
                 self.drafts.accept();
                 if changed != *cam {
+                    self.emitted = Some(changed.clone());
                     output.edit = Some((label, changed));
                 }
             }

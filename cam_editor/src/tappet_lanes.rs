@@ -14,6 +14,10 @@ use crate::editor::{Frame, Gesture};
 use crate::output::CamLive;
 use crate::texts::CamEditorTexts;
 
+/// How far, in points, the pointer must move between press and release for a tappet to move;
+/// less is a click.
+const MIN_DRAG: f32 = 3.0;
+
 /// The height of one lane in points.
 const LANE_HEIGHT: f32 = 30.0;
 
@@ -23,6 +27,8 @@ const LANE_HEIGHT: f32 = 30.0;
 pub(crate) struct LaneState {
     /// The tappet being dragged: track, tappet and its master position now.
     drag: Option<(usize, usize, f64)>,
+    /// Where the pointer was when the drag started: a release near it is a click, not a move.
+    drag_origin: Option<egui::Pos2>,
     /// The tappet the Delete key removes: track and tappet, 0-based.
     selected: Option<(usize, usize)>,
     /// Where each tappet was drawn in the last frame, by track and tappet.
@@ -164,6 +170,7 @@ impl LaneState {
                 if response.drag_started() {
                     self.selected = Some((track_index, tappet_index));
                     self.drag = Some((track_index, tappet_index, tappet.position));
+                    self.drag_origin = response.interact_pointer_pos();
                 }
                 if response.dragged()
                     && let Some(pointer) = response.interact_pointer_pos()
@@ -171,8 +178,13 @@ impl LaneState {
                     self.drag = Some((track_index, tappet_index, master_at(transform, pointer.x, cam)));
                     ui.ctx().request_repaint();
                 }
+                let moved = match (self.drag_origin, response.interact_pointer_pos()) {
+                    (Some(origin), Some(pointer)) => origin.distance(pointer) > MIN_DRAG,
+                    _ => false,
+                };
                 if response.drag_stopped()
                     && let Some((_, _, to)) = self.drag.take()
+                    && moved
                 {
                     let mut changed = cam.clone();
                     let tappets = &mut changed.tracks[track_index].tappets;
