@@ -83,6 +83,7 @@ fn dragging(cam: &CamTable) -> (Context, CamEditor, Pos2) {
         let to = at + vec2(0.0, step as f32 * 2.0);
         frame(&ctx, &mut editor, cam, vec![Event::PointerMoved(to)]);
     }
+    assert!(editor.is_dragging_key_point(), "the drag did not start");
     (ctx, editor, at + vec2(0.0, 10.0))
 }
 
@@ -107,11 +108,19 @@ fn benchmarks(c: &mut Criterion) {
             start.elapsed().as_secs_f64() * 1e3
         })
         .collect();
+    assert!(editor.is_dragging_key_point(), "the drag ended");
     times_ms.sort_by(f64::total_cmp);
+    let at = |percent: usize| times_ms[(times_ms.len() * percent / 100).min(times_ms.len() - 1)];
     eprintln!(
-        "drag frame of a {POINTS}-point cam: median {:.2} ms, 95th percentile {:.2} ms",
-        times_ms[times_ms.len() / 2],
-        times_ms[times_ms.len() * 95 / 100]
+        "drag frame of a {POINTS}-point cam: median {:.2} ms, 95th percentile {:.2} ms \
+         (10th {:.2}, 25th {:.2}, 75th {:.2}, 90th {:.2}, max {:.2})",
+        at(50),
+        at(95),
+        at(10),
+        at(25),
+        at(75),
+        at(90),
+        at(100)
     );
 }
 

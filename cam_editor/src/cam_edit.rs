@@ -75,7 +75,10 @@ pub fn set_key_point(
     }
     let last = count - 1;
     let smooth = cam.period.smooth_transition;
-    let slave_period = cam.period.slave_period.filter(|p| p.is_finite() && *p != 0.0);
+    let slave_period = cam
+        .period
+        .slave_period
+        .filter(|p| p.is_finite() && *p != 0.0);
     match &mut changed.profile {
         CamProfile::Segments { start, segments } => {
             let matched = |other: &CamKeyPoint| CamKeyPoint {

@@ -1,8 +1,8 @@
 //! From the project model's cam table to a `motion` curve, and its continuity check.
 
 use motion::cam::{
-    CamError, ContinuityChecks, ContinuityWarning, KeyPoint, MotionLaw, Periodicity,
-    PointCam, PointInterpolation, Segment, SegmentBounds, SegmentedCam,
+    CamError, ContinuityChecks, ContinuityWarning, KeyPoint, MotionLaw, Periodicity, PointCam,
+    PointInterpolation, Segment, SegmentBounds, SegmentedCam,
 };
 use motion::curve::{CamCurve, CamPoint, CamSample};
 use project_model::{CamKeyPoint, CamProfile, CamTable};
@@ -191,7 +191,10 @@ mod tests {
             segments[1].end.master = 100.0;
         }
         let error = curve_of(&cam).unwrap_err().to_string();
-        assert!(error.starts_with("cam Knife: segment 2 (Poly5, 120..100)"), "{error}");
+        assert!(
+            error.starts_with("cam Knife: segment 2 (Poly5, 120..100)"),
+            "{error}"
+        );
         assert!(error.contains("must increase"), "{error}");
     }
 
@@ -206,7 +209,10 @@ mod tests {
         }
         let error = curve_of(&cam).unwrap_err().to_string();
         assert!(error.contains("segment 1 (Cycloid"), "{error}");
-        assert!(error.contains("velocity 0 and end at velocity 1"), "{error}");
+        assert!(
+            error.contains("velocity 0 and end at velocity 1"),
+            "{error}"
+        );
     }
 
     #[test]
@@ -215,13 +221,25 @@ mod tests {
         cam.profile = CamProfile::Points {
             interpolation: project_model::PointInterpolation::Linear,
             points: vec![
-                CamTablePoint { master: 0.0, slave: 0.0 },
-                CamTablePoint { master: 10.0, slave: 1.0 },
-                CamTablePoint { master: 10.0, slave: 2.0 },
+                CamTablePoint {
+                    master: 0.0,
+                    slave: 0.0,
+                },
+                CamTablePoint {
+                    master: 10.0,
+                    slave: 1.0,
+                },
+                CamTablePoint {
+                    master: 10.0,
+                    slave: 2.0,
+                },
             ],
         };
         let error = curve_of(&cam).unwrap_err().to_string();
-        assert!(error.contains("row 3: master position 10 repeats"), "{error}");
+        assert!(
+            error.contains("row 3: master position 10 repeats"),
+            "{error}"
+        );
     }
 
     #[test]

@@ -176,9 +176,9 @@ impl CamEditor {
         };
         match self.tab {
             Tab::Cam => {
-                let plot_height = ((ui.available_height() - 40.0 * (cam.tracks.len() as f32 + 3.0))
-                    / 4.0)
-                    .clamp(90.0, 260.0);
+                let plot_height =
+                    ((ui.available_height() - 40.0 * (cam.tracks.len() as f32 + 3.0)) / 4.0)
+                        .clamp(90.0, 260.0);
                 egui::ScrollArea::vertical()
                     .id_salt("cam plots")
                     .auto_shrink([false, false])
@@ -222,8 +222,14 @@ impl CamEditor {
     pub fn key_point_screen_pos(&self, cam: &CamTable, index: usize) -> Option<egui::Pos2> {
         let transform = self.plots.transform()?;
         let point = crate::cam_edit::key_points(cam).get(index).copied()?;
-        let pos = transform.position_from_point(&egui_plot::PlotPoint::new(point.master, point.slave));
+        let pos =
+            transform.position_from_point(&egui_plot::PlotPoint::new(point.master, point.slave));
         transform.frame().contains(pos).then_some(pos)
+    }
+
+    /// Whether a key point is being dragged (its preview is shown, its edit comes on release).
+    pub fn is_dragging_key_point(&self) -> bool {
+        self.plots.preview().is_some()
     }
 
     /// Where tappet `tappet` of track `track` (0-based) was drawn in its lane in the last frame.

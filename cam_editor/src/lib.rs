@@ -25,9 +25,7 @@ mod tappet_lanes;
 mod texts;
 mod tracks;
 
-pub use cam_edit::{
-    CamEditError, delete_key_point, insert_key_point, next_action, set_key_point,
-};
+pub use cam_edit::{CamEditError, delete_key_point, insert_key_point, next_action, set_key_point};
 pub use convert::{ConvertError, Curve, continuity_warnings, curve_of};
 pub use editor::CamEditor;
 pub use output::{CamEditorOutput, CamLive};

@@ -37,9 +37,8 @@ impl Drafts {
     pub(crate) fn refusal_ui(&self, ui: &mut Ui) {
         if let Some((label, reason)) = &self.refusal {
             let text = format!("{label}: {reason}");
-            let shown = ui.add(
-                Label::new(RichText::new(&text).color(ui.visuals().error_fg_color)).wrap(),
-            );
+            let shown =
+                ui.add(Label::new(RichText::new(&text).color(ui.visuals().error_fg_color)).wrap());
             shown.widget_info(|| WidgetInfo::labeled(Role::Label, true, &text));
         }
     }
@@ -104,5 +103,8 @@ pub(crate) fn rounded_text(value: f64) -> String {
 
 /// The finite number in `text`, or `None`.
 pub(crate) fn parse_number(text: &str) -> Option<f64> {
-    text.trim().parse::<f64>().ok().filter(|value| value.is_finite())
+    text.trim()
+        .parse::<f64>()
+        .ok()
+        .filter(|value| value.is_finite())
 }

@@ -39,7 +39,8 @@ pub fn sample_for_plot(
     let low = view.0.max(first);
     let high = view.1.min(last);
     let mut samples = PlotSamples::default();
-    if !(high > low) {
+    // A NaN bound leaves nothing to draw, like an empty range.
+    if high.is_nan() || low.is_nan() || high <= low {
         return samples;
     }
     let columns = columns.clamp(1, 100_000);
@@ -75,7 +76,9 @@ pub fn sample_for_plot(
         }
         push_column(&mut samples.position, &column_samples, |s| s.position);
         push_column(&mut samples.velocity, &column_samples, |s| s.velocity);
-        push_column(&mut samples.acceleration, &column_samples, |s| s.acceleration);
+        push_column(&mut samples.acceleration, &column_samples, |s| {
+            s.acceleration
+        });
         push_column(&mut samples.jerk, &column_samples, |s| s.jerk);
     }
     samples
@@ -89,7 +92,11 @@ fn push_column(
     value: impl Fn(&CamSample) -> f64,
 ) {
     if column.len() <= KEEP_ALL_UP_TO {
-        line.extend(column.iter().map(|(master, sample)| [*master, value(sample)]));
+        line.extend(
+            column
+                .iter()
+                .map(|(master, sample)| [*master, value(sample)]),
+        );
         return;
     }
     let mut lowest = 0;
@@ -131,7 +138,11 @@ mod tests {
             // The sample is the curve's own value at the key point, which is the key point's
             // slave position to rounding.
             let expected = cam.sample(key).position;
-            assert_eq!(found.map(|point| point[1]), Some(expected), "key point {key}");
+            assert_eq!(
+                found.map(|point| point[1]),
+                Some(expected),
+                "key point {key}"
+            );
             assert!((expected - key).abs() < 1e-9);
         }
     }
@@ -148,11 +159,28 @@ mod tests {
         let masters: Vec<f64> = points.iter().map(|p| p.master).collect();
         let cam = PointCam::new(points, PointInterpolation::Linear).unwrap();
         let samples = sample_for_plot(&cam, &masters, (0.0, 9_999.0), 800);
-        assert!(samples.position.len() <= 4 * 800 + 1, "{}", samples.position.len());
+        assert!(
+            samples.position.len() <= 4 * 800 + 1,
+            "{}",
+            samples.position.len()
+        );
         // The zigzag's extremes survive the reduction in every column.
-        let highest = samples.position.iter().map(|p| p[1]).fold(f64::MIN, f64::max);
-        let lowest = samples.position.iter().map(|p| p[1]).fold(f64::MAX, f64::min);
+        let highest = samples
+            .position
+            .iter()
+            .map(|p| p[1])
+            .fold(f64::MIN, f64::max);
+        let lowest = samples
+            .position
+            .iter()
+            .map(|p| p[1])
+            .fold(f64::MAX, f64::min);
         assert_eq!((lowest, highest), (0.0, 1.0));
-        assert!(samples.position.windows(2).all(|pair| pair[0][0] <= pair[1][0]));
+        assert!(
+            samples
+                .position
+                .windows(2)
+                .all(|pair| pair[0][0] <= pair[1][0])
+        );
     }
 }

@@ -59,10 +59,22 @@ struct SampleKey {
 
 /// The four quantities in plot order, with their colours.
 const QUANTITIES: [(ContinuityQuantity, Color32); 4] = [
-    (ContinuityQuantity::Position, Color32::from_rgb(0x3a, 0x80, 0xe0)),
-    (ContinuityQuantity::Velocity, Color32::from_rgb(0x30, 0xa0, 0x50)),
-    (ContinuityQuantity::Acceleration, Color32::from_rgb(0xe0, 0x80, 0x20)),
-    (ContinuityQuantity::Jerk, Color32::from_rgb(0xa0, 0x50, 0xc0)),
+    (
+        ContinuityQuantity::Position,
+        Color32::from_rgb(0x3a, 0x80, 0xe0),
+    ),
+    (
+        ContinuityQuantity::Velocity,
+        Color32::from_rgb(0x30, 0xa0, 0x50),
+    ),
+    (
+        ContinuityQuantity::Acceleration,
+        Color32::from_rgb(0xe0, 0x80, 0x20),
+    ),
+    (
+        ContinuityQuantity::Jerk,
+        Color32::from_rgb(0xa0, 0x50, 0xc0),
+    ),
 ];
 
 /// The colour of continuity warnings and of the live marker.
@@ -100,7 +112,9 @@ impl PlotState {
             return None;
         };
         let (first, last) = curve.master_range();
-        let hovered_values = self.hover_master.map(|master| (master, curve.sample(master)));
+        let hovered_values = self
+            .hover_master
+            .map(|master| (master, curve.sample(master)));
         let readout = match hovered_values {
             Some((master, at)) => format!(
                 "{} {:.3}   {} {:.4}   {} {:.4}   {} {:.4}   {} {:.4}",
@@ -298,7 +312,9 @@ impl PlotState {
             let point = shown[index];
             let pos = point_pos(transform, &point);
             let rect = Rect::from_center_size(pos, vec2(14.0, 14.0));
-            let id = ui.scope_id().with(("cam key point", &frame.cam.name, index));
+            let id = ui
+                .scope_id()
+                .with(("cam key point", &frame.cam.name, index));
             let sense = if frame.read_only {
                 Sense::hover()
             } else {
@@ -314,10 +330,8 @@ impl PlotState {
                 ui.visuals().extreme_bg_color,
                 Stroke::new(2.0, handle_color),
             );
-            let response = response.on_hover_text(format!(
-                "{label}\nX {}\nY {}",
-                point.master, point.slave
-            ));
+            let response =
+                response.on_hover_text(format!("{label}\nX {}\nY {}", point.master, point.slave));
             if response.drag_started() {
                 self.drag = Some(KeyDrag {
                     index,
@@ -407,8 +421,16 @@ fn warning_mark_ui(
         return;
     }
     let text = warning_text(warning, texts);
-    let id = ui.scope_id().with(("cam continuity warning", warning.joint, warning.quantity as u8));
-    let response = ui.interact(Rect::from_center_size(pos, vec2(12.0, 12.0)), id, Sense::hover());
+    let id = ui.scope_id().with((
+        "cam continuity warning",
+        warning.joint,
+        warning.quantity as u8,
+    ));
+    let response = ui.interact(
+        Rect::from_center_size(pos, vec2(12.0, 12.0)),
+        id,
+        Sense::hover(),
+    );
     response.widget_info(|| WidgetInfo::labeled(Role::Image, true, &text));
     response.on_hover_text(text);
 }
@@ -430,7 +452,7 @@ fn point_pos(transform: &PlotTransform, point: &CamKeyPoint) -> egui::Pos2 {
 /// `value` rounded to the power of ten at or below one pixel's worth, so a dragged point gets
 /// the digits the user can place rather than twelve.
 fn round_to_pixel(value: f64, units_per_point: f64) -> f64 {
-    if !(units_per_point > 0.0) || !units_per_point.is_finite() {
+    if !units_per_point.is_finite() || units_per_point <= 0.0 {
         return value;
     }
     let step = 10_f64.powf(units_per_point.log10().floor());
@@ -445,5 +467,9 @@ fn round_to_pixel(value: f64, units_per_point: f64) -> f64 {
 fn round_for_text(value: f64) -> String {
     let text = format!("{value:.6}");
     let text = text.trim_end_matches('0').trim_end_matches('.');
-    if text == "-0" { "0".to_owned() } else { text.to_owned() }
+    if text == "-0" {
+        "0".to_owned()
+    } else {
+        text.to_owned()
+    }
 }

@@ -1,7 +1,9 @@
 //! CSV import and export of a cam's points (the Rivet CSV of `docs/cam-formats.md` §2); the
 //! app reads and writes the files, this module only turns text into cams and back.
 
-use motion::table::{CsvColumns, CsvError, TableError, read_points_csv, sample_equidistant, write_points_csv};
+use motion::table::{
+    CsvColumns, CsvError, TableError, read_points_csv, sample_equidistant, write_points_csv,
+};
 use project_model::{CamCompileFormat, CamProfile, CamTable, CamTablePoint, PointInterpolation};
 use thiserror::Error;
 
@@ -79,7 +81,10 @@ pub fn export_points(cam: &CamTable) -> Result<String, PointsCsvError> {
             sample_equidistant(&curve, count)?
         }
     };
-    Ok(write_points_csv(&points, CsvColumns::PositionsAndDerivatives))
+    Ok(write_points_csv(
+        &points,
+        CsvColumns::PositionsAndDerivatives,
+    ))
 }
 
 #[cfg(test)]
@@ -105,7 +110,10 @@ mod tests {
         let error = import_points(&cam, "# comment\nmaster,slave\n0,0\n10,1x\n")
             .unwrap_err()
             .to_string();
-        assert_eq!(error, "line 4, column \"slave\": \"1x\" is not a number (use . as the decimal point)");
+        assert_eq!(
+            error,
+            "line 4, column \"slave\": \"1x\" is not a number (use . as the decimal point)"
+        );
     }
 
     #[test]

@@ -16,7 +16,11 @@ use crate::texts::CamEditorTexts;
 const DEFAULT_ELEMENTS: u32 = 256;
 
 /// Draws the properties of `frame.cam`; a committed field or a changed choice gives the gesture.
-pub(crate) fn properties_ui(ui: &mut Ui, drafts: &mut Drafts, frame: &Frame<'_>) -> Option<Gesture> {
+pub(crate) fn properties_ui(
+    ui: &mut Ui,
+    drafts: &mut Drafts,
+    frame: &Frame<'_>,
+) -> Option<Gesture> {
     let texts = frame.texts;
     let cam = frame.cam;
     let mut gesture = None;
@@ -25,7 +29,11 @@ pub(crate) fn properties_ui(ui: &mut Ui, drafts: &mut Drafts, frame: &Frame<'_>)
         .spacing([12.0, 6.0])
         .show(ui, |ui| {
             for is_master in [true, false] {
-                let axis = if is_master { &texts.master } else { &texts.slave };
+                let axis = if is_master {
+                    &texts.master
+                } else {
+                    &texts.slave
+                };
                 let range = if is_master { &cam.master } else { &cam.slave };
                 ui.strong(axis);
                 for (which, word) in [(0, &texts.start), (1, &texts.end)] {
@@ -41,9 +49,14 @@ pub(crate) fn properties_ui(ui: &mut Ui, drafts: &mut Drafts, frame: &Frame<'_>)
                     }
                 }
                 let label = format!("{axis} {}", texts.unit);
-                if let Some(text) = drafts.field_ui(ui, &label, &range.unit, 60.0, frame.read_only) {
+                if let Some(text) = drafts.field_ui(ui, &label, &range.unit, 60.0, frame.read_only)
+                {
                     let mut changed = cam.clone();
-                    let target = if is_master { &mut changed.master } else { &mut changed.slave };
+                    let target = if is_master {
+                        &mut changed.master
+                    } else {
+                        &mut changed.slave
+                    };
                     target.unit = text.trim().to_owned();
                     gesture = Some(Gesture::Edit(label, changed));
                 }
@@ -88,8 +101,18 @@ pub(crate) fn properties_ui(ui: &mut Ui, drafts: &mut Drafts, frame: &Frame<'_>)
         ui.strong(&texts.continuity);
         ui.horizontal(|ui| {
             let flags = cam.continuity;
-            let mut values = [flags.position, flags.velocity, flags.acceleration, flags.jerk];
-            let names = [&texts.position, &texts.velocity, &texts.acceleration, &texts.jerk];
+            let mut values = [
+                flags.position,
+                flags.velocity,
+                flags.acceleration,
+                flags.jerk,
+            ];
+            let names = [
+                &texts.position,
+                &texts.velocity,
+                &texts.acceleration,
+                &texts.jerk,
+            ];
             let mut toggled = None;
             for (index, name) in names.into_iter().enumerate() {
                 if ui.checkbox(&mut values[index], name).changed() {
@@ -105,7 +128,10 @@ pub(crate) fn properties_ui(ui: &mut Ui, drafts: &mut Drafts, frame: &Frame<'_>)
                     acceleration,
                     jerk,
                 };
-                gesture = Some(Gesture::Edit(format!("{} {name}", texts.continuity), changed));
+                gesture = Some(Gesture::Edit(
+                    format!("{} {name}", texts.continuity),
+                    changed,
+                ));
             }
         });
         ui.add_space(8.0);
@@ -120,11 +146,18 @@ pub(crate) fn properties_ui(ui: &mut Ui, drafts: &mut Drafts, frame: &Frame<'_>)
             let choices = [
                 (CamCompileFormat::Segments, &texts.format_segments),
                 (CamCompileFormat::Xyva, &texts.format_xyva),
-                (CamCompileFormat::Table1d { elements }, &texts.format_table_1d),
-                (CamCompileFormat::Table2d { elements }, &texts.format_table_2d),
+                (
+                    CamCompileFormat::Table1d { elements },
+                    &texts.format_table_1d,
+                ),
+                (
+                    CamCompileFormat::Table2d { elements },
+                    &texts.format_table_2d,
+                ),
             ];
             for (format, text) in choices {
-                let current = std::mem::discriminant(&format) == std::mem::discriminant(&cam.compile_format);
+                let current =
+                    std::mem::discriminant(&format) == std::mem::discriminant(&cam.compile_format);
                 if ui.radio(current, text).clicked() && !current {
                     gesture = Some(format_edit(cam, format, text));
                 }
@@ -175,7 +208,8 @@ fn range_edit(
     text: &str,
     texts: &CamEditorTexts,
 ) -> Result<CamTable, String> {
-    let value = parse_number(text).ok_or_else(|| format!("\"{}\" {}", text.trim(), texts.not_a_number))?;
+    let value =
+        parse_number(text).ok_or_else(|| format!("\"{}\" {}", text.trim(), texts.not_a_number))?;
     let range = if is_master { &cam.master } else { &cam.slave };
     let (start, end) = if is_start {
         (value, range.end)
@@ -195,7 +229,11 @@ fn range_edit(
         return Ok(changed);
     }
     let points = key_points(cam);
-    let index = if is_start { 0 } else { points.len().saturating_sub(1) };
+    let index = if is_start {
+        0
+    } else {
+        points.len().saturating_sub(1)
+    };
     let Some(point) = points.get(index) else {
         return Err(texts.invalid_cam.clone());
     };

@@ -280,7 +280,9 @@ fn points_ui(
                                     write(&mut changed, value);
                                     match set_key_point(cam, index, changed) {
                                         Ok(cam) => gesture = Some(Gesture::Edit(label, cam)),
-                                        Err(error) => drafts.refuse(&label, text, error.to_string()),
+                                        Err(error) => {
+                                            drafts.refuse(&label, text, error.to_string())
+                                        }
                                     }
                                 }
                                 None => {

@@ -130,7 +130,9 @@ impl LaneState {
                 let x = transform.position_from_point_x(position);
                 let hit = Rect::from_x_y_ranges(x - 6.0..=x + 6.0, rect.y_range());
                 self.rects.insert((track_index, tappet_index), hit);
-                let id = ui.scope_id().with(("cam tappet", &cam.name, track_index, tappet_index));
+                let id = ui
+                    .scope_id()
+                    .with(("cam tappet", &cam.name, track_index, tappet_index));
                 let sense = if frame.read_only {
                     Sense::hover()
                 } else {
@@ -138,7 +140,8 @@ impl LaneState {
                 };
                 let response = ui.interact(hit, id, sense);
                 let label = format!("{lane_label} {} {}", texts.tappet, tappet_index + 1);
-                response.widget_info(|| WidgetInfo::labeled(Role::Button, !frame.read_only, &label));
+                response
+                    .widget_info(|| WidgetInfo::labeled(Role::Button, !frame.read_only, &label));
                 let selected = self.selected == Some((track_index, tappet_index));
                 paint_tappet(ui, &painter, hit, tappet, selected || response.hovered());
                 let response = response.on_hover_text(format!(
@@ -175,7 +178,11 @@ impl LaneState {
                 if response.dragged()
                     && let Some(pointer) = response.interact_pointer_pos()
                 {
-                    self.drag = Some((track_index, tappet_index, master_at(transform, pointer.x, cam)));
+                    self.drag = Some((
+                        track_index,
+                        tappet_index,
+                        master_at(transform, pointer.x, cam),
+                    ));
                     ui.ctx().request_repaint();
                 }
                 let moved = match (self.drag_origin, response.interact_pointer_pos()) {
@@ -191,11 +198,13 @@ impl LaneState {
                     tappets[tappet_index].position = to;
                     sort_tappets(tappets);
                     self.selected = None;
-                    gesture = Some(Gesture::Edit(format!("{} ({label})", texts.move_tappet), changed));
+                    gesture = Some(Gesture::Edit(
+                        format!("{} ({label})", texts.move_tappet),
+                        changed,
+                    ));
                 }
-                let mut delete = selected
-                    && !text_focused
-                    && ui.input(|input| input.key_pressed(Key::Delete));
+                let mut delete =
+                    selected && !text_focused && ui.input(|input| input.key_pressed(Key::Delete));
                 response.context_menu(|ui| {
                     if ui.button(&texts.delete_tappet).clicked() {
                         delete = true;
@@ -206,7 +215,10 @@ impl LaneState {
                     let mut changed = cam.clone();
                     changed.tracks[track_index].tappets.remove(tappet_index);
                     self.selected = None;
-                    gesture = Some(Gesture::Edit(format!("{} ({label})", texts.delete_tappet), changed));
+                    gesture = Some(Gesture::Edit(
+                        format!("{} ({label})", texts.delete_tappet),
+                        changed,
+                    ));
                 }
             }
             ui.add_space(2.0);
@@ -236,7 +248,9 @@ pub(crate) fn action_text(action: TappetAction, texts: &CamEditorTexts) -> Strin
 /// The master position at screen `x`, inside the cam's master range and rounded to what a
 /// pixel resolves.
 fn master_at(transform: &PlotTransform, x: f32, cam: &CamTable) -> f64 {
-    let value = transform.value_from_position(pos2(x, transform.frame().center().y)).x;
+    let value = transform
+        .value_from_position(pos2(x, transform.frame().center().y))
+        .x;
     let step = transform.dvalue_dpos()[0].abs();
     let rounded = if step > 0.0 && step.is_finite() {
         let unit = 10_f64.powf(step.log10().floor());
@@ -247,7 +261,10 @@ fn master_at(transform: &PlotTransform, x: f32, cam: &CamTable) -> f64 {
     } else {
         value
     };
-    rounded.clamp(cam.master.start.min(cam.master.end), cam.master.end.max(cam.master.start))
+    rounded.clamp(
+        cam.master.start.min(cam.master.end),
+        cam.master.end.max(cam.master.start),
+    )
 }
 
 /// Tappets in master order, as the runtime expects them per track.
@@ -270,7 +287,10 @@ fn paint_tappet(ui: &Ui, painter: &egui::Painter, rect: Rect, tappet: &Tappet, h
         Stroke::new(width, stroke_color),
     );
     painter.line_segment(
-        [pos2(x - 5.0, rect.center().y), pos2(x + 5.0, rect.center().y)],
+        [
+            pos2(x - 5.0, rect.center().y),
+            pos2(x + 5.0, rect.center().y),
+        ],
         Stroke::new(width, stroke_color),
     );
     let upper = pos2(x, rect.top() + rect.height() * 0.25);

@@ -139,7 +139,9 @@ impl Default for CamEditorTexts {
             start_not_below_end: s("the start must be below the end"),
             too_few_elements: s("a table needs at least 2 elements"),
             not_an_integer: s("is not a whole number"),
-            lanes_hint: s("Double-click a lane to add a tappet; click the upper or lower end of a tappet to change its positive or negative pass"),
+            lanes_hint: s(
+                "Double-click a lane to add a tappet; click the upper or lower end of a tappet to change its positive or negative pass",
+            ),
         }
     }
 }

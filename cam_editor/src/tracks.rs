@@ -32,16 +32,26 @@ pub(crate) fn tracks_ui(ui: &mut Ui, drafts: &mut Drafts, frame: &Frame<'_>) -> 
                     ui.strong(&name);
                     let label = format!("{name} {}", texts.name);
                     ui.label(&texts.name);
-                    if let Some(text) = drafts.field_ui(ui, &label, &track.name, 140.0, frame.read_only) {
-                        let changed = with_track(cam, track_index, |t| t.name = text.trim().to_owned());
+                    if let Some(text) =
+                        drafts.field_ui(ui, &label, &track.name, 140.0, frame.read_only)
+                    {
+                        let changed =
+                            with_track(cam, track_index, |t| t.name = text.trim().to_owned());
                         gesture = Some(Gesture::Edit(label, changed));
                     }
                     let label = format!("{name} {}", texts.hysteresis);
                     ui.label(&texts.hysteresis);
-                    if let Some(text) = drafts.field_ui(ui, &label, &number_text(track.hysteresis), 70.0, frame.read_only) {
+                    if let Some(text) = drafts.field_ui(
+                        ui,
+                        &label,
+                        &number_text(track.hysteresis),
+                        70.0,
+                        frame.read_only,
+                    ) {
                         match parse_number(&text).filter(|value| *value >= 0.0) {
                             Some(value) => {
-                                let changed = with_track(cam, track_index, |t| t.hysteresis = value);
+                                let changed =
+                                    with_track(cam, track_index, |t| t.hysteresis = value);
                                 gesture = Some(Gesture::Edit(label, changed));
                             }
                             None => {
@@ -52,14 +62,22 @@ pub(crate) fn tracks_ui(ui: &mut Ui, drafts: &mut Drafts, frame: &Frame<'_>) -> 
                     }
                     let label = format!("{name} {}", texts.dead_time_us);
                     ui.label(&texts.dead_time_us);
-                    if let Some(text) = drafts.field_ui(ui, &label, &track.dead_time_us.to_string(), 70.0, frame.read_only) {
+                    if let Some(text) = drafts.field_ui(
+                        ui,
+                        &label,
+                        &track.dead_time_us.to_string(),
+                        70.0,
+                        frame.read_only,
+                    ) {
                         match text.trim().parse::<i32>() {
                             Ok(value) => {
-                                let changed = with_track(cam, track_index, |t| t.dead_time_us = value);
+                                let changed =
+                                    with_track(cam, track_index, |t| t.dead_time_us = value);
                                 gesture = Some(Gesture::Edit(label, changed));
                             }
                             Err(_) => {
-                                let reason = format!("\"{}\" {}", text.trim(), texts.not_an_integer);
+                                let reason =
+                                    format!("\"{}\" {}", text.trim(), texts.not_an_integer);
                                 drafts.refuse(&label, text, reason);
                             }
                         }
@@ -81,14 +99,21 @@ pub(crate) fn tracks_ui(ui: &mut Ui, drafts: &mut Drafts, frame: &Frame<'_>) -> 
                         ui.horizontal(|ui| {
                             ui.label(&tappet_name);
                             let label = format!("{tappet_name} X");
-                            if let Some(text) = drafts.field_ui(ui, &label, &number_text(tappet.position), 80.0, frame.read_only) {
+                            if let Some(text) = drafts.field_ui(
+                                ui,
+                                &label,
+                                &number_text(tappet.position),
+                                80.0,
+                                frame.read_only,
+                            ) {
                                 let low = cam.master.start.min(cam.master.end);
                                 let high = cam.master.start.max(cam.master.end);
                                 match parse_number(&text).filter(|x| (low..=high).contains(x)) {
                                     Some(position) => {
                                         let changed = with_track(cam, track_index, |t| {
                                             t.tappets[tappet_index].position = position;
-                                            t.tappets.sort_by(|a, b| a.position.total_cmp(&b.position));
+                                            t.tappets
+                                                .sort_by(|a, b| a.position.total_cmp(&b.position));
                                         });
                                         gesture = Some(Gesture::Edit(label, changed));
                                     }
@@ -103,21 +128,47 @@ pub(crate) fn tracks_ui(ui: &mut Ui, drafts: &mut Drafts, frame: &Frame<'_>) -> 
                                 }
                             }
                             for positive in [true, false] {
-                                let pass = if positive { &texts.positive_pass } else { &texts.negative_pass };
-                                let current = if positive { tappet.on_positive } else { tappet.on_negative };
+                                let pass = if positive {
+                                    &texts.positive_pass
+                                } else {
+                                    &texts.negative_pass
+                                };
+                                let current = if positive {
+                                    tappet.on_positive
+                                } else {
+                                    tappet.on_negative
+                                };
                                 let label = format!("{tappet_name} {pass}");
                                 let mut chosen = None;
                                 ui.add_enabled_ui(!frame.read_only, |ui| {
-                                    let combo = ComboBox::from_id_salt(("cam tappet action", track_index, tappet_index, positive))
-                                        .selected_text(action_text(current, texts))
-                                        .show_ui(ui, |ui| {
-                                            for action in ACTIONS {
-                                                if ui.selectable_label(action == current, action_text(action, texts)).clicked() && action != current {
-                                                    chosen = Some(action);
-                                                }
+                                    let combo = ComboBox::from_id_salt((
+                                        "cam tappet action",
+                                        track_index,
+                                        tappet_index,
+                                        positive,
+                                    ))
+                                    .selected_text(action_text(current, texts))
+                                    .show_ui(ui, |ui| {
+                                        for action in ACTIONS {
+                                            if ui
+                                                .selectable_label(
+                                                    action == current,
+                                                    action_text(action, texts),
+                                                )
+                                                .clicked()
+                                                && action != current
+                                            {
+                                                chosen = Some(action);
                                             }
-                                        });
-                                    combo.response.widget_info(|| WidgetInfo::labeled(Role::ComboBox, !frame.read_only, &label));
+                                        }
+                                    });
+                                    combo.response.widget_info(|| {
+                                        WidgetInfo::labeled(
+                                            Role::ComboBox,
+                                            !frame.read_only,
+                                            &label,
+                                        )
+                                    });
                                 });
                                 if let Some(action) = chosen {
                                     let changed = with_track(cam, track_index, |t| {
@@ -138,7 +189,12 @@ pub(crate) fn tracks_ui(ui: &mut Ui, drafts: &mut Drafts, frame: &Frame<'_>) -> 
             }
             if !frame.read_only && ui.button(&texts.add_track).clicked() {
                 let mut changed = cam.clone();
-                let id = cam.tracks.iter().map(|t| t.id).max().map_or(1, |id| id.saturating_add(1));
+                let id = cam
+                    .tracks
+                    .iter()
+                    .map(|t| t.id)
+                    .max()
+                    .map_or(1, |id| id.saturating_add(1));
                 changed.tracks.push(TappetTrack {
                     id,
                     name: String::new(),

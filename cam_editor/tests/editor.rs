@@ -75,11 +75,15 @@ fn laws(cam: &CamTable) -> Vec<MotionLaw> {
 
 /// Replaces the text of the field labelled `label` with `text` and presses Enter.
 fn type_over(harness: &mut Harness<'static, App>, label: &str, text: &str) {
-    harness.get_by_role_and_label(Role::TextInput, label).focus();
+    harness
+        .get_by_role_and_label(Role::TextInput, label)
+        .focus();
     harness.run();
     harness.key_press_modifiers(Modifiers::COMMAND, Key::A);
     harness.run();
-    harness.get_by_role_and_label(Role::TextInput, label).type_text(text);
+    harness
+        .get_by_role_and_label(Role::TextInput, label)
+        .type_text(text);
     harness.run();
     harness.key_press(Key::Enter);
     harness.run();
@@ -133,7 +137,11 @@ fn drag(harness: &mut Harness<'static, App>, from: Pos2, to: Pos2) {
         harness.step();
     }
     // Nothing is returned while the drag is in progress.
-    assert!(harness.state().edits.is_empty(), "{:?}", harness.state().edits);
+    assert!(
+        harness.state().edits.is_empty(),
+        "{:?}",
+        harness.state().edits
+    );
     harness.drop_at(to);
     harness.run();
 }
@@ -151,10 +159,17 @@ fn dragging_a_key_point_gives_one_edit_and_keeps_the_master_order() {
     assert_eq!(edits[0].0, "Move key point 2");
     let moved = key_points(&edits[0].1);
     let before = key_points(&original);
-    assert!(moved[1].master > 120.0 && moved[1].master < 240.0, "{:?}", moved[1]);
+    assert!(
+        moved[1].master > 120.0 && moved[1].master < 240.0,
+        "{:?}",
+        moved[1]
+    );
     assert!(moved[1].slave > 120.0, "{:?}", moved[1]);
     // Only that key point moved.
-    assert_eq!((moved[0], moved[2], moved[3]), (before[0], before[2], before[3]));
+    assert_eq!(
+        (moved[0], moved[2], moved[3]),
+        (before[0], before[2], before[3])
+    );
 }
 
 #[test]
@@ -162,7 +177,11 @@ fn a_key_point_past_its_neighbour_is_refused_with_the_reason() {
     let mut harness = harness(CamTable::codesys_default("Cam"));
     show_tab(&mut harness, "Cam table");
     type_over(&mut harness, "Key point 2 X", "300");
-    assert!(harness.state().edits.is_empty(), "{:?}", harness.state().edits);
+    assert!(
+        harness.state().edits.is_empty(),
+        "{:?}",
+        harness.state().edits
+    );
     assert!(
         harness
             .query_by_label_contains(
@@ -200,7 +219,10 @@ fn a_law_that_cannot_meet_the_boundary_values_is_refused_and_another_is_applied(
     harness.run();
     let edits = &harness.state().edits;
     assert_eq!(edits.len(), 1);
-    assert_eq!(laws(&edits[0].1), [MotionLaw::Poly5, MotionLaw::Line, MotionLaw::Poly5]);
+    assert_eq!(
+        laws(&edits[0].1),
+        [MotionLaw::Poly5, MotionLaw::Line, MotionLaw::Poly5]
+    );
 }
 
 #[test]
@@ -208,7 +230,9 @@ fn inserting_and_deleting_a_key_point_split_and_merge_a_segment() {
     let original = CamTable::codesys_default("Cam");
     let mut harness = harness(original.clone());
     show_tab(&mut harness, "Cam table");
-    harness.get_by_label("Insert key point in segment 1").click();
+    harness
+        .get_by_label("Insert key point in segment 1")
+        .click();
     harness.run();
     let inserted = key_points(&harness.state().cam);
     assert_eq!(inserted.len(), 5);
@@ -224,9 +248,17 @@ fn properties_refuse_an_empty_range_and_a_word_in_place() {
     let mut harness = harness(CamTable::codesys_default("Cam"));
     show_tab(&mut harness, "Properties");
     type_over(&mut harness, "Master start", "400");
-    assert!(harness.query_by_label_contains("Master start: the start must be below the end").is_some());
+    assert!(
+        harness
+            .query_by_label_contains("Master start: the start must be below the end")
+            .is_some()
+    );
     type_over(&mut harness, "Slave end", "abc");
-    assert!(harness.query_by_label_contains("Slave end: \"abc\" is not a number").is_some());
+    assert!(
+        harness
+            .query_by_label_contains("Slave end: \"abc\" is not a number")
+            .is_some()
+    );
     assert!(harness.state().edits.is_empty());
     type_over(&mut harness, "Master end", "720");
     let edits = &harness.state().edits;
@@ -246,7 +278,11 @@ fn a_table_format_refuses_fewer_than_two_elements() {
         project_model::CamCompileFormat::Table1d { elements: 256 }
     );
     type_over(&mut harness, "Elements", "1");
-    assert!(harness.query_by_label_contains("a table needs at least 2 elements").is_some());
+    assert!(
+        harness
+            .query_by_label_contains("a table needs at least 2 elements")
+            .is_some()
+    );
     assert_eq!(harness.state().edits.len(), 1);
 }
 
@@ -275,7 +311,10 @@ fn clicking_a_tappet_end_cycles_its_pass_action() {
     let edits = &harness.state().edits;
     assert_eq!(edits.len(), 1, "{edits:?}");
     let tappet = edits[0].1.tracks[0].tappets[0];
-    assert_eq!((tappet.on_positive, tappet.on_negative), (TappetAction::Off, TappetAction::Off));
+    assert_eq!(
+        (tappet.on_positive, tappet.on_negative),
+        (TappetAction::Off, TappetAction::Off)
+    );
     // Lower half: the negative pass, Off -> Invert.
     click_at(&mut harness, rect.center() + vec2(0.0, rect.height() / 4.0));
     let tappet = harness.state().cam.tracks[0].tappets[0];
@@ -315,9 +354,16 @@ fn tracks_are_added_renamed_and_removed() {
     type_over(&mut harness, "Track 3 name", "Labeller");
     type_over(&mut harness, "Track 3 dead time (µs)", "-1500");
     let track = harness.state().cam.tracks.last().unwrap();
-    assert_eq!((track.name.as_str(), track.dead_time_us), ("Labeller", -1500));
+    assert_eq!(
+        (track.name.as_str(), track.dead_time_us),
+        ("Labeller", -1500)
+    );
     type_over(&mut harness, "Track 3 hysteresis", "x");
-    assert!(harness.query_by_label_contains("\"x\" is not a number").is_some());
+    assert!(
+        harness
+            .query_by_label_contains("\"x\" is not a number")
+            .is_some()
+    );
     harness.get_by_label("Remove track 3").click();
     harness.run();
     assert_eq!(harness.state().cam.tracks.len(), 2);
@@ -331,7 +377,13 @@ fn import_and_export_are_requests_for_the_app() {
     harness.run();
     harness.get_by_label("Export CSV…").click();
     harness.run();
-    assert_eq!((harness.state().import_requests, harness.state().export_requests), (1, 1));
+    assert_eq!(
+        (
+            harness.state().import_requests,
+            harness.state().export_requests
+        ),
+        (1, 1)
+    );
 }
 
 #[test]
@@ -344,7 +396,10 @@ fn a_csv_import_replaces_the_profile_and_a_bad_file_names_the_line() {
     assert_eq!(points.len(), 3);
     assert_eq!(imported.tracks, cam.tracks);
     let error = import_points(&cam, "master,slave\n0,0\n180,90\n90,0\n").unwrap_err();
-    assert_eq!(error.to_string(), "line 4: master 90 is not greater than 180 on line 3");
+    assert_eq!(
+        error.to_string(),
+        "line 4: master 90 is not greater than 180 on line 3"
+    );
     // The imported table shows its rows.
     let mut harness = harness(imported);
     show_tab(&mut harness, "Cam table");
@@ -364,7 +419,9 @@ fn a_read_only_editor_changes_nothing() {
         .with_size([1100.0, 1000.0])
         .build_ui_state(
             |ui, app: &mut App| {
-                let output = app.editor.show(ui, &app.cam, None, &CamEditorTexts::default(), true);
+                let output = app
+                    .editor
+                    .show(ui, &app.cam, None, &CamEditorTexts::default(), true);
                 if let Some(edit) = output.edit {
                     app.edits.push(edit);
                 }
@@ -372,9 +429,17 @@ fn a_read_only_editor_changes_nothing() {
             app,
         );
     harness.run();
-    let from = harness.state().editor.key_point_screen_pos(&harness.state().cam, 1).unwrap();
+    let from = harness
+        .state()
+        .editor
+        .key_point_screen_pos(&harness.state().cam, 1)
+        .unwrap();
     drag(&mut harness, from, from + vec2(40.0, -40.0));
     show_tab(&mut harness, "Cam table");
-    assert!(harness.query_by_label("Insert key point in segment 1").is_none());
+    assert!(
+        harness
+            .query_by_label("Insert key point in segment 1")
+            .is_none()
+    );
     assert!(harness.state().edits.is_empty());
 }
