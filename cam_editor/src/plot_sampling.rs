@@ -127,7 +127,7 @@ mod tests {
 
     use super::*;
     use motion::cam::{PointCam, PointInterpolation, SegmentedCam};
-    use motion::curve::{CamCurve as _, CamPoint};
+    use motion::curve::CamPoint;
 
     #[test]
     fn a_sparse_cam_keeps_its_key_points_exactly() {

@@ -5,7 +5,7 @@
 use std::sync::Arc;
 
 use egui::{Align2, Color32, Rect, Role, Sense, Stroke, Ui, WidgetInfo, vec2};
-use egui_plot::{Line, MarkerShape, Plot, PlotPoint, PlotTransform, Points, Text, VLine};
+use egui_plot::{Line, MarkerShape, Plot, PlotPoint, PlotTransform, Points, VLine};
 use motion::cam::{ContinuityQuantity, ContinuityWarning};
 use motion::curve::CamCurve as _;
 use project_model::{CamKeyPoint, CamTable};
@@ -19,6 +19,9 @@ use crate::texts::CamEditorTexts;
 /// Above this many key points in view, handles are made only near the pointer, so a
 /// 10,000-point table does not cost 10,000 widgets a frame.
 const MAX_HANDLES: usize = 200;
+
+/// How many handles a dense cam gets near the pointer.
+const MAX_NEAR_HANDLES: usize = 16;
 
 /// How far from the pointer, in points, a key point of a dense cam gets a handle.
 const NEAR_POINTER: f32 = 10.0;
@@ -226,19 +229,28 @@ impl PlotState {
                         );
                     }
                 }
-                if let Some((master, text)) = &hovered_text {
-                    let top = plot_ui.plot_bounds().max()[1];
-                    plot_ui.text(
-                        Text::new("value", PlotPoint::new(*master, top), text.clone())
-                            .anchor(Align2::LEFT_TOP)
-                            .color(color),
-                    );
-                }
             });
+            // The value at the hovered master, painted over the plot rather than added as a
+            // plot item, which would widen the automatic bounds frame after frame.
+            if let Some((master, text)) = &hovered_text {
+                let frame_rect = *response.transform.frame();
+                let x = response.transform.position_from_point_x(*master);
+                ui.painter_at(frame_rect).text(
+                    egui::pos2(x + 4.0, frame_rect.top() + 2.0),
+                    Align2::LEFT_TOP,
+                    text,
+                    egui::FontId::monospace(11.0),
+                    color,
+                );
+            }
             response.response.widget_info(|| {
                 WidgetInfo::labeled(Role::Canvas, true, format!("{name} {}", texts.cam_tab))
             });
-            if let Some(pointer) = response.response.hover_pos() {
+            // The pointer over the plot's frame, even where a handle or a tooltip covers it,
+            // so the readout does not flicker as they come and go.
+            if let Some(pointer) = ui.ctx().pointer_hover_pos()
+                && response.transform.frame().contains(pointer)
+            {
                 hover = Some(response.transform.value_from_position(pointer).x);
             }
             for warning in &warnings {
@@ -289,12 +301,17 @@ impl PlotState {
                         .x;
                     let from = shown.partition_point(|point| point.master < low);
                     let to = shown.partition_point(|point| point.master <= high);
-                    (from..to)
-                        .filter(|&index| {
-                            let pos = point_pos(transform, &shown[index]);
-                            pos.distance(pointer) <= NEAR_POINTER
-                        })
-                        .take(32)
+                    // The nearest ones, so the handle under the pointer is always among them.
+                    let mut near: Vec<(f32, usize)> = (from..to)
+                        .map(|index| (point_pos(transform, &shown[index]).distance(pointer), index))
+                        .filter(|(distance, _)| *distance <= NEAR_POINTER)
+                        .collect();
+                    near.sort_by(|a, b| a.0.total_cmp(&b.0));
+                    // The nearest is made last, so it is on top where handles overlap.
+                    near.into_iter()
+                        .take(MAX_NEAR_HANDLES)
+                        .rev()
+                        .map(|(_, index)| index)
                         .collect()
                 }
                 _ => Vec::new(),

@@ -443,3 +443,33 @@ fn a_read_only_editor_changes_nothing() {
     );
     assert!(harness.state().edits.is_empty());
 }
+
+#[test]
+fn a_key_point_of_a_dense_table_is_dragged_by_its_handle_near_the_pointer() {
+    let mut cam = CamTable::codesys_default("Dense");
+    let points = (0..2_000)
+        .map(|i| project_model::CamTablePoint {
+            master: f64::from(i) * 0.18,
+            slave: f64::from(i % 7),
+        })
+        .collect();
+    cam.profile = CamProfile::Points {
+        interpolation: project_model::PointInterpolation::Linear,
+        points,
+    };
+    let mut harness = harness(cam);
+    let state = harness.state();
+    let from = state
+        .editor
+        .key_point_screen_pos(&state.cam, 1_000)
+        .unwrap();
+    drag(&mut harness, from, from + vec2(0.0, -30.0));
+    let edits = &harness.state().edits;
+    assert_eq!(
+        edits.len(),
+        1,
+        "{:?}",
+        edits.iter().map(|e| &e.0).collect::<Vec<_>>()
+    );
+    assert!(edits[0].0.starts_with("Move key point"), "{}", edits[0].0);
+}
