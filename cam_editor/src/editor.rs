@@ -95,10 +95,18 @@ impl CurveView {
 
 /// What a gesture in one part of the editor came to.
 pub(crate) enum Gesture {
-    /// A valid changed cam, with its label for the undo menu.
-    Edit(String, CamTable),
+    /// A valid changed cam, with its label for the undo menu (boxed: a cam is large and a
+    /// refusal small).
+    Edit(String, Box<CamTable>),
     /// A refused change: the field or handle's label and the reason.
     Refused(String, String),
+}
+
+impl Gesture {
+    /// An edit of `cam` labelled `label`.
+    pub(crate) fn edit(label: impl Into<String>, cam: CamTable) -> Self {
+        Self::Edit(label.into(), Box::new(cam))
+    }
 }
 
 impl CamEditor {
@@ -203,6 +211,7 @@ impl CamEditor {
         }
         match gesture {
             Some(Gesture::Edit(label, changed)) => {
+                let changed = *changed;
                 self.drafts.accept();
                 if changed != *cam {
                     self.emitted = Some(changed.clone());

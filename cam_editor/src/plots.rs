@@ -388,7 +388,7 @@ impl PlotState {
             {
                 let label = format!("{} {}", frame.texts.move_key_point, index + 1);
                 gesture = Some(match set_key_point(frame.cam, drag.index, drag.point) {
-                    Ok(changed) => Gesture::Edit(label, changed),
+                    Ok(changed) => Gesture::edit(label, changed),
                     Err(error) => Gesture::Refused(label, error.to_string()),
                 });
             }

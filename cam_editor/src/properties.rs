@@ -43,7 +43,7 @@ pub(crate) fn properties_ui(
                         drafts.field_ui(ui, &label, &number_text(value), 90.0, frame.read_only)
                     {
                         match range_edit(cam, is_master, which == 0, &text, texts) {
-                            Ok(changed) => gesture = Some(Gesture::Edit(label, changed)),
+                            Ok(changed) => gesture = Some(Gesture::edit(label, changed)),
                             Err(reason) => drafts.refuse(&label, text, reason),
                         }
                     }
@@ -58,7 +58,7 @@ pub(crate) fn properties_ui(
                         &mut changed.slave
                     };
                     target.unit = text.trim().to_owned();
-                    gesture = Some(Gesture::Edit(label, changed));
+                    gesture = Some(Gesture::edit(label, changed));
                 }
                 ui.end_row();
             }
@@ -70,7 +70,7 @@ pub(crate) fn properties_ui(
         if ui.checkbox(&mut smooth, &texts.smooth_transition).changed() {
             let mut changed = cam.clone();
             changed.period.smooth_transition = smooth;
-            gesture = Some(Gesture::Edit(texts.smooth_transition.clone(), changed));
+            gesture = Some(Gesture::edit(texts.smooth_transition.clone(), changed));
         }
         ui.horizontal(|ui| {
             ui.label(&texts.slave_period);
@@ -81,13 +81,13 @@ pub(crate) fn properties_ui(
                 if trimmed.is_empty() {
                     let mut changed = cam.clone();
                     changed.period.slave_period = None;
-                    gesture = Some(Gesture::Edit(label, changed));
+                    gesture = Some(Gesture::edit(label, changed));
                 } else {
                     match parse_number(trimmed).filter(|period| *period != 0.0) {
                         Some(period) => {
                             let mut changed = cam.clone();
                             changed.period.slave_period = Some(period);
-                            gesture = Some(Gesture::Edit(label, changed));
+                            gesture = Some(Gesture::edit(label, changed));
                         }
                         None => {
                             let reason = format!("\"{trimmed}\" {}", texts.not_a_number);
@@ -128,7 +128,7 @@ pub(crate) fn properties_ui(
                     acceleration,
                     jerk,
                 };
-                gesture = Some(Gesture::Edit(
+                gesture = Some(Gesture::edit(
                     format!("{} {name}", texts.continuity),
                     changed,
                 ));
@@ -182,7 +182,7 @@ pub(crate) fn properties_ui(
                                 }
                                 _ => CamCompileFormat::Table1d { elements: count },
                             };
-                            gesture = Some(Gesture::Edit(label, changed));
+                            gesture = Some(Gesture::edit(label, changed));
                         }
                         Ok(_) => {
                             drafts.refuse(&label, text, texts.too_few_elements.clone());
@@ -255,5 +255,5 @@ fn format_edit(cam: &CamTable, format: CamCompileFormat, label: &str) -> Gesture
     {
         return Gesture::Refused(label.to_owned(), error.to_string());
     }
-    Gesture::Edit(label.to_owned(), changed)
+    Gesture::edit(label.to_owned(), changed)
 }

@@ -26,8 +26,15 @@ const LAWS: [MotionLaw; 9] = [
 /// The height of a table row in points.
 const ROW_HEIGHT: f32 = 24.0;
 
-/// The five columns of a key point, with their headers and how to read and write them.
-const KEY_COLUMNS: [(&str, fn(&CamKeyPoint) -> f64, fn(&mut CamKeyPoint, f64)); 5] = [
+/// A column of key points: its header, how to read it and how to write it.
+type KeyColumn = (
+    &'static str,
+    fn(&CamKeyPoint) -> f64,
+    fn(&mut CamKeyPoint, f64),
+);
+
+/// The five columns of a key point.
+const KEY_COLUMNS: [KeyColumn; 5] = [
     ("X", |p| p.master, |p, v| p.master = v),
     ("Y", |p| p.slave, |p, v| p.slave = v),
     ("V", |p| p.velocity, |p, v| p.velocity = v),
@@ -120,7 +127,7 @@ fn segments_ui(
                                         let mut changed = point;
                                         write(&mut changed, value);
                                         match set_key_point(cam, item, changed) {
-                                            Ok(cam) => Gesture::Edit(label, cam),
+                                            Ok(cam) => Gesture::edit(label, cam),
                                             Err(error) => {
                                                 drafts.refuse(&label, text, error.to_string());
                                                 return;
@@ -237,7 +244,7 @@ fn points_ui(
                     if let CamProfile::Points { interpolation, .. } = &mut changed.profile {
                         *interpolation = choice;
                     }
-                    gesture = Some(Gesture::Edit(texts.interpolation.clone(), changed));
+                    gesture = Some(Gesture::edit(texts.interpolation.clone(), changed));
                 }
             }
         });
@@ -279,7 +286,7 @@ fn points_ui(
                                     let mut changed = point;
                                     write(&mut changed, value);
                                     match set_key_point(cam, index, changed) {
-                                        Ok(cam) => gesture = Some(Gesture::Edit(label, cam)),
+                                        Ok(cam) => gesture = Some(Gesture::edit(label, cam)),
                                         Err(error) => {
                                             drafts.refuse(&label, text, error.to_string())
                                         }
@@ -322,7 +329,7 @@ fn points_ui(
 /// A changed cam as an edit, or its error as a refusal of the control `label`.
 fn outcome(label: String, result: Result<CamTable, crate::CamEditError>) -> Option<Gesture> {
     Some(match result {
-        Ok(cam) => Gesture::Edit(label, cam),
+        Ok(cam) => Gesture::edit(label, cam),
         Err(error) => Gesture::Refused(label, error.to_string()),
     })
 }

@@ -116,7 +116,7 @@ impl LaneState {
                     on_negative: TappetAction::Off,
                 });
                 sort_tappets(tappets);
-                gesture = Some(Gesture::Edit(
+                gesture = Some(Gesture::edit(
                     format!("{} ({lane_label})", texts.add_tappet),
                     changed,
                 ));
@@ -168,7 +168,7 @@ impl LaneState {
                         edited.on_negative = next_action(edited.on_negative);
                         &texts.negative_pass
                     };
-                    gesture = Some(Gesture::Edit(format!("{pass} ({label})"), changed));
+                    gesture = Some(Gesture::edit(format!("{pass} ({label})"), changed));
                 }
                 if response.drag_started() {
                     self.selected = Some((track_index, tappet_index));
@@ -198,13 +198,15 @@ impl LaneState {
                     tappets[tappet_index].position = to;
                     sort_tappets(tappets);
                     self.selected = None;
-                    gesture = Some(Gesture::Edit(
+                    gesture = Some(Gesture::edit(
                         format!("{} ({label})", texts.move_tappet),
                         changed,
                     ));
                 }
-                let mut delete =
-                    selected && !text_focused && ui.input(|input| input.key_pressed(Key::Delete));
+                // The key is consumed, so the device tree does not delete its selection too.
+                let mut delete = selected
+                    && !text_focused
+                    && ui.input_mut(|input| input.consume_key(egui::Modifiers::NONE, Key::Delete));
                 response.context_menu(|ui| {
                     if ui.button(&texts.delete_tappet).clicked() {
                         delete = true;
@@ -215,7 +217,7 @@ impl LaneState {
                     let mut changed = cam.clone();
                     changed.tracks[track_index].tappets.remove(tappet_index);
                     self.selected = None;
-                    gesture = Some(Gesture::Edit(
+                    gesture = Some(Gesture::edit(
                         format!("{} ({label})", texts.delete_tappet),
                         changed,
                     ));

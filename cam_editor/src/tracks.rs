@@ -37,7 +37,7 @@ pub(crate) fn tracks_ui(ui: &mut Ui, drafts: &mut Drafts, frame: &Frame<'_>) -> 
                     {
                         let changed =
                             with_track(cam, track_index, |t| t.name = text.trim().to_owned());
-                        gesture = Some(Gesture::Edit(label, changed));
+                        gesture = Some(Gesture::edit(label, changed));
                     }
                     let label = format!("{name} {}", texts.hysteresis);
                     ui.label(&texts.hysteresis);
@@ -52,7 +52,7 @@ pub(crate) fn tracks_ui(ui: &mut Ui, drafts: &mut Drafts, frame: &Frame<'_>) -> 
                             Some(value) => {
                                 let changed =
                                     with_track(cam, track_index, |t| t.hysteresis = value);
-                                gesture = Some(Gesture::Edit(label, changed));
+                                gesture = Some(Gesture::edit(label, changed));
                             }
                             None => {
                                 let reason = format!("\"{}\" {}", text.trim(), texts.not_a_number);
@@ -73,7 +73,7 @@ pub(crate) fn tracks_ui(ui: &mut Ui, drafts: &mut Drafts, frame: &Frame<'_>) -> 
                             Ok(value) => {
                                 let changed =
                                     with_track(cam, track_index, |t| t.dead_time_us = value);
-                                gesture = Some(Gesture::Edit(label, changed));
+                                gesture = Some(Gesture::edit(label, changed));
                             }
                             Err(_) => {
                                 let reason =
@@ -89,7 +89,7 @@ pub(crate) fn tracks_ui(ui: &mut Ui, drafts: &mut Drafts, frame: &Frame<'_>) -> 
                         if button.clicked() {
                             let mut changed = cam.clone();
                             changed.tracks.remove(track_index);
-                            gesture = Some(Gesture::Edit(label, changed));
+                            gesture = Some(Gesture::edit(label, changed));
                         }
                     }
                 });
@@ -115,7 +115,7 @@ pub(crate) fn tracks_ui(ui: &mut Ui, drafts: &mut Drafts, frame: &Frame<'_>) -> 
                                             t.tappets
                                                 .sort_by(|a, b| a.position.total_cmp(&b.position));
                                         });
-                                        gesture = Some(Gesture::Edit(label, changed));
+                                        gesture = Some(Gesture::edit(label, changed));
                                     }
                                     None => {
                                         let reason = format!(
@@ -179,7 +179,7 @@ pub(crate) fn tracks_ui(ui: &mut Ui, drafts: &mut Drafts, frame: &Frame<'_>) -> 
                                             edited.on_negative = action;
                                         }
                                     });
-                                    gesture = Some(Gesture::Edit(label, changed));
+                                    gesture = Some(Gesture::edit(label, changed));
                                 }
                             }
                         });
@@ -202,7 +202,7 @@ pub(crate) fn tracks_ui(ui: &mut Ui, drafts: &mut Drafts, frame: &Frame<'_>) -> 
                     hysteresis: 0.0,
                     tappets: Vec::new(),
                 });
-                gesture = Some(Gesture::Edit(texts.add_track.clone(), changed));
+                gesture = Some(Gesture::edit(texts.add_track.clone(), changed));
             }
         });
     gesture

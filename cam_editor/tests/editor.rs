@@ -404,6 +404,13 @@ fn a_csv_import_replaces_the_profile_and_a_bad_file_names_the_line() {
     let mut harness = harness(imported);
     show_tab(&mut harness, "Cam table");
     assert!(harness.query_by_label("Row 3 Y").is_some());
+    harness.get_by_label("Cubic").click();
+    harness.run();
+    let CamProfile::Points { interpolation, .. } = &harness.state().cam.profile else {
+        panic!("not a point table");
+    };
+    assert_eq!(*interpolation, project_model::PointInterpolation::Cubic);
+    assert_eq!(harness.state().edits.len(), 1);
 }
 
 #[test]
