@@ -76,151 +76,187 @@ fn segments_ui(
     };
     let mut gesture = None;
     let rows = points.len() + laws.len();
-    TableBuilder::new(ui)
-        .id_salt(("cam table", &cam.name))
-        .striped(true)
-        .column(Column::auto().at_least(90.0))
-        .columns(Column::initial(72.0).at_least(48.0).resizable(true), 5)
-        .column(Column::auto().at_least(120.0))
-        .columns(Column::initial(84.0).at_least(60.0), 4)
-        .column(Column::remainder().at_least(30.0))
-        .header(ROW_HEIGHT, |mut header| {
-            let titles = [
-                "",
-                "X",
-                "Y",
-                "V",
-                "A",
-                "J",
-                texts.law.as_str(),
-                texts.min_position.as_str(),
-                texts.max_position.as_str(),
-                texts.max_velocity.as_str(),
-                texts.max_acceleration.as_str(),
-                "",
-            ];
-            for title in titles {
-                header.col(|ui| {
-                    ui.strong(title);
-                });
-            }
-        })
-        .body(|body| {
-            body.rows(ROW_HEIGHT, rows, |mut row| {
-                let row_index = row.index();
-                let item = row_index / 2;
-                if row_index % 2 == 0 {
-                    let point = points[item];
-                    let name = format!("{} {}", texts.key_point, item + 1);
-                    row.col(|ui| {
-                        ui.label(&name);
-                    });
-                    for (header, read, write) in KEY_COLUMNS {
-                        row.col(|ui| {
-                            let label = format!("{name} {header}");
-                            let shown = number_text(read(&point));
-                            if let Some(text) =
-                                drafts.field_ui(ui, &label, &shown, f32::INFINITY, frame.read_only)
-                            {
-                                gesture = Some(match parse_number(&text) {
-                                    Some(value) => {
-                                        let mut changed = point;
-                                        write(&mut changed, value);
-                                        match set_key_point(cam, item, changed) {
-                                            Ok(cam) => Gesture::edit(label, cam),
-                                            Err(error) => {
-                                                drafts.refuse(&label, text, error.to_string());
+    let law_header = capitalized(&texts.law);
+    // The table is wider than a narrow document tab; it scrolls sideways rather than hiding
+    // the derived columns and the insert buttons.
+    egui::ScrollArea::horizontal()
+        .id_salt(("cam table scroll", &cam.name))
+        .show(ui, |ui| {
+            TableBuilder::new(ui)
+                .id_salt(("cam table", &cam.name))
+                .striped(true)
+                .column(Column::auto().at_least(90.0))
+                .columns(Column::initial(60.0).at_least(44.0).resizable(true), 5)
+                .column(Column::auto().at_least(120.0))
+                .columns(Column::initial(76.0).at_least(56.0), 4)
+                .column(Column::remainder().at_least(30.0))
+                .header(ROW_HEIGHT, |mut header| {
+                    let titles = [
+                        "",
+                        "X",
+                        "Y",
+                        "V",
+                        "A",
+                        "J",
+                        law_header.as_str(),
+                        texts.min_position.as_str(),
+                        texts.max_position.as_str(),
+                        texts.max_velocity.as_str(),
+                        texts.max_acceleration.as_str(),
+                        "",
+                    ];
+                    for title in titles {
+                        header.col(|ui| {
+                            ui.strong(title);
+                        });
+                    }
+                })
+                .body(|body| {
+                    body.rows(ROW_HEIGHT, rows, |mut row| {
+                        let row_index = row.index();
+                        let item = row_index / 2;
+                        if row_index % 2 == 0 {
+                            let point = points[item];
+                            let name = format!("{} {}", texts.key_point, item + 1);
+                            row.col(|ui| {
+                                ui.label(&name);
+                            });
+                            for (header, read, write) in KEY_COLUMNS {
+                                row.col(|ui| {
+                                    let label = format!("{name} {header}");
+                                    let shown = number_text(read(&point));
+                                    if let Some(text) = drafts.field_ui(
+                                        ui,
+                                        &label,
+                                        &shown,
+                                        f32::INFINITY,
+                                        frame.read_only,
+                                    ) {
+                                        gesture = Some(match parse_number(&text) {
+                                            Some(value) => {
+                                                let mut changed = point;
+                                                write(&mut changed, value);
+                                                match set_key_point(cam, item, changed) {
+                                                    Ok(cam) => Gesture::edit(label, cam),
+                                                    Err(error) => {
+                                                        drafts.refuse(
+                                                            &label,
+                                                            text,
+                                                            error.to_string(),
+                                                        );
+                                                        return;
+                                                    }
+                                                }
+                                            }
+                                            None => {
+                                                let reason =
+                                                    format!("\"{text}\" {}", texts.not_a_number);
+                                                drafts.refuse(&label, text, reason);
                                                 return;
                                             }
-                                        }
-                                    }
-                                    None => {
-                                        let reason = format!("\"{text}\" {}", texts.not_a_number);
-                                        drafts.refuse(&label, text, reason);
-                                        return;
+                                        });
                                     }
                                 });
                             }
-                        });
-                    }
-                    for _ in 0..5 {
-                        row.col(|_| {});
-                    }
-                    row.col(|ui| {
-                        let inner = item > 0 && item + 1 < points.len();
-                        if inner && !frame.read_only {
-                            let label = format!("{} {}", texts.delete_key_point, item + 1);
-                            let button = ui.small_button("×").on_hover_text(&label);
-                            button.widget_info(|| WidgetInfo::labeled(Role::Button, true, &label));
-                            if button.clicked() {
-                                gesture = outcome(label, delete_key_point(cam, item));
+                            for _ in 0..5 {
+                                row.col(|_| {});
                             }
-                        }
-                    });
-                } else {
-                    let name = format!("{} {}", texts.segment, item + 1);
-                    row.col(|ui| {
-                        ui.label(&name);
-                    });
-                    for _ in 0..5 {
-                        row.col(|_| {});
-                    }
-                    row.col(|ui| {
-                        let label = format!("{name} {}", texts.law);
-                        let current = laws[item];
-                        let mut chosen = None;
-                        ui.add_enabled_ui(!frame.read_only, |ui| {
-                            let combo = ComboBox::from_id_salt(("cam law", item))
-                                .selected_text(format!("{current:?}"))
-                                .width(ui.available_width())
-                                .show_ui(ui, |ui| {
-                                    for law in LAWS {
-                                        if ui
-                                            .selectable_label(law == current, format!("{law:?}"))
-                                            .clicked()
-                                            && law != current
-                                        {
-                                            chosen = Some(law);
-                                        }
+                            row.col(|ui| {
+                                let inner = item > 0 && item + 1 < points.len();
+                                if inner && !frame.read_only {
+                                    let label = format!("{} {}", texts.delete_key_point, item + 1);
+                                    let button = ui.small_button("×").on_hover_text(&label);
+                                    button.widget_info(|| {
+                                        WidgetInfo::labeled(Role::Button, true, &label)
+                                    });
+                                    if button.clicked() {
+                                        gesture = outcome(label, delete_key_point(cam, item));
                                     }
-                                });
-                            combo.response.widget_info(|| {
-                                WidgetInfo::labeled(Role::ComboBox, !frame.read_only, &label)
+                                }
                             });
-                        });
-                        if let Some(law) = chosen {
-                            gesture = outcome(label, set_law(cam, item, law));
+                        } else {
+                            let name = format!("{} {}", texts.segment, item + 1);
+                            row.col(|ui| {
+                                ui.label(&name);
+                            });
+                            for _ in 0..5 {
+                                row.col(|_| {});
+                            }
+                            row.col(|ui| {
+                                let label = format!("{name} {}", texts.law);
+                                let current = laws[item];
+                                let mut chosen = None;
+                                ui.add_enabled_ui(!frame.read_only, |ui| {
+                                    let combo = ComboBox::from_id_salt(("cam law", item))
+                                        .selected_text(format!("{current:?}"))
+                                        .width(ui.available_width())
+                                        .show_ui(ui, |ui| {
+                                            for law in LAWS {
+                                                if ui
+                                                    .selectable_label(
+                                                        law == current,
+                                                        format!("{law:?}"),
+                                                    )
+                                                    .clicked()
+                                                    && law != current
+                                                {
+                                                    chosen = Some(law);
+                                                }
+                                            }
+                                        });
+                                    combo.response.widget_info(|| {
+                                        WidgetInfo::labeled(
+                                            Role::ComboBox,
+                                            !frame.read_only,
+                                            &label,
+                                        )
+                                    });
+                                });
+                                if let Some(law) = chosen {
+                                    gesture = outcome(label, set_law(cam, item, law));
+                                }
+                            });
+                            let values = bounds.get(item).map(|b| {
+                                [
+                                    b.min_position,
+                                    b.max_position,
+                                    b.max_abs_velocity,
+                                    b.max_abs_acceleration,
+                                ]
+                            });
+                            for column in 0..4 {
+                                row.col(|ui| {
+                                    if let Some(values) = values {
+                                        ui.monospace(rounded_text(values[column]));
+                                    }
+                                });
+                            }
+                            row.col(|ui| {
+                                if !frame.read_only {
+                                    let label = format!("{} {}", texts.insert_key_point, item + 1);
+                                    let button = ui.small_button("+").on_hover_text(&label);
+                                    button.widget_info(|| {
+                                        WidgetInfo::labeled(Role::Button, true, &label)
+                                    });
+                                    if button.clicked() {
+                                        gesture = outcome(label, insert_key_point(cam, item));
+                                    }
+                                }
+                            });
                         }
                     });
-                    let values = bounds.get(item).map(|b| {
-                        [
-                            b.min_position,
-                            b.max_position,
-                            b.max_abs_velocity,
-                            b.max_abs_acceleration,
-                        ]
-                    });
-                    for column in 0..4 {
-                        row.col(|ui| {
-                            if let Some(values) = values {
-                                ui.monospace(rounded_text(values[column]));
-                            }
-                        });
-                    }
-                    row.col(|ui| {
-                        if !frame.read_only {
-                            let label = format!("{} {}", texts.insert_key_point, item + 1);
-                            let button = ui.small_button("+").on_hover_text(&label);
-                            button.widget_info(|| WidgetInfo::labeled(Role::Button, true, &label));
-                            if button.clicked() {
-                                gesture = outcome(label, insert_key_point(cam, item));
-                            }
-                        }
-                    });
-                }
-            });
+                });
         });
     gesture
+}
+
+/// `text` with its first letter in upper case, for a column header made of a label word.
+fn capitalized(text: &str) -> String {
+    let mut chars = text.chars();
+    match chars.next() {
+        Some(first) => first.to_uppercase().chain(chars).collect(),
+        None => String::new(),
+    }
 }
 
 fn points_ui(
