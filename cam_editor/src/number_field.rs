@@ -43,7 +43,7 @@ impl Drafts {
         }
     }
 
-    /// A single-line field (red while its value is refused) showing `model_text`, or the draft typed into it. Returns the text
+    /// A single-line field (red while its value is refused; Escape abandons the draft) showing `model_text`, or the draft typed into it. Returns the text
     /// when the user commits it (Enter, Tab or a click elsewhere after typing).
     pub(crate) fn field_ui(
         &mut self,
@@ -80,7 +80,18 @@ impl Drafts {
         if response.lost_focus()
             && let Some(draft) = self.texts.remove(label)
         {
-            committed = Some(draft);
+            // Escape abandons what was typed; the field shows the model's value again.
+            if ui.input(|input| input.key_pressed(egui::Key::Escape)) {
+                if self
+                    .refusal
+                    .as_ref()
+                    .is_some_and(|(field, _)| field == label)
+                {
+                    self.refusal = None;
+                }
+            } else {
+                committed = Some(draft);
+            }
         }
         committed
     }

@@ -200,6 +200,29 @@ fn a_key_point_past_its_neighbour_is_refused_with_the_reason() {
 }
 
 #[test]
+fn escape_abandons_a_typed_value() {
+    let mut harness = harness(CamTable::codesys_default("Cam"));
+    show_tab(&mut harness, "Cam table");
+    let label = "Key point 2 Y";
+    harness
+        .get_by_role_and_label(Role::TextInput, label)
+        .focus();
+    harness.run();
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::A);
+    harness
+        .get_by_role_and_label(Role::TextInput, label)
+        .type_text("999");
+    harness.run();
+    harness.key_press(Key::Escape);
+    harness.run();
+    assert!(harness.state().edits.is_empty());
+    let shown = harness
+        .get_by_role_and_label(Role::TextInput, label)
+        .value();
+    assert_eq!(shown.as_deref(), Some("120"));
+}
+
+#[test]
 fn a_law_that_cannot_meet_the_boundary_values_is_refused_and_another_is_applied() {
     let mut harness = harness(CamTable::codesys_default("Cam"));
     show_tab(&mut harness, "Cam table");
