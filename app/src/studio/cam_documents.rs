@@ -58,13 +58,18 @@ pub(crate) fn cam_document_ui(studio: &mut Studio, ui: &mut Ui, name: &str) -> b
         ui.weak(&cam.comment);
     }
     let output = editor.show(ui, cam, None, &texts, read_only);
-    let cam = cam.clone();
+    // The file dialogs need the whole studio, so the cam is copied out of it, but only then.
+    let wants_file = output.import_csv || output.export_csv;
+    let cam = wants_file.then(|| cam.clone());
     if let Some((label, changed)) = output.edit {
         studio.pending.push(Command::Edit(
             format!("{name}: {label}"),
             vec![Edit::ReplaceObject(Object::CamTable(changed))],
         ));
     }
+    let Some(cam) = cam else {
+        return true;
+    };
     if output.import_csv
         && let Some(path) = rfd::FileDialog::new()
             .set_title("Import cam points")
