@@ -311,6 +311,7 @@ impl TreeUi<'_> {
                 (Text::AddDataType, NewObject::Structure),
                 (Text::AddWatchList, NewObject::WatchList),
                 (Text::AddTrace, NewObject::Trace),
+                (Text::CamAddCam, NewObject::Cam),
             ] {
                 if item(ui, text) {
                     self.response.actions.push(TreeAction::AddObject {

@@ -5,20 +5,18 @@ use editor::CodeView;
 use egui::{RichText, Ui};
 use project_model::{Body, Object, Project};
 
-use super::cam_view::cam_view_ui;
-use super::i18n::Language;
 use super::property_view::property_view_ui;
 use super::tree_node::TreeNode;
 
 /// Draws the document `node` of `project`, read-only.
-pub fn document_ui(ui: &mut Ui, project: &Project, node: &TreeNode, language: Language) {
+pub fn document_ui(ui: &mut Ui, project: &Project, node: &TreeNode) {
     egui::ScrollArea::both()
         .id_salt(("document", node))
         .auto_shrink([false, false])
         .show(ui, |ui| {
             ui.add_space(4.0);
             match document_content(project, node) {
-                Some(content) => content_ui(ui, node, content, language),
+                Some(content) => content_ui(ui, node, content),
                 None => {
                     ui.label(
                         RichText::new(format!(
@@ -64,7 +62,7 @@ fn document_content<'a>(project: &'a Project, node: &TreeNode) -> Option<Content
     }
 }
 
-fn content_ui(ui: &mut Ui, node: &TreeNode, content: Content<'_>, language: Language) {
+fn content_ui(ui: &mut Ui, node: &TreeNode, content: Content<'_>) {
     let salt = format!("{node:?}");
     match content {
         // POUs and global variable lists are edited in place (`text_documents`), and the
@@ -73,7 +71,9 @@ fn content_ui(ui: &mut Ui, node: &TreeNode, content: Content<'_>, language: Lang
         Content::Object(Object::DataType(data_type)) => {
             CodeView::new((&salt, "decl"), &data_type.declaration_text()).show(ui);
         }
-        Content::Object(Object::CamTable(cam)) => cam_view_ui(ui, cam, language),
+        // Cam tables are edited in place (`cam_documents`), which needs the studio to queue
+        // their edits; they never reach this view.
+        Content::Object(Object::CamTable(_)) => {}
         Content::Object(Object::Trace(trace)) => property_view_ui(ui, &salt, trace),
         Content::Object(Object::WatchList(watch)) => property_view_ui(ui, &salt, watch),
         Content::Controller(_) | Content::IoArea(_) | Content::ModbusDevice(_) => {}

@@ -1,7 +1,7 @@
 //! The studio window.
 
 mod build_job;
-mod cam_view;
+mod cam_documents;
 mod chrome;
 mod cycle_plot;
 mod device_tree;

@@ -159,14 +159,14 @@ fn document_pane_ui(studio: &mut Studio, ui: &mut Ui, node: &TreeNode) {
     // Structured Text is edited in place; everything else is shown by the document views.
     if let TreeNode::Object(name) = node {
         let shown = super::text_documents::pou_document_ui(studio, ui, name)
-            || super::text_documents::gvl_document_ui(studio, ui, name);
+            || super::text_documents::gvl_document_ui(studio, ui, name)
+            || super::cam_documents::cam_document_ui(studio, ui, name);
         if shown {
             return;
         }
     }
-    let language = studio.settings.language;
     if let Some(session) = &studio.session {
-        document_ui(ui, &session.project, node, language);
+        document_ui(ui, &session.project, node);
     }
 }
 

@@ -127,6 +127,8 @@ pub(crate) struct Studio {
     pub tree_edit: TreeEditState,
     /// The task configuration editor's selection and typed text.
     pub task_editor: TaskEditorState,
+    /// The cam editors of the open cam tables.
+    pub cams: super::cam_documents::CamDocuments,
 }
 
 /// How the studio starts.
@@ -208,6 +210,7 @@ impl StudioApp {
                 recovery_state: RecoveryState::default(),
                 tree_edit: TreeEditState::default(),
                 task_editor: TaskEditorState::default(),
+                cams: super::cam_documents::CamDocuments::default(),
             },
         };
         if let Some(dir) = project_dir {
@@ -232,6 +235,7 @@ impl StudioApp {
                 close_stale_documents(&mut self.dock, &session.project);
                 studio.recovery_state = RecoveryState::default();
                 studio.texts.clear();
+                studio.cams.clear();
                 studio.recovery_offer = studio
                     .recovery
                     .as_ref()

@@ -8,6 +8,7 @@
 #![allow(clippy::unwrap_used, clippy::expect_used)] // Test helpers may panic: a panic is a failed test.
 
 mod basics;
+mod cam_editor;
 mod devices;
 mod editor;
 mod online;

@@ -1,9 +1,9 @@
 //! The content of nodes the user adds: empty objects and list entries with sensible settings.
 
 use project_model::{
-    Axis, AxisKind, AxisLimits, AxisScaling, Body, DataType, GlobalVarList, IoArea, IoDirection,
-    ModbusDevice, Object, Pou, PouKind, Project, SoftwareLimits, Task, TaskKind, TraceConfig,
-    TypeDefinition, WatchList, WordOrder,
+    Axis, AxisKind, AxisLimits, AxisScaling, Body, CamTable, DataType, GlobalVarList, IoArea,
+    IoDirection, ModbusDevice, Object, Pou, PouKind, Project, SoftwareLimits, Task, TaskKind,
+    TraceConfig, TypeDefinition, WatchList, WordOrder,
 };
 
 /// The kinds of application objects the tree can add without asking anything but a name.
@@ -17,6 +17,8 @@ pub enum NewObject {
     WatchList,
     /// A trace of the first task.
     Trace,
+    /// A cam table as CODESYS creates one (three Poly5 segments over 0 to 360).
+    Cam,
 }
 
 impl NewObject {
@@ -27,6 +29,7 @@ impl NewObject {
             Self::Structure => "DUT",
             Self::WatchList => "Watch",
             Self::Trace => "Trace",
+            Self::Cam => "CAM",
         }
     }
 
@@ -37,6 +40,7 @@ impl NewObject {
             Self::Structure => "data type",
             Self::WatchList => "watch list",
             Self::Trace => "trace",
+            Self::Cam => "cam table",
         }
     }
 
@@ -67,6 +71,7 @@ impl NewObject {
                 trigger: None,
                 variables: Vec::new(),
             }),
+            Self::Cam => Object::CamTable(CamTable::codesys_default(name)),
         }
     }
 }

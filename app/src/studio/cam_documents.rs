@@ -1,0 +1,227 @@
+//! Cam tables open in the studio: one `cam_editor::CamEditor` per cam document, its edits
+//! turned into commands (one gesture, one undo step) and its CSV requests fulfilled with file
+//! dialogs.
+
+use std::collections::HashMap;
+use std::path::Path;
+
+use cam_editor::{CamEditor, CamEditorTexts};
+use egui::Ui;
+use project_model::{CamTable, Edit, Object};
+
+use super::i18n::{Language, Text};
+use super::studio_app::{Command, StatusMessage, Studio};
+
+/// The editors of the open cams, by cam name, and their words. Kept while the project is open
+/// and never saved.
+#[derive(Default)]
+pub struct CamDocuments {
+    editors: HashMap<String, CamEditor>,
+    /// The editors' words and the language they are in.
+    texts: Option<(Language, CamEditorTexts)>,
+}
+
+impl CamDocuments {
+    /// Forgets every editor (another project was opened).
+    pub fn clear(&mut self) {
+        self.editors.clear();
+    }
+
+    /// The editors' words in `language`, made again only when the language changes.
+    fn texts(&mut self, language: Language) -> CamEditorTexts {
+        match &self.texts {
+            Some((made_in, texts)) if *made_in == language => texts.clone(),
+            _ => {
+                let texts = cam_editor_texts(language);
+                self.texts = Some((language, texts.clone()));
+                texts
+            }
+        }
+    }
+}
+
+/// Draws the cam `name` in its editor if it is a cam table; `false` when it is not.
+///
+/// The cam is read-only while logged in, as the Structured Text editors are.
+pub(crate) fn cam_document_ui(studio: &mut Studio, ui: &mut Ui, name: &str) -> bool {
+    let Some(session) = &studio.session else {
+        return false;
+    };
+    let Some(Object::CamTable(cam)) = session.project.application.object(name) else {
+        return false;
+    };
+    let language = studio.settings.language;
+    let read_only = studio.online.is_logged_in();
+    let texts = studio.cams.texts(language);
+    let editor = studio.cams.editors.entry(name.to_owned()).or_default();
+    if !cam.comment.is_empty() {
+        ui.weak(&cam.comment);
+    }
+    let output = editor.show(ui, cam, None, &texts, read_only);
+    // The file dialogs need the whole studio, so the cam is copied out of it, but only then.
+    let wants_file = output.import_csv || output.export_csv;
+    let cam = wants_file.then(|| cam.clone());
+    if let Some((label, changed)) = output.edit {
+        studio.pending.push(Command::Edit(
+            format!("{name}: {label}"),
+            vec![Edit::ReplaceObject(Object::CamTable(changed))],
+        ));
+    }
+    let Some(cam) = cam else {
+        return true;
+    };
+    if output.import_csv
+        && let Some(path) = rfd::FileDialog::new()
+            .set_title("Import cam points")
+            .add_filter("CSV", &["csv"])
+            .pick_file()
+    {
+        import_csv_file(studio, &cam, &path);
+    }
+    if output.export_csv
+        && let Some(path) = rfd::FileDialog::new()
+            .set_title("Export cam points")
+            .add_filter("CSV", &["csv"])
+            .set_file_name(format!("{name}.csv"))
+            .save_file()
+    {
+        export_csv_file(studio, &cam, &path);
+    }
+    true
+}
+
+/// Replaces the points of `cam` by those of the CSV file at `path`, as one undo step; a read or
+/// parse error goes to the status bar with the file and the line.
+pub(crate) fn import_csv_file(studio: &mut Studio, cam: &CamTable, path: &Path) {
+    let language = studio.settings.language;
+    let result = std::fs::read_to_string(path)
+        .map_err(|error| error.to_string())
+        .and_then(|text| cam_editor::import_points(cam, &text).map_err(|error| error.to_string()));
+    match result {
+        Ok(imported) => {
+            studio.pending.push(Command::Edit(
+                format!("{}: {}", cam.name, Text::CamImportCsv.get(language)),
+                vec![Edit::ReplaceObject(Object::CamTable(imported))],
+            ));
+            studio.status = Some(StatusMessage {
+                text: format!("{} {}", Text::CamImportedFrom.get(language), path.display()),
+                is_error: false,
+            });
+        }
+        Err(error) => {
+            studio.status = Some(StatusMessage {
+                text: format!("{}: {error}", path.display()),
+                is_error: true,
+            });
+        }
+    }
+}
+
+/// Writes the points of `cam` to `path`; the outcome goes to the status bar.
+pub(crate) fn export_csv_file(studio: &mut Studio, cam: &CamTable, path: &Path) {
+    let language = studio.settings.language;
+    let result = cam_editor::export_points(cam)
+        .map_err(|error| error.to_string())
+        .and_then(|text| std::fs::write(path, text).map_err(|error| error.to_string()));
+    studio.status = Some(match result {
+        Ok(()) => StatusMessage {
+            text: format!("{} {}", Text::CamExportedTo.get(language), path.display()),
+            is_error: false,
+        },
+        Err(error) => StatusMessage {
+            text: format!("{}: {error}", path.display()),
+            is_error: true,
+        },
+    });
+}
+
+/// The cam editor's words in `language`.
+fn cam_editor_texts(language: Language) -> CamEditorTexts {
+    let get = |text: Text| text.get(language).to_owned();
+    CamEditorTexts {
+        cam_tab: get(Text::CamTab),
+        table_tab: get(Text::CamTableTab),
+        tappets_tab: get(Text::Tappets),
+        properties_tab: get(Text::CamPropertiesTab),
+        import_csv: get(Text::CamImportCsv),
+        export_csv: get(Text::CamExportCsv),
+        master: get(Text::CamMaster),
+        slave: get(Text::CamSlave),
+        start: get(Text::CamRangeStart),
+        end: get(Text::CamRangeEnd),
+        unit: get(Text::CamUnit),
+        period: get(Text::CamPeriod),
+        smooth_transition: get(Text::CamSmoothTransition),
+        slave_period: get(Text::CamSlavePeriod),
+        continuity: get(Text::CamContinuity),
+        position: get(Text::Position),
+        velocity: get(Text::CamVelocity),
+        acceleration: get(Text::CamAcceleration),
+        jerk: get(Text::CamJerk),
+        compile_format: get(Text::CompileFormat),
+        format_segments: get(Text::Segments),
+        format_xyva: get(Text::CamFormatXyva),
+        format_table_1d: get(Text::CamFormatTable1d),
+        format_table_2d: get(Text::CamFormatTable2d),
+        elements: get(Text::CamElements),
+        key_point: get(Text::CamKeyPoint),
+        segment: get(Text::CamSegment),
+        row: get(Text::CamRow),
+        law: get(Text::CamLaw),
+        min_position: get(Text::CamMinPosition),
+        max_position: get(Text::CamMaxPosition),
+        max_velocity: get(Text::CamMaxVelocity),
+        max_acceleration: get(Text::CamMaxAcceleration),
+        insert_key_point: get(Text::CamInsertKeyPoint),
+        delete_key_point: get(Text::CamDeleteKeyPoint),
+        interpolation: get(Text::CamInterpolation),
+        linear: get(Text::CamLinear),
+        cubic: get(Text::CamCubic),
+        continuity_warnings: get(Text::CamContinuityWarnings),
+        no_continuity_warnings: get(Text::CamNoContinuityWarnings),
+        invalid_cam: get(Text::CamInvalid),
+        track: get(Text::Track),
+        tappet: get(Text::CamTappet),
+        add_track: get(Text::CamAddTrack),
+        remove_track: get(Text::CamRemoveTrack),
+        name: get(Text::CamTrackName),
+        hysteresis: get(Text::CamHysteresis),
+        dead_time_us: get(Text::CamDeadTime),
+        add_tappet: get(Text::CamAddTappet),
+        delete_tappet: get(Text::CamDeleteTappet),
+        positive_pass: get(Text::PositivePass),
+        negative_pass: get(Text::NegativePass),
+        no_action: get(Text::NoAction),
+        switch_on: get(Text::SwitchOn),
+        switch_off: get(Text::SwitchOff),
+        invert: get(Text::Invert),
+        timed_on: get(Text::OnFor),
+        move_key_point: get(Text::CamMoveKeyPoint),
+        move_tappet: get(Text::CamMoveTappet),
+        not_a_number: get(Text::CamNotANumber),
+        start_not_below_end: get(Text::CamStartNotBelowEnd),
+        too_few_elements: get(Text::CamTooFewElements),
+        not_an_integer: get(Text::CamNotAnInteger),
+        lanes_hint: get(Text::CamLanesHint),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_english_words_are_the_editors_own_defaults() {
+        assert_eq!(
+            cam_editor_texts(Language::English),
+            CamEditorTexts::default()
+        );
+    }
+
+    #[test]
+    fn every_word_has_a_chinese_translation() {
+        let chinese = cam_editor_texts(Language::SimplifiedChinese);
+        assert_ne!(chinese.cam_tab, CamEditorTexts::default().cam_tab);
+        assert_eq!(chinese.key_point, "关键点");
+    }
+}
