@@ -69,6 +69,12 @@ pub enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// Work with a project's cam tables: list them, evaluate one, export its point table.
+    Cam {
+        /// What to do.
+        #[command(subcommand)]
+        action: crate::cam_cli::CamCommand,
+    },
     /// Show a runtime's state, program identity, task statistics and forces.
     Status {
         /// The runtime to talk to.
@@ -211,6 +217,7 @@ pub fn run(command: Command) -> ExitCode {
             watch,
             json,
         } => crate::build_cli::simulate(&project, cycles, &watch, json),
+        Command::Cam { action } => crate::cam_cli::run(action),
         Command::Status { target } => online_cli::run(&target, OnlineCommand::Status),
         Command::Download {
             project,

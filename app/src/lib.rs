@@ -10,6 +10,7 @@
 //! tree and the menus, and it applies the edits that editors emit.
 
 mod build_cli;
+mod cam_cli;
 pub mod cli;
 mod literal_value;
 pub mod modbus_devices;

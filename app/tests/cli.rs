@@ -311,3 +311,127 @@ fn simulate_reports_faults_unknown_variables_and_missing_files() {
     let output = rivet(&["simulate", path_str(&missing)]);
     assert!(text_of(&output.stderr).contains("no such file or project folder"));
 }
+
+#[test]
+fn cam_list_eval_and_export_work_on_the_example_cam() {
+    let example = path_str(&assets::example_project_dir()).to_owned();
+    let output = rivet(&["cam", "list", &example]);
+    assert!(output.status.success(), "{}", text_of(&output.stderr));
+    let listed = text_of(&output.stdout);
+    assert!(
+        listed.starts_with("CAM_Knife: master 0..360 deg, slave 0..360 deg, 3 segments, 2 track(s) with 3 tappet(s)"),
+        "{listed}"
+    );
+
+    // The knife cam: Poly5 from (0, 0) to (120, 60, v 1), a line to (240, 180), Poly5 to
+    // (360, 360, v 0).
+    let output = rivet(&[
+        "cam",
+        "eval",
+        &example,
+        "CAM_Knife",
+        "--master",
+        "0,90,180,360",
+    ]);
+    assert!(output.status.success(), "{}", text_of(&output.stderr));
+    assert_eq!(
+        text_of(&output.stdout),
+        "master\tslave\tvelocity\tacceleration\n\
+         0\t0\t0\t0\n\
+         90\t31.640625\t0.84375\t0.009375\n\
+         180\t120\t1\t0\n\
+         360\t360\t0\t0\n"
+    );
+
+    let output = rivet(&[
+        "cam",
+        "export",
+        &example,
+        "CAM_Knife",
+        "--format",
+        "delta",
+        "--elements",
+        "3",
+    ]);
+    assert!(output.status.success(), "{}", text_of(&output.stderr));
+    assert_eq!(
+        text_of(&output.stdout),
+        "MasterPos,SlavePos,SlaveVel,SlaveAcc\n0,0,0,0\n180,120,1,0\n360,360,0,0\n"
+    );
+    let output = rivet(&[
+        "cam",
+        "export",
+        &example,
+        "CAM_Knife",
+        "--format",
+        "omron",
+        "--elements",
+        "5",
+    ]);
+    assert_eq!(
+        text_of(&output.stdout),
+        "Phase,Distance\n0,0\n90,31.64062\n180,120\n270,220.7812\n360,360\n"
+    );
+    let output = rivet(&[
+        "cam",
+        "export",
+        &example,
+        "CAM_Knife",
+        "--format",
+        "codesys",
+        "--elements",
+        "3",
+    ]);
+    let gvl = text_of(&output.stdout);
+    assert!(
+        gvl.contains("CAM_Knife : SMC_CAMTable_LREAL_3_2 := ("),
+        "{gvl}"
+    );
+    assert!(gvl.contains("[180.0, 120.0]"), "{gvl}");
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("knife.csv");
+    let output = rivet(&[
+        "cam",
+        "export",
+        &example,
+        "CAM_Knife",
+        "--format",
+        "csv",
+        "--elements",
+        "3",
+        "-o",
+        path_str(&file),
+    ]);
+    assert!(output.status.success(), "{}", text_of(&output.stderr));
+    assert!(fs::read_to_string(&file).unwrap().contains("180,120,1,0"));
+}
+
+#[test]
+fn cam_commands_refuse_unknown_cams_and_masters_outside_the_range() {
+    let example = path_str(&assets::example_project_dir()).to_owned();
+    let output = rivet(&["cam", "eval", &example, "CAM_Saw", "--master", "1"]);
+    assert_eq!(output.status.code(), Some(1));
+    assert!(
+        text_of(&output.stderr)
+            .contains("the project has no cam table 'CAM_Saw'; its cam tables: CAM_Knife"),
+        "{}",
+        text_of(&output.stderr)
+    );
+    let output = rivet(&["cam", "eval", &example, "CAM_Knife", "--master", "400"]);
+    assert_eq!(output.status.code(), Some(1));
+    assert!(
+        text_of(&output.stderr).contains("master 400 is outside the cam's master range 0..360")
+    );
+    let output = rivet(&[
+        "cam",
+        "export",
+        &example,
+        "CAM_Knife",
+        "--format",
+        "delta",
+        "--elements",
+        "3000",
+    ]);
+    assert_eq!(output.status.code(), Some(1));
+    assert!(text_of(&output.stderr).contains("at most 2048 points"));
+}

@@ -310,11 +310,16 @@ fn a_table_format_refuses_fewer_than_two_elements() {
 }
 
 #[test]
-fn the_knife_cam_warns_that_its_end_does_not_join_its_start() {
-    // CAM_Knife has smooth transition on and no slave period, so it runs periodically and its
-    // slave end 360 is compared with its start 0; the velocities join (Poly5 to 1, Line at 1,
-    // Poly5 from 1), so position is the only warning.
+fn a_periodic_cam_whose_end_does_not_join_its_start_shows_a_warning() {
+    // CAM_Knife runs periodically (smooth transition) from slave 0 to 360 with a slave period
+    // of 360, so its end joins its start: no warning. The velocities join too (Poly5 to 1, Line
+    // at 1, Poly5 from 1).
     let cam = knife();
+    assert_eq!(cam.period.slave_period, Some(360.0));
+    assert_eq!(cam_editor::continuity_warnings(&cam).unwrap(), Vec::new());
+    // Without the slave period its end 360 is compared with its start 0.
+    let mut cam = cam;
+    cam.period.slave_period = None;
     let warnings = cam_editor::continuity_warnings(&cam).unwrap();
     assert_eq!(warnings.len(), 1, "{warnings:?}");
     let harness = harness(cam);

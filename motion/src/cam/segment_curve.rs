@@ -23,6 +23,14 @@ pub(crate) struct SegmentCurve {
     pub(crate) inv_dx: f64,
     /// How the slave moves inside the segment.
     shape: Shape,
+    /// The start key point's values, returned exactly at the start for the quantities the
+    /// shape matches there.
+    start: CamSample,
+    /// The end key point's values, likewise at the end.
+    end: CamSample,
+    /// How many derivatives the shape matches at its ends: 0 for a line (position only), 1 for
+    /// Poly3, 2 for Poly5, 3 for Poly7.
+    matched: u8,
 }
 
 /// The two ways a segment is evaluated.
@@ -91,6 +99,14 @@ impl SegmentCurve {
                 dx,
             ))
         };
+        let matched = match law {
+            MotionLaw::Line => 0,
+            MotionLaw::Poly3 => 1,
+            MotionLaw::Poly5 => 2,
+            MotionLaw::Poly7 => 3,
+            // The superposed laws compute their end derivatives exactly (f' and f'' vanish).
+            _ => 0,
+        };
         let shape = match law {
             MotionLaw::Line => Shape::Polynomial(Polynomial::line(start.slave, end.slave)),
             MotionLaw::Poly3 => hermite(2),
@@ -107,12 +123,40 @@ impl SegmentCurve {
             end_master: end.master,
             inv_dx: 1.0 / dx,
             shape,
+            start: exact(start),
+            end: exact(end),
+            matched,
         })
     }
 
     /// The slave at the normalised position `u` ∈ [0, 1] of the segment.
     #[inline]
     pub(crate) fn evaluate(&self, u: f64) -> CamSample {
+        let mut sample = self.evaluate_shape(u);
+        // The key points are what the user typed: rounding in the polynomial's sum must not
+        // move a segment's ends (360.0000000000001 for 360, or a velocity of 8.5e-15 for 0, in
+        // an exported table).
+        let key = if u <= 0.0 {
+            &self.start
+        } else if u >= 1.0 {
+            &self.end
+        } else {
+            return sample;
+        };
+        sample.position = key.position;
+        if self.matched >= 1 {
+            sample.velocity = key.velocity;
+        }
+        if self.matched >= 2 {
+            sample.acceleration = key.acceleration;
+        }
+        if self.matched >= 3 {
+            sample.jerk = key.jerk;
+        }
+        sample
+    }
+
+    fn evaluate_shape(&self, u: f64) -> CamSample {
         match self.shape {
             Shape::Polynomial(polynomial) => polynomial.evaluate(u, self.inv_dx),
             Shape::Superposed {
@@ -139,6 +183,16 @@ impl SegmentCurve {
     #[inline]
     pub(crate) fn sample(&self, master: f64) -> CamSample {
         self.evaluate(((master - self.start_master) * self.inv_dx).clamp(0.0, 1.0))
+    }
+}
+
+/// A key point's values as a sample.
+fn exact(point: &KeyPoint) -> CamSample {
+    CamSample {
+        position: point.slave,
+        velocity: point.velocity,
+        acceleration: point.acceleration,
+        jerk: point.jerk,
     }
 }
 
