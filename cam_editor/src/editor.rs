@@ -167,6 +167,13 @@ impl CamEditor {
             output.export_csv = ui.button(&texts.export_csv).clicked();
         });
         self.drafts.refusal_ui(ui);
+        if let Some(live) = live {
+            let text = texts
+                .live
+                .replace("{master}", &format!("{:.3}", live.master))
+                .replace("{slave}", &format!("{:.3}", live.slave));
+            ui.label(RichText::new(text).color(crate::plots::LIVE_COLOR));
+        }
         let Some(view) = self.view.as_mut() else {
             return output;
         };

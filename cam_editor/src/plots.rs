@@ -82,7 +82,7 @@ const QUANTITIES: [(ContinuityQuantity, Color32); 4] = [
 
 /// The colour of continuity warnings and of the live marker.
 const WARNING_COLOR: Color32 = Color32::from_rgb(0xe0, 0x30, 0x30);
-const LIVE_COLOR: Color32 = Color32::from_rgb(0x20, 0xb0, 0x90);
+pub(crate) const LIVE_COLOR: Color32 = Color32::from_rgb(0x20, 0xb0, 0x90);
 
 impl PlotState {
     /// The cam with the dragged key point moved, while a drag is in progress.

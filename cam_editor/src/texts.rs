@@ -70,6 +70,7 @@ pub struct CamEditorTexts {
     pub too_few_elements: String,
     pub not_an_integer: String,
     pub lanes_hint: String,
+    pub live: String,
 }
 
 impl Default for CamEditorTexts {
@@ -142,6 +143,7 @@ impl Default for CamEditorTexts {
             lanes_hint: s(
                 "Double-click a lane to add a tappet; click the upper or lower end of a tappet to change its positive or negative pass",
             ),
+            live: s("Online: master {master}, slave {slave}"),
         }
     }
 }

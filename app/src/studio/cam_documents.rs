@@ -5,7 +5,7 @@
 use std::collections::HashMap;
 use std::path::Path;
 
-use cam_editor::{CamEditor, CamEditorTexts};
+use cam_editor::{CamEditor, CamEditorTexts, CamLive};
 use egui::Ui;
 use project_model::{CamTable, Edit, Object};
 
@@ -17,6 +17,9 @@ use super::studio_app::{Command, StatusMessage, Studio};
 #[derive(Default)]
 pub struct CamDocuments {
     editors: HashMap<String, CamEditor>,
+    /// The variables the cams drawn while logged in want monitored for their live marker
+    /// (`docs/motion.md` §2), taken by the studio when it sets the watched variables.
+    live_paths: Vec<String>,
     /// The editors' words and the language they are in.
     texts: Option<(Language, CamEditorTexts)>,
 }
@@ -25,6 +28,12 @@ impl CamDocuments {
     /// Forgets every editor (another project was opened).
     pub fn clear(&mut self) {
         self.editors.clear();
+        self.live_paths.clear();
+    }
+
+    /// The variables the cams drawn since the last call want monitored.
+    pub fn take_live_paths(&mut self) -> Vec<String> {
+        std::mem::take(&mut self.live_paths)
     }
 
     /// The editors' words in `language`, made again only when the language changes.
@@ -53,11 +62,46 @@ pub(crate) fn cam_document_ui(studio: &mut Studio, ui: &mut Ui, name: &str) -> b
     let language = studio.settings.language;
     let read_only = studio.online.is_logged_in();
     let texts = studio.cams.texts(language);
-    let editor = studio.cams.editors.entry(name.to_owned()).or_default();
     if !cam.comment.is_empty() {
         ui.weak(&cam.comment);
     }
-    let output = editor.show(ui, cam, None, &texts, read_only);
+    // Logged in, the cam's MC_CAM_REF shows where the coupling through it is.
+    let live = if read_only {
+        let paths = live_paths(name);
+        let number = |path: &String| {
+            studio
+                .online
+                .value(path)
+                .and_then(|value| parse_number(&value.text))
+        };
+        let values = [number(&paths[0]), number(&paths[1]), number(&paths[2])];
+        for path in paths {
+            if !studio.cams.live_paths.contains(&path) {
+                studio.cams.live_paths.push(path);
+            }
+        }
+        match values {
+            [Some(master), Some(slave), bits] => {
+                let bits = bits.unwrap_or(0.0) as u32;
+                Some(CamLive {
+                    master,
+                    slave,
+                    tappets: cam
+                        .tracks
+                        .iter()
+                        .map(|track| {
+                            (1..=32).contains(&track.id) && bits & (1 << (track.id - 1)) != 0
+                        })
+                        .collect(),
+                })
+            }
+            _ => None,
+        }
+    } else {
+        None
+    };
+    let editor = studio.cams.editors.entry(name.to_owned()).or_default();
+    let output = editor.show(ui, cam, live.as_ref(), &texts, read_only);
     // The file dialogs need the whole studio, so the cam is copied out of it, but only then.
     let wants_file = output.import_csv || output.export_csv;
     let cam = wants_file.then(|| cam.clone());
@@ -88,6 +132,25 @@ pub(crate) fn cam_document_ui(studio: &mut Studio, ui: &mut Ui, name: &str) -> b
         export_csv_file(studio, &cam, &path);
     }
     true
+}
+
+/// The members of the cam's `MC_CAM_REF` that the runtime writes for the live marker.
+fn live_paths(name: &str) -> [String; 3] {
+    ["fMasterPosition", "fSlavePosition", "dwTappets"].map(|member| format!("{name}.{member}"))
+}
+
+/// A monitored value's number: an LREAL as text (`67.5`) or a DWORD in IEC hexadecimal
+/// (`16#00000003`).
+fn parse_number(text: &str) -> Option<f64> {
+    match text.split_once('#') {
+        Some((radix, digits)) => {
+            let radix = radix.parse::<u32>().ok()?;
+            u64::from_str_radix(&digits.replace('_', ""), radix)
+                .ok()
+                .map(|value| value as f64)
+        }
+        None => text.parse::<f64>().ok(),
+    }
 }
 
 /// Replaces the points of `cam` by those of the CSV file at `path`, as one undo step; a read or
@@ -203,6 +266,7 @@ fn cam_editor_texts(language: Language) -> CamEditorTexts {
         too_few_elements: get(Text::CamTooFewElements),
         not_an_integer: get(Text::CamNotAnInteger),
         lanes_hint: get(Text::CamLanesHint),
+        live: get(Text::CamLive),
     }
 }
 

@@ -300,6 +300,7 @@ pub enum Text {
     CamTooFewElements,
     CamNotAnInteger,
     CamLanesHint,
+    CamLive,
     CamImportedFrom,
     CamExportedTo,
     CamAddCam,
@@ -612,6 +613,10 @@ impl Text {
             Self::CamLanesHint => (
                 "Double-click a lane to add a tappet; click the upper or lower end of a tappet to change its positive or negative pass",
                 "双击轨道添加开关点；单击开关点的上端或下端切换其正向或负向通过动作",
+            ),
+            Self::CamLive => (
+                "Online: master {master}, slave {slave}",
+                "在线：主轴 {master}，从轴 {slave}",
             ),
             Self::CamImportedFrom => ("Imported points from", "已导入点："),
             Self::CamExportedTo => ("Exported points to", "已导出点到"),

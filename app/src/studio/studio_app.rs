@@ -667,6 +667,11 @@ impl Studio {
                 watched.push(path.clone());
             }
         }
+        for path in self.cams.take_live_paths() {
+            if !watched.contains(&path) {
+                watched.push(path);
+            }
+        }
         self.online.set_watch(watched, devices);
         self.online.poll(Instant::now());
         if self.online.tasks_generation() != self.cycles_seen {

@@ -5,7 +5,7 @@
 use app::studio::StudioApp;
 use egui::{Key, Modifiers, Role};
 use egui_kittest::Harness;
-use egui_kittest::kittest::Queryable as _;
+use egui_kittest::kittest::{NodeT as _, Queryable as _};
 use project_model::{CamProfile, CamTable, Object};
 
 use crate::support::{example_copy, studio};
@@ -88,4 +88,48 @@ fn add_cam_adds_the_codesys_default_cam() {
     harness.step();
     let added = cam(harness.state(), "CAM").expect("a cam named CAM");
     assert_eq!(added, CamTable::codesys_default("CAM"));
+}
+
+#[test]
+fn logged_in_the_cam_shows_where_the_running_coupling_is() {
+    // The master turns from the start, without the machine's start button.
+    let project = example_copy(|dir| {
+        crate::support::replace_in(
+            dir,
+            "application/MotionControl.st",
+            "xRunning := GVL_Machine.eMachineState = E_MachineState.Running;",
+            "xRunning := TRUE;",
+        );
+    });
+    let mut harness = studio(project.path());
+    crate::support::login_with_download(&mut harness);
+    harness.key_press(Key::F5);
+    open(&mut harness, "CAM_Knife");
+    // The runtime writes the coupling into CAM_Knife's MC_CAM_REF every cycle; the editor
+    // shows it once the studio has read it, and the master moves on.
+    let start = std::time::Instant::now();
+    let moving = loop {
+        harness.step();
+        let shown = harness
+            .query_all_by_label_contains("Online: master ")
+            .next()
+            // A label's text is its accessible value.
+            .and_then(|node| node.accesskit_node().value());
+        if let Some(label) = shown
+            && !label.starts_with("Online: master 0.000")
+        {
+            break label;
+        }
+        assert!(
+            start.elapsed() < std::time::Duration::from_secs(20),
+            "no live position on the cam: {:?}, {:?}",
+            harness.state().online().value("CAM_Knife.fMasterPosition"),
+            harness
+                .state()
+                .online()
+                .problem("CAM_Knife.fMasterPosition"),
+        );
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    };
+    assert!(moving.contains(", slave "), "{moving}");
 }
