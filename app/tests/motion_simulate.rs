@@ -311,6 +311,43 @@ fn the_example_knife_follows_its_cam_and_the_tappets_switch_the_outputs() {
     assert!(!boolean(&later, "GVL_IO.xGlueValve"), "{later:?}");
 }
 
+/// Adds the cam table `name` with the TOML `text` to the project in `dir`.
+fn add_cam(dir: &tempfile::TempDir, name: &str, text: &str) {
+    fs::write(
+        dir.path().join(format!("application/{name}.cam.toml")),
+        text,
+    )
+    .unwrap();
+    let manifest = dir.path().join("rivet.toml");
+    let listed = fs::read_to_string(&manifest).unwrap().replace(
+        "    \"Motion/CAM_Knife.cam.toml\",\n",
+        &format!("    \"Motion/CAM_Knife.cam.toml\",\n    \"{name}.cam.toml\",\n"),
+    );
+    fs::write(&manifest, listed).unwrap();
+}
+
+/// A cam over master 0..360: Poly5 from (0, 0) up to (180, 180) and back down to (360, 0),
+/// with `tappets` (TOML of `[[track]]` tables) added.
+fn rise_and_return_cam(tappets: &str) -> String {
+    format!(
+        "master = {{ start = 0.0, end = 360.0, unit = \"deg\" }}
+slave = {{ start = 0.0, end = 180.0, unit = \"mm\" }}
+
+[profile]
+kind = \"segments\"
+start = {{ master = 0.0, slave = 0.0, velocity = 0.0, acceleration = 0.0, jerk = 0.0 }}
+
+[[profile.segment]]
+law = \"poly5\"
+end = {{ master = 180.0, slave = 180.0, velocity = 0.0, acceleration = 0.0, jerk = 0.0 }}
+
+[[profile.segment]]
+law = \"poly5\"
+end = {{ master = 360.0, slave = 0.0, velocity = 0.0, acceleration = 0.0, jerk = 0.0 }}
+{tappets}"
+    )
+}
+
 /// A modulo axis in `MotionTask` with period `period_units`.
 fn modulo_axis(name: &str, period_units: f64) -> String {
     linear_axis(name).replace(
@@ -370,13 +407,7 @@ position = 8.0
 on_positive = \"invert\"
 on_negative = \"invert\"
 ";
-    fs::write(dir.path().join("application/CAM_T10.cam.toml"), cam).unwrap();
-    let manifest = dir.path().join("rivet.toml");
-    let text = fs::read_to_string(&manifest).unwrap().replace(
-        "    \"Motion/CAM_Knife.cam.toml\",\n",
-        "    \"Motion/CAM_Knife.cam.toml\",\n    \"CAM_T10.cam.toml\",\n",
-    );
-    fs::write(&manifest, text).unwrap();
+    add_cam(&dir, "CAM_T10", cam);
     // 20 s of 2 ms cycles: the drum (2 mm/s after a 0.2 s ramp) passes 8 at about 4.1 s and
     // then every 5 s (9.1, 14.1, 19.1), and wraps at 10 at about 5.1, 10.1 and 15.1 s.
     let values = simulate(
@@ -483,4 +514,269 @@ xTimedSeen := xTimedSeen OR stOutputs.Output[1];",
     // Switch03 (4000..1000 across the wrap) holds the track on from the start until its
     // compensated end at 1250.
     assert!(near(edges[0], 0.0) && near(edges[1], 1250.0), "{values:?}");
+}
+
+#[test]
+fn t3_an_absolute_slave_jumps_to_the_cam_and_a_relative_one_adds_its_start() {
+    let dir = project(
+        &[
+            modulo_axis("Drive", 360.0),
+            linear_axis("Absolute"),
+            linear_axis("Relative"),
+        ],
+        &[
+            ("fbPowerDrive", "MC_Power"),
+            ("fbPowerA", "MC_Power"),
+            ("fbPowerR", "MC_Power"),
+            ("fbAtA", "MC_SetPosition"),
+            ("fbAtR", "MC_SetPosition"),
+            ("fbSelectA", "MC_CamTableSelect"),
+            ("fbSelectR", "MC_CamTableSelect"),
+            ("fbCamA", "MC_CamIn"),
+            ("fbCamR", "MC_CamIn"),
+            ("fbTurn", "MC_MoveVelocity"),
+            ("iCoupled", "INT"),
+            ("lrFirstA", "LREAL"),
+            ("lrFirstR", "LREAL"),
+            ("lrPeakA", "LREAL"),
+            ("lrPeakR", "LREAL"),
+        ],
+        "fbPowerDrive(Axis := Drive, Enable := TRUE);
+fbPowerA(Axis := Absolute, Enable := TRUE);
+fbPowerR(Axis := Relative, Enable := TRUE);
+(* Both slaves stand at 20 when they couple. *)
+fbAtA(Axis := Absolute, Execute := fbPowerA.Status, Position := 20.0);
+fbAtR(Axis := Relative, Execute := fbPowerR.Status, Position := 20.0);
+fbSelectA(Master := Drive, Slave := Absolute, CamTable := CAM_T3, Execute := fbAtA.Done,
+    Periodic := TRUE, MasterAbsolute := TRUE, SlaveAbsolute := TRUE);
+fbSelectR(Master := Drive, Slave := Relative, CamTable := CAM_T3, Execute := fbAtR.Done,
+    Periodic := TRUE, MasterAbsolute := TRUE, SlaveAbsolute := FALSE);
+fbCamA(Master := Drive, Slave := Absolute, Execute := fbSelectA.Done,
+    CamTableID := fbSelectA.CamTableID, StartMode := MC_StartMode.absolute);
+fbCamR(Master := Drive, Slave := Relative, Execute := fbSelectR.Done,
+    CamTableID := fbSelectR.CamTableID, StartMode := MC_StartMode.absolute);
+IF fbCamA.Busy AND fbCamR.Busy THEN
+    iCoupled := iCoupled + 1;
+END_IF
+(* The set positions after the first cycle of the couplings, with the master at rest at 0. *)
+IF iCoupled = 2 THEN
+    lrFirstA := Absolute.fSetPosition;
+    lrFirstR := Relative.fSetPosition;
+END_IF
+fbTurn(Axis := Drive, Execute := iCoupled >= 3, Velocity := 360.0, Acceleration := 3600.0,
+    Deceleration := 3600.0, Direction := MC_DIRECTION.positive);
+IF iCoupled >= 2 THEN
+    lrPeakA := MAX(lrPeakA, Absolute.fSetPosition);
+    lrPeakR := MAX(lrPeakR, Relative.fSetPosition);
+END_IF",
+    );
+    add_cam(&dir, "CAM_T3", &rise_and_return_cam(""));
+    let values = simulate(
+        &dir,
+        600,
+        &[
+            "MotionControl.lrFirstA",
+            "MotionControl.lrFirstR",
+            "MotionControl.lrPeakA",
+            "MotionControl.lrPeakR",
+        ],
+    );
+    assert_eq!(number(&values, "MotionControl.lrFirstA"), 0.0, "{values:?}");
+    assert_eq!(
+        number(&values, "MotionControl.lrFirstR"),
+        20.0,
+        "{values:?}"
+    );
+    // The peak of the cam at master 180 is reached within a cycle of 0.72 deg.
+    assert!(
+        (number(&values, "MotionControl.lrPeakA") - 180.0).abs() < 1e-3,
+        "{values:?}"
+    );
+    assert!(
+        (number(&values, "MotionControl.lrPeakR") - 200.0).abs() < 1e-3,
+        "{values:?}"
+    );
+}
+
+#[test]
+fn t4_master_scaling_and_offsets_move_the_period_and_the_stroke() {
+    let dir = project(
+        &[
+            linear_axis("Feed"),
+            modulo_axis("Fast", 1000.0),
+            modulo_axis("Shifted", 1000.0),
+        ],
+        &[
+            ("fbPowerFeed", "MC_Power"),
+            ("fbPowerFast", "MC_Power"),
+            ("fbPowerShifted", "MC_Power"),
+            ("fbSelectFast", "MC_CamTableSelect"),
+            ("fbSelectShifted", "MC_CamTableSelect"),
+            ("fbFast", "MC_CamIn"),
+            ("fbShifted", "MC_CamIn"),
+            ("fbMove", "MC_MoveAbsolute"),
+            ("iFastEnds", "INT"),
+            ("lrShiftedEnd", "LREAL"),
+            ("lrShiftedMin", "LREAL"),
+            ("lrShiftedMax", "LREAL"),
+        ],
+        "fbPowerFeed(Axis := Feed, Enable := TRUE);
+fbPowerFast(Axis := Fast, Enable := TRUE);
+fbPowerShifted(Axis := Shifted, Enable := TRUE);
+fbSelectFast(Master := Feed, Slave := Fast, CamTable := CAM_T4, Execute := fbPowerFast.Status,
+    Periodic := TRUE, MasterAbsolute := TRUE, SlaveAbsolute := TRUE);
+fbSelectShifted(Master := Feed, Slave := Shifted, CamTable := CAM_T4,
+    Execute := fbPowerShifted.Status, Periodic := TRUE, MasterAbsolute := TRUE,
+    SlaveAbsolute := TRUE);
+fbFast(Master := Feed, Slave := Fast, Execute := fbSelectFast.Done,
+    CamTableID := fbSelectFast.CamTableID, MasterScaling := 2.0);
+fbShifted(Master := Feed, Slave := Shifted, Execute := fbSelectShifted.Done,
+    CamTableID := fbSelectShifted.CamTableID, MasterOffset := 20.0, SlaveOffset := 30.0);
+fbMove(Axis := Feed, Execute := fbFast.Busy AND fbShifted.Busy, Position := 400.0,
+    Velocity := 100.0, Acceleration := 20000.0, Deceleration := 20000.0);
+IF fbFast.EndOfProfile THEN
+    iFastEnds := iFastEnds + 1;
+END_IF
+IF fbShifted.EndOfProfile AND lrShiftedEnd = 0.0 THEN
+    lrShiftedEnd := Feed.fSetPosition;
+END_IF
+IF fbShifted.InSync THEN
+    IF lrShiftedMin = 0.0 OR Shifted.fSetPosition < lrShiftedMin THEN
+        lrShiftedMin := Shifted.fSetPosition;
+    END_IF
+    lrShiftedMax := MAX(lrShiftedMax, Shifted.fSetPosition);
+END_IF",
+    );
+    add_cam(&dir, "CAM_T4", &rise_and_return_cam(""));
+    // 4.5 s: the feed moves 0 to 400 at 100 mm/s.
+    let values = simulate(
+        &dir,
+        2250,
+        &[
+            "Feed.fActPosition",
+            "MotionControl.iFastEnds",
+            "MotionControl.lrShiftedEnd",
+            "MotionControl.lrShiftedMin",
+            "MotionControl.lrShiftedMax",
+        ],
+    );
+    assert!(
+        (number(&values, "Feed.fActPosition") - 400.0).abs() < 1e-6,
+        "{values:?}"
+    );
+    // MasterScaling 2: a period every 180 master units, so ends at 180 and 360.
+    assert_eq!(
+        number(&values, "MotionControl.iFastEnds"),
+        2.0,
+        "{values:?}"
+    );
+    // MasterOffset 20: the first period ends at master 340 (the cam sees 360).
+    let end = number(&values, "MotionControl.lrShiftedEnd");
+    assert!((340.0..340.3).contains(&end), "{values:?}");
+    // SlaveOffset 30: the slave runs 30 .. 210.
+    assert!(
+        (number(&values, "MotionControl.lrShiftedMin") - 30.0).abs() < 0.01,
+        "{values:?}"
+    );
+    assert!(
+        (number(&values, "MotionControl.lrShiftedMax") - 210.0).abs() < 0.01,
+        "{values:?}"
+    );
+}
+
+#[test]
+fn t18a_gear_in_pos_starts_at_230_and_is_in_sync_at_280_with_the_slave_at_60() {
+    let dir = project(
+        &[modulo_axis("Drum", 360.0), modulo_axis("Roll", 360.0)],
+        &[
+            ("fbPowerDrum", "MC_Power"),
+            ("fbPowerRoll", "MC_Power"),
+            ("fbTurn", "MC_MoveVelocity"),
+            ("fbGear", "MC_GearInPos"),
+            ("lrStartSync", "LREAL"),
+            ("lrInSyncMaster", "LREAL"),
+            ("lrInSyncSlave", "LREAL"),
+        ],
+        "fbPowerDrum(Axis := Drum, Enable := TRUE);
+fbPowerRoll(Axis := Roll, Enable := TRUE);
+fbTurn(Axis := Drum, Execute := fbPowerDrum.Status, Velocity := 50.0, Acceleration := 20000.0,
+    Deceleration := 20000.0, Direction := MC_DIRECTION.positive);
+fbGear(Master := Drum, Slave := Roll, Execute := fbPowerRoll.Status AND fbTurn.InVelocity,
+    RatioNumerator := 1, RatioDenominator := 1, MasterSyncPosition := 280.0,
+    SlaveSyncPosition := 60.0, MasterStartDistance := 50.0);
+IF fbGear.StartSync AND lrStartSync = 0.0 THEN
+    lrStartSync := Drum.fSetPosition;
+END_IF
+IF fbGear.InSync AND lrInSyncMaster = 0.0 THEN
+    lrInSyncMaster := Drum.fSetPosition;
+    lrInSyncSlave := Roll.fSetPosition;
+END_IF",
+    );
+    // 6 s at 50 deg/s: the drum reaches 300.
+    let values = simulate(
+        &dir,
+        3000,
+        &[
+            "MotionControl.lrStartSync",
+            "MotionControl.lrInSyncMaster",
+            "MotionControl.lrInSyncSlave",
+        ],
+    );
+    // Flags show at the call after the cycle that set them: within two cycles (0.2 deg).
+    let near = |path: &str, expected: f64| (number(&values, path) - expected).abs() <= 0.25;
+    assert!(near("MotionControl.lrStartSync", 230.0), "{values:?}");
+    assert!(near("MotionControl.lrInSyncMaster", 280.0), "{values:?}");
+    assert!(near("MotionControl.lrInSyncSlave", 60.0), "{values:?}");
+}
+
+#[test]
+fn t8_dead_time_compensation_switches_a_tappet_early_by_the_distance_of_its_time() {
+    let dir = project(
+        &[modulo_axis("Drum", 360.0)],
+        &[
+            ("fbPower", "MC_Power"),
+            ("fbTurn", "MC_MoveVelocity"),
+            ("fbNow", "SMC_CamRegister"),
+            ("fbEarly", "SMC_CamRegister"),
+            ("aNow", "ARRAY[1..512] OF BOOL"),
+            ("aEarly", "ARRAY[1..512] OF BOOL"),
+            ("lrNow", "LREAL"),
+            ("lrEarly", "LREAL"),
+        ],
+        "fbPower(Axis := Drum, Enable := TRUE);
+fbTurn(Axis := Drum, Execute := fbPower.Status, Velocity := 100.0, Acceleration := 20000.0,
+    Deceleration := 20000.0, Direction := MC_DIRECTION.positive);
+fbNow(Master := Drum, CamTable := CAM_T8, bTappet := aNow, Enable := TRUE);
+fbEarly(Master := Drum, CamTable := CAM_T8, bTappet := aEarly, Enable := TRUE,
+    DeadTimeCompensation := 0.02);
+IF aNow[1] AND lrNow = 0.0 THEN
+    lrNow := Drum.fSetPosition;
+END_IF
+IF aEarly[1] AND lrEarly = 0.0 THEN
+    lrEarly := Drum.fSetPosition;
+END_IF",
+    );
+    add_cam(
+        &dir,
+        "CAM_T8",
+        &rise_and_return_cam(
+            "
+[[track]]
+id = 1
+
+[[track.tappet]]
+position = 100.0
+on_positive = \"on\"
+on_negative = \"none\"
+",
+        ),
+    );
+    // 1.5 s at 100 deg/s: past 100.
+    let values = simulate(&dir, 750, &["MotionControl.lrNow", "MotionControl.lrEarly"]);
+    // Each read is the set position at the call after the switching cycle (0.2 deg a cycle).
+    let now = number(&values, "MotionControl.lrNow");
+    let early = number(&values, "MotionControl.lrEarly");
+    assert!((100.0..100.5).contains(&now), "{values:?}");
+    // +0.02 s at 100 deg/s: 2 deg earlier.
+    assert!((now - early - 2.0).abs() <= 0.25, "{values:?}");
 }
