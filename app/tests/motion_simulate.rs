@@ -780,3 +780,188 @@ on_negative = \"none\"
     // +0.02 s at 100 deg/s: 2 deg earlier.
     assert!((now - early - 2.0).abs() <= 0.25, "{values:?}");
 }
+
+#[test]
+fn t16_buffered_stops_at_the_first_target_aborting_takes_over_and_blending_high_passes_fast() {
+    let dir = project(
+        &[
+            linear_axis("Buffered"),
+            linear_axis("Aborting"),
+            linear_axis("Blending"),
+        ],
+        &[
+            ("fbPowerB", "MC_Power"),
+            ("fbPowerA", "MC_Power"),
+            ("fbPowerL", "MC_Power"),
+            ("fbFirstB", "MC_MoveAbsolute"),
+            ("fbFirstA", "MC_MoveAbsolute"),
+            ("fbFirstL", "MC_MoveAbsolute"),
+            ("fbSecondB", "MC_MoveAbsolute"),
+            ("fbSecondA", "MC_MoveAbsolute"),
+            ("fbSecondL", "MC_MoveAbsolute"),
+            ("xFirstDoneB", "BOOL"),
+            ("xFirstDoneA", "BOOL"),
+            ("xRestAtTargetB", "BOOL"),
+            ("lrPassL", "LREAL"),
+        ],
+        "fbPowerB(Axis := Buffered, Enable := TRUE);
+fbPowerA(Axis := Aborting, Enable := TRUE);
+fbPowerL(Axis := Blending, Enable := TRUE);
+fbFirstB(Axis := Buffered, Execute := fbPowerB.Status, Position := 1000.0, Velocity := 100.0,
+    Acceleration := 1000.0, Deceleration := 1000.0);
+fbFirstA(Axis := Aborting, Execute := fbPowerA.Status, Position := 1000.0, Velocity := 100.0,
+    Acceleration := 1000.0, Deceleration := 1000.0);
+fbFirstL(Axis := Blending, Execute := fbPowerL.Status, Position := 1000.0, Velocity := 100.0,
+    Acceleration := 1000.0, Deceleration := 1000.0);
+(* The second moves are given while the first ones run. *)
+fbSecondB(Axis := Buffered, Execute := fbFirstB.Busy, Position := 2000.0, Velocity := 200.0,
+    Acceleration := 1000.0, Deceleration := 1000.0, BufferMode := MC_BUFFER_MODE.Buffered);
+fbSecondA(Axis := Aborting, Execute := fbFirstA.Busy, Position := 2000.0, Velocity := 200.0,
+    Acceleration := 1000.0, Deceleration := 1000.0, BufferMode := MC_BUFFER_MODE.Aborting);
+fbSecondL(Axis := Blending, Execute := fbFirstL.Busy, Position := 2000.0, Velocity := 200.0,
+    Acceleration := 1000.0, Deceleration := 1000.0, BufferMode := MC_BUFFER_MODE.BlendingHigh);
+xFirstDoneB := xFirstDoneB OR fbFirstB.Done;
+xFirstDoneA := xFirstDoneA OR fbFirstA.Done;
+xRestAtTargetB := xRestAtTargetB
+    OR (ABS(Buffered.fSetPosition - 1000.0) < 1.0E-9 AND Buffered.fSetVelocity = 0.0);
+IF lrPassL = 0.0 AND Blending.fSetPosition >= 1000.0 THEN
+    lrPassL := Blending.fSetVelocity;
+END_IF",
+    );
+    // 1000 at 100 then 1000 at 200: about 15.5 s.
+    let values = simulate(
+        &dir,
+        8000,
+        &[
+            "Buffered.fActPosition",
+            "Aborting.fActPosition",
+            "Blending.fActPosition",
+            "MotionControl.xFirstDoneB",
+            "MotionControl.xFirstDoneA",
+            "MotionControl.fbFirstA.CommandAborted",
+            "MotionControl.xRestAtTargetB",
+            "MotionControl.lrPassL",
+        ],
+    );
+    for axis in ["Buffered", "Aborting", "Blending"] {
+        let position = number(&values, &format!("{axis}.fActPosition"));
+        assert!((position - 2000.0).abs() < 1e-6, "{axis}: {values:?}");
+    }
+    // Buffered: the first move finishes, at rest at its target, before the second starts.
+    assert!(boolean(&values, "MotionControl.xFirstDoneB"), "{values:?}");
+    assert!(
+        boolean(&values, "MotionControl.xRestAtTargetB"),
+        "{values:?}"
+    );
+    // Aborting: the first move never finishes.
+    assert!(!boolean(&values, "MotionControl.xFirstDoneA"), "{values:?}");
+    assert!(
+        boolean(&values, "MotionControl.fbFirstA.CommandAborted"),
+        "{values:?}"
+    );
+    // BlendingHigh passes the first target at the higher velocity, 200 (a cycle at 1000 /s²).
+    let pass = number(&values, "MotionControl.lrPassL");
+    assert!((pass - 200.0).abs() <= 2.5, "{values:?}");
+}
+
+#[test]
+fn t15_a_velocity_override_of_half_halves_the_speed() {
+    let dir = project(
+        &[linear_axis("Belt")],
+        &[
+            ("fbPower", "MC_Power"),
+            ("fbRun", "MC_MoveVelocity"),
+            ("fbOverride", "MC_SetOverride"),
+            ("iCycle", "INT"),
+            ("lrFull", "LREAL"),
+        ],
+        "iCycle := iCycle + 1;
+fbPower(Axis := Belt, Enable := TRUE);
+fbRun(Axis := Belt, Execute := fbPower.Status, Velocity := 100.0, Acceleration := 1000.0,
+    Deceleration := 1000.0);
+IF iCycle = 500 THEN
+    lrFull := Belt.fSetVelocity;
+END_IF
+fbOverride(Axis := Belt, Enable := iCycle > 500, VelFactor := 0.5);",
+    );
+    let values = simulate(
+        &dir,
+        1000,
+        &[
+            "MotionControl.lrFull",
+            "Belt.fSetVelocity",
+            "Belt.nAxisState",
+            "MotionControl.fbOverride.Enabled",
+        ],
+    );
+    assert_eq!(number(&values, "MotionControl.lrFull"), 100.0, "{values:?}");
+    assert!(
+        (number(&values, "Belt.fSetVelocity") - 50.0).abs() < 1e-9,
+        "{values:?}"
+    );
+    assert!(boolean(&values, "MotionControl.fbOverride.Enabled"));
+    // SMC_AXIS_STATE.continuous_motion: an override does not change the state.
+    assert_eq!(number(&values, "Belt.nAxisState"), 5.0);
+}
+
+#[test]
+fn t25_states_follow_the_plcopen_diagram_through_an_axis_error_and_a_reset() {
+    let limited = linear_axis("Slide").replace(
+        "software_limits = { enabled = false, min = 0.0, max = 0.0 }",
+        "software_limits = { enabled = true, min = 0.0, max = 500.0 }",
+    );
+    let dir = project(
+        &[limited],
+        &[
+            ("fbPower", "MC_Power"),
+            ("fbRun", "MC_MoveVelocity"),
+            ("fbMove", "MC_MoveAbsolute"),
+            ("fbReset", "MC_Reset"),
+            ("iCycle", "INT"),
+            ("aStates", "ARRAY[1..6] OF INT"),
+            ("wMoveInErrorStop", "WORD"),
+        ],
+        "iCycle := iCycle + 1;
+fbPower(Axis := Slide, Enable := iCycle < 4000);
+fbRun(Axis := Slide, Execute := iCycle >= 10, Velocity := 100.0, Acceleration := 1000.0,
+    Deceleration := 1000.0);
+fbMove(Axis := Slide, Execute := iCycle >= 3200 AND iCycle < 3300, Position := 100.0,
+    Velocity := 100.0, Acceleration := 1000.0, Deceleration := 1000.0);
+IF iCycle = 3250 THEN
+    wMoveInErrorStop := fbMove.ErrorID;
+END_IF
+fbReset(Axis := Slide, Execute := iCycle >= 3500);
+CASE iCycle OF
+    5: aStates[1] := Slide.nAxisState;
+    100: aStates[2] := Slide.nAxisState;
+    3100: aStates[3] := Slide.nAxisState;
+    3600: aStates[4] := Slide.nAxisState;
+    4100: aStates[5] := Slide.nAxisState;
+END_CASE",
+    );
+    let values = simulate(
+        &dir,
+        4200,
+        &[
+            "MotionControl.aStates[1]",
+            "MotionControl.aStates[2]",
+            "MotionControl.aStates[3]",
+            "MotionControl.aStates[4]",
+            "MotionControl.aStates[5]",
+            "MotionControl.wMoveInErrorStop",
+            "Slide.nErrorID",
+        ],
+    );
+    let states: Vec<f64> = (1..=5)
+        .map(|index| number(&values, &format!("MotionControl.aStates[{index}]")))
+        .collect();
+    // Standstill after MC_Power, continuous motion, ErrorStop past the software limit at 500
+    // (reached at about 5 s), Standstill after MC_Reset, Disabled after MC_Power goes off.
+    assert_eq!(states, [3.0, 5.0, 1.0, 3.0, 0.0], "{values:?}");
+    // A move in ErrorStop is refused: ErrorID 2, the axis is in ErrorStop.
+    assert_eq!(
+        number(&values, "MotionControl.wMoveInErrorStop"),
+        2.0,
+        "{values:?}"
+    );
+}
