@@ -5,14 +5,10 @@ use motion::fb::{
     CAM_SWITCH_TRACKS, CamSwitch, CamSwitchMode, DigitalCamSwitch, SwitchDirection, TrackOptions,
 };
 
+use super::codes::{INVALID_INPUT, UNKNOWN_AXIS};
 use super::io::Io;
 use super::member::M;
 use crate::engine::fault::FaultKind;
-
-/// `ErrorID` for a VAR_IN_OUT that names no axis or is not connected (`docs/motion.md` §5).
-const UNKNOWN_AXIS: u16 = 9;
-/// `ErrorID` for an input that is not valid (`docs/motion.md` §5).
-const INVALID_INPUT: u16 = 4;
 
 /// Runs MC_DigitalCamSwitch on the instance at `instance`.
 pub(super) fn call(io: &mut Io<'_, '_>, instance: usize) -> Result<(), FaultKind> {

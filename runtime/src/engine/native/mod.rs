@@ -5,6 +5,7 @@
 
 mod cam_switch;
 mod cams;
+mod codes;
 mod fast_hash;
 mod io;
 mod member;

@@ -1,21 +1,18 @@
 //! The adapters of the single-axis blocks: each reads its inputs, calls the `motion` block kept
 //! for the instance, and writes its outputs.
 
-use motion::axis::Direction;
 use motion::fb::{
     Halt, Home, Jog, MoveAbsolute, MoveAdditive, MoveRelative, MoveVelocity, Power,
     ReadActualPosition, ReadActualVelocity, ReadAxisError, ReadStatus, Reset, SetOverride,
     SetPosition, Stop,
 };
-use motion::kernel::{AxisId, BufferMode};
+use motion::kernel::AxisId;
 
 use super::NativeBlock;
+use super::codes::{UNKNOWN_AXIS, buffer_mode, direction};
 use super::io::Io;
 use super::member::M;
 use crate::engine::fault::FaultKind;
-
-/// The id `ErrorID` shows for a VAR_IN_OUT that names no axis (`docs/motion.md` §5).
-const UNKNOWN_AXIS: u16 = 9;
 
 /// The status outputs most blocks share; `None` for an output the block does not have.
 struct Status {
@@ -44,23 +41,6 @@ impl Status {
         io.set_bool(M::Error, self.error)?;
         io.set_word(M::ErrorID, self.error_id)
     }
-}
-
-/// The `MC_BUFFER_MODE` number as a buffer mode; an unknown number aborts, the default.
-fn buffer_mode(code: i16) -> BufferMode {
-    match code {
-        1 => BufferMode::Buffered,
-        2 => BufferMode::BlendingLow,
-        3 => BufferMode::BlendingPrevious,
-        4 => BufferMode::BlendingNext,
-        5 => BufferMode::BlendingHigh,
-        _ => BufferMode::Aborting,
-    }
-}
-
-/// The `MC_DIRECTION` number as a direction; an unknown number takes the shortest way.
-fn direction(code: i16) -> Direction {
-    Direction::from_code(code).unwrap_or(Direction::Shortest)
 }
 
 /// Runs `native` on the instance at `instance`.

@@ -6,18 +6,15 @@ use motion::fb::{
     CamIn, CamOut, CamRegister, CamTableSelect, GearIn, GearInPos, GearOut, GetCamSlaveSetPosition,
     Phasing,
 };
-use motion::kernel::{AxisId, BufferMode};
-use motion::sync::{CamTableId, PhasingMode, StartMode};
+use motion::kernel::AxisId;
+use motion::sync::{CamTableId, PhasingMode};
 
 use super::NativeBlock;
+use super::codes::{UNKNOWN_AXIS, UNKNOWN_CAM, buffer_mode, start_mode};
 use super::io::Io;
 use super::member::M;
 use crate::engine::fault::FaultKind;
 
-/// `ErrorID` for a VAR_IN_OUT that names no axis (`docs/motion.md` §5).
-const UNKNOWN_AXIS: u16 = 9;
-/// `ErrorID` for a VAR_IN_OUT that names no cam table.
-const UNKNOWN_CAM: u16 = 13;
 /// The length of `SMC_CamRegister.bTappet` (CODESYS `MAX_NUM_TAPPETS`).
 const MAX_NUM_TAPPETS: usize = 512;
 
@@ -32,27 +29,6 @@ fn status(io: &mut Io<'_, '_>, busy: bool, error: bool, error_id: u16) -> Result
 fn control(io: &mut Io<'_, '_>, active: bool, aborted: bool) -> Result<(), FaultKind> {
     io.set_bool(M::Active, active)?;
     io.set_bool(M::CommandAborted, aborted)
-}
-
-fn buffer_mode(code: i16) -> BufferMode {
-    match code {
-        1 => BufferMode::Buffered,
-        2 => BufferMode::BlendingLow,
-        3 => BufferMode::BlendingPrevious,
-        4 => BufferMode::BlendingNext,
-        5 => BufferMode::BlendingHigh,
-        _ => BufferMode::Aborting,
-    }
-}
-
-fn start_mode(code: i16) -> StartMode {
-    match code {
-        1 => StartMode::Relative,
-        2 => StartMode::RampIn,
-        3 => StartMode::RampInPositive,
-        4 => StartMode::RampInNegative,
-        _ => StartMode::Absolute,
-    }
 }
 
 /// The master and the slave, or `None` after writing the unknown-axis error.
