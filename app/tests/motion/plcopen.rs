@@ -2,89 +2,9 @@
 //! of the PLCopen motion digest (`../shared/reference/digests/plcopen-and-softmotion-cams.md`
 //! §3) on the example project's `MotionTask` (2 ms), with its axes and extra linear ones.
 
-#![allow(clippy::unwrap_used, clippy::expect_used)] // Test helpers may panic: a panic is a failed test.
-
 use std::fs;
-use std::process::Command;
 
-use serde_json::Value;
-
-/// A linear virtual axis in `MotionTask`, limits generous enough for the examples.
-fn linear_axis(name: &str) -> String {
-    format!(
-        r#"
-[[axis]]
-name = "{name}"
-kind = "virtual"
-task = "MotionTask"
-unit = "mm"
-software_limits = {{ enabled = false, min = 0.0, max = 0.0 }}
-limits = {{ velocity = 5000.0, acceleration = 20000.0, deceleration = 20000.0, jerk = 0.0 }}
-scaling = {{ numerator = 1.0, denominator = 1.0 }}
-"#
-    )
-}
-
-/// A copy of the example whose `MotionControl` program declares `variables` (name, type) and
-/// runs `body`, with `axes` (TOML) added to the device tree.
-fn project(axes: &[String], variables: &[(&str, &str)], body: &str) -> tempfile::TempDir {
-    let dir = tempfile::tempdir().unwrap();
-    assets::copy_example_project(dir.path()).unwrap();
-    let manifest = dir.path().join("rivet.toml");
-    let mut text = fs::read_to_string(&manifest).unwrap();
-    for axis in axes {
-        text.push_str(axis);
-    }
-    fs::write(&manifest, text).unwrap();
-    let mut declarations = String::from("kind = \"program\"\nbody = { language = \"st\" }\n");
-    for (name, ty) in variables {
-        declarations.push_str(&format!(
-            "\n[[variable]]\nname = \"{name}\"\nsection = \"VAR\"\ntype = \"{ty}\"\n"
-        ));
-    }
-    let application = dir.path().join("application");
-    fs::write(application.join("MotionControl.pou.toml"), declarations).unwrap();
-    fs::write(application.join("MotionControl.st"), body).unwrap();
-    dir
-}
-
-/// Runs `cycles` cycles of the fastest task and returns the watched values.
-fn simulate(
-    dir: &tempfile::TempDir,
-    cycles: u32,
-    watch: &[&str],
-) -> serde_json::Map<String, Value> {
-    let output = Command::new(env!("CARGO_BIN_EXE_rivet"))
-        .args(["simulate", dir.path().to_str().unwrap()])
-        .args(["--cycles", &cycles.to_string(), "--json", "--watch"])
-        .arg(watch.join(","))
-        .output()
-        .unwrap();
-    let stdout = String::from_utf8_lossy(&output.stdout);
-    assert!(
-        output.status.success(),
-        "{stdout}{}",
-        String::from_utf8_lossy(&output.stderr)
-    );
-    match serde_json::from_str(stdout.trim()).unwrap() {
-        Value::Object(map) => map,
-        other => panic!("not an object: {other}"),
-    }
-}
-
-fn number(values: &serde_json::Map<String, Value>, path: &str) -> f64 {
-    values[path]
-        .as_f64()
-        .unwrap_or_else(|| panic!("{path} is {:?}", values[path]))
-}
-
-fn boolean(values: &serde_json::Map<String, Value>, path: &str) -> bool {
-    match &values[path] {
-        Value::Bool(value) => *value,
-        Value::String(text) => text == "TRUE",
-        other => panic!("{path} is {other:?}"),
-    }
-}
+use crate::support::{add_cam, boolean, linear_axis, modulo_axis, number, project, simulate};
 
 #[test]
 fn t13a_a_second_move_started_by_the_first_ones_done_ends_at_10000() {
@@ -311,21 +231,6 @@ fn the_example_knife_follows_its_cam_and_the_tappets_switch_the_outputs() {
     assert!(!boolean(&later, "GVL_IO.xGlueValve"), "{later:?}");
 }
 
-/// Adds the cam table `name` with the TOML `text` to the project in `dir`.
-fn add_cam(dir: &tempfile::TempDir, name: &str, text: &str) {
-    fs::write(
-        dir.path().join(format!("application/{name}.cam.toml")),
-        text,
-    )
-    .unwrap();
-    let manifest = dir.path().join("rivet.toml");
-    let listed = fs::read_to_string(&manifest).unwrap().replace(
-        "    \"Motion/CAM_Knife.cam.toml\",\n",
-        &format!("    \"Motion/CAM_Knife.cam.toml\",\n    \"{name}.cam.toml\",\n"),
-    );
-    fs::write(&manifest, listed).unwrap();
-}
-
 /// A cam over master 0..360: Poly5 from (0, 0) up to (180, 180) and back down to (360, 0),
 /// with `tappets` (TOML of `[[track]]` tables) added.
 fn rise_and_return_cam(tappets: &str) -> String {
@@ -345,14 +250,6 @@ end = {{ master = 180.0, slave = 180.0, velocity = 0.0, acceleration = 0.0, jerk
 law = \"poly5\"
 end = {{ master = 360.0, slave = 0.0, velocity = 0.0, acceleration = 0.0, jerk = 0.0 }}
 {tappets}"
-    )
-}
-
-/// A modulo axis in `MotionTask` with period `period_units`.
-fn modulo_axis(name: &str, period_units: f64) -> String {
-    linear_axis(name).replace(
-        "unit = \"mm\"\n",
-        &format!("unit = \"mm\"\nmodulo_period = {period_units:?}\n"),
     )
 }
 

@@ -4,74 +4,11 @@
 //! the example project's `MotionTask` (2 ms). Rivet follows CODESYS: where a vendor's semantics
 //! differ, the test keeps only the numbers that still apply (see each test's comment).
 
-#![allow(clippy::unwrap_used, clippy::expect_used)] // Test helpers may panic: a panic is a failed test.
-
-use std::fs;
-use std::process::Command;
-
 use serde_json::Value;
 
-/// A linear virtual axis in `MotionTask`, limits generous enough for the examples.
-fn linear_axis(name: &str) -> String {
-    format!(
-        r#"
-[[axis]]
-name = "{name}"
-kind = "virtual"
-task = "MotionTask"
-unit = "mm"
-software_limits = {{ enabled = false, min = 0.0, max = 0.0 }}
-limits = {{ velocity = 5000.0, acceleration = 20000.0, deceleration = 20000.0, jerk = 0.0 }}
-scaling = {{ numerator = 1.0, denominator = 1.0 }}
-"#
-    )
-}
-
-/// A modulo axis in `MotionTask` with period `period_units`.
-fn modulo_axis(name: &str, period_units: f64) -> String {
-    linear_axis(name).replace(
-        "unit = \"mm\"\n",
-        &format!("unit = \"mm\"\nmodulo_period = {period_units:?}\n"),
-    )
-}
-
-/// A copy of the example whose `MotionControl` program declares `variables` (name, type) and
-/// runs `body`, with `axes` (TOML) added to the device tree.
-fn project(axes: &[String], variables: &[(&str, &str)], body: &str) -> tempfile::TempDir {
-    let dir = tempfile::tempdir().unwrap();
-    assets::copy_example_project(dir.path()).unwrap();
-    let manifest = dir.path().join("rivet.toml");
-    let mut text = fs::read_to_string(&manifest).unwrap();
-    for axis in axes {
-        text.push_str(axis);
-    }
-    fs::write(&manifest, text).unwrap();
-    let mut declarations = String::from("kind = \"program\"\nbody = { language = \"st\" }\n");
-    for (name, ty) in variables {
-        declarations.push_str(&format!(
-            "\n[[variable]]\nname = \"{name}\"\nsection = \"VAR\"\ntype = \"{ty}\"\n"
-        ));
-    }
-    let application = dir.path().join("application");
-    fs::write(application.join("MotionControl.pou.toml"), declarations).unwrap();
-    fs::write(application.join("MotionControl.st"), body).unwrap();
-    dir
-}
-
-/// Adds the cam table `name` with the TOML `text` to the project in `dir`.
-fn add_cam(dir: &tempfile::TempDir, name: &str, text: &str) {
-    fs::write(
-        dir.path().join(format!("application/{name}.cam.toml")),
-        text,
-    )
-    .unwrap();
-    let manifest = dir.path().join("rivet.toml");
-    let listed = fs::read_to_string(&manifest).unwrap().replace(
-        "    \"Motion/CAM_Knife.cam.toml\",\n",
-        &format!("    \"Motion/CAM_Knife.cam.toml\",\n    \"{name}.cam.toml\",\n"),
-    );
-    fs::write(&manifest, listed).unwrap();
-}
+use crate::support::{
+    add_cam, assert_near, boolean, linear_axis, modulo_axis, number, project, simulate,
+};
 
 /// A cam of segments from (0, 0) with slope `start_slope`: each segment is (law, master end,
 /// slave end, slope dY/dX at the end), with `tracks` (TOML of `[[track]]` tables) added.
@@ -120,53 +57,6 @@ fn codesys_default_cam() -> String {
         ],
         "",
     )
-}
-
-/// Runs `cycles` cycles of the fastest task and returns the watched values.
-fn simulate(
-    dir: &tempfile::TempDir,
-    cycles: u32,
-    watch: &[&str],
-) -> serde_json::Map<String, Value> {
-    let output = Command::new(env!("CARGO_BIN_EXE_rivet"))
-        .args(["simulate", dir.path().to_str().unwrap()])
-        .args(["--cycles", &cycles.to_string(), "--json", "--watch"])
-        .arg(watch.join(","))
-        .output()
-        .unwrap();
-    let stdout = String::from_utf8_lossy(&output.stdout);
-    assert!(
-        output.status.success(),
-        "{stdout}{}",
-        String::from_utf8_lossy(&output.stderr)
-    );
-    match serde_json::from_str(stdout.trim()).unwrap() {
-        Value::Object(map) => map,
-        other => panic!("not an object: {other}"),
-    }
-}
-
-fn number(values: &serde_json::Map<String, Value>, path: &str) -> f64 {
-    values[path]
-        .as_f64()
-        .unwrap_or_else(|| panic!("{path} is {:?}", values[path]))
-}
-
-fn boolean(values: &serde_json::Map<String, Value>, path: &str) -> bool {
-    match &values[path] {
-        Value::Bool(value) => *value,
-        Value::String(text) => text == "TRUE",
-        other => panic!("{path} is {other:?}"),
-    }
-}
-
-/// Asserts that `path` is within `tolerance` of `expected`.
-fn assert_near(values: &serde_json::Map<String, Value>, path: &str, expected: f64, tolerance: f64) {
-    let value = number(values, path);
-    assert!(
-        (value - expected).abs() <= tolerance,
-        "{path} = {value}, expected {expected} ± {tolerance}: {values:?}"
-    );
 }
 
 /// Delta 5.6 ActivationMode 2/3: two masters stand at 1000, each with a slave coupled with
@@ -1519,7 +1409,7 @@ fbSelect(Master := Wheel, Slave := Arm, CamTable := CAM_Straight,
 /// positive, SW1 track 0 2500..3000 negative, SW2 track 0 4000..1000 both, SW3 track 1 from
 /// 3000 for 1350 ms both) with the axis moving negative at 1000 u/s from 0: track 0 is off at
 /// 4000, on at 3000 (SW1), off at 2500 (SW0 is positive only), on again at 1000; track 1 is on
-/// from 3000 for 1350 ms, off at 1650. (The positive direction is `motion_simulate`'s T12.)
+/// from 3000 for 1350 ms, off at 1650. (The positive direction is `plcopen`'s T12.)
 /// Rivet numbers the modes and directions as PLCopen: CamSwitchMode 0 position, 1 time;
 /// AxisDirection 1 positive, 2 negative, 0 both.
 #[test]
