@@ -6,12 +6,13 @@ use motion::fb::{
     ReadActualPosition, ReadActualVelocity, ReadAxisError, ReadStatus, Reset, SetOverride,
     SetPosition, Stop,
 };
-use motion::kernel::AxisId;
+use motion::kernel::Kernel;
 
 use super::NativeBlock;
 use super::codes::{UNKNOWN_AXIS, buffer_mode, direction};
 use super::io::Io;
 use super::member::M;
+use super::state::Kept;
 use crate::engine::fault::FaultKind;
 
 /// The status outputs most blocks share; `None` for an output the block does not have.
@@ -43,6 +44,116 @@ impl Status {
     }
 }
 
+/// A block's status outputs as the library names them.
+trait Report {
+    fn report(&self) -> Status;
+}
+
+/// `Report` for blocks with the outputs of a buffered command (`done`, Busy, Active,
+/// CommandAborted, Error, ErrorID), `done` being the field and member of its Done output.
+macro_rules! report_full {
+    ($($block:ty => $done:ident $member:ident),* $(,)?) => {$(
+        impl Report for $block {
+            fn report(&self) -> Status {
+                Status {
+                    done: Some((M::$member, self.$done)),
+                    busy: Some(self.busy),
+                    active: Some(self.active),
+                    command_aborted: Some(self.command_aborted),
+                    error: self.error,
+                    error_id: self.error_id,
+                }
+            }
+        }
+    )*};
+}
+
+/// `Report` for blocks with a Done-like output, Busy, Error and ErrorID only.
+macro_rules! report_simple {
+    ($($block:ty => $done:ident $member:ident),* $(,)?) => {$(
+        impl Report for $block {
+            fn report(&self) -> Status {
+                Status {
+                    done: Some((M::$member, self.$done)),
+                    busy: Some(self.busy),
+                    active: None,
+                    command_aborted: None,
+                    error: self.error,
+                    error_id: self.error_id,
+                }
+            }
+        }
+    )*};
+}
+
+report_full!(
+    Home => done Done,
+    Halt => done Done,
+    MoveAbsolute => done Done,
+    MoveRelative => done Done,
+    MoveAdditive => done Done,
+    MoveVelocity => in_velocity InVelocity,
+);
+report_simple!(
+    Reset => done Done,
+    SetPosition => done Done,
+    SetOverride => enabled Enabled,
+    ReadActualPosition => valid Valid,
+    ReadActualVelocity => valid Valid,
+    ReadAxisError => valid Valid,
+    ReadStatus => valid Valid,
+);
+
+impl Report for Power {
+    fn report(&self) -> Status {
+        Status {
+            done: Some((M::Status, self.status)),
+            busy: Some(false),
+            active: None,
+            command_aborted: None,
+            error: self.error,
+            error_id: self.error_id,
+        }
+    }
+}
+
+/// Stop and Jog have CommandAborted but no Active.
+macro_rules! report_without_active {
+    ($($block:ty),*) => {$(
+        impl Report for $block {
+            fn report(&self) -> Status {
+                Status {
+                    done: Some((M::Done, self.done)),
+                    busy: Some(self.busy),
+                    active: None,
+                    command_aborted: Some(self.command_aborted),
+                    error: self.error,
+                    error_id: self.error_id,
+                }
+            }
+        }
+    )*};
+}
+
+report_without_active!(Stop, Jog);
+
+/// Calls the block kept for `instance` with `call` (which sets its inputs and calls it), writes
+/// its status outputs and returns what `after` takes from it for the block's other outputs.
+fn run<T: Kept + Report, R>(
+    io: &mut Io<'_, '_>,
+    instance: usize,
+    call: impl FnOnce(&mut Kernel, &mut T),
+    after: impl FnOnce(&T) -> R,
+) -> Result<R, FaultKind> {
+    let (status, rest) = {
+        let (kernel, fb) = io.motion().block::<T>(instance);
+        call(kernel, fb);
+        (fb.report(), after(fb))
+    };
+    status.write(io)?;
+    Ok(rest)
+}
+
 /// Runs `native` on the instance at `instance`.
 pub(super) fn call(
     io: &mut Io<'_, '_>,
@@ -62,25 +173,27 @@ pub(super) fn call(
         .write(io);
     };
     match native {
-        NativeBlock::Power => power(io, axis, instance),
+        NativeBlock::Power => {
+            let enable = io.bool(M::Enable)?;
+            let powered = run(
+                io,
+                instance,
+                |kernel, fb: &mut Power| {
+                    fb.enable = enable;
+                    fb.call(kernel, axis);
+                },
+                |fb| fb.status,
+            )?;
+            io.set_bool(M::bRegulatorRealState, powered)?;
+            io.set_bool(M::bDriveStartRealState, powered)
+        }
         NativeBlock::Home => {
             let (execute, position) = (io.bool(M::Execute)?, io.lreal(M::Position)?);
-            let status = {
-                let (kernel, fb) = io.motion().block::<Home>(instance);
-                fb.execute = execute;
-                fb.position = position;
+            let set = |kernel: &mut Kernel, fb: &mut Home| {
+                (fb.execute, fb.position) = (execute, position);
                 fb.call(kernel, axis);
-                full(
-                    M::Done,
-                    fb.done,
-                    fb.busy,
-                    fb.active,
-                    fb.command_aborted,
-                    fb.error,
-                    fb.error_id,
-                )
             };
-            status.write(io)
+            run(io, instance, set, ignore)
         }
         NativeBlock::Stop => {
             let inputs = (
@@ -88,20 +201,11 @@ pub(super) fn call(
                 io.lreal(M::Deceleration)?,
                 io.lreal(M::Jerk)?,
             );
-            let status = {
-                let (kernel, fb) = io.motion().block::<Stop>(instance);
+            let set = |kernel: &mut Kernel, fb: &mut Stop| {
                 (fb.execute, fb.deceleration, fb.jerk) = inputs;
                 fb.call(kernel, axis);
-                Status {
-                    done: Some((M::Done, fb.done)),
-                    busy: Some(fb.busy),
-                    active: None,
-                    command_aborted: Some(fb.command_aborted),
-                    error: fb.error,
-                    error_id: fb.error_id,
-                }
             };
-            status.write(io)
+            run(io, instance, set, ignore)
         }
         NativeBlock::Halt => {
             let inputs = (
@@ -110,31 +214,19 @@ pub(super) fn call(
                 io.lreal(M::Jerk)?,
                 buffer_mode(io.int(M::BufferMode)?),
             );
-            let status = {
-                let (kernel, fb) = io.motion().block::<Halt>(instance);
+            let set = |kernel: &mut Kernel, fb: &mut Halt| {
                 (fb.execute, fb.deceleration, fb.jerk, fb.buffer_mode) = inputs;
                 fb.call(kernel, axis);
-                full(
-                    M::Done,
-                    fb.done,
-                    fb.busy,
-                    fb.active,
-                    fb.command_aborted,
-                    fb.error,
-                    fb.error_id,
-                )
             };
-            status.write(io)
+            run(io, instance, set, ignore)
         }
         NativeBlock::Reset => {
             let execute = io.bool(M::Execute)?;
-            let status = {
-                let (kernel, fb) = io.motion().block::<Reset>(instance);
+            let set = |kernel: &mut Kernel, fb: &mut Reset| {
                 fb.execute = execute;
                 fb.call(kernel, axis);
-                simple(M::Done, fb.done, fb.busy, fb.error, fb.error_id)
             };
-            status.write(io)
+            run(io, instance, set, ignore)
         }
         NativeBlock::MoveAbsolute => {
             let inputs = (
@@ -144,129 +236,74 @@ pub(super) fn call(
                 direction(io.int(M::Direction)?),
                 buffer_mode(io.int(M::BufferMode)?),
             );
-            let (v, a, d, j) = dynamics(io)?;
-            let status = {
-                let (kernel, fb) = io.motion().block::<MoveAbsolute>(instance);
-                (
-                    fb.execute,
-                    fb.continuous_update,
-                    fb.position,
-                    fb.direction,
-                    fb.buffer_mode,
-                ) = inputs;
-                (fb.velocity, fb.acceleration, fb.deceleration, fb.jerk) = (v, a, d, j);
+            let dynamics = dynamics(io)?;
+            let set = |kernel: &mut Kernel, fb: &mut MoveAbsolute| {
+                let (execute, update, position, direction, mode) = inputs;
+                (fb.execute, fb.continuous_update, fb.position) = (execute, update, position);
+                (fb.direction, fb.buffer_mode) = (direction, mode);
+                (fb.velocity, fb.acceleration, fb.deceleration, fb.jerk) = dynamics;
                 fb.call(kernel, axis);
-                full(
-                    M::Done,
-                    fb.done,
-                    fb.busy,
-                    fb.active,
-                    fb.command_aborted,
-                    fb.error,
-                    fb.error_id,
-                )
             };
-            status.write(io)
+            run(io, instance, set, ignore)
         }
         NativeBlock::MoveRelative | NativeBlock::MoveAdditive => {
             let inputs = (
                 io.bool(M::Execute)?,
                 io.bool(M::ContinuousUpdate)?,
                 io.lreal(M::Distance)?,
-                dynamics(io)?,
                 buffer_mode(io.int(M::BufferMode)?),
             );
-            let (execute, update, distance, (v, a, d, j), mode) = inputs;
-            let status = if native == NativeBlock::MoveRelative {
-                let (kernel, fb) = io.motion().block::<MoveRelative>(instance);
-                (
-                    fb.execute,
-                    fb.continuous_update,
-                    fb.distance,
-                    fb.buffer_mode,
-                ) = (execute, update, distance, mode);
-                (fb.velocity, fb.acceleration, fb.deceleration, fb.jerk) = (v, a, d, j);
-                fb.call(kernel, axis);
-                full(
-                    M::Done,
-                    fb.done,
-                    fb.busy,
-                    fb.active,
-                    fb.command_aborted,
-                    fb.error,
-                    fb.error_id,
-                )
+            let dynamics = dynamics(io)?;
+            // The two blocks have the same inputs; they differ in what the distance adds to.
+            macro_rules! set {
+                ($block:ty) => {
+                    |kernel: &mut Kernel, fb: &mut $block| {
+                        (
+                            fb.execute,
+                            fb.continuous_update,
+                            fb.distance,
+                            fb.buffer_mode,
+                        ) = inputs;
+                        (fb.velocity, fb.acceleration, fb.deceleration, fb.jerk) = dynamics;
+                        fb.call(kernel, axis);
+                    }
+                };
+            }
+            if native == NativeBlock::MoveRelative {
+                run(io, instance, set!(MoveRelative), ignore)
             } else {
-                let (kernel, fb) = io.motion().block::<MoveAdditive>(instance);
-                (
-                    fb.execute,
-                    fb.continuous_update,
-                    fb.distance,
-                    fb.buffer_mode,
-                ) = (execute, update, distance, mode);
-                (fb.velocity, fb.acceleration, fb.deceleration, fb.jerk) = (v, a, d, j);
-                fb.call(kernel, axis);
-                full(
-                    M::Done,
-                    fb.done,
-                    fb.busy,
-                    fb.active,
-                    fb.command_aborted,
-                    fb.error,
-                    fb.error_id,
-                )
-            };
-            status.write(io)
+                run(io, instance, set!(MoveAdditive), ignore)
+            }
         }
         NativeBlock::MoveVelocity => {
             let inputs = (
                 io.bool(M::Execute)?,
                 io.bool(M::ContinuousUpdate)?,
-                dynamics(io)?,
                 direction(io.int(M::Direction)?),
                 buffer_mode(io.int(M::BufferMode)?),
             );
-            let (execute, update, (v, a, d, j), dir, mode) = inputs;
-            let status = {
-                let (kernel, fb) = io.motion().block::<MoveVelocity>(instance);
+            let dynamics = dynamics(io)?;
+            let set = |kernel: &mut Kernel, fb: &mut MoveVelocity| {
                 (
                     fb.execute,
                     fb.continuous_update,
                     fb.direction,
                     fb.buffer_mode,
-                ) = (execute, update, dir, mode);
-                (fb.velocity, fb.acceleration, fb.deceleration, fb.jerk) = (v, a, d, j);
+                ) = inputs;
+                (fb.velocity, fb.acceleration, fb.deceleration, fb.jerk) = dynamics;
                 fb.call(kernel, axis);
-                full(
-                    M::InVelocity,
-                    fb.in_velocity,
-                    fb.busy,
-                    fb.active,
-                    fb.command_aborted,
-                    fb.error,
-                    fb.error_id,
-                )
             };
-            status.write(io)
+            run(io, instance, set, ignore)
         }
         NativeBlock::Jog => {
-            let (forward, backward) = (io.bool(M::JogForward)?, io.bool(M::JogBackward)?);
-            let (v, a, d, j) = dynamics(io)?;
-            let status = {
-                let (kernel, fb) = io.motion().block::<Jog>(instance);
-                (fb.jog_forward, fb.jog_backward) = (forward, backward);
-                (fb.velocity, fb.acceleration, fb.deceleration, fb.jerk) = (v, a, d, j);
+            let jog = (io.bool(M::JogForward)?, io.bool(M::JogBackward)?);
+            let dynamics = dynamics(io)?;
+            let set = |kernel: &mut Kernel, fb: &mut Jog| {
+                (fb.jog_forward, fb.jog_backward) = jog;
+                (fb.velocity, fb.acceleration, fb.deceleration, fb.jerk) = dynamics;
                 fb.call(kernel, axis);
-                Status {
-                    done: Some((M::Done, fb.done)),
-                    busy: Some(fb.busy),
-                    active: None,
-                    command_aborted: Some(fb.command_aborted),
-                    error: fb.error,
-                    error_id: fb.error_id,
-                }
             };
-            status.write(io)
+            run(io, instance, set, ignore)
         }
         NativeBlock::SetPosition => {
             let inputs = (
@@ -274,13 +311,11 @@ pub(super) fn call(
                 io.lreal(M::Position)?,
                 io.bool(M::Relative)?,
             );
-            let status = {
-                let (kernel, fb) = io.motion().block::<SetPosition>(instance);
+            let set = |kernel: &mut Kernel, fb: &mut SetPosition| {
                 (fb.execute, fb.position, fb.relative) = inputs;
                 fb.call(kernel, axis);
-                simple(M::Done, fb.done, fb.busy, fb.error, fb.error_id)
             };
-            status.write(io)
+            run(io, instance, set, ignore)
         }
         NativeBlock::SetOverride => {
             let inputs = (
@@ -289,63 +324,47 @@ pub(super) fn call(
                 io.lreal(M::AccFactor)?,
                 io.lreal(M::JerkFactor)?,
             );
-            let status = {
-                let (kernel, fb) = io.motion().block::<SetOverride>(instance);
+            let set = |kernel: &mut Kernel, fb: &mut SetOverride| {
                 (fb.enable, fb.vel_factor, fb.acc_factor, fb.jerk_factor) = inputs;
                 fb.call(kernel, axis);
-                simple(M::Enabled, fb.enabled, fb.busy, fb.error, fb.error_id)
             };
-            status.write(io)
+            run(io, instance, set, ignore)
         }
         NativeBlock::ReadActualPosition => {
             let enable = io.bool(M::Enable)?;
-            let (status, position) = {
-                let (kernel, fb) = io.motion().block::<ReadActualPosition>(instance);
+            let set = |kernel: &mut Kernel, fb: &mut ReadActualPosition| {
                 fb.enable = enable;
                 fb.call(kernel, axis);
-                (
-                    simple(M::Valid, fb.valid, fb.busy, fb.error, fb.error_id),
-                    fb.position,
-                )
             };
-            status.write(io)?;
+            let position = run(io, instance, set, |fb| fb.position)?;
             io.set_lreal(M::Position, position)
         }
         NativeBlock::ReadActualVelocity => {
             let enable = io.bool(M::Enable)?;
-            let (status, velocity) = {
-                let (kernel, fb) = io.motion().block::<ReadActualVelocity>(instance);
+            let set = |kernel: &mut Kernel, fb: &mut ReadActualVelocity| {
                 fb.enable = enable;
                 fb.call(kernel, axis);
-                (
-                    simple(M::Valid, fb.valid, fb.busy, fb.error, fb.error_id),
-                    fb.velocity,
-                )
             };
-            status.write(io)?;
+            let velocity = run(io, instance, set, |fb| fb.velocity)?;
             io.set_lreal(M::Velocity, velocity)
         }
         NativeBlock::ReadAxisError => {
             let enable = io.bool(M::Enable)?;
-            let (status, axis_error) = {
-                let (kernel, fb) = io.motion().block::<ReadAxisError>(instance);
+            let set = |kernel: &mut Kernel, fb: &mut ReadAxisError| {
                 fb.enable = enable;
                 fb.call(kernel, axis);
-                (
-                    simple(M::Valid, fb.valid, fb.busy, fb.error, fb.error_id),
-                    fb.axis_error_id,
-                )
             };
-            status.write(io)?;
+            let axis_error = run(io, instance, set, |fb| fb.axis_error_id)?;
             io.set_word(M::AxisErrorID, axis_error)
         }
         NativeBlock::ReadStatus => {
             let enable = io.bool(M::Enable)?;
-            let (status, states) = {
-                let (kernel, fb) = io.motion().block::<ReadStatus>(instance);
+            let set = |kernel: &mut Kernel, fb: &mut ReadStatus| {
                 fb.enable = enable;
                 fb.call(kernel, axis);
-                let states = [
+            };
+            let states = run(io, instance, set, |fb| {
+                [
                     (M::ErrorStop, fb.error_stop),
                     (M::Disabled, fb.disabled),
                     (M::Stopping, fb.stopping),
@@ -354,13 +373,8 @@ pub(super) fn call(
                     (M::DiscreteMotion, fb.discrete_motion),
                     (M::ContinuousMotion, fb.continuous_motion),
                     (M::SynchronizedMotion, fb.synchronized_motion),
-                ];
-                (
-                    simple(M::Valid, fb.valid, fb.busy, fb.error, fb.error_id),
-                    states,
-                )
-            };
-            status.write(io)?;
+                ]
+            })?;
             for (name, value) in states {
                 io.set_bool(name, value)?;
             }
@@ -372,21 +386,8 @@ pub(super) fn call(
     }
 }
 
-fn power(io: &mut Io<'_, '_>, axis: AxisId, instance: usize) -> Result<(), FaultKind> {
-    let enable = io.bool(M::Enable)?;
-    let (status, powered) = {
-        let (kernel, fb) = io.motion().block::<Power>(instance);
-        fb.enable = enable;
-        fb.call(kernel, axis);
-        (
-            simple(M::Status, fb.status, false, fb.error, fb.error_id),
-            fb.status,
-        )
-    };
-    status.write(io)?;
-    io.set_bool(M::bRegulatorRealState, powered)?;
-    io.set_bool(M::bDriveStartRealState, powered)
-}
+/// For a block whose outputs are all status outputs.
+fn ignore<T>(_: &T) {}
 
 /// `Velocity`, `Acceleration`, `Deceleration`, `Jerk`.
 fn dynamics(io: &Io<'_, '_>) -> Result<(f64, f64, f64, f64), FaultKind> {
@@ -396,36 +397,4 @@ fn dynamics(io: &Io<'_, '_>) -> Result<(f64, f64, f64, f64), FaultKind> {
         io.lreal(M::Deceleration)?,
         io.lreal(M::Jerk)?,
     ))
-}
-
-/// The outputs of a buffered motion block.
-fn full(
-    done_name: M,
-    done: bool,
-    busy: bool,
-    active: bool,
-    command_aborted: bool,
-    error: bool,
-    error_id: u16,
-) -> Status {
-    Status {
-        done: Some((done_name, done)),
-        busy: Some(busy),
-        active: Some(active),
-        command_aborted: Some(command_aborted),
-        error,
-        error_id,
-    }
-}
-
-/// The outputs of a block without Active and CommandAborted.
-fn simple(done_name: M, done: bool, busy: bool, error: bool, error_id: u16) -> Status {
-    Status {
-        done: Some((done_name, done)),
-        busy: Some(busy),
-        active: None,
-        command_aborted: None,
-        error,
-        error_id,
-    }
 }
