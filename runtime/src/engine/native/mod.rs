@@ -3,6 +3,7 @@
 //! instance's inputs by member name, calls the `motion` function block kept for that instance,
 //! and writes its outputs back.
 
+mod blocks;
 mod cam_switch;
 mod cams;
 mod codes;
@@ -19,96 +20,11 @@ use super::exec::Exec;
 use super::fault::FaultKind;
 use super::lower::{Flow, Op};
 
+use blocks::{Adapter, NativeBlock};
 pub use state::MotionLoadError;
 pub(crate) use state::MotionState;
 
 use io::{Io, LibraryOffsets, Members};
-
-/// The native blocks this runtime has.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) enum NativeBlock {
-    Power,
-    Home,
-    Stop,
-    Halt,
-    Reset,
-    MoveAbsolute,
-    MoveRelative,
-    MoveAdditive,
-    MoveVelocity,
-    Jog,
-    SetPosition,
-    SetOverride,
-    ReadActualPosition,
-    ReadActualVelocity,
-    ReadStatus,
-    ReadAxisError,
-    CamTableSelect,
-    CamIn,
-    CamOut,
-    GearIn,
-    GearOut,
-    GearInPos,
-    Phasing,
-    CamRegister,
-    GetTappetValue,
-    GetCamSlaveSetPosition,
-    DigitalCamSwitch,
-}
-
-impl NativeBlock {
-    /// The block called `name` (any case).
-    fn from_name(name: &str) -> Option<Self> {
-        Some(match name.to_ascii_uppercase().as_str() {
-            "MC_POWER" => Self::Power,
-            "MC_HOME" => Self::Home,
-            "MC_STOP" => Self::Stop,
-            "MC_HALT" => Self::Halt,
-            "MC_RESET" => Self::Reset,
-            "MC_MOVEABSOLUTE" => Self::MoveAbsolute,
-            "MC_MOVERELATIVE" => Self::MoveRelative,
-            "MC_MOVEADDITIVE" => Self::MoveAdditive,
-            "MC_MOVEVELOCITY" => Self::MoveVelocity,
-            "MC_JOG" => Self::Jog,
-            "MC_SETPOSITION" => Self::SetPosition,
-            "MC_SETOVERRIDE" => Self::SetOverride,
-            "MC_READACTUALPOSITION" => Self::ReadActualPosition,
-            "MC_READACTUALVELOCITY" => Self::ReadActualVelocity,
-            "MC_READSTATUS" => Self::ReadStatus,
-            "MC_READAXISERROR" => Self::ReadAxisError,
-            "MC_CAMTABLESELECT" => Self::CamTableSelect,
-            "MC_CAMIN" => Self::CamIn,
-            "MC_CAMOUT" => Self::CamOut,
-            "MC_GEARIN" => Self::GearIn,
-            "MC_GEAROUT" => Self::GearOut,
-            "MC_GEARINPOS" => Self::GearInPos,
-            "MC_PHASING" => Self::Phasing,
-            "SMC_CAMREGISTER" => Self::CamRegister,
-            "SMC_GETTAPPETVALUE" => Self::GetTappetValue,
-            "SMC_GETCAMSLAVESETPOSITION" => Self::GetCamSlaveSetPosition,
-            "MC_DIGITALCAMSWITCH" => Self::DigitalCamSwitch,
-            _ => return None,
-        })
-    }
-
-    /// Whether the block works on a master and a slave, a cam or a coupling rather than on
-    /// one `Axis`.
-    fn is_synchronised(self) -> bool {
-        matches!(
-            self,
-            Self::CamTableSelect
-                | Self::CamIn
-                | Self::CamOut
-                | Self::GearIn
-                | Self::GearOut
-                | Self::GearInPos
-                | Self::Phasing
-                | Self::CamRegister
-                | Self::GetTappetValue
-                | Self::GetCamSlaveSetPosition
-        )
-    }
-}
 
 /// The instruction that runs native block `block` on the instance of the function block
 /// `pou`, whose members are found in the image's type table.
@@ -144,11 +60,9 @@ fn call(
 ) -> Result<(), FaultKind> {
     let mut io = Io::new(x, members, library);
     let instance = io.instance();
-    if native == NativeBlock::DigitalCamSwitch {
-        cam_switch::call(&mut io, instance)
-    } else if native.is_synchronised() {
-        synchronised::call(&mut io, native, instance)
-    } else {
-        single_axis::call(&mut io, native, instance)
+    match native.adapter() {
+        Adapter::SingleAxis => single_axis::call(&mut io, native, instance),
+        Adapter::Synchronised => synchronised::call(&mut io, native, instance),
+        Adapter::CamSwitch => cam_switch::call(&mut io, instance),
     }
 }

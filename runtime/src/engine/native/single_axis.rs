@@ -9,10 +9,10 @@ use motion::fb::{
 use motion::kernel::Kernel;
 
 use super::NativeBlock;
+use super::blocks::Kept;
 use super::codes::{UNKNOWN_AXIS, buffer_mode, direction};
 use super::io::Io;
 use super::member::M;
-use super::state::Kept;
 use crate::engine::fault::FaultKind;
 
 /// The status outputs most blocks share; `None` for an output the block does not have.

@@ -4,16 +4,12 @@
 use std::collections::HashMap;
 
 use motion::axis::{AxisConfig, SoftwareLimits};
-use motion::fb::get_tappet_value::GetTappetValue;
-use motion::fb::{
-    CamIn, CamOut, CamRegister, CamTableSelect, Halt, Home, Jog, MoveAbsolute, MoveAdditive,
-    MoveRelative, MoveVelocity, Power, ReadActualPosition, ReadActualVelocity, ReadAxisError,
-    ReadStatus, Reset, SetOverride, SetPosition, Stop,
-};
-use motion::fb::{DigitalCamSwitch, GearIn, GearInPos, GearOut, GetCamSlaveSetPosition, Phasing};
+use motion::fb::CamIn;
 use motion::kernel::{AxisId, Kernel};
 use motion::sync::CamId;
 use program_image::{ProgramImage, StructKind, TypeDef};
+
+use super::blocks::{Instance, Kept};
 
 /// One axis of the image in the kernel.
 #[derive(Clone, Copy, Debug)]
@@ -333,65 +329,3 @@ fn axis_ref_layout(image: &ProgramImage) -> AxisRefLayout {
         position_period: at("fPositionPeriod"),
     }
 }
-
-/// A `motion` function block kept between calls of its instance.
-pub(super) trait Kept: Default {
-    /// The block as a kept instance.
-    fn wrap(self) -> Instance;
-    /// The block, if `instance` holds this type.
-    fn unwrap(instance: &mut Instance) -> Option<&mut Self>;
-}
-
-macro_rules! kept {
-    ($($variant:ident),* $(,)?) => {
-        /// Every kind of kept function block, boxed: the blocks differ much in size (a cam
-        /// switch holds its switches and tracks), and the map of instances moves entries.
-        pub(super) enum Instance {
-            $($variant(Box<$variant>),)*
-        }
-        $(
-            impl Kept for $variant {
-                fn wrap(self) -> Instance {
-                    Instance::$variant(Box::new(self))
-                }
-                fn unwrap(instance: &mut Instance) -> Option<&mut Self> {
-                    match instance {
-                        Instance::$variant(block) => Some(block),
-                        #[allow(unreachable_patterns)]
-                        _ => None,
-                    }
-                }
-            }
-        )*
-    };
-}
-
-kept!(
-    Power,
-    Home,
-    Stop,
-    Halt,
-    Reset,
-    MoveAbsolute,
-    MoveRelative,
-    MoveAdditive,
-    MoveVelocity,
-    Jog,
-    SetPosition,
-    SetOverride,
-    ReadActualPosition,
-    ReadActualVelocity,
-    ReadStatus,
-    ReadAxisError,
-    CamTableSelect,
-    CamIn,
-    CamOut,
-    GearIn,
-    GearOut,
-    GearInPos,
-    Phasing,
-    CamRegister,
-    GetTappetValue,
-    GetCamSlaveSetPosition,
-    DigitalCamSwitch,
-);
