@@ -69,6 +69,7 @@ pub fn add_cam(dir: &tempfile::TempDir, name: &str, text: &str) {
 }
 
 /// Runs `cycles` cycles of the fastest task and returns the watched values.
+#[track_caller]
 pub fn simulate(
     dir: &tempfile::TempDir,
     cycles: u32,
@@ -92,12 +93,14 @@ pub fn simulate(
     }
 }
 
+#[track_caller]
 pub fn number(values: &serde_json::Map<String, Value>, path: &str) -> f64 {
     values[path]
         .as_f64()
         .unwrap_or_else(|| panic!("{path} is {:?}", values[path]))
 }
 
+#[track_caller]
 pub fn boolean(values: &serde_json::Map<String, Value>, path: &str) -> bool {
     match &values[path] {
         Value::Bool(value) => *value,
@@ -107,6 +110,7 @@ pub fn boolean(values: &serde_json::Map<String, Value>, path: &str) -> bool {
 }
 
 /// Asserts that `path` is within `tolerance` of `expected`.
+#[track_caller]
 pub fn assert_near(
     values: &serde_json::Map<String, Value>,
     path: &str,
