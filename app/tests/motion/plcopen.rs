@@ -4,7 +4,9 @@
 
 use std::fs;
 
-use crate::support::{add_cam, boolean, linear_axis, modulo_axis, number, project, simulate};
+use crate::support::{
+    T12_SWITCHES, add_cam, boolean, linear_axis, modulo_axis, number, project, simulate,
+};
 
 #[test]
 fn t13a_a_second_move_started_by_the_first_ones_done_ends_at_10000() {
@@ -347,23 +349,8 @@ fn t12_a_digital_cam_switch_with_compensation_switches_early_and_late() {
             ("aEdges", "ARRAY[1..8] OF LREAL"),
             ("xTimedSeen", "BOOL"),
         ],
-        "stSwitches.NumberOfSwitches := 4;
-stSwitches.Switch[0].TrackNumber := 0;
-stSwitches.Switch[0].FirstOnPosition := 2000.0;
-stSwitches.Switch[0].LastOnPosition := 3000.0;
-stSwitches.Switch[0].AxisDirection := 1;
-stSwitches.Switch[1].TrackNumber := 0;
-stSwitches.Switch[1].FirstOnPosition := 2500.0;
-stSwitches.Switch[1].LastOnPosition := 3000.0;
-stSwitches.Switch[1].AxisDirection := 2;
-stSwitches.Switch[2].TrackNumber := 0;
-stSwitches.Switch[2].FirstOnPosition := 4000.0;
-stSwitches.Switch[2].LastOnPosition := 1000.0;
-stSwitches.Switch[3].TrackNumber := 1;
-stSwitches.Switch[3].FirstOnPosition := 3000.0;
-stSwitches.Switch[3].CamSwitchMode := 1;
-stSwitches.Switch[3].Duration := T#1350MS;
-stTracks.Track[0].OnCompensation := T#-125MS;
+        &format!(
+            "{T12_SWITCHES}stTracks.Track[0].OnCompensation := T#-125MS;
 stTracks.Track[0].OffCompensation := T#250MS;
 fbPower(Axis := Table, Enable := TRUE);
 fbTurn(Axis := Table, Execute := fbPower.Status, Velocity := 1000.0, Acceleration := 20000.0,
@@ -375,7 +362,8 @@ IF stOutputs.Output[0] <> xLast AND iEdge < 8 THEN
     aEdges[iEdge] := Table.fSetPosition;
 END_IF
 xLast := stOutputs.Output[0];
-xTimedSeen := xTimedSeen OR stOutputs.Output[1];",
+xTimedSeen := xTimedSeen OR stOutputs.Output[1];"
+        ),
     );
     // 5 s at 1000 units/s: almost one revolution of 5000.
     let values = simulate(

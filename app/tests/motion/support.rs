@@ -6,6 +6,27 @@ use std::process::Command;
 
 use serde_json::Value;
 
+/// The switches of the PLCopen digest's T12 (Fig. 37–39) as Structured Text filling an
+/// `MC_CAMSWITCH_REF` called `stSwitches`: track 0 on at 2000..3000 moving positive, at
+/// 2500..3000 moving negative and at 4000..1000 across the wrap; track 1 for 1350 ms from 3000.
+pub const T12_SWITCHES: &str = "stSwitches.NumberOfSwitches := 4;
+stSwitches.Switch[0].TrackNumber := 0;
+stSwitches.Switch[0].FirstOnPosition := 2000.0;
+stSwitches.Switch[0].LastOnPosition := 3000.0;
+stSwitches.Switch[0].AxisDirection := 1;
+stSwitches.Switch[1].TrackNumber := 0;
+stSwitches.Switch[1].FirstOnPosition := 2500.0;
+stSwitches.Switch[1].LastOnPosition := 3000.0;
+stSwitches.Switch[1].AxisDirection := 2;
+stSwitches.Switch[2].TrackNumber := 0;
+stSwitches.Switch[2].FirstOnPosition := 4000.0;
+stSwitches.Switch[2].LastOnPosition := 1000.0;
+stSwitches.Switch[3].TrackNumber := 1;
+stSwitches.Switch[3].FirstOnPosition := 3000.0;
+stSwitches.Switch[3].CamSwitchMode := 1;
+stSwitches.Switch[3].Duration := T#1350MS;
+";
+
 /// A linear virtual axis in `MotionTask`, limits generous enough for the examples.
 pub fn linear_axis(name: &str) -> String {
     format!(

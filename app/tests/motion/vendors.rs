@@ -7,7 +7,8 @@
 use serde_json::Value;
 
 use crate::support::{
-    add_cam, assert_near, boolean, linear_axis, modulo_axis, number, project, simulate,
+    T12_SWITCHES, add_cam, assert_near, boolean, linear_axis, modulo_axis, number, project,
+    simulate,
 };
 
 /// A cam of segments from (0, 0) with slope `start_slope`: each segment is (law, master end,
@@ -1430,23 +1431,8 @@ fn omron_digital_cam_switch_table_moving_negative_4000_3000_2500_1000_and_1350_m
             ("aEdges0", "ARRAY[1..8] OF LREAL"),
             ("aEdges1", "ARRAY[1..8] OF LREAL"),
         ],
-        "stSwitches.NumberOfSwitches := 4;
-stSwitches.Switch[0].TrackNumber := 0;
-stSwitches.Switch[0].FirstOnPosition := 2000.0;
-stSwitches.Switch[0].LastOnPosition := 3000.0;
-stSwitches.Switch[0].AxisDirection := 1;
-stSwitches.Switch[1].TrackNumber := 0;
-stSwitches.Switch[1].FirstOnPosition := 2500.0;
-stSwitches.Switch[1].LastOnPosition := 3000.0;
-stSwitches.Switch[1].AxisDirection := 2;
-stSwitches.Switch[2].TrackNumber := 0;
-stSwitches.Switch[2].FirstOnPosition := 4000.0;
-stSwitches.Switch[2].LastOnPosition := 1000.0;
-stSwitches.Switch[3].TrackNumber := 1;
-stSwitches.Switch[3].FirstOnPosition := 3000.0;
-stSwitches.Switch[3].CamSwitchMode := 1;
-stSwitches.Switch[3].Duration := T#1350MS;
-fbPower(Axis := Table, Enable := TRUE);
+        &format!(
+            "{T12_SWITCHES}fbPower(Axis := Table, Enable := TRUE);
 fbTurn(Axis := Table, Execute := fbPower.Status, Velocity := 1000.0, Acceleration := 20000.0,
     Deceleration := 20000.0, Direction := MC_DIRECTION.negative);
 fbSwitch(Axis := Table, Switches := stSwitches, Outputs := stOutputs, TrackOptions := stTracks,
@@ -1460,7 +1446,8 @@ IF stOutputs.Output[1] <> xLast1 AND iEdge1 < 8 THEN
     iEdge1 := iEdge1 + 1;
     aEdges1[iEdge1] := Table.fSetPosition;
 END_IF
-xLast1 := stOutputs.Output[1];",
+xLast1 := stOutputs.Output[1];"
+        ),
     );
     // 4.5 s at 1000 u/s from 0 backwards: the table ends near 500.
     let mut watch = vec![
