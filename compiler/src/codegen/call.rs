@@ -5,11 +5,12 @@ use program_image::{Instr, Operand, Transfer};
 use project_model::{Pou, PouKind, VarSection};
 
 use super::body::{BodyGen, Frame, FrameVar, Gen, Place, Typed};
-use super::expr::tokens;
+use super::expr::written;
 use super::layout::LayShape;
 use crate::sema::scope::{GlobalSymbol, LocalSymbol};
 use crate::sema::ty::Type;
-use crate::syntax::{SyntaxKind, SyntaxNode};
+use crate::syntax::SyntaxKind;
+use crate::syntax::ast::{ArgKind, CallExpr, Expr};
 
 /// One argument of a call: its formal name if given, whether it is an output (`=>`), and its
 /// expression.
@@ -17,29 +18,16 @@ use crate::syntax::{SyntaxKind, SyntaxNode};
 pub(crate) struct Argument {
     pub(crate) formal: Option<String>,
     pub(crate) output: bool,
-    pub(crate) value: Option<SyntaxNode>,
+    pub(crate) value: Option<Expr>,
 }
 
 /// The arguments of a call expression, in order.
-pub(crate) fn arguments(node: &SyntaxNode) -> Vec<Argument> {
-    let Some(list) = node.children().find(|c| c.kind() == SyntaxKind::ARG_LIST) else {
-        return Vec::new();
-    };
-    list.children()
-        .filter(|c| c.kind() == SyntaxKind::ARG)
-        .map(|argument| {
-            let parts: Vec<_> = tokens(&argument).collect();
-            let arrow = parts
-                .iter()
-                .position(|t| matches!(t.kind(), SyntaxKind::ASSIGN | SyntaxKind::OUTPUT_ASSIGN));
-            let formal =
-                arrow.and_then(|at| Some(parts.get(at.checked_sub(1)?)?.text().to_owned()));
-            let output = arrow.is_some_and(|at| parts[at].kind() == SyntaxKind::OUTPUT_ASSIGN);
-            Argument {
-                formal,
-                output,
-                value: argument.children().next(),
-            }
+pub(crate) fn arguments(node: &CallExpr) -> Vec<Argument> {
+    node.args()
+        .map(|argument| Argument {
+            formal: argument.name().map(|name| name.text().to_owned()),
+            output: argument.kind() == ArgKind::Output,
+            value: argument.value(),
         })
         .collect()
 }
@@ -77,7 +65,7 @@ enum Callee<'p> {
     Virtual {
         interface: &'p Pou,
         name: String,
-        base: SyntaxNode,
+        base: Expr,
     },
     /// A standard function.
     Standard(String),
@@ -85,7 +73,7 @@ enum Callee<'p> {
 
 impl<'p> BodyGen<'_, '_, 'p> {
     /// `name;` or `fb.Action;` without parentheses.
-    pub(crate) fn call_without_arguments(&mut self, node: &SyntaxNode) -> Gen<()> {
+    pub(crate) fn call_without_arguments(&mut self, node: &Expr) -> Gen<()> {
         let callee = self.callee(node)?;
         self.call_callee(callee, &[], None).map(|_| ())
     }
@@ -93,10 +81,10 @@ impl<'p> BodyGen<'_, '_, 'p> {
     /// A call; its result when it has one.
     pub(crate) fn call(
         &mut self,
-        node: &SyntaxNode,
+        node: &CallExpr,
         want: Option<&Type>,
     ) -> Gen<Option<(Operand, Type)>> {
-        let callee_node = node.children().next().ok_or("a call of nothing")?;
+        let callee_node = node.callee().ok_or("a call of nothing")?;
         let all = arguments(node);
         let named = |name: &str| {
             all.iter()
@@ -165,7 +153,7 @@ impl<'p> BodyGen<'_, '_, 'p> {
         &mut self,
         callee: Callee<'p>,
         args: &[Argument],
-        node: Option<(&SyntaxNode, Option<&Type>)>,
+        node: Option<(&CallExpr, Option<&Type>)>,
     ) -> Gen<Option<(Operand, Type)>> {
         match callee {
             Callee::Function(pou) => {
@@ -244,23 +232,11 @@ impl<'p> BodyGen<'_, '_, 'p> {
         }
     }
 
-    fn callee(&mut self, node: &SyntaxNode) -> Gen<Callee<'p>> {
-        if node.kind() == SyntaxKind::NAME_EXPR {
-            let parts: Vec<_> = tokens(node).collect();
-            let global_only = parts.first().is_some_and(|t| t.kind() == SyntaxKind::DOT);
-            let name = parts
-                .iter()
-                .find(|t| {
-                    matches!(
-                        t.kind(),
-                        SyntaxKind::IDENT
-                            | SyntaxKind::MOD
-                            | SyntaxKind::AND
-                            | SyntaxKind::OR
-                            | SyntaxKind::XOR
-                            | SyntaxKind::NOT
-                    )
-                })
+    fn callee(&mut self, node: &Expr) -> Gen<Callee<'p>> {
+        if let Expr::NameExpr(name_expr) = node {
+            let global_only = name_expr.is_global();
+            let name = name_expr
+                .name()
                 .map(|t| t.text().to_owned())
                 .ok_or("a call without a name")?;
             let local = if global_only {
@@ -309,11 +285,15 @@ impl<'p> BodyGen<'_, '_, 'p> {
                 },
             }
         }
-        if node.kind() == SyntaxKind::FIELD_EXPR
-            && let Some(base) = node.children().next()
-            && let Some(member) = tokens(node)
-                .filter(|t| t.kind() == SyntaxKind::IDENT)
-                .last()
+        let field = match node {
+            Expr::FieldExpr(field) => Some(field),
+            _ => None,
+        };
+        let base_and_member = field.and_then(|field| {
+            let member = field.member().filter(|t| t.kind() == SyntaxKind::IDENT)?;
+            Some((field.base()?, member))
+        });
+        if let Some((base, member)) = base_and_member.clone()
             && let Some(interface) = self.interface_of(&self.type_of(&base))
         {
             return Ok(Callee::Virtual {
@@ -322,11 +302,7 @@ impl<'p> BodyGen<'_, '_, 'p> {
                 base,
             });
         }
-        if node.kind() == SyntaxKind::FIELD_EXPR
-            && let Some(base) = node.children().next()
-            && let Some(member) = tokens(node)
-                .filter(|t| t.kind() == SyntaxKind::IDENT)
-                .last()
+        if let Some((base, member)) = base_and_member
             && let Type::Named(type_name) = self.type_of(&base)
             && let Some(pou) = self.scope.globals.pou(&type_name)
             && pou.kind != PouKind::Function
@@ -362,10 +338,7 @@ impl<'p> BodyGen<'_, '_, 'p> {
         let typed = self.place(node)?;
         match typed.lay.shape {
             LayShape::Pou(_) | LayShape::Std(..) => Ok(Callee::Instance(typed)),
-            _ => Err(format!(
-                "'{}' cannot be called",
-                node.text().to_string().trim()
-            )),
+            _ => Err(format!("'{}' cannot be called", written(node))),
         }
     }
 

@@ -9,12 +9,12 @@ use super::layout::{Lay, LayShape, located_of};
 use crate::elementary::Elementary;
 use crate::sema::scope::{GlobalSymbol, LocalSymbol};
 use crate::sema::ty::{Type, common_type};
-use crate::syntax::{SyntaxKind, SyntaxNode, SyntaxToken};
+use crate::syntax::SyntaxKind;
+use crate::syntax::ast::{AstNode, BinaryExpr, Expr, FieldExpr, IndexExpr, NameExpr, UnaryExpr};
 
-pub(crate) fn tokens(node: &SyntaxNode) -> impl Iterator<Item = SyntaxToken> {
-    node.children_with_tokens()
-        .filter_map(|element| element.into_token())
-        .filter(|token| !token.kind().is_trivia())
+/// The text of an expression as written, for messages.
+pub(crate) fn written(node: &Expr) -> String {
+    node.syntax().text().to_string().trim().to_owned()
 }
 
 /// `op` moved on by `delta` bytes.
@@ -163,7 +163,7 @@ impl BodyGen<'_, '_, '_> {
     }
 
     /// `ADR(x)` and the argument of a VAR_IN_OUT: a pointer to the place `node` names.
-    pub(crate) fn address_of(&mut self, node: &SyntaxNode) -> Gen<Operand> {
+    pub(crate) fn address_of(&mut self, node: &Expr) -> Gen<Operand> {
         let typed = self.place(node)?;
         self.pointer_to(&typed)
     }
@@ -199,17 +199,17 @@ impl BodyGen<'_, '_, '_> {
     }
 
     /// The place an expression names.
-    pub(crate) fn place(&mut self, node: &SyntaxNode) -> Gen<Typed> {
-        match node.kind() {
-            SyntaxKind::PAREN_EXPR => {
-                let inner = node.children().next().ok_or("empty parentheses")?;
+    pub(crate) fn place(&mut self, node: &Expr) -> Gen<Typed> {
+        match node {
+            Expr::ParenExpr(paren) => {
+                let inner = paren.inner().ok_or("empty parentheses")?;
                 self.place(&inner)
             }
-            SyntaxKind::NAME_EXPR => self.name_place(node),
-            SyntaxKind::FIELD_EXPR => self.field_place(node),
-            SyntaxKind::INDEX_EXPR => self.index_place(node),
-            SyntaxKind::DEREF_EXPR => {
-                let base = node.children().next().ok_or("nothing to dereference")?;
+            Expr::NameExpr(name) => self.name_place(name),
+            Expr::FieldExpr(field) => self.field_place(field),
+            Expr::IndexExpr(index) => self.index_place(index),
+            Expr::DerefExpr(deref) => {
+                let base = deref.base().ok_or("nothing to dereference")?;
                 let (pointer, ty) = self.expr(&base, None)?;
                 let target = match ty {
                     Type::Pointer(target) | Type::Reference(target) => *target,
@@ -217,9 +217,9 @@ impl BodyGen<'_, '_, '_> {
                 };
                 self.typed(Place::Indirect(pointer), target)
             }
-            SyntaxKind::ADDRESS_EXPR => {
-                let text = tokens(node)
-                    .next()
+            Expr::AddressExpr(address) => {
+                let text = address
+                    .address()
                     .map(|t| t.text().to_owned())
                     .unwrap_or_default();
                 let variable = project_model::Variable {
@@ -232,17 +232,14 @@ impl BodyGen<'_, '_, '_> {
                 let place = located_place(located);
                 self.typed(place, ty)
             }
-            _ => Err(format!(
-                "'{}' is not a variable",
-                node.text().to_string().trim()
-            )),
+            _ => Err(format!("'{}' is not a variable", written(node))),
         }
     }
 
     /// The variable called `name` in this body's scope (an SFC boolean action).
     pub(crate) fn variable_named(&mut self, name: &str) -> Gen<Typed> {
         let node = crate::sema::constant::parse_expression(name)
-            .filter(|n| n.kind() == SyntaxKind::NAME_EXPR)
+            .and_then(|n| NameExpr::cast(n.syntax().clone()))
             .ok_or_else(|| format!("'{name}' is neither an action nor a variable"))?;
         let typed = self.name_place(&node)?;
         if typed.ty != Type::BOOL {
@@ -254,12 +251,11 @@ impl BodyGen<'_, '_, '_> {
         Ok(typed)
     }
 
-    fn name_place(&mut self, node: &SyntaxNode) -> Gen<Typed> {
-        let mut parts = tokens(node);
-        let first = parts.next().ok_or("an empty name")?;
+    fn name_place(&mut self, node: &NameExpr) -> Gen<Typed> {
+        let first = node.first_token().ok_or("an empty name")?;
         let (token, global_only) = match first.kind() {
             SyntaxKind::IDENT => (first, false),
-            SyntaxKind::DOT => (parts.next().ok_or("a name after '.'")?, true),
+            SyntaxKind::DOT => (node.ident().ok_or("a name after '.'")?, true),
             SyntaxKind::THIS => {
                 return Err("THIS is not supported by the code generator yet".to_owned());
             }
@@ -349,21 +345,13 @@ impl BodyGen<'_, '_, '_> {
         }
     }
 
-    fn field_place(&mut self, node: &SyntaxNode) -> Gen<Typed> {
-        let base = node.children().next().ok_or("a member of nothing")?;
-        let member = tokens(node)
-            .filter(|t| {
-                matches!(
-                    t.kind(),
-                    SyntaxKind::IDENT | SyntaxKind::INT_NUMBER | SyntaxKind::DIRECT_ADDRESS
-                )
-            })
-            .last()
-            .ok_or("a member without a name")?;
+    fn field_place(&mut self, node: &FieldExpr) -> Gen<Typed> {
+        let base = node.base().ok_or("a member of nothing")?;
+        let member = node.member().ok_or("a member without a name")?;
         let member_name = member.text().to_owned();
         match self.type_of(&base) {
             Type::Namespace(_) => {
-                let gvl = base.text().to_string();
+                let gvl = base.syntax().text().to_string();
                 let variable = self
                     .build
                     .gvl_variable(gvl.trim(), &member_name)
@@ -378,7 +366,7 @@ impl BodyGen<'_, '_, '_> {
             }
             Type::Step => {
                 // `Step.X` (active) and `Step.T` (elapsed time) of a textual SFC step.
-                let step_name = base.text().to_string().trim().to_owned();
+                let step_name = written(&base);
                 let sfc = self
                     .instance
                     .as_ref()
@@ -524,10 +512,9 @@ impl BodyGen<'_, '_, '_> {
         })
     }
 
-    fn index_place(&mut self, node: &SyntaxNode) -> Gen<Typed> {
-        let mut children = node.children();
-        let base_node = children.next().ok_or("an index of nothing")?;
-        let indices: Vec<SyntaxNode> = children.collect();
+    fn index_place(&mut self, node: &IndexExpr) -> Gen<Typed> {
+        let base_node = node.base().ok_or("an index of nothing")?;
+        let indices: Vec<Expr> = node.indices().collect();
         let base = self.place(&base_node)?;
         if let LayShape::OpenArray {
             element,
@@ -571,10 +558,7 @@ impl BodyGen<'_, '_, '_> {
             dims,
         } = base.lay.shape.clone()
         else {
-            return Err(format!(
-                "'{}' is not an array",
-                base_node.text().to_string().trim()
-            ));
+            return Err(format!("'{}' is not an array", written(&base_node)));
         };
         if dims.len() != indices.len() {
             return Err(format!(
@@ -639,7 +623,7 @@ impl BodyGen<'_, '_, '_> {
     }
 
     /// Evaluates `node` into an operand of exactly type `target`.
-    pub(crate) fn expr_as(&mut self, node: &SyntaxNode, target: &Type) -> Gen<Operand> {
+    pub(crate) fn expr_as(&mut self, node: &Expr, target: &Type) -> Gen<Operand> {
         if self.interface_of(target).is_some() {
             return self.interface_value(node, target);
         }
@@ -694,16 +678,17 @@ impl BodyGen<'_, '_, '_> {
     }
 
     /// Evaluates an expression; the type returned is concrete (never a literal's).
-    pub(crate) fn expr(&mut self, node: &SyntaxNode, want: Option<&Type>) -> Gen<(Operand, Type)> {
+    pub(crate) fn expr(&mut self, node: &Expr, want: Option<&Type>) -> Gen<(Operand, Type)> {
         let checked = self.type_of(node);
-        match node.kind() {
-            SyntaxKind::PAREN_EXPR => {
-                let inner = node.children().next().ok_or("empty parentheses")?;
+        match node {
+            Expr::ParenExpr(paren) => {
+                let inner = paren.inner().ok_or("empty parentheses")?;
                 self.expr(&inner, want)
             }
-            SyntaxKind::LITERAL | SyntaxKind::TYPED_LITERAL => self.literal(node, &checked, want),
-            SyntaxKind::NAME_EXPR | SyntaxKind::FIELD_EXPR => {
-                if let Some(first) = tokens(node).next()
+            Expr::Literal(_) | Expr::TypedLiteral(_) => self.literal(node, &checked, want),
+            Expr::NameExpr(_) | Expr::FieldExpr(_) => {
+                if let Expr::NameExpr(name) = node
+                    && let Some(first) = name.first_token()
                     && matches!(first.kind(), SyntaxKind::THIS | SyntaxKind::SUPER)
                 {
                     // THIS and SUPER are pointers to the running instance.
@@ -730,52 +715,55 @@ impl BodyGen<'_, '_, '_> {
                 let operand = self.load(&typed)?;
                 Ok((operand, typed.ty))
             }
-            SyntaxKind::INDEX_EXPR | SyntaxKind::DEREF_EXPR | SyntaxKind::ADDRESS_EXPR => {
+            Expr::IndexExpr(_) | Expr::DerefExpr(_) | Expr::AddressExpr(_) => {
                 let typed = self.place(node)?;
                 let operand = self.load(&typed)?;
                 Ok((operand, typed.ty))
             }
-            SyntaxKind::UNARY_EXPR => self.unary(node, &checked, want),
-            SyntaxKind::BINARY_EXPR => self.binary(node, &checked, want),
-            SyntaxKind::CALL_EXPR => self
-                .call(node, want)?
-                .ok_or_else(|| format!("'{}' gives no value", node.text().to_string().trim())),
-            _ => Err(format!(
-                "cannot compile the expression '{}'",
-                node.text().to_string().trim()
-            )),
+            Expr::UnaryExpr(unary) => self.unary(unary, &checked, want),
+            Expr::BinaryExpr(binary) => self.binary(binary, &checked, want),
+            Expr::CallExpr(call) => self
+                .call(call, want)?
+                .ok_or_else(|| format!("'{}' gives no value", written(node))),
+            Expr::ArrayInit(_) | Expr::ErrorNode(_) => {
+                Err(format!("cannot compile the expression '{}'", written(node)))
+            }
         }
     }
 
     /// Whether a name or member expression names an enumeration value rather than a variable.
-    fn is_enum_value(&self, node: &SyntaxNode) -> bool {
-        let Some(name) = tokens(node)
-            .filter(|t| t.kind() == SyntaxKind::IDENT)
-            .last()
-        else {
-            return false;
-        };
-        if node.kind() == SyntaxKind::FIELD_EXPR {
-            return node
-                .children()
-                .next()
-                .is_some_and(|base| matches!(self.type_of(&base), Type::EnumNamespace(_)));
+    fn is_enum_value(&self, node: &Expr) -> bool {
+        match node {
+            Expr::FieldExpr(field) => {
+                field
+                    .member()
+                    .is_some_and(|t| t.kind() == SyntaxKind::IDENT)
+                    && field
+                        .base()
+                        .is_some_and(|base| matches!(self.type_of(&base), Type::EnumNamespace(_)))
+            }
+            Expr::NameExpr(name_expr) => {
+                let Some(name) = name_expr.ident() else {
+                    return false;
+                };
+                self.scope.local(name.text()).is_none()
+                    && matches!(
+                        self.scope.globals.lookup(name.text()),
+                        Some(GlobalSymbol::EnumValue(_))
+                    )
+            }
+            _ => false,
         }
-        self.scope.local(name.text()).is_none()
-            && matches!(
-                self.scope.globals.lookup(name.text()),
-                Some(GlobalSymbol::EnumValue(_))
-            )
     }
 
     fn literal(
         &mut self,
-        node: &SyntaxNode,
+        node: &Expr,
         checked: &Type,
         want: Option<&Type>,
     ) -> Gen<(Operand, Type)> {
         let value = evaluate_node(node, self.scope.globals)
-            .ok_or_else(|| format!("'{}' is not a constant", node.text().to_string().trim()))?;
+            .ok_or_else(|| format!("'{}' is not a constant", written(node)))?;
         let ty = match (checked, want) {
             (Type::String { wide, .. }, Some(Type::String { wide: w, length })) if wide == w => {
                 Type::String {
@@ -799,17 +787,14 @@ impl BodyGen<'_, '_, '_> {
         let bytes = match (&lay.shape, &value) {
             (LayShape::Scalar(e) | LayShape::Enum(e), _) => {
                 let raw = raw_of(&value, *e)
-                    .ok_or_else(|| format!("'{}' is not a {ty}", node.text().to_string().trim()))?;
+                    .ok_or_else(|| format!("'{}' is not a {ty}", written(node)))?;
                 raw.to_le_bytes()[..e.size_bytes() as usize].to_vec()
             }
             (LayShape::Text { wide, length }, Value::Text(chars)) => {
                 text_bytes(chars, *wide, *length)
             }
             _ => {
-                return Err(format!(
-                    "'{}' is not a {ty}",
-                    node.text().to_string().trim()
-                ));
+                return Err(format!("'{}' is not a {ty}", written(node)));
             }
         };
         Ok((self.build.constant(&bytes), ty))
@@ -817,12 +802,13 @@ impl BodyGen<'_, '_, '_> {
 
     fn unary(
         &mut self,
-        node: &SyntaxNode,
+        unary: &UnaryExpr,
         checked: &Type,
         want: Option<&Type>,
     ) -> Gen<(Operand, Type)> {
-        let operator = tokens(node).next().ok_or("an operator")?.kind();
-        let operand_node = node.children().next().ok_or("an operand")?;
+        let node = &Expr::UnaryExpr(unary.clone());
+        let operator = unary.op().ok_or("an operator")?.kind();
+        let operand_node = unary.operand().ok_or("an operand")?;
         if matches!(checked, Type::IntLiteral(_) | Type::RealLiteral)
             && operator == SyntaxKind::MINUS
         {
@@ -857,15 +843,15 @@ impl BodyGen<'_, '_, '_> {
 
     fn binary(
         &mut self,
-        node: &SyntaxNode,
+        binary: &BinaryExpr,
         checked: &Type,
         want: Option<&Type>,
     ) -> Gen<(Operand, Type)> {
-        let mut operands = node.children();
-        let (Some(left), Some(right)) = (operands.next(), operands.next()) else {
+        let node = &Expr::BinaryExpr(binary.clone());
+        let (Some(left), Some(right)) = (binary.lhs(), binary.rhs()) else {
             return Err("an operator needs two operands".to_owned());
         };
-        let operator = tokens(node).next().ok_or("an operator")?.kind();
+        let operator = binary.op().ok_or("an operator")?.kind();
         use SyntaxKind as K;
         let compare = match operator {
             K::EQ => Some(CompareOp::Eq),
@@ -985,7 +971,7 @@ impl BodyGen<'_, '_, '_> {
         }
         let scalar = self
             .scalar_of(&ty)
-            .ok_or_else(|| format!("'{}' on {ty}", node.text().to_string().trim()))?;
+            .ok_or_else(|| format!("'{}' on {ty}", written(node)))?;
         let a = self.expr_as(&left, &ty)?;
         let b = self.expr_as(&right, &ty)?;
         let dst = self.temp(scalar.size_bytes());
@@ -1003,8 +989,8 @@ impl BodyGen<'_, '_, '_> {
     fn compare_strings(
         &mut self,
         op: CompareOp,
-        left: &SyntaxNode,
-        right: &SyntaxNode,
+        left: &Expr,
+        right: &Expr,
         wide: bool,
     ) -> Gen<(Operand, Type)> {
         let mut args = Vec::new();
@@ -1050,7 +1036,7 @@ impl BodyGen<'_, '_, '_> {
 
     /// The descriptor of the array `node` names, for a VAR_IN_OUT with open bounds: a pointer
     /// to it and its bounds (an open array passed on gives its own descriptor).
-    pub(crate) fn open_array_descriptor(&mut self, node: &SyntaxNode, lay: &Lay) -> Gen<Operand> {
+    pub(crate) fn open_array_descriptor(&mut self, node: &Expr, lay: &Lay) -> Gen<Operand> {
         let typed = self.place(node)?;
         if let LayShape::OpenArray { .. } = typed.lay.shape {
             return match typed.place {

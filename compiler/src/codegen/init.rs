@@ -5,7 +5,8 @@ use program_image::TypeDef;
 
 use super::constant::{Value, evaluate_node, raw_of, text_bytes};
 use super::layout::{Lay, LayShape, Layouts};
-use crate::syntax::{SyntaxKind, SyntaxNode, parse_declaration_part};
+use crate::syntax::ast::{AstNode, Expr, InitValue, Initializer};
+use crate::syntax::parse_declaration_part;
 
 impl Layouts<'_, '_> {
     /// The bytes of a value of layout `lay` initialised with `initial` (the text after `:=`),
@@ -21,8 +22,8 @@ impl Layouts<'_, '_> {
             let value = parse
                 .syntax()
                 .descendants()
-                .find(|n| n.kind() == SyntaxKind::INITIALIZER)
-                .and_then(|n| n.children().next())
+                .find_map(Initializer::cast)
+                .and_then(|initializer| initializer.value())
                 .ok_or_else(|| format!("the initial value '{text}' is not an expression"))?;
             self.apply(&mut bytes, lay, &value)?;
         }
@@ -79,23 +80,18 @@ impl Layouts<'_, '_> {
         Ok(bytes)
     }
 
-    fn apply(&mut self, bytes: &mut [u8], lay: &Lay, node: &SyntaxNode) -> Result<(), String> {
-        match (node.kind(), &lay.shape) {
-            (SyntaxKind::ARRAY_INIT, LayShape::Array { element, .. }) => {
+    fn apply(&mut self, bytes: &mut [u8], lay: &Lay, node: &InitValue) -> Result<(), String> {
+        match (node, &lay.shape) {
+            (InitValue::Expr(Expr::ArrayInit(array)), LayShape::Array { element, .. }) => {
                 let size = element.size as usize;
                 let count = bytes.len() / size.max(1);
                 let mut index = 0usize;
-                for child in node.children() {
-                    let (repeat, value) = if child.kind() == SyntaxKind::REPEAT_INIT {
-                        let times = child
-                            .children_with_tokens()
-                            .filter_map(|e| e.into_token())
-                            .find(|t| t.kind() == SyntaxKind::INT_NUMBER)
-                            .and_then(|t| t.text().parse::<usize>().ok())
-                            .unwrap_or(0);
-                        (times, child.children().next())
-                    } else {
-                        (1, Some(child))
+                for child in array.elements() {
+                    let (repeat, value) = match child {
+                        InitValue::Repeat(repeated) => {
+                            (repeated.count().unwrap_or(0), repeated.value())
+                        }
+                        other => (1, Some(other)),
                     };
                     for _ in 0..repeat {
                         if index >= count {
@@ -111,18 +107,10 @@ impl Layouts<'_, '_> {
                 }
                 Ok(())
             }
-            (SyntaxKind::STRUCT_INIT, LayShape::Struct(_) | LayShape::Pou(_)) => {
-                for field in node
-                    .children()
-                    .filter(|c| c.kind() == SyntaxKind::FIELD_INIT)
-                {
-                    let name = field
-                        .children()
-                        .find(|c| c.kind() == SyntaxKind::NAME)
-                        .map(|n| n.text().to_string().trim().to_owned())
-                        .unwrap_or_default();
-                    let Some(value) = field.children().find(|c| c.kind() != SyntaxKind::NAME)
-                    else {
+            (InitValue::Struct(structure), LayShape::Struct(_) | LayShape::Pou(_)) => {
+                for field in structure.fields() {
+                    let name = field.name().map(|name| name.text()).unwrap_or_default();
+                    let Some(value) = field.value() else {
                         continue;
                     };
                     let (offset, member) = self.member_of(lay, &name)?;
@@ -135,10 +123,14 @@ impl Layouts<'_, '_> {
                 Ok(())
             }
             _ => {
-                let value = evaluate_node(node, self.globals).ok_or_else(|| {
+                let value = match node {
+                    InitValue::Expr(expr) => evaluate_node(expr, self.globals),
+                    InitValue::Struct(_) | InitValue::Repeat(_) => None,
+                };
+                let value = value.ok_or_else(|| {
                     format!(
                         "'{}' is not a constant value",
-                        node.text().to_string().trim()
+                        node.syntax().text().to_string().trim()
                     )
                 })?;
                 let written = match (&lay.shape, &value) {
@@ -152,7 +144,7 @@ impl Layouts<'_, '_> {
                 let written = written.ok_or_else(|| {
                     format!(
                         "'{}' is not a value of this type",
-                        node.text().to_string().trim()
+                        node.syntax().text().to_string().trim()
                     )
                 })?;
                 put(bytes, 0, &written);

@@ -11,7 +11,7 @@ use super::expr::shifted;
 use super::layout::LayShape;
 use crate::sema::scope::inheritance_chain;
 use crate::sema::ty::Type;
-use crate::syntax::SyntaxNode;
+use crate::syntax::ast::Expr;
 
 impl<'p> BodyGen<'_, '_, 'p> {
     /// The interface `ty` names, if it names one.
@@ -52,7 +52,7 @@ impl<'p> BodyGen<'_, '_, 'p> {
 
     /// An interface value for `node`: an instance of a function block that implements it, the
     /// literal 0 (no instance), or another interface value.
-    pub(crate) fn interface_value(&mut self, node: &SyntaxNode, interface: &Type) -> Gen<Operand> {
+    pub(crate) fn interface_value(&mut self, node: &Expr, interface: &Type) -> Gen<Operand> {
         let checked = self.type_of(node);
         if let Type::IntLiteral(Some(0)) = checked {
             return Ok(self.build.constant(&[0; 16]));
@@ -95,7 +95,7 @@ impl<'p> BodyGen<'_, '_, 'p> {
         &mut self,
         interface: &'p Pou,
         method_name: &str,
-        base: &SyntaxNode,
+        base: &Expr,
         args: &[Argument],
     ) -> Gen<Option<(Operand, Type)>> {
         let declared = interface

@@ -9,7 +9,7 @@ use super::expr::concrete;
 use super::layout::LayShape;
 use crate::elementary::Elementary;
 use crate::sema::ty::Type;
-use crate::syntax::SyntaxNode;
+use crate::syntax::ast::{CallExpr, Expr};
 
 /// The operation of a date and time function, if `name` is one.
 fn time_arithmetic(name: &str) -> Option<BinaryOp> {
@@ -42,9 +42,9 @@ fn formal_order(name: &str) -> &'static [&'static str] {
 
 impl BodyGen<'_, '_, '_> {
     /// The argument expressions in positional order (formal arguments put in their place).
-    fn ordered(&self, name: &str, args: &[Argument]) -> Gen<Vec<SyntaxNode>> {
+    fn ordered(&self, name: &str, args: &[Argument]) -> Gen<Vec<Expr>> {
         let order = formal_order(name);
-        let mut placed: Vec<(usize, SyntaxNode)> = Vec::new();
+        let mut placed: Vec<(usize, Expr)> = Vec::new();
         for (position, arg) in args.iter().enumerate() {
             let Some(value) = arg.value.clone() else {
                 continue;
@@ -84,13 +84,13 @@ impl BodyGen<'_, '_, '_> {
     pub(crate) fn call_standard(
         &mut self,
         name: &str,
-        node: &SyntaxNode,
+        node: &CallExpr,
         args: &[Argument],
         want: Option<&Type>,
     ) -> Gen<Option<(Operand, Type)>> {
         let upper = name.to_ascii_uppercase();
         let values = self.ordered(&upper, args)?;
-        let result_ty = match self.type_of(node) {
+        let result_ty = match self.type_of(&Expr::CallExpr(node.clone())) {
             // A generic result (`INT_TO_BCD` gives ANY_BIT) takes the type of where it goes.
             Type::Generic(_) | Type::Error => {
                 want.cloned().unwrap_or(Type::Elementary(Elementary::Word))
@@ -405,7 +405,7 @@ impl BodyGen<'_, '_, '_> {
     fn time_arithmetic(
         &mut self,
         op: BinaryOp,
-        values: &[SyntaxNode],
+        values: &[Expr],
         result_ty: &Type,
     ) -> Gen<(Operand, Type)> {
         let [a, b] = values else {
@@ -548,7 +548,7 @@ impl BodyGen<'_, '_, '_> {
     fn string_function(
         &mut self,
         name: &str,
-        values: &[SyntaxNode],
+        values: &[Expr],
         result_ty: &Type,
     ) -> Gen<(Operand, Type)> {
         let function = match name {
