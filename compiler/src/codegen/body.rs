@@ -7,8 +7,10 @@ use std::rc::Rc;
 use program_image::{Elementary as IE, Instr, LineEntry, Operand};
 use project_model::{Pou, Variable};
 
+use super::error::{CodegenError, fail};
 use super::layout::{Instance, Lay, LayShape};
 use super::program::Build;
+use crate::origin::Origin;
 use crate::sema::scope::Scope;
 use crate::sema::ty::Type;
 use crate::syntax::SyntaxNode;
@@ -16,8 +18,8 @@ use crate::syntax::ast::{
     AstNode, CaseLabel, CaseStmt, Expr, ForStmt, IfStmt, StatementList, Stmt,
 };
 
-/// A result of code generation: a message saying what cannot be compiled.
-pub(crate) type Gen<T> = Result<T, String>;
+/// A result of code generation: an error saying what cannot be compiled, and where.
+pub(crate) type Gen<T> = Result<T, CodegenError>;
 
 /// Where a value is.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -102,7 +104,7 @@ pub(crate) struct BodyGen<'b, 'g, 'p> {
 /// The lower-case name of a label or of the label a JMP names.
 fn label_name(name: Option<String>) -> Gen<String> {
     name.map(|name| name.to_lowercase())
-        .ok_or_else(|| "a label without a name".to_owned())
+        .ok_or_else(|| "a label without a name".into())
 }
 
 impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
@@ -230,7 +232,7 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
             let target = *self
                 .labels
                 .get(&name)
-                .ok_or_else(|| format!("JMP to '{name}', which is no label of this body"))?;
+                .ok_or_else(|| fail!("JMP to '{name}', which is no label of this body"))?;
             self.patch(at, target);
         }
         Ok(())
@@ -264,13 +266,9 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
                 line,
             });
         }
-        let result = self.statement(statement).map_err(|message| {
-            if message.starts_with("line ") {
-                message
-            } else {
-                format!("line {line}: {message}")
-            }
-        });
+        let result = self
+            .statement(statement)
+            .map_err(|error| error.in_statement(line, Origin::of_node(node)));
         self.temp_top = mark;
         result
     }
@@ -373,7 +371,7 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
                 let exit = matches!(statement, Stmt::ExitStmt(_));
                 let at = self.emit(Instr::Jump { target: 0 });
                 let Some(current) = self.loops.last_mut() else {
-                    return Err(format!(
+                    return Err(fail!(
                         "{} outside a loop",
                         if exit { "EXIT" } else { "CONTINUE" }
                     ));
@@ -394,7 +392,7 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
                 let name = label_name(label.name().map(|name| name.text()))?;
                 let here = self.here();
                 if self.labels.insert(name.clone(), here).is_some() {
-                    return Err(format!("the label '{name}' is declared twice"));
+                    return Err(fail!("the label '{name}' is declared twice"));
                 }
                 Ok(())
             }
@@ -405,9 +403,9 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
                 Ok(())
             }
             Stmt::StepDecl(_) | Stmt::TransitionDecl(_) => {
-                Err("SFC steps, transitions and actions belong at the top of a body".to_owned())
+                Err("SFC steps, transitions and actions belong at the top of a body".into())
             }
-            Stmt::AttemptAssignStmt(_) => Err("cannot compile a ATTEMPT_ASSIGN_STMT".to_owned()),
+            Stmt::AttemptAssignStmt(_) => Err("cannot compile a ATTEMPT_ASSIGN_STMT".into()),
         }
     }
 
@@ -492,7 +490,7 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
         let (value, ty) = self.expr(&selector, None)?;
         let scalar = self
             .scalar_of(&ty)
-            .ok_or_else(|| format!("a CASE selector of type {ty}"))?;
+            .ok_or_else(|| fail!("a CASE selector of type {ty}"))?;
         // The selector is kept in a temporary so the branches cannot change it.
         let kept = self.temp(8);
         self.emit(Instr::Move {
@@ -576,7 +574,7 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
     fn for_statement(&mut self, stmt: &ForStmt) -> Gen<()> {
         let (Some(variable), Some(start), Some(end)) = (stmt.variable(), stmt.from(), stmt.to())
         else {
-            return Err("a FOR loop needs a variable, a start and an end".to_owned());
+            return Err("a FOR loop needs a variable, a start and an end".into());
         };
         let step_node = stmt.by();
         let counter = self.place(&variable)?;

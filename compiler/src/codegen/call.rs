@@ -5,6 +5,7 @@ use program_image::{Instr, Operand, Transfer};
 use project_model::{Pou, PouKind, VarSection};
 
 use super::body::{BodyGen, Frame, FrameVar, Gen, Place, Typed};
+use super::error::fail;
 use super::expr::written;
 use super::layout::LayShape;
 use crate::sema::scope::{GlobalSymbol, LocalSymbol};
@@ -176,7 +177,7 @@ impl<'p> BodyGen<'_, '_, 'p> {
                     .methods
                     .iter()
                     .find(|m| m.name.eq_ignore_ascii_case(&name))
-                    .ok_or_else(|| format!("'{}' has no method '{name}'", owner.name))?;
+                    .ok_or_else(|| fail!("'{}' has no method '{name}'", owner.name))?;
                 let index = self.build.pou_index(&owner.name, Some(&method.name))?;
                 let instance = match instance {
                     Some(pointer) => pointer,
@@ -207,7 +208,7 @@ impl<'p> BodyGen<'_, '_, 'p> {
                 let (instance, indirect) = match instance {
                     Place::Direct(op) => (op, false),
                     Place::Indirect(pointer) => (pointer, true),
-                    Place::Bit { .. } => return Err("an action of a bit".to_owned()),
+                    Place::Bit { .. } => return Err("an action of a bit".into()),
                 };
                 self.emit(Instr::CallBlock {
                     pou: index,
@@ -226,7 +227,7 @@ impl<'p> BodyGen<'_, '_, 'p> {
                 base,
             } => self.call_virtual(interface, &name, &base, args),
             Callee::Standard(name) => {
-                let (node, want) = node.ok_or_else(|| format!("'{name}' needs arguments"))?;
+                let (node, want) = node.ok_or_else(|| fail!("'{name}' needs arguments"))?;
                 self.call_standard(&name, node, args, want)
             }
         }
@@ -278,7 +279,7 @@ impl<'p> BodyGen<'_, '_, 'p> {
                     }
                     Some(GlobalSymbol::Pou(pou)) if pou.kind == PouKind::Program => {}
                     Some(GlobalSymbol::Pou(pou)) => {
-                        return Err(format!("'{}' is a type; call an instance of it", pou.name));
+                        return Err(fail!("'{}' is a type; call an instance of it", pou.name));
                     }
                     Some(_) => {}
                     None => return Ok(Callee::Standard(name)),
@@ -338,7 +339,7 @@ impl<'p> BodyGen<'_, '_, 'p> {
         let typed = self.place(node)?;
         match typed.lay.shape {
             LayShape::Pou(_) | LayShape::Std(..) => Ok(Callee::Instance(typed)),
-            _ => Err(format!("'{}' cannot be called", written(node))),
+            _ => Err(fail!("'{}' cannot be called", written(node))),
         }
     }
 
@@ -347,7 +348,7 @@ impl<'p> BodyGen<'_, '_, 'p> {
         crate::sema::scope::inheritance_chain(self.scope.globals, self.pou)
             .into_iter()
             .find(|p| p.methods.iter().any(|m| m.name.eq_ignore_ascii_case(name)))
-            .ok_or_else(|| format!("no method '{name}'"))
+            .ok_or_else(|| fail!("no method '{name}'"))
     }
 
     fn action_owner(&self, pou: &'p Pou, name: &str) -> Gen<&'p Pou> {
@@ -358,7 +359,7 @@ impl<'p> BodyGen<'_, '_, 'p> {
         {
             Ok(pou)
         } else {
-            Err(format!("no action '{name}'"))
+            Err(fail!("no action '{name}'"))
         }
     }
 
@@ -417,7 +418,7 @@ impl<'p> BodyGen<'_, '_, 'p> {
                     .copied(),
                 None => positional.get(position).map(|p| **p),
             }
-            .ok_or_else(|| format!("no parameter for argument {}", position + 1))?;
+            .ok_or_else(|| fail!("no parameter for argument {}", position + 1))?;
             let transfer = |caller| Transfer {
                 caller,
                 callee_offset: slot.offset,
@@ -485,7 +486,7 @@ impl<'p> BodyGen<'_, '_, 'p> {
                 .filter(|m| m.input)
                 .map(|m| m.name.to_owned())
                 .collect(),
-            _ => return Err("not an instance".to_owned()),
+            _ => return Err("not an instance".into()),
         };
         let aliases = [
             ("RESET", "R"),
@@ -508,7 +509,7 @@ impl<'p> BodyGen<'_, '_, 'p> {
                 None => input_names
                     .get(position)
                     .cloned()
-                    .ok_or_else(|| format!("no input for argument {}", position + 1))?,
+                    .ok_or_else(|| fail!("no input for argument {}", position + 1))?,
             };
             if arg.output {
                 outputs.push((name, value.clone()));
@@ -530,7 +531,7 @@ impl<'p> BodyGen<'_, '_, 'p> {
         let (instance, indirect) = match typed.place {
             Place::Direct(op) => (op, false),
             Place::Indirect(pointer) => (pointer, true),
-            Place::Bit { .. } => return Err("a bit is no instance".to_owned()),
+            Place::Bit { .. } => return Err("a bit is no instance".into()),
         };
         match &typed.lay.shape {
             LayShape::Pou(name) => {
@@ -576,7 +577,7 @@ impl<'p> BodyGen<'_, '_, 'p> {
             let slot = instance
                 .slot(name)
                 .cloned()
-                .ok_or_else(|| format!("'{pou_name}' has no variable '{name}'"))?;
+                .ok_or_else(|| fail!("'{pou_name}' has no variable '{name}'"))?;
             if slot.by_ref && for_input {
                 let place = self.member_place(typed.place, slot.offset)?;
                 let lay = slot.lay.clone();
@@ -603,13 +604,13 @@ impl<'p> BodyGen<'_, '_, 'p> {
                     .globals
                     .member(type_name, name)
                     .map(|m| m.ty)
-                    .ok_or_else(|| format!("'{type_name}' has no member '{name}'"))?,
-                other => return Err(format!("{other} has no members")),
+                    .ok_or_else(|| fail!("'{type_name}' has no member '{name}'"))?,
+                other => return Err(fail!("{other} has no members")),
             },
         };
         if let Type::Reference(target) = ty {
             let Place::Direct(op) = place else {
-                return Err("a reference reached through a pointer".to_owned());
+                return Err("a reference reached through a pointer".into());
             };
             let lay = self.lay(&target)?;
             return Ok((

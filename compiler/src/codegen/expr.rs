@@ -5,6 +5,7 @@ use project_model::VarSection;
 
 use super::body::{BodyGen, Gen, Place, Typed};
 use super::constant::{Value, evaluate_node, raw_of, text_bytes};
+use super::error::fail;
 use super::layout::{Lay, LayShape, located_of};
 use crate::elementary::Elementary;
 use crate::sema::scope::{GlobalSymbol, LocalSymbol};
@@ -158,7 +159,7 @@ impl BodyGen<'_, '_, '_> {
                 Ok(dst)
             }
             Place::Indirect(pointer) => Ok(pointer),
-            Place::Bit { .. } => Err("the address of a single bit cannot be taken".to_owned()),
+            Place::Bit { .. } => Err("the address of a single bit cannot be taken".into()),
         }
     }
 
@@ -191,7 +192,7 @@ impl BodyGen<'_, '_, '_> {
                 other => other,
             };
             let Place::Direct(op) = place else {
-                return Err("a reference inside a reference".to_owned());
+                return Err("a reference inside a reference".into());
             };
             return self.typed(Place::Indirect(op), target);
         }
@@ -227,12 +228,12 @@ impl BodyGen<'_, '_, '_> {
                     ..Default::default()
                 };
                 let located = located_of(&variable)
-                    .ok_or_else(|| format!("'{text}' is not a direct address"))?;
+                    .ok_or_else(|| fail!("'{text}' is not a direct address"))?;
                 let ty = self.type_of(node);
                 let place = located_place(located);
                 self.typed(place, ty)
             }
-            _ => Err(format!("'{}' is not a variable", written(node))),
+            _ => Err(fail!("'{}' is not a variable", written(node))),
         }
     }
 
@@ -240,10 +241,10 @@ impl BodyGen<'_, '_, '_> {
     pub(crate) fn variable_named(&mut self, name: &str) -> Gen<Typed> {
         let node = crate::sema::constant::parse_expression(name)
             .and_then(|n| NameExpr::cast(n.syntax().clone()))
-            .ok_or_else(|| format!("'{name}' is neither an action nor a variable"))?;
+            .ok_or_else(|| fail!("'{name}' is neither an action nor a variable"))?;
         let typed = self.name_place(&node)?;
         if typed.ty != Type::BOOL {
-            return Err(format!(
+            return Err(fail!(
                 "'{name}' is named as a step's action but is a {}, not an action or a BOOL",
                 typed.ty
             ));
@@ -257,9 +258,9 @@ impl BodyGen<'_, '_, '_> {
             SyntaxKind::IDENT => (first, false),
             SyntaxKind::DOT => (node.ident().ok_or("a name after '.'")?, true),
             SyntaxKind::THIS => {
-                return Err("THIS is not supported by the code generator yet".to_owned());
+                return Err("THIS is not supported by the code generator yet".into());
             }
-            _ => return Err(format!("'{}' is not a variable", first.text())),
+            _ => return Err(fail!("'{}' is not a variable", first.text())),
         };
         let name = token.text().to_owned();
         if !global_only && let Some(local) = self.scope.local(&name) {
@@ -273,7 +274,7 @@ impl BodyGen<'_, '_, '_> {
                         return self
                             .build
                             .global(variable)
-                            .ok_or_else(|| format!("the static variable '{name}' has no storage"));
+                            .ok_or_else(|| fail!("the static variable '{name}' has no storage"));
                     }
                     if let Some(frame_var) = self.frame.var(&name).cloned() {
                         return self.slot_place(
@@ -286,7 +287,7 @@ impl BodyGen<'_, '_, '_> {
                         .instance
                         .as_ref()
                         .and_then(|instance| instance.slot(&name).cloned())
-                        .ok_or_else(|| format!("'{name}' has no storage"))?;
+                        .ok_or_else(|| fail!("'{name}' has no storage"))?;
                     if let Some(located) = slot.located {
                         let place = located_place(located);
                         return self.typed(place, slot.ty);
@@ -302,7 +303,7 @@ impl BodyGen<'_, '_, '_> {
                         .frame
                         .result
                         .clone()
-                        .ok_or_else(|| format!("'{name}' has no result here"))?;
+                        .ok_or_else(|| fail!("'{name}' has no result here"))?;
                     return self.slot_place(
                         Place::Direct(Operand::Frame(result.offset)),
                         result.ty,
@@ -310,9 +311,9 @@ impl BodyGen<'_, '_, '_> {
                     );
                 }
                 LocalSymbol::Property(_) => {
-                    return Err("properties are not supported by the code generator yet".to_owned());
+                    return Err("properties are not supported by the code generator yet".into());
                 }
-                _ => return Err(format!("'{name}' is not a variable")),
+                _ => return Err(fail!("'{name}' is not a variable")),
             }
         }
         self.global_place(&name)
@@ -324,14 +325,14 @@ impl BodyGen<'_, '_, '_> {
                 let slot = self
                     .build
                     .global(variable)
-                    .ok_or_else(|| format!("the global variable '{name}' has no storage"))?;
+                    .ok_or_else(|| fail!("the global variable '{name}' has no storage"))?;
                 Ok(slot)
             }
             Some(GlobalSymbol::Pou(pou)) if pou.kind == project_model::PouKind::Program => {
                 let offset = self
                     .build
                     .program_offset(&pou.name)
-                    .ok_or_else(|| format!("the program '{name}' has no instance"))?;
+                    .ok_or_else(|| fail!("the program '{name}' has no instance"))?;
                 self.typed(
                     Place::Direct(Operand::Global(offset)),
                     Type::Named(pou.name.clone()),
@@ -340,8 +341,8 @@ impl BodyGen<'_, '_, '_> {
             Some(GlobalSymbol::Axis | GlobalSymbol::Cam) => self
                 .build
                 .device(name)
-                .ok_or_else(|| format!("the axis or cam '{name}' has no storage")),
-            _ => Err(format!("'{name}' is not a variable")),
+                .ok_or_else(|| fail!("the axis or cam '{name}' has no storage")),
+            _ => Err(fail!("'{name}' is not a variable")),
         }
     }
 
@@ -355,14 +356,14 @@ impl BodyGen<'_, '_, '_> {
                 let variable = self
                     .build
                     .gvl_variable(gvl.trim(), &member_name)
-                    .ok_or_else(|| format!("'{}' has no variable '{member_name}'", gvl.trim()))?;
+                    .ok_or_else(|| fail!("'{}' has no variable '{member_name}'", gvl.trim()))?;
                 return self
                     .build
                     .global(variable)
-                    .ok_or_else(|| format!("'{member_name}' has no storage"));
+                    .ok_or_else(|| fail!("'{member_name}' has no storage"));
             }
             Type::EnumNamespace(_) => {
-                return Err(format!("'{member_name}' is a value, not a variable"));
+                return Err(fail!("'{member_name}' is a value, not a variable"));
             }
             Type::Step => {
                 // `Step.X` (active) and `Step.T` (elapsed time) of a textual SFC step.
@@ -374,14 +375,14 @@ impl BodyGen<'_, '_, '_> {
                     .ok_or("SFC steps outside a chart")?;
                 let step = sfc
                     .step(&step_name)
-                    .ok_or_else(|| format!("no step '{step_name}'"))?;
+                    .ok_or_else(|| fail!("no step '{step_name}'"))?;
                 return match member_name.to_ascii_uppercase().as_str() {
                     "X" => self.typed(Place::Direct(Operand::Instance(step.active)), Type::BOOL),
                     "T" => self.typed(
                         Place::Direct(Operand::Instance(step.elapsed)),
                         Type::Elementary(Elementary::Time),
                     ),
-                    _ => Err(format!("a step has X and T, not '{member_name}'")),
+                    _ => Err(fail!("a step has X and T, not '{member_name}'")),
                 };
             }
             _ => {}
@@ -394,18 +395,17 @@ impl BodyGen<'_, '_, '_> {
             // `x.3`: one bit of an integer or bit string.
             let ty = match base.lay.shape {
                 LayShape::Scalar(e) => e,
-                _ => return Err("only integers and bit strings have bits".to_owned()),
+                _ => return Err("only integers and bit strings have bits".into()),
             };
             let bit: u8 = member_name.parse().map_err(|_| "a bit number")?;
             if u32::from(bit) >= ty.size_bytes() * 8 {
-                return Err(format!("{} has no bit {bit}", ty.name()));
+                return Err(fail!("{} has no bit {bit}", ty.name()));
             }
             let operand = match base.place {
                 Place::Direct(op) => op,
                 _ => {
                     return Err(
-                        "bits of a value reached through a pointer are not supported yet"
-                            .to_owned(),
+                        "bits of a value reached through a pointer are not supported yet".into(),
                     );
                 }
             };
@@ -418,7 +418,7 @@ impl BodyGen<'_, '_, '_> {
             let slot = instance
                 .slot(&member_name)
                 .cloned()
-                .ok_or_else(|| format!("'{pou_name}' has no variable '{member_name}'"))?;
+                .ok_or_else(|| fail!("'{pou_name}' has no variable '{member_name}'"))?;
             if let Some(located) = slot.located {
                 let place = located_place(located);
                 return self.typed(place, slot.ty);
@@ -447,7 +447,7 @@ impl BodyGen<'_, '_, '_> {
             .parse()
             .map_err(|_| format!("'{text}' is no partial access"))?;
         let LayShape::Scalar(ty) = base.lay.shape else {
-            return Err(format!("'{text}' needs a bit string"));
+            return Err(fail!("'{text}' needs a bit string"));
         };
         let width = ty.size_bytes() * 8;
         let (part, bits) = match size {
@@ -455,13 +455,13 @@ impl BodyGen<'_, '_, '_> {
             "B" => (Some(Elementary::Byte), 8),
             "W" => (Some(Elementary::Word), 16),
             "D" => (Some(Elementary::Dword), 32),
-            _ => return Err(format!("'{text}' is no partial access")),
+            _ => return Err(fail!("'{text}' is no partial access")),
         };
         if (index + 1) * bits > width {
-            return Err(format!("{} has no {text}", ty.name()));
+            return Err(fail!("{} has no {text}", ty.name()));
         }
         let Place::Direct(operand) = base.place else {
-            return Err("partial access through a pointer is not supported yet".to_owned());
+            return Err("partial access through a pointer is not supported yet".into());
         };
         match part {
             None => self.typed(
@@ -482,13 +482,13 @@ impl BodyGen<'_, '_, '_> {
     fn member_type(&mut self, base: &Typed, member: &str) -> Gen<Type> {
         let name = match &base.ty {
             Type::Named(name) => name.clone(),
-            other => return Err(format!("{other} has no members")),
+            other => return Err(fail!("{other} has no members")),
         };
         self.scope
             .globals
             .member(&name, member)
             .map(|m| m.ty)
-            .ok_or_else(|| format!("'{name}' has no member '{member}'"))
+            .ok_or_else(|| fail!("'{name}' has no member '{member}'"))
     }
 
     /// A member `offset` bytes into `base`: a shifted operand, or a pointer moved on.
@@ -508,7 +508,7 @@ impl BodyGen<'_, '_, '_> {
                     Place::Indirect(dst)
                 }
             }
-            Place::Bit { .. } => return Err("a bit has no members".to_owned()),
+            Place::Bit { .. } => return Err("a bit has no members".into()),
         })
     }
 
@@ -523,13 +523,10 @@ impl BodyGen<'_, '_, '_> {
         } = base.lay.shape.clone()
         {
             if indices.len() != rank as usize {
-                return Err(format!(
-                    "{} index(es) for {rank} dimension(s)",
-                    indices.len()
-                ));
+                return Err(fail!("{} index(es) for {rank} dimension(s)", indices.len()));
             }
             let Place::Direct(descriptor) = base.place else {
-                return Err("an open array reached through a pointer".to_owned());
+                return Err("an open array reached through a pointer".into());
             };
             let mut operands = Vec::new();
             for index in &indices {
@@ -558,10 +555,10 @@ impl BodyGen<'_, '_, '_> {
             dims,
         } = base.lay.shape.clone()
         else {
-            return Err(format!("'{}' is not an array", written(&base_node)));
+            return Err(fail!("'{}' is not an array", written(&base_node)));
         };
         if dims.len() != indices.len() {
-            return Err(format!(
+            return Err(fail!(
                 "{} index(es) for {} dimension(s)",
                 indices.len(),
                 dims.len()
@@ -582,7 +579,7 @@ impl BodyGen<'_, '_, '_> {
             if let Some(Value::Int(value)) = evaluate_node(index, self.scope.globals) {
                 let value = i64::try_from(value).map_err(|_| "index out of range")?;
                 if value < *low || value > *high {
-                    return Err(format!("the index {value} is outside {low}..{high}"));
+                    return Err(fail!("the index {value} is outside {low}..{high}"));
                 }
                 constant_offset += (value - low) as u32 * stride;
                 continue;
@@ -673,7 +670,7 @@ impl BodyGen<'_, '_, '_> {
             }
             (LayShape::Pointer, LayShape::Pointer) => Ok(operand),
             _ if from_lay.size == to_lay.size => Ok(operand),
-            _ => Err(format!("cannot convert {from} to {to}")),
+            _ => Err(fail!("cannot convert {from} to {to}")),
         }
     }
 
@@ -724,9 +721,9 @@ impl BodyGen<'_, '_, '_> {
             Expr::BinaryExpr(binary) => self.binary(binary, &checked, want),
             Expr::CallExpr(call) => self
                 .call(call, want)?
-                .ok_or_else(|| format!("'{}' gives no value", written(node))),
+                .ok_or_else(|| fail!("'{}' gives no value", written(node))),
             Expr::ArrayInit(_) | Expr::ErrorNode(_) => {
-                Err(format!("cannot compile the expression '{}'", written(node)))
+                Err(fail!("cannot compile the expression '{}'", written(node)))
             }
         }
     }
@@ -763,7 +760,7 @@ impl BodyGen<'_, '_, '_> {
         want: Option<&Type>,
     ) -> Gen<(Operand, Type)> {
         let value = evaluate_node(node, self.scope.globals)
-            .ok_or_else(|| format!("'{}' is not a constant", written(node)))?;
+            .ok_or_else(|| fail!("'{}' is not a constant", written(node)))?;
         let ty = match (checked, want) {
             (Type::String { wide, .. }, Some(Type::String { wide: w, length })) if wide == w => {
                 Type::String {
@@ -786,15 +783,15 @@ impl BodyGen<'_, '_, '_> {
         let lay = self.build.layouts.of(&ty)?;
         let bytes = match (&lay.shape, &value) {
             (LayShape::Scalar(e) | LayShape::Enum(e), _) => {
-                let raw = raw_of(&value, *e)
-                    .ok_or_else(|| format!("'{}' is not a {ty}", written(node)))?;
+                let raw =
+                    raw_of(&value, *e).ok_or_else(|| fail!("'{}' is not a {ty}", written(node)))?;
                 raw.to_le_bytes()[..e.size_bytes() as usize].to_vec()
             }
             (LayShape::Text { wide, length }, Value::Text(chars)) => {
                 text_bytes(chars, *wide, *length)
             }
             _ => {
-                return Err(format!("'{}' is not a {ty}", written(node)));
+                return Err(fail!("'{}' is not a {ty}", written(node)));
             }
         };
         Ok((self.build.constant(&bytes), ty))
@@ -824,12 +821,12 @@ impl BodyGen<'_, '_, '_> {
         let value = self.expr_as(&operand_node, &ty)?;
         let scalar = self
             .scalar_of(&ty)
-            .ok_or_else(|| format!("an operator on {ty}"))?;
+            .ok_or_else(|| fail!("an operator on {ty}"))?;
         let op = match operator {
             SyntaxKind::NOT => UnaryOp::Not,
             SyntaxKind::MINUS => UnaryOp::Neg,
             SyntaxKind::PLUS => return Ok((value, ty)),
-            other => return Err(format!("the operator {other:?}")),
+            other => return Err(fail!("the operator {other:?}")),
         };
         let dst = self.temp(scalar.size_bytes());
         self.emit(Instr::Unary {
@@ -849,7 +846,7 @@ impl BodyGen<'_, '_, '_> {
     ) -> Gen<(Operand, Type)> {
         let node = &Expr::BinaryExpr(binary.clone());
         let (Some(left), Some(right)) = (binary.lhs(), binary.rhs()) else {
-            return Err("an operator needs two operands".to_owned());
+            return Err("an operator needs two operands".into());
         };
         let operator = binary.op().ok_or("an operator")?.kind();
         use SyntaxKind as K;
@@ -906,7 +903,7 @@ impl BodyGen<'_, '_, '_> {
             }
             let scalar = self
                 .scalar_of(&ty)
-                .ok_or_else(|| format!("comparing values of type {ty} is not supported yet"))?;
+                .ok_or_else(|| fail!("comparing values of type {ty} is not supported yet"))?;
             let a = self.expr_as(&left, &ty)?;
             let b = self.expr_as(&right, &ty)?;
             let dst = self.temp(1);
@@ -958,7 +955,7 @@ impl BodyGen<'_, '_, '_> {
             K::AND | K::AMP => BinaryOp::And,
             K::OR => BinaryOp::Or,
             K::XOR => BinaryOp::Xor,
-            other => return Err(format!("the operator {other:?}")),
+            other => return Err(fail!("the operator {other:?}")),
         };
         let ty = concrete(checked, want);
         // Constant arithmetic is folded by the checker's rules, so `2 * 64` is one constant.
@@ -971,7 +968,7 @@ impl BodyGen<'_, '_, '_> {
         }
         let scalar = self
             .scalar_of(&ty)
-            .ok_or_else(|| format!("'{}' on {ty}", written(node)))?;
+            .ok_or_else(|| fail!("'{}' on {ty}", written(node)))?;
         let a = self.expr_as(&left, &ty)?;
         let b = self.expr_as(&right, &ty)?;
         let dst = self.temp(scalar.size_bytes());
@@ -997,7 +994,7 @@ impl BodyGen<'_, '_, '_> {
         for node in [left, right] {
             let (operand, ty) = self.expr(node, None)?;
             let Type::String { length, .. } = ty else {
-                return Err(format!("comparing a string with {ty}"));
+                return Err(fail!("comparing a string with {ty}"));
             };
             args.push((operand, length));
         }
@@ -1041,20 +1038,17 @@ impl BodyGen<'_, '_, '_> {
         if let LayShape::OpenArray { .. } = typed.lay.shape {
             return match typed.place {
                 Place::Direct(descriptor) => Ok(descriptor),
-                _ => Err("an open array reached through a pointer".to_owned()),
+                _ => Err("an open array reached through a pointer".into()),
             };
         }
         let LayShape::Array { dims, .. } = typed.lay.shape.clone() else {
-            return Err(format!("{} is not an array", typed.ty));
+            return Err(fail!("{} is not an array", typed.ty));
         };
         let LayShape::OpenArray { rank, .. } = lay.shape else {
-            return Err("not an open array".to_owned());
+            return Err("not an open array".into());
         };
         if dims.len() != rank as usize {
-            return Err(format!(
-                "an array of {} dimension(s) for {rank}",
-                dims.len()
-            ));
+            return Err(fail!("an array of {} dimension(s) for {rank}", dims.len()));
         }
         let pointer = self.pointer_to(&typed)?;
         let descriptor = self.temp(lay.size);

@@ -7,6 +7,7 @@ use project_model::{Pou, PouKind};
 
 use super::body::{BodyGen, Gen};
 use super::call::Argument;
+use super::error::fail;
 use super::expr::shifted;
 use super::layout::LayShape;
 use crate::sema::scope::inheritance_chain;
@@ -84,9 +85,7 @@ impl<'p> BodyGen<'_, '_, 'p> {
         let (value, ty) = self.expr(node, Some(interface))?;
         match self.lay(&ty)?.shape {
             LayShape::Interface => Ok(value),
-            _ => Err(format!(
-                "{ty} is not an instance that implements {interface}"
-            )),
+            _ => Err(fail!("{ty} is not an instance that implements {interface}")),
         }
     }
 
@@ -149,9 +148,10 @@ impl<'p> BodyGen<'_, '_, 'p> {
                 .all(|(var, slot)| own.var(&var.name).is_some_and(|o| o.offset == slot.offset))
                 && frame.result.as_ref().map(|r| r.offset) == own.result.as_ref().map(|r| r.offset);
             if !same {
-                return Err(format!(
+                return Err(fail!(
                     "'{}.{method_name}' does not declare the parameters of '{}.{method_name}' in the same order",
-                    owner.name, interface.name
+                    owner.name,
+                    interface.name
                 ));
             }
             table.push((

@@ -5,6 +5,7 @@ use program_image::{Instr, Operand, Transfer};
 use project_model::{Pou, PouKind, Property};
 
 use super::body::{BodyGen, Gen};
+use super::error::fail;
 use crate::sema::scope::{LocalSymbol, inheritance_chain};
 use crate::sema::ty::Type;
 use crate::syntax::SyntaxKind;
@@ -89,7 +90,7 @@ impl<'p> BodyGen<'_, '_, 'p> {
         let accessor = property
             .get
             .as_ref()
-            .ok_or_else(|| format!("the property '{}' has no GET", property.name))?;
+            .ok_or_else(|| fail!("the property '{}' has no GET", property.name))?;
         let index = self
             .build
             .pou_index(&owner.name, Some(&accessor_name(&property.name, true)))?;
@@ -122,7 +123,7 @@ impl<'p> BodyGen<'_, '_, 'p> {
         let accessor = property
             .set
             .as_ref()
-            .ok_or_else(|| format!("the property '{}' has no SET", property.name))?;
+            .ok_or_else(|| fail!("the property '{}' has no SET", property.name))?;
         let index = self
             .build
             .pou_index(&owner.name, Some(&accessor_name(&property.name, false)))?;

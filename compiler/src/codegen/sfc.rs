@@ -12,6 +12,7 @@ use std::collections::HashMap;
 use program_image::{BinaryOp, Elementary as IE, Instr, Operand};
 
 use super::body::{BodyGen, Gen};
+use super::error::fail;
 use crate::sema::ty::Type;
 use crate::syntax::ast::{
     Arg, AstNode, CallExpr, SourceFile, StatementList, StepDecl, StepList, Stmt,
@@ -134,7 +135,7 @@ impl BodyGen<'_, '_, '_> {
         self.instance
             .as_ref()
             .and_then(|i| i.sfc.clone())
-            .ok_or_else(|| "SFC steps are only allowed in a program or function block".to_owned())
+            .ok_or_else(|| "SFC steps are only allowed in a program or function block".into())
     }
 
     fn set_bool(&mut self, offset: u32, value: bool) {
@@ -204,7 +205,7 @@ impl BodyGen<'_, '_, '_> {
                 });
                 Ok(both)
             }
-            other => Err(format!(
+            other => Err(fail!(
                 "the action qualifier {other} is not supported yet (N, P, S and R are)"
             )),
         }
@@ -364,7 +365,7 @@ impl BodyGen<'_, '_, '_> {
         let mut fired = Vec::new();
         for transition in root.transitions() {
             let (Some(from), Some(to)) = (transition.from_steps(), transition.to_steps()) else {
-                return Err("a transition needs FROM and TO steps".to_owned());
+                return Err("a transition needs FROM and TO steps".into());
             };
             let condition = transition
                 .condition()
@@ -377,7 +378,7 @@ impl BodyGen<'_, '_, '_> {
                 src: value,
             });
             for name in step_names(&from) {
-                let step = sfc.step(&name).ok_or_else(|| format!("no step '{name}'"))?;
+                let step = sfc.step(&name).ok_or_else(|| fail!("no step '{name}'"))?;
                 self.emit(Instr::Binary {
                     op: BinaryOp::And,
                     ty: IE::Bool,
@@ -396,14 +397,14 @@ impl BodyGen<'_, '_, '_> {
             for name in &from {
                 let step = sfc
                     .step(name)
-                    .ok_or_else(|| format!("no step '{name}'"))?
+                    .ok_or_else(|| fail!("no step '{name}'"))?
                     .clone();
                 self.set_bool(step.active, false);
             }
             for name in &to {
                 let step = sfc
                     .step(name)
-                    .ok_or_else(|| format!("no step '{name}'"))?
+                    .ok_or_else(|| fail!("no step '{name}'"))?
                     .clone();
                 self.activate(&step, now);
             }
