@@ -23,6 +23,8 @@ mod motion;
 mod program;
 mod property;
 mod sfc;
+#[cfg(test)]
+mod snapshot_tests;
 mod std_call;
 
 use std::path::Path;
