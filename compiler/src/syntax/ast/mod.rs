@@ -8,12 +8,14 @@
 
 mod declarations;
 mod expressions;
+mod items;
 mod nodes;
 mod statements;
 mod support;
 
 pub use declarations::{InitValue, TypeExpr};
 pub use expressions::{ArgKind, Expr};
+pub use items::Item;
 pub use nodes::*;
 pub use statements::{CaseLabel, Stmt};
 pub use support::AstChildren;
@@ -30,5 +32,7 @@ pub trait AstNode: Sized {
     fn syntax(&self) -> &SyntaxNode;
 }
 
+#[cfg(test)]
+mod declaration_tests;
 #[cfg(test)]
 mod tests;

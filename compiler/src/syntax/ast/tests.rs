@@ -1,12 +1,12 @@
-//! What each accessor returns, on valid and on broken input.
+//! What the accessors of expressions and statements return, on valid and on broken input.
 
 use super::nodes::WRAPPED_KINDS;
 use super::*;
-use crate::syntax::{parse, parse_statements, parse_type};
+use crate::syntax::{parse, parse_statements};
 
 /// The first node of type `N` in the body `text` (parsed as statements).
 #[track_caller]
-fn first<N: AstNode>(text: &str) -> N {
+pub(super) fn first<N: AstNode>(text: &str) -> N {
     parse_statements(text)
         .syntax()
         .descendants()
@@ -16,7 +16,7 @@ fn first<N: AstNode>(text: &str) -> N {
 
 /// The first node of type `N` in the source file `text`.
 #[track_caller]
-fn first_in_file<N: AstNode>(text: &str) -> N {
+pub(super) fn first_in_file<N: AstNode>(text: &str) -> N {
     parse(text)
         .syntax()
         .descendants()
@@ -25,11 +25,11 @@ fn first_in_file<N: AstNode>(text: &str) -> N {
 }
 
 /// The trimmed text of a node.
-fn text<N: AstNode>(node: Option<N>) -> Option<String> {
+pub(super) fn text<N: AstNode>(node: Option<N>) -> Option<String> {
     node.map(|node| node.syntax().text().to_string().trim().to_owned())
 }
 
-fn token_text(token: Option<crate::syntax::SyntaxToken>) -> Option<String> {
+pub(super) fn token_text(token: Option<crate::syntax::SyntaxToken>) -> Option<String> {
     token.map(|token| token.text().to_owned())
 }
 
@@ -348,122 +348,4 @@ fn an_action_has_its_name_and_body() {
     let action = first_in_file::<ActionDecl>("ACTION Reset: x := 0; END_ACTION");
     assert_eq!(action.name().map(|n| n.text()).as_deref(), Some("Reset"));
     assert_eq!(text(action.body()).as_deref(), Some("x := 0;"));
-}
-
-#[test]
-fn a_declaration_has_its_names_address_type_and_initializer() {
-    let decl = first_in_file::<VarDecl>("VAR_GLOBAL a, b AT %QW4 : INT := 5; END_VAR");
-    let names: Vec<String> = decl.names().map(|n| n.text()).collect();
-    assert_eq!(names, ["a", "b"]);
-    assert_eq!(
-        token_text(decl.address().and_then(|a| a.address())).as_deref(),
-        Some("%QW4")
-    );
-    assert_eq!(text(decl.ty()).as_deref(), Some("INT"));
-    assert!(matches!(
-        decl.initializer().and_then(|i| i.value()),
-        Some(InitValue::Expr(Expr::Literal(_)))
-    ));
-    let broken = first_in_file::<VarDecl>("VAR_GLOBAL a INT; END_VAR");
-    assert_eq!(broken.address(), None);
-    assert_eq!(broken.initializer(), None);
-}
-
-#[track_caller]
-fn type_of(text: &str) -> TypeExpr {
-    SourceFile::cast(parse_type(text).syntax())
-        .and_then(|file| file.type_expr())
-        .unwrap_or_else(|| panic!("no type in {text:?}"))
-}
-
-#[test]
-fn types_have_their_parts() {
-    let TypeExpr::NamedType(named) = type_of("INT(0..100)") else {
-        panic!("not a named type");
-    };
-    assert_eq!(named.name().map(|n| n.text()).as_deref(), Some("INT"));
-    let subrange = named.subrange().expect("a subrange");
-    assert_eq!(text(subrange.low()).as_deref(), Some("0"));
-    assert_eq!(text(subrange.high()).as_deref(), Some("100"));
-    let TypeExpr::StringType(string) = type_of("WSTRING[80]") else {
-        panic!("not a string type");
-    };
-    assert_eq!(string.name().map(|n| n.text()).as_deref(), Some("WSTRING"));
-    assert_eq!(text(string.length()).as_deref(), Some("80"));
-    let TypeExpr::ArrayType(array) = type_of("ARRAY[1..3, *] OF POINTER TO REAL") else {
-        panic!("not an array type");
-    };
-    let ranges: Vec<(Option<String>, Option<String>, bool)> = array
-        .ranges()
-        .map(|r| (text(r.low()), text(r.high()), r.is_star()))
-        .collect();
-    assert_eq!(
-        ranges,
-        [
-            (Some("1".into()), Some("3".into()), false),
-            (None, None, true)
-        ]
-    );
-    let Some(TypeExpr::PointerType(pointer)) = array.element_type() else {
-        panic!("not a pointer element");
-    };
-    assert_eq!(text(pointer.target()).as_deref(), Some("REAL"));
-    let TypeExpr::ReferenceType(reference) = type_of("REF_TO INT") else {
-        panic!("not a reference");
-    };
-    assert!(reference.is_ref_to());
-    let TypeExpr::ReferenceType(reference) = type_of("REFERENCE TO INT") else {
-        panic!("not a reference");
-    };
-    assert!(!reference.is_ref_to());
-    let TypeExpr::EnumType(enumeration) = type_of("(Idle := 0, Running)") else {
-        panic!("not an enumeration");
-    };
-    let values: Vec<(Option<String>, Option<String>)> = enumeration
-        .values()
-        .map(|v| (v.name().map(|n| n.text()), text(v.value())))
-        .collect();
-    assert_eq!(
-        values,
-        [
-            (Some("Idle".into()), Some("0".into())),
-            (Some("Running".into()), None)
-        ]
-    );
-    let TypeExpr::ArrayType(broken) = type_of("ARRAY[1..] OF") else {
-        panic!("not an array type");
-    };
-    assert_eq!(broken.element_type(), None);
-    assert_eq!(broken.ranges().next().and_then(|r| r.high()), None);
-}
-
-#[test]
-fn initializers_hold_arrays_repetitions_and_structures() {
-    let init = first_in_file::<Initializer>(
-        "VAR_GLOBAL a : ARRAY[1..5] OF P := [2((x := 1, y := 2)), 3()]; END_VAR",
-    );
-    let Some(InitValue::Expr(Expr::ArrayInit(array))) = init.value() else {
-        panic!("not an array value");
-    };
-    let elements: Vec<InitValue> = array.elements().collect();
-    let [InitValue::Repeat(first), InitValue::Repeat(second)] = elements.as_slice() else {
-        panic!("not two repetitions: {elements:?}");
-    };
-    assert_eq!(first.count(), Some(2));
-    assert_eq!(second.count(), Some(3));
-    assert_eq!(second.value(), None);
-    let Some(InitValue::Struct(structure)) = first.value() else {
-        panic!("not a structure value");
-    };
-    let fields: Vec<(Option<String>, Option<String>)> = structure
-        .fields()
-        .map(|f| (f.name().map(|n| n.text()), text(f.value())))
-        .collect();
-    assert_eq!(
-        fields,
-        [
-            (Some("x".into()), Some("1".into())),
-            (Some("y".into()), Some("2".into()))
-        ]
-    );
 }
