@@ -18,6 +18,9 @@ fn a_declaration_has_its_names_address_type_and_initializer() {
         decl.initializer().and_then(|i| i.value()),
         Some(InitValue::Expr(Expr::Literal(_)))
     ));
+    let nameless = first_in_file::<VarDecl>("VAR_GLOBAL AT %IX0.0 : BOOL; END_VAR");
+    assert_eq!(nameless.name_list(), None);
+    assert_eq!(nameless.names().count(), 0);
     let broken = first_in_file::<VarDecl>("VAR_GLOBAL a INT; END_VAR");
     assert_eq!(broken.address(), None);
     assert_eq!(broken.initializer(), None);

@@ -33,11 +33,14 @@ impl SourceFile {
 }
 
 impl VarDecl {
+    /// The list of names before `:` (`None` for a nameless located variable `AT %IX0.0 : BOOL`).
+    pub fn name_list(&self) -> Option<VarNameList> {
+        child(&self.0)
+    }
+
     /// The names declared, in order (dotted instance paths in `VAR_CONFIG`).
     pub fn names(&self) -> impl Iterator<Item = Name> + use<> {
-        child::<VarNameList>(&self.0)
-            .into_iter()
-            .flat_map(|list| children::<Name>(&list.0))
+        self.name_list().into_iter().flat_map(|list| list.names())
     }
 
     /// The `AT %…` address.
@@ -53,6 +56,13 @@ impl VarDecl {
     /// The initial value after `:=`.
     pub fn initializer(&self) -> Option<Initializer> {
         child(&self.0)
+    }
+}
+
+impl VarNameList {
+    /// The names, in order.
+    pub fn names(&self) -> AstChildren<Name> {
+        children(&self.0)
     }
 }
 
