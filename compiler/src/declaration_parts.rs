@@ -4,6 +4,7 @@
 
 use project_model::{AccessSpecifier, VarSection};
 
+use crate::syntax::ast::{AstNode, VarDecl};
 use crate::syntax::{SyntaxKind, SyntaxNode};
 
 /// The section a `VAR… END_VAR` block declares, by its keyword; `None` for access paths
@@ -42,54 +43,30 @@ pub(crate) fn declaration_parts(
     declaration: &SyntaxNode,
     trim: impl Fn(&SyntaxNode) -> String,
 ) -> Option<DeclarationParts> {
-    let names = declaration
-        .children()
-        .find(|child| child.kind() == SyntaxKind::VAR_NAME_LIST)?
-        .children()
-        .filter(|child| child.kind() == SyntaxKind::NAME)
+    let declaration = VarDecl::cast(declaration.clone())?;
+    let names: Vec<SyntaxNode> = declaration
+        .name_list()?
+        .names()
+        .map(|name| name.syntax().clone())
         .collect();
     let ty = declaration
-        .children()
-        .find(|child| is_type_node(child.kind()))
-        .map(|ty| trim(&ty))
+        .ty()
+        .map(|ty| trim(ty.syntax()))
         .unwrap_or_default();
     let address = declaration
-        .children()
-        .find(|child| child.kind() == SyntaxKind::ADDRESS)
-        .and_then(|address| {
-            address
-                .children_with_tokens()
-                .filter_map(|element| element.into_token())
-                .find(|token| token.kind() == SyntaxKind::DIRECT_ADDRESS)
-                .map(|token| token.text().to_owned())
-        });
+        .address()
+        .and_then(|address| address.address())
+        .map(|token| token.text().to_owned());
     let initial = declaration
-        .children()
-        .find(|child| child.kind() == SyntaxKind::INITIALIZER)
-        .and_then(|initializer| initializer.children().next())
-        .map(|value| trim(&value));
+        .initializer()
+        .and_then(|initializer| initializer.value())
+        .map(|value| trim(value.syntax()));
     Some(DeclarationParts {
         names,
         ty,
         address,
         initial,
     })
-}
-
-/// Whether a node of this kind is a declaration's type.
-pub(crate) fn is_type_node(kind: SyntaxKind) -> bool {
-    matches!(
-        kind,
-        SyntaxKind::NAMED_TYPE
-            | SyntaxKind::STRING_TYPE
-            | SyntaxKind::ARRAY_TYPE
-            | SyntaxKind::POINTER_TYPE
-            | SyntaxKind::REFERENCE_TYPE
-            | SyntaxKind::SUBRANGE
-            | SyntaxKind::ENUM_TYPE
-            | SyntaxKind::STRUCT_TYPE
-            | SyntaxKind::TYPE_REF
-    )
 }
 
 /// The first keyword token directly in `node`.

@@ -19,6 +19,7 @@ pub mod elementary;
 pub mod ide;
 pub mod library;
 pub mod literal;
+pub mod origin;
 pub mod sema;
 pub mod source_project;
 pub mod syntax;

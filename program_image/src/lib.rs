@@ -14,6 +14,7 @@ pub mod code;
 mod elementary;
 mod encoding;
 mod image;
+mod listing;
 pub mod motion;
 pub mod std_blocks;
 mod types;
@@ -26,5 +27,6 @@ pub use image::{
     Info, InitRun, InitialValues, Layout, LineEntry, Located, ModbusRange, ModbusTable, Pou,
     PouKind, ProgramCall, ProgramImage, Region, RetainLayout, Symbol, SymbolFlags, Task, TaskKind,
 };
+pub use listing::listing;
 pub use types::{Member, StructKind, TypeDef, TypeId};
 pub use verify::MAX_REGION_BYTES;

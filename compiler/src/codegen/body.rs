@@ -7,14 +7,19 @@ use std::rc::Rc;
 use program_image::{Elementary as IE, Instr, LineEntry, Operand};
 use project_model::{Pou, Variable};
 
+use super::error::{CodegenError, fail};
 use super::layout::{Instance, Lay, LayShape};
 use super::program::Build;
+use crate::origin::Origin;
 use crate::sema::scope::Scope;
 use crate::sema::ty::Type;
-use crate::syntax::{SyntaxKind, SyntaxNode};
+use crate::syntax::SyntaxNode;
+use crate::syntax::ast::{
+    AstNode, CaseLabel, CaseStmt, Expr, ForStmt, IfStmt, StatementList, Stmt,
+};
 
-/// A result of code generation: a message saying what cannot be compiled.
-pub(crate) type Gen<T> = Result<T, String>;
+/// A result of code generation: an error saying what cannot be compiled, and where.
+pub(crate) type Gen<T> = Result<T, CodegenError>;
 
 /// Where a value is.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -97,11 +102,9 @@ pub(crate) struct BodyGen<'b, 'g, 'p> {
 }
 
 /// The lower-case name of a label or of the label a JMP names.
-fn label_name(node: &SyntaxNode, kind: SyntaxKind) -> Gen<String> {
-    node.children()
-        .find(|child| child.kind() == kind)
-        .map(|name| name.text().to_string().trim().to_lowercase())
-        .ok_or_else(|| "a label without a name".to_owned())
+fn label_name(name: Option<String>) -> Gen<String> {
+    name.map(|name| name.to_lowercase())
+        .ok_or_else(|| "a label without a name".into())
 }
 
 impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
@@ -208,18 +211,20 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
     }
 
     /// The checker's type of an expression.
-    pub(crate) fn type_of(&self, node: &SyntaxNode) -> Type {
-        self.types.get(node).cloned().unwrap_or(Type::Error)
+    pub(crate) fn type_of(&self, node: &Expr) -> Type {
+        self.types
+            .get(node.syntax())
+            .cloned()
+            .unwrap_or(Type::Error)
     }
 
     /// Generates every statement under `root`.
     pub(crate) fn body(&mut self, root: &SyntaxNode) -> Gen<()> {
-        let top = super::sfc::top_level(root);
-        if top.children().any(|c| c.kind() == SyntaxKind::STEP_DECL) {
-            self.chart(root)?;
-        } else {
-            for child in root.children() {
-                self.statement_or_list(&child)?;
+        if let Some(top) = super::sfc::top_level(root) {
+            if top.steps().next().is_some() {
+                self.chart(root)?;
+            } else {
+                self.statement_list(&top)?;
             }
         }
         // JMP goes to a label anywhere in the body, before or after it.
@@ -227,47 +232,45 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
             let target = *self
                 .labels
                 .get(&name)
-                .ok_or_else(|| format!("JMP to '{name}', which is no label of this body"))?;
+                .ok_or_else(|| fail!("JMP to '{name}', which is no label of this body"))?;
             self.patch(at, target);
         }
         Ok(())
     }
 
-    /// Generates a statement or a list of them.
-    pub(crate) fn statements_of(&mut self, node: &SyntaxNode) -> Gen<()> {
-        self.statement_or_list(node)
+    /// Generates the statements of a list; a missing list (broken input) generates nothing.
+    pub(crate) fn statement_list(&mut self, list: &StatementList) -> Gen<()> {
+        for statement in list.statements() {
+            self.statement_with_line(&statement)?;
+        }
+        Ok(())
     }
 
-    fn statement_or_list(&mut self, node: &SyntaxNode) -> Gen<()> {
-        match node.kind() {
-            SyntaxKind::STATEMENT_LIST | SyntaxKind::ELSE_BRANCH => {
-                for child in node.children() {
-                    self.statement_or_list(&child)?;
-                }
-                Ok(())
-            }
-            _ => {
-                let mark = self.temp_top;
-                let line = self.line_of(node);
-                let index = self.here();
-                if self.lines.last().is_none_or(|last| last.line != line) {
-                    self.lines.push(LineEntry {
-                        index,
-                        file: self.file,
-                        line,
-                    });
-                }
-                let result = self.statement(node).map_err(|message| {
-                    if message.starts_with("line ") {
-                        message
-                    } else {
-                        format!("line {line}: {message}")
-                    }
-                });
-                self.temp_top = mark;
-                result
-            }
+    fn optional_list(&mut self, list: Option<StatementList>) -> Gen<()> {
+        match list {
+            Some(list) => self.statement_list(&list),
+            None => Ok(()),
         }
+    }
+
+    /// Generates one statement, with its line-table entry and its temporaries freed after it.
+    pub(crate) fn statement_with_line(&mut self, statement: &Stmt) -> Gen<()> {
+        let node = statement.syntax();
+        let mark = self.temp_top;
+        let line = self.line_of(node);
+        let index = self.here();
+        if self.lines.last().is_none_or(|last| last.line != line) {
+            self.lines.push(LineEntry {
+                index,
+                file: self.file,
+                line,
+            });
+        }
+        let result = self
+            .statement(statement)
+            .map_err(|error| error.in_statement(line, Origin::of_node(node)));
+        self.temp_top = mark;
+        result
     }
 
     fn line_of(&self, node: &SyntaxNode) -> u32 {
@@ -279,70 +282,48 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
         self.line_starts.partition_point(|&start| start <= offset) as u32 + self.line_offset
     }
 
-    fn statement(&mut self, node: &SyntaxNode) -> Gen<()> {
-        let children: Vec<SyntaxNode> = node.children().collect();
-        match node.kind() {
-            SyntaxKind::ASSIGN_STMT => match children.as_slice() {
-                [target, value, ..] => self.assign(target, value),
-                [only] => self.call_statement(only),
+    fn statement(&mut self, statement: &Stmt) -> Gen<()> {
+        match statement {
+            Stmt::AssignStmt(assign) => match (assign.target(), assign.value()) {
+                (Some(target), Some(value)) => self.assign(&target, &value),
+                (Some(only), None) => self.call_statement(&only),
                 _ => Ok(()),
             },
-            SyntaxKind::SET_STMT | SyntaxKind::RESET_STMT => {
-                let [target, value, ..] = children.as_slice() else {
-                    return Ok(());
-                };
-                let target = self.place(target)?;
-                let condition = self.expr_as(value, &Type::BOOL)?;
-                let skip = self.emit(Instr::JumpIfNot {
-                    cond: condition,
-                    target: 0,
-                });
-                let constant = self
-                    .build
-                    .constant(&[u8::from(node.kind() == SyntaxKind::SET_STMT)]);
-                self.store(&target, constant)?;
-                let end = self.here();
-                self.patch(skip, end);
-                Ok(())
-            }
-            SyntaxKind::REF_ASSIGN_STMT => {
-                let [target, value, ..] = children.as_slice() else {
+            Stmt::SetStmt(set) => self.set_or_reset(set.target(), set.value(), true),
+            Stmt::ResetStmt(reset) => self.set_or_reset(reset.target(), reset.value(), false),
+            Stmt::RefAssignStmt(assign) => {
+                let (Some(target), Some(value)) = (assign.target(), assign.value()) else {
                     return Ok(());
                 };
                 self.raw_references = true;
-                let slot = self.place(target);
+                let slot = self.place(&target);
                 self.raw_references = false;
                 let slot = slot?;
-                let pointer = self.address_of(value)?;
+                let pointer = self.address_of(&value)?;
                 self.store(&slot, pointer)
             }
-            SyntaxKind::CALL_STMT => {
-                for child in &children {
-                    self.call_statement(child)?;
-                }
-                Ok(())
-            }
-            SyntaxKind::IF_STMT => self.if_statement(&children),
-            SyntaxKind::CASE_STMT => self.case_statement(&children),
-            SyntaxKind::FOR_STMT => self.for_statement(&children),
-            SyntaxKind::WHILE_STMT => {
+            Stmt::CallStmt(call) => match call.call() {
+                Some(call) => self.call_statement(&Expr::CallExpr(call)),
+                None => Ok(()),
+            },
+            Stmt::IfStmt(stmt) => self.if_statement(stmt),
+            Stmt::CaseStmt(stmt) => self.case_statement(stmt),
+            Stmt::ForStmt(stmt) => self.for_statement(stmt),
+            Stmt::WhileStmt(stmt) => {
                 let start = self.here();
                 let mut exit = None;
                 self.loops.push(Loop {
                     exits: Vec::new(),
                     continues: Vec::new(),
                 });
-                for child in &children {
-                    if child.kind() == SyntaxKind::STATEMENT_LIST {
-                        self.statement_or_list(child)?;
-                    } else {
-                        let condition = self.expr_as(child, &Type::BOOL)?;
-                        exit = Some(self.emit(Instr::JumpIfNot {
-                            cond: condition,
-                            target: 0,
-                        }));
-                    }
+                if let Some(condition) = stmt.condition() {
+                    let condition = self.expr_as(&condition, &Type::BOOL)?;
+                    exit = Some(self.emit(Instr::JumpIfNot {
+                        cond: condition,
+                        target: 0,
+                    }));
                 }
+                self.optional_list(stmt.body())?;
                 self.emit(Instr::Jump { target: start });
                 let end = self.here();
                 let finished = self.loops.pop().unwrap_or(Loop {
@@ -357,24 +338,21 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
                 }
                 Ok(())
             }
-            SyntaxKind::REPEAT_STMT => {
+            Stmt::RepeatStmt(stmt) => {
                 let start = self.here();
                 self.loops.push(Loop {
                     exits: Vec::new(),
                     continues: Vec::new(),
                 });
                 let mut condition_at = start;
-                for child in &children {
-                    if child.kind() == SyntaxKind::STATEMENT_LIST {
-                        self.statement_or_list(child)?;
-                    } else {
-                        condition_at = self.here();
-                        let condition = self.expr_as(child, &Type::BOOL)?;
-                        self.emit(Instr::JumpIfNot {
-                            cond: condition,
-                            target: start,
-                        });
-                    }
+                self.optional_list(stmt.body())?;
+                if let Some(condition) = stmt.condition() {
+                    condition_at = self.here();
+                    let condition = self.expr_as(&condition, &Type::BOOL)?;
+                    self.emit(Instr::JumpIfNot {
+                        cond: condition,
+                        target: start,
+                    });
                 }
                 let end = self.here();
                 let finished = self.loops.pop().unwrap_or(Loop {
@@ -389,11 +367,11 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
                 }
                 Ok(())
             }
-            SyntaxKind::EXIT_STMT | SyntaxKind::CONTINUE_STMT => {
-                let exit = node.kind() == SyntaxKind::EXIT_STMT;
+            Stmt::ExitStmt(_) | Stmt::ContinueStmt(_) => {
+                let exit = matches!(statement, Stmt::ExitStmt(_));
                 let at = self.emit(Instr::Jump { target: 0 });
                 let Some(current) = self.loops.last_mut() else {
-                    return Err(format!(
+                    return Err(fail!(
                         "{} outside a loop",
                         if exit { "EXIT" } else { "CONTINUE" }
                     ));
@@ -405,33 +383,52 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
                 }
                 Ok(())
             }
-            SyntaxKind::RETURN_STMT => {
+            Stmt::ReturnStmt(_) => {
                 self.emit(Instr::Return);
                 Ok(())
             }
-            SyntaxKind::EMPTY_STMT => Ok(()),
-            SyntaxKind::LABEL_STMT => {
-                let name = label_name(node, SyntaxKind::NAME)?;
+            Stmt::EmptyStmt(_) => Ok(()),
+            Stmt::LabelStmt(label) => {
+                let name = label_name(label.name().map(|name| name.text()))?;
                 let here = self.here();
                 if self.labels.insert(name.clone(), here).is_some() {
-                    return Err(format!("the label '{name}' is declared twice"));
+                    return Err(fail!("the label '{name}' is declared twice"));
                 }
                 Ok(())
             }
-            SyntaxKind::JMP_STMT => {
-                let name = label_name(node, SyntaxKind::NAME_REF)?;
+            Stmt::JmpStmt(jump) => {
+                let name = label_name(jump.label().map(|name| name.text()))?;
                 let at = self.emit(Instr::Jump { target: 0 });
                 self.jumps.push((at, name));
                 Ok(())
             }
-            SyntaxKind::STEP_DECL | SyntaxKind::TRANSITION_DECL | SyntaxKind::ACTION_DECL => {
-                Err("SFC steps, transitions and actions belong at the top of a body".to_owned())
+            Stmt::StepDecl(_) | Stmt::TransitionDecl(_) => {
+                Err("SFC steps, transitions and actions belong at the top of a body".into())
             }
-            other => Err(format!("cannot compile a {other:?}")),
+            Stmt::AttemptAssignStmt(_) => Err("cannot compile a ATTEMPT_ASSIGN_STMT".into()),
         }
     }
 
-    fn assign(&mut self, target: &SyntaxNode, value: &SyntaxNode) -> Gen<()> {
+    /// `target S= value` (`set`) or `target R= value`: the target is written only when the
+    /// value is TRUE.
+    fn set_or_reset(&mut self, target: Option<Expr>, value: Option<Expr>, set: bool) -> Gen<()> {
+        let (Some(target), Some(value)) = (target, value) else {
+            return Ok(());
+        };
+        let target = self.place(&target)?;
+        let condition = self.expr_as(&value, &Type::BOOL)?;
+        let skip = self.emit(Instr::JumpIfNot {
+            cond: condition,
+            target: 0,
+        });
+        let constant = self.build.constant(&[u8::from(set)]);
+        self.store(&target, constant)?;
+        let end = self.here();
+        self.patch(skip, end);
+        Ok(())
+    }
+
+    fn assign(&mut self, target: &Expr, value: &Expr) -> Gen<()> {
         if let Some((owner, property, instance)) = self.property_of(target)? {
             return self.property_set(owner, property, instance, value);
         }
@@ -440,55 +437,41 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
         self.store(&target, operand)
     }
 
-    fn call_statement(&mut self, node: &SyntaxNode) -> Gen<()> {
-        match node.kind() {
-            SyntaxKind::CALL_EXPR => self.call(node, None).map(|_| ()),
+    fn call_statement(&mut self, node: &Expr) -> Gen<()> {
+        match node {
+            Expr::CallExpr(call) => self.call(call, None).map(|_| ()),
             // A bare name such as `Action;` or `fb;` is a call without arguments.
-            SyntaxKind::NAME_EXPR | SyntaxKind::FIELD_EXPR => self.call_without_arguments(node),
+            Expr::NameExpr(_) | Expr::FieldExpr(_) => self.call_without_arguments(node),
             _ => self.expr(node, None).map(|_| ()),
         }
     }
 
-    fn if_statement(&mut self, children: &[SyntaxNode]) -> Gen<()> {
+    fn if_statement(&mut self, stmt: &IfStmt) -> Gen<()> {
         let mut ends = Vec::new();
         let mut pending: Option<usize> = None;
-        for child in children {
-            match child.kind() {
-                SyntaxKind::STATEMENT_LIST => {
-                    self.statement_or_list(child)?;
-                    ends.push(self.emit(Instr::Jump { target: 0 }));
-                    if let Some(at) = pending.take() {
-                        let next = self.here();
-                        self.patch(at, next);
-                    }
-                }
-                SyntaxKind::ELSIF_BRANCH => {
-                    for part in child.children() {
-                        if part.kind() == SyntaxKind::STATEMENT_LIST {
-                            self.statement_or_list(&part)?;
-                            ends.push(self.emit(Instr::Jump { target: 0 }));
-                            if let Some(at) = pending.take() {
-                                let next = self.here();
-                                self.patch(at, next);
-                            }
-                        } else {
-                            let condition = self.expr_as(&part, &Type::BOOL)?;
-                            pending = Some(self.emit(Instr::JumpIfNot {
-                                cond: condition,
-                                target: 0,
-                            }));
-                        }
-                    }
-                }
-                SyntaxKind::ELSE_BRANCH => self.statement_or_list(child)?,
-                _ => {
-                    let condition = self.expr_as(child, &Type::BOOL)?;
-                    pending = Some(self.emit(Instr::JumpIfNot {
-                        cond: condition,
-                        target: 0,
-                    }));
+        let branches = std::iter::once((stmt.condition(), stmt.then_branch())).chain(
+            stmt.elsif_branches()
+                .map(|branch| (branch.condition(), branch.body())),
+        );
+        for (condition, body) in branches {
+            if let Some(condition) = condition {
+                let condition = self.expr_as(&condition, &Type::BOOL)?;
+                pending = Some(self.emit(Instr::JumpIfNot {
+                    cond: condition,
+                    target: 0,
+                }));
+            }
+            if let Some(body) = body {
+                self.statement_list(&body)?;
+                ends.push(self.emit(Instr::Jump { target: 0 }));
+                if let Some(at) = pending.take() {
+                    let next = self.here();
+                    self.patch(at, next);
                 }
             }
+        }
+        if let Some(branch) = stmt.else_branch() {
+            self.optional_list(branch.body())?;
         }
         let end = self.here();
         if let Some(at) = pending {
@@ -500,14 +483,14 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
         Ok(())
     }
 
-    fn case_statement(&mut self, children: &[SyntaxNode]) -> Gen<()> {
-        let Some((selector, branches)) = children.split_first() else {
+    fn case_statement(&mut self, stmt: &CaseStmt) -> Gen<()> {
+        let Some(selector) = stmt.selector() else {
             return Ok(());
         };
-        let (value, ty) = self.expr(selector, None)?;
+        let (value, ty) = self.expr(&selector, None)?;
         let scalar = self
             .scalar_of(&ty)
-            .ok_or_else(|| format!("a CASE selector of type {ty}"))?;
+            .ok_or_else(|| fail!("a CASE selector of type {ty}"))?;
         // The selector is kept in a temporary so the branches cannot change it.
         let kept = self.temp(8);
         self.emit(Instr::Move {
@@ -516,27 +499,17 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
             src: value,
         });
         let mut ends = Vec::new();
-        for branch in branches {
-            if branch.kind() != SyntaxKind::CASE_BRANCH {
-                self.statement_or_list(branch)?;
-                continue;
-            }
+        for branch in stmt.branches() {
             let mut matches = Vec::new();
-            let mut body = None;
-            for part in branch.children() {
-                if part.kind() != SyntaxKind::CASE_LABELS {
-                    body = Some(part);
-                    continue;
-                }
-                for label in part.children() {
-                    let hit = self.temp(1);
-                    if label.kind() == SyntaxKind::CASE_RANGE {
-                        let bounds: Vec<SyntaxNode> = label.children().collect();
-                        let [low, high] = bounds.as_slice() else {
+            for label in branch.labels() {
+                let hit = self.temp(1);
+                match label {
+                    CaseLabel::Range(range) => {
+                        let (Some(low), Some(high)) = (range.low(), range.high()) else {
                             continue;
                         };
-                        let low = self.expr_as(low, &ty)?;
-                        let high = self.expr_as(high, &ty)?;
+                        let low = self.expr_as(&low, &ty)?;
+                        let high = self.expr_as(&high, &ty)?;
                         let above = self.temp(1);
                         self.emit(Instr::Compare {
                             op: program_image::CompareOp::Ge,
@@ -559,7 +532,8 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
                             a: hit,
                             b: above,
                         });
-                    } else {
+                    }
+                    CaseLabel::Value(label) => {
                         let label = self.expr_as(&label, &ty)?;
                         self.emit(Instr::Compare {
                             op: program_image::CompareOp::Eq,
@@ -569,23 +543,24 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
                             b: label,
                         });
                     }
-                    matches.push(self.emit(Instr::JumpIf {
-                        cond: hit,
-                        target: 0,
-                    }));
                 }
+                matches.push(self.emit(Instr::JumpIf {
+                    cond: hit,
+                    target: 0,
+                }));
             }
             let skip = self.emit(Instr::Jump { target: 0 });
             let start = self.here();
             for at in matches {
                 self.patch(at, start);
             }
-            if let Some(body) = body {
-                self.statement_or_list(&body)?;
-            }
+            self.optional_list(branch.body())?;
             ends.push(self.emit(Instr::Jump { target: 0 }));
             let next = self.here();
             self.patch(skip, next);
+        }
+        if let Some(branch) = stmt.else_branch() {
+            self.optional_list(branch.body())?;
         }
         let end = self.here();
         for at in ends {
@@ -596,24 +571,22 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
 
     /// `FOR i := a TO b BY s`: the end and step are evaluated once, before the first
     /// iteration; after the loop `i` holds the first value past the end, as in CODESYS.
-    fn for_statement(&mut self, children: &[SyntaxNode]) -> Gen<()> {
-        let expressions: Vec<&SyntaxNode> = children
-            .iter()
-            .filter(|c| c.kind() != SyntaxKind::STATEMENT_LIST)
-            .collect();
-        let [variable, start, end, rest @ ..] = expressions.as_slice() else {
-            return Err("a FOR loop needs a variable, a start and an end".to_owned());
+    fn for_statement(&mut self, stmt: &ForStmt) -> Gen<()> {
+        let (Some(variable), Some(start), Some(end)) = (stmt.variable(), stmt.from(), stmt.to())
+        else {
+            return Err("a FOR loop needs a variable, a start and an end".into());
         };
-        let counter = self.place(variable)?;
+        let step_node = stmt.by();
+        let counter = self.place(&variable)?;
         let ty = counter.ty.clone();
         let scalar = self
             .scalar_of(&ty)
             .ok_or("the FOR variable must be an integer")?;
-        let first = self.expr_as(start, &ty)?;
+        let first = self.expr_as(&start, &ty)?;
         self.store(&counter, first)?;
         // The end and step are kept where the body cannot change them: a constant stays in
         // the pool, anything else is copied once.
-        let end_value = self.expr_as(end, &ty)?;
+        let end_value = self.expr_as(&end, &ty)?;
         let last = if matches!(end_value, Operand::Const(_)) {
             end_value
         } else {
@@ -625,11 +598,11 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
             });
             kept
         };
-        let step_value = match rest.first() {
+        let step_value = match &step_node {
             Some(step_node) => self.expr_as(step_node, &ty)?,
             None => self.build.scalar_constant(1, scalar),
         };
-        let constant_step = match rest.first() {
+        let constant_step = match &step_node {
             Some(step_node) => {
                 match super::constant::evaluate_node(step_node, self.scope.globals) {
                     Some(super::constant::Value::Int(v)) => Some(v),
@@ -712,12 +685,7 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
             exits: Vec::new(),
             continues: Vec::new(),
         });
-        for child in children
-            .iter()
-            .filter(|c| c.kind() == SyntaxKind::STATEMENT_LIST)
-        {
-            self.statement_or_list(child)?;
-        }
+        self.optional_list(stmt.body())?;
         let finished = self.loops.pop().unwrap_or(Loop {
             exits: Vec::new(),
             continues: Vec::new(),

@@ -5,11 +5,13 @@ use program_image::{Instr, Operand, Transfer};
 use project_model::{Pou, PouKind, VarSection};
 
 use super::body::{BodyGen, Frame, FrameVar, Gen, Place, Typed};
-use super::expr::tokens;
+use super::error::fail;
+use super::expr::written;
 use super::layout::LayShape;
 use crate::sema::scope::{GlobalSymbol, LocalSymbol};
 use crate::sema::ty::Type;
-use crate::syntax::{SyntaxKind, SyntaxNode};
+use crate::syntax::SyntaxKind;
+use crate::syntax::ast::{ArgKind, CallExpr, Expr};
 
 /// One argument of a call: its formal name if given, whether it is an output (`=>`), and its
 /// expression.
@@ -17,29 +19,16 @@ use crate::syntax::{SyntaxKind, SyntaxNode};
 pub(crate) struct Argument {
     pub(crate) formal: Option<String>,
     pub(crate) output: bool,
-    pub(crate) value: Option<SyntaxNode>,
+    pub(crate) value: Option<Expr>,
 }
 
 /// The arguments of a call expression, in order.
-pub(crate) fn arguments(node: &SyntaxNode) -> Vec<Argument> {
-    let Some(list) = node.children().find(|c| c.kind() == SyntaxKind::ARG_LIST) else {
-        return Vec::new();
-    };
-    list.children()
-        .filter(|c| c.kind() == SyntaxKind::ARG)
-        .map(|argument| {
-            let parts: Vec<_> = tokens(&argument).collect();
-            let arrow = parts
-                .iter()
-                .position(|t| matches!(t.kind(), SyntaxKind::ASSIGN | SyntaxKind::OUTPUT_ASSIGN));
-            let formal =
-                arrow.and_then(|at| Some(parts.get(at.checked_sub(1)?)?.text().to_owned()));
-            let output = arrow.is_some_and(|at| parts[at].kind() == SyntaxKind::OUTPUT_ASSIGN);
-            Argument {
-                formal,
-                output,
-                value: argument.children().next(),
-            }
+pub(crate) fn arguments(node: &CallExpr) -> Vec<Argument> {
+    node.args()
+        .map(|argument| Argument {
+            formal: argument.name().map(|name| name.text().to_owned()),
+            output: argument.kind() == ArgKind::Output,
+            value: argument.value(),
         })
         .collect()
 }
@@ -77,7 +66,7 @@ enum Callee<'p> {
     Virtual {
         interface: &'p Pou,
         name: String,
-        base: SyntaxNode,
+        base: Expr,
     },
     /// A standard function.
     Standard(String),
@@ -85,7 +74,7 @@ enum Callee<'p> {
 
 impl<'p> BodyGen<'_, '_, 'p> {
     /// `name;` or `fb.Action;` without parentheses.
-    pub(crate) fn call_without_arguments(&mut self, node: &SyntaxNode) -> Gen<()> {
+    pub(crate) fn call_without_arguments(&mut self, node: &Expr) -> Gen<()> {
         let callee = self.callee(node)?;
         self.call_callee(callee, &[], None).map(|_| ())
     }
@@ -93,10 +82,10 @@ impl<'p> BodyGen<'_, '_, 'p> {
     /// A call; its result when it has one.
     pub(crate) fn call(
         &mut self,
-        node: &SyntaxNode,
+        node: &CallExpr,
         want: Option<&Type>,
     ) -> Gen<Option<(Operand, Type)>> {
-        let callee_node = node.children().next().ok_or("a call of nothing")?;
+        let callee_node = node.callee().ok_or("a call of nothing")?;
         let all = arguments(node);
         let named = |name: &str| {
             all.iter()
@@ -165,7 +154,7 @@ impl<'p> BodyGen<'_, '_, 'p> {
         &mut self,
         callee: Callee<'p>,
         args: &[Argument],
-        node: Option<(&SyntaxNode, Option<&Type>)>,
+        node: Option<(&CallExpr, Option<&Type>)>,
     ) -> Gen<Option<(Operand, Type)>> {
         match callee {
             Callee::Function(pou) => {
@@ -188,7 +177,7 @@ impl<'p> BodyGen<'_, '_, 'p> {
                     .methods
                     .iter()
                     .find(|m| m.name.eq_ignore_ascii_case(&name))
-                    .ok_or_else(|| format!("'{}' has no method '{name}'", owner.name))?;
+                    .ok_or_else(|| fail!("'{}' has no method '{name}'", owner.name))?;
                 let index = self.build.pou_index(&owner.name, Some(&method.name))?;
                 let instance = match instance {
                     Some(pointer) => pointer,
@@ -219,7 +208,7 @@ impl<'p> BodyGen<'_, '_, 'p> {
                 let (instance, indirect) = match instance {
                     Place::Direct(op) => (op, false),
                     Place::Indirect(pointer) => (pointer, true),
-                    Place::Bit { .. } => return Err("an action of a bit".to_owned()),
+                    Place::Bit { .. } => return Err("an action of a bit".into()),
                 };
                 self.emit(Instr::CallBlock {
                     pou: index,
@@ -238,29 +227,17 @@ impl<'p> BodyGen<'_, '_, 'p> {
                 base,
             } => self.call_virtual(interface, &name, &base, args),
             Callee::Standard(name) => {
-                let (node, want) = node.ok_or_else(|| format!("'{name}' needs arguments"))?;
+                let (node, want) = node.ok_or_else(|| fail!("'{name}' needs arguments"))?;
                 self.call_standard(&name, node, args, want)
             }
         }
     }
 
-    fn callee(&mut self, node: &SyntaxNode) -> Gen<Callee<'p>> {
-        if node.kind() == SyntaxKind::NAME_EXPR {
-            let parts: Vec<_> = tokens(node).collect();
-            let global_only = parts.first().is_some_and(|t| t.kind() == SyntaxKind::DOT);
-            let name = parts
-                .iter()
-                .find(|t| {
-                    matches!(
-                        t.kind(),
-                        SyntaxKind::IDENT
-                            | SyntaxKind::MOD
-                            | SyntaxKind::AND
-                            | SyntaxKind::OR
-                            | SyntaxKind::XOR
-                            | SyntaxKind::NOT
-                    )
-                })
+    fn callee(&mut self, node: &Expr) -> Gen<Callee<'p>> {
+        if let Expr::NameExpr(name_expr) = node {
+            let global_only = name_expr.is_global();
+            let name = name_expr
+                .name()
                 .map(|t| t.text().to_owned())
                 .ok_or("a call without a name")?;
             let local = if global_only {
@@ -302,18 +279,22 @@ impl<'p> BodyGen<'_, '_, 'p> {
                     }
                     Some(GlobalSymbol::Pou(pou)) if pou.kind == PouKind::Program => {}
                     Some(GlobalSymbol::Pou(pou)) => {
-                        return Err(format!("'{}' is a type; call an instance of it", pou.name));
+                        return Err(fail!("'{}' is a type; call an instance of it", pou.name));
                     }
                     Some(_) => {}
                     None => return Ok(Callee::Standard(name)),
                 },
             }
         }
-        if node.kind() == SyntaxKind::FIELD_EXPR
-            && let Some(base) = node.children().next()
-            && let Some(member) = tokens(node)
-                .filter(|t| t.kind() == SyntaxKind::IDENT)
-                .last()
+        let field = match node {
+            Expr::FieldExpr(field) => Some(field),
+            _ => None,
+        };
+        let base_and_member = field.and_then(|field| {
+            let member = field.member().filter(|t| t.kind() == SyntaxKind::IDENT)?;
+            Some((field.base()?, member))
+        });
+        if let Some((base, member)) = base_and_member.clone()
             && let Some(interface) = self.interface_of(&self.type_of(&base))
         {
             return Ok(Callee::Virtual {
@@ -322,11 +303,7 @@ impl<'p> BodyGen<'_, '_, 'p> {
                 base,
             });
         }
-        if node.kind() == SyntaxKind::FIELD_EXPR
-            && let Some(base) = node.children().next()
-            && let Some(member) = tokens(node)
-                .filter(|t| t.kind() == SyntaxKind::IDENT)
-                .last()
+        if let Some((base, member)) = base_and_member
             && let Type::Named(type_name) = self.type_of(&base)
             && let Some(pou) = self.scope.globals.pou(&type_name)
             && pou.kind != PouKind::Function
@@ -362,10 +339,7 @@ impl<'p> BodyGen<'_, '_, 'p> {
         let typed = self.place(node)?;
         match typed.lay.shape {
             LayShape::Pou(_) | LayShape::Std(..) => Ok(Callee::Instance(typed)),
-            _ => Err(format!(
-                "'{}' cannot be called",
-                node.text().to_string().trim()
-            )),
+            _ => Err(fail!("'{}' cannot be called", written(node))),
         }
     }
 
@@ -374,7 +348,7 @@ impl<'p> BodyGen<'_, '_, 'p> {
         crate::sema::scope::inheritance_chain(self.scope.globals, self.pou)
             .into_iter()
             .find(|p| p.methods.iter().any(|m| m.name.eq_ignore_ascii_case(name)))
-            .ok_or_else(|| format!("no method '{name}'"))
+            .ok_or_else(|| fail!("no method '{name}'"))
     }
 
     fn action_owner(&self, pou: &'p Pou, name: &str) -> Gen<&'p Pou> {
@@ -385,7 +359,7 @@ impl<'p> BodyGen<'_, '_, 'p> {
         {
             Ok(pou)
         } else {
-            Err(format!("no action '{name}'"))
+            Err(fail!("no action '{name}'"))
         }
     }
 
@@ -444,7 +418,7 @@ impl<'p> BodyGen<'_, '_, 'p> {
                     .copied(),
                 None => positional.get(position).map(|p| **p),
             }
-            .ok_or_else(|| format!("no parameter for argument {}", position + 1))?;
+            .ok_or_else(|| fail!("no parameter for argument {}", position + 1))?;
             let transfer = |caller| Transfer {
                 caller,
                 callee_offset: slot.offset,
@@ -512,7 +486,7 @@ impl<'p> BodyGen<'_, '_, 'p> {
                 .filter(|m| m.input)
                 .map(|m| m.name.to_owned())
                 .collect(),
-            _ => return Err("not an instance".to_owned()),
+            _ => return Err("not an instance".into()),
         };
         let aliases = [
             ("RESET", "R"),
@@ -535,7 +509,7 @@ impl<'p> BodyGen<'_, '_, 'p> {
                 None => input_names
                     .get(position)
                     .cloned()
-                    .ok_or_else(|| format!("no input for argument {}", position + 1))?,
+                    .ok_or_else(|| fail!("no input for argument {}", position + 1))?,
             };
             if arg.output {
                 outputs.push((name, value.clone()));
@@ -557,7 +531,7 @@ impl<'p> BodyGen<'_, '_, 'p> {
         let (instance, indirect) = match typed.place {
             Place::Direct(op) => (op, false),
             Place::Indirect(pointer) => (pointer, true),
-            Place::Bit { .. } => return Err("a bit is no instance".to_owned()),
+            Place::Bit { .. } => return Err("a bit is no instance".into()),
         };
         match &typed.lay.shape {
             LayShape::Pou(name) => {
@@ -603,7 +577,7 @@ impl<'p> BodyGen<'_, '_, 'p> {
             let slot = instance
                 .slot(name)
                 .cloned()
-                .ok_or_else(|| format!("'{pou_name}' has no variable '{name}'"))?;
+                .ok_or_else(|| fail!("'{pou_name}' has no variable '{name}'"))?;
             if slot.by_ref && for_input {
                 let place = self.member_place(typed.place, slot.offset)?;
                 let lay = slot.lay.clone();
@@ -630,13 +604,13 @@ impl<'p> BodyGen<'_, '_, 'p> {
                     .globals
                     .member(type_name, name)
                     .map(|m| m.ty)
-                    .ok_or_else(|| format!("'{type_name}' has no member '{name}'"))?,
-                other => return Err(format!("{other} has no members")),
+                    .ok_or_else(|| fail!("'{type_name}' has no member '{name}'"))?,
+                other => return Err(fail!("{other} has no members")),
             },
         };
         if let Type::Reference(target) = ty {
             let Place::Direct(op) = place else {
-                return Err("a reference reached through a pointer".to_owned());
+                return Err("a reference reached through a pointer".into());
             };
             let lay = self.lay(&target)?;
             return Ok((

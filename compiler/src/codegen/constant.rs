@@ -6,7 +6,8 @@ use program_image::Elementary as IE;
 use crate::literal;
 use crate::sema::constant::{Const, evaluate};
 use crate::sema::scope::Globals;
-use crate::syntax::{SyntaxKind, SyntaxNode, SyntaxToken};
+use crate::syntax::ast::Expr;
+use crate::syntax::{SyntaxKind, SyntaxToken};
 
 /// A value known at compile time.
 #[derive(Clone, Debug, PartialEq)]
@@ -18,12 +19,6 @@ pub(crate) enum Value {
     Nanos(i128),
     /// A string's characters.
     Text(Vec<u16>),
-}
-
-fn tokens(node: &SyntaxNode) -> impl Iterator<Item = SyntaxToken> {
-    node.children_with_tokens()
-        .filter_map(|element| element.into_token())
-        .filter(|token| !token.kind().is_trivia())
 }
 
 /// The value of a literal token.
@@ -91,23 +86,25 @@ fn string_value(text: &str) -> Vec<u16> {
 }
 
 /// The value of a constant expression, or `None` when it is not constant.
-pub(crate) fn evaluate_node(node: &SyntaxNode, globals: &Globals<'_>) -> Option<Value> {
-    match node.kind() {
-        SyntaxKind::LITERAL => return token_value(&tokens(node).next()?),
-        SyntaxKind::TYPED_LITERAL => {
-            let parts: Vec<SyntaxToken> = tokens(node).collect();
-            let last = parts.last()?;
-            if last.kind() != SyntaxKind::IDENT {
-                let negative = parts.iter().any(|t| t.kind() == SyntaxKind::MINUS);
-                let value = token_value(last)?;
-                return Some(if negative { negate(value)? } else { value });
+pub(crate) fn evaluate_node(node: &Expr, globals: &Globals<'_>) -> Option<Value> {
+    match node {
+        Expr::Literal(literal) => return token_value(&literal.token()?),
+        Expr::TypedLiteral(literal) => {
+            if let Some(value) = literal.value()
+                && value.kind() != SyntaxKind::IDENT
+            {
+                let value = token_value(&value)?;
+                return Some(if literal.is_negative() {
+                    negate(value)?
+                } else {
+                    value
+                });
             }
         }
-        SyntaxKind::PAREN_EXPR => return evaluate_node(&node.children().next()?, globals),
-        SyntaxKind::UNARY_EXPR => {
-            let operator = tokens(node).next()?.kind();
-            if operator == SyntaxKind::MINUS
-                && let Some(Value::Nanos(ns)) = evaluate_node(&node.children().next()?, globals)
+        Expr::ParenExpr(paren) => return evaluate_node(&paren.inner()?, globals),
+        Expr::UnaryExpr(unary) => {
+            if unary.op()?.kind() == SyntaxKind::MINUS
+                && let Some(Value::Nanos(ns)) = evaluate_node(&unary.operand()?, globals)
             {
                 return Some(Value::Nanos(-ns));
             }

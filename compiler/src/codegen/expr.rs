@@ -5,16 +5,17 @@ use project_model::VarSection;
 
 use super::body::{BodyGen, Gen, Place, Typed};
 use super::constant::{Value, evaluate_node, raw_of, text_bytes};
+use super::error::fail;
 use super::layout::{Lay, LayShape, located_of};
 use crate::elementary::Elementary;
 use crate::sema::scope::{GlobalSymbol, LocalSymbol};
 use crate::sema::ty::{Type, common_type};
-use crate::syntax::{SyntaxKind, SyntaxNode, SyntaxToken};
+use crate::syntax::SyntaxKind;
+use crate::syntax::ast::{AstNode, BinaryExpr, Expr, FieldExpr, IndexExpr, NameExpr, UnaryExpr};
 
-pub(crate) fn tokens(node: &SyntaxNode) -> impl Iterator<Item = SyntaxToken> {
-    node.children_with_tokens()
-        .filter_map(|element| element.into_token())
-        .filter(|token| !token.kind().is_trivia())
+/// The text of an expression as written, for messages.
+pub(crate) fn written(node: &Expr) -> String {
+    node.syntax().text().to_string().trim().to_owned()
 }
 
 /// `op` moved on by `delta` bytes.
@@ -158,12 +159,12 @@ impl BodyGen<'_, '_, '_> {
                 Ok(dst)
             }
             Place::Indirect(pointer) => Ok(pointer),
-            Place::Bit { .. } => Err("the address of a single bit cannot be taken".to_owned()),
+            Place::Bit { .. } => Err("the address of a single bit cannot be taken".into()),
         }
     }
 
     /// `ADR(x)` and the argument of a VAR_IN_OUT: a pointer to the place `node` names.
-    pub(crate) fn address_of(&mut self, node: &SyntaxNode) -> Gen<Operand> {
+    pub(crate) fn address_of(&mut self, node: &Expr) -> Gen<Operand> {
         let typed = self.place(node)?;
         self.pointer_to(&typed)
     }
@@ -191,7 +192,7 @@ impl BodyGen<'_, '_, '_> {
                 other => other,
             };
             let Place::Direct(op) = place else {
-                return Err("a reference inside a reference".to_owned());
+                return Err("a reference inside a reference".into());
             };
             return self.typed(Place::Indirect(op), target);
         }
@@ -199,17 +200,17 @@ impl BodyGen<'_, '_, '_> {
     }
 
     /// The place an expression names.
-    pub(crate) fn place(&mut self, node: &SyntaxNode) -> Gen<Typed> {
-        match node.kind() {
-            SyntaxKind::PAREN_EXPR => {
-                let inner = node.children().next().ok_or("empty parentheses")?;
+    pub(crate) fn place(&mut self, node: &Expr) -> Gen<Typed> {
+        match node {
+            Expr::ParenExpr(paren) => {
+                let inner = paren.inner().ok_or("empty parentheses")?;
                 self.place(&inner)
             }
-            SyntaxKind::NAME_EXPR => self.name_place(node),
-            SyntaxKind::FIELD_EXPR => self.field_place(node),
-            SyntaxKind::INDEX_EXPR => self.index_place(node),
-            SyntaxKind::DEREF_EXPR => {
-                let base = node.children().next().ok_or("nothing to dereference")?;
+            Expr::NameExpr(name) => self.name_place(name),
+            Expr::FieldExpr(field) => self.field_place(field),
+            Expr::IndexExpr(index) => self.index_place(index),
+            Expr::DerefExpr(deref) => {
+                let base = deref.base().ok_or("nothing to dereference")?;
                 let (pointer, ty) = self.expr(&base, None)?;
                 let target = match ty {
                     Type::Pointer(target) | Type::Reference(target) => *target,
@@ -217,9 +218,9 @@ impl BodyGen<'_, '_, '_> {
                 };
                 self.typed(Place::Indirect(pointer), target)
             }
-            SyntaxKind::ADDRESS_EXPR => {
-                let text = tokens(node)
-                    .next()
+            Expr::AddressExpr(address) => {
+                let text = address
+                    .address()
                     .map(|t| t.text().to_owned())
                     .unwrap_or_default();
                 let variable = project_model::Variable {
@@ -227,26 +228,23 @@ impl BodyGen<'_, '_, '_> {
                     ..Default::default()
                 };
                 let located = located_of(&variable)
-                    .ok_or_else(|| format!("'{text}' is not a direct address"))?;
+                    .ok_or_else(|| fail!("'{text}' is not a direct address"))?;
                 let ty = self.type_of(node);
                 let place = located_place(located);
                 self.typed(place, ty)
             }
-            _ => Err(format!(
-                "'{}' is not a variable",
-                node.text().to_string().trim()
-            )),
+            _ => Err(fail!("'{}' is not a variable", written(node))),
         }
     }
 
     /// The variable called `name` in this body's scope (an SFC boolean action).
     pub(crate) fn variable_named(&mut self, name: &str) -> Gen<Typed> {
         let node = crate::sema::constant::parse_expression(name)
-            .filter(|n| n.kind() == SyntaxKind::NAME_EXPR)
-            .ok_or_else(|| format!("'{name}' is neither an action nor a variable"))?;
+            .and_then(|n| NameExpr::cast(n.syntax().clone()))
+            .ok_or_else(|| fail!("'{name}' is neither an action nor a variable"))?;
         let typed = self.name_place(&node)?;
         if typed.ty != Type::BOOL {
-            return Err(format!(
+            return Err(fail!(
                 "'{name}' is named as a step's action but is a {}, not an action or a BOOL",
                 typed.ty
             ));
@@ -254,16 +252,15 @@ impl BodyGen<'_, '_, '_> {
         Ok(typed)
     }
 
-    fn name_place(&mut self, node: &SyntaxNode) -> Gen<Typed> {
-        let mut parts = tokens(node);
-        let first = parts.next().ok_or("an empty name")?;
+    fn name_place(&mut self, node: &NameExpr) -> Gen<Typed> {
+        let first = node.first_token().ok_or("an empty name")?;
         let (token, global_only) = match first.kind() {
             SyntaxKind::IDENT => (first, false),
-            SyntaxKind::DOT => (parts.next().ok_or("a name after '.'")?, true),
+            SyntaxKind::DOT => (node.ident().ok_or("a name after '.'")?, true),
             SyntaxKind::THIS => {
-                return Err("THIS is not supported by the code generator yet".to_owned());
+                return Err("THIS is not supported by the code generator yet".into());
             }
-            _ => return Err(format!("'{}' is not a variable", first.text())),
+            _ => return Err(fail!("'{}' is not a variable", first.text())),
         };
         let name = token.text().to_owned();
         if !global_only && let Some(local) = self.scope.local(&name) {
@@ -277,7 +274,7 @@ impl BodyGen<'_, '_, '_> {
                         return self
                             .build
                             .global(variable)
-                            .ok_or_else(|| format!("the static variable '{name}' has no storage"));
+                            .ok_or_else(|| fail!("the static variable '{name}' has no storage"));
                     }
                     if let Some(frame_var) = self.frame.var(&name).cloned() {
                         return self.slot_place(
@@ -290,7 +287,7 @@ impl BodyGen<'_, '_, '_> {
                         .instance
                         .as_ref()
                         .and_then(|instance| instance.slot(&name).cloned())
-                        .ok_or_else(|| format!("'{name}' has no storage"))?;
+                        .ok_or_else(|| fail!("'{name}' has no storage"))?;
                     if let Some(located) = slot.located {
                         let place = located_place(located);
                         return self.typed(place, slot.ty);
@@ -306,7 +303,7 @@ impl BodyGen<'_, '_, '_> {
                         .frame
                         .result
                         .clone()
-                        .ok_or_else(|| format!("'{name}' has no result here"))?;
+                        .ok_or_else(|| fail!("'{name}' has no result here"))?;
                     return self.slot_place(
                         Place::Direct(Operand::Frame(result.offset)),
                         result.ty,
@@ -314,9 +311,9 @@ impl BodyGen<'_, '_, '_> {
                     );
                 }
                 LocalSymbol::Property(_) => {
-                    return Err("properties are not supported by the code generator yet".to_owned());
+                    return Err("properties are not supported by the code generator yet".into());
                 }
-                _ => return Err(format!("'{name}' is not a variable")),
+                _ => return Err(fail!("'{name}' is not a variable")),
             }
         }
         self.global_place(&name)
@@ -328,14 +325,14 @@ impl BodyGen<'_, '_, '_> {
                 let slot = self
                     .build
                     .global(variable)
-                    .ok_or_else(|| format!("the global variable '{name}' has no storage"))?;
+                    .ok_or_else(|| fail!("the global variable '{name}' has no storage"))?;
                 Ok(slot)
             }
             Some(GlobalSymbol::Pou(pou)) if pou.kind == project_model::PouKind::Program => {
                 let offset = self
                     .build
                     .program_offset(&pou.name)
-                    .ok_or_else(|| format!("the program '{name}' has no instance"))?;
+                    .ok_or_else(|| fail!("the program '{name}' has no instance"))?;
                 self.typed(
                     Place::Direct(Operand::Global(offset)),
                     Type::Named(pou.name.clone()),
@@ -344,41 +341,33 @@ impl BodyGen<'_, '_, '_> {
             Some(GlobalSymbol::Axis | GlobalSymbol::Cam) => self
                 .build
                 .device(name)
-                .ok_or_else(|| format!("the axis or cam '{name}' has no storage")),
-            _ => Err(format!("'{name}' is not a variable")),
+                .ok_or_else(|| fail!("the axis or cam '{name}' has no storage")),
+            _ => Err(fail!("'{name}' is not a variable")),
         }
     }
 
-    fn field_place(&mut self, node: &SyntaxNode) -> Gen<Typed> {
-        let base = node.children().next().ok_or("a member of nothing")?;
-        let member = tokens(node)
-            .filter(|t| {
-                matches!(
-                    t.kind(),
-                    SyntaxKind::IDENT | SyntaxKind::INT_NUMBER | SyntaxKind::DIRECT_ADDRESS
-                )
-            })
-            .last()
-            .ok_or("a member without a name")?;
+    fn field_place(&mut self, node: &FieldExpr) -> Gen<Typed> {
+        let base = node.base().ok_or("a member of nothing")?;
+        let member = node.member().ok_or("a member without a name")?;
         let member_name = member.text().to_owned();
         match self.type_of(&base) {
             Type::Namespace(_) => {
-                let gvl = base.text().to_string();
+                let gvl = base.syntax().text().to_string();
                 let variable = self
                     .build
                     .gvl_variable(gvl.trim(), &member_name)
-                    .ok_or_else(|| format!("'{}' has no variable '{member_name}'", gvl.trim()))?;
+                    .ok_or_else(|| fail!("'{}' has no variable '{member_name}'", gvl.trim()))?;
                 return self
                     .build
                     .global(variable)
-                    .ok_or_else(|| format!("'{member_name}' has no storage"));
+                    .ok_or_else(|| fail!("'{member_name}' has no storage"));
             }
             Type::EnumNamespace(_) => {
-                return Err(format!("'{member_name}' is a value, not a variable"));
+                return Err(fail!("'{member_name}' is a value, not a variable"));
             }
             Type::Step => {
                 // `Step.X` (active) and `Step.T` (elapsed time) of a textual SFC step.
-                let step_name = base.text().to_string().trim().to_owned();
+                let step_name = written(&base);
                 let sfc = self
                     .instance
                     .as_ref()
@@ -386,14 +375,14 @@ impl BodyGen<'_, '_, '_> {
                     .ok_or("SFC steps outside a chart")?;
                 let step = sfc
                     .step(&step_name)
-                    .ok_or_else(|| format!("no step '{step_name}'"))?;
+                    .ok_or_else(|| fail!("no step '{step_name}'"))?;
                 return match member_name.to_ascii_uppercase().as_str() {
                     "X" => self.typed(Place::Direct(Operand::Instance(step.active)), Type::BOOL),
                     "T" => self.typed(
                         Place::Direct(Operand::Instance(step.elapsed)),
                         Type::Elementary(Elementary::Time),
                     ),
-                    _ => Err(format!("a step has X and T, not '{member_name}'")),
+                    _ => Err(fail!("a step has X and T, not '{member_name}'")),
                 };
             }
             _ => {}
@@ -406,18 +395,17 @@ impl BodyGen<'_, '_, '_> {
             // `x.3`: one bit of an integer or bit string.
             let ty = match base.lay.shape {
                 LayShape::Scalar(e) => e,
-                _ => return Err("only integers and bit strings have bits".to_owned()),
+                _ => return Err("only integers and bit strings have bits".into()),
             };
             let bit: u8 = member_name.parse().map_err(|_| "a bit number")?;
             if u32::from(bit) >= ty.size_bytes() * 8 {
-                return Err(format!("{} has no bit {bit}", ty.name()));
+                return Err(fail!("{} has no bit {bit}", ty.name()));
             }
             let operand = match base.place {
                 Place::Direct(op) => op,
                 _ => {
                     return Err(
-                        "bits of a value reached through a pointer are not supported yet"
-                            .to_owned(),
+                        "bits of a value reached through a pointer are not supported yet".into(),
                     );
                 }
             };
@@ -430,7 +418,7 @@ impl BodyGen<'_, '_, '_> {
             let slot = instance
                 .slot(&member_name)
                 .cloned()
-                .ok_or_else(|| format!("'{pou_name}' has no variable '{member_name}'"))?;
+                .ok_or_else(|| fail!("'{pou_name}' has no variable '{member_name}'"))?;
             if let Some(located) = slot.located {
                 let place = located_place(located);
                 return self.typed(place, slot.ty);
@@ -459,7 +447,7 @@ impl BodyGen<'_, '_, '_> {
             .parse()
             .map_err(|_| format!("'{text}' is no partial access"))?;
         let LayShape::Scalar(ty) = base.lay.shape else {
-            return Err(format!("'{text}' needs a bit string"));
+            return Err(fail!("'{text}' needs a bit string"));
         };
         let width = ty.size_bytes() * 8;
         let (part, bits) = match size {
@@ -467,13 +455,13 @@ impl BodyGen<'_, '_, '_> {
             "B" => (Some(Elementary::Byte), 8),
             "W" => (Some(Elementary::Word), 16),
             "D" => (Some(Elementary::Dword), 32),
-            _ => return Err(format!("'{text}' is no partial access")),
+            _ => return Err(fail!("'{text}' is no partial access")),
         };
         if (index + 1) * bits > width {
-            return Err(format!("{} has no {text}", ty.name()));
+            return Err(fail!("{} has no {text}", ty.name()));
         }
         let Place::Direct(operand) = base.place else {
-            return Err("partial access through a pointer is not supported yet".to_owned());
+            return Err("partial access through a pointer is not supported yet".into());
         };
         match part {
             None => self.typed(
@@ -494,13 +482,13 @@ impl BodyGen<'_, '_, '_> {
     fn member_type(&mut self, base: &Typed, member: &str) -> Gen<Type> {
         let name = match &base.ty {
             Type::Named(name) => name.clone(),
-            other => return Err(format!("{other} has no members")),
+            other => return Err(fail!("{other} has no members")),
         };
         self.scope
             .globals
             .member(&name, member)
             .map(|m| m.ty)
-            .ok_or_else(|| format!("'{name}' has no member '{member}'"))
+            .ok_or_else(|| fail!("'{name}' has no member '{member}'"))
     }
 
     /// A member `offset` bytes into `base`: a shifted operand, or a pointer moved on.
@@ -520,14 +508,13 @@ impl BodyGen<'_, '_, '_> {
                     Place::Indirect(dst)
                 }
             }
-            Place::Bit { .. } => return Err("a bit has no members".to_owned()),
+            Place::Bit { .. } => return Err("a bit has no members".into()),
         })
     }
 
-    fn index_place(&mut self, node: &SyntaxNode) -> Gen<Typed> {
-        let mut children = node.children();
-        let base_node = children.next().ok_or("an index of nothing")?;
-        let indices: Vec<SyntaxNode> = children.collect();
+    fn index_place(&mut self, node: &IndexExpr) -> Gen<Typed> {
+        let base_node = node.base().ok_or("an index of nothing")?;
+        let indices: Vec<Expr> = node.indices().collect();
         let base = self.place(&base_node)?;
         if let LayShape::OpenArray {
             element,
@@ -536,13 +523,10 @@ impl BodyGen<'_, '_, '_> {
         } = base.lay.shape.clone()
         {
             if indices.len() != rank as usize {
-                return Err(format!(
-                    "{} index(es) for {rank} dimension(s)",
-                    indices.len()
-                ));
+                return Err(fail!("{} index(es) for {rank} dimension(s)", indices.len()));
             }
             let Place::Direct(descriptor) = base.place else {
-                return Err("an open array reached through a pointer".to_owned());
+                return Err("an open array reached through a pointer".into());
             };
             let mut operands = Vec::new();
             for index in &indices {
@@ -571,13 +555,10 @@ impl BodyGen<'_, '_, '_> {
             dims,
         } = base.lay.shape.clone()
         else {
-            return Err(format!(
-                "'{}' is not an array",
-                base_node.text().to_string().trim()
-            ));
+            return Err(fail!("'{}' is not an array", written(&base_node)));
         };
         if dims.len() != indices.len() {
-            return Err(format!(
+            return Err(fail!(
                 "{} index(es) for {} dimension(s)",
                 indices.len(),
                 dims.len()
@@ -598,7 +579,7 @@ impl BodyGen<'_, '_, '_> {
             if let Some(Value::Int(value)) = evaluate_node(index, self.scope.globals) {
                 let value = i64::try_from(value).map_err(|_| "index out of range")?;
                 if value < *low || value > *high {
-                    return Err(format!("the index {value} is outside {low}..{high}"));
+                    return Err(fail!("the index {value} is outside {low}..{high}"));
                 }
                 constant_offset += (value - low) as u32 * stride;
                 continue;
@@ -639,7 +620,7 @@ impl BodyGen<'_, '_, '_> {
     }
 
     /// Evaluates `node` into an operand of exactly type `target`.
-    pub(crate) fn expr_as(&mut self, node: &SyntaxNode, target: &Type) -> Gen<Operand> {
+    pub(crate) fn expr_as(&mut self, node: &Expr, target: &Type) -> Gen<Operand> {
         if self.interface_of(target).is_some() {
             return self.interface_value(node, target);
         }
@@ -689,21 +670,22 @@ impl BodyGen<'_, '_, '_> {
             }
             (LayShape::Pointer, LayShape::Pointer) => Ok(operand),
             _ if from_lay.size == to_lay.size => Ok(operand),
-            _ => Err(format!("cannot convert {from} to {to}")),
+            _ => Err(fail!("cannot convert {from} to {to}")),
         }
     }
 
     /// Evaluates an expression; the type returned is concrete (never a literal's).
-    pub(crate) fn expr(&mut self, node: &SyntaxNode, want: Option<&Type>) -> Gen<(Operand, Type)> {
+    pub(crate) fn expr(&mut self, node: &Expr, want: Option<&Type>) -> Gen<(Operand, Type)> {
         let checked = self.type_of(node);
-        match node.kind() {
-            SyntaxKind::PAREN_EXPR => {
-                let inner = node.children().next().ok_or("empty parentheses")?;
+        match node {
+            Expr::ParenExpr(paren) => {
+                let inner = paren.inner().ok_or("empty parentheses")?;
                 self.expr(&inner, want)
             }
-            SyntaxKind::LITERAL | SyntaxKind::TYPED_LITERAL => self.literal(node, &checked, want),
-            SyntaxKind::NAME_EXPR | SyntaxKind::FIELD_EXPR => {
-                if let Some(first) = tokens(node).next()
+            Expr::Literal(_) | Expr::TypedLiteral(_) => self.literal(node, &checked, want),
+            Expr::NameExpr(_) | Expr::FieldExpr(_) => {
+                if let Expr::NameExpr(name) = node
+                    && let Some(first) = name.first_token()
                     && matches!(first.kind(), SyntaxKind::THIS | SyntaxKind::SUPER)
                 {
                     // THIS and SUPER are pointers to the running instance.
@@ -730,52 +712,55 @@ impl BodyGen<'_, '_, '_> {
                 let operand = self.load(&typed)?;
                 Ok((operand, typed.ty))
             }
-            SyntaxKind::INDEX_EXPR | SyntaxKind::DEREF_EXPR | SyntaxKind::ADDRESS_EXPR => {
+            Expr::IndexExpr(_) | Expr::DerefExpr(_) | Expr::AddressExpr(_) => {
                 let typed = self.place(node)?;
                 let operand = self.load(&typed)?;
                 Ok((operand, typed.ty))
             }
-            SyntaxKind::UNARY_EXPR => self.unary(node, &checked, want),
-            SyntaxKind::BINARY_EXPR => self.binary(node, &checked, want),
-            SyntaxKind::CALL_EXPR => self
-                .call(node, want)?
-                .ok_or_else(|| format!("'{}' gives no value", node.text().to_string().trim())),
-            _ => Err(format!(
-                "cannot compile the expression '{}'",
-                node.text().to_string().trim()
-            )),
+            Expr::UnaryExpr(unary) => self.unary(unary, &checked, want),
+            Expr::BinaryExpr(binary) => self.binary(binary, &checked, want),
+            Expr::CallExpr(call) => self
+                .call(call, want)?
+                .ok_or_else(|| fail!("'{}' gives no value", written(node))),
+            Expr::ArrayInit(_) | Expr::ErrorNode(_) => {
+                Err(fail!("cannot compile the expression '{}'", written(node)))
+            }
         }
     }
 
     /// Whether a name or member expression names an enumeration value rather than a variable.
-    fn is_enum_value(&self, node: &SyntaxNode) -> bool {
-        let Some(name) = tokens(node)
-            .filter(|t| t.kind() == SyntaxKind::IDENT)
-            .last()
-        else {
-            return false;
-        };
-        if node.kind() == SyntaxKind::FIELD_EXPR {
-            return node
-                .children()
-                .next()
-                .is_some_and(|base| matches!(self.type_of(&base), Type::EnumNamespace(_)));
+    fn is_enum_value(&self, node: &Expr) -> bool {
+        match node {
+            Expr::FieldExpr(field) => {
+                field
+                    .member()
+                    .is_some_and(|t| t.kind() == SyntaxKind::IDENT)
+                    && field
+                        .base()
+                        .is_some_and(|base| matches!(self.type_of(&base), Type::EnumNamespace(_)))
+            }
+            Expr::NameExpr(name_expr) => {
+                let Some(name) = name_expr.ident() else {
+                    return false;
+                };
+                self.scope.local(name.text()).is_none()
+                    && matches!(
+                        self.scope.globals.lookup(name.text()),
+                        Some(GlobalSymbol::EnumValue(_))
+                    )
+            }
+            _ => false,
         }
-        self.scope.local(name.text()).is_none()
-            && matches!(
-                self.scope.globals.lookup(name.text()),
-                Some(GlobalSymbol::EnumValue(_))
-            )
     }
 
     fn literal(
         &mut self,
-        node: &SyntaxNode,
+        node: &Expr,
         checked: &Type,
         want: Option<&Type>,
     ) -> Gen<(Operand, Type)> {
         let value = evaluate_node(node, self.scope.globals)
-            .ok_or_else(|| format!("'{}' is not a constant", node.text().to_string().trim()))?;
+            .ok_or_else(|| fail!("'{}' is not a constant", written(node)))?;
         let ty = match (checked, want) {
             (Type::String { wide, .. }, Some(Type::String { wide: w, length })) if wide == w => {
                 Type::String {
@@ -798,18 +783,15 @@ impl BodyGen<'_, '_, '_> {
         let lay = self.build.layouts.of(&ty)?;
         let bytes = match (&lay.shape, &value) {
             (LayShape::Scalar(e) | LayShape::Enum(e), _) => {
-                let raw = raw_of(&value, *e)
-                    .ok_or_else(|| format!("'{}' is not a {ty}", node.text().to_string().trim()))?;
+                let raw =
+                    raw_of(&value, *e).ok_or_else(|| fail!("'{}' is not a {ty}", written(node)))?;
                 raw.to_le_bytes()[..e.size_bytes() as usize].to_vec()
             }
             (LayShape::Text { wide, length }, Value::Text(chars)) => {
                 text_bytes(chars, *wide, *length)
             }
             _ => {
-                return Err(format!(
-                    "'{}' is not a {ty}",
-                    node.text().to_string().trim()
-                ));
+                return Err(fail!("'{}' is not a {ty}", written(node)));
             }
         };
         Ok((self.build.constant(&bytes), ty))
@@ -817,12 +799,13 @@ impl BodyGen<'_, '_, '_> {
 
     fn unary(
         &mut self,
-        node: &SyntaxNode,
+        unary: &UnaryExpr,
         checked: &Type,
         want: Option<&Type>,
     ) -> Gen<(Operand, Type)> {
-        let operator = tokens(node).next().ok_or("an operator")?.kind();
-        let operand_node = node.children().next().ok_or("an operand")?;
+        let node = &Expr::UnaryExpr(unary.clone());
+        let operator = unary.op().ok_or("an operator")?.kind();
+        let operand_node = unary.operand().ok_or("an operand")?;
         if matches!(checked, Type::IntLiteral(_) | Type::RealLiteral)
             && operator == SyntaxKind::MINUS
         {
@@ -838,12 +821,12 @@ impl BodyGen<'_, '_, '_> {
         let value = self.expr_as(&operand_node, &ty)?;
         let scalar = self
             .scalar_of(&ty)
-            .ok_or_else(|| format!("an operator on {ty}"))?;
+            .ok_or_else(|| fail!("an operator on {ty}"))?;
         let op = match operator {
             SyntaxKind::NOT => UnaryOp::Not,
             SyntaxKind::MINUS => UnaryOp::Neg,
             SyntaxKind::PLUS => return Ok((value, ty)),
-            other => return Err(format!("the operator {other:?}")),
+            other => return Err(fail!("the operator {other:?}")),
         };
         let dst = self.temp(scalar.size_bytes());
         self.emit(Instr::Unary {
@@ -857,15 +840,15 @@ impl BodyGen<'_, '_, '_> {
 
     fn binary(
         &mut self,
-        node: &SyntaxNode,
+        binary: &BinaryExpr,
         checked: &Type,
         want: Option<&Type>,
     ) -> Gen<(Operand, Type)> {
-        let mut operands = node.children();
-        let (Some(left), Some(right)) = (operands.next(), operands.next()) else {
-            return Err("an operator needs two operands".to_owned());
+        let node = &Expr::BinaryExpr(binary.clone());
+        let (Some(left), Some(right)) = (binary.lhs(), binary.rhs()) else {
+            return Err("an operator needs two operands".into());
         };
-        let operator = tokens(node).next().ok_or("an operator")?.kind();
+        let operator = binary.op().ok_or("an operator")?.kind();
         use SyntaxKind as K;
         let compare = match operator {
             K::EQ => Some(CompareOp::Eq),
@@ -920,7 +903,7 @@ impl BodyGen<'_, '_, '_> {
             }
             let scalar = self
                 .scalar_of(&ty)
-                .ok_or_else(|| format!("comparing values of type {ty} is not supported yet"))?;
+                .ok_or_else(|| fail!("comparing values of type {ty} is not supported yet"))?;
             let a = self.expr_as(&left, &ty)?;
             let b = self.expr_as(&right, &ty)?;
             let dst = self.temp(1);
@@ -972,7 +955,7 @@ impl BodyGen<'_, '_, '_> {
             K::AND | K::AMP => BinaryOp::And,
             K::OR => BinaryOp::Or,
             K::XOR => BinaryOp::Xor,
-            other => return Err(format!("the operator {other:?}")),
+            other => return Err(fail!("the operator {other:?}")),
         };
         let ty = concrete(checked, want);
         // Constant arithmetic is folded by the checker's rules, so `2 * 64` is one constant.
@@ -985,7 +968,7 @@ impl BodyGen<'_, '_, '_> {
         }
         let scalar = self
             .scalar_of(&ty)
-            .ok_or_else(|| format!("'{}' on {ty}", node.text().to_string().trim()))?;
+            .ok_or_else(|| fail!("'{}' on {ty}", written(node)))?;
         let a = self.expr_as(&left, &ty)?;
         let b = self.expr_as(&right, &ty)?;
         let dst = self.temp(scalar.size_bytes());
@@ -1003,15 +986,15 @@ impl BodyGen<'_, '_, '_> {
     fn compare_strings(
         &mut self,
         op: CompareOp,
-        left: &SyntaxNode,
-        right: &SyntaxNode,
+        left: &Expr,
+        right: &Expr,
         wide: bool,
     ) -> Gen<(Operand, Type)> {
         let mut args = Vec::new();
         for node in [left, right] {
             let (operand, ty) = self.expr(node, None)?;
             let Type::String { length, .. } = ty else {
-                return Err(format!("comparing a string with {ty}"));
+                return Err(fail!("comparing a string with {ty}"));
             };
             args.push((operand, length));
         }
@@ -1050,25 +1033,22 @@ impl BodyGen<'_, '_, '_> {
 
     /// The descriptor of the array `node` names, for a VAR_IN_OUT with open bounds: a pointer
     /// to it and its bounds (an open array passed on gives its own descriptor).
-    pub(crate) fn open_array_descriptor(&mut self, node: &SyntaxNode, lay: &Lay) -> Gen<Operand> {
+    pub(crate) fn open_array_descriptor(&mut self, node: &Expr, lay: &Lay) -> Gen<Operand> {
         let typed = self.place(node)?;
         if let LayShape::OpenArray { .. } = typed.lay.shape {
             return match typed.place {
                 Place::Direct(descriptor) => Ok(descriptor),
-                _ => Err("an open array reached through a pointer".to_owned()),
+                _ => Err("an open array reached through a pointer".into()),
             };
         }
         let LayShape::Array { dims, .. } = typed.lay.shape.clone() else {
-            return Err(format!("{} is not an array", typed.ty));
+            return Err(fail!("{} is not an array", typed.ty));
         };
         let LayShape::OpenArray { rank, .. } = lay.shape else {
-            return Err("not an open array".to_owned());
+            return Err("not an open array".into());
         };
         if dims.len() != rank as usize {
-            return Err(format!(
-                "an array of {} dimension(s) for {rank}",
-                dims.len()
-            ));
+            return Err(fail!("an array of {} dimension(s) for {rank}", dims.len()));
         }
         let pointer = self.pointer_to(&typed)?;
         let descriptor = self.temp(lay.size);

@@ -3,27 +3,26 @@
 
 use program_image::TypeDef;
 
+use super::body::Gen;
 use super::constant::{Value, evaluate_node, raw_of, text_bytes};
+use super::error::{Within, fail};
 use super::layout::{Lay, LayShape, Layouts};
-use crate::syntax::{SyntaxKind, SyntaxNode, parse_declaration_part};
+use crate::syntax::ast::{AstNode, Expr, InitValue, Initializer};
+use crate::syntax::parse_declaration_part;
 
 impl Layouts<'_, '_> {
     /// The bytes of a value of layout `lay` initialised with `initial` (the text after `:=`),
     /// or with the type's default.
-    pub(crate) fn initial_bytes(
-        &mut self,
-        lay: &Lay,
-        initial: Option<&str>,
-    ) -> Result<Vec<u8>, String> {
+    pub(crate) fn initial_bytes(&mut self, lay: &Lay, initial: Option<&str>) -> Gen<Vec<u8>> {
         let mut bytes = self.default_bytes(lay)?;
         if let Some(text) = initial {
             let parse = parse_declaration_part(&format!("VAR __v : INT := {text}; END_VAR"));
             let value = parse
                 .syntax()
                 .descendants()
-                .find(|n| n.kind() == SyntaxKind::INITIALIZER)
-                .and_then(|n| n.children().next())
-                .ok_or_else(|| format!("the initial value '{text}' is not an expression"))?;
+                .find_map(Initializer::cast)
+                .and_then(|initializer| initializer.value())
+                .ok_or_else(|| fail!("the initial value '{text}' is not an expression"))?;
             self.apply(&mut bytes, lay, &value)?;
         }
         Ok(bytes)
@@ -31,7 +30,7 @@ impl Layouts<'_, '_> {
 
     /// The default bytes of a type: zeros, the first value of an enumeration, and the
     /// initialisers of structure members and function block variables.
-    pub(crate) fn default_bytes(&mut self, lay: &Lay) -> Result<Vec<u8>, String> {
+    pub(crate) fn default_bytes(&mut self, lay: &Lay) -> Gen<Vec<u8>> {
         let mut bytes = vec![0u8; lay.size as usize];
         match &lay.shape {
             LayShape::Enum(base) => {
@@ -70,7 +69,12 @@ impl Layouts<'_, '_> {
                     }
                     let value = self
                         .initial_bytes(&slot.lay, slot.var.initial.as_deref())
-                        .map_err(|error| format!("{}.{}: {error}", pou.name, slot.var.name))?;
+                        .map_err(|error| {
+                            error.within(Within::Declaration(format!(
+                                "{}.{}",
+                                pou.name, slot.var.name
+                            )))
+                        })?;
                     put(&mut bytes, slot.offset, &value);
                 }
             }
@@ -79,27 +83,22 @@ impl Layouts<'_, '_> {
         Ok(bytes)
     }
 
-    fn apply(&mut self, bytes: &mut [u8], lay: &Lay, node: &SyntaxNode) -> Result<(), String> {
-        match (node.kind(), &lay.shape) {
-            (SyntaxKind::ARRAY_INIT, LayShape::Array { element, .. }) => {
+    fn apply(&mut self, bytes: &mut [u8], lay: &Lay, node: &InitValue) -> Gen<()> {
+        match (node, &lay.shape) {
+            (InitValue::Expr(Expr::ArrayInit(array)), LayShape::Array { element, .. }) => {
                 let size = element.size as usize;
                 let count = bytes.len() / size.max(1);
                 let mut index = 0usize;
-                for child in node.children() {
-                    let (repeat, value) = if child.kind() == SyntaxKind::REPEAT_INIT {
-                        let times = child
-                            .children_with_tokens()
-                            .filter_map(|e| e.into_token())
-                            .find(|t| t.kind() == SyntaxKind::INT_NUMBER)
-                            .and_then(|t| t.text().parse::<usize>().ok())
-                            .unwrap_or(0);
-                        (times, child.children().next())
-                    } else {
-                        (1, Some(child))
+                for child in array.elements() {
+                    let (repeat, value) = match child {
+                        InitValue::Repeat(repeated) => {
+                            (repeated.count().unwrap_or(0), repeated.value())
+                        }
+                        other => (1, Some(other)),
                     };
                     for _ in 0..repeat {
                         if index >= count {
-                            return Err(format!("the initialiser has more than {count} elements"));
+                            return Err(fail!("the initialiser has more than {count} elements"));
                         }
                         let place = &mut bytes[index * size..(index + 1) * size];
                         match &value {
@@ -111,18 +110,10 @@ impl Layouts<'_, '_> {
                 }
                 Ok(())
             }
-            (SyntaxKind::STRUCT_INIT, LayShape::Struct(_) | LayShape::Pou(_)) => {
-                for field in node
-                    .children()
-                    .filter(|c| c.kind() == SyntaxKind::FIELD_INIT)
-                {
-                    let name = field
-                        .children()
-                        .find(|c| c.kind() == SyntaxKind::NAME)
-                        .map(|n| n.text().to_string().trim().to_owned())
-                        .unwrap_or_default();
-                    let Some(value) = field.children().find(|c| c.kind() != SyntaxKind::NAME)
-                    else {
+            (InitValue::Struct(structure), LayShape::Struct(_) | LayShape::Pou(_)) => {
+                for field in structure.fields() {
+                    let name = field.name().map(|name| name.text()).unwrap_or_default();
+                    let Some(value) = field.value() else {
                         continue;
                     };
                     let (offset, member) = self.member_of(lay, &name)?;
@@ -135,10 +126,14 @@ impl Layouts<'_, '_> {
                 Ok(())
             }
             _ => {
-                let value = evaluate_node(node, self.globals).ok_or_else(|| {
+                let value = match node {
+                    InitValue::Expr(expr) => evaluate_node(expr, self.globals),
+                    InitValue::Struct(_) | InitValue::Repeat(_) => None,
+                };
+                let value = value.ok_or_else(|| {
                     format!(
                         "'{}' is not a constant value",
-                        node.text().to_string().trim()
+                        node.syntax().text().to_string().trim()
                     )
                 })?;
                 let written = match (&lay.shape, &value) {
@@ -152,7 +147,7 @@ impl Layouts<'_, '_> {
                 let written = written.ok_or_else(|| {
                     format!(
                         "'{}' is not a value of this type",
-                        node.text().to_string().trim()
+                        node.syntax().text().to_string().trim()
                     )
                 })?;
                 put(bytes, 0, &written);
@@ -162,7 +157,7 @@ impl Layouts<'_, '_> {
     }
 
     /// The offset and layout of member `name` of a structure or instance.
-    pub(crate) fn member_of(&mut self, lay: &Lay, name: &str) -> Result<(u32, Lay), String> {
+    pub(crate) fn member_of(&mut self, lay: &Lay, name: &str) -> Gen<(u32, Lay)> {
         match &lay.shape {
             LayShape::Struct(type_name) => {
                 let data_type = self
@@ -173,7 +168,7 @@ impl Layouts<'_, '_> {
                 let field = fields
                     .into_iter()
                     .find(|f| f.name.eq_ignore_ascii_case(name))
-                    .ok_or_else(|| format!("'{type_name}' has no member '{name}'"))?;
+                    .ok_or_else(|| fail!("'{type_name}' has no member '{name}'"))?;
                 Ok((field.offset, field.lay))
             }
             LayShape::Pou(pou_name) => {
@@ -181,19 +176,19 @@ impl Layouts<'_, '_> {
                 let instance = self.instance(pou)?;
                 let slot = instance
                     .slot(name)
-                    .ok_or_else(|| format!("'{pou_name}' has no variable '{name}'"))?;
+                    .ok_or_else(|| fail!("'{pou_name}' has no variable '{name}'"))?;
                 Ok((slot.offset, slot.lay.clone()))
             }
             LayShape::Std(block, long) => {
                 let shape = program_image::std_blocks::layout(*block, *long);
                 let member = shape
                     .member(name)
-                    .ok_or_else(|| format!("the standard function block has no member '{name}'"))?;
+                    .ok_or_else(|| fail!("the standard function block has no member '{name}'"))?;
                 let (offset, ty) = (member.offset, member.ty);
                 let lay = self.of(&crate::sema::ty::Type::Elementary(elementary_of(ty)))?;
                 Ok((offset, lay))
             }
-            _ => Err(format!("'{name}' is not a member of a structure")),
+            _ => Err(fail!("'{name}' is not a member of a structure")),
         }
     }
 }

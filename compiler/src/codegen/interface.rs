@@ -7,11 +7,12 @@ use project_model::{Pou, PouKind};
 
 use super::body::{BodyGen, Gen};
 use super::call::Argument;
+use super::error::fail;
 use super::expr::shifted;
 use super::layout::LayShape;
 use crate::sema::scope::inheritance_chain;
 use crate::sema::ty::Type;
-use crate::syntax::SyntaxNode;
+use crate::syntax::ast::Expr;
 
 impl<'p> BodyGen<'_, '_, 'p> {
     /// The interface `ty` names, if it names one.
@@ -52,7 +53,7 @@ impl<'p> BodyGen<'_, '_, 'p> {
 
     /// An interface value for `node`: an instance of a function block that implements it, the
     /// literal 0 (no instance), or another interface value.
-    pub(crate) fn interface_value(&mut self, node: &SyntaxNode, interface: &Type) -> Gen<Operand> {
+    pub(crate) fn interface_value(&mut self, node: &Expr, interface: &Type) -> Gen<Operand> {
         let checked = self.type_of(node);
         if let Type::IntLiteral(Some(0)) = checked {
             return Ok(self.build.constant(&[0; 16]));
@@ -84,9 +85,7 @@ impl<'p> BodyGen<'_, '_, 'p> {
         let (value, ty) = self.expr(node, Some(interface))?;
         match self.lay(&ty)?.shape {
             LayShape::Interface => Ok(value),
-            _ => Err(format!(
-                "{ty} is not an instance that implements {interface}"
-            )),
+            _ => Err(fail!("{ty} is not an instance that implements {interface}")),
         }
     }
 
@@ -95,7 +94,7 @@ impl<'p> BodyGen<'_, '_, 'p> {
         &mut self,
         interface: &'p Pou,
         method_name: &str,
-        base: &SyntaxNode,
+        base: &Expr,
         args: &[Argument],
     ) -> Gen<Option<(Operand, Type)>> {
         let declared = interface
@@ -149,9 +148,10 @@ impl<'p> BodyGen<'_, '_, 'p> {
                 .all(|(var, slot)| own.var(&var.name).is_some_and(|o| o.offset == slot.offset))
                 && frame.result.as_ref().map(|r| r.offset) == own.result.as_ref().map(|r| r.offset);
             if !same {
-                return Err(format!(
+                return Err(fail!(
                     "'{}.{method_name}' does not declare the parameters of '{}.{method_name}' in the same order",
-                    owner.name, interface.name
+                    owner.name,
+                    interface.name
                 ));
             }
             table.push((

@@ -10,6 +10,8 @@ use program_image::{
 };
 use project_model::{DataType, Pou, PouKind, TypeDefinition, VarSection, Variable};
 
+use super::body::Gen;
+use super::error::{Within, fail};
 use crate::elementary::Elementary;
 use crate::sema::address::{self, Area};
 use crate::sema::resolve_local_type;
@@ -195,13 +197,13 @@ impl<'g, 'p> Layouts<'g, 'p> {
     }
 
     /// The layout of the type written as `text`.
-    pub(crate) fn of_text(&mut self, text: &str) -> Result<Lay, String> {
+    pub(crate) fn of_text(&mut self, text: &str) -> Gen<Lay> {
         let ty = self.globals.resolve_type(text);
         self.of(&ty)
     }
 
     /// The layout of `ty`.
-    pub(crate) fn of(&mut self, ty: &Type) -> Result<Lay, String> {
+    pub(crate) fn of(&mut self, ty: &Type) -> Gen<Lay> {
         let key = match ty {
             Type::Named(name) => format!("named {}", name.to_lowercase()),
             other => format!("{other:?}"),
@@ -224,7 +226,7 @@ impl<'g, 'p> Layouts<'g, 'p> {
         }
     }
 
-    fn compute(&mut self, ty: &Type) -> Result<Lay, String> {
+    fn compute(&mut self, ty: &Type) -> Gen<Lay> {
         match ty {
             Type::Elementary(e) | Type::Subrange { base: e, .. } => match image_elementary(*e) {
                 Some(ie) => Ok(self.scalar(ie)),
@@ -253,7 +255,7 @@ impl<'g, 'p> Layouts<'g, 'p> {
                 for dim in dims {
                     let Some((low, high)) = dim else {
                         return Err(
-                            "arrays with open bounds (ARRAY[*]) are not supported yet".to_owned()
+                            "arrays with open bounds (ARRAY[*]) are not supported yet".into()
                         );
                     };
                     let (low, high) = (
@@ -261,7 +263,7 @@ impl<'g, 'p> Layouts<'g, 'p> {
                         i64::try_from(*high).map_err(|_| "array bound out of range")?,
                     );
                     if high < low {
-                        return Err(format!("the array bounds {low}..{high} are empty"));
+                        return Err(fail!("the array bounds {low}..{high} are empty"));
                     }
                     count = count.saturating_mul(high.abs_diff(low).saturating_add(1));
                     bounds.push((low, high));
@@ -316,16 +318,16 @@ impl<'g, 'p> Layouts<'g, 'p> {
                 })
             }
             Type::Named(name) => self.named(name),
-            other => Err(format!("values of type {other} cannot be stored")),
+            other => Err(fail!("values of type {other} cannot be stored")),
         }
     }
 
-    fn named(&mut self, name: &str) -> Result<Lay, String> {
+    fn named(&mut self, name: &str) -> Gen<Lay> {
         if let Some(data_type) = self.globals.data_type(name)
             && let TypeDefinition::Alias { ty, .. } = &data_type.definition
         {
             if self.building.iter().any(|b| b.eq_ignore_ascii_case(name)) {
-                return Err(format!("the type '{name}' is defined in terms of itself"));
+                return Err(fail!("the type '{name}' is defined in terms of itself"));
             }
             self.building.push(name.to_owned());
             let lay = self.of_text(ty);
@@ -344,7 +346,7 @@ impl<'g, 'p> Layouts<'g, 'p> {
                         .and_then(image_elementary),
                     _ => Some(IE::Int),
                 }
-                .ok_or_else(|| format!("the enumeration '{name}' needs an integer base type"))?;
+                .ok_or_else(|| fail!("the enumeration '{name}' needs an integer base type"))?;
                 let values = self.enum_values(data_type);
                 let size = base.size_bytes();
                 Ok(Lay {
@@ -446,7 +448,7 @@ impl<'g, 'p> Layouts<'g, 'p> {
                     shape: LayShape::Std(block, long),
                 })
             }
-            _ => Err(format!("values of type '{name}' cannot be stored")),
+            _ => Err(fail!("values of type '{name}' cannot be stored")),
         }
     }
 
@@ -467,7 +469,7 @@ impl<'g, 'p> Layouts<'g, 'p> {
     }
 
     /// The members of a structure (base members first) or union (all at offset 0).
-    pub(crate) fn fields(&mut self, data_type: &'p DataType) -> Result<Vec<Field<'p>>, String> {
+    pub(crate) fn fields(&mut self, data_type: &'p DataType) -> Gen<Vec<Field<'p>>> {
         let mut chain = vec![data_type];
         let mut current = data_type;
         while let TypeDefinition::Struct {
@@ -479,7 +481,7 @@ impl<'g, 'p> Layouts<'g, 'p> {
                 break;
             };
             if chain.len() > 32 || chain.iter().any(|seen| std::ptr::eq(*seen, base)) {
-                return Err(format!("the structure '{}' extends itself", data_type.name));
+                return Err(fail!("the structure '{}' extends itself", data_type.name));
             }
             chain.push(base);
             current = base;
@@ -489,10 +491,7 @@ impl<'g, 'p> Layouts<'g, 'p> {
             .iter()
             .any(|b| b.eq_ignore_ascii_case(&data_type.name))
         {
-            return Err(format!(
-                "the structure '{}' contains itself",
-                data_type.name
-            ));
+            return Err(fail!("the structure '{}' contains itself", data_type.name));
         }
         self.building.push(data_type.name.clone());
         let mut fields = Vec::new();
@@ -509,7 +508,10 @@ impl<'g, 'p> Layouts<'g, 'p> {
                 let lay = match self.of(&ty) {
                     Ok(lay) => lay,
                     Err(error) => {
-                        result = Err(format!("{}.{}: {error}", current.name, member.name));
+                        result = Err(error.within(Within::Declaration(format!(
+                            "{}.{}",
+                            current.name, member.name
+                        ))));
                         break;
                     }
                 };
@@ -536,7 +538,7 @@ impl<'g, 'p> Layouts<'g, 'p> {
     }
 
     /// The instance layout of a program or function block (inherited variables first).
-    pub(crate) fn instance(&mut self, pou: &'p Pou) -> Result<Rc<Instance<'p>>, String> {
+    pub(crate) fn instance(&mut self, pou: &'p Pou) -> Gen<Rc<Instance<'p>>> {
         let key = pou.name.to_lowercase();
         if let Some(known) = self.instances.get(&key) {
             return Ok(known.clone());
@@ -546,7 +548,7 @@ impl<'g, 'p> Layouts<'g, 'p> {
             .iter()
             .any(|b| b.eq_ignore_ascii_case(&pou.name))
         {
-            return Err(format!("'{}' contains an instance of itself", pou.name));
+            return Err(fail!("'{}' contains an instance of itself", pou.name));
         }
         self.building.push(pou.name.clone());
         let result = self.build_instance(pou);
@@ -556,7 +558,7 @@ impl<'g, 'p> Layouts<'g, 'p> {
         Ok(instance)
     }
 
-    fn build_instance(&mut self, pou: &'p Pou) -> Result<Instance<'p>, String> {
+    fn build_instance(&mut self, pou: &'p Pou) -> Gen<Instance<'p>> {
         let mut chain = inheritance_chain(self.globals, pou);
         chain.reverse();
         // Array bounds may name constants of the POU or its bases.
@@ -576,9 +578,12 @@ impl<'g, 'p> Layouts<'g, 'p> {
                 } else {
                     declared
                 };
-                let lay = self
-                    .of(&ty)
-                    .map_err(|error| format!("{}.{}: {error}", current.name, var.name))?;
+                let lay = self.of(&ty).map_err(|error| {
+                    error.within(Within::Declaration(format!(
+                        "{}.{}",
+                        current.name, var.name
+                    )))
+                })?;
                 let located = located_of(var);
                 let at = if located.is_some() {
                     0

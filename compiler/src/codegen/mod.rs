@@ -14,6 +14,7 @@
 mod body;
 mod call;
 mod constant;
+mod error;
 mod expr;
 mod init;
 mod interface;
@@ -22,6 +23,8 @@ mod motion;
 mod program;
 mod property;
 mod sfc;
+#[cfg(test)]
+mod snapshot_tests;
 mod std_call;
 
 use std::path::Path;
@@ -32,6 +35,7 @@ use project_model::Project;
 use crate::sema::{ProjectDiagnostic, check_project};
 use crate::{Severity, SourceProject};
 
+pub use error::{CodegenError, Location, StatementPlace, Within};
 pub use program::BodyOrigin;
 
 /// Why a project does not compile.
@@ -74,5 +78,6 @@ fn compile_with(project: &Project, origin: BodyOrigin<'_>) -> Result<ProgramImag
     {
         return Err(CompileError::Diagnostics(diagnostics));
     }
-    program::build_image(project, origin).map_err(CompileError::Unsupported)
+    program::build_image(project, origin)
+        .map_err(|error| CompileError::Unsupported(error.to_string()))
 }

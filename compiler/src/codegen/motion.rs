@@ -14,6 +14,7 @@ use project_model::{
 };
 
 use super::body::{Gen, Place, Typed};
+use super::error::Within;
 use super::layout::Layouts;
 use crate::library::{AXIS_REF, CAM_REF, is_native_block};
 use crate::sema::ty::Type;
@@ -53,10 +54,12 @@ pub(crate) fn device_globals(
     let mut places = Vec::new();
     let mut place = |name: &str, ty: &str, init: String| -> Gen<u32> {
         let ty = Type::Named(ty.to_owned());
-        let lay = layouts.of(&ty).map_err(|e| format!("{name}: {e}"))?;
+        let lay = layouts
+            .of(&ty)
+            .map_err(|e| e.within(Within::Declaration(name.to_owned())))?;
         let bytes = layouts
             .initial_bytes(&lay, Some(&init))
-            .map_err(|e| format!("{name}: {e}"))?;
+            .map_err(|e| e.within(Within::Declaration(name.to_owned())))?;
         let offset = allocate(lay.size, lay.align);
         runs.push(InitRun { offset, bytes });
         symbols.push(Symbol {

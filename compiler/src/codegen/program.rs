@@ -13,6 +13,7 @@ use project_model::{
 };
 
 use super::body::{BodyGen, Frame, FrameVar, Gen, Place, Typed};
+use super::error::{CodegenError, Within, fail};
 use super::layout::{Lay, LayShape, Layouts, flags_of, located_of};
 use crate::sema::scope::{Globals, Scope};
 use crate::sema::ty::Type;
@@ -79,7 +80,7 @@ impl<'g, 'p> Build<'g, 'p> {
     pub(crate) fn pou_index(&self, pou: &str, member: Option<&str>) -> Gen<u32> {
         let key = key(pou, member);
         self.pou_indices.get(&key).copied().ok_or_else(|| {
-            format!(
+            fail!(
                 "'{}' is not compiled",
                 member.map_or(pou.to_owned(), |m| format!("{pou}.{m}"))
             )
@@ -196,7 +197,7 @@ impl<'g, 'p> Build<'g, 'p> {
             let lay = self
                 .layouts
                 .of(&ty)
-                .map_err(|e| format!("{}: {e}", var.name))?;
+                .map_err(|e| e.within(Within::Declaration(var.name.clone())))?;
             let at = offset.next_multiple_of(lay.align);
             *offset = at + lay.size;
             frame.vars.push((
@@ -222,7 +223,7 @@ impl<'g, 'p> Build<'g, 'p> {
             let bytes = self
                 .layouts
                 .initial_bytes(&slot.lay, var.initial.as_deref())
-                .map_err(|e| format!("{}: {e}", var.name))?;
+                .map_err(|e| e.within(Within::Declaration(var.name.clone())))?;
             if bytes.iter().any(|b| *b != 0) {
                 runs.push(InitRun {
                     offset: slot.offset,
@@ -316,11 +317,11 @@ pub(crate) fn build_image(project: &Project, origin: BodyOrigin<'_>) -> Gen<Prog
             let lay = build
                 .layouts
                 .of(&ty)
-                .map_err(|e| format!("{}.{}: {e}", gvl.name, var.name))?;
+                .map_err(|e| e.within(Within::Declaration(format!("{}.{}", gvl.name, var.name))))?;
             let bytes = build
                 .layouts
                 .initial_bytes(&lay, var.initial.as_deref())
-                .map_err(|e| format!("{}.{}: {e}", gvl.name, var.name))?;
+                .map_err(|e| e.within(Within::Declaration(format!("{}.{}", gvl.name, var.name))))?;
             let path = format!("{}.{}", gvl.name, var.name);
             let flags = flags_of(var) | SymbolFlags::GLOBAL;
             let place = place_variable(&mut data, var, &lay, &bytes, &path, flags);
@@ -368,11 +369,11 @@ pub(crate) fn build_image(project: &Project, origin: BodyOrigin<'_>) -> Gen<Prog
             let lay = build
                 .layouts
                 .of(&ty)
-                .map_err(|e| format!("{}.{}: {e}", pou.name, var.name))?;
+                .map_err(|e| e.within(Within::Declaration(format!("{}.{}", pou.name, var.name))))?;
             let bytes = build
                 .layouts
                 .initial_bytes(&lay, var.initial.as_deref())
-                .map_err(|e| format!("{}.{}: {e}", pou.name, var.name))?;
+                .map_err(|e| e.within(Within::Declaration(format!("{}.{}", pou.name, var.name))))?;
             let path = format!("{}.{}", pou.name, var.name);
             let place = place_variable(&mut data, var, &lay, &bytes, &path, flags_of(var));
             build
@@ -393,13 +394,13 @@ pub(crate) fn build_image(project: &Project, origin: BodyOrigin<'_>) -> Gen<Prog
         let lay = build
             .layouts
             .of(&Type::Named(pou.name.clone()))
-            .map_err(|e| format!("{}: {e}", pou.name))?;
+            .map_err(|e| e.within(Within::Pou(pou.name.clone())))?;
         let offset = data.allocate(&lay);
         build.programs.insert(pou.name.to_lowercase(), offset);
         let bytes = build
             .layouts
             .default_bytes(&lay)
-            .map_err(|e| format!("{}: {e}", pou.name))?;
+            .map_err(|e| e.within(Within::Pou(pou.name.clone())))?;
         data.runs.push(InitRun { offset, bytes });
         data.symbols.push(Symbol {
             path: pou.name.clone(),
@@ -580,11 +581,11 @@ pub(crate) fn build_image(project: &Project, origin: BodyOrigin<'_>) -> Gen<Prog
                     instance_offset: build.program_offset(&only.name).unwrap_or(0),
                 }],
             }),
-            [] => return Err("the project has no PROGRAM to run".to_owned()),
+            [] => return Err("the project has no PROGRAM to run".into()),
             _ => {
                 return Err(
                     "the project has several programs but no task configuration that calls them"
-                        .to_owned(),
+                        .into(),
                 );
             }
         }
@@ -628,9 +629,7 @@ pub(crate) fn build_image(project: &Project, origin: BodyOrigin<'_>) -> Gen<Prog
         modbus_map,
         motion: devices.section,
     };
-    image
-        .verify()
-        .map_err(|e| format!("internal error, the image does not verify: {e}"))?;
+    image.verify().map_err(CodegenError::InvalidImage)?;
     Ok(image)
 }
 
@@ -666,7 +665,7 @@ fn modbus_ranges(map: &project_model::ModbusServerMap) -> Gen<Vec<program_image:
         let words_per_value = match (bits, located.size_bits) {
             (true, 1) if located.bit_offset % 8 == 0 => 1,
             (true, _) => {
-                return Err(format!(
+                return Err(fail!(
                     "{field}: a bit table starts at bit 0 of a byte, such as %QX4.0, not {}",
                     range.area_address
                 ));
@@ -675,14 +674,14 @@ fn modbus_ranges(map: &project_model::ModbusServerMap) -> Gen<Vec<program_image:
             (false, 32) => 2,
             (false, 64) => 4,
             (false, _) => {
-                return Err(format!(
+                return Err(fail!(
                     "{field}: a register table starts at a W, D or L address, such as %MW0, not {}",
                     range.area_address
                 ));
             }
         };
         if range.count == 0 {
-            return Err(format!("{field}: the count must be at least 1"));
+            return Err(fail!("{field}: the count must be at least 1"));
         }
         ranges.push(program_image::ModbusRange {
             table,
@@ -873,7 +872,7 @@ fn compile_unit<'g, 'p>(
             build
                 .layouts
                 .instance(pou)
-                .map_err(|e| format!("{name}: {e}"))?,
+                .map_err(|e| e.within(Within::Pou(name.clone())))?,
         ),
         _ => None,
     };
@@ -903,10 +902,10 @@ fn compile_unit<'g, 'p>(
         }
         _ => build.frame_of(pou, &pou.variables, None),
     }
-    .map_err(|e| format!("{name}: {e}"))?;
+    .map_err(|e| e.within(Within::Pou(name.clone())))?;
     let frame_init = build
         .frame_init(&frame)
-        .map_err(|e| format!("{name}: {e}"))?;
+        .map_err(|e| e.within(Within::Pou(name.clone())))?;
     let instance_size = instance.as_ref().map_or(0, |i| i.size);
     if unit.native {
         return Ok(ImagePou {
@@ -952,7 +951,7 @@ fn compile_unit<'g, 'p>(
                 .map_or(pou.body.language(), |a| a.body.language()),
         };
         if language != project_model::Language::None {
-            return Err(format!(
+            return Err(fail!(
                 "{name}: {language:?} bodies are not compiled yet; only Structured Text is"
             ));
         }
@@ -982,9 +981,11 @@ fn compile_unit<'g, 'p>(
         body.text,
         first_line.saturating_sub(1),
     );
-    generator
-        .body(&root)
-        .map_err(|message| format!("{file_name}: {name}: {message}"))?;
+    generator.body(&root).map_err(|error| {
+        error
+            .within(Within::Pou(name.clone()))
+            .within(Within::File(file_name.clone()))
+    })?;
     generator.emit(program_image::Instr::Return);
     image_pou.frame_size = generator.frame_max;
     image_pou.code = std::mem::take(&mut generator.code);

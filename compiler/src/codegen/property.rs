@@ -5,9 +5,11 @@ use program_image::{Instr, Operand, Transfer};
 use project_model::{Pou, PouKind, Property};
 
 use super::body::{BodyGen, Gen};
+use super::error::fail;
 use crate::sema::scope::{LocalSymbol, inheritance_chain};
 use crate::sema::ty::Type;
-use crate::syntax::{SyntaxKind, SyntaxNode};
+use crate::syntax::SyntaxKind;
+use crate::syntax::ast::Expr;
 
 /// The image name of a property accessor, as `Build::pou_index` knows it.
 pub(crate) fn accessor_name(property: &str, get: bool) -> String {
@@ -19,12 +21,11 @@ impl<'p> BodyGen<'_, '_, 'p> {
     /// one: `Prop` inside the function block or `fb.Prop` outside.
     pub(crate) fn property_of(
         &mut self,
-        node: &SyntaxNode,
+        node: &Expr,
     ) -> Gen<Option<(&'p Pou, &'p Property, Operand)>> {
-        match node.kind() {
-            SyntaxKind::NAME_EXPR => {
-                let Some(name) = super::expr::tokens(node).find(|t| t.kind() == SyntaxKind::IDENT)
-                else {
+        match node {
+            Expr::NameExpr(name_expr) => {
+                let Some(name) = name_expr.ident() else {
                     return Ok(None);
                 };
                 let Some(LocalSymbol::Property(property)) = self.scope.local(name.text()) else {
@@ -41,14 +42,11 @@ impl<'p> BodyGen<'_, '_, 'p> {
                 });
                 Ok(Some((owner, property, this)))
             }
-            SyntaxKind::FIELD_EXPR => {
-                let Some(base) = node.children().next() else {
+            Expr::FieldExpr(field) => {
+                let Some(base) = field.base() else {
                     return Ok(None);
                 };
-                let Some(member) = super::expr::tokens(node)
-                    .filter(|t| t.kind() == SyntaxKind::IDENT)
-                    .last()
-                else {
+                let Some(member) = field.member().filter(|t| t.kind() == SyntaxKind::IDENT) else {
                     return Ok(None);
                 };
                 let Type::Named(type_name) = self.type_of(&base) else {
@@ -92,7 +90,7 @@ impl<'p> BodyGen<'_, '_, 'p> {
         let accessor = property
             .get
             .as_ref()
-            .ok_or_else(|| format!("the property '{}' has no GET", property.name))?;
+            .ok_or_else(|| fail!("the property '{}' has no GET", property.name))?;
         let index = self
             .build
             .pou_index(&owner.name, Some(&accessor_name(&property.name, true)))?;
@@ -120,12 +118,12 @@ impl<'p> BodyGen<'_, '_, 'p> {
         owner: &'p Pou,
         property: &'p Property,
         instance: Operand,
-        value: &SyntaxNode,
+        value: &Expr,
     ) -> Gen<()> {
         let accessor = property
             .set
             .as_ref()
-            .ok_or_else(|| format!("the property '{}' has no SET", property.name))?;
+            .ok_or_else(|| fail!("the property '{}' has no SET", property.name))?;
         let index = self
             .build
             .pou_index(&owner.name, Some(&accessor_name(&property.name, false)))?;

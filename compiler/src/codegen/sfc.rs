@@ -12,9 +12,12 @@ use std::collections::HashMap;
 use program_image::{BinaryOp, Elementary as IE, Instr, Operand};
 
 use super::body::{BodyGen, Gen};
-use super::expr::tokens;
+use super::error::fail;
 use crate::sema::ty::Type;
-use crate::syntax::{SyntaxKind, SyntaxNode, parse_statements};
+use crate::syntax::ast::{
+    Arg, AstNode, CallExpr, SourceFile, StatementList, StepDecl, StepList, Stmt,
+};
+use crate::syntax::{SyntaxNode, parse_statements};
 
 /// One step's state in the instance.
 #[derive(Clone, Debug)]
@@ -48,25 +51,19 @@ impl SfcLayout {
         if !text.to_ascii_uppercase().contains("STEP") {
             return None;
         }
-        let root = top_level(&parse_statements(text).syntax());
+        let root = top_level(&parse_statements(text).syntax())?;
         let mut layout = Self {
             initialised: offset,
             ..Self::default()
         };
         let mut at = (offset + 1).next_multiple_of(8);
-        for step in root
-            .children()
-            .filter(|n| n.kind() == SyntaxKind::STEP_DECL)
-        {
-            let Some(name) = step.children().find(|c| c.kind() == SyntaxKind::NAME) else {
+        for step in root.steps() {
+            let Some(name) = step.name() else {
                 continue;
             };
-            let initial = tokens(&step)
-                .next()
-                .is_some_and(|t| t.text().eq_ignore_ascii_case("INITIAL_STEP"));
             layout.steps.push(StepSlots {
-                name: name.text().to_string().trim().to_owned(),
-                initial,
+                name: name.text(),
+                initial: step.is_initial(),
                 active: at,
                 fresh: at + 1,
                 elapsed: at + 4,
@@ -101,39 +98,36 @@ impl SfcLayout {
 
 /// The statements at the top of a body: a chart's steps, transitions and actions are among
 /// them.
-pub(crate) fn top_level(root: &SyntaxNode) -> SyntaxNode {
-    root.children()
-        .find(|n| n.kind() == SyntaxKind::STATEMENT_LIST)
-        .unwrap_or_else(|| root.clone())
+pub(crate) fn top_level(root: &SyntaxNode) -> Option<StatementList> {
+    SourceFile::cast(root.clone()).and_then(|file| file.statement_list())
 }
 
 /// The action associations of a step: (lower-case action name, upper-case qualifier).
-fn associations(step: &SyntaxNode) -> Vec<(String, String)> {
-    step.descendants()
-        .filter(|n| n.kind() == SyntaxKind::CALL_EXPR)
+fn associations(step: &StepDecl) -> Vec<(String, String)> {
+    step.syntax()
+        .descendants()
+        .filter_map(CallExpr::cast)
         .filter_map(|call| {
             let name = call
-                .children()
-                .next()?
+                .callee()?
+                .syntax()
                 .text()
                 .to_string()
                 .trim()
                 .to_lowercase();
             let qualifier = call
+                .syntax()
                 .descendants()
-                .find(|n| n.kind() == SyntaxKind::ARG)
-                .map(|arg| arg.text().to_string().trim().to_ascii_uppercase())
+                .find_map(Arg::cast)
+                .map(|arg| arg.syntax().text().to_string().trim().to_ascii_uppercase())
                 .unwrap_or_else(|| "N".to_owned());
             Some((name, qualifier))
         })
         .collect()
 }
 
-fn step_names(list: &SyntaxNode) -> Vec<String> {
-    list.children()
-        .filter(|n| n.kind() == SyntaxKind::NAME_REF)
-        .map(|n| n.text().to_string().trim().to_owned())
-        .collect()
+fn step_names(list: &StepList) -> Vec<String> {
+    list.steps().map(|step| step.text()).collect()
 }
 
 impl BodyGen<'_, '_, '_> {
@@ -141,7 +135,7 @@ impl BodyGen<'_, '_, '_> {
         self.instance
             .as_ref()
             .and_then(|i| i.sfc.clone())
-            .ok_or_else(|| "SFC steps are only allowed in a program or function block".to_owned())
+            .ok_or_else(|| "SFC steps are only allowed in a program or function block".into())
     }
 
     fn set_bool(&mut self, offset: u32, value: bool) {
@@ -171,10 +165,10 @@ impl BodyGen<'_, '_, '_> {
 
     /// Runs the action `name`: one declared in the chart (its statements, inline) or an action
     /// of the POU.
-    fn run_action(&mut self, name: &str, inline: &HashMap<String, SyntaxNode>) -> Gen<()> {
+    fn run_action(&mut self, name: &str, inline: &HashMap<String, StatementList>) -> Gen<()> {
         if let Some(statements) = inline.get(name) {
             let statements = statements.clone();
-            return self.statements_of(&statements);
+            return self.statement_list(&statements);
         }
         let pou = self.pou;
         let action = pou
@@ -211,7 +205,7 @@ impl BodyGen<'_, '_, '_> {
                 });
                 Ok(both)
             }
-            other => Err(format!(
+            other => Err(fail!(
                 "the action qualifier {other} is not supported yet (N, P, S and R are)"
             )),
         }
@@ -244,27 +238,19 @@ impl BodyGen<'_, '_, '_> {
 
     /// Generates a body holding a chart: its plain statements, then one step of the chart.
     pub(crate) fn chart(&mut self, root: &SyntaxNode) -> Gen<()> {
-        let root = &top_level(root);
+        let Some(root) = &top_level(root) else {
+            return Ok(());
+        };
         let sfc = self.sfc()?;
         let mut inline = HashMap::new();
-        for action in root
-            .children()
-            .filter(|n| n.kind() == SyntaxKind::ACTION_DECL)
-        {
-            let name = action.children().find(|c| c.kind() == SyntaxKind::NAME);
-            let body = action
-                .children()
-                .find(|c| c.kind() == SyntaxKind::STATEMENT_LIST);
-            if let (Some(name), Some(body)) = (name, body) {
-                inline.insert(name.text().to_string().trim().to_lowercase(), body);
+        for action in root.actions() {
+            if let (Some(name), Some(body)) = (action.name(), action.body()) {
+                inline.insert(name.text().to_lowercase(), body);
             }
         }
-        for child in root.children() {
-            if !matches!(
-                child.kind(),
-                SyntaxKind::STEP_DECL | SyntaxKind::TRANSITION_DECL | SyntaxKind::ACTION_DECL
-            ) {
-                self.statements_of(&child)?;
+        for statement in root.statements() {
+            if !matches!(statement, Stmt::StepDecl(_) | Stmt::TransitionDecl(_)) {
+                self.statement_with_line(&statement)?;
             }
         }
         let now = self.temp(8);
@@ -305,10 +291,7 @@ impl BodyGen<'_, '_, '_> {
             self.patch(skip, after);
         }
         // (3) Actions by qualifier.
-        let steps: Vec<SyntaxNode> = root
-            .children()
-            .filter(|n| n.kind() == SyntaxKind::STEP_DECL)
-            .collect();
+        let steps: Vec<StepDecl> = root.steps().collect();
         // An action may also be a BOOL variable (IEC's boolean action): it is TRUE exactly
         // while some association controls it.
         let is_action = |name: &str| {
@@ -321,11 +304,11 @@ impl BodyGen<'_, '_, '_> {
         };
         let mut boolean: Vec<(String, Operand)> = Vec::new();
         for node in &steps {
-            let Some(name) = node.children().find(|c| c.kind() == SyntaxKind::NAME) else {
+            let Some(name) = node.name() else {
                 continue;
             };
             let step = sfc
-                .step(name.text().to_string().trim())
+                .step(&name.text())
                 .cloned()
                 .ok_or("a step without state")?;
             for (action, qualifier) in associations(node) {
@@ -380,28 +363,12 @@ impl BodyGen<'_, '_, '_> {
         }
         // (4) Transitions: all evaluated first, then fired.
         let mut fired = Vec::new();
-        for transition in root
-            .children()
-            .filter(|n| n.kind() == SyntaxKind::TRANSITION_DECL)
-        {
-            let lists: Vec<SyntaxNode> = transition
-                .children()
-                .filter(|n| n.kind() == SyntaxKind::STEP_LIST)
-                .collect();
-            let [from, to] = lists.as_slice() else {
-                return Err("a transition needs FROM and TO steps".to_owned());
+        for transition in root.transitions() {
+            let (Some(from), Some(to)) = (transition.from_steps(), transition.to_steps()) else {
+                return Err("a transition needs FROM and TO steps".into());
             };
             let condition = transition
-                .children()
-                .find(|n| {
-                    !matches!(
-                        n.kind(),
-                        SyntaxKind::STEP_LIST
-                            | SyntaxKind::NAME
-                            | SyntaxKind::ARG_LIST
-                            | SyntaxKind::STATEMENT_LIST
-                    )
-                })
+                .condition()
                 .ok_or("a transition needs a condition (':= condition;')")?;
             let enabled = self.temp(1);
             let value = self.expr_as(&condition, &Type::BOOL)?;
@@ -410,8 +377,8 @@ impl BodyGen<'_, '_, '_> {
                 dst: enabled,
                 src: value,
             });
-            for name in step_names(from) {
-                let step = sfc.step(&name).ok_or_else(|| format!("no step '{name}'"))?;
+            for name in step_names(&from) {
+                let step = sfc.step(&name).ok_or_else(|| fail!("no step '{name}'"))?;
                 self.emit(Instr::Binary {
                     op: BinaryOp::And,
                     ty: IE::Bool,
@@ -420,7 +387,7 @@ impl BodyGen<'_, '_, '_> {
                     b: Operand::Instance(step.active),
                 });
             }
-            fired.push((enabled, step_names(from), step_names(to)));
+            fired.push((enabled, step_names(&from), step_names(&to)));
         }
         for (enabled, from, to) in fired {
             let skip = self.emit(Instr::JumpIfNot {
@@ -430,14 +397,14 @@ impl BodyGen<'_, '_, '_> {
             for name in &from {
                 let step = sfc
                     .step(name)
-                    .ok_or_else(|| format!("no step '{name}'"))?
+                    .ok_or_else(|| fail!("no step '{name}'"))?
                     .clone();
                 self.set_bool(step.active, false);
             }
             for name in &to {
                 let step = sfc
                     .step(name)
-                    .ok_or_else(|| format!("no step '{name}'"))?
+                    .ok_or_else(|| fail!("no step '{name}'"))?
                     .clone();
                 self.activate(&step, now);
             }

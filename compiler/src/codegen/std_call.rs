@@ -5,11 +5,12 @@ use program_image::{BinaryOp, CompareOp, Elementary as IE, Instr, Operand, StdFu
 
 use super::body::{BodyGen, Gen, Place};
 use super::call::Argument;
+use super::error::fail;
 use super::expr::concrete;
 use super::layout::LayShape;
 use crate::elementary::Elementary;
 use crate::sema::ty::Type;
-use crate::syntax::SyntaxNode;
+use crate::syntax::ast::{CallExpr, Expr};
 
 /// The operation of a date and time function, if `name` is one.
 fn time_arithmetic(name: &str) -> Option<BinaryOp> {
@@ -42,9 +43,9 @@ fn formal_order(name: &str) -> &'static [&'static str] {
 
 impl BodyGen<'_, '_, '_> {
     /// The argument expressions in positional order (formal arguments put in their place).
-    fn ordered(&self, name: &str, args: &[Argument]) -> Gen<Vec<SyntaxNode>> {
+    fn ordered(&self, name: &str, args: &[Argument]) -> Gen<Vec<Expr>> {
         let order = formal_order(name);
-        let mut placed: Vec<(usize, SyntaxNode)> = Vec::new();
+        let mut placed: Vec<(usize, Expr)> = Vec::new();
         for (position, arg) in args.iter().enumerate() {
             let Some(value) = arg.value.clone() else {
                 continue;
@@ -70,7 +71,7 @@ impl BodyGen<'_, '_, '_> {
                     } else if upper == "K" || upper == "G" {
                         0
                     } else {
-                        return Err(format!("'{name}' has no input '{formal}'"));
+                        return Err(fail!("'{name}' has no input '{formal}'"));
                     }
                 }
             };
@@ -84,13 +85,13 @@ impl BodyGen<'_, '_, '_> {
     pub(crate) fn call_standard(
         &mut self,
         name: &str,
-        node: &SyntaxNode,
+        node: &CallExpr,
         args: &[Argument],
         want: Option<&Type>,
     ) -> Gen<Option<(Operand, Type)>> {
         let upper = name.to_ascii_uppercase();
         let values = self.ordered(&upper, args)?;
-        let result_ty = match self.type_of(node) {
+        let result_ty = match self.type_of(&Expr::CallExpr(node.clone())) {
             // A generic result (`INT_TO_BCD` gives ANY_BIT) takes the type of where it goes.
             Type::Generic(_) | Type::Error => {
                 want.cloned().unwrap_or(Type::Elementary(Elementary::Word))
@@ -101,7 +102,7 @@ impl BodyGen<'_, '_, '_> {
             values
                 .first()
                 .cloned()
-                .ok_or_else(|| format!("'{name}' needs an argument"))
+                .ok_or_else(|| fail!("'{name}' needs an argument"))
         };
         // Conversions: `INT_TO_REAL`, `TO_INT`, `TRUNC_INT`, `INT_TO_BCD`, `BCD_TO_INT`…
         let conversion = upper.strip_prefix("TO_").map(|_| "").or_else(|| {
@@ -169,7 +170,7 @@ impl BodyGen<'_, '_, '_> {
             let value = self.expr_as(&first()?, &result_ty)?;
             let scalar = self
                 .scalar_of(&result_ty)
-                .ok_or_else(|| format!("'{name}' on {result_ty}"))?;
+                .ok_or_else(|| fail!("'{name}' on {result_ty}"))?;
             let dst = self.temp(scalar.size_bytes());
             self.emit(Instr::Unary {
                 op,
@@ -200,11 +201,11 @@ impl BodyGen<'_, '_, '_> {
         if let Some(op) = binary {
             let scalar = self
                 .scalar_of(&result_ty)
-                .ok_or_else(|| format!("'{name}' on {result_ty}"))?;
+                .ok_or_else(|| fail!("'{name}' on {result_ty}"))?;
             let mut operands = values.iter();
             let first_node = operands
                 .next()
-                .ok_or_else(|| format!("'{name}' needs arguments"))?;
+                .ok_or_else(|| fail!("'{name}' needs arguments"))?;
             let mut acc = self.expr_as(first_node, &result_ty)?;
             for next in operands {
                 let value = self.expr_as(next, &result_ty)?;
@@ -230,7 +231,7 @@ impl BodyGen<'_, '_, '_> {
             }
             "LIMIT" => {
                 let [mn, input, mx] = values.as_slice() else {
-                    return Err("LIMIT needs MN, IN and MX".to_owned());
+                    return Err("LIMIT needs MN, IN and MX".into());
                 };
                 let scalar = self.scalar_of(&result_ty).ok_or("LIMIT on a number")?;
                 let (mn, input, mx) = (
@@ -258,7 +259,7 @@ impl BodyGen<'_, '_, '_> {
             }
             "SEL" => {
                 let [g, in0, in1] = values.as_slice() else {
-                    return Err("SEL needs G, IN0 and IN1".to_owned());
+                    return Err("SEL needs G, IN0 and IN1".into());
                 };
                 let lay = self.lay(&result_ty)?;
                 let dst = self.temp(lay.size);
@@ -280,7 +281,7 @@ impl BodyGen<'_, '_, '_> {
             }
             "MUX" => {
                 let Some((k, inputs)) = values.split_first() else {
-                    return Err("MUX needs K and inputs".to_owned());
+                    return Err("MUX needs K and inputs".into());
                 };
                 let lay = self.lay(&result_ty)?;
                 let dst = self.temp(lay.size);
@@ -343,11 +344,11 @@ impl BodyGen<'_, '_, '_> {
             }
             "LOWER_BOUND" | "UPPER_BOUND" => {
                 let [array, dim] = values.as_slice() else {
-                    return Err(format!("{name} needs an array and a dimension"));
+                    return Err(fail!("{name} needs an array and a dimension"));
                 };
                 let dim = match super::constant::evaluate_node(dim, self.scope.globals) {
                     Some(super::constant::Value::Int(d)) if d >= 1 => d as u32,
-                    _ => return Err(format!("{name}'s dimension must be a constant from 1")),
+                    _ => return Err(fail!("{name}'s dimension must be a constant from 1")),
                 };
                 let upper = upper == "UPPER_BOUND";
                 let typed = self.place(array)?;
@@ -366,7 +367,7 @@ impl BodyGen<'_, '_, '_> {
                         self.build
                             .scalar_constant((if upper { high } else { low }) as u64, IE::Lint)
                     }
-                    _ => return Err(format!("{name}: the array has no dimension {dim}")),
+                    _ => return Err(fail!("{name}: the array has no dimension {dim}")),
                 };
                 let dst = self.temp(8);
                 self.emit(Instr::Convert {
@@ -393,7 +394,7 @@ impl BodyGen<'_, '_, '_> {
             }
             "LEN" | "LEFT" | "RIGHT" | "MID" | "CONCAT" | "INSERT" | "DELETE" | "REPLACE"
             | "FIND" => self.string_function(&upper, &values, &result_ty).map(Some),
-            _ => Err(format!(
+            _ => Err(fail!(
                 "the standard function '{name}' is not supported by the code generator yet"
             )),
         }
@@ -405,11 +406,11 @@ impl BodyGen<'_, '_, '_> {
     fn time_arithmetic(
         &mut self,
         op: BinaryOp,
-        values: &[SyntaxNode],
+        values: &[Expr],
         result_ty: &Type,
     ) -> Gen<(Operand, Type)> {
         let [a, b] = values else {
-            return Err("a time function takes two arguments".to_owned());
+            return Err("a time function takes two arguments".into());
         };
         let result = self.scalar_of(result_ty).ok_or("a time result")?;
         let nanos = Type::Elementary(Elementary::Ltime);
@@ -453,7 +454,7 @@ impl BodyGen<'_, '_, '_> {
 
     fn convert_explicit(&mut self, value: Operand, from: &Type, to: &Type) -> Gen<Operand> {
         let (Some(a), Some(b)) = (self.scalar_of(from), self.scalar_of(to)) else {
-            return Err(format!("converting {from} to {to}"));
+            return Err(fail!("converting {from} to {to}"));
         };
         if a == b {
             return Ok(value);
@@ -492,7 +493,7 @@ impl BodyGen<'_, '_, '_> {
             (_, Type::String { wide, length }) => {
                 let scalar = self
                     .scalar_of(from)
-                    .ok_or_else(|| format!("converting {from} to text"))?;
+                    .ok_or_else(|| fail!("converting {from} to text"))?;
                 let lay = self.lay(to)?;
                 let dst = self.temp(lay.size);
                 self.emit(Instr::ToText {
@@ -507,7 +508,7 @@ impl BodyGen<'_, '_, '_> {
             (Type::String { wide, length }, _) => {
                 let scalar = self
                     .scalar_of(to)
-                    .ok_or_else(|| format!("converting text to {to}"))?;
+                    .ok_or_else(|| fail!("converting text to {to}"))?;
                 let dst = self.temp(8);
                 self.emit(Instr::FromText {
                     to: scalar,
@@ -521,7 +522,7 @@ impl BodyGen<'_, '_, '_> {
             _ => {}
         }
         let (Some(a), Some(b)) = (self.scalar_of(from), self.scalar_of(to)) else {
-            return Err(format!("converting {from} to {to} is not supported yet"));
+            return Err(fail!("converting {from} to {to} is not supported yet"));
         };
         if a == b && !trunc {
             return Ok((value, to.clone()));
@@ -548,7 +549,7 @@ impl BodyGen<'_, '_, '_> {
     fn string_function(
         &mut self,
         name: &str,
-        values: &[SyntaxNode],
+        values: &[Expr],
         result_ty: &Type,
     ) -> Gen<(Operand, Type)> {
         let function = match name {
@@ -571,7 +572,7 @@ impl BodyGen<'_, '_, '_> {
                     wide = w;
                     let (operand, actual) = self.expr(value, None)?;
                     let Type::String { length, .. } = actual else {
-                        return Err("a string argument".to_owned());
+                        return Err("a string argument".into());
                     };
                     args.push((operand, length));
                 }

@@ -30,14 +30,62 @@ impl Address {
     }
 }
 
+/// Why a text is not a direct address; each variant names the text as written.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub(crate) enum AddressError {
+    /// `IX0.0`: no `%`.
+    #[error("'{text}' is not a direct address: it must start with '%'")]
+    NoPercent {
+        /// The address.
+        text: String,
+    },
+    /// `%ZX0.0`: no area letter.
+    #[error("'{text}' names no memory area: write %I (inputs), %Q (outputs) or %M (markers)")]
+    NoArea {
+        /// The address.
+        text: String,
+    },
+    /// `%IK3`: no size letter.
+    #[error(
+        "'{text}' has no valid size: write X (bit), B (byte), W (word), D (double word) or L (long word)"
+    )]
+    NoSize {
+        /// The address.
+        text: String,
+    },
+    /// `%IWx`: a part that is no number.
+    #[error("'{text}' is not a valid address: '{part}' is not a number")]
+    NotANumber {
+        /// The address.
+        text: String,
+        /// The part.
+        part: String,
+    },
+    /// `%IX0.8`: a bit past the byte.
+    #[error("'{text}' names bit {bit}, but a byte has bits 0 to 7")]
+    NoSuchBit {
+        /// The address.
+        text: String,
+        /// The bit named.
+        bit: u64,
+    },
+}
+
+/// The message of an address error, for the IDE functions that give errors as text.
+impl From<AddressError> for String {
+    fn from(error: AddressError) -> Self {
+        error.to_string()
+    }
+}
+
 /// Parses `text`; `Ok(None)` for an address left to the I/O mapping (`%I*`), `Err` with what is
 /// wrong otherwise.
-pub(crate) fn parse_address(text: &str) -> Result<Option<Address>, String> {
+pub(crate) fn parse_address(text: &str) -> Result<Option<Address>, AddressError> {
     let upper = text.to_ascii_uppercase();
     let Some(rest) = upper.strip_prefix('%') else {
-        return Err(format!(
-            "'{text}' is not a direct address: it must start with '%'"
-        ));
+        return Err(AddressError::NoPercent {
+            text: text.to_owned(),
+        });
     };
     let mut chars = rest.chars();
     let area = match chars.next() {
@@ -45,9 +93,9 @@ pub(crate) fn parse_address(text: &str) -> Result<Option<Address>, String> {
         Some('Q') => Area::Output,
         Some('M') => Area::Memory,
         _ => {
-            return Err(format!(
-                "'{text}' names no memory area: write %I (inputs), %Q (outputs) or %M (markers)"
-            ));
+            return Err(AddressError::NoArea {
+                text: text.to_owned(),
+            });
         }
     };
     let rest = chars.as_str();
@@ -62,9 +110,9 @@ pub(crate) fn parse_address(text: &str) -> Result<Option<Address>, String> {
         Some('L') => (64, &rest[1..]),
         Some(c) if c.is_ascii_digit() => (1, rest),
         _ => {
-            return Err(format!(
-                "'{text}' has no valid size: write X (bit), B (byte), W (word), D (double word) or L (long word)"
-            ));
+            return Err(AddressError::NoSize {
+                text: text.to_owned(),
+            });
         }
     };
     let parts: Vec<&str> = numbers.split('.').collect();
@@ -73,18 +121,20 @@ pub(crate) fn parse_address(text: &str) -> Result<Option<Address>, String> {
         match part.parse::<u64>() {
             Ok(value) => values.push(value),
             Err(_) => {
-                return Err(format!(
-                    "'{text}' is not a valid address: '{part}' is not a number"
-                ));
+                return Err(AddressError::NotANumber {
+                    text: text.to_owned(),
+                    part: (*part).to_owned(),
+                });
             }
         }
     }
     let first_bit = match (size_bits, values.as_slice()) {
         (1, [byte, bit]) => {
             if *bit > 7 {
-                return Err(format!(
-                    "'{text}' names bit {bit}, but a byte has bits 0 to 7"
-                ));
+                return Err(AddressError::NoSuchBit {
+                    text: text.to_owned(),
+                    bit: *bit,
+                });
             }
             byte * 8 + bit
         }
@@ -118,7 +168,12 @@ mod tests {
         assert_eq!(parse_address("%QD2").unwrap().unwrap().bits(), 64..96);
         assert_eq!(parse_address("%I*"), Ok(None));
         assert_eq!(parse_address("%Q*"), Ok(None));
-        assert!(parse_address("%IX0.8").unwrap_err().contains("bits 0 to 7"));
+        assert!(
+            parse_address("%IX0.8")
+                .unwrap_err()
+                .to_string()
+                .contains("bits 0 to 7")
+        );
         assert_eq!(parse_address("%QX75").unwrap().unwrap().first_bit, 75);
         assert_eq!(parse_address("%IW1.2.3"), Ok(None));
         assert!(parse_address("%ZW1").is_err());

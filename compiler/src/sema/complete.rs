@@ -10,7 +10,8 @@ use super::signatures;
 use super::stdlib;
 use super::ty::Type;
 use super::types::Shape;
-use crate::syntax::{SyntaxKind, parse_statements};
+use crate::syntax::ast::{AstNode, Expr};
+use crate::syntax::parse_statements;
 
 /// One completion candidate.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -98,19 +99,20 @@ fn members_before(globals: &Globals<'_>, scope: &Scope<'_, '_>, text: &str) -> V
     let expression = parse
         .syntax()
         .descendants()
-        .filter(|node| {
-            usize::from(node.text_range().end()) == end
+        .filter_map(Expr::cast)
+        .filter(|expression| {
+            usize::from(expression.syntax().text_range().end()) == end
                 && matches!(
-                    node.kind(),
-                    SyntaxKind::NAME_EXPR
-                        | SyntaxKind::FIELD_EXPR
-                        | SyntaxKind::INDEX_EXPR
-                        | SyntaxKind::DEREF_EXPR
-                        | SyntaxKind::CALL_EXPR
-                        | SyntaxKind::PAREN_EXPR
+                    expression,
+                    Expr::NameExpr(_)
+                        | Expr::FieldExpr(_)
+                        | Expr::IndexExpr(_)
+                        | Expr::DerefExpr(_)
+                        | Expr::CallExpr(_)
+                        | Expr::ParenExpr(_)
                 )
         })
-        .min_by_key(|node| node.text_range().start());
+        .min_by_key(|expression| expression.syntax().text_range().start());
     let Some(expression) = expression else {
         return Vec::new();
     };

@@ -2,7 +2,8 @@
 //! CASE labels need at compile time.
 
 use crate::literal;
-use crate::syntax::{SyntaxKind, SyntaxNode, SyntaxToken, parse_statements};
+use crate::syntax::ast::{AssignStmt, AstNode, Expr};
+use crate::syntax::{SyntaxKind, SyntaxToken, parse_statements};
 
 /// A value known at compile time.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -34,43 +35,39 @@ pub(crate) const MAX_CONSTANT_DEPTH: u32 = 16;
 
 /// The value of the expression `node`, where `name` gives the value of a named constant (at
 /// the given depth) or `None` when the name is not a constant.
-pub(crate) fn evaluate(node: &SyntaxNode, name: &Constants<'_>, depth: u32) -> Option<Const> {
+pub(crate) fn evaluate(node: &Expr, name: &Constants<'_>, depth: u32) -> Option<Const> {
     if depth > MAX_CONSTANT_DEPTH {
         return None;
     }
-    match node.kind() {
-        SyntaxKind::LITERAL => literal_value(&significant_tokens(node).next()?),
-        SyntaxKind::TYPED_LITERAL => {
-            let tokens: Vec<SyntaxToken> = significant_tokens(node).collect();
-            let negative = tokens.iter().any(|token| token.kind() == SyntaxKind::MINUS);
-            let value = tokens.last()?;
+    match node {
+        Expr::Literal(literal) => literal_value(&literal.token()?),
+        Expr::TypedLiteral(literal) => {
+            let value = literal.value()?;
             if value.kind() == SyntaxKind::IDENT {
                 // `E_State#Idle`: an enumeration value.
-                return name(value.text(), Some(tokens.first()?.text()), depth + 1);
+                return name(value.text(), Some(literal.type_name()?.text()), depth + 1);
             }
-            let value = literal_value(value)?;
-            Some(if negative { negate(value)? } else { value })
+            let value = literal_value(&value)?;
+            Some(if literal.is_negative() {
+                negate(value)?
+            } else {
+                value
+            })
         }
-        SyntaxKind::PAREN_EXPR => evaluate(&node.children().next()?, name, depth + 1),
-        SyntaxKind::NAME_EXPR => {
-            let token = significant_tokens(node).find(|t| t.kind() == SyntaxKind::IDENT)?;
-            name(token.text(), None, depth + 1)
-        }
-        SyntaxKind::FIELD_EXPR => {
+        Expr::ParenExpr(paren) => evaluate(&paren.inner()?, name, depth + 1),
+        Expr::NameExpr(expr) => name(expr.ident()?.text(), None, depth + 1),
+        Expr::FieldExpr(field) => {
             // `E_State.Idle` or `GVL.cMax`.
-            let base = node.children().next()?;
-            if base.kind() != SyntaxKind::NAME_EXPR {
+            let Expr::NameExpr(base) = field.base()? else {
                 return None;
-            }
-            let container = base.text().to_string();
-            let member = significant_tokens(node)
-                .filter(|t| t.kind() == SyntaxKind::IDENT)
-                .last()?;
+            };
+            let container = base.syntax().text().to_string();
+            let member = field.member().filter(|t| t.kind() == SyntaxKind::IDENT)?;
             name(member.text(), Some(container.trim()), depth + 1)
         }
-        SyntaxKind::UNARY_EXPR => {
-            let operator = significant_tokens(node).next()?.kind();
-            let operand = evaluate(&node.children().next()?, name, depth + 1)?;
+        Expr::UnaryExpr(unary) => {
+            let operator = unary.op()?.kind();
+            let operand = evaluate(&unary.operand()?, name, depth + 1)?;
             match operator {
                 SyntaxKind::MINUS => negate(operand),
                 SyntaxKind::PLUS => Some(operand),
@@ -81,22 +78,13 @@ pub(crate) fn evaluate(node: &SyntaxNode, name: &Constants<'_>, depth: u32) -> O
                 _ => None,
             }
         }
-        SyntaxKind::BINARY_EXPR => {
-            let mut operands = node.children();
-            let left = evaluate(&operands.next()?, name, depth + 1)?;
-            let right = evaluate(&operands.next()?, name, depth + 1)?;
-            let operator = significant_tokens(node).next()?.kind();
-            binary(operator, left, right)
+        Expr::BinaryExpr(binary_expr) => {
+            let left = evaluate(&binary_expr.lhs()?, name, depth + 1)?;
+            let right = evaluate(&binary_expr.rhs()?, name, depth + 1)?;
+            binary(binary_expr.op()?.kind(), left, right)
         }
         _ => None,
     }
-}
-
-/// The tokens directly in `node`, without trivia.
-fn significant_tokens(node: &SyntaxNode) -> impl Iterator<Item = SyntaxToken> {
-    node.children_with_tokens()
-        .filter_map(|element| element.into_token())
-        .filter(|token| !token.kind().is_trivia())
 }
 
 fn literal_value(token: &SyntaxToken) -> Option<Const> {
@@ -180,16 +168,13 @@ fn as_real(value: Const) -> f64 {
 
 /// The expression written as `text` (an initial value, an enumeration value), parsed alone.
 /// `None` when it is not a single expression.
-pub(crate) fn parse_expression(text: &str) -> Option<SyntaxNode> {
+pub(crate) fn parse_expression(text: &str) -> Option<Expr> {
     let parse = parse_statements(&format!("__value := {text};"));
     if !parse.errors().is_empty() {
         return None;
     }
-    let statement = parse
-        .syntax()
-        .descendants()
-        .find(|node| node.kind() == SyntaxKind::ASSIGN_STMT)?;
-    statement.children().nth(1)
+    let statement = parse.syntax().descendants().find_map(AssignStmt::cast)?;
+    statement.value()
 }
 
 #[cfg(test)]

@@ -22,7 +22,8 @@ use project_model::{
 };
 
 use crate::diagnostic::{Code, Diagnostic};
-use crate::syntax::{SyntaxKind, parse_statements, parse_type};
+use crate::syntax::ast::{AstNode, TypeExpr};
+use crate::syntax::{parse_statements, parse_type};
 use body::{BodyChecker, Usage};
 use scope::{Globals, Scope};
 
@@ -606,22 +607,18 @@ fn check_type(
         );
         return;
     }
-    for node in parse.syntax().descendants() {
-        if !matches!(
-            node.kind(),
-            SyntaxKind::NAMED_TYPE | SyntaxKind::STRING_TYPE
-        ) {
-            continue;
-        }
-        let Some(name_ref) = node
-            .children()
-            .find(|child| child.kind() == SyntaxKind::NAME_REF)
-        else {
+    for node in parse.syntax().descendants().filter_map(TypeExpr::cast) {
+        let name_ref = match node {
+            TypeExpr::NamedType(named) => named.name(),
+            TypeExpr::StringType(string) => string.name(),
+            _ => continue,
+        };
+        let Some(name_ref) = name_ref else {
             continue;
         };
-        let name = name_ref.text().to_string();
-        if !globals.is_type(name.trim()) {
-            let mut diagnostic = unknown(Code::UnknownType, "type", name.trim(), globals);
+        let name = name_ref.text();
+        if !globals.is_type(&name) {
+            let mut diagnostic = unknown(Code::UnknownType, "type", &name, globals);
             diagnostic.message = format!("{declared}: {}", diagnostic.message);
             report(declared, diagnostic);
         }

@@ -11,7 +11,8 @@ use project_model::{
 
 use super::ty::Type;
 use super::{closest, stdlib, types};
-use crate::syntax::{SyntaxKind, SyntaxNode};
+use crate::syntax::SyntaxNode;
+use crate::syntax::ast::{ActionDecl, AstNode, StepDecl};
 
 /// What a global name stands for.
 #[derive(Clone, Copy, Debug)]
@@ -298,16 +299,15 @@ impl<'a, 'p> Scope<'a, 'p> {
             .descendants()
             .chain(pou_body.iter().flat_map(SyntaxNode::descendants))
         {
-            let symbol = match node.kind() {
-                SyntaxKind::STEP_DECL => LocalSymbol::Step,
-                SyntaxKind::ACTION_DECL => LocalSymbol::Action,
-                _ => continue,
+            let (name, symbol) = if let Some(step) = StepDecl::cast(node.clone()) {
+                (step.name(), LocalSymbol::Step)
+            } else if let Some(action) = ActionDecl::cast(node) {
+                (action.name(), LocalSymbol::Action)
+            } else {
+                continue;
             };
-            if let Some(name) = node
-                .children()
-                .find(|child| child.kind() == SyntaxKind::NAME)
-            {
-                scope.add(name.text().to_string().trim(), symbol);
+            if let Some(name) = name {
+                scope.add(&name.text(), symbol);
             }
         }
         scope

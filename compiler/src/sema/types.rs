@@ -8,7 +8,8 @@ use super::scope::{GlobalSymbol, Globals, inheritance_chain};
 use super::signatures;
 use super::ty::{DEFAULT_STRING_LENGTH, Generic, Type};
 use crate::elementary::Elementary;
-use crate::syntax::{SyntaxKind, SyntaxNode, parse_type};
+use crate::syntax::ast::{AstNode, Expr, SourceFile, TypeExpr};
+use crate::syntax::parse_type;
 
 /// The type written as `text`; [`Type::Error`] when it does not parse or names nothing (the
 /// declaration check reports that).
@@ -37,7 +38,7 @@ fn resolve_text_at(
     if !parse.errors().is_empty() {
         return Type::Error;
     }
-    match parse.syntax().children().next() {
+    match SourceFile::cast(parse.syntax()).and_then(|file| file.type_expr()) {
         Some(node) => resolve_type_node(globals, &node, depth, constants),
         None => Type::Error,
     }
@@ -46,7 +47,7 @@ fn resolve_text_at(
 /// The type a type node of a declaration stands for.
 pub(crate) fn resolve_type_node(
     globals: &Globals<'_>,
-    node: &SyntaxNode,
+    node: &TypeExpr,
     depth: u32,
     constants: &Constants<'_>,
 ) -> Type {
@@ -54,97 +55,67 @@ pub(crate) fn resolve_type_node(
         return Type::Error;
     }
     let constant =
-        |expression: &SyntaxNode| evaluate(expression, constants, 0).and_then(Const::as_int);
-    match node.kind() {
-        SyntaxKind::NAMED_TYPE => {
-            let Some(name) = child_text(node, SyntaxKind::NAME_REF) else {
+        |expression: Option<Expr>| evaluate(&expression?, constants, 0).and_then(Const::as_int);
+    let inner = |target: Option<TypeExpr>| {
+        target.map_or(Type::Error, |target| {
+            resolve_type_node(globals, &target, depth + 1, constants)
+        })
+    };
+    match node {
+        TypeExpr::NamedType(named) => {
+            let Some(name) = named.name() else {
                 return Type::Error;
             };
-            let named = resolve_name(globals, &name, depth, constants);
-            if let Some(subrange) = node
-                .children()
-                .find(|child| child.kind() == SyntaxKind::SUBRANGE)
+            let named_type = resolve_name(globals, &name.text(), depth, constants);
+            if let Some(subrange) = named.subrange()
+                && let (Some(base), Some(low), Some(high)) = (
+                    named_type.as_elementary(),
+                    constant(subrange.low()),
+                    constant(subrange.high()),
+                )
             {
-                let bounds: Vec<Option<i128>> = subrange.children().map(|e| constant(&e)).collect();
-                if let (Some(base), [Some(low), Some(high)]) =
-                    (named.as_elementary(), bounds.as_slice())
-                {
-                    return Type::Subrange {
-                        base,
-                        low: *low,
-                        high: *high,
-                    };
-                }
+                return Type::Subrange { base, low, high };
             }
-            named
+            named_type
         }
-        SyntaxKind::STRING_TYPE => {
-            let wide = child_text(node, SyntaxKind::NAME_REF)
-                .is_some_and(|name| name.eq_ignore_ascii_case("WSTRING"));
-            let length = node
-                .children()
-                .find(|child| child.kind() != SyntaxKind::NAME_REF)
-                .and_then(|expression| constant(&expression))
+        TypeExpr::StringType(string) => {
+            let wide = string
+                .name()
+                .is_some_and(|name| name.text().eq_ignore_ascii_case("WSTRING"));
+            let length = constant(string.length())
                 .and_then(|length| u32::try_from(length).ok())
                 .unwrap_or(DEFAULT_STRING_LENGTH);
             Type::String { wide, length }
         }
-        SyntaxKind::ARRAY_TYPE => {
-            let dims = node
-                .children()
-                .filter(|child| child.kind() == SyntaxKind::ARRAY_RANGE)
-                .map(|range| {
-                    let bounds: Vec<Option<i128>> =
-                        range.children().map(|e| constant(&e)).collect();
-                    match bounds.as_slice() {
-                        [Some(low), Some(high)] => Some((*low, *high)),
+        TypeExpr::ArrayType(array) => {
+            let dims = array
+                .ranges()
+                .map(
+                    |range| match (constant(range.low()), constant(range.high())) {
+                        (Some(low), Some(high)) => Some((low, high)),
                         _ => None,
-                    }
-                })
+                    },
+                )
                 .collect();
-            let element = node
-                .children()
-                .filter(|child| child.kind() != SyntaxKind::ARRAY_RANGE)
-                .last()
-                .map_or(Type::Error, |element| {
-                    resolve_type_node(globals, &element, depth + 1, constants)
-                });
             Type::Array {
-                element: Box::new(element),
+                element: Box::new(inner(array.element_type())),
                 dims,
             }
         }
-        SyntaxKind::POINTER_TYPE => Type::Pointer(Box::new(inner(globals, node, depth, constants))),
-        SyntaxKind::REFERENCE_TYPE => {
-            let target = Box::new(inner(globals, node, depth, constants));
+        TypeExpr::PointerType(pointer) => Type::Pointer(Box::new(inner(pointer.target()))),
+        TypeExpr::ReferenceType(reference) => {
+            let target = Box::new(inner(reference.target()));
             // IEC's REF_TO is dereferenced with '^' like a pointer; CODESYS's REFERENCE TO is
             // used as the variable it refers to.
-            let iec_reference = node
-                .first_token()
-                .is_some_and(|token| token.kind() == SyntaxKind::REF_TO);
-            if iec_reference {
+            if reference.is_ref_to() {
                 Type::Pointer(target)
             } else {
                 Type::Reference(target)
             }
         }
-        SyntaxKind::TYPE_REF => node.children().next().map_or(Type::Error, |child| {
-            resolve_type_node(globals, &child, depth + 1, constants)
-        }),
-        _ => Type::Error,
+        TypeExpr::TypeRef(type_ref) => inner(type_ref.ty()),
+        TypeExpr::EnumType(_) => Type::Error,
     }
-}
-
-fn inner(globals: &Globals<'_>, node: &SyntaxNode, depth: u32, constants: &Constants<'_>) -> Type {
-    node.children().next().map_or(Type::Error, |target| {
-        resolve_type_node(globals, &target, depth + 1, constants)
-    })
-}
-
-fn child_text(node: &SyntaxNode, kind: SyntaxKind) -> Option<String> {
-    node.children()
-        .find(|child| child.kind() == kind)
-        .map(|child| child.text().to_string().trim().to_owned())
 }
 
 /// The type called `name`: elementary, generic, a standard function block or a type of the

@@ -4,6 +4,7 @@
 //! comments and pragmas included) plus the errors it found, and it recovers at statement and
 //! declaration boundaries so one mistake does not hide the rest of the file.
 
+pub mod ast;
 mod grammar;
 mod kind;
 mod lexer;

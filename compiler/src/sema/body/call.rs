@@ -3,6 +3,7 @@
 
 use super::resolution::signature_detail;
 use super::*;
+use crate::syntax::ast::{Arg, ArgKind, FieldExpr};
 
 /// A parameter of a call as the checker matches arguments to it.
 pub(super) struct Param {
@@ -12,41 +13,28 @@ pub(super) struct Param {
 }
 
 impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
-    pub(super) fn call(&mut self, node: &SyntaxNode) -> Type {
-        let Some(callee) = node.children().next() else {
+    pub(super) fn call(&mut self, call: &CallExpr) -> Type {
+        let node = call.syntax();
+        let Some(callee) = call.callee() else {
             return Type::Error;
         };
-        let arguments: Vec<SyntaxNode> = node
-            .children()
-            .find(|child| child.kind() == SyntaxKind::ARG_LIST)
-            .map(|list| {
-                list.children()
-                    .filter(|c| c.kind() == SyntaxKind::ARG)
-                    .collect()
-            })
-            .unwrap_or_default();
-        let callee_name = match callee.kind() {
-            SyntaxKind::NAME_EXPR => tokens(&callee)
-                .find(|t| {
-                    matches!(
-                        t.kind(),
-                        SyntaxKind::IDENT
-                            | SyntaxKind::MOD
-                            | SyntaxKind::AND
-                            | SyntaxKind::OR
-                            | SyntaxKind::XOR
-                    )
-                })
-                .map(|t| t.text().to_owned()),
+        let arguments: Vec<Arg> = call.args().collect();
+        let callee_name_expr = match &callee {
+            Expr::NameExpr(name) => Some(name.clone()),
             _ => None,
         };
+        let callee_name = callee_name_expr
+            .as_ref()
+            .and_then(NameExpr::name)
+            .map(|t| t.text().to_owned());
         let globals = self.scope.globals;
         // Functions and methods called by name.
         if let Some(name) = &callee_name
             && self.resolutions.is_some()
-            && let Some(token) = tokens(&callee).find(|t| t.kind() == SyntaxKind::IDENT)
+            && let Some(name_expr) = &callee_name_expr
+            && let Some(token) = name_expr.ident()
         {
-            let definition = self.definition_of_name(&token, &callee).or_else(|| {
+            let definition = self.definition_of_name(&token, name_expr).or_else(|| {
                 let signature = signatures::function(name).map(|sig| signature_detail(name, &sig));
                 let block = signatures::function_block(name)
                     .map(|_| format!("FUNCTION_BLOCK {}", name.to_ascii_uppercase()));
@@ -63,9 +51,7 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
             }
         }
         if let Some(name) = &callee_name {
-            let global_only = tokens(&callee)
-                .next()
-                .is_some_and(|t| t.kind() == SyntaxKind::DOT);
+            let global_only = callee_name_expr.as_ref().is_some_and(NameExpr::is_global);
             let local = if global_only {
                 None
             } else {
@@ -104,7 +90,7 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                         if stdlib::is_function_block(name) {
                             self.error(
                                 Code::InvalidCall,
-                                range_of(&callee),
+                                range_of(callee.syntax()),
                                 format!("'{name}' is a function block type; declare an instance and call that"),
                             );
                             self.arguments_unchecked(&arguments);
@@ -116,8 +102,8 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
         }
         // Everything else is an instance or a member: `fbTimer(…)`, `fb.Method(…)`.
         let callee_ty = self.expression(&callee, Mode::Read);
-        if callee.kind() == SyntaxKind::FIELD_EXPR
-            && let Some(method) = self.member_method(&callee)
+        if let Expr::FieldExpr(field) = &callee
+            && let Some(method) = self.member_method(field)
         {
             let (method_name, method) = method;
             let params = params_of(&method.variables, |t| self.resolve(t));
@@ -139,7 +125,7 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
             }
             Type::Named(type_name) if globals.is_instance_type(&type_name) => {
                 let params = self.instance_params(&type_name);
-                self.arguments(&text(&callee), &params, &arguments, false);
+                self.arguments(&text(callee.syntax()), &params, &arguments, false);
                 Type::Void
             }
             Type::Pointer(_) => {
@@ -149,8 +135,11 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
             other => {
                 self.error(
                     Code::InvalidCall,
-                    range_of(&callee),
-                    format!("'{}' is {other} and cannot be called", text(&callee)),
+                    range_of(callee.syntax()),
+                    format!(
+                        "'{}' is {other} and cannot be called",
+                        text(callee.syntax())
+                    ),
                 );
                 self.arguments_unchecked(&arguments);
                 Type::Error
@@ -161,12 +150,10 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
     /// The method a `base.Method` callee names, if it names one.
     pub(super) fn member_method(
         &self,
-        callee: &SyntaxNode,
+        callee: &FieldExpr,
     ) -> Option<(String, &'p project_model::Method)> {
-        let base = callee.children().next()?;
-        let member = tokens(callee)
-            .filter(|t| t.kind() == SyntaxKind::IDENT)
-            .last()?;
+        let base = callee.base()?;
+        let member = callee.member().filter(|t| t.kind() == SyntaxKind::IDENT)?;
         let globals = self.scope.globals;
         let type_name = match self.peek_type(&base)? {
             Type::Named(name) => name,
@@ -187,7 +174,7 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
     }
 
     /// The type of an expression without reporting anything (used to look ahead).
-    pub(super) fn peek_type(&self, node: &SyntaxNode) -> Option<Type> {
+    pub(super) fn peek_type(&self, node: &Expr) -> Option<Type> {
         let mut usage = Usage::new();
         let mut checker = BodyChecker::new(self.scope, &mut usage);
         Some(checker.expression(node, Mode::Read))
@@ -197,8 +184,8 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
         &mut self,
         name: &str,
         pou: &Pou,
-        callee: &SyntaxNode,
-        arguments: &[SyntaxNode],
+        callee: &Expr,
+        arguments: &[Arg],
     ) -> Type {
         match pou.kind {
             PouKind::Function => {
@@ -216,7 +203,7 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
             PouKind::FunctionBlock | PouKind::Interface => {
                 self.error(
                     Code::InvalidCall,
-                    range_of(callee),
+                    range_of(callee.syntax()),
                     format!("'{name}' is a function block type; declare an instance and call that"),
                 );
                 self.arguments_unchecked(arguments);
@@ -264,7 +251,7 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
         &mut self,
         callee: &str,
         params: &[Param],
-        arguments: &[SyntaxNode],
+        arguments: &[Arg],
         function_like: bool,
     ) {
         let positional_params: Vec<&Param> = params
@@ -274,12 +261,15 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
         let mut positional = 0usize;
         let mut given: Vec<String> = Vec::new();
         for argument in arguments {
-            let parts: Vec<SyntaxToken> = tokens(argument).collect();
-            let value = argument.children().next();
-            let formal = parts
-                .iter()
-                .position(|t| matches!(t.kind(), SyntaxKind::ASSIGN | SyntaxKind::OUTPUT_ASSIGN))
-                .and_then(|at| Some((parts.get(at.checked_sub(1)?)?.clone(), parts[at].kind())));
+            let value = argument.value();
+            let formal = argument.name().map(|name| {
+                let arrow = if argument.kind() == ArgKind::Output {
+                    SyntaxKind::OUTPUT_ASSIGN
+                } else {
+                    SyntaxKind::ASSIGN
+                };
+                (name, arrow)
+            });
             // EN and ENO belong to every call in IEC 61131-3.
             if let Some((name, arrow)) = &formal
                 && (name.text().eq_ignore_ascii_case("EN") && *arrow == SyntaxKind::ASSIGN
@@ -296,7 +286,7 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                     self.expect_type(
                         &ty,
                         &Type::BOOL,
-                        value,
+                        value.syntax(),
                         &format!("{} of '{callee}'", name.text()),
                     );
                 }
@@ -331,7 +321,7 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                     if param.is_none() {
                         self.error(
                             Code::InvalidCall,
-                            range_of(argument),
+                            range_of(argument.syntax()),
                             format!(
                                 "'{callee}' takes {} input(s), but more are given",
                                 positional_params.len()
@@ -362,7 +352,7 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                     };
                     self.error(
                         Code::InvalidCall,
-                        range_of(argument),
+                        range_of(argument.syntax()),
                         format!("'{}' is {what} of '{callee}'; {arrow}", param.name),
                     );
                 }
@@ -378,7 +368,7 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                     if !self.converts(&param.ty, &target) {
                         self.error(
                             Code::TypeMismatch,
-                            range_of(&value),
+                            range_of(value.syntax()),
                             format!("{context} must hold {}, but it is {target}", param.ty),
                         );
                     }
@@ -389,18 +379,18 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                     if !is_place(&value) {
                         self.error(
                             Code::NotAssignable,
-                            range_of(&value),
+                            range_of(value.syntax()),
                             format!("'{}' of '{callee}' is VAR_IN_OUT and needs a variable, not a value", param.name),
                         );
                     } else {
                         let context = format!("VAR_IN_OUT '{}' of '{callee}'", param.name);
-                        self.expect_type(&ty, &param.ty, &value, &context);
+                        self.expect_type(&ty, &param.ty, value.syntax(), &context);
                     }
                 }
                 _ => {
                     let ty = self.expression(&value, Mode::Read);
                     let context = format!("input '{}' of '{callee}'", param.name);
-                    self.expect_type(&ty, &param.ty, &value, &context);
+                    self.expect_type(&ty, &param.ty, value.syntax(), &context);
                 }
             }
         }
@@ -410,7 +400,7 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                 if !given.contains(&param.name.to_lowercase()) {
                     let range = arguments
                         .first()
-                        .and_then(|a| a.parent())
+                        .and_then(|a| a.syntax().parent())
                         .map_or(0..0, |list| range_of(&list));
                     self.error(
                         Code::InvalidCall,
@@ -425,10 +415,10 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
         }
     }
 
-    pub(super) fn arguments_unchecked(&mut self, arguments: &[SyntaxNode]) {
+    pub(super) fn arguments_unchecked(&mut self, arguments: &[Arg]) {
         for argument in arguments {
-            let output = tokens(argument).any(|t| t.kind() == SyntaxKind::OUTPUT_ASSIGN);
-            if let Some(value) = argument.children().next() {
+            let output = argument.kind() == ArgKind::Output;
+            if let Some(value) = argument.value() {
                 self.expression(&value, if output { Mode::Write } else { Mode::Read });
             }
         }
@@ -438,21 +428,19 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
         &mut self,
         name: &str,
         signature: &FunctionSig,
-        arguments: &[SyntaxNode],
+        arguments: &[Arg],
         node: &SyntaxNode,
     ) -> Type {
         let upper = name.to_ascii_uppercase();
         // Arguments by position, or by formal name (`IN1 := …`).
-        let mut typed: Vec<(Sig, Type, SyntaxNode)> = Vec::new();
+        let mut typed: Vec<(Sig, Type, Expr)> = Vec::new();
         for (index, argument) in arguments.iter().enumerate() {
-            let parts: Vec<SyntaxToken> = tokens(argument).collect();
-            let Some(value) = argument.children().next() else {
+            let Some(value) = argument.value() else {
                 continue;
             };
-            let formal = parts
-                .iter()
-                .position(|t| t.kind() == SyntaxKind::ASSIGN)
-                .and_then(|at| parts.get(at.checked_sub(1)?));
+            let formal = argument
+                .name()
+                .filter(|_| argument.kind() == ArgKind::Input);
             let writes = matches!(
                 upper.as_str(),
                 "ADR" | "ADRINST" | "__QUERYINTERFACE" | "__QUERYPOINTER"
@@ -461,7 +449,7 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
             if writes {
                 self.expression(&value, Mode::Read);
             }
-            let sig = match formal {
+            let sig = match &formal {
                 Some(formal) => signature
                     .inputs
                     .iter()
@@ -491,7 +479,7 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                             arguments.len()
                         ),
                     };
-                    self.error(Code::InvalidCall, range_of(argument), message);
+                    self.error(Code::InvalidCall, range_of(argument.syntax()), message);
                 }
             }
         }
@@ -515,7 +503,7 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                     if !generic.admits(ty) {
                         self.error(
                             Code::TypeMismatch,
-                            range_of(value),
+                            range_of(value.syntax()),
                             format!(
                                 "'{upper}' expects {} here, found {ty}",
                                 Type::Generic(*generic)
@@ -530,7 +518,7 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                             None => {
                                 self.error(
                                     Code::TypeMismatch,
-                                    range_of(value),
+                                    range_of(value.syntax()),
                                     format!("the inputs of '{upper}' must have one type, found {previous} and {ty}"),
                                 );
                                 Some(Type::Error)
@@ -541,7 +529,7 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                 Sig::Class(generic) if !generic.admits(ty) => {
                     self.error(
                         Code::TypeMismatch,
-                        range_of(value),
+                        range_of(value.syntax()),
                         format!(
                             "'{upper}' expects {} here, found {ty}",
                             Type::Generic(*generic)
@@ -550,14 +538,14 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                 }
                 Sig::E(elementary) => {
                     let expected = Type::elementary(*elementary);
-                    self.expect_type(ty, &expected, value, &format!("'{upper}'"));
+                    self.expect_type(ty, &expected, value.syntax(), &format!("'{upper}'"));
                 }
                 Sig::Str => match ty {
                     Type::String { wide, .. } => {
                         if string_wide.is_some_and(|w| w != *wide) {
                             self.error(
                                 Code::TypeMismatch,
-                                range_of(value),
+                                range_of(value.syntax()),
                                 format!("'{upper}' cannot mix STRING and WSTRING"),
                             );
                         }
@@ -566,7 +554,7 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                     Type::Error => {}
                     other => self.error(
                         Code::TypeMismatch,
-                        range_of(value),
+                        range_of(value.syntax()),
                         format!("'{upper}' expects a STRING or WSTRING here, found {other}"),
                     ),
                 },
@@ -613,13 +601,10 @@ pub(super) fn params_of(variables: &[Variable], resolve: impl Fn(&str) -> Type) 
 }
 
 /// Whether the expression names a place (a variable, member, element or dereference).
-pub(super) fn is_place(node: &SyntaxNode) -> bool {
-    match node.kind() {
-        SyntaxKind::NAME_EXPR
-        | SyntaxKind::FIELD_EXPR
-        | SyntaxKind::INDEX_EXPR
-        | SyntaxKind::DEREF_EXPR => true,
-        SyntaxKind::PAREN_EXPR => node.children().next().is_some_and(|inner| is_place(&inner)),
+pub(super) fn is_place(node: &Expr) -> bool {
+    match node {
+        Expr::NameExpr(_) | Expr::FieldExpr(_) | Expr::IndexExpr(_) | Expr::DerefExpr(_) => true,
+        Expr::ParenExpr(paren) => paren.inner().is_some_and(|inner| is_place(&inner)),
         _ => false,
     }
 }

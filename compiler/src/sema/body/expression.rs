@@ -3,31 +3,33 @@
 use super::resolution::variable_detail;
 use super::*;
 use crate::library::{AXIS_REF, CAM_REF};
+use crate::syntax::ast::{
+    Arg, BinaryExpr, FieldExpr, IndexExpr, InitValue, Literal, TypedLiteral, UnaryExpr,
+};
 
 impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
     /// The type of an expression, reporting what is wrong inside it, and noting it when the
     /// types are collected.
-    pub(super) fn expression(&mut self, node: &SyntaxNode, mode: Mode) -> Type {
+    pub(super) fn expression(&mut self, node: &Expr, mode: Mode) -> Type {
         let ty = self.expression_type(node, mode);
         if let Some(types) = &mut self.types {
-            types.insert(node.clone(), ty.clone());
+            types.insert(node.syntax().clone(), ty.clone());
         }
         ty
     }
 
-    fn expression_type(&mut self, node: &SyntaxNode, mode: Mode) -> Type {
-        match node.kind() {
-            SyntaxKind::LITERAL => literal_type(node),
-            SyntaxKind::TYPED_LITERAL => self.typed_literal(node),
-            SyntaxKind::PAREN_EXPR => node
-                .children()
-                .next()
+    fn expression_type(&mut self, node: &Expr, mode: Mode) -> Type {
+        match node {
+            Expr::Literal(literal) => literal_type(literal),
+            Expr::TypedLiteral(literal) => self.typed_literal(literal),
+            Expr::ParenExpr(paren) => paren
+                .inner()
                 .map_or(Type::Error, |inner| self.expression(&inner, mode)),
-            SyntaxKind::NAME_EXPR => self.name(node, mode),
-            SyntaxKind::FIELD_EXPR => self.field(node, mode),
-            SyntaxKind::INDEX_EXPR => self.index(node, mode),
-            SyntaxKind::DEREF_EXPR => {
-                let Some(base) = node.children().next() else {
+            Expr::NameExpr(name) => self.name(name, mode),
+            Expr::FieldExpr(field) => self.field(field, mode),
+            Expr::IndexExpr(index) => self.index(index, mode),
+            Expr::DerefExpr(deref) => {
+                let Some(base) = deref.base() else {
                     return Type::Error;
                 };
                 match self.expression(&base, Mode::Read) {
@@ -38,54 +40,66 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                     other => {
                         self.error(
                             Code::InvalidOperands,
-                            range_of(node),
+                            range_of(deref.syntax()),
                             format!("'^' needs a pointer, found {other}"),
                         );
                         Type::Error
                     }
                 }
             }
-            SyntaxKind::CALL_EXPR => self.call(node),
-            SyntaxKind::UNARY_EXPR => self.unary(node),
-            SyntaxKind::BINARY_EXPR => self.binary(node),
-            SyntaxKind::ADDRESS_EXPR => tokens(node)
-                .next()
+            Expr::CallExpr(call) => self.call(call),
+            Expr::UnaryExpr(unary) => self.unary(unary),
+            Expr::BinaryExpr(binary) => self.binary(binary),
+            Expr::AddressExpr(address) => address
+                .address()
                 .map_or(Type::Error, |token| address_type(token.text())),
-            _ => {
-                // Array initialisers and error nodes: check what is inside for names. In an
-                // initialiser `3(0)` repeats a value: only the value is an expression.
-                for child in node.children() {
-                    let repeated = child.kind() == SyntaxKind::CALL_EXPR
-                        && child
-                            .children()
-                            .next()
-                            .is_some_and(|callee| callee.kind() == SyntaxKind::LITERAL);
-                    if repeated {
-                        for value in child.descendants().filter(|d| d.kind() == SyntaxKind::ARG) {
-                            if let Some(value) = value.children().next() {
-                                self.expression(&value, Mode::Read);
+            Expr::ArrayInit(array) => {
+                // An array value: check what is inside for names. `3(0)` repeats a value:
+                // only the value is an expression.
+                for element in array.elements() {
+                    match element {
+                        InitValue::Expr(Expr::CallExpr(call))
+                            if matches!(call.callee(), Some(Expr::Literal(_))) =>
+                        {
+                            for argument in call.syntax().descendants().filter_map(Arg::cast) {
+                                if let Some(value) = argument.value() {
+                                    self.expression(&value, Mode::Read);
+                                }
                             }
                         }
-                    } else {
-                        self.expression(&child, Mode::Read);
+                        InitValue::Expr(value) => {
+                            self.expression(&value, Mode::Read);
+                        }
+                        InitValue::Struct(_) | InitValue::Repeat(_) => {}
                     }
+                }
+                Type::Error
+            }
+            Expr::ErrorNode(error) => {
+                // Input past a nesting limit: check the names in what was kept.
+                for inner in error.nodes().filter_map(Expr::cast) {
+                    self.expression(&inner, Mode::Read);
                 }
                 Type::Error
             }
         }
     }
 
-    pub(super) fn typed_literal(&mut self, node: &SyntaxNode) -> Type {
-        let parts: Vec<SyntaxToken> = tokens(node).collect();
-        let Some(prefix) = parts.first() else {
+    pub(super) fn typed_literal(&mut self, literal: &TypedLiteral) -> Type {
+        let node = literal.syntax();
+        let Some(prefix) = &literal.type_name() else {
             return Type::Error;
         };
-        let Some(value) = parts.last() else {
-            return Type::Error;
+        // `INT#` with nothing after the '#' is a syntax error, reported already.
+        let Some(value) = &literal.value() else {
+            return match Elementary::from_name(prefix.text()) {
+                Some(elementary) => Type::elementary(elementary),
+                None => Type::Error,
+            };
         };
         if let Some(elementary) = Elementary::from_name(prefix.text()) {
             let ty = Type::elementary(elementary);
-            let negative = parts.iter().any(|t| t.kind() == SyntaxKind::MINUS);
+            let negative = literal.is_negative();
             let fits = match value.kind() {
                 SyntaxKind::INT_NUMBER => {
                     let parsed = integer_value(value.text()).map(|v| if negative { -v } else { v });
@@ -150,10 +164,10 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
         self.error(Code::UnknownName, token_range(member), message);
     }
 
-    pub(super) fn name(&mut self, node: &SyntaxNode, mode: Mode) -> Type {
+    pub(super) fn name(&mut self, node: &NameExpr, mode: Mode) -> Type {
         let ty = self.name_type(node, mode);
         if self.resolutions.is_some()
-            && let Some(token) = tokens(node).find(|t| t.kind() == SyntaxKind::IDENT)
+            && let Some(token) = node.ident()
             && let Some(definition) = self.definition_of_name(&token, node)
         {
             self.note(token_range(&token), &ty, |_| definition);
@@ -161,9 +175,8 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
         ty
     }
 
-    pub(super) fn name_type(&mut self, node: &SyntaxNode, mode: Mode) -> Type {
-        let mut parts = tokens(node);
-        let Some(first) = parts.next() else {
+    pub(super) fn name_type(&mut self, node: &NameExpr, mode: Mode) -> Type {
+        let Some(first) = node.first_token() else {
             return Type::Error;
         };
         let (token, global_only) = match first.kind() {
@@ -181,9 +194,9 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                 };
             }
             // `.name` is a global even where a local hides it.
-            SyntaxKind::DOT => match parts.next() {
-                Some(token) if token.kind() == SyntaxKind::IDENT => (token, true),
-                _ => return Type::Error,
+            SyntaxKind::DOT => match node.ident() {
+                Some(token) => (token, true),
+                None => return Type::Error,
             },
             // `MOD(a, b)` and friends: operator keywords called like functions.
             _ => return Type::Error,
@@ -257,25 +270,18 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
         dereferenced(self.resolve(&variable.ty))
     }
 
-    pub(super) fn field(&mut self, node: &SyntaxNode, mode: Mode) -> Type {
-        let Some(base) = node.children().next() else {
+    pub(super) fn field(&mut self, field: &FieldExpr, mode: Mode) -> Type {
+        let node = field.syntax();
+        let Some(base) = field.base() else {
             return Type::Error;
         };
-        let Some(member) = tokens(node)
-            .filter(|t| {
-                matches!(
-                    t.kind(),
-                    SyntaxKind::IDENT | SyntaxKind::INT_NUMBER | SyntaxKind::DIRECT_ADDRESS
-                )
-            })
-            .last()
-        else {
+        let Some(member) = field.member() else {
             return Type::Error;
         };
-        let from_inside = base.kind() == SyntaxKind::DEREF_EXPR
-            && base.children().next().is_some_and(|b| {
-                matches!(text(&b).to_ascii_uppercase().as_str(), "THIS" | "SUPER")
-            });
+        let from_inside = matches!(&base, Expr::DerefExpr(deref)
+        if deref.base().is_some_and(|b| {
+            matches!(text(b.syntax()).to_ascii_uppercase().as_str(), "THIS" | "SUPER")
+        }));
         let base_ty = self.expression(&base, mode);
         let globals = self.scope.globals;
         let name = member.text();
@@ -425,7 +431,7 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                 "X" => Type::BOOL,
                 "T" => Type::Elementary(Elementary::Time),
                 _ => {
-                    self.unknown_member(&text(&base), &member, vec!["X", "T"]);
+                    self.unknown_member(&text(base.syntax()), &member, vec!["X", "T"]);
                     Type::Error
                 }
             },
@@ -435,8 +441,8 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                     range_of(node),
                     format!(
                         "'{}' is a pointer: dereference it first, as in '{}^.{name}'",
-                        text(&base),
-                        text(&base)
+                        text(base.syntax()),
+                        text(base.syntax())
                     ),
                 );
                 Type::Error
@@ -489,7 +495,7 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                         self.error(
                             Code::InvalidOperands,
                             token_range(&member),
-                            format!("'{}' is {other}, which has no members", text(&base)),
+                            format!("'{}' is {other}, which has no members", text(base.syntax())),
                         );
                         Type::Error
                     }
@@ -498,12 +504,12 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
         }
     }
 
-    pub(super) fn index(&mut self, node: &SyntaxNode, mode: Mode) -> Type {
-        let mut children = node.children();
-        let Some(base) = children.next() else {
+    pub(super) fn index(&mut self, index_expr: &IndexExpr, mode: Mode) -> Type {
+        let node = index_expr.syntax();
+        let Some(base) = index_expr.base() else {
             return Type::Error;
         };
-        let indices: Vec<SyntaxNode> = children.collect();
+        let indices: Vec<Expr> = index_expr.indices().collect();
         let base_ty = self.expression(&base, mode);
         let mut index_types = Vec::new();
         for index in &indices {
@@ -513,7 +519,7 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
             {
                 self.error(
                     Code::TypeMismatch,
-                    range_of(index),
+                    range_of(index.syntax()),
                     format!("an array index must be an integer, found {ty}"),
                 );
             }
@@ -528,7 +534,7 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                         range_of(node),
                         format!(
                             "'{}' has {} dimension(s) but {} index(es) are given",
-                            text(&base),
+                            text(base.syntax()),
                             dims.len(),
                             indices.len()
                         ),
@@ -542,10 +548,10 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                     {
                         self.error(
                             Code::IndexOutOfRange,
-                            range_of(index),
+                            range_of(index.syntax()),
                             format!(
                                 "index {value} is outside the bounds {low}..{high} of '{}'",
-                                text(&base)
+                                text(base.syntax())
                             ),
                         );
                     }
@@ -562,18 +568,22 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                 self.error(
                     Code::InvalidOperands,
                     range_of(node),
-                    format!("'{}' is {other}, which cannot be indexed", text(&base)),
+                    format!(
+                        "'{}' is {other}, which cannot be indexed",
+                        text(base.syntax())
+                    ),
                 );
                 Type::Error
             }
         }
     }
 
-    pub(super) fn unary(&mut self, node: &SyntaxNode) -> Type {
-        let Some(operator) = tokens(node).next() else {
+    pub(super) fn unary(&mut self, unary: &UnaryExpr) -> Type {
+        let node = unary.syntax();
+        let Some(operator) = unary.op() else {
             return Type::Error;
         };
-        let Some(operand) = node.children().next() else {
+        let Some(operand) = unary.operand() else {
             return Type::Error;
         };
         let ty = self.expression(&operand, Mode::Read);
@@ -601,17 +611,17 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
         }
     }
 
-    pub(super) fn binary(&mut self, node: &SyntaxNode) -> Type {
-        let mut operands = node.children();
-        let (Some(left_node), right_node) = (operands.next(), operands.next()) else {
+    pub(super) fn binary(&mut self, binary: &BinaryExpr) -> Type {
+        let node = binary.syntax();
+        let Some(left_node) = binary.lhs() else {
             return Type::Error;
         };
         let left = self.expression(&left_node, Mode::Read);
-        let Some(right_node) = right_node else {
+        let Some(right_node) = binary.rhs() else {
             return Type::Error;
         };
         let right = self.expression(&right_node, Mode::Read);
-        let Some(operator) = tokens(node).next() else {
+        let Some(operator) = binary.op() else {
             return Type::Error;
         };
         if left == Type::Error || right == Type::Error {
@@ -629,7 +639,8 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
         if let Some(ty) = result {
             // Fold literal arithmetic so `-128` or `2 * 64` still fit a SINT.
             if matches!(ty, Type::IntLiteral(_))
-                && let Some(Const::Int(value)) = self.constant_value(node)
+                && let Some(Const::Int(value)) =
+                    self.constant_value(&Expr::BinaryExpr(binary.clone()))
             {
                 return Type::IntLiteral(Some(value));
             }
@@ -776,8 +787,8 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
 }
 
 /// The type of a plain literal.
-pub(super) fn literal_type(node: &SyntaxNode) -> Type {
-    let Some(token) = tokens(node).next() else {
+pub(super) fn literal_type(literal: &Literal) -> Type {
+    let Some(token) = literal.token() else {
         return Type::Error;
     };
     match token.kind() {

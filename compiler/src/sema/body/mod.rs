@@ -24,6 +24,10 @@ use super::{closest, stdlib};
 use crate::diagnostic::{Code, Diagnostic};
 use crate::elementary::Elementary;
 use crate::literal;
+use crate::syntax::ast::{
+    AstNode, CaseLabel, CaseStmt, Expr, ForStmt, SourceFile, StatementList, Stmt,
+};
+use crate::syntax::ast::{CallExpr, NameExpr};
 use crate::syntax::{SyntaxKind, SyntaxNode, SyntaxToken};
 
 /// How a variable was used somewhere.
@@ -68,12 +72,6 @@ fn range_of(node: &SyntaxNode) -> Range<usize> {
 fn token_range(token: &SyntaxToken) -> Range<usize> {
     let range = token.text_range();
     usize::from(range.start())..usize::from(range.end())
-}
-
-fn tokens(node: &SyntaxNode) -> impl Iterator<Item = SyntaxToken> {
-    node.children_with_tokens()
-        .filter_map(|element| element.into_token())
-        .filter(|token| !token.kind().is_trivia())
 }
 
 fn text(node: &SyntaxNode) -> String {
@@ -126,176 +124,178 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
 
     /// Checks an expression whose value goes where `expected` is needed, such as an initial
     /// value.
-    pub(crate) fn check_value(&mut self, node: &SyntaxNode, expected: &Type, context: &str) {
+    pub(crate) fn check_value(&mut self, node: &Expr, expected: &Type, context: &str) {
         let ty = self.expression(node, Mode::Read);
-        self.expect_type(&ty, expected, node, context);
+        self.expect_type(&ty, expected, node.syntax(), context);
     }
 
     /// The type of an expression, read.
-    pub(crate) fn type_of(&mut self, node: &SyntaxNode) -> Type {
+    pub(crate) fn type_of(&mut self, node: &Expr) -> Type {
         self.expression(node, Mode::Read)
     }
 
-    /// Checks every statement under `root`.
+    /// Checks every statement of the body `root`.
     pub(crate) fn check(&mut self, root: &SyntaxNode) {
-        for child in root.children() {
-            self.statement_or_list(&child);
+        let list = SourceFile::cast(root.clone()).and_then(|file| file.statement_list());
+        self.statement_list(list);
+    }
+
+    fn statement_list(&mut self, list: Option<StatementList>) {
+        for statement in list.iter().flat_map(StatementList::statements) {
+            self.statement(&statement);
         }
     }
 
-    fn statement_or_list(&mut self, node: &SyntaxNode) {
-        match node.kind() {
-            SyntaxKind::STATEMENT_LIST | SyntaxKind::ELSE_BRANCH => {
-                for child in node.children() {
-                    self.statement_or_list(&child);
+    /// `target := value` and the statements written like it: the target is written, the
+    /// value read; a statement with only one expression reads it.
+    fn assignment(&mut self, target: Option<Expr>, value: Option<Expr>) {
+        match (target, value) {
+            (Some(target), Some(value)) => {
+                let target_ty = self.expression(&target, Mode::Write);
+                let value_ty = self.expression(&value, Mode::Read);
+                // A POU or action name has no value to assign to.
+                if !self.assignable_target(&target, &target_ty) {
+                    return;
                 }
+                self.expect_type(&value_ty, &target_ty, value.syntax(), "the assignment");
             }
-            _ => self.statement(node),
+            (Some(only), None) | (None, Some(only)) => {
+                self.expression(&only, Mode::Read);
+            }
+            (None, None) => {}
         }
     }
 
-    fn statement(&mut self, node: &SyntaxNode) {
-        let children: Vec<SyntaxNode> = node.children().collect();
-        match node.kind() {
-            SyntaxKind::ASSIGN_STMT => {
-                if let [target, value, ..] = children.as_slice() {
-                    let target_ty = self.expression(target, Mode::Write);
-                    let value_ty = self.expression(value, Mode::Read);
-                    // A POU or action name has no value to assign to.
-                    if !self.assignable_target(target, &target_ty) {
-                        return;
+    fn statement(&mut self, statement: &Stmt) {
+        match statement {
+            Stmt::AssignStmt(assign) => self.assignment(assign.target(), assign.value()),
+            Stmt::SetStmt(set) => self.set_or_reset(set.target(), set.value()),
+            Stmt::ResetStmt(reset) => self.set_or_reset(reset.target(), reset.value()),
+            // Both sides are places; their types are checked by the runtime's rules for
+            // references and interfaces, which need the declared (not dereferenced) type.
+            Stmt::RefAssignStmt(assign) => self.places(assign.target(), assign.value()),
+            Stmt::AttemptAssignStmt(assign) => self.places(assign.target(), assign.value()),
+            Stmt::CallStmt(call) => {
+                if let Some(call) = call.call() {
+                    self.expression(&Expr::CallExpr(call), Mode::Read);
+                }
+            }
+            Stmt::IfStmt(stmt) => {
+                if let Some(condition) = stmt.condition() {
+                    self.condition(&condition, "IF");
+                }
+                self.statement_list(stmt.then_branch());
+                for branch in stmt.elsif_branches() {
+                    if let Some(condition) = branch.condition() {
+                        self.condition(&condition, "IF");
                     }
-                    self.expect_type(&value_ty, &target_ty, value, "the assignment");
-                } else if let [only] = children.as_slice() {
-                    self.expression(only, Mode::Read);
+                    self.statement_list(branch.body());
+                }
+                self.statement_list(stmt.else_branch().and_then(|branch| branch.body()));
+            }
+            Stmt::WhileStmt(stmt) => {
+                if let Some(condition) = stmt.condition() {
+                    self.condition(&condition, "WHILE");
+                }
+                self.statement_list(stmt.body());
+            }
+            Stmt::RepeatStmt(stmt) => {
+                self.statement_list(stmt.body());
+                if let Some(condition) = stmt.condition() {
+                    self.condition(&condition, "UNTIL");
                 }
             }
-            SyntaxKind::SET_STMT | SyntaxKind::RESET_STMT => {
-                if let [target, value, ..] = children.as_slice() {
-                    let target_ty = self.expression(target, Mode::Write);
-                    if self.assignable_target(target, &target_ty) {
-                        self.expect_type(&target_ty, &Type::BOOL, target, "S= and R=");
-                    }
-                    let value_ty = self.expression(value, Mode::Read);
-                    self.expect_type(&value_ty, &Type::BOOL, value, "S= and R=");
+            Stmt::ForStmt(stmt) => self.for_statement(stmt),
+            Stmt::CaseStmt(stmt) => self.case_statement(stmt),
+            Stmt::TransitionDecl(transition) => {
+                if let Some(condition) = transition.condition() {
+                    self.condition(&condition, "TRANSITION");
+                }
+                for statement in transition.statements() {
+                    self.statement(&statement);
                 }
             }
-            SyntaxKind::REF_ASSIGN_STMT | SyntaxKind::ATTEMPT_ASSIGN_STMT => {
-                // Both sides are places; their types are checked by the runtime's rules for
-                // references and interfaces, which need the declared (not dereferenced) type.
-                if let [target, value, ..] = children.as_slice() {
-                    self.expression(target, Mode::Write);
-                    self.expression(value, Mode::Read);
-                }
-            }
-            SyntaxKind::CALL_STMT => {
-                for child in &children {
-                    self.expression(child, Mode::Read);
-                }
-            }
-            SyntaxKind::IF_STMT | SyntaxKind::ELSIF_BRANCH => {
-                for child in &children {
-                    match child.kind() {
-                        SyntaxKind::STATEMENT_LIST
-                        | SyntaxKind::ELSIF_BRANCH
-                        | SyntaxKind::ELSE_BRANCH => self.statement_or_list(child),
-                        _ => self.condition(child, "IF"),
-                    }
-                }
-            }
-            SyntaxKind::WHILE_STMT | SyntaxKind::REPEAT_STMT => {
-                let keyword = if node.kind() == SyntaxKind::WHILE_STMT {
-                    "WHILE"
-                } else {
-                    "UNTIL"
-                };
-                for child in &children {
-                    if child.kind() == SyntaxKind::STATEMENT_LIST {
-                        self.statement_or_list(child);
-                    } else {
-                        self.condition(child, keyword);
-                    }
-                }
-            }
-            SyntaxKind::FOR_STMT => self.for_statement(&children),
-            SyntaxKind::CASE_STMT => self.case_statement(&children),
-            SyntaxKind::TRANSITION_DECL => {
-                for child in &children {
-                    match child.kind() {
-                        SyntaxKind::STEP_LIST | SyntaxKind::NAME | SyntaxKind::ARG_LIST => {}
-                        SyntaxKind::STATEMENT_LIST => self.statement_or_list(child),
-                        kind if is_statement(kind) => self.statement(child),
-                        _ => self.condition(child, "TRANSITION"),
-                    }
-                }
-            }
-            SyntaxKind::STEP_DECL => {
+            Stmt::StepDecl(step) => {
                 // Action associations: `Action(N);`, `Action(D, T#2s);`. Only the action's
                 // name is a name; the arguments are qualifiers and times.
-                for call in node
-                    .descendants()
-                    .filter(|n| n.kind() == SyntaxKind::CALL_EXPR)
-                {
-                    if let Some(callee) = call.children().next() {
+                for call in step.syntax().descendants().filter_map(CallExpr::cast) {
+                    if let Some(callee) = call.callee() {
                         self.expression(&callee, Mode::Read);
                     }
                 }
             }
-            SyntaxKind::ACTION_DECL => {
-                for child in &children {
-                    if child.kind() == SyntaxKind::STATEMENT_LIST {
-                        self.statement_or_list(child);
-                    }
-                }
-            }
-            _ => {}
+            Stmt::ExitStmt(_)
+            | Stmt::ContinueStmt(_)
+            | Stmt::ReturnStmt(_)
+            | Stmt::JmpStmt(_)
+            | Stmt::LabelStmt(_)
+            | Stmt::EmptyStmt(_) => {}
         }
     }
 
-    fn condition(&mut self, node: &SyntaxNode, keyword: &str) {
+    fn set_or_reset(&mut self, target: Option<Expr>, value: Option<Expr>) {
+        let (Some(target), Some(value)) = (target, value) else {
+            return;
+        };
+        let target_ty = self.expression(&target, Mode::Write);
+        if self.assignable_target(&target, &target_ty) {
+            self.expect_type(&target_ty, &Type::BOOL, target.syntax(), "S= and R=");
+        }
+        let value_ty = self.expression(&value, Mode::Read);
+        self.expect_type(&value_ty, &Type::BOOL, value.syntax(), "S= and R=");
+    }
+
+    fn places(&mut self, target: Option<Expr>, value: Option<Expr>) {
+        if let (Some(target), Some(value)) = (target, value) {
+            self.expression(&target, Mode::Write);
+            self.expression(&value, Mode::Read);
+        }
+    }
+
+    fn condition(&mut self, node: &Expr, keyword: &str) {
         let ty = self.expression(node, Mode::Read);
         if !ty.is_bool_like() {
             self.error(
                 Code::TypeMismatch,
-                range_of(node),
+                range_of(node.syntax()),
                 format!("the {keyword} condition must be BOOL, found {ty}"),
             );
         }
     }
 
-    fn for_statement(&mut self, children: &[SyntaxNode]) {
-        let expressions: Vec<&SyntaxNode> = children
-            .iter()
-            .filter(|child| child.kind() != SyntaxKind::STATEMENT_LIST)
-            .collect();
-        if let Some((variable, bounds)) = expressions.split_first() {
-            let ty = self.expression(variable, Mode::Write);
-            if self.assignable_target(variable, &ty) && !ty.is_integer_like() {
-                self.error(
-                    Code::TypeMismatch,
-                    range_of(variable),
-                    format!("the FOR variable must be an integer, found {ty}"),
-                );
+    fn for_statement(&mut self, stmt: &ForStmt) {
+        let bounds = [stmt.from(), stmt.to(), stmt.by()];
+        match stmt.variable() {
+            Some(variable) => {
+                let ty = self.expression(&variable, Mode::Write);
+                if self.assignable_target(&variable, &ty) && !ty.is_integer_like() {
+                    self.error(
+                        Code::TypeMismatch,
+                        range_of(variable.syntax()),
+                        format!("the FOR variable must be an integer, found {ty}"),
+                    );
+                }
+                for bound in bounds.iter().flatten() {
+                    let bound_ty = self.expression(bound, Mode::Read);
+                    if ty.is_integer_like() {
+                        self.expect_type(&bound_ty, &ty, bound.syntax(), "the FOR range");
+                    }
+                }
             }
-            for bound in bounds {
-                let bound_ty = self.expression(bound, Mode::Read);
-                if ty.is_integer_like() {
-                    self.expect_type(&bound_ty, &ty, bound, "the FOR range");
+            None => {
+                for bound in bounds.iter().flatten() {
+                    self.expression(bound, Mode::Read);
                 }
             }
         }
-        for child in children {
-            if child.kind() == SyntaxKind::STATEMENT_LIST {
-                self.statement_or_list(child);
-            }
-        }
+        self.statement_list(stmt.body());
     }
 
-    fn case_statement(&mut self, children: &[SyntaxNode]) {
-        let Some(selector) = children.first() else {
+    fn case_statement(&mut self, stmt: &CaseStmt) {
+        let Some(selector) = stmt.selector() else {
             return;
         };
-        let selector_ty = match self.expression(selector, Mode::Read) {
+        let selector_ty = match self.expression(&selector, Mode::Read) {
             // A constant selector is a DINT, so its labels are checked against one.
             Type::IntLiteral(_) => Type::Elementary(Elementary::Dint),
             other => other,
@@ -308,41 +308,31 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
         {
             self.error(
                 Code::TypeMismatch,
-                range_of(selector),
+                range_of(selector.syntax()),
                 format!(
                     "the CASE selector must be an integer or an enumeration, found {selector_ty}"
                 ),
             );
         }
         let mut seen: Vec<(i128, i128)> = Vec::new();
-        for branch in children.iter().skip(1) {
-            match branch.kind() {
-                SyntaxKind::CASE_BRANCH => {
-                    for part in branch.children() {
-                        if part.kind() == SyntaxKind::CASE_LABELS {
-                            for label in part.children() {
-                                self.case_label(&label, &selector_ty, &mut seen);
-                            }
-                        } else {
-                            self.statement_or_list(&part);
-                        }
-                    }
-                }
-                _ => self.statement_or_list(branch),
+        for branch in stmt.branches() {
+            for label in branch.labels() {
+                self.case_label(&label, &selector_ty, &mut seen);
             }
+            self.statement_list(branch.body());
         }
+        self.statement_list(stmt.else_branch().and_then(|branch| branch.body()));
     }
 
-    fn case_label(&mut self, label: &SyntaxNode, selector: &Type, seen: &mut Vec<(i128, i128)>) {
-        let bounds: Vec<SyntaxNode> = if label.kind() == SyntaxKind::CASE_RANGE {
-            label.children().collect()
-        } else {
-            vec![label.clone()]
+    fn case_label(&mut self, label: &CaseLabel, selector: &Type, seen: &mut Vec<(i128, i128)>) {
+        let bounds: Vec<Expr> = match label {
+            CaseLabel::Range(range) => range.low().into_iter().chain(range.high()).collect(),
+            CaseLabel::Value(value) => vec![value.clone()],
         };
         let mut values = Vec::new();
         for bound in &bounds {
             let ty = self.expression(bound, Mode::Read);
-            self.expect_type(&ty, selector, bound, "the CASE label");
+            self.expect_type(&ty, selector, bound.syntax(), "the CASE label");
             match self.constant_value(bound) {
                 Some(Const::Int(value)) => values.push(value),
                 // A constant of another type is reported as a type mismatch above.
@@ -351,8 +341,11 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                     if ty != Type::Error {
                         self.error(
                             Code::NotConstant,
-                            range_of(bound),
-                            format!("a CASE label must be a constant, found '{}'", text(bound)),
+                            range_of(bound.syntax()),
+                            format!(
+                                "a CASE label must be a constant, found '{}'",
+                                text(bound.syntax())
+                            ),
                         );
                     }
                     return;
@@ -367,18 +360,17 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
         if seen.iter().any(|(l, h)| low <= *h && *l <= high) {
             self.error(
                 Code::DuplicateCaseLabel,
-                range_of(label),
+                range_of(label.syntax()),
                 format!(
                     "the CASE label '{}' is already covered by an earlier branch, which wins",
-                    text(label)
+                    text(label.syntax())
                 ),
             );
         }
         seen.push((low, high));
     }
-
     /// The value of a constant expression, with the POU's own constants visible.
-    fn constant_value(&self, node: &SyntaxNode) -> Option<Const> {
+    fn constant_value(&self, node: &Expr) -> Option<Const> {
         evaluate(
             node,
             &|name, container, depth| self.named_constant(name, container, depth),
@@ -406,23 +398,22 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
     /// Reports a place that cannot be written: a literal, a call, an expression, or a name
     /// without a value (`target_ty` is `Void`); returns whether the place can be written.
     /// (Constants, outputs and enumeration values are checked where they resolve.)
-    fn assignable_target(&mut self, target: &SyntaxNode, target_ty: &Type) -> bool {
-        let root = target.kind();
+    fn assignable_target(&mut self, target: &Expr, target_ty: &Type) -> bool {
         let not_a_place = matches!(
-            root,
-            SyntaxKind::LITERAL
-                | SyntaxKind::TYPED_LITERAL
-                | SyntaxKind::CALL_EXPR
-                | SyntaxKind::BINARY_EXPR
-                | SyntaxKind::UNARY_EXPR
+            target,
+            Expr::Literal(_)
+                | Expr::TypedLiteral(_)
+                | Expr::CallExpr(_)
+                | Expr::BinaryExpr(_)
+                | Expr::UnaryExpr(_)
         );
         if not_a_place || *target_ty == Type::Void {
             self.error(
                 Code::NotAssignable,
-                range_of(target),
+                range_of(target.syntax()),
                 format!(
                     "'{}' is not a variable and cannot be assigned",
-                    text(target)
+                    text(target.syntax())
                 ),
             );
             return false;
@@ -510,11 +501,11 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
     }
 
     /// Whether `node` names a variable declared `REFERENCE TO`.
-    fn declared_reference(&self, node: &SyntaxNode) -> bool {
-        if node.kind() != SyntaxKind::NAME_EXPR {
+    fn declared_reference(&self, node: &Expr) -> bool {
+        let Expr::NameExpr(name) = node else {
             return false;
-        }
-        let name = text(node);
+        };
+        let name = text(name.syntax());
         let variable = match self.scope.local(&name) {
             Some(LocalSymbol::Var(variable)) => Some(variable),
             _ => match self.scope.globals.lookup(&name) {
@@ -535,19 +526,4 @@ pub(crate) fn has_open_bounds(ty: &Type) -> bool {
         Type::Pointer(target) | Type::Reference(target) => has_open_bounds(target),
         _ => false,
     }
-}
-
-fn is_statement(kind: SyntaxKind) -> bool {
-    matches!(
-        kind,
-        SyntaxKind::ASSIGN_STMT
-            | SyntaxKind::SET_STMT
-            | SyntaxKind::RESET_STMT
-            | SyntaxKind::CALL_STMT
-            | SyntaxKind::IF_STMT
-            | SyntaxKind::CASE_STMT
-            | SyntaxKind::FOR_STMT
-            | SyntaxKind::WHILE_STMT
-            | SyntaxKind::REPEAT_STMT
-    )
 }

@@ -70,12 +70,10 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
     pub(super) fn definition_of_name(
         &self,
         token: &SyntaxToken,
-        node: &SyntaxNode,
+        node: &NameExpr,
     ) -> Option<Definition> {
         let name = token.text();
-        let global_only = tokens(node)
-            .next()
-            .is_some_and(|t| t.kind() == SyntaxKind::DOT);
+        let global_only = node.is_global();
         let pou_name = self.scope.pou.map(|pou| pou.name.clone());
         let simple = |kind,
                       object: Option<String>,
