@@ -19,6 +19,7 @@ use crate::declaration_parts::{
     access_of, block_section, declaration_parts, first_keyword, has_token,
 };
 use crate::sema::ProjectDiagnostic;
+use crate::syntax::ast::{AstNode, Name, TypeDecl, TypeExpr, VarDecl};
 use crate::syntax::{Parse, SyntaxKind, SyntaxNode, parse};
 
 /// A project made from one source file, with the way back from the project to the file.
@@ -48,7 +49,11 @@ impl SourceProject {
         for item in parse.syntax().children() {
             match item.kind() {
                 SyntaxKind::POU | SyntaxKind::INTERFACE_DECL => builder.pou(&item),
-                SyntaxKind::TYPE_DECL => builder.types(&item),
+                SyntaxKind::TYPE_DECL => {
+                    if let Some(types) = TypeDecl::cast(item) {
+                        builder.types(&types);
+                    }
+                }
                 SyntaxKind::GLOBAL_VAR_LIST => builder.globals(&item),
                 _ => {}
             }
@@ -178,7 +183,7 @@ impl Builder {
             Some(SyntaxKind::INTERFACE) => PouKind::Interface,
             _ => return,
         };
-        let Some((name, name_range)) = name_of(node) else {
+        let Some((name, name_range)) = node_name(node) else {
             return;
         };
         if !self.claim(&name, name_range.clone()) {
@@ -229,7 +234,7 @@ impl Builder {
                     }
                 }
                 SyntaxKind::ACTION_DECL => {
-                    if let Some((action, range)) = name_of(&child) {
+                    if let Some((action, range)) = node_name(&child) {
                         self.declare(&name, &action, range);
                         let (body, offset) = statements_of(&child);
                         if let Some(offset) = offset {
@@ -246,7 +251,7 @@ impl Builder {
     }
 
     fn method(&mut self, pou: &str, node: &SyntaxNode) -> Option<Method> {
-        let (name, range) = name_of(node)?;
+        let (name, range) = node_name(node)?;
         self.declare(pou, &name, range);
         let mut variables = Vec::new();
         for block in node
@@ -272,7 +277,7 @@ impl Builder {
     }
 
     fn property(&mut self, pou: &str, node: &SyntaxNode) -> Option<Property> {
-        let (name, range) = name_of(node)?;
+        let (name, range) = node_name(node)?;
         self.declare(pou, &name, range);
         let mut property = Property {
             ty: return_type(node).unwrap_or_default(),
@@ -311,66 +316,53 @@ impl Builder {
         Some(property)
     }
 
-    fn types(&mut self, node: &SyntaxNode) {
-        for definition in node
-            .children()
-            .filter(|child| child.kind() == SyntaxKind::TYPE_DEFINITION)
-        {
-            let Some((name, range)) = name_of(&definition) else {
+    fn types(&mut self, node: &TypeDecl) {
+        for definition in node.definitions() {
+            let Some((name, range)) = name_of(definition.name()) else {
                 continue;
             };
             if !self.claim(&name, range.clone()) {
                 continue;
             }
             self.declare(&name, &name, range);
-            let Some(shape) = definition
-                .children()
-                .find(|child| !matches!(child.kind(), SyntaxKind::NAME | SyntaxKind::INITIALIZER))
-            else {
-                continue;
-            };
             let extends = definition
-                .children()
-                .chain(shape.children())
-                .find(|child| child.kind() == SyntaxKind::EXTENDS_CLAUSE)
-                .and_then(|clause| name_refs(&clause).into_iter().next());
-            let definition_model = match shape.kind() {
-                SyntaxKind::STRUCT_TYPE => TypeDefinition::Struct {
+                .extends()
+                .and_then(|clause| clause.names().next())
+                .map(|base| trimmed(base.syntax()));
+            let definition_model = if let Some(structure) = definition.struct_type() {
+                TypeDefinition::Struct {
                     extends,
-                    members: self.members(&name, &shape),
-                },
-                SyntaxKind::UNION_TYPE => TypeDefinition::Union {
-                    members: self.members(&name, &shape),
-                },
-                SyntaxKind::ENUM_TYPE => {
-                    let mut values = Vec::new();
-                    for value in shape
-                        .children()
-                        .filter(|child| child.kind() == SyntaxKind::ENUM_VALUE)
-                    {
-                        let Some((value_name, range)) = name_of(&value) else {
-                            continue;
-                        };
-                        self.declare(&name, &value_name, range);
-                        values.push(EnumValue {
-                            name: value_name,
-                            value: value
-                                .children()
-                                .find(|child| child.kind() != SyntaxKind::NAME)
-                                .map(|expression| trimmed(&expression)),
-                            comment: String::new(),
-                        });
-                    }
-                    let base = shape
-                        .children()
-                        .find(|child| child.kind() == SyntaxKind::NAMED_TYPE)
-                        .map(|base| trimmed(&base));
-                    TypeDefinition::Enum { base, values }
+                    members: self.members(&name, structure.members()),
                 }
-                _ => TypeDefinition::Alias {
-                    ty: trimmed(&shape),
-                    initial: initializer(&definition),
-                },
+            } else if let Some(union) = definition.union_type() {
+                TypeDefinition::Union {
+                    members: self.members(&name, union.members()),
+                }
+            } else if let Some(TypeExpr::EnumType(shape)) = definition.ty() {
+                let mut values = Vec::new();
+                for value in shape.values() {
+                    let Some((value_name, range)) = name_of(value.name()) else {
+                        continue;
+                    };
+                    self.declare(&name, &value_name, range);
+                    values.push(EnumValue {
+                        name: value_name,
+                        value: value.value().map(|number| trimmed(number.syntax())),
+                        comment: String::new(),
+                    });
+                }
+                let base = shape.base().map(|base| trimmed(base.syntax()));
+                TypeDefinition::Enum { base, values }
+            } else if let Some(ty) = definition.ty() {
+                TypeDefinition::Alias {
+                    ty: trimmed(ty.syntax()),
+                    initial: definition
+                        .initializer()
+                        .and_then(|initializer| initializer.value())
+                        .map(|value| trimmed(value.syntax())),
+                }
+            } else {
+                continue;
             };
             self.objects.push(Object::DataType(DataType {
                 name,
@@ -380,13 +372,14 @@ impl Builder {
         }
     }
 
-    fn members(&mut self, type_name: &str, node: &SyntaxNode) -> Vec<StructMember> {
+    fn members(
+        &mut self,
+        type_name: &str,
+        declarations: impl Iterator<Item = VarDecl>,
+    ) -> Vec<StructMember> {
         let mut members = Vec::new();
-        for declaration in node
-            .children()
-            .filter(|child| child.kind() == SyntaxKind::VAR_DECL)
-        {
-            for variable in self.declared(type_name, &declaration, VarSection::Var) {
+        for declaration in declarations {
+            for variable in self.declared(type_name, declaration.syntax(), VarSection::Var) {
                 members.push(StructMember {
                     name: variable.name,
                     ty: variable.ty,
@@ -486,14 +479,6 @@ fn statements_of(node: &SyntaxNode) -> (Body, Option<usize>) {
     }
 }
 
-fn initializer(node: &SyntaxNode) -> Option<String> {
-    let initializer = node
-        .children()
-        .find(|child| child.kind() == SyntaxKind::INITIALIZER)?;
-    let value = initializer.children().next()?;
-    Some(trimmed(&value))
-}
-
 fn return_type(node: &SyntaxNode) -> Option<String> {
     let return_type = node
         .children()
@@ -503,12 +488,19 @@ fn return_type(node: &SyntaxNode) -> Option<String> {
 }
 
 /// The declared name directly under `node`, with its range.
-fn name_of(node: &SyntaxNode) -> Option<(String, Range<usize>)> {
+fn node_name(node: &SyntaxNode) -> Option<(String, Range<usize>)> {
     let name = node
         .children()
         .find(|child| child.kind() == SyntaxKind::NAME)?;
     let text = trimmed(&name);
     (!text.is_empty()).then(|| (text, range(&name)))
+}
+
+/// A declared name's text and range, unless it is missing or blank.
+fn name_of(name: Option<Name>) -> Option<(String, Range<usize>)> {
+    let name = name?;
+    let text = trimmed(name.syntax());
+    (!text.is_empty()).then(|| (text, range(name.syntax())))
 }
 
 fn name_refs(node: &SyntaxNode) -> Vec<String> {
@@ -624,5 +616,37 @@ END_FUNCTION_BLOCK
         };
         let at = source.locate(&finding).expect("declarations map back");
         assert_eq!(&SOURCE[at], "b");
+    }
+
+    #[test]
+    fn a_structure_extending_another_is_a_structure_with_its_base() {
+        let source = SourceProject::new(
+            "TYPE
+    ST_A : STRUCT a : INT; END_STRUCT;
+    \
+             ST_B EXTENDS ST_A : STRUCT b : INT; END_STRUCT;
+END_TYPE
+\
+             PROGRAM Main
+VAR s : ST_B; END_VAR
+s.b := s.a;
+END_PROGRAM
+",
+        );
+        let Some(Object::DataType(extended)) = source.project.application.object("ST_B") else {
+            panic!("no ST_B");
+        };
+        let TypeDefinition::Struct { extends, members } = &extended.definition else {
+            panic!("ST_B is no structure: {:?}", extended.definition);
+        };
+        assert_eq!(extends.as_deref(), Some("ST_A"));
+        let names: Vec<&str> = members.iter().map(|m| m.name.as_str()).collect();
+        assert_eq!(names, ["b"]);
+        let errors: Vec<String> = crate::sema::check_project(&source.project)
+            .into_iter()
+            .filter(|found| found.diagnostic.severity == crate::Severity::Error)
+            .map(|found| found.diagnostic.message)
+            .collect();
+        assert_eq!(errors, Vec::<String>::new());
     }
 }

@@ -87,6 +87,9 @@ fn types_have_their_parts() {
             (Some("Running".into()), None)
         ]
     );
+    assert_eq!(enumeration.base(), None);
+    let based = first_in_file::<EnumType>("TYPE E : (Idle, Running) DINT; END_TYPE");
+    assert_eq!(text(based.base()).as_deref(), Some("DINT"));
     let TypeExpr::ArrayType(broken) = type_of("ARRAY[1..] OF") else {
         panic!("not an array type");
     };
