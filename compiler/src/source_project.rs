@@ -11,15 +11,16 @@ use std::ops::Range;
 use std::path::PathBuf;
 
 use project_model::{
-    Body, DataType, EnumValue, GlobalVarList, Method, Node, Object, Pou, PouAction, PouKind,
-    Project, Property, PropertyAccessor, StructMember, TypeDefinition, VarSection, Variable,
+    Body, DataType, EnumValue, Method, Node, Object, Pou, PouAction, PouKind, Project, Property,
+    PropertyAccessor, StructMember, TypeDefinition, VarSection, Variable,
 };
 
-use crate::declaration_parts::{
-    access_of, block_section, declaration_parts, first_keyword, has_token,
-};
+use crate::declaration_parts::{access_of, block_section, declaration_parts};
 use crate::sema::ProjectDiagnostic;
-use crate::syntax::ast::{AstNode, Name, TypeDecl, TypeExpr, VarDecl};
+use crate::syntax::ast::{
+    self, AstNode, ExtendsClause, GlobalVarList, InterfaceDecl, Item, MethodDecl, Name, PouMember,
+    PropertyDecl, SourceFile, StatementList, TypeDecl, TypeExpr, VarBlock, VarDecl,
+};
 use crate::syntax::{Parse, SyntaxKind, SyntaxNode, parse};
 
 /// A project made from one source file, with the way back from the project to the file.
@@ -46,15 +47,15 @@ impl SourceProject {
     pub fn new(text: &str) -> Self {
         let parse = parse(text);
         let mut builder = Builder::default();
-        for item in parse.syntax().children() {
-            match item.kind() {
-                SyntaxKind::POU | SyntaxKind::INTERFACE_DECL => builder.pou(&item),
-                SyntaxKind::TYPE_DECL => {
-                    if let Some(types) = TypeDecl::cast(item) {
-                        builder.types(&types);
-                    }
-                }
-                SyntaxKind::GLOBAL_VAR_LIST => builder.globals(&item),
+        let items = SourceFile::cast(parse.syntax())
+            .into_iter()
+            .flat_map(|file| file.items());
+        for item in items {
+            match item {
+                Item::Pou(pou) => builder.pou(&pou),
+                Item::InterfaceDecl(interface) => builder.interface(&interface),
+                Item::TypeDecl(types) => builder.types(&types),
+                Item::GlobalVarList(list) => builder.globals(&list),
                 _ => {}
             }
         }
@@ -175,15 +176,14 @@ impl Builder {
             .or_insert(range);
     }
 
-    fn pou(&mut self, node: &SyntaxNode) {
-        let kind = match first_keyword(node) {
+    fn pou(&mut self, node: &ast::Pou) {
+        let kind = match node.keyword().map(|keyword| keyword.kind()) {
             Some(SyntaxKind::PROGRAM) => PouKind::Program,
             Some(SyntaxKind::FUNCTION_BLOCK) => PouKind::FunctionBlock,
             Some(SyntaxKind::FUNCTION) => PouKind::Function,
-            Some(SyntaxKind::INTERFACE) => PouKind::Interface,
             _ => return,
         };
-        let Some((name, name_range)) = node_name(node) else {
+        let Some((name, name_range)) = name_of(node.name()) else {
             return;
         };
         if !self.claim(&name, name_range.clone()) {
@@ -193,82 +193,107 @@ impl Builder {
         let mut pou = Pou {
             name: name.clone(),
             kind,
-            return_type: return_type(node),
-            extends: None,
-            implements: Vec::new(),
+            return_type: node.return_type().map(|ty| trimmed(ty.syntax())),
+            extends: node.extends().and_then(|clause| first_name(&clause)),
+            implements: node
+                .implements()
+                .map(|clause| clause.names().map(|name| trimmed(name.syntax())).collect())
+                .unwrap_or_default(),
             comment: String::new(),
             variables: Vec::new(),
-            body: if kind == PouKind::Interface {
-                Body::None
-            } else {
-                Body::st("")
-            },
+            body: Body::st(""),
             methods: Vec::new(),
             properties: Vec::new(),
             actions: Vec::new(),
         };
-        for child in node.children() {
-            match child.kind() {
-                SyntaxKind::EXTENDS_CLAUSE => {
-                    pou.extends = name_refs(&child).into_iter().next();
-                }
-                SyntaxKind::IMPLEMENTS_CLAUSE => pou.implements = name_refs(&child),
-                SyntaxKind::VAR_BLOCK => {
-                    pou.variables.extend(self.variables(&name, &child));
-                }
-                SyntaxKind::STATEMENT_LIST
-                    if !is_blank(&child) && matches!(pou.body.st_text(), Some("")) =>
-                {
-                    pou.body = Body::st(child.text().to_string());
-                    self.body_offsets
-                        .insert((name.to_lowercase(), String::new()), start(&child));
-                }
-                SyntaxKind::METHOD_DECL => {
-                    if let Some(method) = self.method(&name, &child) {
-                        pou.methods.push(method);
-                    }
-                }
-                SyntaxKind::PROPERTY_DECL => {
-                    if let Some(property) = self.property(&name, &child) {
-                        pou.properties.push(property);
-                    }
-                }
-                SyntaxKind::ACTION_DECL => {
-                    if let Some((action, range)) = node_name(&child) {
-                        self.declare(&name, &action, range);
-                        let (body, offset) = statements_of(&child);
-                        if let Some(offset) = offset {
-                            let key = format!("action {}", action.to_lowercase());
-                            self.body_offsets.insert((name.to_lowercase(), key), offset);
-                        }
-                        pou.actions.push(PouAction { name: action, body });
-                    }
-                }
-                _ => {}
-            }
+        for block in node.var_blocks() {
+            pou.variables.extend(self.variables(&name, &block));
         }
+        // A body split by members (textual SFC) is taken from its first part with text.
+        if let Some(list) = node.bodies().find(|list| !is_blank(list.syntax())) {
+            pou.body = Body::st(list.syntax().text().to_string());
+            self.body_offsets
+                .insert((name.to_lowercase(), String::new()), start(list.syntax()));
+        }
+        self.members(&mut pou, node.members());
         self.objects.push(Object::Pou(pou));
     }
 
-    fn method(&mut self, pou: &str, node: &SyntaxNode) -> Option<Method> {
-        let (name, range) = node_name(node)?;
+    fn interface(&mut self, node: &InterfaceDecl) {
+        let Some((name, name_range)) = name_of(node.name()) else {
+            return;
+        };
+        if !self.claim(&name, name_range.clone()) {
+            return;
+        }
+        self.declare(&name, &name, name_range);
+        let mut interface = Pou {
+            name,
+            kind: PouKind::Interface,
+            return_type: None,
+            extends: node.extends().and_then(|clause| first_name(&clause)),
+            implements: Vec::new(),
+            comment: String::new(),
+            variables: Vec::new(),
+            body: Body::None,
+            methods: Vec::new(),
+            properties: Vec::new(),
+            actions: Vec::new(),
+        };
+        self.members(&mut interface, node.members());
+        self.objects.push(Object::Pou(interface));
+    }
+
+    /// The methods, properties and actions of `pou`, in the order written (which is the
+    /// order their names are declared in).
+    fn members(&mut self, pou: &mut Pou, members: impl Iterator<Item = PouMember>) {
+        let name = pou.name.clone();
+        for member in members {
+            match member {
+                PouMember::MethodDecl(method) => {
+                    if let Some(method) = self.method(&name, &method) {
+                        pou.methods.push(method);
+                    }
+                }
+                PouMember::PropertyDecl(property) => {
+                    if let Some(property) = self.property(&name, &property) {
+                        pou.properties.push(property);
+                    }
+                }
+                PouMember::ActionDecl(action) => {
+                    if let Some((action_name, range)) = name_of(action.name()) {
+                        self.declare(&name, &action_name, range);
+                        let (body, offset) = statements_of(action.body());
+                        if let Some(offset) = offset {
+                            let key = format!("action {}", action_name.to_lowercase());
+                            self.body_offsets.insert((name.to_lowercase(), key), offset);
+                        }
+                        pou.actions.push(PouAction {
+                            name: action_name,
+                            body,
+                        });
+                    }
+                }
+            }
+        }
+    }
+
+    fn method(&mut self, pou: &str, node: &MethodDecl) -> Option<Method> {
+        let (name, range) = name_of(node.name())?;
         self.declare(pou, &name, range);
         let mut variables = Vec::new();
-        for block in node
-            .children()
-            .filter(|child| child.kind() == SyntaxKind::VAR_BLOCK)
-        {
+        for block in node.var_blocks() {
             variables.extend(self.variables(pou, &block));
         }
-        let (body, offset) = statements_of(node);
+        let (body, offset) = statements_of(node.body());
         if let Some(offset) = offset {
             let key = format!("method {}", name.to_lowercase());
             self.body_offsets.insert((pou.to_lowercase(), key), offset);
         }
         Some(Method {
-            return_type: return_type(node),
-            access: access_of(node),
-            is_abstract: has_token(node, SyntaxKind::ABSTRACT),
+            return_type: node.return_type().map(|ty| trimmed(ty.syntax())),
+            access: access_of(node.modifiers()),
+            is_abstract: node.modifiers().any(|kind| kind == SyntaxKind::ABSTRACT),
             comment: String::new(),
             variables,
             body,
@@ -276,32 +301,24 @@ impl Builder {
         })
     }
 
-    fn property(&mut self, pou: &str, node: &SyntaxNode) -> Option<Property> {
-        let (name, range) = node_name(node)?;
+    fn property(&mut self, pou: &str, node: &PropertyDecl) -> Option<Property> {
+        let (name, range) = name_of(node.name())?;
         self.declare(pou, &name, range);
         let mut property = Property {
-            ty: return_type(node).unwrap_or_default(),
-            access: access_of(node),
+            ty: node.ty().map(|ty| trimmed(ty.syntax())).unwrap_or_default(),
+            access: access_of(node.modifiers()),
             comment: String::new(),
             get: None,
             set: None,
             name: name.clone(),
         };
-        for accessor in node
-            .children()
-            .filter(|child| child.kind() == SyntaxKind::ACCESSOR_DECL)
-        {
-            let get = accessor
-                .first_token()
-                .is_some_and(|token| token.text().eq_ignore_ascii_case("GET"));
+        for accessor in node.accessors() {
+            let get = accessor.is_get();
             let mut variables = Vec::new();
-            for block in accessor
-                .children()
-                .filter(|child| child.kind() == SyntaxKind::VAR_BLOCK)
-            {
+            for block in accessor.var_blocks() {
                 variables.extend(self.variables(pou, &block));
             }
-            let (body, offset) = statements_of(&accessor);
+            let (body, offset) = statements_of(accessor.body());
             if let Some(offset) = offset {
                 let key = format!("property {} {get}", name.to_lowercase());
                 self.body_offsets.insert((pou.to_lowercase(), key), offset);
@@ -325,18 +342,15 @@ impl Builder {
                 continue;
             }
             self.declare(&name, &name, range);
-            let extends = definition
-                .extends()
-                .and_then(|clause| clause.names().next())
-                .map(|base| trimmed(base.syntax()));
+            let extends = definition.extends().and_then(|clause| first_name(&clause));
             let definition_model = if let Some(structure) = definition.struct_type() {
                 TypeDefinition::Struct {
                     extends,
-                    members: self.members(&name, structure.members()),
+                    members: self.struct_members(&name, structure.members()),
                 }
             } else if let Some(union) = definition.union_type() {
                 TypeDefinition::Union {
-                    members: self.members(&name, union.members()),
+                    members: self.struct_members(&name, union.members()),
                 }
             } else if let Some(TypeExpr::EnumType(shape)) = definition.ty() {
                 let mut values = Vec::new();
@@ -372,14 +386,14 @@ impl Builder {
         }
     }
 
-    fn members(
+    fn struct_members(
         &mut self,
         type_name: &str,
         declarations: impl Iterator<Item = VarDecl>,
     ) -> Vec<StructMember> {
         let mut members = Vec::new();
         for declaration in declarations {
-            for variable in self.declared(type_name, declaration.syntax(), VarSection::Var) {
+            for variable in self.declared(type_name, &declaration, VarSection::Var) {
                 members.push(StructMember {
                     name: variable.name,
                     ty: variable.ty,
@@ -391,7 +405,7 @@ impl Builder {
         members
     }
 
-    fn globals(&mut self, node: &SyntaxNode) {
+    fn globals(&mut self, node: &GlobalVarList) {
         self.global_lists += 1;
         let mut name = if self.global_lists == 1 {
             "GVL".to_owned()
@@ -403,13 +417,10 @@ impl Builder {
             name.push('_');
         }
         let mut variables = Vec::new();
-        for block in node
-            .children()
-            .filter(|child| child.kind() == SyntaxKind::VAR_BLOCK)
-        {
+        for block in node.var_blocks() {
             variables.extend(self.variables(&name, &block));
         }
-        self.objects.push(Object::Gvl(GlobalVarList {
+        self.objects.push(Object::Gvl(project_model::GlobalVarList {
             name,
             comment: String::new(),
             variables,
@@ -417,20 +428,17 @@ impl Builder {
     }
 
     /// The variables of one `VAR… END_VAR` section.
-    fn variables(&mut self, object: &str, block: &SyntaxNode) -> Vec<Variable> {
+    fn variables(&mut self, object: &str, block: &VarBlock) -> Vec<Variable> {
         let section = match block_section(block) {
             // Configuration and access paths name other variables; they declare none.
             None | Some(VarSection::VarConfig) => return Vec::new(),
             Some(section) => section,
         };
-        let constant = has_token(block, SyntaxKind::CONSTANT);
-        let retain = has_token(block, SyntaxKind::RETAIN);
-        let persistent = has_token(block, SyntaxKind::PERSISTENT);
+        let constant = block.is_constant();
+        let retain = block.has_retain_keyword();
+        let persistent = block.has_persistent_keyword();
         let mut variables = Vec::new();
-        for declaration in block
-            .children()
-            .filter(|child| child.kind() == SyntaxKind::VAR_DECL)
-        {
+        for declaration in block.declarations() {
             for mut variable in self.declared(object, &declaration, section) {
                 variable.constant = constant;
                 variable.retain = retain;
@@ -445,7 +453,7 @@ impl Builder {
     fn declared(
         &mut self,
         object: &str,
-        declaration: &SyntaxNode,
+        declaration: &VarDecl,
         section: VarSection,
     ) -> Vec<Variable> {
         let mut variables = Vec::new();
@@ -453,8 +461,8 @@ impl Builder {
             return variables;
         };
         for name in &parts.names {
-            let text = trimmed(name);
-            self.declare(object, &text, range(name));
+            let text = trimmed(name.syntax());
+            self.declare(object, &text, range(name.syntax()));
             variables.push(Variable {
                 name: text,
                 section,
@@ -469,31 +477,14 @@ impl Builder {
 }
 
 /// The statements of a method, accessor or action with the offset where they start.
-fn statements_of(node: &SyntaxNode) -> (Body, Option<usize>) {
-    match node
-        .children()
-        .find(|child| child.kind() == SyntaxKind::STATEMENT_LIST)
-    {
-        Some(list) => (Body::st(list.text().to_string()), Some(start(&list))),
+fn statements_of(list: Option<StatementList>) -> (Body, Option<usize>) {
+    match list {
+        Some(list) => (
+            Body::st(list.syntax().text().to_string()),
+            Some(start(list.syntax())),
+        ),
         None => (Body::st(""), None),
     }
-}
-
-fn return_type(node: &SyntaxNode) -> Option<String> {
-    let return_type = node
-        .children()
-        .find(|child| child.kind() == SyntaxKind::RETURN_TYPE)?;
-    let ty = return_type.children().next()?;
-    Some(trimmed(&ty))
-}
-
-/// The declared name directly under `node`, with its range.
-fn node_name(node: &SyntaxNode) -> Option<(String, Range<usize>)> {
-    let name = node
-        .children()
-        .find(|child| child.kind() == SyntaxKind::NAME)?;
-    let text = trimmed(&name);
-    (!text.is_empty()).then(|| (text, range(&name)))
 }
 
 /// A declared name's text and range, unless it is missing or blank.
@@ -503,11 +494,9 @@ fn name_of(name: Option<Name>) -> Option<(String, Range<usize>)> {
     (!text.is_empty()).then(|| (text, range(name.syntax())))
 }
 
-fn name_refs(node: &SyntaxNode) -> Vec<String> {
-    node.children()
-        .filter(|child| child.kind() == SyntaxKind::NAME_REF)
-        .map(|name| trimmed(&name))
-        .collect()
+/// The first name of an `EXTENDS` clause: a POU or structure has one base.
+fn first_name(clause: &ExtendsClause) -> Option<String> {
+    clause.names().next().map(|name| trimmed(name.syntax()))
 }
 
 fn is_blank(node: &SyntaxNode) -> bool {
