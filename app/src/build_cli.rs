@@ -33,8 +33,8 @@ pub fn compile_path(path: &Path) -> anyhow::Result<ProgramImage> {
     match result {
         Ok(image) => Ok(image),
         Err(CompileError::Diagnostics(_)) => Err(crate::cli::check_for_errors(path)),
-        Err(CompileError::Unsupported(message)) => {
-            anyhow::bail!("{}: cannot compile: {message}", path.display())
+        Err(CompileError::Unsupported(error)) => {
+            anyhow::bail!("{}: cannot compile: {error}", path.display())
         }
     }
 }

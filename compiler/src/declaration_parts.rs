@@ -1,34 +1,34 @@
-//! Reading variable declarations off the syntax tree: what `SourceProject` (a whole source
-//! file as a project) and `ide::parse_declarations` (a declaration part typed in the editor)
-//! both need.
+//! Reading variable declarations off the typed syntax layer: what `SourceProject` (a whole
+//! source file as a project) and `ide::parse_declarations` (a declaration part typed in the
+//! editor) both need.
 
 use project_model::{AccessSpecifier, VarSection};
 
-use crate::syntax::ast::{AstNode, VarDecl};
-use crate::syntax::{SyntaxKind, SyntaxNode};
+use crate::syntax::SyntaxKind;
+use crate::syntax::ast::{AstNode, Name, VarBlock, VarDecl};
 
 /// The section a `VAR… END_VAR` block declares, by its keyword; `None` for access paths
 /// (`VAR_ACCESS`), which declare nothing of their own.
-pub(crate) fn block_section(block: &SyntaxNode) -> Option<VarSection> {
-    Some(match first_keyword(block) {
-        Some(SyntaxKind::VAR_INPUT) => VarSection::VarInput,
-        Some(SyntaxKind::VAR_OUTPUT) => VarSection::VarOutput,
-        Some(SyntaxKind::VAR_IN_OUT) => VarSection::VarInOut,
-        Some(SyntaxKind::VAR_GLOBAL) => VarSection::VarGlobal,
-        Some(SyntaxKind::VAR_EXTERNAL) => VarSection::VarExternal,
-        Some(SyntaxKind::VAR_TEMP) => VarSection::VarTemp,
-        Some(SyntaxKind::VAR_STAT) => VarSection::VarStat,
-        Some(SyntaxKind::VAR_INST) => VarSection::VarInst,
-        Some(SyntaxKind::VAR_CONFIG) => VarSection::VarConfig,
-        Some(SyntaxKind::VAR) => VarSection::Var,
+pub(crate) fn block_section(block: &VarBlock) -> Option<VarSection> {
+    Some(match block.keyword()?.kind() {
+        SyntaxKind::VAR_INPUT => VarSection::VarInput,
+        SyntaxKind::VAR_OUTPUT => VarSection::VarOutput,
+        SyntaxKind::VAR_IN_OUT => VarSection::VarInOut,
+        SyntaxKind::VAR_GLOBAL => VarSection::VarGlobal,
+        SyntaxKind::VAR_EXTERNAL => VarSection::VarExternal,
+        SyntaxKind::VAR_TEMP => VarSection::VarTemp,
+        SyntaxKind::VAR_STAT => VarSection::VarStat,
+        SyntaxKind::VAR_INST => VarSection::VarInst,
+        SyntaxKind::VAR_CONFIG => VarSection::VarConfig,
+        SyntaxKind::VAR => VarSection::Var,
         _ => return None,
     })
 }
 
 /// One declaration `a, b AT %IX0.0 : BOOL := TRUE;` taken apart.
 pub(crate) struct DeclarationParts {
-    /// The declared names' nodes, in order.
-    pub names: Vec<SyntaxNode>,
+    /// The declared names, in order.
+    pub names: Vec<Name>,
     /// The type as written.
     pub ty: String,
     /// The direct address, if located.
@@ -37,18 +37,13 @@ pub(crate) struct DeclarationParts {
     pub initial: Option<String>,
 }
 
-/// Takes a `VAR_DECL` apart; `None` when it has no names. `trim` turns a node into its text
+/// Takes a declaration apart; `None` when it has no names. `trim` turns a node into its text
 /// (each caller keeps its own idea of which trivia belongs to a node).
 pub(crate) fn declaration_parts(
-    declaration: &SyntaxNode,
-    trim: impl Fn(&SyntaxNode) -> String,
+    declaration: &VarDecl,
+    trim: impl Fn(&crate::syntax::SyntaxNode) -> String,
 ) -> Option<DeclarationParts> {
-    let declaration = VarDecl::cast(declaration.clone())?;
-    let names: Vec<SyntaxNode> = declaration
-        .name_list()?
-        .names()
-        .map(|name| name.syntax().clone())
-        .collect();
+    let names: Vec<Name> = declaration.name_list()?.names().collect();
     let ty = declaration
         .ty()
         .map(|ty| trim(ty.syntax()))
@@ -69,28 +64,15 @@ pub(crate) fn declaration_parts(
     })
 }
 
-/// The first keyword token directly in `node`.
-pub(crate) fn first_keyword(node: &SyntaxNode) -> Option<SyntaxKind> {
-    node.children_with_tokens()
-        .filter_map(|element| element.into_token())
-        .map(|token| token.kind())
-        .find(|kind| kind.is_keyword())
-}
-
-/// Whether a token of `kind` stands directly in `node`.
-pub(crate) fn has_token(node: &SyntaxNode, kind: SyntaxKind) -> bool {
-    node.children_with_tokens()
-        .filter_map(|element| element.into_token())
-        .any(|token| token.kind() == kind)
-}
-
-/// The access specifier written on a method or property (`PUBLIC` when none is).
-pub(crate) fn access_of(node: &SyntaxNode) -> AccessSpecifier {
-    if has_token(node, SyntaxKind::PRIVATE) {
+/// The access specifier among the `modifiers` written on a method or property (`PUBLIC` when
+/// none is).
+pub(crate) fn access_of(modifiers: impl Iterator<Item = SyntaxKind>) -> AccessSpecifier {
+    let modifiers: Vec<SyntaxKind> = modifiers.collect();
+    if modifiers.contains(&SyntaxKind::PRIVATE) {
         AccessSpecifier::Private
-    } else if has_token(node, SyntaxKind::PROTECTED) {
+    } else if modifiers.contains(&SyntaxKind::PROTECTED) {
         AccessSpecifier::Protected
-    } else if has_token(node, SyntaxKind::INTERNAL) {
+    } else if modifiers.contains(&SyntaxKind::INTERNAL) {
         AccessSpecifier::Internal
     } else {
         AccessSpecifier::Public

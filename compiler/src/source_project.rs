@@ -11,14 +11,16 @@ use std::ops::Range;
 use std::path::PathBuf;
 
 use project_model::{
-    Body, DataType, EnumValue, GlobalVarList, Method, Node, Object, Pou, PouAction, PouKind,
-    Project, Property, PropertyAccessor, StructMember, TypeDefinition, VarSection, Variable,
+    Body, DataType, EnumValue, Method, Node, Object, Pou, PouAction, PouKind, Project, Property,
+    PropertyAccessor, StructMember, TypeDefinition, VarSection, Variable,
 };
 
-use crate::declaration_parts::{
-    access_of, block_section, declaration_parts, first_keyword, has_token,
-};
+use crate::declaration_parts::{access_of, block_section, declaration_parts};
 use crate::sema::ProjectDiagnostic;
+use crate::syntax::ast::{
+    self, AstNode, ExtendsClause, GlobalVarList, InterfaceDecl, Item, MethodDecl, Name, PouMember,
+    PropertyDecl, SourceFile, StatementList, TypeDecl, TypeExpr, VarBlock, VarDecl,
+};
 use crate::syntax::{Parse, SyntaxKind, SyntaxNode, parse};
 
 /// A project made from one source file, with the way back from the project to the file.
@@ -45,11 +47,15 @@ impl SourceProject {
     pub fn new(text: &str) -> Self {
         let parse = parse(text);
         let mut builder = Builder::default();
-        for item in parse.syntax().children() {
-            match item.kind() {
-                SyntaxKind::POU | SyntaxKind::INTERFACE_DECL => builder.pou(&item),
-                SyntaxKind::TYPE_DECL => builder.types(&item),
-                SyntaxKind::GLOBAL_VAR_LIST => builder.globals(&item),
+        let items = SourceFile::cast(parse.syntax())
+            .into_iter()
+            .flat_map(|file| file.items());
+        for item in items {
+            match item {
+                Item::Pou(pou) => builder.pou(&pou),
+                Item::InterfaceDecl(interface) => builder.interface(&interface),
+                Item::TypeDecl(types) => builder.types(&types),
+                Item::GlobalVarList(list) => builder.globals(&list),
                 _ => {}
             }
         }
@@ -170,15 +176,14 @@ impl Builder {
             .or_insert(range);
     }
 
-    fn pou(&mut self, node: &SyntaxNode) {
-        let kind = match first_keyword(node) {
+    fn pou(&mut self, node: &ast::Pou) {
+        let kind = match node.keyword().map(|keyword| keyword.kind()) {
             Some(SyntaxKind::PROGRAM) => PouKind::Program,
             Some(SyntaxKind::FUNCTION_BLOCK) => PouKind::FunctionBlock,
             Some(SyntaxKind::FUNCTION) => PouKind::Function,
-            Some(SyntaxKind::INTERFACE) => PouKind::Interface,
             _ => return,
         };
-        let Some((name, name_range)) = name_of(node) else {
+        let Some((name, name_range)) = name_of(node.name()) else {
             return;
         };
         if !self.claim(&name, name_range.clone()) {
@@ -188,82 +193,107 @@ impl Builder {
         let mut pou = Pou {
             name: name.clone(),
             kind,
-            return_type: return_type(node),
-            extends: None,
-            implements: Vec::new(),
+            return_type: node.return_type().map(|ty| trimmed(ty.syntax())),
+            extends: node.extends().and_then(|clause| first_name(&clause)),
+            implements: node
+                .implements()
+                .map(|clause| clause.names().map(|name| trimmed(name.syntax())).collect())
+                .unwrap_or_default(),
             comment: String::new(),
             variables: Vec::new(),
-            body: if kind == PouKind::Interface {
-                Body::None
-            } else {
-                Body::st("")
-            },
+            body: Body::st(""),
             methods: Vec::new(),
             properties: Vec::new(),
             actions: Vec::new(),
         };
-        for child in node.children() {
-            match child.kind() {
-                SyntaxKind::EXTENDS_CLAUSE => {
-                    pou.extends = name_refs(&child).into_iter().next();
-                }
-                SyntaxKind::IMPLEMENTS_CLAUSE => pou.implements = name_refs(&child),
-                SyntaxKind::VAR_BLOCK => {
-                    pou.variables.extend(self.variables(&name, &child));
-                }
-                SyntaxKind::STATEMENT_LIST
-                    if !is_blank(&child) && matches!(pou.body.st_text(), Some("")) =>
-                {
-                    pou.body = Body::st(child.text().to_string());
-                    self.body_offsets
-                        .insert((name.to_lowercase(), String::new()), start(&child));
-                }
-                SyntaxKind::METHOD_DECL => {
-                    if let Some(method) = self.method(&name, &child) {
-                        pou.methods.push(method);
-                    }
-                }
-                SyntaxKind::PROPERTY_DECL => {
-                    if let Some(property) = self.property(&name, &child) {
-                        pou.properties.push(property);
-                    }
-                }
-                SyntaxKind::ACTION_DECL => {
-                    if let Some((action, range)) = name_of(&child) {
-                        self.declare(&name, &action, range);
-                        let (body, offset) = statements_of(&child);
-                        if let Some(offset) = offset {
-                            let key = format!("action {}", action.to_lowercase());
-                            self.body_offsets.insert((name.to_lowercase(), key), offset);
-                        }
-                        pou.actions.push(PouAction { name: action, body });
-                    }
-                }
-                _ => {}
-            }
+        for block in node.var_blocks() {
+            pou.variables.extend(self.variables(&name, &block));
         }
+        // A body split by members (textual SFC) is taken from its first part with text.
+        if let Some(list) = node.bodies().find(|list| !is_blank(list.syntax())) {
+            pou.body = Body::st(list.syntax().text().to_string());
+            self.body_offsets
+                .insert((name.to_lowercase(), String::new()), start(list.syntax()));
+        }
+        self.members(&mut pou, node.members());
         self.objects.push(Object::Pou(pou));
     }
 
-    fn method(&mut self, pou: &str, node: &SyntaxNode) -> Option<Method> {
-        let (name, range) = name_of(node)?;
+    fn interface(&mut self, node: &InterfaceDecl) {
+        let Some((name, name_range)) = name_of(node.name()) else {
+            return;
+        };
+        if !self.claim(&name, name_range.clone()) {
+            return;
+        }
+        self.declare(&name, &name, name_range);
+        let mut interface = Pou {
+            name,
+            kind: PouKind::Interface,
+            return_type: None,
+            extends: node.extends().and_then(|clause| first_name(&clause)),
+            implements: Vec::new(),
+            comment: String::new(),
+            variables: Vec::new(),
+            body: Body::None,
+            methods: Vec::new(),
+            properties: Vec::new(),
+            actions: Vec::new(),
+        };
+        self.members(&mut interface, node.members());
+        self.objects.push(Object::Pou(interface));
+    }
+
+    /// The methods, properties and actions of `pou`, in the order written (which is the
+    /// order their names are declared in).
+    fn members(&mut self, pou: &mut Pou, members: impl Iterator<Item = PouMember>) {
+        let name = pou.name.clone();
+        for member in members {
+            match member {
+                PouMember::MethodDecl(method) => {
+                    if let Some(method) = self.method(&name, &method) {
+                        pou.methods.push(method);
+                    }
+                }
+                PouMember::PropertyDecl(property) => {
+                    if let Some(property) = self.property(&name, &property) {
+                        pou.properties.push(property);
+                    }
+                }
+                PouMember::ActionDecl(action) => {
+                    if let Some((action_name, range)) = name_of(action.name()) {
+                        self.declare(&name, &action_name, range);
+                        let (body, offset) = statements_of(action.body());
+                        if let Some(offset) = offset {
+                            let key = format!("action {}", action_name.to_lowercase());
+                            self.body_offsets.insert((name.to_lowercase(), key), offset);
+                        }
+                        pou.actions.push(PouAction {
+                            name: action_name,
+                            body,
+                        });
+                    }
+                }
+            }
+        }
+    }
+
+    fn method(&mut self, pou: &str, node: &MethodDecl) -> Option<Method> {
+        let (name, range) = name_of(node.name())?;
         self.declare(pou, &name, range);
         let mut variables = Vec::new();
-        for block in node
-            .children()
-            .filter(|child| child.kind() == SyntaxKind::VAR_BLOCK)
-        {
+        for block in node.var_blocks() {
             variables.extend(self.variables(pou, &block));
         }
-        let (body, offset) = statements_of(node);
+        let (body, offset) = statements_of(node.body());
         if let Some(offset) = offset {
             let key = format!("method {}", name.to_lowercase());
             self.body_offsets.insert((pou.to_lowercase(), key), offset);
         }
         Some(Method {
-            return_type: return_type(node),
-            access: access_of(node),
-            is_abstract: has_token(node, SyntaxKind::ABSTRACT),
+            return_type: node.return_type().map(|ty| trimmed(ty.syntax())),
+            access: access_of(node.modifiers()),
+            is_abstract: node.modifiers().any(|kind| kind == SyntaxKind::ABSTRACT),
             comment: String::new(),
             variables,
             body,
@@ -271,32 +301,24 @@ impl Builder {
         })
     }
 
-    fn property(&mut self, pou: &str, node: &SyntaxNode) -> Option<Property> {
-        let (name, range) = name_of(node)?;
+    fn property(&mut self, pou: &str, node: &PropertyDecl) -> Option<Property> {
+        let (name, range) = name_of(node.name())?;
         self.declare(pou, &name, range);
         let mut property = Property {
-            ty: return_type(node).unwrap_or_default(),
-            access: access_of(node),
+            ty: node.ty().map(|ty| trimmed(ty.syntax())).unwrap_or_default(),
+            access: access_of(node.modifiers()),
             comment: String::new(),
             get: None,
             set: None,
             name: name.clone(),
         };
-        for accessor in node
-            .children()
-            .filter(|child| child.kind() == SyntaxKind::ACCESSOR_DECL)
-        {
-            let get = accessor
-                .first_token()
-                .is_some_and(|token| token.text().eq_ignore_ascii_case("GET"));
+        for accessor in node.accessors() {
+            let get = accessor.is_get();
             let mut variables = Vec::new();
-            for block in accessor
-                .children()
-                .filter(|child| child.kind() == SyntaxKind::VAR_BLOCK)
-            {
+            for block in accessor.var_blocks() {
                 variables.extend(self.variables(pou, &block));
             }
-            let (body, offset) = statements_of(&accessor);
+            let (body, offset) = statements_of(accessor.body());
             if let Some(offset) = offset {
                 let key = format!("property {} {get}", name.to_lowercase());
                 self.body_offsets.insert((pou.to_lowercase(), key), offset);
@@ -311,66 +333,50 @@ impl Builder {
         Some(property)
     }
 
-    fn types(&mut self, node: &SyntaxNode) {
-        for definition in node
-            .children()
-            .filter(|child| child.kind() == SyntaxKind::TYPE_DEFINITION)
-        {
-            let Some((name, range)) = name_of(&definition) else {
+    fn types(&mut self, node: &TypeDecl) {
+        for definition in node.definitions() {
+            let Some((name, range)) = name_of(definition.name()) else {
                 continue;
             };
             if !self.claim(&name, range.clone()) {
                 continue;
             }
             self.declare(&name, &name, range);
-            let Some(shape) = definition
-                .children()
-                .find(|child| !matches!(child.kind(), SyntaxKind::NAME | SyntaxKind::INITIALIZER))
-            else {
-                continue;
-            };
-            let extends = definition
-                .children()
-                .chain(shape.children())
-                .find(|child| child.kind() == SyntaxKind::EXTENDS_CLAUSE)
-                .and_then(|clause| name_refs(&clause).into_iter().next());
-            let definition_model = match shape.kind() {
-                SyntaxKind::STRUCT_TYPE => TypeDefinition::Struct {
+            let extends = definition.extends().and_then(|clause| first_name(&clause));
+            let definition_model = if let Some(structure) = definition.struct_type() {
+                TypeDefinition::Struct {
                     extends,
-                    members: self.members(&name, &shape),
-                },
-                SyntaxKind::UNION_TYPE => TypeDefinition::Union {
-                    members: self.members(&name, &shape),
-                },
-                SyntaxKind::ENUM_TYPE => {
-                    let mut values = Vec::new();
-                    for value in shape
-                        .children()
-                        .filter(|child| child.kind() == SyntaxKind::ENUM_VALUE)
-                    {
-                        let Some((value_name, range)) = name_of(&value) else {
-                            continue;
-                        };
-                        self.declare(&name, &value_name, range);
-                        values.push(EnumValue {
-                            name: value_name,
-                            value: value
-                                .children()
-                                .find(|child| child.kind() != SyntaxKind::NAME)
-                                .map(|expression| trimmed(&expression)),
-                            comment: String::new(),
-                        });
-                    }
-                    let base = shape
-                        .children()
-                        .find(|child| child.kind() == SyntaxKind::NAMED_TYPE)
-                        .map(|base| trimmed(&base));
-                    TypeDefinition::Enum { base, values }
+                    members: self.struct_members(&name, structure.members()),
                 }
-                _ => TypeDefinition::Alias {
-                    ty: trimmed(&shape),
-                    initial: initializer(&definition),
-                },
+            } else if let Some(union) = definition.union_type() {
+                TypeDefinition::Union {
+                    members: self.struct_members(&name, union.members()),
+                }
+            } else if let Some(TypeExpr::EnumType(shape)) = definition.ty() {
+                let mut values = Vec::new();
+                for value in shape.values() {
+                    let Some((value_name, range)) = name_of(value.name()) else {
+                        continue;
+                    };
+                    self.declare(&name, &value_name, range);
+                    values.push(EnumValue {
+                        name: value_name,
+                        value: value.value().map(|number| trimmed(number.syntax())),
+                        comment: String::new(),
+                    });
+                }
+                let base = shape.base().map(|base| trimmed(base.syntax()));
+                TypeDefinition::Enum { base, values }
+            } else if let Some(ty) = definition.ty() {
+                TypeDefinition::Alias {
+                    ty: trimmed(ty.syntax()),
+                    initial: definition
+                        .initializer()
+                        .and_then(|initializer| initializer.value())
+                        .map(|value| trimmed(value.syntax())),
+                }
+            } else {
+                continue;
             };
             self.objects.push(Object::DataType(DataType {
                 name,
@@ -380,12 +386,13 @@ impl Builder {
         }
     }
 
-    fn members(&mut self, type_name: &str, node: &SyntaxNode) -> Vec<StructMember> {
+    fn struct_members(
+        &mut self,
+        type_name: &str,
+        declarations: impl Iterator<Item = VarDecl>,
+    ) -> Vec<StructMember> {
         let mut members = Vec::new();
-        for declaration in node
-            .children()
-            .filter(|child| child.kind() == SyntaxKind::VAR_DECL)
-        {
+        for declaration in declarations {
             for variable in self.declared(type_name, &declaration, VarSection::Var) {
                 members.push(StructMember {
                     name: variable.name,
@@ -398,7 +405,7 @@ impl Builder {
         members
     }
 
-    fn globals(&mut self, node: &SyntaxNode) {
+    fn globals(&mut self, node: &GlobalVarList) {
         self.global_lists += 1;
         let mut name = if self.global_lists == 1 {
             "GVL".to_owned()
@@ -410,13 +417,10 @@ impl Builder {
             name.push('_');
         }
         let mut variables = Vec::new();
-        for block in node
-            .children()
-            .filter(|child| child.kind() == SyntaxKind::VAR_BLOCK)
-        {
+        for block in node.var_blocks() {
             variables.extend(self.variables(&name, &block));
         }
-        self.objects.push(Object::Gvl(GlobalVarList {
+        self.objects.push(Object::Gvl(project_model::GlobalVarList {
             name,
             comment: String::new(),
             variables,
@@ -424,20 +428,17 @@ impl Builder {
     }
 
     /// The variables of one `VAR… END_VAR` section.
-    fn variables(&mut self, object: &str, block: &SyntaxNode) -> Vec<Variable> {
+    fn variables(&mut self, object: &str, block: &VarBlock) -> Vec<Variable> {
         let section = match block_section(block) {
             // Configuration and access paths name other variables; they declare none.
             None | Some(VarSection::VarConfig) => return Vec::new(),
             Some(section) => section,
         };
-        let constant = has_token(block, SyntaxKind::CONSTANT);
-        let retain = has_token(block, SyntaxKind::RETAIN);
-        let persistent = has_token(block, SyntaxKind::PERSISTENT);
+        let constant = block.is_constant();
+        let retain = block.has_retain_keyword();
+        let persistent = block.has_persistent_keyword();
         let mut variables = Vec::new();
-        for declaration in block
-            .children()
-            .filter(|child| child.kind() == SyntaxKind::VAR_DECL)
-        {
+        for declaration in block.declarations() {
             for mut variable in self.declared(object, &declaration, section) {
                 variable.constant = constant;
                 variable.retain = retain;
@@ -452,7 +453,7 @@ impl Builder {
     fn declared(
         &mut self,
         object: &str,
-        declaration: &SyntaxNode,
+        declaration: &VarDecl,
         section: VarSection,
     ) -> Vec<Variable> {
         let mut variables = Vec::new();
@@ -460,8 +461,8 @@ impl Builder {
             return variables;
         };
         for name in &parts.names {
-            let text = trimmed(name);
-            self.declare(object, &text, range(name));
+            let text = trimmed(name.syntax());
+            self.declare(object, &text, range(name.syntax()));
             variables.push(Variable {
                 name: text,
                 section,
@@ -476,46 +477,26 @@ impl Builder {
 }
 
 /// The statements of a method, accessor or action with the offset where they start.
-fn statements_of(node: &SyntaxNode) -> (Body, Option<usize>) {
-    match node
-        .children()
-        .find(|child| child.kind() == SyntaxKind::STATEMENT_LIST)
-    {
-        Some(list) => (Body::st(list.text().to_string()), Some(start(&list))),
+fn statements_of(list: Option<StatementList>) -> (Body, Option<usize>) {
+    match list {
+        Some(list) => (
+            Body::st(list.syntax().text().to_string()),
+            Some(start(list.syntax())),
+        ),
         None => (Body::st(""), None),
     }
 }
 
-fn initializer(node: &SyntaxNode) -> Option<String> {
-    let initializer = node
-        .children()
-        .find(|child| child.kind() == SyntaxKind::INITIALIZER)?;
-    let value = initializer.children().next()?;
-    Some(trimmed(&value))
+/// A declared name's text and range, unless it is missing or blank.
+fn name_of(name: Option<Name>) -> Option<(String, Range<usize>)> {
+    let name = name?;
+    let text = trimmed(name.syntax());
+    (!text.is_empty()).then(|| (text, range(name.syntax())))
 }
 
-fn return_type(node: &SyntaxNode) -> Option<String> {
-    let return_type = node
-        .children()
-        .find(|child| child.kind() == SyntaxKind::RETURN_TYPE)?;
-    let ty = return_type.children().next()?;
-    Some(trimmed(&ty))
-}
-
-/// The declared name directly under `node`, with its range.
-fn name_of(node: &SyntaxNode) -> Option<(String, Range<usize>)> {
-    let name = node
-        .children()
-        .find(|child| child.kind() == SyntaxKind::NAME)?;
-    let text = trimmed(&name);
-    (!text.is_empty()).then(|| (text, range(&name)))
-}
-
-fn name_refs(node: &SyntaxNode) -> Vec<String> {
-    node.children()
-        .filter(|child| child.kind() == SyntaxKind::NAME_REF)
-        .map(|name| trimmed(&name))
-        .collect()
+/// The first name of an `EXTENDS` clause: a POU or structure has one base.
+fn first_name(clause: &ExtendsClause) -> Option<String> {
+    clause.names().next().map(|name| trimmed(name.syntax()))
 }
 
 fn is_blank(node: &SyntaxNode) -> bool {
@@ -624,5 +605,37 @@ END_FUNCTION_BLOCK
         };
         let at = source.locate(&finding).expect("declarations map back");
         assert_eq!(&SOURCE[at], "b");
+    }
+
+    #[test]
+    fn a_structure_extending_another_is_a_structure_with_its_base() {
+        let source = SourceProject::new(
+            "TYPE
+    ST_A : STRUCT a : INT; END_STRUCT;
+    \
+             ST_B EXTENDS ST_A : STRUCT b : INT; END_STRUCT;
+END_TYPE
+\
+             PROGRAM Main
+VAR s : ST_B; END_VAR
+s.b := s.a;
+END_PROGRAM
+",
+        );
+        let Some(Object::DataType(extended)) = source.project.application.object("ST_B") else {
+            panic!("no ST_B");
+        };
+        let TypeDefinition::Struct { extends, members } = &extended.definition else {
+            panic!("ST_B is no structure: {:?}", extended.definition);
+        };
+        assert_eq!(extends.as_deref(), Some("ST_A"));
+        let names: Vec<&str> = members.iter().map(|m| m.name.as_str()).collect();
+        assert_eq!(names, ["b"]);
+        let errors: Vec<String> = crate::sema::check_project(&source.project)
+            .into_iter()
+            .filter(|found| found.diagnostic.severity == crate::Severity::Error)
+            .map(|found| found.diagnostic.message)
+            .collect();
+        assert_eq!(errors, Vec::<String>::new());
     }
 }

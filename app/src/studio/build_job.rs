@@ -139,7 +139,7 @@ pub fn build(project: &Project, revision: u64) -> BuildOutcome {
                     None,
                 )
             }
-            Err(CompileError::Unsupported(reason)) => (None, Some(reason)),
+            Err(CompileError::Unsupported(error)) => (None, Some(error.to_string())),
             Err(CompileError::Diagnostics(_)) => (
                 None,
                 Some("the compiler found errors the checker did not report".to_owned()),

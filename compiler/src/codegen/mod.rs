@@ -44,9 +44,11 @@ pub enum CompileError {
     /// The checker found errors; nothing was generated.
     #[error("the project has {} error(s)", .0.iter().filter(|d| d.diagnostic.severity == Severity::Error).count())]
     Diagnostics(Vec<ProjectDiagnostic>),
-    /// Something the checker accepts that the code generator cannot compile yet, or a limit.
-    #[error("{0}")]
-    Unsupported(String),
+    /// Something the checker accepts that the code generator cannot compile yet, or a limit,
+    /// with where it is (file, POU, declaration, line and origin); shown as the code
+    /// generation error's text.
+    #[error(transparent)]
+    Unsupported(CodegenError),
 }
 
 /// Checks and compiles a project.
@@ -78,6 +80,5 @@ fn compile_with(project: &Project, origin: BodyOrigin<'_>) -> Result<ProgramImag
     {
         return Err(CompileError::Diagnostics(diagnostics));
     }
-    program::build_image(project, origin)
-        .map_err(|error| CompileError::Unsupported(error.to_string()))
+    program::build_image(project, origin).map_err(CompileError::Unsupported)
 }

@@ -6,6 +6,8 @@
 
 use expect_test::{Expect, expect};
 
+use crate::codegen::{CodegenError, StatementPlace, Within};
+use crate::origin::Origin;
 use crate::{CompileError, SourceProject, compile_source};
 
 /// The listing of the POU `pou` compiled from `source`.
@@ -266,4 +268,37 @@ fn a_statement_the_generator_cannot_compile_is_reported_with_its_file_pou_and_li
         .map(|e| e.to_string());
     expect!["test.st: Main: line 5: cannot compile a ATTEMPT_ASSIGN_STMT"]
         .assert_eq(error.as_deref().unwrap_or("compiled"));
+}
+
+#[test]
+fn a_compile_error_hands_the_caller_the_file_pou_line_and_origin_as_data() {
+    let text = "PROGRAM Main\nVAR i : I_Any; fb : FB_A; END_VAR\nfb ?= i;\nEND_PROGRAM\n\
+                INTERFACE I_Any END_INTERFACE\n\
+                FUNCTION_BLOCK FB_A IMPLEMENTS I_Any END_FUNCTION_BLOCK\n";
+    let project = SourceProject::new(text);
+    let Err(CompileError::Unsupported(CodegenError::Unsupported { location, .. })) =
+        compile_source(&project, "test.st")
+    else {
+        panic!("the attempt assignment compiled or failed otherwise");
+    };
+    let Some(StatementPlace {
+        line,
+        origin: Origin::Text { range },
+    }) = location.statement().cloned()
+    else {
+        panic!("the error names no statement: {location:?}");
+    };
+    assert_eq!(line, 3);
+    assert_eq!(
+        location.within[..2],
+        [
+            Within::File("test.st".to_owned()),
+            Within::Pou("Main".to_owned())
+        ]
+    );
+    let Some(project_model::Object::Pou(main)) = project.project.application.object("Main") else {
+        panic!("no POU Main");
+    };
+    let body = main.body.st_text().unwrap_or_default();
+    assert_eq!(body.get(range), Some("fb ?= i;"));
 }

@@ -10,7 +10,7 @@ use std::ops::Range;
 use project_model::{Object, Project, Variable};
 
 use crate::elementary::Elementary;
-use crate::sema::address::{self, Area};
+use crate::sema::address::{self, AddressError, Area};
 
 /// The memory area an address lies in.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -60,8 +60,42 @@ impl AddressInfo {
     }
 }
 
+/// Why an address does not fit the variable it is given to, in the declaration table's words.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum AddressCheckError {
+    /// The cell holds only blanks.
+    #[error("the address is empty: write one such as %IX0.0, or clear the cell")]
+    Empty,
+    /// The text is not a direct address.
+    #[error(transparent)]
+    Syntax(#[from] AddressError),
+    /// The address is well formed but its size does not fit the type: `%QW4` for a REAL.
+    #[error(
+        "{text} is {size_bits} bit{} but {ty} needs {needed_bits}: use {suggestion}",
+        plural_s(.size_bits)
+    )]
+    WrongSize {
+        /// The address, trimmed.
+        text: String,
+        /// The size of the address in bits.
+        size_bits: u32,
+        /// The variable's type, in capitals.
+        ty: String,
+        /// The size the type needs in bits.
+        needed_bits: u32,
+        /// The address of the needed size at the same place, or only its area and size letter
+        /// when the place is not aligned to that size (`%MW`).
+        suggestion: String,
+    },
+}
+
+/// The `s` of `bits` after a size other than 1.
+fn plural_s(size_bits: &u32) -> &'static str {
+    if *size_bits == 1 { "" } else { "s" }
+}
+
 /// Reads the syntax of `address` without regard to a type: `%IX0.3`, `%QW4`, `%MD10`, `%I*`.
-pub fn address_info(address: &str) -> Result<AddressInfo, String> {
+pub fn address_info(address: &str) -> Result<AddressInfo, AddressError> {
     let text = address.trim();
     let parsed = address::parse_address(text)?;
     let area_of = |area: Area| match area {
@@ -106,10 +140,10 @@ pub fn address_info(address: &str) -> Result<AddressInfo, String> {
 ///
 /// Types that are not elementary (arrays, structures, strings, function blocks) may lie at any
 /// size of address, as in CODESYS, so only the syntax is checked for them.
-pub fn check_address(address: &str, ty: &str) -> Result<AddressInfo, String> {
+pub fn check_address(address: &str, ty: &str) -> Result<AddressInfo, AddressCheckError> {
     let text = address.trim();
     if text.is_empty() {
-        return Err("the address is empty: write one such as %IX0.0, or clear the cell".to_owned());
+        return Err(AddressCheckError::Empty);
     }
     let info = address_info(text)?;
     let (Some(size), Some(needed)) = (info.size_bits, needed_bits(ty)) else {
@@ -128,11 +162,13 @@ pub fn check_address(address: &str, ty: &str) -> Result<AddressInfo, String> {
         }
         _ => format!("%{area}{letter}"),
     };
-    Err(format!(
-        "{text} is {size} bit{} but {} needs {needed}: use {suggestion}",
-        if size == 1 { "" } else { "s" },
-        ty.trim().to_ascii_uppercase(),
-    ))
+    Err(AddressCheckError::WrongSize {
+        text: text.to_owned(),
+        size_bits: size,
+        ty: ty.trim().to_ascii_uppercase(),
+        needed_bits: needed,
+        suggestion,
+    })
 }
 
 /// The size a located variable of type `ty` must have, `None` when any size will do.
@@ -297,25 +333,39 @@ mod tests {
         assert!(
             check_address("IX0.0", "BOOL")
                 .unwrap_err()
+                .to_string()
                 .contains("start with '%'")
         );
         assert!(
             check_address("%ZX0.0", "BOOL")
                 .unwrap_err()
+                .to_string()
                 .contains("memory area")
         );
-        assert!(check_address("%IK3", "BOOL").unwrap_err().contains("size"));
+        assert!(
+            check_address("%IK3", "BOOL")
+                .unwrap_err()
+                .to_string()
+                .contains("size")
+        );
         assert!(
             check_address("%IX0.8", "BOOL")
                 .unwrap_err()
+                .to_string()
                 .contains("bits 0 to 7")
         );
         assert!(
             check_address("%IWa", "INT")
                 .unwrap_err()
+                .to_string()
                 .contains("not a number")
         );
-        assert!(check_address("", "INT").unwrap_err().contains("empty"));
+        assert!(
+            check_address("", "INT")
+                .unwrap_err()
+                .to_string()
+                .contains("empty")
+        );
     }
 
     #[test]
@@ -366,11 +416,39 @@ mod tests {
         ];
         for (address, ty, message) in cases {
             assert_eq!(
-                check_address(address, ty),
+                check_address(address, ty).map_err(|error| error.to_string()),
                 Err(message.to_owned()),
                 "{address}"
             );
         }
+    }
+
+    #[test]
+    fn an_address_error_says_as_data_why_the_address_does_not_fit() {
+        assert_eq!(
+            check_address(" %QW4 ", "real"),
+            Err(AddressCheckError::WrongSize {
+                text: "%QW4".to_owned(),
+                size_bits: 16,
+                ty: "REAL".to_owned(),
+                needed_bits: 32,
+                suggestion: "%QD2".to_owned(),
+            })
+        );
+        assert_eq!(
+            check_address("IX0.0", "BOOL"),
+            Err(AddressCheckError::Syntax(AddressError::NoPercent {
+                text: "IX0.0".to_owned()
+            }))
+        );
+        assert_eq!(check_address("  ", "BOOL"), Err(AddressCheckError::Empty));
+        assert_eq!(
+            address_info("%IX0.9"),
+            Err(AddressError::NoSuchBit {
+                text: "%IX0.9".to_owned(),
+                bit: 9
+            })
+        );
     }
 
     #[test]

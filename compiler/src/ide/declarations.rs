@@ -10,8 +10,10 @@ use std::ops::Range;
 
 use project_model::{AccessSpecifier, PouKind, Variable};
 
-use crate::declaration_parts::{
-    access_of, block_section, declaration_parts, first_keyword, has_token,
+use crate::declaration_parts::{access_of, block_section, declaration_parts};
+use crate::syntax::ast::{
+    AstNode, ExtendsClause, Item, Name, NameRef, PouMember, SourceFile, StatementList, TypeExpr,
+    VarBlock, VarDecl,
 };
 use crate::syntax::{SyntaxKind, SyntaxNode, SyntaxToken, parse_declaration_part};
 use crate::{Code, Diagnostic};
@@ -79,9 +81,14 @@ pub fn parse_declarations(text: &str) -> Result<ParsedDeclarations, Vec<Diagnost
         header: None,
         variables: Vec::new(),
     };
-    for item in root.children() {
+    for item in SourceFile::cast(root)
+        .into_iter()
+        .flat_map(|file| file.items())
+    {
         reader.item(&item);
     }
+    // Each part is refused where it is: in the order of the text.
+    reader.errors.sort_by_key(|error| error.range.start);
     if !reader.errors.is_empty() {
         return Err(reader.errors);
     }
@@ -101,137 +108,154 @@ struct Reader<'t> {
 }
 
 impl Reader<'_> {
-    fn item(&mut self, item: &SyntaxNode) {
-        match item.kind() {
-            SyntaxKind::POU | SyntaxKind::INTERFACE_DECL | SyntaxKind::METHOD_DECL => {
-                self.header(item);
+    fn item(&mut self, item: &Item) {
+        match item {
+            Item::Pou(_) | Item::InterfaceDecl(_) | Item::MethodDecl(_) => self.header(item),
+            Item::GlobalVarList(list) => {
+                for block in list.var_blocks() {
+                    self.block(&block);
+                }
             }
-            SyntaxKind::GLOBAL_VAR_LIST | SyntaxKind::VAR_BLOCK => self.block_or_list(item),
+            Item::VarBlock(block) => self.block(block),
             _ => self.refuse(
-                item,
+                item.syntax(),
                 "a declaration part holds one header and variable sections; types, \
                  properties and actions are objects of their own",
             ),
         }
     }
 
-    fn header(&mut self, item: &SyntaxNode) {
+    fn header(&mut self, item: &Item) {
         if self.header.is_some() || !self.variables.is_empty() {
             self.refuse(
-                item,
+                item.syntax(),
                 "a declaration part declares one POU or method, with its header first",
             );
             return;
         }
-        let kind = match first_keyword(item) {
-            Some(SyntaxKind::PROGRAM) => DeclarationKind::Pou(PouKind::Program),
-            Some(SyntaxKind::FUNCTION_BLOCK) => DeclarationKind::Pou(PouKind::FunctionBlock),
-            Some(SyntaxKind::FUNCTION) => DeclarationKind::Pou(PouKind::Function),
-            Some(SyntaxKind::INTERFACE) => DeclarationKind::Pou(PouKind::Interface),
-            _ => DeclarationKind::Method,
+        let header = match item {
+            Item::Pou(pou) => Header {
+                kind: match pou.keyword().map(|keyword| keyword.kind()) {
+                    Some(SyntaxKind::PROGRAM) => DeclarationKind::Pou(PouKind::Program),
+                    Some(SyntaxKind::FUNCTION_BLOCK) => {
+                        DeclarationKind::Pou(PouKind::FunctionBlock)
+                    }
+                    Some(SyntaxKind::FUNCTION) => DeclarationKind::Pou(PouKind::Function),
+                    _ => DeclarationKind::Method,
+                },
+                name: pou.name(),
+                return_type: pou.return_type(),
+                extends: pou.extends(),
+                implements: pou
+                    .implements()
+                    .map(|clause| clause.names().collect())
+                    .unwrap_or_default(),
+                modifiers: pou.modifiers().collect(),
+                blocks: pou.var_blocks().collect(),
+                bodies: pou.bodies().collect(),
+                members: pou.members().collect(),
+            },
+            Item::InterfaceDecl(interface) => Header {
+                kind: DeclarationKind::Pou(PouKind::Interface),
+                name: interface.name(),
+                return_type: None,
+                extends: interface.extends(),
+                implements: Vec::new(),
+                modifiers: Vec::new(),
+                blocks: Vec::new(),
+                bodies: Vec::new(),
+                members: interface.members().collect(),
+            },
+            Item::MethodDecl(method) => Header {
+                kind: DeclarationKind::Method,
+                name: method.name(),
+                return_type: method.return_type(),
+                extends: None,
+                implements: Vec::new(),
+                modifiers: method.modifiers().collect(),
+                blocks: method.var_blocks().collect(),
+                bodies: method.body().into_iter().collect(),
+                members: Vec::new(),
+            },
+            _ => return,
         };
-        let child_text = |kind: SyntaxKind| {
-            item.children()
-                .find(|child| child.kind() == kind)
-                .map(|child| trimmed(&child))
-        };
-        let names_in = |kind: SyntaxKind| -> Vec<String> {
-            item.children()
-                .filter(|child| child.kind() == kind)
-                .flat_map(|clause| clause.children())
-                .filter(|child| child.kind() == SyntaxKind::NAME_REF)
-                .map(|name| trimmed(&name))
-                .collect()
-        };
-        let return_type = item
-            .children()
-            .find(|child| child.kind() == SyntaxKind::RETURN_TYPE)
-            .and_then(|node| node.children().next())
-            .map(|ty| trimmed(&ty));
-        let access = access_of(item);
         self.header = Some(DeclarationHeader {
-            kind,
-            name: child_text(SyntaxKind::NAME).unwrap_or_default(),
-            return_type,
-            extends: names_in(SyntaxKind::EXTENDS_CLAUSE).into_iter().next(),
-            implements: names_in(SyntaxKind::IMPLEMENTS_CLAUSE),
-            access,
-            is_abstract: has_token(item, SyntaxKind::ABSTRACT),
+            kind: header.kind,
+            name: header
+                .name
+                .map(|name| trimmed(name.syntax()))
+                .unwrap_or_default(),
+            return_type: header.return_type.map(|ty| trimmed(ty.syntax())),
+            extends: header
+                .extends
+                .and_then(|clause| clause.names().next())
+                .map(|name| trimmed(name.syntax())),
+            implements: header
+                .implements
+                .iter()
+                .map(|name| trimmed(name.syntax()))
+                .collect(),
+            access: access_of(header.modifiers.iter().copied()),
+            is_abstract: header.modifiers.contains(&SyntaxKind::ABSTRACT),
         });
-        for child in item.children() {
-            match child.kind() {
-                SyntaxKind::VAR_BLOCK => self.block(&child),
-                SyntaxKind::STATEMENT_LIST if trimmed(&child).is_empty() => {}
-                SyntaxKind::STATEMENT_LIST => self.refuse(
-                    &child,
+        for block in &header.blocks {
+            self.block(block);
+        }
+        for body in header.bodies.iter().map(|body| body.syntax()) {
+            if !trimmed(body).is_empty() {
+                self.refuse(
+                    body,
                     "statements belong in the implementation, not in the declaration part",
-                ),
-                SyntaxKind::METHOD_DECL | SyntaxKind::PROPERTY_DECL | SyntaxKind::ACTION_DECL => {
-                    self.refuse(
-                        &child,
-                        "methods, properties and actions are objects of their own, not part \
-                         of the declarations",
-                    );
-                }
-                _ => {}
+                );
             }
         }
-    }
-
-    fn block_or_list(&mut self, item: &SyntaxNode) {
-        if item.kind() == SyntaxKind::VAR_BLOCK {
-            self.block(item);
-            return;
-        }
-        for block in item
-            .children()
-            .filter(|child| child.kind() == SyntaxKind::VAR_BLOCK)
-        {
-            self.block(&block);
+        for member in &header.members {
+            self.refuse(
+                member.syntax(),
+                "methods, properties and actions are objects of their own, not part \
+                 of the declarations",
+            );
         }
     }
 
     /// One `VAR… END_VAR` section.
-    fn block(&mut self, block: &SyntaxNode) {
+    fn block(&mut self, block: &VarBlock) {
         let Some(section) = block_section(block) else {
             self.refuse(
-                block,
+                block.syntax(),
                 "access paths (VAR_ACCESS) have no place in the model",
             );
             return;
         };
         let template = Variable {
             section,
-            constant: has_token(block, SyntaxKind::CONSTANT),
-            retain: has_token(block, SyntaxKind::RETAIN),
-            persistent: has_token(block, SyntaxKind::PERSISTENT),
+            constant: block.is_constant(),
+            retain: block.has_retain_keyword(),
+            persistent: block.has_persistent_keyword(),
             ..Variable::default()
         };
-        for declaration in block
-            .children()
-            .filter(|child| child.kind() == SyntaxKind::VAR_DECL)
-        {
+        for declaration in block.declarations() {
             self.declaration(&declaration, &template);
         }
     }
 
     /// One declaration `a, b AT %IX0.0 : BOOL := TRUE; // comment`.
-    fn declaration(&mut self, declaration: &SyntaxNode, template: &Variable) {
+    fn declaration(&mut self, declaration: &VarDecl, template: &Variable) {
         let Some(parts) = declaration_parts(declaration, trimmed) else {
             self.refuse(
-                declaration,
+                declaration.syntax(),
                 "a located variable needs a name: write `name AT %IX0.0 : BOOL;`",
             );
             return;
         };
-        let range = super::trimmed_range(declaration);
+        let range = super::trimmed_range(declaration.syntax());
         let comment = self
             .trailing_comment(range.end)
             .or_else(|| self.comment_above(range.start))
             .unwrap_or_default();
         for name in &parts.names {
             self.variables.push(Variable {
-                name: trimmed(name),
+                name: trimmed(name.syntax()),
                 ty: parts.ty.clone(),
                 initial: parts.initial.clone(),
                 address: parts.address.clone(),
@@ -304,6 +328,22 @@ impl Reader<'_> {
             message,
         ));
     }
+}
+
+/// The parts of a POU, interface or method header that a declaration part reads or refuses.
+struct Header {
+    kind: DeclarationKind,
+    name: Option<Name>,
+    return_type: Option<TypeExpr>,
+    extends: Option<ExtendsClause>,
+    implements: Vec<NameRef>,
+    modifiers: Vec<SyntaxKind>,
+    /// The variable sections, read into variables.
+    blocks: Vec<VarBlock>,
+    /// The statement lists: refused unless blank.
+    bodies: Vec<StatementList>,
+    /// Methods, properties and actions written inside: refused.
+    members: Vec<PouMember>,
 }
 
 /// The `//` lines that open the text, as `declaration_text()` writes an object's comment.

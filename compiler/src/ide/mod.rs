@@ -16,9 +16,10 @@ mod semantic_tokens;
 
 use std::ops::Range;
 
+pub use crate::sema::address::AddressError;
 pub use addresses::{
-    AddressArea, AddressInfo, LocatedVariable, Overlap, address_info, check_address,
-    located_overlaps, located_variables,
+    AddressArea, AddressCheckError, AddressInfo, LocatedVariable, Overlap, address_info,
+    check_address, located_overlaps, located_variables,
 };
 pub use declarations::{
     DeclarationHeader, DeclarationKind, ParsedDeclarations, parse_declarations,

@@ -3,9 +3,12 @@
 use std::ops::Range;
 
 use super::trimmed_range;
-use crate::declaration_parts::first_keyword;
 use crate::syntax::SyntaxKind::*;
-use crate::syntax::{SyntaxNode, parse};
+use crate::syntax::ast::{
+    ActionDecl, AstChildren, AstNode, ConfigurationDecl, InterfaceDecl, MethodDecl, Pou,
+    PropertyDecl, StepDecl, TransitionDecl, TypeDefinition, VarDecl,
+};
+use crate::syntax::{SyntaxKind, SyntaxNode, parse};
 
 /// An entry of the outline.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -47,65 +50,122 @@ pub fn outline(text: &str) -> Vec<OutlineItem> {
 
 fn items_in(node: &SyntaxNode) -> Vec<OutlineItem> {
     let mut items = Vec::new();
-    for child in node.children() {
-        match item_kind(&child) {
-            Some(kind) => {
-                if let Some(item) = item(&child, kind) {
-                    items.push(item);
-                }
-            }
+    for entry in AstChildren::<Entry>::new(node) {
+        match entry {
             // Declarations inside sections and lists belong to the enclosing entry.
-            None if matches!(
-                child.kind(),
-                VAR_BLOCK | GLOBAL_VAR_LIST | STATEMENT_LIST | TYPE_DECL | RESOURCE_DECL
-            ) =>
-            {
-                items.extend(items_in(&child));
-            }
-            None => {}
+            Entry::Container(container) => items.extend(items_in(&container)),
+            declared => items.extend(item(&declared)),
         }
     }
     items
 }
 
-fn item_kind(node: &SyntaxNode) -> Option<OutlineKind> {
-    Some(match node.kind() {
-        POU => match first_keyword(node) {
-            Some(FUNCTION_BLOCK) => OutlineKind::FunctionBlock,
-            Some(FUNCTION) => OutlineKind::Function,
-            _ => OutlineKind::Program,
-        },
-        INTERFACE_DECL => OutlineKind::Interface,
-        METHOD_DECL => OutlineKind::Method,
-        PROPERTY_DECL => OutlineKind::Property,
-        ACTION_DECL => OutlineKind::Action,
-        TYPE_DEFINITION => OutlineKind::Type,
-        VAR_DECL => OutlineKind::Variable,
-        STEP_DECL => OutlineKind::Step,
-        TRANSITION_DECL => OutlineKind::Transition,
-        CONFIGURATION_DECL => OutlineKind::Configuration,
-        _ => return None,
-    })
+/// A node the outline lists, or one whose entries belong to the enclosing entry.
+enum Entry {
+    Pou(Pou),
+    Interface(InterfaceDecl),
+    Method(MethodDecl),
+    Property(PropertyDecl),
+    Action(ActionDecl),
+    Type(TypeDefinition),
+    Variable(VarDecl),
+    Step(StepDecl),
+    Transition(TransitionDecl),
+    Configuration(ConfigurationDecl),
+    /// A variable section, global list, statement list, `TYPE` block or resource.
+    Container(SyntaxNode),
 }
 
-fn item(node: &SyntaxNode, kind: OutlineKind) -> Option<OutlineItem> {
-    let name_node = node.descendants().find(|child| {
-        child.kind() == NAME
-            && child
-                .parent()
-                .is_some_and(|p| p == *node || p.kind() == VAR_NAME_LIST)
-    })?;
-    let name = name_node.text().to_string().trim().to_owned();
+impl AstNode for Entry {
+    fn can_cast(kind: SyntaxKind) -> bool {
+        matches!(
+            kind,
+            POU | INTERFACE_DECL
+                | METHOD_DECL
+                | PROPERTY_DECL
+                | ACTION_DECL
+                | TYPE_DEFINITION
+                | VAR_DECL
+                | STEP_DECL
+                | TRANSITION_DECL
+                | CONFIGURATION_DECL
+                | VAR_BLOCK
+                | GLOBAL_VAR_LIST
+                | STATEMENT_LIST
+                | TYPE_DECL
+                | RESOURCE_DECL
+        )
+    }
+
+    fn cast(node: SyntaxNode) -> Option<Self> {
+        Some(match node.kind() {
+            POU => Self::Pou(Pou::cast(node)?),
+            INTERFACE_DECL => Self::Interface(InterfaceDecl::cast(node)?),
+            METHOD_DECL => Self::Method(MethodDecl::cast(node)?),
+            PROPERTY_DECL => Self::Property(PropertyDecl::cast(node)?),
+            ACTION_DECL => Self::Action(ActionDecl::cast(node)?),
+            TYPE_DEFINITION => Self::Type(TypeDefinition::cast(node)?),
+            VAR_DECL => Self::Variable(VarDecl::cast(node)?),
+            STEP_DECL => Self::Step(StepDecl::cast(node)?),
+            TRANSITION_DECL => Self::Transition(TransitionDecl::cast(node)?),
+            CONFIGURATION_DECL => Self::Configuration(ConfigurationDecl::cast(node)?),
+            kind if Self::can_cast(kind) => Self::Container(node),
+            _ => return None,
+        })
+    }
+
+    fn syntax(&self) -> &SyntaxNode {
+        match self {
+            Self::Pou(node) => node.syntax(),
+            Self::Interface(node) => node.syntax(),
+            Self::Method(node) => node.syntax(),
+            Self::Property(node) => node.syntax(),
+            Self::Action(node) => node.syntax(),
+            Self::Type(node) => node.syntax(),
+            Self::Variable(node) => node.syntax(),
+            Self::Step(node) => node.syntax(),
+            Self::Transition(node) => node.syntax(),
+            Self::Configuration(node) => node.syntax(),
+            Self::Container(node) => node,
+        }
+    }
+}
+
+/// The outline entry of a declared thing, with its kind and name; `None` for a container or
+/// a declaration without a name.
+fn item(entry: &Entry) -> Option<OutlineItem> {
+    let (kind, name) = match entry {
+        Entry::Pou(pou) => {
+            let kind = match pou.keyword().map(|keyword| keyword.kind()) {
+                Some(FUNCTION_BLOCK) => OutlineKind::FunctionBlock,
+                Some(FUNCTION) => OutlineKind::Function,
+                _ => OutlineKind::Program,
+            };
+            (kind, pou.name())
+        }
+        Entry::Interface(interface) => (OutlineKind::Interface, interface.name()),
+        Entry::Method(method) => (OutlineKind::Method, method.name()),
+        Entry::Property(property) => (OutlineKind::Property, property.name()),
+        Entry::Action(action) => (OutlineKind::Action, action.name()),
+        Entry::Type(definition) => (OutlineKind::Type, definition.name()),
+        Entry::Variable(declaration) => (OutlineKind::Variable, declaration.names().next()),
+        Entry::Step(step) => (OutlineKind::Step, step.name()),
+        Entry::Transition(transition) => (OutlineKind::Transition, transition.name()),
+        Entry::Configuration(configuration) => (OutlineKind::Configuration, configuration.name()),
+        Entry::Container(_) => return None,
+    };
+    let name = name?;
+    let node = entry.syntax();
     let children = if kind == OutlineKind::Variable {
         Vec::new()
     } else {
         items_in(node)
     };
     Some(OutlineItem {
-        name,
+        name: name.text(),
         kind,
         range: trimmed_range(node),
-        name_range: trimmed_range(&name_node),
+        name_range: trimmed_range(name.syntax()),
         children,
     })
 }

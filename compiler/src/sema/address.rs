@@ -32,7 +32,7 @@ impl Address {
 
 /// Why a text is not a direct address; each variant names the text as written.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
-pub(crate) enum AddressError {
+pub enum AddressError {
     /// `IX0.0`: no `%`.
     #[error("'{text}' is not a direct address: it must start with '%'")]
     NoPercent {
@@ -69,13 +69,6 @@ pub(crate) enum AddressError {
         /// The bit named.
         bit: u64,
     },
-}
-
-/// The message of an address error, for the IDE functions that give errors as text.
-impl From<AddressError> for String {
-    fn from(error: AddressError) -> Self {
-        error.to_string()
-    }
 }
 
 /// Parses `text`; `Ok(None)` for an address left to the I/O mapping (`%I*`), `Err` with what is

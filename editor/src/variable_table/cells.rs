@@ -98,7 +98,9 @@ fn name_error(variables: &[Variable], row: usize, name: &str) -> Option<String> 
 /// Why `variable`'s address does not fit it, if it has one.
 pub(crate) fn address_error(variable: &Variable) -> Option<String> {
     let address = variable.address.as_deref()?;
-    compiler::ide::check_address(address, &variable.ty).err()
+    compiler::ide::check_address(address, &variable.ty)
+        .err()
+        .map(|error| error.to_string())
 }
 
 /// The overlap warnings of a project grouped by variable name, for one declaring object: what

@@ -87,6 +87,9 @@ fn types_have_their_parts() {
             (Some("Running".into()), None)
         ]
     );
+    assert_eq!(enumeration.base(), None);
+    let based = first_in_file::<EnumType>("TYPE E : (Idle, Running) DINT; END_TYPE");
+    assert_eq!(text(based.base()).as_deref(), Some("DINT"));
     let TypeExpr::ArrayType(broken) = type_of("ARRAY[1..] OF") else {
         panic!("not an array type");
     };
@@ -233,5 +236,64 @@ END_CONFIGURATION",
     assert_eq!(
         program.program_type().map(|n| n.text()).as_deref(),
         Some("PLC_PRG")
+    );
+}
+
+#[test]
+fn members_keep_their_order_and_modifiers_their_keywords() {
+    let pou = first_in_file::<Pou>(
+        "FUNCTION_BLOCK ABSTRACT FB_A
+VAR PERSISTENT p : INT; END_VAR
+VAR RETAIN r : INT; END_VAR
+ACTION Act: END_ACTION
+METHOD PRIVATE ABSTRACT M : BOOL END_METHOD
+PROPERTY PROTECTED P : INT END_PROPERTY
+END_FUNCTION_BLOCK",
+    );
+    assert_eq!(pou.modifiers().collect::<Vec<_>>(), [SyntaxKind::ABSTRACT]);
+    let kinds: Vec<SyntaxKind> = pou.members().map(|m| m.syntax().kind()).collect();
+    assert_eq!(
+        kinds,
+        [
+            SyntaxKind::ACTION_DECL,
+            SyntaxKind::METHOD_DECL,
+            SyntaxKind::PROPERTY_DECL
+        ]
+    );
+    let Some(PouMember::MethodDecl(method)) = pou.members().nth(1) else {
+        panic!("the second member is not a method");
+    };
+    assert_eq!(
+        method.modifiers().collect::<Vec<_>>(),
+        [SyntaxKind::PRIVATE, SyntaxKind::ABSTRACT]
+    );
+    let Some(PouMember::PropertyDecl(property)) = pou.members().nth(2) else {
+        panic!("the third member is not a property");
+    };
+    assert_eq!(
+        property.modifiers().collect::<Vec<_>>(),
+        [SyntaxKind::PROTECTED]
+    );
+    let blocks: Vec<VarBlock> = pou.var_blocks().collect();
+    assert!(blocks[0].has_persistent_keyword() && !blocks[0].has_retain_keyword());
+    assert!(blocks[0].is_retain());
+    assert!(blocks[1].has_retain_keyword() && !blocks[1].has_persistent_keyword());
+    let interface = first_in_file::<InterfaceDecl>(
+        "INTERFACE I_A PROPERTY P : INT END_PROPERTY METHOD M END_METHOD END_INTERFACE",
+    );
+    let kinds: Vec<SyntaxKind> = interface.members().map(|m| m.syntax().kind()).collect();
+    assert_eq!(kinds, [SyntaxKind::PROPERTY_DECL, SyntaxKind::METHOD_DECL]);
+}
+
+#[test]
+fn a_declaration_part_holds_variable_sections_as_items() {
+    let file = SourceFile::cast(
+        crate::syntax::parse_declaration_part("VAR_INPUT a : INT; END_VAR").syntax(),
+    )
+    .expect("a declaration part is a source file");
+    let items: Vec<Item> = file.items().collect();
+    assert!(
+        matches!(items.as_slice(), [Item::VarBlock(block)] if block.declarations().count() == 1),
+        "{items:?}"
     );
 }

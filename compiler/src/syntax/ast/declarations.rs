@@ -177,6 +177,11 @@ impl EnumType {
     pub fn values(&self) -> AstChildren<EnumValue> {
         children(&self.0)
     }
+
+    /// The base type written after the values, `DINT` in `(Idle, Run) DINT`.
+    pub fn base(&self) -> Option<NamedType> {
+        child(&self.0)
+    }
 }
 
 impl EnumValue {

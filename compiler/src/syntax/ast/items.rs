@@ -25,7 +25,39 @@ ast_enum! {
         MethodDecl,
         /// A `PROPERTY` written on its own.
         PropertyDecl,
+        /// A variable section written on its own, as a declaration part holds it
+        /// (`parse_declaration_part`).
+        VarBlock,
     }
+}
+
+ast_enum! {
+    /// A member of a POU written inside it: a method, property or action.
+    PouMember {
+        /// `METHOD … END_METHOD`.
+        MethodDecl,
+        /// `PROPERTY … END_PROPERTY`.
+        PropertyDecl,
+        /// `ACTION … END_ACTION`.
+        ActionDecl,
+    }
+}
+
+/// The modifiers a POU, method or property may carry after its keyword.
+const MODIFIERS: [SyntaxKind; 6] = [
+    SyntaxKind::ABSTRACT,
+    SyntaxKind::FINAL,
+    SyntaxKind::PUBLIC,
+    SyntaxKind::PRIVATE,
+    SyntaxKind::PROTECTED,
+    SyntaxKind::INTERNAL,
+];
+
+/// The modifier keywords written directly in `node`, in order.
+fn modifiers(node: &SyntaxNode) -> impl Iterator<Item = SyntaxKind> + use<> {
+    tokens(node)
+        .map(|token| token.kind())
+        .filter(|kind| MODIFIERS.contains(kind))
 }
 
 impl SourceFile {
@@ -81,6 +113,16 @@ impl Pou {
         children(&self.0)
     }
 
+    /// The methods, properties and actions in the order written.
+    pub fn members(&self) -> AstChildren<PouMember> {
+        children(&self.0)
+    }
+
+    /// The modifiers after the keyword (`ABSTRACT`, `FINAL`, `PUBLIC`, `PRIVATE`, …), in order.
+    pub fn modifiers(&self) -> impl Iterator<Item = SyntaxKind> + use<> {
+        modifiers(&self.0)
+    }
+
     /// The body's statement lists (a body may be split by members, as in textual SFC).
     pub fn bodies(&self) -> AstChildren<StatementList> {
         children(&self.0)
@@ -114,6 +156,11 @@ impl MethodDecl {
         child(&self.0)
     }
 
+    /// The modifiers after `METHOD` (`ABSTRACT`, `PRIVATE`, …), in order.
+    pub fn modifiers(&self) -> impl Iterator<Item = SyntaxKind> + use<> {
+        modifiers(&self.0)
+    }
+
     /// The return type.
     pub fn return_type(&self) -> Option<TypeExpr> {
         child::<ReturnType>(&self.0).and_then(|r| r.ty())
@@ -134,6 +181,11 @@ impl PropertyDecl {
     /// The property's name.
     pub fn name(&self) -> Option<Name> {
         child(&self.0)
+    }
+
+    /// The modifiers after `PROPERTY` (`PRIVATE`, `FINAL`, …), in order.
+    pub fn modifiers(&self) -> impl Iterator<Item = SyntaxKind> + use<> {
+        modifiers(&self.0)
     }
 
     /// The property's type.
@@ -184,6 +236,11 @@ impl InterfaceDecl {
 
     /// The properties, in order.
     pub fn properties(&self) -> AstChildren<PropertyDecl> {
+        children(&self.0)
+    }
+
+    /// The methods and properties in the order written.
+    pub fn members(&self) -> AstChildren<PouMember> {
         children(&self.0)
     }
 }
@@ -261,8 +318,17 @@ impl VarBlock {
 
     /// Whether the section is `RETAIN` or `PERSISTENT`.
     pub fn is_retain(&self) -> bool {
+        self.has_retain_keyword() || self.has_persistent_keyword()
+    }
+
+    /// Whether `RETAIN` is written on the section.
+    pub fn has_retain_keyword(&self) -> bool {
         token(&self.0, SyntaxKind::RETAIN).is_some()
-            || token(&self.0, SyntaxKind::PERSISTENT).is_some()
+    }
+
+    /// Whether `PERSISTENT` is written on the section.
+    pub fn has_persistent_keyword(&self) -> bool {
+        token(&self.0, SyntaxKind::PERSISTENT).is_some()
     }
 
     /// The declarations, in order.

@@ -15,7 +15,7 @@ mod support;
 
 pub use declarations::{InitValue, TypeExpr};
 pub use expressions::{ArgKind, Expr};
-pub use items::Item;
+pub use items::{Item, PouMember};
 pub use nodes::*;
 pub use statements::{CaseLabel, Stmt};
 pub use support::AstChildren;

@@ -20,6 +20,14 @@ impl<N: AstNode> Iterator for AstChildren<N> {
     }
 }
 
+impl<N: AstNode> AstChildren<N> {
+    /// The children of `parent` of type `N`, for a view that gathers several node types of
+    /// its own (as the outline does).
+    pub(crate) fn new(parent: &SyntaxNode) -> Self {
+        children(parent)
+    }
+}
+
 /// The children of `parent` of type `N`.
 pub(super) fn children<N: AstNode>(parent: &SyntaxNode) -> AstChildren<N> {
     AstChildren {
