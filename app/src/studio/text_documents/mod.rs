@@ -16,9 +16,11 @@ use editor::{
 use egui::{RichText, Ui};
 use project_model::{Body, Edit, GlobalVarList, Object, Pou, Project, TextTarget, VarOwner};
 
+use super::command::{Command, Commands};
 use super::i18n::{Language, Text};
-use super::studio_app::{Command, Studio};
+pub use super::reveal::Reveal;
 use super::tree_node::TreeNode;
+use super::view::StudioView;
 pub use inline::InlineValues;
 use live_check::LiveCheck;
 use services::BodyServices;
@@ -37,20 +39,6 @@ pub enum TextKey {
     },
     /// A global variable list's declarations.
     Gvl(String),
-}
-
-/// Where to put the caret in a document.
-#[derive(Clone, Debug, PartialEq)]
-pub enum Reveal {
-    /// A byte range of a body.
-    Body(TextTarget, Range<usize>),
-    /// The declaration of a name in the document's (or its method's) declarations.
-    Declaration {
-        /// The method or property that declares it, if not the POU itself.
-        container: Option<String>,
-        /// The declared name.
-        name: String,
-    },
 }
 
 /// The part of a POU a document shows.
@@ -76,19 +64,6 @@ struct TextEditor {
     synced: String,
 }
 
-/// A place found by "find references", listed in the messages pane.
-#[derive(Clone, Debug, PartialEq)]
-pub struct ReferenceItem {
-    /// `file:line: text of the line`.
-    pub label: String,
-    /// The document.
-    pub node: TreeNode,
-    /// The body and range.
-    pub target: TextTarget,
-    /// The name's byte range.
-    pub range: Range<usize>,
-}
-
 /// Every text editor of the open documents and what they share.
 #[derive(Default)]
 pub struct TextDocuments {
@@ -99,10 +74,6 @@ pub struct TextDocuments {
     tables: HashMap<String, bool>,
     /// A place to show once its document is drawn.
     pub reveal: Option<(TreeNode, Reveal)>,
-    /// The results of the last "find references".
-    pub references: Vec<ReferenceItem>,
-    /// The name the references are of.
-    pub references_of: String,
     live: LiveCheck,
     /// Values shown inline while online, and the prepared ones typed in their boxes.
     pub inline: InlineValues,
@@ -227,6 +198,17 @@ impl TextDocuments {
     }
 }
 
+/// The POU part a document shows, and where to put the caret in it this frame.
+#[derive(Clone, Copy)]
+struct Shown<'a> {
+    /// The POU.
+    pou: &'a Pou,
+    /// Its part shown.
+    part: &'a Part,
+    /// The place to reveal, once.
+    reveal: Option<&'a Reveal>,
+}
+
 /// The body of a POU part, with its target.
 fn body_of<'p>(pou: &'p Pou, part: &Part) -> Option<(TextTarget, &'p Body)> {
     let name = pou.name.clone();
@@ -267,23 +249,28 @@ fn body_of<'p>(pou: &'p Pou, part: &Part) -> Option<(TextTarget, &'p Body)> {
 
 /// Draws a POU document (graphical bodies as their data until their editors come). Returns
 /// `false` when `name` is not a POU.
-pub(crate) fn pou_document_ui(studio: &mut Studio, ui: &mut Ui, name: &str) -> bool {
-    let Some(session) = &studio.session else {
+pub(crate) fn pou_document_ui(
+    view: StudioView<'_>,
+    texts: &mut TextDocuments,
+    commands: &mut Commands,
+    ui: &mut Ui,
+    name: &str,
+) -> bool {
+    let Some(project) = view.project() else {
         return false;
     };
-    let Some(Object::Pou(pou)) = session.project.application.object(name) else {
+    let Some(Object::Pou(pou)) = project.application.object(name) else {
         return false;
     };
-    let pou = pou.clone();
-    let language = studio.settings.language;
-    let mut part = studio.texts.parts.get(name).cloned().unwrap_or_default();
+    let language = view.language;
+    let mut part = texts.parts.get(name).cloned().unwrap_or_default();
 
     // A pending reveal for this document picks its part first.
     let node = TreeNode::Object(name.to_owned());
-    let reveal = match &studio.texts.reveal {
+    let reveal = match &texts.reveal {
         Some((target, reveal)) if *target == node => {
             let reveal = reveal.clone();
-            studio.texts.reveal = None;
+            texts.reveal = None;
             Some(reveal)
         }
         _ => None,
@@ -340,23 +327,33 @@ pub(crate) fn pou_document_ui(studio: &mut Studio, ui: &mut Ui, name: &str) -> b
             }
         }
         ui.separator();
-        let table = studio.texts.tables.entry(name.to_owned()).or_insert(false);
+        let table = texts.tables.entry(name.to_owned()).or_insert(false);
         ui.selectable_value(table, false, Text::AsText.get(language));
         ui.selectable_value(table, true, Text::AsTable.get(language));
     });
-    studio.texts.parts.insert(name.to_owned(), part.clone());
+    texts.parts.insert(name.to_owned(), part.clone());
 
-    let show_table = studio.texts.tables.get(name).copied().unwrap_or(false);
+    let show_table = texts.tables.get(name).copied().unwrap_or(false);
     let height = ui.available_height();
     let declaration_height = (height * 0.35).clamp(80.0, 320.0);
     egui::Panel::top(egui::Id::unique(("declarations", name)))
         .resizable(true)
         .default_size(declaration_height)
         .show(ui, |ui| {
-            declarations_ui(studio, ui, &pou, &part, show_table, reveal.as_ref());
+            let shown = Shown {
+                pou,
+                part: &part,
+                reveal: reveal.as_ref(),
+            };
+            declarations_ui(view, texts, commands, ui, shown, show_table);
         });
     egui::CentralPanel::default_margins().show(ui, |ui| {
-        body_ui(studio, ui, &pou, &part, reveal.as_ref());
+        let shown = Shown {
+            pou,
+            part: &part,
+            reveal: reveal.as_ref(),
+        };
+        body_ui(view, texts, commands, ui, shown);
     });
     true
 }
@@ -373,13 +370,14 @@ fn part_of(target: &TextTarget) -> Part {
 /// The declarations of the POU part: as text (parsed back into the model as you type) or as
 /// the variable table.
 fn declarations_ui(
-    studio: &mut Studio,
+    view: StudioView<'_>,
+    texts: &mut TextDocuments,
+    commands: &mut Commands,
     ui: &mut Ui,
-    pou: &Pou,
-    part: &Part,
+    shown: Shown<'_>,
     show_table: bool,
-    reveal: Option<&Reveal>,
 ) {
+    let Shown { pou, part, reveal } = shown;
     let method = match part {
         Part::Method(method) => Some(method.clone()),
         _ => None,
@@ -412,27 +410,19 @@ fn declarations_ui(
         ),
     };
     let read_only =
-        matches!(part, Part::Property(..) | Part::Action(_)) || studio.online.is_logged_in();
+        matches!(part, Part::Property(..) | Part::Action(_)) || view.online.is_logged_in();
     if show_table && !matches!(part, Part::Property(..) | Part::Action(_)) {
-        let warnings = studio
-            .session
-            .as_ref()
-            .map(|session| {
-                let overlaps = compiler::ide::located_overlaps(&session.project);
-                editor::overlap_warnings(&overlaps, &pou.name)
-            })
-            .unwrap_or_default();
+        // The overlaps are computed once per project revision, not per frame.
+        let warnings = editor::overlap_warnings(view.overlaps, &pou.name);
         let drag_prefix = (pou.kind == project_model::PouKind::Program && method.is_none())
             .then(|| pou.name.clone());
         let output = VariableTable::new(("variables", &pou.name, &method))
             .read_only(read_only)
             .drag_prefix(drag_prefix)
-            .texts(table_texts(studio.settings.language))
+            .texts(table_texts(view.language))
             .show(ui, &variables, &warnings);
         if let Some((label, edit)) = output.edit {
-            studio
-                .pending
-                .push(Command::Edit(label, vec![Edit::Variables { owner, edit }]));
+            commands.push(Command::Edit(label, vec![Edit::Variables { owner, edit }]));
         }
         return;
     }
@@ -446,8 +436,8 @@ fn declarations_ui(
             .as_ref()
             .map_or(pou.name.clone(), |m| format!("{}.{m}", pou.name))
     );
-    let diagnostics = declaration_diagnostics(studio, &pou.name, &text);
-    let entry = studio.texts.editor(key, &text);
+    let diagnostics = declaration_diagnostics(&texts.live, &pou.name, &text);
+    let entry = texts.editor(key, &text);
     entry.editor.set_read_only(read_only);
     if let Some(Reveal::Declaration { name, .. }) = reveal
         && let Some(range) = find_word(entry.editor.text(), name)
@@ -483,9 +473,7 @@ fn declarations_ui(
                     range: 0..typed.find('\n').unwrap_or(typed.len()),
                     severity: editor::Severity::Error,
                     code: String::new(),
-                    message:
-                        "rename the POU or method in the device tree; the name here follows it"
-                            .to_owned(),
+                    message: Text::RenameInTree.get(view.language).to_owned(),
                 }]);
                 return;
             }
@@ -527,7 +515,7 @@ fn declarations_ui(
                     }
                     _ => None,
                 };
-                studio.pending.push(Command::EditText {
+                commands.push(Command::EditText {
                     label: format!("Edit the declarations of {}", pou.name),
                     edits: vec![Edit::ReplaceObject(Object::Pou(changed))],
                     merge_key: merge,
@@ -539,11 +527,11 @@ fn declarations_ui(
 
 /// The live check's findings in the POU's declarations, placed on the declared names.
 fn declaration_diagnostics(
-    studio: &Studio,
+    live: &LiveCheck,
     pou: &str,
     text: &str,
 ) -> Option<Vec<EditorDiagnostic>> {
-    let (_, findings) = studio.texts.live.findings(pou)?;
+    let (_, findings) = live.findings(pou)?;
     Some(
         findings
             .iter()
@@ -601,8 +589,15 @@ pub fn find_word(text: &str, word: &str) -> Option<Range<usize>> {
 
 /// The implementation of the POU part, with live diagnostics, completion, hover, F12, Shift+F12
 /// and values inline while online.
-fn body_ui(studio: &mut Studio, ui: &mut Ui, pou: &Pou, part: &Part, reveal: Option<&Reveal>) {
-    let language = studio.settings.language;
+fn body_ui(
+    view: StudioView<'_>,
+    texts: &mut TextDocuments,
+    commands: &mut Commands,
+    ui: &mut Ui,
+    shown: Shown<'_>,
+) {
+    let Shown { pou, part, reveal } = shown;
+    let language = view.language;
     let Some((target, body)) = body_of(pou, part) else {
         ui.label(RichText::new(Text::NoImplementation.get(language)).weak());
         return;
@@ -618,25 +613,24 @@ fn body_ui(studio: &mut Studio, ui: &mut Ui, pou: &Pou, part: &Part, reveal: Opt
         }
         return;
     };
-    let Some(session) = &studio.session else {
+    let Some(session) = view.session else {
         return;
     };
     let project = &session.project;
     let revision = session.history.revision();
-    if studio.texts.live.update(project, &pou.name, revision) {
+    if texts.live.update(project, &pou.name, revision) {
         ui.ctx().request_repaint_after(live_check::CHECK_DELAY);
     }
-    let diagnostics = body_diagnostics(&studio.texts.live, project, &pou.name, &target);
-    let inline = if studio.online.is_online() {
-        studio
-            .texts
+    let diagnostics = body_diagnostics(&texts.live, project, &pou.name, &target);
+    let inline = if view.online.is_online() {
+        texts
             .inline
-            .values_for(&studio.online, project, &target, text, pou)
+            .values_for(view.online, project, &target, text, pou)
     } else {
-        studio.texts.inline.forget(&target);
+        texts.inline.forget(&target);
         Vec::new()
     };
-    let read_only = studio.online.is_logged_in();
+    let read_only = view.online.is_logged_in();
     let key = TextKey::Body(target.clone());
     let text = text.to_owned();
     let label = format!("Implementation of {}", target_label(&target));
@@ -644,7 +638,7 @@ fn body_ui(studio: &mut Studio, ui: &mut Ui, pou: &Pou, part: &Part, reveal: Opt
         project,
         target: target.clone(),
     };
-    let entry = studio.texts.editor(key, &text);
+    let entry = texts.editor(key, &text);
     entry.editor.set_read_only(read_only);
     if let Some(diagnostics) = diagnostics {
         entry.editor.set_diagnostics(diagnostics);
@@ -655,16 +649,16 @@ fn body_ui(studio: &mut Studio, ui: &mut Ui, pou: &Pou, part: &Part, reveal: Opt
         entry.editor.request_focus();
     }
     let output = entry.editor.show(ui, &label, &services);
-    let mut commands = Vec::new();
     if let Some(offset) = output.goto_definition {
         match compiler::ide::definition(project, &target, offset) {
             Some(definition) => {
                 let object = definition.object.clone().unwrap_or_default();
                 if object.is_empty() {
-                    commands.push(Command::Status(format!(
-                        "{} is part of the standard library",
-                        definition.name
-                    )));
+                    commands.status(
+                        Text::InStandardLibrary
+                            .get(language)
+                            .replace("{name}", &definition.name),
+                    );
                 } else {
                     commands.push(Command::Reveal(
                         TreeNode::Object(object),
@@ -675,16 +669,14 @@ fn body_ui(studio: &mut Studio, ui: &mut Ui, pou: &Pou, part: &Part, reveal: Opt
                     ));
                 }
             }
-            None => commands.push(Command::Status(
-                "no declaration found at the caret".to_owned(),
-            )),
+            None => commands.status(Text::NoDeclarationAtCaret.get(language)),
         }
     }
     if let Some(offset) = output.find_references {
         commands.push(Command::FindReferences(target.clone(), offset));
     }
     if let Some((range, value)) = output.prepared {
-        studio.texts.inline.prepare(&target, range, value);
+        texts.inline.prepare(&target, range, value);
     }
     if !output.changes.is_empty() {
         let edits = output
@@ -706,7 +698,6 @@ fn body_ui(studio: &mut Studio, ui: &mut Ui, pou: &Pou, part: &Part, reveal: Opt
             merge_key,
         });
     }
-    studio.pending.extend(commands);
 }
 
 /// The live check's findings in one body.
@@ -743,35 +734,38 @@ pub fn target_label(target: &TextTarget) -> String {
 }
 
 /// Draws a global variable list: its declarations as text or as the variable table.
-pub(crate) fn gvl_document_ui(studio: &mut Studio, ui: &mut Ui, name: &str) -> bool {
-    let Some(session) = &studio.session else {
+pub(crate) fn gvl_document_ui(
+    view: StudioView<'_>,
+    texts: &mut TextDocuments,
+    commands: &mut Commands,
+    ui: &mut Ui,
+    name: &str,
+) -> bool {
+    let Some(project) = view.project() else {
         return false;
     };
-    let Some(Object::Gvl(gvl)) = session.project.application.object(name) else {
+    let Some(Object::Gvl(gvl)) = project.application.object(name) else {
         return false;
     };
-    let gvl = gvl.clone();
-    let language = studio.settings.language;
+    let language = view.language;
     ui.horizontal(|ui| {
         ui.label(RichText::new(format!("VAR_GLOBAL {}", gvl.name)).strong());
         ui.separator();
-        let table = studio.texts.tables.entry(name.to_owned()).or_insert(false);
+        let table = texts.tables.entry(name.to_owned()).or_insert(false);
         ui.selectable_value(table, false, Text::AsText.get(language));
         ui.selectable_value(table, true, Text::AsTable.get(language));
     });
-    let read_only = studio.online.is_logged_in();
-    if studio.texts.tables.get(name).copied().unwrap_or(false) {
-        let warnings = {
-            let overlaps = compiler::ide::located_overlaps(&session.project);
-            editor::overlap_warnings(&overlaps, &gvl.name)
-        };
+    let read_only = view.online.is_logged_in();
+    if texts.tables.get(name).copied().unwrap_or(false) {
+        // The overlaps are computed once per project revision, not per frame.
+        let warnings = editor::overlap_warnings(view.overlaps, &gvl.name);
         let output = VariableTable::new(("gvl", &gvl.name))
             .read_only(read_only)
             .drag_prefix(Some(gvl.name.clone()))
-            .texts(table_texts(studio.settings.language))
+            .texts(table_texts(view.language))
             .show(ui, &gvl.variables, &warnings);
         if let Some((label, edit)) = output.edit {
-            studio.pending.push(Command::Edit(
+            commands.push(Command::Edit(
                 label,
                 vec![Edit::Variables {
                     owner: VarOwner::Gvl(gvl.name.clone()),
@@ -782,7 +776,7 @@ pub(crate) fn gvl_document_ui(studio: &mut Studio, ui: &mut Ui, name: &str) -> b
         return true;
     }
     let text = gvl.declaration_text();
-    let entry = studio.texts.editor(TextKey::Gvl(gvl.name.clone()), &text);
+    let entry = texts.editor(TextKey::Gvl(gvl.name.clone()), &text);
     entry.editor.set_read_only(read_only);
     let output = entry.editor.show(
         ui,
@@ -804,13 +798,13 @@ pub(crate) fn gvl_document_ui(studio: &mut Studio, ui: &mut Ui, name: &str) -> b
                 comment: parsed.comment,
                 ..gvl.clone()
             };
-            if changed != gvl {
+            if changed != *gvl {
                 entry.synced = changed.declaration_text();
                 let merge_key = match output.gesture {
                     Some(Gesture::Typing { run }) => Some(format!("gvl {} {run}", gvl.name)),
                     _ => None,
                 };
-                studio.pending.push(Command::EditText {
+                commands.push(Command::EditText {
                     label: format!("Edit the declarations of {}", gvl.name),
                     edits: vec![Edit::ReplaceObject(Object::Gvl(changed))],
                     merge_key,
