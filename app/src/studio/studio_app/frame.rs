@@ -36,6 +36,7 @@ impl Studio {
             self.waker_set = true;
         }
         self.set_watched_variables();
+        self.shared.online.set_language(language);
         self.shared.online.poll(Instant::now());
         self.record_cycle_times();
         for message in self.shared.online.take_messages() {
