@@ -206,10 +206,12 @@ impl PlotState {
                     );
                 }
                 if let Some(live) = live {
-                    plot_ui.vline(VLine::new("live", live.master).color(palette.live));
+                    plot_ui.vline(
+                        VLine::new(texts.live_marker.clone(), live.master).color(palette.live),
+                    );
                     if quantity == ContinuityQuantity::Position {
                         plot_ui.points(
-                            Points::new("live", vec![[live.master, live.slave]])
+                            Points::new(texts.live_marker.clone(), vec![[live.master, live.slave]])
                                 .shape(MarkerShape::Circle)
                                 .filled(true)
                                 .radius(5.0)

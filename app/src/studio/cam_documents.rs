@@ -253,6 +253,7 @@ fn cam_editor_texts(language: Language) -> CamEditorTexts {
         not_an_integer: get(Text::CamNotAnInteger),
         lanes_hint: get(Text::CamLanesHint),
         live: get(Text::CamLive),
+        live_marker: get(Text::CamLiveMarker),
     }
 }
 

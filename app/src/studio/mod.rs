@@ -13,6 +13,8 @@ mod document_view;
 mod documents;
 mod fonts;
 mod i18n;
+#[cfg(test)]
+mod literal_tests;
 mod online;
 mod pane;
 mod pane_behavior;

@@ -354,4 +354,5 @@ pub enum Text {
     TraceWord,
     NotLoggedIn,
     TargetBusy,
+    CamLiveMarker,
 }

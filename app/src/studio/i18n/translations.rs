@@ -421,6 +421,7 @@ impl Text {
             Self::TraceWord => ("trace", "跟踪"),
             Self::NotLoggedIn => ("not logged in", "未登录"),
             Self::TargetBusy => ("the target is busy; try again", "目标忙；请重试"),
+            Self::CamLiveMarker => ("live", "实时"),
         };
         match language {
             Language::English => english,
