@@ -25,7 +25,8 @@ impl ChromeState {
     }
 }
 
-/// Draws the menu, tool and status bars from `view`; they emit commands.
+/// The menu and tool bars and the login dialog while they draw: what they read and where their
+/// commands go.
 struct Chrome<'a, 'c> {
     view: StudioView<'a>,
     commands: &'c mut Commands,
@@ -428,7 +429,15 @@ fn online_state(view: StudioView<'_>, dark_mode: bool) -> (String, Option<egui::
                 Some(TargetState::Faulted) => colors.target_failed,
                 _ => colors.target_stopped,
             };
-            let words = state.map_or("", TargetState::describe);
+            let words = state.map_or("", |state| {
+                match state {
+                    TargetState::NoProgram => Text::StateNoProgram,
+                    TargetState::Stopped => Text::StateStopped,
+                    TargetState::Running => Text::StateRunning,
+                    TargetState::Faulted => Text::StateFaulted,
+                }
+                .get(language)
+            });
             (format!("{target}: {words}"), Some(color))
         }
     }

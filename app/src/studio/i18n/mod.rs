@@ -355,4 +355,8 @@ pub enum Text {
     NotLoggedIn,
     TargetBusy,
     CamLiveMarker,
+    StateNoProgram,
+    StateStopped,
+    StateRunning,
+    StateFaulted,
 }

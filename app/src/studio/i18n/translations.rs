@@ -422,6 +422,10 @@ impl Text {
             Self::NotLoggedIn => ("not logged in", "未登录"),
             Self::TargetBusy => ("the target is busy; try again", "目标忙；请重试"),
             Self::CamLiveMarker => ("live", "实时"),
+            Self::StateNoProgram => ("no program", "无程序"),
+            Self::StateStopped => ("stopped", "已停止"),
+            Self::StateRunning => ("running", "运行中"),
+            Self::StateFaulted => ("running with a faulted task", "运行中，有任务故障"),
         };
         match language {
             Language::English => english,
