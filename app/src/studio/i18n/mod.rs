@@ -359,4 +359,12 @@ pub enum Text {
     StateStopped,
     StateRunning,
     StateFaulted,
+    ProgramHasNoTask,
+    TooManyTasks,
+    RecordCountZero,
+    EveryNthRange,
+    TriggerNotBool,
+    BoundToNoDevice,
+    DeviceNotPolled,
+    DeviceBusy,
 }

@@ -426,6 +426,28 @@ impl Text {
             Self::StateStopped => ("stopped", "已停止"),
             Self::StateRunning => ("running", "运行中"),
             Self::StateFaulted => ("running with a faulted task", "运行中，有任务故障"),
+            Self::ProgramHasNoTask => {
+                ("the program has no task '{task}'", "程序中没有任务“{task}”")
+            }
+            Self::TooManyTasks => ("too many tasks", "任务过多"),
+            Self::RecordCountZero => ("the record count is 0", "记录数为 0"),
+            Self::EveryNthRange => (
+                "every n-th cycle must be 1 to {max}, not {value}",
+                "每 n 个周期必须为 1 到 {max}，而不是 {value}",
+            ),
+            Self::TriggerNotBool => (
+                "the trigger {name} is not a BOOL; the target triggers on BOOL edges and levels",
+                "触发变量 {name} 不是 BOOL；目标只能在 BOOL 的边沿和电平上触发",
+            ),
+            Self::BoundToNoDevice => ("{path} is bound to no device", "{path} 未绑定到任何设备"),
+            Self::DeviceNotPolled => (
+                "device {device} is not polled; watch one of its variables",
+                "设备 {device} 未被轮询；请监视其一个变量",
+            ),
+            Self::DeviceBusy => (
+                "device {device} is busy; try again",
+                "设备 {device} 忙；请重试",
+            ),
         };
         match language {
             Language::English => english,

@@ -28,7 +28,7 @@ impl Online {
             self.error(format!("{}: {text}", self.trace_named(&config.name)));
             return;
         };
-        match self.trace.prepare(config, &image.tasks) {
+        match self.trace.prepare(config, &image.tasks, self.language) {
             Ok(paths) => {
                 self.resolve(&paths);
                 self.advance_trace();
@@ -81,7 +81,8 @@ impl Online {
         let samples = usize::try_from(config.record_count)
             .unwrap_or(usize::MAX)
             .min(100_000);
-        self.devices.trace(&device_name, samples, interval)?;
+        self.devices
+            .trace(&device_name, samples, interval, self.language)?;
         self.device_trace = Some(device_name);
         self.trace.device(config, variables);
         Ok(())
@@ -96,7 +97,7 @@ impl Online {
 
     /// Sends the trace configuration once all its paths are resolved.
     pub(super) fn advance_trace(&mut self) {
-        match self.trace.configuration(&self.resolved) {
+        match self.trace.configuration(&self.resolved, self.language) {
             Ok(Some(config)) => {
                 if self.command(Command::TraceStart(config)) {
                     self.trace.armed();

@@ -94,9 +94,9 @@ impl Online {
             .map(|path| (path, self.text(Text::LogInToWrite).to_owned()))
             .collect();
         for (path, bytes) in encoded.devices {
-            if let Err(reason) = self
-                .devices
-                .send(&self.project_devices, &path, bytes, force)
+            if let Err(reason) =
+                self.devices
+                    .send(&self.project_devices, &path, bytes, force, self.language)
             {
                 refused.push((path, reason));
             }
