@@ -172,7 +172,7 @@ impl CamEditor {
                 .live
                 .replace("{master}", &format!("{:.3}", live.master))
                 .replace("{slave}", &format!("{:.3}", live.slave));
-            ui.label(RichText::new(text).color(crate::plots::LIVE_COLOR));
+            ui.label(RichText::new(text).color(crate::CamPalette::of(ui).live));
         }
         let Some(view) = self.view.as_mut() else {
             return output;

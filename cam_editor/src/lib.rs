@@ -16,6 +16,7 @@ mod convert;
 mod editor;
 mod number_field;
 mod output;
+mod palette;
 mod plot_sampling;
 mod plots;
 mod points_csv;
@@ -29,6 +30,7 @@ pub use cam_edit::{CamEditError, delete_key_point, insert_key_point, next_action
 pub use convert::{ConvertError, Curve, continuity_warnings, curve_of};
 pub use editor::CamEditor;
 pub use output::{CamEditorOutput, CamLive};
+pub use palette::CamPalette;
 pub use plot_sampling::{PlotSamples, sample_for_plot};
 pub use points_csv::{PointsCsvError, export_points, import_points};
 pub use texts::CamEditorTexts;

@@ -13,6 +13,7 @@ use project_model::{CamKeyPoint, CamTable};
 use crate::cam_edit::{key_points, set_key_point};
 use crate::editor::{CurveView, Frame, Gesture};
 use crate::output::CamLive;
+use crate::palette::CamPalette;
 use crate::plot_sampling::sample_for_plot;
 use crate::texts::CamEditorTexts;
 
@@ -60,29 +61,15 @@ struct SampleKey {
     columns: usize,
 }
 
-/// The four quantities in plot order, with their colours.
-const QUANTITIES: [(ContinuityQuantity, Color32); 4] = [
-    (
-        ContinuityQuantity::Position,
-        Color32::from_rgb(0x3a, 0x80, 0xe0),
-    ),
-    (
-        ContinuityQuantity::Velocity,
-        Color32::from_rgb(0x30, 0xa0, 0x50),
-    ),
-    (
-        ContinuityQuantity::Acceleration,
-        Color32::from_rgb(0xe0, 0x80, 0x20),
-    ),
-    (
-        ContinuityQuantity::Jerk,
-        Color32::from_rgb(0xa0, 0x50, 0xc0),
-    ),
-];
-
-/// The colour of continuity warnings and of the live marker.
-const WARNING_COLOR: Color32 = Color32::from_rgb(0xe0, 0x30, 0x30);
-pub(crate) const LIVE_COLOR: Color32 = Color32::from_rgb(0x20, 0xb0, 0x90);
+/// The four quantities in plot order, with their colours in `palette`.
+fn quantities(palette: &CamPalette) -> [(ContinuityQuantity, Color32); 4] {
+    [
+        (ContinuityQuantity::Position, palette.position),
+        (ContinuityQuantity::Velocity, palette.velocity),
+        (ContinuityQuantity::Acceleration, palette.acceleration),
+        (ContinuityQuantity::Jerk, palette.jerk),
+    ]
+}
 
 impl PlotState {
     /// The cam with the dragged key point moved, while a drag is in progress.
@@ -174,7 +161,8 @@ impl PlotState {
         let group = ui.scope_id().with("cam plots link");
         let mut hover = None;
         let mut gesture = None;
-        for (index, (quantity, color)) in QUANTITIES.into_iter().enumerate() {
+        let palette = CamPalette::of(ui);
+        for (index, (quantity, color)) in quantities(&palette).into_iter().enumerate() {
             let name = quantity_text(quantity, texts);
             let warnings: Vec<&ContinuityWarning> = view
                 .warnings
@@ -214,18 +202,20 @@ impl PlotState {
                         Points::new(texts.continuity_warnings.clone(), marks)
                             .shape(MarkerShape::Diamond)
                             .radius(6.0)
-                            .color(WARNING_COLOR),
+                            .color(palette.warning),
                     );
                 }
                 if let Some(live) = live {
-                    plot_ui.vline(VLine::new("live", live.master).color(LIVE_COLOR));
+                    plot_ui.vline(
+                        VLine::new(texts.live_marker.clone(), live.master).color(palette.live),
+                    );
                     if quantity == ContinuityQuantity::Position {
                         plot_ui.points(
-                            Points::new("live", vec![[live.master, live.slave]])
+                            Points::new(texts.live_marker.clone(), vec![[live.master, live.slave]])
                                 .shape(MarkerShape::Circle)
                                 .filled(true)
                                 .radius(5.0)
-                                .color(LIVE_COLOR),
+                                .color(palette.live),
                         );
                     }
                 }
@@ -407,8 +397,9 @@ pub(crate) fn warnings_ui(ui: &mut Ui, view: &CurveView, texts: &CamEditorTexts)
         return;
     }
     ui.strong(&texts.continuity_warnings);
+    let color = CamPalette::of(ui).warning;
     for warning in &view.warnings {
-        ui.colored_label(WARNING_COLOR, warning_text(warning, texts));
+        ui.colored_label(color, warning_text(warning, texts));
     }
 }
 

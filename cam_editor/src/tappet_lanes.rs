@@ -5,7 +5,7 @@
 
 use std::collections::HashMap;
 
-use egui::{Align2, Color32, FontId, Key, Rect, Role, Sense, Stroke, Ui, WidgetInfo, pos2, vec2};
+use egui::{Align2, FontId, Key, Rect, Role, Sense, Stroke, Ui, WidgetInfo, pos2, vec2};
 use egui_plot::PlotTransform;
 use project_model::{CamTable, Tappet, TappetAction};
 
@@ -87,7 +87,7 @@ impl LaneState {
                 lane_rect,
                 2.0,
                 if lit {
-                    Color32::from_rgba_unmultiplied(0x30, 0xc0, 0x60, 0x60)
+                    crate::CamPalette::of(ui).lit_lane
                 } else {
                     ui.visuals().faint_bg_color
                 },
@@ -295,6 +295,7 @@ fn paint_tappet(ui: &Ui, painter: &egui::Painter, rect: Rect, tappet: &Tappet, h
         ],
         Stroke::new(width, stroke_color),
     );
+    let palette = crate::CamPalette::of(ui);
     let upper = pos2(x, rect.top() + rect.height() * 0.25);
     let lower = pos2(x, rect.top() + rect.height() * 0.75);
     for (center, action) in [(upper, tappet.on_positive), (lower, tappet.on_negative)] {
@@ -302,18 +303,18 @@ fn paint_tappet(ui: &Ui, painter: &egui::Painter, rect: Rect, tappet: &Tappet, h
         match action {
             TappetAction::None => {}
             TappetAction::On | TappetAction::TimedOn { .. } => {
-                painter.rect_filled(mark, 1.0, Color32::from_rgb(0x30, 0xb0, 0x50));
+                painter.rect_filled(mark, 1.0, palette.tappet_on);
             }
             TappetAction::Off => {
                 painter.rect_stroke(
                     mark,
                     1.0,
-                    Stroke::new(1.5, Color32::from_rgb(0xd0, 0x40, 0x40)),
+                    Stroke::new(1.5, palette.tappet_off),
                     egui::StrokeKind::Inside,
                 );
             }
             TappetAction::Invert => {
-                painter.rect_filled(mark, 1.0, Color32::from_rgb(0xe0, 0xb0, 0x20));
+                painter.rect_filled(mark, 1.0, palette.tappet_invert);
             }
         }
     }

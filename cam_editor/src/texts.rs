@@ -71,6 +71,7 @@ pub struct CamEditorTexts {
     pub not_an_integer: String,
     pub lanes_hint: String,
     pub live: String,
+    pub live_marker: String,
 }
 
 impl Default for CamEditorTexts {
@@ -144,6 +145,7 @@ impl Default for CamEditorTexts {
                 "Double-click a lane to add a tappet; click the upper or lower end of a tappet to change its positive or negative pass",
             ),
             live: s("Online: master {master}, slave {slave}"),
+            live_marker: s("live"),
         }
     }
 }

@@ -3,7 +3,7 @@
 use egui::text::{LayoutJob, TextFormat};
 use egui::{Color32, FontId, TextStyle, Ui};
 
-use crate::{TokenClass, classify_tokens};
+use crate::{SyntaxColors, TokenClass, classify_tokens};
 
 /// A read-only code view: line numbers in a gutter, Structured Text highlighting, text that can
 /// be selected and copied but not changed.
@@ -40,7 +40,7 @@ impl<'a> CodeView<'a> {
             .collect();
         let gutter_color = ui.visuals().weak_text_color();
         let highlight = self.highlight;
-        let dark = ui.visuals().dark_mode;
+        let colors = crate::EditorPalette::of(ui).syntax;
         ui.horizontal_top(|ui| {
             ui.add(
                 egui::Label::new(
@@ -52,7 +52,7 @@ impl<'a> CodeView<'a> {
             );
             let mut layouter = move |ui: &Ui, text: &dyn egui::TextBuffer, wrap_width: f32| {
                 let mut job = if highlight {
-                    highlighted_job(text.as_str(), &font, dark, ui.visuals().text_color())
+                    highlighted_job(text.as_str(), &font, &colors, ui.visuals().text_color())
                 } else {
                     LayoutJob::simple(
                         text.as_str().to_owned(),
@@ -79,43 +79,24 @@ impl<'a> CodeView<'a> {
     }
 }
 
-fn highlighted_job(text: &str, font: &FontId, dark: bool, plain: Color32) -> LayoutJob {
+fn highlighted_job(text: &str, font: &FontId, colors: &SyntaxColors, plain: Color32) -> LayoutJob {
     let mut job = LayoutJob::default();
     for (range, class) in classify_tokens(text) {
-        let color = class_color(class, dark).unwrap_or(plain);
+        let color = class_color(class, colors).unwrap_or(plain);
         job.append(&text[range], 0.0, TextFormat::simple(font.clone(), color));
     }
     job
 }
 
 /// Colours of the token classes; `None` means the theme's text colour.
-fn class_color(class: TokenClass, dark: bool) -> Option<Color32> {
-    let (dark_color, light_color) = match class {
+fn class_color(class: TokenClass, colors: &SyntaxColors) -> Option<Color32> {
+    Some(match class {
         TokenClass::Plain => return None,
-        TokenClass::Keyword => (
-            Color32::from_rgb(86, 156, 214),
-            Color32::from_rgb(0, 70, 180),
-        ),
-        TokenClass::Comment => (
-            Color32::from_rgb(106, 153, 85),
-            Color32::from_rgb(0, 128, 0),
-        ),
-        TokenClass::String => (
-            Color32::from_rgb(206, 145, 120),
-            Color32::from_rgb(163, 21, 21),
-        ),
-        TokenClass::Number => (
-            Color32::from_rgb(181, 206, 168),
-            Color32::from_rgb(9, 134, 88),
-        ),
-        TokenClass::Address => (
-            Color32::from_rgb(220, 180, 90),
-            Color32::from_rgb(150, 90, 0),
-        ),
-        TokenClass::Pragma => (
-            Color32::from_rgb(197, 134, 192),
-            Color32::from_rgb(140, 40, 140),
-        ),
-    };
-    Some(if dark { dark_color } else { light_color })
+        TokenClass::Keyword => colors.keyword,
+        TokenClass::Comment => colors.comment,
+        TokenClass::String => colors.string,
+        TokenClass::Number => colors.number,
+        TokenClass::Address => colors.label,
+        TokenClass::Pragma => colors.attribute,
+    })
 }

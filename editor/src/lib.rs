@@ -12,6 +12,7 @@
 
 mod code_view;
 mod io_mapping;
+mod palette;
 mod st_editor;
 mod st_highlight;
 mod table_texts;
@@ -19,6 +20,7 @@ mod variable_table;
 
 pub use code_view::CodeView;
 pub use io_mapping::{IoMappingOutput, io_mapping_ui};
+pub use palette::{EditorPalette, SyntaxColors};
 pub use st_editor::{
     CompletionItem, CompletionKind, EditorDiagnostic, EditorTexts, Gesture, Highlight, InlineValue,
     KeywordCompletions, LanguageServices, Severity, StEditor, StEditorOutput, TextBuffer,

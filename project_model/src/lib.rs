@@ -14,6 +14,7 @@ mod axis;
 mod cam;
 mod data_type;
 mod declaration_text;
+mod declarations_edit;
 mod edit;
 mod files;
 mod gvl;
@@ -41,6 +42,10 @@ pub use cam::{
     CamTable, CamTablePoint, MotionLaw, PointInterpolation, Tappet, TappetAction, TappetTrack,
 };
 pub use data_type::{DataType, EnumValue, StructMember, TypeDefinition};
+pub use declarations_edit::{
+    DeclarationsChange, TypedDeclarations, TypedHeader, gvl_declarations_change,
+    pou_declarations_change,
+};
 pub use edit::{Edit, EditError, TextTarget, TreeEdit, VarOwner};
 pub use files::{
     APPLICATION_DIR, FORMAT_VERSION, LoadError, LoadProblem, LoadedProject, MANIFEST_FILE_NAME,

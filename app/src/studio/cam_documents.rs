@@ -9,8 +9,10 @@ use cam_editor::{CamEditor, CamEditorTexts, CamLive};
 use egui::Ui;
 use project_model::{CamTable, Edit, Object};
 
+use super::command::{Command, Commands};
 use super::i18n::{Language, Text};
-use super::studio_app::{Command, StatusMessage, Studio};
+use super::status::StatusMessage;
+use super::view::StudioView;
 
 /// The editors of the open cams, by cam name, and their words. Kept while the project is open
 /// and never saved.
@@ -52,16 +54,22 @@ impl CamDocuments {
 /// Draws the cam `name` in its editor if it is a cam table; `false` when it is not.
 ///
 /// The cam is read-only while logged in, as the Structured Text editors are.
-pub(crate) fn cam_document_ui(studio: &mut Studio, ui: &mut Ui, name: &str) -> bool {
-    let Some(session) = &studio.session else {
+pub(crate) fn cam_document_ui(
+    view: StudioView<'_>,
+    cams: &mut CamDocuments,
+    commands: &mut Commands,
+    ui: &mut Ui,
+    name: &str,
+) -> bool {
+    let Some(project) = view.project() else {
         return false;
     };
-    let Some(Object::CamTable(cam)) = session.project.application.object(name) else {
+    let Some(Object::CamTable(cam)) = project.application.object(name) else {
         return false;
     };
-    let language = studio.settings.language;
-    let read_only = studio.online.is_logged_in();
-    let texts = studio.cams.texts(language);
+    let language = view.language;
+    let read_only = view.online.is_logged_in();
+    let texts = cams.texts(language);
     if !cam.comment.is_empty() {
         ui.weak(&cam.comment);
     }
@@ -69,15 +77,14 @@ pub(crate) fn cam_document_ui(studio: &mut Studio, ui: &mut Ui, name: &str) -> b
     let live = if read_only {
         let paths = live_paths(name);
         let number = |path: &String| {
-            studio
-                .online
+            view.online
                 .value(path)
                 .and_then(|value| parse_number(&value.text))
         };
         let values = [number(&paths[0]), number(&paths[1]), number(&paths[2])];
         for path in paths {
-            if !studio.cams.live_paths.contains(&path) {
-                studio.cams.live_paths.push(path);
+            if !cams.live_paths.contains(&path) {
+                cams.live_paths.push(path);
             }
         }
         match values {
@@ -100,36 +107,20 @@ pub(crate) fn cam_document_ui(studio: &mut Studio, ui: &mut Ui, name: &str) -> b
     } else {
         None
     };
-    let editor = studio.cams.editors.entry(name.to_owned()).or_default();
+    let editor = cams.editors.entry(name.to_owned()).or_default();
     let output = editor.show(ui, cam, live.as_ref(), &texts, read_only);
-    // The file dialogs need the whole studio, so the cam is copied out of it, but only then.
-    let wants_file = output.import_csv || output.export_csv;
-    let cam = wants_file.then(|| cam.clone());
     if let Some((label, changed)) = output.edit {
-        studio.pending.push(Command::Edit(
+        commands.push(Command::Edit(
             format!("{name}: {label}"),
             vec![Edit::ReplaceObject(Object::CamTable(changed))],
         ));
     }
-    let Some(cam) = cam else {
-        return true;
-    };
-    if output.import_csv
-        && let Some(path) = rfd::FileDialog::new()
-            .set_title("Import cam points")
-            .add_filter("CSV", &["csv"])
-            .pick_file()
-    {
-        import_csv_file(studio, &cam, &path);
+    // The file dialogs open after the frame, where the studio applies commands.
+    if output.import_csv {
+        commands.push(Command::ImportCamCsv(name.to_owned()));
     }
-    if output.export_csv
-        && let Some(path) = rfd::FileDialog::new()
-            .set_title("Export cam points")
-            .add_filter("CSV", &["csv"])
-            .set_file_name(format!("{name}.csv"))
-            .save_file()
-    {
-        export_csv_file(studio, &cam, &path);
+    if output.export_csv {
+        commands.push(Command::ExportCamCsv(name.to_owned()));
     }
     true
 }
@@ -153,49 +144,44 @@ fn parse_number(text: &str) -> Option<f64> {
     }
 }
 
-/// Replaces the points of `cam` by those of the CSV file at `path`, as one undo step; a read or
-/// parse error goes to the status bar with the file and the line.
-pub(crate) fn import_csv_file(studio: &mut Studio, cam: &CamTable, path: &Path) {
-    let language = studio.settings.language;
+/// The undo label, the edits and the status message that replace the points of `cam` by those
+/// of the CSV file at `path`; a read or parse error is the status message to show, with the
+/// file and the line.
+pub(crate) fn import_csv_file(
+    cam: &CamTable,
+    path: &Path,
+    language: Language,
+) -> Result<(String, Vec<Edit>, StatusMessage), StatusMessage> {
     let result = std::fs::read_to_string(path)
         .map_err(|error| error.to_string())
         .and_then(|text| cam_editor::import_points(cam, &text).map_err(|error| error.to_string()));
     match result {
-        Ok(imported) => {
-            studio.pending.push(Command::Edit(
-                format!("{}: {}", cam.name, Text::CamImportCsv.get(language)),
-                vec![Edit::ReplaceObject(Object::CamTable(imported))],
-            ));
-            studio.status = Some(StatusMessage {
-                text: format!("{} {}", Text::CamImportedFrom.get(language), path.display()),
-                is_error: false,
-            });
-        }
-        Err(error) => {
-            studio.status = Some(StatusMessage {
-                text: format!("{}: {error}", path.display()),
-                is_error: true,
-            });
-        }
+        Ok(imported) => Ok((
+            format!("{}: {}", cam.name, Text::CamImportCsv.get(language)),
+            vec![Edit::ReplaceObject(Object::CamTable(imported))],
+            StatusMessage::info(format!(
+                "{} {}",
+                Text::CamImportedFrom.get(language),
+                path.display()
+            )),
+        )),
+        Err(error) => Err(StatusMessage::error(format!("{}: {error}", path.display()))),
     }
 }
 
-/// Writes the points of `cam` to `path`; the outcome goes to the status bar.
-pub(crate) fn export_csv_file(studio: &mut Studio, cam: &CamTable, path: &Path) {
-    let language = studio.settings.language;
+/// Writes the points of `cam` to `path`; returns the outcome for the status bar.
+pub(crate) fn export_csv_file(cam: &CamTable, path: &Path, language: Language) -> StatusMessage {
     let result = cam_editor::export_points(cam)
         .map_err(|error| error.to_string())
         .and_then(|text| std::fs::write(path, text).map_err(|error| error.to_string()));
-    studio.status = Some(match result {
-        Ok(()) => StatusMessage {
-            text: format!("{} {}", Text::CamExportedTo.get(language), path.display()),
-            is_error: false,
-        },
-        Err(error) => StatusMessage {
-            text: format!("{}: {error}", path.display()),
-            is_error: true,
-        },
-    });
+    match result {
+        Ok(()) => StatusMessage::info(format!(
+            "{} {}",
+            Text::CamExportedTo.get(language),
+            path.display()
+        )),
+        Err(error) => StatusMessage::error(format!("{}: {error}", path.display())),
+    }
 }
 
 /// The cam editor's words in `language`.
@@ -267,6 +253,7 @@ fn cam_editor_texts(language: Language) -> CamEditorTexts {
         not_an_integer: get(Text::CamNotAnInteger),
         lanes_hint: get(Text::CamLanesHint),
         live: get(Text::CamLive),
+        live_marker: get(Text::CamLiveMarker),
     }
 }
 

@@ -4,16 +4,95 @@
 use egui::{RichText, Ui};
 use online::{Reset, TargetState};
 
+use super::command::{Command, Commands};
 use super::i18n::{Language, Text};
 use super::online::{Phase, TargetKind};
 use super::settings::Theme;
-use super::studio_app::{Command, Studio};
+use super::theme::colors_for;
+use super::view::StudioView;
 
-impl Studio {
-    pub(crate) fn menu_bar_ui(&mut self, ui: &mut Ui) {
-        let language = self.settings.language;
-        let has_project = self.session.is_some();
-        let logged_in = self.online.is_logged_in();
+/// What the tool bar keeps between frames.
+#[derive(Default)]
+pub(crate) struct ChromeState {
+    /// The password typed for the controller (never saved).
+    password: String,
+}
+
+impl ChromeState {
+    /// The password typed for the controller, if any.
+    pub fn password(&self) -> Option<String> {
+        (!self.password.is_empty()).then(|| self.password.clone())
+    }
+}
+
+/// The menu and tool bars and the login dialog while they draw: what they read and where their
+/// commands go.
+struct Chrome<'a, 'c> {
+    view: StudioView<'a>,
+    commands: &'c mut Commands,
+}
+
+/// The menu bar; every item emits a command.
+pub(crate) fn menu_bar_ui(ui: &mut Ui, view: StudioView<'_>, commands: &mut Commands) {
+    Chrome { view, commands }.menu_bar_ui(ui);
+}
+
+/// The tool bar: build, the target choice, login and run control.
+pub(crate) fn tool_bar_ui(
+    ui: &mut Ui,
+    view: StudioView<'_>,
+    state: &mut ChromeState,
+    commands: &mut Commands,
+) {
+    Chrome { view, commands }.tool_bar_ui(ui, state);
+}
+
+/// The status bar: the online state, the project and the last action's message.
+pub(crate) fn status_bar_ui(ui: &mut Ui, view: StudioView<'_>) {
+    ui.horizontal(|ui| {
+        let (state, color) = online_state(view, ui.visuals().dark_mode);
+        let text = RichText::new(state).strong();
+        ui.label(match color {
+            Some(color) => text.color(color),
+            None => text,
+        });
+        if view.online.is_online() {
+            let cycle = format!("{} {}", Text::Cycle.get(view.language), view.online.cycle());
+            ui.label(RichText::new(cycle).weak());
+        }
+        if let Some(session) = view.session {
+            ui.separator();
+            let dirty = if session.history.is_dirty() { " *" } else { "" };
+            // The folder's name is enough to tell projects apart; the full path is on hover.
+            let name = session.dir.file_name().map_or_else(
+                || session.dir.display().to_string(),
+                |n| n.to_string_lossy().into_owned(),
+            );
+            ui.label(RichText::new(format!("{name}{dirty}")).weak())
+                .on_hover_text(session.dir.display().to_string());
+        }
+        if let Some(status) = view.status {
+            ui.separator();
+            let text = RichText::new(&status.text);
+            ui.label(if status.is_error {
+                text.color(ui.visuals().error_fg_color)
+            } else {
+                text
+            });
+        }
+    });
+}
+
+/// The dialog that asks before a download and shows its progress.
+pub(crate) fn login_dialog_ui(ctx: &egui::Context, view: StudioView<'_>, commands: &mut Commands) {
+    Chrome { view, commands }.login_dialog_ui(ctx);
+}
+
+impl Chrome<'_, '_> {
+    fn menu_bar_ui(&mut self, ui: &mut Ui) {
+        let language = self.view.language;
+        let has_project = self.view.session.is_some();
+        let logged_in = self.view.online.is_logged_in();
         egui::MenuBar::new().ui(ui, |ui| {
             ui.menu_button(Text::File.get(language), |ui| {
                 self.menu_item(ui, Text::Open, "Ctrl+O", true, Command::OpenDialog);
@@ -23,7 +102,7 @@ impl Studio {
                 self.menu_item(ui, Text::Quit, "", true, Command::Quit);
             });
             ui.menu_button(Text::Edit.get(language), |ui| {
-                let (undo, redo) = match &self.session {
+                let (undo, redo) = match self.view.session {
                     Some(session) => (
                         session.history.undo_label().map(str::to_owned),
                         session.history.redo_label().map(str::to_owned),
@@ -45,7 +124,7 @@ impl Studio {
                     )
                     .clicked()
                 {
-                    self.pending.push(Command::Undo);
+                    self.commands.push(Command::Undo);
                 }
                 if ui
                     .add_enabled(
@@ -54,7 +133,7 @@ impl Studio {
                     )
                     .clicked()
                 {
-                    self.pending.push(Command::Redo);
+                    self.commands.push(Command::Redo);
                 }
             });
             ui.menu_button(Text::View.get(language), |ui| {
@@ -73,7 +152,7 @@ impl Studio {
                 );
                 self.menu_item(ui, Text::Logout, "Ctrl+F8", logged_in, Command::Logout);
                 ui.separator();
-                let online = self.online.is_online();
+                let online = self.view.online.is_online();
                 self.menu_item(ui, Text::Start, "F5", online, Command::Start);
                 self.menu_item(ui, Text::Stop, "Shift+F8", online, Command::Stop);
                 self.menu_item(ui, Text::ResetWarm, "", online, Command::Reset(Reset::Warm));
@@ -87,7 +166,7 @@ impl Studio {
                 );
                 ui.separator();
                 // Modbus devices are written and forced without a login.
-                let online = self.online.can_write();
+                let online = self.view.online.can_write();
                 self.menu_item(
                     ui,
                     Text::WriteValues,
@@ -107,16 +186,16 @@ impl Studio {
             ui.menu_button(Text::Settings.get(language), |ui| {
                 ui.menu_button(Text::LanguageMenu.get(language), |ui| {
                     for choice in Language::ALL {
-                        ui.radio_value(&mut self.settings.language, choice, choice.native_name());
+                        if ui.radio(language == choice, choice.native_name()).clicked() {
+                            self.commands.push(Command::SetLanguage(choice));
+                        }
                     }
                 });
                 ui.menu_button(Text::Theme.get(language), |ui| {
                     for (theme, text) in [(Theme::Dark, Text::Dark), (Theme::Light, Text::Light)] {
-                        if ui
-                            .radio_value(&mut self.settings.theme, theme, text.get(language))
-                            .clicked()
-                        {
-                            ui.ctx().set_theme(theme.egui_theme());
+                        let chosen = self.view.settings.theme == theme;
+                        if ui.radio(chosen, text.get(language)).clicked() {
+                            self.commands.push(Command::SetTheme(theme));
                         }
                     }
                 });
@@ -136,9 +215,9 @@ impl Studio {
         enabled: bool,
         command: Command,
     ) {
-        let button = egui::Button::new(text.get(self.settings.language)).shortcut_text(shortcut);
+        let button = egui::Button::new(text.get(self.view.language)).shortcut_text(shortcut);
         if ui.add_enabled(enabled, button).clicked() {
-            self.pending.push(command);
+            self.commands.push(command);
         }
     }
 
@@ -151,25 +230,24 @@ impl Studio {
         enabled: bool,
         command: Command,
     ) {
-        let button = egui::Button::new(text.get(self.settings.language));
+        let button = egui::Button::new(text.get(self.view.language));
         if ui
             .add_enabled(enabled, button)
             .on_hover_text(shortcut)
             .clicked()
         {
-            self.pending.push(command);
+            self.commands.push(command);
         }
     }
 
-    /// The tool bar: build, the target choice, login and run control, as buttons with their
-    /// shortcuts in the hover text.
-    pub(crate) fn tool_bar_ui(&mut self, ui: &mut Ui) {
-        let language = self.settings.language;
-        let has_project = self.session.is_some();
-        let logged_in = self.online.is_logged_in();
-        let online = self.online.is_online();
+    /// The tool bar's buttons have their shortcuts in the hover text.
+    fn tool_bar_ui(&mut self, ui: &mut Ui, state: &mut ChromeState) {
+        let language = self.view.language;
+        let has_project = self.view.session.is_some();
+        let logged_in = self.view.online.is_logged_in();
+        let online = self.view.online.is_online();
         ui.horizontal(|ui| {
-            let building = self.build.is_some();
+            let building = self.view.building;
             if ui
                 .add_enabled(
                     has_project && !building,
@@ -178,7 +256,7 @@ impl Studio {
                 .on_hover_text("F11")
                 .clicked()
             {
-                self.pending.push(Command::Build);
+                self.commands.push(Command::Build);
             }
             if building {
                 ui.spinner();
@@ -186,23 +264,26 @@ impl Studio {
             ui.separator();
             ui.label(Text::Target.get(language));
             ui.add_enabled_ui(!logged_in, |ui| {
-                let selected = match self.settings.target {
+                let chosen = self.view.settings.target;
+                let selected = match chosen {
                     TargetKind::Simulation => Text::Simulation.get(language),
                     TargetKind::Controller => Text::Controller.get(language),
                 };
                 egui::ComboBox::from_id_salt("target")
                     .selected_text(selected)
                     .show_ui(ui, |ui| {
-                        ui.selectable_value(
-                            &mut self.settings.target,
-                            TargetKind::Simulation,
-                            Text::Simulation.get(language),
-                        );
-                        ui.selectable_value(
-                            &mut self.settings.target,
-                            TargetKind::Controller,
-                            Text::Controller.get(language),
-                        );
+                        for (target, text) in [
+                            (TargetKind::Simulation, Text::Simulation),
+                            (TargetKind::Controller, Text::Controller),
+                        ] {
+                            if ui
+                                .selectable_label(chosen == target, text.get(language))
+                                .clicked()
+                                && chosen != target
+                            {
+                                self.commands.push(Command::SetTarget(target));
+                            }
+                        }
                     })
                     .response
                     .widget_info(|| {
@@ -212,8 +293,8 @@ impl Studio {
                             Text::Target.get(language),
                         )
                     });
-                if self.settings.target == TargetKind::Controller {
-                    if let Some(session) = &self.session {
+                if chosen == TargetKind::Controller {
+                    if let Some(session) = self.view.session {
                         let controller = &session.project.controller;
                         ui.label(
                             RichText::new(format!("{}:{}", controller.host, controller.port))
@@ -222,7 +303,7 @@ impl Studio {
                     }
                     let label = ui.label(Text::Password.get(language));
                     ui.add(
-                        egui::TextEdit::singleline(&mut self.password)
+                        egui::TextEdit::singleline(&mut state.password)
                             .password(true)
                             .desired_width(90.0),
                     )
@@ -245,14 +326,14 @@ impl Studio {
                         (Text::ResetOrigin, Reset::Origin),
                     ] {
                         if ui.button(text.get(language)).clicked() {
-                            self.pending.push(Command::Reset(kind));
+                            self.commands.push(Command::Reset(kind));
                         }
                     }
                 });
             });
             ui.separator();
             // Modbus devices are written and forced without a login.
-            let writable = self.online.can_write();
+            let writable = self.view.online.can_write();
             self.tool_button(
                 ui,
                 Text::WriteValues,
@@ -277,81 +358,9 @@ impl Studio {
         });
     }
 
-    /// The online state in words and colour, for the status bar.
-    fn online_state(&self) -> (String, Option<egui::Color32>) {
-        let language = self.settings.language;
-        let target = match self.settings.target {
-            TargetKind::Simulation => Text::Simulation.get(language),
-            TargetKind::Controller => Text::Controller.get(language),
-        };
-        match self.online.phase() {
-            Phase::Offline => (Text::Offline.get(language).to_owned(), None),
-            Phase::Connecting | Phase::ConfirmDownload { .. } => (
-                format!("{target}: {}", Text::Connecting.get(language)),
-                None,
-            ),
-            Phase::Downloading { sent, total } => (
-                format!(
-                    "{target}: {} {sent}/{total}",
-                    Text::Downloading.get(language)
-                ),
-                None,
-            ),
-            Phase::Lost(_) => (
-                format!("{target}: {}", Text::TargetLost.get(language)),
-                Some(egui::Color32::from_rgb(220, 80, 60)),
-            ),
-            Phase::Online => {
-                let state = self.online.target_state();
-                let color = match state {
-                    Some(TargetState::Running) => egui::Color32::from_rgb(60, 170, 80),
-                    Some(TargetState::Faulted) => egui::Color32::from_rgb(220, 80, 60),
-                    _ => egui::Color32::from_rgb(200, 160, 40),
-                };
-                let words = state.map_or("", TargetState::describe);
-                (format!("{target}: {words}"), Some(color))
-            }
-        }
-    }
-
-    pub(crate) fn status_bar_ui(&self, ui: &mut Ui) {
-        ui.horizontal(|ui| {
-            let (state, color) = self.online_state();
-            let text = RichText::new(state).strong();
-            ui.label(match color {
-                Some(color) => text.color(color),
-                None => text,
-            });
-            if self.online.is_online() {
-                ui.label(RichText::new(format!("cycle {}", self.online.cycle())).weak());
-            }
-            if let Some(session) = &self.session {
-                ui.separator();
-                let dirty = if session.history.is_dirty() { " *" } else { "" };
-                // The folder's name is enough to tell projects apart; the full path is on hover.
-                let name = session.dir.file_name().map_or_else(
-                    || session.dir.display().to_string(),
-                    |n| n.to_string_lossy().into_owned(),
-                );
-                ui.label(RichText::new(format!("{name}{dirty}")).weak())
-                    .on_hover_text(session.dir.display().to_string());
-            }
-            if let Some(status) = &self.status {
-                ui.separator();
-                let text = RichText::new(&status.text);
-                ui.label(if status.is_error {
-                    text.color(ui.visuals().error_fg_color)
-                } else {
-                    text
-                });
-            }
-        });
-    }
-
-    /// The dialog that asks before a download and shows its progress.
-    pub(crate) fn login_dialog_ui(&mut self, ctx: &egui::Context) {
-        let language = self.settings.language;
-        let (reason, progress) = match self.online.phase() {
+    fn login_dialog_ui(&mut self, ctx: &egui::Context) {
+        let language = self.view.language;
+        let (reason, progress) = match self.view.online.phase() {
             Phase::ConfirmDownload { reason } => (reason.clone(), None),
             Phase::Downloading { sent, total } => (
                 String::new(),
@@ -372,10 +381,10 @@ impl Studio {
                     ui.label(Text::DownloadQuestion.get(language));
                     ui.horizontal(|ui| {
                         if ui.button(Text::Download.get(language)).clicked() {
-                            self.online.confirm_download();
+                            self.commands.push(Command::ConfirmDownload);
                         }
                         if ui.button(Text::Cancel.get(language)).clicked() {
-                            self.online.cancel_download();
+                            self.commands.push(Command::CancelDownload);
                         }
                     });
                 }
@@ -385,5 +394,51 @@ impl Studio {
                 }
             }
         });
+    }
+}
+
+/// The online state in words and colour, for the status bar.
+fn online_state(view: StudioView<'_>, dark_mode: bool) -> (String, Option<egui::Color32>) {
+    let language = view.language;
+    let colors = colors_for(dark_mode);
+    let target = match view.settings.target {
+        TargetKind::Simulation => Text::Simulation.get(language),
+        TargetKind::Controller => Text::Controller.get(language),
+    };
+    match view.online.phase() {
+        Phase::Offline => (Text::Offline.get(language).to_owned(), None),
+        Phase::Connecting | Phase::ConfirmDownload { .. } => (
+            format!("{target}: {}", Text::Connecting.get(language)),
+            None,
+        ),
+        Phase::Downloading { sent, total } => (
+            format!(
+                "{target}: {} {sent}/{total}",
+                Text::Downloading.get(language)
+            ),
+            None,
+        ),
+        Phase::Lost(_) => (
+            format!("{target}: {}", Text::TargetLost.get(language)),
+            Some(colors.target_failed),
+        ),
+        Phase::Online => {
+            let state = view.online.target_state();
+            let color = match state {
+                Some(TargetState::Running) => colors.target_running,
+                Some(TargetState::Faulted) => colors.target_failed,
+                _ => colors.target_stopped,
+            };
+            let words = state.map_or("", |state| {
+                match state {
+                    TargetState::NoProgram => Text::StateNoProgram,
+                    TargetState::Stopped => Text::StateStopped,
+                    TargetState::Running => Text::StateRunning,
+                    TargetState::Faulted => Text::StateFaulted,
+                }
+                .get(language)
+            });
+            (format!("{target}: {words}"), Some(color))
+        }
     }
 }

@@ -6,7 +6,7 @@ use std::collections::{BTreeMap, VecDeque};
 use egui::{Role, Ui, WidgetInfo};
 use egui_plot::{Legend, Line, Plot};
 
-use crate::studio::Language;
+use crate::studio::i18n::Language;
 use crate::studio::trace_plot::text::PlotText;
 
 /// How many points each task keeps: ten minutes at the studio's polling rate of one per second.

@@ -7,13 +7,15 @@ use egui::collapsing_header::CollapsingState;
 use egui::{Color32, Key, Modifiers, RichText, Ui};
 use project_model::{Folder, IoDirection, Node, Project, TaskKind};
 
+use super::command::{Command, Commands};
 use super::i18n::{Language, Text};
-use super::studio_app::{Command, Studio};
+use super::theme::{StudioColors, colors};
 use super::tree_actions::{
-    DialogOutcome, DropPlace, ListKind, NewObject, TreeAction, TreeDialog, accepts, place_at, plan,
-    rename_scope,
+    DialogOutcome, DropPlace, ListKind, NewObject, TreeAction, TreeDialog, TreeEditState, accepts,
+    place_at, plan, rename_scope,
 };
 use super::tree_node::{TreeNode, object_tag};
+use super::view::StudioView;
 
 /// What the user did in the tree this frame.
 #[derive(Debug, Default)]
@@ -34,10 +36,15 @@ struct DraggedNode(TreeNode);
 
 /// Draws the devices pane: the tree, its dialog, and the changes they ask for, which are queued
 /// as commands (never applied while drawing).
-pub(crate) fn devices_pane_ui(studio: &mut Studio, ui: &mut Ui) {
-    let language = studio.settings.language;
-    let Some(session) = &studio.session else {
-        match &studio.failed_dir {
+pub(crate) fn devices_pane_ui(
+    view: StudioView<'_>,
+    state: &mut TreeEditState,
+    commands: &mut Commands,
+    ui: &mut Ui,
+) {
+    let language = view.language;
+    let Some(session) = view.session else {
+        match view.failed_dir {
             Some(dir) => {
                 ui.label(RichText::new(Text::CouldNotOpen.get(language)).strong());
                 ui.label(RichText::new(dir.display().to_string()).weak());
@@ -50,28 +57,20 @@ pub(crate) fn devices_pane_ui(studio: &mut Studio, ui: &mut Ui) {
         return;
     };
     let project = &session.project;
-    let dirty = studio
-        .tree_edit
+    let dirty = state
         .dirty
         .get(project, session.history.revision(), &session.saved);
-    let dialog_open = studio.tree_edit.dialog.is_some();
-    let mut response = device_tree_ui(
-        ui,
-        project,
-        studio.selection.as_ref(),
-        language,
-        dirty,
-        !dialog_open,
-    );
+    let dialog_open = state.dialog.is_some();
+    let mut response = device_tree_ui(ui, project, view.selection, language, dirty, !dialog_open);
     if let Some(dialog) = response.dialog.take() {
-        studio.tree_edit.dialog = Some(dialog);
+        state.dialog = Some(dialog);
     }
-    if let Some(dialog) = &mut studio.tree_edit.dialog {
+    if let Some(dialog) = &mut state.dialog {
         match dialog.ui(ui.ctx(), project, language) {
             DialogOutcome::Open => {}
-            DialogOutcome::Cancelled => studio.tree_edit.dialog = None,
+            DialogOutcome::Cancelled => state.dialog = None,
             DialogOutcome::Confirmed(action) => {
-                studio.tree_edit.dialog = None;
+                state.dialog = None;
                 response.actions.push(action);
             }
         }
@@ -82,35 +81,30 @@ pub(crate) fn devices_pane_ui(studio: &mut Studio, ui: &mut Ui) {
         planned.push((deletes, plan(project, action)));
     }
     if let Some(node) = response.clicked {
-        studio.selection = Some(node);
+        commands.push(Command::Select(Some(node)));
     }
     if let Some(node) = response.opened {
-        studio.selection = Some(node.clone());
+        commands.push(Command::Select(Some(node.clone())));
         if node.is_document() {
-            studio.pending.push(Command::Open(node));
+            commands.push(Command::Open(node));
         }
     }
     for (deletes, result) in planned {
         match result {
             Ok(Some(plan)) => {
-                studio.pending.push(Command::Edit(plan.label, plan.edits));
+                commands.push(Command::Edit(plan.label, plan.edits));
                 if deletes {
-                    studio.selection = None;
+                    commands.push(Command::Select(None));
                 }
                 if let Some(node) = plan.select {
-                    studio.selection = Some(node);
+                    commands.push(Command::Select(Some(node)));
                 }
                 if let Some(node) = plan.open {
-                    studio.pending.push(Command::Open(node));
+                    commands.push(Command::Open(node));
                 }
             }
             Ok(None) => {}
-            Err(reason) => {
-                studio.status = Some(super::StatusMessage {
-                    text: reason,
-                    is_error: true,
-                });
-            }
+            Err(reason) => commands.error(reason),
         }
     }
 }
@@ -217,7 +211,8 @@ impl TreeUi<'_> {
             egui::Layout::left_to_right(egui::Align::Center),
             |ui| {
                 ui.set_min_size(tag_size);
-                ui.label(RichText::new(tag).monospace().small().color(tag_color(tag)));
+                let color = tag_color(tag, colors(ui));
+                ui.label(RichText::new(tag).monospace().small().color(color));
             },
         );
         let selected = self.selection == Some(&node);
@@ -510,14 +505,14 @@ fn format_interval(interval_us: u32) -> String {
 }
 
 /// A colour per tag family, so kinds are told apart at a glance.
-fn tag_color(tag: &str) -> Color32 {
+fn tag_color(tag: &str, colors: &StudioColors) -> Color32 {
     match tag {
-        "PRG" => Color32::from_rgb(90, 160, 230),
-        "FB" => Color32::from_rgb(120, 190, 120),
-        "FUN" => Color32::from_rgb(200, 160, 80),
-        "GVL" | "DUT" | "ITF" => Color32::from_rgb(170, 130, 210),
-        "CAM" | "AX" => Color32::from_rgb(230, 120, 100),
-        "TSK" | "CFG" => Color32::from_rgb(100, 180, 180),
-        _ => Color32::GRAY,
+        "PRG" => colors.tag_program,
+        "FB" => colors.tag_function_block,
+        "FUN" => colors.tag_function,
+        "GVL" | "DUT" | "ITF" => colors.tag_data,
+        "CAM" | "AX" => colors.tag_motion,
+        "TSK" | "CFG" => colors.tag_task,
+        _ => colors.tag_other,
     }
 }

@@ -5,11 +5,12 @@ use editor::CodeView;
 use egui::{RichText, Ui};
 use project_model::{Body, Object, Project};
 
+use super::i18n::{Language, Text};
 use super::property_view::property_view_ui;
 use super::tree_node::TreeNode;
 
 /// Draws the document `node` of `project`, read-only.
-pub fn document_ui(ui: &mut Ui, project: &Project, node: &TreeNode) {
+pub fn document_ui(ui: &mut Ui, project: &Project, node: &TreeNode, language: Language) {
     egui::ScrollArea::both()
         .id_salt(("document", node))
         .auto_shrink([false, false])
@@ -19,10 +20,11 @@ pub fn document_ui(ui: &mut Ui, project: &Project, node: &TreeNode) {
                 Some(content) => content_ui(ui, node, content),
                 None => {
                     ui.label(
-                        RichText::new(format!(
-                            "'{}' is no longer part of the project",
-                            node.title(Some(project))
-                        ))
+                        RichText::new(
+                            Text::NoLongerInProject
+                                .get(language)
+                                .replace("{name}", &node.title(Some(project))),
+                        )
                         .color(ui.visuals().warn_fg_color),
                     );
                 }

@@ -1,8 +1,11 @@
 //! The studio window.
 
+#[cfg(test)]
+mod architecture_tests;
 mod build_job;
 mod cam_documents;
 mod chrome;
+mod command;
 mod cycle_plot;
 mod device_tree;
 mod dock;
@@ -10,21 +13,31 @@ mod document_view;
 mod documents;
 mod fonts;
 mod i18n;
+#[cfg(test)]
+mod literal_tests;
 mod online;
 mod pane;
 mod pane_behavior;
+mod pane_states;
 mod panes;
 mod property_view;
 mod recovery;
+mod recovery_schedule;
+mod references;
+mod reveal;
 mod session;
 mod settings;
+mod status;
 mod studio_app;
 mod task_editor;
 mod text_documents;
+mod theme;
 mod trace_plot;
 mod trace_view;
 mod tree_actions;
 mod tree_node;
+mod view;
+mod watch_sources;
 
 use std::path::PathBuf;
 
@@ -37,7 +50,8 @@ pub use pane::Pane;
 pub use recovery::{Recovered, Recovery};
 pub use session::{SaveAsError, Session};
 pub use settings::{Settings, Theme};
-pub use studio_app::{StatusMessage, StudioApp, StudioOptions};
+pub use status::StatusMessage;
+pub use studio_app::{StudioApp, StudioOptions};
 pub use trace_plot::{
     CursorReading, CursorReadings, PngExportError, TraceData, TraceLayout, TracePlotOutput,
     TracePlotView, TraceSample, TraceSeries, crop_to_png, format_reading, nearest_sample_time,

@@ -3,53 +3,67 @@
 use egui::{RichText, Ui};
 use egui_tiles::{Behavior, SimplificationOptions, Tile, TileId, Tiles, UiResponse};
 
+use super::command::{Command, Commands};
 use super::device_tree::devices_pane_ui;
 use super::dock::Dock;
 use super::document_view::{document_ui, settings_ui};
-use super::i18n::Text;
+use super::i18n::{Language, Text};
 use super::pane::Pane;
+use super::pane_states::PaneStates;
 use super::panes;
-use super::studio_app::{Command, Studio};
+use super::reveal::Reveal;
 use super::task_editor::task_editor_ui;
 use super::tree_node::TreeNode;
+use super::view::StudioView;
 
-/// The egui_tiles behaviour of the studio: it draws panes from the studio's state and lets
-/// only document tabs close.
+/// The egui_tiles behaviour of the studio: it draws each pane from the studio's view and the
+/// pane's own state, and lets only document tabs close. Panes change nothing else: they emit
+/// commands.
 pub(crate) struct PaneBehavior<'a> {
-    pub studio: &'a mut Studio,
+    /// What every pane reads.
+    pub view: StudioView<'a>,
+    /// What each pane keeps between frames.
+    pub panes: &'a mut PaneStates,
+    /// Where panes put their commands.
+    pub commands: &'a mut Commands,
 }
 
 impl Behavior<Pane> for PaneBehavior<'_> {
     fn pane_ui(&mut self, ui: &mut Ui, _tile_id: TileId, pane: &mut Pane) -> UiResponse {
-        let studio = &mut *self.studio;
+        let view = self.view;
+        let states = &mut *self.panes;
+        let commands = &mut *self.commands;
         egui::Frame::new().inner_margin(4).show(ui, |ui| {
             ui.set_min_size(ui.available_size());
             match pane {
-                Pane::Devices => devices_pane_ui(studio, ui),
-                Pane::Properties => properties_ui(studio, ui),
-                Pane::Document(node) => document_pane_ui(studio, ui, node),
-                Pane::Messages => panes::messages_ui(studio, ui),
-                Pane::Watch => panes::watch_ui(studio, ui),
-                Pane::Forces => panes::forces_ui(studio, ui),
-                Pane::Trace => panes::trace_ui(studio, ui),
-                Pane::Tasks => panes::tasks_ui(studio, ui),
+                Pane::Devices => devices_pane_ui(view, &mut states.tree_edit, commands, ui),
+                Pane::Properties => properties_ui(view, ui),
+                Pane::Document(node) => document_pane_ui(view, states, commands, ui, node),
+                Pane::Messages => panes::messages_ui(view, commands, ui),
+                Pane::Watch => panes::watch_ui(view, &mut states.watch, commands, ui),
+                Pane::Forces => panes::forces_ui(view, commands, ui),
+                Pane::Trace => {
+                    let (trace, plot) = (&mut states.trace, &mut states.trace_view);
+                    panes::trace_ui(view, trace, plot, commands, ui)
+                }
+                Pane::Tasks => panes::tasks_ui(view, commands, ui),
             }
         });
         UiResponse::None
     }
 
     fn tab_title_for_pane(&mut self, pane: &Pane) -> egui::WidgetText {
-        let language = self.studio.settings.language;
+        let language = self.view.language;
         match pane {
             Pane::Document(TreeNode::TaskConfiguration) => {
                 Text::TaskConfiguration.get(language).into()
             }
             Pane::Document(node) => {
-                let project = self.studio.session.as_ref().map(|s| &s.project);
+                let project = self.view.project();
                 node.title(project).into()
             }
             Pane::Messages => {
-                let count = panes::message_count(self.studio);
+                let count = panes::message_count(self.view);
                 if count > 0 {
                     format!("{} ({count})", pane.tool_title(language)).into()
                 } else {
@@ -57,7 +71,7 @@ impl Behavior<Pane> for PaneBehavior<'_> {
                 }
             }
             Pane::Forces => {
-                let count = self.studio.online.forced_values().len();
+                let count = self.view.online.forced_values().len();
                 if count > 0 {
                     format!("{} ({count})", pane.tool_title(language)).into()
                 } else {
@@ -77,12 +91,11 @@ impl Behavior<Pane> for PaneBehavior<'_> {
     }
 }
 
-fn properties_ui(studio: &mut Studio, ui: &mut Ui) {
-    let (Some(session), Some(node)) = (&studio.session, &studio.selection) else {
-        ui.label(RichText::new(Text::OpenObjectHint.get(studio.settings.language)).weak());
+fn properties_ui(view: StudioView<'_>, ui: &mut Ui) {
+    let (Some(project), Some(node)) = (view.project(), view.selection) else {
+        ui.label(RichText::new(Text::OpenObjectHint.get(view.language)).weak());
         return;
     };
-    let project = &session.project;
     ui.strong(node.title(Some(project)));
     ui.separator();
     egui::ScrollArea::both()
@@ -92,7 +105,7 @@ fn properties_ui(studio: &mut Studio, ui: &mut Ui) {
             if let TreeNode::Object(name) = node
                 && let Some(object) = project.application.object(name)
             {
-                object_summary_ui(ui, object);
+                object_summary_ui(ui, object, view.language);
             } else {
                 settings_ui(ui, project, node);
             }
@@ -101,51 +114,57 @@ fn properties_ui(studio: &mut Studio, ui: &mut Ui) {
 
 /// What the properties pane shows for an application object: its kind and size, not its text
 /// (the document tab shows that).
-fn object_summary_ui(ui: &mut Ui, object: &project_model::Object) {
+fn object_summary_ui(ui: &mut Ui, object: &project_model::Object, language: Language) {
     use project_model::Object;
     egui::Grid::new("object_summary")
         .num_columns(2)
         .show(ui, |ui| {
+            let count =
+                |text: Text, name: &str, n: usize| text.get(language).replace(name, &n.to_string());
             let (kind, detail) = match object {
                 Object::Pou(pou) => (
                     format!("{:?}", pou.kind),
-                    format!(
-                        "{} variables, {} methods, {} actions",
-                        pou.variables.len(),
-                        pou.methods.len(),
-                        pou.actions.len()
-                    ),
+                    count(Text::PouSummary, "{variables}", pou.variables.len())
+                        .replace("{methods}", &pou.methods.len().to_string())
+                        .replace("{actions}", &pou.actions.len().to_string()),
                 ),
                 Object::Gvl(gvl) => (
                     "GVL".to_owned(),
-                    format!("{} variables", gvl.variables.len()),
+                    count(Text::VariableCount, "{variables}", gvl.variables.len()),
                 ),
                 Object::DataType(_) => ("DUT".to_owned(), String::new()),
                 Object::CamTable(_) => ("CAM".to_owned(), String::new()),
                 Object::Trace(trace) => (
-                    "Trace".to_owned(),
-                    format!("{} variables, task {}", trace.variables.len(), trace.task),
+                    Text::Trace.get(language).to_owned(),
+                    count(Text::TraceSummary, "{variables}", trace.variables.len())
+                        .replace("{task}", &trace.task),
                 ),
                 Object::WatchList(watch) => (
-                    "Watch list".to_owned(),
-                    format!("{} entries", watch.entries.len()),
+                    Text::WatchList.get(language).to_owned(),
+                    count(Text::EntryCount, "{entries}", watch.entries.len()),
                 ),
             };
-            ui.label("Kind");
+            ui.label(Text::Kind.get(language));
             ui.label(kind);
             ui.end_row();
             if !detail.is_empty() {
-                ui.label("Content");
+                ui.label(Text::Content.get(language));
                 ui.label(detail);
                 ui.end_row();
             }
         });
 }
 
-fn document_pane_ui(studio: &mut Studio, ui: &mut Ui, node: &TreeNode) {
-    // Tasks are edited in place, so their editor needs the studio to queue its edits.
+fn document_pane_ui(
+    view: StudioView<'_>,
+    states: &mut PaneStates,
+    commands: &mut Commands,
+    ui: &mut Ui,
+    node: &TreeNode,
+) {
+    // Tasks are edited in place: their editor emits its edits as commands.
     if matches!(node, TreeNode::Task(_) | TreeNode::TaskConfiguration) {
-        task_editor_ui(studio, ui, node);
+        task_editor_ui(view, &mut states.task_editor, commands, ui, node);
         return;
     }
     // The controller, its I/O areas and the Modbus devices show their I/O mapping.
@@ -153,44 +172,44 @@ fn document_pane_ui(studio: &mut Studio, ui: &mut Ui, node: &TreeNode) {
         node,
         TreeNode::Controller | TreeNode::IoArea(_) | TreeNode::ModbusDevice(_)
     ) {
-        io_document_ui(studio, ui, node);
+        io_document_ui(view, commands, ui, node);
         return;
     }
     // Structured Text is edited in place; everything else is shown by the document views.
     if let TreeNode::Object(name) = node {
-        let shown = super::text_documents::pou_document_ui(studio, ui, name)
-            || super::text_documents::gvl_document_ui(studio, ui, name)
-            || super::cam_documents::cam_document_ui(studio, ui, name);
+        let texts = &mut states.texts;
+        let shown = super::text_documents::pou_document_ui(view, texts, commands, ui, name)
+            || super::text_documents::gvl_document_ui(view, texts, commands, ui, name)
+            || super::cam_documents::cam_document_ui(view, &mut states.cams, commands, ui, name);
         if shown {
             return;
         }
     }
-    if let Some(session) = &studio.session {
-        document_ui(ui, &session.project, node);
+    if let Some(project) = view.project() {
+        document_ui(ui, project, node, view.language);
     }
 }
 
 /// A controller, I/O area or Modbus device document: its settings, then the I/O mapping of
 /// every channel with the variable bound to it (a click opens the declaration).
-fn io_document_ui(studio: &mut Studio, ui: &mut Ui, node: &TreeNode) {
-    let Some(session) = &studio.session else {
+fn io_document_ui(view: StudioView<'_>, commands: &mut Commands, ui: &mut Ui, node: &TreeNode) {
+    let Some(project) = view.project() else {
         return;
     };
-    let project = &session.project;
     egui::CollapsingHeader::new(RichText::new(node.title(Some(project))).strong())
         .id_salt(("io_document_settings", node))
         .default_open(false)
         .show(ui, |ui| settings_ui(ui, project, node));
     ui.separator();
-    let texts = super::text_documents::table_texts(studio.settings.language);
+    let texts = super::text_documents::table_texts(view.language);
     let output = editor::io_mapping_ui(ui, project, &texts);
     if let Some((owner, variable)) = output.open {
         // A method's variables belong to its POU's document.
         let object = owner.split('.').next().unwrap_or(&owner).to_owned();
         let container = owner.split_once('.').map(|(_, method)| method.to_owned());
-        studio.pending.push(Command::Reveal(
+        commands.push(Command::Reveal(
             TreeNode::Object(object),
-            super::text_documents::Reveal::Declaration {
+            Reveal::Declaration {
                 container,
                 name: variable,
             },

@@ -15,10 +15,11 @@ use project_model::{Edit, ListEdit, Object, PouKind, Project, Task, TaskKind};
 
 use self::fields::{Field, call_problem, default_watchdog};
 use self::time_literal::{describe_time_us, parse_time_us};
+use super::command::{Command, Commands};
 use super::i18n::{Language, Text};
-use super::studio_app::{Command, Studio};
 use super::tree_actions::ListKind;
 use super::tree_node::TreeNode;
+use super::view::StudioView;
 
 /// What the task editor keeps between frames: the selected task, text being typed and the
 /// reasons typed values were refused. Typed text is dropped when the project changes, so a
@@ -44,13 +45,18 @@ type Change = (String, Edit);
 
 /// Draws the editor for `node` (the task configuration, or a single task) and queues the
 /// accepted changes as edits.
-pub(crate) fn task_editor_ui(studio: &mut Studio, ui: &mut Ui, node: &TreeNode) {
-    let language = studio.settings.language;
-    let Some(session) = &studio.session else {
+pub(crate) fn task_editor_ui(
+    view: StudioView<'_>,
+    state: &mut TaskEditorState,
+    commands: &mut Commands,
+    ui: &mut Ui,
+    node: &TreeNode,
+) {
+    let language = view.language;
+    let Some(session) = view.session else {
         return;
     };
     let project = &session.project;
-    let state = &mut studio.task_editor;
     let revision = session.history.revision();
     if state.revision != Some(revision) {
         state.drafts.clear();
@@ -84,10 +90,10 @@ pub(crate) fn task_editor_ui(studio: &mut Studio, ui: &mut Ui, node: &TreeNode) 
             if let TreeNode::Task(name) = node
                 && shown.is_empty()
             {
-                ui.label(
-                    RichText::new(format!("'{name}' is no longer part of the project"))
-                        .color(ui.visuals().warn_fg_color),
-                );
+                let text = Text::NoLongerInProject
+                    .get(language)
+                    .replace("{name}", name);
+                ui.label(RichText::new(text).color(ui.visuals().warn_fg_color));
                 return;
             }
             if *node == TreeNode::TaskConfiguration
@@ -114,7 +120,7 @@ pub(crate) fn task_editor_ui(studio: &mut Studio, ui: &mut Ui, node: &TreeNode) 
             }
         });
     for (label, edit) in changes {
-        studio.pending.push(Command::Edit(label, vec![edit]));
+        commands.push(Command::Edit(label, vec![edit]));
     }
 }
 

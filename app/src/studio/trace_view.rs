@@ -4,9 +4,12 @@ use std::sync::Arc;
 
 use egui::Ui;
 
+use super::command::{Command, Commands};
 use super::online::TraceRun;
-use super::studio_app::Studio;
-use super::trace_plot::{TraceData, TraceSample, TraceSeries, crop_to_png, parse_color};
+use super::trace_plot::{
+    PngExportError, TraceData, TraceSample, TraceSeries, crop_to_png, parse_color,
+};
+use super::view::StudioView;
 use crate::value_text::{is_bool, numeric};
 
 /// The trace pane's plot state and the data it shows, rebuilt only when new samples arrive.
@@ -58,99 +61,61 @@ pub fn trace_data(run: &TraceRun, config: Option<&project_model::TraceConfig>) -
     }
 }
 
-/// Plots the current trace run and performs the exports the plot asks for.
+impl TraceViewState {
+    /// The plotted data as CSV.
+    pub fn csv(&self) -> String {
+        self.data.to_csv()
+    }
+
+    /// Asks egui for a screenshot, of which `rect` (in points) will be saved as PNG.
+    pub fn request_png(&mut self, ctx: &egui::Context, rect: egui::Rect) {
+        let (send, receive) = std::sync::mpsc::channel();
+        let wake = ctx.clone();
+        self.png = Some((rect, receive));
+        ctx.send_viewport_cmd(egui::ViewportCommand::Screenshot(
+            egui::ScreenshotCallback::new(move |image| {
+                // The export may have been replaced by another meanwhile; then nobody waits.
+                let _ = send.send(image);
+                wake.request_repaint();
+            }),
+        ));
+    }
+
+    /// The PNG of the plot area, once the screenshot a PNG export asked for arrived.
+    pub fn take_png(&mut self, pixels_per_point: f32) -> Option<Result<Vec<u8>, PngExportError>> {
+        let (rect, arrived) = self.png.as_ref()?;
+        let rect = *rect;
+        let image = arrived.try_recv().ok()?;
+        self.png = None;
+        Some(crop_to_png(&image, rect, pixels_per_point))
+    }
+}
+
+/// Plots the current trace run; the exports the plot asks for become commands.
 pub(crate) fn trace_samples_ui(
-    studio: &mut Studio,
+    view: StudioView<'_>,
+    state: &mut TraceViewState,
+    commands: &mut Commands,
     ui: &mut Ui,
     config: Option<&project_model::TraceConfig>,
 ) {
-    let run = studio.online.trace();
+    let run = view.online.trace();
     let key = (
         run.name().to_owned(),
         run.samples().len(),
         run.samples().first().map_or(0, |s| s.cycle),
     );
-    let view = &mut studio.trace_view;
-    if view.made_from.as_ref() != Some(&key) {
-        view.data = Arc::new(trace_data(run, config));
-        view.made_from = Some(key);
+    if state.made_from.as_ref() != Some(&key) {
+        state.data = Arc::new(trace_data(run, config));
+        state.made_from = Some(key);
     }
-    view.plot.language = studio.settings.language;
-    let data = Arc::clone(&view.data);
-    let output = view.plot.ui(ui, &data);
-    if output.export_csv
-        && let Some(path) = rfd::FileDialog::new()
-            .set_title("Export trace as CSV")
-            .add_filter("CSV", &["csv"])
-            .set_file_name(format!("{}.csv", run_name(studio)))
-            .save_file()
-    {
-        report(studio, std::fs::write(&path, data.to_csv()), &path);
+    state.plot.language = view.language;
+    let data = Arc::clone(&state.data);
+    let output = state.plot.ui(ui, &data);
+    if output.export_csv {
+        commands.push(Command::ExportTraceCsv);
     }
     if let Some(rect) = output.export_png {
-        let (send, receive) = std::sync::mpsc::channel();
-        let wake = ui.ctx().clone();
-        studio.trace_view.png = Some((rect, receive));
-        ui.ctx()
-            .send_viewport_cmd(egui::ViewportCommand::Screenshot(
-                egui::ScreenshotCallback::new(move |image| {
-                    let _ = send.send(image);
-                    wake.request_repaint();
-                }),
-            ));
+        commands.push(Command::ExportTracePng(rect));
     }
-    take_screenshot(studio, ui);
-}
-
-fn run_name(studio: &Studio) -> String {
-    let name = studio.online.trace().name();
-    if name.is_empty() {
-        "trace".to_owned()
-    } else {
-        name.to_owned()
-    }
-}
-
-/// Saves the plot area of a screenshot that arrived for a PNG export.
-fn take_screenshot(studio: &mut Studio, ui: &Ui) {
-    let Some((rect, arrived)) = &studio.trace_view.png else {
-        return;
-    };
-    let rect = *rect;
-    let Ok(image) = arrived.try_recv() else {
-        return;
-    };
-    studio.trace_view.png = None;
-    let pixels_per_point = ui.ctx().pixels_per_point();
-    match crop_to_png(&image, rect, pixels_per_point) {
-        Ok(png) => {
-            if let Some(path) = rfd::FileDialog::new()
-                .set_title("Export trace as PNG")
-                .add_filter("PNG", &["png"])
-                .set_file_name(format!("{}.png", run_name(studio)))
-                .save_file()
-            {
-                report(studio, std::fs::write(&path, png), &path);
-            }
-        }
-        Err(error) => {
-            studio.status = Some(super::studio_app::StatusMessage {
-                text: format!("PNG export: {error}"),
-                is_error: true,
-            });
-        }
-    }
-}
-
-fn report(studio: &mut Studio, result: std::io::Result<()>, path: &std::path::Path) {
-    studio.status = Some(match result {
-        Ok(()) => super::studio_app::StatusMessage {
-            text: format!("exported {}", path.display()),
-            is_error: false,
-        },
-        Err(error) => super::studio_app::StatusMessage {
-            text: format!("{}: {error}", path.display()),
-            is_error: true,
-        },
-    });
 }

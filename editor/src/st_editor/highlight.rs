@@ -2,7 +2,7 @@
 
 use egui::Color32;
 
-use crate::TokenClass;
+use crate::{SyntaxColors, TokenClass};
 
 /// What a run of text is, for colouring.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -65,22 +65,20 @@ impl Highlight {
         }
     }
 
-    /// The colour of the class; `plain` is the theme's text colour.
-    pub fn color(self, dark: bool, plain: Color32) -> Color32 {
-        let (dark_color, light_color) = match self {
-            Self::Plain => return plain,
-            Self::Keyword => ((86, 156, 214), (0, 70, 180)),
-            Self::Comment => ((106, 153, 85), (0, 128, 0)),
-            Self::String => ((206, 145, 120), (163, 21, 21)),
-            Self::Number => ((181, 206, 168), (9, 134, 88)),
-            Self::Constant => ((100, 180, 230), (0, 110, 150)),
-            Self::Type => ((78, 201, 176), (38, 127, 153)),
-            Self::Function => ((220, 220, 170), (121, 94, 38)),
-            Self::Property => ((156, 220, 254), (0, 16, 128)),
-            Self::Attribute => ((197, 134, 192), (140, 40, 140)),
-            Self::Label => ((220, 180, 90), (150, 90, 0)),
-        };
-        let (r, g, b) = if dark { dark_color } else { light_color };
-        Color32::from_rgb(r, g, b)
+    /// The colour of the class in `colors`; `plain` is the theme's text colour.
+    pub fn color(self, colors: &SyntaxColors, plain: Color32) -> Color32 {
+        match self {
+            Self::Plain => plain,
+            Self::Keyword => colors.keyword,
+            Self::Comment => colors.comment,
+            Self::String => colors.string,
+            Self::Number => colors.number,
+            Self::Constant => colors.constant,
+            Self::Type => colors.type_name,
+            Self::Function => colors.function,
+            Self::Property => colors.property,
+            Self::Attribute => colors.attribute,
+            Self::Label => colors.label,
+        }
     }
 }

@@ -10,6 +10,7 @@ use egui::{Color32, FontId, Galley, Rect, Ui, pos2};
 
 use super::StEditor;
 use super::syntax::LineSpan;
+use crate::SyntaxColors;
 
 /// A laid-out visible line.
 pub(super) struct LineLayout {
@@ -115,7 +116,7 @@ impl StEditor {
             .map(|row| (row, self.folding.line_of_row(row, line_count)))
             .collect();
         let mut layouts = Vec::with_capacity(lines.len());
-        let dark = ui.visuals().dark_mode;
+        let colors = crate::EditorPalette::of(ui).syntax;
         let plain = ui.visuals().text_color();
         let mut at = 0;
         while at < lines.len() {
@@ -130,7 +131,7 @@ impl StEditor {
             for (index, &(row, line)) in lines[at..end].iter().enumerate() {
                 let line_spans = spans.get(index).map_or(&[][..], Vec::as_slice);
                 let boxes = self.line_boxes(line);
-                let galley = self.line_galley(ui, line, line_spans, &boxes, font, dark, plain);
+                let galley = self.line_galley(ui, line, line_spans, &boxes, font, &colors, plain);
                 layouts.push(LineLayout {
                     line,
                     row,
@@ -173,12 +174,12 @@ impl StEditor {
         spans: &[LineSpan],
         boxes: &[(usize, usize, usize)],
         font: &FontId,
-        dark: bool,
+        colors: &SyntaxColors,
         plain: Color32,
     ) -> Arc<Galley> {
         let text = self.buffer.line(line);
         let mut hasher = DefaultHasher::new();
-        (text, spans, dark, plain, font.size.to_bits()).hash(&mut hasher);
+        (text, spans, colors, plain, font.size.to_bits()).hash(&mut hasher);
         for (col, width, _) in boxes {
             (col, width).hash(&mut hasher);
         }
@@ -229,7 +230,7 @@ impl StEditor {
                 append(
                     &mut job,
                     range.clone(),
-                    class.color(dark, plain),
+                    class.color(colors, plain),
                     &mut byte_boxes,
                 );
                 covered = range.end;

@@ -5,6 +5,8 @@ use std::ops::Range;
 
 use egui::{Color32, FontId, Painter, Rect, Stroke, pos2, vec2};
 
+use crate::EditorPalette;
+
 use super::layout::{LineLayout, Metrics};
 use super::{Severity, StEditor};
 
@@ -36,6 +38,7 @@ impl StEditor {
         font: &FontId,
         visuals: &egui::Visuals,
     ) {
+        let palette = EditorPalette::in_context(painter.ctx());
         let small = FontId::new(font.size * 0.9, font.family.clone());
         for (col, width, index) in &layout.boxes {
             let Some(value) = self.inline_values.get(*index) else {
@@ -48,11 +51,7 @@ impl StEditor {
                 pos2(x1, top + metrics.row_height - 1.0),
             );
             let fill = if value.changed {
-                if visuals.dark_mode {
-                    Color32::from_rgb(40, 90, 60)
-                } else {
-                    Color32::from_rgb(190, 240, 200)
-                }
+                palette.changed_value
             } else {
                 visuals.extreme_bg_color
             };
@@ -69,13 +68,13 @@ impl StEditor {
                     pos2(area.min.x + 1.0, area.min.y + 1.0),
                     vec2(metrics.char_width * 1.4, area.height() - 2.0),
                 );
-                painter.rect_filled(badge, 2.0, Color32::from_rgb(200, 40, 40));
+                painter.rect_filled(badge, 2.0, palette.forced_fill);
                 painter.text(
                     badge.center(),
                     egui::Align2::CENTER_CENTER,
                     "F",
                     small.clone(),
-                    Color32::WHITE,
+                    palette.forced_text,
                 );
                 text_left += metrics.char_width * 2.0;
             }
@@ -100,11 +99,12 @@ impl StEditor {
         first: usize,
         last: usize,
     ) {
+        let palette = EditorPalette::in_context(painter.ctx());
         for diagnostic in &self.diagnostics {
             if diagnostic.range.end < first || diagnostic.range.start > last {
                 continue;
             }
-            let color = severity_color(diagnostic.severity);
+            let color = severity_color(&palette, diagnostic.severity);
             let range = if diagnostic.range.is_empty() {
                 diagnostic.range.start
                     ..self
@@ -146,6 +146,7 @@ impl StEditor {
         font: &FontId,
         visuals: &egui::Visuals,
     ) {
+        let palette = EditorPalette::in_context(painter.ctx());
         let gutter = Rect::from_min_size(clip.min, vec2(metrics.gutter_width, clip.height()));
         painter.rect_filled(gutter, 0.0, visuals.panel_fill);
         let Some(first) = layouts.first() else {
@@ -199,17 +200,21 @@ impl StEditor {
                     clip.min.x + metrics.char_width * 0.6,
                     top + metrics.row_height * 0.5,
                 );
-                painter.circle_filled(center, metrics.char_width * 0.35, severity_color(severity));
+                painter.circle_filled(
+                    center,
+                    metrics.char_width * 0.35,
+                    severity_color(&palette, severity),
+                );
             }
         }
     }
 }
 
-pub(super) fn severity_color(severity: Severity) -> Color32 {
+pub(super) fn severity_color(palette: &EditorPalette, severity: Severity) -> Color32 {
     match severity {
-        Severity::Error => Color32::from_rgb(230, 60, 60),
-        Severity::Warning => Color32::from_rgb(220, 180, 40),
-        Severity::Info => Color32::from_rgb(80, 150, 230),
+        Severity::Error => palette.error,
+        Severity::Warning => palette.warning,
+        Severity::Info => palette.info,
     }
 }
 

@@ -3,8 +3,8 @@
 use std::ops::Range;
 
 use egui::{
-    Color32, EventFilter, FontId, Pos2, Rect, Role, Sense, Stroke, TextStyle, Ui, Vec2, WidgetInfo,
-    pos2, vec2,
+    EventFilter, FontId, Pos2, Rect, Role, Sense, Stroke, TextStyle, Ui, Vec2, WidgetInfo, pos2,
+    vec2,
 };
 
 use super::input::FrameResult;
@@ -159,11 +159,7 @@ impl StEditor {
         } else {
             None
         };
-        let find_color = if visuals.dark_mode {
-            Color32::from_rgba_unmultiplied(200, 160, 40, 70)
-        } else {
-            Color32::from_rgba_unmultiplied(250, 200, 60, 110)
-        };
+        let find_color = crate::EditorPalette::of(ui).find_match;
         for layout in &layouts {
             let top = row_top(layout.row);
             if layout.line == caret_line && focused {
@@ -385,7 +381,10 @@ impl StEditor {
             None => {
                 // A line outside the laid-out rows (a drag past the edge): its plain galley
                 // has the same geometry.
-                let galley = self.line_galley(ui, line, &[], &[], font, true, Color32::WHITE);
+                // Only the geometry is used, so any colours do.
+                let colors = crate::EditorPalette::of(ui).syntax;
+                let plain = ui.visuals().text_color();
+                let galley = self.line_galley(ui, line, &[], &[], font, &colors, plain);
                 galley.cursor_from_pos(target).index.0
             }
         };

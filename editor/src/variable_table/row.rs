@@ -2,16 +2,13 @@
 
 use std::collections::HashMap;
 
-use egui::{Color32, Id, Key, Label, Response, RichText, Role, TextEdit, Ui, WidgetInfo};
+use egui::{Id, Key, Label, Response, RichText, Role, TextEdit, Ui, WidgetInfo};
 use project_model::{ListEdit, VarSection, Variable};
 
 use super::cells::{self, TextColumn};
 use super::state::{Draft, RowAction, TableState};
 use crate::TableTexts;
 use crate::table_texts::fill;
-
-/// The colour of overlap warnings: a warning, not an error.
-const WARNING_COLOR: Color32 = Color32::from_rgb(0xE0, 0xB0, 0x20);
 
 /// Sets one of the retain, persistent and constant flags of a variable.
 type SetFlag = fn(&mut Variable, bool);
@@ -288,9 +285,10 @@ impl TableFrame<'_> {
 
 /// The yellow mark of an overlap warning; the warning shows on hover and is its accessible label.
 fn warning_mark(ui: &mut Ui, texts: &TableTexts, name: &str, warning: &str) {
+    let palette = crate::EditorPalette::of(ui);
     let mark = ui
         .add(
-            Label::new(RichText::new("!").strong().color(WARNING_COLOR))
+            Label::new(RichText::new("!").strong().color(palette.table_warning))
                 .sense(egui::Sense::hover()),
         )
         .on_hover_text(warning);

@@ -11,6 +11,7 @@ use project_model::ModbusDevice;
 use tokio::sync::mpsc as async_mpsc;
 
 use super::{LiveValue, Waker};
+use crate::studio::i18n::{Language, Text};
 use crate::value_text::{describe_elementary, hex};
 
 /// What the UI asks a device's task to do.
@@ -182,15 +183,14 @@ impl DeviceLinks {
         path: &str,
         bytes: Vec<u8>,
         force: bool,
+        language: Language,
     ) -> Result<(), String> {
-        let (device, index) =
-            binding_of(devices, path).ok_or_else(|| format!("{path} is bound to no device"))?;
-        let link = self.links.get(&device.name).ok_or_else(|| {
-            format!(
-                "device {} is not polled; watch one of its variables",
-                device.name
-            )
-        })?;
+        let (device, index) = binding_of(devices, path)
+            .ok_or_else(|| Text::BoundToNoDevice.get(language).replace("{path}", path))?;
+        let link = self
+            .links
+            .get(&device.name)
+            .ok_or_else(|| not_polled(&device.name, language))?;
         let command = if force {
             DeviceCommand::Force(index, bytes)
         } else {
@@ -198,7 +198,7 @@ impl DeviceLinks {
         };
         link.commands
             .try_send(command)
-            .map_err(|_| format!("device {} is busy; try again", device.name))
+            .map_err(|_| busy(&device.name, language))
     }
 
     /// Starts a trace of a polled device: `samples` polls, `interval` apart.
@@ -207,15 +207,16 @@ impl DeviceLinks {
         device: &str,
         samples: usize,
         interval: Duration,
+        language: Language,
     ) -> Result<(), String> {
         let link = self
             .links
             .get_mut(device)
-            .ok_or_else(|| format!("device {device} is not polled; watch one of its variables"))?;
+            .ok_or_else(|| not_polled(device, language))?;
         link.trace = None;
         link.commands
             .try_send(DeviceCommand::Trace(samples, interval))
-            .map_err(|_| format!("device {device} is busy; try again"))
+            .map_err(|_| busy(device, language))
     }
 
     /// A finished trace of `device`, once.
@@ -360,4 +361,16 @@ fn start(handle: &tokio::runtime::Handle, config: ModbusDevice, wake: Waker) -> 
         trace: None,
         task,
     }
+}
+
+/// Why a device cannot be written or traced: nothing polls it.
+fn not_polled(device: &str, language: Language) -> String {
+    Text::DeviceNotPolled
+        .get(language)
+        .replace("{device}", device)
+}
+
+/// Why a device command was refused: the device's queue is full.
+fn busy(device: &str, language: Language) -> String {
+    Text::DeviceBusy.get(language).replace("{device}", device)
 }

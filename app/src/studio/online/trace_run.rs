@@ -6,6 +6,7 @@ use std::collections::HashMap;
 use online::{Resolved, Sample, TraceConfig, TraceStatus, Trigger};
 use project_model::TraceTriggerCondition;
 
+use crate::studio::i18n::{Language, Text};
 use crate::value_text::is_bool;
 
 /// Where a trace is.
@@ -91,24 +92,24 @@ impl TraceRun {
         &mut self,
         config: &project_model::TraceConfig,
         tasks: &[String],
+        language: Language,
     ) -> Result<Vec<String>, String> {
+        let text = |text: Text| text.get(language);
         let task = tasks
             .iter()
             .position(|task| task.eq_ignore_ascii_case(&config.task))
-            .ok_or_else(|| format!("the program has no task '{}'", config.task))?;
-        let task_index = u8::try_from(task).map_err(|_| "too many tasks".to_owned())?;
+            .ok_or_else(|| text(Text::ProgramHasNoTask).replace("{task}", &config.task))?;
+        let task_index = u8::try_from(task).map_err(|_| text(Text::TooManyTasks).to_owned())?;
         if config.variables.is_empty() {
-            return Err("no variables to record; add some first".to_owned());
+            return Err(text(Text::NoVariablesToRecord).to_owned());
         }
         if config.record_count == 0 {
-            return Err("the record count is 0".to_owned());
+            return Err(text(Text::RecordCountZero).to_owned());
         }
         if config.every_n_cycles == 0 || config.every_n_cycles > u32::from(u16::MAX) {
-            return Err(format!(
-                "every n-th cycle must be 1 to {}, not {}",
-                u16::MAX,
-                config.every_n_cycles
-            ));
+            return Err(text(Text::EveryNthRange)
+                .replace("{max}", &u16::MAX.to_string())
+                .replace("{value}", &config.every_n_cycles.to_string()));
         }
         let mut paths: Vec<String> = config.variables.iter().map(|v| v.path.clone()).collect();
         if let Some(trigger) = &config.trigger {
@@ -128,6 +129,7 @@ impl TraceRun {
     pub fn configuration(
         &mut self,
         resolved: &HashMap<String, Result<Resolved, String>>,
+        language: Language,
     ) -> Result<Option<TraceConfig>, String> {
         if self.phase != TracePhase::Resolving {
             return Ok(None);
@@ -157,10 +159,9 @@ impl TraceRun {
                 };
                 if !is_bool(&found) {
                     self.phase = TracePhase::Idle;
-                    return Err(format!(
-                        "the trigger {} is not a BOOL; the target triggers on BOOL edges and levels",
-                        trigger.variable
-                    ));
+                    return Err(Text::TriggerNotBool
+                        .get(language)
+                        .replace("{name}", &trigger.variable));
                 }
                 match trigger.condition {
                     TraceTriggerCondition::Rising => Trigger::Rising(found.place),

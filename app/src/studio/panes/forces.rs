@@ -2,16 +2,18 @@
 
 use egui::{RichText, Ui};
 
+use crate::studio::command::{Command, Commands};
 use crate::studio::i18n::Text;
-use crate::studio::studio_app::{Command, Studio};
+use crate::studio::view::StudioView;
 
-pub(crate) fn forces_ui(studio: &mut Studio, ui: &mut Ui) {
-    let language = studio.settings.language;
-    if !studio.online.can_write() {
+/// Draws the forces pane; releases become commands.
+pub(crate) fn forces_ui(view: StudioView<'_>, commands: &mut Commands, ui: &mut Ui) {
+    let language = view.language;
+    if !view.online.can_write() {
         ui.label(RichText::new(Text::NotOnline.get(language)).weak());
         return;
     }
-    let forced = studio.online.forced_values();
+    let forced = view.online.forced_values();
     ui.horizontal(|ui| {
         if ui
             .add_enabled(
@@ -21,7 +23,7 @@ pub(crate) fn forces_ui(studio: &mut Studio, ui: &mut Ui) {
             .on_hover_text("Alt+F7")
             .clicked()
         {
-            studio.pending.push(Command::ReleaseAllForces);
+            commands.push(Command::ReleaseAllForces);
         }
     });
     ui.separator();
@@ -62,6 +64,6 @@ pub(crate) fn forces_ui(studio: &mut Studio, ui: &mut Ui) {
                 });
         });
     if let Some(place) = release {
-        studio.online.unforce(&place);
+        commands.push(Command::Unforce(place));
     }
 }

@@ -1,33 +1,29 @@
 //! The messages pane: build diagnostics (click to jump to the source), problems found when the
 //! project was opened, and online messages.
 
-use egui::{Color32, RichText, Ui};
+use egui::{RichText, Ui};
 use project_model::Severity as LoadSeverity;
 
+use crate::studio::command::{Command, Commands};
 use crate::studio::i18n::Text;
-use crate::studio::studio_app::{Command, Studio};
+use crate::studio::reveal::Reveal;
+use crate::studio::theme;
+use crate::studio::view::StudioView;
 
 /// How many messages the pane lists (shown on its tab).
-pub(crate) fn message_count(studio: &Studio) -> usize {
-    studio.problems.len()
-        + studio
-            .last_build
-            .as_ref()
-            .map_or(0, |build| build.messages.len())
-        + usize::from(
-            studio
-                .last_build
-                .as_ref()
-                .is_some_and(|b| b.failure.is_some()),
-        )
+pub(crate) fn message_count(view: StudioView<'_>) -> usize {
+    view.problems.len()
+        + view.last_build.map_or(0, |build| build.messages.len())
+        + usize::from(view.last_build.is_some_and(|b| b.failure.is_some()))
 }
 
-pub(crate) fn messages_ui(studio: &mut Studio, ui: &mut Ui) {
-    let language = studio.settings.language;
+/// Draws the messages pane; a click on a message opens its place.
+pub(crate) fn messages_ui(view: StudioView<'_>, commands: &mut Commands, ui: &mut Ui) {
+    let language = view.language;
     let error = ui.visuals().error_fg_color;
     let warn = ui.visuals().warn_fg_color;
     ui.horizontal(|ui| {
-        match &studio.last_build {
+        match view.last_build {
             Some(build) => {
                 let (errors, warnings) = build.counts();
                 ui.label(format!(
@@ -41,11 +37,9 @@ pub(crate) fn messages_ui(studio: &mut Studio, ui: &mut Ui) {
                 ui.label(RichText::new(Text::NoBuildYet.get(language)).weak());
             }
         }
-        if !studio.online_messages.is_empty()
-            && ui.small_button(Text::Close.get(language)).clicked()
+        if !view.online_messages.is_empty() && ui.small_button(Text::Close.get(language)).clicked()
         {
-            studio.online_messages.clear();
-            studio.problems.clear();
+            commands.push(Command::ClearMessages);
         }
     });
     ui.separator();
@@ -55,14 +49,14 @@ pub(crate) fn messages_ui(studio: &mut Studio, ui: &mut Ui) {
         .id_salt("messages")
         .auto_shrink([false, false])
         .show(ui, |ui| {
-            for problem in &studio.problems {
+            for problem in view.problems {
                 let color = match problem.severity {
                     LoadSeverity::Error => error,
                     LoadSeverity::Warning => warn,
                 };
                 ui.label(RichText::new(problem.to_string()).monospace().color(color));
             }
-            if let Some(build) = &studio.last_build {
+            if let Some(build) = view.last_build {
                 if let Some(failure) = &build.failure {
                     ui.label(RichText::new(failure).color(error));
                 }
@@ -89,7 +83,7 @@ pub(crate) fn messages_ui(studio: &mut Studio, ui: &mut Ui) {
                             };
                             let clicked = ui
                                 .link(RichText::new(location).monospace())
-                                .on_hover_text("Open the source at this place")
+                                .on_hover_text(Text::OpenSourceHere.get(language))
                                 .clicked();
                             let text = ui.label(&message.message).clicked();
                             if (clicked || text) && message.node.is_some() {
@@ -99,15 +93,15 @@ pub(crate) fn messages_ui(studio: &mut Studio, ui: &mut Ui) {
                         }
                     });
             }
-            if !studio.texts.references.is_empty() {
+            if !view.references.items.is_empty() {
                 ui.separator();
                 ui.strong(format!(
                     "{} {} ({})",
                     Text::ReferencesTo.get(language),
-                    studio.texts.references_of,
-                    studio.texts.references.len()
+                    view.references.of,
+                    view.references.items.len()
                 ));
-                for reference in &studio.texts.references {
+                for reference in &view.references.items {
                     if ui
                         .link(RichText::new(&reference.label).monospace())
                         .clicked()
@@ -116,30 +110,30 @@ pub(crate) fn messages_ui(studio: &mut Studio, ui: &mut Ui) {
                     }
                 }
             }
-            for message in &studio.online_messages {
+            for message in view.online_messages {
                 let color = if message.is_error {
                     error
                 } else {
-                    Color32::GRAY
+                    theme::colors(ui).quiet_message
                 };
-                ui.label(RichText::new(format!("online: {}", message.text)).color(color));
+                let text = format!("{}: {}", Text::OnlinePrefix.get(language), message.text);
+                ui.label(RichText::new(text).color(color));
             }
         });
     if let Some(reference) = reveal {
-        studio.pending.push(Command::Reveal(
+        commands.push(Command::Reveal(
             reference.node,
-            crate::studio::text_documents::Reveal::Body(reference.target, reference.range),
+            Reveal::Body(reference.target, reference.range),
         ));
     }
     if let Some(message) = open
         && let Some(node) = message.node
     {
         match message.place {
-            Some((target, range)) => studio.pending.push(Command::Reveal(
-                node,
-                crate::studio::text_documents::Reveal::Body(target, range),
-            )),
-            None => studio.pending.push(Command::Open(node)),
+            Some((target, range)) => {
+                commands.push(Command::Reveal(node, Reveal::Body(target, range)))
+            }
+            None => commands.push(Command::Open(node)),
         }
     }
 }

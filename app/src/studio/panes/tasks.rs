@@ -3,14 +3,17 @@
 
 use egui::{RichText, Ui};
 
+use crate::studio::command::{Command, Commands};
+use crate::studio::cycle_plot::cycle_plot_ui;
 use crate::studio::i18n::Text;
-use crate::studio::studio_app::{Command, Studio};
-use crate::studio::text_documents::Reveal;
+use crate::studio::reveal::Reveal;
 use crate::studio::tree_node::TreeNode;
+use crate::studio::view::StudioView;
 
-pub(crate) fn tasks_ui(studio: &mut Studio, ui: &mut Ui) {
-    let language = studio.settings.language;
-    if !studio.online.is_online() {
+/// Draws the tasks pane; a click on a fault opens its place.
+pub(crate) fn tasks_ui(view: StudioView<'_>, commands: &mut Commands, ui: &mut Ui) {
+    let language = view.language;
+    if !view.online.is_online() {
         ui.label(RichText::new(Text::NotOnline.get(language)).weak());
         return;
     }
@@ -20,23 +23,23 @@ pub(crate) fn tasks_ui(studio: &mut Studio, ui: &mut Ui) {
     let mut open = None;
     ui.horizontal_top(|ui| {
         ui.allocate_ui(egui::vec2(width * 0.62, height), |ui| {
-            super::super::cycle_plot::cycle_plot_ui(ui, &studio.cycle_history, language);
+            cycle_plot_ui(ui, view.cycle_history, language);
         });
         ui.separator();
-        ui.vertical(|ui| open = faults_ui(studio, ui));
+        ui.vertical(|ui| open = faults_ui(view, ui));
     });
     if let Some((pou, file, line)) = open {
-        studio.pending.push(fault_place(studio, &pou, &file, line));
+        commands.push(fault_place(view, &pou, &file, line));
     }
 }
 
 /// Where a fault happened: its source line when the body is known, else its POU.
-fn fault_place(studio: &Studio, pou: &str, file: &str, line: u32) -> Command {
+fn fault_place(view: StudioView<'_>, pou: &str, file: &str, line: u32) -> Command {
     // The POU of a method or action is named `FB.Method`; the document is the POU's.
     let object = pou.split('.').next().unwrap_or(pou).to_owned();
     let node = TreeNode::Object(object);
-    let body = studio.session.as_ref().and_then(|session| {
-        project_model::st_body_files(&session.project)
+    let body = view.project().and_then(|project| {
+        project_model::st_body_files(project)
             .into_iter()
             .find(|body| body.file == std::path::Path::new(file))
             .map(|body| (body.target, body.text.to_owned()))
@@ -58,10 +61,10 @@ fn fault_place(studio: &Studio, pou: &str, file: &str, line: u32) -> Command {
 }
 
 /// The fault log; returns the POU, file and line of a clicked fault.
-fn faults_ui(studio: &Studio, ui: &mut Ui) -> Option<(String, String, u32)> {
-    let language = studio.settings.language;
+fn faults_ui(view: StudioView<'_>, ui: &mut Ui) -> Option<(String, String, u32)> {
+    let language = view.language;
     ui.strong(Text::Faults.get(language));
-    let faults = studio.online.faults();
+    let faults = view.online.faults();
     if faults.is_empty() {
         ui.label(RichText::new(Text::NoFaults.get(language)).weak());
         return None;

@@ -6,9 +6,11 @@ use project_model::{
     Edit, Object, TraceConfig, TraceTrigger, TraceTriggerCondition, TraceVariable,
 };
 
+use crate::studio::command::{Command, Commands};
 use crate::studio::i18n::Text;
 use crate::studio::online::TracePhase;
-use crate::studio::studio_app::{Command, Studio};
+use crate::studio::trace_view::{TraceViewState, trace_samples_ui};
+use crate::studio::view::StudioView;
 
 /// What the trace pane remembers between frames.
 #[derive(Default)]
@@ -43,8 +45,8 @@ impl TracePaneState {
 }
 
 /// The edit that replaces a trace object, merged with the previous one of the same gesture.
-fn replace(studio: &mut Studio, label: &str, changed: TraceConfig, merge: bool) {
-    studio.pending.push(Command::EditText {
+fn replace(commands: &mut Commands, label: &str, changed: TraceConfig, merge: bool) {
+    commands.push(Command::EditText {
         label: label.to_owned(),
         merge_key: merge.then(|| format!("trace {} {label}", changed.name)),
         edits: vec![Edit::ReplaceObject(Object::Trace(changed))],
@@ -53,19 +55,17 @@ fn replace(studio: &mut Studio, label: &str, changed: TraceConfig, merge: bool) 
 
 /// The trace's configuration, edited in place: task, record count, every n-th cycle, trigger
 /// (variable, edge or level, pre-trigger share) and the recorded variables.
-fn configuration_ui(studio: &mut Studio, ui: &mut Ui, config: &TraceConfig) {
-    let language = studio.settings.language;
-    let tasks: Vec<String> = studio
-        .session
-        .as_ref()
-        .map(|session| {
-            session
-                .project
-                .tasks
-                .iter()
-                .map(|t| t.name.clone())
-                .collect()
-        })
+fn configuration_ui(
+    view: StudioView<'_>,
+    state: &mut TracePaneState,
+    commands: &mut Commands,
+    ui: &mut Ui,
+    config: &TraceConfig,
+) {
+    let language = view.language;
+    let tasks: Vec<String> = view
+        .project()
+        .map(|project| project.tasks.iter().map(|t| t.name.clone()).collect())
         .unwrap_or_default();
     ui.horizontal_wrapped(|ui| {
         let label = ui.label(Text::Task.get(language));
@@ -78,7 +78,7 @@ fn configuration_ui(studio: &mut Studio, ui: &mut Ui, config: &TraceConfig) {
                     {
                         let mut changed = config.clone();
                         changed.task = task.clone();
-                        replace(studio, "Change the trace's task", changed, false);
+                        replace(commands, "Change the trace's task", changed, false);
                     }
                 }
             })
@@ -93,7 +93,7 @@ fn configuration_ui(studio: &mut Studio, ui: &mut Ui, config: &TraceConfig) {
         {
             let mut changed = config.clone();
             changed.record_count = count;
-            replace(studio, "Change the record count", changed, true);
+            replace(commands, "Change the record count", changed, true);
         }
         let mut every = config.every_n_cycles;
         let label = ui.label(Text::EveryNth.get(language));
@@ -104,7 +104,7 @@ fn configuration_ui(studio: &mut Studio, ui: &mut Ui, config: &TraceConfig) {
         {
             let mut changed = config.clone();
             changed.every_n_cycles = every;
-            replace(studio, "Change the sampling", changed, true);
+            replace(commands, "Change the sampling", changed, true);
         }
     });
     ui.horizontal_wrapped(|ui| {
@@ -124,14 +124,13 @@ fn configuration_ui(studio: &mut Studio, ui: &mut Ui, config: &TraceConfig) {
                 level: None,
                 pre_trigger_percent: 10,
             });
-            replace(studio, "Change the trigger", changed, false);
+            replace(commands, "Change the trigger", changed, false);
         }
         let Some(trigger) = &config.trigger else {
             return;
         };
         let label = ui.label(Text::Variable.get(language));
-        let mut typed = studio
-            .trace
+        let mut typed = state
             .trigger_typing
             .clone()
             .unwrap_or_else(|| trigger.variable.clone());
@@ -139,16 +138,16 @@ fn configuration_ui(studio: &mut Studio, ui: &mut Ui, config: &TraceConfig) {
             .add(egui::TextEdit::singleline(&mut typed).desired_width(200.0))
             .labelled_by(label.id);
         if field.changed() {
-            studio.trace.trigger_typing = Some(typed.clone());
+            state.trigger_typing = Some(typed.clone());
         }
         if field.lost_focus() {
-            studio.trace.trigger_typing = None;
+            state.trigger_typing = None;
             if typed.trim() != trigger.variable {
                 let mut changed = config.clone();
                 if let Some(t) = &mut changed.trigger {
                     t.variable = typed.trim().to_owned();
                 }
-                replace(studio, "Change the trigger variable", changed, false);
+                replace(commands, "Change the trigger variable", changed, false);
             }
         }
         let mut condition = trigger.condition;
@@ -164,7 +163,7 @@ fn configuration_ui(studio: &mut Studio, ui: &mut Ui, config: &TraceConfig) {
             if let Some(t) = &mut changed.trigger {
                 t.condition = condition;
             }
-            replace(studio, "Change the trigger condition", changed, false);
+            replace(commands, "Change the trigger condition", changed, false);
         }
         let mut percent = trigger.pre_trigger_percent;
         let label = ui.label(Text::PreTrigger.get(language));
@@ -181,7 +180,7 @@ fn configuration_ui(studio: &mut Studio, ui: &mut Ui, config: &TraceConfig) {
             if let Some(t) = &mut changed.trigger {
                 t.pre_trigger_percent = percent;
             }
-            replace(studio, "Change the pre-trigger", changed, true);
+            replace(commands, "Change the pre-trigger", changed, true);
         }
     });
     ui.horizontal_wrapped(|ui| {
@@ -201,7 +200,7 @@ fn configuration_ui(studio: &mut Studio, ui: &mut Ui, config: &TraceConfig) {
             let mut changed = config.clone();
             let gone = changed.variables.remove(index);
             replace(
-                studio,
+                commands,
                 &format!("Stop tracing {}", gone.path),
                 changed,
                 false,
@@ -210,33 +209,40 @@ fn configuration_ui(studio: &mut Studio, ui: &mut Ui, config: &TraceConfig) {
         let label = ui.label(Text::AddVariable.get(language));
         let field = ui
             .add(
-                egui::TextEdit::singleline(&mut studio.trace.new_variable)
+                egui::TextEdit::singleline(&mut state.new_variable)
                     .hint_text("Main.fbConveyor.xMotorOn")
                     .desired_width(200.0),
             )
             .labelled_by(label.id);
-        let path = studio.trace.new_variable.trim().to_owned();
+        let path = state.new_variable.trim().to_owned();
         if field.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter)) && !path.is_empty() {
             let mut changed = config.clone();
             changed.variables.push(TraceVariable {
                 path: path.clone(),
                 color: None,
             });
-            replace(studio, &format!("Trace {path}"), changed, false);
-            studio.trace.new_variable.clear();
+            replace(commands, &format!("Trace {path}"), changed, false);
+            state.new_variable.clear();
         }
     });
 }
 
-pub(crate) fn trace_ui(studio: &mut Studio, ui: &mut Ui) {
-    let language = studio.settings.language;
-    let (traces, current) = studio.trace.traces(studio.session.as_ref());
+/// Draws the trace pane; starting, uploading, exporting and changing the trace become commands.
+pub(crate) fn trace_ui(
+    view: StudioView<'_>,
+    state: &mut TracePaneState,
+    plot: &mut TraceViewState,
+    commands: &mut Commands,
+    ui: &mut Ui,
+) {
+    let language = view.language;
+    let (traces, current) = state.traces(view.session);
     let names: Vec<String> = traces.iter().map(|trace| trace.name.clone()).collect();
     let Some(config) = current.cloned() else {
         ui.label(RichText::new(Text::NoTrace.get(language)).weak());
         return;
     };
-    let online = studio.online.is_online();
+    let online = view.online.is_online();
     ui.horizontal(|ui| {
         let label = ui.label(Text::Trace.get(language));
         egui::ComboBox::from_id_salt("trace_choice")
@@ -244,7 +250,7 @@ pub(crate) fn trace_ui(studio: &mut Studio, ui: &mut Ui) {
             .show_ui(ui, |ui| {
                 for name in &names {
                     if ui.selectable_label(*name == config.name, name).clicked() {
-                        studio.trace.selected = Some(name.clone());
+                        state.selected = Some(name.clone());
                     }
                 }
             })
@@ -254,15 +260,15 @@ pub(crate) fn trace_ui(studio: &mut Studio, ui: &mut Ui) {
         let on_device = config
             .variables
             .iter()
-            .any(|v| studio.online.is_device_bound(&v.path));
-        let can_start = online || (on_device && studio.online.can_write());
+            .any(|v| view.online.is_device_bound(&v.path));
+        let can_start = online || (on_device && view.online.can_write());
         if ui
             .add_enabled(can_start, egui::Button::new(Text::StartTrace.get(language)))
             .clicked()
         {
-            studio.online.trace_start(&config);
+            commands.push(Command::StartTrace(config.clone()));
         }
-        let phase = studio.online.trace().phase();
+        let phase = view.online.trace().phase();
         let can_upload = online
             && matches!(
                 phase,
@@ -275,14 +281,16 @@ pub(crate) fn trace_ui(studio: &mut Studio, ui: &mut Ui) {
             )
             .clicked()
         {
-            studio.online.trace_upload();
+            commands.push(Command::UploadTrace);
         }
         phase_ui(ui, phase, config.record_count, language);
     });
-    let editable = !studio.online.trace().is_recording();
-    ui.add_enabled_ui(editable, |ui| configuration_ui(studio, ui, &config));
+    let editable = !view.online.trace().is_recording();
+    ui.add_enabled_ui(editable, |ui| {
+        configuration_ui(view, state, commands, ui, &config)
+    });
     ui.separator();
-    super::super::trace_view::trace_samples_ui(studio, ui, Some(&config));
+    trace_samples_ui(view, plot, commands, ui, Some(&config));
 }
 
 fn phase_ui(

@@ -3,12 +3,14 @@
 
 use std::collections::HashMap;
 
-use egui::{Color32, RichText, Ui};
+use egui::{RichText, Ui};
 use project_model::{Edit, Object, WatchEntry, WatchList};
 
+use crate::studio::command::{Command, Commands};
 use crate::studio::i18n::Text;
 use crate::studio::session::Session;
-use crate::studio::studio_app::{Command, Studio};
+use crate::studio::theme;
+use crate::studio::view::StudioView;
 
 /// What the watch pane remembers between frames.
 #[derive(Default)]
@@ -72,9 +74,15 @@ fn replace(changed: WatchList) -> Vec<Edit> {
     vec![Edit::ReplaceObject(Object::WatchList(changed))]
 }
 
-pub(crate) fn watch_ui(studio: &mut Studio, ui: &mut Ui) {
-    let language = studio.settings.language;
-    let (lists, current) = studio.watch.lists(studio.session.as_ref());
+/// Draws the watch pane; changes to the list become commands.
+pub(crate) fn watch_ui(
+    view: StudioView<'_>,
+    state: &mut WatchPaneState,
+    commands: &mut Commands,
+    ui: &mut Ui,
+) {
+    let language = view.language;
+    let (lists, current) = state.lists(view.session);
     let names: Vec<String> = lists.iter().map(|list| list.name.clone()).collect();
     let Some(list) = current.cloned() else {
         ui.label(RichText::new(Text::NoWatchList.get(language)).weak());
@@ -87,7 +95,7 @@ pub(crate) fn watch_ui(studio: &mut Studio, ui: &mut Ui) {
             .show_ui(ui, |ui| {
                 for name in &names {
                     if ui.selectable_label(*name == list.name, name).clicked() {
-                        studio.watch.list = Some(name.clone());
+                        state.list = Some(name.clone());
                     }
                 }
             })
@@ -97,30 +105,28 @@ pub(crate) fn watch_ui(studio: &mut Studio, ui: &mut Ui) {
         let label = ui.label(Text::AddVariable.get(language));
         let field = ui
             .add(
-                egui::TextEdit::singleline(&mut studio.watch.new_path)
+                egui::TextEdit::singleline(&mut state.new_path)
                     .hint_text("Main.fbConveyor.xMotorOn")
                     .desired_width(260.0),
             )
             .labelled_by(label.id);
-        let path = studio.watch.new_path.trim().to_owned();
+        let path = state.new_path.trim().to_owned();
         if field.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter)) && !path.is_empty() {
             let mut changed = list.clone();
             changed.entries.push(WatchEntry {
                 path: path.clone(),
                 ..WatchEntry::default()
             });
-            studio
-                .pending
-                .push(Command::Edit(format!("Watch {path}"), replace(changed)));
-            studio.watch.new_path.clear();
+            commands.push(Command::Edit(format!("Watch {path}"), replace(changed)));
+            state.new_path.clear();
         }
     });
     ui.separator();
-    let online = studio.online.can_write();
+    let online = view.online.can_write();
     let mut edits: Vec<(String, Vec<Edit>)> = Vec::new();
     // A variable dragged from a declaration table anywhere onto the list joins it.
     let (_, dropped) = ui.dnd_drop_zone::<editor::VariablePath, _>(egui::Frame::NONE, |ui| {
-        entries_ui(studio, ui, &list, online, &mut edits);
+        entries_ui(view, state, ui, &list, online, &mut edits);
     });
     if let Some(dropped) = dropped
         && !list
@@ -136,19 +142,20 @@ pub(crate) fn watch_ui(studio: &mut Studio, ui: &mut Ui) {
         edits.push((format!("Watch {}", dropped.0), replace(changed)));
     }
     for (label, edit) in edits {
-        studio.pending.push(Command::Edit(label, edit));
+        commands.push(Command::Edit(label, edit));
     }
 }
 
 /// The rows of the watch list: path, live value, prepared value, comment, remove.
 fn entries_ui(
-    studio: &mut Studio,
+    view: StudioView<'_>,
+    state: &mut WatchPaneState,
     ui: &mut Ui,
     list: &WatchList,
     online: bool,
     edits: &mut Vec<(String, Vec<Edit>)>,
 ) {
-    let language = studio.settings.language;
+    let language = view.language;
     egui::ScrollArea::both()
         .id_salt("watch")
         .auto_shrink([false, false])
@@ -171,8 +178,8 @@ fn entries_ui(
                     ui.end_row();
                     for (index, entry) in list.entries.iter().enumerate() {
                         ui.label(RichText::new(&entry.path).monospace());
-                        value_cell(studio, ui, &entry.path);
-                        if let Some(committed) = prepared_cell(studio, ui, entry, online) {
+                        value_cell(view, ui, &entry.path);
+                        if let Some(committed) = prepared_cell(view, state, ui, entry, online) {
                             let mut changed = list.clone();
                             changed.entries[index].prepared_value =
                                 (!committed.is_empty()).then_some(committed);
@@ -198,20 +205,20 @@ fn entries_ui(
 }
 
 /// The live value: forced values marked, changed values highlighted, unknown paths explained.
-fn value_cell(studio: &Studio, ui: &mut Ui, path: &str) {
-    let language = studio.settings.language;
+fn value_cell(view: StudioView<'_>, ui: &mut Ui, path: &str) {
+    let language = view.language;
     // Why there is no value (unknown on the target, device unreachable) comes first; values of
     // variables bound to Modbus devices show without a login.
-    if let Some(problem) = studio.online.problem(path) {
+    if let Some(problem) = view.online.problem(path) {
         ui.label(RichText::new(problem).color(ui.visuals().error_fg_color));
         return;
     }
-    if !studio.online.is_online() && !studio.online.is_device_bound(path) {
+    if !view.online.is_online() && !view.online.is_device_bound(path) {
         ui.label(RichText::new("—").weak())
             .on_hover_text(Text::NotOnline.get(language));
         return;
     }
-    match studio.online.value(path) {
+    match view.online.value(path) {
         Some(value) => {
             let mut text = RichText::new(&value.text).monospace();
             if value.changed {
@@ -219,14 +226,15 @@ fn value_cell(studio: &Studio, ui: &mut Ui, path: &str) {
             }
             ui.horizontal(|ui| {
                 if value.forced {
+                    let colors = theme::colors(ui);
                     ui.label(
                         RichText::new(" F ")
                             .monospace()
                             .strong()
-                            .color(Color32::WHITE)
-                            .background_color(Color32::from_rgb(200, 40, 40)),
+                            .color(colors.forced_text)
+                            .background_color(colors.forced_fill),
                     )
-                    .on_hover_text("forced");
+                    .on_hover_text(Text::Forced.get(language));
                 }
                 ui.label(text);
             });
@@ -241,20 +249,19 @@ fn value_cell(studio: &Studio, ui: &mut Ui, path: &str) {
 /// with Enter or by leaving the field; a value the type refuses is kept in the field with the
 /// reason beside it, and not committed.
 fn prepared_cell(
-    studio: &mut Studio,
+    view: StudioView<'_>,
+    state: &mut WatchPaneState,
     ui: &mut Ui,
     entry: &WatchEntry,
     online: bool,
 ) -> Option<String> {
     let saved = entry.prepared_value.clone().unwrap_or_default();
-    let mut text = studio
-        .watch
+    let mut text = state
         .typing
         .get(&entry.path)
         .cloned()
         .unwrap_or_else(|| saved.clone());
-    let refused = studio
-        .watch
+    let refused = state
         .refused
         .iter()
         .find(|(path, _)| *path == entry.path)
@@ -274,24 +281,24 @@ fn prepared_cell(
             )
         });
         if field.changed() {
-            studio.watch.typing.insert(entry.path.clone(), text.clone());
-            studio.watch.refused.retain(|(path, _)| *path != entry.path);
+            state.typing.insert(entry.path.clone(), text.clone());
+            state.refused.retain(|(path, _)| *path != entry.path);
         }
         if field.lost_focus() && text.trim() != saved {
             let check = if online && !text.trim().is_empty() {
-                studio.online.check_value(&entry.path, &text)
+                view.online.check_value(&entry.path, &text)
             } else {
                 Ok(())
             };
             match check {
                 Ok(()) => {
-                    studio.watch.typing.remove(&entry.path);
+                    state.typing.remove(&entry.path);
                     committed = Some(text.trim().to_owned());
                 }
-                Err(reason) => studio.watch.refused.push((entry.path.clone(), reason)),
+                Err(reason) => state.refused.push((entry.path.clone(), reason)),
             }
         } else if field.lost_focus() {
-            studio.watch.typing.remove(&entry.path);
+            state.typing.remove(&entry.path);
         }
         if let Some(reason) = refused {
             ui.label(RichText::new(reason).color(ui.visuals().error_fg_color));

@@ -3,6 +3,8 @@
 
 use egui::Color32;
 
+use crate::studio::theme::TRACE_SERIES;
+
 /// One uploaded trace: the recorded variables and their samples, in recording order.
 ///
 /// It lives as long as the app keeps the last upload and is not saved with the project (the
@@ -75,20 +77,6 @@ pub fn parse_color(text: &str) -> Option<Color32> {
     Some(Color32::from_rgb(channel(0)?, channel(2)?, channel(4)?))
 }
 
-/// Distinct colours for series without a configured colour, readable on dark and light themes.
-const PALETTE: [Color32; 10] = [
-    Color32::from_rgb(0x1f, 0x77, 0xb4),
-    Color32::from_rgb(0xff, 0x7f, 0x0e),
-    Color32::from_rgb(0x2c, 0xa0, 0x2c),
-    Color32::from_rgb(0xd6, 0x27, 0x28),
-    Color32::from_rgb(0x94, 0x67, 0xbd),
-    Color32::from_rgb(0x8c, 0x56, 0x4b),
-    Color32::from_rgb(0xe3, 0x77, 0xc2),
-    Color32::from_rgb(0x7f, 0x7f, 0x7f),
-    Color32::from_rgb(0xbc, 0xbd, 0x22),
-    Color32::from_rgb(0x17, 0xbe, 0xcf),
-];
-
 impl TraceData {
     /// The time every other time is relative to: the trigger sample's, else the first sample's.
     pub fn origin_ns(&self) -> Option<u64> {
@@ -112,7 +100,7 @@ impl TraceData {
         self.variables
             .get(index)
             .and_then(|series| series.color)
-            .unwrap_or(PALETTE[index % PALETTE.len()])
+            .unwrap_or(TRACE_SERIES[index % TRACE_SERIES.len()])
     }
 
     /// The value of series `series` at `time_ms` (relative, as on the plot): the last sample at

@@ -13,7 +13,7 @@ mod png;
 mod tests;
 pub(crate) mod text;
 
-use egui::{Color32, Id, Rect, Role, Ui, WidgetInfo};
+use egui::{Id, Rect, Role, Ui, WidgetInfo};
 use egui_plot::{Legend, Line, LineStyle, Plot, PlotBounds, PlotResponse, PlotUi, VLine};
 
 pub use data::{
@@ -22,7 +22,7 @@ pub use data::{
 };
 pub use png::{PngExportError, crop_to_png};
 
-use crate::studio::Language;
+use crate::studio::i18n::Language;
 use decimate::{DecimationCache, DecimationKey, fingerprint};
 use text::PlotText;
 
@@ -236,6 +236,7 @@ impl TracePlotView {
         // plots differ by their y-axis labels, and one width lets them share one decimation.
         let width_px = f64::from(ui.available_width() * ui.ctx().pixels_per_point());
         let cursors = [self.cursor_a_ms, self.cursor_b_ms];
+        let colors = crate::studio::theme::colors(ui);
         let cache = &mut self.cache;
         let times_ref = &times;
         // The decimation key comes from the bounds of the last frame, which is what the plot
@@ -264,15 +265,12 @@ impl TracePlotView {
                 plot_ui.vline(
                     VLine::new(PlotText::Trigger.get(language), 0.0)
                         .style(LineStyle::dashed_loose())
-                        .color(Color32::GRAY),
+                        .color(colors.trace_trigger),
                 );
             }
             let names = [PlotText::CursorA, PlotText::CursorB];
-            let colors = [
-                Color32::from_rgb(0xe0, 0x40, 0x40),
-                Color32::from_rgb(0x40, 0x90, 0xe0),
-            ];
-            for ((cursor, name), color) in cursors.into_iter().zip(names).zip(colors) {
+            let cursor_colors = colors.trace_cursors;
+            for ((cursor, name), color) in cursors.into_iter().zip(names).zip(cursor_colors) {
                 if let Some(x) = cursor {
                     plot_ui.vline(VLine::new(name.get(language), x).color(color).width(1.5));
                 }

@@ -3,7 +3,7 @@
 //! It lives beside the views rather than in `studio::Text` so the views stay self-contained;
 //! the two can be merged when the views are wired into the studio.
 
-use crate::studio::Language;
+use crate::studio::i18n::Language;
 
 /// Every piece of text the trace and cycle-time views show.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

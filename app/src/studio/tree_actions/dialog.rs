@@ -6,8 +6,8 @@
 use egui::{Key, RichText, Ui};
 use project_model::{PouKind, Project};
 
+use super::action::{TreeAction, rename_scope};
 use super::names::{NameScope, name_problem, unique_name};
-use super::{TreeAction, rename_scope};
 use crate::studio::i18n::{Language, Text};
 use crate::studio::tree_node::TreeNode;
 

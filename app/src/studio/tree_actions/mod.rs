@@ -4,89 +4,30 @@
 //! Planning reads the project and never changes it; the studio applies a plan's edits after the
 //! frame as one undo step, as every other view does.
 
+mod action;
 mod dialog;
 mod dirty;
 mod lists;
 mod moves;
 mod names;
 mod new_objects;
+mod plan_step;
 #[cfg(test)]
 mod tests;
 
 use project_model::{Edit, EditError, Folder, Node, Object, PouKind, Project, TreeEdit};
 
+pub use action::{TreeAction, rename_scope};
 pub use dialog::{DialogOutcome, TreeDialog};
 pub use dirty::DirtyMarkers;
 pub use lists::ListKind;
 pub use moves::{DropPlace, accepts, place_at, plan_move};
 pub use names::{NameScope, name_problem, unique_name};
 pub use new_objects::NewObject;
+pub use plan_step::{Plan, locate};
 
 use self::new_objects::{new_pou, pou_kind_description};
 use super::tree_node::TreeNode;
-
-/// A change of the device tree the user asked for.
-#[derive(Clone, Debug, PartialEq)]
-pub enum TreeAction {
-    /// Adds a POU with an empty ST body to `folder`.
-    AddPou {
-        /// The folder's path (empty for the application).
-        folder: Vec<String>,
-        /// Program, function block or function.
-        kind: PouKind,
-        /// The name, already checked by the dialog.
-        name: String,
-        /// A function's return type.
-        return_type: Option<String>,
-    },
-    /// Adds an object with a fresh default name to `folder`.
-    AddObject {
-        /// The folder's path.
-        folder: Vec<String>,
-        /// What to add.
-        kind: NewObject,
-    },
-    /// Adds a folder with a fresh default name to `folder`.
-    AddFolder {
-        /// The parent folder's path.
-        folder: Vec<String>,
-    },
-    /// Appends an entry with a fresh default name to a list of the device tree.
-    AddListEntry(ListKind),
-    /// Gives a node another name.
-    Rename {
-        /// The node.
-        node: TreeNode,
-        /// The new name.
-        name: String,
-    },
-    /// Copies a node, with a fresh name, right after it.
-    Duplicate(TreeNode),
-    /// Deletes a node (undoable, like everything else).
-    Delete(TreeNode),
-    /// Moves a node to where it was dropped.
-    Move {
-        /// The dragged node.
-        node: TreeNode,
-        /// The node it was dropped on.
-        target: TreeNode,
-        /// Where, relative to the target.
-        place: DropPlace,
-    },
-}
-
-/// The edits that carry out a [`TreeAction`], applied as one undo step named `label`.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Plan {
-    /// What the undo step is called ("Rename FB_Motor to FB_Drive").
-    pub label: String,
-    /// The edits, in order.
-    pub edits: Vec<Edit>,
-    /// A node to open in a tab once the edits are applied.
-    pub open: Option<TreeNode>,
-    /// A node to select once the edits are applied.
-    pub select: Option<TreeNode>,
-}
 
 /// What the device tree keeps between frames.
 #[derive(Default)]
@@ -168,37 +109,6 @@ pub fn plan(project: &Project, action: &TreeAction) -> Result<Option<Plan>, Stri
             target,
             place,
         } => plan_move(project, node, target, *place),
-    }
-}
-
-/// The folder path and index of an application node (object or folder).
-pub fn locate(project: &Project, node: &TreeNode) -> Option<(Vec<String>, usize)> {
-    match node {
-        TreeNode::Object(name) => project.application.locate(name),
-        TreeNode::Folder(path) => {
-            let (last, parent) = path.split_last()?;
-            let index = project
-                .application
-                .folder(parent)?
-                .children
-                .iter()
-                .position(|child| matches!(child, Node::Folder(f) if f.name == *last))?;
-            Some((parent.to_vec(), index))
-        }
-        _ => None,
-    }
-}
-
-/// The name scope a node's name lives in, and its current name; `None` for nodes that cannot
-/// be renamed.
-pub fn rename_scope<'a>(node: &'a TreeNode) -> Option<(NameScope<'a>, &'a str)> {
-    match node {
-        TreeNode::Object(name) => Some((NameScope::Object, name)),
-        TreeNode::Folder(path) => {
-            let (last, parent) = path.split_last()?;
-            Some((NameScope::Folder(parent), last))
-        }
-        other => ListKind::of_entry(other).map(|(kind, name)| (kind.scope(), name)),
     }
 }
 

@@ -3,7 +3,7 @@
 use project_model::{Edit, EditError, Project, TreeEdit};
 
 use super::lists::ListKind;
-use super::{Plan, locate};
+use super::plan_step::{Plan, locate};
 use crate::studio::tree_node::TreeNode;
 
 /// Where a dragged node lands relative to the node it is dropped on.

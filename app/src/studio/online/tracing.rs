@@ -1,0 +1,119 @@
+//! Traces: started on the target, or recorded by polling a Modbus device, and uploaded.
+
+use std::time::Duration;
+
+use online::session::Command;
+use online::{Place, Resolved};
+
+use super::Online;
+use super::devices;
+use crate::studio::i18n::Text;
+
+impl Online {
+    /// Configures and arms a trace of `config` on the target, or, when its variables are the
+    /// channels of one Modbus device, records it by polling that device.
+    pub fn trace_start(&mut self, config: &project_model::TraceConfig) {
+        if config
+            .variables
+            .iter()
+            .any(|v| self.is_device_bound(&v.path))
+        {
+            if let Err(reason) = self.device_trace_start(config) {
+                self.error(format!("{}: {reason}", self.trace_named(&config.name)));
+            }
+            return;
+        }
+        let Some(image) = &self.image else {
+            let text = self.text(Text::LogInFirst);
+            self.error(format!("{}: {text}", self.trace_named(&config.name)));
+            return;
+        };
+        match self.trace.prepare(config, &image.tasks, self.language) {
+            Ok(paths) => {
+                self.resolve(&paths);
+                self.advance_trace();
+            }
+            Err(reason) => self.error(format!("{}: {reason}", self.trace_named(&config.name))),
+        }
+    }
+
+    /// Starts recording a trace of device channels by polling the device.
+    fn device_trace_start(&mut self, config: &project_model::TraceConfig) -> Result<(), String> {
+        let mut device_name = None;
+        let mut variables = Vec::new();
+        for variable in &config.variables {
+            let (device, index) = devices::binding_of(&self.project_devices, &variable.path)
+                .ok_or_else(|| {
+                    self.text(Text::NotBoundToDevice)
+                        .replace("{path}", &variable.path)
+                })?;
+            if device_name.get_or_insert_with(|| device.name.clone()) != &device.name {
+                return Err(self.text(Text::DifferentDevices).to_owned());
+            }
+            let channels = crate::modbus_devices::channels_of(device);
+            let channel = channels
+                .get(index)
+                .ok_or(self.text(Text::BindingNoChannel))?;
+            let resolved = Resolved {
+                place: Place {
+                    region: 0,
+                    offset: u32::from(channel.address),
+                    bit: None,
+                    size: channel.ty.size_bytes() as u16,
+                },
+                type_tag: channel.ty as u8,
+                length: 0,
+            };
+            variables.push((variable.path.clone(), resolved));
+        }
+        if config.trigger.is_some() {
+            return Err(self.text(Text::DeviceTraceNoTrigger).to_owned());
+        }
+        let device_name = device_name.ok_or(self.text(Text::NoVariablesToRecord))?;
+        let device = self
+            .project_devices
+            .iter()
+            .find(|d| d.name == device_name)
+            .ok_or(self.text(Text::DeviceGone))?;
+        let interval = Duration::from_millis(
+            u64::from(device.poll_interval_ms.max(10)) * u64::from(config.every_n_cycles.max(1)),
+        );
+        let samples = usize::try_from(config.record_count)
+            .unwrap_or(usize::MAX)
+            .min(100_000);
+        self.devices
+            .trace(&device_name, samples, interval, self.language)?;
+        self.device_trace = Some(device_name);
+        self.trace.device(config, variables);
+        Ok(())
+    }
+
+    /// Uploads the recorded samples of the current trace.
+    pub fn trace_upload(&mut self) {
+        if self.trace.begin_upload() {
+            self.command(Command::TraceUpload);
+        }
+    }
+
+    /// Sends the trace configuration once all its paths are resolved.
+    pub(super) fn advance_trace(&mut self) {
+        match self.trace.configuration(&self.resolved, self.language) {
+            Ok(Some(config)) => {
+                if self.command(Command::TraceStart(config)) {
+                    self.trace.armed();
+                }
+            }
+            Ok(None) => {}
+            Err(reason) => {
+                self.trace.command_failed();
+                let text = self.text(Text::TraceWord);
+                self.error(format!("{text}: {reason}"));
+            }
+        }
+    }
+
+    /// `trace 'name'` in the messages' language.
+    pub(super) fn trace_named(&self, name: &str) -> String {
+        self.text(Text::TraceNamed).replace("{name}", name)
+    }
+}

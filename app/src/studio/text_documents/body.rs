@@ -1,0 +1,133 @@
+//! The implementation of a POU part in its editor, with live diagnostics, completion, hover,
+//! go to definition, find references and values inline while online.
+
+use editor::Gesture;
+use egui::{RichText, Ui};
+use project_model::{Body, Edit};
+
+use crate::studio::command::{Command, Commands};
+use crate::studio::i18n::Text;
+use crate::studio::reveal::Reveal;
+use crate::studio::tree_node::TreeNode;
+use crate::studio::view::StudioView;
+
+use super::diagnostics::body_diagnostics;
+use super::documents::{TextDocuments, TextKey};
+use super::live_check;
+use super::part::{Shown, body_of, target_label};
+use super::services::BodyServices;
+
+/// The implementation of the POU part, with live diagnostics, completion, hover, F12, Shift+F12
+/// and values inline while online.
+pub(super) fn body_ui(
+    view: StudioView<'_>,
+    texts: &mut TextDocuments,
+    commands: &mut Commands,
+    ui: &mut Ui,
+    shown: Shown<'_>,
+) {
+    let Shown { pou, part, reveal } = shown;
+    let language = view.language;
+    let Some((target, body)) = body_of(pou, part) else {
+        ui.label(RichText::new(Text::NoImplementation.get(language)).weak());
+        return;
+    };
+    let Some(text) = body.st_text() else {
+        match body {
+            Body::None => {
+                ui.label(RichText::new(Text::NoImplementation.get(language)).weak());
+            }
+            graphical => crate::studio::document_view::graphical_body_ui(
+                ui,
+                &target_label(&target),
+                graphical,
+            ),
+        }
+        return;
+    };
+    let Some(session) = view.session else {
+        return;
+    };
+    let project = &session.project;
+    let revision = session.history.revision();
+    if texts.live.update(project, &pou.name, revision) {
+        ui.ctx().request_repaint_after(live_check::CHECK_DELAY);
+    }
+    let diagnostics = body_diagnostics(&texts.live, project, &pou.name, &target);
+    let inline = if view.online.is_online() {
+        texts
+            .inline
+            .values_for(view.online, project, &target, text, pou)
+    } else {
+        texts.inline.forget(&target);
+        Vec::new()
+    };
+    let read_only = view.online.is_logged_in();
+    let key = TextKey::Body(target.clone());
+    let text = text.to_owned();
+    let label = format!("Implementation of {}", target_label(&target));
+    let services = BodyServices {
+        project,
+        target: target.clone(),
+    };
+    let entry = texts.editor(key, &text);
+    entry.editor.set_read_only(read_only);
+    if let Some(diagnostics) = diagnostics {
+        entry.editor.set_diagnostics(diagnostics);
+    }
+    entry.editor.set_inline_values(inline);
+    if let Some(Reveal::Body(_, range)) = reveal {
+        entry.editor.reveal(range.clone());
+        entry.editor.request_focus();
+    }
+    let output = entry.editor.show(ui, &label, &services);
+    if let Some(offset) = output.goto_definition {
+        match compiler::ide::definition(project, &target, offset) {
+            Some(definition) => {
+                let object = definition.object.clone().unwrap_or_default();
+                if object.is_empty() {
+                    commands.status(
+                        Text::InStandardLibrary
+                            .get(language)
+                            .replace("{name}", &definition.name),
+                    );
+                } else {
+                    commands.push(Command::Reveal(
+                        TreeNode::Object(object),
+                        Reveal::Declaration {
+                            container: definition.container.clone(),
+                            name: definition.name.clone(),
+                        },
+                    ));
+                }
+            }
+            None => commands.status(Text::NoDeclarationAtCaret.get(language)),
+        }
+    }
+    if let Some(offset) = output.find_references {
+        commands.push(Command::FindReferences(target.clone(), offset));
+    }
+    if let Some((range, value)) = output.prepared {
+        texts.inline.prepare(&target, range, value);
+    }
+    if !output.changes.is_empty() {
+        let edits = output
+            .changes
+            .into_iter()
+            .map(|change| Edit::ReplaceText {
+                target: target.clone(),
+                range: change.range,
+                text: change.text,
+            })
+            .collect();
+        let merge_key = match output.gesture {
+            Some(Gesture::Typing { run }) => Some(format!("{target:?} {run}")),
+            _ => None,
+        };
+        commands.push(Command::EditText {
+            label: format!("Edit {}", target_label(&target)),
+            edits,
+            merge_key,
+        });
+    }
+}
