@@ -17,8 +17,9 @@ pub const MAX_COUNT: usize = u8::MAX as usize;
 /// The most bytes an `str8` holds, as its length is one byte.
 pub const MAX_STR8_BYTES: usize = u8::MAX as usize;
 
-/// The most bytes of a refusal's message: cut there so that a refusal always fits a response.
-pub const MAX_MESSAGE_BYTES: usize = 200;
+/// The most bytes of a text the runtime sends (a refusal's message, its version, the
+/// project's name, a task's name): cut there so that the response fits.
+pub const MAX_TEXT_BYTES: usize = 200;
 
 /// The most bytes of each text of a `FAULTS` entry, so that one fault always fits a response.
 pub const MAX_FAULT_TEXT_BYTES: usize = 48;

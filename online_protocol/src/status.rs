@@ -1,7 +1,7 @@
 //! The status of a response and the refusal that any status but "done" carries
 //! (`docs/protocol.md` §4).
 
-use crate::framing::MAX_MESSAGE_BYTES;
+use crate::framing::MAX_TEXT_BYTES;
 use crate::writer::{cut, put_str8};
 
 /// The status of a response.
@@ -63,7 +63,7 @@ impl Status {
 pub struct Refusal {
     /// Why.
     pub status: Status,
-    /// What happened, in English; cut to [`MAX_MESSAGE_BYTES`] on the wire.
+    /// What happened, in English; cut to [`MAX_TEXT_BYTES`] on the wire.
     pub message: String,
 }
 
@@ -88,9 +88,9 @@ impl Refusal {
 
     /// The response body (after the function code) refusing `service`: the service number as
     /// the request had it (which may be unknown), the status and the message cut to
-    /// [`MAX_MESSAGE_BYTES`], so that a refusal always fits one response.
+    /// [`MAX_TEXT_BYTES`], so that a refusal always fits one response.
     pub fn encode(&self, service: u8) -> Vec<u8> {
-        let message = cut(&self.message, MAX_MESSAGE_BYTES);
+        let message = cut(&self.message, MAX_TEXT_BYTES);
         let mut body = Vec::with_capacity(3 + message.len());
         body.push(service);
         body.push(self.status.number());
