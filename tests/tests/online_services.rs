@@ -589,7 +589,7 @@ async fn a_trace_of_more_places_than_one_frame_holds_records_them_all() {
     assert_eq!(client.trace_configure(&config).await.unwrap(), 160);
     client.trace_arm().await.unwrap();
     let started = Instant::now();
-    while client.trace_status().await.unwrap().state != 4 {
+    while client.trace_status().await.unwrap().state != online::TraceState::Complete {
         assert!(started.elapsed() < PATIENCE, "the trace never completed");
         tokio::time::sleep(Duration::from_millis(10)).await;
     }
