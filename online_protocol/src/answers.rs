@@ -37,6 +37,14 @@ pub enum TargetState {
 }
 
 impl TargetState {
+    /// Every state, in the order of their numbers.
+    pub const ALL: [TargetState; 4] = [
+        TargetState::NoProgram,
+        TargetState::Stopped,
+        TargetState::Running,
+        TargetState::Faulted,
+    ];
+
     /// The state in words.
     pub fn describe(self) -> &'static str {
         match self {
@@ -138,6 +146,17 @@ pub enum TraceState {
     Triggered = 3,
     /// Every sample is recorded.
     Complete = 4,
+}
+
+impl TraceState {
+    /// Every state, in the order of their numbers.
+    pub const ALL: [TraceState; 5] = [
+        TraceState::Unconfigured,
+        TraceState::Configured,
+        TraceState::Armed,
+        TraceState::Triggered,
+        TraceState::Complete,
+    ];
 }
 
 /// Where a trace is (`TRACE_STATUS`).

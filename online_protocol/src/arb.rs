@@ -59,12 +59,7 @@ fn answered_values() -> impl Strategy<Value = Vec<(Place, Vec<u8>)>> {
 }
 
 fn target_state() -> impl Strategy<Value = TargetState> {
-    select(vec![
-        TargetState::NoProgram,
-        TargetState::Stopped,
-        TargetState::Running,
-        TargetState::Faulted,
-    ])
+    select(TargetState::ALL.to_vec())
 }
 
 fn trace_config() -> impl Strategy<Value = TraceConfig> {
@@ -73,12 +68,7 @@ fn trace_config() -> impl Strategy<Value = TraceConfig> {
         1..=u16::MAX,
         1..=u32::MAX,
         0u8..=100,
-        select(vec![
-            TriggerKind::None,
-            TriggerKind::Rising,
-            TriggerKind::Falling,
-            TriggerKind::WhileTrue,
-        ]),
+        select(TriggerKind::ALL.to_vec()),
         place(),
         places(),
     )
@@ -133,10 +123,7 @@ pub fn request() -> impl Strategy<Value = Request> {
             .boxed(),
         token().prop_map(|token| Request::Start { token }).boxed(),
         token().prop_map(|token| Request::Stop { token }).boxed(),
-        (
-            token(),
-            select(vec![ResetKind::Warm, ResetKind::Cold, ResetKind::Origin]),
-        )
+        (token(), select(ResetKind::ALL.to_vec()))
             .prop_map(|(token, kind)| Request::Reset { token, kind })
             .boxed(),
         text().prop_map(|path| Request::Resolve { path }).boxed(),
@@ -382,13 +369,7 @@ pub fn response() -> impl Strategy<Value = (Request, Response)> {
             .boxed(),
         Just(Response::TraceArm).boxed(),
         (
-            select(vec![
-                TraceState::Unconfigured,
-                TraceState::Configured,
-                TraceState::Armed,
-                TraceState::Triggered,
-                TraceState::Complete,
-            ]),
+            select(TraceState::ALL.to_vec()),
             any::<u32>(),
             prop::option::of(0..NO_TRIGGER_SAMPLE),
         )

@@ -95,6 +95,26 @@ impl<'a> Reader<'a> {
         Ok(self.u8(field)? == 1)
     }
 
+    /// A byte that numbers one of `choices`, the first being 0: an enum by its wire number.
+    pub fn choice<T: Copy>(
+        &mut self,
+        field: &'static str,
+        choices: &[T],
+        expected: &'static str,
+    ) -> Result<T, DecodeError> {
+        let at = self.at;
+        let number = self.u8(field)?;
+        choices
+            .get(usize::from(number))
+            .copied()
+            .ok_or(DecodeError::OutOfRange {
+                field,
+                at,
+                value: u64::from(number),
+                expected,
+            })
+    }
+
     /// A 32-byte hash.
     pub fn hash(&mut self, field: &'static str) -> Result<Hash, DecodeError> {
         self.array(field)

@@ -21,6 +21,11 @@ pub enum ResetKind {
     Origin = 2,
 }
 
+impl ResetKind {
+    /// Every kind, in the order of their numbers.
+    pub const ALL: [ResetKind; 3] = [ResetKind::Warm, ResetKind::Cold, ResetKind::Origin];
+}
+
 /// The trace trigger of a `TRACE_CONFIGURE`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 #[repr(u8)]
@@ -33,6 +38,16 @@ pub enum TriggerKind {
     Falling = 2,
     /// The trigger place is TRUE.
     WhileTrue = 3,
+}
+
+impl TriggerKind {
+    /// Every trigger, in the order of their numbers.
+    pub const ALL: [TriggerKind; 4] = [
+        TriggerKind::None,
+        TriggerKind::Rising,
+        TriggerKind::Falling,
+        TriggerKind::WhileTrue,
+    ];
 }
 
 /// A `TRACE_CONFIGURE` request without its token.
@@ -297,7 +312,7 @@ impl Request {
             },
             Service::Reset => Request::Reset {
                 token: r.u32("token")?,
-                kind: reset_kind(&mut r)?,
+                kind: r.choice("reset kind", &ResetKind::ALL, "0 to 2")?,
             },
             Service::Resolve => Request::Resolve {
                 path: r.str8("path")?,
@@ -345,23 +360,6 @@ impl Request {
     }
 }
 
-fn reset_kind(r: &mut Reader<'_>) -> Result<ResetKind, DecodeError> {
-    let at = r.position();
-    Ok(match r.u8("reset kind")? {
-        0 => ResetKind::Warm,
-        1 => ResetKind::Cold,
-        2 => ResetKind::Origin,
-        other => {
-            return Err(DecodeError::OutOfRange {
-                field: "reset kind",
-                at,
-                value: u64::from(other),
-                expected: "0 to 2",
-            });
-        }
-    })
-}
-
 /// The fields of `TRACE_CONFIGURE` after the token. The ranges of `every`, `samples` and
 /// `pretrigger` are checked after the places are read, so that a cut frame is "too short".
 fn trace_config(r: &mut Reader<'_>) -> Result<TraceConfig, DecodeError> {
@@ -372,21 +370,7 @@ fn trace_config(r: &mut Reader<'_>) -> Result<TraceConfig, DecodeError> {
     let samples = r.u32("samples")?;
     let pretrigger_at = r.position();
     let pretrigger = r.u8("pretrigger")?;
-    let trigger_at = r.position();
-    let trigger = match r.u8("trigger")? {
-        0 => TriggerKind::None,
-        1 => TriggerKind::Rising,
-        2 => TriggerKind::Falling,
-        3 => TriggerKind::WhileTrue,
-        other => {
-            return Err(DecodeError::OutOfRange {
-                field: "trigger",
-                at: trigger_at,
-                value: u64::from(other),
-                expected: "0 to 3",
-            });
-        }
-    };
+    let trigger = r.choice("trigger", &TriggerKind::ALL, "0 to 3")?;
     let trigger_place = r.place("trigger place")?;
     let places = r.places()?;
     let out_of_range = |field, at, value: u64, expected| DecodeError::OutOfRange {

@@ -312,3 +312,20 @@ proptest! {
         }
     }
 }
+
+#[test]
+fn every_enum_lists_its_values_in_the_order_of_their_wire_numbers() {
+    // `Reader::choice` decodes these enums by their index in `ALL`.
+    for (index, kind) in ResetKind::ALL.iter().enumerate() {
+        assert_eq!(*kind as usize, index);
+    }
+    for (index, trigger) in TriggerKind::ALL.iter().enumerate() {
+        assert_eq!(*trigger as usize, index);
+    }
+    for (index, state) in crate::TargetState::ALL.iter().enumerate() {
+        assert_eq!(*state as usize, index);
+    }
+    for (index, state) in crate::TraceState::ALL.iter().enumerate() {
+        assert_eq!(*state as usize, index);
+    }
+}

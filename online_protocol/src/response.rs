@@ -348,7 +348,7 @@ fn decode_answer(
         },
         Service::TraceArm => Response::TraceArm,
         Service::TraceStatus => Response::TraceStatus(TraceStatus {
-            state: trace_state(r)?,
+            state: r.choice("trace state", &TraceState::ALL, "0 to 4")?,
             recorded: r.u32("recorded")?,
             trigger_sample: Some(r.u32("trigger sample")?)
                 .filter(|&sample| sample != NO_TRIGGER_SAMPLE),
@@ -423,35 +423,7 @@ fn samples(r: &mut Reader<'_>) -> Result<Vec<TraceSample>, DecodeError> {
 }
 
 fn target_state(r: &mut Reader<'_>) -> Result<TargetState, DecodeError> {
-    let at = r.position();
-    Ok(match r.u8("state")? {
-        0 => TargetState::NoProgram,
-        1 => TargetState::Stopped,
-        2 => TargetState::Running,
-        3 => TargetState::Faulted,
-        other => return Err(out_of_range("state", at, other, "0 to 3")),
-    })
-}
-
-fn trace_state(r: &mut Reader<'_>) -> Result<TraceState, DecodeError> {
-    let at = r.position();
-    Ok(match r.u8("trace state")? {
-        0 => TraceState::Unconfigured,
-        1 => TraceState::Configured,
-        2 => TraceState::Armed,
-        3 => TraceState::Triggered,
-        4 => TraceState::Complete,
-        other => return Err(out_of_range("trace state", at, other, "0 to 4")),
-    })
-}
-
-fn out_of_range(field: &'static str, at: usize, value: u8, expected: &'static str) -> DecodeError {
-    DecodeError::OutOfRange {
-        field,
-        at,
-        value: u64::from(value),
-        expected,
-    }
+    r.choice("state", &TargetState::ALL, "0 to 3")
 }
 
 #[cfg(test)]
