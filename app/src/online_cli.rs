@@ -275,7 +275,7 @@ async fn trace(client: &mut Client, request: &TraceRequest) -> anyhow::Result<()
     loop {
         let status = client.trace_status().await?;
         bar.set_position(u64::from(status.recorded));
-        if status.state == 4 {
+        if status.state == online::TraceState::Complete {
             break;
         }
         tokio::time::sleep(std::time::Duration::from_millis(50)).await;

@@ -1,146 +1,25 @@
 //! An async client of one target: each method is one service of `docs/protocol.md` (or a
-//! sequence of them), with the target's refusals turned into [`OnlineError`]s.
+//! sequence of them), with the target's refusals turned into [`OnlineError`]s. Requests are
+//! encoded and responses decoded only by `online_protocol`.
 
 use std::borrow::Cow;
 use std::net::SocketAddr;
 use std::time::Duration;
 
+use online_protocol::{
+    CHUNK_HEADER_BYTES, DecodeError, FUNCTION_CODE, Fault, Identity, MAX_COUNT, MAX_PAYLOAD_BYTES,
+    PLACE_BYTES, PROTOCOL_VERSION, Place, Refusal, Request, ResetKind, Resolved, Response,
+    Snapshot, Status, TOKEN_BYTES, TRACE_ADD_PLACES, TRACE_CONFIGURE_PLACES, TargetState, TaskInfo,
+    TraceSample, TraceStatus, TriggerKind,
+};
 use sha2::{Digest, Sha256};
 use tokio_modbus::client::{Client as _, Context};
-use tokio_modbus::{Request, Response};
+use tokio_modbus::{Request as ModbusRequest, Response as ModbusResponse};
 
 use crate::error::OnlineError;
-use crate::protocol::{
-    FUNCTION_CODE, MAX_PAYLOAD, PROTOCOL_VERSION, Place, Reader, put_str8, service, status,
-};
 
 /// How long one request may take before the client gives up.
 pub const REQUEST_TIMEOUT: Duration = Duration::from_secs(5);
-
-/// What the target says about itself.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Identity {
-    /// The protocol version it speaks.
-    pub protocol: u16,
-    /// Its runtime version.
-    pub runtime_version: String,
-    /// Its state.
-    pub state: TargetState,
-    /// The identity hash of its program, `None` without one.
-    pub image_hash: Option<[u8; 32]>,
-    /// The project name of its program.
-    pub project: String,
-    /// Whether changing services need a password.
-    pub password_required: bool,
-}
-
-/// The state of a target.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum TargetState {
-    /// No program loaded.
-    NoProgram,
-    /// A program, not running.
-    Stopped,
-    /// Running.
-    Running,
-    /// Running, with at least one task stopped by a fault.
-    Faulted,
-}
-
-impl TargetState {
-    fn from_byte(byte: u8) -> Result<Self, OnlineError> {
-        Ok(match byte {
-            0 => Self::NoProgram,
-            1 => Self::Stopped,
-            2 => Self::Running,
-            3 => Self::Faulted,
-            other => return Err(OnlineError::Protocol(format!("unknown state {other}"))),
-        })
-    }
-
-    /// The state in words.
-    pub fn describe(self) -> &'static str {
-        match self {
-            Self::NoProgram => "no program",
-            Self::Stopped => "stopped",
-            Self::Running => "running",
-            Self::Faulted => "running with a faulted task",
-        }
-    }
-}
-
-/// How the target's memory is reset.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Reset {
-    /// Everything but RETAIN and PERSISTENT.
-    Warm,
-    /// Everything but PERSISTENT.
-    Cold,
-    /// Everything.
-    Origin,
-}
-
-/// A variable resolved on the target.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Resolved {
-    /// Where it is.
-    pub place: Place,
-    /// Its elementary type tag (`docs/program-image.md` §4), 0x20 STRING, 0x21 WSTRING, 0xFF
-    /// anything else.
-    pub type_tag: u8,
-    /// The characters of a string, else 0.
-    pub length: u16,
-}
-
-/// A place's bytes and whether it is forced.
-pub type Value = (Vec<u8>, bool);
-
-/// A consistent snapshot of some places.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Snapshot {
-    /// Cycles run so far when it was taken.
-    pub cycle: u64,
-    /// Each place's bytes, and whether it is forced.
-    pub values: Vec<Value>,
-}
-
-/// Statistics of one task.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct TaskInfo {
-    /// The task's name.
-    pub name: String,
-    /// Cycles run.
-    pub cycles: u64,
-    /// The last cycle's time.
-    pub last_ns: u64,
-    /// The shortest cycle.
-    pub min_ns: u64,
-    /// The longest cycle.
-    pub max_ns: u64,
-    /// The average cycle.
-    pub average_ns: u64,
-    /// The largest start jitter.
-    pub jitter_max_ns: u64,
-    /// Whether a fault stopped it.
-    pub faulted: bool,
-}
-
-/// A fault the target recorded.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Fault {
-    /// The task it stopped.
-    pub task: String,
-    /// What happened.
-    pub kind: String,
-    /// The POU.
-    pub pou: String,
-    /// The source file, if known.
-    pub file: String,
-    /// The line, 0 when unknown.
-    pub line: u32,
-    /// The task's cycle count.
-    pub cycle: u64,
-}
 
 /// How a trace starts.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -172,17 +51,6 @@ pub struct TraceConfig {
     pub places: Vec<Place>,
 }
 
-/// Where a trace is.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct TraceStatus {
-    /// 0 unconfigured, 1 configured, 2 armed, 3 triggered, 4 complete.
-    pub state: u8,
-    /// Samples recorded so far.
-    pub recorded: u32,
-    /// The index of the sample at the trigger, if it came.
-    pub trigger_sample: Option<u32>,
-}
-
 /// One sample of a trace.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Sample {
@@ -193,6 +61,15 @@ pub struct Sample {
     /// Each place's bytes, in the configured order.
     pub values: Vec<Vec<u8>>,
 }
+
+/// Places with the values to write or force at them.
+type PlaceValues = Vec<(Place, Vec<u8>)>;
+
+/// The bytes of a `READ` answer before its values: the cycle and one bitmap byte.
+const READ_FIXED_BYTES: usize = 9;
+/// The bytes of a `WRITE`, `FORCE` or `UNFORCE` request before its places: the token (in the
+/// payload's limit) and the count.
+const VALUES_FIXED_BYTES: usize = 5;
 
 /// A connection to one target.
 pub struct Client {
@@ -232,10 +109,13 @@ impl Client {
         };
         let identity = client.identify().await?;
         if let Some(password) = password {
-            let mut payload = Vec::new();
-            put_str8(&mut payload, password);
-            let answer = client.call(service::LOGIN, &payload).await?;
-            client.token = Reader::new(&answer).u32().map_err(OnlineError::Protocol)?;
+            let login = Request::Login {
+                password: password.to_owned(),
+            };
+            client.token = match client.call(&login).await? {
+                Response::Login { token } => token,
+                other => return Err(unexpected(&other)),
+            };
         }
         Ok((client, identity))
     }
@@ -245,19 +125,19 @@ impl Client {
         self.address
     }
 
-    /// One service: the request's payload in, the answer's payload out.
-    async fn call(&mut self, id: u8, payload: &[u8]) -> Result<Vec<u8>, OnlineError> {
-        let mut pdu = Vec::with_capacity(payload.len() + 1);
-        pdu.push(id);
-        pdu.extend_from_slice(payload);
-        if pdu.len() > MAX_PAYLOAD + 1 {
+    /// One service: the request out, the answer of the same service back.
+    async fn call(&mut self, request: &Request) -> Result<Response, OnlineError> {
+        let frame = request.encode();
+        if frame.len() > MAX_PAYLOAD_BYTES + 1 {
             return Err(OnlineError::Protocol(format!(
                 "a request of {} bytes does not fit a frame",
-                pdu.len()
+                frame.len()
             )));
         }
-        let request = Request::Custom(FUNCTION_CODE, Cow::Owned(pdu));
-        let answer = match tokio::time::timeout(REQUEST_TIMEOUT, self.context.call(request)).await {
+        let call = self
+            .context
+            .call(ModbusRequest::Custom(FUNCTION_CODE, Cow::Owned(frame)));
+        let answer = match tokio::time::timeout(REQUEST_TIMEOUT, call).await {
             Err(_) => {
                 return Err(OnlineError::Timeout(
                     self.address,
@@ -280,57 +160,25 @@ impl Client {
             }
             Ok(Ok(Ok(response))) => response,
         };
-        let Response::Custom(FUNCTION_CODE, bytes) = answer else {
+        let ModbusResponse::Custom(FUNCTION_CODE, bytes) = answer else {
             return Err(OnlineError::Protocol(
                 "an answer of another function code".to_owned(),
             ));
         };
-        let mut reader = Reader::new(&bytes);
-        let echoed = reader.u8().map_err(OnlineError::Protocol)?;
-        let code = reader.u8().map_err(OnlineError::Protocol)?;
-        if echoed != id {
-            return Err(OnlineError::Protocol(format!(
-                "the answer is for service {echoed}, not {id}"
-            )));
-        }
-        if code == status::DONE {
-            return Ok(reader.rest().to_vec());
-        }
-        let message = reader.str8().unwrap_or_default();
-        Err(match code {
-            status::PASSWORD_REQUIRED => OnlineError::PasswordRequired,
-            status::WRONG_PASSWORD => OnlineError::WrongPassword(message),
-            status::IMAGE_REFUSED => OnlineError::ImageRefused(message),
-            status::UNKNOWN_SYMBOL => OnlineError::UnknownSymbol(message),
-            status::VERSION_MISMATCH => OnlineError::Rejected(message),
-            _ => OnlineError::Rejected(message),
-        })
+        Response::decode(request, &bytes)
+            .map_err(protocol_error)?
+            .map_err(refused)
     }
 
     /// `IDENTIFY`.
     pub async fn identify(&mut self) -> Result<Identity, OnlineError> {
-        let answer = self
-            .call(service::IDENTIFY, &PROTOCOL_VERSION.to_le_bytes())
-            .await?;
-        let parse = || -> Result<Identity, String> {
-            let mut reader = Reader::new(&answer);
-            let protocol = reader.u16()?;
-            let runtime_version = reader.str8()?;
-            let state = reader.u8()?;
-            let hash = reader.hash()?;
-            let project = reader.str8()?;
-            let password_required = reader.u8()? != 0;
-            let state = TargetState::from_byte(state).map_err(|e| e.to_string())?;
-            Ok(Identity {
-                protocol,
-                runtime_version,
-                state,
-                image_hash: (hash != [0; 32]).then_some(hash),
-                project,
-                password_required,
-            })
+        let request = Request::Identify {
+            protocol: PROTOCOL_VERSION,
         };
-        let identity = parse().map_err(OnlineError::Protocol)?;
+        let identity = match self.call(&request).await? {
+            Response::Identify(identity) => identity,
+            other => return Err(unexpected(&other)),
+        };
         if identity.protocol != PROTOCOL_VERSION {
             return Err(OnlineError::VersionMismatch {
                 ours: PROTOCOL_VERSION,
@@ -338,12 +186,6 @@ impl Client {
             });
         }
         Ok(identity)
-    }
-
-    fn with_token(&self, payload: &[u8]) -> Vec<u8> {
-        let mut out = self.token.to_le_bytes().to_vec();
-        out.extend_from_slice(payload);
-        out
     }
 
     /// Downloads an image in chunks, calling `progress(sent, total)` after each, then commits
@@ -354,75 +196,81 @@ impl Client {
         start: bool,
         mut progress: impl FnMut(usize, usize),
     ) -> Result<bool, OnlineError> {
-        let hash: [u8; 32] = Sha256::digest(image).into();
-        let mut begin = (image.len() as u32).to_le_bytes().to_vec();
-        begin.extend_from_slice(&hash);
-        let answer = self
-            .call(service::DOWNLOAD_BEGIN, &self.with_token(&begin))
-            .await?;
-        let mut reader = Reader::new(&answer);
-        let transfer = reader.u16().map_err(OnlineError::Protocol)?;
-        let chunk_size =
-            usize::from(reader.u16().map_err(OnlineError::Protocol)?).clamp(1, MAX_PAYLOAD - 10);
+        let begin = Request::DownloadBegin {
+            token: self.token,
+            size: image.len() as u32,
+            hash: Sha256::digest(image).into(),
+        };
+        let (transfer, chunk_size) = match self.call(&begin).await? {
+            Response::DownloadBegin {
+                transfer,
+                chunk_size,
+            } => (transfer, chunk_size),
+            other => return Err(unexpected(&other)),
+        };
+        let chunk_size = usize::from(chunk_size).clamp(1, MAX_PAYLOAD_BYTES - CHUNK_HEADER_BYTES);
         let mut offset = 0usize;
         progress(0, image.len());
         while offset < image.len() {
             let end = (offset + chunk_size).min(image.len());
-            let mut chunk = transfer.to_le_bytes().to_vec();
-            chunk.extend_from_slice(&(offset as u32).to_le_bytes());
-            chunk.extend_from_slice(&image[offset..end]);
-            self.call(service::DOWNLOAD_CHUNK, &self.with_token(&chunk))
-                .await?;
+            let chunk = Request::DownloadChunk {
+                token: self.token,
+                transfer,
+                offset: offset as u32,
+                bytes: image[offset..end].to_vec(),
+            };
+            self.call(&chunk).await?;
             offset = end;
             progress(offset, image.len());
         }
-        let mut commit = transfer.to_le_bytes().to_vec();
-        commit.push(u8::from(start));
-        let answer = self
-            .call(service::DOWNLOAD_COMMIT, &self.with_token(&commit))
-            .await?;
-        Ok(Reader::new(&answer).u8().map_err(OnlineError::Protocol)? != 0)
-    }
-
-    async fn control(&mut self, id: u8, extra: &[u8]) -> Result<TargetState, OnlineError> {
-        let answer = self.call(id, &self.with_token(extra)).await?;
-        TargetState::from_byte(Reader::new(&answer).u8().map_err(OnlineError::Protocol)?)
+        let commit = Request::DownloadCommit {
+            token: self.token,
+            transfer,
+            start,
+        };
+        match self.call(&commit).await? {
+            Response::DownloadCommit { retained } => Ok(retained),
+            other => Err(unexpected(&other)),
+        }
     }
 
     /// `START`.
     pub async fn start(&mut self) -> Result<TargetState, OnlineError> {
-        self.control(service::START, &[]).await
+        match self.call(&Request::Start { token: self.token }).await? {
+            Response::Start { state } => Ok(state),
+            other => Err(unexpected(&other)),
+        }
     }
 
     /// `STOP`.
     pub async fn stop(&mut self) -> Result<TargetState, OnlineError> {
-        self.control(service::STOP, &[]).await
+        match self.call(&Request::Stop { token: self.token }).await? {
+            Response::Stop { state } => Ok(state),
+            other => Err(unexpected(&other)),
+        }
     }
 
     /// `RESET`.
-    pub async fn reset(&mut self, kind: Reset) -> Result<TargetState, OnlineError> {
-        let byte = match kind {
-            Reset::Warm => 0,
-            Reset::Cold => 1,
-            Reset::Origin => 2,
+    pub async fn reset(&mut self, kind: ResetKind) -> Result<TargetState, OnlineError> {
+        let request = Request::Reset {
+            token: self.token,
+            kind,
         };
-        self.control(service::RESET, &[byte]).await
+        match self.call(&request).await? {
+            Response::Reset { state } => Ok(state),
+            other => Err(unexpected(&other)),
+        }
     }
 
     /// `RESOLVE`: where the variable `path` is and what type it has.
     pub async fn resolve(&mut self, path: &str) -> Result<Resolved, OnlineError> {
-        let mut payload = Vec::new();
-        put_str8(&mut payload, path);
-        let answer = self.call(service::RESOLVE, &payload).await?;
-        let mut reader = Reader::new(&answer);
-        let parse = |reader: &mut Reader<'_>| -> Result<Resolved, String> {
-            Ok(Resolved {
-                place: Place::decode(reader)?,
-                type_tag: reader.u8()?,
-                length: reader.u16()?,
-            })
+        let request = Request::Resolve {
+            path: path.to_owned(),
         };
-        parse(&mut reader).map_err(OnlineError::Protocol)
+        match self.call(&request).await? {
+            Response::Resolve(resolved) => Ok(resolved),
+            other => Err(unexpected(&other)),
+        }
     }
 
     /// `READ`: one snapshot of `places`, split over several requests when they do not fit
@@ -432,69 +280,62 @@ impl Client {
             cycle: 0,
             values: Vec::new(),
         };
-        for batch in batches(places, |p| p.value_bytes(), 9, 8) {
-            let mut payload = vec![batch.len() as u8];
-            for place in batch {
-                place.encode(&mut payload);
-            }
-            let answer = self.call(service::READ, &payload).await?;
-            let mut reader = Reader::new(&answer);
-            let parse = |reader: &mut Reader<'_>| -> Result<(u64, Vec<Value>), String> {
-                let cycle = reader.u64()?;
-                let forced = reader.take(batch.len().div_ceil(8))?.to_vec();
-                let mut values = Vec::new();
-                for (i, place) in batch.iter().enumerate() {
-                    let bytes = reader.take(place.value_bytes())?.to_vec();
-                    values.push((bytes, forced[i / 8] >> (i % 8) & 1 != 0));
-                }
-                Ok((cycle, values))
+        for batch in batches(places, Place::value_bytes, READ_FIXED_BYTES, PLACE_BYTES) {
+            let request = Request::Read {
+                places: batch.to_vec(),
             };
-            let (cycle, values) = parse(&mut reader).map_err(OnlineError::Protocol)?;
-            snapshot.cycle = snapshot.cycle.max(cycle);
-            snapshot.values.extend(values);
+            let part = match self.call(&request).await? {
+                Response::Read(part) => part,
+                other => return Err(unexpected(&other)),
+            };
+            snapshot.cycle = snapshot.cycle.max(part.cycle);
+            snapshot.values.extend(part.values);
         }
         Ok(snapshot)
     }
 
+    /// `WRITE` or `FORCE` of `values`, split over as many requests as they need.
     async fn place_values(
         &mut self,
-        id: u8,
+        request: fn(u32, PlaceValues) -> Request,
         values: &[(Place, Vec<u8>)],
     ) -> Result<(), OnlineError> {
-        for batch in batches(values, |(p, v)| 8 + v.len().min(p.value_bytes()), 5, 0) {
-            let mut payload = vec![batch.len() as u8];
-            for (place, bytes) in batch {
-                place.encode(&mut payload);
-                payload.extend_from_slice(bytes);
-            }
-            self.call(id, &self.with_token(&payload)).await?;
+        let size =
+            |(place, value): &(Place, Vec<u8>)| PLACE_BYTES + value.len().min(place.value_bytes());
+        for batch in batches(values, size, VALUES_FIXED_BYTES, 0) {
+            self.call(&request(self.token, batch.to_vec())).await?;
         }
         Ok(())
     }
 
     /// `WRITE`: each value written once, between two cycles.
     pub async fn write(&mut self, values: &[(Place, Vec<u8>)]) -> Result<(), OnlineError> {
-        self.place_values(service::WRITE, values).await
+        let write = |token, values| Request::Write { token, values };
+        self.place_values(write, values).await
     }
 
     /// `FORCE`: each value held before and after every cycle until released.
     pub async fn force(&mut self, values: &[(Place, Vec<u8>)]) -> Result<(), OnlineError> {
-        self.place_values(service::FORCE, values).await
+        let force = |token, values| Request::Force { token, values };
+        self.place_values(force, values).await
     }
 
     /// `UNFORCE`: releases the forces of `places`, or every force when `places` is empty.
     pub async fn unforce(&mut self, places: &[Place]) -> Result<(), OnlineError> {
         if places.is_empty() {
-            self.call(service::UNFORCE, &self.with_token(&[0])).await?;
+            let all = Request::Unforce {
+                token: self.token,
+                places: Vec::new(),
+            };
+            self.call(&all).await?;
             return Ok(());
         }
-        for batch in batches(places, |_| 8, 5, 0) {
-            let mut payload = vec![batch.len() as u8];
-            for place in batch {
-                place.encode(&mut payload);
-            }
-            self.call(service::UNFORCE, &self.with_token(&payload))
-                .await?;
+        for batch in batches(places, |_| PLACE_BYTES, VALUES_FIXED_BYTES, 0) {
+            let request = Request::Unforce {
+                token: self.token,
+                places: batch.to_vec(),
+            };
+            self.call(&request).await?;
         }
         Ok(())
     }
@@ -503,98 +344,80 @@ impl Client {
     pub async fn forces(&mut self) -> Result<Vec<(Place, Vec<u8>)>, OnlineError> {
         let mut all = Vec::new();
         loop {
-            let answer = self
-                .call(service::FORCES, &(all.len() as u16).to_le_bytes())
-                .await?;
-            let mut reader = Reader::new(&answer);
-            let parse =
-                |reader: &mut Reader<'_>, all: &mut Vec<(Place, Vec<u8>)>| -> Result<u16, String> {
-                    let total = reader.u16()?;
-                    let count = reader.u8()?;
-                    for _ in 0..count {
-                        let place = Place::decode(reader)?;
-                        let bytes = reader.take(place.value_bytes())?.to_vec();
-                        all.push((place, bytes));
-                    }
-                    Ok(total)
-                };
+            let request = Request::Forces {
+                from: all.len() as u16,
+            };
+            let (total, forces) = match self.call(&request).await? {
+                Response::Forces { total, forces } => (total, forces),
+                other => return Err(unexpected(&other)),
+            };
             let before = all.len();
-            let total = parse(&mut reader, &mut all).map_err(OnlineError::Protocol)?;
+            all.extend(forces);
             if all.len() >= usize::from(total) || all.len() == before {
                 return Ok(all);
             }
         }
     }
 
-    /// `TRACE_CONFIGURE`: returns the bytes of one sample's values.
+    /// `TRACE_CONFIGURE`, and `TRACE_ADD` for the places that do not fit its frame: returns the
+    /// bytes of one sample's values.
     pub async fn trace_configure(&mut self, config: &TraceConfig) -> Result<u16, OnlineError> {
-        let mut payload = vec![config.task];
-        payload.extend_from_slice(&config.every.max(1).to_le_bytes());
-        payload.extend_from_slice(&config.samples.to_le_bytes());
-        payload.push(config.pretrigger_percent.min(100));
-        let (kind, place) = match config.trigger {
-            Trigger::None => (0, None),
-            Trigger::Rising(place) => (1, Some(place)),
-            Trigger::Falling(place) => (2, Some(place)),
-            Trigger::Level(place) => (3, Some(place)),
+        let (trigger, trigger_place) = match config.trigger {
+            Trigger::None => (TriggerKind::None, None),
+            Trigger::Rising(place) => (TriggerKind::Rising, Some(place)),
+            Trigger::Falling(place) => (TriggerKind::Falling, Some(place)),
+            Trigger::Level(place) => (TriggerKind::WhileTrue, Some(place)),
         };
-        payload.push(kind);
-        place
-            .unwrap_or(Place {
-                region: 0,
-                offset: 0,
-                bit: None,
-                size: 1,
-            })
-            .encode(&mut payload);
-        // As many places as fit this frame; the rest follow in TRACE_ADD frames.
-        let first = config
-            .places
-            .len()
-            .min((MAX_PAYLOAD - 4 - payload.len() - 1) / 8);
-        payload.push(first as u8);
-        for place in &config.places[..first] {
-            place.encode(&mut payload);
-        }
-        let answer = self
-            .call(service::TRACE_CONFIGURE, &self.with_token(&payload))
-            .await?;
-        let mut sample_bytes = Reader::new(&answer).u16().map_err(OnlineError::Protocol)?;
-        for batch in config.places[first..].chunks((MAX_PAYLOAD - 4 - 1) / 8) {
-            let mut payload = vec![batch.len() as u8];
-            for place in batch {
-                place.encode(&mut payload);
-            }
-            let answer = self
-                .call(service::TRACE_ADD, &self.with_token(&payload))
-                .await?;
-            sample_bytes = Reader::new(&answer).u16().map_err(OnlineError::Protocol)?;
+        // Without a trigger the place is sent all the same, and ignored.
+        let trigger_place = trigger_place.unwrap_or(Place {
+            region: 0,
+            offset: 0,
+            bit: None,
+            size: 1,
+        });
+        let first = config.places.len().min(TRACE_CONFIGURE_PLACES);
+        let configure = Request::TraceConfigure {
+            token: self.token,
+            config: online_protocol::TraceConfig {
+                task: config.task,
+                every: config.every.max(1),
+                samples: config.samples,
+                pretrigger: config.pretrigger_percent.min(100),
+                trigger,
+                trigger_place,
+                places: config.places[..first].to_vec(),
+            },
+        };
+        let mut sample_bytes = match self.call(&configure).await? {
+            Response::TraceConfigure { sample_bytes } => sample_bytes,
+            other => return Err(unexpected(&other)),
+        };
+        for batch in config.places[first..].chunks(TRACE_ADD_PLACES) {
+            let add = Request::TraceAdd {
+                token: self.token,
+                places: batch.to_vec(),
+            };
+            sample_bytes = match self.call(&add).await? {
+                Response::TraceAdd { sample_bytes } => sample_bytes,
+                other => return Err(unexpected(&other)),
+            };
         }
         Ok(sample_bytes)
     }
 
     /// `TRACE_ARM`: recording starts.
     pub async fn trace_arm(&mut self) -> Result<(), OnlineError> {
-        self.call(service::TRACE_ARM, &self.with_token(&[]))
+        self.call(&Request::TraceArm { token: self.token })
             .await
             .map(|_| ())
     }
 
     /// `TRACE_STATUS`.
     pub async fn trace_status(&mut self) -> Result<TraceStatus, OnlineError> {
-        let answer = self.call(service::TRACE_STATUS, &[]).await?;
-        let mut reader = Reader::new(&answer);
-        let parse = |reader: &mut Reader<'_>| -> Result<TraceStatus, String> {
-            let state = reader.u8()?;
-            let recorded = reader.u32()?;
-            let trigger = reader.u32()?;
-            Ok(TraceStatus {
-                state,
-                recorded,
-                trigger_sample: (trigger != u32::MAX).then_some(trigger),
-            })
-        };
-        parse(&mut reader).map_err(OnlineError::Protocol)
+        match self.call(&Request::TraceStatus).await? {
+            Response::TraceStatus(status) => Ok(status),
+            other => Err(unexpected(&other)),
+        }
     }
 
     /// `TRACE_UPLOAD`: every recorded sample, oldest first; `places` are the configured ones.
@@ -605,29 +428,17 @@ impl Client {
     ) -> Result<Vec<Sample>, OnlineError> {
         let mut samples = Vec::new();
         loop {
-            let answer = self
-                .call(service::TRACE_UPLOAD, &(samples.len() as u32).to_le_bytes())
-                .await?;
-            let mut reader = Reader::new(&answer);
-            let parse =
-                |reader: &mut Reader<'_>, samples: &mut Vec<Sample>| -> Result<u8, String> {
-                    let count = reader.u8()?;
-                    for _ in 0..count {
-                        let cycle = reader.u64()?;
-                        let time_ns = reader.u64()?;
-                        let values = places
-                            .iter()
-                            .map(|p| reader.take(p.value_bytes()).map(<[u8]>::to_vec))
-                            .collect::<Result<_, _>>()?;
-                        samples.push(Sample {
-                            cycle,
-                            time_ns,
-                            values,
-                        });
-                    }
-                    Ok(count)
-                };
-            let count = parse(&mut reader, &mut samples).map_err(OnlineError::Protocol)?;
+            let request = Request::TraceUpload {
+                from: samples.len() as u32,
+            };
+            let uploaded = match self.call(&request).await? {
+                Response::TraceUpload { samples } => samples,
+                other => return Err(unexpected(&other)),
+            };
+            let count = uploaded.len();
+            for sample in uploaded {
+                samples.push(split_sample(sample, places)?);
+            }
             progress(samples.len());
             if count == 0 {
                 return Ok(samples);
@@ -637,58 +448,81 @@ impl Client {
 
     /// `TASKS`.
     pub async fn tasks(&mut self) -> Result<Vec<TaskInfo>, OnlineError> {
-        let answer = self.call(service::TASKS, &[]).await?;
-        let parse = || -> Result<Vec<TaskInfo>, String> {
-            let mut reader = Reader::new(&answer);
-            let count = reader.u8()?;
-            (0..count)
-                .map(|_| {
-                    Ok(TaskInfo {
-                        name: reader.str8()?,
-                        cycles: reader.u64()?,
-                        last_ns: reader.u64()?,
-                        min_ns: reader.u64()?,
-                        max_ns: reader.u64()?,
-                        average_ns: reader.u64()?,
-                        jitter_max_ns: reader.u64()?,
-                        faulted: reader.u8()? != 0,
-                    })
-                })
-                .collect()
-        };
-        parse().map_err(OnlineError::Protocol)
+        match self.call(&Request::Tasks).await? {
+            Response::Tasks { tasks } => Ok(tasks),
+            other => Err(unexpected(&other)),
+        }
     }
 
     /// `FAULTS`: every fault the target recorded.
     pub async fn faults(&mut self) -> Result<Vec<Fault>, OnlineError> {
         let mut all = Vec::new();
         loop {
-            let answer = self
-                .call(service::FAULTS, &(all.len() as u16).to_le_bytes())
-                .await?;
-            let mut reader = Reader::new(&answer);
-            let parse = |reader: &mut Reader<'_>, all: &mut Vec<Fault>| -> Result<u16, String> {
-                let total = reader.u16()?;
-                let count = reader.u8()?;
-                for _ in 0..count {
-                    all.push(Fault {
-                        task: reader.str8()?,
-                        kind: reader.str8()?,
-                        pou: reader.str8()?,
-                        file: reader.str8()?,
-                        line: reader.u32()?,
-                        cycle: reader.u64()?,
-                    });
-                }
-                Ok(total)
+            let request = Request::Faults {
+                from: all.len() as u16,
+            };
+            let (total, faults) = match self.call(&request).await? {
+                Response::Faults { total, faults } => (total, faults),
+                other => return Err(unexpected(&other)),
             };
             let before = all.len();
-            let total = parse(&mut reader, &mut all).map_err(OnlineError::Protocol)?;
+            all.extend(faults);
             if all.len() >= usize::from(total) || all.len() == before {
                 return Ok(all);
             }
         }
     }
+}
+
+/// A sample's values split by `places`, which must take exactly its bytes.
+fn split_sample(sample: TraceSample, places: &[Place]) -> Result<Sample, OnlineError> {
+    let needed: usize = places.iter().map(Place::value_bytes).sum();
+    if needed != sample.values.len() {
+        return Err(OnlineError::Protocol(format!(
+            "a trace sample of {} bytes, but the configured places take {needed}",
+            sample.values.len()
+        )));
+    }
+    let mut rest = sample.values.as_slice();
+    let values = places
+        .iter()
+        .map(|place| {
+            let (value, after) = rest.split_at(place.value_bytes());
+            rest = after;
+            value.to_vec()
+        })
+        .collect();
+    Ok(Sample {
+        cycle: sample.cycle,
+        time_ns: sample.time_ns,
+        values,
+    })
+}
+
+/// A response that does not follow the protocol.
+fn protocol_error(error: DecodeError) -> OnlineError {
+    OnlineError::Protocol(error.to_string())
+}
+
+/// A refusal as the error that says what to do about it.
+fn refused(refusal: Refusal) -> OnlineError {
+    let Refusal { status, message } = refusal;
+    match status {
+        Status::PasswordRequired => OnlineError::PasswordRequired,
+        Status::WrongPassword => OnlineError::WrongPassword(message),
+        Status::ImageRefused => OnlineError::ImageRefused(message),
+        Status::UnknownSymbol => OnlineError::UnknownSymbol(message),
+        _ => OnlineError::Rejected(message),
+    }
+}
+
+/// An answer of another service than asked: `Response::decode` never gives one, as it
+/// decodes the answer of the request's service, but the client does not rely on it.
+fn unexpected(response: &Response) -> OnlineError {
+    OnlineError::Protocol(format!(
+        "an answer of service {:?} where another was expected",
+        response.service()
+    ))
 }
 
 /// Splits `items` into runs whose encoded size fits one request: `fixed` bytes of header,
@@ -699,7 +533,9 @@ fn batches<T>(items: &[T], size: impl Fn(&T) -> usize, fixed: usize, overhead: u
     let mut used = fixed;
     for (index, item) in items.iter().enumerate() {
         let cost = size(item) + overhead;
-        if index > start && (used + cost > MAX_PAYLOAD - 4 || index - start == 255) {
+        if index > start
+            && (used + cost > MAX_PAYLOAD_BYTES - TOKEN_BYTES || index - start == MAX_COUNT)
+        {
             out.push(&items[start..index]);
             start = index;
             used = fixed;
@@ -719,10 +555,10 @@ mod tests {
     #[test]
     fn batches_fit_a_frame() {
         let items: Vec<usize> = vec![8; 100];
-        let parts = batches(&items, |s| *s, 9, 8);
+        let parts = batches(&items, |s| *s, READ_FIXED_BYTES, PLACE_BYTES);
         assert!(parts.len() > 1);
         for part in &parts {
-            assert!(9 + part.len() * 16 <= MAX_PAYLOAD);
+            assert!(9 + part.len() * 16 <= MAX_PAYLOAD_BYTES);
         }
         assert_eq!(parts.iter().map(|p| p.len()).sum::<usize>(), 100);
         assert!(batches::<usize>(&[], |s| *s, 9, 8).is_empty());

@@ -2,8 +2,8 @@
 //! run control, monitoring, write and force, trace upload, and polling of generic Modbus TCP
 //! devices.
 //!
-//! It knows nothing of any UI. Today it holds the protocol of `docs/protocol.md` as the client
-//! sees it ([`protocol`]), an async [`Client`] with one method per service, and
+//! It knows nothing of any UI. Today it holds an async [`Client`] with one method per service
+//! of `docs/protocol.md` (whose requests and responses `online_protocol` encodes and decodes),
 //! [`OnlineError`], which says for every failure what happened and what to do, and a
 //! [`session`] that runs a client on a background task: commands in, events and value
 //! snapshots out, reconnecting when the target comes back; and [`device`], which polls a
@@ -12,12 +12,11 @@
 mod client;
 pub mod device;
 mod error;
-pub mod protocol;
 pub mod session;
 
-pub use client::{
-    Client, Fault, Identity, REQUEST_TIMEOUT, Reset, Resolved, Sample, Snapshot, TargetState,
-    TaskInfo, TraceConfig, TraceStatus, Trigger,
-};
+pub use client::{Client, REQUEST_TIMEOUT, Sample, TraceConfig, Trigger};
 pub use error::OnlineError;
-pub use protocol::Place;
+pub use online_protocol::{
+    Fault, Identity, Place, ResetKind as Reset, Resolved, Snapshot, TargetState, TaskInfo,
+    TraceState, TraceStatus, Value,
+};

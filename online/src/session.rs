@@ -11,12 +11,11 @@ use std::time::Duration;
 
 use tokio::sync::mpsc;
 
-use crate::client::{
-    Client, Fault, Identity, Reset, Resolved, Sample, Snapshot, TargetState, TaskInfo, TraceConfig,
-    TraceStatus,
-};
+use crate::client::{Client, Sample, TraceConfig};
 use crate::error::OnlineError;
-use crate::protocol::Place;
+use crate::{
+    Fault, Identity, Place, Reset, Resolved, Snapshot, TargetState, TaskInfo, TraceStatus,
+};
 
 /// What a session is asked to do.
 #[derive(Debug)]

@@ -518,10 +518,10 @@ async fn a_fault_is_reported_on_standard_error_and_modbus_goes_on() {
 }
 
 /// Sends an online request (function code 0x64) and returns the status and payload.
-async fn online(client: &mut Context, request: &runtime::online::codec::Request) -> (u8, Vec<u8>) {
+async fn online(client: &mut Context, request: &online_protocol::Request) -> (u8, Vec<u8>) {
     use tokio_modbus::client::Client;
     let call = client.call(tokio_modbus::Request::Custom(
-        runtime::online::codec::FUNCTION_CODE,
+        online_protocol::FUNCTION_CODE,
         std::borrow::Cow::Owned(request.encode()),
     ));
     let response = tokio::time::timeout(PATIENCE, call)
@@ -537,7 +537,7 @@ async fn online(client: &mut Context, request: &runtime::online::codec::Request)
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn with_a_password_the_binary_stops_only_for_a_logged_in_client() {
-    use runtime::online::codec::Request;
+    use online_protocol::Request;
 
     let dir = tempfile::tempdir().unwrap();
     let image = write_image(dir.path(), &image().encode());

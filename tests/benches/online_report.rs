@@ -150,7 +150,9 @@ async fn main() {
     let started = Instant::now();
     loop {
         let status = client.trace_status().await.unwrap();
-        if status.state == 4 || started.elapsed() > Duration::from_secs(60) {
+        if status.state == online::TraceState::Complete
+            || started.elapsed() > Duration::from_secs(60)
+        {
             break;
         }
         tokio::time::sleep(Duration::from_millis(100)).await;

@@ -9,11 +9,13 @@ use std::net::SocketAddr;
 use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
+use online_protocol::{
+    CHUNK_BYTES, FUNCTION_CODE, Place, Reader, Request, TraceConfig, TriggerKind,
+};
 use program_image::ProgramImage;
 use runtime::areas::LocatedAreas;
 use runtime::modbus::{MapSlot, ModbusMap, ServerOptions, serve};
-use runtime::online::codec::{FUNCTION_CODE, Reader, Request, TraceConfig, TriggerKind};
-use runtime::online::{CHUNK_BYTES, NO_BIT, OnlineServices, WirePlace};
+use runtime::online::OnlineServices;
 use runtime::scheduler::{Scheduler, SchedulerOptions};
 use sha2::{Digest, Sha256};
 use tokio_modbus::client::{Client, Context};
@@ -123,7 +125,11 @@ async fn ask(client: &mut Context, request: &Request) -> (u8, Vec<u8>) {
         panic!("not a custom response: {response:?}");
     };
     assert_eq!(function, FUNCTION_CODE);
-    assert_eq!(body[0], request.service(), "the answer names its service");
+    assert_eq!(
+        body[0],
+        request.service().number(),
+        "the answer names its service"
+    );
     (body[1], body[2..].to_vec())
 }
 
@@ -143,10 +149,10 @@ async fn done(client: &mut Context, request: &Request) -> Vec<u8> {
 async fn identify(client: &mut Context) -> (u8, [u8; 32]) {
     let payload = done(client, &Request::Identify { protocol: 1 }).await;
     let mut reader = Reader::new(&payload);
-    assert_eq!(reader.u16().unwrap(), 1);
-    reader.str8().unwrap();
-    let state = reader.u8().unwrap();
-    (state, reader.hash().unwrap())
+    assert_eq!(reader.u16("u16").unwrap(), 1);
+    reader.str8("text").unwrap();
+    let state = reader.u8("u8").unwrap();
+    (state, reader.hash("hash").unwrap())
 }
 
 /// Begins a download of `bytes` announced with `hash` and sends the chunks `chunks` selects.
@@ -164,8 +170,8 @@ async fn send_image(
     };
     let payload = done(client, &begin).await;
     let mut reader = Reader::new(&payload);
-    let transfer = reader.u16().unwrap();
-    let chunk_size = reader.u16().unwrap();
+    let transfer = reader.u16("u16").unwrap();
+    let chunk_size = reader.u16("u16").unwrap();
     assert_eq!(chunk_size, CHUNK_BYTES);
     for (index, chunk) in bytes.chunks(usize::from(chunk_size)).enumerate() {
         if !chunks(index) {
@@ -195,7 +201,7 @@ async fn download(client: &mut Context, token: u32, image: &ProgramImage) {
     done(client, &commit).await;
 }
 
-async fn resolve(client: &mut Context, path: &str) -> WirePlace {
+async fn resolve(client: &mut Context, path: &str) -> Place {
     let payload = done(
         client,
         &Request::Resolve {
@@ -203,11 +209,11 @@ async fn resolve(client: &mut Context, path: &str) -> WirePlace {
         },
     )
     .await;
-    Reader::new(&payload).place().unwrap()
+    Reader::new(&payload).place("place").unwrap()
 }
 
 /// The cycle count, the forced bitmap and the DINT values of `places`.
-async fn read(client: &mut Context, places: &[WirePlace]) -> (u64, u8, Vec<i32>) {
+async fn read(client: &mut Context, places: &[Place]) -> (u64, u8, Vec<i32>) {
     let payload = done(
         client,
         &Request::Read {
@@ -216,22 +222,17 @@ async fn read(client: &mut Context, places: &[WirePlace]) -> (u64, u8, Vec<i32>)
     )
     .await;
     let mut reader = Reader::new(&payload);
-    let cycle = reader.u64().unwrap();
-    let forced = reader.u8().unwrap();
+    let cycle = reader.u64("u64").unwrap();
+    let forced = reader.u8("u8").unwrap();
     let values = places
         .iter()
-        .map(|_| i32::from_le_bytes(reader.take(4).unwrap().try_into().unwrap()))
+        .map(|_| i32::from_le_bytes(reader.take("value", 4).unwrap().try_into().unwrap()))
         .collect();
     (cycle, forced, values)
 }
 
 /// Reads `place` until `done` accepts its value.
-async fn read_until(
-    client: &mut Context,
-    place: WirePlace,
-    what: &str,
-    done: impl Fn(i32) -> bool,
-) {
+async fn read_until(client: &mut Context, place: Place, what: &str, done: impl Fn(i32) -> bool) {
     let deadline = Instant::now() + PATIENCE;
     loop {
         let (_, _, values) = read(client, &[place]).await;
@@ -265,7 +266,7 @@ async fn a_downloaded_program_is_monitored_written_forced_and_traced() {
 
     let counter = resolve(&mut client, "Main.counter").await;
     let assigned = resolve(&mut client, "Main.assigned").await;
-    assert_eq!((counter.region, counter.bit, counter.size), (0, NO_BIT, 4));
+    assert_eq!((counter.region, counter.bit, counter.size), (0, None, 4));
     let (first_cycle, _, first) = read(&mut client, &[counter]).await;
     read_until(&mut client, counter, "the counter to count", |value| {
         value > first[0] + 2
@@ -340,16 +341,20 @@ async fn a_downloaded_program_is_monitored_written_forced_and_traced() {
         tokio::time::sleep(Duration::from_millis(10)).await;
     };
     let mut reader = Reader::new(&status[1..]);
-    assert_eq!(reader.u32().unwrap(), 8);
-    assert_eq!(reader.u32().unwrap(), 2, "two samples before the trigger");
+    assert_eq!(reader.u32("u32").unwrap(), 8);
+    assert_eq!(
+        reader.u32("u32").unwrap(),
+        2,
+        "two samples before the trigger"
+    );
     let upload = done(&mut client, &Request::TraceUpload { from: 0 }).await;
     let mut reader = Reader::new(&upload);
-    assert_eq!(reader.u8().unwrap(), 8);
+    assert_eq!(reader.u8("u8").unwrap(), 8);
     let samples: Vec<(u64, i32)> = (0..8)
         .map(|_| {
-            let cycle = reader.u64().unwrap();
-            reader.u64().unwrap();
-            let value = i32::from_le_bytes(reader.take(4).unwrap().try_into().unwrap());
+            let cycle = reader.u64("u64").unwrap();
+            reader.u64("u64").unwrap();
+            let value = i32::from_le_bytes(reader.take("value", 4).unwrap().try_into().unwrap());
             (cycle, value)
         })
         .collect();
@@ -584,7 +589,7 @@ async fn a_trace_of_more_places_than_one_frame_holds_records_them_all() {
     assert_eq!(client.trace_configure(&config).await.unwrap(), 160);
     client.trace_arm().await.unwrap();
     let started = Instant::now();
-    while client.trace_status().await.unwrap().state != 4 {
+    while client.trace_status().await.unwrap().state != online::TraceState::Complete {
         assert!(started.elapsed() < PATIENCE, "the trace never completed");
         tokio::time::sleep(Duration::from_millis(10)).await;
     }

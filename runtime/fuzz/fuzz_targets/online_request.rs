@@ -8,10 +8,10 @@
 use std::sync::{Arc, Mutex, OnceLock};
 
 use libfuzzer_sys::fuzz_target;
+use online_protocol::{FUNCTION_CODE, MAX_PAYLOAD_BYTES, Request};
 use program_image::ProgramImage;
 use runtime::areas::LocatedAreas;
 use runtime::online::OnlineServices;
-use runtime::online::codec::{FUNCTION_CODE, MAX_PAYLOAD_BYTES, parse_request};
 use runtime::scheduler::{Scheduler, SchedulerOptions};
 
 /// The services, shared by every input: a stopped scheduler with the image in
@@ -43,9 +43,7 @@ fuzz_target!(|data: &[u8]| {
     if request.first() == Some(&START) {
         return;
     }
-    if let Some((&service, payload)) = request.split_first() {
-        let _ = parse_request(service, payload);
-    }
+    let _ = Request::decode(request);
     let handler = services().handler();
     match handler(FUNCTION_CODE, request) {
         Ok(body) => {

@@ -5,11 +5,7 @@ use std::time::{Duration, Instant};
 use program_image::{ImageHash, MAX_IMAGE_BYTES, ProgramImage};
 use sha2::{Digest, Sha256};
 
-use super::codec::{Refusal, Status, bad};
-
-/// The most bytes a `DOWNLOAD_CHUNK` carries: a PDU of 253 bytes less the function code,
-/// service, token, transfer and offset, rounded down.
-pub const CHUNK_BYTES: u16 = 240;
+use online_protocol::{CHUNK_BYTES, Refusal, Status};
 /// How long a transfer lives without a chunk.
 pub const TRANSFER_TIMEOUT: Duration = Duration::from_secs(30);
 
@@ -33,7 +29,7 @@ impl Transfer {
     /// A transfer of `size` bytes that must hash to `hash`.
     pub fn begin(id: u16, size: u32, hash: ImageHash, now: Instant) -> Result<Self, Refusal> {
         if size == 0 || size as usize > MAX_IMAGE_BYTES {
-            return Err(bad(format!(
+            return Err(Refusal::bad(format!(
                 "an image of {size} bytes: 1 to {MAX_IMAGE_BYTES} expected"
             )));
         }
@@ -56,7 +52,7 @@ impl Transfer {
     /// Writes `chunk` at `offset` and returns how many distinct bytes have arrived.
     pub fn chunk(&mut self, offset: u32, chunk: &[u8], now: Instant) -> Result<u32, Refusal> {
         if chunk.len() > usize::from(CHUNK_BYTES) {
-            return Err(bad(format!(
+            return Err(Refusal::bad(format!(
                 "a chunk of {} bytes: at most {CHUNK_BYTES} expected",
                 chunk.len()
             )));
@@ -64,7 +60,7 @@ impl Transfer {
         let start = offset as usize;
         let end = start + chunk.len();
         if end > self.bytes.len() {
-            return Err(bad(format!(
+            return Err(Refusal::bad(format!(
                 "a chunk ending at byte {end} of an image of {} bytes",
                 self.bytes.len()
             )));

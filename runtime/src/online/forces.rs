@@ -2,7 +2,9 @@
 
 use program_image::Region;
 
-use super::place::WirePlace;
+use online_protocol::Place;
+
+use super::place::PlaceAccess;
 use crate::areas::LocatedAreas;
 use crate::engine::Engine;
 
@@ -10,12 +12,12 @@ use crate::engine::Engine;
 /// scheduler's thread, is cleared by a download and an origin reset, and is never saved.
 #[derive(Clone, Debug, Default)]
 pub struct Forces {
-    entries: Vec<(WirePlace, Vec<u8>)>,
+    entries: Vec<(Place, Vec<u8>)>,
 }
 
 impl Forces {
     /// Forces `place` to `value` (checked by the caller), replacing an earlier force of it.
-    pub fn set(&mut self, place: WirePlace, value: Vec<u8>) {
+    pub fn set(&mut self, place: Place, value: Vec<u8>) {
         match self.entries.iter_mut().find(|(forced, _)| *forced == place) {
             Some(entry) => entry.1 = value,
             None => self.entries.push((place, value)),
@@ -23,7 +25,7 @@ impl Forces {
     }
 
     /// Releases the force of `place`, if there is one.
-    pub fn release(&mut self, place: WirePlace) {
+    pub fn release(&mut self, place: Place) {
         self.entries.retain(|(forced, _)| *forced != place);
     }
 
@@ -33,20 +35,20 @@ impl Forces {
     }
 
     /// Whether `place` is forced (as exactly that place).
-    pub fn is_forced(&self, place: WirePlace) -> bool {
+    pub fn is_forced(&self, place: Place) -> bool {
         self.entries.iter().any(|(forced, _)| *forced == place)
     }
 
     /// The forces, in the order they were set.
-    pub fn entries(&self) -> &[(WirePlace, Vec<u8>)] {
+    pub fn entries(&self) -> &[(Place, Vec<u8>)] {
         &self.entries
     }
 
     /// Writes the forced values into the engine's memory.
     pub fn apply_to_engine(&self, engine: &mut Engine) {
         for (place, value) in &self.entries {
-            if let Some(region) = place.region() {
-                place.write(value, engine.region_mut(region));
+            if let Some(region) = place.region_of() {
+                place.write_into(value, engine.region_mut(region));
             }
         }
     }
@@ -54,10 +56,10 @@ impl Forces {
     /// Writes the forced located values into the shared areas.
     pub fn apply_to_areas(&self, areas: &mut LocatedAreas) {
         for (place, value) in &self.entries {
-            match place.region() {
-                Some(Region::Input) => place.write(value, &mut areas.input),
-                Some(Region::Output) => place.write(value, &mut areas.output),
-                Some(Region::Memory) => place.write(value, &mut areas.memory),
+            match place.region_of() {
+                Some(Region::Input) => place.write_into(value, &mut areas.input),
+                Some(Region::Output) => place.write_into(value, &mut areas.output),
+                Some(Region::Memory) => place.write_into(value, &mut areas.memory),
                 Some(Region::Data) | None => {}
             }
         }
@@ -68,8 +70,8 @@ impl Forces {
 mod tests {
     use super::*;
 
-    fn place(offset: u32, bit: u8, size: u16) -> WirePlace {
-        WirePlace {
+    fn place(offset: u32, bit: Option<u8>, size: u16) -> Place {
+        Place {
             region: 2,
             offset,
             bit,
@@ -85,16 +87,16 @@ mod tests {
             output: vec![0; 4],
             memory: vec![0; 4],
         };
-        forces.set(place(0, 3, 1), vec![1]);
-        forces.set(place(2, 0xFF, 2), vec![0x34, 0x12]);
-        forces.set(place(2, 0xFF, 2), vec![0x78, 0x56]);
+        forces.set(place(0, Some(3), 1), vec![1]);
+        forces.set(place(2, None, 2), vec![0x34, 0x12]);
+        forces.set(place(2, None, 2), vec![0x78, 0x56]);
         forces.apply_to_areas(&mut areas);
         assert_eq!(areas.output, [0b1000, 0, 0x78, 0x56]);
         assert_eq!(forces.entries().len(), 2);
-        forces.release(place(0, 3, 1));
-        assert!(!forces.is_forced(place(0, 3, 1)));
-        assert!(forces.is_forced(place(2, 0xFF, 2)));
-        forces.set(place(0, 3, 1), vec![0]);
+        forces.release(place(0, Some(3), 1));
+        assert!(!forces.is_forced(place(0, Some(3), 1)));
+        assert!(forces.is_forced(place(2, None, 2)));
+        forces.set(place(0, Some(3), 1), vec![0]);
         forces.apply_to_areas(&mut areas);
         assert_eq!(areas.output, [0, 0, 0x78, 0x56]);
         forces.clear();

@@ -1,32 +1,29 @@
-//! Places as the online protocol sends them, checked against a region, read and written.
+//! Places of the online protocol checked against a region, read and written.
 
+use online_protocol::{MAX_BIT, NO_BIT, Place, Refusal, Status};
 use program_image::Region;
 
-use super::codec::{Refusal, Status};
 use crate::areas::LocatedAreas;
 use crate::engine::Engine;
 
-/// A place as it travels: `region:u8`, `offset:u32`, `bit:u8` (0xFF for none), `size:u16`.
-///
-/// A bit place (a located BOOL) has a size of 1 and its value is one byte, 0 or 1.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub struct WirePlace {
-    /// 0 data, 1 `%I`, 2 `%Q`, 3 `%M`.
-    pub region: u8,
-    /// The byte offset in the region.
-    pub offset: u32,
-    /// 0 to 7 for a bit, 0xFF for none.
-    pub bit: u8,
-    /// The size of the value in bytes.
-    pub size: u16,
+/// What the runtime does with a protocol [`Place`]: find its region, check it against the
+/// region's size, and read and write its value in the region's bytes.
+pub trait PlaceAccess {
+    /// The region the place names, if it names one.
+    fn region_of(&self) -> Option<Region>;
+
+    /// Checks that the place lies inside a region of `region_bytes` bytes and is well formed.
+    fn check(&self, region_bytes: usize) -> Result<(), Refusal>;
+
+    /// The value at the place in `bytes` (which the place has been checked against).
+    fn read_from(&self, bytes: &[u8]) -> Vec<u8>;
+
+    /// Writes `value` at the place in `bytes`; a bit place takes any non-zero byte as TRUE.
+    fn write_into(&self, value: &[u8], bytes: &mut [u8]);
 }
 
-/// The bit value meaning "no bit".
-pub const NO_BIT: u8 = 0xFF;
-
-impl WirePlace {
-    /// The region this place names, if it names one.
-    pub fn region(self) -> Option<Region> {
+impl PlaceAccess for Place {
+    fn region_of(&self) -> Option<Region> {
         match self.region {
             0 => Some(Region::Data),
             1 => Some(Region::Input),
@@ -36,49 +33,40 @@ impl WirePlace {
         }
     }
 
-    /// Whether the place is a single bit.
-    pub fn is_bit(self) -> bool {
-        self.bit != NO_BIT
-    }
-
-    /// Checks that the place lies inside a region of `region_bytes` bytes and is well formed.
-    pub fn check(self, region_bytes: usize) -> Result<(), Refusal> {
+    fn check(&self, region_bytes: usize) -> Result<(), Refusal> {
         let refuse = |why: &str| {
-            Err(Refusal {
-                status: Status::BadPlace,
-                message: format!(
+            Err(Refusal::new(
+                Status::BadPlace,
+                format!(
                     "place (region {}, offset {}, bit {}, size {}): {why}",
-                    self.region, self.offset, self.bit, self.size
+                    self.region,
+                    self.offset,
+                    self.bit.unwrap_or(NO_BIT),
+                    self.size
                 ),
-            })
+            ))
         };
-        if self.region().is_none() {
+        if self.region_of().is_none() {
             return refuse("the region is not 0 to 3");
         }
         if self.size == 0 {
             return refuse("the size is 0");
         }
-        if self.is_bit() && (self.bit > 7 || self.size != 1) {
+        if self.bit.is_some_and(|bit| bit > MAX_BIT) || (self.is_bit() && self.size != 1) {
             return refuse("a bit place needs a bit of 0 to 7 and a size of 1");
         }
-        let end = self.offset as usize
-            + if self.is_bit() {
-                1
-            } else {
-                usize::from(self.size)
-            };
+        let end = self.offset as usize + self.value_bytes();
         if end > region_bytes {
             return refuse(&format!("the region has only {region_bytes} bytes"));
         }
         Ok(())
     }
 
-    /// The value at the place in `bytes` (which the place has been checked against).
-    pub fn read(self, bytes: &[u8]) -> Vec<u8> {
+    fn read_from(&self, bytes: &[u8]) -> Vec<u8> {
         let start = self.offset as usize;
-        if self.is_bit() {
+        if let Some(bit) = self.bit {
             let byte = bytes.get(start).copied().unwrap_or(0);
-            return vec![byte >> (self.bit & 7) & 1];
+            return vec![byte >> (bit & 7) & 1];
         }
         bytes
             .get(start..start + usize::from(self.size))
@@ -86,12 +74,11 @@ impl WirePlace {
             .unwrap_or_default()
     }
 
-    /// Writes `value` at the place in `bytes`; a bit place takes any non-zero byte as TRUE.
-    pub fn write(self, value: &[u8], bytes: &mut [u8]) {
+    fn write_into(&self, value: &[u8], bytes: &mut [u8]) {
         let start = self.offset as usize;
-        if self.is_bit() {
+        if let Some(bit) = self.bit {
             if let Some(byte) = bytes.get_mut(start) {
-                let mask = 1 << (self.bit & 7);
+                let mask = 1 << (bit & 7);
                 if value.first().is_some_and(|&set| set != 0) {
                     *byte |= mask;
                 } else {
@@ -118,8 +105,8 @@ pub struct Memory<'a> {
 
 impl Memory<'_> {
     /// Checks `place` against its region's size.
-    pub fn check(&self, place: WirePlace) -> Result<(), Refusal> {
-        let length = match place.region() {
+    pub fn check(&self, place: Place) -> Result<(), Refusal> {
+        let length = match place.region_of() {
             Some(Region::Data) => self.engine.region(Region::Data).len(),
             Some(Region::Input) => self.areas.input.len(),
             Some(Region::Output) => self.areas.output.len(),
@@ -130,27 +117,27 @@ impl Memory<'_> {
     }
 
     /// The value at a checked place.
-    pub fn read(&self, place: WirePlace) -> Vec<u8> {
-        match place.region() {
-            Some(Region::Data) => place.read(self.engine.region(Region::Data)),
-            Some(Region::Input) => place.read(&self.areas.input),
-            Some(Region::Output) => place.read(&self.areas.output),
-            Some(Region::Memory) => place.read(&self.areas.memory),
+    pub fn read(&self, place: Place) -> Vec<u8> {
+        match place.region_of() {
+            Some(Region::Data) => place.read_from(self.engine.region(Region::Data)),
+            Some(Region::Input) => place.read_from(&self.areas.input),
+            Some(Region::Output) => place.read_from(&self.areas.output),
+            Some(Region::Memory) => place.read_from(&self.areas.memory),
             None => Vec::new(),
         }
     }
 
     /// Writes a value at a checked place, in the located areas and the engine alike.
-    pub fn write(&mut self, place: WirePlace, value: &[u8]) {
-        let Some(region) = place.region() else {
+    pub fn write(&mut self, place: Place, value: &[u8]) {
+        let Some(region) = place.region_of() else {
             return;
         };
-        place.write(value, self.engine.region_mut(region));
+        place.write_into(value, self.engine.region_mut(region));
         match region {
             Region::Data => {}
-            Region::Input => place.write(value, &mut self.areas.input),
-            Region::Output => place.write(value, &mut self.areas.output),
-            Region::Memory => place.write(value, &mut self.areas.memory),
+            Region::Input => place.write_into(value, &mut self.areas.input),
+            Region::Output => place.write_into(value, &mut self.areas.output),
+            Region::Memory => place.write_into(value, &mut self.areas.memory),
         }
     }
 }

@@ -5,15 +5,17 @@ use std::hash::{BuildHasher, Hasher};
 use std::sync::{Arc, Mutex, MutexGuard, PoisonError};
 use std::time::{Duration, Instant};
 
+use online_protocol::{
+    CHUNK_BYTES, DecodeError, FUNCTION_CODE, Fault, Identity, MAX_COUNT, MAX_FAULT_TEXT_BYTES,
+    MAX_PAYLOAD_BYTES, MAX_SAMPLE_VALUE_BYTES, MAX_TEXT_BYTES, PLACE_BYTES, PROTOCOL_VERSION,
+    Place, Refusal, Request, Resolved, Response, SAMPLE_HEADER_BYTES, Snapshot, Status, TYPE_OTHER,
+    TYPE_STRING, TYPE_WSTRING, TargetState, TaskInfo, TraceConfig, TraceSample, TraceStatus,
+    TriggerKind, cut,
+};
 use program_image::{Region, TypeDef};
 use sha2::{Digest, Sha256};
 
-use super::codec::{
-    self, FUNCTION_CODE, MAX_PAYLOAD_BYTES, PROTOCOL_VERSION, Refusal, Request, Status,
-    TraceConfig, TriggerKind, put_place, put_str8,
-};
-use super::download::{CHUNK_BYTES, Transfer};
-use super::place::{NO_BIT, WirePlace};
+use super::download::Transfer;
 use super::trace::{MAX_TRACE_BYTES, Trace};
 use crate::engine::ResetKind;
 use crate::modbus::{
@@ -103,24 +105,23 @@ impl OnlineServices {
     /// A request without a service byte gets exception 3. For [`WRONG_PASSWORD_DELAY`] after a
     /// wrong password, logins are refused without being checked.
     pub fn respond(&self, request: &[u8]) -> Result<Vec<u8>, ExceptionCode> {
-        let Some((&service, payload)) = request.split_first() else {
+        let Some(&service) = request.first() else {
             return Err(ExceptionCode::IllegalDataValue);
         };
-        let answer = codec::parse_request(service, payload).and_then(|request| {
-            if let Some(token) = request.token() {
-                self.authorize(token)?;
-            }
-            self.serve(request)
-        });
+        let answer = Request::decode(request)
+            .map_err(decode_refusal)
+            .and_then(|request| {
+                if let Some(token) = request.token() {
+                    self.authorize(token)?;
+                }
+                self.serve(request)
+            });
         let mut body = match answer {
-            Ok(payload) => codec::done(service, &payload),
-            Err(refusal) => codec::refused(service, &refusal),
+            Ok(response) => response.encode(),
+            Err(refusal) => refusal.encode(service),
         };
         if body.len() > MAX_PAYLOAD_BYTES + 2 {
-            body = codec::refused(
-                service,
-                &codec::bad("the answer does not fit one response".to_owned()),
-            );
+            body = Refusal::bad("the answer does not fit one response").encode(service);
         }
         Ok(body)
     }
@@ -145,7 +146,7 @@ impl OnlineServices {
         }
     }
 
-    fn serve(&self, request: Request) -> Result<Vec<u8>, Refusal> {
+    fn serve(&self, request: Request) -> Result<Response, Refusal> {
         match request {
             Request::Identify { protocol } => self.identify(protocol),
             Request::Login { password } => self.login(&password),
@@ -155,9 +156,10 @@ impl OnlineServices {
                 let mut transfer = Transfer::begin(*last, size, hash, Instant::now())?;
                 transfer.owner = current_connection();
                 *lock(&self.transfer) = Some(transfer);
-                let mut out = last.to_le_bytes().to_vec();
-                out.extend_from_slice(&CHUNK_BYTES.to_le_bytes());
-                Ok(out)
+                Ok(Response::DownloadBegin {
+                    transfer: *last,
+                    chunk_size: CHUNK_BYTES,
+                })
             }
             Request::DownloadChunk {
                 transfer,
@@ -168,7 +170,7 @@ impl OnlineServices {
                 let mut current = lock(&self.transfer);
                 let active = current_transfer(&mut current, transfer)?;
                 let received = active.chunk(offset, &bytes, Instant::now())?;
-                Ok(received.to_le_bytes().to_vec())
+                Ok(Response::DownloadChunk { received })
             }
             Request::DownloadCommit {
                 transfer, start, ..
@@ -178,27 +180,30 @@ impl OnlineServices {
                 if current.as_ref().is_some_and(|active| active.id == transfer) {
                     *current = None;
                 }
-                Ok(Vec::new())
+                Ok(Response::DownloadAbort)
             }
             Request::Start { .. } => {
                 self.scheduler.start().map_err(scheduler_refusal)?;
-                Ok(vec![self.state()])
+                Ok(Response::Start {
+                    state: self.state(),
+                })
             }
             Request::Stop { .. } => {
                 self.scheduler.stop().map_err(scheduler_refusal)?;
-                Ok(vec![self.state()])
+                Ok(Response::Stop {
+                    state: self.state(),
+                })
             }
             Request::Reset { kind, .. } => {
                 let kind = match kind {
-                    0 => ResetKind::Warm,
-                    1 => ResetKind::Cold,
-                    2 => ResetKind::Origin,
-                    other => {
-                        return Err(codec::bad(format!("reset kind {other}: 0 to 2 expected")));
-                    }
+                    online_protocol::ResetKind::Warm => ResetKind::Warm,
+                    online_protocol::ResetKind::Cold => ResetKind::Cold,
+                    online_protocol::ResetKind::Origin => ResetKind::Origin,
                 };
                 self.scheduler.reset(kind).map_err(scheduler_refusal)?;
-                Ok(vec![self.state()])
+                Ok(Response::Reset {
+                    state: self.state(),
+                })
             }
             Request::Resolve { path } => self.between(move |between| resolve(between, &path)),
             Request::Read { places } => self.between(move |between| read(between, &places)),
@@ -210,7 +215,7 @@ impl OnlineServices {
                 for (place, value) in &values {
                     memory.write(*place, value);
                 }
-                Ok(Vec::new())
+                Ok(Response::Write)
             }),
             Request::Force { values, .. } => self.between(move |between| {
                 let memory = between.memory.as_mut().ok_or_else(no_program)?;
@@ -221,7 +226,7 @@ impl OnlineServices {
                     memory.write(place, &value);
                     between.forces.set(place, value);
                 }
-                Ok(Vec::new())
+                Ok(Response::Force)
             }),
             Request::Unforce { places, .. } => self.between(move |between| {
                 if places.is_empty() {
@@ -230,30 +235,30 @@ impl OnlineServices {
                 for place in places {
                     between.forces.release(place);
                 }
-                Ok(Vec::new())
+                Ok(Response::Unforce)
             }),
             Request::Forces { from } => self.between(move |between| {
                 let entries = between.forces.entries();
-                let mut out = u16::try_from(entries.len())
-                    .unwrap_or(u16::MAX)
-                    .to_le_bytes()
-                    .to_vec();
-                out.push(0);
-                let mut count = 0u8;
+                let total = u16::try_from(entries.len()).unwrap_or(u16::MAX);
+                // The total and the count come first; the forces that do not fit wait for the
+                // next request.
+                let mut used = 3;
+                let mut forces = Vec::new();
                 for (place, value) in entries.iter().skip(usize::from(from)) {
-                    if out.len() + 8 + value.len() > MAX_PAYLOAD_BYTES || count == u8::MAX {
+                    if used + PLACE_BYTES + value.len() > MAX_PAYLOAD_BYTES
+                        || forces.len() == MAX_COUNT
+                    {
                         break;
                     }
-                    put_place(&mut out, *place);
-                    out.extend_from_slice(value);
-                    count += 1;
+                    used += PLACE_BYTES + value.len();
+                    forces.push((*place, value.clone()));
                 }
-                out[2] = count;
-                Ok(out)
+                Ok(Response::Forces { total, forces })
             }),
-            Request::TraceConfigure { config, .. } => {
-                self.between(move |between| configure_trace(between, config))
-            }
+            Request::TraceConfigure { config, .. } => self.between(move |between| {
+                let sample_bytes = configure_trace(between, config)?;
+                Ok(Response::TraceConfigure { sample_bytes })
+            }),
             Request::TraceAdd { places, .. } => self.between(move |between| {
                 // More places than one TRACE_CONFIGURE frame holds are added before arming.
                 let mut config = between
@@ -262,38 +267,44 @@ impl OnlineServices {
                     .cloned()
                     .ok_or_else(|| not_now("configure the trace before adding places"))?;
                 config.places.extend(places);
-                configure_trace(between, config)
+                let sample_bytes = configure_trace(between, config)?;
+                Ok(Response::TraceAdd { sample_bytes })
             }),
             Request::TraceArm { .. } => self.between(|between| {
                 if between.trace.arm() {
-                    Ok(Vec::new())
+                    Ok(Response::TraceArm)
                 } else {
                     Err(not_now("the trace is not configured"))
                 }
             }),
             Request::TraceStatus => self.between(|between| {
-                let (state, recorded, trigger) = between.trace.status();
-                let mut out = vec![state as u8];
-                out.extend_from_slice(&recorded.to_le_bytes());
-                out.extend_from_slice(&trigger.unwrap_or(u32::MAX).to_le_bytes());
-                Ok(out)
+                let (state, recorded, trigger_sample) = between.trace.status();
+                Ok(Response::TraceStatus(TraceStatus {
+                    state,
+                    recorded,
+                    trigger_sample,
+                }))
             }),
-            Request::TraceUpload { from } => {
-                self.between(move |between| Ok(upload(between.trace, from)))
-            }
-            Request::Tasks => Ok(self.tasks()),
+            Request::TraceUpload { from } => self.between(move |between| {
+                Ok(Response::TraceUpload {
+                    samples: upload(between.trace, from),
+                })
+            }),
+            Request::Tasks => Ok(Response::Tasks {
+                tasks: self.tasks(),
+            }),
             Request::Faults { from } => Ok(self.faults(from)),
         }
     }
 
-    fn identify(&self, protocol: u16) -> Result<Vec<u8>, Refusal> {
+    fn identify(&self, protocol: u16) -> Result<Response, Refusal> {
         if protocol != PROTOCOL_VERSION {
-            return Err(Refusal {
-                status: Status::VersionMismatch,
-                message: format!(
+            return Err(Refusal::new(
+                Status::VersionMismatch,
+                format!(
                     "the client speaks protocol version {protocol}, this runtime version {PROTOCOL_VERSION}"
                 ),
-            });
+            ));
         }
         let project = self.between(|between| {
             Ok(between
@@ -303,18 +314,21 @@ impl OnlineServices {
                 .unwrap_or_default())
         })?;
         let status = self.scheduler.status();
-        let mut out = PROTOCOL_VERSION.to_le_bytes().to_vec();
-        put_str8(&mut out, env!("CARGO_PKG_VERSION"));
-        out.push(self.state());
-        out.extend_from_slice(&status.image.unwrap_or([0; 32]));
-        put_str8(&mut out, &project);
-        out.push(u8::from(self.password.is_some()));
-        Ok(out)
+        Ok(Response::Identify(Identity {
+            protocol: PROTOCOL_VERSION,
+            runtime_version: cut(env!("CARGO_PKG_VERSION"), MAX_TEXT_BYTES).to_owned(),
+            state: self.state(),
+            image_hash: status.image,
+            project: cut(&project, MAX_TEXT_BYTES).to_owned(),
+            password_required: self.password.is_some(),
+        }))
     }
 
-    fn login(&self, password: &str) -> Result<Vec<u8>, Refusal> {
+    fn login(&self, password: &str) -> Result<Response, Refusal> {
         let Some(expected) = &self.password else {
-            return Ok(random_token().to_le_bytes().to_vec());
+            return Ok(Response::Login {
+                token: random_token(),
+            });
         };
         // Comparing digests takes the same time whatever the password and its length.
         let given: [u8; 32] = Sha256::digest(password.as_bytes()).into();
@@ -348,10 +362,10 @@ impl OnlineServices {
             tokens.pop_front();
         }
         tokens.push_back(token);
-        Ok(token.to_le_bytes().to_vec())
+        Ok(Response::Login { token })
     }
 
-    fn commit(&self, transfer: u16, start: bool) -> Result<Vec<u8>, Refusal> {
+    fn commit(&self, transfer: u16, start: bool) -> Result<Response, Refusal> {
         let active = {
             let mut current = lock(&self.transfer);
             current_transfer(&mut current, transfer)?;
@@ -379,73 +393,68 @@ impl OnlineServices {
         }
         let retained =
             report.carried > 0 || matches!(report.retain, Some(RetainRestore::Restored { .. }));
-        Ok(vec![u8::from(retained)])
+        Ok(Response::DownloadCommit { retained })
     }
 
-    fn tasks(&self) -> Vec<u8> {
+    /// The tasks that fit one response, after their count.
+    fn tasks(&self) -> Vec<TaskInfo> {
         let status = self.scheduler.status();
-        let mut out = vec![0];
-        for task in status.tasks.iter().take(usize::from(u8::MAX)) {
-            let mut entry = Vec::new();
-            put_str8(&mut entry, &task.name);
-            for number in [
-                task.cycles,
-                task.last_cycle_ns,
-                task.min_cycle_ns,
-                task.max_cycle_ns,
-                task.average_cycle_ns(),
-                task.max_jitter_ns,
-            ] {
-                entry.extend_from_slice(&number.to_le_bytes());
-            }
-            entry.push(u8::from(task.faulted));
+        let mut used = 1;
+        let mut tasks = Vec::new();
+        for task in status.tasks.iter().take(MAX_COUNT) {
+            let info = TaskInfo {
+                name: cut(&task.name, MAX_TEXT_BYTES).to_owned(),
+                cycles: task.cycles,
+                last_ns: task.last_cycle_ns,
+                min_ns: task.min_cycle_ns,
+                max_ns: task.max_cycle_ns,
+                average_ns: task.average_cycle_ns(),
+                jitter_max_ns: task.max_jitter_ns,
+                faulted: task.faulted,
+            };
             // The tasks that do not fit one response are left out.
-            if out.len() + entry.len() > MAX_PAYLOAD_BYTES {
+            if used + info.wire_bytes() > MAX_PAYLOAD_BYTES {
                 break;
             }
-            out.extend_from_slice(&entry);
-            out[0] += 1;
+            used += info.wire_bytes();
+            tasks.push(info);
         }
-        out
+        tasks
     }
 
-    fn faults(&self, from: u16) -> Vec<u8> {
+    fn faults(&self, from: u16) -> Response {
         let status = self.scheduler.status();
-        let mut out = u16::try_from(status.faults.len())
-            .unwrap_or(u16::MAX)
-            .to_le_bytes()
-            .to_vec();
-        out.push(0);
+        let total = u16::try_from(status.faults.len()).unwrap_or(u16::MAX);
+        let mut used = 3;
+        let mut faults = Vec::new();
         for fault in status.faults.iter().skip(usize::from(from)) {
-            let mut entry = Vec::new();
             // Texts are cut so that one fault always fits a response.
-            for text in [
-                fault.task.as_str(),
-                &fault.kind.to_string(),
-                &fault.pou,
-                fault.file.as_deref().unwrap_or(""),
-            ] {
-                put_str8(&mut entry, cut(text, 48));
-            }
-            entry.extend_from_slice(&fault.line.unwrap_or(0).to_le_bytes());
-            entry.extend_from_slice(&fault.cycle.to_le_bytes());
-            if out.len() + entry.len() > MAX_PAYLOAD_BYTES || out[2] == u8::MAX {
+            let text = |text: &str| cut(text, MAX_FAULT_TEXT_BYTES).to_owned();
+            let entry = Fault {
+                task: text(&fault.task),
+                kind: text(&fault.kind.to_string()),
+                pou: text(&fault.pou),
+                file: text(fault.file.as_deref().unwrap_or("")),
+                line: fault.line.unwrap_or(0),
+                cycle: fault.cycle,
+            };
+            if used + entry.wire_bytes() > MAX_PAYLOAD_BYTES || faults.len() == MAX_COUNT {
                 break;
             }
-            out.extend_from_slice(&entry);
-            out[2] += 1;
+            used += entry.wire_bytes();
+            faults.push(entry);
         }
-        out
+        Response::Faults { total, faults }
     }
 
     /// The state as `IDENTIFY` and run control send it.
-    fn state(&self) -> u8 {
+    fn state(&self) -> TargetState {
         let status = self.scheduler.status();
         match (status.image, status.state) {
-            (None, _) => 0,
-            (Some(_), SchedulerState::Stopped) => 1,
-            (Some(_), SchedulerState::Running) => 2,
-            (Some(_), SchedulerState::Faulted) => 3,
+            (None, _) => TargetState::NoProgram,
+            (Some(_), SchedulerState::Stopped) => TargetState::Stopped,
+            (Some(_), SchedulerState::Running) => TargetState::Running,
+            (Some(_), SchedulerState::Faulted) => TargetState::Faulted,
         }
     }
 
@@ -474,19 +483,17 @@ fn current_transfer(current: &mut Option<Transfer>, id: u16) -> Result<&mut Tran
     }
 }
 
-fn resolve(between: &mut Between<'_>, path: &str) -> Result<Vec<u8>, Refusal> {
+fn resolve(between: &mut Between<'_>, path: &str) -> Result<Response, Refusal> {
     let memory = between.memory.as_ref().ok_or_else(no_program)?;
     let image = memory.engine.image();
-    let place = value::resolve(image, path).map_err(|error| Refusal {
-        status: Status::UnknownSymbol,
-        message: error.to_string(),
-    })?;
+    let place = value::resolve(image, path)
+        .map_err(|error| Refusal::new(Status::UnknownSymbol, error.to_string()))?;
     let ty = image.types.get(place.ty as usize);
     let (tag, length) = match ty {
         Some(TypeDef::Elementary(elementary)) => (*elementary as u8, 0),
-        Some(TypeDef::String { length }) => (0x20, *length),
-        Some(TypeDef::WString { length }) => (0x21, *length),
-        _ => (0xFF, 0),
+        Some(TypeDef::String { length }) => (TYPE_STRING, *length),
+        Some(TypeDef::WString { length }) => (TYPE_WSTRING, *length),
+        _ => (TYPE_OTHER, 0),
     };
     let size = match (place.bit, ty) {
         (Some(_), _) => 1,
@@ -499,48 +506,44 @@ fn resolve(between: &mut Between<'_>, path: &str) -> Result<Vec<u8>, Refusal> {
         Region::Output => 2,
         Region::Memory => 3,
     };
-    let mut out = Vec::new();
-    put_place(
-        &mut out,
-        WirePlace {
+    Ok(Response::Resolve(Resolved {
+        place: Place {
             region,
             offset: u32::try_from(place.offset).unwrap_or(u32::MAX),
-            bit: place.bit.unwrap_or(NO_BIT),
+            bit: place.bit,
             // A value larger than a u16 cannot be read in one piece anyway.
             size: u16::try_from(size).unwrap_or(u16::MAX),
         },
-    );
-    out.push(tag);
-    out.extend_from_slice(&u16::try_from(length).unwrap_or(u16::MAX).to_le_bytes());
-    Ok(out)
+        type_tag: tag,
+        length: u16::try_from(length).unwrap_or(u16::MAX),
+    }))
 }
 
-fn read(between: &mut Between<'_>, places: &[WirePlace]) -> Result<Vec<u8>, Refusal> {
+fn read(between: &mut Between<'_>, places: &[Place]) -> Result<Response, Refusal> {
     let memory = between.memory.as_ref().ok_or_else(no_program)?;
     for place in places {
         memory.check(*place)?;
     }
-    let mut out = between.cycles.to_le_bytes().to_vec();
-    let mut bitmap = vec![0u8; places.len().div_ceil(8)];
-    for (index, place) in places.iter().enumerate() {
-        if between.forces.is_forced(*place) {
-            bitmap[index / 8] |= 1 << (index % 8);
-        }
-    }
-    out.extend_from_slice(&bitmap);
-    for place in places {
-        out.extend_from_slice(&memory.read(*place));
-    }
-    if out.len() > MAX_PAYLOAD_BYTES {
-        return Err(codec::bad(format!(
-            "the values need {} bytes, more than one response holds",
-            out.len()
+    let values: Vec<(Vec<u8>, bool)> = places
+        .iter()
+        .map(|place| (memory.read(*place), between.forces.is_forced(*place)))
+        .collect();
+    // The cycle, the forced bitmap and the values.
+    let bytes =
+        8 + places.len().div_ceil(8) + values.iter().map(|(value, _)| value.len()).sum::<usize>();
+    if bytes > MAX_PAYLOAD_BYTES {
+        return Err(Refusal::bad(format!(
+            "the values need {bytes} bytes, more than one response holds"
         )));
     }
-    Ok(out)
+    Ok(Response::Read(Snapshot {
+        cycle: between.cycles,
+        values,
+    }))
 }
 
-fn configure_trace(between: &mut Between<'_>, config: TraceConfig) -> Result<Vec<u8>, Refusal> {
+/// Configures the trace and returns the bytes of one sample's values.
+fn configure_trace(between: &mut Between<'_>, config: TraceConfig) -> Result<u16, Refusal> {
     let memory = between.memory.as_ref().ok_or_else(no_program)?;
     if usize::from(config.task) >= memory.engine.image().tasks.len() {
         return Err(not_now(&format!("task {} does not exist", config.task)));
@@ -552,33 +555,38 @@ fn configure_trace(between: &mut Between<'_>, config: TraceConfig) -> Result<Vec
         memory.check(config.trigger_place)?;
     }
     let sample_bytes = Trace::sample_bytes(&config);
-    if 1 + 16 + sample_bytes > MAX_PAYLOAD_BYTES {
-        return Err(codec::bad(format!(
+    if sample_bytes > MAX_SAMPLE_VALUE_BYTES {
+        return Err(Refusal::bad(format!(
             "a sample of {sample_bytes} bytes does not fit one upload"
         )));
     }
-    if u64::from(config.samples) * (16 + sample_bytes as u64) > MAX_TRACE_BYTES {
-        return Err(codec::bad(format!(
+    if u64::from(config.samples) * (SAMPLE_HEADER_BYTES + sample_bytes) as u64 > MAX_TRACE_BYTES {
+        return Err(Refusal::bad(format!(
             "{} samples need more than the {MAX_TRACE_BYTES} bytes a trace may hold",
             config.samples
         )));
     }
     between.trace.configure(config);
-    Ok((sample_bytes as u16).to_le_bytes().to_vec())
+    Ok(sample_bytes as u16)
 }
 
-fn upload(trace: &Trace, from: u32) -> Vec<u8> {
-    let mut out = vec![0];
+/// The samples from `from` on that fit one response, after their count.
+fn upload(trace: &Trace, from: u32) -> Vec<TraceSample> {
+    let mut used = 1;
+    let mut samples = Vec::new();
     for sample in trace.samples().skip(from as usize) {
-        if out.len() + 16 + sample.values.len() > MAX_PAYLOAD_BYTES || out[0] == u8::MAX {
+        let sample = TraceSample {
+            cycle: sample.cycle,
+            time_ns: sample.time_ns,
+            values: sample.values.clone(),
+        };
+        if used + sample.wire_bytes() > MAX_PAYLOAD_BYTES || samples.len() == MAX_COUNT {
             break;
         }
-        out.extend_from_slice(&sample.cycle.to_le_bytes());
-        out.extend_from_slice(&sample.time_ns.to_le_bytes());
-        out.extend_from_slice(&sample.values);
-        out[0] += 1;
+        used += sample.wire_bytes();
+        samples.push(sample);
     }
-    out
+    samples
 }
 
 fn scheduler_refusal(error: SchedulerError) -> Refusal {
@@ -588,10 +596,12 @@ fn scheduler_refusal(error: SchedulerError) -> Refusal {
         // The command was done; only saving the retained values failed.
         SchedulerError::Retain(_) => Status::NotNow,
     };
-    Refusal {
-        status,
-        message: error.to_string(),
-    }
+    Refusal::new(status, error.to_string())
+}
+
+/// The refusal of a request that does not decode, with the status the protocol gives it.
+fn decode_refusal(error: DecodeError) -> Refusal {
+    Refusal::new(error.status(), error.to_string())
 }
 
 fn no_program() -> Refusal {
@@ -599,19 +609,7 @@ fn no_program() -> Refusal {
 }
 
 fn not_now(message: &str) -> Refusal {
-    Refusal {
-        status: Status::NotNow,
-        message: message.to_owned(),
-    }
-}
-
-/// `text` cut at a character boundary to at most `bytes` bytes.
-fn cut(text: &str, bytes: usize) -> &str {
-    let mut end = text.len().min(bytes);
-    while !text.is_char_boundary(end) {
-        end -= 1;
-    }
-    &text[..end]
+    Refusal::not_now(message)
 }
 
 /// A random token, not 0, from the standard library's randomly keyed hasher mixed with the

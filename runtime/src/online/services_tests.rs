@@ -19,7 +19,7 @@ fn services(password: Option<&str>, loaded: bool) -> OnlineServices {
 /// The status and payload of the answer to `request`.
 fn ask(services: &OnlineServices, request: &Request) -> (u8, Vec<u8>) {
     let body = services.respond(&request.encode()).unwrap();
-    assert_eq!(body[0], request.service());
+    assert_eq!(body[0], request.service().number());
     (body[1], body[2..].to_vec())
 }
 
@@ -88,10 +88,10 @@ fn another_protocol_version_is_refused_with_both_versions() {
 #[test]
 fn without_a_program_the_services_that_need_one_say_not_now() {
     let services = services(None, false);
-    let place = WirePlace {
+    let place = Place {
         region: 0,
         offset: 0,
-        bit: NO_BIT,
+        bit: None,
         size: 1,
     };
     assert_eq!(ask(&services, &Request::Start { token: 0 }).0, 7);
@@ -123,13 +123,13 @@ fn without_a_program_the_services_that_need_one_say_not_now() {
 #[test]
 fn a_place_outside_its_region_is_refused_and_nothing_is_written() {
     let services = services(None, true);
-    let inside = WirePlace {
+    let inside = Place {
         region: 0,
         offset: 0,
-        bit: NO_BIT,
+        bit: None,
         size: 4,
     };
-    let outside = WirePlace {
+    let outside = Place {
         offset: 1 << 20,
         ..inside
     };
@@ -146,10 +146,10 @@ fn a_place_outside_its_region_is_refused_and_nothing_is_written() {
     );
     assert_eq!(status, 0);
     assert_eq!(&read[9..], &[0, 0, 0, 0]);
-    let bad_bit = WirePlace {
+    let bad_bit = Place {
         region: 3,
         offset: 0,
-        bit: 8,
+        bit: Some(8),
         size: 1,
     };
     assert_eq!(

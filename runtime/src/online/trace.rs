@@ -3,27 +3,11 @@
 
 use std::collections::VecDeque;
 
-use super::codec::{TraceConfig, TriggerKind};
-use super::place::WirePlace;
+pub use online_protocol::TraceState;
+use online_protocol::{Place, TraceConfig, TriggerKind};
 
 /// The most bytes a trace's ring may hold (samples × their size with cycle and time).
 pub const MAX_TRACE_BYTES: u64 = 32 * 1024 * 1024;
-
-/// What the recorder is doing, numbered as `TRACE_STATUS` sends it.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[repr(u8)]
-pub enum TraceState {
-    /// Nothing configured.
-    Unconfigured = 0,
-    /// Configured, not armed.
-    Configured = 1,
-    /// Armed: recording, before the trigger.
-    Armed = 2,
-    /// Triggered: recording the part after the trigger.
-    Triggered = 3,
-    /// Every sample is recorded.
-    Complete = 4,
-}
 
 /// One sample: the cycle it was taken at and the places' bytes in order.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -135,7 +119,7 @@ impl Trace {
 
     /// Called at the end of each cycle of the traced task: takes a sample every n-th cycle,
     /// reading places with `read`.
-    pub fn end_of_cycle(&mut self, cycle: u64, time_ns: u64, read: impl Fn(WirePlace) -> Vec<u8>) {
+    pub fn end_of_cycle(&mut self, cycle: u64, time_ns: u64, read: impl Fn(Place) -> Vec<u8>) {
         let Some(config) = &self.config else {
             return;
         };
@@ -203,18 +187,17 @@ impl Trace {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::online::place::NO_BIT;
 
-    const VALUE: WirePlace = WirePlace {
+    const VALUE: Place = Place {
         region: 0,
         offset: 0,
-        bit: NO_BIT,
+        bit: None,
         size: 1,
     };
-    const TRIGGER: WirePlace = WirePlace {
+    const TRIGGER: Place = Place {
         region: 0,
         offset: 1,
-        bit: NO_BIT,
+        bit: None,
         size: 1,
     };
 

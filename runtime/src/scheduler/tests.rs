@@ -323,22 +323,22 @@ fn cycles_that_finish_past_the_watchdog_time_fault_the_task_at_the_sensitivity()
 
 #[test]
 fn a_forced_count_holds_before_and_after_every_cycle_and_a_load_releases_it() {
-    use crate::online::{NO_BIT, WirePlace};
     use crate::test_images::count;
+    use online_protocol::Place;
 
     let (scheduler, areas) = scheduler(SchedulerOptions::default());
     let tasks = [TestTask::cyclic(MS, 1)];
     scheduler.load(image(&tasks, &[])).unwrap();
-    let counted = WirePlace {
+    let counted = Place {
         region: 0,
         offset: count(0),
-        bit: NO_BIT,
+        bit: None,
         size: 4,
     };
-    let output = WirePlace {
+    let output = Place {
         region: 2,
         offset: count_in_output(0),
-        bit: NO_BIT,
+        bit: None,
         size: 4,
     };
     let forced = scheduler

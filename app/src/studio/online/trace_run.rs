@@ -3,7 +3,7 @@
 
 use std::collections::HashMap;
 
-use online::{Resolved, Sample, TraceConfig, TraceStatus, Trigger};
+use online::{Resolved, Sample, TraceConfig, TraceState, TraceStatus, Trigger};
 use project_model::TraceTriggerCondition;
 
 use crate::studio::i18n::{Language, Text};
@@ -244,10 +244,10 @@ impl TraceRun {
             return;
         }
         self.phase = match status.state {
-            4 => TracePhase::Complete,
+            TraceState::Complete => TracePhase::Complete,
             _ => TracePhase::Recording {
                 recorded: status.recorded,
-                triggered: status.trigger_sample.is_some() || status.state == 3,
+                triggered: status.trigger_sample.is_some() || status.state == TraceState::Triggered,
             },
         };
     }

@@ -1,0 +1,71 @@
+//! The numbers of the framing (`docs/protocol.md` §1): every size a peer relies on has a name
+//! here, so that the runtime and the client cannot disagree about it.
+
+/// The user-defined Modbus function code that carries the online services (100).
+pub const FUNCTION_CODE: u8 = 0x64;
+
+/// The protocol version both sides speak; `IDENTIFY` refuses any other.
+pub const PROTOCOL_VERSION: u16 = 1;
+
+/// The most bytes of payload a request or response carries: a Modbus PDU is at most 253
+/// bytes, less the function code, the service and (in a response) the status.
+pub const MAX_PAYLOAD_BYTES: usize = 250;
+
+/// The most entries a list carries, as its count is one byte.
+pub const MAX_COUNT: usize = u8::MAX as usize;
+
+/// The most bytes an `str8` holds, as its length is one byte.
+pub const MAX_STR8_BYTES: usize = u8::MAX as usize;
+
+/// The most bytes of a text the runtime sends (a refusal's message, its version, the
+/// project's name, a task's name): cut there so that the response fits.
+pub const MAX_TEXT_BYTES: usize = 200;
+
+/// The most bytes of each text of a `FAULTS` entry, so that one fault always fits a response.
+pub const MAX_FAULT_TEXT_BYTES: usize = 48;
+
+/// The bytes of a place on the wire: region, offset, bit and size.
+pub const PLACE_BYTES: usize = 8;
+
+/// The bytes of a token, which every changing service carries first.
+pub const TOKEN_BYTES: usize = 4;
+
+/// The `bit` byte of a place that is not a single bit.
+pub const NO_BIT: u8 = 0xFF;
+
+/// The highest bit number of a bit place.
+pub const MAX_BIT: u8 = 7;
+
+/// The bytes of a `DOWNLOAD_CHUNK` before its data: token, transfer and offset.
+pub const CHUNK_HEADER_BYTES: usize = 10;
+
+/// The chunk size the runtime offers in `DOWNLOAD_BEGIN`: what is left of a payload after a
+/// chunk's header, rounded down.
+pub const CHUNK_BYTES: u16 = 240;
+
+/// The most places a `TRACE_CONFIGURE` frame holds; more are added with `TRACE_ADD`.
+pub const TRACE_CONFIGURE_PLACES: usize = 28;
+
+/// The most places a `TRACE_ADD` frame holds.
+pub const TRACE_ADD_PLACES: usize = 30;
+
+/// The bytes of a trace sample before its values: the cycle and the time.
+pub const SAMPLE_HEADER_BYTES: usize = 16;
+
+/// The most bytes of one sample's values, so that a sample fits one `TRACE_UPLOAD` answer.
+pub const MAX_SAMPLE_VALUE_BYTES: usize = MAX_PAYLOAD_BYTES - 1 - SAMPLE_HEADER_BYTES;
+
+/// The most percent of a trace's samples kept before the trigger.
+pub const MAX_PRETRIGGER_PERCENT: u8 = 100;
+
+/// The `trigger_sample` of `TRACE_STATUS` before the trigger came.
+pub const NO_TRIGGER_SAMPLE: u32 = u32::MAX;
+
+/// The `RESOLVE` type of a STRING.
+pub const TYPE_STRING: u8 = 0x20;
+
+/// The `RESOLVE` type of a WSTRING.
+pub const TYPE_WSTRING: u8 = 0x21;
+
+/// The `RESOLVE` type of anything neither elementary nor a string.
+pub const TYPE_OTHER: u8 = 0xFF;

@@ -1,0 +1,42 @@
+//! The requests, responses and status codes of Rivet's online protocol (`docs/protocol.md`,
+//! version 1) with their encoding, written once for both sides: the runtime decodes
+//! [`Request`]s and encodes [`Response`]s and [`Refusal`]s, the client does the opposite.
+//!
+//! Everything here is plain data and pure functions: no I/O, no threads. Decoding never
+//! panics, whatever the bytes; a [`DecodeError`] says what was wrong at which byte.
+//!
+//! - [`framing`]: the function code, the version and every size of the framing.
+//! - [`Service`] and [`Status`]: the numbers of the services and of the statuses.
+//! - [`Place`]: where a variable is on the target.
+//! - [`Request`] and [`Response`]: one variant per service, with `encode` and `decode`.
+
+mod answers;
+mod error;
+pub mod framing;
+mod place;
+mod reader;
+mod request;
+mod response;
+mod service;
+mod status;
+mod writer;
+
+#[cfg(test)]
+mod arb;
+
+pub use answers::{
+    Fault, Identity, Resolved, Snapshot, TargetState, TaskInfo, TraceSample, TraceState,
+    TraceStatus, Value,
+};
+pub use error::DecodeError;
+pub use framing::*;
+pub use place::Place;
+pub use reader::Reader;
+pub use request::{Request, ResetKind, TraceConfig, TriggerKind};
+pub use response::{Answer, Response};
+pub use service::Service;
+pub use status::{Refusal, Status};
+pub use writer::cut;
+
+/// A SHA-256 hash: of a whole image in `DOWNLOAD_BEGIN`, of its identity in `IDENTIFY`.
+pub type Hash = [u8; 32];

@@ -1,0 +1,185 @@
+use proptest::prelude::*;
+
+use super::*;
+use crate::arb::request_of;
+use crate::framing::MAX_PAYLOAD_BYTES;
+
+#[test]
+fn a_refusal_carries_its_status_and_a_message_that_fits() {
+    let body = Refusal {
+        status: Status::BadPlace,
+        message: "é".repeat(300),
+    }
+    .encode(0x31);
+    assert_eq!(&body[..2], &[0x31, 5]);
+    assert_eq!(usize::from(body[2]), body.len() - 3);
+    assert!(body.len() <= MAX_PAYLOAD_BYTES + 2);
+    assert!(std::str::from_utf8(&body[3..]).is_ok());
+}
+
+#[test]
+fn an_answer_is_its_service_status_0_then_its_fields() {
+    let stop = Response::Stop {
+        state: TargetState::Stopped,
+    };
+    assert_eq!(stop.encode(), [0x21, 0, 1]);
+    let status = Response::TraceStatus(TraceStatus {
+        state: TraceState::Armed,
+        recorded: 3,
+        trigger_sample: None,
+    });
+    assert_eq!(
+        status.encode(),
+        [0x42, 0, 2, 3, 0, 0, 0, 0xFF, 0xFF, 0xFF, 0xFF]
+    );
+}
+
+#[test]
+fn a_read_answer_has_one_forced_bit_per_place_least_significant_first() {
+    let places = vec![
+        Place {
+            region: 0,
+            offset: 0,
+            bit: None,
+            size: 2,
+        };
+        9
+    ];
+    let values = (0..9).map(|i| (vec![i, 0], i == 1 || i == 8)).collect();
+    let read = Response::Read(Snapshot { cycle: 7, values });
+    let body = read.encode();
+    assert_eq!(&body[10..12], &[0b10, 0b1]);
+    let request = Request::Read { places };
+    assert_eq!(Response::decode(&request, &body), Ok(Ok(read)));
+}
+
+#[test]
+fn an_answer_for_another_service_is_an_error() {
+    let body = Response::Start {
+        state: TargetState::Running,
+    }
+    .encode();
+    assert_eq!(
+        Response::decode(&request_of(Service::Stop), &body),
+        Err(DecodeError::OtherService {
+            expected: 0x21,
+            found: 0x20
+        })
+    );
+}
+
+#[test]
+fn a_status_that_version_1_does_not_have_is_an_error() {
+    assert_eq!(
+        Response::decode(&request_of(Service::Tasks), &[0x50, 10, 0]),
+        Err(DecodeError::UnknownStatus(10))
+    );
+}
+
+#[test]
+fn a_refusal_without_its_message_is_too_short() {
+    assert!(matches!(
+        Response::decode(&request_of(Service::Tasks), &[0x50, 7]),
+        Err(DecodeError::TooShort {
+            field: "message",
+            at: 2,
+            ..
+        })
+    ));
+}
+
+#[test]
+fn a_truncated_answer_names_the_field_where_it_ends() {
+    let body = Response::Login { token: 5 }.encode();
+    assert_eq!(
+        Response::decode(&request_of(Service::Login), &body[..4]),
+        Err(DecodeError::TooShort {
+            field: "token",
+            at: 2,
+            needed: 4,
+            left: 2
+        })
+    );
+}
+
+#[test]
+fn an_answer_with_bytes_left_over_is_an_error() {
+    let mut body = Response::Write.encode();
+    body.push(0);
+    assert_eq!(
+        Response::decode(&request_of(Service::Write), &body),
+        Err(DecodeError::LeftOver { at: 2, count: 1 })
+    );
+}
+
+#[test]
+fn a_state_out_of_range_is_named_at_its_byte() {
+    assert_eq!(
+        Response::decode(&request_of(Service::Start), &[0x20, 0, 4]),
+        Err(DecodeError::OutOfRange {
+            field: "state",
+            at: 2,
+            value: 4,
+            expected: "0 to 3"
+        })
+    );
+}
+
+#[test]
+fn trace_samples_that_cannot_share_one_size_are_an_error() {
+    // Two samples in 33 bytes: not two samples of one size.
+    let mut body = vec![0x43, 0, 2];
+    body.extend_from_slice(&[0; 33]);
+    assert_eq!(
+        Response::decode(&request_of(Service::TraceUpload), &body),
+        Err(DecodeError::UnevenSamples {
+            at: 3,
+            count: 2,
+            bytes: 33
+        })
+    );
+    // One sample shorter than its cycle and time.
+    let body = [0x43, 0, 1, 0, 0, 0];
+    assert!(matches!(
+        Response::decode(&request_of(Service::TraceUpload), &body),
+        Err(DecodeError::UnevenSamples { .. })
+    ));
+}
+
+#[test]
+fn a_zero_hash_means_no_program() {
+    let identity = Identity {
+        protocol: 1,
+        runtime_version: "0.1.0".to_owned(),
+        state: TargetState::NoProgram,
+        image_hash: None,
+        project: String::new(),
+        password_required: false,
+    };
+    let body = Response::Identify(identity).encode();
+    assert_eq!(&body[11..43], &[0; 32]);
+}
+
+proptest! {
+    #[test]
+    fn every_response_decodes_to_itself((request, response) in crate::arb::response()) {
+        prop_assert_eq!(Response::decode(&request, &response.encode()), Ok(Ok(response)));
+    }
+
+    #[test]
+    fn every_refusal_decodes_to_itself(
+        refusal in crate::arb::refusal(),
+        request in crate::arb::request(),
+    ) {
+        let body = refusal.encode(request.service().number());
+        prop_assert_eq!(Response::decode(&request, &body), Ok(Err(refusal)));
+    }
+
+    #[test]
+    fn any_bytes_decode_as_an_answer_or_an_error_without_a_panic(
+        request in crate::arb::request(),
+        body in proptest::collection::vec(any::<u8>(), 0..260),
+    ) {
+        let _ = Response::decode(&request, &body);
+    }
+}

@@ -1,0 +1,107 @@
+//! The services of the protocol with their numbers (`docs/protocol.md` §3).
+
+/// A service: the byte after the function code in a request and its response.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[repr(u8)]
+pub enum Service {
+    /// `IDENTIFY`: the protocol version, the runtime and its program.
+    Identify = 0x01,
+    /// `LOGIN`: a token for the password.
+    Login = 0x02,
+    /// `DOWNLOAD_BEGIN`: a new transfer of an image.
+    DownloadBegin = 0x10,
+    /// `DOWNLOAD_CHUNK`: some bytes of the image.
+    DownloadChunk = 0x11,
+    /// `DOWNLOAD_COMMIT`: check and load the transferred image.
+    DownloadCommit = 0x12,
+    /// `DOWNLOAD_ABORT`: drop the transfer.
+    DownloadAbort = 0x13,
+    /// `START`: run the program.
+    Start = 0x20,
+    /// `STOP`: stop the program.
+    Stop = 0x21,
+    /// `RESET`: reset the program's memory.
+    Reset = 0x22,
+    /// `RESOLVE`: the place and type of a variable's path.
+    Resolve = 0x30,
+    /// `READ`: one snapshot of some places.
+    Read = 0x31,
+    /// `WRITE`: values written once, between two cycles.
+    Write = 0x32,
+    /// `FORCE`: values held until released.
+    Force = 0x33,
+    /// `UNFORCE`: forces released.
+    Unforce = 0x34,
+    /// `FORCES`: the forced places with their values.
+    Forces = 0x35,
+    /// `TRACE_CONFIGURE`: a new trace and its first places.
+    TraceConfigure = 0x40,
+    /// `TRACE_ARM`: recording starts.
+    TraceArm = 0x41,
+    /// `TRACE_STATUS`: where the trace is.
+    TraceStatus = 0x42,
+    /// `TRACE_UPLOAD`: recorded samples.
+    TraceUpload = 0x43,
+    /// `TRACE_ADD`: more places for the configured trace.
+    TraceAdd = 0x44,
+    /// `TASKS`: statistics of the tasks.
+    Tasks = 0x50,
+    /// `FAULTS`: the faults recorded.
+    Faults = 0x51,
+}
+
+impl Service {
+    /// Every service, in the order of their numbers.
+    pub const ALL: [Service; 22] = [
+        Service::Identify,
+        Service::Login,
+        Service::DownloadBegin,
+        Service::DownloadChunk,
+        Service::DownloadCommit,
+        Service::DownloadAbort,
+        Service::Start,
+        Service::Stop,
+        Service::Reset,
+        Service::Resolve,
+        Service::Read,
+        Service::Write,
+        Service::Force,
+        Service::Unforce,
+        Service::Forces,
+        Service::TraceConfigure,
+        Service::TraceArm,
+        Service::TraceStatus,
+        Service::TraceUpload,
+        Service::TraceAdd,
+        Service::Tasks,
+        Service::Faults,
+    ];
+
+    /// The service's number on the wire.
+    pub fn number(self) -> u8 {
+        self as u8
+    }
+
+    /// The service with `number`, if protocol version 1 has one.
+    pub fn from_number(number: u8) -> Option<Self> {
+        Self::ALL
+            .into_iter()
+            .find(|service| service.number() == number)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_service_is_found_by_its_number_and_no_other_number_names_one() {
+        for service in Service::ALL {
+            assert_eq!(Service::from_number(service.number()), Some(service));
+        }
+        let known = (0..=u8::MAX)
+            .filter(|&number| Service::from_number(number).is_some())
+            .count();
+        assert_eq!(known, Service::ALL.len());
+    }
+}
