@@ -14,6 +14,7 @@ mod axis;
 mod cam;
 mod data_type;
 mod declaration_text;
+mod device_check;
 mod edit;
 mod files;
 mod gvl;
@@ -41,6 +42,10 @@ pub use cam::{
     CamTable, CamTablePoint, MotionLaw, PointInterpolation, Tappet, TappetAction, TappetTrack,
 };
 pub use data_type::{DataType, EnumValue, StructMember, TypeDefinition};
+pub use device_check::{
+    DeviceProblem, LOCATED_AREA_BYTES, axis_problems, binding_problems, controller_problems,
+    device_problems, io_area_problems, map_range_problems, modbus_device_problems, new_problem,
+};
 pub use edit::{Edit, EditError, TextTarget, TreeEdit, VarOwner};
 pub use files::{
     APPLICATION_DIR, FORMAT_VERSION, LoadError, LoadProblem, LoadedProject, MANIFEST_FILE_NAME,
