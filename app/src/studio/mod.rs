@@ -4,6 +4,7 @@ mod build_job;
 mod cam_documents;
 mod chrome;
 mod cycle_plot;
+mod device_documents;
 mod device_tree;
 mod dock;
 mod document_view;

@@ -3,6 +3,7 @@
 use egui::{RichText, Ui};
 use egui_tiles::{Behavior, SimplificationOptions, Tile, TileId, Tiles, UiResponse};
 
+use super::device_documents;
 use super::device_tree::devices_pane_ui;
 use super::dock::Dock;
 use super::document_view::{document_ui, settings_ui};
@@ -156,6 +157,13 @@ fn document_pane_ui(studio: &mut Studio, ui: &mut Ui, node: &TreeNode) {
         io_document_ui(studio, ui, node);
         return;
     }
+    // Axes are edited in place by their device editor.
+    if let (TreeNode::Axis(_), Some(session)) = (node, &studio.session) {
+        let language = studio.settings.language;
+        let (devices, pending) = (&mut studio.devices, &mut studio.pending);
+        device_documents::axis_document_ui(ui, &session.project, node, language, devices, pending);
+        return;
+    }
     // Structured Text is edited in place; everything else is shown by the document views.
     if let TreeNode::Object(name) = node {
         let shown = super::text_documents::pou_document_ui(studio, ui, name)
@@ -170,7 +178,7 @@ fn document_pane_ui(studio: &mut Studio, ui: &mut Ui, node: &TreeNode) {
     }
 }
 
-/// A controller, I/O area or Modbus device document: its settings, then the I/O mapping of
+/// A controller, I/O area or Modbus device document: its editor, then the I/O mapping of
 /// every channel with the variable bound to it (a click opens the declaration).
 fn io_document_ui(studio: &mut Studio, ui: &mut Ui, node: &TreeNode) {
     let Some(session) = &studio.session else {
@@ -179,8 +187,12 @@ fn io_document_ui(studio: &mut Studio, ui: &mut Ui, node: &TreeNode) {
     let project = &session.project;
     egui::CollapsingHeader::new(RichText::new(node.title(Some(project))).strong())
         .id_salt(("io_document_settings", node))
-        .default_open(false)
-        .show(ui, |ui| settings_ui(ui, project, node));
+        .default_open(true)
+        .show(ui, |ui| {
+            let language = studio.settings.language;
+            let (devices, pending) = (&mut studio.devices, &mut studio.pending);
+            device_documents::device_editor_ui(ui, project, node, language, devices, pending);
+        });
     ui.separator();
     let texts = super::text_documents::table_texts(studio.settings.language);
     let output = editor::io_mapping_ui(ui, project, &texts);

@@ -129,6 +129,8 @@ pub(crate) struct Studio {
     pub task_editor: TaskEditorState,
     /// The cam editors of the open cam tables.
     pub cams: super::cam_documents::CamDocuments,
+    /// The device editors' typed text and refusals.
+    pub devices: super::device_documents::DeviceDocuments,
 }
 
 /// How the studio starts.
@@ -211,6 +213,7 @@ impl StudioApp {
                 tree_edit: TreeEditState::default(),
                 task_editor: TaskEditorState::default(),
                 cams: super::cam_documents::CamDocuments::default(),
+                devices: super::device_documents::DeviceDocuments::default(),
             },
         };
         if let Some(dir) = project_dir {
