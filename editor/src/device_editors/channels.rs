@@ -155,6 +155,20 @@ pub(crate) fn channels_ui(
                     }),
                 );
                 let delete = ui.button(&texts.delete);
+                if !fits {
+                    // Bound before this check existed, or the variable changed since: say so.
+                    let reason =
+                        check_channel_variable(project, &binding.variable, binding.data_type)
+                            .err()
+                            .map(|error| error.to_string())
+                            .unwrap_or_default();
+                    ui.label(
+                        RichText::new("!")
+                            .strong()
+                            .color(ui.visuals().warn_fg_color),
+                    )
+                    .on_hover_text(reason);
+                }
                 let label = row_label(texts, &texts.delete, row);
                 delete.widget_info(|| WidgetInfo::labeled(egui::Role::Button, true, label.clone()));
                 if delete.clicked() {
@@ -268,5 +282,48 @@ fn data_type_of(declared: &str) -> Option<ModbusDataType> {
         _ => ModbusDataType::ALL
             .into_iter()
             .find(|data_type| data_type.iec_name() == upper),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn example() -> Project {
+        project_model::load_project(&assets::example_project_dir())
+            .unwrap()
+            .project
+    }
+
+    #[test]
+    fn a_new_channel_takes_its_variable_s_type_and_the_next_free_address() {
+        let project = example();
+        let bindings = &project.modbus_devices[0].bindings;
+        let total = new_binding(&project, bindings, "GVL_Machine.udiTotalPackages").unwrap();
+        assert_eq!(total.table, ModbusTable::HoldingRegister);
+        assert_eq!(total.data_type, ModbusDataType::Uint32);
+        assert_eq!(total.address, 0);
+        let mut more = bindings.clone();
+        more.push(total);
+        let count = new_binding(&project, &more, "GVL_Machine.iPackagesInBatch").unwrap();
+        assert_eq!((count.address, count.data_type), (2, ModbusDataType::Int16));
+        let flag = new_binding(&project, &more, "GVL_Machine.xAcknowledge").unwrap();
+        assert_eq!((flag.table, flag.address), (ModbusTable::Coil, 0));
+    }
+
+    #[test]
+    fn a_new_channel_for_a_missing_variable_or_a_structure_is_refused() {
+        let project = example();
+        let missing = new_binding(&project, &[], "GVL_Machine.xNothing").unwrap_err();
+        assert!(missing.contains("there is no variable"), "{missing}");
+        let recipe = new_binding(&project, &[], "GVL_Machine.stRecipe").unwrap_err();
+        assert!(recipe.contains("declared as ST_Recipe"), "{recipe}");
+    }
+
+    #[test]
+    fn bit_strings_fit_unsigned_channels_of_their_size() {
+        assert_eq!(data_type_of("word"), Some(ModbusDataType::Uint16));
+        assert_eq!(data_type_of("LREAL"), Some(ModbusDataType::Lreal));
+        assert_eq!(data_type_of("STRING"), None);
     }
 }

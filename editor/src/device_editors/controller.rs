@@ -125,14 +125,19 @@ pub fn controller_editor_ui(
         }
         Some(map) => {
             let commit = |label: String, ranges: Vec<project_model::ModbusServerRange>| {
+                // Deleting a range brings no problem, but it renumbers the rows old problems
+                // name, which would make them look new.
+                let deleted = ranges.len() < map.ranges.len();
                 let candidate = Controller {
                     modbus_map: Some(ModbusServerMap { ranges }),
                     ..controller.clone()
                 };
-                refuse_new(
-                    controller_problems(controller),
-                    controller_problems(&candidate),
-                )?;
+                if !deleted {
+                    refuse_new(
+                        controller_problems(controller),
+                        controller_problems(&candidate),
+                    )?;
+                }
                 Ok(DeviceEdit {
                     label: format!("{label} ({node})"),
                     edits: vec![Edit::SetController(candidate)],

@@ -225,3 +225,35 @@ fn next_range(ranges: &[ModbusServerRange]) -> ModbusServerRange {
         area_address: "%MW0".to_owned(),
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_range_starts_at_a_byte_s_first_bit_or_at_a_register_address() {
+        let texts = DeviceTexts::default();
+        assert_eq!(address_problem(&texts, ModbusTable::Coil, "%QX4.0"), Ok(()));
+        assert_eq!(
+            address_problem(&texts, ModbusTable::Coil, "%QX4.1"),
+            Err(
+                "a coil or discrete input range starts at bit 0 of a byte, such as %QX4.0, not %QX4.1"
+                    .into()
+            )
+        );
+        assert_eq!(
+            address_problem(&texts, ModbusTable::HoldingRegister, "%MD2"),
+            Ok(())
+        );
+        assert!(address_problem(&texts, ModbusTable::InputRegister, "%IB2").is_err());
+        assert!(address_problem(&texts, ModbusTable::InputRegister, "MW2").is_err());
+    }
+
+    #[test]
+    fn a_new_range_follows_the_last_holding_register_range() {
+        let first = next_range(&[]);
+        assert_eq!((first.start, first.count), (0, 1));
+        let second = next_range(&[ModbusServerRange { count: 10, ..first }]);
+        assert_eq!(second.start, 10);
+    }
+}

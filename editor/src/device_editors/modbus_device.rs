@@ -23,10 +23,15 @@ pub fn modbus_device_editor_ui(
     let node = device.name.as_str();
     let devices = &project.modbus_devices;
     let replace = |label: String, item: ModbusDevice| {
-        refuse_new(
-            modbus_device_problems(devices, Some(index), device),
-            modbus_device_problems(devices, Some(index), &item),
-        )?;
+        // Deleting a channel brings no problem, but it renumbers the rows old problems name,
+        // which would make them look new.
+        let deleted = item.bindings.len() < device.bindings.len();
+        if !deleted {
+            refuse_new(
+                modbus_device_problems(devices, Some(index), device),
+                modbus_device_problems(devices, Some(index), &item),
+            )?;
+        }
         Ok(DeviceEdit {
             label,
             edits: vec![Edit::ModbusDevices(ListEdit::Replace { index, item })],
