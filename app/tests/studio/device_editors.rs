@@ -1,7 +1,7 @@
 //! The device editors in the studio: each node's settings edited in place, bad values refused
 //! with their reason and the project unchanged, and every change one undo step.
 
-use app::studio::{StudioApp, TreeNode};
+use app::studio::{Language, Settings, StudioApp, TreeNode};
 use egui::{Key, Modifiers};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable as _;
@@ -215,4 +215,23 @@ fn the_axis_editor_sets_limits_with_units_refuses_a_period_of_0_and_undoes() {
     undo(&mut harness);
     assert_eq!(knife(&harness).limits.velocity, 1440.0);
     assert_eq!(knife(&harness).software_limits.min, 0.0);
+}
+
+#[test]
+fn the_device_editors_speak_chinese_when_chosen() {
+    let dir = example_copy(|_| {});
+    let settings = Settings {
+        language: Language::SimplifiedChinese,
+        ..Settings::default()
+    };
+    let app = StudioApp::new(settings, Some(dir.path().to_owned()));
+    let mut harness = Harness::builder()
+        .with_size([1400.0, 900.0])
+        .build_ui_state(|ui, app: &mut StudioApp| app.ui(ui), app);
+    open(&mut harness, TreeNode::Axis("Knife".into()));
+    assert!(harness.query_by_label("Knife 的速度").is_some());
+    assert!(harness.query_by_label("Velocity of Knife").is_none());
+    enter_text(&mut harness, "Knife 的加加速度", "快");
+    assert_refused(&harness, "'快' 不是数字");
+    assert_eq!(project(&harness).axes[1].limits.jerk, 144_000.0);
 }
