@@ -106,7 +106,7 @@ fn the_io_area_editor_moves_an_area_refuses_an_overlap_naming_the_other_and_undo
     open(&mut harness, TreeNode::IoArea("AO_2".into()));
 
     enter_text(&mut harness, "Start byte of AO_2", "1");
-    assert_refused(&harness, "overlap the I/O area 'DO_16'");
+    assert_refused(&harness, "byte %QB1 overlaps the I/O area 'DO_16'");
     let area = |harness: &Harness<'_, StudioApp>| project(harness).io_areas[2].clone();
     assert_eq!(area(&harness).start_byte, 2);
 

@@ -91,7 +91,10 @@ pub(crate) fn text_field_ui(
         if refused {
             editor = editor.text_color(ui.visuals().error_fg_color);
         }
-        let response = ui.add(editor);
+        // A sized allocation, because a grid's middle column would otherwise squeeze the field
+        // to the width of its title.
+        let size = egui::vec2(field.width, ui.spacing().interact_size.y);
+        let response = ui.add_sized(size, editor);
         let label = field.label.to_owned();
         response.widget_info(|| WidgetInfo::labeled(egui::Role::TextInput, true, label.clone()));
         if response.changed() {

@@ -88,7 +88,18 @@ mod tests {
         );
         assert_eq!(
             problems[0].to_string(),
-            "the bytes %QB1 to %QB1 overlap the I/O area 'DO_16'"
+            "byte %QB1 overlaps the I/O area 'DO_16'"
+        );
+    }
+
+    #[test]
+    fn an_overlap_of_several_bytes_names_the_first_and_the_last() {
+        let areas = example();
+        let moved = area("AO_2", IoDirection::Output, 0, 4);
+        let problems = io_area_problems(&areas, Some(2), &moved);
+        assert_eq!(
+            problems[0].to_string(),
+            "bytes %QB0 to %QB1 overlap the I/O area 'DO_16'"
         );
     }
 

@@ -78,7 +78,7 @@ pub enum DeviceProblem {
         limit: u32,
     },
     /// Two I/O areas of the same direction sharing bytes.
-    #[error("the bytes %{letter}B{first} to %{letter}B{last} overlap the I/O area '{other}'", letter = direction.area_letter())]
+    #[error("{} the I/O area '{other}'", overlapping_bytes(*direction, *first, *last))]
     AreasOverlap {
         /// The direction both areas have.
         direction: IoDirection,
@@ -199,4 +199,15 @@ fn table_name(table: ModbusTable) -> &'static str {
 /// The IEC name of the type a channel decodes to, for [`DeviceProblem::TableTypeMismatch`].
 fn type_name(data_type: ModbusDataType) -> &'static str {
     data_type.iec_name()
+}
+
+/// The shared bytes of [`DeviceProblem::AreasOverlap`] with their verb: `byte %QB1 overlaps`,
+/// `bytes %QB1 to %QB3 overlap`.
+fn overlapping_bytes(direction: IoDirection, first: u32, last: u32) -> String {
+    let letter = direction.area_letter();
+    if first == last {
+        format!("byte %{letter}B{first} overlaps")
+    } else {
+        format!("bytes %{letter}B{first} to %{letter}B{last} overlap")
+    }
 }
