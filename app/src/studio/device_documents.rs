@@ -32,32 +32,48 @@ pub(crate) fn device_editor_ui(
 ) -> bool {
     let texts = device_texts(language);
     let state = documents.states.entry(node.clone()).or_default();
-    let edit: Option<DeviceEdit> = match node {
-        TreeNode::Controller => editor::controller_editor_ui(ui, project, state, &texts),
-        TreeNode::IoArea(name) => {
-            let Some(index) = project.io_areas.iter().position(|a| a.name == *name) else {
-                return false;
-            };
-            editor::io_area_editor_ui(ui, project, index, state, &texts)
-        }
-        TreeNode::ModbusDevice(name) => {
-            let Some(index) = project.modbus_devices.iter().position(|d| d.name == *name) else {
-                return false;
-            };
-            editor::modbus_device_editor_ui(ui, project, index, state, &texts)
-        }
-        TreeNode::Axis(name) => {
-            let Some(index) = project.axes.iter().position(|a| a.name == *name) else {
-                return false;
-            };
-            editor::axis_editor_ui(ui, project, index, state, &texts)
-        }
-        _ => return false,
-    };
-    if let Some(edit) = edit {
-        pending.push(Command::Edit(edit.label, edit.edits));
+    // A channel table is wider than a narrow document pane: it scrolls sideways.
+    let scroll = egui::ScrollArea::horizontal()
+        .id_salt(("device editor", node))
+        .auto_shrink([false, true]);
+    let shown = scroll.show(ui, |ui| editor_ui(ui, project, node, state, &texts));
+    match shown.inner {
+        Some(Some(edit)) => pending.push(Command::Edit(edit.label, edit.edits)),
+        Some(None) => {}
+        None => return false,
     }
     true
+}
+
+/// The editor of `node` and its gesture: `None` when `node` has no device editor or is no
+/// longer part of the project.
+fn editor_ui(
+    ui: &mut Ui,
+    project: &Project,
+    node: &TreeNode,
+    state: &mut DeviceEditorState,
+    texts: &DeviceTexts,
+) -> Option<Option<DeviceEdit>> {
+    let edit: Option<DeviceEdit> = match node {
+        TreeNode::Controller => editor::controller_editor_ui(ui, project, state, texts),
+        TreeNode::IoArea(name) => {
+            let index = project.io_areas.iter().position(|a| a.name == *name)?;
+            editor::io_area_editor_ui(ui, project, index, state, texts)
+        }
+        TreeNode::ModbusDevice(name) => {
+            let index = project
+                .modbus_devices
+                .iter()
+                .position(|d| d.name == *name)?;
+            editor::modbus_device_editor_ui(ui, project, index, state, texts)
+        }
+        TreeNode::Axis(name) => {
+            let index = project.axes.iter().position(|a| a.name == *name)?;
+            editor::axis_editor_ui(ui, project, index, state, texts)
+        }
+        _ => return None,
+    };
+    Some(edit)
 }
 
 /// An axis document: its title and its editor, scrolled.
@@ -69,7 +85,7 @@ pub(crate) fn axis_document_ui(
     documents: &mut DeviceDocuments,
     pending: &mut Vec<Command>,
 ) {
-    egui::ScrollArea::both()
+    egui::ScrollArea::vertical()
         .id_salt(("axis document", node))
         .auto_shrink([false, false])
         .show(ui, |ui| {

@@ -65,7 +65,7 @@ pub(crate) fn channels_ui(
                 let field = FieldId {
                     key: &key,
                     label: &label,
-                    width: 200.0,
+                    width: 190.0,
                 };
                 keep(
                     &mut out,
@@ -142,7 +142,7 @@ pub(crate) fn channels_ui(
                 let field = FieldId {
                     key: &key,
                     label: &label,
-                    width: 220.0,
+                    width: 160.0,
                 };
                 keep(
                     &mut out,
