@@ -36,7 +36,12 @@ pub(crate) fn device_editor_ui(
     let scroll = egui::ScrollArea::horizontal()
         .id_salt(("device editor", node))
         .auto_shrink([false, true]);
-    let shown = scroll.show(ui, |ui| editor_ui(ui, project, node, state, &texts));
+    let shown = scroll.show(ui, |ui| {
+        let edit = editor_ui(ui, project, node, state, &texts);
+        // Room for the scroll bar, which floats over the content's last row otherwise.
+        ui.add_space(ui.spacing().scroll.bar_width + ui.spacing().scroll.bar_outer_margin + 4.0);
+        edit
+    });
     match shown.inner {
         Some(Some(edit)) => pending.push(Command::Edit(edit.label, edit.edits)),
         Some(None) => {}
