@@ -8,9 +8,12 @@
 //! highlighting, folding, diagnostics, find and replace, completion, inline values); the
 //! [`VariableTable`] that edits declarations in place; the I/O mapping view ([`io_mapping_ui`])
 //! that lists each channel of the controller's I/O areas and of the Modbus TCP devices with the
-//! variables bound to it; and the read-only [`CodeView`] with lexical highlighting.
+//! variables bound to it; the device editors ([`controller_editor_ui`], [`io_area_editor_ui`],
+//! [`modbus_device_editor_ui`], [`axis_editor_ui`]); and the read-only [`CodeView`] with lexical
+//! highlighting.
 
 mod code_view;
+mod device_editors;
 mod io_mapping;
 mod palette;
 mod st_editor;
@@ -19,6 +22,10 @@ mod table_texts;
 mod variable_table;
 
 pub use code_view::CodeView;
+pub use device_editors::{
+    DeviceEdit, DeviceEditorState, DeviceTexts, axis_editor_ui, controller_editor_ui,
+    io_area_editor_ui, modbus_device_editor_ui,
+};
 pub use io_mapping::{IoMappingOutput, io_mapping_ui};
 pub use palette::{EditorPalette, SyntaxColors};
 pub use st_editor::{

@@ -15,6 +15,7 @@ mod cam;
 mod data_type;
 mod declaration_text;
 mod declarations_edit;
+mod device_check;
 mod edit;
 mod files;
 mod gvl;
@@ -45,6 +46,10 @@ pub use data_type::{DataType, EnumValue, StructMember, TypeDefinition};
 pub use declarations_edit::{
     DeclarationsChange, TypedDeclarations, TypedHeader, gvl_declarations_change,
     pou_declarations_change,
+};
+pub use device_check::{
+    DeviceProblem, LOCATED_AREA_BYTES, axis_problems, binding_problems, controller_problems,
+    device_problems, io_area_problems, map_range_problems, modbus_device_problems, new_problem,
 };
 pub use edit::{Edit, EditError, TextTarget, TreeEdit, VarOwner};
 pub use files::{

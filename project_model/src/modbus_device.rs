@@ -113,3 +113,49 @@ impl ModbusDataType {
         }
     }
 }
+
+impl ModbusDataType {
+    /// Every data type, in the order editors offer them.
+    pub const ALL: [Self; 9] = [
+        Self::Bool,
+        Self::Int16,
+        Self::Uint16,
+        Self::Int32,
+        Self::Uint32,
+        Self::Int64,
+        Self::Uint64,
+        Self::Real,
+        Self::Lreal,
+    ];
+
+    /// The IEC elementary type a value of this type is read as: `BOOL`, `INT`, `UINT`, `DINT`,
+    /// `UDINT`, `LINT`, `ULINT`, `REAL` or `LREAL`.
+    pub fn iec_name(self) -> &'static str {
+        match self {
+            Self::Bool => "BOOL",
+            Self::Int16 => "INT",
+            Self::Uint16 => "UINT",
+            Self::Int32 => "DINT",
+            Self::Uint32 => "UDINT",
+            Self::Int64 => "LINT",
+            Self::Uint64 => "ULINT",
+            Self::Real => "REAL",
+            Self::Lreal => "LREAL",
+        }
+    }
+}
+
+impl ModbusTable {
+    /// Every table, in the order editors offer them.
+    pub const ALL: [Self; 4] = [
+        Self::Coil,
+        Self::DiscreteInput,
+        Self::HoldingRegister,
+        Self::InputRegister,
+    ];
+
+    /// Whether the table holds bits (coils and discrete inputs) rather than 16-bit registers.
+    pub fn holds_bits(self) -> bool {
+        matches!(self, Self::Coil | Self::DiscreteInput)
+    }
+}

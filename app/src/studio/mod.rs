@@ -7,6 +7,7 @@ mod cam_documents;
 mod chrome;
 mod command;
 mod cycle_plot;
+mod device_documents;
 mod device_tree;
 mod dock;
 mod document_view;

@@ -4,6 +4,7 @@ use egui::{RichText, Ui};
 use egui_tiles::{Behavior, SimplificationOptions, Tile, TileId, Tiles, UiResponse};
 
 use super::command::{Command, Commands};
+use super::device_documents;
 use super::device_tree::devices_pane_ui;
 use super::dock::Dock;
 use super::document_view::{document_ui, settings_ui};
@@ -172,7 +173,13 @@ fn document_pane_ui(
         node,
         TreeNode::Controller | TreeNode::IoArea(_) | TreeNode::ModbusDevice(_)
     ) {
-        io_document_ui(view, commands, ui, node);
+        io_document_ui(view, &mut states.devices, commands, ui, node);
+        return;
+    }
+    // Axes are edited in place by their device editor.
+    if let (TreeNode::Axis(_), Some(project)) = (node, view.project()) {
+        let devices = &mut states.devices;
+        device_documents::axis_document_ui(ui, project, node, view.language, devices, commands);
         return;
     }
     // Structured Text is edited in place; everything else is shown by the document views.
@@ -190,16 +197,24 @@ fn document_pane_ui(
     }
 }
 
-/// A controller, I/O area or Modbus device document: its settings, then the I/O mapping of
+/// A controller, I/O area or Modbus device document: its editor, then the I/O mapping of
 /// every channel with the variable bound to it (a click opens the declaration).
-fn io_document_ui(view: StudioView<'_>, commands: &mut Commands, ui: &mut Ui, node: &TreeNode) {
+fn io_document_ui(
+    view: StudioView<'_>,
+    devices: &mut device_documents::DeviceDocuments,
+    commands: &mut Commands,
+    ui: &mut Ui,
+    node: &TreeNode,
+) {
     let Some(project) = view.project() else {
         return;
     };
     egui::CollapsingHeader::new(RichText::new(node.title(Some(project))).strong())
         .id_salt(("io_document_settings", node))
-        .default_open(false)
-        .show(ui, |ui| settings_ui(ui, project, node));
+        .default_open(true)
+        .show(ui, |ui| {
+            device_documents::device_editor_ui(ui, project, node, view.language, devices, commands);
+        });
     ui.separator();
     let texts = super::text_documents::table_texts(view.language);
     let output = editor::io_mapping_ui(ui, project, &texts);

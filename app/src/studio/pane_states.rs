@@ -1,6 +1,7 @@
 //! What each pane remembers between frames, grouped per pane.
 
 use super::cam_documents::CamDocuments;
+use super::device_documents::DeviceDocuments;
 use super::panes::{TracePaneState, WatchPaneState};
 use super::task_editor::TaskEditorState;
 use super::text_documents::TextDocuments;
@@ -26,6 +27,8 @@ pub(crate) struct PaneStates {
     pub task_editor: TaskEditorState,
     /// The cam editors of the open cam tables.
     pub cams: CamDocuments,
+    /// The device editors' typed text and refusals.
+    pub devices: DeviceDocuments,
 }
 
 impl PaneStates {

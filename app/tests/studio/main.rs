@@ -9,6 +9,7 @@
 
 mod basics;
 mod cam_editor;
+mod device_editors;
 mod devices;
 mod editor;
 mod online;

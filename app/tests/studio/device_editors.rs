@@ -1,0 +1,237 @@
+//! The device editors in the studio: each node's settings edited in place, bad values refused
+//! with their reason and the project unchanged, and every change one undo step.
+
+use app::studio::{Language, Settings, StudioApp, TreeNode};
+use egui::{Key, Modifiers};
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable as _;
+use project_model::{ModbusDataType, ModbusTable, Project};
+
+use crate::support::{example_copy, studio};
+
+fn project<'h>(harness: &'h Harness<'_, StudioApp>) -> &'h Project {
+    &harness.state().session().unwrap().project
+}
+
+fn undo_label(harness: &Harness<'_, StudioApp>) -> Option<String> {
+    let session = harness.state().session().unwrap();
+    session.history.undo_label().map(str::to_owned)
+}
+
+/// Opens the document of `node` as a double-click in the device tree does.
+fn open(harness: &mut Harness<'_, StudioApp>, node: TreeNode) {
+    harness.state_mut().open(node);
+    harness.run();
+}
+
+/// Types `text` into the text field labelled `label` over its old text and presses Enter.
+fn enter_text(harness: &mut Harness<'_, StudioApp>, label: &str, text: &str) {
+    let role = egui::accesskit::Role::TextInput;
+    harness.get_by_role_and_label(role, label).click();
+    harness.run();
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::A);
+    harness.key_press(Key::Backspace);
+    harness.get_by_role_and_label(role, label).type_text(text);
+    harness.run();
+    harness.key_press(Key::Enter);
+    harness.run();
+}
+
+/// Undoes the last change with Ctrl+Z, with the focus out of any field.
+fn undo(harness: &mut Harness<'_, StudioApp>) {
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::Z);
+    harness.run();
+}
+
+#[track_caller]
+fn assert_refused(harness: &Harness<'_, StudioApp>, reason: &str) {
+    assert!(
+        harness.query_by_label_contains(reason).is_some(),
+        "no refusal saying '{reason}'"
+    );
+}
+
+#[test]
+fn the_controller_editor_sets_the_port_refuses_port_0_and_undoes() {
+    let dir = example_copy(|_| {});
+    let mut harness = studio(dir.path());
+    open(&mut harness, TreeNode::Controller);
+    assert!(harness.query_by_label_contains("Password of").is_none());
+
+    enter_text(&mut harness, "Port of PLC", "5021");
+    assert_eq!(project(&harness).controller.port, 5021);
+    assert_eq!(
+        undo_label(&harness).as_deref(),
+        Some("Set port of PLC to 5021")
+    );
+
+    enter_text(&mut harness, "Port of PLC", "0");
+    assert_refused(&harness, "port 0 cannot be used");
+    assert_eq!(project(&harness).controller.port, 5021);
+    enter_text(&mut harness, "Host of PLC", "");
+    assert_refused(&harness, "the host is empty");
+    assert_eq!(project(&harness).controller.host, "127.0.0.1");
+
+    harness.key_press(Key::Escape);
+    undo(&mut harness);
+    assert_eq!(project(&harness).controller.port, 5020);
+
+    // The Modbus map override: on, one range added, a range past 65535 refused.
+    harness.get_by_label("Own Modbus map of PLC").click();
+    harness.run();
+    assert!(project(&harness).controller.modbus_map.is_some());
+    harness.get_by_label("Add range").click();
+    harness.run();
+    let map = project(&harness).controller.modbus_map.clone().unwrap();
+    assert_eq!(map.ranges.len(), 1);
+    enter_text(&mut harness, "Start of row 1", "65535");
+    enter_text(&mut harness, "Count of row 1", "2");
+    assert_refused(&harness, "passes address 65535");
+    assert_eq!(
+        project(&harness)
+            .controller
+            .modbus_map
+            .as_ref()
+            .unwrap()
+            .ranges[0]
+            .count,
+        1
+    );
+}
+
+#[test]
+fn the_io_area_editor_moves_an_area_refuses_an_overlap_naming_the_other_and_undoes() {
+    let dir = example_copy(|_| {});
+    let mut harness = studio(dir.path());
+    open(&mut harness, TreeNode::IoArea("AO_2".into()));
+
+    enter_text(&mut harness, "Start byte of AO_2", "1");
+    assert_refused(&harness, "byte %QB1 overlaps the I/O area 'DO_16'");
+    let area = |harness: &Harness<'_, StudioApp>| project(harness).io_areas[2].clone();
+    assert_eq!(area(&harness).start_byte, 2);
+
+    enter_text(&mut harness, "Start byte of AO_2", "8");
+    assert_eq!(area(&harness).start_byte, 8);
+    enter_text(&mut harness, "Size of AO_2", "0");
+    assert_refused(&harness, "at least 1 byte");
+    assert_eq!(area(&harness).size_bytes, 4);
+
+    harness.key_press(Key::Escape);
+    undo(&mut harness);
+    assert_eq!(area(&harness).start_byte, 2);
+}
+
+#[test]
+fn the_modbus_device_editor_edits_settings_and_channels_and_refuses_what_does_not_fit() {
+    let dir = example_copy(|_| {});
+    let mut harness = studio(dir.path());
+    open(&mut harness, TreeNode::ModbusDevice("BeltDrive".into()));
+    let drive = |harness: &Harness<'_, StudioApp>| project(harness).modbus_devices[0].clone();
+
+    enter_text(&mut harness, "Poll interval of BeltDrive", "250");
+    assert_eq!(drive(&harness).poll_interval_ms, 250);
+    enter_text(&mut harness, "Timeout of BeltDrive", "0");
+    assert_refused(&harness, "the timeout is at least 1 ms");
+    enter_text(&mut harness, "Unit id of BeltDrive", "300");
+    assert_refused(&harness, "'300' is not a whole number from 0 to 255");
+    assert_eq!(drive(&harness).timeout_ms, 500);
+    assert_eq!(drive(&harness).unit_id, 1);
+
+    // A channel's variable must exist and have the channel's type.
+    enter_text(&mut harness, "Variable of row 1", "GVL_Machine.rMissing");
+    assert_refused(&harness, "there is no variable 'GVL_Machine.rMissing'");
+    enter_text(
+        &mut harness,
+        "Variable of row 1",
+        "GVL_Machine.iPackagesInBatch",
+    );
+    assert_refused(&harness, "is declared as INT, but the channel reads REAL");
+    assert_eq!(
+        drive(&harness).bindings[0].variable,
+        "GVL_Machine.rBeltSpeedActual"
+    );
+
+    // A channel added by naming its variable gets its type and a free address.
+    harness.key_press(Key::Escape);
+    enter_text(
+        &mut harness,
+        "Add channel for variable",
+        "GVL_Machine.udiTotalPackages",
+    );
+    let added = drive(&harness).bindings[2].clone();
+    assert_eq!(added.variable, "GVL_Machine.udiTotalPackages");
+    assert_eq!(added.table, ModbusTable::HoldingRegister);
+    assert_eq!(added.data_type, ModbusDataType::Uint32);
+    enter_text(&mut harness, "Address of row 3", "4");
+    assert_eq!(drive(&harness).bindings[2].address, 4);
+    enter_text(&mut harness, "Address of row 1", "1");
+    assert!(harness.query_by_label_contains("overlaps").is_none());
+
+    harness.get_by_label("Delete of row 2").click();
+    harness.run();
+    assert_eq!(drive(&harness).bindings.len(), 2);
+    undo(&mut harness);
+    assert_eq!(drive(&harness).bindings.len(), 3);
+    undo(&mut harness);
+    undo(&mut harness);
+    undo(&mut harness);
+    undo(&mut harness);
+    assert_eq!(drive(&harness).bindings.len(), 2);
+    assert_eq!(drive(&harness).poll_interval_ms, 100);
+}
+
+#[test]
+fn the_axis_editor_sets_limits_with_units_refuses_a_period_of_0_and_undoes() {
+    let dir = example_copy(|_| {});
+    let mut harness = studio(dir.path());
+    open(&mut harness, TreeNode::Axis("Knife".into()));
+    assert!(harness.query_by_label("deg/s³").is_some());
+    let knife = |harness: &Harness<'_, StudioApp>| project(harness).axes[1].clone();
+
+    enter_text(&mut harness, "Velocity of Knife", "2000");
+    assert_eq!(knife(&harness).limits.velocity, 2000.0);
+    assert_eq!(
+        undo_label(&harness).as_deref(),
+        Some("Set velocity of Knife to 2000")
+    );
+    enter_text(&mut harness, "Modulo period of Knife", "0");
+    assert_refused(
+        &harness,
+        "the modulo period is 0; it must be greater than 0",
+    );
+    enter_text(&mut harness, "Jerk of Knife", "fast");
+    assert_refused(&harness, "'fast' is not a number");
+    assert_eq!(knife(&harness).modulo_period, Some(360.0));
+
+    // Software limits with the minimum above the maximum are refused when switched on.
+    enter_text(&mut harness, "Negative limit of Knife", "10");
+    harness.key_press(Key::Escape);
+    harness.get_by_label("Software limits of Knife").click();
+    harness.run();
+    assert_refused(&harness, "must be below the positive limit");
+    assert!(!knife(&harness).software_limits.enabled);
+
+    undo(&mut harness);
+    undo(&mut harness);
+    assert_eq!(knife(&harness).limits.velocity, 1440.0);
+    assert_eq!(knife(&harness).software_limits.min, 0.0);
+}
+
+#[test]
+fn the_device_editors_speak_chinese_when_chosen() {
+    let dir = example_copy(|_| {});
+    let settings = Settings {
+        language: Language::SimplifiedChinese,
+        ..Settings::default()
+    };
+    let app = StudioApp::new(settings, Some(dir.path().to_owned()));
+    let mut harness = Harness::builder()
+        .with_size([1400.0, 900.0])
+        .build_ui_state(|ui, app: &mut StudioApp| app.ui(ui), app);
+    open(&mut harness, TreeNode::Axis("Knife".into()));
+    assert!(harness.query_by_label("Knife 的速度").is_some());
+    assert!(harness.query_by_label("Velocity of Knife").is_none());
+    enter_text(&mut harness, "Knife 的加加速度", "快");
+    assert_refused(&harness, "'快' 不是数字");
+    assert_eq!(project(&harness).axes[1].limits.jerk, 144_000.0);
+}

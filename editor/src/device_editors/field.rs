@@ -1,0 +1,220 @@
+//! The pieces every device editor is made of: typed text fields accepted on Enter or when
+//! left, combo boxes and check boxes, each refusing a bad value in place with its reason.
+
+use std::collections::HashMap;
+
+use egui::{Key, RichText, Ui, WidgetInfo};
+
+use super::DeviceEdit;
+use super::texts::{DeviceTexts, fill};
+
+/// What a device editor keeps between frames: text typed into a field and not yet accepted,
+/// and why a value was refused, per field. Both are dropped when the node's value changes
+/// (an undo, an edit from elsewhere), so a field never shows a stale draft. Not saved.
+#[derive(Debug, Default)]
+pub struct DeviceEditorState {
+    /// Typed text not yet accepted, by field key.
+    drafts: HashMap<String, String>,
+    /// Why the last value given to a field was refused, by field key.
+    refused: HashMap<String, String>,
+    /// The node's value the drafts belong to, as its debug text.
+    seen: String,
+}
+
+impl DeviceEditorState {
+    /// Forgets drafts and refusals when the node's value is no longer the one they were typed
+    /// against.
+    pub(crate) fn follow(&mut self, value: &impl std::fmt::Debug) {
+        let seen = format!("{value:?}");
+        if seen != self.seen {
+            self.drafts.clear();
+            self.refused.clear();
+            self.seen = seen;
+        }
+    }
+
+    /// Why the value last given to the field `key` was refused, if it was.
+    pub fn refusal(&self, key: &str) -> Option<&str> {
+        self.refused.get(key).map(String::as_str)
+    }
+
+    /// Records the outcome of a change of field `key`: the edit, or the reason it was refused.
+    pub(crate) fn settle(
+        &mut self,
+        key: &str,
+        outcome: Result<DeviceEdit, String>,
+    ) -> Option<DeviceEdit> {
+        match outcome {
+            Ok(edit) => {
+                self.drafts.remove(key);
+                self.refused.remove(key);
+                Some(edit)
+            }
+            Err(reason) => {
+                self.refused.insert(key.to_owned(), reason);
+                None
+            }
+        }
+    }
+}
+
+/// A field being drawn: its key in the state, its accessible label and its width.
+pub(crate) struct FieldId<'a> {
+    /// The key of its draft and refusal.
+    pub key: &'a str,
+    /// What screen readers and tests call it: "Port of PLC".
+    pub label: &'a str,
+    /// Its width in points.
+    pub width: f32,
+}
+
+/// A single-line field showing `current`; typed text is given to `accept` when the field is
+/// left (Enter, Tab or a click elsewhere). A refused text stays, in the error colour, with the
+/// reason beside it; Escape puts the current value back.
+pub(crate) fn text_field_ui(
+    ui: &mut Ui,
+    state: &mut DeviceEditorState,
+    field: FieldId<'_>,
+    current: &str,
+    suffix: &str,
+    accept: impl FnOnce(&str) -> Result<DeviceEdit, String>,
+) -> Option<DeviceEdit> {
+    let mut text = state
+        .drafts
+        .get(field.key)
+        .cloned()
+        .unwrap_or_else(|| current.to_owned());
+    let mut edit = None;
+    ui.horizontal(|ui| {
+        let refused = state.refused.contains_key(field.key);
+        let mut editor = egui::TextEdit::singleline(&mut text).desired_width(field.width);
+        if refused {
+            editor = editor.text_color(ui.visuals().error_fg_color);
+        }
+        // A sized allocation, because a grid's middle column would otherwise squeeze the field
+        // to the width of its title.
+        let size = egui::vec2(field.width, ui.spacing().interact_size.y);
+        let response = ui.add_sized(size, editor);
+        let label = field.label.to_owned();
+        response.widget_info(|| WidgetInfo::labeled(egui::Role::TextInput, true, label.clone()));
+        if response.changed() {
+            state.drafts.insert(field.key.to_owned(), text.clone());
+            state.refused.remove(field.key);
+        }
+        if response.lost_focus() {
+            let escaped = ui.input(|input| input.key_pressed(Key::Escape));
+            if escaped || text.trim() == current.trim() {
+                state.drafts.remove(field.key);
+                state.refused.remove(field.key);
+            } else {
+                edit = state.settle(field.key, accept(text.trim()));
+            }
+        }
+        if !suffix.is_empty() {
+            ui.label(RichText::new(suffix).weak());
+        }
+        reason_ui(ui, state, field.key);
+    });
+    edit
+}
+
+/// A combo box of `options` showing the one equal to `current`; a choice is given to `accept`.
+pub(crate) fn combo_ui<T: PartialEq + Copy>(
+    ui: &mut Ui,
+    state: &mut DeviceEditorState,
+    field: FieldId<'_>,
+    current: T,
+    options: &[(String, T)],
+    accept: impl FnOnce(T) -> Result<DeviceEdit, String>,
+) -> Option<DeviceEdit> {
+    let shown = options
+        .iter()
+        .find(|(_, value)| *value == current)
+        .map(|(text, _)| text.clone())
+        .unwrap_or_default();
+    let mut chosen = None;
+    ui.horizontal(|ui| {
+        let label = field.label.to_owned();
+        egui::ComboBox::from_id_salt(("device combo", field.key))
+            .selected_text(shown)
+            .width(field.width)
+            .show_ui(ui, |ui| {
+                for (text, value) in options {
+                    if ui.selectable_label(*value == current, text).clicked() && *value != current {
+                        chosen = Some(*value);
+                    }
+                }
+            })
+            .response
+            .widget_info(|| WidgetInfo::labeled(egui::Role::ComboBox, true, label.clone()));
+        reason_ui(ui, state, field.key);
+    });
+    let value = chosen?;
+    state.settle(field.key, accept(value))
+}
+
+/// A check box; a change is given to `accept`, and a refusal is shown beside it.
+pub(crate) fn checkbox_ui(
+    ui: &mut Ui,
+    state: &mut DeviceEditorState,
+    field: FieldId<'_>,
+    text: &str,
+    current: bool,
+    accept: impl FnOnce(bool) -> Result<DeviceEdit, String>,
+) -> Option<DeviceEdit> {
+    let mut checked = current;
+    let mut edit = None;
+    ui.horizontal(|ui| {
+        let response = ui.checkbox(&mut checked, text);
+        let label = field.label.to_owned();
+        response.widget_info(|| WidgetInfo::labeled(egui::Role::CheckBox, true, label.clone()));
+        if response.changed() {
+            edit = state.settle(field.key, accept(checked));
+        }
+        reason_ui(ui, state, field.key);
+    });
+    edit
+}
+
+/// The reason the field `key` was refused, in the error colour, if it was.
+fn reason_ui(ui: &mut Ui, state: &DeviceEditorState, key: &str) {
+    if let Some(reason) = state.refused.get(key) {
+        ui.label(RichText::new(reason).color(ui.visuals().error_fg_color));
+    }
+}
+
+/// Reads a whole number from `min` to `max`, or says it is not one.
+pub(crate) fn parse_whole<T>(texts: &DeviceTexts, text: &str, min: T, max: T) -> Result<T, String>
+where
+    T: std::str::FromStr + PartialOrd + std::fmt::Display + Copy,
+{
+    text.parse::<T>()
+        .ok()
+        .filter(|value| *value >= min && *value <= max)
+        .ok_or_else(|| {
+            fill(
+                &texts.not_a_whole_number,
+                &[
+                    ("text", text),
+                    ("min", &min.to_string()),
+                    ("max", &max.to_string()),
+                ],
+            )
+        })
+}
+
+/// Reads a finite number, or says it is not one.
+pub(crate) fn parse_number(texts: &DeviceTexts, text: &str) -> Result<f64, String> {
+    text.parse::<f64>()
+        .ok()
+        .filter(|value| value.is_finite())
+        .ok_or_else(|| fill(&texts.not_a_number, &[("text", text)]))
+}
+
+/// A label and its field as one row of a two-column grid.
+pub(crate) fn row_ui<R>(ui: &mut Ui, label: &str, add: impl FnOnce(&mut Ui) -> R) -> R {
+    ui.label(label);
+    let result = add(ui);
+    ui.end_row();
+    result
+}

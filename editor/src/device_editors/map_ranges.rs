@@ -1,0 +1,259 @@
+//! The ranges of the controller's own Modbus map: a table, its first address and count, and
+//! the located address the range starts at.
+
+use compiler::ide::address_info;
+use egui::Ui;
+use project_model::{ModbusServerRange, ModbusTable};
+
+use super::field::{DeviceEditorState, FieldId, combo_ui, parse_whole, text_field_ui};
+use super::texts::fill;
+use super::{DeviceEdit, DeviceTexts, keep, row_label};
+
+/// Gives a changed list of ranges and its undo label to `commit`, which checks it against the
+/// project and makes the edit, or says why it is refused.
+pub(crate) type Commit<'a, T> = &'a dyn Fn(String, Vec<T>) -> Result<DeviceEdit, String>;
+
+/// Draws the ranges as a table with a button to add one and one to delete each.
+pub(crate) fn map_ranges_ui(
+    ui: &mut Ui,
+    state: &mut DeviceEditorState,
+    texts: &DeviceTexts,
+    ranges: &[ModbusServerRange],
+    commit: Commit<'_, ModbusServerRange>,
+) -> Option<DeviceEdit> {
+    let mut out = None;
+    ui.add_space(4.0);
+    ui.strong(&texts.map_ranges);
+    let tables = table_options(texts);
+    egui::Grid::new("map ranges")
+        .num_columns(5)
+        .striped(true)
+        .spacing([12.0, 4.0])
+        .show(ui, |ui| {
+            for title in [
+                &texts.table,
+                &texts.start,
+                &texts.count,
+                &texts.area_address,
+            ] {
+                ui.strong(title);
+            }
+            ui.label("");
+            ui.end_row();
+            for (index, range) in ranges.iter().enumerate() {
+                let row = index + 1;
+                let replaced = |range: ModbusServerRange, field: &str, value: &str| {
+                    let mut list = ranges.to_vec();
+                    list[index] = range;
+                    let field = row_label(texts, field, row).to_lowercase();
+                    let label = fill(
+                        &texts.set_field,
+                        &[
+                            ("field", &field),
+                            ("node", &texts.map_ranges),
+                            ("value", value),
+                        ],
+                    );
+                    commit(label, list)
+                };
+                let key = format!("range {index} table");
+                let label = row_label(texts, &texts.table, row);
+                let field = FieldId {
+                    key: &key,
+                    label: &label,
+                    width: 130.0,
+                };
+                keep(
+                    &mut out,
+                    combo_ui(ui, state, field, range.table, &tables, |table| {
+                        let name = table_name(texts, table);
+                        replaced(
+                            ModbusServerRange {
+                                table,
+                                ..range.clone()
+                            },
+                            &texts.table,
+                            &name,
+                        )
+                    }),
+                );
+                let key = format!("range {index} start");
+                let label = row_label(texts, &texts.start, row);
+                let field = FieldId {
+                    key: &key,
+                    label: &label,
+                    width: 60.0,
+                };
+                keep(
+                    &mut out,
+                    text_field_ui(ui, state, field, &range.start.to_string(), "", |text| {
+                        let start = parse_whole(texts, text, 0u16, u16::MAX)?;
+                        replaced(
+                            ModbusServerRange {
+                                start,
+                                ..range.clone()
+                            },
+                            &texts.start,
+                            text,
+                        )
+                    }),
+                );
+                let key = format!("range {index} count");
+                let label = row_label(texts, &texts.count, row);
+                let field = FieldId {
+                    key: &key,
+                    label: &label,
+                    width: 60.0,
+                };
+                keep(
+                    &mut out,
+                    text_field_ui(ui, state, field, &range.count.to_string(), "", |text| {
+                        let count = parse_whole(texts, text, 1u16, u16::MAX)?;
+                        replaced(
+                            ModbusServerRange {
+                                count,
+                                ..range.clone()
+                            },
+                            &texts.count,
+                            text,
+                        )
+                    }),
+                );
+                let key = format!("range {index} address");
+                let label = row_label(texts, &texts.area_address, row);
+                let field = FieldId {
+                    key: &key,
+                    label: &label,
+                    width: 90.0,
+                };
+                keep(
+                    &mut out,
+                    text_field_ui(ui, state, field, &range.area_address, "", |text| {
+                        address_problem(texts, range.table, text)?;
+                        let area_address = text.to_uppercase();
+                        replaced(
+                            ModbusServerRange {
+                                area_address: area_address.clone(),
+                                ..range.clone()
+                            },
+                            &texts.area_address,
+                            &area_address,
+                        )
+                    }),
+                );
+                let delete = ui.button(&texts.delete);
+                let label = row_label(texts, &texts.delete, row);
+                delete.widget_info(|| {
+                    egui::WidgetInfo::labeled(egui::Role::Button, true, label.clone())
+                });
+                if delete.clicked() {
+                    let mut list = ranges.to_vec();
+                    list.remove(index);
+                    let label = fill(
+                        &texts.delete_row,
+                        &[("row", &row.to_string()), ("node", &texts.map_ranges)],
+                    );
+                    keep(&mut out, state.settle("ranges", commit(label, list)));
+                }
+                ui.end_row();
+            }
+        });
+    if ui.button(&texts.add_range).clicked() {
+        let mut list = ranges.to_vec();
+        list.push(next_range(ranges));
+        let label = fill(&texts.add_row, &[("node", &texts.map_ranges)]);
+        keep(&mut out, state.settle("ranges", commit(label, list)));
+    }
+    if let Some(reason) = state.refusal("ranges") {
+        ui.label(egui::RichText::new(reason).color(ui.visuals().error_fg_color));
+    }
+    out
+}
+
+/// The four tables with their names, for combo boxes.
+pub(crate) fn table_options(texts: &DeviceTexts) -> Vec<(String, ModbusTable)> {
+    ModbusTable::ALL
+        .iter()
+        .map(|&table| (table_name(texts, table), table))
+        .collect()
+}
+
+/// A table's name in the user's language.
+pub(crate) fn table_name(texts: &DeviceTexts, table: ModbusTable) -> String {
+    match table {
+        ModbusTable::Coil => texts.coil.clone(),
+        ModbusTable::DiscreteInput => texts.discrete_input.clone(),
+        ModbusTable::HoldingRegister => texts.holding_register.clone(),
+        ModbusTable::InputRegister => texts.input_register.clone(),
+    }
+}
+
+/// Why `address` cannot start a range of `table`: not a direct address, or of the wrong size
+/// (a bit table starts at bit 0 of a byte, a register table at a W, D or L address), as the
+/// build requires.
+fn address_problem(texts: &DeviceTexts, table: ModbusTable, address: &str) -> Result<(), String> {
+    let info = address_info(address).map_err(|error| error.to_string())?;
+    let fits = info.bits.is_some()
+        && if table.holds_bits() {
+            info.size_bits == Some(1) && info.bits.as_ref().is_some_and(|bits| bits.start % 8 == 0)
+        } else {
+            matches!(info.size_bits, Some(16 | 32 | 64))
+        };
+    if fits {
+        return Ok(());
+    }
+    let template = if table.holds_bits() {
+        &texts.bit_table_address
+    } else {
+        &texts.register_table_address
+    };
+    Err(fill(template, &[("address", address)]))
+}
+
+/// A new range: one holding register after the last range, mapped onto `%MW0`.
+fn next_range(ranges: &[ModbusServerRange]) -> ModbusServerRange {
+    let start = ranges
+        .iter()
+        .filter(|range| range.table == ModbusTable::HoldingRegister)
+        .map(|range| range.start.saturating_add(range.count))
+        .max()
+        .unwrap_or(0);
+    ModbusServerRange {
+        table: ModbusTable::HoldingRegister,
+        start,
+        count: 1,
+        area_address: "%MW0".to_owned(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_range_starts_at_a_byte_s_first_bit_or_at_a_register_address() {
+        let texts = DeviceTexts::default();
+        assert_eq!(address_problem(&texts, ModbusTable::Coil, "%QX4.0"), Ok(()));
+        assert_eq!(
+            address_problem(&texts, ModbusTable::Coil, "%QX4.1"),
+            Err(
+                "a coil or discrete input range starts at bit 0 of a byte, such as %QX4.0, not %QX4.1"
+                    .into()
+            )
+        );
+        assert_eq!(
+            address_problem(&texts, ModbusTable::HoldingRegister, "%MD2"),
+            Ok(())
+        );
+        assert!(address_problem(&texts, ModbusTable::InputRegister, "%IB2").is_err());
+        assert!(address_problem(&texts, ModbusTable::InputRegister, "MW2").is_err());
+    }
+
+    #[test]
+    fn a_new_range_follows_the_last_holding_register_range() {
+        let first = next_range(&[]);
+        assert_eq!((first.start, first.count), (0, 1));
+        let second = next_range(&[ModbusServerRange { count: 10, ..first }]);
+        assert_eq!(second.start, 10);
+    }
+}

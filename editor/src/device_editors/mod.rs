@@ -1,0 +1,78 @@
+//! The editors of the device tree's nodes, as CODESYS's device editors: the controller (name,
+//! address, Modbus map override), I/O areas (direction, start byte, size), Modbus TCP devices
+//! (address, timing, channel table) and motion axes (task, unit, period, limits, scaling).
+//!
+//! Each editor draws the node's current value, keeps typed text in a [`DeviceEditorState`] and
+//! returns the edits of one gesture as a [`DeviceEdit`]; it never changes the model. A typed
+//! value is checked when it is accepted (Enter or focus lost) by `project_model`'s device checks
+//! and, for a channel's variable, by `compiler::ide`; a bad one stays in its field in the error
+//! colour with the reason beside it and changes nothing.
+
+mod axis;
+mod channels;
+mod controller;
+mod field;
+mod io_area;
+mod map_ranges;
+mod modbus_device;
+mod texts;
+
+pub use axis::axis_editor_ui;
+pub use controller::controller_editor_ui;
+pub use field::DeviceEditorState;
+pub use io_area::io_area_editor_ui;
+pub use modbus_device::modbus_device_editor_ui;
+pub use texts::DeviceTexts;
+
+use project_model::{DeviceProblem, Edit, new_problem};
+
+use texts::fill;
+
+/// The edits of one gesture in a device editor, with the label of its undo step.
+#[derive(Clone, Debug, PartialEq)]
+pub struct DeviceEdit {
+    /// The undo label, in the user's language: "Set port of PLC to 502".
+    pub label: String,
+    /// The edits, applied in order as one undo step.
+    pub edits: Vec<Edit>,
+}
+
+/// Refuses a candidate value that brings a problem the current value does not have.
+fn refuse_new(current: Vec<DeviceProblem>, candidate: Vec<DeviceProblem>) -> Result<(), String> {
+    match new_problem(&current, candidate) {
+        Some(problem) => Err(problem.to_string()),
+        None => Ok(()),
+    }
+}
+
+/// The undo label of a field set to `value` on `node`.
+fn set_label(texts: &DeviceTexts, field: &str, node: &str, value: &str) -> String {
+    fill(
+        &texts.set_field,
+        &[
+            ("field", &field.to_lowercase()),
+            ("node", node),
+            ("value", value),
+        ],
+    )
+}
+
+/// The accessible label of a field of `node`: "Port of PLC".
+fn field_label(texts: &DeviceTexts, field: &str, node: &str) -> String {
+    fill(&texts.field_of, &[("field", field), ("node", node)])
+}
+
+/// The accessible label of a cell of a table row: "Address of row 2".
+fn row_label(texts: &DeviceTexts, field: &str, row: usize) -> String {
+    fill(
+        &texts.field_of_row,
+        &[("field", field), ("row", &row.to_string())],
+    )
+}
+
+/// Keeps the latest edit of the frame: a frame has at most one gesture.
+fn keep(out: &mut Option<DeviceEdit>, edit: Option<DeviceEdit>) {
+    if edit.is_some() {
+        *out = edit;
+    }
+}

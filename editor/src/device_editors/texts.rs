@@ -1,0 +1,217 @@
+//! The words of the device editors, so the app can show them in the user's language.
+//! Templates hold `{name}`-style placeholders, as languages order the parts differently.
+
+/// Every word the controller, I/O area, Modbus device and axis editors show; `Default` is
+/// English.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct DeviceTexts {
+    /// Field: a node's name.
+    pub name: String,
+    /// Field: a host name or IP address.
+    pub host: String,
+    /// Field: a TCP port.
+    pub port: String,
+    /// The controller's note that the password is typed when logging in and never stored.
+    pub password_note: String,
+    /// Check box: the controller uses its own Modbus map instead of the default one.
+    pub modbus_map_override: String,
+    /// Note under the check box when the default map is used.
+    pub default_map_note: String,
+    /// Heading of the map's ranges.
+    pub map_ranges: String,
+    /// Column: a Modbus table.
+    pub table: String,
+    /// Column: the first Modbus address of a map range.
+    pub start: String,
+    /// Column: the number of coils or registers of a map range.
+    pub count: String,
+    /// Column: the located address a map range starts at.
+    pub area_address: String,
+    /// Button: add a map range.
+    pub add_range: String,
+    /// Field: the variable of a new channel, added when the field is left.
+    pub new_channel: String,
+    /// Button: delete a row.
+    pub delete: String,
+    /// Field: an I/O area's direction.
+    pub direction: String,
+    /// Field: an I/O area's first byte.
+    pub start_byte: String,
+    /// Field: an I/O area's size.
+    pub size: String,
+    /// The unit after a size: bytes.
+    pub bytes: String,
+    /// The unit after a time: milliseconds.
+    pub milliseconds: String,
+    /// Field and column: a comment.
+    pub comment: String,
+    /// Direction: inputs.
+    pub inputs: String,
+    /// Direction: outputs.
+    pub outputs: String,
+    /// Direction: markers.
+    pub markers: String,
+    /// Field: a Modbus unit identifier.
+    pub unit_id: String,
+    /// Field: the word order of wide values.
+    pub word_order: String,
+    /// Word order: high word first.
+    pub high_first: String,
+    /// Word order: low word first.
+    pub low_first: String,
+    /// Field: the poll interval.
+    pub poll_interval: String,
+    /// Field: the response timeout.
+    pub timeout: String,
+    /// Heading of a device's channel table.
+    pub channels: String,
+    /// Column: a channel's variable.
+    pub variable: String,
+    /// Column: a channel's address.
+    pub address: String,
+    /// Column: a channel's data type.
+    pub data_type: String,
+    /// Table: coils.
+    pub coil: String,
+    /// Table: discrete inputs.
+    pub discrete_input: String,
+    /// Table: holding registers.
+    pub holding_register: String,
+    /// Table: input registers.
+    pub input_register: String,
+    /// Field: an axis's kind.
+    pub kind: String,
+    /// Axis kind: virtual.
+    pub virtual_axis: String,
+    /// Field: the task that updates an axis.
+    pub task: String,
+    /// Field: the user unit.
+    pub unit: String,
+    /// Check box: the axis is rotary with a modulo period.
+    pub modulo: String,
+    /// Field: the modulo period.
+    pub modulo_period: String,
+    /// Check box: software limits are checked.
+    pub software_limits: String,
+    /// Field: the negative software limit.
+    pub negative_limit: String,
+    /// Field: the positive software limit.
+    pub positive_limit: String,
+    /// Field: the velocity limit.
+    pub velocity: String,
+    /// Field: the acceleration limit.
+    pub acceleration: String,
+    /// Field: the deceleration limit.
+    pub deceleration: String,
+    /// Field: the jerk limit.
+    pub jerk: String,
+    /// Field: drive increments of the scaling.
+    pub increments: String,
+    /// Field: user units of the scaling.
+    pub units: String,
+    /// Heading of the scaling fields.
+    pub scaling: String,
+    /// Accessible label of a field: `{field}`, `{node}`.
+    pub field_of: String,
+    /// Accessible label of a cell of a table row: `{field}`, `{row}`.
+    pub field_of_row: String,
+    /// Undo label of a changed field: `{field}`, `{node}`, `{value}`.
+    pub set_field: String,
+    /// Undo label of an added row: `{node}`.
+    pub add_row: String,
+    /// Undo label of a deleted row: `{row}`, `{node}`.
+    pub delete_row: String,
+    /// A refused start of a bit table's range: `{address}`.
+    pub bit_table_address: String,
+    /// A refused start of a register table's range: `{address}`.
+    pub register_table_address: String,
+    /// A refused number: `{text}`.
+    pub not_a_number: String,
+    /// A refused whole number: `{text}`, `{min}`, `{max}`.
+    pub not_a_whole_number: String,
+}
+
+impl Default for DeviceTexts {
+    fn default() -> Self {
+        let s = |text: &str| text.to_owned();
+        Self {
+            name: s("Name"),
+            host: s("Host"),
+            port: s("Port"),
+            password_note: s(
+                "The password is typed when logging in and is never stored in the project",
+            ),
+            modbus_map_override: s("Own Modbus map"),
+            default_map_note: s("The runtime's default Modbus map is used"),
+            map_ranges: s("Map ranges"),
+            table: s("Table"),
+            start: s("Start"),
+            count: s("Count"),
+            area_address: s("Located address"),
+            add_range: s("Add range"),
+            new_channel: s("Add channel for variable"),
+            delete: s("Delete"),
+            direction: s("Direction"),
+            start_byte: s("Start byte"),
+            size: s("Size"),
+            bytes: s("bytes"),
+            milliseconds: s("ms"),
+            comment: s("Comment"),
+            inputs: s("Inputs"),
+            outputs: s("Outputs"),
+            markers: s("Markers"),
+            unit_id: s("Unit id"),
+            word_order: s("Word order"),
+            high_first: s("High word first"),
+            low_first: s("Low word first"),
+            poll_interval: s("Poll interval"),
+            timeout: s("Timeout"),
+            channels: s("Channels"),
+            variable: s("Variable"),
+            address: s("Address"),
+            data_type: s("Data type"),
+            coil: s("Coil"),
+            discrete_input: s("Discrete input"),
+            holding_register: s("Holding register"),
+            input_register: s("Input register"),
+            kind: s("Kind"),
+            virtual_axis: s("Virtual"),
+            task: s("Task"),
+            unit: s("Unit"),
+            modulo: s("Modulo (rotary)"),
+            modulo_period: s("Modulo period"),
+            software_limits: s("Software limits"),
+            negative_limit: s("Negative limit"),
+            positive_limit: s("Positive limit"),
+            velocity: s("Velocity"),
+            acceleration: s("Acceleration"),
+            deceleration: s("Deceleration"),
+            jerk: s("Jerk"),
+            increments: s("Increments"),
+            units: s("Per units"),
+            scaling: s("Scaling"),
+            field_of: s("{field} of {node}"),
+            field_of_row: s("{field} of row {row}"),
+            set_field: s("Set {field} of {node} to {value}"),
+            add_row: s("Add row to {node}"),
+            delete_row: s("Delete row {row} of {node}"),
+            bit_table_address: s(
+                "a coil or discrete input range starts at bit 0 of a byte, such as %QX4.0, not {address}",
+            ),
+            register_table_address: s(
+                "a register range starts at a W, D or L address, such as %MW0, not {address}",
+            ),
+            not_a_number: s("'{text}' is not a number"),
+            not_a_whole_number: s("'{text}' is not a whole number from {min} to {max}"),
+        }
+    }
+}
+
+/// `template` with each `{key}` replaced by its value.
+pub(crate) fn fill(template: &str, pairs: &[(&str, &str)]) -> String {
+    pairs
+        .iter()
+        .fold(template.to_owned(), |text, (key, value)| {
+            text.replace(&format!("{{{key}}}"), value)
+        })
+}
