@@ -2,12 +2,13 @@
 //! type: `TRUE`, `42`, `16#FF`, `-1.5`, `T#1s500ms`, `D#2024-01-31`, `'text'`.
 
 use compiler::literal;
+use online::{TYPE_STRING, TYPE_WSTRING};
 use program_image::Elementary as E;
 
-/// The bytes of `text` as a value of the type with tag `tag` (strings: 0x20 STRING, 0x21
-/// WSTRING, with `length` characters), or why it is not one.
+/// The bytes of `text` as a value of the type with tag `tag` (strings: [`TYPE_STRING`] and
+/// [`TYPE_WSTRING`], with `length` characters), or why it is not one.
 pub fn parse(text: &str, tag: u8, length: u16) -> Result<Vec<u8>, String> {
-    if tag == 0x20 || tag == 0x21 {
+    if tag == TYPE_STRING || tag == TYPE_WSTRING {
         let inner = text
             .strip_prefix(['\'', '"'])
             .and_then(|t| t.strip_suffix(['\'', '"']))
@@ -19,7 +20,7 @@ pub fn parse(text: &str, tag: u8, length: u16) -> Result<Vec<u8>, String> {
                 "'{inner}' is longer than the {length} characters the string holds"
             ));
         }
-        let wide = tag == 0x21;
+        let wide = tag == TYPE_WSTRING;
         let mut bytes: Vec<u8> = if wide {
             inner.encode_utf16().flat_map(u16::to_le_bytes).collect()
         } else {
