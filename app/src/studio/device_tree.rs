@@ -78,7 +78,7 @@ pub(crate) fn devices_pane_ui(
     let mut planned = Vec::new();
     for action in &response.actions {
         let deletes = matches!(action, TreeAction::Delete(_));
-        planned.push((deletes, plan(project, action)));
+        planned.push((deletes, plan(project, action, language)));
     }
     if let Some(node) = response.clicked {
         commands.push(Command::Select(Some(node)));

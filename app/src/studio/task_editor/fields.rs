@@ -3,7 +3,7 @@
 use project_model::{Project, Task, TaskKind, Watchdog, is_valid_identifier};
 
 use super::time_literal::{format_time_us, parse_time_us};
-use crate::studio::i18n::Text;
+use crate::studio::i18n::{Language, Text};
 use crate::studio::tree_actions::{NameScope, name_problem};
 
 /// A field of a task typed as text.
@@ -68,13 +68,14 @@ impl Field {
         }
     }
 
-    /// The task with this field set to `input`, and the undo label of the change; or the reason
-    /// the input is refused.
+    /// The task with this field set to `input`, and the undo label of the change in
+    /// `language`; or the reason the input is refused.
     pub fn apply(
         self,
         project: &Project,
         task: &Task,
         input: &str,
+        language: Language,
     ) -> Result<(Task, String), String> {
         let input = input.trim();
         let mut changed = task.clone();
@@ -87,12 +88,13 @@ impl Field {
                     return Err(problem);
                 }
                 changed.name = input.to_owned();
-                format!("Rename task {name} to {input}")
+                Text::UndoRenameTask.fill(language, &[("name", name), ("new", input)])
             }
             Self::Interval => {
                 let interval_us = parse_time_us(input)?;
                 changed.kind = TaskKind::Cyclic { interval_us };
-                format!("Set interval of {name} to {}", format_time_us(interval_us))
+                let value = format_time_us(interval_us);
+                Text::UndoSetInterval.fill(language, &[("name", name), ("value", &value)])
             }
             Self::Trigger => {
                 let valid = !input.is_empty() && input.split('.').all(is_valid_identifier);
@@ -104,7 +106,7 @@ impl Field {
                 changed.kind = TaskKind::Event {
                     trigger: input.to_owned(),
                 };
-                format!("Set trigger of {name} to {input}")
+                Text::UndoSetTrigger.fill(language, &[("name", name), ("value", input)])
             }
             Self::Priority => {
                 let priority = input
@@ -117,14 +119,16 @@ impl Field {
                         )
                     })?;
                 changed.priority = priority;
-                format!("Set priority of {name} to {priority}")
+                let value = priority.to_string();
+                Text::UndoSetPriority.fill(language, &[("name", name), ("value", &value)])
             }
             Self::WatchdogTime => {
                 let time_us = parse_time_us(input)?;
                 let mut watchdog = task.watchdog.unwrap_or_else(|| default_watchdog(task));
                 watchdog.time_us = time_us;
                 changed.watchdog = Some(watchdog);
-                format!("Set watchdog time of {name} to {}", format_time_us(time_us))
+                let value = format_time_us(time_us);
+                Text::UndoSetWatchdogTime.fill(language, &[("name", name), ("value", &value)])
             }
             Self::Sensitivity => {
                 let sensitivity = input
@@ -139,7 +143,8 @@ impl Field {
                 let mut watchdog = task.watchdog.unwrap_or_else(|| default_watchdog(task));
                 watchdog.sensitivity = sensitivity;
                 changed.watchdog = Some(watchdog);
-                format!("Set watchdog sensitivity of {name} to {sensitivity}")
+                let value = sensitivity.to_string();
+                Text::UndoSetSensitivity.fill(language, &[("name", name), ("value", &value)])
             }
         };
         Ok((changed, label))
@@ -189,12 +194,18 @@ mod tests {
     #[test]
     fn valid_values_change_the_task_and_say_so() {
         let project = Project::default();
-        let (changed, label) = Field::Priority.apply(&project, &task(), "5").unwrap();
+        let (changed, label) = Field::Priority
+            .apply(&project, &task(), "5", Language::English)
+            .unwrap();
         assert_eq!(changed.priority, 5);
         assert_eq!(label, "Set priority of MainTask to 5");
-        let (changed, _) = Field::Interval.apply(&project, &task(), "T#2ms").unwrap();
+        let (changed, _) = Field::Interval
+            .apply(&project, &task(), "T#2ms", Language::English)
+            .unwrap();
         assert_eq!(changed.kind, TaskKind::Cyclic { interval_us: 2000 });
-        let (changed, _) = Field::Sensitivity.apply(&project, &task(), "3").unwrap();
+        let (changed, _) = Field::Sensitivity
+            .apply(&project, &task(), "3", Language::English)
+            .unwrap();
         assert_eq!(
             changed.watchdog,
             Some(Watchdog {
@@ -207,11 +218,31 @@ mod tests {
     #[test]
     fn out_of_range_values_are_refused() {
         let project = Project::default();
-        assert!(Field::Priority.apply(&project, &task(), "32").is_err());
-        assert!(Field::Priority.apply(&project, &task(), "-1").is_err());
-        assert!(Field::Interval.apply(&project, &task(), "0").is_err());
-        assert!(Field::Sensitivity.apply(&project, &task(), "0").is_err());
-        assert!(Field::Trigger.apply(&project, &task(), "a..b").is_err());
+        assert!(
+            Field::Priority
+                .apply(&project, &task(), "32", Language::English)
+                .is_err()
+        );
+        assert!(
+            Field::Priority
+                .apply(&project, &task(), "-1", Language::English)
+                .is_err()
+        );
+        assert!(
+            Field::Interval
+                .apply(&project, &task(), "0", Language::English)
+                .is_err()
+        );
+        assert!(
+            Field::Sensitivity
+                .apply(&project, &task(), "0", Language::English)
+                .is_err()
+        );
+        assert!(
+            Field::Trigger
+                .apply(&project, &task(), "a..b", Language::English)
+                .is_err()
+        );
         assert!(call_problem(&project, &task(), "Missing").is_some());
     }
 }

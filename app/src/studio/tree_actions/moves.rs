@@ -4,6 +4,7 @@ use project_model::{Edit, EditError, Project, TreeEdit};
 
 use super::lists::ListKind;
 use super::plan_step::{Plan, locate};
+use crate::studio::i18n::{Language, Text};
 use crate::studio::tree_node::TreeNode;
 
 /// Where a dragged node lands relative to the node it is dropped on.
@@ -52,12 +53,13 @@ pub fn plan_move(
     dragged: &TreeNode,
     target: &TreeNode,
     place: DropPlace,
+    language: Language,
 ) -> Result<Option<Plan>, String> {
     if !accepts(dragged, target) {
         return Ok(None);
     }
     if let Some((kind, name)) = ListKind::of_entry(dragged) {
-        return Ok(plan_list_move(project, kind, name, target, place));
+        return Ok(plan_list_move(project, kind, name, target, place, language));
     }
     let missing = || EditError::NoSuchObject(dragged.title(Some(project))).to_string();
     let (from_folder, from_index) = locate(project, dragged).ok_or_else(missing)?;
@@ -94,14 +96,16 @@ pub fn plan_move(
     if to_folder == from_folder && to_index == from_index {
         return Ok(None);
     }
-    let label = match (target, place) {
-        (TreeNode::Application, _) => format!("Move {name} into the application"),
-        (TreeNode::Folder(_), DropPlace::Into) => {
-            format!("Move {name} into {}", target.title(Some(project)))
-        }
-        (_, DropPlace::After) => format!("Move {name} after {}", target.title(Some(project))),
-        _ => format!("Move {name} before {}", target.title(Some(project))),
+    let template = match (target, place) {
+        (TreeNode::Application, _) => Text::UndoMoveIntoApplication,
+        (TreeNode::Folder(_), DropPlace::Into) => Text::UndoMoveInto,
+        (_, DropPlace::After) => Text::UndoMoveAfter,
+        _ => Text::UndoMoveBefore,
     };
+    let label = template.fill(
+        language,
+        &[("name", &name), ("target", &target.title(Some(project)))],
+    );
     let moved = match dragged {
         TreeNode::Folder(_) => {
             let mut path = to_folder.clone();
@@ -129,6 +133,7 @@ fn plan_list_move(
     name: &str,
     target: &TreeNode,
     place: DropPlace,
+    language: Language,
 ) -> Option<Plan> {
     let from = kind.index_of(project, name)?;
     let (_, target_name) = ListKind::of_entry(target)?;
@@ -142,13 +147,13 @@ fn plan_list_move(
     if to == from {
         return None;
     }
-    let side = if place == DropPlace::After {
-        "after"
+    let template = if place == DropPlace::After {
+        Text::UndoMoveAfter
     } else {
-        "before"
+        Text::UndoMoveBefore
     };
     Some(Plan {
-        label: format!("Move {name} {side} {target_name}"),
+        label: template.fill(language, &[("name", name), ("target", target_name)]),
         edits: vec![kind.moved(from, to)],
         open: None,
         select: Some(kind.entry(name.to_owned())),
