@@ -104,7 +104,7 @@ pub(crate) fn devices_pane_ui(
                 }
             }
             Ok(None) => {}
-            Err(reason) => commands.error(reason),
+            Err(refusal) => commands.error(refusal.text(language)),
         }
     }
 }

@@ -6,6 +6,7 @@
 //! an accepted one becomes one `Edit::Tasks(ListEdit::Replace { .. })`, one undo step.
 
 mod fields;
+mod refusal;
 mod time_literal;
 
 use std::collections::HashMap;
@@ -256,6 +257,7 @@ impl Editor<'_> {
                             self.replace(label, index, item);
                         }
                         Err(reason) => {
+                            let reason = reason.text(language);
                             self.state.refused.insert(key.clone(), reason);
                         }
                     }
@@ -431,7 +433,7 @@ impl Editor<'_> {
             if ui.button(Text::AddCall.get(language)).clicked() || entered {
                 let program = self.state.call.trim().to_owned();
                 match call_problem(self.project, task, &program) {
-                    Some(reason) => self.state.call_refused = Some(reason),
+                    Some(reason) => self.state.call_refused = Some(reason.text(language)),
                     None => {
                         let mut item = task.clone();
                         item.programs.push(program.clone());

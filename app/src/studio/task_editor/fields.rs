@@ -2,6 +2,7 @@
 
 use project_model::{Project, Task, TaskKind, Watchdog, is_valid_identifier};
 
+use super::refusal::TaskRefusal;
 use super::time_literal::{format_time_us, parse_time_us};
 use crate::studio::i18n::{Language, Text};
 use crate::studio::tree_actions::{NameScope, name_problem};
@@ -76,7 +77,7 @@ impl Field {
         task: &Task,
         input: &str,
         language: Language,
-    ) -> Result<(Task, String), String> {
+    ) -> Result<(Task, String), TaskRefusal> {
         let input = input.trim();
         let mut changed = task.clone();
         let name = &task.name;
@@ -85,7 +86,7 @@ impl Field {
                 if let Some(problem) =
                     name_problem(project, NameScope::Task, input, Some(name.as_str()))
                 {
-                    return Err(problem);
+                    return Err(TaskRefusal::Name(problem));
                 }
                 changed.name = input.to_owned();
                 Text::UndoRenameTask.fill(language, &[("name", name), ("new", input)])
@@ -99,9 +100,7 @@ impl Field {
             Self::Trigger => {
                 let valid = !input.is_empty() && input.split('.').all(is_valid_identifier);
                 if !valid {
-                    return Err(format!(
-                        "'{input}' is not a variable: write its path, such as GVL_IO.xStart"
-                    ));
+                    return Err(TaskRefusal::NotAVariable(input.to_owned()));
                 }
                 changed.kind = TaskKind::Event {
                     trigger: input.to_owned(),
@@ -113,10 +112,9 @@ impl Field {
                     .parse::<u8>()
                     .ok()
                     .filter(|p| *p <= LOWEST_PRIORITY)
-                    .ok_or_else(|| {
-                        format!(
-                            "'{input}' is not a priority: use 0 (highest) to {LOWEST_PRIORITY} (lowest)"
-                        )
+                    .ok_or_else(|| TaskRefusal::NotAPriority {
+                        input: input.to_owned(),
+                        lowest: LOWEST_PRIORITY,
                     })?;
                 changed.priority = priority;
                 let value = priority.to_string();
@@ -135,11 +133,7 @@ impl Field {
                     .parse::<u32>()
                     .ok()
                     .filter(|s| *s >= 1)
-                    .ok_or_else(|| {
-                        format!(
-                            "'{input}' is not a sensitivity: give how many overruns in a row trip the watchdog (1 or more)"
-                        )
-                    })?;
+                    .ok_or_else(|| TaskRefusal::NotASensitivity(input.to_owned()))?;
                 let mut watchdog = task.watchdog.unwrap_or_else(|| default_watchdog(task));
                 watchdog.sensitivity = sensitivity;
                 changed.watchdog = Some(watchdog);
@@ -153,24 +147,27 @@ impl Field {
 
 /// Why `program` cannot be added to `task`'s calls, or `None` when it can: it must be a
 /// PROGRAM of the project that the task does not call yet.
-pub fn call_problem(project: &Project, task: &Task, program: &str) -> Option<String> {
+pub fn call_problem(project: &Project, task: &Task, program: &str) -> Option<TaskRefusal> {
     let program = program.trim();
     if program.is_empty() {
-        return Some("choose a program to call".to_owned());
+        return Some(TaskRefusal::NoProgramChosen);
     }
     let is_program = matches!(
         project.application.object(program),
         Some(project_model::Object::Pou(pou)) if pou.kind == project_model::PouKind::Program
     );
     if !is_program {
-        return Some(format!("the project has no PROGRAM named '{program}'"));
+        return Some(TaskRefusal::NoSuchProgram(program.to_owned()));
     }
     if task
         .programs
         .iter()
         .any(|called| project_model::same_identifier(called, program))
     {
-        return Some(format!("{} already calls {program}", task.name));
+        return Some(TaskRefusal::AlreadyCalls {
+            task: task.name.clone(),
+            program: program.to_owned(),
+        });
     }
     None
 }

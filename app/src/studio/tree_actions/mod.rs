@@ -12,6 +12,7 @@ mod moves;
 mod names;
 mod new_objects;
 mod plan_step;
+mod refusal;
 #[cfg(test)]
 mod tests;
 
@@ -25,6 +26,7 @@ pub use moves::{DropPlace, accepts, place_at, plan_move};
 pub use names::{NameScope, name_problem, unique_name};
 pub use new_objects::NewObject;
 pub use plan_step::{Plan, locate};
+pub use refusal::Refusal;
 
 use self::new_objects::{new_pou, pou_kind_description};
 use super::i18n::{Language, Text};
@@ -40,12 +42,12 @@ pub struct TreeEditState {
 }
 
 /// The edits that carry out `action` on `project`, labelled in `language`: `Ok(None)` when it
-/// changes nothing, or the reason it cannot be done.
+/// changes nothing, or why it cannot be done.
 pub fn plan(
     project: &Project,
     action: &TreeAction,
     language: Language,
-) -> Result<Option<Plan>, String> {
+) -> Result<Option<Plan>, Refusal> {
     match action {
         TreeAction::AddPou {
             folder,
@@ -122,11 +124,11 @@ pub fn plan(
     }
 }
 
-fn existing_folder<'a>(project: &'a Project, path: &[String]) -> Result<&'a Folder, String> {
+fn existing_folder<'a>(project: &'a Project, path: &[String]) -> Result<&'a Folder, Refusal> {
     project
         .application
         .folder(path)
-        .ok_or_else(|| EditError::NoSuchFolder(path.join("/")).to_string())
+        .ok_or_else(|| EditError::NoSuchFolder(path.join("/")).into())
 }
 
 fn add_object(
@@ -135,7 +137,7 @@ fn add_object(
     object: Object,
     description: &str,
     language: Language,
-) -> Result<Plan, String> {
+) -> Result<Plan, Refusal> {
     let parent = existing_folder(project, folder)?;
     let name = object.name().to_owned();
     Ok(Plan {
@@ -150,8 +152,8 @@ fn add_object(
     })
 }
 
-fn missing(project: &Project, node: &TreeNode) -> String {
-    EditError::NoSuchObject(node.title(Some(project))).to_string()
+fn missing(project: &Project, node: &TreeNode) -> Refusal {
+    EditError::NoSuchObject(node.title(Some(project))).into()
 }
 
 fn plan_rename(
@@ -159,7 +161,7 @@ fn plan_rename(
     node: &TreeNode,
     name: &str,
     language: Language,
-) -> Result<Option<Plan>, String> {
+) -> Result<Option<Plan>, Refusal> {
     let (scope, old) = rename_scope(node).ok_or_else(|| missing(project, node))?;
     if old == name {
         return Ok(None);
@@ -239,7 +241,7 @@ fn task_calls_renamed(project: &Project, old: &str, new: &str) -> Vec<Edit> {
         .collect()
 }
 
-fn plan_duplicate(project: &Project, node: &TreeNode, language: Language) -> Result<Plan, String> {
+fn plan_duplicate(project: &Project, node: &TreeNode, language: Language) -> Result<Plan, Refusal> {
     if let Some((kind, name)) = ListKind::of_entry(node) {
         let index = kind
             .index_of(project, name)
@@ -313,7 +315,7 @@ fn rename_objects(folder: &mut Folder, rename: &mut impl FnMut(&mut Object)) {
     }
 }
 
-fn plan_delete(project: &Project, node: &TreeNode, language: Language) -> Result<Plan, String> {
+fn plan_delete(project: &Project, node: &TreeNode, language: Language) -> Result<Plan, Refusal> {
     let name = node.title(Some(project));
     let edit = if let Some((kind, entry)) = ListKind::of_entry(node) {
         let index = kind

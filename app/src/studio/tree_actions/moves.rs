@@ -4,6 +4,7 @@ use project_model::{Edit, EditError, Project, TreeEdit};
 
 use super::lists::ListKind;
 use super::plan_step::{Plan, locate};
+use super::refusal::Refusal;
 use crate::studio::i18n::{Language, Text};
 use crate::studio::tree_node::TreeNode;
 
@@ -54,14 +55,14 @@ pub fn plan_move(
     target: &TreeNode,
     place: DropPlace,
     language: Language,
-) -> Result<Option<Plan>, String> {
+) -> Result<Option<Plan>, Refusal> {
     if !accepts(dragged, target) {
         return Ok(None);
     }
     if let Some((kind, name)) = ListKind::of_entry(dragged) {
         return Ok(plan_list_move(project, kind, name, target, place, language));
     }
-    let missing = || EditError::NoSuchObject(dragged.title(Some(project))).to_string();
+    let missing = || Refusal::from(EditError::NoSuchObject(dragged.title(Some(project))));
     let (from_folder, from_index) = locate(project, dragged).ok_or_else(missing)?;
     let (to_folder, slot) = match (target, place) {
         (TreeNode::Application, _) => (Vec::new(), project.application.children.len()),
@@ -69,7 +70,7 @@ pub fn plan_move(
             let folder = project
                 .application
                 .folder(path)
-                .ok_or_else(|| EditError::NoSuchFolder(path.join("/")).to_string())?;
+                .ok_or_else(|| Refusal::from(EditError::NoSuchFolder(path.join("/"))))?;
             (path.clone(), folder.children.len())
         }
         (_, place) => {
@@ -86,7 +87,7 @@ pub fn plan_move(
     if let TreeNode::Folder(path) = dragged
         && to_folder.starts_with(path)
     {
-        return Err(EditError::MoveIntoItself.to_string());
+        return Err(EditError::MoveIntoItself.into());
     }
     let to_index = if to_folder == from_folder && from_index < slot {
         slot - 1
