@@ -466,6 +466,10 @@ pub enum Text {
     ChooseProgramToCall,
     NoProgramNamed,
     AlreadyCalls,
+    TreeFreewheeling,
+    TreeEventTask,
+    TreeModuloAxis,
+    TreeLinearAxis,
 }
 
 impl Text {

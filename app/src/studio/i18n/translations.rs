@@ -673,6 +673,10 @@ impl Text {
                 "项目中没有名为“{program}”的 PROGRAM",
             ),
             Self::AlreadyCalls => ("{task} already calls {program}", "{task} 已调用 {program}"),
+            Self::TreeFreewheeling => ("freewheeling", "自由运行"),
+            Self::TreeEventTask => ("event {trigger}", "事件 {trigger}"),
+            Self::TreeModuloAxis => ("modulo {period} {unit}", "模 {period} {unit}"),
+            Self::TreeLinearAxis => ("linear, {unit}", "线性，{unit}"),
         };
         match language {
             Language::English => english,
