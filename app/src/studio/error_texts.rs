@@ -1,9 +1,11 @@
-//! The refusals of the project model and the compiler's literal parser in the interface
-//! language: each variant maps to a [`Text`] template, so a new variant fails to compile until
+//! The refusals of the project model, the compiler's literal parser and the app's value parser
+//! in the interface language: each variant maps to a [`Text`] template, so a new variant fails to compile until
 //! it is translated, and the user never reads a library's English `Display`.
 
 use compiler::literal::LiteralError;
 use project_model::EditError;
+
+use crate::literal_value::ValueError;
 
 use super::i18n::{Language, Text};
 
@@ -81,6 +83,31 @@ pub fn literal_error_text(error: &LiteralError, language: Language) -> String {
     match extra {
         Some((key, value)) => template.fill(language, &[("text", text), (key, value)]),
         None => template.fill(language, &[("text", text)]),
+    }
+}
+
+/// Why a typed value is not one of its variable's type, in `language`.
+pub fn value_error_text(error: &ValueError, language: Language) -> String {
+    match error {
+        ValueError::NotAString(text) => Text::ValueNotAString.fill(language, &[("text", text)]),
+        ValueError::TooLong { text, length } => {
+            Text::ValueTooLong.fill(language, &[("text", text), ("length", &length.to_string())])
+        }
+        ValueError::NotWritable => Text::ValueNotWritable.get(language).to_owned(),
+        ValueError::NotAValue { text, ty } => {
+            Text::ValueNotAValue.fill(language, &[("text", text), ("ty", ty)])
+        }
+        ValueError::BadLiteral { text, ty, error } => Text::ValueBadLiteral.fill(
+            language,
+            &[
+                ("text", text),
+                ("ty", ty),
+                ("reason", &literal_error_text(error, language)),
+            ],
+        ),
+        ValueError::OutOfRange { text, ty } => {
+            Text::ValueOutOfRange.fill(language, &[("text", text), ("ty", ty)])
+        }
     }
 }
 
@@ -171,6 +198,43 @@ mod tests {
             if !matches!(error, EditError::InvalidObject(_)) {
                 assert_ne!(chinese, error.to_string());
             }
+        }
+    }
+
+    #[test]
+    fn every_value_error_reads_as_its_english_message_and_has_chinese() {
+        let errors = [
+            ValueError::NotAString(text("abc")),
+            ValueError::TooLong {
+                text: text("too long"),
+                length: 3,
+            },
+            ValueError::NotWritable,
+            ValueError::NotAValue {
+                text: text("maybe"),
+                ty: "BOOL",
+            },
+            ValueError::BadLiteral {
+                text: text("16#G"),
+                ty: "INT",
+                error: LiteralError::BadDigit {
+                    text: text("16#G"),
+                    base: 16,
+                },
+            },
+            ValueError::OutOfRange {
+                text: text("300"),
+                ty: "SINT",
+            },
+        ];
+        for error in errors {
+            assert_eq!(
+                value_error_text(&error, Language::English),
+                error.to_string()
+            );
+            let chinese = value_error_text(&error, Language::SimplifiedChinese);
+            assert!(!chinese.contains('{'), "{chinese}");
+            assert_ne!(chinese, error.to_string());
         }
     }
 

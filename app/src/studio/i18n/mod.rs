@@ -470,6 +470,12 @@ pub enum Text {
     TreeEventTask,
     TreeModuloAxis,
     TreeLinearAxis,
+    ValueNotAString,
+    ValueTooLong,
+    ValueNotWritable,
+    ValueNotAValue,
+    ValueBadLiteral,
+    ValueOutOfRange,
 }
 
 impl Text {

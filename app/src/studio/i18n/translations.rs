@@ -677,6 +677,30 @@ impl Text {
             Self::TreeEventTask => ("event {trigger}", "事件 {trigger}"),
             Self::TreeModuloAxis => ("modulo {period} {unit}", "模 {period} {unit}"),
             Self::TreeLinearAxis => ("linear, {unit}", "线性，{unit}"),
+            Self::ValueNotAString => (
+                "'{text}' is not a string; write it in quotes, such as 'abc'",
+                "“{text}”不是字符串；请用引号括起来，例如 'abc'",
+            ),
+            Self::ValueTooLong => (
+                "'{text}' is longer than the {length} characters the string holds",
+                "“{text}”超过了字符串可容纳的 {length} 个字符",
+            ),
+            Self::ValueNotWritable => (
+                "only elementary values and strings can be written",
+                "只能写入基本类型的值和字符串",
+            ),
+            Self::ValueNotAValue => (
+                "'{text}' is not a value of {ty}",
+                "“{text}”不是 {ty} 类型的值",
+            ),
+            Self::ValueBadLiteral => (
+                "'{text}' is not a value of {ty}: {reason}",
+                "“{text}”不是 {ty} 类型的值：{reason}",
+            ),
+            Self::ValueOutOfRange => (
+                "{text} is outside the range of {ty}",
+                "{text} 超出 {ty} 的范围",
+            ),
         };
         match language {
             Language::English => english,
