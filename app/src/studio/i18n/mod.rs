@@ -476,6 +476,9 @@ pub enum Text {
     ValueNotAValue,
     ValueBadLiteral,
     ValueOutOfRange,
+    BuildNoThread,
+    BuildHiddenErrors,
+    BuildCompilerStopped,
 }
 
 impl Text {

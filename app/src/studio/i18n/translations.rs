@@ -701,6 +701,15 @@ impl Text {
                 "{text} is outside the range of {ty}",
                 "{text} 超出 {ty} 的范围",
             ),
+            Self::BuildNoThread => ("no build thread: {reason}", "无法启动编译线程：{reason}"),
+            Self::BuildHiddenErrors => (
+                "the compiler found errors the checker did not report",
+                "编译器发现了检查器未报告的错误",
+            ),
+            Self::BuildCompilerStopped => (
+                "the compiler stopped unexpectedly (an internal error); your edits are kept",
+                "编译器意外停止（内部错误）；您的编辑已保留",
+            ),
         };
         match language {
             Language::English => english,
