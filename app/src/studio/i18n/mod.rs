@@ -367,8 +367,8 @@ pub enum Text {
     BoundToNoDevice,
     DeviceNotPolled,
     DeviceBusy,
-    // Undo labels, refusals and accessible labels that name what they act on (fill them with
-    // `Text::fill`).
+    // Undo labels, accessible labels, tree details and the refusals of the tree, the task
+    // editor, value entry and the build; the templates among them are filled with `Text::fill`.
     UndoAddFolder,
     UndoAdd,
     UndoRename,
