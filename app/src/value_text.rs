@@ -1,7 +1,7 @@
 //! Values read from a target as text and numbers: what the command line prints and what the
 //! studio's watch, force and trace views show.
 
-use online::{Place, Resolved};
+use online::{Place, Resolved, TYPE_STRING, TYPE_WSTRING};
 use program_image::Elementary;
 
 /// The first eight bytes of a value, little-endian, as the raw bits of an elementary value
@@ -24,7 +24,7 @@ pub fn show(resolved: &Resolved, bytes: &[u8]) -> String {
         };
     }
     match resolved.type_tag {
-        0x20 => format!(
+        TYPE_STRING => format!(
             "'{}'",
             bytes
                 .iter()
@@ -32,7 +32,7 @@ pub fn show(resolved: &Resolved, bytes: &[u8]) -> String {
                 .map(|&b| char::from(b))
                 .collect::<String>()
         ),
-        0x21 => {
+        TYPE_WSTRING => {
             let units: Vec<u16> = bytes
                 .chunks_exact(2)
                 .map(|c| u16::from_le_bytes([c[0], c[1]]))

@@ -110,14 +110,6 @@ fn bad_digit(text: &str, base: u32) -> String {
     }
 }
 
-/// The message of a literal error, for callers that report errors as text (the studio's task
-/// editor and online value entry).
-impl From<LiteralError> for String {
-    fn from(error: LiteralError) -> Self {
-        error.to_string()
-    }
-}
-
 /// Parses an integer literal: `123`, `1_000`, `16#FF`, `2#1010_1010`, `8#777`.
 pub fn parse_integer(text: &str) -> Result<u128, LiteralError> {
     let (base, digits) = match text.split_once('#') {

@@ -20,3 +20,6 @@ pub use online_protocol::{
     Fault, Identity, Place, ResetKind as Reset, Resolved, Snapshot, TargetState, TaskInfo,
     TraceState, TraceStatus, Value,
 };
+// The string type tags of a resolved variable, so callers tell strings from elementary values
+// without writing the protocol's numbers by hand or depending on the protocol crate.
+pub use online_protocol::{TYPE_STRING, TYPE_WSTRING};

@@ -11,6 +11,7 @@ use std::time::{Duration, Instant};
 use compiler::{CompileError, Severity};
 use project_model::{Project, TextTarget};
 
+use super::i18n::{Language, Text};
 use super::online::BuiltImage;
 use super::tree_node::TreeNode;
 
@@ -35,6 +36,32 @@ pub struct BuildMessage {
     pub place: Option<(TextTarget, Range<usize>)>,
 }
 
+/// Why a build produced no program although the checker found no error.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum BuildFailure {
+    /// The build thread did not start, with the system's reason.
+    NoThread(String),
+    /// The code generator cannot compile something the checker accepts, or hit a limit; the
+    /// compiler's message names the place, like the checker's findings.
+    Unsupported(String),
+    /// The compiler found errors the checker did not report.
+    HiddenErrors,
+    /// The build thread died without an outcome.
+    CompilerStopped,
+}
+
+impl BuildFailure {
+    /// The failure as the user reads it, in `language`.
+    pub fn text(&self, language: Language) -> String {
+        match self {
+            Self::NoThread(reason) => Text::BuildNoThread.fill(language, &[("reason", reason)]),
+            Self::Unsupported(message) => message.clone(),
+            Self::HiddenErrors => Text::BuildHiddenErrors.get(language).to_owned(),
+            Self::CompilerStopped => Text::BuildCompilerStopped.get(language).to_owned(),
+        }
+    }
+}
+
 /// What a build produced.
 #[derive(Clone, Debug)]
 pub struct BuildOutcome {
@@ -45,7 +72,7 @@ pub struct BuildOutcome {
     /// The program, when the project compiles.
     pub image: Option<BuiltImage>,
     /// Why no program came out although the checker found no error (a limit, or a crash).
-    pub failure: Option<String>,
+    pub failure: Option<BuildFailure>,
     /// How long it took.
     pub elapsed: Duration,
 }
@@ -79,7 +106,8 @@ impl BuildJob {
             });
         if let Err(error) = spawned {
             let (send, failed) = mpsc::channel();
-            let _ = send.send(crashed(revision, &format!("no build thread: {error}")));
+            let failure = BuildFailure::NoThread(error.to_string());
+            let _ = send.send(crashed(revision, failure));
             return Self {
                 revision,
                 outcome: failed,
@@ -98,20 +126,19 @@ impl BuildJob {
         match self.outcome.try_recv() {
             Ok(outcome) => Some(outcome),
             Err(TryRecvError::Empty) => None,
-            Err(TryRecvError::Disconnected) => Some(crashed(
-                self.revision,
-                "the compiler stopped unexpectedly (an internal error); your edits are kept",
-            )),
+            Err(TryRecvError::Disconnected) => {
+                Some(crashed(self.revision, BuildFailure::CompilerStopped))
+            }
         }
     }
 }
 
-fn crashed(revision: u64, reason: &str) -> BuildOutcome {
+fn crashed(revision: u64, failure: BuildFailure) -> BuildOutcome {
     BuildOutcome {
         revision,
         messages: Vec::new(),
         image: None,
-        failure: Some(reason.to_owned()),
+        failure: Some(failure),
         elapsed: Duration::ZERO,
     }
 }
@@ -139,11 +166,10 @@ pub fn build(project: &Project, revision: u64) -> BuildOutcome {
                     None,
                 )
             }
-            Err(CompileError::Unsupported(error)) => (None, Some(error.to_string())),
-            Err(CompileError::Diagnostics(_)) => (
-                None,
-                Some("the compiler found errors the checker did not report".to_owned()),
-            ),
+            Err(CompileError::Unsupported(error)) => {
+                (None, Some(BuildFailure::Unsupported(error.to_string())))
+            }
+            Err(CompileError::Diagnostics(_)) => (None, Some(BuildFailure::HiddenErrors)),
         }
     };
     BuildOutcome {

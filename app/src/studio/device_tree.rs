@@ -78,7 +78,7 @@ pub(crate) fn devices_pane_ui(
     let mut planned = Vec::new();
     for action in &response.actions {
         let deletes = matches!(action, TreeAction::Delete(_));
-        planned.push((deletes, plan(project, action)));
+        planned.push((deletes, plan(project, action, language)));
     }
     if let Some(node) = response.clicked {
         commands.push(Command::Select(Some(node)));
@@ -104,7 +104,7 @@ pub(crate) fn devices_pane_ui(
                 }
             }
             Ok(None) => {}
-            Err(reason) => commands.error(reason),
+            Err(refusal) => commands.error(refusal.text(language)),
         }
     }
 }
@@ -373,8 +373,10 @@ impl TreeUi<'_> {
                 for task in &project.tasks {
                     let kind = match &task.kind {
                         TaskKind::Cyclic { interval_us } => format_interval(*interval_us),
-                        TaskKind::Freewheeling => "freewheeling".to_owned(),
-                        TaskKind::Event { trigger } => format!("event {trigger}"),
+                        TaskKind::Freewheeling => Text::TreeFreewheeling.get(language).to_owned(),
+                        TaskKind::Event { trigger } => {
+                            Text::TreeEventTask.fill(language, &[("trigger", trigger)])
+                        }
                     };
                     let detail = format!("{kind} · P{}", task.priority);
                     tree.leaf(
@@ -463,8 +465,11 @@ impl TreeUi<'_> {
             |tree, ui| {
                 for axis in &project.axes {
                     let detail = match axis.modulo_period {
-                        Some(period) => format!("modulo {period} {}", axis.unit),
-                        None => format!("linear, {}", axis.unit),
+                        Some(period) => Text::TreeModuloAxis.fill(
+                            language,
+                            &[("period", &period.to_string()), ("unit", &axis.unit)],
+                        ),
+                        None => Text::TreeLinearAxis.fill(language, &[("unit", &axis.unit)]),
                     };
                     tree.leaf(
                         ui,

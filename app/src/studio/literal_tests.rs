@@ -6,6 +6,8 @@
 //! tests. A user-visible string is a literal (or a `format!` pattern) with a word in it, passed
 //! straight to a call that shows text: labels, buttons, headings, hover texts, `RichText`,
 //! menus, hint texts, dialog titles, plot items, status messages.
+//! Labels are checked too: undo labels, accessible labels and the studio's refusals, in every
+//! argument at the call's own level (the keys of `Text::fill` are nested and left alone).
 
 use std::path::{Path, PathBuf};
 
@@ -47,6 +49,22 @@ const SHOWING_CALLS: [&str; 28] = [
     "VLine::new(",
     "Points::new(",
     ".add_filter(",
+    "WidgetInfo::labeled(",
+];
+
+/// Places where a label the user reads starts: an undo label (`Command::Edit`, a plan's or a
+/// text edit's `label:` field, the `(label, edit)` pairs pushed for later, the trace pane's
+/// `replace(commands, label, …)`, `apply_edits`) or an accessible label (`WidgetInfo::labeled`).
+/// Every argument at the call's own level is checked, not only the first.
+/// `Err(` (a refusal the user reads) counts only in the studio: the command line's refusals
+/// are English by design.
+const LABEL_SITES: [&str; 7] = [
+    "Err(",
+    "Command::Edit(",
+    "label: ",
+    ".push((",
+    "commands,",
+    "apply_edits(",
     "WidgetInfo::labeled(",
 ];
 
@@ -129,6 +147,57 @@ fn words_to_translate(literal: &str) -> Vec<String> {
         .collect()
 }
 
+/// The end of the string literal that starts right after an opening quote in `literal`.
+fn literal_end(literal: &str) -> usize {
+    literal
+        .char_indices()
+        .scan(false, |escaped, (index, c)| {
+            let quote = c == '"' && !*escaped;
+            *escaped = c == '\\' && !*escaped;
+            Some((index, quote))
+        })
+        .find(|(_, quote)| *quote)
+        .map_or(literal.len(), |(index, _)| index)
+}
+
+/// The string literals passed at the top level of the argument list that starts at `rest`
+/// (a literal itself, or the pattern of a `format!`), up to the list's closing bracket or, for a
+/// field (`label: …`), the end of its value. Literals nested in other calls (`fill`'s keys,
+/// `vec![…]`) are not labels and are left out.
+fn top_level_literals(rest: &str, field: bool) -> Vec<(usize, &str)> {
+    let mut found = Vec::new();
+    let mut depth = 0usize;
+    let mut at = 0;
+    while at < rest.len() {
+        let tail = &rest[at..];
+        let c = tail.chars().next().unwrap_or(' ');
+        if c == '"' {
+            let end = literal_end(&tail[1..]);
+            if depth == 0 {
+                found.push((at, &tail[1..1 + end]));
+            }
+            at += end + 2;
+            continue;
+        }
+        if depth == 0 && tail.starts_with("format!(") {
+            let open = tail.find('(').unwrap_or(0);
+            let pattern = tail[open + 1..].trim_start();
+            if let Some(literal) = pattern.strip_prefix('"') {
+                found.push((at, &literal[..literal_end(literal)]));
+            }
+        }
+        match c {
+            '(' | '[' | '{' => depth += 1,
+            ')' | ']' | '}' if depth == 0 => break,
+            ')' | ']' | '}' => depth -= 1,
+            ',' | ';' if field && depth == 0 => break,
+            _ => {}
+        }
+        at += c.len_utf8();
+    }
+    found
+}
+
 /// The 1-based line of a byte offset.
 fn line_of(code: &str, offset: usize) -> usize {
     code[..offset].matches('\n').count() + 1
@@ -170,22 +239,30 @@ fn findings(file: &str, text: &str, theme: bool) -> Vec<String> {
             let Some(literal) = rest.strip_prefix('"') else {
                 continue;
             };
-            let end = literal
-                .char_indices()
-                .scan(false, |escaped, (index, c)| {
-                    let quote = c == '"' && !*escaped;
-                    *escaped = c == '\\' && !*escaped;
-                    Some((index, quote))
-                })
-                .find(|(_, quote)| *quote)
-                .map_or(literal.len(), |(index, _)| index);
-            let literal = &literal[..end];
+            let literal = &literal[..literal_end(literal)];
             let words = words_to_translate(literal);
             if !words.is_empty() {
                 found.push(format!(
                     "{file}:{}: user-visible text {literal:?} (words {words:?}) belongs in the translations",
                     line_of(&code, at)
                 ));
+            }
+        }
+    }
+    for site in LABEL_SITES {
+        if site == "Err(" && !file.starts_with("app/src/studio/") {
+            continue;
+        }
+        for (at, _) in code.match_indices(site) {
+            let rest = &code[at + site.len()..];
+            for (offset, literal) in top_level_literals(rest, site == "label: ") {
+                let words = words_to_translate(literal);
+                if !words.is_empty() {
+                    found.push(format!(
+                        "{file}:{}: label {literal:?} (words {words:?}) belongs in the translations",
+                        line_of(&code, at + site.len() + offset)
+                    ));
+                }
             }
         }
     }
@@ -245,4 +322,31 @@ fn english_passed_to_a_label_is_found_but_names_and_units_are_not() {
     assert_eq!(found.len(), 2, "{found:?}");
     assert!(found[0].starts_with("x.rs:1: user-visible text \"Kind\""));
     assert!(found[1].starts_with("x.rs:5: user-visible text \"Not translated\""));
+}
+
+#[test]
+fn english_undo_and_accessible_labels_are_found_but_template_keys_are_not() {
+    let text = "commands.push(Command::Edit(format!(\"Watch {path}\"), edits));\n\
+                let plan = Plan { label: format!(\"Delete {name}\"), edits };\n\
+                changes.push((format!(\"Add task {name}\"), edit));\n\
+                replace(commands, \"Change the sampling\", changed, true);\n\
+                WidgetInfo::labeled(Role::TextInput, true, format!(\"Prepared value of {}\", p));\n\
+                replace(\ncommands,\n&format!(\"Stop tracing {}\", gone.path),\nchanged,\n);\n\
+                let label = Text::UndoWatch.fill(language, &[(\"path\", &path)]);\n\
+                commands.push(Command::Edit(label, vec![Edit::Rename(\"name\".into())]));\n\
+                Plan { label: Text::UndoDelete.fill(language, &[(\"name\", &name)]), edits };\n";
+    let found = findings("x.rs", text, false);
+    let mut lines: Vec<&str> = found
+        .iter()
+        .map(|finding| finding.split(": label").next().unwrap_or(""))
+        .collect();
+    lines.sort_unstable();
+    let refusal = "return Err(format!(\"'{input}' is not a priority\"));\nErr(reason) => {}\n";
+    assert_eq!(findings("app/src/studio/x.rs", refusal, false).len(), 1);
+    assert!(findings("app/src/cli.rs", refusal, false).is_empty());
+    assert_eq!(
+        lines,
+        ["x.rs:1", "x.rs:2", "x.rs:3", "x.rs:4", "x.rs:5", "x.rs:8"],
+        "{found:?}"
+    );
 }

@@ -12,6 +12,7 @@ mod device_tree;
 mod dock;
 mod document_view;
 mod documents;
+mod error_texts;
 mod fonts;
 mod i18n;
 #[cfg(test)]

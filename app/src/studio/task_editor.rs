@@ -6,6 +6,7 @@
 //! an accepted one becomes one `Edit::Tasks(ListEdit::Replace { .. })`, one undo step.
 
 mod fields;
+mod refusal;
 mod time_literal;
 
 use std::collections::HashMap;
@@ -100,7 +101,7 @@ pub(crate) fn task_editor_ui(
                 && ui.button(Text::AddTask.get(language)).clicked()
             {
                 let (edit, name) = ListKind::Tasks.add(project);
-                changes.push((format!("Add task {name}"), edit));
+                changes.push((Text::UndoAddTask.fill(language, &[("name", &name)]), edit));
                 state.selected = Some(name);
             }
             let mut editor = Editor {
@@ -196,8 +197,13 @@ impl Editor<'_> {
         if checkbox.changed() {
             let mut item = task.clone();
             item.watchdog = enabled.then(|| default_watchdog(task));
-            let verb = if enabled { "Enable" } else { "Disable" };
-            self.replace(format!("{verb} watchdog of {}", task.name), index, item);
+            let template = if enabled {
+                Text::UndoEnableWatchdog
+            } else {
+                Text::UndoDisableWatchdog
+            };
+            let label = template.fill(language, &[("name", &task.name)]);
+            self.replace(label, index, item);
         }
         self.field_ui(ui, index, task, Field::WatchdogTime, 90.0);
         self.field_ui(ui, index, task, Field::Sensitivity, 40.0);
@@ -245,12 +251,13 @@ impl Editor<'_> {
                     self.state.refused.remove(&key);
                     text = current.clone();
                 } else {
-                    match field.apply(self.project, task, &text) {
+                    match field.apply(self.project, task, &text, language) {
                         Ok((item, label)) => {
                             self.state.drafts.remove(&key);
                             self.replace(label, index, item);
                         }
                         Err(reason) => {
+                            let reason = reason.text(language);
                             self.state.refused.insert(key.clone(), reason);
                         }
                     }
@@ -426,15 +433,13 @@ impl Editor<'_> {
             if ui.button(Text::AddCall.get(language)).clicked() || entered {
                 let program = self.state.call.trim().to_owned();
                 match call_problem(self.project, task, &program) {
-                    Some(reason) => self.state.call_refused = Some(reason),
+                    Some(reason) => self.state.call_refused = Some(reason.text(language)),
                     None => {
                         let mut item = task.clone();
                         item.programs.push(program.clone());
-                        self.replace(
-                            format!("Add call of {program} to {}", task.name),
-                            index,
-                            item,
-                        );
+                        let label = Text::UndoAddCall
+                            .fill(language, &[("program", &program), ("task", &task.name)]);
+                        self.replace(label, index, item);
                         self.state.call.clear();
                     }
                 }
@@ -450,21 +455,25 @@ impl Editor<'_> {
         let Some(program) = item.programs.get(position).cloned() else {
             return;
         };
-        let label = match action {
+        let template = match action {
             Text::MoveUp if position > 0 => {
                 item.programs.swap(position, position - 1);
-                format!("Move call of {program} up in {}", task.name)
+                Text::UndoMoveCallUp
             }
             Text::MoveDown if position + 1 < item.programs.len() => {
                 item.programs.swap(position, position + 1);
-                format!("Move call of {program} down in {}", task.name)
+                Text::UndoMoveCallDown
             }
             Text::Remove => {
                 item.programs.remove(position);
-                format!("Remove call of {program} from {}", task.name)
+                Text::UndoRemoveCall
             }
             _ => return,
         };
+        let label = template.fill(
+            self.language,
+            &[("program", &program), ("task", &task.name)],
+        );
         self.replace(label, index, item);
     }
 }
@@ -480,8 +489,5 @@ fn is_program(project: &Project, program: &str) -> bool {
 
 /// The accessible label of a task's field: "Priority of MainTask".
 fn accessible(language: Language, field: Text, task: &str) -> String {
-    match language {
-        Language::English => format!("{} of {task}", field.get(language)),
-        Language::SimplifiedChinese => format!("{task} 的{}", field.get(language)),
-    }
+    Text::CellOf.fill(language, &[("column", field.get(language)), ("name", task)])
 }

@@ -430,4 +430,171 @@ pub enum Text {
     DeviceRegisterTableAddress,
     DeviceNotANumber,
     DeviceNotAWholeNumber,
+    // Undo labels, accessible labels, tree details and the refusals of the tree, the task
+    // editor, value entry and the build; the templates among them are filled with `Text::fill`.
+    UndoAddFolder,
+    UndoAdd,
+    UndoRename,
+    UndoDuplicate,
+    UndoDelete,
+    UndoMoveIntoApplication,
+    UndoMoveInto,
+    UndoMoveAfter,
+    UndoMoveBefore,
+    NounTask,
+    NounIoArea,
+    NounModbusDevice,
+    NounAxis,
+    NounGvl,
+    NounDataType,
+    NounWatchList,
+    NounCamTable,
+    NounProgram,
+    NounFunctionBlock,
+    NounFunction,
+    NounInterface,
+    UndoRenameTask,
+    UndoSetInterval,
+    UndoSetTrigger,
+    UndoSetPriority,
+    UndoSetWatchdogTime,
+    UndoSetSensitivity,
+    UndoAddTask,
+    UndoEnableWatchdog,
+    UndoDisableWatchdog,
+    UndoAddCall,
+    UndoMoveCallUp,
+    UndoMoveCallDown,
+    UndoRemoveCall,
+    UndoWatch,
+    UndoPrepare,
+    UndoUnwatch,
+    UndoTraceTask,
+    UndoRecordCount,
+    UndoSampling,
+    UndoTrigger,
+    UndoTriggerVariable,
+    UndoTriggerCondition,
+    UndoPreTrigger,
+    UndoStopTracing,
+    UndoTrace,
+    UndoEdit,
+    UndoEditDeclarations,
+    PreparedValueOf,
+    DeclarationsOf,
+    ImplementationOf,
+    UndoRecover,
+    EditNoSuchObject,
+    EditNoSuchFolder,
+    EditNoSuchMember,
+    WhatMethod,
+    WhatProperty,
+    WhatAction,
+    EditIndexOutOfRange,
+    EditInvalidName,
+    EditDuplicateName,
+    EditInvalidObject,
+    EditNotText,
+    EditBadTextRange,
+    EditMoveIntoItself,
+    EditKindChanged,
+    LitUnknownBase,
+    LitNoDigits,
+    LitBadDigitBinary,
+    LitBadDigitOctal,
+    LitBadDigitHex,
+    LitBadDigitDecimal,
+    LitNotANumber,
+    LitNoValue,
+    LitNoUnit,
+    LitNoNumber,
+    LitBadNumber,
+    LitUnknownUnit,
+    LitNotADate,
+    LitNoSuchDate,
+    LitNotATimeOfDay,
+    LitNotADateAndTime,
+    LitNoHash,
+    RefuseEmptyName,
+    RefuseKeyword,
+    RefuseNoReturnType,
+    TimeEmpty,
+    TimeTooLong,
+    TimeNotWholeMicros,
+    TimeNotPositive,
+    TimeTooLongAtMost,
+    NotATriggerVariable,
+    NotAPriority,
+    NotASensitivity,
+    ChooseProgramToCall,
+    NoProgramNamed,
+    AlreadyCalls,
+    TreeFreewheeling,
+    TreeEventTask,
+    TreeModuloAxis,
+    TreeLinearAxis,
+    ValueNotAString,
+    ValueTooLong,
+    ValueNotWritable,
+    ValueNotAValue,
+    ValueBadLiteral,
+    ValueOutOfRange,
+    BuildNoThread,
+    BuildHiddenErrors,
+    BuildCompilerStopped,
+}
+
+impl Text {
+    /// The text in `language` with each `{key}` placeholder replaced by the value `values`
+    /// gives it, in one pass so a value that holds braces is never filled again.
+    /// A placeholder without a value stays as it is.
+    pub fn fill(self, language: Language, values: &[(&str, &str)]) -> String {
+        let mut filled = String::new();
+        let mut rest = self.get(language);
+        while let Some(open) = rest.find('{') {
+            filled.push_str(&rest[..open]);
+            let after = &rest[open + 1..];
+            let value = after.find('}').and_then(|close| {
+                values
+                    .iter()
+                    .find(|(key, _)| *key == &after[..close])
+                    .map(|(_, value)| (close, *value))
+            });
+            match value {
+                Some((close, value)) => {
+                    filled.push_str(value);
+                    rest = &after[close + 1..];
+                }
+                None => {
+                    filled.push('{');
+                    rest = after;
+                }
+            }
+        }
+        filled.push_str(rest);
+        filled
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{Language, Text};
+
+    #[test]
+    fn a_template_is_filled_in_each_language_and_keeps_unknown_placeholders() {
+        let values = [("old", "Main"), ("name", "Start")];
+        assert_eq!(
+            Text::UndoRename.fill(Language::English, &values),
+            "Rename Main to Start"
+        );
+        assert_eq!(
+            Text::UndoRename.fill(Language::SimplifiedChinese, &values),
+            "将 Main 重命名为 Start"
+        );
+        assert_eq!(
+            Text::UndoWatch.fill(Language::English, &[("path", "{name}")]),
+            "Watch {name}"
+        );
+        assert_eq!(Text::UndoWatch.fill(Language::English, &[]), "Watch {path}");
+    }
 }

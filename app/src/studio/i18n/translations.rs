@@ -528,6 +528,268 @@ impl Text {
                 "'{text}' is not a whole number from {min} to {max}",
                 "'{text}' 不是 {min} 到 {max} 之间的整数",
             ),
+            Self::UndoAddFolder => ("Add folder {name}", "添加文件夹 {name}"),
+            Self::UndoAdd => ("Add {kind} {name}", "添加{kind} {name}"),
+            Self::UndoRename => ("Rename {old} to {name}", "将 {old} 重命名为 {name}"),
+            Self::UndoDuplicate => ("Duplicate {name} as {copy}", "将 {name} 复制为 {copy}"),
+            Self::UndoDelete => ("Delete {name}", "删除 {name}"),
+            Self::UndoMoveIntoApplication => {
+                ("Move {name} into the application", "将 {name} 移入应用")
+            }
+            Self::UndoMoveInto => ("Move {name} into {target}", "将 {name} 移入 {target}"),
+            Self::UndoMoveAfter => ("Move {name} after {target}", "将 {name} 移到 {target} 之后"),
+            Self::UndoMoveBefore => (
+                "Move {name} before {target}",
+                "将 {name} 移到 {target} 之前",
+            ),
+            Self::NounTask => ("task", "任务"),
+            Self::NounIoArea => ("I/O area", "输入/输出区"),
+            Self::NounModbusDevice => ("Modbus TCP device", "Modbus TCP 设备"),
+            Self::NounAxis => ("axis", "轴"),
+            Self::NounGvl => ("global variable list", "全局变量列表"),
+            Self::NounDataType => ("data type", "数据类型"),
+            Self::NounWatchList => ("watch list", "监视列表"),
+            Self::NounCamTable => ("cam table", "凸轮表"),
+            Self::NounProgram => ("program", "程序"),
+            Self::NounFunctionBlock => ("function block", "功能块"),
+            Self::NounFunction => ("function", "函数"),
+            Self::NounInterface => ("interface", "接口"),
+            Self::UndoRenameTask => (
+                "Rename task {name} to {new}",
+                "将任务 {name} 重命名为 {new}",
+            ),
+            Self::UndoSetInterval => (
+                "Set interval of {name} to {value}",
+                "将 {name} 的间隔设为 {value}",
+            ),
+            Self::UndoSetTrigger => (
+                "Set trigger of {name} to {value}",
+                "将 {name} 的触发变量设为 {value}",
+            ),
+            Self::UndoSetPriority => (
+                "Set priority of {name} to {value}",
+                "将 {name} 的优先级设为 {value}",
+            ),
+            Self::UndoSetWatchdogTime => (
+                "Set watchdog time of {name} to {value}",
+                "将 {name} 的看门狗时间设为 {value}",
+            ),
+            Self::UndoSetSensitivity => (
+                "Set watchdog sensitivity of {name} to {value}",
+                "将 {name} 的看门狗灵敏度设为 {value}",
+            ),
+            Self::UndoAddTask => ("Add task {name}", "添加任务 {name}"),
+            Self::UndoEnableWatchdog => ("Enable watchdog of {name}", "启用 {name} 的看门狗"),
+            Self::UndoDisableWatchdog => ("Disable watchdog of {name}", "停用 {name} 的看门狗"),
+            Self::UndoAddCall => (
+                "Add call of {program} to {task}",
+                "在 {task} 中添加对 {program} 的调用",
+            ),
+            Self::UndoMoveCallUp => (
+                "Move call of {program} up in {task}",
+                "在 {task} 中上移对 {program} 的调用",
+            ),
+            Self::UndoMoveCallDown => (
+                "Move call of {program} down in {task}",
+                "在 {task} 中下移对 {program} 的调用",
+            ),
+            Self::UndoRemoveCall => (
+                "Remove call of {program} from {task}",
+                "从 {task} 中删除对 {program} 的调用",
+            ),
+            Self::UndoWatch => ("Watch {path}", "监视 {path}"),
+            Self::UndoPrepare => ("Prepare {path}", "准备 {path}"),
+            Self::UndoUnwatch => (
+                "Remove {path} from the watch list",
+                "从监视列表中删除 {path}",
+            ),
+            Self::UndoTraceTask => ("Change the trace's task", "更改跟踪的任务"),
+            Self::UndoRecordCount => ("Change the record count", "更改记录数"),
+            Self::UndoSampling => ("Change the sampling", "更改采样"),
+            Self::UndoTrigger => ("Change the trigger", "更改触发"),
+            Self::UndoTriggerVariable => ("Change the trigger variable", "更改触发变量"),
+            Self::UndoTriggerCondition => ("Change the trigger condition", "更改触发条件"),
+            Self::UndoPreTrigger => ("Change the pre-trigger", "更改预触发"),
+            Self::UndoStopTracing => ("Stop tracing {path}", "停止跟踪 {path}"),
+            Self::UndoTrace => ("Trace {path}", "跟踪 {path}"),
+            Self::UndoEdit => ("Edit {name}", "编辑 {name}"),
+            Self::UndoEditDeclarations => ("Edit the declarations of {name}", "编辑 {name} 的声明"),
+            Self::PreparedValueOf => ("Prepared value of {path}", "{path} 的准备值"),
+            Self::DeclarationsOf => ("Declarations of {name}", "{name} 的声明"),
+            Self::ImplementationOf => ("Implementation of {name}", "{name} 的实现"),
+            Self::UndoRecover => ("Recover unsaved changes", "恢复未保存的更改"),
+            Self::EditNoSuchObject => (
+                "there is no object named '{name}'",
+                "没有名为“{name}”的对象",
+            ),
+            Self::EditNoSuchFolder => ("there is no folder '{name}'", "没有文件夹“{name}”"),
+            Self::EditNoSuchMember => (
+                "'{pou}' has no {what} named '{name}'",
+                "“{pou}”没有名为“{name}”的{what}",
+            ),
+            Self::WhatMethod => ("method", "方法"),
+            Self::WhatProperty => ("property", "属性"),
+            Self::WhatAction => ("action", "动作"),
+            Self::EditIndexOutOfRange => (
+                "position {index} is out of range (the list has {len} entries)",
+                "位置 {index} 超出范围（列表有 {len} 个条目）",
+            ),
+            Self::EditInvalidName => (
+                "'{name}' is not a valid name: use letters, digits and '_', starting with a letter or '_'",
+                "“{name}”不是有效名称：请使用字母、数字和“_”，并以字母或“_”开头",
+            ),
+            Self::EditDuplicateName => {
+                ("the name '{name}' is already used", "名称“{name}”已被使用")
+            }
+            Self::EditInvalidObject => ("{reason}", "{reason}"),
+            Self::EditNotText => (
+                "the body of {name} is not Structured Text",
+                "{name} 的实现不是结构化文本",
+            ),
+            Self::EditBadTextRange => (
+                "the range {start}..{end} is not a valid range of a text of {len} bytes",
+                "范围 {start}..{end} 不是 {len} 字节文本中的有效范围",
+            ),
+            Self::EditMoveIntoItself => {
+                ("a folder cannot be moved into itself", "文件夹不能移入自身")
+            }
+            Self::EditKindChanged => ("'{name}' cannot change its kind", "“{name}”不能更改其种类"),
+            Self::LitUnknownBase => (
+                "'{base}#' is not a base; use 2#, 8# or 16#",
+                "“{base}#”不是进制；请使用 2#、8# 或 16#",
+            ),
+            Self::LitNoDigits => ("'{text}' has no digits", "“{text}”没有数字"),
+            Self::LitBadDigitBinary => (
+                "'{text}' may hold only the digits 0 and 1",
+                "“{text}”只能包含数字 0 和 1",
+            ),
+            Self::LitBadDigitOctal => (
+                "'{text}' may hold only the digits 0 to 7",
+                "“{text}”只能包含数字 0 到 7",
+            ),
+            Self::LitBadDigitHex => (
+                "'{text}' may hold only the digits 0 to 9 and A to F",
+                "“{text}”只能包含数字 0 到 9 和 A 到 F",
+            ),
+            Self::LitBadDigitDecimal => {
+                ("'{text}' is not a decimal number", "“{text}”不是十进制数")
+            }
+            Self::LitNotANumber => ("'{text}' is not a number", "“{text}”不是数字"),
+            Self::LitNoValue => (
+                "'{text}' has no value; write for example T#2s",
+                "“{text}”没有值；例如请写 T#2s",
+            ),
+            Self::LitNoUnit => (
+                "'{text}': the number at the end has no unit (d, h, m, s, ms, us, ns)",
+                "“{text}”：末尾的数字没有单位（d、h、m、s、ms、us、ns）",
+            ),
+            Self::LitNoNumber => (
+                "'{text}': expected a number before '{rest}'",
+                "“{text}”：“{rest}”之前应有数字",
+            ),
+            Self::LitBadNumber => (
+                "'{text}': '{number}' is not a number",
+                "“{text}”：“{number}”不是数字",
+            ),
+            Self::LitUnknownUnit => (
+                "'{text}': unknown unit at '{rest}'; use d, h, m, s, ms, us or ns",
+                "“{text}”：“{rest}”处的单位未知；请使用 d、h、m、s、ms、us 或 ns",
+            ),
+            Self::LitNotADate => (
+                "'{text}' is not a date; write D#YYYY-MM-DD",
+                "“{text}”不是日期；请写 D#YYYY-MM-DD",
+            ),
+            Self::LitNoSuchDate => (
+                "'{text}' is not a valid calendar date",
+                "“{text}”不是有效的日历日期",
+            ),
+            Self::LitNotATimeOfDay => (
+                "'{text}' is not a time of day; write TOD#HH:MM:SS.fff",
+                "“{text}”不是时刻；请写 TOD#HH:MM:SS.fff",
+            ),
+            Self::LitNotADateAndTime => (
+                "'{text}' is not a date and time; write DT#YYYY-MM-DD-HH:MM:SS",
+                "“{text}”不是日期和时间；请写 DT#YYYY-MM-DD-HH:MM:SS",
+            ),
+            Self::LitNoHash => ("'{text}' has no '#'", "“{text}”没有“#”"),
+            Self::RefuseEmptyName => ("enter a name", "请输入名称"),
+            Self::RefuseNoReturnType => (
+                "a function needs a return type, such as BOOL or INT",
+                "函数需要返回类型，例如 BOOL 或 INT",
+            ),
+            Self::RefuseKeyword => (
+                "'{name}' is a keyword of IEC 61131-3 and cannot name anything",
+                "“{name}”是 IEC 61131-3 的关键字，不能用作名称",
+            ),
+            Self::TimeEmpty => (
+                "enter a time such as T#10ms, or a number of microseconds",
+                "请输入时间，例如 T#10ms，或微秒数",
+            ),
+            Self::TimeTooLong => ("'{text}' is too long", "“{text}”太长"),
+            Self::TimeNotWholeMicros => (
+                "'{text}' is not a whole number of microseconds, the finest step a task has",
+                "“{text}”不是整微秒数，而微秒是任务的最小时间步长",
+            ),
+            Self::TimeNotPositive => ("the time must be longer than 0", "时间必须大于 0"),
+            Self::TimeTooLongAtMost => (
+                "'{text}' is too long: at most {max}",
+                "“{text}”太长：最多 {max}",
+            ),
+            Self::NotATriggerVariable => (
+                "'{input}' is not a variable: write its path, such as GVL_IO.xStart",
+                "“{input}”不是变量：请写出其路径，例如 GVL_IO.xStart",
+            ),
+            Self::NotAPriority => (
+                "'{input}' is not a priority: use 0 (highest) to {lowest} (lowest)",
+                "“{input}”不是优先级：请使用 0（最高）到 {lowest}（最低）",
+            ),
+            Self::NotASensitivity => (
+                "'{input}' is not a sensitivity: give how many overruns in a row trip the watchdog (1 or more)",
+                "“{input}”不是灵敏度：请给出连续超时多少次触发看门狗（1 或更多）",
+            ),
+            Self::ChooseProgramToCall => ("choose a program to call", "请选择要调用的程序"),
+            Self::NoProgramNamed => (
+                "the project has no PROGRAM named '{program}'",
+                "项目中没有名为“{program}”的 PROGRAM",
+            ),
+            Self::AlreadyCalls => ("{task} already calls {program}", "{task} 已调用 {program}"),
+            Self::TreeFreewheeling => ("freewheeling", "自由运行"),
+            Self::TreeEventTask => ("event {trigger}", "事件 {trigger}"),
+            Self::TreeModuloAxis => ("modulo {period} {unit}", "模 {period} {unit}"),
+            Self::TreeLinearAxis => ("linear, {unit}", "线性，{unit}"),
+            Self::ValueNotAString => (
+                "'{text}' is not a string; write it in quotes, such as 'abc'",
+                "“{text}”不是字符串；请用引号括起来，例如 'abc'",
+            ),
+            Self::ValueTooLong => (
+                "'{text}' is longer than the {length} characters the string holds",
+                "“{text}”超过了字符串可容纳的 {length} 个字符",
+            ),
+            Self::ValueNotWritable => (
+                "only elementary values and strings can be written",
+                "只能写入基本类型的值和字符串",
+            ),
+            Self::ValueNotAValue => (
+                "'{text}' is not a value of {ty}",
+                "“{text}”不是 {ty} 类型的值",
+            ),
+            Self::ValueBadLiteral => (
+                "'{text}' is not a value of {ty}: {reason}",
+                "“{text}”不是 {ty} 类型的值：{reason}",
+            ),
+            Self::ValueOutOfRange => (
+                "{text} is outside the range of {ty}",
+                "{text} 超出 {ty} 的范围",
+            ),
+            Self::BuildNoThread => ("no build thread: {reason}", "无法启动编译线程：{reason}"),
+            Self::BuildHiddenErrors => (
+                "the compiler found errors the checker did not report",
+                "编译器发现了检查器未报告的错误",
+            ),
+            Self::BuildCompilerStopped => (
+                "the compiler stopped unexpectedly (an internal error); your edits are kept",
+                "编译器意外停止（内部错误）；您的编辑已保留",
+            ),
         };
         match language {
             Language::English => english,

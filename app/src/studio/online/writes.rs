@@ -4,6 +4,7 @@ use online::Place;
 use online::session::Command;
 
 use super::{ForceSource, ForcedValue, Online, Refusal, devices};
+use crate::studio::error_texts::value_error_text;
 use crate::studio::i18n::Text;
 use crate::value_text::{describe_place, show};
 
@@ -34,7 +35,9 @@ impl Online {
                 };
                 match crate::literal_value::parse(text.trim(), channel.ty as u8, 0) {
                     Ok(bytes) => encoded.devices.push((path.clone(), bytes)),
-                    Err(reason) => refused.push((path.clone(), reason)),
+                    Err(error) => {
+                        refused.push((path.clone(), value_error_text(&error, self.language)));
+                    }
                 }
                 continue;
             }
@@ -50,7 +53,9 @@ impl Online {
                         resolved.length,
                     ) {
                         Ok(bytes) => encoded.target.push((resolved.place, bytes)),
-                        Err(reason) => refused.push((path.clone(), reason)),
+                        Err(error) => {
+                            refused.push((path.clone(), value_error_text(&error, self.language)));
+                        }
                     }
                 }
                 Some(Err(reason)) => refused.push((path.clone(), reason.clone())),

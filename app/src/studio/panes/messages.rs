@@ -58,7 +58,7 @@ pub(crate) fn messages_ui(view: StudioView<'_>, commands: &mut Commands, ui: &mu
             }
             if let Some(build) = view.last_build {
                 if let Some(failure) = &build.failure {
-                    ui.label(RichText::new(failure).color(error));
+                    ui.label(RichText::new(failure.text(language)).color(error));
                 }
                 egui::Grid::new("build_messages")
                     .num_columns(4)

@@ -78,7 +78,7 @@ fn configuration_ui(
                     {
                         let mut changed = config.clone();
                         changed.task = task.clone();
-                        replace(commands, "Change the trace's task", changed, false);
+                        replace(commands, Text::UndoTraceTask.get(language), changed, false);
                     }
                 }
             })
@@ -93,7 +93,7 @@ fn configuration_ui(
         {
             let mut changed = config.clone();
             changed.record_count = count;
-            replace(commands, "Change the record count", changed, true);
+            replace(commands, Text::UndoRecordCount.get(language), changed, true);
         }
         let mut every = config.every_n_cycles;
         let label = ui.label(Text::EveryNth.get(language));
@@ -104,7 +104,7 @@ fn configuration_ui(
         {
             let mut changed = config.clone();
             changed.every_n_cycles = every;
-            replace(commands, "Change the sampling", changed, true);
+            replace(commands, Text::UndoSampling.get(language), changed, true);
         }
     });
     ui.horizontal_wrapped(|ui| {
@@ -124,7 +124,7 @@ fn configuration_ui(
                 level: None,
                 pre_trigger_percent: 10,
             });
-            replace(commands, "Change the trigger", changed, false);
+            replace(commands, Text::UndoTrigger.get(language), changed, false);
         }
         let Some(trigger) = &config.trigger else {
             return;
@@ -147,7 +147,12 @@ fn configuration_ui(
                 if let Some(t) = &mut changed.trigger {
                     t.variable = typed.trim().to_owned();
                 }
-                replace(commands, "Change the trigger variable", changed, false);
+                replace(
+                    commands,
+                    Text::UndoTriggerVariable.get(language),
+                    changed,
+                    false,
+                );
             }
         }
         let mut condition = trigger.condition;
@@ -163,7 +168,12 @@ fn configuration_ui(
             if let Some(t) = &mut changed.trigger {
                 t.condition = condition;
             }
-            replace(commands, "Change the trigger condition", changed, false);
+            replace(
+                commands,
+                Text::UndoTriggerCondition.get(language),
+                changed,
+                false,
+            );
         }
         let mut percent = trigger.pre_trigger_percent;
         let label = ui.label(Text::PreTrigger.get(language));
@@ -180,7 +190,7 @@ fn configuration_ui(
             if let Some(t) = &mut changed.trigger {
                 t.pre_trigger_percent = percent;
             }
-            replace(commands, "Change the pre-trigger", changed, true);
+            replace(commands, Text::UndoPreTrigger.get(language), changed, true);
         }
     });
     ui.horizontal_wrapped(|ui| {
@@ -201,7 +211,7 @@ fn configuration_ui(
             let gone = changed.variables.remove(index);
             replace(
                 commands,
-                &format!("Stop tracing {}", gone.path),
+                &Text::UndoStopTracing.fill(language, &[("path", &gone.path)]),
                 changed,
                 false,
             );
@@ -221,7 +231,12 @@ fn configuration_ui(
                 path: path.clone(),
                 color: None,
             });
-            replace(commands, &format!("Trace {path}"), changed, false);
+            replace(
+                commands,
+                &Text::UndoTrace.fill(language, &[("path", &path)]),
+                changed,
+                false,
+            );
             state.new_variable.clear();
         }
     });

@@ -117,7 +117,8 @@ pub(crate) fn watch_ui(
                 path: path.clone(),
                 ..WatchEntry::default()
             });
-            commands.push(Command::Edit(format!("Watch {path}"), replace(changed)));
+            let label = Text::UndoWatch.fill(language, &[("path", &path)]);
+            commands.push(Command::Edit(label, replace(changed)));
             state.new_path.clear();
         }
     });
@@ -139,7 +140,8 @@ pub(crate) fn watch_ui(
             path: dropped.0.clone(),
             ..WatchEntry::default()
         });
-        edits.push((format!("Watch {}", dropped.0), replace(changed)));
+        let label = Text::UndoWatch.fill(view.language, &[("path", &dropped.0)]);
+        edits.push((label, replace(changed)));
     }
     for (label, edit) in edits {
         commands.push(Command::Edit(label, edit));
@@ -183,7 +185,8 @@ fn entries_ui(
                             let mut changed = list.clone();
                             changed.entries[index].prepared_value =
                                 (!committed.is_empty()).then_some(committed);
-                            edits.push((format!("Prepare {}", entry.path), replace(changed)));
+                            let label = Text::UndoPrepare.fill(language, &[("path", &entry.path)]);
+                            edits.push((label, replace(changed)));
                         }
                         ui.label(RichText::new(&entry.comment).weak());
                         if ui
@@ -193,10 +196,8 @@ fn entries_ui(
                         {
                             let mut changed = list.clone();
                             changed.entries.remove(index);
-                            edits.push((
-                                format!("Remove {} from the watch list", entry.path),
-                                replace(changed),
-                            ));
+                            let label = Text::UndoUnwatch.fill(language, &[("path", &entry.path)]);
+                            edits.push((label, replace(changed)));
                         }
                         ui.end_row();
                     }
@@ -277,7 +278,7 @@ fn prepared_cell(
             egui::WidgetInfo::labeled(
                 egui::Role::TextInput,
                 true,
-                format!("Prepared value of {}", entry.path),
+                Text::PreparedValueOf.fill(view.language, &[("path", &entry.path)]),
             )
         });
         if field.changed() {

@@ -43,9 +43,11 @@ impl Studio {
                 Text::BuildSucceeded.get(language),
                 outcome.elapsed.as_millis()
             )),
-            (None, Some(reason)) => {
-                StatusMessage::error(format!("{}: {reason}", Text::BuildFailed.get(language)))
-            }
+            (None, Some(failure)) => StatusMessage::error(format!(
+                "{}: {}",
+                Text::BuildFailed.get(language),
+                failure.text(language)
+            )),
             (None, None) => {
                 StatusMessage::error(format!("{}: {counts}", Text::BuildFailed.get(language)))
             }

@@ -5,6 +5,7 @@ use std::path::Path;
 use super::state::Studio;
 use crate::studio::dock::Dock;
 use crate::studio::documents::close_stale_documents;
+use crate::studio::error_texts::edit_error_text;
 use crate::studio::i18n::Text;
 use crate::studio::recovery_schedule::RecoverySchedule;
 use crate::studio::references::{ReferenceItem, References};
@@ -114,7 +115,8 @@ impl Studio {
             return;
         };
         if let Err(error) = session.history.apply(&mut session.project, label, edits) {
-            self.report(StatusMessage::error(format!("{label}: {error}")));
+            let reason = edit_error_text(&error, self.shared.settings.language);
+            self.report(StatusMessage::error(format!("{label}: {reason}")));
         }
     }
 
@@ -139,7 +141,8 @@ impl Studio {
             }
         };
         if let Err(error) = result {
-            self.report(StatusMessage::error(format!("{label}: {error}")));
+            let reason = edit_error_text(&error, self.shared.settings.language);
+            self.report(StatusMessage::error(format!("{label}: {reason}")));
         }
     }
 
@@ -158,7 +161,10 @@ impl Studio {
         self.shared.status = match result {
             Ok(Some(label)) => Some(StatusMessage::info(format!("{verb}: {label}"))),
             Ok(None) => None,
-            Err(error) => Some(StatusMessage::error(format!("{verb}: {error}"))),
+            Err(error) => Some(StatusMessage::error(format!(
+                "{verb}: {}",
+                edit_error_text(&error, language)
+            ))),
         };
     }
 

@@ -108,9 +108,8 @@ impl Studio {
         match choice {
             Some(true) => {
                 if let Some(offer) = self.recovery.offer.take() {
-                    // Undo labels stay in English, as every other edit's label.
                     self.apply_edits(
-                        "Recover unsaved changes",
+                        Text::UndoRecover.get(language),
                         vec![project_model::Edit::ReplaceProject(Box::new(offer.project))],
                     );
                 }

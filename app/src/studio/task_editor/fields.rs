@@ -2,8 +2,9 @@
 
 use project_model::{Project, Task, TaskKind, Watchdog, is_valid_identifier};
 
+use super::refusal::TaskRefusal;
 use super::time_literal::{format_time_us, parse_time_us};
-use crate::studio::i18n::Text;
+use crate::studio::i18n::{Language, Text};
 use crate::studio::tree_actions::{NameScope, name_problem};
 
 /// A field of a task typed as text.
@@ -68,14 +69,15 @@ impl Field {
         }
     }
 
-    /// The task with this field set to `input`, and the undo label of the change; or the reason
-    /// the input is refused.
+    /// The task with this field set to `input`, and the undo label of the change in
+    /// `language`; or the reason the input is refused.
     pub fn apply(
         self,
         project: &Project,
         task: &Task,
         input: &str,
-    ) -> Result<(Task, String), String> {
+        language: Language,
+    ) -> Result<(Task, String), TaskRefusal> {
         let input = input.trim();
         let mut changed = task.clone();
         let name = &task.name;
@@ -84,62 +86,59 @@ impl Field {
                 if let Some(problem) =
                     name_problem(project, NameScope::Task, input, Some(name.as_str()))
                 {
-                    return Err(problem);
+                    return Err(TaskRefusal::Name(problem));
                 }
                 changed.name = input.to_owned();
-                format!("Rename task {name} to {input}")
+                Text::UndoRenameTask.fill(language, &[("name", name), ("new", input)])
             }
             Self::Interval => {
                 let interval_us = parse_time_us(input)?;
                 changed.kind = TaskKind::Cyclic { interval_us };
-                format!("Set interval of {name} to {}", format_time_us(interval_us))
+                let value = format_time_us(interval_us);
+                Text::UndoSetInterval.fill(language, &[("name", name), ("value", &value)])
             }
             Self::Trigger => {
                 let valid = !input.is_empty() && input.split('.').all(is_valid_identifier);
                 if !valid {
-                    return Err(format!(
-                        "'{input}' is not a variable: write its path, such as GVL_IO.xStart"
-                    ));
+                    return Err(TaskRefusal::NotAVariable(input.to_owned()));
                 }
                 changed.kind = TaskKind::Event {
                     trigger: input.to_owned(),
                 };
-                format!("Set trigger of {name} to {input}")
+                Text::UndoSetTrigger.fill(language, &[("name", name), ("value", input)])
             }
             Self::Priority => {
                 let priority = input
                     .parse::<u8>()
                     .ok()
                     .filter(|p| *p <= LOWEST_PRIORITY)
-                    .ok_or_else(|| {
-                        format!(
-                            "'{input}' is not a priority: use 0 (highest) to {LOWEST_PRIORITY} (lowest)"
-                        )
+                    .ok_or_else(|| TaskRefusal::NotAPriority {
+                        input: input.to_owned(),
+                        lowest: LOWEST_PRIORITY,
                     })?;
                 changed.priority = priority;
-                format!("Set priority of {name} to {priority}")
+                let value = priority.to_string();
+                Text::UndoSetPriority.fill(language, &[("name", name), ("value", &value)])
             }
             Self::WatchdogTime => {
                 let time_us = parse_time_us(input)?;
                 let mut watchdog = task.watchdog.unwrap_or_else(|| default_watchdog(task));
                 watchdog.time_us = time_us;
                 changed.watchdog = Some(watchdog);
-                format!("Set watchdog time of {name} to {}", format_time_us(time_us))
+                let value = format_time_us(time_us);
+                Text::UndoSetWatchdogTime.fill(language, &[("name", name), ("value", &value)])
             }
             Self::Sensitivity => {
                 let sensitivity = input
                     .parse::<u32>()
                     .ok()
                     .filter(|s| *s >= 1)
-                    .ok_or_else(|| {
-                        format!(
-                            "'{input}' is not a sensitivity: give how many overruns in a row trip the watchdog (1 or more)"
-                        )
-                    })?;
+                    .ok_or_else(|| TaskRefusal::NotASensitivity(input.to_owned()))?;
                 let mut watchdog = task.watchdog.unwrap_or_else(|| default_watchdog(task));
                 watchdog.sensitivity = sensitivity;
                 changed.watchdog = Some(watchdog);
-                format!("Set watchdog sensitivity of {name} to {sensitivity}")
+                let value = sensitivity.to_string();
+                Text::UndoSetSensitivity.fill(language, &[("name", name), ("value", &value)])
             }
         };
         Ok((changed, label))
@@ -148,24 +147,27 @@ impl Field {
 
 /// Why `program` cannot be added to `task`'s calls, or `None` when it can: it must be a
 /// PROGRAM of the project that the task does not call yet.
-pub fn call_problem(project: &Project, task: &Task, program: &str) -> Option<String> {
+pub fn call_problem(project: &Project, task: &Task, program: &str) -> Option<TaskRefusal> {
     let program = program.trim();
     if program.is_empty() {
-        return Some("choose a program to call".to_owned());
+        return Some(TaskRefusal::NoProgramChosen);
     }
     let is_program = matches!(
         project.application.object(program),
         Some(project_model::Object::Pou(pou)) if pou.kind == project_model::PouKind::Program
     );
     if !is_program {
-        return Some(format!("the project has no PROGRAM named '{program}'"));
+        return Some(TaskRefusal::NoSuchProgram(program.to_owned()));
     }
     if task
         .programs
         .iter()
         .any(|called| project_model::same_identifier(called, program))
     {
-        return Some(format!("{} already calls {program}", task.name));
+        return Some(TaskRefusal::AlreadyCalls {
+            task: task.name.clone(),
+            program: program.to_owned(),
+        });
     }
     None
 }
@@ -189,12 +191,18 @@ mod tests {
     #[test]
     fn valid_values_change_the_task_and_say_so() {
         let project = Project::default();
-        let (changed, label) = Field::Priority.apply(&project, &task(), "5").unwrap();
+        let (changed, label) = Field::Priority
+            .apply(&project, &task(), "5", Language::English)
+            .unwrap();
         assert_eq!(changed.priority, 5);
         assert_eq!(label, "Set priority of MainTask to 5");
-        let (changed, _) = Field::Interval.apply(&project, &task(), "T#2ms").unwrap();
+        let (changed, _) = Field::Interval
+            .apply(&project, &task(), "T#2ms", Language::English)
+            .unwrap();
         assert_eq!(changed.kind, TaskKind::Cyclic { interval_us: 2000 });
-        let (changed, _) = Field::Sensitivity.apply(&project, &task(), "3").unwrap();
+        let (changed, _) = Field::Sensitivity
+            .apply(&project, &task(), "3", Language::English)
+            .unwrap();
         assert_eq!(
             changed.watchdog,
             Some(Watchdog {
@@ -207,11 +215,31 @@ mod tests {
     #[test]
     fn out_of_range_values_are_refused() {
         let project = Project::default();
-        assert!(Field::Priority.apply(&project, &task(), "32").is_err());
-        assert!(Field::Priority.apply(&project, &task(), "-1").is_err());
-        assert!(Field::Interval.apply(&project, &task(), "0").is_err());
-        assert!(Field::Sensitivity.apply(&project, &task(), "0").is_err());
-        assert!(Field::Trigger.apply(&project, &task(), "a..b").is_err());
+        assert!(
+            Field::Priority
+                .apply(&project, &task(), "32", Language::English)
+                .is_err()
+        );
+        assert!(
+            Field::Priority
+                .apply(&project, &task(), "-1", Language::English)
+                .is_err()
+        );
+        assert!(
+            Field::Interval
+                .apply(&project, &task(), "0", Language::English)
+                .is_err()
+        );
+        assert!(
+            Field::Sensitivity
+                .apply(&project, &task(), "0", Language::English)
+                .is_err()
+        );
+        assert!(
+            Field::Trigger
+                .apply(&project, &task(), "a..b", Language::English)
+                .is_err()
+        );
         assert!(call_problem(&project, &task(), "Missing").is_some());
     }
 }

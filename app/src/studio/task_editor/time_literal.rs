@@ -1,19 +1,64 @@
 //! Task times typed as IEC durations (`T#10ms`, `T#1.5s`) or as plain microseconds.
 
-use compiler::literal::parse_duration;
+use compiler::literal::{LiteralError, parse_duration};
+
+use crate::studio::error_texts::literal_error_text;
+use crate::studio::i18n::{Language, Text};
+
+/// Why a typed task time is refused.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum TimeRefusal {
+    /// Nothing was typed.
+    Empty,
+    /// A plain number of microseconds too long to read.
+    TooLong(String),
+    /// The duration literal is malformed.
+    Literal(LiteralError),
+    /// The duration has a fraction of a microsecond.
+    NotWholeMicroseconds(String),
+    /// The time is zero or negative.
+    NotPositive,
+    /// The time is longer than a task time can be.
+    BeyondRange(String),
+}
+
+impl TimeRefusal {
+    /// The refusal as the user reads it, in `language`.
+    pub fn text(&self, language: Language) -> String {
+        match self {
+            Self::Empty => Text::TimeEmpty.get(language).to_owned(),
+            Self::TooLong(text) => Text::TimeTooLong.fill(language, &[("text", text)]),
+            Self::Literal(error) => literal_error_text(error, language),
+            Self::NotWholeMicroseconds(text) => {
+                Text::TimeNotWholeMicros.fill(language, &[("text", text)])
+            }
+            Self::NotPositive => Text::TimeNotPositive.get(language).to_owned(),
+            Self::BeyondRange(text) => Text::TimeTooLongAtMost.fill(
+                language,
+                &[("text", text), ("max", &format_time_us(u32::MAX))],
+            ),
+        }
+    }
+}
+
+impl From<LiteralError> for TimeRefusal {
+    fn from(error: LiteralError) -> Self {
+        Self::Literal(error)
+    }
+}
 
 /// Parses a task time into microseconds: an IEC duration (`T#10ms`, `TIME#2s`, or `10ms`
 /// without the prefix) or a plain number of microseconds (`10000`). Zero, negative times,
 /// fractions of a microsecond and times beyond the model's range are refused with the reason.
-pub fn parse_time_us(text: &str) -> Result<u32, String> {
+pub fn parse_time_us(text: &str) -> Result<u32, TimeRefusal> {
     let text = text.trim();
     if text.is_empty() {
-        return Err("enter a time such as T#10ms, or a number of microseconds".to_owned());
+        return Err(TimeRefusal::Empty);
     }
     let micros: i128 = if text.chars().all(|c| c.is_ascii_digit() || c == '_') {
         text.replace('_', "")
             .parse()
-            .map_err(|_| format!("'{text}' is too long"))?
+            .map_err(|_| TimeRefusal::TooLong(text.to_owned()))?
     } else {
         let literal = if text.contains('#') {
             text.to_owned()
@@ -22,17 +67,14 @@ pub fn parse_time_us(text: &str) -> Result<u32, String> {
         };
         let nanos = parse_duration(&literal)?;
         if nanos % 1000 != 0 {
-            return Err(format!(
-                "'{text}' is not a whole number of microseconds, the finest step a task has"
-            ));
+            return Err(TimeRefusal::NotWholeMicroseconds(text.to_owned()));
         }
         nanos / 1000
     };
     if micros <= 0 {
-        return Err("the time must be longer than 0".to_owned());
+        return Err(TimeRefusal::NotPositive);
     }
-    u32::try_from(micros)
-        .map_err(|_| format!("'{text}' is too long: at most {}", format_time_us(u32::MAX)))
+    u32::try_from(micros).map_err(|_| TimeRefusal::BeyondRange(text.to_owned()))
 }
 
 /// A time in microseconds as the shortest IEC duration literal: `T#10ms`, `T#2s`, `T#250us`.
@@ -77,12 +119,34 @@ mod tests {
 
     #[test]
     fn zero_fractions_and_garbage_are_refused_with_a_reason() {
-        assert!(parse_time_us("0").is_err_and(|e| e.contains("longer than 0")));
-        assert!(parse_time_us("T#0ms").is_err_and(|e| e.contains("longer than 0")));
-        assert!(parse_time_us("T#1500ns").is_err_and(|e| e.contains("microseconds")));
-        assert!(parse_time_us("T#2h").is_err_and(|e| e.contains("too long")));
+        assert!(
+            parse_time_us("0").is_err_and(|e| e.text(Language::English).contains("longer than 0"))
+        );
+        assert!(
+            parse_time_us("T#0ms")
+                .is_err_and(|e| e.text(Language::English).contains("longer than 0"))
+        );
+        assert!(
+            parse_time_us("T#1500ns")
+                .is_err_and(|e| e.text(Language::English).contains("microseconds"))
+        );
+        assert!(
+            parse_time_us("T#2h").is_err_and(|e| e.text(Language::English).contains("too long"))
+        );
         assert!(parse_time_us("fast").is_err());
         assert!(parse_time_us("").is_err());
+    }
+
+    #[test]
+    fn a_malformed_duration_is_refused_in_each_language() {
+        let refusal = parse_time_us("T#5x").unwrap_err();
+        assert!(matches!(refusal, TimeRefusal::Literal(_)));
+        assert!(refusal.text(Language::English).contains("unknown unit"));
+        assert!(
+            refusal
+                .text(Language::SimplifiedChinese)
+                .contains("单位未知")
+        );
     }
 
     #[test]

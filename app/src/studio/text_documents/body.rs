@@ -65,7 +65,7 @@ pub(super) fn body_ui(
     let read_only = view.online.is_logged_in();
     let key = TextKey::Body(target.clone());
     let text = text.to_owned();
-    let label = format!("Implementation of {}", target_label(&target));
+    let label = Text::ImplementationOf.fill(view.language, &[("name", &target_label(&target))]);
     let services = BodyServices {
         project,
         target: target.clone(),
@@ -125,7 +125,7 @@ pub(super) fn body_ui(
             _ => None,
         };
         commands.push(Command::EditText {
-            label: format!("Edit {}", target_label(&target)),
+            label: Text::UndoEdit.fill(view.language, &[("name", &target_label(&target))]),
             edits,
             merge_key,
         });

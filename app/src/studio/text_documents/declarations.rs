@@ -80,12 +80,10 @@ pub(super) fn declarations_ui(
         pou: pou.name.clone(),
         method: method.clone(),
     };
-    let label = format!(
-        "Declarations of {}",
-        method
-            .as_ref()
-            .map_or(pou.name.clone(), |m| format!("{}.{m}", pou.name))
-    );
+    let owner_name = method
+        .as_ref()
+        .map_or(pou.name.clone(), |m| format!("{}.{m}", pou.name));
+    let label = Text::DeclarationsOf.fill(view.language, &[("name", &owner_name)]);
     let diagnostics = declaration_diagnostics(&texts.live, &pou.name, &text);
     let entry = texts.editor(key, &text);
     entry.editor.set_read_only(read_only);
@@ -134,7 +132,8 @@ pub(super) fn declarations_ui(
                         _ => None,
                     };
                     commands.push(Command::EditText {
-                        label: format!("Edit the declarations of {}", pou.name),
+                        label: Text::UndoEditDeclarations
+                            .fill(view.language, &[("name", &pou.name)]),
                         edits: vec![*edit],
                         merge_key,
                     });
@@ -205,7 +204,7 @@ pub(crate) fn gvl_document_ui(
     entry.editor.set_read_only(read_only);
     let output = entry.editor.show(
         ui,
-        &format!("Declarations of {}", gvl.name),
+        &Text::DeclarationsOf.fill(view.language, &[("name", &gvl.name)]),
         &KeywordCompletions,
     );
     if output.changes.is_empty() {
@@ -227,7 +226,7 @@ pub(crate) fn gvl_document_ui(
                     _ => None,
                 };
                 commands.push(Command::EditText {
-                    label: format!("Edit the declarations of {}", gvl.name),
+                    label: Text::UndoEditDeclarations.fill(view.language, &[("name", &gvl.name)]),
                     edits: vec![*edit],
                     merge_key,
                 });

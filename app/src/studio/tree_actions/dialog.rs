@@ -8,6 +8,7 @@ use project_model::{PouKind, Project};
 
 use super::action::{TreeAction, rename_scope};
 use super::names::{NameScope, name_problem, unique_name};
+use super::refusal::Refusal;
 use crate::studio::i18n::{Language, Text};
 use crate::studio::tree_node::TreeNode;
 
@@ -76,7 +77,7 @@ impl TreeDialog {
     }
 
     /// Why the entry cannot be confirmed yet, if it cannot.
-    fn problem(&self, project: &Project) -> Option<String> {
+    fn problem(&self, project: &Project) -> Option<Refusal> {
         match self {
             Self::NewPou {
                 kind,
@@ -85,7 +86,7 @@ impl TreeDialog {
                 ..
             } => name_problem(project, NameScope::Object, name.trim(), None).or_else(|| {
                 (*kind == PouKind::Function && return_type.trim().is_empty())
-                    .then(|| "a function needs a return type, such as BOOL or INT".to_owned())
+                    .then_some(Refusal::NoReturnType)
             }),
             Self::Rename { node, name, .. } => {
                 let (scope, old) = rename_scope(node)?;
@@ -128,6 +129,7 @@ impl TreeDialog {
             ui.set_min_width(320.0);
             let entered = self.fields_ui(ui, language);
             if let Some(problem) = &problem {
+                let problem = problem.text(language);
                 ui.label(RichText::new(problem).color(ui.visuals().error_fg_color));
             }
             ui.add_space(6.0);

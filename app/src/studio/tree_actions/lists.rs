@@ -5,6 +5,7 @@ use project_model::{Edit, ListEdit, Project};
 
 use super::names::{NameScope, unique_name};
 use super::new_objects::{new_axis, new_io_area, new_modbus_device, new_task};
+use crate::studio::i18n::Text;
 use crate::studio::tree_node::TreeNode;
 
 /// Which list of the device tree.
@@ -53,12 +54,12 @@ impl ListKind {
     }
 
     /// What one entry is called in undo labels.
-    pub fn noun(self) -> &'static str {
+    pub fn noun(self) -> Text {
         match self {
-            Self::Tasks => "task",
-            Self::IoAreas => "I/O area",
-            Self::ModbusDevices => "Modbus TCP device",
-            Self::Axes => "axis",
+            Self::Tasks => Text::NounTask,
+            Self::IoAreas => Text::NounIoArea,
+            Self::ModbusDevices => Text::NounModbusDevice,
+            Self::Axes => Text::NounAxis,
         }
     }
 

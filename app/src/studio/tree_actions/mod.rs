@@ -12,6 +12,7 @@ mod moves;
 mod names;
 mod new_objects;
 mod plan_step;
+mod refusal;
 #[cfg(test)]
 mod tests;
 
@@ -25,8 +26,10 @@ pub use moves::{DropPlace, accepts, place_at, plan_move};
 pub use names::{NameScope, name_problem, unique_name};
 pub use new_objects::NewObject;
 pub use plan_step::{Plan, locate};
+pub use refusal::Refusal;
 
 use self::new_objects::{new_pou, pou_kind_description};
+use super::i18n::{Language, Text};
 use super::tree_node::TreeNode;
 
 /// What the device tree keeps between frames.
@@ -38,9 +41,13 @@ pub struct TreeEditState {
     pub dirty: DirtyMarkers,
 }
 
-/// The edits that carry out `action` on `project`: `Ok(None)` when it changes nothing, or the
-/// reason it cannot be done.
-pub fn plan(project: &Project, action: &TreeAction) -> Result<Option<Plan>, String> {
+/// The edits that carry out `action` on `project`, labelled in `language`: `Ok(None)` when it
+/// changes nothing, or why it cannot be done.
+pub fn plan(
+    project: &Project,
+    action: &TreeAction,
+    language: Language,
+) -> Result<Option<Plan>, Refusal> {
     match action {
         TreeAction::AddPou {
             folder,
@@ -56,7 +63,8 @@ pub fn plan(project: &Project, action: &TreeAction) -> Result<Option<Plan>, Stri
                 project,
                 folder,
                 Object::Pou(pou),
-                pou_kind_description(*kind),
+                pou_kind_description(*kind).get(language),
+                language,
             )?))
         }
         TreeAction::AddObject { folder, kind } => {
@@ -68,7 +76,8 @@ pub fn plan(project: &Project, action: &TreeAction) -> Result<Option<Plan>, Stri
                 project,
                 folder,
                 object,
-                kind.description(),
+                kind.description().get(language),
+                language,
             )?))
         }
         TreeAction::AddFolder { folder } => {
@@ -79,7 +88,7 @@ pub fn plan(project: &Project, action: &TreeAction) -> Result<Option<Plan>, Stri
             let mut path = folder.clone();
             path.push(name.clone());
             Ok(Some(Plan {
-                label: format!("Add folder {name}"),
+                label: Text::UndoAddFolder.fill(language, &[("name", &name)]),
                 edits: vec![Edit::Tree(TreeEdit::Insert {
                     folder: folder.clone(),
                     index: parent.children.len(),
@@ -95,28 +104,31 @@ pub fn plan(project: &Project, action: &TreeAction) -> Result<Option<Plan>, Stri
         TreeAction::AddListEntry(kind) => {
             let (edit, name) = kind.add(project);
             Ok(Some(Plan {
-                label: format!("Add {} {name}", kind.noun()),
+                label: Text::UndoAdd.fill(
+                    language,
+                    &[("kind", kind.noun().get(language)), ("name", &name)],
+                ),
                 edits: vec![edit],
                 open: Some(kind.entry(name)),
                 select: None,
             }))
         }
-        TreeAction::Rename { node, name } => plan_rename(project, node, name),
-        TreeAction::Duplicate(node) => plan_duplicate(project, node).map(Some),
-        TreeAction::Delete(node) => plan_delete(project, node).map(Some),
+        TreeAction::Rename { node, name } => plan_rename(project, node, name, language),
+        TreeAction::Duplicate(node) => plan_duplicate(project, node, language).map(Some),
+        TreeAction::Delete(node) => plan_delete(project, node, language).map(Some),
         TreeAction::Move {
             node,
             target,
             place,
-        } => plan_move(project, node, target, *place),
+        } => plan_move(project, node, target, *place, language),
     }
 }
 
-fn existing_folder<'a>(project: &'a Project, path: &[String]) -> Result<&'a Folder, String> {
+fn existing_folder<'a>(project: &'a Project, path: &[String]) -> Result<&'a Folder, Refusal> {
     project
         .application
         .folder(path)
-        .ok_or_else(|| EditError::NoSuchFolder(path.join("/")).to_string())
+        .ok_or_else(|| EditError::NoSuchFolder(path.join("/")).into())
 }
 
 fn add_object(
@@ -124,11 +136,12 @@ fn add_object(
     folder: &[String],
     object: Object,
     description: &str,
-) -> Result<Plan, String> {
+    language: Language,
+) -> Result<Plan, Refusal> {
     let parent = existing_folder(project, folder)?;
     let name = object.name().to_owned();
     Ok(Plan {
-        label: format!("Add {description} {name}"),
+        label: Text::UndoAdd.fill(language, &[("kind", description), ("name", &name)]),
         edits: vec![Edit::Tree(TreeEdit::Insert {
             folder: folder.to_vec(),
             index: parent.children.len(),
@@ -139,11 +152,16 @@ fn add_object(
     })
 }
 
-fn missing(project: &Project, node: &TreeNode) -> String {
-    EditError::NoSuchObject(node.title(Some(project))).to_string()
+fn missing(project: &Project, node: &TreeNode) -> Refusal {
+    EditError::NoSuchObject(node.title(Some(project))).into()
 }
 
-fn plan_rename(project: &Project, node: &TreeNode, name: &str) -> Result<Option<Plan>, String> {
+fn plan_rename(
+    project: &Project,
+    node: &TreeNode,
+    name: &str,
+    language: Language,
+) -> Result<Option<Plan>, Refusal> {
     let (scope, old) = rename_scope(node).ok_or_else(|| missing(project, node))?;
     if old == name {
         return Ok(None);
@@ -151,7 +169,7 @@ fn plan_rename(project: &Project, node: &TreeNode, name: &str) -> Result<Option<
     if let Some(problem) = name_problem(project, scope, name, Some(old)) {
         return Err(problem);
     }
-    let label = format!("Rename {old} to {name}");
+    let label = Text::UndoRename.fill(language, &[("old", old), ("name", name)]);
     if let Some((kind, _)) = ListKind::of_entry(node) {
         let index = kind
             .index_of(project, old)
@@ -223,7 +241,7 @@ fn task_calls_renamed(project: &Project, old: &str, new: &str) -> Vec<Edit> {
         .collect()
 }
 
-fn plan_duplicate(project: &Project, node: &TreeNode) -> Result<Plan, String> {
+fn plan_duplicate(project: &Project, node: &TreeNode, language: Language) -> Result<Plan, Refusal> {
     if let Some((kind, name)) = ListKind::of_entry(node) {
         let index = kind
             .index_of(project, name)
@@ -233,7 +251,7 @@ fn plan_duplicate(project: &Project, node: &TreeNode) -> Result<Plan, String> {
             .duplicated(project, index, &copy)
             .ok_or_else(|| missing(project, node))?;
         return Ok(Plan {
-            label: format!("Duplicate {name} as {copy}"),
+            label: Text::UndoDuplicate.fill(language, &[("name", name), ("copy", &copy)]),
             edits: vec![edit],
             open: None,
             select: Some(kind.entry(copy)),
@@ -276,7 +294,8 @@ fn plan_duplicate(project: &Project, node: &TreeNode) -> Result<Plan, String> {
         }
     };
     Ok(Plan {
-        label: format!("Duplicate {} as {copy_name}", original.name()),
+        label: Text::UndoDuplicate
+            .fill(language, &[("name", original.name()), ("copy", &copy_name)]),
         edits: vec![Edit::Tree(TreeEdit::Insert {
             folder,
             index: index + 1,
@@ -296,7 +315,7 @@ fn rename_objects(folder: &mut Folder, rename: &mut impl FnMut(&mut Object)) {
     }
 }
 
-fn plan_delete(project: &Project, node: &TreeNode) -> Result<Plan, String> {
+fn plan_delete(project: &Project, node: &TreeNode, language: Language) -> Result<Plan, Refusal> {
     let name = node.title(Some(project));
     let edit = if let Some((kind, entry)) = ListKind::of_entry(node) {
         let index = kind
@@ -308,7 +327,7 @@ fn plan_delete(project: &Project, node: &TreeNode) -> Result<Plan, String> {
         Edit::Tree(TreeEdit::Remove { folder, index })
     };
     Ok(Plan {
-        label: format!("Delete {name}"),
+        label: Text::UndoDelete.fill(language, &[("name", &name)]),
         edits: vec![edit],
         open: None,
         select: None,

@@ -4,6 +4,8 @@ use project_model::{Edit, EditError, Project, TreeEdit};
 
 use super::lists::ListKind;
 use super::plan_step::{Plan, locate};
+use super::refusal::Refusal;
+use crate::studio::i18n::{Language, Text};
 use crate::studio::tree_node::TreeNode;
 
 /// Where a dragged node lands relative to the node it is dropped on.
@@ -52,14 +54,15 @@ pub fn plan_move(
     dragged: &TreeNode,
     target: &TreeNode,
     place: DropPlace,
-) -> Result<Option<Plan>, String> {
+    language: Language,
+) -> Result<Option<Plan>, Refusal> {
     if !accepts(dragged, target) {
         return Ok(None);
     }
     if let Some((kind, name)) = ListKind::of_entry(dragged) {
-        return Ok(plan_list_move(project, kind, name, target, place));
+        return Ok(plan_list_move(project, kind, name, target, place, language));
     }
-    let missing = || EditError::NoSuchObject(dragged.title(Some(project))).to_string();
+    let missing = || Refusal::from(EditError::NoSuchObject(dragged.title(Some(project))));
     let (from_folder, from_index) = locate(project, dragged).ok_or_else(missing)?;
     let (to_folder, slot) = match (target, place) {
         (TreeNode::Application, _) => (Vec::new(), project.application.children.len()),
@@ -67,7 +70,7 @@ pub fn plan_move(
             let folder = project
                 .application
                 .folder(path)
-                .ok_or_else(|| EditError::NoSuchFolder(path.join("/")).to_string())?;
+                .ok_or_else(|| Refusal::from(EditError::NoSuchFolder(path.join("/"))))?;
             (path.clone(), folder.children.len())
         }
         (_, place) => {
@@ -84,7 +87,7 @@ pub fn plan_move(
     if let TreeNode::Folder(path) = dragged
         && to_folder.starts_with(path)
     {
-        return Err(EditError::MoveIntoItself.to_string());
+        return Err(EditError::MoveIntoItself.into());
     }
     let to_index = if to_folder == from_folder && from_index < slot {
         slot - 1
@@ -94,14 +97,16 @@ pub fn plan_move(
     if to_folder == from_folder && to_index == from_index {
         return Ok(None);
     }
-    let label = match (target, place) {
-        (TreeNode::Application, _) => format!("Move {name} into the application"),
-        (TreeNode::Folder(_), DropPlace::Into) => {
-            format!("Move {name} into {}", target.title(Some(project)))
-        }
-        (_, DropPlace::After) => format!("Move {name} after {}", target.title(Some(project))),
-        _ => format!("Move {name} before {}", target.title(Some(project))),
+    let template = match (target, place) {
+        (TreeNode::Application, _) => Text::UndoMoveIntoApplication,
+        (TreeNode::Folder(_), DropPlace::Into) => Text::UndoMoveInto,
+        (_, DropPlace::After) => Text::UndoMoveAfter,
+        _ => Text::UndoMoveBefore,
     };
+    let label = template.fill(
+        language,
+        &[("name", &name), ("target", &target.title(Some(project)))],
+    );
     let moved = match dragged {
         TreeNode::Folder(_) => {
             let mut path = to_folder.clone();
@@ -129,6 +134,7 @@ fn plan_list_move(
     name: &str,
     target: &TreeNode,
     place: DropPlace,
+    language: Language,
 ) -> Option<Plan> {
     let from = kind.index_of(project, name)?;
     let (_, target_name) = ListKind::of_entry(target)?;
@@ -142,13 +148,13 @@ fn plan_list_move(
     if to == from {
         return None;
     }
-    let side = if place == DropPlace::After {
-        "after"
+    let template = if place == DropPlace::After {
+        Text::UndoMoveAfter
     } else {
-        "before"
+        Text::UndoMoveBefore
     };
     Some(Plan {
-        label: format!("Move {name} {side} {target_name}"),
+        label: template.fill(language, &[("name", name), ("target", target_name)]),
         edits: vec![kind.moved(from, to)],
         open: None,
         select: Some(kind.entry(name.to_owned())),

@@ -3,6 +3,8 @@
 use compiler::syntax::SyntaxKind;
 use project_model::{EditError, Node, Project, is_valid_identifier, same_identifier};
 
+use super::refusal::Refusal;
+
 /// Where a name must be unique. Application objects share one namespace (they are global
 /// names of the program); folders only need to differ from their siblings; each list of the
 /// device tree is a namespace of its own.
@@ -56,20 +58,18 @@ pub fn name_problem(
     scope: NameScope<'_>,
     name: &str,
     except: Option<&str>,
-) -> Option<String> {
+) -> Option<Refusal> {
     if name.is_empty() {
-        return Some("enter a name".to_owned());
+        return Some(Refusal::EmptyName);
     }
     if !is_valid_identifier(name) {
-        return Some(EditError::InvalidName(name.to_owned()).to_string());
+        return Some(EditError::InvalidName(name.to_owned()).into());
     }
     if SyntaxKind::from_keyword(&name.to_uppercase()).is_some() {
-        return Some(format!(
-            "'{name}' is a keyword of IEC 61131-3 and cannot name anything"
-        ));
+        return Some(Refusal::Keyword(name.to_owned()));
     }
     if scope.is_taken(project, name, except) {
-        return Some(EditError::DuplicateName(name.to_owned()).to_string());
+        return Some(EditError::DuplicateName(name.to_owned()).into());
     }
     None
 }
@@ -101,6 +101,7 @@ pub fn unique_name(base: &str, taken: impl Fn(&str) -> bool) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::studio::i18n::Language;
 
     #[test]
     fn fresh_names_count_up_from_the_stem() {
@@ -123,9 +124,15 @@ mod tests {
             programs: Vec::new(),
         });
         let problem = |name: &str, except| name_problem(&project, NameScope::Task, name, except);
-        assert!(problem("1st", None).is_some_and(|p| p.contains("not a valid name")));
-        assert!(problem("if", None).is_some_and(|p| p.contains("keyword")));
-        assert!(problem("maintask", None).is_some_and(|p| p.contains("already used")));
+        assert!(
+            problem("1st", None)
+                .is_some_and(|p| p.text(Language::English).contains("not a valid name"))
+        );
+        assert!(problem("if", None).is_some_and(|p| p.text(Language::English).contains("keyword")));
+        assert!(
+            problem("maintask", None)
+                .is_some_and(|p| p.text(Language::English).contains("already used"))
+        );
         assert_eq!(problem("MAINTASK", Some("MainTask")), None);
         assert_eq!(problem("Other", None), None);
     }

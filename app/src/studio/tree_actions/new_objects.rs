@@ -6,6 +6,8 @@ use project_model::{
     TraceConfig, TypeDefinition, WatchList, WordOrder,
 };
 
+use crate::studio::i18n::Text;
+
 /// The kinds of application objects the tree can add without asking anything but a name.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum NewObject {
@@ -34,13 +36,13 @@ impl NewObject {
     }
 
     /// What the kind is called in undo labels.
-    pub fn description(self) -> &'static str {
+    pub fn description(self) -> Text {
         match self {
-            Self::Gvl => "global variable list",
-            Self::Structure => "data type",
-            Self::WatchList => "watch list",
-            Self::Trace => "trace",
-            Self::Cam => "cam table",
+            Self::Gvl => Text::NounGvl,
+            Self::Structure => Text::NounDataType,
+            Self::WatchList => Text::NounWatchList,
+            Self::Trace => Text::TraceWord,
+            Self::Cam => Text::NounCamTable,
         }
     }
 
@@ -98,12 +100,12 @@ pub fn new_pou(name: String, kind: PouKind, return_type: Option<String>) -> Pou 
 }
 
 /// What a POU kind is called in menus and undo labels.
-pub fn pou_kind_description(kind: PouKind) -> &'static str {
+pub fn pou_kind_description(kind: PouKind) -> Text {
     match kind {
-        PouKind::Program => "program",
-        PouKind::FunctionBlock => "function block",
-        PouKind::Function => "function",
-        PouKind::Interface => "interface",
+        PouKind::Program => Text::NounProgram,
+        PouKind::FunctionBlock => Text::NounFunctionBlock,
+        PouKind::Function => Text::NounFunction,
+        PouKind::Interface => Text::NounInterface,
     }
 }
 

@@ -3,6 +3,7 @@
 use project_model::{Edit, Object, Project, load_project};
 
 use super::{DropPlace, ListKind, NewObject, TreeAction, plan};
+use crate::studio::i18n::Language;
 use crate::studio::tree_node::TreeNode;
 
 fn example() -> Project {
@@ -13,7 +14,7 @@ fn example() -> Project {
 
 /// Plans `action` on `project` and applies the plan's edits; returns the plan's label.
 fn apply(project: &mut Project, action: TreeAction) -> String {
-    let plan = plan(project, &action).unwrap().unwrap();
+    let plan = plan(project, &action, Language::English).unwrap().unwrap();
     Edit::Group(plan.edits).apply(project).unwrap();
     plan.label
 }
@@ -60,7 +61,7 @@ fn a_drop_before_or_after_a_node_of_the_same_folder_lands_there() {
         target: TreeNode::Object("FB_Conveyor".into()),
         place: DropPlace::Before,
     };
-    assert_eq!(plan(&project, &unchanged), Ok(None));
+    assert_eq!(plan(&project, &unchanged, Language::English), Ok(None));
 }
 
 #[test]
@@ -71,7 +72,7 @@ fn a_folder_cannot_be_dropped_into_its_own_contents() {
         target: TreeNode::Object("CAM_Knife".into()),
         place: DropPlace::Before,
     };
-    assert!(plan(&project, &into_itself).is_err());
+    assert!(plan(&project, &into_itself, Language::English).is_err());
 }
 
 #[test]

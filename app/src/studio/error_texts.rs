@@ -1,0 +1,253 @@
+//! The refusals of the project model, the compiler's literal parser and the app's value parser
+//! in the interface language: each variant maps to a [`Text`] template, so a new variant fails to compile until
+//! it is translated, and the user never reads a library's English `Display`.
+
+use compiler::literal::LiteralError;
+use project_model::EditError;
+
+use crate::literal_value::ValueError;
+
+use super::i18n::{Language, Text};
+
+/// Why an edit of the project was refused, in `language`.
+pub fn edit_error_text(error: &EditError, language: Language) -> String {
+    match error {
+        EditError::NoSuchObject(name) => Text::EditNoSuchObject.fill(language, &[("name", name)]),
+        EditError::NoSuchFolder(name) => Text::EditNoSuchFolder.fill(language, &[("name", name)]),
+        EditError::NoSuchMember { pou, what, name } => {
+            let what = match *what {
+                "method" => Text::WhatMethod.get(language),
+                "property" => Text::WhatProperty.get(language),
+                "action" => Text::WhatAction.get(language),
+                other => other,
+            };
+            Text::EditNoSuchMember.fill(language, &[("pou", pou), ("what", what), ("name", name)])
+        }
+        EditError::IndexOutOfRange { index, len } => Text::EditIndexOutOfRange.fill(
+            language,
+            &[("index", &index.to_string()), ("len", &len.to_string())],
+        ),
+        EditError::InvalidName(name) => Text::EditInvalidName.fill(language, &[("name", name)]),
+        EditError::DuplicateName(name) => Text::EditDuplicateName.fill(language, &[("name", name)]),
+        // The reason is the model's own description of the stored content; it names what
+        // clashes and is shown as it is.
+        EditError::InvalidObject(reason) => {
+            Text::EditInvalidObject.fill(language, &[("reason", reason)])
+        }
+        EditError::NotText(name) => Text::EditNotText.fill(language, &[("name", name)]),
+        EditError::BadTextRange { start, end, len } => Text::EditBadTextRange.fill(
+            language,
+            &[
+                ("start", &start.to_string()),
+                ("end", &end.to_string()),
+                ("len", &len.to_string()),
+            ],
+        ),
+        EditError::MoveIntoItself => Text::EditMoveIntoItself.get(language).to_owned(),
+        EditError::KindChanged(name) => Text::EditKindChanged.fill(language, &[("name", name)]),
+    }
+}
+
+/// Why a literal is not a value, in `language`.
+pub fn literal_error_text(error: &LiteralError, language: Language) -> String {
+    let (template, text, extra) = match error {
+        LiteralError::UnknownBase { base } => {
+            return Text::LitUnknownBase.fill(language, &[("base", base)]);
+        }
+        LiteralError::NoDigits { text } => (Text::LitNoDigits, text, None),
+        LiteralError::BadDigit { text, base } => {
+            let template = match base {
+                2 => Text::LitBadDigitBinary,
+                8 => Text::LitBadDigitOctal,
+                16 => Text::LitBadDigitHex,
+                _ => Text::LitBadDigitDecimal,
+            };
+            (template, text, None)
+        }
+        LiteralError::NotANumber { text } => (Text::LitNotANumber, text, None),
+        LiteralError::NoValue { text } => (Text::LitNoValue, text, None),
+        LiteralError::NoUnit { text } => (Text::LitNoUnit, text, None),
+        LiteralError::NoNumber { text, rest } => (Text::LitNoNumber, text, Some(("rest", rest))),
+        LiteralError::BadNumber { text, number } => {
+            (Text::LitBadNumber, text, Some(("number", number)))
+        }
+        LiteralError::UnknownUnit { text, rest } => {
+            (Text::LitUnknownUnit, text, Some(("rest", rest)))
+        }
+        LiteralError::NotADate { text } => (Text::LitNotADate, text, None),
+        LiteralError::NoSuchDate { text } => (Text::LitNoSuchDate, text, None),
+        LiteralError::NotATimeOfDay { text } => (Text::LitNotATimeOfDay, text, None),
+        LiteralError::NotADateAndTime { text } => (Text::LitNotADateAndTime, text, None),
+        LiteralError::NoHash { text } => (Text::LitNoHash, text, None),
+    };
+    match extra {
+        Some((key, value)) => template.fill(language, &[("text", text), (key, value)]),
+        None => template.fill(language, &[("text", text)]),
+    }
+}
+
+/// Why a typed value is not one of its variable's type, in `language`.
+pub fn value_error_text(error: &ValueError, language: Language) -> String {
+    match error {
+        ValueError::NotAString(text) => Text::ValueNotAString.fill(language, &[("text", text)]),
+        ValueError::TooLong { text, length } => {
+            Text::ValueTooLong.fill(language, &[("text", text), ("length", &length.to_string())])
+        }
+        ValueError::NotWritable => Text::ValueNotWritable.get(language).to_owned(),
+        ValueError::NotAValue { text, ty } => {
+            Text::ValueNotAValue.fill(language, &[("text", text), ("ty", ty)])
+        }
+        ValueError::BadLiteral { text, ty, error } => Text::ValueBadLiteral.fill(
+            language,
+            &[
+                ("text", text),
+                ("ty", ty),
+                ("reason", &literal_error_text(error, language)),
+            ],
+        ),
+        ValueError::OutOfRange { text, ty } => {
+            Text::ValueOutOfRange.fill(language, &[("text", text), ("ty", ty)])
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn text(value: &str) -> String {
+        value.to_owned()
+    }
+
+    /// One error of every variant; the `match` in each function keeps this list complete.
+    fn edit_errors() -> Vec<EditError> {
+        vec![
+            EditError::NoSuchObject(text("Main")),
+            EditError::NoSuchFolder(text("Folder/Sub")),
+            EditError::NoSuchMember {
+                pou: text("Motor"),
+                what: "method",
+                name: text("Start"),
+            },
+            EditError::NoSuchMember {
+                pou: text("Motor"),
+                what: "property",
+                name: text("Speed"),
+            },
+            EditError::NoSuchMember {
+                pou: text("Motor"),
+                what: "action",
+                name: text("Reset"),
+            },
+            EditError::IndexOutOfRange { index: 3, len: 2 },
+            EditError::InvalidName(text("1st")),
+            EditError::DuplicateName(text("Main")),
+            EditError::InvalidObject(text("two methods are named Start")),
+            EditError::NotText(text("Main")),
+            EditError::BadTextRange {
+                start: 4,
+                end: 2,
+                len: 9,
+            },
+            EditError::MoveIntoItself,
+            EditError::KindChanged(text("Main")),
+        ]
+    }
+
+    fn literal_errors() -> Vec<LiteralError> {
+        let t = || text("T#5x");
+        let mut errors = vec![
+            LiteralError::UnknownBase { base: text("7") },
+            LiteralError::NoDigits { text: text("16#") },
+            LiteralError::NotANumber { text: t() },
+            LiteralError::NoValue { text: text("T#") },
+            LiteralError::NoUnit { text: text("T#5") },
+            LiteralError::NoNumber {
+                text: text("T#ms"),
+                rest: text("ms"),
+            },
+            LiteralError::BadNumber {
+                text: t(),
+                number: text("1.2.3"),
+            },
+            LiteralError::UnknownUnit {
+                text: t(),
+                rest: text("x"),
+            },
+            LiteralError::NotADate { text: t() },
+            LiteralError::NoSuchDate { text: t() },
+            LiteralError::NotATimeOfDay { text: t() },
+            LiteralError::NotADateAndTime { text: t() },
+            LiteralError::NoHash { text: t() },
+        ];
+        for base in [2, 8, 10, 16] {
+            errors.push(LiteralError::BadDigit { text: t(), base });
+        }
+        errors
+    }
+
+    #[test]
+    fn every_edit_error_reads_as_its_english_message_and_has_chinese() {
+        for error in edit_errors() {
+            assert_eq!(
+                edit_error_text(&error, Language::English),
+                error.to_string()
+            );
+            let chinese = edit_error_text(&error, Language::SimplifiedChinese);
+            assert!(!chinese.contains('{'), "{chinese}");
+            if !matches!(error, EditError::InvalidObject(_)) {
+                assert_ne!(chinese, error.to_string());
+            }
+        }
+    }
+
+    #[test]
+    fn every_value_error_reads_as_its_english_message_and_has_chinese() {
+        let errors = [
+            ValueError::NotAString(text("abc")),
+            ValueError::TooLong {
+                text: text("too long"),
+                length: 3,
+            },
+            ValueError::NotWritable,
+            ValueError::NotAValue {
+                text: text("maybe"),
+                ty: "BOOL",
+            },
+            ValueError::BadLiteral {
+                text: text("16#G"),
+                ty: "INT",
+                error: LiteralError::BadDigit {
+                    text: text("16#G"),
+                    base: 16,
+                },
+            },
+            ValueError::OutOfRange {
+                text: text("300"),
+                ty: "SINT",
+            },
+        ];
+        for error in errors {
+            assert_eq!(
+                value_error_text(&error, Language::English),
+                error.to_string()
+            );
+            let chinese = value_error_text(&error, Language::SimplifiedChinese);
+            assert!(!chinese.contains('{'), "{chinese}");
+            assert_ne!(chinese, error.to_string());
+        }
+    }
+
+    #[test]
+    fn every_literal_error_reads_as_its_english_message_and_has_chinese() {
+        for error in literal_errors() {
+            assert_eq!(
+                literal_error_text(&error, Language::English),
+                error.to_string()
+            );
+            let chinese = literal_error_text(&error, Language::SimplifiedChinese);
+            assert!(!chinese.contains('{'), "{chinese}");
+            assert_ne!(chinese, error.to_string());
+        }
+    }
+}

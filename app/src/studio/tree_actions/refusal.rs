@@ -1,0 +1,62 @@
+//! Why the device tree refuses an action, kept typed until it is shown in the interface
+//! language.
+
+use project_model::EditError;
+
+use crate::studio::error_texts::edit_error_text;
+use crate::studio::i18n::{Language, Text};
+
+/// Why a device tree action or a dialog entry cannot be carried out.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Refusal {
+    /// The project model refuses it: a missing object, an invalid or taken name, ….
+    Edit(EditError),
+    /// The name field is empty.
+    EmptyName,
+    /// The name is a keyword of IEC 61131-3.
+    Keyword(String),
+    /// A new function has no return type.
+    NoReturnType,
+}
+
+impl Refusal {
+    /// The refusal as the user reads it, in `language`.
+    pub fn text(&self, language: Language) -> String {
+        match self {
+            Self::Edit(error) => edit_error_text(error, language),
+            Self::EmptyName => Text::RefuseEmptyName.get(language).to_owned(),
+            Self::Keyword(name) => Text::RefuseKeyword.fill(language, &[("name", name)]),
+            Self::NoReturnType => Text::RefuseNoReturnType.get(language).to_owned(),
+        }
+    }
+}
+
+impl From<EditError> for Refusal {
+    fn from(error: EditError) -> Self {
+        Self::Edit(error)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn refusals_read_in_english_and_chinese() {
+        let keyword = Refusal::Keyword("if".to_owned());
+        assert_eq!(
+            keyword.text(Language::English),
+            "'if' is a keyword of IEC 61131-3 and cannot name anything"
+        );
+        assert!(keyword.text(Language::SimplifiedChinese).contains("关键字"));
+        let taken = Refusal::from(EditError::DuplicateName("Main".to_owned()));
+        assert_eq!(
+            taken.text(Language::English),
+            "the name 'Main' is already used"
+        );
+        assert_eq!(
+            taken.text(Language::SimplifiedChinese),
+            "名称“Main”已被使用"
+        );
+    }
+}
