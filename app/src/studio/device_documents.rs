@@ -8,6 +8,7 @@ use egui::{RichText, Ui};
 use project_model::Project;
 
 use super::command::{Command, Commands};
+use super::device_refusals::refusal_words;
 use super::i18n::{Language, Text};
 use super::tree_node::TreeNode;
 
@@ -163,9 +164,6 @@ fn device_texts(language: Language) -> DeviceTexts {
         set_field: get(Text::DeviceSetField),
         add_row: get(Text::DeviceAddRow),
         delete_row: get(Text::DeviceDeleteRow),
-        bit_table_address: get(Text::DeviceBitTableAddress),
-        register_table_address: get(Text::DeviceRegisterTableAddress),
-        not_a_number: get(Text::DeviceNotANumber),
-        not_a_whole_number: get(Text::DeviceNotAWholeNumber),
+        refusal: refusal_words(language),
     }
 }

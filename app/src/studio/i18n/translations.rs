@@ -528,6 +528,149 @@ impl Text {
                 "'{text}' is not a whole number from {min} to {max}",
                 "'{text}' 不是 {min} 到 {max} 之间的整数",
             ),
+            Self::DeviceProblemInvalidName => (
+                "the {kind} name '{name}' is not an identifier: use letters, digits and '_', starting with a letter or '_'",
+                "{kind}名称 '{name}' 不是标识符：请使用字母、数字和 '_'，并以字母或 '_' 开头",
+            ),
+            Self::DeviceProblemDuplicateName => (
+                "the name '{name}' is already used by another {kind}",
+                "名称 '{name}' 已被另一个{kind}使用",
+            ),
+            Self::DeviceProblemEmptyHost => (
+                "the host is empty: enter a host name or an IP address",
+                "主机为空：请输入主机名或 IP 地址",
+            ),
+            Self::DeviceProblemZeroPort => (
+                "port 0 cannot be used: enter a port from 1 to 65535",
+                "不能使用端口 0：请输入 1 到 65535 之间的端口",
+            ),
+            Self::DeviceProblemEmptyRangeAddress => (
+                "range {row} of the Modbus map has no located address: enter one such as %MW0",
+                "Modbus 映射的第 {row} 个范围没有定位地址：请输入一个，例如 %MW0",
+            ),
+            Self::DeviceProblemEmptyRange => (
+                "range {row} of the Modbus map has a count of 0: map at least 1",
+                "Modbus 映射的第 {row} 个范围数量为 0：至少映射 1 个",
+            ),
+            Self::DeviceProblemRangePastEnd => (
+                "range {row} of the Modbus map runs from {start} for {count} and passes address 65535",
+                "Modbus 映射的第 {row} 个范围从 {start} 开始共 {count} 个，超出了地址 65535",
+            ),
+            Self::DeviceProblemRangesOverlap => (
+                "range {row} of the Modbus map overlaps range {other} of the same table",
+                "Modbus 映射的第 {row} 个范围与同一表的第 {other} 个范围重叠",
+            ),
+            Self::DeviceProblemZeroSize => (
+                "the size of an I/O area is at least 1 byte",
+                "I/O 区域的大小至少为 1 字节",
+            ),
+            Self::DeviceProblemAreaPastEnd => (
+                "start byte {start_byte} with a size of {size_bytes} bytes passes the end of the area ({limit} bytes)",
+                "起始字节 {start_byte} 加上 {size_bytes} 字节的大小超出了区域末尾（{limit} 字节）",
+            ),
+            Self::DeviceProblemAreaByteOverlaps => (
+                "byte {byte} overlaps the I/O area '{other}'",
+                "字节 {byte} 与 I/O 区域 '{other}' 重叠",
+            ),
+            Self::DeviceProblemAreaBytesOverlap => (
+                "bytes {first} to {last} overlap the I/O area '{other}'",
+                "字节 {first} 到 {last} 与 I/O 区域 '{other}' 重叠",
+            ),
+            Self::DeviceProblemZeroPollInterval => {
+                ("the poll interval is at least 1 ms", "轮询间隔至少为 1 ms")
+            }
+            Self::DeviceProblemZeroTimeout => ("the timeout is at least 1 ms", "超时至少为 1 ms"),
+            Self::DeviceProblemEmptyVariable => (
+                "channel {row} has no variable: enter its path, such as GVL_IO.rSpeed",
+                "通道 {row} 没有变量：请输入其路径，例如 GVL_IO.rSpeed",
+            ),
+            Self::DeviceProblemInvalidVariable => (
+                "channel {row}: '{variable}' is not a variable path such as GVL_IO.rSpeed",
+                "通道 {row}：'{variable}' 不是变量路径（例如 GVL_IO.rSpeed）",
+            ),
+            Self::DeviceProblemChannelPastEnd => (
+                "channel {row} at address {address} takes {width} and passes address 65535",
+                "通道 {row} 位于地址 {address}，占用 {width} 个，超出了地址 65535",
+            ),
+            Self::DeviceProblemChannelsOverlap => (
+                "channel {row} ({variable}) overlaps channel {other} ({other_variable}) in the same table",
+                "通道 {row}（{variable}）与同一表中的通道 {other}（{other_variable}）重叠",
+            ),
+            Self::DeviceProblemTableTypeMismatch => (
+                "channel {row}: a {table} cannot hold {data_type}; coils and discrete inputs hold BOOL, registers every other type",
+                "通道 {row}：{table}不能存放 {data_type}；线圈和离散输入存放 BOOL，寄存器存放其他所有类型",
+            ),
+            Self::DeviceProblemNoSuchTask => (
+                "there is no task named '{task}' to update the axis",
+                "没有名为 '{task}' 的任务来更新该轴",
+            ),
+            Self::DeviceProblemEmptyUnit => (
+                "the unit is empty: enter one such as mm or deg",
+                "单位为空：请输入一个，例如 mm 或 deg",
+            ),
+            Self::DeviceProblemNotFinite => {
+                ("the {field} is not a finite number", "{field}不是有限数")
+            }
+            Self::DeviceProblemModuloNotPositive => (
+                "the modulo period is {value}; it must be greater than 0",
+                "模数周期为 {value}；必须大于 0",
+            ),
+            Self::DeviceProblemLimitsInverted => (
+                "the negative software limit {min} must be below the positive limit {max}",
+                "负软件限位 {min} 必须小于正限位 {max}",
+            ),
+            Self::DeviceProblemDynamicLimitNotPositive => (
+                "the {field} limit is {value}; it must be greater than 0",
+                "{field}限值为 {value}；必须大于 0",
+            ),
+            Self::DeviceProblemZeroScaling => (
+                "the scaling {field} is 0: increments per unit would be undefined",
+                "缩放{field}为 0：每单位增量将无定义",
+            ),
+            Self::DeviceAddressNoPercent => (
+                "'{text}' is not a direct address: it must start with '%'",
+                "'{text}' 不是直接地址：必须以 '%' 开头",
+            ),
+            Self::DeviceAddressNoArea => (
+                "'{text}' names no memory area: write %I (inputs), %Q (outputs) or %M (markers)",
+                "'{text}' 未指定存储区：请写 %I（输入）、%Q（输出）或 %M（标志）",
+            ),
+            Self::DeviceAddressNoSize => (
+                "'{text}' has no valid size: write X (bit), B (byte), W (word), D (double word) or L (long word)",
+                "'{text}' 没有有效的大小：请写 X（位）、B（字节）、W（字）、D（双字）或 L（长字）",
+            ),
+            Self::DeviceAddressNotANumber => (
+                "'{text}' is not a valid address: '{part}' is not a number",
+                "'{text}' 不是有效地址：'{part}' 不是数字",
+            ),
+            Self::DeviceAddressNoSuchBit => (
+                "'{text}' names bit {bit}, but a byte has bits 0 to 7",
+                "'{text}' 指定了第 {bit} 位，但一个字节只有第 0 到 7 位",
+            ),
+            Self::DeviceNoSuchVariable => (
+                "there is no variable '{path}': write the path of a global or program variable, such as GVL_IO.rSpeed",
+                "没有变量 '{path}'：请写全局变量或程序变量的路径，例如 GVL_IO.rSpeed",
+            ),
+            Self::DeviceVariableTypeMismatch => (
+                "'{path}' is declared as {declared}, but the channel reads {data_type}: declare it as {expected}",
+                "'{path}' 声明为 {declared}，但通道读取 {data_type}：请将其声明为 {expected}",
+            ),
+            Self::DeviceWordController => ("controller", "控制器"),
+            Self::DeviceWordIoArea => ("I/O area", "I/O 区域"),
+            Self::DeviceWordModbusDevice => ("Modbus device", "Modbus 设备"),
+            Self::DeviceWordAxis => ("axis", "轴"),
+            Self::DeviceWordModuloPeriod => ("modulo period", "模数周期"),
+            Self::DeviceWordNegativeSoftwareLimit => ("negative software limit", "负软件限位"),
+            Self::DeviceWordPositiveSoftwareLimit => ("positive software limit", "正软件限位"),
+            Self::DeviceWordVelocity => ("velocity", "速度"),
+            Self::DeviceWordAcceleration => ("acceleration", "加速度"),
+            Self::DeviceWordDeceleration => ("deceleration", "减速度"),
+            Self::DeviceWordJerk => ("jerk", "加加速度"),
+            Self::DeviceWordScalingNumerator => ("scaling numerator", "缩放分子"),
+            Self::DeviceWordScalingDenominator => ("scaling denominator", "缩放分母"),
+            Self::DeviceWordNumerator => ("numerator", "分子"),
+            Self::DeviceWordDenominator => ("denominator", "分母"),
+            Self::DeviceWordOr => ("or", "或"),
         };
         match language {
             Language::English => english,
