@@ -228,3 +228,24 @@ pub(crate) fn row_ui<R>(ui: &mut Ui, label: &str, add: impl FnOnce(&mut Ui) -> R
     ui.end_row();
     result
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn drafts_and_refusals_stay_while_the_value_is_the_same_and_go_when_it_changes() {
+        let mut state = DeviceEditorState::default();
+        let value = vec![1, 2, 3];
+        state.follow(&value);
+        state.drafts.insert("port".into(), "50x".into());
+        let refusal = parse_whole("50x", 0u16, u16::MAX).unwrap_err();
+        assert_eq!(state.settle("port", Err(refusal.clone())), None);
+        state.follow(&value.clone());
+        assert_eq!(state.refusal("port"), Some(&refusal));
+        assert!(state.drafts.contains_key("port"));
+        state.follow(&vec![1, 2, 4]);
+        assert_eq!(state.refusal("port"), None);
+        assert!(state.drafts.is_empty());
+    }
+}
