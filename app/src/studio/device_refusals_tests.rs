@@ -177,3 +177,27 @@ fn the_words_inside_a_chinese_reason_are_chinese_too() {
         "加加速度限值为 0；必须大于 0"
     );
 }
+
+#[test]
+fn every_kind_and_field_word_the_checks_use_has_chinese_words() {
+    for english in [
+        "controller",
+        "I/O area",
+        "Modbus device",
+        "axis",
+        "modulo period",
+        "negative software limit",
+        "positive software limit",
+        "velocity",
+        "acceleration",
+        "deceleration",
+        "jerk",
+        "scaling numerator",
+        "scaling denominator",
+        "numerator",
+        "denominator",
+    ] {
+        assert_eq!(word(english, Language::English), english);
+        assert_ne!(word(english, Language::SimplifiedChinese), english);
+    }
+}
