@@ -23,8 +23,8 @@ mod variable_table;
 
 pub use code_view::CodeView;
 pub use device_editors::{
-    DeviceEdit, DeviceEditorState, DeviceTexts, axis_editor_ui, controller_editor_ui,
-    io_area_editor_ui, modbus_device_editor_ui,
+    DeviceEdit, DeviceEditorState, DeviceTexts, Refusal, RefusalWords, axis_editor_ui,
+    controller_editor_ui, io_area_editor_ui, modbus_device_editor_ui,
 };
 pub use io_mapping::{IoMappingOutput, io_mapping_ui};
 pub use palette::{EditorPalette, SyntaxColors};

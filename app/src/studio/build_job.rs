@@ -11,7 +11,7 @@ use std::time::{Duration, Instant};
 use compiler::{CompileError, Severity};
 use project_model::{Project, TextTarget};
 
-use super::i18n::{Language, Text};
+use super::i18n::{Language, RefusalText};
 use super::online::BuiltImage;
 use super::tree_node::TreeNode;
 
@@ -54,10 +54,12 @@ impl BuildFailure {
     /// The failure as the user reads it, in `language`.
     pub fn text(&self, language: Language) -> String {
         match self {
-            Self::NoThread(reason) => Text::BuildNoThread.fill(language, &[("reason", reason)]),
+            Self::NoThread(reason) => {
+                RefusalText::BuildNoThread.fill(language, &[("reason", reason)])
+            }
             Self::Unsupported(message) => message.clone(),
-            Self::HiddenErrors => Text::BuildHiddenErrors.get(language).to_owned(),
-            Self::CompilerStopped => Text::BuildCompilerStopped.get(language).to_owned(),
+            Self::HiddenErrors => RefusalText::BuildHiddenErrors.get(language).to_owned(),
+            Self::CompilerStopped => RefusalText::BuildCompilerStopped.get(language).to_owned(),
         }
     }
 }

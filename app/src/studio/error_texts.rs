@@ -7,35 +7,44 @@ use project_model::EditError;
 
 use crate::literal_value::ValueError;
 
-use super::i18n::{Language, Text};
+use super::i18n::{Language, RefusalText};
 
 /// Why an edit of the project was refused, in `language`.
 pub fn edit_error_text(error: &EditError, language: Language) -> String {
     match error {
-        EditError::NoSuchObject(name) => Text::EditNoSuchObject.fill(language, &[("name", name)]),
-        EditError::NoSuchFolder(name) => Text::EditNoSuchFolder.fill(language, &[("name", name)]),
+        EditError::NoSuchObject(name) => {
+            RefusalText::EditNoSuchObject.fill(language, &[("name", name)])
+        }
+        EditError::NoSuchFolder(name) => {
+            RefusalText::EditNoSuchFolder.fill(language, &[("name", name)])
+        }
         EditError::NoSuchMember { pou, what, name } => {
             let what = match *what {
-                "method" => Text::WhatMethod.get(language),
-                "property" => Text::WhatProperty.get(language),
-                "action" => Text::WhatAction.get(language),
+                "method" => RefusalText::WhatMethod.get(language),
+                "property" => RefusalText::WhatProperty.get(language),
+                "action" => RefusalText::WhatAction.get(language),
                 other => other,
             };
-            Text::EditNoSuchMember.fill(language, &[("pou", pou), ("what", what), ("name", name)])
+            RefusalText::EditNoSuchMember
+                .fill(language, &[("pou", pou), ("what", what), ("name", name)])
         }
-        EditError::IndexOutOfRange { index, len } => Text::EditIndexOutOfRange.fill(
+        EditError::IndexOutOfRange { index, len } => RefusalText::EditIndexOutOfRange.fill(
             language,
             &[("index", &index.to_string()), ("len", &len.to_string())],
         ),
-        EditError::InvalidName(name) => Text::EditInvalidName.fill(language, &[("name", name)]),
-        EditError::DuplicateName(name) => Text::EditDuplicateName.fill(language, &[("name", name)]),
+        EditError::InvalidName(name) => {
+            RefusalText::EditInvalidName.fill(language, &[("name", name)])
+        }
+        EditError::DuplicateName(name) => {
+            RefusalText::EditDuplicateName.fill(language, &[("name", name)])
+        }
         // The reason is the model's own description of the stored content; it names what
         // clashes and is shown as it is.
         EditError::InvalidObject(reason) => {
-            Text::EditInvalidObject.fill(language, &[("reason", reason)])
+            RefusalText::EditInvalidObject.fill(language, &[("reason", reason)])
         }
-        EditError::NotText(name) => Text::EditNotText.fill(language, &[("name", name)]),
-        EditError::BadTextRange { start, end, len } => Text::EditBadTextRange.fill(
+        EditError::NotText(name) => RefusalText::EditNotText.fill(language, &[("name", name)]),
+        EditError::BadTextRange { start, end, len } => RefusalText::EditBadTextRange.fill(
             language,
             &[
                 ("start", &start.to_string()),
@@ -43,8 +52,10 @@ pub fn edit_error_text(error: &EditError, language: Language) -> String {
                 ("len", &len.to_string()),
             ],
         ),
-        EditError::MoveIntoItself => Text::EditMoveIntoItself.get(language).to_owned(),
-        EditError::KindChanged(name) => Text::EditKindChanged.fill(language, &[("name", name)]),
+        EditError::MoveIntoItself => RefusalText::EditMoveIntoItself.get(language).to_owned(),
+        EditError::KindChanged(name) => {
+            RefusalText::EditKindChanged.fill(language, &[("name", name)])
+        }
     }
 }
 
@@ -52,33 +63,35 @@ pub fn edit_error_text(error: &EditError, language: Language) -> String {
 pub fn literal_error_text(error: &LiteralError, language: Language) -> String {
     let (template, text, extra) = match error {
         LiteralError::UnknownBase { base } => {
-            return Text::LitUnknownBase.fill(language, &[("base", base)]);
+            return RefusalText::LitUnknownBase.fill(language, &[("base", base)]);
         }
-        LiteralError::NoDigits { text } => (Text::LitNoDigits, text, None),
+        LiteralError::NoDigits { text } => (RefusalText::LitNoDigits, text, None),
         LiteralError::BadDigit { text, base } => {
             let template = match base {
-                2 => Text::LitBadDigitBinary,
-                8 => Text::LitBadDigitOctal,
-                16 => Text::LitBadDigitHex,
-                _ => Text::LitBadDigitDecimal,
+                2 => RefusalText::LitBadDigitBinary,
+                8 => RefusalText::LitBadDigitOctal,
+                16 => RefusalText::LitBadDigitHex,
+                _ => RefusalText::LitBadDigitDecimal,
             };
             (template, text, None)
         }
-        LiteralError::NotANumber { text } => (Text::LitNotANumber, text, None),
-        LiteralError::NoValue { text } => (Text::LitNoValue, text, None),
-        LiteralError::NoUnit { text } => (Text::LitNoUnit, text, None),
-        LiteralError::NoNumber { text, rest } => (Text::LitNoNumber, text, Some(("rest", rest))),
+        LiteralError::NotANumber { text } => (RefusalText::LitNotANumber, text, None),
+        LiteralError::NoValue { text } => (RefusalText::LitNoValue, text, None),
+        LiteralError::NoUnit { text } => (RefusalText::LitNoUnit, text, None),
+        LiteralError::NoNumber { text, rest } => {
+            (RefusalText::LitNoNumber, text, Some(("rest", rest)))
+        }
         LiteralError::BadNumber { text, number } => {
-            (Text::LitBadNumber, text, Some(("number", number)))
+            (RefusalText::LitBadNumber, text, Some(("number", number)))
         }
         LiteralError::UnknownUnit { text, rest } => {
-            (Text::LitUnknownUnit, text, Some(("rest", rest)))
+            (RefusalText::LitUnknownUnit, text, Some(("rest", rest)))
         }
-        LiteralError::NotADate { text } => (Text::LitNotADate, text, None),
-        LiteralError::NoSuchDate { text } => (Text::LitNoSuchDate, text, None),
-        LiteralError::NotATimeOfDay { text } => (Text::LitNotATimeOfDay, text, None),
-        LiteralError::NotADateAndTime { text } => (Text::LitNotADateAndTime, text, None),
-        LiteralError::NoHash { text } => (Text::LitNoHash, text, None),
+        LiteralError::NotADate { text } => (RefusalText::LitNotADate, text, None),
+        LiteralError::NoSuchDate { text } => (RefusalText::LitNoSuchDate, text, None),
+        LiteralError::NotATimeOfDay { text } => (RefusalText::LitNotATimeOfDay, text, None),
+        LiteralError::NotADateAndTime { text } => (RefusalText::LitNotADateAndTime, text, None),
+        LiteralError::NoHash { text } => (RefusalText::LitNoHash, text, None),
     };
     match extra {
         Some((key, value)) => template.fill(language, &[("text", text), (key, value)]),
@@ -89,15 +102,16 @@ pub fn literal_error_text(error: &LiteralError, language: Language) -> String {
 /// Why a typed value is not one of its variable's type, in `language`.
 pub fn value_error_text(error: &ValueError, language: Language) -> String {
     match error {
-        ValueError::NotAString(text) => Text::ValueNotAString.fill(language, &[("text", text)]),
-        ValueError::TooLong { text, length } => {
-            Text::ValueTooLong.fill(language, &[("text", text), ("length", &length.to_string())])
+        ValueError::NotAString(text) => {
+            RefusalText::ValueNotAString.fill(language, &[("text", text)])
         }
-        ValueError::NotWritable => Text::ValueNotWritable.get(language).to_owned(),
+        ValueError::TooLong { text, length } => RefusalText::ValueTooLong
+            .fill(language, &[("text", text), ("length", &length.to_string())]),
+        ValueError::NotWritable => RefusalText::ValueNotWritable.get(language).to_owned(),
         ValueError::NotAValue { text, ty } => {
-            Text::ValueNotAValue.fill(language, &[("text", text), ("ty", ty)])
+            RefusalText::ValueNotAValue.fill(language, &[("text", text), ("ty", ty)])
         }
-        ValueError::BadLiteral { text, ty, error } => Text::ValueBadLiteral.fill(
+        ValueError::BadLiteral { text, ty, error } => RefusalText::ValueBadLiteral.fill(
             language,
             &[
                 ("text", text),
@@ -106,7 +120,7 @@ pub fn value_error_text(error: &ValueError, language: Language) -> String {
             ],
         ),
         ValueError::OutOfRange { text, ty } => {
-            Text::ValueOutOfRange.fill(language, &[("text", text), ("ty", ty)])
+            RefusalText::ValueOutOfRange.fill(language, &[("text", text), ("ty", ty)])
         }
     }
 }

@@ -8,6 +8,7 @@ mod chrome;
 mod command;
 mod cycle_plot;
 mod device_documents;
+mod device_refusals;
 mod device_tree;
 mod dock;
 mod document_view;

@@ -235,3 +235,42 @@ fn the_device_editors_speak_chinese_when_chosen() {
     assert_refused(&harness, "'快' 不是数字");
     assert_eq!(project(&harness).axes[1].limits.jerk, 144_000.0);
 }
+
+#[test]
+fn a_value_refused_in_chinese_gives_its_reason_in_chinese() {
+    let dir = example_copy(|_| {});
+    let settings = Settings {
+        language: Language::SimplifiedChinese,
+        ..Settings::default()
+    };
+    let app = StudioApp::new(settings, Some(dir.path().to_owned()));
+    let mut harness = Harness::builder()
+        .with_size([1400.0, 900.0])
+        .build_ui_state(|ui, app: &mut StudioApp| app.ui(ui), app);
+    open(&mut harness, TreeNode::Controller);
+    let port = project(&harness).controller.port;
+    enter_text(&mut harness, "PLC 的端口", "0");
+    assert_refused(&harness, "不能使用端口 0：请输入 1 到 65535 之间的端口");
+    assert!(
+        harness
+            .query_by_label_contains("port 0 cannot be used")
+            .is_none()
+    );
+    assert_eq!(project(&harness).controller.port, port);
+
+    open(&mut harness, TreeNode::ModbusDevice("BeltDrive".into()));
+    let variable = project(&harness).modbus_devices[0].bindings[0]
+        .variable
+        .clone();
+    enter_text(&mut harness, "第 1 行的变量", "GVL_Machine.rMissing");
+    assert_refused(&harness, "没有变量 'GVL_Machine.rMissing'");
+    assert!(
+        harness
+            .query_by_label_contains("there is no variable")
+            .is_none()
+    );
+    assert_eq!(
+        project(&harness).modbus_devices[0].bindings[0].variable,
+        variable
+    );
+}

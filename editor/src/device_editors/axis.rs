@@ -7,6 +7,7 @@ use project_model::{Axis, AxisKind, Edit, ListEdit, Project, axis_problems};
 use super::field::{
     DeviceEditorState, FieldId, checkbox_ui, combo_ui, parse_number, row_ui, text_field_ui,
 };
+use super::refusal::Refusal;
 use super::{DeviceEdit, DeviceTexts, field_label, keep, refuse_new, set_label};
 
 /// A number field of an axis: its key, its name, its unit and how it is read and written.
@@ -56,7 +57,7 @@ pub fn axis_editor_ui(
             row_ui(ui, &texts.kind, |ui| {
                 keep(
                     &mut out,
-                    combo_ui(ui, state, field, axis.kind, &kinds, |kind| {
+                    combo_ui(ui, state, texts, field, axis.kind, &kinds, |kind| {
                         set(
                             &texts.kind,
                             &texts.virtual_axis,
@@ -88,7 +89,7 @@ pub fn axis_editor_ui(
             row_ui(ui, &texts.task, |ui| {
                 keep(
                     &mut out,
-                    combo_ui(ui, state, field, current, &tasks, |position| {
+                    combo_ui(ui, state, texts, field, current, &tasks, |position| {
                         let task = tasks
                             .get(position)
                             .map(|(name, _)| name.clone())
@@ -113,7 +114,7 @@ pub fn axis_editor_ui(
             row_ui(ui, &texts.unit, |ui| {
                 keep(
                     &mut out,
-                    text_field_ui(ui, state, field, unit, "", |text| {
+                    text_field_ui(ui, state, texts, field, unit, "", |text| {
                         set(
                             &texts.unit,
                             text,
@@ -135,7 +136,7 @@ pub fn axis_editor_ui(
                 let on = axis.modulo_period.is_some();
                 keep(
                     &mut out,
-                    checkbox_ui(ui, state, field, &texts.modulo, on, |on| {
+                    checkbox_ui(ui, state, texts, field, &texts.modulo, on, |on| {
                         let modulo_period = on.then_some(360.0);
                         let value = if on { "360" } else { "-" };
                         set(
@@ -169,12 +170,20 @@ pub fn axis_editor_ui(
                 let on = axis.software_limits.enabled;
                 keep(
                     &mut out,
-                    checkbox_ui(ui, state, field, &texts.software_limits, on, |enabled| {
-                        let mut item = axis.clone();
-                        item.software_limits.enabled = enabled;
-                        let value = if enabled { "on" } else { "off" };
-                        set(&texts.software_limits, value, item)
-                    }),
+                    checkbox_ui(
+                        ui,
+                        state,
+                        texts,
+                        field,
+                        &texts.software_limits,
+                        on,
+                        |enabled| {
+                            let mut item = axis.clone();
+                            item.software_limits.enabled = enabled;
+                            let value = if enabled { "on" } else { "off" };
+                            set(&texts.software_limits, value, item)
+                        },
+                    ),
                 );
             });
             let fields = [
@@ -256,7 +265,7 @@ fn number_ui(
     texts: &DeviceTexts,
     axis: &Axis,
     number: &NumberField<'_>,
-    set: &dyn Fn(&str, &str, Axis) -> Result<DeviceEdit, String>,
+    set: &dyn Fn(&str, &str, Axis) -> Result<DeviceEdit, Refusal>,
 ) -> Option<DeviceEdit> {
     let label = field_label(texts, number.name, &axis.name);
     let field = FieldId {
@@ -266,8 +275,8 @@ fn number_ui(
     };
     let current = (number.get)(axis).to_string();
     row_ui(ui, number.name, |ui| {
-        text_field_ui(ui, state, field, &current, &number.unit, |text| {
-            let value = parse_number(texts, text)?;
+        text_field_ui(ui, state, texts, field, &current, &number.unit, |text| {
+            let value = parse_number(text)?;
             let mut item = axis.clone();
             (number.put)(&mut item, value);
             set(number.name, text, item)

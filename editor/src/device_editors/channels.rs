@@ -5,8 +5,9 @@ use compiler::ide::{check_channel_variable, variable_type};
 use egui::{RichText, Ui, WidgetInfo};
 use project_model::{ModbusBinding, ModbusDataType, ModbusTable, Project};
 
-use super::field::{DeviceEditorState, FieldId, combo_ui, parse_whole, text_field_ui};
+use super::field::{DeviceEditorState, FieldId, combo_ui, parse_whole, reason_ui, text_field_ui};
 use super::map_ranges::{Commit, table_name, table_options};
+use super::refusal::Refusal;
 use super::texts::fill;
 use super::{DeviceEdit, DeviceTexts, keep, row_label};
 
@@ -69,9 +70,8 @@ pub(crate) fn channels_ui(
                 };
                 keep(
                     &mut out,
-                    text_field_ui(ui, state, field, &binding.variable, "", |text| {
-                        check_channel_variable(project, text, binding.data_type)
-                            .map_err(|error| error.to_string())?;
+                    text_field_ui(ui, state, texts, field, &binding.variable, "", |text| {
+                        check_channel_variable(project, text, binding.data_type)?;
                         let item = ModbusBinding {
                             variable: text.to_owned(),
                             ..binding.clone()
@@ -88,7 +88,7 @@ pub(crate) fn channels_ui(
                 };
                 keep(
                     &mut out,
-                    combo_ui(ui, state, field, binding.table, &tables, |table| {
+                    combo_ui(ui, state, texts, field, binding.table, &tables, |table| {
                         let data_type = data_type_for_table(project, binding, table);
                         let item = ModbusBinding {
                             table,
@@ -107,14 +107,22 @@ pub(crate) fn channels_ui(
                 };
                 keep(
                     &mut out,
-                    text_field_ui(ui, state, field, &binding.address.to_string(), "", |text| {
-                        let address = parse_whole(texts, text, 0u16, u16::MAX)?;
-                        let item = ModbusBinding {
-                            address,
-                            ..binding.clone()
-                        };
-                        replaced(item, &texts.address, text)
-                    }),
+                    text_field_ui(
+                        ui,
+                        state,
+                        texts,
+                        field,
+                        &binding.address.to_string(),
+                        "",
+                        |text| {
+                            let address = parse_whole(text, 0u16, u16::MAX)?;
+                            let item = ModbusBinding {
+                                address,
+                                ..binding.clone()
+                            };
+                            replaced(item, &texts.address, text)
+                        },
+                    ),
                 );
                 let key = format!("channel {index} type");
                 let label = row_label(texts, &texts.data_type, row);
@@ -125,17 +133,24 @@ pub(crate) fn channels_ui(
                 };
                 keep(
                     &mut out,
-                    combo_ui(ui, state, field, binding.data_type, &types, |data_type| {
-                        if fits {
-                            check_channel_variable(project, &binding.variable, data_type)
-                                .map_err(|error| error.to_string())?;
-                        }
-                        let item = ModbusBinding {
-                            data_type,
-                            ..binding.clone()
-                        };
-                        replaced(item, &texts.data_type, data_type.iec_name())
-                    }),
+                    combo_ui(
+                        ui,
+                        state,
+                        texts,
+                        field,
+                        binding.data_type,
+                        &types,
+                        |data_type| {
+                            if fits {
+                                check_channel_variable(project, &binding.variable, data_type)?;
+                            }
+                            let item = ModbusBinding {
+                                data_type,
+                                ..binding.clone()
+                            };
+                            replaced(item, &texts.data_type, data_type.iec_name())
+                        },
+                    ),
                 );
                 let key = format!("channel {index} comment");
                 let label = row_label(texts, &texts.comment, row);
@@ -146,7 +161,7 @@ pub(crate) fn channels_ui(
                 };
                 keep(
                     &mut out,
-                    text_field_ui(ui, state, field, &binding.comment, "", |text| {
+                    text_field_ui(ui, state, texts, field, &binding.comment, "", |text| {
                         let item = ModbusBinding {
                             comment: text.to_owned(),
                             ..binding.clone()
@@ -160,7 +175,7 @@ pub(crate) fn channels_ui(
                     let reason =
                         check_channel_variable(project, &binding.variable, binding.data_type)
                             .err()
-                            .map(|error| error.to_string())
+                            .map(|error| texts.refusal.describe(&Refusal::from(error)))
                             .unwrap_or_default();
                     ui.label(
                         RichText::new("!")
@@ -192,7 +207,7 @@ pub(crate) fn channels_ui(
         };
         keep(
             &mut out,
-            text_field_ui(ui, state, field, "", "", |text| {
+            text_field_ui(ui, state, texts, field, "", "", |text| {
                 let item = new_binding(project, bindings, text)?;
                 let mut list = bindings.to_vec();
                 list.push(item);
@@ -201,9 +216,7 @@ pub(crate) fn channels_ui(
             }),
         );
     });
-    if let Some(reason) = state.refusal("channels") {
-        ui.label(RichText::new(reason).color(ui.visuals().error_fg_color));
-    }
+    reason_ui(ui, state, texts, "channels");
     out
 }
 
@@ -214,7 +227,7 @@ fn new_binding(
     project: &Project,
     bindings: &[ModbusBinding],
     variable: &str,
-) -> Result<ModbusBinding, String> {
+) -> Result<ModbusBinding, Refusal> {
     let data_type = variable_type(project, variable)
         .and_then(|declared| data_type_of(&declared))
         .map_or_else(
@@ -224,8 +237,7 @@ fn new_binding(
                     .map(|()| ModbusDataType::Uint16)
             },
             Ok,
-        )
-        .map_err(|error| error.to_string())?;
+        )?;
     let table = if data_type == ModbusDataType::Bool {
         ModbusTable::Coil
     } else {
@@ -314,9 +326,13 @@ mod tests {
     #[test]
     fn a_new_channel_for_a_missing_variable_or_a_structure_is_refused() {
         let project = example();
-        let missing = new_binding(&project, &[], "GVL_Machine.xNothing").unwrap_err();
+        let missing = new_binding(&project, &[], "GVL_Machine.xNothing")
+            .unwrap_err()
+            .to_string();
         assert!(missing.contains("there is no variable"), "{missing}");
-        let recipe = new_binding(&project, &[], "GVL_Machine.stRecipe").unwrap_err();
+        let recipe = new_binding(&project, &[], "GVL_Machine.stRecipe")
+            .unwrap_err()
+            .to_string();
         assert!(recipe.contains("declared as ST_Recipe"), "{recipe}");
     }
 

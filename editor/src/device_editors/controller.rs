@@ -42,7 +42,7 @@ pub fn controller_editor_ui(
             row_ui(ui, &texts.name, |ui| {
                 keep(
                     &mut out,
-                    text_field_ui(ui, state, field, &controller.name, "", |text| {
+                    text_field_ui(ui, state, texts, field, &controller.name, "", |text| {
                         let candidate = Controller {
                             name: text.to_owned(),
                             ..controller.clone()
@@ -60,7 +60,7 @@ pub fn controller_editor_ui(
             row_ui(ui, &texts.host, |ui| {
                 keep(
                     &mut out,
-                    text_field_ui(ui, state, field, &controller.host, "", |text| {
+                    text_field_ui(ui, state, texts, field, &controller.host, "", |text| {
                         let candidate = Controller {
                             host: text.to_owned(),
                             ..controller.clone()
@@ -79,8 +79,8 @@ pub fn controller_editor_ui(
                 let current = controller.port.to_string();
                 keep(
                     &mut out,
-                    text_field_ui(ui, state, field, &current, "", |text| {
-                        let port = parse_whole(texts, text, 0u16, u16::MAX)?;
+                    text_field_ui(ui, state, texts, field, &current, "", |text| {
+                        let port = parse_whole(text, 0u16, u16::MAX)?;
                         let candidate = Controller {
                             port,
                             ..controller.clone()
@@ -106,6 +106,7 @@ pub fn controller_editor_ui(
         checkbox_ui(
             ui,
             state,
+            texts,
             field,
             &texts.modbus_map_override,
             overridden,

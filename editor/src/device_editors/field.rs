@@ -1,12 +1,14 @@
 //! The pieces every device editor is made of: typed text fields accepted on Enter or when
 //! left, combo boxes and check boxes, each refusing a bad value in place with its reason.
 
+use std::any::Any;
 use std::collections::HashMap;
 
 use egui::{Key, RichText, Ui, WidgetInfo};
 
 use super::DeviceEdit;
-use super::texts::{DeviceTexts, fill};
+use super::refusal::Refusal;
+use super::texts::DeviceTexts;
 
 /// What a device editor keeps between frames: text typed into a field and not yet accepted,
 /// and why a value was refused, per field. Both are dropped when the node's value changes
@@ -16,33 +18,40 @@ pub struct DeviceEditorState {
     /// Typed text not yet accepted, by field key.
     drafts: HashMap<String, String>,
     /// Why the last value given to a field was refused, by field key.
-    refused: HashMap<String, String>,
-    /// The node's value the drafts belong to, as its debug text.
-    seen: String,
+    refused: HashMap<String, Refusal>,
+    /// A copy of the node's value the drafts belong to; `None` before the first frame.
+    seen: Option<Box<dyn Any>>,
 }
 
 impl DeviceEditorState {
     /// Forgets drafts and refusals when the node's value is no longer the one they were typed
     /// against.
-    pub(crate) fn follow(&mut self, value: &impl std::fmt::Debug) {
-        let seen = format!("{value:?}");
-        if seen != self.seen {
+    ///
+    /// The value is compared with a copy of the one last seen rather than printed, so a device
+    /// with hundreds of channels costs a comparison per frame, not an allocation per field.
+    pub(crate) fn follow<T: Clone + PartialEq + 'static>(&mut self, value: &T) {
+        let same = self
+            .seen
+            .as_ref()
+            .and_then(|seen| seen.downcast_ref::<T>())
+            .is_some_and(|seen| seen == value);
+        if !same {
             self.drafts.clear();
             self.refused.clear();
-            self.seen = seen;
+            self.seen = Some(Box::new(value.clone()));
         }
     }
 
     /// Why the value last given to the field `key` was refused, if it was.
-    pub fn refusal(&self, key: &str) -> Option<&str> {
-        self.refused.get(key).map(String::as_str)
+    pub fn refusal(&self, key: &str) -> Option<&Refusal> {
+        self.refused.get(key)
     }
 
     /// Records the outcome of a change of field `key`: the edit, or the reason it was refused.
     pub(crate) fn settle(
         &mut self,
         key: &str,
-        outcome: Result<DeviceEdit, String>,
+        outcome: Result<DeviceEdit, Refusal>,
     ) -> Option<DeviceEdit> {
         match outcome {
             Ok(edit) => {
@@ -74,10 +83,11 @@ pub(crate) struct FieldId<'a> {
 pub(crate) fn text_field_ui(
     ui: &mut Ui,
     state: &mut DeviceEditorState,
+    texts: &DeviceTexts,
     field: FieldId<'_>,
     current: &str,
     suffix: &str,
-    accept: impl FnOnce(&str) -> Result<DeviceEdit, String>,
+    accept: impl FnOnce(&str) -> Result<DeviceEdit, Refusal>,
 ) -> Option<DeviceEdit> {
     let mut text = state
         .drafts
@@ -113,7 +123,7 @@ pub(crate) fn text_field_ui(
         if !suffix.is_empty() {
             ui.label(RichText::new(suffix).weak());
         }
-        reason_ui(ui, state, field.key);
+        reason_ui(ui, state, texts, field.key);
     });
     edit
 }
@@ -122,10 +132,11 @@ pub(crate) fn text_field_ui(
 pub(crate) fn combo_ui<T: PartialEq + Copy>(
     ui: &mut Ui,
     state: &mut DeviceEditorState,
+    texts: &DeviceTexts,
     field: FieldId<'_>,
     current: T,
     options: &[(String, T)],
-    accept: impl FnOnce(T) -> Result<DeviceEdit, String>,
+    accept: impl FnOnce(T) -> Result<DeviceEdit, Refusal>,
 ) -> Option<DeviceEdit> {
     let shown = options
         .iter()
@@ -147,7 +158,7 @@ pub(crate) fn combo_ui<T: PartialEq + Copy>(
             })
             .response
             .widget_info(|| WidgetInfo::labeled(egui::Role::ComboBox, true, label.clone()));
-        reason_ui(ui, state, field.key);
+        reason_ui(ui, state, texts, field.key);
     });
     let value = chosen?;
     state.settle(field.key, accept(value))
@@ -157,10 +168,11 @@ pub(crate) fn combo_ui<T: PartialEq + Copy>(
 pub(crate) fn checkbox_ui(
     ui: &mut Ui,
     state: &mut DeviceEditorState,
+    texts: &DeviceTexts,
     field: FieldId<'_>,
     text: &str,
     current: bool,
-    accept: impl FnOnce(bool) -> Result<DeviceEdit, String>,
+    accept: impl FnOnce(bool) -> Result<DeviceEdit, Refusal>,
 ) -> Option<DeviceEdit> {
     let mut checked = current;
     let mut edit = None;
@@ -171,44 +183,42 @@ pub(crate) fn checkbox_ui(
         if response.changed() {
             edit = state.settle(field.key, accept(checked));
         }
-        reason_ui(ui, state, field.key);
+        reason_ui(ui, state, texts, field.key);
     });
     edit
 }
 
 /// The reason the field `key` was refused, in the error colour, if it was.
-fn reason_ui(ui: &mut Ui, state: &DeviceEditorState, key: &str) {
-    if let Some(reason) = state.refused.get(key) {
+pub(crate) fn reason_ui(ui: &mut Ui, state: &DeviceEditorState, texts: &DeviceTexts, key: &str) {
+    if let Some(refusal) = state.refused.get(key) {
+        let reason = texts.refusal.describe(refusal);
         ui.label(RichText::new(reason).color(ui.visuals().error_fg_color));
     }
 }
 
 /// Reads a whole number from `min` to `max`, or says it is not one.
-pub(crate) fn parse_whole<T>(texts: &DeviceTexts, text: &str, min: T, max: T) -> Result<T, String>
+pub(crate) fn parse_whole<T>(text: &str, min: T, max: T) -> Result<T, Refusal>
 where
     T: std::str::FromStr + PartialOrd + std::fmt::Display + Copy,
 {
     text.parse::<T>()
         .ok()
         .filter(|value| *value >= min && *value <= max)
-        .ok_or_else(|| {
-            fill(
-                &texts.not_a_whole_number,
-                &[
-                    ("text", text),
-                    ("min", &min.to_string()),
-                    ("max", &max.to_string()),
-                ],
-            )
+        .ok_or_else(|| Refusal::NotAWholeNumber {
+            text: text.to_owned(),
+            min: min.to_string(),
+            max: max.to_string(),
         })
 }
 
 /// Reads a finite number, or says it is not one.
-pub(crate) fn parse_number(texts: &DeviceTexts, text: &str) -> Result<f64, String> {
+pub(crate) fn parse_number(text: &str) -> Result<f64, Refusal> {
     text.parse::<f64>()
         .ok()
         .filter(|value| value.is_finite())
-        .ok_or_else(|| fill(&texts.not_a_number, &[("text", text)]))
+        .ok_or_else(|| Refusal::NotANumber {
+            text: text.to_owned(),
+        })
 }
 
 /// A label and its field as one row of a two-column grid.
@@ -217,4 +227,25 @@ pub(crate) fn row_ui<R>(ui: &mut Ui, label: &str, add: impl FnOnce(&mut Ui) -> R
     let result = add(ui);
     ui.end_row();
     result
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn drafts_and_refusals_stay_while_the_value_is_the_same_and_go_when_it_changes() {
+        let mut state = DeviceEditorState::default();
+        let value = vec![1, 2, 3];
+        state.follow(&value);
+        state.drafts.insert("port".into(), "50x".into());
+        let refusal = parse_whole("50x", 0u16, u16::MAX).unwrap_err();
+        assert_eq!(state.settle("port", Err(refusal.clone())), None);
+        state.follow(&value.clone());
+        assert_eq!(state.refusal("port"), Some(&refusal));
+        assert!(state.drafts.contains_key("port"));
+        state.follow(&vec![1, 2, 4]);
+        assert_eq!(state.refusal("port"), None);
+        assert!(state.drafts.is_empty());
+    }
 }

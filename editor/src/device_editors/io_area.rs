@@ -50,21 +50,29 @@ pub fn io_area_editor_ui(
             row_ui(ui, &texts.direction, |ui| {
                 keep(
                     &mut out,
-                    combo_ui(ui, state, field, area.direction, &directions, |direction| {
-                        let name = directions
-                            .iter()
-                            .find(|(_, value)| *value == direction)
-                            .map(|(text, _)| text.as_str())
-                            .unwrap_or_default();
-                        set(
-                            &texts.direction,
-                            name,
-                            IoArea {
-                                direction,
-                                ..area.clone()
-                            },
-                        )
-                    }),
+                    combo_ui(
+                        ui,
+                        state,
+                        texts,
+                        field,
+                        area.direction,
+                        &directions,
+                        |direction| {
+                            let name = directions
+                                .iter()
+                                .find(|(_, value)| *value == direction)
+                                .map(|(text, _)| text.as_str())
+                                .unwrap_or_default();
+                            set(
+                                &texts.direction,
+                                name,
+                                IoArea {
+                                    direction,
+                                    ..area.clone()
+                                },
+                            )
+                        },
+                    ),
                 );
             });
             let label = field_label(texts, &texts.start_byte, node);
@@ -79,8 +87,8 @@ pub fn io_area_editor_ui(
                 let current = area.start_byte.to_string();
                 keep(
                     &mut out,
-                    text_field_ui(ui, state, field, &current, &span, |text| {
-                        let start_byte = parse_whole(texts, text, 0u32, u32::MAX)?;
+                    text_field_ui(ui, state, texts, field, &current, &span, |text| {
+                        let start_byte = parse_whole(text, 0u32, u32::MAX)?;
                         set(
                             &texts.start_byte,
                             text,
@@ -102,8 +110,8 @@ pub fn io_area_editor_ui(
                 let current = area.size_bytes.to_string();
                 keep(
                     &mut out,
-                    text_field_ui(ui, state, field, &current, &texts.bytes, |text| {
-                        let size_bytes = parse_whole(texts, text, 0u32, u32::MAX)?;
+                    text_field_ui(ui, state, texts, field, &current, &texts.bytes, |text| {
+                        let size_bytes = parse_whole(text, 0u32, u32::MAX)?;
                         set(
                             &texts.size,
                             text,
@@ -124,7 +132,7 @@ pub fn io_area_editor_ui(
             row_ui(ui, &texts.comment, |ui| {
                 keep(
                     &mut out,
-                    text_field_ui(ui, state, field, &area.comment, "", |text| {
+                    text_field_ui(ui, state, texts, field, &area.comment, "", |text| {
                         set(
                             &texts.comment,
                             text,

@@ -5,13 +5,14 @@ use compiler::ide::address_info;
 use egui::Ui;
 use project_model::{ModbusServerRange, ModbusTable};
 
-use super::field::{DeviceEditorState, FieldId, combo_ui, parse_whole, text_field_ui};
+use super::field::{DeviceEditorState, FieldId, combo_ui, parse_whole, reason_ui, text_field_ui};
+use super::refusal::Refusal;
 use super::texts::fill;
 use super::{DeviceEdit, DeviceTexts, keep, row_label};
 
 /// Gives a changed list of ranges and its undo label to `commit`, which checks it against the
 /// project and makes the edit, or says why it is refused.
-pub(crate) type Commit<'a, T> = &'a dyn Fn(String, Vec<T>) -> Result<DeviceEdit, String>;
+pub(crate) type Commit<'a, T> = &'a dyn Fn(String, Vec<T>) -> Result<DeviceEdit, Refusal>;
 
 /// Draws the ranges as a table with a button to add one and one to delete each.
 pub(crate) fn map_ranges_ui(
@@ -65,7 +66,7 @@ pub(crate) fn map_ranges_ui(
                 };
                 keep(
                     &mut out,
-                    combo_ui(ui, state, field, range.table, &tables, |table| {
+                    combo_ui(ui, state, texts, field, range.table, &tables, |table| {
                         let name = table_name(texts, table);
                         replaced(
                             ModbusServerRange {
@@ -86,17 +87,25 @@ pub(crate) fn map_ranges_ui(
                 };
                 keep(
                     &mut out,
-                    text_field_ui(ui, state, field, &range.start.to_string(), "", |text| {
-                        let start = parse_whole(texts, text, 0u16, u16::MAX)?;
-                        replaced(
-                            ModbusServerRange {
-                                start,
-                                ..range.clone()
-                            },
-                            &texts.start,
-                            text,
-                        )
-                    }),
+                    text_field_ui(
+                        ui,
+                        state,
+                        texts,
+                        field,
+                        &range.start.to_string(),
+                        "",
+                        |text| {
+                            let start = parse_whole(text, 0u16, u16::MAX)?;
+                            replaced(
+                                ModbusServerRange {
+                                    start,
+                                    ..range.clone()
+                                },
+                                &texts.start,
+                                text,
+                            )
+                        },
+                    ),
                 );
                 let key = format!("range {index} count");
                 let label = row_label(texts, &texts.count, row);
@@ -107,17 +116,25 @@ pub(crate) fn map_ranges_ui(
                 };
                 keep(
                     &mut out,
-                    text_field_ui(ui, state, field, &range.count.to_string(), "", |text| {
-                        let count = parse_whole(texts, text, 1u16, u16::MAX)?;
-                        replaced(
-                            ModbusServerRange {
-                                count,
-                                ..range.clone()
-                            },
-                            &texts.count,
-                            text,
-                        )
-                    }),
+                    text_field_ui(
+                        ui,
+                        state,
+                        texts,
+                        field,
+                        &range.count.to_string(),
+                        "",
+                        |text| {
+                            let count = parse_whole(text, 1u16, u16::MAX)?;
+                            replaced(
+                                ModbusServerRange {
+                                    count,
+                                    ..range.clone()
+                                },
+                                &texts.count,
+                                text,
+                            )
+                        },
+                    ),
                 );
                 let key = format!("range {index} address");
                 let label = row_label(texts, &texts.area_address, row);
@@ -128,8 +145,8 @@ pub(crate) fn map_ranges_ui(
                 };
                 keep(
                     &mut out,
-                    text_field_ui(ui, state, field, &range.area_address, "", |text| {
-                        address_problem(texts, range.table, text)?;
+                    text_field_ui(ui, state, texts, field, &range.area_address, "", |text| {
+                        address_problem(range.table, text)?;
                         let area_address = text.to_uppercase();
                         replaced(
                             ModbusServerRange {
@@ -164,9 +181,7 @@ pub(crate) fn map_ranges_ui(
         let label = fill(&texts.add_row, &[("node", &texts.map_ranges)]);
         keep(&mut out, state.settle("ranges", commit(label, list)));
     }
-    if let Some(reason) = state.refusal("ranges") {
-        ui.label(egui::RichText::new(reason).color(ui.visuals().error_fg_color));
-    }
+    reason_ui(ui, state, texts, "ranges");
     out
 }
 
@@ -191,8 +206,8 @@ pub(crate) fn table_name(texts: &DeviceTexts, table: ModbusTable) -> String {
 /// Why `address` cannot start a range of `table`: not a direct address, or of the wrong size
 /// (a bit table starts at bit 0 of a byte, a register table at a W, D or L address), as the
 /// build requires.
-fn address_problem(texts: &DeviceTexts, table: ModbusTable, address: &str) -> Result<(), String> {
-    let info = address_info(address).map_err(|error| error.to_string())?;
+fn address_problem(table: ModbusTable, address: &str) -> Result<(), Refusal> {
+    let info = address_info(address)?;
     let fits = info.bits.is_some()
         && if table.holds_bits() {
             info.size_bits == Some(1) && info.bits.as_ref().is_some_and(|bits| bits.start % 8 == 0)
@@ -202,12 +217,12 @@ fn address_problem(texts: &DeviceTexts, table: ModbusTable, address: &str) -> Re
     if fits {
         return Ok(());
     }
-    let template = if table.holds_bits() {
-        &texts.bit_table_address
+    let address = address.to_owned();
+    Err(if table.holds_bits() {
+        Refusal::BitTableAddress { address }
     } else {
-        &texts.register_table_address
-    };
-    Err(fill(template, &[("address", address)]))
+        Refusal::RegisterTableAddress { address }
+    })
 }
 
 /// A new range: one holding register after the last range, mapped onto `%MW0`.
@@ -232,21 +247,22 @@ mod tests {
 
     #[test]
     fn a_range_starts_at_a_byte_s_first_bit_or_at_a_register_address() {
-        let texts = DeviceTexts::default();
-        assert_eq!(address_problem(&texts, ModbusTable::Coil, "%QX4.0"), Ok(()));
+        let address_problem =
+            |table, address| address_problem(table, address).map_err(|error| error.to_string());
+        assert_eq!(address_problem(ModbusTable::Coil, "%QX4.0"), Ok(()));
         assert_eq!(
-            address_problem(&texts, ModbusTable::Coil, "%QX4.1"),
+            address_problem(ModbusTable::Coil, "%QX4.1"),
             Err(
                 "a coil or discrete input range starts at bit 0 of a byte, such as %QX4.0, not %QX4.1"
                     .into()
             )
         );
         assert_eq!(
-            address_problem(&texts, ModbusTable::HoldingRegister, "%MD2"),
+            address_problem(ModbusTable::HoldingRegister, "%MD2"),
             Ok(())
         );
-        assert!(address_problem(&texts, ModbusTable::InputRegister, "%IB2").is_err());
-        assert!(address_problem(&texts, ModbusTable::InputRegister, "MW2").is_err());
+        assert!(address_problem(ModbusTable::InputRegister, "%IB2").is_err());
+        assert!(address_problem(ModbusTable::InputRegister, "MW2").is_err());
     }
 
     #[test]

@@ -15,6 +15,7 @@ mod field;
 mod io_area;
 mod map_ranges;
 mod modbus_device;
+mod refusal;
 mod texts;
 
 pub use axis::axis_editor_ui;
@@ -22,6 +23,7 @@ pub use controller::controller_editor_ui;
 pub use field::DeviceEditorState;
 pub use io_area::io_area_editor_ui;
 pub use modbus_device::modbus_device_editor_ui;
+pub use refusal::{Refusal, RefusalWords};
 pub use texts::DeviceTexts;
 
 use project_model::{DeviceProblem, Edit, new_problem};
@@ -38,9 +40,9 @@ pub struct DeviceEdit {
 }
 
 /// Refuses a candidate value that brings a problem the current value does not have.
-fn refuse_new(current: Vec<DeviceProblem>, candidate: Vec<DeviceProblem>) -> Result<(), String> {
+fn refuse_new(current: Vec<DeviceProblem>, candidate: Vec<DeviceProblem>) -> Result<(), Refusal> {
     match new_problem(&current, candidate) {
-        Some(problem) => Err(problem.to_string()),
+        Some(problem) => Err(Refusal::Problem(problem)),
         None => Ok(()),
     }
 }

@@ -54,7 +54,7 @@ pub fn modbus_device_editor_ui(
             row_ui(ui, &texts.host, |ui| {
                 keep(
                     &mut out,
-                    text_field_ui(ui, state, field, &device.host, "", |text| {
+                    text_field_ui(ui, state, texts, field, &device.host, "", |text| {
                         set(
                             &texts.host,
                             text,
@@ -76,8 +76,8 @@ pub fn modbus_device_editor_ui(
                 let current = device.port.to_string();
                 keep(
                     &mut out,
-                    text_field_ui(ui, state, field, &current, "", |text| {
-                        let port = parse_whole(texts, text, 0u16, u16::MAX)?;
+                    text_field_ui(ui, state, texts, field, &current, "", |text| {
+                        let port = parse_whole(text, 0u16, u16::MAX)?;
                         set(
                             &texts.port,
                             text,
@@ -99,8 +99,8 @@ pub fn modbus_device_editor_ui(
                 let current = device.unit_id.to_string();
                 keep(
                     &mut out,
-                    text_field_ui(ui, state, field, &current, "", |text| {
-                        let unit_id = parse_whole(texts, text, 0u8, u8::MAX)?;
+                    text_field_ui(ui, state, texts, field, &current, "", |text| {
+                        let unit_id = parse_whole(text, 0u8, u8::MAX)?;
                         set(
                             &texts.unit_id,
                             text,
@@ -125,21 +125,29 @@ pub fn modbus_device_editor_ui(
             row_ui(ui, &texts.word_order, |ui| {
                 keep(
                     &mut out,
-                    combo_ui(ui, state, field, device.word_order, &orders, |word_order| {
-                        let name = if word_order == WordOrder::HighFirst {
-                            &texts.high_first
-                        } else {
-                            &texts.low_first
-                        };
-                        set(
-                            &texts.word_order,
-                            name,
-                            ModbusDevice {
-                                word_order,
-                                ..device.clone()
-                            },
-                        )
-                    }),
+                    combo_ui(
+                        ui,
+                        state,
+                        texts,
+                        field,
+                        device.word_order,
+                        &orders,
+                        |word_order| {
+                            let name = if word_order == WordOrder::HighFirst {
+                                &texts.high_first
+                            } else {
+                                &texts.low_first
+                            };
+                            set(
+                                &texts.word_order,
+                                name,
+                                ModbusDevice {
+                                    word_order,
+                                    ..device.clone()
+                                },
+                            )
+                        },
+                    ),
                 );
             });
             let label = field_label(texts, &texts.poll_interval, node);
@@ -152,17 +160,25 @@ pub fn modbus_device_editor_ui(
                 let current = device.poll_interval_ms.to_string();
                 keep(
                     &mut out,
-                    text_field_ui(ui, state, field, &current, &texts.milliseconds, |text| {
-                        let poll_interval_ms = parse_whole(texts, text, 0u32, u32::MAX)?;
-                        set(
-                            &texts.poll_interval,
-                            text,
-                            ModbusDevice {
-                                poll_interval_ms,
-                                ..device.clone()
-                            },
-                        )
-                    }),
+                    text_field_ui(
+                        ui,
+                        state,
+                        texts,
+                        field,
+                        &current,
+                        &texts.milliseconds,
+                        |text| {
+                            let poll_interval_ms = parse_whole(text, 0u32, u32::MAX)?;
+                            set(
+                                &texts.poll_interval,
+                                text,
+                                ModbusDevice {
+                                    poll_interval_ms,
+                                    ..device.clone()
+                                },
+                            )
+                        },
+                    ),
                 );
             });
             let label = field_label(texts, &texts.timeout, node);
@@ -175,17 +191,25 @@ pub fn modbus_device_editor_ui(
                 let current = device.timeout_ms.to_string();
                 keep(
                     &mut out,
-                    text_field_ui(ui, state, field, &current, &texts.milliseconds, |text| {
-                        let timeout_ms = parse_whole(texts, text, 0u32, u32::MAX)?;
-                        set(
-                            &texts.timeout,
-                            text,
-                            ModbusDevice {
-                                timeout_ms,
-                                ..device.clone()
-                            },
-                        )
-                    }),
+                    text_field_ui(
+                        ui,
+                        state,
+                        texts,
+                        field,
+                        &current,
+                        &texts.milliseconds,
+                        |text| {
+                            let timeout_ms = parse_whole(text, 0u32, u32::MAX)?;
+                            set(
+                                &texts.timeout,
+                                text,
+                                ModbusDevice {
+                                    timeout_ms,
+                                    ..device.clone()
+                                },
+                            )
+                        },
+                    ),
                 );
             });
         });

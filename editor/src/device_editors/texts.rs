@@ -1,9 +1,11 @@
 //! The words of the device editors, so the app can show them in the user's language.
 //! Templates hold `{name}`-style placeholders, as languages order the parts differently.
 
+use super::refusal::RefusalWords;
+
 /// Every word the controller, I/O area, Modbus device and axis editors show; `Default` is
 /// English.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug)]
 pub struct DeviceTexts {
     /// Field: a node's name.
     pub name: String,
@@ -121,14 +123,8 @@ pub struct DeviceTexts {
     pub add_row: String,
     /// Undo label of a deleted row: `{row}`, `{node}`.
     pub delete_row: String,
-    /// A refused start of a bit table's range: `{address}`.
-    pub bit_table_address: String,
-    /// A refused start of a register table's range: `{address}`.
-    pub register_table_address: String,
-    /// A refused number: `{text}`.
-    pub not_a_number: String,
-    /// A refused whole number: `{text}`, `{min}`, `{max}`.
-    pub not_a_whole_number: String,
+    /// Why a value was refused, in the user's language.
+    pub refusal: RefusalWords,
 }
 
 impl Default for DeviceTexts {
@@ -195,14 +191,7 @@ impl Default for DeviceTexts {
             set_field: s("Set {field} of {node} to {value}"),
             add_row: s("Add row to {node}"),
             delete_row: s("Delete row {row} of {node}"),
-            bit_table_address: s(
-                "a coil or discrete input range starts at bit 0 of a byte, such as %QX4.0, not {address}",
-            ),
-            register_table_address: s(
-                "a register range starts at a W, D or L address, such as %MW0, not {address}",
-            ),
-            not_a_number: s("'{text}' is not a number"),
-            not_a_whole_number: s("'{text}' is not a whole number from {min} to {max}"),
+            refusal: RefusalWords::default(),
         }
     }
 }

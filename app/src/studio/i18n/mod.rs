@@ -1,32 +1,16 @@
 //! Interface text in English and Simplified Chinese: the languages and the texts here, their
 //! words in `translations.rs`.
 
+mod device_texts;
+mod language;
+mod refusal_texts;
+mod template;
 mod translations;
 
-use serde::{Deserialize, Serialize};
-
-/// The interface language, chosen in the settings and remembered between runs.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
-pub enum Language {
-    /// English.
-    #[default]
-    English,
-    /// Simplified Chinese.
-    SimplifiedChinese,
-}
-
-impl Language {
-    /// Every language, in the order the settings menu lists them.
-    pub const ALL: [Self; 2] = [Self::English, Self::SimplifiedChinese];
-
-    /// The language's own name, shown in the settings menu.
-    pub fn native_name(self) -> &'static str {
-        match self {
-            Self::English => "English",
-            Self::SimplifiedChinese => "简体中文",
-        }
-    }
-}
+pub use device_texts::DeviceText;
+pub use language::Language;
+pub use refusal_texts::RefusalText;
+pub use template::fill_template;
 
 /// Every piece of interface text. Adding a variant forces a translation for each language.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -367,71 +351,8 @@ pub enum Text {
     BoundToNoDevice,
     DeviceNotPolled,
     DeviceBusy,
-    // The device editors (`device_documents.rs`).
-    DeviceName,
-    DeviceHost,
-    DevicePort,
-    DevicePasswordNote,
-    DeviceModbusMapOverride,
-    DeviceDefaultMapNote,
-    DeviceMapRanges,
-    DeviceTable,
-    DeviceStart,
-    DeviceCount,
-    DeviceAreaAddress,
-    DeviceAddRange,
-    DeviceNewChannel,
-    DeviceDelete,
-    DeviceDirection,
-    DeviceStartByte,
-    DeviceSize,
-    DeviceBytes,
-    DeviceMilliseconds,
-    DeviceComment,
-    DeviceInputs,
-    DeviceOutputs,
-    DeviceMarkers,
-    DeviceUnitId,
-    DeviceWordOrder,
-    DeviceHighFirst,
-    DeviceLowFirst,
-    DevicePollInterval,
-    DeviceTimeout,
-    DeviceChannels,
-    DeviceVariable,
-    DeviceAddress,
-    DeviceDataType,
-    DeviceCoil,
-    DeviceDiscreteInput,
-    DeviceHoldingRegister,
-    DeviceInputRegister,
-    DeviceKind,
-    DeviceVirtualAxis,
-    DeviceTask,
-    DeviceUnit,
-    DeviceModulo,
-    DeviceModuloPeriod,
-    DeviceSoftwareLimits,
-    DeviceNegativeLimit,
-    DevicePositiveLimit,
-    DeviceVelocity,
-    DeviceAcceleration,
-    DeviceDeceleration,
-    DeviceJerk,
-    DeviceIncrements,
-    DeviceUnits,
-    DeviceScaling,
-    DeviceFieldOf,
-    DeviceFieldOfRow,
-    DeviceSetField,
-    DeviceAddRow,
-    DeviceDeleteRow,
-    DeviceBitTableAddress,
-    DeviceRegisterTableAddress,
-    DeviceNotANumber,
-    DeviceNotAWholeNumber,
-    // Undo labels, accessible labels, tree details and the refusals of the tree, the task
-    // editor, value entry and the build; the templates among them are filled with `Text::fill`.
+    // Undo labels, accessible labels and tree details; the templates among them are filled
+    // with `Text::fill`. The refusals are `RefusalText`s.
     UndoAddFolder,
     UndoAdd,
     UndoRename,
@@ -484,95 +405,17 @@ pub enum Text {
     DeclarationsOf,
     ImplementationOf,
     UndoRecover,
-    EditNoSuchObject,
-    EditNoSuchFolder,
-    EditNoSuchMember,
-    WhatMethod,
-    WhatProperty,
-    WhatAction,
-    EditIndexOutOfRange,
-    EditInvalidName,
-    EditDuplicateName,
-    EditInvalidObject,
-    EditNotText,
-    EditBadTextRange,
-    EditMoveIntoItself,
-    EditKindChanged,
-    LitUnknownBase,
-    LitNoDigits,
-    LitBadDigitBinary,
-    LitBadDigitOctal,
-    LitBadDigitHex,
-    LitBadDigitDecimal,
-    LitNotANumber,
-    LitNoValue,
-    LitNoUnit,
-    LitNoNumber,
-    LitBadNumber,
-    LitUnknownUnit,
-    LitNotADate,
-    LitNoSuchDate,
-    LitNotATimeOfDay,
-    LitNotADateAndTime,
-    LitNoHash,
-    RefuseEmptyName,
-    RefuseKeyword,
-    RefuseNoReturnType,
-    TimeEmpty,
-    TimeTooLong,
-    TimeNotWholeMicros,
-    TimeNotPositive,
-    TimeTooLongAtMost,
-    NotATriggerVariable,
-    NotAPriority,
-    NotASensitivity,
-    ChooseProgramToCall,
-    NoProgramNamed,
-    AlreadyCalls,
     TreeFreewheeling,
     TreeEventTask,
     TreeModuloAxis,
     TreeLinearAxis,
-    ValueNotAString,
-    ValueTooLong,
-    ValueNotWritable,
-    ValueNotAValue,
-    ValueBadLiteral,
-    ValueOutOfRange,
-    BuildNoThread,
-    BuildHiddenErrors,
-    BuildCompilerStopped,
 }
 
 impl Text {
     /// The text in `language` with each `{key}` placeholder replaced by the value `values`
-    /// gives it, in one pass so a value that holds braces is never filled again.
-    /// A placeholder without a value stays as it is.
+    /// gives it (see [`fill_template`]).
     pub fn fill(self, language: Language, values: &[(&str, &str)]) -> String {
-        let mut filled = String::new();
-        let mut rest = self.get(language);
-        while let Some(open) = rest.find('{') {
-            filled.push_str(&rest[..open]);
-            let after = &rest[open + 1..];
-            let value = after.find('}').and_then(|close| {
-                values
-                    .iter()
-                    .find(|(key, _)| *key == &after[..close])
-                    .map(|(_, value)| (close, *value))
-            });
-            match value {
-                Some((close, value)) => {
-                    filled.push_str(value);
-                    rest = &after[close + 1..];
-                }
-                None => {
-                    filled.push('{');
-                    rest = after;
-                }
-            }
-        }
-        filled.push_str(rest);
-        filled
+        fill_template(self.get(language), values)
     }
 }
 

@@ -2,7 +2,7 @@
 //! interface language.
 
 use super::time_literal::TimeRefusal;
-use crate::studio::i18n::{Language, Text};
+use crate::studio::i18n::{Language, RefusalText};
 use crate::studio::tree_actions::Refusal;
 
 /// Why a task field or a new program call is refused.
@@ -43,21 +43,21 @@ impl TaskRefusal {
             Self::Name(refusal) => refusal.text(language),
             Self::Time(refusal) => refusal.text(language),
             Self::NotAVariable(input) => {
-                Text::NotATriggerVariable.fill(language, &[("input", input)])
+                RefusalText::NotATriggerVariable.fill(language, &[("input", input)])
             }
-            Self::NotAPriority { input, lowest } => Text::NotAPriority.fill(
+            Self::NotAPriority { input, lowest } => RefusalText::NotAPriority.fill(
                 language,
                 &[("input", input), ("lowest", &lowest.to_string())],
             ),
             Self::NotASensitivity(input) => {
-                Text::NotASensitivity.fill(language, &[("input", input)])
+                RefusalText::NotASensitivity.fill(language, &[("input", input)])
             }
-            Self::NoProgramChosen => Text::ChooseProgramToCall.get(language).to_owned(),
+            Self::NoProgramChosen => RefusalText::ChooseProgramToCall.get(language).to_owned(),
             Self::NoSuchProgram(program) => {
-                Text::NoProgramNamed.fill(language, &[("program", program)])
+                RefusalText::NoProgramNamed.fill(language, &[("program", program)])
             }
             Self::AlreadyCalls { task, program } => {
-                Text::AlreadyCalls.fill(language, &[("task", task), ("program", program)])
+                RefusalText::AlreadyCalls.fill(language, &[("task", task), ("program", program)])
             }
         }
     }

@@ -3,7 +3,7 @@
 use compiler::literal::{LiteralError, parse_duration};
 
 use crate::studio::error_texts::literal_error_text;
-use crate::studio::i18n::{Language, Text};
+use crate::studio::i18n::{Language, RefusalText};
 
 /// Why a typed task time is refused.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -26,14 +26,14 @@ impl TimeRefusal {
     /// The refusal as the user reads it, in `language`.
     pub fn text(&self, language: Language) -> String {
         match self {
-            Self::Empty => Text::TimeEmpty.get(language).to_owned(),
-            Self::TooLong(text) => Text::TimeTooLong.fill(language, &[("text", text)]),
+            Self::Empty => RefusalText::TimeEmpty.get(language).to_owned(),
+            Self::TooLong(text) => RefusalText::TimeTooLong.fill(language, &[("text", text)]),
             Self::Literal(error) => literal_error_text(error, language),
             Self::NotWholeMicroseconds(text) => {
-                Text::TimeNotWholeMicros.fill(language, &[("text", text)])
+                RefusalText::TimeNotWholeMicros.fill(language, &[("text", text)])
             }
-            Self::NotPositive => Text::TimeNotPositive.get(language).to_owned(),
-            Self::BeyondRange(text) => Text::TimeTooLongAtMost.fill(
+            Self::NotPositive => RefusalText::TimeNotPositive.get(language).to_owned(),
+            Self::BeyondRange(text) => RefusalText::TimeTooLongAtMost.fill(
                 language,
                 &[("text", text), ("max", &format_time_us(u32::MAX))],
             ),

@@ -4,7 +4,7 @@
 use project_model::EditError;
 
 use crate::studio::error_texts::edit_error_text;
-use crate::studio::i18n::{Language, Text};
+use crate::studio::i18n::{Language, RefusalText};
 
 /// Why a device tree action or a dialog entry cannot be carried out.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -24,9 +24,9 @@ impl Refusal {
     pub fn text(&self, language: Language) -> String {
         match self {
             Self::Edit(error) => edit_error_text(error, language),
-            Self::EmptyName => Text::RefuseEmptyName.get(language).to_owned(),
-            Self::Keyword(name) => Text::RefuseKeyword.fill(language, &[("name", name)]),
-            Self::NoReturnType => Text::RefuseNoReturnType.get(language).to_owned(),
+            Self::EmptyName => RefusalText::RefuseEmptyName.get(language).to_owned(),
+            Self::Keyword(name) => RefusalText::RefuseKeyword.fill(language, &[("name", name)]),
+            Self::NoReturnType => RefusalText::RefuseNoReturnType.get(language).to_owned(),
         }
     }
 }

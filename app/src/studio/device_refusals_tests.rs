@@ -1,0 +1,203 @@
+use project_model::{IoDirection, ModbusDataType};
+
+use super::*;
+
+/// One refusal of every kind, with every word the checks put into their sentences.
+fn every_refusal() -> Vec<Refusal> {
+    let mut problems = vec![
+        DeviceProblem::EmptyHost,
+        DeviceProblem::ZeroPort,
+        DeviceProblem::EmptyRangeAddress { row: 1 },
+        DeviceProblem::EmptyRange { row: 2 },
+        DeviceProblem::RangePastEnd {
+            row: 1,
+            start: 65530,
+            count: 10,
+        },
+        DeviceProblem::RangesOverlap { row: 2, other: 1 },
+        DeviceProblem::ZeroSize,
+        DeviceProblem::AreaPastEnd {
+            start_byte: 10,
+            size_bytes: 4,
+            limit: 12,
+        },
+        DeviceProblem::AreasOverlap {
+            direction: IoDirection::Output,
+            first: 1,
+            last: 1,
+            other: "DO_16".into(),
+        },
+        DeviceProblem::AreasOverlap {
+            direction: IoDirection::Input,
+            first: 1,
+            last: 3,
+            other: "DI_16".into(),
+        },
+        DeviceProblem::ZeroPollInterval,
+        DeviceProblem::ZeroTimeout,
+        DeviceProblem::EmptyVariable { row: 3 },
+        DeviceProblem::InvalidVariable {
+            row: 3,
+            variable: "1x".into(),
+        },
+        DeviceProblem::ChannelPastEnd {
+            row: 1,
+            address: 65535,
+            width: 2,
+        },
+        DeviceProblem::ChannelsOverlap {
+            row: 2,
+            variable: "GVL.a".into(),
+            other: 1,
+            other_variable: "GVL.b".into(),
+        },
+        DeviceProblem::TableTypeMismatch {
+            row: 1,
+            table: ModbusTable::Coil,
+            data_type: ModbusDataType::Real,
+        },
+        DeviceProblem::NoSuchTask("Fast".into()),
+        DeviceProblem::EmptyUnit,
+        DeviceProblem::ModuloNotPositive(0.0),
+        DeviceProblem::LimitsInverted {
+            min: 10.0,
+            max: -2.5,
+        },
+    ];
+    for kind in ["controller", "I/O area", "Modbus device", "axis"] {
+        let name = "1st".to_owned();
+        problems.push(DeviceProblem::InvalidName {
+            kind,
+            name: name.clone(),
+        });
+        problems.push(DeviceProblem::DuplicateName { kind, name });
+    }
+    for field in [
+        "modulo period",
+        "negative software limit",
+        "positive software limit",
+        "scaling numerator",
+        "scaling denominator",
+    ] {
+        problems.push(DeviceProblem::NotFinite { field });
+    }
+    for field in ["velocity", "acceleration", "deceleration", "jerk"] {
+        problems.push(DeviceProblem::NotFinite { field });
+        problems.push(DeviceProblem::DynamicLimitNotPositive { field, value: -1.5 });
+    }
+    for field in ["numerator", "denominator"] {
+        problems.push(DeviceProblem::ZeroScaling { field });
+    }
+    let text = || "%QX4.9".to_owned();
+    let mut refusals: Vec<Refusal> = problems.into_iter().map(Refusal::from).collect();
+    refusals.extend(
+        [
+            AddressError::NoPercent { text: text() },
+            AddressError::NoArea { text: text() },
+            AddressError::NoSize { text: text() },
+            AddressError::NotANumber {
+                text: text(),
+                part: "x".into(),
+            },
+            AddressError::NoSuchBit {
+                text: text(),
+                bit: 9,
+            },
+        ]
+        .map(Refusal::from),
+    );
+    refusals.extend(
+        [
+            ChannelVariableError::NoSuchVariable("GVL.x".into()),
+            ChannelVariableError::TypeMismatch {
+                path: "GVL.x".into(),
+                declared: "REAL".into(),
+                data_type: "UINT".into(),
+                expected: "UINT or WORD".into(),
+            },
+        ]
+        .map(Refusal::from),
+    );
+    refusals.extend([
+        Refusal::BitTableAddress {
+            address: "%QX4.1".into(),
+        },
+        Refusal::RegisterTableAddress {
+            address: "%IB2".into(),
+        },
+        Refusal::NotANumber {
+            text: "fast".into(),
+        },
+        Refusal::NotAWholeNumber {
+            text: "300".into(),
+            min: "0".into(),
+            max: "255".into(),
+        },
+    ]);
+    refusals
+}
+
+#[test]
+fn every_refusal_reads_in_english_as_its_own_text() {
+    for refusal in every_refusal() {
+        assert_eq!(
+            describe_refusal(&refusal, Language::English),
+            refusal.to_string()
+        );
+    }
+}
+
+#[test]
+fn every_refusal_has_its_own_chinese_words() {
+    for refusal in every_refusal() {
+        let english = describe_refusal(&refusal, Language::English);
+        let chinese = describe_refusal(&refusal, Language::SimplifiedChinese);
+        assert!(!chinese.trim().is_empty(), "{refusal:?}");
+        assert_ne!(chinese, english, "{refusal:?}");
+        assert!(!chinese.contains('{'), "{chinese}");
+    }
+}
+
+#[test]
+fn the_words_inside_a_chinese_reason_are_chinese_too() {
+    let duplicate = DeviceProblem::DuplicateName {
+        kind: "Modbus device",
+        name: "Drive".into(),
+    };
+    assert_eq!(
+        describe_problem(&duplicate, Language::SimplifiedChinese),
+        "名称 'Drive' 已被另一个Modbus 设备使用"
+    );
+    let limit = DeviceProblem::DynamicLimitNotPositive {
+        field: "jerk",
+        value: 0.0,
+    };
+    assert_eq!(
+        describe_problem(&limit, Language::SimplifiedChinese),
+        "加加速度限值为 0；必须大于 0"
+    );
+}
+
+#[test]
+fn every_kind_and_field_word_the_checks_use_has_chinese_words() {
+    for english in [
+        "controller",
+        "I/O area",
+        "Modbus device",
+        "axis",
+        "modulo period",
+        "negative software limit",
+        "positive software limit",
+        "velocity",
+        "acceleration",
+        "deceleration",
+        "jerk",
+        "scaling numerator",
+        "scaling denominator",
+        "numerator",
+        "denominator",
+    ] {
+        assert_eq!(word(english, Language::English), english);
+        assert_ne!(word(english, Language::SimplifiedChinese), english);
+    }
+}
