@@ -12,10 +12,12 @@ mod axis;
 mod channels;
 mod controller;
 mod field;
+mod form;
 mod io_area;
 mod map_ranges;
 mod modbus_device;
 mod refusal;
+mod table;
 mod texts;
 
 pub use axis::axis_editor_ui;
