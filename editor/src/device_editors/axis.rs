@@ -6,7 +6,7 @@ use project_model::{Axis, AxisKind, Edit, ListEdit, Project, axis_problems};
 
 use super::field::DeviceEditorState;
 use super::form::Form;
-use super::{DeviceEdit, DeviceTexts, refuse_new};
+use super::{DeviceEdit, DeviceTexts, checked_edit};
 
 /// Draws the settings of the axis at `index` of `project` and returns the edits of this
 /// frame's gesture; nothing when there is no such axis.
@@ -20,14 +20,10 @@ pub fn axis_editor_ui(
     let axis = project.axes.get(index)?;
     state.follow(axis);
     let node = axis.name.as_str();
+    let problems = |axis: &Axis| axis_problems(project, Some(index), axis);
     let change = |label: String, item: Axis| {
-        refuse_new(
-            axis_problems(project, Some(index), axis),
-            axis_problems(project, Some(index), &item),
-        )?;
-        Ok(DeviceEdit {
-            label,
-            edits: vec![Edit::Axes(ListEdit::Replace { index, item })],
+        checked_edit(label, axis, item, problems, |item| {
+            Edit::Axes(ListEdit::Replace { index, item })
         })
     };
     let unit = axis.unit.as_str();

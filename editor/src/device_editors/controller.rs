@@ -7,7 +7,7 @@ use project_model::{Controller, Edit, ModbusServerMap, Project, controller_probl
 use super::field::{DeviceEditorState, parse_whole};
 use super::form::Form;
 use super::map_ranges::map_ranges_ui;
-use super::{DeviceEdit, DeviceTexts, keep, refuse_new};
+use super::{DeviceEdit, DeviceTexts, checked_edit, keep};
 
 /// Draws the controller's settings of `project` and returns the edits of this frame's gesture.
 pub fn controller_editor_ui(
@@ -20,14 +20,13 @@ pub fn controller_editor_ui(
     state.follow(controller);
     let node = controller.name.as_str();
     let change = |label: String, candidate: Controller| {
-        refuse_new(
-            controller_problems(controller),
-            controller_problems(&candidate),
-        )?;
-        Ok(DeviceEdit {
+        checked_edit(
             label,
-            edits: vec![Edit::SetController(candidate)],
-        })
+            controller,
+            candidate,
+            controller_problems,
+            Edit::SetController,
+        )
     };
     let mut form = Form::node(state, texts, controller, node, &change);
     form.grid_ui(ui, "controller editor", |form, ui| {
@@ -63,20 +62,19 @@ pub fn controller_editor_ui(
                 // Deleting a range brings no problem, but it renumbers the rows old problems
                 // name, which would make them look new.
                 let deleted = ranges.len() < map.ranges.len();
+                let problems = |controller: &Controller| {
+                    if deleted {
+                        Vec::new()
+                    } else {
+                        controller_problems(controller)
+                    }
+                };
                 let candidate = Controller {
                     modbus_map: Some(ModbusServerMap { ranges }),
                     ..controller.clone()
                 };
-                if !deleted {
-                    refuse_new(
-                        controller_problems(controller),
-                        controller_problems(&candidate),
-                    )?;
-                }
-                Ok(DeviceEdit {
-                    label: format!("{label} ({node})"),
-                    edits: vec![Edit::SetController(candidate)],
-                })
+                let label = format!("{label} ({node})");
+                checked_edit(label, controller, candidate, problems, Edit::SetController)
             };
             keep(
                 &mut out,

@@ -6,7 +6,7 @@ use project_model::{Edit, IoArea, IoDirection, ListEdit, Project, io_area_proble
 
 use super::field::DeviceEditorState;
 use super::form::Form;
-use super::{DeviceEdit, DeviceTexts, refuse_new};
+use super::{DeviceEdit, DeviceTexts, checked_edit};
 
 /// Draws the settings of the I/O area at `index` of `project` and returns the edits of this
 /// frame's gesture; nothing when there is no such area.
@@ -21,14 +21,10 @@ pub fn io_area_editor_ui(
     state.follow(area);
     let node = area.name.as_str();
     let areas = &project.io_areas;
+    let problems = |area: &IoArea| io_area_problems(areas, Some(index), area);
     let change = |label: String, item: IoArea| {
-        refuse_new(
-            io_area_problems(areas, Some(index), area),
-            io_area_problems(areas, Some(index), &item),
-        )?;
-        Ok(DeviceEdit {
-            label,
-            edits: vec![Edit::IoAreas(ListEdit::Replace { index, item })],
+        checked_edit(label, area, item, problems, |item| {
+            Edit::IoAreas(ListEdit::Replace { index, item })
         })
     };
     let directions = [

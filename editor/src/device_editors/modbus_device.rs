@@ -8,7 +8,7 @@ use project_model::{
 use super::channels::channels_ui;
 use super::field::DeviceEditorState;
 use super::form::Form;
-use super::{DeviceEdit, DeviceTexts, keep, refuse_new};
+use super::{DeviceEdit, DeviceTexts, checked_edit, keep};
 
 /// Draws the settings and channels of the Modbus device at `index` of `project` and returns
 /// the edits of this frame's gesture; nothing when there is no such device.
@@ -27,15 +27,15 @@ pub fn modbus_device_editor_ui(
         // Deleting a channel brings no problem, but it renumbers the rows old problems name,
         // which would make them look new.
         let deleted = item.bindings.len() < device.bindings.len();
-        if !deleted {
-            refuse_new(
-                modbus_device_problems(devices, Some(index), device),
-                modbus_device_problems(devices, Some(index), &item),
-            )?;
-        }
-        Ok(DeviceEdit {
-            label,
-            edits: vec![Edit::ModbusDevices(ListEdit::Replace { index, item })],
+        let problems = |device: &ModbusDevice| {
+            if deleted {
+                Vec::new()
+            } else {
+                modbus_device_problems(devices, Some(index), device)
+            }
+        };
+        checked_edit(label, device, item, problems, |item| {
+            Edit::ModbusDevices(ListEdit::Replace { index, item })
         })
     };
     let orders = [
