@@ -23,12 +23,16 @@ pub(crate) type Change<'a, T> = &'a dyn Fn(String, T) -> Result<DeviceEdit, Refu
 enum Place<'a, T> {
     /// A node of the device tree, named `node`, whose changes go to `change`.
     Node {
+        /// The node's name, as labels show it.
         node: &'a str,
+        /// Checks the changed node and makes its edit.
         change: Change<'a, T>,
     },
     /// The row at `index` of `table`.
     Row {
+        /// The table holding the row.
         table: &'a Table<'a, T>,
+        /// The row's place in the table, from 0.
         index: usize,
     },
 }
@@ -79,6 +83,7 @@ impl<'a, T: Clone> Form<'a, T> {
         Some(Self::new(state, texts, value, Place::Row { table, index }))
     }
 
+    /// The fields of `value`, which lives at `place`.
     fn new(
         state: &'a mut DeviceEditorState,
         texts: &'a DeviceTexts,
@@ -355,5 +360,37 @@ impl<'f, 'a, T: Clone> FormField<'f, 'a, T> {
             draw(ui, state, subject, field, undo_name)
         };
         keep(edit, made);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_row_field_is_keyed_and_labelled_by_its_row_and_changes_only_that_row() {
+        let texts = DeviceTexts::default();
+        let commit = |label: String, rows: Vec<u8>| {
+            Ok(DeviceEdit {
+                label: format!("{label} {rows:?}"),
+                edits: Vec::new(),
+            })
+        };
+        let table = Table {
+            id: "numbers",
+            key: "numbers",
+            row_key: "number",
+            name: "Numbers",
+            columns: &["Value"],
+            rows: &[1, 2, 3],
+            commit: &commit,
+        };
+        let mut state = DeviceEditorState::default();
+        let form = Form::row(&mut state, &texts, &table, 1).unwrap();
+        assert_eq!(form.subject.key("value"), "number 1 value");
+        assert_eq!(form.subject.label("Value"), "Value of row 2");
+        let edit = form.subject.change("Value", "7", 7).unwrap();
+        assert_eq!(edit.label, "Set value of row 2 of Numbers to 7 [1, 7, 3]");
+        assert!(Form::row(&mut state, &texts, &table, 3).is_none());
     }
 }
