@@ -4,7 +4,7 @@
 use std::collections::HashMap;
 
 use editor::{DeviceEdit, DeviceEditorState, DeviceTexts};
-use egui::{RichText, Ui};
+use egui::Ui;
 use project_model::Project;
 
 use super::command::{Command, Commands};
@@ -80,26 +80,6 @@ fn editor_ui(
         _ => return None,
     };
     Some(edit)
-}
-
-/// An axis document: its title and its editor, scrolled.
-pub(crate) fn axis_document_ui(
-    ui: &mut Ui,
-    project: &Project,
-    node: &TreeNode,
-    language: Language,
-    documents: &mut DeviceDocuments,
-    commands: &mut Commands,
-) {
-    egui::ScrollArea::vertical()
-        .id_salt(("axis document", node))
-        .auto_shrink([false, false])
-        .show(ui, |ui| {
-            ui.add_space(4.0);
-            ui.label(RichText::new(node.title(Some(project))).strong());
-            ui.separator();
-            device_editor_ui(ui, project, node, language, documents, commands);
-        });
 }
 
 /// The editors' words in `language`.

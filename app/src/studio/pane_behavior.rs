@@ -176,10 +176,25 @@ fn document_pane_ui(
         io_document_ui(view, &mut states.devices, commands, ui, node);
         return;
     }
-    // Axes are edited in place by their device editor.
+    // Axes are edited in place by their device editor, under their title, scrolled.
     if let (TreeNode::Axis(_), Some(project)) = (node, view.project()) {
         let devices = &mut states.devices;
-        device_documents::axis_document_ui(ui, project, node, view.language, devices, commands);
+        egui::ScrollArea::vertical()
+            .id_salt(("axis document", node))
+            .auto_shrink([false, false])
+            .show(ui, |ui| {
+                ui.add_space(4.0);
+                ui.label(RichText::new(node.title(Some(project))).strong());
+                ui.separator();
+                device_documents::device_editor_ui(
+                    ui,
+                    project,
+                    node,
+                    view.language,
+                    devices,
+                    commands,
+                );
+            });
         return;
     }
     // Structured Text is edited in place; everything else is shown by the document views.

@@ -2,14 +2,15 @@
 //! and comment, rows added by naming a variable and deleted by a button.
 
 use compiler::ide::{check_channel_variable, variable_type};
-use egui::{RichText, Ui, WidgetInfo};
+use egui::Ui;
 use project_model::{ModbusBinding, ModbusDataType, ModbusTable, Project};
 
-use super::field::{DeviceEditorState, FieldId, combo_ui, parse_whole, reason_ui, text_field_ui};
-use super::map_ranges::{Commit, table_name, table_options};
+use super::field::{DeviceEditorState, FieldId, reason_ui, text_field_ui};
+use super::map_ranges::table_options;
 use super::refusal::Refusal;
+use super::table::{Commit, Table, table_ui};
 use super::texts::fill;
-use super::{DeviceEdit, DeviceTexts, keep, row_label};
+use super::{DeviceEdit, DeviceTexts, keep};
 
 /// Draws the channels as a table, with a field that adds a channel for a variable.
 pub(crate) fn channels_ui(
@@ -20,184 +21,74 @@ pub(crate) fn channels_ui(
     bindings: &[ModbusBinding],
     commit: Commit<'_, ModbusBinding>,
 ) -> Option<DeviceEdit> {
-    let mut out = None;
     ui.strong(&texts.channels);
     let tables = table_options(texts);
     let types: Vec<(String, ModbusDataType)> = ModbusDataType::ALL
         .iter()
         .map(|&data_type| (data_type.iec_name().to_owned(), data_type))
         .collect();
-    egui::Grid::new("modbus channels")
-        .num_columns(6)
-        .striped(true)
-        .spacing([12.0, 4.0])
-        .show(ui, |ui| {
-            for title in [
-                &texts.variable,
-                &texts.table,
-                &texts.address,
-                &texts.data_type,
-                &texts.comment,
-            ] {
-                ui.strong(title);
-            }
-            ui.label("");
-            ui.end_row();
-            for (index, binding) in bindings.iter().enumerate() {
-                let row = index + 1;
-                let replaced = |item: ModbusBinding, field: &str, value: &str| {
-                    let mut list = bindings.to_vec();
-                    list[index] = item;
-                    let field = row_label(texts, field, row).to_lowercase();
-                    let label = fill(
-                        &texts.set_field,
-                        &[
-                            ("field", &field),
-                            ("node", &texts.channels),
-                            ("value", value),
-                        ],
-                    );
-                    commit(label, list)
-                };
-                let fits =
-                    check_channel_variable(project, &binding.variable, binding.data_type).is_ok();
-                let key = format!("channel {index} variable");
-                let label = row_label(texts, &texts.variable, row);
-                let field = FieldId {
-                    key: &key,
-                    label: &label,
-                    width: 190.0,
-                };
-                keep(
-                    &mut out,
-                    text_field_ui(ui, state, texts, field, &binding.variable, "", |text| {
-                        check_channel_variable(project, text, binding.data_type)?;
-                        let item = ModbusBinding {
-                            variable: text.to_owned(),
-                            ..binding.clone()
-                        };
-                        replaced(item, &texts.variable, text)
-                    }),
-                );
-                let key = format!("channel {index} table");
-                let label = row_label(texts, &texts.table, row);
-                let field = FieldId {
-                    key: &key,
-                    label: &label,
-                    width: 130.0,
-                };
-                keep(
-                    &mut out,
-                    combo_ui(ui, state, texts, field, binding.table, &tables, |table| {
-                        let data_type = data_type_for_table(project, binding, table);
-                        let item = ModbusBinding {
-                            table,
-                            data_type,
-                            ..binding.clone()
-                        };
-                        replaced(item, &texts.table, &table_name(texts, table))
-                    }),
-                );
-                let key = format!("channel {index} address");
-                let label = row_label(texts, &texts.address, row);
-                let field = FieldId {
-                    key: &key,
-                    label: &label,
-                    width: 60.0,
-                };
-                keep(
-                    &mut out,
-                    text_field_ui(
-                        ui,
-                        state,
-                        texts,
-                        field,
-                        &binding.address.to_string(),
-                        "",
-                        |text| {
-                            let address = parse_whole(text, 0u16, u16::MAX)?;
-                            let item = ModbusBinding {
-                                address,
-                                ..binding.clone()
-                            };
-                            replaced(item, &texts.address, text)
-                        },
-                    ),
-                );
-                let key = format!("channel {index} type");
-                let label = row_label(texts, &texts.data_type, row);
-                let field = FieldId {
-                    key: &key,
-                    label: &label,
-                    width: 80.0,
-                };
-                keep(
-                    &mut out,
-                    combo_ui(
-                        ui,
-                        state,
-                        texts,
-                        field,
-                        binding.data_type,
-                        &types,
-                        |data_type| {
-                            if fits {
-                                check_channel_variable(project, &binding.variable, data_type)?;
-                            }
-                            let item = ModbusBinding {
-                                data_type,
-                                ..binding.clone()
-                            };
-                            replaced(item, &texts.data_type, data_type.iec_name())
-                        },
-                    ),
-                );
-                let key = format!("channel {index} comment");
-                let label = row_label(texts, &texts.comment, row);
-                let field = FieldId {
-                    key: &key,
-                    label: &label,
-                    width: 160.0,
-                };
-                keep(
-                    &mut out,
-                    text_field_ui(ui, state, texts, field, &binding.comment, "", |text| {
-                        let item = ModbusBinding {
-                            comment: text.to_owned(),
-                            ..binding.clone()
-                        };
-                        replaced(item, &texts.comment, text)
-                    }),
-                );
-                let delete = ui.button(&texts.delete);
-                if !fits {
-                    // Bound before this check existed, or the variable changed since: say so.
-                    let reason =
-                        check_channel_variable(project, &binding.variable, binding.data_type)
-                            .err()
-                            .map(|error| texts.refusal.describe(&Refusal::from(error)))
-                            .unwrap_or_default();
-                    ui.label(
-                        RichText::new("!")
-                            .strong()
-                            .color(ui.visuals().warn_fg_color),
-                    )
-                    .on_hover_text(reason);
+    let table = Table {
+        id: "modbus channels",
+        key: "channels",
+        row_key: "channel",
+        name: &texts.channels,
+        columns: &[
+            &texts.variable,
+            &texts.table,
+            &texts.address,
+            &texts.data_type,
+            &texts.comment,
+        ],
+        rows: bindings,
+        commit,
+    };
+    let mut out = table_ui(ui, state, texts, &table, |ui, row, binding| {
+        let fits = check_channel_variable(project, &binding.variable, binding.data_type);
+        row.field("variable", &texts.variable, 190.0).typed_ui(
+            ui,
+            &binding.variable,
+            |item, text| {
+                check_channel_variable(project, text, item.data_type)?;
+                item.variable = text.to_owned();
+                Ok(text.to_owned())
+            },
+        );
+        row.field("table", &texts.table, 130.0).combo_ui(
+            ui,
+            binding.table,
+            &tables,
+            |item, table| {
+                item.data_type = data_type_for_table(project, item, table);
+                item.table = table;
+            },
+        );
+        row.field("address", &texts.address, 60.0).whole_ui(
+            ui,
+            binding.address,
+            0..=u16::MAX,
+            |item, address| item.address = address,
+        );
+        row.field("type", &texts.data_type, 80.0).checked_combo_ui(
+            ui,
+            binding.data_type,
+            &types,
+            |item, data_type| {
+                if fits.is_ok() {
+                    check_channel_variable(project, &item.variable, data_type)?;
                 }
-                let label = row_label(texts, &texts.delete, row);
-                delete.widget_info(|| WidgetInfo::labeled(egui::Role::Button, true, label.clone()));
-                if delete.clicked() {
-                    let mut list = bindings.to_vec();
-                    list.remove(index);
-                    let label = fill(
-                        &texts.delete_row,
-                        &[("row", &row.to_string()), ("node", &texts.channels)],
-                    );
-                    keep(&mut out, state.settle("channels", commit(label, list)));
-                }
-                ui.end_row();
-            }
-        });
+                item.data_type = data_type;
+                Ok(())
+            },
+        );
+        row.field("comment", &texts.comment, 160.0).text_ui(
+            ui,
+            &binding.comment,
+            |item, comment| item.comment = comment,
+        );
+        // Bound before this check existed, or the variable changed since: say so.
+        fits.err()
+            .map(|error| texts.refusal.describe(&Refusal::from(error)))
+    });
     ui.horizontal(|ui| {
         ui.label(&texts.new_channel);
         let field = FieldId {

@@ -4,8 +4,9 @@
 use egui::Ui;
 use project_model::{Edit, IoArea, IoDirection, ListEdit, Project, io_area_problems};
 
-use super::field::{DeviceEditorState, FieldId, combo_ui, parse_whole, row_ui, text_field_ui};
-use super::{DeviceEdit, DeviceTexts, field_label, keep, refuse_new, set_label};
+use super::field::DeviceEditorState;
+use super::form::Form;
+use super::{DeviceEdit, DeviceTexts, checked_edit};
 
 /// Draws the settings of the I/O area at `index` of `project` and returns the edits of this
 /// frame's gesture; nothing when there is no such area.
@@ -20,14 +21,10 @@ pub fn io_area_editor_ui(
     state.follow(area);
     let node = area.name.as_str();
     let areas = &project.io_areas;
-    let set = |field: &str, value: &str, item: IoArea| {
-        refuse_new(
-            io_area_problems(areas, Some(index), area),
-            io_area_problems(areas, Some(index), &item),
-        )?;
-        Ok(DeviceEdit {
-            label: set_label(texts, field, node, value),
-            edits: vec![Edit::IoAreas(ListEdit::Replace { index, item })],
+    let problems = |area: &IoArea| io_area_problems(areas, Some(index), area);
+    let change = |label: String, item: IoArea| {
+        checked_edit(label, area, item, problems, |item| {
+            Edit::IoAreas(ListEdit::Replace { index, item })
         })
     };
     let directions = [
@@ -36,114 +33,28 @@ pub fn io_area_editor_ui(
         (texts.markers.clone(), IoDirection::Memory),
     ];
     let letter = area.direction.area_letter();
-    let mut out = None;
-    egui::Grid::new(("io area editor", index))
-        .num_columns(2)
-        .spacing([12.0, 6.0])
-        .show(ui, |ui| {
-            let label = field_label(texts, &texts.direction, node);
-            let field = FieldId {
-                key: "direction",
-                label: &label,
-                width: 120.0,
-            };
-            row_ui(ui, &texts.direction, |ui| {
-                keep(
-                    &mut out,
-                    combo_ui(
-                        ui,
-                        state,
-                        texts,
-                        field,
-                        area.direction,
-                        &directions,
-                        |direction| {
-                            let name = directions
-                                .iter()
-                                .find(|(_, value)| *value == direction)
-                                .map(|(text, _)| text.as_str())
-                                .unwrap_or_default();
-                            set(
-                                &texts.direction,
-                                name,
-                                IoArea {
-                                    direction,
-                                    ..area.clone()
-                                },
-                            )
-                        },
-                    ),
-                );
+    let last = (u64::from(area.start_byte) + u64::from(area.size_bytes)).saturating_sub(1);
+    let span = format!("%{letter}B{} … %{letter}B{last}", area.start_byte);
+    let mut form = Form::node(state, texts, area, node, &change);
+    form.grid_ui(ui, ("io area editor", index), |form, ui| {
+        form.field("direction", &texts.direction, 120.0).combo_ui(
+            ui,
+            area.direction,
+            &directions,
+            |item, direction| item.direction = direction,
+        );
+        form.field("start", &texts.start_byte, 80.0)
+            .suffix(&span)
+            .whole_ui(ui, area.start_byte, 0..=u32::MAX, |item, start| {
+                item.start_byte = start;
             });
-            let label = field_label(texts, &texts.start_byte, node);
-            let field = FieldId {
-                key: "start",
-                label: &label,
-                width: 80.0,
-            };
-            let last = (u64::from(area.start_byte) + u64::from(area.size_bytes)).saturating_sub(1);
-            let span = format!("%{letter}B{} … %{letter}B{last}", area.start_byte);
-            row_ui(ui, &texts.start_byte, |ui| {
-                let current = area.start_byte.to_string();
-                keep(
-                    &mut out,
-                    text_field_ui(ui, state, texts, field, &current, &span, |text| {
-                        let start_byte = parse_whole(text, 0u32, u32::MAX)?;
-                        set(
-                            &texts.start_byte,
-                            text,
-                            IoArea {
-                                start_byte,
-                                ..area.clone()
-                            },
-                        )
-                    }),
-                );
+        form.field("size", &texts.size, 80.0)
+            .suffix(&texts.bytes)
+            .whole_ui(ui, area.size_bytes, 0..=u32::MAX, |item, size| {
+                item.size_bytes = size;
             });
-            let label = field_label(texts, &texts.size, node);
-            let field = FieldId {
-                key: "size",
-                label: &label,
-                width: 80.0,
-            };
-            row_ui(ui, &texts.size, |ui| {
-                let current = area.size_bytes.to_string();
-                keep(
-                    &mut out,
-                    text_field_ui(ui, state, texts, field, &current, &texts.bytes, |text| {
-                        let size_bytes = parse_whole(text, 0u32, u32::MAX)?;
-                        set(
-                            &texts.size,
-                            text,
-                            IoArea {
-                                size_bytes,
-                                ..area.clone()
-                            },
-                        )
-                    }),
-                );
-            });
-            let label = field_label(texts, &texts.comment, node);
-            let field = FieldId {
-                key: "comment",
-                label: &label,
-                width: 320.0,
-            };
-            row_ui(ui, &texts.comment, |ui| {
-                keep(
-                    &mut out,
-                    text_field_ui(ui, state, texts, field, &area.comment, "", |text| {
-                        set(
-                            &texts.comment,
-                            text,
-                            IoArea {
-                                comment: text.to_owned(),
-                                ..area.clone()
-                            },
-                        )
-                    }),
-                );
-            });
-        });
-    out
+        form.field("comment", &texts.comment, 320.0)
+            .text_ui(ui, &area.comment, |item, comment| item.comment = comment);
+    });
+    form.finish()
 }

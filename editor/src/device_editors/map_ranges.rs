@@ -5,14 +5,11 @@ use compiler::ide::address_info;
 use egui::Ui;
 use project_model::{ModbusServerRange, ModbusTable};
 
-use super::field::{DeviceEditorState, FieldId, combo_ui, parse_whole, reason_ui, text_field_ui};
+use super::field::{DeviceEditorState, reason_ui};
 use super::refusal::Refusal;
+use super::table::{Commit, Table, table_ui};
 use super::texts::fill;
-use super::{DeviceEdit, DeviceTexts, keep, row_label};
-
-/// Gives a changed list of ranges and its undo label to `commit`, which checks it against the
-/// project and makes the edit, or says why it is refused.
-pub(crate) type Commit<'a, T> = &'a dyn Fn(String, Vec<T>) -> Result<DeviceEdit, Refusal>;
+use super::{DeviceEdit, DeviceTexts, keep};
 
 /// Draws the ranges as a table with a button to add one and one to delete each.
 pub(crate) fn map_ranges_ui(
@@ -22,159 +19,53 @@ pub(crate) fn map_ranges_ui(
     ranges: &[ModbusServerRange],
     commit: Commit<'_, ModbusServerRange>,
 ) -> Option<DeviceEdit> {
-    let mut out = None;
     ui.add_space(4.0);
     ui.strong(&texts.map_ranges);
     let tables = table_options(texts);
-    egui::Grid::new("map ranges")
-        .num_columns(5)
-        .striped(true)
-        .spacing([12.0, 4.0])
-        .show(ui, |ui| {
-            for title in [
-                &texts.table,
-                &texts.start,
-                &texts.count,
-                &texts.area_address,
-            ] {
-                ui.strong(title);
-            }
-            ui.label("");
-            ui.end_row();
-            for (index, range) in ranges.iter().enumerate() {
-                let row = index + 1;
-                let replaced = |range: ModbusServerRange, field: &str, value: &str| {
-                    let mut list = ranges.to_vec();
-                    list[index] = range;
-                    let field = row_label(texts, field, row).to_lowercase();
-                    let label = fill(
-                        &texts.set_field,
-                        &[
-                            ("field", &field),
-                            ("node", &texts.map_ranges),
-                            ("value", value),
-                        ],
-                    );
-                    commit(label, list)
-                };
-                let key = format!("range {index} table");
-                let label = row_label(texts, &texts.table, row);
-                let field = FieldId {
-                    key: &key,
-                    label: &label,
-                    width: 130.0,
-                };
-                keep(
-                    &mut out,
-                    combo_ui(ui, state, texts, field, range.table, &tables, |table| {
-                        let name = table_name(texts, table);
-                        replaced(
-                            ModbusServerRange {
-                                table,
-                                ..range.clone()
-                            },
-                            &texts.table,
-                            &name,
-                        )
-                    }),
-                );
-                let key = format!("range {index} start");
-                let label = row_label(texts, &texts.start, row);
-                let field = FieldId {
-                    key: &key,
-                    label: &label,
-                    width: 60.0,
-                };
-                keep(
-                    &mut out,
-                    text_field_ui(
-                        ui,
-                        state,
-                        texts,
-                        field,
-                        &range.start.to_string(),
-                        "",
-                        |text| {
-                            let start = parse_whole(text, 0u16, u16::MAX)?;
-                            replaced(
-                                ModbusServerRange {
-                                    start,
-                                    ..range.clone()
-                                },
-                                &texts.start,
-                                text,
-                            )
-                        },
-                    ),
-                );
-                let key = format!("range {index} count");
-                let label = row_label(texts, &texts.count, row);
-                let field = FieldId {
-                    key: &key,
-                    label: &label,
-                    width: 60.0,
-                };
-                keep(
-                    &mut out,
-                    text_field_ui(
-                        ui,
-                        state,
-                        texts,
-                        field,
-                        &range.count.to_string(),
-                        "",
-                        |text| {
-                            let count = parse_whole(text, 1u16, u16::MAX)?;
-                            replaced(
-                                ModbusServerRange {
-                                    count,
-                                    ..range.clone()
-                                },
-                                &texts.count,
-                                text,
-                            )
-                        },
-                    ),
-                );
-                let key = format!("range {index} address");
-                let label = row_label(texts, &texts.area_address, row);
-                let field = FieldId {
-                    key: &key,
-                    label: &label,
-                    width: 90.0,
-                };
-                keep(
-                    &mut out,
-                    text_field_ui(ui, state, texts, field, &range.area_address, "", |text| {
-                        address_problem(range.table, text)?;
-                        let area_address = text.to_uppercase();
-                        replaced(
-                            ModbusServerRange {
-                                area_address: area_address.clone(),
-                                ..range.clone()
-                            },
-                            &texts.area_address,
-                            &area_address,
-                        )
-                    }),
-                );
-                let delete = ui.button(&texts.delete);
-                let label = row_label(texts, &texts.delete, row);
-                delete.widget_info(|| {
-                    egui::WidgetInfo::labeled(egui::Role::Button, true, label.clone())
-                });
-                if delete.clicked() {
-                    let mut list = ranges.to_vec();
-                    list.remove(index);
-                    let label = fill(
-                        &texts.delete_row,
-                        &[("row", &row.to_string()), ("node", &texts.map_ranges)],
-                    );
-                    keep(&mut out, state.settle("ranges", commit(label, list)));
-                }
-                ui.end_row();
-            }
-        });
+    let table = Table {
+        id: "map ranges",
+        key: "ranges",
+        row_key: "range",
+        name: &texts.map_ranges,
+        columns: &[
+            &texts.table,
+            &texts.start,
+            &texts.count,
+            &texts.area_address,
+        ],
+        rows: ranges,
+        commit,
+    };
+    let mut out = table_ui(ui, state, texts, &table, |ui, row, range| {
+        row.field("table", &texts.table, 130.0).combo_ui(
+            ui,
+            range.table,
+            &tables,
+            |item, table| item.table = table,
+        );
+        row.field("start", &texts.start, 60.0).whole_ui(
+            ui,
+            range.start,
+            0..=u16::MAX,
+            |item, start| item.start = start,
+        );
+        row.field("count", &texts.count, 60.0).whole_ui(
+            ui,
+            range.count,
+            1..=u16::MAX,
+            |item, count| item.count = count,
+        );
+        row.field("address", &texts.area_address, 90.0).typed_ui(
+            ui,
+            &range.area_address,
+            |item, text| {
+                address_problem(item.table, text)?;
+                item.area_address = text.to_uppercase();
+                Ok(item.area_address.clone())
+            },
+        );
+        None
+    });
     if ui.button(&texts.add_range).clicked() {
         let mut list = ranges.to_vec();
         list.push(next_range(ranges));

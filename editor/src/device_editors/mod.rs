@@ -12,10 +12,12 @@ mod axis;
 mod channels;
 mod controller;
 mod field;
+mod form;
 mod io_area;
 mod map_ranges;
 mod modbus_device;
 mod refusal;
+mod table;
 mod texts;
 
 pub use axis::axis_editor_ui;
@@ -39,12 +41,22 @@ pub struct DeviceEdit {
     pub edits: Vec<Edit>,
 }
 
-/// Refuses a candidate value that brings a problem the current value does not have.
-fn refuse_new(current: Vec<DeviceProblem>, candidate: Vec<DeviceProblem>) -> Result<(), Refusal> {
-    match new_problem(&current, candidate) {
-        Some(problem) => Err(Refusal::Problem(problem)),
-        None => Ok(()),
+/// The edit that gives a node the value `item` under the undo label `label`, refused when
+/// `problems` finds in `item` a problem the node's `current` value does not have.
+fn checked_edit<T>(
+    label: String,
+    current: &T,
+    item: T,
+    problems: impl Fn(&T) -> Vec<DeviceProblem>,
+    edit: impl FnOnce(T) -> Edit,
+) -> Result<DeviceEdit, Refusal> {
+    if let Some(problem) = new_problem(&problems(current), problems(&item)) {
+        return Err(Refusal::Problem(problem));
     }
+    Ok(DeviceEdit {
+        label,
+        edits: vec![edit(item)],
+    })
 }
 
 /// The undo label of a field set to `value` on `node`.

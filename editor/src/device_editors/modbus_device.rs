@@ -6,8 +6,9 @@ use project_model::{
 };
 
 use super::channels::channels_ui;
-use super::field::{DeviceEditorState, FieldId, combo_ui, parse_whole, row_ui, text_field_ui};
-use super::{DeviceEdit, DeviceTexts, field_label, keep, refuse_new, set_label};
+use super::field::DeviceEditorState;
+use super::form::Form;
+use super::{DeviceEdit, DeviceTexts, checked_edit, keep};
 
 /// Draws the settings and channels of the Modbus device at `index` of `project` and returns
 /// the edits of this frame's gesture; nothing when there is no such device.
@@ -26,193 +27,56 @@ pub fn modbus_device_editor_ui(
         // Deleting a channel brings no problem, but it renumbers the rows old problems name,
         // which would make them look new.
         let deleted = item.bindings.len() < device.bindings.len();
-        if !deleted {
-            refuse_new(
-                modbus_device_problems(devices, Some(index), device),
-                modbus_device_problems(devices, Some(index), &item),
-            )?;
-        }
-        Ok(DeviceEdit {
-            label,
-            edits: vec![Edit::ModbusDevices(ListEdit::Replace { index, item })],
+        let problems = |device: &ModbusDevice| {
+            if deleted {
+                Vec::new()
+            } else {
+                modbus_device_problems(devices, Some(index), device)
+            }
+        };
+        checked_edit(label, device, item, problems, |item| {
+            Edit::ModbusDevices(ListEdit::Replace { index, item })
         })
     };
-    let set = |field: &str, value: &str, item: ModbusDevice| {
-        replace(set_label(texts, field, node, value), item)
-    };
-    let mut out = None;
-    egui::Grid::new(("modbus device editor", index))
-        .num_columns(2)
-        .spacing([12.0, 6.0])
-        .show(ui, |ui| {
-            let label = field_label(texts, &texts.host, node);
-            let field = FieldId {
-                key: "host",
-                label: &label,
-                width: 160.0,
-            };
-            row_ui(ui, &texts.host, |ui| {
-                keep(
-                    &mut out,
-                    text_field_ui(ui, state, texts, field, &device.host, "", |text| {
-                        set(
-                            &texts.host,
-                            text,
-                            ModbusDevice {
-                                host: text.to_owned(),
-                                ..device.clone()
-                            },
-                        )
-                    }),
-                );
+    let orders = [
+        (texts.high_first.clone(), WordOrder::HighFirst),
+        (texts.low_first.clone(), WordOrder::LowFirst),
+    ];
+    let milliseconds = texts.milliseconds.as_str();
+    let mut form = Form::node(state, texts, device, node, &replace);
+    form.grid_ui(ui, ("modbus device editor", index), |form, ui| {
+        form.field("host", &texts.host, 160.0)
+            .text_ui(ui, &device.host, |item, host| item.host = host);
+        form.field("port", &texts.port, 60.0).whole_ui(
+            ui,
+            device.port,
+            0..=u16::MAX,
+            |item, port| item.port = port,
+        );
+        form.field("unit", &texts.unit_id, 60.0).whole_ui(
+            ui,
+            device.unit_id,
+            0..=u8::MAX,
+            |item, unit| item.unit_id = unit,
+        );
+        form.field("order", &texts.word_order, 140.0).combo_ui(
+            ui,
+            device.word_order,
+            &orders,
+            |item, order| item.word_order = order,
+        );
+        form.field("poll", &texts.poll_interval, 60.0)
+            .suffix(milliseconds)
+            .whole_ui(ui, device.poll_interval_ms, 0..=u32::MAX, |item, poll| {
+                item.poll_interval_ms = poll;
             });
-            let label = field_label(texts, &texts.port, node);
-            let field = FieldId {
-                key: "port",
-                label: &label,
-                width: 60.0,
-            };
-            row_ui(ui, &texts.port, |ui| {
-                let current = device.port.to_string();
-                keep(
-                    &mut out,
-                    text_field_ui(ui, state, texts, field, &current, "", |text| {
-                        let port = parse_whole(text, 0u16, u16::MAX)?;
-                        set(
-                            &texts.port,
-                            text,
-                            ModbusDevice {
-                                port,
-                                ..device.clone()
-                            },
-                        )
-                    }),
-                );
+        form.field("timeout", &texts.timeout, 60.0)
+            .suffix(milliseconds)
+            .whole_ui(ui, device.timeout_ms, 0..=u32::MAX, |item, timeout| {
+                item.timeout_ms = timeout;
             });
-            let label = field_label(texts, &texts.unit_id, node);
-            let field = FieldId {
-                key: "unit",
-                label: &label,
-                width: 60.0,
-            };
-            row_ui(ui, &texts.unit_id, |ui| {
-                let current = device.unit_id.to_string();
-                keep(
-                    &mut out,
-                    text_field_ui(ui, state, texts, field, &current, "", |text| {
-                        let unit_id = parse_whole(text, 0u8, u8::MAX)?;
-                        set(
-                            &texts.unit_id,
-                            text,
-                            ModbusDevice {
-                                unit_id,
-                                ..device.clone()
-                            },
-                        )
-                    }),
-                );
-            });
-            let orders = [
-                (texts.high_first.clone(), WordOrder::HighFirst),
-                (texts.low_first.clone(), WordOrder::LowFirst),
-            ];
-            let label = field_label(texts, &texts.word_order, node);
-            let field = FieldId {
-                key: "order",
-                label: &label,
-                width: 140.0,
-            };
-            row_ui(ui, &texts.word_order, |ui| {
-                keep(
-                    &mut out,
-                    combo_ui(
-                        ui,
-                        state,
-                        texts,
-                        field,
-                        device.word_order,
-                        &orders,
-                        |word_order| {
-                            let name = if word_order == WordOrder::HighFirst {
-                                &texts.high_first
-                            } else {
-                                &texts.low_first
-                            };
-                            set(
-                                &texts.word_order,
-                                name,
-                                ModbusDevice {
-                                    word_order,
-                                    ..device.clone()
-                                },
-                            )
-                        },
-                    ),
-                );
-            });
-            let label = field_label(texts, &texts.poll_interval, node);
-            let field = FieldId {
-                key: "poll",
-                label: &label,
-                width: 60.0,
-            };
-            row_ui(ui, &texts.poll_interval, |ui| {
-                let current = device.poll_interval_ms.to_string();
-                keep(
-                    &mut out,
-                    text_field_ui(
-                        ui,
-                        state,
-                        texts,
-                        field,
-                        &current,
-                        &texts.milliseconds,
-                        |text| {
-                            let poll_interval_ms = parse_whole(text, 0u32, u32::MAX)?;
-                            set(
-                                &texts.poll_interval,
-                                text,
-                                ModbusDevice {
-                                    poll_interval_ms,
-                                    ..device.clone()
-                                },
-                            )
-                        },
-                    ),
-                );
-            });
-            let label = field_label(texts, &texts.timeout, node);
-            let field = FieldId {
-                key: "timeout",
-                label: &label,
-                width: 60.0,
-            };
-            row_ui(ui, &texts.timeout, |ui| {
-                let current = device.timeout_ms.to_string();
-                keep(
-                    &mut out,
-                    text_field_ui(
-                        ui,
-                        state,
-                        texts,
-                        field,
-                        &current,
-                        &texts.milliseconds,
-                        |text| {
-                            let timeout_ms = parse_whole(text, 0u32, u32::MAX)?;
-                            set(
-                                &texts.timeout,
-                                text,
-                                ModbusDevice {
-                                    timeout_ms,
-                                    ..device.clone()
-                                },
-                            )
-                        },
-                    ),
-                );
-            });
-        });
+    });
+    let mut out = form.finish();
     ui.add_space(8.0);
     let commit = |label: String, bindings: Vec<ModbusBinding>| {
         replace(
