@@ -13,8 +13,8 @@ use std::path::{Path, PathBuf};
 /// A module of `app::studio` by its path below it (`[]` is `app::studio` itself).
 type Module = Vec<String>;
 
-/// Every `.rs` file below `dir`, sorted.
-fn rust_files(dir: &Path) -> Vec<PathBuf> {
+/// Every `.rs` file below `dir`, sorted (the literal test reads the same files).
+pub(super) fn rust_files(dir: &Path) -> Vec<PathBuf> {
     let mut files = Vec::new();
     let mut folders = vec![dir.to_owned()];
     while let Some(folder) = folders.pop() {

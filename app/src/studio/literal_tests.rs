@@ -74,26 +74,10 @@ const ALLOWED_WORDS: [&str; 3] = ["Rivet", "ms", "min"];
 /// Colour constants that are no colour: `TRANSPARENT` lays out invisible space.
 const ALLOWED_COLORS: [&str; 1] = ["TRANSPARENT"];
 
-/// The source files below `dir`, sorted.
+/// The source files below `dir` but the `tests.rs` modules, sorted.
 fn rust_files(dir: &Path) -> Vec<PathBuf> {
-    let mut files = Vec::new();
-    let mut folders = vec![dir.to_owned()];
-    while let Some(folder) = folders.pop() {
-        let Ok(entries) = std::fs::read_dir(&folder) else {
-            continue;
-        };
-        for entry in entries.flatten() {
-            let path = entry.path();
-            if path.is_dir() {
-                folders.push(path);
-            } else if path.extension().is_some_and(|ext| ext == "rs")
-                && path.file_name().is_some_and(|name| name != "tests.rs")
-            {
-                files.push(path);
-            }
-        }
-    }
-    files.sort();
+    let mut files = super::architecture_tests::rust_files(dir);
+    files.retain(|path| path.file_name().is_some_and(|name| name != "tests.rs"));
     files
 }
 
