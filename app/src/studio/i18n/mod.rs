@@ -409,6 +409,9 @@ pub enum Text {
     TreeEventTask,
     TreeModuloAxis,
     TreeLinearAxis,
+    // Why the embedded simulator could not start.
+    SimulatorCannotListen,
+    SimulatorDidNotStart,
 }
 
 impl Text {

@@ -542,6 +542,14 @@ impl Text {
             Self::TreeEventTask => ("event {trigger}", "事件 {trigger}"),
             Self::TreeModuloAxis => ("modulo {period} {unit}", "模 {period} {unit}"),
             Self::TreeLinearAxis => ("linear, {unit}", "线性，{unit}"),
+            Self::SimulatorCannotListen => (
+                "the simulator cannot listen on the loopback interface: {reason}",
+                "仿真器无法在回环接口上监听：{reason}",
+            ),
+            Self::SimulatorDidNotStart => (
+                "the simulator's runtime did not start: {reason}",
+                "仿真器的运行时未能启动：{reason}",
+            ),
         };
         match language {
             Language::English => english,

@@ -26,7 +26,7 @@ use serde::{Deserialize, Serialize};
 use super::i18n::{Language, Text};
 use background::Background;
 use link::Link;
-use simulator::Simulator;
+use simulator::{Simulator, SimulatorError};
 pub use trace_run::{TracePhase, TraceRun};
 
 /// How often task statistics, faults and forces are asked for while logged in.
@@ -295,7 +295,15 @@ impl Online {
                     match Simulator::start(background.handle()) {
                         Ok(simulator) => self.simulator = Some(simulator),
                         Err(error) => {
-                            self.error(error.to_string());
+                            let (text, reason) = match &error {
+                                SimulatorError::Listen(reason) => {
+                                    (Text::SimulatorCannotListen, reason.to_string())
+                                }
+                                SimulatorError::Runtime(reason) => {
+                                    (Text::SimulatorDidNotStart, reason.clone())
+                                }
+                            };
+                            self.error(text.fill(self.language, &[("reason", &reason)]));
                             return;
                         }
                     }
