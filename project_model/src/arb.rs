@@ -6,7 +6,10 @@
 
 use proptest::prelude::*;
 
-use crate::{Body, Folder, GlobalVarList, Node, Object, Pou, Project};
+use crate::{
+    BlockCall, BlockInput, BlockOutput, Body, Branch, Coil, CoilKind, Edge, ElementId, FlowNode,
+    Folder, GlobalVarList, Network, NetworkOutput, Node, Object, Operand, Parallel, Pou, Project,
+};
 
 /// An IEC identifier of one to eight characters, sometimes with a Chinese letter.
 pub fn ident() -> impl Strategy<Value = String> {
@@ -106,5 +109,166 @@ fn make_member_names_unique(pou: &mut Pou) {
         .chain(pou.actions.iter_mut().map(|action| &mut action.name));
     for (index, name) in names.enumerate() {
         *name = format!("{name}_{index}");
+    }
+}
+
+/// A list of up to three LD/FBD networks whose element ids are unique in the body, as a
+/// loaded body's are.
+pub fn networks() -> impl Strategy<Value = Vec<Network>> {
+    proptest::collection::vec(network(), 0..3).prop_map(|mut networks| {
+        let mut next = 1u32;
+        for network in &mut networks {
+            renumber_chain(&mut network.rung, &mut next);
+            renumber_outputs(&mut network.outputs, &mut next);
+        }
+        networks
+    })
+}
+
+/// One network with nested parallel branches, boxes and output branches.
+fn network() -> impl Strategy<Value = Network> {
+    (
+        text(),
+        text(),
+        prop_oneof![Just(String::new()), ident()],
+        chain(),
+        outputs(),
+    )
+        .prop_map(|(title, comment, label, rung, outputs)| Network {
+            title,
+            comment,
+            label,
+            rung,
+            outputs,
+        })
+}
+
+/// A chain of operands, parallel groups and boxes, nested at most three levels deep.
+fn chain() -> impl Strategy<Value = Vec<FlowNode>> {
+    let operand = (text(), any::<bool>(), any::<Edge>()).prop_map(|(text, negated, edge)| {
+        FlowNode::Operand(Operand {
+            id: ElementId(0),
+            text,
+            negated,
+            edge,
+        })
+    });
+    let leaf = proptest::collection::vec(operand, 0..3);
+    leaf.prop_recursive(3, 16, 3, |inner| {
+        let parallel = proptest::collection::vec(inner.clone(), 0..3).prop_map(|branches| {
+            FlowNode::Parallel(Parallel {
+                id: ElementId(0),
+                branches: branches.into_iter().map(|rung| Branch { rung }).collect(),
+            })
+        });
+        let input = (ident(), any::<bool>(), any::<Edge>(), inner.clone()).prop_map(
+            |(pin, negated, edge, source)| BlockInput {
+                pin,
+                negated,
+                edge,
+                source,
+            },
+        );
+        let output = (
+            ident(),
+            any::<bool>(),
+            prop_oneof![Just(String::new()), ident()],
+        )
+            .prop_map(|(pin, negated, assign)| BlockOutput {
+                pin,
+                negated,
+                assign,
+            });
+        let block = (
+            ident(),
+            prop_oneof![Just(String::new()), ident()],
+            proptest::collection::vec(input, 0..3),
+            proptest::collection::vec(output, 0..3),
+        )
+            .prop_map(|(type_name, instance, inputs, outputs)| {
+                FlowNode::Block(BlockCall {
+                    id: ElementId(0),
+                    type_name,
+                    instance,
+                    inputs,
+                    outputs,
+                })
+            });
+        let element = prop_oneof![parallel, block];
+        (inner, proptest::collection::vec(element, 0..3)).prop_map(|(mut operands, elements)| {
+            operands.extend(elements);
+            operands
+        })
+    })
+}
+
+/// Coils, jumps, returns and output branches.
+fn outputs() -> impl Strategy<Value = Vec<NetworkOutput>> {
+    let leaf = prop_oneof![
+        (ident(), any::<CoilKind>()).prop_map(|(variable, kind)| NetworkOutput::Coil(Coil {
+            id: ElementId(0),
+            variable,
+            kind,
+        })),
+        ident().prop_map(|label| NetworkOutput::Jump {
+            id: ElementId(0),
+            label,
+        }),
+        Just(NetworkOutput::Return { id: ElementId(0) }),
+    ];
+    let leaves = proptest::collection::vec(leaf, 0..3);
+    leaves.prop_recursive(2, 8, 3, |inner| {
+        proptest::collection::vec(
+            (chain(), inner).prop_map(|(rung, outputs)| NetworkOutput::Branch {
+                id: ElementId(0),
+                rung,
+                outputs,
+            }),
+            0..3,
+        )
+    })
+}
+
+/// Gives every element of a chain the next free id.
+fn renumber_chain(chain: &mut [FlowNode], next: &mut u32) {
+    for node in chain {
+        let id = ElementId(*next);
+        *next += 1;
+        match node {
+            FlowNode::Operand(operand) => operand.id = id,
+            FlowNode::Parallel(parallel) => {
+                parallel.id = id;
+                for branch in &mut parallel.branches {
+                    renumber_chain(&mut branch.rung, next);
+                }
+            }
+            FlowNode::Block(block) => {
+                block.id = id;
+                for input in &mut block.inputs {
+                    renumber_chain(&mut input.source, next);
+                }
+            }
+        }
+    }
+}
+
+/// Gives every output, and everything in its branches, the next free id.
+fn renumber_outputs(outputs: &mut [NetworkOutput], next: &mut u32) {
+    for output in outputs {
+        let id = ElementId(*next);
+        *next += 1;
+        match output {
+            NetworkOutput::Coil(coil) => coil.id = id,
+            NetworkOutput::Jump { id: slot, .. } | NetworkOutput::Return { id: slot } => *slot = id,
+            NetworkOutput::Branch {
+                id: slot,
+                rung,
+                outputs,
+            } => {
+                *slot = id;
+                renumber_chain(rung, next);
+                renumber_outputs(outputs, next);
+            }
+        }
     }
 }

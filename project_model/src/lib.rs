@@ -12,6 +12,7 @@
 mod application;
 mod axis;
 mod cam;
+mod chart;
 mod data_type;
 mod declaration_text;
 mod declarations_edit;
@@ -42,6 +43,10 @@ pub use cam::{
     CamCompileFormat, CamContinuity, CamKeyPoint, CamPeriod, CamProfile, CamRange, CamSegment,
     CamTable, CamTablePoint, MotionLaw, PointInterpolation, Tappet, TappetAction, TappetTrack,
 };
+pub use chart::{
+    ActionAssociation, ActionQualifier, BranchKind, Chart, ChartElement, ChartElementKind,
+    Connection, PinRef,
+};
 pub use data_type::{DataType, EnumValue, StructMember, TypeDefinition};
 pub use declarations_edit::{
     DeclarationsChange, TypedDeclarations, TypedHeader, gvl_declarations_change,
@@ -64,8 +69,8 @@ pub use io_area::{IoArea, IoDirection};
 pub use list_edit::ListEdit;
 pub use modbus_device::{ModbusBinding, ModbusDataType, ModbusDevice, ModbusTable, WordOrder};
 pub use network::{
-    ActionAssociation, ActionQualifier, BranchKind, CoilKind, Connection, Edge, Element, ElementId,
-    ElementKind, Network, PinRef,
+    BlockCall, BlockInput, BlockOutput, Branch, Coil, CoilKind, EN_PIN, ENO_PIN, Edge, ElementId,
+    FlowNode, Network, NetworkOutput, Operand, Parallel,
 };
 pub use pou::{
     AccessSpecifier, Body, Language, Method, Pou, PouAction, PouKind, Property, PropertyAccessor,

@@ -2,7 +2,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::{Network, Variable};
+use crate::{Chart, Network, Variable};
 
 /// A program organisation unit.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -122,25 +122,25 @@ pub enum Body {
     Ld {
         /// The networks in order.
         #[serde(default, rename = "network", skip_serializing_if = "Vec::is_empty")]
-        #[cfg_attr(feature = "proptest", proptest(strategy = "crate::arb::small_vec()"))]
+        #[cfg_attr(feature = "proptest", proptest(strategy = "crate::arb::networks()"))]
         networks: Vec<Network>,
     },
     /// Function Block Diagram: networks.
     Fbd {
         /// The networks in order.
         #[serde(default, rename = "network", skip_serializing_if = "Vec::is_empty")]
-        #[cfg_attr(feature = "proptest", proptest(strategy = "crate::arb::small_vec()"))]
+        #[cfg_attr(feature = "proptest", proptest(strategy = "crate::arb::networks()"))]
         networks: Vec<Network>,
     },
     /// Continuous Function Chart: one free-form network.
     Cfc {
         /// The chart.
-        chart: Network,
+        chart: Chart,
     },
     /// Sequential Function Chart: one chart of steps and transitions.
     Sfc {
         /// The chart.
-        chart: Network,
+        chart: Chart,
     },
 }
 
