@@ -26,6 +26,7 @@ mod io_area;
 mod list_edit;
 mod modbus_device;
 mod network;
+mod network_walk;
 mod pou;
 mod project;
 mod task;
@@ -72,6 +73,7 @@ pub use network::{
     BlockCall, BlockInput, BlockOutput, Branch, Coil, CoilKind, EN_PIN, ENO_PIN, Edge, ElementId,
     FlowNode, Network, NetworkOutput, Operand, Parallel,
 };
+pub use network_walk::{ElementRef, max_element_id, walk_chain, walk_outputs};
 pub use pou::{
     AccessSpecifier, Body, Language, Method, Pou, PouAction, PouKind, Property, PropertyAccessor,
 };
