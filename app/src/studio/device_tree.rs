@@ -5,14 +5,15 @@ use std::collections::HashSet;
 
 use egui::collapsing_header::CollapsingState;
 use egui::{Color32, Key, Modifiers, RichText, Ui};
-use project_model::{Folder, IoDirection, Node, Project, TaskKind};
+use project_model::{Folder, IoDirection, Node, Object, Project, TaskKind};
 
 use super::command::{Command, Commands};
 use super::i18n::{Language, Text};
+use super::reveal::Reveal;
 use super::theme::{StudioColors, colors};
 use super::tree_actions::{
-    DialogOutcome, DropPlace, ListKind, NewObject, TreeAction, TreeDialog, TreeEditState, accepts,
-    place_at, plan, rename_scope,
+    BodyLanguage, DialogOutcome, DropPlace, ListKind, MemberDialog, MemberKind, NewObject,
+    TreeAction, TreeDialog, TreeEditState, accepts, place_at, plan, rename_scope,
 };
 use super::tree_node::{TreeNode, object_tag};
 use super::view::StudioView;
@@ -61,7 +62,17 @@ pub(crate) fn devices_pane_ui(
         .dirty
         .get(project, session.history.revision(), &session.saved);
     let dialog_open = state.dialog.is_some();
-    let mut response = device_tree_ui(ui, project, view.selection, language, dirty, !dialog_open);
+    let mut response = device_tree_ui(
+        ui,
+        TreeContext {
+            project,
+            selection: view.selection,
+            language,
+            dirty,
+            body_language: state.body_language,
+        },
+        !dialog_open,
+    );
     if let Some(dialog) = response.dialog.take() {
         state.dialog = Some(dialog);
     }
@@ -71,6 +82,9 @@ pub(crate) fn devices_pane_ui(
             DialogOutcome::Cancelled => state.dialog = None,
             DialogOutcome::Confirmed(action) => {
                 state.dialog = None;
+                if let Some(chosen) = action.body_language() {
+                    state.body_language = chosen;
+                }
                 response.actions.push(action);
             }
         }
@@ -99,8 +113,12 @@ pub(crate) fn devices_pane_ui(
                 if let Some(node) = plan.select {
                     commands.push(Command::Select(Some(node)));
                 }
-                if let Some(node) = plan.open {
-                    commands.push(Command::Open(node));
+                match (plan.open, plan.part) {
+                    (Some(node), Some(part)) => {
+                        commands.push(Command::Reveal(node, Reveal::Body(part, 0..0)));
+                    }
+                    (Some(node), None) => commands.push(Command::Open(node)),
+                    (None, _) => {}
                 }
             }
             Ok(None) => {}
@@ -109,21 +127,37 @@ pub(crate) fn devices_pane_ui(
     }
 }
 
-/// Draws the device tree of `project` and reports what the user did; it never changes the
-/// project. `dirty` nodes get a `*` after their name; `keys` lets the Delete key act.
-pub fn device_tree_ui(
-    ui: &mut Ui,
-    project: &Project,
-    selection: Option<&TreeNode>,
-    language: Language,
-    dirty: &HashSet<TreeNode>,
-    keys: bool,
-) -> TreeResponse {
+/// What the device tree is drawn from.
+#[derive(Clone, Copy)]
+pub struct TreeContext<'a> {
+    /// The project shown.
+    pub project: &'a Project,
+    /// The selected node.
+    pub selection: Option<&'a TreeNode>,
+    /// The interface language.
+    pub language: Language,
+    /// The nodes that differ from the saved project; they get a `*` after their name.
+    pub dirty: &'a HashSet<TreeNode>,
+    /// The implementation language the add dialogs propose.
+    pub body_language: BodyLanguage,
+}
+
+/// Draws the device tree and reports what the user did; it never changes the project. `keys`
+/// lets the Delete key act.
+pub fn device_tree_ui(ui: &mut Ui, context: TreeContext<'_>, keys: bool) -> TreeResponse {
+    let TreeContext {
+        project,
+        selection,
+        language,
+        dirty,
+        body_language,
+    } = context;
     let mut tree = TreeUi {
         project,
         selection,
         language,
         dirty,
+        body_language,
         row_focused: false,
         response: TreeResponse::default(),
     };
@@ -178,6 +212,8 @@ struct TreeUi<'a> {
     selection: Option<&'a TreeNode>,
     language: Language,
     dirty: &'a HashSet<TreeNode>,
+    /// The implementation language the add dialogs propose.
+    body_language: BodyLanguage,
     /// Whether a row had the keyboard focus this frame.
     row_focused: bool,
     response: TreeResponse,
@@ -298,8 +334,12 @@ impl TreeUi<'_> {
             _ => None,
         };
         if let Some(folder) = folder {
-            if item(ui, Text::AddPou) {
-                self.response.dialog = Some(TreeDialog::new_pou(self.project, folder.clone()));
+            if item(ui, Text::AddPouMenu) {
+                self.response.dialog = Some(TreeDialog::new_pou(
+                    self.project,
+                    folder.clone(),
+                    self.body_language,
+                ));
             }
             for (text, kind) in [
                 (Text::AddGvl, NewObject::Gvl),
@@ -317,6 +357,20 @@ impl TreeUi<'_> {
             }
             if item(ui, Text::AddFolder) {
                 self.response.actions.push(TreeAction::AddFolder { folder });
+            }
+        }
+        if let TreeNode::Object(name) = node
+            && let Some(Object::Pou(pou)) = self.project.application.object(name)
+        {
+            for kind in [MemberKind::Method, MemberKind::Action, MemberKind::Property] {
+                if kind.allowed_in(pou.kind) && item(ui, kind.menu_text()) {
+                    self.response.dialog = Some(TreeDialog::NewMember(MemberDialog::new(
+                        self.project,
+                        &pou.name,
+                        kind,
+                        self.body_language,
+                    )));
+                }
             }
         }
         let list = match node {

@@ -19,3 +19,4 @@ mod support;
 mod target_lost;
 mod trace_config;
 mod tree;
+mod tree_languages;

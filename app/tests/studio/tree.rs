@@ -9,13 +9,13 @@ use egui_kittest::kittest::{NodeT as _, Queryable as _};
 use project_model::{Object, PouKind, Project, TaskKind};
 
 /// A copy of the example project in a temporary folder, so saving cannot touch the original.
-fn example_copy() -> tempfile::TempDir {
+pub(super) fn example_copy() -> tempfile::TempDir {
     let dir = tempfile::tempdir().unwrap();
     assets::copy_example_project(dir.path()).unwrap();
     dir
 }
 
-fn studio(project: &Path) -> Harness<'static, StudioApp> {
+pub(super) fn studio(project: &Path) -> Harness<'static, StudioApp> {
     let app = StudioApp::new(Settings::default(), Some(project.to_owned()));
     let mut harness = Harness::builder()
         .with_size([1280.0, 800.0])
@@ -24,17 +24,17 @@ fn studio(project: &Path) -> Harness<'static, StudioApp> {
     harness
 }
 
-fn project<'h>(harness: &'h Harness<'_, StudioApp>) -> &'h Project {
+pub(super) fn project<'h>(harness: &'h Harness<'_, StudioApp>) -> &'h Project {
     &harness.state().session().unwrap().project
 }
 
-fn undo_label(harness: &Harness<'_, StudioApp>) -> Option<String> {
+pub(super) fn undo_label(harness: &Harness<'_, StudioApp>) -> Option<String> {
     let session = harness.state().session().unwrap();
     session.history.undo_label().map(str::to_owned)
 }
 
 /// Right-clicks the tree row labelled `row` and chooses `item` from its context menu.
-fn menu(harness: &mut Harness<'_, StudioApp>, row: &str, item: &str) {
+pub(super) fn menu(harness: &mut Harness<'_, StudioApp>, row: &str, item: &str) {
     // Rows below the fold are scrolled into view first, as a user would.
     harness.get_by_label(row).scroll_to_me();
     harness.run();
@@ -45,7 +45,7 @@ fn menu(harness: &mut Harness<'_, StudioApp>, row: &str, item: &str) {
 }
 
 /// Replaces the text of the field labelled `label` with `text`.
-fn set_text(harness: &mut Harness<'_, StudioApp>, label: &str, text: &str) {
+pub(super) fn set_text(harness: &mut Harness<'_, StudioApp>, label: &str, text: &str) {
     harness.get_by_label(label).click();
     harness.run();
     harness.key_press_modifiers(Modifiers::COMMAND, Key::A);
@@ -54,13 +54,13 @@ fn set_text(harness: &mut Harness<'_, StudioApp>, label: &str, text: &str) {
 }
 
 /// Types `text` into the field labelled `label` and commits it with Enter.
-fn enter_text(harness: &mut Harness<'_, StudioApp>, label: &str, text: &str) {
+pub(super) fn enter_text(harness: &mut Harness<'_, StudioApp>, label: &str, text: &str) {
     set_text(harness, label, text);
     harness.key_press(Key::Enter);
     harness.run();
 }
 
-fn shortcut(harness: &mut Harness<'_, StudioApp>, key: Key) {
+pub(super) fn shortcut(harness: &mut Harness<'_, StudioApp>, key: Key) {
     harness.key_press_modifiers(Modifiers::COMMAND, key);
     harness.run();
 }
@@ -69,7 +69,7 @@ fn shortcut(harness: &mut Harness<'_, StudioApp>, key: Key) {
 fn a_pou_added_from_the_context_menu_opens_and_undo_and_redo_take_it_away_and_back() {
     let dir = example_copy();
     let mut harness = studio(dir.path());
-    menu(&mut harness, "Application", "Add POU");
+    menu(&mut harness, "Application", "Add POU…");
     harness.get_by_label("Function block").click();
     harness.run();
     enter_text(&mut harness, "Name", "FB_Drive");
@@ -97,7 +97,7 @@ fn a_pou_added_from_the_context_menu_opens_and_undo_and_redo_take_it_away_and_ba
 fn a_function_gets_its_return_type_from_the_dialog() {
     let dir = example_copy();
     let mut harness = studio(dir.path());
-    menu(&mut harness, "Motion", "Add POU");
+    menu(&mut harness, "Motion", "Add POU…");
     harness.get_by_label("Function").click();
     harness.run();
     set_text(&mut harness, "Name", "Scale");
@@ -428,7 +428,7 @@ fn the_tree_menus_dialogs_and_task_editor_speak_chinese_when_chosen() {
         .with_size([1280.0, 800.0])
         .build_ui_state(|ui, app: &mut StudioApp| app.ui(ui), app);
     harness.run();
-    menu(&mut harness, "应用", "添加 POU");
+    menu(&mut harness, "应用", "添加 POU…");
     assert!(harness.query_by_label("功能块").is_some());
     harness.get_by_label("取消").click();
     harness.run();

@@ -44,6 +44,8 @@ pub enum RefusalText {
     RefuseEmptyName,
     RefuseKeyword,
     RefuseNoReturnType,
+    RefuseNoPropertyType,
+    RefuseNoMembers,
     TimeEmpty,
     TimeTooLong,
     TimeNotWholeMicros,
@@ -172,6 +174,14 @@ impl RefusalText {
             Self::RefuseNoReturnType => (
                 "a function needs a return type, such as BOOL or INT",
                 "函数需要返回类型，例如 BOOL 或 INT",
+            ),
+            Self::RefuseNoPropertyType => (
+                "a property needs a type, such as BOOL or INT",
+                "属性需要类型，例如 BOOL 或 INT",
+            ),
+            Self::RefuseNoMembers => (
+                "'{pou}' cannot have methods, actions or properties: only programs and function blocks can",
+                "“{pou}”不能有方法、动作或属性：只有程序和功能块可以",
             ),
             Self::TimeEmpty => (
                 "enter a time such as T#10ms, or a number of microseconds",

@@ -12,7 +12,7 @@ use crate::studio::view::StudioView;
 use super::body::body_ui;
 use super::declarations::declarations_ui;
 use super::documents::TextDocuments;
-use super::part::{Part, Shown, part_of};
+use super::part::{Part, Shown, body_of, part_of};
 
 /// Draws a POU document (graphical bodies as their data until their editors come). Returns
 /// `false` when `name` is not a POU.
@@ -31,6 +31,11 @@ pub(crate) fn pou_document_ui(
     };
     let language = view.language;
     let mut part = texts.parts.get(name).cloned().unwrap_or_default();
+    // A part that no longer exists (its addition was undone, or it was renamed in the text)
+    // gives way to the POU's own implementation rather than an empty view.
+    if body_of(pou, &part).is_none() {
+        part = Part::Main;
+    }
 
     // A pending reveal for this document picks its part first.
     let node = TreeNode::Object(name.to_owned());

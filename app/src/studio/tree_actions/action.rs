@@ -2,7 +2,9 @@
 
 use project_model::PouKind;
 
+use super::body_language::BodyLanguage;
 use super::lists::ListKind;
+use super::members::NewMember;
 use super::moves::DropPlace;
 use super::names::NameScope;
 use super::new_objects::NewObject;
@@ -11,7 +13,7 @@ use crate::studio::tree_node::TreeNode;
 /// A change of the device tree the user asked for.
 #[derive(Clone, Debug, PartialEq)]
 pub enum TreeAction {
-    /// Adds a POU with an empty ST body to `folder`.
+    /// Adds a POU with an empty body to `folder`.
     AddPou {
         /// The folder's path (empty for the application).
         folder: Vec<String>,
@@ -21,6 +23,15 @@ pub enum TreeAction {
         name: String,
         /// A function's return type.
         return_type: Option<String>,
+        /// The language of its body.
+        language: BodyLanguage,
+    },
+    /// Adds a method, action or property to a program or function block.
+    AddMember {
+        /// The POU's name.
+        pou: String,
+        /// What to add.
+        member: NewMember,
     },
     /// Adds an object with a fresh default name to `folder`.
     AddObject {
@@ -56,6 +67,18 @@ pub enum TreeAction {
         /// Where, relative to the target.
         place: DropPlace,
     },
+}
+
+impl TreeAction {
+    /// The implementation language the action creates a body in, if it creates one; the next
+    /// add dialog proposes it.
+    pub fn body_language(&self) -> Option<BodyLanguage> {
+        match self {
+            Self::AddPou { language, .. } => Some(*language),
+            Self::AddMember { member, .. } => Some(member.language),
+            _ => None,
+        }
+    }
 }
 
 /// The name scope a node's name lives in, and its current name; `None` for nodes that cannot

@@ -1,12 +1,16 @@
-//! The small dialogs of the device tree: the name (and kind) of a new POU, and renaming.
+//! The small dialogs of the device tree: the name, kind and language of a new POU or member,
+//! and renaming.
 //!
 //! Names are checked as they are typed; the reason a name is refused stays on screen and the
 //! dialog stays open until the name is acceptable or the user cancels.
 
-use egui::{Key, RichText, Ui};
+use egui::{RichText, Ui};
 use project_model::{PouKind, Project};
 
 use super::action::{TreeAction, rename_scope};
+use super::body_language::BodyLanguage;
+use super::dialog_fields::{body_language_ui, text_field};
+use super::member_dialog::MemberDialog;
 use super::names::{NameScope, name_problem, unique_name};
 use super::refusal::Refusal;
 use crate::studio::i18n::{Language, Text};
@@ -25,9 +29,13 @@ pub enum TreeDialog {
         name: String,
         /// The return type as typed (used for functions only).
         return_type: String,
+        /// The implementation language.
+        language: BodyLanguage,
         /// Whether the name field was given the keyboard focus yet.
         focused: bool,
     },
+    /// Asks the name, type and language of a new method, action or property.
+    NewMember(MemberDialog),
     /// Asks a node's new name.
     Rename {
         /// The node.
@@ -51,8 +59,8 @@ pub enum DialogOutcome {
 }
 
 impl TreeDialog {
-    /// The dialog for a new POU in `folder`, proposing a fresh name.
-    pub fn new_pou(project: &Project, folder: Vec<String>) -> Self {
+    /// The dialog for a new POU in `folder`, proposing a fresh name and `language`.
+    pub fn new_pou(project: &Project, folder: Vec<String>, language: BodyLanguage) -> Self {
         let name = unique_name("POU", |name| {
             NameScope::Object.is_taken(project, name, None)
         });
@@ -61,6 +69,7 @@ impl TreeDialog {
             kind: PouKind::Program,
             name,
             return_type: "BOOL".to_owned(),
+            language,
             focused: false,
         }
     }
@@ -88,6 +97,7 @@ impl TreeDialog {
                 (*kind == PouKind::Function && return_type.trim().is_empty())
                     .then_some(Refusal::NoReturnType)
             }),
+            Self::NewMember(dialog) => dialog.problem(project),
             Self::Rename { node, name, .. } => {
                 let (scope, old) = rename_scope(node)?;
                 name_problem(project, scope, name.trim(), Some(old))
@@ -103,13 +113,16 @@ impl TreeDialog {
                 kind,
                 name,
                 return_type,
+                language,
                 ..
             } => TreeAction::AddPou {
                 folder: folder.clone(),
                 kind: *kind,
                 name: name.trim().to_owned(),
                 return_type: Some(return_type.trim().to_owned()),
+                language: *language,
             },
+            Self::NewMember(dialog) => dialog.action(),
             Self::Rename { node, name, .. } => TreeAction::Rename {
                 node: node.clone(),
                 name: name.trim().to_owned(),
@@ -160,6 +173,7 @@ impl TreeDialog {
     fn refocus(&mut self) {
         match self {
             Self::NewPou { focused, .. } | Self::Rename { focused, .. } => *focused = false,
+            Self::NewMember(dialog) => dialog.focused = false,
         }
     }
 
@@ -171,6 +185,7 @@ impl TreeDialog {
                 kind,
                 name,
                 return_type,
+                language: body_language,
                 focused,
                 ..
             } => {
@@ -194,7 +209,9 @@ impl TreeDialog {
                         &mut already,
                     );
                 }
+                body_language_ui(ui, body_language, language);
             }
+            Self::NewMember(dialog) => entered |= dialog.fields_ui(ui, language),
             Self::Rename { name, focused, .. } => {
                 ui.heading(Text::Rename.get(language));
                 entered |= text_field(ui, Text::Name.get(language), name, focused);
@@ -202,21 +219,4 @@ impl TreeDialog {
         }
         entered
     }
-}
-
-/// A labelled single-line field; true when Enter was pressed in it. The first field of a
-/// dialog takes the keyboard focus once, so the user can type right away.
-fn text_field(ui: &mut Ui, label: &str, text: &mut String, focused: &mut bool) -> bool {
-    ui.horizontal(|ui| {
-        let label = ui.label(label);
-        let response = ui
-            .add(egui::TextEdit::singleline(text).desired_width(220.0))
-            .labelled_by(label.id);
-        if !*focused {
-            response.request_focus();
-            *focused = true;
-        }
-        response.lost_focus() && ui.input(|input| input.key_pressed(Key::Enter))
-    })
-    .inner
 }

@@ -5,9 +5,13 @@
 //! frame as one undo step, as every other view does.
 
 mod action;
+mod body_language;
 mod dialog;
+mod dialog_fields;
 mod dirty;
 mod lists;
+mod member_dialog;
+mod members;
 mod moves;
 mod names;
 mod new_objects;
@@ -19,15 +23,19 @@ mod tests;
 use project_model::{Edit, EditError, Folder, Node, Object, PouKind, Project, TreeEdit};
 
 pub use action::{TreeAction, rename_scope};
+pub use body_language::BodyLanguage;
 pub use dialog::{DialogOutcome, TreeDialog};
 pub use dirty::DirtyMarkers;
 pub use lists::ListKind;
+pub use member_dialog::MemberDialog;
+pub use members::MemberKind;
 pub use moves::{DropPlace, accepts, place_at, plan_move};
 pub use names::{NameScope, name_problem, unique_name};
 pub use new_objects::NewObject;
 pub use plan_step::{Plan, locate};
 pub use refusal::Refusal;
 
+use self::members::plan_add_member;
 use self::new_objects::{new_pou, pou_kind_description};
 use super::i18n::{Language, Text};
 use super::tree_node::TreeNode;
@@ -39,6 +47,9 @@ pub struct TreeEditState {
     pub dialog: Option<TreeDialog>,
     /// Which nodes differ from the saved project.
     pub dirty: DirtyMarkers,
+    /// The implementation language chosen in the last confirmed add dialog, which the next one
+    /// proposes (as CODESYS does); kept for the session, not saved.
+    pub body_language: BodyLanguage,
 }
 
 /// The edits that carry out `action` on `project`, labelled in `language`: `Ok(None)` when it
@@ -54,11 +65,12 @@ pub fn plan(
             kind,
             name,
             return_type,
+            language: body_language,
         } => {
             if let Some(problem) = name_problem(project, NameScope::Object, name, None) {
                 return Err(problem);
             }
-            let pou = new_pou(name.clone(), *kind, return_type.clone());
+            let pou = new_pou(name.clone(), *kind, return_type.clone(), *body_language);
             Ok(Some(add_object(
                 project,
                 folder,
@@ -66,6 +78,9 @@ pub fn plan(
                 pou_kind_description(*kind).get(language),
                 language,
             )?))
+        }
+        TreeAction::AddMember { pou, member } => {
+            plan_add_member(project, pou, member, language).map(Some)
         }
         TreeAction::AddObject { folder, kind } => {
             let name = unique_name(kind.base_name(), |name| {
@@ -99,6 +114,7 @@ pub fn plan(
                 })],
                 open: None,
                 select: Some(TreeNode::Folder(path)),
+                part: None,
             }))
         }
         TreeAction::AddListEntry(kind) => {
@@ -111,6 +127,7 @@ pub fn plan(
                 edits: vec![edit],
                 open: Some(kind.entry(name)),
                 select: None,
+                part: None,
             }))
         }
         TreeAction::Rename { node, name } => plan_rename(project, node, name, language),
@@ -149,6 +166,7 @@ fn add_object(
         })],
         open: Some(TreeNode::Object(name)),
         select: None,
+        part: None,
     })
 }
 
@@ -182,6 +200,7 @@ fn plan_rename(
             edits: vec![edit],
             open: None,
             select: Some(kind.entry(name.to_owned())),
+            part: None,
         }));
     }
     let (folder, index) = locate(project, node).ok_or_else(|| missing(project, node))?;
@@ -208,6 +227,7 @@ fn plan_rename(
         edits,
         open: None,
         select: Some(select),
+        part: None,
     }))
 }
 
@@ -255,6 +275,7 @@ fn plan_duplicate(project: &Project, node: &TreeNode, language: Language) -> Res
             edits: vec![edit],
             open: None,
             select: Some(kind.entry(copy)),
+            part: None,
         });
     }
     let (folder, index) = locate(project, node).ok_or_else(|| missing(project, node))?;
@@ -303,6 +324,7 @@ fn plan_duplicate(project: &Project, node: &TreeNode, language: Language) -> Res
         })],
         open: None,
         select: Some(select),
+        part: None,
     })
 }
 
@@ -331,5 +353,6 @@ fn plan_delete(project: &Project, node: &TreeNode, language: Language) -> Result
         edits: vec![edit],
         open: None,
         select: None,
+        part: None,
     })
 }

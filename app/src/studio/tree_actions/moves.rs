@@ -125,6 +125,7 @@ pub fn plan_move(
         })],
         open: None,
         select: Some(moved),
+        part: None,
     }))
 }
 
@@ -158,5 +159,6 @@ fn plan_list_move(
         edits: vec![kind.moved(from, to)],
         open: None,
         select: Some(kind.entry(name.to_owned())),
+        part: None,
     })
 }

@@ -59,6 +59,15 @@ pub fn name_problem(
     name: &str,
     except: Option<&str>,
 ) -> Option<Refusal> {
+    identifier_problem(name).or_else(|| {
+        scope
+            .is_taken(project, name, except)
+            .then(|| EditError::DuplicateName(name.to_owned()).into())
+    })
+}
+
+/// Why `name` cannot name anything at all (empty, not an identifier, a keyword), or `None`.
+pub fn identifier_problem(name: &str) -> Option<Refusal> {
     if name.is_empty() {
         return Some(Refusal::EmptyName);
     }
@@ -67,9 +76,6 @@ pub fn name_problem(
     }
     if SyntaxKind::from_keyword(&name.to_uppercase()).is_some() {
         return Some(Refusal::Keyword(name.to_owned()));
-    }
-    if scope.is_taken(project, name, except) {
-        return Some(EditError::DuplicateName(name.to_owned()).into());
     }
     None
 }

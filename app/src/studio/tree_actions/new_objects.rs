@@ -1,11 +1,12 @@
 //! The content of nodes the user adds: empty objects and list entries with sensible settings.
 
 use project_model::{
-    Axis, AxisKind, AxisLimits, AxisScaling, Body, CamTable, DataType, GlobalVarList, IoArea,
+    Axis, AxisKind, AxisLimits, AxisScaling, CamTable, DataType, GlobalVarList, IoArea,
     IoDirection, ModbusDevice, Object, Pou, PouKind, Project, SoftwareLimits, Task, TaskKind,
     TraceConfig, TypeDefinition, WatchList, WordOrder,
 };
 
+use super::body_language::BodyLanguage;
 use crate::studio::i18n::Text;
 
 /// The kinds of application objects the tree can add without asking anything but a name.
@@ -78,8 +79,13 @@ impl NewObject {
     }
 }
 
-/// A POU with an empty Structured Text body.
-pub fn new_pou(name: String, kind: PouKind, return_type: Option<String>) -> Pou {
+/// A POU with an empty body in `language`.
+pub fn new_pou(
+    name: String,
+    kind: PouKind,
+    return_type: Option<String>,
+    language: BodyLanguage,
+) -> Pou {
     Pou {
         name,
         kind,
@@ -92,7 +98,7 @@ pub fn new_pou(name: String, kind: PouKind, return_type: Option<String>) -> Pou 
         implements: Vec::new(),
         comment: String::new(),
         variables: Vec::new(),
-        body: Body::st(""),
+        body: language.empty_body(),
         methods: Vec::new(),
         properties: Vec::new(),
         actions: Vec::new(),

@@ -1,6 +1,6 @@
 //! The edits that carry out a tree action, and where application nodes are.
 
-use project_model::{Edit, Node, Project};
+use project_model::{Edit, Node, Project, TextTarget};
 
 use crate::studio::tree_node::TreeNode;
 
@@ -15,6 +15,8 @@ pub struct Plan {
     pub open: Option<TreeNode>,
     /// A node to select once the edits are applied.
     pub select: Option<TreeNode>,
+    /// The part of the opened document to show (a new method's body, for instance).
+    pub part: Option<TextTarget>,
 }
 
 /// The folder path and index of an application node (object or folder).

@@ -17,6 +17,11 @@ pub enum Refusal {
     Keyword(String),
     /// A new function has no return type.
     NoReturnType,
+    /// A new property has no type.
+    NoPropertyType,
+    /// The POU (named here) is neither a program nor a function block, so it takes no
+    /// methods, actions or properties.
+    NoMembers(String),
 }
 
 impl Refusal {
@@ -27,6 +32,8 @@ impl Refusal {
             Self::EmptyName => RefusalText::RefuseEmptyName.get(language).to_owned(),
             Self::Keyword(name) => RefusalText::RefuseKeyword.fill(language, &[("name", name)]),
             Self::NoReturnType => RefusalText::RefuseNoReturnType.get(language).to_owned(),
+            Self::NoPropertyType => RefusalText::RefuseNoPropertyType.get(language).to_owned(),
+            Self::NoMembers(pou) => RefusalText::RefuseNoMembers.fill(language, &[("pou", pou)]),
         }
     }
 }

@@ -1,8 +1,9 @@
 //! Plans checked against the example project, by applying their edits.
 
-use project_model::{Edit, Object, Project, load_project};
+use project_model::{Body, Edit, Network, Object, PouKind, Project, TextTarget, load_project};
 
-use super::{DropPlace, ListKind, NewObject, TreeAction, plan};
+use super::members::NewMember;
+use super::{BodyLanguage, DropPlace, ListKind, MemberKind, NewObject, Refusal, TreeAction, plan};
 use crate::studio::i18n::Language;
 use crate::studio::tree_node::TreeNode;
 
@@ -129,4 +130,183 @@ fn new_objects_get_the_next_free_default_name() {
     }
     assert!(project.application.object("Watch").is_some());
     assert!(project.application.object("Watch_1").is_some());
+}
+
+fn pou<'p>(project: &'p Project, name: &str) -> &'p project_model::Pou {
+    match project.application.object(name) {
+        Some(Object::Pou(pou)) => pou,
+        other => panic!("{name} is not a POU: {other:?}"),
+    }
+}
+
+fn member(kind: MemberKind, name: &str, language: BodyLanguage, type_name: &str) -> NewMember {
+    NewMember {
+        kind,
+        name: name.to_owned(),
+        language,
+        type_name: type_name.to_owned(),
+    }
+}
+
+#[test]
+fn a_pou_added_in_ld_or_fbd_starts_with_one_empty_network_and_in_st_with_no_text() {
+    let mut project = example();
+    for (name, language) in [
+        ("PRG_Ladder", BodyLanguage::Ld),
+        ("FB_Blocks", BodyLanguage::Fbd),
+        ("PRG_Text", BodyLanguage::St),
+    ] {
+        apply(
+            &mut project,
+            TreeAction::AddPou {
+                folder: Vec::new(),
+                kind: PouKind::Program,
+                name: name.to_owned(),
+                return_type: None,
+                language,
+            },
+        );
+    }
+    let one_empty_network = [Network::default()];
+    assert!(matches!(
+        &pou(&project, "PRG_Ladder").body,
+        Body::Ld { networks } if networks == &one_empty_network
+    ));
+    assert!(matches!(
+        &pou(&project, "FB_Blocks").body,
+        Body::Fbd { networks } if networks == &one_empty_network
+    ));
+    assert_eq!(pou(&project, "PRG_Text").body, Body::st(""));
+}
+
+#[test]
+fn a_method_is_added_to_a_function_block_as_one_edit_that_undo_takes_back() {
+    let mut project = example();
+    let before = project.clone();
+    let action = TreeAction::AddMember {
+        pou: "FB_Conveyor".into(),
+        member: member(MemberKind::Method, "Jog", BodyLanguage::Ld, " REAL "),
+    };
+    let plan = plan(&project, &action, Language::English).unwrap().unwrap();
+    assert_eq!(plan.label, "Add method Jog to FB_Conveyor");
+    assert_eq!(plan.edits.len(), 1);
+    assert_eq!(plan.open, Some(TreeNode::Object("FB_Conveyor".into())));
+    assert_eq!(
+        plan.part,
+        Some(TextTarget::Method {
+            pou: "FB_Conveyor".into(),
+            method: "Jog".into()
+        })
+    );
+    let inverse = Edit::Group(plan.edits).apply(&mut project).unwrap();
+    let method = pou(&project, "FB_Conveyor").methods.last().unwrap();
+    assert_eq!(method.name, "Jog");
+    assert_eq!(method.return_type.as_deref(), Some("REAL"));
+    assert_eq!(
+        method.body,
+        Body::Ld {
+            networks: vec![Network::default()]
+        }
+    );
+    inverse.apply(&mut project).unwrap();
+    assert_eq!(project, before);
+}
+
+#[test]
+fn actions_and_properties_get_their_bodies_in_the_chosen_language() {
+    let mut project = example();
+    let label = apply(
+        &mut project,
+        TreeAction::AddMember {
+            pou: "Main".into(),
+            member: member(MemberKind::Action, "Clean", BodyLanguage::Fbd, "ignored"),
+        },
+    );
+    assert_eq!(label, "Add action Clean to Main");
+    apply(
+        &mut project,
+        TreeAction::AddMember {
+            pou: "FB_Conveyor".into(),
+            member: member(MemberKind::Property, "Speed", BodyLanguage::St, "LREAL"),
+        },
+    );
+    apply(
+        &mut project,
+        TreeAction::AddMember {
+            pou: "FB_Conveyor".into(),
+            member: member(MemberKind::Method, "Stop", BodyLanguage::St, ""),
+        },
+    );
+    let action = pou(&project, "Main").actions.last().unwrap();
+    assert_eq!(action.name, "Clean");
+    assert_eq!(action.body.language(), project_model::Language::Fbd);
+    let fb = pou(&project, "FB_Conveyor");
+    let property = fb.properties.last().unwrap();
+    assert_eq!(
+        (property.name.as_str(), property.ty.as_str()),
+        ("Speed", "LREAL")
+    );
+    for accessor in [&property.get, &property.set] {
+        assert_eq!(accessor.as_ref().map(|a| &a.body), Some(&Body::st("")));
+    }
+    // An empty return type makes a method that returns nothing.
+    assert_eq!(fb.methods.last().unwrap().return_type, None);
+}
+
+#[test]
+fn member_names_are_refused_when_they_clash_without_case_or_are_no_identifiers() {
+    let project = example();
+    let refusal = |name: &str| {
+        let action = TreeAction::AddMember {
+            pou: "FB_Conveyor".into(),
+            member: member(MemberKind::Action, name, BodyLanguage::St, ""),
+        };
+        plan(&project, &action, Language::English)
+            .err()
+            .map(|refusal| refusal.text(Language::English))
+    };
+    // `Reset` is a method and `xStart` a variable of FB_Conveyor.
+    assert_eq!(
+        refusal("RESET").as_deref(),
+        Some("the name 'RESET' is already used")
+    );
+    assert_eq!(
+        refusal("xstart").as_deref(),
+        Some("the name 'xstart' is already used")
+    );
+    assert!(refusal("2nd").is_some_and(|text| text.contains("not a valid name")));
+    assert!(refusal("while").is_some_and(|text| text.contains("keyword")));
+    assert_eq!(refusal("").as_deref(), Some("enter a name"));
+    assert_eq!(refusal("Jog"), None);
+}
+
+#[test]
+fn functions_take_no_members_and_a_property_needs_a_type() {
+    let mut project = example();
+    apply(
+        &mut project,
+        TreeAction::AddPou {
+            folder: Vec::new(),
+            kind: PouKind::Function,
+            name: "Scale".into(),
+            return_type: Some("REAL".into()),
+            language: BodyLanguage::St,
+        },
+    );
+    let in_function = TreeAction::AddMember {
+        pou: "Scale".into(),
+        member: member(MemberKind::Method, "Inner", BodyLanguage::St, ""),
+    };
+    assert_eq!(
+        plan(&project, &in_function, Language::English),
+        Err(Refusal::NoMembers("Scale".into()))
+    );
+    let untyped = TreeAction::AddMember {
+        pou: "FB_Conveyor".into(),
+        member: member(MemberKind::Property, "Speed", BodyLanguage::St, " "),
+    };
+    assert_eq!(
+        plan(&project, &untyped, Language::English),
+        Err(Refusal::NoPropertyType)
+    );
 }

@@ -1,0 +1,71 @@
+//! The implementation languages a new POU, method, action or property can be written in.
+
+use project_model::{Body, Network};
+
+use crate::studio::i18n::Text;
+
+/// An implementation language the add dialogs offer. CFC and SFC join when their editors do.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum BodyLanguage {
+    /// Structured Text.
+    #[default]
+    St,
+    /// Ladder Diagram.
+    Ld,
+    /// Function Block Diagram.
+    Fbd,
+}
+
+impl BodyLanguage {
+    /// The languages the dialogs offer, in the order they show them.
+    pub const OFFERED: [Self; 3] = [Self::St, Self::Ld, Self::Fbd];
+
+    /// The body a new POU or member starts with: no text for ST; for LD and FBD one empty
+    /// network (no title, comment, label, elements or outputs), as CODESYS creates them, so the
+    /// editor opens on a network the user can insert into right away.
+    pub fn empty_body(self) -> Body {
+        match self {
+            Self::St => Body::st(""),
+            Self::Ld => Body::Ld {
+                networks: vec![Network::default()],
+            },
+            Self::Fbd => Body::Fbd {
+                networks: vec![Network::default()],
+            },
+        }
+    }
+
+    /// The language's name in the dialogs.
+    pub fn text(self) -> Text {
+        match self {
+            Self::St => Text::LanguageSt,
+            Self::Ld => Text::LanguageLd,
+            Self::Fbd => Text::LanguageFbd,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use project_model::Language;
+
+    use super::*;
+
+    #[test]
+    fn graphical_bodies_start_with_one_empty_network_and_st_with_no_text() {
+        assert_eq!(BodyLanguage::St.empty_body(), Body::st(""));
+        for (language, model) in [
+            (BodyLanguage::Ld, Language::Ld),
+            (BodyLanguage::Fbd, Language::Fbd),
+        ] {
+            let body = language.empty_body();
+            assert_eq!(body.language(), model);
+            match &body {
+                Body::Ld { networks } | Body::Fbd { networks } => {
+                    assert_eq!(networks, &[Network::default()]);
+                }
+                other => panic!("{language:?} gave {other:?}"),
+            }
+        }
+    }
+}
