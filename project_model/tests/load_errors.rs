@@ -308,3 +308,103 @@ fn every_problem_is_reported_in_one_pass() {
         "unknown field `variabel`",
     );
 }
+
+/// An LD program whose second network reuses the id 1, added to the example's manifest.
+const LADDER_WITH_DUPLICATE_ID: &str = r#"kind = "program"
+
+[body]
+language = "ld"
+
+[[body.network]]
+rung = [{ type = "operand", id = 1, text = "start" }]
+output = [{ type = "coil", id = 2, variable = "run" }]
+
+[[body.network]]
+label = "Stop"
+rung = [{ type = "operand", id = 1, text = "stop", negated = true }]
+output = [{ type = "coil", id = 3, variable = "run", kind = "reset" }]
+"#;
+
+fn add_ladder(dir: &Path, text: &str) {
+    fs::write(dir.join("application/Ladder.pou.toml"), text).unwrap();
+    replace_in(
+        &dir.join("rivet.toml"),
+        "\"Main.pou.toml\",",
+        "\"Main.pou.toml\",\n    \"Ladder.pou.toml\",",
+    );
+}
+
+#[test]
+fn a_broken_ld_body_names_pou_network_and_element_and_the_rest_still_loads() {
+    let dir = example_copy();
+    add_ladder(dir.path(), LADDER_WITH_DUPLICATE_ID);
+    let error = load_fails(dir.path());
+    let shown = error.to_string();
+    let file = dir.path().join("application/Ladder.pou.toml");
+    assert_eq!(
+        shown,
+        format!(
+            "{}: error: POU 'Ladder', network 2 'Stop', element 1: two elements have the id 1; \
+             the other is in network 1",
+            file.display()
+        )
+    );
+    let partial = error.partial.expect("the rest of the project loads");
+    assert_eq!(partial.held_back.len(), 1);
+    assert_eq!(partial.held_back[0].entry, "Ladder.pou.toml");
+    assert!(partial.project.application.object("Ladder").is_none());
+    assert!(partial.project.application.object("Main").is_some());
+    assert!(partial.warnings.is_empty(), "{:?}", partial.warnings);
+    assert!(
+        !partial
+            .files
+            .contains(Path::new("application/Ladder.pou.toml"))
+    );
+}
+
+#[test]
+fn saving_a_partly_loaded_project_keeps_the_broken_file_and_its_entry() {
+    let dir = example_copy();
+    add_ladder(dir.path(), LADDER_WITH_DUPLICATE_ID);
+    let partial = *load_fails(dir.path()).partial.unwrap();
+    let mut project = partial.project.clone();
+    project.description = "edited while Ladder is broken".into();
+    let report = project_model::save_project_keeping(
+        &project,
+        dir.path(),
+        &partial.files,
+        &partial.held_back,
+    )
+    .unwrap();
+    assert_eq!(report.written, [PathBuf::from("rivet.toml")]);
+    assert!(report.removed.is_empty(), "{:?}", report.removed);
+    let file = dir.path().join("application/Ladder.pou.toml");
+    assert_eq!(fs::read_to_string(&file).unwrap(), LADDER_WITH_DUPLICATE_ID);
+    let again = load_fails(dir.path());
+    assert_eq!(again.problems.len(), 1, "{again}");
+    let again = again.partial.unwrap();
+    assert_eq!(again.project.description, "edited while Ladder is broken");
+    assert_eq!(again.held_back, partial.held_back);
+
+    let mut clash = project.clone();
+    let mut main = clash.application.object("Main").unwrap().clone();
+    main.set_name("Ladder".into());
+    clash
+        .application
+        .children
+        .push(project_model::Node::Object(main));
+    let refused =
+        project_model::save_project_keeping(&clash, dir.path(), &partial.files, &partial.held_back);
+    assert!(matches!(refused, Err(project_model::SaveError::Invalid(_))));
+}
+
+#[test]
+fn a_broken_manifest_gives_no_partial_project() {
+    let dir = example_copy();
+    replace_in(
+        &dir.path().join("rivet.toml"),
+        "\"Main.pou.toml\",",
+        "\"Main.pou.toml\",\n    \"Main.pou.toml\",",
+    );
+    assert!(load_fails(dir.path()).partial.is_none());
+}
