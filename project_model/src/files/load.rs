@@ -9,6 +9,7 @@ use super::held_back::HeldBackObject;
 use super::layout::{Entry, bodies_mut, body_slots, folder_dir, object_file, parse_entry};
 use super::manifest::{Manifest, VersionProbe};
 use super::problem::{LoadError, LoadProblem, Severity, line_of, toml_problem};
+use super::version1::{Version1Failure, pou_from_version1};
 use super::{APPLICATION_DIR, FORMAT_VERSION, MANIFEST_FILE_NAME};
 use crate::validate::{body_problems, member_problem};
 use crate::{Body, Folder, Node, Object, ObjectKind, Pou, Project, same_identifier};
@@ -42,6 +43,7 @@ pub fn load_project(dir: &Path) -> Result<LoadedProject, LoadError> {
         files: BTreeSet::new(),
         held_back: Vec::new(),
         object_errors: 0,
+        version: FORMAT_VERSION,
     };
     let project = loader.load();
     let errors = loader
@@ -99,6 +101,8 @@ struct Loader<'a> {
     /// How many of the errors belong to held-back objects; when they are all the errors,
     /// the rest of the project is sound.
     object_errors: usize,
+    /// The format version of the manifest, which decides how POU files are read.
+    version: u32,
 }
 
 impl Loader<'_> {
@@ -147,7 +151,10 @@ impl Loader<'_> {
         };
         let line = line_of(text, version.span().start);
         let found = *version.get_ref();
-        if found == i64::from(FORMAT_VERSION) {
+        if let Ok(known) = u32::try_from(found)
+            && (1..=FORMAT_VERSION).contains(&known)
+        {
+            self.version = known;
             return true;
         }
         let message = if found > i64::from(FORMAT_VERSION) {
@@ -157,7 +164,8 @@ impl Loader<'_> {
             )
         } else {
             format!(
-                "format_version {found} is not a Rivet project format; expected {FORMAT_VERSION}"
+                "format_version {found} is not a Rivet project format; expected 1 to \
+                 {FORMAT_VERSION}"
             )
         };
         self.problems
@@ -251,6 +259,9 @@ impl Loader<'_> {
         let file = object_file(folder, name, kind);
         let text = self.read_text(&file)?;
         let mut object = match kind {
+            ObjectKind::Pou if self.version == 1 => {
+                Object::Pou(self.parse_pou_version1(&file, name, &text)?)
+            }
             ObjectKind::Pou => Object::Pou(self.parse(&file, &text)?),
             ObjectKind::Gvl => Object::Gvl(self.parse(&file, &text)?),
             ObjectKind::DataType => Object::DataType(self.parse(&file, &text)?),
@@ -346,6 +357,25 @@ impl Loader<'_> {
                     Some(line),
                     format!("not UTF-8 text (invalid byte at offset {valid}); save it as UTF-8"),
                 ));
+                None
+            }
+        }
+    }
+
+    /// Reads a POU file of format version 1, converting its LD and FBD networks.
+    fn parse_pou_version1(&mut self, file: &Path, name: &str, text: &str) -> Option<Pou> {
+        match pou_from_version1(name, text) {
+            Ok(pou) => Some(pou),
+            Err(Version1Failure::Toml(error)) => {
+                self.problems
+                    .push(toml_problem(self.dir.join(file), text, &error));
+                None
+            }
+            Err(Version1Failure::Networks(messages)) => {
+                for message in messages {
+                    self.problems
+                        .push(LoadProblem::error(self.dir.join(file), None, message));
+                }
                 None
             }
         }
