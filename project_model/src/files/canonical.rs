@@ -108,13 +108,7 @@ fn must_expand(inline: &InlineTable) -> bool {
 fn format_tree(array: &mut Array, level: usize, always_expanded: bool) {
     for element in array.iter_mut() {
         match element {
-            Value::InlineTable(inline) => {
-                format_tree_element(inline, level, false);
-                let width = inline.to_string().len() + INDENT.len() * (level + 1);
-                if width > MAX_INLINE_WIDTH {
-                    format_tree_element(inline, level, true);
-                }
-            }
+            Value::InlineTable(inline) => format_tree_element(inline, level),
             other => format_contents(other),
         }
     }
@@ -134,17 +128,51 @@ fn format_tree(array: &mut Array, level: usize, always_expanded: bool) {
     }
 }
 
-/// Formats one element of a tree list, spreading its own lists when `spread` is set.
-fn format_tree_element(inline: &mut InlineTable, level: usize, spread: bool) {
-    for (_, child) in inline.iter_mut() {
-        match child {
-            Value::Array(list) if is_array_of_tables(list) => {
-                format_tree(list, level + 1, spread);
+/// Formats one element of a tree list at `level`: its own lists stay on its line while the
+/// line fits; otherwise they are spread one at a time, the longest first, until every line
+/// does.
+fn format_tree_element(inline: &mut InlineTable, level: usize) {
+    let mut spread: Vec<String> = Vec::new();
+    loop {
+        for (key, child) in inline.iter_mut() {
+            match child {
+                Value::Array(list) if is_array_of_tables(list) => {
+                    format_tree(list, level + 1, spread.iter().any(|name| name == key.get()));
+                }
+                other => format_contents(other),
             }
-            other => format_contents(other),
+        }
+        inline.fmt();
+        let text = inline.to_string();
+        let indent = INDENT.len() * (level + 1);
+        let widest = text
+            .lines()
+            .enumerate()
+            .map(|(index, line)| {
+                if index == 0 {
+                    line.len() + indent
+                } else {
+                    line.len()
+                }
+            })
+            .max()
+            .unwrap_or(0);
+        if widest <= MAX_INLINE_WIDTH {
+            return;
+        }
+        let longest = inline
+            .iter()
+            .filter(|(key, value)| {
+                value.as_array().is_some_and(is_array_of_tables)
+                    && !spread.iter().any(|name| name == key)
+            })
+            .max_by_key(|(_, value)| value.to_string().len())
+            .map(|(key, _)| key.to_owned());
+        match longest {
+            Some(key) => spread.push(key),
+            None => return,
         }
     }
-    inline.fmt();
 }
 
 /// One level of indentation in a spread list.

@@ -34,18 +34,13 @@ rung = [
     { type = "block", id = 5, type_name = "TON", instance = "t", input = [
         { pin = "IN" },
         { pin = "PT", source = [{ type = "operand", id = 6, text = "T#1s" }] },
-    ], output = [
-        { pin = "Q" },
-        { pin = "ET", assign = "elapsed" },
-    ] },
+    ], output = [{ pin = "Q" }, { pin = "ET", assign = "elapsed" }] },
 ]
 output = [
     { type = "coil", id = 7, variable = "q", kind = "set" },
     { type = "branch", id = 8, rung = [
         { type = "operand", id = 9, text = "e" },
-    ], output = [
-        { type = "return", id = 10 },
-    ] },
+    ], output = [{ type = "return", id = 10 }] },
 ]
 
 [[body.network]]
@@ -78,4 +73,40 @@ body = { language = "ld", network = [{ comment = "two\nlines", rung = [{ type = 
 "#;
     let saved = canonical(text);
     assert!(saved.contains("rung = [\n"), "{saved}");
+}
+
+/// The `toml` examples of section 4.1 of `docs/project-format.md`, without their comments.
+fn documented_networks() -> Vec<String> {
+    let document = include_str!("../../../docs/project-format.md");
+    let start = document
+        .find("### 4.1 LD and FBD networks")
+        .expect("section 4.1");
+    let section = &document[start..];
+    let end = section[4..]
+        .find("\n### ")
+        .map_or(section.len(), |end| end + 4);
+    section[..end]
+        .split("```toml\n")
+        .skip(1)
+        .filter_map(|block| block.split("```").next())
+        .map(|block| {
+            block
+                .lines()
+                .map(|line| match line.find("  # ") {
+                    Some(comment) => line[..comment].trim_end(),
+                    None => line,
+                })
+                .fold(String::new(), |text, line| text + line + "\n")
+        })
+        .collect()
+}
+
+#[test]
+fn the_documented_networks_are_canonical() {
+    let examples = documented_networks();
+    assert_eq!(examples.len(), 2);
+    for example in examples {
+        let text = format!("kind = \"program\"\n\n[body]\nlanguage = \"ld\"\n\n{example}");
+        assert_eq!(canonical(&text), text);
+    }
 }
