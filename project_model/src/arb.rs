@@ -115,8 +115,14 @@ fn make_member_names_unique(pou: &mut Pou) {
 /// A list of up to three LD/FBD networks that keep the rules of `network_check`, as a loaded
 /// body's do: unique ids and labels, distinct pins, and no first input driven twice.
 pub fn networks() -> impl Strategy<Value = Vec<Network>> {
-    proptest::collection::vec(network(), 0..3).prop_map(|mut networks| {
-        let mut next = 1u32;
+    networks_from(1)
+}
+
+/// Like [`networks`], with element ids counted from `first_id`: networks to insert into a body
+/// whose ids are all below it.
+pub fn networks_from(first_id: u32) -> impl Strategy<Value = Vec<Network>> {
+    proptest::collection::vec(network(), 0..3).prop_map(move |mut networks| {
+        let mut next = first_id;
         for (index, network) in networks.iter_mut().enumerate() {
             if !network.label.is_empty() {
                 network.label = format!("{}_{index}", network.label);

@@ -27,6 +27,7 @@ mod list_edit;
 mod modbus_device;
 mod network;
 mod network_check;
+mod network_splice;
 mod network_walk;
 mod pou;
 mod project;
