@@ -13,7 +13,8 @@ use std::collections::{BTreeSet, HashMap, HashSet};
 
 use crate::{
     BlockCall, BlockInput, BlockOutput, Branch, Chart, ChartElement, ChartElementKind, Coil,
-    CoilKind, ElementId, FlowNode, Network, NetworkOutput, NetworkProblem, Operand, Parallel,
+    CoilKind, ElementId, FlowNode, MAX_NETWORK_NESTING, Network, NetworkOutput, NetworkProblem,
+    Operand, Parallel,
 };
 
 /// Converts the version 1 networks of one body; new elements (parallel groups, output
@@ -93,6 +94,9 @@ struct Converter<'a> {
     /// The points whose predecessor is being computed, to find cycles.
     in_progress: HashSet<Point>,
     predecessors: HashMap<Point, Option<Point>>,
+    /// How deeply chains and parallel groups are nested where the conversion is, so that no
+    /// file can exhaust the stack.
+    depth: usize,
 }
 
 impl<'a> Converter<'a> {
@@ -106,6 +110,7 @@ impl<'a> Converter<'a> {
             assigns: HashMap::new(),
             in_progress: HashSet::new(),
             predecessors: HashMap::new(),
+            depth: 0,
         };
         for element in &chart.elements {
             if converter.elements.insert(element.id, element).is_some() {
@@ -380,10 +385,12 @@ impl<'a> Converter<'a> {
             [Driver::Out(id)] => Some(self.flow_input_point(*id)?),
             [Driver::Pin(id, pin)] => return pin_error(*id, pin),
             drivers => {
+                self.enter(point)?;
                 let mut spines = Vec::new();
                 for driver in drivers {
                     spines.push(self.spine(&vec![driver.clone()])?);
                 }
+                self.depth -= 1;
                 let spines: Vec<&[Point]> = spines.iter().map(Vec::as_slice).collect();
                 Some(deepest_common_point(&spines))
             }
@@ -409,6 +416,7 @@ impl<'a> Converter<'a> {
 
     /// The chain from point `from` to point `to`; `from` must be on `to`'s spine.
     fn chain(&mut self, to: &Point, from: &Point) -> Result<Vec<FlowNode>, Failure> {
+        self.enter(to)?;
         let mut reversed = Vec::new();
         let mut current = to.clone();
         while &current != from {
@@ -439,7 +447,20 @@ impl<'a> Converter<'a> {
             current = previous;
         }
         reversed.reverse();
+        self.depth -= 1;
         Ok(reversed)
+    }
+
+    /// Goes one level deeper into nested chains, failing past the nesting version 2 allows.
+    fn enter(&mut self, point: &Point) -> Result<(), Failure> {
+        self.depth += 1;
+        if self.depth > MAX_NETWORK_NESTING {
+            return fail(
+                first_element(point),
+                format!("the network is nested more than {MAX_NETWORK_NESTING} levels deep"),
+            );
+        }
+        Ok(())
     }
 
     /// Where a driver is drawn, to order parallel branches top to bottom.

@@ -354,3 +354,35 @@ connection = [
     assert_eq!(bridge.len(), 1, "{bridge:?}");
     assert!(bridge[0].contains("do not join again"), "{bridge:?}");
 }
+
+#[test]
+fn a_chain_of_boxes_nested_deeper_than_version_2_allows_is_refused() {
+    // Each ABS box feeds the second input of the next ADD, so every box is one source deeper.
+    let mut elements =
+        vec![r#"{ id = 1, x = 0, y = 0, kind = { type = "input", expression = "x" } }"#.to_owned()];
+    let mut connections = Vec::new();
+    let count = 200;
+    for index in 0..count {
+        let id = index + 2;
+        elements.push(format!(
+            r#"{{ id = {id}, x = 0, y = {id}, kind = {{ type = "block", type_name = "ADD", inputs = ["IN1", "IN2"], outputs = ["OUT"] }} }}"#
+        ));
+        connections.push(format!(
+            r#"{{ from = {{ element = 1 }}, to = {{ element = {id}, pin = "IN1" }} }}"#
+        ));
+        if index > 0 {
+            connections.push(format!(
+                r#"{{ from = {{ element = {}, pin = "OUT" }}, to = {{ element = {id}, pin = "IN2" }} }}"#,
+                id - 1
+            ));
+        }
+    }
+    let body = format!(
+        "[[body.network]]\nelement = [\n{}\n]\nconnection = [\n{}\n]\n",
+        elements.join(",\n"),
+        connections.join(",\n")
+    );
+    let found = problems(&body);
+    assert_eq!(found.len(), 1, "{found:?}");
+    assert!(found[0].contains("nested more than"), "{found:?}");
+}
