@@ -96,13 +96,13 @@ fn fmt_rewrites_a_hand_edited_file_into_canonical_form() {
 fn fmt_refuses_a_broken_project_and_writes_nothing() {
     let dir = example_copy();
     let manifest = dir.path().join("rivet.toml");
-    fs::write(&manifest, "format_version = 2\n").unwrap();
+    fs::write(&manifest, "format_version = 3\n").unwrap();
     let output = rivet(&["fmt", path_str(dir.path())]);
     assert_eq!(output.status.code(), Some(1));
     assert!(text_of(&output.stderr).contains("newer Rivet"));
     assert_eq!(
         fs::read_to_string(&manifest).unwrap(),
-        "format_version = 2\n"
+        "format_version = 3\n"
     );
 }
 

@@ -112,13 +112,22 @@ fn make_member_names_unique(pou: &mut Pou) {
     }
 }
 
-/// A list of up to three LD/FBD networks whose element ids are unique in the body, as a
-/// loaded body's are.
+/// A list of up to three LD/FBD networks that keep the rules of `network_check`, as a loaded
+/// body's do: unique ids and labels, distinct pins, and no first input driven twice.
 pub fn networks() -> impl Strategy<Value = Vec<Network>> {
-    proptest::collection::vec(network(), 0..3).prop_map(|mut networks| {
-        let mut next = 1u32;
-        for network in &mut networks {
-            renumber_chain(&mut network.rung, &mut next);
+    networks_from(1)
+}
+
+/// Like [`networks`], with element ids counted from `first_id`: networks to insert into a body
+/// whose ids are all below it.
+pub fn networks_from(first_id: u32) -> impl Strategy<Value = Vec<Network>> {
+    proptest::collection::vec(network(), 0..3).prop_map(move |mut networks| {
+        let mut next = first_id;
+        for (index, network) in networks.iter_mut().enumerate() {
+            if !network.label.is_empty() {
+                network.label = format!("{}_{index}", network.label);
+            }
+            renumber_chain(&mut network.rung, &mut next, false);
             renumber_outputs(&mut network.outputs, &mut next);
         }
         networks
@@ -155,7 +164,7 @@ fn chain() -> impl Strategy<Value = Vec<FlowNode>> {
     });
     let leaf = proptest::collection::vec(operand, 0..3);
     leaf.prop_recursive(3, 16, 3, |inner| {
-        let parallel = proptest::collection::vec(inner.clone(), 0..3).prop_map(|branches| {
+        let parallel = proptest::collection::vec(inner.clone(), 2..4).prop_map(|branches| {
             FlowNode::Parallel(Parallel {
                 id: ElementId(0),
                 branches: branches.into_iter().map(|rung| Branch { rung }).collect(),
@@ -183,9 +192,16 @@ fn chain() -> impl Strategy<Value = Vec<FlowNode>> {
             ident(),
             prop_oneof![Just(String::new()), ident()],
             proptest::collection::vec(input, 0..3),
-            proptest::collection::vec(output, 0..3),
+            proptest::collection::vec(output, 1..3),
         )
-            .prop_map(|(type_name, instance, inputs, outputs)| {
+            .prop_map(|(type_name, instance, mut inputs, mut outputs)| {
+                // Pins of one box have distinct names.
+                for (index, input) in inputs.iter_mut().enumerate() {
+                    input.pin = format!("{}_i{index}", input.pin);
+                }
+                for (index, output) in outputs.iter_mut().enumerate() {
+                    output.pin = format!("{}_o{index}", output.pin);
+                }
                 FlowNode::Block(BlockCall {
                     id: ElementId(0),
                     type_name,
@@ -229,9 +245,10 @@ fn outputs() -> impl Strategy<Value = Vec<NetworkOutput>> {
     })
 }
 
-/// Gives every element of a chain the next free id.
-fn renumber_chain(chain: &mut [FlowNode], next: &mut u32) {
-    for node in chain {
+/// Gives every element of a chain the next free id, and drops the source of a box's first
+/// input where the power also drives it (`fed_by_power`: the chain's start is powered).
+fn renumber_chain(chain: &mut [FlowNode], next: &mut u32, fed_by_power: bool) {
+    for (position, node) in chain.iter_mut().enumerate() {
         let id = ElementId(*next);
         *next += 1;
         match node {
@@ -239,13 +256,18 @@ fn renumber_chain(chain: &mut [FlowNode], next: &mut u32) {
             FlowNode::Parallel(parallel) => {
                 parallel.id = id;
                 for branch in &mut parallel.branches {
-                    renumber_chain(&mut branch.rung, next);
+                    renumber_chain(&mut branch.rung, next, true);
                 }
             }
             FlowNode::Block(block) => {
                 block.id = id;
+                if (position > 0 || fed_by_power)
+                    && let Some(first) = block.inputs.first_mut()
+                {
+                    first.source.clear();
+                }
                 for input in &mut block.inputs {
-                    renumber_chain(&mut input.source, next);
+                    renumber_chain(&mut input.source, next, false);
                 }
             }
         }
@@ -266,7 +288,7 @@ fn renumber_outputs(outputs: &mut [NetworkOutput], next: &mut u32) {
                 outputs,
             } => {
                 *slot = id;
-                renumber_chain(rung, next);
+                renumber_chain(rung, next, true);
                 renumber_outputs(outputs, next);
             }
         }

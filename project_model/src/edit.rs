@@ -8,9 +8,10 @@ use std::ops::Range;
 use thiserror::Error;
 
 use crate::list_edit::IndexOutOfRange;
+use crate::network_splice::{body_mut, splice_networks};
 use crate::validate::object_problem;
 use crate::{
-    Axis, Body, Controller, Folder, IoArea, ListEdit, ModbusDevice, Node, Object, Project, Task,
+    Axis, Controller, Folder, IoArea, ListEdit, ModbusDevice, Network, Node, Object, Project, Task,
     Variable, is_valid_identifier, same_identifier,
 };
 
@@ -54,6 +55,20 @@ pub enum Edit {
         range: Range<usize>,
         /// The new text.
         text: String,
+    },
+    /// Replaces the `remove` networks starting at index `at` of an LD or FBD body with
+    /// `insert`: inserting, deleting, changing or pasting networks as one undo step. Its
+    /// inverse is the splice that puts the old networks back. The body must keep the rules of
+    /// `network_check`.
+    SpliceNetworks {
+        /// Which body (named as a text body is; it must be LD or FBD).
+        target: TextTarget,
+        /// The index of the first network replaced.
+        at: usize,
+        /// How many networks are replaced.
+        remove: usize,
+        /// The networks put in their place.
+        insert: Vec<Network>,
     },
     /// Several edits applied in order as one; undone in reverse order.
     Group(Vec<Edit>),
@@ -208,6 +223,19 @@ pub enum EditError {
     /// A replacement object has another kind than the object it replaces.
     #[error("'{0}' cannot change its kind")]
     KindChanged(String),
+    /// The targeted body is not LD or FBD.
+    #[error("the body of {0} is not a Ladder or Function Block Diagram")]
+    NotNetworks(String),
+    /// A run of networks that goes past the end of its body.
+    #[error("cannot replace {remove} networks at position {at}: the body has {len} networks")]
+    NetworkRangeOutOfRange {
+        /// The index of the first network.
+        at: usize,
+        /// How many networks.
+        remove: usize,
+        /// How many networks the body has.
+        len: usize,
+    },
 }
 
 impl From<IndexOutOfRange> for EditError {
@@ -273,6 +301,12 @@ impl Edit {
                     text: old,
                 })
             }
+            Self::SpliceNetworks {
+                target,
+                at,
+                remove,
+                insert,
+            } => splice_networks(&mut project.application, target, at, remove, insert),
             Self::Group(edits) => {
                 let mut inverses = Vec::with_capacity(edits.len());
                 for edit in edits {
@@ -517,7 +551,11 @@ fn replace_object(object: Object, root: &mut Folder) -> Result<Edit, EditError> 
     Ok(Edit::ReplaceObject(std::mem::replace(slot, object)))
 }
 
-fn pou_mut<'a>(root: &'a mut Folder, name: &str) -> Result<&'a mut crate::Pou, EditError> {
+/// The POU named `name`.
+pub(crate) fn pou_mut<'a>(
+    root: &'a mut Folder,
+    name: &str,
+) -> Result<&'a mut crate::Pou, EditError> {
     match root.object_mut(name) {
         Some(Object::Pou(pou)) => Ok(pou),
         _ => Err(EditError::NoSuchObject(name.to_owned())),
@@ -552,29 +590,8 @@ fn variables_mut<'a>(
 }
 
 fn text_mut<'a>(root: &'a mut Folder, target: &TextTarget) -> Result<&'a mut String, EditError> {
-    let body: &mut Body = match target {
-        TextTarget::Pou(pou) => &mut pou_mut(root, pou)?.body,
-        TextTarget::Method { pou, method } => pou_mut(root, pou)?
-            .methods
-            .iter_mut()
-            .find(|m| m.name == *method)
-            .map(|m| &mut m.body)
-            .ok_or_else(|| no_member(pou, "method", method))?,
-        TextTarget::Property { pou, property, get } => pou_mut(root, pou)?
-            .properties
-            .iter_mut()
-            .find(|p| p.name == *property)
-            .and_then(|p| if *get { p.get.as_mut() } else { p.set.as_mut() })
-            .map(|accessor| &mut accessor.body)
-            .ok_or_else(|| no_member(pou, "property", property))?,
-        TextTarget::Action { pou, action } => pou_mut(root, pou)?
-            .actions
-            .iter_mut()
-            .find(|a| a.name == *action)
-            .map(|a| &mut a.body)
-            .ok_or_else(|| no_member(pou, "action", action))?,
-    };
-    body.st_text_mut()
+    body_mut(root, target)?
+        .st_text_mut()
         .ok_or_else(|| EditError::NotText(target.to_string()))
 }
 

@@ -26,6 +26,8 @@ mod io_area;
 mod list_edit;
 mod modbus_device;
 mod network;
+mod network_check;
+mod network_splice;
 mod network_walk;
 mod pou;
 mod project;
@@ -59,9 +61,9 @@ pub use device_check::{
 };
 pub use edit::{Edit, EditError, TextTarget, TreeEdit, VarOwner};
 pub use files::{
-    APPLICATION_DIR, FORMAT_VERSION, LoadError, LoadProblem, LoadedProject, MANIFEST_FILE_NAME,
-    SaveError, SaveReport, Severity, StBody, load_project, object_files, save_project,
-    st_body_files,
+    APPLICATION_DIR, FORMAT_VERSION, HeldBackObject, LoadError, LoadProblem, LoadedProject,
+    MANIFEST_FILE_NAME, SaveError, SaveReport, Severity, StBody, load_project, object_files,
+    save_project, save_project_keeping, st_body_files,
 };
 pub use gvl::GlobalVarList;
 pub use history::{History, Transaction};
@@ -73,6 +75,7 @@ pub use network::{
     BlockCall, BlockInput, BlockOutput, Branch, Coil, CoilKind, EN_PIN, ENO_PIN, Edge, ElementId,
     FlowNode, Network, NetworkOutput, Operand, Parallel,
 };
+pub use network_check::{MAX_NETWORK_NESTING, NetworkProblem, network_problems};
 pub use network_walk::{ElementRef, max_element_id, walk_chain, walk_outputs};
 pub use pou::{
     AccessSpecifier, Body, Language, Method, Pou, PouAction, PouKind, Property, PropertyAccessor,

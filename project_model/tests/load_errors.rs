@@ -112,7 +112,7 @@ fn a_newer_format_version_is_refused_with_both_versions() {
     let dir = example_copy();
     replace_in(
         &dir.path().join("rivet.toml"),
-        "format_version = 1",
+        "format_version = 2",
         "format_version = 7",
     );
     let error = load_fails(dir.path());
@@ -128,7 +128,7 @@ fn a_newer_format_version_is_refused_with_both_versions() {
 #[test]
 fn a_missing_format_version_is_reported() {
     let dir = example_copy();
-    replace_in(&dir.path().join("rivet.toml"), "format_version = 1\n", "");
+    replace_in(&dir.path().join("rivet.toml"), "format_version = 2\n", "");
     let error = load_fails(dir.path());
     assert_error(
         &error,
@@ -307,4 +307,187 @@ fn every_problem_is_reported_in_one_pass() {
         Some(3),
         "unknown field `variabel`",
     );
+}
+
+/// An LD program whose second network reuses the id 1, added to the example's manifest.
+const LADDER_WITH_DUPLICATE_ID: &str = r#"kind = "program"
+
+[body]
+language = "ld"
+
+[[body.network]]
+rung = [{ type = "operand", id = 1, text = "start" }]
+output = [{ type = "coil", id = 2, variable = "run" }]
+
+[[body.network]]
+label = "Stop"
+rung = [{ type = "operand", id = 1, text = "stop", negated = true }]
+output = [{ type = "coil", id = 3, variable = "run", kind = "reset" }]
+"#;
+
+fn add_ladder(dir: &Path, text: &str) {
+    fs::write(dir.join("application/Ladder.pou.toml"), text).unwrap();
+    replace_in(
+        &dir.join("rivet.toml"),
+        "\"Main.pou.toml\",",
+        "\"Main.pou.toml\",\n    \"Ladder.pou.toml\",",
+    );
+}
+
+#[test]
+fn a_broken_ld_body_names_pou_network_and_element_and_the_rest_still_loads() {
+    let dir = example_copy();
+    add_ladder(dir.path(), LADDER_WITH_DUPLICATE_ID);
+    let error = load_fails(dir.path());
+    let shown = error.to_string();
+    let file = dir.path().join("application/Ladder.pou.toml");
+    assert_eq!(
+        shown,
+        format!(
+            "{}: error: POU 'Ladder', network 2 'Stop', element 1: two elements have the id 1; \
+             the other is in network 1",
+            file.display()
+        )
+    );
+    let partial = error.partial.expect("the rest of the project loads");
+    assert_eq!(partial.held_back.len(), 1);
+    assert_eq!(partial.held_back[0].entry, "Ladder.pou.toml");
+    assert!(partial.project.application.object("Ladder").is_none());
+    assert!(partial.project.application.object("Main").is_some());
+    assert!(partial.warnings.is_empty(), "{:?}", partial.warnings);
+    assert!(
+        !partial
+            .files
+            .contains(Path::new("application/Ladder.pou.toml"))
+    );
+}
+
+#[test]
+fn saving_a_partly_loaded_project_keeps_the_broken_file_and_its_entry() {
+    let dir = example_copy();
+    add_ladder(dir.path(), LADDER_WITH_DUPLICATE_ID);
+    let partial = *load_fails(dir.path()).partial.unwrap();
+    let mut project = partial.project.clone();
+    project.description = "edited while Ladder is broken".into();
+    let report = project_model::save_project_keeping(
+        &project,
+        dir.path(),
+        &partial.files,
+        &partial.held_back,
+    )
+    .unwrap();
+    assert_eq!(report.written, [PathBuf::from("rivet.toml")]);
+    assert!(report.removed.is_empty(), "{:?}", report.removed);
+    let file = dir.path().join("application/Ladder.pou.toml");
+    assert_eq!(fs::read_to_string(&file).unwrap(), LADDER_WITH_DUPLICATE_ID);
+    let again = load_fails(dir.path());
+    assert_eq!(again.problems.len(), 1, "{again}");
+    let again = again.partial.unwrap();
+    assert_eq!(again.project.description, "edited while Ladder is broken");
+    assert_eq!(again.held_back, partial.held_back);
+
+    let mut clash = project.clone();
+    let mut main = clash.application.object("Main").unwrap().clone();
+    main.set_name("Ladder".into());
+    clash
+        .application
+        .children
+        .push(project_model::Node::Object(main));
+    let refused =
+        project_model::save_project_keeping(&clash, dir.path(), &partial.files, &partial.held_back);
+    assert!(matches!(refused, Err(project_model::SaveError::Invalid(_))));
+}
+
+#[test]
+fn a_broken_manifest_gives_no_partial_project() {
+    let dir = example_copy();
+    replace_in(
+        &dir.path().join("rivet.toml"),
+        "\"Main.pou.toml\",",
+        "\"Main.pou.toml\",\n    \"Main.pou.toml\",",
+    );
+    assert!(load_fails(dir.path()).partial.is_none());
+}
+
+/// A version 1 LD program: contact `a` in series with `b` parallel to `c`, driving coil `q`.
+const LADDER_VERSION_1: &str = r#"kind = "program"
+
+[body]
+language = "ld"
+
+[[body.network]]
+element = [
+    { id = 1, x = 0, y = 0, kind = { type = "left_rail", height = 2 } },
+    { id = 2, x = 2, y = 0, kind = { type = "contact", variable = "a" } },
+    { id = 3, x = 4, y = 0, kind = { type = "contact", variable = "b" } },
+    { id = 4, x = 4, y = 2, kind = { type = "contact", variable = "c" } },
+    { id = 5, x = 6, y = 0, kind = { type = "coil", variable = "q" } },
+]
+connection = [
+    { from = { element = 1 }, to = { element = 2 } },
+    { from = { element = 2 }, to = { element = 3 } },
+    { from = { element = 2 }, to = { element = 4 } },
+    { from = { element = 3 }, to = { element = 5 } },
+    { from = { element = 4 }, to = { element = 5 } },
+]
+"#;
+
+#[test]
+fn a_version_1_project_loads_converted_and_saves_as_version_2() {
+    let dir = example_copy();
+    add_ladder(dir.path(), LADDER_VERSION_1);
+    replace_in(
+        &dir.path().join("rivet.toml"),
+        "format_version = 2",
+        "format_version = 1",
+    );
+    let before = snapshot(dir.path());
+    let loaded = load_project(dir.path()).unwrap();
+    assert_eq!(snapshot(dir.path()), before, "loading changed files");
+    let Some(project_model::Object::Pou(pou)) = loaded.project.application.object("Ladder") else {
+        panic!("no Ladder POU");
+    };
+    let project_model::Body::Ld { networks } = &pou.body else {
+        panic!("not LD: {:?}", pou.body);
+    };
+    assert_eq!(networks[0].rung.len(), 2);
+    assert_eq!(networks[0].outputs.len(), 1);
+
+    let report = save_project(&loaded.project, dir.path(), &loaded.files).unwrap();
+    assert!(report.written.contains(&PathBuf::from("rivet.toml")));
+    assert!(
+        report
+            .written
+            .contains(&PathBuf::from("application/Ladder.pou.toml"))
+    );
+    let manifest = fs::read_to_string(dir.path().join("rivet.toml")).unwrap();
+    assert!(manifest.starts_with("format_version = 2\n"), "{manifest}");
+    let again = load_project(dir.path()).unwrap();
+    assert_eq!(again.project, loaded.project);
+}
+
+#[test]
+fn a_version_1_network_that_cannot_be_converted_holds_back_only_its_pou() {
+    let dir = example_copy();
+    add_ladder(
+        dir.path(),
+        &LADDER_VERSION_1.replace("to = { element = 5 } },\n]", "to = { element = 9 } },\n]"),
+    );
+    replace_in(
+        &dir.path().join("rivet.toml"),
+        "format_version = 2",
+        "format_version = 1",
+    );
+    let error = load_fails(dir.path());
+    assert_error(
+        &error,
+        dir.path(),
+        "application/Ladder.pou.toml",
+        None,
+        "POU 'Ladder', network 1, element 4: cannot be converted to version 2: a connection \
+         leads to element 9, which does not exist",
+    );
+    let partial = error.partial.unwrap();
+    assert_eq!(partial.held_back[0].name, "Ladder");
+    assert!(partial.project.application.object("Main").is_some());
 }

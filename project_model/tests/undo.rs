@@ -8,8 +8,8 @@ use proptest::sample::Index;
 
 use project_model::arb;
 use project_model::{
-    Axis, Controller, Edit, History, IoArea, ListEdit, ModbusDevice, Node, Object, Project, Task,
-    TextTarget, TreeEdit, VarOwner, Variable,
+    Axis, Body, Controller, Edit, History, IoArea, ListEdit, ModbusDevice, Node, Object, Project,
+    Task, TextTarget, TreeEdit, VarOwner, Variable, max_element_id,
 };
 
 /// A list edit on a list of `len` items, with indices chosen by `index`.
@@ -81,6 +81,23 @@ fn edit_for(project: &Project) -> BoxedStrategy<Edit> {
         .filter_map(|object| match object {
             Object::Pou(pou) => Some((VarOwner::Pou(pou.name.clone()), pou.variables.len())),
             Object::Gvl(gvl) => Some((VarOwner::Gvl(gvl.name.clone()), gvl.variables.len())),
+            _ => None,
+        })
+        .collect();
+    // Every POU body, with its number of networks (0 for ST) and the id above its elements'.
+    let bodies: Vec<(TextTarget, usize, u32)> = project
+        .application
+        .objects()
+        .iter()
+        .filter_map(|object| match object {
+            Object::Pou(pou) => Some(match &pou.body {
+                Body::Ld { networks } | Body::Fbd { networks } => (
+                    TextTarget::Pou(pou.name.clone()),
+                    networks.len(),
+                    max_element_id(networks).0 + 1,
+                ),
+                _ => (TextTarget::Pou(pou.name.clone()), 0, 1),
+            }),
             _ => None,
         })
         .collect();
@@ -213,6 +230,24 @@ fn edit_for(project: &Project) -> BoxedStrategy<Edit> {
         },
     );
 
+    // Mostly a splice inside an LD/FBD body; sometimes past its end, into an ST body, or with
+    // labels that clash, which must be refused.
+    let splice_networks = any::<Index>().prop_flat_map(move |n| {
+        let (target, len, next_id) = if bodies.is_empty() {
+            (TextTarget::Pou("Missing".into()), 0, 1)
+        } else {
+            bodies[n.index(bodies.len())].clone()
+        };
+        (0..len + 2, 0..3usize, arb::networks_from(next_id)).prop_map(
+            move |(at, remove, insert)| Edit::SpliceNetworks {
+                target: target.clone(),
+                at,
+                remove,
+                insert,
+            },
+        )
+    });
+
     let single = prop_oneof![
         (arb::text(), arb::text())
             .prop_map(|(name, description)| Edit::SetProjectInfo { name, description }),
@@ -228,6 +263,7 @@ fn edit_for(project: &Project) -> BoxedStrategy<Edit> {
         replace_object,
         variables,
         replace_text,
+        splice_networks,
     ]
     .boxed();
     prop_oneof![

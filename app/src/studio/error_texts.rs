@@ -56,6 +56,19 @@ pub fn edit_error_text(error: &EditError, language: Language) -> String {
         EditError::KindChanged(name) => {
             RefusalText::EditKindChanged.fill(language, &[("name", name)])
         }
+        EditError::NotNetworks(name) => {
+            RefusalText::EditNotNetworks.fill(language, &[("name", name)])
+        }
+        EditError::NetworkRangeOutOfRange { at, remove, len } => {
+            RefusalText::EditNetworkRangeOutOfRange.fill(
+                language,
+                &[
+                    ("at", &at.to_string()),
+                    ("remove", &remove.to_string()),
+                    ("len", &len.to_string()),
+                ],
+            )
+        }
     }
 }
 
@@ -165,6 +178,12 @@ mod tests {
             },
             EditError::MoveIntoItself,
             EditError::KindChanged(text("Main")),
+            EditError::NotNetworks(text("Main")),
+            EditError::NetworkRangeOutOfRange {
+                at: 4,
+                remove: 2,
+                len: 5,
+            },
         ]
     }
 

@@ -12,7 +12,9 @@ const MAX_INLINE_WIDTH: usize = 100;
 /// (`[[variable]]`); small structures of plain values stay inline on their key's line
 /// (`kind = { type = "cyclic", interval_us = 10000 }`); a structure that holds lists of
 /// structures or would not fit on a line becomes a standard table; a list of plain values that
-/// would not fit on a line puts one value on each line.
+/// would not fit on a line puts one value on each line. The chain (`rung`) and `output` lists
+/// of an LD/FBD network are an indented tree of inline tables instead, one element a line, so
+/// the structure reads at a glance and an edit is a small diff.
 pub(crate) fn to_canonical_toml<T: Serialize>(value: &T) -> Result<String, String> {
     let document = toml_edit::ser::to_document(value).map_err(|error| error.to_string())?;
     let mut root = document.as_table().clone();
@@ -21,11 +23,25 @@ pub(crate) fn to_canonical_toml<T: Serialize>(value: &T) -> Result<String, Strin
 }
 
 fn expand(table: &mut Table) {
+    expand_table(table, false);
+}
+
+/// Expands `table`; `is_network` tells that it is an LD/FBD network, whose `rung` and
+/// `output` lists are laid out as an indented tree rather than as arrays of tables.
+fn expand_table(table: &mut Table, is_network: bool) {
     table.decor_mut().clear();
     table.set_implicit(false);
     for (mut key, item) in table.iter_mut() {
         key.leaf_decor_mut().clear();
+        let holds_networks = key.get() == "network";
+        let is_tree = is_network && matches!(key.get(), "rung" | "output");
         let replacement = match item {
+            Item::Value(Value::Array(array)) if is_tree && is_array_of_tables(array) => {
+                format_tree(array, 0, true);
+                array.decor_mut().clear();
+                array.decor_mut().set_prefix(" ");
+                None
+            }
             Item::Value(Value::InlineTable(inline)) if must_expand(inline) => {
                 let mut child = inline.clone().into_table();
                 expand(&mut child);
@@ -36,7 +52,7 @@ fn expand(table: &mut Table) {
                 for value in array.iter() {
                     if let Some(inline) = value.as_inline_table() {
                         let mut child = inline.clone().into_table();
-                        expand(&mut child);
+                        expand_table(&mut child, holds_networks);
                         tables.push(child);
                     }
                 }
@@ -51,7 +67,9 @@ fn expand(table: &mut Table) {
                 None
             }
             Item::ArrayOfTables(tables) => {
-                tables.iter_mut().for_each(expand);
+                for child in tables.iter_mut() {
+                    expand_table(child, holds_networks);
+                }
                 None
             }
             Item::None => None,
@@ -81,6 +99,84 @@ fn must_expand(inline: &InlineTable) -> bool {
     probe.fmt();
     probe.to_string().len() > MAX_INLINE_WIDTH
 }
+
+/// Lays out the elements of a network's chain or outputs (a list of structures) as an
+/// indented tree: each element is an inline table, on a line of its own at `level + 1` levels
+/// of indentation when the list is `always_expanded`, holds a spread list, or would not fit on
+/// its line; lists inside the elements (branches, box pins, sources) follow the same rule one
+/// level deeper. A contact added to a rung is then one added line in a diff.
+fn format_tree(array: &mut Array, level: usize, always_expanded: bool) {
+    for element in array.iter_mut() {
+        match element {
+            Value::InlineTable(inline) => format_tree_element(inline, level),
+            other => format_contents(other),
+        }
+    }
+    array.fmt();
+    let one_line = array.to_string();
+    let spread = always_expanded
+        || one_line.contains('\n')
+        || one_line.len() + INDENT.len() * (level + 1) > MAX_INLINE_WIDTH;
+    if spread {
+        let inner = format!("\n{}", INDENT.repeat(level + 1));
+        for element in array.iter_mut() {
+            element.decor_mut().set_prefix(inner.as_str());
+            element.decor_mut().set_suffix("");
+        }
+        array.set_trailing(format!("\n{}", INDENT.repeat(level)));
+        array.set_trailing_comma(true);
+    }
+}
+
+/// Formats one element of a tree list at `level`: its own lists stay on its line while the
+/// line fits; otherwise they are spread one at a time, the longest first, until every line
+/// does.
+fn format_tree_element(inline: &mut InlineTable, level: usize) {
+    let mut spread: Vec<String> = Vec::new();
+    loop {
+        for (key, child) in inline.iter_mut() {
+            match child {
+                Value::Array(list) if is_array_of_tables(list) => {
+                    format_tree(list, level + 1, spread.iter().any(|name| name == key.get()));
+                }
+                other => format_contents(other),
+            }
+        }
+        inline.fmt();
+        let text = inline.to_string();
+        let indent = INDENT.len() * (level + 1);
+        let widest = text
+            .lines()
+            .enumerate()
+            .map(|(index, line)| {
+                if index == 0 {
+                    line.len() + indent
+                } else {
+                    line.len()
+                }
+            })
+            .max()
+            .unwrap_or(0);
+        if widest <= MAX_INLINE_WIDTH {
+            return;
+        }
+        let longest = inline
+            .iter()
+            .filter(|(key, value)| {
+                value.as_array().is_some_and(is_array_of_tables)
+                    && !spread.iter().any(|name| name == key)
+            })
+            .max_by_key(|(_, value)| value.to_string().len())
+            .map(|(key, _)| key.to_owned());
+        match longest {
+            Some(key) => spread.push(key),
+            None => return,
+        }
+    }
+}
+
+/// One level of indentation in a spread list.
+const INDENT: &str = "    ";
 
 /// Gives a value the canonical spacing: `{ a = 1, b = 2 }`, `["a", "b"]`, or one array element
 /// per line when the array is too long.
@@ -114,3 +210,6 @@ fn format_contents(value: &mut Value) {
         _ => {}
     }
 }
+#[cfg(test)]
+#[path = "canonical_tests.rs"]
+mod tests;

@@ -40,18 +40,24 @@ pub(crate) struct BodySlot<'a> {
     pub suffix: String,
     /// The body.
     pub body: &'a Body,
+    /// What the body belongs to, as messages name it: `POU 'Main'`, `POU 'Main', method
+    /// 'Reset'`, `POU 'Main', property 'Speed' (get)` or `POU 'Main', action 'Stop'`.
+    pub owner: String,
 }
 
 /// Every body of a POU with the suffix of its `.st` file, in a fixed order.
 pub(crate) fn body_slots(pou: &Pou) -> Vec<BodySlot<'_>> {
+    let pou_owner = format!("POU '{}'", pou.name);
     let mut slots = vec![BodySlot {
         suffix: ".st".into(),
         body: &pou.body,
+        owner: pou_owner.clone(),
     }];
     for method in &pou.methods {
         slots.push(BodySlot {
             suffix: format!(".{}.st", method.name),
             body: &method.body,
+            owner: format!("{pou_owner}, method '{}'", method.name),
         });
     }
     for property in &pou.properties {
@@ -60,6 +66,7 @@ pub(crate) fn body_slots(pou: &Pou) -> Vec<BodySlot<'_>> {
                 slots.push(BodySlot {
                     suffix: format!(".{}.{which}.st", property.name),
                     body: &accessor.body,
+                    owner: format!("{pou_owner}, property '{}' ({which})", property.name),
                 });
             }
         }
@@ -68,6 +75,7 @@ pub(crate) fn body_slots(pou: &Pou) -> Vec<BodySlot<'_>> {
         slots.push(BodySlot {
             suffix: format!(".{}.st", action.name),
             body: &action.body,
+            owner: format!("{pou_owner}, action '{}'", action.name),
         });
     }
     slots

@@ -5,15 +5,17 @@ use std::path::{Path, PathBuf};
 
 use serde::de::DeserializeOwned;
 
+use super::held_back::HeldBackObject;
 use super::layout::{Entry, bodies_mut, body_slots, folder_dir, object_file, parse_entry};
 use super::manifest::{Manifest, VersionProbe};
 use super::problem::{LoadError, LoadProblem, Severity, line_of, toml_problem};
+use super::version1::{Version1Failure, pou_from_version1};
 use super::{APPLICATION_DIR, FORMAT_VERSION, MANIFEST_FILE_NAME};
-use crate::validate::object_problem;
+use crate::validate::{body_problems, member_problem};
 use crate::{Body, Folder, Node, Object, ObjectKind, Pou, Project, same_identifier};
 
 /// A project read from disk.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct LoadedProject {
     /// The project.
     pub project: Project,
@@ -22,35 +24,71 @@ pub struct LoadedProject {
     /// The files the project was read from, relative to its folder. Saving removes those of
     /// them that the project no longer needs, and never touches any other file.
     pub files: BTreeSet<PathBuf>,
+    /// The objects that failed to load, in manifest order: empty for a project that loaded
+    /// whole. Their files are not in `files`; pass them to `save_project_keeping`.
+    pub held_back: Vec<HeldBackObject>,
 }
 
 /// Reads the project in folder `dir`.
 ///
 /// Nothing on disk is changed. On failure every problem found is returned, each naming its file
-/// and, where it has one, its line.
+/// and, where it has one, its line. When only some application objects failed (a file that
+/// is not valid TOML, a broken LD/FBD body…) and the manifest is sound, the error also holds
+/// the rest of the project in `partial`, with those objects held back, so it can be opened
+/// and edited.
 pub fn load_project(dir: &Path) -> Result<LoadedProject, LoadError> {
     let mut loader = Loader {
         dir,
         problems: Vec::new(),
         files: BTreeSet::new(),
+        held_back: Vec::new(),
+        object_errors: 0,
+        version: FORMAT_VERSION,
     };
     let project = loader.load();
-    let has_errors = loader
+    let errors = loader
         .problems
         .iter()
-        .any(|problem| problem.severity == Severity::Error);
-    match project {
-        Some(project) if !has_errors => {
-            loader.report_unlisted_files();
-            Ok(LoadedProject {
-                project,
-                warnings: loader.problems,
-                files: loader.files,
-            })
-        }
-        _ => Err(LoadError {
+        .filter(|problem| problem.severity == Severity::Error)
+        .count();
+    let Some(project) = project else {
+        return Err(LoadError {
             problems: loader.problems,
-        }),
+            partial: None,
+        });
+    };
+    if errors > 0 && errors != loader.object_errors {
+        return Err(LoadError {
+            problems: loader.problems,
+            partial: None,
+        });
+    }
+    loader.report_unlisted_files();
+    let Loader {
+        problems,
+        mut files,
+        held_back,
+        ..
+    } = loader;
+    files.retain(|file| !held_back.iter().any(|object| object.owns(file)));
+    let warnings: Vec<LoadProblem> = problems
+        .iter()
+        .filter(|problem| problem.severity == Severity::Warning)
+        .cloned()
+        .collect();
+    let loaded = LoadedProject {
+        project,
+        warnings,
+        files,
+        held_back,
+    };
+    if errors == 0 {
+        Ok(loaded)
+    } else {
+        Err(LoadError {
+            problems,
+            partial: Some(Box::new(loaded)),
+        })
     }
 }
 
@@ -58,6 +96,13 @@ struct Loader<'a> {
     dir: &'a Path,
     problems: Vec<LoadProblem>,
     files: BTreeSet<PathBuf>,
+    /// The objects that failed to load.
+    held_back: Vec<HeldBackObject>,
+    /// How many of the errors belong to held-back objects; when they are all the errors,
+    /// the rest of the project is sound.
+    object_errors: usize,
+    /// The format version of the manifest, which decides how POU files are read.
+    version: u32,
 }
 
 impl Loader<'_> {
@@ -106,7 +151,10 @@ impl Loader<'_> {
         };
         let line = line_of(text, version.span().start);
         let found = *version.get_ref();
-        if found == i64::from(FORMAT_VERSION) {
+        if let Ok(known) = u32::try_from(found)
+            && (1..=FORMAT_VERSION).contains(&known)
+        {
+            self.version = known;
             return true;
         }
         let message = if found > i64::from(FORMAT_VERSION) {
@@ -116,7 +164,8 @@ impl Loader<'_> {
             )
         } else {
             format!(
-                "format_version {found} is not a Rivet project format; expected {FORMAT_VERSION}"
+                "format_version {found} is not a Rivet project format; expected 1 to \
+                 {FORMAT_VERSION}"
             )
         };
         self.problems
@@ -168,14 +217,35 @@ impl Loader<'_> {
                 // An empty folder has no directory on disk: git keeps no empty directories.
             }
             Entry::Object { folder, name, kind } => {
-                if let Some(other) = root.object(&name) {
+                let other = root
+                    .object(&name)
+                    .map(|other| other.name().to_owned())
+                    .or_else(|| {
+                        self.held_back
+                            .iter()
+                            .find(|held| same_identifier(&held.name, &name))
+                            .map(|held| held.name.clone())
+                    });
+                if let Some(other) = other {
                     return self.problems.push(entry_error(format!(
-                        "'{entry}': the name '{name}' is already used by '{}' (names are \
-                         compared without case)",
-                        other.name()
+                        "'{entry}': the name '{name}' is already used by '{other}' (names are \
+                         compared without case)"
                     )));
                 }
+                let errors_before = self.problems.len();
                 let Some(object) = self.load_object(&folder, &name, kind) else {
+                    self.object_errors += self.problems[errors_before..]
+                        .iter()
+                        .filter(|problem| problem.severity == Severity::Error)
+                        .count();
+                    let mut file_prefix = folder_dir(&folder);
+                    file_prefix.push(format!("{name}."));
+                    self.held_back.push(HeldBackObject {
+                        entry: entry.to_owned(),
+                        folder,
+                        name,
+                        file_prefix,
+                    });
                     return;
                 };
                 if let Some(parent) = root.folder_mut(&folder) {
@@ -189,6 +259,9 @@ impl Loader<'_> {
         let file = object_file(folder, name, kind);
         let text = self.read_text(&file)?;
         let mut object = match kind {
+            ObjectKind::Pou if self.version == 1 => {
+                Object::Pou(self.parse_pou_version1(&file, name, &text)?)
+            }
             ObjectKind::Pou => Object::Pou(self.parse(&file, &text)?),
             ObjectKind::Gvl => Object::Gvl(self.parse(&file, &text)?),
             ObjectKind::DataType => Object::DataType(self.parse(&file, &text)?),
@@ -197,13 +270,21 @@ impl Loader<'_> {
             ObjectKind::WatchList => Object::WatchList(self.parse(&file, &text)?),
         };
         object.set_name(name.to_owned());
-        if let Some(problem) = object_problem(&object) {
+        if let Some(problem) = member_problem(&object) {
             self.problems
                 .push(LoadProblem::error(self.dir.join(&file), None, problem));
             return None;
         }
         if let Object::Pou(pou) = &mut object {
             self.load_st_bodies(folder, pou, &file)?;
+        }
+        let problems = body_problems(&object);
+        if !problems.is_empty() {
+            for problem in problems {
+                self.problems
+                    .push(LoadProblem::error(self.dir.join(&file), None, problem));
+            }
+            return None;
         }
         Some(object)
     }
@@ -281,6 +362,25 @@ impl Loader<'_> {
         }
     }
 
+    /// Reads a POU file of format version 1, converting its LD and FBD networks.
+    fn parse_pou_version1(&mut self, file: &Path, name: &str, text: &str) -> Option<Pou> {
+        match pou_from_version1(name, text) {
+            Ok(pou) => Some(pou),
+            Err(Version1Failure::Toml(error)) => {
+                self.problems
+                    .push(toml_problem(self.dir.join(file), text, &error));
+                None
+            }
+            Err(Version1Failure::Networks(messages)) => {
+                for message in messages {
+                    self.problems
+                        .push(LoadProblem::error(self.dir.join(file), None, message));
+                }
+                None
+            }
+        }
+    }
+
     fn parse<T: DeserializeOwned>(&mut self, file: &Path, text: &str) -> Option<T> {
         match toml::from_str(text) {
             Ok(value) => Some(value),
@@ -306,7 +406,9 @@ impl Loader<'_> {
                 let path = relative.join(entry.file_name());
                 if entry.file_type().is_ok_and(|t| t.is_dir()) {
                     pending.push(path);
-                } else if !self.files.contains(&path) {
+                } else if !self.files.contains(&path)
+                    && !self.held_back.iter().any(|object| object.owns(&path))
+                {
                     self.problems.push(LoadProblem::warning(
                         self.dir.join(&path),
                         "not part of the project: it is not listed in rivet.toml and belongs to \

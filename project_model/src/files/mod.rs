@@ -6,19 +6,24 @@
 //! replaced atomically.
 
 mod canonical;
+mod chart_conversion;
+mod held_back;
 mod layout;
 mod load;
 mod manifest;
 mod problem;
 mod save;
+mod version1;
 
+pub use held_back::HeldBackObject;
+pub(crate) use layout::body_slots;
 pub use layout::{StBody, object_files, st_body_files};
 pub use load::{LoadedProject, load_project};
 pub use problem::{LoadError, LoadProblem, Severity};
-pub use save::{SaveError, SaveReport, save_project};
+pub use save::{SaveError, SaveReport, save_project, save_project_keeping};
 
 /// The project format version this build reads and writes.
-pub const FORMAT_VERSION: u32 = 1;
+pub const FORMAT_VERSION: u32 = 2;
 
 /// The name of the manifest file at the root of a project folder.
 pub const MANIFEST_FILE_NAME: &str = "rivet.toml";

@@ -73,10 +73,14 @@ impl fmt::Display for LoadProblem {
 }
 
 /// A project that could not be loaded, with every problem found.
-#[derive(Clone, Debug, PartialEq, Eq, Error)]
+#[derive(Clone, Debug, PartialEq, Error)]
 pub struct LoadError {
     /// The problems, errors and warnings, in the order they were found.
     pub problems: Vec<LoadProblem>,
+    /// The rest of the project when only application objects failed to load: they are held
+    /// back (`LoadedProject::held_back`) and everything else is loaded. `None` when the
+    /// manifest itself is broken.
+    pub partial: Option<Box<super::LoadedProject>>,
 }
 
 impl fmt::Display for LoadError {

@@ -8,6 +8,7 @@ use thiserror::Error;
 use toml::Spanned;
 
 use super::canonical::to_canonical_toml;
+use super::held_back::HeldBackObject;
 use super::layout::{body_slots, folder_dir, folder_entry, object_entry, object_file, object_toml};
 use super::manifest::Manifest;
 use super::{FORMAT_VERSION, MANIFEST_FILE_NAME};
@@ -62,7 +63,20 @@ pub fn save_project(
     dir: &Path,
     previous_files: &BTreeSet<PathBuf>,
 ) -> Result<SaveReport, SaveError> {
-    let rendered = render(project)?;
+    save_project_keeping(project, dir, previous_files, &[])
+}
+
+/// Saves `project` as [`save_project`] does, keeping the objects that failed to load
+/// (`LoadError::partial`'s `held_back`): their manifest entries stay, at the end of their
+/// folder's entries, and their files are neither written nor removed. An object of the
+/// project that takes the name of a held-back one is refused, as two objects of one name are.
+pub fn save_project_keeping(
+    project: &Project,
+    dir: &Path,
+    previous_files: &BTreeSet<PathBuf>,
+    held_back: &[HeldBackObject],
+) -> Result<SaveReport, SaveError> {
+    let rendered = render(project, held_back)?;
     let mut report = SaveReport {
         files: rendered.keys().cloned().collect(),
         ..SaveReport::default()
@@ -75,7 +89,10 @@ pub fn save_project(
             report.written.push(relative.clone());
         }
     }
-    for relative in previous_files.difference(&report.files) {
+    let removable = previous_files
+        .difference(&report.files)
+        .filter(|file| !held_back.iter().any(|object| object.owns(file)));
+    for relative in removable {
         let path = dir.join(relative);
         match std::fs::remove_file(&path) {
             Ok(()) => report.removed.push(relative.clone()),
@@ -96,7 +113,10 @@ pub fn save_project(
 }
 
 /// Renders every file of the project, keyed by its path relative to the project folder.
-fn render(project: &Project) -> Result<BTreeMap<PathBuf, String>, SaveError> {
+fn render(
+    project: &Project,
+    held_back: &[HeldBackObject],
+) -> Result<BTreeMap<PathBuf, String>, SaveError> {
     let mut files = BTreeMap::new();
     let mut entries = Vec::new();
     check_unique_object_names(&project.application)?;
@@ -106,6 +126,7 @@ fn render(project: &Project) -> Result<BTreeMap<PathBuf, String>, SaveError> {
         &mut entries,
         &mut files,
     )?;
+    keep_held_back_entries(&project.application, held_back, &mut entries)?;
 
     let manifest = Manifest {
         format_version: FORMAT_VERSION,
@@ -190,6 +211,36 @@ fn render_object(
                 files.insert(st_file, text.to_owned());
             }
         }
+    }
+    Ok(())
+}
+
+/// Puts the entry of every held-back object after the last entry of its folder (at the end
+/// when the folder is gone, so the entry is still there to be fixed by hand).
+fn keep_held_back_entries(
+    root: &Folder,
+    held_back: &[HeldBackObject],
+    entries: &mut Vec<String>,
+) -> Result<(), SaveError> {
+    for object in held_back {
+        if let Some(other) = root.object(&object.name) {
+            return Err(SaveError::Invalid(format!(
+                "'{}' takes the name of '{}', which failed to load and is kept as it is on \
+                 disk; rename one of them",
+                other.name(),
+                object.entry
+            )));
+        }
+        let folder = folder_entry(&object.folder);
+        let position = if object.folder.is_empty() {
+            entries.len()
+        } else {
+            entries
+                .iter()
+                .rposition(|entry| entry.starts_with(&folder))
+                .map_or(entries.len(), |last| last + 1)
+        };
+        entries.insert(position, object.entry.clone());
     }
     Ok(())
 }

@@ -24,6 +24,8 @@ pub enum RefusalText {
     EditBadTextRange,
     EditMoveIntoItself,
     EditKindChanged,
+    EditNotNetworks,
+    EditNetworkRangeOutOfRange,
     LitUnknownBase,
     LitNoDigits,
     LitBadDigitBinary,
@@ -108,6 +110,14 @@ impl RefusalText {
                 ("a folder cannot be moved into itself", "文件夹不能移入自身")
             }
             Self::EditKindChanged => ("'{name}' cannot change its kind", "“{name}”不能更改其种类"),
+            Self::EditNotNetworks => (
+                "the body of {name} is not a Ladder or Function Block Diagram",
+                "{name} 的实现不是梯形图或功能块图",
+            ),
+            Self::EditNetworkRangeOutOfRange => (
+                "cannot replace {remove} networks at position {at}: the body has {len} networks",
+                "无法替换位置 {at} 起的 {remove} 个网络：该实现只有 {len} 个网络",
+            ),
             Self::LitUnknownBase => (
                 "'{base}#' is not a base; use 2#, 8# or 16#",
                 "“{base}#”不是进制；请使用 2#、8# 或 16#",

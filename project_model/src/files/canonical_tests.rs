@@ -1,0 +1,112 @@
+use super::super::layout::object_toml;
+use crate::{Object, Pou};
+
+/// The canonical text of the POU read from `text`, checked to read back equal.
+#[track_caller]
+fn canonical(text: &str) -> String {
+    let pou: Pou = toml::from_str(text).unwrap();
+    let saved = object_toml(&Object::Pou(pou.clone())).unwrap();
+    let again: Pou = toml::from_str(&saved).unwrap();
+    assert_eq!(again, pou, "{saved}");
+    saved
+}
+
+#[test]
+fn an_ld_network_is_saved_as_an_indented_tree_one_element_a_line() {
+    // The same body written compactly, one network a line.
+    let compact = r#"kind = "program"
+body = { language = "ld", network = [{ title = "Start", label = "Start", rung = [{ type = "operand", id = 1, text = "start" }, { type = "parallel", id = 2, branch = [{ rung = [{ type = "operand", id = 3, text = "b" }] }, { rung = [{ type = "operand", id = 4, text = "c", negated = true }] }] }, { type = "block", id = 5, type_name = "TON", instance = "t", input = [{ pin = "IN" }, { pin = "PT", source = [{ type = "operand", id = 6, text = "T#1s" }] }], output = [{ pin = "Q" }, { pin = "ET", assign = "elapsed" }] }], output = [{ type = "coil", id = 7, variable = "q", kind = "set" }, { type = "branch", id = 8, rung = [{ type = "operand", id = 9, text = "e" }], output = [{ type = "return", id = 10 }] }] }, { label = "Done" }] }
+"#;
+    let expected = r#"kind = "program"
+
+[body]
+language = "ld"
+
+[[body.network]]
+title = "Start"
+label = "Start"
+rung = [
+    { type = "operand", id = 1, text = "start" },
+    { type = "parallel", id = 2, branch = [
+        { rung = [{ type = "operand", id = 3, text = "b" }] },
+        { rung = [{ type = "operand", id = 4, text = "c", negated = true }] },
+    ] },
+    { type = "block", id = 5, type_name = "TON", instance = "t", input = [
+        { pin = "IN" },
+        { pin = "PT", source = [{ type = "operand", id = 6, text = "T#1s" }] },
+    ], output = [{ pin = "Q" }, { pin = "ET", assign = "elapsed" }] },
+]
+output = [
+    { type = "coil", id = 7, variable = "q", kind = "set" },
+    { type = "branch", id = 8, rung = [
+        { type = "operand", id = 9, text = "e" },
+    ], output = [{ type = "return", id = 10 }] },
+]
+
+[[body.network]]
+label = "Done"
+"#;
+    assert_eq!(canonical(compact), expected);
+    assert_eq!(canonical(expected), expected);
+}
+
+#[test]
+fn short_lists_inside_an_element_stay_on_its_line() {
+    let text = r#"kind = "function_block"
+
+[body]
+language = "fbd"
+
+[[body.network]]
+rung = [
+    { type = "operand", id = 1, text = "x" },
+    { type = "block", id = 2, type_name = "ADD", input = [{ pin = "IN1" }, { pin = "IN2" }] },
+]
+"#;
+    assert_eq!(canonical(text), text);
+}
+
+#[test]
+fn texts_with_line_breaks_and_quotes_read_back_equal() {
+    let text = r#"kind = "program"
+body = { language = "ld", network = [{ comment = "two\nlines", rung = [{ type = "operand", id = 1, text = "a\n'b' \"c\"\\" }, { type = "operand", id = 2, text = "x" }] }] }
+"#;
+    let saved = canonical(text);
+    assert!(saved.contains("rung = [\n"), "{saved}");
+}
+
+/// The `toml` examples of section 4.1 of `docs/project-format.md`, without their comments.
+fn documented_networks() -> Vec<String> {
+    let document = include_str!("../../../docs/project-format.md");
+    let start = document
+        .find("### 4.1 LD and FBD networks")
+        .expect("section 4.1");
+    let section = &document[start..];
+    let end = section[4..]
+        .find("\n### ")
+        .map_or(section.len(), |end| end + 4);
+    section[..end]
+        .split("```toml\n")
+        .skip(1)
+        .filter_map(|block| block.split("```").next())
+        .map(|block| {
+            block
+                .lines()
+                .map(|line| match line.find("  # ") {
+                    Some(comment) => line[..comment].trim_end(),
+                    None => line,
+                })
+                .fold(String::new(), |text, line| text + line + "\n")
+        })
+        .collect()
+}
+
+#[test]
+fn the_documented_networks_are_canonical() {
+    let examples = documented_networks();
+    assert_eq!(examples.len(), 2);
+    for example in examples {
+        let text = format!("kind = \"program\"\n\n[body]\nlanguage = \"ld\"\n\n{example}");
+        assert_eq!(canonical(&text), text);
+    }
+}
