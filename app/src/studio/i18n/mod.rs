@@ -45,6 +45,8 @@ pub enum Text {
     SaveFailed,
     SaveAsRefused,
     Opened,
+    /// The status after opening a project some of whose objects could not be loaded.
+    OpenedPartly,
     ReadOnly,
     Declarations,
     Implementation,

@@ -47,6 +47,10 @@ impl Text {
                 "该文件夹已包含项目，请选择空文件夹",
             ),
             Self::Opened => ("Opened", "已打开"),
+            Self::OpenedPartly => (
+                "Opened {name}; {count} object(s) could not be loaded and stay unchanged on disk (see Messages)",
+                "已打开 {name}；{count} 个对象无法加载，其文件保持不变（见消息窗口）",
+            ),
             Self::ReadOnly => ("read-only", "只读"),
             Self::Declarations => ("Declarations", "声明"),
             Self::Implementation => ("Implementation", "实现"),

@@ -22,7 +22,7 @@ impl Studio {
             Ok(session) => {
                 let shared = &mut self.shared;
                 shared.online.logout();
-                shared.problems = session.warnings.clone();
+                shared.problems = session.load_problems.clone();
                 shared.failed_dir = None;
                 shared.selection = None;
                 shared.last_build = None;
@@ -38,11 +38,22 @@ impl Studio {
                     .as_ref()
                     .and_then(|recovery| recovery.find(dir))
                     .filter(|found| found.project != session.project);
-                self.report(StatusMessage::info(format!(
-                    "{} {}",
-                    Text::Opened.get(language),
-                    session.title()
-                )));
+                let status = if session.held_back.is_empty() {
+                    StatusMessage::info(format!(
+                        "{} {}",
+                        Text::Opened.get(language),
+                        session.title()
+                    ))
+                } else {
+                    StatusMessage::error(Text::OpenedPartly.fill(
+                        language,
+                        &[
+                            ("name", &session.title()),
+                            ("count", &session.held_back.len().to_string()),
+                        ],
+                    ))
+                };
+                self.report(status);
                 self.shared.session = Some(session);
             }
             Err(error) => {
