@@ -1,0 +1,526 @@
+//! The Structured Text generated for small networks, as expect-test snapshots
+//! (`UPDATE_EXPECT=1 cargo test -p compiler lower` rewrites them after a deliberate change),
+//! and the findings located at elements.
+
+use expect_test::{Expect, expect};
+use project_model::{
+    BlockCall, BlockInput, BlockOutput, Body, Branch, Coil, CoilKind, Edge, ElementId, FlowNode,
+    Network, NetworkOutput, Object, Operand, Parallel, Project,
+};
+
+use super::{ProbeKind, lower_project};
+use crate::{CompileError, SourceProject, compile_project};
+
+pub(crate) fn contact(id: u32, text: &str) -> FlowNode {
+    FlowNode::Operand(Operand {
+        id: ElementId(id),
+        text: text.into(),
+        ..Operand::default()
+    })
+}
+
+fn closed(id: u32, text: &str) -> FlowNode {
+    FlowNode::Operand(Operand {
+        id: ElementId(id),
+        text: text.into(),
+        negated: true,
+        ..Operand::default()
+    })
+}
+
+fn edge(id: u32, text: &str, edge: Edge) -> FlowNode {
+    FlowNode::Operand(Operand {
+        id: ElementId(id),
+        text: text.into(),
+        edge,
+        ..Operand::default()
+    })
+}
+
+fn coil(id: u32, variable: &str, kind: CoilKind) -> NetworkOutput {
+    NetworkOutput::Coil(Coil {
+        id: ElementId(id),
+        variable: variable.into(),
+        kind,
+    })
+}
+
+fn parallel(id: u32, branches: Vec<Vec<FlowNode>>) -> FlowNode {
+    FlowNode::Parallel(Parallel {
+        id: ElementId(id),
+        branches: branches.into_iter().map(|rung| Branch { rung }).collect(),
+    })
+}
+
+fn input(pin: &str, source: Vec<FlowNode>) -> BlockInput {
+    BlockInput {
+        pin: pin.into(),
+        source,
+        ..BlockInput::default()
+    }
+}
+
+fn output(pin: &str, assign: &str) -> BlockOutput {
+    BlockOutput {
+        pin: pin.into(),
+        assign: assign.into(),
+        ..BlockOutput::default()
+    }
+}
+
+fn block(
+    id: u32,
+    type_name: &str,
+    instance: &str,
+    inputs: Vec<BlockInput>,
+    outputs: Vec<BlockOutput>,
+) -> FlowNode {
+    FlowNode::Block(BlockCall {
+        id: ElementId(id),
+        type_name: type_name.into(),
+        instance: instance.into(),
+        inputs,
+        outputs,
+    })
+}
+
+fn network(rung: Vec<FlowNode>, outputs: Vec<NetworkOutput>) -> Network {
+    Network {
+        rung,
+        outputs,
+        ..Network::default()
+    }
+}
+
+/// A project of `source` whose POU `Main` gets the LD body `networks`.
+pub(crate) fn project_with(source: &str, networks: Vec<Network>) -> Project {
+    let built = SourceProject::new(source);
+    let mut project = built.project;
+    if let Some(Object::Pou(main)) = project.application.object_mut("Main") {
+        main.body = Body::Ld { networks };
+    }
+    project
+}
+
+const DECLARATIONS: &str = "PROGRAM Main
+VAR a, b, c, d, q, r, s : BOOL; x, y : INT; t : TON; END_VAR
+END_PROGRAM
+";
+
+/// The lowered text of `networks` in `DECLARATIONS`, after the hidden declarations; the
+/// text must check without errors.
+#[track_caller]
+fn check_lowering(networks: Vec<Network>, expect: Expect) {
+    let project = project_with(DECLARATIONS, networks);
+    let lowered = lower_project(&project);
+    let body = &lowered.bodies[0];
+    let Some(Object::Pou(main)) = lowered.project.application.object("Main") else {
+        panic!("no Main");
+    };
+    let hidden: Vec<String> = main
+        .variables
+        .iter()
+        .filter(|v| v.name.contains("__"))
+        .map(|v| format!("{} : {};\n", v.name, v.ty))
+        .collect();
+    expect.assert_eq(&format!("{}---\n{}", hidden.concat(), body.text));
+    let errors: Vec<String> = crate::sema::check_project(&project)
+        .into_iter()
+        .filter(|d| d.diagnostic.severity == crate::Severity::Error)
+        .map(|d| d.diagnostic.message)
+        .collect();
+    assert!(errors.is_empty(), "{errors:#?}");
+}
+
+#[test]
+fn a_series_rung_with_one_coil_is_the_assignment_a_user_writes() {
+    check_lowering(
+        vec![network(
+            vec![contact(1, "a"), closed(2, "b")],
+            vec![coil(3, "q", CoilKind::Normal)],
+        )],
+        expect![[r#"
+            ---
+            q := a AND NOT b;
+        "#]],
+    );
+}
+
+#[test]
+fn parallel_contacts_are_ored_and_several_coils_read_the_power_once() {
+    check_lowering(
+        vec![network(
+            vec![
+                contact(1, "a"),
+                parallel(
+                    2,
+                    vec![vec![contact(3, "b")], vec![closed(4, "c"), contact(5, "d")]],
+                ),
+            ],
+            vec![
+                coil(6, "q", CoilKind::Set),
+                coil(7, "a", CoilKind::Reset),
+                coil(8, "r", CoilKind::Negated),
+            ],
+        )],
+        expect![[r#"
+            __e2 : BOOL;
+            ---
+            __e2 := a AND (b OR NOT c AND d);
+            IF __e2 THEN q := TRUE; END_IF;
+            IF __e2 THEN a := FALSE; END_IF;
+            r := NOT __e2;
+        "#]],
+    );
+}
+
+#[test]
+fn edge_contacts_and_coils_update_their_trigger_every_scan() {
+    check_lowering(
+        vec![network(
+            vec![contact(1, "a"), edge(2, "b", Edge::Rising)],
+            vec![
+                coil(3, "q", CoilKind::Falling),
+                NetworkOutput::Branch {
+                    id: ElementId(4),
+                    rung: vec![edge(5, "c", Edge::Falling)],
+                    outputs: vec![coil(6, "r", CoilKind::Normal)],
+                },
+            ],
+        )],
+        expect![[r#"
+            __e2_trig : R_TRIG;
+            __e2 : BOOL;
+            __e3_trig : F_TRIG;
+            __e5_trig : F_TRIG;
+            ---
+            __e2_trig(CLK := b);
+            __e2 := a AND __e2_trig.Q;
+            __e3_trig(CLK := __e2);
+            q := __e3_trig.Q;
+            __e5_trig(CLK := c);
+            r := __e2 AND __e5_trig.Q;
+        "#]],
+    );
+}
+
+#[test]
+fn a_timer_box_takes_the_power_and_passes_its_output_on() {
+    check_lowering(
+        vec![network(
+            vec![
+                contact(1, "a"),
+                block(
+                    2,
+                    "TON",
+                    "t",
+                    vec![input("IN", vec![]), input("PT", vec![contact(3, "T#5s")])],
+                    vec![output("Q", ""), output("ET", "")],
+                ),
+            ],
+            vec![coil(4, "q", CoilKind::Normal)],
+        )],
+        expect![[r#"
+            ---
+            t(IN := a, PT := T#5s);
+            q := t.Q;
+        "#]],
+    );
+}
+
+#[test]
+fn a_box_with_en_runs_only_when_enabled_and_its_eno_is_the_enable() {
+    check_lowering(
+        vec![network(
+            vec![
+                contact(1, "a"),
+                block(
+                    2,
+                    "ADD",
+                    "",
+                    vec![
+                        input("EN", vec![]),
+                        input("IN1", vec![contact(3, "x")]),
+                        input("IN2", vec![contact(4, "1")]),
+                    ],
+                    vec![output("ENO", "s"), output("OUT", "y")],
+                ),
+            ],
+            vec![coil(5, "q", CoilKind::Normal)],
+        )],
+        expect![[r#"
+            __e2_EN : BOOL;
+            ---
+            __e2_EN := a;
+            IF __e2_EN THEN
+                y := x + 1;
+            END_IF;
+            s := __e2_EN;
+            q := __e2_EN;
+        "#]],
+    );
+}
+
+#[test]
+fn fbd_operators_nest_as_expressions_and_functions_are_called_by_their_pins() {
+    check_lowering(
+        vec![network(
+            vec![block(
+                1,
+                "GT",
+                "",
+                vec![
+                    input(
+                        "IN1",
+                        vec![block(
+                            2,
+                            "LIMIT",
+                            "",
+                            vec![
+                                input("MN", vec![contact(3, "0")]),
+                                input(
+                                    "IN",
+                                    vec![block(
+                                        4,
+                                        "MUL",
+                                        "",
+                                        vec![
+                                            input("IN1", vec![contact(5, "x")]),
+                                            input("IN2", vec![contact(6, "-2")]),
+                                        ],
+                                        vec![output("OUT", "")],
+                                    )],
+                                ),
+                                input("MX", vec![contact(7, "100")]),
+                            ],
+                            vec![output("OUT", "y")],
+                        )],
+                    ),
+                    input("IN2", vec![contact(8, "10")]),
+                ],
+                vec![output("OUT", "")],
+            )],
+            vec![coil(9, "q", CoilKind::Normal)],
+        )],
+        expect![[r#"
+            ---
+            y := LIMIT(MN := 0, IN := x * (-2), MX := 100);
+            q := y > 10;
+        "#]],
+    );
+}
+
+#[test]
+fn jumps_go_to_labels_forwards_and_backwards_and_return_returns() {
+    let mut second = network(vec![contact(3, "b")], vec![coil(4, "q", CoilKind::Normal)]);
+    second.label = "Skip".into();
+    check_lowering(
+        vec![
+            network(
+                vec![contact(1, "a")],
+                vec![NetworkOutput::Jump {
+                    id: ElementId(2),
+                    label: "Skip".into(),
+                }],
+            ),
+            second,
+            network(
+                vec![contact(5, "c")],
+                vec![NetworkOutput::Return { id: ElementId(6) }],
+            ),
+        ],
+        expect![[r#"
+            ---
+            IF a THEN JMP Skip; END_IF;
+            Skip:
+            q := b;
+            IF c THEN RETURN; END_IF;
+        "#]],
+    );
+}
+
+#[test]
+fn a_box_inside_a_branch_gets_the_stored_power_and_the_branches_are_ored() {
+    check_lowering(
+        vec![network(
+            vec![
+                contact(1, "a"),
+                parallel(
+                    2,
+                    vec![
+                        vec![contact(3, "b")],
+                        vec![block(
+                            4,
+                            "TON",
+                            "t",
+                            vec![input("IN", vec![]), input("PT", vec![contact(5, "T#1s")])],
+                            vec![output("Q", "r")],
+                        )],
+                    ],
+                ),
+            ],
+            vec![coil(6, "q", CoilKind::Normal)],
+        )],
+        expect![[r#"
+            __e2_in : BOOL;
+            __e2_b0 : BOOL;
+            ---
+            __e2_in := a;
+            __e2_b0 := __e2_in AND b;
+            t(IN := __e2_in, PT := T#1s);
+            r := t.Q;
+            q := __e2_b0 OR t.Q;
+        "#]],
+    );
+}
+
+#[test]
+fn a_rung_costs_exactly_the_instructions_of_the_equivalent_st() {
+    let source = "PROGRAM Main\nVAR a, b, c : BOOL; END_VAR\nEND_PROGRAM\n\
+                  PROGRAM Text\nVAR a, b, c : BOOL; END_VAR\nc := a AND NOT b;\nEND_PROGRAM\n";
+    let mut project = project_with(
+        source,
+        vec![network(
+            vec![contact(1, "a"), closed(2, "b")],
+            vec![coil(3, "c", CoilKind::Normal)],
+        )],
+    );
+    project.tasks = vec![project_model::Task {
+        name: "MainTask".into(),
+        kind: project_model::TaskKind::Freewheeling,
+        priority: 1,
+        watchdog: None,
+        programs: vec!["Main".into(), "Text".into()],
+    }];
+    let image = match compile_project(&project) {
+        Ok(image) => image,
+        Err(error) => panic!("{error}: {error:?}"),
+    };
+    let code = |name: &str| {
+        let pou = image.pous.iter().find(|pou| pou.name == name);
+        pou.map(|pou| program_image::listing(&pou.code))
+            .unwrap_or_default()
+    };
+    assert!(!code("Main").is_empty());
+    assert_eq!(code("Main"), code("Text"));
+}
+
+#[test]
+fn a_type_error_in_an_operand_is_found_at_its_element_in_the_user_s_words() {
+    let project = project_with(
+        DECLARATIONS,
+        vec![
+            network(vec![contact(1, "a")], vec![coil(2, "q", CoilKind::Normal)]),
+            network(
+                vec![contact(3, "a"), contact(4, "x")],
+                vec![
+                    coil(5, "q", CoilKind::Normal),
+                    coil(6, "r", CoilKind::Normal),
+                ],
+            ),
+        ],
+    );
+    let Err(CompileError::Diagnostics(found)) = compile_project(&project) else {
+        panic!("an INT contact compiled");
+    };
+    let errors: Vec<_> = found
+        .iter()
+        .filter(|d| d.diagnostic.severity == crate::Severity::Error)
+        .collect();
+    assert!(!errors.is_empty());
+    for error in &errors {
+        let place = error.element.as_ref().expect("located at an element");
+        assert_eq!(
+            error.file,
+            std::path::PathBuf::from("application/Main.pou.toml")
+        );
+        assert_eq!(
+            (place.network, place.element),
+            (1, Some(ElementId(4))),
+            "{error:?}"
+        );
+        assert!(
+            !error.diagnostic.message.contains("__"),
+            "{}",
+            error.diagnostic.message
+        );
+    }
+}
+
+#[test]
+fn a_jump_to_a_missing_label_and_a_name_with_two_underscores_are_refused_at_their_elements() {
+    let project = project_with(
+        DECLARATIONS,
+        vec![network(
+            vec![contact(1, "a__b")],
+            vec![NetworkOutput::Jump {
+                id: ElementId(2),
+                label: "Nowhere".into(),
+            }],
+        )],
+    );
+    let found = crate::sema::check_project(&project);
+    let at = |id: u32| {
+        found
+            .iter()
+            .find(|d| d.element.as_ref().and_then(|p| p.element) == Some(ElementId(id)))
+            .map(|d| (d.diagnostic.code, d.diagnostic.message.clone()))
+    };
+    assert!(
+        matches!(at(1), Some((crate::Code::ReservedName, _))),
+        "{found:#?}"
+    );
+    assert!(
+        matches!(at(2), Some((crate::Code::InvalidNetwork, message)) if message.contains("Nowhere")),
+        "{found:#?}"
+    );
+    let mut declared = project_with(DECLARATIONS, Vec::new());
+    if let Some(Object::Pou(main)) = declared.application.object_mut("Main") {
+        main.variables[0].name = "a__".into();
+    }
+    let found = crate::sema::check_project(&declared);
+    assert!(
+        found
+            .iter()
+            .any(|d| d.diagnostic.code == crate::Code::ReservedName
+                && d.declaration.as_deref() == Some("a__")),
+        "{found:#?}"
+    );
+}
+
+#[test]
+fn every_element_tells_where_its_live_value_is_read() {
+    let project = project_with(
+        DECLARATIONS,
+        vec![network(
+            vec![contact(1, "a"), edge(2, "b", Edge::Rising)],
+            vec![
+                coil(3, "q", CoilKind::Normal),
+                coil(4, "r", CoilKind::Normal),
+            ],
+        )],
+    );
+    let lowered = lower_project(&project);
+    let probes: Vec<String> = lowered.bodies[0]
+        .probes
+        .iter()
+        .map(|probe| {
+            let kind = match probe.kind {
+                ProbeKind::Power => "power",
+                ProbeKind::Value => "value",
+            };
+            format!(
+                "{}:{} {kind} {}",
+                probe.network, probe.element.0, probe.path
+            )
+        })
+        .collect();
+    expect![[r#"
+        0:1 value a
+        0:2 value b
+        0:2 power __e2_trig.Q
+        0:2 power __e2
+        0:3 value q
+        0:4 value r"#]]
+    .assert_eq(&probes.join("\n"));
+}
