@@ -54,10 +54,10 @@ fn network(n: usize, id: &mut u32) -> Network {
             },
         ],
     }));
-    if n % 3 == 0 {
+    if n.is_multiple_of(3) {
         rung.push(contact(id, format!("e[{at}]"), false, Edge::Rising));
     }
-    if n % 10 == 0 {
+    if n.is_multiple_of(10) {
         *id += 1;
         let block = *id;
         let pt = contact(id, "T#100ms".to_owned(), false, Edge::None);
