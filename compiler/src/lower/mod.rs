@@ -87,6 +87,9 @@ pub enum ProbeKind {
     /// The value of the variable the element reads or writes (a contact's or coil's variable,
     /// a box's pin).
     Value,
+    /// The output of the element's (or pin's) edge detection: TRUE for the one cycle of the
+    /// edge.
+    Edge,
 }
 
 /// Something the lowering cannot compile, at an element.

@@ -175,13 +175,18 @@ impl<'c> BodyLowering<'c> {
             owner,
             suffix,
             "BOOL",
-            format!("the {what} of element {}", owner.0),
+            format!("the {what} element {}", owner.0),
         );
         let statement =
             frag!(&name, " := ", value.frag.clone(), ";").mark(self.network, Some(owner), None);
         self.emit(statement);
-        let pin = suffix.strip_prefix('_').filter(|pin| *pin == "EN");
-        self.probe(owner, pin, ProbeKind::Power, name.clone());
+        // The power leaving the element, and the enable of a box, are what the studio shows;
+        // the power into a group or a branch's result it derives from its neighbours.
+        match suffix {
+            "" => self.probe(owner, None, ProbeKind::Power, name.clone()),
+            "_EN" => self.probe(owner, Some("EN"), ProbeKind::Power, name.clone()),
+            _ => {}
+        }
         Value::stable(Fragment::plain(name), true, Some(owner))
     }
 
@@ -308,7 +313,7 @@ impl<'c> BodyLowering<'c> {
             frag!(&name, "(CLK := ", clock.frag, ");").mark(self.network, Some(element), pin);
         self.emit(statement);
         let output = format!("{name}.Q");
-        self.probe(element, pin, ProbeKind::Power, output.clone());
+        self.probe(element, pin, ProbeKind::Edge, output.clone());
         Value::stable(Fragment::plain(output), true, Some(element))
     }
 
@@ -344,7 +349,12 @@ impl<'c> BodyLowering<'c> {
                             .into_iter()
                             .enumerate()
                             .map(|(at, value)| {
-                                self.settle(value, parallel.id, &format!("_b{at}"), "branch")
+                                self.settle(
+                                    value,
+                                    parallel.id,
+                                    &format!("_b{at}"),
+                                    "power flow of a branch of",
+                                )
                             })
                             .collect();
                     }
@@ -503,7 +513,7 @@ impl<'c> BodyLowering<'c> {
             body(self);
             return Some(enable);
         }
-        let enable = self.settle(enable, block.id, "_EN", "EN input");
+        let enable = self.settle(enable, block.id, "_EN", "EN input of");
         let open =
             frag!("IF ", enable.frag.clone(), " THEN").mark(self.network, Some(block.id), None);
         self.emit(open);
@@ -710,7 +720,13 @@ impl<'c> BodyLowering<'c> {
                         &output.assign,
                         "the assigned variable",
                     );
-                    assigned = Some(Value::stable(target.frag.clone(), true, Some(block.id)));
+                    // The variable is the user's: a later coil may write it, so it is stored
+                    // like any expression when it is read more than once.
+                    assigned = Some(Value {
+                        kind: Kind::Expr,
+                        boolean: true,
+                        ..Value::stable(target.frag.clone(), true, Some(block.id))
+                    });
                     frag!(target.frag, " := ", expression.frag, ";")
                 }
                 None => frag!(expression.frag, ";"),
@@ -733,7 +749,7 @@ impl<'c> BodyLowering<'c> {
                 .owner
                 .or_else(|| outputs.first().map(NetworkOutput::id));
             match owner {
-                Some(owner) => self.settle(power, owner, "", "power flow"),
+                Some(owner) => self.settle(power, owner, "", "power flow after"),
                 None => power,
             }
         } else {

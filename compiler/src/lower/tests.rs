@@ -508,6 +508,7 @@ fn every_element_tells_where_its_live_value_is_read() {
             let kind = match probe.kind {
                 ProbeKind::Power => "power",
                 ProbeKind::Value => "value",
+                ProbeKind::Edge => "edge",
             };
             format!(
                 "{}:{} {kind} {}",
@@ -518,9 +519,38 @@ fn every_element_tells_where_its_live_value_is_read() {
     expect![[r#"
         0:1 value a
         0:2 value b
-        0:2 power __e2_trig.Q
+        0:2 edge __e2_trig.Q
         0:2 power __e2
         0:3 value q
         0:4 value r"#]]
     .assert_eq(&probes.join("\n"));
+}
+
+#[test]
+fn a_finding_about_generated_text_names_the_power_flow_never_a_hidden_name() {
+    let project = project_with(
+        DECLARATIONS,
+        vec![network(
+            vec![contact(1, "a"), edge(2, "x", Edge::Rising)],
+            vec![coil(3, "q", CoilKind::Normal)],
+        )],
+    );
+    let found = crate::sema::check_project(&project);
+    let messages: Vec<String> = found
+        .iter()
+        .filter(|d| d.diagnostic.severity == crate::Severity::Error)
+        .map(|d| {
+            let place = d
+                .element
+                .as_ref()
+                .map(ToString::to_string)
+                .unwrap_or_default();
+            format!(
+                "{place}: {}: {}",
+                d.diagnostic.code.id(),
+                d.diagnostic.message
+            )
+        })
+        .collect();
+    expect!["Main:1:2: E0104: input 'CLK' of 'the rising edge detection of element 2' expects BOOL, found INT; IEC converts only to wider types, so write INT_TO_BOOL(…)"].assert_eq(&messages.join("\n"));
 }
