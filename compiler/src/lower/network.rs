@@ -222,12 +222,15 @@ impl<'c> BodyLowering<'c> {
         }
         value.frag = value.frag.mark(self.network, Some(operand.id), None);
         match incoming {
-            Some(power) => {
+            // The AND belongs to the contact that does it, so a finding about it (a contact
+            // that is not a BOOL) is shown there.
+            Some(power) if !power.is_rail() => {
                 let mut value = power.and(value);
+                value.frag = value.frag.mark(self.network, Some(operand.id), None);
                 value.owner = Some(operand.id);
                 value
             }
-            None => value,
+            Some(_) | None => value,
         }
     }
 
