@@ -695,3 +695,220 @@ proptest! {
         }
     }
 }
+
+/// `FUNCTION Both` (a AND b), the action `Counter.Tick` (count + 1 on a rising `pulse`,
+/// through an ADD box with EN) and the method `Counter.Reset` (MOVE 0 into count when `now`,
+/// returning `now` as its result), all drawn in LD, run from an ST program.
+fn members_project(cycles: u64) -> Simulation {
+    let source = "FUNCTION Both : BOOL VAR_INPUT a, b : BOOL; END_VAR END_FUNCTION
+FUNCTION_BLOCK Counter VAR_INPUT pulse : BOOL; END_VAR VAR_OUTPUT count : INT; END_VAR
+METHOD Reset : BOOL VAR_INPUT now : BOOL; END_VAR END_METHOD
+ACTION Tick: END_ACTION
+END_FUNCTION_BLOCK
+PROGRAM Main VAR c : Counter; i : INT; ab : BOOL; r : BOOL; END_VAR
+i := i + 1;
+c.pulse := (i MOD 2) = 0;
+c.Tick();
+r := c.Reset(now := i = 7);
+ab := Both(a := i > 2, b := i < 5);
+END_PROGRAM
+";
+    let mut project = compiler::SourceProject::new(source).project;
+    if let Some(Object::Pou(both)) = project.application.object_mut("Both") {
+        both.body = Body::Ld {
+            networks: vec![rung(
+                vec![no(1, "a"), no(2, "b")],
+                vec![coil(3, "Both", CoilKind::Normal)],
+            )],
+        };
+    }
+    let Some(Object::Pou(counter)) = project.application.object_mut("Counter") else {
+        panic!("no Counter");
+    };
+    counter.actions[0].body = Body::Ld {
+        networks: vec![rung(
+            vec![
+                contact(1, "pulse", false, Edge::Rising),
+                FlowNode::Block(BlockCall {
+                    id: ElementId(2),
+                    type_name: "ADD".into(),
+                    instance: String::new(),
+                    inputs: vec![
+                        input("EN", vec![]),
+                        input("IN1", vec![no(3, "count")]),
+                        input("IN2", vec![no(4, "1")]),
+                    ],
+                    outputs: vec![output("ENO", ""), output("OUT", "count")],
+                }),
+            ],
+            vec![],
+        )],
+    };
+    counter.methods[0].body = Body::Ld {
+        networks: vec![rung(
+            vec![
+                no(1, "now"),
+                FlowNode::Block(BlockCall {
+                    id: ElementId(2),
+                    type_name: "MOVE".into(),
+                    instance: String::new(),
+                    inputs: vec![input("EN", vec![]), input("IN", vec![no(3, "0")])],
+                    outputs: vec![output("ENO", ""), output("OUT", "count")],
+                }),
+            ],
+            vec![coil(4, "Reset", CoilKind::Normal)],
+        )],
+    };
+    let image = match compiler::compile_project(&project) {
+        Ok(image) => image,
+        Err(error) => panic!("{error}: {error:?}"),
+    };
+    let mut simulation = Simulation::new(image).expect("the image loads");
+    simulation.run(cycles);
+    assert!(simulation.faults().is_empty(), "{:?}", simulation.faults());
+    simulation
+}
+
+#[test]
+fn functions_methods_and_actions_drawn_in_ld_run_like_their_st() {
+    let read = |simulation: &Simulation, path: &str| {
+        runtime::value::read(simulation.engine(), path)
+            .unwrap()
+            .to_string()
+    };
+    // Cycle 3: Both(3 > 2, 3 < 5); one rising pulse (cycle 2) counted.
+    let early = members_project(3);
+    assert_eq!(read(&early, "Main.ab"), "TRUE");
+    assert_eq!(read(&early, "Main.c.count"), "1");
+    // Pulses rise at cycles 2, 4, 6 (count 3), the reset at 7 clears it, then 8 and 10 count.
+    let late = members_project(10);
+    assert_eq!(read(&late, "Main.ab"), "FALSE");
+    assert_eq!(read(&late, "Main.c.count"), "2");
+    assert_eq!(read(&late, "Main.r"), "FALSE");
+    let at_reset = members_project(7);
+    assert_eq!(read(&at_reset, "Main.r"), "TRUE");
+    assert_eq!(read(&at_reset, "Main.c.count"), "0");
+}
+
+#[test]
+fn fbd_pins_negate_and_detect_edges_and_functions_nest() {
+    // q := AND(IN1 := NOT a, IN2 := R_TRIG(b)); y := SEL(G := c, IN0 := 10, IN1 := MAX(x, 3))
+    // with x counting cycles; r := GT(y, 4), the SEL box chained into the GT box.
+    let a = bits("0010011000");
+    let b = bits("0110101101");
+    let c = bits("1100110011");
+    let and_box = FlowNode::Block(BlockCall {
+        id: ElementId(1),
+        type_name: "AND".into(),
+        instance: String::new(),
+        inputs: vec![
+            BlockInput {
+                pin: "IN1".into(),
+                negated: true,
+                source: vec![no(2, "a")],
+                ..BlockInput::default()
+            },
+            BlockInput {
+                pin: "IN2".into(),
+                edge: Edge::Rising,
+                source: vec![no(3, "b")],
+                ..BlockInput::default()
+            },
+        ],
+        outputs: vec![output("OUT", "")],
+    });
+    let max_box = FlowNode::Block(BlockCall {
+        id: ElementId(7),
+        type_name: "MAX".into(),
+        instance: String::new(),
+        inputs: vec![
+            input("IN1", vec![no(8, "x")]),
+            input("IN2", vec![no(9, "3")]),
+        ],
+        outputs: vec![output("OUT", "")],
+    });
+    let sel_box = FlowNode::Block(BlockCall {
+        id: ElementId(5),
+        type_name: "SEL".into(),
+        instance: String::new(),
+        inputs: vec![
+            input("G", vec![no(6, "c")]),
+            input("IN0", vec![no(10, "10")]),
+            input("IN1", vec![max_box]),
+        ],
+        outputs: vec![output("OUT", "y")],
+    });
+    let count = rung(
+        vec![FlowNode::Block(BlockCall {
+            id: ElementId(12),
+            type_name: "ADD".into(),
+            instance: String::new(),
+            inputs: vec![
+                input("IN1", vec![no(13, "x")]),
+                input("IN2", vec![no(14, "1")]),
+            ],
+            outputs: vec![output("OUT", "x")],
+        })],
+        vec![],
+    );
+    let networks = vec![
+        rung(vec![and_box], vec![coil(4, "q", CoilKind::Normal)]),
+        count,
+        rung(
+            vec![
+                sel_box,
+                FlowNode::Block(BlockCall {
+                    id: ElementId(11),
+                    type_name: "GT".into(),
+                    instance: String::new(),
+                    inputs: vec![input("IN1", vec![]), input("IN2", vec![no(16, "4")])],
+                    outputs: vec![output("OUT", "")],
+                }),
+            ],
+            vec![coil(15, "r", CoilKind::Normal)],
+        ),
+    ];
+    let source = format!(
+        "{}{}",
+        block_source("Ld", "", ""),
+        driver(&["Ld"], &[a.clone(), b.clone(), c.clone(), vec![false; 10]])
+    );
+    let built = compiler::SourceProject::new(&source);
+    let mut project = built.project;
+    if let Some(Object::Pou(ld)) = project.application.object_mut("Ld") {
+        ld.body = Body::Fbd { networks };
+    }
+    let image = match compiler::compile_project(&project) {
+        Ok(image) => image,
+        Err(error) => panic!("{error}: {error:?}"),
+    };
+    let mut simulation = Simulation::new(image).expect("the image loads");
+    simulation.run(11);
+    let read = |path: &str| -> Vec<bool> {
+        let text = runtime::value::read(simulation.engine(), path)
+            .unwrap()
+            .to_string();
+        text.trim_matches(|ch| ch == '[' || ch == ']')
+            .split(", ")
+            .map(|v| v == "TRUE")
+            .collect()
+    };
+    let mut previous = false;
+    let q: Vec<bool> = (0..10)
+        .map(|i| {
+            let rising = b[i] && !previous;
+            previous = b[i];
+            !a[i] && rising
+        })
+        .collect();
+    assert_eq!(read("Main.Ld_q"), q);
+    // The SEL value is assigned to y and flows on into GT's first input.
+    let r: Vec<bool> = (0..10)
+        .map(|i| {
+            let x = i as i32 + 1;
+            let y = if c[i] { x.max(3) } else { 10 };
+            y > 4
+        })
+        .collect();
+    assert_eq!(read("Main.Ld_r"), r);
+}
