@@ -79,6 +79,16 @@ impl<'c> BodyLowering<'c> {
                     Code::InvalidNetwork,
                     format!("the label '{label}' is not an identifier (letters, digits and '_')"),
                 );
+            } else if label.contains("__") {
+                self.find_at(
+                    index,
+                    None,
+                    None,
+                    Code::ReservedName,
+                    format!(
+                        "the label '{label}' contains '__', which IEC 61131-3 does not allow in names and Rivet keeps for the names it generates"
+                    ),
+                );
             } else if !self.labels.insert(label.to_lowercase()) {
                 self.find_at(
                     index,
@@ -587,6 +597,9 @@ impl<'c> BodyLowering<'c> {
         let mut first = true;
         for (value, input) in arguments {
             let Some(value) = value else { continue };
+            // An instance keeps its inputs, so each connected pin's value is read there.
+            let path = format!("{instance}.{}", input.pin);
+            self.probe(block.id, Some(&input.pin), ProbeKind::Value, path);
             if !first {
                 call.push_str(", ");
             }

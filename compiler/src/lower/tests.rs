@@ -374,17 +374,15 @@ fn a_box_inside_a_branch_gets_the_stored_power_and_the_branches_are_ored() {
     );
 }
 
-#[test]
-fn a_rung_costs_exactly_the_instructions_of_the_equivalent_st() {
-    let source = "PROGRAM Main\nVAR a, b, c : BOOL; END_VAR\nEND_PROGRAM\n\
-                  PROGRAM Text\nVAR a, b, c : BOOL; END_VAR\nc := a AND NOT b;\nEND_PROGRAM\n";
-    let mut project = project_with(
-        source,
-        vec![network(
-            vec![contact(1, "a"), closed(2, "b")],
-            vec![coil(3, "c", CoilKind::Normal)],
-        )],
+/// The listings of `Main` (drawn as `networks`) and `Text` (written as `text`), both with the
+/// variables `declarations`.
+#[track_caller]
+fn listings(declarations: &str, networks: Vec<Network>, text: &str) -> (String, String) {
+    let source = format!(
+        "PROGRAM Main\nVAR {declarations} END_VAR\nEND_PROGRAM\n\
+         PROGRAM Text\nVAR {declarations} END_VAR\n{text}\nEND_PROGRAM\n"
     );
+    let mut project = project_with(&source, networks);
     project.tasks = vec![project_model::Task {
         name: "MainTask".into(),
         kind: project_model::TaskKind::Freewheeling,
@@ -401,8 +399,52 @@ fn a_rung_costs_exactly_the_instructions_of_the_equivalent_st() {
         pou.map(|pou| program_image::listing(&pou.code))
             .unwrap_or_default()
     };
-    assert!(!code("Main").is_empty());
-    assert_eq!(code("Main"), code("Text"));
+    (code("Main"), code("Text"))
+}
+
+#[test]
+fn a_rung_costs_exactly_the_instructions_of_the_equivalent_st() {
+    let (drawn, written) = listings(
+        "a, b, c : BOOL;",
+        vec![network(
+            vec![contact(1, "a"), closed(2, "b")],
+            vec![coil(3, "c", CoilKind::Normal)],
+        )],
+        "c := a AND NOT b;",
+    );
+    assert!(!drawn.is_empty());
+    assert_eq!(drawn, written);
+    let (drawn, written) = listings(
+        "a, b, c, d, q : BOOL;",
+        vec![network(
+            vec![
+                contact(1, "a"),
+                parallel(2, vec![vec![contact(3, "b")], vec![closed(4, "c")]]),
+            ],
+            vec![coil(5, "q", CoilKind::Set)],
+        )],
+        "IF a AND (b OR NOT c) THEN q := TRUE; END_IF;",
+    );
+    assert_eq!(drawn, written);
+}
+
+#[test]
+fn a_rung_driving_several_coils_costs_no_more_than_the_st_that_repeats_its_logic() {
+    let (drawn, written) = listings(
+        "a, b, c, q, r : BOOL;",
+        vec![network(
+            vec![contact(1, "a"), closed(2, "b"), contact(3, "c")],
+            vec![
+                coil(4, "q", CoilKind::Normal),
+                coil(5, "r", CoilKind::Negated),
+            ],
+        )],
+        "q := a AND NOT b AND c; r := NOT (a AND NOT b AND c);",
+    );
+    assert!(
+        drawn.lines().count() <= written.lines().count(),
+        "drawn:\n{drawn}\nwritten:\n{written}"
+    );
 }
 
 #[test]
