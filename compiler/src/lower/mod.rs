@@ -7,9 +7,11 @@
 //! byte ranges back to networks, elements and pins, and the [`Probe`]s that say where each
 //! element's live value is read. The semantics are in `docs/graphical-semantics.md`.
 
+mod boxes;
 mod fragment;
 mod locate;
 mod network;
+mod operator;
 mod place;
 #[cfg(test)]
 mod tests;
@@ -23,7 +25,8 @@ use project_model::{Body, ElementId, Object, Pou, PouKind, Project, TextTarget};
 
 use crate::diagnostic::Code;
 use fragment::Span;
-use network::{BodyLowering, Operator};
+use network::BodyLowering;
+use operator::Operator;
 
 pub use locate::OriginMap;
 pub use place::ElementPlace;

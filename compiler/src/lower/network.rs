@@ -11,12 +11,12 @@
 use std::collections::HashSet;
 
 use project_model::{
-    BlockCall, BlockInput, CoilKind, Edge, ElementId, FlowNode, Network, NetworkOutput, Operand,
-    Parallel, VarSection, Variable,
+    CoilKind, Edge, ElementId, FlowNode, Network, NetworkOutput, Operand, Parallel, VarSection,
+    Variable,
 };
 
 use super::fragment::{Fragment, frag};
-use super::value::{Kind, Value, binary, prec};
+use super::value::{Kind, Value, prec};
 use super::{Callee, Finding, Probe, ProbeKind};
 use crate::diagnostic::Code;
 
@@ -25,13 +25,13 @@ pub(crate) struct BodyLowering<'c> {
     /// The prefix of every hidden name of this body (`__` or `__Reset__`).
     prefix: String,
     /// What a box's type name calls.
-    classify: &'c dyn Fn(&str) -> Callee,
+    pub(super) classify: &'c dyn Fn(&str) -> Callee,
     /// The labels of the body's networks, lower case.
     labels: HashSet<String>,
     /// The network being lowered.
-    network: usize,
+    pub(super) network: usize,
     /// The nesting of the statement being written, for indentation.
-    depth: usize,
+    pub(super) depth: usize,
     /// The generated statements.
     pub out: Fragment,
     /// The hidden variables, declared in the POU.
@@ -111,11 +111,17 @@ impl<'c> BodyLowering<'c> {
         }
     }
 
-    fn find(&mut self, element: ElementId, pin: Option<&str>, code: Code, message: String) {
+    pub(super) fn find(
+        &mut self,
+        element: ElementId,
+        pin: Option<&str>,
+        code: Code,
+        message: String,
+    ) {
         self.find_at(self.network, Some(element), pin, code, message);
     }
 
-    fn find_at(
+    pub(super) fn find_at(
         &mut self,
         network: usize,
         element: Option<ElementId>,
@@ -133,13 +139,19 @@ impl<'c> BodyLowering<'c> {
     }
 
     /// Writes one statement on a line of its own.
-    fn emit(&mut self, statement: Fragment) {
+    pub(super) fn emit(&mut self, statement: Fragment) {
         self.out.push_str(&"    ".repeat(self.depth));
         self.out.push(statement);
         self.out.push_str("\n");
     }
 
-    fn probe(&mut self, element: ElementId, pin: Option<&str>, kind: ProbeKind, path: String) {
+    pub(super) fn probe(
+        &mut self,
+        element: ElementId,
+        pin: Option<&str>,
+        kind: ProbeKind,
+        path: String,
+    ) {
         self.probes.push(Probe {
             network: self.network,
             element,
@@ -151,7 +163,7 @@ impl<'c> BodyLowering<'c> {
 
     /// Declares a hidden variable named after `element` and `suffix`, described in messages
     /// as `description`, and returns its name.
-    fn declare(
+    pub(super) fn declare(
         &mut self,
         element: ElementId,
         suffix: &str,
@@ -177,7 +189,13 @@ impl<'c> BodyLowering<'c> {
 
     /// Stores a BOOL expression in a hidden temporary so it can be read again, and records
     /// the temporary as the live value of the element that computed it.
-    fn settle(&mut self, value: Value, owner: ElementId, suffix: &str, what: &str) -> Value {
+    pub(super) fn settle(
+        &mut self,
+        value: Value,
+        owner: ElementId,
+        suffix: &str,
+        what: &str,
+    ) -> Value {
         if value.kind != Kind::Expr || !value.boolean {
             return value;
         }
@@ -202,7 +220,7 @@ impl<'c> BodyLowering<'c> {
 
     /// The chain's value: `incoming` (the rail, the power, or nothing for an input's own
     /// chain) passed through each element.
-    fn chain(&mut self, nodes: &[FlowNode], incoming: Option<Value>) -> Option<Value> {
+    pub(super) fn chain(&mut self, nodes: &[FlowNode], incoming: Option<Value>) -> Option<Value> {
         let mut current = incoming;
         for node in nodes {
             current = match node {
@@ -245,7 +263,7 @@ impl<'c> BodyLowering<'c> {
     }
 
     /// What the user typed into an element, as an operand of any operator.
-    fn user_value(
+    pub(super) fn user_value(
         &mut self,
         element: ElementId,
         pin: Option<&str>,
@@ -287,7 +305,7 @@ impl<'c> BodyLowering<'c> {
     }
 
     /// Refuses a generated name (with `__`) in what the user typed.
-    fn reserved(&mut self, element: ElementId, pin: Option<&str>, text: &str) {
+    pub(super) fn reserved(&mut self, element: ElementId, pin: Option<&str>, text: &str) {
         if text.contains("__") {
             self.find(
                 element,
@@ -301,7 +319,7 @@ impl<'c> BodyLowering<'c> {
     }
 
     /// Runs a hidden R_TRIG or F_TRIG on `clock` every scan and gives its output.
-    fn trigger(
+    pub(super) fn trigger(
         &mut self,
         element: ElementId,
         pin: Option<&str>,
@@ -403,359 +421,6 @@ impl<'c> BodyLowering<'c> {
             ored.owner = Some(id);
         }
         ored
-    }
-
-    /// A box: its inputs, the call (inside `IF EN` when it has EN), its outputs' assignments
-    /// right after the call, and the value it passes on (ENO, else its first output).
-    fn block(&mut self, block: &BlockCall, incoming: Option<Value>) -> Option<Value> {
-        let callee = (self.classify)(&block.type_name);
-        let has_en = block.has_en_eno();
-        // The incoming power drives the first input (EN when there is one) unless a chain of
-        // its own drives it.
-        let mut power = None;
-        if let Some(incoming) = incoming {
-            match block.inputs.first() {
-                Some(first) if first.source.is_empty() => power = Some(incoming),
-                _ if incoming.is_rail() => {}
-                _ => self.find(
-                    block.id,
-                    block.inputs.first().map(|input| input.pin.as_str()),
-                    Code::InvalidNetwork,
-                    format!(
-                        "the box '{}' gets the power flow, but its first input is driven by its own chain",
-                        block.type_name
-                    ),
-                ),
-            }
-        }
-        self.reserved(block.id, None, &block.instance);
-        // Inputs fed by boxes run first, so the power held for the first input is stored
-        // when a box runs before it is used.
-        let mut arguments: Vec<Option<Value>> = vec![None; block.inputs.len()];
-        for pass in [true, false] {
-            for (index, input) in block.inputs.iter().enumerate() {
-                if input.source.is_empty() || chain_runs_boxes(&input.source) != pass {
-                    continue;
-                }
-                if pass && let Some(held) = power.take() {
-                    power = Some(self.settle(held, block.id, "_in", "power flow into"));
-                }
-                arguments[index] = self.chain(&input.source, None);
-            }
-        }
-        if let (Some(first), Some(power)) = (arguments.first_mut(), power)
-            && first.is_none()
-        {
-            *first = Some(power);
-        }
-        let mut arguments: Vec<(Option<Value>, &BlockInput)> = arguments
-            .into_iter()
-            .zip(&block.inputs)
-            .map(|(value, input)| {
-                (
-                    value.map(|value| self.pin_input(block, input, value)),
-                    input,
-                )
-            })
-            .collect();
-        let enable = if has_en {
-            let (value, _) = arguments.remove(0);
-            Some(value.unwrap_or_else(Value::rail))
-        } else {
-            None
-        };
-        match callee {
-            Callee::Block | Callee::Program => self.instance_call(block, enable, arguments),
-            Callee::Function { operator } => self.function_call(block, enable, arguments, operator),
-            Callee::Unknown => {
-                self.find(
-                    block.id,
-                    None,
-                    Code::UnknownName,
-                    format!(
-                        "'{}' is not a function, operator, function block or program",
-                        block.type_name
-                    ),
-                );
-                None
-            }
-        }
-    }
-
-    /// A value driving an input pin, negated or through an edge trigger as the pin says.
-    fn pin_input(&mut self, block: &BlockCall, input: &BlockInput, value: Value) -> Value {
-        let mut value = value;
-        if input.edge != Edge::None {
-            value = self.trigger(block.id, Some(&input.pin), input.edge, value);
-        }
-        if input.negated {
-            value = value.not();
-        }
-        value.frag = value
-            .frag
-            .mark(self.network, Some(block.id), Some(&input.pin));
-        value
-    }
-
-    /// The value of output `index` of a called instance, negated as the pin says.
-    fn instance_output(&mut self, block: &BlockCall, instance: &str, index: usize) -> Value {
-        let output = &block.outputs[index];
-        let path = format!("{instance}.{}", output.pin);
-        self.probe(block.id, Some(&output.pin), ProbeKind::Value, path.clone());
-        let value = Value::stable(
-            Fragment::plain(path).mark(self.network, Some(block.id), Some(&output.pin)),
-            true,
-            Some(block.id),
-        );
-        if output.negated { value.not() } else { value }
-    }
-
-    /// Runs `body` as the box's statements: directly, or inside `IF enable THEN` when the box
-    /// has EN; gives the ENO (the enable, stored when it is read again) or `None` without EN.
-    fn enabled(
-        &mut self,
-        block: &BlockCall,
-        enable: Option<Value>,
-        body: impl FnOnce(&mut Self),
-    ) -> Option<Value> {
-        let Some(enable) = enable else {
-            body(self);
-            return None;
-        };
-        if enable.is_rail() {
-            body(self);
-            return Some(enable);
-        }
-        let enable = self.settle(enable, block.id, "_EN", "EN input of");
-        let open =
-            frag!("IF ", enable.frag.clone(), " THEN").mark(self.network, Some(block.id), None);
-        self.emit(open);
-        self.depth += 1;
-        body(self);
-        self.depth -= 1;
-        self.emit(Fragment::plain("END_IF;").mark(self.network, Some(block.id), None));
-        Some(enable)
-    }
-
-    /// The ENO output's assignment, outside the box's `IF`, so it is FALSE when skipped.
-    fn eno_assignment(&mut self, block: &BlockCall, eno: &Value) {
-        for output in &block.outputs {
-            if output.pin.eq_ignore_ascii_case(project_model::ENO_PIN)
-                && !output.assign.trim().is_empty()
-            {
-                let value = if output.negated {
-                    eno.not()
-                } else {
-                    eno.clone()
-                };
-                let target = self.user_value(
-                    block.id,
-                    Some(&output.pin),
-                    &output.assign,
-                    "the assigned variable",
-                );
-                let statement = frag!(target.frag, " := ", value.frag, ";").mark(
-                    self.network,
-                    Some(block.id),
-                    Some(&output.pin),
-                );
-                self.emit(statement);
-            }
-        }
-    }
-
-    /// A function block instance or program: `inst(IN := …);` then each assigned output.
-    fn instance_call(
-        &mut self,
-        block: &BlockCall,
-        enable: Option<Value>,
-        arguments: Vec<(Option<Value>, &BlockInput)>,
-    ) -> Option<Value> {
-        let instance = match block.instance.trim() {
-            // A program is called by its own name.
-            "" if (self.classify)(&block.type_name) == Callee::Program => {
-                block.type_name.trim().to_owned()
-            }
-            "" => {
-                self.find(
-                    block.id,
-                    None,
-                    Code::InvalidNetwork,
-                    format!(
-                        "the function block box '{}' has no instance",
-                        block.type_name
-                    ),
-                );
-                return None;
-            }
-            instance => instance.to_owned(),
-        };
-        let mut call = frag!(
-            Fragment::plain(instance.as_str()).mark_user(self.network, block.id, None),
-            "("
-        );
-        let mut first = true;
-        for (value, input) in arguments {
-            let Some(value) = value else { continue };
-            // An instance keeps its inputs, so each connected pin's value is read there.
-            let path = format!("{instance}.{}", input.pin);
-            self.probe(block.id, Some(&input.pin), ProbeKind::Value, path);
-            if !first {
-                call.push_str(", ");
-            }
-            first = false;
-            call.push(frag!(format!("{} := ", input.pin), value.frag).mark(
-                self.network,
-                Some(block.id),
-                Some(&input.pin),
-            ));
-        }
-        call.push_str(");");
-        let call = call.mark(self.network, Some(block.id), None);
-        let eno = self.enabled(block, enable, |this| {
-            this.emit(call);
-            for (index, output) in block.outputs.iter().enumerate() {
-                if output.pin.eq_ignore_ascii_case(project_model::ENO_PIN)
-                    || output.assign.trim().is_empty()
-                {
-                    continue;
-                }
-                let value = this.instance_output(block, &instance, index);
-                let target = this.user_value(
-                    block.id,
-                    Some(&output.pin),
-                    &output.assign,
-                    "the assigned variable",
-                );
-                let statement = frag!(target.frag, " := ", value.frag, ";").mark(
-                    this.network,
-                    Some(block.id),
-                    Some(&output.pin),
-                );
-                this.emit(statement);
-            }
-        });
-        if let Some(eno) = eno {
-            self.eno_assignment(block, &eno);
-            return Some(eno);
-        }
-        let index = block.chain_output()?;
-        Some(self.instance_output(block, &instance, index))
-    }
-
-    /// A function or operator: inline where its value is used, or assigned to its output's
-    /// variable (then read from there), inside `IF EN` when it has EN.
-    fn function_call(
-        &mut self,
-        block: &BlockCall,
-        enable: Option<Value>,
-        arguments: Vec<(Option<Value>, &BlockInput)>,
-        operator: Option<Operator>,
-    ) -> Option<Value> {
-        let mut values = Vec::new();
-        for (value, input) in &arguments {
-            match value {
-                Some(value) => values.push((value.clone(), input.pin.as_str())),
-                None => self.find(
-                    block.id,
-                    Some(&input.pin),
-                    Code::InvalidNetwork,
-                    format!(
-                        "the input {} of '{}' is not connected",
-                        input.pin, block.type_name
-                    ),
-                ),
-            }
-        }
-        let result_index = block
-            .outputs
-            .iter()
-            .position(|output| !output.pin.eq_ignore_ascii_case(project_model::ENO_PIN));
-        let mut expression = match operator.filter(|op| op.fits(values.len())) {
-            Some(op) => op.apply(values.into_iter().map(|(value, _)| value).collect()),
-            None => {
-                let mut call = frag!(block.type_name.trim(), "(");
-                for (index, (value, pin)) in values.into_iter().enumerate() {
-                    if index > 0 {
-                        call.push_str(", ");
-                    }
-                    call.push(frag!(format!("{pin} := "), value.frag));
-                }
-                for (index, output) in block.outputs.iter().enumerate() {
-                    if Some(index) == result_index
-                        || output.pin.eq_ignore_ascii_case(project_model::ENO_PIN)
-                        || output.assign.trim().is_empty()
-                    {
-                        continue;
-                    }
-                    let target = self.user_value(
-                        block.id,
-                        Some(&output.pin),
-                        &output.assign,
-                        "the assigned variable",
-                    );
-                    if !call.text.ends_with('(') {
-                        call.push_str(", ");
-                    }
-                    call.push(frag!(format!("{} => ", output.pin), target.frag).mark(
-                        self.network,
-                        Some(block.id),
-                        Some(&output.pin),
-                    ));
-                }
-                call.push_str(")");
-                Value {
-                    frag: call,
-                    prec: prec::PRIMARY,
-                    kind: Kind::Expr,
-                    boolean: true,
-                    owner: Some(block.id),
-                }
-            }
-        };
-        if let Some(index) = result_index
-            && block.outputs[index].negated
-        {
-            expression = expression.not();
-        }
-        expression.owner = Some(block.id);
-        expression.frag = expression.frag.mark(self.network, Some(block.id), None);
-        let assign = result_index
-            .map(|index| &block.outputs[index])
-            .filter(|output| !output.assign.trim().is_empty());
-        if enable.is_none() && assign.is_none() {
-            return Some(expression);
-        }
-        let mut assigned = None;
-        let eno = self.enabled(block, enable, |this| {
-            let statement = match assign {
-                Some(output) => {
-                    let target = this.user_value(
-                        block.id,
-                        Some(&output.pin),
-                        &output.assign,
-                        "the assigned variable",
-                    );
-                    // The variable is the user's: a later coil may write it, so it is stored
-                    // like any expression when it is read more than once.
-                    assigned = Some(Value {
-                        kind: Kind::Expr,
-                        boolean: true,
-                        ..Value::stable(target.frag.clone(), true, Some(block.id))
-                    });
-                    frag!(target.frag, " := ", expression.frag, ";")
-                }
-                None => frag!(expression.frag, ";"),
-            };
-            this.emit(statement.mark(this.network, Some(block.id), None));
-        });
-        match eno {
-            Some(eno) => {
-                self.eno_assignment(block, &eno);
-                Some(eno)
-            }
-            None => assigned,
-        }
     }
 
     /// What the power at the end of a rung drives; stored first when several outputs read it.
@@ -879,72 +544,4 @@ fn is_path(text: &str) -> bool {
         && !text.contains('#')
         && !matches!(text.to_ascii_uppercase().as_str(), "TRUE" | "FALSE")
         && is_simple(text)
-}
-
-/// An operator box written as the ST operator a user would write.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) enum Operator {
-    /// A left-associative infix operator, for two or more inputs (`+`, `AND`).
-    Infix(&'static str, u8, bool),
-    /// A comparison of exactly two inputs (`>`).
-    Comparison(&'static str, u8),
-    /// `NOT`, of one input.
-    Not,
-    /// `MOVE`: the input itself.
-    Move,
-}
-
-impl Operator {
-    /// The operator box named `name`, if it is one.
-    pub fn of(name: &str) -> Option<Self> {
-        use prec::*;
-        Some(match name.trim().to_ascii_uppercase().as_str() {
-            "ADD" => Self::Infix("+", ADDITIVE, true),
-            "SUB" => Self::Infix("-", ADDITIVE, false),
-            "MUL" => Self::Infix("*", MULTIPLICATIVE, true),
-            "DIV" => Self::Infix("/", MULTIPLICATIVE, false),
-            "MOD" => Self::Infix("MOD", MULTIPLICATIVE, false),
-            "AND" => Self::Infix("AND", AND, true),
-            "OR" => Self::Infix("OR", OR, true),
-            "XOR" => Self::Infix("XOR", XOR, true),
-            "GT" => Self::Comparison(">", COMPARISON),
-            "GE" => Self::Comparison(">=", COMPARISON),
-            "LT" => Self::Comparison("<", COMPARISON),
-            "LE" => Self::Comparison("<=", COMPARISON),
-            "EQ" => Self::Comparison("=", EQUALITY),
-            "NE" => Self::Comparison("<>", EQUALITY),
-            "NOT" => Self::Not,
-            "MOVE" => Self::Move,
-            _ => return None,
-        })
-    }
-
-    /// Whether the operator form takes `inputs` inputs; otherwise the box is called as a
-    /// function.
-    fn fits(self, inputs: usize) -> bool {
-        match self {
-            Self::Infix(_, _, extensible) => inputs == 2 || (extensible && inputs > 2),
-            Self::Comparison(..) => inputs == 2,
-            Self::Not | Self::Move => inputs == 1,
-        }
-    }
-
-    /// The expression over `values` (as many as [`Operator::fits`] allows).
-    fn apply(self, values: Vec<Value>) -> Value {
-        let mut values = values.into_iter();
-        let Some(first) = values.next() else {
-            return Value::rail();
-        };
-        match self {
-            Self::Infix(op, strength, _) | Self::Comparison(op, strength) => {
-                let logical = matches!(op, "AND" | "OR" | "XOR");
-                let mut value = values.fold(first, |lhs, rhs| binary(lhs, op, strength, rhs));
-                // Arithmetic gives a number; a logical operator a BOOL only of BOOLs.
-                value.boolean = matches!(self, Self::Comparison(..)) || logical && value.boolean;
-                value
-            }
-            Self::Not => first.not(),
-            Self::Move => first,
-        }
-    }
 }
