@@ -507,17 +507,20 @@ fn a_timer_box_in_a_rung_counts_the_task_s_time() {
 
 // The property test: random networks of contacts, parallel groups and coils.
 
-/// A random chain of contacts and parallel groups, `depth` levels of nesting at most.
+/// A random chain of contacts, counter boxes and parallel groups, `depth` levels of nesting
+/// at most.
 fn chain(depth: u32) -> BoxedStrategy<Vec<Node>> {
-    let leaf = (0..5usize, any::<bool>(), 0..4u8).prop_map(|(var, negated, edge)| Node::Contact {
-        var,
-        negated,
-        edge: match edge {
-            1 => Edge::Rising,
-            2 => Edge::Falling,
-            _ => Edge::None,
-        },
-    });
+    let contact =
+        (0..READ.len(), any::<bool>(), 0..4u8).prop_map(|(var, negated, edge)| Node::Contact {
+            var,
+            negated,
+            edge: match edge {
+                1 => Edge::Rising,
+                2 => Edge::Falling,
+                _ => Edge::None,
+            },
+        });
+    let leaf = prop_oneof![4 => contact, 1 => Just(Node::Counter)];
     let node = if depth == 0 {
         leaf.boxed()
     } else {
@@ -533,15 +536,19 @@ fn chain(depth: u32) -> BoxedStrategy<Vec<Node>> {
 /// A generated element, turned into both the network and the ST a user writes.
 #[derive(Clone, Debug)]
 enum Node {
+    /// A contact on `READ[var]`.
     Contact {
         var: usize,
         negated: bool,
         edge: Edge,
     },
+    /// An ADD box with EN counting `x` up while enabled; its ENO passes the power on.
+    Counter,
+    /// Branches in parallel.
     Parallel(Vec<Vec<Node>>),
 }
 
-const READ: [&str; 5] = ["a", "b", "c", "d", "m"];
+const READ: [&str; 6] = ["a", "b", "c", "d", "m", "x > 3"];
 const WRITTEN: [&str; 4] = ["q", "r", "s", "m"];
 
 fn coil_kind(index: u8) -> CoilKind {
@@ -555,10 +562,11 @@ fn coil_kind(index: u8) -> CoilKind {
     }
 }
 
-/// Builds the model network and the user's ST for it, numbering ids and trigger instances.
+/// Builds the model network and the user's ST for it, numbering ids, trigger instances and
+/// the BOOLs the ST keeps its intermediate results in.
 struct Writer {
     next_id: u32,
-    triggers: Vec<String>,
+    declarations: Vec<String>,
     statements: String,
 }
 
@@ -568,62 +576,90 @@ impl Writer {
         ElementId(self.next_id)
     }
 
+    /// A new BOOL of the ST, set to `value` here.
+    fn store(&mut self, value: &str) -> String {
+        let name = format!("v{}", self.declarations.len());
+        self.declarations.push(format!("{name} : BOOL;"));
+        self.statements.push_str(&format!("{name} := {value};\n"));
+        name
+    }
+
     fn trigger(&mut self, edge: Edge, clock: &str) -> String {
-        let name = format!("tr{}", self.triggers.len());
+        let name = format!("tr{}", self.declarations.len());
         let ty = if edge == Edge::Rising {
             "R_TRIG"
         } else {
             "F_TRIG"
         };
-        self.triggers.push(format!("{name} : {ty};"));
+        self.declarations.push(format!("{name} : {ty};"));
         self.statements
             .push_str(&format!("{name}(CLK := {clock});\n"));
         format!("{name}.Q")
     }
 
-    /// The chain as model nodes and as an ST expression of its series and parallel logic.
-    fn chain(&mut self, nodes: &[Node]) -> (Vec<FlowNode>, String) {
+    /// The chain as model nodes, and the ST expression of the power at its end given the
+    /// power `incoming` at its start (statements for boxes and branches written on the way).
+    fn chain(&mut self, nodes: &[Node], incoming: String) -> (Vec<FlowNode>, String) {
         let mut flow = Vec::new();
-        let mut terms = Vec::new();
+        let mut power = incoming;
         for node in nodes {
             match node {
                 Node::Contact { var, negated, edge } => {
                     let id = self.id();
                     flow.push(contact(id.0, READ[*var], *negated, *edge));
-                    let mut term = READ[*var].to_owned();
+                    let mut term = format!("({})", READ[*var]);
                     if *edge != Edge::None {
                         term = self.trigger(*edge, &term);
                     }
                     if *negated {
                         term = format!("NOT {term}");
                     }
-                    terms.push(term);
+                    power = format!("({power}) AND {term}");
+                }
+                Node::Counter => {
+                    let id = self.id();
+                    let (one, count) = (self.id(), self.id());
+                    flow.push(FlowNode::Block(BlockCall {
+                        id,
+                        type_name: "ADD".into(),
+                        instance: String::new(),
+                        inputs: vec![
+                            input("EN", vec![]),
+                            input("IN1", vec![no(count.0, "x")]),
+                            input("IN2", vec![no(one.0, "1")]),
+                        ],
+                        outputs: vec![output("ENO", ""), output("OUT", "x")],
+                    }));
+                    let enable = self.store(&power);
+                    self.statements
+                        .push_str(&format!("IF {enable} THEN x := x + 1; END_IF;\n"));
+                    power = enable;
                 }
                 Node::Parallel(branches) => {
                     let id = self.id();
+                    let start = self.store(&power);
                     let mut model = Vec::new();
                     let mut ored = Vec::new();
                     for branch in branches {
-                        let (rung, text) = self.chain(branch);
+                        let (rung, end) = self.chain(branch, start.clone());
                         model.push(Branch { rung });
-                        ored.push(format!("({text})"));
+                        ored.push(self.store(&end));
                     }
                     flow.push(FlowNode::Parallel(Parallel {
                         id,
                         branches: model,
                     }));
-                    terms.push(format!("({})", ored.join(" OR ")));
+                    power = ored.join(" OR ");
                 }
             }
         }
-        (flow, terms.join(" AND "))
+        (flow, power)
     }
 
     /// One network: the power into a variable of its own, then each coil.
-    fn network(&mut self, index: usize, nodes: &[Node], coils: &[(usize, u8)]) -> Network {
-        let (flow, power) = self.chain(nodes);
-        let p = format!("p{index}");
-        self.statements.push_str(&format!("{p} := {power};\n"));
+    fn network(&mut self, nodes: &[Node], coils: &[(usize, u8)]) -> Network {
+        let (flow, power) = self.chain(nodes, "TRUE".to_owned());
+        let p = self.store(&power);
         let mut outputs = Vec::new();
         for (variable, kind) in coils {
             let id = self.id();
@@ -671,14 +707,16 @@ proptest! {
     #[test]
     fn a_random_network_and_the_st_a_user_writes_for_it_agree(generated in generated()) {
         let (networks, inputs) = generated;
-        let mut writer = Writer { next_id: 0, triggers: Vec::new(), statements: String::new() };
+        let mut writer = Writer {
+            next_id: 0,
+            declarations: Vec::new(),
+            statements: String::new(),
+        };
         let model: Vec<Network> = networks
             .iter()
-            .enumerate()
-            .map(|(index, (nodes, coils))| writer.network(index, nodes, coils))
+            .map(|(nodes, coils)| writer.network(nodes, coils))
             .collect();
-        let powers: Vec<String> = (0..networks.len()).map(|i| format!("p{i} : BOOL;")).collect();
-        let extra = format!("{} {}", writer.triggers.join(" "), powers.join(" "));
+        let extra = writer.declarations.join(" ");
         let source = format!(
             "{}{}{}",
             block_source("Ld", "", ""),
