@@ -294,6 +294,23 @@ impl LoweredProject<'_> {
 }
 
 impl LoweredBody {
+    /// Where the 1-based `line` of the lowered text comes from: what a fault or a line-table
+    /// entry of the image (which count lines of this text) points back to. Every statement
+    /// is on a line of its own, so the line's statement names the element.
+    pub fn origin_at_line(&self, line: u32) -> Option<crate::origin::Origin> {
+        let index = usize::try_from(line).ok()?.checked_sub(1)?;
+        let mut start = 0;
+        for (at, text) in self.text.split_inclusive('\n').enumerate() {
+            if at == index {
+                let content = text.trim();
+                let offset = start + (text.len() - text.trim_start().len());
+                return self.origins.origin(offset..offset + content.len());
+            }
+            start += text.len();
+        }
+        None
+    }
+
     /// The hidden variables' names, lower case, with their descriptions.
     fn describe(&self, message: &str) -> String {
         locate::describe_hidden(message, &self.descriptions)

@@ -596,3 +596,48 @@ fn a_finding_about_generated_text_names_the_power_flow_never_a_hidden_name() {
         .collect();
     expect!["Main:1:2: E0104: input 'CLK' of 'the rising edge detection of element 2' expects BOOL, found INT; IEC converts only to wider types, so write INT_TO_BOOL(…)"].assert_eq(&messages.join("\n"));
 }
+
+#[test]
+fn each_line_of_the_lowered_text_names_its_element() {
+    let project = project_with(
+        DECLARATIONS,
+        vec![
+            network(vec![contact(1, "a")], vec![coil(2, "q", CoilKind::Normal)]),
+            network(
+                vec![
+                    contact(3, "b"),
+                    block(
+                        4,
+                        "ADD",
+                        "",
+                        vec![
+                            input("EN", vec![]),
+                            input("IN1", vec![contact(5, "x")]),
+                            input("IN2", vec![contact(6, "1")]),
+                        ],
+                        vec![output("ENO", ""), output("OUT", "x")],
+                    ),
+                ],
+                vec![],
+            ),
+        ],
+    );
+    let lowered = lower_project(&project);
+    let body = &lowered.bodies[0];
+    let elements: Vec<String> = (1..=6)
+        .map(|line| match body.origin_at_line(line) {
+            Some(crate::origin::Origin::Element {
+                network, element, ..
+            }) => format!("{}:{}", network, element.map_or(0, |e| e.0)),
+            other => format!("{other:?}"),
+        })
+        .collect();
+    expect![[r#"
+        q := a;
+        __e4_EN := b;
+        IF __e4_EN THEN
+            x := x + 1;
+        END_IF;
+
+        0:2 1:4 1:4 1:4 1:4 None"#]].assert_eq(&format!("{}\n{}", body.text, elements.join(" ")));
+}
