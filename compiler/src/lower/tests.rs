@@ -639,5 +639,49 @@ fn each_line_of_the_lowered_text_names_its_element() {
             x := x + 1;
         END_IF;
 
-        0:2 1:4 1:4 1:4 1:4 None"#]].assert_eq(&format!("{}\n{}", body.text, elements.join(" ")));
+        0:2 1:4 1:4 1:4 1:4 None"#]]
+    .assert_eq(&format!("{}\n{}", body.text, elements.join(" ")));
+}
+
+#[test]
+fn standard_functions_with_more_inputs_are_called_with_their_pins() {
+    let value = |id: u32, text: &str| vec![contact(id, text)];
+    check_lowering(
+        vec![
+            network(
+                vec![block(
+                    1,
+                    "MUX",
+                    "",
+                    vec![
+                        input("K", value(2, "x")),
+                        input("IN0", value(3, "y")),
+                        input("IN1", value(4, "5")),
+                        input("IN2", value(5, "7")),
+                    ],
+                    vec![output("OUT", "y")],
+                )],
+                vec![],
+            ),
+            network(
+                vec![block(
+                    6,
+                    "MIN",
+                    "",
+                    vec![
+                        input("IN1", value(7, "x")),
+                        input("IN2", value(8, "y")),
+                        input("IN3", value(9, "3")),
+                    ],
+                    vec![output("OUT", "x")],
+                )],
+                vec![],
+            ),
+        ],
+        expect![[r#"
+            ---
+            y := MUX(K := x, IN0 := y, IN1 := 5, IN2 := 7);
+            x := MIN(IN1 := x, IN2 := y, IN3 := 3);
+        "#]],
+    );
 }
