@@ -685,3 +685,42 @@ fn standard_functions_with_more_inputs_are_called_with_their_pins() {
         "#]],
     );
 }
+
+#[test]
+fn a_code_generation_error_in_a_network_names_the_pou_file_and_the_element() {
+    let source = "FUNCTION_BLOCK Main\nVAR q : BOOL; p : POINTER TO WORD; END_VAR\nEND_FUNCTION_BLOCK\n\
+                  PROGRAM Run\nVAR m : Main; END_VAR\nm();\nEND_PROGRAM\n";
+    let project = project_with(
+        source,
+        vec![network(
+            vec![contact(1, "p^.3")],
+            vec![coil(2, "q", CoilKind::Normal)],
+        )],
+    );
+    let error = match compile_project(&project) {
+        Err(CompileError::Unsupported(error)) => error,
+        other => panic!("expected a code generation error, got {other:?}"),
+    };
+    let crate::codegen::CodegenError::Unsupported { location, message } = &error else {
+        panic!("{error:?}");
+    };
+    assert!(
+        location.within.contains(&crate::codegen::Within::File(
+            "application/Main.pou.toml".into()
+        )),
+        "{location:?}"
+    );
+    assert!(
+        matches!(
+            location.statement().map(|s| &s.origin),
+            Some(crate::origin::Origin::Element {
+                network: 0,
+                element: Some(ElementId(2)),
+                ..
+            })
+        ),
+        "{location:?}"
+    );
+    assert!(!message.contains("__"));
+    expect!["application/Main.pou.toml: Main: 1:2: bits of a value reached through a pointer are not supported yet"].assert_eq(&error.to_string());
+}
