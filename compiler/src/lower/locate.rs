@@ -193,10 +193,12 @@ pub(crate) fn describe_hidden(message: &str, descriptions: &[(String, String)]) 
     // Longer names first, so `__e5_trig` is not read as `__e5`.
     sorted.sort_by_key(|(name, _)| std::cmp::Reverse(name.len()));
     for (name, words) in sorted {
-        let lower_name = name.to_lowercase();
+        // ASCII lower case keeps every byte where it is, so offsets found in the lower-case
+        // text are offsets of the message.
+        let lower_name = name.to_ascii_lowercase();
         let mut from = 0;
         while let Some(at) = out[from..]
-            .to_lowercase()
+            .to_ascii_lowercase()
             .find(&lower_name)
             .map(|at| at + from)
         {
@@ -258,6 +260,10 @@ mod tests {
         assert_eq!(
             describe_hidden("'__E5' and '__e5_trig.Q' but not __e55", &words),
             "'the power flow of element 5' and 'the edge of element 5.Q' but not __e55"
+        );
+        assert_eq!(
+            describe_hidden("「İ」 reads __e5", &words),
+            "「İ」 reads the power flow of element 5"
         );
     }
 }

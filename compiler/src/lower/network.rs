@@ -410,6 +410,8 @@ impl<'c> BodyLowering<'c> {
         }
     }
 
+    /// The OR of branch results, recorded as the group's; the rail when a branch is a short
+    /// circuit.
     fn or_all(&mut self, id: ElementId, values: Vec<Value>) -> Value {
         let mut values = values.into_iter();
         let Some(first) = values.next() else {
