@@ -528,6 +528,37 @@ fn a_jump_to_a_missing_label_and_a_name_with_two_underscores_are_refused_at_thei
                 && d.declaration.as_deref() == Some("a__")),
         "{found:#?}"
     );
+    // An ST body cannot reach a hidden variable of the LD body beside it either.
+    let mut reaching = project_with(
+        "FUNCTION_BLOCK Main\nVAR a, q : BOOL; END_VAR\nq := __e2;\nEND_FUNCTION_BLOCK\n",
+        Vec::new(),
+    );
+    if let Some(Object::Pou(main)) = reaching.application.object_mut("Main") {
+        main.actions.push(project_model::PouAction {
+            name: "Drawn".into(),
+            body: Body::Ld {
+                networks: vec![network(
+                    vec![contact(1, "a")],
+                    vec![coil(2, "q", CoilKind::Normal), coil(3, "q", CoilKind::Set)],
+                )],
+            },
+        });
+        main.body = Body::st("q := __Drawn__e2;");
+    }
+    let found = crate::sema::check_project(&reaching);
+    assert!(
+        found.iter().any(
+            |d| d.diagnostic.code == crate::Code::ReservedName && d.diagnostic.range == (5..16)
+        ),
+        "{found:#?}"
+    );
+    // Nor is a hidden name ever suggested.
+    assert!(
+        found
+            .iter()
+            .all(|d| !d.diagnostic.message.contains("__Drawn__e1")),
+        "{found:#?}"
+    );
 }
 
 #[test]

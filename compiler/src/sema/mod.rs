@@ -62,6 +62,7 @@ pub(crate) fn check_lowered(
 ) -> Vec<ProjectDiagnostic> {
     let mut found = lowered.findings();
     found.extend(reserved::reserved_names(project));
+    found.extend(reserved::reserved_references(project));
     found.extend(lowered.locate(check_text_project(&lowered.project)));
     found
 }
@@ -702,11 +703,13 @@ fn edit_distance(a: &str, b: &str) -> usize {
     previous[b.len()]
 }
 
-/// The closest of `candidates` to `name`, if close enough to be a likely typo.
+/// The closest of `candidates` to `name`, if close enough to be a likely typo; never a name
+/// with `__`, which is generated (a hidden variable of an LD or FBD body) and not the user's.
 fn closest<'a>(name: &str, candidates: impl Iterator<Item = &'a str>) -> Option<&'a str> {
     let limit = (name.chars().count() / 3).clamp(1, 3);
     let mut seen = HashSet::new();
     candidates
+        .filter(|candidate| !candidate.contains("__"))
         .filter(|candidate| seen.insert(candidate.to_lowercase()))
         .map(|candidate| (edit_distance(name, candidate), candidate))
         .filter(|(distance, _)| *distance <= limit)

@@ -75,3 +75,37 @@ pub(super) fn reserved_names(project: &Project) -> Vec<ProjectDiagnostic> {
     }
     found
 }
+
+/// Every name with `__` written in an ST body of `project` (before lowering, so the generated
+/// names of LD and FBD bodies are not seen): an ST body cannot reach a hidden variable.
+pub(super) fn reserved_references(project: &Project) -> Vec<ProjectDiagnostic> {
+    let mut found = Vec::new();
+    for body in project_model::st_body_files(project) {
+        // Most bodies have no `__` at all, and need no second look.
+        if !body.text.contains("__") {
+            continue;
+        }
+        let (tokens, _) = crate::syntax::tokenize(body.text);
+        let mut start = 0;
+        for token in tokens {
+            let end = start + token.len as usize;
+            let text = body.text.get(start..end).unwrap_or_default();
+            if token.kind == crate::syntax::SyntaxKind::IDENT && text.contains("__") {
+                found.push(ProjectDiagnostic {
+                    file: body.file.clone(),
+                    declaration: None,
+                    element: None,
+                    diagnostic: Diagnostic::new(
+                        Code::ReservedName,
+                        start..end,
+                        format!(
+                            "'{text}' contains '__', which IEC 61131-3 does not allow in names and Rivet keeps for the names it generates"
+                        ),
+                    ),
+                });
+            }
+            start = end;
+        }
+    }
+    found
+}
