@@ -106,8 +106,25 @@ impl<'c> BodyLowering<'c> {
                 let glue = frag!(label, ":").mark(index, None, None);
                 self.emit(glue);
             }
-            let power = self.chain(&network.rung, Some(Value::rail()));
-            self.outputs(&network.outputs, power.unwrap_or_else(Value::rail));
+            let power = self
+                .chain(&network.rung, Some(Value::rail()))
+                .unwrap_or_else(Value::rail);
+            // Contacts or an expression whose result goes nowhere are an unfinished network:
+            // no statement would read them, so nothing would check them either.
+            if network.outputs.is_empty()
+                && power.kind == Kind::Expr
+                && !chain_runs_boxes(&network.rung)
+                && let Some(owner) = power.owner
+            {
+                self.find(
+                    owner,
+                    None,
+                    Code::InvalidNetwork,
+                    "the result of this network drives nothing; add a coil, an assignment, a jump or a return"
+                        .to_owned(),
+                );
+            }
+            self.outputs(&network.outputs, power);
         }
     }
 

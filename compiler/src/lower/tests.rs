@@ -755,3 +755,80 @@ fn a_code_generation_error_in_a_network_names_the_pou_file_and_the_element() {
     assert!(!message.contains("__"));
     expect!["application/Main.pou.toml: Main: 1:2: bits of a value reached through a pointer are not supported yet"].assert_eq(&error.to_string());
 }
+
+#[test]
+fn the_check_of_one_pou_finds_what_the_check_of_the_project_finds_in_it() {
+    let mut project = project_with(
+        DECLARATIONS,
+        vec![network(
+            vec![contact(1, "a"), contact(2, "x")],
+            vec![NetworkOutput::Jump {
+                id: ElementId(3),
+                label: "Nowhere".into(),
+            }],
+        )],
+    );
+    if let Some(Object::Pou(main)) = project.application.object_mut("Main") {
+        main.variables[0].name = "a__".into();
+    }
+    let summary = |found: Vec<crate::sema::ProjectDiagnostic>| {
+        let mut lines: Vec<String> = found
+            .into_iter()
+            .map(|d| {
+                let place = d.element.map(|p| p.to_string()).unwrap_or_default();
+                format!("{} {place} {}", d.file.display(), d.diagnostic.code.id())
+            })
+            .collect();
+        lines.sort();
+        lines.join("\n")
+    };
+    let whole = summary(crate::sema::check_project(&project));
+    assert_eq!(summary(crate::sema::check_pou(&project, "Main")), whole);
+    expect![[r#"
+        application/Main.pou.toml  E0113
+        application/Main.pou.toml  W0001
+        application/Main.pou.toml  W0001
+        application/Main.pou.toml  W0001
+        application/Main.pou.toml  W0001
+        application/Main.pou.toml  W0001
+        application/Main.pou.toml  W0001
+        application/Main.pou.toml  W0001
+        application/Main.pou.toml  W0001
+        application/Main.pou.toml  W0001
+        application/Main.pou.toml  W0001
+        application/Main.pou.toml Main:1:3 E0114"#]]
+    .assert_eq(&whole);
+}
+
+#[test]
+fn a_rung_of_contacts_driving_nothing_is_reported_but_a_box_alone_is_not() {
+    let project = project_with(
+        DECLARATIONS,
+        vec![
+            network(vec![contact(1, "a"), contact(2, "b")], vec![]),
+            network(
+                vec![block(
+                    3,
+                    "TON",
+                    "t",
+                    vec![input("IN", vec![contact(4, "c")])],
+                    vec![output("Q", "")],
+                )],
+                vec![],
+            ),
+        ],
+    );
+    let found: Vec<String> = crate::sema::check_project(&project)
+        .into_iter()
+        .filter(|d| d.diagnostic.severity == crate::Severity::Error)
+        .map(|d| {
+            format!(
+                "{}: {}",
+                d.element.map(|p| p.to_string()).unwrap_or_default(),
+                d.diagnostic.message
+            )
+        })
+        .collect();
+    expect![[r#"Main:1:2: the result of this network drives nothing; add a coil, an assignment, a jump or a return"#]]
+        .assert_eq(&found.join("\n"));
+}

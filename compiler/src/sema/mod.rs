@@ -146,6 +146,19 @@ pub fn check_pou(project: &Project, pou_name: &str) -> Vec<ProjectDiagnostic> {
                 .is_some_and(|place| place.pou.eq_ignore_ascii_case(pou_name))
         })
         .collect();
+    // The POU's own files: its `.pou.toml` and the `.st` files of its bodies, beside it.
+    let own = |file: &std::path::Path| {
+        file.file_name()
+            .and_then(|name| name.to_str())
+            .and_then(|name| name.split('.').next())
+            .is_some_and(|name| name.eq_ignore_ascii_case(pou_name))
+    };
+    found.extend(
+        reserved::reserved_names(project)
+            .into_iter()
+            .chain(reserved::reserved_references(project))
+            .filter(|finding| own(&finding.file)),
+    );
     found.extend(lowered.locate(check_text_pou(&lowered.project, pou_name)));
     found
 }
