@@ -832,3 +832,37 @@ fn a_rung_of_contacts_driving_nothing_is_reported_but_a_box_alone_is_not() {
     expect![[r#"Main:1:2: the result of this network drives nothing; add a coil, an assignment, a jump or a return"#]]
         .assert_eq(&found.join("\n"));
 }
+
+#[test]
+fn a_function_block_box_with_en_is_called_only_when_enabled_and_its_outputs_hold() {
+    check_lowering(
+        vec![network(
+            vec![
+                contact(1, "a"),
+                closed(2, "b"),
+                block(
+                    3,
+                    "TON",
+                    "t",
+                    vec![
+                        input("EN", vec![]),
+                        input("IN", vec![contact(4, "c")]),
+                        input("PT", vec![contact(5, "T#2s")]),
+                    ],
+                    vec![output("ENO", ""), output("Q", "q"), output("ET", "")],
+                ),
+            ],
+            vec![coil(6, "r", CoilKind::Normal)],
+        )],
+        expect![[r#"
+            __e3_EN : BOOL;
+            ---
+            __e3_EN := a AND NOT b;
+            IF __e3_EN THEN
+                t(IN := c, PT := T#2s);
+                q := t.Q;
+            END_IF;
+            r := __e3_EN;
+        "#]],
+    );
+}
