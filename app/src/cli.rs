@@ -326,6 +326,13 @@ fn check(path: &Path) -> anyhow::Result<()> {
     for found in compiler::sema::check_project(&loaded.project) {
         let shown = path.join(&found.file).display().to_string();
         match (&found.declaration, bodies.get(&found.file)) {
+            // A finding in an LD or FBD body: `file:POU:network:element`.
+            _ if let Some(place) = &found.element => eprintln!(
+                "{shown}:{place}: {}[{}]: {}",
+                severity_word(found.diagnostic.severity),
+                found.diagnostic.code.id(),
+                found.diagnostic.message
+            ),
             (None, Some(text)) => eprint!("{}", found.diagnostic.render(&shown, text)),
             (declaration, _) => {
                 // A finding in data: point at the line that declares the name, if it is found.

@@ -435,3 +435,122 @@ fn cam_commands_refuse_unknown_cams_and_masters_outside_the_range() {
     assert_eq!(output.status.code(), Some(1));
     assert!(text_of(&output.stderr).contains("at most 2048 points"));
 }
+
+/// A project folder whose program `Main` (declaring `decls`) has the LD body `networks`.
+fn ladder_project(decls: &str, networks: Vec<project_model::Network>) -> tempfile::TempDir {
+    let source = format!("PROGRAM Main\nVAR {decls} END_VAR\nEND_PROGRAM\n");
+    let mut project = compiler::SourceProject::new(&source).project;
+    project.name = "Ladder".into();
+    if let Some(project_model::Object::Pou(main)) = project.application.object_mut("Main") {
+        main.body = project_model::Body::Ld { networks };
+    }
+    let dir = tempfile::tempdir().unwrap();
+    project_model::save_project(&project, dir.path(), &Default::default()).unwrap();
+    dir
+}
+
+/// A rung of contacts on `texts` (ids 1, 2, …) driving coils on `coils` (ids after them).
+fn ladder_rung(
+    texts: &[&str],
+    coils: &[(&str, project_model::CoilKind)],
+) -> project_model::Network {
+    use project_model::{Coil, ElementId, FlowNode, NetworkOutput, Operand};
+    let rung: Vec<FlowNode> = texts
+        .iter()
+        .enumerate()
+        .map(|(at, text)| {
+            FlowNode::Operand(Operand {
+                id: ElementId(at as u32 + 1),
+                text: (*text).into(),
+                ..Operand::default()
+            })
+        })
+        .collect();
+    let outputs = coils
+        .iter()
+        .enumerate()
+        .map(|(at, (variable, kind))| {
+            NetworkOutput::Coil(Coil {
+                id: ElementId((texts.len() + at) as u32 + 1),
+                variable: (*variable).into(),
+                kind: *kind,
+            })
+        })
+        .collect();
+    project_model::Network {
+        rung,
+        outputs,
+        ..project_model::Network::default()
+    }
+}
+
+#[test]
+fn check_reports_a_finding_in_an_ld_body_at_its_file_pou_network_and_element() {
+    use project_model::CoilKind;
+    let dir = ladder_project(
+        "a : BOOL; x : INT; q : BOOL;",
+        vec![
+            ladder_rung(&["a"], &[("q", CoilKind::Normal)]),
+            ladder_rung(&["a", "x"], &[("q", CoilKind::Normal)]),
+        ],
+    );
+    let output = rivet(&["check", path_str(dir.path())]);
+    assert_eq!(output.status.code(), Some(1));
+    let stderr = text_of(&output.stderr);
+    let file = dir.path().join("application/Main.pou.toml");
+    let location = format!("{}:Main:2:2: error[E0105]:", file.display());
+    assert!(stderr.contains(&location), "{stderr}");
+    assert!(!stderr.contains("__"), "{stderr}");
+}
+
+#[test]
+fn simulate_runs_an_ld_program() {
+    use project_model::CoilKind;
+    // n counts cycles through an ADD box; q is set on the third cycle and latches.
+    let counter = project_model::Network {
+        rung: vec![project_model::FlowNode::Block(project_model::BlockCall {
+            id: project_model::ElementId(1),
+            type_name: "ADD".into(),
+            instance: String::new(),
+            inputs: ["n", "1"]
+                .iter()
+                .enumerate()
+                .map(|(at, text)| project_model::BlockInput {
+                    pin: format!("IN{}", at + 1),
+                    source: vec![project_model::FlowNode::Operand(project_model::Operand {
+                        id: project_model::ElementId(at as u32 + 2),
+                        text: (*text).into(),
+                        ..project_model::Operand::default()
+                    })],
+                    ..project_model::BlockInput::default()
+                })
+                .collect(),
+            outputs: vec![project_model::BlockOutput {
+                pin: "OUT".into(),
+                assign: "n".into(),
+                ..project_model::BlockOutput::default()
+            }],
+        })],
+        ..project_model::Network::default()
+    };
+    let dir = ladder_project(
+        "n : INT; q : BOOL; r : BOOL;",
+        vec![
+            counter,
+            ladder_rung(&["n = 3"], &[("q", CoilKind::Set), ("r", CoilKind::Normal)]),
+        ],
+    );
+    let output = rivet(&[
+        "simulate",
+        path_str(dir.path()),
+        "--cycles",
+        "5",
+        "--watch",
+        "Main.n,Main.q,Main.r",
+    ]);
+    assert!(output.status.success(), "{}", text_of(&output.stderr));
+    assert_eq!(
+        text_of(&output.stdout),
+        "Main.n = 5\nMain.q = TRUE\nMain.r = FALSE\n"
+    );
+}

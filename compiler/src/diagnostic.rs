@@ -64,6 +64,8 @@ codes! {
     InvalidAddress = "E0110", Error, "Invalid direct address";
     IndexOutOfRange = "E0111", Error, "Index or bit outside the declared range";
     Inaccessible = "E0112", Error, "Member not visible from outside";
+    ReservedName = "E0113", Error, "Name with two underscores in a row";
+    InvalidNetwork = "E0114", Error, "LD or FBD element that cannot be compiled";
     UnusedVariable = "W0001", Warning, "Variable never used";
     UnassignedVariable = "W0002", Warning, "Variable read but never written";
     OverlappingAddresses = "W0003", Warning, "Located variables overlap";

@@ -9,8 +9,9 @@
 //! Today it holds the lexer and the resilient parser ([`syntax::parse`]), the project checker
 //! ([`sema::check_project`]: names, types, calls, declarations, warnings), one source file as a
 //! project ([`source_project`]), the diagnostic codes ([`Code`]), the syntax-level IDE facade
-//! ([`ide`]), literal values ([`literal`]) and the elementary types with their implicit
-//! conversions ([`elementary`]).
+//! ([`ide`]), literal values ([`literal`]), the elementary types with their implicit
+//! conversions ([`elementary`]) and the lowering of LD and FBD bodies into Structured Text
+//! ([`lower`]).
 
 pub mod codegen;
 mod declaration_parts;
@@ -19,6 +20,7 @@ pub mod elementary;
 pub mod ide;
 pub mod library;
 pub mod literal;
+pub mod lower;
 pub mod origin;
 pub mod sema;
 pub mod source_project;

@@ -589,6 +589,7 @@ END_FUNCTION_BLOCK
             let finding = ProjectDiagnostic {
                 file: body.file.clone(),
                 declaration: None,
+                element: None,
                 diagnostic: crate::Diagnostic::new(crate::Code::UnknownName, 0..1, "x"),
             };
             let at = source.locate(&finding).expect("every body maps back");
@@ -601,6 +602,7 @@ END_FUNCTION_BLOCK
         let finding = ProjectDiagnostic {
             file,
             declaration: Some("b".to_owned()),
+            element: None,
             diagnostic: crate::Diagnostic::new(crate::Code::UnknownType, 0..0, "x"),
         };
         let at = source.locate(&finding).expect("declarations map back");

@@ -4,6 +4,9 @@
 // The helpers below are test code too: a failure should stop the test where it happens.
 #![allow(clippy::expect_used, clippy::unwrap_used)]
 
+/// LD and FBD bodies compiled and run, element by element and against the ST a user writes.
+mod ladder;
+
 use program_image::ProgramImage;
 use runtime::simulation::Simulation;
 

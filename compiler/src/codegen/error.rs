@@ -99,14 +99,34 @@ impl From<&str> for CodegenError {
 }
 
 impl fmt::Display for Location {
-    /// `file: POU: declaration: line N: `, the prefix the message follows.
+    /// `file: POU: declaration: line N: `, the prefix the message follows (`network:element: `
+    /// instead of the line in a lowered LD or FBD body).
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         for place in &self.within {
             match place {
                 Within::File(name) | Within::Pou(name) | Within::Declaration(name) => {
                     write!(f, "{name}: ")?;
                 }
-                Within::Statement(statement) => write!(f, "line {}: ", statement.line)?,
+                Within::Statement(statement) => match &statement.origin {
+                    // A statement of a lowered LD or FBD body is shown by its network and
+                    // element, as `POU:network:element` continues.
+                    Origin::Element {
+                        network,
+                        element,
+                        pin,
+                    } => {
+                        write!(f, "{}:", network + 1)?;
+                        match element {
+                            Some(element) => write!(f, "{}", element.0)?,
+                            None => write!(f, "-")?,
+                        }
+                        if let Some(pin) = pin {
+                            write!(f, ".{pin}")?;
+                        }
+                        write!(f, ": ")?;
+                    }
+                    Origin::Text { .. } => write!(f, "line {}: ", statement.line)?,
+                },
             }
         }
         Ok(())

@@ -92,6 +92,10 @@ pub(crate) struct Instance<'p> {
     pub(crate) align: u32,
     pub(crate) id: TypeId,
     pub(crate) slots: Vec<Slot<'p>>,
+    /// The index in `slots` of each variable by its lower-case name (the first one declared
+    /// when a name repeats), so looking a name up does not walk every slot: a lowered LD body
+    /// declares thousands of hidden variables.
+    by_name: HashMap<String, usize>,
     /// The state of the chart when the body is textual SFC, after the variables.
     pub(crate) sfc: Option<super::sfc::SfcLayout>,
 }
@@ -99,9 +103,8 @@ pub(crate) struct Instance<'p> {
 impl<'p> Instance<'p> {
     /// The slot of variable `name` (any case).
     pub(crate) fn slot(&self, name: &str) -> Option<&Slot<'p>> {
-        self.slots
-            .iter()
-            .find(|s| s.var.name.eq_ignore_ascii_case(name))
+        let index = self.by_name.get(&name.to_ascii_lowercase())?;
+        self.slots.get(*index)
     }
 }
 
@@ -637,11 +640,18 @@ impl<'g, 'p> Layouts<'g, 'p> {
             size,
             members,
         });
+        let mut by_name = HashMap::with_capacity(slots.len());
+        for (index, slot) in slots.iter().enumerate() {
+            by_name
+                .entry(slot.var.name.to_ascii_lowercase())
+                .or_insert(index);
+        }
         Ok(Instance {
             size,
             align,
             id,
             slots,
+            by_name,
             sfc,
         })
     }

@@ -32,7 +32,7 @@ use std::path::Path;
 use program_image::ProgramImage;
 use project_model::Project;
 
-use crate::sema::{ProjectDiagnostic, check_project};
+use crate::sema::{ProjectDiagnostic, check_lowered};
 use crate::{Severity, SourceProject};
 
 pub use error::{CodegenError, Location, StatementPlace, Within};
@@ -73,12 +73,16 @@ pub fn compile_source(
 }
 
 fn compile_with(project: &Project, origin: BodyOrigin<'_>) -> Result<ProgramImage, CompileError> {
-    let diagnostics = check_project(project);
+    // LD and FBD bodies are checked and compiled as their Structured Text, and what is found
+    // in them is moved back onto their elements.
+    let lowered = crate::lower::lower_project(project);
+    let diagnostics = check_lowered(project, &lowered);
     if diagnostics
         .iter()
         .any(|d| d.diagnostic.severity == Severity::Error)
     {
         return Err(CompileError::Diagnostics(diagnostics));
     }
-    program::build_image(project, origin).map_err(CompileError::Unsupported)
+    program::build_image(&lowered.project, origin)
+        .map_err(|error| CompileError::Unsupported(lowered.locate_error(error)))
 }

@@ -8,6 +8,7 @@ pub(crate) mod body;
 mod complete;
 pub(crate) mod constant;
 mod definition;
+mod reserved;
 pub(crate) mod scope;
 pub(crate) mod signatures;
 mod stdlib;
@@ -39,12 +40,35 @@ pub struct ProjectDiagnostic {
     /// For a finding in a declaration stored as data (a variable's type in a `.pou.toml`), the
     /// declared name; `None` when `diagnostic.range` is a range of the file's text.
     pub declaration: Option<String>,
+    /// For a finding in an LD or FBD body, the network, element and pin it is about (then
+    /// `file` is the POU's `.pou.toml`, `declaration` is `None`, and `diagnostic.range` is a
+    /// range of the text the user typed into the element, or `0..0`).
+    pub element: Option<crate::lower::ElementPlace>,
     /// The finding.
     pub diagnostic: Diagnostic,
 }
 
-/// Checks every ST body and declaration of `project`.
+/// Checks every body (LD and FBD bodies through their lowering, with findings at their
+/// elements) and declaration of `project`.
 pub fn check_project(project: &Project) -> Vec<ProjectDiagnostic> {
+    let lowered = crate::lower::lower_project(project);
+    check_lowered(project, &lowered)
+}
+
+/// Checks `project` whose graphical bodies were lowered into `lowered`.
+pub(crate) fn check_lowered(
+    project: &Project,
+    lowered: &crate::lower::LoweredProject<'_>,
+) -> Vec<ProjectDiagnostic> {
+    let mut found = lowered.findings();
+    found.extend(reserved::reserved_names(project));
+    found.extend(reserved::reserved_references(project));
+    found.extend(lowered.locate(check_text_project(&lowered.project)));
+    found
+}
+
+/// Checks every ST body and declaration of `project`.
+fn check_text_project(project: &Project) -> Vec<ProjectDiagnostic> {
     let globals = Globals::new(project);
     let mut found = Vec::new();
     // Each POU's bodies, grouped once rather than searched for every POU.
@@ -60,6 +84,7 @@ pub fn check_project(project: &Project) -> Vec<ProjectDiagnostic> {
             found.push(ProjectDiagnostic {
                 file: file.clone(),
                 declaration: Some(name.to_owned()),
+                element: None,
                 diagnostic,
             });
         };
@@ -98,6 +123,7 @@ pub fn check_project(project: &Project) -> Vec<ProjectDiagnostic> {
                 found.push(ProjectDiagnostic {
                     file: PathBuf::from(project_model::MANIFEST_FILE_NAME),
                     declaration: Some(task.name.clone()),
+                    element: None,
                     diagnostic: Diagnostic::new(Code::UnknownProgram, 0..0, message),
                 });
             }
@@ -109,6 +135,35 @@ pub fn check_project(project: &Project) -> Vec<ProjectDiagnostic> {
 /// Checks one POU (declarations and every body) of `project`: what an editor re-checks after an
 /// edit of that POU, without the rest of the project.
 pub fn check_pou(project: &Project, pou_name: &str) -> Vec<ProjectDiagnostic> {
+    let lowered = crate::lower::lower_project(project);
+    let mut found: Vec<ProjectDiagnostic> = lowered
+        .findings()
+        .into_iter()
+        .filter(|finding| {
+            finding
+                .element
+                .as_ref()
+                .is_some_and(|place| place.pou.eq_ignore_ascii_case(pou_name))
+        })
+        .collect();
+    // The POU's own files: its `.pou.toml` and the `.st` files of its bodies, beside it.
+    let own = |file: &std::path::Path| {
+        file.file_name()
+            .and_then(|name| name.to_str())
+            .and_then(|name| name.split('.').next())
+            .is_some_and(|name| name.eq_ignore_ascii_case(pou_name))
+    };
+    found.extend(
+        reserved::reserved_names(project)
+            .into_iter()
+            .chain(reserved::reserved_references(project))
+            .filter(|finding| own(&finding.file)),
+    );
+    found.extend(lowered.locate(check_text_pou(&lowered.project, pou_name)));
+    found
+}
+
+fn check_text_pou(project: &Project, pou_name: &str) -> Vec<ProjectDiagnostic> {
     let globals = Globals::new(project);
     let Some(pou) = globals.pou(pou_name) else {
         return Vec::new();
@@ -124,6 +179,7 @@ pub fn check_pou(project: &Project, pou_name: &str) -> Vec<ProjectDiagnostic> {
         found.push(ProjectDiagnostic {
             file: file.clone(),
             declaration: Some(name.to_owned()),
+            element: None,
             diagnostic,
         });
     });
@@ -255,6 +311,7 @@ fn check_pou_bodies(
         found.extend(findings.into_iter().map(|diagnostic| ProjectDiagnostic {
             file: body.file.clone(),
             declaration: None,
+            element: None,
             diagnostic,
         }));
     }
@@ -264,6 +321,7 @@ fn check_pou_bodies(
             found.push(ProjectDiagnostic {
                 file: file.to_owned(),
                 declaration: Some(name.to_owned()),
+                element: None,
                 diagnostic,
             });
         });
@@ -459,6 +517,7 @@ fn overlapping_addresses(project: &Project, found: &mut Vec<ProjectDiagnostic>) 
                     found.push(ProjectDiagnostic {
                         file: file.clone(),
                         declaration: Some(second.name.clone()),
+                        element: None,
                         diagnostic: Diagnostic::new(Code::OverlappingAddresses, 0..0, message),
                     });
                 }
@@ -657,11 +716,13 @@ fn edit_distance(a: &str, b: &str) -> usize {
     previous[b.len()]
 }
 
-/// The closest of `candidates` to `name`, if close enough to be a likely typo.
+/// The closest of `candidates` to `name`, if close enough to be a likely typo; never a name
+/// with `__`, which is generated (a hidden variable of an LD or FBD body) and not the user's.
 fn closest<'a>(name: &str, candidates: impl Iterator<Item = &'a str>) -> Option<&'a str> {
     let limit = (name.chars().count() / 3).clamp(1, 3);
     let mut seen = HashSet::new();
     candidates
+        .filter(|candidate| !candidate.contains("__"))
         .filter(|candidate| seen.insert(candidate.to_lowercase()))
         .map(|candidate| (edit_distance(name, candidate), candidate))
         .filter(|(distance, _)| *distance <= limit)

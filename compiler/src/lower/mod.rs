@@ -1,0 +1,336 @@
+//! LD and FBD bodies lowered into Structured Text, so the checker and the code generator run
+//! unchanged on them (ARCHITECTURE.md, "Bodies and their origins").
+//!
+//! [`lower_project`] gives the project with every LD and FBD body (of POUs, methods, property
+//! accessors and actions) replaced by its ST text and the hidden variables it needs declared
+//! in the POU, and for each such body a [`LoweredBody`]: the text, the [`OriginMap`] from its
+//! byte ranges back to networks, elements and pins, and the [`Probe`]s that say where each
+//! element's live value is read. The semantics are in `docs/graphical-semantics.md`.
+
+mod boxes;
+mod fragment;
+mod locate;
+mod network;
+mod operator;
+mod place;
+#[cfg(test)]
+mod tests;
+mod value;
+
+use std::borrow::Cow;
+use std::collections::HashMap;
+use std::path::PathBuf;
+
+use project_model::{Body, ElementId, Object, Pou, PouKind, Project, TextTarget};
+
+use crate::diagnostic::Code;
+use fragment::Span;
+use network::BodyLowering;
+use operator::Operator;
+
+pub use locate::OriginMap;
+pub use place::ElementPlace;
+
+/// A project whose graphical bodies are Structured Text, with the way back to the networks.
+#[derive(Debug)]
+pub struct LoweredProject<'p> {
+    /// The project: borrowed when it has no LD or FBD body, else a copy with every LD and FBD
+    /// body replaced by its text and the hidden variables declared in their POUs.
+    pub project: Cow<'p, Project>,
+    /// Every lowered body, in tree order.
+    pub bodies: Vec<LoweredBody>,
+}
+
+/// One LD or FBD body as Structured Text.
+#[derive(Clone, Debug)]
+pub struct LoweredBody {
+    /// The POU's name.
+    pub pou: String,
+    /// Which body of the POU it is.
+    pub target: TextTarget,
+    /// The POU's `.pou.toml` file, relative to the project folder: where findings are shown.
+    pub file: PathBuf,
+    /// The `.st` file the lowered text would have as an ST body, which the checker and the
+    /// code generator name; it does not exist on disk.
+    pub text_file: PathBuf,
+    /// The generated statements.
+    pub text: String,
+    /// From byte ranges of `text` back to networks, elements and pins.
+    pub origins: OriginMap,
+    /// Where each element's (and pin's) live value is read, in the order they were met.
+    pub probes: Vec<Probe>,
+    /// Each hidden name of the body with the words a message uses for it.
+    descriptions: Vec<(String, String)>,
+    /// What the lowering found that cannot be compiled.
+    findings: Vec<Finding>,
+}
+
+/// Where the live value of an element (or of one of its pins) is read while online.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Probe {
+    /// The network's index in its body, from 0.
+    pub network: usize,
+    /// The element.
+    pub element: ElementId,
+    /// The pin of a box, or `EN` for the power entering a box; `None` for the element itself.
+    pub pin: Option<String>,
+    /// What the value is.
+    pub kind: ProbeKind,
+    /// The variable holding it, relative to the POU's instance (`bStart`, `tDelay.Q`, or a
+    /// hidden `__e7`): prefix the instance's path to read it.
+    pub path: String,
+}
+
+/// What a [`Probe`] reads.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ProbeKind {
+    /// The power flow leaving the element (a contact, parallel group or box) or entering the
+    /// pin; where an element has no power probe, the power is derived from its neighbours'.
+    Power,
+    /// The value of the variable the element reads or writes (a contact's or coil's variable,
+    /// a box's pin).
+    Value,
+    /// The output of the element's (or pin's) edge detection: TRUE for the one cycle of the
+    /// edge.
+    Edge,
+}
+
+/// Something the lowering cannot compile, at an element.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub(crate) struct Finding {
+    /// The network's index.
+    pub network: usize,
+    /// The element, or `None` for the network itself.
+    pub element: Option<ElementId>,
+    /// The pin, if any.
+    pub pin: Option<String>,
+    /// The diagnostic code.
+    pub code: Code,
+    /// What is wrong, in the user's words.
+    pub message: String,
+}
+
+/// What a box's type name calls.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Callee {
+    /// A function, or an operator when it has an ST operator.
+    Function {
+        /// The ST operator that writes it, for operator boxes.
+        operator: Option<Operator>,
+    },
+    /// A function block: called through its instance.
+    Block,
+    /// A program: called by its name.
+    Program,
+    /// Nothing the project or the standard library knows.
+    Unknown,
+}
+
+/// Lowers every LD and FBD body of `project`; a project without one is borrowed unchanged.
+pub fn lower_project(project: &Project) -> LoweredProject<'_> {
+    let graphical = |body: &Body| matches!(body, Body::Ld { .. } | Body::Fbd { .. });
+    let pous: Vec<(PathBuf, &Pou)> = project_model::object_files(project)
+        .into_iter()
+        .filter_map(|(file, object)| match object {
+            Object::Pou(pou) if slots(pou).iter().any(|(_, _, body)| graphical(body)) => {
+                Some((file, pou))
+            }
+            _ => None,
+        })
+        .collect();
+    if pous.is_empty() {
+        return LoweredProject {
+            project: Cow::Borrowed(project),
+            bodies: Vec::new(),
+        };
+    }
+    let kinds: HashMap<String, PouKind> = project
+        .application
+        .objects()
+        .into_iter()
+        .chain(crate::library::objects())
+        .filter_map(|object| match object {
+            Object::Pou(pou) => Some((pou.name.to_lowercase(), pou.kind)),
+            _ => None,
+        })
+        .collect();
+    let classify = |name: &str| classify(&kinds, name);
+    let mut lowered = project.clone();
+    let mut bodies = Vec::new();
+    for (file, pou) in pous {
+        let folder = file.parent().map(PathBuf::from).unwrap_or_default();
+        let mut texts = Vec::new();
+        let mut hidden = Vec::new();
+        for (index, (suffix, target, body)) in slots(pou).into_iter().enumerate() {
+            let (Body::Ld { networks } | Body::Fbd { networks }) = body else {
+                continue;
+            };
+            let prefix = match &target {
+                TextTarget::Pou(_) => "__".to_owned(),
+                TextTarget::Method { method: member, .. }
+                | TextTarget::Action { action: member, .. } => format!("__{member}__"),
+                TextTarget::Property { property, get, .. } => {
+                    format!("__{property}_{}__", if *get { "get" } else { "set" })
+                }
+            };
+            let mut lowering = BodyLowering::new(prefix, &classify);
+            lowering.body(networks);
+            hidden.append(&mut lowering.hidden);
+            texts.push((index, lowering.out.text.clone()));
+            bodies.push(LoweredBody {
+                pou: pou.name.clone(),
+                target,
+                file: file.clone(),
+                text_file: folder.join(format!("{}{suffix}", pou.name)),
+                text: lowering.out.text,
+                origins: OriginMap::new(lowering.out.spans),
+                probes: lowering.probes,
+                descriptions: lowering.descriptions,
+                findings: lowering.findings,
+            });
+        }
+        if let Some(Object::Pou(copy)) = lowered.application.object_mut(&pou.name) {
+            let mut slots = bodies_mut(copy);
+            for (index, text) in texts {
+                if let Some(body) = slots.get_mut(index) {
+                    **body = Body::St { text };
+                }
+            }
+            copy.variables.append(&mut hidden);
+        }
+    }
+    LoweredProject {
+        project: Cow::Owned(lowered),
+        bodies,
+    }
+}
+
+/// What `name` calls, by the project's POUs, the motion library and the standard library.
+fn classify(kinds: &HashMap<String, PouKind>, name: &str) -> Callee {
+    let name = name.trim();
+    if let Some(operator) = Operator::of(name) {
+        return Callee::Function {
+            operator: Some(operator),
+        };
+    }
+    match kinds.get(&name.to_lowercase()) {
+        Some(PouKind::Function) => Callee::Function { operator: None },
+        Some(PouKind::FunctionBlock) => Callee::Block,
+        Some(PouKind::Program) => Callee::Program,
+        Some(PouKind::Interface) => Callee::Unknown,
+        None if crate::sema::is_function(name) => Callee::Function { operator: None },
+        None if crate::sema::is_function_block(name) => Callee::Block,
+        None => Callee::Unknown,
+    }
+}
+
+/// Every body of a POU with the suffix of its `.st` file and its target, in the order of
+/// `project_model::st_body_files`.
+fn slots(pou: &Pou) -> Vec<(String, TextTarget, &Body)> {
+    let name = || pou.name.clone();
+    let mut slots = vec![(".st".to_owned(), TextTarget::Pou(name()), &pou.body)];
+    for method in &pou.methods {
+        let target = TextTarget::Method {
+            pou: name(),
+            method: method.name.clone(),
+        };
+        slots.push((format!(".{}.st", method.name), target, &method.body));
+    }
+    for property in &pou.properties {
+        for (accessor, get) in [(&property.get, true), (&property.set, false)] {
+            if let Some(accessor) = accessor {
+                let which = if get { "get" } else { "set" };
+                let target = TextTarget::Property {
+                    pou: name(),
+                    property: property.name.clone(),
+                    get,
+                };
+                slots.push((
+                    format!(".{}.{which}.st", property.name),
+                    target,
+                    &accessor.body,
+                ));
+            }
+        }
+    }
+    for action in &pou.actions {
+        let target = TextTarget::Action {
+            pou: name(),
+            action: action.name.clone(),
+        };
+        slots.push((format!(".{}.st", action.name), target, &action.body));
+    }
+    slots
+}
+
+/// Every body of a POU, mutably, in the order of [`slots`].
+fn bodies_mut(pou: &mut Pou) -> Vec<&mut Body> {
+    let mut bodies = vec![&mut pou.body];
+    bodies.extend(pou.methods.iter_mut().map(|method| &mut method.body));
+    for property in &mut pou.properties {
+        if let Some(get) = &mut property.get {
+            bodies.push(&mut get.body);
+        }
+        if let Some(set) = &mut property.set {
+            bodies.push(&mut set.body);
+        }
+    }
+    bodies.extend(pou.actions.iter_mut().map(|action| &mut action.body));
+    bodies
+}
+
+impl LoweredProject<'_> {
+    /// The lowered body `target` of POU `pou`, if it is graphical.
+    pub fn body(&self, pou: &str, target: &TextTarget) -> Option<&LoweredBody> {
+        self.bodies
+            .iter()
+            .find(|body| body.pou.eq_ignore_ascii_case(pou) && &body.target == target)
+    }
+
+    /// The lowered body the checker or code generator names by its text file.
+    fn body_of_text_file(&self, file: &std::path::Path) -> Option<&LoweredBody> {
+        self.bodies.iter().find(|body| body.text_file == file)
+    }
+}
+
+impl LoweredBody {
+    /// Where the 1-based `line` of the lowered text comes from: what a fault or a line-table
+    /// entry of the image (which count lines of this text) points back to. Every statement
+    /// is on a line of its own, so the line's statement names the element.
+    pub fn origin_at_line(&self, line: u32) -> Option<crate::origin::Origin> {
+        let index = usize::try_from(line).ok()?.checked_sub(1)?;
+        let mut start = 0;
+        for (at, text) in self.text.split_inclusive('\n').enumerate() {
+            if at == index {
+                let content = text.trim();
+                let offset = start + (text.len() - text.trim_start().len());
+                return self.origins.origin(offset..offset + content.len());
+            }
+            start += text.len();
+        }
+        None
+    }
+
+    /// The hidden variables' names, lower case, with their descriptions.
+    fn describe(&self, message: &str) -> String {
+        locate::describe_hidden(message, &self.descriptions)
+    }
+
+    /// Whether `name` is a hidden variable of this body.
+    fn is_hidden(&self, name: &str) -> bool {
+        self.descriptions
+            .iter()
+            .any(|(hidden, _)| hidden.eq_ignore_ascii_case(name))
+    }
+
+    /// The span lookup of [`OriginMap`], as an element place of this body.
+    fn place_of(&self, span: &Span) -> ElementPlace {
+        ElementPlace {
+            pou: self.pou.clone(),
+            target: self.target.clone(),
+            network: span.network,
+            element: span.element,
+            pin: span.pin.clone(),
+        }
+    }
+}
