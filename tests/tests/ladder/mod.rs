@@ -950,3 +950,78 @@ fn fbd_pins_negate_and_detect_edges_and_functions_nest() {
         .collect();
     assert_eq!(read("Main.Ld_r"), r);
 }
+
+/// Sets the located BOOL or REAL at `path` in `simulation`, as the I/O or a peer would.
+fn set_value(simulation: &mut Simulation, path: &str, value: f64) {
+    let place =
+        runtime::value::resolve(simulation.engine().image(), path).expect("the path resolves");
+    let region = simulation.engine_mut().region_mut(place.region);
+    let offset = usize::try_from(place.offset).expect("an offset in memory");
+    match place.bit {
+        Some(bit) => {
+            let mask = 1u8 << bit;
+            if value != 0.0 {
+                region[offset] |= mask;
+            } else {
+                region[offset] &= !mask;
+            }
+        }
+        None => {
+            #[allow(clippy::cast_possible_truncation)]
+            let bytes = (value as f32).to_le_bytes();
+            region[offset..offset + 4].copy_from_slice(&bytes);
+        }
+    }
+}
+
+/// The example project's ladder interlock and FBD scaling, run as its tasks run them: the
+/// start button latches the request, the horn sounds for the two seconds of the TON, then the
+/// belt is enabled; stop resets the request; the FBD program scales and limits the belt speed.
+#[test]
+fn the_example_project_s_ladder_and_fbd_programs_run_in_its_tasks() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../assets/examples/packaging_machine");
+    let loaded = project_model::load_project(&dir).expect("the example loads");
+    let image = match compiler::compile_project(&loaded.project) {
+        Ok(image) => image,
+        Err(error) => panic!("{error}"),
+    };
+    let mut simulation = Simulation::new(image).expect("the image loads");
+    let read = |simulation: &Simulation, path: &str| {
+        runtime::value::read(simulation.engine(), path)
+            .expect("readable")
+            .to_string()
+    };
+    // The fastest task runs every 2 ms, so five cycles are one 10 ms cycle of the main task.
+    simulation.run(5);
+    assert_eq!(read(&simulation, "Interlock.xRunRequest"), "FALSE");
+    set_value(&mut simulation, "GVL_IO.xStartButton", 1.0);
+    simulation.run(10);
+    set_value(&mut simulation, "GVL_IO.xStartButton", 0.0);
+    simulation.run(10);
+    assert_eq!(read(&simulation, "Interlock.xRunRequest"), "TRUE");
+    assert_eq!(read(&simulation, "Interlock.xHorn"), "TRUE");
+    assert_eq!(read(&simulation, "Interlock.xRunEnabled"), "FALSE");
+    // Two seconds later the TON is done: the belt may run and the horn stops.
+    simulation.run(1000);
+    assert_eq!(read(&simulation, "Interlock.xRunEnabled"), "TRUE");
+    assert_eq!(read(&simulation, "Interlock.xHorn"), "FALSE");
+    assert_eq!(read(&simulation, "Interlock.tWarningElapsed"), "T#2s");
+    // Stop resets the request, and with it the timer and the enable.
+    set_value(&mut simulation, "GVL_IO.xStopButton", 1.0);
+    simulation.run(10);
+    assert_eq!(read(&simulation, "Interlock.xRunRequest"), "FALSE");
+    assert_eq!(read(&simulation, "Interlock.xRunEnabled"), "FALSE");
+
+    // 2,500 mm/s is 125 % of the drive's 2,000 mm/s, limited to 100 %; the recipe's set point
+    // is 50 mm/s.
+    set_value(&mut simulation, "GVL_Machine.rBeltSpeedActual", 2500.0);
+    simulation.run(10);
+    assert_eq!(read(&simulation, "Scaling.rBeltLoad"), "100");
+    assert_eq!(read(&simulation, "Scaling.rSpeedDeviation"), "2450");
+    set_value(&mut simulation, "GVL_Machine.rBeltSpeedActual", 500.0);
+    simulation.run(10);
+    assert_eq!(read(&simulation, "Scaling.rBeltLoad"), "25");
+    assert_eq!(read(&simulation, "Scaling.xOverspeed"), "FALSE");
+    assert!(simulation.faults().is_empty(), "{:?}", simulation.faults());
+}
