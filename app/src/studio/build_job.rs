@@ -8,6 +8,7 @@ use std::sync::Arc;
 use std::sync::mpsc::{self, TryRecvError};
 use std::time::{Duration, Instant};
 
+use compiler::lower::ElementPlace;
 use compiler::{CompileError, Severity};
 use project_model::{Project, TextTarget};
 
@@ -34,6 +35,8 @@ pub struct BuildMessage {
     pub node: Option<TreeNode>,
     /// The body and byte range to show, for findings in Structured Text bodies.
     pub place: Option<(TextTarget, Range<usize>)>,
+    /// The network and element to show, for findings in LD and FBD bodies.
+    pub element: Option<ElementPlace>,
 }
 
 /// Why a build produced no program although the checker found no error.
@@ -205,9 +208,10 @@ fn messages(project: &Project) -> Vec<BuildMessage> {
                 Some((_, _, text)) => line_column(text, diagnostic.range.start),
                 None => (0, 0),
             };
-            let node = match body {
-                Some((pou, _, _)) => Some(TreeNode::Object(pou.clone())),
-                None => objects.get(&found.file).cloned().map(TreeNode::Object),
+            let node = match (body, &found.element) {
+                (Some((pou, _, _)), _) => Some(TreeNode::Object(pou.clone())),
+                (None, Some(place)) => Some(TreeNode::Object(place.pou.clone())),
+                (None, None) => objects.get(&found.file).cloned().map(TreeNode::Object),
             };
             let message = match &found.declaration {
                 Some(name) => format!("{name}: {}", diagnostic.message),
@@ -222,6 +226,7 @@ fn messages(project: &Project) -> Vec<BuildMessage> {
                 message,
                 node,
                 place: body.map(|(_, target, _)| (target.clone(), diagnostic.range.clone())),
+                element: found.element,
             }
         })
         .collect()
@@ -280,5 +285,37 @@ mod tests {
             "{:?}",
             outcome.messages
         );
+    }
+
+    #[test]
+    fn a_finding_in_a_ladder_body_names_its_network_and_element() {
+        let mut project = project_model::load_project(&assets::example_project_dir())
+            .map(|loaded| loaded.project)
+            .unwrap_or_else(|error| panic!("{error}"));
+        let Some(project_model::Object::Pou(interlock)) =
+            project.application.object_mut("Interlock")
+        else {
+            panic!("the example has the LD program Interlock");
+        };
+        let project_model::Body::Ld { networks } = &mut interlock.body else {
+            panic!("Interlock is drawn in LD");
+        };
+        let project_model::FlowNode::Operand(contact) = &mut networks[3].rung[1] else {
+            panic!("the horn's second element is a contact");
+        };
+        contact.text = "xNoSuchSignal".into();
+        let id = contact.id;
+        let outcome = build(&project, 2);
+        assert!(outcome.image.is_none());
+        let found = outcome
+            .messages
+            .iter()
+            .find(|m| m.element.is_some())
+            .unwrap_or_else(|| panic!("{:?}", outcome.messages));
+        assert_eq!(found.file, PathBuf::from("application/Interlock.pou.toml"));
+        assert_eq!(found.node, Some(TreeNode::Object("Interlock".into())));
+        assert!(found.message.contains("xNoSuchSignal"), "{}", found.message);
+        let place = found.element.as_ref().map(|p| (p.network, p.element));
+        assert_eq!(place, Some((3, Some(id))));
     }
 }

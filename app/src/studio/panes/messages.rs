@@ -71,7 +71,9 @@ pub(crate) fn messages_ui(view: StudioView<'_>, commands: &mut Commands, ui: &mu
                                 compiler::Severity::Warning => warn,
                             };
                             ui.label(RichText::new(&message.code).monospace().color(color));
-                            let location = if message.line > 0 {
+                            let location = if let Some(place) = &message.element {
+                                format!("{}:{place}", message.file.display())
+                            } else if message.line > 0 {
                                 format!(
                                     "{}:{}:{}",
                                     message.file.display(),
@@ -129,11 +131,19 @@ pub(crate) fn messages_ui(view: StudioView<'_>, commands: &mut Commands, ui: &mu
     if let Some(message) = open
         && let Some(node) = message.node
     {
-        match message.place {
-            Some((target, range)) => {
+        match (message.place, message.element) {
+            (Some((target, range)), _) => {
                 commands.push(Command::Reveal(node, Reveal::Body(target, range)))
             }
-            None => commands.push(Command::Open(node)),
+            (None, Some(place)) => commands.push(Command::Reveal(
+                node,
+                Reveal::Element {
+                    target: place.target,
+                    network: place.network,
+                    element: place.element,
+                },
+            )),
+            (None, None) => commands.push(Command::Open(node)),
         }
     }
 }

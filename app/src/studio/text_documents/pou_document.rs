@@ -47,7 +47,7 @@ pub(crate) fn pou_document_ui(
         }
         _ => None,
     };
-    if let Some(Reveal::Body(target, _)) = &reveal {
+    if let Some(Reveal::Body(target, _) | Reveal::Element { target, .. }) = &reveal {
         part = part_of(target);
     }
     if let Some(Reveal::Declaration {
