@@ -26,6 +26,7 @@ mod io_area;
 mod list_edit;
 mod modbus_device;
 mod network;
+mod network_edit;
 mod network_walk;
 mod pou;
 mod project;
@@ -72,6 +73,12 @@ pub use modbus_device::{ModbusBinding, ModbusDataType, ModbusDevice, ModbusTable
 pub use network::{
     BlockCall, BlockInput, BlockOutput, Branch, Coil, CoilKind, EN_PIN, ENO_PIN, Edge, ElementId,
     FlowNode, Network, NetworkOutput, Operand, Parallel,
+};
+pub use network_edit::{
+    Anchor, BodySplice, HeaderField, NetworkClipboard, NetworkEditError, ParallelSide, Side,
+    copy_elements, copy_networks, cycle_modifier, delete_elements, delete_networks, insert_network,
+    insert_output, insert_parallel, insert_series, new_box, new_coil, new_contact, new_jump,
+    new_return, paste, set_element_text, set_network_header, set_pin_operand, toggle_negation,
 };
 pub use network_walk::{ElementRef, max_element_id, walk_chain, walk_outputs};
 pub use pou::{
