@@ -14,6 +14,7 @@
 
 mod code_view;
 mod device_editors;
+mod diagram;
 mod io_mapping;
 mod palette;
 mod st_editor;
