@@ -27,6 +27,13 @@ pub use device_editors::{
     DeviceEdit, DeviceEditorState, DeviceTexts, Refusal, RefusalWords, axis_editor_ui,
     controller_editor_ui, io_area_editor_ui, modbus_device_editor_ui,
 };
+pub use diagram::{
+    BlockSignature, DiagramChange, DiagramCommand, DiagramEditor, DiagramOnline, DiagramOutput,
+    DiagramRefusal, DiagramSelection, DiagramServices, DiagramTexts, DiagramView,
+    ElementDiagnostic, InsertPoint, InsertTarget, InstanceDeclaration, NetworkLayout, OnlineValue,
+    PinMark, PlacedElement, Power, PreparedOperand, Shape, ToolboxItem, Wire, fbd_layout,
+    ld_layout,
+};
 pub use io_mapping::{IoMappingOutput, io_mapping_ui};
 pub use palette::{EditorPalette, SyntaxColors};
 pub use st_editor::{

@@ -1,0 +1,732 @@
+//! The canvas in a frame: zoom and pan, painting the networks in view, pointer and keyboard
+//! input, clipboard, and dropping toolbox elements on insertion points.
+
+use std::sync::Arc;
+
+use egui::{
+    Align2, Event, EventFilter, FontId, Id, Key, PointerButton, Pos2, Rect, Response, Role, Sense,
+    Stroke, StrokeKind, Ui, Vec2, WidgetInfo, pos2, vec2,
+};
+use project_model::{
+    Anchor, ElementRef, HeaderField, NetworkClipboard, NetworkEditError, Side, copy_elements,
+    copy_networks, paste,
+};
+
+use super::commands::{DiagramCommand, command_for_key, run_command};
+use super::editor::{
+    DiagramEditor, FrameResult, HEADER_HEIGHT_PX, LEFT_MARGIN_PX, NETWORK_GAP_PX, ZOOM_RANGE,
+};
+use super::entry::{Entry, EntryTarget};
+use super::navigate::Direction;
+use super::paint::{CELL_SIZE_PX, PaintContext};
+use super::placed::{InsertTarget, Shape};
+use super::toolbox::ToolboxItem;
+use super::types::{DiagramRefusal, DiagramServices};
+use crate::EditorPalette;
+
+/// How near to an insertion point a drop must be, in cells.
+const DROP_RADIUS_CELLS: f32 = 0.6;
+
+/// What the pointer is over.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) enum Hit {
+    /// An element of a network.
+    Element(usize, project_model::ElementId),
+    /// A network's header line.
+    Header(usize, HeaderField),
+    /// A network's drawing, away from its elements.
+    Network(usize),
+    /// Nothing.
+    Empty,
+}
+
+impl DiagramEditor {
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn canvas_ui(
+        &mut self,
+        ui: &mut Ui,
+        id: Id,
+        label: &str,
+        viewport: Rect,
+        services: &dyn DiagramServices,
+        frame: &mut FrameResult,
+    ) -> Response {
+        let size = (self.content_px * self.zoom).max(viewport.size());
+        let (_, rect) = ui.allocate_space(size);
+        let response = ui.interact(rect, id, Sense::click_and_drag());
+        let enabled = ui.is_enabled();
+        let label_text = label.to_owned();
+        response.widget_info(|| WidgetInfo::labeled(Role::Canvas, enabled, &label_text));
+        if std::mem::take(&mut self.focus_requested)
+            || response.clicked()
+            || response.drag_started()
+        {
+            response.request_focus();
+        }
+        let origin = rect.min;
+        self.last_origin = origin;
+        self.zoom_and_pan_ui(ui, &response, origin, viewport);
+        if response.has_focus() && self.entry.is_none() {
+            let filter = EventFilter {
+                tab: false,
+                horizontal_arrows: true,
+                vertical_arrows: true,
+                escape: true,
+            };
+            ui.memory_mut(|memory| memory.set_focus_lock_filter(id, filter));
+            let events = ui.input(|input| input.filtered_events(&filter));
+            self.handle_events(ui.ctx(), &events, services, frame);
+        }
+        self.pointer_ui(ui, &response, origin, services, frame);
+        self.paint_visible(ui, origin, viewport, &response);
+        if self.scroll_to_selection {
+            self.scroll_to_selection = false;
+            if let Some(target) = self.selection_rect_px() {
+                let screen = Rect::from_min_max(
+                    origin + target.min.to_vec2() * self.zoom,
+                    origin + target.max.to_vec2() * self.zoom,
+                );
+                ui.scroll_to_rect(screen.expand(8.0), None);
+            }
+        }
+        if let Some(entry_rect) = self.entry_rect_px() {
+            let screen = Rect::from_min_max(
+                origin + entry_rect.min.to_vec2() * self.zoom,
+                origin + entry_rect.max.to_vec2() * self.zoom,
+            );
+            self.entry_ui(ui.ctx(), id, screen, services, frame);
+        }
+        response
+    }
+
+    fn zoom_and_pan_ui(&mut self, ui: &Ui, response: &Response, origin: Pos2, viewport: Rect) {
+        if let Some(pointer) = response.hover_pos() {
+            let factor = ui.input(|input| input.zoom_delta());
+            if (factor - 1.0).abs() > f32::EPSILON {
+                let zoom = (self.zoom * factor).clamp(ZOOM_RANGE.0, ZOOM_RANGE.1);
+                // The content point under the mouse stays under it.
+                let under_mouse = (pointer - origin) / self.zoom;
+                let in_viewport = pointer - (origin + viewport.min.to_vec2());
+                self.pending_offset = Some((under_mouse * zoom - in_viewport).max(Vec2::ZERO));
+                self.zoom = zoom;
+            }
+        }
+        if response.dragged_by(PointerButton::Middle) {
+            self.pending_offset =
+                Some((self.scroll_offset - response.drag_delta()).max(Vec2::ZERO));
+        }
+    }
+
+    /// What is at `pos`, in content points at zoom 1.
+    pub(super) fn hit(&self, pos: Pos2) -> Hit {
+        let count = self.networks.len();
+        let index = self.tops_px[1..].partition_point(|end| *end <= pos.y);
+        if index >= count {
+            return Hit::Empty;
+        }
+        let top = self.tops_px[index];
+        if pos.y < top + HEADER_HEIGHT_PX {
+            let field = if pos.y < top + HEADER_HEIGHT_PX / 2.0 {
+                HeaderField::Title
+            } else {
+                HeaderField::Comment
+            };
+            return Hit::Header(index, field);
+        }
+        let origin = self.network_origin_px(index);
+        let cell = pos2(
+            (pos.x - origin.x) / CELL_SIZE_PX.x,
+            (pos.y - origin.y) / CELL_SIZE_PX.y,
+        );
+        match self.layouts[index]
+            .element_at(cell)
+            .and_then(|element| element.id)
+        {
+            Some(element) => Hit::Element(index, element),
+            None => Hit::Network(index),
+        }
+    }
+
+    fn pointer_ui(
+        &mut self,
+        ui: &Ui,
+        response: &Response,
+        origin: Pos2,
+        services: &dyn DiagramServices,
+        frame: &mut FrameResult,
+    ) {
+        let zoom = self.zoom;
+        let to_content = |screen: Pos2| ((screen - origin) / zoom).to_pos2();
+        if let Some(item) = response.dnd_release_payload::<ToolboxItem>()
+            && let Some(pointer) = response.hover_pos()
+        {
+            if let Some((_, target)) = self.drop_target(to_content(pointer)) {
+                self.drop_item(*item, target, services, frame);
+            }
+            return;
+        }
+        if response.clicked_by(PointerButton::Primary)
+            && let Some(pointer) = response.interact_pointer_pos()
+        {
+            let shift = ui.input(|input| input.modifiers.shift);
+            let hit = self.hit(to_content(pointer));
+            self.click(hit, shift);
+        }
+        if response.double_clicked()
+            && let Some(pointer) = response.interact_pointer_pos()
+        {
+            match self.hit(to_content(pointer)) {
+                Hit::Element(_, element) => self.open_entry(EntryTarget::Element(element), None),
+                Hit::Header(index, field) => {
+                    self.open_entry(EntryTarget::Header(index, field), None)
+                }
+                Hit::Network(_) | Hit::Empty => {}
+            }
+        }
+        if response.drag_started_by(PointerButton::Primary)
+            && let Some(pointer) = response.interact_pointer_pos()
+        {
+            let from = to_content(pointer);
+            if !matches!(self.hit(from), Hit::Element(..)) {
+                self.rubber_band_from = Some(from);
+            }
+        }
+        if let Some(from) = self.rubber_band_from
+            && let Some(pointer) = ui.input(|input| input.pointer.interact_pos())
+        {
+            let band = Rect::from_two_pos(from, to_content(pointer));
+            if response.drag_stopped() {
+                self.rubber_band_from = None;
+                self.select_in(band, ui.input(|input| input.modifiers.shift));
+            } else {
+                let screen = Rect::from_two_pos(origin + from.to_vec2() * self.zoom, pointer);
+                let palette = EditorPalette::of(ui);
+                ui.painter()
+                    .rect_filled(screen, 0.0, palette.diagram_selection);
+                ui.painter().rect_stroke(
+                    screen,
+                    0.0,
+                    Stroke::new(1.0, palette.power_on),
+                    StrokeKind::Inside,
+                );
+            }
+        }
+        if let Some(pointer) = response.hover_pos()
+            && let Hit::Element(_, element) = self.hit(to_content(pointer))
+        {
+            let messages: Vec<String> = self
+                .diagnostics
+                .iter()
+                .filter(|diagnostic| diagnostic.element == Some(element))
+                .map(|diagnostic| format!("{}: {}", diagnostic.code, diagnostic.message))
+                .collect();
+            if !messages.is_empty() {
+                response.show_tooltip_text(messages.join("\n"));
+            }
+        }
+    }
+
+    fn click(&mut self, hit: Hit, shift: bool) {
+        match hit {
+            Hit::Element(network, element) => {
+                if let Some(operand) = self.online_operand(element) {
+                    self.selection.network = Some(network);
+                    self.selection.elements = vec![element];
+                    self.open_entry(EntryTarget::Prepared { element, operand }, None);
+                } else if shift {
+                    if let Some(position) =
+                        self.selection.elements.iter().position(|id| *id == element)
+                    {
+                        self.selection.elements.remove(position);
+                    } else {
+                        self.selection.elements.push(element);
+                    }
+                    self.selection.network.get_or_insert(network);
+                } else {
+                    self.select(Some(network), vec![element]);
+                }
+            }
+            Hit::Header(network, _) | Hit::Network(network) => {
+                self.select(Some(network), Vec::new())
+            }
+            Hit::Empty => self.select(None, Vec::new()),
+        }
+        self.scroll_to_selection = false;
+    }
+
+    /// The operand of `element` when online and the element reads or writes a variable.
+    fn online_operand(&self, element: project_model::ElementId) -> Option<String> {
+        self.online.as_ref()?;
+        let network = self
+            .networks
+            .iter()
+            .find(|network| network.element(element).is_some())?;
+        match network.element(element)? {
+            ElementRef::Operand(operand) if !operand.text.is_empty() => Some(operand.text.clone()),
+            ElementRef::Output(project_model::NetworkOutput::Coil(coil))
+                if !coil.variable.is_empty() =>
+            {
+                Some(coil.variable.clone())
+            }
+            _ => None,
+        }
+    }
+
+    /// Selects the elements whose cells meet `band` (content points at zoom 1).
+    fn select_in(&mut self, band: Rect, add: bool) {
+        if !add {
+            self.selection.elements.clear();
+            self.selection.network = None;
+        }
+        let range = self.networks_between(band.top(), band.bottom());
+        for index in range {
+            let origin = self.network_origin_px(index);
+            for element in &self.layouts[index].elements {
+                let Some(id) = element.id else { continue };
+                if matches!(element.shape, Shape::Group) {
+                    continue;
+                }
+                let rect = Rect::from_min_max(
+                    origin + element.rect.min.to_vec2() * CELL_SIZE_PX,
+                    origin + element.rect.max.to_vec2() * CELL_SIZE_PX,
+                );
+                if band.intersects(rect) && !self.selection.elements.contains(&id) {
+                    self.selection.elements.push(id);
+                    self.selection.network.get_or_insert(index);
+                }
+            }
+        }
+    }
+
+    /// The nearest insertion point to `pos` (content points at zoom 1) in the networks there.
+    fn drop_target(&self, pos: Pos2) -> Option<(usize, InsertTarget)> {
+        let range = self.networks_between(pos.y - CELL_SIZE_PX.y, pos.y + CELL_SIZE_PX.y);
+        range
+            .filter_map(|index| {
+                let origin = self.network_origin_px(index);
+                let cell = ((pos - origin) / CELL_SIZE_PX).to_pos2();
+                self.layouts[index]
+                    .insert_point_near(cell, DROP_RADIUS_CELLS)
+                    .map(|point| (index, point.target, point.pos.distance(cell)))
+            })
+            .min_by(|a, b| a.2.total_cmp(&b.2))
+            .map(|(index, target, _)| (index, target))
+    }
+
+    fn paint_visible(&self, ui: &Ui, origin: Pos2, viewport: Rect, response: &Response) {
+        let painter = ui.painter_at(ui.clip_rect());
+        let palette = EditorPalette::of(ui);
+        let visuals = ui.visuals();
+        let selected = self.selected_set();
+        let context = PaintContext {
+            painter: &painter,
+            palette,
+            line: visuals.text_color(),
+            weak: visuals.weak_text_color(),
+            zoom: self.zoom,
+            selected: &selected,
+            diagnostics: &self.marks,
+            online: self.online.as_ref(),
+            placeholder: &self.texts.placeholder,
+        };
+        let dragging = response.dnd_hover_payload::<ToolboxItem>().is_some();
+        let highlighted = if dragging {
+            response
+                .hover_pos()
+                .and_then(|pointer| self.drop_target(((pointer - origin) / self.zoom).to_pos2()))
+        } else {
+            None
+        };
+        let top = viewport.top() / self.zoom;
+        let bottom = viewport.bottom() / self.zoom;
+        for index in self.networks_between(top, bottom) {
+            let block_top = origin + vec2(0.0, self.tops_px[index]) * self.zoom;
+            self.paint_header(&painter, index, block_top, &context);
+            let network_origin = origin + self.network_origin_px(index).to_vec2() * self.zoom;
+            context.network(&self.layouts[index], network_origin);
+            if dragging {
+                let mark = highlighted
+                    .filter(|(network, _)| *network == index)
+                    .and_then(|(_, target)| {
+                        self.layouts[index]
+                            .insert_points
+                            .iter()
+                            .find(|point| point.target == target)
+                            .map(|point| point.pos)
+                    });
+                context.insert_points(&self.layouts[index], network_origin, mark);
+            }
+        }
+    }
+
+    fn paint_header(
+        &self,
+        painter: &egui::Painter,
+        index: usize,
+        top: Pos2,
+        context: &PaintContext<'_>,
+    ) {
+        let network = &self.networks[index];
+        let zoom = self.zoom;
+        let selected = self.selection.network == Some(index) && self.selection.elements.is_empty();
+        let block_height =
+            (HEADER_HEIGHT_PX + self.layouts[index].size.y * CELL_SIZE_PX.y + NETWORK_GAP_PX / 2.0)
+                * zoom;
+        let block = Rect::from_min_size(
+            top,
+            vec2(
+                (LEFT_MARGIN_PX + self.layouts[index].size.x * CELL_SIZE_PX.x + 8.0) * zoom,
+                block_height,
+            ),
+        );
+        if selected {
+            painter.rect_filled(block, 2.0 * zoom, context.palette.diagram_selection);
+        }
+        painter.line_segment(
+            [block.left_bottom(), block.right_bottom()],
+            Stroke::new(0.5, context.weak),
+        );
+        painter.text(
+            top + vec2(6.0, 4.0) * zoom,
+            Align2::LEFT_TOP,
+            (index + 1).to_string(),
+            FontId::proportional(13.0 * zoom),
+            context.line,
+        );
+        if !network.label.is_empty() {
+            painter.text(
+                top + vec2(6.0, 22.0) * zoom,
+                Align2::LEFT_TOP,
+                format!("{}:", network.label),
+                FontId::monospace(10.0 * zoom),
+                context.palette.syntax.label,
+            );
+        }
+        let text_left = top + vec2(LEFT_MARGIN_PX, 2.0) * zoom;
+        let (title, title_color) = if network.title.is_empty() {
+            (
+                format!("{} {}", self.texts.network, index + 1),
+                context.weak,
+            )
+        } else {
+            (network.title.clone(), context.line)
+        };
+        painter.text(
+            text_left,
+            Align2::LEFT_TOP,
+            title,
+            FontId::proportional(13.0 * zoom),
+            title_color,
+        );
+        if !network.comment.is_empty() {
+            painter.text(
+                text_left + vec2(0.0, 18.0) * zoom,
+                Align2::LEFT_TOP,
+                &network.comment,
+                FontId::proportional(11.0 * zoom),
+                context.palette.syntax.comment,
+            );
+        }
+        if let Some(severity) = self
+            .diagnostics
+            .iter()
+            .filter(|diagnostic| diagnostic.network == index && diagnostic.element.is_none())
+            .map(|diagnostic| diagnostic.severity)
+            .next()
+        {
+            let color = match severity {
+                crate::Severity::Error => context.palette.error,
+                crate::Severity::Warning => context.palette.warning,
+                crate::Severity::Info => context.palette.info,
+            };
+            painter.circle_filled(top + vec2(4.0, 30.0) * zoom, 3.0 * zoom, color);
+        }
+    }
+
+    /// Handles the keys, text and clipboard events of a frame while the canvas has focus.
+    fn handle_events(
+        &mut self,
+        ctx: &egui::Context,
+        events: &[Event],
+        services: &dyn DiagramServices,
+        frame: &mut FrameResult,
+    ) {
+        for event in events {
+            match event {
+                Event::Key {
+                    key,
+                    pressed: true,
+                    modifiers,
+                    ..
+                } => {
+                    if let Some(command) = command_for_key(*key, *modifiers) {
+                        self.command(command, services, frame);
+                        continue;
+                    }
+                    match key {
+                        Key::ArrowLeft => self.navigate(Direction::Left),
+                        Key::ArrowRight => self.navigate(Direction::Right),
+                        Key::ArrowUp => self.navigate(Direction::Up),
+                        Key::ArrowDown => self.navigate(Direction::Down),
+                        Key::Enter => self.open_selected_entry(None),
+                        Key::F2 => {
+                            self.assistant_open = true;
+                            self.open_selected_entry(None);
+                        }
+                        Key::Escape => self.select(None, Vec::new()),
+                        _ => {}
+                    }
+                }
+                Event::Text(text) if !self.read_only => self.open_selected_entry(Some(text)),
+                Event::Copy => self.copy(ctx),
+                Event::Cut => {
+                    self.copy(ctx);
+                    self.command(DiagramCommand::Delete, services, frame);
+                }
+                Event::Paste(_) => self.paste(ctx, frame),
+                _ => {}
+            }
+        }
+    }
+
+    /// Opens the text field of the selected element or network title, with `typed` in it.
+    fn open_selected_entry(&mut self, typed: Option<&str>) {
+        if let [element] = self.selection.elements.as_slice() {
+            let element = *element;
+            self.open_entry(EntryTarget::Element(element), typed);
+        } else if self.selection.elements.is_empty()
+            && let Some(index) = self.selection.network
+        {
+            self.open_entry(EntryTarget::Header(index, HeaderField::Title), typed);
+        }
+    }
+
+    fn clipboard_id() -> Id {
+        Id::unique("editor::diagram::clipboard")
+    }
+
+    fn copy(&self, ctx: &egui::Context) {
+        let copied = if self.selection.elements.is_empty() {
+            match self.selection.network {
+                Some(index) => copy_networks(&self.networks, index..index + 1),
+                None => Err(NetworkEditError::NothingSelected),
+            }
+        } else {
+            copy_elements(&self.networks, &self.selection.elements)
+        };
+        if let Ok(clipboard) = copied {
+            // Other applications get the operands as text; a diagram editor pastes the
+            // structure kept in the context, shared by all editors of the studio.
+            let mut words = Vec::new();
+            for network in &clipboard.networks {
+                network.for_each_element(&mut |element| words.push(element_word(&element)));
+            }
+            project_model::walk_chain(&clipboard.nodes, &mut |element| {
+                words.push(element_word(&element))
+            });
+            project_model::walk_outputs(&clipboard.outputs, &mut |element| {
+                words.push(element_word(&element))
+            });
+            words.retain(|word| !word.is_empty());
+            ctx.copy_text(words.join(" "));
+            ctx.data_mut(|data| data.insert_temp(Self::clipboard_id(), Arc::new(clipboard)));
+        }
+    }
+
+    fn paste(&mut self, ctx: &egui::Context, frame: &mut FrameResult) {
+        if self.read_only {
+            return;
+        }
+        let Some(clipboard) =
+            ctx.data(|data| data.get_temp::<Arc<NetworkClipboard>>(Self::clipboard_id()))
+        else {
+            return;
+        };
+        let anchor = self
+            .selection
+            .anchor()
+            .unwrap_or(Anchor::Network(self.networks.len().saturating_sub(1)));
+        let result = if self.networks.is_empty() && !clipboard.networks.is_empty() {
+            let mut splice = paste(
+                &[project_model::Network::default()],
+                Anchor::Network(0),
+                &clipboard,
+            );
+            if let Ok(splice) = &mut splice {
+                splice.at = 0;
+            }
+            splice
+        } else {
+            paste(&self.networks, anchor, &clipboard)
+        };
+        match result {
+            Ok(splice) => self.apply_splice(splice, frame),
+            Err(error) => frame.refusal = Some(DiagramRefusal::Edit(error)),
+        }
+    }
+
+    /// Runs a command on the selection.
+    pub(super) fn command(
+        &mut self,
+        command: DiagramCommand,
+        services: &dyn DiagramServices,
+        frame: &mut FrameResult,
+    ) {
+        let _ = services;
+        if self.read_only {
+            return;
+        }
+        if command == DiagramCommand::InsertBox {
+            let target = match self.selection.anchor() {
+                Some(Anchor::Element(id)) => {
+                    let is_output = self
+                        .networks
+                        .iter()
+                        .any(|network| matches!(network.element(id), Some(ElementRef::Output(_))));
+                    InsertTarget::Series {
+                        anchor: Anchor::Element(id),
+                        side: if is_output { Side::Before } else { Side::After },
+                    }
+                }
+                Some(anchor) => InsertTarget::Series {
+                    anchor,
+                    side: Side::After,
+                },
+                None => InsertTarget::Series {
+                    anchor: Anchor::Network(self.networks.len().saturating_sub(1)),
+                    side: Side::After,
+                },
+            };
+            self.open_entry(EntryTarget::NewBox(target), None);
+            return;
+        }
+        match run_command(&self.networks, &self.selection, command) {
+            Ok(splice) => self.apply_splice(splice, frame),
+            Err(error) => frame.refusal = Some(DiagramRefusal::Edit(error)),
+        }
+    }
+
+    /// Inserts a toolbox element at an insertion point.
+    fn drop_item(
+        &mut self,
+        item: ToolboxItem,
+        target: InsertTarget,
+        services: &dyn DiagramServices,
+        frame: &mut FrameResult,
+    ) {
+        if self.read_only {
+            return;
+        }
+        let _ = services;
+        if item == ToolboxItem::Box {
+            self.open_entry(EntryTarget::NewBox(target), None);
+            return;
+        }
+        match item.insert_at(&self.networks, target) {
+            Ok(splice) => self.apply_splice(splice, frame),
+            Err(error) => frame.refusal = Some(DiagramRefusal::Edit(error)),
+        }
+    }
+
+    /// The content rectangle (points at zoom 1) of the selection, to scroll it into view.
+    fn selection_rect_px(&self) -> Option<Rect> {
+        let index = self.selection.network?;
+        let origin = self.network_origin_px(index);
+        let top = self.tops_px[index];
+        let element = self
+            .selection
+            .elements
+            .first()
+            .and_then(|id| self.layouts.get(index)?.element(*id));
+        Some(match element {
+            Some(element) => Rect::from_min_max(
+                origin + element.rect.min.to_vec2() * CELL_SIZE_PX,
+                origin + element.rect.max.to_vec2() * CELL_SIZE_PX,
+            ),
+            None => {
+                Rect::from_min_size(pos2(0.0, top), vec2(LEFT_MARGIN_PX * 4.0, HEADER_HEIGHT_PX))
+            }
+        })
+    }
+
+    /// The content rectangle (points at zoom 1) the open text field goes over.
+    fn entry_rect_px(&self) -> Option<Rect> {
+        let entry = self.entry.as_ref()?;
+        let in_network = |index: usize, cells: Rect| {
+            let origin = self.network_origin_px(index);
+            Rect::from_min_max(
+                origin + cells.min.to_vec2() * CELL_SIZE_PX,
+                origin + cells.max.to_vec2() * CELL_SIZE_PX,
+            )
+        };
+        match &entry.target {
+            EntryTarget::Element(id) | EntryTarget::Prepared { element: id, .. } => {
+                let index = self
+                    .networks
+                    .iter()
+                    .position(|network| network.element(*id).is_some())?;
+                Some(in_network(index, self.layouts[index].element(*id)?.rect))
+            }
+            EntryTarget::NewBox(target) => {
+                let index = match target {
+                    InsertTarget::Series { anchor, .. } | InsertTarget::Output { anchor } => {
+                        match anchor {
+                            Anchor::Network(index) => *index,
+                            Anchor::Element(id) => self
+                                .networks
+                                .iter()
+                                .position(|network| network.element(*id).is_some())?,
+                        }
+                    }
+                    InsertTarget::Parallel { id, .. } => self
+                        .networks
+                        .iter()
+                        .position(|network| network.element(*id).is_some())?,
+                };
+                let point = self
+                    .layouts
+                    .get(index)?
+                    .insert_points
+                    .iter()
+                    .find(|point| point.target == *target);
+                let at = point.map_or(pos2(0.0, 0.0), |point| point.pos);
+                Some(in_network(index, Rect::from_min_size(at, vec2(2.0, 1.0))))
+            }
+            EntryTarget::Header(index, field) => {
+                let index = (*index).min(self.networks.len().checked_sub(1)?);
+                let top = self.tops_px[index]
+                    + if *field == HeaderField::Comment {
+                        18.0
+                    } else {
+                        0.0
+                    };
+                Some(Rect::from_min_size(
+                    pos2(LEFT_MARGIN_PX, top),
+                    vec2(CELL_SIZE_PX.x * 4.0, 20.0),
+                ))
+            }
+        }
+    }
+
+    /// Opens a text field over `target`, holding `typed` or else the current text.
+    pub(super) fn open_entry(&mut self, target: EntryTarget, typed: Option<&str>) {
+        if self.read_only && !matches!(target, EntryTarget::Prepared { .. }) {
+            return;
+        }
+        let text = match typed {
+            Some(typed) => typed.to_owned(),
+            None => self.current_text(&target),
+        };
+        self.entry = Some(Entry::new(target, text));
+    }
+}
+
+/// The word an element contributes to the clipboard's text.
+fn element_word(element: &ElementRef<'_>) -> String {
+    match element {
+        ElementRef::Operand(operand) => operand.text.clone(),
+        ElementRef::Block(block) => block.type_name.clone(),
+        ElementRef::Output(project_model::NetworkOutput::Coil(coil)) => coil.variable.clone(),
+        _ => String::new(),
+    }
+}
