@@ -341,6 +341,7 @@ impl DiagramEditor {
             insert: splice.insert,
         };
         change.apply(&mut self.networks);
+        let replaced = change.at..change.at + change.insert.len();
         frame.change = Some(match (frame.change.take(), frame.networks_before) {
             // A second change in one frame (a menu command and a key) merges into one.
             (Some(_), Some(first_before)) => DiagramChange {
@@ -353,7 +354,15 @@ impl DiagramEditor {
                 change
             }
         });
-        self.relayout_all();
+        if self.networks.len() == before {
+            // The networks kept their indices: only the replaced ones change their layout.
+            for index in replaced {
+                self.layouts[index] = self.layout_of(index);
+            }
+            self.place_networks();
+        } else {
+            self.relayout_all();
+        }
         if let Some(focus) = splice.focus {
             let network = self
                 .networks

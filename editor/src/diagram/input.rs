@@ -393,15 +393,6 @@ impl DiagramEditor {
             FontId::proportional(13.0 * zoom),
             context.line,
         );
-        if !network.label.is_empty() {
-            painter.text(
-                top + vec2(6.0, 22.0) * zoom,
-                Align2::LEFT_TOP,
-                format!("{}:", network.label),
-                FontId::monospace(10.0 * zoom),
-                context.palette.syntax.label,
-            );
-        }
         let text_left = top + vec2(LEFT_MARGIN_PX, 2.0) * zoom;
         let (title, title_color) = if network.title.is_empty() {
             (
@@ -418,9 +409,21 @@ impl DiagramEditor {
             FontId::proportional(13.0 * zoom),
             title_color,
         );
+        // The label, if any, starts the header's second line and the comment follows it.
+        let mut second_line = text_left + vec2(0.0, 18.0) * zoom;
+        if !network.label.is_empty() {
+            let label = painter.text(
+                second_line,
+                Align2::LEFT_TOP,
+                format!("{}:", network.label),
+                FontId::monospace(11.0 * zoom),
+                context.palette.syntax.label,
+            );
+            second_line.x = label.right() + 8.0 * zoom;
+        }
         if !network.comment.is_empty() {
             painter.text(
-                text_left + vec2(0.0, 18.0) * zoom,
+                second_line,
                 Align2::LEFT_TOP,
                 &network.comment,
                 FontId::proportional(11.0 * zoom),

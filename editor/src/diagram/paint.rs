@@ -117,7 +117,7 @@ impl PaintContext<'_> {
                 edge,
             } => {
                 let center = pos2(rect.center().x, mid_y);
-                let half = vec2(7.0, 11.0) * self.zoom;
+                let half = vec2(7.0, 9.0) * self.zoom;
                 self.painter.line_segment(
                     [pos2(rect.left(), mid_y), pos2(center.x - half.x, mid_y)],
                     self.stroke(element.power_in),
@@ -145,7 +145,7 @@ impl PaintContext<'_> {
             }
             Shape::Coil { variable, kind } => {
                 let center = pos2(rect.center().x, mid_y);
-                let radius = 10.0 * self.zoom;
+                let radius = 8.5 * self.zoom;
                 self.painter.line_segment(
                     [pos2(rect.left(), mid_y), pos2(center.x - radius, mid_y)],
                     self.stroke(element.power_in),
@@ -176,11 +176,28 @@ impl PaintContext<'_> {
                 edge,
             } => {
                 let frame = rect.shrink2(vec2(4.0, 8.0) * self.zoom);
-                self.text_in(text, frame, element);
-                self.painter.line_segment(
-                    [pos2(frame.right(), mid_y), pos2(rect.right(), mid_y)],
-                    self.stroke(element.power_in),
-                );
+                if element.id.is_none() {
+                    // An output's assignment: the line comes from the pin on the left.
+                    self.painter.line_segment(
+                        [
+                            pos2(rect.left(), mid_y),
+                            pos2(rect.left() + 6.0 * self.zoom, mid_y),
+                        ],
+                        self.stroke(element.power_in),
+                    );
+                    self.text_at(
+                        text,
+                        pos2(rect.left() + 8.0 * self.zoom, mid_y),
+                        Align2::LEFT_CENTER,
+                        frame.width(),
+                    );
+                } else {
+                    self.text_in(text, frame, element);
+                    self.painter.line_segment(
+                        [pos2(frame.right(), mid_y), pos2(rect.right(), mid_y)],
+                        self.stroke(element.power_in),
+                    );
+                }
                 if *negated {
                     self.negation_circle(pos2(rect.right(), mid_y));
                 }
@@ -316,8 +333,10 @@ impl PaintContext<'_> {
             if let (Some(online), Some(id)) = (self.online, element.id)
                 && let Some(value) = online.values.get(&(id, Some(pin.name.clone())))
             {
+                // Inside the box under the pin's name, where no line or variable is drawn.
                 self.value_badge(
-                    pos2(rect.right(), y - 8.0 * self.zoom),
+                    pos2(frame.right() - 3.0 * self.zoom, y + 5.0 * self.zoom),
+                    Align2::RIGHT_TOP,
                     &value.text,
                     value.forced,
                 );
@@ -351,10 +370,23 @@ impl PaintContext<'_> {
         {
             self.value_badge(
                 rect.left_bottom() - vec2(0.0, 12.0 * self.zoom),
+                Align2::LEFT_TOP,
                 &value.text,
                 value.forced,
             );
         }
+    }
+
+    /// A text at `at`, shortened to `width` points.
+    fn text_at(&self, text: &str, at: Pos2, align: Align2, width: f32) {
+        let max_chars = ((width / (6.5 * self.zoom)) as usize).max(3);
+        self.painter.text(
+            at,
+            align,
+            elide(text, max_chars),
+            self.font(11.0),
+            self.line,
+        );
     }
 
     /// A variable's text in its frame.
@@ -381,20 +413,23 @@ impl PaintContext<'_> {
             && let Some(value) = online.values.get(&(id, None))
         {
             self.value_badge(
-                frame.left_top() - vec2(0.0, 6.0 * self.zoom),
+                frame.right_top(),
+                Align2::RIGHT_BOTTOM,
                 &value.text,
                 value.forced,
             );
         }
     }
 
-    fn value_badge(&self, at: Pos2, text: &str, forced: bool) {
+    /// A value in a small filled box anchored at `at`.
+    fn value_badge(&self, at: Pos2, anchor: Align2, text: &str, forced: bool) {
         let galley = self.painter.layout_no_wrap(
             text.to_owned(),
             FontId::monospace(10.0 * self.zoom),
             self.line,
         );
-        let rect = Rect::from_min_size(at, galley.size()).expand(1.5 * self.zoom);
+        let text_rect = anchor.anchor_size(at, galley.size());
+        let rect = text_rect.expand(1.5 * self.zoom);
         let fill = if forced {
             self.palette.forced_fill
         } else {
@@ -406,7 +441,7 @@ impl PaintContext<'_> {
         } else {
             self.line
         };
-        self.painter.galley(at, galley, color);
+        self.painter.galley(text_rect.min, galley, color);
     }
 
     fn negation_circle(&self, center: Pos2) {
