@@ -84,6 +84,11 @@ pub struct DiagramEditor {
     pub(super) read_only: bool,
     /// The screen position of the content's top-left corner in the last frame.
     pub(super) last_origin: Pos2,
+    /// The input pin of the selected box the user clicked, if any: typing enters its operand
+    /// and negation negates it.
+    pub(super) selected_pin: Option<String>,
+    /// The networks the last frame painted.
+    pub(super) visible: std::ops::Range<usize>,
 }
 
 /// What a frame collects for its output.
@@ -122,6 +127,8 @@ impl DiagramEditor {
             pending_commands: Vec::new(),
             read_only: false,
             last_origin: Pos2::ZERO,
+            selected_pin: None,
+            visible: 0..0,
         };
         editor.relayout_all();
         editor
@@ -174,6 +181,7 @@ impl DiagramEditor {
     /// Selects `elements` in network `network` and scrolls them into view.
     pub fn select(&mut self, network: Option<usize>, elements: Vec<ElementId>) {
         self.selection = DiagramSelection { elements, network };
+        self.selected_pin = None;
         self.scroll_to_selection = true;
     }
 
@@ -263,8 +271,7 @@ impl DiagramEditor {
 
     /// The range of networks the last frame painted.
     pub fn visible_networks(&self) -> std::ops::Range<usize> {
-        let top = self.scroll_offset.y / self.zoom;
-        self.networks_between(top, top + 2000.0 / self.zoom)
+        self.visible.clone()
     }
 
     /// Shows the editor filling the available space: a view toggle, the toolbox and the canvas.

@@ -5,7 +5,7 @@ use egui::text::{CCursor, CCursorRange};
 use egui::{Id, Key, Rect, TextEdit};
 use project_model::{
     Anchor, ElementRef, FlowNode, HeaderField, NetworkOutput, ParallelSide, insert_output,
-    insert_parallel, insert_series, new_box, set_element_text, set_network_header,
+    insert_parallel, insert_series, new_box, set_element_text, set_network_header, set_pin_operand,
 };
 
 use super::editor::{DiagramEditor, FrameResult};
@@ -22,6 +22,8 @@ pub(super) enum EntryTarget {
     /// An element's text: a contact's operand, a coil's variable, a jump's label, a box's
     /// instance.
     Element(project_model::ElementId),
+    /// The operand driving an input pin of a box.
+    Pin(project_model::ElementId, String),
     /// The type of a box to insert at an insertion point.
     NewBox(InsertTarget),
     /// A network's title, comment or label.
@@ -72,6 +74,22 @@ impl DiagramEditor {
                     _ => String::new(),
                 })
                 .unwrap_or_default(),
+            EntryTarget::Pin(id, pin) => self
+                .networks
+                .iter()
+                .find_map(|network| network.element(*id))
+                .and_then(|element| match element {
+                    ElementRef::Block(block) => block
+                        .inputs
+                        .iter()
+                        .find(|input| input.pin == *pin)
+                        .and_then(|input| match input.source.as_slice() {
+                            [FlowNode::Operand(operand)] => Some(operand.text.clone()),
+                            _ => None,
+                        }),
+                    _ => None,
+                })
+                .unwrap_or_default(),
             EntryTarget::Header(index, field) => self
                 .networks
                 .get(*index)
@@ -104,7 +122,7 @@ impl DiagramEditor {
         };
         let field_id = id.with("entry");
         let label = match &entry.target {
-            EntryTarget::Element(_) => self.texts.operand_field.clone(),
+            EntryTarget::Element(_) | EntryTarget::Pin(..) => self.texts.operand_field.clone(),
             EntryTarget::NewBox(_) => self.texts.block_type_field.clone(),
             EntryTarget::Header(_, HeaderField::Title) => self.texts.title_field.clone(),
             EntryTarget::Header(_, HeaderField::Comment) => self.texts.comment_field.clone(),
@@ -188,6 +206,7 @@ impl DiagramEditor {
                 }
                 result
             }
+            EntryTarget::Pin(id, pin) => set_pin_operand(&self.networks, *id, pin, text),
             EntryTarget::Header(index, field) => {
                 set_network_header(&self.networks, *index, *field, text)
             }

@@ -28,10 +28,10 @@ use crate::EditorPalette;
 const DROP_RADIUS_CELLS: f32 = 0.6;
 
 /// What the pointer is over.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub(super) enum Hit {
-    /// An element of a network.
-    Element(usize, project_model::ElementId),
+    /// An element of a network, and the box input pin at the pointer, if any.
+    Element(usize, project_model::ElementId, Option<String>),
     /// A network's header line.
     Header(usize, HeaderField),
     /// A network's drawing, away from its elements.
@@ -126,7 +126,9 @@ impl DiagramEditor {
         }
         let top = self.tops_px[index];
         if pos.y < top + HEADER_HEIGHT_PX {
-            let field = if pos.y < top + HEADER_HEIGHT_PX / 2.0 {
+            let field = if pos.x < LEFT_MARGIN_PX {
+                HeaderField::Label
+            } else if pos.y < top + HEADER_HEIGHT_PX / 2.0 {
                 HeaderField::Title
             } else {
                 HeaderField::Comment
@@ -138,13 +140,23 @@ impl DiagramEditor {
             (pos.x - origin.x) / CELL_SIZE_PX.x,
             (pos.y - origin.y) / CELL_SIZE_PX.y,
         );
-        match self.layouts[index]
-            .element_at(cell)
-            .and_then(|element| element.id)
-        {
-            Some(element) => Hit::Element(index, element),
-            None => Hit::Network(index),
-        }
+        let Some(element) = self.layouts[index].element_at(cell) else {
+            return Hit::Network(index);
+        };
+        let Some(id) = element.id else {
+            return Hit::Network(index);
+        };
+        // The left half of a box holds its input pins, one per row.
+        let pin = match &element.shape {
+            Shape::Box { inputs, .. } if cell.x < element.rect.center().x => inputs
+                .iter()
+                .rev()
+                .find(|pin| pin.row <= cell.y)
+                .filter(|pin| !pin.name.is_empty())
+                .map(|pin| pin.name.clone()),
+            _ => None,
+        };
+        Hit::Element(index, id, pin)
     }
 
     fn pointer_ui(
@@ -176,7 +188,12 @@ impl DiagramEditor {
             && let Some(pointer) = response.interact_pointer_pos()
         {
             match self.hit(to_content(pointer)) {
-                Hit::Element(_, element) => self.open_entry(EntryTarget::Element(element), None),
+                Hit::Element(_, element, Some(pin)) => {
+                    self.open_entry(EntryTarget::Pin(element, pin), None)
+                }
+                Hit::Element(_, element, None) => {
+                    self.open_entry(EntryTarget::Element(element), None)
+                }
                 Hit::Header(index, field) => {
                     self.open_entry(EntryTarget::Header(index, field), None)
                 }
@@ -212,7 +229,7 @@ impl DiagramEditor {
             }
         }
         if let Some(pointer) = response.hover_pos()
-            && let Hit::Element(_, element) = self.hit(to_content(pointer))
+            && let Hit::Element(_, element, _) = self.hit(to_content(pointer))
         {
             let messages: Vec<String> = self
                 .diagnostics
@@ -228,7 +245,7 @@ impl DiagramEditor {
 
     fn click(&mut self, hit: Hit, shift: bool) {
         match hit {
-            Hit::Element(network, element) => {
+            Hit::Element(network, element, pin) => {
                 if let Some(operand) = self.online_operand(element) {
                     self.selection.network = Some(network);
                     self.selection.elements = vec![element];
@@ -244,6 +261,7 @@ impl DiagramEditor {
                     self.selection.network.get_or_insert(network);
                 } else {
                     self.select(Some(network), vec![element]);
+                    self.selected_pin = pin;
                 }
             }
             Hit::Header(network, _) | Hit::Network(network) => {
@@ -313,7 +331,7 @@ impl DiagramEditor {
             .map(|(index, target, _)| (index, target))
     }
 
-    fn paint_visible(&self, ui: &Ui, origin: Pos2, viewport: Rect, response: &Response) {
+    fn paint_visible(&mut self, ui: &Ui, origin: Pos2, viewport: Rect, response: &Response) {
         let painter = ui.painter_at(ui.clip_rect());
         let palette = EditorPalette::of(ui);
         let visuals = ui.visuals();
@@ -339,10 +357,12 @@ impl DiagramEditor {
         };
         let top = viewport.top() / self.zoom;
         let bottom = viewport.bottom() / self.zoom;
-        for index in self.networks_between(top, bottom) {
+        let visible = self.networks_between(top, bottom);
+        for index in visible.clone() {
             let block_top = origin + vec2(0.0, self.tops_px[index]) * self.zoom;
             self.paint_header(&painter, index, block_top, &context);
             let network_origin = origin + self.network_origin_px(index).to_vec2() * self.zoom;
+            self.paint_grid(&painter, network_origin, index, context.weak);
             context.network(&self.layouts[index], network_origin);
             if dragging {
                 let mark = highlighted
@@ -355,6 +375,27 @@ impl DiagramEditor {
                             .map(|point| point.pos)
                     });
                 context.insert_points(&self.layouts[index], network_origin, mark);
+            }
+        }
+        self.visible = visible;
+    }
+
+    /// Faint dots at the cell corners of network `index`'s drawing, so positions read as a grid.
+    fn paint_grid(
+        &self,
+        painter: &egui::Painter,
+        origin: Pos2,
+        index: usize,
+        color: egui::Color32,
+    ) {
+        let size = self.layouts[index].size;
+        let color = color.gamma_multiply(0.35);
+        let radius = 0.8 * self.zoom;
+        for row in 0..=size.y as usize {
+            for column in 0..=size.x as usize {
+                let at = origin
+                    + vec2(column as f32 * CELL_SIZE_PX.x, row as f32 * CELL_SIZE_PX.y) * self.zoom;
+                painter.circle_filled(at, radius, color);
             }
         }
     }
@@ -496,7 +537,11 @@ impl DiagramEditor {
     fn open_selected_entry(&mut self, typed: Option<&str>) {
         if let [element] = self.selection.elements.as_slice() {
             let element = *element;
-            self.open_entry(EntryTarget::Element(element), typed);
+            let target = match self.selected_pin.clone() {
+                Some(pin) => EntryTarget::Pin(element, pin),
+                None => EntryTarget::Element(element),
+            };
+            self.open_entry(target, typed);
         } else if self.selection.elements.is_empty()
             && let Some(index) = self.selection.network
         {
@@ -603,6 +648,22 @@ impl DiagramEditor {
             self.open_entry(EntryTarget::NewBox(target), None);
             return;
         }
+        if command == DiagramCommand::Negate
+            && let (Some(pin), [element]) = (
+                self.selected_pin.clone(),
+                self.selection.elements.as_slice(),
+            )
+        {
+            let result = project_model::toggle_negation(&self.networks, *element, Some(&pin));
+            match result {
+                Ok(splice) => {
+                    self.apply_splice(splice, frame);
+                    self.selected_pin = Some(pin);
+                }
+                Err(error) => frame.refusal = Some(DiagramRefusal::Edit(error)),
+            }
+            return;
+        }
         match run_command(&self.networks, &self.selection, command) {
             Ok(splice) => self.apply_splice(splice, frame),
             Err(error) => frame.refusal = Some(DiagramRefusal::Edit(error)),
@@ -663,7 +724,9 @@ impl DiagramEditor {
             )
         };
         match &entry.target {
-            EntryTarget::Element(id) | EntryTarget::Prepared { element: id, .. } => {
+            EntryTarget::Element(id)
+            | EntryTarget::Pin(id, _)
+            | EntryTarget::Prepared { element: id, .. } => {
                 let index = self
                     .networks
                     .iter()

@@ -288,3 +288,53 @@ fn an_unknown_block_is_refused_and_nothing_changes() {
     assert_eq!(host.changes, 0);
     assert_eq!(host.refusals, [DiagramRefusal::UnknownBlock("NOPE".into())]);
 }
+
+#[test]
+fn a_click_on_a_box_pin_then_typing_sets_the_pin_operand() {
+    let mut body = one_rung();
+    body[0].rung.push(project_model::new_box(
+        "TON",
+        "delay",
+        &["IN", "PT"],
+        &["Q", "ET"],
+    ));
+    if let FlowNode::Block(block) = &mut body[0].rung[1] {
+        block.id = ElementId(3);
+    }
+    let mut harness = harness(body, DiagramView::Ladder);
+    let rect = harness
+        .state()
+        .editor
+        .element_screen_rect(ElementId(3))
+        .expect("the box is drawn");
+    // The PT pin is on the box's second row, at its left.
+    let pt = egui::pos2(
+        rect.left() + rect.width() * 0.25,
+        rect.top() + rect.height() * 0.75,
+    );
+    harness.hover_at(pt);
+    harness.run_steps(1);
+    harness.event(Event::PointerButton {
+        pos: pt,
+        button: egui::PointerButton::Primary,
+        pressed: true,
+        modifiers: Modifiers::NONE,
+    });
+    harness.event(Event::PointerButton {
+        pos: pt,
+        button: egui::PointerButton::Primary,
+        pressed: false,
+        modifiers: Modifiers::NONE,
+    });
+    harness.run_steps(2);
+    type_and_enter(&mut harness, "T#5S");
+    let host = harness.state();
+    let FlowNode::Block(block) = &host.body[0].rung[1] else {
+        panic!("the box went away");
+    };
+    assert!(matches!(
+        block.inputs[1].source.as_slice(),
+        [FlowNode::Operand(operand)] if operand.text == "T#5S" && operand.id == ElementId(4)
+    ));
+    assert!(block.inputs[0].source.is_empty());
+}

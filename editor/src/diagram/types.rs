@@ -18,6 +18,16 @@ pub enum DiagramView {
     FunctionBlock,
 }
 
+impl DiagramView {
+    /// The view a body of `language` opens in: FBD for FBD, LD for everything else.
+    pub fn of_language(language: project_model::Language) -> Self {
+        match language {
+            project_model::Language::Fbd => Self::FunctionBlock,
+            _ => Self::Ladder,
+        }
+    }
+}
+
 /// One change of the body: `remove` networks from index `at` are replaced by `insert`. The app
 /// turns it into the model's `Edit::SpliceNetworks` and applies it as one undo step.
 #[derive(Clone, Debug, Default, PartialEq)]
