@@ -9,8 +9,9 @@
 //! [`VariableTable`] that edits declarations in place; the I/O mapping view ([`io_mapping_ui`])
 //! that lists each channel of the controller's I/O areas and of the Modbus TCP devices with the
 //! variables bound to it; the device editors ([`controller_editor_ui`], [`io_area_editor_ui`],
-//! [`modbus_device_editor_ui`], [`axis_editor_ui`]); and the read-only [`CodeView`] with lexical
-//! highlighting.
+//! [`modbus_device_editor_ui`], [`axis_editor_ui`]); the combined LD/FBD [`DiagramEditor`] on a
+//! canvas with automatic layout ([`ld_layout`], [`fbd_layout`]); and the read-only [`CodeView`]
+//! with lexical highlighting.
 
 mod code_view;
 mod device_editors;
