@@ -136,7 +136,8 @@ impl DiagramEditor {
         };
         let mut commit = None;
         let mut cancel = false;
-        egui::Area::new(field_id.with("area"))
+        let mut left = false;
+        let area = egui::Area::new(field_id.with("area"))
             .order(egui::Order::Foreground)
             .fixed_pos(anchor.left_top())
             .show(ctx, |ui| {
@@ -160,10 +161,12 @@ impl DiagramEditor {
                     }
                     if ui.input(|input| input.key_pressed(Key::Escape)) {
                         cancel = true;
-                    } else if response.lost_focus()
-                        && ui.input(|input| input.key_pressed(Key::Enter))
-                    {
-                        commit = Some(entry.text.clone());
+                    } else if response.lost_focus() {
+                        if ui.input(|input| input.key_pressed(Key::Enter)) {
+                            commit = Some(entry.text.clone());
+                        } else {
+                            left = true;
+                        }
                     }
                     for candidate in candidates.iter().take(MAX_CANDIDATES) {
                         let text = if candidate.detail.is_empty() {
@@ -181,9 +184,19 @@ impl DiagramEditor {
             self.request_focus();
             return;
         }
+        // A click elsewhere keeps what was typed, as CODESYS does; a click on a candidate in
+        // the popup takes the candidate instead.
+        let by_leaving = left && commit.is_none() && !area.response.contains_pointer();
+        if by_leaving {
+            commit = Some(entry.text.clone());
+        }
         match commit {
             Some(text) => {
-                self.request_focus();
+                // Enter or a candidate gives the keyboard back to the canvas; a click elsewhere
+                // leaves it where the user clicked.
+                if !by_leaving {
+                    self.request_focus();
+                }
                 self.commit_entry(entry.target, text.trim(), services, frame);
             }
             None => self.entry = Some(entry),

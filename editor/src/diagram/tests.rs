@@ -338,3 +338,55 @@ fn a_click_on_a_box_pin_then_typing_sets_the_pin_operand() {
     ));
     assert!(block.inputs[0].source.is_empty());
 }
+
+#[test]
+fn a_completion_candidate_clicked_becomes_the_operand() {
+    let mut harness = harness(one_rung(), DiagramView::Ladder);
+    harness
+        .state_mut()
+        .editor
+        .select(Some(0), vec![ElementId(1)]);
+    harness.run_steps(2);
+    harness.event(Event::Text("mo".to_owned()));
+    harness.run_steps(3);
+    harness.get_by_label("motor  BOOL").click();
+    harness.run_steps(3);
+    let host = harness.state();
+    assert!(matches!(
+        host.body[0].rung.as_slice(),
+        [FlowNode::Operand(operand)] if operand.text == "motor"
+    ));
+    assert_eq!(host.changes, 1);
+}
+
+#[test]
+fn what_was_typed_is_kept_when_the_user_clicks_elsewhere() {
+    let mut harness = harness(one_rung(), DiagramView::Ladder);
+    harness
+        .state_mut()
+        .editor
+        .select(Some(0), vec![ElementId(2)]);
+    harness.run_steps(2);
+    harness.event(Event::Text("lamp".to_owned()));
+    harness.run_steps(3);
+    let far = egui::pos2(900.0, 650.0);
+    harness.hover_at(far);
+    harness.event(Event::PointerButton {
+        pos: far,
+        button: egui::PointerButton::Primary,
+        pressed: true,
+        modifiers: Modifiers::NONE,
+    });
+    harness.event(Event::PointerButton {
+        pos: far,
+        button: egui::PointerButton::Primary,
+        pressed: false,
+        modifiers: Modifiers::NONE,
+    });
+    harness.run_steps(3);
+    let host = harness.state();
+    assert!(matches!(
+        host.body[0].outputs.as_slice(),
+        [NetworkOutput::Coil(coil)] if coil.variable == "lamp"
+    ));
+}
