@@ -6,11 +6,13 @@
 //! `project_model::network_edit` on the selection and comes out as one [`DiagramChange`]; the
 //! editor never changes the model itself and keeps no undo history.
 
+mod canvas;
+mod canvas_paint;
 mod commands;
 mod editor;
 mod entry;
 mod fbd_layout;
-mod input;
+mod keyboard;
 mod ld_layout;
 mod navigate;
 mod paint;
