@@ -266,7 +266,7 @@ fn the_diagram_editor_in_ld_and_fbd_offline_and_online() {
             editor.set_online(Some(values));
         }
         let mut harness = Harness::builder()
-            .with_size([1400.0, 420.0])
+            .with_size([2000.0, 420.0])
             .wgpu()
             .build_ui_state(
                 |ui, editor: &mut DiagramEditor| {

@@ -42,7 +42,9 @@ impl DiagramEditor {
         services: &dyn DiagramServices,
         frame: &mut FrameResult,
     ) -> Response {
-        let size = (self.content_px * self.zoom).max(viewport.size());
+        // Half a view of room beyond the content, so a zoom can keep the point under the
+        // mouse where it is and the last network can be scrolled up from the bottom edge.
+        let size = (self.content_px * self.zoom).max(viewport.size()) + viewport.size() * 0.5;
         let (_, rect) = ui.allocate_space(size);
         let response = ui.interact(rect, id, Sense::click_and_drag());
         let enabled = ui.is_enabled();

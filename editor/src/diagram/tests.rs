@@ -390,3 +390,71 @@ fn what_was_typed_is_kept_when_the_user_clicks_elsewhere() {
         [NetworkOutput::Coil(coil)] if coil.variable == "lamp"
     ));
 }
+
+/// Presses the primary button at `from`, moves to `to` in steps and releases it there.
+fn drag(harness: &mut Harness<'static, Host>, from: egui::Pos2, to: egui::Pos2) {
+    let button = |pos, pressed| Event::PointerButton {
+        pos,
+        button: egui::PointerButton::Primary,
+        pressed,
+        modifiers: Modifiers::NONE,
+    };
+    harness.hover_at(from);
+    harness.run_steps(1);
+    harness.event(button(from, true));
+    harness.run_steps(1);
+    for step in 1..=10 {
+        harness.hover_at(from.lerp(to, step as f32 / 10.0));
+        harness.run_steps(1);
+    }
+    harness.event(button(to, false));
+    harness.run_steps(3);
+}
+
+#[test]
+fn a_contact_dragged_from_the_toolbox_is_inserted_at_the_plus_mark() {
+    let mut harness = harness(one_rung(), DiagramView::Ladder);
+    let from = harness.get_by_label("Contact").rect().center();
+    let contact = harness
+        .state()
+        .editor
+        .element_screen_rect(ElementId(1))
+        .expect("the contact is drawn");
+    // The "+" after the contact, at its right edge on the rung.
+    drag(&mut harness, from, contact.right_center());
+    let host = harness.state();
+    assert_eq!(host.changes, 1);
+    let texts: Vec<_> = host.body[0]
+        .rung
+        .iter()
+        .map(|node| match node {
+            FlowNode::Operand(operand) => operand.text.clone(),
+            other => format!("{other:?}"),
+        })
+        .collect();
+    assert_eq!(texts, ["start", ""]);
+}
+
+#[test]
+fn ctrl_wheel_zooms_and_keeps_the_element_under_the_mouse() {
+    let mut harness = harness(one_rung(), DiagramView::Ladder);
+    let before = harness
+        .state()
+        .editor
+        .element_screen_rect(ElementId(2))
+        .expect("the coil is drawn");
+    harness.hover_at(before.center());
+    harness.run_steps(1);
+    harness.event(Event::Zoom(1.5));
+    harness.run_steps(4);
+    let editor = &harness.state().editor;
+    assert!((editor.zoom() - 1.5).abs() < 1e-3, "zoom {}", editor.zoom());
+    let after = editor
+        .element_screen_rect(ElementId(2))
+        .expect("the coil is drawn");
+    assert!(
+        after.center().distance(before.center()) < 2.0,
+        "the coil moved from {before:?} to {after:?}"
+    );
+    assert!((after.width() - before.width() * 1.5).abs() < 0.5);
+}
