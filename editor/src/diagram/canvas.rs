@@ -68,9 +68,9 @@ impl DiagramEditor {
             };
             ui.memory_mut(|memory| memory.set_focus_lock_filter(id, filter));
             let events = ui.input(|input| input.filtered_events(&filter));
-            self.handle_events(ui.ctx(), &events, services, frame);
+            self.handle_events(ui.ctx(), &events, frame);
         }
-        self.pointer_ui(ui, &response, origin, services, frame);
+        self.pointer_ui(ui, &response, origin, frame);
         self.paint_visible(ui, origin, viewport, &response);
         if self.scroll_to_selection {
             self.scroll_to_selection = false;
@@ -152,21 +152,14 @@ impl DiagramEditor {
         Hit::Element(index, id, pin)
     }
 
-    fn pointer_ui(
-        &mut self,
-        ui: &Ui,
-        response: &Response,
-        origin: Pos2,
-        services: &dyn DiagramServices,
-        frame: &mut FrameResult,
-    ) {
+    fn pointer_ui(&mut self, ui: &Ui, response: &Response, origin: Pos2, frame: &mut FrameResult) {
         let zoom = self.zoom;
         let to_content = |screen: Pos2| ((screen - origin) / zoom).to_pos2();
         if let Some(item) = response.dnd_release_payload::<ToolboxItem>()
             && let Some(pointer) = response.hover_pos()
         {
             if let Some((_, target)) = self.drop_target(to_content(pointer)) {
-                self.drop_item(*item, target, services, frame);
+                self.drop_item(*item, target, frame);
             }
             return;
         }

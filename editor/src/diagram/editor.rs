@@ -285,7 +285,7 @@ impl DiagramEditor {
         let id = ui.make_persistent_id(("diagram_editor", label));
         let mut frame = FrameResult::default();
         for command in std::mem::take(&mut self.pending_commands) {
-            self.command(command, services, &mut frame);
+            self.command(command, &mut frame);
         }
         self.top_bar_ui(ui);
         let available = ui.available_rect_before_wrap();

@@ -4,12 +4,13 @@
 use egui::text::{CCursor, CCursorRange};
 use egui::{Id, Key, Rect, TextEdit};
 use project_model::{
-    Anchor, ElementRef, FlowNode, HeaderField, NetworkOutput, ParallelSide, insert_output,
-    insert_parallel, insert_series, new_box, set_element_text, set_network_header, set_pin_operand,
+    ElementRef, FlowNode, HeaderField, NetworkOutput, new_box, set_element_text,
+    set_network_header, set_pin_operand,
 };
 
 use super::editor::{DiagramEditor, FrameResult};
 use super::placed::InsertTarget;
+use super::toolbox::insert_node;
 use super::types::{DiagramRefusal, DiagramServices, InstanceDeclaration, PreparedOperand};
 use crate::CompletionItem;
 
@@ -336,35 +337,3 @@ impl DiagramEditor {
         self.assistant_open = open;
     }
 }
-
-/// Inserts a contact or box at an insertion point.
-pub(super) fn insert_node(
-    body: &[project_model::Network],
-    target: InsertTarget,
-    node: FlowNode,
-) -> Result<project_model::BodySplice, project_model::NetworkEditError> {
-    match target {
-        InsertTarget::Series { anchor, side } => insert_series(body, anchor, side, node),
-        InsertTarget::Parallel { id, side } => insert_parallel(body, &[id], side, node),
-        InsertTarget::Output { anchor } => match anchor {
-            Anchor::Element(_) => insert_series(body, anchor, project_model::Side::Before, node),
-            Anchor::Network(_) => insert_series(body, anchor, project_model::Side::After, node),
-        },
-    }
-}
-
-/// Inserts an output at an insertion point.
-pub(super) fn insert_output_at(
-    body: &[project_model::Network],
-    target: InsertTarget,
-    output: NetworkOutput,
-) -> Result<project_model::BodySplice, project_model::NetworkEditError> {
-    let anchor = match target {
-        InsertTarget::Series { anchor, .. } | InsertTarget::Output { anchor } => anchor,
-        InsertTarget::Parallel { id, .. } => Anchor::Element(id),
-    };
-    insert_output(body, anchor, output)
-}
-
-/// The side a parallel contact dropped on a series point goes.
-pub(super) const DROPPED_PARALLEL_SIDE: ParallelSide = ParallelSide::Below;

@@ -15,7 +15,7 @@ use super::entry::{Entry, EntryTarget};
 use super::navigate::Direction;
 use super::placed::InsertTarget;
 use super::toolbox::ToolboxItem;
-use super::types::{DiagramRefusal, DiagramServices};
+use super::types::DiagramRefusal;
 
 impl DiagramEditor {
     /// Handles the keys, text and clipboard events of a frame while the canvas has focus.
@@ -23,7 +23,6 @@ impl DiagramEditor {
         &mut self,
         ctx: &egui::Context,
         events: &[Event],
-        services: &dyn DiagramServices,
         frame: &mut FrameResult,
     ) {
         for event in events {
@@ -35,7 +34,7 @@ impl DiagramEditor {
                     ..
                 } => {
                     if let Some(command) = command_for_key(*key, *modifiers) {
-                        self.command(command, services, frame);
+                        self.command(command, frame);
                         continue;
                     }
                     match key {
@@ -56,7 +55,7 @@ impl DiagramEditor {
                 Event::Copy => self.copy(ctx),
                 Event::Cut => {
                     self.copy(ctx);
-                    self.command(DiagramCommand::Delete, services, frame);
+                    self.command(DiagramCommand::Delete, frame);
                 }
                 Event::Paste(_) => self.paste(ctx, frame),
                 _ => {}
@@ -145,13 +144,7 @@ impl DiagramEditor {
     }
 
     /// Runs a command on the selection.
-    pub(super) fn command(
-        &mut self,
-        command: DiagramCommand,
-        services: &dyn DiagramServices,
-        frame: &mut FrameResult,
-    ) {
-        let _ = services;
+    pub(super) fn command(&mut self, command: DiagramCommand, frame: &mut FrameResult) {
         if self.read_only {
             return;
         }
@@ -206,13 +199,11 @@ impl DiagramEditor {
         &mut self,
         item: ToolboxItem,
         target: InsertTarget,
-        services: &dyn DiagramServices,
         frame: &mut FrameResult,
     ) {
         if self.read_only {
             return;
         }
-        let _ = services;
         if item == ToolboxItem::Box {
             self.open_entry(EntryTarget::NewBox(target), None);
             return;

@@ -2,12 +2,12 @@
 
 use egui::{Id, Ui};
 use project_model::{
-    Anchor, BodySplice, CoilKind, FlowNode, Network, NetworkEditError, Side, insert_network,
-    insert_parallel, new_coil, new_contact, new_jump, new_return,
+    Anchor, BodySplice, CoilKind, FlowNode, Network, NetworkEditError, NetworkOutput, ParallelSide,
+    Side, insert_network, insert_output, insert_parallel, insert_series, new_coil, new_contact,
+    new_jump, new_return,
 };
 
 use super::editor::DiagramEditor;
-use super::entry::{DROPPED_PARALLEL_SIDE, insert_node, insert_output_at};
 use super::placed::InsertTarget;
 
 /// An element of the toolbox; the payload of a drag from it.
@@ -123,3 +123,35 @@ impl DiagramEditor {
         }
     }
 }
+
+/// Inserts a contact or box at an insertion point.
+pub(super) fn insert_node(
+    body: &[Network],
+    target: InsertTarget,
+    node: FlowNode,
+) -> Result<BodySplice, NetworkEditError> {
+    match target {
+        InsertTarget::Series { anchor, side } => insert_series(body, anchor, side, node),
+        InsertTarget::Parallel { id, side } => insert_parallel(body, &[id], side, node),
+        InsertTarget::Output { anchor } => match anchor {
+            Anchor::Element(_) => insert_series(body, anchor, Side::Before, node),
+            Anchor::Network(_) => insert_series(body, anchor, Side::After, node),
+        },
+    }
+}
+
+/// Inserts an output at an insertion point.
+fn insert_output_at(
+    body: &[Network],
+    target: InsertTarget,
+    output: NetworkOutput,
+) -> Result<BodySplice, NetworkEditError> {
+    let anchor = match target {
+        InsertTarget::Series { anchor, .. } | InsertTarget::Output { anchor } => anchor,
+        InsertTarget::Parallel { id, .. } => Anchor::Element(id),
+    };
+    insert_output(body, anchor, output)
+}
+
+/// The side a parallel contact dropped on a series point goes.
+const DROPPED_PARALLEL_SIDE: ParallelSide = ParallelSide::Below;
