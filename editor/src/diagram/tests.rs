@@ -63,6 +63,7 @@ struct Host {
     changes: usize,
     declared: Vec<InstanceDeclaration>,
     refusals: Vec<DiagramRefusal>,
+    prepared: Vec<PreparedOperand>,
 }
 
 fn harness(body: Vec<Network>, view: DiagramView) -> Harness<'static, Host> {
@@ -74,6 +75,7 @@ fn harness(body: Vec<Network>, view: DiagramView) -> Harness<'static, Host> {
         changes: 0,
         declared: Vec::new(),
         refusals: Vec::new(),
+        prepared: Vec::new(),
     };
     let mut harness = Harness::builder()
         .with_size(egui::vec2(1000.0, 700.0))
@@ -87,6 +89,7 @@ fn harness(body: Vec<Network>, view: DiagramView) -> Harness<'static, Host> {
                 }
                 host.declared.extend(output.declare_instance);
                 host.refusals.extend(output.refusal);
+                host.prepared.extend(output.prepared);
             },
             host,
         );
@@ -457,4 +460,77 @@ fn ctrl_wheel_zooms_and_keeps_the_element_under_the_mouse() {
         "the coil moved from {before:?} to {after:?}"
     );
     assert!((after.width() - before.width() * 1.5).abs() < 0.5);
+}
+
+#[test]
+fn arrows_move_along_the_rung_and_down_into_the_next_network() {
+    let mut body = one_rung();
+    body[0].rung.push(contact(3, "stop"));
+    body.push(Network {
+        rung: vec![contact(4, "manual")],
+        ..Network::default()
+    });
+    let mut harness = harness(body, DiagramView::Ladder);
+    harness
+        .state_mut()
+        .editor
+        .select(Some(0), vec![ElementId(1)]);
+    harness.run_steps(2);
+    let mut visited = Vec::new();
+    for key in [
+        Key::ArrowRight,
+        Key::ArrowRight,
+        Key::ArrowLeft,
+        Key::ArrowDown,
+    ] {
+        harness.key_press(key);
+        harness.run_steps(2);
+        let selection = harness.state().editor.selection().clone();
+        visited.push((selection.network, selection.elements));
+    }
+    assert_eq!(
+        visited,
+        [
+            (Some(0), vec![ElementId(3)]),
+            (Some(0), vec![ElementId(2)]),
+            (Some(0), vec![ElementId(3)]),
+            (Some(1), vec![ElementId(4)]),
+        ]
+    );
+}
+
+#[test]
+fn clicking_an_operand_online_prepares_a_value_for_the_app() {
+    let mut harness = harness(one_rung(), DiagramView::Ladder);
+    let mut online = DiagramOnline::default();
+    online.power.insert(ElementId(1), true);
+    harness.state_mut().editor.set_online(Some(online));
+    harness.run_steps(2);
+    let contact = harness
+        .state()
+        .editor
+        .element_screen_rect(ElementId(1))
+        .expect("the contact is drawn");
+    harness.hover_at(contact.center());
+    harness.run_steps(1);
+    for pressed in [true, false] {
+        harness.event(Event::PointerButton {
+            pos: contact.center(),
+            button: egui::PointerButton::Primary,
+            pressed,
+            modifiers: Modifiers::NONE,
+        });
+    }
+    harness.run_steps(3);
+    type_and_enter(&mut harness, "FALSE");
+    let host = harness.state();
+    assert_eq!(
+        host.prepared,
+        [PreparedOperand {
+            element: ElementId(1),
+            operand: "start".into(),
+            value: "FALSE".into(),
+        }]
+    );
+    assert_eq!(host.changes, 0);
 }
