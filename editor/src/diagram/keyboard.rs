@@ -57,7 +57,7 @@ impl DiagramEditor {
                     self.copy(ctx);
                     self.command(DiagramCommand::Delete, frame);
                 }
-                Event::Paste(_) => self.paste(ctx, frame),
+                Event::Paste(text) => self.paste(ctx, text, frame),
                 _ => {}
             }
         }
@@ -106,20 +106,31 @@ impl DiagramEditor {
                 words.push(element_word(&element))
             });
             words.retain(|word| !word.is_empty());
-            ctx.copy_text(words.join(" "));
-            ctx.data_mut(|data| data.insert_temp(Self::clipboard_id(), Arc::new(clipboard)));
+            let text = words.join(" ");
+            ctx.copy_text(text.clone());
+            ctx.data_mut(|data| {
+                data.insert_temp(
+                    Self::clipboard_id(),
+                    Arc::new(CopiedStructure { text, clipboard }),
+                )
+            });
         }
     }
 
-    fn paste(&mut self, ctx: &egui::Context, frame: &mut FrameResult) {
+    /// Pastes the structure copied last, or, when the system clipboard holds other text (a
+    /// name copied elsewhere), types that text into the selected element.
+    fn paste(&mut self, ctx: &egui::Context, text: &str, frame: &mut FrameResult) {
         if self.read_only {
             return;
         }
-        let Some(clipboard) =
-            ctx.data(|data| data.get_temp::<Arc<NetworkClipboard>>(Self::clipboard_id()))
-        else {
+        let copied = ctx.data(|data| data.get_temp::<Arc<CopiedStructure>>(Self::clipboard_id()));
+        let Some(copied) = copied.filter(|copied| text.is_empty() || copied.text == text) else {
+            if !text.is_empty() {
+                self.open_selected_entry(Some(text.trim()));
+            }
             return;
         };
+        let clipboard = &copied.clipboard;
         let anchor = self
             .selection
             .anchor()
@@ -128,14 +139,14 @@ impl DiagramEditor {
             let mut splice = paste(
                 &[project_model::Network::default()],
                 Anchor::Network(0),
-                &clipboard,
+                clipboard,
             );
             if let Ok(splice) = &mut splice {
                 splice.at = 0;
             }
             splice
         } else {
-            paste(&self.networks, anchor, &clipboard)
+            paste(&self.networks, anchor, clipboard)
         };
         match result {
             Ok(splice) => self.apply_splice(splice, frame),
@@ -225,6 +236,15 @@ impl DiagramEditor {
         };
         self.entry = Some(Entry::new(target, text));
     }
+}
+
+/// What a copy put in the egui context, shared by the studio's diagram editors until the next
+/// copy: the structure and the text given to the system clipboard with it.
+struct CopiedStructure {
+    /// The operands' text the system clipboard got.
+    text: String,
+    /// The copied elements or networks.
+    clipboard: NetworkClipboard,
 }
 
 /// The word an element contributes to the clipboard's text.

@@ -534,3 +534,28 @@ fn clicking_an_operand_online_prepares_a_value_for_the_app() {
     );
     assert_eq!(host.changes, 0);
 }
+
+#[test]
+fn text_pasted_from_elsewhere_becomes_the_selected_operand() {
+    let mut harness = harness(one_rung(), DiagramView::Ladder);
+    // Something was copied in the diagram before; the system clipboard now holds a name.
+    harness.state_mut().editor.select(Some(0), Vec::new());
+    harness.run_steps(2);
+    harness.event(Event::Copy);
+    harness.run_steps(2);
+    harness
+        .state_mut()
+        .editor
+        .select(Some(0), vec![ElementId(1)]);
+    harness.run_steps(2);
+    harness.event(Event::Paste("stop".to_owned()));
+    harness.run_steps(3);
+    harness.key_press(Key::Enter);
+    harness.run_steps(3);
+    let host = harness.state();
+    assert_eq!(host.body.len(), 1);
+    assert!(matches!(
+        host.body[0].rung.as_slice(),
+        [FlowNode::Operand(operand)] if operand.text == "stop"
+    ));
+}
