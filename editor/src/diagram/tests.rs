@@ -559,3 +559,23 @@ fn text_pasted_from_elsewhere_becomes_the_selected_operand() {
         [FlowNode::Operand(operand)] if operand.text == "stop"
     ));
 }
+
+#[test]
+fn the_input_assistant_lists_variables_and_blocks_and_fills_the_operand() {
+    let mut harness = harness(one_rung(), DiagramView::Ladder);
+    harness
+        .state_mut()
+        .editor
+        .select(Some(0), vec![ElementId(1)]);
+    harness.run_steps(2);
+    harness.key_press(Key::F2);
+    harness.run_steps(3);
+    assert!(harness.query_by_label("TON  ").is_some());
+    harness.get_by_label("stop  BOOL").click();
+    harness.run_steps(3);
+    let host = harness.state();
+    assert!(matches!(
+        host.body[0].rung.as_slice(),
+        [FlowNode::Operand(operand)] if operand.text == "stop"
+    ));
+}
