@@ -1,6 +1,7 @@
 //! Frame time of the Structured Text editor on a 20,000-line POU, headless in an egui context:
 //! a frame that scrolls to a new place, a frame that types one character, and a scrolling
-//! frame with 500 inline values. Run with `cargo bench -p editor`.
+//! frame with 500 inline values; and of the diagram editor on a 500-network LD body while an
+//! element is dragged over it (`diagram_frames`). Run with `cargo bench -p editor`.
 
 #![allow(missing_docs)] // criterion_group! writes an undocumented function.
 
@@ -8,6 +9,9 @@ use std::hint::black_box;
 use std::time::{Duration, Instant};
 
 use criterion::{Criterion, criterion_group, criterion_main};
+
+#[path = "st_editor/diagram_frames.rs"]
+mod diagram_frames;
 use editor::{InlineValue, KeywordCompletions, StEditor};
 use egui::{Context, Event, RawInput, Rect, pos2, vec2};
 
@@ -144,5 +148,5 @@ fn benchmarks(c: &mut Criterion) {
     });
 }
 
-criterion_group!(benches, benchmarks);
+criterion_group!(benches, benchmarks, diagram_frames::benchmarks);
 criterion_main!(benches);

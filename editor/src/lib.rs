@@ -9,11 +9,13 @@
 //! [`VariableTable`] that edits declarations in place; the I/O mapping view ([`io_mapping_ui`])
 //! that lists each channel of the controller's I/O areas and of the Modbus TCP devices with the
 //! variables bound to it; the device editors ([`controller_editor_ui`], [`io_area_editor_ui`],
-//! [`modbus_device_editor_ui`], [`axis_editor_ui`]); and the read-only [`CodeView`] with lexical
-//! highlighting.
+//! [`modbus_device_editor_ui`], [`axis_editor_ui`]); the combined LD/FBD [`DiagramEditor`] on a
+//! canvas with automatic layout ([`ld_layout`], [`fbd_layout`]); and the read-only [`CodeView`]
+//! with lexical highlighting.
 
 mod code_view;
 mod device_editors;
+mod diagram;
 mod io_mapping;
 mod palette;
 mod st_editor;
@@ -25,6 +27,13 @@ pub use code_view::CodeView;
 pub use device_editors::{
     DeviceEdit, DeviceEditorState, DeviceTexts, Refusal, RefusalWords, axis_editor_ui,
     controller_editor_ui, io_area_editor_ui, modbus_device_editor_ui,
+};
+pub use diagram::{
+    BlockSignature, DiagramChange, DiagramCommand, DiagramEditor, DiagramOnline, DiagramOutput,
+    DiagramRefusal, DiagramSelection, DiagramServices, DiagramTexts, DiagramView,
+    ElementDiagnostic, InsertPoint, InsertTarget, InstanceDeclaration, NetworkLayout, OnlineValue,
+    PinMark, PlacedElement, Power, PreparedOperand, Shape, ToolboxItem, Wire, fbd_layout,
+    ld_layout,
 };
 pub use io_mapping::{IoMappingOutput, io_mapping_ui};
 pub use palette::{EditorPalette, SyntaxColors};

@@ -51,6 +51,12 @@ pub struct EditorPalette {
     pub info: Color32,
     /// The declaration table's overlap warning mark.
     pub table_warning: Color32,
+    /// Energised contacts, coils and lines of a diagram while online.
+    pub power_on: Color32,
+    /// The background of selected diagram elements.
+    pub diagram_selection: Color32,
+    /// The "+" marks where a dragged diagram element can go.
+    pub insert_point: Color32,
 }
 
 impl EditorPalette {
@@ -104,6 +110,9 @@ impl EditorPalette {
             warning: warn,
             info: link,
             table_warning: warn,
+            power_on: link,
+            diagram_selection: visuals.selection.bg_fill.gamma_multiply(0.6),
+            insert_point: visuals.warn_fg_color,
         }
     }
 }

@@ -28,6 +28,7 @@ mod modbus_device;
 mod network;
 mod network_check;
 mod network_splice;
+mod network_edit;
 mod network_walk;
 mod pou;
 mod project;
@@ -76,6 +77,12 @@ pub use network::{
     FlowNode, Network, NetworkOutput, Operand, Parallel,
 };
 pub use network_check::{MAX_NETWORK_NESTING, NetworkProblem, network_problems};
+pub use network_edit::{
+    Anchor, BodySplice, HeaderField, NetworkClipboard, NetworkEditError, ParallelSide, Side,
+    copy_elements, copy_networks, cycle_modifier, delete_elements, delete_networks, insert_network,
+    insert_output, insert_parallel, insert_series, new_box, new_coil, new_contact, new_jump,
+    new_return, paste, set_element_text, set_network_header, set_pin_operand, toggle_negation,
+};
 pub use network_walk::{ElementRef, max_element_id, walk_chain, walk_outputs};
 pub use pou::{
     AccessSpecifier, Body, Language, Method, Pou, PouAction, PouKind, Property, PropertyAccessor,

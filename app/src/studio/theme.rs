@@ -140,6 +140,18 @@ pub(crate) fn editor_palette(dark_mode: bool) -> EditorPalette {
         warning: Color32::from_rgb(220, 180, 40),
         info: Color32::from_rgb(80, 150, 230),
         table_warning: Color32::from_rgb(0xE0, 0xB0, 0x20),
+        // CODESYS draws energised connections in blue.
+        power_on: if dark_mode {
+            Color32::from_rgb(80, 160, 255)
+        } else {
+            Color32::from_rgb(0, 90, 220)
+        },
+        diagram_selection: if dark_mode {
+            Color32::from_rgba_unmultiplied(60, 110, 200, 90)
+        } else {
+            Color32::from_rgba_unmultiplied(120, 170, 250, 110)
+        },
+        insert_point: Color32::from_rgb(30, 160, 70),
     }
 }
 

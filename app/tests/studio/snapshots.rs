@@ -1,5 +1,6 @@
 //! Image snapshots of the studio rendered with the software rasterizer (wgpu on Mesa's
-//! lavapipe): the main window, and the watch pane online. A changed look fails the test with a
+//! lavapipe): the main window, the watch pane online, and the diagram editor's LD and FBD views
+//! of one network, offline and online. A changed look fails the test with a
 //! diff image beside the snapshot; `UPDATE_SNAPSHOTS=1` accepts the new look.
 
 use app::studio::{Settings, StudioApp};
@@ -120,4 +121,162 @@ fn the_trace_view_with_cursors() {
         );
     harness.run();
     harness.snapshot("trace_view");
+}
+
+/// Services for the diagram snapshots: nothing is typed, so nothing is asked.
+struct NoDiagramServices;
+
+impl editor::DiagramServices for NoDiagramServices {
+    fn variables(&self, _prefix: &str) -> Vec<editor::CompletionItem> {
+        Vec::new()
+    }
+
+    fn blocks(&self, _prefix: &str) -> Vec<editor::CompletionItem> {
+        Vec::new()
+    }
+
+    fn signature(&self, _type_name: &str) -> Option<editor::BlockSignature> {
+        None
+    }
+
+    fn is_declared(&self, _name: &str) -> bool {
+        true
+    }
+}
+
+/// An interlock rung with every kind of element: an edge contact, a latch in parallel with a
+/// normally closed contact, a timer box with an operand and an assigned output, a coil, a set
+/// coil and a jump; and an empty network below it.
+fn interlock_body() -> Vec<project_model::Network> {
+    use project_model::{
+        BlockCall, BlockInput, BlockOutput, Branch, Coil, CoilKind, Edge, ElementId, FlowNode,
+        Network, NetworkOutput, Operand, Parallel,
+    };
+    let contact = |id: u32, text: &str, negated: bool, edge: Edge| {
+        FlowNode::Operand(Operand {
+            id: ElementId(id),
+            text: text.into(),
+            negated,
+            edge,
+        })
+    };
+    let rung = Network {
+        title: "Start the motor".into(),
+        comment: "Latches until stop".into(),
+        label: "start".into(),
+        rung: vec![
+            contact(1, "start", false, Edge::Rising),
+            FlowNode::Parallel(Parallel {
+                id: ElementId(2),
+                branches: vec![
+                    Branch {
+                        rung: vec![contact(3, "stop", true, Edge::None)],
+                    },
+                    Branch {
+                        rung: vec![
+                            contact(4, "motor", false, Edge::None),
+                            contact(5, "enable_from_the_line", false, Edge::None),
+                        ],
+                    },
+                ],
+            }),
+            FlowNode::Block(BlockCall {
+                id: ElementId(6),
+                type_name: "TON".into(),
+                instance: "delay".into(),
+                inputs: vec![
+                    BlockInput {
+                        pin: "IN".into(),
+                        ..BlockInput::default()
+                    },
+                    BlockInput {
+                        pin: "PT".into(),
+                        source: vec![contact(7, "T#5S", false, Edge::None)],
+                        ..BlockInput::default()
+                    },
+                ],
+                outputs: vec![
+                    BlockOutput {
+                        pin: "Q".into(),
+                        ..BlockOutput::default()
+                    },
+                    BlockOutput {
+                        pin: "ET".into(),
+                        assign: "elapsed".into(),
+                        ..BlockOutput::default()
+                    },
+                ],
+            }),
+        ],
+        outputs: vec![
+            NetworkOutput::Coil(Coil {
+                id: ElementId(8),
+                variable: "motor".into(),
+                kind: CoilKind::Normal,
+            }),
+            NetworkOutput::Coil(Coil {
+                id: ElementId(9),
+                variable: "lamp".into(),
+                kind: CoilKind::Set,
+            }),
+            NetworkOutput::Jump {
+                id: ElementId(10),
+                label: "done".into(),
+            },
+        ],
+    };
+    vec![rung, Network::default()]
+}
+
+#[test]
+fn the_diagram_editor_in_ld_and_fbd_offline_and_online() {
+    use editor::{DiagramEditor, DiagramOnline, DiagramView, OnlineValue};
+    use project_model::ElementId;
+
+    let body = interlock_body();
+    // Four harnesses in one test: their results are gathered so every image is checked.
+    let mut results = egui_kittest::SnapshotResults::new();
+    for (name, view, online) in [
+        ("diagram_ld", DiagramView::Ladder, false),
+        ("diagram_ld_online", DiagramView::Ladder, true),
+        ("diagram_fbd", DiagramView::FunctionBlock, false),
+        ("diagram_fbd_online", DiagramView::FunctionBlock, true),
+    ] {
+        let mut editor = DiagramEditor::new(&body, view);
+        editor.select(Some(0), vec![ElementId(3)]);
+        if online {
+            let mut values = DiagramOnline::default();
+            for id in [1, 2, 4, 5, 6] {
+                values.power.insert(ElementId(id), true);
+            }
+            values.values.insert(
+                (ElementId(6), Some("ET".into())),
+                OnlineValue {
+                    text: "T#1s200ms".into(),
+                    forced: false,
+                },
+            );
+            values.values.insert(
+                (ElementId(1), None),
+                OnlineValue {
+                    text: "TRUE".into(),
+                    forced: true,
+                },
+            );
+            editor.set_online(Some(values));
+        }
+        let mut harness = Harness::builder()
+            .with_size([2000.0, 420.0])
+            .wgpu()
+            .build_ui_state(
+                |ui, editor: &mut DiagramEditor| {
+                    editor.show(ui, "Body of Interlock", &NoDiagramServices);
+                },
+                editor,
+            );
+        harness.run_steps(3);
+        harness.snapshot(name);
+        results.extend_harness(&mut harness);
+    }
+    results.unwrap();
 }

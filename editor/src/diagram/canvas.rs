@@ -1,0 +1,401 @@
+//! The canvas in a frame: zoom and pan, hit testing, the pointer (selection, rubber band,
+//! double-click to edit, drops from the toolbox), and where the text field goes.
+
+use egui::{
+    EventFilter, Id, PointerButton, Pos2, Rect, Response, Role, Sense, Stroke, StrokeKind, Ui,
+    Vec2, WidgetInfo, pos2, vec2,
+};
+use project_model::{Anchor, ElementRef, HeaderField};
+
+use super::editor::{DiagramEditor, FrameResult, HEADER_HEIGHT_PX, LEFT_MARGIN_PX, ZOOM_RANGE};
+use super::entry::EntryTarget;
+use super::paint::CELL_SIZE_PX;
+use super::placed::{InsertTarget, Shape};
+use super::toolbox::ToolboxItem;
+use super::types::DiagramServices;
+use crate::EditorPalette;
+
+/// How near to an insertion point a drop must be, in cells.
+const DROP_RADIUS_CELLS: f32 = 0.6;
+
+/// What the pointer is over.
+#[derive(Clone, Debug, PartialEq)]
+pub(super) enum Hit {
+    /// An element of a network, and the box input pin at the pointer, if any.
+    Element(usize, project_model::ElementId, Option<String>),
+    /// A network's header line.
+    Header(usize, HeaderField),
+    /// A network's drawing, away from its elements.
+    Network(usize),
+    /// Nothing.
+    Empty,
+}
+
+impl DiagramEditor {
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn canvas_ui(
+        &mut self,
+        ui: &mut Ui,
+        id: Id,
+        label: &str,
+        viewport: Rect,
+        services: &dyn DiagramServices,
+        frame: &mut FrameResult,
+    ) -> Response {
+        // Half a view of room beyond the content, so a zoom can keep the point under the
+        // mouse where it is and the last network can be scrolled up from the bottom edge.
+        let size = (self.content_px * self.zoom).max(viewport.size()) + viewport.size() * 0.5;
+        let (_, rect) = ui.allocate_space(size);
+        let response = ui.interact(rect, id, Sense::click_and_drag());
+        let enabled = ui.is_enabled();
+        let label_text = label.to_owned();
+        response.widget_info(|| WidgetInfo::labeled(Role::Canvas, enabled, &label_text));
+        if std::mem::take(&mut self.focus_requested)
+            || response.clicked()
+            || response.drag_started()
+        {
+            response.request_focus();
+        }
+        let origin = rect.min;
+        self.last_origin = origin;
+        self.zoom_and_pan_ui(ui, &response, origin, viewport);
+        if response.has_focus() && self.entry.is_none() {
+            let filter = EventFilter {
+                tab: false,
+                horizontal_arrows: true,
+                vertical_arrows: true,
+                escape: true,
+            };
+            ui.memory_mut(|memory| memory.set_focus_lock_filter(id, filter));
+            let events = ui.input(|input| input.filtered_events(&filter));
+            self.handle_events(ui.ctx(), &events, frame);
+        }
+        self.pointer_ui(ui, &response, origin, frame);
+        self.paint_visible(ui, origin, viewport, &response);
+        if self.scroll_to_selection {
+            self.scroll_to_selection = false;
+            if let Some(target) = self.selection_rect_px() {
+                let screen = Rect::from_min_max(
+                    origin + target.min.to_vec2() * self.zoom,
+                    origin + target.max.to_vec2() * self.zoom,
+                );
+                ui.scroll_to_rect(screen.expand(8.0), None);
+            }
+        }
+        if let Some(entry_rect) = self.entry_rect_px() {
+            let screen = Rect::from_min_max(
+                origin + entry_rect.min.to_vec2() * self.zoom,
+                origin + entry_rect.max.to_vec2() * self.zoom,
+            );
+            self.entry_ui(ui.ctx(), id, screen, services, frame);
+        }
+        response
+    }
+
+    fn zoom_and_pan_ui(&mut self, ui: &Ui, response: &Response, origin: Pos2, viewport: Rect) {
+        if let Some(pointer) = response.hover_pos() {
+            let factor = ui.input(|input| input.zoom_delta());
+            if (factor - 1.0).abs() > f32::EPSILON {
+                let zoom = (self.zoom * factor).clamp(ZOOM_RANGE.0, ZOOM_RANGE.1);
+                // The content point under the mouse stays under it.
+                let under_mouse = (pointer - origin) / self.zoom;
+                let in_viewport = pointer - (origin + viewport.min.to_vec2());
+                self.pending_offset = Some((under_mouse * zoom - in_viewport).max(Vec2::ZERO));
+                self.zoom = zoom;
+            }
+        }
+        if response.dragged_by(PointerButton::Middle) {
+            self.pending_offset =
+                Some((self.scroll_offset - response.drag_delta()).max(Vec2::ZERO));
+        }
+    }
+
+    /// What is at `pos`, in content points at zoom 1.
+    pub(super) fn hit(&self, pos: Pos2) -> Hit {
+        let count = self.networks.len();
+        let index = self.tops_px[1..].partition_point(|end| *end <= pos.y);
+        if index >= count {
+            return Hit::Empty;
+        }
+        let top = self.tops_px[index];
+        if pos.y < top + HEADER_HEIGHT_PX {
+            let field = if pos.x < LEFT_MARGIN_PX {
+                HeaderField::Label
+            } else if pos.y < top + HEADER_HEIGHT_PX / 2.0 {
+                HeaderField::Title
+            } else {
+                HeaderField::Comment
+            };
+            return Hit::Header(index, field);
+        }
+        let origin = self.network_origin_px(index);
+        let cell = pos2(
+            (pos.x - origin.x) / CELL_SIZE_PX.x,
+            (pos.y - origin.y) / CELL_SIZE_PX.y,
+        );
+        let Some(element) = self.layouts[index].element_at(cell) else {
+            return Hit::Network(index);
+        };
+        let Some(id) = element.id else {
+            return Hit::Network(index);
+        };
+        // The left half of a box holds its input pins, one per row.
+        let pin = match &element.shape {
+            Shape::Box { inputs, .. } if cell.x < element.rect.center().x => inputs
+                .iter()
+                .rev()
+                .find(|pin| pin.row <= cell.y)
+                .filter(|pin| !pin.name.is_empty())
+                .map(|pin| pin.name.clone()),
+            _ => None,
+        };
+        Hit::Element(index, id, pin)
+    }
+
+    fn pointer_ui(&mut self, ui: &Ui, response: &Response, origin: Pos2, frame: &mut FrameResult) {
+        let zoom = self.zoom;
+        let to_content = |screen: Pos2| ((screen - origin) / zoom).to_pos2();
+        if let Some(item) = response.dnd_release_payload::<ToolboxItem>()
+            && let Some(pointer) = response.hover_pos()
+        {
+            if let Some((_, target)) = self.drop_target(to_content(pointer)) {
+                self.drop_item(*item, target, frame);
+            }
+            return;
+        }
+        if response.clicked_by(PointerButton::Primary)
+            && let Some(pointer) = response.interact_pointer_pos()
+        {
+            let shift = ui.input(|input| input.modifiers.shift);
+            let hit = self.hit(to_content(pointer));
+            self.click(hit, shift);
+        }
+        if response.double_clicked()
+            && let Some(pointer) = response.interact_pointer_pos()
+        {
+            match self.hit(to_content(pointer)) {
+                Hit::Element(_, element, Some(pin)) => {
+                    self.open_entry(EntryTarget::Pin(element, pin), None)
+                }
+                Hit::Element(_, element, None) => {
+                    self.open_entry(EntryTarget::Element(element), None)
+                }
+                Hit::Header(index, field) => {
+                    self.open_entry(EntryTarget::Header(index, field), None)
+                }
+                Hit::Network(_) | Hit::Empty => {}
+            }
+        }
+        if response.drag_started_by(PointerButton::Primary)
+            && let Some(pointer) = response.interact_pointer_pos()
+        {
+            let from = to_content(pointer);
+            if !matches!(self.hit(from), Hit::Element(..)) {
+                self.rubber_band_from = Some(from);
+            }
+        }
+        if let Some(from) = self.rubber_band_from
+            && let Some(pointer) = ui.input(|input| input.pointer.interact_pos())
+        {
+            let band = Rect::from_two_pos(from, to_content(pointer));
+            if response.drag_stopped() {
+                self.rubber_band_from = None;
+                self.select_in(band, ui.input(|input| input.modifiers.shift));
+            } else {
+                let screen = Rect::from_two_pos(origin + from.to_vec2() * self.zoom, pointer);
+                let palette = EditorPalette::of(ui);
+                ui.painter()
+                    .rect_filled(screen, 0.0, palette.diagram_selection);
+                ui.painter().rect_stroke(
+                    screen,
+                    0.0,
+                    Stroke::new(1.0, palette.power_on),
+                    StrokeKind::Inside,
+                );
+            }
+        }
+        if let Some(pointer) = response.hover_pos()
+            && let Hit::Element(_, element, _) = self.hit(to_content(pointer))
+        {
+            let messages: Vec<String> = self
+                .diagnostics
+                .iter()
+                .filter(|diagnostic| diagnostic.element == Some(element))
+                .map(|diagnostic| format!("{}: {}", diagnostic.code, diagnostic.message))
+                .collect();
+            if !messages.is_empty() {
+                response.show_tooltip_text(messages.join("\n"));
+            }
+        }
+    }
+
+    fn click(&mut self, hit: Hit, shift: bool) {
+        match hit {
+            Hit::Element(network, element, pin) => {
+                if let Some(operand) = self.online_operand(element) {
+                    self.selection.network = Some(network);
+                    self.selection.elements = vec![element];
+                    self.open_entry(EntryTarget::Prepared { element, operand }, None);
+                } else if shift {
+                    if let Some(position) =
+                        self.selection.elements.iter().position(|id| *id == element)
+                    {
+                        self.selection.elements.remove(position);
+                    } else {
+                        self.selection.elements.push(element);
+                    }
+                    self.selection.network.get_or_insert(network);
+                } else {
+                    self.select(Some(network), vec![element]);
+                    self.selected_pin = pin;
+                }
+            }
+            Hit::Header(network, _) | Hit::Network(network) => {
+                self.select(Some(network), Vec::new())
+            }
+            Hit::Empty => self.select(None, Vec::new()),
+        }
+        self.scroll_to_selection = false;
+    }
+
+    /// The operand of `element` when online and the element reads or writes a variable.
+    fn online_operand(&self, element: project_model::ElementId) -> Option<String> {
+        self.online.as_ref()?;
+        let network = self
+            .networks
+            .iter()
+            .find(|network| network.element(element).is_some())?;
+        match network.element(element)? {
+            ElementRef::Operand(operand) if !operand.text.is_empty() => Some(operand.text.clone()),
+            ElementRef::Output(project_model::NetworkOutput::Coil(coil))
+                if !coil.variable.is_empty() =>
+            {
+                Some(coil.variable.clone())
+            }
+            _ => None,
+        }
+    }
+
+    /// Selects the elements whose cells meet `band` (content points at zoom 1).
+    fn select_in(&mut self, band: Rect, add: bool) {
+        if !add {
+            self.selection.elements.clear();
+            self.selection.network = None;
+        }
+        let range = self.networks_between(band.top(), band.bottom());
+        for index in range {
+            let origin = self.network_origin_px(index);
+            for element in &self.layouts[index].elements {
+                let Some(id) = element.id else { continue };
+                if matches!(element.shape, Shape::Group) {
+                    continue;
+                }
+                let rect = Rect::from_min_max(
+                    origin + element.rect.min.to_vec2() * CELL_SIZE_PX,
+                    origin + element.rect.max.to_vec2() * CELL_SIZE_PX,
+                );
+                if band.intersects(rect) && !self.selection.elements.contains(&id) {
+                    self.selection.elements.push(id);
+                    self.selection.network.get_or_insert(index);
+                }
+            }
+        }
+    }
+
+    /// The nearest insertion point to `pos` (content points at zoom 1) in the networks there.
+    pub(super) fn drop_target(&self, pos: Pos2) -> Option<(usize, InsertTarget)> {
+        let range = self.networks_between(pos.y - CELL_SIZE_PX.y, pos.y + CELL_SIZE_PX.y);
+        range
+            .filter_map(|index| {
+                let origin = self.network_origin_px(index);
+                let cell = ((pos - origin) / CELL_SIZE_PX).to_pos2();
+                self.layouts[index]
+                    .insert_point_near(cell, DROP_RADIUS_CELLS)
+                    .map(|point| (index, point.target, point.pos.distance(cell)))
+            })
+            .min_by(|a, b| a.2.total_cmp(&b.2))
+            .map(|(index, target, _)| (index, target))
+    }
+
+    /// The content rectangle (points at zoom 1) of the selection, to scroll it into view.
+    fn selection_rect_px(&self) -> Option<Rect> {
+        let index = self.selection.network?;
+        let origin = self.network_origin_px(index);
+        let top = self.tops_px[index];
+        let element = self
+            .selection
+            .elements
+            .first()
+            .and_then(|id| self.layouts.get(index)?.element(*id));
+        Some(match element {
+            Some(element) => Rect::from_min_max(
+                origin + element.rect.min.to_vec2() * CELL_SIZE_PX,
+                origin + element.rect.max.to_vec2() * CELL_SIZE_PX,
+            ),
+            None => {
+                Rect::from_min_size(pos2(0.0, top), vec2(LEFT_MARGIN_PX * 4.0, HEADER_HEIGHT_PX))
+            }
+        })
+    }
+
+    /// The content rectangle (points at zoom 1) the open text field goes over.
+    fn entry_rect_px(&self) -> Option<Rect> {
+        let entry = self.entry.as_ref()?;
+        let in_network = |index: usize, cells: Rect| {
+            let origin = self.network_origin_px(index);
+            Rect::from_min_max(
+                origin + cells.min.to_vec2() * CELL_SIZE_PX,
+                origin + cells.max.to_vec2() * CELL_SIZE_PX,
+            )
+        };
+        match &entry.target {
+            EntryTarget::Element(id)
+            | EntryTarget::Pin(id, _)
+            | EntryTarget::Prepared { element: id, .. } => {
+                let index = self
+                    .networks
+                    .iter()
+                    .position(|network| network.element(*id).is_some())?;
+                Some(in_network(index, self.layouts[index].element(*id)?.rect))
+            }
+            EntryTarget::NewBox(target) => {
+                let index = match target {
+                    InsertTarget::Series { anchor, .. } | InsertTarget::Output { anchor } => {
+                        match anchor {
+                            Anchor::Network(index) => *index,
+                            Anchor::Element(id) => self
+                                .networks
+                                .iter()
+                                .position(|network| network.element(*id).is_some())?,
+                        }
+                    }
+                    InsertTarget::Parallel { id, .. } => self
+                        .networks
+                        .iter()
+                        .position(|network| network.element(*id).is_some())?,
+                };
+                let point = self
+                    .layouts
+                    .get(index)?
+                    .insert_points
+                    .iter()
+                    .find(|point| point.target == *target);
+                let at = point.map_or(pos2(0.0, 0.0), |point| point.pos);
+                Some(in_network(index, Rect::from_min_size(at, vec2(2.0, 1.0))))
+            }
+            EntryTarget::Header(index, field) => {
+                let index = (*index).min(self.networks.len().checked_sub(1)?);
+                let top = self.tops_px[index]
+                    + if *field == HeaderField::Comment {
+                        18.0
+                    } else {
+                        0.0
+                    };
+                Some(Rect::from_min_size(
+                    pos2(LEFT_MARGIN_PX, top),
+                    vec2(CELL_SIZE_PX.x * 4.0, 20.0),
+                ))
+            }
+        }
+    }
+}

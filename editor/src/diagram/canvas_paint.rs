@@ -1,0 +1,173 @@
+//! Painting the canvas: the networks in view with their headers, grid dots and, while an
+//! element is dragged from the toolbox, the insertion marks.
+
+use egui::{Align2, FontId, Pos2, Rect, Response, Stroke, Ui, vec2};
+
+use super::editor::{DiagramEditor, HEADER_HEIGHT_PX, LEFT_MARGIN_PX, NETWORK_GAP_PX};
+use super::paint::{CELL_SIZE_PX, PaintContext};
+use super::toolbox::ToolboxItem;
+use crate::EditorPalette;
+
+impl DiagramEditor {
+    pub(super) fn paint_visible(
+        &mut self,
+        ui: &Ui,
+        origin: Pos2,
+        viewport: Rect,
+        response: &Response,
+    ) {
+        let painter = ui.painter_at(ui.clip_rect());
+        let palette = EditorPalette::of(ui);
+        let visuals = ui.visuals();
+        let selected = self.selected_set();
+        let context = PaintContext {
+            painter: &painter,
+            palette,
+            line: visuals.text_color(),
+            weak: visuals.weak_text_color(),
+            zoom: self.zoom,
+            selected: &selected,
+            diagnostics: &self.marks,
+            online: self.online.as_ref(),
+            placeholder: &self.texts.placeholder,
+        };
+        let dragging = response.dnd_hover_payload::<ToolboxItem>().is_some();
+        let highlighted = if dragging {
+            response
+                .hover_pos()
+                .and_then(|pointer| self.drop_target(((pointer - origin) / self.zoom).to_pos2()))
+        } else {
+            None
+        };
+        let top = viewport.top() / self.zoom;
+        let bottom = viewport.bottom() / self.zoom;
+        let visible = self.networks_between(top, bottom);
+        for index in visible.clone() {
+            let block_top = origin + vec2(0.0, self.tops_px[index]) * self.zoom;
+            self.paint_header(&painter, index, block_top, &context);
+            let network_origin = origin + self.network_origin_px(index).to_vec2() * self.zoom;
+            self.paint_grid(&painter, network_origin, index, context.weak);
+            context.network(&self.layouts[index], network_origin);
+            if dragging {
+                let mark = highlighted
+                    .filter(|(network, _)| *network == index)
+                    .and_then(|(_, target)| {
+                        self.layouts[index]
+                            .insert_points
+                            .iter()
+                            .find(|point| point.target == target)
+                            .map(|point| point.pos)
+                    });
+                context.insert_points(&self.layouts[index], network_origin, mark);
+            }
+        }
+        self.visible = visible;
+    }
+
+    /// Faint dots at the cell corners of network `index`'s drawing, so positions read as a grid.
+    fn paint_grid(
+        &self,
+        painter: &egui::Painter,
+        origin: Pos2,
+        index: usize,
+        color: egui::Color32,
+    ) {
+        let size = self.layouts[index].size;
+        let color = color.gamma_multiply(0.35);
+        let radius = 0.8 * self.zoom;
+        for row in 0..=size.y as usize {
+            for column in 0..=size.x as usize {
+                let at = origin
+                    + vec2(column as f32 * CELL_SIZE_PX.x, row as f32 * CELL_SIZE_PX.y) * self.zoom;
+                painter.circle_filled(at, radius, color);
+            }
+        }
+    }
+
+    fn paint_header(
+        &self,
+        painter: &egui::Painter,
+        index: usize,
+        top: Pos2,
+        context: &PaintContext<'_>,
+    ) {
+        let network = &self.networks[index];
+        let zoom = self.zoom;
+        let selected = self.selection.network == Some(index) && self.selection.elements.is_empty();
+        let block_height =
+            (HEADER_HEIGHT_PX + self.layouts[index].size.y * CELL_SIZE_PX.y + NETWORK_GAP_PX / 2.0)
+                * zoom;
+        let block = Rect::from_min_size(
+            top,
+            vec2(
+                (LEFT_MARGIN_PX + self.layouts[index].size.x * CELL_SIZE_PX.x + 8.0) * zoom,
+                block_height,
+            ),
+        );
+        if selected {
+            painter.rect_filled(block, 2.0 * zoom, context.palette.diagram_selection);
+        }
+        painter.line_segment(
+            [block.left_bottom(), block.right_bottom()],
+            Stroke::new(0.5, context.weak),
+        );
+        painter.text(
+            top + vec2(6.0, 4.0) * zoom,
+            Align2::LEFT_TOP,
+            (index + 1).to_string(),
+            FontId::proportional(13.0 * zoom),
+            context.line,
+        );
+        let text_left = top + vec2(LEFT_MARGIN_PX, 2.0) * zoom;
+        let (title, title_color) = if network.title.is_empty() {
+            (
+                format!("{} {}", self.texts.network, index + 1),
+                context.weak,
+            )
+        } else {
+            (network.title.clone(), context.line)
+        };
+        painter.text(
+            text_left,
+            Align2::LEFT_TOP,
+            title,
+            FontId::proportional(13.0 * zoom),
+            title_color,
+        );
+        // The label, if any, starts the header's second line and the comment follows it.
+        let mut second_line = text_left + vec2(0.0, 18.0) * zoom;
+        if !network.label.is_empty() {
+            let label = painter.text(
+                second_line,
+                Align2::LEFT_TOP,
+                format!("{}:", network.label),
+                FontId::monospace(11.0 * zoom),
+                context.palette.syntax.label,
+            );
+            second_line.x = label.right() + 8.0 * zoom;
+        }
+        if !network.comment.is_empty() {
+            painter.text(
+                second_line,
+                Align2::LEFT_TOP,
+                &network.comment,
+                FontId::proportional(11.0 * zoom),
+                context.palette.syntax.comment,
+            );
+        }
+        if let Some(severity) = self
+            .diagnostics
+            .iter()
+            .filter(|diagnostic| diagnostic.network == index && diagnostic.element.is_none())
+            .map(|diagnostic| diagnostic.severity)
+            .next()
+        {
+            let color = match severity {
+                crate::Severity::Error => context.palette.error,
+                crate::Severity::Warning => context.palette.warning,
+                crate::Severity::Info => context.palette.info,
+            };
+            painter.circle_filled(top + vec2(4.0, 30.0) * zoom, 3.0 * zoom, color);
+        }
+    }
+}

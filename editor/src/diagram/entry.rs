@@ -1,0 +1,339 @@
+//! The text field over an element, a network header or a new box, with completion of variable
+//! and block names, and the input assistant (F2) that lists them.
+
+use egui::text::{CCursor, CCursorRange};
+use egui::{Id, Key, Rect, TextEdit};
+use project_model::{
+    ElementRef, FlowNode, HeaderField, NetworkOutput, new_box, set_element_text,
+    set_network_header, set_pin_operand,
+};
+
+use super::editor::{DiagramEditor, FrameResult};
+use super::placed::InsertTarget;
+use super::toolbox::insert_node;
+use super::types::{DiagramRefusal, DiagramServices, InstanceDeclaration, PreparedOperand};
+use crate::CompletionItem;
+
+/// How many completion candidates the list under the field shows.
+const MAX_CANDIDATES: usize = 8;
+
+/// What a text field edits.
+#[derive(Clone, Debug, PartialEq)]
+pub(super) enum EntryTarget {
+    /// An element's text: a contact's operand, a coil's variable, a jump's label, a box's
+    /// instance.
+    Element(project_model::ElementId),
+    /// The operand driving an input pin of a box.
+    Pin(project_model::ElementId, String),
+    /// The type of a box to insert at an insertion point.
+    NewBox(InsertTarget),
+    /// A network's title, comment or label.
+    Header(usize, HeaderField),
+    /// A value to prepare for an operand while online.
+    Prepared {
+        /// The element.
+        element: project_model::ElementId,
+        /// Its operand.
+        operand: String,
+    },
+}
+
+/// An open text field; lives until it is committed or cancelled.
+#[derive(Clone, Debug)]
+pub(super) struct Entry {
+    /// What it edits.
+    pub target: EntryTarget,
+    /// The text typed so far.
+    pub text: String,
+    /// Whether the field has been given focus (done once, in its first frame).
+    pub focused: bool,
+}
+
+impl Entry {
+    pub fn new(target: EntryTarget, text: String) -> Self {
+        Self {
+            target,
+            text,
+            focused: false,
+        }
+    }
+}
+
+impl DiagramEditor {
+    /// The text `target` holds now.
+    pub(super) fn current_text(&self, target: &EntryTarget) -> String {
+        match target {
+            EntryTarget::Element(id) => self
+                .networks
+                .iter()
+                .find_map(|network| network.element(*id))
+                .map(|element| match element {
+                    ElementRef::Operand(operand) => operand.text.clone(),
+                    ElementRef::Block(block) => block.instance.clone(),
+                    ElementRef::Output(NetworkOutput::Coil(coil)) => coil.variable.clone(),
+                    ElementRef::Output(NetworkOutput::Jump { label, .. }) => label.clone(),
+                    _ => String::new(),
+                })
+                .unwrap_or_default(),
+            EntryTarget::Pin(id, pin) => self
+                .networks
+                .iter()
+                .find_map(|network| network.element(*id))
+                .and_then(|element| match element {
+                    ElementRef::Block(block) => block
+                        .inputs
+                        .iter()
+                        .find(|input| input.pin == *pin)
+                        .and_then(|input| match input.source.as_slice() {
+                            [FlowNode::Operand(operand)] => Some(operand.text.clone()),
+                            _ => None,
+                        }),
+                    _ => None,
+                })
+                .unwrap_or_default(),
+            EntryTarget::Header(index, field) => self
+                .networks
+                .get(*index)
+                .map(|network| match field {
+                    HeaderField::Title => network.title.clone(),
+                    HeaderField::Comment => network.comment.clone(),
+                    HeaderField::Label => network.label.clone(),
+                })
+                .unwrap_or_default(),
+            EntryTarget::NewBox(_) | EntryTarget::Prepared { .. } => String::new(),
+        }
+    }
+
+    /// Whether the field completes block names rather than variables.
+    fn completes_blocks(&self, target: &EntryTarget) -> bool {
+        matches!(target, EntryTarget::NewBox(_))
+    }
+
+    /// Shows the open text field over `anchor` (screen points) with its completions.
+    pub(super) fn entry_ui(
+        &mut self,
+        ctx: &egui::Context,
+        id: Id,
+        anchor: Rect,
+        services: &dyn DiagramServices,
+        frame: &mut FrameResult,
+    ) {
+        let Some(mut entry) = self.entry.take() else {
+            return;
+        };
+        let field_id = id.with("entry");
+        let label = match &entry.target {
+            EntryTarget::Element(_) | EntryTarget::Pin(..) => self.texts.operand_field.clone(),
+            EntryTarget::NewBox(_) => self.texts.block_type_field.clone(),
+            EntryTarget::Header(_, HeaderField::Title) => self.texts.title_field.clone(),
+            EntryTarget::Header(_, HeaderField::Comment) => self.texts.comment_field.clone(),
+            EntryTarget::Header(_, HeaderField::Label) => self.texts.label_field.clone(),
+            EntryTarget::Prepared { .. } => self.texts.prepared_value.clone(),
+        };
+        let candidates: Vec<CompletionItem> = match &entry.target {
+            EntryTarget::Header(..) | EntryTarget::Prepared { .. } => Vec::new(),
+            target if self.completes_blocks(target) => services.blocks(&entry.text),
+            _ => services.variables(&entry.text),
+        };
+        let mut commit = None;
+        let mut cancel = false;
+        let mut left = false;
+        let area = egui::Area::new(field_id.with("area"))
+            .order(egui::Order::Foreground)
+            .fixed_pos(anchor.left_top())
+            .show(ctx, |ui| {
+                egui::Frame::popup(ui.style()).show(ui, |ui| {
+                    let width = anchor.width().max(140.0);
+                    let response = ui.add(
+                        TextEdit::singleline(&mut entry.text)
+                            .id(field_id)
+                            .desired_width(width)
+                            .hint_text(label.clone()),
+                    );
+                    response
+                        .widget_info(|| egui::WidgetInfo::text_edit(true, "", &entry.text, &label));
+                    if !entry.focused {
+                        entry.focused = true;
+                        response.request_focus();
+                        let mut state = TextEdit::load_state(ctx, field_id).unwrap_or_default();
+                        let end = CCursor::new(entry.text.chars().count());
+                        state.cursor.set_char_range(Some(CCursorRange::one(end)));
+                        state.store(ctx, field_id);
+                    }
+                    if ui.input(|input| input.key_pressed(Key::Escape)) {
+                        cancel = true;
+                    } else if response.lost_focus() {
+                        if ui.input(|input| input.key_pressed(Key::Enter)) {
+                            commit = Some(entry.text.clone());
+                        } else {
+                            left = true;
+                        }
+                    }
+                    for candidate in candidates.iter().take(MAX_CANDIDATES) {
+                        let text = if candidate.detail.is_empty() {
+                            candidate.label.clone()
+                        } else {
+                            format!("{}  {}", candidate.label, candidate.detail)
+                        };
+                        if ui.selectable_label(false, text).clicked() {
+                            commit = Some(candidate.label.clone());
+                        }
+                    }
+                });
+            });
+        if cancel {
+            self.request_focus();
+            return;
+        }
+        // A click elsewhere keeps what was typed, as CODESYS does; a click on a candidate in
+        // the popup takes the candidate instead.
+        let by_leaving = left && commit.is_none() && !area.response.contains_pointer();
+        if by_leaving {
+            commit = Some(entry.text.clone());
+        }
+        match commit {
+            Some(text) => {
+                // Enter or a candidate gives the keyboard back to the canvas; a click elsewhere
+                // leaves it where the user clicked.
+                if !by_leaving {
+                    self.request_focus();
+                }
+                self.commit_entry(entry.target, text.trim(), services, frame);
+            }
+            None => self.entry = Some(entry),
+        }
+    }
+
+    /// Applies what was typed in a text field.
+    fn commit_entry(
+        &mut self,
+        target: EntryTarget,
+        text: &str,
+        services: &dyn DiagramServices,
+        frame: &mut FrameResult,
+    ) {
+        let result = match &target {
+            EntryTarget::Element(id) => {
+                let result = set_element_text(&self.networks, *id, text);
+                if result.is_ok() {
+                    self.declare_if_instance(*id, text, services, frame);
+                }
+                result
+            }
+            EntryTarget::Pin(id, pin) => set_pin_operand(&self.networks, *id, pin, text),
+            EntryTarget::Header(index, field) => {
+                set_network_header(&self.networks, *index, *field, text)
+            }
+            EntryTarget::Prepared { element, operand } => {
+                frame.prepared = Some(PreparedOperand {
+                    element: *element,
+                    operand: operand.clone(),
+                    value: text.to_owned(),
+                });
+                return;
+            }
+            EntryTarget::NewBox(insert) => {
+                let Some(signature) = services.signature(text) else {
+                    frame.refusal = Some(DiagramRefusal::UnknownBlock(text.to_owned()));
+                    return;
+                };
+                let inputs: Vec<&str> = signature.inputs.iter().map(String::as_str).collect();
+                let outputs: Vec<&str> = signature.outputs.iter().map(String::as_str).collect();
+                let block = new_box(text, "", &inputs, &outputs);
+                let result = insert_node(&self.networks, *insert, block);
+                if let Ok(splice) = &result
+                    && signature.function_block
+                    && let Some(focus) = splice.focus
+                {
+                    // A function block needs an instance: ask for its name at once.
+                    let splice = splice.clone();
+                    self.apply_splice(splice, frame);
+                    self.open_entry(EntryTarget::Element(focus), None);
+                    return;
+                }
+                result
+            }
+        };
+        match result {
+            Ok(splice) => self.apply_splice(splice, frame),
+            Err(error) => frame.refusal = Some(DiagramRefusal::Edit(error)),
+        }
+    }
+
+    /// Asks the app to declare `name` when element `id` is a function block's box and no
+    /// variable of that name exists, as CODESYS offers when an instance is named.
+    fn declare_if_instance(
+        &self,
+        id: project_model::ElementId,
+        name: &str,
+        services: &dyn DiagramServices,
+        frame: &mut FrameResult,
+    ) {
+        let Some(ElementRef::Block(block)) =
+            self.networks.iter().find_map(|network| network.element(id))
+        else {
+            return;
+        };
+        let is_function_block = services
+            .signature(&block.type_name)
+            .is_some_and(|signature| signature.function_block);
+        if is_function_block && !name.is_empty() && !services.is_declared(name) {
+            frame.declare_instance = Some(InstanceDeclaration {
+                name: name.to_owned(),
+                type_name: block.type_name.clone(),
+            });
+        }
+    }
+
+    /// The input assistant (F2): every variable and block; a click puts the name in the open
+    /// field.
+    pub(super) fn assistant_ui(
+        &mut self,
+        ctx: &egui::Context,
+        id: Id,
+        services: &dyn DiagramServices,
+        frame: &mut FrameResult,
+    ) {
+        if !self.assistant_open {
+            return;
+        }
+        let mut open = true;
+        let mut chosen = None;
+        egui::Window::new(self.texts.input_assistant.clone())
+            .id(id.with("assistant"))
+            .open(&mut open)
+            .collapsible(false)
+            .default_width(260.0)
+            .show(ctx, |ui| {
+                egui::ScrollArea::vertical()
+                    .max_height(320.0)
+                    .show(ui, |ui| {
+                        for (heading, items) in [
+                            (&self.texts.variables, services.variables("")),
+                            (&self.texts.blocks, services.blocks("")),
+                        ] {
+                            ui.strong(heading);
+                            for item in items {
+                                let text = format!("{}  {}", item.label, item.detail);
+                                if ui.selectable_label(false, text).clicked() {
+                                    chosen = Some(item.label.clone());
+                                }
+                            }
+                        }
+                    });
+            });
+        if let Some(name) = chosen {
+            open = false;
+            match self.entry.take() {
+                Some(entry) => self.commit_entry(entry.target, &name, services, frame),
+                None => {
+                    if let [element] = self.selection.elements.as_slice() {
+                        let element = *element;
+                        self.commit_entry(EntryTarget::Element(element), &name, services, frame);
+                    }
+                }
+            }
+        }
+        self.assistant_open = open;
+    }
+}

@@ -1,0 +1,39 @@
+//! The diagram canvas and the combined LD/FBD editor.
+//!
+//! A body is a list of networks (`project_model::network`); each is laid out by a pure function
+//! ([`ld_layout`], [`fbd_layout`]) into grid cells, cached until the network changes, and only
+//! the networks in view are painted. Every edit is a structural operation of
+//! `project_model::network_edit` on the selection and comes out as one [`DiagramChange`]; the
+//! editor never changes the model itself and keeps no undo history.
+
+mod canvas;
+mod canvas_paint;
+mod commands;
+mod editor;
+mod entry;
+mod fbd_layout;
+mod keyboard;
+mod ld_layout;
+mod navigate;
+mod paint;
+mod placed;
+mod texts;
+mod toolbox;
+mod types;
+
+pub use commands::{DiagramCommand, DiagramSelection};
+pub use editor::DiagramEditor;
+pub use fbd_layout::fbd_layout;
+pub use ld_layout::ld_layout;
+pub use placed::{
+    InsertPoint, InsertTarget, NetworkLayout, PinMark, PlacedElement, Power, Shape, Wire,
+};
+pub use texts::DiagramTexts;
+pub use toolbox::ToolboxItem;
+pub use types::{
+    BlockSignature, DiagramChange, DiagramOnline, DiagramOutput, DiagramRefusal, DiagramServices,
+    DiagramView, ElementDiagnostic, InstanceDeclaration, OnlineValue, PreparedOperand,
+};
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,498 @@
+//! Painting a laid-out network with egui's painter: lines, contacts, coils, boxes, variables,
+//! the selection, diagnostics markers, online power and values, and insertion marks.
+
+use std::collections::{HashMap, HashSet};
+
+use egui::{Align2, Color32, FontId, Painter, Pos2, Rect, Stroke, StrokeKind, pos2, vec2};
+use project_model::{CoilKind, Edge, ElementId};
+
+use super::placed::{NetworkLayout, PinMark, PlacedElement, Power, Shape};
+use super::types::DiagramOnline;
+use crate::{EditorPalette, Severity};
+
+/// The size of a grid cell at zoom 1, in points.
+pub(super) const CELL_SIZE_PX: egui::Vec2 = egui::Vec2::new(84.0, 44.0);
+
+/// What the painter needs besides the layout; borrowed for one frame.
+pub(super) struct PaintContext<'a> {
+    /// Where the painting goes, clipped to the canvas.
+    pub painter: &'a Painter,
+    /// The colours.
+    pub palette: EditorPalette,
+    /// The colour of lines and symbols.
+    pub line: Color32,
+    /// The colour of weak text (placeholders, comments).
+    pub weak: Color32,
+    /// Points per point at zoom 1.
+    pub zoom: f32,
+    /// The selected elements.
+    pub selected: &'a HashSet<ElementId>,
+    /// The worst severity of the diagnostics on each element.
+    pub diagnostics: &'a HashMap<ElementId, Severity>,
+    /// The online values, when logged in.
+    pub online: Option<&'a DiagramOnline>,
+    /// The text shown for an empty operand.
+    pub placeholder: &'a str,
+}
+
+impl PaintContext<'_> {
+    /// The screen rectangle of a grid rectangle of a network drawn from `origin`.
+    pub fn screen_rect(&self, origin: Pos2, rect: Rect) -> Rect {
+        Rect::from_min_max(
+            self.screen_pos(origin, rect.min),
+            self.screen_pos(origin, rect.max),
+        )
+    }
+
+    /// The screen position of a grid position of a network drawn from `origin`.
+    pub fn screen_pos(&self, origin: Pos2, pos: Pos2) -> Pos2 {
+        origin + vec2(pos.x * CELL_SIZE_PX.x, pos.y * CELL_SIZE_PX.y) * self.zoom
+    }
+
+    fn font(&self, size_px: f32) -> FontId {
+        FontId::proportional(size_px * self.zoom)
+    }
+
+    fn stroke(&self, power: Power) -> Stroke {
+        let on = match (self.online, power) {
+            (Some(_), Power::Rail) => true,
+            (Some(online), Power::After(id)) => online.power.get(&id).copied().unwrap_or(false),
+            _ => false,
+        };
+        if on {
+            Stroke::new(3.0 * self.zoom, self.palette.power_on)
+        } else {
+            Stroke::new(1.5 * self.zoom, self.line)
+        }
+    }
+
+    /// Paints `layout` with its top-left corner at `origin` (screen points).
+    pub fn network(&self, layout: &NetworkLayout, origin: Pos2) {
+        for element in &layout.elements {
+            if element.id.is_some_and(|id| self.selected.contains(&id)) {
+                let rect = self.screen_rect(origin, element.rect).shrink(1.0);
+                self.painter
+                    .rect_filled(rect, 3.0 * self.zoom, self.palette.diagram_selection);
+            }
+        }
+        for wire in &layout.wires {
+            let points = wire
+                .points
+                .iter()
+                .map(|point| self.screen_pos(origin, *point))
+                .collect();
+            self.painter.line(points, self.stroke(wire.power));
+        }
+        for element in &layout.elements {
+            self.element(element, origin);
+        }
+    }
+
+    /// Paints a "+" mark at every insertion point, the one at `highlighted` larger.
+    pub fn insert_points(&self, layout: &NetworkLayout, origin: Pos2, highlighted: Option<Pos2>) {
+        for point in &layout.insert_points {
+            let center = self.screen_pos(origin, point.pos);
+            let big = highlighted == Some(point.pos);
+            let radius = if big { 9.0 } else { 5.0 } * self.zoom;
+            let stroke = Stroke::new(2.0 * self.zoom, self.palette.insert_point);
+            self.painter.line_segment(
+                [center - vec2(radius, 0.0), center + vec2(radius, 0.0)],
+                stroke,
+            );
+            self.painter.line_segment(
+                [center - vec2(0.0, radius), center + vec2(0.0, radius)],
+                stroke,
+            );
+        }
+    }
+
+    fn element(&self, element: &PlacedElement, origin: Pos2) {
+        let rect = self.screen_rect(origin, element.rect);
+        let mid_y = rect.top() + rect.height().min(CELL_SIZE_PX.y * self.zoom) * 0.5;
+        let own = element.id.map_or(Power::None, Power::After);
+        match &element.shape {
+            Shape::Contact {
+                text,
+                negated,
+                edge,
+            } => {
+                let center = pos2(rect.center().x, mid_y);
+                let half = vec2(7.0, 9.0) * self.zoom;
+                self.painter.line_segment(
+                    [pos2(rect.left(), mid_y), pos2(center.x - half.x, mid_y)],
+                    self.stroke(element.power_in),
+                );
+                self.painter.line_segment(
+                    [pos2(center.x + half.x, mid_y), pos2(rect.right(), mid_y)],
+                    self.stroke(own),
+                );
+                let stroke = self.stroke(own);
+                for x in [center.x - half.x, center.x + half.x] {
+                    self.painter
+                        .line_segment([pos2(x, mid_y - half.y), pos2(x, mid_y + half.y)], stroke);
+                }
+                if *negated {
+                    self.painter.line_segment(
+                        [
+                            center + vec2(-half.x, half.y),
+                            center + vec2(half.x, -half.y),
+                        ],
+                        stroke,
+                    );
+                }
+                self.edge_letter(*edge, center);
+                self.operand(text, element, rect);
+            }
+            Shape::Coil { variable, kind } => {
+                let center = pos2(rect.center().x, mid_y);
+                let radius = 8.5 * self.zoom;
+                self.painter.line_segment(
+                    [pos2(rect.left(), mid_y), pos2(center.x - radius, mid_y)],
+                    self.stroke(element.power_in),
+                );
+                self.painter.line_segment(
+                    [pos2(center.x + radius, mid_y), pos2(rect.right(), mid_y)],
+                    self.stroke(element.power_in),
+                );
+                self.painter
+                    .circle_stroke(center, radius, self.stroke(element.power_in));
+                self.coil_letter(*kind, center);
+                self.operand(variable, element, rect);
+            }
+            Shape::Assignment { variable, kind } => {
+                let frame = rect.shrink2(vec2(4.0, 8.0) * self.zoom);
+                self.painter.rect_stroke(
+                    frame,
+                    2.0 * self.zoom,
+                    self.stroke(Power::None),
+                    StrokeKind::Inside,
+                );
+                self.coil_letter(*kind, pos2(frame.left() - 6.0 * self.zoom, frame.top()));
+                self.text_in(variable, frame, element);
+            }
+            Shape::Variable {
+                text,
+                negated,
+                edge,
+            } => {
+                let frame = rect.shrink2(vec2(4.0, 8.0) * self.zoom);
+                if element.id.is_none() {
+                    // An output's assignment: the line comes from the pin on the left.
+                    self.painter.line_segment(
+                        [
+                            pos2(rect.left(), mid_y),
+                            pos2(rect.left() + 6.0 * self.zoom, mid_y),
+                        ],
+                        self.stroke(element.power_in),
+                    );
+                    self.text_at(
+                        text,
+                        pos2(rect.left() + 8.0 * self.zoom, mid_y),
+                        Align2::LEFT_CENTER,
+                        frame.width(),
+                    );
+                } else {
+                    self.text_in(text, frame, element);
+                    self.painter.line_segment(
+                        [pos2(frame.right(), mid_y), pos2(rect.right(), mid_y)],
+                        self.stroke(element.power_in),
+                    );
+                }
+                if *negated {
+                    self.negation_circle(pos2(rect.right(), mid_y));
+                }
+                self.edge_letter(
+                    *edge,
+                    pos2(rect.right() - 8.0 * self.zoom, mid_y - 10.0 * self.zoom),
+                );
+            }
+            Shape::Jump { label } => {
+                let tip = pos2(rect.left() + 18.0 * self.zoom, mid_y);
+                self.painter.arrow(
+                    pos2(rect.left(), mid_y),
+                    tip - pos2(rect.left(), mid_y),
+                    self.stroke(element.power_in),
+                );
+                let shown = if label.is_empty() {
+                    self.placeholder
+                } else {
+                    label
+                };
+                self.painter.text(
+                    tip + vec2(4.0 * self.zoom, 0.0),
+                    Align2::LEFT_CENTER,
+                    shown,
+                    self.font(12.0),
+                    self.line,
+                );
+            }
+            Shape::Return => {
+                self.painter.text(
+                    pos2(rect.left() + 4.0 * self.zoom, mid_y),
+                    Align2::LEFT_CENTER,
+                    "RETURN",
+                    self.font(12.0),
+                    self.line,
+                );
+            }
+            Shape::Group => {}
+            Shape::Box {
+                type_name,
+                instance,
+                inputs,
+                outputs,
+            } => self.block(rect, origin, type_name, instance, inputs, outputs, element),
+        }
+        if let Some(severity) = element.id.and_then(|id| self.diagnostics.get(&id)) {
+            let color = match severity {
+                Severity::Error => self.palette.error,
+                Severity::Warning => self.palette.warning,
+                Severity::Info => self.palette.info,
+            };
+            let corner = rect.right_top() + vec2(-5.0, 5.0) * self.zoom;
+            self.painter.circle_filled(corner, 4.0 * self.zoom, color);
+            self.painter.rect_stroke(
+                rect.shrink(1.0),
+                2.0 * self.zoom,
+                Stroke::new(1.5 * self.zoom, color),
+                StrokeKind::Inside,
+            );
+        }
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    fn block(
+        &self,
+        rect: Rect,
+        origin: Pos2,
+        type_name: &str,
+        instance: &str,
+        inputs: &[PinMark],
+        outputs: &[PinMark],
+        element: &PlacedElement,
+    ) {
+        let frame = rect.shrink2(vec2(10.0, 3.0) * self.zoom);
+        let stroke = self.stroke(Power::None);
+        self.painter
+            .rect_stroke(frame, 2.0 * self.zoom, stroke, StrokeKind::Inside);
+        self.painter.text(
+            pos2(frame.center().x, frame.top() + 2.0 * self.zoom),
+            Align2::CENTER_TOP,
+            type_name,
+            FontId::monospace(11.0 * self.zoom),
+            self.line,
+        );
+        if !instance.is_empty() {
+            self.painter.text(
+                pos2(frame.center().x, frame.top() - 1.0 * self.zoom),
+                Align2::CENTER_BOTTOM,
+                instance,
+                self.font(11.0),
+                self.line,
+            );
+        }
+        let pin_y = |pin: &PinMark| self.screen_pos(origin, pos2(0.0, pin.row + 0.5)).y;
+        for pin in inputs {
+            let y = pin_y(pin);
+            self.painter.line_segment(
+                [pos2(rect.left(), y), pos2(frame.left(), y)],
+                self.stroke(element.power_in),
+            );
+            self.painter.text(
+                pos2(frame.left() + 3.0 * self.zoom, y),
+                Align2::LEFT_CENTER,
+                &pin.name,
+                self.font(10.0),
+                self.line,
+            );
+            if pin.negated {
+                self.negation_circle(pos2(frame.left() - 4.0 * self.zoom, y));
+            }
+            self.edge_letter(
+                pin.edge,
+                pos2(frame.left() - 4.0 * self.zoom, y - 9.0 * self.zoom),
+            );
+        }
+        let own = element.id.map_or(Power::None, Power::After);
+        for pin in outputs {
+            let y = pin_y(pin);
+            self.painter.line_segment(
+                [pos2(frame.right(), y), pos2(rect.right(), y)],
+                self.stroke(own),
+            );
+            self.painter.text(
+                pos2(frame.right() - 3.0 * self.zoom, y),
+                Align2::RIGHT_CENTER,
+                &pin.name,
+                self.font(10.0),
+                self.line,
+            );
+            if pin.negated {
+                self.negation_circle(pos2(frame.right() + 4.0 * self.zoom, y));
+            }
+            if let (Some(online), Some(id)) = (self.online, element.id)
+                && let Some(value) = online.values.get(&(id, Some(pin.name.clone())))
+            {
+                // Inside the box under the pin's name, where no line or variable is drawn.
+                self.value_badge(
+                    pos2(frame.right() - 3.0 * self.zoom, y + 5.0 * self.zoom),
+                    Align2::RIGHT_TOP,
+                    &value.text,
+                    value.forced,
+                );
+            }
+        }
+    }
+
+    /// The operand above a contact or coil, shortened to its cell, with its online value.
+    fn operand(&self, text: &str, element: &PlacedElement, rect: Rect) {
+        let shown = if text.is_empty() {
+            self.placeholder
+        } else {
+            text
+        };
+        let color = if text.is_empty() {
+            self.weak
+        } else {
+            self.line
+        };
+        let max_chars = ((rect.width() / (6.5 * self.zoom)) as usize).max(3);
+        let shown = elide(shown, max_chars);
+        self.painter.text(
+            pos2(rect.center().x, rect.top() + 1.0 * self.zoom),
+            Align2::CENTER_TOP,
+            shown,
+            self.font(11.0),
+            color,
+        );
+        if let (Some(online), Some(id)) = (self.online, element.id)
+            && let Some(value) = online.values.get(&(id, None))
+        {
+            self.value_badge(
+                rect.left_bottom() - vec2(0.0, 12.0 * self.zoom),
+                Align2::LEFT_TOP,
+                &value.text,
+                value.forced,
+            );
+        }
+    }
+
+    /// A text at `at`, shortened to `width` points.
+    fn text_at(&self, text: &str, at: Pos2, align: Align2, width: f32) {
+        let max_chars = ((width / (6.5 * self.zoom)) as usize).max(3);
+        self.painter.text(
+            at,
+            align,
+            elide(text, max_chars),
+            self.font(11.0),
+            self.line,
+        );
+    }
+
+    /// A variable's text in its frame.
+    fn text_in(&self, text: &str, frame: Rect, element: &PlacedElement) {
+        let shown = if text.is_empty() {
+            self.placeholder
+        } else {
+            text
+        };
+        let color = if text.is_empty() {
+            self.weak
+        } else {
+            self.line
+        };
+        let max_chars = ((frame.width() / (6.5 * self.zoom)) as usize).max(3);
+        self.painter.text(
+            pos2(frame.right() - 2.0 * self.zoom, frame.center().y),
+            Align2::RIGHT_CENTER,
+            elide(shown, max_chars),
+            self.font(11.0),
+            color,
+        );
+        if let (Some(online), Some(id)) = (self.online, element.id)
+            && let Some(value) = online.values.get(&(id, None))
+        {
+            self.value_badge(
+                frame.right_top(),
+                Align2::RIGHT_BOTTOM,
+                &value.text,
+                value.forced,
+            );
+        }
+    }
+
+    /// A value in a small filled box anchored at `at`.
+    fn value_badge(&self, at: Pos2, anchor: Align2, text: &str, forced: bool) {
+        let galley = self.painter.layout_no_wrap(
+            text.to_owned(),
+            FontId::monospace(10.0 * self.zoom),
+            self.line,
+        );
+        let text_rect = anchor.anchor_size(at, galley.size());
+        let rect = text_rect.expand(1.5 * self.zoom);
+        let fill = if forced {
+            self.palette.forced_fill
+        } else {
+            self.palette.changed_value
+        };
+        self.painter.rect_filled(rect, 2.0 * self.zoom, fill);
+        let color = if forced {
+            self.palette.forced_text
+        } else {
+            self.line
+        };
+        self.painter.galley(text_rect.min, galley, color);
+    }
+
+    fn negation_circle(&self, center: Pos2) {
+        self.painter.circle_stroke(
+            center,
+            4.0 * self.zoom,
+            Stroke::new(1.5 * self.zoom, self.line),
+        );
+    }
+
+    fn edge_letter(&self, edge: Edge, center: Pos2) {
+        let letter = match edge {
+            Edge::None => return,
+            Edge::Rising => "P",
+            Edge::Falling => "N",
+        };
+        self.painter.text(
+            center,
+            Align2::CENTER_CENTER,
+            letter,
+            self.font(10.0),
+            self.line,
+        );
+    }
+
+    fn coil_letter(&self, kind: CoilKind, center: Pos2) {
+        let letter = match kind {
+            CoilKind::Normal => return,
+            CoilKind::Negated => "/",
+            CoilKind::Set => "S",
+            CoilKind::Reset => "R",
+            CoilKind::Rising => "P",
+            CoilKind::Falling => "N",
+        };
+        self.painter.text(
+            center,
+            Align2::CENTER_CENTER,
+            letter,
+            self.font(11.0),
+            self.line,
+        );
+    }
+}
+
+/// `text` cut to `max_chars` characters with an ellipsis.
+fn elide(text: &str, max_chars: usize) -> String {
+    if text.chars().count() <= max_chars {
+        text.to_owned()
+    } else {
+        let mut short: String = text.chars().take(max_chars.saturating_sub(1)).collect();
+        short.push('…');
+        short
+    }
+}
