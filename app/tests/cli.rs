@@ -449,8 +449,10 @@ fn ladder_project(decls: &str, networks: Vec<project_model::Network>) -> tempfil
     dir
 }
 
-/// A rung of contacts on `texts` (ids 1, 2, …) driving coils on `coils` (ids after them).
+/// A rung of contacts on `texts` (ids `first`, `first + 1`, …) driving coils on `coils` (ids
+/// after them); ids are unique in a body, so each rung of one body starts after the last.
 fn ladder_rung(
+    first: u32,
     texts: &[&str],
     coils: &[(&str, project_model::CoilKind)],
 ) -> project_model::Network {
@@ -460,7 +462,7 @@ fn ladder_rung(
         .enumerate()
         .map(|(at, text)| {
             FlowNode::Operand(Operand {
-                id: ElementId(at as u32 + 1),
+                id: ElementId(first + at as u32),
                 text: (*text).into(),
                 ..Operand::default()
             })
@@ -471,7 +473,7 @@ fn ladder_rung(
         .enumerate()
         .map(|(at, (variable, kind))| {
             NetworkOutput::Coil(Coil {
-                id: ElementId((texts.len() + at) as u32 + 1),
+                id: ElementId(first + (texts.len() + at) as u32),
                 variable: (*variable).into(),
                 kind: *kind,
             })
@@ -490,15 +492,15 @@ fn check_reports_a_finding_in_an_ld_body_at_its_file_pou_network_and_element() {
     let dir = ladder_project(
         "a : BOOL; x : INT; q : BOOL;",
         vec![
-            ladder_rung(&["a"], &[("q", CoilKind::Normal)]),
-            ladder_rung(&["a", "x"], &[("q", CoilKind::Normal)]),
+            ladder_rung(1, &["a"], &[("q", CoilKind::Normal)]),
+            ladder_rung(3, &["a", "x"], &[("q", CoilKind::Normal)]),
         ],
     );
     let output = rivet(&["check", path_str(dir.path())]);
     assert_eq!(output.status.code(), Some(1));
     let stderr = text_of(&output.stderr);
     let file = dir.path().join("application/Main.pou.toml");
-    let location = format!("{}:Main:2:2: error[E0105]:", file.display());
+    let location = format!("{}:Main:2:4: error[E0105]:", file.display());
     assert!(stderr.contains(&location), "{stderr}");
     assert!(!stderr.contains("__"), "{stderr}");
 }
@@ -537,7 +539,11 @@ fn simulate_runs_an_ld_program() {
         "n : INT; q : BOOL; r : BOOL;",
         vec![
             counter,
-            ladder_rung(&["n = 3"], &[("q", CoilKind::Set), ("r", CoilKind::Normal)]),
+            ladder_rung(
+                4,
+                &["n = 3"],
+                &[("q", CoilKind::Set), ("r", CoilKind::Normal)],
+            ),
         ],
     );
     let output = rivet(&[
