@@ -173,10 +173,16 @@ fn renaming_a_program_renames_its_task_calls_in_the_same_undo_step() {
     menu(&mut harness, "Sequence", "Rename");
     enter_text(&mut harness, "Name", "MachineSequence");
     let main_task = project(&harness).task("MainTask").unwrap();
-    assert_eq!(main_task.programs, ["Main", "MachineSequence"]);
+    assert_eq!(
+        main_task.programs,
+        ["Main", "MachineSequence", "Interlock", "Scaling"]
+    );
     shortcut(&mut harness, Key::Z);
     let main_task = project(&harness).task("MainTask").unwrap();
-    assert_eq!(main_task.programs, ["Main", "Sequence"]);
+    assert_eq!(
+        main_task.programs,
+        ["Main", "Sequence", "Interlock", "Scaling"]
+    );
     assert!(project(&harness).application.object("Sequence").is_some());
 }
 
@@ -345,13 +351,13 @@ fn the_task_editor_changes_interval_priority_and_calls_and_refuses_bad_values() 
     harness.run();
     assert_eq!(
         project(&harness).task("MainTask").unwrap().programs,
-        ["Main", "Sequence", "MotionControl"]
+        ["Main", "Sequence", "Interlock", "Scaling", "MotionControl"]
     );
     harness.get_by_label("Move up MotionControl").click();
     harness.run();
     assert_eq!(
         project(&harness).task("MainTask").unwrap().programs,
-        ["Main", "MotionControl", "Sequence"]
+        ["Main", "Sequence", "Interlock", "MotionControl", "Scaling"]
     );
 
     enter_text(&mut harness, "Name of MainTask", "MotionTask");
