@@ -8,6 +8,7 @@
 //! declaration text read back into variables.
 
 mod addresses;
+mod blocks;
 mod declarations;
 mod folding;
 mod outline;
@@ -25,6 +26,7 @@ pub use addresses::{
 pub use declarations::{
     DeclarationHeader, DeclarationKind, ParsedDeclarations, parse_declarations,
 };
+pub use blocks::{BlockPins, block_completions, block_pins, operand_completions};
 pub use folding::folding_ranges;
 pub use outline::{OutlineItem, OutlineKind, outline};
 pub use semantic::{
