@@ -106,10 +106,14 @@ pub fn block_pins(project: &Project, name: &str) -> Option<BlockPins> {
             function_block: true,
         });
     }
-    let pou = project.application.objects().into_iter().find_map(|object| match object {
-        Object::Pou(pou) if pou.name.eq_ignore_ascii_case(name) => Some(pou),
-        _ => None,
-    })?;
+    let pou = project
+        .application
+        .objects()
+        .into_iter()
+        .find_map(|object| match object {
+            Object::Pou(pou) if pou.name.eq_ignore_ascii_case(name) => Some(pou),
+            _ => None,
+        })?;
     let in_section = |sections: &[VarSection]| -> Vec<String> {
         pou.variables
             .iter()
@@ -212,7 +216,11 @@ mod tests {
         let blocks = block_completions(&project, "fb_");
         assert_eq!(blocks.len(), 1);
         assert_eq!(blocks[0].label, "FB_Motor");
-        assert!(block_completions(&project, "TO").iter().any(|b| b.label == "TON"));
+        assert!(
+            block_completions(&project, "TO")
+                .iter()
+                .any(|b| b.label == "TON")
+        );
     }
 
     #[test]

@@ -23,10 +23,10 @@ pub use addresses::{
     AddressArea, AddressCheckError, AddressInfo, LocatedVariable, Overlap, address_info,
     check_address, located_overlaps, located_variables,
 };
+pub use blocks::{BlockPins, block_completions, block_pins, operand_completions};
 pub use declarations::{
     DeclarationHeader, DeclarationKind, ParsedDeclarations, parse_declarations,
 };
-pub use blocks::{BlockPins, block_completions, block_pins, operand_completions};
 pub use folding::folding_ranges;
 pub use outline::{OutlineItem, OutlineKind, outline};
 pub use semantic::{

@@ -30,8 +30,8 @@ use scope::{Globals, Scope};
 
 pub use complete::{Completion, completions};
 pub use definition::{Definition, DefinitionKind, Resolution};
-pub use stdlib::{is_built_in_type, is_function, is_function_block};
 pub(crate) use stdlib::all_names;
+pub use stdlib::{is_built_in_type, is_function, is_function_block};
 
 /// A finding about a project: where it is and what it is.
 #[derive(Clone, Debug, PartialEq, Eq)]

@@ -1,0 +1,121 @@
+//! The diagram editors of the open LD/FBD bodies and the lowering their online values are read
+//! through.
+
+use std::collections::HashMap;
+
+use compiler::lower::LoweredBody;
+use editor::{DiagramEditor, DiagramView, ElementDiagnostic};
+use project_model::{Network, Project, TextTarget};
+
+use crate::studio::i18n::Language;
+
+use super::texts::diagram_texts;
+
+/// One body's editor and what it was last given, so each frame gives it only what changed.
+pub(super) struct DiagramDocument {
+    /// The editor.
+    pub editor: DiagramEditor,
+    /// The project revision whose networks the editor holds; `None` after the editor made a
+    /// change, so the model's answer (taken or refused) is brought in next frame.
+    pub synced: Option<u64>,
+    /// The language of the editor's words.
+    language: Language,
+    /// The markers last given.
+    diagnostics: Vec<ElementDiagnostic>,
+}
+
+impl DiagramDocument {
+    /// Gives the editor the model's `networks` when the project changed since it last took
+    /// them: comparing every network each frame would cost as much as drawing them.
+    pub(super) fn sync(&mut self, networks: &[Network], revision: u64) {
+        if self.synced != Some(revision) {
+            self.editor.set_networks(networks);
+            self.synced = Some(revision);
+        }
+    }
+
+    /// Puts the editor's words in `language` on a switch of language.
+    pub(super) fn set_language(&mut self, language: Language) {
+        if self.language != language {
+            self.language = language;
+            self.editor.set_texts(diagram_texts(language));
+        }
+    }
+
+    /// Gives the editor `diagnostics` when they differ from the ones it shows.
+    pub(super) fn set_diagnostics(&mut self, diagnostics: Vec<ElementDiagnostic>) {
+        if self.diagnostics != diagnostics {
+            self.diagnostics = diagnostics.clone();
+            self.editor.set_diagnostics(diagnostics);
+        }
+    }
+}
+
+/// Every diagram editor of the open documents, by body.
+#[derive(Default)]
+pub struct GraphicalDocuments {
+    /// The editors, by body.
+    pub(super) documents: HashMap<TextTarget, DiagramDocument>,
+    /// The lowering the online values and faults are read through.
+    pub(super) lowering: LoweringCache,
+}
+
+/// The lowered LD/FBD bodies of one project revision, for their probes and the origins of
+/// faults; lowered again only when the project changes (lowering every frame is too slow).
+#[derive(Default)]
+pub(super) struct LoweringCache {
+    lowered: Option<(u64, Vec<LoweredBody>)>,
+}
+
+impl LoweringCache {
+    /// The lowered body `target` of `project` at `revision`, lowering the project again when
+    /// it changed.
+    pub(super) fn body(
+        &mut self,
+        project: &Project,
+        revision: u64,
+        target: &TextTarget,
+    ) -> Option<&LoweredBody> {
+        if self
+            .lowered
+            .as_ref()
+            .is_none_or(|(seen, _)| *seen != revision)
+        {
+            let bodies = compiler::lower::lower_project(project).bodies;
+            self.lowered = Some((revision, bodies));
+        }
+        self.lowered
+            .as_ref()?
+            .1
+            .iter()
+            .find(|body| body.target == *target)
+    }
+}
+
+/// The editor of `target` in `documents`, made for `networks` in the view of `language` when
+/// it is new.
+pub(super) fn document<'d>(
+    documents: &'d mut HashMap<TextTarget, DiagramDocument>,
+    target: &TextTarget,
+    networks: &[Network],
+    language: project_model::Language,
+    revision: u64,
+) -> &'d mut DiagramDocument {
+    documents.entry(target.clone()).or_insert_with(|| {
+        let mut editor = DiagramEditor::new(networks, DiagramView::of_language(language));
+        editor.set_texts(diagram_texts(Language::default()));
+        DiagramDocument {
+            editor,
+            synced: Some(revision),
+            language: Language::default(),
+            diagnostics: Vec::new(),
+        }
+    })
+}
+
+impl GraphicalDocuments {
+    /// The diagram editor of `target`, if its document was drawn.
+    pub fn editor(&self, target: &TextTarget) -> Option<&DiagramEditor> {
+        self.documents.get(target).map(|document| &document.editor)
+    }
+}
