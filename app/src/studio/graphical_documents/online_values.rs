@@ -143,8 +143,8 @@ mod tests {
         };
         let prepared = BTreeMap::from([("P.xB".to_owned(), "TRUE".to_owned())]);
         let online = diagram_online(&[network], &probes, read, &prepared);
-        assert_eq!(online.power[&ElementId(1)], true);
-        assert_eq!(online.power[&ElementId(2)], true);
+        assert!(online.power[&ElementId(1)]);
+        assert!(online.power[&ElementId(2)]);
         let a = &online.values[&(ElementId(1), None)];
         assert_eq!(a.text, "TRUE");
         assert!(a.forced);

@@ -195,14 +195,14 @@ mod tests {
     fn a_series_chain_ands_its_contacts_and_a_closed_contact_negates() {
         let net = network(vec![contact(1, "a", false), contact(2, "b", true)]);
         let power = network_power(&net, &values(&[(1, true), (2, false)]));
-        assert_eq!(power[&ElementId(1)], true);
-        assert_eq!(power[&ElementId(2)], true);
-        assert_eq!(power[&ElementId(99)], true);
+        assert!(power[&ElementId(1)]);
+        assert!(power[&ElementId(2)]);
+        assert!(power[&ElementId(99)]);
         let power = network_power(&net, &values(&[(1, false), (2, false)]));
-        assert_eq!(power[&ElementId(1)], false);
+        assert!(!power[&ElementId(1)]);
         // Without power entering, the second contact passes none whatever its value.
-        assert_eq!(power[&ElementId(2)], false);
-        assert_eq!(power[&ElementId(99)], false);
+        assert!(!power[&ElementId(2)]);
+        assert!(!power[&ElementId(99)]);
     }
 
     #[test]
@@ -220,13 +220,13 @@ mod tests {
         });
         let net = network(vec![group, contact(8, "c", false)]);
         let power = network_power(&net, &values(&[(6, false), (7, true), (8, true)]));
-        assert_eq!(power[&ElementId(6)], false);
-        assert_eq!(power[&ElementId(7)], true);
-        assert_eq!(power[&ElementId(5)], true);
-        assert_eq!(power[&ElementId(99)], true);
+        assert!(!power[&ElementId(6)]);
+        assert!(power[&ElementId(7)]);
+        assert!(power[&ElementId(5)]);
+        assert!(power[&ElementId(99)]);
         let power = network_power(&net, &values(&[(6, false), (7, false), (8, true)]));
-        assert_eq!(power[&ElementId(5)], false);
-        assert_eq!(power[&ElementId(99)], false);
+        assert!(!power[&ElementId(5)]);
+        assert!(!power[&ElementId(99)]);
     }
 
     #[test]
@@ -236,7 +236,7 @@ mod tests {
         assert_eq!(power.get(&ElementId(1)), None);
         assert_eq!(power.get(&ElementId(2)), None);
         let power = network_power(&net, &values(&[(2, false)]));
-        assert_eq!(power[&ElementId(2)], false);
+        assert!(!power[&ElementId(2)]);
     }
 
     #[test]
@@ -253,12 +253,12 @@ mod tests {
         readings.edges.insert(ElementId(3), false);
         let power = network_power(&net, &readings);
         // The variable is TRUE but no edge happened this cycle.
-        assert_eq!(power[&ElementId(3)], false);
+        assert!(!power[&ElementId(3)]);
         readings.edges.insert(ElementId(3), true);
         readings.power.insert(ElementId(4), false);
         let power = network_power(&net, &readings);
-        assert_eq!(power[&ElementId(3)], true);
-        assert_eq!(power[&ElementId(4)], false);
-        assert_eq!(power[&ElementId(99)], false);
+        assert!(power[&ElementId(3)]);
+        assert!(!power[&ElementId(4)]);
+        assert!(!power[&ElementId(99)]);
     }
 }
