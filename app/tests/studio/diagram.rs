@@ -2,7 +2,7 @@
 //! step per gesture, undo and redo restore the networks, a network is copied and pasted, a type
 //! error is shown at its element after the live check, and power flows while online.
 
-use crate::support::{example_copy, login_with_download, studio, wait_until};
+use crate::support::{example_copy, login_with_download, wait_until};
 use app::studio::StudioApp;
 use egui::{Event, Key, Modifiers};
 use egui_kittest::Harness;
@@ -17,13 +17,29 @@ fn interlock() -> TextTarget {
 
 /// The Interlock's networks as the model holds them.
 fn networks(app: &StudioApp) -> Vec<Network> {
-    match app.session().unwrap().project.application.object("Interlock") {
+    match app
+        .session()
+        .unwrap()
+        .project
+        .application
+        .object("Interlock")
+    {
         Some(Object::Pou(pou)) => match &pou.body {
             Body::Ld { networks } => networks.clone(),
             other => panic!("the Interlock is not LD: {other:?}"),
         },
         _ => Vec::new(),
     }
+}
+
+/// The studio on `project` in a window tall enough to show every network of the Interlock.
+fn tall_studio(project: &std::path::Path) -> Harness<'static, StudioApp> {
+    let app = StudioApp::new(app::studio::Settings::default(), Some(project.to_owned()));
+    let mut harness = Harness::builder()
+        .with_size([1400.0, 1800.0])
+        .build_ui_state(|ui, app: &mut StudioApp| app.ui(ui), app);
+    harness.step();
+    harness
 }
 
 /// Opens the Interlock and gives its diagram the keyboard focus.
@@ -103,7 +119,7 @@ fn click_element(harness: &mut Harness<'_, StudioApp>, id: ElementId) {
 #[test]
 fn a_rung_built_by_keyboard_is_undone_and_redone_step_by_step() {
     let project = example_copy(|_| {});
-    let mut harness = studio(project.path());
+    let mut harness = tall_studio(project.path());
     open_interlock(&mut harness);
     let original = networks(harness.state());
 
@@ -117,10 +133,12 @@ fn a_rung_built_by_keyboard_is_undone_and_redone_step_by_step() {
     command(&mut harness, Key::R);
     type_and_enter(&mut harness, "xRunRequest");
     let with_parallel = networks(harness.state());
-    let group = with_parallel.iter().find_map(|network| match network.rung.as_slice() {
-        [FlowNode::Parallel(group)] => Some(group.clone()),
-        _ => None,
-    });
+    let group = with_parallel
+        .iter()
+        .find_map(|network| match network.rung.as_slice() {
+            [FlowNode::Parallel(group)] => Some(group.clone()),
+            _ => None,
+        });
     let group = group.expect("a parallel group in the new rung");
     assert_eq!(group.branches.len(), 2);
 
@@ -148,7 +166,7 @@ fn a_rung_built_by_keyboard_is_undone_and_redone_step_by_step() {
 #[test]
 fn a_network_is_copied_and_pasted_below_itself() {
     let project = example_copy(|_| {});
-    let mut harness = studio(project.path());
+    let mut harness = tall_studio(project.path());
     open_interlock(&mut harness);
     let original = networks(harness.state());
     // A click right of the last network's elements selects the network as a whole.
@@ -182,7 +200,7 @@ fn a_network_is_copied_and_pasted_below_itself() {
 #[test]
 fn a_type_error_is_shown_at_its_element_after_the_live_check() {
     let project = example_copy(|_| {});
-    let mut harness = studio(project.path());
+    let mut harness = tall_studio(project.path());
     open_interlock(&mut harness);
     // A TIME variable is no contact.
     build_rung(&mut harness, "tWarningElapsed", "xHorn");
@@ -211,7 +229,7 @@ fn a_type_error_is_shown_at_its_element_after_the_live_check() {
 #[test]
 fn power_flows_through_a_true_contact_while_online() {
     let project = example_copy(|_| {});
-    let mut harness = studio(project.path());
+    let mut harness = tall_studio(project.path());
     open_interlock(&mut harness);
     login_with_download(&mut harness);
     harness.key_press(Key::F5);

@@ -114,7 +114,7 @@ pub(crate) fn graphical_body_ui(
     );
     document.set_language(view.language);
     document.sync(shown.networks, revision);
-    document.editor.set_read_only(view.online.is_logged_in());
+    document.set_read_only(view.online.is_logged_in());
     document.set_diagnostics(markers);
     document.editor.set_online(online);
     if let Some((network, element)) = shown.reveal {

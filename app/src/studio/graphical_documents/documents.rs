@@ -22,6 +22,8 @@ pub(super) struct DiagramDocument {
     language: Language,
     /// The markers last given.
     diagnostics: Vec<ElementDiagnostic>,
+    /// Whether the editor was last made read-only.
+    read_only: bool,
 }
 
 impl DiagramDocument {
@@ -39,6 +41,15 @@ impl DiagramDocument {
         if self.language != language {
             self.language = language;
             self.editor.set_texts(diagram_texts(language));
+        }
+    }
+
+    /// Makes the editor read-only (while logged in) or editable on a change only: making it
+    /// read-only closes its open field, which must stay open for a value prepared online.
+    pub(super) fn set_read_only(&mut self, read_only: bool) {
+        if self.read_only != read_only {
+            self.read_only = read_only;
+            self.editor.set_read_only(read_only);
         }
     }
 
@@ -109,6 +120,7 @@ pub(super) fn document<'d>(
             synced: Some(revision),
             language: Language::default(),
             diagnostics: Vec::new(),
+            read_only: false,
         }
     })
 }
