@@ -76,3 +76,52 @@ pub(super) fn fault_diagnostics(
     }
     found
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_fault_in_a_lowered_line_marks_its_network_and_element() {
+        let project = project_model::load_project(&assets::example_project_dir())
+            .map(|loaded| loaded.project)
+            .unwrap_or_else(|error| panic!("{error}"));
+        let lowered = compiler::lower::lower_project(&project);
+        let body = lowered
+            .bodies
+            .iter()
+            .find(|body| body.pou == "Interlock")
+            .expect("the Interlock is lowered");
+        // The first line that belongs to an element of the last network.
+        let (line, network, element) = (1..=body.text.lines().count() as u32)
+            .find_map(|line| match body.origin_at_line(line) {
+                Some(Origin::Element {
+                    network: 3,
+                    element: Some(element),
+                    ..
+                }) => Some((line, 3, element)),
+                _ => None,
+            })
+            .expect("a line of network 4");
+        let fault = |file: &str| Fault {
+            task: "MainTask".to_owned(),
+            kind: "division by zero".to_owned(),
+            pou: "Interlock".to_owned(),
+            file: file.to_owned(),
+            line,
+            cycle: 7,
+        };
+        let text_file = body.text_file.to_string_lossy().into_owned();
+        let found = fault_diagnostics(&[fault(&text_file)], body, Language::English);
+        assert_eq!(found.len(), 2, "{found:?}");
+        assert!(found.iter().all(|marker| marker.network == network
+            && marker.severity == Severity::Error
+            && marker.message == "runtime fault: division by zero"));
+        assert_eq!(found[0].element, None);
+        assert_eq!(found[1].element, Some(element));
+        // A fault in another body marks nothing here.
+        assert!(
+            fault_diagnostics(&[fault("application/Main.st")], body, Language::English).is_empty()
+        );
+    }
+}
