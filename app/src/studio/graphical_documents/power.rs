@@ -50,7 +50,7 @@ fn chain_power(
                 }
                 (group.id, any)
             }
-            FlowNode::Block(block) => (block.id, block_power(block, flowing, readings, power)),
+            FlowNode::Block(block) => (block.id, block_power(block, readings, power)),
         };
         // A stored power is what the target computed; it wins over any derivation.
         flowing = readings.power.get(&id).copied().or(derived);
@@ -80,18 +80,18 @@ fn contact_power(
     and(incoming, state)
 }
 
-/// A box's pins' sources are chains of their own, started powered as an FBD input is; the
-/// power leaving the box is its stored power, otherwise the power entering it.
+/// A box's pins' sources are chains of their own, started powered as an FBD input is. What
+/// leaves a box depends on its block (a timer's `Q`, a comparison's result, a number), so
+/// without its stored power it is unknown rather than guessed from what entered it.
 fn block_power(
     block: &BlockCall,
-    incoming: Option<bool>,
     readings: &PowerReadings,
     power: &mut HashMap<ElementId, bool>,
 ) -> Option<bool> {
     for input in &block.inputs {
         chain_power(&input.source, Some(true), readings, power);
     }
-    incoming
+    None
 }
 
 /// The outputs see the power at the end of the rung; a branch output continues it.
@@ -260,5 +260,26 @@ mod tests {
         assert!(power[&ElementId(3)]);
         assert!(!power[&ElementId(4)]);
         assert!(!power[&ElementId(99)]);
+    }
+
+    #[test]
+    fn a_box_passes_its_stored_power_and_nothing_guessed() {
+        let block = FlowNode::Block(project_model::BlockCall {
+            id: ElementId(11),
+            type_name: "TON".to_owned(),
+            instance: "tonDelay".to_owned(),
+            inputs: Vec::new(),
+            outputs: Vec::new(),
+        });
+        let net = network(vec![contact(10, "a", false), block]);
+        let mut readings = values(&[(10, true)]);
+        let power = network_power(&net, &readings);
+        assert!(power[&ElementId(10)]);
+        assert_eq!(power.get(&ElementId(11)), None);
+        assert_eq!(power.get(&ElementId(99)), None);
+        readings.power.insert(ElementId(11), true);
+        let power = network_power(&net, &readings);
+        assert!(power[&ElementId(11)]);
+        assert!(power[&ElementId(99)]);
     }
 }
