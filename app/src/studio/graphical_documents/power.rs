@@ -264,7 +264,7 @@ mod tests {
 
     #[test]
     fn a_box_passes_its_stored_power_and_nothing_guessed() {
-        let block = FlowNode::Block(project_model::BlockCall {
+        let block = FlowNode::Block(BlockCall {
             id: ElementId(11),
             type_name: "TON".to_owned(),
             instance: "tonDelay".to_owned(),
