@@ -224,6 +224,23 @@ fn a_type_error_is_shown_at_its_element_after_the_live_check() {
     harness.hover_at(rect.center());
     harness.run_steps(3);
     assert!(harness.query_by_label_contains("E0").is_some());
+
+    // After F11 the finding is listed as file:POU:network:element; a click selects the contact.
+    harness.key_press(Key::Escape);
+    harness.run_steps(2);
+    harness.key_press(Key::F11);
+    wait_until(&mut harness, "the build", |app| {
+        !app.is_building() && app.last_build().is_some()
+    });
+    harness.run_steps(2);
+    let place = format!(":Interlock:{}:{}", network + 1, contact.0);
+    harness.get_by_label_contains(&place).click();
+    harness.run_steps(4);
+    let selected = harness
+        .state()
+        .diagram_editor(&interlock())
+        .map(|editor| editor.selection().elements.clone());
+    assert_eq!(selected, Some(vec![contact]));
 }
 
 #[test]
