@@ -73,7 +73,9 @@ pub(crate) fn graphical_body_ui(
     let mut operand_paths = None;
     if view.online.is_online()
         && let Some(instance) = shown.instance.as_deref()
-        && let Some(lowered) = documents.lowering.body(project, revision, target)
+        && let Some((lowered, probe_paths)) = documents
+            .lowering
+            .body(project, shown.pou, revision, target, instance)
     {
         if view.online.target_state() == Some(TargetState::Faulted) {
             markers.extend(fault_diagnostics(
@@ -82,22 +84,20 @@ pub(crate) fn graphical_body_ui(
                 view.language,
             ));
         }
-        let probes = BodyProbes {
-            project,
-            pou: shown.pou,
-            instance,
-            lowered,
-        };
-        let probe_paths = probes.paths();
         let read = |path: &str| {
             view.online.value(path).map(|value| ReadValue {
                 text: value.text.clone(),
                 forced: value.forced,
             })
         };
-        online = Some(diagram_online(shown.networks, &probe_paths, read, prepared));
-        paths = probe_paths.into_iter().map(|(.., path)| path).collect();
-        operand_paths = Some(probes);
+        online = Some(diagram_online(shown.networks, probe_paths, read, prepared));
+        paths = probe_paths.iter().map(|probe| probe.path.clone()).collect();
+        operand_paths = Some(BodyProbes {
+            project,
+            pou: shown.pou,
+            instance,
+            lowered,
+        });
     }
     let operand_path = |operand: &str| {
         operand_paths

@@ -5,10 +5,11 @@ use std::collections::HashMap;
 
 use compiler::lower::LoweredBody;
 use editor::{DiagramEditor, DiagramView, ElementDiagnostic};
-use project_model::{Network, Project, TextTarget};
+use project_model::{Network, Pou, Project, TextTarget};
 
 use crate::studio::i18n::Language;
 
+use super::online_values::{BodyProbes, ProbePath};
 use super::texts::diagram_texts;
 
 /// One body's editor and what it was last given, so each frame gives it only what changed.
@@ -72,21 +73,27 @@ pub struct GraphicalDocuments {
 }
 
 /// The lowered LD/FBD bodies of one project revision, for their probes and the origins of
-/// faults; lowered again only when the project changes (lowering every frame is too slow).
+/// faults, and the probes' paths on the target per body and instance; made again only when the
+/// project changes (lowering or resolving every frame is too slow).
 #[derive(Default)]
 pub(super) struct LoweringCache {
+    /// The revision lowered and its bodies.
     lowered: Option<(u64, Vec<LoweredBody>)>,
+    /// The probes' paths of each body shown for an instance, at the lowered revision.
+    paths: HashMap<(TextTarget, String), Vec<ProbePath>>,
 }
 
 impl LoweringCache {
-    /// The lowered body `target` of `project` at `revision`, lowering the project again when
-    /// it changed.
+    /// The lowered body `target` of `project` at `revision` and its probes' paths for the
+    /// instance at `instance`, lowering the project again when it changed.
     pub(super) fn body(
         &mut self,
         project: &Project,
+        pou: &Pou,
         revision: u64,
         target: &TextTarget,
-    ) -> Option<&LoweredBody> {
+        instance: &str,
+    ) -> Option<(&LoweredBody, &[ProbePath])> {
         if self
             .lowered
             .as_ref()
@@ -94,12 +101,27 @@ impl LoweringCache {
         {
             let bodies = compiler::lower::lower_project(project).bodies;
             self.lowered = Some((revision, bodies));
+            self.paths.clear();
         }
-        self.lowered
+        let body = self
+            .lowered
             .as_ref()?
             .1
             .iter()
-            .find(|body| body.target == *target)
+            .find(|body| body.target == *target)?;
+        let paths = self
+            .paths
+            .entry((target.clone(), instance.to_owned()))
+            .or_insert_with(|| {
+                BodyProbes {
+                    project,
+                    pou,
+                    instance,
+                    lowered: body,
+                }
+                .paths()
+            });
+        Some((body, paths))
     }
 }
 

@@ -18,6 +18,19 @@ pub(super) struct ReadValue {
     pub forced: bool,
 }
 
+/// One probe with its variable's path on the target.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub(super) struct ProbePath {
+    /// The element.
+    pub element: ElementId,
+    /// The pin of a box, or `EN`; `None` for the element itself.
+    pub pin: Option<String>,
+    /// What the value is.
+    pub kind: ProbeKind,
+    /// The variable's path on the target.
+    pub path: String,
+}
+
 /// Where the body's probes are read and what the editor shows of them.
 pub(super) struct BodyProbes<'a> {
     /// The project, for the globals' paths.
@@ -32,13 +45,17 @@ pub(super) struct BodyProbes<'a> {
 
 impl BodyProbes<'_> {
     /// Every probe's element, pin, kind and path on the target, in the lowering's order.
-    pub(super) fn paths(&self) -> Vec<(ElementId, Option<String>, ProbeKind, String)> {
+    pub(super) fn paths(&self) -> Vec<ProbePath> {
         self.lowered
             .probes
             .iter()
             .filter_map(|probe| {
-                let path = target_path(self.project, self.pou, self.instance, &probe.path)?;
-                Some((probe.element, probe.pin.clone(), probe.kind, path))
+                Some(ProbePath {
+                    element: probe.element,
+                    pin: probe.pin.clone(),
+                    kind: probe.kind,
+                    path: target_path(self.project, self.pou, self.instance, &probe.path)?,
+                })
             })
             .collect()
     }
@@ -53,13 +70,19 @@ impl BodyProbes<'_> {
 /// of a path, `prepared` the values typed to write or force).
 pub(super) fn diagram_online(
     networks: &[Network],
-    probes: &[(ElementId, Option<String>, ProbeKind, String)],
+    probes: &[ProbePath],
     read: impl Fn(&str) -> Option<ReadValue>,
     prepared: &BTreeMap<String, String>,
 ) -> DiagramOnline {
     let mut readings = PowerReadings::default();
     let mut values = HashMap::new();
-    for (element, pin, kind, path) in probes {
+    for ProbePath {
+        element,
+        pin,
+        kind,
+        path,
+    } in probes
+    {
         let Some(value) = read(path) else { continue };
         let on = boolean(&value.text);
         match (kind, pin.as_deref()) {
@@ -131,10 +154,13 @@ mod tests {
             })],
             ..Network::default()
         };
-        let probes = vec![
-            (ElementId(1), None, ProbeKind::Value, "P.xA".to_owned()),
-            (ElementId(2), None, ProbeKind::Value, "P.xB".to_owned()),
-        ];
+        let probe = |id: u32, path: &str| ProbePath {
+            element: ElementId(id),
+            pin: None,
+            kind: ProbeKind::Value,
+            path: path.to_owned(),
+        };
+        let probes = vec![probe(1, "P.xA"), probe(2, "P.xB")];
         let read = |path: &str| {
             Some(ReadValue {
                 text: if path == "P.xA" { "TRUE" } else { "FALSE" }.to_owned(),
