@@ -272,3 +272,73 @@ fn power_flows_through_a_true_contact_while_online() {
             })
     });
 }
+
+/// The Interlock's variables as `name : type`.
+fn variables(app: &StudioApp) -> Vec<String> {
+    match app
+        .session()
+        .unwrap()
+        .project
+        .application
+        .object("Interlock")
+    {
+        Some(Object::Pou(pou)) => pou
+            .variables
+            .iter()
+            .map(|v| format!("{} : {}", v.name, v.ty))
+            .collect(),
+        _ => Vec::new(),
+    }
+}
+
+#[test]
+fn a_box_instance_is_declared_in_the_same_undo_step_and_an_unknown_block_refused() {
+    let project = example_copy(|_| {});
+    let mut harness = tall_studio(project.path());
+    open_interlock(&mut harness);
+    build_rung(&mut harness, "xRunEnabled", "xHorn");
+    let (_, contact) =
+        rung_of(&networks(harness.state()), "xRunEnabled", "xHorn").expect("the rung");
+    click_element(&mut harness, contact);
+
+    command(&mut harness, Key::B);
+    type_and_enter(&mut harness, "TOON");
+    let status = harness.state().status().map(|s| s.text.clone());
+    assert_eq!(
+        status.as_deref(),
+        Some("no function or function block is called 'TOON'")
+    );
+
+    let before_box = (networks(harness.state()), variables(harness.state()));
+    command(&mut harness, Key::B);
+    type_and_enter(&mut harness, "TOF");
+    let without_instance = (networks(harness.state()), variables(harness.state()));
+    type_and_enter(&mut harness, "tofHorn");
+    assert!(
+        variables(harness.state()).contains(&"tofHorn : TOF".to_owned()),
+        "{:?}",
+        variables(harness.state())
+    );
+    let named = networks(harness.state());
+    assert!(
+        named
+            .iter()
+            .any(|network| network.rung.iter().any(|node| matches!(
+                node,
+                FlowNode::Block(block) if block.type_name == "TOF" && block.instance == "tofHorn"
+            )))
+    );
+    // One Ctrl+Z takes back the instance's name and its declaration together.
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::Z);
+    harness.run_steps(2);
+    assert_eq!(
+        (networks(harness.state()), variables(harness.state())),
+        without_instance
+    );
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::Z);
+    harness.run_steps(2);
+    assert_eq!(
+        (networks(harness.state()), variables(harness.state())),
+        before_box
+    );
+}
