@@ -83,8 +83,8 @@ fn content_ui(ui: &mut Ui, node: &TreeNode, content: Content<'_>) {
     }
 }
 
-/// A body that is not Structured Text (LD, FBD, CFC, SFC networks), shown as its data until
-/// the graphical editors come.
+/// A CFC or SFC body, shown as its data until their editors come (LD and FBD bodies have the
+/// diagram editor of `graphical_documents`).
 pub fn graphical_body_ui(ui: &mut Ui, salt: &str, body: &Body) {
     egui::ScrollArea::both()
         .id_salt(("graphical body", salt))

@@ -1,13 +1,14 @@
-//! The refusals of the project model, the compiler's literal parser and the app's value parser
-//! in the interface language: each variant maps to a [`Text`] template, so a new variant fails to compile until
-//! it is translated, and the user never reads a library's English `Display`.
+//! The refusals of the project model, the diagram editor, the compiler's literal parser and the
+//! app's value parser in the interface language: each variant maps to a [`Text`] template, so a
+//! new variant fails to compile until it is translated, and the user never reads a library's English `Display`.
 
 use compiler::literal::LiteralError;
-use project_model::EditError;
+use editor::DiagramRefusal;
+use project_model::{EditError, NetworkEditError};
 
 use crate::literal_value::ValueError;
 
-use super::i18n::{Language, RefusalText};
+use super::i18n::{DiagramText, Language, RefusalText};
 
 /// Why an edit of the project was refused, in `language`.
 pub fn edit_error_text(error: &EditError, language: Language) -> String {
@@ -135,6 +136,38 @@ pub fn value_error_text(error: &ValueError, language: Language) -> String {
         ValueError::OutOfRange { text, ty } => {
             RefusalText::ValueOutOfRange.fill(language, &[("text", text), ("ty", ty)])
         }
+    }
+}
+
+/// Why a command of the LD/FBD editor did nothing, in `language`.
+pub fn diagram_refusal_text(refusal: &DiagramRefusal, language: Language) -> String {
+    match refusal {
+        DiagramRefusal::Edit(error) => network_edit_error_text(error, language),
+        DiagramRefusal::UnknownBlock(name) => {
+            DiagramText::UnknownBlock.fill(language, &[("name", name)])
+        }
+    }
+}
+
+/// Why a structural operation does not apply to the selection, in `language`.
+pub fn network_edit_error_text(error: &NetworkEditError, language: Language) -> String {
+    match error {
+        NetworkEditError::NoSuchNetwork { index, count } => DiagramText::NoSuchNetwork.fill(
+            language,
+            &[
+                ("number", &(index + 1).to_string()),
+                ("count", &count.to_string()),
+            ],
+        ),
+        NetworkEditError::NoSuchElement { id } => {
+            DiagramText::NoSuchElement.fill(language, &[("id", &id.0.to_string())])
+        }
+        // The operation's name is English for logs; the user reads which element refused.
+        NetworkEditError::NotApplicable { id, operation: _ } => {
+            DiagramText::NotApplicable.fill(language, &[("id", &id.0.to_string())])
+        }
+        NetworkEditError::NotOneChain => DiagramText::NotOneChain.get(language).to_owned(),
+        NetworkEditError::NothingSelected => DiagramText::NothingSelected.get(language).to_owned(),
     }
 }
 
@@ -281,6 +314,37 @@ mod tests {
             let chinese = literal_error_text(&error, Language::SimplifiedChinese);
             assert!(!chinese.contains('{'), "{chinese}");
             assert_ne!(chinese, error.to_string());
+        }
+    }
+
+    #[test]
+    fn every_diagram_refusal_reads_as_its_english_message_and_has_chinese() {
+        let refusals = vec![
+            DiagramRefusal::Edit(NetworkEditError::NoSuchNetwork { index: 2, count: 2 }),
+            DiagramRefusal::Edit(NetworkEditError::NoSuchElement {
+                id: project_model::ElementId(7),
+            }),
+            DiagramRefusal::Edit(NetworkEditError::NotApplicable {
+                id: project_model::ElementId(7),
+                operation: "inserting in series",
+            }),
+            DiagramRefusal::Edit(NetworkEditError::NotOneChain),
+            DiagramRefusal::Edit(NetworkEditError::NothingSelected),
+            DiagramRefusal::UnknownBlock(text("TOON")),
+        ];
+        for refusal in &refusals {
+            let english = diagram_refusal_text(refusal, Language::English);
+            let chinese = diagram_refusal_text(refusal, Language::SimplifiedChinese);
+            match refusal {
+                // The model's English names its operation for logs; the user reads the element.
+                DiagramRefusal::Edit(NetworkEditError::NotApplicable { .. }) => {
+                    assert_eq!(english, "the command does not apply to element 7");
+                }
+                DiagramRefusal::Edit(error) => assert_eq!(english, error.to_string()),
+                DiagramRefusal::UnknownBlock(_) => assert!(english.contains("'TOON'")),
+            }
+            assert_ne!(english, chinese, "{refusal:?} has no Chinese");
+            assert!(!chinese.contains('{'), "{chinese}");
         }
     }
 }

@@ -15,6 +15,7 @@ mod document_view;
 mod documents;
 mod error_texts;
 mod fonts;
+mod graphical_documents;
 mod i18n;
 #[cfg(test)]
 mod literal_tests;

@@ -11,6 +11,7 @@ mod basics;
 mod cam_editor;
 mod device_editors;
 mod devices;
+mod diagram;
 mod editor;
 mod online;
 mod recovery;

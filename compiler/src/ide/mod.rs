@@ -8,6 +8,7 @@
 //! declaration text read back into variables.
 
 mod addresses;
+mod blocks;
 mod declarations;
 mod folding;
 mod outline;
@@ -22,6 +23,7 @@ pub use addresses::{
     AddressArea, AddressCheckError, AddressInfo, LocatedVariable, Overlap, address_info,
     check_address, located_overlaps, located_variables,
 };
+pub use blocks::{BlockPins, block_completions, block_pins, operand_completions};
 pub use declarations::{
     DeclarationHeader, DeclarationKind, ParsedDeclarations, parse_declarations,
 };

@@ -30,6 +30,7 @@ use scope::{Globals, Scope};
 
 pub use complete::{Completion, completions};
 pub use definition::{Definition, DefinitionKind, Resolution};
+pub(crate) use stdlib::all_names;
 pub use stdlib::{is_built_in_type, is_function, is_function_block};
 
 /// A finding about a project: where it is and what it is.

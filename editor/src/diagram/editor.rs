@@ -233,6 +233,16 @@ impl DiagramEditor {
         self.diagnostics = diagnostics;
     }
 
+    /// The diagnostics shown, as the app gave them.
+    pub fn diagnostics(&self) -> &[ElementDiagnostic] {
+        &self.diagnostics
+    }
+
+    /// The online values shown; `None` when offline.
+    pub fn online(&self) -> Option<&DiagramOnline> {
+        self.online.as_ref()
+    }
+
     /// The online values to show; `None` when offline.
     pub fn set_online(&mut self, online: Option<DiagramOnline>) {
         self.online = online;

@@ -2,12 +2,14 @@
 //! words in `translations.rs`.
 
 mod device_texts;
+mod diagram_texts;
 mod language;
 mod refusal_texts;
 mod template;
 mod translations;
 
 pub use device_texts::DeviceText;
+pub use diagram_texts::DiagramText;
 pub use language::Language;
 pub use refusal_texts::RefusalText;
 pub use template::fill_template;

@@ -148,6 +148,14 @@ impl StudioApp {
         self.studio.panes.texts.body_selection(target)
     }
 
+    /// The diagram editor of an LD or FBD body, once its document was drawn.
+    pub fn diagram_editor(
+        &self,
+        target: &project_model::TextTarget,
+    ) -> Option<&editor::DiagramEditor> {
+        self.studio.panes.texts.graphical.editor(target)
+    }
+
     /// The docking layout.
     pub fn dock(&self) -> &Dock {
         &self.dock

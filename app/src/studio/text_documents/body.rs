@@ -1,5 +1,6 @@
-//! The implementation of a POU part in its editor, with live diagnostics, completion, hover,
-//! go to definition, find references and values inline while online.
+//! The implementation of a POU part in its editor (ST text here, LD and FBD networks in
+//! `graphical_documents`), with live diagnostics, completion, hover, go to definition, find
+//! references and values inline while online.
 
 use editor::Gesture;
 use egui::{RichText, Ui};
@@ -11,8 +12,11 @@ use crate::studio::reveal::Reveal;
 use crate::studio::tree_node::TreeNode;
 use crate::studio::view::StudioView;
 
+use crate::studio::graphical_documents::{GraphicalShown, graphical_body_ui};
+
 use super::diagnostics::body_diagnostics;
 use super::documents::{TextDocuments, TextKey};
+use super::inline::instance_of;
 use super::live_check;
 use super::part::{Shown, body_of, target_label};
 use super::services::BodyServices;
@@ -32,24 +36,61 @@ pub(super) fn body_ui(
         ui.label(RichText::new(Text::NoImplementation.get(language)).weak());
         return;
     };
-    let Some(text) = body.st_text() else {
-        match body {
-            Body::None => {
-                ui.label(RichText::new(Text::NoImplementation.get(language)).weak());
-            }
-            graphical => crate::studio::document_view::graphical_body_ui(
-                ui,
-                &target_label(&target),
-                graphical,
-            ),
-        }
-        return;
-    };
     let Some(session) = view.session else {
         return;
     };
     let project = &session.project;
     let revision = session.history.revision();
+    let Some(text) = body.st_text() else {
+        match body {
+            Body::None => {
+                ui.label(RichText::new(Text::NoImplementation.get(language)).weak());
+            }
+            Body::Ld { networks } | Body::Fbd { networks } => {
+                if texts.live.update(project, &pou.name, revision) {
+                    ui.ctx().request_repaint_after(live_check::CHECK_DELAY);
+                }
+                let reveal = match reveal {
+                    Some(Reveal::Element {
+                        network, element, ..
+                    }) => Some((*network, *element)),
+                    _ => None,
+                };
+                let shown = GraphicalShown {
+                    pou,
+                    target: &target,
+                    networks,
+                    language: body.language(),
+                    label: &target_label(&target),
+                    findings: texts
+                        .live
+                        .findings(&pou.name)
+                        .map(|(_, found)| found.as_slice()),
+                    instance: view
+                        .online
+                        .is_online()
+                        .then(|| instance_of(project, pou))
+                        .flatten(),
+                    reveal,
+                };
+                let paths = graphical_body_ui(
+                    view,
+                    &mut texts.graphical,
+                    &mut texts.inline.prepared,
+                    commands,
+                    ui,
+                    shown,
+                );
+                for path in paths {
+                    texts.inline.show(path);
+                }
+            }
+            other => {
+                crate::studio::document_view::graphical_body_ui(ui, &target_label(&target), other)
+            }
+        }
+        return;
+    };
     if texts.live.update(project, &pou.name, revision) {
         ui.ctx().request_repaint_after(live_check::CHECK_DELAY);
     }

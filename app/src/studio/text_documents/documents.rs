@@ -7,6 +7,7 @@ use editor::{EditorTexts, StEditor, TableTexts};
 use project_model::TextTarget;
 
 use super::part::Part;
+use crate::studio::graphical_documents::GraphicalDocuments;
 use crate::studio::i18n::{Language, Text};
 use crate::studio::reveal::Reveal;
 use crate::studio::tree_node::TreeNode;
@@ -50,8 +51,11 @@ pub struct TextDocuments {
     /// A place to show once its document is drawn.
     pub reveal: Option<(TreeNode, Reveal)>,
     pub(super) live: LiveCheck,
-    /// Values shown inline while online, and the prepared ones typed in their boxes.
+    /// Values shown inline while online, and the prepared ones typed in their boxes (the
+    /// diagram editors' prepared operands among them).
     pub inline: InlineValues,
+    /// The diagram editors of the LD and FBD bodies.
+    pub graphical: GraphicalDocuments,
     /// The language the editors' own words are in.
     language: Language,
 }

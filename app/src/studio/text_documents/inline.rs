@@ -25,7 +25,7 @@ pub struct InlineValues {
 
 /// The instance whose values a function block's body shows: the first program or global
 /// variable of that type (`Main.fbConveyor`).
-fn instance_of(project: &Project, pou: &Pou) -> Option<String> {
+pub(super) fn instance_of(project: &Project, pou: &Pou) -> Option<String> {
     match pou.kind {
         PouKind::Program => Some(pou.name.clone()),
         PouKind::Function | PouKind::Interface => None,
@@ -115,6 +115,11 @@ impl InlineValues {
             }
         }
         values
+    }
+
+    /// Reads `path` from the target while it is on screen (a value a diagram editor shows).
+    pub fn show(&mut self, path: String) {
+        self.showing.insert(path);
     }
 
     /// Forgets a body's names (the studio went offline).

@@ -14,8 +14,8 @@ use super::declarations::declarations_ui;
 use super::documents::TextDocuments;
 use super::part::{Part, Shown, body_of, part_of};
 
-/// Draws a POU document (graphical bodies as their data until their editors come). Returns
-/// `false` when `name` is not a POU.
+/// Draws a POU document (LD and FBD bodies in the diagram editor, CFC and SFC as their data
+/// until their editors come). Returns `false` when `name` is not a POU.
 pub(crate) fn pou_document_ui(
     view: StudioView<'_>,
     texts: &mut TextDocuments,

@@ -1,0 +1,155 @@
+//! The diagram editors of the open LD/FBD bodies and the lowering their online values are read
+//! through.
+
+use std::collections::HashMap;
+
+use compiler::lower::LoweredBody;
+use editor::{DiagramEditor, DiagramView, ElementDiagnostic};
+use project_model::{Network, Pou, Project, TextTarget};
+
+use crate::studio::i18n::Language;
+
+use super::online_values::{BodyProbes, ProbePath};
+use super::texts::diagram_texts;
+
+/// One body's editor and what it was last given, so each frame gives it only what changed.
+pub(super) struct DiagramDocument {
+    /// The editor.
+    pub editor: DiagramEditor,
+    /// The project revision whose networks the editor holds; `None` after the editor made a
+    /// change, so the model's answer (taken or refused) is brought in next frame.
+    pub synced: Option<u64>,
+    /// The language of the editor's words.
+    language: Language,
+    /// The markers last given.
+    diagnostics: Vec<ElementDiagnostic>,
+    /// Whether the editor was last made read-only.
+    read_only: bool,
+}
+
+impl DiagramDocument {
+    /// Gives the editor the model's `networks` when the project changed since it last took
+    /// them: comparing every network each frame would cost as much as drawing them.
+    pub(super) fn sync(&mut self, networks: &[Network], revision: u64) {
+        if self.synced != Some(revision) {
+            self.editor.set_networks(networks);
+            self.synced = Some(revision);
+        }
+    }
+
+    /// Puts the editor's words in `language` on a switch of language.
+    pub(super) fn set_language(&mut self, language: Language) {
+        if self.language != language {
+            self.language = language;
+            self.editor.set_texts(diagram_texts(language));
+        }
+    }
+
+    /// Makes the editor read-only (while logged in) or editable on a change only: making it
+    /// read-only closes its open field, which must stay open for a value prepared online.
+    pub(super) fn set_read_only(&mut self, read_only: bool) {
+        if self.read_only != read_only {
+            self.read_only = read_only;
+            self.editor.set_read_only(read_only);
+        }
+    }
+
+    /// Gives the editor `diagnostics` when they differ from the ones it shows.
+    pub(super) fn set_diagnostics(&mut self, diagnostics: Vec<ElementDiagnostic>) {
+        if self.diagnostics != diagnostics {
+            self.diagnostics = diagnostics.clone();
+            self.editor.set_diagnostics(diagnostics);
+        }
+    }
+}
+
+/// Every diagram editor of the open documents, by body.
+#[derive(Default)]
+pub struct GraphicalDocuments {
+    /// The editors, by body.
+    pub(super) documents: HashMap<TextTarget, DiagramDocument>,
+    /// The lowering the online values and faults are read through.
+    pub(super) lowering: LoweringCache,
+}
+
+/// The lowered LD/FBD bodies of one project revision, for their probes and the origins of
+/// faults, and the probes' paths on the target per body and instance; made again only when the
+/// project changes (lowering or resolving every frame is too slow).
+#[derive(Default)]
+pub(super) struct LoweringCache {
+    /// The revision lowered and its bodies.
+    lowered: Option<(u64, Vec<LoweredBody>)>,
+    /// The probes' paths of each body shown for an instance, at the lowered revision.
+    paths: HashMap<(TextTarget, String), Vec<ProbePath>>,
+}
+
+impl LoweringCache {
+    /// The lowered body `target` of `project` at `revision` and its probes' paths for the
+    /// instance at `instance`, lowering the project again when it changed.
+    pub(super) fn body(
+        &mut self,
+        project: &Project,
+        pou: &Pou,
+        revision: u64,
+        target: &TextTarget,
+        instance: &str,
+    ) -> Option<(&LoweredBody, &[ProbePath])> {
+        if self
+            .lowered
+            .as_ref()
+            .is_none_or(|(seen, _)| *seen != revision)
+        {
+            let bodies = compiler::lower::lower_project(project).bodies;
+            self.lowered = Some((revision, bodies));
+            self.paths.clear();
+        }
+        let body = self
+            .lowered
+            .as_ref()?
+            .1
+            .iter()
+            .find(|body| body.target == *target)?;
+        let paths = self
+            .paths
+            .entry((target.clone(), instance.to_owned()))
+            .or_insert_with(|| {
+                BodyProbes {
+                    project,
+                    pou,
+                    instance,
+                    lowered: body,
+                }
+                .paths()
+            });
+        Some((body, paths))
+    }
+}
+
+/// The editor of `target` in `documents`, made for `networks` in the view of `language` when
+/// it is new.
+pub(super) fn document<'d>(
+    documents: &'d mut HashMap<TextTarget, DiagramDocument>,
+    target: &TextTarget,
+    networks: &[Network],
+    language: project_model::Language,
+    revision: u64,
+) -> &'d mut DiagramDocument {
+    documents.entry(target.clone()).or_insert_with(|| {
+        let mut editor = DiagramEditor::new(networks, DiagramView::of_language(language));
+        editor.set_texts(diagram_texts(Language::default()));
+        DiagramDocument {
+            editor,
+            synced: Some(revision),
+            language: Language::default(),
+            diagnostics: Vec::new(),
+            read_only: false,
+        }
+    })
+}
+
+impl GraphicalDocuments {
+    /// The diagram editor of `target`, if its document was drawn.
+    pub fn editor(&self, target: &TextTarget) -> Option<&DiagramEditor> {
+        self.documents.get(target).map(|document| &document.editor)
+    }
+}
