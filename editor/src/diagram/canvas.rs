@@ -9,9 +9,10 @@ use project_model::{Anchor, ElementRef, HeaderField};
 
 use super::editor::{DiagramEditor, FrameResult, HEADER_HEIGHT_PX, LEFT_MARGIN_PX, ZOOM_RANGE};
 use super::entry::EntryTarget;
+use super::measure::shortened;
 use super::paint::CELL_SIZE_PX;
 use super::placed::{InsertTarget, Shape};
-use super::toolbox::ToolboxItem;
+use super::toolbox::{ToolboxBlock, ToolboxItem};
 use super::types::DiagramServices;
 use crate::EditorPalette;
 
@@ -70,7 +71,7 @@ impl DiagramEditor {
             let events = ui.input(|input| input.filtered_events(&filter));
             self.handle_events(ui.ctx(), &events, frame);
         }
-        self.pointer_ui(ui, &response, origin, frame);
+        self.pointer_ui(ui, &response, origin, services, frame);
         self.paint_visible(ui, origin, viewport, &response);
         if self.scroll_to_selection {
             self.scroll_to_selection = false;
@@ -152,7 +153,14 @@ impl DiagramEditor {
         Hit::Element(index, id, pin)
     }
 
-    fn pointer_ui(&mut self, ui: &Ui, response: &Response, origin: Pos2, frame: &mut FrameResult) {
+    fn pointer_ui(
+        &mut self,
+        ui: &Ui,
+        response: &Response,
+        origin: Pos2,
+        services: &dyn DiagramServices,
+        frame: &mut FrameResult,
+    ) {
         let zoom = self.zoom;
         let to_content = |screen: Pos2| ((screen - origin) / zoom).to_pos2();
         if let Some(item) = response.dnd_release_payload::<ToolboxItem>()
@@ -160,6 +168,14 @@ impl DiagramEditor {
         {
             if let Some((_, target)) = self.drop_target(to_content(pointer)) {
                 self.drop_item(*item, target, frame);
+            }
+            return;
+        }
+        if let Some(block) = response.dnd_release_payload::<ToolboxBlock>()
+            && let Some(pointer) = response.hover_pos()
+        {
+            if let Some((_, target)) = self.drop_target(to_content(pointer)) {
+                self.insert_box(block.0, target, services, frame);
             }
             return;
         }
@@ -215,13 +231,27 @@ impl DiagramEditor {
             }
         }
         if let Some(pointer) = response.hover_pos()
-            && let Hit::Element(_, element, _) = self.hit(to_content(pointer))
+            && let Hit::Element(network, element, _) = self.hit(to_content(pointer))
         {
-            let messages: Vec<String> = self
-                .diagnostics
-                .iter()
-                .filter(|diagnostic| diagnostic.element == Some(element))
-                .map(|diagnostic| format!("{}: {}", diagnostic.code, diagnostic.message))
+            // A shortened operand shows in full first, then the findings on the element.
+            let full_text = self.layouts[network]
+                .element(element)
+                .and_then(|placed| placed.shape.text())
+                .filter(|text| shortened(text).1)
+                .map(str::to_owned);
+            let messages: Vec<String> = full_text
+                .into_iter()
+                .chain(
+                    self.diagnostics
+                        .iter()
+                        .filter(|diagnostic| diagnostic.element == Some(element))
+                        .map(|diagnostic| match &diagnostic.pin {
+                            Some(pin) => {
+                                format!("{} ({pin}): {}", diagnostic.code, diagnostic.message)
+                            }
+                            None => format!("{}: {}", diagnostic.code, diagnostic.message),
+                        }),
+                )
                 .collect();
             if !messages.is_empty() {
                 response.show_tooltip_text(messages.join("\n"));

@@ -5,7 +5,7 @@ use egui::{Align2, FontId, Pos2, Rect, Response, Stroke, Ui, vec2};
 
 use super::editor::{DiagramEditor, HEADER_HEIGHT_PX, LEFT_MARGIN_PX, NETWORK_GAP_PX};
 use super::paint::{CELL_SIZE_PX, PaintContext};
-use super::toolbox::ToolboxItem;
+use super::toolbox::{ToolboxBlock, ToolboxItem};
 use crate::EditorPalette;
 
 impl DiagramEditor {
@@ -28,10 +28,12 @@ impl DiagramEditor {
             zoom: self.zoom,
             selected: &selected,
             diagnostics: &self.marks,
+            pin_diagnostics: &self.pin_marks,
             online: self.online.as_ref(),
             placeholder: &self.texts.placeholder,
         };
-        let dragging = response.dnd_hover_payload::<ToolboxItem>().is_some();
+        let dragging = response.dnd_hover_payload::<ToolboxItem>().is_some()
+            || response.dnd_hover_payload::<ToolboxBlock>().is_some();
         let highlighted = if dragging {
             response
                 .hover_pos()

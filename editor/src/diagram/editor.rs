@@ -68,6 +68,8 @@ pub struct DiagramEditor {
     pub(super) diagnostics: Vec<ElementDiagnostic>,
     /// The worst severity on each element.
     pub(super) marks: HashMap<ElementId, Severity>,
+    /// The worst severity on each pin of a box, for the findings that name a pin.
+    pub(super) pin_marks: HashMap<(ElementId, String), Severity>,
     /// The online values; `None` while offline.
     pub(super) online: Option<DiagramOnline>,
     /// The words shown.
@@ -119,6 +121,7 @@ impl DiagramEditor {
             assistant_open: false,
             diagnostics: Vec::new(),
             marks: HashMap::new(),
+            pin_marks: HashMap::new(),
             online: None,
             texts: DiagramTexts::default(),
             focus_requested: false,
@@ -217,16 +220,26 @@ impl DiagramEditor {
     /// The compiler's diagnostics for this body, shown at their elements until replaced.
     pub fn set_diagnostics(&mut self, diagnostics: Vec<ElementDiagnostic>) {
         self.marks.clear();
+        self.pin_marks.clear();
+        let rank = |severity: &Severity| match severity {
+            Severity::Error => 2,
+            Severity::Warning => 1,
+            Severity::Info => 0,
+        };
         for diagnostic in &diagnostics {
             if let Some(id) = diagnostic.element {
-                let rank = |severity: &Severity| match severity {
-                    Severity::Error => 2,
-                    Severity::Warning => 1,
-                    Severity::Info => 0,
-                };
                 let entry = self.marks.entry(id).or_insert(diagnostic.severity);
                 if rank(&diagnostic.severity) > rank(entry) {
                     *entry = diagnostic.severity;
+                }
+                if let Some(pin) = &diagnostic.pin {
+                    let entry = self
+                        .pin_marks
+                        .entry((id, pin.clone()))
+                        .or_insert(diagnostic.severity);
+                    if rank(&diagnostic.severity) > rank(entry) {
+                        *entry = diagnostic.severity;
+                    }
                 }
             }
         }
@@ -294,7 +307,7 @@ impl DiagramEditor {
         let canvas =
             Rect::from_min_max(pos2(toolbox.right() + 4.0, available.top()), available.max);
         ui.scope_builder(UiBuilder::new().max_rect(toolbox), |ui| {
-            self.toolbox_ui(ui, id);
+            self.toolbox_ui(ui, id, services, &mut frame);
         });
         let response = ui
             .scope_builder(UiBuilder::new().max_rect(canvas), |ui| {

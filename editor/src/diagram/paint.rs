@@ -6,6 +6,7 @@ use std::collections::{HashMap, HashSet};
 use egui::{Align2, Color32, FontId, Painter, Pos2, Rect, Stroke, StrokeKind, pos2, vec2};
 use project_model::{CoilKind, Edge, ElementId};
 
+use super::measure::{BOX_LEAD_PX, OPERAND_FONT_PX, PIN_FONT_PX, shortened};
 use super::placed::{NetworkLayout, PinMark, PlacedElement, Power, Shape};
 use super::types::DiagramOnline;
 use crate::{EditorPalette, Severity};
@@ -29,6 +30,8 @@ pub(super) struct PaintContext<'a> {
     pub selected: &'a HashSet<ElementId>,
     /// The worst severity of the diagnostics on each element.
     pub diagnostics: &'a HashMap<ElementId, Severity>,
+    /// The worst severity of the diagnostics on each pin of a box.
+    pub pin_diagnostics: &'a HashMap<(ElementId, String), Severity>,
     /// The online values, when logged in.
     pub online: Option<&'a DiagramOnline>,
     /// The text shown for an empty operand.
@@ -53,6 +56,20 @@ impl PaintContext<'_> {
         FontId::proportional(size_px * self.zoom)
     }
 
+    /// The font of operands, box titles and pin names: monospace, so the layouts know their
+    /// widths without measuring.
+    fn mono(&self, size_px: f32) -> FontId {
+        FontId::monospace(size_px * self.zoom)
+    }
+
+    fn severity_color(&self, severity: Severity) -> Color32 {
+        match severity {
+            Severity::Error => self.palette.error,
+            Severity::Warning => self.palette.warning,
+            Severity::Info => self.palette.info,
+        }
+    }
+
     fn stroke(&self, power: Power) -> Stroke {
         let on = match (self.online, power) {
             (Some(_), Power::Rail) => true,
@@ -73,6 +90,12 @@ impl PaintContext<'_> {
                 let rect = self.screen_rect(origin, element.rect).shrink(1.0);
                 self.painter
                     .rect_filled(rect, 3.0 * self.zoom, self.palette.diagram_selection);
+                self.painter.rect_stroke(
+                    rect,
+                    3.0 * self.zoom,
+                    Stroke::new(1.5 * self.zoom, self.palette.power_on),
+                    StrokeKind::Inside,
+                );
             }
         }
         for wire in &layout.wires {
@@ -160,15 +183,27 @@ impl PaintContext<'_> {
                 self.operand(variable, element, rect);
             }
             Shape::Assignment { variable, kind } => {
-                let frame = rect.shrink2(vec2(4.0, 8.0) * self.zoom);
+                // The line comes in from the left past the room of a set, reset or edge
+                // letter, which sits on it, into the variable's frame.
+                let letter_room = 17.0 * self.zoom;
+                let frame =
+                    Rect::from_min_max(pos2(rect.left() + letter_room, rect.top()), rect.max)
+                        .shrink2(vec2(0.0, 11.0) * self.zoom);
+                self.painter.line_segment(
+                    [pos2(rect.left(), mid_y), pos2(frame.left(), mid_y)],
+                    self.stroke(element.power_in),
+                );
+                if *kind != CoilKind::Normal {
+                    let letter_at = pos2(rect.left() + letter_room / 2.0, mid_y);
+                    self.coil_letter(*kind, letter_at - vec2(0.0, 8.0 * self.zoom));
+                }
                 self.painter.rect_stroke(
                     frame,
                     2.0 * self.zoom,
                     self.stroke(Power::None),
                     StrokeKind::Inside,
                 );
-                self.coil_letter(*kind, pos2(frame.left() - 6.0 * self.zoom, frame.top()));
-                self.text_in(variable, frame, element);
+                self.text_in(variable, frame.shrink2(vec2(4.0, 0.0) * self.zoom), element);
             }
             Shape::Variable {
                 text,
@@ -181,15 +216,14 @@ impl PaintContext<'_> {
                     self.painter.line_segment(
                         [
                             pos2(rect.left(), mid_y),
-                            pos2(rect.left() + 6.0 * self.zoom, mid_y),
+                            pos2(rect.left() + 3.0 * self.zoom, mid_y),
                         ],
                         self.stroke(element.power_in),
                     );
                     self.text_at(
                         text,
-                        pos2(rect.left() + 8.0 * self.zoom, mid_y),
+                        pos2(rect.left() + 4.0 * self.zoom, mid_y),
                         Align2::LEFT_CENTER,
-                        frame.width(),
                     );
                 } else {
                     self.text_in(text, frame, element);
@@ -201,9 +235,10 @@ impl PaintContext<'_> {
                 if *negated {
                     self.negation_circle(pos2(rect.right(), mid_y));
                 }
+                // An operand that feeds no pin carries its edge at its end, on the line.
                 self.edge_letter(
                     *edge,
-                    pos2(rect.right() - 8.0 * self.zoom, mid_y - 10.0 * self.zoom),
+                    pos2(rect.right() - 2.0 * self.zoom, mid_y - 7.0 * self.zoom),
                 );
             }
             Shape::Jump { label } => {
@@ -222,7 +257,7 @@ impl PaintContext<'_> {
                     tip + vec2(4.0 * self.zoom, 0.0),
                     Align2::LEFT_CENTER,
                     shown,
-                    self.font(12.0),
+                    self.mono(OPERAND_FONT_PX),
                     self.line,
                 );
             }
@@ -231,7 +266,7 @@ impl PaintContext<'_> {
                     pos2(rect.left() + 4.0 * self.zoom, mid_y),
                     Align2::LEFT_CENTER,
                     "RETURN",
-                    self.font(12.0),
+                    self.mono(OPERAND_FONT_PX),
                     self.line,
                 );
             }
@@ -244,18 +279,22 @@ impl PaintContext<'_> {
             } => self.block(rect, origin, type_name, instance, inputs, outputs, element),
         }
         if let Some(severity) = element.id.and_then(|id| self.diagnostics.get(&id)) {
-            let color = match severity {
-                Severity::Error => self.palette.error,
-                Severity::Warning => self.palette.warning,
-                Severity::Info => self.palette.info,
-            };
-            let corner = rect.right_top() + vec2(-5.0, 5.0) * self.zoom;
-            self.painter.circle_filled(corner, 4.0 * self.zoom, color);
+            let color = self.severity_color(*severity);
             self.painter.rect_stroke(
                 rect.shrink(1.0),
                 2.0 * self.zoom,
-                Stroke::new(1.5 * self.zoom, color),
+                Stroke::new(2.0 * self.zoom, color),
                 StrokeKind::Inside,
+            );
+            // A filled badge with "!" at the top-left corner, legible at any zoom above 50 %.
+            let corner = rect.left_top() + vec2(7.0, 7.0) * self.zoom;
+            self.painter.circle_filled(corner, 6.5 * self.zoom, color);
+            self.painter.text(
+                corner,
+                Align2::CENTER_CENTER,
+                "!",
+                FontId::monospace(10.0 * self.zoom),
+                self.palette.forced_text,
             );
         }
     }
@@ -271,7 +310,7 @@ impl PaintContext<'_> {
         outputs: &[PinMark],
         element: &PlacedElement,
     ) {
-        let frame = rect.shrink2(vec2(10.0, 3.0) * self.zoom);
+        let frame = rect.shrink2(vec2(BOX_LEAD_PX, 3.0) * self.zoom);
         let stroke = self.stroke(Power::None);
         self.painter
             .rect_stroke(frame, 2.0 * self.zoom, stroke, StrokeKind::Inside);
@@ -279,7 +318,7 @@ impl PaintContext<'_> {
             pos2(frame.center().x, frame.top() + 2.0 * self.zoom),
             Align2::CENTER_TOP,
             type_name,
-            FontId::monospace(11.0 * self.zoom),
+            self.mono(OPERAND_FONT_PX),
             self.line,
         );
         if !instance.is_empty() {
@@ -287,31 +326,41 @@ impl PaintContext<'_> {
                 pos2(frame.center().x, frame.top() - 1.0 * self.zoom),
                 Align2::CENTER_BOTTOM,
                 instance,
-                self.font(11.0),
+                self.mono(OPERAND_FONT_PX),
                 self.line,
             );
         }
         let pin_y = |pin: &PinMark| self.screen_pos(origin, pos2(0.0, pin.row + 0.5)).y;
+        let pin_severity = |pin: &PinMark| {
+            element
+                .id
+                .and_then(|id| self.pin_diagnostics.get(&(id, pin.name.clone())))
+        };
         for pin in inputs {
             let y = pin_y(pin);
             self.painter.line_segment(
                 [pos2(rect.left(), y), pos2(frame.left(), y)],
                 self.stroke(element.power_in),
             );
-            self.painter.text(
-                pos2(frame.left() + 3.0 * self.zoom, y),
+            // An edge is a small letter inside the box at the pin, the name moves past it.
+            let mut name_x = frame.left() + 3.0 * self.zoom;
+            if pin.edge != Edge::None {
+                self.edge_letter(pin.edge, pos2(name_x + 3.0 * self.zoom, y));
+                name_x += 9.0 * self.zoom;
+            }
+            let name = self.painter.text(
+                pos2(name_x, y),
                 Align2::LEFT_CENTER,
                 &pin.name,
-                self.font(10.0),
+                self.mono(PIN_FONT_PX),
                 self.line,
             );
             if pin.negated {
                 self.negation_circle(pos2(frame.left() - 4.0 * self.zoom, y));
             }
-            self.edge_letter(
-                pin.edge,
-                pos2(frame.left() - 4.0 * self.zoom, y - 9.0 * self.zoom),
-            );
+            if let Some(severity) = pin_severity(pin) {
+                self.pin_mark(pos2(rect.left(), y), name, *severity);
+            }
         }
         let own = element.id.map_or(Power::None, Power::After);
         for pin in outputs {
@@ -320,15 +369,18 @@ impl PaintContext<'_> {
                 [pos2(frame.right(), y), pos2(rect.right(), y)],
                 self.stroke(own),
             );
-            self.painter.text(
+            let name = self.painter.text(
                 pos2(frame.right() - 3.0 * self.zoom, y),
                 Align2::RIGHT_CENTER,
                 &pin.name,
-                self.font(10.0),
+                self.mono(PIN_FONT_PX),
                 self.line,
             );
             if pin.negated {
                 self.negation_circle(pos2(frame.right() + 4.0 * self.zoom, y));
+            }
+            if let Some(severity) = pin_severity(pin) {
+                self.pin_mark(pos2(rect.right(), y), name, *severity);
             }
             if let (Some(online), Some(id)) = (self.online, element.id)
                 && let Some(value) = online.values.get(&(id, Some(pin.name.clone())))
@@ -344,7 +396,34 @@ impl PaintContext<'_> {
         }
     }
 
-    /// The operand above a contact or coil, shortened to its cell, with its online value.
+    /// A diagnostic on a pin: its lead drawn thick in the severity's colour and its name
+    /// underlined, so the finding reads at the pin and not only at the box.
+    fn pin_mark(&self, lead_end: Pos2, name: Rect, severity: Severity) {
+        let color = self.severity_color(severity);
+        let stroke = Stroke::new(3.0 * self.zoom, color);
+        let lead_start = pos2(
+            if lead_end.x < name.left() {
+                name.left() - 3.0 * self.zoom
+            } else {
+                name.right() + 3.0 * self.zoom
+            },
+            lead_end.y,
+        );
+        self.painter.line_segment([lead_end, lead_start], stroke);
+        self.painter.circle_filled(lead_end, 4.0 * self.zoom, color);
+        if name.width() > 0.0 {
+            self.painter.line_segment(
+                [
+                    name.left_bottom() + vec2(0.0, 1.0 * self.zoom),
+                    name.right_bottom() + vec2(0.0, 1.0 * self.zoom),
+                ],
+                Stroke::new(1.5 * self.zoom, color),
+            );
+        }
+    }
+
+    /// The operand above a contact or coil, shortened past the longest shown, with its online
+    /// value.
     fn operand(&self, text: &str, element: &PlacedElement, rect: Rect) {
         let shown = if text.is_empty() {
             self.placeholder
@@ -356,13 +435,11 @@ impl PaintContext<'_> {
         } else {
             self.line
         };
-        let max_chars = ((rect.width() / (6.5 * self.zoom)) as usize).max(3);
-        let shown = elide(shown, max_chars);
         self.painter.text(
             pos2(rect.center().x, rect.top() + 1.0 * self.zoom),
             Align2::CENTER_TOP,
-            shown,
-            self.font(11.0),
+            shortened(shown).0,
+            self.mono(OPERAND_FONT_PX),
             color,
         );
         if let (Some(online), Some(id)) = (self.online, element.id)
@@ -377,14 +454,13 @@ impl PaintContext<'_> {
         }
     }
 
-    /// A text at `at`, shortened to `width` points.
-    fn text_at(&self, text: &str, at: Pos2, align: Align2, width: f32) {
-        let max_chars = ((width / (6.5 * self.zoom)) as usize).max(3);
+    /// A text at `at`, shortened past the longest shown.
+    fn text_at(&self, text: &str, at: Pos2, align: Align2) {
         self.painter.text(
             at,
             align,
-            elide(text, max_chars),
-            self.font(11.0),
+            shortened(text).0,
+            self.mono(OPERAND_FONT_PX),
             self.line,
         );
     }
@@ -401,12 +477,11 @@ impl PaintContext<'_> {
         } else {
             self.line
         };
-        let max_chars = ((frame.width() / (6.5 * self.zoom)) as usize).max(3);
         self.painter.text(
-            pos2(frame.right() - 2.0 * self.zoom, frame.center().y),
+            pos2(frame.right(), frame.center().y),
             Align2::RIGHT_CENTER,
-            elide(shown, max_chars),
-            self.font(11.0),
+            shortened(shown).0,
+            self.mono(OPERAND_FONT_PX),
             color,
         );
         if let (Some(online), Some(id)) = (self.online, element.id)
@@ -462,7 +537,7 @@ impl PaintContext<'_> {
             center,
             Align2::CENTER_CENTER,
             letter,
-            self.font(10.0),
+            self.mono(9.0),
             self.line,
         );
     }
@@ -483,16 +558,5 @@ impl PaintContext<'_> {
             self.font(11.0),
             self.line,
         );
-    }
-}
-
-/// `text` cut to `max_chars` characters with an ellipsis.
-fn elide(text: &str, max_chars: usize) -> String {
-    if text.chars().count() <= max_chars {
-        text.to_owned()
-    } else {
-        let mut short: String = text.chars().take(max_chars.saturating_sub(1)).collect();
-        short.push('…');
-        short
     }
 }

@@ -209,3 +209,30 @@ fn an_empty_network_offers_its_rung_and_outputs_for_insertion() {
         ]
     );
 }
+
+#[test]
+fn a_long_operand_widens_its_contact_and_a_long_coil_stays_at_the_right_rail() {
+    let long = "conveyor_infeed_photo_eye";
+    let network = Network {
+        rung: vec![contact(1, long), contact(2, "b")],
+        outputs: vec![coil(3, "belt_running_and_ready_to_feed")],
+        ..Network::default()
+    };
+    let layout = ld_layout(&network, 0);
+    let rect_of = |id: u32| {
+        layout
+            .element(ElementId(id))
+            .map(|element| element.rect)
+            .unwrap_or(Rect::NOTHING)
+    };
+    let wide = operand_cells(long, 1.0);
+    assert!(wide > 1.0);
+    assert_eq!(
+        rect_of(1),
+        Rect::from_min_size(pos2(0.0, 0.0), vec2(wide, 1.0))
+    );
+    assert_eq!(rect_of(2).left(), wide);
+    // The coil is as wide as its variable and ends at the right rail.
+    assert!(rect_of(3).width() > 1.0);
+    assert_eq!(rect_of(3).right(), layout.size.x);
+}
