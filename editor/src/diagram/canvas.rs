@@ -10,7 +10,6 @@ use project_model::{Anchor, ElementRef, HeaderField};
 use super::editor::{DiagramEditor, FrameResult, HEADER_HEIGHT_PX, LEFT_MARGIN_PX, ZOOM_RANGE};
 use super::entry::EntryTarget;
 use super::measure::shortened;
-use super::paint::CELL_SIZE_PX;
 use super::placed::{InsertTarget, Shape};
 use super::toolbox::{ToolboxBlock, ToolboxItem};
 use super::types::DiagramServices;
@@ -131,8 +130,8 @@ impl DiagramEditor {
         }
         let origin = self.network_origin_px(index);
         let cell = pos2(
-            (pos.x - origin.x) / CELL_SIZE_PX.x,
-            (pos.y - origin.y) / CELL_SIZE_PX.y,
+            (pos.x - origin.x) / self.cell_px().x,
+            (pos.y - origin.y) / self.cell_px().y,
         );
         let Some(element) = self.layouts[index].element_at(cell) else {
             return Hit::Network(index);
@@ -321,8 +320,8 @@ impl DiagramEditor {
                     continue;
                 }
                 let rect = Rect::from_min_max(
-                    origin + element.rect.min.to_vec2() * CELL_SIZE_PX,
-                    origin + element.rect.max.to_vec2() * CELL_SIZE_PX,
+                    origin + element.rect.min.to_vec2() * self.cell_px(),
+                    origin + element.rect.max.to_vec2() * self.cell_px(),
                 );
                 if band.intersects(rect) && !self.selection.elements.contains(&id) {
                     self.selection.elements.push(id);
@@ -334,11 +333,11 @@ impl DiagramEditor {
 
     /// The nearest insertion point to `pos` (content points at zoom 1) in the networks there.
     pub(super) fn drop_target(&self, pos: Pos2) -> Option<(usize, InsertTarget)> {
-        let range = self.networks_between(pos.y - CELL_SIZE_PX.y, pos.y + CELL_SIZE_PX.y);
+        let range = self.networks_between(pos.y - self.cell_px().y, pos.y + self.cell_px().y);
         range
             .filter_map(|index| {
                 let origin = self.network_origin_px(index);
-                let cell = ((pos - origin) / CELL_SIZE_PX).to_pos2();
+                let cell = ((pos - origin) / self.cell_px()).to_pos2();
                 self.layouts[index]
                     .insert_point_near(cell, DROP_RADIUS_CELLS)
                     .map(|point| (index, point.target, point.pos.distance(cell)))
@@ -359,8 +358,8 @@ impl DiagramEditor {
             .and_then(|id| self.layouts.get(index)?.element(*id));
         Some(match element {
             Some(element) => Rect::from_min_max(
-                origin + element.rect.min.to_vec2() * CELL_SIZE_PX,
-                origin + element.rect.max.to_vec2() * CELL_SIZE_PX,
+                origin + element.rect.min.to_vec2() * self.cell_px(),
+                origin + element.rect.max.to_vec2() * self.cell_px(),
             ),
             None => {
                 Rect::from_min_size(pos2(0.0, top), vec2(LEFT_MARGIN_PX * 4.0, HEADER_HEIGHT_PX))
@@ -374,8 +373,8 @@ impl DiagramEditor {
         let in_network = |index: usize, cells: Rect| {
             let origin = self.network_origin_px(index);
             Rect::from_min_max(
-                origin + cells.min.to_vec2() * CELL_SIZE_PX,
-                origin + cells.max.to_vec2() * CELL_SIZE_PX,
+                origin + cells.min.to_vec2() * self.cell_px(),
+                origin + cells.max.to_vec2() * self.cell_px(),
             )
         };
         match &entry.target {
@@ -423,7 +422,7 @@ impl DiagramEditor {
                     };
                 Some(Rect::from_min_size(
                     pos2(LEFT_MARGIN_PX, top),
-                    vec2(CELL_SIZE_PX.x * 4.0, 20.0),
+                    vec2(self.cell_px().x * 4.0, 20.0),
                 ))
             }
         }

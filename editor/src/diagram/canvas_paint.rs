@@ -4,7 +4,7 @@
 use egui::{Align2, FontId, Pos2, Rect, Response, Stroke, Ui, vec2};
 
 use super::editor::{DiagramEditor, HEADER_HEIGHT_PX, LEFT_MARGIN_PX, NETWORK_GAP_PX};
-use super::paint::{CELL_SIZE_PX, PaintContext};
+use super::paint::PaintContext;
 use super::toolbox::{ToolboxBlock, ToolboxItem};
 use crate::EditorPalette;
 
@@ -26,6 +26,7 @@ impl DiagramEditor {
             line: visuals.text_color(),
             weak: visuals.weak_text_color(),
             zoom: self.zoom,
+            cell: self.cell_px(),
             selected: &selected,
             diagnostics: &self.marks,
             pin_diagnostics: &self.pin_marks,
@@ -80,7 +81,10 @@ impl DiagramEditor {
         for row in 0..=size.y as usize {
             for column in 0..=size.x as usize {
                 let at = origin
-                    + vec2(column as f32 * CELL_SIZE_PX.x, row as f32 * CELL_SIZE_PX.y) * self.zoom;
+                    + vec2(
+                        column as f32 * self.cell_px().x,
+                        row as f32 * self.cell_px().y,
+                    ) * self.zoom;
                 painter.circle_filled(at, radius, color);
             }
         }
@@ -96,13 +100,14 @@ impl DiagramEditor {
         let network = &self.networks[index];
         let zoom = self.zoom;
         let selected = self.selection.network == Some(index) && self.selection.elements.is_empty();
-        let block_height =
-            (HEADER_HEIGHT_PX + self.layouts[index].size.y * CELL_SIZE_PX.y + NETWORK_GAP_PX / 2.0)
-                * zoom;
+        let block_height = (HEADER_HEIGHT_PX
+            + self.layouts[index].size.y * self.cell_px().y
+            + NETWORK_GAP_PX / 2.0)
+            * zoom;
         let block = Rect::from_min_size(
             top,
             vec2(
-                (LEFT_MARGIN_PX + self.layouts[index].size.x * CELL_SIZE_PX.x + 8.0) * zoom,
+                (LEFT_MARGIN_PX + self.layouts[index].size.x * self.cell_px().x + 8.0) * zoom,
                 block_height,
             ),
         );

@@ -10,7 +10,7 @@ use super::commands::{DiagramCommand, DiagramSelection};
 use super::entry::Entry;
 use super::fbd_layout::fbd_layout;
 use super::ld_layout::ld_layout;
-use super::paint::CELL_SIZE_PX;
+use super::paint::cell_size_px;
 use super::placed::NetworkLayout;
 use super::texts::DiagramTexts;
 use super::types::{
@@ -269,12 +269,17 @@ impl DiagramEditor {
             .position(|network| network.element(id).is_some())?;
         let cells = self.layouts.get(index)?.element(id)?.rect;
         let origin = self.network_origin_px(index);
-        let min = origin + cells.min.to_vec2() * CELL_SIZE_PX;
-        let max = origin + cells.max.to_vec2() * CELL_SIZE_PX;
+        let min = origin + cells.min.to_vec2() * self.cell_px();
+        let max = origin + cells.max.to_vec2() * self.cell_px();
         Some(Rect::from_min_max(
             self.last_origin + min.to_vec2() * self.zoom,
             self.last_origin + max.to_vec2() * self.zoom,
         ))
+    }
+
+    /// The size of a grid cell of the current view at zoom 1, in points.
+    pub(super) fn cell_px(&self) -> Vec2 {
+        cell_size_px(self.view)
     }
 
     /// The zoom factor (1 is 100 %).
@@ -421,13 +426,13 @@ impl DiagramEditor {
         self.tops_px.clear();
         for layout in &self.layouts {
             self.tops_px.push(top);
-            top += HEADER_HEIGHT_PX + layout.size.y * CELL_SIZE_PX.y + NETWORK_GAP_PX;
-            width = width.max(layout.size.x * CELL_SIZE_PX.x);
+            top += HEADER_HEIGHT_PX + layout.size.y * self.cell_px().y + NETWORK_GAP_PX;
+            width = width.max(layout.size.x * self.cell_px().x);
         }
         self.tops_px.push(top);
         self.content_px = vec2(
-            LEFT_MARGIN_PX + width + 2.0 * CELL_SIZE_PX.x,
-            top + CELL_SIZE_PX.y,
+            LEFT_MARGIN_PX + width + 2.0 * self.cell_px().x,
+            top + self.cell_px().y,
         );
     }
 

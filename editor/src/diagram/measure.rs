@@ -46,15 +46,17 @@ pub(super) fn box_cells<'a>(
     min_cells: f32,
 ) -> f32 {
     let pin_px = |name: &str| name.chars().count() as f32 * PIN_FONT_PX * ADVANCE_PER_FONT_PX;
-    let widest = |names: &mut dyn Iterator<Item = &'a str>| {
-        names.map(&pin_px).fold(0.0_f32, f32::max)
-    };
+    let widest =
+        |names: &mut dyn Iterator<Item = &'a str>| names.map(&pin_px).fold(0.0_f32, f32::max);
     let (mut inputs, mut outputs) = (inputs, outputs);
-    let pins_px = widest(&mut inputs) + PIN_GAP_PX + widest(&mut outputs);
-    let frame_px = pins_px
-        .max(operand_width_px(title))
-        .max(operand_width_px(instance))
-        + 2.0 * TEXT_PADDING_PX;
+    let (inputs_px, outputs_px) = (widest(&mut inputs), widest(&mut outputs));
+    // The title shares the first row with the first pins' names, between them.
+    let title_row_px = if operand_width_px(title) > 0.0 {
+        inputs_px + operand_width_px(title) + outputs_px + 2.0 * PIN_GAP_PX
+    } else {
+        inputs_px + PIN_GAP_PX + outputs_px
+    };
+    let frame_px = title_row_px.max(operand_width_px(instance)) + 2.0 * TEXT_PADDING_PX;
     ((frame_px + 2.0 * BOX_LEAD_PX) / CELL_SIZE_PX.x).max(min_cells)
 }
 

@@ -8,11 +8,26 @@ use project_model::{CoilKind, Edge, ElementId};
 
 use super::measure::{BOX_LEAD_PX, OPERAND_FONT_PX, PIN_FONT_PX, shortened};
 use super::placed::{NetworkLayout, PinMark, PlacedElement, Power, Shape};
-use super::types::DiagramOnline;
+use super::types::{DiagramOnline, DiagramView};
 use crate::{EditorPalette, Severity};
 
-/// The size of a grid cell at zoom 1, in points.
+/// The size of a grid cell of the LD view at zoom 1, in points: a contact with its operand
+/// above it. Cells are as wide in both views, so the layouts measure texts the same way.
 pub(super) const CELL_SIZE_PX: egui::Vec2 = egui::Vec2::new(84.0, 44.0);
+/// The height of a row of the FBD view at zoom 1, in points: one pin with its name, the pitch
+/// of CODESYS's FBD boxes, since no operand stands above a line there.
+const FBD_ROW_HEIGHT_PX: f32 = 30.0;
+
+/// The size of a grid cell of `view` at zoom 1, in points.
+pub(super) fn cell_size_px(view: DiagramView) -> egui::Vec2 {
+    match view {
+        DiagramView::Ladder => CELL_SIZE_PX,
+        DiagramView::FunctionBlock => vec2(CELL_SIZE_PX.x, FBD_ROW_HEIGHT_PX),
+    }
+}
+
+/// The height of a variable's frame around its text, in points at zoom 1.
+const TEXT_FRAME_HEIGHT_PX: f32 = 20.0;
 
 /// What the painter needs besides the layout; borrowed for one frame.
 pub(super) struct PaintContext<'a> {
@@ -26,6 +41,8 @@ pub(super) struct PaintContext<'a> {
     pub weak: Color32,
     /// Points per point at zoom 1.
     pub zoom: f32,
+    /// The size of a grid cell at zoom 1, in points.
+    pub cell: egui::Vec2,
     /// The selected elements.
     pub selected: &'a HashSet<ElementId>,
     /// The worst severity of the diagnostics on each element.
@@ -49,7 +66,7 @@ impl PaintContext<'_> {
 
     /// The screen position of a grid position of a network drawn from `origin`.
     pub fn screen_pos(&self, origin: Pos2, pos: Pos2) -> Pos2 {
-        origin + vec2(pos.x * CELL_SIZE_PX.x, pos.y * CELL_SIZE_PX.y) * self.zoom
+        origin + vec2(pos.x * self.cell.x, pos.y * self.cell.y) * self.zoom
     }
 
     fn font(&self, size_px: f32) -> FontId {
@@ -131,7 +148,7 @@ impl PaintContext<'_> {
 
     fn element(&self, element: &PlacedElement, origin: Pos2) {
         let rect = self.screen_rect(origin, element.rect);
-        let mid_y = rect.top() + rect.height().min(CELL_SIZE_PX.y * self.zoom) * 0.5;
+        let mid_y = rect.top() + rect.height().min(self.cell.y * self.zoom) * 0.5;
         let own = element.id.map_or(Power::None, Power::After);
         match &element.shape {
             Shape::Contact {
@@ -186,9 +203,13 @@ impl PaintContext<'_> {
                 // The line comes in from the left past the room of a set, reset or edge
                 // letter, which sits on it, into the variable's frame.
                 let letter_room = 17.0 * self.zoom;
-                let frame =
-                    Rect::from_min_max(pos2(rect.left() + letter_room, rect.top()), rect.max)
-                        .shrink2(vec2(0.0, 11.0) * self.zoom);
+                let frame = Rect::from_min_max(
+                    pos2(
+                        rect.left() + letter_room,
+                        mid_y - TEXT_FRAME_HEIGHT_PX / 2.0 * self.zoom,
+                    ),
+                    pos2(rect.right(), mid_y + TEXT_FRAME_HEIGHT_PX / 2.0 * self.zoom),
+                );
                 self.painter.line_segment(
                     [pos2(rect.left(), mid_y), pos2(frame.left(), mid_y)],
                     self.stroke(element.power_in),
@@ -210,7 +231,13 @@ impl PaintContext<'_> {
                 negated,
                 edge,
             } => {
-                let frame = rect.shrink2(vec2(4.0, 8.0) * self.zoom);
+                let frame = Rect::from_center_size(
+                    pos2(rect.center().x, mid_y),
+                    vec2(
+                        rect.width() - 8.0 * self.zoom,
+                        TEXT_FRAME_HEIGHT_PX * self.zoom,
+                    ),
+                );
                 if element.id.is_none() {
                     // An output's assignment: the line comes from the pin on the left.
                     self.painter.line_segment(
@@ -331,11 +358,10 @@ impl PaintContext<'_> {
             );
         }
         let pin_y = |pin: &PinMark| self.screen_pos(origin, pos2(0.0, pin.row + 0.5)).y;
-        let pin_severity = |pin: &PinMark| {
-            element
-                .id
-                .and_then(|id| self.pin_diagnostics.get(&(id, pin.name.clone())))
-        };
+        // Only a box with a finding looks its pins up, so painting allocates no keys.
+        let marked = element.id.filter(|id| self.diagnostics.contains_key(id));
+        let pin_severity =
+            |pin: &PinMark| marked.and_then(|id| self.pin_diagnostics.get(&(id, pin.name.clone())));
         for pin in inputs {
             let y = pin_y(pin);
             self.painter.line_segment(
