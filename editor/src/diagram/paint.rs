@@ -313,9 +313,14 @@ impl PaintContext<'_> {
                 Stroke::new(2.0 * self.zoom, color),
                 StrokeKind::Inside,
             );
-            // A filled badge with "!" at the top-left corner, legible at any zoom above 50 %.
-            let corner = rect.left_top() + vec2(7.0, 7.0) * self.zoom;
-            self.painter.circle_filled(corner, 6.5 * self.zoom, color);
+            // A filled badge with "!" on a top corner: a box's left one, clear of its pins'
+            // lines, the right one of other elements, clear of a set or reset letter.
+            let corner = if matches!(element.shape, Shape::Box { .. }) {
+                rect.left_top() + vec2(5.0, 5.0) * self.zoom
+            } else {
+                rect.right_top() + vec2(-5.0, 5.0) * self.zoom
+            };
+            self.painter.circle_filled(corner, 5.5 * self.zoom, color);
             self.painter.text(
                 corner,
                 Align2::CENTER_CENTER,
@@ -436,7 +441,6 @@ impl PaintContext<'_> {
             lead_end.y,
         );
         self.painter.line_segment([lead_end, lead_start], stroke);
-        self.painter.circle_filled(lead_end, 4.0 * self.zoom, color);
         if name.width() > 0.0 {
             self.painter.line_segment(
                 [
