@@ -6,6 +6,7 @@ use egui::{Align2, FontId, Pos2, Rect, Response, Stroke, Ui, vec2};
 use super::editor::{DiagramEditor, HEADER_HEIGHT_PX, LEFT_MARGIN_PX, NETWORK_GAP_PX};
 use super::paint::PaintContext;
 use super::toolbox::{ToolboxBlock, ToolboxItem};
+use super::types::DiagramView;
 use crate::EditorPalette;
 
 impl DiagramEditor {
@@ -51,6 +52,17 @@ impl DiagramEditor {
             let network_origin = origin + self.network_origin_px(index).to_vec2() * self.zoom;
             self.paint_grid(&painter, network_origin, index, context.weak);
             context.network(&self.layouts[index], network_origin);
+            if self.layouts[index].elements.is_empty() && self.view == DiagramView::FunctionBlock {
+                // An empty FBD network has no rung line to show where it is: a placeholder
+                // marks the place to click and insert, as CODESYS shows "???".
+                painter.text(
+                    network_origin + vec2(8.0, self.cell_px().y / 2.0) * self.zoom,
+                    Align2::LEFT_CENTER,
+                    &self.texts.placeholder,
+                    FontId::monospace(11.0 * self.zoom),
+                    context.weak,
+                );
+            }
             if dragging {
                 let mark = highlighted
                     .filter(|(network, _)| *network == index)

@@ -23,10 +23,26 @@ pub(super) const BOX_LEAD_PX: f32 = 10.0;
 /// The space between an input pin's name and an output pin's name on one row of a box.
 const PIN_GAP_PX: f32 = 12.0;
 
+/// The advance of a character outside ASCII (a CJK fallback glyph, about one em wide), in
+/// monospace advances.
+const WIDE_CHAR_ADVANCES: f32 = 1.7;
+
+/// The width of `text` in monospace advances: one per ASCII character, more for the wide
+/// glyphs of the CJK fallback font a Chinese name is drawn with.
+fn advances(text: impl Iterator<Item = char>) -> f32 {
+    text.map(|c| {
+        if c.is_ascii() {
+            1.0
+        } else {
+            WIDE_CHAR_ADVANCES
+        }
+    })
+    .sum()
+}
+
 /// The width of `text` in the operand font, in points, once shortened.
 pub(super) fn operand_width_px(text: &str) -> f32 {
-    let chars = text.chars().count().min(MAX_OPERAND_CHARS);
-    chars as f32 * OPERAND_FONT_PX * ADVANCE_PER_FONT_PX
+    advances(text.chars().take(MAX_OPERAND_CHARS)) * OPERAND_FONT_PX * ADVANCE_PER_FONT_PX
 }
 
 /// The width in cells of an operand's cell: its text with padding, at least `min_cells`.
@@ -45,7 +61,7 @@ pub(super) fn box_cells<'a>(
     outputs: impl Iterator<Item = &'a str>,
     min_cells: f32,
 ) -> f32 {
-    let pin_px = |name: &str| name.chars().count() as f32 * PIN_FONT_PX * ADVANCE_PER_FONT_PX;
+    let pin_px = |name: &str| advances(name.chars()) * PIN_FONT_PX * ADVANCE_PER_FONT_PX;
     let widest =
         |names: &mut dyn Iterator<Item = &'a str>| names.map(&pin_px).fold(0.0_f32, f32::max);
     let (mut inputs, mut outputs) = (inputs, outputs);
@@ -86,6 +102,11 @@ mod tests {
         assert!(operand_cells(&"x".repeat(21), 1.0) > twenty);
         let longest = operand_cells(&"x".repeat(MAX_OPERAND_CHARS), 1.0);
         assert_eq!(operand_cells(&"x".repeat(60), 1.0), longest);
+    }
+
+    #[test]
+    fn a_chinese_name_is_measured_wider_than_as_many_latin_letters() {
+        assert!(operand_width_px("电机启动") > operand_width_px("abcd"));
     }
 
     #[test]
