@@ -34,8 +34,15 @@ impl DiagramEditor {
             online: self.online.as_ref(),
             placeholder: &self.texts.placeholder,
         };
-        let dragging = response.dnd_hover_payload::<ToolboxItem>().is_some()
-            || response.dnd_hover_payload::<ToolboxBlock>().is_some();
+        let dragged_name = match (
+            response.dnd_hover_payload::<ToolboxItem>(),
+            response.dnd_hover_payload::<ToolboxBlock>(),
+        ) {
+            (Some(item), _) => Some(self.item_name(*item).to_owned()),
+            (None, Some(block)) => Some(block.0.to_owned()),
+            (None, None) => None,
+        };
+        let dragging = dragged_name.is_some();
         let highlighted = if dragging {
             response
                 .hover_pos()
@@ -77,6 +84,19 @@ impl DiagramEditor {
             }
         }
         self.visible = visible;
+        if let (Some(name), Some(pointer)) = (dragged_name, response.hover_pos()) {
+            // The dragged item's name follows the pointer, above everything, as a label.
+            let layer = egui::LayerId::new(egui::Order::Tooltip, response.id.with("dragged"));
+            let ghost = ui.ctx().layer_painter(layer);
+            let galley = ghost.layout_no_wrap(name, FontId::proportional(12.0), context.line);
+            let text_rect = Rect::from_min_size(pointer + vec2(14.0, 10.0), galley.size());
+            ghost.rect_filled(
+                text_rect.expand(3.0),
+                3.0,
+                ui.visuals().widgets.inactive.weak_bg_fill,
+            );
+            ghost.galley(text_rect.min, galley, context.line);
+        }
     }
 
     /// Faint dots at the cell corners of network `index`'s drawing, so positions read as a grid.

@@ -194,7 +194,7 @@ impl DiagramEditor {
     }
 
     /// The toolbox's name of `item`, in the user's language.
-    fn item_name(&self, item: ToolboxItem) -> &str {
+    pub(super) fn item_name(&self, item: ToolboxItem) -> &str {
         match item {
             ToolboxItem::Contact => &self.texts.contact,
             ToolboxItem::NegatedContact => &self.texts.negated_contact,
