@@ -217,3 +217,60 @@ fn a_long_operand_widens_its_cell_and_an_edge_is_marked_at_the_pin() {
         })
     ));
 }
+
+#[test]
+fn an_output_branch_ands_the_fan_out_with_its_operand_and_assigns_after_it() {
+    // q1 := a; q2 := a AND b (an output branch with b in series).
+    let network = Network {
+        rung: vec![contact(1, "a", false)],
+        outputs: vec![
+            NetworkOutput::Coil(Coil {
+                id: ElementId(2),
+                variable: "q1".into(),
+                ..Coil::default()
+            }),
+            NetworkOutput::Branch {
+                id: ElementId(3),
+                rung: vec![contact(4, "b", false)],
+                outputs: vec![NetworkOutput::Coil(Coil {
+                    id: ElementId(5),
+                    variable: "q2".into(),
+                    ..Coil::default()
+                })],
+            },
+        ],
+        ..Network::default()
+    };
+    let layout = fbd_layout(&network, 0);
+    let rect_of = |id: u32| {
+        layout
+            .element(ElementId(id))
+            .map(|element| element.rect)
+            .unwrap_or(Rect::NOTHING)
+    };
+    let and = boxes(&layout)
+        .into_iter()
+        .find(|(_, name, _)| name == "AND")
+        .map(|(_, _, rect)| rect)
+        .unwrap_or(Rect::NOTHING);
+    // The branch's AND box stands below q1, fed by the fan-out and by b, and q2 follows it.
+    assert_eq!(rect_of(2).top(), 0.0);
+    assert!(
+        and.top() >= rect_of(2).bottom(),
+        "{and:?} below {:?}",
+        rect_of(2)
+    );
+    assert_eq!(rect_of(4).right(), and.left());
+    assert_eq!(rect_of(5).left(), and.right() + LEAD_CELLS);
+    assert!((layout.size.x - rect_of(5).right()).abs() < 1e-4);
+    // Nothing overlaps.
+    let placed: Vec<Rect> = layout.elements.iter().map(|element| element.rect).collect();
+    for (index, first) in placed.iter().enumerate() {
+        for second in &placed[index + 1..] {
+            assert!(
+                !first.intersects(*second) || first.intersect(*second).area() < 1e-4,
+                "{first:?} overlaps {second:?}"
+            );
+        }
+    }
+}
