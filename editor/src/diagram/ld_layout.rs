@@ -18,8 +18,9 @@ use super::placed::{
 
 /// The narrowest network, in cells, so an empty rung still has a line to click and drop on.
 const MIN_WIDTH_CELLS: f32 = 4.0;
-/// The narrowest box, in cells; a box grows beyond it with its title and pin names.
-const MIN_BOX_CELLS: f32 = 2.0;
+/// The narrowest box, in cells (126 points, the width of a CODESYS LD timer box); a box grows
+/// beyond it with its title and pin names.
+const MIN_BOX_CELLS: f32 = 1.5;
 
 /// Lays out `network`, the body's network number `network_index` (counted from 0), as a rung.
 pub fn ld_layout(network: &Network, network_index: usize) -> NetworkLayout {

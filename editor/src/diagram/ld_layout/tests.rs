@@ -154,7 +154,7 @@ fn a_box_has_its_operands_left_of_its_pins_and_several_coils_fan_out() {
         ..Network::default()
     };
     let layout = ld_layout(&network, 0);
-    assert_at(&layout, 2, (2.0, 0.0), (2.0, 2.0));
+    assert_at(&layout, 2, (2.0, 0.0), (1.5, 2.0));
     assert_at(&layout, 3, (1.0, 1.0), (1.0, 1.0));
     assert!(matches!(
         &layout.element(ElementId(3)).map(|element| &element.shape),
@@ -179,12 +179,12 @@ fn a_box_has_its_operands_left_of_its_pins_and_several_coils_fan_out() {
         layout
             .elements
             .iter()
-            .any(|element| element.rect.min == pos2(4.0, 1.0)
+            .any(|element| element.rect.min == pos2(3.5, 1.0)
                 && matches!(&element.shape, Shape::Variable { text, .. } if text == "elapsed"))
     );
-    assert_eq!(layout.size, vec2(7.0, 2.0));
-    assert_at(&layout, 4, (6.0, 0.0), (1.0, 1.0));
-    assert_at(&layout, 5, (6.0, 1.0), (1.0, 1.0));
+    assert_eq!(layout.size, vec2(6.5, 2.0));
+    assert_at(&layout, 4, (5.5, 0.0), (1.0, 1.0));
+    assert_at(&layout, 5, (5.5, 1.0), (1.0, 1.0));
 }
 
 #[test]
