@@ -32,8 +32,8 @@ pub use diagram::{
     BlockSignature, DiagramChange, DiagramCommand, DiagramEditor, DiagramOnline, DiagramOutput,
     DiagramRefusal, DiagramSelection, DiagramServices, DiagramTexts, DiagramView,
     ElementDiagnostic, InsertPoint, InsertTarget, InstanceDeclaration, NetworkLayout, OnlineValue,
-    PinMark, PlacedElement, Power, PreparedOperand, Shape, ToolboxItem, Wire, fbd_layout,
-    ld_layout,
+    PinMark, PlacedElement, Power, PreparedOperand, Shape, ToolboxBlock, ToolboxItem, Wire,
+    fbd_layout, ld_layout,
 };
 pub use io_mapping::{IoMappingOutput, io_mapping_ui};
 pub use palette::{EditorPalette, SyntaxColors};

@@ -244,6 +244,23 @@ fn the_diagram_editor_in_ld_and_fbd_offline_and_online() {
     ] {
         let mut editor = DiagramEditor::new(&body, view);
         editor.select(Some(0), vec![ElementId(3)]);
+        if !online {
+            // A finding on a box's pin and one on a coil, as the checker reports them.
+            let finding = |element: u32, pin: Option<&str>, severity: editor::Severity| {
+                editor::ElementDiagnostic {
+                    network: 0,
+                    element: Some(ElementId(element)),
+                    pin: pin.map(str::to_owned),
+                    severity,
+                    code: "E0000".into(),
+                    message: String::new(),
+                }
+            };
+            editor.set_diagnostics(vec![
+                finding(6, Some("PT"), editor::Severity::Error),
+                finding(9, None, editor::Severity::Warning),
+            ]);
+        }
         if online {
             let mut values = DiagramOnline::default();
             for id in [1, 2, 4, 5, 6] {

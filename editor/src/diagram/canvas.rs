@@ -9,9 +9,9 @@ use project_model::{Anchor, ElementRef, HeaderField};
 
 use super::editor::{DiagramEditor, FrameResult, HEADER_HEIGHT_PX, LEFT_MARGIN_PX, ZOOM_RANGE};
 use super::entry::EntryTarget;
-use super::paint::CELL_SIZE_PX;
+use super::measure::shortened;
 use super::placed::{InsertTarget, Shape};
-use super::toolbox::ToolboxItem;
+use super::toolbox::{ToolboxBlock, ToolboxItem};
 use super::types::DiagramServices;
 use crate::EditorPalette;
 
@@ -70,7 +70,7 @@ impl DiagramEditor {
             let events = ui.input(|input| input.filtered_events(&filter));
             self.handle_events(ui.ctx(), &events, frame);
         }
-        self.pointer_ui(ui, &response, origin, frame);
+        self.pointer_ui(ui, &response, origin, services, frame);
         self.paint_visible(ui, origin, viewport, &response);
         if self.scroll_to_selection {
             self.scroll_to_selection = false;
@@ -130,8 +130,8 @@ impl DiagramEditor {
         }
         let origin = self.network_origin_px(index);
         let cell = pos2(
-            (pos.x - origin.x) / CELL_SIZE_PX.x,
-            (pos.y - origin.y) / CELL_SIZE_PX.y,
+            (pos.x - origin.x) / self.cell_px().x,
+            (pos.y - origin.y) / self.cell_px().y,
         );
         let Some(element) = self.layouts[index].element_at(cell) else {
             return Hit::Network(index);
@@ -152,7 +152,14 @@ impl DiagramEditor {
         Hit::Element(index, id, pin)
     }
 
-    fn pointer_ui(&mut self, ui: &Ui, response: &Response, origin: Pos2, frame: &mut FrameResult) {
+    fn pointer_ui(
+        &mut self,
+        ui: &Ui,
+        response: &Response,
+        origin: Pos2,
+        services: &dyn DiagramServices,
+        frame: &mut FrameResult,
+    ) {
         let zoom = self.zoom;
         let to_content = |screen: Pos2| ((screen - origin) / zoom).to_pos2();
         if let Some(item) = response.dnd_release_payload::<ToolboxItem>()
@@ -160,6 +167,14 @@ impl DiagramEditor {
         {
             if let Some((_, target)) = self.drop_target(to_content(pointer)) {
                 self.drop_item(*item, target, frame);
+            }
+            return;
+        }
+        if let Some(block) = response.dnd_release_payload::<ToolboxBlock>()
+            && let Some(pointer) = response.hover_pos()
+        {
+            if let Some((_, target)) = self.drop_target(to_content(pointer)) {
+                self.insert_box(block.0, target, services, frame);
             }
             return;
         }
@@ -215,13 +230,27 @@ impl DiagramEditor {
             }
         }
         if let Some(pointer) = response.hover_pos()
-            && let Hit::Element(_, element, _) = self.hit(to_content(pointer))
+            && let Hit::Element(network, element, _) = self.hit(to_content(pointer))
         {
-            let messages: Vec<String> = self
-                .diagnostics
-                .iter()
-                .filter(|diagnostic| diagnostic.element == Some(element))
-                .map(|diagnostic| format!("{}: {}", diagnostic.code, diagnostic.message))
+            // A shortened operand shows in full first, then the findings on the element.
+            let full_text = self.layouts[network]
+                .element(element)
+                .and_then(|placed| placed.shape.text())
+                .filter(|text| shortened(text).1)
+                .map(str::to_owned);
+            let messages: Vec<String> = full_text
+                .into_iter()
+                .chain(
+                    self.diagnostics
+                        .iter()
+                        .filter(|diagnostic| diagnostic.element == Some(element))
+                        .map(|diagnostic| match &diagnostic.pin {
+                            Some(pin) => {
+                                format!("{} ({pin}): {}", diagnostic.code, diagnostic.message)
+                            }
+                            None => format!("{}: {}", diagnostic.code, diagnostic.message),
+                        }),
+                )
                 .collect();
             if !messages.is_empty() {
                 response.show_tooltip_text(messages.join("\n"));
@@ -291,8 +320,8 @@ impl DiagramEditor {
                     continue;
                 }
                 let rect = Rect::from_min_max(
-                    origin + element.rect.min.to_vec2() * CELL_SIZE_PX,
-                    origin + element.rect.max.to_vec2() * CELL_SIZE_PX,
+                    origin + element.rect.min.to_vec2() * self.cell_px(),
+                    origin + element.rect.max.to_vec2() * self.cell_px(),
                 );
                 if band.intersects(rect) && !self.selection.elements.contains(&id) {
                     self.selection.elements.push(id);
@@ -304,11 +333,11 @@ impl DiagramEditor {
 
     /// The nearest insertion point to `pos` (content points at zoom 1) in the networks there.
     pub(super) fn drop_target(&self, pos: Pos2) -> Option<(usize, InsertTarget)> {
-        let range = self.networks_between(pos.y - CELL_SIZE_PX.y, pos.y + CELL_SIZE_PX.y);
+        let range = self.networks_between(pos.y - self.cell_px().y, pos.y + self.cell_px().y);
         range
             .filter_map(|index| {
                 let origin = self.network_origin_px(index);
-                let cell = ((pos - origin) / CELL_SIZE_PX).to_pos2();
+                let cell = ((pos - origin) / self.cell_px()).to_pos2();
                 self.layouts[index]
                     .insert_point_near(cell, DROP_RADIUS_CELLS)
                     .map(|point| (index, point.target, point.pos.distance(cell)))
@@ -329,8 +358,8 @@ impl DiagramEditor {
             .and_then(|id| self.layouts.get(index)?.element(*id));
         Some(match element {
             Some(element) => Rect::from_min_max(
-                origin + element.rect.min.to_vec2() * CELL_SIZE_PX,
-                origin + element.rect.max.to_vec2() * CELL_SIZE_PX,
+                origin + element.rect.min.to_vec2() * self.cell_px(),
+                origin + element.rect.max.to_vec2() * self.cell_px(),
             ),
             None => {
                 Rect::from_min_size(pos2(0.0, top), vec2(LEFT_MARGIN_PX * 4.0, HEADER_HEIGHT_PX))
@@ -344,8 +373,8 @@ impl DiagramEditor {
         let in_network = |index: usize, cells: Rect| {
             let origin = self.network_origin_px(index);
             Rect::from_min_max(
-                origin + cells.min.to_vec2() * CELL_SIZE_PX,
-                origin + cells.max.to_vec2() * CELL_SIZE_PX,
+                origin + cells.min.to_vec2() * self.cell_px(),
+                origin + cells.max.to_vec2() * self.cell_px(),
             )
         };
         match &entry.target {
@@ -393,7 +422,7 @@ impl DiagramEditor {
                     };
                 Some(Rect::from_min_size(
                     pos2(LEFT_MARGIN_PX, top),
-                    vec2(CELL_SIZE_PX.x * 4.0, 20.0),
+                    vec2(self.cell_px().x * 4.0, 20.0),
                 ))
             }
         }

@@ -4,8 +4,9 @@
 use egui::{Align2, FontId, Pos2, Rect, Response, Stroke, Ui, vec2};
 
 use super::editor::{DiagramEditor, HEADER_HEIGHT_PX, LEFT_MARGIN_PX, NETWORK_GAP_PX};
-use super::paint::{CELL_SIZE_PX, PaintContext};
-use super::toolbox::ToolboxItem;
+use super::paint::PaintContext;
+use super::toolbox::{ToolboxBlock, ToolboxItem};
+use super::types::DiagramView;
 use crate::EditorPalette;
 
 impl DiagramEditor {
@@ -26,12 +27,22 @@ impl DiagramEditor {
             line: visuals.text_color(),
             weak: visuals.weak_text_color(),
             zoom: self.zoom,
+            cell: self.cell_px(),
             selected: &selected,
             diagnostics: &self.marks,
+            pin_diagnostics: &self.pin_marks,
             online: self.online.as_ref(),
             placeholder: &self.texts.placeholder,
         };
-        let dragging = response.dnd_hover_payload::<ToolboxItem>().is_some();
+        let dragged_name = match (
+            response.dnd_hover_payload::<ToolboxItem>(),
+            response.dnd_hover_payload::<ToolboxBlock>(),
+        ) {
+            (Some(item), _) => Some(self.item_name(*item).to_owned()),
+            (None, Some(block)) => Some(block.0.to_owned()),
+            (None, None) => None,
+        };
+        let dragging = dragged_name.is_some();
         let highlighted = if dragging {
             response
                 .hover_pos()
@@ -48,6 +59,17 @@ impl DiagramEditor {
             let network_origin = origin + self.network_origin_px(index).to_vec2() * self.zoom;
             self.paint_grid(&painter, network_origin, index, context.weak);
             context.network(&self.layouts[index], network_origin);
+            if self.layouts[index].elements.is_empty() && self.view == DiagramView::FunctionBlock {
+                // An empty FBD network has no rung line to show where it is: a placeholder
+                // marks the place to click and insert, as CODESYS shows "???".
+                painter.text(
+                    network_origin + vec2(8.0, self.cell_px().y / 2.0) * self.zoom,
+                    Align2::LEFT_CENTER,
+                    &self.texts.placeholder,
+                    FontId::monospace(11.0 * self.zoom),
+                    context.weak,
+                );
+            }
             if dragging {
                 let mark = highlighted
                     .filter(|(network, _)| *network == index)
@@ -62,6 +84,19 @@ impl DiagramEditor {
             }
         }
         self.visible = visible;
+        if let (Some(name), Some(pointer)) = (dragged_name, response.hover_pos()) {
+            // The dragged item's name follows the pointer, above everything, as a label.
+            let layer = egui::LayerId::new(egui::Order::Tooltip, response.id.with("dragged"));
+            let ghost = ui.ctx().layer_painter(layer);
+            let galley = ghost.layout_no_wrap(name, FontId::proportional(12.0), context.line);
+            let text_rect = Rect::from_min_size(pointer + vec2(14.0, 10.0), galley.size());
+            ghost.rect_filled(
+                text_rect.expand(3.0),
+                3.0,
+                ui.visuals().widgets.inactive.weak_bg_fill,
+            );
+            ghost.galley(text_rect.min, galley, context.line);
+        }
     }
 
     /// Faint dots at the cell corners of network `index`'s drawing, so positions read as a grid.
@@ -78,7 +113,10 @@ impl DiagramEditor {
         for row in 0..=size.y as usize {
             for column in 0..=size.x as usize {
                 let at = origin
-                    + vec2(column as f32 * CELL_SIZE_PX.x, row as f32 * CELL_SIZE_PX.y) * self.zoom;
+                    + vec2(
+                        column as f32 * self.cell_px().x,
+                        row as f32 * self.cell_px().y,
+                    ) * self.zoom;
                 painter.circle_filled(at, radius, color);
             }
         }
@@ -94,13 +132,14 @@ impl DiagramEditor {
         let network = &self.networks[index];
         let zoom = self.zoom;
         let selected = self.selection.network == Some(index) && self.selection.elements.is_empty();
-        let block_height =
-            (HEADER_HEIGHT_PX + self.layouts[index].size.y * CELL_SIZE_PX.y + NETWORK_GAP_PX / 2.0)
-                * zoom;
+        let block_height = (HEADER_HEIGHT_PX
+            + self.layouts[index].size.y * self.cell_px().y
+            + NETWORK_GAP_PX / 2.0)
+            * zoom;
         let block = Rect::from_min_size(
             top,
             vec2(
-                (LEFT_MARGIN_PX + self.layouts[index].size.x * CELL_SIZE_PX.x + 8.0) * zoom,
+                (LEFT_MARGIN_PX + self.layouts[index].size.x * self.cell_px().x + 8.0) * zoom,
                 block_height,
             ),
         );

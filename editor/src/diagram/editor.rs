@@ -10,7 +10,7 @@ use super::commands::{DiagramCommand, DiagramSelection};
 use super::entry::Entry;
 use super::fbd_layout::fbd_layout;
 use super::ld_layout::ld_layout;
-use super::paint::CELL_SIZE_PX;
+use super::paint::cell_size_px;
 use super::placed::NetworkLayout;
 use super::texts::DiagramTexts;
 use super::types::{
@@ -68,6 +68,8 @@ pub struct DiagramEditor {
     pub(super) diagnostics: Vec<ElementDiagnostic>,
     /// The worst severity on each element.
     pub(super) marks: HashMap<ElementId, Severity>,
+    /// The worst severity on each pin of a box, for the findings that name a pin.
+    pub(super) pin_marks: HashMap<(ElementId, String), Severity>,
     /// The online values; `None` while offline.
     pub(super) online: Option<DiagramOnline>,
     /// The words shown.
@@ -119,6 +121,7 @@ impl DiagramEditor {
             assistant_open: false,
             diagnostics: Vec::new(),
             marks: HashMap::new(),
+            pin_marks: HashMap::new(),
             online: None,
             texts: DiagramTexts::default(),
             focus_requested: false,
@@ -217,16 +220,26 @@ impl DiagramEditor {
     /// The compiler's diagnostics for this body, shown at their elements until replaced.
     pub fn set_diagnostics(&mut self, diagnostics: Vec<ElementDiagnostic>) {
         self.marks.clear();
+        self.pin_marks.clear();
+        let rank = |severity: &Severity| match severity {
+            Severity::Error => 2,
+            Severity::Warning => 1,
+            Severity::Info => 0,
+        };
         for diagnostic in &diagnostics {
             if let Some(id) = diagnostic.element {
-                let rank = |severity: &Severity| match severity {
-                    Severity::Error => 2,
-                    Severity::Warning => 1,
-                    Severity::Info => 0,
-                };
                 let entry = self.marks.entry(id).or_insert(diagnostic.severity);
                 if rank(&diagnostic.severity) > rank(entry) {
                     *entry = diagnostic.severity;
+                }
+                if let Some(pin) = &diagnostic.pin {
+                    let entry = self
+                        .pin_marks
+                        .entry((id, pin.clone()))
+                        .or_insert(diagnostic.severity);
+                    if rank(&diagnostic.severity) > rank(entry) {
+                        *entry = diagnostic.severity;
+                    }
                 }
             }
         }
@@ -266,12 +279,17 @@ impl DiagramEditor {
             .position(|network| network.element(id).is_some())?;
         let cells = self.layouts.get(index)?.element(id)?.rect;
         let origin = self.network_origin_px(index);
-        let min = origin + cells.min.to_vec2() * CELL_SIZE_PX;
-        let max = origin + cells.max.to_vec2() * CELL_SIZE_PX;
+        let min = origin + cells.min.to_vec2() * self.cell_px();
+        let max = origin + cells.max.to_vec2() * self.cell_px();
         Some(Rect::from_min_max(
             self.last_origin + min.to_vec2() * self.zoom,
             self.last_origin + max.to_vec2() * self.zoom,
         ))
+    }
+
+    /// The size of a grid cell of the current view at zoom 1, in points.
+    pub(super) fn cell_px(&self) -> Vec2 {
+        cell_size_px(self.view)
     }
 
     /// The zoom factor (1 is 100 %).
@@ -304,7 +322,7 @@ impl DiagramEditor {
         let canvas =
             Rect::from_min_max(pos2(toolbox.right() + 4.0, available.top()), available.max);
         ui.scope_builder(UiBuilder::new().max_rect(toolbox), |ui| {
-            self.toolbox_ui(ui, id);
+            self.toolbox_ui(ui, id, services, &mut frame);
         });
         let response = ui
             .scope_builder(UiBuilder::new().max_rect(canvas), |ui| {
@@ -418,13 +436,13 @@ impl DiagramEditor {
         self.tops_px.clear();
         for layout in &self.layouts {
             self.tops_px.push(top);
-            top += HEADER_HEIGHT_PX + layout.size.y * CELL_SIZE_PX.y + NETWORK_GAP_PX;
-            width = width.max(layout.size.x * CELL_SIZE_PX.x);
+            top += HEADER_HEIGHT_PX + layout.size.y * self.cell_px().y + NETWORK_GAP_PX;
+            width = width.max(layout.size.x * self.cell_px().x);
         }
         self.tops_px.push(top);
         self.content_px = vec2(
-            LEFT_MARGIN_PX + width + 2.0 * CELL_SIZE_PX.x,
-            top + CELL_SIZE_PX.y,
+            LEFT_MARGIN_PX + width + 2.0 * self.cell_px().x,
+            top + self.cell_px().y,
         );
     }
 

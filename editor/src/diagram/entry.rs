@@ -233,29 +233,43 @@ impl DiagramEditor {
                 return;
             }
             EntryTarget::NewBox(insert) => {
-                let Some(signature) = services.signature(text) else {
-                    frame.refusal = Some(DiagramRefusal::UnknownBlock(text.to_owned()));
-                    return;
-                };
-                let inputs: Vec<&str> = signature.inputs.iter().map(String::as_str).collect();
-                let outputs: Vec<&str> = signature.outputs.iter().map(String::as_str).collect();
-                let block = new_box(text, "", &inputs, &outputs);
-                let result = insert_node(&self.networks, *insert, block);
-                if let Ok(splice) = &result
-                    && signature.function_block
-                    && let Some(focus) = splice.focus
-                {
-                    // A function block needs an instance: ask for its name at once.
-                    let splice = splice.clone();
-                    self.apply_splice(splice, frame);
-                    self.open_entry(EntryTarget::Element(focus), None);
-                    return;
-                }
-                result
+                let insert = *insert;
+                self.insert_box(text, insert, services, frame);
+                return;
             }
         };
         match result {
             Ok(splice) => self.apply_splice(splice, frame),
+            Err(error) => frame.refusal = Some(DiagramRefusal::Edit(error)),
+        }
+    }
+
+    /// Inserts a box of block `type_name` at `insert` with the pins its signature gives; a
+    /// function block's box then asks for its instance's name at once.
+    pub(super) fn insert_box(
+        &mut self,
+        type_name: &str,
+        insert: InsertTarget,
+        services: &dyn DiagramServices,
+        frame: &mut FrameResult,
+    ) {
+        let Some(signature) = services.signature(type_name) else {
+            frame.refusal = Some(DiagramRefusal::UnknownBlock(type_name.to_owned()));
+            return;
+        };
+        let inputs: Vec<&str> = signature.inputs.iter().map(String::as_str).collect();
+        let outputs: Vec<&str> = signature.outputs.iter().map(String::as_str).collect();
+        let block = new_box(type_name, "", &inputs, &outputs);
+        match insert_node(&self.networks, insert, block) {
+            Ok(splice) => {
+                let focus = splice.focus;
+                self.apply_splice(splice, frame);
+                if signature.function_block
+                    && let Some(focus) = focus
+                {
+                    self.open_entry(EntryTarget::Element(focus), None);
+                }
+            }
             Err(error) => frame.refusal = Some(DiagramRefusal::Edit(error)),
         }
     }

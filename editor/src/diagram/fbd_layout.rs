@@ -3,7 +3,12 @@
 //! A chain of several operands is an AND box, a parallel group an OR box with one input per
 //! branch, a box in a chain takes the chain before it on its first input; each box's input
 //! subtrees stand to its left, and the outputs (assignments, jumps, returns) to the right of the
-//! root. Negated operands feeding a box are drawn as circles on its pins.
+//! root. Negated and edge operands feeding a box are drawn as circles and `P`/`N` marks on its
+//! pins.
+//!
+//! As in CODESYS's FBD, the drawing is compact: every box is as wide as its title and pin names
+//! ([`box_cells`]), an input operand stands right at its pin and is as wide as its text, and a
+//! line between two boxes is only long enough for a bend.
 
 use egui::{Pos2, Rect, Vec2, pos2, vec2};
 use project_model::{
@@ -11,16 +16,24 @@ use project_model::{
     Side,
 };
 
+use super::measure::{box_cells, operand_cells, operand_width_px};
+use super::paint::CELL_SIZE_PX;
 use super::placed::{
     InsertPoint, InsertTarget, NetworkLayout, PinMark, PlacedElement, Power, Shape, Wire,
 };
 
-/// The width of a variable's box, in cells.
-const VARIABLE_WIDTH_CELLS: f32 = 2.0;
-/// The width of a box, in cells.
-const BOX_WIDTH_CELLS: f32 = 2.0;
-/// The line between an input's source and its pin, in cells, long enough for a circle.
-const LEAD_CELLS: f32 = 1.0;
+/// The narrowest box, in cells, so a box of few letters still reads as a box.
+const MIN_BOX_CELLS: f32 = 0.7;
+/// The narrowest output or operand, in cells, so an empty one is still a target to click.
+const MIN_VARIABLE_CELLS: f32 = 0.6;
+/// The line between a box's output and the next box's pin, in cells: room for a bend.
+const LEAD_CELLS: f32 = 0.35;
+/// The line between a box's output pin and the variable it is assigned to, in cells.
+const ASSIGNMENT_LEAD_CELLS: f32 = 0.1;
+/// The room for an assignment's set, reset or edge letter before its variable, in cells.
+const ASSIGNMENT_LETTER_CELLS: f32 = 0.2;
+/// The length of a jump's arrow before its label, in points.
+const JUMP_ARROW_PX: f32 = 24.0;
 
 /// Lays out `network`, the body's network number `network_index` (counted from 0), as FBD.
 pub fn fbd_layout(network: &Network, network_index: usize) -> NetworkLayout {
@@ -90,24 +103,28 @@ struct GateInput<'a> {
 impl Expr<'_> {
     fn size(&self) -> Vec2 {
         match self {
-            Self::Leaf(_) => vec2(VARIABLE_WIDTH_CELLS, 1.0),
+            Self::Leaf(operand) => vec2(operand_cells(&operand.text, MIN_VARIABLE_CELLS), 1.0),
             Self::Incoming => vec2(0.0, 1.0),
             Self::Gate(gate) => {
                 let (sources, rows) = gate.inputs.iter().fold((0.0_f32, 0.0), |(w, h), input| {
                     let size = input.source.as_ref().map_or(vec2(0.0, 1.0), Expr::size);
-                    (w.max(size.x), h + size.y.max(1.0))
+                    let lead = input.source.as_ref().map_or(0.0, Expr::lead);
+                    (w.max(size.x + lead), h + size.y.max(1.0))
                 });
-                let leads = if sources > 0.0 { LEAD_CELLS } else { 0.0 };
-                let assignments = if gate.assignments.is_empty() {
-                    0.0
-                } else {
-                    LEAD_CELLS + VARIABLE_WIDTH_CELLS
-                };
                 vec2(
-                    sources + leads + BOX_WIDTH_CELLS + assignments,
+                    sources + gate.box_width() + gate.assignments_width(),
                     rows.max(gate.outputs.len() as f32).max(1.0),
                 )
             }
+        }
+    }
+
+    /// The line between this source and the pin it feeds: none for an operand, which stands
+    /// on its pin's row, room for a bend after a box.
+    fn lead(&self) -> f32 {
+        match self {
+            Self::Leaf(_) => 0.0,
+            Self::Gate(_) | Self::Incoming => LEAD_CELLS,
         }
     }
 
@@ -117,6 +134,45 @@ impl Expr<'_> {
             Self::Gate(gate) => gate.power,
             Self::Incoming => Power::None,
         }
+    }
+}
+
+impl Gate<'_> {
+    /// The width of the box itself, from its title and pin names.
+    fn box_width(&self) -> f32 {
+        box_cells(
+            &self.type_name,
+            &self.instance,
+            self.inputs.iter().map(|input| input.pin.as_str()),
+            self.outputs.iter().map(|output| output.name.as_str()),
+            MIN_BOX_CELLS,
+        )
+    }
+
+    /// The width of the variables the box's other outputs are assigned to, with their leads.
+    fn assignments_width(&self) -> f32 {
+        self.assignments
+            .iter()
+            .map(|(_, variable)| {
+                ASSIGNMENT_LEAD_CELLS + operand_cells(variable, MIN_VARIABLE_CELLS)
+            })
+            .fold(0.0, f32::max)
+    }
+}
+
+/// The width of an output's drawing, in cells.
+fn output_cells(output: &NetworkOutput) -> f32 {
+    match output {
+        NetworkOutput::Coil(coil) => {
+            ASSIGNMENT_LETTER_CELLS + operand_cells(&coil.variable, MIN_VARIABLE_CELLS)
+        }
+        NetworkOutput::Jump { label, .. } => {
+            // An empty label shows a three-letter placeholder.
+            let label_px = operand_width_px(label).max(operand_width_px("???"));
+            (JUMP_ARROW_PX + label_px + 8.0) / CELL_SIZE_PX.x
+        }
+        NetworkOutput::Return { .. } => operand_cells("RETURN", MIN_VARIABLE_CELLS),
+        NetworkOutput::Branch { .. } => 0.0,
     }
 }
 
@@ -271,7 +327,7 @@ impl Builder {
                     shape: Shape::Variable {
                         text: operand.text.clone(),
                         negated: operand.negated && !into_pin,
-                        edge: operand.edge,
+                        edge: if into_pin { Edge::None } else { operand.edge },
                     },
                     power_in: Power::None,
                 });
@@ -296,47 +352,53 @@ impl Builder {
     }
 
     fn gate(&mut self, gate: &Gate<'_>, at: Pos2, size: Vec2) -> (Pos2, Power) {
-        let assignments = if gate.assignments.is_empty() {
-            0.0
-        } else {
-            LEAD_CELLS + VARIABLE_WIDTH_CELLS
-        };
-        let box_x = at.x + size.x - BOX_WIDTH_CELLS - assignments;
+        let assignments = gate.assignments_width();
+        let box_width = gate.box_width();
+        let box_x = at.x + size.x - box_width - assignments;
         let mut row = at.y;
         let mut inputs = Vec::new();
         let mut power_in = Power::None;
         for input in &gate.inputs {
             let mut negated = input.negated;
+            let mut edge = input.edge;
             let mut rows = 1.0;
             if let Some(source) = &input.source {
                 let source_size = source.size();
                 rows = source_size.y.max(1.0);
                 if let Expr::Leaf(operand) = source {
+                    // An operand's negation and edge are drawn at the pin it feeds, as CODESYS
+                    // draws them.
                     negated ^= operand.negated;
+                    if edge == Edge::None {
+                        edge = operand.edge;
+                    }
                 }
-                let source_at = pos2(box_x - LEAD_CELLS - source_size.x, row);
+                let lead = source.lead();
+                let source_at = pos2(box_x - lead - source_size.x, row);
                 let (out, power) = self.expr(source, source_at, true);
                 if power_in == Power::None {
                     power_in = power;
                 }
                 let pin = pos2(box_x, row + 0.5);
-                let points = if (out.y - pin.y).abs() < f32::EPSILON {
-                    vec![out, pin]
-                } else {
-                    vec![
-                        out,
-                        pos2(box_x - LEAD_CELLS / 2.0, out.y),
-                        pos2(box_x - LEAD_CELLS / 2.0, pin.y),
-                        pin,
-                    ]
-                };
-                self.wire(points, power);
+                if (out.y - pin.y).abs() >= f32::EPSILON {
+                    self.wire(
+                        vec![
+                            out,
+                            pos2(box_x - lead / 2.0, out.y),
+                            pos2(box_x - lead / 2.0, pin.y),
+                            pin,
+                        ],
+                        power,
+                    );
+                } else if out.x < pin.x {
+                    self.wire(vec![out, pin], power);
+                }
             }
             inputs.push(PinMark {
                 name: input.pin.clone(),
                 row,
                 negated,
-                edge: input.edge,
+                edge,
             });
             row += rows;
         }
@@ -351,13 +413,16 @@ impl Builder {
             .collect();
         for (index, variable) in &gate.assignments {
             let row = at.y + *index as f32;
-            let from = pos2(box_x + BOX_WIDTH_CELLS, row + 0.5);
-            self.wire(vec![from, pos2(from.x + LEAD_CELLS, from.y)], gate.power);
+            let from = pos2(box_x + box_width, row + 0.5);
+            self.wire(
+                vec![from, pos2(from.x + ASSIGNMENT_LEAD_CELLS, from.y)],
+                gate.power,
+            );
             self.layout.elements.push(PlacedElement {
                 id: None,
                 rect: Rect::from_min_size(
-                    pos2(from.x + LEAD_CELLS, row),
-                    vec2(VARIABLE_WIDTH_CELLS, 1.0),
+                    pos2(from.x + ASSIGNMENT_LEAD_CELLS, row),
+                    vec2(assignments - ASSIGNMENT_LEAD_CELLS, 1.0),
                 ),
                 shape: Shape::Variable {
                     text: variable.clone(),
@@ -369,7 +434,7 @@ impl Builder {
         }
         self.layout.elements.push(PlacedElement {
             id: gate.id,
-            rect: Rect::from_min_size(pos2(box_x, at.y), vec2(BOX_WIDTH_CELLS, size.y)),
+            rect: Rect::from_min_size(pos2(box_x, at.y), vec2(box_width, size.y)),
             shape: Shape::Box {
                 type_name: gate.type_name.clone(),
                 instance: gate.instance.clone(),
@@ -380,7 +445,7 @@ impl Builder {
         });
         if let Some(id) = gate.id {
             self.insert(
-                pos2(box_x + BOX_WIDTH_CELLS, at.y + 0.5),
+                pos2(box_x + box_width, at.y + 0.5),
                 InsertTarget::Series {
                     anchor: Anchor::Element(id),
                     side: Side::After,
@@ -388,7 +453,7 @@ impl Builder {
             );
         }
         let out_y = at.y + gate.chain_output as f32 + 0.5;
-        let out = pos2(box_x + BOX_WIDTH_CELLS, out_y);
+        let out = pos2(box_x + box_width, out_y);
         if assignments > 0.0 {
             let end = pos2(at.x + size.x, out_y);
             self.wire(vec![out, end], gate.power);
@@ -410,8 +475,9 @@ impl Builder {
         let (source, power) = from;
         let bend_x = source.x + LEAD_CELLS / 2.0;
         let mut y = top;
-        let mut width = VARIABLE_WIDTH_CELLS;
+        let mut width = MIN_VARIABLE_CELLS;
         for output in outputs {
+            let output_width = output_cells(output);
             let target = pos2(x, y + 0.5);
             let shape = match output {
                 NetworkOutput::Coil(coil) => Some(Shape::Assignment {
@@ -436,12 +502,13 @@ impl Builder {
             if let Some(shape) = shape {
                 self.layout.elements.push(PlacedElement {
                     id: Some(output.id()),
-                    rect: Rect::from_min_size(pos2(x, y), vec2(VARIABLE_WIDTH_CELLS, 1.0)),
+                    rect: Rect::from_min_size(pos2(x, y), vec2(output_width, 1.0)),
                     shape,
                     power_in: power,
                 });
+                width = width.max(output_width);
                 self.insert(
-                    pos2(x + VARIABLE_WIDTH_CELLS / 2.0, y + 1.0),
+                    pos2(x + output_width / 2.0, y + 1.0),
                     InsertTarget::Output {
                         anchor: Anchor::Element(output.id()),
                     },
@@ -466,7 +533,7 @@ impl Builder {
         }
         if outputs.is_empty() {
             self.insert(
-                pos2(x + VARIABLE_WIDTH_CELLS / 2.0, top + 0.5),
+                pos2(x + MIN_VARIABLE_CELLS / 2.0, top + 0.5),
                 InsertTarget::Output { anchor: end_anchor },
             );
             y += 1.0;

@@ -154,32 +154,38 @@ impl DiagramEditor {
         }
     }
 
+    /// Where a box goes for the selection: after the selected element (before a selected
+    /// output), or at the end of the selected or last network.
+    pub(super) fn box_target(&self) -> InsertTarget {
+        match self.selection.anchor() {
+            Some(Anchor::Element(id)) => {
+                let is_output = self
+                    .networks
+                    .iter()
+                    .any(|network| matches!(network.element(id), Some(ElementRef::Output(_))));
+                InsertTarget::Series {
+                    anchor: Anchor::Element(id),
+                    side: if is_output { Side::Before } else { Side::After },
+                }
+            }
+            Some(anchor) => InsertTarget::Series {
+                anchor,
+                side: Side::After,
+            },
+            None => InsertTarget::Series {
+                anchor: Anchor::Network(self.networks.len().saturating_sub(1)),
+                side: Side::After,
+            },
+        }
+    }
+
     /// Runs a command on the selection.
     pub(super) fn command(&mut self, command: DiagramCommand, frame: &mut FrameResult) {
         if self.read_only {
             return;
         }
         if command == DiagramCommand::InsertBox {
-            let target = match self.selection.anchor() {
-                Some(Anchor::Element(id)) => {
-                    let is_output = self
-                        .networks
-                        .iter()
-                        .any(|network| matches!(network.element(id), Some(ElementRef::Output(_))));
-                    InsertTarget::Series {
-                        anchor: Anchor::Element(id),
-                        side: if is_output { Side::Before } else { Side::After },
-                    }
-                }
-                Some(anchor) => InsertTarget::Series {
-                    anchor,
-                    side: Side::After,
-                },
-                None => InsertTarget::Series {
-                    anchor: Anchor::Network(self.networks.len().saturating_sub(1)),
-                    side: Side::After,
-                },
-            };
+            let target = self.box_target();
             self.open_entry(EntryTarget::NewBox(target), None);
             return;
         }

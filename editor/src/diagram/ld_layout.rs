@@ -11,12 +11,16 @@ use project_model::{
     Anchor, BlockCall, BlockInput, ElementId, FlowNode, Network, NetworkOutput, ParallelSide, Side,
 };
 
+use super::measure::{box_cells, operand_cells};
 use super::placed::{
     InsertPoint, InsertTarget, NetworkLayout, PinMark, PlacedElement, Power, Shape, Wire,
 };
 
 /// The narrowest network, in cells, so an empty rung still has a line to click and drop on.
 const MIN_WIDTH_CELLS: f32 = 4.0;
+/// The narrowest box, in cells (126 points, the width of a CODESYS LD timer box); a box grows
+/// beyond it with its title and pin names.
+const MIN_BOX_CELLS: f32 = 1.5;
 
 /// Lays out `network`, the body's network number `network_index` (counted from 0), as a rung.
 pub fn ld_layout(network: &Network, network_index: usize) -> NetworkLayout {
@@ -61,7 +65,7 @@ pub(super) fn measure_chain(chain: &[FlowNode]) -> Vec2 {
 
 fn measure_node(node: &FlowNode) -> Vec2 {
     match node {
-        FlowNode::Operand(_) => vec2(1.0, 1.0),
+        FlowNode::Operand(operand) => vec2(operand_cells(&operand.text, 1.0), 1.0),
         FlowNode::Parallel(parallel) => {
             parallel
                 .branches
@@ -83,13 +87,28 @@ fn measure_block(block: &BlockCall) -> Vec2 {
         .skip(1)
         .map(source_size)
         .fold(0.0_f32, |width, size| width.max(size.x));
-    vec2(sources + 2.0 + assignment_column(block), block_rows(block))
+    vec2(
+        sources + box_width(block) + assignment_column(block),
+        block_rows(block),
+    )
 }
 
-/// The size of what drives a box's input: one cell for a single operand, else its chain.
+/// The width of a box itself, from its title and pin names.
+fn box_width(block: &BlockCall) -> f32 {
+    box_cells(
+        &block.type_name,
+        &block.instance,
+        block.inputs.iter().map(|input| input.pin.as_str()),
+        block.outputs.iter().map(|output| output.pin.as_str()),
+        MIN_BOX_CELLS,
+    )
+}
+
+/// The size of what drives a box's input: a cell as wide as a single operand's text, else its
+/// chain.
 fn source_size(input: &BlockInput) -> Vec2 {
     match input.source.as_slice() {
-        [FlowNode::Operand(_)] => vec2(1.0, 1.0),
+        [FlowNode::Operand(operand)] => vec2(operand_cells(&operand.text, 1.0), 1.0),
         source => measure_chain(source),
     }
 }
@@ -113,16 +132,26 @@ fn block_rows(block: &BlockCall) -> f32 {
         .max(1.0)
 }
 
-/// One cell after a box for the variables its outputs are assigned to, when any output other
-/// than the one passing the power on is assigned.
+/// A column after a box for the variables its outputs are assigned to, as wide as the longest
+/// (at least a cell), when any output other than the one passing the power on is assigned.
 fn assignment_column(block: &BlockCall) -> f32 {
     let chain = block.chain_output();
-    let assigned = block
+    block
         .outputs
         .iter()
         .enumerate()
-        .any(|(index, output)| Some(index) != chain && !output.assign.is_empty());
-    if assigned { 1.0 } else { 0.0 }
+        .filter(|(index, output)| Some(*index) != chain && !output.assign.is_empty())
+        .map(|(_, output)| operand_cells(&output.assign, 1.0))
+        .fold(0.0, f32::max)
+}
+
+/// The width of an output's cell: a coil as wide as its variable, at least a cell.
+fn output_cell_width(output: &NetworkOutput) -> f32 {
+    match output {
+        NetworkOutput::Coil(coil) => operand_cells(&coil.variable, 1.0),
+        NetworkOutput::Jump { label, .. } => operand_cells(label, 1.0),
+        NetworkOutput::Return { .. } | NetworkOutput::Branch { .. } => 1.0,
+    }
 }
 
 fn measure_output(output: &NetworkOutput) -> f32 {
@@ -130,7 +159,7 @@ fn measure_output(output: &NetworkOutput) -> f32 {
         NetworkOutput::Branch { rung, outputs, .. } => {
             measure_chain(rung).x + 1.0 + measure_outputs(outputs)
         }
-        _ => 1.0,
+        _ => output_cell_width(output),
     }
 }
 
@@ -216,7 +245,7 @@ impl Builder {
             FlowNode::Operand(operand) => {
                 self.place(
                     Some(operand.id),
-                    Rect::from_min_size(at, vec2(1.0, 1.0)),
+                    Rect::from_min_size(at, vec2(operand_cells(&operand.text, 1.0), 1.0)),
                     Shape::Contact {
                         text: operand.text.clone(),
                         negated: operand.negated,
@@ -272,7 +301,8 @@ impl Builder {
     fn block(&mut self, block: &BlockCall, at: Pos2, power: Power) -> Power {
         let size = measure_block(block);
         let column = assignment_column(block);
-        let box_x = at.x + size.x - 2.0 - column;
+        let width = box_width(block);
+        let box_x = at.x + size.x - width - column;
         let out = Power::After(block.id);
         if box_x > at.x {
             self.wire(vec![pos2(at.x, at.y + 0.5), pos2(box_x, at.y + 0.5)], power);
@@ -292,16 +322,19 @@ impl Builder {
             });
             match input.source.as_slice() {
                 [] => {}
-                [FlowNode::Operand(operand)] => self.place(
-                    Some(operand.id),
-                    Rect::from_min_size(pos2(box_x - 1.0, row), vec2(1.0, 1.0)),
-                    Shape::Variable {
-                        text: operand.text.clone(),
-                        negated: operand.negated,
-                        edge: operand.edge,
-                    },
-                    Power::None,
-                ),
+                [FlowNode::Operand(operand)] => {
+                    let cell = operand_cells(&operand.text, 1.0);
+                    self.place(
+                        Some(operand.id),
+                        Rect::from_min_size(pos2(box_x - cell, row), vec2(cell, 1.0)),
+                        Shape::Variable {
+                            text: operand.text.clone(),
+                            negated: operand.negated,
+                            edge: operand.edge,
+                        },
+                        Power::None,
+                    )
+                }
                 source => {
                     let width = measure_chain(source).x;
                     self.chain(source, pos2(box_x - width, row), Power::Rail);
@@ -322,7 +355,7 @@ impl Builder {
             if Some(index) != chain && !output.assign.is_empty() {
                 self.place(
                     None,
-                    Rect::from_min_size(pos2(box_x + 2.0, row), vec2(1.0, 1.0)),
+                    Rect::from_min_size(pos2(box_x + width, row), vec2(column, 1.0)),
                     Shape::Variable {
                         text: output.assign.clone(),
                         negated: false,
@@ -337,7 +370,7 @@ impl Builder {
         if column > 0.0 || chain_row > at.y + 0.5 {
             self.wire(
                 vec![
-                    pos2(box_x + 2.0, chain_row),
+                    pos2(box_x + width, chain_row),
                     pos2(right, chain_row),
                     pos2(right, at.y + 0.5),
                 ],
@@ -346,7 +379,7 @@ impl Builder {
         }
         self.place(
             Some(block.id),
-            Rect::from_min_size(pos2(box_x, at.y), vec2(2.0, size.y)),
+            Rect::from_min_size(pos2(box_x, at.y), vec2(width, size.y)),
             Shape::Box {
                 type_name: block.type_name.clone(),
                 instance: block.instance.clone(),
@@ -381,7 +414,8 @@ impl Builder {
         let mut last_row = top;
         for output in outputs {
             let height = output_height(output);
-            let cell = Rect::from_min_size(pos2(right - 1.0, y), vec2(1.0, 1.0));
+            let cell_width = output_cell_width(output);
+            let cell = Rect::from_min_size(pos2(right - cell_width, y), vec2(cell_width, 1.0));
             let shape = match output {
                 NetworkOutput::Coil(coil) => Some(Shape::Coil {
                     variable: coil.variable.clone(),
@@ -395,12 +429,12 @@ impl Builder {
             };
             if let Some(shape) = shape {
                 self.wire(
-                    vec![pos2(fan_x, y + 0.5), pos2(right - 1.0, y + 0.5)],
+                    vec![pos2(fan_x, y + 0.5), pos2(right - cell_width, y + 0.5)],
                     power,
                 );
                 self.place(Some(output.id()), cell, shape, power);
                 self.insert(
-                    pos2(right - 0.5, y + 1.0),
+                    pos2(right - cell_width / 2.0, y + 1.0),
                     InsertTarget::Output {
                         anchor: Anchor::Element(output.id()),
                     },

@@ -14,6 +14,7 @@ mod entry;
 mod fbd_layout;
 mod keyboard;
 mod ld_layout;
+mod measure;
 mod navigate;
 mod paint;
 mod placed;
@@ -29,7 +30,7 @@ pub use placed::{
     InsertPoint, InsertTarget, NetworkLayout, PinMark, PlacedElement, Power, Shape, Wire,
 };
 pub use texts::DiagramTexts;
-pub use toolbox::ToolboxItem;
+pub use toolbox::{ToolboxBlock, ToolboxItem};
 pub use types::{
     BlockSignature, DiagramChange, DiagramOnline, DiagramOutput, DiagramRefusal, DiagramServices,
     DiagramView, ElementDiagnostic, InstanceDeclaration, OnlineValue, PreparedOperand,

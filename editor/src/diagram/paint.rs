@@ -6,12 +6,28 @@ use std::collections::{HashMap, HashSet};
 use egui::{Align2, Color32, FontId, Painter, Pos2, Rect, Stroke, StrokeKind, pos2, vec2};
 use project_model::{CoilKind, Edge, ElementId};
 
+use super::measure::{BOX_LEAD_PX, OPERAND_FONT_PX, PIN_FONT_PX, shortened};
 use super::placed::{NetworkLayout, PinMark, PlacedElement, Power, Shape};
-use super::types::DiagramOnline;
+use super::types::{DiagramOnline, DiagramView};
 use crate::{EditorPalette, Severity};
 
-/// The size of a grid cell at zoom 1, in points.
+/// The size of a grid cell of the LD view at zoom 1, in points: a contact with its operand
+/// above it. Cells are as wide in both views, so the layouts measure texts the same way.
 pub(super) const CELL_SIZE_PX: egui::Vec2 = egui::Vec2::new(84.0, 44.0);
+/// The height of a row of the FBD view at zoom 1, in points: one pin with its name, the pitch
+/// of CODESYS's FBD boxes, since no operand stands above a line there.
+const FBD_ROW_HEIGHT_PX: f32 = 30.0;
+
+/// The size of a grid cell of `view` at zoom 1, in points.
+pub(super) fn cell_size_px(view: DiagramView) -> egui::Vec2 {
+    match view {
+        DiagramView::Ladder => CELL_SIZE_PX,
+        DiagramView::FunctionBlock => vec2(CELL_SIZE_PX.x, FBD_ROW_HEIGHT_PX),
+    }
+}
+
+/// The height of a variable's frame around its text, in points at zoom 1.
+const TEXT_FRAME_HEIGHT_PX: f32 = 20.0;
 
 /// What the painter needs besides the layout; borrowed for one frame.
 pub(super) struct PaintContext<'a> {
@@ -25,10 +41,14 @@ pub(super) struct PaintContext<'a> {
     pub weak: Color32,
     /// Points per point at zoom 1.
     pub zoom: f32,
+    /// The size of a grid cell at zoom 1, in points.
+    pub cell: egui::Vec2,
     /// The selected elements.
     pub selected: &'a HashSet<ElementId>,
     /// The worst severity of the diagnostics on each element.
     pub diagnostics: &'a HashMap<ElementId, Severity>,
+    /// The worst severity of the diagnostics on each pin of a box.
+    pub pin_diagnostics: &'a HashMap<(ElementId, String), Severity>,
     /// The online values, when logged in.
     pub online: Option<&'a DiagramOnline>,
     /// The text shown for an empty operand.
@@ -46,11 +66,25 @@ impl PaintContext<'_> {
 
     /// The screen position of a grid position of a network drawn from `origin`.
     pub fn screen_pos(&self, origin: Pos2, pos: Pos2) -> Pos2 {
-        origin + vec2(pos.x * CELL_SIZE_PX.x, pos.y * CELL_SIZE_PX.y) * self.zoom
+        origin + vec2(pos.x * self.cell.x, pos.y * self.cell.y) * self.zoom
     }
 
     fn font(&self, size_px: f32) -> FontId {
         FontId::proportional(size_px * self.zoom)
+    }
+
+    /// The font of operands, box titles and pin names: monospace, so the layouts know their
+    /// widths without measuring.
+    fn mono(&self, size_px: f32) -> FontId {
+        FontId::monospace(size_px * self.zoom)
+    }
+
+    fn severity_color(&self, severity: Severity) -> Color32 {
+        match severity {
+            Severity::Error => self.palette.error,
+            Severity::Warning => self.palette.warning,
+            Severity::Info => self.palette.info,
+        }
     }
 
     fn stroke(&self, power: Power) -> Stroke {
@@ -73,6 +107,12 @@ impl PaintContext<'_> {
                 let rect = self.screen_rect(origin, element.rect).shrink(1.0);
                 self.painter
                     .rect_filled(rect, 3.0 * self.zoom, self.palette.diagram_selection);
+                self.painter.rect_stroke(
+                    rect,
+                    3.0 * self.zoom,
+                    Stroke::new(1.5 * self.zoom, self.palette.power_on),
+                    StrokeKind::Inside,
+                );
             }
         }
         for wire in &layout.wires {
@@ -108,7 +148,7 @@ impl PaintContext<'_> {
 
     fn element(&self, element: &PlacedElement, origin: Pos2) {
         let rect = self.screen_rect(origin, element.rect);
-        let mid_y = rect.top() + rect.height().min(CELL_SIZE_PX.y * self.zoom) * 0.5;
+        let mid_y = rect.top() + rect.height().min(self.cell.y * self.zoom) * 0.5;
         let own = element.id.map_or(Power::None, Power::After);
         match &element.shape {
             Shape::Contact {
@@ -160,36 +200,57 @@ impl PaintContext<'_> {
                 self.operand(variable, element, rect);
             }
             Shape::Assignment { variable, kind } => {
-                let frame = rect.shrink2(vec2(4.0, 8.0) * self.zoom);
+                // The line comes in from the left past the room of a set, reset or edge
+                // letter, which sits on it, into the variable's frame.
+                let letter_room = 17.0 * self.zoom;
+                let frame = Rect::from_min_max(
+                    pos2(
+                        rect.left() + letter_room,
+                        mid_y - TEXT_FRAME_HEIGHT_PX / 2.0 * self.zoom,
+                    ),
+                    pos2(rect.right(), mid_y + TEXT_FRAME_HEIGHT_PX / 2.0 * self.zoom),
+                );
+                self.painter.line_segment(
+                    [pos2(rect.left(), mid_y), pos2(frame.left(), mid_y)],
+                    self.stroke(element.power_in),
+                );
+                if *kind != CoilKind::Normal {
+                    let letter_at = pos2(rect.left() + letter_room / 2.0, mid_y);
+                    self.coil_letter(*kind, letter_at - vec2(0.0, 8.0 * self.zoom));
+                }
                 self.painter.rect_stroke(
                     frame,
                     2.0 * self.zoom,
                     self.stroke(Power::None),
                     StrokeKind::Inside,
                 );
-                self.coil_letter(*kind, pos2(frame.left() - 6.0 * self.zoom, frame.top()));
-                self.text_in(variable, frame, element);
+                self.text_in(variable, frame.shrink2(vec2(4.0, 0.0) * self.zoom), element);
             }
             Shape::Variable {
                 text,
                 negated,
                 edge,
             } => {
-                let frame = rect.shrink2(vec2(4.0, 8.0) * self.zoom);
+                let frame = Rect::from_center_size(
+                    pos2(rect.center().x, mid_y),
+                    vec2(
+                        rect.width() - 8.0 * self.zoom,
+                        TEXT_FRAME_HEIGHT_PX * self.zoom,
+                    ),
+                );
                 if element.id.is_none() {
                     // An output's assignment: the line comes from the pin on the left.
                     self.painter.line_segment(
                         [
                             pos2(rect.left(), mid_y),
-                            pos2(rect.left() + 6.0 * self.zoom, mid_y),
+                            pos2(rect.left() + 3.0 * self.zoom, mid_y),
                         ],
                         self.stroke(element.power_in),
                     );
                     self.text_at(
                         text,
-                        pos2(rect.left() + 8.0 * self.zoom, mid_y),
+                        pos2(rect.left() + 4.0 * self.zoom, mid_y),
                         Align2::LEFT_CENTER,
-                        frame.width(),
                     );
                 } else {
                     self.text_in(text, frame, element);
@@ -201,9 +262,10 @@ impl PaintContext<'_> {
                 if *negated {
                     self.negation_circle(pos2(rect.right(), mid_y));
                 }
+                // An operand that feeds no pin carries its edge at its end, on the line.
                 self.edge_letter(
                     *edge,
-                    pos2(rect.right() - 8.0 * self.zoom, mid_y - 10.0 * self.zoom),
+                    pos2(rect.right() - 2.0 * self.zoom, mid_y - 7.0 * self.zoom),
                 );
             }
             Shape::Jump { label } => {
@@ -222,7 +284,7 @@ impl PaintContext<'_> {
                     tip + vec2(4.0 * self.zoom, 0.0),
                     Align2::LEFT_CENTER,
                     shown,
-                    self.font(12.0),
+                    self.mono(OPERAND_FONT_PX),
                     self.line,
                 );
             }
@@ -231,7 +293,7 @@ impl PaintContext<'_> {
                     pos2(rect.left() + 4.0 * self.zoom, mid_y),
                     Align2::LEFT_CENTER,
                     "RETURN",
-                    self.font(12.0),
+                    self.mono(OPERAND_FONT_PX),
                     self.line,
                 );
             }
@@ -244,18 +306,27 @@ impl PaintContext<'_> {
             } => self.block(rect, origin, type_name, instance, inputs, outputs, element),
         }
         if let Some(severity) = element.id.and_then(|id| self.diagnostics.get(&id)) {
-            let color = match severity {
-                Severity::Error => self.palette.error,
-                Severity::Warning => self.palette.warning,
-                Severity::Info => self.palette.info,
-            };
-            let corner = rect.right_top() + vec2(-5.0, 5.0) * self.zoom;
-            self.painter.circle_filled(corner, 4.0 * self.zoom, color);
+            let color = self.severity_color(*severity);
             self.painter.rect_stroke(
                 rect.shrink(1.0),
                 2.0 * self.zoom,
-                Stroke::new(1.5 * self.zoom, color),
+                Stroke::new(2.0 * self.zoom, color),
                 StrokeKind::Inside,
+            );
+            // A filled badge with "!" on a top corner: a box's left one, clear of its pins'
+            // lines, the right one of other elements, clear of a set or reset letter.
+            let corner = if matches!(element.shape, Shape::Box { .. }) {
+                rect.left_top() + vec2(5.0, 5.0) * self.zoom
+            } else {
+                rect.right_top() + vec2(-5.0, 5.0) * self.zoom
+            };
+            self.painter.circle_filled(corner, 5.5 * self.zoom, color);
+            self.painter.text(
+                corner,
+                Align2::CENTER_CENTER,
+                "!",
+                FontId::monospace(10.0 * self.zoom),
+                self.palette.forced_text,
             );
         }
     }
@@ -271,7 +342,7 @@ impl PaintContext<'_> {
         outputs: &[PinMark],
         element: &PlacedElement,
     ) {
-        let frame = rect.shrink2(vec2(10.0, 3.0) * self.zoom);
+        let frame = rect.shrink2(vec2(BOX_LEAD_PX, 3.0) * self.zoom);
         let stroke = self.stroke(Power::None);
         self.painter
             .rect_stroke(frame, 2.0 * self.zoom, stroke, StrokeKind::Inside);
@@ -279,7 +350,7 @@ impl PaintContext<'_> {
             pos2(frame.center().x, frame.top() + 2.0 * self.zoom),
             Align2::CENTER_TOP,
             type_name,
-            FontId::monospace(11.0 * self.zoom),
+            self.mono(OPERAND_FONT_PX),
             self.line,
         );
         if !instance.is_empty() {
@@ -287,31 +358,40 @@ impl PaintContext<'_> {
                 pos2(frame.center().x, frame.top() - 1.0 * self.zoom),
                 Align2::CENTER_BOTTOM,
                 instance,
-                self.font(11.0),
+                self.mono(OPERAND_FONT_PX),
                 self.line,
             );
         }
         let pin_y = |pin: &PinMark| self.screen_pos(origin, pos2(0.0, pin.row + 0.5)).y;
+        // Only a box with a finding looks its pins up, so painting allocates no keys.
+        let marked = element.id.filter(|id| self.diagnostics.contains_key(id));
+        let pin_severity =
+            |pin: &PinMark| marked.and_then(|id| self.pin_diagnostics.get(&(id, pin.name.clone())));
         for pin in inputs {
             let y = pin_y(pin);
             self.painter.line_segment(
                 [pos2(rect.left(), y), pos2(frame.left(), y)],
                 self.stroke(element.power_in),
             );
-            self.painter.text(
-                pos2(frame.left() + 3.0 * self.zoom, y),
+            // An edge is a small letter inside the box at the pin, the name moves past it.
+            let mut name_x = frame.left() + 3.0 * self.zoom;
+            if pin.edge != Edge::None {
+                self.edge_letter(pin.edge, pos2(name_x + 3.0 * self.zoom, y));
+                name_x += 9.0 * self.zoom;
+            }
+            let name = self.painter.text(
+                pos2(name_x, y),
                 Align2::LEFT_CENTER,
                 &pin.name,
-                self.font(10.0),
+                self.mono(PIN_FONT_PX),
                 self.line,
             );
             if pin.negated {
                 self.negation_circle(pos2(frame.left() - 4.0 * self.zoom, y));
             }
-            self.edge_letter(
-                pin.edge,
-                pos2(frame.left() - 4.0 * self.zoom, y - 9.0 * self.zoom),
-            );
+            if let Some(severity) = pin_severity(pin) {
+                self.pin_mark(pos2(rect.left(), y), name, *severity);
+            }
         }
         let own = element.id.map_or(Power::None, Power::After);
         for pin in outputs {
@@ -320,15 +400,18 @@ impl PaintContext<'_> {
                 [pos2(frame.right(), y), pos2(rect.right(), y)],
                 self.stroke(own),
             );
-            self.painter.text(
+            let name = self.painter.text(
                 pos2(frame.right() - 3.0 * self.zoom, y),
                 Align2::RIGHT_CENTER,
                 &pin.name,
-                self.font(10.0),
+                self.mono(PIN_FONT_PX),
                 self.line,
             );
             if pin.negated {
                 self.negation_circle(pos2(frame.right() + 4.0 * self.zoom, y));
+            }
+            if let Some(severity) = pin_severity(pin) {
+                self.pin_mark(pos2(rect.right(), y), name, *severity);
             }
             if let (Some(online), Some(id)) = (self.online, element.id)
                 && let Some(value) = online.values.get(&(id, Some(pin.name.clone())))
@@ -344,7 +427,33 @@ impl PaintContext<'_> {
         }
     }
 
-    /// The operand above a contact or coil, shortened to its cell, with its online value.
+    /// A diagnostic on a pin: its lead drawn thick in the severity's colour and its name
+    /// underlined, so the finding reads at the pin and not only at the box.
+    fn pin_mark(&self, lead_end: Pos2, name: Rect, severity: Severity) {
+        let color = self.severity_color(severity);
+        let stroke = Stroke::new(3.0 * self.zoom, color);
+        let lead_start = pos2(
+            if lead_end.x < name.left() {
+                name.left() - 3.0 * self.zoom
+            } else {
+                name.right() + 3.0 * self.zoom
+            },
+            lead_end.y,
+        );
+        self.painter.line_segment([lead_end, lead_start], stroke);
+        if name.width() > 0.0 {
+            self.painter.line_segment(
+                [
+                    name.left_bottom() + vec2(0.0, 1.0 * self.zoom),
+                    name.right_bottom() + vec2(0.0, 1.0 * self.zoom),
+                ],
+                Stroke::new(1.5 * self.zoom, color),
+            );
+        }
+    }
+
+    /// The operand above a contact or coil, shortened past the longest shown, with its online
+    /// value.
     fn operand(&self, text: &str, element: &PlacedElement, rect: Rect) {
         let shown = if text.is_empty() {
             self.placeholder
@@ -356,13 +465,11 @@ impl PaintContext<'_> {
         } else {
             self.line
         };
-        let max_chars = ((rect.width() / (6.5 * self.zoom)) as usize).max(3);
-        let shown = elide(shown, max_chars);
         self.painter.text(
             pos2(rect.center().x, rect.top() + 1.0 * self.zoom),
             Align2::CENTER_TOP,
-            shown,
-            self.font(11.0),
+            shortened(shown).0,
+            self.mono(OPERAND_FONT_PX),
             color,
         );
         if let (Some(online), Some(id)) = (self.online, element.id)
@@ -377,14 +484,13 @@ impl PaintContext<'_> {
         }
     }
 
-    /// A text at `at`, shortened to `width` points.
-    fn text_at(&self, text: &str, at: Pos2, align: Align2, width: f32) {
-        let max_chars = ((width / (6.5 * self.zoom)) as usize).max(3);
+    /// A text at `at`, shortened past the longest shown.
+    fn text_at(&self, text: &str, at: Pos2, align: Align2) {
         self.painter.text(
             at,
             align,
-            elide(text, max_chars),
-            self.font(11.0),
+            shortened(text).0,
+            self.mono(OPERAND_FONT_PX),
             self.line,
         );
     }
@@ -401,12 +507,11 @@ impl PaintContext<'_> {
         } else {
             self.line
         };
-        let max_chars = ((frame.width() / (6.5 * self.zoom)) as usize).max(3);
         self.painter.text(
-            pos2(frame.right() - 2.0 * self.zoom, frame.center().y),
+            pos2(frame.right(), frame.center().y),
             Align2::RIGHT_CENTER,
-            elide(shown, max_chars),
-            self.font(11.0),
+            shortened(shown).0,
+            self.mono(OPERAND_FONT_PX),
             color,
         );
         if let (Some(online), Some(id)) = (self.online, element.id)
@@ -462,7 +567,7 @@ impl PaintContext<'_> {
             center,
             Align2::CENTER_CENTER,
             letter,
-            self.font(10.0),
+            self.mono(9.0),
             self.line,
         );
     }
@@ -483,16 +588,5 @@ impl PaintContext<'_> {
             self.font(11.0),
             self.line,
         );
-    }
-}
-
-/// `text` cut to `max_chars` characters with an ellipsis.
-fn elide(text: &str, max_chars: usize) -> String {
-    if text.chars().count() <= max_chars {
-        text.to_owned()
-    } else {
-        let mut short: String = text.chars().take(max_chars.saturating_sub(1)).collect();
-        short.push('…');
-        short
     }
 }

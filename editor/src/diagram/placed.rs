@@ -155,6 +155,18 @@ pub enum InsertTarget {
     },
 }
 
+impl Shape {
+    /// The text the user wrote for the element: its operand, variable or jump label.
+    pub fn text(&self) -> Option<&str> {
+        match self {
+            Self::Contact { text, .. } | Self::Variable { text, .. } => Some(text),
+            Self::Coil { variable, .. } | Self::Assignment { variable, .. } => Some(variable),
+            Self::Jump { label } => Some(label),
+            Self::Return | Self::Group | Self::Box { .. } => None,
+        }
+    }
+}
+
 impl NetworkLayout {
     /// The element drawn at `pos` (in cells), the innermost when several overlap.
     pub fn element_at(&self, pos: Pos2) -> Option<&PlacedElement> {

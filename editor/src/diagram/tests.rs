@@ -579,3 +579,124 @@ fn the_input_assistant_lists_variables_and_blocks_and_fills_the_operand() {
         [FlowNode::Operand(operand)] if operand.text == "stop"
     ));
 }
+
+#[test]
+fn a_toolbox_item_clicked_is_inserted_at_the_selection() {
+    let mut harness = harness(one_rung(), DiagramView::Ladder);
+    harness
+        .state_mut()
+        .editor
+        .select(Some(0), vec![ElementId(1)]);
+    harness.run_steps(2);
+    harness.get_by_label("Negated contact").click();
+    harness.run_steps(3);
+    let host = harness.state();
+    assert_eq!(host.changes, 1);
+    // Like Ctrl+K, the contact goes left of the selected one.
+    let negated: Vec<_> = host.body[0]
+        .rung
+        .iter()
+        .map(|node| match node {
+            FlowNode::Operand(operand) => (operand.text.clone(), operand.negated),
+            other => (format!("{other:?}"), false),
+        })
+        .collect();
+    assert_eq!(
+        negated,
+        [(String::new(), true), ("start".to_owned(), false)]
+    );
+}
+
+#[test]
+fn a_common_block_clicked_in_the_toolbox_is_inserted_with_its_signature_pins() {
+    let mut harness = harness(one_rung(), DiagramView::Ladder);
+    harness
+        .state_mut()
+        .editor
+        .select(Some(0), vec![ElementId(1)]);
+    harness.run_steps(2);
+    harness.get_by_label("TON").click();
+    harness.run_steps(3);
+    // A function block asks for its instance at once.
+    type_and_enter(&mut harness, "delay");
+    let host = harness.state();
+    let Some(FlowNode::Block(block)) = host.body[0].rung.get(1) else {
+        panic!("no box after the contact: {:?}", host.body[0].rung);
+    };
+    let pins: Vec<_> = block
+        .inputs
+        .iter()
+        .map(|input| input.pin.as_str())
+        .collect();
+    assert_eq!((block.type_name.as_str(), pins), ("TON", vec!["IN", "PT"]));
+    assert_eq!(block.instance, "delay");
+    // A block the project does not know is refused, not inserted without pins.
+    harness.get_by_label("SEL").click();
+    harness.run_steps(3);
+    assert_eq!(
+        harness.state().refusals,
+        [DiagramRefusal::UnknownBlock("SEL".into())]
+    );
+}
+
+#[test]
+fn a_diagnostic_on_a_pin_marks_the_pin_and_names_it_on_hover() {
+    let mut body = one_rung();
+    body[0].rung.push(project_model::new_box(
+        "TON",
+        "delay",
+        &["IN", "PT"],
+        &["Q", "ET"],
+    ));
+    let id = ElementId(3);
+    if let FlowNode::Block(block) = &mut body[0].rung[1] {
+        block.id = id;
+    }
+    let mut harness = harness(body, DiagramView::Ladder);
+    harness
+        .state_mut()
+        .editor
+        .set_diagnostics(vec![ElementDiagnostic {
+            network: 0,
+            element: Some(id),
+            pin: Some("PT".into()),
+            severity: Severity::Warning,
+            code: "E0301".into(),
+            message: "PT expects TIME".into(),
+        }]);
+    harness.run_steps(2);
+    let editor = &harness.state().editor;
+    assert_eq!(
+        editor.pin_marks.get(&(id, "PT".to_owned())),
+        Some(&Severity::Warning)
+    );
+    assert_eq!(editor.pin_marks.len(), 1);
+    let rect = editor.element_screen_rect(id).expect("the box is drawn");
+    harness.hover_at(rect.center());
+    harness.run_steps(3);
+    assert!(
+        harness
+            .query_by_label_contains("E0301 (PT): PT expects TIME")
+            .is_some()
+    );
+}
+
+#[test]
+fn a_shortened_operand_shows_in_full_on_hover() {
+    let long = "the_conveyor_infeed_photo_eye_of_line_two";
+    let mut harness = harness(
+        vec![Network {
+            rung: vec![contact(1, long)],
+            ..Network::default()
+        }],
+        DiagramView::Ladder,
+    );
+    let rect = harness
+        .state()
+        .editor
+        .element_screen_rect(ElementId(1))
+        .expect("the contact is drawn");
+    harness.hover_at(rect.center());
+    harness.run_steps(3);
+    assert!(harness.query_by_label_contains(long).is_some());
+}

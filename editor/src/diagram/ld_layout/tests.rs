@@ -154,7 +154,7 @@ fn a_box_has_its_operands_left_of_its_pins_and_several_coils_fan_out() {
         ..Network::default()
     };
     let layout = ld_layout(&network, 0);
-    assert_at(&layout, 2, (2.0, 0.0), (2.0, 2.0));
+    assert_at(&layout, 2, (2.0, 0.0), (1.5, 2.0));
     assert_at(&layout, 3, (1.0, 1.0), (1.0, 1.0));
     assert!(matches!(
         &layout.element(ElementId(3)).map(|element| &element.shape),
@@ -179,12 +179,12 @@ fn a_box_has_its_operands_left_of_its_pins_and_several_coils_fan_out() {
         layout
             .elements
             .iter()
-            .any(|element| element.rect.min == pos2(4.0, 1.0)
+            .any(|element| element.rect.min == pos2(3.5, 1.0)
                 && matches!(&element.shape, Shape::Variable { text, .. } if text == "elapsed"))
     );
-    assert_eq!(layout.size, vec2(7.0, 2.0));
-    assert_at(&layout, 4, (6.0, 0.0), (1.0, 1.0));
-    assert_at(&layout, 5, (6.0, 1.0), (1.0, 1.0));
+    assert_eq!(layout.size, vec2(6.5, 2.0));
+    assert_at(&layout, 4, (5.5, 0.0), (1.0, 1.0));
+    assert_at(&layout, 5, (5.5, 1.0), (1.0, 1.0));
 }
 
 #[test]
@@ -208,4 +208,31 @@ fn an_empty_network_offers_its_rung_and_outputs_for_insertion() {
             }
         ]
     );
+}
+
+#[test]
+fn a_long_operand_widens_its_contact_and_a_long_coil_stays_at_the_right_rail() {
+    let long = "conveyor_infeed_photo_eye";
+    let network = Network {
+        rung: vec![contact(1, long), contact(2, "b")],
+        outputs: vec![coil(3, "belt_running_and_ready_to_feed")],
+        ..Network::default()
+    };
+    let layout = ld_layout(&network, 0);
+    let rect_of = |id: u32| {
+        layout
+            .element(ElementId(id))
+            .map(|element| element.rect)
+            .unwrap_or(Rect::NOTHING)
+    };
+    let wide = operand_cells(long, 1.0);
+    assert!(wide > 1.0);
+    assert_eq!(
+        rect_of(1),
+        Rect::from_min_size(pos2(0.0, 0.0), vec2(wide, 1.0))
+    );
+    assert_eq!(rect_of(2).left(), wide);
+    // The coil is as wide as its variable and ends at the right rail.
+    assert!(rect_of(3).width() > 1.0);
+    assert_eq!(rect_of(3).right(), layout.size.x);
 }
