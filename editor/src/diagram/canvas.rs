@@ -252,8 +252,19 @@ impl DiagramEditor {
                         }),
                 )
                 .collect();
-            if !messages.is_empty() {
-                response.show_tooltip_text(messages.join("\n"));
+            if !messages.is_empty()
+                && let Some(at) = self.element_screen_rect(element)
+            {
+                // The tooltip belongs to the element, not to the canvas, whose own tooltip
+                // would go below the whole canvas, far from what it explains.
+                let text = messages.join("\n");
+                egui::Tooltip::always_open(
+                    ui.ctx().clone(),
+                    response.layer_id,
+                    response.id.with("element tooltip"),
+                    at,
+                )
+                .show(|ui| ui.label(text));
             }
         }
     }

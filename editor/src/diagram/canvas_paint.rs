@@ -144,7 +144,20 @@ impl DiagramEditor {
             ),
         );
         if selected {
-            painter.rect_filled(block, 2.0 * zoom, context.palette.diagram_selection);
+            // A light tint of the header and a thin outline, as CODESYS marks a selected
+            // network; a fill over the whole drawing would hide its lines and online colours.
+            let header = Rect::from_min_size(top, vec2(block.width(), HEADER_HEIGHT_PX * zoom));
+            painter.rect_filled(
+                header,
+                2.0 * zoom,
+                context.palette.diagram_selection.gamma_multiply(0.6),
+            );
+            painter.rect_stroke(
+                block,
+                2.0 * zoom,
+                Stroke::new(1.0, context.palette.power_on),
+                egui::StrokeKind::Inside,
+            );
         }
         painter.line_segment(
             [block.left_bottom(), block.right_bottom()],
