@@ -800,3 +800,39 @@ fn a_diagnostic_tooltip_is_shown_at_its_element() {
         "tooltip at {tip:?}, element at {rect:?}"
     );
 }
+
+#[test]
+fn the_fbd_toolbox_offers_inputs_and_assignments_mapped_to_the_same_edits() {
+    let mut harness = harness(one_rung(), DiagramView::FunctionBlock);
+    assert!(harness.query_by_label("Contact").is_none());
+    assert!(harness.query_by_label("Coil").is_none());
+    harness
+        .state_mut()
+        .editor
+        .select(Some(0), vec![ElementId(1)]);
+    harness.run_steps(2);
+    harness.get_by_label("Set assignment").click();
+    harness.run_steps(3);
+    assert!(matches!(
+        harness.state().body[0].outputs.as_slice(),
+        [NetworkOutput::Coil(_), NetworkOutput::Coil(set)] if set.kind == project_model::CoilKind::Set
+    ));
+    harness
+        .state_mut()
+        .editor
+        .select(Some(0), vec![ElementId(1)]);
+    harness.run_steps(2);
+    harness.get_by_label("Negation").click();
+    harness.run_steps(3);
+    harness.get_by_label("Input").click();
+    harness.run_steps(3);
+    let inputs: Vec<_> = harness.state().body[0]
+        .rung
+        .iter()
+        .map(|node| match node {
+            FlowNode::Operand(operand) => (operand.text.clone(), operand.negated),
+            other => (format!("{other:?}"), false),
+        })
+        .collect();
+    assert_eq!(inputs, [(String::new(), false), ("start".to_owned(), true)]);
+}
