@@ -29,6 +29,7 @@ impl DiagramEditor {
             weak: visuals.weak_text_color(),
             zoom: self.zoom,
             cell: self.cell_px(),
+            view: self.view,
             selected: &selected,
             diagnostics: &self.marks,
             pin_diagnostics: &self.pin_marks,

@@ -26,6 +26,10 @@ pub(super) fn cell_size_px(view: DiagramView) -> egui::Vec2 {
     }
 }
 
+/// How far below its element's top an LD box's frame starts when its instance is named above
+/// it, in points at zoom 1: the height of an operand's line.
+const INSTANCE_ROOM_PX: f32 = 15.0;
+
 /// Half the height of a contact's or coil's symbol, in points at zoom 1.
 const SYMBOL_HALF_HEIGHT_PX: f32 = 9.0;
 
@@ -58,6 +62,8 @@ pub(super) struct PaintContext<'a> {
     pub zoom: f32,
     /// The size of a grid cell at zoom 1, in points.
     pub cell: egui::Vec2,
+    /// LD or FBD.
+    pub view: DiagramView,
     /// The selected elements.
     pub selected: &'a HashSet<ElementId>,
     /// The worst severity of the diagnostics on each element.
@@ -357,7 +363,13 @@ impl PaintContext<'_> {
         outputs: &[PinMark],
         element: &PlacedElement,
     ) {
-        let frame = rect.shrink2(vec2(BOX_LEAD_PX, 3.0) * self.zoom);
+        let mut frame = rect.shrink2(vec2(BOX_LEAD_PX, 3.0) * self.zoom);
+        if self.view == DiagramView::Ladder && !instance.is_empty() {
+            // An LD box starts on the row of the operands above the contacts, so its instance
+            // name stands where they do, inside the element, and not over the network's
+            // header above it.
+            frame.min.y = rect.top() + INSTANCE_ROOM_PX * self.zoom;
+        }
         let stroke = self.stroke(Power::None);
         self.painter
             .rect_stroke(frame, 2.0 * self.zoom, stroke, StrokeKind::Inside);
