@@ -836,3 +836,21 @@ fn the_fbd_toolbox_offers_inputs_and_assignments_mapped_to_the_same_edits() {
         .collect();
     assert_eq!(inputs, [(String::new(), false), ("start".to_owned(), true)]);
 }
+
+#[test]
+fn tab_takes_the_highlighted_completion_too() {
+    let mut harness = harness(one_rung(), DiagramView::Ladder);
+    harness
+        .state_mut()
+        .editor
+        .select(Some(0), vec![ElementId(2)]);
+    harness.run_steps(2);
+    harness.event(Event::Text("sto".to_owned()));
+    harness.run_steps(3);
+    harness.key_press(Key::Tab);
+    harness.run_steps(3);
+    assert!(matches!(
+        harness.state().body[0].outputs.as_slice(),
+        [NetworkOutput::Coil(coil)] if coil.variable == "stop"
+    ));
+}
