@@ -45,6 +45,23 @@ pub(super) fn operand_badge_anchor(rect: Rect, row_height: f32, zoom: f32) -> Po
     )
 }
 
+/// The size of an online value's font, in points at zoom 1.
+const BADGE_FONT_PX: f32 = 9.5;
+
+/// The advance of a monospace character per point of font size (egui's default monospace font
+/// is a little narrower; the estimate errs on the safe side).
+const MONO_CHAR_WIDTH: f32 = 0.62;
+
+/// `text` cut to at most `chars` characters, the last one an ellipsis when it was cut.
+fn fitted(text: &str, chars: usize) -> String {
+    if text.chars().count() <= chars {
+        return text.to_owned();
+    }
+    let mut cut: String = text.chars().take(chars.saturating_sub(1)).collect();
+    cut.push('…');
+    cut
+}
+
 /// The height of a variable's frame around its text, in points at zoom 1.
 const TEXT_FRAME_HEIGHT_PX: f32 = 20.0;
 
@@ -526,10 +543,16 @@ impl PaintContext<'_> {
         if let (Some(online), Some(id)) = (self.online, element.id)
             && let Some(value) = online.values.get(&(id, None))
         {
+            // A long value (a string) is cut to its cell, so it never reaches a branch's
+            // line along the cell's edge; the full value is in the watch.
+            let room_chars = ((rect.width() - 8.0 * self.zoom)
+                / (BADGE_FONT_PX * MONO_CHAR_WIDTH * self.zoom))
+                .max(1.0) as usize;
+            let text = fitted(&value.text, room_chars);
             self.value_badge(
                 operand_badge_anchor(rect, self.cell.y * self.zoom, self.zoom),
                 Align2::CENTER_TOP,
-                &value.text,
+                &text,
                 value.forced,
             );
         }
@@ -600,7 +623,7 @@ impl PaintContext<'_> {
     fn badge_galley(&self, text: &str) -> std::sync::Arc<egui::Galley> {
         self.painter.layout_no_wrap(
             text.to_owned(),
-            FontId::monospace(9.5 * self.zoom),
+            FontId::monospace(BADGE_FONT_PX * self.zoom),
             self.line,
         )
     }
@@ -667,6 +690,13 @@ mod tests {
     }
 
     #[test]
+    fn a_long_value_is_cut_with_an_ellipsis() {
+        assert_eq!(fitted("TRUE", 10), "TRUE");
+        assert_eq!(fitted("'a long string value'", 8), "'a long…");
+        assert_eq!(fitted("'a long string value'", 8).chars().count(), 8);
+    }
+
+    #[test]
     fn a_value_under_a_contact_or_coil_covers_no_line_and_no_operand() {
         // Three contacts in parallel, as the example's stop network, then a coil.
         let network = Network {
@@ -699,8 +729,12 @@ mod tests {
                 pos2(rect.max.x * cell.x, rect.max.y * cell.y),
             )
         };
-        // "FALSE" at 9.5 points monospace, with the badge's margin.
-        let badge_size = vec2(5.0 * 9.5 * 0.62 + 3.0, 9.5 * 1.25 + 1.0);
+        // "FALSE" in the badge's font, with its margin.
+        let badge_size = vec2(
+            5.0 * BADGE_FONT_PX * MONO_CHAR_WIDTH + 3.0,
+            BADGE_FONT_PX * 1.25 + 1.0,
+        );
+
         let mut checked = 0;
         for element in &layout.elements {
             if !matches!(element.shape, Shape::Contact { .. } | Shape::Coil { .. }) {
