@@ -41,7 +41,7 @@ pub(super) fn operand_badge_anchor(rect: Rect, row_height: f32, zoom: f32) -> Po
     let mid_y = rect.top() + rect.height().min(row_height) * 0.5;
     pos2(
         rect.center().x,
-        mid_y + (SYMBOL_HALF_HEIGHT_PX + 1.0) * zoom,
+        mid_y + (SYMBOL_HALF_HEIGHT_PX + 2.0) * zoom,
     )
 }
 
