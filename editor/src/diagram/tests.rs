@@ -854,3 +854,15 @@ fn tab_takes_the_highlighted_completion_too() {
         [NetworkOutput::Coil(coil)] if coil.variable == "stop"
     ));
 }
+
+#[test]
+fn a_narrow_body_at_100_percent_needs_no_horizontal_scrolling() {
+    let harness = harness(one_rung(), DiagramView::FunctionBlock);
+    let canvas = harness.get_by_label("Body of Main").rect();
+    // The harness is 1000 points wide; the canvas fits in it beside the toolbox.
+    assert!(
+        canvas.right() <= 1000.0,
+        "the canvas reaches {}",
+        canvas.right()
+    );
+}
