@@ -147,9 +147,9 @@ pub(crate) fn editor_palette(dark_mode: bool) -> EditorPalette {
             Color32::from_rgb(0, 90, 220)
         },
         diagram_selection: if dark_mode {
-            Color32::from_rgba_unmultiplied(60, 110, 200, 90)
+            Color32::from_rgba_unmultiplied(60, 110, 200, 60)
         } else {
-            Color32::from_rgba_unmultiplied(120, 170, 250, 110)
+            Color32::from_rgba_unmultiplied(120, 170, 250, 70)
         },
         insert_point: Color32::from_rgb(30, 160, 70),
     }

@@ -273,6 +273,30 @@ fn power_flows_through_a_true_contact_while_online() {
     });
 }
 
+#[test]
+fn an_operand_bound_to_a_modbus_device_shows_the_value_the_program_uses() {
+    let project = example_copy(|_| {});
+    let mut harness = tall_studio(project.path());
+    harness.get_by_label("Scaling").focus();
+    harness.step();
+    harness.key_press(Key::Enter);
+    harness.run_steps(3);
+    login_with_download(&mut harness);
+    harness.key_press(Key::F5);
+    // GVL_Machine.rBeltSpeedActual is bound to the belt drive, unreachable here; its operands
+    // (3 and 10) still show the program's copy, as the recipe's speed (8) does.
+    let scaling = TextTarget::Pou("Scaling".to_owned());
+    wait_until(&mut harness, "the values of every operand", |app| {
+        app.diagram_editor(&scaling)
+            .and_then(|editor| editor.online())
+            .is_some_and(|online| {
+                [3, 8, 10]
+                    .iter()
+                    .all(|id| online.values.contains_key(&(ElementId(*id), None)))
+            })
+    });
+}
+
 /// The Interlock's variables as `name : type`.
 fn variables(app: &StudioApp) -> Vec<String> {
     match app

@@ -42,9 +42,20 @@ impl DiagramEditor {
         services: &dyn DiagramServices,
         frame: &mut FrameResult,
     ) -> Response {
-        // Half a view of room beyond the content, so a zoom can keep the point under the
-        // mouse where it is and the last network can be scrolled up from the bottom edge.
-        let size = (self.content_px * self.zoom).max(viewport.size()) + viewport.size() * 0.5;
+        // Half a view of room below the content, so the last network can be scrolled up from
+        // the bottom edge, and beside it once zoomed in, so a zoom keeps the point under the
+        // mouse where it is; at 100 % and below a horizontal scrollbar shows only when a
+        // network is wider than the pane.
+        let content = self.content_px * self.zoom;
+        let room_x = if self.zoom > 1.0 + f32::EPSILON {
+            viewport.width() * 0.5
+        } else {
+            0.0
+        };
+        let size = vec2(
+            content.x.max(viewport.width()) + room_x,
+            content.y.max(viewport.height()) + viewport.height() * 0.5,
+        );
         let (_, rect) = ui.allocate_space(size);
         let response = ui.interact(rect, id, Sense::click_and_drag());
         let enabled = ui.is_enabled();
@@ -252,8 +263,19 @@ impl DiagramEditor {
                         }),
                 )
                 .collect();
-            if !messages.is_empty() {
-                response.show_tooltip_text(messages.join("\n"));
+            if !messages.is_empty()
+                && let Some(at) = self.element_screen_rect(element)
+            {
+                // The tooltip belongs to the element, not to the canvas, whose own tooltip
+                // would go below the whole canvas, far from what it explains.
+                let text = messages.join("\n");
+                egui::Tooltip::always_open(
+                    ui.ctx().clone(),
+                    response.layer_id,
+                    response.id.with("element tooltip"),
+                    at,
+                )
+                .show(|ui| ui.label(text));
             }
         }
     }

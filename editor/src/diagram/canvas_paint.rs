@@ -5,6 +5,7 @@ use egui::{Align2, FontId, Pos2, Rect, Response, Stroke, Ui, vec2};
 
 use super::editor::{DiagramEditor, HEADER_HEIGHT_PX, LEFT_MARGIN_PX, NETWORK_GAP_PX};
 use super::paint::PaintContext;
+use super::placed::NetworkLayout;
 use super::toolbox::{ToolboxBlock, ToolboxItem};
 use super::types::DiagramView;
 use crate::EditorPalette;
@@ -28,6 +29,7 @@ impl DiagramEditor {
             weak: visuals.weak_text_color(),
             zoom: self.zoom,
             cell: self.cell_px(),
+            view: self.view,
             selected: &selected,
             diagnostics: &self.marks,
             pin_diagnostics: &self.pin_marks,
@@ -99,7 +101,8 @@ impl DiagramEditor {
         }
     }
 
-    /// Faint dots at the cell corners of network `index`'s drawing, so positions read as a grid.
+    /// Faint dots where the rows of network `index` meet the columns its elements start and
+    /// end at, so the grid lines up with elements sized to their texts.
     fn paint_grid(
         &self,
         painter: &egui::Painter,
@@ -107,16 +110,13 @@ impl DiagramEditor {
         index: usize,
         color: egui::Color32,
     ) {
-        let size = self.layouts[index].size;
+        let layout = &self.layouts[index];
         let color = color.gamma_multiply(0.35);
         let radius = 0.8 * self.zoom;
-        for row in 0..=size.y as usize {
-            for column in 0..=size.x as usize {
+        for column in grid_columns(layout) {
+            for row in 0..=layout.size.y as usize {
                 let at = origin
-                    + vec2(
-                        column as f32 * self.cell_px().x,
-                        row as f32 * self.cell_px().y,
-                    ) * self.zoom;
+                    + vec2(column * self.cell_px().x, row as f32 * self.cell_px().y) * self.zoom;
                 painter.circle_filled(at, radius, color);
             }
         }
@@ -144,7 +144,20 @@ impl DiagramEditor {
             ),
         );
         if selected {
-            painter.rect_filled(block, 2.0 * zoom, context.palette.diagram_selection);
+            // A light tint of the header and a thin outline, as CODESYS marks a selected
+            // network; a fill over the whole drawing would hide its lines and online colours.
+            let header = Rect::from_min_size(top, vec2(block.width(), HEADER_HEIGHT_PX * zoom));
+            painter.rect_filled(
+                header,
+                2.0 * zoom,
+                context.palette.diagram_selection.gamma_multiply(0.6),
+            );
+            painter.rect_stroke(
+                block,
+                2.0 * zoom,
+                Stroke::new(1.0, context.palette.power_on),
+                egui::StrokeKind::Inside,
+            );
         }
         painter.line_segment(
             [block.left_bottom(), block.right_bottom()],
@@ -208,5 +221,57 @@ impl DiagramEditor {
             };
             painter.circle_filled(top + vec2(4.0, 30.0) * zoom, 3.0 * zoom, color);
         }
+    }
+}
+
+/// The columns (in cells) where `layout`'s elements start or end, each once, left to right: a
+/// grid at whole cells would not line up with cells sized to their texts.
+pub(super) fn grid_columns(layout: &NetworkLayout) -> Vec<f32> {
+    let mut columns: Vec<f32> = layout
+        .elements
+        .iter()
+        .flat_map(|element| [element.rect.min.x, element.rect.max.x])
+        .collect();
+    columns.sort_by(f32::total_cmp);
+    columns.dedup_by(|a, b| (*a - *b).abs() < 0.01);
+    columns
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::diagram::ld_layout;
+    use project_model::{ElementId, FlowNode, Network, Operand};
+
+    #[test]
+    fn the_grid_columns_are_where_elements_start_and_end() {
+        let network = Network {
+            rung: vec![
+                FlowNode::Operand(Operand {
+                    id: ElementId(1),
+                    text: "a_rather_long_operand_name".to_owned(),
+                    ..Operand::default()
+                }),
+                FlowNode::Operand(Operand {
+                    id: ElementId(2),
+                    text: "b".to_owned(),
+                    ..Operand::default()
+                }),
+            ],
+            ..Network::default()
+        };
+        let layout = ld_layout(&network, 0);
+        let columns = grid_columns(&layout);
+        for element in &layout.elements {
+            for x in [element.rect.min.x, element.rect.max.x] {
+                assert!(
+                    columns.iter().any(|column| (column - x).abs() < 0.01),
+                    "{x}"
+                );
+            }
+        }
+        // The long operand's cell is wider than one, so its end is not on a whole cell.
+        assert!(columns.iter().any(|column| column.fract() > 0.01));
+        assert!(columns.windows(2).all(|pair| pair[0] < pair[1]));
     }
 }

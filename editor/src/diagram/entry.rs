@@ -47,16 +47,67 @@ pub(super) struct Entry {
     pub text: String,
     /// Whether the field has been given focus (done once, in its first frame).
     pub focused: bool,
+    /// The completion the arrow keys moved to, counted from the best one; reset when the text
+    /// changes.
+    pub highlighted: usize,
+    /// The text `highlighted` was chosen for.
+    highlighted_for: String,
 }
 
 impl Entry {
     pub fn new(target: EntryTarget, text: String) -> Self {
         Self {
             target,
+            highlighted_for: text.clone(),
             text,
             focused: false,
+            highlighted: 0,
         }
     }
+
+    /// The candidate Enter or Tab takes: none for an empty field or without candidates, the one
+    /// spelled as typed (any case) while nothing was chosen with the arrows, else the one the
+    /// arrows moved to.
+    fn highlighted_candidate(&self, candidates: &[CompletionItem]) -> Option<usize> {
+        if self.text.trim().is_empty() || candidates.is_empty() {
+            return None;
+        }
+        let typed = last_segment(self.text.trim());
+        let exact = candidates
+            .iter()
+            .position(|candidate| candidate.label.eq_ignore_ascii_case(typed));
+        let shown = candidates.len().min(MAX_CANDIDATES);
+        Some((exact.unwrap_or(0) + self.highlighted) % shown)
+    }
+}
+
+/// What follows the last dot of `text` (all of it without a dot): the part a member's
+/// completion replaces.
+fn last_segment(text: &str) -> &str {
+    text.rsplit_once('.').map_or(text, |(_, member)| member)
+}
+
+/// The field's text once `label` is accepted for what was typed: a member (`Q` after `tonA.`)
+/// replaces only what follows the last dot, anything else the whole text.
+pub(super) fn accepted_text(typed: &str, label: &str) -> String {
+    match typed.trim().rsplit_once('.') {
+        Some((path, _)) if !label.contains('.') => format!("{path}.{label}"),
+        _ => label.to_owned(),
+    }
+}
+
+/// The detail of a completion row without the candidate's own name, which the row already
+/// shows (`tWarn : TIME` gives `TIME`, `FUNCTION LIMIT` gives `FUNCTION`).
+pub(super) fn detail_without_label(label: &str, detail: &str) -> String {
+    let words: Vec<&str> = detail
+        .split_whitespace()
+        .filter(|word| !word.eq_ignore_ascii_case(label))
+        .collect();
+    let words = match words.as_slice() {
+        [":", rest @ ..] => rest,
+        all => all,
+    };
+    words.join(" ")
 }
 
 impl DiagramEditor {
@@ -135,6 +186,28 @@ impl DiagramEditor {
             target if self.completes_blocks(target) => services.blocks(&entry.text),
             _ => services.variables(&entry.text),
         };
+        if entry.text != entry.highlighted_for {
+            entry.highlighted_for = entry.text.clone();
+            entry.highlighted = 0;
+        }
+        let shown = candidates.len().min(MAX_CANDIDATES);
+        // The arrows move through the candidates, as in the ST editor; they are taken before
+        // the field sees them, which would move its cursor instead.
+        if shown > 0 && entry.focused {
+            let (down, up) = ctx.input_mut(|input| {
+                (
+                    input.consume_key(egui::Modifiers::NONE, Key::ArrowDown),
+                    input.consume_key(egui::Modifiers::NONE, Key::ArrowUp),
+                )
+            });
+            if down {
+                entry.highlighted = (entry.highlighted + 1) % shown;
+            }
+            if up {
+                entry.highlighted = (entry.highlighted + shown - 1) % shown;
+            }
+        }
+        let highlighted = entry.highlighted_candidate(&candidates);
         let mut commit = None;
         let mut cancel = false;
         let mut left = false;
@@ -163,20 +236,31 @@ impl DiagramEditor {
                     if ui.input(|input| input.key_pressed(Key::Escape)) {
                         cancel = true;
                     } else if response.lost_focus() {
-                        if ui.input(|input| input.key_pressed(Key::Enter)) {
-                            commit = Some(entry.text.clone());
+                        // Enter and Tab take the highlighted completion, as CODESYS and the ST
+                        // editor do; what was typed stays when nothing is highlighted.
+                        if ui.input(|input| {
+                            input.key_pressed(Key::Enter) || input.key_pressed(Key::Tab)
+                        }) {
+                            commit = Some(match highlighted {
+                                Some(index) => accepted_text(&entry.text, &candidates[index].label),
+                                None => entry.text.clone(),
+                            });
                         } else {
                             left = true;
                         }
                     }
-                    for candidate in candidates.iter().take(MAX_CANDIDATES) {
-                        let text = if candidate.detail.is_empty() {
+                    for (index, candidate) in candidates.iter().take(MAX_CANDIDATES).enumerate() {
+                        let detail = detail_without_label(&candidate.label, &candidate.detail);
+                        let text = if detail.is_empty() {
                             candidate.label.clone()
                         } else {
-                            format!("{}  {}", candidate.label, candidate.detail)
+                            format!("{}  {detail}", candidate.label)
                         };
-                        if ui.selectable_label(false, text).clicked() {
-                            commit = Some(candidate.label.clone());
+                        if ui
+                            .selectable_label(highlighted == Some(index), text)
+                            .clicked()
+                        {
+                            commit = Some(accepted_text(&entry.text, &candidate.label));
                         }
                     }
                 });
@@ -328,7 +412,8 @@ impl DiagramEditor {
                         ] {
                             ui.strong(heading);
                             for item in items {
-                                let text = format!("{}  {}", item.label, item.detail);
+                                let detail = detail_without_label(&item.label, &item.detail);
+                                let text = format!("{}  {detail}", item.label);
                                 if ui.selectable_label(false, text).clicked() {
                                     chosen = Some(item.label.clone());
                                 }

@@ -12,8 +12,8 @@ use super::types::{DiagramOnline, DiagramView};
 use crate::{EditorPalette, Severity};
 
 /// The size of a grid cell of the LD view at zoom 1, in points: a contact with its operand
-/// above it. Cells are as wide in both views, so the layouts measure texts the same way.
-pub(super) const CELL_SIZE_PX: egui::Vec2 = egui::Vec2::new(84.0, 44.0);
+/// above it and its online value under it. Cells are as wide in both views, so the layouts measure texts the same way.
+pub(super) const CELL_SIZE_PX: egui::Vec2 = egui::Vec2::new(84.0, 48.0);
 /// The height of a row of the FBD view at zoom 1, in points: one pin with its name, the pitch
 /// of CODESYS's FBD boxes, since no operand stands above a line there.
 const FBD_ROW_HEIGHT_PX: f32 = 30.0;
@@ -24,6 +24,42 @@ pub(super) fn cell_size_px(view: DiagramView) -> egui::Vec2 {
         DiagramView::Ladder => CELL_SIZE_PX,
         DiagramView::FunctionBlock => vec2(CELL_SIZE_PX.x, FBD_ROW_HEIGHT_PX),
     }
+}
+
+/// How far below its element's top an LD box's frame starts when its instance is named above
+/// it, in points at zoom 1: the height of an operand's line.
+const INSTANCE_ROOM_PX: f32 = 15.0;
+
+/// Half the height of a contact's or coil's symbol, in points at zoom 1.
+const SYMBOL_HALF_HEIGHT_PX: f32 = 9.0;
+
+/// Where the online value of a contact or coil drawn in `rect` (screen points, rows
+/// `row_height` high) goes: under the symbol, centred on it, its top edge at the point given.
+/// The rung line runs through the symbol's middle and a branch's lines along the cell's edges,
+/// and the operand stands above, so nothing else is drawn there.
+pub(super) fn operand_badge_anchor(rect: Rect, row_height: f32, zoom: f32) -> Pos2 {
+    let mid_y = rect.top() + rect.height().min(row_height) * 0.5;
+    pos2(
+        rect.center().x,
+        mid_y + (SYMBOL_HALF_HEIGHT_PX + 2.0) * zoom,
+    )
+}
+
+/// The size of an online value's font, in points at zoom 1.
+const BADGE_FONT_PX: f32 = 9.5;
+
+/// The advance of a monospace character per point of font size (egui's default monospace font
+/// is a little narrower; the estimate errs on the safe side).
+const MONO_CHAR_WIDTH: f32 = 0.62;
+
+/// `text` cut to at most `chars` characters, the last one an ellipsis when it was cut.
+fn fitted(text: &str, chars: usize) -> String {
+    if text.chars().count() <= chars {
+        return text.to_owned();
+    }
+    let mut cut: String = text.chars().take(chars.saturating_sub(1)).collect();
+    cut.push('…');
+    cut
 }
 
 /// The height of a variable's frame around its text, in points at zoom 1.
@@ -43,6 +79,8 @@ pub(super) struct PaintContext<'a> {
     pub zoom: f32,
     /// The size of a grid cell at zoom 1, in points.
     pub cell: egui::Vec2,
+    /// LD or FBD.
+    pub view: DiagramView,
     /// The selected elements.
     pub selected: &'a HashSet<ElementId>,
     /// The worst severity of the diagnostics on each element.
@@ -157,7 +195,7 @@ impl PaintContext<'_> {
                 edge,
             } => {
                 let center = pos2(rect.center().x, mid_y);
-                let half = vec2(7.0, 9.0) * self.zoom;
+                let half = vec2(7.0, SYMBOL_HALF_HEIGHT_PX) * self.zoom;
                 self.painter.line_segment(
                     [pos2(rect.left(), mid_y), pos2(center.x - half.x, mid_y)],
                     self.stroke(element.power_in),
@@ -342,11 +380,17 @@ impl PaintContext<'_> {
         outputs: &[PinMark],
         element: &PlacedElement,
     ) {
-        let frame = rect.shrink2(vec2(BOX_LEAD_PX, 3.0) * self.zoom);
+        let mut frame = rect.shrink2(vec2(BOX_LEAD_PX, 3.0) * self.zoom);
+        if self.view == DiagramView::Ladder && !instance.is_empty() {
+            // An LD box starts on the row of the operands above the contacts, so its instance
+            // name stands where they do, inside the element, and not over the network's
+            // header above it.
+            frame.min.y = rect.top() + INSTANCE_ROOM_PX * self.zoom;
+        }
         let stroke = self.stroke(Power::None);
         self.painter
             .rect_stroke(frame, 2.0 * self.zoom, stroke, StrokeKind::Inside);
-        self.painter.text(
+        let title = self.painter.text(
             pos2(frame.center().x, frame.top() + 2.0 * self.zoom),
             Align2::CENTER_TOP,
             type_name,
@@ -367,6 +411,8 @@ impl PaintContext<'_> {
         let marked = element.id.filter(|id| self.diagnostics.contains_key(id));
         let pin_severity =
             |pin: &PinMark| marked.and_then(|id| self.pin_diagnostics.get(&(id, pin.name.clone())));
+        // Where each input row's name ends, so an output's value on that row stays clear of it.
+        let mut input_right: Vec<(f32, f32)> = Vec::with_capacity(inputs.len());
         for pin in inputs {
             let y = pin_y(pin);
             self.painter.line_segment(
@@ -392,6 +438,7 @@ impl PaintContext<'_> {
             if let Some(severity) = pin_severity(pin) {
                 self.pin_mark(pos2(rect.left(), y), name, *severity);
             }
+            input_right.push((pin.row, name.right()));
         }
         let own = element.id.map_or(Power::None, Power::After);
         for pin in outputs {
@@ -416,13 +463,34 @@ impl PaintContext<'_> {
             if let (Some(online), Some(id)) = (self.online, element.id)
                 && let Some(value) = online.values.get(&(id, Some(pin.name.clone())))
             {
-                // Inside the box under the pin's name, where no line or variable is drawn.
-                self.value_badge(
-                    pos2(frame.right() - 3.0 * self.zoom, y + 5.0 * self.zoom),
-                    Align2::RIGHT_TOP,
-                    &value.text,
-                    value.forced,
-                );
+                // Inside the box, on the pin's row left of its name when it fits between the
+                // names, else under the name; never over the box's frame or a line.
+                let width = self.badge_galley(&value.text).size().x + 3.0 * self.zoom;
+                let row_left = input_right
+                    .iter()
+                    .find(|(row, _)| (*row - pin.row).abs() < 0.01)
+                    .map_or(frame.left(), |(_, right)| *right);
+                // The type name may stand on the first row, between its names.
+                let row_left = if title.y_range().contains(y) {
+                    row_left.max(title.right())
+                } else {
+                    row_left
+                };
+                if name.left() - 4.0 * self.zoom - width > row_left + 2.0 * self.zoom {
+                    self.value_badge(
+                        pos2(name.left() - 4.0 * self.zoom, y),
+                        Align2::RIGHT_CENTER,
+                        &value.text,
+                        value.forced,
+                    );
+                } else {
+                    self.value_badge(
+                        pos2(frame.right() - 3.0 * self.zoom, y + 6.0 * self.zoom),
+                        Align2::RIGHT_TOP,
+                        &value.text,
+                        value.forced,
+                    );
+                }
             }
         }
     }
@@ -475,10 +543,16 @@ impl PaintContext<'_> {
         if let (Some(online), Some(id)) = (self.online, element.id)
             && let Some(value) = online.values.get(&(id, None))
         {
+            // A long value (a string) is cut to its cell, so it never reaches a branch's
+            // line along the cell's edge; the full value is in the watch.
+            let room_chars = ((rect.width() - 8.0 * self.zoom)
+                / (BADGE_FONT_PX * MONO_CHAR_WIDTH * self.zoom))
+                .max(1.0) as usize;
+            let text = fitted(&value.text, room_chars);
             self.value_badge(
-                rect.left_bottom() - vec2(0.0, 12.0 * self.zoom),
-                Align2::LEFT_TOP,
-                &value.text,
+                operand_badge_anchor(rect, self.cell.y * self.zoom, self.zoom),
+                Align2::CENTER_TOP,
+                &text,
                 value.forced,
             );
         }
@@ -528,13 +602,9 @@ impl PaintContext<'_> {
 
     /// A value in a small filled box anchored at `at`.
     fn value_badge(&self, at: Pos2, anchor: Align2, text: &str, forced: bool) {
-        let galley = self.painter.layout_no_wrap(
-            text.to_owned(),
-            FontId::monospace(10.0 * self.zoom),
-            self.line,
-        );
+        let galley = self.badge_galley(text);
         let text_rect = anchor.anchor_size(at, galley.size());
-        let rect = text_rect.expand(1.5 * self.zoom);
+        let rect = text_rect.expand2(vec2(1.5, 0.5) * self.zoom);
         let fill = if forced {
             self.palette.forced_fill
         } else {
@@ -547,6 +617,15 @@ impl PaintContext<'_> {
             self.line
         };
         self.painter.galley(text_rect.min, galley, color);
+    }
+
+    /// A value's text as a badge shows it.
+    fn badge_galley(&self, text: &str) -> std::sync::Arc<egui::Galley> {
+        self.painter.layout_no_wrap(
+            text.to_owned(),
+            FontId::monospace(BADGE_FONT_PX * self.zoom),
+            self.line,
+        )
     }
 
     fn negation_circle(&self, center: Pos2) {
@@ -588,5 +667,106 @@ impl PaintContext<'_> {
             self.font(11.0),
             self.line,
         );
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::diagram::ld_layout;
+    use project_model::{Coil, ElementId, FlowNode, Network, NetworkOutput, Operand, Parallel};
+
+    fn contact(id: u32, text: &str) -> FlowNode {
+        FlowNode::Operand(Operand {
+            id: ElementId(id),
+            text: text.to_owned(),
+            ..Operand::default()
+        })
+    }
+
+    /// Whether the segment from `a` to `b` (horizontal or vertical) crosses `rect`.
+    fn crosses(rect: Rect, a: Pos2, b: Pos2) -> bool {
+        Rect::from_two_pos(a, b).expand(0.5).intersects(rect)
+    }
+
+    #[test]
+    fn a_long_value_is_cut_with_an_ellipsis() {
+        assert_eq!(fitted("TRUE", 10), "TRUE");
+        assert_eq!(fitted("'a long string value'", 8), "'a long…");
+        assert_eq!(fitted("'a long string value'", 8).chars().count(), 8);
+    }
+
+    #[test]
+    fn a_value_under_a_contact_or_coil_covers_no_line_and_no_operand() {
+        // Three contacts in parallel, as the example's stop network, then a coil.
+        let network = Network {
+            rung: vec![FlowNode::Parallel(Parallel {
+                id: ElementId(9),
+                branches: vec![
+                    project_model::Branch {
+                        rung: vec![contact(1, "GVL_IO.xStopButton")],
+                    },
+                    project_model::Branch {
+                        rung: vec![contact(2, "b")],
+                    },
+                    project_model::Branch {
+                        rung: vec![contact(3, "GVL_Machine.xBatchComplete")],
+                    },
+                ],
+            })],
+            outputs: vec![NetworkOutput::Coil(Coil {
+                id: ElementId(4),
+                variable: "xRunRequest".to_owned(),
+                ..Coil::default()
+            })],
+            ..Network::default()
+        };
+        let layout = ld_layout(&network, 0);
+        let cell = CELL_SIZE_PX;
+        let to_px = |rect: Rect| {
+            Rect::from_min_max(
+                pos2(rect.min.x * cell.x, rect.min.y * cell.y),
+                pos2(rect.max.x * cell.x, rect.max.y * cell.y),
+            )
+        };
+        // "FALSE" in the badge's font, with its margin.
+        let badge_size = vec2(
+            5.0 * BADGE_FONT_PX * MONO_CHAR_WIDTH + 3.0,
+            BADGE_FONT_PX * 1.25 + 1.0,
+        );
+
+        let mut checked = 0;
+        for element in &layout.elements {
+            if !matches!(element.shape, Shape::Contact { .. } | Shape::Coil { .. }) {
+                continue;
+            }
+            checked += 1;
+            let rect = to_px(element.rect);
+            let badge =
+                Align2::CENTER_TOP.anchor_size(operand_badge_anchor(rect, cell.y, 1.0), badge_size);
+            for wire in &layout.wires {
+                for pair in wire.points.windows(2) {
+                    let a = pos2(pair[0].x * cell.x, pair[0].y * cell.y);
+                    let b = pos2(pair[1].x * cell.x, pair[1].y * cell.y);
+                    assert!(
+                        !crosses(badge, a, b),
+                        "{:?} covers a line {a:?}-{b:?}",
+                        element.id
+                    );
+                }
+            }
+            for other in &layout.elements {
+                let other_rect = to_px(other.rect);
+                // Every operand's text is in the top 16 points of its cell.
+                let text = Rect::from_min_size(other_rect.min, vec2(other_rect.width(), 16.0));
+                assert!(
+                    !badge.intersects(text),
+                    "{:?} covers the operand of {:?}",
+                    element.id,
+                    other.id
+                );
+            }
+        }
+        assert_eq!(checked, 4);
     }
 }

@@ -700,3 +700,169 @@ fn a_shortened_operand_shows_in_full_on_hover() {
     harness.run_steps(3);
     assert!(harness.query_by_label_contains(long).is_some());
 }
+
+#[test]
+fn enter_takes_the_highlighted_completion_and_the_arrows_move_it() {
+    let mut harness = harness(one_rung(), DiagramView::Ladder);
+    harness
+        .state_mut()
+        .editor
+        .select(Some(0), vec![ElementId(1)]);
+    harness.run_steps(2);
+    type_and_enter(&mut harness, "mo");
+    assert!(matches!(
+        harness.state().body[0].rung.as_slice(),
+        [FlowNode::Operand(operand)] if operand.text == "motor"
+    ));
+    // "st" offers start and stop; the down arrow moves from the first to the second.
+    harness.run_steps(2);
+    harness
+        .state_mut()
+        .editor
+        .select(Some(0), vec![ElementId(1)]);
+    harness.run_steps(2);
+    harness.event(Event::Text("st".to_owned()));
+    harness.run_steps(3);
+    harness.key_press(Key::ArrowDown);
+    harness.run_steps(2);
+    harness.key_press(Key::Enter);
+    harness.run_steps(3);
+    assert!(matches!(
+        harness.state().body[0].rung.as_slice(),
+        [FlowNode::Operand(operand)] if operand.text == "stop"
+    ));
+}
+
+#[test]
+fn a_text_without_candidates_is_kept_as_typed_on_enter() {
+    let mut harness = harness(one_rung(), DiagramView::Ladder);
+    harness
+        .state_mut()
+        .editor
+        .select(Some(0), vec![ElementId(1)]);
+    harness.run_steps(2);
+    type_and_enter(&mut harness, "lamp");
+    assert!(matches!(
+        harness.state().body[0].rung.as_slice(),
+        [FlowNode::Operand(operand)] if operand.text == "lamp"
+    ));
+}
+
+#[test]
+fn a_member_completion_replaces_only_what_follows_the_dot() {
+    assert_eq!(entry::accepted_text("tonA.q", "Q"), "tonA.Q");
+    assert_eq!(entry::accepted_text("GVL.st.r", "rSpeed"), "GVL.st.rSpeed");
+    assert_eq!(entry::accepted_text("mo", "motor"), "motor");
+}
+
+#[test]
+fn a_completion_row_names_the_candidate_once() {
+    assert_eq!(
+        entry::detail_without_label("tWarningElapsed", "tWarningElapsed : TIME"),
+        "TIME"
+    );
+    assert_eq!(
+        entry::detail_without_label("LIMIT", "FUNCTION LIMIT"),
+        "FUNCTION"
+    );
+    assert_eq!(entry::detail_without_label("motor", "BOOL"), "BOOL");
+}
+
+#[test]
+fn a_diagnostic_tooltip_is_shown_at_its_element() {
+    let mut harness = harness(one_rung(), DiagramView::Ladder);
+    harness
+        .state_mut()
+        .editor
+        .set_diagnostics(vec![ElementDiagnostic {
+            network: 0,
+            element: Some(ElementId(1)),
+            pin: None,
+            severity: Severity::Error,
+            code: "E0101".into(),
+            message: "unknown name".into(),
+        }]);
+    harness.run_steps(2);
+    let rect = harness
+        .state()
+        .editor
+        .element_screen_rect(ElementId(1))
+        .expect("the contact is drawn");
+    harness.hover_at(rect.center());
+    harness.run_steps(3);
+    let tip = harness
+        .query_by_label_contains("E0101: unknown name")
+        .expect("the tooltip is shown");
+    let tip = tip.rect();
+    // Next to the element, not at the bottom of the 700 points high canvas.
+    assert!(
+        (tip.min.y - rect.max.y).abs() < 40.0 || (rect.min.y - tip.max.y).abs() < 40.0,
+        "tooltip at {tip:?}, element at {rect:?}"
+    );
+}
+
+#[test]
+fn the_fbd_toolbox_offers_inputs_and_assignments_mapped_to_the_same_edits() {
+    let mut harness = harness(one_rung(), DiagramView::FunctionBlock);
+    assert!(harness.query_by_label("Contact").is_none());
+    assert!(harness.query_by_label("Coil").is_none());
+    harness
+        .state_mut()
+        .editor
+        .select(Some(0), vec![ElementId(1)]);
+    harness.run_steps(2);
+    harness.get_by_label("Set assignment").click();
+    harness.run_steps(3);
+    assert!(matches!(
+        harness.state().body[0].outputs.as_slice(),
+        [NetworkOutput::Coil(_), NetworkOutput::Coil(set)] if set.kind == project_model::CoilKind::Set
+    ));
+    harness
+        .state_mut()
+        .editor
+        .select(Some(0), vec![ElementId(1)]);
+    harness.run_steps(2);
+    harness.get_by_label("Negation").click();
+    harness.run_steps(3);
+    harness.get_by_label("Input").click();
+    harness.run_steps(3);
+    let inputs: Vec<_> = harness.state().body[0]
+        .rung
+        .iter()
+        .map(|node| match node {
+            FlowNode::Operand(operand) => (operand.text.clone(), operand.negated),
+            other => (format!("{other:?}"), false),
+        })
+        .collect();
+    assert_eq!(inputs, [(String::new(), false), ("start".to_owned(), true)]);
+}
+
+#[test]
+fn tab_takes_the_highlighted_completion_too() {
+    let mut harness = harness(one_rung(), DiagramView::Ladder);
+    harness
+        .state_mut()
+        .editor
+        .select(Some(0), vec![ElementId(2)]);
+    harness.run_steps(2);
+    harness.event(Event::Text("sto".to_owned()));
+    harness.run_steps(3);
+    harness.key_press(Key::Tab);
+    harness.run_steps(3);
+    assert!(matches!(
+        harness.state().body[0].outputs.as_slice(),
+        [NetworkOutput::Coil(coil)] if coil.variable == "stop"
+    ));
+}
+
+#[test]
+fn a_narrow_body_at_100_percent_needs_no_horizontal_scrolling() {
+    let harness = harness(one_rung(), DiagramView::FunctionBlock);
+    let canvas = harness.get_by_label("Body of Main").rect();
+    // The harness is 1000 points wide; the canvas fits in it beside the toolbox.
+    assert!(
+        canvas.right() <= 1000.0,
+        "the canvas reaches {}",
+        canvas.right()
+    );
+}

@@ -28,6 +28,16 @@ pub struct DiagramTexts {
     pub reset_coil: String,
     /// The toolbox's box.
     pub block: String,
+    /// The FBD toolbox's input (a contact's operand in the LD view).
+    pub input: String,
+    /// The FBD toolbox's assignment (a coil in the LD view).
+    pub assignment: String,
+    /// The FBD toolbox's set assignment (a set coil in the LD view).
+    pub set_assignment: String,
+    /// The FBD toolbox's reset assignment (a reset coil in the LD view).
+    pub reset_assignment: String,
+    /// The FBD toolbox's negation of the selected input, output or pin.
+    pub negation: String,
     /// The toolbox's jump.
     pub jump: String,
     /// The toolbox's return.
@@ -71,6 +81,11 @@ impl Default for DiagramTexts {
             set_coil: "Set coil".to_owned(),
             reset_coil: "Reset coil".to_owned(),
             block: "Box".to_owned(),
+            input: "Input".to_owned(),
+            assignment: "Assignment".to_owned(),
+            set_assignment: "Set assignment".to_owned(),
+            reset_assignment: "Reset assignment".to_owned(),
+            negation: "Negation".to_owned(),
             jump: "Jump".to_owned(),
             return_: "Return".to_owned(),
             new_network: "Network".to_owned(),

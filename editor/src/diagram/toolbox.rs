@@ -12,7 +12,7 @@ use project_model::{
 use super::commands::DiagramCommand;
 use super::editor::{DiagramEditor, FrameResult};
 use super::placed::InsertTarget;
-use super::types::DiagramServices;
+use super::types::{DiagramServices, DiagramView};
 
 /// A box of a block from the toolbox's list of the blocks used most; the payload of a drag
 /// from it. Its pins come from [`DiagramServices::signature`] when it is inserted.
@@ -80,6 +80,27 @@ impl ToolboxItem {
         Self::Return,
         Self::Network,
     ];
+
+    /// The items of the FBD view's toolbox, in CODESYS's order: an input is a contact's operand
+    /// in the chain, an assignment a coil, as the two views map onto one network.
+    pub const FUNCTION_BLOCK: [Self; 8] = [
+        Self::Contact,
+        Self::Box,
+        Self::Coil,
+        Self::SetCoil,
+        Self::ResetCoil,
+        Self::Jump,
+        Self::Return,
+        Self::Network,
+    ];
+
+    /// The items the toolbox of `view` offers.
+    pub fn of_view(view: DiagramView) -> &'static [Self] {
+        match view {
+            DiagramView::Ladder => &Self::ALL,
+            DiagramView::FunctionBlock => &Self::FUNCTION_BLOCK,
+        }
+    }
 
     /// The command that inserts the item at the selection, when it is clicked.
     fn command(self) -> DiagramCommand {
@@ -169,12 +190,20 @@ impl DiagramEditor {
             .auto_shrink([false, false])
             .show(ui, |ui| {
                 ui.add_enabled_ui(enabled, |ui| {
-                    for item in ToolboxItem::ALL {
-                        let name = self.item_name(item).to_owned();
+                    for item in ToolboxItem::of_view(self.view) {
+                        let name = self.item_name(*item).to_owned();
                         let clicked =
-                            drag_or_click_ui(ui, egui::Button::new(name.as_str()), item).clicked();
+                            drag_or_click_ui(ui, egui::Button::new(name.as_str()), *item).clicked();
                         if clicked {
                             self.command(item.command(), frame);
+                        }
+                    }
+                    if self.view == DiagramView::FunctionBlock {
+                        // A negation is put on what is selected, not dropped on a "+": a
+                        // button only, as Ctrl+N.
+                        let negation = self.texts.negation.clone();
+                        if ui.button(negation).clicked() {
+                            self.command(DiagramCommand::Negate, frame);
                         }
                     }
                     ui.add_space(4.0);
@@ -193,8 +222,17 @@ impl DiagramEditor {
             });
     }
 
-    /// The toolbox's name of `item`, in the user's language.
+    /// The toolbox's name of `item` in the current view, in the user's language.
     pub(super) fn item_name(&self, item: ToolboxItem) -> &str {
+        if self.view == DiagramView::FunctionBlock {
+            match item {
+                ToolboxItem::Contact => return &self.texts.input,
+                ToolboxItem::Coil => return &self.texts.assignment,
+                ToolboxItem::SetCoil => return &self.texts.set_assignment,
+                ToolboxItem::ResetCoil => return &self.texts.reset_assignment,
+                _ => {}
+            }
+        }
         match item {
             ToolboxItem::Contact => &self.texts.contact,
             ToolboxItem::NegatedContact => &self.texts.negated_contact,

@@ -84,8 +84,10 @@ pub(crate) fn graphical_body_ui(
                 view.language,
             ));
         }
+        // The program's own values, also of a variable bound to a Modbus device, so each
+        // operand shows what the network computed with.
         let read = |path: &str| {
-            view.online.value(path).map(|value| ReadValue {
+            view.online.program_value(path).map(|value| ReadValue {
                 text: value.text.clone(),
                 forced: value.forced,
             })

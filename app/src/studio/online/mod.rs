@@ -428,17 +428,29 @@ impl Online {
             self.devices
                 .keep(background.handle(), devices, &paths, waker);
         }
-        self.wanted = paths.into_iter().filter(|path| !on_device(path)).collect();
+        // A device-bound variable is read from the target too: the program computes with its
+        // own copy, which is what a diagram's power flow and values must show.
+        self.wanted = paths;
         self.refresh_watch();
+    }
+
+    /// The last value the target gave for a watched variable, even one bound to a Modbus
+    /// device: the value the program computes with, which the LD/FBD views show beside the
+    /// power it gives.
+    pub fn program_value(&self, path: &str) -> Option<&LiveValue> {
+        self.values.get(path)
     }
 
     /// The last value of a watched variable, from its Modbus device when it is bound to one.
     pub fn value(&self, path: &str) -> Option<&LiveValue> {
-        match self.devices.value(&self.project_devices, path) {
-            Some(Ok(value)) => Some(value),
-            Some(Err(_)) => None,
-            None => self.values.get(path),
+        if self.is_device_bound(path) {
+            // The device's own value, never the program's copy read beside it.
+            return self
+                .devices
+                .value(&self.project_devices, path)
+                .and_then(Result::ok);
         }
+        self.values.get(path)
     }
 
     /// Why a watched variable has no value: unknown on the target, or its device unreachable.

@@ -274,3 +274,48 @@ fn an_output_branch_ands_the_fan_out_with_its_operand_and_assigns_after_it() {
         }
     }
 }
+
+#[test]
+fn every_element_and_line_of_the_example_bodies_is_inside_its_network() {
+    let loaded = project_model::load_project(&assets::example_project_dir()).unwrap();
+    let mut checked = 0;
+    for object in loaded.project.application.objects() {
+        let project_model::Object::Pou(pou) = object else {
+            continue;
+        };
+        let networks = match &pou.body {
+            project_model::Body::Ld { networks } | project_model::Body::Fbd { networks } => {
+                networks
+            }
+            _ => continue,
+        };
+        for (index, network) in networks.iter().enumerate() {
+            for layout in [
+                fbd_layout(network, index),
+                crate::diagram::ld_layout(network, index),
+            ] {
+                checked += 1;
+                let inside = |pos: Pos2| {
+                    pos.x >= -0.01
+                        && pos.x <= layout.size.x + 0.01
+                        && pos.y >= -0.01
+                        && pos.y <= layout.size.y + 0.01
+                };
+                for element in &layout.elements {
+                    assert!(
+                        inside(element.rect.min) && inside(element.rect.max),
+                        "{} network {index}: {:?} at {:?} outside {:?}",
+                        pou.name,
+                        element.id,
+                        element.rect,
+                        layout.size
+                    );
+                }
+                for wire in &layout.wires {
+                    assert!(wire.points.iter().all(|point| inside(*point)), "{wire:?}");
+                }
+            }
+        }
+    }
+    assert!(checked > 10);
+}
