@@ -8,6 +8,7 @@ pub(crate) mod body;
 mod complete;
 pub(crate) mod constant;
 mod definition;
+pub(crate) mod expression_types;
 mod reserved;
 pub(crate) mod scope;
 pub(crate) mod signatures;
@@ -53,23 +54,30 @@ pub struct ProjectDiagnostic {
 /// elements) and declaration of `project`.
 pub fn check_project(project: &Project) -> Vec<ProjectDiagnostic> {
     let lowered = crate::lower::lower_project(project);
-    check_lowered(project, &lowered)
+    check_lowered(project, &lowered, None)
 }
 
 /// Checks `project` whose graphical bodies were lowered into `lowered`.
+///
+/// With `keep`, each body's tree and expression types are kept there for the code generator.
 pub(crate) fn check_lowered(
     project: &Project,
     lowered: &crate::lower::LoweredProject<'_>,
+    keep: Option<&mut expression_types::CheckedBodies>,
 ) -> Vec<ProjectDiagnostic> {
     let mut found = lowered.findings();
     found.extend(reserved::reserved_names(project));
     found.extend(reserved::reserved_references(project));
-    found.extend(lowered.locate(check_text_project(&lowered.project)));
+    found.extend(lowered.locate(check_text_project(&lowered.project, keep)));
     found
 }
 
-/// Checks every ST body and declaration of `project`.
-fn check_text_project(project: &Project) -> Vec<ProjectDiagnostic> {
+/// Checks every ST body and declaration of `project`, keeping each body's tree and types in
+/// `keep` when given.
+fn check_text_project(
+    project: &Project,
+    mut keep: Option<&mut expression_types::CheckedBodies>,
+) -> Vec<ProjectDiagnostic> {
     let globals = Globals::new(project);
     let mut found = Vec::new();
     // Each POU's bodies, grouped once rather than searched for every POU.
@@ -95,7 +103,13 @@ fn check_text_project(project: &Project) -> Vec<ProjectDiagnostic> {
                 let own = bodies
                     .get(&std::ptr::from_ref(pou))
                     .map_or(&[][..], Vec::as_slice);
-                found.extend(check_pou_bodies(&globals, &file, pou, own));
+                found.extend(check_pou_bodies(
+                    &globals,
+                    &file,
+                    pou,
+                    own,
+                    keep.as_deref_mut(),
+                ));
             }
             Object::Gvl(gvl) => {
                 check_variables(&globals, None, &gvl.variables, &mut report);
@@ -188,7 +202,7 @@ fn check_text_pou(project: &Project, pou_name: &str) -> Vec<ProjectDiagnostic> {
         .into_iter()
         .filter(|body| std::ptr::eq(body.pou, pou))
         .collect();
-    found.extend(check_pou_bodies(&globals, &file, pou, &bodies));
+    found.extend(check_pou_bodies(&globals, &file, pou, &bodies, None));
     found
 }
 
@@ -215,10 +229,10 @@ fn resolutions_with(globals: &Globals<'_>, body: &StBody<'_>) -> Vec<Resolution>
 pub(crate) fn expression_types(
     scope: &Scope<'_, '_>,
     root: &crate::syntax::SyntaxNode,
-) -> HashMap<crate::syntax::SyntaxNode, ty::Type> {
+) -> expression_types::ExpressionTypes {
     let mut usage = Usage::new();
     let mut checker = BodyChecker::new(scope, &mut usage);
-    checker.types = Some(HashMap::new());
+    checker.types = Some(expression_types::ExpressionTypes::default());
     checker.check(root);
     checker.types.unwrap_or_default()
 }
@@ -294,6 +308,7 @@ fn check_pou_bodies(
     file: &std::path::Path,
     pou: &Pou,
     bodies: &[StBody<'_>],
+    mut keep: Option<&mut expression_types::CheckedBodies>,
 ) -> Vec<ProjectDiagnostic> {
     let mut found = Vec::new();
     let mut usage = Usage::new();
@@ -305,7 +320,13 @@ fn check_pou_bodies(
         let root = parse.syntax();
         let scope = Scope::for_body(globals, body.pou, &body.target, &root);
         let mut checker = BodyChecker::new(&scope, &mut usage);
+        if keep.is_some() {
+            checker.types = Some(expression_types::ExpressionTypes::default());
+        }
         checker.check(&root);
+        if let (Some(keep), Some(types)) = (keep.as_deref_mut(), checker.types.take()) {
+            keep.keep(&body.file, root.clone(), types);
+        }
         let mut checked = checker.diagnostics;
         checked.sort_by_key(|diagnostic| diagnostic.range.start);
         findings.extend(checked);
