@@ -20,7 +20,8 @@ use std::collections::{HashMap, HashSet};
 use std::path::PathBuf;
 
 use project_model::{
-    Body, DataType, Object, Pou, PouKind, Project, StBody, TypeDefinition, VarSection, Variable,
+    Body, DataType, Object, Pou, PouKind, Project, StBody, TextTarget, TypeDefinition, VarSection,
+    Variable,
 };
 
 use crate::diagnostic::{Code, Diagnostic};
@@ -237,6 +238,45 @@ pub(crate) fn expression_types(
     checker.types.unwrap_or_default()
 }
 
+/// The declared type (`INT`, `STRING(80)`, `E_Mode`) of the value of `expression`, an ST
+/// expression over the names of a body `target` of `pou`, by the checker's rules; `None` when
+/// the expression has no type a variable can be declared with (an error, an untyped literal
+/// such as `1 + 2`, an array or reference).
+///
+/// The lowering declares a hidden variable of this type for a box's result.
+pub(crate) fn expression_declared_type(
+    globals: &Globals<'_>,
+    pou: &Pou,
+    target: &TextTarget,
+    expression: &str,
+) -> Option<String> {
+    use crate::syntax::ast::{SourceFile, Stmt};
+    let parse = parse_statements(&format!("__value := {expression};"));
+    let root = parse.syntax();
+    let statement = SourceFile::cast(root.clone())?
+        .statement_list()?
+        .statements()
+        .next()?;
+    let Stmt::AssignStmt(assignment) = statement else {
+        return None;
+    };
+    let value = assignment.value()?;
+    let scope = Scope::for_body(globals, pou, target, &root);
+    let types = expression_types(&scope, &root);
+    match types.get(value.syntax())? {
+        ty::Type::Elementary(elementary)
+        | ty::Type::Subrange {
+            base: elementary, ..
+        } => Some(elementary.name().to_owned()),
+        ty::Type::String { wide, length } => Some(format!(
+            "{}({length})",
+            if *wide { "WSTRING" } else { "STRING" }
+        )),
+        ty::Type::Named(name) => Some(name.clone()),
+        _ => None,
+    }
+}
+
 /// The type written as `text` in a declaration among `locals` (the declarations of a POU,
 /// its bases and the method or accessor at hand): array bounds may name their constants.
 pub(crate) fn resolve_local_type(
@@ -280,7 +320,7 @@ pub(crate) fn resolve_local_type(
 pub fn references_to(
     project: &Project,
     definition: &Definition,
-) -> Vec<(PathBuf, project_model::TextTarget, std::ops::Range<usize>)> {
+) -> Vec<(PathBuf, TextTarget, std::ops::Range<usize>)> {
     let globals = Globals::new(project);
     let mut found = Vec::new();
     for body in project_model::st_body_files(project) {
