@@ -176,10 +176,14 @@ pub fn lower_project(project: &Project) -> LoweredProject<'_> {
                     format!("__{property}_{}__", if *get { "get" } else { "set" })
                 }
             };
+            let scope = std::cell::OnceCell::new();
             let typed_target = target.clone();
             let type_of = |expression: &str| {
-                let globals = globals.get_or_init(|| crate::sema::scope::Globals::new(project));
-                crate::sema::expression_declared_type(globals, pou, &typed_target, expression)
+                let scope = scope.get_or_init(|| {
+                    let globals = globals.get_or_init(|| crate::sema::scope::Globals::new(project));
+                    crate::sema::expression_scope(globals, pou, &typed_target)
+                });
+                crate::sema::expression_declared_type(scope, expression)
             };
             let mut lowering = BodyLowering::new(prefix, &classify, &type_of);
             lowering.body(networks);

@@ -238,18 +238,23 @@ pub(crate) fn expression_types(
     checker.types.unwrap_or_default()
 }
 
+/// The names an expression in the body `target` of `pou` sees, for
+/// [`expression_declared_type`]: made once per body, as it indexes all of the POU's names.
+pub(crate) fn expression_scope<'a, 'p>(
+    globals: &'a Globals<'p>,
+    pou: &'p Pou,
+    target: &TextTarget,
+) -> Scope<'a, 'p> {
+    Scope::for_body(globals, pou, target, &parse_statements("").syntax())
+}
+
 /// The declared type (`INT`, `STRING(80)`, `E_Mode`) of the value of `expression`, an ST
-/// expression over the names of a body `target` of `pou`, by the checker's rules; `None` when
-/// the expression has no type a variable can be declared with (an error, an untyped literal
-/// such as `1 + 2`, an array or reference).
+/// expression over the names of `scope` (from [`expression_scope`]), by the checker's rules;
+/// `None` when the expression has no type a variable can be declared with (an error, an
+/// untyped literal such as `1 + 2`, an array or reference).
 ///
 /// The lowering declares a hidden variable of this type for a box's result.
-pub(crate) fn expression_declared_type(
-    globals: &Globals<'_>,
-    pou: &Pou,
-    target: &TextTarget,
-    expression: &str,
-) -> Option<String> {
+pub(crate) fn expression_declared_type(scope: &Scope<'_, '_>, expression: &str) -> Option<String> {
     use crate::syntax::ast::{SourceFile, Stmt};
     let parse = parse_statements(&format!("__value := {expression};"));
     let root = parse.syntax();
@@ -261,8 +266,7 @@ pub(crate) fn expression_declared_type(
         return None;
     };
     let value = assignment.value()?;
-    let scope = Scope::for_body(globals, pou, target, &root);
-    let types = expression_types(&scope, &root);
+    let types = expression_types(scope, &root);
     match types.get(value.syntax())? {
         ty::Type::Elementary(elementary)
         | ty::Type::Subrange {
