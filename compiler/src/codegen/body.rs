@@ -79,7 +79,7 @@ pub(crate) struct BodyGen<'b, 'g, 'p> {
     pub(crate) build: &'b mut Build<'g, 'p>,
     pub(crate) scope: Scope<'g, 'p>,
     pub(crate) pou: &'p Pou,
-    pub(crate) types: HashMap<SyntaxNode, Type>,
+    pub(crate) types: crate::sema::expression_types::ExpressionTypes,
     /// The instance whose variables `Operand::Instance` addresses.
     pub(crate) instance: Option<Rc<Instance<'p>>>,
     pub(crate) frame: Frame<'p>,
@@ -113,7 +113,7 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
         build: &'b mut Build<'g, 'p>,
         scope: Scope<'g, 'p>,
         pou: &'p Pou,
-        types: HashMap<SyntaxNode, Type>,
+        types: crate::sema::expression_types::ExpressionTypes,
         instance: Option<Rc<Instance<'p>>>,
         frame: Frame<'p>,
         file: u32,

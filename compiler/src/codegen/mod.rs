@@ -76,13 +76,16 @@ fn compile_with(project: &Project, origin: BodyOrigin<'_>) -> Result<ProgramImag
     // LD and FBD bodies are checked and compiled as their Structured Text, and what is found
     // in them is moved back onto their elements.
     let lowered = crate::lower::lower_project(project);
-    let diagnostics = check_lowered(project, &lowered);
+    // The checker's trees and types are kept, so the code generator does not parse and type
+    // every body a second time.
+    let mut checked = crate::sema::expression_types::CheckedBodies::default();
+    let diagnostics = check_lowered(project, &lowered, Some(&mut checked));
     if diagnostics
         .iter()
         .any(|d| d.diagnostic.severity == Severity::Error)
     {
         return Err(CompileError::Diagnostics(diagnostics));
     }
-    program::build_image(&lowered.project, origin)
+    program::build_image(&lowered.project, origin, checked)
         .map_err(|error| CompileError::Unsupported(lowered.locate_error(error)))
 }

@@ -15,6 +15,7 @@ use project_model::{
 use super::body::{BodyGen, Frame, FrameVar, Gen, Place, Typed};
 use super::error::{CodegenError, Within, fail};
 use super::layout::{Lay, LayShape, Layouts, flags_of, located_of};
+use crate::sema::expression_types::CheckedBodies;
 use crate::sema::scope::{Globals, Scope};
 use crate::sema::ty::Type;
 use crate::syntax::parse_statements;
@@ -303,7 +304,14 @@ fn area_index(region: Region) -> usize {
 }
 
 /// Compiles a checked project into an image.
-pub(crate) fn build_image(project: &Project, origin: BodyOrigin<'_>) -> Gen<ProgramImage> {
+///
+/// `checked` holds the checker's trees and types of the bodies, reused rather than parsed
+/// and typed again (a body missing there is parsed and typed here).
+pub(crate) fn build_image(
+    project: &Project,
+    origin: BodyOrigin<'_>,
+    mut checked: CheckedBodies,
+) -> Gen<ProgramImage> {
     let globals = Globals::new(project);
     let mut build = Build::new(&globals);
     let mut data = Data::default();
@@ -516,6 +524,7 @@ pub(crate) fn build_image(project: &Project, origin: BodyOrigin<'_>) -> Gen<Prog
             body,
             origin,
             &mut sources,
+            &mut checked,
         )?);
     }
 
@@ -861,6 +870,7 @@ fn compile_unit<'g, 'p>(
     body: Option<&StBody<'p>>,
     origin: BodyOrigin<'_>,
     sources: &mut Vec<String>,
+    checked: &mut CheckedBodies,
 ) -> Gen<ImagePou> {
     let pou = unit.pou;
     let name = match &unit.member {
@@ -966,10 +976,19 @@ fn compile_unit<'g, 'p>(
             (sources.len() - 1) as u32
         }
     };
-    let parse = parse_statements(body.text);
-    let root = parse.syntax();
-    let scope = Scope::for_body(globals, pou, &body.target, &root);
-    let types = crate::sema::expression_types(&scope, &root);
+    let checked = checked.take(&body.file, body.text);
+    let (root, scope, types) = match checked {
+        Some((root, types)) => {
+            let scope = Scope::for_body(globals, pou, &body.target, &root);
+            (root, scope, types)
+        }
+        None => {
+            let root = parse_statements(body.text).syntax();
+            let scope = Scope::for_body(globals, pou, &body.target, &root);
+            let types = crate::sema::expression_types(&scope, &root);
+            (root, scope, types)
+        }
+    };
     let mut generator = BodyGen::new(
         build,
         scope,

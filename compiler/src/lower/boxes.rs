@@ -338,13 +338,34 @@ impl BodyLowering<'_> {
         let assign = result_index
             .map(|index| &block.outputs[index])
             .filter(|output| !output.assign.trim().is_empty());
-        if enable.is_none() && assign.is_none() {
+        // A result no variable of the user's holds is stored in a hidden one, so its pin
+        // shows a live value; it costs the one store and load of the result.
+        let hidden = match (assign, result_index) {
+            (None, Some(index)) => self
+                .result_variable(block, index, &expression)
+                .map(|(name, boolean)| (name, block.outputs[index].pin.trim().to_owned(), boolean)),
+            _ => None,
+        };
+        if enable.is_none() && assign.is_none() && hidden.is_none() {
             return Some(expression);
         }
         let mut assigned = None;
         let eno = self.enabled(block, enable, |this| {
-            let statement = match assign {
-                Some(output) => {
+            let statement = match (assign, hidden) {
+                (None, Some((name, pin, boolean))) => {
+                    assigned = Some(this.result_value(block.id, &pin, &name, boolean));
+                    frag!(
+                        Fragment::plain(name.as_str()).mark(
+                            this.network,
+                            Some(block.id),
+                            Some(&pin)
+                        ),
+                        " := ",
+                        expression.frag,
+                        ";"
+                    )
+                }
+                (Some(output), _) => {
                     let target = this.user_value(
                         block.id,
                         Some(&output.pin),
@@ -360,7 +381,7 @@ impl BodyLowering<'_> {
                     });
                     frag!(target.frag, " := ", expression.frag, ";")
                 }
-                None => frag!(expression.frag, ";"),
+                (None, None) => frag!(expression.frag, ";"),
             };
             this.emit(statement.mark(this.network, Some(block.id), None));
         });

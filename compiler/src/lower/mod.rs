@@ -13,6 +13,7 @@ mod locate;
 mod network;
 mod operator;
 mod place;
+mod results;
 #[cfg(test)]
 mod tests;
 mod value;
@@ -155,6 +156,8 @@ pub fn lower_project(project: &Project) -> LoweredProject<'_> {
         })
         .collect();
     let classify = |name: &str| classify(&kinds, name);
+    // The checker's view of the project types the boxes' results; built at the first box.
+    let globals = std::cell::OnceCell::new();
     let mut lowered = project.clone();
     let mut bodies = Vec::new();
     for (file, pou) in pous {
@@ -173,7 +176,16 @@ pub fn lower_project(project: &Project) -> LoweredProject<'_> {
                     format!("__{property}_{}__", if *get { "get" } else { "set" })
                 }
             };
-            let mut lowering = BodyLowering::new(prefix, &classify);
+            let scope = std::cell::OnceCell::new();
+            let typed_target = target.clone();
+            let type_of = |expression: &str| {
+                let scope = scope.get_or_init(|| {
+                    let globals = globals.get_or_init(|| crate::sema::scope::Globals::new(project));
+                    crate::sema::expression_scope(globals, pou, &typed_target)
+                });
+                crate::sema::expression_declared_type(scope, expression)
+            };
+            let mut lowering = BodyLowering::new(prefix, &classify, &type_of);
             lowering.body(networks);
             hidden.append(&mut lowering.hidden);
             texts.push((index, lowering.out.text.clone()));

@@ -8,7 +8,7 @@
 //! boxes) or when a box runs in between. So `a AND NOT b` driving one coil is exactly the ST
 //! `c := a AND NOT b;`.
 
-use std::collections::HashSet;
+use std::collections::{HashMap, HashSet};
 
 use project_model::{
     CoilKind, Edge, ElementId, FlowNode, Network, NetworkOutput, Operand, Parallel, VarSection,
@@ -44,11 +44,20 @@ pub(crate) struct BodyLowering<'c> {
     pub probes: Vec<Probe>,
     /// The hidden names taken, lower case.
     taken: HashSet<String>,
+    /// The declared type of an ST expression over the body's names, by the checker.
+    pub(super) type_of: &'c dyn Fn(&str) -> Option<String>,
+    /// Each stored box result's hidden name, lower case, with the expression it stands for
+    /// written over the user's names only, which is what its type is computed from.
+    pub(super) results: HashMap<String, String>,
 }
 
 impl<'c> BodyLowering<'c> {
     /// A lowering of a body whose hidden names start with `prefix`.
-    pub fn new(prefix: String, classify: &'c dyn Fn(&str) -> Callee) -> Self {
+    pub fn new(
+        prefix: String,
+        classify: &'c dyn Fn(&str) -> Callee,
+        type_of: &'c dyn Fn(&str) -> Option<String>,
+    ) -> Self {
         Self {
             prefix,
             classify,
@@ -61,6 +70,8 @@ impl<'c> BodyLowering<'c> {
             findings: Vec::new(),
             probes: Vec::new(),
             taken: HashSet::new(),
+            type_of,
+            results: HashMap::new(),
         }
     }
 

@@ -262,7 +262,7 @@ fn a_box_with_en_runs_only_when_enabled_and_its_eno_is_the_enable() {
 }
 
 #[test]
-fn fbd_operators_nest_as_expressions_and_functions_are_called_by_their_pins() {
+fn fbd_operator_results_are_stored_for_their_pins_and_functions_are_called_by_their_pins() {
     check_lowering(
         vec![network(
             vec![block(
@@ -303,9 +303,13 @@ fn fbd_operators_nest_as_expressions_and_functions_are_called_by_their_pins() {
             vec![coil(9, "q", CoilKind::Normal)],
         )],
         expect![[r#"
+            __e4_OUT : INT;
+            __e1_OUT : BOOL;
             ---
-            y := LIMIT(MN := 0, IN := x * (-2), MX := 100);
-            q := y > 10;
+            __e4_OUT := x * (-2);
+            y := LIMIT(MN := 0, IN := __e4_OUT, MX := 100);
+            __e1_OUT := y > 10;
+            q := __e1_OUT;
         "#]],
     );
 }
@@ -864,5 +868,96 @@ fn a_function_block_box_with_en_is_called_only_when_enabled_and_its_outputs_hold
             END_IF;
             r := __e3_EN;
         "#]],
+    );
+}
+
+#[test]
+fn every_box_output_pin_has_a_probe_and_a_constant_result_stays_in_its_expression() {
+    let gt = |id: u32, first: Vec<FlowNode>, second: Vec<FlowNode>| {
+        block(
+            id,
+            "GT",
+            "",
+            vec![input("IN1", first), input("IN2", second)],
+            vec![output("OUT", "")],
+        )
+    };
+    let add = block(
+        5,
+        "ADD",
+        "",
+        vec![
+            input("IN1", vec![contact(6, "1")]),
+            input("IN2", vec![contact(7, "2")]),
+        ],
+        vec![output("OUT", "")],
+    );
+    let networks = vec![
+        network(
+            vec![gt(1, vec![contact(2, "x")], vec![contact(3, "10")])],
+            vec![coil(4, "q", CoilKind::Normal)],
+        ),
+        network(
+            vec![gt(8, vec![add], vec![contact(9, "y")])],
+            vec![coil(10, "r", CoilKind::Normal)],
+        ),
+    ];
+    check_lowering(
+        networks.clone(),
+        expect![[r#"
+            __e1_OUT : BOOL;
+            __e8_OUT : BOOL;
+            ---
+            __e1_OUT := x > 10;
+            q := __e1_OUT;
+            __e8_OUT := 1 + 2 > y;
+            r := __e8_OUT;
+        "#]],
+    );
+    let project = project_with(DECLARATIONS, networks);
+    let lowered = lower_project(&project);
+    let pins: Vec<String> = lowered.bodies[0]
+        .probes
+        .iter()
+        .filter(|probe| probe.pin.is_some())
+        .map(|probe| {
+            format!(
+                "{}:{}.{} {:?} {}",
+                probe.network,
+                probe.element.0,
+                probe.pin.as_deref().unwrap_or_default(),
+                probe.kind,
+                probe.path
+            )
+        })
+        .collect();
+    expect![[r#"
+        0:1.OUT Value __e1_OUT
+        1:8.OUT Value __e8_OUT"#]]
+    .assert_eq(&pins.join("\n"));
+}
+
+#[test]
+fn a_stored_box_result_costs_one_store_and_load_more_than_the_st_at_most() {
+    let (drawn, written) = listings(
+        "x : INT; q : BOOL;",
+        vec![network(
+            vec![block(
+                1,
+                "GT",
+                "",
+                vec![
+                    input("IN1", vec![contact(2, "x")]),
+                    input("IN2", vec![contact(3, "10")]),
+                ],
+                vec![output("OUT", "")],
+            )],
+            vec![coil(4, "q", CoilKind::Normal)],
+        )],
+        "q := x > 10;",
+    );
+    assert!(
+        drawn.lines().count() <= written.lines().count() + 2,
+        "drawn:\n{drawn}\nwritten:\n{written}"
     );
 }

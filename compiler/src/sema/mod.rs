@@ -8,6 +8,7 @@ pub(crate) mod body;
 mod complete;
 pub(crate) mod constant;
 mod definition;
+pub(crate) mod expression_types;
 mod reserved;
 pub(crate) mod scope;
 pub(crate) mod signatures;
@@ -19,7 +20,8 @@ use std::collections::{HashMap, HashSet};
 use std::path::PathBuf;
 
 use project_model::{
-    Body, DataType, Object, Pou, PouKind, Project, StBody, TypeDefinition, VarSection, Variable,
+    Body, DataType, Object, Pou, PouKind, Project, StBody, TextTarget, TypeDefinition, VarSection,
+    Variable,
 };
 
 use crate::diagnostic::{Code, Diagnostic};
@@ -53,23 +55,30 @@ pub struct ProjectDiagnostic {
 /// elements) and declaration of `project`.
 pub fn check_project(project: &Project) -> Vec<ProjectDiagnostic> {
     let lowered = crate::lower::lower_project(project);
-    check_lowered(project, &lowered)
+    check_lowered(project, &lowered, None)
 }
 
 /// Checks `project` whose graphical bodies were lowered into `lowered`.
+///
+/// With `keep`, each body's tree and expression types are kept there for the code generator.
 pub(crate) fn check_lowered(
     project: &Project,
     lowered: &crate::lower::LoweredProject<'_>,
+    keep: Option<&mut expression_types::CheckedBodies>,
 ) -> Vec<ProjectDiagnostic> {
     let mut found = lowered.findings();
     found.extend(reserved::reserved_names(project));
     found.extend(reserved::reserved_references(project));
-    found.extend(lowered.locate(check_text_project(&lowered.project)));
+    found.extend(lowered.locate(check_text_project(&lowered.project, keep)));
     found
 }
 
-/// Checks every ST body and declaration of `project`.
-fn check_text_project(project: &Project) -> Vec<ProjectDiagnostic> {
+/// Checks every ST body and declaration of `project`, keeping each body's tree and types in
+/// `keep` when given.
+fn check_text_project(
+    project: &Project,
+    mut keep: Option<&mut expression_types::CheckedBodies>,
+) -> Vec<ProjectDiagnostic> {
     let globals = Globals::new(project);
     let mut found = Vec::new();
     // Each POU's bodies, grouped once rather than searched for every POU.
@@ -95,7 +104,13 @@ fn check_text_project(project: &Project) -> Vec<ProjectDiagnostic> {
                 let own = bodies
                     .get(&std::ptr::from_ref(pou))
                     .map_or(&[][..], Vec::as_slice);
-                found.extend(check_pou_bodies(&globals, &file, pou, own));
+                found.extend(check_pou_bodies(
+                    &globals,
+                    &file,
+                    pou,
+                    own,
+                    keep.as_deref_mut(),
+                ));
             }
             Object::Gvl(gvl) => {
                 check_variables(&globals, None, &gvl.variables, &mut report);
@@ -188,7 +203,7 @@ fn check_text_pou(project: &Project, pou_name: &str) -> Vec<ProjectDiagnostic> {
         .into_iter()
         .filter(|body| std::ptr::eq(body.pou, pou))
         .collect();
-    found.extend(check_pou_bodies(&globals, &file, pou, &bodies));
+    found.extend(check_pou_bodies(&globals, &file, pou, &bodies, None));
     found
 }
 
@@ -215,12 +230,55 @@ fn resolutions_with(globals: &Globals<'_>, body: &StBody<'_>) -> Vec<Resolution>
 pub(crate) fn expression_types(
     scope: &Scope<'_, '_>,
     root: &crate::syntax::SyntaxNode,
-) -> HashMap<crate::syntax::SyntaxNode, ty::Type> {
+) -> expression_types::ExpressionTypes {
     let mut usage = Usage::new();
     let mut checker = BodyChecker::new(scope, &mut usage);
-    checker.types = Some(HashMap::new());
+    checker.types = Some(expression_types::ExpressionTypes::default());
     checker.check(root);
     checker.types.unwrap_or_default()
+}
+
+/// The names an expression in the body `target` of `pou` sees, for
+/// [`expression_declared_type`]: made once per body, as it indexes all of the POU's names.
+pub(crate) fn expression_scope<'a, 'p>(
+    globals: &'a Globals<'p>,
+    pou: &'p Pou,
+    target: &TextTarget,
+) -> Scope<'a, 'p> {
+    Scope::for_body(globals, pou, target, &parse_statements("").syntax())
+}
+
+/// The declared type (`INT`, `STRING(80)`, `E_Mode`) of the value of `expression`, an ST
+/// expression over the names of `scope` (from [`expression_scope`]), by the checker's rules;
+/// `None` when the expression has no type a variable can be declared with (an error, an
+/// untyped literal such as `1 + 2`, an array or reference).
+///
+/// The lowering declares a hidden variable of this type for a box's result.
+pub(crate) fn expression_declared_type(scope: &Scope<'_, '_>, expression: &str) -> Option<String> {
+    use crate::syntax::ast::{SourceFile, Stmt};
+    let parse = parse_statements(&format!("__value := {expression};"));
+    let root = parse.syntax();
+    let statement = SourceFile::cast(root.clone())?
+        .statement_list()?
+        .statements()
+        .next()?;
+    let Stmt::AssignStmt(assignment) = statement else {
+        return None;
+    };
+    let value = assignment.value()?;
+    let types = expression_types(scope, &root);
+    match types.get(value.syntax())? {
+        ty::Type::Elementary(elementary)
+        | ty::Type::Subrange {
+            base: elementary, ..
+        } => Some(elementary.name().to_owned()),
+        ty::Type::String { wide, length } => Some(format!(
+            "{}({length})",
+            if *wide { "WSTRING" } else { "STRING" }
+        )),
+        ty::Type::Named(name) => Some(name.clone()),
+        _ => None,
+    }
 }
 
 /// The type written as `text` in a declaration among `locals` (the declarations of a POU,
@@ -266,7 +324,7 @@ pub(crate) fn resolve_local_type(
 pub fn references_to(
     project: &Project,
     definition: &Definition,
-) -> Vec<(PathBuf, project_model::TextTarget, std::ops::Range<usize>)> {
+) -> Vec<(PathBuf, TextTarget, std::ops::Range<usize>)> {
     let globals = Globals::new(project);
     let mut found = Vec::new();
     for body in project_model::st_body_files(project) {
@@ -294,6 +352,7 @@ fn check_pou_bodies(
     file: &std::path::Path,
     pou: &Pou,
     bodies: &[StBody<'_>],
+    mut keep: Option<&mut expression_types::CheckedBodies>,
 ) -> Vec<ProjectDiagnostic> {
     let mut found = Vec::new();
     let mut usage = Usage::new();
@@ -305,7 +364,13 @@ fn check_pou_bodies(
         let root = parse.syntax();
         let scope = Scope::for_body(globals, body.pou, &body.target, &root);
         let mut checker = BodyChecker::new(&scope, &mut usage);
+        if keep.is_some() {
+            checker.types = Some(expression_types::ExpressionTypes::default());
+        }
         checker.check(&root);
+        if let (Some(keep), Some(types)) = (keep.as_deref_mut(), checker.types.take()) {
+            keep.keep(&body.file, root.clone(), types);
+        }
         let mut checked = checker.diagnostics;
         checked.sort_by_key(|diagnostic| diagnostic.range.start);
         findings.extend(checked);

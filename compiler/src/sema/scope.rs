@@ -1,8 +1,10 @@
 //! What a name can refer to: the project's globals and a body's locals, as symbols that know
 //! their declarations.
 
+use std::borrow::Cow;
 use std::cell::RefCell;
-use std::collections::HashMap;
+
+use rustc_hash::FxHashMap;
 
 use project_model::{
     DataType, GlobalVarList, Method, Object, Pou, PouKind, Project, Property, TextTarget,
@@ -37,11 +39,11 @@ pub(crate) enum GlobalSymbol<'p> {
 /// data types and enumeration values, and axes. Keys are lower case, as IEC names compare
 /// without case.
 pub(crate) struct Globals<'p> {
-    names: HashMap<String, GlobalSymbol<'p>>,
-    pous: HashMap<String, &'p Pou>,
-    data_types: HashMap<String, &'p DataType>,
+    names: FxHashMap<String, GlobalSymbol<'p>>,
+    pous: FxHashMap<String, &'p Pou>,
+    data_types: FxHashMap<String, &'p DataType>,
     /// Resolved type texts, as the same few type texts are declared many times.
-    type_cache: RefCell<HashMap<String, Type>>,
+    type_cache: RefCell<FxHashMap<String, Type>>,
     /// Spellings of every global name, for suggestions.
     spellings: Vec<&'p str>,
 }
@@ -49,10 +51,10 @@ pub(crate) struct Globals<'p> {
 impl<'p> Globals<'p> {
     pub(crate) fn new(project: &'p Project) -> Self {
         let mut globals = Self {
-            names: HashMap::new(),
-            pous: HashMap::new(),
-            data_types: HashMap::new(),
-            type_cache: RefCell::new(HashMap::new()),
+            names: FxHashMap::default(),
+            pous: FxHashMap::default(),
+            data_types: FxHashMap::default(),
+            type_cache: RefCell::new(FxHashMap::default()),
             spellings: Vec::new(),
         };
         let objects = project.application.objects();
@@ -127,7 +129,7 @@ impl<'p> Globals<'p> {
 
     /// The global called `name`.
     pub(crate) fn lookup(&self, name: &str) -> Option<GlobalSymbol<'p>> {
-        self.names.get(&name.to_lowercase()).copied()
+        self.names.get(lower(name).as_ref()).copied()
     }
 
     /// The names of every global variable list.
@@ -228,7 +230,7 @@ pub(crate) struct Scope<'a, 'p> {
     pub(crate) globals: &'a Globals<'p>,
     /// The POU the body belongs to; `None` for global declarations.
     pub(crate) pou: Option<&'p Pou>,
-    locals: HashMap<String, LocalSymbol<'p>>,
+    locals: FxHashMap<String, LocalSymbol<'p>>,
     /// The type of the body's result variable (a function's, method's or property's name).
     pub(crate) result_type: Option<&'p str>,
     spellings: Vec<String>,
@@ -247,7 +249,7 @@ impl<'a, 'p> Scope<'a, 'p> {
         let mut scope = Self {
             globals,
             pou: Some(pou),
-            locals: HashMap::new(),
+            locals: FxHashMap::default(),
             result_type: None,
             spellings: Vec::new(),
         };
@@ -328,7 +330,7 @@ impl<'a, 'p> Scope<'a, 'p> {
         Self {
             globals,
             pou: None,
-            locals: HashMap::new(),
+            locals: FxHashMap::default(),
             result_type: None,
             spellings: Vec::new(),
         }
@@ -359,7 +361,7 @@ impl<'a, 'p> Scope<'a, 'p> {
 
     /// The local called `name`.
     pub(crate) fn local(&self, name: &str) -> Option<LocalSymbol<'p>> {
-        self.locals.get(&name.to_lowercase()).copied()
+        self.locals.get(lower(name).as_ref()).copied()
     }
 
     /// Every local name with its symbol, in the spelling of its declaration.
@@ -374,6 +376,19 @@ impl<'a, 'p> Scope<'a, 'p> {
     pub(crate) fn suggest(&self, name: &str) -> Option<String> {
         let local = closest(name, self.spellings.iter().map(String::as_str)).map(str::to_owned);
         local.or_else(|| self.globals.suggest(name))
+    }
+}
+
+/// `name` in lower case, the key of the name maps; borrowed when it is lower case already,
+/// as most names are, so a lookup allocates only for mixed-case names.
+fn lower(name: &str) -> Cow<'_, str> {
+    if name
+        .bytes()
+        .any(|b| !b.is_ascii() || b.is_ascii_uppercase())
+    {
+        Cow::Owned(name.to_lowercase())
+    } else {
+        Cow::Borrowed(name)
     }
 }
 

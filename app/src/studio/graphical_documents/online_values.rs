@@ -99,10 +99,16 @@ pub(super) fn diagram_online(
             // A pin's edge detection is not drawn; its value is the pin's own.
             (ProbeKind::Edge, Some(_)) => {}
             (ProbeKind::Value | ProbeKind::Power, pin) => {
-                if pin.is_none()
-                    && let Some(on) = on
-                {
-                    readings.values.insert(*element, on);
+                if let Some(on) = on {
+                    match pin {
+                        None => {
+                            readings.values.insert(*element, on);
+                        }
+                        Some(pin) if *kind == ProbeKind::Value => {
+                            readings.pins.insert((*element, pin.to_uppercase()), on);
+                        }
+                        Some(_) => {}
+                    }
                 }
                 let text = match prepared.get(path) {
                     Some(next) => format!("{} <{next}>", value.text),
@@ -175,5 +181,76 @@ mod tests {
         assert_eq!(a.text, "TRUE");
         assert!(a.forced);
         assert_eq!(online.values[&(ElementId(2), None)].text, "FALSE <TRUE>");
+    }
+
+    #[test]
+    fn an_fbd_comparison_box_shows_its_output_and_passes_it_as_power() {
+        use project_model::{BlockCall, BlockInput, BlockOutput, Body, Object};
+        let input = |pin: &str, id: u32, text: &str| BlockInput {
+            pin: pin.to_owned(),
+            source: vec![FlowNode::Operand(Operand {
+                id: ElementId(id),
+                text: text.to_owned(),
+                ..Operand::default()
+            })],
+            ..BlockInput::default()
+        };
+        let network = Network {
+            rung: vec![FlowNode::Block(BlockCall {
+                id: ElementId(1),
+                type_name: "GT".to_owned(),
+                instance: String::new(),
+                inputs: vec![input("IN1", 2, "nLevel"), input("IN2", 3, "10")],
+                outputs: vec![BlockOutput {
+                    pin: "OUT".to_owned(),
+                    ..BlockOutput::default()
+                }],
+            })],
+            outputs: vec![NetworkOutput::Coil(Coil {
+                id: ElementId(4),
+                variable: "xHigh".to_owned(),
+                ..Coil::default()
+            })],
+            ..Network::default()
+        };
+        let mut project = compiler::SourceProject::new(
+            "PROGRAM Main\nVAR nLevel : INT; xHigh : BOOL; END_VAR\nEND_PROGRAM\n",
+        )
+        .project;
+        let Some(Object::Pou(main)) = project.application.object_mut("Main") else {
+            panic!("no Main");
+        };
+        main.body = Body::Fbd {
+            networks: vec![network.clone()],
+        };
+        let lowered = compiler::lower::lower_project(&project);
+        let Some(Object::Pou(pou)) = project.application.object("Main") else {
+            panic!("no Main");
+        };
+        let probes = BodyProbes {
+            project: &project,
+            pou,
+            instance: "Main",
+            lowered: &lowered.bodies[0],
+        }
+        .paths();
+        let out = probes
+            .iter()
+            .find(|probe| probe.element == ElementId(1) && probe.pin.as_deref() == Some("OUT"))
+            .unwrap_or_else(|| panic!("the GT box's output has no probe: {probes:#?}"));
+        let out_path = out.path.clone();
+        let read = |path: &str| {
+            (path == out_path || path == "Main.nLevel").then(|| ReadValue {
+                text: if path == out_path { "TRUE" } else { "12" }.to_owned(),
+                forced: false,
+            })
+        };
+        let online = diagram_online(&[network], &probes, read, &BTreeMap::new());
+        assert_eq!(
+            online.values[&(ElementId(1), Some("OUT".to_owned()))].text,
+            "TRUE"
+        );
+        assert!(online.power[&ElementId(1)]);
+        assert!(online.power[&ElementId(4)]);
     }
 }

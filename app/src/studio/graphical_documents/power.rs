@@ -15,6 +15,9 @@ pub(super) struct PowerReadings {
     pub values: HashMap<ElementId, bool>,
     /// The output of an edge contact's detection: TRUE for the cycle of the edge.
     pub edges: HashMap<ElementId, bool>,
+    /// The Boolean value of a box's output pin (a timer's `Q`, a comparison's stored result),
+    /// by the box and the pin's upper-case name.
+    pub pins: HashMap<(ElementId, String), bool>,
 }
 
 /// The power leaving every element of `network` whose power is known or can be derived: the
@@ -81,8 +84,10 @@ fn contact_power(
 }
 
 /// A box's pins' sources are chains of their own, started powered as an FBD input is. What
-/// leaves a box depends on its block (a timer's `Q`, a comparison's result, a number), so
-/// without its stored power it is unknown rather than guessed from what entered it.
+/// leaves a box depends on its block (a timer's `Q`, a comparison's result, a number), so it
+/// is the value of the output that passes the power on, where that pin's value was read and
+/// is not negated (the probe of a negated instance output reads the instance's own output),
+/// else unknown rather than guessed from what entered it.
 fn block_power(
     block: &BlockCall,
     readings: &PowerReadings,
@@ -91,7 +96,14 @@ fn block_power(
     for input in &block.inputs {
         chain_power(&input.source, Some(true), readings, power);
     }
-    None
+    let output = block.outputs.get(block.chain_output()?)?;
+    if output.negated {
+        return None;
+    }
+    readings
+        .pins
+        .get(&(block.id, output.pin.trim().to_uppercase()))
+        .copied()
 }
 
 /// The outputs see the power at the end of the rung; a branch output continues it.
@@ -281,5 +293,36 @@ mod tests {
         let power = network_power(&net, &readings);
         assert!(power[&ElementId(11)]);
         assert!(power[&ElementId(99)]);
+    }
+
+    #[test]
+    fn a_box_passes_the_value_of_its_chain_output_pin() {
+        let compare = |negated: bool| BlockCall {
+            id: ElementId(11),
+            type_name: "GT".to_owned(),
+            instance: String::new(),
+            inputs: Vec::new(),
+            outputs: vec![project_model::BlockOutput {
+                pin: "OUT".to_owned(),
+                negated,
+                ..project_model::BlockOutput::default()
+            }],
+        };
+        let mut readings = values(&[(10, true)]);
+        readings
+            .pins
+            .insert((ElementId(11), "OUT".to_owned()), false);
+        let net = network(vec![
+            contact(10, "a", false),
+            FlowNode::Block(compare(false)),
+        ]);
+        let power = network_power(&net, &readings);
+        assert_eq!(power.get(&ElementId(11)), Some(&false));
+        assert_eq!(power.get(&ElementId(99)), Some(&false));
+        let net = network(vec![
+            contact(10, "a", false),
+            FlowNode::Block(compare(true)),
+        ]);
+        assert_eq!(network_power(&net, &readings).get(&ElementId(11)), None);
     }
 }

@@ -13,7 +13,7 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
     pub(super) fn expression(&mut self, node: &Expr, mode: Mode) -> Type {
         let ty = self.expression_type(node, mode);
         if let Some(types) = &mut self.types {
-            types.insert(node.syntax().clone(), ty.clone());
+            types.insert(node.syntax(), ty.clone());
         }
         ty
     }

@@ -58,7 +58,7 @@ pub(crate) struct BodyChecker<'s, 'a, 'p> {
     /// What each name refers to, collected only when asked for (hover, references).
     pub(crate) resolutions: Option<Vec<Resolution>>,
     /// The type of every expression checked, collected only when asked for (code generation).
-    pub(crate) types: Option<HashMap<SyntaxNode, Type>>,
+    pub(crate) types: Option<super::expression_types::ExpressionTypes>,
     /// Types resolved with the POU's own constants (open array bounds), by their text, so an
     /// `ARRAY[*]` parameter is not parsed again at every use.
     local_types: std::cell::RefCell<HashMap<String, Type>>,
