@@ -79,9 +79,10 @@ pub use network::{
 pub use network_check::{MAX_NETWORK_NESTING, NetworkProblem, network_problems};
 pub use network_edit::{
     Anchor, BodySplice, HeaderField, NetworkClipboard, NetworkEditError, ParallelSide, Side,
-    copy_elements, copy_networks, cycle_modifier, delete_elements, delete_networks, insert_network,
-    insert_output, insert_parallel, insert_series, new_box, new_coil, new_contact, new_jump,
-    new_return, paste, set_element_text, set_network_header, set_pin_operand, toggle_negation,
+    copy_elements, copy_networks, cycle_modifier, cycle_pin_edge, delete_elements, delete_networks,
+    insert_network, insert_output, insert_parallel, insert_series, new_box, new_coil, new_contact,
+    new_jump, new_return, paste, set_element_text, set_network_header, set_pin_operand,
+    toggle_en_eno, toggle_negation,
 };
 pub use network_walk::{ElementRef, max_element_id, walk_chain, walk_outputs};
 pub use pou::{

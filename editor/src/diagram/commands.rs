@@ -11,8 +11,9 @@
 //! (`_cds_cmd_fbd_ld_il_insert_jump.html`), Negation Ctrl+N (`_cds_cmd_fbd_ld_il_negation.html`)
 //! and Insert Network Ctrl+I (`_cds_cmd_fbd_ld_il_insert_network.html`, inserted above the
 //! selected network as the Safety FBD editor's help says).
-//! CODESYS documents no key for Insert Network (below), Insert Return or the edge and set/reset
-//! commands, so they take Ctrl+T, Ctrl+Shift+R and Ctrl+E here.
+//! CODESYS documents no key for Insert Network (below), Insert Return, the edge and set/reset
+//! commands or EN/ENO on a box, so they take Ctrl+T, Ctrl+Shift+R, Ctrl+E and Ctrl+Shift+B
+//! here.
 //! OpenPLC v4's single letters (C, Q, F, B, Shift+E) are not bound: typing on a selected element
 //! enters its operand, as in CODESYS, and a letter cannot do both.
 
@@ -20,7 +21,7 @@ use egui::{Key, Modifiers};
 use project_model::{
     Anchor, BodySplice, CoilKind, Network, NetworkEditError, ParallelSide, Side, cycle_modifier,
     delete_elements, delete_networks, insert_network, insert_output, insert_parallel,
-    insert_series, new_coil, new_contact, new_jump, new_return, toggle_negation,
+    insert_series, new_coil, new_contact, new_jump, new_return, toggle_en_eno, toggle_negation,
 };
 
 /// A command of the diagram editor, from a key, the toolbox or the app's menus.
@@ -56,8 +57,11 @@ pub enum DiagramCommand {
     },
     /// Negates the selected contact, coil or box pin (Ctrl+N).
     Negate,
-    /// Cycles the selected contact's or coil's modifier (Ctrl+E).
+    /// Cycles the selected contact's or coil's modifier, or the selected box input's edge
+    /// detection (Ctrl+E).
     CycleModifier,
+    /// Gives the selected box EN and ENO pins or takes them away (Ctrl+Shift+B).
+    ToggleEnEno,
     /// Deletes the selected elements, or the selected network (Delete).
     Delete,
 }
@@ -82,6 +86,7 @@ pub(super) fn command_for_key(key: Key, modifiers: Modifiers) -> Option<DiagramC
             kind: CoilKind::Normal,
         },
         (Key::B, false) => DiagramCommand::InsertBox,
+        (Key::B, true) => DiagramCommand::ToggleEnEno,
         (Key::L, false) => DiagramCommand::InsertJump,
         (Key::R, true) => DiagramCommand::InsertReturn,
         (Key::I, false) => DiagramCommand::InsertNetwork { side: Side::Before },
@@ -122,7 +127,10 @@ pub(super) fn run_command(
 ) -> Result<BodySplice, NetworkEditError> {
     let inserts = !matches!(
         command,
-        DiagramCommand::Negate | DiagramCommand::CycleModifier | DiagramCommand::Delete
+        DiagramCommand::Negate
+            | DiagramCommand::CycleModifier
+            | DiagramCommand::ToggleEnEno
+            | DiagramCommand::Delete
     );
     if body.is_empty() && inserts && !matches!(command, DiagramCommand::InsertNetwork { .. }) {
         let fresh = vec![Network::default()];
@@ -163,6 +171,7 @@ pub(super) fn run_command(
         }
         DiagramCommand::Negate => toggle_negation(body, first?, None),
         DiagramCommand::CycleModifier => cycle_modifier(body, first?),
+        DiagramCommand::ToggleEnEno => toggle_en_eno(body, first?),
         DiagramCommand::Delete => {
             if selection.elements.is_empty() {
                 let index = selection.network.ok_or(NetworkEditError::NothingSelected)?;

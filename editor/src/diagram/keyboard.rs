@@ -189,13 +189,19 @@ impl DiagramEditor {
             self.open_entry(EntryTarget::NewBox(target), None);
             return;
         }
-        if command == DiagramCommand::Negate
-            && let (Some(pin), [element]) = (
-                self.selected_pin.clone(),
-                self.selection.elements.as_slice(),
-            )
-        {
-            let result = project_model::toggle_negation(&self.networks, *element, Some(&pin));
+        if matches!(
+            command,
+            DiagramCommand::Negate | DiagramCommand::CycleModifier
+        ) && let (Some(pin), [element]) = (
+            self.selected_pin.clone(),
+            self.selection.elements.as_slice(),
+        ) {
+            // On a selected pin, negation and the modifier act on the pin, not the box.
+            let result = if command == DiagramCommand::Negate {
+                project_model::toggle_negation(&self.networks, *element, Some(&pin))
+            } else {
+                project_model::cycle_pin_edge(&self.networks, *element, &pin)
+            };
             match result {
                 Ok(splice) => {
                     self.apply_splice(splice, frame);

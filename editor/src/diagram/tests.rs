@@ -866,3 +866,51 @@ fn a_narrow_body_at_100_percent_needs_no_horizontal_scrolling() {
         canvas.right()
     );
 }
+
+#[test]
+fn ctrl_shift_b_gives_the_selected_box_en_and_eno_and_takes_them_away() {
+    let mut body = one_rung();
+    body[0].rung.push(project_model::new_box(
+        "TON",
+        "delay",
+        &["IN", "PT"],
+        &["Q", "ET"],
+    ));
+    if let FlowNode::Block(block) = &mut body[0].rung[1] {
+        block.id = ElementId(3);
+    }
+    let mut harness = harness(body, DiagramView::Ladder);
+    let rect = harness
+        .state()
+        .editor
+        .element_screen_rect(ElementId(3))
+        .expect("the box is drawn");
+    // The box's title, away from its pins.
+    let title = egui::pos2(rect.center().x, rect.top() + 6.0);
+    harness.hover_at(title);
+    harness.run_steps(1);
+    for pressed in [true, false] {
+        harness.event(Event::PointerButton {
+            pos: title,
+            button: egui::PointerButton::Primary,
+            pressed,
+            modifiers: Modifiers::NONE,
+        });
+    }
+    harness.run_steps(2);
+    let pins = |host: &Host| match &host.body[0].rung[1] {
+        FlowNode::Block(block) => block
+            .inputs
+            .iter()
+            .map(|input| input.pin.clone())
+            .collect::<Vec<_>>(),
+        _ => Vec::new(),
+    };
+    harness.key_press_modifiers(Modifiers::COMMAND | Modifiers::SHIFT, Key::B);
+    harness.run_steps(3);
+    assert_eq!(pins(harness.state()), ["EN", "IN", "PT"]);
+    harness.key_press_modifiers(Modifiers::COMMAND | Modifiers::SHIFT, Key::B);
+    harness.run_steps(3);
+    assert_eq!(pins(harness.state()), ["IN", "PT"]);
+    assert_eq!(harness.state().changes, 2);
+}

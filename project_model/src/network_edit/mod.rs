@@ -11,6 +11,9 @@ use std::collections::{BTreeMap, BTreeSet};
 use thiserror::Error;
 
 mod find;
+mod pins;
+
+pub use pins::{cycle_pin_edge, toggle_en_eno};
 
 use find::{
     chain_feeding_output, chain_holding, edit_element, outputs_fed_by, outputs_holding,

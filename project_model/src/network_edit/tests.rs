@@ -371,3 +371,85 @@ fn texts_and_headers_are_set_on_their_elements() {
         (0, 1, None)
     );
 }
+
+#[test]
+fn en_and_eno_are_added_to_a_box_and_taken_away_again() {
+    let splice = insert_series(
+        &body(),
+        Anchor::Element(ElementId(2)),
+        Side::After,
+        new_box("TON", "timer", &["IN", "PT"], &["Q", "ET"]),
+    )
+    .unwrap();
+    let plain = applied(body(), &splice);
+    let with_en = applied(plain.clone(), &toggle_en_eno(&plain, ElementId(4)).unwrap());
+    let FlowNode::Block(block) = &with_en[0].rung[2] else {
+        panic!("the box went away");
+    };
+    let pins = |pins: Vec<&str>| pins.into_iter().map(str::to_owned).collect::<Vec<_>>();
+    assert_eq!(
+        block
+            .inputs
+            .iter()
+            .map(|i| i.pin.clone())
+            .collect::<Vec<_>>(),
+        pins(vec!["EN", "IN", "PT"])
+    );
+    assert_eq!(block.chain_output(), Some(0));
+    assert!(crate::network_problems(&with_en).is_empty());
+    let without = applied(
+        with_en.clone(),
+        &toggle_en_eno(&with_en, ElementId(4)).unwrap(),
+    );
+    assert_eq!(without, plain);
+    // A contact has no EN.
+    assert!(matches!(
+        toggle_en_eno(&plain, ElementId(1)),
+        Err(NetworkEditError::NotApplicable { .. })
+    ));
+}
+
+#[test]
+fn taking_en_away_is_refused_when_the_first_input_would_be_driven_twice() {
+    let splice = insert_series(
+        &body(),
+        Anchor::Element(ElementId(2)),
+        Side::After,
+        new_box("TON", "timer", &["EN", "IN", "PT"], &["ENO", "Q", "ET"]),
+    )
+    .unwrap();
+    let body = applied(body(), &splice);
+    let body = applied(
+        body.clone(),
+        &set_pin_operand(&body, ElementId(4), "IN", "start").unwrap(),
+    );
+    assert!(matches!(
+        toggle_en_eno(&body, ElementId(4)),
+        Err(NetworkEditError::NotApplicable { .. })
+    ));
+}
+
+#[test]
+fn an_input_pin_s_edge_cycles_through_rising_and_falling() {
+    let splice = insert_series(
+        &body(),
+        Anchor::Element(ElementId(2)),
+        Side::After,
+        new_box("CTU", "counter", &["CU", "RESET", "PV"], &["Q", "CV"]),
+    )
+    .unwrap();
+    let mut body = applied(body(), &splice);
+    let mut edges = Vec::new();
+    for _ in 0..3 {
+        body = applied(
+            body.clone(),
+            &cycle_pin_edge(&body, ElementId(4), "RESET").unwrap(),
+        );
+        let FlowNode::Block(block) = &body[0].rung[2] else {
+            panic!("the box went away");
+        };
+        edges.push(block.inputs[1].edge);
+    }
+    assert_eq!(edges, [Edge::Rising, Edge::Falling, Edge::None]);
+    assert!(cycle_pin_edge(&body, ElementId(4), "Q").is_err());
+}
