@@ -18,9 +18,7 @@ use project_model::{
 
 use super::measure::{box_cells, operand_cells, operand_width_px};
 use super::paint::CELL_SIZE_PX;
-use super::placed::{
-    InsertPoint, InsertTarget, NetworkLayout, PinMark, PlacedElement, Power, Shape, Wire,
-};
+use super::placed::{InsertTarget, NetworkLayout, PinMark, PlacedElement, Power, Shape};
 
 /// The narrowest box, in cells, so a box of few letters still reads as a box.
 const MIN_BOX_CELLS: f32 = 0.7;
@@ -45,7 +43,7 @@ pub fn fbd_layout(network: &Network, network_index: usize) -> NetworkLayout {
             (size, builder.expr(expr, Pos2::ZERO, false))
         }
         None => {
-            builder.insert(
+            builder.layout.insert(
                 pos2(0.5, 0.5),
                 InsertTarget::Series {
                     anchor: Anchor::Network(network_index),
@@ -306,14 +304,6 @@ struct Builder {
 }
 
 impl Builder {
-    fn insert(&mut self, pos: Pos2, target: InsertTarget) {
-        self.layout.insert_points.push(InsertPoint { pos, target });
-    }
-
-    fn wire(&mut self, points: Vec<Pos2>, power: Power) {
-        self.layout.wires.push(Wire { points, power });
-    }
-
     /// Places `expr` with its top-left corner at `at`; returns its output point and power.
     /// `into_pin` tells that it feeds a box's pin, which then carries its negation circle.
     fn expr(&mut self, expr: &Expr<'_>, at: Pos2, into_pin: bool) -> (Pos2, Power) {
@@ -331,14 +321,14 @@ impl Builder {
                     },
                     power_in: Power::None,
                 });
-                self.insert(
+                self.layout.insert(
                     pos2(at.x + size.x, at.y + 0.5),
                     InsertTarget::Series {
                         anchor: Anchor::Element(operand.id),
                         side: Side::After,
                     },
                 );
-                self.insert(
+                self.layout.insert(
                     pos2(at.x + size.x / 2.0, at.y + 1.0),
                     InsertTarget::Parallel {
                         id: operand.id,
@@ -381,7 +371,7 @@ impl Builder {
                 }
                 let pin = pos2(box_x, row + 0.5);
                 if (out.y - pin.y).abs() >= f32::EPSILON {
-                    self.wire(
+                    self.layout.wire(
                         vec![
                             out,
                             pos2(box_x - lead / 2.0, out.y),
@@ -391,7 +381,7 @@ impl Builder {
                         power,
                     );
                 } else if out.x < pin.x {
-                    self.wire(vec![out, pin], power);
+                    self.layout.wire(vec![out, pin], power);
                 }
             }
             inputs.push(PinMark {
@@ -414,7 +404,7 @@ impl Builder {
         for (index, variable) in &gate.assignments {
             let row = at.y + *index as f32;
             let from = pos2(box_x + box_width, row + 0.5);
-            self.wire(
+            self.layout.wire(
                 vec![from, pos2(from.x + ASSIGNMENT_LEAD_CELLS, from.y)],
                 gate.power,
             );
@@ -444,7 +434,7 @@ impl Builder {
             power_in,
         });
         if let Some(id) = gate.id {
-            self.insert(
+            self.layout.insert(
                 pos2(box_x + box_width, at.y + 0.5),
                 InsertTarget::Series {
                     anchor: Anchor::Element(id),
@@ -456,7 +446,7 @@ impl Builder {
         let out = pos2(box_x + box_width, out_y);
         if assignments > 0.0 {
             let end = pos2(at.x + size.x, out_y);
-            self.wire(vec![out, end], gate.power);
+            self.layout.wire(vec![out, end], gate.power);
             return (end, gate.power);
         }
         (out, gate.power)
@@ -490,7 +480,7 @@ impl Builder {
                 NetworkOutput::Return { .. } => Some(Shape::Return),
                 NetworkOutput::Branch { .. } => None,
             };
-            self.wire(
+            self.layout.wire(
                 vec![
                     source,
                     pos2(bend_x, source.y),
@@ -507,7 +497,7 @@ impl Builder {
                     power_in: power,
                 });
                 width = width.max(output_width);
-                self.insert(
+                self.layout.insert(
                     pos2(x + output_width / 2.0, y + 1.0),
                     InsertTarget::Output {
                         anchor: Anchor::Element(output.id()),
@@ -532,7 +522,7 @@ impl Builder {
             }
         }
         if outputs.is_empty() {
-            self.insert(
+            self.layout.insert(
                 pos2(x + MIN_VARIABLE_CELLS / 2.0, top + 0.5),
                 InsertTarget::Output { anchor: end_anchor },
             );

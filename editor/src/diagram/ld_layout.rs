@@ -12,9 +12,7 @@ use project_model::{
 };
 
 use super::measure::{box_cells, operand_cells};
-use super::placed::{
-    InsertPoint, InsertTarget, NetworkLayout, PinMark, PlacedElement, Power, Shape, Wire,
-};
+use super::placed::{InsertTarget, NetworkLayout, PinMark, PlacedElement, Power, Shape};
 
 /// The narrowest network, in cells, so an empty rung still has a line to click and drop on.
 const MIN_WIDTH_CELLS: f32 = 4.0;
@@ -31,7 +29,7 @@ pub fn ld_layout(network: &Network, network_index: usize) -> NetworkLayout {
     let mut builder = Builder::default();
     let power = builder.chain(&network.rung, Pos2::ZERO, Power::Rail);
     if network.rung.is_empty() {
-        builder.insert(
+        builder.layout.insert(
             pos2(0.5, 0.5),
             InsertTarget::Series {
                 anchor: Anchor::Network(network_index),
@@ -47,8 +45,12 @@ pub fn ld_layout(network: &Network, network_index: usize) -> NetworkLayout {
         power,
         Anchor::Network(network_index),
     );
-    builder.wire(vec![pos2(0.0, 0.0), pos2(0.0, height)], Power::Rail);
-    builder.wire(vec![pos2(width, 0.0), pos2(width, height)], Power::None);
+    builder
+        .layout
+        .wire(vec![pos2(0.0, 0.0), pos2(0.0, height)], Power::Rail);
+    builder
+        .layout
+        .wire(vec![pos2(width, 0.0), pos2(width, height)], Power::None);
     NetworkLayout {
         size: vec2(width, height),
         ..builder.layout
@@ -187,14 +189,6 @@ struct Builder {
 }
 
 impl Builder {
-    fn insert(&mut self, pos: Pos2, target: InsertTarget) {
-        self.layout.insert_points.push(InsertPoint { pos, target });
-    }
-
-    fn wire(&mut self, points: Vec<Pos2>, power: Power) {
-        self.layout.wires.push(Wire { points, power });
-    }
-
     fn place(&mut self, id: Option<ElementId>, rect: Rect, shape: Shape, power_in: Power) {
         self.layout.elements.push(PlacedElement {
             id,
@@ -211,14 +205,14 @@ impl Builder {
         for node in chain {
             let size = measure_node(node);
             let id = node.id();
-            self.insert(
+            self.layout.insert(
                 pos2(x, origin.y + 0.5),
                 InsertTarget::Series {
                     anchor: Anchor::Element(id),
                     side: Side::Before,
                 },
             );
-            self.insert(
+            self.layout.insert(
                 pos2(x + size.x / 2.0, origin.y + size.y),
                 InsertTarget::Parallel {
                     id,
@@ -229,7 +223,7 @@ impl Builder {
             x += size.x;
         }
         if let Some(last) = chain.last() {
-            self.insert(
+            self.layout.insert(
                 pos2(x, origin.y + 0.5),
                 InsertTarget::Series {
                     anchor: Anchor::Element(last.id()),
@@ -270,7 +264,7 @@ impl Builder {
                     let branch_size = measure_chain(&branch.rung);
                     let end = self.chain(&branch.rung, pos2(at.x, y), power);
                     if branch_size.x < size.x {
-                        self.wire(
+                        self.layout.wire(
                             vec![
                                 pos2(at.x + branch_size.x, y + 0.5),
                                 pos2(at.x + size.x, y + 0.5),
@@ -281,11 +275,11 @@ impl Builder {
                     last_row = y;
                     y += branch_size.y.max(1.0);
                 }
-                self.wire(
+                self.layout.wire(
                     vec![pos2(at.x, at.y + 0.5), pos2(at.x, last_row + 0.5)],
                     power,
                 );
-                self.wire(
+                self.layout.wire(
                     vec![
                         pos2(at.x + size.x, at.y + 0.5),
                         pos2(at.x + size.x, last_row + 0.5),
@@ -305,7 +299,8 @@ impl Builder {
         let box_x = at.x + size.x - width - column;
         let out = Power::After(block.id);
         if box_x > at.x {
-            self.wire(vec![pos2(at.x, at.y + 0.5), pos2(box_x, at.y + 0.5)], power);
+            self.layout
+                .wire(vec![pos2(at.x, at.y + 0.5), pos2(box_x, at.y + 0.5)], power);
         }
         let mut inputs = Vec::new();
         let mut row = at.y;
@@ -368,7 +363,7 @@ impl Builder {
         let chain_row = at.y + chain.unwrap_or(0) as f32 + 0.5;
         let right = at.x + size.x;
         if column > 0.0 || chain_row > at.y + 0.5 {
-            self.wire(
+            self.layout.wire(
                 vec![
                     pos2(box_x + width, chain_row),
                     pos2(right, chain_row),
@@ -403,8 +398,9 @@ impl Builder {
         end_anchor: Anchor,
     ) -> f32 {
         if outputs.is_empty() {
-            self.wire(vec![pos2(fan_x, top + 0.5), pos2(right, top + 0.5)], power);
-            self.insert(
+            self.layout
+                .wire(vec![pos2(fan_x, top + 0.5), pos2(right, top + 0.5)], power);
+            self.layout.insert(
                 pos2(right - 0.5, top + 0.5),
                 InsertTarget::Output { anchor: end_anchor },
             );
@@ -428,12 +424,12 @@ impl Builder {
                 NetworkOutput::Branch { .. } => None,
             };
             if let Some(shape) = shape {
-                self.wire(
+                self.layout.wire(
                     vec![pos2(fan_x, y + 0.5), pos2(right - cell_width, y + 0.5)],
                     power,
                 );
                 self.place(Some(output.id()), cell, shape, power);
-                self.insert(
+                self.layout.insert(
                     pos2(right - cell_width / 2.0, y + 1.0),
                     InsertTarget::Output {
                         anchor: Anchor::Element(output.id()),
@@ -458,7 +454,7 @@ impl Builder {
             y += height;
         }
         if last_row > top {
-            self.wire(
+            self.layout.wire(
                 vec![pos2(fan_x, top + 0.5), pos2(fan_x, last_row + 0.5)],
                 power,
             );

@@ -168,6 +168,16 @@ impl Shape {
 }
 
 impl NetworkLayout {
+    /// Adds an insertion point at `pos` for `target`, while a layout is built.
+    pub(super) fn insert(&mut self, pos: Pos2, target: InsertTarget) {
+        self.insert_points.push(InsertPoint { pos, target });
+    }
+
+    /// Adds a wire through `points` carrying `power`, while a layout is built.
+    pub(super) fn wire(&mut self, points: Vec<Pos2>, power: Power) {
+        self.wires.push(Wire { points, power });
+    }
+
     /// The element drawn at `pos` (in cells), the innermost when several overlap.
     pub fn element_at(&self, pos: Pos2) -> Option<&PlacedElement> {
         self.elements

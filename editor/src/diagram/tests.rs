@@ -109,6 +109,21 @@ fn type_and_enter(harness: &mut Harness<'static, Host>, text: &str) {
     harness.run_steps(3);
 }
 
+/// A primary click at `pos`, after hovering there as a mouse does.
+fn click(harness: &mut Harness<'static, Host>, pos: egui::Pos2) {
+    harness.hover_at(pos);
+    harness.run_steps(1);
+    for pressed in [true, false] {
+        harness.event(Event::PointerButton {
+            pos,
+            button: egui::PointerButton::Primary,
+            pressed,
+            modifiers: Modifiers::NONE,
+        });
+    }
+    harness.run_steps(2);
+}
+
 fn contact(id: u32, text: &str) -> FlowNode {
     FlowNode::Operand(Operand {
         id: ElementId(id),
@@ -315,21 +330,7 @@ fn a_click_on_a_box_pin_then_typing_sets_the_pin_operand() {
         rect.left() + rect.width() * 0.25,
         rect.top() + rect.height() * 0.75,
     );
-    harness.hover_at(pt);
-    harness.run_steps(1);
-    harness.event(Event::PointerButton {
-        pos: pt,
-        button: egui::PointerButton::Primary,
-        pressed: true,
-        modifiers: Modifiers::NONE,
-    });
-    harness.event(Event::PointerButton {
-        pos: pt,
-        button: egui::PointerButton::Primary,
-        pressed: false,
-        modifiers: Modifiers::NONE,
-    });
-    harness.run_steps(2);
+    click(&mut harness, pt);
     type_and_enter(&mut harness, "T#5S");
     let host = harness.state();
     let FlowNode::Block(block) = &host.body[0].rung[1] else {
@@ -887,17 +888,7 @@ fn ctrl_shift_b_gives_the_selected_box_en_and_eno_and_takes_them_away() {
         .expect("the box is drawn");
     // The box's title, away from its pins.
     let title = egui::pos2(rect.center().x, rect.top() + 6.0);
-    harness.hover_at(title);
-    harness.run_steps(1);
-    for pressed in [true, false] {
-        harness.event(Event::PointerButton {
-            pos: title,
-            button: egui::PointerButton::Primary,
-            pressed,
-            modifiers: Modifiers::NONE,
-        });
-    }
-    harness.run_steps(2);
+    click(&mut harness, title);
     let pins = |host: &Host| match &host.body[0].rung[1] {
         FlowNode::Block(block) => block
             .inputs
