@@ -66,6 +66,7 @@ codes! {
     Inaccessible = "E0112", Error, "Member not visible from outside";
     ReservedName = "E0113", Error, "Name with two underscores in a row";
     InvalidNetwork = "E0114", Error, "LD or FBD element that cannot be compiled";
+    UncompiledChart = "E0115", Error, "CFC or SFC chart that cannot be compiled yet";
     UnusedVariable = "W0001", Warning, "Variable never used";
     UnassignedVariable = "W0002", Warning, "Variable read but never written";
     OverlappingAddresses = "W0003", Warning, "Located variables overlap";
