@@ -205,6 +205,7 @@ impl Builder {
             methods: Vec::new(),
             properties: Vec::new(),
             actions: Vec::new(),
+            transitions: Vec::new(),
         };
         for block in node.var_blocks() {
             pou.variables.extend(self.variables(&name, &block));
@@ -239,6 +240,7 @@ impl Builder {
             methods: Vec::new(),
             properties: Vec::new(),
             actions: Vec::new(),
+            transitions: Vec::new(),
         };
         self.members(&mut interface, node.members());
         self.objects.push(Object::Pou(interface));

@@ -46,6 +46,7 @@ fn pou(name: &str, kind: PouKind) -> Pou {
         methods: Vec::new(),
         properties: Vec::new(),
         actions: Vec::new(),
+        transitions: Vec::new(),
     }
 }
 

@@ -55,6 +55,7 @@ fn large_project() -> Project {
                 methods: Vec::new(),
                 properties: Vec::new(),
                 actions: Vec::new(),
+                transitions: Vec::new(),
             })));
     }
     for index in 0..100 {

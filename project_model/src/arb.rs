@@ -106,7 +106,8 @@ fn make_member_names_unique(pou: &mut Pou) {
         .iter_mut()
         .map(|method| &mut method.name)
         .chain(pou.properties.iter_mut().map(|property| &mut property.name))
-        .chain(pou.actions.iter_mut().map(|action| &mut action.name));
+        .chain(pou.actions.iter_mut().map(|action| &mut action.name))
+        .chain(pou.transitions.iter_mut().map(|t| &mut t.name));
     for (index, name) in names.enumerate() {
         *name = format!("{name}_{index}");
     }
@@ -293,4 +294,106 @@ fn renumber_outputs(outputs: &mut [NetworkOutput], next: &mut u32) {
             }
         }
     }
+}
+
+/// A valid CFC chart: inputs wired into an `AND` box whose result goes to an output, with
+/// the box and the output numbered in the execution order.
+pub fn cfc_chart() -> impl Strategy<Value = crate::CfcChart> {
+    use crate::{CfcBox, CfcChart, CfcElement, CfcElementKind, CfcPin, PinRef, Wire};
+    (ident(), ident(), ident(), 0..40i32, 0..40i32).prop_map(|(a, b, out, x, y)| {
+        let element = |id: u32, x: i32, y: i32, order: Option<u32>, kind| CfcElement {
+            id: ElementId(id),
+            x,
+            y,
+            order,
+            kind,
+        };
+        let pin = |name: &str| CfcPin {
+            name: name.into(),
+            ..CfcPin::default()
+        };
+        let wire = |from: u32, from_pin: &str, to: u32, to_pin: &str| Wire {
+            from: PinRef {
+                element: ElementId(from),
+                pin: from_pin.into(),
+            },
+            to: PinRef {
+                element: ElementId(to),
+                pin: to_pin.into(),
+            },
+            points: Vec::new(),
+        };
+        CfcChart {
+            elements: vec![
+                element(1, x, y, None, CfcElementKind::Input { expression: a }),
+                element(2, x, y + 2, None, CfcElementKind::Input { expression: b }),
+                element(
+                    3,
+                    x + 6,
+                    y,
+                    Some(0),
+                    CfcElementKind::Box(CfcBox {
+                        type_name: "AND".into(),
+                        instance: String::new(),
+                        inputs: vec![pin("IN1"), pin("IN2")],
+                        outputs: vec![pin("OUT")],
+                    }),
+                ),
+                element(
+                    4,
+                    x + 12,
+                    y,
+                    Some(1),
+                    CfcElementKind::Output {
+                        expression: out,
+                        coil: CoilKind::Normal,
+                    },
+                ),
+            ],
+            wires: vec![
+                wire(1, "", 3, "IN1"),
+                wire(2, "", 3, "IN2"),
+                wire(3, "OUT", 4, ""),
+            ],
+        }
+    })
+}
+
+/// A valid SFC chart: the initial step, then pairs of transitions and steps, and a jump
+/// back to the initial step.
+pub fn sfc_chart() -> impl Strategy<Value = crate::SfcChart> {
+    use crate::{Jump, SfcChart, SfcNode, Step, Transition};
+    proptest::collection::vec(ident(), 0..3).prop_map(|conditions| {
+        let mut next = 1;
+        let mut id = || {
+            next += 1;
+            ElementId(next - 1)
+        };
+        let step = |id: ElementId, index: usize| {
+            SfcNode::Step(Step {
+                id,
+                name: format!("Step{index}"),
+                ..Step::default()
+            })
+        };
+        let mut sequence = vec![step(id(), 0)];
+        for (index, condition) in conditions.into_iter().enumerate() {
+            sequence.push(SfcNode::Transition(Transition {
+                id: id(),
+                condition,
+                ..Transition::default()
+            }));
+            sequence.push(step(id(), index + 1));
+        }
+        sequence.push(SfcNode::Transition(Transition {
+            id: id(),
+            condition: "TRUE".into(),
+            ..Transition::default()
+        }));
+        sequence.push(SfcNode::Jump(Jump {
+            id: id(),
+            target: "Step0".into(),
+        }));
+        SfcChart { sequence }
+    })
 }

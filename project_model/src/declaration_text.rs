@@ -249,6 +249,7 @@ mod tests {
             methods: Vec::new(),
             properties: Vec::new(),
             actions: Vec::new(),
+            transitions: Vec::new(),
         };
         assert_eq!(
             pou.declaration_text(),

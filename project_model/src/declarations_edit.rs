@@ -136,6 +136,7 @@ mod tests {
             }],
             properties: Vec::new(),
             actions: Vec::new(),
+            transitions: Vec::new(),
         }
     }
 

@@ -191,6 +191,7 @@ mod tests {
                 methods: Vec::new(),
                 properties: Vec::new(),
                 actions: Vec::new(),
+                transitions: Vec::new(),
             })));
         let typed = |at: usize, text: &str| {
             vec![Edit::ReplaceText {

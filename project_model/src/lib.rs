@@ -12,7 +12,7 @@
 mod application;
 mod axis;
 mod cam;
-mod chart;
+mod cfc;
 mod data_type;
 mod declaration_text;
 mod declarations_edit;
@@ -32,6 +32,7 @@ mod network_splice;
 mod network_walk;
 mod pou;
 mod project;
+mod sfc;
 mod task;
 mod trace;
 mod validate;
@@ -47,10 +48,7 @@ pub use cam::{
     CamCompileFormat, CamContinuity, CamKeyPoint, CamPeriod, CamProfile, CamRange, CamSegment,
     CamTable, CamTablePoint, MotionLaw, PointInterpolation, Tappet, TappetAction, TappetTrack,
 };
-pub use chart::{
-    ActionAssociation, ActionQualifier, BranchKind, Chart, ChartElement, ChartElementKind,
-    Connection, PinRef,
-};
+pub use cfc::{CfcBox, CfcChart, CfcElement, CfcElementKind, CfcPin, GridPoint, PinRef, Wire};
 pub use data_type::{DataType, EnumValue, StructMember, TypeDefinition};
 pub use declarations_edit::{
     DeclarationsChange, TypedDeclarations, TypedHeader, gvl_declarations_change,
@@ -89,6 +87,10 @@ pub use pou::{
     AccessSpecifier, Body, Language, Method, Pou, PouAction, PouKind, Property, PropertyAccessor,
 };
 pub use project::{Controller, ModbusServerMap, ModbusServerRange, Project};
+pub use sfc::{
+    ActionAssociation, ActionQualifier, Jump, MacroStep, SfcBranches, SfcChart, SfcNode,
+    SfcSequence, Step, Transition,
+};
 pub use task::{Task, TaskKind, Watchdog};
 pub use trace::{TraceConfig, TraceTrigger, TraceTriggerCondition, TraceVariable};
 pub use variable::{VarSection, Variable};

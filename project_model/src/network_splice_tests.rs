@@ -48,6 +48,7 @@ fn project() -> Project {
         }],
         properties: Vec::new(),
         actions: Vec::new(),
+        transitions: Vec::new(),
     };
     let text = Pou {
         name: "Text".into(),

@@ -2,7 +2,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::{Chart, Network, Variable};
+use crate::{CfcChart, Network, SfcChart, Variable};
 
 /// A program organisation unit.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -55,6 +55,13 @@ pub struct Pou {
     #[serde(default, rename = "action", skip_serializing_if = "Vec::is_empty")]
     #[cfg_attr(feature = "proptest", proptest(strategy = "crate::arb::small_vec()"))]
     pub actions: Vec<PouAction>,
+    /// Transition objects of an SFC program or function block: conditions of any language
+    /// that SFC transitions name. A body computes the BOOL by assigning the transition's name
+    /// (`Ready := a AND b;`, a coil or an assignment on the name in LD or FBD); an ST body may
+    /// also be the expression alone (`a AND b`).
+    #[serde(default, rename = "transition", skip_serializing_if = "Vec::is_empty")]
+    #[cfg_attr(feature = "proptest", proptest(strategy = "crate::arb::small_vec()"))]
+    pub transitions: Vec<PouAction>,
 }
 
 /// What kind of POU it is.
@@ -132,15 +139,17 @@ pub enum Body {
         #[cfg_attr(feature = "proptest", proptest(strategy = "crate::arb::networks()"))]
         networks: Vec<Network>,
     },
-    /// Continuous Function Chart: one free-form network.
+    /// Continuous Function Chart: elements placed freely, run in their execution order.
     Cfc {
         /// The chart.
-        chart: Chart,
+        #[cfg_attr(feature = "proptest", proptest(strategy = "crate::arb::cfc_chart()"))]
+        chart: CfcChart,
     },
-    /// Sequential Function Chart: one chart of steps and transitions.
+    /// Sequential Function Chart: steps and transitions from the initial step.
     Sfc {
         /// The chart.
-        chart: Chart,
+        #[cfg_attr(feature = "proptest", proptest(strategy = "crate::arb::sfc_chart()"))]
+        chart: SfcChart,
     },
 }
 

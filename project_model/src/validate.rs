@@ -41,7 +41,12 @@ pub(crate) fn member_problem(object: &Object) -> Option<String> {
         .iter()
         .map(|method| ("method", method.name.as_str()))
         .chain(pou.properties.iter().map(|p| ("property", p.name.as_str())))
-        .chain(pou.actions.iter().map(|a| ("action", a.name.as_str())));
+        .chain(pou.actions.iter().map(|a| ("action", a.name.as_str())))
+        .chain(
+            pou.transitions
+                .iter()
+                .map(|t| ("transition", t.name.as_str())),
+        );
     let mut seen: Vec<&str> = Vec::new();
     for (what, name) in members {
         if !is_valid_identifier(name) {
@@ -52,7 +57,7 @@ pub(crate) fn member_problem(object: &Object) -> Option<String> {
         }
         if seen.iter().any(|other| same_identifier(other, name)) {
             return Some(format!(
-                "'{}' has two methods, properties or actions named '{name}'",
+                "'{}' has two methods, properties, actions or transitions named '{name}'",
                 pou.name
             ));
         }

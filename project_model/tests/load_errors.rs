@@ -112,7 +112,7 @@ fn a_newer_format_version_is_refused_with_both_versions() {
     let dir = example_copy();
     replace_in(
         &dir.path().join("rivet.toml"),
-        "format_version = 2",
+        "format_version = 3",
         "format_version = 7",
     );
     let error = load_fails(dir.path());
@@ -128,7 +128,7 @@ fn a_newer_format_version_is_refused_with_both_versions() {
 #[test]
 fn a_missing_format_version_is_reported() {
     let dir = example_copy();
-    replace_in(&dir.path().join("rivet.toml"), "format_version = 2\n", "");
+    replace_in(&dir.path().join("rivet.toml"), "format_version = 3\n", "");
     let error = load_fails(dir.path());
     assert_error(
         &error,
@@ -433,12 +433,12 @@ connection = [
 "#;
 
 #[test]
-fn a_version_1_project_loads_converted_and_saves_as_version_2() {
+fn a_version_1_project_loads_converted_and_saves_as_the_current_version() {
     let dir = example_copy();
     add_ladder(dir.path(), LADDER_VERSION_1);
     replace_in(
         &dir.path().join("rivet.toml"),
-        "format_version = 2",
+        "format_version = 3",
         "format_version = 1",
     );
     let before = snapshot(dir.path());
@@ -461,7 +461,7 @@ fn a_version_1_project_loads_converted_and_saves_as_version_2() {
             .contains(&PathBuf::from("application/Ladder.pou.toml"))
     );
     let manifest = fs::read_to_string(dir.path().join("rivet.toml")).unwrap();
-    assert!(manifest.starts_with("format_version = 2\n"), "{manifest}");
+    assert!(manifest.starts_with("format_version = 3\n"), "{manifest}");
     let again = load_project(dir.path()).unwrap();
     assert_eq!(again.project, loaded.project);
 }
@@ -475,7 +475,7 @@ fn a_version_1_network_that_cannot_be_converted_holds_back_only_its_pou() {
     );
     replace_in(
         &dir.path().join("rivet.toml"),
-        "format_version = 2",
+        "format_version = 3",
         "format_version = 1",
     );
     let error = load_fails(dir.path());
@@ -490,4 +490,71 @@ fn a_version_1_network_that_cannot_be_converted_holds_back_only_its_pou() {
     let partial = error.partial.unwrap();
     assert_eq!(partial.held_back[0].name, "Ladder");
     assert!(partial.project.application.object("Main").is_some());
+}
+
+/// A version 2 CFC body: a graph with an old execution order and an FBD-style EN/ENO box.
+const CFC_VERSION_2: &str = r#"kind = "program"
+
+[body]
+language = "cfc"
+
+[body.chart]
+comment = "Doubles the input"
+element = [
+    { id = 1, x = 0, y = 0, kind = { type = "input", expression = "a" } },
+    { id = 2, x = 6, y = 0, execution_order = 4, kind = { type = "block", type_name = "ADD", inputs = ["IN1", "IN2"], outputs = ["OUT"], en_eno = true } },
+    { id = 3, x = 12, y = 0, kind = { type = "output", expression = "b" } },
+]
+connection = [
+    { from = { element = 1 }, to = { element = 2, pin = "IN1" } },
+    { from = { element = 1 }, to = { element = 2, pin = "IN2" } },
+    { from = { element = 2, pin = "OUT" }, to = { element = 3 } },
+]
+"#;
+
+#[test]
+fn a_version_2_cfc_chart_loads_converted_with_its_execution_order() {
+    let dir = example_copy();
+    add_ladder(dir.path(), CFC_VERSION_2);
+    replace_in(
+        &dir.path().join("rivet.toml"),
+        "format_version = 3",
+        "format_version = 2",
+    );
+    let loaded = load_project(dir.path()).unwrap();
+    let Some(project_model::Object::Pou(pou)) = loaded.project.application.object("Ladder") else {
+        panic!("no converted POU");
+    };
+    let project_model::Body::Cfc { chart } = &pou.body else {
+        panic!("not CFC: {:?}", pou.body);
+    };
+    let order = |id: u32| {
+        chart
+            .elements
+            .iter()
+            .find(|e| e.id.0 == id)
+            .map(|e| e.order)
+            .unwrap()
+    };
+    // The box had an order, the output none: the box runs first, the input has no number.
+    assert_eq!((order(1), order(2), order(3)), (None, Some(0), Some(1)));
+    let Some(project_model::CfcElementKind::Box(adder)) =
+        chart.elements.iter().find(|e| e.id.0 == 2).map(|e| &e.kind)
+    else {
+        panic!("no box");
+    };
+    let pins: Vec<&str> = adder.inputs.iter().map(|p| p.name.as_str()).collect();
+    assert_eq!(pins, ["EN", "IN1", "IN2"]);
+    assert_eq!(chart.wires.len(), 3);
+    assert!(chart.elements.iter().any(|e| matches!(
+        &e.kind,
+        project_model::CfcElementKind::Comment { text, .. } if text == "Doubles the input"
+    )));
+    let report = save_project(&loaded.project, dir.path(), &loaded.files).unwrap();
+    assert!(
+        report
+            .written
+            .contains(&PathBuf::from("application/Ladder.pou.toml"))
+    );
+    assert_eq!(load_project(dir.path()).unwrap().project, loaded.project);
 }

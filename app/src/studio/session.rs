@@ -152,7 +152,7 @@ mod tests {
         std::fs::create_dir_all(dir.join("application")).unwrap();
         std::fs::write(
             dir.join(MANIFEST_FILE_NAME),
-            "format_version = 2\nname = \"Partly\"\napplication = [\"Good.pou.toml\", \"Broken.pou.toml\"]\ncontroller = { name = \"PLC\", host = \"127.0.0.1\", port = 502 }\n",
+            "format_version = 3\nname = \"Partly\"\napplication = [\"Good.pou.toml\", \"Broken.pou.toml\"]\ncontroller = { name = \"PLC\", host = \"127.0.0.1\", port = 502 }\n",
         )
         .unwrap();
         std::fs::write(

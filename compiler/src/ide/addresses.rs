@@ -511,6 +511,7 @@ mod tests {
             methods: Vec::new(),
             properties: Vec::new(),
             actions: Vec::new(),
+            transitions: Vec::new(),
         }));
         let overlaps = located_overlaps(&project(vec![
             pou,

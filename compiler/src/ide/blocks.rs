@@ -170,6 +170,7 @@ mod tests {
             methods: Vec::new(),
             properties: Vec::new(),
             actions: Vec::new(),
+            transitions: Vec::new(),
         }
     }
 

@@ -19,6 +19,7 @@ fn pou(name: &str, kind: PouKind, variables: Vec<Variable>, body: &str) -> Node 
         methods: Vec::new(),
         properties: Vec::new(),
         actions: Vec::new(),
+        transitions: Vec::new(),
     }))
 }
 
@@ -182,12 +183,12 @@ fn cfc_and_sfc_charts_are_refused_by_the_checker_naming_what_they_implement() {
     let mut main = pou("Main", PouKind::FunctionBlock, Vec::new(), "");
     if let Node::Object(Object::Pou(main)) = &mut main {
         main.body = Body::Cfc {
-            chart: project_model::Chart::default(),
+            chart: Default::default(),
         };
         main.actions.push(project_model::PouAction {
             name: "Steps".into(),
             body: Body::Sfc {
-                chart: project_model::Chart::default(),
+                chart: Default::default(),
             },
         });
     }

@@ -11,10 +11,10 @@
 
 use std::collections::{BTreeSet, HashMap, HashSet};
 
+use super::graph_chart::{Chart, ChartElement, ChartElementKind};
 use crate::{
-    BlockCall, BlockInput, BlockOutput, Branch, Chart, ChartElement, ChartElementKind, Coil,
-    CoilKind, ElementId, FlowNode, MAX_NETWORK_NESTING, Network, NetworkOutput, NetworkProblem,
-    Operand, Parallel,
+    BlockCall, BlockInput, BlockOutput, Branch, Coil, CoilKind, ElementId, FlowNode,
+    MAX_NETWORK_NESTING, Network, NetworkOutput, NetworkProblem, Operand, Parallel,
 };
 
 /// Converts the version 1 networks of one body; new elements (parallel groups, output

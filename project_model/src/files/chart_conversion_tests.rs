@@ -1,18 +1,18 @@
-use super::super::version1::{Version1Failure, pou_from_version1};
+use super::super::older_versions::{OlderFailure, pou_from_older};
 use crate::{Body, Network, Pou};
 
 /// The networks of the LD body of a version 1 POU file, converted.
 #[track_caller]
 fn convert(v1_body: &str) -> Vec<Network> {
     let text = format!("kind = \"program\"\n\n[body]\nlanguage = \"ld\"\n\n{v1_body}");
-    match pou_from_version1("Main", &text) {
+    match pou_from_older(1, "Main", &text) {
         Ok(Pou {
             body: Body::Ld { networks },
             ..
         }) => networks,
         Ok(other) => panic!("not an LD body: {other:?}"),
-        Err(Version1Failure::Toml(error)) => panic!("{error}"),
-        Err(Version1Failure::Networks(problems)) => panic!("{problems:#?}"),
+        Err(OlderFailure::Toml(error)) => panic!("{error}"),
+        Err(OlderFailure::Networks(problems)) => panic!("{problems:#?}"),
     }
 }
 
@@ -33,9 +33,9 @@ fn expected(v2_body: &str) -> Vec<Network> {
 #[track_caller]
 fn problems(v1_body: &str) -> Vec<String> {
     let text = format!("kind = \"program\"\n\n[body]\nlanguage = \"fbd\"\n\n{v1_body}");
-    match pou_from_version1("Main", &text) {
-        Err(Version1Failure::Networks(problems)) => problems,
-        Err(Version1Failure::Toml(error)) => panic!("{error}"),
+    match pou_from_older(1, "Main", &text) {
+        Err(OlderFailure::Networks(problems)) => problems,
+        Err(OlderFailure::Toml(error)) => panic!("{error}"),
         Ok(pou) => panic!("converted: {pou:?}"),
     }
 }

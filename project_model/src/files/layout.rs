@@ -78,6 +78,13 @@ pub(crate) fn body_slots(pou: &Pou) -> Vec<BodySlot<'_>> {
             owner: format!("{pou_owner}, action '{}'", action.name),
         });
     }
+    for transition in &pou.transitions {
+        slots.push(BodySlot {
+            suffix: format!(".{}.st", transition.name),
+            body: &transition.body,
+            owner: format!("{pou_owner}, transition '{}'", transition.name),
+        });
+    }
     slots
 }
 
@@ -94,6 +101,7 @@ pub(crate) fn bodies_mut(pou: &mut Pou) -> Vec<&mut Body> {
         }
     }
     bodies.extend(pou.actions.iter_mut().map(|a| &mut a.body));
+    bodies.extend(pou.transitions.iter_mut().map(|t| &mut t.body));
     bodies
 }
 

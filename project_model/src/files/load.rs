@@ -8,8 +8,8 @@ use serde::de::DeserializeOwned;
 use super::held_back::HeldBackObject;
 use super::layout::{Entry, bodies_mut, body_slots, folder_dir, object_file, parse_entry};
 use super::manifest::{Manifest, VersionProbe};
+use super::older_versions::{OlderFailure, pou_from_older};
 use super::problem::{LoadError, LoadProblem, Severity, line_of, toml_problem};
-use super::version1::{Version1Failure, pou_from_version1};
 use super::{APPLICATION_DIR, FORMAT_VERSION, MANIFEST_FILE_NAME};
 use crate::validate::{body_problems, member_problem};
 use crate::{Body, Folder, Node, Object, ObjectKind, Pou, Project, same_identifier};
@@ -259,8 +259,8 @@ impl Loader<'_> {
         let file = object_file(folder, name, kind);
         let text = self.read_text(&file)?;
         let mut object = match kind {
-            ObjectKind::Pou if self.version == 1 => {
-                Object::Pou(self.parse_pou_version1(&file, name, &text)?)
+            ObjectKind::Pou if self.version < FORMAT_VERSION => {
+                Object::Pou(self.parse_pou_older(&file, name, &text)?)
             }
             ObjectKind::Pou => Object::Pou(self.parse(&file, &text)?),
             ObjectKind::Gvl => Object::Gvl(self.parse(&file, &text)?),
@@ -362,16 +362,16 @@ impl Loader<'_> {
         }
     }
 
-    /// Reads a POU file of format version 1, converting its LD and FBD networks.
-    fn parse_pou_version1(&mut self, file: &Path, name: &str, text: &str) -> Option<Pou> {
-        match pou_from_version1(name, text) {
+    /// Reads a POU file of an older format version, converting its graphical bodies.
+    fn parse_pou_older(&mut self, file: &Path, name: &str, text: &str) -> Option<Pou> {
+        match pou_from_older(self.version, name, text) {
             Ok(pou) => Some(pou),
-            Err(Version1Failure::Toml(error)) => {
+            Err(OlderFailure::Toml(error)) => {
                 self.problems
                     .push(toml_problem(self.dir.join(file), text, &error));
                 None
             }
-            Err(Version1Failure::Networks(messages)) => {
+            Err(OlderFailure::Networks(messages)) => {
                 for message in messages {
                     self.problems
                         .push(LoadProblem::error(self.dir.join(file), None, message));

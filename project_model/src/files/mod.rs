@@ -7,13 +7,15 @@
 
 mod canonical;
 mod chart_conversion;
+mod graph_chart;
 mod held_back;
 mod layout;
 mod load;
 mod manifest;
+mod older_charts;
+mod older_versions;
 mod problem;
 mod save;
-mod version1;
 
 pub use held_back::HeldBackObject;
 pub(crate) use layout::body_slots;
@@ -23,7 +25,7 @@ pub use problem::{LoadError, LoadProblem, Severity};
 pub use save::{SaveError, SaveReport, save_project, save_project_keeping};
 
 /// The project format version this build reads and writes.
-pub const FORMAT_VERSION: u32 = 2;
+pub const FORMAT_VERSION: u32 = 3;
 
 /// The name of the manifest file at the root of a project folder.
 pub const MANIFEST_FILE_NAME: &str = "rivet.toml";

@@ -102,6 +102,7 @@ pub fn new_pou(
         methods: Vec::new(),
         properties: Vec::new(),
         actions: Vec::new(),
+        transitions: Vec::new(),
     }
 }
 

@@ -1,39 +1,36 @@
-//! Free-form graphical bodies: CFC and SFC charts of placed elements joined by wires.
+//! The graphical bodies of format versions 1 and 2: placed elements joined by connections.
 //!
-//! Elements carry stable ids and positions in grid units (never pixels); connections name the
-//! pins they join, as PLCopen XML's do. LD and FBD bodies are structured networks instead
-//! (`network.rs`), laid out automatically.
+//! Version 1 stored every graphical body this way, version 2 its CFC and SFC charts. They are
+//! read only to be converted: LD and FBD into networks (`chart_conversion.rs`), CFC into a
+//! [`crate::CfcChart`] and SFC into a structured [`crate::SfcChart`]
+//! (`older_charts.rs`).
 
 use serde::{Deserialize, Serialize};
 
+use crate::cfc::PinRef;
 use crate::network::{CoilKind, Edge, ElementId};
+use crate::sfc::ActionAssociation;
 
 /// A CFC or SFC chart: placed elements and the wires between their pins.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
-#[cfg_attr(feature = "proptest", derive(proptest_derive::Arbitrary))]
 #[serde(deny_unknown_fields)]
 pub struct Chart {
     /// A jump label for the chart, if any.
     #[serde(default, skip_serializing_if = "String::is_empty")]
-    #[cfg_attr(feature = "proptest", proptest(strategy = "crate::arb::text()"))]
     pub label: String,
     /// The chart's title and comment.
     #[serde(default, skip_serializing_if = "String::is_empty")]
-    #[cfg_attr(feature = "proptest", proptest(strategy = "crate::arb::text()"))]
     pub comment: String,
     /// The elements, in no particular order; `execution_order` decides evaluation.
     #[serde(default, rename = "element", skip_serializing_if = "Vec::is_empty")]
-    #[cfg_attr(feature = "proptest", proptest(strategy = "crate::arb::small_vec()"))]
     pub elements: Vec<ChartElement>,
     /// Wires between element pins.
     #[serde(default, rename = "connection", skip_serializing_if = "Vec::is_empty")]
-    #[cfg_attr(feature = "proptest", proptest(strategy = "crate::arb::small_vec()"))]
     pub connections: Vec<Connection>,
 }
 
 /// One element of a chart.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[cfg_attr(feature = "proptest", derive(proptest_derive::Arbitrary))]
 #[serde(deny_unknown_fields)]
 pub struct ChartElement {
     /// The stable id.
@@ -51,7 +48,6 @@ pub struct ChartElement {
 
 /// The kinds of chart elements.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[cfg_attr(feature = "proptest", derive(proptest_derive::Arbitrary))]
 #[serde(tag = "type", rename_all = "snake_case", deny_unknown_fields)]
 pub enum ChartElementKind {
     /// LD left power rail.
@@ -67,7 +63,6 @@ pub enum ChartElementKind {
     /// LD contact on a BOOL variable.
     Contact {
         /// The variable's path.
-        #[cfg_attr(feature = "proptest", proptest(strategy = "crate::arb::ident()"))]
         variable: String,
         /// A normally closed contact.
         #[serde(default, skip_serializing_if = "crate::variable::is_false")]
@@ -79,7 +74,6 @@ pub enum ChartElementKind {
     /// LD coil on a BOOL variable.
     Coil {
         /// The variable's path.
-        #[cfg_attr(feature = "proptest", proptest(strategy = "crate::arb::ident()"))]
         variable: String,
         /// How the coil writes the variable.
         #[serde(default, skip_serializing_if = "crate::variable::is_default")]
@@ -88,19 +82,15 @@ pub enum ChartElementKind {
     /// A function, function block or operator box.
     Block {
         /// The function, FB or operator name, such as `TON` or `ADD`.
-        #[cfg_attr(feature = "proptest", proptest(strategy = "crate::arb::ident()"))]
         type_name: String,
         /// The FB instance's path; empty for functions and operators.
         #[serde(default, skip_serializing_if = "String::is_empty")]
-        #[cfg_attr(feature = "proptest", proptest(strategy = "crate::arb::ident()"))]
         instance: String,
         /// Input pin names in display order.
         #[serde(default, skip_serializing_if = "Vec::is_empty")]
-        #[cfg_attr(feature = "proptest", proptest(strategy = "crate::arb::ident_vec()"))]
         inputs: Vec<String>,
         /// Output pin names in display order.
         #[serde(default, skip_serializing_if = "Vec::is_empty")]
-        #[cfg_attr(feature = "proptest", proptest(strategy = "crate::arb::ident_vec()"))]
         outputs: Vec<String>,
         /// Whether the box has EN and ENO pins.
         #[serde(default, skip_serializing_if = "crate::variable::is_false")]
@@ -109,19 +99,16 @@ pub enum ChartElementKind {
     /// An expression read into a network (FBD/CFC input).
     Input {
         /// The expression as written.
-        #[cfg_attr(feature = "proptest", proptest(strategy = "crate::arb::text()"))]
         expression: String,
     },
     /// A variable written by a network (FBD/CFC output).
     Output {
         /// The variable's path as written.
-        #[cfg_attr(feature = "proptest", proptest(strategy = "crate::arb::text()"))]
         expression: String,
     },
     /// A jump to a network label when the input is TRUE.
     Jump {
         /// The target label.
-        #[cfg_attr(feature = "proptest", proptest(strategy = "crate::arb::ident()"))]
         label: String,
     },
     /// A return from the POU when the input is TRUE.
@@ -129,7 +116,6 @@ pub enum ChartElementKind {
     /// A free comment box.
     Comment {
         /// The comment.
-        #[cfg_attr(feature = "proptest", proptest(strategy = "crate::arb::text()"))]
         text: String,
         /// Width in grid units.
         width: u32,
@@ -140,46 +126,33 @@ pub enum ChartElementKind {
     /// same name.
     Connector {
         /// The connector's name.
-        #[cfg_attr(feature = "proptest", proptest(strategy = "crate::arb::ident()"))]
         name: String,
     },
     /// Where a connector's value comes out again.
     Continuation {
         /// The connector's name.
-        #[cfg_attr(feature = "proptest", proptest(strategy = "crate::arb::ident()"))]
         name: String,
     },
     /// An SFC step.
     Step {
         /// The step's name.
-        #[cfg_attr(feature = "proptest", proptest(strategy = "crate::arb::ident()"))]
         name: String,
         /// The initial step of the chart.
         #[serde(default, skip_serializing_if = "crate::variable::is_false")]
         initial: bool,
         /// CODESYS step entry action, run once when the step becomes active.
         #[serde(default, skip_serializing_if = "Option::is_none")]
-        #[cfg_attr(
-            feature = "proptest",
-            proptest(strategy = "proptest::option::of(crate::arb::ident())")
-        )]
         entry_action: Option<String>,
         /// CODESYS step exit action, run once when the step is left.
         #[serde(default, skip_serializing_if = "Option::is_none")]
-        #[cfg_attr(
-            feature = "proptest",
-            proptest(strategy = "proptest::option::of(crate::arb::ident())")
-        )]
         exit_action: Option<String>,
         /// IEC action associations with qualifiers.
         #[serde(default, rename = "action", skip_serializing_if = "Vec::is_empty")]
-        #[cfg_attr(feature = "proptest", proptest(strategy = "crate::arb::small_vec()"))]
         actions: Vec<ActionAssociation>,
     },
     /// An SFC transition.
     Transition {
         /// The transition condition: a BOOL expression in Structured Text.
-        #[cfg_attr(feature = "proptest", proptest(strategy = "crate::arb::text()"))]
         condition: String,
     },
     /// The start of parallel or alternative SFC branches.
@@ -199,14 +172,12 @@ pub enum ChartElementKind {
     /// An SFC jump to a step.
     StepJump {
         /// The target step's name.
-        #[cfg_attr(feature = "proptest", proptest(strategy = "crate::arb::ident()"))]
         target: String,
     },
 }
 
 /// Alternative or parallel SFC branches.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
-#[cfg_attr(feature = "proptest", derive(proptest_derive::Arbitrary))]
 #[serde(rename_all = "snake_case")]
 pub enum BranchKind {
     /// One branch is taken (selection).
@@ -215,77 +186,12 @@ pub enum BranchKind {
     Simultaneous,
 }
 
-/// An IEC action association of an SFC step.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[cfg_attr(feature = "proptest", derive(proptest_derive::Arbitrary))]
-#[serde(deny_unknown_fields)]
-pub struct ActionAssociation {
-    /// The action's name (an action of the POU) or a BOOL variable.
-    #[cfg_attr(feature = "proptest", proptest(strategy = "crate::arb::ident()"))]
-    pub action: String,
-    /// The qualifier.
-    pub qualifier: ActionQualifier,
-    /// The time of timed qualifiers (L, D, SD, DS, SL) as written, such as `T#2s`.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    #[cfg_attr(feature = "proptest", proptest(strategy = "crate::arb::opt_text()"))]
-    pub duration: Option<String>,
-    /// An indicator variable, if any.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    #[cfg_attr(
-        feature = "proptest",
-        proptest(strategy = "proptest::option::of(crate::arb::ident())")
-    )]
-    pub indicator: Option<String>,
-}
-
-/// IEC 61131-3 action qualifiers.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
-#[cfg_attr(feature = "proptest", derive(proptest_derive::Arbitrary))]
-pub enum ActionQualifier {
-    /// Non-stored: active while the step is.
-    N,
-    /// Reset a stored action.
-    R,
-    /// Set (stored).
-    S,
-    /// Time limited.
-    L,
-    /// Time delayed.
-    D,
-    /// Pulse: once on activation.
-    P,
-    /// Stored and time delayed.
-    SD,
-    /// Delayed and stored.
-    DS,
-    /// Stored and time limited.
-    SL,
-    /// Pulse on deactivation (falling edge).
-    P0,
-    /// Pulse on activation (rising edge).
-    P1,
-}
-
 /// A wire between an output pin and an input pin.
 #[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
-#[cfg_attr(feature = "proptest", derive(proptest_derive::Arbitrary))]
 #[serde(deny_unknown_fields)]
 pub struct Connection {
     /// The driving pin.
     pub from: PinRef,
     /// The driven pin.
     pub to: PinRef,
-}
-
-/// A pin of an element: the element's id and the pin's name (empty for an element's only pin).
-#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
-#[cfg_attr(feature = "proptest", derive(proptest_derive::Arbitrary))]
-#[serde(deny_unknown_fields)]
-pub struct PinRef {
-    /// The element.
-    pub element: ElementId,
-    /// The pin's name.
-    #[serde(default, skip_serializing_if = "String::is_empty")]
-    #[cfg_attr(feature = "proptest", proptest(strategy = "crate::arb::ident()"))]
-    pub pin: String,
 }

@@ -1,37 +1,48 @@
-//! Reading POU files of format version 1, whose LD and FBD bodies are graphs of placed
-//! elements and connections; everything else in a version 1 file reads as in version 2.
+//! Reading POU files of format versions 1 and 2, whose graphical bodies are graphs of placed
+//! elements and connections: LD and FBD in version 1, CFC and SFC in both. Everything else in
+//! such a file reads as in the current version.
 
 use serde::Deserialize;
 use toml::{Table, Value};
 
 use super::chart_conversion::convert_charts;
-use crate::{Chart, Pou};
+use super::graph_chart::Chart;
+use super::older_charts::{cfc_from_graph, sfc_from_graph};
+use crate::Pou;
 
-/// Why a version 1 POU file cannot be read.
-pub(crate) enum Version1Failure {
+/// Why a POU file of an older format version cannot be read.
+pub(crate) enum OlderFailure {
     /// The file is not valid TOML, or not a POU (with a line where the parser knows one).
     Toml(toml::de::Error),
-    /// Its networks cannot be converted; each message names the body, network and element.
+    /// Its graphical bodies cannot be converted; each message names the body, network and
+    /// element.
     Networks(Vec<String>),
 }
 
-/// Reads the POU named `name` from the text of its version 1 file, converting its LD and FBD
-/// networks to version 2.
-pub(crate) fn pou_from_version1(name: &str, text: &str) -> Result<Pou, Version1Failure> {
-    // A file without graphical networks reads as version 2 does, with line numbers.
+/// Reads the POU named `name` from the text of its file of format `version` (1 or 2),
+/// converting its graphical bodies to the current version.
+pub(crate) fn pou_from_older(version: u32, name: &str, text: &str) -> Result<Pou, OlderFailure> {
+    // A file without graphical bodies reads as the current version does, with line numbers.
     let direct_error = match toml::from_str::<Pou>(text) {
         Ok(pou) => return Ok(pou),
         Err(error) => error,
     };
     let Ok(mut table) = toml::from_str::<Table>(text) else {
-        return Err(Version1Failure::Toml(direct_error));
+        return Err(OlderFailure::Toml(direct_error));
     };
     let mut bodies = graphical_bodies(&mut table, name);
     if bodies.is_empty() {
-        return Err(Version1Failure::Toml(direct_error));
+        return Err(OlderFailure::Toml(direct_error));
     }
     let mut problems = Vec::new();
     for (owner, body) in &mut bodies {
+        if let Some(chart) = body.remove("chart") {
+            convert_chart(owner, body, chart, &mut problems);
+            continue;
+        }
+        if version > 1 {
+            continue;
+        }
         let Some(networks) = body.remove("network") else {
             continue;
         };
@@ -61,12 +72,45 @@ pub(crate) fn pou_from_version1(name: &str, text: &str) -> Result<Pou, Version1F
     }
     drop(bodies);
     if !problems.is_empty() {
-        return Err(Version1Failure::Networks(problems));
+        return Err(OlderFailure::Networks(problems));
     }
-    Pou::deserialize(Value::Table(table)).map_err(Version1Failure::Toml)
+    Pou::deserialize(Value::Table(table)).map_err(OlderFailure::Toml)
 }
 
-/// The LD and FBD body tables of a POU's table that hold networks, each with the name its
+/// Converts the graph `chart` of a CFC or SFC `body` in place, or adds why it cannot be.
+fn convert_chart(owner: &str, body: &mut Table, chart: Value, problems: &mut Vec<String>) {
+    let language = body
+        .get("language")
+        .and_then(Value::as_str)
+        .unwrap_or_default();
+    let graph = match Chart::deserialize(chart) {
+        Ok(graph) => graph,
+        Err(error) => {
+            problems.push(format!(
+                "{owner}: the chart is not valid: {}",
+                error.message().trim_end()
+            ));
+            return;
+        }
+    };
+    let converted = if language == "sfc" {
+        sfc_from_graph(&graph).and_then(|chart| Value::try_from(&chart).map_err(to_messages))
+    } else {
+        cfc_from_graph(&graph).and_then(|chart| Value::try_from(&chart).map_err(to_messages))
+    };
+    match converted {
+        Ok(value) => {
+            body.insert("chart".into(), value);
+        }
+        Err(found) => problems.extend(found.into_iter().map(|p| format!("{owner}, {p}"))),
+    }
+}
+
+fn to_messages(error: toml::ser::Error) -> Vec<String> {
+    vec![error.to_string()]
+}
+
+/// The graphical body tables of a POU's table that hold networks or charts, each with the name its
 /// messages use (`POU 'Main'`, `POU 'Main', method 'Reset'`…).
 fn graphical_bodies<'a>(table: &'a mut Table, name: &str) -> Vec<(String, &'a mut Table)> {
     let pou = format!("POU '{name}'");
@@ -74,7 +118,7 @@ fn graphical_bodies<'a>(table: &'a mut Table, name: &str) -> Vec<(String, &'a mu
     for (key, value) in table.iter_mut() {
         match (key.as_str(), value) {
             ("body", Value::Table(body)) => bodies.push((pou.clone(), body)),
-            (member @ ("method" | "action"), Value::Array(members)) => {
+            (member @ ("method" | "action" | "transition"), Value::Array(members)) => {
                 for member_table in members.iter_mut().filter_map(Value::as_table_mut) {
                     let member_name = member_name(member_table);
                     if let Some(Value::Table(body)) = member_table.get_mut("body") {
@@ -101,13 +145,13 @@ fn graphical_bodies<'a>(table: &'a mut Table, name: &str) -> Vec<(String, &'a mu
             _ => {}
         }
     }
-    bodies.retain(|(_, body)| {
-        let graphical = matches!(
-            body.get("language").and_then(Value::as_str),
-            Some("ld" | "fbd")
-        );
-        graphical && body.contains_key("network")
-    });
+    bodies.retain(
+        |(_, body)| match body.get("language").and_then(Value::as_str) {
+            Some("ld" | "fbd") => body.contains_key("network"),
+            Some("cfc" | "sfc") => body.contains_key("chart"),
+            _ => false,
+        },
+    );
     bodies
 }
 
