@@ -7,12 +7,13 @@ use std::ops::Range;
 
 use thiserror::Error;
 
+use crate::chart_replace::replace_chart;
 use crate::list_edit::IndexOutOfRange;
 use crate::network_splice::{body_mut, splice_networks};
 use crate::validate::object_problem;
 use crate::{
-    Axis, Controller, Folder, IoArea, ListEdit, ModbusDevice, Network, Node, Object, Project, Task,
-    Variable, is_valid_identifier, same_identifier,
+    Axis, Body, Controller, Folder, IoArea, ListEdit, ModbusDevice, Network, Node, Object, Project,
+    Task, Variable, is_valid_identifier, same_identifier,
 };
 
 /// A reversible change to a project.
@@ -69,6 +70,15 @@ pub enum Edit {
         remove: usize,
         /// The networks put in their place.
         insert: Vec<Network>,
+    },
+    /// Replaces a CFC or SFC body with another chart of the same language: every change an
+    /// editor makes to a chart, as one undo step. Its inverse puts the old chart back. The
+    /// chart must keep the structural rules of its language (`cfc.rs`, `sfc.rs`).
+    ReplaceChart {
+        /// Which body (named as a text body is; it must be CFC or SFC).
+        target: TextTarget,
+        /// The new body: `Body::Cfc` or `Body::Sfc`, the language the body has.
+        body: Box<Body>,
     },
     /// Several edits applied in order as one; undone in reverse order.
     Group(Vec<Edit>),
@@ -226,6 +236,9 @@ pub enum EditError {
     /// The targeted body is not LD or FBD.
     #[error("the body of {0} is not a Ladder or Function Block Diagram")]
     NotNetworks(String),
+    /// The targeted body is not a chart of the language of the replacement.
+    #[error("the body of {0} is not a chart of that language")]
+    NotChart(String),
     /// A run of networks that goes past the end of its body.
     #[error("cannot replace {remove} networks at position {at}: the body has {len} networks")]
     NetworkRangeOutOfRange {
@@ -307,6 +320,9 @@ impl Edit {
                 remove,
                 insert,
             } => splice_networks(&mut project.application, target, at, remove, insert),
+            Self::ReplaceChart { target, body } => {
+                replace_chart(&mut project.application, target, *body)
+            }
             Self::Group(edits) => {
                 let mut inverses = Vec::with_capacity(edits.len());
                 for edit in edits {

@@ -13,6 +13,7 @@ mod application;
 mod axis;
 mod cam;
 mod cfc;
+mod chart_replace;
 mod data_type;
 mod declaration_text;
 mod declarations_edit;

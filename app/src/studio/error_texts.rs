@@ -60,6 +60,7 @@ pub fn edit_error_text(error: &EditError, language: Language) -> String {
         EditError::NotNetworks(name) => {
             RefusalText::EditNotNetworks.fill(language, &[("name", name)])
         }
+        EditError::NotChart(name) => RefusalText::EditNotChart.fill(language, &[("name", name)]),
         EditError::NetworkRangeOutOfRange { at, remove, len } => {
             RefusalText::EditNetworkRangeOutOfRange.fill(
                 language,
@@ -212,6 +213,7 @@ mod tests {
             EditError::MoveIntoItself,
             EditError::KindChanged(text("Main")),
             EditError::NotNetworks(text("Main")),
+            EditError::NotChart(text("Main")),
             EditError::NetworkRangeOutOfRange {
                 at: 4,
                 remove: 2,

@@ -25,6 +25,7 @@ pub enum RefusalText {
     EditMoveIntoItself,
     EditKindChanged,
     EditNotNetworks,
+    EditNotChart,
     EditNetworkRangeOutOfRange,
     LitUnknownBase,
     LitNoDigits,
@@ -113,6 +114,10 @@ impl RefusalText {
             Self::EditNotNetworks => (
                 "the body of {name} is not a Ladder or Function Block Diagram",
                 "{name} 的实现不是梯形图或功能块图",
+            ),
+            Self::EditNotChart => (
+                "the body of {name} is not a chart of that language",
+                "{name} 的实现不是该语言的图表",
             ),
             Self::EditNetworkRangeOutOfRange => (
                 "cannot replace {remove} networks at position {at}: the body has {len} networks",
