@@ -42,25 +42,26 @@ mod tests {
     };
 
     fn project_with(body: Body) -> Project {
-        let mut project = Project::default();
-        project.application = Folder {
-            name: String::new(),
-            children: vec![Node::Object(Object::Pou(Pou {
-                name: "Seq".into(),
-                kind: PouKind::Program,
-                return_type: None,
-                extends: None,
-                implements: Vec::new(),
-                comment: String::new(),
-                variables: Vec::new(),
-                body,
-                methods: Vec::new(),
-                properties: Vec::new(),
-                actions: Vec::new(),
-                transitions: Vec::new(),
-            }))],
-        };
-        project
+        Project {
+            application: Folder {
+                name: String::new(),
+                children: vec![Node::Object(Object::Pou(Pou {
+                    name: "Seq".into(),
+                    kind: PouKind::Program,
+                    return_type: None,
+                    extends: None,
+                    implements: Vec::new(),
+                    comment: String::new(),
+                    variables: Vec::new(),
+                    body,
+                    methods: Vec::new(),
+                    properties: Vec::new(),
+                    actions: Vec::new(),
+                    transitions: Vec::new(),
+                }))],
+            },
+            ..Project::default()
+        }
     }
 
     fn body_of(project: &Project) -> &Body {
