@@ -165,6 +165,8 @@ pub enum Text {
     LanguageSt,
     LanguageLd,
     LanguageFbd,
+    LanguageCfc,
+    LanguageSfc,
     AddGvl,
     AddDataType,
     AddWatchList,

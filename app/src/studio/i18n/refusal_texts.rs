@@ -49,6 +49,7 @@ pub enum RefusalText {
     RefuseNoReturnType,
     RefuseNoPropertyType,
     RefuseNoMembers,
+    RefuseSfcNotHere,
     TimeEmpty,
     TimeTooLong,
     TimeNotWholeMicros,
@@ -197,6 +198,10 @@ impl RefusalText {
             Self::RefuseNoMembers => (
                 "'{pou}' cannot have methods, actions or properties: only programs and function blocks can",
                 "“{pou}”不能有方法、动作或属性：只有程序和功能块可以",
+            ),
+            Self::RefuseSfcNotHere => (
+                "only a program or function block itself can be a Sequential Function Chart",
+                "只有程序或功能块本身可以用顺序功能图编写",
             ),
             Self::TimeEmpty => (
                 "enter a time such as T#10ms, or a number of microseconds",

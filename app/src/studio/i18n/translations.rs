@@ -195,6 +195,8 @@ impl Text {
             Self::LanguageSt => ("Structured Text (ST)", "结构化文本 (ST)"),
             Self::LanguageLd => ("Ladder Diagram (LD)", "梯形图 (LD)"),
             Self::LanguageFbd => ("Function Block Diagram (FBD)", "功能块图 (FBD)"),
+            Self::LanguageCfc => ("Continuous Function Chart (CFC)", "连续功能图 (CFC)"),
+            Self::LanguageSfc => ("Sequential Function Chart (SFC)", "顺序功能图 (SFC)"),
             Self::AddGvl => ("Add global variable list", "添加全局变量列表"),
             Self::AddDataType => ("Add data type", "添加数据类型"),
             Self::AddWatchList => ("Add watch list", "添加监视列表"),

@@ -1,10 +1,10 @@
 //! The implementation languages a new POU, method, action or property can be written in.
 
-use project_model::{Body, Network};
+use project_model::{Body, CfcChart, Network, SfcChart};
 
 use crate::studio::i18n::Text;
 
-/// An implementation language the add dialogs offer. CFC and SFC join when their editors do.
+/// An implementation language the add dialogs offer.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum BodyLanguage {
     /// Structured Text.
@@ -14,15 +14,20 @@ pub enum BodyLanguage {
     Ld,
     /// Function Block Diagram.
     Fbd,
+    /// Continuous Function Chart.
+    Cfc,
+    /// Sequential Function Chart.
+    Sfc,
 }
 
 impl BodyLanguage {
     /// The languages the dialogs offer, in the order they show them.
-    pub const OFFERED: [Self; 3] = [Self::St, Self::Ld, Self::Fbd];
+    pub const OFFERED: [Self; 5] = [Self::St, Self::Ld, Self::Fbd, Self::Cfc, Self::Sfc];
 
     /// The body a new POU or member starts with: no text for ST; for LD and FBD one empty
     /// network (no title, comment, label, elements or outputs), as CODESYS creates them, so the
-    /// editor opens on a network the user can insert into right away.
+    /// editor opens on a network the user can insert into right away; an empty CFC chart; for
+    /// SFC CODESYS's start: the step `Init`, a transition and a jump back to `Init`.
     pub fn empty_body(self) -> Body {
         match self {
             Self::St => Body::st(""),
@@ -31,6 +36,12 @@ impl BodyLanguage {
             },
             Self::Fbd => Body::Fbd {
                 networks: vec![Network::default()],
+            },
+            Self::Cfc => Body::Cfc {
+                chart: CfcChart::default(),
+            },
+            Self::Sfc => Body::Sfc {
+                chart: SfcChart::new_body(),
             },
         }
     }
@@ -41,6 +52,8 @@ impl BodyLanguage {
             Self::St => Text::LanguageSt,
             Self::Ld => Text::LanguageLd,
             Self::Fbd => Text::LanguageFbd,
+            Self::Cfc => Text::LanguageCfc,
+            Self::Sfc => Text::LanguageSfc,
         }
     }
 }
@@ -67,5 +80,17 @@ mod tests {
                 other => panic!("{language:?} gave {other:?}"),
             }
         }
+        assert_eq!(
+            BodyLanguage::Cfc.empty_body(),
+            Body::Cfc {
+                chart: CfcChart::default()
+            }
+        );
+        assert_eq!(
+            BodyLanguage::Sfc.empty_body(),
+            Body::Sfc {
+                chart: SfcChart::new_body()
+            }
+        );
     }
 }

@@ -209,7 +209,7 @@ impl TreeDialog {
                         &mut already,
                     );
                 }
-                body_language_ui(ui, body_language, language);
+                body_language_ui(ui, body_language, language, *kind != PouKind::Function);
             }
             Self::NewMember(dialog) => entered |= dialog.fields_ui(ui, language),
             Self::Rename { name, focused, .. } => {

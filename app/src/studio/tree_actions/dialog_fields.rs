@@ -24,11 +24,23 @@ pub(super) fn text_field(ui: &mut Ui, label: &str, text: &mut String, focused: &
 }
 
 /// The implementation language as one radio button per offered language, under its label.
-pub(super) fn body_language_ui(ui: &mut Ui, chosen: &mut BodyLanguage, language: Language) {
+/// SFC is offered only where a chart may be (`sfc_allowed`: the body of a program or function
+/// block itself); a choice of SFC elsewhere falls back to ST.
+pub(super) fn body_language_ui(
+    ui: &mut Ui,
+    chosen: &mut BodyLanguage,
+    language: Language,
+    sfc_allowed: bool,
+) {
+    if !sfc_allowed && *chosen == BodyLanguage::Sfc {
+        *chosen = BodyLanguage::St;
+    }
     ui.label(Text::ImplementationLanguage.get(language));
-    ui.horizontal(|ui| {
+    ui.horizontal_wrapped(|ui| {
         for offered in BodyLanguage::OFFERED {
-            ui.radio_value(chosen, offered, offered.text().get(language));
+            if offered != BodyLanguage::Sfc || sfc_allowed {
+                ui.radio_value(chosen, offered, offered.text().get(language));
+            }
         }
     });
 }

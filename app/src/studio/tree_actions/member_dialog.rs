@@ -97,7 +97,7 @@ impl MemberDialog {
                 &mut already,
             );
         }
-        body_language_ui(ui, &mut self.language, language);
+        body_language_ui(ui, &mut self.language, language, false);
         entered
     }
 }

@@ -147,6 +147,9 @@ pub fn plan_add_member(
     if let Some(problem) = member_problem(original, member) {
         return Err(problem);
     }
+    if member.language == BodyLanguage::Sfc {
+        return Err(Refusal::SfcNotHere);
+    }
     let mut pou = original.clone();
     let name = member.name.clone();
     let type_name = member.type_name.trim();

@@ -70,6 +70,9 @@ pub fn plan(
             if let Some(problem) = name_problem(project, NameScope::Object, name, None) {
                 return Err(problem);
             }
+            if *kind == PouKind::Function && *body_language == BodyLanguage::Sfc {
+                return Err(Refusal::SfcNotHere);
+            }
             let pou = new_pou(name.clone(), *kind, return_type.clone(), *body_language);
             Ok(Some(add_object(
                 project,

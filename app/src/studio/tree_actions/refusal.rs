@@ -22,6 +22,9 @@ pub enum Refusal {
     /// The POU (named here) is neither a program nor a function block, so it takes no
     /// methods, actions or properties.
     NoMembers(String),
+    /// An SFC chart was chosen for a function or a member: only the body of a program or
+    /// function block itself can be one.
+    SfcNotHere,
 }
 
 impl Refusal {
@@ -34,6 +37,7 @@ impl Refusal {
             Self::NoReturnType => RefusalText::RefuseNoReturnType.get(language).to_owned(),
             Self::NoPropertyType => RefusalText::RefuseNoPropertyType.get(language).to_owned(),
             Self::NoMembers(pou) => RefusalText::RefuseNoMembers.fill(language, &[("pou", pou)]),
+            Self::SfcNotHere => RefusalText::RefuseSfcNotHere.get(language).to_owned(),
         }
     }
 }

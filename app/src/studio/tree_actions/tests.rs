@@ -180,6 +180,45 @@ fn a_pou_added_in_ld_or_fbd_starts_with_one_empty_network_and_in_st_with_no_text
 }
 
 #[test]
+fn a_program_added_in_sfc_starts_as_codesys_starts_one_and_a_function_cannot_be_sfc() {
+    let mut project = example();
+    apply(
+        &mut project,
+        TreeAction::AddPou {
+            folder: Vec::new(),
+            kind: PouKind::Program,
+            name: "PRG_Steps".to_owned(),
+            return_type: None,
+            language: BodyLanguage::Sfc,
+        },
+    );
+    assert!(matches!(
+        &pou(&project, "PRG_Steps").body,
+        Body::Sfc { chart } if chart == &project_model::SfcChart::new_body()
+    ));
+    let function = TreeAction::AddPou {
+        folder: Vec::new(),
+        kind: PouKind::Function,
+        name: "F_Steps".to_owned(),
+        return_type: Some("BOOL".to_owned()),
+        language: BodyLanguage::Sfc,
+    };
+    let refusal = plan(&project, &function, Language::English).unwrap_err();
+    assert_eq!(
+        refusal.text(Language::English),
+        "only a program or function block itself can be a Sequential Function Chart"
+    );
+    let action = TreeAction::AddMember {
+        pou: "FB_Conveyor".into(),
+        member: member(MemberKind::Action, "Steps", BodyLanguage::Sfc, ""),
+    };
+    assert!(matches!(
+        plan(&project, &action, Language::English),
+        Err(Refusal::SfcNotHere)
+    ));
+}
+
+#[test]
 fn a_method_is_added_to_a_function_block_as_one_edit_that_undo_takes_back() {
     let mut project = example();
     let before = project.clone();
