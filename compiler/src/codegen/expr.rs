@@ -237,12 +237,17 @@ impl BodyGen<'_, '_, '_> {
         }
     }
 
-    /// The variable called `name` in this body's scope (an SFC boolean action).
-    pub(crate) fn variable_named(&mut self, name: &str) -> Gen<Typed> {
+    /// The variable called `name` in this body's scope (an SFC flag).
+    pub(crate) fn variable_place_named(&mut self, name: &str) -> Gen<Typed> {
         let node = crate::sema::constant::parse_expression(name)
             .and_then(|n| NameExpr::cast(n.syntax().clone()))
-            .ok_or_else(|| fail!("'{name}' is neither an action nor a variable"))?;
-        let typed = self.name_place(&node)?;
+            .ok_or_else(|| fail!("'{name}' is no variable"))?;
+        self.name_place(&node)
+    }
+
+    /// The BOOL variable called `name` in this body's scope (an SFC boolean action).
+    pub(crate) fn variable_named(&mut self, name: &str) -> Gen<Typed> {
+        let typed = self.variable_place_named(name)?;
         if typed.ty != Type::BOOL {
             return Err(fail!(
                 "'{name}' is named as a step's action but is a {}, not an action or a BOOL",
@@ -377,12 +382,33 @@ impl BodyGen<'_, '_, '_> {
                     .step(&step_name)
                     .ok_or_else(|| fail!("no step '{step_name}'"))?;
                 return match member_name.to_ascii_uppercase().as_str() {
-                    "X" => self.typed(Place::Direct(Operand::Instance(step.active)), Type::BOOL),
+                    "X" => self.typed(Place::Direct(Operand::Instance(step.x())), Type::BOOL),
+                    "_X" => self.typed(Place::Direct(Operand::Instance(step.next())), Type::BOOL),
                     "T" => self.typed(
-                        Place::Direct(Operand::Instance(step.elapsed)),
+                        Place::Direct(Operand::Instance(step.t())),
                         Type::Elementary(Elementary::Time),
                     ),
-                    _ => Err(fail!("a step has X and T, not '{member_name}'")),
+                    _ => Err(fail!("a step has x, _x and t, not '{member_name}'")),
+                };
+            }
+            Type::SfcAction => {
+                // `_Action.x` (runs this cycle) and `_Action._x` (active) of an IEC action.
+                let flags_name = written(&base);
+                let sfc = self
+                    .instance
+                    .as_ref()
+                    .and_then(|i| i.sfc.clone())
+                    .ok_or("SFC actions outside a chart")?;
+                let action = sfc
+                    .action(flags_name.trim_start_matches('_'))
+                    .ok_or_else(|| fail!("no associated action '{flags_name}'"))?;
+                return match member_name.to_ascii_uppercase().as_str() {
+                    "X" => self.typed(Place::Direct(Operand::Instance(action.x())), Type::BOOL),
+                    "_X" => self.typed(
+                        Place::Direct(Operand::Instance(action.active())),
+                        Type::BOOL,
+                    ),
+                    _ => Err(fail!("an action's flags are x and _x, not '{member_name}'")),
                 };
             }
             _ => {}

@@ -1,91 +1,201 @@
-//! Textual SFC (IEC 61131-3 §6.7): steps, transitions and actions written in a POU's body.
+//! Textual SFC (IEC 61131-3 §6.7 with CODESYS's extensions): the code of a chart, following
+//! CODESYS's processing order per cycle (see `docs/sfc-semantics.md`).
 //!
-//! Each cycle the chart (1) activates its initial steps on the first cycle, (2) brings the
-//! elapsed time `T` of every active step up to date, (3) runs the actions of the active steps
-//! by their qualifiers (N while active, P once on activation, S and R setting and resetting a
-//! stored action that then runs while set), then (4) evaluates every transition against the
-//! steps active before any fires and fires those enabled: their source steps are deactivated
-//! and their target steps activated (with `T` from zero), to act from the next cycle on.
+//! Each step keeps `x` (active this cycle), `_x` (active next cycle), `t` and its activation
+//! time in the instance; each associated action keeps the state of its `ACTION_CONTROL`. The
+//! work of a step is guarded by its flags and the work of an action by its `busy` flag, so an
+//! inactive step costs two jumps per cycle and an idle action two, whatever the chart holds.
 
 use std::collections::HashMap;
 
-use program_image::{BinaryOp, Elementary as IE, Instr, Operand};
+use program_image::{BinaryOp, CompareOp, Elementary as IE, Instr, Operand};
 
-use super::body::{BodyGen, Gen};
+use super::body::{BodyGen, Gen, Typed};
 use super::error::fail;
 use crate::sema::ty::Type;
-use crate::syntax::ast::{
-    Arg, AstNode, CallExpr, SourceFile, StatementList, StepDecl, StepList, Stmt,
-};
+use crate::sfc_chart::{Chart, ChartStep, Qualifier};
+use crate::syntax::ast::{AstNode, Expr, SourceFile, StatementList, Stmt};
 use crate::syntax::{SyntaxNode, parse_statements};
+
+/// Offsets of a step's state inside its 16 bytes.
+mod step_at {
+    pub(super) const X: u32 = 0;
+    pub(super) const NEXT: u32 = 1;
+    pub(super) const ENTERING: u32 = 2;
+    pub(super) const LEAVING: u32 = 3;
+    pub(super) const T: u32 = 4;
+    pub(super) const STARTED: u32 = 8;
+    pub(super) const SIZE: u32 = 16;
+}
+
+/// Offsets of an action's `ACTION_CONTROL` state inside its bytes.
+mod action_at {
+    /// BOOL: something may change the action's outputs this cycle.
+    pub(super) const BUSY: u32 = 0;
+    /// BOOL: `Q`, the action is active (`_Action._x`).
+    pub(super) const Q: u32 = 1;
+    /// BOOL: `A`, the action's body runs this cycle (`_Action.x`).
+    pub(super) const A: u32 = 2;
+    /// BOOL: the body runs in the first pass (a final or pulse call with `Q` FALSE).
+    pub(super) const FINAL: u32 = 3;
+    /// BOOL: `Q` of the previous cycle.
+    pub(super) const Q_PREV: u32 = 4;
+    /// BOOL per qualifier: its input this cycle (the OR over the active steps).
+    pub(super) const REQUEST: u32 = 5;
+    /// BOOL per qualifier: its flip-flop or edge memory.
+    pub(super) const MEMORY: u32 = 16;
+    /// BOOL per qualifier: its timer is running.
+    pub(super) const RUNNING: u32 = 27;
+    /// TIME per qualifier: its duration.
+    pub(super) const TIME: u32 = 40;
+    /// LINT per qualifier: the clock when its timer started.
+    pub(super) const STARTED: u32 = 88;
+    pub(super) const SIZE: u32 = 176;
+}
+
+const QUALIFIERS: [Qualifier; 11] = [
+    Qualifier::N,
+    Qualifier::R,
+    Qualifier::S,
+    Qualifier::L,
+    Qualifier::D,
+    Qualifier::P,
+    Qualifier::P0,
+    Qualifier::P1,
+    Qualifier::Sd,
+    Qualifier::Ds,
+    Qualifier::Sl,
+];
+
+fn index_of(qualifier: Qualifier) -> u32 {
+    QUALIFIERS.iter().position(|q| *q == qualifier).unwrap_or(0) as u32
+}
 
 /// One step's state in the instance.
 #[derive(Clone, Debug)]
 pub(crate) struct StepSlots {
     pub(crate) name: String,
     pub(crate) initial: bool,
-    /// BOOL: active (`Step.X`).
-    pub(crate) active: u32,
-    /// BOOL: activated by the last transition, so its P actions run this cycle.
-    pub(crate) fresh: u32,
-    /// TIME: elapsed since activation (`Step.T`).
-    pub(crate) elapsed: u32,
-    /// LINT: the task clock at activation.
-    pub(crate) started: u32,
+    /// Where its 16 bytes start.
+    pub(crate) at: u32,
+}
+
+impl StepSlots {
+    /// BOOL `x`: active this cycle.
+    pub(crate) fn x(&self) -> u32 {
+        self.at + step_at::X
+    }
+    /// BOOL `_x`: active next cycle.
+    pub(crate) fn next(&self) -> u32 {
+        self.at + step_at::NEXT
+    }
+    /// TIME `t`: elapsed since activation.
+    pub(crate) fn t(&self) -> u32 {
+        self.at + step_at::T
+    }
+    fn entering(&self) -> u32 {
+        self.at + step_at::ENTERING
+    }
+    fn leaving(&self) -> u32 {
+        self.at + step_at::LEAVING
+    }
+    fn started(&self) -> u32 {
+        self.at + step_at::STARTED
+    }
+}
+
+/// One associated action's state in the instance.
+#[derive(Clone, Debug)]
+pub(crate) struct ActionSlots {
+    /// The name as first written in an association.
+    pub(crate) name: String,
+    pub(crate) at: u32,
+}
+
+impl ActionSlots {
+    /// BOOL `_Action.x`: the action's body runs this cycle.
+    pub(crate) fn x(&self) -> u32 {
+        self.at + action_at::A
+    }
+    /// BOOL `_Action._x`: the action is active (its `Q`).
+    pub(crate) fn active(&self) -> u32 {
+        self.at + action_at::Q
+    }
+    fn busy(&self) -> u32 {
+        self.at + action_at::BUSY
+    }
+    fn request(&self, q: Qualifier) -> u32 {
+        self.at + action_at::REQUEST + index_of(q)
+    }
+    fn memory(&self, q: Qualifier) -> u32 {
+        self.at + action_at::MEMORY + index_of(q)
+    }
+    fn running(&self, q: Qualifier) -> u32 {
+        self.at + action_at::RUNNING + index_of(q)
+    }
+    fn time(&self, q: Qualifier) -> u32 {
+        self.at + action_at::TIME + 4 * index_of(q)
+    }
+    fn timer_started(&self, q: Qualifier) -> u32 {
+        self.at + action_at::STARTED + 8 * index_of(q)
+    }
 }
 
 /// The SFC state a chart keeps at the end of its instance.
 #[derive(Clone, Debug, Default)]
 pub(crate) struct SfcLayout {
-    /// BOOL: the initial steps have been activated.
+    /// BOOL: the initial step has been activated.
     pub(crate) initialised: u32,
+    /// BOOL: `SFCQuitError` in the previous cycle.
+    quit_before: u32,
+    /// BOOL: `SFCTip` in the previous cycle.
+    tip_before: u32,
+    /// LINT: the task clock of the previous cycle, when the transitions fired.
+    previous_now: u32,
     pub(crate) steps: Vec<StepSlots>,
-    /// BOOL per stored action (S and R qualifiers), by lower-case action name.
-    pub(crate) stored: Vec<(String, u32)>,
+    /// By lower-case name, in alphabetical order.
+    pub(crate) actions: Vec<(String, ActionSlots)>,
 }
 
 impl SfcLayout {
     /// The layout of the chart in `text` placed from `offset` on, with its end; `None` when
     /// the text has no steps.
     pub(crate) fn of_body(text: &str, offset: u32) -> Option<(Self, u32)> {
-        if !text.to_ascii_uppercase().contains("STEP") {
+        if !crate::sfc_chart::may_hold_chart(text) {
             return None;
         }
         let root = top_level(&parse_statements(text).syntax())?;
+        let chart = Chart::of(&root)?;
+        let start = offset.next_multiple_of(8);
         let mut layout = Self {
-            initialised: offset,
+            initialised: start,
+            quit_before: start + 1,
+            tip_before: start + 2,
+            previous_now: start + 8,
             ..Self::default()
         };
-        let mut at = (offset + 1).next_multiple_of(8);
-        for step in root.steps() {
-            let Some(name) = step.name() else {
-                continue;
-            };
+        let mut at = start + 16;
+        for step in &chart.steps {
             layout.steps.push(StepSlots {
-                name: name.text(),
-                initial: step.is_initial(),
-                active: at,
-                fresh: at + 1,
-                elapsed: at + 4,
-                started: at + 8,
+                name: step.name.clone(),
+                initial: step.initial,
+                at,
             });
-            at += 16;
-            for (action, qualifier) in associations(&step) {
-                if matches!(qualifier.as_str(), "S" | "R")
-                    && !layout.stored.iter().any(|(a, _)| *a == action)
-                {
-                    layout.stored.push((action, 0));
-                }
-            }
+            at += step_at::SIZE;
         }
-        if layout.steps.is_empty() {
-            return None;
+        for name in chart.associated_actions() {
+            let written = chart
+                .steps
+                .iter()
+                .flat_map(|s| &s.associations)
+                .find(|a| a.action.eq_ignore_ascii_case(&name))
+                .map_or(name.clone(), |a| a.action.clone());
+            layout
+                .actions
+                .push((name, ActionSlots { name: written, at }));
+            at += action_at::SIZE;
         }
-        for (_, slot) in &mut layout.stored {
-            *slot = at;
-            at += 1;
-        }
-        Some((layout, at.next_multiple_of(8)))
+        Some((layout, at))
     }
 
     /// The step called `name`.
@@ -93,6 +203,14 @@ impl SfcLayout {
         self.steps
             .iter()
             .find(|s| s.name.eq_ignore_ascii_case(name))
+    }
+
+    /// The associated action called `name`.
+    pub(crate) fn action(&self, name: &str) -> Option<&ActionSlots> {
+        self.actions
+            .iter()
+            .find(|(known, _)| known.eq_ignore_ascii_case(name))
+            .map(|(_, slots)| slots)
     }
 }
 
@@ -102,32 +220,25 @@ pub(crate) fn top_level(root: &SyntaxNode) -> Option<StatementList> {
     SourceFile::cast(root.clone()).and_then(|file| file.statement_list())
 }
 
-/// The action associations of a step: (lower-case action name, upper-case qualifier).
-fn associations(step: &StepDecl) -> Vec<(String, String)> {
-    step.syntax()
-        .descendants()
-        .filter_map(CallExpr::cast)
-        .filter_map(|call| {
-            let name = call
-                .callee()?
-                .syntax()
-                .text()
-                .to_string()
-                .trim()
-                .to_lowercase();
-            let qualifier = call
-                .syntax()
-                .descendants()
-                .find_map(Arg::cast)
-                .map(|arg| arg.syntax().text().to_string().trim().to_ascii_uppercase())
-                .unwrap_or_else(|| "N".to_owned());
-            Some((name, qualifier))
-        })
-        .collect()
+fn inst(offset: u32) -> Operand {
+    Operand::Instance(offset)
 }
 
-fn step_names(list: &StepList) -> Vec<String> {
-    list.steps().map(|step| step.text()).collect()
+/// The SFC flags the POU declares, as places.
+#[derive(Default)]
+struct Flags {
+    init: Option<Typed>,
+    reset: Option<Typed>,
+    pause: Option<Typed>,
+    error: Option<Typed>,
+    enable_limit: Option<Typed>,
+    error_step: Option<Typed>,
+    error_pou: Option<Typed>,
+    quit_error: Option<Typed>,
+    trans: Option<Typed>,
+    current_step: Option<Typed>,
+    tip: Option<Typed>,
+    tip_mode: Option<Typed>,
 }
 
 impl BodyGen<'_, '_, '_> {
@@ -139,34 +250,121 @@ impl BodyGen<'_, '_, '_> {
     }
 
     fn set_bool(&mut self, offset: u32, value: bool) {
-        let constant = self.build.constant(&[u8::from(value)]);
+        self.set_place_bool(inst(offset), value);
+    }
+
+    fn set_place_bool(&mut self, dst: Operand, value: bool) {
+        let src = self.build.constant(&[u8::from(value)]);
         self.emit(Instr::Move {
             ty: IE::Bool,
-            dst: Operand::Instance(offset),
-            src: constant,
+            dst,
+            src,
         });
     }
 
-    fn activate(&mut self, step: &StepSlots, now: Operand) {
-        self.set_bool(step.active, true);
-        self.set_bool(step.fresh, true);
-        self.emit(Instr::Move {
-            ty: IE::Lint,
-            dst: Operand::Instance(step.started),
-            src: now,
+    fn bool_op(&mut self, op: BinaryOp, a: Operand, b: Operand) -> Operand {
+        let dst = self.temp(1);
+        self.emit(Instr::Binary {
+            op,
+            ty: IE::Bool,
+            dst,
+            a,
+            b,
         });
-        let zero = self.build.constant(&[0; 4]);
-        self.emit(Instr::Move {
-            ty: IE::Time,
-            dst: Operand::Instance(step.elapsed),
-            src: zero,
+        dst
+    }
+
+    fn not(&mut self, src: Operand) -> Operand {
+        let dst = self.temp(1);
+        self.emit(Instr::Unary {
+            op: program_image::UnaryOp::Not,
+            ty: IE::Bool,
+            dst,
+            src,
         });
+        dst
+    }
+
+    fn move_bool(&mut self, dst: Operand, src: Operand) {
+        self.emit(Instr::Move {
+            ty: IE::Bool,
+            dst,
+            src,
+        });
+    }
+
+    /// Emits a jump taken when `cond` is FALSE, to be patched with `land`.
+    fn skip_unless(&mut self, cond: Operand) -> usize {
+        self.emit(Instr::JumpIfNot { cond, target: 0 })
+    }
+
+    fn skip_if(&mut self, cond: Operand) -> usize {
+        self.emit(Instr::JumpIf { cond, target: 0 })
+    }
+
+    fn land(&mut self, jump: usize) {
+        let here = self.here();
+        self.patch(jump, here);
+    }
+
+    /// A flag the POU declares (any case), as a place.
+    fn flag(&mut self, name: &str) -> Gen<Option<Typed>> {
+        let Some(variable) = self
+            .pou
+            .variables
+            .iter()
+            .find(|v| v.name.eq_ignore_ascii_case(name))
+        else {
+            return Ok(None);
+        };
+        let name = variable.name.clone();
+        self.variable_place_named(&name).map(Some)
+    }
+
+    fn flags(&mut self) -> Gen<Flags> {
+        Ok(Flags {
+            init: self.flag("SFCInit")?,
+            reset: self.flag("SFCReset")?,
+            pause: self.flag("SFCPause")?,
+            error: self.flag("SFCError")?,
+            enable_limit: self.flag("SFCEnableLimit")?,
+            error_step: self.flag("SFCErrorStep")?,
+            error_pou: self.flag("SFCErrorPOU")?,
+            quit_error: self.flag("SFCQuitError")?,
+            trans: self.flag("SFCTrans")?,
+            current_step: self.flag("SFCCurrentStep")?,
+            tip: self.flag("SFCTip")?,
+            tip_mode: self.flag("SFCTipMode")?,
+        })
+    }
+
+    fn read_flag(&mut self, flag: &Typed) -> Gen<Operand> {
+        self.load(flag)
+    }
+
+    fn write_flag(&mut self, flag: &Typed, value: bool) -> Gen<()> {
+        let src = self.build.constant(&[u8::from(value)]);
+        self.store(flag, src)
+    }
+
+    /// Writes the text `value` into a STRING flag.
+    fn write_text(&mut self, flag: &Typed, value: &str) -> Gen<()> {
+        let Type::String { wide, length } = flag.ty else {
+            return Err(fail!(
+                "an SFC flag that should be a STRING is a {}",
+                flag.ty
+            ));
+        };
+        let chars: Vec<u16> = value.encode_utf16().collect();
+        let bytes = super::constant::text_bytes(&chars, wide, length);
+        let src = self.build.constant(&bytes);
+        self.store(flag, src)
     }
 
     /// Runs the action `name`: one declared in the chart (its statements, inline) or an action
     /// of the POU.
     fn run_action(&mut self, name: &str, inline: &HashMap<String, StatementList>) -> Gen<()> {
-        if let Some(statements) = inline.get(name) {
+        if let Some(statements) = inline.get(&name.to_ascii_lowercase()) {
             let statements = statements.clone();
             return self.statement_list(&statements);
         }
@@ -177,7 +375,7 @@ impl BodyGen<'_, '_, '_> {
             .find(|a| a.name.eq_ignore_ascii_case(name))
             .ok_or_else(|| {
                 format!(
-                    "the step names '{name}', which is no action of '{}'",
+                    "the chart names '{name}', which is no action of '{}'",
                     pou.name
                 )
             })?;
@@ -190,55 +388,43 @@ impl BodyGen<'_, '_, '_> {
         Ok(())
     }
 
-    /// The condition under which an N or P association runs its action this cycle.
-    fn control(&mut self, qualifier: &str, step: &StepSlots) -> Gen<Operand> {
-        match qualifier {
-            "N" => Ok(Operand::Instance(step.active)),
-            "P" | "P1" => {
-                let both = self.temp(1);
-                self.emit(Instr::Binary {
-                    op: BinaryOp::And,
-                    ty: IE::Bool,
-                    dst: both,
-                    a: Operand::Instance(step.active),
-                    b: Operand::Instance(step.fresh),
-                });
-                Ok(both)
-            }
-            other => Err(fail!(
-                "the action qualifier {other} is not supported yet (N, P, S and R are)"
-            )),
-        }
+    /// `elapsed := now - started` as a TIME into `dst`.
+    fn elapsed_into(&mut self, dst: Operand, now: Operand, started: Operand) {
+        let nanos = self.temp(8);
+        self.emit(Instr::Binary {
+            op: BinaryOp::Sub,
+            ty: IE::Lint,
+            dst: nanos,
+            a: now,
+            b: started,
+        });
+        self.emit(Instr::Convert {
+            from: IE::Ltime,
+            to: IE::Time,
+            dst,
+            src: nanos,
+        });
     }
 
-    /// ORs `control` into the sum kept for the boolean action `name`.
-    fn or_into(&mut self, sums: &mut Vec<(String, Operand)>, name: String, control: Operand) {
-        match sums.iter().find(|(known, _)| *known == name) {
-            Some((_, sum)) => {
-                let sum = *sum;
-                self.emit(Instr::Binary {
-                    op: BinaryOp::Or,
-                    ty: IE::Bool,
-                    dst: sum,
-                    a: sum,
-                    b: control,
-                });
-            }
-            None => {
-                let sum = self.temp(1);
-                self.emit(Instr::Move {
-                    ty: IE::Bool,
-                    dst: sum,
-                    src: control,
-                });
-                sums.push((name, sum));
-            }
-        }
+    /// A TIME comparison `a op b`.
+    fn compare_time(&mut self, op: CompareOp, a: Operand, b: Operand) -> Operand {
+        let dst = self.temp(1);
+        self.emit(Instr::Compare {
+            op,
+            ty: IE::Time,
+            dst,
+            a,
+            b,
+        });
+        dst
     }
 
-    /// Generates a body holding a chart: its plain statements, then one step of the chart.
+    /// Generates a body holding a chart: its plain statements, then one cycle of the chart.
     pub(crate) fn chart(&mut self, root: &SyntaxNode) -> Gen<()> {
         let Some(root) = &top_level(root) else {
+            return Ok(());
+        };
+        let Some(chart) = Chart::of(root) else {
             return Ok(());
         };
         let sfc = self.sfc()?;
@@ -253,164 +439,570 @@ impl BodyGen<'_, '_, '_> {
                 self.statement_with_line(&statement)?;
             }
         }
+        let flags = self.flags()?;
         let now = self.temp(8);
         self.emit(Instr::Now { dst: now });
-        // (1) The first cycle activates the initial steps.
-        let initialised = Operand::Instance(sfc.initialised);
-        let skip = self.emit(Instr::JumpIf {
-            cond: initialised,
-            target: 0,
+        let mut to_end = Vec::new();
+        self.initialisation(&sfc, &flags, now, &mut to_end)?;
+        self.pause_and_quit(&sfc, &flags, now, &mut to_end)?;
+        if let Some(trans) = &flags.trans {
+            self.write_flag(trans, false)?;
+        }
+        let has_entry_or_exit = chart
+            .steps
+            .iter()
+            .any(|s| s.property("ENTRY").is_some() || s.property("EXIT").is_some());
+        // (2, 3, 4) Steps: activation and deactivation, times, timeouts, associations.
+        for (step, slots) in chart.steps.iter().zip(&sfc.steps) {
+            self.step_pass(step, slots, &sfc, &flags, now, !has_entry_or_exit, &inline)?;
+        }
+        if has_entry_or_exit {
+            for (step, slots) in chart.steps.iter().zip(&sfc.steps) {
+                if let Some(exit) = step.action_property("EXIT") {
+                    let skip = self.skip_unless(inst(slots.leaving()));
+                    self.set_bool(slots.leaving(), false);
+                    self.run_action(&exit, &inline)?;
+                    self.land(skip);
+                }
+            }
+            for (step, slots) in chart.steps.iter().zip(&sfc.steps) {
+                if let Some(entry) = step.action_property("ENTRY") {
+                    let skip = self.skip_unless(inst(slots.entering()));
+                    self.set_bool(slots.entering(), false);
+                    self.run_action(&entry, &inline)?;
+                    self.land(skip);
+                }
+            }
+            for (step, slots) in chart.steps.iter().zip(&sfc.steps) {
+                if let Some(main) = step.action_property("MAIN") {
+                    let skip = self.skip_unless(inst(slots.x()));
+                    self.run_action(&main, &inline)?;
+                    self.land(skip);
+                }
+            }
+        }
+        // (5) IEC actions in alphabetical order: their control, then the final calls, then
+        // the active ones.
+        for (name, slots) in &sfc.actions {
+            self.action_control(&chart, name, slots, now, &inline)?;
+        }
+        for (name, slots) in &sfc.actions {
+            if self.is_action(name, &inline) {
+                let skip = self.skip_unless(inst(slots.active()));
+                self.run_action(name, &inline)?;
+                self.land(skip);
+            }
+        }
+        // (6) Transitions.
+        self.transitions(&chart, &sfc, &flags)?;
+        let end = self.here();
+        for jump in to_end {
+            self.patch(jump, end);
+        }
+        self.emit(Instr::Move {
+            ty: IE::Lint,
+            dst: inst(sfc.previous_now),
+            src: now,
         });
-        for step in sfc.steps.iter().filter(|s| s.initial) {
-            self.activate(step, now);
+        Ok(())
+    }
+
+    fn is_action(&self, name: &str, inline: &HashMap<String, StatementList>) -> bool {
+        inline.contains_key(&name.to_ascii_lowercase())
+            || self
+                .pou
+                .actions
+                .iter()
+                .any(|a| a.name.eq_ignore_ascii_case(name))
+    }
+
+    /// The first cycle, `SFCInit` and `SFCReset`: every step off but the initial one, every
+    /// action idle.
+    fn initialisation(
+        &mut self,
+        sfc: &SfcLayout,
+        flags: &Flags,
+        now: Operand,
+        to_end: &mut Vec<usize>,
+    ) -> Gen<()> {
+        let mut cond = self.not(inst(sfc.initialised));
+        for flag in [&flags.init, &flags.reset].into_iter().flatten() {
+            let value = self.read_flag(flag)?;
+            cond = self.bool_op(BinaryOp::Or, cond, value);
+        }
+        let skip = self.skip_unless(cond);
+        let zero_step = self.build.constant(&[0; step_at::SIZE as usize]);
+        for step in &sfc.steps {
+            self.emit(Instr::Copy {
+                size: step_at::SIZE,
+                dst: inst(step.at),
+                src: zero_step,
+            });
+            if step.initial {
+                self.set_bool(step.next(), true);
+            }
+        }
+        let zero_action = self.build.constant(&[0; action_at::SIZE as usize]);
+        for (_, action) in &sfc.actions {
+            self.emit(Instr::Copy {
+                size: action_at::SIZE,
+                dst: inst(action.at),
+                src: zero_action,
+            });
+        }
+        for flag in [&flags.error, &flags.trans].into_iter().flatten() {
+            self.write_flag(flag, false)?;
+        }
+        for flag in [&flags.error_step, &flags.error_pou, &flags.current_step]
+            .into_iter()
+            .flatten()
+        {
+            self.write_text(flag, "")?;
         }
         self.set_bool(sfc.initialised, true);
-        let after = self.here();
-        self.patch(skip, after);
-        // (2) Elapsed times of the active steps.
-        for step in &sfc.steps {
-            let skip = self.emit(Instr::JumpIfNot {
-                cond: Operand::Instance(step.active),
-                target: 0,
-            });
-            let nanos = self.temp(8);
-            self.emit(Instr::Binary {
-                op: BinaryOp::Sub,
-                ty: IE::Lint,
-                dst: nanos,
-                a: now,
-                b: Operand::Instance(step.started),
-            });
-            self.emit(Instr::Convert {
-                from: IE::Ltime,
-                to: IE::Time,
-                dst: Operand::Instance(step.elapsed),
-                src: nanos,
-            });
-            let after = self.here();
-            self.patch(skip, after);
+        self.emit(Instr::Move {
+            ty: IE::Lint,
+            dst: inst(sfc.previous_now),
+            src: now,
+        });
+        if let Some(init) = &flags.init {
+            // While SFCInit is TRUE the initial step is set but nothing runs.
+            let value = self.read_flag(init)?;
+            let first = sfc.steps.iter().find(|s| s.initial);
+            let keep = self.skip_unless(value);
+            if let Some(first) = first {
+                self.set_bool(first.x(), true);
+            }
+            to_end.push(self.emit(Instr::Jump { target: 0 }));
+            self.land(keep);
         }
-        // (3) Actions by qualifier.
-        let steps: Vec<StepDecl> = root.steps().collect();
-        // An action may also be a BOOL variable (IEC's boolean action): it is TRUE exactly
-        // while some association controls it.
-        let is_action = |name: &str| {
-            inline.contains_key(name)
-                || self
-                    .pou
-                    .actions
-                    .iter()
-                    .any(|a| a.name.eq_ignore_ascii_case(name))
+        self.land(skip);
+        Ok(())
+    }
+
+    /// `SFCPause` and `SFCQuitError` hold the chart; the falling edge of `SFCQuitError`
+    /// restarts the times of the active steps.
+    fn pause_and_quit(
+        &mut self,
+        sfc: &SfcLayout,
+        flags: &Flags,
+        now: Operand,
+        to_end: &mut Vec<usize>,
+    ) -> Gen<()> {
+        if let Some(pause) = &flags.pause {
+            let value = self.read_flag(pause)?;
+            to_end.push(self.skip_if(value));
+        }
+        let Some(quit) = &flags.quit_error else {
+            return Ok(());
         };
-        let mut boolean: Vec<(String, Operand)> = Vec::new();
-        for node in &steps {
-            let Some(name) = node.name() else {
-                continue;
-            };
-            let step = sfc
-                .step(&name.text())
-                .cloned()
-                .ok_or("a step without state")?;
-            for (action, qualifier) in associations(node) {
-                if matches!(qualifier.as_str(), "S" | "R") {
-                    let (_, stored) = sfc
-                        .stored
-                        .iter()
-                        .find(|(a, _)| *a == action)
-                        .ok_or("a stored action")?;
-                    let skip = self.emit(Instr::JumpIfNot {
-                        cond: Operand::Instance(step.active),
-                        target: 0,
-                    });
-                    self.set_bool(*stored, qualifier == "S");
-                    let after = self.here();
-                    self.patch(skip, after);
-                    continue;
-                }
-                let control = self.control(&qualifier, &step)?;
-                if is_action(&action) {
-                    let skip = self.emit(Instr::JumpIfNot {
-                        cond: control,
-                        target: 0,
-                    });
-                    self.run_action(&action, &inline)?;
-                    let after = self.here();
-                    self.patch(skip, after);
-                } else {
-                    self.or_into(&mut boolean, action, control);
-                }
-            }
+        let value = self.read_flag(quit)?;
+        let released = self.skip_unless(value);
+        if let Some(error) = &flags.error {
+            self.write_flag(error, false)?;
         }
-        for (action, stored) in &sfc.stored {
-            if is_action(action) {
-                let skip = self.emit(Instr::JumpIfNot {
-                    cond: Operand::Instance(*stored),
-                    target: 0,
-                });
-                self.run_action(action, &inline)?;
-                let after = self.here();
-                self.patch(skip, after);
-            } else {
-                self.or_into(&mut boolean, action.clone(), Operand::Instance(*stored));
-            }
-        }
-        for (name, control) in boolean {
-            let variable = self.variable_named(&name)?;
-            self.store(&variable, control)?;
-        }
+        self.set_bool(sfc.quit_before, true);
+        to_end.push(self.emit(Instr::Jump { target: 0 }));
+        self.land(released);
+        let steady = self.skip_unless(inst(sfc.quit_before));
+        self.set_bool(sfc.quit_before, false);
         for step in &sfc.steps {
-            self.set_bool(step.fresh, false);
-        }
-        // (4) Transitions: all evaluated first, then fired.
-        let mut fired = Vec::new();
-        for transition in root.transitions() {
-            let (Some(from), Some(to)) = (transition.from_steps(), transition.to_steps()) else {
-                return Err("a transition needs FROM and TO steps".into());
-            };
-            let condition = transition
-                .condition()
-                .ok_or("a transition needs a condition (':= condition;')")?;
-            let enabled = self.temp(1);
-            let value = self.expr_as(&condition, &Type::BOOL)?;
+            let skip = self.skip_unless(inst(step.x()));
             self.emit(Instr::Move {
-                ty: IE::Bool,
-                dst: enabled,
-                src: value,
+                ty: IE::Lint,
+                dst: inst(step.started()),
+                src: now,
             });
-            for name in step_names(&from) {
-                let step = sfc.step(&name).ok_or_else(|| fail!("no step '{name}'"))?;
-                self.emit(Instr::Binary {
-                    op: BinaryOp::And,
-                    ty: IE::Bool,
-                    dst: enabled,
-                    a: enabled,
-                    b: Operand::Instance(step.active),
+            self.land(skip);
+        }
+        self.land(steady);
+        Ok(())
+    }
+
+    /// One step's share of the cycle: it takes `_x` into `x` (activation and deactivation),
+    /// brings `t` up to date, checks its maximum time, names itself the current step, hands
+    /// its associations to their actions, and runs its MAIN action when `with_main`.
+    #[allow(clippy::too_many_arguments)]
+    fn step_pass(
+        &mut self,
+        step: &ChartStep,
+        slots: &StepSlots,
+        sfc: &SfcLayout,
+        flags: &Flags,
+        now: Operand,
+        with_main: bool,
+        inline: &HashMap<String, StatementList>,
+    ) -> Gen<()> {
+        let off = self.skip_unless(inst(slots.next()));
+        let steady = self.skip_if(inst(slots.x()));
+        self.set_bool(slots.x(), true);
+        self.emit(Instr::Move {
+            ty: IE::Lint,
+            dst: inst(slots.started()),
+            src: inst(sfc.previous_now),
+        });
+        if step.property("ENTRY").is_some() {
+            self.set_bool(slots.entering(), true);
+        }
+        self.land(steady);
+        self.elapsed_into(inst(slots.t()), now, inst(slots.started()));
+        if let (Some(max), Some(error)) = (step.property("MAX_TIME"), &flags.error) {
+            let max = self.expr_as(max, &Type::Elementary(crate::elementary::Elementary::Time))?;
+            let over = self.compare_time(CompareOp::Gt, inst(slots.t()), max);
+            let reported = self.read_flag(error)?;
+            let fresh = self.not(reported);
+            let mut report = self.bool_op(BinaryOp::And, over, fresh);
+            if let Some(limit) = &flags.enable_limit {
+                let enabled = self.read_flag(limit)?;
+                report = self.bool_op(BinaryOp::And, report, enabled);
+            }
+            let skip = self.skip_unless(report);
+            self.write_flag(error, true)?;
+            if let Some(error_step) = &flags.error_step {
+                self.write_text(error_step, &step.name)?;
+            }
+            if let Some(error_pou) = &flags.error_pou {
+                let pou = self.pou.name.clone();
+                self.write_text(error_pou, &pou)?;
+            }
+            self.land(skip);
+        }
+        if let Some(current) = &flags.current_step {
+            self.write_text(current, &step.name)?;
+        }
+        for association in &step.associations {
+            let action = sfc
+                .action(&association.action)
+                .ok_or_else(|| fail!("no state for the action '{}'", association.action))?
+                .clone();
+            let qualifier = association.qualifier;
+            self.set_bool(action.request(qualifier), true);
+            self.set_bool(action.busy(), true);
+            if let Some(time) = &association.time {
+                let value =
+                    self.expr_as(time, &Type::Elementary(crate::elementary::Elementary::Time))?;
+                self.emit(Instr::Move {
+                    ty: IE::Time,
+                    dst: inst(action.time(qualifier)),
+                    src: value,
                 });
             }
-            fired.push((enabled, step_names(&from), step_names(&to)));
         }
-        for (enabled, from, to) in fired {
-            let skip = self.emit(Instr::JumpIfNot {
-                cond: enabled,
-                target: 0,
+        if with_main && let Some(main) = step.action_property("MAIN") {
+            self.run_action(&main, inline)?;
+        }
+        let done = self.emit(Instr::Jump { target: 0 });
+        self.land(off);
+        let idle = self.skip_unless(inst(slots.x()));
+        self.set_bool(slots.x(), false);
+        if step.property("EXIT").is_some() {
+            self.set_bool(slots.leaving(), true);
+        }
+        self.land(idle);
+        self.land(done);
+        Ok(())
+    }
+
+    /// A timer of the action control: running while `input`, done once the qualifier's
+    /// duration has elapsed since it started. Returns `done`.
+    fn control_timer(
+        &mut self,
+        action: &ActionSlots,
+        qualifier: Qualifier,
+        input: Operand,
+        now: Operand,
+    ) -> Operand {
+        let done = self.temp(1);
+        self.set_place_bool(done, false);
+        let stop = self.skip_unless(input);
+        let running = self.skip_if(inst(action.running(qualifier)));
+        self.set_bool(action.running(qualifier), true);
+        self.emit(Instr::Move {
+            ty: IE::Lint,
+            dst: inst(action.timer_started(qualifier)),
+            src: now,
+        });
+        self.land(running);
+        let elapsed = self.temp(4);
+        self.elapsed_into(elapsed, now, inst(action.timer_started(qualifier)));
+        let reached = self.compare_time(CompareOp::Ge, elapsed, inst(action.time(qualifier)));
+        self.move_bool(done, reached);
+        let finished = self.emit(Instr::Jump { target: 0 });
+        self.land(stop);
+        self.set_bool(action.running(qualifier), false);
+        self.land(finished);
+        done
+    }
+
+    /// IEC 61131-3's `ACTION_CONTROL` for one action, generated for the qualifiers the chart
+    /// uses with it; then its indicators and boolean variable, and its final call.
+    fn action_control(
+        &mut self,
+        chart: &Chart,
+        name: &str,
+        action: &ActionSlots,
+        now: Operand,
+        inline: &HashMap<String, StatementList>,
+    ) -> Gen<()> {
+        let associations: Vec<_> = chart
+            .steps
+            .iter()
+            .flat_map(|s| &s.associations)
+            .filter(|a| a.action.eq_ignore_ascii_case(name))
+            .collect();
+        let used = |q: Qualifier| associations.iter().any(|a| a.qualifier == q);
+        let idle = self.skip_unless(inst(action.busy()));
+        let req = |q: Qualifier| inst(action.request(q));
+        let mem = |q: Qualifier| inst(action.memory(q));
+        let not_reset = self.not(req(Qualifier::R));
+        let q = self.temp(1);
+        self.move_bool(q, req(Qualifier::N));
+        // A flip-flop with dominant reset: `memory := (memory OR set) AND NOT R`.
+        let latch = |this: &mut Self, qualifier: Qualifier, set: Operand| {
+            let kept = this.bool_op(BinaryOp::Or, mem(qualifier), set);
+            this.emit(Instr::Binary {
+                op: BinaryOp::And,
+                ty: IE::Bool,
+                dst: mem(qualifier),
+                a: kept,
+                b: not_reset,
             });
-            for name in &from {
-                let step = sfc
-                    .step(name)
-                    .ok_or_else(|| fail!("no step '{name}'"))?
-                    .clone();
-                self.set_bool(step.active, false);
+        };
+        if used(Qualifier::S) {
+            latch(self, Qualifier::S, req(Qualifier::S));
+            self.emit(Instr::Binary {
+                op: BinaryOp::Or,
+                ty: IE::Bool,
+                dst: q,
+                a: q,
+                b: mem(Qualifier::S),
+            });
+        }
+        if used(Qualifier::L) {
+            let done = self.control_timer(action, Qualifier::L, req(Qualifier::L), now);
+            let left = self.not(done);
+            let on = self.bool_op(BinaryOp::And, req(Qualifier::L), left);
+            self.emit(Instr::Binary {
+                op: BinaryOp::Or,
+                ty: IE::Bool,
+                dst: q,
+                a: q,
+                b: on,
+            });
+        }
+        if used(Qualifier::D) {
+            let done = self.control_timer(action, Qualifier::D, req(Qualifier::D), now);
+            self.emit(Instr::Binary {
+                op: BinaryOp::Or,
+                ty: IE::Bool,
+                dst: q,
+                a: q,
+                b: done,
+            });
+        }
+        if used(Qualifier::P) {
+            let before = self.not(mem(Qualifier::P));
+            let edge = self.bool_op(BinaryOp::And, req(Qualifier::P), before);
+            self.move_bool(mem(Qualifier::P), req(Qualifier::P));
+            self.emit(Instr::Binary {
+                op: BinaryOp::Or,
+                ty: IE::Bool,
+                dst: q,
+                a: q,
+                b: edge,
+            });
+        }
+        if used(Qualifier::Sd) {
+            latch(self, Qualifier::Sd, req(Qualifier::Sd));
+            let done = self.control_timer(action, Qualifier::Sd, mem(Qualifier::Sd), now);
+            self.emit(Instr::Binary {
+                op: BinaryOp::Or,
+                ty: IE::Bool,
+                dst: q,
+                a: q,
+                b: done,
+            });
+        }
+        if used(Qualifier::Ds) {
+            let done = self.control_timer(action, Qualifier::Ds, req(Qualifier::Ds), now);
+            latch(self, Qualifier::Ds, done);
+            self.emit(Instr::Binary {
+                op: BinaryOp::Or,
+                ty: IE::Bool,
+                dst: q,
+                a: q,
+                b: mem(Qualifier::Ds),
+            });
+        }
+        if used(Qualifier::Sl) {
+            latch(self, Qualifier::Sl, req(Qualifier::Sl));
+            let done = self.control_timer(action, Qualifier::Sl, mem(Qualifier::Sl), now);
+            let left = self.not(done);
+            let on = self.bool_op(BinaryOp::And, mem(Qualifier::Sl), left);
+            self.emit(Instr::Binary {
+                op: BinaryOp::Or,
+                ty: IE::Bool,
+                dst: q,
+                a: q,
+                b: on,
+            });
+        }
+        self.emit(Instr::Binary {
+            op: BinaryOp::And,
+            ty: IE::Bool,
+            dst: inst(action.active()),
+            a: q,
+            b: not_reset,
+        });
+        // A: Q, or the falling edge of Q (the final call), or a P1 or P0 edge.
+        let q_now = inst(action.active());
+        let not_q = self.not(q_now);
+        let fell = self.bool_op(BinaryOp::And, inst(action.at + action_at::Q_PREV), not_q);
+        let mut runs = self.bool_op(BinaryOp::Or, q_now, fell);
+        if used(Qualifier::P1) {
+            let before = self.not(mem(Qualifier::P1));
+            let edge = self.bool_op(BinaryOp::And, req(Qualifier::P1), before);
+            self.move_bool(mem(Qualifier::P1), req(Qualifier::P1));
+            runs = self.bool_op(BinaryOp::Or, runs, edge);
+        }
+        if used(Qualifier::P0) {
+            let gone = self.not(req(Qualifier::P0));
+            let edge = self.bool_op(BinaryOp::And, mem(Qualifier::P0), gone);
+            self.move_bool(mem(Qualifier::P0), req(Qualifier::P0));
+            runs = self.bool_op(BinaryOp::Or, runs, edge);
+        }
+        self.move_bool(inst(action.x()), runs);
+        self.emit(Instr::Binary {
+            op: BinaryOp::And,
+            ty: IE::Bool,
+            dst: inst(action.at + action_at::FINAL),
+            a: runs,
+            b: not_q,
+        });
+        self.move_bool(inst(action.at + action_at::Q_PREV), q_now);
+        // Indicators and a boolean action's variable follow Q.
+        for association in &associations {
+            if let Some(indicator) = &association.indicator {
+                let place = self.place_of(indicator)?;
+                self.store(&place, q_now)?;
             }
-            for name in &to {
-                let step = sfc
-                    .step(name)
-                    .ok_or_else(|| fail!("no step '{name}'"))?
-                    .clone();
-                self.activate(&step, now);
+        }
+        if !self.is_action(name, inline) {
+            let variable = self.variable_named(&action.name)?;
+            self.store(&variable, q_now)?;
+        }
+        // The inputs are the associations of this cycle only.
+        let zero = self.build.constant(&[0; 11]);
+        self.emit(Instr::Copy {
+            size: 11,
+            dst: inst(action.at + action_at::REQUEST),
+            src: zero,
+        });
+        // Busy while anything could still change Q or A without a step asking.
+        let mut busy = self.bool_op(BinaryOp::Or, q_now, runs);
+        for qualifier in QUALIFIERS {
+            if used(qualifier) {
+                busy = self.bool_op(BinaryOp::Or, busy, mem(qualifier));
+                if qualifier.is_timed() {
+                    busy = self.bool_op(BinaryOp::Or, busy, inst(action.running(qualifier)));
+                }
             }
-            let after = self.here();
-            self.patch(skip, after);
+        }
+        self.move_bool(inst(action.busy()), busy);
+        if self.is_action(name, inline) {
+            let skip = self.skip_unless(inst(action.at + action_at::FINAL));
+            self.run_action(name, inline)?;
+            self.land(skip);
+        }
+        self.land(idle);
+        Ok(())
+    }
+
+    /// The transitions in test order: each fires when its source steps are active and not yet
+    /// left this cycle, their minimum times have elapsed and its condition is TRUE (or, in tip
+    /// mode, on the rising edge of `SFCTip`).
+    fn transitions(&mut self, chart: &Chart, sfc: &SfcLayout, flags: &Flags) -> Gen<()> {
+        let tip_edge = match (&flags.tip_mode, &flags.tip) {
+            (Some(mode), Some(tip)) => {
+                let mode = self.read_flag(mode)?;
+                let tip = self.read_flag(tip)?;
+                let before = self.not(inst(sfc.tip_before));
+                let edge = self.bool_op(BinaryOp::And, tip, before);
+                self.move_bool(inst(sfc.tip_before), tip);
+                let edge_keep = self.temp(1);
+                self.move_bool(edge_keep, edge);
+                Some((mode, edge_keep))
+            }
+            _ => None,
+        };
+        for transition in chart.transitions_in_test_order() {
+            let mut skips = Vec::new();
+            for (name, _) in &transition.from {
+                let step = sfc.step(name).ok_or_else(|| fail!("no step '{name}'"))?;
+                skips.push(self.skip_unless(inst(step.x())));
+                skips.push(self.skip_unless(inst(step.next())));
+            }
+            for (name, _) in &transition.from {
+                let (_, step) = chart.step(name).ok_or_else(|| fail!("no step '{name}'"))?;
+                if let Some(min) = step.property("MIN_TIME") {
+                    let slots = sfc.step(name).ok_or_else(|| fail!("no step '{name}'"))?;
+                    let t = inst(slots.t());
+                    let min =
+                        self.expr_as(min, &Type::Elementary(crate::elementary::Elementary::Time))?;
+                    let reached = self.compare_time(CompareOp::Ge, t, min);
+                    skips.push(self.skip_unless(reached));
+                }
+            }
+            let by_hand = match tip_edge {
+                Some((mode, edge)) => {
+                    let automatic = self.skip_unless(mode);
+                    skips.push(self.skip_unless(edge));
+                    Some((self.emit(Instr::Jump { target: 0 }), automatic))
+                }
+                None => None,
+            };
+            if let Some((_, automatic)) = by_hand {
+                self.land(automatic);
+            }
+            let condition = self.condition(&transition.node)?;
+            skips.push(self.skip_unless(condition));
+            if let Some((fire, _)) = by_hand {
+                self.land(fire);
+            }
+            for (name, _) in &transition.from {
+                let step = sfc.step(name).ok_or_else(|| fail!("no step '{name}'"))?;
+                self.set_bool(step.next(), false);
+            }
+            for (name, _) in &transition.to {
+                let step = sfc.step(name).ok_or_else(|| fail!("no step '{name}'"))?;
+                self.set_bool(step.next(), true);
+            }
+            if let Some(trans) = &flags.trans {
+                self.write_flag(trans, true)?;
+            }
+            for skip in skips {
+                self.land(skip);
+            }
         }
         Ok(())
+    }
+
+    /// The value of a transition's condition: its expression, or the value its statements
+    /// assign to the transition's name.
+    fn condition(&mut self, transition: &crate::syntax::ast::TransitionDecl) -> Gen<Operand> {
+        if let Some(condition) = transition.condition() {
+            let value = self.expr_as(&condition, &Type::BOOL)?;
+            let kept = self.temp(1);
+            self.move_bool(kept, value);
+            return Ok(kept);
+        }
+        Err(fail!(
+            "a transition needs a condition (':= condition;'); the ':' form is not compiled"
+        ))
+    }
+
+    /// The place an expression names (an indicator variable).
+    fn place_of(&mut self, node: &Expr) -> Gen<Typed> {
+        self.place(node)
     }
 }

@@ -222,6 +222,8 @@ pub(crate) enum LocalSymbol<'p> {
     Action,
     /// A step of a textual SFC.
     Step,
+    /// The flags `_Action.x`, `_Action._x` of an action associated in a textual SFC.
+    SfcAction,
 }
 
 /// The names visible in one body: the POU's declarations and members, inherited ones, those of
@@ -310,6 +312,24 @@ impl<'a, 'p> Scope<'a, 'p> {
             };
             if let Some(name) = name {
                 scope.add(&name.text(), symbol);
+            }
+        }
+        // The flags of every action the chart associates, `_Fill.x`, as CODESYS declares them.
+        let associated: Vec<String> = root
+            .descendants()
+            .chain(pou_body.iter().flat_map(SyntaxNode::descendants))
+            .filter_map(StepDecl::cast)
+            .flat_map(|step| step.statements())
+            .filter_map(|statement| match statement {
+                crate::syntax::ast::Stmt::CallStmt(call) => call.call()?.callee(),
+                _ => None,
+            })
+            .map(|callee| callee.syntax().text().to_string().trim().to_owned())
+            .collect();
+        for action in associated {
+            let flags = format!("_{action}");
+            if scope.local(&flags).is_none() {
+                scope.add(&flags, LocalSymbol::SfcAction);
             }
         }
         scope

@@ -209,6 +209,7 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                 LocalSymbol::Property(property) => self.resolve(&property.ty),
                 LocalSymbol::Method(_) | LocalSymbol::Action => Type::Void,
                 LocalSymbol::Step => Type::Step,
+                LocalSymbol::SfcAction => Type::SfcAction,
             };
         }
         let globals = self.scope.globals;
@@ -428,10 +429,17 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                 ty
             }
             Type::Step => match name.to_ascii_uppercase().as_str() {
-                "X" => Type::BOOL,
+                "X" | "_X" => Type::BOOL,
                 "T" => Type::Elementary(Elementary::Time),
                 _ => {
-                    self.unknown_member(&text(base.syntax()), &member, vec!["X", "T"]);
+                    self.unknown_member(&text(base.syntax()), &member, vec!["x", "_x", "t"]);
+                    Type::Error
+                }
+            },
+            Type::SfcAction => match name.to_ascii_uppercase().as_str() {
+                "X" | "_X" => Type::BOOL,
+                _ => {
+                    self.unknown_member(&text(base.syntax()), &member, vec!["x", "_x"]);
                     Type::Error
                 }
             },

@@ -132,6 +132,13 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                     name,
                     format!("STEP {name}"),
                 ),
+                LocalSymbol::SfcAction => simple(
+                    DefinitionKind::Step,
+                    pou_name,
+                    None,
+                    name,
+                    format!("{name} : SFCActionType"),
+                ),
             });
         }
         // A project object: it is declared in its own file.
