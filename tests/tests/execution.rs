@@ -6,6 +6,7 @@
 
 /// LD and FBD bodies compiled and run, element by element and against the ST a user writes.
 mod ladder;
+mod sfc;
 
 use program_image::ProgramImage;
 use runtime::simulation::Simulation;

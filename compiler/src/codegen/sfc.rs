@@ -538,6 +538,11 @@ impl BodyGen<'_, '_, '_> {
                 dst: inst(step.at),
                 src: zero_step,
             });
+            self.emit(Instr::Move {
+                ty: IE::Lint,
+                dst: inst(step.started()),
+                src: now,
+            });
             if step.initial {
                 self.set_bool(step.next(), true);
             }
@@ -600,6 +605,9 @@ impl BodyGen<'_, '_, '_> {
         let released = self.skip_unless(value);
         if let Some(error) = &flags.error {
             self.write_flag(error, false)?;
+        }
+        for flag in [&flags.error_step, &flags.error_pou].into_iter().flatten() {
+            self.write_text(flag, "")?;
         }
         self.set_bool(sfc.quit_before, true);
         to_end.push(self.emit(Instr::Jump { target: 0 }));
