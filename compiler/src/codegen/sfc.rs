@@ -3,8 +3,11 @@
 //!
 //! Each step keeps `x` (active this cycle), `_x` (active next cycle), `t` and its activation
 //! time in the instance; each associated action keeps the state of its `ACTION_CONTROL`. The
-//! work of a step is guarded by its flags and the work of an action by its `busy` flag, so an
-//! inactive step costs two jumps per cycle and an idle action two, whatever the chart holds.
+//! `x` and `_x` flags of all steps, and the `busy` and `Q` flags of all actions, lie in arrays
+//! of bytes, so one LWORD covers the flags of eight steps or actions: every pass over the steps
+//! or actions first tests eight at a time and skips a group none of which has work, and the
+//! work of a step or action inside a busy group is guarded by its own flags. A chart of 1,000
+//! steps with one active runs about one instruction per step and cycle.
 
 use std::collections::HashMap;
 
@@ -17,10 +20,11 @@ use crate::sfc_chart::{Chart, ChartStep, Qualifier};
 use crate::syntax::ast::{AstNode, Expr, SourceFile, StatementList, Stmt};
 use crate::syntax::{SyntaxNode, parse_statements};
 
-/// Offsets of a step's state inside its 16 bytes.
+/// Steps or actions whose flags one LWORD covers.
+const GROUP: usize = 8;
+
+/// Offsets of a step's state inside its 16 bytes (its `x` and `_x` are in the arrays).
 mod step_at {
-    pub(super) const X: u32 = 0;
-    pub(super) const NEXT: u32 = 1;
     pub(super) const ENTERING: u32 = 2;
     pub(super) const LEAVING: u32 = 3;
     pub(super) const T: u32 = 4;
@@ -28,12 +32,9 @@ mod step_at {
     pub(super) const SIZE: u32 = 16;
 }
 
-/// Offsets of an action's `ACTION_CONTROL` state inside its bytes.
+/// Offsets of an action's `ACTION_CONTROL` state inside its bytes (its `busy` flag, set
+/// while something may change its outputs, and its `Q` are in the arrays).
 mod action_at {
-    /// BOOL: something may change the action's outputs this cycle.
-    pub(super) const BUSY: u32 = 0;
-    /// BOOL: `Q`, the action is active (`_Action._x`).
-    pub(super) const Q: u32 = 1;
     /// BOOL: `A`, the action's body runs this cycle (`_Action.x`).
     pub(super) const A: u32 = 2;
     /// BOOL: the body runs in the first pass (a final or pulse call with `Q` FALSE).
@@ -76,18 +77,22 @@ fn index_of(qualifier: Qualifier) -> u32 {
 pub(crate) struct StepSlots {
     pub(crate) name: String,
     pub(crate) initial: bool,
-    /// Where its 16 bytes start.
-    pub(crate) at: u32,
+    /// BOOL `x`: active this cycle, in the array of the steps' `x`.
+    x: u32,
+    /// BOOL `_x`: active next cycle, in the array of the steps' `_x`.
+    next: u32,
+    /// Where its 16 further bytes start.
+    at: u32,
 }
 
 impl StepSlots {
     /// BOOL `x`: active this cycle.
     pub(crate) fn x(&self) -> u32 {
-        self.at + step_at::X
+        self.x
     }
     /// BOOL `_x`: active next cycle.
     pub(crate) fn next(&self) -> u32 {
-        self.at + step_at::NEXT
+        self.next
     }
     /// TIME `t`: elapsed since activation.
     pub(crate) fn t(&self) -> u32 {
@@ -109,7 +114,12 @@ impl StepSlots {
 pub(crate) struct ActionSlots {
     /// The name as first written in an association.
     pub(crate) name: String,
-    pub(crate) at: u32,
+    /// BOOL in the array of the actions' `busy` flags.
+    busy: u32,
+    /// BOOL `Q` in the array of the actions' `Q`.
+    q: u32,
+    /// Where its further bytes start.
+    at: u32,
 }
 
 impl ActionSlots {
@@ -119,10 +129,10 @@ impl ActionSlots {
     }
     /// BOOL `_Action._x`: the action is active (its `Q`).
     pub(crate) fn active(&self) -> u32 {
-        self.at + action_at::Q
+        self.q
     }
     fn busy(&self) -> u32 {
-        self.at + action_at::BUSY
+        self.busy
     }
     fn request(&self, q: Qualifier) -> u32 {
         self.at + action_at::REQUEST + index_of(q)
@@ -152,6 +162,12 @@ pub(crate) struct SfcLayout {
     tip_before: u32,
     /// LINT: the task clock of the previous cycle, when the transitions fired.
     previous_now: u32,
+    /// The arrays of the steps' `x` and `_x` and of the actions' `busy` and `Q`, each padded
+    /// to whole groups: (start, bytes).
+    step_x: (u32, u32),
+    step_next: (u32, u32),
+    action_busy: (u32, u32),
+    action_q: (u32, u32),
     pub(crate) steps: Vec<StepSlots>,
     /// By lower-case name, in alphabetical order.
     pub(crate) actions: Vec<(String, ActionSlots)>,
@@ -174,25 +190,42 @@ impl SfcLayout {
             previous_now: start + 8,
             ..Self::default()
         };
+        let padded = |count: usize| (count.div_ceil(GROUP) * GROUP) as u32;
+        let steps = padded(chart.steps.len());
+        let actions_list = chart.associated_actions();
+        let actions = padded(actions_list.len());
         let mut at = start + 16;
-        for step in &chart.steps {
+        layout.step_x = (at, steps);
+        layout.step_next = (at + steps, steps);
+        layout.action_busy = (at + 2 * steps, actions);
+        layout.action_q = (at + 2 * steps + actions, actions);
+        at += 2 * steps + 2 * actions;
+        for (index, step) in chart.steps.iter().enumerate() {
             layout.steps.push(StepSlots {
                 name: step.name.clone(),
                 initial: step.initial,
+                x: layout.step_x.0 + index as u32,
+                next: layout.step_next.0 + index as u32,
                 at,
             });
             at += step_at::SIZE;
         }
-        for name in chart.associated_actions() {
+        for (index, name) in actions_list.into_iter().enumerate() {
             let written = chart
                 .steps
                 .iter()
                 .flat_map(|s| &s.associations)
                 .find(|a| a.action.eq_ignore_ascii_case(&name))
                 .map_or(name.clone(), |a| a.action.clone());
-            layout
-                .actions
-                .push((name, ActionSlots { name: written, at }));
+            layout.actions.push((
+                name,
+                ActionSlots {
+                    name: written,
+                    busy: layout.action_busy.0 + index as u32,
+                    q: layout.action_q.0 + index as u32,
+                    at,
+                },
+            ));
             at += action_at::SIZE;
         }
         Some((layout, at))
@@ -453,8 +486,13 @@ impl BodyGen<'_, '_, '_> {
             .iter()
             .any(|s| s.property("ENTRY").is_some() || s.property("EXIT").is_some());
         // (2, 3, 4) Steps: activation and deactivation, times, timeouts, associations.
-        for (step, slots) in chart.steps.iter().zip(&sfc.steps) {
-            self.step_pass(step, slots, &sfc, &flags, now, !has_entry_or_exit, &inline)?;
+        let steps: Vec<(&ChartStep, &StepSlots)> = chart.steps.iter().zip(&sfc.steps).collect();
+        for (group, members) in steps.chunks(GROUP).enumerate() {
+            let idle = self.group_guard(&[sfc.step_x.0, sfc.step_next.0], group);
+            for (step, slots) in members {
+                self.step_pass(step, slots, &sfc, &flags, now, !has_entry_or_exit, &inline)?;
+            }
+            self.land(idle);
         }
         if has_entry_or_exit {
             for (step, slots) in chart.steps.iter().zip(&sfc.steps) {
@@ -483,15 +521,29 @@ impl BodyGen<'_, '_, '_> {
         }
         // (5) IEC actions in alphabetical order: their control, then the final calls, then
         // the active ones.
-        for (name, slots) in &sfc.actions {
-            self.action_control(&chart, name, slots, now, &inline)?;
-        }
-        for (name, slots) in &sfc.actions {
-            if self.is_action(name, &inline) {
-                let skip = self.skip_unless(inst(slots.active()));
-                self.run_action(name, &inline)?;
-                self.land(skip);
+        for (group, members) in sfc.actions.chunks(GROUP).enumerate() {
+            let idle = self.group_guard(&[sfc.action_busy.0], group);
+            for (name, slots) in members {
+                self.action_control(&chart, name, slots, now, &inline)?;
             }
+            self.land(idle);
+        }
+        for (group, members) in sfc.actions.chunks(GROUP).enumerate() {
+            if !members
+                .iter()
+                .any(|(name, _)| self.is_action(name, &inline))
+            {
+                continue;
+            }
+            let idle = self.group_guard(&[sfc.action_q.0], group);
+            for (name, slots) in members {
+                if self.is_action(name, &inline) {
+                    let skip = self.skip_unless(inst(slots.active()));
+                    self.run_action(name, &inline)?;
+                    self.land(skip);
+                }
+            }
+            self.land(idle);
         }
         // (6) Transitions.
         self.transitions(&chart, &sfc, &flags)?;
@@ -505,6 +557,34 @@ impl BodyGen<'_, '_, '_> {
             src: now,
         });
         Ok(())
+    }
+
+    /// A jump over a group's code taken when none of the `GROUP` flags of group `group` in
+    /// any of the byte arrays starting at `arrays` is TRUE: one LWORD per array.
+    fn group_guard(&mut self, arrays: &[u32], group: usize) -> usize {
+        let offset = (group * GROUP) as u32;
+        let mut any = inst(arrays[0] + offset);
+        for array in &arrays[1..] {
+            let both = self.temp(8);
+            self.emit(Instr::Binary {
+                op: BinaryOp::Or,
+                ty: IE::Lword,
+                dst: both,
+                a: any,
+                b: inst(array + offset),
+            });
+            any = both;
+        }
+        let zero = self.build.constant(&[0; 8]);
+        let busy = self.temp(1);
+        self.emit(Instr::Compare {
+            op: CompareOp::Ne,
+            ty: IE::Lword,
+            dst: busy,
+            a: any,
+            b: zero,
+        });
+        self.skip_unless(busy)
     }
 
     fn is_action(&self, name: &str, inline: &HashMap<String, StatementList>) -> bool {
@@ -531,6 +611,14 @@ impl BodyGen<'_, '_, '_> {
             cond = self.bool_op(BinaryOp::Or, cond, value);
         }
         let skip = self.skip_unless(cond);
+        // The flag arrays lie together, from the steps' `x` to the actions' `Q`.
+        let flags_size = 2 * sfc.step_x.1 + 2 * sfc.action_busy.1;
+        let zero_flags = self.build.constant(&vec![0; flags_size as usize]);
+        self.emit(Instr::Copy {
+            size: flags_size,
+            dst: inst(sfc.step_x.0),
+            src: zero_flags,
+        });
         let zero_step = self.build.constant(&[0; step_at::SIZE as usize]);
         for step in &sfc.steps {
             self.emit(Instr::Copy {
@@ -943,7 +1031,23 @@ impl BodyGen<'_, '_, '_> {
             }
             _ => None,
         };
+        // Consecutive transitions (in test order) whose first source steps share a group are
+        // skipped together when none of that group's steps is active.
+        let mut open: Option<(usize, usize)> = None;
         for transition in chart.transitions_in_test_order() {
+            let anchor = transition
+                .from
+                .first()
+                .and_then(|(name, _)| chart.step(name))
+                .map(|(index, _)| index / GROUP);
+            if open.map(|(group, _)| Some(group)) != Some(anchor) {
+                if let Some((_, jump)) = open.take() {
+                    self.land(jump);
+                }
+                if let Some(group) = anchor {
+                    open = Some((group, self.group_guard(&[sfc.step_x.0], group)));
+                }
+            }
             let mut skips = Vec::new();
             for (name, _) in &transition.from {
                 let step = sfc.step(name).ok_or_else(|| fail!("no step '{name}'"))?;
@@ -991,6 +1095,9 @@ impl BodyGen<'_, '_, '_> {
             for skip in skips {
                 self.land(skip);
             }
+        }
+        if let Some((_, jump)) = open {
+            self.land(jump);
         }
         Ok(())
     }
