@@ -236,6 +236,9 @@ pub(crate) struct Scope<'a, 'p> {
     /// The type of the body's result variable (a function's, method's or property's name).
     pub(crate) result_type: Option<&'p str>,
     spellings: Vec<String>,
+    /// Whether the body may hold an SFC chart: only the body of the POU itself keeps the
+    /// chart's state in its instance, not a method, accessor or action.
+    pub(crate) chart_allowed: bool,
 }
 
 /// How many `EXTENDS` levels are followed; deeper chains (or cycles) stop there.
@@ -254,6 +257,7 @@ impl<'a, 'p> Scope<'a, 'p> {
             locals: FxHashMap::default(),
             result_type: None,
             spellings: Vec::new(),
+            chart_allowed: false,
         };
         // The innermost declarations first: a method's locals hide the POU's variables.
         match target {
@@ -278,7 +282,8 @@ impl<'a, 'p> Scope<'a, 'p> {
                     }
                 }
             }
-            TextTarget::Pou(_) | TextTarget::Action { .. } => {}
+            TextTarget::Pou(_) => scope.chart_allowed = true,
+            TextTarget::Action { .. } => {}
         }
         if let Some(ty) = &pou.return_type
             && pou.kind == PouKind::Function
@@ -353,6 +358,7 @@ impl<'a, 'p> Scope<'a, 'p> {
             locals: FxHashMap::default(),
             result_type: None,
             spellings: Vec::new(),
+            chart_allowed: false,
         }
     }
 

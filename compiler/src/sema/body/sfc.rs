@@ -18,7 +18,13 @@ impl BodyChecker<'_, '_, '_> {
     /// of transitions are checked with the other statements.
     pub(super) fn chart(&mut self, chart: &Chart) {
         let pou = self.scope.pou;
-        if let Some(pou) = pou
+        if pou.is_some() && !self.scope.chart_allowed {
+            self.error(
+                Code::SfcOutsideInstance,
+                chart.steps[0].name_range.clone(),
+                "only the body of a program or function block itself holds a chart, not one of its methods, properties or actions",
+            );
+        } else if let Some(pou) = pou
             && !matches!(pou.kind, PouKind::Program | PouKind::FunctionBlock)
         {
             let first = &chart.steps[0];
