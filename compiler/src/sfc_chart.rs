@@ -95,6 +95,8 @@ pub struct Association {
     pub time: Option<Expr>,
     /// The BOOL indicator variable that shows the action's `Q`.
     pub indicator: Option<Expr>,
+    /// Arguments after the indicator, for the checker to refuse.
+    pub extra: Vec<Range<usize>>,
     /// The whole association.
     pub range: Range<usize>,
 }
@@ -337,6 +339,7 @@ fn association(statement: &Stmt) -> Option<Association> {
     let mut qualifier_written = None;
     let mut time = None;
     let mut indicator = None;
+    let mut extra = Vec::new();
     if let Some(first) = args.next() {
         if first.kind() != ArgKind::Positional {
             return None;
@@ -364,9 +367,10 @@ fn association(statement: &Stmt) -> Option<Association> {
                 indicator = Some(one.clone());
             }
         }
-        [first, second, ..] => {
+        [first, second, more @ ..] => {
             time = Some(first.clone());
             indicator = Some(second.clone());
+            extra = more.iter().map(|e| range_of(e.syntax())).collect();
         }
     }
     Some(Association {
@@ -377,6 +381,7 @@ fn association(statement: &Stmt) -> Option<Association> {
         qualifier_written,
         time,
         indicator,
+        extra,
         range: range_of(statement.syntax()),
     })
 }

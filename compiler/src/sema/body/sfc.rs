@@ -234,6 +234,13 @@ impl BodyChecker<'_, '_, '_> {
                 (Some(time), true) => self.time_value(time),
                 (None, false) => {}
             }
+            for range in &association.extra {
+                self.error(
+                    Code::QualifierTime,
+                    range.clone(),
+                    "an association is 'Action(qualifier[, duration][, indicator]);'",
+                );
+            }
             if let Some(indicator) = &association.indicator {
                 let ty = self.expression(indicator, Mode::Write);
                 if qualifier.is_timed() || ty != Type::Elementary(Elementary::Time) {
