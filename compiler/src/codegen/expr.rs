@@ -351,6 +351,50 @@ impl BodyGen<'_, '_, '_> {
         }
     }
 
+    /// The chart a step or action flags expression `base` belongs to, the place of the
+    /// instance holding it (`None`: this body's own instance) and the step's or flags' name.
+    fn chart_of(&mut self, base: &Expr) -> Gen<(super::sfc::SfcLayout, Option<Place>, String)> {
+        if let Expr::FieldExpr(field) = base {
+            let owner = field.base().ok_or("a member of nothing")?;
+            let name = field
+                .member()
+                .ok_or("a member without a name")?
+                .text()
+                .to_owned();
+            let owner = self.place(&owner)?;
+            let LayShape::Pou(pou_name) = &owner.lay.shape else {
+                return Err(fail!("'{name}' is a step of no program or function block"));
+            };
+            let pou = self
+                .scope
+                .globals
+                .pou(pou_name)
+                .ok_or_else(|| fail!("no POU '{pou_name}'"))?;
+            let sfc = self
+                .build
+                .layouts
+                .instance(pou)?
+                .sfc
+                .clone()
+                .ok_or_else(|| fail!("'{pou_name}' holds no chart"))?;
+            return Ok((sfc, Some(owner.place), name));
+        }
+        let sfc = self
+            .instance
+            .as_ref()
+            .and_then(|i| i.sfc.clone())
+            .ok_or("SFC steps outside a chart")?;
+        Ok((sfc, None, written(base)))
+    }
+
+    /// The place `offset` bytes into the instance `owner` (`None`: this body's instance).
+    fn chart_place(&mut self, owner: Option<Place>, offset: u32) -> Gen<Place> {
+        match owner {
+            Some(owner) => self.member_place(owner, offset),
+            None => Ok(Place::Direct(Operand::Instance(offset))),
+        }
+    }
+
     fn field_place(&mut self, node: &FieldExpr) -> Gen<Typed> {
         let base = node.base().ok_or("a member of nothing")?;
         let member = node.member().ok_or("a member without a name")?;
@@ -371,45 +415,36 @@ impl BodyGen<'_, '_, '_> {
                 return Err(fail!("'{member_name}' is a value, not a variable"));
             }
             Type::Step => {
-                // `Step.X` (active) and `Step.T` (elapsed time) of a textual SFC step.
-                let step_name = written(&base);
-                let sfc = self
-                    .instance
-                    .as_ref()
-                    .and_then(|i| i.sfc.clone())
-                    .ok_or("SFC steps outside a chart")?;
+                // `Step.x`, `Step._x` and `Step.t` of a textual SFC step, of this body's chart
+                // or of another instance's (`Main.Fill.x`).
+                let (sfc, owner, step_name) = self.chart_of(&base)?;
                 let step = sfc
                     .step(&step_name)
-                    .ok_or_else(|| fail!("no step '{step_name}'"))?;
-                return match member_name.to_ascii_uppercase().as_str() {
-                    "X" => self.typed(Place::Direct(Operand::Instance(step.x())), Type::BOOL),
-                    "_X" => self.typed(Place::Direct(Operand::Instance(step.next())), Type::BOOL),
-                    "T" => self.typed(
-                        Place::Direct(Operand::Instance(step.t())),
-                        Type::Elementary(Elementary::Time),
-                    ),
-                    _ => Err(fail!("a step has x, _x and t, not '{member_name}'")),
+                    .ok_or_else(|| fail!("no step '{step_name}'"))?
+                    .clone();
+                let (offset, ty) = match member_name.to_ascii_uppercase().as_str() {
+                    "X" => (step.x(), Type::BOOL),
+                    "_X" => (step.next(), Type::BOOL),
+                    "T" => (step.t(), Type::Elementary(Elementary::Time)),
+                    _ => return Err(fail!("a step has x, _x and t, not '{member_name}'")),
                 };
+                let place = self.chart_place(owner, offset)?;
+                return self.typed(place, ty);
             }
             Type::SfcAction => {
                 // `_Action.x` (runs this cycle) and `_Action._x` (active) of an IEC action.
-                let flags_name = written(&base);
-                let sfc = self
-                    .instance
-                    .as_ref()
-                    .and_then(|i| i.sfc.clone())
-                    .ok_or("SFC actions outside a chart")?;
+                let (sfc, owner, flags_name) = self.chart_of(&base)?;
                 let action = sfc
                     .action(flags_name.trim_start_matches('_'))
-                    .ok_or_else(|| fail!("no associated action '{flags_name}'"))?;
-                return match member_name.to_ascii_uppercase().as_str() {
-                    "X" => self.typed(Place::Direct(Operand::Instance(action.x())), Type::BOOL),
-                    "_X" => self.typed(
-                        Place::Direct(Operand::Instance(action.active())),
-                        Type::BOOL,
-                    ),
-                    _ => Err(fail!("an action's flags are x and _x, not '{member_name}'")),
+                    .ok_or_else(|| fail!("no associated action '{flags_name}'"))?
+                    .clone();
+                let offset = match member_name.to_ascii_uppercase().as_str() {
+                    "X" => action.x(),
+                    "_X" => action.active(),
+                    _ => return Err(fail!("an action's flags are x and _x, not '{member_name}'")),
                 };
+                let place = self.chart_place(owner, offset)?;
+                return self.typed(place, Type::BOOL);
             }
             _ => {}
         }

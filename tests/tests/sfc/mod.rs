@@ -399,3 +399,41 @@ fn writing_a_steps_next_flag_activates_and_deactivates_it() {
     );
     assert_eq!(log_of(&s), "|1 A |2 A |3 Af |4");
 }
+
+#[test]
+fn another_pou_reads_and_drives_a_chart_by_its_steps_flags() {
+    // `main` calls the chart's instance, then reads its steps and action flags and, in cycle
+    // 4, jumps the chart from Run to Stop by writing their `_x`.
+    let source = "FUNCTION_BLOCK FB_Seq
+         INITIAL_STEP Idle: END_STEP
+         TRANSITION FROM Idle TO Run := TRUE; END_TRANSITION
+         STEP Run: Pump(N); END_STEP
+         STEP Stop: END_STEP
+         ACTION Pump: ; END_ACTION
+         END_FUNCTION_BLOCK
+         PROGRAM main VAR seq : FB_Seq; cycle : INT; running : BOOL; pumping : BOOL; runT : TIME; END_VAR
+         cycle := cycle + 1;
+         seq();
+         running := seq.Run.x; pumping := seq._Pump._x; runT := seq.Run.t;
+         IF cycle = 4 THEN seq.Run._x := FALSE; seq.Stop._x := TRUE; END_IF;
+         END_PROGRAM";
+    let s = run(source, 3);
+    check(
+        &s,
+        &[
+            ("main.running", "TRUE"),
+            ("main.pumping", "TRUE"),
+            ("main.runT", "T#20ms"),
+        ],
+    );
+    let s = run(source, 6);
+    check(
+        &s,
+        &[
+            ("main.seq.Run.x", "FALSE"),
+            ("main.seq.Stop.x", "TRUE"),
+            ("main.pumping", "FALSE"),
+            ("main.runT", "T#30ms"),
+        ],
+    );
+}

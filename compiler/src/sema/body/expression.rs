@@ -332,6 +332,9 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
             }
             Type::Named(type_name) => {
                 let Some(found) = globals.member(&type_name, name) else {
+                    if let Some(chart_member) = sfc::chart_member(globals, &type_name, name) {
+                        return chart_member;
+                    }
                     if globals.shape(&type_name).is_some() {
                         let names = globals.member_names_of(&type_name);
                         let names: Vec<&str> = names.iter().map(String::as_str).collect();

@@ -6,12 +6,33 @@ use project_model::PouKind;
 use super::{BodyChecker, Mode, range_of, text};
 use crate::diagnostic::Code;
 use crate::elementary::Elementary;
-use crate::sema::scope::LocalSymbol;
+use crate::sema::scope::{Globals, LocalSymbol};
 use crate::sema::ty::Type;
 use crate::sfc_chart::{Chart, ChartStep};
 use crate::syntax::ast::{AstNode, Expr};
 
 const STEP_PROPERTIES: &[&str] = &["MIN_TIME", "MAX_TIME", "ENTRY", "MAIN", "EXIT"];
+
+/// The type of `name` as a member of an instance of `type_name` whose body holds a chart: a
+/// step (`Main.Fill`) or the flags of an associated action (`Main._Pump`).
+pub(super) fn chart_member(globals: &Globals<'_>, type_name: &str, name: &str) -> Option<Type> {
+    let pou = globals.pou(type_name)?;
+    let text = pou
+        .body
+        .st_text()
+        .filter(|text| crate::sfc_chart::may_hold_chart(text))?;
+    let parse = crate::syntax::parse_statements(text);
+    let list = crate::syntax::ast::SourceFile::cast(parse.syntax())?.statement_list()?;
+    let chart = Chart::of(&list)?;
+    if chart.step(name).is_some() {
+        return Some(Type::Step);
+    }
+    let action = name.strip_prefix('_')?.to_ascii_lowercase();
+    chart
+        .associated_actions()
+        .contains(&action)
+        .then_some(Type::SfcAction)
+}
 
 impl BodyChecker<'_, '_, '_> {
     /// Checks the chart of a body (its steps, transitions and associations); the statements
