@@ -385,3 +385,94 @@ fn association(statement: &Stmt) -> Option<Association> {
         range: range_of(statement.syntax()),
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::syntax::ast::SourceFile;
+    use crate::syntax::parse_statements;
+
+    fn chart(text: &str) -> Chart {
+        let root = parse_statements(text).syntax();
+        let list = SourceFile::cast(root)
+            .and_then(|file| file.statement_list())
+            .expect("a statement list");
+        Chart::of(&list).expect("a chart")
+    }
+
+    #[test]
+    fn steps_properties_and_associations_are_read_as_written() {
+        let chart = chart(
+            "INITIAL_STEP Idle: END_STEP
+             STEP Fill (MIN_TIME := T#1s, EXIT := Out): Pump(L, T#5s, lamp); Horn; valve(N, lit); Stir(); END_STEP",
+        );
+        assert_eq!(chart.steps.len(), 2);
+        assert!(chart.steps[0].initial);
+        let fill = &chart.steps[1];
+        assert_eq!(fill.action_property("EXIT").as_deref(), Some("Out"));
+        assert!(fill.property("MIN_TIME").is_some());
+        let pump = &fill.associations[0];
+        assert_eq!(
+            (pump.action.as_str(), pump.qualifier),
+            ("Pump", Qualifier::L)
+        );
+        assert!(pump.time.is_some() && pump.indicator.is_some());
+        // `Horn;` is no association, `valve(N, lit)` has an indicator and no time, and
+        // `Stir()` is N.
+        assert_eq!(fill.strays.len(), 1);
+        assert!(fill.associations[1].time.is_none() && fill.associations[1].indicator.is_some());
+        assert_eq!(fill.associations[2].qualifier, Qualifier::N);
+    }
+
+    #[test]
+    fn transitions_are_tested_by_priority_then_text_order() {
+        let chart = chart(
+            "INITIAL_STEP S0: END_STEP STEP A: END_STEP STEP B: END_STEP STEP C: END_STEP
+             TRANSITION FROM S0 TO A := TRUE; END_TRANSITION
+             TRANSITION (PRIORITY := 2) FROM S0 TO B := TRUE; END_TRANSITION
+             TRANSITION (PRIORITY := 1) FROM S0 TO C := TRUE; END_TRANSITION",
+        );
+        let order: Vec<&str> = chart
+            .transitions_in_test_order()
+            .iter()
+            .map(|t| t.to[0].0.as_str())
+            .collect();
+        assert_eq!(order, ["C", "B", "A"]);
+    }
+
+    #[test]
+    fn qualifiers_parse_in_any_case_and_know_their_durations() {
+        for qualifier in [
+            Qualifier::N,
+            Qualifier::R,
+            Qualifier::S,
+            Qualifier::L,
+            Qualifier::D,
+            Qualifier::P,
+            Qualifier::P0,
+            Qualifier::P1,
+            Qualifier::Sd,
+            Qualifier::Ds,
+            Qualifier::Sl,
+        ] {
+            assert_eq!(
+                Qualifier::parse(&qualifier.text().to_lowercase()),
+                Some(qualifier)
+            );
+        }
+        assert_eq!(Qualifier::parse("Q"), None);
+        let timed: Vec<&str> = ["N", "L", "D", "P", "SD", "DS", "SL", "S"]
+            .into_iter()
+            .filter(|q| Qualifier::parse(q).is_some_and(Qualifier::is_timed))
+            .collect();
+        assert_eq!(timed, ["L", "D", "SD", "DS", "SL"]);
+    }
+
+    #[test]
+    fn actions_are_listed_once_in_alphabetical_order() {
+        let chart = chart(
+            "INITIAL_STEP S0: Zeta(N); alpha(S); END_STEP STEP S1: ALPHA(R); Mid(P); END_STEP",
+        );
+        assert_eq!(chart.associated_actions(), ["alpha", "mid", "zeta"]);
+    }
+}
