@@ -16,7 +16,7 @@ use program_image::{BinaryOp, CompareOp, Elementary as IE, Instr, Operand};
 use super::body::{BodyGen, Gen, Typed};
 use super::error::fail;
 use crate::sema::ty::Type;
-use crate::sfc_chart::{Chart, ChartStep, Qualifier};
+use crate::sfc_chart::{Association, Chart, ChartStep, Qualifier};
 use crate::syntax::ast::{AstNode, Expr, SourceFile, StatementList, Stmt};
 use crate::syntax::{SyntaxNode, parse_statements};
 
@@ -171,6 +171,8 @@ pub(crate) struct SfcLayout {
     pub(crate) steps: Vec<StepSlots>,
     /// By lower-case name, in alphabetical order.
     pub(crate) actions: Vec<(String, ActionSlots)>,
+    /// The index in `steps` of each step by lower-case name.
+    step_index: HashMap<String, usize>,
 }
 
 impl SfcLayout {
@@ -201,6 +203,10 @@ impl SfcLayout {
         layout.action_q = (at + 2 * steps + actions, actions);
         at += 2 * steps + 2 * actions;
         for (index, step) in chart.steps.iter().enumerate() {
+            layout
+                .step_index
+                .entry(step.name.to_ascii_lowercase())
+                .or_insert(index);
             layout.steps.push(StepSlots {
                 name: step.name.clone(),
                 initial: step.initial,
@@ -233,17 +239,18 @@ impl SfcLayout {
 
     /// The step called `name`.
     pub(crate) fn step(&self, name: &str) -> Option<&StepSlots> {
-        self.steps
-            .iter()
-            .find(|s| s.name.eq_ignore_ascii_case(name))
+        self.step_index
+            .get(&name.to_ascii_lowercase())
+            .and_then(|index| self.steps.get(*index))
     }
 
     /// The associated action called `name`.
     pub(crate) fn action(&self, name: &str) -> Option<&ActionSlots> {
+        let name = name.to_ascii_lowercase();
         self.actions
-            .iter()
-            .find(|(known, _)| known.eq_ignore_ascii_case(name))
-            .map(|(_, slots)| slots)
+            .binary_search_by(|(known, _)| known.as_str().cmp(&name))
+            .ok()
+            .map(|index| &self.actions[index].1)
     }
 }
 
@@ -521,10 +528,18 @@ impl BodyGen<'_, '_, '_> {
         }
         // (5) IEC actions in alphabetical order: their control, then the final calls, then
         // the active ones.
+        let mut by_action: HashMap<String, Vec<&Association>> = HashMap::new();
+        for association in chart.steps.iter().flat_map(|s| &s.associations) {
+            by_action
+                .entry(association.action.to_ascii_lowercase())
+                .or_default()
+                .push(association);
+        }
         for (group, members) in sfc.actions.chunks(GROUP).enumerate() {
             let idle = self.group_guard(&[sfc.action_busy.0], group);
             for (name, slots) in members {
-                self.action_control(&chart, name, slots, now, &inline)?;
+                let associations = by_action.get(name).map_or(&[][..], Vec::as_slice);
+                self.action_control(associations, name, slots, now, &inline)?;
             }
             self.land(idle);
         }
@@ -834,18 +849,12 @@ impl BodyGen<'_, '_, '_> {
     /// uses with it; then its indicators and boolean variable, and its final call.
     fn action_control(
         &mut self,
-        chart: &Chart,
+        associations: &[&Association],
         name: &str,
         action: &ActionSlots,
         now: Operand,
         inline: &HashMap<String, StatementList>,
     ) -> Gen<()> {
-        let associations: Vec<_> = chart
-            .steps
-            .iter()
-            .flat_map(|s| &s.associations)
-            .filter(|a| a.action.eq_ignore_ascii_case(name))
-            .collect();
         let used = |q: Qualifier| associations.iter().any(|a| a.qualifier == q);
         let idle = self.skip_unless(inst(action.busy()));
         let req = |q: Qualifier| inst(action.request(q));
@@ -977,7 +986,7 @@ impl BodyGen<'_, '_, '_> {
         });
         self.move_bool(inst(action.at + action_at::Q_PREV), q_now);
         // Indicators and a boolean action's variable follow Q.
-        for association in &associations {
+        for association in associations {
             if let Some(indicator) = &association.indicator {
                 let place = self.place_of(indicator)?;
                 self.store(&place, q_now)?;

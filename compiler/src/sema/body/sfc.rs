@@ -112,11 +112,9 @@ impl BodyChecker<'_, '_, '_> {
     }
 
     fn steps_and_initial(&mut self, chart: &Chart) {
-        for (index, step) in chart.steps.iter().enumerate() {
-            if chart.steps[..index]
-                .iter()
-                .any(|s| s.name.eq_ignore_ascii_case(&step.name))
-            {
+        let mut seen = std::collections::HashSet::new();
+        for step in &chart.steps {
+            if !seen.insert(step.name.to_ascii_lowercase()) {
                 self.error(
                     Code::DuplicateStep,
                     step.name_range.clone(),
