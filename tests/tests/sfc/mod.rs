@@ -437,3 +437,22 @@ fn another_pou_reads_and_drives_a_chart_by_its_steps_flags() {
         ],
     );
 }
+
+#[test]
+fn a_step_is_driven_by_writing_its_next_flag_by_path_as_online_services_do() {
+    let chart = "INITIAL_STEP S0: A(N); END_STEP
+         TRANSITION FROM S0 TO S1 := FALSE; END_TRANSITION
+         STEP S1: END_STEP
+         STEP S2: END_STEP";
+    let mut s = run_chart("", "", chart, &["A"], &[], 2);
+    // What `rivet write main.S2._x TRUE` does: the path's place in the data region.
+    for (path, value) in [("main.S0._x", 0u8), ("main.S2._x", 1u8)] {
+        let place = runtime::value::resolve(s.engine().image(), path)
+            .unwrap_or_else(|e| panic!("{path}: {e}"));
+        let offset = usize::try_from(place.offset).expect("an offset in memory");
+        s.engine_mut().region_mut(place.region)[offset] = value;
+    }
+    s.run(2);
+    check(&s, &[("main.S0.x", "FALSE"), ("main.S2.x", "TRUE")]);
+    assert_eq!(log_of(&s), "|1 A |2 A |3 Af |4");
+}
