@@ -679,7 +679,9 @@ impl BodyGen<'_, '_, '_> {
             let first = sfc.steps.iter().find(|s| s.initial);
             let keep = self.skip_unless(value);
             if let Some(first) = first {
+                // Shown active; its entry action runs when processing resumes.
                 self.set_bool(first.x(), true);
+                self.set_bool(first.entering(), true);
             }
             to_end.push(self.emit(Instr::Jump { target: 0 }));
             self.land(keep);

@@ -332,6 +332,20 @@ fn sfc_init_reset_and_pause_control_the_chart() {
     );
     check(&s, &[("main.S0.x", "FALSE"), ("main.S1.x", "TRUE")]);
     assert_eq!(log_of(&s), "|1 A |2 Af |3 |4 |5 |6 A |7 Af");
+    // The initial step's entry action runs once SFCInit is released.
+    let entry = "INITIAL_STEP S0 (ENTRY := In0): END_STEP
+         TRANSITION FROM S0 TO S1 := cycle = 2; END_TRANSITION
+         STEP S1: END_STEP";
+    let s = run_chart(
+        vars,
+        "SFCInit := cycle >= 4 AND cycle <= 5;",
+        entry,
+        &[],
+        &["In0"],
+        7,
+    );
+    check(&s, &[("main.S0.x", "TRUE")]);
+    assert_eq!(log_of(&s), "|1 In0 |2 |3 |4 |5 |6 In0 |7");
     // SFCReset in cycle 4: back to S0, which runs in the same cycle.
     let s = run_chart(vars, "SFCReset := cycle = 4;", chart, &["A"], &[], 5);
     check(&s, &[]);
