@@ -318,6 +318,15 @@ impl BodyGen<'_, '_, '_> {
                 LocalSymbol::Property(_) => {
                     return Err("properties are not supported by the code generator yet".into());
                 }
+                LocalSymbol::TransitionValue => {
+                    let value = self
+                        .instance
+                        .as_ref()
+                        .and_then(|i| i.sfc.as_ref())
+                        .and_then(|sfc| sfc.transition_value(&name))
+                        .ok_or_else(|| fail!("'{name}' is a transition of no chart here"))?;
+                    return self.typed(Place::Direct(Operand::Instance(value)), Type::BOOL);
+                }
                 _ => return Err(fail!("'{name}' is not a variable")),
             }
         }

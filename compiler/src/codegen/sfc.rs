@@ -173,6 +173,8 @@ pub(crate) struct SfcLayout {
     pub(crate) actions: Vec<(String, ActionSlots)>,
     /// The index in `steps` of each step by lower-case name.
     step_index: HashMap<String, usize>,
+    /// BOOL per transition written with statements, by lower-case name: its value.
+    transition_values: Vec<(String, u32)>,
 }
 
 impl SfcLayout {
@@ -234,7 +236,25 @@ impl SfcLayout {
             ));
             at += action_at::SIZE;
         }
+        for transition in &chart.transitions {
+            if transition.node.condition().is_none()
+                && let Some(name) = transition.node.name()
+            {
+                layout
+                    .transition_values
+                    .push((name.text().to_ascii_lowercase(), at));
+                at += 1;
+            }
+        }
         Some((layout, at))
+    }
+
+    /// The BOOL holding the value of the transition `name` written with statements.
+    pub(crate) fn transition_value(&self, name: &str) -> Option<u32> {
+        self.transition_values
+            .iter()
+            .find(|(known, _)| known.eq_ignore_ascii_case(name))
+            .map(|(_, at)| *at)
     }
 
     /// The step called `name`.
@@ -1087,7 +1107,7 @@ impl BodyGen<'_, '_, '_> {
             if let Some((_, automatic)) = by_hand {
                 self.land(automatic);
             }
-            let condition = self.condition(&transition.node)?;
+            let condition = self.condition(&transition.node, sfc)?;
             skips.push(self.skip_unless(condition));
             if let Some((fire, _)) = by_hand {
                 self.land(fire);
@@ -1114,17 +1134,30 @@ impl BodyGen<'_, '_, '_> {
     }
 
     /// The value of a transition's condition: its expression, or the value its statements
-    /// assign to the transition's name.
-    fn condition(&mut self, transition: &crate::syntax::ast::TransitionDecl) -> Gen<Operand> {
+    /// assign to the transition's name (FALSE when they assign nothing).
+    fn condition(
+        &mut self,
+        transition: &crate::syntax::ast::TransitionDecl,
+        sfc: &SfcLayout,
+    ) -> Gen<Operand> {
         if let Some(condition) = transition.condition() {
             let value = self.expr_as(&condition, &Type::BOOL)?;
             let kept = self.temp(1);
             self.move_bool(kept, value);
             return Ok(kept);
         }
-        Err(fail!(
-            "a transition needs a condition (':= condition;'); the ':' form is not compiled"
-        ))
+        let name = transition
+            .name()
+            .ok_or("a transition needs ':= condition;' or a name its statements assign")?
+            .text();
+        let value = sfc
+            .transition_value(&name)
+            .ok_or_else(|| fail!("no value for the transition '{name}'"))?;
+        self.set_bool(value, false);
+        for statement in transition.statements() {
+            self.statement_with_line(&statement)?;
+        }
+        Ok(inst(value))
     }
 
     /// The place an expression names (an indicator variable).

@@ -269,6 +269,9 @@ fn visible_names(scope: &Scope<'_, '_>, project: &project_model::Project) -> Vec
                 LocalSymbol::Action => (DefinitionKind::Action, format!("ACTION {name}")),
                 LocalSymbol::Step => (DefinitionKind::Step, format!("STEP {name}")),
                 LocalSymbol::SfcAction => (DefinitionKind::Step, format!("{name} : SFCActionType")),
+                LocalSymbol::TransitionValue => {
+                    (DefinitionKind::Step, format!("TRANSITION {name} : BOOL"))
+                }
             };
             Completion {
                 label: name,

@@ -14,7 +14,7 @@ use project_model::{
 use super::ty::Type;
 use super::{closest, stdlib, types};
 use crate::syntax::SyntaxNode;
-use crate::syntax::ast::{ActionDecl, AstNode, StepDecl};
+use crate::syntax::ast::{ActionDecl, AstNode, StepDecl, TransitionDecl};
 
 /// What a global name stands for.
 #[derive(Clone, Copy, Debug)]
@@ -224,6 +224,8 @@ pub(crate) enum LocalSymbol<'p> {
     Step,
     /// The flags `_Action.x`, `_Action._x` of an action associated in a textual SFC.
     SfcAction,
+    /// The value of a textual SFC transition written with statements, which assign it.
+    TransitionValue,
 }
 
 /// The names visible in one body: the POU's declarations and members, inherited ones, those of
@@ -310,6 +312,13 @@ impl<'a, 'p> Scope<'a, 'p> {
         {
             let (name, symbol) = if let Some(step) = StepDecl::cast(node.clone()) {
                 (step.name(), LocalSymbol::Step)
+            } else if let Some(transition) = TransitionDecl::cast(node.clone()) {
+                // `TRANSITION Name FROM a TO b : Name := …; END_TRANSITION`: the statements
+                // compute the transition's value by assigning its name.
+                if transition.condition().is_some() {
+                    continue;
+                }
+                (transition.name(), LocalSymbol::TransitionValue)
             } else if let Some(action) = ActionDecl::cast(node) {
                 (action.name(), LocalSymbol::Action)
             } else {

@@ -470,3 +470,18 @@ fn a_step_is_driven_by_writing_its_next_flag_by_path_as_online_services_do() {
     check(&s, &[("main.S0.x", "FALSE"), ("main.S2.x", "TRUE")]);
     assert_eq!(log_of(&s), "|1 A |2 A |3 Af |4");
 }
+
+#[test]
+fn a_transition_written_with_statements_fires_on_the_value_they_assign() {
+    let chart = "INITIAL_STEP S0: END_STEP
+         TRANSITION Ready FROM S0 TO S1 :
+             IF cycle >= 3 THEN Ready := TRUE; END_IF;
+         END_TRANSITION
+         STEP S1: END_STEP
+         TRANSITION Never FROM S1 TO S0 : ; END_TRANSITION";
+    let s = run_chart("", "", chart, &[], &[], 3);
+    check(&s, &[("main.S0.x", "TRUE"), ("main.S1._x", "TRUE")]);
+    // `Never` assigns nothing, so it stays FALSE.
+    let s = run_chart("", "", chart, &[], &[], 6);
+    check(&s, &[("main.S1.x", "TRUE")]);
+}

@@ -210,6 +210,7 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                 LocalSymbol::Method(_) | LocalSymbol::Action => Type::Void,
                 LocalSymbol::Step => Type::Step,
                 LocalSymbol::SfcAction => Type::SfcAction,
+                LocalSymbol::TransitionValue => Type::BOOL,
             };
         }
         let globals = self.scope.globals;

@@ -80,13 +80,11 @@ impl BodyChecker<'_, '_, '_> {
                     );
                 }
             }
-            if transition.node.condition().is_none()
-                && transition.node.statements().next().is_some()
-            {
+            if transition.node.condition().is_none() && transition.node.name().is_none() {
                 self.error(
                     Code::InvalidTransitionPriority,
                     range_of(transition.node.syntax()),
-                    "a transition's condition is written ':= condition;' after its steps",
+                    "a transition is 'TRANSITION FROM a TO b := condition;', or 'TRANSITION Name FROM a TO b : statements assigning Name END_TRANSITION'",
                 );
             }
             if let Some(priority) = &transition.priority {
