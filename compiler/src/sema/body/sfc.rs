@@ -112,6 +112,21 @@ impl BodyChecker<'_, '_, '_> {
     fn steps_and_initial(&mut self, chart: &Chart) {
         let mut seen = std::collections::HashSet::new();
         for step in &chart.steps {
+            let clashes = self.scope.pou.is_some_and(|pou| {
+                pou.variables
+                    .iter()
+                    .any(|v| v.name.eq_ignore_ascii_case(&step.name))
+            });
+            if clashes {
+                self.error(
+                    Code::DuplicateName,
+                    step.name_range.clone(),
+                    format!(
+                        "the step '{}' has the name of a variable of the POU; `{}.x` would be ambiguous",
+                        step.name, step.name
+                    ),
+                );
+            }
             if !seen.insert(step.name.to_ascii_lowercase()) {
                 self.error(
                     Code::DuplicateStep,
