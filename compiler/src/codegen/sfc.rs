@@ -15,264 +15,12 @@ use program_image::{BinaryOp, CompareOp, Elementary as IE, Instr, Operand};
 
 use super::body::{BodyGen, Gen, Typed};
 use super::error::fail;
+pub(crate) use super::sfc_layout::SfcLayout;
+use super::sfc_layout::{GROUP, StepSlots, action_at, step_at};
 use crate::sema::ty::Type;
-use crate::sfc_chart::{Association, Chart, ChartStep, Qualifier};
+use crate::sfc_chart::{Association, Chart, ChartStep};
+use crate::syntax::SyntaxNode;
 use crate::syntax::ast::{AstNode, Expr, SourceFile, StatementList, Stmt};
-use crate::syntax::{SyntaxNode, parse_statements};
-
-/// Steps or actions whose flags one LWORD covers.
-const GROUP: usize = 8;
-
-/// Offsets of a step's state inside its 16 bytes (its `x` and `_x` are in the arrays).
-mod step_at {
-    pub(super) const ENTERING: u32 = 2;
-    pub(super) const LEAVING: u32 = 3;
-    pub(super) const T: u32 = 4;
-    pub(super) const STARTED: u32 = 8;
-    pub(super) const SIZE: u32 = 16;
-}
-
-/// Offsets of an action's `ACTION_CONTROL` state inside its bytes (its `busy` flag, set
-/// while something may change its outputs, and its `Q` are in the arrays).
-mod action_at {
-    /// BOOL: `A`, the action's body runs this cycle (`_Action.x`).
-    pub(super) const A: u32 = 2;
-    /// BOOL: the body runs in the first pass (a final or pulse call with `Q` FALSE).
-    pub(super) const FINAL: u32 = 3;
-    /// BOOL: `Q` of the previous cycle.
-    pub(super) const Q_PREV: u32 = 4;
-    /// BOOL per qualifier: its input this cycle (the OR over the active steps).
-    pub(super) const REQUEST: u32 = 5;
-    /// BOOL per qualifier: its flip-flop or edge memory.
-    pub(super) const MEMORY: u32 = 16;
-    /// BOOL per qualifier: its timer is running.
-    pub(super) const RUNNING: u32 = 27;
-    /// TIME per qualifier: its duration.
-    pub(super) const TIME: u32 = 40;
-    /// LINT per qualifier: the clock when its timer started.
-    pub(super) const STARTED: u32 = 88;
-    pub(super) const SIZE: u32 = 176;
-}
-
-const QUALIFIERS: [Qualifier; 11] = [
-    Qualifier::N,
-    Qualifier::R,
-    Qualifier::S,
-    Qualifier::L,
-    Qualifier::D,
-    Qualifier::P,
-    Qualifier::P0,
-    Qualifier::P1,
-    Qualifier::Sd,
-    Qualifier::Ds,
-    Qualifier::Sl,
-];
-
-fn index_of(qualifier: Qualifier) -> u32 {
-    QUALIFIERS.iter().position(|q| *q == qualifier).unwrap_or(0) as u32
-}
-
-/// One step's state in the instance.
-#[derive(Clone, Debug)]
-pub(crate) struct StepSlots {
-    pub(crate) name: String,
-    pub(crate) initial: bool,
-    /// BOOL `x`: active this cycle, in the array of the steps' `x`.
-    x: u32,
-    /// BOOL `_x`: active next cycle, in the array of the steps' `_x`.
-    next: u32,
-    /// Where its 16 further bytes start.
-    at: u32,
-}
-
-impl StepSlots {
-    /// BOOL `x`: active this cycle.
-    pub(crate) fn x(&self) -> u32 {
-        self.x
-    }
-    /// BOOL `_x`: active next cycle.
-    pub(crate) fn next(&self) -> u32 {
-        self.next
-    }
-    /// TIME `t`: elapsed since activation.
-    pub(crate) fn t(&self) -> u32 {
-        self.at + step_at::T
-    }
-    fn entering(&self) -> u32 {
-        self.at + step_at::ENTERING
-    }
-    fn leaving(&self) -> u32 {
-        self.at + step_at::LEAVING
-    }
-    fn started(&self) -> u32 {
-        self.at + step_at::STARTED
-    }
-}
-
-/// One associated action's state in the instance.
-#[derive(Clone, Debug)]
-pub(crate) struct ActionSlots {
-    /// The name as first written in an association.
-    pub(crate) name: String,
-    /// BOOL in the array of the actions' `busy` flags.
-    busy: u32,
-    /// BOOL `Q` in the array of the actions' `Q`.
-    q: u32,
-    /// Where its further bytes start.
-    at: u32,
-}
-
-impl ActionSlots {
-    /// BOOL `_Action.x`: the action's body runs this cycle.
-    pub(crate) fn x(&self) -> u32 {
-        self.at + action_at::A
-    }
-    /// BOOL `_Action._x`: the action is active (its `Q`).
-    pub(crate) fn active(&self) -> u32 {
-        self.q
-    }
-    fn busy(&self) -> u32 {
-        self.busy
-    }
-    fn request(&self, q: Qualifier) -> u32 {
-        self.at + action_at::REQUEST + index_of(q)
-    }
-    fn memory(&self, q: Qualifier) -> u32 {
-        self.at + action_at::MEMORY + index_of(q)
-    }
-    fn running(&self, q: Qualifier) -> u32 {
-        self.at + action_at::RUNNING + index_of(q)
-    }
-    fn time(&self, q: Qualifier) -> u32 {
-        self.at + action_at::TIME + 4 * index_of(q)
-    }
-    fn timer_started(&self, q: Qualifier) -> u32 {
-        self.at + action_at::STARTED + 8 * index_of(q)
-    }
-}
-
-/// The SFC state a chart keeps at the end of its instance.
-#[derive(Clone, Debug, Default)]
-pub(crate) struct SfcLayout {
-    /// BOOL: the initial step has been activated.
-    pub(crate) initialised: u32,
-    /// BOOL: `SFCQuitError` in the previous cycle.
-    quit_before: u32,
-    /// BOOL: `SFCTip` in the previous cycle.
-    tip_before: u32,
-    /// LINT: the task clock of the previous cycle, when the transitions fired.
-    previous_now: u32,
-    /// The arrays of the steps' `x` and `_x` and of the actions' `busy` and `Q`, each padded
-    /// to whole groups: (start, bytes).
-    step_x: (u32, u32),
-    step_next: (u32, u32),
-    action_busy: (u32, u32),
-    action_q: (u32, u32),
-    pub(crate) steps: Vec<StepSlots>,
-    /// By lower-case name, in alphabetical order.
-    pub(crate) actions: Vec<(String, ActionSlots)>,
-    /// The index in `steps` of each step by lower-case name.
-    step_index: HashMap<String, usize>,
-    /// BOOL per transition written with statements, by lower-case name: its value.
-    transition_values: Vec<(String, u32)>,
-}
-
-impl SfcLayout {
-    /// The layout of the chart in `text` placed from `offset` on, with its end; `None` when
-    /// the text has no steps.
-    pub(crate) fn of_body(text: &str, offset: u32) -> Option<(Self, u32)> {
-        if !crate::sfc_chart::may_hold_chart(text) {
-            return None;
-        }
-        let root = top_level(&parse_statements(text).syntax())?;
-        let chart = Chart::of(&root)?;
-        let start = offset.next_multiple_of(8);
-        let mut layout = Self {
-            initialised: start,
-            quit_before: start + 1,
-            tip_before: start + 2,
-            previous_now: start + 8,
-            ..Self::default()
-        };
-        let padded = |count: usize| (count.div_ceil(GROUP) * GROUP) as u32;
-        let steps = padded(chart.steps.len());
-        let actions_list = chart.associated_actions();
-        let actions = padded(actions_list.len());
-        let mut at = start + 16;
-        layout.step_x = (at, steps);
-        layout.step_next = (at + steps, steps);
-        layout.action_busy = (at + 2 * steps, actions);
-        layout.action_q = (at + 2 * steps + actions, actions);
-        at += 2 * steps + 2 * actions;
-        for (index, step) in chart.steps.iter().enumerate() {
-            layout
-                .step_index
-                .entry(step.name.to_ascii_lowercase())
-                .or_insert(index);
-            layout.steps.push(StepSlots {
-                name: step.name.clone(),
-                initial: step.initial,
-                x: layout.step_x.0 + index as u32,
-                next: layout.step_next.0 + index as u32,
-                at,
-            });
-            at += step_at::SIZE;
-        }
-        for (index, name) in actions_list.into_iter().enumerate() {
-            let written = chart
-                .steps
-                .iter()
-                .flat_map(|s| &s.associations)
-                .find(|a| a.action.eq_ignore_ascii_case(&name))
-                .map_or(name.clone(), |a| a.action.clone());
-            layout.actions.push((
-                name,
-                ActionSlots {
-                    name: written,
-                    busy: layout.action_busy.0 + index as u32,
-                    q: layout.action_q.0 + index as u32,
-                    at,
-                },
-            ));
-            at += action_at::SIZE;
-        }
-        for transition in &chart.transitions {
-            if transition.node.condition().is_none()
-                && let Some(name) = transition.node.name()
-            {
-                layout
-                    .transition_values
-                    .push((name.text().to_ascii_lowercase(), at));
-                at += 1;
-            }
-        }
-        Some((layout, at))
-    }
-
-    /// The BOOL holding the value of the transition `name` written with statements.
-    pub(crate) fn transition_value(&self, name: &str) -> Option<u32> {
-        self.transition_values
-            .iter()
-            .find(|(known, _)| known.eq_ignore_ascii_case(name))
-            .map(|(_, at)| *at)
-    }
-
-    /// The step called `name`.
-    pub(crate) fn step(&self, name: &str) -> Option<&StepSlots> {
-        self.step_index
-            .get(&name.to_ascii_lowercase())
-            .and_then(|index| self.steps.get(*index))
-    }
-
-    /// The associated action called `name`.
-    pub(crate) fn action(&self, name: &str) -> Option<&ActionSlots> {
-        let name = name.to_ascii_lowercase();
-        self.actions
-            .binary_search_by(|(known, _)| known.as_str().cmp(&name))
-            .ok()
-            .map(|index| &self.actions[index].1)
-    }
-}
 
 /// The statements at the top of a body: a chart's steps, transitions and actions are among
 /// them.
@@ -280,13 +28,13 @@ pub(crate) fn top_level(root: &SyntaxNode) -> Option<StatementList> {
     SourceFile::cast(root.clone()).and_then(|file| file.statement_list())
 }
 
-fn inst(offset: u32) -> Operand {
+pub(super) fn inst(offset: u32) -> Operand {
     Operand::Instance(offset)
 }
 
 /// The SFC flags the POU declares, as places.
 #[derive(Default)]
-struct Flags {
+pub(super) struct Flags {
     init: Option<Typed>,
     reset: Option<Typed>,
     pause: Option<Typed>,
@@ -302,18 +50,18 @@ struct Flags {
 }
 
 impl BodyGen<'_, '_, '_> {
-    fn sfc(&self) -> Gen<SfcLayout> {
+    pub(super) fn sfc(&self) -> Gen<SfcLayout> {
         self.instance
             .as_ref()
             .and_then(|i| i.sfc.clone())
             .ok_or_else(|| "SFC steps are only allowed in a program or function block".into())
     }
 
-    fn set_bool(&mut self, offset: u32, value: bool) {
+    pub(super) fn set_bool(&mut self, offset: u32, value: bool) {
         self.set_place_bool(inst(offset), value);
     }
 
-    fn set_place_bool(&mut self, dst: Operand, value: bool) {
+    pub(super) fn set_place_bool(&mut self, dst: Operand, value: bool) {
         let src = self.build.constant(&[u8::from(value)]);
         self.emit(Instr::Move {
             ty: IE::Bool,
@@ -322,7 +70,7 @@ impl BodyGen<'_, '_, '_> {
         });
     }
 
-    fn bool_op(&mut self, op: BinaryOp, a: Operand, b: Operand) -> Operand {
+    pub(super) fn bool_op(&mut self, op: BinaryOp, a: Operand, b: Operand) -> Operand {
         let dst = self.temp(1);
         self.emit(Instr::Binary {
             op,
@@ -334,7 +82,7 @@ impl BodyGen<'_, '_, '_> {
         dst
     }
 
-    fn not(&mut self, src: Operand) -> Operand {
+    pub(super) fn not(&mut self, src: Operand) -> Operand {
         let dst = self.temp(1);
         self.emit(Instr::Unary {
             op: program_image::UnaryOp::Not,
@@ -345,7 +93,7 @@ impl BodyGen<'_, '_, '_> {
         dst
     }
 
-    fn move_bool(&mut self, dst: Operand, src: Operand) {
+    pub(super) fn move_bool(&mut self, dst: Operand, src: Operand) {
         self.emit(Instr::Move {
             ty: IE::Bool,
             dst,
@@ -354,21 +102,21 @@ impl BodyGen<'_, '_, '_> {
     }
 
     /// Emits a jump taken when `cond` is FALSE, to be patched with `land`.
-    fn skip_unless(&mut self, cond: Operand) -> usize {
+    pub(super) fn skip_unless(&mut self, cond: Operand) -> usize {
         self.emit(Instr::JumpIfNot { cond, target: 0 })
     }
 
-    fn skip_if(&mut self, cond: Operand) -> usize {
+    pub(super) fn skip_if(&mut self, cond: Operand) -> usize {
         self.emit(Instr::JumpIf { cond, target: 0 })
     }
 
-    fn land(&mut self, jump: usize) {
+    pub(super) fn land(&mut self, jump: usize) {
         let here = self.here();
         self.patch(jump, here);
     }
 
     /// A flag the POU declares (any case), as a place.
-    fn flag(&mut self, name: &str) -> Gen<Option<Typed>> {
+    pub(super) fn flag(&mut self, name: &str) -> Gen<Option<Typed>> {
         let Some(variable) = self
             .pou
             .variables
@@ -381,7 +129,7 @@ impl BodyGen<'_, '_, '_> {
         self.variable_place_named(&name).map(Some)
     }
 
-    fn flags(&mut self) -> Gen<Flags> {
+    pub(super) fn flags(&mut self) -> Gen<Flags> {
         Ok(Flags {
             init: self.flag("SFCInit")?,
             reset: self.flag("SFCReset")?,
@@ -398,17 +146,17 @@ impl BodyGen<'_, '_, '_> {
         })
     }
 
-    fn read_flag(&mut self, flag: &Typed) -> Gen<Operand> {
+    pub(super) fn read_flag(&mut self, flag: &Typed) -> Gen<Operand> {
         self.load(flag)
     }
 
-    fn write_flag(&mut self, flag: &Typed, value: bool) -> Gen<()> {
+    pub(super) fn write_flag(&mut self, flag: &Typed, value: bool) -> Gen<()> {
         let src = self.build.constant(&[u8::from(value)]);
         self.store(flag, src)
     }
 
     /// Writes the text `value` into a STRING flag.
-    fn write_text(&mut self, flag: &Typed, value: &str) -> Gen<()> {
+    pub(super) fn write_text(&mut self, flag: &Typed, value: &str) -> Gen<()> {
         let Type::String { wide, length } = flag.ty else {
             return Err(fail!(
                 "an SFC flag that should be a STRING is a {}",
@@ -423,7 +171,11 @@ impl BodyGen<'_, '_, '_> {
 
     /// Runs the action `name`: one declared in the chart (its statements, inline) or an action
     /// of the POU.
-    fn run_action(&mut self, name: &str, inline: &HashMap<String, StatementList>) -> Gen<()> {
+    pub(super) fn run_action(
+        &mut self,
+        name: &str,
+        inline: &HashMap<String, StatementList>,
+    ) -> Gen<()> {
         if let Some(statements) = inline.get(&name.to_ascii_lowercase()) {
             let statements = statements.clone();
             return self.statement_list(&statements);
@@ -449,7 +201,7 @@ impl BodyGen<'_, '_, '_> {
     }
 
     /// `elapsed := now - started` as a TIME into `dst`.
-    fn elapsed_into(&mut self, dst: Operand, now: Operand, started: Operand) {
+    pub(super) fn elapsed_into(&mut self, dst: Operand, now: Operand, started: Operand) {
         let nanos = self.temp(8);
         self.emit(Instr::Binary {
             op: BinaryOp::Sub,
@@ -467,7 +219,7 @@ impl BodyGen<'_, '_, '_> {
     }
 
     /// A TIME comparison `a op b`.
-    fn compare_time(&mut self, op: CompareOp, a: Operand, b: Operand) -> Operand {
+    pub(super) fn compare_time(&mut self, op: CompareOp, a: Operand, b: Operand) -> Operand {
         let dst = self.temp(1);
         self.emit(Instr::Compare {
             op,
@@ -596,7 +348,7 @@ impl BodyGen<'_, '_, '_> {
 
     /// A jump over a group's code taken when none of the `GROUP` flags of group `group` in
     /// any of the byte arrays starting at `arrays` is TRUE: one LWORD per array.
-    fn group_guard(&mut self, arrays: &[u32], group: usize) -> usize {
+    pub(super) fn group_guard(&mut self, arrays: &[u32], group: usize) -> usize {
         let offset = (group * GROUP) as u32;
         let mut any = inst(arrays[0] + offset);
         for array in &arrays[1..] {
@@ -622,7 +374,7 @@ impl BodyGen<'_, '_, '_> {
         self.skip_unless(busy)
     }
 
-    fn is_action(&self, name: &str, inline: &HashMap<String, StatementList>) -> bool {
+    pub(super) fn is_action(&self, name: &str, inline: &HashMap<String, StatementList>) -> bool {
         inline.contains_key(&name.to_ascii_lowercase())
             || self
                 .pou
@@ -633,7 +385,7 @@ impl BodyGen<'_, '_, '_> {
 
     /// The first cycle, `SFCInit` and `SFCReset`: every step off but the initial one, every
     /// action idle.
-    fn initialisation(
+    pub(super) fn initialisation(
         &mut self,
         sfc: &SfcLayout,
         flags: &Flags,
@@ -712,7 +464,7 @@ impl BodyGen<'_, '_, '_> {
 
     /// `SFCPause` and `SFCQuitError` hold the chart; the falling edge of `SFCQuitError`
     /// restarts the times of the active steps.
-    fn pause_and_quit(
+    pub(super) fn pause_and_quit(
         &mut self,
         sfc: &SfcLayout,
         flags: &Flags,
@@ -756,7 +508,7 @@ impl BodyGen<'_, '_, '_> {
     /// brings `t` up to date, checks its maximum time, names itself the current step, hands
     /// its associations to their actions, and runs its MAIN action when `with_main`.
     #[allow(clippy::too_many_arguments)]
-    fn step_pass(
+    pub(super) fn step_pass(
         &mut self,
         step: &ChartStep,
         slots: &StepSlots,
@@ -836,219 +588,10 @@ impl BodyGen<'_, '_, '_> {
         Ok(())
     }
 
-    /// A timer of the action control: running while `input`, done once the qualifier's
-    /// duration has elapsed since it started. Returns `done`.
-    fn control_timer(
-        &mut self,
-        action: &ActionSlots,
-        qualifier: Qualifier,
-        input: Operand,
-        now: Operand,
-    ) -> Operand {
-        let done = self.temp(1);
-        self.set_place_bool(done, false);
-        let stop = self.skip_unless(input);
-        let running = self.skip_if(inst(action.running(qualifier)));
-        self.set_bool(action.running(qualifier), true);
-        self.emit(Instr::Move {
-            ty: IE::Lint,
-            dst: inst(action.timer_started(qualifier)),
-            src: now,
-        });
-        self.land(running);
-        let elapsed = self.temp(4);
-        self.elapsed_into(elapsed, now, inst(action.timer_started(qualifier)));
-        let reached = self.compare_time(CompareOp::Ge, elapsed, inst(action.time(qualifier)));
-        self.move_bool(done, reached);
-        let finished = self.emit(Instr::Jump { target: 0 });
-        self.land(stop);
-        self.set_bool(action.running(qualifier), false);
-        self.land(finished);
-        done
-    }
-
-    /// IEC 61131-3's `ACTION_CONTROL` for one action, generated for the qualifiers the chart
-    /// uses with it; then its indicators and boolean variable, and its final call.
-    fn action_control(
-        &mut self,
-        associations: &[&Association],
-        name: &str,
-        action: &ActionSlots,
-        now: Operand,
-        inline: &HashMap<String, StatementList>,
-    ) -> Gen<()> {
-        let used = |q: Qualifier| associations.iter().any(|a| a.qualifier == q);
-        let idle = self.skip_unless(inst(action.busy()));
-        let req = |q: Qualifier| inst(action.request(q));
-        let mem = |q: Qualifier| inst(action.memory(q));
-        let not_reset = self.not(req(Qualifier::R));
-        let q = self.temp(1);
-        self.move_bool(q, req(Qualifier::N));
-        // A flip-flop with dominant reset: `memory := (memory OR set) AND NOT R`.
-        let latch = |this: &mut Self, qualifier: Qualifier, set: Operand| {
-            let kept = this.bool_op(BinaryOp::Or, mem(qualifier), set);
-            this.emit(Instr::Binary {
-                op: BinaryOp::And,
-                ty: IE::Bool,
-                dst: mem(qualifier),
-                a: kept,
-                b: not_reset,
-            });
-        };
-        if used(Qualifier::S) {
-            latch(self, Qualifier::S, req(Qualifier::S));
-            self.emit(Instr::Binary {
-                op: BinaryOp::Or,
-                ty: IE::Bool,
-                dst: q,
-                a: q,
-                b: mem(Qualifier::S),
-            });
-        }
-        if used(Qualifier::L) {
-            let done = self.control_timer(action, Qualifier::L, req(Qualifier::L), now);
-            let left = self.not(done);
-            let on = self.bool_op(BinaryOp::And, req(Qualifier::L), left);
-            self.emit(Instr::Binary {
-                op: BinaryOp::Or,
-                ty: IE::Bool,
-                dst: q,
-                a: q,
-                b: on,
-            });
-        }
-        if used(Qualifier::D) {
-            let done = self.control_timer(action, Qualifier::D, req(Qualifier::D), now);
-            self.emit(Instr::Binary {
-                op: BinaryOp::Or,
-                ty: IE::Bool,
-                dst: q,
-                a: q,
-                b: done,
-            });
-        }
-        if used(Qualifier::P) {
-            let before = self.not(mem(Qualifier::P));
-            let edge = self.bool_op(BinaryOp::And, req(Qualifier::P), before);
-            self.move_bool(mem(Qualifier::P), req(Qualifier::P));
-            self.emit(Instr::Binary {
-                op: BinaryOp::Or,
-                ty: IE::Bool,
-                dst: q,
-                a: q,
-                b: edge,
-            });
-        }
-        if used(Qualifier::Sd) {
-            latch(self, Qualifier::Sd, req(Qualifier::Sd));
-            let done = self.control_timer(action, Qualifier::Sd, mem(Qualifier::Sd), now);
-            self.emit(Instr::Binary {
-                op: BinaryOp::Or,
-                ty: IE::Bool,
-                dst: q,
-                a: q,
-                b: done,
-            });
-        }
-        if used(Qualifier::Ds) {
-            let done = self.control_timer(action, Qualifier::Ds, req(Qualifier::Ds), now);
-            latch(self, Qualifier::Ds, done);
-            self.emit(Instr::Binary {
-                op: BinaryOp::Or,
-                ty: IE::Bool,
-                dst: q,
-                a: q,
-                b: mem(Qualifier::Ds),
-            });
-        }
-        if used(Qualifier::Sl) {
-            latch(self, Qualifier::Sl, req(Qualifier::Sl));
-            let done = self.control_timer(action, Qualifier::Sl, mem(Qualifier::Sl), now);
-            let left = self.not(done);
-            let on = self.bool_op(BinaryOp::And, mem(Qualifier::Sl), left);
-            self.emit(Instr::Binary {
-                op: BinaryOp::Or,
-                ty: IE::Bool,
-                dst: q,
-                a: q,
-                b: on,
-            });
-        }
-        self.emit(Instr::Binary {
-            op: BinaryOp::And,
-            ty: IE::Bool,
-            dst: inst(action.active()),
-            a: q,
-            b: not_reset,
-        });
-        // A: Q, or the falling edge of Q (the final call), or a P1 or P0 edge.
-        let q_now = inst(action.active());
-        let not_q = self.not(q_now);
-        let fell = self.bool_op(BinaryOp::And, inst(action.at + action_at::Q_PREV), not_q);
-        let mut runs = self.bool_op(BinaryOp::Or, q_now, fell);
-        if used(Qualifier::P1) {
-            let before = self.not(mem(Qualifier::P1));
-            let edge = self.bool_op(BinaryOp::And, req(Qualifier::P1), before);
-            self.move_bool(mem(Qualifier::P1), req(Qualifier::P1));
-            runs = self.bool_op(BinaryOp::Or, runs, edge);
-        }
-        if used(Qualifier::P0) {
-            let gone = self.not(req(Qualifier::P0));
-            let edge = self.bool_op(BinaryOp::And, mem(Qualifier::P0), gone);
-            self.move_bool(mem(Qualifier::P0), req(Qualifier::P0));
-            runs = self.bool_op(BinaryOp::Or, runs, edge);
-        }
-        self.move_bool(inst(action.x()), runs);
-        self.emit(Instr::Binary {
-            op: BinaryOp::And,
-            ty: IE::Bool,
-            dst: inst(action.at + action_at::FINAL),
-            a: runs,
-            b: not_q,
-        });
-        self.move_bool(inst(action.at + action_at::Q_PREV), q_now);
-        // Indicators and a boolean action's variable follow Q.
-        for association in associations {
-            if let Some(indicator) = &association.indicator {
-                let place = self.place_of(indicator)?;
-                self.store(&place, q_now)?;
-            }
-        }
-        if !self.is_action(name, inline) {
-            let variable = self.variable_named(&action.name)?;
-            self.store(&variable, q_now)?;
-        }
-        // The inputs are the associations of this cycle only.
-        let zero = self.build.constant(&[0; 11]);
-        self.emit(Instr::Copy {
-            size: 11,
-            dst: inst(action.at + action_at::REQUEST),
-            src: zero,
-        });
-        // Busy while anything could still change Q or A without a step asking.
-        let mut busy = self.bool_op(BinaryOp::Or, q_now, runs);
-        for qualifier in QUALIFIERS {
-            if used(qualifier) {
-                busy = self.bool_op(BinaryOp::Or, busy, mem(qualifier));
-                if qualifier.is_timed() {
-                    busy = self.bool_op(BinaryOp::Or, busy, inst(action.running(qualifier)));
-                }
-            }
-        }
-        self.move_bool(inst(action.busy()), busy);
-        if self.is_action(name, inline) {
-            let skip = self.skip_unless(inst(action.at + action_at::FINAL));
-            self.run_action(name, inline)?;
-            self.land(skip);
-        }
-        self.land(idle);
-        Ok(())
-    }
-
     /// The transitions in test order: each fires when its source steps are active and not yet
     /// left this cycle, their minimum times have elapsed and its condition is TRUE (or, in tip
     /// mode, on the rising edge of `SFCTip`).
-    fn transitions(&mut self, chart: &Chart, sfc: &SfcLayout, flags: &Flags) -> Gen<()> {
+    pub(super) fn transitions(&mut self, chart: &Chart, sfc: &SfcLayout, flags: &Flags) -> Gen<()> {
         let tip_edge = match (&flags.tip_mode, &flags.tip) {
             (Some(mode), Some(tip)) => {
                 let mode = self.read_flag(mode)?;
@@ -1135,7 +678,7 @@ impl BodyGen<'_, '_, '_> {
 
     /// The value of a transition's condition: its expression, or the value its statements
     /// assign to the transition's name (FALSE when they assign nothing).
-    fn condition(
+    pub(super) fn condition(
         &mut self,
         transition: &crate::syntax::ast::TransitionDecl,
         sfc: &SfcLayout,
@@ -1161,7 +704,7 @@ impl BodyGen<'_, '_, '_> {
     }
 
     /// The place an expression names (an indicator variable).
-    fn place_of(&mut self, node: &Expr) -> Gen<Typed> {
+    pub(super) fn place_of(&mut self, node: &Expr) -> Gen<Typed> {
         self.place(node)
     }
 }
