@@ -651,13 +651,15 @@ module.exports = grammar({
 
     empty_statement: _ => ';',
 
-    // Textual SFC: `INITIAL_STEP Name: actions END_STEP`.
+    // Textual SFC: `INITIAL_STEP Name: actions END_STEP`, with CODESYS's step properties
+    // `STEP Name (MIN_TIME := T#1s, ENTRY := In, EXIT := Out): … END_STEP`.
     step: $ => seq(
       choice(
         alias($._initial_step_keyword, 'INITIAL_STEP'),
         alias($._step_keyword, 'STEP'),
       ),
       field('name', $.identifier),
+      optional($.step_properties),
       ':',
       optional($.body),
       kw('END_STEP'),
@@ -677,6 +679,16 @@ module.exports = grammar({
         seq(':', optional($.body)),
       ),
       kw('END_TRANSITION'),
+    ),
+
+    step_properties: $ => seq(
+      '(',
+      commaSep1(seq(
+        field('property', choice($.identifier, kw('EXIT'))),
+        ':=',
+        field('value', $._expression),
+      )),
+      ')',
     ),
 
     step_list: $ => choice(

@@ -289,6 +289,55 @@ fn simulate_prints_watched_values_as_text_and_json() {
 }
 
 #[test]
+fn simulate_runs_a_textual_sfc_chart_with_its_step_and_action_flags() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("chart.st");
+    // 10 ms cycles: Fill is active from cycle 3 (Fill.t = 10 ms); its transition is TRUE but
+    // waits for the 30 ms minimum, fires in cycle 5, and Drain is active from cycle 6. The D
+    // action starts 20 ms after cycle 3, in cycle 5, and gets its final call in cycle 6.
+    fs::write(
+        &file,
+        "PROGRAM main VAR cycle : INT; runs : INT; lamp : BOOL; SFCCurrentStep : STRING; END_VAR
+         cycle := cycle + 1;
+         INITIAL_STEP Idle: END_STEP
+         TRANSITION FROM Idle TO Fill := cycle >= 2; END_TRANSITION
+         STEP Fill (MIN_TIME := T#30ms): Pump(D, T#20ms, lamp); END_STEP
+         TRANSITION FROM Fill TO Drain := TRUE; END_TRANSITION
+         STEP Drain: END_STEP
+         ACTION Pump: runs := runs + 1; END_ACTION
+         END_PROGRAM",
+    )
+    .unwrap();
+    let watch = "main.runs,main.lamp,main.Fill.x,main.Fill.t,main._Pump._x,main.SFCCurrentStep";
+    let output = rivet(&[
+        "simulate",
+        path_str(&file),
+        "--cycles",
+        "5",
+        "--watch",
+        watch,
+    ]);
+    assert!(output.status.success(), "{}", text_of(&output.stderr));
+    assert_eq!(
+        text_of(&output.stdout),
+        "main.runs = 1\nmain.lamp = TRUE\nmain.Fill.x = TRUE\nmain.Fill.t = T#30ms\nmain._Pump._x = TRUE\nmain.SFCCurrentStep = 'Fill'\n"
+    );
+    let output = rivet(&[
+        "simulate",
+        path_str(&file),
+        "--cycles",
+        "7",
+        "--watch",
+        watch,
+    ]);
+    assert!(output.status.success(), "{}", text_of(&output.stderr));
+    assert_eq!(
+        text_of(&output.stdout),
+        "main.runs = 2\nmain.lamp = FALSE\nmain.Fill.x = FALSE\nmain.Fill.t = T#30ms\nmain._Pump._x = FALSE\nmain.SFCCurrentStep = 'Drain'\n"
+    );
+}
+
+#[test]
 fn simulate_reports_faults_unknown_variables_and_missing_files() {
     let dir = tempfile::tempdir().unwrap();
     let file = dir.path().join("div.st");

@@ -67,6 +67,16 @@ codes! {
     ReservedName = "E0113", Error, "Name with two underscores in a row";
     InvalidNetwork = "E0114", Error, "LD or FBD element that cannot be compiled";
     UncompiledChart = "E0115", Error, "CFC or SFC chart that cannot be compiled yet";
+    DuplicateStep = "E0116", Error, "SFC step declared twice";
+    InitialStep = "E0117", Error, "SFC chart without exactly one initial step";
+    UnknownStep = "E0118", Error, "Transition naming an unknown step";
+    UnknownAction = "E0119", Error, "Action association naming no action or BOOL variable";
+    QualifierTime = "E0120", Error, "Action qualifier with a missing or needless duration";
+    NotATime = "E0121", Error, "SFC duration that is not a TIME";
+    SfcFlagType = "E0122", Error, "SFC flag declared with the wrong type";
+    UnknownStepAction = "E0123", Error, "Step property naming no action";
+    SfcOutsideInstance = "E0124", Error, "SFC chart outside a program or function block";
+    InvalidTransitionPriority = "E0125", Error, "Transition with an invalid priority or without a condition";
     UnusedVariable = "W0001", Warning, "Variable never used";
     UnassignedVariable = "W0002", Warning, "Variable read but never written";
     OverlappingAddresses = "W0003", Warning, "Located variables overlap";

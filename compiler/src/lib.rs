@@ -23,6 +23,7 @@ pub mod literal;
 pub mod lower;
 pub mod origin;
 pub mod sema;
+pub mod sfc_chart;
 pub mod source_project;
 pub mod syntax;
 

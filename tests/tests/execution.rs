@@ -6,6 +6,7 @@
 
 /// LD and FBD bodies compiled and run, element by element and against the ST a user writes.
 mod ladder;
+mod sfc;
 
 use program_image::ProgramImage;
 use runtime::simulation::Simulation;
@@ -707,7 +708,9 @@ fn a_textual_sfc_chart_steps_through_its_transitions() {
          n := n + 1; seq(go := n >= 2, atIdle => idle, atDone => done);
          END_PROGRAM";
     // 10 ms cycles: Idle at 1, go from 2 (Fill acts from cycle 3), Fill for 30 ms, then Done;
-    // `idle` and `done` show the steps as the previous cycle left them.
+    // `idle` and `done` read `x` before the chart runs, and `x` takes the transitions' `_x`
+    // when the chart runs (CODESYS), so they show the steps of the previous cycle. Count (N),
+    // Once (P) and Hold (S, then R) each get IEC's final call after deactivation.
     let s = run(source, 3);
     check(
         &s,
@@ -715,7 +718,7 @@ fn a_textual_sfc_chart_steps_through_its_transitions() {
             ("main.seq.phase", "1"),
             ("main.seq.filled", "1"),
             ("main.seq.pulses", "1"),
-            ("main.idle", "FALSE"),
+            ("main.idle", "TRUE"),
         ],
     );
     let s = run(source, 8);
@@ -723,10 +726,10 @@ fn a_textual_sfc_chart_steps_through_its_transitions() {
     check(
         &s,
         &[
-            ("main.seq.filled", "3"),
-            ("main.seq.pulses", "1"),
+            ("main.seq.filled", "4"),
+            ("main.seq.pulses", "2"),
             ("main.done", "TRUE"),
-            ("main.seq.held", "3"),
+            ("main.seq.held", "4"),
             ("main.seq.Done.X", "TRUE"),
             ("main.seq.Fill.X", "FALSE"),
             ("main.seq.Done.T", "T#30ms"),

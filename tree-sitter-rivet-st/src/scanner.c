@@ -225,7 +225,8 @@ static int32_t next_significant(TSLexer *lexer, bool *consumed) {
   }
 }
 
-// After `STEP` or `INITIAL_STEP`: `Name :` (not `:=`) must follow.
+// After `STEP` or `INITIAL_STEP`: `Name :` (not `:=`) or `Name (` (the step's properties)
+// must follow.
 static bool step_follows(TSLexer *lexer) {
   bool consumed;
   char word[WORD_CAPACITY + 1];
@@ -233,7 +234,11 @@ static bool step_follows(TSLexer *lexer) {
   if (consumed || !read_word(lexer, word)) {
     return false;
   }
-  if (next_significant(lexer, &consumed) != ':' || consumed) {
+  int32_t after = next_significant(lexer, &consumed);
+  if (after == '(' && consumed) {
+    return true;
+  }
+  if (after != ':' || consumed) {
     return false;
   }
   advance(lexer);

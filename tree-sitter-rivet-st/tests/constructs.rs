@@ -387,6 +387,7 @@ TRANSITION t2 FROM Mid TO (A, B) :
   Mid := TRUE;
 END_TRANSITION
 TRANSITION (PRIORITY := 1) FROM (A, B) TO Start := NOT x; END_TRANSITION
+STEP Fill (MIN_TIME := T#1s, ENTRY := Reset, EXIT := Reset): Reset(L, T#2s, x); END_STEP
 ACTION Reset:
   x := FALSE;
 END_ACTION
@@ -397,6 +398,7 @@ END_FUNCTION_BLOCK",
             "STEP",
             "transition",
             "step_list",
+            "step_properties",
             "action_declaration",
         ],
     );

@@ -237,12 +237,17 @@ impl BodyGen<'_, '_, '_> {
         }
     }
 
-    /// The variable called `name` in this body's scope (an SFC boolean action).
-    pub(crate) fn variable_named(&mut self, name: &str) -> Gen<Typed> {
+    /// The variable called `name` in this body's scope (an SFC flag).
+    pub(crate) fn variable_place_named(&mut self, name: &str) -> Gen<Typed> {
         let node = crate::sema::constant::parse_expression(name)
             .and_then(|n| NameExpr::cast(n.syntax().clone()))
-            .ok_or_else(|| fail!("'{name}' is neither an action nor a variable"))?;
-        let typed = self.name_place(&node)?;
+            .ok_or_else(|| fail!("'{name}' is no variable"))?;
+        self.name_place(&node)
+    }
+
+    /// The BOOL variable called `name` in this body's scope (an SFC boolean action).
+    pub(crate) fn variable_named(&mut self, name: &str) -> Gen<Typed> {
+        let typed = self.variable_place_named(name)?;
         if typed.ty != Type::BOOL {
             return Err(fail!(
                 "'{name}' is named as a step's action but is a {}, not an action or a BOOL",
@@ -313,6 +318,15 @@ impl BodyGen<'_, '_, '_> {
                 LocalSymbol::Property(_) => {
                     return Err("properties are not supported by the code generator yet".into());
                 }
+                LocalSymbol::TransitionValue => {
+                    let value = self
+                        .instance
+                        .as_ref()
+                        .and_then(|i| i.sfc.as_ref())
+                        .and_then(|sfc| sfc.transition_value(&name))
+                        .ok_or_else(|| fail!("'{name}' is a transition of no chart here"))?;
+                    return self.typed(Place::Direct(Operand::Instance(value)), Type::BOOL);
+                }
                 _ => return Err(fail!("'{name}' is not a variable")),
             }
         }
@@ -346,6 +360,50 @@ impl BodyGen<'_, '_, '_> {
         }
     }
 
+    /// The chart a step or action flags expression `base` belongs to, the place of the
+    /// instance holding it (`None`: this body's own instance) and the step's or flags' name.
+    fn chart_of(&mut self, base: &Expr) -> Gen<(super::sfc::SfcLayout, Option<Place>, String)> {
+        if let Expr::FieldExpr(field) = base {
+            let owner = field.base().ok_or("a member of nothing")?;
+            let name = field
+                .member()
+                .ok_or("a member without a name")?
+                .text()
+                .to_owned();
+            let owner = self.place(&owner)?;
+            let LayShape::Pou(pou_name) = &owner.lay.shape else {
+                return Err(fail!("'{name}' is a step of no program or function block"));
+            };
+            let pou = self
+                .scope
+                .globals
+                .pou(pou_name)
+                .ok_or_else(|| fail!("no POU '{pou_name}'"))?;
+            let sfc = self
+                .build
+                .layouts
+                .instance(pou)?
+                .sfc
+                .clone()
+                .ok_or_else(|| fail!("'{pou_name}' holds no chart"))?;
+            return Ok((sfc, Some(owner.place), name));
+        }
+        let sfc = self
+            .instance
+            .as_ref()
+            .and_then(|i| i.sfc.clone())
+            .ok_or("SFC steps outside a chart")?;
+        Ok((sfc, None, written(base)))
+    }
+
+    /// The place `offset` bytes into the instance `owner` (`None`: this body's instance).
+    fn chart_place(&mut self, owner: Option<Place>, offset: u32) -> Gen<Place> {
+        match owner {
+            Some(owner) => self.member_place(owner, offset),
+            None => Ok(Place::Direct(Operand::Instance(offset))),
+        }
+    }
+
     fn field_place(&mut self, node: &FieldExpr) -> Gen<Typed> {
         let base = node.base().ok_or("a member of nothing")?;
         let member = node.member().ok_or("a member without a name")?;
@@ -366,24 +424,36 @@ impl BodyGen<'_, '_, '_> {
                 return Err(fail!("'{member_name}' is a value, not a variable"));
             }
             Type::Step => {
-                // `Step.X` (active) and `Step.T` (elapsed time) of a textual SFC step.
-                let step_name = written(&base);
-                let sfc = self
-                    .instance
-                    .as_ref()
-                    .and_then(|i| i.sfc.clone())
-                    .ok_or("SFC steps outside a chart")?;
+                // `Step.x`, `Step._x` and `Step.t` of a textual SFC step, of this body's chart
+                // or of another instance's (`Main.Fill.x`).
+                let (sfc, owner, step_name) = self.chart_of(&base)?;
                 let step = sfc
                     .step(&step_name)
-                    .ok_or_else(|| fail!("no step '{step_name}'"))?;
-                return match member_name.to_ascii_uppercase().as_str() {
-                    "X" => self.typed(Place::Direct(Operand::Instance(step.active)), Type::BOOL),
-                    "T" => self.typed(
-                        Place::Direct(Operand::Instance(step.elapsed)),
-                        Type::Elementary(Elementary::Time),
-                    ),
-                    _ => Err(fail!("a step has X and T, not '{member_name}'")),
+                    .ok_or_else(|| fail!("no step '{step_name}'"))?
+                    .clone();
+                let (offset, ty) = match member_name.to_ascii_uppercase().as_str() {
+                    "X" => (step.x(), Type::BOOL),
+                    "_X" => (step.next(), Type::BOOL),
+                    "T" => (step.t(), Type::Elementary(Elementary::Time)),
+                    _ => return Err(fail!("a step has x, _x and t, not '{member_name}'")),
                 };
+                let place = self.chart_place(owner, offset)?;
+                return self.typed(place, ty);
+            }
+            Type::SfcAction => {
+                // `_Action.x` (runs this cycle) and `_Action._x` (active) of an IEC action.
+                let (sfc, owner, flags_name) = self.chart_of(&base)?;
+                let action = sfc
+                    .action(flags_name.trim_start_matches('_'))
+                    .ok_or_else(|| fail!("no associated action '{flags_name}'"))?
+                    .clone();
+                let offset = match member_name.to_ascii_uppercase().as_str() {
+                    "X" => action.x(),
+                    "_X" => action.active(),
+                    _ => return Err(fail!("an action's flags are x and _x, not '{member_name}'")),
+                };
+                let place = self.chart_place(owner, offset)?;
+                return self.typed(place, Type::BOOL);
             }
             _ => {}
         }

@@ -23,6 +23,8 @@ mod motion;
 mod program;
 mod property;
 mod sfc;
+mod sfc_action;
+mod sfc_layout;
 #[cfg(test)]
 mod snapshot_tests;
 mod std_call;

@@ -784,26 +784,38 @@ fn instance_symbols<'p>(
         return Ok(());
     }
     let instance = layouts.instance(pou)?;
-    // The steps of a chart can be watched like variables: `Main.Fill.X`, `Main.Fill.T`.
-    for step in instance.sfc.iter().flat_map(|sfc| &sfc.steps) {
-        for (member, ty, offset) in [
-            ("X", Type::BOOL, step.active),
-            (
-                "T",
-                Type::Elementary(crate::elementary::Elementary::Time),
-                step.elapsed,
-            ),
-        ] {
-            let id = layouts.of(&ty)?.id;
-            data.symbols.push(Symbol {
-                path: format!("{path}.{}.{member}", step.name),
-                ty: id,
-                region: Region::Data,
-                offset: base + offset,
-                bit: None,
-                flags: SymbolFlags(SymbolFlags::OUTPUT),
-            });
+    // The steps and actions of a chart can be watched and written like variables:
+    // `Main.Fill.x`, `Main.Fill._x`, `Main.Fill.t`, `Main._Fill_do.x`, `Main._Fill_do._x`.
+    let time = Type::Elementary(crate::elementary::Elementary::Time);
+    let mut chart_members = Vec::new();
+    for sfc in instance.sfc.iter() {
+        for step in &sfc.steps {
+            chart_members.push((step.name.clone(), "x", Type::BOOL, step.x(), false));
+            chart_members.push((step.name.clone(), "_x", Type::BOOL, step.next(), true));
+            chart_members.push((step.name.clone(), "t", time.clone(), step.t(), false));
         }
+        for (_, action) in &sfc.actions {
+            let flags = format!("_{}", action.name);
+            chart_members.push((flags.clone(), "x", Type::BOOL, action.x(), false));
+            chart_members.push((flags, "_x", Type::BOOL, action.active(), false));
+        }
+    }
+    for (owner, member, ty, offset, driven_by_hand) in chart_members {
+        let id = layouts.of(&ty)?.id;
+        // `_x` of a step is written to drive the chart by hand; the others show its state.
+        let flags = if driven_by_hand {
+            SymbolFlags(0)
+        } else {
+            SymbolFlags(SymbolFlags::OUTPUT)
+        };
+        data.symbols.push(Symbol {
+            path: format!("{path}.{owner}.{member}"),
+            ty: id,
+            region: Region::Data,
+            offset: base + offset,
+            bit: None,
+            flags,
+        });
     }
     for slot in &instance.slots {
         let child = format!("{path}.{}", slot.var.name);

@@ -148,11 +148,28 @@ fn members_of_type(globals: &Globals<'_>, ty: &Type) -> Vec<Completion> {
             .into_iter()
             .map(|value| completion(value, DefinitionKind::EnumValue, format!("{name}.{value}")))
             .collect(),
+        Type::SfcAction => vec![
+            completion(
+                "x",
+                DefinitionKind::Member,
+                "x : BOOL (the action runs this cycle)".to_owned(),
+            ),
+            completion(
+                "_x",
+                DefinitionKind::Member,
+                "_x : BOOL (the action is active, its Q)".to_owned(),
+            ),
+        ],
         Type::Step => vec![
             completion(
                 "X",
                 DefinitionKind::Member,
                 "X : BOOL (the step is active)".to_owned(),
+            ),
+            completion(
+                "_x",
+                DefinitionKind::Member,
+                "_x : BOOL (the step is active in the next cycle)".to_owned(),
             ),
             completion(
                 "T",
@@ -251,6 +268,10 @@ fn visible_names(scope: &Scope<'_, '_>, project: &project_model::Project) -> Vec
                 ),
                 LocalSymbol::Action => (DefinitionKind::Action, format!("ACTION {name}")),
                 LocalSymbol::Step => (DefinitionKind::Step, format!("STEP {name}")),
+                LocalSymbol::SfcAction => (DefinitionKind::Step, format!("{name} : SFCActionType")),
+                LocalSymbol::TransitionValue => {
+                    (DefinitionKind::Step, format!("TRANSITION {name} : BOOL"))
+                }
             };
             Completion {
                 label: name,

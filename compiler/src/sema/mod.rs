@@ -11,6 +11,7 @@ mod definition;
 pub(crate) mod expression_types;
 mod reserved;
 pub(crate) mod scope;
+mod sfc_flags;
 pub(crate) mod signatures;
 mod stdlib;
 pub(crate) mod ty;
@@ -101,6 +102,7 @@ fn check_text_project(
         match object {
             Object::Pou(pou) => {
                 check_pou_declarations(&globals, pou, &mut report);
+                sfc_flags::check_sfc_flags(&globals, pou, &mut report);
                 let own = bodies
                     .get(&std::ptr::from_ref(pou))
                     .map_or(&[][..], Vec::as_slice);
@@ -554,6 +556,7 @@ fn usage_warnings(
             VarSection::Var | VarSection::VarTemp | VarSection::VarStat
         ) || variable.address.is_some()
             || variable.constant && pou.kind == PouKind::Program
+            || sfc_flags::is_sfc_flag_of(pou, &variable.name)
         {
             continue;
         }

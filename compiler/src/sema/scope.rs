@@ -14,7 +14,7 @@ use project_model::{
 use super::ty::Type;
 use super::{closest, stdlib, types};
 use crate::syntax::SyntaxNode;
-use crate::syntax::ast::{ActionDecl, AstNode, StepDecl};
+use crate::syntax::ast::{ActionDecl, AstNode, StepDecl, TransitionDecl};
 
 /// What a global name stands for.
 #[derive(Clone, Copy, Debug)]
@@ -222,6 +222,10 @@ pub(crate) enum LocalSymbol<'p> {
     Action,
     /// A step of a textual SFC.
     Step,
+    /// The flags `_Action.x`, `_Action._x` of an action associated in a textual SFC.
+    SfcAction,
+    /// The value of a textual SFC transition written with statements, which assign it.
+    TransitionValue,
 }
 
 /// The names visible in one body: the POU's declarations and members, inherited ones, those of
@@ -234,6 +238,9 @@ pub(crate) struct Scope<'a, 'p> {
     /// The type of the body's result variable (a function's, method's or property's name).
     pub(crate) result_type: Option<&'p str>,
     spellings: Vec<String>,
+    /// Whether the body may hold an SFC chart: only the body of the POU itself keeps the
+    /// chart's state in its instance, not a method, accessor or action.
+    pub(crate) chart_allowed: bool,
 }
 
 /// How many `EXTENDS` levels are followed; deeper chains (or cycles) stop there.
@@ -252,6 +259,7 @@ impl<'a, 'p> Scope<'a, 'p> {
             locals: FxHashMap::default(),
             result_type: None,
             spellings: Vec::new(),
+            chart_allowed: false,
         };
         // The innermost declarations first: a method's locals hide the POU's variables.
         match target {
@@ -276,7 +284,8 @@ impl<'a, 'p> Scope<'a, 'p> {
                     }
                 }
             }
-            TextTarget::Pou(_) | TextTarget::Action { .. } => {}
+            TextTarget::Pou(_) => scope.chart_allowed = true,
+            TextTarget::Action { .. } => {}
         }
         if let Some(ty) = &pou.return_type
             && pou.kind == PouKind::Function
@@ -303,6 +312,13 @@ impl<'a, 'p> Scope<'a, 'p> {
         {
             let (name, symbol) = if let Some(step) = StepDecl::cast(node.clone()) {
                 (step.name(), LocalSymbol::Step)
+            } else if let Some(transition) = TransitionDecl::cast(node.clone()) {
+                // `TRANSITION Name FROM a TO b : Name := …; END_TRANSITION`: the statements
+                // compute the transition's value by assigning its name.
+                if transition.condition().is_some() {
+                    continue;
+                }
+                (transition.name(), LocalSymbol::TransitionValue)
             } else if let Some(action) = ActionDecl::cast(node) {
                 (action.name(), LocalSymbol::Action)
             } else {
@@ -310,6 +326,24 @@ impl<'a, 'p> Scope<'a, 'p> {
             };
             if let Some(name) = name {
                 scope.add(&name.text(), symbol);
+            }
+        }
+        // The flags of every action the chart associates, `_Fill.x`, as CODESYS declares them.
+        let associated: Vec<String> = root
+            .descendants()
+            .chain(pou_body.iter().flat_map(SyntaxNode::descendants))
+            .filter_map(StepDecl::cast)
+            .flat_map(|step| step.statements())
+            .filter_map(|statement| match statement {
+                crate::syntax::ast::Stmt::CallStmt(call) => call.call()?.callee(),
+                _ => None,
+            })
+            .map(|callee| callee.syntax().text().to_string().trim().to_owned())
+            .collect();
+        for action in associated {
+            let flags = format!("_{action}");
+            if scope.local(&flags).is_none() {
+                scope.add(&flags, LocalSymbol::SfcAction);
             }
         }
         scope
@@ -333,6 +367,7 @@ impl<'a, 'p> Scope<'a, 'p> {
             locals: FxHashMap::default(),
             result_type: None,
             spellings: Vec::new(),
+            chart_allowed: false,
         }
     }
 

@@ -57,8 +57,10 @@ pub enum Type {
     Namespace(String),
     /// An enumeration type used as a namespace, `E_State.Idle`.
     EnumNamespace(String),
-    /// A step of a textual SFC: `Step.X` and `Step.T`.
+    /// A step of a textual SFC: `Step.x`, `Step._x` and `Step.t`.
     Step,
+    /// The flags of an IEC action of a textual SFC: `_Action.x` and `_Action._x`.
+    SfcAction,
 }
 
 /// The generic type classes of IEC 61131-3.
@@ -272,6 +274,7 @@ impl fmt::Display for Type {
             Self::Generic(generic) => f.write_str(generic.name()),
             Self::Namespace(name) => write!(f, "global variable list {name}"),
             Self::Step => f.write_str("an SFC step"),
+            Self::SfcAction => f.write_str("the flags of an SFC action"),
         }
     }
 }

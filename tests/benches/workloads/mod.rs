@@ -136,6 +136,51 @@ fn native_array(n: &mut Native) {
     }
 }
 
+/// A ring of `COUNT` steps, the one in the middle active, each step's action counting into
+/// `n`; the transitions' condition stays FALSE. An SFC must cost only what its active step
+/// does, not what its 1,000 steps hold.
+fn sfc_chart() -> String {
+    let mut source = String::from("PROGRAM main\nVAR\n    n : DINT;\n    go : BOOL;\nEND_VAR\n");
+    for step in 1..=COUNT {
+        let keyword = if step == COUNT / 2 {
+            "INITIAL_STEP"
+        } else {
+            "STEP"
+        };
+        let next = step % COUNT + 1;
+        source.push_str(&format!(
+            "{keyword} S{step}: A{step}(N); END_STEP\nTRANSITION FROM S{step} TO S{next} := go; END_TRANSITION\n"
+        ));
+    }
+    for step in 1..=COUNT {
+        source.push_str(&format!("ACTION A{step}: n := n + 1; END_ACTION\n"));
+    }
+    source.push_str("END_PROGRAM\n");
+    source
+}
+
+/// The same sequence as [`sfc_chart`] written as the CASE state machine a user would write
+/// in ST: the reference the chart is measured against.
+fn case_machine() -> String {
+    let mut source = format!(
+        "PROGRAM main\nVAR\n    n : DINT;\n    go : BOOL;\n    state : DINT := {};\nEND_VAR\nCASE state OF\n",
+        COUNT / 2
+    );
+    for step in 1..=COUNT {
+        let next = step % COUNT + 1;
+        source.push_str(&format!(
+            "{step}: n := n + 1; IF go THEN state := {next}; END_IF\n"
+        ));
+    }
+    source.push_str("END_CASE\nEND_PROGRAM\n");
+    source
+}
+
+fn native_step(n: &mut Native) {
+    let i = black_box(&mut n.i);
+    i[0] = i[0].wrapping_add(1);
+}
+
 fn native_empty(n: &mut Native) {
     black_box(n);
 }
@@ -185,6 +230,22 @@ pub fn workloads() -> Vec<Workload> {
             native: native_array,
             check: "main.a[1000]",
         },
+        Workload {
+            name: "sfc_1000_steps",
+            unit: "cycle",
+            source: sfc_chart(),
+            units: 1,
+            native: native_step,
+            check: "main.n",
+        },
+        Workload {
+            name: "case_1000_states",
+            unit: "cycle",
+            source: case_machine(),
+            units: 1,
+            native: native_step,
+            check: "main.n",
+        },
     ]
 }
 
@@ -196,6 +257,8 @@ fn native_value(workload: &Workload, n: &Native) -> Value {
         "dint" => Value::Int(i128::from(n.i[2]), E::Dint),
         "real" => Value::Real(f64::from(n.r[2]), E::Real),
         "array_loop" => Value::Int(i128::from(n.a[COUNT - 1]), E::Dint),
+        // The native step counter starts from the `i1` of the other workloads.
+        "sfc_1000_steps" | "case_1000_states" => Value::Int(i128::from(n.i[0] - 1), E::Dint),
         _ => Value::Bool(n.b[0]),
     }
 }

@@ -209,6 +209,8 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                 LocalSymbol::Property(property) => self.resolve(&property.ty),
                 LocalSymbol::Method(_) | LocalSymbol::Action => Type::Void,
                 LocalSymbol::Step => Type::Step,
+                LocalSymbol::SfcAction => Type::SfcAction,
+                LocalSymbol::TransitionValue => Type::BOOL,
             };
         }
         let globals = self.scope.globals;
@@ -331,6 +333,9 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
             }
             Type::Named(type_name) => {
                 let Some(found) = globals.member(&type_name, name) else {
+                    if let Some(chart_member) = sfc::chart_member(globals, &type_name, name) {
+                        return chart_member;
+                    }
                     if globals.shape(&type_name).is_some() {
                         let names = globals.member_names_of(&type_name);
                         let names: Vec<&str> = names.iter().map(String::as_str).collect();
@@ -428,10 +433,17 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                 ty
             }
             Type::Step => match name.to_ascii_uppercase().as_str() {
-                "X" => Type::BOOL,
+                "X" | "_X" => Type::BOOL,
                 "T" => Type::Elementary(Elementary::Time),
                 _ => {
-                    self.unknown_member(&text(base.syntax()), &member, vec!["X", "T"]);
+                    self.unknown_member(&text(base.syntax()), &member, vec!["x", "_x", "t"]);
+                    Type::Error
+                }
+            },
+            Type::SfcAction => match name.to_ascii_uppercase().as_str() {
+                "X" | "_X" => Type::BOOL,
+                _ => {
+                    self.unknown_member(&text(base.syntax()), &member, vec!["x", "_x"]);
                     Type::Error
                 }
             },

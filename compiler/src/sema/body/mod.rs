@@ -8,6 +8,7 @@
 mod call;
 mod expression;
 mod resolution;
+mod sfc;
 
 use std::collections::HashMap;
 use std::ops::Range;
@@ -137,6 +138,9 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
     /// Checks every statement of the body `root`.
     pub(crate) fn check(&mut self, root: &SyntaxNode) {
         let list = SourceFile::cast(root.clone()).and_then(|file| file.statement_list());
+        if let Some(chart) = list.as_ref().and_then(crate::sfc_chart::Chart::of) {
+            self.chart(&chart);
+        }
         self.statement_list(list);
     }
 
@@ -215,15 +219,8 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                     self.statement(&statement);
                 }
             }
-            Stmt::StepDecl(step) => {
-                // Action associations: `Action(N);`, `Action(D, T#2s);`. Only the action's
-                // name is a name; the arguments are qualifiers and times.
-                for call in step.syntax().descendants().filter_map(CallExpr::cast) {
-                    if let Some(callee) = call.callee() {
-                        self.expression(&callee, Mode::Read);
-                    }
-                }
-            }
+            // A step's properties and associations are checked with its chart.
+            Stmt::StepDecl(_) => {}
             Stmt::ExitStmt(_)
             | Stmt::ContinueStmt(_)
             | Stmt::ReturnStmt(_)

@@ -132,6 +132,20 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                     name,
                     format!("STEP {name}"),
                 ),
+                LocalSymbol::SfcAction => simple(
+                    DefinitionKind::Step,
+                    pou_name,
+                    None,
+                    name,
+                    format!("{name} : SFCActionType"),
+                ),
+                LocalSymbol::TransitionValue => simple(
+                    DefinitionKind::Step,
+                    pou_name,
+                    None,
+                    name,
+                    format!("TRANSITION {name} : BOOL"),
+                ),
             });
         }
         // A project object: it is declared in its own file.

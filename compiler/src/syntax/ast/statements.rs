@@ -302,6 +302,11 @@ impl StepDecl {
             .is_some_and(|t| t.text().eq_ignore_ascii_case("INITIAL_STEP"))
     }
 
+    /// The step's properties, `(MIN_TIME := T#1s, ENTRY := Fill_in)`, when written.
+    pub fn arg_list(&self) -> Option<ArgList> {
+        child(&self.0)
+    }
+
     /// The action associations, `Action(N);`, as written.
     pub fn statements(&self) -> AstChildren<Stmt> {
         children(&self.0)

@@ -152,12 +152,12 @@ fn statement(p: &mut Parser<'_>, stops: TokenSet, in_case: bool) {
     }
 }
 
-/// `INITIAL_STEP Name:` or `STEP Name:`, which are words, not keywords, so variables may
-/// still be called `Step`.
+/// `INITIAL_STEP Name:` or `STEP Name:` (or `STEP Name (MIN_TIME := …):`), which are words,
+/// not keywords, so variables may still be called `Step`.
 fn at_step(p: &Parser<'_>) -> bool {
     (p.nth_is_word(0, "STEP") || p.nth_is_word(0, "INITIAL_STEP"))
         && p.nth(1) == IDENT
-        && p.nth(2) == COLON
+        && matches!(p.nth(2), COLON | L_PAREN)
 }
 
 /// `TRANSITION [Name] [(PRIORITY := n)] FROM`.
@@ -168,12 +168,16 @@ fn at_transition(p: &Parser<'_>) -> bool {
             || p.nth(1) == L_PAREN)
 }
 
-/// A textual SFC step: `STEP Name: action associations END_STEP`.
+/// A textual SFC step: `STEP Name [(properties)]: action associations END_STEP`, the
+/// properties being CODESYS's `MIN_TIME`, `MAX_TIME`, `ENTRY`, `MAIN` and `EXIT`.
 fn sfc_step(p: &mut Parser<'_>) {
     let m = p.open();
     p.bump();
     super::name(p);
-    p.bump();
+    if p.at(L_PAREN) {
+        step_properties(p);
+    }
+    p.expect_with(COLON, "after the step's name");
     while !p.nth_is_word(0, "END_STEP")
         && !p.at_set(LIST_END)
         && !p.at_end()
@@ -184,6 +188,27 @@ fn sfc_step(p: &mut Parser<'_>) {
     }
     expect_word(p, "END_STEP", "to close the step");
     m.complete(p, STEP_DECL);
+}
+
+/// `(MIN_TIME := T#1s, EXIT := Fill_out)`: an argument list whose names may be the keyword
+/// `EXIT`.
+fn step_properties(p: &mut Parser<'_>) {
+    let m = p.open();
+    p.bump();
+    while !p.at(R_PAREN) && !p.at(COLON) && !p.at_end() {
+        let arg = p.open();
+        if matches!(p.current(), IDENT | EXIT) && p.nth(1) == ASSIGN {
+            p.bump();
+            p.bump();
+        }
+        expression(p);
+        arg.complete(p, ARG);
+        if !p.eat(COMMA) {
+            break;
+        }
+    }
+    p.expect_with(R_PAREN, "to close the step's properties");
+    m.complete(p, ARG_LIST);
 }
 
 /// A textual SFC transition: `TRANSITION FROM a TO (b, c) := condition; END_TRANSITION`.
