@@ -1,0 +1,677 @@
+//! `SfcEditor`: the state of one SFC body's editor and its public face.
+
+use egui::{Id, Pos2, Rect, ScrollArea, Ui, UiBuilder, pos2, vec2};
+use project_model::sfc_edit::{
+    self, SfcEditError, copy_nodes, delete_nodes, find_node, max_sfc_id, paste_after,
+};
+use project_model::{ElementId, SfcChart, SfcNode};
+
+use super::commands::SfcCommand;
+use super::entry::{Entry, EntryTarget};
+use super::layout::{SfcLayout, sfc_layout};
+use super::texts::SfcTexts;
+use super::types::{SfcChange, SfcDiagnostic, SfcOnline, SfcOnlineCommand, SfcOutput};
+use crate::DiagramServices;
+use crate::EditorPalette;
+
+/// The width of the toolbox column, in points.
+const TOOLBOX_WIDTH_PX: f32 = 150.0;
+/// The width of the properties panel, in points.
+const PANEL_WIDTH_PX: f32 = 260.0;
+/// The zoom's limits.
+pub(super) const ZOOM_RANGE: (f32, f32) = (0.25, 4.0);
+
+/// The SFC editor of one body: a structured chart laid out automatically, edited by commands
+/// on the selection. It never changes the model: each gesture comes out as one [`SfcChange`]
+/// holding the whole new chart, which the app applies as `Edit::ReplaceChart`. It lives as
+/// long as the document is open and is never saved.
+pub struct SfcEditor {
+    /// The chart as the model holds it, with this frame's changes applied.
+    pub(super) chart: SfcChart,
+    /// The layout of the shown sequence, recomputed when the chart or the level changes.
+    pub(super) layout: SfcLayout,
+    /// The macro steps zoomed into, outermost first; empty for the chart itself.
+    pub(super) macro_path: Vec<ElementId>,
+    /// The selected nodes.
+    pub(super) selection: Vec<ElementId>,
+    /// The zoom factor.
+    pub(super) zoom: f32,
+    /// The text field open over a node, if any.
+    pub(super) entry: Option<Entry>,
+    /// The last refusal, shown until the next command.
+    pub(super) refusal: Option<SfcEditError>,
+    /// The findings, by element.
+    pub(super) diagnostics: Vec<SfcDiagnostic>,
+    /// The online state while logged in.
+    pub(super) online: Option<SfcOnline>,
+    /// The names of the POU's transition objects, marked on transitions that use them.
+    pub(super) transition_objects: Vec<String>,
+    /// The names of the POU's actions, offered when an association's action is typed.
+    pub(super) action_names: Vec<String>,
+    /// The words.
+    pub(super) texts: SfcTexts,
+    /// Whether edits are refused (while online, or for a read-only project).
+    pub(super) read_only: bool,
+    /// Whether the canvas should take the keyboard focus in its next frame.
+    pub(super) focus_requested: bool,
+    /// Commands asked for between frames, run at the start of the next.
+    pub(super) pending_commands: Vec<SfcCommand>,
+    /// The property panel's texts being typed, for the element it shows.
+    pub(super) panel: Option<super::panel::PanelState>,
+    /// Where the canvas's content began on screen in the last frame.
+    pub(super) last_origin: Pos2,
+}
+
+/// What one frame collects for its output.
+#[derive(Default)]
+pub(super) struct FrameResult {
+    pub change: Option<SfcChange>,
+    pub online: Option<SfcOnlineCommand>,
+    pub refusal: Option<SfcEditError>,
+}
+
+impl SfcEditor {
+    /// An editor showing `chart`, nothing selected.
+    pub fn new(chart: &SfcChart) -> Self {
+        Self {
+            layout: sfc_layout(&chart.sequence, true),
+            chart: chart.clone(),
+            macro_path: Vec::new(),
+            selection: Vec::new(),
+            zoom: 1.0,
+            entry: None,
+            refusal: None,
+            diagnostics: Vec::new(),
+            online: None,
+            transition_objects: Vec::new(),
+            action_names: Vec::new(),
+            texts: SfcTexts::default(),
+            read_only: false,
+            focus_requested: false,
+            pending_commands: Vec::new(),
+            panel: None,
+            last_origin: Pos2::ZERO,
+        }
+    }
+
+    /// The chart shown.
+    pub fn chart(&self) -> &SfcChart {
+        &self.chart
+    }
+
+    /// Shows the model's `chart`; a no-op when it is the one shown. A selection or macro level
+    /// that no longer exists is dropped.
+    pub fn set_chart(&mut self, chart: &SfcChart) {
+        if *chart == self.chart {
+            return;
+        }
+        self.chart = chart.clone();
+        self.selection
+            .retain(|id| find_node(&self.chart, *id).is_some());
+        let valid_levels = self
+            .macro_path
+            .iter()
+            .take_while(|id| matches!(find_node(&self.chart, **id), Some(SfcNode::Macro(_))))
+            .count();
+        self.macro_path.truncate(valid_levels);
+        self.panel = None;
+        self.relayout();
+    }
+
+    /// Sets the words shown.
+    pub fn set_texts(&mut self, texts: SfcTexts) {
+        self.texts = texts;
+    }
+
+    /// Sets the names of the POU's transition objects (`Pou::transitions`).
+    pub fn set_transition_objects(&mut self, names: Vec<String>) {
+        self.transition_objects = names;
+    }
+
+    /// Sets the names of the POU's actions, offered for action associations and step actions.
+    pub fn set_action_names(&mut self, names: Vec<String>) {
+        self.action_names = names;
+    }
+
+    /// Sets the findings shown at their elements.
+    pub fn set_diagnostics(&mut self, diagnostics: Vec<SfcDiagnostic>) {
+        self.diagnostics = diagnostics;
+    }
+
+    /// The findings shown.
+    pub fn diagnostics(&self) -> &[SfcDiagnostic] {
+        &self.diagnostics
+    }
+
+    /// Sets the online state (`None` when logged out).
+    pub fn set_online(&mut self, online: Option<SfcOnline>) {
+        self.online = online;
+    }
+
+    /// The online state shown.
+    pub fn online(&self) -> Option<&SfcOnline> {
+        self.online.as_ref()
+    }
+
+    /// Refuses (`true`) or allows edits; online commands stay available.
+    pub fn set_read_only(&mut self, read_only: bool) {
+        self.read_only = read_only;
+        if read_only {
+            self.entry = None;
+        }
+    }
+
+    /// The selected nodes.
+    pub fn selection(&self) -> &[ElementId] {
+        &self.selection
+    }
+
+    /// Selects `ids` (an empty list clears the selection).
+    pub fn select(&mut self, ids: Vec<ElementId>) {
+        if ids != self.selection {
+            self.panel = None;
+        }
+        self.selection = ids;
+    }
+
+    /// Shows the level holding node `id` (opening the macro steps around it) and selects it,
+    /// as a double-click on a finding does.
+    pub fn reveal(&mut self, id: ElementId) {
+        self.macro_path = macro_path_to(&self.chart.sequence, id).unwrap_or_default();
+        self.relayout();
+        self.select(vec![id]);
+    }
+
+    /// The macro steps zoomed into, outermost first.
+    pub fn macro_path(&self) -> &[ElementId] {
+        &self.macro_path
+    }
+
+    /// Gives the canvas the keyboard focus in the next frame.
+    pub fn request_focus(&mut self) {
+        self.focus_requested = true;
+    }
+
+    /// Runs `command` on the selection at the start of the next frame, as the app's menu does.
+    pub fn run_command(&mut self, command: SfcCommand) {
+        self.pending_commands.push(command);
+    }
+
+    /// The layout of the shown level.
+    pub fn layout(&self) -> &SfcLayout {
+        &self.layout
+    }
+
+    /// Where node `id` was drawn on screen in the last frame, if it is on the shown level.
+    pub fn element_screen_rect(&self, id: ElementId) -> Option<Rect> {
+        let placed = self.layout.element(id)?;
+        Some(self.to_screen(placed.rect))
+    }
+
+    /// The zoom factor.
+    pub fn zoom(&self) -> f32 {
+        self.zoom
+    }
+
+    /// Shows the editor filling the available space: the macro path and zoom on top, the
+    /// toolbox at the left, the chart, and the properties of the selected element at the right.
+    /// `label` is the canvas's accessible name and keeps its state apart from other editors.
+    pub fn show(&mut self, ui: &mut Ui, label: &str, services: &dyn DiagramServices) -> SfcOutput {
+        let id = ui.make_persistent_id(("sfc_editor", label));
+        let mut frame = FrameResult::default();
+        for command in std::mem::take(&mut self.pending_commands) {
+            self.command(ui.ctx(), command, &mut frame);
+        }
+        self.top_bar_ui(ui);
+        let available = ui.available_rect_before_wrap();
+        let toolbox =
+            Rect::from_min_size(available.min, vec2(TOOLBOX_WIDTH_PX, available.height()));
+        let panel_shown = self.panel_target().is_some();
+        let panel_left = if panel_shown {
+            available.right() - PANEL_WIDTH_PX
+        } else {
+            available.right()
+        };
+        let canvas = Rect::from_min_max(
+            pos2(toolbox.right() + 4.0, available.top()),
+            pos2(panel_left - 4.0, available.bottom()),
+        );
+        ui.scope_builder(UiBuilder::new().max_rect(toolbox), |ui| {
+            self.toolbox_ui(ui, &mut frame);
+        });
+        let response = ui
+            .scope_builder(UiBuilder::new().max_rect(canvas), |ui| {
+                ScrollArea::both()
+                    .id_salt(id.with("scroll"))
+                    .auto_shrink([false, false])
+                    .show(ui, |ui| self.canvas_ui(ui, id, label, services, &mut frame))
+                    .inner
+            })
+            .inner;
+        if panel_shown {
+            let panel = Rect::from_min_max(pos2(panel_left, available.top()), available.max);
+            ui.scope_builder(UiBuilder::new().max_rect(panel), |ui| {
+                ScrollArea::vertical()
+                    .id_salt(id.with("panel"))
+                    .show(ui, |ui| self.panel_ui(ui, &mut frame));
+            });
+        }
+        ui.advance_cursor_after_rect(available);
+        if frame.refusal.is_some() {
+            self.refusal.clone_from(&frame.refusal);
+        }
+        SfcOutput {
+            response,
+            change: frame.change,
+            online: frame.online,
+            refusal: frame.refusal,
+        }
+    }
+
+    fn top_bar_ui(&mut self, ui: &mut Ui) {
+        ui.horizontal(|ui| {
+            if ui.link(&self.texts.chart).clicked() && !self.macro_path.is_empty() {
+                self.macro_path.clear();
+                self.after_level_change();
+            }
+            let mut leave_to = None;
+            for (depth, macro_id) in self.macro_path.iter().enumerate() {
+                ui.label("›");
+                let name = match find_node(&self.chart, *macro_id) {
+                    Some(SfcNode::Macro(macro_step)) => macro_step.name.clone(),
+                    _ => String::new(),
+                };
+                if ui.link(name).clicked() {
+                    leave_to = Some(depth + 1);
+                }
+            }
+            if let Some(depth) = leave_to {
+                self.macro_path.truncate(depth);
+                self.after_level_change();
+            }
+            ui.separator();
+            ui.label(format!("{:.0} %", self.zoom * 100.0))
+                .on_hover_text(&self.texts.zoom);
+            if let Some(refusal) = &self.refusal {
+                ui.separator();
+                let palette = EditorPalette::of(ui);
+                ui.colored_label(palette.error, (self.texts.refusal)(refusal));
+            }
+        });
+    }
+
+    fn toolbox_ui(&mut self, ui: &mut Ui, frame: &mut FrameResult) {
+        ui.strong(&self.texts.toolbox);
+        ui.add_enabled_ui(!self.read_only, |ui| {
+            for command in super::commands::INSERTIONS {
+                let text = self.command_text(command).to_owned();
+                if ui
+                    .add_sized(vec2(TOOLBOX_WIDTH_PX - 8.0, 22.0), egui::Button::new(text))
+                    .clicked()
+                {
+                    self.command(ui.ctx(), command, frame);
+                    self.focus_requested = true;
+                }
+            }
+        });
+    }
+
+    /// The words of `command` in menus and the toolbox.
+    pub(super) fn command_text(&self, command: SfcCommand) -> &str {
+        let texts = &self.texts;
+        match command {
+            SfcCommand::InsertStepTransitionAfter => &texts.step_transition,
+            SfcCommand::InsertStepTransitionBefore => &texts.step_transition_before,
+            SfcCommand::InsertAlternativeBranch => &texts.alternative_branch,
+            SfcCommand::InsertParallelBranch => &texts.parallel_branch,
+            SfcCommand::AddBranch => &texts.add_branch,
+            SfcCommand::InsertJump => &texts.jump,
+            SfcCommand::InsertMacroStep => &texts.macro_step,
+            SfcCommand::WrapInMacro => &texts.wrap_in_macro,
+            SfcCommand::AddActionAssociation => &texts.action_association,
+            SfcCommand::Delete => &texts.delete,
+            SfcCommand::Copy => &texts.copy,
+            SfcCommand::Paste => &texts.paste,
+            SfcCommand::EditText => &texts.edit_text,
+            SfcCommand::OpenMacro => &texts.open_macro,
+            SfcCommand::LeaveMacro => &texts.leave_macro,
+            SfcCommand::ToggleStepActive => &texts.activate_step,
+            SfcCommand::FireTransition => &texts.fire_transition,
+        }
+    }
+
+    /// The nodes of the shown level.
+    pub(super) fn shown_nodes(&self) -> &[SfcNode] {
+        match self
+            .macro_path
+            .last()
+            .and_then(|id| find_node(&self.chart, *id))
+        {
+            Some(SfcNode::Macro(macro_step)) => &macro_step.body,
+            _ => &self.chart.sequence,
+        }
+    }
+
+    pub(super) fn relayout(&mut self) {
+        let main = self.macro_path.is_empty();
+        self.layout = sfc_layout(self.shown_nodes(), main);
+    }
+
+    fn after_level_change(&mut self) {
+        self.selection.clear();
+        self.entry = None;
+        self.panel = None;
+        self.relayout();
+    }
+
+    /// A rectangle of the content (zoom 1) on screen.
+    pub(super) fn to_screen(&self, rect: Rect) -> Rect {
+        Rect::from_min_max(
+            self.last_origin + rect.min.to_vec2() * self.zoom,
+            self.last_origin + rect.max.to_vec2() * self.zoom,
+        )
+    }
+
+    /// Takes `result` of an edit: the new chart is shown and becomes the frame's change, or the
+    /// refusal is kept. Returns whether it was applied.
+    pub(super) fn apply(
+        &mut self,
+        result: Result<SfcChart, SfcEditError>,
+        frame: &mut FrameResult,
+    ) -> bool {
+        match result {
+            Ok(chart) => {
+                self.chart = chart.clone();
+                self.selection
+                    .retain(|id| find_node(&self.chart, *id).is_some());
+                self.panel = None;
+                self.refusal = None;
+                self.relayout();
+                frame.change = Some(SfcChange { chart });
+                true
+            }
+            Err(error) => {
+                frame.refusal = Some(error);
+                false
+            }
+        }
+    }
+
+    /// Runs `command` on the selection.
+    pub(super) fn command(
+        &mut self,
+        ctx: &egui::Context,
+        command: SfcCommand,
+        frame: &mut FrameResult,
+    ) {
+        let online_command = matches!(
+            command,
+            SfcCommand::ToggleStepActive
+                | SfcCommand::FireTransition
+                | SfcCommand::Copy
+                | SfcCommand::OpenMacro
+                | SfcCommand::LeaveMacro
+        );
+        if self.read_only && !online_command {
+            return;
+        }
+        let selection = self.selection.clone();
+        let first = selection.first().copied();
+        let last = selection.last().copied();
+        let before = max_sfc_id(&self.chart);
+        let needs_selection = || first.ok_or(SfcEditError::EmptySelection);
+        match command {
+            SfcCommand::InsertStepTransitionAfter => {
+                let result = needs_selection()
+                    .and_then(|_| self.last_in_order(&selection))
+                    .and_then(|id| sfc_edit::insert_step_transition_after(&self.chart, id));
+                self.apply_and_select_new(result, before, frame);
+            }
+            SfcCommand::InsertStepTransitionBefore => {
+                let result = needs_selection()
+                    .and_then(|_| self.first_in_order(&selection))
+                    .and_then(|id| sfc_edit::insert_step_transition_before(&self.chart, id));
+                self.apply_and_select_new(result, before, frame);
+            }
+            SfcCommand::InsertMacroStep => {
+                let result = needs_selection()
+                    .and_then(|_| self.last_in_order(&selection))
+                    .and_then(|id| sfc_edit::insert_macro_step_after(&self.chart, id));
+                self.apply_and_select_new(result, before, frame);
+            }
+            SfcCommand::InsertAlternativeBranch => {
+                let result = sfc_edit::insert_alternative_branch(&self.chart, &selection);
+                self.apply_and_select_new(result, before, frame);
+            }
+            SfcCommand::InsertParallelBranch => {
+                let result = sfc_edit::insert_parallel_branch(&self.chart, &selection);
+                self.apply_and_select_new(result, before, frame);
+            }
+            SfcCommand::AddBranch => {
+                let result = needs_selection()
+                    .and_then(|id| self.enclosing_branch(id))
+                    .and_then(|id| sfc_edit::add_branch(&self.chart, id));
+                self.apply_and_select_new(result, before, frame);
+            }
+            SfcCommand::WrapInMacro => {
+                let result = sfc_edit::wrap_in_macro(&self.chart, &selection);
+                self.apply_and_select_new(result, before, frame);
+            }
+            SfcCommand::InsertJump => {
+                let target = self.initial_step_name();
+                let result = needs_selection()
+                    .and_then(|_| last.ok_or(SfcEditError::EmptySelection))
+                    .and_then(|id| sfc_edit::insert_jump_after(&self.chart, id, &target));
+                if self.apply_and_select_new(result, before, frame) {
+                    self.open_entry(None);
+                }
+            }
+            SfcCommand::AddActionAssociation => match first {
+                Some(id) if matches!(find_node(&self.chart, id), Some(SfcNode::Step(_))) => {
+                    self.entry = Some(Entry::new(EntryTarget::NewAssociation(id), String::new()));
+                }
+                Some(id) => frame.refusal = Some(SfcEditError::NotAStep(id)),
+                None => frame.refusal = Some(SfcEditError::EmptySelection),
+            },
+            SfcCommand::Delete => {
+                let result = delete_nodes(&self.chart, &selection);
+                if self.apply(result, frame) {
+                    self.selection.clear();
+                }
+            }
+            SfcCommand::Copy => match copy_nodes(&self.chart, &selection) {
+                Ok(nodes) => {
+                    ctx.data_mut(|data| data.insert_temp(clipboard_id(), nodes));
+                }
+                Err(error) => frame.refusal = Some(error),
+            },
+            SfcCommand::Paste => {
+                let nodes: Vec<SfcNode> = ctx
+                    .data(|data| data.get_temp(clipboard_id()))
+                    .unwrap_or_default();
+                let result = needs_selection()
+                    .and_then(|_| self.last_in_order(&selection))
+                    .and_then(|id| paste_after(&self.chart, id, &nodes));
+                self.apply_and_select_new(result, before, frame);
+            }
+            SfcCommand::EditText => self.open_entry(None),
+            SfcCommand::OpenMacro => {
+                if let Some(id) = first
+                    && matches!(find_node(&self.chart, id), Some(SfcNode::Macro(_)))
+                {
+                    self.macro_path.push(id);
+                    self.after_level_change();
+                }
+            }
+            SfcCommand::LeaveMacro => {
+                if let Some(id) = self.macro_path.pop() {
+                    self.after_level_change();
+                    self.selection = vec![id];
+                }
+            }
+            SfcCommand::ToggleStepActive => {
+                if let Some(id) = first
+                    && let Some(SfcNode::Step(step)) = find_node(&self.chart, id)
+                    && let Some(online) = &self.online
+                {
+                    let active = online.steps.get(&id).is_some_and(|state| state.active);
+                    frame.online = Some(SfcOnlineCommand::SetStepActive {
+                        step: step.name.clone(),
+                        active: !active,
+                    });
+                }
+            }
+            SfcCommand::FireTransition => {
+                if let Some(id) = first
+                    && matches!(find_node(&self.chart, id), Some(SfcNode::Transition(_)))
+                    && self.online.as_ref().is_some_and(|online| online.tip_mode)
+                {
+                    frame.online = Some(SfcOnlineCommand::FireTransition { transition: id });
+                }
+            }
+        }
+    }
+
+    /// Applies `result` and selects the first new step (else the first new node) it made.
+    fn apply_and_select_new(
+        &mut self,
+        result: Result<SfcChart, SfcEditError>,
+        before: u32,
+        frame: &mut FrameResult,
+    ) -> bool {
+        if !self.apply(result, frame) {
+            return false;
+        }
+        let new: Vec<(ElementId, bool)> = self
+            .layout
+            .elements
+            .iter()
+            .filter(|placed| placed.id.0 > before)
+            .map(|placed| {
+                (
+                    placed.id,
+                    matches!(placed.shape, super::layout::SfcShape::Step { .. }),
+                )
+            })
+            .collect();
+        let chosen = new
+            .iter()
+            .find(|(_, step)| *step)
+            .or(new.first())
+            .map(|(id, _)| *id);
+        if let Some(id) = chosen {
+            self.selection = vec![id];
+        }
+        true
+    }
+
+    /// Of `selection`, the node that comes first in its sequence (the selection is a run).
+    fn first_in_order(&self, selection: &[ElementId]) -> Result<ElementId, SfcEditError> {
+        self.in_order(selection)
+            .first()
+            .copied()
+            .ok_or(SfcEditError::EmptySelection)
+    }
+
+    /// Of `selection`, the node that comes last in its sequence.
+    fn last_in_order(&self, selection: &[ElementId]) -> Result<ElementId, SfcEditError> {
+        self.in_order(selection)
+            .last()
+            .copied()
+            .ok_or(SfcEditError::EmptySelection)
+    }
+
+    /// `selection` in the layout's order (which is the sequences' order).
+    fn in_order(&self, selection: &[ElementId]) -> Vec<ElementId> {
+        self.layout
+            .elements
+            .iter()
+            .map(|placed| placed.id)
+            .filter(|id| selection.contains(id))
+            .collect()
+    }
+
+    /// The branch `id` is, or the innermost branch holding it.
+    fn enclosing_branch(&self, id: ElementId) -> Result<ElementId, SfcEditError> {
+        if matches!(
+            find_node(&self.chart, id),
+            Some(SfcNode::Alternative(_) | SfcNode::Parallel(_))
+        ) {
+            return Ok(id);
+        }
+        innermost_branch(&self.chart.sequence, id, None)
+            .flatten()
+            .ok_or(SfcEditError::NotABranch(id))
+    }
+
+    /// The name of the chart's initial step, the target a new jump starts with.
+    fn initial_step_name(&self) -> String {
+        match self.chart.sequence.first() {
+            Some(SfcNode::Step(step)) => step.name.clone(),
+            _ => String::new(),
+        }
+    }
+
+    /// The canvas's id, for the focus.
+    pub(super) fn canvas_id(id: Id) -> Id {
+        id.with("canvas")
+    }
+}
+
+/// Where the shared SFC clipboard is kept in the egui context (so a copy in one chart pastes
+/// into another); it lives until the application ends.
+fn clipboard_id() -> Id {
+    Id::unique("editor::sfc::clipboard")
+}
+
+/// The macro steps around node `id`, outermost first, or `None` if it is not in `nodes`.
+fn macro_path_to(nodes: &[SfcNode], id: ElementId) -> Option<Vec<ElementId>> {
+    for node in nodes {
+        if node.id() == id {
+            return Some(Vec::new());
+        }
+        match node {
+            SfcNode::Alternative(branches) | SfcNode::Parallel(branches) => {
+                for branch in &branches.branches {
+                    if let Some(path) = macro_path_to(&branch.nodes, id) {
+                        return Some(path);
+                    }
+                }
+            }
+            SfcNode::Macro(macro_step) => {
+                if let Some(mut path) = macro_path_to(&macro_step.body, id) {
+                    path.insert(0, macro_step.id);
+                    return Some(path);
+                }
+            }
+            SfcNode::Step(_) | SfcNode::Transition(_) | SfcNode::Jump(_) => {}
+        }
+    }
+    None
+}
+
+/// The innermost alternative or parallel branch holding node `id` (`Some(None)` when it is in
+/// `nodes` outside any branch; `None` when it is not in `nodes`).
+fn innermost_branch(
+    nodes: &[SfcNode],
+    id: ElementId,
+    around: Option<ElementId>,
+) -> Option<Option<ElementId>> {
+    for node in nodes {
+        if node.id() == id {
+            return Some(around);
+        }
+        let found = match node {
+            SfcNode::Alternative(branches) | SfcNode::Parallel(branches) => branches
+                .branches
+                .iter()
+                .find_map(|branch| innermost_branch(&branch.nodes, id, Some(branches.id))),
+            SfcNode::Macro(macro_step) => innermost_branch(&macro_step.body, id, None),
+            SfcNode::Step(_) | SfcNode::Transition(_) | SfcNode::Jump(_) => None,
+        };
+        if found.is_some() {
+            return found;
+        }
+    }
+    None
+}
