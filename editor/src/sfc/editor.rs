@@ -380,6 +380,11 @@ impl SfcEditor {
         frame: &mut FrameResult,
     ) -> bool {
         match result {
+            // An edit that changes nothing (a field left as it was) is no undo step.
+            Ok(chart) if chart == self.chart => {
+                self.refusal = None;
+                true
+            }
             Ok(chart) => {
                 self.chart = chart.clone();
                 self.selection

@@ -160,10 +160,10 @@ impl SfcEditor {
             .num_columns(2)
             .show(ui, |ui| {
                 for (label, field) in labels.into_iter().zip(state.fields.iter_mut()) {
-                    ui.label(label.as_str());
-                    let response = ui.add(TextEdit::singleline(field).desired_width(140.0));
-                    let value = field.clone();
-                    response.widget_info(|| egui::WidgetInfo::text_edit(true, "", &value, label));
+                    let label = ui.label(label.as_str());
+                    let response = ui
+                        .add(TextEdit::singleline(field).desired_width(140.0))
+                        .labelled_by(label.id);
                     if finished(&response) {
                         result = Some(());
                     }
@@ -237,9 +237,10 @@ impl SfcEditor {
         Grid::new(("sfc_transition_panel", id.0))
             .num_columns(2)
             .show(ui, |ui| {
-                ui.label(texts.condition_field.as_str());
-                let response =
-                    ui.add(TextEdit::singleline(&mut state.condition).desired_width(140.0));
+                let label = ui.label(texts.condition_field.as_str());
+                let response = ui
+                    .add(TextEdit::singleline(&mut state.condition).desired_width(140.0))
+                    .labelled_by(label.id);
                 if finished(&response) {
                     outcome = Some(set_transition_condition(&self.chart, id, &state.condition));
                 }

@@ -342,3 +342,68 @@ fn a_macro_step_is_opened_and_left_showing_its_path() {
     assert!(harness.state().editor.macro_path().is_empty());
     assert_eq!(harness.state().editor.selection(), [ElementId(4)]);
 }
+
+#[test]
+fn the_toolbox_inserts_at_the_selection_with_a_click() {
+    let chart = insert_step_transition_after(&SfcChart::new_body(), ElementId(2)).unwrap();
+    let mut harness = harness(chart);
+    click(&mut harness, ElementId(4), Modifiers::NONE);
+    harness.get_by_label("Parallel branch").click();
+    harness.run_steps(3);
+    harness.get_by_label("Add branch").click();
+    harness.run_steps(3);
+    let host = harness.state();
+    assert_eq!(
+        shape(&host.chart.sequence),
+        [
+            "Init",
+            "T FALSE",
+            "P[Step1 | Step2 | Step3]",
+            "T FALSE",
+            "-> Init"
+        ]
+    );
+    assert_eq!(host.changes, 2);
+}
+
+#[test]
+fn the_properties_panel_sets_a_steps_maximum_time() {
+    let mut harness = harness(SfcChart::new_body());
+    click(&mut harness, ElementId(1), Modifiers::NONE);
+    harness
+        .get_by_role_and_label(egui::accesskit::Role::TextInput, "Maximum time")
+        .click();
+    harness.run_steps(2);
+    harness.event(Event::Text("T#5s".to_owned()));
+    harness.run_steps(2);
+    harness.key_press(Key::Enter);
+    harness.run_steps(3);
+    let host = harness.state();
+    let SfcNode::Step(step) = &host.chart.sequence[0] else {
+        panic!("no step");
+    };
+    assert_eq!(step.max_time.as_deref(), Some("T#5s"));
+    assert_eq!(host.changes, 1);
+}
+
+#[test]
+fn a_copied_pair_is_pasted_with_fresh_ids_and_names() {
+    let chart = insert_step_transition_after(&SfcChart::new_body(), ElementId(2)).unwrap();
+    let mut harness = harness(chart);
+    click(&mut harness, ElementId(4), Modifiers::NONE);
+    command(&mut harness, Modifiers::SHIFT, Key::ArrowDown);
+    harness.event(Event::Copy);
+    harness.run_steps(2);
+    click(&mut harness, ElementId(5), Modifiers::NONE);
+    harness.event(Event::Paste(String::new()));
+    harness.run_steps(3);
+    let host = harness.state();
+    assert_eq!(
+        shape(&host.chart.sequence),
+        [
+            "Init", "T FALSE", "Step1", "T FALSE", "Step2", "T FALSE", "-> Init"
+        ]
+    );
+    assert_eq!(host.chart.sequence[4].id(), ElementId(6));
+    assert!(host.refusals.is_empty());
+}
