@@ -19,7 +19,7 @@ mod navigate;
 mod paint;
 mod placed;
 mod texts;
-mod toolbox;
+pub(crate) mod toolbox;
 mod types;
 
 pub use commands::{DiagramCommand, DiagramSelection};

@@ -70,6 +70,17 @@ impl SfcEditor {
     }
 
     fn pointer_ui(&mut self, ui: &Ui, response: &Response, frame: &mut FrameResult) {
+        // A toolbox item dropped on a node inserts there, as if the node had been selected
+        // and the item clicked.
+        if let Some(command) = response.dnd_release_payload::<SfcCommand>()
+            && let Some(pointer) = response.hover_pos()
+        {
+            if let Some(hit) = self.layout.hit(self.content_pos(pointer)) {
+                self.select(vec![hit]);
+                self.command(ui.ctx(), *command, frame);
+            }
+            return;
+        }
         let pointer = response.interact_pointer_pos();
         if response.clicked() || response.secondary_clicked() || response.double_clicked() {
             let hit = pointer.and_then(|pos| self.layout.hit(self.content_pos(pos)));

@@ -13,6 +13,7 @@ use super::texts::SfcTexts;
 use super::types::{SfcChange, SfcDiagnostic, SfcOnline, SfcOnlineCommand, SfcOutput};
 use crate::DiagramServices;
 use crate::EditorPalette;
+use crate::diagram::toolbox::drag_or_click_ui;
 
 /// The width of the toolbox column, in points.
 const TOOLBOX_WIDTH_PX: f32 = 150.0;
@@ -305,10 +306,9 @@ impl SfcEditor {
         ui.add_enabled_ui(!self.read_only, |ui| {
             for command in super::commands::INSERTIONS {
                 let text = self.command_text(command).to_owned();
-                if ui
-                    .add_sized(vec2(TOOLBOX_WIDTH_PX - 8.0, 22.0), egui::Button::new(text))
-                    .clicked()
-                {
+                // Clicked, it inserts at the selection; dragged, at the node it is dropped on.
+                let button = egui::Button::new(text).min_size(vec2(TOOLBOX_WIDTH_PX - 8.0, 22.0));
+                if drag_or_click_ui(ui, button, command).clicked() {
                     self.command(ui.ctx(), command, frame);
                     self.focus_requested = true;
                 }

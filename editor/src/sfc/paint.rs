@@ -132,7 +132,31 @@ impl SfcEditor {
                 );
             }
         }
+        self.drop_target_ui(&pen, response);
         self.hover_ui(response, &nodes);
+    }
+
+    /// While a toolbox item is dragged over a node, the node it would insert at is framed in
+    /// the insertion colour, as CODESYS turns its insertion marks green.
+    fn drop_target_ui(&self, pen: &Pen<'_>, response: &Response) {
+        if response
+            .dnd_hover_payload::<super::commands::SfcCommand>()
+            .is_none()
+        {
+            return;
+        }
+        let Some(pointer) = response.hover_pos() else {
+            return;
+        };
+        let pos = Pos2::ZERO + (pointer - self.last_origin) / self.zoom;
+        if let Some(placed) = self.layout.hit(pos).and_then(|id| self.layout.element(id)) {
+            pen.painter.rect_stroke(
+                pen.rect(placed.rect.expand(5.0)),
+                3.0,
+                pen.stroke(2.0, pen.palette.insert_point),
+                StrokeKind::Outside,
+            );
+        }
     }
 
     /// The most severe finding on `id`.

@@ -407,3 +407,37 @@ fn a_copied_pair_is_pasted_with_fresh_ids_and_names() {
     assert_eq!(host.chart.sequence[4].id(), ElementId(6));
     assert!(host.refusals.is_empty());
 }
+
+#[test]
+fn a_toolbox_item_dragged_onto_a_node_inserts_there() {
+    let mut harness = harness(SfcChart::new_body());
+    let from = harness.get_by_label("Step-transition").rect().center();
+    let to = harness
+        .state()
+        .editor
+        .element_screen_rect(ElementId(2))
+        .unwrap()
+        .center();
+    let button = |pos, pressed| Event::PointerButton {
+        pos,
+        button: egui::PointerButton::Primary,
+        pressed,
+        modifiers: Modifiers::NONE,
+    };
+    harness.hover_at(from);
+    harness.run_steps(1);
+    harness.event(button(from, true));
+    harness.run_steps(1);
+    for step in 1..=10 {
+        harness.hover_at(from.lerp(to, step as f32 / 10.0));
+        harness.run_steps(1);
+    }
+    harness.event(button(to, false));
+    harness.run_steps(3);
+    let host = harness.state();
+    assert_eq!(
+        shape(&host.chart.sequence),
+        ["Init", "T FALSE", "Step1", "T FALSE", "-> Init"]
+    );
+    assert_eq!(host.editor.selection(), [ElementId(4)]);
+}
