@@ -441,3 +441,46 @@ fn a_toolbox_item_dragged_onto_a_node_inserts_there() {
     );
     assert_eq!(host.editor.selection(), [ElementId(4)]);
 }
+
+#[test]
+fn a_finding_and_an_exceeded_maximum_time_are_shown_at_their_elements() {
+    let mut harness = harness(SfcChart::new_body());
+    harness
+        .state_mut()
+        .editor
+        .set_diagnostics(vec![SfcDiagnostic {
+            element: Some(ElementId(2)),
+            severity: crate::Severity::Error,
+            code: "E0104".into(),
+            message: "unknown variable 'levle'".into(),
+        }]);
+    let mut online = SfcOnline::default();
+    online.steps.insert(
+        ElementId(1),
+        SfcStepOnline {
+            active: true,
+            elapsed: std::time::Duration::from_secs(12),
+            over_max_time: true,
+        },
+    );
+    harness.state_mut().editor.set_online(Some(online));
+    harness.run_steps(2);
+    let transition = harness
+        .state()
+        .editor
+        .element_screen_rect(ElementId(2))
+        .unwrap()
+        .center();
+    harness.hover_at(transition);
+    harness.run_steps(60);
+    harness.get_by_label("E0104: unknown variable 'levle'");
+    let step = harness
+        .state()
+        .editor
+        .element_screen_rect(ElementId(1))
+        .unwrap()
+        .center();
+    harness.hover_at(step);
+    harness.run_steps(60);
+    harness.get_by_label("Maximum time exceeded");
+}

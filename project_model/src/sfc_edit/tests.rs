@@ -484,3 +484,119 @@ fn the_new_chart_passes_the_structure_check_and_broken_ones_do_not() {
     );
     assert_eq!(step_names(&two_steps()), ["Init", "Step1"]);
 }
+
+/// A chart whose second node is `middle`, between the initial step and a jump back to it.
+fn chart_around(middle: Vec<SfcNode>) -> SfcChart {
+    let mut chart = SfcChart::new_body();
+    chart.sequence.splice(1..2, middle);
+    chart
+}
+
+fn step(id: u32, name: &str) -> SfcNode {
+    SfcNode::Step(crate::sfc::Step {
+        id: ElementId(id),
+        name: name.into(),
+        ..crate::sfc::Step::default()
+    })
+}
+
+fn transition(id: u32) -> SfcNode {
+    SfcNode::Transition(crate::sfc::Transition {
+        id: ElementId(id),
+        condition: "TRUE".into(),
+        ..crate::sfc::Transition::default()
+    })
+}
+
+fn branches(id: u32, branches: Vec<Vec<SfcNode>>) -> crate::sfc::SfcBranches {
+    crate::sfc::SfcBranches {
+        id: ElementId(id),
+        branches: branches
+            .into_iter()
+            .map(|nodes| crate::sfc::SfcSequence { nodes })
+            .collect(),
+    }
+}
+
+#[track_caller]
+fn broken_rule(chart: &SfcChart) -> SfcRule {
+    match check_structure(chart) {
+        Err(SfcEditError::Structure { rule, .. }) => rule,
+        other => panic!("expected a broken rule, got {other:?}"),
+    }
+}
+
+#[test]
+fn each_branch_rule_is_named() {
+    let one_branch = chart_around(vec![SfcNode::Alternative(branches(
+        10,
+        vec![vec![transition(11)]],
+    ))]);
+    assert_eq!(broken_rule(&one_branch), SfcRule::TwoBranches);
+    let step_first = chart_around(vec![SfcNode::Alternative(branches(
+        10,
+        vec![vec![transition(11)], vec![step(12, "A"), transition(13)]],
+    ))]);
+    assert_eq!(
+        broken_rule(&step_first),
+        SfcRule::AlternativeBeginsWithTransition
+    );
+    let parallel_ends_in_transition = chart_around(vec![
+        transition(9),
+        SfcNode::Parallel(branches(
+            10,
+            vec![vec![step(11, "A")], vec![step(12, "B"), transition(13)]],
+        )),
+        transition(14),
+    ]);
+    assert_eq!(
+        broken_rule(&parallel_ends_in_transition),
+        SfcRule::ParallelEndsWithStep
+    );
+}
+
+#[test]
+fn a_macro_step_holds_no_jump_and_begins_with_a_step() {
+    let macro_chart = chart_around(vec![
+        transition(9),
+        SfcNode::Macro(crate::sfc::MacroStep {
+            id: ElementId(10),
+            name: "M".into(),
+            comment: String::new(),
+            body: vec![step(11, "A"), transition(12), step(13, "B")],
+        }),
+        transition(14),
+    ]);
+    check_structure(&macro_chart).unwrap();
+    let mut broken = macro_chart.clone();
+    if let SfcNode::Macro(macro_step) = &mut broken.sequence[2] {
+        macro_step.body = vec![transition(11)];
+    }
+    assert_eq!(broken_rule(&broken), SfcRule::MacroBeginsAndEndsWithStep);
+    let mut jumping = macro_chart.clone();
+    if let SfcNode::Macro(macro_step) = &mut jumping.sequence[2] {
+        macro_step.body = vec![
+            step(11, "A"),
+            SfcNode::Alternative(branches(
+                15,
+                vec![
+                    vec![
+                        transition(16),
+                        SfcNode::Jump(crate::sfc::Jump {
+                            id: ElementId(17),
+                            target: "A".into(),
+                        }),
+                    ],
+                    vec![transition(18)],
+                ],
+            )),
+            step(13, "B"),
+        ];
+    }
+    assert_eq!(broken_rule(&jumping), SfcRule::NoJumpInMacro);
+    let duplicate = chart_around(vec![transition(9), step(10, "INIT"), transition(11)]);
+    assert_eq!(
+        check_structure(&duplicate),
+        Err(SfcEditError::DuplicateName("INIT".into()))
+    );
+}
