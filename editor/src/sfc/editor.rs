@@ -66,8 +66,11 @@ pub struct SfcEditor {
 /// What one frame collects for its output.
 #[derive(Default)]
 pub(super) struct FrameResult {
+    /// The chart after this frame's gesture, if it changed.
     pub change: Option<SfcChange>,
+    /// The online action asked for this frame.
     pub online: Option<SfcOnlineCommand>,
+    /// Why this frame's command did nothing.
     pub refusal: Option<SfcEditError>,
 }
 
@@ -293,9 +296,22 @@ impl SfcEditor {
             ui.separator();
             ui.label(format!("{:.0} %", self.zoom * 100.0))
                 .on_hover_text(&self.texts.zoom);
+            let palette = EditorPalette::of(ui);
+            // Findings about the chart as a whole have no element to stand at.
+            for diagnostic in self.diagnostics.iter().filter(|d| d.element.is_none()) {
+                ui.separator();
+                let color = match diagnostic.severity {
+                    crate::Severity::Error => palette.error,
+                    crate::Severity::Warning => palette.warning,
+                    _ => palette.info,
+                };
+                ui.colored_label(
+                    color,
+                    format!("{}: {}", diagnostic.code, diagnostic.message),
+                );
+            }
             if let Some(refusal) = &self.refusal {
                 ui.separator();
-                let palette = EditorPalette::of(ui);
                 ui.colored_label(palette.error, (self.texts.refusal)(refusal));
             }
         });

@@ -49,6 +49,7 @@ pub(super) struct Entry {
 }
 
 impl Entry {
+    /// A field editing `target`, starting with `text`.
     pub fn new(target: EntryTarget, text: String) -> Self {
         Self {
             target,
