@@ -445,15 +445,20 @@ fn a_toolbox_item_dragged_onto_a_node_inserts_there() {
 #[test]
 fn a_finding_and_an_exceeded_maximum_time_are_shown_at_their_elements() {
     let mut harness = harness(SfcChart::new_body());
-    harness
-        .state_mut()
-        .editor
-        .set_diagnostics(vec![SfcDiagnostic {
+    harness.state_mut().editor.set_diagnostics(vec![
+        SfcDiagnostic {
             element: Some(ElementId(2)),
             severity: crate::Severity::Error,
             code: "E0104".into(),
             message: "unknown variable 'levle'".into(),
-        }]);
+        },
+        SfcDiagnostic {
+            element: None,
+            severity: crate::Severity::Warning,
+            code: "W0001".into(),
+            message: "the chart is never called".into(),
+        },
+    ]);
     let mut online = SfcOnline::default();
     online.steps.insert(
         ElementId(1),
@@ -471,6 +476,8 @@ fn a_finding_and_an_exceeded_maximum_time_are_shown_at_their_elements() {
         .element_screen_rect(ElementId(2))
         .unwrap()
         .center();
+    // The chart's own finding stands in the bar above it.
+    harness.get_by_label("W0001: the chart is never called");
     harness.hover_at(transition);
     harness.run_steps(60);
     harness.get_by_label("E0104: unknown variable 'levle'");
