@@ -15,6 +15,7 @@ mod entry;
 mod layout;
 mod paint;
 mod panel;
+mod run;
 mod texts;
 mod types;
 
