@@ -281,8 +281,13 @@ impl SfcEditor {
                     _ => rect.center().x > current_rect.center().x + 1.0,
                 })
                 .min_by(|(_, a), (_, b)| {
+                    // A node on the same row (in the next branch) comes before any other;
+                    // among the rest, nearness counts vertical distance double.
                     let distance = |rect: &Rect| {
-                        (rect.center().y - current_rect.center().y).abs() * 2.0
+                        let same_row = rect.y_range().intersects(current_rect.y_range());
+                        let row_penalty = if same_row { 0.0 } else { 10_000.0 };
+                        row_penalty
+                            + (rect.center().y - current_rect.center().y).abs() * 2.0
                             + (rect.center().x - current_rect.center().x).abs()
                     };
                     distance(a).total_cmp(&distance(b))

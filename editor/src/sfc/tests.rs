@@ -152,8 +152,13 @@ fn a_parallel_branch_is_drawn_with_the_mouse_and_the_keyboard() {
         ["Init", "T FALSE", "P[Step1 | Step2]", "T FALSE", "-> Init"]
     );
     assert_eq!(host.changes, 2);
-    // The new branch's step is selected and renamed by typing.
+    // The new branch's step is selected; the arrows move between the branches.
     assert_eq!(host.editor.selection(), [ElementId(7)]);
+    command(&mut harness, Modifiers::NONE, Key::ArrowLeft);
+    assert_eq!(harness.state().editor.selection(), [ElementId(4)]);
+    command(&mut harness, Modifiers::NONE, Key::ArrowRight);
+    assert_eq!(harness.state().editor.selection(), [ElementId(7)]);
+    // It is renamed by typing.
     harness.key_press(Key::Enter);
     harness.run_steps(2);
     harness.event(Event::Key {
