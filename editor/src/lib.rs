@@ -10,7 +10,7 @@
 //! that lists each channel of the controller's I/O areas and of the Modbus TCP devices with the
 //! variables bound to it; the device editors ([`controller_editor_ui`], [`io_area_editor_ui`],
 //! [`modbus_device_editor_ui`], [`axis_editor_ui`]); the combined LD/FBD [`DiagramEditor`] on a
-//! canvas with automatic layout ([`ld_layout`], [`fbd_layout`]); and the read-only [`CodeView`]
+//! canvas with automatic layout ([`ld_layout`], [`fbd_layout`]); the [`SfcEditor`] of structured SFC charts laid out by [`sfc_layout`]; and the read-only [`CodeView`]
 //! with lexical highlighting.
 
 mod code_view;
@@ -18,6 +18,7 @@ mod device_editors;
 mod diagram;
 mod io_mapping;
 mod palette;
+mod sfc;
 mod st_editor;
 mod st_highlight;
 mod table_texts;
@@ -37,6 +38,11 @@ pub use diagram::{
 };
 pub use io_mapping::{IoMappingOutput, io_mapping_ui};
 pub use palette::{EditorPalette, SyntaxColors};
+pub use sfc::{
+    ActionBox, SfcChange, SfcCommand, SfcDiagnostic, SfcEditor, SfcLayout, SfcLine, SfcOnline,
+    SfcOnlineCommand, SfcOutput, SfcPlaced, SfcRefusalWords, SfcShape, SfcStepOnline, SfcTexts,
+    sfc_layout,
+};
 pub use st_editor::{
     CompletionItem, CompletionKind, EditorDiagnostic, EditorTexts, Gesture, Highlight, InlineValue,
     KeywordCompletions, LanguageServices, Severity, StEditor, StEditorOutput, TextBuffer,

@@ -57,6 +57,8 @@ pub struct EditorPalette {
     pub diagram_selection: Color32,
     /// The "+" marks where a dragged diagram element can go.
     pub insert_point: Color32,
+    /// The fill of an active SFC step while online (CODESYS shows them blue).
+    pub active_step: Color32,
 }
 
 impl EditorPalette {
@@ -113,6 +115,7 @@ impl EditorPalette {
             power_on: link,
             diagram_selection: visuals.selection.bg_fill.gamma_multiply(0.6),
             insert_point: visuals.warn_fg_color,
+            active_step: link.gamma_multiply(0.6),
         }
     }
 }

@@ -34,6 +34,7 @@ mod network_walk;
 mod pou;
 mod project;
 mod sfc;
+pub mod sfc_edit;
 mod task;
 mod trace;
 mod validate;

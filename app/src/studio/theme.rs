@@ -152,6 +152,12 @@ pub(crate) fn editor_palette(dark_mode: bool) -> EditorPalette {
             Color32::from_rgba_unmultiplied(120, 170, 250, 70)
         },
         insert_point: Color32::from_rgb(30, 160, 70),
+        // CODESYS fills active SFC steps in blue.
+        active_step: if dark_mode {
+            Color32::from_rgb(40, 100, 200)
+        } else {
+            Color32::from_rgb(110, 170, 255)
+        },
     }
 }
 

@@ -89,7 +89,7 @@ fn last_segment(text: &str) -> &str {
 
 /// The field's text once `label` is accepted for what was typed: a member (`Q` after `tonA.`)
 /// replaces only what follows the last dot, anything else the whole text.
-pub(super) fn accepted_text(typed: &str, label: &str) -> String {
+pub(crate) fn accepted_text(typed: &str, label: &str) -> String {
     match typed.trim().rsplit_once('.') {
         Some((path, _)) if !label.contains('.') => format!("{path}.{label}"),
         _ => label.to_owned(),
@@ -98,7 +98,7 @@ pub(super) fn accepted_text(typed: &str, label: &str) -> String {
 
 /// The detail of a completion row without the candidate's own name, which the row already
 /// shows (`tWarn : TIME` gives `TIME`, `FUNCTION LIMIT` gives `FUNCTION`).
-pub(super) fn detail_without_label(label: &str, detail: &str) -> String {
+pub(crate) fn detail_without_label(label: &str, detail: &str) -> String {
     let words: Vec<&str> = detail
         .split_whitespace()
         .filter(|word| !word.eq_ignore_ascii_case(label))

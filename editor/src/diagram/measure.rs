@@ -8,9 +8,9 @@
 use super::paint::CELL_SIZE_PX;
 
 /// The longest operand shown in full, in characters; longer ones are shortened with "…".
-pub(super) const MAX_OPERAND_CHARS: usize = 24;
+pub(crate) const MAX_OPERAND_CHARS: usize = 24;
 /// The size of an operand's and a box title's font at zoom 1, in points.
-pub(super) const OPERAND_FONT_PX: f32 = 11.0;
+pub(crate) const OPERAND_FONT_PX: f32 = 11.0;
 /// The size of a pin name's font at zoom 1, in points.
 pub(super) const PIN_FONT_PX: f32 = 10.0;
 /// The advance of a monospace character per point of font size (Hack, the egui default, and
@@ -41,7 +41,7 @@ fn advances(text: impl Iterator<Item = char>) -> f32 {
 }
 
 /// The width of `text` in the operand font, in points, once shortened.
-pub(super) fn operand_width_px(text: &str) -> f32 {
+pub(crate) fn operand_width_px(text: &str) -> f32 {
     advances(text.chars().take(MAX_OPERAND_CHARS)) * OPERAND_FONT_PX * ADVANCE_PER_FONT_PX
 }
 
@@ -77,7 +77,7 @@ pub(super) fn box_cells<'a>(
 }
 
 /// `text` shortened to [`MAX_OPERAND_CHARS`] with "…", and whether it was shortened.
-pub(super) fn shortened(text: &str) -> (std::borrow::Cow<'_, str>, bool) {
+pub(crate) fn shortened(text: &str) -> (std::borrow::Cow<'_, str>, bool) {
     if text.chars().count() <= MAX_OPERAND_CHARS {
         (std::borrow::Cow::Borrowed(text), false)
     } else {

@@ -251,7 +251,7 @@ impl DiagramEditor {
 /// A toolbox button that inserts at the selection when clicked and carries `payload` to the
 /// canvas when dragged. egui's `dnd_drag_source` puts a drag-only area over its contents, which
 /// takes the clicks of the button under it, so the button senses both itself.
-fn drag_or_click_ui<Payload>(
+pub(crate) fn drag_or_click_ui<Payload>(
     ui: &mut Ui,
     button: egui::Button<'_>,
     payload: Payload,
