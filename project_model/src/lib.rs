@@ -34,6 +34,7 @@ mod network_walk;
 mod pou;
 mod project;
 mod sfc;
+mod sfc_check;
 mod task;
 mod trace;
 mod validate;
@@ -92,6 +93,7 @@ pub use sfc::{
     ActionAssociation, ActionQualifier, Jump, MacroStep, SfcBranches, SfcChart, SfcNode,
     SfcSequence, Step, Transition,
 };
+pub use sfc_check::sfc_problems;
 pub use task::{Task, TaskKind, Watchdog};
 pub use trace::{TraceConfig, TraceTrigger, TraceTriggerCondition, TraceVariable};
 pub use variable::{VarSection, Variable};

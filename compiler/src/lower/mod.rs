@@ -14,6 +14,7 @@ mod network;
 mod operator;
 mod place;
 mod results;
+mod sfc;
 #[cfg(test)]
 mod tests;
 mod value;
@@ -22,7 +23,7 @@ use std::borrow::Cow;
 use std::collections::HashMap;
 use std::path::PathBuf;
 
-use project_model::{Body, ElementId, Object, Pou, PouKind, Project, TextTarget};
+use project_model::{Body, ElementId, Method, Object, Pou, PouKind, Project, TextTarget};
 
 use crate::diagnostic::Code;
 use fragment::Span;
@@ -127,13 +128,18 @@ pub(crate) enum Callee {
     Unknown,
 }
 
-/// Lowers every LD and FBD body of `project`; a project without one is borrowed unchanged.
+/// Lowers every LD, FBD and SFC body of `project` and turns its transition objects into
+/// methods; a project without either is borrowed unchanged.
 pub fn lower_project(project: &Project) -> LoweredProject<'_> {
-    let graphical = |body: &Body| matches!(body, Body::Ld { .. } | Body::Fbd { .. });
+    let graphical =
+        |body: &Body| matches!(body, Body::Ld { .. } | Body::Fbd { .. } | Body::Sfc { .. });
     let pous: Vec<(PathBuf, &Pou)> = project_model::object_files(project)
         .into_iter()
         .filter_map(|(file, object)| match object {
-            Object::Pou(pou) if slots(pou).iter().any(|(_, _, body)| graphical(body)) => {
+            Object::Pou(pou)
+                if !pou.transitions.is_empty()
+                    || slots(pou).iter().any(|(_, _, body)| graphical(body)) =>
+            {
                 Some((file, pou))
             }
             _ => None,
@@ -164,17 +170,40 @@ pub fn lower_project(project: &Project) -> LoweredProject<'_> {
         let folder = file.parent().map(PathBuf::from).unwrap_or_default();
         let mut texts = Vec::new();
         let mut hidden = Vec::new();
+        let transition_objects: Vec<String> =
+            pou.transitions.iter().map(|t| t.name.clone()).collect();
         for (index, (suffix, target, body)) in slots(pou).into_iter().enumerate() {
-            let (Body::Ld { networks } | Body::Fbd { networks }) = body else {
-                continue;
-            };
             let prefix = match &target {
                 TextTarget::Pou(_) => "__".to_owned(),
                 TextTarget::Method { method: member, .. }
-                | TextTarget::Action { action: member, .. } => format!("__{member}__"),
+                | TextTarget::Action { action: member, .. }
+                | TextTarget::Transition {
+                    transition: member, ..
+                } => format!("__{member}__"),
                 TextTarget::Property { property, get, .. } => {
                     format!("__{property}_{}__", if *get { "get" } else { "set" })
                 }
+            };
+            if let Body::Sfc { chart } = body {
+                let mut lowering = sfc::ChartLowering::new(prefix, &transition_objects);
+                lowering.chart(chart);
+                hidden.append(&mut lowering.hidden);
+                texts.push((index, lowering.out.text.clone()));
+                bodies.push(LoweredBody {
+                    pou: pou.name.clone(),
+                    target,
+                    file: file.clone(),
+                    text_file: folder.join(format!("{}{suffix}", pou.name)),
+                    text: lowering.out.text,
+                    origins: OriginMap::new(lowering.out.spans),
+                    probes: lowering.probes,
+                    descriptions: lowering.descriptions,
+                    findings: Vec::new(),
+                });
+                continue;
+            }
+            let (Body::Ld { networks } | Body::Fbd { networks }) = body else {
+                continue;
             };
             let scope = std::cell::OnceCell::new();
             let typed_target = target.clone();
@@ -208,13 +237,72 @@ pub fn lower_project(project: &Project) -> LoweredProject<'_> {
                     **body = Body::St { text };
                 }
             }
-            copy.variables.append(&mut hidden);
+            for variable in hidden {
+                if !copy
+                    .variables
+                    .iter()
+                    .any(|v| v.name.eq_ignore_ascii_case(&variable.name))
+                {
+                    copy.variables.push(variable);
+                }
+            }
+            transitions_into_methods(copy);
         }
     }
     LoweredProject {
         project: Cow::Owned(lowered),
         bodies,
     }
+}
+
+/// Turns the transition objects of `pou` (their bodies already Structured Text) into methods
+/// returning BOOL named like them: a body that is a bare expression is wrapped as
+/// `Ready := (expression);`, and when a chart reads the object's value for its probe, the
+/// method also keeps its result in the POU's hidden variable [`sfc::transition_result`].
+fn transitions_into_methods(pou: &mut Pou) {
+    for transition in std::mem::take(&mut pou.transitions) {
+        let name = transition.name;
+        let body = match transition.body {
+            Body::St { text } => {
+                let mut text = match bare_expression(&text) {
+                    Some(expression) => format!("{name} := ({expression});"),
+                    None => text,
+                };
+                let result = sfc::transition_result(&name);
+                if pou
+                    .variables
+                    .iter()
+                    .any(|v| v.name.eq_ignore_ascii_case(&result))
+                {
+                    text.push_str(&format!("\n{result} := {name};\n"));
+                }
+                Body::St { text }
+            }
+            other => other,
+        };
+        pou.methods.push(Method {
+            name,
+            return_type: Some("BOOL".into()),
+            access: project_model::AccessSpecifier::Private,
+            is_abstract: false,
+            comment: String::new(),
+            variables: Vec::new(),
+            body,
+        });
+    }
+}
+
+/// The expression the ST text of a transition object is when it is an expression alone
+/// (`a AND b`), not statements: it does not parse as statements but does as the right side of
+/// an assignment.
+fn bare_expression(text: &str) -> Option<&str> {
+    let trimmed = text.trim().trim_end_matches(';').trim_end();
+    let alone = !trimmed.is_empty()
+        && !crate::syntax::parse_statements(text).errors().is_empty()
+        && crate::syntax::parse_statements(&format!("__x := ({trimmed});"))
+            .errors()
+            .is_empty();
+    alone.then_some(trimmed)
 }
 
 /// What `name` calls, by the project's POUs, the motion library and the standard library.
@@ -272,6 +360,13 @@ fn slots(pou: &Pou) -> Vec<(String, TextTarget, &Body)> {
         };
         slots.push((format!(".{}.st", action.name), target, &action.body));
     }
+    for transition in &pou.transitions {
+        let target = TextTarget::Transition {
+            pou: name(),
+            transition: transition.name.clone(),
+        };
+        slots.push((format!(".{}.st", transition.name), target, &transition.body));
+    }
     slots
 }
 
@@ -288,6 +383,7 @@ fn bodies_mut(pou: &mut Pou) -> Vec<&mut Body> {
         }
     }
     bodies.extend(pou.actions.iter_mut().map(|action| &mut action.body));
+    bodies.extend(pou.transitions.iter_mut().map(|t| &mut t.body));
     bodies
 }
 
