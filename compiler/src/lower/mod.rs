@@ -1,11 +1,14 @@
-//! LD and FBD bodies lowered into Structured Text, so the checker and the code generator run
-//! unchanged on them (ARCHITECTURE.md, "Bodies and their origins").
+//! LD and FBD bodies lowered into Structured Text and SFC charts into textual SFC, so the
+//! checker and the code generator run unchanged on them (ARCHITECTURE.md, "Bodies and their
+//! origins").
 //!
-//! [`lower_project`] gives the project with every LD and FBD body (of POUs, methods, property
-//! accessors and actions) replaced by its ST text and the hidden variables it needs declared
-//! in the POU, and for each such body a [`LoweredBody`]: the text, the [`OriginMap`] from its
-//! byte ranges back to networks, elements and pins, and the [`Probe`]s that say where each
-//! element's live value is read. The semantics are in `docs/graphical-semantics.md`.
+//! [`lower_project`] gives the project with every LD, FBD and SFC body (of POUs, methods,
+//! property accessors, actions and transition objects) replaced by its text, the hidden
+//! variables it needs declared in the POU and the transition objects turned into methods, and
+//! for each such body a [`LoweredBody`]: the text, the [`OriginMap`] from its byte ranges back
+//! to networks (an SFC chart is network 0), elements and pins, and the [`Probe`]s that say
+//! where each element's live value is read. The semantics are in
+//! `docs/graphical-semantics.md`.
 
 mod boxes;
 mod fragment;
@@ -36,14 +39,15 @@ pub use place::ElementPlace;
 /// A project whose graphical bodies are Structured Text, with the way back to the networks.
 #[derive(Debug)]
 pub struct LoweredProject<'p> {
-    /// The project: borrowed when it has no LD or FBD body, else a copy with every LD and FBD
-    /// body replaced by its text and the hidden variables declared in their POUs.
+    /// The project: borrowed when it has no LD, FBD or SFC body and no transition object,
+    /// else a copy with every such body replaced by its text, the hidden variables declared
+    /// in their POUs and the transition objects turned into methods.
     pub project: Cow<'p, Project>,
     /// Every lowered body, in tree order.
     pub bodies: Vec<LoweredBody>,
 }
 
-/// One LD or FBD body as Structured Text.
+/// One LD or FBD body as Structured Text, or one SFC chart as textual SFC.
 #[derive(Clone, Debug)]
 pub struct LoweredBody {
     /// The POU's name.
@@ -274,7 +278,10 @@ fn transitions_into_methods(pou: &mut Pou) {
                     .iter()
                     .any(|v| v.name.eq_ignore_ascii_case(&result))
                 {
-                    text.push_str(&format!("\n{result} := {name};\n"));
+                    if !text.ends_with('\n') {
+                        text.push('\n');
+                    }
+                    text.push_str(&format!("{result} := {name};\n"));
                 }
                 Body::St { text }
             }

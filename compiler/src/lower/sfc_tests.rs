@@ -315,3 +315,46 @@ fn a_sound_chart_checks_without_errors() {
         .collect();
     assert!(found.is_empty(), "{found:#?}");
 }
+
+#[test]
+fn a_transition_object_drawn_in_ld_sets_its_result_with_a_coil_and_compiles() {
+    let mut project = project_with(vec![
+        step(1, "Init", &[]),
+        transition(2, "ready"),
+        step(3, "Run", &[]),
+        transition(4, "NOT b"),
+        jump(5, "Init"),
+    ]);
+    if let Some(Object::Pou(main)) = project.application.object_mut("Main") {
+        main.transitions.push(PouAction {
+            name: "Ready".into(),
+            body: Body::Ld {
+                networks: vec![project_model::Network {
+                    rung: vec![crate::lower::tests::contact(6, "a")],
+                    outputs: vec![project_model::NetworkOutput::Coil(project_model::Coil {
+                        id: ElementId(7),
+                        variable: "Ready".into(),
+                        kind: project_model::CoilKind::Normal,
+                    })],
+                    ..project_model::Network::default()
+                }],
+            },
+        });
+    }
+    let lowered = lower_project(&project);
+    let Some(Object::Pou(main)) = lowered.project.application.object("Main") else {
+        panic!("no Main");
+    };
+    assert_eq!(
+        main.methods[0].body.st_text(),
+        Some("Ready := a;\n__Ready__result := Ready;\n")
+    );
+    let target = project_model::TextTarget::Transition {
+        pou: "Main".into(),
+        transition: "Ready".into(),
+    };
+    assert!(lowered.body("Main", &target).is_some());
+    if let Err(error) = crate::compile_project(&project) {
+        panic!("{error:?}");
+    }
+}
