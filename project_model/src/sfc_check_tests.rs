@@ -319,3 +319,33 @@ impl TapTarget for SfcChart {
         self
     }
 }
+
+#[test]
+fn a_branch_is_not_empty_and_an_association_names_its_action() {
+    one_problem(
+        &chart(vec![
+            step(1, "Init"),
+            SfcNode::Alternative(branches(2, vec![vec![transition(3, "a")], Vec::new()])),
+            jump(4, "Init"),
+        ]),
+        "element 2: branch 2 is empty",
+    );
+    one_problem(
+        &chart(vec![
+            SfcNode::Step(Step {
+                id: ElementId(1),
+                name: "Init".into(),
+                actions: vec![ActionAssociation {
+                    action: " ".into(),
+                    qualifier: ActionQualifier::N,
+                    duration: None,
+                    indicator: None,
+                }],
+                ..Step::default()
+            }),
+            transition(2, "a"),
+            jump(3, "Init"),
+        ]),
+        "element 1 'Init': an action association names no action",
+    );
+}
