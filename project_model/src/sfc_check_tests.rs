@@ -93,9 +93,8 @@ fn step_names_are_identifiers_without_double_underscores() {
         &chart(vec![
             step(1, "no good"),
             transition(2, "a"),
-            jump(3, "Init"),
-        ])
-        .tap_target("no good"),
+            jump(3, "no good"),
+        ]),
         "element 1 'no good': the step name 'no good' is not an identifier (letters, digits and '_')",
     );
     one_problem(
@@ -304,20 +303,6 @@ fn a_duration_is_given_exactly_for_the_timed_qualifiers() {
         sfc_problems(&with(ActionQualifier::SD, Some("tDelay"))),
         Vec::<String>::new()
     );
-}
-
-/// A chart whose jump goes to `target`, so a rename test has one problem only.
-trait TapTarget {
-    fn tap_target(self, target: &str) -> Self;
-}
-
-impl TapTarget for SfcChart {
-    fn tap_target(mut self, target: &str) -> Self {
-        if let Some(SfcNode::Jump(jump)) = self.sequence.last_mut() {
-            jump.target = target.into();
-        }
-        self
-    }
 }
 
 #[test]

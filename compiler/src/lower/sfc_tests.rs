@@ -358,3 +358,35 @@ fn a_transition_object_drawn_in_ld_sets_its_result_with_a_coil_and_compiles() {
         panic!("{error:?}");
     }
 }
+
+#[test]
+fn a_chart_in_an_action_is_refused_at_check_time() {
+    let mut project = SourceProject::new(DECLARATIONS).project;
+    if let Some(Object::Pou(main)) = project.application.object_mut("Main") {
+        main.body = Body::st("Steps();");
+        main.actions.push(PouAction {
+            name: "Steps".into(),
+            body: Body::Sfc {
+                chart: SfcChart {
+                    sequence: vec![
+                        step(1, "Init", &[("lamp", ActionQualifier::N)]),
+                        transition(2, "go"),
+                        jump(3, "Init"),
+                    ],
+                },
+            },
+        });
+    }
+    let found: Vec<String> = crate::sema::check_project(&project)
+        .into_iter()
+        .filter(|d| d.diagnostic.severity == crate::Severity::Error)
+        .map(|d| format!("{} {}", d.diagnostic.code.id(), d.diagnostic.message))
+        .collect();
+    assert_eq!(
+        found,
+        [
+            "E0115 an SFC chart can only be the body of a program or function block itself, not \
+          of action 'Main.Steps'; call an SFC program or function block from it instead"
+        ]
+    );
+}

@@ -185,13 +185,6 @@ fn cfc_charts_are_refused_by_the_checker_naming_what_they_implement() {
         main.body = Body::Cfc {
             chart: Default::default(),
         };
-        // An SFC chart is lowered into textual SFC and compiled.
-        main.actions.push(project_model::PouAction {
-            name: "Steps".into(),
-            body: Body::Sfc {
-                chart: project_model::SfcChart::new_body(),
-            },
-        });
     }
     let found = messages(&project(vec![main]));
     assert_eq!(
