@@ -50,16 +50,14 @@ fn jump(id: u32, target: &str) -> SfcNode {
     })
 }
 
-/// `Main` counts its cycles in `Init` (`n`) and in `Left` (`m`): from `Init` an alternative
-/// goes on once `n >= 3` (or back to `Init` on `stop`) into a parallel branch `Left` and
-/// `Right`, which the transition object `Ready` (`m >= 2`) closes, jumping back to `Init`.
-fn simulate(cycles: u64) -> Simulation {
-    let source = "PROGRAM Main
-VAR n, m : INT; stop, lamp, left, right : BOOL; END_VAR
-ACTION Count: n := n + 1; END_ACTION
-ACTION Tick: m := m + 1; END_ACTION
-END_PROGRAM
-";
+/// Compiles the program `Main` of `source` with the chart `sequence` as its body and the
+/// transition objects `transitions`, and runs it for `cycles` cycles.
+fn simulate_chart(
+    source: &str,
+    sequence: Vec<SfcNode>,
+    transitions: Vec<PouAction>,
+    cycles: u64,
+) -> Simulation {
     let built = compiler::SourceProject::new(source);
     assert!(
         built.parse.errors().is_empty(),
@@ -70,32 +68,9 @@ END_PROGRAM
     let Some(Object::Pou(main)) = project.application.object_mut("Main") else {
         panic!("no Main");
     };
-    main.transitions.push(PouAction {
-        name: "Ready".into(),
-        body: Body::st("m >= 2"),
-    });
+    main.transitions = transitions;
     main.body = Body::Sfc {
-        chart: SfcChart {
-            sequence: vec![
-                step(1, "Init", &["Count", "lamp"]),
-                SfcNode::Alternative(branches(
-                    2,
-                    vec![
-                        vec![transition(3, "n >= 3 AND NOT stop")],
-                        vec![transition(4, "stop"), jump(5, "Init")],
-                    ],
-                )),
-                SfcNode::Parallel(branches(
-                    6,
-                    vec![
-                        vec![step(7, "Left", &["Tick", "left"])],
-                        vec![step(8, "Right", &["right"])],
-                    ],
-                )),
-                transition(9, "Ready"),
-                jump(10, "Init"),
-            ],
-        },
+        chart: SfcChart { sequence },
     };
     let image = match compiler::compile_project(&project) {
         Ok(image) => image,
@@ -113,6 +88,42 @@ END_PROGRAM
     simulation.run(cycles);
     assert!(simulation.faults().is_empty(), "{:?}", simulation.faults());
     simulation
+}
+
+/// `Main` counts its cycles in `Init` (`n`) and in `Left` (`m`): from `Init` an alternative
+/// goes on once `n >= 3` (or back to `Init` on `stop`) into a parallel branch `Left` and
+/// `Right`, which the transition object `Ready` (`m >= 2`) closes, jumping back to `Init`.
+fn simulate(cycles: u64) -> Simulation {
+    let source = "PROGRAM Main
+VAR n, m : INT; stop, lamp, left, right : BOOL; END_VAR
+ACTION Count: n := n + 1; END_ACTION
+ACTION Tick: m := m + 1; END_ACTION
+END_PROGRAM
+";
+    let ready = PouAction {
+        name: "Ready".into(),
+        body: Body::st("m >= 2"),
+    };
+    let sequence = vec![
+        step(1, "Init", &["Count", "lamp"]),
+        SfcNode::Alternative(branches(
+            2,
+            vec![
+                vec![transition(3, "n >= 3 AND NOT stop")],
+                vec![transition(4, "stop"), jump(5, "Init")],
+            ],
+        )),
+        SfcNode::Parallel(branches(
+            6,
+            vec![
+                vec![step(7, "Left", &["Tick", "left"])],
+                vec![step(8, "Right", &["right"])],
+            ],
+        )),
+        transition(9, "Ready"),
+        jump(10, "Init"),
+    ];
+    simulate_chart(source, sequence, vec![ready], cycles)
 }
 
 #[track_caller]
@@ -174,5 +185,52 @@ fn an_alternative_and_a_parallel_branch_run_as_drawn() {
             ("Main.Init.X", "FALSE"),
             ("Main.Left.X", "TRUE"),
         ],
+    );
+}
+
+#[test]
+fn a_macro_step_runs_its_steps_and_a_jump_to_it_enters_its_first_step() {
+    let source = "PROGRAM Main
+VAR n : INT; inA, inB : BOOL; END_VAR
+ACTION Count: n := n + 1; END_ACTION
+END_PROGRAM
+";
+    let sequence = vec![
+        step(1, "Init", &["Count"]),
+        transition(2, "n >= 1"),
+        SfcNode::Macro(project_model::MacroStep {
+            id: ElementId(3),
+            name: "Work".into(),
+            body: vec![
+                step(4, "A", &["inA", "Count"]),
+                transition(5, "TRUE"),
+                step(6, "B", &["inB", "Count"]),
+            ],
+            ..project_model::MacroStep::default()
+        }),
+        transition(7, "TRUE"),
+        jump(8, "Work"),
+    ];
+    // Cycle 1 in Init, 2 in A, 3 in B, then the jump to Work enters A again in cycle 4.
+    let run = |cycles| simulate_chart(source, sequence.clone(), Vec::new(), cycles);
+    check(
+        &run(2),
+        &[
+            ("Main.A.X", "FALSE"),
+            ("Main.B.X", "TRUE"),
+            ("Main.inA", "TRUE"),
+        ],
+    );
+    check(
+        &run(3),
+        &[
+            ("Main.A.X", "TRUE"),
+            ("Main.B.X", "FALSE"),
+            ("Main.inB", "TRUE"),
+        ],
+    );
+    check(
+        &run(4),
+        &[("Main.A.X", "FALSE"), ("Main.inA", "TRUE"), ("Main.n", "4")],
     );
 }
