@@ -191,24 +191,6 @@ pub fn lower_project(project: &Project) -> LoweredProject<'_> {
             if let Body::Sfc { chart } = body {
                 let mut lowering = sfc::ChartLowering::new(prefix, &transition_objects);
                 lowering.chart(chart);
-                // A chart's steps live in the instance of the POU whose body it is.
-                let own_body = matches!(target, TextTarget::Pou(_))
-                    && matches!(pou.kind, PouKind::Program | PouKind::FunctionBlock);
-                let findings = if own_body {
-                    Vec::new()
-                } else {
-                    vec![Finding {
-                        network: 0,
-                        element: None,
-                        pin: None,
-                        code: Code::UncompiledChart,
-                        message: format!(
-                            "an SFC chart can only be the body of a program or function block \
-                             itself, not of {target}; call an SFC program or function block \
-                             from it instead"
-                        ),
-                    }]
-                };
                 hidden.append(&mut lowering.hidden);
                 texts.push((index, lowering.out.text.clone()));
                 bodies.push(LoweredBody {
@@ -220,7 +202,7 @@ pub fn lower_project(project: &Project) -> LoweredProject<'_> {
                     origins: OriginMap::new(lowering.out.spans),
                     probes: lowering.probes,
                     descriptions: lowering.descriptions,
-                    findings,
+                    findings: Vec::new(),
                 });
                 continue;
             }
