@@ -128,6 +128,9 @@ fn target_key(target: &project_model::TextTarget) -> String {
             format!("property {} {get}", property.to_lowercase())
         }
         TextTarget::Action { action, .. } => format!("action {}", action.to_lowercase()),
+        TextTarget::Transition { transition, .. } => {
+            format!("transition {}", transition.to_lowercase())
+        }
     }
 }
 

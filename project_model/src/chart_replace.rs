@@ -74,11 +74,13 @@ mod tests {
     #[test]
     fn a_chart_is_replaced_and_the_inverse_puts_the_old_one_back() {
         let mut project = project_with(Body::Sfc {
-            chart: SfcChart::default(),
-        });
-        let new = Body::Sfc {
             chart: SfcChart::new_body(),
-        };
+        });
+        let mut renamed = SfcChart::new_body();
+        if let Some(crate::SfcNode::Transition(transition)) = renamed.sequence.get_mut(1) {
+            transition.condition = "xStart".into();
+        }
+        let new = Body::Sfc { chart: renamed };
         let inverse = Edit::ReplaceChart {
             target: TextTarget::Pou("Seq".into()),
             body: Box::new(new.clone()),
@@ -90,8 +92,30 @@ mod tests {
         assert_eq!(
             body_of(&project),
             &Body::Sfc {
-                chart: SfcChart::default()
+                chart: SfcChart::new_body()
             }
+        );
+    }
+
+    #[test]
+    fn a_chart_that_breaks_a_rule_is_refused_naming_the_element() {
+        let mut project = project_with(Body::Sfc {
+            chart: SfcChart::new_body(),
+        });
+        let mut broken = SfcChart::new_body();
+        broken.sequence.pop();
+        let refused = Edit::ReplaceChart {
+            target: TextTarget::Pou("Seq".into()),
+            body: Box::new(Body::Sfc { chart: broken }),
+        }
+        .apply(&mut project);
+        assert_eq!(
+            refused,
+            Err(EditError::InvalidObject(
+                "'Seq': element 2: the chart must end with a jump (or an alternative branch \
+                 whose every branch ends with a jump)"
+                    .into()
+            ))
         );
     }
 
@@ -108,5 +132,59 @@ mod tests {
         }
         .apply(&mut project);
         assert_eq!(refused, Err(EditError::NotChart("'Seq'".into())));
+    }
+
+    #[test]
+    fn a_transition_object_s_text_is_edited_and_listed_with_its_file() {
+        let mut project = project_with(Body::Sfc {
+            chart: SfcChart::new_body(),
+        });
+        if let Some(Object::Pou(pou)) = project.application.object_mut("Seq") {
+            pou.transitions.push(crate::PouAction {
+                name: "Ready".into(),
+                body: Body::st("a AND b"),
+            });
+        }
+        let target = TextTarget::Transition {
+            pou: "Seq".into(),
+            transition: "Ready".into(),
+        };
+        Edit::ReplaceText {
+            target: target.clone(),
+            range: 0..1,
+            text: "x".into(),
+        }
+        .apply(&mut project)
+        .unwrap();
+        let bodies = crate::st_body_files(&project);
+        let listed: Vec<_> = bodies
+            .iter()
+            .map(|body| (body.file.clone(), body.target.clone(), body.text))
+            .collect();
+        assert_eq!(
+            listed,
+            [(
+                std::path::PathBuf::from("application/Seq.Ready.st"),
+                target,
+                "x AND b"
+            )]
+        );
+        let missing = Edit::ReplaceText {
+            target: TextTarget::Transition {
+                pou: "Seq".into(),
+                transition: "Gone".into(),
+            },
+            range: 0..0,
+            text: String::new(),
+        }
+        .apply(&mut project);
+        assert_eq!(
+            missing,
+            Err(EditError::NoSuchMember {
+                pou: "Seq".into(),
+                what: "transition",
+                name: "Gone".into()
+            })
+        );
     }
 }

@@ -174,6 +174,13 @@ pub enum TextTarget {
         /// The action.
         action: String,
     },
+    /// The body of a transition object (`Pou::transitions`).
+    Transition {
+        /// The POU.
+        pou: String,
+        /// The transition object.
+        transition: String,
+    },
 }
 
 /// Why an edit could not be applied. The project is unchanged when one is returned.
@@ -185,12 +192,12 @@ pub enum EditError {
     /// No folder has that path.
     #[error("there is no folder '{0}'")]
     NoSuchFolder(String),
-    /// The POU has no such method, property or action.
+    /// The POU has no such method, property, action or transition.
     #[error("'{pou}' has no {what} named '{name}'")]
     NoSuchMember {
         /// The POU.
         pou: String,
-        /// `method`, `property` or `action`.
+        /// `method`, `property`, `action` or `transition`.
         what: &'static str,
         /// The missing name.
         name: String,
@@ -621,6 +628,9 @@ impl std::fmt::Display for TextTarget {
                 write!(f, "property '{pou}.{property}.{accessor}'")
             }
             Self::Action { pou, action } => write!(f, "action '{pou}.{action}'"),
+            Self::Transition { pou, transition } => {
+                write!(f, "transition '{pou}.{transition}'")
+            }
         }
     }
 }

@@ -34,6 +34,7 @@ mod network_walk;
 mod pou;
 mod project;
 mod sfc;
+mod sfc_check;
 pub mod sfc_edit;
 mod task;
 mod trace;
@@ -93,6 +94,7 @@ pub use sfc::{
     ActionAssociation, ActionQualifier, Jump, MacroStep, SfcBranches, SfcChart, SfcNode,
     SfcSequence, Step, Transition,
 };
+pub use sfc_check::sfc_problems;
 pub use task::{Task, TaskKind, Watchdog};
 pub use trace::{TraceConfig, TraceTrigger, TraceTriggerCondition, TraceVariable};
 pub use variable::{VarSection, Variable};

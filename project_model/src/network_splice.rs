@@ -81,6 +81,12 @@ pub(crate) fn body_mut<'a>(
             .find(|a| a.name == *action)
             .map(|a| &mut a.body)
             .ok_or_else(|| no_member(pou, "action", action)),
+        TextTarget::Transition { pou, transition } => pou_mut(root, pou)?
+            .transitions
+            .iter_mut()
+            .find(|t| t.name == *transition)
+            .map(|t| &mut t.body)
+            .ok_or_else(|| no_member(pou, "transition", transition)),
     }
 }
 

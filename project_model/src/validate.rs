@@ -40,7 +40,8 @@ pub(crate) fn body_problems(object: &Object) -> Vec<String> {
 /// the other languages.
 pub(crate) fn chart_problems(body: &Body) -> Vec<String> {
     match body {
-        Body::Cfc { .. } | Body::Sfc { .. } => Vec::new(),
+        Body::Sfc { chart } => crate::sfc_problems(chart),
+        Body::Cfc { .. } => Vec::new(),
         _ => Vec::new(),
     }
 }

@@ -558,3 +558,71 @@ fn a_version_2_cfc_chart_loads_converted_with_its_execution_order() {
     );
     assert_eq!(load_project(dir.path()).unwrap().project, loaded.project);
 }
+
+/// A version 2 SFC body: a step, a transition and a connection back to the step.
+const SFC_VERSION_2: &str = r#"kind = "program"
+
+[body]
+language = "sfc"
+
+[body.chart]
+element = [
+    { id = 1, x = 0, y = 0, kind = { type = "step", name = "Init", initial = true, action = [{ action = "lamp", qualifier = "N" }] } },
+    { id = 2, x = 0, y = 2, kind = { type = "transition", condition = "go" } },
+    { id = 3, x = 0, y = 4, kind = { type = "step", name = "Run" } },
+    { id = 4, x = 0, y = 6, kind = { type = "transition", condition = "NOT go" } },
+]
+connection = [
+    { from = { element = 1 }, to = { element = 2 } },
+    { from = { element = 2 }, to = { element = 3 } },
+    { from = { element = 3 }, to = { element = 4 } },
+    { from = { element = 4 }, to = { element = 1 } },
+]
+"#;
+
+#[test]
+fn a_version_2_sfc_graph_loads_as_a_structured_chart_or_is_held_back_naming_the_element() {
+    let dir = example_copy();
+    add_ladder(dir.path(), SFC_VERSION_2);
+    replace_in(
+        &dir.path().join("rivet.toml"),
+        "format_version = 3",
+        "format_version = 2",
+    );
+    let loaded = load_project(dir.path()).unwrap();
+    let Some(project_model::Object::Pou(pou)) = loaded.project.application.object("Ladder") else {
+        panic!("no converted POU");
+    };
+    let project_model::Body::Sfc { chart } = &pou.body else {
+        panic!("not SFC: {:?}", pou.body);
+    };
+    // Two steps, two transitions, and the connection back to Init as a jump (id 5).
+    assert_eq!(chart.sequence.len(), 5);
+    assert!(matches!(
+        &chart.sequence[4],
+        project_model::SfcNode::Jump(jump) if jump.target == "Init" && jump.id.0 == 5
+    ));
+    save_project(&loaded.project, dir.path(), &loaded.files).unwrap();
+    assert_eq!(load_project(dir.path()).unwrap().project, loaded.project);
+
+    let broken = example_copy();
+    add_ladder(
+        broken.path(),
+        &SFC_VERSION_2.replace("{ from = { element = 4 }, to = { element = 1 } },\n", ""),
+    );
+    replace_in(
+        &broken.path().join("rivet.toml"),
+        "format_version = 3",
+        "format_version = 2",
+    );
+    let error = load_fails(broken.path());
+    assert_error(
+        &error,
+        broken.path(),
+        "application/Ladder.pou.toml",
+        None,
+        "POU 'Ladder', element 4: the transition leads nowhere; a transition leads to a step or \
+         a jump",
+    );
+    assert_eq!(error.partial.unwrap().held_back[0].name, "Ladder");
+}

@@ -7,6 +7,8 @@
 /// LD and FBD bodies compiled and run, element by element and against the ST a user writes.
 mod ladder;
 mod sfc;
+/// SFC charts of the graphical model lowered into textual SFC and run.
+mod sfc_chart;
 
 use program_image::ProgramImage;
 use runtime::simulation::Simulation;

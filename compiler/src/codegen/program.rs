@@ -965,6 +965,11 @@ fn compile_unit<'g, 'p>(
                 .iter()
                 .find(|a| &a.name == action)
                 .map_or(pou.body.language(), |a| a.body.language()),
+            TextTarget::Transition { transition, .. } => pou
+                .transitions
+                .iter()
+                .find(|t| &t.name == transition)
+                .map_or(pou.body.language(), |t| t.body.language()),
             TextTarget::Property { property, get, .. } => pou
                 .properties
                 .iter()

@@ -24,7 +24,8 @@ fn pou_of<'p>(project: &'p Project, target: &TextTarget) -> Option<&'p Pou> {
         TextTarget::Pou(pou)
         | TextTarget::Method { pou, .. }
         | TextTarget::Property { pou, .. }
-        | TextTarget::Action { pou, .. } => pou,
+        | TextTarget::Action { pou, .. }
+        | TextTarget::Transition { pou, .. } => pou,
     };
     match project.application.object(name)? {
         Object::Pou(pou) => Some(pou),

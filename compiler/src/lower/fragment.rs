@@ -17,6 +17,9 @@ pub(crate) struct Span {
     pub pin: Option<String>,
     /// The range is text the user typed (an operand), so its names are the user's.
     pub user: bool,
+    /// The range repeats text that is compiled elsewhere in the body too (an SFC condition
+    /// kept for its probe), so what the checker finds in it is found there already.
+    pub shadow: bool,
 }
 
 /// A piece of generated text with its recorded ranges.
@@ -61,6 +64,21 @@ impl Fragment {
             element,
             pin: pin.map(str::to_owned),
             user: false,
+            shadow: false,
+        });
+        self
+    }
+
+    /// Records the whole fragment as a second copy of text of `element` compiled elsewhere
+    /// in the body, whose findings are dropped.
+    pub fn mark_shadow(mut self, network: usize, element: ElementId) -> Self {
+        self.spans.push(Span {
+            range: 0..self.text.len(),
+            network,
+            element: Some(element),
+            pin: None,
+            user: false,
+            shadow: true,
         });
         self
     }
@@ -73,6 +91,7 @@ impl Fragment {
             element: Some(element),
             pin: pin.map(str::to_owned),
             user: true,
+            shadow: false,
         });
         self
     }

@@ -118,6 +118,9 @@ impl LoweredProject<'_> {
                 };
                 let range = finding.diagnostic.range.clone();
                 let span = body.origins.span(range.clone());
+                if span.is_some_and(|span| span.shadow) {
+                    return None;
+                }
                 finding.element = Some(match span {
                     Some(span) => body.place_of(span),
                     None => ElementPlace {
@@ -227,6 +230,7 @@ mod tests {
             element: Some(ElementId(element)),
             pin: None,
             user,
+            shadow: false,
         }
     }
 

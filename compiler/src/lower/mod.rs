@@ -1,11 +1,14 @@
-//! LD and FBD bodies lowered into Structured Text, so the checker and the code generator run
-//! unchanged on them (ARCHITECTURE.md, "Bodies and their origins").
+//! LD and FBD bodies lowered into Structured Text and SFC charts into textual SFC, so the
+//! checker and the code generator run unchanged on them (ARCHITECTURE.md, "Bodies and their
+//! origins").
 //!
-//! [`lower_project`] gives the project with every LD and FBD body (of POUs, methods, property
-//! accessors and actions) replaced by its ST text and the hidden variables it needs declared
-//! in the POU, and for each such body a [`LoweredBody`]: the text, the [`OriginMap`] from its
-//! byte ranges back to networks, elements and pins, and the [`Probe`]s that say where each
-//! element's live value is read. The semantics are in `docs/graphical-semantics.md`.
+//! [`lower_project`] gives the project with every LD, FBD and SFC body (of POUs, methods,
+//! property accessors, actions and transition objects) replaced by its text, the hidden
+//! variables it needs declared in the POU and the transition objects turned into methods, and
+//! for each such body a [`LoweredBody`]: the text, the [`OriginMap`] from its byte ranges back
+//! to networks (an SFC chart is network 0), elements and pins, and the [`Probe`]s that say
+//! where each element's live value is read. The semantics are in
+//! `docs/graphical-semantics.md`.
 
 mod boxes;
 mod fragment;
@@ -14,6 +17,7 @@ mod network;
 mod operator;
 mod place;
 mod results;
+mod sfc;
 #[cfg(test)]
 mod tests;
 mod value;
@@ -22,7 +26,7 @@ use std::borrow::Cow;
 use std::collections::HashMap;
 use std::path::PathBuf;
 
-use project_model::{Body, ElementId, Object, Pou, PouKind, Project, TextTarget};
+use project_model::{Body, ElementId, Method, Object, Pou, PouKind, Project, TextTarget};
 
 use crate::diagnostic::Code;
 use fragment::Span;
@@ -35,14 +39,15 @@ pub use place::ElementPlace;
 /// A project whose graphical bodies are Structured Text, with the way back to the networks.
 #[derive(Debug)]
 pub struct LoweredProject<'p> {
-    /// The project: borrowed when it has no LD or FBD body, else a copy with every LD and FBD
-    /// body replaced by its text and the hidden variables declared in their POUs.
+    /// The project: borrowed when it has no LD, FBD or SFC body and no transition object,
+    /// else a copy with every such body replaced by its text, the hidden variables declared
+    /// in their POUs and the transition objects turned into methods.
     pub project: Cow<'p, Project>,
     /// Every lowered body, in tree order.
     pub bodies: Vec<LoweredBody>,
 }
 
-/// One LD or FBD body as Structured Text.
+/// One LD or FBD body as Structured Text, or one SFC chart as textual SFC.
 #[derive(Clone, Debug)]
 pub struct LoweredBody {
     /// The POU's name.
@@ -127,13 +132,18 @@ pub(crate) enum Callee {
     Unknown,
 }
 
-/// Lowers every LD and FBD body of `project`; a project without one is borrowed unchanged.
+/// Lowers every LD, FBD and SFC body of `project` and turns its transition objects into
+/// methods; a project without either is borrowed unchanged.
 pub fn lower_project(project: &Project) -> LoweredProject<'_> {
-    let graphical = |body: &Body| matches!(body, Body::Ld { .. } | Body::Fbd { .. });
+    let graphical =
+        |body: &Body| matches!(body, Body::Ld { .. } | Body::Fbd { .. } | Body::Sfc { .. });
     let pous: Vec<(PathBuf, &Pou)> = project_model::object_files(project)
         .into_iter()
         .filter_map(|(file, object)| match object {
-            Object::Pou(pou) if slots(pou).iter().any(|(_, _, body)| graphical(body)) => {
+            Object::Pou(pou)
+                if !pou.transitions.is_empty()
+                    || slots(pou).iter().any(|(_, _, body)| graphical(body)) =>
+            {
                 Some((file, pou))
             }
             _ => None,
@@ -164,17 +174,40 @@ pub fn lower_project(project: &Project) -> LoweredProject<'_> {
         let folder = file.parent().map(PathBuf::from).unwrap_or_default();
         let mut texts = Vec::new();
         let mut hidden = Vec::new();
+        let transition_objects: Vec<String> =
+            pou.transitions.iter().map(|t| t.name.clone()).collect();
         for (index, (suffix, target, body)) in slots(pou).into_iter().enumerate() {
-            let (Body::Ld { networks } | Body::Fbd { networks }) = body else {
-                continue;
-            };
             let prefix = match &target {
                 TextTarget::Pou(_) => "__".to_owned(),
                 TextTarget::Method { method: member, .. }
-                | TextTarget::Action { action: member, .. } => format!("__{member}__"),
+                | TextTarget::Action { action: member, .. }
+                | TextTarget::Transition {
+                    transition: member, ..
+                } => format!("__{member}__"),
                 TextTarget::Property { property, get, .. } => {
                     format!("__{property}_{}__", if *get { "get" } else { "set" })
                 }
+            };
+            if let Body::Sfc { chart } = body {
+                let mut lowering = sfc::ChartLowering::new(prefix, &transition_objects);
+                lowering.chart(chart);
+                hidden.append(&mut lowering.hidden);
+                texts.push((index, lowering.out.text.clone()));
+                bodies.push(LoweredBody {
+                    pou: pou.name.clone(),
+                    target,
+                    file: file.clone(),
+                    text_file: folder.join(format!("{}{suffix}", pou.name)),
+                    text: lowering.out.text,
+                    origins: OriginMap::new(lowering.out.spans),
+                    probes: lowering.probes,
+                    descriptions: lowering.descriptions,
+                    findings: Vec::new(),
+                });
+                continue;
+            }
+            let (Body::Ld { networks } | Body::Fbd { networks }) = body else {
+                continue;
             };
             let scope = std::cell::OnceCell::new();
             let typed_target = target.clone();
@@ -208,13 +241,75 @@ pub fn lower_project(project: &Project) -> LoweredProject<'_> {
                     **body = Body::St { text };
                 }
             }
-            copy.variables.append(&mut hidden);
+            for variable in hidden {
+                if !copy
+                    .variables
+                    .iter()
+                    .any(|v| v.name.eq_ignore_ascii_case(&variable.name))
+                {
+                    copy.variables.push(variable);
+                }
+            }
+            transitions_into_methods(copy);
         }
     }
     LoweredProject {
         project: Cow::Owned(lowered),
         bodies,
     }
+}
+
+/// Turns the transition objects of `pou` (their bodies already Structured Text) into methods
+/// returning BOOL named like them: a body that is a bare expression is wrapped as
+/// `Ready := (expression);`, and when a chart reads the object's value for its probe, the
+/// method also keeps its result in the POU's hidden variable [`sfc::transition_result`].
+fn transitions_into_methods(pou: &mut Pou) {
+    for transition in std::mem::take(&mut pou.transitions) {
+        let name = transition.name;
+        let body = match transition.body {
+            Body::St { text } => {
+                let mut text = match bare_expression(&text) {
+                    Some(expression) => format!("{name} := ({expression});"),
+                    None => text,
+                };
+                let result = sfc::transition_result(&name);
+                if pou
+                    .variables
+                    .iter()
+                    .any(|v| v.name.eq_ignore_ascii_case(&result))
+                {
+                    if !text.ends_with('\n') {
+                        text.push('\n');
+                    }
+                    text.push_str(&format!("{result} := {name};\n"));
+                }
+                Body::St { text }
+            }
+            other => other,
+        };
+        pou.methods.push(Method {
+            name,
+            return_type: Some("BOOL".into()),
+            access: project_model::AccessSpecifier::Private,
+            is_abstract: false,
+            comment: String::new(),
+            variables: Vec::new(),
+            body,
+        });
+    }
+}
+
+/// The expression the ST text of a transition object is when it is an expression alone
+/// (`a AND b`), not statements: it does not parse as statements but does as the right side of
+/// an assignment.
+fn bare_expression(text: &str) -> Option<&str> {
+    let trimmed = text.trim().trim_end_matches(';').trim_end();
+    let alone = !trimmed.is_empty()
+        && !crate::syntax::parse_statements(text).errors().is_empty()
+        && crate::syntax::parse_statements(&format!("__x := ({trimmed});"))
+            .errors()
+            .is_empty();
+    alone.then_some(trimmed)
 }
 
 /// What `name` calls, by the project's POUs, the motion library and the standard library.
@@ -272,6 +367,13 @@ fn slots(pou: &Pou) -> Vec<(String, TextTarget, &Body)> {
         };
         slots.push((format!(".{}.st", action.name), target, &action.body));
     }
+    for transition in &pou.transitions {
+        let target = TextTarget::Transition {
+            pou: name(),
+            transition: transition.name.clone(),
+        };
+        slots.push((format!(".{}.st", transition.name), target, &transition.body));
+    }
     slots
 }
 
@@ -288,6 +390,7 @@ fn bodies_mut(pou: &mut Pou) -> Vec<&mut Body> {
         }
     }
     bodies.extend(pou.actions.iter_mut().map(|action| &mut action.body));
+    bodies.extend(pou.transitions.iter_mut().map(|t| &mut t.body));
     bodies
 }
 

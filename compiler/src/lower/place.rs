@@ -29,7 +29,10 @@ impl fmt::Display for ElementPlace {
         match &self.target {
             TextTarget::Pou(_) => {}
             TextTarget::Method { method: member, .. }
-            | TextTarget::Action { action: member, .. } => write!(f, ".{member}")?,
+            | TextTarget::Action { action: member, .. }
+            | TextTarget::Transition {
+                transition: member, ..
+            } => write!(f, ".{member}")?,
             TextTarget::Property { property, get, .. } => {
                 write!(f, ".{property}.{}", if *get { "get" } else { "set" })?;
             }

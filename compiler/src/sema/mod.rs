@@ -463,7 +463,7 @@ fn check_pou_declarations<'p>(
     }
 }
 
-/// The bodies of `pou` drawn as CFC or SFC charts, by the name of what they implement
+/// The bodies of `pou` drawn as CFC charts (SFC charts are lowered), by the name of what they implement
 /// (`Main`, `Main.Reset`, `Main.Speed.get`) and their language's name.
 fn chart_bodies(pou: &Pou) -> Vec<(String, &'static str)> {
     let mut bodies = vec![(pou.name.clone(), &pou.body)];
@@ -491,7 +491,6 @@ fn chart_bodies(pou: &Pou) -> Vec<(String, &'static str)> {
         .into_iter()
         .filter_map(|(member, body)| match body {
             Body::Cfc { .. } => Some((member, "CFC")),
-            Body::Sfc { .. } => Some((member, "SFC")),
             _ => None,
         })
         .collect()

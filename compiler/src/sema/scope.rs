@@ -285,6 +285,14 @@ impl<'a, 'p> Scope<'a, 'p> {
                 }
             }
             TextTarget::Pou(_) => scope.chart_allowed = true,
+            // A transition object's body computes a BOOL named after it (it compiles into a
+            // method returning BOOL).
+            TextTarget::Transition { transition, .. } => {
+                if let Some(transition) = pou.transitions.iter().find(|t| t.name == *transition) {
+                    scope.add(&transition.name, LocalSymbol::Result("BOOL"));
+                    scope.result_type = Some("BOOL");
+                }
+            }
             TextTarget::Action { .. } => {}
         }
         if let Some(ty) = &pou.return_type

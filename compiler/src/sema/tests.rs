@@ -179,25 +179,18 @@ fn swapped_letters_count_as_one_edit() {
 }
 
 #[test]
-fn cfc_and_sfc_charts_are_refused_by_the_checker_naming_what_they_implement() {
+fn cfc_charts_are_refused_by_the_checker_naming_what_they_implement() {
     let mut main = pou("Main", PouKind::FunctionBlock, Vec::new(), "");
     if let Node::Object(Object::Pou(main)) = &mut main {
         main.body = Body::Cfc {
             chart: Default::default(),
         };
-        main.actions.push(project_model::PouAction {
-            name: "Steps".into(),
-            body: Body::Sfc {
-                chart: Default::default(),
-            },
-        });
     }
     let found = messages(&project(vec![main]));
     assert_eq!(
         found,
         [
             "application/Main.pou.toml E0115: the CFC chart of 'Main' cannot be compiled yet; Rivet compiles Structured Text, LD and FBD bodies",
-            "application/Main.pou.toml E0115: the SFC chart of 'Main.Steps' cannot be compiled yet; Rivet compiles Structured Text, LD and FBD bodies",
         ]
     );
 }

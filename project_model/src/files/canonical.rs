@@ -31,8 +31,13 @@ fn expand(table: &mut Table) {
 fn expand_table(table: &mut Table, is_network: bool) {
     table.decor_mut().clear();
     table.set_implicit(false);
+    let is_sfc_body = table.get("language").and_then(Item::as_str) == Some("sfc");
     for (mut key, item) in table.iter_mut() {
         key.leaf_decor_mut().clear();
+        if is_sfc_body && key.get() == "chart" {
+            expand_sfc_chart(item);
+            continue;
+        }
         let holds_networks = key.get() == "network";
         let is_tree = is_network && matches!(key.get(), "rung" | "output");
         let replacement = match item {
@@ -78,6 +83,37 @@ fn expand_table(table: &mut Table, is_network: bool) {
             *item = replacement;
         }
     }
+}
+
+/// Lays out an SFC body's chart as a standard table whose `node` list is an indented tree of
+/// inline tables, one node a line, with branches and macro bodies nested inside their node
+/// (section 4.3 of `docs/project-format.md`): the chart's structure reads at a glance and a
+/// step added is one added line in a diff.
+fn expand_sfc_chart(item: &mut Item) {
+    let mut chart = match std::mem::take(item) {
+        Item::Value(Value::InlineTable(inline)) => inline.into_table(),
+        Item::Table(table) => table,
+        other => {
+            *item = other;
+            return;
+        }
+    };
+    chart.decor_mut().clear();
+    chart.set_implicit(false);
+    for (mut key, child) in chart.iter_mut() {
+        key.leaf_decor_mut().clear();
+        if let Item::Value(value) = child {
+            match value {
+                Value::Array(nodes) if key.get() == "node" && is_array_of_tables(nodes) => {
+                    format_tree(nodes, 0, true);
+                    nodes.decor_mut().clear();
+                    nodes.decor_mut().set_prefix(" ");
+                }
+                other => format_value(other),
+            }
+        }
+    }
+    *item = Item::Table(chart);
 }
 
 /// A non-empty array whose every element is a structure.

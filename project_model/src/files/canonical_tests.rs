@@ -110,3 +110,52 @@ fn the_documented_networks_are_canonical() {
         assert_eq!(canonical(&text), text);
     }
 }
+
+#[test]
+fn an_sfc_chart_is_saved_as_an_indented_tree_one_node_a_line() {
+    // The same chart written compactly, on one line.
+    let compact = r#"kind = "program"
+body = { language = "sfc", chart = { node = [{ type = "step", id = 1, name = "Init" }, { type = "alternative", id = 2, branch = [{ node = [{ type = "transition", id = 3, condition = "xStart" }] }, { node = [{ type = "transition", id = 4, condition = "xAbort", priority = 1 }, { type = "jump", id = 5, target = "Init" }] }] }, { type = "step", id = 6, name = "Fill", max_time = "T#10s", action = [{ action = "Valve", qualifier = "N" }, { action = "Horn", qualifier = "L", duration = "T#2s", indicator = "xHorn" }] }, { type = "transition", id = 7, condition = "Fill.t > T#3s" }, { type = "parallel", id = 8, branch = [{ node = [{ type = "step", id = 9, name = "Left" }] }, { node = [{ type = "macro", id = 10, name = "Right", node = [{ type = "step", id = 11, name = "R1" }, { type = "transition", id = 12, condition = "b" }, { type = "step", id = 13, name = "R2" }] }] }] }, { type = "transition", id = 14, condition = "TRUE" }, { type = "jump", id = 15, target = "Init" }] } }
+"#;
+    // The example of section 4.3 of the format's documentation.
+    let document = include_str!("../../../docs/project-format.md");
+    let section = document
+        .find("### 4.3 SFC charts")
+        .map(|start| &document[start..])
+        .expect("section 4.3");
+    let example = section
+        .split("```toml\n")
+        .nth(1)
+        .and_then(|block| block.split("```").next())
+        .expect("an example");
+    let expected = format!("kind = \"program\"\n\n{example}");
+    assert_eq!(canonical(compact), expected);
+    assert_eq!(canonical(&expected), expected);
+}
+
+#[test]
+fn a_project_with_a_branching_sfc_chart_loads_saves_and_loads_back_unchanged() {
+    use std::collections::BTreeSet;
+
+    use crate::{Folder, Node, Project, load_project, save_project};
+
+    let text = r#"kind = "program"
+body = { language = "sfc", chart = { node = [{ type = "step", id = 1, name = "Init", action = [{ action = "Lamp", qualifier = "SD", duration = "T#1s" }] }, { type = "alternative", id = 2, branch = [{ node = [{ type = "transition", id = 3, condition = "a" }] }, { node = [{ type = "transition", id = 4, condition = "b", comment = "two\nlines" }, { type = "jump", id = 5, target = "Init" }] }] }, { type = "parallel", id = 6, branch = [{ node = [{ type = "step", id = 7, name = "L" }] }, { node = [{ type = "step", id = 8, name = "R" }] }] }, { type = "transition", id = 9, condition = "c" }, { type = "jump", id = 10, target = "Init" }] } }
+"#;
+    let mut pou: Pou = toml::from_str(text).unwrap();
+    pou.name = "Seq".into();
+    let project = Project {
+        application: Folder {
+            name: String::new(),
+            children: vec![Node::Object(Object::Pou(pou))],
+        },
+        ..Project::default()
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let first = save_project(&project, dir.path(), &BTreeSet::new()).unwrap();
+    let loaded = load_project(dir.path()).unwrap();
+    assert_eq!(loaded.project, project);
+    let second = save_project(&loaded.project, dir.path(), &loaded.files).unwrap();
+    assert!(second.written.is_empty(), "rewrote {:?}", second.written);
+    assert_eq!(loaded.files, first.files);
+}

@@ -238,6 +238,10 @@ fn body_targets(pou: &Pou) -> Vec<crate::TextTarget> {
         pou: name(),
         action: a.name.clone(),
     }));
+    targets.extend(pou.transitions.iter().map(|t| TextTarget::Transition {
+        pou: name(),
+        transition: t.name.clone(),
+    }));
     targets
 }
 

@@ -13,6 +13,7 @@ mod layout;
 mod load;
 mod manifest;
 mod older_charts;
+mod older_sfc;
 mod older_versions;
 mod problem;
 mod save;

@@ -183,10 +183,7 @@ fn cfc_kind(element: &ChartElement) -> Result<CfcElementKind, String> {
 }
 
 /// Converts the graph of an SFC body into the structured chart, or says where its graph has
-/// no structured equivalent.
+/// no structured equivalent (`older_sfc.rs`).
 pub(crate) fn sfc_from_graph(graph: &Chart) -> Result<SfcChart, Vec<String>> {
-    let _ = graph;
-    Err(vec![
-        "an SFC chart of format version 1 or 2 is converted by the SFC model's reader".into(),
-    ])
+    super::older_sfc::sfc_from_graph(graph)
 }

@@ -59,9 +59,16 @@ pub(super) fn declarations_ui(
             VarOwner::Pou(pou.name.clone()),
         ),
     };
-    let read_only =
-        matches!(part, Part::Property(..) | Part::Action(_)) || view.online.is_logged_in();
-    if show_table && !matches!(part, Part::Property(..) | Part::Action(_)) {
+    let read_only = matches!(
+        part,
+        Part::Property(..) | Part::Action(_) | Part::Transition(_)
+    ) || view.online.is_logged_in();
+    if show_table
+        && !matches!(
+            part,
+            Part::Property(..) | Part::Action(_) | Part::Transition(_)
+        )
+    {
         // The overlaps are computed once per project revision, not per frame.
         let warnings = editor::overlap_warnings(view.overlaps, &pou.name);
         let drag_prefix = (pou.kind == project_model::PouKind::Program && method.is_none())

@@ -17,6 +17,8 @@ pub enum Part {
     Action(String),
     /// A property's getter or setter.
     Property(String, bool),
+    /// A transition object of an SFC program or function block.
+    Transition(String),
 }
 
 /// The POU part a document shows, and where to put the caret in it this frame.
@@ -49,6 +51,13 @@ pub(super) fn body_of<'p>(pou: &'p Pou, part: &Part) -> Option<(TextTarget, &'p 
             },
             &pou.actions.iter().find(|a| a.name == *action)?.body,
         ),
+        Part::Transition(transition) => (
+            TextTarget::Transition {
+                pou: name,
+                transition: transition.clone(),
+            },
+            &pou.transitions.iter().find(|t| t.name == *transition)?.body,
+        ),
         Part::Property(property, get) => {
             let property_data = pou.properties.iter().find(|p| p.name == *property)?;
             let accessor = if *get {
@@ -74,6 +83,7 @@ pub(super) fn part_of(target: &TextTarget) -> Part {
         TextTarget::Method { method, .. } => Part::Method(method.clone()),
         TextTarget::Action { action, .. } => Part::Action(action.clone()),
         TextTarget::Property { property, get, .. } => Part::Property(property.clone(), *get),
+        TextTarget::Transition { transition, .. } => Part::Transition(transition.clone()),
     }
 }
 
@@ -83,6 +93,7 @@ pub fn target_label(target: &TextTarget) -> String {
         TextTarget::Pou(pou) => pou.clone(),
         TextTarget::Method { pou, method } => format!("{pou}.{method}"),
         TextTarget::Action { pou, action } => format!("{pou}.{action}"),
+        TextTarget::Transition { pou, transition } => format!("{pou}.{transition}"),
         TextTarget::Property { pou, property, get } => {
             format!("{pou}.{property}.{}", if *get { "Get" } else { "Set" })
         }
