@@ -40,7 +40,11 @@ pub(crate) fn body_problems(object: &Object) -> Vec<String> {
 /// the other languages.
 pub(crate) fn chart_problems(body: &Body) -> Vec<String> {
     match body {
-        Body::Cfc { .. } | Body::Sfc { .. } => Vec::new(),
+        Body::Cfc { chart } => crate::cfc_problems(chart)
+            .iter()
+            .map(ToString::to_string)
+            .collect(),
+        Body::Sfc { .. } => Vec::new(),
         _ => Vec::new(),
     }
 }
