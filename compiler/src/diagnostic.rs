@@ -67,6 +67,10 @@ codes! {
     ReservedName = "E0113", Error, "Name with two underscores in a row";
     InvalidNetwork = "E0114", Error, "LD or FBD element that cannot be compiled";
     UncompiledChart = "E0115", Error, "CFC or SFC chart that cannot be compiled yet";
+    ConnectionWithoutSource = "E0126", Error, "CFC connection mark without a source";
+    DuplicateConnectionSource = "E0127", Error, "CFC connection mark name given to two sources";
+    InvalidCfcElement = "E0128", Error, "CFC element that cannot be compiled";
+    ConnectionLoop = "E0129", Error, "CFC connection marks that feed only each other";
     UnusedVariable = "W0001", Warning, "Variable never used";
     UnassignedVariable = "W0002", Warning, "Variable read but never written";
     OverlappingAddresses = "W0003", Warning, "Located variables overlap";

@@ -8,6 +8,7 @@
 //! element's live value is read. The semantics are in `docs/graphical-semantics.md`.
 
 mod boxes;
+mod cfc;
 mod fragment;
 mod locate;
 mod network;
@@ -22,7 +23,9 @@ use std::borrow::Cow;
 use std::collections::HashMap;
 use std::path::PathBuf;
 
-use project_model::{Body, ElementId, Object, Pou, PouKind, Project, TextTarget};
+use project_model::{
+    Body, ElementId, Object, Pou, PouKind, Project, TextTarget, VarSection, Variable,
+};
 
 use crate::diagnostic::Code;
 use fragment::Span;
@@ -129,7 +132,8 @@ pub(crate) enum Callee {
 
 /// Lowers every LD and FBD body of `project`; a project without one is borrowed unchanged.
 pub fn lower_project(project: &Project) -> LoweredProject<'_> {
-    let graphical = |body: &Body| matches!(body, Body::Ld { .. } | Body::Fbd { .. });
+    let graphical =
+        |body: &Body| matches!(body, Body::Ld { .. } | Body::Fbd { .. } | Body::Cfc { .. });
     let pous: Vec<(PathBuf, &Pou)> = project_model::object_files(project)
         .into_iter()
         .filter_map(|(file, object)| match object {
@@ -156,6 +160,30 @@ pub fn lower_project(project: &Project) -> LoweredProject<'_> {
         })
         .collect();
     let classify = |name: &str| classify(&kinds, name);
+    // The declared types of the functions' outputs other than their result, which a chart
+    // stores in hidden variables.
+    let function_outputs: HashMap<(String, String), String> = project
+        .application
+        .objects()
+        .into_iter()
+        .chain(crate::library::objects())
+        .filter_map(|object| match object {
+            Object::Pou(pou) if pou.kind == PouKind::Function => Some(pou),
+            _ => None,
+        })
+        .flat_map(|pou| {
+            pou.variables
+                .iter()
+                .filter(|variable| variable.section == VarSection::VarOutput)
+                .map(|variable| {
+                    (
+                        (pou.name.to_lowercase(), variable.name.to_lowercase()),
+                        variable.ty.clone(),
+                    )
+                })
+                .collect::<Vec<_>>()
+        })
+        .collect();
     // The checker's view of the project types the boxes' results; built at the first box.
     let globals = std::cell::OnceCell::new();
     let mut lowered = project.clone();
@@ -165,9 +193,9 @@ pub fn lower_project(project: &Project) -> LoweredProject<'_> {
         let mut texts = Vec::new();
         let mut hidden = Vec::new();
         for (index, (suffix, target, body)) in slots(pou).into_iter().enumerate() {
-            let (Body::Ld { networks } | Body::Fbd { networks }) = body else {
+            if !graphical(body) {
                 continue;
-            };
+            }
             let prefix = match &target {
                 TextTarget::Pou(_) => "__".to_owned(),
                 TextTarget::Method { method: member, .. }
@@ -186,7 +214,37 @@ pub fn lower_project(project: &Project) -> LoweredProject<'_> {
                 crate::sema::expression_declared_type(scope, expression)
             };
             let mut lowering = BodyLowering::new(prefix, &classify, &type_of);
-            lowering.body(networks);
+            match body {
+                Body::Cfc { chart } => {
+                    // A chart's results may read hidden variables (feedback, structures), so
+                    // they are typed in a scope that declares those known so far.
+                    let of_expressions = |hidden: &[Variable], expressions: &[String]| {
+                        let globals =
+                            globals.get_or_init(|| crate::sema::scope::Globals::new(project));
+                        let mut with_hidden = pou.clone();
+                        with_hidden.variables.extend(hidden.iter().cloned());
+                        let scope = crate::sema::expression_scope(globals, &with_hidden, &target);
+                        expressions
+                            .iter()
+                            .map(|expression| {
+                                crate::sema::expression_declared_type(&scope, expression)
+                            })
+                            .collect()
+                    };
+                    let of_function_output = |function: &str, pin: &str| {
+                        function_outputs
+                            .get(&(function.trim().to_lowercase(), pin.to_lowercase()))
+                            .cloned()
+                    };
+                    let types = cfc::ChartTypes {
+                        of_expressions: &of_expressions,
+                        of_function_output: &of_function_output,
+                    };
+                    lowering.chart(chart, &types);
+                }
+                Body::Ld { networks } | Body::Fbd { networks } => lowering.body(networks),
+                _ => {}
+            }
             hidden.append(&mut lowering.hidden);
             texts.push((index, lowering.out.text.clone()));
             bodies.push(LoweredBody {

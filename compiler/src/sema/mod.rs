@@ -488,7 +488,6 @@ fn chart_bodies(pou: &Pou) -> Vec<(String, &'static str)> {
     bodies
         .into_iter()
         .filter_map(|(member, body)| match body {
-            Body::Cfc { .. } => Some((member, "CFC")),
             Body::Sfc { .. } => Some((member, "SFC")),
             _ => None,
         })

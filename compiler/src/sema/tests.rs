@@ -196,7 +196,6 @@ fn cfc_and_sfc_charts_are_refused_by_the_checker_naming_what_they_implement() {
     assert_eq!(
         found,
         [
-            "application/Main.pou.toml E0115: the CFC chart of 'Main' cannot be compiled yet; Rivet compiles Structured Text, LD and FBD bodies",
             "application/Main.pou.toml E0115: the SFC chart of 'Main.Steps' cannot be compiled yet; Rivet compiles Structured Text, LD and FBD bodies",
         ]
     );
