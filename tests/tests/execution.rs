@@ -7,6 +7,9 @@
 /// LD and FBD bodies compiled and run, element by element and against the ST a user writes.
 mod ladder;
 
+/// CFC charts compiled and run: execution order, feedback, marks, structures, EN/ENO, jumps.
+mod cfc;
+
 use program_image::ProgramImage;
 use runtime::simulation::Simulation;
 
