@@ -78,7 +78,8 @@ struct Chart<'a> {
 
 impl Chart<'_> {
     /// Whether the wire into `pin` of `element` comes from something that gives no value (a
-    /// connection mark that cannot be resolved, a result whose type cannot be told), which was
+    /// connection mark that cannot be resolved, a result whose type cannot be told, an empty
+    /// input), which was
     /// reported where it is; the element is then not written, so no finding follows from it.
     fn source_is_broken(&self, element: ElementId, pin: &str) -> bool {
         let Some(wire) = self.into.get(&key(element, pin)) else {
@@ -94,7 +95,7 @@ impl Chart<'_> {
             }
         }
         match self.elements.get(&from.element).map(|e| &e.kind) {
-            Some(CfcElementKind::Input { .. }) => false,
+            Some(CfcElementKind::Input { expression }) => expression.trim().is_empty(),
             Some(_) => matches!(
                 self.stored.get(&key(from.element, &from.pin)),
                 Some(Stored::Missing) | None
@@ -164,10 +165,30 @@ impl BodyLowering<'_> {
                 );
             }
         }
+        for element in &chart.elements {
+            if let CfcElementKind::Input { expression } = &element.kind
+                && expression.trim().is_empty()
+            {
+                self.find(
+                    element.id,
+                    None,
+                    Code::InvalidCfcElement,
+                    "the input is empty; type a variable, a constant or an expression".to_owned(),
+                );
+            }
+        }
         self.declare_stores(&mut indexed, &order, types);
         for element in order {
             self.element(&indexed, element);
         }
+        // An input read twice is reported once.
+        let mut reported: Vec<super::Finding> = Vec::new();
+        for finding in std::mem::take(&mut self.findings) {
+            if !reported.contains(&finding) {
+                reported.push(finding);
+            }
+        }
+        self.findings = reported;
         // A pin met twice keeps its last probe: an EN's stored value rather than its wire's,
         // an output's variable rather than the value written into it.
         let mut seen = HashSet::new();
@@ -248,6 +269,10 @@ impl BodyLowering<'_> {
         };
         match &source.kind {
             CfcElementKind::Input { expression } => {
+                // An empty input is reported once, before the elements are written.
+                if expression.trim().is_empty() {
+                    return (placeholder(source.id), None);
+                }
                 let value = self.user_value(source.id, None, expression, "the input");
                 let text = expression.trim();
                 (value, is_path(text).then(|| text.to_owned()))
@@ -324,6 +349,15 @@ impl BodyLowering<'_> {
 
     /// An output: its variable written from its input as the coil says.
     fn output(&mut self, chart: &Chart<'_>, id: ElementId, expression: &str, coil: CoilKind) {
+        if expression.trim().is_empty() {
+            self.find(
+                id,
+                None,
+                Code::InvalidCfcElement,
+                "the output names no variable".to_owned(),
+            );
+            return;
+        }
         let Some(value) = self.single_input(chart, id, "output") else {
             return;
         };

@@ -399,6 +399,9 @@ fn incomplete_elements_and_broken_marks_are_reported_at_their_elements() {
             ),
             output(10, 3, "q", CoilKind::Normal),
             boxed(11, 4, "TON", "", &["IN"], &["Q"]),
+            input(12, " "),
+            output(13, 5, "y", CoilKind::Normal),
+            output(14, 6, "", CoilKind::Normal),
         ],
         vec![
             wire(1, "", 2, "IN1"),
@@ -408,6 +411,8 @@ fn incomplete_elements_and_broken_marks_are_reported_at_their_elements() {
             wire(1, "", 6, ""),
             wire(8, "", 7, ""),
             wire(8, "", 10, ""),
+            wire(12, "", 13, ""),
+            wire(1, "", 14, ""),
         ],
     );
     expect![[r#"
@@ -415,8 +420,10 @@ fn incomplete_elements_and_broken_marks_are_reported_at_their_elements() {
             "Main:1:6 E0127: the connection mark 'twice' is also the source of element 5; sinks would not know which to read",
             "Main:1:4 E0126: no connection mark source of this chart is named 'Nowhere'",
             "Main:1:8 E0129: the connection mark 'A' is fed only by connection marks that it feeds, so no value reaches it",
+            "Main:1:12 E0128: the input is empty; type a variable, a constant or an expression",
             "Main:1:2.IN2 E0128: the input IN2 of 'ADD' is not connected; a function needs every input",
             "Main:1:11 E0128: the function block box 'TON' has no instance",
+            "Main:1:14 E0128: the output names no variable",
         ]
     "#]]
     .assert_debug_eq(&found);
