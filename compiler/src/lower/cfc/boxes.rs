@@ -105,6 +105,34 @@ impl BodyLowering<'_> {
         }
     }
 
+    /// Reports each input of a function or operator box that is not wired, before anything
+    /// decides whether the box is written (a result that feeds back into the box cannot be
+    /// stored when an input is missing, which would hide the reason).
+    pub(super) fn unwired_function_inputs(
+        &mut self,
+        chart: &Chart<'_>,
+        id: ElementId,
+        block: &CfcBox,
+    ) {
+        if !matches!((self.classify)(&block.type_name), Callee::Function { .. }) {
+            return;
+        }
+        for pin in block.inputs.iter().skip(usize::from(has_enable(block))) {
+            let name = pin.name.trim();
+            if !chart.into.contains_key(&key(id, name)) {
+                self.find(
+                    id,
+                    Some(name),
+                    Code::InvalidCfcElement,
+                    format!(
+                        "the input {name} of '{}' is not connected; a function needs every input",
+                        block.type_name
+                    ),
+                );
+            }
+        }
+    }
+
     /// `instance(IN := …);` with the wired inputs; an input not wired keeps its value.
     fn cfc_instance_call(
         &mut self,
@@ -157,20 +185,11 @@ impl BodyLowering<'_> {
         arguments: Vec<(&CfcPin, Option<Value>)>,
         operator: Option<Operator>,
     ) -> Vec<Fragment> {
+        // An input that is not wired was reported by `unwired_function_inputs`.
         let mut values = Vec::new();
         for (pin, value) in arguments {
-            match value {
-                Some(value) => values.push((value, pin.name.trim())),
-                None => self.find(
-                    id,
-                    Some(pin.name.trim()),
-                    Code::InvalidCfcElement,
-                    format!(
-                        "the input {} of '{}' is not connected; a function needs every input",
-                        pin.name.trim(),
-                        block.type_name
-                    ),
-                ),
+            if let Some(value) = value {
+                values.push((value, pin.name.trim()));
             }
         }
         if values.len() + usize::from(has_enable(block)) != block.inputs.len() {

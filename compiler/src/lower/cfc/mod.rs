@@ -206,6 +206,9 @@ impl BodyLowering<'_> {
     /// One element that runs.
     fn element(&mut self, chart: &Chart<'_>, element: &CfcElement) {
         let id = element.id;
+        if let CfcElementKind::Box(block) = &element.kind {
+            self.unwired_function_inputs(chart, id, block);
+        }
         let broken = project_model::cfc_input_pins(&element.kind)
             .into_iter()
             .any(|pin| chart.source_is_broken(id, pin));

@@ -402,6 +402,7 @@ fn incomplete_elements_and_broken_marks_are_reported_at_their_elements() {
             input(12, " "),
             output(13, 5, "y", CoilKind::Normal),
             output(14, 6, "", CoilKind::Normal),
+            boxed(15, 7, "ADD", "", &["IN1", "IN2"], &["OUT"]),
         ],
         vec![
             wire(1, "", 2, "IN1"),
@@ -413,6 +414,7 @@ fn incomplete_elements_and_broken_marks_are_reported_at_their_elements() {
             wire(8, "", 10, ""),
             wire(12, "", 13, ""),
             wire(1, "", 14, ""),
+            wire(15, "OUT", 15, "IN1"),
         ],
     );
     expect![[r#"
@@ -424,6 +426,7 @@ fn incomplete_elements_and_broken_marks_are_reported_at_their_elements() {
             "Main:1:2.IN2 E0128: the input IN2 of 'ADD' is not connected; a function needs every input",
             "Main:1:11 E0128: the function block box 'TON' has no instance",
             "Main:1:14 E0128: the output names no variable",
+            "Main:1:15.IN2 E0128: the input IN2 of 'ADD' is not connected; a function needs every input",
         ]
     "#]]
     .assert_debug_eq(&found);
