@@ -508,3 +508,57 @@ fn every_pin_and_wire_has_a_probe() {
     "#]]
     .assert_debug_eq(&probes);
 }
+
+#[test]
+fn a_chart_in_an_action_has_hidden_names_of_its_own_and_checks() {
+    let chart = CfcChart {
+        elements: vec![
+            input(1, "1"),
+            boxed(2, 0, "ADD", "", &["IN1", "IN2"], &["OUT"]),
+            output(3, 1, "x", CoilKind::Normal),
+        ],
+        wires: vec![
+            wire(2, "OUT", 2, "IN1"),
+            wire(1, "", 2, "IN2"),
+            wire(2, "OUT", 3, ""),
+        ],
+    };
+    let mut project =
+        SourceProject::new("FUNCTION_BLOCK Main\nVAR x : DINT; END_VAR\nEND_FUNCTION_BLOCK\n")
+            .project;
+    if let Some(Object::Pou(main)) = project.application.object_mut("Main") {
+        main.actions.push(project_model::PouAction {
+            name: "Count".into(),
+            body: Body::Cfc { chart },
+        });
+    }
+    let lowered = lower_project(&project);
+    expect![[r#"
+        __Count__e2_OUT := __Count__e2_OUT + 1;
+        x := __Count__e2_OUT;
+    "#]]
+    .assert_eq(&lowered.bodies[0].text);
+    // A fault on a line of the text names the element whose statement it is.
+    assert_eq!(
+        lowered.bodies[0].origin_at_line(2),
+        Some(crate::origin::Origin::Element {
+            network: 0,
+            element: Some(ElementId(3)),
+            pin: None
+        })
+    );
+    let Some(Object::Pou(main)) = lowered.project.application.object("Main") else {
+        panic!("no Main");
+    };
+    assert!(
+        main.variables
+            .iter()
+            .any(|v| v.name == "__Count__e2_OUT" && v.ty == "DINT")
+    );
+    let errors: Vec<String> = crate::sema::check_project(&project)
+        .into_iter()
+        .filter(|d| d.diagnostic.severity == crate::Severity::Error)
+        .map(|d| d.diagnostic.message)
+        .collect();
+    assert!(errors.is_empty(), "{errors:#?}");
+}
