@@ -69,6 +69,9 @@ struct Chart<'a> {
     enables: HashMap<ElementId, String>,
     /// The hidden structure variable of each composer and selector.
     structures: HashMap<ElementId, String>,
+    /// The hidden variable an input's expression (other than a variable or a literal) is
+    /// stored in where it is read, so its wires have a value online.
+    expressions: HashMap<ElementId, (String, bool)>,
     /// Each connection sink with the output pin that drives its source; sinks that cannot be
     /// resolved (reported) are missing.
     sinks: HashMap<ElementId, PinRef>,
@@ -133,6 +136,7 @@ impl BodyLowering<'_> {
             stored: HashMap::new(),
             enables: HashMap::new(),
             structures: HashMap::new(),
+            expressions: HashMap::new(),
             sinks: HashMap::new(),
             labels: HashSet::new(),
         };
@@ -277,6 +281,17 @@ impl BodyLowering<'_> {
                     return (placeholder(source.id), None);
                 }
                 let value = self.user_value(source.id, None, expression, "the input");
+                if let Some((name, boolean)) = chart.expressions.get(&source.id) {
+                    let store = frag!(name.as_str(), " := ", value.frag, ";");
+                    self.emit(store.mark(self.network, Some(source.id), None));
+                    self.probe(source.id, None, ProbeKind::Value, name.clone());
+                    let stored = Value::stable(
+                        Fragment::plain(name.as_str()).mark(self.network, Some(source.id), None),
+                        *boolean,
+                        Some(source.id),
+                    );
+                    return (stored, Some(name.clone()));
+                }
                 let text = expression.trim();
                 (value, is_path(text).then(|| text.to_owned()))
             }

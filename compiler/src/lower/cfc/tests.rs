@@ -326,7 +326,7 @@ fn connection_marks_composers_and_selectors() {
 fn jumps_labels_and_returns_follow_the_execution_order() {
     check_lowering(
         vec![
-            input(1, "a"),
+            input(1, "a AND NOT b"),
             element(
                 2,
                 Some(0),
@@ -347,11 +347,14 @@ fn jumps_labels_and_returns_follow_the_execution_order() {
         ],
         vec![wire(1, "", 2, ""), wire(6, "", 3, ""), wire(1, "", 5, "")],
         expect![[r#"
+            __e1 : BOOL;
             ---
-            IF a THEN JMP Skip; END_IF;
+            __e1 := (a AND NOT b);
+            IF __e1 THEN JMP Skip; END_IF;
             q := b;
             Skip:
-            IF a THEN RETURN; END_IF;
+            __e1 := (a AND NOT b);
+            IF __e1 THEN RETURN; END_IF;
         "#]],
     );
 }

@@ -16,7 +16,7 @@ use super::boxes::{has_enable, instance_of, is_enable, result_index};
 use super::{Chart, ChartTypes, Stored, key, pin_name};
 use crate::diagnostic::Code;
 use crate::lower::fragment::Fragment;
-use crate::lower::network::BodyLowering;
+use crate::lower::network::{BodyLowering, is_simple};
 use crate::lower::value::{Value, prec};
 use crate::lower::{Callee, ProbeKind};
 
@@ -162,6 +162,7 @@ impl BodyLowering<'_> {
             }
         }
         self.type_results(chart, pending, types);
+        self.declare_expression_stores(chart, types);
         for element in order {
             for pin in project_model::cfc_output_pins(&element.kind) {
                 if let Some(Stored::Path { path, .. }) = chart.stored.get(&key(element.id, pin)) {
@@ -176,6 +177,45 @@ impl BodyLowering<'_> {
                     let path = format!("{structure}.{member}");
                     self.probe(element.id, Some(member), ProbeKind::Value, path);
                 }
+            }
+        }
+    }
+
+    /// Declares a hidden variable for each wired input whose expression is neither a
+    /// variable nor a literal (`count < 3`), of the expression's type, so the value its wires
+    /// carry can be shown online; an expression without a type of its own stays unstored.
+    fn declare_expression_stores(&mut self, chart: &mut Chart<'_>, types: &ChartTypes<'_>) {
+        let mut inputs: Vec<(ElementId, String)> = chart
+            .elements
+            .values()
+            .filter_map(|element| match &element.kind {
+                CfcElementKind::Input { expression }
+                    if !is_simple(expression.trim())
+                        && !expression.contains("__")
+                        && chart.out_of.contains_key(&key(element.id, "")) =>
+                {
+                    Some((element.id, expression.trim().to_owned()))
+                }
+                _ => None,
+            })
+            .collect();
+        if inputs.is_empty() {
+            return;
+        }
+        inputs.sort_by_key(|(id, _)| *id);
+        let texts: Vec<String> = inputs.iter().map(|(_, text)| text.clone()).collect();
+        let found = (types.of_expressions)(&self.typed_hidden(), &texts);
+        for ((id, _), ty) in inputs.into_iter().zip(found) {
+            if let Some(ty) = ty {
+                let name = self.declare(
+                    id,
+                    "",
+                    &ty,
+                    format!("the value of the input element {}", id.0),
+                );
+                chart
+                    .expressions
+                    .insert(id, (name, ty.eq_ignore_ascii_case("BOOL")));
             }
         }
     }
