@@ -75,8 +75,9 @@ struct Chart<'a> {
     /// Each connection sink with the output pin that drives its source; sinks that cannot be
     /// resolved (reported) are missing.
     sinks: HashMap<ElementId, PinRef>,
-    /// The labels' names, lower case.
-    labels: HashSet<String>,
+    /// The labels' names, lower case, each with the first element that has it, the one a
+    /// jump goes to.
+    labels: HashMap<String, ElementId>,
 }
 
 impl Chart<'_> {
@@ -138,7 +139,7 @@ impl BodyLowering<'_> {
             structures: HashMap::new(),
             expressions: HashMap::new(),
             sinks: HashMap::new(),
-            labels: HashSet::new(),
+            labels: HashMap::new(),
         };
         for wire in &chart.wires {
             indexed
@@ -159,7 +160,11 @@ impl BodyLowering<'_> {
         self.resolve_marks(&mut indexed, chart);
         for element in &order {
             if let CfcElementKind::Label { name } = &element.kind
-                && !indexed.labels.insert(name.trim().to_lowercase())
+                && *indexed
+                    .labels
+                    .entry(name.trim().to_lowercase())
+                    .or_insert(element.id)
+                    != element.id
             {
                 self.find(
                     element.id,
@@ -226,7 +231,7 @@ impl BodyLowering<'_> {
             CfcElementKind::Box(block) => self.cfc_box(chart, id, block),
             CfcElementKind::Jump { label } => {
                 let label = label.trim();
-                if !chart.labels.contains(&label.to_lowercase()) {
+                if !chart.labels.contains_key(&label.to_lowercase()) {
                     let message = if label.is_empty() {
                         "the jump names no label".to_owned()
                     } else {
@@ -244,7 +249,9 @@ impl BodyLowering<'_> {
             }
             CfcElementKind::Label { name } => {
                 let name = name.trim();
-                if project_model::is_valid_identifier(name) {
+                // A label given twice (reported) is written once, where jumps go.
+                let first = chart.labels.get(&name.to_lowercase()) == Some(&id);
+                if first && project_model::is_valid_identifier(name) {
                     self.emit(frag!(name, ":").mark(self.network, Some(id), None));
                 }
             }

@@ -406,6 +406,8 @@ fn incomplete_elements_and_broken_marks_are_reported_at_their_elements() {
             output(13, 5, "y", CoilKind::Normal),
             output(14, 6, "", CoilKind::Normal),
             boxed(15, 7, "ADD", "", &["IN1", "IN2"], &["OUT"]),
+            element(16, Some(8), CfcElementKind::Label { name: "L".into() }),
+            element(17, Some(9), CfcElementKind::Label { name: "l".into() }),
         ],
         vec![
             wire(1, "", 2, "IN1"),
@@ -425,6 +427,7 @@ fn incomplete_elements_and_broken_marks_are_reported_at_their_elements() {
             "Main:1:6 E0127: the connection mark 'twice' is also the source of element 5; sinks would not know which to read",
             "Main:1:4 E0126: no connection mark source of this chart is named 'Nowhere'",
             "Main:1:8 E0129: the connection mark 'A' is fed only by connection marks that it feeds, so no value reaches it",
+            "Main:1:17 E0128: the label 'l' is given to two elements",
             "Main:1:12 E0128: the input is empty; type a variable, a constant or an expression",
             "Main:1:2.IN2 E0128: the input IN2 of 'ADD' is not connected; a function needs every input",
             "Main:1:11 E0128: the function block box 'TON' has no instance",
