@@ -381,6 +381,22 @@ impl LoweredBody {
         None
     }
 
+    /// The probe of the value at `pin` of `element` (`None` for the element itself or its
+    /// only pin; a pin's name without case), of kind [`ProbeKind::Value`]: in a CFC chart,
+    /// what a wire from that output pin carries (inverted when the pin is negated) or what
+    /// an input pin receives (`docs/graphical-semantics.md` §7.12).
+    pub fn value_probe(&self, element: ElementId, pin: Option<&str>) -> Option<&Probe> {
+        self.probes.iter().find(|probe| {
+            probe.element == element
+                && probe.kind == ProbeKind::Value
+                && match (&probe.pin, pin) {
+                    (Some(probed), Some(pin)) => probed.eq_ignore_ascii_case(pin.trim()),
+                    (None, None) => true,
+                    _ => false,
+                }
+        })
+    }
+
     /// The hidden variables' names, lower case, with their descriptions.
     fn describe(&self, message: &str) -> String {
         locate::describe_hidden(message, &self.descriptions)

@@ -481,6 +481,15 @@ fn every_pin_and_wire_has_a_probe() {
         ],
     );
     let lowered = lower_project(&project);
+    let body = &lowered.bodies[0];
+    let path = |element: u32, pin: Option<&str>| {
+        body.value_probe(ElementId(element), pin)
+            .map(|probe| probe.path.as_str())
+    };
+    assert_eq!(path(3, Some("q")), Some("t.Q"));
+    assert_eq!(path(4, Some("OUT")), Some("__e4_OUT"));
+    assert_eq!(path(5, None), Some("q"));
+    assert_eq!(path(2, None), None);
     let probes: Vec<String> = lowered.bodies[0]
         .probes
         .iter()
