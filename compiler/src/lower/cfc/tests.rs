@@ -220,7 +220,7 @@ fn a_feedback_loop_reads_the_previous_cycle_and_is_typed_by_what_it_feeds() {
 }
 
 #[test]
-fn en_eno_edges_negation_and_coils() {
+fn a_box_with_en_runs_only_when_enabled_and_edge_and_negated_pins_and_coils_are_written_as_in_ld() {
     let mut timer = boxed(3, 0, "TON", "t", &["EN", "IN", "PT"], &["ENO", "Q", "ET"]);
     if let CfcElementKind::Box(block) = &mut timer.kind {
         block.inputs[1].edge = Edge::Rising;
@@ -262,7 +262,7 @@ fn en_eno_edges_negation_and_coils() {
 }
 
 #[test]
-fn connection_marks_composers_and_selectors() {
+fn connection_marks_are_resolved_composers_build_and_selectors_copy_their_structure() {
     check_lowering(
         vec![
             input(1, "x"),
