@@ -252,3 +252,16 @@ fn names_with_two_underscores_are_refused() {
     assert!(found[1].starts_with("element 3: the pin name 'O__UT' contains '__'"));
     assert!(found[2].starts_with("element 5: the connection mark name 'a__b' contains '__'"));
 }
+
+#[test]
+fn a_broken_chart_is_what_loads_saves_and_chart_edits_refuse() {
+    let mut chart = sound();
+    chart.wires.push(wire(1, "", 3, "IN1"));
+    let body = crate::Body::Cfc { chart };
+    assert_eq!(
+        crate::validate::chart_problems(&body),
+        ["element 3: the pin 'IN1' has two wires; an input takes one"]
+    );
+    let sound = crate::Body::Cfc { chart: sound() };
+    assert_eq!(crate::validate::chart_problems(&sound), Vec::<String>::new());
+}
