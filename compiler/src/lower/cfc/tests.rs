@@ -577,3 +577,48 @@ fn a_chart_in_an_action_has_hidden_names_of_its_own_and_checks() {
         .collect();
     assert!(errors.is_empty(), "{errors:#?}");
 }
+
+#[test]
+fn a_function_s_other_outputs_are_stored_in_variables_of_their_declared_types() {
+    let chart = CfcChart {
+        elements: vec![
+            input(1, "x"),
+            boxed(2, 0, "Split", "", &["v"], &["OUT", "half"]),
+            output(3, 1, "y", CoilKind::Normal),
+            output(4, 2, "x", CoilKind::Normal),
+        ],
+        wires: vec![
+            wire(1, "", 2, "v"),
+            wire(2, "half", 3, ""),
+            wire(2, "OUT", 4, ""),
+        ],
+    };
+    let mut project = SourceProject::new(
+        "FUNCTION Split : INT
+VAR_INPUT v : INT; END_VAR
+VAR_OUTPUT half : INT; END_VAR
+Split := v; half := v / 2;
+END_FUNCTION
+PROGRAM Main
+VAR x, y : INT; END_VAR
+END_PROGRAM
+",
+    )
+    .project;
+    if let Some(Object::Pou(main)) = project.application.object_mut("Main") {
+        main.body = Body::Cfc { chart };
+    }
+    let lowered = lower_project(&project);
+    expect![[r#"
+        __e2_OUT := Split(v := x, half => __e2_half);
+        y := __e2_half;
+        x := __e2_OUT;
+    "#]]
+    .assert_eq(&lowered.bodies[0].text);
+    let errors: Vec<String> = crate::sema::check_project(&project)
+        .into_iter()
+        .filter(|d| d.diagnostic.severity == crate::Severity::Error)
+        .map(|d| d.diagnostic.message)
+        .collect();
+    assert!(errors.is_empty(), "{errors:#?}");
+}
