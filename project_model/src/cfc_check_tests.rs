@@ -263,5 +263,8 @@ fn a_broken_chart_is_what_loads_saves_and_chart_edits_refuse() {
         ["element 3: the pin 'IN1' has two wires; an input takes one"]
     );
     let sound = crate::Body::Cfc { chart: sound() };
-    assert_eq!(crate::validate::chart_problems(&sound), Vec::<String>::new());
+    assert_eq!(
+        crate::validate::chart_problems(&sound),
+        Vec::<String>::new()
+    );
 }
