@@ -96,13 +96,13 @@ fn fmt_rewrites_a_hand_edited_file_into_canonical_form() {
 fn fmt_refuses_a_broken_project_and_writes_nothing() {
     let dir = example_copy();
     let manifest = dir.path().join("rivet.toml");
-    fs::write(&manifest, "format_version = 3\n").unwrap();
+    fs::write(&manifest, "format_version = 99\n").unwrap();
     let output = rivet(&["fmt", path_str(dir.path())]);
     assert_eq!(output.status.code(), Some(1));
     assert!(text_of(&output.stderr).contains("newer Rivet"));
     assert_eq!(
         fs::read_to_string(&manifest).unwrap(),
-        "format_version = 3\n"
+        "format_version = 99\n"
     );
 }
 
@@ -285,6 +285,78 @@ fn simulate_prints_watched_values_as_text_and_json() {
     assert_eq!(
         text_of(&output.stdout).trim(),
         r#"{"main.n": 3, "main.t": "T#30ms"}"#
+    );
+}
+
+/// A project whose program `Counter` is a CFC chart: an ADD whose output feeds its own input
+/// (run second) and a MOVE reading that output first, so it sees the previous cycle's count.
+const CFC_COUNTER: &str = r#"kind = "program"
+
+[[variable]]
+name = "count"
+section = "VAR"
+type = "INT"
+
+[[variable]]
+name = "previous"
+section = "VAR"
+type = "INT"
+
+[body]
+language = "cfc"
+
+[body.chart]
+element = [
+    { id = 1, x = 0, y = 0, kind = { type = "input", expression = "1" } },
+    { id = 2, x = 8, y = 0, order = 1, kind = { type = "box", type_name = "ADD", input = [{ name = "IN1" }, { name = "IN2" }], output = [{ name = "OUT" }] } },
+    { id = 3, x = 16, y = 0, order = 2, kind = { type = "output", expression = "count" } },
+    { id = 4, x = 8, y = 6, order = 0, kind = { type = "box", type_name = "MOVE", input = [{ name = "IN" }], output = [{ name = "OUT" }] } },
+    { id = 5, x = 16, y = 6, order = 3, kind = { type = "output", expression = "previous" } },
+]
+wire = [
+    { from = { element = 2, pin = "OUT" }, to = { element = 2, pin = "IN1" } },
+    { from = { element = 1 }, to = { element = 2, pin = "IN2" } },
+    { from = { element = 2, pin = "OUT" }, to = { element = 3 } },
+    { from = { element = 2, pin = "OUT" }, to = { element = 4, pin = "IN" } },
+    { from = { element = 4, pin = "OUT" }, to = { element = 5 } },
+]
+"#;
+
+#[test]
+fn simulate_runs_a_cfc_chart_whose_feedback_reads_the_previous_cycle() {
+    let dir = tempfile::tempdir().unwrap();
+    fs::write(
+        dir.path().join("rivet.toml"),
+        "format_version = 3\nname = \"Counter\"\napplication = [\"Counter.pou.toml\"]\ncontroller = { name = \"PLC\", host = \"127.0.0.1\", port = 5020 }\n\n[[task]]\nname = \"MainTask\"\nkind = { type = \"cyclic\", interval_us = 10000 }\npriority = 1\nprograms = [\"Counter\"]\n",
+    )
+    .unwrap();
+    fs::create_dir(dir.path().join("application")).unwrap();
+    fs::write(dir.path().join("application/Counter.pou.toml"), CFC_COUNTER).unwrap();
+    let output = rivet(&[
+        "simulate",
+        path_str(dir.path()),
+        "--cycles",
+        "4",
+        "--watch",
+        "Counter.count,Counter.previous",
+    ]);
+    assert!(output.status.success(), "{}", text_of(&output.stderr));
+    assert_eq!(
+        text_of(&output.stdout),
+        "Counter.count = 4\nCounter.previous = 3\n"
+    );
+    // Without the constant wired into IN2 the check names the box and its pin.
+    let chart = CFC_COUNTER.replace(
+        "    { from = { element = 1 }, to = { element = 2, pin = \"IN2\" } },\n",
+        "",
+    );
+    fs::write(dir.path().join("application/Counter.pou.toml"), chart).unwrap();
+    let output = rivet(&["check", path_str(dir.path())]);
+    assert_eq!(output.status.code(), Some(1));
+    let shown = format!("{}{}", text_of(&output.stdout), text_of(&output.stderr));
+    assert!(
+        shown.contains("Counter.pou.toml:Counter:1:2.IN2: error[E0128]: the input IN2 of 'ADD' is not connected"),
+        "{shown}"
     );
 }
 

@@ -77,6 +77,10 @@ codes! {
     UnknownStepAction = "E0123", Error, "Step property naming no action";
     SfcOutsideInstance = "E0124", Error, "SFC chart outside a program or function block";
     InvalidTransitionPriority = "E0125", Error, "Transition with an invalid priority or without a condition";
+    ConnectionWithoutSource = "E0126", Error, "CFC connection mark without a source";
+    DuplicateConnectionSource = "E0127", Error, "CFC connection mark name given to two sources";
+    InvalidCfcElement = "E0128", Error, "CFC element that cannot be compiled";
+    ConnectionLoop = "E0129", Error, "CFC connection marks that feed only each other";
     UnusedVariable = "W0001", Warning, "Variable never used";
     UnassignedVariable = "W0002", Warning, "Variable read but never written";
     OverlappingAddresses = "W0003", Warning, "Located variables overlap";

@@ -13,6 +13,7 @@ mod application;
 mod axis;
 mod cam;
 mod cfc;
+mod cfc_check;
 mod chart_replace;
 mod data_type;
 mod declaration_text;
@@ -52,6 +53,7 @@ pub use cam::{
     CamTable, CamTablePoint, MotionLaw, PointInterpolation, Tappet, TappetAction, TappetTrack,
 };
 pub use cfc::{CfcBox, CfcChart, CfcElement, CfcElementKind, CfcPin, GridPoint, PinRef, Wire};
+pub use cfc_check::{CfcProblem, cfc_input_pins, cfc_output_pins, cfc_pin_matches, cfc_problems};
 pub use data_type::{DataType, EnumValue, StructMember, TypeDefinition};
 pub use declarations_edit::{
     DeclarationsChange, TypedDeclarations, TypedHeader, gvl_declarations_change,

@@ -41,7 +41,10 @@ pub(crate) fn body_problems(object: &Object) -> Vec<String> {
 pub(crate) fn chart_problems(body: &Body) -> Vec<String> {
     match body {
         Body::Sfc { chart } => crate::sfc_problems(chart),
-        Body::Cfc { .. } => Vec::new(),
+        Body::Cfc { chart } => crate::cfc_problems(chart)
+            .iter()
+            .map(ToString::to_string)
+            .collect(),
         _ => Vec::new(),
     }
 }

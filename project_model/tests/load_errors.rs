@@ -626,3 +626,46 @@ fn a_version_2_sfc_graph_loads_as_a_structured_chart_or_is_held_back_naming_the_
     );
     assert_eq!(error.partial.unwrap().held_back[0].name, "Ladder");
 }
+
+/// A version 3 CFC body in its canonical form: an input into a box into an output.
+const CFC_CANONICAL: &str = r#"kind = "program"
+
+[body]
+language = "cfc"
+
+[body.chart]
+element = [
+    { id = 1, x = 2, y = 4, kind = { type = "input", expression = "rSetpoint" } },
+    { id = 2, x = 10, y = 4, order = 0, kind = { type = "box", type_name = "SUB", input = [{ name = "IN1" }, { name = "IN2" }], output = [{ name = "OUT" }] } },
+    { id = 3, x = 18, y = 4, order = 1, kind = { type = "output", expression = "rError" } },
+]
+wire = [
+    { from = { element = 1 }, to = { element = 2, pin = "IN1" } },
+    { from = { element = 2, pin = "OUT" }, to = { element = 3 }, points = [{ x = 15, y = 6 }] },
+]
+"#;
+
+#[test]
+fn a_cfc_chart_loads_and_saves_unchanged_and_a_broken_one_is_refused_at_its_element() {
+    let dir = example_copy();
+    add_ladder(dir.path(), CFC_CANONICAL);
+    let loaded = load_project(dir.path()).unwrap();
+    let report = save_project(&loaded.project, dir.path(), &loaded.files).unwrap();
+    assert!(report.written.is_empty(), "rewrote {:?}", report.written);
+    assert_eq!(load_project(dir.path()).unwrap().project, loaded.project);
+
+    let file = dir.path().join("application/Ladder.pou.toml");
+    replace_in(
+        &file,
+        "{ from = { element = 1 }, to = { element = 2, pin = \"IN1\" } },",
+        "{ from = { element = 1 }, to = { element = 2, pin = \"IN1\" } },\n    { from = { element = 1 }, to = { element = 2, pin = \"in1\" } },",
+    );
+    let error = load_fails(dir.path());
+    assert_eq!(
+        error.to_string(),
+        format!(
+            "{}: error: POU 'Ladder', element 2: the pin 'in1' has two wires; an input takes one",
+            file.display()
+        )
+    );
+}

@@ -10,6 +10,9 @@ mod sfc;
 /// SFC charts of the graphical model lowered into textual SFC and run.
 mod sfc_chart;
 
+/// CFC charts compiled and run: execution order, feedback, marks, structures, EN/ENO, jumps.
+mod cfc;
+
 use program_image::ProgramImage;
 use runtime::simulation::Simulation;
 

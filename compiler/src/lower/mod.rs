@@ -11,6 +11,7 @@
 //! `docs/graphical-semantics.md`.
 
 mod boxes;
+mod cfc;
 mod fragment;
 mod locate;
 mod network;
@@ -26,7 +27,9 @@ use std::borrow::Cow;
 use std::collections::HashMap;
 use std::path::PathBuf;
 
-use project_model::{Body, ElementId, Method, Object, Pou, PouKind, Project, TextTarget};
+use project_model::{
+    Body, ElementId, Method, Object, Pou, PouKind, Project, TextTarget, VarSection, Variable,
+};
 
 use crate::diagnostic::Code;
 use fragment::Span;
@@ -135,8 +138,12 @@ pub(crate) enum Callee {
 /// Lowers every LD, FBD and SFC body of `project` and turns its transition objects into
 /// methods; a project without either is borrowed unchanged.
 pub fn lower_project(project: &Project) -> LoweredProject<'_> {
-    let graphical =
-        |body: &Body| matches!(body, Body::Ld { .. } | Body::Fbd { .. } | Body::Sfc { .. });
+    let graphical = |body: &Body| {
+        matches!(
+            body,
+            Body::Ld { .. } | Body::Fbd { .. } | Body::Sfc { .. } | Body::Cfc { .. }
+        )
+    };
     let pous: Vec<(PathBuf, &Pou)> = project_model::object_files(project)
         .into_iter()
         .filter_map(|(file, object)| match object {
@@ -166,6 +173,30 @@ pub fn lower_project(project: &Project) -> LoweredProject<'_> {
         })
         .collect();
     let classify = |name: &str| classify(&kinds, name);
+    // The declared types of the functions' outputs other than their result, which a chart
+    // stores in hidden variables.
+    let function_outputs: HashMap<(String, String), String> = project
+        .application
+        .objects()
+        .into_iter()
+        .chain(crate::library::objects())
+        .filter_map(|object| match object {
+            Object::Pou(pou) if pou.kind == PouKind::Function => Some(pou),
+            _ => None,
+        })
+        .flat_map(|pou| {
+            pou.variables
+                .iter()
+                .filter(|variable| variable.section == VarSection::VarOutput)
+                .map(|variable| {
+                    (
+                        (pou.name.to_lowercase(), variable.name.to_lowercase()),
+                        variable.ty.clone(),
+                    )
+                })
+                .collect::<Vec<_>>()
+        })
+        .collect();
     // The checker's view of the project types the boxes' results; built at the first box.
     let globals = std::cell::OnceCell::new();
     let mut lowered = project.clone();
@@ -206,9 +237,9 @@ pub fn lower_project(project: &Project) -> LoweredProject<'_> {
                 });
                 continue;
             }
-            let (Body::Ld { networks } | Body::Fbd { networks }) = body else {
+            if !matches!(body, Body::Ld { .. } | Body::Fbd { .. } | Body::Cfc { .. }) {
                 continue;
-            };
+            }
             let scope = std::cell::OnceCell::new();
             let typed_target = target.clone();
             let type_of = |expression: &str| {
@@ -219,7 +250,37 @@ pub fn lower_project(project: &Project) -> LoweredProject<'_> {
                 crate::sema::expression_declared_type(scope, expression)
             };
             let mut lowering = BodyLowering::new(prefix, &classify, &type_of);
-            lowering.body(networks);
+            match body {
+                Body::Cfc { chart } => {
+                    // A chart's results may read hidden variables (feedback, structures), so
+                    // they are typed in a scope that declares those known so far.
+                    let of_expressions = |hidden: &[Variable], expressions: &[String]| {
+                        let globals =
+                            globals.get_or_init(|| crate::sema::scope::Globals::new(project));
+                        let mut with_hidden = pou.clone();
+                        with_hidden.variables.extend(hidden.iter().cloned());
+                        let scope = crate::sema::expression_scope(globals, &with_hidden, &target);
+                        expressions
+                            .iter()
+                            .map(|expression| {
+                                crate::sema::expression_declared_type(&scope, expression)
+                            })
+                            .collect()
+                    };
+                    let of_function_output = |function: &str, pin: &str| {
+                        function_outputs
+                            .get(&(function.trim().to_lowercase(), pin.to_lowercase()))
+                            .cloned()
+                    };
+                    let types = cfc::ChartTypes {
+                        of_expressions: &of_expressions,
+                        of_function_output: &of_function_output,
+                    };
+                    lowering.chart(chart, &types);
+                }
+                Body::Ld { networks } | Body::Fbd { networks } => lowering.body(networks),
+                _ => {}
+            }
             hidden.append(&mut lowering.hidden);
             texts.push((index, lowering.out.text.clone()));
             bodies.push(LoweredBody {
@@ -424,6 +485,22 @@ impl LoweredBody {
             start += text.len();
         }
         None
+    }
+
+    /// The probe of the value at `pin` of `element` (`None` for the element itself or its
+    /// only pin; a pin's name without case), of kind [`ProbeKind::Value`]: in a CFC chart,
+    /// what a wire from that output pin carries (inverted when the pin is negated) or what
+    /// an input pin receives (`docs/graphical-semantics.md` §8.12).
+    pub fn value_probe(&self, element: ElementId, pin: Option<&str>) -> Option<&Probe> {
+        self.probes.iter().find(|probe| {
+            probe.element == element
+                && probe.kind == ProbeKind::Value
+                && match (&probe.pin, pin) {
+                    (Some(probed), Some(pin)) => probed.eq_ignore_ascii_case(pin.trim()),
+                    (None, None) => true,
+                    _ => false,
+                }
+        })
     }
 
     /// The hidden variables' names, lower case, with their descriptions.

@@ -560,7 +560,7 @@ pub(crate) fn chain_runs_boxes(nodes: &[FlowNode]) -> bool {
 }
 
 /// A name, path or literal that needs no parentheses as an operand.
-fn is_simple(text: &str) -> bool {
+pub(super) fn is_simple(text: &str) -> bool {
     !text.is_empty()
         && !text.starts_with(['-', '+'])
         && text
@@ -569,7 +569,7 @@ fn is_simple(text: &str) -> bool {
 }
 
 /// A variable's path (`a`, `fb.q`, `arr[1].x`), whose value can be read online by its path.
-fn is_path(text: &str) -> bool {
+pub(super) fn is_path(text: &str) -> bool {
     text.starts_with(|c: char| c.is_alphabetic() || c == '_')
         && !text.contains('#')
         && !matches!(text.to_ascii_uppercase().as_str(), "TRUE" | "FALSE")

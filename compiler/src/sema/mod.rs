@@ -383,20 +383,6 @@ fn check_pou_bodies(
             diagnostic,
         }));
     }
-    for (member, language) in chart_bodies(pou) {
-        found.push(ProjectDiagnostic {
-            file: file.to_owned(),
-            declaration: None,
-            element: None,
-            diagnostic: Diagnostic::new(
-                Code::UncompiledChart,
-                0..0,
-                format!(
-                    "the {language} chart of '{member}' cannot be compiled yet; Rivet compiles Structured Text, LD and FBD bodies"
-                ),
-            ),
-        });
-    }
     // Usage is only complete when every body is Structured Text that parsed.
     if clean && all_bodies_are_text(pou) {
         usage_warnings(globals, pou, &usage, &mut |name, diagnostic| {
@@ -461,39 +447,6 @@ fn check_pou_declarations<'p>(
             check_variables(globals, Some(pou), &accessor.variables, report);
         }
     }
-}
-
-/// The bodies of `pou` drawn as CFC charts (SFC charts are lowered), by the name of what they implement
-/// (`Main`, `Main.Reset`, `Main.Speed.get`) and their language's name.
-fn chart_bodies(pou: &Pou) -> Vec<(String, &'static str)> {
-    let mut bodies = vec![(pou.name.clone(), &pou.body)];
-    bodies.extend(
-        pou.methods
-            .iter()
-            .map(|m| (format!("{}.{}", pou.name, m.name), &m.body)),
-    );
-    bodies.extend(
-        pou.actions
-            .iter()
-            .map(|a| (format!("{}.{}", pou.name, a.name), &a.body)),
-    );
-    for property in &pou.properties {
-        for (accessor, word) in [(&property.get, "get"), (&property.set, "set")] {
-            if let Some(accessor) = accessor {
-                bodies.push((
-                    format!("{}.{}.{word}", pou.name, property.name),
-                    &accessor.body,
-                ));
-            }
-        }
-    }
-    bodies
-        .into_iter()
-        .filter_map(|(member, body)| match body {
-            Body::Cfc { .. } => Some((member, "CFC")),
-            _ => None,
-        })
-        .collect()
 }
 
 fn all_bodies_are_text(pou: &Pou) -> bool {

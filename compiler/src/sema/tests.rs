@@ -177,20 +177,3 @@ fn swapped_letters_count_as_one_edit() {
         Some("PT")
     );
 }
-
-#[test]
-fn cfc_charts_are_refused_by_the_checker_naming_what_they_implement() {
-    let mut main = pou("Main", PouKind::FunctionBlock, Vec::new(), "");
-    if let Node::Object(Object::Pou(main)) = &mut main {
-        main.body = Body::Cfc {
-            chart: Default::default(),
-        };
-    }
-    let found = messages(&project(vec![main]));
-    assert_eq!(
-        found,
-        [
-            "application/Main.pou.toml E0115: the CFC chart of 'Main' cannot be compiled yet; Rivet compiles Structured Text, LD and FBD bodies",
-        ]
-    );
-}

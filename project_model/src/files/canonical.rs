@@ -40,6 +40,12 @@ fn expand_table(table: &mut Table, is_network: bool) {
         }
         let holds_networks = key.get() == "network";
         let is_tree = is_network && matches!(key.get(), "rung" | "output");
+        if key.get() == "chart"
+            && let Some(chart) = cfc_chart_table(item)
+        {
+            *item = Item::Table(chart);
+            continue;
+        }
         let replacement = match item {
             Item::Value(Value::Array(array)) if is_tree && is_array_of_tables(array) => {
                 format_tree(array, 0, true);
@@ -208,6 +214,59 @@ fn format_tree_element(inline: &mut InlineTable, level: usize) {
             Some(key) => spread.push(key),
             None => return,
         }
+    }
+}
+
+/// A CFC chart (a `chart` holding `element` and `wire` lists, no SFC `node`s) as a standard
+/// table whose lists put one element and one wire on each line, whatever its width, so moving
+/// an element or re-routing a wire is a one-line diff; `None` for anything else.
+fn cfc_chart_table(item: &Item) -> Option<Table> {
+    let mut chart = match item {
+        Item::Value(Value::InlineTable(inline)) => inline.clone().into_table(),
+        Item::Table(table) => table.clone(),
+        _ => return None,
+    };
+    let is_cfc = (chart.contains_key("element") || chart.contains_key("wire"))
+        && !chart.contains_key("node");
+    if !is_cfc {
+        return None;
+    }
+    chart.decor_mut().clear();
+    chart.set_implicit(false);
+    for (mut key, item) in chart.iter_mut() {
+        key.leaf_decor_mut().clear();
+        let Item::Value(value) = item else { continue };
+        if let Value::Array(list) = value {
+            for entry in list.iter_mut() {
+                format_on_one_line(entry);
+                entry.decor_mut().set_prefix(format!("\n{INDENT}"));
+                entry.decor_mut().set_suffix("");
+            }
+            list.set_trailing("\n");
+            list.set_trailing_comma(true);
+        } else {
+            format_on_one_line(value);
+        }
+        value.decor_mut().clear();
+        value.decor_mut().set_prefix(" ");
+    }
+    Some(chart)
+}
+
+/// Gives a value the canonical spacing on one line, however long.
+fn format_on_one_line(value: &mut Value) {
+    match value {
+        Value::InlineTable(inline) => {
+            for (_, child) in inline.iter_mut() {
+                format_on_one_line(child);
+            }
+            inline.fmt();
+        }
+        Value::Array(array) => {
+            array.iter_mut().for_each(format_on_one_line);
+            array.fmt();
+        }
+        _ => {}
     }
 }
 

@@ -159,3 +159,29 @@ body = { language = "sfc", chart = { node = [{ type = "step", id = 1, name = "In
     assert!(second.written.is_empty(), "rewrote {:?}", second.written);
     assert_eq!(loaded.files, first.files);
 }
+
+#[test]
+fn a_cfc_chart_is_saved_one_element_and_one_wire_a_line() {
+    // The example of docs/project-format.md §4.2, with a box long enough to pass 100 columns.
+    let expected = r#"kind = "program"
+
+[body]
+language = "cfc"
+
+[body.chart]
+element = [
+    { id = 1, x = 2, y = 4, kind = { type = "input", expression = "rSetpoint" } },
+    { id = 2, x = 10, y = 4, order = 0, kind = { type = "box", type_name = "SUB", input = [{ name = "IN1" }, { name = "IN2", negated = true }], output = [{ name = "OUT" }] } },
+    { id = 3, x = 18, y = 4, order = 1, kind = { type = "output", expression = "rError" } },
+]
+wire = [
+    { from = { element = 1 }, to = { element = 2, pin = "IN1" } },
+    { from = { element = 2, pin = "OUT" }, to = { element = 3 }, points = [{ x = 15, y = 6 }] },
+]
+"#;
+    let compact = r#"kind = "program"
+body = { language = "cfc", chart = { element = [{ id = 1, x = 2, y = 4, kind = { type = "input", expression = "rSetpoint" } }, { id = 2, x = 10, y = 4, order = 0, kind = { type = "box", type_name = "SUB", input = [{ name = "IN1" }, { name = "IN2", negated = true }], output = [{ name = "OUT" }] } }, { id = 3, x = 18, y = 4, order = 1, kind = { type = "output", expression = "rError" } }], wire = [{ from = { element = 1 }, to = { element = 2, pin = "IN1" } }, { from = { element = 2, pin = "OUT" }, to = { element = 3 }, points = [{ x = 15, y = 6 }] }] } }
+"#;
+    assert_eq!(canonical(compact), expected);
+    assert_eq!(canonical(expected), expected);
+}
