@@ -13,6 +13,7 @@ mod application;
 mod axis;
 mod cam;
 mod cfc;
+pub mod cfc_edit;
 mod chart_replace;
 mod data_type;
 mod declaration_text;
@@ -50,6 +51,7 @@ pub use cam::{
     CamTable, CamTablePoint, MotionLaw, PointInterpolation, Tappet, TappetAction, TappetTrack,
 };
 pub use cfc::{CfcBox, CfcChart, CfcElement, CfcElementKind, CfcPin, GridPoint, PinRef, Wire};
+pub use cfc_edit::CfcEditError;
 pub use data_type::{DataType, EnumValue, StructMember, TypeDefinition};
 pub use declarations_edit::{
     DeclarationsChange, TypedDeclarations, TypedHeader, gvl_declarations_change,
