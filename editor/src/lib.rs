@@ -13,6 +13,7 @@
 //! canvas with automatic layout ([`ld_layout`], [`fbd_layout`]); and the read-only [`CodeView`]
 //! with lexical highlighting.
 
+mod cfc;
 mod code_view;
 mod device_editors;
 mod diagram;
@@ -23,6 +24,10 @@ mod st_highlight;
 mod table_texts;
 mod variable_table;
 
+pub use cfc::{
+    CfcChange, CfcDiagnostic, CfcEditor, CfcOrderCommand, CfcOutput, CfcRefusal, CfcSelection,
+    CfcTexts, CfcTool, VariableDragPayload,
+};
 pub use code_view::CodeView;
 pub use device_editors::{
     DeviceEdit, DeviceEditorState, DeviceTexts, Refusal, RefusalWords, axis_editor_ui,
