@@ -157,8 +157,8 @@ impl CfcEditor {
             let events = ui.input(|input| input.filtered_events(&filter));
             self.handle_events(&events, frame);
         }
-        self.pointer_ui(ui, &response, origin, services, frame);
-        self.drops_ui(&response, origin, services, frame);
+        self.pointer_ui(ui, &response, origin, frame);
+        self.drops_ui(&response, origin, frame);
         self.context_menu_ui(&response, origin, frame);
         self.route_drag();
         self.paint(
@@ -189,14 +189,7 @@ impl CfcEditor {
         }
     }
 
-    fn pointer_ui(
-        &mut self,
-        ui: &Ui,
-        response: &Response,
-        origin: Pos2,
-        services: &dyn DiagramServices,
-        frame: &mut FrameResult,
-    ) {
+    fn pointer_ui(&mut self, ui: &Ui, response: &Response, origin: Pos2, frame: &mut FrameResult) {
         // The modifiers of the click itself: a Ctrl+click may release Ctrl in the same frame.
         let modifiers = ui.input(|input| {
             input
@@ -234,7 +227,7 @@ impl CfcEditor {
             let grid = self.grid_at(origin, pointer);
             match self.tool {
                 Some(tool) if !self.read_only => {
-                    self.place(tool, grid, services, frame);
+                    self.place(tool, grid, frame);
                     // Ctrl+click places the same element again, as in CODESYS.
                     if !modifiers.command {
                         self.tool = None;
@@ -247,7 +240,7 @@ impl CfcEditor {
             && let Some(pointer) = response.interact_pointer_pos()
         {
             let grid = self.grid_at(origin, pointer);
-            self.open_entry_at(self.hit(grid), services);
+            self.open_entry_at(self.hit(grid));
         }
     }
 
@@ -429,13 +422,7 @@ impl CfcEditor {
     }
 
     /// Places the toolbox element `tool` at grid position `grid` and opens its text field.
-    pub(super) fn place(
-        &mut self,
-        tool: CfcTool,
-        grid: Pos2,
-        services: &dyn DiagramServices,
-        frame: &mut FrameResult,
-    ) {
+    pub(super) fn place(&mut self, tool: CfcTool, grid: Pos2, frame: &mut FrameResult) {
         let point = GridPoint {
             x: grid.x.floor().max(0.0) as i32,
             y: grid.y.floor().max(0.0) as i32,
@@ -518,7 +505,7 @@ impl CfcEditor {
             self.selection.elements = vec![id];
             self.selection.wire = None;
             if let Some(target) = field {
-                self.open_entry(target(id), String::new(), services);
+                self.open_entry(target(id), String::new());
             }
         }
     }
@@ -567,13 +554,7 @@ impl CfcEditor {
     }
 
     /// A toolbox element or a variable dropped on the canvas.
-    fn drops_ui(
-        &mut self,
-        response: &Response,
-        origin: Pos2,
-        services: &dyn DiagramServices,
-        frame: &mut FrameResult,
-    ) {
+    fn drops_ui(&mut self, response: &Response, origin: Pos2, frame: &mut FrameResult) {
         let Some(pointer) = response.hover_pos() else {
             return;
         };
@@ -581,7 +562,7 @@ impl CfcEditor {
         if let Some(tool) = response.dnd_release_payload::<CfcTool>()
             && !self.read_only
         {
-            self.place(*tool, grid, services, frame);
+            self.place(*tool, grid, frame);
         }
         if let Some(variable) = response.dnd_release_payload::<VariableDragPayload>()
             && !self.read_only

@@ -55,12 +55,7 @@ pub(super) struct CfcEntry {
 
 impl CfcEditor {
     /// Opens a text field for `target` holding `text`.
-    pub(super) fn open_entry(
-        &mut self,
-        target: EntryTarget,
-        text: String,
-        _services: &dyn DiagramServices,
-    ) {
+    pub(super) fn open_entry(&mut self, target: EntryTarget, text: String) {
         if self.read_only && !matches!(target, EntryTarget::Prepared(_)) {
             return;
         }
@@ -71,11 +66,7 @@ impl CfcEditor {
     }
 
     /// Opens the field a double click on `hit` asks for.
-    pub(super) fn open_entry_at(
-        &mut self,
-        hit: super::canvas::Hit,
-        services: &dyn DiagramServices,
-    ) {
+    pub(super) fn open_entry_at(&mut self, hit: super::canvas::Hit) {
         use super::canvas::Hit;
         let (id, instance_row) = match hit {
             Hit::Element(id) => (id, false),
@@ -109,7 +100,7 @@ impl CfcEditor {
             CfcElementKind::Return => return,
             kind => (EntryTarget::Text(id), shown(element_title(kind))),
         };
-        self.open_entry(target, text, services);
+        self.open_entry(target, text);
     }
 
     /// Shows the open text field over its element.
@@ -211,7 +202,7 @@ impl CfcEditor {
                 );
                 let needs_instance = signature.function_block && self.instance_of(id).is_empty();
                 if self.apply(result, frame) && needs_instance {
-                    self.open_entry(EntryTarget::Instance(id), String::new(), services);
+                    self.open_entry(EntryTarget::Instance(id), String::new());
                 }
             }
             EntryTarget::Instance(id) => {

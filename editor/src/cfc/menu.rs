@@ -231,6 +231,12 @@ impl CfcEditor {
                 }
             }
             Key::Delete | Key::Backspace => self.delete_selection(frame),
+            // Enter and F2 type into the selected element, as a double click does.
+            Key::Enter | Key::F2 => {
+                if let [id] = self.selection.elements.as_slice() {
+                    self.open_entry_at(Hit::Element(*id));
+                }
+            }
             Key::Escape => {
                 self.tool = None;
                 self.drag = None;

@@ -9,7 +9,10 @@ use project_model::{CfcChart, CfcElementKind, ElementId, PinRef};
 use super::canvas::Hit;
 use super::editor::FrameResult;
 use super::*;
-use crate::diagram::{BlockSignature, DiagramServices, InstanceDeclaration};
+use crate::diagram::{
+    BlockSignature, DiagramOnline, DiagramServices, InstanceDeclaration, OnlineValue,
+    PreparedOperand,
+};
 use crate::{CompletionItem, CompletionKind};
 
 /// Services knowing the variables a, b and y and the blocks ADD and TON.
@@ -69,6 +72,7 @@ struct Host {
     changes: usize,
     declared: Vec<InstanceDeclaration>,
     refusals: Vec<CfcRefusal>,
+    prepared: Vec<PreparedOperand>,
 }
 
 fn harness(chart: CfcChart) -> Harness<'static, Host> {
@@ -80,6 +84,7 @@ fn harness(chart: CfcChart) -> Harness<'static, Host> {
         changes: 0,
         declared: Vec::new(),
         refusals: Vec::new(),
+        prepared: Vec::new(),
     };
     let mut harness = Harness::builder()
         .with_size(egui::vec2(1000.0, 700.0))
@@ -95,6 +100,7 @@ fn harness(chart: CfcChart) -> Harness<'static, Host> {
                 }
                 host.declared.extend(output.declare_instance);
                 host.refusals.extend(output.refusal);
+                host.prepared.extend(output.prepared);
             },
             host,
         );
@@ -409,4 +415,200 @@ fn every_wire_is_routed_clear_of_the_boxes() {
             }
         }
     }
+}
+
+/// A secondary click at `pos`, which opens the context menu.
+fn right_click(harness: &mut Harness<'static, Host>, pos: Pos2) {
+    harness.hover_at(pos);
+    harness.run_steps(1);
+    for pressed in [true, false] {
+        harness.event(Event::PointerButton {
+            pos,
+            button: egui::PointerButton::Secondary,
+            pressed,
+            modifiers: Modifiers::NONE,
+        });
+    }
+    harness.run_steps(2);
+}
+
+#[test]
+fn the_context_menu_sends_an_output_to_the_front() {
+    let mut harness = drawn_chart();
+    let output = screen(&harness, 36.0, 5.0);
+    right_click(&mut harness, output);
+    harness.get_by_label("Execution Order").hover();
+    harness.run_steps(3);
+    harness.get_by_label("Send to Front").click();
+    harness.run_steps(3);
+    assert_eq!(
+        orders(&harness.state().chart),
+        vec![(0, None), (1, Some(1)), (2, Some(0))]
+    );
+}
+
+#[test]
+fn the_context_menu_negates_a_pin_and_sets_its_execution_order_by_number() {
+    let mut harness = drawn_chart();
+    let in2 = pin_at(&harness, 1, "IN2", false);
+    right_click(&mut harness, in2);
+    harness.get_by_label("Negate").click();
+    harness.run_steps(3);
+    let CfcElementKind::Box(block) = &harness.state().chart.elements[1].kind else {
+        panic!("a box");
+    };
+    assert!(block.inputs[1].negated && !block.inputs[0].negated);
+    let head = screen(&harness, 16.0, 4.0);
+    right_click(&mut harness, head);
+    harness.get_by_label("Execution Order").hover();
+    harness.run_steps(3);
+    harness.get_by_label("Set Execution Order…").click();
+    harness.run_steps(3);
+    harness.key_press(Key::Backspace);
+    type_and_enter(&mut harness, "1");
+    assert_eq!(
+        orders(&harness.state().chart),
+        vec![(0, None), (1, Some(1)), (2, Some(0))]
+    );
+    let head = screen(&harness, 16.0, 4.0);
+    right_click(&mut harness, head);
+    harness.get_by_label("Execution Order").hover();
+    harness.run_steps(3);
+    harness.get_by_label("Set Execution Order…").click();
+    harness.run_steps(3);
+    harness.key_press(Key::Backspace);
+    type_and_enter(&mut harness, "x");
+    assert_eq!(
+        harness.state().refusals,
+        vec![CfcRefusal::NotANumber("x".to_owned())]
+    );
+}
+
+#[test]
+fn the_toolbox_control_point_pins_a_wire_and_its_route_passes_there() {
+    let mut harness = drawn_chart();
+    let route = harness.state().editor.routes[&pin(2, "")].clone();
+    // The middle of the wire's longest segment, away from the pins.
+    let longest = route
+        .windows(2)
+        .max_by_key(|s| (s[0].x - s[1].x).abs() + (s[0].y - s[1].y).abs())
+        .unwrap();
+    let middle = (
+        (longest[0].x + longest[1].x) / 2,
+        (longest[0].y + longest[1].y) / 2,
+    );
+    harness.get_by_label("Control point").click();
+    harness.run_steps(2);
+    let at = screen(&harness, middle.0 as f32, middle.1 as f32);
+    click(&mut harness, at);
+    let wire = harness
+        .state()
+        .chart
+        .wires
+        .iter()
+        .find(|w| w.to == pin(2, ""))
+        .unwrap()
+        .clone();
+    assert_eq!(
+        wire.points,
+        vec![project_model::GridPoint {
+            x: middle.0,
+            y: middle.1
+        }]
+    );
+    // Dragged down, the point takes the route with it.
+    let to = screen(&harness, middle.0 as f32, middle.1 as f32 + 8.0);
+    drag(&mut harness, at, to);
+    let moved = project_model::GridPoint {
+        x: middle.0,
+        y: middle.1 + 8,
+    };
+    let wire = harness
+        .state()
+        .chart
+        .wires
+        .iter()
+        .find(|w| w.to == pin(2, ""))
+        .unwrap()
+        .clone();
+    assert_eq!(wire.points, vec![moved]);
+    let route = &harness.state().editor.routes[&pin(2, "")];
+    assert!(
+        route.windows(2).any(|s| {
+            (s[0].x == moved.x && (s[0].y.min(s[1].y)..=s[0].y.max(s[1].y)).contains(&moved.y))
+                || (s[0].y == moved.y
+                    && (s[0].x.min(s[1].x)..=s[0].x.max(s[1].x)).contains(&moved.x))
+        }),
+        "{route:?} passes {moved:?}"
+    );
+}
+
+#[test]
+fn the_toolbox_input_pin_extends_an_add_box_and_enter_retypes_a_box() {
+    let mut harness = drawn_chart();
+    harness.get_by_label("Input pin").click();
+    harness.run_steps(2);
+    let head = screen(&harness, 16.0, 4.0);
+    click(&mut harness, head);
+    let CfcElementKind::Box(block) = &harness.state().chart.elements[1].kind else {
+        panic!("a box");
+    };
+    let names: Vec<&str> = block.inputs.iter().map(|pin| pin.name.as_str()).collect();
+    assert_eq!(names, ["IN1", "IN2", "IN3"]);
+    // Enter on the selected box opens its type; TON re-creates the pins and drops the wires
+    // of the pins that went away.
+    click(&mut harness, head);
+    harness.key_press(Key::Enter);
+    harness.run_steps(3);
+    for _ in 0..3 {
+        harness.key_press(Key::Backspace);
+    }
+    type_and_enter(&mut harness, "TON");
+    harness.key_press(Key::Escape);
+    harness.run_steps(3);
+    let chart = &harness.state().chart;
+    let CfcElementKind::Box(block) = &chart.elements[1].kind else {
+        panic!("a box");
+    };
+    assert_eq!(block.type_name, "TON");
+    assert!(chart.wires.is_empty(), "{:?}", chart.wires);
+}
+
+#[test]
+fn online_values_show_and_a_double_click_prepares_a_value() {
+    let mut harness = drawn_chart();
+    let mut online = DiagramOnline::default();
+    online.values.insert(
+        (ElementId(0), None),
+        OnlineValue {
+            text: "42".to_owned(),
+            forced: false,
+        },
+    );
+    online.values.insert(
+        (ElementId(1), Some("OUT".to_owned())),
+        OnlineValue {
+            text: "43".to_owned(),
+            forced: true,
+        },
+    );
+    harness.state_mut().editor.set_online(Some(online));
+    harness.run_steps(2);
+    let changes = harness.state().changes;
+    let input = screen(&harness, 3.0, 5.0);
+    double_click(&mut harness, input);
+    type_and_enter(&mut harness, "7");
+    assert_eq!(
+        harness.state().prepared,
+        vec![PreparedOperand {
+            element: ElementId(0),
+            operand: "a".to_owned(),
+            value: "7".to_owned(),
+        }]
+    );
+    assert_eq!(
+        harness.state().changes,
+        changes,
+        "preparing a value changes nothing"
+    );
 }
