@@ -155,7 +155,7 @@ impl CfcEditor {
             };
             ui.memory_mut(|memory| memory.set_focus_lock_filter(id, filter));
             let events = ui.input(|input| input.filtered_events(&filter));
-            self.handle_events(&events, frame);
+            self.handle_events(ui.ctx(), &events, frame);
         }
         self.pointer_ui(ui, &response, origin, frame);
         self.drops_ui(&response, origin, frame);
@@ -374,16 +374,23 @@ impl CfcEditor {
                     (Hit::Output(source), false) => {
                         Some(edit::connect(&self.chart, &source, &from))
                     }
-                    // A box input pin dragged onto a box's frame extends it, as the
-                    // toolbox's input pin does.
-                    (Hit::Element(id), false) if self.is_box(id) && self.is_box(from.element) => {
-                        Some(edit::extend_box(&self.chart, id))
+                    // Dropped on an element rather than its pin: its only pin of the
+                    // matching side, as on an output or an input.
+                    (Hit::Element(id), _) => self.only_pin(id, from_output).map(|pin| {
+                        if from_output {
+                            edit::connect(&self.chart, &from, &pin)
+                        } else {
+                            edit::connect(&self.chart, &pin, &from)
+                        }
+                    }),
+                    // Output to output or input to input: the pin dropped on is refused.
+                    (Hit::Output(target), true) | (Hit::Input(target), false) => {
+                        Some(Err(if from_output {
+                            project_model::CfcEditError::NotAnInput(target)
+                        } else {
+                            project_model::CfcEditError::NotAnOutput(target)
+                        }))
                     }
-                    (Hit::Input(_), false) | (Hit::Output(_), true) => Some(Err(if from_output {
-                        project_model::CfcEditError::NotAnInput(from.clone())
-                    } else {
-                        project_model::CfcEditError::NotAnOutput(from.clone())
-                    })),
                     _ => None,
                 };
                 if let Some(result) = result {
@@ -413,12 +420,17 @@ impl CfcEditor {
         }
     }
 
-    /// Whether `id` is a box.
-    fn is_box(&self, id: ElementId) -> bool {
-        self.chart
-            .elements
-            .iter()
-            .any(|e| e.id == id && matches!(e.kind, CfcElementKind::Box(_)))
+    /// The pin of element `id` on the input (or output) side when it has exactly one.
+    fn only_pin(&self, id: ElementId, input: bool) -> Option<PinRef> {
+        let shape = self.shapes.get(&id)?;
+        let pins = if input { &shape.inputs } else { &shape.outputs };
+        match pins.as_slice() {
+            [(name, _)] => Some(PinRef {
+                element: id,
+                pin: name.clone(),
+            }),
+            _ => None,
+        }
     }
 
     /// Places the toolbox element `tool` at grid position `grid` and opens its text field.

@@ -1,5 +1,6 @@
 //! [`CfcEditor`]: its state, what the app sets each frame, and the frame itself.
 
+use std::borrow::Cow;
 use std::collections::{HashMap, HashSet};
 
 use egui::scroll_area::ScrollSource;
@@ -121,8 +122,6 @@ pub struct CfcEditor {
     pub(super) focus_requested: bool,
     /// Commands from the app's menus, run at the next `show`.
     pub(super) pending_commands: Vec<CfcOrderCommand>,
-    /// The elements copied last, with the wires between them.
-    pub(super) clipboard: Option<CfcChart>,
     /// The screen position of the content's top-left corner in the last frame.
     pub(super) last_origin: Pos2,
     /// What the open context menu was opened on.
@@ -163,7 +162,6 @@ impl CfcEditor {
             read_only: false,
             focus_requested: false,
             pending_commands: Vec::new(),
-            clipboard: None,
             last_origin: Pos2::ZERO,
             context_hit: None,
         };
@@ -420,13 +418,13 @@ impl CfcEditor {
     }
 
     /// The shape of `id` as drawn this frame: displaced while it is dragged.
-    pub(super) fn shape_now(&self, id: ElementId) -> Option<ElementShape> {
+    pub(super) fn shape_now(&self, id: ElementId) -> Option<Cow<'_, ElementShape>> {
         let delta = self.drag_delta();
         if delta != GridPoint::default() && self.selection.elements.contains(&id) {
             let element = self.chart.elements.iter().find(|e| e.id == id)?;
-            return Some(element_shape(element, delta));
+            return Some(Cow::Owned(element_shape(element, delta)));
         }
-        self.shapes.get(&id).cloned()
+        self.shapes.get(&id).map(Cow::Borrowed)
     }
 
     /// The offset of the move in progress, zero when nothing is moved.

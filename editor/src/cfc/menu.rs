@@ -1,6 +1,8 @@
 //! The context menu and the keyboard: execution order commands, pin modifiers, output kinds,
 //! control points, deletion, clipboard and moving by arrow keys.
 
+use std::sync::Arc;
+
 use egui::{Event, Key, Modifiers, Pos2, Response};
 use project_model::cfc_edit as edit;
 use project_model::{CfcEditError, CfcElementKind, CoilKind, Edge, GridPoint, PinRef};
@@ -178,15 +180,20 @@ impl CfcEditor {
     }
 
     /// The keys of the focused canvas.
-    pub(super) fn handle_events(&mut self, events: &[Event], frame: &mut FrameResult) {
+    pub(super) fn handle_events(
+        &mut self,
+        ctx: &egui::Context,
+        events: &[Event],
+        frame: &mut FrameResult,
+    ) {
         for event in events {
             match event {
-                Event::Copy => self.copy(),
+                Event::Copy => self.copy(ctx),
                 Event::Cut => {
-                    self.copy();
+                    self.copy(ctx);
                     self.delete_selection(frame);
                 }
-                Event::Paste(_) => self.paste(frame),
+                Event::Paste(text) => self.paste(ctx, text, frame),
                 Event::Key {
                     key,
                     pressed: true,
@@ -250,28 +257,82 @@ impl CfcEditor {
         }
     }
 
-    fn copy(&mut self) {
-        if let Ok(fragment) = edit::copy_elements(&self.chart, &self.selection.elements) {
-            self.clipboard = Some(fragment);
-        }
+    fn clipboard_id() -> egui::Id {
+        egui::Id::unique("editor::cfc::clipboard")
     }
 
-    fn paste(&mut self, frame: &mut FrameResult) {
-        let Some(fragment) = self.clipboard.clone() else {
+    /// Copies the selected elements with the wires between them. Other applications get their
+    /// texts; a CFC editor pastes the elements kept in the context, shared by all of them.
+    fn copy(&self, ctx: &egui::Context) {
+        let Ok(fragment) = edit::copy_elements(&self.chart, &self.selection.elements) else {
             return;
         };
-        let (chart, ids) = edit::paste_elements(&self.chart, &fragment, PASTE_OFFSET);
+        let text = fragment
+            .elements
+            .iter()
+            .map(|element| super::geometry::element_title(&element.kind))
+            .filter(|word| !word.is_empty())
+            .collect::<Vec<_>>()
+            .join(" ");
+        ctx.copy_text(text.clone());
+        ctx.data_mut(|data| {
+            data.insert_temp(
+                Self::clipboard_id(),
+                Arc::new(CopiedElements { text, fragment }),
+            )
+        });
+    }
+
+    /// Pastes the elements copied last beside where they were, or, when the system clipboard
+    /// holds other text (a name copied elsewhere), types that text into the selected element.
+    fn paste(&mut self, ctx: &egui::Context, text: &str, frame: &mut FrameResult) {
+        if self.read_only {
+            return;
+        }
+        let copied = ctx.data(|data| data.get_temp::<Arc<CopiedElements>>(Self::clipboard_id()));
+        let Some(copied) = copied.filter(|copied| text.is_empty() || copied.text == text) else {
+            if let [id] = self.selection.elements.as_slice()
+                && !text.trim().is_empty()
+            {
+                let result = edit::set_text(&self.chart, *id, text.trim());
+                self.apply(result, frame);
+            }
+            return;
+        };
+        let (chart, ids) = edit::paste_elements(&self.chart, &copied.fragment, PASTE_OFFSET);
         if self.apply(Ok(chart), frame) {
-            self.selection.elements = ids;
+            self.selection.elements = ids.clone();
             self.selection.wire = None;
             // A second paste lands beside the first.
             if let Ok(moved) = edit::move_elements(
-                &fragment,
-                &fragment.elements.iter().map(|e| e.id).collect::<Vec<_>>(),
+                &copied.fragment,
+                &copied
+                    .fragment
+                    .elements
+                    .iter()
+                    .map(|e| e.id)
+                    .collect::<Vec<_>>(),
                 PASTE_OFFSET,
             ) {
-                self.clipboard = Some(moved);
+                ctx.data_mut(|data| {
+                    data.insert_temp(
+                        Self::clipboard_id(),
+                        Arc::new(CopiedElements {
+                            text: copied.text.clone(),
+                            fragment: moved,
+                        }),
+                    )
+                });
             }
         }
     }
+}
+
+/// The elements a CFC editor copied, and the text it gave the system clipboard for them.
+#[derive(Clone, Debug)]
+struct CopiedElements {
+    /// The text on the system clipboard.
+    text: String,
+    /// The elements and the wires between them.
+    fragment: project_model::CfcChart,
 }

@@ -382,6 +382,9 @@ impl CfcEditor {
 
     /// The messages of the findings on the element under the pointer, as a tooltip.
     fn findings_tooltip(&self, origin: Pos2, response: &Response) {
+        if self.diagnostics.is_empty() {
+            return;
+        }
         let Some(pointer) = response.hover_pos() else {
             return;
         };

@@ -612,3 +612,61 @@ fn online_values_show_and_a_double_click_prepares_a_value() {
         "preparing a value changes nothing"
     );
 }
+
+#[test]
+fn copy_and_paste_give_fresh_elements_with_their_wire_beside_the_originals() {
+    let mut harness = drawn_chart();
+    harness.state_mut().editor.selection = CfcSelection {
+        elements: vec![ElementId(0), ElementId(1)],
+        wire: None,
+    };
+    harness.event(Event::Copy);
+    harness.run_steps(2);
+    harness.event(Event::Paste("a ADD".to_owned()));
+    harness.run_steps(2);
+    let chart = &harness.state().chart;
+    assert_eq!(chart.elements.len(), 5);
+    assert!(
+        chart
+            .wires
+            .iter()
+            .any(|w| w.from == pin(3, "") && w.to == pin(4, "IN1"))
+    );
+    let pasted = chart
+        .elements
+        .iter()
+        .find(|e| e.id == ElementId(3))
+        .unwrap();
+    assert_eq!((pasted.x, pasted.y), (4, 6));
+    assert_eq!(
+        harness.state().editor.selection().elements,
+        vec![ElementId(3), ElementId(4)]
+    );
+}
+
+#[test]
+fn a_wire_dropped_on_an_element_takes_its_only_pin_and_output_to_output_is_refused() {
+    let mut harness = drawn_chart();
+    // A second output, below; the box's output dropped on its frame.
+    place(&mut harness, "Output", 34.0, 12.0, "b");
+    let from = pin_at(&harness, 1, "OUT", true);
+    let frame = screen(&harness, 36.0, 13.0);
+    drag(&mut harness, from, frame);
+    assert!(
+        harness
+            .state()
+            .chart
+            .wires
+            .iter()
+            .any(|w| w.from == pin(1, "OUT") && w.to == pin(3, ""))
+    );
+    let from = pin_at(&harness, 1, "OUT", true);
+    let input_output = pin_at(&harness, 0, "", true);
+    drag(&mut harness, from, input_output);
+    assert_eq!(
+        harness.state().refusals,
+        vec![CfcRefusal::Edit(project_model::CfcEditError::NotAnInput(
+            pin(0, "")
+        ))]
+    );
+}
