@@ -10,7 +10,8 @@
 //! that lists each channel of the controller's I/O areas and of the Modbus TCP devices with the
 //! variables bound to it; the device editors ([`controller_editor_ui`], [`io_area_editor_ui`],
 //! [`modbus_device_editor_ui`], [`axis_editor_ui`]); the combined LD/FBD [`DiagramEditor`] on a
-//! canvas with automatic layout ([`ld_layout`], [`fbd_layout`]); and the read-only [`CodeView`]
+//! canvas with automatic layout ([`ld_layout`], [`fbd_layout`]); the [`CfcEditor`] with free
+//! placement, routed wires and the execution order; and the read-only [`CodeView`]
 //! with lexical highlighting.
 
 mod cfc;

@@ -670,3 +670,26 @@ fn a_wire_dropped_on_an_element_takes_its_only_pin_and_output_to_output_is_refus
         ))]
     );
 }
+
+#[test]
+fn a_clicked_wire_is_selected_and_delete_removes_only_it() {
+    let mut harness = drawn_chart();
+    let route = harness.state().editor.routes[&pin(2, "")].clone();
+    let longest = route
+        .windows(2)
+        .max_by_key(|s| (s[0].x - s[1].x).abs() + (s[0].y - s[1].y).abs())
+        .unwrap();
+    let at = screen(
+        &harness,
+        (longest[0].x + longest[1].x) as f32 / 2.0,
+        (longest[0].y + longest[1].y) as f32 / 2.0,
+    );
+    click(&mut harness, at);
+    assert_eq!(harness.state().editor.selection().wire, Some(pin(2, "")));
+    harness.key_press(Key::Delete);
+    harness.run_steps(3);
+    let chart = &harness.state().chart;
+    assert_eq!(chart.elements.len(), 3);
+    assert_eq!(chart.wires.len(), 1);
+    assert_eq!(chart.wires[0].to, pin(1, "IN1"));
+}
