@@ -693,3 +693,35 @@ fn a_clicked_wire_is_selected_and_delete_removes_only_it() {
     assert_eq!(chart.wires.len(), 1);
     assert_eq!(chart.wires[0].to, pin(1, "IN1"));
 }
+
+#[test]
+fn a_toolbox_element_dragged_onto_the_canvas_is_placed_where_it_is_dropped() {
+    let mut harness = harness(CfcChart::default());
+    let label = harness.get_by_label("Label").rect().center();
+    let at = screen(&harness, 20.5, 8.5);
+    drag(&mut harness, label, at);
+    type_and_enter(&mut harness, "retry");
+    let chart = &harness.state().chart;
+    assert_eq!(chart.elements.len(), 1, "{chart:?}");
+    assert_eq!((chart.elements[0].x, chart.elements[0].y), (20, 8));
+    assert!(matches!(&chart.elements[0].kind, CfcElementKind::Label { name } if name == "retry"));
+    assert_eq!(chart.elements[0].order, Some(0));
+}
+
+#[test]
+fn a_rubber_band_selects_elements_and_a_drag_moves_them_together() {
+    let mut harness = drawn_chart();
+    let from = screen(&harness, 1.0, 1.0);
+    let to = screen(&harness, 24.0, 11.0);
+    drag(&mut harness, from, to);
+    assert_eq!(
+        harness.state().editor.selection().elements,
+        vec![ElementId(0), ElementId(1)]
+    );
+    let grab = screen(&harness, 16.0, 4.0);
+    let drop = screen(&harness, 16.0, 24.0);
+    drag(&mut harness, grab, drop);
+    let chart = &harness.state().chart;
+    let places: Vec<(i32, i32)> = chart.elements.iter().map(|e| (e.x, e.y)).collect();
+    assert_eq!(places, vec![(2, 24), (14, 23), (34, 4)]);
+}
