@@ -112,6 +112,8 @@ pub struct CfcEditor {
     pub(super) diagnostics: Vec<CfcDiagnostic>,
     /// The worst severity on each element.
     pub(super) marks: HashMap<ElementId, Severity>,
+    /// The worst severity on each pin, for the findings that name a pin.
+    pub(super) pin_marks: HashMap<(ElementId, String), Severity>,
     /// The online values; `None` while offline.
     pub(super) online: Option<DiagramOnline>,
     /// The words shown.
@@ -157,6 +159,7 @@ impl CfcEditor {
             show_order: true,
             diagnostics: Vec::new(),
             marks: HashMap::new(),
+            pin_marks: HashMap::new(),
             online: None,
             texts: CfcTexts::default(),
             read_only: false,
@@ -247,11 +250,21 @@ impl CfcEditor {
             Severity::Info => 0,
         };
         self.marks.clear();
+        self.pin_marks.clear();
         for diagnostic in &diagnostics {
             if let Some(id) = diagnostic.element {
                 let mark = self.marks.entry(id).or_insert(diagnostic.severity);
                 if rank(&diagnostic.severity) > rank(mark) {
                     *mark = diagnostic.severity;
+                }
+                if let Some(pin) = &diagnostic.pin {
+                    let mark = self
+                        .pin_marks
+                        .entry((id, pin.clone()))
+                        .or_insert(diagnostic.severity);
+                    if rank(&diagnostic.severity) > rank(mark) {
+                        *mark = diagnostic.severity;
+                    }
                 }
             }
         }

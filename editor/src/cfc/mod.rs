@@ -13,6 +13,7 @@ mod entry;
 pub mod geometry;
 mod menu;
 mod paint;
+mod placing;
 pub mod router;
 mod texts;
 mod toolbox;

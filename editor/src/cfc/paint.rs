@@ -291,6 +291,13 @@ impl CfcEditor {
             _ => (&[], &[]),
         };
         let ring = |at: Pos2| painter.circle_stroke(at, 0.3 * unit, stroke);
+        // A pin a finding names is written in the finding's colour.
+        let pin_color = |name: &str| match self.pin_marks.get(&(element.id, name.to_owned())) {
+            Some(Severity::Error) => colors.palette.error,
+            Some(Severity::Warning) => colors.palette.warning,
+            Some(_) => colors.palette.info,
+            None => colors.text,
+        };
         for (name, point) in &shape.inputs {
             let at = self.screen(origin, point.x as f32, point.y as f32);
             let pin = inputs.iter().find(|pin| pin.name == *name);
@@ -316,7 +323,7 @@ impl CfcEditor {
                     Align2::LEFT_CENTER,
                     format!("{edge}{name}"),
                     font.clone(),
-                    colors.text,
+                    pin_color(name),
                 );
             }
             if let Some(value) = self.online_value(&(element.id, Some(name.clone())))
@@ -338,7 +345,7 @@ impl CfcEditor {
                     Align2::RIGHT_CENTER,
                     name,
                     font.clone(),
-                    colors.text,
+                    pin_color(name),
                 );
             }
         }

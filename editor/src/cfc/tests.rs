@@ -725,3 +725,27 @@ fn a_rubber_band_selects_elements_and_a_drag_moves_them_together() {
     let places: Vec<(i32, i32)> = chart.elements.iter().map(|e| (e.x, e.y)).collect();
     assert_eq!(places, vec![(2, 24), (14, 23), (34, 4)]);
 }
+
+#[test]
+fn findings_mark_their_element_and_pin_with_the_worst_severity() {
+    let harness = drawn_chart();
+    let mut editor = CfcEditor::new(&harness.state().chart);
+    let finding = |severity, pin: Option<&str>| CfcDiagnostic {
+        element: Some(ElementId(1)),
+        pin: pin.map(str::to_owned),
+        severity,
+        code: "E0104".to_owned(),
+        message: "type mismatch".to_owned(),
+    };
+    editor.set_diagnostics(vec![
+        finding(crate::Severity::Warning, None),
+        finding(crate::Severity::Error, Some("IN2")),
+        finding(crate::Severity::Info, Some("IN2")),
+    ]);
+    assert_eq!(editor.marks[&ElementId(1)], crate::Severity::Error);
+    assert_eq!(
+        editor.pin_marks[&(ElementId(1), "IN2".to_owned())],
+        crate::Severity::Error
+    );
+    assert!(!editor.marks.contains_key(&ElementId(0)));
+}
