@@ -146,6 +146,28 @@ impl CfcEditor {
                     self.texts.expression_field.clone(),
                     services.variables(&entry.field.text),
                 ),
+                // A jump completes the chart's labels.
+                (EntryTarget::Text(_), Some(CfcElementKind::Jump { .. })) => {
+                    let typed = entry.field.text.to_lowercase();
+                    let labels = self
+                        .chart
+                        .elements
+                        .iter()
+                        .filter_map(|element| match &element.kind {
+                            CfcElementKind::Label { name }
+                                if name.to_lowercase().starts_with(&typed) =>
+                            {
+                                Some(CompletionItem {
+                                    label: name.clone(),
+                                    kind: crate::CompletionKind::Other,
+                                    detail: String::new(),
+                                })
+                            }
+                            _ => None,
+                        })
+                        .collect();
+                    (self.texts.name_field.clone(), labels)
+                }
                 (EntryTarget::Text(_), Some(CfcElementKind::Comment { .. })) => {
                     (self.texts.comment_field.clone(), Vec::new())
                 }

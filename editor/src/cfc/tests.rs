@@ -749,3 +749,12 @@ fn findings_mark_their_element_and_pin_with_the_worst_severity() {
     );
     assert!(!editor.marks.contains_key(&ElementId(0)));
 }
+
+#[test]
+fn a_jump_completes_the_labels_of_the_chart() {
+    let mut harness = harness(CfcChart::default());
+    place(&mut harness, "Label", 2.0, 2.0, "retry");
+    place(&mut harness, "Jump", 2.0, 8.0, "re");
+    let chart = &harness.state().chart;
+    assert!(matches!(&chart.elements[1].kind, CfcElementKind::Jump { label } if label == "retry"));
+}
