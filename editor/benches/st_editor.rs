@@ -1,7 +1,8 @@
 //! Frame time of the Structured Text editor on a 20,000-line POU, headless in an egui context:
 //! a frame that scrolls to a new place, a frame that types one character, and a scrolling
 //! frame with 500 inline values; and of the diagram editor on a 500-network LD body while an
-//! element is dragged over it (`diagram_frames`). Run with `cargo bench -p editor`.
+//! element is dragged over it (`diagram_frames`); and of the CFC editor on a 300-element chart
+//! while a box is dragged (`cfc_frames`). Run with `cargo bench -p editor`.
 
 #![allow(missing_docs)] // criterion_group! writes an undocumented function.
 
@@ -10,6 +11,8 @@ use std::time::{Duration, Instant};
 
 use criterion::{Criterion, criterion_group, criterion_main};
 
+#[path = "st_editor/cfc_frames.rs"]
+mod cfc_frames;
 #[path = "st_editor/diagram_frames.rs"]
 mod diagram_frames;
 use editor::{InlineValue, KeywordCompletions, StEditor};
@@ -148,5 +151,10 @@ fn benchmarks(c: &mut Criterion) {
     });
 }
 
-criterion_group!(benches, benchmarks, diagram_frames::benchmarks);
+criterion_group!(
+    benches,
+    benchmarks,
+    diagram_frames::benchmarks,
+    cfc_frames::benchmarks
+);
 criterion_main!(benches);

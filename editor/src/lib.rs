@@ -10,9 +10,12 @@
 //! that lists each channel of the controller's I/O areas and of the Modbus TCP devices with the
 //! variables bound to it; the device editors ([`controller_editor_ui`], [`io_area_editor_ui`],
 //! [`modbus_device_editor_ui`], [`axis_editor_ui`]); the combined LD/FBD [`DiagramEditor`] on a
-//! canvas with automatic layout ([`ld_layout`], [`fbd_layout`]); the [`SfcEditor`] of structured SFC charts laid out by [`sfc_layout`]; and the read-only [`CodeView`]
+//! canvas with automatic layout ([`ld_layout`], [`fbd_layout`]); the [`CfcEditor`] with free
+//! placement, routed wires and the execution order; the [`SfcEditor`] of structured SFC charts
+//! laid out by [`sfc_layout`]; and the read-only [`CodeView`]
 //! with lexical highlighting.
 
+mod cfc;
 mod code_view;
 mod device_editors;
 mod diagram;
@@ -24,6 +27,10 @@ mod st_highlight;
 mod table_texts;
 mod variable_table;
 
+pub use cfc::{
+    CfcChange, CfcDiagnostic, CfcEditor, CfcOrderCommand, CfcOutput, CfcRefusal, CfcSelection,
+    CfcTexts, CfcTool, VariableDragPayload,
+};
 pub use code_view::CodeView;
 pub use device_editors::{
     DeviceEdit, DeviceEditorState, DeviceTexts, Refusal, RefusalWords, axis_editor_ui,

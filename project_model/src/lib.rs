@@ -14,6 +14,7 @@ mod axis;
 mod cam;
 mod cfc;
 mod cfc_check;
+pub mod cfc_edit;
 mod chart_replace;
 mod data_type;
 mod declaration_text;
@@ -54,6 +55,7 @@ pub use cam::{
 };
 pub use cfc::{CfcBox, CfcChart, CfcElement, CfcElementKind, CfcPin, GridPoint, PinRef, Wire};
 pub use cfc_check::{CfcProblem, cfc_input_pins, cfc_output_pins, cfc_pin_matches, cfc_problems};
+pub use cfc_edit::CfcEditError;
 pub use data_type::{DataType, EnumValue, StructMember, TypeDefinition};
 pub use declarations_edit::{
     DeclarationsChange, TypedDeclarations, TypedHeader, gvl_declarations_change,

@@ -1,21 +1,18 @@
 //! The text field over an element, a network header or a new box, with completion of variable
 //! and block names, and the input assistant (F2) that lists them.
 
-use egui::text::{CCursor, CCursorRange};
-use egui::{Id, Key, Rect, TextEdit};
+use egui::{Id, Rect};
 use project_model::{
     ElementRef, FlowNode, HeaderField, NetworkOutput, new_box, set_element_text,
     set_network_header, set_pin_operand,
 };
 
 use super::editor::{DiagramEditor, FrameResult};
+use super::field::{CompletionField, FieldOutcome, detail_without_label};
 use super::placed::InsertTarget;
 use super::toolbox::insert_node;
 use super::types::{DiagramRefusal, DiagramServices, InstanceDeclaration, PreparedOperand};
 use crate::CompletionItem;
-
-/// How many completion candidates the list under the field shows.
-const MAX_CANDIDATES: usize = 8;
 
 /// What a text field edits.
 #[derive(Clone, Debug, PartialEq)]
@@ -43,71 +40,17 @@ pub(super) enum EntryTarget {
 pub(super) struct Entry {
     /// What it edits.
     pub target: EntryTarget,
-    /// The text typed so far.
-    pub text: String,
-    /// Whether the field has been given focus (done once, in its first frame).
-    pub focused: bool,
-    /// The completion the arrow keys moved to, counted from the best one; reset when the text
-    /// changes.
-    pub highlighted: usize,
-    /// The text `highlighted` was chosen for.
-    highlighted_for: String,
+    /// The field: its text and its completion state.
+    pub field: CompletionField,
 }
 
 impl Entry {
     pub fn new(target: EntryTarget, text: String) -> Self {
         Self {
             target,
-            highlighted_for: text.clone(),
-            text,
-            focused: false,
-            highlighted: 0,
+            field: CompletionField::new(text),
         }
     }
-
-    /// The candidate Enter or Tab takes: none for an empty field or without candidates, the one
-    /// spelled as typed (any case) while nothing was chosen with the arrows, else the one the
-    /// arrows moved to.
-    fn highlighted_candidate(&self, candidates: &[CompletionItem]) -> Option<usize> {
-        if self.text.trim().is_empty() || candidates.is_empty() {
-            return None;
-        }
-        let typed = last_segment(self.text.trim());
-        let exact = candidates
-            .iter()
-            .position(|candidate| candidate.label.eq_ignore_ascii_case(typed));
-        let shown = candidates.len().min(MAX_CANDIDATES);
-        Some((exact.unwrap_or(0) + self.highlighted) % shown)
-    }
-}
-
-/// What follows the last dot of `text` (all of it without a dot): the part a member's
-/// completion replaces.
-fn last_segment(text: &str) -> &str {
-    text.rsplit_once('.').map_or(text, |(_, member)| member)
-}
-
-/// The field's text once `label` is accepted for what was typed: a member (`Q` after `tonA.`)
-/// replaces only what follows the last dot, anything else the whole text.
-pub(crate) fn accepted_text(typed: &str, label: &str) -> String {
-    match typed.trim().rsplit_once('.') {
-        Some((path, _)) if !label.contains('.') => format!("{path}.{label}"),
-        _ => label.to_owned(),
-    }
-}
-
-/// The detail of a completion row without the candidate's own name, which the row already
-/// shows (`tWarn : TIME` gives `TIME`, `FUNCTION LIMIT` gives `FUNCTION`).
-pub(crate) fn detail_without_label(label: &str, detail: &str) -> String {
-    let words: Vec<&str> = detail
-        .split_whitespace()
-        .filter(|word| !word.eq_ignore_ascii_case(label))
-        .collect();
-    let words = match words.as_slice() {
-        [":", rest @ ..] => rest,
-        all => all,
-    };
-    words.join(" ")
 }
 
 impl DiagramEditor {
@@ -183,98 +126,19 @@ impl DiagramEditor {
         };
         let candidates: Vec<CompletionItem> = match &entry.target {
             EntryTarget::Header(..) | EntryTarget::Prepared { .. } => Vec::new(),
-            target if self.completes_blocks(target) => services.blocks(&entry.text),
-            _ => services.variables(&entry.text),
+            target if self.completes_blocks(target) => services.blocks(&entry.field.text),
+            _ => services.variables(&entry.field.text),
         };
-        if entry.text != entry.highlighted_for {
-            entry.highlighted_for = entry.text.clone();
-            entry.highlighted = 0;
-        }
-        let shown = candidates.len().min(MAX_CANDIDATES);
-        // The arrows move through the candidates, as in the ST editor; they are taken before
-        // the field sees them, which would move its cursor instead.
-        if shown > 0 && entry.focused {
-            let (down, up) = ctx.input_mut(|input| {
-                (
-                    input.consume_key(egui::Modifiers::NONE, Key::ArrowDown),
-                    input.consume_key(egui::Modifiers::NONE, Key::ArrowUp),
-                )
-            });
-            if down {
-                entry.highlighted = (entry.highlighted + 1) % shown;
+        let (commit, by_leaving) = match entry.field.ui(ctx, field_id, anchor, &label, &candidates)
+        {
+            FieldOutcome::Open => (None, false),
+            FieldOutcome::Cancelled => {
+                self.request_focus();
+                return;
             }
-            if up {
-                entry.highlighted = (entry.highlighted + shown - 1) % shown;
-            }
-        }
-        let highlighted = entry.highlighted_candidate(&candidates);
-        let mut commit = None;
-        let mut cancel = false;
-        let mut left = false;
-        let area = egui::Area::new(field_id.with("area"))
-            .order(egui::Order::Foreground)
-            .fixed_pos(anchor.left_top())
-            .show(ctx, |ui| {
-                egui::Frame::popup(ui.style()).show(ui, |ui| {
-                    let width = anchor.width().max(140.0);
-                    let response = ui.add(
-                        TextEdit::singleline(&mut entry.text)
-                            .id(field_id)
-                            .desired_width(width)
-                            .hint_text(label.clone()),
-                    );
-                    response
-                        .widget_info(|| egui::WidgetInfo::text_edit(true, "", &entry.text, &label));
-                    if !entry.focused {
-                        entry.focused = true;
-                        response.request_focus();
-                        let mut state = TextEdit::load_state(ctx, field_id).unwrap_or_default();
-                        let end = CCursor::new(entry.text.chars().count());
-                        state.cursor.set_char_range(Some(CCursorRange::one(end)));
-                        state.store(ctx, field_id);
-                    }
-                    if ui.input(|input| input.key_pressed(Key::Escape)) {
-                        cancel = true;
-                    } else if response.lost_focus() {
-                        // Enter and Tab take the highlighted completion, as CODESYS and the ST
-                        // editor do; what was typed stays when nothing is highlighted.
-                        if ui.input(|input| {
-                            input.key_pressed(Key::Enter) || input.key_pressed(Key::Tab)
-                        }) {
-                            commit = Some(match highlighted {
-                                Some(index) => accepted_text(&entry.text, &candidates[index].label),
-                                None => entry.text.clone(),
-                            });
-                        } else {
-                            left = true;
-                        }
-                    }
-                    for (index, candidate) in candidates.iter().take(MAX_CANDIDATES).enumerate() {
-                        let detail = detail_without_label(&candidate.label, &candidate.detail);
-                        let text = if detail.is_empty() {
-                            candidate.label.clone()
-                        } else {
-                            format!("{}  {detail}", candidate.label)
-                        };
-                        if ui
-                            .selectable_label(highlighted == Some(index), text)
-                            .clicked()
-                        {
-                            commit = Some(accepted_text(&entry.text, &candidate.label));
-                        }
-                    }
-                });
-            });
-        if cancel {
-            self.request_focus();
-            return;
-        }
-        // A click elsewhere keeps what was typed, as CODESYS does; a click on a candidate in
-        // the popup takes the candidate instead.
-        let by_leaving = left && commit.is_none() && !area.response.contains_pointer();
-        if by_leaving {
-            commit = Some(entry.text.clone());
-        }
+            FieldOutcome::Committed(text) => (Some(text), false),
+            FieldOutcome::Left(text) => (Some(text), true),
+        };
         match commit {
             Some(text) => {
                 // Enter or a candidate gives the keyboard back to the canvas; a click elsewhere

@@ -12,14 +12,14 @@ pub(crate) const MAX_OPERAND_CHARS: usize = 24;
 /// The size of an operand's and a box title's font at zoom 1, in points.
 pub(crate) const OPERAND_FONT_PX: f32 = 11.0;
 /// The size of a pin name's font at zoom 1, in points.
-pub(super) const PIN_FONT_PX: f32 = 10.0;
+pub(crate) const PIN_FONT_PX: f32 = 10.0;
 /// The advance of a monospace character per point of font size (Hack, the egui default, and
 /// the studio's monospace font are 0.6 em; a little more leaves room for rounding).
 const ADVANCE_PER_FONT_PX: f32 = 0.62;
 /// The space left and right of a text inside its cell, in points.
 const TEXT_PADDING_PX: f32 = 4.0;
 /// The room left and right of a box's frame for the pins' leads, in points.
-pub(super) const BOX_LEAD_PX: f32 = 10.0;
+pub(crate) const BOX_LEAD_PX: f32 = 10.0;
 /// The space between an input pin's name and an output pin's name on one row of a box.
 const PIN_GAP_PX: f32 = 12.0;
 
@@ -46,7 +46,7 @@ pub(crate) fn operand_width_px(text: &str) -> f32 {
 }
 
 /// The width in cells of an operand's cell: its text with padding, at least `min_cells`.
-pub(super) fn operand_cells(text: &str, min_cells: f32) -> f32 {
+pub(crate) fn operand_cells(text: &str, min_cells: f32) -> f32 {
     let px = operand_width_px(text) + 2.0 * TEXT_PADDING_PX;
     (px / CELL_SIZE_PX.x).max(min_cells)
 }
@@ -54,7 +54,7 @@ pub(super) fn operand_cells(text: &str, min_cells: f32) -> f32 {
 /// The width in cells of a box with `title` (its type), `instance` above it, and pins named
 /// `inputs` on the left and `outputs` on the right, including the pins' leads; at least
 /// `min_cells`.
-pub(super) fn box_cells<'a>(
+pub(crate) fn box_cells<'a>(
     title: &str,
     instance: &str,
     inputs: impl Iterator<Item = &'a str>,

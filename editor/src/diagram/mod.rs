@@ -12,6 +12,7 @@ mod commands;
 mod editor;
 pub(crate) mod entry;
 mod fbd_layout;
+pub(crate) mod field;
 mod keyboard;
 mod ld_layout;
 pub(crate) mod measure;

@@ -751,22 +751,22 @@ fn a_text_without_candidates_is_kept_as_typed_on_enter() {
 
 #[test]
 fn a_member_completion_replaces_only_what_follows_the_dot() {
-    assert_eq!(entry::accepted_text("tonA.q", "Q"), "tonA.Q");
-    assert_eq!(entry::accepted_text("GVL.st.r", "rSpeed"), "GVL.st.rSpeed");
-    assert_eq!(entry::accepted_text("mo", "motor"), "motor");
+    assert_eq!(field::accepted_text("tonA.q", "Q"), "tonA.Q");
+    assert_eq!(field::accepted_text("GVL.st.r", "rSpeed"), "GVL.st.rSpeed");
+    assert_eq!(field::accepted_text("mo", "motor"), "motor");
 }
 
 #[test]
 fn a_completion_row_names_the_candidate_once() {
     assert_eq!(
-        entry::detail_without_label("tWarningElapsed", "tWarningElapsed : TIME"),
+        field::detail_without_label("tWarningElapsed", "tWarningElapsed : TIME"),
         "TIME"
     );
     assert_eq!(
-        entry::detail_without_label("LIMIT", "FUNCTION LIMIT"),
+        field::detail_without_label("LIMIT", "FUNCTION LIMIT"),
         "FUNCTION"
     );
-    assert_eq!(entry::detail_without_label("motor", "BOOL"), "BOOL");
+    assert_eq!(field::detail_without_label("motor", "BOOL"), "BOOL");
 }
 
 #[test]

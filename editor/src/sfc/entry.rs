@@ -12,7 +12,7 @@ use project_model::{ActionAssociation, ActionQualifier, ElementId, SfcNode};
 
 use super::editor::{FrameResult, SfcEditor};
 use super::layout::{ACTION_ROW_PX, STEP_HEIGHT_PX, TEXT_GAP_PX};
-use crate::diagram::entry::{accepted_text, detail_without_label};
+use crate::diagram::field::{accepted_text, detail_without_label};
 use crate::{CompletionItem, CompletionKind, DiagramServices};
 
 /// How many completion candidates the list under the field shows.
