@@ -1,5 +1,5 @@
 use super::*;
-use crate::{CfcBox, CfcElementKind, CfcPin, CoilKind, Edge, GridPoint, PinRef};
+use crate::{CfcBox, CfcElementKind, CfcPin, CoilKind, Edge, GridPoint, PinRef, cfc_input_pins};
 
 fn at(x: i32, y: i32) -> GridPoint {
     GridPoint { x, y }
@@ -173,7 +173,7 @@ fn control_points_are_added_moved_and_removed_by_index() {
 fn an_extensible_box_grows_by_the_next_numbered_input() {
     let chart = extend_box(&small_chart(), ElementId(1)).unwrap();
     assert_eq!(
-        element_inputs(&element(&chart, ElementId(1)).unwrap().kind),
+        cfc_input_pins(&element(&chart, ElementId(1)).unwrap().kind),
         vec!["IN1", "IN2", "IN3"]
     );
     let (mux, id) = add_element(
@@ -183,7 +183,7 @@ fn an_extensible_box_grows_by_the_next_numbered_input() {
     );
     let mux = extend_box(&mux, id).unwrap();
     assert_eq!(
-        element_inputs(&element(&mux, id).unwrap().kind),
+        cfc_input_pins(&element(&mux, id).unwrap().kind),
         vec!["K", "IN0", "IN1", "IN2"]
     );
     let (timer, ton) = add_element(&chart, block("TON", &["IN", "PT"], &["Q", "ET"]), at(0, 5));
@@ -372,7 +372,7 @@ fn a_composer_takes_the_members_of_its_structure() {
     let (chart, x) = add_element(&chart, input("1"), at(0, 5));
     let chart = set_members(&chart, id, "POINT", &["X".to_owned(), "Y".to_owned()]).unwrap();
     assert_eq!(
-        element_inputs(&element(&chart, id).unwrap().kind),
+        cfc_input_pins(&element(&chart, id).unwrap().kind),
         vec!["X", "Y"]
     );
     let chart = connect(&chart, &pin(x.0, ""), &pin(id.0, "Y")).unwrap();
