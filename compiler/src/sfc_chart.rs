@@ -36,6 +36,21 @@ pub enum Qualifier {
 }
 
 impl Qualifier {
+    /// Every qualifier, in the order the chart's state lays out their slots.
+    pub const ALL: [Self; 11] = [
+        Self::N,
+        Self::R,
+        Self::S,
+        Self::L,
+        Self::D,
+        Self::P,
+        Self::P0,
+        Self::P1,
+        Self::Sd,
+        Self::Ds,
+        Self::Sl,
+    ];
+
     /// The qualifier written `text` (any case).
     pub fn parse(text: &str) -> Option<Self> {
         Some(match text.to_ascii_uppercase().as_str() {
@@ -442,19 +457,7 @@ mod tests {
 
     #[test]
     fn qualifiers_parse_in_any_case_and_know_their_durations() {
-        for qualifier in [
-            Qualifier::N,
-            Qualifier::R,
-            Qualifier::S,
-            Qualifier::L,
-            Qualifier::D,
-            Qualifier::P,
-            Qualifier::P0,
-            Qualifier::P1,
-            Qualifier::Sd,
-            Qualifier::Ds,
-            Qualifier::Sl,
-        ] {
+        for qualifier in Qualifier::ALL {
             assert_eq!(
                 Qualifier::parse(&qualifier.text().to_lowercase()),
                 Some(qualifier)

@@ -7,7 +7,7 @@ use program_image::{BinaryOp, CompareOp, Elementary as IE, Instr, Operand};
 
 use super::body::{BodyGen, Gen};
 use super::sfc::inst;
-use super::sfc_layout::{ActionSlots, QUALIFIERS, action_at};
+use super::sfc_layout::{ActionSlots, action_at};
 use crate::sfc_chart::{Association, Qualifier};
 use crate::syntax::ast::StatementList;
 
@@ -63,100 +63,46 @@ impl BodyGen<'_, '_, '_> {
         // A flip-flop with dominant reset: `memory := (memory OR set) AND NOT R`.
         let latch = |this: &mut Self, qualifier: Qualifier, set: Operand| {
             let kept = this.bool_op(BinaryOp::Or, mem(qualifier), set);
-            this.emit(Instr::Binary {
-                op: BinaryOp::And,
-                ty: IE::Bool,
-                dst: mem(qualifier),
-                a: kept,
-                b: not_reset,
-            });
+            this.bool_op_into(BinaryOp::And, mem(qualifier), kept, not_reset);
         };
         if used(Qualifier::S) {
             latch(self, Qualifier::S, req(Qualifier::S));
-            self.emit(Instr::Binary {
-                op: BinaryOp::Or,
-                ty: IE::Bool,
-                dst: q,
-                a: q,
-                b: mem(Qualifier::S),
-            });
+            self.bool_op_into(BinaryOp::Or, q, q, mem(Qualifier::S));
         }
         if used(Qualifier::L) {
             let done = self.control_timer(action, Qualifier::L, req(Qualifier::L), now);
             let left = self.not(done);
             let on = self.bool_op(BinaryOp::And, req(Qualifier::L), left);
-            self.emit(Instr::Binary {
-                op: BinaryOp::Or,
-                ty: IE::Bool,
-                dst: q,
-                a: q,
-                b: on,
-            });
+            self.bool_op_into(BinaryOp::Or, q, q, on);
         }
         if used(Qualifier::D) {
             let done = self.control_timer(action, Qualifier::D, req(Qualifier::D), now);
-            self.emit(Instr::Binary {
-                op: BinaryOp::Or,
-                ty: IE::Bool,
-                dst: q,
-                a: q,
-                b: done,
-            });
+            self.bool_op_into(BinaryOp::Or, q, q, done);
         }
         if used(Qualifier::P) {
             let before = self.not(mem(Qualifier::P));
             let edge = self.bool_op(BinaryOp::And, req(Qualifier::P), before);
             self.move_bool(mem(Qualifier::P), req(Qualifier::P));
-            self.emit(Instr::Binary {
-                op: BinaryOp::Or,
-                ty: IE::Bool,
-                dst: q,
-                a: q,
-                b: edge,
-            });
+            self.bool_op_into(BinaryOp::Or, q, q, edge);
         }
         if used(Qualifier::Sd) {
             latch(self, Qualifier::Sd, req(Qualifier::Sd));
             let done = self.control_timer(action, Qualifier::Sd, mem(Qualifier::Sd), now);
-            self.emit(Instr::Binary {
-                op: BinaryOp::Or,
-                ty: IE::Bool,
-                dst: q,
-                a: q,
-                b: done,
-            });
+            self.bool_op_into(BinaryOp::Or, q, q, done);
         }
         if used(Qualifier::Ds) {
             let done = self.control_timer(action, Qualifier::Ds, req(Qualifier::Ds), now);
             latch(self, Qualifier::Ds, done);
-            self.emit(Instr::Binary {
-                op: BinaryOp::Or,
-                ty: IE::Bool,
-                dst: q,
-                a: q,
-                b: mem(Qualifier::Ds),
-            });
+            self.bool_op_into(BinaryOp::Or, q, q, mem(Qualifier::Ds));
         }
         if used(Qualifier::Sl) {
             latch(self, Qualifier::Sl, req(Qualifier::Sl));
             let done = self.control_timer(action, Qualifier::Sl, mem(Qualifier::Sl), now);
             let left = self.not(done);
             let on = self.bool_op(BinaryOp::And, mem(Qualifier::Sl), left);
-            self.emit(Instr::Binary {
-                op: BinaryOp::Or,
-                ty: IE::Bool,
-                dst: q,
-                a: q,
-                b: on,
-            });
+            self.bool_op_into(BinaryOp::Or, q, q, on);
         }
-        self.emit(Instr::Binary {
-            op: BinaryOp::And,
-            ty: IE::Bool,
-            dst: inst(action.active()),
-            a: q,
-            b: not_reset,
-        });
+        self.bool_op_into(BinaryOp::And, inst(action.active()), q, not_reset);
         // A: Q, or the falling edge of Q (the final call), or a P1 or P0 edge.
         let q_now = inst(action.active());
         let not_q = self.not(q_now);
@@ -175,13 +121,12 @@ impl BodyGen<'_, '_, '_> {
             runs = self.bool_op(BinaryOp::Or, runs, edge);
         }
         self.move_bool(inst(action.x()), runs);
-        self.emit(Instr::Binary {
-            op: BinaryOp::And,
-            ty: IE::Bool,
-            dst: inst(action.at + action_at::FINAL),
-            a: runs,
-            b: not_q,
-        });
+        self.bool_op_into(
+            BinaryOp::And,
+            inst(action.at + action_at::FINAL),
+            runs,
+            not_q,
+        );
         self.move_bool(inst(action.at + action_at::Q_PREV), q_now);
         // Indicators and a boolean action's variable follow Q.
         for association in associations {
@@ -203,7 +148,7 @@ impl BodyGen<'_, '_, '_> {
         });
         // Busy while anything could still change Q or A without a step asking.
         let mut busy = self.bool_op(BinaryOp::Or, q_now, runs);
-        for qualifier in QUALIFIERS {
+        for qualifier in Qualifier::ALL {
             if used(qualifier) {
                 busy = self.bool_op(BinaryOp::Or, busy, mem(qualifier));
                 if qualifier.is_timed() {

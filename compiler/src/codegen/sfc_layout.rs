@@ -44,22 +44,11 @@ pub(super) mod action_at {
     pub(crate) const SIZE: u32 = 176;
 }
 
-pub(super) const QUALIFIERS: [Qualifier; 11] = [
-    Qualifier::N,
-    Qualifier::R,
-    Qualifier::S,
-    Qualifier::L,
-    Qualifier::D,
-    Qualifier::P,
-    Qualifier::P0,
-    Qualifier::P1,
-    Qualifier::Sd,
-    Qualifier::Ds,
-    Qualifier::Sl,
-];
-
 fn index_of(qualifier: Qualifier) -> u32 {
-    QUALIFIERS.iter().position(|q| *q == qualifier).unwrap_or(0) as u32
+    Qualifier::ALL
+        .iter()
+        .position(|q| *q == qualifier)
+        .unwrap_or(0) as u32
 }
 
 /// One step's state in the instance.
