@@ -3,16 +3,14 @@
 
 use std::collections::HashSet;
 
-use egui::{
-    EventFilter, Id, PointerButton, Pos2, Rect, Response, Role, Sense, Ui, Vec2, WidgetInfo, pos2,
-    vec2,
-};
+use egui::{Id, PointerButton, Pos2, Rect, Response, Sense, Ui, Vec2, pos2, vec2};
 use project_model::cfc_edit as edit;
 use project_model::{CfcElementKind, ElementId, GridPoint, PinRef};
 
 use super::editor::{CfcEditor, Drag, FrameResult, ZOOM_RANGE};
 use super::geometry::{GRID_PX, ROW_UNITS};
 use crate::diagram::DiagramServices;
+use crate::diagram::canvas_input::{describe_canvas, focused_canvas_events};
 
 /// How near a pin or a control point the pointer must be to take it, in grid units.
 const PIN_RADIUS_UNITS: f32 = 0.8;
@@ -132,9 +130,7 @@ impl CfcEditor {
         );
         let (_, rect) = ui.allocate_space(size);
         let response = ui.interact(rect, id, Sense::click_and_drag());
-        let enabled = ui.is_enabled();
-        let label_text = label.to_owned();
-        response.widget_info(|| WidgetInfo::labeled(Role::Canvas, enabled, &label_text));
+        describe_canvas(ui, &response, label);
         if std::mem::take(&mut self.focus_requested)
             || response.clicked()
             || response.drag_started()
@@ -145,14 +141,7 @@ impl CfcEditor {
         self.last_origin = origin;
         self.zoom_and_pan_ui(ui, &response, origin, viewport);
         if response.has_focus() && self.entry.is_none() {
-            let filter = EventFilter {
-                tab: false,
-                horizontal_arrows: true,
-                vertical_arrows: true,
-                escape: true,
-            };
-            ui.memory_mut(|memory| memory.set_focus_lock_filter(id, filter));
-            let events = ui.input(|input| input.filtered_events(&filter));
+            let events = focused_canvas_events(ui, id);
             self.handle_events(ui.ctx(), &events, frame);
         }
         self.pointer_ui(ui, &response, origin, frame);

@@ -2,11 +2,11 @@
 //! double-click to edit, drops from the toolbox), and where the text field goes.
 
 use egui::{
-    EventFilter, Id, PointerButton, Pos2, Rect, Response, Role, Sense, Stroke, StrokeKind, Ui,
-    Vec2, WidgetInfo, pos2, vec2,
+    Id, PointerButton, Pos2, Rect, Response, Sense, Stroke, StrokeKind, Ui, Vec2, pos2, vec2,
 };
 use project_model::{Anchor, ElementRef, HeaderField};
 
+use super::canvas_input::{describe_canvas, focused_canvas_events};
 use super::editor::{DiagramEditor, FrameResult, HEADER_HEIGHT_PX, LEFT_MARGIN_PX, ZOOM_RANGE};
 use super::entry::EntryTarget;
 use super::measure::shortened;
@@ -58,9 +58,7 @@ impl DiagramEditor {
         );
         let (_, rect) = ui.allocate_space(size);
         let response = ui.interact(rect, id, Sense::click_and_drag());
-        let enabled = ui.is_enabled();
-        let label_text = label.to_owned();
-        response.widget_info(|| WidgetInfo::labeled(Role::Canvas, enabled, &label_text));
+        describe_canvas(ui, &response, label);
         if std::mem::take(&mut self.focus_requested)
             || response.clicked()
             || response.drag_started()
@@ -71,14 +69,7 @@ impl DiagramEditor {
         self.last_origin = origin;
         self.zoom_and_pan_ui(ui, &response, origin, viewport);
         if response.has_focus() && self.entry.is_none() {
-            let filter = EventFilter {
-                tab: false,
-                horizontal_arrows: true,
-                vertical_arrows: true,
-                escape: true,
-            };
-            ui.memory_mut(|memory| memory.set_focus_lock_filter(id, filter));
-            let events = ui.input(|input| input.filtered_events(&filter));
+            let events = focused_canvas_events(ui, id);
             self.handle_events(ui.ctx(), &events, frame);
         }
         self.pointer_ui(ui, &response, origin, services, frame);
