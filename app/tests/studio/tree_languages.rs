@@ -1,5 +1,5 @@
-//! Choosing the implementation language of new POUs, methods, actions and properties in the
-//! device tree's dialogs.
+//! Choosing the implementation language of new POUs, methods, actions, transitions and
+//! properties in the device tree's dialogs.
 
 use app::studio::TreeNode;
 use egui::Key;

@@ -365,8 +365,8 @@ impl Text {
             Self::CamImportPoints => ("Import cam points", "导入凸轮点"),
             Self::CamExportPoints => ("Export cam points", "导出凸轮点"),
             Self::PouSummary => (
-                "{variables} variables, {methods} methods, {actions} actions",
-                "{variables} 个变量，{methods} 个方法，{actions} 个动作",
+                "{variables} variables, {methods} methods, {actions} actions, {transitions} transitions",
+                "{variables} 个变量，{methods} 个方法，{actions} 个动作，{transitions} 个转换",
             ),
             Self::VariableCount => ("{variables} variables", "{variables} 个变量"),
             Self::TraceSummary => (
