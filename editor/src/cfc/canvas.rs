@@ -3,14 +3,16 @@
 
 use std::collections::HashSet;
 
-use egui::{Id, PointerButton, Pos2, Rect, Response, Sense, Ui, Vec2, pos2, vec2};
+use egui::{Id, PointerButton, Pos2, Rect, Response, Sense, Ui, pos2, vec2};
 use project_model::cfc_edit as edit;
 use project_model::{CfcElementKind, ElementId, GridPoint, PinRef};
 
-use super::editor::{CfcEditor, Drag, FrameResult, ZOOM_RANGE};
+use super::editor::{CfcEditor, Drag, FrameResult};
 use super::geometry::{GRID_PX, ROW_UNITS};
 use crate::diagram::DiagramServices;
-use crate::diagram::canvas_input::{describe_canvas, focused_canvas_events};
+use crate::diagram::canvas_input::{
+    CanvasView, describe_canvas, focused_canvas_events, zoom_and_pan_ui,
+};
 
 /// How near a pin or a control point the pointer must be to take it, in grid units.
 const PIN_RADIUS_UNITS: f32 = 0.8;
@@ -139,7 +141,12 @@ impl CfcEditor {
         }
         let origin = rect.min;
         self.last_origin = origin;
-        self.zoom_and_pan_ui(ui, &response, origin, viewport);
+        let view = CanvasView {
+            zoom: &mut self.zoom,
+            pending_offset: &mut self.pending_offset,
+            scroll_offset: self.scroll_offset,
+        };
+        zoom_and_pan_ui(ui, &response, origin, viewport, view);
         if response.has_focus() && self.entry.is_none() {
             let events = focused_canvas_events(ui, id);
             self.handle_events(ui.ctx(), &events, frame);
@@ -156,24 +163,6 @@ impl CfcEditor {
         );
         self.entry_ui(ui.ctx(), id, origin, services, frame);
         response
-    }
-
-    fn zoom_and_pan_ui(&mut self, ui: &Ui, response: &Response, origin: Pos2, viewport: Rect) {
-        if let Some(pointer) = response.hover_pos() {
-            let factor = ui.input(|input| input.zoom_delta());
-            if (factor - 1.0).abs() > f32::EPSILON {
-                let zoom = (self.zoom * factor).clamp(ZOOM_RANGE.0, ZOOM_RANGE.1);
-                // The content point under the mouse stays under it.
-                let under_mouse = (pointer - origin) / self.zoom;
-                let in_viewport = pointer - (origin + viewport.min.to_vec2());
-                self.pending_offset = Some((under_mouse * zoom - in_viewport).max(Vec2::ZERO));
-                self.zoom = zoom;
-            }
-        }
-        if response.dragged_by(PointerButton::Middle) {
-            self.pending_offset =
-                Some((self.scroll_offset - response.drag_delta()).max(Vec2::ZERO));
-        }
     }
 
     fn pointer_ui(&mut self, ui: &Ui, response: &Response, origin: Pos2, frame: &mut FrameResult) {

@@ -1,13 +1,11 @@
 //! The canvas in a frame: zoom and pan, hit testing, the pointer (selection, rubber band,
 //! double-click to edit, drops from the toolbox), and where the text field goes.
 
-use egui::{
-    Id, PointerButton, Pos2, Rect, Response, Sense, Stroke, StrokeKind, Ui, Vec2, pos2, vec2,
-};
+use egui::{Id, PointerButton, Pos2, Rect, Response, Sense, Stroke, StrokeKind, Ui, pos2, vec2};
 use project_model::{Anchor, ElementRef, HeaderField};
 
-use super::canvas_input::{describe_canvas, focused_canvas_events};
-use super::editor::{DiagramEditor, FrameResult, HEADER_HEIGHT_PX, LEFT_MARGIN_PX, ZOOM_RANGE};
+use super::canvas_input::{CanvasView, describe_canvas, focused_canvas_events, zoom_and_pan_ui};
+use super::editor::{DiagramEditor, FrameResult, HEADER_HEIGHT_PX, LEFT_MARGIN_PX};
 use super::entry::EntryTarget;
 use super::measure::shortened;
 use super::placed::{InsertTarget, Shape};
@@ -67,7 +65,12 @@ impl DiagramEditor {
         }
         let origin = rect.min;
         self.last_origin = origin;
-        self.zoom_and_pan_ui(ui, &response, origin, viewport);
+        let view = CanvasView {
+            zoom: &mut self.zoom,
+            pending_offset: &mut self.pending_offset,
+            scroll_offset: self.scroll_offset,
+        };
+        zoom_and_pan_ui(ui, &response, origin, viewport, view);
         if response.has_focus() && self.entry.is_none() {
             let events = focused_canvas_events(ui, id);
             self.handle_events(ui.ctx(), &events, frame);
@@ -92,24 +95,6 @@ impl DiagramEditor {
             self.entry_ui(ui.ctx(), id, screen, services, frame);
         }
         response
-    }
-
-    fn zoom_and_pan_ui(&mut self, ui: &Ui, response: &Response, origin: Pos2, viewport: Rect) {
-        if let Some(pointer) = response.hover_pos() {
-            let factor = ui.input(|input| input.zoom_delta());
-            if (factor - 1.0).abs() > f32::EPSILON {
-                let zoom = (self.zoom * factor).clamp(ZOOM_RANGE.0, ZOOM_RANGE.1);
-                // The content point under the mouse stays under it.
-                let under_mouse = (pointer - origin) / self.zoom;
-                let in_viewport = pointer - (origin + viewport.min.to_vec2());
-                self.pending_offset = Some((under_mouse * zoom - in_viewport).max(Vec2::ZERO));
-                self.zoom = zoom;
-            }
-        }
-        if response.dragged_by(PointerButton::Middle) {
-            self.pending_offset =
-                Some((self.scroll_offset - response.drag_delta()).max(Vec2::ZERO));
-        }
     }
 
     /// What is at `pos`, in content points at zoom 1.

@@ -1,7 +1,12 @@
-//! What the LD/FBD, CFC and SFC canvases share of egui's input: their accessible name, and
-//! the keys a focused canvas keeps for itself.
+//! What the LD/FBD, CFC and SFC canvases share of egui's input: their accessible name, the
+//! keys a focused canvas keeps for itself, and zooming and panning.
 
-use egui::{Event, EventFilter, Id, Response, Role, Ui, WidgetInfo};
+use egui::{
+    Event, EventFilter, Id, PointerButton, Pos2, Rect, Response, Role, Ui, Vec2, WidgetInfo,
+};
+
+/// The smallest and largest zoom factors of the graphical editors.
+pub(crate) const ZOOM_RANGE: (f32, f32) = (0.25, 4.0);
 
 /// Names the canvas `response` for screen readers and tests as a canvas labelled `label`.
 pub(crate) fn describe_canvas(ui: &Ui, response: &Response, label: &str) {
@@ -21,4 +26,39 @@ pub(crate) fn focused_canvas_events(ui: &Ui, id: Id) -> Vec<Event> {
     };
     ui.memory_mut(|memory| memory.set_focus_lock_filter(id, filter));
     ui.input(|input| input.filtered_events(&filter))
+}
+
+/// The zoom and scroll of a canvas in a scroll area: what [`zoom_and_pan_ui`] changes.
+pub(crate) struct CanvasView<'a> {
+    /// Points on screen per point of content.
+    pub zoom: &'a mut f32,
+    /// The scroll offset to apply in the next frame.
+    pub pending_offset: &'a mut Option<Vec2>,
+    /// The scroll offset of the last frame.
+    pub scroll_offset: Vec2,
+}
+
+/// Zooms the canvas `response` with Ctrl and the wheel (or a pinch) so that the content point
+/// under the mouse stays under it, and pans it with the middle button. `origin` is the
+/// content's top-left corner on screen, `viewport` the visible part of the scroll area.
+pub(crate) fn zoom_and_pan_ui(
+    ui: &Ui,
+    response: &Response,
+    origin: Pos2,
+    viewport: Rect,
+    view: CanvasView<'_>,
+) {
+    if let Some(pointer) = response.hover_pos() {
+        let factor = ui.input(|input| input.zoom_delta());
+        if (factor - 1.0).abs() > f32::EPSILON {
+            let zoom = (*view.zoom * factor).clamp(ZOOM_RANGE.0, ZOOM_RANGE.1);
+            let under_mouse = (pointer - origin) / *view.zoom;
+            let in_viewport = pointer - (origin + viewport.min.to_vec2());
+            *view.pending_offset = Some((under_mouse * zoom - in_viewport).max(Vec2::ZERO));
+            *view.zoom = zoom;
+        }
+    }
+    if response.dragged_by(PointerButton::Middle) {
+        *view.pending_offset = Some((view.scroll_offset - response.drag_delta()).max(Vec2::ZERO));
+    }
 }

@@ -6,8 +6,9 @@ use project_model::sfc_edit::find_node;
 use project_model::{ElementId, SfcNode};
 
 use super::commands::{INSERTIONS, SfcCommand, command_for_key};
-use super::editor::{FrameResult, SfcEditor, ZOOM_RANGE};
+use super::editor::{FrameResult, SfcEditor};
 use crate::DiagramServices;
+use crate::diagram::canvas_input::ZOOM_RANGE;
 use crate::diagram::canvas_input::{describe_canvas, focused_canvas_events};
 
 /// Which way an arrow key moves the selection.
