@@ -231,6 +231,13 @@ impl ActionQualifier {
         matches!(self, Self::L | Self::D | Self::SD | Self::DS | Self::SL)
     }
 
+    /// The qualifier written `text`, in any case (`sd` is `SD`).
+    pub fn parse(text: &str) -> Option<Self> {
+        Self::ALL
+            .into_iter()
+            .find(|qualifier| qualifier.as_str().eq_ignore_ascii_case(text))
+    }
+
     /// The qualifier as IEC 61131-3 writes it, such as `SD`.
     pub fn as_str(self) -> &'static str {
         match self {
