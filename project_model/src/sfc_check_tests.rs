@@ -1,39 +1,20 @@
 use super::*;
-use crate::{
-    ActionAssociation, ActionQualifier, Jump, MacroStep, SfcBranches, SfcSequence, Step, Transition,
-};
+use crate::{ActionAssociation, ActionQualifier, MacroStep, SfcBranches, Step};
 
 fn step(id: u32, name: &str) -> SfcNode {
-    SfcNode::Step(Step {
-        id: ElementId(id),
-        name: name.into(),
-        ..Step::default()
-    })
+    SfcNode::step(ElementId(id), name)
 }
 
 fn transition(id: u32, condition: &str) -> SfcNode {
-    SfcNode::Transition(Transition {
-        id: ElementId(id),
-        condition: condition.into(),
-        ..Transition::default()
-    })
+    SfcNode::transition(ElementId(id), condition)
 }
 
 fn jump(id: u32, target: &str) -> SfcNode {
-    SfcNode::Jump(Jump {
-        id: ElementId(id),
-        target: target.into(),
-    })
+    SfcNode::jump(ElementId(id), target)
 }
 
 fn branches(id: u32, branches: Vec<Vec<SfcNode>>) -> SfcBranches {
-    SfcBranches {
-        id: ElementId(id),
-        branches: branches
-            .into_iter()
-            .map(|nodes| SfcSequence { nodes })
-            .collect(),
-    }
+    SfcBranches::new(ElementId(id), branches)
 }
 
 fn chart(sequence: Vec<SfcNode>) -> SfcChart {

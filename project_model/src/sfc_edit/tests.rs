@@ -495,11 +495,7 @@ fn chart_around(middle: Vec<SfcNode>) -> SfcChart {
 }
 
 fn step(id: u32, name: &str) -> SfcNode {
-    SfcNode::Step(crate::sfc::Step {
-        id: ElementId(id),
-        name: name.into(),
-        ..crate::sfc::Step::default()
-    })
+    SfcNode::step(ElementId(id), name)
 }
 
 fn transition(id: u32) -> SfcNode {
@@ -511,13 +507,7 @@ fn transition(id: u32) -> SfcNode {
 }
 
 fn branches(id: u32, branches: Vec<Vec<SfcNode>>) -> crate::sfc::SfcBranches {
-    crate::sfc::SfcBranches {
-        id: ElementId(id),
-        branches: branches
-            .into_iter()
-            .map(|nodes| crate::sfc::SfcSequence { nodes })
-            .collect(),
-    }
+    crate::sfc::SfcBranches::new(ElementId(id), branches)
 }
 
 #[track_caller]
