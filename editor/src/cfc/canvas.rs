@@ -64,16 +64,10 @@ impl CfcEditor {
                 continue;
             };
             if let Some((name, _)) = shape.inputs.iter().find(|(_, point)| near(*point)) {
-                return Hit::Input(PinRef {
-                    element: element.id,
-                    pin: name.clone(),
-                });
+                return Hit::Input(PinRef::new(element.id, name.clone()));
             }
             if let Some((name, _)) = shape.outputs.iter().find(|(_, point)| near(*point)) {
-                return Hit::Output(PinRef {
-                    element: element.id,
-                    pin: name.clone(),
-                });
+                return Hit::Output(PinRef::new(element.id, name.clone()));
             }
         }
         if let Some(wire) = &self.selection.wire
@@ -401,10 +395,7 @@ impl CfcEditor {
         let shape = self.shapes.get(&id)?;
         let pins = if input { &shape.inputs } else { &shape.outputs };
         match pins.as_slice() {
-            [(name, _)] => Some(PinRef {
-                element: id,
-                pin: name.clone(),
-            }),
+            [(name, _)] => Some(PinRef::new(id, name.clone())),
             _ => None,
         }
     }

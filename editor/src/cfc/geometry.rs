@@ -151,15 +151,7 @@ mod tests {
 
     #[test]
     fn a_box_has_a_row_per_pin_under_its_head_and_grows_with_its_names() {
-        let pins = |names: &[&str]| {
-            names
-                .iter()
-                .map(|name| CfcPin {
-                    name: (*name).to_owned(),
-                    ..CfcPin::default()
-                })
-                .collect()
-        };
+        let pins = |names: &[&str]| names.iter().map(|name| CfcPin::named(*name)).collect();
         let timer = placed(CfcElementKind::Box(CfcBox {
             type_name: "TON".to_owned(),
             instance: "t".to_owned(),

@@ -52,10 +52,7 @@ pub fn extend_box(chart: &CfcChart, id: ElementId) -> Result<CfcChart, CfcEditEr
         .rev()
         .find_map(|pin| next_pin_name(&pin.name))
         .ok_or_else(refusal)?;
-    block.inputs.push(CfcPin {
-        name,
-        ..CfcPin::default()
-    });
+    block.inputs.push(CfcPin::named(name));
     Ok(chart)
 }
 
@@ -255,10 +252,7 @@ fn remade_pins(old: &[CfcPin], names: &[String]) -> Vec<CfcPin> {
             old.iter()
                 .find(|pin| pin.name == *name)
                 .cloned()
-                .unwrap_or_else(|| CfcPin {
-                    name: name.clone(),
-                    ..CfcPin::default()
-                })
+                .unwrap_or_else(|| CfcPin::named(name.clone()))
         })
         .collect()
 }

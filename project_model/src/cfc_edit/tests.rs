@@ -6,10 +6,7 @@ fn at(x: i32, y: i32) -> GridPoint {
 }
 
 fn pin(element: u32, name: &str) -> PinRef {
-    PinRef {
-        element: ElementId(element),
-        pin: name.to_owned(),
-    }
+    PinRef::new(ElementId(element), name)
 }
 
 fn input(text: &str) -> CfcElementKind {
@@ -26,15 +23,7 @@ fn output(text: &str) -> CfcElementKind {
 }
 
 fn block(type_name: &str, inputs: &[&str], outputs: &[&str]) -> CfcElementKind {
-    let pins = |names: &[&str]| {
-        names
-            .iter()
-            .map(|name| CfcPin {
-                name: (*name).to_owned(),
-                ..CfcPin::default()
-            })
-            .collect()
-    };
+    let pins = |names: &[&str]| names.iter().map(|name| CfcPin::named(*name)).collect();
     CfcElementKind::Box(CfcBox {
         type_name: type_name.to_owned(),
         instance: String::new(),
@@ -132,10 +121,7 @@ fn connecting_refuses_wrong_pins_and_replaces_a_driven_input() {
         &chart,
         CfcElementKind::Composer {
             type_name: "POINT".to_owned(),
-            inputs: vec![CfcPin {
-                name: "X".to_owned(),
-                ..CfcPin::default()
-            }],
+            inputs: vec![CfcPin::named("X")],
         },
         at(0, 9),
     );

@@ -21,11 +21,7 @@ pub fn connect(chart: &CfcChart, from: &PinRef, to: &PinRef) -> Result<CfcChart,
     }
     let mut chart = chart.clone();
     chart.wires.retain(|wire| wire.to != *to);
-    chart.wires.push(Wire {
-        from: from.clone(),
-        to: to.clone(),
-        points: Vec::new(),
-    });
+    chart.wires.push(Wire::routed(from.clone(), to.clone()));
     Ok(chart)
 }
 
