@@ -3,7 +3,7 @@
 
 use std::collections::HashSet;
 
-use egui::{Id, PointerButton, Pos2, Rect, Response, Sense, Ui, pos2, vec2};
+use egui::{Id, PointerButton, Pos2, Rect, Response, Ui, pos2, vec2};
 use project_model::cfc_edit as edit;
 use project_model::{CfcElementKind, ElementId, GridPoint, PinRef};
 
@@ -11,7 +11,7 @@ use super::editor::{CfcEditor, Drag, FrameResult};
 use super::geometry::{GRID_PX, ROW_UNITS};
 use crate::diagram::DiagramServices;
 use crate::diagram::canvas_input::{
-    CanvasView, describe_canvas, focused_canvas_events, zoom_and_pan_ui,
+    CanvasView, canvas_response, focused_canvas_events, zoom_and_pan_ui,
 };
 
 /// How near a pin or a control point the pointer must be to take it, in grid units.
@@ -124,15 +124,8 @@ impl CfcEditor {
             content.x.max(viewport.width()),
             content.y.max(viewport.height()),
         );
-        let (_, rect) = ui.allocate_space(size);
-        let response = ui.interact(rect, id, Sense::click_and_drag());
-        describe_canvas(ui, &response, label);
-        if std::mem::take(&mut self.focus_requested)
-            || response.clicked()
-            || response.drag_started()
-        {
-            response.request_focus();
-        }
+        let response = canvas_response(ui, size, id, label, &mut self.focus_requested);
+        let rect = response.rect;
         let origin = rect.min;
         self.last_origin = origin;
         let view = CanvasView {

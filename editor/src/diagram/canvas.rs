@@ -1,10 +1,10 @@
 //! The canvas in a frame: zoom and pan, hit testing, the pointer (selection, rubber band,
 //! double-click to edit, drops from the toolbox), and where the text field goes.
 
-use egui::{Id, PointerButton, Pos2, Rect, Response, Sense, Stroke, StrokeKind, Ui, pos2, vec2};
+use egui::{Id, PointerButton, Pos2, Rect, Response, Stroke, StrokeKind, Ui, pos2, vec2};
 use project_model::{Anchor, ElementRef, HeaderField};
 
-use super::canvas_input::{CanvasView, describe_canvas, focused_canvas_events, zoom_and_pan_ui};
+use super::canvas_input::{CanvasView, canvas_response, focused_canvas_events, zoom_and_pan_ui};
 use super::editor::{DiagramEditor, FrameResult, HEADER_HEIGHT_PX, LEFT_MARGIN_PX};
 use super::entry::EntryTarget;
 use super::measure::shortened;
@@ -54,15 +54,8 @@ impl DiagramEditor {
             content.x.max(viewport.width()) + room_x,
             content.y.max(viewport.height()) + viewport.height() * 0.5,
         );
-        let (_, rect) = ui.allocate_space(size);
-        let response = ui.interact(rect, id, Sense::click_and_drag());
-        describe_canvas(ui, &response, label);
-        if std::mem::take(&mut self.focus_requested)
-            || response.clicked()
-            || response.drag_started()
-        {
-            response.request_focus();
-        }
+        let response = canvas_response(ui, size, id, label, &mut self.focus_requested);
+        let rect = response.rect;
         let origin = rect.min;
         self.last_origin = origin;
         let view = CanvasView {

@@ -2,11 +2,29 @@
 //! keys a focused canvas keeps for itself, and zooming and panning.
 
 use egui::{
-    Event, EventFilter, Id, PointerButton, Pos2, Rect, Response, Role, Ui, Vec2, WidgetInfo,
+    Event, EventFilter, Id, PointerButton, Pos2, Rect, Response, Role, Sense, Ui, Vec2, WidgetInfo,
 };
 
 /// The smallest and largest zoom factors of the graphical editors.
 pub(crate) const ZOOM_RANGE: (f32, f32) = (0.25, 4.0);
+
+/// Allocates a canvas of `size` with the id `id`, named `label`, that takes the keyboard
+/// focus when it was asked for (`focus_requested`, cleared here) or when clicked or dragged.
+pub(crate) fn canvas_response(
+    ui: &mut Ui,
+    size: Vec2,
+    id: Id,
+    label: &str,
+    focus_requested: &mut bool,
+) -> Response {
+    let (_, rect) = ui.allocate_space(size);
+    let response = ui.interact(rect, id, Sense::click_and_drag());
+    describe_canvas(ui, &response, label);
+    if std::mem::take(focus_requested) || response.clicked() || response.drag_started() {
+        response.request_focus();
+    }
+    response
+}
 
 /// Names the canvas `response` for screen readers and tests as a canvas labelled `label`.
 pub(crate) fn describe_canvas(ui: &Ui, response: &Response, label: &str) {
