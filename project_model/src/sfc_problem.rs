@@ -116,7 +116,8 @@ pub struct SfcProblem {
     pub element: ElementId,
     /// The name of that element when it is a step or a macro step, for the message.
     pub step_name: Option<String>,
-    /// What kind of node the element is.
+    /// What kind of node the element is (a step for an empty chart, whose message names no
+    /// element).
     pub node: SfcNodeKind,
     /// The broken rule.
     pub kind: SfcProblemKind,
