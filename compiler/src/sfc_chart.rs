@@ -8,74 +8,9 @@ use std::ops::Range;
 use crate::syntax::ast::{ArgKind, AstNode, CallExpr, Expr, StatementList, Stmt, TransitionDecl};
 use crate::syntax::{SyntaxKind, SyntaxNode};
 
-/// The action qualifiers of IEC 61131-3 (Table 56 of edition 3) that CODESYS accepts.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub enum Qualifier {
-    /// Non-stored: the action is active while the step is.
-    N,
-    /// Overriding reset.
-    R,
-    /// Set (stored) until reset.
-    S,
-    /// Time limited.
-    L,
-    /// Time delayed.
-    D,
-    /// Pulse on activation.
-    P,
-    /// Pulse on the falling edge of the step.
-    P0,
-    /// Pulse on the rising edge of the step.
-    P1,
-    /// Stored and time delayed.
-    Sd,
-    /// Delayed and stored.
-    Ds,
-    /// Stored and time limited.
-    Sl,
-}
-
-impl Qualifier {
-    /// The qualifier written `text` (any case).
-    pub fn parse(text: &str) -> Option<Self> {
-        Some(match text.to_ascii_uppercase().as_str() {
-            "N" => Self::N,
-            "R" => Self::R,
-            "S" => Self::S,
-            "L" => Self::L,
-            "D" => Self::D,
-            "P" => Self::P,
-            "P0" => Self::P0,
-            "P1" => Self::P1,
-            "SD" => Self::Sd,
-            "DS" => Self::Ds,
-            "SL" => Self::Sl,
-            _ => return None,
-        })
-    }
-
-    /// Whether the qualifier needs a duration (`L`, `D`, `SD`, `DS`, `SL`).
-    pub fn is_timed(self) -> bool {
-        matches!(self, Self::L | Self::D | Self::Sd | Self::Ds | Self::Sl)
-    }
-
-    /// The qualifier as written in IEC 61131-3.
-    pub fn text(self) -> &'static str {
-        match self {
-            Self::N => "N",
-            Self::R => "R",
-            Self::S => "S",
-            Self::L => "L",
-            Self::D => "D",
-            Self::P => "P",
-            Self::P0 => "P0",
-            Self::P1 => "P1",
-            Self::Sd => "SD",
-            Self::Ds => "DS",
-            Self::Sl => "SL",
-        }
-    }
-}
+/// The action qualifiers of IEC 61131-3 that CODESYS accepts: the project model's, which the
+/// textual chart writes as the graphical one stores them.
+pub use project_model::ActionQualifier;
 
 /// One action association of a step: `Act(L, T#5s, lamp);`.
 #[derive(Clone, Debug)]
@@ -87,7 +22,7 @@ pub struct Association {
     /// The action's name as an expression (a boolean action is a variable written).
     pub action_node: Expr,
     /// The qualifier; `N` when none is written.
-    pub qualifier: Qualifier,
+    pub qualifier: ActionQualifier,
     /// The qualifier as written, with its range, when written (an unknown one is kept for the
     /// checker to report).
     pub qualifier_written: Option<(String, Range<usize>)>,
@@ -335,7 +270,7 @@ fn association(statement: &Stmt) -> Option<Association> {
         return None;
     }
     let mut args = call.iter().flat_map(CallExpr::args);
-    let mut qualifier = Qualifier::N;
+    let mut qualifier = ActionQualifier::N;
     let mut qualifier_written = None;
     let mut time = None;
     let mut indicator = None;
@@ -345,7 +280,7 @@ fn association(statement: &Stmt) -> Option<Association> {
             return None;
         }
         let written = first.value().map(|v| trimmed(v.syntax()))?;
-        if let Some(known) = Qualifier::parse(&written) {
+        if let Some(known) = ActionQualifier::parse(&written) {
             qualifier = known;
         }
         qualifier_written = Some((written, range_of(first.syntax())));
@@ -414,14 +349,14 @@ mod tests {
         let pump = &fill.associations[0];
         assert_eq!(
             (pump.action.as_str(), pump.qualifier),
-            ("Pump", Qualifier::L)
+            ("Pump", ActionQualifier::L)
         );
         assert!(pump.time.is_some() && pump.indicator.is_some());
         // `Horn;` is no association, `valve(N, lit)` has an indicator and no time, and
         // `Stir()` is N.
         assert_eq!(fill.strays.len(), 1);
         assert!(fill.associations[1].time.is_none() && fill.associations[1].indicator.is_some());
-        assert_eq!(fill.associations[2].qualifier, Qualifier::N);
+        assert_eq!(fill.associations[2].qualifier, ActionQualifier::N);
     }
 
     #[test]
@@ -442,28 +377,16 @@ mod tests {
 
     #[test]
     fn qualifiers_parse_in_any_case_and_know_their_durations() {
-        for qualifier in [
-            Qualifier::N,
-            Qualifier::R,
-            Qualifier::S,
-            Qualifier::L,
-            Qualifier::D,
-            Qualifier::P,
-            Qualifier::P0,
-            Qualifier::P1,
-            Qualifier::Sd,
-            Qualifier::Ds,
-            Qualifier::Sl,
-        ] {
+        for qualifier in ActionQualifier::ALL {
             assert_eq!(
-                Qualifier::parse(&qualifier.text().to_lowercase()),
+                ActionQualifier::parse(&qualifier.as_str().to_lowercase()),
                 Some(qualifier)
             );
         }
-        assert_eq!(Qualifier::parse("Q"), None);
+        assert_eq!(ActionQualifier::parse("Q"), None);
         let timed: Vec<&str> = ["N", "L", "D", "P", "SD", "DS", "SL", "S"]
             .into_iter()
-            .filter(|q| Qualifier::parse(q).is_some_and(Qualifier::is_timed))
+            .filter(|q| ActionQualifier::parse(q).is_some_and(ActionQualifier::is_timed))
             .collect();
         assert_eq!(timed, ["L", "D", "SD", "DS", "SL"]);
     }

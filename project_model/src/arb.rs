@@ -308,20 +308,12 @@ pub fn cfc_chart() -> impl Strategy<Value = crate::CfcChart> {
             order,
             kind,
         };
-        let pin = |name: &str| CfcPin {
-            name: name.into(),
-            ..CfcPin::default()
-        };
-        let wire = |from: u32, from_pin: &str, to: u32, to_pin: &str| Wire {
-            from: PinRef {
-                element: ElementId(from),
-                pin: from_pin.into(),
-            },
-            to: PinRef {
-                element: ElementId(to),
-                pin: to_pin.into(),
-            },
-            points: Vec::new(),
+        let pin = |name: &str| CfcPin::named(name);
+        let wire = |from: u32, from_pin: &str, to: u32, to_pin: &str| {
+            Wire::routed(
+                PinRef::new(ElementId(from), from_pin),
+                PinRef::new(ElementId(to), to_pin),
+            )
         };
         CfcChart {
             elements: vec![

@@ -189,6 +189,37 @@ pub struct PinRef {
     pub pin: String,
 }
 
+impl CfcPin {
+    /// A pin named `name`, neither negated nor edge-detecting.
+    pub fn named(name: impl Into<String>) -> Self {
+        Self {
+            name: name.into(),
+            ..Self::default()
+        }
+    }
+}
+
+impl PinRef {
+    /// The pin `pin` of element `element` (`""` for its only pin).
+    pub fn new(element: ElementId, pin: impl Into<String>) -> Self {
+        Self {
+            element,
+            pin: pin.into(),
+        }
+    }
+}
+
+impl Wire {
+    /// A wire from `from` to `to` routed automatically (no control points).
+    pub fn routed(from: PinRef, to: PinRef) -> Self {
+        Self {
+            from,
+            to,
+            points: Vec::new(),
+        }
+    }
+}
+
 impl CfcElementKind {
     /// Whether the element runs by itself and so has a place in the execution order.
     pub fn is_executable(&self) -> bool {

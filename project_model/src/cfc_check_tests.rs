@@ -12,10 +12,7 @@ fn element(id: u32, order: Option<u32>, kind: CfcElementKind) -> CfcElement {
 }
 
 fn pin(name: &str) -> CfcPin {
-    CfcPin {
-        name: name.into(),
-        ..CfcPin::default()
-    }
+    CfcPin::named(name)
 }
 
 fn input(id: u32, expression: &str) -> CfcElement {
@@ -53,17 +50,10 @@ fn add(id: u32, order: u32) -> CfcElement {
 }
 
 fn wire(from: u32, from_pin: &str, to: u32, to_pin: &str) -> Wire {
-    Wire {
-        from: PinRef {
-            element: ElementId(from),
-            pin: from_pin.into(),
-        },
-        to: PinRef {
-            element: ElementId(to),
-            pin: to_pin.into(),
-        },
-        points: Vec::new(),
-    }
+    Wire::routed(
+        PinRef::new(ElementId(from), from_pin),
+        PinRef::new(ElementId(to), to_pin),
+    )
 }
 
 /// `a + b` into `c`, sound.

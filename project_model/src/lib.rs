@@ -38,6 +38,7 @@ mod project;
 mod sfc;
 mod sfc_check;
 pub mod sfc_edit;
+mod sfc_problem;
 mod task;
 mod trace;
 mod validate;
@@ -98,7 +99,8 @@ pub use sfc::{
     ActionAssociation, ActionQualifier, Jump, MacroStep, SfcBranches, SfcChart, SfcNode,
     SfcSequence, Step, Transition,
 };
-pub use sfc_check::sfc_problems;
+pub use sfc_check::{sfc_chart_problems, sfc_problems};
+pub use sfc_problem::{SfcNodeKind, SfcProblem, SfcProblemKind};
 pub use task::{Task, TaskKind, Watchdog};
 pub use trace::{TraceConfig, TraceTrigger, TraceTriggerCondition, TraceVariable};
 pub use variable::{VarSection, Variable};

@@ -231,6 +231,13 @@ impl ActionQualifier {
         matches!(self, Self::L | Self::D | Self::SD | Self::DS | Self::SL)
     }
 
+    /// The qualifier written `text`, in any case (`sd` is `SD`).
+    pub fn parse(text: &str) -> Option<Self> {
+        Self::ALL
+            .into_iter()
+            .find(|qualifier| qualifier.as_str().eq_ignore_ascii_case(text))
+    }
+
     /// The qualifier as IEC 61131-3 writes it, such as `SD`.
     pub fn as_str(self) -> &'static str {
         match self {
@@ -250,6 +257,32 @@ impl ActionQualifier {
 }
 
 impl SfcNode {
+    /// A step named `name` with no actions, times or comment.
+    pub fn step(id: ElementId, name: impl Into<String>) -> Self {
+        Self::Step(Step {
+            id,
+            name: name.into(),
+            ..Step::default()
+        })
+    }
+
+    /// A transition firing on `condition` (an ST expression or a transition object's name).
+    pub fn transition(id: ElementId, condition: impl Into<String>) -> Self {
+        Self::Transition(Transition {
+            id,
+            condition: condition.into(),
+            ..Transition::default()
+        })
+    }
+
+    /// A jump to the step named `target`.
+    pub fn jump(id: ElementId, target: impl Into<String>) -> Self {
+        Self::Jump(Jump {
+            id,
+            target: target.into(),
+        })
+    }
+
     /// The node's stable id.
     pub fn id(&self) -> ElementId {
         match self {
@@ -262,26 +295,28 @@ impl SfcNode {
     }
 }
 
+impl SfcBranches {
+    /// Branches `id` holding the sequences `branches`, left to right.
+    pub fn new(id: ElementId, branches: Vec<Vec<SfcNode>>) -> Self {
+        Self {
+            id,
+            branches: branches
+                .into_iter()
+                .map(|nodes| SfcSequence { nodes })
+                .collect(),
+        }
+    }
+}
+
 impl SfcChart {
     /// The chart of a new SFC body, as CODESYS starts one: the initial step `Init`, a
     /// transition `FALSE`, and a jump back to `Init` (ids 1 to 3).
     pub fn new_body() -> Self {
         Self {
             sequence: vec![
-                SfcNode::Step(Step {
-                    id: ElementId(1),
-                    name: "Init".into(),
-                    ..Step::default()
-                }),
-                SfcNode::Transition(Transition {
-                    id: ElementId(2),
-                    condition: "FALSE".into(),
-                    ..Transition::default()
-                }),
-                SfcNode::Jump(Jump {
-                    id: ElementId(3),
-                    target: "Init".into(),
-                }),
+                SfcNode::step(ElementId(1), "Init"),
+                SfcNode::transition(ElementId(2), "FALSE"),
+                SfcNode::jump(ElementId(3), "Init"),
             ],
         }
     }

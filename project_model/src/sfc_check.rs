@@ -2,10 +2,14 @@
 //! by every edit, so that every stored chart has one meaning for the lowering into textual SFC.
 //!
 //! Names of actions, variables and the text of conditions and times are the compiler's
-//! business; this checks the shape of the chart and the names that become step names.
+//! business; this checks the shape of the chart and the names that become step names. It is
+//! the one implementation of the rules: loading formats its [`SfcProblem`]s as messages, and
+//! `sfc_edit::check_structure` refuses an edit with the first of them.
 
-use std::collections::HashMap;
+use std::collections::HashSet;
 
+use crate::sfc_edit::{SfcRule, step_names};
+use crate::sfc_problem::{SfcNodeKind, SfcProblem, SfcProblemKind};
 use crate::{ElementId, SfcChart, SfcNode, is_valid_identifier, same_identifier};
 
 /// Where a sequence is, which decides what may come first in it and how it must end.
@@ -15,7 +19,7 @@ enum SequenceKind {
     Main,
     /// A branch of an alternative: a transition first, a transition or a jump last.
     Alternative,
-    /// A branch of a parallel branch: a step first and a step last.
+    /// A branch of a parallel branch: a step (or macro step) first and last.
     Parallel,
     /// A macro step's body: a step first and a step last, no jump.
     Macro,
@@ -35,74 +39,77 @@ enum Open {
 
 /// Every broken rule of `chart`, each as `element 7 'Fill': message`; empty when it is sound.
 pub fn sfc_problems(chart: &SfcChart) -> Vec<String> {
-    let mut checker = Checker::default();
-    checker.collect_steps(&chart.sequence);
+    sfc_chart_problems(chart)
+        .iter()
+        .map(ToString::to_string)
+        .collect()
+}
+
+/// Every broken rule of `chart`, typed, in the order of the chart: a sequence's own order
+/// before what its nodes hold. Empty when the chart is sound.
+pub fn sfc_chart_problems(chart: &SfcChart) -> Vec<SfcProblem> {
+    // The step names are gathered first, so a jump may name a step that comes after it.
+    let mut checker = Checker {
+        steps: step_names(chart),
+        ..Checker::default()
+    };
     if chart.sequence.is_empty() {
-        checker
-            .problems
-            .push("the chart is empty; it must begin with its initial step".into());
-        return checker.problems;
+        return vec![SfcProblem {
+            element: ElementId(0),
+            step_name: None,
+            node: SfcNodeKind::Step,
+            kind: SfcProblemKind::EmptyChart,
+        }];
     }
     checker.sequence(&chart.sequence, SequenceKind::Main, false);
     checker.problems
 }
 
+/// The problem an edit names when its result breaks a rule: the first of the chart's shape,
+/// else of its names, of its jumps, of its associations.
+pub(crate) fn first_edit_problem(chart: &SfcChart) -> Option<SfcProblem> {
+    sfc_chart_problems(chart)
+        .into_iter()
+        .min_by_key(SfcProblem::edit_priority)
+}
+
 #[derive(Default)]
 struct Checker {
-    problems: Vec<String>,
+    problems: Vec<SfcProblem>,
     /// Every id met so far.
-    ids: HashMap<ElementId, ()>,
+    ids: HashSet<ElementId>,
     /// Every step and macro step name of the chart, for the jumps.
     steps: Vec<String>,
 }
 
-/// How messages name a node: `element 7 'Fill'` for named nodes, `element 4` otherwise.
-fn label(node: &SfcNode) -> String {
+/// What `node` leaves open for the node after it.
+fn leaves_open(node: &SfcNode) -> Open {
     match node {
-        SfcNode::Step(step) => format!("element {} '{}'", step.id.0, step.name),
-        SfcNode::Macro(macro_step) => format!("element {} '{}'", macro_step.id.0, macro_step.name),
-        _ => format!("element {}", node.id().0),
-    }
-}
-
-/// What a node is, in the words of a message.
-fn what(node: &SfcNode) -> &'static str {
-    match node {
-        SfcNode::Step(_) => "a step",
-        SfcNode::Transition(_) => "a transition",
-        SfcNode::Alternative(_) => "an alternative branch",
-        SfcNode::Parallel(_) => "a parallel branch",
-        SfcNode::Jump(_) => "a jump",
-        SfcNode::Macro(_) => "a macro step",
+        SfcNode::Step(_) | SfcNode::Macro(_) | SfcNode::Parallel(_) => Open::AfterStep,
+        SfcNode::Transition(_) => Open::AfterTransition,
+        SfcNode::Jump(_) => Open::Closed,
+        SfcNode::Alternative(branches) => {
+            let every_branch_jumps = !branches.branches.is_empty()
+                && branches
+                    .branches
+                    .iter()
+                    .all(|branch| matches!(branch.nodes.last(), Some(SfcNode::Jump(_))));
+            if every_branch_jumps {
+                Open::Closed
+            } else {
+                Open::AfterTransition
+            }
+        }
     }
 }
 
 impl Checker {
-    fn report(&mut self, node: &SfcNode, message: impl std::fmt::Display) {
-        self.problems.push(format!("{}: {message}", label(node)));
+    fn report(&mut self, node: &SfcNode, kind: SfcProblemKind) {
+        self.problems.push(SfcProblem::at(node, kind));
     }
 
-    /// Gathers the step names first, so a jump may name a step that comes after it.
-    fn collect_steps(&mut self, nodes: &[SfcNode]) {
-        for node in nodes {
-            match node {
-                SfcNode::Step(step) => self.steps.push(step.name.clone()),
-                SfcNode::Macro(macro_step) => {
-                    self.steps.push(macro_step.name.clone());
-                    self.collect_steps(&macro_step.body);
-                }
-                SfcNode::Alternative(branches) | SfcNode::Parallel(branches) => {
-                    for branch in &branches.branches {
-                        self.collect_steps(&branch.nodes);
-                    }
-                }
-                SfcNode::Transition(_) | SfcNode::Jump(_) => {}
-            }
-        }
-    }
-
-    /// Checks one sequence of `kind`; `in_macro` forbids jumps. Returns what it leaves open.
-    fn sequence(&mut self, nodes: &[SfcNode], kind: SequenceKind, in_macro: bool) -> Open {
+    /// Checks one sequence of `kind`, then what its nodes hold; `in_macro` forbids jumps.
+    fn sequence(&mut self, nodes: &[SfcNode], kind: SequenceKind, in_macro: bool) {
         let mut open = match kind {
             SequenceKind::Main | SequenceKind::Parallel | SequenceKind::Macro => {
                 Open::AfterTransition
@@ -113,128 +120,96 @@ impl Checker {
         // sequence's end) would be out of place.
         let mut reported_order = false;
         if let Some(first) = nodes.first() {
-            let before = self.problems.len();
-            match kind {
+            let rule = match kind {
                 SequenceKind::Main if !matches!(first, SfcNode::Step(_)) => {
-                    self.report(
-                        first,
-                        format!(
-                            "the chart must begin with its initial step, not {}",
-                            what(first)
-                        ),
-                    );
+                    Some(SfcRule::MainStartsWithStep)
                 }
                 SequenceKind::Alternative if !matches!(first, SfcNode::Transition(_)) => {
-                    self.report(
-                        first,
-                        format!(
-                            "a branch of an alternative must begin with a transition, not {}",
-                            what(first)
-                        ),
-                    );
+                    Some(SfcRule::AlternativeBeginsWithTransition)
                 }
-                SequenceKind::Parallel | SequenceKind::Macro
+                SequenceKind::Parallel
                     if !matches!(first, SfcNode::Step(_) | SfcNode::Macro(_)) =>
                 {
-                    let place = if kind == SequenceKind::Macro {
-                        "the body of a macro step"
-                    } else {
-                        "a branch of a parallel branch"
-                    };
-                    self.report(
-                        first,
-                        format!("{place} must begin with a step, not {}", what(first)),
-                    );
+                    Some(SfcRule::ParallelBeginsWithStep)
                 }
-                _ => {}
+                SequenceKind::Macro if !matches!(first, SfcNode::Step(_)) => {
+                    Some(SfcRule::MacroBeginsAndEndsWithStep)
+                }
+                _ => None,
+            };
+            if let Some(rule) = rule {
+                self.report(first, SfcProblemKind::WrongFirst(rule));
+                reported_order = true;
             }
-            reported_order = self.problems.len() > before;
         }
         for node in nodes {
             self.node_itself(node, in_macro);
-            let allowed = match (open, node) {
-                (Open::Closed, _) => false,
-                (Open::AfterStep, SfcNode::Transition(_) | SfcNode::Alternative(_)) => true,
+            let rule = match (open, node) {
+                (Open::Closed, _) => Some(SfcRule::JumpIsLast),
+                (Open::AfterStep, SfcNode::Transition(_) | SfcNode::Alternative(_)) => None,
+                (Open::AfterStep, _) => Some(SfcRule::StepNeedsTransitionAfter),
                 (
                     Open::AfterTransition,
                     SfcNode::Step(_) | SfcNode::Macro(_) | SfcNode::Parallel(_) | SfcNode::Jump(_),
-                ) => true,
-                _ => false,
+                ) => None,
+                (Open::AfterTransition, _) => Some(SfcRule::TransitionNeedsStepAfter),
             };
-            if !allowed && !reported_order {
+            if let Some(rule) = rule.filter(|_| !reported_order) {
                 reported_order = true;
-                let message = match open {
-                    Open::Closed => "nothing may follow a jump in its sequence".to_owned(),
-                    Open::AfterStep => format!(
-                        "{} cannot follow a step; a transition or an alternative branch must",
-                        what(node)
-                    ),
-                    Open::AfterTransition => format!(
-                        "{} cannot follow a transition; a step, a macro step, a parallel \
-                         branch or a jump must",
-                        what(node)
-                    ),
-                };
-                self.report(node, message);
+                self.report(node, SfcProblemKind::OutOfOrder(rule));
             }
-            open = self.inside(node, in_macro);
+            open = leaves_open(node);
         }
-        let Some(last) = nodes.last().filter(|_| !reported_order) else {
-            return open;
-        };
-        match kind {
-            SequenceKind::Main if open != Open::Closed => self.report(
-                last,
-                "the chart must end with a jump (or an alternative branch whose every branch \
-                 ends with a jump)",
-            ),
-            SequenceKind::Alternative if open == Open::AfterStep => self.report(
-                last,
-                "a branch of an alternative must end with a transition or a jump",
-            ),
-            SequenceKind::Parallel | SequenceKind::Macro if open != Open::AfterStep => {
-                let place = if kind == SequenceKind::Macro {
-                    "the body of a macro step"
-                } else {
-                    "a branch of a parallel branch"
-                };
-                self.report(last, format!("{place} must end with a step"));
+        if let Some(last) = nodes.last().filter(|_| !reported_order) {
+            let rule = match kind {
+                SequenceKind::Main if open != Open::Closed => Some(SfcRule::MainEndsWithJump),
+                SequenceKind::Alternative
+                    if !matches!(last, SfcNode::Transition(_) | SfcNode::Jump(_)) =>
+                {
+                    Some(SfcRule::AlternativeEndsWithTransitionOrJump)
+                }
+                SequenceKind::Parallel if !matches!(last, SfcNode::Step(_) | SfcNode::Macro(_)) => {
+                    Some(SfcRule::ParallelEndsWithStep)
+                }
+                SequenceKind::Macro if !matches!(last, SfcNode::Step(_)) => {
+                    Some(SfcRule::MacroBeginsAndEndsWithStep)
+                }
+                _ => None,
+            };
+            if let Some(rule) = rule {
+                self.report(last, SfcProblemKind::WrongLast(rule));
             }
-            _ => {}
         }
-        open
+        for node in nodes {
+            self.inside(node, in_macro);
+        }
     }
 
     /// Checks the rules of a node by itself: its id, its name, its associations, its target.
     fn node_itself(&mut self, node: &SfcNode, in_macro: bool) {
-        let id = node.id();
-        if self.ids.insert(id, ()).is_some() {
-            self.report(node, format!("two elements have the id {}", id.0));
+        if !self.ids.insert(node.id()) {
+            self.report(node, SfcProblemKind::DuplicateId);
         }
         match node {
             SfcNode::Step(step) => {
                 self.name(node, &step.name);
                 for association in &step.actions {
-                    let action = &association.action;
+                    let action = association.action.clone();
                     if action.trim().is_empty() {
-                        self.report(node, "an action association names no action");
+                        self.report(node, SfcProblemKind::EmptyAction);
                     }
                     let qualifier = association.qualifier.as_str();
-                    match (association.qualifier.is_timed(), &association.duration) {
-                        (true, None) => self.report(
+                    let has_time = association
+                        .duration
+                        .as_ref()
+                        .is_some_and(|time| !time.trim().is_empty());
+                    match (association.qualifier.is_timed(), has_time) {
+                        (true, false) => {
+                            self.report(node, SfcProblemKind::MissingDuration { action, qualifier })
+                        }
+                        (false, _) if association.duration.is_some() => self.report(
                             node,
-                            format!("the association of '{action}' with {qualifier} needs a time"),
-                        ),
-                        (true, Some(time)) if time.trim().is_empty() => self.report(
-                            node,
-                            format!("the association of '{action}' with {qualifier} needs a time"),
-                        ),
-                        (false, Some(_)) => self.report(
-                            node,
-                            format!(
-                                "the association of '{action}' with {qualifier} takes no time; \
-                                 only L, D, SD, DS and SL do"
-                            ),
+                            SfcProblemKind::UnexpectedDuration { action, qualifier },
                         ),
                         _ => {}
                     }
@@ -243,35 +218,23 @@ impl Checker {
             SfcNode::Macro(macro_step) => self.name(node, &macro_step.name),
             SfcNode::Jump(jump) => {
                 if in_macro {
-                    self.report(node, "a macro step's body cannot hold a jump");
+                    self.report(node, SfcProblemKind::JumpInMacro);
                 }
                 if !self
                     .steps
                     .iter()
                     .any(|step| same_identifier(step, &jump.target))
                 {
-                    self.report(
-                        node,
-                        format!(
-                            "the jump names the step '{}', which does not exist",
-                            jump.target
-                        ),
-                    );
+                    self.report(node, SfcProblemKind::UnknownStep(jump.target.clone()));
                 }
             }
             SfcNode::Alternative(branches) | SfcNode::Parallel(branches) => {
-                if branches.branches.len() < 2 {
-                    self.report(
-                        node,
-                        format!(
-                            "{} needs at least two branches; it has {}",
-                            what(node),
-                            branches.branches.len()
-                        ),
-                    );
+                let count = branches.branches.len();
+                if count < 2 {
+                    self.report(node, SfcProblemKind::TooFewBranches { count });
                 }
                 if let Some(empty) = branches.branches.iter().position(|b| b.nodes.is_empty()) {
-                    self.report(node, format!("branch {} is empty", empty + 1));
+                    self.report(node, SfcProblemKind::EmptyBranch { number: empty + 1 });
                 }
             }
             SfcNode::Transition(_) => {}
@@ -281,15 +244,9 @@ impl Checker {
     /// Checks a step or macro name: an identifier without `__`, unique without case.
     fn name(&mut self, node: &SfcNode, name: &str) {
         if !is_valid_identifier(name) {
-            self.report(
-                node,
-                format!("the step name '{name}' is not an identifier (letters, digits and '_')"),
-            );
+            self.report(node, SfcProblemKind::InvalidName(name.to_owned()));
         } else if name.contains("__") {
-            self.report(
-                node,
-                format!("the step name '{name}' contains '__', which Rivet keeps for itself"),
-            );
+            self.report(node, SfcProblemKind::ReservedName(name.to_owned()));
         }
         let count = self
             .steps
@@ -297,41 +254,36 @@ impl Checker {
             .filter(|step| same_identifier(step, name))
             .count();
         if count > 1 {
-            self.report(node, format!("{count} steps are named '{name}'"));
+            self.report(
+                node,
+                SfcProblemKind::DuplicateName {
+                    name: name.to_owned(),
+                    count,
+                },
+            );
         }
     }
 
-    /// Checks what a node holds (branches, a macro's body) and returns what it leaves open.
-    fn inside(&mut self, node: &SfcNode, in_macro: bool) -> Open {
+    /// Checks the sequences a node holds: its branches, a macro step's body.
+    fn inside(&mut self, node: &SfcNode, in_macro: bool) {
         match node {
-            SfcNode::Step(_) | SfcNode::Macro(_) | SfcNode::Parallel(_) => {
-                if let SfcNode::Macro(macro_step) = node {
-                    if macro_step.body.is_empty() {
-                        self.report(node, "the body of a macro step must begin with a step");
-                    }
-                    self.sequence(&macro_step.body, SequenceKind::Macro, true);
+            SfcNode::Macro(macro_step) => {
+                if macro_step.body.is_empty() {
+                    self.report(node, SfcProblemKind::EmptyMacroBody);
                 }
-                if let SfcNode::Parallel(branches) = node {
-                    for branch in &branches.branches {
-                        self.sequence(&branch.nodes, SequenceKind::Parallel, in_macro);
-                    }
-                }
-                Open::AfterStep
+                self.sequence(&macro_step.body, SequenceKind::Macro, true);
             }
-            SfcNode::Transition(_) => Open::AfterTransition,
-            SfcNode::Jump(_) => Open::Closed,
-            SfcNode::Alternative(branches) => {
-                let mut joined = false;
-                for branch in &branches.branches {
-                    let end = self.sequence(&branch.nodes, SequenceKind::Alternative, in_macro);
-                    joined |= end != Open::Closed;
-                }
-                if joined || branches.branches.is_empty() {
-                    Open::AfterTransition
+            SfcNode::Alternative(branches) | SfcNode::Parallel(branches) => {
+                let kind = if matches!(node, SfcNode::Alternative(_)) {
+                    SequenceKind::Alternative
                 } else {
-                    Open::Closed
+                    SequenceKind::Parallel
+                };
+                for branch in &branches.branches {
+                    self.sequence(&branch.nodes, kind, in_macro);
                 }
             }
+            SfcNode::Step(_) | SfcNode::Transition(_) | SfcNode::Jump(_) => {}
         }
     }
 }

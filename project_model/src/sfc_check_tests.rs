@@ -1,39 +1,20 @@
 use super::*;
-use crate::{
-    ActionAssociation, ActionQualifier, Jump, MacroStep, SfcBranches, SfcSequence, Step, Transition,
-};
+use crate::{ActionAssociation, ActionQualifier, MacroStep, SfcBranches, Step};
 
 fn step(id: u32, name: &str) -> SfcNode {
-    SfcNode::Step(Step {
-        id: ElementId(id),
-        name: name.into(),
-        ..Step::default()
-    })
+    SfcNode::step(ElementId(id), name)
 }
 
 fn transition(id: u32, condition: &str) -> SfcNode {
-    SfcNode::Transition(Transition {
-        id: ElementId(id),
-        condition: condition.into(),
-        ..Transition::default()
-    })
+    SfcNode::transition(ElementId(id), condition)
 }
 
 fn jump(id: u32, target: &str) -> SfcNode {
-    SfcNode::Jump(Jump {
-        id: ElementId(id),
-        target: target.into(),
-    })
+    SfcNode::jump(ElementId(id), target)
 }
 
 fn branches(id: u32, branches: Vec<Vec<SfcNode>>) -> SfcBranches {
-    SfcBranches {
-        id: ElementId(id),
-        branches: branches
-            .into_iter()
-            .map(|nodes| SfcSequence { nodes })
-            .collect(),
-    }
+    SfcBranches::new(ElementId(id), branches)
 }
 
 fn chart(sequence: Vec<SfcNode>) -> SfcChart {
@@ -332,5 +313,68 @@ fn a_branch_is_not_empty_and_an_association_names_its_action() {
             jump(3, "Init"),
         ]),
         "element 1 'Init': an action association names no action",
+    );
+}
+
+#[test]
+fn a_branch_ends_as_the_header_of_sfc_rs_says_and_edits_get_the_same_finding_typed() {
+    // A parallel branch ending in a parallel branch, and an alternative branch ending in an
+    // alternative branch, break the rules of `sfc.rs` (the load check once let them pass).
+    let nested_parallel = chart(vec![
+        step(1, "Init"),
+        transition(2, "a"),
+        SfcNode::Parallel(branches(
+            3,
+            vec![
+                vec![step(4, "L")],
+                vec![
+                    step(5, "R"),
+                    transition(6, "b"),
+                    SfcNode::Parallel(branches(7, vec![vec![step(8, "X")], vec![step(9, "Y")]])),
+                ],
+            ],
+        )),
+        transition(10, "c"),
+        jump(11, "Init"),
+    ]);
+    one_problem(
+        &nested_parallel,
+        "element 7: a branch of a parallel branch must end with a step",
+    );
+    let problems = sfc_chart_problems(&nested_parallel);
+    assert_eq!(
+        problems[0].to_edit_error(),
+        crate::sfc_edit::SfcEditError::Structure {
+            rule: SfcRule::ParallelEndsWithStep,
+            element: ElementId(7)
+        }
+    );
+    assert_eq!(
+        crate::sfc_edit::check_structure(&nested_parallel),
+        Err(problems[0].to_edit_error())
+    );
+    let nested_alternative = chart(vec![
+        step(1, "Init"),
+        SfcNode::Alternative(branches(
+            2,
+            vec![
+                vec![transition(3, "a"), jump(4, "Init")],
+                vec![
+                    transition(5, "b"),
+                    step(6, "S"),
+                    SfcNode::Alternative(branches(
+                        7,
+                        vec![vec![transition(8, "c")], vec![transition(9, "d")]],
+                    )),
+                ],
+            ],
+        )),
+        step(10, "After"),
+        transition(11, "e"),
+        jump(12, "Init"),
+    ]);
+    one_problem(
+        &nested_alternative,
+        "element 7: a branch of an alternative must end with a transition or a jump",
     );
 }

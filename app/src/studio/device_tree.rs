@@ -362,7 +362,12 @@ impl TreeUi<'_> {
         if let TreeNode::Object(name) = node
             && let Some(Object::Pou(pou)) = self.project.application.object(name)
         {
-            for kind in [MemberKind::Method, MemberKind::Action, MemberKind::Property] {
+            for kind in [
+                MemberKind::Method,
+                MemberKind::Action,
+                MemberKind::Transition,
+                MemberKind::Property,
+            ] {
                 if kind.allowed_in(pou.kind) && item(ui, kind.menu_text()) {
                     self.response.dialog = Some(TreeDialog::NewMember(MemberDialog::new(
                         self.project,

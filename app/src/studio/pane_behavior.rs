@@ -127,7 +127,8 @@ fn object_summary_ui(ui: &mut Ui, object: &project_model::Object, language: Lang
                     format!("{:?}", pou.kind),
                     count(Text::PouSummary, "{variables}", pou.variables.len())
                         .replace("{methods}", &pou.methods.len().to_string())
-                        .replace("{actions}", &pou.actions.len().to_string()),
+                        .replace("{actions}", &pou.actions.len().to_string())
+                        .replace("{transitions}", &pou.transitions.len().to_string()),
                 ),
                 Object::Gvl(gvl) => (
                     "GVL".to_owned(),

@@ -1,5 +1,5 @@
-//! Choosing the implementation language of new POUs, methods, actions and properties in the
-//! device tree's dialogs.
+//! Choosing the implementation language of new POUs, methods, actions, transitions and
+//! properties in the device tree's dialogs.
 
 use app::studio::TreeNode;
 use egui::Key;
@@ -117,4 +117,32 @@ fn a_method_name_the_function_block_uses_is_refused_and_a_free_one_opens_its_bod
             .query_by_label("Implementation of FB_Conveyor.Jog")
             .is_some()
     );
+}
+
+#[test]
+fn a_transition_is_added_to_a_program_from_its_context_menu_and_opens_on_its_body() {
+    let dir = example_copy();
+    let mut harness = studio(dir.path());
+    menu(&mut harness, "Main", "Add transition…");
+    harness.get_by_label("Structured Text (ST)").click();
+    harness.run();
+    enter_text(&mut harness, "Name", "Ready");
+
+    let transition = pou(project(&harness), "Main").transitions.last().cloned();
+    let transition = transition.expect("Main has no transition");
+    assert_eq!(transition.name, "Ready");
+    assert_eq!(transition.body, Body::st(""));
+    assert_eq!(
+        undo_label(&harness).as_deref(),
+        Some("Add transition Ready to Main")
+    );
+    // The document shows the new transition's body.
+    assert!(
+        harness
+            .query_by_label("Implementation of Main.Ready")
+            .is_some()
+    );
+
+    shortcut(&mut harness, Key::Z);
+    assert!(pou(project(&harness), "Main").transitions.is_empty());
 }

@@ -72,6 +72,12 @@ impl BodyGen<'_, '_, '_> {
 
     pub(super) fn bool_op(&mut self, op: BinaryOp, a: Operand, b: Operand) -> Operand {
         let dst = self.temp(1);
+        self.bool_op_into(op, dst, a, b);
+        dst
+    }
+
+    /// `dst := a op b` on BOOLs, into a place of the chart's state (`dst` may be `a`).
+    pub(super) fn bool_op_into(&mut self, op: BinaryOp, dst: Operand, a: Operand, b: Operand) {
         self.emit(Instr::Binary {
             op,
             ty: IE::Bool,
@@ -79,7 +85,6 @@ impl BodyGen<'_, '_, '_> {
             a,
             b,
         });
-        dst
     }
 
     pub(super) fn not(&mut self, src: Operand) -> Operand {
@@ -274,27 +279,25 @@ impl BodyGen<'_, '_, '_> {
             self.land(idle);
         }
         if has_entry_or_exit {
-            for (step, slots) in chart.steps.iter().zip(&sfc.steps) {
-                if let Some(exit) = step.action_property("EXIT") {
-                    let skip = self.skip_unless(inst(slots.leaving()));
-                    self.set_bool(slots.leaving(), false);
-                    self.run_action(&exit, &inline)?;
-                    self.land(skip);
-                }
-            }
-            for (step, slots) in chart.steps.iter().zip(&sfc.steps) {
-                if let Some(entry) = step.action_property("ENTRY") {
-                    let skip = self.skip_unless(inst(slots.entering()));
-                    self.set_bool(slots.entering(), false);
-                    self.run_action(&entry, &inline)?;
-                    self.land(skip);
-                }
-            }
-            for (step, slots) in chart.steps.iter().zip(&sfc.steps) {
-                if let Some(main) = step.action_property("MAIN") {
-                    let skip = self.skip_unless(inst(slots.x()));
-                    self.run_action(&main, &inline)?;
-                    self.land(skip);
+            // Exit actions of the steps left, entry actions of the steps entered, then the
+            // step actions of the active steps; the one-shot flags of the first two are
+            // cleared as their actions run.
+            type StepFlag = fn(&StepSlots) -> u32;
+            let passes: [(&str, StepFlag, bool); 3] = [
+                ("EXIT", StepSlots::leaving, true),
+                ("ENTRY", StepSlots::entering, true),
+                ("MAIN", StepSlots::x, false),
+            ];
+            for (property, flag, one_shot) in passes {
+                for (step, slots) in chart.steps.iter().zip(&sfc.steps) {
+                    if let Some(action) = step.action_property(property) {
+                        let skip = self.skip_unless(inst(flag(slots)));
+                        if one_shot {
+                            self.set_bool(flag(slots), false);
+                        }
+                        self.run_action(&action, &inline)?;
+                        self.land(skip);
+                    }
                 }
             }
         }

@@ -7,8 +7,8 @@ use program_image::{BinaryOp, CompareOp, Elementary as IE, Instr, Operand};
 
 use super::body::{BodyGen, Gen};
 use super::sfc::inst;
-use super::sfc_layout::{ActionSlots, QUALIFIERS, action_at};
-use crate::sfc_chart::{Association, Qualifier};
+use super::sfc_layout::{ActionSlots, action_at};
+use crate::sfc_chart::{ActionQualifier, Association};
 use crate::syntax::ast::StatementList;
 
 impl BodyGen<'_, '_, '_> {
@@ -17,7 +17,7 @@ impl BodyGen<'_, '_, '_> {
     pub(super) fn control_timer(
         &mut self,
         action: &ActionSlots,
-        qualifier: Qualifier,
+        qualifier: ActionQualifier,
         input: Operand,
         now: Operand,
     ) -> Operand {
@@ -53,135 +53,83 @@ impl BodyGen<'_, '_, '_> {
         now: Operand,
         inline: &HashMap<String, StatementList>,
     ) -> Gen<()> {
-        let used = |q: Qualifier| associations.iter().any(|a| a.qualifier == q);
+        let used = |q: ActionQualifier| associations.iter().any(|a| a.qualifier == q);
         let idle = self.skip_unless(inst(action.busy()));
-        let req = |q: Qualifier| inst(action.request(q));
-        let mem = |q: Qualifier| inst(action.memory(q));
-        let not_reset = self.not(req(Qualifier::R));
+        let req = |q: ActionQualifier| inst(action.request(q));
+        let mem = |q: ActionQualifier| inst(action.memory(q));
+        let not_reset = self.not(req(ActionQualifier::R));
         let q = self.temp(1);
-        self.move_bool(q, req(Qualifier::N));
+        self.move_bool(q, req(ActionQualifier::N));
         // A flip-flop with dominant reset: `memory := (memory OR set) AND NOT R`.
-        let latch = |this: &mut Self, qualifier: Qualifier, set: Operand| {
+        let latch = |this: &mut Self, qualifier: ActionQualifier, set: Operand| {
             let kept = this.bool_op(BinaryOp::Or, mem(qualifier), set);
-            this.emit(Instr::Binary {
-                op: BinaryOp::And,
-                ty: IE::Bool,
-                dst: mem(qualifier),
-                a: kept,
-                b: not_reset,
-            });
+            this.bool_op_into(BinaryOp::And, mem(qualifier), kept, not_reset);
         };
-        if used(Qualifier::S) {
-            latch(self, Qualifier::S, req(Qualifier::S));
-            self.emit(Instr::Binary {
-                op: BinaryOp::Or,
-                ty: IE::Bool,
-                dst: q,
-                a: q,
-                b: mem(Qualifier::S),
-            });
+        if used(ActionQualifier::S) {
+            latch(self, ActionQualifier::S, req(ActionQualifier::S));
+            self.bool_op_into(BinaryOp::Or, q, q, mem(ActionQualifier::S));
         }
-        if used(Qualifier::L) {
-            let done = self.control_timer(action, Qualifier::L, req(Qualifier::L), now);
+        if used(ActionQualifier::L) {
+            let done = self.control_timer(action, ActionQualifier::L, req(ActionQualifier::L), now);
             let left = self.not(done);
-            let on = self.bool_op(BinaryOp::And, req(Qualifier::L), left);
-            self.emit(Instr::Binary {
-                op: BinaryOp::Or,
-                ty: IE::Bool,
-                dst: q,
-                a: q,
-                b: on,
-            });
+            let on = self.bool_op(BinaryOp::And, req(ActionQualifier::L), left);
+            self.bool_op_into(BinaryOp::Or, q, q, on);
         }
-        if used(Qualifier::D) {
-            let done = self.control_timer(action, Qualifier::D, req(Qualifier::D), now);
-            self.emit(Instr::Binary {
-                op: BinaryOp::Or,
-                ty: IE::Bool,
-                dst: q,
-                a: q,
-                b: done,
-            });
+        if used(ActionQualifier::D) {
+            let done = self.control_timer(action, ActionQualifier::D, req(ActionQualifier::D), now);
+            self.bool_op_into(BinaryOp::Or, q, q, done);
         }
-        if used(Qualifier::P) {
-            let before = self.not(mem(Qualifier::P));
-            let edge = self.bool_op(BinaryOp::And, req(Qualifier::P), before);
-            self.move_bool(mem(Qualifier::P), req(Qualifier::P));
-            self.emit(Instr::Binary {
-                op: BinaryOp::Or,
-                ty: IE::Bool,
-                dst: q,
-                a: q,
-                b: edge,
-            });
+        if used(ActionQualifier::P) {
+            let before = self.not(mem(ActionQualifier::P));
+            let edge = self.bool_op(BinaryOp::And, req(ActionQualifier::P), before);
+            self.move_bool(mem(ActionQualifier::P), req(ActionQualifier::P));
+            self.bool_op_into(BinaryOp::Or, q, q, edge);
         }
-        if used(Qualifier::Sd) {
-            latch(self, Qualifier::Sd, req(Qualifier::Sd));
-            let done = self.control_timer(action, Qualifier::Sd, mem(Qualifier::Sd), now);
-            self.emit(Instr::Binary {
-                op: BinaryOp::Or,
-                ty: IE::Bool,
-                dst: q,
-                a: q,
-                b: done,
-            });
+        if used(ActionQualifier::SD) {
+            latch(self, ActionQualifier::SD, req(ActionQualifier::SD));
+            let done =
+                self.control_timer(action, ActionQualifier::SD, mem(ActionQualifier::SD), now);
+            self.bool_op_into(BinaryOp::Or, q, q, done);
         }
-        if used(Qualifier::Ds) {
-            let done = self.control_timer(action, Qualifier::Ds, req(Qualifier::Ds), now);
-            latch(self, Qualifier::Ds, done);
-            self.emit(Instr::Binary {
-                op: BinaryOp::Or,
-                ty: IE::Bool,
-                dst: q,
-                a: q,
-                b: mem(Qualifier::Ds),
-            });
+        if used(ActionQualifier::DS) {
+            let done =
+                self.control_timer(action, ActionQualifier::DS, req(ActionQualifier::DS), now);
+            latch(self, ActionQualifier::DS, done);
+            self.bool_op_into(BinaryOp::Or, q, q, mem(ActionQualifier::DS));
         }
-        if used(Qualifier::Sl) {
-            latch(self, Qualifier::Sl, req(Qualifier::Sl));
-            let done = self.control_timer(action, Qualifier::Sl, mem(Qualifier::Sl), now);
+        if used(ActionQualifier::SL) {
+            latch(self, ActionQualifier::SL, req(ActionQualifier::SL));
+            let done =
+                self.control_timer(action, ActionQualifier::SL, mem(ActionQualifier::SL), now);
             let left = self.not(done);
-            let on = self.bool_op(BinaryOp::And, mem(Qualifier::Sl), left);
-            self.emit(Instr::Binary {
-                op: BinaryOp::Or,
-                ty: IE::Bool,
-                dst: q,
-                a: q,
-                b: on,
-            });
+            let on = self.bool_op(BinaryOp::And, mem(ActionQualifier::SL), left);
+            self.bool_op_into(BinaryOp::Or, q, q, on);
         }
-        self.emit(Instr::Binary {
-            op: BinaryOp::And,
-            ty: IE::Bool,
-            dst: inst(action.active()),
-            a: q,
-            b: not_reset,
-        });
+        self.bool_op_into(BinaryOp::And, inst(action.active()), q, not_reset);
         // A: Q, or the falling edge of Q (the final call), or a P1 or P0 edge.
         let q_now = inst(action.active());
         let not_q = self.not(q_now);
         let fell = self.bool_op(BinaryOp::And, inst(action.at + action_at::Q_PREV), not_q);
         let mut runs = self.bool_op(BinaryOp::Or, q_now, fell);
-        if used(Qualifier::P1) {
-            let before = self.not(mem(Qualifier::P1));
-            let edge = self.bool_op(BinaryOp::And, req(Qualifier::P1), before);
-            self.move_bool(mem(Qualifier::P1), req(Qualifier::P1));
+        if used(ActionQualifier::P1) {
+            let before = self.not(mem(ActionQualifier::P1));
+            let edge = self.bool_op(BinaryOp::And, req(ActionQualifier::P1), before);
+            self.move_bool(mem(ActionQualifier::P1), req(ActionQualifier::P1));
             runs = self.bool_op(BinaryOp::Or, runs, edge);
         }
-        if used(Qualifier::P0) {
-            let gone = self.not(req(Qualifier::P0));
-            let edge = self.bool_op(BinaryOp::And, mem(Qualifier::P0), gone);
-            self.move_bool(mem(Qualifier::P0), req(Qualifier::P0));
+        if used(ActionQualifier::P0) {
+            let gone = self.not(req(ActionQualifier::P0));
+            let edge = self.bool_op(BinaryOp::And, mem(ActionQualifier::P0), gone);
+            self.move_bool(mem(ActionQualifier::P0), req(ActionQualifier::P0));
             runs = self.bool_op(BinaryOp::Or, runs, edge);
         }
         self.move_bool(inst(action.x()), runs);
-        self.emit(Instr::Binary {
-            op: BinaryOp::And,
-            ty: IE::Bool,
-            dst: inst(action.at + action_at::FINAL),
-            a: runs,
-            b: not_q,
-        });
+        self.bool_op_into(
+            BinaryOp::And,
+            inst(action.at + action_at::FINAL),
+            runs,
+            not_q,
+        );
         self.move_bool(inst(action.at + action_at::Q_PREV), q_now);
         // Indicators and a boolean action's variable follow Q.
         for association in associations {
@@ -203,7 +151,7 @@ impl BodyGen<'_, '_, '_> {
         });
         // Busy while anything could still change Q or A without a step asking.
         let mut busy = self.bool_op(BinaryOp::Or, q_now, runs);
-        for qualifier in QUALIFIERS {
+        for qualifier in ActionQualifier::ALL {
             if used(qualifier) {
                 busy = self.bool_op(BinaryOp::Or, busy, mem(qualifier));
                 if qualifier.is_timed() {

@@ -5,7 +5,7 @@
 
 use std::collections::HashMap;
 
-use crate::sfc_chart::{Chart, Qualifier};
+use crate::sfc_chart::{ActionQualifier, Chart};
 use crate::syntax::parse_statements;
 
 use super::sfc::top_level;
@@ -44,22 +44,11 @@ pub(super) mod action_at {
     pub(crate) const SIZE: u32 = 176;
 }
 
-pub(super) const QUALIFIERS: [Qualifier; 11] = [
-    Qualifier::N,
-    Qualifier::R,
-    Qualifier::S,
-    Qualifier::L,
-    Qualifier::D,
-    Qualifier::P,
-    Qualifier::P0,
-    Qualifier::P1,
-    Qualifier::Sd,
-    Qualifier::Ds,
-    Qualifier::Sl,
-];
-
-fn index_of(qualifier: Qualifier) -> u32 {
-    QUALIFIERS.iter().position(|q| *q == qualifier).unwrap_or(0) as u32
+fn index_of(qualifier: ActionQualifier) -> u32 {
+    ActionQualifier::ALL
+        .iter()
+        .position(|q| *q == qualifier)
+        .unwrap_or(0) as u32
 }
 
 /// One step's state in the instance.
@@ -124,19 +113,19 @@ impl ActionSlots {
     pub(super) fn busy(&self) -> u32 {
         self.busy
     }
-    pub(super) fn request(&self, q: Qualifier) -> u32 {
+    pub(super) fn request(&self, q: ActionQualifier) -> u32 {
         self.at + action_at::REQUEST + index_of(q)
     }
-    pub(super) fn memory(&self, q: Qualifier) -> u32 {
+    pub(super) fn memory(&self, q: ActionQualifier) -> u32 {
         self.at + action_at::MEMORY + index_of(q)
     }
-    pub(super) fn running(&self, q: Qualifier) -> u32 {
+    pub(super) fn running(&self, q: ActionQualifier) -> u32 {
         self.at + action_at::RUNNING + index_of(q)
     }
-    pub(super) fn time(&self, q: Qualifier) -> u32 {
+    pub(super) fn time(&self, q: ActionQualifier) -> u32 {
         self.at + action_at::TIME + 4 * index_of(q)
     }
-    pub(super) fn timer_started(&self, q: Qualifier) -> u32 {
+    pub(super) fn timer_started(&self, q: ActionQualifier) -> u32 {
         self.at + action_at::STARTED + 8 * index_of(q)
     }
 }

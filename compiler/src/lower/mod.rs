@@ -219,80 +219,84 @@ pub fn lower_project(project: &Project) -> LoweredProject<'_> {
                     format!("__{property}_{}__", if *get { "get" } else { "set" })
                 }
             };
-            if let Body::Sfc { chart } = body {
+            // Each graphical body is lowered into ST text with its probes, descriptions and
+            // findings; the text then takes the body's place in the copy that is checked.
+            let (out, probes, descriptions, findings) = if let Body::Sfc { chart } = body {
                 let mut lowering = sfc::ChartLowering::new(prefix, &transition_objects);
                 lowering.chart(chart);
                 hidden.append(&mut lowering.hidden);
-                texts.push((index, lowering.out.text.clone()));
-                bodies.push(LoweredBody {
-                    pou: pou.name.clone(),
-                    target,
-                    file: file.clone(),
-                    text_file: folder.join(format!("{}{suffix}", pou.name)),
-                    text: lowering.out.text,
-                    origins: OriginMap::new(lowering.out.spans),
-                    probes: lowering.probes,
-                    descriptions: lowering.descriptions,
-                    findings: Vec::new(),
-                });
-                continue;
-            }
-            if !matches!(body, Body::Ld { .. } | Body::Fbd { .. } | Body::Cfc { .. }) {
-                continue;
-            }
-            let scope = std::cell::OnceCell::new();
-            let typed_target = target.clone();
-            let type_of = |expression: &str| {
-                let scope = scope.get_or_init(|| {
-                    let globals = globals.get_or_init(|| crate::sema::scope::Globals::new(project));
-                    crate::sema::expression_scope(globals, pou, &typed_target)
-                });
-                crate::sema::expression_declared_type(scope, expression)
-            };
-            let mut lowering = BodyLowering::new(prefix, &classify, &type_of);
-            match body {
-                Body::Cfc { chart } => {
-                    // A chart's results may read hidden variables (feedback, structures), so
-                    // they are typed in a scope that declares those known so far.
-                    let of_expressions = |hidden: &[Variable], expressions: &[String]| {
+                (
+                    lowering.out,
+                    lowering.probes,
+                    lowering.descriptions,
+                    Vec::new(),
+                )
+            } else {
+                if !matches!(body, Body::Ld { .. } | Body::Fbd { .. } | Body::Cfc { .. }) {
+                    continue;
+                }
+                let scope = std::cell::OnceCell::new();
+                let typed_target = target.clone();
+                let type_of = |expression: &str| {
+                    let scope = scope.get_or_init(|| {
                         let globals =
                             globals.get_or_init(|| crate::sema::scope::Globals::new(project));
-                        let mut with_hidden = pou.clone();
-                        with_hidden.variables.extend(hidden.iter().cloned());
-                        let scope = crate::sema::expression_scope(globals, &with_hidden, &target);
-                        expressions
-                            .iter()
-                            .map(|expression| {
-                                crate::sema::expression_declared_type(&scope, expression)
-                            })
-                            .collect()
-                    };
-                    let of_function_output = |function: &str, pin: &str| {
-                        function_outputs
-                            .get(&(function.trim().to_lowercase(), pin.to_lowercase()))
-                            .cloned()
-                    };
-                    let types = cfc::ChartTypes {
-                        of_expressions: &of_expressions,
-                        of_function_output: &of_function_output,
-                    };
-                    lowering.chart(chart, &types);
+                        crate::sema::expression_scope(globals, pou, &typed_target)
+                    });
+                    crate::sema::expression_declared_type(scope, expression)
+                };
+                let mut lowering = BodyLowering::new(prefix, &classify, &type_of);
+                match body {
+                    Body::Cfc { chart } => {
+                        // A chart's results may read hidden variables (feedback, structures), so
+                        // they are typed in a scope that declares those known so far.
+                        let of_expressions = |hidden: &[Variable], expressions: &[String]| {
+                            let globals =
+                                globals.get_or_init(|| crate::sema::scope::Globals::new(project));
+                            let mut with_hidden = pou.clone();
+                            with_hidden.variables.extend(hidden.iter().cloned());
+                            let scope =
+                                crate::sema::expression_scope(globals, &with_hidden, &target);
+                            expressions
+                                .iter()
+                                .map(|expression| {
+                                    crate::sema::expression_declared_type(&scope, expression)
+                                })
+                                .collect()
+                        };
+                        let of_function_output = |function: &str, pin: &str| {
+                            function_outputs
+                                .get(&(function.trim().to_lowercase(), pin.to_lowercase()))
+                                .cloned()
+                        };
+                        let types = cfc::ChartTypes {
+                            of_expressions: &of_expressions,
+                            of_function_output: &of_function_output,
+                        };
+                        lowering.chart(chart, &types);
+                    }
+                    Body::Ld { networks } | Body::Fbd { networks } => lowering.body(networks),
+                    _ => {}
                 }
-                Body::Ld { networks } | Body::Fbd { networks } => lowering.body(networks),
-                _ => {}
-            }
-            hidden.append(&mut lowering.hidden);
-            texts.push((index, lowering.out.text.clone()));
+                hidden.append(&mut lowering.hidden);
+                (
+                    lowering.out,
+                    lowering.probes,
+                    lowering.descriptions,
+                    lowering.findings,
+                )
+            };
+            texts.push((index, out.text.clone()));
             bodies.push(LoweredBody {
                 pou: pou.name.clone(),
                 target,
                 file: file.clone(),
                 text_file: folder.join(format!("{}{suffix}", pou.name)),
-                text: lowering.out.text,
-                origins: OriginMap::new(lowering.out.spans),
-                probes: lowering.probes,
-                descriptions: lowering.descriptions,
-                findings: lowering.findings,
+                text: out.text,
+                origins: OriginMap::new(out.spans),
+                probes,
+                descriptions,
+                findings,
             });
         }
         if let Some(Object::Pou(copy)) = lowered.application.object_mut(&pou.name) {

@@ -4,8 +4,8 @@
 
 use expect_test::{Expect, expect};
 use project_model::{
-    ActionAssociation, ActionQualifier, Body, ElementId, Jump, MacroStep, Object, PouAction,
-    Project, SfcBranches, SfcChart, SfcNode, SfcSequence, Step, Transition,
+    ActionAssociation, ActionQualifier, Body, ElementId, MacroStep, Object, PouAction, Project,
+    SfcBranches, SfcChart, SfcNode, Step, Transition,
 };
 
 use crate::SourceProject;
@@ -29,28 +29,15 @@ fn step(id: u32, name: &str, actions: &[(&str, ActionQualifier)]) -> SfcNode {
 }
 
 fn transition(id: u32, condition: &str) -> SfcNode {
-    SfcNode::Transition(Transition {
-        id: ElementId(id),
-        condition: condition.into(),
-        ..Transition::default()
-    })
+    SfcNode::transition(ElementId(id), condition)
 }
 
 fn jump(id: u32, target: &str) -> SfcNode {
-    SfcNode::Jump(Jump {
-        id: ElementId(id),
-        target: target.into(),
-    })
+    SfcNode::jump(ElementId(id), target)
 }
 
 fn branches(id: u32, branches: Vec<Vec<SfcNode>>) -> SfcBranches {
-    SfcBranches {
-        id: ElementId(id),
-        branches: branches
-            .into_iter()
-            .map(|nodes| SfcSequence { nodes })
-            .collect(),
-    }
+    SfcBranches::new(ElementId(id), branches)
 }
 
 const DECLARATIONS: &str = "PROGRAM Main

@@ -3,16 +3,16 @@
 
 use std::collections::HashSet;
 
-use egui::{
-    EventFilter, Id, PointerButton, Pos2, Rect, Response, Role, Sense, Ui, Vec2, WidgetInfo, pos2,
-    vec2,
-};
+use egui::{Id, PointerButton, Pos2, Rect, Response, Ui, pos2, vec2};
 use project_model::cfc_edit as edit;
 use project_model::{CfcElementKind, ElementId, GridPoint, PinRef};
 
-use super::editor::{CfcEditor, Drag, FrameResult, ZOOM_RANGE};
+use super::editor::{CfcEditor, Drag, FrameResult};
 use super::geometry::{GRID_PX, ROW_UNITS};
 use crate::diagram::DiagramServices;
+use crate::diagram::canvas_input::{
+    CanvasView, canvas_response, focused_canvas_events, zoom_and_pan_ui,
+};
 
 /// How near a pin or a control point the pointer must be to take it, in grid units.
 const PIN_RADIUS_UNITS: f32 = 0.8;
@@ -64,16 +64,10 @@ impl CfcEditor {
                 continue;
             };
             if let Some((name, _)) = shape.inputs.iter().find(|(_, point)| near(*point)) {
-                return Hit::Input(PinRef {
-                    element: element.id,
-                    pin: name.clone(),
-                });
+                return Hit::Input(PinRef::new(element.id, name.clone()));
             }
             if let Some((name, _)) = shape.outputs.iter().find(|(_, point)| near(*point)) {
-                return Hit::Output(PinRef {
-                    element: element.id,
-                    pin: name.clone(),
-                });
+                return Hit::Output(PinRef::new(element.id, name.clone()));
             }
         }
         if let Some(wire) = &self.selection.wire
@@ -130,29 +124,18 @@ impl CfcEditor {
             content.x.max(viewport.width()),
             content.y.max(viewport.height()),
         );
-        let (_, rect) = ui.allocate_space(size);
-        let response = ui.interact(rect, id, Sense::click_and_drag());
-        let enabled = ui.is_enabled();
-        let label_text = label.to_owned();
-        response.widget_info(|| WidgetInfo::labeled(Role::Canvas, enabled, &label_text));
-        if std::mem::take(&mut self.focus_requested)
-            || response.clicked()
-            || response.drag_started()
-        {
-            response.request_focus();
-        }
+        let response = canvas_response(ui, size, id, label, &mut self.focus_requested);
+        let rect = response.rect;
         let origin = rect.min;
         self.last_origin = origin;
-        self.zoom_and_pan_ui(ui, &response, origin, viewport);
+        let view = CanvasView {
+            zoom: &mut self.zoom,
+            pending_offset: &mut self.pending_offset,
+            scroll_offset: self.scroll_offset,
+        };
+        zoom_and_pan_ui(ui, &response, origin, viewport, view);
         if response.has_focus() && self.entry.is_none() {
-            let filter = EventFilter {
-                tab: false,
-                horizontal_arrows: true,
-                vertical_arrows: true,
-                escape: true,
-            };
-            ui.memory_mut(|memory| memory.set_focus_lock_filter(id, filter));
-            let events = ui.input(|input| input.filtered_events(&filter));
+            let events = focused_canvas_events(ui, id);
             self.handle_events(ui.ctx(), &events, frame);
         }
         self.pointer_ui(ui, &response, origin, frame);
@@ -167,24 +150,6 @@ impl CfcEditor {
         );
         self.entry_ui(ui.ctx(), id, origin, services, frame);
         response
-    }
-
-    fn zoom_and_pan_ui(&mut self, ui: &Ui, response: &Response, origin: Pos2, viewport: Rect) {
-        if let Some(pointer) = response.hover_pos() {
-            let factor = ui.input(|input| input.zoom_delta());
-            if (factor - 1.0).abs() > f32::EPSILON {
-                let zoom = (self.zoom * factor).clamp(ZOOM_RANGE.0, ZOOM_RANGE.1);
-                // The content point under the mouse stays under it.
-                let under_mouse = (pointer - origin) / self.zoom;
-                let in_viewport = pointer - (origin + viewport.min.to_vec2());
-                self.pending_offset = Some((under_mouse * zoom - in_viewport).max(Vec2::ZERO));
-                self.zoom = zoom;
-            }
-        }
-        if response.dragged_by(PointerButton::Middle) {
-            self.pending_offset =
-                Some((self.scroll_offset - response.drag_delta()).max(Vec2::ZERO));
-        }
     }
 
     fn pointer_ui(&mut self, ui: &Ui, response: &Response, origin: Pos2, frame: &mut FrameResult) {
@@ -423,10 +388,7 @@ impl CfcEditor {
         let shape = self.shapes.get(&id)?;
         let pins = if input { &shape.inputs } else { &shape.outputs };
         match pins.as_slice() {
-            [(name, _)] => Some(PinRef {
-                element: id,
-                pin: name.clone(),
-            }),
+            [(name, _)] => Some(PinRef::new(id, name.clone())),
             _ => None,
         }
     }

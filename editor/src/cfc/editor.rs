@@ -17,8 +17,6 @@ use crate::diagram::{DiagramOnline, DiagramServices, InstanceDeclaration, Prepar
 
 /// The width of the toolbox, in points.
 const TOOLBOX_WIDTH_PX: f32 = 150.0;
-/// The smallest and largest zoom factors.
-pub(super) const ZOOM_RANGE: (f32, f32) = (0.25, 4.0);
 /// The empty grid units kept right of and below the chart, so there is room to place more.
 const ROOM_UNITS: i32 = 40;
 

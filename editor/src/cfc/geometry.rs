@@ -6,8 +6,8 @@
 //! of its left or right side; a box, composer or selector has a head row with its type and one
 //! row per pin below it.
 
-use project_model::cfc_edit::{element_inputs, element_outputs};
 use project_model::{CfcElement, CfcElementKind, GridPoint};
+use project_model::{cfc_input_pins, cfc_output_pins};
 
 use super::router::GridRect;
 use crate::diagram::measure::{BOX_LEAD_PX, box_cells, operand_width_px};
@@ -81,8 +81,8 @@ pub fn element_title(kind: &CfcElementKind) -> &str {
 /// The shape of `element`, moved by `offset` grid units (the drag in progress, or zero).
 pub fn element_shape(element: &CfcElement, offset: GridPoint) -> ElementShape {
     let (x, y) = (element.x + offset.x, element.y + offset.y);
-    let inputs = element_inputs(&element.kind);
-    let outputs = element_outputs(&element.kind);
+    let inputs = cfc_input_pins(&element.kind);
+    let outputs = cfc_output_pins(&element.kind);
     let (width, height, first_pin_row) = match &element.kind {
         CfcElementKind::Comment { width, height, .. } => {
             ((*width as i32).max(1), (*height as i32).max(1), 0)
@@ -151,15 +151,7 @@ mod tests {
 
     #[test]
     fn a_box_has_a_row_per_pin_under_its_head_and_grows_with_its_names() {
-        let pins = |names: &[&str]| {
-            names
-                .iter()
-                .map(|name| CfcPin {
-                    name: (*name).to_owned(),
-                    ..CfcPin::default()
-                })
-                .collect()
-        };
+        let pins = |names: &[&str]| names.iter().map(|name| CfcPin::named(*name)).collect();
         let timer = placed(CfcElementKind::Box(CfcBox {
             type_name: "TON".to_owned(),
             instance: "t".to_owned(),

@@ -1,16 +1,15 @@
 //! The context menu and the keyboard: execution order commands, pin modifiers, output kinds,
 //! control points, deletion, clipboard and moving by arrow keys.
 
-use std::sync::Arc;
-
 use egui::{Event, Key, Modifiers, Pos2, Response};
 use project_model::cfc_edit as edit;
-use project_model::{CfcEditError, CfcElementKind, CoilKind, Edge, GridPoint, PinRef};
+use project_model::{CfcChart, CfcEditError, CfcElementKind, CoilKind, Edge, GridPoint, PinRef};
 
 use super::canvas::Hit;
 use super::editor::{CfcEditor, FrameResult};
 use super::entry::EntryTarget;
 use super::types::CfcOrderCommand;
+use crate::diagram::clipboard::{copied_structure, copy_structure, keep_structure};
 
 /// Where pasted elements go, relative to where they were copied, in grid units.
 const PASTE_OFFSET: GridPoint = GridPoint { x: 2, y: 2 };
@@ -267,20 +266,12 @@ impl CfcEditor {
         let Ok(fragment) = edit::copy_elements(&self.chart, &self.selection.elements) else {
             return;
         };
-        let text = fragment
+        let words: Vec<String> = fragment
             .elements
             .iter()
-            .map(|element| super::geometry::element_title(&element.kind))
-            .filter(|word| !word.is_empty())
-            .collect::<Vec<_>>()
-            .join(" ");
-        ctx.copy_text(text.clone());
-        ctx.data_mut(|data| {
-            data.insert_temp(
-                Self::clipboard_id(),
-                Arc::new(CopiedElements { text, fragment }),
-            )
-        });
+            .map(|element| super::geometry::element_title(&element.kind).to_owned())
+            .collect();
+        copy_structure(ctx, Self::clipboard_id(), words, fragment);
     }
 
     /// Pastes the elements copied last beside where they were, or, when the system clipboard
@@ -289,8 +280,8 @@ impl CfcEditor {
         if self.read_only {
             return;
         }
-        let copied = ctx.data(|data| data.get_temp::<Arc<CopiedElements>>(Self::clipboard_id()));
-        let Some(copied) = copied.filter(|copied| text.is_empty() || copied.text == text) else {
+        let copied = copied_structure::<CfcChart>(ctx, Self::clipboard_id(), text);
+        let Some(copied) = copied else {
             if let [id] = self.selection.elements.as_slice()
                 && !text.trim().is_empty()
             {
@@ -299,40 +290,23 @@ impl CfcEditor {
             }
             return;
         };
-        let (chart, ids) = edit::paste_elements(&self.chart, &copied.fragment, PASTE_OFFSET);
+        let (chart, ids) = edit::paste_elements(&self.chart, &copied.structure, PASTE_OFFSET);
         if self.apply(Ok(chart), frame) {
             self.selection.elements = ids.clone();
             self.selection.wire = None;
             // A second paste lands beside the first.
             if let Ok(moved) = edit::move_elements(
-                &copied.fragment,
+                &copied.structure,
                 &copied
-                    .fragment
+                    .structure
                     .elements
                     .iter()
                     .map(|e| e.id)
                     .collect::<Vec<_>>(),
                 PASTE_OFFSET,
             ) {
-                ctx.data_mut(|data| {
-                    data.insert_temp(
-                        Self::clipboard_id(),
-                        Arc::new(CopiedElements {
-                            text: copied.text.clone(),
-                            fragment: moved,
-                        }),
-                    )
-                });
+                keep_structure(ctx, Self::clipboard_id(), copied.text.clone(), moved);
             }
         }
     }
-}
-
-/// The elements a CFC editor copied, and the text it gave the system clipboard for them.
-#[derive(Clone, Debug)]
-struct CopiedElements {
-    /// The text on the system clipboard.
-    text: String,
-    /// The elements and the wires between them.
-    fragment: project_model::CfcChart,
 }

@@ -194,14 +194,7 @@ impl CfcEditor {
                         y: at.y - ROW_UNITS / 2,
                     },
                 );
-                edit::connect(
-                    &chart,
-                    &PinRef {
-                        element: id,
-                        pin: String::new(),
-                    },
-                    &pin,
-                )
+                edit::connect(&chart, &PinRef::new(id, ""), &pin)
             }
             Hit::Output(pin) if self.is_connectable(&pin.element) => {
                 let at = self.shapes[&pin.element]
@@ -218,14 +211,7 @@ impl CfcEditor {
                         y: at.y - ROW_UNITS / 2,
                     },
                 );
-                edit::connect(
-                    &chart,
-                    &pin,
-                    &PinRef {
-                        element: id,
-                        pin: String::new(),
-                    },
-                )
+                edit::connect(&chart, &pin, &PinRef::new(id, ""))
             }
             Hit::Element(id)
             | Hit::Input(PinRef { element: id, .. })

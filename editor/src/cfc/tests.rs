@@ -193,10 +193,7 @@ fn orders(chart: &CfcChart) -> Vec<(u32, Option<u32>)> {
 }
 
 fn pin(element: u32, name: &str) -> PinRef {
-    PinRef {
-        element: ElementId(element),
-        pin: name.to_owned(),
-    }
+    PinRef::new(ElementId(element), name)
 }
 
 /// Input `a` (0) and ADD (1) and output `y` (2), placed and wired through the user interface.

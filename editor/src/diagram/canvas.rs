@@ -1,13 +1,11 @@
 //! The canvas in a frame: zoom and pan, hit testing, the pointer (selection, rubber band,
 //! double-click to edit, drops from the toolbox), and where the text field goes.
 
-use egui::{
-    EventFilter, Id, PointerButton, Pos2, Rect, Response, Role, Sense, Stroke, StrokeKind, Ui,
-    Vec2, WidgetInfo, pos2, vec2,
-};
+use egui::{Id, PointerButton, Pos2, Rect, Response, Stroke, StrokeKind, Ui, pos2, vec2};
 use project_model::{Anchor, ElementRef, HeaderField};
 
-use super::editor::{DiagramEditor, FrameResult, HEADER_HEIGHT_PX, LEFT_MARGIN_PX, ZOOM_RANGE};
+use super::canvas_input::{CanvasView, canvas_response, focused_canvas_events, zoom_and_pan_ui};
+use super::editor::{DiagramEditor, FrameResult, HEADER_HEIGHT_PX, LEFT_MARGIN_PX};
 use super::entry::EntryTarget;
 use super::measure::shortened;
 use super::placed::{InsertTarget, Shape};
@@ -56,29 +54,18 @@ impl DiagramEditor {
             content.x.max(viewport.width()) + room_x,
             content.y.max(viewport.height()) + viewport.height() * 0.5,
         );
-        let (_, rect) = ui.allocate_space(size);
-        let response = ui.interact(rect, id, Sense::click_and_drag());
-        let enabled = ui.is_enabled();
-        let label_text = label.to_owned();
-        response.widget_info(|| WidgetInfo::labeled(Role::Canvas, enabled, &label_text));
-        if std::mem::take(&mut self.focus_requested)
-            || response.clicked()
-            || response.drag_started()
-        {
-            response.request_focus();
-        }
+        let response = canvas_response(ui, size, id, label, &mut self.focus_requested);
+        let rect = response.rect;
         let origin = rect.min;
         self.last_origin = origin;
-        self.zoom_and_pan_ui(ui, &response, origin, viewport);
+        let view = CanvasView {
+            zoom: &mut self.zoom,
+            pending_offset: &mut self.pending_offset,
+            scroll_offset: self.scroll_offset,
+        };
+        zoom_and_pan_ui(ui, &response, origin, viewport, view);
         if response.has_focus() && self.entry.is_none() {
-            let filter = EventFilter {
-                tab: false,
-                horizontal_arrows: true,
-                vertical_arrows: true,
-                escape: true,
-            };
-            ui.memory_mut(|memory| memory.set_focus_lock_filter(id, filter));
-            let events = ui.input(|input| input.filtered_events(&filter));
+            let events = focused_canvas_events(ui, id);
             self.handle_events(ui.ctx(), &events, frame);
         }
         self.pointer_ui(ui, &response, origin, services, frame);
@@ -101,24 +88,6 @@ impl DiagramEditor {
             self.entry_ui(ui.ctx(), id, screen, services, frame);
         }
         response
-    }
-
-    fn zoom_and_pan_ui(&mut self, ui: &Ui, response: &Response, origin: Pos2, viewport: Rect) {
-        if let Some(pointer) = response.hover_pos() {
-            let factor = ui.input(|input| input.zoom_delta());
-            if (factor - 1.0).abs() > f32::EPSILON {
-                let zoom = (self.zoom * factor).clamp(ZOOM_RANGE.0, ZOOM_RANGE.1);
-                // The content point under the mouse stays under it.
-                let under_mouse = (pointer - origin) / self.zoom;
-                let in_viewport = pointer - (origin + viewport.min.to_vec2());
-                self.pending_offset = Some((under_mouse * zoom - in_viewport).max(Vec2::ZERO));
-                self.zoom = zoom;
-            }
-        }
-        if response.dragged_by(PointerButton::Middle) {
-            self.pending_offset =
-                Some((self.scroll_offset - response.drag_delta()).max(Vec2::ZERO));
-        }
     }
 
     /// What is at `pos`, in content points at zoom 1.

@@ -27,8 +27,6 @@ pub(super) const NETWORK_GAP_PX: f32 = 18.0;
 pub(super) const LEFT_MARGIN_PX: f32 = 48.0;
 /// The width of the toolbox, in points.
 const TOOLBOX_WIDTH_PX: f32 = 120.0;
-/// The smallest and largest zoom factors.
-pub(super) const ZOOM_RANGE: (f32, f32) = (0.25, 4.0);
 
 /// The combined LD/FBD editor of one graphical body.
 ///

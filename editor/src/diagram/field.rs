@@ -7,7 +7,7 @@ use egui::{Id, Key, Rect, TextEdit};
 use crate::CompletionItem;
 
 /// How many completion candidates the list under the field shows.
-const MAX_CANDIDATES: usize = 8;
+pub(crate) const MAX_CANDIDATES: usize = 8;
 
 /// The state of an open field: the text typed and the completion the arrows moved to.
 #[derive(Clone, Debug)]
@@ -135,19 +135,8 @@ impl CompletionField {
                             left = true;
                         }
                     }
-                    for (index, candidate) in candidates.iter().take(MAX_CANDIDATES).enumerate() {
-                        let detail = detail_without_label(&candidate.label, &candidate.detail);
-                        let text = if detail.is_empty() {
-                            candidate.label.clone()
-                        } else {
-                            format!("{}  {detail}", candidate.label)
-                        };
-                        if ui
-                            .selectable_label(highlighted == Some(index), text)
-                            .clicked()
-                        {
-                            commit = Some(accepted_text(&self.text, &candidate.label));
-                        }
+                    if let Some(index) = candidate_list_ui(ui, candidates, highlighted) {
+                        commit = Some(accepted_text(&self.text, &candidates[index].label));
                     }
                 });
             });
@@ -190,4 +179,29 @@ pub(crate) fn detail_without_label(label: &str, detail: &str) -> String {
         all => all,
     };
     words.join(" ")
+}
+
+/// Lists the first [`MAX_CANDIDATES`] of `candidates` under a field, each with its detail and
+/// the `highlighted` one marked; returns the index of the one clicked.
+pub(crate) fn candidate_list_ui(
+    ui: &mut egui::Ui,
+    candidates: &[CompletionItem],
+    highlighted: Option<usize>,
+) -> Option<usize> {
+    let mut clicked = None;
+    for (index, candidate) in candidates.iter().take(MAX_CANDIDATES).enumerate() {
+        let detail = detail_without_label(&candidate.label, &candidate.detail);
+        let text = if detail.is_empty() {
+            candidate.label.clone()
+        } else {
+            format!("{}  {detail}", candidate.label)
+        };
+        if ui
+            .selectable_label(highlighted == Some(index), text)
+            .clicked()
+        {
+            clicked = Some(index);
+        }
+    }
+    clicked
 }

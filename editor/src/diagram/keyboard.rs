@@ -1,14 +1,13 @@
 //! The keyboard and the clipboard: commands by key, arrows, typing into the selected element,
 //! cut, copy and paste, and running commands and toolbox drops as structural edits.
 
-use std::sync::Arc;
-
 use egui::{Event, Id, Key};
 use project_model::{
     Anchor, ElementRef, HeaderField, NetworkClipboard, NetworkEditError, Side, copy_elements,
     copy_networks, paste,
 };
 
+use super::clipboard::{copied_structure, copy_structure};
 use super::commands::{DiagramCommand, command_for_key, run_command};
 use super::editor::{DiagramEditor, FrameResult};
 use super::entry::{Entry, EntryTarget};
@@ -105,15 +104,7 @@ impl DiagramEditor {
             project_model::walk_outputs(&clipboard.outputs, &mut |element| {
                 words.push(element_word(&element))
             });
-            words.retain(|word| !word.is_empty());
-            let text = words.join(" ");
-            ctx.copy_text(text.clone());
-            ctx.data_mut(|data| {
-                data.insert_temp(
-                    Self::clipboard_id(),
-                    Arc::new(CopiedStructure { text, clipboard }),
-                )
-            });
+            copy_structure(ctx, Self::clipboard_id(), words, clipboard);
         }
     }
 
@@ -123,14 +114,14 @@ impl DiagramEditor {
         if self.read_only {
             return;
         }
-        let copied = ctx.data(|data| data.get_temp::<Arc<CopiedStructure>>(Self::clipboard_id()));
-        let Some(copied) = copied.filter(|copied| text.is_empty() || copied.text == text) else {
+        let copied = copied_structure::<NetworkClipboard>(ctx, Self::clipboard_id(), text);
+        let Some(copied) = copied else {
             if !text.is_empty() {
                 self.open_selected_entry(Some(text.trim()));
             }
             return;
         };
-        let clipboard = &copied.clipboard;
+        let clipboard = &copied.structure;
         let anchor = self
             .selection
             .anchor()
@@ -248,15 +239,6 @@ impl DiagramEditor {
         };
         self.entry = Some(Entry::new(target, text));
     }
-}
-
-/// What a copy put in the egui context, shared by the studio's diagram editors until the next
-/// copy: the structure and the text given to the system clipboard with it.
-struct CopiedStructure {
-    /// The operands' text the system clipboard got.
-    text: String,
-    /// The copied elements or networks.
-    clipboard: NetworkClipboard,
 }
 
 /// The word an element contributes to the clipboard's text.

@@ -7,7 +7,9 @@
 //! editor never changes the model itself and keeps no undo history.
 
 mod canvas;
+pub(crate) mod canvas_input;
 mod canvas_paint;
+pub(crate) mod clipboard;
 mod commands;
 mod editor;
 pub(crate) mod entry;

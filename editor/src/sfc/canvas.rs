@@ -1,13 +1,15 @@
 //! The chart's canvas in a frame: zoom, the pointer (selection, double-click to edit, the
 //! context menu), the keys, and where the text field goes.
 
-use egui::{Event, EventFilter, Id, Key, Pos2, Rect, Response, Role, Sense, Ui, WidgetInfo};
+use egui::{Event, Id, Key, Pos2, Rect, Response, Sense, Ui};
 use project_model::sfc_edit::find_node;
 use project_model::{ElementId, SfcNode};
 
 use super::commands::{INSERTIONS, SfcCommand, command_for_key};
-use super::editor::{FrameResult, SfcEditor, ZOOM_RANGE};
+use super::editor::{FrameResult, SfcEditor};
 use crate::DiagramServices;
+use crate::diagram::canvas_input::ZOOM_RANGE;
+use crate::diagram::canvas_input::{describe_canvas, focused_canvas_events};
 
 /// Which way an arrow key moves the selection.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -31,9 +33,7 @@ impl SfcEditor {
         let (rect, _) = ui.allocate_exact_size(size, Sense::hover());
         let canvas_id = Self::canvas_id(id);
         let response = ui.interact(rect, canvas_id, Sense::click_and_drag());
-        let enabled = ui.is_enabled();
-        let label_text = label.to_owned();
-        response.widget_info(|| WidgetInfo::labeled(Role::Canvas, enabled, &label_text));
+        describe_canvas(ui, &response, label);
         if std::mem::take(&mut self.focus_requested) || response.clicked() {
             response.request_focus();
         }
@@ -45,14 +45,7 @@ impl SfcEditor {
             }
         }
         if response.has_focus() && self.entry.is_none() {
-            let filter = EventFilter {
-                tab: false,
-                horizontal_arrows: true,
-                vertical_arrows: true,
-                escape: true,
-            };
-            ui.memory_mut(|memory| memory.set_focus_lock_filter(canvas_id, filter));
-            let events = ui.input(|input| input.filtered_events(&filter));
+            let events = focused_canvas_events(ui, canvas_id);
             self.handle_events(ui.ctx(), &events, frame);
         }
         self.pointer_ui(ui, &response, frame);

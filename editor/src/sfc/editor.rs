@@ -17,8 +17,6 @@ use crate::diagram::toolbox::drag_or_click_ui;
 const TOOLBOX_WIDTH_PX: f32 = 150.0;
 /// The width of the properties panel, in points.
 const PANEL_WIDTH_PX: f32 = 260.0;
-/// The zoom's limits.
-pub(super) const ZOOM_RANGE: (f32, f32) = (0.25, 4.0);
 
 /// The SFC editor of one body: a structured chart laid out automatically, edited by commands
 /// on the selection. It never changes the model: each gesture comes out as one [`SfcChange`]

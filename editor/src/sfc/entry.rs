@@ -12,11 +12,9 @@ use project_model::{ActionAssociation, ActionQualifier, ElementId, SfcNode};
 
 use super::editor::{FrameResult, SfcEditor};
 use super::layout::{ACTION_ROW_PX, STEP_HEIGHT_PX, TEXT_GAP_PX};
-use crate::diagram::field::{accepted_text, detail_without_label};
+use crate::diagram::field::{MAX_CANDIDATES, accepted_text, candidate_list_ui};
 use crate::{CompletionItem, CompletionKind, DiagramServices};
 
-/// How many completion candidates the list under the field shows.
-const MAX_CANDIDATES: usize = 8;
 /// The least width of the field, in points.
 const MIN_FIELD_WIDTH_PX: f32 = 160.0;
 
@@ -294,19 +292,8 @@ impl SfcEditor {
                             left = true;
                         }
                     }
-                    for (index, candidate) in candidates.iter().take(MAX_CANDIDATES).enumerate() {
-                        let detail = detail_without_label(&candidate.label, &candidate.detail);
-                        let text = if detail.is_empty() {
-                            candidate.label.clone()
-                        } else {
-                            format!("{}  {detail}", candidate.label)
-                        };
-                        if ui
-                            .selectable_label(highlighted == Some(index), text)
-                            .clicked()
-                        {
-                            commit = Some(accept(&entry.text, &candidate.label));
-                        }
+                    if let Some(index) = candidate_list_ui(ui, &candidates, highlighted) {
+                        commit = Some(accept(&entry.text, &candidates[index].label));
                     }
                 });
             });

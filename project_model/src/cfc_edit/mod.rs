@@ -23,8 +23,8 @@ pub use order::{
     set_execution_order,
 };
 pub use pins::{
-    element_inputs, element_outputs, extend_box, is_extensible, set_box_type, set_coil, set_edge,
-    set_instance, set_members, set_text, toggle_negation,
+    extend_box, is_extensible, set_box_type, set_coil, set_edge, set_instance, set_members,
+    set_text, toggle_negation,
 };
 pub use wires::{add_control_point, connect, disconnect, move_control_point, remove_control_point};
 

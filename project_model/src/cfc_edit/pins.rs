@@ -2,49 +2,13 @@
 //! detection on a pin, an output's coil kind, texts and a box's type.
 
 use super::{CfcEditError, element_mut};
-use crate::{CfcChart, CfcElementKind, CfcPin, CoilKind, Edge, ElementId, PinRef};
+use crate::{
+    CfcChart, CfcElementKind, CfcPin, CoilKind, Edge, ElementId, PinRef, cfc_input_pins,
+    cfc_output_pins,
+};
 
 /// The operators whose boxes take any number of inputs (as IEC 61131-3 allows for them).
 const EXTENSIBLE: [&str; 9] = ["ADD", "MUL", "AND", "OR", "XOR", "MAX", "MIN", "SEL", "MUX"];
-
-/// The names of the input pins of an element of `kind`, top to bottom (`""` for an element's
-/// only pin).
-pub fn element_inputs(kind: &CfcElementKind) -> Vec<&str> {
-    match kind {
-        CfcElementKind::Box(block) => block.inputs.iter().map(|pin| pin.name.as_str()).collect(),
-        CfcElementKind::Composer { inputs, .. } => {
-            inputs.iter().map(|pin| pin.name.as_str()).collect()
-        }
-        CfcElementKind::Output { .. }
-        | CfcElementKind::Jump { .. }
-        | CfcElementKind::Return
-        | CfcElementKind::Selector { .. }
-        | CfcElementKind::ConnectionSource { .. } => vec![""],
-        CfcElementKind::Input { .. }
-        | CfcElementKind::Label { .. }
-        | CfcElementKind::Comment { .. }
-        | CfcElementKind::ConnectionSink { .. } => Vec::new(),
-    }
-}
-
-/// The names of the output pins of an element of `kind`, top to bottom.
-pub fn element_outputs(kind: &CfcElementKind) -> Vec<&str> {
-    match kind {
-        CfcElementKind::Box(block) => block.outputs.iter().map(|pin| pin.name.as_str()).collect(),
-        CfcElementKind::Selector { outputs, .. } => {
-            outputs.iter().map(|pin| pin.name.as_str()).collect()
-        }
-        CfcElementKind::Input { .. }
-        | CfcElementKind::Composer { .. }
-        | CfcElementKind::ConnectionSink { .. } => vec![""],
-        CfcElementKind::Output { .. }
-        | CfcElementKind::Jump { .. }
-        | CfcElementKind::Label { .. }
-        | CfcElementKind::Return
-        | CfcElementKind::Comment { .. }
-        | CfcElementKind::ConnectionSource { .. } => Vec::new(),
-    }
-}
 
 /// Whether a box of `type_name` can take one more input.
 pub fn is_extensible(type_name: &str) -> bool {
@@ -88,10 +52,7 @@ pub fn extend_box(chart: &CfcChart, id: ElementId) -> Result<CfcChart, CfcEditEr
         .rev()
         .find_map(|pin| next_pin_name(&pin.name))
         .ok_or_else(refusal)?;
-    block.inputs.push(CfcPin {
-        name,
-        ..CfcPin::default()
-    });
+    block.inputs.push(CfcPin::named(name));
     Ok(chart)
 }
 
@@ -231,29 +192,10 @@ pub fn set_box_type(
             id,
         });
     };
-    let remade = |old: &[CfcPin], names: &[String]| -> Vec<CfcPin> {
-        names
-            .iter()
-            .map(|name| {
-                old.iter()
-                    .find(|pin| pin.name == *name)
-                    .cloned()
-                    .unwrap_or_else(|| CfcPin {
-                        name: name.clone(),
-                        ..CfcPin::default()
-                    })
-            })
-            .collect()
-    };
-    block.inputs = remade(&block.inputs, inputs);
-    block.outputs = remade(&block.outputs, outputs);
+    block.inputs = remade_pins(&block.inputs, inputs);
+    block.outputs = remade_pins(&block.outputs, outputs);
     type_name.clone_into(&mut block.type_name);
-    let kind = target.kind.clone();
-    let (ins, outs) = (element_inputs(&kind), element_outputs(&kind));
-    chart.wires.retain(|wire| {
-        (wire.to.element != id || ins.contains(&wire.to.pin.as_str()))
-            && (wire.from.element != id || outs.contains(&wire.from.pin.as_str()))
-    });
+    drop_wires_of_lost_pins(&mut chart, id);
     Ok(chart)
 }
 
@@ -279,23 +221,38 @@ pub fn set_members(
         }
     };
     type_name.clone_into(slot);
-    *pins = members
+    *pins = remade_pins(pins, members);
+    drop_wires_of_lost_pins(&mut chart, id);
+    Ok(chart)
+}
+
+/// Removes the wires at pins element `id` no longer has, after its pins were made anew.
+fn drop_wires_of_lost_pins(chart: &mut CfcChart, id: ElementId) {
+    let Some(kind) = chart
+        .elements
         .iter()
-        .map(|name| {
-            pins.iter()
-                .find(|pin| pin.name == *name)
-                .cloned()
-                .unwrap_or_else(|| CfcPin {
-                    name: name.clone(),
-                    ..CfcPin::default()
-                })
-        })
-        .collect();
-    let kind = target.kind.clone();
-    let (ins, outs) = (element_inputs(&kind), element_outputs(&kind));
+        .find(|element| element.id == id)
+        .map(|element| element.kind.clone())
+    else {
+        return;
+    };
+    let (ins, outs) = (cfc_input_pins(&kind), cfc_output_pins(&kind));
     chart.wires.retain(|wire| {
         (wire.to.element != id || ins.contains(&wire.to.pin.as_str()))
             && (wire.from.element != id || outs.contains(&wire.from.pin.as_str()))
     });
-    Ok(chart)
+}
+
+/// The pins named `names`, in that order: a pin of `old` with the same name is kept with its
+/// negation and edge, a new name gets a plain pin.
+fn remade_pins(old: &[CfcPin], names: &[String]) -> Vec<CfcPin> {
+    names
+        .iter()
+        .map(|name| {
+            old.iter()
+                .find(|pin| pin.name == *name)
+                .cloned()
+                .unwrap_or_else(|| CfcPin::named(name.clone()))
+        })
+        .collect()
 }

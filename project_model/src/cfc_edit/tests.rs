@@ -1,15 +1,12 @@
 use super::*;
-use crate::{CfcBox, CfcElementKind, CfcPin, CoilKind, Edge, GridPoint, PinRef};
+use crate::{CfcBox, CfcElementKind, CfcPin, CoilKind, Edge, GridPoint, PinRef, cfc_input_pins};
 
 fn at(x: i32, y: i32) -> GridPoint {
     GridPoint { x, y }
 }
 
 fn pin(element: u32, name: &str) -> PinRef {
-    PinRef {
-        element: ElementId(element),
-        pin: name.to_owned(),
-    }
+    PinRef::new(ElementId(element), name)
 }
 
 fn input(text: &str) -> CfcElementKind {
@@ -26,15 +23,7 @@ fn output(text: &str) -> CfcElementKind {
 }
 
 fn block(type_name: &str, inputs: &[&str], outputs: &[&str]) -> CfcElementKind {
-    let pins = |names: &[&str]| {
-        names
-            .iter()
-            .map(|name| CfcPin {
-                name: (*name).to_owned(),
-                ..CfcPin::default()
-            })
-            .collect()
-    };
+    let pins = |names: &[&str]| names.iter().map(|name| CfcPin::named(*name)).collect();
     CfcElementKind::Box(CfcBox {
         type_name: type_name.to_owned(),
         instance: String::new(),
@@ -132,10 +121,7 @@ fn connecting_refuses_wrong_pins_and_replaces_a_driven_input() {
         &chart,
         CfcElementKind::Composer {
             type_name: "POINT".to_owned(),
-            inputs: vec![CfcPin {
-                name: "X".to_owned(),
-                ..CfcPin::default()
-            }],
+            inputs: vec![CfcPin::named("X")],
         },
         at(0, 9),
     );
@@ -173,7 +159,7 @@ fn control_points_are_added_moved_and_removed_by_index() {
 fn an_extensible_box_grows_by_the_next_numbered_input() {
     let chart = extend_box(&small_chart(), ElementId(1)).unwrap();
     assert_eq!(
-        element_inputs(&element(&chart, ElementId(1)).unwrap().kind),
+        cfc_input_pins(&element(&chart, ElementId(1)).unwrap().kind),
         vec!["IN1", "IN2", "IN3"]
     );
     let (mux, id) = add_element(
@@ -183,7 +169,7 @@ fn an_extensible_box_grows_by_the_next_numbered_input() {
     );
     let mux = extend_box(&mux, id).unwrap();
     assert_eq!(
-        element_inputs(&element(&mux, id).unwrap().kind),
+        cfc_input_pins(&element(&mux, id).unwrap().kind),
         vec!["K", "IN0", "IN1", "IN2"]
     );
     let (timer, ton) = add_element(&chart, block("TON", &["IN", "PT"], &["Q", "ET"]), at(0, 5));
@@ -372,7 +358,7 @@ fn a_composer_takes_the_members_of_its_structure() {
     let (chart, x) = add_element(&chart, input("1"), at(0, 5));
     let chart = set_members(&chart, id, "POINT", &["X".to_owned(), "Y".to_owned()]).unwrap();
     assert_eq!(
-        element_inputs(&element(&chart, id).unwrap().kind),
+        cfc_input_pins(&element(&chart, id).unwrap().kind),
         vec!["X", "Y"]
     );
     let chart = connect(&chart, &pin(x.0, ""), &pin(id.0, "Y")).unwrap();

@@ -1,19 +1,19 @@
 //! Connecting and disconnecting pins, and the control points of a wire.
 
-use super::pins::{element_inputs, element_outputs};
 use super::{CfcEditError, element};
 use crate::{CfcChart, CfcElementKind, GridPoint, PinRef, Wire};
+use crate::{cfc_input_pins, cfc_output_pins};
 
 /// Wires the output pin `from` to the input pin `to`. A wire already driving `to` is
 /// replaced (as in CODESYS); a wire from an element to itself is allowed only on a box, where
 /// it is a feedback.
 pub fn connect(chart: &CfcChart, from: &PinRef, to: &PinRef) -> Result<CfcChart, CfcEditError> {
     let source = element(chart, from.element)?;
-    if !element_outputs(&source.kind).contains(&from.pin.as_str()) {
+    if !cfc_output_pins(&source.kind).contains(&from.pin.as_str()) {
         return Err(CfcEditError::NotAnOutput(from.clone()));
     }
     let target = element(chart, to.element)?;
-    if !element_inputs(&target.kind).contains(&to.pin.as_str()) {
+    if !cfc_input_pins(&target.kind).contains(&to.pin.as_str()) {
         return Err(CfcEditError::NotAnInput(to.clone()));
     }
     if from.element == to.element && !matches!(source.kind, CfcElementKind::Box(_)) {
@@ -21,11 +21,7 @@ pub fn connect(chart: &CfcChart, from: &PinRef, to: &PinRef) -> Result<CfcChart,
     }
     let mut chart = chart.clone();
     chart.wires.retain(|wire| wire.to != *to);
-    chart.wires.push(Wire {
-        from: from.clone(),
-        to: to.clone(),
-        points: Vec::new(),
-    });
+    chart.wires.push(Wire::routed(from.clone(), to.clone()));
     Ok(chart)
 }
 

@@ -87,11 +87,7 @@ pub(crate) fn cfc_from_graph(graph: &Chart) -> Result<CfcChart, Vec<String>> {
         wires: graph
             .connections
             .iter()
-            .map(|connection| Wire {
-                from: connection.from.clone(),
-                to: connection.to.clone(),
-                points: Vec::new(),
-            })
+            .map(|connection| Wire::routed(connection.from.clone(), connection.to.clone()))
             .collect(),
     };
     for (position, (.., id)) in runnable.into_iter().enumerate() {
@@ -104,10 +100,7 @@ pub(crate) fn cfc_from_graph(graph: &Chart) -> Result<CfcChart, Vec<String>> {
 
 /// The CFC kind of one old element, or why it has none.
 fn cfc_kind(element: &ChartElement) -> Result<CfcElementKind, String> {
-    let pin = |name: &String| CfcPin {
-        name: name.clone(),
-        ..CfcPin::default()
-    };
+    let pin = |name: &String| CfcPin::named(name.clone());
     Ok(match &element.kind {
         ChartElementKind::Input { expression } => CfcElementKind::Input {
             expression: expression.clone(),

@@ -16,9 +16,7 @@
 use std::collections::{HashMap, HashSet};
 
 use super::graph_chart::{BranchKind, Chart, ChartElement, ChartElementKind};
-use crate::{
-    ElementId, Jump, SfcBranches, SfcChart, SfcNode, SfcSequence, Step, Transition, sfc_problems,
-};
+use crate::{ElementId, SfcBranches, SfcChart, SfcNode, SfcSequence, Step, sfc_problems};
 
 /// How deeply divergences may nest, so that no file can exhaust the stack of the walk.
 const MAX_NESTING: usize = 64;
@@ -184,10 +182,7 @@ impl<'g> Walk<'g> {
             if self.visited.contains(&id) {
                 // A connection back to a step already walked is a jump to it.
                 if let ChartElementKind::Step { name, .. } = &element.kind {
-                    nodes.push(SfcNode::Jump(Jump {
-                        id: ElementId(self.next_id),
-                        target: name.clone(),
-                    }));
+                    nodes.push(SfcNode::jump(ElementId(self.next_id), name.clone()));
                     self.next_id += 1;
                     return Ok((nodes, End::Closed));
                 }
@@ -226,11 +221,7 @@ impl<'g> Walk<'g> {
                     next
                 }
                 ChartElementKind::Transition { condition } => {
-                    nodes.push(SfcNode::Transition(Transition {
-                        id,
-                        condition: condition.clone(),
-                        ..Transition::default()
-                    }));
+                    nodes.push(SfcNode::transition(id, condition.clone()));
                     let next = self.single_next(id)?;
                     if next.is_none() {
                         return Err(format!(
@@ -242,10 +233,7 @@ impl<'g> Walk<'g> {
                     next
                 }
                 ChartElementKind::StepJump { target } => {
-                    nodes.push(SfcNode::Jump(Jump {
-                        id,
-                        target: target.clone(),
-                    }));
+                    nodes.push(SfcNode::jump(id, target.clone()));
                     return Ok((nodes, End::Closed));
                 }
                 ChartElementKind::Convergence { .. } => return Ok((nodes, End::Converged(id))),

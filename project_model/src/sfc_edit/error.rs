@@ -34,6 +34,8 @@ pub enum SfcRule {
     NoJumpInMacro,
     /// A sequence holds at least one node.
     SequenceNotEmpty,
+    /// Every element has an id of its own.
+    UniqueIds,
 }
 
 impl SfcRule {
@@ -57,6 +59,7 @@ impl SfcRule {
             Self::MacroBeginsAndEndsWithStep => "a macro step begins and ends with a step",
             Self::NoJumpInMacro => "a macro step holds no jump",
             Self::SequenceNotEmpty => "a sequence cannot be empty",
+            Self::UniqueIds => "every element has an id of its own",
         }
     }
 }

@@ -4,7 +4,7 @@ use super::error::{SfcEditError, SfcRule};
 use super::shape::check_structure;
 use super::walk::{IdSource, Place, StepNames, locate, sequence_mut};
 use crate::network::ElementId;
-use crate::sfc::{Jump, MacroStep, SfcBranches, SfcChart, SfcNode, SfcSequence, Step, Transition};
+use crate::sfc::{MacroStep, SfcBranches, SfcChart, SfcNode, SfcSequence};
 
 /// The condition of a new transition: it never fires until the user writes one.
 const NEW_CONDITION: &str = "FALSE";
@@ -17,20 +17,12 @@ pub(super) fn checked(chart: SfcChart) -> Result<SfcChart, SfcEditError> {
 
 /// A new step named after the chart's free names.
 pub(super) fn new_step(ids: &mut IdSource, names: &mut StepNames) -> SfcNode {
-    SfcNode::Step(Step {
-        id: ids.take(),
-        name: names.fresh("Step"),
-        ..Step::default()
-    })
+    SfcNode::step(ids.take(), names.fresh("Step"))
 }
 
 /// A new transition that never fires.
 pub(super) fn new_transition(ids: &mut IdSource) -> SfcNode {
-    SfcNode::Transition(Transition {
-        id: ids.take(),
-        condition: NEW_CONDITION.into(),
-        ..Transition::default()
-    })
+    SfcNode::transition(ids.take(), NEW_CONDITION)
 }
 
 /// Where the selection `ids` lies: one unbroken run of a single sequence, as its place (at the
@@ -224,14 +216,12 @@ fn wrap_run(
     let wrapper = wrapper(&sequence[place.index], &mut ids, &mut names)?;
     let run: Vec<SfcNode> = sequence.drain(place.index..place.index + length).collect();
     let node = match wrapper {
-        Wrapper::Alternative(right) => SfcNode::Alternative(SfcBranches {
-            id: wrapper_id,
-            branches: vec![SfcSequence { nodes: run }, SfcSequence { nodes: right }],
-        }),
-        Wrapper::Parallel(right) => SfcNode::Parallel(SfcBranches {
-            id: wrapper_id,
-            branches: vec![SfcSequence { nodes: run }, SfcSequence { nodes: right }],
-        }),
+        Wrapper::Alternative(right) => {
+            SfcNode::Alternative(SfcBranches::new(wrapper_id, vec![run, right]))
+        }
+        Wrapper::Parallel(right) => {
+            SfcNode::Parallel(SfcBranches::new(wrapper_id, vec![run, right]))
+        }
         Wrapper::Macro(name) => SfcNode::Macro(MacroStep {
             id: wrapper_id,
             name,
@@ -278,9 +268,6 @@ pub fn insert_jump_after(
     if place.index + 1 != sequence.len() {
         return Err(SfcEditError::JumpNotAtEnd(id));
     }
-    sequence.push(SfcNode::Jump(Jump {
-        id: jump_id,
-        target: target.trim().to_owned(),
-    }));
+    sequence.push(SfcNode::jump(jump_id, target.trim()));
     checked(out)
 }

@@ -49,13 +49,7 @@ fn output(id: u32, order: u32, expression: &str) -> CfcElement {
 }
 
 fn pins(names: &[&str]) -> Vec<CfcPin> {
-    names
-        .iter()
-        .map(|name| CfcPin {
-            name: (*name).into(),
-            ..CfcPin::default()
-        })
-        .collect()
+    names.iter().map(|name| CfcPin::named(*name)).collect()
 }
 
 fn boxed(id: u32, order: u32, type_name: &str, inputs: &[&str], outputs: &[&str]) -> CfcElement {
@@ -72,17 +66,10 @@ fn boxed(id: u32, order: u32, type_name: &str, inputs: &[&str], outputs: &[&str]
 }
 
 fn wire(from: u32, from_pin: &str, to: u32, to_pin: &str) -> Wire {
-    Wire {
-        from: PinRef {
-            element: ElementId(from),
-            pin: from_pin.into(),
-        },
-        to: PinRef {
-            element: ElementId(to),
-            pin: to_pin.into(),
-        },
-        points: Vec::new(),
-    }
+    Wire::routed(
+        PinRef::new(ElementId(from), from_pin),
+        PinRef::new(ElementId(to), to_pin),
+    )
 }
 
 /// Runs `Main` with the chart as its body for `cycles` cycles.

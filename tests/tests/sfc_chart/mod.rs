@@ -3,8 +3,8 @@
 //! text does (`docs/graphical-semantics.md`, "SFC charts").
 
 use project_model::{
-    ActionAssociation, ActionQualifier, Body, ElementId, Jump, Object, PouAction, SfcBranches,
-    SfcChart, SfcNode, SfcSequence, Step, Transition,
+    ActionAssociation, ActionQualifier, Body, ElementId, Object, PouAction, SfcBranches, SfcChart,
+    SfcNode, Step, Transition,
 };
 use runtime::simulation::Simulation;
 
@@ -26,28 +26,15 @@ fn step(id: u32, name: &str, actions: &[&str]) -> SfcNode {
 }
 
 fn transition(id: u32, condition: &str) -> SfcNode {
-    SfcNode::Transition(Transition {
-        id: ElementId(id),
-        condition: condition.into(),
-        ..Transition::default()
-    })
+    SfcNode::transition(ElementId(id), condition)
 }
 
 fn branches(id: u32, branches: Vec<Vec<SfcNode>>) -> SfcBranches {
-    SfcBranches {
-        id: ElementId(id),
-        branches: branches
-            .into_iter()
-            .map(|nodes| SfcSequence { nodes })
-            .collect(),
-    }
+    SfcBranches::new(ElementId(id), branches)
 }
 
 fn jump(id: u32, target: &str) -> SfcNode {
-    SfcNode::Jump(Jump {
-        id: ElementId(id),
-        target: target.into(),
-    })
+    SfcNode::jump(ElementId(id), target)
 }
 
 /// Compiles the program `Main` of `source` with the chart `sequence` as its body and the

@@ -196,8 +196,8 @@ impl RefusalText {
                 "属性需要类型，例如 BOOL 或 INT",
             ),
             Self::RefuseNoMembers => (
-                "'{pou}' cannot have methods, actions or properties: only programs and function blocks can",
-                "“{pou}”不能有方法、动作或属性：只有程序和功能块可以",
+                "'{pou}' cannot have methods, actions, transitions or properties: only programs and function blocks can",
+                "“{pou}”不能有方法、动作、转换或属性：只有程序和功能块可以",
             ),
             Self::RefuseSfcNotHere => (
                 "only a program or function block itself can be a Sequential Function Chart",

@@ -57,6 +57,7 @@ impl Text {
             Self::Method => ("Method", "方法"),
             Self::Property => ("Property", "属性"),
             Self::Action => ("Action", "动作"),
+            Self::Transition => ("Transition", "转换"),
             Self::NoImplementation => ("No implementation", "无实现"),
             Self::Warnings => ("warning(s)", "个警告"),
             Self::ProblemsFound => ("problem(s) found", "个问题"),
@@ -189,6 +190,8 @@ impl Text {
             Self::AddMethodMenu => ("Add method…", "添加方法…"),
             Self::AddAction => ("Add action", "添加动作"),
             Self::AddActionMenu => ("Add action…", "添加动作…"),
+            Self::AddTransition => ("Add transition", "添加转换"),
+            Self::AddTransitionMenu => ("Add transition…", "添加转换…"),
             Self::AddProperty => ("Add property", "添加属性"),
             Self::AddPropertyMenu => ("Add property…", "添加属性…"),
             Self::ImplementationLanguage => ("Implementation language", "实现语言"),
@@ -362,8 +365,8 @@ impl Text {
             Self::CamImportPoints => ("Import cam points", "导入凸轮点"),
             Self::CamExportPoints => ("Export cam points", "导出凸轮点"),
             Self::PouSummary => (
-                "{variables} variables, {methods} methods, {actions} actions",
-                "{variables} 个变量，{methods} 个方法，{actions} 个动作",
+                "{variables} variables, {methods} methods, {actions} actions, {transitions} transitions",
+                "{variables} 个变量，{methods} 个方法，{actions} 个动作，{transitions} 个转换",
             ),
             Self::VariableCount => ("{variables} variables", "{variables} 个变量"),
             Self::TraceSummary => (
@@ -494,6 +497,7 @@ impl Text {
             Self::NounInterface => ("interface", "接口"),
             Self::NounMethod => ("method", "方法"),
             Self::NounAction => ("action", "动作"),
+            Self::NounTransition => ("transition", "转换"),
             Self::NounProperty => ("property", "属性"),
             Self::UndoRenameTask => (
                 "Rename task {name} to {new}",

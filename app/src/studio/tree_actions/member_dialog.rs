@@ -1,4 +1,4 @@
-//! The dialog that adds a method, action or property to a POU: its name, type and language.
+//! The dialog that adds a method, action, transition or property to a POU: its name, type and language.
 
 use egui::Ui;
 use project_model::{Object, Project};
@@ -20,7 +20,8 @@ pub struct MemberDialog {
     pub kind: MemberKind,
     /// The name as typed.
     pub name: String,
-    /// A method's return type or a property's type as typed (unused for actions).
+    /// A method's return type or a property's type as typed (unused for actions and
+    /// transitions).
     pub type_name: String,
     /// The implementation language.
     pub language: BodyLanguage,

@@ -1,4 +1,4 @@
-//! Methods, actions and properties added to a POU: which POUs take them, which names are free,
+//! Methods, actions, transitions and properties added to a POU: which POUs take them, which names are free,
 //! and the edit that adds one.
 
 use project_model::{
@@ -20,6 +20,9 @@ pub enum MemberKind {
     Method,
     /// An action: a body without declarations of its own.
     Action,
+    /// A transition object: a BOOL body without declarations of its own, which SFC
+    /// transitions name as their condition.
+    Transition,
     /// A property with a type and both accessors, as CODESYS adds one.
     Property,
 }
@@ -27,7 +30,7 @@ pub enum MemberKind {
 /// A member the user asked to add, with what the dialog asked about it.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct NewMember {
-    /// Method, action or property.
+    /// Method, action, transition or property.
     pub kind: MemberKind,
     /// The name, already checked by the dialog.
     pub name: String,
@@ -39,7 +42,7 @@ pub struct NewMember {
 
 impl MemberKind {
     /// Whether a POU of `kind` can have members of this kind. Programs and function blocks
-    /// take all three, as in CODESYS; functions have none, and the members of an interface
+    /// take all four, as in CODESYS; functions have none, and the members of an interface
     /// are prototypes without bodies, which these dialogs do not make.
     pub fn allowed_in(self, kind: PouKind) -> bool {
         matches!(kind, PouKind::Program | PouKind::FunctionBlock)
@@ -50,6 +53,7 @@ impl MemberKind {
         match self {
             Self::Method => Text::NounMethod,
             Self::Action => Text::NounAction,
+            Self::Transition => Text::NounTransition,
             Self::Property => Text::NounProperty,
         }
     }
@@ -59,6 +63,7 @@ impl MemberKind {
         match self {
             Self::Method => Text::AddMethodMenu,
             Self::Action => Text::AddActionMenu,
+            Self::Transition => Text::AddTransitionMenu,
             Self::Property => Text::AddPropertyMenu,
         }
     }
@@ -68,16 +73,18 @@ impl MemberKind {
         match self {
             Self::Method => Text::AddMethod,
             Self::Action => Text::AddAction,
+            Self::Transition => Text::AddTransition,
             Self::Property => Text::AddProperty,
         }
     }
 
     /// The name the dialog proposes before a number is added to make it free.
     pub fn base_name(self) -> &'static str {
-        // `Method`, `Action` and `Property` alone are keywords of CODESYS's ST.
+        // `Method`, `Action`, `Transition` and `Property` alone are keywords of CODESYS's ST.
         match self {
             Self::Method => "NewMethod",
             Self::Action => "NewAction",
+            Self::Transition => "NewTransition",
             Self::Property => "NewProperty",
         }
     }
@@ -86,7 +93,7 @@ impl MemberKind {
     pub fn type_field(self) -> TypeField {
         match self {
             Self::Method => TypeField::Optional,
-            Self::Action => TypeField::None,
+            Self::Action | Self::Transition => TypeField::None,
             Self::Property => TypeField::Required,
         }
     }
@@ -95,7 +102,7 @@ impl MemberKind {
 /// Whether a member's dialog asks for a type.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum TypeField {
-    /// No type (actions).
+    /// No type (actions and transitions, which are BOOL).
     None,
     /// A return type that may stay empty (methods that return nothing).
     Optional,
@@ -103,8 +110,8 @@ pub enum TypeField {
     Required,
 }
 
-/// Whether `name` is already used in `pou` by a variable, method, property or action. They
-/// share one namespace (the checker reports a clash), and names compare without case.
+/// Whether `name` is already used in `pou` by a variable, method, property, action or
+/// transition. They share one namespace (the checker reports a clash), and names compare without case.
 pub fn member_name_taken(pou: &Pou, name: &str) -> bool {
     pou.variables
         .iter()
@@ -112,6 +119,7 @@ pub fn member_name_taken(pou: &Pou, name: &str) -> bool {
         .chain(pou.methods.iter().map(|m| m.name.as_str()))
         .chain(pou.properties.iter().map(|p| p.name.as_str()))
         .chain(pou.actions.iter().map(|a| a.name.as_str()))
+        .chain(pou.transitions.iter().map(|t| t.name.as_str()))
         .any(|other| same_identifier(other, name))
 }
 
@@ -178,6 +186,16 @@ pub fn plan_add_member(
             TextTarget::Action {
                 pou: pou.name.clone(),
                 action: name.clone(),
+            }
+        }
+        MemberKind::Transition => {
+            pou.transitions.push(PouAction {
+                name: name.clone(),
+                body,
+            });
+            TextTarget::Transition {
+                pou: pou.name.clone(),
+                transition: name.clone(),
             }
         }
         MemberKind::Property => {

@@ -20,7 +20,7 @@ pub enum Refusal {
     /// A new property has no type.
     NoPropertyType,
     /// The POU (named here) is neither a program nor a function block, so it takes no
-    /// methods, actions or properties.
+    /// methods, actions, transitions or properties.
     NoMembers(String),
     /// An SFC chart was chosen for a function or a member: only the body of a program or
     /// function block itself can be one.

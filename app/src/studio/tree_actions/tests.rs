@@ -349,3 +349,60 @@ fn functions_take_no_members_and_a_property_needs_a_type() {
         Err(Refusal::NoPropertyType)
     );
 }
+
+#[test]
+fn a_transition_is_added_to_a_program_opened_on_its_body_and_its_name_clashes_with_members() {
+    let mut project = example();
+    let before = project.clone();
+    let action = TreeAction::AddMember {
+        pou: "Main".into(),
+        member: member(MemberKind::Transition, "Ready", BodyLanguage::Ld, "ignored"),
+    };
+    let added = plan(&project, &action, Language::English).unwrap().unwrap();
+    assert_eq!(added.label, "Add transition Ready to Main");
+    assert_eq!(added.open, Some(TreeNode::Object("Main".into())));
+    assert_eq!(
+        added.part,
+        Some(TextTarget::Transition {
+            pou: "Main".into(),
+            transition: "Ready".into()
+        })
+    );
+    let inverse = Edit::Group(added.edits).apply(&mut project).unwrap();
+    let transition = pou(&project, "Main").transitions.last().unwrap();
+    assert_eq!(transition.name, "Ready");
+    assert_eq!(
+        transition.body,
+        Body::Ld {
+            networks: vec![Network::default()]
+        }
+    );
+    // Transitions share the namespace of the other members, both ways.
+    for (kind, name) in [
+        (MemberKind::Action, "READY"),
+        (MemberKind::Transition, "ready"),
+    ] {
+        let clash = TreeAction::AddMember {
+            pou: "Main".into(),
+            member: member(kind, name, BodyLanguage::St, ""),
+        };
+        assert_eq!(
+            plan(&project, &clash, Language::English)
+                .err()
+                .map(|refusal| refusal.text(Language::English)),
+            Some(format!("the name '{name}' is already used"))
+        );
+    }
+    // A transition cannot be a chart of its own, nor belong to a function.
+    let in_sfc = TreeAction::AddMember {
+        pou: "Main".into(),
+        member: member(MemberKind::Transition, "Done", BodyLanguage::Sfc, ""),
+    };
+    assert_eq!(
+        plan(&project, &in_sfc, Language::English),
+        Err(Refusal::SfcNotHere)
+    );
+    assert!(!MemberKind::Transition.allowed_in(PouKind::Function));
+    inverse.apply(&mut project).unwrap();
+    assert_eq!(project, before);
+}

@@ -49,10 +49,7 @@ fn output(id: u32, order: u32, expression: &str, coil: CoilKind) -> CfcElement {
 }
 
 fn pin(name: &str) -> CfcPin {
-    CfcPin {
-        name: name.into(),
-        ..CfcPin::default()
-    }
+    CfcPin::named(name)
 }
 
 fn boxed(
@@ -76,17 +73,10 @@ fn boxed(
 }
 
 fn wire(from: u32, from_pin: &str, to: u32, to_pin: &str) -> Wire {
-    Wire {
-        from: PinRef {
-            element: ElementId(from),
-            pin: from_pin.into(),
-        },
-        to: PinRef {
-            element: ElementId(to),
-            pin: to_pin.into(),
-        },
-        points: Vec::new(),
-    }
+    Wire::routed(
+        PinRef::new(ElementId(from), from_pin),
+        PinRef::new(ElementId(to), to_pin),
+    )
 }
 
 /// A project of `DECLARATIONS` whose `Main` is the chart.

@@ -236,7 +236,7 @@ impl BodyChecker<'_, '_, '_> {
                 }
             }
             if let Some((written, range)) = &association.qualifier_written
-                && crate::sfc_chart::Qualifier::parse(written).is_none()
+                && crate::sfc_chart::ActionQualifier::parse(written).is_none()
             {
                 self.error(
                     Code::QualifierTime,
@@ -254,14 +254,14 @@ impl BodyChecker<'_, '_, '_> {
                     association.range.clone(),
                     format!(
                         "the qualifier {} needs a duration, as in '{action}({}, T#5s);'",
-                        qualifier.text(),
-                        qualifier.text()
+                        qualifier.as_str(),
+                        qualifier.as_str()
                     ),
                 ),
                 (Some(time), false) => self.error(
                     Code::QualifierTime,
                     range_of(time.syntax()),
-                    format!("the qualifier {} takes no duration", qualifier.text()),
+                    format!("the qualifier {} takes no duration", qualifier.as_str()),
                 ),
                 (Some(time), true) => self.time_value(time),
                 (None, false) => {}
@@ -288,7 +288,7 @@ impl BodyChecker<'_, '_, '_> {
                     self.error(
                         Code::QualifierTime,
                         range_of(indicator.syntax()),
-                        format!("the qualifier {} takes no duration", qualifier.text()),
+                        format!("the qualifier {} takes no duration", qualifier.as_str()),
                     );
                 }
             }
