@@ -38,6 +38,7 @@ mod project;
 mod sfc;
 mod sfc_check;
 pub mod sfc_edit;
+mod sfc_fire;
 mod task;
 mod trace;
 mod validate;
@@ -99,6 +100,7 @@ pub use sfc::{
     SfcSequence, Step, Transition,
 };
 pub use sfc_check::sfc_problems;
+pub use sfc_fire::{TransitionSteps, transition_steps};
 pub use task::{Task, TaskKind, Watchdog};
 pub use trace::{TraceConfig, TraceTrigger, TraceTriggerCondition, TraceVariable};
 pub use variable::{VarSection, Variable};
