@@ -29,7 +29,7 @@ pub fn transition_steps(chart: &SfcChart, id: ElementId) -> Option<TransitionSte
         return None;
     }
     Some(TransitionSteps {
-        before: before(chart, &frames),
+        before: before(&frames),
         after: after(chart, &frames),
     })
 }
@@ -66,7 +66,7 @@ fn locate<'c>(nodes: &'c [SfcNode], id: ElementId, frames: &mut Vec<Frame<'c>>) 
 
 /// The steps active before the node at the end of `frames`: those ending the node before it,
 /// or, for the first node of an alternative branch, those before the branch.
-fn before(chart: &SfcChart, frames: &[Frame<'_>]) -> Vec<String> {
+fn before(frames: &[Frame<'_>]) -> Vec<String> {
     let Some(((nodes, index), outer)) = frames.split_last() else {
         return Vec::new();
     };
@@ -75,7 +75,7 @@ fn before(chart: &SfcChart, frames: &[Frame<'_>]) -> Vec<String> {
         .and_then(|previous| nodes.get(previous))
     {
         Some(previous) => last_steps(previous),
-        None => before(chart, outer),
+        None => before(outer),
     }
 }
 
