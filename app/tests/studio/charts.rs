@@ -183,3 +183,40 @@ fn the_cfc_loop_shows_values_on_its_pins_online() {
             })
     });
 }
+
+#[test]
+fn a_variable_dragged_from_the_declaration_table_onto_a_cfc_input_becomes_its_expression() {
+    let project = example_copy(|_| {});
+    let mut harness = chart_studio(project.path());
+    open_pou(&mut harness, "TempControl");
+    harness.get_by_label("Table").click();
+    harness.run_steps(2);
+    let from = harness.get_by_label("Drag TempControl.rKp").rect().center();
+    // The input element 1 (rSetpoint) sits at grid (2, 2), 12 points a grid unit.
+    let canvas = harness.get_by_label("Implementation of TempControl").rect();
+    let to = canvas.min + egui::vec2(4.0, 2.5) * 12.0;
+    harness.drag_at(from);
+    harness.step();
+    for step in 1..=5 {
+        harness.hover_at(from + (to - from) * (step as f32 / 5.0));
+        harness.step();
+    }
+    // Released where the pointer stays, as a mouse does (the canvas places at the pointer).
+    harness.event(Event::PointerButton {
+        pos: to,
+        button: egui::PointerButton::Primary,
+        pressed: false,
+        modifiers: Modifiers::NONE,
+    });
+    harness.run_steps(3);
+    let chart = cfc_chart(harness.state());
+    let first = chart
+        .elements
+        .iter()
+        .find(|element| element.id == ElementId(1))
+        .map(|element| element.kind.clone());
+    assert!(
+        matches!(&first, Some(project_model::CfcElementKind::Input { expression }) if expression == "rKp"),
+        "{first:?}"
+    );
+}
