@@ -118,7 +118,7 @@ pub(crate) fn cfc_body_ui(
                 forced: value.forced,
             })
         };
-        online = Some(cfc_online(probe_paths, read, prepared));
+        online = Some(cfc_online(chart, probe_paths, read, prepared));
         paths = probe_paths.iter().map(|probe| probe.path.clone()).collect();
         operand_paths = Some(BodyProbes {
             project,

@@ -6,20 +6,34 @@ use std::collections::{BTreeMap, HashMap};
 use std::time::Duration;
 
 use editor::{DiagramOnline, OnlineValue, SfcOnline, SfcStepOnline};
-use project_model::{ElementId, Pou, SfcChart, SfcNode, Step};
+use project_model::{CfcChart, ElementId, Pou, SfcChart, SfcNode, Step};
 
 use super::online_values::{ProbePath, ReadValue};
 
-/// The CFC editor's online view from the probes' values (`read` gives the last value of a
-/// path, `prepared` the values typed to write or force): each probe's value at its element and
-/// pin, which the editor draws at the pin and along the wires leaving it.
+/// The CFC editor's online view of `chart` from the probes' values (`read` gives the last value
+/// of a path, `prepared` the values typed to write or force): each probe's value at its element
+/// and pin, which the editor draws at the pin and along the wires leaving it. An input pin
+/// driven by a wire shows nothing of its own: the wire's start shows the same value, and both
+/// would be written over each other where the wire is short.
 pub(super) fn cfc_online(
+    chart: &CfcChart,
     probes: &[ProbePath],
     read: impl Fn(&str) -> Option<ReadValue>,
     prepared: &BTreeMap<String, String>,
 ) -> DiagramOnline {
+    let wired = |element: ElementId, pin: &str| {
+        chart
+            .wires
+            .iter()
+            .any(|wire| wire.to.element == element && wire.to.pin.eq_ignore_ascii_case(pin))
+    };
     let mut values = HashMap::new();
     for probe in probes {
+        if let Some(pin) = probe.pin.as_deref()
+            && wired(probe.element, pin)
+        {
+            continue;
+        }
         let Some(value) = read(&probe.path) else {
             continue;
         };
@@ -313,7 +327,26 @@ mod tests {
             kind: ProbeKind::Value,
             path: path.to_owned(),
         };
-        let probes = [probe(1, None, "P.a"), probe(2, Some("OUT"), "P.__b")];
+        let probes = [
+            probe(1, None, "P.a"),
+            probe(2, Some("OUT"), "P.__b"),
+            probe(2, Some("IN1"), "P.a"),
+        ];
+        // Element 1's value drives the box's IN1 through a wire.
+        let chart = CfcChart {
+            wires: vec![project_model::Wire {
+                from: project_model::PinRef {
+                    element: ElementId(1),
+                    pin: String::new(),
+                },
+                to: project_model::PinRef {
+                    element: ElementId(2),
+                    pin: "IN1".to_owned(),
+                },
+                points: Vec::new(),
+            }],
+            ..CfcChart::default()
+        };
         let read = |path: &str| {
             Some(ReadValue {
                 text: if path == "P.a" { "1.5" } else { "3.0" }.to_owned(),
@@ -321,13 +354,18 @@ mod tests {
             })
         };
         let prepared = BTreeMap::from([("P.a".to_owned(), "2.0".to_owned())]);
-        let online = cfc_online(&probes, read, &prepared);
+        let online = cfc_online(&chart, &probes, read, &prepared);
         let a = &online.values[&(ElementId(1), None)];
         assert_eq!(a.text, "1.5 <2.0>");
         assert!(a.forced);
         assert_eq!(
             online.values[&(ElementId(2), Some("OUT".to_owned()))].text,
             "3.0"
+        );
+        assert!(
+            !online
+                .values
+                .contains_key(&(ElementId(2), Some("IN1".to_owned())))
         );
     }
 }
