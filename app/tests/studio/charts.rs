@@ -220,3 +220,37 @@ fn a_variable_dragged_from_the_declaration_table_onto_a_cfc_input_becomes_its_ex
         "{first:?}"
     );
 }
+
+#[test]
+fn a_type_error_in_a_transition_is_marked_and_the_message_selects_it() {
+    let project = example_copy(|dir| {
+        crate::support::replace_in(
+            dir,
+            "application/PackCycle.pou.toml",
+            "condition = \"NOT xGlue\"",
+            "condition = \"iPackages\"",
+        );
+    });
+    let mut harness = chart_studio(project.path());
+    open_pou(&mut harness, "PackCycle");
+    wait_until(&mut harness, "the finding at transition 5", |app| {
+        app.sfc_editor(&pack_cycle()).is_some_and(|editor| {
+            editor.diagnostics().iter().any(|diagnostic| {
+                diagnostic.element == Some(ElementId(5))
+                    && diagnostic.severity == editor::Severity::Error
+            })
+        })
+    });
+    harness.key_press(Key::F11);
+    wait_until(&mut harness, "the build", |app| {
+        !app.is_building() && app.last_build().is_some()
+    });
+    harness.run_steps(2);
+    harness.get_by_label_contains(":PackCycle:1:5").click();
+    harness.run_steps(4);
+    let selected = harness
+        .state()
+        .sfc_editor(&pack_cycle())
+        .map(|editor| editor.selection().to_vec());
+    assert_eq!(selected, Some(vec![ElementId(5)]));
+}
