@@ -254,3 +254,33 @@ fn a_type_error_in_a_transition_is_marked_and_the_message_selects_it() {
         .map(|editor| editor.selection().to_vec());
     assert_eq!(selected, Some(vec![ElementId(5)]));
 }
+
+#[test]
+fn a_value_prepared_on_a_cfc_input_is_written_with_ctrl_f7() {
+    let project = example_copy(|_| {});
+    let mut harness = chart_studio(project.path());
+    open_pou(&mut harness, "TempControl");
+    login_with_download(&mut harness);
+    harness.key_press(Key::F5);
+    wait_until(&mut harness, "the set point's value", |app| {
+        app.cfc_editor(&temp_control())
+            .and_then(|editor| editor.online())
+            .is_some_and(|online| online.values.contains_key(&(ElementId(1), None)))
+    });
+    // The input element 1 (rSetpoint) sits at grid (2, 2), 12 points a grid unit: a click
+    // selects it, Enter opens the field of the value to write.
+    let canvas = harness.get_by_label("Implementation of TempControl").rect();
+    click_at(&mut harness, canvas.min + egui::vec2(4.0, 2.5) * 12.0);
+    harness.key_press(Key::Enter);
+    harness.run_steps(2);
+    harness.event(Event::Text("45.0".to_owned()));
+    harness.run_steps(2);
+    harness.key_press(Key::Enter);
+    harness.run_steps(2);
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::F7);
+    wait_until(&mut harness, "the set point written", |app| {
+        app.online()
+            .program_value("TempControl.rSetpoint")
+            .is_some_and(|value| value.text.starts_with("45") && !value.forced)
+    });
+}
