@@ -62,7 +62,8 @@ pub(super) struct SfcReadings {
     steps: Vec<(ElementId, String, Option<Duration>)>,
     /// The macro steps, with the steps of their bodies.
     macros: Vec<(ElementId, Vec<ElementId>)>,
-    /// Each transition's value path, by element.
+    /// Each transition's value path, by element (while collecting, each transition with an
+    /// empty path).
     transitions: Vec<(ElementId, String)>,
     /// Each associated action's (or BOOL variable's) name and path.
     actions: Vec<(String, String)>,
@@ -85,16 +86,28 @@ impl SfcReadings {
             instance: instance.to_owned(),
             steps: Vec::new(),
             macros: Vec::new(),
-            transitions: transitions
-                .iter()
-                .filter(|probe| probe.pin.is_none())
-                .map(|probe| (probe.element, probe.path.clone()))
-                .collect(),
+            transitions: Vec::new(),
             actions: Vec::new(),
             error_flags: None,
             tip_mode: None,
         };
         readings.collect(pou, &chart.sequence);
+        // Each transition's value is read through its probe; a transition without one shows
+        // no value.
+        let mut known = std::mem::take(&mut readings.transitions);
+        known.retain_mut(|(id, path)| {
+            match transitions
+                .iter()
+                .find(|probe| probe.element == *id && probe.pin.is_none())
+            {
+                Some(probe) => {
+                    path.clone_from(&probe.path);
+                    true
+                }
+                None => false,
+            }
+        });
+        readings.transitions = known;
         let declared = |name: &str| {
             pou.variables
                 .iter()
@@ -125,7 +138,10 @@ impl SfcReadings {
                     ids.extend(inner.iter().copied());
                     self.macros.push((macro_step.id, inner));
                 }
-                SfcNode::Transition(_) | SfcNode::Jump(_) => {}
+                SfcNode::Transition(transition) => {
+                    self.transitions.push((transition.id, String::new()));
+                }
+                SfcNode::Jump(_) => {}
             }
         }
         ids
@@ -264,12 +280,21 @@ mod tests {
         let Body::Sfc { chart } = &pou.body else {
             panic!("PackCycle is not SFC");
         };
-        let transitions = [ProbePath {
-            element: ElementId(10),
-            pin: None,
-            kind: ProbeKind::Power,
-            path: "PackCycle.__t10".to_owned(),
-        }];
+        let transitions = [
+            ProbePath {
+                element: ElementId(10),
+                pin: None,
+                kind: ProbeKind::Power,
+                path: "PackCycle.__t10".to_owned(),
+            },
+            ProbePath {
+                // A step's probe is not a transition's value.
+                element: ElementId(9),
+                pin: None,
+                kind: ProbeKind::Power,
+                path: "PackCycle.Cut.x".to_owned(),
+            },
+        ];
         let readings = SfcReadings::new(pou, chart, "PackCycle", &transitions);
         let paths = readings.paths();
         for path in [
@@ -296,6 +321,7 @@ mod tests {
         assert!(cut.over_max_time, "T#2s500ms is over the max time T#2S");
         assert!(!online.steps[&ElementId(1)].active);
         assert_eq!(online.transitions.get(&ElementId(10)), Some(&false));
+        assert!(!online.transitions.contains_key(&ElementId(9)));
         assert_eq!(online.actions.get("xCut"), Some(&true));
         assert_eq!(online.actions.get("CountPackage"), Some(&false));
     }
