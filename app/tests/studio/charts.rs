@@ -284,3 +284,22 @@ fn a_value_prepared_on_a_cfc_input_is_written_with_ctrl_f7() {
             .is_some_and(|value| value.text.starts_with("45") && !value.forced)
     });
 }
+
+#[test]
+fn an_sfc_edit_that_breaks_a_rule_is_refused_with_the_reason() {
+    let project = example_copy(|_| {});
+    let mut harness = chart_studio(project.path());
+    open_pou(&mut harness, "PackCycle");
+    let before = sfc_chart(harness.state());
+    // A jump only ends a sequence: not after the transition 5, which Glued follows.
+    click_sfc_element(&mut harness, ElementId(5));
+    command(&mut harness, Key::J);
+    assert_eq!(sfc_chart(harness.state()), before);
+    let status = harness.state().status().cloned();
+    assert!(
+        status
+            .as_ref()
+            .is_some_and(|message| message.is_error && message.text.contains("jump")),
+        "{status:?}"
+    );
+}
