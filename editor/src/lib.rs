@@ -57,4 +57,4 @@ pub use st_editor::{
 };
 pub use st_highlight::{TokenClass, classify_tokens};
 pub use table_texts::TableTexts;
-pub use variable_table::{VariablePath, VariableTable, VariableTableOutput, overlap_warnings};
+pub use variable_table::{VariableTable, VariableTableOutput, overlap_warnings};

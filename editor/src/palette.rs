@@ -59,6 +59,8 @@ pub struct EditorPalette {
     pub insert_point: Color32,
     /// The fill of an active SFC step while online (CODESYS shows them blue).
     pub active_step: Color32,
+    /// The name and time written on an active SFC step, readable on its fill.
+    pub active_step_text: Color32,
 }
 
 impl EditorPalette {
@@ -116,6 +118,7 @@ impl EditorPalette {
             diagram_selection: visuals.selection.bg_fill.gamma_multiply(0.6),
             insert_point: visuals.warn_fg_color,
             active_step: link.gamma_multiply(0.6),
+            active_step_text: visuals.strong_text_color(),
         }
     }
 }

@@ -38,6 +38,7 @@ mod project;
 mod sfc;
 mod sfc_check;
 pub mod sfc_edit;
+mod sfc_fire;
 mod sfc_problem;
 mod task;
 mod trace;
@@ -100,6 +101,7 @@ pub use sfc::{
     SfcSequence, Step, Transition,
 };
 pub use sfc_check::{sfc_chart_problems, sfc_problems};
+pub use sfc_fire::{TransitionSteps, transition_steps};
 pub use sfc_problem::{SfcNodeKind, SfcProblem, SfcProblemKind};
 pub use task::{Task, TaskKind, Watchdog};
 pub use trace::{TraceConfig, TraceTrigger, TraceTriggerCondition, TraceVariable};

@@ -264,7 +264,7 @@ fn bad_manifest_entries_name_their_line() {
         &error,
         dir.path(),
         "rivet.toml",
-        Some(17),
+        Some(19),
         "not listed before it",
     );
 }

@@ -5,7 +5,7 @@ use egui::{RichText, Ui};
 use online::{Reset, TargetState};
 
 use super::command::{Command, Commands};
-use super::i18n::{Language, Text};
+use super::i18n::{ChartText, Language, Text};
 use super::online::{Phase, TargetKind};
 use super::settings::Theme;
 use super::theme::colors_for;
@@ -138,6 +138,10 @@ impl Chrome<'_, '_> {
             });
             ui.menu_button(Text::View.get(language), |ui| {
                 self.menu_item(ui, Text::ResetLayout, "", true, Command::ResetLayout);
+                let order = ChartText::DisplayExecutionOrder.get(language);
+                if ui.button(order).clicked() {
+                    self.commands.push(Command::ToggleExecutionOrder);
+                }
             });
             ui.menu_button(Text::Build.get(language), |ui| {
                 self.menu_item(ui, Text::Build, "F11", has_project, Command::Build);

@@ -45,6 +45,11 @@ pub(crate) enum Command {
     WritePrepared,
     /// Force the prepared values.
     ForcePrepared,
+    /// Write these values once, by path (an SFC step activated or a transition fired by
+    /// hand); never undoable.
+    WriteValues(Vec<(String, String)>),
+    /// Show or hide the execution order in the CFC editors.
+    ToggleExecutionOrder,
     /// Release every force.
     ReleaseAllForces,
     /// Release one force.

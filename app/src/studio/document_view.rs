@@ -3,7 +3,7 @@
 
 use editor::CodeView;
 use egui::{RichText, Ui};
-use project_model::{Body, Object, Project};
+use project_model::{Object, Project};
 
 use super::i18n::{Language, Text};
 use super::property_view::property_view_ui;
@@ -81,15 +81,6 @@ fn content_ui(ui: &mut Ui, node: &TreeNode, content: Content<'_>) {
         Content::Controller(_) | Content::IoArea(_) | Content::ModbusDevice(_) => {}
         Content::Axis(axis) => property_view_ui(ui, &salt, axis),
     }
-}
-
-/// A CFC or SFC body, shown as its data until their editors come (LD and FBD bodies have the
-/// diagram editor of `graphical_documents`).
-pub fn graphical_body_ui(ui: &mut Ui, salt: &str, body: &Body) {
-    egui::ScrollArea::both()
-        .id_salt(("graphical body", salt))
-        .auto_shrink([false, false])
-        .show(ui, |ui| property_view_ui(ui, salt, body));
 }
 
 /// The settings of a device tree node that has some (controller, task, I/O area, Modbus

@@ -3,12 +3,13 @@
 //! new variant fails to compile until it is translated, and the user never reads a library's English `Display`.
 
 use compiler::literal::LiteralError;
-use editor::DiagramRefusal;
-use project_model::{EditError, NetworkEditError};
+use editor::{CfcRefusal, DiagramRefusal};
+use project_model::sfc_edit::{SfcEditError, SfcRule};
+use project_model::{CfcEditError, EditError, ElementId, NetworkEditError, PinRef};
 
 use crate::literal_value::ValueError;
 
-use super::i18n::{DiagramText, Language, RefusalText};
+use super::i18n::{ChartText, DiagramText, Language, RefusalText};
 
 /// Why an edit of the project was refused, in `language`.
 pub fn edit_error_text(error: &EditError, language: Language) -> String {
@@ -172,6 +173,127 @@ pub fn network_edit_error_text(error: &NetworkEditError, language: Language) -> 
     }
 }
 
+/// Why a CFC gesture or command did nothing, in `language`.
+pub fn cfc_refusal_text(refusal: &CfcRefusal, language: Language) -> String {
+    match refusal {
+        CfcRefusal::Edit(error) => cfc_edit_error_text(error, language),
+        CfcRefusal::UnknownBlock(name) => {
+            ChartText::CfcUnknownBlock.fill(language, &[("name", name)])
+        }
+        CfcRefusal::NotANumber(text) => ChartText::CfcNotANumber.fill(language, &[("text", text)]),
+    }
+}
+
+/// Why a CFC chart edit does not apply, in `language`.
+pub fn cfc_edit_error_text(error: &CfcEditError, language: Language) -> String {
+    let id = |id: &ElementId| id.0.to_string();
+    let pin = |text: ChartText, pin: &PinRef| {
+        text.fill(
+            language,
+            &[("id", &id(&pin.element)), ("pin", pin.pin.as_str())],
+        )
+    };
+    match error {
+        CfcEditError::NoElement(element) => {
+            ChartText::CfcNoElement.fill(language, &[("id", &id(element))])
+        }
+        CfcEditError::NothingSelected => ChartText::CfcNothingSelected.get(language).to_owned(),
+        CfcEditError::NotAnOutput(at) => pin(ChartText::CfcNotAnOutput, at),
+        CfcEditError::NotAnInput(at) => pin(ChartText::CfcNotAnInput, at),
+        CfcEditError::SelfConnection(element) => {
+            ChartText::CfcSelfConnection.fill(language, &[("id", &id(element))])
+        }
+        CfcEditError::NoWire(at) => pin(ChartText::CfcNoWire, at),
+        CfcEditError::NoControlPoint { to, index } => ChartText::CfcNoControlPoint.fill(
+            language,
+            &[("id", &id(&to.element)), ("index", &index.to_string())],
+        ),
+        CfcEditError::NotExecutable(element) => {
+            ChartText::CfcNotExecutable.fill(language, &[("id", &id(element))])
+        }
+        CfcEditError::OrderOutOfRange { order, count } => ChartText::CfcOrderOutOfRange.fill(
+            language,
+            &[("order", &order.to_string()), ("count", &count.to_string())],
+        ),
+        // The operation's name is English for logs; the user reads which element refused.
+        CfcEditError::WrongKind {
+            operation: _,
+            id: element,
+        } => ChartText::CfcWrongKind.fill(language, &[("id", &id(element))]),
+        CfcEditError::NotExtensible { type_name } => {
+            ChartText::CfcNotExtensible.fill(language, &[("type", type_name)])
+        }
+    }
+}
+
+/// Why an SFC chart edit does not apply, in `language`.
+pub fn sfc_edit_error_text(error: &SfcEditError, language: Language) -> String {
+    let id = |id: &ElementId| id.0.to_string();
+    let at = |text: ChartText, element: &ElementId| text.fill(language, &[("id", &id(element))]);
+    match error {
+        SfcEditError::Structure { rule, element } => ChartText::SfcStructure.fill(
+            language,
+            &[
+                ("id", &id(element)),
+                ("rule", sfc_rule_text(*rule, language)),
+            ],
+        ),
+        SfcEditError::EmptySelection => ChartText::SfcEmptySelection.get(language).to_owned(),
+        SfcEditError::NoSuchElement(element) => at(ChartText::SfcNoSuchElement, element),
+        SfcEditError::NotAStep(element) => at(ChartText::SfcNotAStep, element),
+        SfcEditError::NotATransition(element) => at(ChartText::SfcNotATransition, element),
+        SfcEditError::NotABranch(element) => at(ChartText::SfcNotABranch, element),
+        SfcEditError::NotAJump(element) => at(ChartText::SfcNotAJump, element),
+        SfcEditError::NotARun => ChartText::SfcNotARun.get(language).to_owned(),
+        SfcEditError::JumpNotAtEnd(element) => at(ChartText::SfcJumpNotAtEnd, element),
+        SfcEditError::InvalidName(name) => {
+            ChartText::SfcInvalidName.fill(language, &[("name", name)])
+        }
+        SfcEditError::DuplicateName(name) => {
+            ChartText::SfcDuplicateName.fill(language, &[("name", name)])
+        }
+        SfcEditError::UnknownStep(name) => {
+            ChartText::SfcUnknownStep.fill(language, &[("name", name)])
+        }
+        SfcEditError::EmptyCondition(element) => at(ChartText::SfcEmptyCondition, element),
+        SfcEditError::EmptyAction => ChartText::SfcEmptyAction.get(language).to_owned(),
+        SfcEditError::MissingDuration(qualifier) => {
+            ChartText::SfcMissingDuration.fill(language, &[("qualifier", qualifier)])
+        }
+        SfcEditError::UnexpectedDuration(qualifier) => {
+            ChartText::SfcUnexpectedDuration.fill(language, &[("qualifier", qualifier)])
+        }
+        SfcEditError::NoSuchAssociation { step, index } => ChartText::SfcNoSuchAssociation.fill(
+            language,
+            &[("id", &id(step)), ("index", &index.to_string())],
+        ),
+        SfcEditError::EmptyClipboard => ChartText::SfcEmptyClipboard.get(language).to_owned(),
+    }
+}
+
+/// An SFC structural rule in `language`.
+fn sfc_rule_text(rule: SfcRule, language: Language) -> &'static str {
+    match rule {
+        SfcRule::MainStartsWithStep => ChartText::RuleMainStartsWithStep,
+        SfcRule::MainEndsWithJump => ChartText::RuleMainEndsWithJump,
+        SfcRule::StepNeedsTransitionAfter => ChartText::RuleStepNeedsTransitionAfter,
+        SfcRule::TransitionNeedsStepAfter => ChartText::RuleTransitionNeedsStepAfter,
+        SfcRule::JumpIsLast => ChartText::RuleJumpIsLast,
+        SfcRule::TwoBranches => ChartText::RuleTwoBranches,
+        SfcRule::AlternativeBeginsWithTransition => ChartText::RuleAlternativeBeginsWithTransition,
+        SfcRule::AlternativeEndsWithTransitionOrJump => {
+            ChartText::RuleAlternativeEndsWithTransitionOrJump
+        }
+        SfcRule::ParallelBeginsWithStep => ChartText::RuleParallelBeginsWithStep,
+        SfcRule::ParallelEndsWithStep => ChartText::RuleParallelEndsWithStep,
+        SfcRule::MacroBeginsAndEndsWithStep => ChartText::RuleMacroBeginsAndEndsWithStep,
+        SfcRule::NoJumpInMacro => ChartText::RuleNoJumpInMacro,
+        SfcRule::SequenceNotEmpty => ChartText::RuleSequenceNotEmpty,
+        SfcRule::UniqueIds => ChartText::RuleUniqueIds,
+    }
+    .get(language)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -323,11 +445,9 @@ mod tests {
     fn every_diagram_refusal_reads_as_its_english_message_and_has_chinese() {
         let refusals = vec![
             DiagramRefusal::Edit(NetworkEditError::NoSuchNetwork { index: 2, count: 2 }),
-            DiagramRefusal::Edit(NetworkEditError::NoSuchElement {
-                id: project_model::ElementId(7),
-            }),
+            DiagramRefusal::Edit(NetworkEditError::NoSuchElement { id: ElementId(7) }),
             DiagramRefusal::Edit(NetworkEditError::NotApplicable {
-                id: project_model::ElementId(7),
+                id: ElementId(7),
                 operation: "inserting in series",
             }),
             DiagramRefusal::Edit(NetworkEditError::NotOneChain),
@@ -346,6 +466,107 @@ mod tests {
                 DiagramRefusal::UnknownBlock(_) => assert!(english.contains("'TOON'")),
             }
             assert_ne!(english, chinese, "{refusal:?} has no Chinese");
+            assert!(!chinese.contains('{'), "{chinese}");
+        }
+    }
+
+    #[test]
+    fn every_chart_refusal_reads_as_its_english_message_and_has_chinese() {
+        let pin = || PinRef {
+            element: ElementId(3),
+            pin: "IN1".to_owned(),
+        };
+        let cfc = vec![
+            CfcEditError::NoElement(ElementId(3)),
+            CfcEditError::NothingSelected,
+            CfcEditError::NotAnOutput(pin()),
+            CfcEditError::NotAnInput(pin()),
+            CfcEditError::SelfConnection(ElementId(3)),
+            CfcEditError::NoWire(pin()),
+            CfcEditError::NoControlPoint {
+                to: pin(),
+                index: 2,
+            },
+            CfcEditError::NotExecutable(ElementId(3)),
+            CfcEditError::OrderOutOfRange { order: 9, count: 4 },
+            CfcEditError::WrongKind {
+                operation: "negating a pin",
+                id: ElementId(3),
+            },
+            CfcEditError::NotExtensible {
+                type_name: "SUB".to_owned(),
+            },
+        ];
+        for error in &cfc {
+            let english = cfc_edit_error_text(error, Language::English);
+            let chinese = cfc_edit_error_text(error, Language::SimplifiedChinese);
+            match error {
+                // The model's English names its operation for logs; the user reads the element.
+                CfcEditError::WrongKind { .. } => {
+                    assert_eq!(english, "the command does not apply to element 3");
+                }
+                _ => assert_eq!(english, error.to_string()),
+            }
+            assert_ne!(english, chinese, "{error:?} has no Chinese");
+            assert!(!chinese.contains('{'), "{chinese}");
+        }
+        for refusal in [
+            CfcRefusal::UnknownBlock("TOON".to_owned()),
+            CfcRefusal::NotANumber("x".to_owned()),
+        ] {
+            let chinese = cfc_refusal_text(&refusal, Language::SimplifiedChinese);
+            assert_ne!(cfc_refusal_text(&refusal, Language::English), chinese);
+            assert!(!chinese.contains('{'), "{chinese}");
+        }
+        let name = || "Fill".to_owned();
+        let mut sfc = vec![
+            SfcEditError::EmptySelection,
+            SfcEditError::NoSuchElement(ElementId(3)),
+            SfcEditError::NotAStep(ElementId(3)),
+            SfcEditError::NotATransition(ElementId(3)),
+            SfcEditError::NotABranch(ElementId(3)),
+            SfcEditError::NotAJump(ElementId(3)),
+            SfcEditError::NotARun,
+            SfcEditError::JumpNotAtEnd(ElementId(3)),
+            SfcEditError::InvalidName(name()),
+            SfcEditError::DuplicateName(name()),
+            SfcEditError::UnknownStep(name()),
+            SfcEditError::EmptyCondition(ElementId(3)),
+            SfcEditError::EmptyAction,
+            SfcEditError::MissingDuration("L"),
+            SfcEditError::UnexpectedDuration("N"),
+            SfcEditError::NoSuchAssociation {
+                step: ElementId(3),
+                index: 1,
+            },
+            SfcEditError::EmptyClipboard,
+        ];
+        sfc.extend(
+            [
+                SfcRule::MainStartsWithStep,
+                SfcRule::MainEndsWithJump,
+                SfcRule::StepNeedsTransitionAfter,
+                SfcRule::TransitionNeedsStepAfter,
+                SfcRule::JumpIsLast,
+                SfcRule::TwoBranches,
+                SfcRule::AlternativeBeginsWithTransition,
+                SfcRule::AlternativeEndsWithTransitionOrJump,
+                SfcRule::ParallelBeginsWithStep,
+                SfcRule::ParallelEndsWithStep,
+                SfcRule::MacroBeginsAndEndsWithStep,
+                SfcRule::NoJumpInMacro,
+                SfcRule::SequenceNotEmpty,
+            ]
+            .map(|rule| SfcEditError::Structure {
+                rule,
+                element: ElementId(3),
+            }),
+        );
+        for error in &sfc {
+            let english = sfc_edit_error_text(error, Language::English);
+            let chinese = sfc_edit_error_text(error, Language::SimplifiedChinese);
+            assert_eq!(english, error.to_string());
+            assert_ne!(english, chinese, "{error:?} has no Chinese");
             assert!(!chinese.contains('{'), "{chinese}");
         }
     }

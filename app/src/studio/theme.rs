@@ -158,6 +158,12 @@ pub(crate) fn editor_palette(dark_mode: bool) -> EditorPalette {
         } else {
             Color32::from_rgb(110, 170, 255)
         },
+        // White on the dark theme's blue, black on the light theme's.
+        active_step_text: if dark_mode {
+            Color32::WHITE
+        } else {
+            Color32::BLACK
+        },
     }
 }
 

@@ -9,6 +9,7 @@
 
 mod basics;
 mod cam_editor;
+mod charts;
 mod device_editors;
 mod devices;
 mod diagram;

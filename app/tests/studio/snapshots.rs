@@ -297,3 +297,100 @@ fn the_diagram_editor_in_ld_and_fbd_offline_and_online() {
     }
     results.unwrap();
 }
+
+/// The chart of the example's POU `name`.
+fn example_body(name: &str) -> project_model::Body {
+    let project = project_model::load_project(&assets::example_project_dir())
+        .unwrap()
+        .project;
+    match project.application.object(name) {
+        Some(project_model::Object::Pou(pou)) => pou.body.clone(),
+        other => panic!("no POU {name}: {other:?}"),
+    }
+}
+
+#[test]
+fn the_cfc_and_sfc_editors_offline_and_online() {
+    use editor::{CfcEditor, DiagramOnline, OnlineValue, SfcEditor, SfcOnline, SfcStepOnline};
+    use project_model::{Body, ElementId};
+    use std::time::Duration;
+
+    let Body::Cfc { chart: cfc } = example_body("TempControl") else {
+        panic!("TempControl is not CFC");
+    };
+    let Body::Sfc { chart: sfc } = example_body("PackCycle") else {
+        panic!("PackCycle is not SFC");
+    };
+    let mut results = egui_kittest::SnapshotResults::new();
+    for online in [false, true] {
+        let mut editor = CfcEditor::new(&cfc);
+        if online {
+            let mut values = DiagramOnline::default();
+            let value = |text: &str| OnlineValue {
+                text: text.to_owned(),
+                forced: false,
+            };
+            for (id, pin, text) in [
+                (1, None, "60.0"),
+                (2, Some("OUT"), "8.5"),
+                (4, Some("OUT"), "17.0"),
+                (8, Some("OUT"), "17.0"),
+                (9, None, "17.0"),
+                (11, Some("OUT"), "0.085"),
+                (7, Some("OUT"), "51.585"),
+                (12, None, "51.585"),
+            ] {
+                values
+                    .values
+                    .insert((ElementId(id), pin.map(str::to_owned)), value(text));
+            }
+            editor.set_online(Some(values));
+        }
+        let mut harness = Harness::builder()
+            .with_size([1100.0, 360.0])
+            .wgpu()
+            .build_ui_state(
+                |ui, editor: &mut CfcEditor| {
+                    editor.show(ui, "Body of TempControl", &NoDiagramServices);
+                },
+                editor,
+            );
+        harness.run_steps(3);
+        harness.snapshot(if online { "cfc_online" } else { "cfc" });
+        results.extend_harness(&mut harness);
+    }
+    for online in [false, true] {
+        let mut editor = SfcEditor::new(&sfc);
+        if online {
+            // Glue and Position active in the parallel branch, Glue's action on, and Cut's
+            // maximum time reported as exceeded.
+            let mut state = SfcOnline::default();
+            let step = |active: bool, elapsed_ms: u64, over_max_time: bool| SfcStepOnline {
+                active,
+                elapsed: Duration::from_millis(elapsed_ms),
+                over_max_time,
+            };
+            state.steps.insert(ElementId(1), step(false, 1200, false));
+            state.steps.insert(ElementId(4), step(true, 150, false));
+            state.steps.insert(ElementId(7), step(true, 150, false));
+            state.steps.insert(ElementId(9), step(false, 2100, true));
+            state.transitions.insert(ElementId(5), false);
+            state.transitions.insert(ElementId(8), true);
+            state.actions.insert("xGlue".to_owned(), true);
+            editor.set_online(Some(state));
+        }
+        let mut harness = Harness::builder()
+            .with_size([900.0, 760.0])
+            .wgpu()
+            .build_ui_state(
+                |ui, editor: &mut SfcEditor| {
+                    editor.show(ui, "Body of PackCycle", &NoDiagramServices);
+                },
+                editor,
+            );
+        harness.run_steps(3);
+        harness.snapshot(if online { "sfc_online" } else { "sfc" });
+        results.extend_harness(&mut harness);
+    }
+    results.unwrap();
+}

@@ -175,13 +175,27 @@ fn renaming_a_program_renames_its_task_calls_in_the_same_undo_step() {
     let main_task = project(&harness).task("MainTask").unwrap();
     assert_eq!(
         main_task.programs,
-        ["Main", "MachineSequence", "Interlock", "Scaling"]
+        [
+            "Main",
+            "MachineSequence",
+            "Interlock",
+            "Scaling",
+            "PackCycle",
+            "TempControl"
+        ]
     );
     shortcut(&mut harness, Key::Z);
     let main_task = project(&harness).task("MainTask").unwrap();
     assert_eq!(
         main_task.programs,
-        ["Main", "Sequence", "Interlock", "Scaling"]
+        [
+            "Main",
+            "Sequence",
+            "Interlock",
+            "Scaling",
+            "PackCycle",
+            "TempControl"
+        ]
     );
     assert!(project(&harness).application.object("Sequence").is_some());
 }
@@ -351,13 +365,29 @@ fn the_task_editor_changes_interval_priority_and_calls_and_refuses_bad_values() 
     harness.run();
     assert_eq!(
         project(&harness).task("MainTask").unwrap().programs,
-        ["Main", "Sequence", "Interlock", "Scaling", "MotionControl"]
+        [
+            "Main",
+            "Sequence",
+            "Interlock",
+            "Scaling",
+            "PackCycle",
+            "TempControl",
+            "MotionControl"
+        ]
     );
     harness.get_by_label("Move up MotionControl").click();
     harness.run();
     assert_eq!(
         project(&harness).task("MainTask").unwrap().programs,
-        ["Main", "Sequence", "Interlock", "MotionControl", "Scaling"]
+        [
+            "Main",
+            "Sequence",
+            "Interlock",
+            "Scaling",
+            "PackCycle",
+            "MotionControl",
+            "TempControl"
+        ]
     );
 
     enter_text(&mut harness, "Name of MainTask", "MotionTask");

@@ -142,6 +142,21 @@ fn a_transition_is_added_to_a_program_from_its_context_menu_and_opens_on_its_bod
             .query_by_label("Implementation of Main.Ready")
             .is_some()
     );
+    // The part selector leads away from the transition and back to it.
+    harness.get_by_label("Implementation").click();
+    harness.run();
+    assert!(
+        harness
+            .query_by_label("Implementation of Main.Ready")
+            .is_none()
+    );
+    harness.get_by_label("Transition Ready").click();
+    harness.run();
+    assert!(
+        harness
+            .query_by_label("Implementation of Main.Ready")
+            .is_some()
+    );
 
     shortcut(&mut harness, Key::Z);
     assert!(pou(project(&harness), "Main").transitions.is_empty());

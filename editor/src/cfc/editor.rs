@@ -275,6 +275,11 @@ impl CfcEditor {
         self.online = online;
     }
 
+    /// The online values shown; `None` while offline.
+    pub fn online(&self) -> Option<&DiagramOnline> {
+        self.online.as_ref()
+    }
+
     /// The zoom factor.
     pub fn zoom(&self) -> f32 {
         self.zoom

@@ -43,6 +43,7 @@ impl CfcEditor {
             }
             self.paint_element(&painter, origin, element, &shape, rect, &colors);
         }
+        self.paint_wire_values(&painter, origin, &colors);
         self.paint_gesture(&painter, origin, &colors);
         if response.hovered() && self.tool.is_some() {
             ui.ctx().set_cursor_icon(CursorIcon::Crosshair);
@@ -97,13 +98,31 @@ impl CfcEditor {
                     );
                 }
             }
+        }
+    }
+
+    /// The online value each wire carries, at its start: painted after the elements, on the
+    /// canvas's colour, so a value wider than a short wire stays readable over the box it
+    /// runs into.
+    fn paint_wire_values(&self, painter: &Painter, origin: Pos2, colors: &Colors) {
+        if self.online.is_none() {
+            return;
+        }
+        let unit = self.unit_px();
+        for wire in &self.chart.wires {
+            let Some(route) = self
+                .drag_routes
+                .get(&wire.to)
+                .or_else(|| self.routes.get(&wire.to))
+            else {
+                continue;
+            };
             let value_key = (wire.from.element, Some(wire.from.pin.clone()));
-            if let Some(value) = self.online_value(&value_key)
-                && let Some(start) = points.first()
-            {
+            if let (Some(value), Some(start)) = (self.online_value(&value_key), route.first()) {
+                let start = self.screen(origin, start.x as f32, start.y as f32);
                 self.paint_value(
                     painter,
-                    *start + vec2(0.3 * unit, -0.2 * unit),
+                    start + vec2(0.3 * unit, -0.2 * unit),
                     value,
                     colors,
                 );
@@ -132,15 +151,13 @@ impl CfcEditor {
     ) {
         let font = FontId::monospace(PIN_FONT_PX * self.zoom);
         let (color, fill) = if value.forced {
-            (colors.palette.forced_text, Some(colors.palette.forced_fill))
+            (colors.palette.forced_text, colors.palette.forced_fill)
         } else {
-            (colors.palette.syntax.number, None)
+            (colors.palette.syntax.number, colors.fill)
         };
         let galley = painter.layout_no_wrap(value.text.clone(), font, color);
         let rect = Rect::from_min_size(bottom_left - vec2(0.0, galley.size().y), galley.size());
-        if let Some(fill) = fill {
-            painter.rect_filled(rect.expand(1.0), 2.0, fill);
-        }
+        painter.rect_filled(rect.expand(1.0), 2.0, fill);
         painter.galley(rect.min, galley, color);
     }
 

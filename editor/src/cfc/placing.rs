@@ -150,7 +150,11 @@ impl CfcEditor {
             return;
         };
         let grid = self.grid_at(origin, pointer);
-        if let Some(tool) = response.dnd_release_payload::<CfcTool>()
+        // Taking a payload clears it whatever its type, so each is taken only when it is the
+        // one carried: a variable dropped from the declarations would be lost to the tool's
+        // check otherwise.
+        if egui::DragAndDrop::has_payload_of_type::<CfcTool>(&response.ctx)
+            && let Some(tool) = response.dnd_release_payload::<CfcTool>()
             && !self.read_only
         {
             self.place(*tool, grid, frame);

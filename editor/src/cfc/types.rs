@@ -37,6 +37,9 @@ pub struct CfcDiagnostic {
 pub struct VariableDragPayload {
     /// The variable's name as the body refers to it.
     pub name: String,
+    /// Its path on the target (`Main.iCount`, `GVL_IO.xStart`) when it has one path (a
+    /// program's or a global variable list's variable), for a watch list to drop.
+    pub path: Option<String>,
 }
 
 /// The elements of the toolbox; the payload of a drag from it.

@@ -238,6 +238,11 @@ impl SfcEditor {
                         StrokeKind::Inside,
                     );
                 }
+                let text = if state.is_some_and(|state| state.active) {
+                    pen.palette.active_step_text
+                } else {
+                    pen.text
+                };
                 let name_pos = if state.is_some() {
                     placed.rect.center() - vec2(0.0, 5.0)
                 } else {
@@ -248,7 +253,7 @@ impl SfcEditor {
                     Align2::CENTER_CENTER,
                     &shortened(&step.name).0,
                     OPERAND_FONT_PX,
-                    pen.text,
+                    text,
                 );
                 if let Some(state) = state {
                     pen.text(
@@ -256,7 +261,7 @@ impl SfcEditor {
                         Align2::CENTER_BOTTOM,
                         &time_literal(state.elapsed),
                         SMALL_FONT_PX,
-                        pen.text,
+                        text,
                     );
                 }
                 self.paint_step_markers(pen, placed.rect, step);
@@ -287,7 +292,11 @@ impl SfcEditor {
                     Align2::CENTER_CENTER,
                     &shortened(&macro_step.name).0,
                     OPERAND_FONT_PX,
-                    pen.text,
+                    if active {
+                        pen.palette.active_step_text
+                    } else {
+                        pen.text
+                    },
                 );
             }
             (SfcShape::Transition, SfcNode::Transition(transition)) => {
@@ -424,28 +433,33 @@ impl SfcEditor {
                 pos2(actions.rect.left(), top),
                 vec2(actions.rect.width(), row_height),
             );
-            if active_actions
+            let active = active_actions
                 .and_then(|active| active.get(&association.action))
                 .copied()
-                .unwrap_or(false)
-            {
+                .unwrap_or(false);
+            if active {
                 pen.painter
                     .rect_filled(pen.rect(row), 0.0, pen.palette.active_step);
             }
+            let text = if active {
+                pen.palette.active_step_text
+            } else {
+                pen.text
+            };
             let middle = top + row_height / 2.0;
             pen.text(
                 pos2((actions.rect.left() + actions.action_x) / 2.0, middle),
                 Align2::CENTER_CENTER,
                 association.qualifier.as_str(),
                 OPERAND_FONT_PX,
-                pen.text,
+                text,
             );
             pen.text(
                 pos2(actions.action_x + 4.0, middle),
                 Align2::LEFT_CENTER,
                 &shortened(&association.action).0,
                 OPERAND_FONT_PX,
-                pen.text,
+                text,
             );
             if let Some(duration) = &association.duration {
                 pen.text(
@@ -453,7 +467,7 @@ impl SfcEditor {
                     Align2::LEFT_CENTER,
                     &shortened(duration).0,
                     OPERAND_FONT_PX,
-                    pen.text,
+                    text,
                 );
             }
             if index > 0 {

@@ -32,13 +32,9 @@ pub struct VariableTable {
     read_only: bool,
     new_section: VarSection,
     drag_prefix: Option<String>,
+    drag_names: bool,
     texts: TableTexts,
 }
-
-/// A variable's path on the target (`Main.iCount`, `GVL_IO.xStart`) being dragged, for a
-/// watch list or a trace to drop.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct VariablePath(pub String);
 
 /// What the user did with the table this frame.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -59,6 +55,7 @@ impl VariableTable {
             read_only: false,
             new_section: VarSection::Var,
             drag_prefix: None,
+            drag_names: false,
             texts: TableTexts::default(),
         }
     }
@@ -73,6 +70,13 @@ impl VariableTable {
     /// list's name; a function block's variables have one path per instance, so none).
     pub fn drag_prefix(mut self, prefix: Option<String>) -> Self {
         self.drag_prefix = prefix;
+        self
+    }
+
+    /// Lets each name be dragged even without a path, for a CFC body of the same POU to drop
+    /// on a pin ([`crate::VariableDragPayload`]).
+    pub fn drag_names(mut self, drag: bool) -> Self {
+        self.drag_names = drag;
         self
     }
 
@@ -107,6 +111,7 @@ impl VariableTable {
             state: &mut state,
             read_only: self.read_only,
             drag_prefix: self.drag_prefix.as_deref(),
+            drag_names: self.drag_names,
             texts: &self.texts,
             edit: None,
             action: None,

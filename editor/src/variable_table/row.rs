@@ -28,6 +28,8 @@ pub(crate) struct TableFrame<'a> {
     pub(crate) read_only: bool,
     /// The path prefix under which names can be dragged, if they can.
     pub(crate) drag_prefix: Option<&'a str>,
+    /// Whether names can be dragged without a path too (onto a CFC pin).
+    pub(crate) drag_names: bool,
     /// The table's words.
     pub(crate) texts: &'a TableTexts,
     /// The committed cell edit of this frame, with its undo label.
@@ -107,20 +109,24 @@ impl TableFrame<'_> {
         let warning = (column == TextColumn::Address)
             .then(|| self.warnings.get(&variable.name))
             .flatten();
-        if column == TextColumn::Name
-            && let Some(prefix) = self.drag_prefix
-        {
-            // A handle beside the name drags the variable's path to a watch list.
-            let path = format!("{prefix}.{}", variable.name);
+        if column == TextColumn::Name && (self.drag_prefix.is_some() || self.drag_names) {
+            // A handle beside the name drags the variable to a watch list (by its path) or onto
+            // a CFC pin (by its name).
+            let path = self
+                .drag_prefix
+                .map(|prefix| format!("{prefix}.{}", variable.name));
+            let payload = crate::VariableDragPayload {
+                name: variable.name.clone(),
+                path: path.clone(),
+            };
             let handle = ui
-                .dnd_drag_source(
-                    self.id.with(("drag", row)),
-                    super::VariablePath(path.clone()),
-                    |ui| ui.label(RichText::new("::").weak()),
-                )
+                .dnd_drag_source(self.id.with(("drag", row)), payload, |ui| {
+                    ui.label(RichText::new("::").weak())
+                })
                 .response
                 .on_hover_text(&self.texts.drag_hint);
-            let label = fill(&self.texts.drag_path, &[("path", &path)]);
+            let shown = path.unwrap_or_else(|| variable.name.clone());
+            let label = fill(&self.texts.drag_path, &[("path", &shown)]);
             handle.widget_info(|| WidgetInfo::labeled(Role::Button, true, &label));
         }
         if self.read_only {

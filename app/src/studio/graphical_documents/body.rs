@@ -185,7 +185,7 @@ pub(crate) fn graphical_body_ui(
 
 /// The edit declaring a box's instance where the body's variables are: in the method for a
 /// method's body, else in the POU, after the last `VAR` variable so the sections stay grouped.
-fn declare_edit(pou: &Pou, target: &TextTarget, instance: &InstanceDeclaration) -> Edit {
+pub(super) fn declare_edit(pou: &Pou, target: &TextTarget, instance: &InstanceDeclaration) -> Edit {
     let (owner, variables) = match target {
         TextTarget::Method { method, .. } => match pou.methods.iter().find(|m| m.name == *method) {
             Some(found) => (

@@ -124,4 +124,43 @@ mod tests {
             fault_diagnostics(&[fault("application/Main.st")], body, Language::English).is_empty()
         );
     }
+
+    #[test]
+    fn a_fault_in_a_cfc_chart_marks_its_element() {
+        let project = project_model::load_project(&assets::example_project_dir())
+            .map(|loaded| loaded.project)
+            .unwrap_or_else(|error| panic!("{error}"));
+        let lowered = compiler::lower::lower_project(&project);
+        let body = lowered
+            .bodies
+            .iter()
+            .find(|body| body.pou == "TempControl")
+            .expect("TempControl is lowered");
+        // The line of the plant's MUL box (element 11).
+        let line = (1..=body.text.lines().count() as u32)
+            .find(|line| {
+                matches!(
+                    body.origin_at_line(*line),
+                    Some(Origin::Element {
+                        element: Some(project_model::ElementId(11)),
+                        ..
+                    })
+                )
+            })
+            .expect("a line of element 11");
+        let fault = Fault {
+            task: "MainTask".to_owned(),
+            kind: "overflow".to_owned(),
+            pou: "TempControl".to_owned(),
+            file: body.text_file.to_string_lossy().into_owned(),
+            line,
+            cycle: 3,
+        };
+        let found = fault_diagnostics(&[fault], body, Language::English);
+        assert!(
+            found.iter().any(|marker| marker.network == 0
+                && marker.element == Some(project_model::ElementId(11))),
+            "{found:?}"
+        );
+    }
 }

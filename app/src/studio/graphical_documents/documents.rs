@@ -4,11 +4,12 @@
 use std::collections::HashMap;
 
 use compiler::lower::LoweredBody;
-use editor::{DiagramEditor, DiagramView, ElementDiagnostic};
+use editor::{CfcEditor, DiagramEditor, DiagramView, ElementDiagnostic, SfcEditor};
 use project_model::{Network, Pou, Project, TextTarget};
 
 use crate::studio::i18n::Language;
 
+use super::chart_documents::ChartDocuments;
 use super::online_values::{BodyProbes, ProbePath};
 use super::texts::diagram_texts;
 
@@ -70,6 +71,11 @@ pub struct GraphicalDocuments {
     pub(super) documents: HashMap<TextTarget, DiagramDocument>,
     /// The lowering the online values and faults are read through.
     pub(super) lowering: LoweringCache,
+    /// The editors of the CFC and SFC bodies.
+    pub(super) charts: ChartDocuments,
+    /// Whether the CFC editors show the execution order; `None` until the user chose, when each
+    /// editor shows its default.
+    pub(super) show_execution_order: Option<bool>,
 }
 
 /// The lowered LD/FBD bodies of one project revision, for their probes and the origins of
@@ -151,5 +157,27 @@ impl GraphicalDocuments {
     /// The diagram editor of `target`, if its document was drawn.
     pub fn editor(&self, target: &TextTarget) -> Option<&DiagramEditor> {
         self.documents.get(target).map(|document| &document.editor)
+    }
+
+    /// The CFC editor of `target`, if its document was drawn.
+    pub fn cfc_editor(&self, target: &TextTarget) -> Option<&CfcEditor> {
+        self.charts.cfc.get(target).map(|document| &document.editor)
+    }
+
+    /// The SFC editor of `target`, if its document was drawn.
+    pub fn sfc_editor(&self, target: &TextTarget) -> Option<&SfcEditor> {
+        self.charts.sfc.get(target).map(|document| &document.editor)
+    }
+
+    /// Shows or hides the execution order in every CFC editor (View ▸ Display Execution Order).
+    pub fn toggle_execution_order(&mut self) {
+        let shown = self.show_execution_order.unwrap_or_else(|| {
+            self.charts
+                .cfc
+                .values()
+                .next()
+                .is_none_or(|document| document.editor.shows_execution_order())
+        });
+        self.show_execution_order = Some(!shown);
     }
 }

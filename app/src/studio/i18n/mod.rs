@@ -1,6 +1,7 @@
 //! Interface text in English and Simplified Chinese: the languages and the texts here, their
 //! words in `translations.rs`.
 
+mod chart_texts;
 mod device_texts;
 mod diagram_texts;
 mod language;
@@ -8,6 +9,7 @@ mod refusal_texts;
 mod template;
 mod translations;
 
+pub use chart_texts::ChartText;
 pub use device_texts::DeviceText;
 pub use diagram_texts::DiagramText;
 pub use language::Language;

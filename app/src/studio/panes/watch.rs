@@ -126,21 +126,24 @@ pub(crate) fn watch_ui(
     let online = view.online.can_write();
     let mut edits: Vec<(String, Vec<Edit>)> = Vec::new();
     // A variable dragged from a declaration table anywhere onto the list joins it.
-    let (_, dropped) = ui.dnd_drop_zone::<editor::VariablePath, _>(egui::Frame::NONE, |ui| {
-        entries_ui(view, state, ui, &list, online, &mut edits);
-    });
+    let (_, dropped) =
+        ui.dnd_drop_zone::<editor::VariableDragPayload, _>(egui::Frame::NONE, |ui| {
+            entries_ui(view, state, ui, &list, online, &mut edits);
+        });
+    // A variable without one path (a function block's) cannot be watched by its name alone.
+    let dropped = dropped.and_then(|dropped| dropped.path.clone());
     if let Some(dropped) = dropped
         && !list
             .entries
             .iter()
-            .any(|e| e.path.eq_ignore_ascii_case(&dropped.0))
+            .any(|e| e.path.eq_ignore_ascii_case(&dropped))
     {
         let mut changed = list.clone();
         changed.entries.push(WatchEntry {
-            path: dropped.0.clone(),
+            path: dropped.clone(),
             ..WatchEntry::default()
         });
-        let label = Text::UndoWatch.fill(view.language, &[("path", &dropped.0)]);
+        let label = Text::UndoWatch.fill(view.language, &[("path", &dropped)]);
         edits.push((label, replace(changed)));
     }
     for (label, edit) in edits {

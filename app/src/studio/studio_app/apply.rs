@@ -80,6 +80,15 @@ fn apply(studio: &mut Studio, dock: &mut Dock, command: Command, ctx: &egui::Con
         Command::Reset(kind) => studio.shared.online.reset(kind),
         Command::ConfirmDownload => studio.shared.online.confirm_download(),
         Command::CancelDownload => studio.shared.online.cancel_download(),
+        Command::WriteValues(values) => {
+            if let Err(refused) = studio.shared.online.write(&values)
+                && let Some((path, reason)) = refused.first()
+            {
+                let message = StatusMessage::error(format!("{path}: {reason}"));
+                studio.report(message);
+            }
+        }
+        Command::ToggleExecutionOrder => studio.panes.texts.graphical.toggle_execution_order(),
         Command::WritePrepared | Command::ForcePrepared => {
             write_prepared(studio, command == Command::WritePrepared);
         }

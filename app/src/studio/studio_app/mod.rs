@@ -156,6 +156,16 @@ impl StudioApp {
         self.studio.panes.texts.graphical.editor(target)
     }
 
+    /// The CFC editor of a body, once its document was drawn.
+    pub fn cfc_editor(&self, target: &project_model::TextTarget) -> Option<&editor::CfcEditor> {
+        self.studio.panes.texts.graphical.cfc_editor(target)
+    }
+
+    /// The SFC editor of a body, once its document was drawn.
+    pub fn sfc_editor(&self, target: &project_model::TextTarget) -> Option<&editor::SfcEditor> {
+        self.studio.panes.texts.graphical.sfc_editor(target)
+    }
+
     /// The docking layout.
     pub fn dock(&self) -> &Dock {
         &self.dock

@@ -12,7 +12,9 @@ use crate::studio::reveal::Reveal;
 use crate::studio::tree_node::TreeNode;
 use crate::studio::view::StudioView;
 
-use crate::studio::graphical_documents::{GraphicalShown, graphical_body_ui};
+use crate::studio::graphical_documents::{
+    ChartShown, GraphicalShown, cfc_body_ui, graphical_body_ui, sfc_body_ui,
+};
 
 use super::diagnostics::body_diagnostics;
 use super::documents::{TextDocuments, TextKey};
@@ -85,9 +87,49 @@ pub(super) fn body_ui(
                     texts.inline.show(path);
                 }
             }
-            other => {
-                crate::studio::document_view::graphical_body_ui(ui, &target_label(&target), other)
+            Body::Cfc { .. } | Body::Sfc { .. } => {
+                if texts.live.update(project, &pou.name, revision) {
+                    ui.ctx().request_repaint_after(live_check::CHECK_DELAY);
+                }
+                let shown = ChartShown {
+                    pou,
+                    target: &target,
+                    label: &target_label(&target),
+                    findings: texts
+                        .live
+                        .findings(&pou.name)
+                        .map(|(_, found)| found.as_slice()),
+                    instance: view
+                        .online
+                        .is_online()
+                        .then(|| instance_of(project, pou))
+                        .flatten(),
+                    reveal: match reveal {
+                        Some(Reveal::Element { element, .. }) => *element,
+                        _ => None,
+                    },
+                };
+                let paths = match body {
+                    Body::Cfc { chart } => cfc_body_ui(
+                        view,
+                        &mut texts.graphical,
+                        &mut texts.inline.prepared,
+                        commands,
+                        ui,
+                        shown,
+                        chart,
+                    ),
+                    Body::Sfc { chart } => {
+                        sfc_body_ui(view, &mut texts.graphical, commands, ui, shown, chart)
+                    }
+                    _ => Vec::new(),
+                };
+                for path in paths {
+                    texts.inline.show(path);
+                }
             }
+            // An ST body has its text, drawn below.
+            Body::St { .. } => {}
         }
         return;
     };

@@ -76,6 +76,7 @@ pub(super) fn declarations_ui(
         let output = VariableTable::new(("variables", &pou.name, &method))
             .read_only(read_only)
             .drag_prefix(drag_prefix)
+            .drag_names(matches!(pou.body, project_model::Body::Cfc { .. }))
             .texts(table_texts(view.language))
             .show(ui, &variables, &warnings);
         if let Some((label, edit)) = output.edit {

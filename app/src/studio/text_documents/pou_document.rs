@@ -76,6 +76,12 @@ pub(crate) fn pou_document_ui(
                 format!("{} {}", Text::Action.get(language), a.name),
             )
         }));
+        choices.extend(pou.transitions.iter().map(|t| {
+            (
+                Part::Transition(t.name.clone()),
+                format!("{} {}", Text::Transition.get(language), t.name),
+            )
+        }));
         for property in &pou.properties {
             for (get, word) in [(true, "Get"), (false, "Set")] {
                 let exists = if get {
