@@ -180,6 +180,9 @@ pub fn cfc_refusal_text(refusal: &CfcRefusal, language: Language) -> String {
         CfcRefusal::UnknownBlock(name) => {
             ChartText::CfcUnknownBlock.fill(language, &[("name", name)])
         }
+        CfcRefusal::UnknownStructure(name) => {
+            ChartText::CfcUnknownStructure.fill(language, &[("name", name)])
+        }
         CfcRefusal::NotANumber(text) => ChartText::CfcNotANumber.fill(language, &[("text", text)]),
     }
 }
@@ -512,6 +515,7 @@ mod tests {
         }
         for refusal in [
             CfcRefusal::UnknownBlock("TOON".to_owned()),
+            CfcRefusal::UnknownStructure("ST_Nope".to_owned()),
             CfcRefusal::NotANumber("x".to_owned()),
         ] {
             let chinese = cfc_refusal_text(&refusal, Language::SimplifiedChinese);

@@ -135,6 +135,10 @@ impl editor::DiagramServices for NoDiagramServices {
         Vec::new()
     }
 
+    fn structure_members(&self, _type_name: &str) -> Option<Vec<String>> {
+        None
+    }
+
     fn signature(&self, _type_name: &str) -> Option<editor::BlockSignature> {
         None
     }

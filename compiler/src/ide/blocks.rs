@@ -3,7 +3,9 @@
 
 use std::path::PathBuf;
 
-use project_model::{Object, Pou, PouKind, Project, StBody, TextTarget, VarSection};
+use project_model::{
+    DataType, Object, Pou, PouKind, Project, StBody, TextTarget, TypeDefinition, VarSection,
+};
 
 use crate::sema::{Completion, DefinitionKind};
 
@@ -74,7 +76,10 @@ pub fn block_completions(project: &Project, prefix: &str) -> Vec<Completion> {
         .collect();
     for object in project.application.objects() {
         if let Object::Pou(pou) = object
-            && matches!(pou.kind, PouKind::Function | PouKind::FunctionBlock)
+            && matches!(
+                pou.kind,
+                PouKind::Function | PouKind::FunctionBlock | PouKind::Program
+            )
         {
             found.push(Completion {
                 label: pou.name.clone(),
@@ -90,7 +95,8 @@ pub fn block_completions(project: &Project, prefix: &str) -> Vec<Completion> {
 }
 
 /// The pins of the block `name` (any case): a standard function's formal inputs and its `OUT`,
-/// a standard function block's interface, or a project POU's inputs and outputs.
+/// a standard function block's interface, or a project POU's inputs and outputs (a program's
+/// too: its box calls the program by its own name, so it needs no instance).
 pub fn block_pins(project: &Project, name: &str) -> Option<BlockPins> {
     if let Some(function) = crate::sema::signatures::function(name) {
         return Some(BlockPins {
@@ -138,8 +144,44 @@ pub fn block_pins(project: &Project, name: &str) -> Option<BlockPins> {
             outputs: in_section(&[VarSection::VarOutput]),
             function_block: true,
         }),
-        PouKind::Program | PouKind::Interface => None,
+        PouKind::Program => Some(BlockPins {
+            inputs,
+            outputs: in_section(&[VarSection::VarOutput]),
+            function_block: false,
+        }),
+        PouKind::Interface => None,
     }
+}
+
+/// The members of the structure type `name` (any case) in declaration order, those of the
+/// structures it extends first: the pins of a CFC composer or selector. `None` when `name` is
+/// not a structure of the project (or its `EXTENDS` chain loops).
+pub fn structure_members(project: &Project, name: &str) -> Option<Vec<String>> {
+    let mut chain = Vec::new();
+    let mut wanted = name.trim().to_owned();
+    loop {
+        let (extends, members) = project
+            .application
+            .objects()
+            .into_iter()
+            .find_map(|object| match object {
+                Object::DataType(DataType {
+                    name,
+                    definition: TypeDefinition::Struct { extends, members },
+                    ..
+                }) if name.eq_ignore_ascii_case(&wanted) => Some((extends.clone(), members)),
+                _ => None,
+            })?;
+        if chain.len() > 64 {
+            return None;
+        }
+        chain.push(members.iter().map(|m| m.name.clone()).collect::<Vec<_>>());
+        match extends {
+            Some(base) if !base.trim().is_empty() => wanted = base.trim().to_owned(),
+            _ => break,
+        }
+    }
+    Some(chain.into_iter().rev().flatten().collect())
 }
 
 #[cfg(test)]
@@ -214,7 +256,15 @@ mod tests {
         assert_eq!(motor.inputs, ["xRun"]);
         assert_eq!(motor.outputs, ["xDone"]);
         assert!(motor.function_block);
-        assert_eq!(block_pins(&project, "Main"), None);
+        // A program's box calls the program itself, so it has pins but needs no instance.
+        let main = block_pins(&project, "Main").expect("a program");
+        assert!(main.inputs.is_empty() && main.outputs.is_empty());
+        assert!(!main.function_block);
+        assert!(
+            block_completions(&project, "Ma")
+                .iter()
+                .any(|b| b.label == "Main")
+        );
         let blocks = block_completions(&project, "fb_");
         assert_eq!(blocks.len(), 1);
         assert_eq!(blocks[0].label, "FB_Motor");
@@ -223,6 +273,40 @@ mod tests {
                 .iter()
                 .any(|b| b.label == "TON")
         );
+    }
+
+    #[test]
+    fn a_structure_has_its_members_those_it_extends_first() {
+        use project_model::{DataType, StructMember};
+        let structure = |name: &str, extends: Option<&str>, members: &[&str]| {
+            Node::Object(Object::DataType(DataType {
+                name: name.to_owned(),
+                comment: String::new(),
+                definition: TypeDefinition::Struct {
+                    extends: extends.map(str::to_owned),
+                    members: members
+                        .iter()
+                        .map(|member| StructMember {
+                            name: (*member).to_owned(),
+                            ty: "INT".to_owned(),
+                            ..StructMember::default()
+                        })
+                        .collect(),
+                },
+            }))
+        };
+        let mut project = Project::default();
+        project.application.children = vec![
+            structure("ST_Base", None, &["a"]),
+            structure("ST_Point", Some("ST_Base"), &["x", "y"]),
+            structure("ST_Loop", Some("ST_Loop"), &["z"]),
+        ];
+        assert_eq!(
+            structure_members(&project, "st_point"),
+            Some(vec!["a".to_owned(), "x".to_owned(), "y".to_owned()])
+        );
+        assert_eq!(structure_members(&project, "ST_Loop"), None);
+        assert_eq!(structure_members(&project, "TON"), None);
     }
 
     #[test]

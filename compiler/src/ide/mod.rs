@@ -23,7 +23,9 @@ pub use addresses::{
     AddressArea, AddressCheckError, AddressInfo, LocatedVariable, Overlap, address_info,
     check_address, located_overlaps, located_variables,
 };
-pub use blocks::{BlockPins, block_completions, block_pins, operand_completions};
+pub use blocks::{
+    BlockPins, block_completions, block_pins, operand_completions, structure_members,
+};
 pub use declarations::{
     DeclarationHeader, DeclarationKind, ParsedDeclarations, parse_declarations,
 };

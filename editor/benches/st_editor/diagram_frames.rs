@@ -34,6 +34,10 @@ impl DiagramServices for NoServices {
         Vec::new()
     }
 
+    fn structure_members(&self, _type_name: &str) -> Option<Vec<String>> {
+        None
+    }
+
     fn signature(&self, _type_name: &str) -> Option<BlockSignature> {
         None
     }

@@ -243,10 +243,10 @@ impl CfcEditor {
                 }
             }
             EntryTarget::StructType(id) => {
-                let members = services
-                    .signature(text)
-                    .map(|signature| signature.inputs)
-                    .unwrap_or_default();
+                let Some(members) = services.structure_members(text) else {
+                    frame.refusal = Some(CfcRefusal::UnknownStructure(text.to_owned()));
+                    return;
+                };
                 let result = edit::set_members(&self.chart, id, text, &members);
                 self.apply(result, frame);
             }

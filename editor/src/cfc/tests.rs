@@ -60,6 +60,10 @@ impl DiagramServices for FakeServices {
         }
     }
 
+    fn structure_members(&self, type_name: &str) -> Option<Vec<String>> {
+        (type_name == "ST_Point").then(|| vec!["x".to_owned(), "y".to_owned()])
+    }
+
     fn is_declared(&self, name: &str) -> bool {
         ["a", "b", "y"].contains(&name)
     }
@@ -310,6 +314,23 @@ fn dragging_a_box_moves_it_on_the_grid_and_reroutes_its_wires() {
     let after = &harness.state().editor.routes[&pin(1, "IN1")];
     assert_ne!(&before, after);
     assert_eq!(after.last().map(|p| p.y), Some(16));
+}
+
+#[test]
+fn a_composer_takes_its_structure_members_as_pins_and_an_unknown_structure_is_refused() {
+    let mut harness = harness(CfcChart::default());
+    place(&mut harness, "Composer", 4.0, 4.0, "ST_Point");
+    place(&mut harness, "Selector", 20.0, 4.0, "ST_Nope");
+    let chart = &harness.state().chart;
+    let CfcElementKind::Composer { type_name, inputs } = &chart.elements[0].kind else {
+        panic!("a composer: {:?}", chart.elements[0].kind);
+    };
+    let members: Vec<&str> = inputs.iter().map(|pin| pin.name.as_str()).collect();
+    assert_eq!((type_name.as_str(), members), ("ST_Point", vec!["x", "y"]));
+    assert_eq!(
+        harness.state().refusals,
+        vec![CfcRefusal::UnknownStructure("ST_Nope".to_owned())]
+    );
 }
 
 #[test]

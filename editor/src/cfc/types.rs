@@ -118,6 +118,8 @@ pub enum CfcRefusal {
     Edit(CfcEditError),
     /// No block of this name is known.
     UnknownBlock(String),
+    /// No structure type of this name is known (for a composer or selector).
+    UnknownStructure(String),
     /// An execution order was typed that is not a number.
     NotANumber(String),
 }

@@ -40,6 +40,10 @@ impl DiagramServices for FakeServices {
             .collect()
     }
 
+    fn structure_members(&self, _type_name: &str) -> Option<Vec<String>> {
+        None
+    }
+
     fn signature(&self, type_name: &str) -> Option<BlockSignature> {
         match type_name {
             "TON" => Some(BlockSignature {

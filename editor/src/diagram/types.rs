@@ -135,6 +135,9 @@ pub trait DiagramServices {
     fn blocks(&self, prefix: &str) -> Vec<CompletionItem>;
     /// The pins of block `type_name`, if it is known.
     fn signature(&self, type_name: &str) -> Option<BlockSignature>;
+    /// The members of the structure type `type_name`, if it is one: the pins of a CFC
+    /// composer or selector.
+    fn structure_members(&self, type_name: &str) -> Option<Vec<String>>;
     /// Whether a variable `name` is declared where the body is.
     fn is_declared(&self, name: &str) -> bool;
 }

@@ -52,6 +52,10 @@ impl DiagramServices for DiagramBodyServices<'_> {
         })
     }
 
+    fn structure_members(&self, type_name: &str) -> Option<Vec<String>> {
+        ide::structure_members(self.project, type_name)
+    }
+
     fn is_declared(&self, name: &str) -> bool {
         ide::operand_completions(self.project, &self.target, name)
             .iter()

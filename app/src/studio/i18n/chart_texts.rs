@@ -101,6 +101,7 @@ pub enum ChartText {
     CfcWrongKind,
     CfcNotExtensible,
     CfcUnknownBlock,
+    CfcUnknownStructure,
     CfcNotANumber,
     // Why an SFC command did nothing (`project_model::sfc_edit::SfcEditError`).
     SfcStructure,
@@ -259,6 +260,10 @@ impl ChartText {
             Self::CfcUnknownBlock => (
                 "no operator, function or function block is called '{name}'",
                 "没有名为“{name}”的运算符、函数或功能块",
+            ),
+            Self::CfcUnknownStructure => (
+                "no structure type is called '{name}'",
+                "没有名为“{name}”的结构体类型",
             ),
             Self::CfcNotANumber => (
                 "'{text}' is not an execution order number",
