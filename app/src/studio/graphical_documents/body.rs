@@ -14,7 +14,7 @@ use project_model::{
 
 use crate::studio::command::{Command, Commands};
 use crate::studio::error_texts::diagram_refusal_text;
-use crate::studio::i18n::{DiagramText, Text};
+use crate::studio::i18n::{DiagramText, Language, Text};
 use crate::studio::view::StudioView;
 
 use super::diagnostics::{element_diagnostics, fault_diagnostics};
@@ -150,37 +150,64 @@ pub(crate) fn graphical_body_ui(
     if let Some(operand) = prepared_operand
         && let Some(path) = operand_path(&operand.operand)
     {
-        if operand.value.trim().is_empty() {
-            prepared.remove(&path);
-        } else {
-            prepared.insert(path, operand.value.trim().to_owned());
-        }
+        prepare_value(prepared, path, &operand.value);
     }
     if let Some(change) = change {
-        let mut edits = Vec::new();
-        let label = match &declare_instance {
-            Some(instance) => {
-                edits.push(declare_edit(shown.pou, target, instance));
-                DiagramText::UndoDeclareInstance.fill(
-                    language,
-                    &[
-                        ("name", shown.label),
-                        ("instance", &instance.name),
-                        ("type", &instance.type_name),
-                    ],
-                )
-            }
-            None => Text::UndoEdit.fill(language, &[("name", shown.label)]),
-        };
-        edits.push(Edit::SpliceNetworks {
+        let edit = Edit::SpliceNetworks {
             target: target.clone(),
             at: change.at,
             remove: change.remove,
             insert: change.insert,
-        });
-        commands.push(Command::Edit(label, edits));
+        };
+        commands.push(change_command(
+            shown.pou,
+            target,
+            shown.label,
+            declare_instance.as_ref(),
+            edit,
+            language,
+        ));
     }
     paths
+}
+
+/// Keeps `value`, prepared on an operand read at `path`, for F7 and Ctrl+F7; an empty value
+/// takes the preparation back.
+pub(super) fn prepare_value(prepared: &mut BTreeMap<String, String>, path: String, value: &str) {
+    if value.trim().is_empty() {
+        prepared.remove(&path);
+    } else {
+        prepared.insert(path, value.trim().to_owned());
+    }
+}
+
+/// The undo step of one diagram gesture on the body `target` (named `label`): `edit`, after
+/// the declaration of a box's new function block instance when the gesture named one.
+pub(super) fn change_command(
+    pou: &Pou,
+    target: &TextTarget,
+    label: &str,
+    declare_instance: Option<&InstanceDeclaration>,
+    edit: Edit,
+    language: Language,
+) -> Command {
+    let mut edits = Vec::new();
+    let undo_label = match declare_instance {
+        Some(instance) => {
+            edits.push(declare_edit(pou, target, instance));
+            DiagramText::UndoDeclareInstance.fill(
+                language,
+                &[
+                    ("name", label),
+                    ("instance", &instance.name),
+                    ("type", &instance.type_name),
+                ],
+            )
+        }
+        None => Text::UndoEdit.fill(language, &[("name", label)]),
+    };
+    edits.push(edit);
+    Command::Edit(undo_label, edits)
 }
 
 /// The edit declaring a box's instance where the body's variables are: in the method for a

@@ -14,10 +14,10 @@ use project_model::{Body, CfcChart, Edit, ElementId, Pou, SfcChart, TextTarget};
 
 use crate::studio::command::{Command, Commands};
 use crate::studio::error_texts::{cfc_refusal_text, sfc_edit_error_text};
-use crate::studio::i18n::{DiagramText, Text};
+use crate::studio::i18n::Text;
 use crate::studio::view::StudioView;
 
-use super::body::declare_edit;
+use super::body::{change_command, prepare_value};
 use super::chart_online::{SfcReadings, cfc_online};
 use super::diagnostics::{element_diagnostics, fault_diagnostics};
 use super::documents::GraphicalDocuments;
@@ -171,35 +171,23 @@ pub(crate) fn cfc_body_ui(
             .as_ref()
             .and_then(|probes| probes.operand_path(&operand.operand))
     {
-        if operand.value.trim().is_empty() {
-            prepared.remove(&path);
-        } else {
-            prepared.insert(path, operand.value.trim().to_owned());
-        }
+        prepare_value(prepared, path, &operand.value);
     }
     if let Some(change) = change {
-        let mut edits = Vec::new();
-        let label = match &declare_instance {
-            Some(instance) => {
-                edits.push(declare_edit(shown.pou, target, instance));
-                DiagramText::UndoDeclareInstance.fill(
-                    language,
-                    &[
-                        ("name", shown.label),
-                        ("instance", &instance.name),
-                        ("type", &instance.type_name),
-                    ],
-                )
-            }
-            None => Text::UndoEdit.fill(language, &[("name", shown.label)]),
-        };
-        edits.push(Edit::ReplaceChart {
+        let edit = Edit::ReplaceChart {
             target: target.clone(),
             body: Box::new(Body::Cfc {
                 chart: change.chart,
             }),
-        });
-        commands.push(Command::Edit(label, edits));
+        };
+        commands.push(change_command(
+            shown.pou,
+            target,
+            shown.label,
+            declare_instance.as_ref(),
+            edit,
+            language,
+        ));
     }
     paths
 }
