@@ -50,11 +50,34 @@ impl SfcEditor {
         }
         self.pointer_ui(ui, &response, frame);
         self.paint_ui(ui, &response);
+        self.scroll_to_selection(ui);
         if let Some(entry_rect) = self.entry_rect() {
             let screen = self.to_screen(entry_rect);
             self.entry_ui(ui.ctx(), id, screen, services, frame);
         }
         response
+    }
+
+    /// Scrolls a new selection into view once it is laid out (a step inserted below the
+    /// visible part, a finding revealed in a long chart).
+    fn scroll_to_selection(&mut self, ui: &Ui) {
+        if self.selection == self.scrolled_to {
+            return;
+        }
+        if self.selection.is_empty() {
+            self.scrolled_to.clear();
+            return;
+        }
+        let rect = self
+            .selection
+            .iter()
+            .filter_map(|id| self.layout.element(*id))
+            .map(|placed| self.to_screen(placed.rect))
+            .reduce(|all, one| all.union(one));
+        if let Some(rect) = rect {
+            ui.scroll_to_rect(rect, None);
+            self.scrolled_to.clone_from(&self.selection);
+        }
     }
 
     /// The content point (zoom 1) under screen point `pos`.

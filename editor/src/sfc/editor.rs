@@ -57,6 +57,9 @@ pub struct SfcEditor {
     pub(super) panel: Option<super::panel::PanelState>,
     /// Where the canvas's content began on screen in the last frame.
     pub(super) last_origin: Pos2,
+    /// The selection the view last scrolled to, so a new selection (an inserted step, a
+    /// revealed finding) is scrolled into view once and the user's own scrolling is kept.
+    pub(super) scrolled_to: Vec<ElementId>,
 }
 
 /// What one frame collects for its output.
@@ -88,6 +91,7 @@ impl SfcEditor {
             texts: SfcTexts::default(),
             read_only: false,
             focus_requested: false,
+            scrolled_to: Vec::new(),
             pending_commands: Vec::new(),
             panel: None,
             last_origin: Pos2::ZERO,

@@ -184,6 +184,25 @@ fn a_parallel_branch_is_drawn_with_the_mouse_and_the_keyboard() {
 }
 
 #[test]
+fn a_step_inserted_below_the_visible_part_is_scrolled_into_view() {
+    let mut harness = harness(SfcChart::new_body());
+    harness.set_size(egui::vec2(900.0, 260.0));
+    harness.run_steps(2);
+    click(&mut harness, ElementId(2), Modifiers::NONE);
+    for _ in 0..6 {
+        command(&mut harness, Modifiers::COMMAND, Key::T);
+    }
+    let editor = &harness.state().editor;
+    let selected = editor.selection()[0];
+    let shown = editor.element_screen_rect(selected).expect("laid out");
+    assert!(
+        shown.bottom() <= 260.0 && shown.top() >= 0.0,
+        "the new step at {shown:?} is outside the view"
+    );
+    assert_eq!(harness.state().chart.sequence.len(), 15);
+}
+
+#[test]
 fn the_arrows_move_and_extend_the_selection_for_a_branch_around_a_run() {
     let chart = insert_step_transition_after(&SfcChart::new_body(), ElementId(2)).unwrap();
     let mut harness = harness(chart);
