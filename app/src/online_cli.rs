@@ -357,9 +357,38 @@ async fn parse_assignments(
             .split_once('=')
             .with_context(|| format!("'{assignment}': write VAR=VALUE, such as Main.speed=1500"))?;
         let resolved = client.resolve(path.trim()).await?;
-        let bytes = crate::literal_value::parse(literal.trim(), resolved.type_tag, resolved.length)
-            .map_err(|message| anyhow::anyhow!("{}: {message}", path.trim()))?;
+        let bytes = if resolved.type_tag == TYPE_ENUM && resolved.place.bit.is_none() {
+            let enumeration = client.enumeration(path.trim()).await?;
+            enumeration_value(&enumeration, literal.trim())
+                .with_context(|| path.trim().to_owned())?
+        } else {
+            crate::literal_value::parse(literal.trim(), resolved.type_tag, resolved.length)
+                .map_err(|message| anyhow::anyhow!("{}: {message}", path.trim()))?
+        };
         values.push((resolved.place, bytes));
     }
     Ok(values)
+}
+
+/// The bytes of the value of `enumeration` named by `text` (`GREEN` or `Light#GREEN`, in any
+/// case), stored as the enumeration's base integer type.
+fn enumeration_value(enumeration: &Enumeration, text: &str) -> anyhow::Result<Vec<u8>> {
+    let name = text.rsplit_once('#').map_or(text, |(_, name)| name);
+    let Some((_, number)) = enumeration
+        .values
+        .iter()
+        .find(|(value, _)| value.eq_ignore_ascii_case(name))
+    else {
+        let names: Vec<&str> = enumeration
+            .values
+            .iter()
+            .map(|(name, _)| name.as_str())
+            .collect();
+        anyhow::bail!(
+            "'{text}' is not a value of the enumeration; its values are {}",
+            names.join(", ")
+        );
+    };
+    crate::literal_value::parse(&number.to_string(), enumeration.base, 0)
+        .map_err(|message| anyhow::anyhow!("'{text}' ({number}): {message}"))
 }

@@ -225,7 +225,7 @@ END_PROGRAM
 ";
 
 #[test]
-fn read_and_trace_print_enumerations_by_name() {
+fn read_trace_and_write_enumerations_by_name() {
     let dir = tempfile::tempdir().unwrap();
     let source = dir.path().join("stations.st");
     std::fs::write(&source, ENUM_PROGRAM).unwrap();
@@ -249,6 +249,24 @@ fn read_and_trace_print_enumerations_by_name() {
     assert!(
         light == "main.light = GREEN\n" || light == "main.light = RED\n",
         "{light}"
+    );
+
+    // A value is written by its name; a name the type does not have is refused with its names.
+    ok(&[
+        "write",
+        "main.station=Station#STATION_03_WAITING_FOR_PARTS",
+        "--target",
+        target,
+    ]);
+    assert_eq!(
+        ok(&["read", "main.station", "--target", target]),
+        "main.station = STATION_03_WAITING_FOR_PARTS\n"
+    );
+    let refused = rivet(&["write", "main.station=PURPLE", "--target", target]);
+    let message = String::from_utf8_lossy(&refused.stderr);
+    assert!(
+        !refused.status.success() && message.contains("'PURPLE' is not a value of the enumeration; its values are STATION_00_WAITING_FOR_PARTS,"),
+        "{message}"
     );
 
     let csv = dir.path().join("lights.csv");
@@ -276,7 +294,7 @@ fn read_and_trace_print_enumerations_by_name() {
     for row in &rows {
         let n: i64 = row[2].parse().unwrap();
         let light = if n % 2 == 0 { "GREEN" } else { "RED" };
-        assert_eq!(row[3..], [light, "STATION_18_WAITING_FOR_PARTS"], "{text}");
+        assert_eq!(row[3..], [light, "STATION_03_WAITING_FOR_PARTS"], "{text}");
     }
 }
 
