@@ -8,9 +8,9 @@ use std::net::SocketAddr;
 use std::path::Path;
 
 use anyhow::Context as _;
-use online::{Client, OnlineError, Place, Reset, Resolved};
+use online::{Client, Enumeration, OnlineError, Place, Reset, Resolved, TYPE_ENUM};
 
-use crate::value_text::{describe_place, hex, show};
+use crate::value_text::{describe_place, hex, show_typed};
 
 /// Where and how to connect.
 #[derive(Clone, Debug, clap::Args)]
@@ -136,10 +136,12 @@ pub fn run(target: &Target, command: OnlineCommand) -> anyhow::Result<()> {
             OnlineCommand::Read(paths) => {
                 let resolved = resolve_all(&mut client, &paths).await?;
                 let places: Vec<Place> = resolved.iter().map(|r| r.place).collect();
+                let enumerations = enumerations_of(&mut client, &paths, &resolved).await?;
                 let snapshot = client.read(&places).await?;
-                for ((path, resolved), (bytes, forced)) in paths.iter().zip(&resolved).zip(&snapshot.values) {
+                let typed = resolved.iter().zip(&enumerations);
+                for ((path, (resolved, enumeration)), (bytes, forced)) in paths.iter().zip(typed).zip(&snapshot.values) {
                     let marker = if *forced { " (forced)" } else { "" };
-                    println!("{path} = {}{marker}", show(resolved, bytes));
+                    println!("{path} = {}{marker}", show_typed(resolved, enumeration.as_ref(), bytes));
                 }
             }
             OnlineCommand::Write(assignments) | OnlineCommand::Force(assignments) if assignments.is_empty() => {
@@ -247,6 +249,7 @@ async fn trace(client: &mut Client, request: &TraceRequest) -> anyhow::Result<()
             )
         })?;
     let resolved = resolve_all(client, &request.variables).await?;
+    let enumerations = enumerations_of(client, &request.variables, &resolved).await?;
     let places: Vec<Place> = resolved.iter().map(|r| r.place).collect();
     let trigger = match &request.trigger {
         None => online::Trigger::None,
@@ -297,9 +300,11 @@ async fn trace(client: &mut Client, request: &TraceRequest) -> anyhow::Result<()
             sample.cycle,
             sample.time_ns as f64 / 1e6
         ));
-        for (resolved, bytes) in resolved.iter().zip(&sample.values) {
+        for ((resolved, enumeration), bytes) in
+            resolved.iter().zip(&enumerations).zip(&sample.values)
+        {
             csv.push(',');
-            csv.push_str(&show(resolved, bytes));
+            csv.push_str(&show_typed(resolved, enumeration.as_ref(), bytes));
         }
         csv.push('\n');
     }
@@ -322,6 +327,26 @@ async fn resolve_all(client: &mut Client, paths: &[String]) -> Result<Vec<Resolv
     Ok(out)
 }
 
+/// The values of each enumeration-typed variable among `paths`, so that its values print by
+/// name; `None` for the others.
+async fn enumerations_of(
+    client: &mut Client,
+    paths: &[String],
+    resolved: &[Resolved],
+) -> Result<Vec<Option<Enumeration>>, OnlineError> {
+    let mut out = Vec::new();
+    for (path, resolved) in paths.iter().zip(resolved) {
+        out.push(
+            if resolved.type_tag == TYPE_ENUM && resolved.place.bit.is_none() {
+                Some(client.enumeration(path).await?)
+            } else {
+                None
+            },
+        );
+    }
+    Ok(out)
+}
+
 async fn parse_assignments(
     client: &mut Client,
     assignments: &[String],
@@ -332,9 +357,38 @@ async fn parse_assignments(
             .split_once('=')
             .with_context(|| format!("'{assignment}': write VAR=VALUE, such as Main.speed=1500"))?;
         let resolved = client.resolve(path.trim()).await?;
-        let bytes = crate::literal_value::parse(literal.trim(), resolved.type_tag, resolved.length)
-            .map_err(|message| anyhow::anyhow!("{}: {message}", path.trim()))?;
+        let bytes = if resolved.type_tag == TYPE_ENUM && resolved.place.bit.is_none() {
+            let enumeration = client.enumeration(path.trim()).await?;
+            enumeration_value(&enumeration, literal.trim())
+                .with_context(|| path.trim().to_owned())?
+        } else {
+            crate::literal_value::parse(literal.trim(), resolved.type_tag, resolved.length)
+                .map_err(|message| anyhow::anyhow!("{}: {message}", path.trim()))?
+        };
         values.push((resolved.place, bytes));
     }
     Ok(values)
+}
+
+/// The bytes of the value of `enumeration` named by `text` (`GREEN` or `Light#GREEN`, in any
+/// case), stored as the enumeration's base integer type.
+fn enumeration_value(enumeration: &Enumeration, text: &str) -> anyhow::Result<Vec<u8>> {
+    let name = text.rsplit_once('#').map_or(text, |(_, name)| name);
+    let Some((_, number)) = enumeration
+        .values
+        .iter()
+        .find(|(value, _)| value.eq_ignore_ascii_case(name))
+    else {
+        let names: Vec<&str> = enumeration
+            .values
+            .iter()
+            .map(|(name, _)| name.as_str())
+            .collect();
+        anyhow::bail!(
+            "'{text}' is not a value of the enumeration; its values are {}",
+            names.join(", ")
+        );
+    };
+    crate::literal_value::parse(&number.to_string(), enumeration.base, 0)
+        .map_err(|message| anyhow::anyhow!("'{text}' ({number}): {message}"))
 }

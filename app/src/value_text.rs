@@ -1,7 +1,7 @@
 //! Values read from a target as text and numbers: what the command line prints and what the
 //! studio's watch, force and trace views show.
 
-use online::{Place, Resolved, TYPE_STRING, TYPE_WSTRING};
+use online::{Enumeration, Place, Resolved, TYPE_STRING, TYPE_WSTRING};
 use program_image::Elementary;
 
 /// The first eight bytes of a value, little-endian, as the raw bits of an elementary value
@@ -44,6 +44,30 @@ pub fn show(resolved: &Resolved, bytes: &[u8]) -> String {
             Some(ty) => runtime::value::elementary(raw, ty).to_string(),
             None => format!("16#{}", hex(bytes)),
         },
+    }
+}
+
+/// A value's bytes as text, an enumeration's by the name of its value (`enumeration` is the
+/// variable's type when it is one, from `online::Client::enumeration`).
+pub fn show_typed(resolved: &Resolved, enumeration: Option<&Enumeration>, bytes: &[u8]) -> String {
+    match enumeration {
+        Some(enumeration) => show_enumeration(enumeration, bytes),
+        None => show(resolved, bytes),
+    }
+}
+
+/// The bytes of an enumeration's value as its name, or as its number when no value of the type
+/// has that number (a plain integer written to it) or the base type is unknown.
+pub fn show_enumeration(enumeration: &Enumeration, bytes: &[u8]) -> String {
+    let number = match Elementary::from_tag(enumeration.base)
+        .map(|ty| runtime::value::elementary(raw_of(bytes), ty))
+    {
+        Some(runtime::value::Value::Int(number, _)) => number as i64,
+        _ => return format!("16#{}", hex(bytes)),
+    };
+    match enumeration.name_of(number) {
+        Some(name) => name.to_owned(),
+        None => number.to_string(),
     }
 }
 
@@ -125,5 +149,26 @@ mod tests {
         let text = resolved(0x20, 4, None);
         assert_eq!(show(&text, b"ab\0\0"), "'ab'");
         assert_eq!(numeric(&text, b"ab\0\0"), None);
+    }
+
+    #[test]
+    fn an_enumeration_is_shown_by_the_name_of_its_value_or_else_its_number() {
+        let colour = Enumeration {
+            base: Elementary::Int as u8,
+            values: vec![
+                ("RED".to_owned(), 0),
+                ("GREEN".to_owned(), 1),
+                ("BLUE".to_owned(), -7),
+            ],
+        };
+        assert_eq!(show_enumeration(&colour, &1i16.to_le_bytes()), "GREEN");
+        assert_eq!(show_enumeration(&colour, &(-7i16).to_le_bytes()), "BLUE");
+        assert_eq!(show_enumeration(&colour, &5i16.to_le_bytes()), "5");
+        let resolved = resolved(online::TYPE_ENUM, 2, None);
+        assert_eq!(
+            show_typed(&resolved, Some(&colour), &0i16.to_le_bytes()),
+            "RED"
+        );
+        assert_eq!(show_typed(&resolved, None, &0i16.to_le_bytes()), "16#0000");
     }
 }

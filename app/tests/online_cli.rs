@@ -186,6 +186,118 @@ fn download_run_read_write_force_trace_and_stop_over_the_cli() {
     assert!(ok(&["faults", "--target", target]).contains("no faults"));
 }
 
+/// A program with an enumeration of many long names, so that its values take several
+/// `ENUMERATION` answers, one with explicit values, and variables of both.
+const ENUM_PROGRAM: &str = "TYPE
+    Station : (
+        STATION_00_WAITING_FOR_PARTS,
+        STATION_01_WAITING_FOR_PARTS,
+        STATION_02_WAITING_FOR_PARTS,
+        STATION_03_WAITING_FOR_PARTS,
+        STATION_04_WAITING_FOR_PARTS,
+        STATION_05_WAITING_FOR_PARTS,
+        STATION_06_WAITING_FOR_PARTS,
+        STATION_07_WAITING_FOR_PARTS,
+        STATION_08_WAITING_FOR_PARTS,
+        STATION_09_WAITING_FOR_PARTS,
+        STATION_10_WAITING_FOR_PARTS,
+        STATION_11_WAITING_FOR_PARTS,
+        STATION_12_WAITING_FOR_PARTS,
+        STATION_13_WAITING_FOR_PARTS,
+        STATION_14_WAITING_FOR_PARTS,
+        STATION_15_WAITING_FOR_PARTS,
+        STATION_16_WAITING_FOR_PARTS,
+        STATION_17_WAITING_FOR_PARTS,
+        STATION_18_WAITING_FOR_PARTS,
+        STATION_19_WAITING_FOR_PARTS
+    );
+    Light : (RED := -1, AMBER := 5, GREEN := 300);
+END_TYPE
+PROGRAM main
+VAR
+    n : DINT;
+    light : Light := Light#AMBER;
+    station : Station := Station#STATION_18_WAITING_FOR_PARTS;
+END_VAR
+n := n + 1;
+IF n MOD 2 = 0 THEN light := Light#GREEN; ELSE light := Light#RED; END_IF
+END_PROGRAM
+";
+
+#[test]
+fn read_trace_and_write_enumerations_by_name() {
+    let dir = tempfile::tempdir().unwrap();
+    let source = dir.path().join("stations.st");
+    std::fs::write(&source, ENUM_PROGRAM).unwrap();
+    let runtime = start_runtime(&dir.path().join("data"), None);
+    let target = runtime.target.as_str();
+    ok(&[
+        "download",
+        source.to_str().unwrap(),
+        "--start",
+        "--target",
+        target,
+    ]);
+    std::thread::sleep(std::time::Duration::from_millis(100));
+
+    // The 19th value is past the first answer's values: it shows that the pages are joined.
+    assert_eq!(
+        ok(&["read", "main.station", "--target", target]),
+        "main.station = STATION_18_WAITING_FOR_PARTS\n"
+    );
+    let light = ok(&["read", "main.light", "--target", target]);
+    assert!(
+        light == "main.light = GREEN\n" || light == "main.light = RED\n",
+        "{light}"
+    );
+
+    // A value is written by its name; a name the type does not have is refused with its names.
+    ok(&[
+        "write",
+        "main.station=Station#STATION_03_WAITING_FOR_PARTS",
+        "--target",
+        target,
+    ]);
+    assert_eq!(
+        ok(&["read", "main.station", "--target", target]),
+        "main.station = STATION_03_WAITING_FOR_PARTS\n"
+    );
+    let refused = rivet(&["write", "main.station=PURPLE", "--target", target]);
+    let message = String::from_utf8_lossy(&refused.stderr);
+    assert!(
+        !refused.status.success() && message.contains("'PURPLE' is not a value of the enumeration; its values are STATION_00_WAITING_FOR_PARTS,"),
+        "{message}"
+    );
+
+    let csv = dir.path().join("lights.csv");
+    let traced = ok(&[
+        "trace",
+        "--vars",
+        "main.n,main.light,main.station",
+        "--task",
+        "MainTask",
+        "--samples",
+        "6",
+        "--csv",
+        csv.to_str().unwrap(),
+        "--target",
+        target,
+    ]);
+    assert!(traced.contains("6 samples"), "{traced}");
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let rows: Vec<Vec<&str>> = text
+        .lines()
+        .skip(1)
+        .map(|row| row.split(',').collect())
+        .collect();
+    assert_eq!(rows.len(), 6, "{text}");
+    for row in &rows {
+        let n: i64 = row[2].parse().unwrap();
+        let light = if n % 2 == 0 { "GREEN" } else { "RED" };
+        assert_eq!(row[3..], [light, "STATION_03_WAITING_FOR_PARTS"], "{text}");
+    }
+}
+
 #[test]
 fn a_missing_runtime_says_what_to_check() {
     let refused = rivet(&["status", "--target", "127.0.0.1:1"]);

@@ -7,10 +7,10 @@ use std::net::SocketAddr;
 use std::time::Duration;
 
 use online_protocol::{
-    CHUNK_HEADER_BYTES, DecodeError, FUNCTION_CODE, Fault, Identity, MAX_COUNT, MAX_PAYLOAD_BYTES,
-    PLACE_BYTES, PROTOCOL_VERSION, Place, Refusal, Request, ResetKind, Resolved, Response,
-    Snapshot, Status, TOKEN_BYTES, TRACE_ADD_PLACES, TRACE_CONFIGURE_PLACES, TargetState, TaskInfo,
-    TraceSample, TraceStatus, TriggerKind,
+    CHUNK_HEADER_BYTES, DecodeError, Enumeration, FUNCTION_CODE, Fault, Identity, MAX_COUNT,
+    MAX_PAYLOAD_BYTES, PLACE_BYTES, PROTOCOL_VERSION, Place, Refusal, Request, ResetKind, Resolved,
+    Response, Snapshot, Status, TOKEN_BYTES, TRACE_ADD_PLACES, TRACE_CONFIGURE_PLACES, TargetState,
+    TaskInfo, TraceSample, TraceStatus, TriggerKind,
 };
 use sha2::{Digest, Sha256};
 use tokio_modbus::client::{Client as _, Context};
@@ -270,6 +270,36 @@ impl Client {
         match self.call(&request).await? {
             Response::Resolve(resolved) => Ok(resolved),
             other => Err(unexpected(&other)),
+        }
+    }
+
+    /// `ENUMERATION`: the values of the enumeration type of the variable `path` (one whose
+    /// `RESOLVE` type is [`online_protocol::TYPE_ENUM`]), gathered over as many requests as
+    /// they need.
+    pub async fn enumeration(&mut self, path: &str) -> Result<Enumeration, OnlineError> {
+        let mut all = Enumeration {
+            base: 0,
+            values: Vec::new(),
+        };
+        loop {
+            let request = Request::Enumeration {
+                path: path.to_owned(),
+                from: u16::try_from(all.values.len()).unwrap_or(u16::MAX),
+            };
+            let (base, total, values) = match self.call(&request).await? {
+                Response::Enumeration {
+                    base,
+                    total,
+                    values,
+                } => (base, total, values),
+                other => return Err(unexpected(&other)),
+            };
+            all.base = base;
+            let before = all.values.len();
+            all.values.extend(values);
+            if all.values.len() >= usize::from(total) || all.values.len() == before {
+                return Ok(all);
+            }
         }
     }
 

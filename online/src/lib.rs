@@ -17,9 +17,9 @@ pub mod session;
 pub use client::{Client, REQUEST_TIMEOUT, Sample, TraceConfig, Trigger};
 pub use error::OnlineError;
 pub use online_protocol::{
-    Fault, Identity, Place, ResetKind as Reset, Resolved, Snapshot, TargetState, TaskInfo,
-    TraceState, TraceStatus, Value,
+    Enumeration, Fault, Identity, Place, ResetKind as Reset, Resolved, Snapshot, TargetState,
+    TaskInfo, TraceState, TraceStatus, Value,
 };
-// The string type tags of a resolved variable, so callers tell strings from elementary values
+// The string and enumeration type tags of a resolved variable, so callers tell strings from elementary values
 // without writing the protocol's numbers by hand or depending on the protocol crate.
-pub use online_protocol::{TYPE_STRING, TYPE_WSTRING};
+pub use online_protocol::{TYPE_ENUM, TYPE_STRING, TYPE_WSTRING};

@@ -68,6 +68,26 @@ pub struct Resolved {
     pub length: u16,
 }
 
+/// An enumeration type's values (`ENUMERATION`, gathered over as many requests as it needs).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Enumeration {
+    /// The elementary tag of the integer type its values are stored as.
+    pub base: u8,
+    /// The values' names and numbers in declaration order.
+    pub values: Vec<(String, i64)>,
+}
+
+impl Enumeration {
+    /// The name of the value `number`, if the type has one (a variable can hold a number that
+    /// names no value, for example after a write of a plain integer).
+    pub fn name_of(&self, number: i64) -> Option<&str> {
+        self.values
+            .iter()
+            .find(|(_, value)| *value == number)
+            .map(|(name, _)| name.as_str())
+    }
+}
+
 /// A place's bytes and whether it is forced.
 pub type Value = (Vec<u8>, bool);
 

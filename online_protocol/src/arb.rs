@@ -127,6 +127,9 @@ pub fn request() -> impl Strategy<Value = Request> {
             .prop_map(|(token, kind)| Request::Reset { token, kind })
             .boxed(),
         text().prop_map(|path| Request::Resolve { path }).boxed(),
+        (text(), any::<u16>())
+            .prop_map(|(path, from)| Request::Enumeration { path, from })
+            .boxed(),
         places().prop_map(|places| Request::Read { places }).boxed(),
         (token(), sized_values())
             .prop_map(|(token, values)| Request::Write { token, values })
@@ -196,6 +199,10 @@ pub fn request_of(service: Service) -> Request {
         },
         Service::Resolve => Request::Resolve {
             path: String::new(),
+        },
+        Service::Enumeration => Request::Enumeration {
+            path: String::new(),
+            from: 0,
         },
         Service::Read => Request::Read { places: Vec::new() },
         Service::Write => Request::Write {
@@ -356,6 +363,13 @@ pub fn response() -> impl Strategy<Value = (Request, Response)> {
                     type_tag,
                     length,
                 })
+            })
+            .boxed(),
+        (any::<u8>(), any::<u16>(), vec((text(), any::<i64>()), 0..4))
+            .prop_map(|(base, total, values)| Response::Enumeration {
+                base,
+                total,
+                values,
             })
             .boxed(),
         Just(Response::Write).boxed(),

@@ -67,5 +67,8 @@ pub const TYPE_STRING: u8 = 0x20;
 /// The `RESOLVE` type of a WSTRING.
 pub const TYPE_WSTRING: u8 = 0x21;
 
+/// The `RESOLVE` type of an enumeration: its values by name come from `ENUMERATION`.
+pub const TYPE_ENUM: u8 = 0x22;
+
 /// The `RESOLVE` type of anything neither elementary nor a string.
 pub const TYPE_OTHER: u8 = 0xFF;

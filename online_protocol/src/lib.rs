@@ -25,8 +25,8 @@ mod writer;
 mod arb;
 
 pub use answers::{
-    Fault, Identity, Resolved, Snapshot, TargetState, TaskInfo, TraceSample, TraceState,
-    TraceStatus, Value,
+    Enumeration, Fault, Identity, Resolved, Snapshot, TargetState, TaskInfo, TraceSample,
+    TraceState, TraceStatus, Value,
 };
 pub use error::DecodeError;
 pub use framing::*;

@@ -113,6 +113,10 @@ pub enum Request {
     Resolve {
         path: String,
     },
+    Enumeration {
+        path: String,
+        from: u16,
+    },
     Read {
         places: Vec<Place>,
     },
@@ -167,6 +171,7 @@ impl Request {
             Stop { .. } => Service::Stop,
             Reset { .. } => Service::Reset,
             Resolve { .. } => Service::Resolve,
+            Enumeration { .. } => Service::Enumeration,
             Read { .. } => Service::Read,
             Write { .. } => Service::Write,
             Force { .. } => Service::Force,
@@ -202,6 +207,7 @@ impl Request {
             Identify { .. }
             | Login { .. }
             | Resolve { .. }
+            | Enumeration { .. }
             | Read { .. }
             | Forces { .. }
             | TraceStatus
@@ -247,6 +253,10 @@ impl Request {
             Start { .. } | Stop { .. } | TraceArm { .. } | TraceStatus | Tasks => {}
             Reset { kind, .. } => out.push(*kind as u8),
             Resolve { path } => put_str8(&mut out, path),
+            Enumeration { path, from } => {
+                put_str8(&mut out, path);
+                out.extend_from_slice(&from.to_le_bytes());
+            }
             Read { places } | Unforce { places, .. } | TraceAdd { places, .. } => {
                 put_places(&mut out, places);
             }
@@ -316,6 +326,10 @@ impl Request {
             },
             Service::Resolve => Request::Resolve {
                 path: r.str8("path")?,
+            },
+            Service::Enumeration => Request::Enumeration {
+                path: r.str8("path")?,
+                from: r.u16("from")?,
             },
             Service::Read => Request::Read {
                 places: r.places()?,

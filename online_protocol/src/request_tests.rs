@@ -84,6 +84,10 @@ fn every_request() -> Vec<Request> {
             token: 3,
             places: vec![a],
         },
+        Request::Enumeration {
+            path: "Main.colour".to_owned(),
+            from: 2,
+        },
     ]
 }
 

@@ -79,6 +79,15 @@ pub enum Response {
         /// The forced places with their values, as many as fit one response.
         forces: Vec<(Place, Vec<u8>)>,
     },
+    /// `ENUMERATION`: the values of the variable's enumeration type from the request's index on.
+    Enumeration {
+        /// The elementary tag of the integer type the enumeration is stored as.
+        base: u8,
+        /// How many values the type has.
+        total: u16,
+        /// The values' names and numbers in declaration order, as many as fit one response.
+        values: Vec<(String, i64)>,
+    },
     /// `TRACE_CONFIGURE`: the trace configured.
     TraceConfigure {
         /// The bytes of one sample's values.
@@ -132,6 +141,7 @@ impl Response {
             Force => Service::Force,
             Unforce => Service::Unforce,
             Forces { .. } => Service::Forces,
+            Enumeration { .. } => Service::Enumeration,
             TraceConfigure { .. } => Service::TraceConfigure,
             TraceArm => Service::TraceArm,
             TraceStatus(_) => Service::TraceStatus,
@@ -194,6 +204,20 @@ impl Response {
                 for (place, value) in forces {
                     put_place(&mut out, place);
                     out.extend_from_slice(value);
+                }
+            }
+            Enumeration {
+                base,
+                total,
+                values,
+            } => {
+                out.push(*base);
+                out.extend_from_slice(&total.to_le_bytes());
+                let values = first(values);
+                out.push(values.len() as u8);
+                for (name, number) in values {
+                    put_str8(&mut out, name);
+                    out.extend_from_slice(&number.to_le_bytes());
                 }
             }
             TraceConfigure { sample_bytes } | TraceAdd { sample_bytes } => {
@@ -342,6 +366,21 @@ fn decode_answer(
                 forces.push((place, r.take("value", place.value_bytes())?.to_vec()));
             }
             Response::Forces { total, forces }
+        }
+        Service::Enumeration => {
+            let base = r.u8("base type")?;
+            let total = r.u16("total")?;
+            let count = r.u8("count")?;
+            let mut values = Vec::with_capacity(usize::from(count));
+            for _ in 0..count {
+                let name = r.str8("value name")?;
+                values.push((name, r.u64("value")? as i64));
+            }
+            Response::Enumeration {
+                base,
+                total,
+                values,
+            }
         }
         Service::TraceConfigure => Response::TraceConfigure {
             sample_bytes: r.u16("sample bytes")?,

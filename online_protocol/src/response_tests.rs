@@ -35,6 +35,28 @@ fn an_answer_is_its_service_status_0_then_its_fields() {
 }
 
 #[test]
+fn an_enumeration_answer_is_its_base_total_count_then_names_and_values() {
+    let answer = Response::Enumeration {
+        base: 2,
+        total: 3,
+        values: vec![("RED".to_owned(), -1), ("GREEN".to_owned(), 300)],
+    };
+    let mut expected = vec![0x36, 0, 2, 3, 0, 2, 3];
+    expected.extend_from_slice(b"RED");
+    expected.extend_from_slice(&(-1i64).to_le_bytes());
+    expected.push(5);
+    expected.extend_from_slice(b"GREEN");
+    expected.extend_from_slice(&300i64.to_le_bytes());
+    assert_eq!(answer.encode(), expected);
+    let request = Request::Enumeration {
+        path: "Main.light".to_owned(),
+        from: 1,
+    };
+    assert_eq!(request.encode()[..2], [0x36, 10]);
+    assert_eq!(Response::decode(&request, &expected), Ok(Ok(answer)));
+}
+
+#[test]
 fn a_read_answer_has_one_forced_bit_per_place_least_significant_first() {
     let places = vec![
         Place {

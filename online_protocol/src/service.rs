@@ -34,6 +34,8 @@ pub enum Service {
     Unforce = 0x34,
     /// `FORCES`: the forced places with their values.
     Forces = 0x35,
+    /// `ENUMERATION`: the values of an enumeration-typed variable's type by name.
+    Enumeration = 0x36,
     /// `TRACE_CONFIGURE`: a new trace and its first places.
     TraceConfigure = 0x40,
     /// `TRACE_ARM`: recording starts.
@@ -52,7 +54,7 @@ pub enum Service {
 
 impl Service {
     /// Every service, in the order of their numbers.
-    pub const ALL: [Service; 22] = [
+    pub const ALL: [Service; 23] = [
         Service::Identify,
         Service::Login,
         Service::DownloadBegin,
@@ -68,6 +70,7 @@ impl Service {
         Service::Force,
         Service::Unforce,
         Service::Forces,
+        Service::Enumeration,
         Service::TraceConfigure,
         Service::TraceArm,
         Service::TraceStatus,

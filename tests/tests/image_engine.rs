@@ -1,7 +1,7 @@
 //! Images the compiler writes, and mutations of them with a correct hash, never make decoding
 //! or `runtime::engine::Engine::new` panic, and an image that loads runs a cycle without a
-//! panic. The fuzz target `program_image/fuzz` does the same at length; its crash inputs are
-//! kept in `program_image/tests/fuzz_regressions/` and loaded here.
+//! panic. The fuzz target `program_image/fuzz` does the same at length; its crash inputs and
+//! hand-made hostile images are kept in `program_image/tests/fuzz_regressions/` and loaded here.
 
 use std::path::Path;
 use std::sync::OnceLock;
@@ -163,16 +163,122 @@ fn the_seed_programs_load_and_run() {
     }
 }
 
+/// The folder of saved fuzz inputs: crashes the fuzz target found and hand-made hostile images
+/// (its README says what each file is).
+fn regression_dir() -> std::path::PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../program_image/tests/fuzz_regressions")
+}
+
+/// How a saved input is given to the decoder.
+#[derive(Clone, Copy, Debug)]
+enum Form {
+    /// The file's bytes as they are: a whole image with its trailer.
+    AsStored,
+    /// The file's bytes with their correct SHA-256 appended, as the fuzz target does.
+    WithHash,
+}
+
+/// The hand-made hostile inputs of the folder, the form they are meant to be decoded in, and
+/// words of the error they must be refused with. Checking the error shows that each one still
+/// reaches the check it was made for, rather than being refused earlier for another reason.
+const HOSTILE_INPUTS: [(&str, Form, &str); 13] = [
+    ("empty.img", Form::WithHash, "the image is truncated"),
+    ("header-only.img", Form::WithHash, "the image is truncated"),
+    (
+        "truncated-in-a-section.img",
+        Form::WithHash,
+        "is truncated: it says",
+    ),
+    ("wrong-version.img", Form::AsStored, "format version 2"),
+    (
+        "unknown-header-flags.img",
+        Form::AsStored,
+        "unknown flags 0x8000",
+    ),
+    ("bad-hash.img", Form::AsStored, "SHA-256 does not match"),
+    (
+        "huge-section-length.img",
+        Form::WithHash,
+        "section 1 is truncated: it says 4294967295 bytes",
+    ),
+    (
+        "huge-section-count.img",
+        Form::WithHash,
+        "the image is truncated",
+    ),
+    (
+        "huge-vector-length.img",
+        Form::WithHash,
+        "section 'types' is malformed",
+    ),
+    (
+        "huge-symbol-count.img",
+        Form::WithHash,
+        "section 'symbols' is malformed",
+    ),
+    (
+        "sections-out-of-order.img",
+        Form::WithHash,
+        "section 1 is out of order",
+    ),
+    (
+        "unknown-critical-section.img",
+        Form::WithHash,
+        "needs section 99",
+    ),
+    (
+        "trailing-bytes.img",
+        Form::WithHash,
+        "3 unexpected bytes after the last section",
+    ),
+];
+
 #[test]
 fn the_saved_fuzz_inputs_load_without_a_panic() {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../program_image/tests/fuzz_regressions");
-    let Ok(entries) = std::fs::read_dir(&dir) else {
-        return;
-    };
-    for entry in entries {
+    let dir = regression_dir();
+    let readme = std::fs::read_to_string(dir.join("README.md"))
+        .unwrap_or_else(|error| panic!("{}: {error}", dir.join("README.md").display()));
+    let mut loaded = 0;
+    for entry in
+        std::fs::read_dir(&dir).unwrap_or_else(|error| panic!("{}: {error}", dir.display()))
+    {
         let path = entry.unwrap().path();
         if path.extension().is_some_and(|e| e == "img") {
-            load_and_run(&std::fs::read(&path).unwrap());
+            let name = path.file_name().unwrap().to_string_lossy().into_owned();
+            assert!(
+                readme.contains(&format!("`{name}`")),
+                "{name} is not described in the folder's README"
+            );
+            let content = std::fs::read(&path).unwrap();
+            // The fuzz target decodes its input as it is, then with its hash appended.
+            let _ = ProgramImage::decode(&content);
+            load_and_run(&content);
+            loaded += 1;
+        }
+    }
+    assert!(
+        loaded >= HOSTILE_INPUTS.len(),
+        "only {loaded} inputs in {}",
+        dir.display()
+    );
+}
+
+#[test]
+fn each_hostile_input_is_refused_by_the_check_it_was_made_for() {
+    for (name, form, words) in HOSTILE_INPUTS {
+        let path = regression_dir().join(name);
+        let mut bytes =
+            std::fs::read(&path).unwrap_or_else(|error| panic!("{}: {error}", path.display()));
+        if let Form::WithHash = form {
+            let hash = Sha256::digest(&bytes);
+            bytes.extend_from_slice(&hash);
+        }
+        match ProgramImage::decode(&bytes) {
+            Ok(_) => panic!("{name} ({form:?}) decodes"),
+            Err(error) => assert!(
+                error.to_string().contains(words),
+                "{name} ({form:?}) is refused with \"{error}\", not with \"{words}\""
+            ),
         }
     }
 }

@@ -8,9 +8,9 @@ use std::time::{Duration, Instant};
 use online_protocol::{
     CHUNK_BYTES, DecodeError, FUNCTION_CODE, Fault, Identity, MAX_COUNT, MAX_FAULT_TEXT_BYTES,
     MAX_PAYLOAD_BYTES, MAX_SAMPLE_VALUE_BYTES, MAX_TEXT_BYTES, PLACE_BYTES, PROTOCOL_VERSION,
-    Place, Refusal, Request, Resolved, Response, SAMPLE_HEADER_BYTES, Snapshot, Status, TYPE_OTHER,
-    TYPE_STRING, TYPE_WSTRING, TargetState, TaskInfo, TraceConfig, TraceSample, TraceStatus,
-    TriggerKind, cut,
+    Place, Refusal, Request, Resolved, Response, SAMPLE_HEADER_BYTES, Snapshot, Status, TYPE_ENUM,
+    TYPE_OTHER, TYPE_STRING, TYPE_WSTRING, TargetState, TaskInfo, TraceConfig, TraceSample,
+    TraceStatus, TriggerKind, cut,
 };
 use program_image::{Region, TypeDef};
 use sha2::{Digest, Sha256};
@@ -206,6 +206,9 @@ impl OnlineServices {
                 })
             }
             Request::Resolve { path } => self.between(move |between| resolve(between, &path)),
+            Request::Enumeration { path, from } => {
+                self.between(move |between| enumeration(between, &path, from))
+            }
             Request::Read { places } => self.between(move |between| read(between, &places)),
             Request::Write { values, .. } => self.between(move |between| {
                 let memory = between.memory.as_mut().ok_or_else(no_program)?;
@@ -493,6 +496,7 @@ fn resolve(between: &mut Between<'_>, path: &str) -> Result<Response, Refusal> {
         Some(TypeDef::Elementary(elementary)) => (*elementary as u8, 0),
         Some(TypeDef::String { length }) => (TYPE_STRING, *length),
         Some(TypeDef::WString { length }) => (TYPE_WSTRING, *length),
+        Some(TypeDef::Enum { .. }) => (TYPE_ENUM, 0),
         _ => (TYPE_OTHER, 0),
     };
     let size = match (place.bit, ty) {
@@ -517,6 +521,38 @@ fn resolve(between: &mut Between<'_>, path: &str) -> Result<Response, Refusal> {
         type_tag: tag,
         length: u16::try_from(length).unwrap_or(u16::MAX),
     }))
+}
+
+/// The values of the enumeration type of the variable at `path`, from the `from`-th on, as
+/// many as fit one response; a client asks again from where the answer ended.
+fn enumeration(between: &mut Between<'_>, path: &str, from: u16) -> Result<Response, Refusal> {
+    let memory = between.memory.as_ref().ok_or_else(no_program)?;
+    let image = memory.engine.image();
+    let place = value::resolve(image, path)
+        .map_err(|error| Refusal::new(Status::UnknownSymbol, error.to_string()))?;
+    let Some(TypeDef::Enum { base, values, .. }) = image.types.get(place.ty as usize) else {
+        return Err(Refusal::bad(format!(
+            "'{path}' is not of an enumeration type"
+        )));
+    };
+    // The base type, the total and the count come first; each value is its name and 8 bytes.
+    let mut used = 4;
+    let mut page = Vec::new();
+    for (name, number) in values.iter().skip(usize::from(from)) {
+        // Names are identifiers, far shorter than the cut, which keeps any one value fitting.
+        let name = cut(name, MAX_TEXT_BYTES).to_owned();
+        let bytes = 1 + name.len() + 8;
+        if used + bytes > MAX_PAYLOAD_BYTES || page.len() == MAX_COUNT {
+            break;
+        }
+        used += bytes;
+        page.push((name, *number));
+    }
+    Ok(Response::Enumeration {
+        base: *base as u8,
+        total: u16::try_from(values.len()).unwrap_or(u16::MAX),
+        values: page,
+    })
 }
 
 fn read(between: &mut Between<'_>, places: &[Place]) -> Result<Response, Refusal> {

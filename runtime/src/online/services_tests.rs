@@ -23,6 +23,11 @@ fn ask(services: &OnlineServices, request: &Request) -> (u8, Vec<u8>) {
     (body[1], body[2..].to_vec())
 }
 
+/// The decoded answer to `request`.
+fn answer(services: &OnlineServices, request: &Request) -> online_protocol::Answer {
+    Response::decode(request, &services.respond(&request.encode()).unwrap()).unwrap()
+}
+
 #[test]
 fn changing_services_need_a_token_from_the_password_and_reading_ones_do_not() {
     let services = services(Some("secret"), true);
@@ -181,4 +186,74 @@ proptest! {
         prop_assert!(body.len() <= MAX_PAYLOAD_BYTES + 2);
         prop_assert_eq!(body[0], request[0]);
     }
+}
+
+#[test]
+fn an_enumeration_resolves_as_one_and_lists_its_values_page_by_page() {
+    let mut with_enum = image(&[TestTask::cyclic(10_000_000, 1)], &[]);
+    let values: Vec<(String, i64)> = (0..40)
+        .map(|index| (format!("VALUE_NUMBER_{index:02}"), index * 3 - 50))
+        .collect();
+    with_enum.types.push(TypeDef::Enum {
+        name: "Many".to_owned(),
+        base: program_image::Elementary::Int,
+        values: values.clone(),
+    });
+    with_enum.symbols.push(program_image::Symbol {
+        path: "Choice".to_owned(),
+        ty: (with_enum.types.len() - 1) as u32,
+        region: Region::Memory,
+        offset: 0,
+        bit: None,
+        flags: program_image::SymbolFlags(program_image::SymbolFlags::GLOBAL),
+    });
+    let areas = Arc::new(Mutex::new(LocatedAreas::default()));
+    let scheduler = Scheduler::spawn(areas, SchedulerOptions::default()).unwrap();
+    scheduler.load(with_enum).unwrap();
+    let services = OnlineServices::new(Arc::new(scheduler), None);
+
+    let resolve = Request::Resolve {
+        path: "Choice".to_owned(),
+    };
+    match answer(&services, &resolve) {
+        Ok(Response::Resolve(resolved)) => assert_eq!(resolved.type_tag, TYPE_ENUM),
+        other => panic!("{other:?}"),
+    }
+    // The values come in pages that each fit a response; asking from where one ended gives
+    // the next, and together they are the type's values in order.
+    let mut listed = Vec::new();
+    let mut pages = 0;
+    while listed.len() < values.len() {
+        let request = Request::Enumeration {
+            path: "Choice".to_owned(),
+            from: listed.len() as u16,
+        };
+        assert!(ask(&services, &request).1.len() <= MAX_PAYLOAD_BYTES);
+        match answer(&services, &request) {
+            Ok(Response::Enumeration {
+                base,
+                total,
+                values: page,
+            }) => {
+                assert_eq!((base, total), (program_image::Elementary::Int as u8, 40));
+                assert!(!page.is_empty());
+                listed.extend(page);
+            }
+            other => panic!("{other:?}"),
+        }
+        pages += 1;
+    }
+    assert_eq!(listed, values);
+    assert!(pages > 1, "40 values take more than one response");
+
+    let not_an_enum = Request::Enumeration {
+        path: "Trigger".to_owned(),
+        from: 0,
+    };
+    assert_eq!(ask(&services, &not_an_enum).0, 2);
+    let unknown = Request::Enumeration {
+        path: "Nothing".to_owned(),
+        from: 0,
+    };
+    assert_eq!(ask(&services, &unknown).0, 6);
 }
