@@ -9,6 +9,7 @@
 //! the TCP server with its own small MBAP framing, so that a malformed frame is answered with an
 //! exception or closes its connection and nothing else.
 
+mod connections;
 mod exception;
 mod frame;
 mod map;
@@ -24,4 +25,7 @@ pub use pdu::{
     MAX_PDU_BYTES, MAX_READ_BITS, MAX_READ_REGISTERS, MAX_READ_WRITE_REGISTERS, MAX_WRITE_BITS,
     MAX_WRITE_REGISTERS, handle_pdu, is_standard_function,
 };
-pub use server::{ConnectionClosed, CustomFunctions, ServerOptions, current_connection, serve};
+pub use server::{
+    ConnectionClosed, CustomFunctions, DEFAULT_FRAME_TIMEOUT, DEFAULT_IDLE_TIMEOUT, ServerOptions,
+    current_connection, serve,
+};
