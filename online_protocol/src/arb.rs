@@ -87,7 +87,7 @@ fn trace_config() -> impl Strategy<Value = TraceConfig> {
 
 /// Any request.
 pub fn request() -> impl Strategy<Value = Request> {
-    let token = any::<u32>;
+    let token = any::<u128>;
     let arms: Vec<BoxedStrategy<Request>> = vec![
         any::<u16>()
             .prop_map(|protocol| Request::Identify { protocol })
@@ -164,7 +164,9 @@ pub fn request() -> impl Strategy<Value = Request> {
 /// A request of `service`, for the answers that need nothing from their request.
 pub fn request_of(service: Service) -> Request {
     match service {
-        Service::Identify => Request::Identify { protocol: 1 },
+        Service::Identify => Request::Identify {
+            protocol: crate::PROTOCOL_VERSION,
+        },
         Service::Login => Request::Login {
             password: String::new(),
         },
@@ -324,7 +326,7 @@ pub fn response() -> impl Strategy<Value = (Request, Response)> {
                 },
             )
             .boxed(),
-        any::<u32>()
+        any::<u128>()
             .prop_map(|token| Response::Login { token })
             .boxed(),
         (any::<u16>(), any::<u16>())

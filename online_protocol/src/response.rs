@@ -26,7 +26,7 @@ pub enum Response {
     /// `LOGIN`: the token for changing services.
     Login {
         /// Random and not 0; valid until the runtime restarts.
-        token: u32,
+        token: u128,
     },
     /// `DOWNLOAD_BEGIN`: the transfer begun.
     DownloadBegin {
@@ -289,7 +289,7 @@ fn decode_answer(
             password_required: r.u8("password required")? != 0,
         }),
         Service::Login => Response::Login {
-            token: r.u32("token")?,
+            token: r.u128("token")?,
         },
         Service::DownloadBegin => Response::DownloadBegin {
             transfer: r.u16("transfer")?,

@@ -82,7 +82,7 @@ impl Service {
         self as u8
     }
 
-    /// The service with `number`, if protocol version 1 has one.
+    /// The service with `number`, if protocol version 2 has one.
     pub fn from_number(number: u8) -> Option<Self> {
         Self::ALL
             .into_iter()

@@ -548,7 +548,13 @@ async fn with_a_password_the_binary_stops_only_for_a_logged_in_client() {
     );
     runtime.wait_for_message("running");
     let mut client = connect(runtime.address).await;
-    let (status, identity) = online(&mut client, &Request::Identify { protocol: 1 }).await;
+    let (status, identity) = online(
+        &mut client,
+        &Request::Identify {
+            protocol: online_protocol::PROTOCOL_VERSION,
+        },
+    )
+    .await;
     assert_eq!(status, 0);
     assert_eq!(identity.last(), Some(&1), "a password is required");
     assert_eq!(online(&mut client, &Request::Stop { token: 0 }).await.0, 3);
@@ -557,7 +563,7 @@ async fn with_a_password_the_binary_stops_only_for_a_logged_in_client() {
     };
     let (status, token) = online(&mut client, &login).await;
     assert_eq!(status, 0);
-    let token = u32::from_le_bytes(token.try_into().unwrap());
+    let token = u128::from_le_bytes(token.try_into().unwrap());
     assert_eq!(
         online(&mut client, &Request::Stop { token }).await,
         (0, vec![1])

@@ -27,5 +27,5 @@ pub use pdu::{
 };
 pub use server::{
     ConnectionClosed, CustomFunctions, DEFAULT_FRAME_TIMEOUT, DEFAULT_IDLE_TIMEOUT, ServerOptions,
-    current_connection, serve,
+    current_connection, delay_answer, serve,
 };

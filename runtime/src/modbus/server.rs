@@ -29,6 +29,18 @@ pub type ConnectionClosed = Arc<dyn Fn(u64) + Send + Sync>;
 tokio::task_local! {
     /// The number of the connection whose request is being served.
     static CONNECTION: u64;
+    /// How long the connection being served waits before it answers (see [`delay_answer`]).
+    static ANSWER_DELAY: std::cell::Cell<Duration>;
+}
+
+/// Makes the connection whose request a [`CustomFunctions`] hook is serving wait `delay` before
+/// it sends the answer (and so before it reads its next request), without holding up any other
+/// connection; outside a server it does nothing.
+///
+/// The online services delay the answer to a wrong password this way, so that one connection
+/// guesses slowly while everyone else logs in at once.
+pub fn delay_answer(delay: Duration) {
+    let _ = ANSWER_DELAY.try_with(|answer_delay| answer_delay.set(answer_delay.get().max(delay)));
 }
 
 /// The number of the connection whose request a [`CustomFunctions`] hook is serving (unique
@@ -242,7 +254,14 @@ async fn serve_connection<Stream: AsyncRead + AsyncWrite + Unpin>(
         .await
         .map_err(|_elapsed| io::Error::new(io::ErrorKind::TimedOut, "slow frame"))??;
         touch();
-        let response = responder.respond(&request[..header.pdu_bytes]);
+        let (response, delay) =
+            ANSWER_DELAY.sync_scope(std::cell::Cell::new(Duration::ZERO), || {
+                let response = responder.respond(&request[..header.pdu_bytes]);
+                (response, ANSWER_DELAY.with(std::cell::Cell::get))
+            });
+        if !delay.is_zero() {
+            tokio::time::sleep(delay).await;
+        }
         let frame = header.response_frame(&response);
         // A peer that does not take its responses would hold the connection forever.
         timeout(timeouts.frame, stream.write_all(&frame))

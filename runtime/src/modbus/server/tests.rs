@@ -96,12 +96,23 @@ fn serve_pipe() -> (
     tokio::task::JoinHandle<io::Result<()>>,
     Arc<std::sync::atomic::AtomicUsize>,
 ) {
+    serve_pipe_with(None)
+}
+
+/// [`serve_pipe`] with the hook `custom`.
+fn serve_pipe_with(
+    custom: Option<CustomFunctions>,
+) -> (
+    tokio::io::DuplexStream,
+    tokio::task::JoinHandle<io::Result<()>>,
+    Arc<std::sync::atomic::AtomicUsize>,
+) {
     use std::sync::atomic::{AtomicUsize, Ordering};
     let (client, mut server) = tokio::io::duplex(1024);
     let requests = Arc::new(AtomicUsize::new(0));
     let counted = Arc::clone(&requests);
     let task = tokio::spawn(async move {
-        let responder = responder(None);
+        let responder = responder(custom);
         let touch = || {
             counted.fetch_add(1, Ordering::SeqCst);
         };
@@ -162,4 +173,35 @@ async fn a_peer_closing_between_frames_ends_its_connection_cleanly() {
     let (client, task, _requests) = serve_pipe();
     drop(client);
     assert!(task.await.unwrap().is_ok());
+}
+
+#[tokio::test(start_paused = true)]
+async fn a_delayed_answer_holds_up_its_own_connection_only() {
+    let hook: CustomFunctions = Arc::new(|function, _data| {
+        if function == 0x44 {
+            delay_answer(Duration::from_millis(500));
+        }
+        Ok(vec![7])
+    });
+    let (mut slow, _slow_task, _) = serve_pipe_with(Some(Arc::clone(&hook)));
+    let (mut quick, _quick_task, _) = serve_pipe_with(Some(hook));
+    let start = Instant::now();
+    slow.write_all(&[0, 1, 0, 0, 0, 2, 1, 0x44]).await.unwrap();
+    quick.write_all(&[0, 2, 0, 0, 0, 2, 1, 0x45]).await.unwrap();
+    let mut answer = [0; 9];
+    quick.read_exact(&mut answer).await.unwrap();
+    assert_eq!(answer, [0, 2, 0, 0, 0, 3, 1, 0x45, 7]);
+    assert_eq!(
+        start.elapsed(),
+        Duration::ZERO,
+        "the other connection waited"
+    );
+    slow.read_exact(&mut answer).await.unwrap();
+    assert_eq!(answer, [0, 1, 0, 0, 0, 3, 1, 0x44, 7]);
+    assert!(start.elapsed() >= Duration::from_millis(500));
+    // The delay was for that answer only.
+    let again = Instant::now();
+    slow.write_all(&[0, 3, 0, 0, 0, 2, 1, 0x45]).await.unwrap();
+    slow.read_exact(&mut answer).await.unwrap();
+    assert_eq!(again.elapsed(), Duration::ZERO);
 }
