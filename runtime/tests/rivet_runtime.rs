@@ -1,6 +1,6 @@
 //! The `rivet-runtime` binary as a process: it runs an image, serves it over Modbus TCP to
 //! tokio-modbus, mbpoll and pymodbus, keeps a RETAIN variable across a restart, refuses a
-//! damaged image while it goes on serving, and with `--password` lets only a logged-in client
+//! damaged image while it goes on serving, and with `--password-file` lets only a logged-in client
 //! change the target over the online services.
 //!
 //! The image is built by hand from `program_image` types (the runtime may not use the compiler;
@@ -535,16 +535,41 @@ async fn online(client: &mut Context, request: &online_protocol::Request) -> (u8
     (body[1], body[2..].to_vec())
 }
 
+#[test]
+fn a_password_on_the_command_line_is_refused_saying_where_it_goes() {
+    let dir = tempfile::tempdir().unwrap();
+    let output = Command::new(env!("CARGO_BIN_EXE_rivet-runtime"))
+        .args([
+            "--listen",
+            "127.0.0.1:0",
+            "--password",
+            "swordfish",
+            "--data-dir",
+        ])
+        .arg(dir.path())
+        .env_remove("RIVET_PASSWORD")
+        .output()
+        .unwrap();
+    assert!(!output.status.success());
+    let said = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        said.contains("--password-file") && said.contains("RIVET_PASSWORD"),
+        "{said}"
+    );
+}
+
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn with_a_password_the_binary_stops_only_for_a_logged_in_client() {
     use online_protocol::Request;
 
     let dir = tempfile::tempdir().unwrap();
     let image = write_image(dir.path(), &image().encode());
+    let password_file = dir.path().join("password");
+    std::fs::write(&password_file, "swordfish\n").unwrap();
     let mut runtime = Runtime::start(
         &dir.path().join("data"),
         Some(&image),
-        &["--password", "swordfish"],
+        &["--password-file", password_file.to_str().unwrap()],
     );
     runtime.wait_for_message("running");
     let mut client = connect(runtime.address).await;

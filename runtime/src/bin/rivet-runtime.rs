@@ -19,7 +19,7 @@ use clap::Parser;
 use program_image::ProgramImage;
 use runtime::areas::LocatedAreas;
 use runtime::modbus::{MapSlot, ModbusMap, ServerOptions, serve};
-use runtime::online::OnlineServices;
+use runtime::online::{OnlineServices, PASSWORD_VARIABLE, read_password};
 use runtime::scheduler::{Scheduler, SchedulerOptions};
 use tokio::net::TcpListener;
 
@@ -39,9 +39,14 @@ struct Arguments {
     /// Load the image but do not start its tasks.
     #[arg(long)]
     stopped: bool,
-    /// The password the online services that change the target require (download, start,
-    /// stop, reset, write, force, trace); without one, every client may change it.
+    /// A file whose first line is the password the online services that change the target
+    /// require (download, start, stop, reset, write, force, trace); it may also be given in
+    /// the environment variable RIVET_PASSWORD. Without one, every client may change it.
     #[arg(long)]
+    password_file: Option<PathBuf>,
+    /// No longer accepted (visible in the process list): refused with a message saying where
+    /// the password goes now.
+    #[arg(long, hide = true)]
     password: Option<String>,
 }
 
@@ -58,6 +63,11 @@ fn main() -> anyhow::Result<()> {
 }
 
 async fn run(arguments: Arguments) -> anyhow::Result<()> {
+    let password = read_password(
+        arguments.password.as_deref(),
+        arguments.password_file.as_deref(),
+        std::env::var_os(PASSWORD_VARIABLE),
+    )?;
     std::fs::create_dir_all(&arguments.data_dir).with_context(|| {
         format!(
             "cannot create the data directory {}",
@@ -98,10 +108,8 @@ async fn run(arguments: Arguments) -> anyhow::Result<()> {
 
     // A download replaces the map with the new image's.
     let map = MapSlot::new(map);
-    let services = Arc::new(
-        OnlineServices::new(Arc::clone(&scheduler), arguments.password.clone())
-            .with_map(Arc::clone(&map)),
-    );
+    let services =
+        Arc::new(OnlineServices::new(Arc::clone(&scheduler), password).with_map(Arc::clone(&map)));
     let server_options = ServerOptions {
         custom: Some(services.handler()),
         closed: Some(services.closed_handler()),
