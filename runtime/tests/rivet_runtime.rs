@@ -556,6 +556,20 @@ fn a_password_on_the_command_line_is_refused_saying_where_it_goes() {
         said.contains("--password-file") && said.contains("RIVET_PASSWORD"),
         "{said}"
     );
+    let output = Command::new(env!("CARGO_BIN_EXE_rivet-runtime"))
+        .args([
+            "--listen",
+            "127.0.0.1:0",
+            "--modbus-writes",
+            "inputs:0",
+            "--data-dir",
+        ])
+        .arg(dir.path())
+        .output()
+        .unwrap();
+    assert!(!output.status.success());
+    let said = String::from_utf8_lossy(&output.stderr);
+    assert!(said.contains("`coils` or `holding`"), "{said}");
 }
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
@@ -583,6 +597,13 @@ async fn with_a_password_the_binary_stops_only_for_a_logged_in_client() {
     assert_eq!(status, 0);
     assert_eq!(identity.last(), Some(&1), "a password is required");
     assert_eq!(online(&mut client, &Request::Stop { token: 0 }).await.0, 3);
+    // Standard writes would bypass the password: by default they are refused, with
+    // exception 1 wherever they write, while reads go on.
+    for register in [1, 9000] {
+        let refused = client.write_single_register(register, 7).await.unwrap();
+        assert_eq!(refused, Err(tokio_modbus::ExceptionCode::IllegalFunction));
+    }
+    client.read_holding_registers(1, 1).await.unwrap().unwrap();
     let login = Request::Login {
         password: "swordfish".to_owned(),
     };

@@ -18,7 +18,7 @@ use anyhow::Context;
 use clap::Parser;
 use program_image::ProgramImage;
 use runtime::areas::LocatedAreas;
-use runtime::modbus::{MapSlot, ModbusMap, ServerOptions, serve};
+use runtime::modbus::{MapSlot, ModbusMap, ServerOptions, WritePolicy, serve};
 use runtime::online::{OnlineServices, PASSWORD_VARIABLE, read_password};
 use runtime::scheduler::{Scheduler, SchedulerOptions};
 use tokio::net::TcpListener;
@@ -44,6 +44,12 @@ struct Arguments {
     /// the environment variable RIVET_PASSWORD. Without one, every client may change it.
     #[arg(long)]
     password_file: Option<PathBuf>,
+    /// What the standard Modbus function codes (5, 6, 15, 16, 23) may write: `all`, `none`, or
+    /// ranges such as `coils:0-15,holding:1024-1100`; a refused write gets exception 1. The
+    /// default is `none` with a password (only a logged-in client changes the target) and
+    /// `all` without one.
+    #[arg(long, value_name = "POLICY")]
+    modbus_writes: Option<WritePolicy>,
     /// No longer accepted (visible in the process list): refused with a message saying where
     /// the password goes now.
     #[arg(long, hide = true)]
@@ -68,6 +74,12 @@ async fn run(arguments: Arguments) -> anyhow::Result<()> {
         arguments.password_file.as_deref(),
         std::env::var_os(PASSWORD_VARIABLE),
     )?;
+    // With a password, standard writes would bypass it unless the operator allows them.
+    let writes = match (&arguments.modbus_writes, &password) {
+        (Some(writes), _) => writes.clone(),
+        (None, Some(_)) => WritePolicy::None,
+        (None, None) => WritePolicy::All,
+    };
     std::fs::create_dir_all(&arguments.data_dir).with_context(|| {
         format!(
             "cannot create the data directory {}",
@@ -111,6 +123,7 @@ async fn run(arguments: Arguments) -> anyhow::Result<()> {
     let services =
         Arc::new(OnlineServices::new(Arc::clone(&scheduler), password).with_map(Arc::clone(&map)));
     let server_options = ServerOptions {
+        writes,
         custom: Some(services.handler()),
         closed: Some(services.closed_handler()),
         ..ServerOptions::default()

@@ -16,6 +16,7 @@ mod map;
 mod map_slot;
 mod pdu;
 mod server;
+mod write_policy;
 
 pub use exception::ExceptionCode;
 pub use frame::{FrameError, HEADER_BYTES, MbapHeader};
@@ -28,4 +29,7 @@ pub use pdu::{
 pub use server::{
     ConnectionClosed, CustomFunctions, DEFAULT_FRAME_TIMEOUT, DEFAULT_IDLE_TIMEOUT, ServerOptions,
     current_connection, delay_answer, serve,
+};
+pub use write_policy::{
+    REFUSED_WRITE, WritableRange, WritableTable, WritePolicy, WritePolicyError,
 };

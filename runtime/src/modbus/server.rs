@@ -15,6 +15,7 @@ use crate::modbus::exception::ExceptionCode;
 use crate::modbus::frame::{HEADER_BYTES, MbapHeader};
 use crate::modbus::map_slot::MapSlot;
 use crate::modbus::pdu::{MAX_PDU_BYTES, handle_pdu, is_standard_function};
+use crate::modbus::write_policy::{REFUSED_WRITE, WritePolicy};
 
 /// A handler of the function codes the areas do not serve (Rivet's online services).
 ///
@@ -60,6 +61,8 @@ pub struct ServerOptions {
     /// How long a request frame may take from its first byte to its last, and a response to
     /// be taken by the peer, before the connection is closed.
     pub frame_timeout: Duration,
+    /// What the standard function codes may write; a refused write gets [`REFUSED_WRITE`].
+    pub writes: WritePolicy,
     /// The handler of the non-standard function codes; without one they get exception 1.
     pub custom: Option<CustomFunctions>,
     /// Told when a connection has closed, so that state kept for it can go.
@@ -87,6 +90,7 @@ pub async fn serve(
         areas,
         map,
         custom: options.custom,
+        writes: options.writes,
     });
     let open = Arc::new(Connections::default());
     let timeouts = Timeouts {
@@ -141,13 +145,14 @@ pub async fn serve(
 }
 
 impl Default for ServerOptions {
-    /// 64 clients, closed after 60 s without a request or 5 s into a frame; no custom
-    /// function codes.
+    /// 64 clients, closed after 60 s without a request or 5 s into a frame; every write
+    /// served; no custom function codes.
     fn default() -> Self {
         Self {
             max_clients: 64,
             idle_timeout: DEFAULT_IDLE_TIMEOUT,
             frame_timeout: DEFAULT_FRAME_TIMEOUT,
+            writes: WritePolicy::All,
             custom: None,
             closed: None,
         }
@@ -160,6 +165,7 @@ impl std::fmt::Debug for ServerOptions {
             .field("max_clients", &self.max_clients)
             .field("idle_timeout", &self.idle_timeout)
             .field("frame_timeout", &self.frame_timeout)
+            .field("writes", &self.writes)
             .field("custom", &self.custom.as_ref().map(|_| "Fn(u8, &[u8])"))
             .field("closed", &self.closed.as_ref().map(|_| "Fn(u64)"))
             .finish()
@@ -191,6 +197,7 @@ struct Responder {
     areas: Arc<Mutex<LocatedAreas>>,
     map: Arc<MapSlot>,
     custom: Option<CustomFunctions>,
+    writes: WritePolicy,
 }
 
 impl Responder {
@@ -200,6 +207,9 @@ impl Responder {
             return ExceptionCode::IllegalFunction.response(0);
         };
         if is_standard_function(function) {
+            if !self.writes.allows(request) {
+                return REFUSED_WRITE.response(function);
+            }
             let map = self.map.get();
             return match self.areas.lock() {
                 Ok(mut areas) => handle_pdu(&mut areas, &map, request),

@@ -7,6 +7,7 @@ fn responder(custom: Option<CustomFunctions>) -> Responder {
         areas: Arc::new(Mutex::new(LocatedAreas::new(2, 2, 2))),
         map: MapSlot::new(ModbusMap::default()),
         custom,
+        writes: WritePolicy::All,
     }
 }
 
@@ -79,7 +80,7 @@ fn default_options_take_64_clients_and_no_hook() {
     };
     assert_eq!(
         format!("{with_hook:?}"),
-        r#"ServerOptions { max_clients: 64, idle_timeout: 60s, frame_timeout: 5s, custom: Some("Fn(u8, &[u8])"), closed: None }"#
+        r#"ServerOptions { max_clients: 64, idle_timeout: 60s, frame_timeout: 5s, writes: All, custom: Some("Fn(u8, &[u8])"), closed: None }"#
     );
 }
 
@@ -204,4 +205,24 @@ async fn a_delayed_answer_holds_up_its_own_connection_only() {
     slow.write_all(&[0, 3, 0, 0, 0, 2, 1, 0x45]).await.unwrap();
     slow.read_exact(&mut answer).await.unwrap();
     assert_eq!(again.elapsed(), Duration::ZERO);
+}
+
+#[test]
+fn a_refused_write_gets_the_same_exception_whatever_it_writes() {
+    let mut responder = responder(None);
+    responder.writes = "holding:0".parse().unwrap();
+    // Inside the range, the write is served.
+    assert_eq!(responder.respond(&[6, 0, 0, 0, 7]), [6, 0, 0, 0, 7]);
+    // Outside it, mapped or not, present or not, well-formed or not: exception 1 each time.
+    for write in [
+        &[6, 0, 1, 0, 7][..],
+        &[6, 0xFF, 0xFF, 0, 7],
+        &[5, 0, 0, 0x12, 0x34],
+        &[16, 0, 0, 0, 0, 0],
+        &[15],
+    ] {
+        assert_eq!(responder.respond(write), [write[0] | 0x80, 1], "{write:?}");
+    }
+    // Reads are not limited.
+    assert_eq!(responder.respond(&[3, 0, 0, 0, 1]), [3, 2, 0, 7]);
 }
