@@ -242,6 +242,18 @@ impl Client {
         }
     }
 
+    /// `LOGOUT`: the token of this connection ends; changing the target needs a new
+    /// connection with the password. Closing the connection ends it too.
+    pub async fn logout(&mut self) -> Result<(), OnlineError> {
+        match self.call(&Request::Logout).await? {
+            Response::Logout => {
+                self.token = 0;
+                Ok(())
+            }
+            other => Err(unexpected(&other)),
+        }
+    }
+
     /// `STOP`.
     pub async fn stop(&mut self) -> Result<TargetState, OnlineError> {
         match self.call(&Request::Stop { token: self.token }).await? {

@@ -95,6 +95,7 @@ pub fn request() -> impl Strategy<Value = Request> {
         text()
             .prop_map(|password| Request::Login { password })
             .boxed(),
+        Just(Request::Logout).boxed(),
         (token(), any::<u32>(), any::<[u8; 32]>())
             .prop_map(|(token, size, hash)| Request::DownloadBegin { token, size, hash })
             .boxed(),
@@ -167,6 +168,7 @@ pub fn request_of(service: Service) -> Request {
         Service::Identify => Request::Identify {
             protocol: crate::PROTOCOL_VERSION,
         },
+        Service::Logout => Request::Logout,
         Service::Login => Request::Login {
             password: String::new(),
         },
@@ -329,6 +331,7 @@ pub fn response() -> impl Strategy<Value = (Request, Response)> {
         any::<u128>()
             .prop_map(|token| Response::Login { token })
             .boxed(),
+        Just(Response::Logout).boxed(),
         (any::<u16>(), any::<u16>())
             .prop_map(|(transfer, chunk_size)| Response::DownloadBegin {
                 transfer,

@@ -80,6 +80,7 @@ pub enum Request {
     Login {
         password: String,
     },
+    Logout,
     DownloadBegin {
         token: u128,
         size: u32,
@@ -159,6 +160,7 @@ impl Request {
         match self {
             Identify { .. } => Service::Identify,
             Login { .. } => Service::Login,
+            Logout => Service::Logout,
             DownloadBegin { .. } => Service::DownloadBegin,
             DownloadChunk { .. } => Service::DownloadChunk,
             DownloadCommit { .. } => Service::DownloadCommit,
@@ -201,6 +203,7 @@ impl Request {
             | TraceArm { token } => Some(*token),
             Identify { .. }
             | Login { .. }
+            | Logout
             | Resolve { .. }
             | Read { .. }
             | Forces { .. }
@@ -223,6 +226,7 @@ impl Request {
         match self {
             Identify { protocol } => out.extend_from_slice(&protocol.to_le_bytes()),
             Login { password } => put_str8(&mut out, password),
+            Logout => {}
             DownloadBegin { size, hash, .. } => {
                 out.extend_from_slice(&size.to_le_bytes());
                 out.extend_from_slice(hash);
@@ -284,6 +288,7 @@ impl Request {
             Service::Login => Request::Login {
                 password: r.str8("password")?,
             },
+            Service::Logout => Request::Logout,
             Service::DownloadBegin => Request::DownloadBegin {
                 token: r.u128("token")?,
                 size: r.u32("size")?,

@@ -22,6 +22,7 @@ fn every_request() -> Vec<Request> {
         Request::Login {
             password: "sésame".to_owned(),
         },
+        Request::Logout,
         Request::DownloadBegin {
             token: 7,
             size: 1000,
@@ -91,7 +92,7 @@ fn every_request() -> Vec<Request> {
 
 /// The `TRACE_CONFIGURE` of [`every_request`].
 fn configure() -> Vec<u8> {
-    every_request()[15].encode()
+    every_request()[16].encode()
 }
 
 #[test]

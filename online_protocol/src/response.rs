@@ -25,9 +25,12 @@ pub enum Response {
     Identify(Identity),
     /// `LOGIN`: the token for changing services.
     Login {
-        /// Random and not 0; valid until the runtime restarts.
+        /// Random and not 0; valid on the connection that logged in, until it logs in again,
+        /// logs out or closes.
         token: u128,
     },
+    /// `LOGOUT`: the connection's token has ended.
+    Logout,
     /// `DOWNLOAD_BEGIN`: the transfer begun.
     DownloadBegin {
         /// The transfer's number, which its chunks name.
@@ -119,6 +122,7 @@ impl Response {
         match self {
             Identify(_) => Service::Identify,
             Login { .. } => Service::Login,
+            Logout => Service::Logout,
             DownloadBegin { .. } => Service::DownloadBegin,
             DownloadChunk { .. } => Service::DownloadChunk,
             DownloadCommit { .. } => Service::DownloadCommit,
@@ -167,7 +171,7 @@ impl Response {
             }
             DownloadChunk { received } => out.extend_from_slice(&received.to_le_bytes()),
             DownloadCommit { retained } => out.push(u8::from(*retained)),
-            DownloadAbort | Write | Force | Unforce | TraceArm => {}
+            Logout | DownloadAbort | Write | Force | Unforce | TraceArm => {}
             Start { state } | Stop { state } | Reset { state } => out.push(*state as u8),
             Resolve(resolved) => {
                 put_place(&mut out, &resolved.place);
@@ -291,6 +295,7 @@ fn decode_answer(
         Service::Login => Response::Login {
             token: r.u128("token")?,
         },
+        Service::Logout => Response::Logout,
         Service::DownloadBegin => Response::DownloadBegin {
             transfer: r.u16("transfer")?,
             chunk_size: r.u16("chunk size")?,

@@ -8,6 +8,8 @@ pub enum Service {
     Identify = 0x01,
     /// `LOGIN`: a token for the password.
     Login = 0x02,
+    /// `LOGOUT`: the connection's token ends.
+    Logout = 0x03,
     /// `DOWNLOAD_BEGIN`: a new transfer of an image.
     DownloadBegin = 0x10,
     /// `DOWNLOAD_CHUNK`: some bytes of the image.
@@ -52,9 +54,10 @@ pub enum Service {
 
 impl Service {
     /// Every service, in the order of their numbers.
-    pub const ALL: [Service; 22] = [
+    pub const ALL: [Service; 23] = [
         Service::Identify,
         Service::Login,
+        Service::Logout,
         Service::DownloadBegin,
         Service::DownloadChunk,
         Service::DownloadCommit,

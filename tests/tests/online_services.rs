@@ -413,6 +413,11 @@ async fn with_a_password_only_a_logged_in_client_changes_the_target() {
     };
     assert_eq!(ask(&mut client, &write).await.0, 4);
     assert_eq!(done(&mut client, &Request::Stop { token }).await, [1]);
+    // After LOGOUT the token is refused, and the other client's is still good.
+    done(&mut client, &Request::Logout).await;
+    assert_eq!(ask(&mut client, &Request::Start { token }).await.0, 4);
+    let start = Request::Start { token: other_token };
+    assert_eq!(done(&mut other, &start).await, [2]);
 }
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]

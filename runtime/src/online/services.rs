@@ -158,6 +158,10 @@ impl OnlineServices {
         match request {
             Request::Identify { protocol } => self.identify(protocol),
             Request::Login { password } => self.login(connection, &password),
+            Request::Logout => {
+                lock(&self.tokens).remove(&connection);
+                Ok(Response::Logout)
+            }
             Request::DownloadBegin { size, hash, .. } => {
                 let mut last = lock(&self.last_transfer);
                 *last = last.wrapping_add(1).max(1);

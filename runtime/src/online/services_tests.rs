@@ -82,6 +82,10 @@ fn a_token_is_valid_only_on_the_connection_that_logged_in_and_until_it_closes() 
         0
     );
     let other = token_of(ask_from(&services, 2, &login_with("secret")));
+    // Logging out ends the token of that connection only.
+    let third = token_of(ask_from(&services, 3, &login_with("secret")));
+    assert_eq!(ask_from(&services, 3, &Request::Logout), (0, vec![]));
+    assert_eq!(ask_from(&services, 3, &Request::Stop { token: third }).0, 4);
     // When the connection closes (also after its idle timeout), its token ends.
     (services.closed_handler())(1);
     assert_eq!(
