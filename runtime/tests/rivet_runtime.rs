@@ -536,7 +536,7 @@ async fn online(client: &mut Context, request: &online_protocol::Request) -> (u8
 }
 
 #[test]
-fn a_password_on_the_command_line_is_refused_saying_where_it_goes() {
+fn a_password_on_the_command_line_and_bad_server_options_are_refused_saying_why() {
     let dir = tempfile::tempdir().unwrap();
     let output = Command::new(env!("CARGO_BIN_EXE_rivet-runtime"))
         .args([
@@ -570,6 +570,20 @@ fn a_password_on_the_command_line_is_refused_saying_where_it_goes() {
     assert!(!output.status.success());
     let said = String::from_utf8_lossy(&output.stderr);
     assert!(said.contains("`coils` or `holding`"), "{said}");
+    let output = Command::new(env!("CARGO_BIN_EXE_rivet-runtime"))
+        .args([
+            "--listen",
+            "127.0.0.1:0",
+            "--idle-timeout-seconds",
+            "0",
+            "--data-dir",
+        ])
+        .arg(dir.path())
+        .output()
+        .unwrap();
+    assert!(!output.status.success());
+    let said = String::from_utf8_lossy(&output.stderr);
+    assert!(said.contains("--idle-timeout-seconds"), "{said}");
 }
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]

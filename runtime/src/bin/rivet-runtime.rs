@@ -18,7 +18,10 @@ use anyhow::Context;
 use clap::Parser;
 use program_image::ProgramImage;
 use runtime::areas::LocatedAreas;
-use runtime::modbus::{MapSlot, ModbusMap, ServerOptions, WritePolicy, serve};
+use runtime::modbus::{
+    DEFAULT_FRAME_TIMEOUT, DEFAULT_IDLE_TIMEOUT, MapSlot, ModbusMap, ServerOptions, WritePolicy,
+    serve,
+};
 use runtime::online::{OnlineServices, PASSWORD_VARIABLE, read_password};
 use runtime::scheduler::{Scheduler, SchedulerOptions};
 use tokio::net::TcpListener;
@@ -50,6 +53,13 @@ struct Arguments {
     /// `all` without one.
     #[arg(long, value_name = "POLICY")]
     modbus_writes: Option<WritePolicy>,
+    /// Seconds a Modbus connection may stay silent between requests before it is closed.
+    #[arg(long, default_value_t = DEFAULT_IDLE_TIMEOUT.as_secs(), value_parser = clap::value_parser!(u64).range(1..))]
+    idle_timeout_seconds: u64,
+    /// Seconds a Modbus frame may take from its first byte to its last before the connection
+    /// is closed.
+    #[arg(long, default_value_t = DEFAULT_FRAME_TIMEOUT.as_secs(), value_parser = clap::value_parser!(u64).range(1..))]
+    frame_timeout_seconds: u64,
     /// No longer accepted (visible in the process list): refused with a message saying where
     /// the password goes now.
     #[arg(long, hide = true)]
@@ -124,6 +134,8 @@ async fn run(arguments: Arguments) -> anyhow::Result<()> {
         Arc::new(OnlineServices::new(Arc::clone(&scheduler), password).with_map(Arc::clone(&map)));
     let server_options = ServerOptions {
         writes,
+        idle_timeout: Duration::from_secs(arguments.idle_timeout_seconds),
+        frame_timeout: Duration::from_secs(arguments.frame_timeout_seconds),
         custom: Some(services.handler()),
         closed: Some(services.closed_handler()),
         ..ServerOptions::default()
