@@ -18,12 +18,27 @@ pub struct Target {
     /// The runtime's address.
     #[arg(long, default_value = "127.0.0.1:5020")]
     pub target: String,
-    /// The runtime's password, when it has one.
+    /// A file whose first line is the runtime's password, when it has one; the password may
+    /// also be given in the environment variable RIVET_PASSWORD.
     #[arg(long)]
+    pub password_file: Option<std::path::PathBuf>,
+    /// No longer accepted (visible in the process list): refused with a message saying where
+    /// the password goes now.
+    #[arg(long, hide = true)]
     pub password: Option<String>,
 }
 
 impl Target {
+    /// The password from `--password-file` or RIVET_PASSWORD, if either gives one.
+    fn password(&self) -> anyhow::Result<Option<String>> {
+        use runtime::online::{PASSWORD_VARIABLE, read_password};
+        Ok(read_password(
+            self.password.as_deref(),
+            self.password_file.as_deref(),
+            std::env::var_os(PASSWORD_VARIABLE),
+        )?)
+    }
+
     fn address(&self) -> anyhow::Result<SocketAddr> {
         use std::net::ToSocketAddrs as _;
         self.target
@@ -100,7 +115,8 @@ pub fn run(target: &Target, command: OnlineCommand) -> anyhow::Result<()> {
         .build()
         .context("cannot start the async runtime")?;
     runtime.block_on(async move {
-        let (mut client, identity) = Client::connect(address, target.password.as_deref()).await?;
+        let password = target.password()?;
+        let (mut client, identity) = Client::connect(address, password.as_deref()).await?;
         match command {
             OnlineCommand::Status => {
                 println!("{address}: rivet-runtime {}, {}", identity.runtime_version, identity.state.describe());

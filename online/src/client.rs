@@ -69,13 +69,13 @@ type PlaceValues = Vec<(Place, Vec<u8>)>;
 const READ_FIXED_BYTES: usize = 9;
 /// The bytes of a `WRITE`, `FORCE` or `UNFORCE` request before its places: the token (in the
 /// payload's limit) and the count.
-const VALUES_FIXED_BYTES: usize = 5;
+const VALUES_FIXED_BYTES: usize = TOKEN_BYTES + 1;
 
 /// A connection to one target.
 pub struct Client {
     address: SocketAddr,
     context: Context,
-    token: u32,
+    token: u128,
 }
 
 impl Client {
@@ -242,6 +242,18 @@ impl Client {
         }
     }
 
+    /// `LOGOUT`: the token of this connection ends; changing the target needs a new
+    /// connection with the password. Closing the connection ends it too.
+    pub async fn logout(&mut self) -> Result<(), OnlineError> {
+        match self.call(&Request::Logout).await? {
+            Response::Logout => {
+                self.token = 0;
+                Ok(())
+            }
+            other => Err(unexpected(&other)),
+        }
+    }
+
     /// `STOP`.
     pub async fn stop(&mut self) -> Result<TargetState, OnlineError> {
         match self.call(&Request::Stop { token: self.token }).await? {
@@ -327,7 +339,7 @@ impl Client {
     /// `WRITE` or `FORCE` of `values`, split over as many requests as they need.
     async fn place_values(
         &mut self,
-        request: fn(u32, PlaceValues) -> Request,
+        request: fn(u128, PlaceValues) -> Request,
         values: &[(Place, Vec<u8>)],
     ) -> Result<(), OnlineError> {
         let size =

@@ -87,7 +87,7 @@ fn trace_config() -> impl Strategy<Value = TraceConfig> {
 
 /// Any request.
 pub fn request() -> impl Strategy<Value = Request> {
-    let token = any::<u32>;
+    let token = any::<u128>;
     let arms: Vec<BoxedStrategy<Request>> = vec![
         any::<u16>()
             .prop_map(|protocol| Request::Identify { protocol })
@@ -95,6 +95,7 @@ pub fn request() -> impl Strategy<Value = Request> {
         text()
             .prop_map(|password| Request::Login { password })
             .boxed(),
+        Just(Request::Logout).boxed(),
         (token(), any::<u32>(), any::<[u8; 32]>())
             .prop_map(|(token, size, hash)| Request::DownloadBegin { token, size, hash })
             .boxed(),
@@ -167,7 +168,10 @@ pub fn request() -> impl Strategy<Value = Request> {
 /// A request of `service`, for the answers that need nothing from their request.
 pub fn request_of(service: Service) -> Request {
     match service {
-        Service::Identify => Request::Identify { protocol: 1 },
+        Service::Identify => Request::Identify {
+            protocol: crate::PROTOCOL_VERSION,
+        },
+        Service::Logout => Request::Logout,
         Service::Login => Request::Login {
             password: String::new(),
         },
@@ -331,9 +335,10 @@ pub fn response() -> impl Strategy<Value = (Request, Response)> {
                 },
             )
             .boxed(),
-        any::<u32>()
+        any::<u128>()
             .prop_map(|token| Response::Login { token })
             .boxed(),
+        Just(Response::Logout).boxed(),
         (any::<u16>(), any::<u16>())
             .prop_map(|(transfer, chunk_size)| Response::DownloadBegin {
                 transfer,

@@ -5,7 +5,7 @@
 pub const FUNCTION_CODE: u8 = 0x64;
 
 /// The protocol version both sides speak; `IDENTIFY` refuses any other.
-pub const PROTOCOL_VERSION: u16 = 1;
+pub const PROTOCOL_VERSION: u16 = 2;
 
 /// The most bytes of payload a request or response carries: a Modbus PDU is at most 253
 /// bytes, less the function code, the service and (in a response) the status.
@@ -28,7 +28,7 @@ pub const MAX_FAULT_TEXT_BYTES: usize = 48;
 pub const PLACE_BYTES: usize = 8;
 
 /// The bytes of a token, which every changing service carries first.
-pub const TOKEN_BYTES: usize = 4;
+pub const TOKEN_BYTES: usize = 16;
 
 /// The `bit` byte of a place that is not a single bit.
 pub const NO_BIT: u8 = 0xFF;
@@ -37,17 +37,17 @@ pub const NO_BIT: u8 = 0xFF;
 pub const MAX_BIT: u8 = 7;
 
 /// The bytes of a `DOWNLOAD_CHUNK` before its data: token, transfer and offset.
-pub const CHUNK_HEADER_BYTES: usize = 10;
+pub const CHUNK_HEADER_BYTES: usize = TOKEN_BYTES + 6;
 
 /// The chunk size the runtime offers in `DOWNLOAD_BEGIN`: what is left of a payload after a
 /// chunk's header, rounded down.
-pub const CHUNK_BYTES: u16 = 240;
+pub const CHUNK_BYTES: u16 = 224;
 
 /// The most places a `TRACE_CONFIGURE` frame holds; more are added with `TRACE_ADD`.
-pub const TRACE_CONFIGURE_PLACES: usize = 28;
+pub const TRACE_CONFIGURE_PLACES: usize = 27;
 
 /// The most places a `TRACE_ADD` frame holds.
-pub const TRACE_ADD_PLACES: usize = 30;
+pub const TRACE_ADD_PLACES: usize = 29;
 
 /// The bytes of a trace sample before its values: the cycle and the time.
 pub const SAMPLE_HEADER_BYTES: usize = 16;

@@ -1,5 +1,5 @@
 //! The requests, responses and status codes of Rivet's online protocol (`docs/protocol.md`,
-//! version 1) with their encoding, written once for both sides: the runtime decodes
+//! version 2) with their encoding, written once for both sides: the runtime decodes
 //! [`Request`]s and encodes [`Response`]s and [`Refusal`]s, the client does the opposite.
 //!
 //! Everything here is plain data and pure functions: no I/O, no threads. Decoding never

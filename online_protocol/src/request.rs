@@ -80,34 +80,35 @@ pub enum Request {
     Login {
         password: String,
     },
+    Logout,
     DownloadBegin {
-        token: u32,
+        token: u128,
         size: u32,
         hash: Hash,
     },
     DownloadChunk {
-        token: u32,
+        token: u128,
         transfer: u16,
         offset: u32,
         bytes: Vec<u8>,
     },
     DownloadCommit {
-        token: u32,
+        token: u128,
         transfer: u16,
         start: bool,
     },
     DownloadAbort {
-        token: u32,
+        token: u128,
         transfer: u16,
     },
     Start {
-        token: u32,
+        token: u128,
     },
     Stop {
-        token: u32,
+        token: u128,
     },
     Reset {
-        token: u32,
+        token: u128,
         kind: ResetKind,
     },
     Resolve {
@@ -121,33 +122,33 @@ pub enum Request {
         places: Vec<Place>,
     },
     Write {
-        token: u32,
+        token: u128,
         values: Vec<(Place, Vec<u8>)>,
     },
     Force {
-        token: u32,
+        token: u128,
         values: Vec<(Place, Vec<u8>)>,
     },
     Unforce {
-        token: u32,
+        token: u128,
         places: Vec<Place>,
     },
     Forces {
         from: u16,
     },
     TraceConfigure {
-        token: u32,
+        token: u128,
         config: TraceConfig,
     },
     TraceArm {
-        token: u32,
+        token: u128,
     },
     TraceStatus,
     TraceUpload {
         from: u32,
     },
     TraceAdd {
-        token: u32,
+        token: u128,
         places: Vec<Place>,
     },
     Tasks,
@@ -163,6 +164,7 @@ impl Request {
         match self {
             Identify { .. } => Service::Identify,
             Login { .. } => Service::Login,
+            Logout => Service::Logout,
             DownloadBegin { .. } => Service::DownloadBegin,
             DownloadChunk { .. } => Service::DownloadChunk,
             DownloadCommit { .. } => Service::DownloadCommit,
@@ -188,7 +190,7 @@ impl Request {
     }
 
     /// The token of a service that changes the target, `None` for a read-only one.
-    pub fn token(&self) -> Option<u32> {
+    pub fn token(&self) -> Option<u128> {
         use Request::*;
         match self {
             DownloadBegin { token, .. }
@@ -206,6 +208,7 @@ impl Request {
             | TraceArm { token } => Some(*token),
             Identify { .. }
             | Login { .. }
+            | Logout
             | Resolve { .. }
             | Enumeration { .. }
             | Read { .. }
@@ -229,6 +232,7 @@ impl Request {
         match self {
             Identify { protocol } => out.extend_from_slice(&protocol.to_le_bytes()),
             Login { password } => put_str8(&mut out, password),
+            Logout => {}
             DownloadBegin { size, hash, .. } => {
                 out.extend_from_slice(&size.to_le_bytes());
                 out.extend_from_slice(hash);
@@ -294,34 +298,35 @@ impl Request {
             Service::Login => Request::Login {
                 password: r.str8("password")?,
             },
+            Service::Logout => Request::Logout,
             Service::DownloadBegin => Request::DownloadBegin {
-                token: r.u32("token")?,
+                token: r.u128("token")?,
                 size: r.u32("size")?,
                 hash: r.hash("hash")?,
             },
             Service::DownloadChunk => Request::DownloadChunk {
-                token: r.u32("token")?,
+                token: r.u128("token")?,
                 transfer: r.u16("transfer")?,
                 offset: r.u32("offset")?,
                 bytes: r.rest().to_vec(),
             },
             Service::DownloadCommit => Request::DownloadCommit {
-                token: r.u32("token")?,
+                token: r.u128("token")?,
                 transfer: r.u16("transfer")?,
                 start: r.flag("start")?,
             },
             Service::DownloadAbort => Request::DownloadAbort {
-                token: r.u32("token")?,
+                token: r.u128("token")?,
                 transfer: r.u16("transfer")?,
             },
             Service::Start => Request::Start {
-                token: r.u32("token")?,
+                token: r.u128("token")?,
             },
             Service::Stop => Request::Stop {
-                token: r.u32("token")?,
+                token: r.u128("token")?,
             },
             Service::Reset => Request::Reset {
-                token: r.u32("token")?,
+                token: r.u128("token")?,
                 kind: r.choice("reset kind", &ResetKind::ALL, "0 to 2")?,
             },
             Service::Resolve => Request::Resolve {
@@ -335,33 +340,33 @@ impl Request {
                 places: r.places()?,
             },
             Service::Write => Request::Write {
-                token: r.u32("token")?,
+                token: r.u128("token")?,
                 values: r.values()?,
             },
             Service::Force => Request::Force {
-                token: r.u32("token")?,
+                token: r.u128("token")?,
                 values: r.values()?,
             },
             Service::Unforce => Request::Unforce {
-                token: r.u32("token")?,
+                token: r.u128("token")?,
                 places: r.places()?,
             },
             Service::Forces => Request::Forces {
                 from: r.u16("from")?,
             },
             Service::TraceConfigure => Request::TraceConfigure {
-                token: r.u32("token")?,
+                token: r.u128("token")?,
                 config: trace_config(&mut r)?,
             },
             Service::TraceArm => Request::TraceArm {
-                token: r.u32("token")?,
+                token: r.u128("token")?,
             },
             Service::TraceStatus => Request::TraceStatus,
             Service::TraceUpload => Request::TraceUpload {
                 from: r.u32("from")?,
             },
             Service::TraceAdd => Request::TraceAdd {
-                token: r.u32("token")?,
+                token: r.u128("token")?,
                 places: r.places()?,
             },
             Service::Tasks => Request::Tasks,

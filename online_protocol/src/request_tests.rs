@@ -16,10 +16,13 @@ fn every_request() -> Vec<Request> {
     let a = place(0, 16, None, 4);
     let b = place(2, 3, Some(5), 1);
     vec![
-        Request::Identify { protocol: 1 },
+        Request::Identify {
+            protocol: crate::PROTOCOL_VERSION,
+        },
         Request::Login {
             password: "sésame".to_owned(),
         },
+        Request::Logout,
         Request::DownloadBegin {
             token: 7,
             size: 1000,
@@ -93,7 +96,7 @@ fn every_request() -> Vec<Request> {
 
 /// The `TRACE_CONFIGURE` of [`every_request`].
 fn configure() -> Vec<u8> {
-    every_request()[15].encode()
+    every_request()[16].encode()
 }
 
 #[test]
@@ -122,7 +125,14 @@ fn a_request_is_its_service_number_then_its_fields_in_the_documented_order() {
         token: 0x0A0B_0C0D,
         kind: ResetKind::Cold,
     };
-    assert_eq!(reset.encode(), [0x22, 0x0D, 0x0C, 0x0B, 0x0A, 1]);
+    let mut expected = vec![0x22, 0x0D, 0x0C, 0x0B, 0x0A];
+    expected.extend([0; 12]);
+    expected.push(1);
+    assert_eq!(
+        reset.encode(),
+        expected,
+        "a token is 16 bytes, little-endian"
+    );
     let whole = place(0, 0, None, 4);
     let mut bytes = Vec::new();
     whole.encode(&mut bytes);
@@ -161,7 +171,7 @@ fn an_unknown_service_and_fields_out_of_range_are_refused() {
         Err(Status::UnknownService)
     );
     let mut configure = configure();
-    configure[13] = 9; // The trigger kind.
+    configure[25] = 9; // The trigger kind.
     assert_eq!(
         Request::decode(&configure).map_err(|e| e.status()),
         Err(Status::BadRequest)
@@ -186,7 +196,7 @@ fn a_truncated_request_names_the_field_and_the_byte_where_it_ends() {
         Err(DecodeError::TooShort {
             field: "token",
             at: 1,
-            needed: 4,
+            needed: 16,
             left: 2
         })
     );
@@ -198,19 +208,19 @@ fn bytes_after_the_last_field_are_named_with_their_position() {
     stop.extend_from_slice(&[0, 0]);
     assert_eq!(
         Request::decode(&stop),
-        Err(DecodeError::LeftOver { at: 5, count: 2 })
+        Err(DecodeError::LeftOver { at: 17, count: 2 })
     );
 }
 
 #[test]
 fn a_trigger_out_of_range_is_named_at_its_byte() {
     let mut configure = configure();
-    configure[13] = 9;
+    configure[25] = 9;
     assert_eq!(
         Request::decode(&configure),
         Err(DecodeError::OutOfRange {
             field: "trigger",
-            at: 13,
+            at: 25,
             value: 9,
             expected: "0 to 3"
         })
@@ -220,23 +230,23 @@ fn a_trigger_out_of_range_is_named_at_its_byte() {
 #[test]
 fn a_trace_sampling_every_zero_cycles_or_keeping_more_than_all_before_the_trigger_is_refused() {
     let mut never = configure();
-    never[6] = 0; // `every`, little-endian u16 at bytes 6 and 7.
-    never[7] = 0;
+    never[18] = 0; // `every`, little-endian u16 at bytes 18 and 19.
+    never[19] = 0;
     assert!(matches!(
         Request::decode(&never),
         Err(DecodeError::OutOfRange {
             field: "every",
-            at: 6,
+            at: 18,
             ..
         })
     ));
     let mut too_much = configure();
-    too_much[12] = 101; // `pretrigger`.
+    too_much[24] = 101; // `pretrigger`.
     assert!(matches!(
         Request::decode(&too_much),
         Err(DecodeError::OutOfRange {
             field: "pretrigger",
-            at: 12,
+            at: 24,
             ..
         })
     ));
@@ -249,7 +259,7 @@ fn a_reset_kind_out_of_range_is_a_bad_request() {
         kind: ResetKind::Warm,
     }
     .encode();
-    reset[5] = 3;
+    reset[17] = 3;
     let error = Request::decode(&reset).unwrap_err();
     assert_eq!(error.status(), Status::BadRequest);
     assert!(error.to_string().contains("reset kind"), "{error}");
@@ -278,7 +288,7 @@ fn a_value_longer_than_the_rest_of_the_frame_is_a_bad_place() {
     assert_eq!(
         error,
         DecodeError::ValueTooLong {
-            at: 14,
+            at: 26,
             size: 4,
             left: 3
         }
@@ -294,7 +304,7 @@ fn only_a_start_byte_of_1_starts_after_loading() {
         start: true,
     }
     .encode();
-    commit[7] = 2;
+    commit[19] = 2;
     assert!(matches!(
         Request::decode(&commit),
         Ok(Request::DownloadCommit { start: false, .. })

@@ -25,9 +25,12 @@ pub enum Response {
     Identify(Identity),
     /// `LOGIN`: the token for changing services.
     Login {
-        /// Random and not 0; valid until the runtime restarts.
-        token: u32,
+        /// Random and not 0; valid on the connection that logged in, until it logs in again,
+        /// logs out or closes.
+        token: u128,
     },
+    /// `LOGOUT`: the connection's token has ended.
+    Logout,
     /// `DOWNLOAD_BEGIN`: the transfer begun.
     DownloadBegin {
         /// The transfer's number, which its chunks name.
@@ -128,6 +131,7 @@ impl Response {
         match self {
             Identify(_) => Service::Identify,
             Login { .. } => Service::Login,
+            Logout => Service::Logout,
             DownloadBegin { .. } => Service::DownloadBegin,
             DownloadChunk { .. } => Service::DownloadChunk,
             DownloadCommit { .. } => Service::DownloadCommit,
@@ -177,7 +181,7 @@ impl Response {
             }
             DownloadChunk { received } => out.extend_from_slice(&received.to_le_bytes()),
             DownloadCommit { retained } => out.push(u8::from(*retained)),
-            DownloadAbort | Write | Force | Unforce | TraceArm => {}
+            Logout | DownloadAbort | Write | Force | Unforce | TraceArm => {}
             Start { state } | Stop { state } | Reset { state } => out.push(*state as u8),
             Resolve(resolved) => {
                 put_place(&mut out, &resolved.place);
@@ -313,8 +317,9 @@ fn decode_answer(
             password_required: r.u8("password required")? != 0,
         }),
         Service::Login => Response::Login {
-            token: r.u32("token")?,
+            token: r.u128("token")?,
         },
+        Service::Logout => Response::Logout,
         Service::DownloadBegin => Response::DownloadBegin {
             transfer: r.u16("transfer")?,
             chunk_size: r.u16("chunk size")?,

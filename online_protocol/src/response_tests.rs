@@ -118,7 +118,7 @@ fn a_truncated_answer_names_the_field_where_it_ends() {
         Err(DecodeError::TooShort {
             field: "token",
             at: 2,
-            needed: 4,
+            needed: 16,
             left: 2
         })
     );
@@ -171,7 +171,7 @@ fn trace_samples_that_cannot_share_one_size_are_an_error() {
 #[test]
 fn a_zero_hash_means_no_program() {
     let identity = Identity {
-        protocol: 1,
+        protocol: crate::PROTOCOL_VERSION,
         runtime_version: "0.1.0".to_owned(),
         state: TargetState::NoProgram,
         image_hash: None,

@@ -8,6 +8,8 @@ pub enum Service {
     Identify = 0x01,
     /// `LOGIN`: a token for the password.
     Login = 0x02,
+    /// `LOGOUT`: the connection's token ends.
+    Logout = 0x03,
     /// `DOWNLOAD_BEGIN`: a new transfer of an image.
     DownloadBegin = 0x10,
     /// `DOWNLOAD_CHUNK`: some bytes of the image.
@@ -54,9 +56,10 @@ pub enum Service {
 
 impl Service {
     /// Every service, in the order of their numbers.
-    pub const ALL: [Service; 23] = [
+    pub const ALL: [Service; 24] = [
         Service::Identify,
         Service::Login,
+        Service::Logout,
         Service::DownloadBegin,
         Service::DownloadChunk,
         Service::DownloadCommit,
@@ -85,7 +88,7 @@ impl Service {
         self as u8
     }
 
-    /// The service with `number`, if protocol version 1 has one.
+    /// The service with `number`, if protocol version 2 has one.
     pub fn from_number(number: u8) -> Option<Self> {
         Self::ALL
             .into_iter()

@@ -50,7 +50,7 @@ impl Status {
         self as u8
     }
 
-    /// The status with `number`, if protocol version 1 has one.
+    /// The status with `number`, if protocol version 2 has one.
     pub fn from_number(number: u8) -> Option<Self> {
         Self::ALL
             .into_iter()

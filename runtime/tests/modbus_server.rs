@@ -197,38 +197,52 @@ async fn sixteen_clients_each_make_100_round_trips_at_once() {
 }
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
-async fn connections_beyond_max_clients_are_closed() {
+async fn a_new_client_takes_the_place_of_the_longest_idle_one() {
     let options = ServerOptions {
         max_clients: 2,
         ..ServerOptions::default()
     };
     let (address, _areas) = start_server(full_areas(), options).await;
-    let mut first = connect(address).await;
+    let mut first = TcpStream::connect(address).await.unwrap();
+    first.write_all(&read_request(1)).await.unwrap();
+    assert!(matches!(read_answer(&mut first).await, Answer::Frame(_)));
     let mut second = connect(address).await;
-    first.read_coils(0, 1).await.unwrap().unwrap();
     second.read_coils(0, 1).await.unwrap().unwrap();
 
+    // The server is full: the third client is served, and the first, whose last request is
+    // the oldest, is closed.
     let mut third = TcpStream::connect(address).await.unwrap();
-    third.write_all(&read_request(1)).await.unwrap();
-    assert_eq!(read_answer(&mut third).await, Answer::Closed);
-
-    // Once a place is free, a new client is served again.
-    drop(first);
-    let deadline = tokio::time::Instant::now() + PATIENCE;
-    loop {
-        let mut stream = TcpStream::connect(address).await.unwrap();
-        stream.write_all(&read_request(2)).await.unwrap();
-        if let Answer::Frame(frame) = read_answer(&mut stream).await {
-            assert_eq!(frame[..2], [0, 2]);
-            break;
-        }
-        assert!(
-            tokio::time::Instant::now() < deadline,
-            "no place became free"
-        );
-        tokio::time::sleep(Duration::from_millis(20)).await;
-    }
+    third.write_all(&read_request(3)).await.unwrap();
+    assert!(matches!(read_answer(&mut third).await, Answer::Frame(_)));
+    assert_eq!(read_answer(&mut first).await, Answer::Closed);
     second.read_coils(0, 1).await.unwrap().unwrap();
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn two_hundred_idle_and_slow_clients_do_not_keep_a_reader_out() {
+    let (address, _areas) = start_server(full_areas(), ServerOptions::default()).await;
+    // 100 clients that connect and say nothing, 100 that send half a frame and stop.
+    let mut squatters = Vec::new();
+    for index in 0..200 {
+        let mut stream = TcpStream::connect(address).await.unwrap();
+        if index % 2 == 1 {
+            stream.write_all(&read_request(1)[..5]).await.unwrap();
+        }
+        squatters.push(stream);
+    }
+    let mut client = connect(address).await;
+    let registers = tokio::time::timeout(PATIENCE, client.read_holding_registers(0, 2))
+        .await
+        .expect("the reader was kept waiting")
+        .unwrap()
+        .unwrap();
+    assert_eq!(registers.len(), 2);
+    // mbpoll, as an operator would, reads too.
+    let mbpoll = required_program("mbpoll");
+    let stdout = run(mbpoll, mbpoll_args(address, "-t 4 -r 1 -c 2", "")).await;
+    assert_eq!(mbpoll_values(&stdout).len(), 2, "{stdout}");
+    // The squatters beyond the 64 places were closed, oldest first.
+    assert_eq!(read_answer(&mut squatters[0]).await, Answer::Closed);
 }
 
 /// What a raw socket got back.

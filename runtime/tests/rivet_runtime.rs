@@ -1,6 +1,6 @@
 //! The `rivet-runtime` binary as a process: it runs an image, serves it over Modbus TCP to
 //! tokio-modbus, mbpoll and pymodbus, keeps a RETAIN variable across a restart, refuses a
-//! damaged image while it goes on serving, and with `--password` lets only a logged-in client
+//! damaged image while it goes on serving, and with `--password-file` lets only a logged-in client
 //! change the target over the online services.
 //!
 //! The image is built by hand from `program_image` types (the runtime may not use the compiler;
@@ -535,29 +535,95 @@ async fn online(client: &mut Context, request: &online_protocol::Request) -> (u8
     (body[1], body[2..].to_vec())
 }
 
+#[test]
+fn a_password_on_the_command_line_and_bad_server_options_are_refused_saying_why() {
+    let dir = tempfile::tempdir().unwrap();
+    let output = Command::new(env!("CARGO_BIN_EXE_rivet-runtime"))
+        .args([
+            "--listen",
+            "127.0.0.1:0",
+            "--password",
+            "swordfish",
+            "--data-dir",
+        ])
+        .arg(dir.path())
+        .env_remove("RIVET_PASSWORD")
+        .output()
+        .unwrap();
+    assert!(!output.status.success());
+    let said = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        said.contains("--password-file") && said.contains("RIVET_PASSWORD"),
+        "{said}"
+    );
+    let output = Command::new(env!("CARGO_BIN_EXE_rivet-runtime"))
+        .args([
+            "--listen",
+            "127.0.0.1:0",
+            "--modbus-writes",
+            "inputs:0",
+            "--data-dir",
+        ])
+        .arg(dir.path())
+        .output()
+        .unwrap();
+    assert!(!output.status.success());
+    let said = String::from_utf8_lossy(&output.stderr);
+    assert!(said.contains("`coils` or `holding`"), "{said}");
+    let output = Command::new(env!("CARGO_BIN_EXE_rivet-runtime"))
+        .args([
+            "--listen",
+            "127.0.0.1:0",
+            "--idle-timeout-seconds",
+            "0",
+            "--data-dir",
+        ])
+        .arg(dir.path())
+        .output()
+        .unwrap();
+    assert!(!output.status.success());
+    let said = String::from_utf8_lossy(&output.stderr);
+    assert!(said.contains("--idle-timeout-seconds"), "{said}");
+}
+
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn with_a_password_the_binary_stops_only_for_a_logged_in_client() {
     use online_protocol::Request;
 
     let dir = tempfile::tempdir().unwrap();
     let image = write_image(dir.path(), &image().encode());
+    let password_file = dir.path().join("password");
+    std::fs::write(&password_file, "swordfish\n").unwrap();
     let mut runtime = Runtime::start(
         &dir.path().join("data"),
         Some(&image),
-        &["--password", "swordfish"],
+        &["--password-file", password_file.to_str().unwrap()],
     );
     runtime.wait_for_message("running");
     let mut client = connect(runtime.address).await;
-    let (status, identity) = online(&mut client, &Request::Identify { protocol: 1 }).await;
+    let (status, identity) = online(
+        &mut client,
+        &Request::Identify {
+            protocol: online_protocol::PROTOCOL_VERSION,
+        },
+    )
+    .await;
     assert_eq!(status, 0);
     assert_eq!(identity.last(), Some(&1), "a password is required");
     assert_eq!(online(&mut client, &Request::Stop { token: 0 }).await.0, 3);
+    // Standard writes would bypass the password: by default they are refused, with
+    // exception 1 wherever they write, while reads go on.
+    for register in [1, 9000] {
+        let refused = client.write_single_register(register, 7).await.unwrap();
+        assert_eq!(refused, Err(tokio_modbus::ExceptionCode::IllegalFunction));
+    }
+    client.read_holding_registers(1, 1).await.unwrap().unwrap();
     let login = Request::Login {
         password: "swordfish".to_owned(),
     };
     let (status, token) = online(&mut client, &login).await;
     assert_eq!(status, 0);
-    let token = u32::from_le_bytes(token.try_into().unwrap());
+    let token = u128::from_le_bytes(token.try_into().unwrap());
     assert_eq!(
         online(&mut client, &Request::Stop { token }).await,
         (0, vec![1])

@@ -147,9 +147,18 @@ async fn done(client: &mut Context, request: &Request) -> Vec<u8> {
 
 /// The state and image hash `IDENTIFY` gives.
 async fn identify(client: &mut Context) -> (u8, [u8; 32]) {
-    let payload = done(client, &Request::Identify { protocol: 1 }).await;
+    let payload = done(
+        client,
+        &Request::Identify {
+            protocol: online_protocol::PROTOCOL_VERSION,
+        },
+    )
+    .await;
     let mut reader = Reader::new(&payload);
-    assert_eq!(reader.u16("u16").unwrap(), 1);
+    assert_eq!(
+        reader.u16("u16").unwrap(),
+        online_protocol::PROTOCOL_VERSION
+    );
     reader.str8("text").unwrap();
     let state = reader.u8("u8").unwrap();
     (state, reader.hash("hash").unwrap())
@@ -158,7 +167,7 @@ async fn identify(client: &mut Context) -> (u8, [u8; 32]) {
 /// Begins a download of `bytes` announced with `hash` and sends the chunks `chunks` selects.
 async fn send_image(
     client: &mut Context,
-    token: u32,
+    token: u128,
     bytes: &[u8],
     hash: [u8; 32],
     chunks: impl Fn(usize) -> bool,
@@ -189,7 +198,7 @@ async fn send_image(
 }
 
 /// Downloads `image` in chunks, commits it and starts it.
-async fn download(client: &mut Context, token: u32, image: &ProgramImage) {
+async fn download(client: &mut Context, token: u128, image: &ProgramImage) {
     let bytes = image.encode();
     let hash = Sha256::digest(&bytes).into();
     let transfer = send_image(client, token, &bytes, hash, |_| true).await;
@@ -247,11 +256,11 @@ async fn read_until(client: &mut Context, place: Place, what: &str, done: impl F
     }
 }
 
-async fn login(client: &mut Context, password: &str) -> u32 {
+async fn login(client: &mut Context, password: &str) -> u128 {
     let request = Request::Login {
         password: password.to_owned(),
     };
-    u32::from_le_bytes(done(client, &request).await.try_into().unwrap())
+    u128::from_le_bytes(done(client, &request).await.try_into().unwrap())
 }
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
@@ -378,8 +387,12 @@ async fn with_a_password_only_a_logged_in_client_changes_the_target() {
         password: "sesame".to_owned(),
     };
     assert_eq!(ask(&mut client, &wrong).await.0, 4);
-    // Logins are refused unchecked for a moment after a wrong password.
-    tokio::time::sleep(runtime::online::WRONG_PASSWORD_DELAY).await;
+    // The wrong password locks nobody else out: another client logs in, and its token is
+    // of no use on this connection.
+    let mut other = plc.connect().await;
+    let other_token = login(&mut other, "open sesame").await;
+    let stolen = Request::Start { token: other_token };
+    assert_eq!(ask(&mut client, &stolen).await.0, 4);
     assert_eq!(identify(&mut client).await.0, 1, "still stopped");
 
     // Reading needs no token.
@@ -400,6 +413,11 @@ async fn with_a_password_only_a_logged_in_client_changes_the_target() {
     };
     assert_eq!(ask(&mut client, &write).await.0, 4);
     assert_eq!(done(&mut client, &Request::Stop { token }).await, [1]);
+    // After LOGOUT the token is refused, and the other client's is still good.
+    done(&mut client, &Request::Logout).await;
+    assert_eq!(ask(&mut client, &Request::Start { token }).await.0, 4);
+    let start = Request::Start { token: other_token };
+    assert_eq!(done(&mut other, &start).await, [2]);
 }
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
@@ -552,10 +570,13 @@ async fn a_download_cut_or_corrupted_at_100_points_leaves_the_old_program_runnin
 async fn another_protocol_version_is_refused_naming_both() {
     let plc = Plc::start(None).await;
     let mut raw = plc.connect().await;
-    let (status, payload) = ask(&mut raw, &Request::Identify { protocol: 2 }).await;
+    let (status, payload) = ask(&mut raw, &Request::Identify { protocol: 1 }).await;
     assert_eq!(status, 9);
     let message = String::from_utf8_lossy(&payload[1..]).into_owned();
-    assert!(message.contains('1') && message.contains('2'), "{message}");
+    assert!(
+        message.contains("version 1") && message.contains("version 2"),
+        "{message}"
+    );
 }
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]

@@ -18,8 +18,11 @@ use anyhow::Context;
 use clap::Parser;
 use program_image::ProgramImage;
 use runtime::areas::LocatedAreas;
-use runtime::modbus::{MapSlot, ModbusMap, ServerOptions, serve};
-use runtime::online::OnlineServices;
+use runtime::modbus::{
+    DEFAULT_FRAME_TIMEOUT, DEFAULT_IDLE_TIMEOUT, MapSlot, ModbusMap, ServerOptions, WritePolicy,
+    serve,
+};
+use runtime::online::{OnlineServices, PASSWORD_VARIABLE, read_password};
 use runtime::scheduler::{Scheduler, SchedulerOptions};
 use tokio::net::TcpListener;
 
@@ -39,9 +42,27 @@ struct Arguments {
     /// Load the image but do not start its tasks.
     #[arg(long)]
     stopped: bool,
-    /// The password the online services that change the target require (download, start,
-    /// stop, reset, write, force, trace); without one, every client may change it.
+    /// A file whose first line is the password the online services that change the target
+    /// require (download, start, stop, reset, write, force, trace); it may also be given in
+    /// the environment variable RIVET_PASSWORD. Without one, every client may change it.
     #[arg(long)]
+    password_file: Option<PathBuf>,
+    /// What the standard Modbus function codes (5, 6, 15, 16, 23) may write: `all`, `none`, or
+    /// ranges such as `coils:0-15,holding:1024-1100`; a refused write gets exception 1. The
+    /// default is `none` with a password (only a logged-in client changes the target) and
+    /// `all` without one.
+    #[arg(long, value_name = "POLICY")]
+    modbus_writes: Option<WritePolicy>,
+    /// Seconds a Modbus connection may stay silent between requests before it is closed.
+    #[arg(long, default_value_t = DEFAULT_IDLE_TIMEOUT.as_secs(), value_parser = clap::value_parser!(u64).range(1..))]
+    idle_timeout_seconds: u64,
+    /// Seconds a Modbus frame may take from its first byte to its last before the connection
+    /// is closed.
+    #[arg(long, default_value_t = DEFAULT_FRAME_TIMEOUT.as_secs(), value_parser = clap::value_parser!(u64).range(1..))]
+    frame_timeout_seconds: u64,
+    /// No longer accepted (visible in the process list): refused with a message saying where
+    /// the password goes now.
+    #[arg(long, hide = true)]
     password: Option<String>,
 }
 
@@ -58,6 +79,17 @@ fn main() -> anyhow::Result<()> {
 }
 
 async fn run(arguments: Arguments) -> anyhow::Result<()> {
+    let password = read_password(
+        arguments.password.as_deref(),
+        arguments.password_file.as_deref(),
+        std::env::var_os(PASSWORD_VARIABLE),
+    )?;
+    // With a password, standard writes would bypass it unless the operator allows them.
+    let writes = match (&arguments.modbus_writes, &password) {
+        (Some(writes), _) => writes.clone(),
+        (None, Some(_)) => WritePolicy::None,
+        (None, None) => WritePolicy::All,
+    };
     std::fs::create_dir_all(&arguments.data_dir).with_context(|| {
         format!(
             "cannot create the data directory {}",
@@ -98,11 +130,12 @@ async fn run(arguments: Arguments) -> anyhow::Result<()> {
 
     // A download replaces the map with the new image's.
     let map = MapSlot::new(map);
-    let services = Arc::new(
-        OnlineServices::new(Arc::clone(&scheduler), arguments.password.clone())
-            .with_map(Arc::clone(&map)),
-    );
+    let services =
+        Arc::new(OnlineServices::new(Arc::clone(&scheduler), password).with_map(Arc::clone(&map)));
     let server_options = ServerOptions {
+        writes,
+        idle_timeout: Duration::from_secs(arguments.idle_timeout_seconds),
+        frame_timeout: Duration::from_secs(arguments.frame_timeout_seconds),
         custom: Some(services.handler()),
         closed: Some(services.closed_handler()),
         ..ServerOptions::default()

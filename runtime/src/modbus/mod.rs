@@ -9,12 +9,14 @@
 //! the TCP server with its own small MBAP framing, so that a malformed frame is answered with an
 //! exception or closes its connection and nothing else.
 
+mod connections;
 mod exception;
 mod frame;
 mod map;
 mod map_slot;
 mod pdu;
 mod server;
+mod write_policy;
 
 pub use exception::ExceptionCode;
 pub use frame::{FrameError, HEADER_BYTES, MbapHeader};
@@ -24,4 +26,10 @@ pub use pdu::{
     MAX_PDU_BYTES, MAX_READ_BITS, MAX_READ_REGISTERS, MAX_READ_WRITE_REGISTERS, MAX_WRITE_BITS,
     MAX_WRITE_REGISTERS, handle_pdu, is_standard_function,
 };
-pub use server::{ConnectionClosed, CustomFunctions, ServerOptions, current_connection, serve};
+pub use server::{
+    ConnectionClosed, CustomFunctions, DEFAULT_FRAME_TIMEOUT, DEFAULT_IDLE_TIMEOUT, ServerOptions,
+    current_connection, delay_answer, serve,
+};
+pub use write_policy::{
+    REFUSED_WRITE, WritableRange, WritableTable, WritePolicy, WritePolicyError,
+};

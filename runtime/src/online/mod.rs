@@ -1,21 +1,24 @@
-//! Rivet's online services (`docs/protocol.md`, version 1) over Modbus function code 0x64:
+//! Rivet's online services (`docs/protocol.md`, version 2) over Modbus function code 0x64:
 //! identity, login, download, run control, monitor, write, force, trace, statistics and faults.
 //!
 //! - The requests and responses themselves, with their encoding, are `online_protocol`'s:
 //!   this module decodes requests and encodes responses only through it.
 //! - [`OnlineServices`]: the services on a [`crate::scheduler::Scheduler`], as the
 //!   [`crate::modbus::CustomFunctions`] hook of the Modbus server.
+//! - [`read_password`]: a password from a file or [`PASSWORD_VARIABLE`], for the binaries.
 //! - [`Forces`] and [`Trace`]: the force table and the trace recorder, which the scheduler's
 //!   thread applies and feeds around every cycle.
 
 mod download;
 mod forces;
+mod password;
 mod place;
 mod services;
 mod trace;
 
 pub use download::{TRANSFER_TIMEOUT, Transfer};
 pub use forces::Forces;
+pub use password::{PASSWORD_VARIABLE, PasswordError, read_password};
 pub use place::{Memory, PlaceAccess};
 pub use services::{OnlineServices, WRONG_PASSWORD_DELAY};
 pub use trace::{MAX_TRACE_BYTES, Sample, Trace, TraceState};

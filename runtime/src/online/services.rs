@@ -1,7 +1,6 @@
 //! The online services on a scheduler, as the Modbus server's hook for function code 0x64.
 
-use std::collections::VecDeque;
-use std::hash::{BuildHasher, Hasher};
+use std::collections::HashMap;
 use std::sync::{Arc, Mutex, MutexGuard, PoisonError};
 use std::time::{Duration, Instant};
 
@@ -20,18 +19,15 @@ use super::trace::{MAX_TRACE_BYTES, Trace};
 use crate::engine::ResetKind;
 use crate::modbus::{
     ConnectionClosed, CustomFunctions, ExceptionCode, MapSlot, ModbusMap, current_connection,
+    delay_answer,
 };
 use crate::retain::RetainRestore;
 use crate::scheduler::{Between, Scheduler, SchedulerError, SchedulerState};
 use crate::value;
 
-/// The most tokens kept; a login beyond them forgets the oldest, so that logins cannot fill
-/// the memory.
-pub const MAX_TOKENS: usize = 256;
-
-/// How long after a wrong password every login is refused unchecked, so passwords can be
-/// guessed at most five times a second, without holding up the server.
-pub const WRONG_PASSWORD_DELAY: Duration = Duration::from_millis(200);
+/// How long the connection that sent a wrong password waits for the refusal (and so before it
+/// can try again); other connections are not held up, so nobody can lock the others out.
+pub const WRONG_PASSWORD_DELAY: Duration = Duration::from_millis(500);
 
 /// The online services of one runtime: lives as long as its Modbus server; nothing of it is
 /// saved (tokens end with the process).
@@ -39,13 +35,12 @@ pub struct OnlineServices {
     scheduler: Arc<Scheduler>,
     /// The password that changing services need; `None` lets everyone change the target.
     password: Option<String>,
-    /// The tokens given out by `LOGIN` with the password, oldest first (at most
-    /// [`MAX_TOKENS`]); without a password none are kept, as any token is accepted.
-    tokens: Mutex<VecDeque<u32>>,
+    /// The token given out by `LOGIN` with the password to each connection (`None` outside a
+    /// Modbus server), valid on that connection only until it logs in again or closes; without
+    /// a password none are kept, as any token is accepted.
+    tokens: Mutex<HashMap<Option<u64>, u128>>,
     /// The download in progress, if any.
     transfer: Mutex<Option<Transfer>>,
-    /// When the last wrong password came.
-    last_wrong_password: Mutex<Option<Instant>>,
     /// The number of the last transfer begun.
     last_transfer: Mutex<u16>,
     /// The Modbus server's map, replaced by the downloaded image's; `None` keeps the server's.
@@ -58,9 +53,8 @@ impl OnlineServices {
         Self {
             scheduler,
             password,
-            tokens: Mutex::new(VecDeque::new()),
+            tokens: Mutex::new(HashMap::new()),
             transfer: Mutex::new(None),
-            last_wrong_password: Mutex::new(None),
             last_transfer: Mutex::new(0),
             map: None,
         }
@@ -85,11 +79,13 @@ impl OnlineServices {
         })
     }
 
-    /// The hook for [`crate::modbus::ServerOptions::closed`]: a transfer ends with the
-    /// connection that began it.
+    /// The hook for [`crate::modbus::ServerOptions::closed`]: a transfer and a token end with
+    /// the connection that began the one and logged in for the other (the server closes a
+    /// connection after its idle timeout, so a token also ends when its client goes silent).
     pub fn closed_handler(self: &Arc<Self>) -> ConnectionClosed {
         let services = Arc::clone(self);
         Arc::new(move |connection| {
+            lock(&services.tokens).remove(&Some(connection));
             let mut transfer = lock(&services.transfer);
             if transfer
                 .as_ref()
@@ -102,9 +98,19 @@ impl OnlineServices {
 
     /// The response (after the function code) to a request (after the function code).
     ///
-    /// A request without a service byte gets exception 3. For [`WRONG_PASSWORD_DELAY`] after a
-    /// wrong password, logins are refused without being checked.
+    /// A request without a service byte gets exception 3. The request comes from the Modbus
+    /// connection being served ([`current_connection`]), which a token must have been given to.
     pub fn respond(&self, request: &[u8]) -> Result<Vec<u8>, ExceptionCode> {
+        self.respond_from(current_connection(), request)
+    }
+
+    /// The response to a request that came from `connection` (`None`: not from a Modbus
+    /// server), as [`OnlineServices::respond`].
+    pub fn respond_from(
+        &self,
+        connection: Option<u64>,
+        request: &[u8],
+    ) -> Result<Vec<u8>, ExceptionCode> {
         let Some(&service) = request.first() else {
             return Err(ExceptionCode::IllegalDataValue);
         };
@@ -112,9 +118,9 @@ impl OnlineServices {
             .map_err(decode_refusal)
             .and_then(|request| {
                 if let Some(token) = request.token() {
-                    self.authorize(token)?;
+                    self.authorize(connection, token)?;
                 }
-                self.serve(request)
+                self.serve(connection, request)
             });
         let mut body = match answer {
             Ok(response) => response.encode(),
@@ -126,7 +132,7 @@ impl OnlineServices {
         Ok(body)
     }
 
-    fn authorize(&self, token: u32) -> Result<(), Refusal> {
+    fn authorize(&self, connection: Option<u64>, token: u128) -> Result<(), Refusal> {
         if self.password.is_none() {
             return Ok(());
         }
@@ -136,7 +142,9 @@ impl OnlineServices {
                 message: "the runtime has a password: log in first".to_owned(),
             });
         }
-        if lock(&self.tokens).contains(&token) {
+        // A token is valid only on the connection it was given to: one seen on the wire (the
+        // link is not encrypted) is of no use on another connection.
+        if lock(&self.tokens).get(&connection) == Some(&token) {
             Ok(())
         } else {
             Err(Refusal {
@@ -146,15 +154,19 @@ impl OnlineServices {
         }
     }
 
-    fn serve(&self, request: Request) -> Result<Response, Refusal> {
+    fn serve(&self, connection: Option<u64>, request: Request) -> Result<Response, Refusal> {
         match request {
             Request::Identify { protocol } => self.identify(protocol),
-            Request::Login { password } => self.login(&password),
+            Request::Login { password } => self.login(connection, &password),
+            Request::Logout => {
+                lock(&self.tokens).remove(&connection);
+                Ok(Response::Logout)
+            }
             Request::DownloadBegin { size, hash, .. } => {
                 let mut last = lock(&self.last_transfer);
                 *last = last.wrapping_add(1).max(1);
                 let mut transfer = Transfer::begin(*last, size, hash, Instant::now())?;
-                transfer.owner = current_connection();
+                transfer.owner = connection;
                 *lock(&self.transfer) = Some(transfer);
                 Ok(Response::DownloadBegin {
                     transfer: *last,
@@ -327,7 +339,7 @@ impl OnlineServices {
         }))
     }
 
-    fn login(&self, password: &str) -> Result<Response, Refusal> {
+    fn login(&self, connection: Option<u64>, password: &str) -> Result<Response, Refusal> {
         let Some(expected) = &self.password else {
             return Ok(Response::Login {
                 token: random_token(),
@@ -340,31 +352,17 @@ impl OnlineServices {
             .iter()
             .zip(&expected)
             .fold(0u8, |difference, (a, b)| difference | (a ^ b));
-        let mut last_wrong = lock(&self.last_wrong_password);
-        if last_wrong.is_some_and(|at| at.elapsed() < WRONG_PASSWORD_DELAY) {
-            return Err(Refusal {
-                status: Status::WrongPassword,
-                message: "too soon after a wrong password; try again in a moment".to_owned(),
-            });
-        }
         if difference != 0 {
-            *last_wrong = Some(Instant::now());
+            // Only this connection waits; a correct password from another logs in at once.
+            delay_answer(WRONG_PASSWORD_DELAY);
             return Err(Refusal {
                 status: Status::WrongPassword,
                 message: "wrong password".to_owned(),
             });
         }
-        let mut tokens = lock(&self.tokens);
-        let token = loop {
-            let token = random_token();
-            if !tokens.contains(&token) {
-                break token;
-            }
-        };
-        if tokens.len() >= MAX_TOKENS {
-            tokens.pop_front();
-        }
-        tokens.push_back(token);
+        // Logging in again replaces the connection's token.
+        let token = random_token();
+        lock(&self.tokens).insert(connection, token);
         Ok(Response::Login { token })
     }
 
@@ -648,20 +646,18 @@ fn not_now(message: &str) -> Refusal {
     Refusal::not_now(message)
 }
 
-/// A random token, not 0, from the standard library's randomly keyed hasher mixed with the
-/// time.
-fn random_token() -> u32 {
+/// A random token, not 0, of 128 bits from the operating system's CSPRNG, so that it cannot be
+/// guessed or predicted from earlier tokens.
+fn random_token() -> u128 {
     loop {
-        let mut hasher = std::collections::hash_map::RandomState::new().build_hasher();
-        hasher.write_u128(
-            std::time::SystemTime::now()
-                .duration_since(std::time::UNIX_EPOCH)
-                .map(|elapsed| elapsed.as_nanos())
-                .unwrap_or(0),
-        );
-        let token = hasher.finish() as u32;
-        if token != 0 {
-            return token;
+        let mut bytes = [0; 16];
+        // Without the operating system's random numbers no token can be trusted; 0 is never
+        // accepted as a token when there is a password, so it is retried until one comes.
+        if getrandom::fill(&mut bytes).is_ok() {
+            let token = u128::from_le_bytes(bytes);
+            if token != 0 {
+                return token;
+            }
         }
     }
 }

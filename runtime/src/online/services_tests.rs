@@ -28,32 +28,43 @@ fn answer(services: &OnlineServices, request: &Request) -> online_protocol::Answ
     Response::decode(request, &services.respond(&request.encode()).unwrap()).unwrap()
 }
 
+/// The status and payload of the answer to `request` from Modbus connection `connection`.
+fn ask_from(services: &OnlineServices, connection: u64, request: &Request) -> (u8, Vec<u8>) {
+    let body = services
+        .respond_from(Some(connection), &request.encode())
+        .unwrap();
+    assert_eq!(body[0], request.service().number());
+    (body[1], body[2..].to_vec())
+}
+
+/// The token of a successful `LOGIN` answer.
+fn token_of((status, payload): (u8, Vec<u8>)) -> u128 {
+    assert_eq!(status, 0);
+    u128::from_le_bytes(payload.try_into().unwrap())
+}
+
+fn login_with(password: &str) -> Request {
+    Request::Login {
+        password: password.to_owned(),
+    }
+}
+
 #[test]
 fn changing_services_need_a_token_from_the_password_and_reading_ones_do_not() {
     let services = services(Some("secret"), true);
-    let (status, identity) = ask(&services, &Request::Identify { protocol: 1 });
+    let (status, identity) = ask(
+        &services,
+        &Request::Identify {
+            protocol: PROTOCOL_VERSION,
+        },
+    );
     assert_eq!(status, 0);
     assert_eq!(identity.last(), Some(&1), "a password is required");
     assert_eq!(ask(&services, &Request::Start { token: 0 }).0, 3);
     assert_eq!(ask(&services, &Request::Start { token: 1234 }).0, 4);
-    let wrong = Request::Login {
-        password: "guess".to_owned(),
-    };
-    assert_eq!(ask(&services, &wrong).0, 4);
-    // Right after a wrong password even the right one is refused, unchecked.
-    let right = Request::Login {
-        password: "secret".to_owned(),
-    };
-    assert_eq!(ask(&services, &right).0, 4);
-    std::thread::sleep(WRONG_PASSWORD_DELAY);
-    let (status, token) = ask(
-        &services,
-        &Request::Login {
-            password: "secret".to_owned(),
-        },
-    );
-    assert_eq!(status, 0);
-    let token = u32::from_le_bytes(token.try_into().unwrap());
+    assert_eq!(ask(&services, &login_with("guess")).0, 4);
+    // A wrong password locks nobody out: the right one is checked at once.
+    let token = token_of(ask(&services, &login_with("secret")));
     assert_ne!(token, 0);
     assert_eq!(ask(&services, &Request::Start { token }), (0, vec![2]));
     assert_eq!(ask(&services, &Request::Stop { token }), (0, vec![1]));
@@ -61,24 +72,51 @@ fn changing_services_need_a_token_from_the_password_and_reading_ones_do_not() {
 }
 
 #[test]
-fn logins_keep_only_the_newest_tokens() {
-    let services = services(Some("secret"), true);
-    let login = Request::Login {
-        password: "secret".to_owned(),
-    };
-    let token = |(status, payload): (u8, Vec<u8>)| {
-        assert_eq!(status, 0);
-        u32::from_le_bytes(payload.try_into().unwrap())
-    };
-    let first = token(ask(&services, &login));
-    for _ in 0..MAX_TOKENS - 1 {
-        ask(&services, &login);
-    }
-    assert_eq!(ask(&services, &Request::Stop { token: first }).0, 0);
-    let newest = token(ask(&services, &login));
-    assert_eq!(ask(&services, &Request::Stop { token: first }).0, 4);
-    assert_eq!(ask(&services, &Request::Stop { token: newest }).0, 0);
-    assert_eq!(lock(&services.tokens).len(), MAX_TOKENS);
+fn a_token_is_valid_only_on_the_connection_that_logged_in_and_until_it_closes() {
+    let services = Arc::new(services(Some("secret"), true));
+    let first = token_of(ask_from(&services, 1, &login_with("secret")));
+    assert_eq!(ask_from(&services, 1, &Request::Stop { token: first }).0, 0);
+    // Seen on the wire and sent from another connection, it is refused.
+    assert_eq!(ask_from(&services, 2, &Request::Stop { token: first }).0, 4);
+    // Logging in again replaces the token.
+    let second = token_of(ask_from(&services, 1, &login_with("secret")));
+    assert_ne!(first, second);
+    assert_eq!(ask_from(&services, 1, &Request::Stop { token: first }).0, 4);
+    assert_eq!(
+        ask_from(&services, 1, &Request::Stop { token: second }).0,
+        0
+    );
+    let other = token_of(ask_from(&services, 2, &login_with("secret")));
+    // Logging out ends the token of that connection only.
+    let third = token_of(ask_from(&services, 3, &login_with("secret")));
+    assert_eq!(ask_from(&services, 3, &Request::Logout), (0, vec![]));
+    assert_eq!(ask_from(&services, 3, &Request::Stop { token: third }).0, 4);
+    // When the connection closes (also after its idle timeout), its token ends.
+    (services.closed_handler())(1);
+    assert_eq!(
+        ask_from(&services, 1, &Request::Stop { token: second }).0,
+        4
+    );
+    assert_eq!(ask_from(&services, 2, &Request::Stop { token: other }).0, 0);
+    assert_eq!(lock(&services.tokens).len(), 1);
+}
+
+#[test]
+fn tokens_are_128_random_bits() {
+    let services = services(Some("secret"), false);
+    let tokens: Vec<u128> = (0..64)
+        .map(|connection| token_of(ask_from(&services, connection, &login_with("secret"))))
+        .collect();
+    let mut distinct = tokens.clone();
+    distinct.sort_unstable();
+    distinct.dedup();
+    assert_eq!(distinct.len(), tokens.len());
+    // Every bit is used: 64 tokens of 128 random bits set each bit somewhere, and clear it
+    // somewhere (a u32 widened, or a counter, would not).
+    let ones = tokens.iter().fold(0u128, |bits, token| bits | token);
+    let zeros = tokens.iter().fold(0u128, |bits, token| bits | !token);
+    assert_eq!(ones, u128::MAX);
+    assert_eq!(zeros, u128::MAX);
 }
 
 #[test]
@@ -87,7 +125,10 @@ fn another_protocol_version_is_refused_with_both_versions() {
     let (status, message) = ask(&services, &Request::Identify { protocol: 7 });
     assert_eq!(status, 9);
     let message = String::from_utf8(message[1..].to_vec()).unwrap();
-    assert!(message.contains('7') && message.contains('1'), "{message}");
+    assert!(
+        message.contains("version 7") && message.contains("version 2"),
+        "{message}"
+    );
 }
 
 #[test]
@@ -120,7 +161,12 @@ fn without_a_program_the_services_that_need_one_say_not_now() {
         .0,
         7
     );
-    let (status, identity) = ask(&services, &Request::Identify { protocol: 1 });
+    let (status, identity) = ask(
+        &services,
+        &Request::Identify {
+            protocol: PROTOCOL_VERSION,
+        },
+    );
     assert_eq!(status, 0);
     assert!(identity.contains(&0) && identity.ends_with(&[0, 0]));
 }
