@@ -672,6 +672,19 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                 b.name()
             ));
         }
+        if self.scope.globals.dialect == Dialect::IecStrict
+            && matches!(
+                operator.kind(),
+                SyntaxKind::PLUS
+                    | SyntaxKind::MINUS
+                    | SyntaxKind::STAR
+                    | SyntaxKind::SLASH
+                    | SyntaxKind::MOD
+            )
+            && bit_string_arithmetic(&left, &right).is_some()
+        {
+            message.push_str(STRICT_NOTE);
+        }
         self.error(Code::InvalidOperands, range_of(node), message);
         Type::Error
     }
@@ -689,6 +702,11 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
             PLUS | MINUS | STAR | SLASH => {
                 if left.is_numeric() && right.is_numeric() {
                     return common_type(left, right);
+                }
+                if self.scope.globals.dialect == Dialect::Codesys
+                    && let Some(ty) = bit_string_arithmetic(left, right)
+                {
+                    return Some(ty);
                 }
                 let (l, r) = (left.as_elementary(), right.as_elementary());
                 let numeric = |ty: &Type| ty.is_numeric();
@@ -731,6 +749,8 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
             MOD => {
                 if left.is_integer_like() && right.is_integer_like() {
                     common_type(left, right)
+                } else if self.scope.globals.dialect == Dialect::Codesys {
+                    bit_string_arithmetic(left, right).filter(Type::is_bits)
                 } else {
                     None
                 }
