@@ -32,9 +32,8 @@ fn program(declarations: &str, body: &str) -> String {
 
 #[test]
 fn arithmetic_on_bit_strings_wraps_in_the_bit_string_by_default_and_is_refused_by_iec_strict() {
-    let declarations = "b : BYTE := 255; w : WORD := 16#FFFF; d : DWORD := 10; bb : BYTE := 200; n : INT := 100; wide : INT; m : BYTE; q : WORD;";
-    let body =
-        "b := b + 1; w := w * 2; d := d - 11; wide := bb + n; m := bb MOD 7; q := w / WORD#3;";
+    let declarations = "b : BYTE := 255; w : WORD := 16#FFFF; d : DWORD := 10; bb : BYTE := 200; n : INT := 100; wide : INT; m : BYTE; q : WORD; less : BOOL; same : BOOL;";
+    let body = "b := b + 1; w := w * 2; d := d - 11; wide := bb + n; m := bb MOD 7; q := w / WORD#3; less := n < bb; same := bb = UINT#200;";
     let source = program(declarations, body);
     assert_eq!(codes(&source, Dialect::Codesys), Vec::new());
     let s = run(&source, 1);
@@ -47,11 +46,13 @@ fn arithmetic_on_bit_strings_wraps_in_the_bit_string_by_default_and_is_refused_b
             ("main.wide", "300"),
             ("main.m", "4"),
             ("main.q", "21844"),
+            ("main.less", "TRUE"),
+            ("main.same", "TRUE"),
         ],
     );
     assert_eq!(
         codes(&source, Dialect::IecStrict),
-        vec![(Code::InvalidOperands, Severity::Error); 6]
+        vec![(Code::InvalidOperands, Severity::Error); 8]
     );
 }
 
@@ -78,6 +79,29 @@ fn narrowing_integer_assignments_warn_and_keep_the_low_bits_by_default_and_are_r
         codes(&source, Dialect::IecStrict),
         vec![(Code::TypeMismatch, Severity::Error); 5]
     );
+}
+
+#[test]
+fn inputs_narrow_like_assignments_but_a_var_in_out_takes_only_its_own_type() {
+    let source = "FUNCTION Twice : DINT VAR_INPUT x : SINT; END_VAR Twice := SINT_TO_DINT(x) * 2; END_FUNCTION
+        PROGRAM main VAR i : INT := 4223; r : DINT; END_VAR r := Twice(x := i); END_PROGRAM";
+    let warning = (Code::ImplicitNarrowing, Severity::Warning);
+    assert_eq!(codes(source, Dialect::Codesys), vec![warning]);
+    check(&run(source, 1), &[("main.r", "254")]);
+    assert_eq!(
+        codes(source, Dialect::IecStrict),
+        vec![(Code::TypeMismatch, Severity::Error)]
+    );
+    let in_out =
+        "FUNCTION Bump : BOOL VAR_IN_OUT x : SINT; END_VAR x := x + 1; Bump := TRUE; END_FUNCTION
+        PROGRAM main VAR i : INT; b : BOOL; END_VAR b := Bump(x := i); END_PROGRAM";
+    for dialect in [Dialect::Codesys, Dialect::IecStrict] {
+        assert_eq!(
+            codes(in_out, dialect),
+            vec![(Code::TypeMismatch, Severity::Error)],
+            "{dialect:?}"
+        );
+    }
 }
 
 #[test]

@@ -680,6 +680,12 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                     | SyntaxKind::STAR
                     | SyntaxKind::SLASH
                     | SyntaxKind::MOD
+                    | SyntaxKind::EQ
+                    | SyntaxKind::NEQ
+                    | SyntaxKind::LT
+                    | SyntaxKind::LE
+                    | SyntaxKind::GT
+                    | SyntaxKind::GE
             )
             && bit_string_arithmetic(&left, &right).is_some()
         {
@@ -797,7 +803,11 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                     {
                         true
                     }
-                    _ => common_type(left, right).is_some(),
+                    _ => {
+                        common_type(left, right).is_some()
+                            || (self.scope.globals.dialect == Dialect::Codesys
+                                && bit_string_arithmetic(left, right).is_some())
+                    }
                 };
                 comparable.then_some(Type::BOOL)
             }

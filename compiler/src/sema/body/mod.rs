@@ -445,6 +445,29 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
 
     /// Reports `value` where `expected` is needed, unless it converts implicitly.
     fn expect_type(&mut self, value: &Type, expected: &Type, node: &SyntaxNode, context: &str) {
+        self.expect_type_converted(value, expected, node, context, true);
+    }
+
+    /// Reports `value` where a place of type `expected` is passed by reference (VAR_IN_OUT):
+    /// there is no copy to convert, so CODESYS's lenient conversions do not apply.
+    fn expect_same_place_type(
+        &mut self,
+        value: &Type,
+        expected: &Type,
+        node: &SyntaxNode,
+        context: &str,
+    ) {
+        self.expect_type_converted(value, expected, node, context, false);
+    }
+
+    fn expect_type_converted(
+        &mut self,
+        value: &Type,
+        expected: &Type,
+        node: &SyntaxNode,
+        context: &str,
+        copied: bool,
+    ) {
         if self.converts(value, expected) {
             return;
         }
@@ -452,8 +475,8 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
             Type::Reference(target) => target.as_ref(),
             other => other,
         };
-        let narrowing = lenient_integer_conversion(value, target);
-        let rounding = lenient_real_conversion(value, target);
+        let narrowing = copied && lenient_integer_conversion(value, target);
+        let rounding = copied && lenient_real_conversion(value, target);
         let lenient = narrowing || rounding;
         if lenient && self.scope.globals.dialect == Dialect::Codesys {
             let (code, message) = if narrowing {
