@@ -509,6 +509,44 @@ mod tests {
     }
 
     #[test]
+    fn bit_strings_count_as_unsigned_integers_of_their_width_in_codesys_arithmetic() {
+        let three = Type::IntLiteral(Some(3));
+        assert_eq!(bit_string_arithmetic(&e(Byte), &three), Some(e(Byte)));
+        assert_eq!(bit_string_arithmetic(&e(Byte), &e(Word)), Some(e(Word)));
+        assert_eq!(bit_string_arithmetic(&e(Byte), &e(Int)), Some(e(Int)));
+        assert_eq!(bit_string_arithmetic(&e(Dword), &e(Real)), None);
+        assert_eq!(bit_string_arithmetic(&e(Word), &e(Real)), Some(e(Real)));
+        assert_eq!(bit_string_arithmetic(&e(Byte), &e(Sint)), None);
+        assert_eq!(bit_string_arithmetic(&e(Int), &e(Dint)), None);
+        assert_eq!(bit_string_arithmetic(&e(Bool), &three), None);
+    }
+
+    #[test]
+    fn lenient_conversions_are_between_integers_or_into_reals_only() {
+        assert!(lenient_integer_conversion(&e(Int), &e(Sint)));
+        assert!(lenient_integer_conversion(&e(Dint), &e(Word)));
+        assert!(lenient_integer_conversion(
+            &Type::IntLiteral(Some(128)),
+            &e(Sint)
+        ));
+        assert!(!lenient_integer_conversion(&e(Real), &e(Int)));
+        assert!(!lenient_integer_conversion(&e(Int), &e(Bool)));
+        assert!(!lenient_integer_conversion(&e(Time), &e(Dint)));
+        assert!(lenient_real_conversion(&e(Dint), &e(Real)));
+        assert!(!lenient_real_conversion(&e(Bool), &e(Real)));
+        assert!(!lenient_real_conversion(&e(Real), &e(Dint)));
+    }
+
+    #[test]
+    fn a_wrapped_value_keeps_its_low_bits_read_with_the_targets_sign() {
+        assert_eq!(wrapped(128, Sint), -128);
+        assert_eq!(wrapped(4223, Sint), 127);
+        assert_eq!(wrapped(-1, Uint), 65535);
+        assert_eq!(wrapped(260, Usint), 4);
+        assert_eq!(wrapped(-5, Lint), -5);
+    }
+
+    #[test]
     fn generic_classes_admit_their_members() {
         assert!(Generic::Num.admits(&e(Lreal)));
         assert!(!Generic::Num.admits(&e(Time)));
