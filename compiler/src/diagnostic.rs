@@ -87,6 +87,8 @@ codes! {
     AssignmentToInput = "W0004", Warning, "Input assigned inside its POU";
     DuplicateCaseLabel = "W0005", Warning, "CASE label already covered";
     AddressSizeMismatch = "W0006", Warning, "Located variable's type does not match the address size";
+    ImplicitNarrowing = "W0012", Warning, "Integer value narrowed or its sign changed implicitly";
+    ImplicitRealRounding = "W0013", Warning, "Integer converted implicitly to a real that may round it";
 }
 
 /// One finding of the compiler about the source.

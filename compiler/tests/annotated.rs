@@ -8,6 +8,9 @@
 //!
 //! The carets give the exact span; the test fails on any diagnostic that is missing, extra, or
 //! at another span, so the spans of messages are tested as well as their codes.
+//!
+//! A file whose first line contains `dialect: iec-strict` is checked in that dialect; the
+//! others in the default (CODESYS) one.
 
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::print_stdout)] // Test helpers may panic: a panic is a failed test.
 
@@ -44,7 +47,14 @@ fn expected(text: &str) -> BTreeSet<Expectation> {
 }
 
 fn actual(text: &str) -> (BTreeSet<Expectation>, Vec<String>) {
-    let source = SourceProject::new(text);
+    let mut source = SourceProject::new(text);
+    if text
+        .lines()
+        .next()
+        .is_some_and(|line| line.contains("dialect: iec-strict"))
+    {
+        source.project.dialect = project_model::Dialect::IecStrict;
+    }
     let mut ranges = Vec::new();
     for error in source.parse.errors().iter().chain(&source.diagnostics) {
         ranges.push((error.range.clone(), error.code.id(), error.message.clone()));

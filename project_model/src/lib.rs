@@ -20,6 +20,7 @@ mod data_type;
 mod declaration_text;
 mod declarations_edit;
 mod device_check;
+mod dialect;
 mod edit;
 mod files;
 mod gvl;
@@ -67,6 +68,7 @@ pub use device_check::{
     DeviceProblem, LOCATED_AREA_BYTES, axis_problems, binding_problems, controller_problems,
     device_problems, io_area_problems, map_range_problems, modbus_device_problems, new_problem,
 };
+pub use dialect::Dialect;
 pub use edit::{Edit, EditError, TextTarget, TreeEdit, VarOwner};
 pub use files::{
     APPLICATION_DIR, FORMAT_VERSION, HeldBackObject, LoadError, LoadProblem, LoadedProject,

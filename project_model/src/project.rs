@@ -2,7 +2,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::{Axis, Folder, IoArea, ModbusDevice, Task};
+use crate::{Axis, Dialect, Folder, IoArea, ModbusDevice, Task};
 
 /// A whole Rivet project, as loaded from its folder.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -28,6 +28,8 @@ pub struct Project {
     /// Motion axes.
     #[cfg_attr(feature = "proptest", proptest(strategy = "crate::arb::small_vec()"))]
     pub axes: Vec<Axis>,
+    /// The language rules the compiler checks the project by.
+    pub dialect: Dialect,
     /// The application: POUs, variable lists, types, cams, traces and watch lists in folders.
     pub application: Folder,
 }

@@ -174,6 +174,40 @@ fn a_wrong_value_names_what_was_expected() {
 }
 
 #[test]
+fn an_unknown_dialect_is_refused_naming_the_known_ones() {
+    let dir = example_copy();
+    let manifest = dir.path().join("rivet.toml");
+    replace_in(
+        &manifest,
+        "application = [",
+        "dialect = \"iec\"\napplication = [",
+    );
+    let error = load_fails(dir.path());
+    assert_error(&error, dir.path(), "rivet.toml", Some(4), "`iec`");
+    assert_error(&error, dir.path(), "rivet.toml", Some(4), "`codesys`");
+    assert_error(&error, dir.path(), "rivet.toml", Some(4), "`iec-strict`");
+}
+
+#[test]
+fn the_iec_strict_dialect_loads_and_saves_back() {
+    let dir = example_copy();
+    let manifest = dir.path().join("rivet.toml");
+    assert_eq!(
+        load_project(dir.path()).unwrap().project.dialect,
+        project_model::Dialect::Codesys
+    );
+    replace_in(
+        &manifest,
+        "application = [",
+        "dialect = \"iec-strict\"\napplication = [",
+    );
+    let loaded = load_project(dir.path()).unwrap();
+    assert_eq!(loaded.project.dialect, project_model::Dialect::IecStrict);
+    let report = save_project(&loaded.project, dir.path(), &loaded.files).unwrap();
+    assert!(report.written.is_empty(), "rewrote {:?}", report.written);
+}
+
+#[test]
 fn a_listed_file_that_is_missing_is_reported_at_its_manifest_line() {
     let dir = example_copy();
     fs::remove_file(dir.path().join("application/GVL_IO.gvl.toml")).unwrap();

@@ -4,6 +4,8 @@
 // The helpers below are test code too: a failure should stop the test where it happens.
 #![allow(clippy::expect_used, clippy::unwrap_used)]
 
+/// The CODESYS and iec-strict dialects on each case where they differ.
+mod dialect;
 /// LD and FBD bodies compiled and run, element by element and against the ST a user writes.
 mod ladder;
 mod sfc;

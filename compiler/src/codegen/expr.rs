@@ -9,7 +9,7 @@ use super::error::fail;
 use super::layout::{Lay, LayShape, located_of};
 use crate::elementary::Elementary;
 use crate::sema::scope::{GlobalSymbol, LocalSymbol};
-use crate::sema::ty::{Type, common_type};
+use crate::sema::ty::{Type, bit_string_arithmetic, common_type};
 use crate::syntax::SyntaxKind;
 use crate::syntax::ast::{AstNode, BinaryExpr, Expr, FieldExpr, IndexExpr, NameExpr, UnaryExpr};
 
@@ -931,7 +931,11 @@ impl BodyGen<'_, '_, '_> {
         };
         if let Some(op) = compare {
             let (lt, rt) = (self.type_of(&left), self.type_of(&right));
-            let common = common_type(&lt, &rt).unwrap_or(lt);
+            // A bit string compared with a number (which only the CODESYS dialect lets through
+            // the checker) is compared in the type their arithmetic has.
+            let common = common_type(&lt, &rt)
+                .or_else(|| bit_string_arithmetic(&lt, &rt))
+                .unwrap_or(lt);
             let ty = concrete(&common, None);
             let sides = [self.type_of(&left), self.type_of(&right)];
             if sides.iter().any(|t| matches!(t, Type::Pointer(_))) {

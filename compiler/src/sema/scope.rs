@@ -46,6 +46,8 @@ pub(crate) struct Globals<'p> {
     type_cache: RefCell<FxHashMap<String, Type>>,
     /// Spellings of every global name, for suggestions.
     spellings: Vec<&'p str>,
+    /// Whether CODESYS's leniencies apply (`docs/dialect.md`).
+    pub(crate) dialect: project_model::Dialect,
 }
 
 impl<'p> Globals<'p> {
@@ -56,6 +58,7 @@ impl<'p> Globals<'p> {
             data_types: FxHashMap::default(),
             type_cache: RefCell::new(FxHashMap::default()),
             spellings: Vec::new(),
+            dialect: project.dialect,
         };
         let objects = project.application.objects();
         // Variables first: a variable wins over an enumeration value of the same name, as an

@@ -382,6 +382,89 @@ pub fn common_type(a: &Type, b: &Type) -> Option<Type> {
     }
 }
 
+/// The unsigned integer a bit string counts as in CODESYS arithmetic (`BYTE` as `USINT`);
+/// `None` for `BOOL` and everything that is not a bit string.
+pub fn bit_string_counterpart(ty: Elementary) -> Option<Elementary> {
+    Some(match ty {
+        E::Byte => E::Usint,
+        E::Word => E::Uint,
+        E::Dword => E::Udint,
+        E::Lword => E::Ulint,
+        _ => return None,
+    })
+}
+
+/// The type of `a + b` (and `-`, `*`, `/`, `MOD`) when an operand is a bit string, as CODESYS
+/// V3.5 computes it: a bit string counts as the unsigned integer of its width, the operands
+/// take their common type, and a result of a bit string's width is that bit string
+/// (`BYTE + 1` is `BYTE`, `BYTE + INT` is `INT`). `None` when no operand is a bit string or
+/// the operands have no common type.
+pub fn bit_string_arithmetic(a: &Type, b: &Type) -> Option<Type> {
+    let bit_string = |ty: &Type| match ty {
+        Type::Elementary(e) => bit_string_counterpart(*e).map(|number| (*e, number)),
+        _ => None,
+    };
+    let (left, right) = (bit_string(a), bit_string(b));
+    if left.is_none() && right.is_none() {
+        return None;
+    }
+    let as_number = |ty: &Type, bits: Option<(Elementary, Elementary)>| match bits {
+        Some((_, number)) => Some(Type::Elementary(number)),
+        None if ty.is_numeric() => Some(ty.clone()),
+        None => None,
+    };
+    let common = common_type(&as_number(a, left)?, &as_number(b, right)?)?;
+    for (bits, number) in [left, right].into_iter().flatten() {
+        if common == Type::Elementary(number) {
+            return Some(Type::Elementary(bits));
+        }
+    }
+    Some(common)
+}
+
+/// Whether a value of type `from` going into `to` is an integer conversion IEC refuses and
+/// CODESYS V3.5 performs with a warning (C0195, C0196): a narrowing or a change of sign
+/// between integers and bit strings other than `BOOL`, or an integer constant outside the
+/// target's range. The value keeps its low bits.
+pub fn lenient_integer_conversion(from: &Type, to: &Type) -> bool {
+    let Type::Elementary(to) = to else {
+        return false;
+    };
+    let integer = |e: Elementary| e.is_integer() || (e.is_bit_string() && e != E::Bool);
+    if !integer(*to) {
+        return false;
+    }
+    match from {
+        Type::IntLiteral(Some(_)) => true,
+        Type::Elementary(e) | Type::Subrange { base: e, .. } => integer(*e),
+        _ => false,
+    }
+}
+
+/// Whether a value of type `from` going into `to` is an integer converted to a real that
+/// may not hold it exactly (`DINT` into `REAL`), which IEC refuses and CODESYS V3.5 performs
+/// with a warning (its C0197): the real nearest the integer is stored.
+pub fn lenient_real_conversion(from: &Type, to: &Type) -> bool {
+    let (Some(from), Type::Elementary(to)) = (from.as_elementary(), to) else {
+        return false;
+    };
+    to.is_real() && (from.is_integer() || (from.is_bit_string() && from != E::Bool))
+}
+
+/// `value` as stored in an integer or bit string `ty`: its low bits, read with the type's sign.
+pub fn wrapped(value: i128, ty: Elementary) -> i128 {
+    let bits = ty.size_bits();
+    if bits == 0 || bits >= 128 {
+        return value;
+    }
+    let low = value & ((1i128 << bits) - 1);
+    if ty.is_signed_integer() && low >= 1i128 << (bits - 1) {
+        low - (1i128 << bits)
+    } else {
+        low
+    }
+}
+
 /// A subrange stands for its base type in arithmetic.
 fn strip_subrange(ty: &Type) -> Type {
     match ty {
@@ -423,6 +506,44 @@ mod tests {
         );
         assert_eq!(common_type(&e(Int), &e(Uint)), None);
         assert_eq!(common_type(&e(Dint), &e(Real)), None);
+    }
+
+    #[test]
+    fn bit_strings_count_as_unsigned_integers_of_their_width_in_codesys_arithmetic() {
+        let three = Type::IntLiteral(Some(3));
+        assert_eq!(bit_string_arithmetic(&e(Byte), &three), Some(e(Byte)));
+        assert_eq!(bit_string_arithmetic(&e(Byte), &e(Word)), Some(e(Word)));
+        assert_eq!(bit_string_arithmetic(&e(Byte), &e(Int)), Some(e(Int)));
+        assert_eq!(bit_string_arithmetic(&e(Dword), &e(Real)), None);
+        assert_eq!(bit_string_arithmetic(&e(Word), &e(Real)), Some(e(Real)));
+        assert_eq!(bit_string_arithmetic(&e(Byte), &e(Sint)), None);
+        assert_eq!(bit_string_arithmetic(&e(Int), &e(Dint)), None);
+        assert_eq!(bit_string_arithmetic(&e(Bool), &three), None);
+    }
+
+    #[test]
+    fn lenient_conversions_are_between_integers_or_into_reals_only() {
+        assert!(lenient_integer_conversion(&e(Int), &e(Sint)));
+        assert!(lenient_integer_conversion(&e(Dint), &e(Word)));
+        assert!(lenient_integer_conversion(
+            &Type::IntLiteral(Some(128)),
+            &e(Sint)
+        ));
+        assert!(!lenient_integer_conversion(&e(Real), &e(Int)));
+        assert!(!lenient_integer_conversion(&e(Int), &e(Bool)));
+        assert!(!lenient_integer_conversion(&e(Time), &e(Dint)));
+        assert!(lenient_real_conversion(&e(Dint), &e(Real)));
+        assert!(!lenient_real_conversion(&e(Bool), &e(Real)));
+        assert!(!lenient_real_conversion(&e(Real), &e(Dint)));
+    }
+
+    #[test]
+    fn a_wrapped_value_keeps_its_low_bits_read_with_the_targets_sign() {
+        assert_eq!(wrapped(128, Sint), -128);
+        assert_eq!(wrapped(4223, Sint), 127);
+        assert_eq!(wrapped(-1, Uint), 65535);
+        assert_eq!(wrapped(260, Usint), 4);
+        assert_eq!(wrapped(-5, Lint), -5);
     }
 
     #[test]

@@ -127,6 +127,7 @@ impl Loader<'_> {
             io_areas: manifest.io_areas,
             modbus_devices: manifest.modbus_devices,
             axes: manifest.axes,
+            dialect: manifest.dialect,
             application,
         })
     }

@@ -3,7 +3,7 @@
 use serde::{Deserialize, Serialize};
 use toml::Spanned;
 
-use crate::{Axis, Controller, IoArea, ModbusDevice, Task};
+use crate::{Axis, Controller, Dialect, IoArea, ModbusDevice, Task};
 
 /// The manifest's fields in file order.
 ///
@@ -16,6 +16,8 @@ pub(crate) struct Manifest {
     pub name: String,
     #[serde(default, skip_serializing_if = "String::is_empty")]
     pub description: String,
+    #[serde(default, skip_serializing_if = "Dialect::is_default")]
+    pub dialect: Dialect,
     #[serde(default)]
     pub application: Vec<Spanned<String>>,
     pub controller: Controller,

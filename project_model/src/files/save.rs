@@ -132,6 +132,7 @@ fn render(
         format_version: FORMAT_VERSION,
         name: project.name.clone(),
         description: project.description.clone(),
+        dialect: project.dialect,
         application: entries
             .into_iter()
             .map(|entry| Spanned::new(0..0, entry))

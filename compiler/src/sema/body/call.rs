@@ -384,7 +384,7 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                         );
                     } else {
                         let context = format!("VAR_IN_OUT '{}' of '{callee}'", param.name);
-                        self.expect_type(&ty, &param.ty, value.syntax(), &context);
+                        self.expect_same_place_type(&ty, &param.ty, value.syntax(), &context);
                     }
                 }
                 _ => {

@@ -672,6 +672,25 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                 b.name()
             ));
         }
+        if self.scope.globals.dialect == Dialect::IecStrict
+            && matches!(
+                operator.kind(),
+                SyntaxKind::PLUS
+                    | SyntaxKind::MINUS
+                    | SyntaxKind::STAR
+                    | SyntaxKind::SLASH
+                    | SyntaxKind::MOD
+                    | SyntaxKind::EQ
+                    | SyntaxKind::NEQ
+                    | SyntaxKind::LT
+                    | SyntaxKind::LE
+                    | SyntaxKind::GT
+                    | SyntaxKind::GE
+            )
+            && bit_string_arithmetic(&left, &right).is_some()
+        {
+            message.push_str(STRICT_NOTE);
+        }
         self.error(Code::InvalidOperands, range_of(node), message);
         Type::Error
     }
@@ -689,6 +708,11 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
             PLUS | MINUS | STAR | SLASH => {
                 if left.is_numeric() && right.is_numeric() {
                     return common_type(left, right);
+                }
+                if self.scope.globals.dialect == Dialect::Codesys
+                    && let Some(ty) = bit_string_arithmetic(left, right)
+                {
+                    return Some(ty);
                 }
                 let (l, r) = (left.as_elementary(), right.as_elementary());
                 let numeric = |ty: &Type| ty.is_numeric();
@@ -731,6 +755,8 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
             MOD => {
                 if left.is_integer_like() && right.is_integer_like() {
                     common_type(left, right)
+                } else if self.scope.globals.dialect == Dialect::Codesys {
+                    bit_string_arithmetic(left, right).filter(Type::is_bits)
                 } else {
                     None
                 }
@@ -777,7 +803,11 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                     {
                         true
                     }
-                    _ => common_type(left, right).is_some(),
+                    _ => {
+                        common_type(left, right).is_some()
+                            || (self.scope.globals.dialect == Dialect::Codesys
+                                && bit_string_arithmetic(left, right).is_some())
+                    }
                 };
                 comparable.then_some(Type::BOOL)
             }

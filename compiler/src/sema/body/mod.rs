@@ -19,7 +19,10 @@ use super::constant::{Const, evaluate, integer_value, parse_expression};
 use super::definition::{Definition, DefinitionKind, Resolution};
 use super::scope::{GlobalSymbol, LocalSymbol, Scope, inheritance_chain, is_visible_outside};
 use super::signatures::{self, FunctionSig, Sig};
-use super::ty::{DEFAULT_STRING_LENGTH, Type, common_type, implicitly_converts};
+use super::ty::{
+    DEFAULT_STRING_LENGTH, Type, bit_string_arithmetic, common_type, implicitly_converts,
+    lenient_integer_conversion, lenient_real_conversion, wrapped,
+};
 use super::types::Shape;
 use super::{closest, stdlib};
 use crate::diagnostic::{Code, Diagnostic};
@@ -30,6 +33,7 @@ use crate::syntax::ast::{
 };
 use crate::syntax::ast::{CallExpr, NameExpr};
 use crate::syntax::{SyntaxKind, SyntaxNode, SyntaxToken};
+use project_model::Dialect;
 
 /// How a variable was used somewhere.
 #[derive(Clone, Copy, Debug, Default)]
@@ -84,6 +88,27 @@ fn dereferenced(ty: Type) -> Type {
     match ty {
         Type::Reference(target) => *target,
         other => other,
+    }
+}
+
+/// Appended to an error the `iec-strict` dialect gives where CODESYS would warn or accept.
+pub(super) const STRICT_NOTE: &str =
+    " (the project's dialect is iec-strict; CODESYS would accept this, see docs/dialect.md)";
+
+/// The warning for a value of `value`'s type narrowed implicitly into `target`, as CODESYS
+/// performs it: with the constant's stored value when the value is a constant.
+fn narrowing_message(value: &Type, target: &Type, context: &str) -> String {
+    match (value, target.as_elementary()) {
+        (Type::IntLiteral(Some(v)), Some(to)) => format!(
+            "{v} does not fit {target} in {context}; it is stored as {}, its low bits (write {target}#… or a value in range)",
+            wrapped(*v, to)
+        ),
+        (_, Some(to)) => format!(
+            "{context} converts {value} to {target} implicitly, keeping the low bits (write {}_TO_{}(…) to say so)",
+            value.as_elementary().map_or("ANY", |e| e.name()),
+            to.name()
+        ),
+        _ => format!("{context} converts {value} to {target} implicitly"),
     }
 }
 
@@ -420,7 +445,56 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
 
     /// Reports `value` where `expected` is needed, unless it converts implicitly.
     fn expect_type(&mut self, value: &Type, expected: &Type, node: &SyntaxNode, context: &str) {
+        self.expect_type_converted(value, expected, node, context, true);
+    }
+
+    /// Reports `value` where a place of type `expected` is passed by reference (VAR_IN_OUT):
+    /// there is no copy to convert, so CODESYS's lenient conversions do not apply.
+    fn expect_same_place_type(
+        &mut self,
+        value: &Type,
+        expected: &Type,
+        node: &SyntaxNode,
+        context: &str,
+    ) {
+        self.expect_type_converted(value, expected, node, context, false);
+    }
+
+    fn expect_type_converted(
+        &mut self,
+        value: &Type,
+        expected: &Type,
+        node: &SyntaxNode,
+        context: &str,
+        copied: bool,
+    ) {
         if self.converts(value, expected) {
+            return;
+        }
+        let target = match expected {
+            Type::Reference(target) => target.as_ref(),
+            other => other,
+        };
+        let narrowing = copied && lenient_integer_conversion(value, target);
+        let rounding = copied && lenient_real_conversion(value, target);
+        let lenient = narrowing || rounding;
+        if lenient && self.scope.globals.dialect == Dialect::Codesys {
+            let (code, message) = if narrowing {
+                (
+                    Code::ImplicitNarrowing,
+                    narrowing_message(value, target, context),
+                )
+            } else {
+                (
+                    Code::ImplicitRealRounding,
+                    format!(
+                        "{context} converts {value} to {target} implicitly, which rounds integers it cannot hold exactly (use LREAL, or write {}_TO_{target}(…) to say so)",
+                        value.as_elementary().map_or("ANY", |e| e.name()),
+                    ),
+                )
+            };
+            self.diagnostics
+                .push(Diagnostic::new(code, range_of(node), message));
             return;
         }
         let mut message = format!("{context} expects {expected}, found {value}");
@@ -432,6 +506,9 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
             ));
         } else if let Type::IntLiteral(Some(v)) = value {
             message = format!("{context} expects {expected}, but {v} does not fit it");
+        }
+        if lenient {
+            message.push_str(STRICT_NOTE);
         }
         self.error(Code::TypeMismatch, range_of(node), message);
     }

@@ -1,0 +1,147 @@
+//! The dialects of `docs/dialect.md` on each of their cases: the default (CODESYS V3.5)
+//! compiles them, with a warning where CODESYS warns, and gives CODESYS's run-time result;
+//! `iec-strict` refuses them with the code IEC's rule has.
+
+use compiler::{Code, Severity, SourceProject};
+use project_model::Dialect;
+
+use super::{check, run};
+
+/// The codes of the findings on `source` checked in `dialect`, errors and warnings, with W0001
+/// and W0002 (unused variables, which the small programs have on purpose) left out.
+#[track_caller]
+fn codes(source: &str, dialect: Dialect) -> Vec<(Code, Severity)> {
+    let mut project = SourceProject::new(source);
+    assert!(
+        project.parse.errors().is_empty(),
+        "{:?}",
+        project.parse.errors()
+    );
+    project.project.dialect = dialect;
+    compiler::sema::check_project(&project.project)
+        .into_iter()
+        .map(|found| (found.diagnostic.code, found.diagnostic.severity))
+        .filter(|(code, _)| !matches!(code, Code::UnusedVariable | Code::UnassignedVariable))
+        .collect()
+}
+
+/// A program of `declarations` and `body`.
+fn program(declarations: &str, body: &str) -> String {
+    format!("PROGRAM main VAR {declarations} END_VAR\n{body}\nEND_PROGRAM")
+}
+
+#[test]
+fn arithmetic_on_bit_strings_wraps_in_the_bit_string_by_default_and_is_refused_by_iec_strict() {
+    let declarations = "b : BYTE := 255; w : WORD := 16#FFFF; d : DWORD := 10; bb : BYTE := 200; n : INT := 100; wide : INT; m : BYTE; q : WORD; less : BOOL; same : BOOL;";
+    let body = "b := b + 1; w := w * 2; d := d - 11; wide := bb + n; m := bb MOD 7; q := w / WORD#3; less := n < bb; same := bb = UINT#200;";
+    let source = program(declarations, body);
+    assert_eq!(codes(&source, Dialect::Codesys), Vec::new());
+    let s = run(&source, 1);
+    check(
+        &s,
+        &[
+            ("main.b", "0"),
+            ("main.w", "65534"),
+            ("main.d", "4294967295"),
+            ("main.wide", "300"),
+            ("main.m", "4"),
+            ("main.q", "21844"),
+            ("main.less", "TRUE"),
+            ("main.same", "TRUE"),
+        ],
+    );
+    assert_eq!(
+        codes(&source, Dialect::IecStrict),
+        vec![(Code::InvalidOperands, Severity::Error); 8]
+    );
+}
+
+#[test]
+fn narrowing_integer_assignments_warn_and_keep_the_low_bits_by_default_and_are_refused_by_iec_strict()
+ {
+    let declarations = "x : SINT; i : INT := 4223; s : SINT; minus : INT := -1; u : UINT; big : DINT := 70000; w : WORD; k : USINT := 250 + 10;";
+    let body = "x := 127 + 1; s := i; u := minus; w := big;";
+    let source = program(declarations, body);
+    let warning = (Code::ImplicitNarrowing, Severity::Warning);
+    assert_eq!(codes(&source, Dialect::Codesys), vec![warning; 5]);
+    let s = run(&source, 1);
+    check(
+        &s,
+        &[
+            ("main.x", "-128"),
+            ("main.s", "127"),
+            ("main.u", "65535"),
+            ("main.w", "4464"),
+            ("main.k", "4"),
+        ],
+    );
+    assert_eq!(
+        codes(&source, Dialect::IecStrict),
+        vec![(Code::TypeMismatch, Severity::Error); 5]
+    );
+}
+
+#[test]
+fn inputs_narrow_like_assignments_but_a_var_in_out_takes_only_its_own_type() {
+    let source = "FUNCTION Twice : DINT VAR_INPUT x : SINT; END_VAR Twice := SINT_TO_DINT(x) * 2; END_FUNCTION
+        PROGRAM main VAR i : INT := 4223; r : DINT; END_VAR r := Twice(x := i); END_PROGRAM";
+    let warning = (Code::ImplicitNarrowing, Severity::Warning);
+    assert_eq!(codes(source, Dialect::Codesys), vec![warning]);
+    check(&run(source, 1), &[("main.r", "254")]);
+    assert_eq!(
+        codes(source, Dialect::IecStrict),
+        vec![(Code::TypeMismatch, Severity::Error)]
+    );
+    let in_out =
+        "FUNCTION Bump : BOOL VAR_IN_OUT x : SINT; END_VAR x := x + 1; Bump := TRUE; END_FUNCTION
+        PROGRAM main VAR i : INT; b : BOOL; END_VAR b := Bump(x := i); END_PROGRAM";
+    for dialect in [Dialect::Codesys, Dialect::IecStrict] {
+        assert_eq!(
+            codes(in_out, dialect),
+            vec![(Code::TypeMismatch, Severity::Error)],
+            "{dialect:?}"
+        );
+    }
+}
+
+#[test]
+fn integers_into_reals_that_may_round_them_warn_by_default_and_are_refused_by_iec_strict() {
+    let declarations =
+        "d : DINT := 16777217; r : REAL; l : LINT := -3; r2 : REAL; dw : DWORD := 7; r3 : REAL;";
+    let source = program(declarations, "r := d; r2 := l; r3 := dw;");
+    let warning = (Code::ImplicitRealRounding, Severity::Warning);
+    assert_eq!(codes(&source, Dialect::Codesys), vec![warning; 3]);
+    let s = run(&source, 1);
+    // 16777217 is the first integer a REAL cannot hold; the nearest REAL is 16777216.
+    check(
+        &s,
+        &[("main.r", "16777216"), ("main.r2", "-3"), ("main.r3", "7")],
+    );
+    assert_eq!(
+        codes(&source, Dialect::IecStrict),
+        vec![(Code::TypeMismatch, Severity::Error); 3]
+    );
+}
+
+#[test]
+fn what_codesys_refuses_both_dialects_refuse() {
+    for (declarations, body, code) in [
+        ("x : BOOL; n : INT;", "n := x + 1;", Code::InvalidOperands),
+        ("r : REAL := 1.5; n : INT;", "n := r;", Code::TypeMismatch),
+        ("t : TIME; n : DINT;", "n := t;", Code::TypeMismatch),
+        (
+            "s : STRING; b : BYTE;",
+            "b := s + 1;",
+            Code::InvalidOperands,
+        ),
+    ] {
+        let source = program(declarations, body);
+        for dialect in [Dialect::Codesys, Dialect::IecStrict] {
+            assert_eq!(
+                codes(&source, dialect),
+                vec![(code, Severity::Error)],
+                "{body} in {dialect:?}"
+            );
+        }
+    }
+}
