@@ -72,6 +72,8 @@ pub enum BinaryOp {
     Shr,
     Rol,
     Ror,
+    /// The angle of the point (`b`, `a`) in radians, `ATAN2(Y := a, X := b)`; reals only.
+    Atan2,
 }
 
 /// Comparisons, giving BOOL.
@@ -112,6 +114,8 @@ pub enum StdBlock {
     FTrig,
     Sr,
     Rs,
+    /// CODESYS's run-time clock: the date and time counted on from `PDT`.
+    Rtc,
 }
 
 /// The standard functions on strings and times that are more than one instruction; the runtime

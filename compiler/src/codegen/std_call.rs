@@ -162,6 +162,7 @@ impl BodyGen<'_, '_, '_> {
             "ASIN" => Some(UnaryOp::Asin),
             "ACOS" => Some(UnaryOp::Acos),
             "ATAN" => Some(UnaryOp::Atan),
+            "ROUND" => Some(UnaryOp::Round),
             "NOT" => Some(UnaryOp::Not),
             "NEG" => Some(UnaryOp::Neg),
             _ => None,
@@ -196,6 +197,7 @@ impl BodyGen<'_, '_, '_> {
             "SHR" => Some(BinaryOp::Shr),
             "ROL" => Some(BinaryOp::Rol),
             "ROR" => Some(BinaryOp::Ror),
+            "ATAN2" => Some(BinaryOp::Atan2),
             _ => None,
         };
         if let Some(op) = binary {
@@ -220,6 +222,18 @@ impl BodyGen<'_, '_, '_> {
                 acc = dst;
             }
             return Ok(Some((acc, result_ty)));
+        }
+        let comparison = match upper.as_str() {
+            "GT" => Some(CompareOp::Gt),
+            "GE" => Some(CompareOp::Ge),
+            "EQ" => Some(CompareOp::Eq),
+            "LE" => Some(CompareOp::Le),
+            "LT" => Some(CompareOp::Lt),
+            "NE" => Some(CompareOp::Ne),
+            _ => None,
+        };
+        if let Some(op) = comparison {
+            return self.compare_chain(op, &values).map(Some);
         }
         if let Some(op) = time_arithmetic(&upper) {
             return self.time_arithmetic(op, &values, &result_ty).map(Some);
@@ -378,11 +392,59 @@ impl BodyGen<'_, '_, '_> {
                 });
                 Ok(Some((dst, result_ty)))
             }
-            "ADR" => {
-                let pointer = self.address_of(&first()?)?;
+            "ADR" | "ADRINST" => {
+                let pointer = match values.first() {
+                    Some(value) => self.address_of(value)?,
+                    // `ADRINST()` in a function block's body or method: its own instance.
+                    None => {
+                        let dst = self.temp(8);
+                        self.emit(Instr::Address {
+                            dst,
+                            place: Operand::Instance(0),
+                        });
+                        dst
+                    }
+                };
                 Ok(Some((pointer, result_ty)))
             }
-            "SIZEOF" => {
+            "BITADR" => {
+                // The bit offset in the variable's %I, %Q or %M area, as CODESYS gives it
+                // with byte addressing (`%IX2.3` is 19); the checker lets only those through.
+                let typed = self.place(&first()?)?;
+                let bit_offset = match typed.place {
+                    Place::Direct(
+                        Operand::Input(byte) | Operand::Output(byte) | Operand::Memory(byte),
+                    ) => u64::from(byte) * 8,
+                    Place::Bit {
+                        operand:
+                            Operand::Input(byte) | Operand::Output(byte) | Operand::Memory(byte),
+                        bit,
+                        ..
+                    } => u64::from(byte) * 8 + u64::from(bit),
+                    _ => return Err(fail!("'BITADR' of something without a direct address")),
+                };
+                let scalar = self.scalar_of(&result_ty).unwrap_or(IE::Dword);
+                Ok(Some((
+                    self.build.scalar_constant(bit_offset, scalar),
+                    result_ty,
+                )))
+            }
+            "ISVALIDREF" | "__ISVALIDREF" => {
+                // A reference is valid when it points somewhere: its address is not 0.
+                let typed = self.place(&first()?)?;
+                let pointer = self.pointer_to(&typed)?;
+                let null = self.build.scalar_constant(0, IE::Lword);
+                let dst = self.temp(1);
+                self.emit(Instr::Compare {
+                    op: CompareOp::Ne,
+                    ty: IE::Lword,
+                    dst,
+                    a: pointer,
+                    b: null,
+                });
+                Ok(Some((dst, result_ty)))
+            }
+            "SIZEOF" | "XSIZEOF" => {
                 let arg = first()?;
                 let ty = self.type_of(&arg);
                 let size = self.lay(&ty)?.size;
@@ -400,6 +462,31 @@ impl BodyGen<'_, '_, '_> {
         }
     }
 
+    /// `GT(a, b, c)` and the other comparison functions: IEC 61131-3 compares each input with
+    /// the next and ANDs the results (`a > b AND b > c`).
+    fn compare_chain(&mut self, op: CompareOp, values: &[Expr]) -> Gen<(Operand, Type)> {
+        let mut result: Option<Operand> = None;
+        for pair in values.windows(2) {
+            let (value, _) = self.compare(op, &pair[0], &pair[1])?;
+            result = Some(match result {
+                None => value,
+                Some(before) => {
+                    let dst = self.temp(1);
+                    self.emit(Instr::Binary {
+                        op: BinaryOp::And,
+                        ty: IE::Bool,
+                        dst,
+                        a: before,
+                        b: value,
+                    });
+                    dst
+                }
+            });
+        }
+        let result = result.ok_or("a comparison needs two inputs")?;
+        Ok((result, Type::BOOL))
+    }
+
     /// `ADD_DT_TIME`, `SUB_DT_DT`, `CONCAT_DATE_TOD`…: every operand is taken to nanoseconds
     /// (LTIME), combined, and the result converted to the function's type, so units never
     /// mix.
@@ -415,7 +502,25 @@ impl BodyGen<'_, '_, '_> {
         let result = self.scalar_of(result_ty).ok_or("a time result")?;
         let nanos = Type::Elementary(Elementary::Ltime);
         if matches!(op, BinaryOp::Mul | BinaryOp::Div) {
-            // MUL_TIME and DIV_TIME scale a duration by a number.
+            // MUL_TIME and DIV_TIME scale a duration by a number; by a real, the duration
+            // is scaled as an LREAL of milliseconds and rounded back, as REAL_TO_TIME does.
+            let factor_ty = concrete(&self.type_of(b), None);
+            if self.scalar_of(&factor_ty).is_some_and(IE::is_real) {
+                let lreal = Type::Elementary(Elementary::Lreal);
+                let time = self.expr_as(a, result_ty)?;
+                let time = self.convert_explicit(time, result_ty, &lreal)?;
+                let factor = self.expr_as(b, &lreal)?;
+                let scaled = self.temp(8);
+                self.emit(Instr::Binary {
+                    op,
+                    ty: IE::Lreal,
+                    dst: scaled,
+                    a: time,
+                    b: factor,
+                });
+                let dst = self.convert_explicit(scaled, &lreal, result_ty)?;
+                return Ok((dst, result_ty.clone()));
+            }
             let time = self.expr_as(a, result_ty)?;
             let factor = self.expr_as(b, result_ty)?;
             let dst = self.temp(8);
@@ -590,6 +695,27 @@ impl BodyGen<'_, '_, '_> {
             }
             _ => ((self.temp(4), 0), Type::Elementary(Elementary::Dint)),
         };
+        if function == StdFunction::Concat && args.len() > 2 {
+            // The runtime joins two strings; more inputs join one after another, each
+            // partial result cut to the result's length as the whole would be.
+            let mut joined = args[0];
+            for (index, next) in args.iter().enumerate().skip(1) {
+                let into = if index + 1 == args.len() {
+                    dst
+                } else {
+                    let lay = self.lay(&result_ty)?;
+                    (self.temp(lay.size), dst.1)
+                };
+                self.emit(Instr::CallStdFunction {
+                    function,
+                    wide,
+                    dst: into,
+                    args: vec![joined, *next],
+                });
+                joined = into;
+            }
+            return Ok((dst.0, result_ty));
+        }
         self.emit(Instr::CallStdFunction {
             function,
             wide,

@@ -432,6 +432,10 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
         node: &SyntaxNode,
     ) -> Type {
         let upper = name.to_ascii_uppercase();
+        if let Some((code, message)) = self.refused_standard(&upper, arguments) {
+            self.error(code, range_of(node), message);
+            return Type::Error;
+        }
         // Arguments by position, or by formal name (`IN1 := …`).
         let mut typed: Vec<(Sig, Type, Expr)> = Vec::new();
         for (index, argument) in arguments.iter().enumerate() {

@@ -7,6 +7,7 @@
 
 mod call;
 mod expression;
+mod refused_call;
 mod resolution;
 mod sfc;
 
