@@ -19,6 +19,9 @@ pub(crate) enum Sig {
     T(Generic),
     /// A real result: the `T` type when it is real, `LREAL` otherwise.
     RealOfT,
+    /// `EXPT`'s result: `ty::power_type` of the `T` input (the base) and the other (the
+    /// exponent), as `**` is typed.
+    Power,
     /// An integer literal result that fits any integer place (`SIZEOF`).
     AnyInt,
     /// A pointer to anything (`ADR`).
@@ -67,7 +70,7 @@ pub(crate) fn function(name: &str) -> Option<FunctionSig> {
         "SQRT" | "LN" | "LOG" | "EXP" | "SIN" | "COS" | "TAN" | "ASIN" | "ACOS" | "ATAN" => {
             one(G::Num, RealOfT)
         }
-        "EXPT" => sig(&[("IN1", T(G::Num)), ("IN2", Class(G::Num))], RealOfT),
+        "EXPT" => sig(&[("IN1", T(G::Num)), ("IN2", Class(G::Num))], Power),
         "ATAN2" => sig(&[("Y", T(G::Num)), ("X", T(G::Num))], RealOfT),
         "ADD" | "MUL" => extensible(
             &[("IN1", T(G::Magnitude)), ("IN2", T(G::Magnitude))],

@@ -84,11 +84,17 @@ fn cases() -> Vec<Case> {
             "l := EXP(LREAL#1.5);",
             vec![("l", Near(1.5f64.exp()))],
         ),
+        // EXPT and `**` are typed alike (`sema::ty::power_type`): LREAL from integers.
         case(
             "EXPT",
-            "r : REAL; l : LREAL;",
-            "r := EXPT(REAL#2.0, 0.5); l := EXPT(LREAL#1.5, 3);",
-            vec![("r", Near(2f64.sqrt())), ("l", Near(1.5f64.powi(3)))],
+            "l : LREAL; d : LREAL; r : REAL; x : LREAL; i : INT := 3; n : DINT := -2;",
+            "l := EXPT(2, 10); d := EXPT(i, 4); r := EXPT(REAL#2.0, 0.5); x := EXPT(LREAL#1.5, n);",
+            vec![
+                ("l", Near(1024.0)),
+                ("d", Near(81.0)),
+                ("r", Near(2f64.sqrt())),
+                ("x", Near(1.5f64.powi(-2))),
+            ],
         ),
         case(
             "SIN",
@@ -716,4 +722,40 @@ fn every_standard_function_and_block_compiles_runs_and_computes_its_value() {
         failures.len(),
         failures.join("\n")
     );
+}
+
+/// `a ** b` and `EXPT(a, b)` have one type (its size tells REAL from LREAL) and one value, for
+/// integer and real operands: REAL when every typed operand is REAL, LREAL otherwise.
+#[test]
+fn the_power_operator_and_expt_are_typed_alike() {
+    // (base type, base, exponent type, exponent, size of the result in bytes, result).
+    let table: &[(&str, &str, &str, &str, u32, f64)] = &[
+        ("INT", "2", "INT", "10", 8, 1024.0),
+        ("LINT", "3", "SINT", "3", 8, 27.0),
+        ("DINT", "2", "REAL", "0.5", 8, 2f64.sqrt()),
+        ("REAL", "1.5", "REAL", "2.0", 4, 2.25),
+        ("REAL", "4.0", "INT", "2", 8, 16.0),
+        ("LREAL", "2.0", "REAL", "-1.0", 8, 0.5),
+    ];
+    for (base_ty, base, exponent_ty, exponent, size, expected) in table {
+        let vars = format!(
+            "a : {base_ty} := {base}; b : {exponent_ty} := {exponent}; p : LREAL; q : LREAL; sp : UDINT; sq : UDINT;"
+        );
+        let body = "p := a ** b; q := EXPT(a, b); sp := SIZEOF(a ** b); sq := SIZEOF(EXPT(a, b));";
+        let vars: &'static str = Box::leak(vars.into_boxed_str());
+        let case = case(
+            "EXPT",
+            vars,
+            body,
+            vec![
+                ("p", Near(*expected)),
+                ("q", Near(*expected)),
+                ("sp", Is(leak(size))),
+                ("sq", Is(leak(size))),
+            ],
+        );
+        if let Err(error) = run_case(&case) {
+            panic!("{base_ty} ** {exponent_ty}: {error}");
+        }
+    }
 }

@@ -578,6 +578,20 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                 Some(Type::Error) | None => Type::Error,
                 Some(_) => Type::Elementary(Elementary::Lreal),
             },
+            Sig::Power => {
+                let of = |base: bool| {
+                    typed
+                        .iter()
+                        .find(|(sig, ..)| matches!(sig, Sig::T(_)) == base)
+                        .map(|(_, ty, _)| ty.clone())
+                };
+                match (of(true), of(false)) {
+                    (Some(base), Some(exponent)) => {
+                        power_type(&base, &exponent).unwrap_or(Type::Error)
+                    }
+                    _ => Type::Error,
+                }
+            }
             Sig::AnyInt => Type::IntLiteral(None),
             Sig::Pointer => Type::Pointer(Box::new(Type::Void)),
             Sig::Void => Type::Void,

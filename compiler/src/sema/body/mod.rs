@@ -20,7 +20,7 @@ use super::constant::{Const, evaluate, integer_value, parse_expression};
 use super::definition::{Definition, DefinitionKind, Resolution};
 use super::scope::{GlobalSymbol, LocalSymbol, Scope, inheritance_chain, is_visible_outside};
 use super::signatures::{self, FunctionSig, Sig};
-use super::ty::{DEFAULT_STRING_LENGTH, Type, common_type, implicitly_converts};
+use super::ty::{DEFAULT_STRING_LENGTH, Type, common_type, implicitly_converts, power_type};
 use super::types::Shape;
 use super::{closest, stdlib};
 use crate::diagnostic::{Code, Diagnostic};
