@@ -135,6 +135,10 @@ pub enum StdFunction {
     Find,
     /// Compares two strings character by character: -1, 0 or 1 (a DINT), for `=`, `<`, ….
     Compare,
+    /// `STRING_TO_WSTRING` (`wide` false) or `WSTRING_TO_STRING` (`wide` true): the one argument
+    /// has the width `wide` says and the result the other; a wide character above 255 has no
+    /// STRING character and is skipped.
+    Recode,
 }
 
 /// One instruction. A statement such as `x := a + b` is one instruction with three operands.

@@ -738,6 +738,23 @@ impl BodyGen<'_, '_, '_> {
                 });
                 Ok(dst)
             }
+            (
+                LayShape::Text {
+                    wide: from_wide,
+                    length: from_length,
+                },
+                LayShape::Text { length, .. },
+            ) => {
+                // STRING to WSTRING or back: the runtime recodes each character.
+                let dst = self.temp(to_lay.size);
+                self.emit(Instr::CallStdFunction {
+                    function: program_image::StdFunction::Recode,
+                    wide: *from_wide,
+                    dst: (dst, *length),
+                    args: vec![(operand, *from_length)],
+                });
+                Ok(dst)
+            }
             (LayShape::Pointer, LayShape::Pointer) => Ok(operand),
             _ if from_lay.size == to_lay.size => Ok(operand),
             _ => Err(fail!("cannot convert {from} to {to}")),
