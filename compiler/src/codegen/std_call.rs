@@ -200,6 +200,25 @@ impl BodyGen<'_, '_, '_> {
             "ATAN2" => Some(BinaryOp::Atan2),
             _ => None,
         };
+        // MAX, MIN and LIMIT of strings and BOOLs compare and keep, as the runtime's MIN and
+        // MAX instructions take numbers only.
+        let by_comparison = !matches!(self.scalar_of(&result_ty), Some(s) if s != IE::Bool);
+        if by_comparison && matches!(upper.as_str(), "MAX" | "MIN" | "LIMIT") {
+            let mut operands = Vec::new();
+            for value in &values {
+                operands.push(self.expr_as(value, &result_ty)?);
+            }
+            let dst = match (upper.as_str(), operands.as_slice()) {
+                ("MAX", _) => self.extreme(CompareOp::Gt, &operands, &result_ty)?,
+                ("MIN", _) => self.extreme(CompareOp::Lt, &operands, &result_ty)?,
+                (_, [mn, input, mx]) => {
+                    let low = self.extreme(CompareOp::Gt, &[*input, *mn], &result_ty)?;
+                    self.extreme(CompareOp::Lt, &[low, *mx], &result_ty)?
+                }
+                _ => return Err("LIMIT needs MN, IN and MX".into()),
+            };
+            return Ok(Some((dst, result_ty)));
+        }
         if let Some(op) = binary {
             let scalar = self
                 .scalar_of(&result_ty)
@@ -462,12 +481,92 @@ impl BodyGen<'_, '_, '_> {
         }
     }
 
+    /// The first of `operands` (values of `ty`) that no later one beats by `op` (`Gt` for MAX,
+    /// `Lt` for MIN), in a new temporary.
+    fn extreme(&mut self, op: CompareOp, operands: &[Operand], ty: &Type) -> Gen<Operand> {
+        let lay = self.lay(ty)?;
+        let dst = self.temp(lay.size);
+        let Some((first, rest)) = operands.split_first() else {
+            return Err(fail!("'{op:?}' of nothing"));
+        };
+        self.copy_value(&lay.shape, lay.size, dst, *first);
+        for next in rest {
+            let beats = self.compare_operands(op, *next, dst, ty)?;
+            let skip = self.emit(Instr::JumpIfNot {
+                cond: beats,
+                target: 0,
+            });
+            self.copy_value(&lay.shape, lay.size, dst, *next);
+            let end = self.here();
+            self.patch(skip, end);
+        }
+        Ok(dst)
+    }
+
+    /// `a op b` of two values of `ty` already evaluated: strings by their characters, other
+    /// values by the comparison instruction.
+    fn compare_operands(
+        &mut self,
+        op: CompareOp,
+        a: Operand,
+        b: Operand,
+        ty: &Type,
+    ) -> Gen<Operand> {
+        let dst = self.temp(1);
+        if let Type::String { wide, length } = ty {
+            let order = self.temp(4);
+            self.emit(Instr::CallStdFunction {
+                function: StdFunction::Compare,
+                wide: *wide,
+                dst: (order, 0),
+                args: vec![(a, *length), (b, *length)],
+            });
+            let zero = self.build.scalar_constant(0, IE::Dint);
+            self.emit(Instr::Compare {
+                op,
+                ty: IE::Dint,
+                dst,
+                a: order,
+                b: zero,
+            });
+            return Ok(dst);
+        }
+        let scalar = self
+            .scalar_of(ty)
+            .ok_or_else(|| fail!("comparing values of {ty}"))?;
+        self.emit(Instr::Compare {
+            op,
+            ty: scalar,
+            dst,
+            a,
+            b,
+        });
+        Ok(dst)
+    }
+
     /// `GT(a, b, c)` and the other comparison functions: IEC 61131-3 compares each input with
     /// the next and ANDs the results (`a > b AND b > c`).
     fn compare_chain(&mut self, op: CompareOp, values: &[Expr]) -> Gen<(Operand, Type)> {
+        if let [a, b] = values {
+            return self.compare(op, a, b);
+        }
+        // More than two: each input is evaluated once, in the type they all take.
+        let mut common: Option<Type> = None;
+        for value in values {
+            let ty = self.type_of(value);
+            common = Some(match common {
+                None => ty,
+                Some(before) => crate::sema::ty::common_type(&before, &ty).unwrap_or(before),
+            });
+        }
+        let common = concrete(&common.ok_or("a comparison needs inputs")?, None);
+        let mut operands = Vec::new();
+        for value in values {
+            operands.push(self.expr_as(value, &common)?);
+        }
         let mut result: Option<Operand> = None;
-        for pair in values.windows(2) {
-            let (value, _) = self.compare(op, &pair[0], &pair[1])?;
+        for pair in operands.windows(2) {
+            let value = self.compare_operands(op, pair[0], pair[1], &common)?;
             result = Some(match result {
                 None => value,
                 Some(before) => {

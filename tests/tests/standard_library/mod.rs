@@ -247,6 +247,18 @@ fn cases() -> Vec<Case> {
             vec![("i", Is("9")), ("r", Near(1.5)), ("t", Is("T#2s"))],
         ),
         case(
+            "MAX",
+            "s : STRING; x : BOOL; c : STRING;",
+            "s := MAX('abc', 'abd', 'ab'); x := MAX(FALSE, TRUE, FALSE); c := LIMIT('b', 'z', 'k');",
+            vec![("s", Is("'abd'")), ("x", Is("TRUE")), ("c", Is("'k'"))],
+        ),
+        case(
+            "MIN",
+            "s : STRING; x : BOOL;",
+            "s := MIN('b', 'ab', 'abc'); x := MIN(TRUE, FALSE);",
+            vec![("s", Is("'ab'")), ("x", Is("FALSE"))],
+        ),
+        case(
             "MIN",
             "i : INT; l : LREAL;",
             "i := MIN(3, 9, -2); l := MIN(LREAL#1.5, 0.5);",
@@ -266,9 +278,14 @@ fn cases() -> Vec<Case> {
         ),
         case(
             "GT",
-            "a : BOOL; b : BOOL;",
-            "a := GT(3, 2); b := GT(REAL#1.0, 2.0);",
-            vec![("a", Is("TRUE")), ("b", Is("FALSE"))],
+            "a : BOOL; b : BOOL; c : BOOL; d : BOOL;",
+            "a := GT(3, 2); b := GT(REAL#1.0, 2.0); c := GT('c', 'b', 'a'); d := GT(3, 1, 2);",
+            vec![
+                ("a", Is("TRUE")),
+                ("b", Is("FALSE")),
+                ("c", Is("TRUE")),
+                ("d", Is("FALSE")),
+            ],
         ),
         case(
             "GE",
