@@ -829,3 +829,35 @@ fn every_conversion_the_checker_accepts_compiles_and_runs() {
         failures.join("\n")
     );
 }
+
+/// CODESYS's RTC counts whole seconds from PDT while EN is TRUE, with its outputs also read
+/// through `=>`, and falls back to DT#1970-01-01-00:00:00 when EN goes FALSE.
+#[test]
+fn rtc_counts_seconds_from_its_preset_and_resets_when_disabled() {
+    let source =
+        "PROGRAM main VAR c : RTC; n : INT; enable : BOOL; stamp : DT; running : BOOL; END_VAR
+        n := n + 1; enable := n <= 151;
+        c(EN := enable, PDT := DT#2024-12-31-23:59:59, Q => running, CDT => stamp);
+        END_PROGRAM";
+    let image = match compiler::compile_source(&compiler::SourceProject::new(source), "test.st") {
+        Ok(image) => image,
+        Err(compiler::CompileError::Diagnostics(found)) => {
+            let errors: Vec<String> = found.iter().map(|d| d.diagnostic.message.clone()).collect();
+            panic!("RTC does not check: {errors:?}")
+        }
+        Err(error) => panic!("RTC does not compile: {error}"),
+    };
+    let mut simulation = Simulation::new(image).unwrap();
+    // Cycles every 10 ms: the 151st is 1.5 s after the first, the rising edge of EN.
+    simulation.run(151);
+    let read = |simulation: &Simulation, path: &str| {
+        runtime::value::read(simulation.engine(), path)
+            .unwrap()
+            .to_string()
+    };
+    assert_eq!(read(&simulation, "main.stamp"), "DT#2025-01-01-00:00:00");
+    assert_eq!(read(&simulation, "main.running"), "TRUE");
+    simulation.run(1);
+    assert_eq!(read(&simulation, "main.c.CDT"), "DT#1970-01-01-00:00:00");
+    assert_eq!(read(&simulation, "main.c.Q"), "FALSE");
+}
