@@ -81,6 +81,9 @@ codes! {
     DuplicateConnectionSource = "E0127", Error, "CFC connection mark name given to two sources";
     InvalidCfcElement = "E0128", Error, "CFC element that cannot be compiled";
     ConnectionLoop = "E0129", Error, "CFC connection marks that feed only each other";
+    RetiredOperator = "E0130", Error, "Operator that CODESYS V3 no longer compiles";
+    SystemOperatorUnavailable = "E0131", Error, "CODESYS system operator the runtime does not provide";
+    BitAddressWithoutLocation = "E0132", Error, "BITADR of something without a direct address";
     UnusedVariable = "W0001", Warning, "Variable never used";
     UnassignedVariable = "W0002", Warning, "Variable read but never written";
     OverlappingAddresses = "W0003", Warning, "Located variables overlap";

@@ -72,6 +72,8 @@ pub enum BinaryOp {
     Shr,
     Rol,
     Ror,
+    /// The angle of the point (`b`, `a`) in radians, `ATAN2(Y := a, X := b)`; reals only.
+    Atan2,
 }
 
 /// Comparisons, giving BOOL.
@@ -112,6 +114,8 @@ pub enum StdBlock {
     FTrig,
     Sr,
     Rs,
+    /// CODESYS's run-time clock: the date and time counted on from `PDT`.
+    Rtc,
 }
 
 /// The standard functions on strings and times that are more than one instruction; the runtime
@@ -131,6 +135,10 @@ pub enum StdFunction {
     Find,
     /// Compares two strings character by character: -1, 0 or 1 (a DINT), for `=`, `<`, ….
     Compare,
+    /// `STRING_TO_WSTRING` (`wide` false) or `WSTRING_TO_STRING` (`wide` true): the one argument
+    /// has the width `wide` says and the result the other; a wide character above 255 has no
+    /// STRING character and is skipped.
+    Recode,
 }
 
 /// One instruction. A statement such as `x := a + b` is one instruction with three operands.

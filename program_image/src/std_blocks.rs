@@ -2,7 +2,7 @@
 //! (`docs/program-image.md` §7.3): the compiler places inputs and outputs where the runtime
 //! reads and writes them.
 
-use crate::Elementary::{self, Bool, Int, Lint, Ltime, Time, Usint};
+use crate::Elementary::{self, Bool, DateAndTime, Int, Lint, Ltime, Time, Usint};
 use crate::code::StdBlock;
 
 /// One member of a standard function block's instance.
@@ -53,6 +53,7 @@ impl StdBlock {
             "F_TRIG" => (Self::FTrig, false),
             "SR" => (Self::Sr, false),
             "RS" => (Self::Rs, false),
+            "RTC" => (Self::Rtc, false),
             _ => return None,
         })
     }
@@ -107,6 +108,14 @@ pub fn layout(block: StdBlock, long: bool) -> StdLayout {
         }
         StdBlock::Sr => &[("S1", Bool, true), ("R", Bool, true), ("Q1", Bool, false)],
         StdBlock::Rs => &[("S", Bool, true), ("R1", Bool, true), ("Q1", Bool, false)],
+        // `_START` is the task clock at the rising edge of EN, in nanoseconds.
+        StdBlock::Rtc => &[
+            ("EN", Bool, true),
+            ("PDT", DateAndTime, true),
+            ("Q", Bool, false),
+            ("CDT", DateAndTime, false),
+            ("_START", Lint, false),
+        ],
     };
     let mut members = Vec::with_capacity(list.len());
     let mut offset = 0u32;

@@ -444,7 +444,13 @@ impl ProgramImage {
                             "instruction {word}: {function:?} gives the wrong kind of result"
                         ));
                     }
-                    operand(dst.0, size(dst.1), word)?;
+                    // A recoded string's result has the other width.
+                    let dst_size = if *function == StdFunction::Recode && dst.1 != 0 {
+                        (u64::from(dst.1) + 1) * (3 - unit)
+                    } else {
+                        size(dst.1)
+                    };
+                    operand(dst.0, dst_size, word)?;
                     for (arg, capacity) in args {
                         operand(*arg, size(*capacity), word)?;
                     }

@@ -15,6 +15,9 @@ mod sfc_chart;
 /// CFC charts compiled and run: execution order, feedback, marks, structures, EN/ENO, jumps.
 mod cfc;
 
+/// Every standard function and function block compiled, run and checked against its value.
+mod standard_library;
+
 use program_image::ProgramImage;
 use runtime::simulation::Simulation;
 

@@ -96,17 +96,24 @@ impl<'p> BodyGen<'_, '_, 'p> {
                 })
                 .and_then(|a| a.value.clone())
         };
-        let (enable, enabled_out) = (named("EN"), named("ENO"));
+        let callee = self.callee(&callee_node)?;
+        // CODESYS's RTC declares EN as its own input: there it is an argument, not the enable.
+        let en_is_input = matches!(
+            &callee,
+            Callee::Instance(typed)
+                if matches!(typed.lay.shape, LayShape::Std(program_image::StdBlock::Rtc, _))
+        );
+        let enable = named("EN").filter(|_| !en_is_input);
+        let enabled_out = named("ENO");
         let args: Vec<Argument> = all
             .iter()
             .filter(|a| {
-                !a.formal
-                    .as_deref()
-                    .is_some_and(|f| f.eq_ignore_ascii_case("EN") || f.eq_ignore_ascii_case("ENO"))
+                !a.formal.as_deref().is_some_and(|f| {
+                    f.eq_ignore_ascii_case("EN") && !en_is_input || f.eq_ignore_ascii_case("ENO")
+                })
             })
             .cloned()
             .collect();
-        let callee = self.callee(&callee_node)?;
         // EN = FALSE skips the call (a result reads as zero) and ENO tells whether it ran.
         let skip = match &enable {
             Some(condition) => {

@@ -58,6 +58,8 @@ fn string_value(text: &str) -> Vec<u16> {
     let inner = text
         .get(1..text.len().saturating_sub(1))
         .unwrap_or_default();
+    // IEC 61131-3: `$hh` in a STRING, `$hhhh` in a WSTRING (written between double quotes).
+    let hex_digits = if text.starts_with('"') { 4 } else { 2 };
     let mut out = Vec::new();
     let mut chars = inner.chars().peekable();
     while let Some(c) = chars.next() {
@@ -73,7 +75,8 @@ fn string_value(text: &str) -> Vec<u16> {
             Some('P' | 'p') => out.push(12),
             Some(hex) if hex.is_ascii_hexdigit() => {
                 let mut digits = String::from(hex);
-                while digits.len() < 2 && chars.peek().is_some_and(char::is_ascii_hexdigit) {
+                while digits.len() < hex_digits && chars.peek().is_some_and(char::is_ascii_hexdigit)
+                {
                     digits.extend(chars.next());
                 }
                 out.push(u16::from_str_radix(&digits, 16).unwrap_or(0));

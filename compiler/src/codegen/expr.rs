@@ -738,6 +738,23 @@ impl BodyGen<'_, '_, '_> {
                 });
                 Ok(dst)
             }
+            (
+                LayShape::Text {
+                    wide: from_wide,
+                    length: from_length,
+                },
+                LayShape::Text { length, .. },
+            ) => {
+                // STRING to WSTRING or back: the runtime recodes each character.
+                let dst = self.temp(to_lay.size);
+                self.emit(Instr::CallStdFunction {
+                    function: program_image::StdFunction::Recode,
+                    wide: *from_wide,
+                    dst: (dst, *length),
+                    args: vec![(operand, *from_length)],
+                });
+                Ok(dst)
+            }
             (LayShape::Pointer, LayShape::Pointer) => Ok(operand),
             _ if from_lay.size == to_lay.size => Ok(operand),
             _ => Err(fail!("cannot convert {from} to {to}")),
@@ -930,65 +947,7 @@ impl BodyGen<'_, '_, '_> {
             _ => None,
         };
         if let Some(op) = compare {
-            let (lt, rt) = (self.type_of(&left), self.type_of(&right));
-            // A bit string compared with a number (which only the CODESYS dialect lets through
-            // the checker) is compared in the type their arithmetic has.
-            let common = common_type(&lt, &rt)
-                .or_else(|| bit_string_arithmetic(&lt, &rt))
-                .unwrap_or(lt);
-            let ty = concrete(&common, None);
-            let sides = [self.type_of(&left), self.type_of(&right)];
-            if sides.iter().any(|t| matches!(t, Type::Pointer(_))) {
-                // Pointers compare as addresses; a literal on the other side is an address too.
-                let mut operands = Vec::new();
-                for node in [&left, &right] {
-                    let operand = match evaluate_node(node, self.scope.globals) {
-                        Some(Value::Int(v)) => self.build.scalar_constant(v as u64, IE::Lword),
-                        _ => self.expr(node, None)?.0,
-                    };
-                    operands.push(operand);
-                }
-                let dst = self.temp(1);
-                self.emit(Instr::Compare {
-                    op,
-                    ty: IE::Lword,
-                    dst,
-                    a: operands[0],
-                    b: operands[1],
-                });
-                return Ok((dst, Type::BOOL));
-            }
-            if let Some(interface) = sides.into_iter().find(|t| self.interface_of(t).is_some()) {
-                // Interfaces compare by the instance they point to (`itf <> 0`).
-                let a = self.interface_value(&left, &interface)?;
-                let b = self.interface_value(&right, &interface)?;
-                let dst = self.temp(1);
-                self.emit(Instr::Compare {
-                    op,
-                    ty: IE::Lword,
-                    dst,
-                    a,
-                    b,
-                });
-                return Ok((dst, Type::BOOL));
-            }
-            if let Type::String { wide, .. } = ty {
-                return self.compare_strings(op, &left, &right, wide);
-            }
-            let scalar = self
-                .scalar_of(&ty)
-                .ok_or_else(|| fail!("comparing values of type {ty} is not supported yet"))?;
-            let a = self.expr_as(&left, &ty)?;
-            let b = self.expr_as(&right, &ty)?;
-            let dst = self.temp(1);
-            self.emit(Instr::Compare {
-                op,
-                ty: scalar,
-                dst,
-                a,
-                b,
-            });
-            return Ok((dst, Type::BOOL));
+            return self.compare(op, &left, &right);
         }
         if matches!(operator, K::AND_THEN | K::OR_ELSE) {
             let dst = self.temp(1);
@@ -1054,6 +1013,75 @@ impl BodyGen<'_, '_, '_> {
             b,
         });
         Ok((dst, ty))
+    }
+
+    /// `left op right` for a comparison operator or function: pointers and interfaces compare
+    /// as addresses, strings by their characters, other values in their common type.
+    pub(crate) fn compare(
+        &mut self,
+        op: CompareOp,
+        left: &Expr,
+        right: &Expr,
+    ) -> Gen<(Operand, Type)> {
+        let (lt, rt) = (self.type_of(left), self.type_of(right));
+        // A bit string compared with a number (which only the CODESYS dialect lets through
+        // the checker) is compared in the type their arithmetic has.
+        let common = common_type(&lt, &rt)
+            .or_else(|| bit_string_arithmetic(&lt, &rt))
+            .unwrap_or(lt);
+        let ty = concrete(&common, None);
+        let sides = [self.type_of(left), self.type_of(right)];
+        if sides.iter().any(|t| matches!(t, Type::Pointer(_))) {
+            // Pointers compare as addresses; a literal on the other side is an address too.
+            let mut operands = Vec::new();
+            for node in [&left, &right] {
+                let operand = match evaluate_node(node, self.scope.globals) {
+                    Some(Value::Int(v)) => self.build.scalar_constant(v as u64, IE::Lword),
+                    _ => self.expr(node, None)?.0,
+                };
+                operands.push(operand);
+            }
+            let dst = self.temp(1);
+            self.emit(Instr::Compare {
+                op,
+                ty: IE::Lword,
+                dst,
+                a: operands[0],
+                b: operands[1],
+            });
+            return Ok((dst, Type::BOOL));
+        }
+        if let Some(interface) = sides.into_iter().find(|t| self.interface_of(t).is_some()) {
+            // Interfaces compare by the instance they point to (`itf <> 0`).
+            let a = self.interface_value(left, &interface)?;
+            let b = self.interface_value(right, &interface)?;
+            let dst = self.temp(1);
+            self.emit(Instr::Compare {
+                op,
+                ty: IE::Lword,
+                dst,
+                a,
+                b,
+            });
+            return Ok((dst, Type::BOOL));
+        }
+        if let Type::String { wide, .. } = ty {
+            return self.compare_strings(op, left, right, wide);
+        }
+        let scalar = self
+            .scalar_of(&ty)
+            .ok_or_else(|| fail!("comparing values of type {ty} is not supported yet"))?;
+        let a = self.expr_as(left, &ty)?;
+        let b = self.expr_as(right, &ty)?;
+        let dst = self.temp(1);
+        self.emit(Instr::Compare {
+            op,
+            ty: scalar,
+            dst,
+            a,
+            b,
+        });
+        Ok((dst, Type::BOOL))
     }
 
     /// `a op b` on strings: the runtime compares them, the result is compared with 0.

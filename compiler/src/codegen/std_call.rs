@@ -162,6 +162,7 @@ impl BodyGen<'_, '_, '_> {
             "ASIN" => Some(UnaryOp::Asin),
             "ACOS" => Some(UnaryOp::Acos),
             "ATAN" => Some(UnaryOp::Atan),
+            "ROUND" => Some(UnaryOp::Round),
             "NOT" => Some(UnaryOp::Not),
             "NEG" => Some(UnaryOp::Neg),
             _ => None,
@@ -196,8 +197,28 @@ impl BodyGen<'_, '_, '_> {
             "SHR" => Some(BinaryOp::Shr),
             "ROL" => Some(BinaryOp::Rol),
             "ROR" => Some(BinaryOp::Ror),
+            "ATAN2" => Some(BinaryOp::Atan2),
             _ => None,
         };
+        // MAX, MIN and LIMIT of strings and BOOLs compare and keep, as the runtime's MIN and
+        // MAX instructions take numbers only.
+        let by_comparison = !matches!(self.scalar_of(&result_ty), Some(s) if s != IE::Bool);
+        if by_comparison && matches!(upper.as_str(), "MAX" | "MIN" | "LIMIT") {
+            let mut operands = Vec::new();
+            for value in &values {
+                operands.push(self.expr_as(value, &result_ty)?);
+            }
+            let dst = match (upper.as_str(), operands.as_slice()) {
+                ("MAX", _) => self.extreme(CompareOp::Gt, &operands, &result_ty)?,
+                ("MIN", _) => self.extreme(CompareOp::Lt, &operands, &result_ty)?,
+                (_, [mn, input, mx]) => {
+                    let low = self.extreme(CompareOp::Gt, &[*input, *mn], &result_ty)?;
+                    self.extreme(CompareOp::Lt, &[low, *mx], &result_ty)?
+                }
+                _ => return Err("LIMIT needs MN, IN and MX".into()),
+            };
+            return Ok(Some((dst, result_ty)));
+        }
         if let Some(op) = binary {
             let scalar = self
                 .scalar_of(&result_ty)
@@ -220,6 +241,18 @@ impl BodyGen<'_, '_, '_> {
                 acc = dst;
             }
             return Ok(Some((acc, result_ty)));
+        }
+        let comparison = match upper.as_str() {
+            "GT" => Some(CompareOp::Gt),
+            "GE" => Some(CompareOp::Ge),
+            "EQ" => Some(CompareOp::Eq),
+            "LE" => Some(CompareOp::Le),
+            "LT" => Some(CompareOp::Lt),
+            "NE" => Some(CompareOp::Ne),
+            _ => None,
+        };
+        if let Some(op) = comparison {
+            return self.compare_chain(op, &values).map(Some);
         }
         if let Some(op) = time_arithmetic(&upper) {
             return self.time_arithmetic(op, &values, &result_ty).map(Some);
@@ -378,11 +411,59 @@ impl BodyGen<'_, '_, '_> {
                 });
                 Ok(Some((dst, result_ty)))
             }
-            "ADR" => {
-                let pointer = self.address_of(&first()?)?;
+            "ADR" | "ADRINST" => {
+                let pointer = match values.first() {
+                    Some(value) => self.address_of(value)?,
+                    // `ADRINST()` in a function block's body or method: its own instance.
+                    None => {
+                        let dst = self.temp(8);
+                        self.emit(Instr::Address {
+                            dst,
+                            place: Operand::Instance(0),
+                        });
+                        dst
+                    }
+                };
                 Ok(Some((pointer, result_ty)))
             }
-            "SIZEOF" => {
+            "BITADR" => {
+                // The bit offset in the variable's %I, %Q or %M area, as CODESYS gives it
+                // with byte addressing (`%IX2.3` is 19); the checker lets only those through.
+                let typed = self.place(&first()?)?;
+                let bit_offset = match typed.place {
+                    Place::Direct(
+                        Operand::Input(byte) | Operand::Output(byte) | Operand::Memory(byte),
+                    ) => u64::from(byte) * 8,
+                    Place::Bit {
+                        operand:
+                            Operand::Input(byte) | Operand::Output(byte) | Operand::Memory(byte),
+                        bit,
+                        ..
+                    } => u64::from(byte) * 8 + u64::from(bit),
+                    _ => return Err(fail!("'BITADR' of something without a direct address")),
+                };
+                let scalar = self.scalar_of(&result_ty).unwrap_or(IE::Dword);
+                Ok(Some((
+                    self.build.scalar_constant(bit_offset, scalar),
+                    result_ty,
+                )))
+            }
+            "ISVALIDREF" | "__ISVALIDREF" => {
+                // A reference is valid when it points somewhere: its address is not 0.
+                let typed = self.place(&first()?)?;
+                let pointer = self.pointer_to(&typed)?;
+                let null = self.build.scalar_constant(0, IE::Lword);
+                let dst = self.temp(1);
+                self.emit(Instr::Compare {
+                    op: CompareOp::Ne,
+                    ty: IE::Lword,
+                    dst,
+                    a: pointer,
+                    b: null,
+                });
+                Ok(Some((dst, result_ty)))
+            }
+            "SIZEOF" | "XSIZEOF" => {
                 let arg = first()?;
                 let ty = self.type_of(&arg);
                 let size = self.lay(&ty)?.size;
@@ -400,6 +481,111 @@ impl BodyGen<'_, '_, '_> {
         }
     }
 
+    /// The first of `operands` (values of `ty`) that no later one beats by `op` (`Gt` for MAX,
+    /// `Lt` for MIN), in a new temporary.
+    fn extreme(&mut self, op: CompareOp, operands: &[Operand], ty: &Type) -> Gen<Operand> {
+        let lay = self.lay(ty)?;
+        let dst = self.temp(lay.size);
+        let Some((first, rest)) = operands.split_first() else {
+            return Err(fail!("'{op:?}' of nothing"));
+        };
+        self.copy_value(&lay.shape, lay.size, dst, *first);
+        for next in rest {
+            let beats = self.compare_operands(op, *next, dst, ty)?;
+            let skip = self.emit(Instr::JumpIfNot {
+                cond: beats,
+                target: 0,
+            });
+            self.copy_value(&lay.shape, lay.size, dst, *next);
+            let end = self.here();
+            self.patch(skip, end);
+        }
+        Ok(dst)
+    }
+
+    /// `a op b` of two values of `ty` already evaluated: strings by their characters, other
+    /// values by the comparison instruction.
+    fn compare_operands(
+        &mut self,
+        op: CompareOp,
+        a: Operand,
+        b: Operand,
+        ty: &Type,
+    ) -> Gen<Operand> {
+        let dst = self.temp(1);
+        if let Type::String { wide, length } = ty {
+            let order = self.temp(4);
+            self.emit(Instr::CallStdFunction {
+                function: StdFunction::Compare,
+                wide: *wide,
+                dst: (order, 0),
+                args: vec![(a, *length), (b, *length)],
+            });
+            let zero = self.build.scalar_constant(0, IE::Dint);
+            self.emit(Instr::Compare {
+                op,
+                ty: IE::Dint,
+                dst,
+                a: order,
+                b: zero,
+            });
+            return Ok(dst);
+        }
+        let scalar = self
+            .scalar_of(ty)
+            .ok_or_else(|| fail!("comparing values of {ty}"))?;
+        self.emit(Instr::Compare {
+            op,
+            ty: scalar,
+            dst,
+            a,
+            b,
+        });
+        Ok(dst)
+    }
+
+    /// `GT(a, b, c)` and the other comparison functions: IEC 61131-3 compares each input with
+    /// the next and ANDs the results (`a > b AND b > c`).
+    fn compare_chain(&mut self, op: CompareOp, values: &[Expr]) -> Gen<(Operand, Type)> {
+        if let [a, b] = values {
+            return self.compare(op, a, b);
+        }
+        // More than two: each input is evaluated once, in the type they all take.
+        let mut common: Option<Type> = None;
+        for value in values {
+            let ty = self.type_of(value);
+            common = Some(match common {
+                None => ty,
+                Some(before) => crate::sema::ty::common_type(&before, &ty).unwrap_or(before),
+            });
+        }
+        let common = concrete(&common.ok_or("a comparison needs inputs")?, None);
+        let mut operands = Vec::new();
+        for value in values {
+            operands.push(self.expr_as(value, &common)?);
+        }
+        let mut result: Option<Operand> = None;
+        for pair in operands.windows(2) {
+            let value = self.compare_operands(op, pair[0], pair[1], &common)?;
+            result = Some(match result {
+                None => value,
+                Some(before) => {
+                    let dst = self.temp(1);
+                    self.emit(Instr::Binary {
+                        op: BinaryOp::And,
+                        ty: IE::Bool,
+                        dst,
+                        a: before,
+                        b: value,
+                    });
+                    dst
+                }
+            });
+        }
+        let result = result.ok_or("a comparison needs two inputs")?;
+        Ok((result, Type::BOOL))
+    }
+
     /// `ADD_DT_TIME`, `SUB_DT_DT`, `CONCAT_DATE_TOD`…: every operand is taken to nanoseconds
     /// (LTIME), combined, and the result converted to the function's type, so units never
     /// mix.
@@ -415,7 +601,25 @@ impl BodyGen<'_, '_, '_> {
         let result = self.scalar_of(result_ty).ok_or("a time result")?;
         let nanos = Type::Elementary(Elementary::Ltime);
         if matches!(op, BinaryOp::Mul | BinaryOp::Div) {
-            // MUL_TIME and DIV_TIME scale a duration by a number.
+            // MUL_TIME and DIV_TIME scale a duration by a number; by a real, the duration
+            // is scaled as an LREAL of milliseconds and rounded back, as REAL_TO_TIME does.
+            let factor_ty = concrete(&self.type_of(b), None);
+            if self.scalar_of(&factor_ty).is_some_and(IE::is_real) {
+                let lreal = Type::Elementary(Elementary::Lreal);
+                let time = self.expr_as(a, result_ty)?;
+                let time = self.convert_explicit(time, result_ty, &lreal)?;
+                let factor = self.expr_as(b, &lreal)?;
+                let scaled = self.temp(8);
+                self.emit(Instr::Binary {
+                    op,
+                    ty: IE::Lreal,
+                    dst: scaled,
+                    a: time,
+                    b: factor,
+                });
+                let dst = self.convert_explicit(scaled, &lreal, result_ty)?;
+                return Ok((dst, result_ty.clone()));
+            }
             let time = self.expr_as(a, result_ty)?;
             let factor = self.expr_as(b, result_ty)?;
             let dst = self.temp(8);
@@ -590,6 +794,27 @@ impl BodyGen<'_, '_, '_> {
             }
             _ => ((self.temp(4), 0), Type::Elementary(Elementary::Dint)),
         };
+        if function == StdFunction::Concat && args.len() > 2 {
+            // The runtime joins two strings; more inputs join one after another, each
+            // partial result cut to the result's length as the whole would be.
+            let mut joined = args[0];
+            for (index, next) in args.iter().enumerate().skip(1) {
+                let into = if index + 1 == args.len() {
+                    dst
+                } else {
+                    let lay = self.lay(&result_ty)?;
+                    (self.temp(lay.size), dst.1)
+                };
+                self.emit(Instr::CallStdFunction {
+                    function,
+                    wide,
+                    dst: into,
+                    args: vec![joined, *next],
+                });
+                joined = into;
+            }
+            return Ok((dst.0, result_ty));
+        }
         self.emit(Instr::CallStdFunction {
             function,
             wide,

@@ -33,8 +33,7 @@ use scope::{Globals, Scope};
 
 pub use complete::{Completion, completions};
 pub use definition::{Definition, DefinitionKind, Resolution};
-pub(crate) use stdlib::all_names;
-pub use stdlib::{is_built_in_type, is_function, is_function_block};
+pub use stdlib::{all_names, is_built_in_type, is_function, is_function_block};
 
 /// A finding about a project: where it is and what it is.
 #[derive(Clone, Debug, PartialEq, Eq)]

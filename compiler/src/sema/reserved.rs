@@ -90,7 +90,10 @@ pub(super) fn reserved_references(project: &Project) -> Vec<ProjectDiagnostic> {
         for token in tokens {
             let end = start + token.len as usize;
             let text = body.text.get(start..end).unwrap_or_default();
-            if token.kind == crate::syntax::SyntaxKind::IDENT && text.contains("__") {
+            // CODESYS's own `__ISVALIDREF`, `__XWORD`… are standard names, not the user's.
+            let standard =
+                super::stdlib::is_function(text) || super::stdlib::is_built_in_type(text);
+            if token.kind == crate::syntax::SyntaxKind::IDENT && text.contains("__") && !standard {
                 found.push(ProjectDiagnostic {
                     file: body.file.clone(),
                     declaration: None,

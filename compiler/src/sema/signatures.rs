@@ -19,6 +19,9 @@ pub(crate) enum Sig {
     T(Generic),
     /// A real result: the `T` type when it is real, `LREAL` otherwise.
     RealOfT,
+    /// `EXPT`'s result: `ty::power_type` of the `T` input (the base) and the other (the
+    /// exponent), as `**` is typed.
+    Power,
     /// An integer literal result that fits any integer place (`SIZEOF`).
     AnyInt,
     /// A pointer to anything (`ADR`).
@@ -67,7 +70,7 @@ pub(crate) fn function(name: &str) -> Option<FunctionSig> {
         "SQRT" | "LN" | "LOG" | "EXP" | "SIN" | "COS" | "TAN" | "ASIN" | "ACOS" | "ATAN" => {
             one(G::Num, RealOfT)
         }
-        "EXPT" => sig(&[("IN1", T(G::Num)), ("IN2", Class(G::Num))], RealOfT),
+        "EXPT" => sig(&[("IN1", T(G::Num)), ("IN2", Class(G::Num))], Power),
         "ATAN2" => sig(&[("Y", T(G::Num)), ("X", T(G::Num))], RealOfT),
         "ADD" | "MUL" => extensible(
             &[("IN1", T(G::Magnitude)), ("IN2", T(G::Magnitude))],
@@ -169,12 +172,8 @@ pub(crate) fn function(name: &str) -> Option<FunctionSig> {
 /// `A_TO_B`, `TO_B` and the BCD conversions.
 fn conversion(upper: &str) -> Option<FunctionSig> {
     use Sig::*;
-    let target = |name: &str| -> Option<Sig> {
-        match Elementary::from_name(name)? {
-            String | Wstring => Some(Str),
-            other => Some(E(other)),
-        }
-    };
+    // The result's width is the target's (`STRING_TO_WSTRING` gives a WSTRING), not the input's.
+    let target = |name: &str| -> Option<Sig> { Some(E(Elementary::from_name(name)?)) };
     if let Some(to) = upper.strip_prefix("TO_") {
         return Some(sig(&[("IN", Class(Generic::Elementary))], target(to)?));
     }
@@ -333,7 +332,11 @@ mod tests {
         let real_to_int = function("REAL_TO_INT").unwrap();
         assert_eq!(real_to_int.inputs[0].1, Sig::E(Real));
         assert_eq!(real_to_int.result, Sig::E(Int));
-        assert_eq!(function("TO_STRING").unwrap().result, Sig::Str);
+        assert_eq!(function("TO_STRING").unwrap().result, Sig::E(String));
+        assert_eq!(
+            function("STRING_TO_WSTRING").unwrap().result,
+            Sig::E(Wstring)
+        );
         assert_eq!(
             function("TIME_OF_DAY_TO_DINT").unwrap().inputs[0].1,
             Sig::E(TimeOfDay)

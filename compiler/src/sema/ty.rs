@@ -354,6 +354,29 @@ pub fn same_type(a: &Type, b: &Type) -> bool {
     }
 }
 
+/// The type of `base ** exponent` and of `EXPT(base, exponent)`, one rule for both: CODESYS
+/// gives a real ("Permitted data types for the return value: REAL and LREAL", its operator
+/// EXPT), REAL when every typed operand is REAL and LREAL otherwise (an integer power needs
+/// LREAL's 53 bits; TwinCAT's manual states `EXPT(real, INT#2)` is LREAL); two literals give a
+/// real literal. `None` when an operand is not a number.
+pub fn power_type(base: &Type, exponent: &Type) -> Option<Type> {
+    use Elementary::{Lreal, Real};
+    if !(base.is_numeric() && exponent.is_numeric()) {
+        return None;
+    }
+    let literal = |t: &Type| matches!(t, Type::IntLiteral(_) | Type::RealLiteral);
+    Some(match (literal(base), literal(exponent)) {
+        (true, true) => Type::RealLiteral,
+        _ if [base, exponent]
+            .iter()
+            .all(|t| literal(t) || t.as_elementary() == Some(Real)) =>
+        {
+            Type::Elementary(Real)
+        }
+        _ => Type::Elementary(Lreal),
+    })
+}
+
 /// The type both operands of an arithmetic or comparison operator take: the wider of the two
 /// when one widens to the other, the typed one when the other is a fitting literal.
 pub fn common_type(a: &Type, b: &Type) -> Option<Type> {

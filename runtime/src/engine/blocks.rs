@@ -45,6 +45,7 @@ pub(crate) fn lower(block: StdBlock, long: bool, instance: Addr, indirect: bool)
                     && (fb.bool(offsets.of("S"))? || fb.bool(offsets.of("Q1"))?);
                 fb.set_bool(offsets.of("Q1"), q)?;
             }
+            StdBlock::Rtc => fb.clock(&offsets)?,
         }
         Ok(Flow::Next)
     })
@@ -185,6 +186,31 @@ impl Instance<'_, '_> {
         let state = (u8::from(input) * PREVIOUS_IN) | (u8::from(running) * RUNNING);
         let at = self.addr(o.of("_STATE"));
         self.x.set::<u8>(at, state)
+    }
+
+    /// CODESYS's `RTC`: a rising edge of EN sets CDT to PDT and starts counting whole
+    /// seconds of the task clock; while EN stays TRUE, Q is TRUE and CDT counts on; EN FALSE
+    /// sets Q FALSE and CDT to DT#1970-01-01-00:00:00.
+    fn clock(&mut self, o: &Offsets) -> Result<(), FaultKind> {
+        let enabled = self.bool(o.of("EN"))?;
+        let running = self.bool(o.of("Q"))?;
+        let now = self.x.now_ns;
+        let start_at = self.addr(o.of("_START"));
+        let cdt_at = self.addr(o.of("CDT"));
+        if !enabled {
+            self.set_bool(o.of("Q"), false)?;
+            return self.x.set::<u32>(cdt_at, 0);
+        }
+        if !running {
+            self.x.set::<i64>(start_at, now)?;
+            self.set_bool(o.of("Q"), true)?;
+        }
+        let start = self.x.get::<i64>(start_at)?;
+        let preset = self.x.get::<u32>(self.addr(o.of("PDT")))?;
+        let seconds = now.saturating_sub(start).max(0) / 1_000_000_000;
+        // DT counts seconds in a u32 and wraps in 2106, as CODESYS's does.
+        self.x
+            .set::<u32>(cdt_at, preset.wrapping_add(seconds as u32))
     }
 
     fn counter(&mut self, block: StdBlock, o: &Offsets) -> Result<(), FaultKind> {

@@ -635,6 +635,13 @@ fn binary(op: BinaryOp, ty: E, dst: Addr, a: Addr, b: Addr) -> Result<Op, String
             | BinaryOp::Rol
             | BinaryOp::Ror
     );
+    if op == BinaryOp::Atan2 {
+        return match ty {
+            E::Real => Ok(real2::<f32>(dst, a, b, f64::atan2)),
+            E::Lreal => Ok(real2::<f64>(dst, a, b, f64::atan2)),
+            _ => Err(format!("{op:?} on {}", ty.name())),
+        };
+    }
     if bit_op {
         if ty.is_real() {
             return Err(format!("{op:?} on {}", ty.name()));
@@ -642,6 +649,14 @@ fn binary(op: BinaryOp, ty: E, dst: Addr, a: Addr, b: Addr) -> Result<Op, String
         return Ok(dispatch!(bits ty, bits2(op, dst, a, b)));
     }
     dispatch!(num ty, arith2(op, dst, a, b))
+}
+
+fn real2<T: Real>(dst: Addr, a: Addr, b: Addr, f: fn(f64, f64) -> f64) -> Op {
+    Box::new(move |x| {
+        let value = x.get::<T>(a)?.apply2(x.get::<T>(b)?, f);
+        x.set(dst, value)?;
+        Ok(Flow::Next)
+    })
 }
 
 fn bits2<T: Bits>(op: BinaryOp, dst: Addr, a: Addr, b: Addr) -> Op {

@@ -42,6 +42,7 @@ pub(crate) trait Bits: Scalar {
 /// Functions of reals.
 pub(crate) trait Real: Arith {
     fn apply(self, f: fn(f64) -> f64) -> Self;
+    fn apply2(self, other: Self, f: fn(f64, f64) -> f64) -> Self;
 }
 
 macro_rules! scalar {
@@ -180,6 +181,9 @@ macro_rules! real {
         }
         impl Real for $t {
             fn apply(self, f: fn(f64) -> f64) -> Self { f(f64::from(self)) as $t }
+            fn apply2(self, other: Self, f: fn(f64, f64) -> f64) -> Self {
+                f(f64::from(self), f64::from(other)) as $t
+            }
         }
     )*};
 }

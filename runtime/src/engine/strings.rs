@@ -86,6 +86,7 @@ pub(crate) fn lower(
         StdFunction::Concat | StdFunction::Find | StdFunction::Compare => &[true, true],
         StdFunction::Insert => &[true, true, false],
         StdFunction::Replace => &[true, true, false, false],
+        StdFunction::Recode => &[true],
     };
     let shape_ok = args.len() == expected.len()
         && args
@@ -95,10 +96,40 @@ pub(crate) fn lower(
     if !shape_ok {
         return Err(format!("{function:?} has the wrong arguments"));
     }
+    if function == StdFunction::Recode {
+        return Ok(recode(wide, dst, &args));
+    }
     Ok(if wide {
         run::<u16>(function, dst, args)
     } else {
         run::<u8>(function, dst, args)
+    })
+}
+
+/// `STRING_TO_WSTRING` (from narrow when `wide` is false) and `WSTRING_TO_STRING`: each
+/// character keeps its code; a wide one above 255 is skipped, as TwinCAT's WSTRING_TO_STRING2
+/// skips what it cannot convert.
+fn recode(wide: bool, dst: (Addr, u32), args: &[Arg]) -> Op {
+    let (dst, capacity) = (dst.0, dst.1 as usize);
+    let (src, src_capacity) = match args.first() {
+        Some(Arg::Text(at, capacity)) => (*at, *capacity),
+        _ => (dst, 0),
+    };
+    Box::new(move |x| {
+        if wide {
+            let text: Vec<u8> = u16::load(x, src, src_capacity)?
+                .into_iter()
+                .filter_map(|unit| u8::try_from(unit).ok())
+                .collect();
+            u8::store(x, dst, capacity, &text)?;
+        } else {
+            let text: Vec<u16> = u8::load(x, src, src_capacity)?
+                .into_iter()
+                .map(u16::from)
+                .collect();
+            u16::store(x, dst, capacity, &text)?;
+        }
+        Ok(Flow::Next)
     })
 }
 
@@ -136,6 +167,8 @@ fn run<C: Unit>(function: StdFunction, dst: (Addr, u32), args: Vec<Arg>) -> Op {
             StdFunction::Replace => {
                 string::replace(&text(x, 0)?, &text(x, 1)?, int(x, 2)?, int(x, 3)?)
             }
+            // Lowered by `recode` before `run` is reached.
+            StdFunction::Recode => return Ok(Flow::Next),
         };
         C::store(x, dst, capacity, &result)?;
         Ok(Flow::Next)

@@ -432,6 +432,10 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
         node: &SyntaxNode,
     ) -> Type {
         let upper = name.to_ascii_uppercase();
+        if let Some((code, message)) = self.refused_standard(&upper, arguments) {
+            self.error(code, range_of(node), message);
+            return Type::Error;
+        }
         // Arguments by position, or by formal name (`IN1 := …`).
         let mut typed: Vec<(Sig, Type, Expr)> = Vec::new();
         for (index, argument) in arguments.iter().enumerate() {
@@ -574,6 +578,20 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                 Some(Type::Error) | None => Type::Error,
                 Some(_) => Type::Elementary(Elementary::Lreal),
             },
+            Sig::Power => {
+                let of = |base: bool| {
+                    typed
+                        .iter()
+                        .find(|(sig, ..)| matches!(sig, Sig::T(_)) == base)
+                        .map(|(_, ty, _)| ty.clone())
+                };
+                match (of(true), of(false)) {
+                    (Some(base), Some(exponent)) => {
+                        power_type(&base, &exponent).unwrap_or(Type::Error)
+                    }
+                    _ => Type::Error,
+                }
+            }
             Sig::AnyInt => Type::IntLiteral(None),
             Sig::Pointer => Type::Pointer(Box::new(Type::Void)),
             Sig::Void => Type::Void,

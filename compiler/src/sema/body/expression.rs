@@ -761,23 +761,7 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                     None
                 }
             }
-            POWER => {
-                if !(left.is_numeric() && right.is_numeric()) {
-                    return None;
-                }
-                Some(match (left, right) {
-                    (
-                        Type::IntLiteral(_) | Type::RealLiteral,
-                        Type::IntLiteral(_) | Type::RealLiteral,
-                    ) => Type::RealLiteral,
-                    _ if left.as_elementary() == Some(Lreal)
-                        || right.as_elementary() == Some(Lreal) =>
-                    {
-                        Type::Elementary(Lreal)
-                    }
-                    _ => Type::Elementary(Real),
-                })
-            }
+            POWER => power_type(left, right),
             EQ | NEQ | LT | LE | GT | GE => {
                 let comparable = match (left, right) {
                     (Type::Named(a), Type::Named(b)) => {

@@ -7,6 +7,7 @@
 
 mod call;
 mod expression;
+mod refused_call;
 mod resolution;
 mod sfc;
 
@@ -21,7 +22,7 @@ use super::scope::{GlobalSymbol, LocalSymbol, Scope, inheritance_chain, is_visib
 use super::signatures::{self, FunctionSig, Sig};
 use super::ty::{
     DEFAULT_STRING_LENGTH, Type, bit_string_arithmetic, common_type, implicitly_converts,
-    lenient_integer_conversion, lenient_real_conversion, wrapped,
+    lenient_integer_conversion, lenient_real_conversion, power_type, wrapped,
 };
 use super::types::Shape;
 use super::{closest, stdlib};

@@ -238,7 +238,7 @@ pub(super) fn signature_detail(name: &str, signature: &FunctionSig) -> String {
         Sig::E(e) => e.name().to_owned(),
         Sig::Str => "STRING".to_owned(),
         Sig::Class(g) | Sig::T(g) => Type::Generic(*g).to_string(),
-        Sig::RealOfT => "ANY_REAL".to_owned(),
+        Sig::RealOfT | Sig::Power => "ANY_REAL".to_owned(),
         Sig::AnyInt => "ANY_INT".to_owned(),
         Sig::Pointer => "POINTER".to_owned(),
         Sig::Void => String::new(),
