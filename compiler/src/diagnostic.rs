@@ -84,6 +84,7 @@ codes! {
     RetiredOperator = "E0130", Error, "Operator that CODESYS V3 no longer compiles";
     SystemOperatorUnavailable = "E0131", Error, "CODESYS system operator the runtime does not provide";
     BitAddressWithoutLocation = "E0132", Error, "BITADR of something without a direct address";
+    OpenArrayOutsideInOut = "E0133", Error, "Array with open bounds outside a VAR_IN_OUT parameter";
     UnusedVariable = "W0001", Warning, "Variable never used";
     UnassignedVariable = "W0002", Warning, "Variable read but never written";
     OverlappingAddresses = "W0003", Warning, "Located variables overlap";

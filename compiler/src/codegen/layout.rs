@@ -257,8 +257,10 @@ impl<'g, 'p> Layouts<'g, 'p> {
                 let mut bounds = Vec::new();
                 for dim in dims {
                     let Some((low, high)) = dim else {
+                        // The checker refuses open bounds anywhere but a VAR_IN_OUT parameter
+                        // (E0133), which is laid out as a reference, never through here.
                         return Err(
-                            "arrays with open bounds (ARRAY[*]) are not supported yet".into()
+                            "an array with open bounds (ARRAY[*]) has no size of its own; only a VAR_IN_OUT parameter can be one (E0133)".into()
                         );
                     };
                     let (low, high) = (

@@ -594,6 +594,46 @@ fn overlapping_addresses(project: &Project, found: &mut Vec<ProjectDiagnostic>) 
     }
 }
 
+/// Reports `declared` (written as `text`) when it is an array with open bounds (E0133), which
+/// only a VAR_IN_OUT parameter of a function, function block or method may be.
+fn check_open_bounds(
+    globals: &Globals<'_>,
+    declared: &str,
+    text: &str,
+    report: &mut impl FnMut(&str, Diagnostic),
+) {
+    if has_open_bounds(globals, text) {
+        report(
+            declared,
+            Diagnostic::new(
+                Code::OpenArrayOutsideInOut,
+                0..0,
+                format!(
+                    "'{declared}' is an array with open bounds (ARRAY[*]), which only a VAR_IN_OUT of a function, function block or method can be: its bounds come from the array passed in"
+                ),
+            ),
+        );
+    }
+}
+
+/// Whether the type written `text` is an array with an open bound `*`: seen in the text of an
+/// array written in place (whose other bounds may name local constants, which the resolved
+/// type cannot tell from `*`), or in the resolved type of a named type (whose bounds are
+/// global).
+fn has_open_bounds(globals: &Globals<'_>, text: &str) -> bool {
+    let compact: String = text.chars().filter(|c| !c.is_whitespace()).collect();
+    if compact.contains('[') {
+        return compact.contains("[*") || compact.contains(",*");
+    }
+    fn open(ty: &ty::Type) -> bool {
+        match ty {
+            ty::Type::Array { element, dims } => dims.iter().any(Option::is_none) || open(element),
+            _ => false,
+        }
+    }
+    open(&globals.resolve_type(text))
+}
+
 fn check_variables<'p>(
     globals: &Globals<'p>,
     pou: Option<&'p Pou>,
@@ -605,6 +645,11 @@ fn check_variables<'p>(
     for variable in variables {
         check_type(globals, &variable.name, &variable.ty, report);
         let declared = globals.resolve_type(&variable.ty);
+        let in_out_parameter = variable.section == VarSection::VarInOut
+            && pou.is_none_or(|pou| pou.kind != PouKind::Program);
+        if !in_out_parameter {
+            check_open_bounds(globals, &variable.name, &variable.ty, report);
+        }
         if let Some(initial) = variable.initial.as_deref()
             && let Some(expression) = constant::parse_expression(initial)
         {
@@ -681,6 +726,7 @@ fn check_data_type(
             }
             for member in members {
                 check_type(globals, &member.name, &member.ty, report);
+                check_open_bounds(globals, &member.name, &member.ty, report);
             }
             duplicates(
                 members.iter().map(|m| m.name.as_str()),
@@ -692,6 +738,7 @@ fn check_data_type(
         TypeDefinition::Union { members } => {
             for member in members {
                 check_type(globals, &member.name, &member.ty, report);
+                check_open_bounds(globals, &member.name, &member.ty, report);
             }
             duplicates(
                 members.iter().map(|m| m.name.as_str()),

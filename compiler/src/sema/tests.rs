@@ -177,3 +177,49 @@ fn swapped_letters_count_as_one_edit() {
         Some("PT")
     );
 }
+
+#[test]
+fn an_array_with_open_bounds_is_refused_outside_a_var_in_out_parameter() {
+    use project_model::{DataType, StructMember, VarSection};
+    let open = |name: &str, section: VarSection| Variable {
+        section,
+        ..Variable::new(name, "ARRAY[*] OF INT")
+    };
+    let function = pou(
+        "F_Sum",
+        PouKind::Function,
+        vec![open("values", VarSection::VarInOut)],
+        "F_Sum := values[LOWER_BOUND(values, 1)];",
+    );
+    let program = pou(
+        "Main",
+        PouKind::Program,
+        vec![
+            open("local", VarSection::Var),
+            open("passed", VarSection::VarInOut),
+        ],
+        "local[0] := 1; passed[0] := 1;",
+    );
+    let structure = Node::Object(Object::DataType(DataType {
+        name: "ST_Open".into(),
+        comment: String::new(),
+        definition: project_model::TypeDefinition::Struct {
+            extends: None,
+            members: vec![StructMember {
+                name: "member".into(),
+                ty: "ARRAY[*, 0..1] OF INT".into(),
+                ..StructMember::default()
+            }],
+        },
+    }));
+    let found = messages(&project(vec![function, program, structure]));
+    let refused: Vec<&String> = found.iter().filter(|m| m.contains("E0133")).collect();
+    assert_eq!(refused.len(), 3, "{found:?}");
+    for name in ["'local'", "'passed'", "'member'"] {
+        assert!(
+            refused.iter().any(|m| m.contains(name)),
+            "{name} in {found:?}"
+        );
+    }
+    assert!(!refused.iter().any(|m| m.contains("'values'")), "{found:?}");
+}
