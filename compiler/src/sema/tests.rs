@@ -203,7 +203,7 @@ fn an_array_with_open_bounds_is_refused_outside_a_var_in_out_parameter() {
     let structure = Node::Object(Object::DataType(DataType {
         name: "ST_Open".into(),
         comment: String::new(),
-        definition: project_model::TypeDefinition::Struct {
+        definition: TypeDefinition::Struct {
             extends: None,
             members: vec![StructMember {
                 name: "member".into(),
