@@ -110,7 +110,6 @@ impl EngineView<'_> {
                 return Err(fault_record(image, task, kind, pou, instruction, cycle));
             }
         }
-        drop(exec);
         let data_start = regions.data;
         let data_end = data_start + image.layout.data_size as usize;
         if let Some(data) = self.memory.get_mut(data_start..data_end) {

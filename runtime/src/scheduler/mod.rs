@@ -325,3 +325,6 @@ type BetweenAction = Box<dyn FnOnce(&mut Between<'_>) + Send>;
 
 #[cfg(test)]
 mod tests;
+
+#[cfg(test)]
+mod preemption_tests;
