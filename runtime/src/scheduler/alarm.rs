@@ -71,6 +71,9 @@ impl Alarm {
                 self.shared.due.store(true, Ordering::Relaxed);
                 state.at = None;
             }
+            // The thread is woken only when the time changes: most cycles arm it for the
+            // same next start as the cycle before, and a wake-up costs a context switch.
+            _ if state.at == at => {}
             _ => {
                 state.at = at;
                 self.shared.changed.notify_one();

@@ -289,6 +289,43 @@ mod tests {
     }
 
     #[test]
+    fn time_spent_in_preempting_tasks_is_neither_cycle_time_nor_an_overrun() {
+        let mut watched = task(TaskKind::Cyclic, 10 * MS, 5);
+        watched.watchdog_ns = 2 * MS;
+        let mut plan = TaskPlan::new(&watched);
+        plan.start(0, false);
+        // 9 ms from start to end, 8 of them in tasks that interrupted it.
+        assert!(!plan.finish(0, 0, 9 * MS, 8 * MS, 0));
+        assert_eq!(plan.statistics.last_cycle_ns, MS);
+        assert_eq!(plan.statistics.consecutive_overruns, 0);
+        // The next start keeps the phase of the whole cycle, interruptions included.
+        assert_eq!(plan.next_start_ns(), Some(10 * MS));
+        assert!(plan.finish(10 * MS, 10 * MS, 19 * MS, 6 * MS, 0));
+    }
+
+    #[test]
+    fn only_tasks_that_may_preempt_are_picked_and_planned_for() {
+        let plans = started(&[
+            task(TaskKind::Cyclic, 10 * MS, 5),
+            task(TaskKind::Cyclic, 10 * MS, 1),
+            task(TaskKind::Cyclic, 10 * MS, 9),
+        ]);
+        let above =
+            |priority: u8| move |_: usize, plan: &TaskPlan| plan.statistics.priority < priority;
+        assert_eq!(pick_where(&plans, 0, above(5)), Some(1));
+        assert_eq!(pick_where(&plans, 0, above(1)), None);
+        assert_eq!(pick_where(&plans, 0, |index, _| index != 1), Some(0));
+        assert_eq!(
+            next_start_where(&plans, |plan| plan.statistics.priority < 9),
+            Some(0)
+        );
+        assert_eq!(
+            next_start_where(&plans, |plan| plan.statistics.priority < 1),
+            None
+        );
+    }
+
+    #[test]
     fn a_faulted_task_is_not_started_again() {
         let mut plan = TaskPlan::new(&task(TaskKind::Cyclic, 10 * MS, 1));
         plan.start(0, false);
