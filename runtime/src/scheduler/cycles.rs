@@ -69,6 +69,7 @@ impl Cycles<'_> {
         let cycle = plan.statistics.cycles;
         let priority = plan.statistics.priority;
         let interrupted = self.levels.last().map(|level| level.task);
+        let depth = self.levels.len();
         self.levels.push(Level {
             task,
             priority,
@@ -88,6 +89,9 @@ impl Cycles<'_> {
             }
             None => run_guarded(engine, task, started, cycle, None),
         };
+        // A panic of the scheduler's own code in a nested cycle unwinds to this cycle's guard
+        // without popping its levels; what is left of them belongs to no running cycle.
+        self.levels.truncate(depth + 1);
         self.forces.apply_to_view(engine);
         copy(engine.region(Region::Output), &mut self.areas.output);
         copy(engine.region(Region::Memory), &mut self.areas.memory);

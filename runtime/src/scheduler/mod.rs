@@ -245,7 +245,8 @@ impl Scheduler {
 
     /// Runs `action` on the scheduler's thread between two cycles (at once when stopped), with
     /// the located areas locked, and returns what it returns. It should be quick: no task runs
-    /// meanwhile.
+    /// meanwhile. With preemption, "between two cycles" means between two outermost cycles:
+    /// no cycle is interrupted then.
     pub fn between<T: Send + 'static>(
         &self,
         action: impl FnOnce(&mut Between<'_>) -> T + Send + 'static,
