@@ -207,22 +207,23 @@ fn iteration_ns() -> f64 {
 fn time_spent_in_preempting_tasks_does_not_count_against_the_watchdog() {
     let per_iteration = iteration_ns();
     let iterations = |ms: f64| (ms * 1e6 / per_iteration) as i32;
-    let watchdog_ns = 100 * MS;
-    // Task 0 sets the trigger of event task 1 and does about 5 ms of its own work under a
-    // 100 ms watchdog; task 1 interrupts it once with about 500 ms of work. The margins are
-    // wide both ways, as other tests load the machine meanwhile.
+    let watchdog_ns = 150 * MS;
+    // Task 0 sets the trigger of event task 1 and does about 20 ms of its own work under a
+    // 150 ms watchdog; task 1 interrupts it once (when the next look at the triggers finds the
+    // edge) with about 800 ms of work. The margins are wide both ways, as other tests load the
+    // machine meanwhile.
     let low = TestTask {
         watchdog_ns,
         watchdog_sensitivity: 1,
         body: Body::Watch {
-            iterations: iterations(5.0),
+            iterations: iterations(20.0),
             sets_trigger: true,
         },
         ..TestTask::cyclic(MINUTE, 10)
     };
     let high = TestTask {
         kind: TaskKind::Event,
-        ..watch(iterations(500.0), 0, 1)
+        ..watch(iterations(800.0), 0, 1)
     };
     let (options, records) = logged(true);
     let (scheduler, _areas) = scheduler(options);
