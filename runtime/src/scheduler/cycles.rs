@@ -44,8 +44,9 @@ pub(super) struct Cycles<'w> {
     pub(super) cycles_total: &'w mut u64,
     /// Where each cycle's record goes, if anywhere.
     pub(super) log: Option<&'w mpsc::Sender<CycleRecord>>,
-    /// The cycles in progress, outermost first.
-    pub(super) levels: Vec<Level>,
+    /// The cycles in progress, outermost first (empty between outermost cycles; kept by the
+    /// worker so that a cycle allocates nothing).
+    pub(super) levels: &'w mut Vec<Level>,
 }
 
 /// A cycle in progress.

@@ -6,11 +6,12 @@ use std::time::{Duration, Instant};
 use program_image::{ImageHash, Region};
 
 use super::alarm::Alarm;
-use super::cycles::{self, Cycles, copy};
+use super::cycles::{self, Cycles, Level, copy};
 use super::plan::{self, TaskPlan};
 use super::retain_writer::RetainWriter;
 use super::{
-    Between, Command, LoadReport, SchedulerError, SchedulerOptions, SchedulerState, SchedulerStatus,
+    Between, Command, LoadReport, PRIORITY_LEVELS, SchedulerError, SchedulerOptions,
+    SchedulerState, SchedulerStatus,
 };
 use crate::areas::LocatedAreas;
 use crate::engine::{Engine, ResetKind};
@@ -39,6 +40,8 @@ pub(super) struct Worker {
     /// Sets the preemption flag when a task of higher priority than the running one is due;
     /// `None` when preemption is off.
     alarm: Option<Alarm>,
+    /// The cycles in progress while one runs, lent to [`Cycles`].
+    levels: Vec<Level>,
 }
 
 /// A loaded program and the schedule of its tasks.
@@ -85,6 +88,7 @@ impl Worker {
             trace: Trace::default(),
             cycles_total: 0,
             alarm,
+            levels: Vec::with_capacity(PRIORITY_LEVELS),
         }
     }
 
@@ -190,7 +194,7 @@ impl Worker {
             event_poll_ns: duration_ns(self.options.event_poll_interval),
             cycles_total: &mut self.cycles_total,
             log: self.options.cycle_log.as_ref(),
-            levels: Vec::new(),
+            levels: &mut self.levels,
         };
         cycles.run(&mut program.engine.view(), task);
     }
