@@ -3,7 +3,8 @@
 //!
 //! Runs the real `Scheduler` on a compiled program with a 2 ms task (priority 1, a counter) and
 //! a 10 ms task (priority 10) whose cycle is a loop sized to about 5 ms of work on this machine,
-//! for some seconds with preemption off and then on, and prints the 2 ms task's start jitter
+//! for some seconds with preemption off and then on (each sleeping until a start, then spinning
+//! the last 200 µs before it), and prints the 2 ms task's start jitter
 //! (median, 95th and 99th percentile, maximum) from the scheduler's cycle log. The figures
 //! depend on the machine and its load (printed first); nothing is asserted.
 
@@ -85,10 +86,11 @@ fn percentile(sorted: &[u64], p: f64) -> u64 {
 }
 
 /// Runs the image for [`RUN`] and returns the cycle log.
-fn run(image: &ProgramImage, preemption: bool) -> Vec<CycleRecord> {
+fn run(image: &ProgramImage, preemption: bool, spin: Duration) -> Vec<CycleRecord> {
     let (log, records) = mpsc::channel();
     let options = SchedulerOptions {
         preemption,
+        spin_before_start: spin,
         cycle_log: Some(log),
         ..SchedulerOptions::default()
     };
@@ -119,8 +121,14 @@ fn main() {
         "| preemption | 2 ms cycles | jitter p50 | jitter p95 | jitter p99 | jitter max | nested | 10 ms own cycle (mean) |"
     );
     println!("|---|---:|---:|---:|---:|---:|---:|---:|");
-    for preemption in [false, true] {
-        let records = run(&image, preemption);
+    let spin = Duration::from_micros(200);
+    for (preemption, spin) in [
+        (false, Duration::ZERO),
+        (true, Duration::ZERO),
+        (false, spin),
+        (true, spin),
+    ] {
+        let records = run(&image, preemption, spin);
         let mut jitter: Vec<u64> = records
             .iter()
             .filter(|record| record.task == 0)
@@ -139,8 +147,13 @@ fn main() {
         let slow_mean = slow.iter().sum::<u64>() / slow.len().max(1) as u64;
         let us = |ns: u64| format!("{:.0} µs", ns as f64 / 1e3);
         println!(
-            "| {} | {} | {} | {} | {} | {} | {} | {:.2} ms |",
+            "| {}{} | {} | {} | {} | {} | {} | {} | {:.2} ms |",
             if preemption { "on" } else { "off" },
+            if spin.is_zero() {
+                String::new()
+            } else {
+                format!(", spinning {} µs", spin.as_micros())
+            },
             jitter.len(),
             us(percentile(&jitter, 50.0)),
             us(percentile(&jitter, 95.0)),

@@ -9,7 +9,7 @@
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Arc, Condvar, Mutex, MutexGuard, PoisonError};
 use std::thread::JoinHandle;
-use std::time::Instant;
+use std::time::{Duration, Instant};
 
 /// A handle on the alarm's thread; dropping it ends the thread.
 pub(super) struct Alarm {
@@ -23,6 +23,10 @@ struct Shared {
     due: AtomicBool,
     state: Mutex<State>,
     changed: Condvar,
+    /// How long before the armed time the thread stops sleeping and yields the processor in
+    /// a loop instead (as the scheduler does before a start): a sleep wakes late by the
+    /// system's timer slack and wake-up latency.
+    spin: Duration,
 }
 
 struct State {
@@ -33,9 +37,9 @@ struct State {
 }
 
 impl Alarm {
-    /// Starts the alarm's thread, disarmed; `None` when the system refuses a thread (then
-    /// the scheduler runs without preemption).
-    pub(super) fn spawn() -> Option<Self> {
+    /// Starts the alarm's thread, disarmed, spinning `spin` before each armed time; `None` when
+    /// the system refuses a thread (then the scheduler runs without preemption).
+    pub(super) fn spawn(spin: Duration) -> Option<Self> {
         let shared = Arc::new(Shared {
             due: AtomicBool::new(false),
             state: Mutex::new(State {
@@ -43,6 +47,7 @@ impl Alarm {
                 quit: false,
             }),
             changed: Condvar::new(),
+            spin,
         });
         let watched = Arc::clone(&shared);
         let thread = std::thread::Builder::new()
@@ -106,8 +111,16 @@ impl Shared {
                         state.at = None;
                         continue;
                     }
+                    let wait = at - now;
+                    if wait <= self.spin {
+                        // Unlocked meanwhile, so the scheduler can arm it again.
+                        drop(state);
+                        std::thread::yield_now();
+                        state = self.lock();
+                        continue;
+                    }
                     self.changed
-                        .wait_timeout(state, at - now)
+                        .wait_timeout(state, wait - self.spin)
                         .unwrap_or_else(PoisonError::into_inner)
                         .0
                 }
@@ -123,6 +136,47 @@ impl Drop for Alarm {
         if let Some(thread) = self.thread.take() {
             // The thread only waits and stores a flag; it has nothing to report.
             let _ = thread.join();
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn is_set(alarm: &Alarm) -> bool {
+        alarm.due().load(Ordering::Relaxed)
+    }
+
+    /// Waits until the flag is set, for at most ten seconds.
+    fn wait_until_set(alarm: &Alarm) {
+        let start = Instant::now();
+        while !is_set(alarm) {
+            assert!(
+                start.elapsed() < Duration::from_secs(10),
+                "the alarm never rang"
+            );
+            std::thread::sleep(Duration::from_millis(1));
+        }
+    }
+
+    #[test]
+    fn the_flag_is_set_at_the_armed_time_and_cleared_by_arming_again() {
+        for spin in [Duration::ZERO, Duration::from_micros(200)] {
+            let alarm = Alarm::spawn(spin).unwrap();
+            assert!(!is_set(&alarm));
+            // A time that has passed sets the flag at once.
+            alarm.arm(Some(Instant::now()));
+            assert!(is_set(&alarm));
+            alarm.arm(None);
+            assert!(!is_set(&alarm));
+            alarm.arm(Some(Instant::now() + Duration::from_millis(2)));
+            wait_until_set(&alarm);
+            // Armed far away, then nearer: the nearer time counts.
+            alarm.arm(Some(Instant::now() + Duration::from_secs(3600)));
+            assert!(!is_set(&alarm));
+            alarm.arm(Some(Instant::now() + Duration::from_millis(2)));
+            wait_until_set(&alarm);
         }
     }
 }

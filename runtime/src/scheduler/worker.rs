@@ -68,7 +68,7 @@ impl Worker {
             lock(&report_status).retain_problem = problem;
         });
         let alarm = if options.preemption {
-            Alarm::spawn()
+            Alarm::spawn(options.spin_before_start)
         } else {
             None
         };
