@@ -5,7 +5,9 @@
 //! count at `8 * i + 8`. A task may instead run the "slow" program, which counts a `DINT` at
 //! the end of the data region up to the value of `%MD0`, so a test sets its duration through
 //! the located areas. A counting task also copies the sequence number to `%MD(2 + i)` and its
-//! cycle count to `%QD(i)`, where tests see them through the shared areas.
+//! cycle count to `%QD(i)`, where tests see them through the shared areas. A "watching" task
+//! loops a fixed number of times, with its own counter, and notes the sequence counter before
+//! and after its loop: a task that interrupted it shows as a difference.
 
 use program_image::{
     BinaryOp, CompareOp, Elementary, Instr, Layout, Operand, Pou, PouKind, ProgramCall,
@@ -42,7 +44,30 @@ pub(crate) enum Body {
     Count,
     /// Loops `%MD0` times.
     Slow,
+    /// Notes the sequence counter at [`seen_at_start`], loops `iterations` times (counting in
+    /// [`watch_counter`]), notes the sequence counter again at [`seen_at_end`], and counts its
+    /// own cycles; it leaves the sequence counter alone. With `sets_trigger`, it sets the
+    /// event trigger `%MX4.0` (by writing 1 to `%MD1`) instead of the first note.
+    Watch { iterations: i32, sets_trigger: bool },
 }
+
+/// Where watching task `task` notes the sequence counter before its loop.
+pub(crate) fn seen_at_start(task: usize) -> u32 {
+    WATCH_SLOTS + 16 * task as u32
+}
+
+/// Where watching task `task` notes the sequence counter after its loop.
+pub(crate) fn seen_at_end(task: usize) -> u32 {
+    seen_at_start(task) + 4
+}
+
+/// The loop counter of watching task `task`.
+pub(crate) fn watch_counter(task: usize) -> u32 {
+    seen_at_start(task) + 8
+}
+
+/// Where the watching tasks' slots start in the data region, past everything else.
+const WATCH_SLOTS: u32 = 1024;
 
 /// A task of a test image.
 #[derive(Clone, Debug)]
@@ -75,8 +100,15 @@ pub(crate) fn image(tasks: &[TestTask], retained: &[(u32, u32)]) -> ProgramImage
     let task_count = tasks.len() as u32;
     let loop_counter = count(tasks.len());
     let flag = loop_counter + 4;
-    let data_size = flag + 4;
+    let data_size = seen_at_start(tasks.len()).max(flag + 4);
     let one = Operand::Const(0);
+    let iterations: Vec<i32> = tasks
+        .iter()
+        .map(|task| match task.body {
+            Body::Watch { iterations, .. } => iterations,
+            Body::Count | Body::Slow => 0,
+        })
+        .collect();
     let pous = tasks
         .iter()
         .enumerate()
@@ -124,6 +156,50 @@ pub(crate) fn image(tasks: &[TestTask], retained: &[(u32, u32)]) -> ProgramImage
                     add_one(Operand::Global(count(index)), one),
                     Instr::Return,
                 ],
+                Body::Watch { sets_trigger, .. } => {
+                    let counter = Operand::Global(watch_counter(index));
+                    let done = Operand::Global(watch_counter(index) + 4);
+                    let (first, value) = if sets_trigger {
+                        (Operand::Memory(4), Operand::Const(0))
+                    } else {
+                        (
+                            Operand::Global(seen_at_start(index)),
+                            Operand::Global(SEQUENCE),
+                        )
+                    };
+                    vec![
+                        Instr::Move {
+                            ty: Elementary::Dint,
+                            dst: first,
+                            src: value,
+                        },
+                        Instr::Move {
+                            ty: Elementary::Dint,
+                            dst: counter,
+                            src: Operand::Const(4),
+                        },
+                        Instr::Compare {
+                            op: CompareOp::Ge,
+                            ty: Elementary::Dint,
+                            dst: done,
+                            a: counter,
+                            b: Operand::Const(8 + 4 * index as u32),
+                        },
+                        Instr::JumpIf {
+                            cond: done,
+                            target: 6,
+                        },
+                        add_one(counter, one),
+                        Instr::Jump { target: 2 },
+                        Instr::Move {
+                            ty: Elementary::Dint,
+                            dst: Operand::Global(seen_at_end(index)),
+                            src: Operand::Global(SEQUENCE),
+                        },
+                        add_one(Operand::Global(count(index)), one),
+                        Instr::Return,
+                    ]
+                }
             };
             Pou {
                 name: format!("Program{index}"),
@@ -171,7 +247,12 @@ pub(crate) fn image(tasks: &[TestTask], retained: &[(u32, u32)]) -> ProgramImage
             flags: SymbolFlags(SymbolFlags::LOCATED | SymbolFlags::GLOBAL),
         }],
         pous,
-        constants: [1_i32.to_le_bytes(), 0_i32.to_le_bytes()].concat(),
+        // 1, 0, then the iterations of each watching task.
+        constants: [1_i32, 0]
+            .into_iter()
+            .chain(iterations)
+            .flat_map(i32::to_le_bytes)
+            .collect(),
         tasks,
         retain: RetainLayout {
             retain: retained.to_vec(),

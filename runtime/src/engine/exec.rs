@@ -1,12 +1,19 @@
 //! The execution state of one task while its programs run: memory, the current instance and
 //! frame, the stack pointer, the task clock and the watchdog.
 
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Instant;
+
+use program_image::ProgramImage;
 
 use super::fault::FaultKind;
 use super::lower::{Compiled, Flow};
 use super::memory::Regions;
 use super::scalar::Scalar;
+use super::view::{EngineView, Preempt};
+
+/// The flag of a cycle that nothing may interrupt: never set.
+pub(super) static NEVER_DUE: AtomicBool = AtomicBool::new(false);
 
 /// Which base an [`Addr`] is relative to.
 pub(crate) const ABSOLUTE: u8 = 0;
@@ -52,6 +59,12 @@ pub(crate) struct Exec<'a> {
     pub(crate) stack_end: usize,
     pub(crate) regions: &'a Regions,
     pub(crate) code: &'a Compiled,
+    /// The image, lent with the memory to a task that interrupts this cycle.
+    image: &'a ProgramImage,
+    /// Set when a task of higher priority may be due; read at every safe point.
+    due: &'a AtomicBool,
+    /// Runs the tasks that interrupt this cycle; `None` when nothing may.
+    hook: Option<&'a mut dyn Preempt>,
     /// The task clock in nanoseconds, read by the timers.
     pub(crate) now_ns: i64,
     pub(crate) deadline: Option<(Instant, u64)>,
@@ -66,17 +79,24 @@ pub(crate) struct Exec<'a> {
 }
 
 impl<'a> Exec<'a> {
-    /// An execution over `mem` whose stack starts at `stack_start`.
+    /// An execution over `mem` whose stack starts at `stack_start`; with a `hook`, tasks of
+    /// higher priority may interrupt it at its safe points when `due` is set.
+    #[allow(clippy::too_many_arguments)]
     pub(crate) fn new(
         mem: &'a mut [u8],
+        image: &'a ProgramImage,
         regions: &'a Regions,
         code: &'a Compiled,
         (stack_start, stack_end): (usize, usize),
         now_ns: i64,
         deadline: Option<(Instant, u64)>,
         motion: &'a mut super::native::MotionState,
+        (due, hook): (&'a AtomicBool, Option<&'a mut dyn Preempt>),
     ) -> Self {
         Self {
+            image,
+            due,
+            hook,
             mem,
             bases: [0, 0, stack_start],
             sp: stack_start,
@@ -143,9 +163,11 @@ impl<'a> Exec<'a> {
         self.regions.resolve(pointer, size, self.stack_end)
     }
 
-    /// Counts a backward jump, and looks at the clock every so often.
+    /// Counts a backward jump, and looks at the clock every so often. A safe point: a task of
+    /// higher priority that is due runs here.
     #[inline(always)]
     pub(crate) fn tick(&mut self) -> Result<(), FaultKind> {
+        self.safe_point();
         self.budget -= 1;
         if self.budget == 0 {
             self.budget = WATCHDOG_STRIDE;
@@ -156,6 +178,36 @@ impl<'a> Exec<'a> {
             }
         }
         Ok(())
+    }
+
+    /// Lets the tasks of higher priority that are due run, when the alarm says one may be.
+    #[inline(always)]
+    fn safe_point(&mut self) {
+        if self.due.load(Ordering::Relaxed) {
+            self.preempt();
+        }
+    }
+
+    /// Lends the memory to the scheduler, which runs the due tasks of higher priority on it,
+    /// and moves the watchdog's deadline by the time they took: the watchdog counts this
+    /// cycle's own time.
+    #[cold]
+    #[inline(never)]
+    fn preempt(&mut self) {
+        let Some(hook) = self.hook.as_deref_mut() else {
+            return;
+        };
+        let paused = Instant::now();
+        hook.preempt(EngineView {
+            image: self.image,
+            regions: self.regions,
+            code: self.code,
+            memory: &mut *self.mem,
+            motion: &mut *self.motion,
+        });
+        if let Some((deadline, _)) = &mut self.deadline {
+            *deadline += paused.elapsed();
+        }
     }
 
     /// Runs POU `index` with the current bases.
@@ -190,7 +242,9 @@ impl<'a> Exec<'a> {
     }
 
     /// Pushes a frame for POU `index`, initialised from its template, and returns its start.
+    /// Every call does, so this is a safe point.
     pub(crate) fn push_frame(&mut self, index: usize) -> Result<usize, FaultKind> {
+        self.safe_point();
         let code = self.code;
         let pou = code.pous.get(index).ok_or(FaultKind::Memory)?;
         let frame = self.sp;

@@ -2,7 +2,9 @@
 //!
 //! The image's code is lowered once at load time ([`lower`]) into closures over resolved
 //! operands; [`Engine::run_cycle`] runs one task's programs and turns a fault into a
-//! [`FaultRecord`] naming the POU and source line.
+//! [`FaultRecord`] naming the POU and source line. [`EngineView`] lends the code and memory to
+//! the scheduler, whose [`Preempt`] hook runs the cycles of higher-priority tasks at the safe
+//! points of an interrupted one (`docs/scheduler.md`).
 
 mod blocks;
 mod carry;
@@ -13,8 +15,7 @@ mod memory;
 mod native;
 mod scalar;
 mod strings;
-
-use std::time::{Duration, Instant};
+mod view;
 
 use program_image::{InitRun, ProgramImage, Region};
 
@@ -22,8 +23,9 @@ pub use carry::carry_retained;
 pub use fault::{FaultKind, FaultRecord};
 pub use lower::LowerError;
 pub use native::MotionLoadError;
+pub use view::{EngineView, Preempt, Preemption};
 
-use exec::Exec;
+pub(crate) use exec::NATIVE_STACK_BUDGET;
 use lower::Compiled;
 use memory::Regions;
 
@@ -143,86 +145,28 @@ impl Engine {
     }
 
     /// Runs one cycle of task `task` at task time `now_ns`: its programs in order. A fault
-    /// stops the cycle where it happened and is returned with its place.
+    /// stops the cycle where it happened and is returned with its place. Nothing interrupts
+    /// it (the scheduler runs cycles through [`EngineView::run_cycle`] to let tasks preempt).
     // A fault is rare and ends the task, so its record need not be boxed to keep `Ok` small.
     #[allow(clippy::result_large_err)]
     pub fn run_cycle(&mut self, task: usize, now_ns: i64, cycle: u64) -> Result<(), FaultRecord> {
-        let Some(info) = self.image.tasks.get(task) else {
-            return Ok(());
-        };
-        // Without a watchdog a task still cannot hang the runtime: ten seconds ends it.
-        let limit_ns = if info.watchdog_ns > 0 {
-            info.watchdog_ns
-                .saturating_mul(u64::from(info.watchdog_sensitivity.max(1)))
-        } else {
-            10_000_000_000
-        };
-        let deadline = Some((
-            Instant::now() + Duration::from_nanos(limit_ns),
-            limit_ns / 1000,
-        ));
-        let (stack_start, stack_end) = self.regions.stack(task);
-        let mut exec = Exec::new(
-            &mut self.memory,
-            &self.regions,
-            &self.code,
-            (stack_start, stack_end),
-            now_ns,
-            deadline,
-            &mut self.motion,
-        );
-        for call in &info.programs {
-            let instance = self.regions.data + call.instance_offset as usize;
-            if let Err(kind) = exec.call_block(call.pou as usize, instance) {
-                let (pou, instruction) = exec.fault_at.unwrap_or((call.pou as usize, 0));
-                return Err(self.fault_record(task, kind, pou, instruction, cycle));
-            }
-        }
-        let interval_ns = info.interval_ns;
-        let data_start = self.regions.data;
-        let data_end = data_start + self.image.layout.data_size as usize;
-        if let Some(data) = self.memory.get_mut(data_start..data_end) {
-            self.motion.after_cycle(task, now_ns, interval_ns, data);
-        }
-        Ok(())
+        self.view().run_cycle(task, now_ns, cycle, None)
     }
 
-    fn fault_record(
-        &self,
-        task: usize,
-        kind: FaultKind,
-        pou: usize,
-        instruction: usize,
-        cycle: u64,
-    ) -> FaultRecord {
-        let image = &self.image;
-        let info = image.pous.get(pou);
-        let entry = info.and_then(|p| {
-            p.lines
-                .iter()
-                .take_while(|entry| entry.index as usize <= instruction)
-                .last()
-        });
-        FaultRecord {
-            task: image
-                .tasks
-                .get(task)
-                .map(|t| t.name.clone())
-                .unwrap_or_default(),
-            kind,
-            pou: info.map(|p| p.name.clone()).unwrap_or_default(),
-            file: entry.and_then(|e| image.sources.get(e.file as usize).cloned()),
-            line: entry.map(|e| e.line),
-            instruction: instruction as u32,
-            cycle,
+    /// The code and memory, borrowed together, to run cycles on.
+    pub fn view(&mut self) -> EngineView<'_> {
+        EngineView {
+            image: &self.image,
+            regions: &self.regions,
+            code: &self.code,
+            memory: &mut self.memory,
+            motion: &mut self.motion,
         }
     }
 
     /// The bytes of a region.
     pub fn region(&self, region: Region) -> &[u8] {
-        let start = self.regions.start(region);
-        let size = self.image.region_size(region) as usize;
-        self.memory.get(start..start + size).unwrap_or_default()
+        view::region_bytes(&self.image, &self.regions, &self.memory, region)
     }
 
     /// The bytes of a region, writable.

@@ -6,7 +6,7 @@ use online_protocol::Place;
 
 use super::place::PlaceAccess;
 use crate::areas::LocatedAreas;
-use crate::engine::Engine;
+use crate::engine::{Engine, EngineView};
 
 /// The forced places and their values, in the order they were forced; lives in the
 /// scheduler's thread, is cleared by a download and an origin reset, and is never saved.
@@ -46,6 +46,11 @@ impl Forces {
 
     /// Writes the forced values into the engine's memory.
     pub fn apply_to_engine(&self, engine: &mut Engine) {
+        self.apply_to_view(&mut engine.view());
+    }
+
+    /// Writes the forced values into the memory of a running or interrupted cycle.
+    pub fn apply_to_view(&self, engine: &mut EngineView<'_>) {
         for (place, value) in &self.entries {
             if let Some(region) = place.region_of() {
                 place.write_into(value, engine.region_mut(region));

@@ -12,14 +12,19 @@
 //!   comes and goes between two looks is missed).
 //!
 //! When several tasks are due, the one with the highest priority (0 highest, 31 lowest) runs
-//! first, then the one planned earliest. There is no preemption: a cycle, once started, runs to
-//! its end (or its watchdog abort) before any other task starts, so a long cycle of a
-//! low-priority task delays a high-priority one by up to its own length, which shows in that
-//! task's jitter.
+//! first, then the one planned earliest. A task that becomes due while a task of strictly lower
+//! priority runs interrupts that cycle at its next safe point (a backward jump or a call), runs
+//! its own cycle on the same memory, and the interrupted cycle goes on; such cycles nest, one
+//! level per distinct priority. A small alarm thread sets the flag the interpreter reads at its
+//! safe points. [`SchedulerOptions::preemption`] turns this off. `docs/scheduler.md` describes
+//! the model: safe points, nesting, data shared between tasks, watchdog and statistics.
 //!
-//! A cycle copies `%I`, `%Q` and `%M` from the shared [`LocatedAreas`] into the engine, runs the
-//! task's programs, and copies `%Q` and `%M` back, all with the areas locked, so a Modbus request
-//! always sees them between two cycles.
+//! The outermost cycle copies `%I`, `%Q` and `%M` from the shared [`LocatedAreas`] into the
+//! engine, runs the task's programs, and copies `%Q` and `%M` back, all with the areas locked, so
+//! a Modbus request always sees them between two outermost cycles; a cycle that interrupts it
+//! does not copy them in again. Forces, the trace and the statistics work per cycle, nested or
+//! not; a task's cycle time and its watchdog count its own time, without the cycles that
+//! interrupted it.
 //!
 //! The watchdog has two parts. The engine aborts a cycle that runs longer than `watchdog_ns ×
 //! watchdog_sensitivity`; the scheduler counts cycles that ran longer than `watchdog_ns` but
@@ -33,7 +38,10 @@
 //! runs, the scheduler only copies the retained bytes between two cycles; a thread of its own
 //! writes them, so the disk never delays a task.
 
+mod alarm;
+mod cycles;
 mod plan;
+mod record;
 mod retain_writer;
 mod statistics;
 mod worker;
@@ -50,6 +58,7 @@ use crate::engine::{Engine, FaultRecord, LoadError, ResetKind};
 use crate::online::{Forces, Memory, Trace};
 use crate::retain::{RetainError, RetainRestore};
 
+pub use record::CycleRecord;
 pub use statistics::TaskStatistics;
 
 /// What the scheduler is doing.
@@ -76,8 +85,15 @@ pub struct SchedulerOptions {
     pub event_poll_interval: Duration,
     /// How long before a planned start the scheduler stops sleeping and yields the processor
     /// in a loop instead: less start jitter (a sleep wakes late by the system's timer slack and
-    /// wake-up latency) for that much busy time per cycle. Zero always sleeps.
+    /// wake-up latency) for that much busy time per cycle. Zero always sleeps. The preemption
+    /// alarm does the same before the start of a task that interrupts another.
     pub spin_before_start: Duration,
+    /// Whether a task of higher priority that becomes due interrupts a running cycle of a
+    /// lower one at its next safe point (`docs/scheduler.md`); off, every cycle runs to its end.
+    pub preemption: bool,
+    /// Where to send a record of every finished cycle (for measurements such as the jitter
+    /// benchmark); the channel is unbounded, so its receiver must keep reading.
+    pub cycle_log: Option<mpsc::Sender<CycleRecord>>,
 }
 
 /// A snapshot of the scheduler's state, statistics and faults.
@@ -96,6 +112,16 @@ pub struct SchedulerStatus {
     /// Why the last periodic save of retained values failed; `None` once one succeeds.
     pub retain_problem: Option<String>,
 }
+
+/// The native stack of the scheduler's thread: a cycle may use
+/// [`crate::engine::NATIVE_STACK_BUDGET`] and, with preemption, cycles nest one level per
+/// distinct priority (32), each with the same budget, plus room for the scheduler itself. Only
+/// the pages touched are ever backed by memory.
+const SCHEDULER_STACK_BYTES: usize =
+    PRIORITY_LEVELS * (crate::engine::NATIVE_STACK_BUDGET + 64 * 1024) + 2 * 1024 * 1024;
+
+/// How many distinct priorities there are (0 to 31).
+const PRIORITY_LEVELS: usize = 32;
 
 /// How many fault records the status keeps.
 pub const MAX_FAULTS: usize = 64;
@@ -150,7 +176,8 @@ pub struct Scheduler {
 
 impl Default for SchedulerOptions {
     /// No data directory; retained values saved every second; a freewheeling task pauses
-    /// 500 µs; event triggers looked at every millisecond at least; no spinning.
+    /// 500 µs; event triggers looked at every millisecond at least; no spinning; preemption on;
+    /// no cycle log.
     fn default() -> Self {
         Self {
             data_dir: None,
@@ -158,6 +185,8 @@ impl Default for SchedulerOptions {
             freewheeling_pause: Duration::from_micros(500),
             event_poll_interval: Duration::from_millis(1),
             spin_before_start: Duration::ZERO,
+            preemption: true,
+            cycle_log: None,
         }
     }
 }
@@ -180,6 +209,7 @@ impl Scheduler {
         let worker = worker::Worker::new(areas, Arc::clone(&status), options);
         let thread = std::thread::Builder::new()
             .name("rivet-scheduler".to_owned())
+            .stack_size(SCHEDULER_STACK_BYTES)
             .spawn(move || worker.run(&received))
             .map_err(|_| SchedulerError::Gone)?;
         Ok(Self {
@@ -216,7 +246,8 @@ impl Scheduler {
 
     /// Runs `action` on the scheduler's thread between two cycles (at once when stopped), with
     /// the located areas locked, and returns what it returns. It should be quick: no task runs
-    /// meanwhile.
+    /// meanwhile. With preemption, "between two cycles" means between two outermost cycles:
+    /// no cycle is interrupted then.
     pub fn between<T: Send + 'static>(
         &self,
         action: impl FnOnce(&mut Between<'_>) -> T + Send + 'static,
@@ -296,3 +327,6 @@ type BetweenAction = Box<dyn FnOnce(&mut Between<'_>) + Send>;
 
 #[cfg(test)]
 mod tests;
+
+#[cfg(test)]
+mod preemption_tests;

@@ -73,9 +73,10 @@ impl TaskPlan {
         self.trigger_was_set = set;
     }
 
-    /// Records a cycle planned at `planned_ns` that ran from `started_ns` to `ended_ns`, and
-    /// plans the next one. Returns `true` when the cycle was the `watchdog_sensitivity`-th in
-    /// a row to run longer than the watchdog time, which faults the task.
+    /// Records a cycle planned at `planned_ns` that ran from `started_ns` to `ended_ns`, of
+    /// which `preempted_ns` went to tasks that interrupted it, and plans the next one. Returns
+    /// `true` when the cycle was the `watchdog_sensitivity`-th in a row whose own time (without
+    /// the interruptions) was longer than the watchdog time, which faults the task.
     ///
     /// A cyclic task keeps its phase: its next start is the first planned start after this one
     /// that has not passed by more than an interval, so a task that overran starts its next
@@ -86,9 +87,12 @@ impl TaskPlan {
         planned_ns: u64,
         started_ns: u64,
         ended_ns: u64,
+        preempted_ns: u64,
         pause_ns: u64,
     ) -> bool {
-        let cycle_ns = ended_ns.saturating_sub(started_ns);
+        let cycle_ns = ended_ns
+            .saturating_sub(started_ns)
+            .saturating_sub(preempted_ns);
         self.statistics
             .record(cycle_ns, started_ns.saturating_sub(planned_ns));
         self.next_start_ns = match self.kind {
@@ -118,9 +122,19 @@ impl TaskPlan {
 /// The task to run at `now_ns`: among those due, the highest priority (lowest number), then the
 /// one planned earliest, then the first in the task table.
 pub(crate) fn pick(plans: &[TaskPlan], now_ns: u64) -> Option<usize> {
+    pick_where(plans, now_ns, |_, _| true)
+}
+
+/// As [`pick`], among the tasks `allowed` accepts (given their index and plan).
+pub(crate) fn pick_where(
+    plans: &[TaskPlan],
+    now_ns: u64,
+    allowed: impl Fn(usize, &TaskPlan) -> bool,
+) -> Option<usize> {
     plans
         .iter()
         .enumerate()
+        .filter(|(index, plan)| allowed(*index, plan))
         .filter_map(|(index, plan)| {
             let planned = plan.next_start_ns?;
             (planned <= now_ns).then_some((plan.statistics.priority, planned, index))
@@ -131,7 +145,19 @@ pub(crate) fn pick(plans: &[TaskPlan], now_ns: u64) -> Option<usize> {
 
 /// The earliest planned start of any task.
 pub(crate) fn next_start_ns(plans: &[TaskPlan]) -> Option<u64> {
-    plans.iter().filter_map(TaskPlan::next_start_ns).min()
+    next_start_where(plans, |_| true)
+}
+
+/// The earliest planned start of the tasks `allowed` accepts.
+pub(crate) fn next_start_where(
+    plans: &[TaskPlan],
+    allowed: impl Fn(&TaskPlan) -> bool,
+) -> Option<u64> {
+    plans
+        .iter()
+        .filter(|plan| allowed(plan))
+        .filter_map(TaskPlan::next_start_ns)
+        .min()
 }
 
 #[cfg(test)]
@@ -182,7 +208,7 @@ mod tests {
         while let Some(index) = pick(&plans, now) {
             order.push(index);
             let planned = plans[index].next_start_ns().unwrap();
-            plans[index].finish(planned, now, now + MS / 10, MS);
+            plans[index].finish(planned, now, now + MS / 10, 0, MS);
             now += MS / 10;
         }
         // Equal priorities go by table order; the freewheeling task comes last at priority 31.
@@ -196,7 +222,7 @@ mod tests {
             task(TaskKind::Cyclic, 10 * MS, 9),
             task(TaskKind::Cyclic, 10 * MS, 1),
         ]);
-        plans[1].finish(0, 0, MS, 0);
+        plans[1].finish(0, 0, MS, 0, 0);
         plans[1].stop();
         plans[1].start(15 * MS, false);
         assert_eq!(pick(&plans, 15 * MS), Some(1));
@@ -206,14 +232,14 @@ mod tests {
     fn a_cyclic_task_keeps_its_phase_and_drops_missed_cycles() {
         let mut plan = TaskPlan::new(&task(TaskKind::Cyclic, 10 * MS, 1));
         plan.start(0, false);
-        assert!(!plan.finish(0, 200_000, 2 * MS, 0));
+        assert!(!plan.finish(0, 200_000, 2 * MS, 0, 0));
         assert_eq!(plan.next_start_ns(), Some(10 * MS));
         assert_eq!(plan.statistics.last_jitter_ns, 200_000);
         // A cycle that ends 2.5 intervals after its planned start: the cycle planned at 20 ms
         // is dropped, the one planned at 30 ms starts at once.
-        plan.finish(10 * MS, 10 * MS, 35 * MS, 0);
+        plan.finish(10 * MS, 10 * MS, 35 * MS, 0, 0);
         assert_eq!(plan.next_start_ns(), Some(30 * MS));
-        plan.finish(30 * MS, 35 * MS, 36 * MS, 0);
+        plan.finish(30 * MS, 35 * MS, 36 * MS, 0, 0);
         assert_eq!(plan.next_start_ns(), Some(40 * MS));
         assert_eq!(plan.statistics.max_jitter_ns, 5 * MS);
         assert_eq!(plan.statistics.cycles, 3);
@@ -223,7 +249,7 @@ mod tests {
     fn a_freewheeling_task_pauses_between_cycles() {
         let mut plan = TaskPlan::new(&task(TaskKind::Freewheeling, 0, 1));
         plan.start(0, false);
-        plan.finish(0, 0, 3 * MS, MS / 2);
+        plan.finish(0, 0, 3 * MS, 0, MS / 2);
         assert_eq!(plan.next_start_ns(), Some(3 * MS + MS / 2));
     }
 
@@ -237,7 +263,7 @@ mod tests {
         plan.observe_trigger(false, 2 * MS);
         plan.observe_trigger(true, 3 * MS);
         assert_eq!(plan.next_start_ns(), Some(3 * MS));
-        plan.finish(3 * MS, 3 * MS + 10, 4 * MS, 0);
+        plan.finish(3 * MS, 3 * MS + 10, 4 * MS, 0, 0);
         assert_eq!(plan.next_start_ns(), None);
         plan.observe_trigger(true, 5 * MS);
         assert_eq!(plan.next_start_ns(), None);
@@ -251,7 +277,7 @@ mod tests {
         watched.watchdog_sensitivity = 3;
         let mut plan = TaskPlan::new(&watched);
         plan.start(0, false);
-        let mut run = |start: u64, length: u64| plan.finish(start, start, start + length, 0);
+        let mut run = |start: u64, length: u64| plan.finish(start, start, start + length, 0, 0);
         assert!(!run(0, 3 * MS));
         assert!(!run(10 * MS, 3 * MS));
         // A cycle within the watchdog time starts the count again.
@@ -260,6 +286,43 @@ mod tests {
         assert!(!run(40 * MS, 5 * MS));
         assert!(run(50 * MS, 5 * MS));
         assert_eq!(plan.statistics.consecutive_overruns, 3);
+    }
+
+    #[test]
+    fn time_spent_in_preempting_tasks_is_neither_cycle_time_nor_an_overrun() {
+        let mut watched = task(TaskKind::Cyclic, 10 * MS, 5);
+        watched.watchdog_ns = 2 * MS;
+        let mut plan = TaskPlan::new(&watched);
+        plan.start(0, false);
+        // 9 ms from start to end, 8 of them in tasks that interrupted it.
+        assert!(!plan.finish(0, 0, 9 * MS, 8 * MS, 0));
+        assert_eq!(plan.statistics.last_cycle_ns, MS);
+        assert_eq!(plan.statistics.consecutive_overruns, 0);
+        // The next start keeps the phase of the whole cycle, interruptions included.
+        assert_eq!(plan.next_start_ns(), Some(10 * MS));
+        assert!(plan.finish(10 * MS, 10 * MS, 19 * MS, 6 * MS, 0));
+    }
+
+    #[test]
+    fn only_tasks_that_may_preempt_are_picked_and_planned_for() {
+        let plans = started(&[
+            task(TaskKind::Cyclic, 10 * MS, 5),
+            task(TaskKind::Cyclic, 10 * MS, 1),
+            task(TaskKind::Cyclic, 10 * MS, 9),
+        ]);
+        let above =
+            |priority: u8| move |_: usize, plan: &TaskPlan| plan.statistics.priority < priority;
+        assert_eq!(pick_where(&plans, 0, above(5)), Some(1));
+        assert_eq!(pick_where(&plans, 0, above(1)), None);
+        assert_eq!(pick_where(&plans, 0, |index, _| index != 1), Some(0));
+        assert_eq!(
+            next_start_where(&plans, |plan| plan.statistics.priority < 9),
+            Some(0)
+        );
+        assert_eq!(
+            next_start_where(&plans, |plan| plan.statistics.priority < 1),
+            None
+        );
     }
 
     #[test]

@@ -5,8 +5,10 @@ use program_image::TaskKind;
 /// The cycle times and start jitter of one task since it was loaded or last reset.
 ///
 /// Times are nanoseconds of the scheduler's monotonic clock. A cycle's time runs from the start
-/// of its programs to their end (copying the located areas included, waiting for them not);
-/// its jitter is how much later it started than planned. Kept in memory only, never saved.
+/// of its programs to their end (copying the located areas included, waiting for them not),
+/// without the time spent in cycles of tasks of higher priority that interrupted it: the task's
+/// own execution time. Its jitter is how much later it started than planned. Kept in memory
+/// only, never saved.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct TaskStatistics {
     /// The task's name.

@@ -8,12 +8,12 @@ use super::*;
 use crate::areas::Area;
 use crate::test_images::{Body, TestTask, count_in_output, image, sequence_in_memory};
 
-const MS: u64 = 1_000_000;
+pub(super) const MS: u64 = 1_000_000;
 
 /// How long a test waits for the scheduler before it fails.
-const PATIENCE: Duration = Duration::from_secs(10);
+pub(super) const PATIENCE: Duration = Duration::from_secs(10);
 
-fn scheduler(options: SchedulerOptions) -> (Scheduler, Arc<Mutex<LocatedAreas>>) {
+pub(super) fn scheduler(options: SchedulerOptions) -> (Scheduler, Arc<Mutex<LocatedAreas>>) {
     let areas = Arc::new(Mutex::new(LocatedAreas::default()));
     (
         Scheduler::spawn(Arc::clone(&areas), options).unwrap(),
@@ -23,7 +23,7 @@ fn scheduler(options: SchedulerOptions) -> (Scheduler, Arc<Mutex<LocatedAreas>>)
 
 /// Waits until the status satisfies `done`, and returns it.
 #[track_caller]
-fn wait_for(
+pub(super) fn wait_for(
     scheduler: &Scheduler,
     what: &str,
     done: impl Fn(&SchedulerStatus) -> bool,
@@ -42,7 +42,7 @@ fn wait_for(
     }
 }
 
-fn dword(bytes: &[u8], at: u32) -> i32 {
+pub(super) fn dword(bytes: &[u8], at: u32) -> i32 {
     let at = at as usize;
     i32::from_le_bytes([bytes[at], bytes[at + 1], bytes[at + 2], bytes[at + 3]])
 }

@@ -1,19 +1,20 @@
 //! The scheduler's thread: commands from the handle, and task cycles when they are due.
 
-use std::panic::AssertUnwindSafe;
 use std::sync::{Arc, Mutex, MutexGuard, PoisonError, mpsc};
 use std::time::{Duration, Instant};
 
 use program_image::{ImageHash, Region};
 
+use super::alarm::Alarm;
+use super::cycles::{self, Cycles, Level, copy};
 use super::plan::{self, TaskPlan};
 use super::retain_writer::RetainWriter;
 use super::{
-    Between, Command, LoadReport, MAX_FAULTS, SchedulerError, SchedulerOptions, SchedulerState,
-    SchedulerStatus,
+    Between, Command, LoadReport, PRIORITY_LEVELS, SchedulerError, SchedulerOptions,
+    SchedulerState, SchedulerStatus,
 };
 use crate::areas::LocatedAreas;
-use crate::engine::{Engine, FaultKind, FaultRecord, ResetKind};
+use crate::engine::{Engine, ResetKind};
 use crate::online::{Forces, Memory, Trace};
 use crate::retain::{RetainSnapshot, RetainStore};
 
@@ -36,6 +37,11 @@ pub(super) struct Worker {
     trace: Trace,
     /// Cycles run by all tasks since the scheduler started.
     cycles_total: u64,
+    /// Sets the preemption flag when a task of higher priority than the running one is due;
+    /// `None` when preemption is off.
+    alarm: Option<Alarm>,
+    /// The cycles in progress while one runs, lent to [`Cycles`].
+    levels: Vec<Level>,
 }
 
 /// A loaded program and the schedule of its tasks.
@@ -61,6 +67,11 @@ impl Worker {
         let report = Arc::new(move |problem: Option<String>| {
             lock(&report_status).retain_problem = problem;
         });
+        let alarm = if options.preemption {
+            Alarm::spawn(options.spin_before_start)
+        } else {
+            None
+        };
         Self {
             areas,
             status,
@@ -76,6 +87,8 @@ impl Worker {
             forces: Forces::default(),
             trace: Trace::default(),
             cycles_total: 0,
+            alarm,
+            levels: Vec::with_capacity(PRIORITY_LEVELS),
         }
     }
 
@@ -159,66 +172,31 @@ impl Worker {
         Some(Duration::from_nanos(wait - spin))
     }
 
-    /// Runs one cycle of `task` with the located areas locked, then plans its next one.
+    /// Runs one cycle of `task` with the located areas locked (tasks of higher priority may
+    /// interrupt it), then plans its next one.
     fn run_cycle(&mut self, task: usize) {
         let Some(program) = self.program.as_mut() else {
             return;
         };
-        let Some(planned) = program.plans[task].next_start_ns() else {
-            return;
-        };
-        let cycle = program.plans[task].statistics.cycles;
         let mut areas = lock(&self.areas);
-        let started = self.epoch.elapsed().as_nanos() as u64;
         copy(&areas.input, program.engine.region_mut(Region::Input));
         copy(&areas.output, program.engine.region_mut(Region::Output));
         copy(&areas.memory, program.engine.region_mut(Region::Memory));
-        // Forced values hold before and after the cycle, whatever the program assigns.
-        self.forces.apply_to_engine(&mut program.engine);
-        let result = run_guarded(&mut program.engine, task, started, cycle);
-        self.forces.apply_to_engine(&mut program.engine);
-        copy(program.engine.region(Region::Output), &mut areas.output);
-        copy(program.engine.region(Region::Memory), &mut areas.memory);
-        self.forces.apply_to_areas(&mut areas);
-        self.cycles_total += 1;
-        if self.trace.recording_task() == Some(task) {
-            let memory = Memory {
-                engine: &mut program.engine,
-                areas: &mut areas,
-            };
-            self.trace
-                .end_of_cycle(cycle + 1, started, |place| memory.read(place));
-        }
-        let ended = self.epoch.elapsed().as_nanos() as u64;
-        drop(areas);
-
-        let pause = duration_ns(self.options.freewheeling_pause);
-        let plan = &mut program.plans[task];
-        let overrun = plan.finish(planned, started, ended, pause);
-        let fault = match result {
-            Err(fault) => Some(fault),
-            Ok(()) if overrun => {
-                let limit_us = program.engine.image().tasks[task].watchdog_ns / 1000;
-                let kind = FaultKind::Watchdog { limit_us };
-                Some(task_fault(&program.engine, task, cycle, kind))
-            }
-            Ok(()) => None,
+        let mut cycles = Cycles {
+            plans: &mut program.plans,
+            forces: &self.forces,
+            trace: &mut self.trace,
+            areas: &mut areas,
+            status: &self.status,
+            alarm: self.alarm.as_ref(),
+            epoch: self.epoch,
+            pause_ns: duration_ns(self.options.freewheeling_pause),
+            event_poll_ns: duration_ns(self.options.event_poll_interval),
+            cycles_total: &mut self.cycles_total,
+            log: self.options.cycle_log.as_ref(),
+            levels: &mut self.levels,
         };
-        if fault.is_some() {
-            plan.fault();
-        }
-        let mut status = lock(&self.status);
-        if let Some(published) = status.tasks.get_mut(task) {
-            published.clone_from(&plan.statistics);
-        }
-        if let Some(fault) = fault {
-            if status.faults.len() >= MAX_FAULTS {
-                status.faults.remove(0);
-            }
-            status.faults.push(fault);
-            status.faults_total += 1;
-            status.state = SchedulerState::Faulted;
-        }
+        cycles.run(&mut program.engine.view(), task);
     }
 
     /// Looks at the triggers of the event tasks.
@@ -436,92 +414,21 @@ impl Worker {
 
 /// Locks a mutex whose holder may have panicked: the scheduler's data stays usable, and the
 /// Modbus server reports a poisoned area lock on its own.
-fn lock<T>(mutex: &Mutex<T>) -> MutexGuard<'_, T> {
+pub(super) fn lock<T>(mutex: &Mutex<T>) -> MutexGuard<'_, T> {
     mutex.lock().unwrap_or_else(PoisonError::into_inner)
-}
-
-/// Copies as many bytes as both slices have.
-fn copy(from: &[u8], to: &mut [u8]) {
-    let length = from.len().min(to.len());
-    to[..length].copy_from_slice(&from[..length]);
 }
 
 fn duration_ns(duration: Duration) -> u64 {
     u64::try_from(duration.as_nanos()).unwrap_or(u64::MAX)
 }
 
-/// The value of the BOOL trigger of event task `task`: a located one in the shared areas, where
-/// Modbus clients write it, another in the engine's data region.
+/// The value of the BOOL trigger of event task `task` between two cycles: a located one in the
+/// shared areas, where Modbus clients write it, another in the engine's data region.
 fn trigger_is_set(engine: &Engine, areas: &LocatedAreas, task: usize) -> bool {
-    let image = engine.image();
-    let Some(symbol) = image
-        .tasks
-        .get(task)
-        .and_then(|task| task.trigger)
-        .and_then(|trigger| image.symbols.get(trigger as usize))
-    else {
-        return false;
-    };
-    let bytes = match symbol.region {
+    cycles::trigger_is_set(engine.image(), task, |region| match region {
         Region::Data => engine.region(Region::Data),
         Region::Input => &areas.input,
         Region::Output => &areas.output,
         Region::Memory => &areas.memory,
-    };
-    let byte = bytes.get(symbol.offset as usize).copied().unwrap_or(0);
-    match symbol.bit {
-        Some(bit) => byte >> (bit & 7) & 1 == 1,
-        None => byte != 0,
-    }
-}
-
-/// Runs one cycle of `task`. A panic of the engine is a bug of the runtime, not of the program:
-/// it faults the task instead of ending the process (and poisoning the areas, which are locked
-/// during the cycle, for the Modbus server).
-// As for `Engine::run_cycle`: a fault is rare and ends the task, so its record is not boxed.
-#[allow(clippy::result_large_err)]
-fn run_guarded(
-    engine: &mut Engine,
-    task: usize,
-    now_ns: u64,
-    cycle: u64,
-) -> Result<(), FaultRecord> {
-    match std::panic::catch_unwind(AssertUnwindSafe(|| {
-        engine.run_cycle(task, now_ns as i64, cycle)
-    })) {
-        Ok(result) => result,
-        Err(panic) => {
-            let message = panic
-                .downcast_ref::<&str>()
-                .map(|text| (*text).to_owned())
-                .or_else(|| panic.downcast_ref::<String>().cloned())
-                .unwrap_or_else(|| "the engine panicked".to_owned());
-            Err(task_fault(
-                engine,
-                task,
-                cycle,
-                FaultKind::Internal(message),
-            ))
-        }
-    }
-}
-
-/// A fault of task `task` that belongs to no single instruction (too many watchdog overruns
-/// in a row, a failure of the engine); it names the task's first program.
-fn task_fault(engine: &Engine, task: usize, cycle: u64, kind: FaultKind) -> FaultRecord {
-    let image = engine.image();
-    let info = image.tasks.get(task);
-    FaultRecord {
-        task: info.map(|task| task.name.clone()).unwrap_or_default(),
-        kind,
-        pou: info
-            .and_then(|task| task.programs.first())
-            .and_then(|call| image.pous.get(call.pou as usize))
-            .map(|pou| pou.name.clone())
-            .unwrap_or_default(),
-        file: None,
-        line: None,
-        instruction: 0,
-        cycle,
-    }
+    })
 }

@@ -1,0 +1,165 @@
+//! The engine lent out while a cycle runs: what a preempting task's cycle needs to run on the
+//! same memory as the cycle it interrupts.
+
+use std::sync::atomic::AtomicBool;
+use std::time::{Duration, Instant};
+
+use program_image::{ProgramImage, Region};
+
+use super::exec::{Exec, NEVER_DUE};
+use super::fault::{FaultKind, FaultRecord};
+use super::lower::Compiled;
+use super::memory::Regions;
+use super::native::MotionState;
+
+/// The engine's code and memory, borrowed: from [`super::Engine::view`] between cycles, or
+/// from an interrupted cycle at a safe point, where [`Preempt::preempt`] receives it to run
+/// cycles of tasks of higher priority.
+pub struct EngineView<'e> {
+    pub(super) image: &'e ProgramImage,
+    pub(super) regions: &'e Regions,
+    pub(super) code: &'e Compiled,
+    pub(super) memory: &'e mut [u8],
+    pub(super) motion: &'e mut MotionState,
+}
+
+/// What the scheduler gives a cycle so that a task of higher priority may interrupt it.
+pub struct Preemption<'p> {
+    /// Set when a task of higher priority may be due; read at every safe point (a backward
+    /// jump or a call), so it must be cheap: a relaxed load.
+    pub due: &'p AtomicBool,
+    /// Called at a safe point when `due` is set, with the interrupted cycle's engine.
+    pub hook: &'p mut dyn Preempt,
+}
+
+/// The scheduler's side of preemption: runs the cycles that interrupt another.
+pub trait Preempt {
+    /// Runs, on `engine`, the cycles of tasks that interrupt the cycle in progress; the
+    /// interrupted cycle goes on when it returns. It should clear [`Preemption::due`] (or
+    /// the interrupted cycle calls it again at its next safe point).
+    fn preempt(&mut self, engine: EngineView<'_>);
+}
+
+impl EngineView<'_> {
+    /// The image being run.
+    pub fn image(&self) -> &ProgramImage {
+        self.image
+    }
+
+    /// The bytes of a region.
+    pub fn region(&self, region: Region) -> &[u8] {
+        region_bytes(self.image, self.regions, self.memory, region)
+    }
+
+    /// The bytes of a region, writable.
+    pub fn region_mut(&mut self, region: Region) -> &mut [u8] {
+        let start = self.regions.start(region);
+        let size = self.image.region_size(region) as usize;
+        self.memory.get_mut(start..start + size).unwrap_or_default()
+    }
+
+    /// Runs one cycle of task `task` at task time `now_ns`: its programs in order, then the
+    /// motion kernel's end of cycle. A fault stops the cycle where it happened and is returned
+    /// with its place. With `preemption`, tasks of higher priority may interrupt the cycle at
+    /// its safe points; the time they take does not count against its watchdog.
+    // A fault is rare and ends the task, so its record need not be boxed to keep `Ok` small.
+    #[allow(clippy::result_large_err)]
+    pub fn run_cycle(
+        &mut self,
+        task: usize,
+        now_ns: i64,
+        cycle: u64,
+        preemption: Option<Preemption<'_>>,
+    ) -> Result<(), FaultRecord> {
+        let image = self.image;
+        let Some(info) = image.tasks.get(task) else {
+            return Ok(());
+        };
+        // Without a watchdog a task still cannot hang the runtime: ten seconds ends it.
+        let limit_ns = if info.watchdog_ns > 0 {
+            info.watchdog_ns
+                .saturating_mul(u64::from(info.watchdog_sensitivity.max(1)))
+        } else {
+            10_000_000_000
+        };
+        let deadline = Some((
+            Instant::now() + Duration::from_nanos(limit_ns),
+            limit_ns / 1000,
+        ));
+        let regions = self.regions;
+        let mut preemption = preemption;
+        let (due, hook): (&AtomicBool, Option<&mut dyn Preempt>) = match preemption.as_mut() {
+            Some(preemption) => (preemption.due, Some(&mut *preemption.hook)),
+            None => (&NEVER_DUE, None),
+        };
+        let mut exec = Exec::new(
+            self.memory,
+            image,
+            regions,
+            self.code,
+            regions.stack(task),
+            now_ns,
+            deadline,
+            self.motion,
+            (due, hook),
+        );
+        for call in &info.programs {
+            let instance = regions.data + call.instance_offset as usize;
+            if let Err(kind) = exec.call_block(call.pou as usize, instance) {
+                let (pou, instruction) = exec.fault_at.unwrap_or((call.pou as usize, 0));
+                return Err(fault_record(image, task, kind, pou, instruction, cycle));
+            }
+        }
+        let data_start = regions.data;
+        let data_end = data_start + image.layout.data_size as usize;
+        if let Some(data) = self.memory.get_mut(data_start..data_end) {
+            self.motion
+                .after_cycle(task, now_ns, info.interval_ns, data);
+        }
+        Ok(())
+    }
+}
+
+/// The bytes of `region` in `memory`.
+pub(super) fn region_bytes<'m>(
+    image: &ProgramImage,
+    regions: &Regions,
+    memory: &'m [u8],
+    region: Region,
+) -> &'m [u8] {
+    let start = regions.start(region);
+    let size = image.region_size(region) as usize;
+    memory.get(start..start + size).unwrap_or_default()
+}
+
+/// The record of a fault of `kind` in task `task` at instruction `instruction` of POU `pou`,
+/// with the source line when the image has one.
+fn fault_record(
+    image: &ProgramImage,
+    task: usize,
+    kind: FaultKind,
+    pou: usize,
+    instruction: usize,
+    cycle: u64,
+) -> FaultRecord {
+    let info = image.pous.get(pou);
+    let entry = info.and_then(|p| {
+        p.lines
+            .iter()
+            .take_while(|entry| entry.index as usize <= instruction)
+            .last()
+    });
+    FaultRecord {
+        task: image
+            .tasks
+            .get(task)
+            .map(|t| t.name.clone())
+            .unwrap_or_default(),
+        kind,
+        pou: info.map(|p| p.name.clone()).unwrap_or_default(),
+        file: entry.and_then(|e| image.sources.get(e.file as usize).cloned()),
+        line: entry.map(|e| e.line),
+        instruction: instruction as u32,
+        cycle,
+    }
+}

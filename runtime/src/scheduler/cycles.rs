@@ -1,0 +1,343 @@
+//! One task cycle with everything around it (forces, located areas, trace, statistics, faults),
+//! and the cycles of tasks of higher priority that interrupt it at its safe points.
+//!
+//! The outermost cycle is started by the worker with the located areas locked and copied into
+//! the engine; a cycle that interrupts another runs on the same engine memory under the same
+//! lock, so it does not copy the areas in again (that would undo what the interrupted cycle
+//! wrote). Every cycle, nested or not, applies the forces before and after, copies `%Q` and `%M`
+//! out (the areas stay locked until the outermost cycle ends, so nobody sees the intermediate
+//! state), feeds the trace at its end, and records its statistics.
+
+use std::panic::AssertUnwindSafe;
+use std::sync::{Mutex, mpsc};
+use std::time::{Duration, Instant};
+
+use online_protocol::Place;
+use program_image::{ProgramImage, Region};
+
+use super::alarm::Alarm;
+use super::plan::{self, TaskPlan};
+use super::record::CycleRecord;
+use super::{MAX_FAULTS, SchedulerState, SchedulerStatus};
+use crate::areas::LocatedAreas;
+use crate::engine::{EngineView, FaultKind, FaultRecord, Preempt, Preemption};
+use crate::online::{Forces, PlaceAccess, Trace};
+
+/// What running cycles touches, borrowed from the worker for the outermost cycle and lent on
+/// to the cycles that interrupt it.
+pub(super) struct Cycles<'w> {
+    pub(super) plans: &'w mut [TaskPlan],
+    pub(super) forces: &'w Forces,
+    pub(super) trace: &'w mut Trace,
+    /// The located areas, locked for the whole outermost cycle.
+    pub(super) areas: &'w mut LocatedAreas,
+    pub(super) status: &'w Mutex<SchedulerStatus>,
+    /// The preemption alarm; `None` runs every cycle to its end.
+    pub(super) alarm: Option<&'w Alarm>,
+    /// The origin of the scheduler's clock.
+    pub(super) epoch: Instant,
+    /// The pause after each cycle of a freewheeling task.
+    pub(super) pause_ns: u64,
+    /// The longest time between two looks at the triggers of event tasks.
+    pub(super) event_poll_ns: u64,
+    /// Cycles run by all tasks since the scheduler started.
+    pub(super) cycles_total: &'w mut u64,
+    /// Where each cycle's record goes, if anywhere.
+    pub(super) log: Option<&'w mpsc::Sender<CycleRecord>>,
+    /// The cycles in progress, outermost first (empty between outermost cycles; kept by the
+    /// worker so that a cycle allocates nothing).
+    pub(super) levels: &'w mut Vec<Level>,
+}
+
+/// A cycle in progress.
+pub(super) struct Level {
+    task: usize,
+    priority: u8,
+    /// Nanoseconds spent so far in cycles that interrupted this one.
+    preempted_ns: u64,
+}
+
+impl Cycles<'_> {
+    /// Runs one cycle of `task` on `engine` (whose located regions hold the areas' values),
+    /// then plans its next one and publishes its statistics and fault.
+    pub(super) fn run(&mut self, engine: &mut EngineView<'_>, task: usize) {
+        let Some(plan) = self.plans.get(task) else {
+            return;
+        };
+        let Some(planned) = plan.next_start_ns() else {
+            return;
+        };
+        let cycle = plan.statistics.cycles;
+        let priority = plan.statistics.priority;
+        let interrupted = self.levels.last().map(|level| level.task);
+        let depth = self.levels.len();
+        self.levels.push(Level {
+            task,
+            priority,
+            preempted_ns: 0,
+        });
+        self.arm_above(priority);
+        let started = self.now_ns();
+        // Forced values hold before and after the cycle, whatever the program assigns.
+        self.forces.apply_to_view(engine);
+        let result = match self.alarm {
+            Some(alarm) => {
+                let preemption = Preemption {
+                    due: alarm.due(),
+                    hook: self,
+                };
+                run_guarded(engine, task, started, cycle, Some(preemption))
+            }
+            None => run_guarded(engine, task, started, cycle, None),
+        };
+        // A panic of the scheduler's own code in a nested cycle unwinds to this cycle's guard
+        // without popping its levels; what is left of them belongs to no running cycle.
+        self.levels.truncate(depth + 1);
+        self.forces.apply_to_view(engine);
+        copy(engine.region(Region::Output), &mut self.areas.output);
+        copy(engine.region(Region::Memory), &mut self.areas.memory);
+        self.forces.apply_to_areas(self.areas);
+        *self.cycles_total += 1;
+        if self.trace.recording_task() == Some(task) {
+            let (data, areas) = (engine.region(Region::Data), &*self.areas);
+            self.trace
+                .end_of_cycle(cycle + 1, started, |place| read_place(place, data, areas));
+        }
+        let ended = self.now_ns();
+        let preempted_ns = self.levels.pop().map_or(0, |level| level.preempted_ns);
+        match self.levels.last() {
+            Some(outer) => self.arm_above(outer.priority),
+            None => self.disarm(),
+        }
+        self.finish(
+            engine.image(),
+            task,
+            cycle,
+            result,
+            planned,
+            started,
+            ended,
+            preempted_ns,
+        );
+        if let Some(log) = self.log {
+            // A log whose reader went away is simply not written.
+            let _ = log.send(CycleRecord {
+                task,
+                planned_ns: planned,
+                started_ns: started,
+                ended_ns: ended,
+                preempted_ns,
+                interrupted,
+            });
+        }
+    }
+
+    /// Plans the next cycle of `task` and publishes its statistics and its fault, if any.
+    #[allow(clippy::too_many_arguments, clippy::result_large_err)]
+    fn finish(
+        &mut self,
+        image: &ProgramImage,
+        task: usize,
+        cycle: u64,
+        result: Result<(), FaultRecord>,
+        planned: u64,
+        started: u64,
+        ended: u64,
+        preempted_ns: u64,
+    ) {
+        let Some(plan) = self.plans.get_mut(task) else {
+            return;
+        };
+        let overrun = plan.finish(planned, started, ended, preempted_ns, self.pause_ns);
+        let fault = match result {
+            Err(fault) => Some(fault),
+            Ok(()) if overrun => {
+                let limit_us = image.tasks.get(task).map_or(0, |task| task.watchdog_ns) / 1000;
+                let kind = FaultKind::Watchdog { limit_us };
+                Some(task_fault(image, task, cycle, kind))
+            }
+            Ok(()) => None,
+        };
+        if fault.is_some() {
+            plan.fault();
+        }
+        let mut status = super::worker::lock(self.status);
+        if let Some(published) = status.tasks.get_mut(task) {
+            published.clone_from(&plan.statistics);
+        }
+        if let Some(fault) = fault {
+            if status.faults.len() >= MAX_FAULTS {
+                status.faults.remove(0);
+            }
+            status.faults.push(fault);
+            status.faults_total += 1;
+            status.state = SchedulerState::Faulted;
+        }
+    }
+
+    /// Arms the alarm for the earliest planned start of a task of higher priority than
+    /// `priority`, and for the next look at the triggers when an event task of higher priority
+    /// waits for its trigger.
+    fn arm_above(&self, priority: u8) {
+        let Some(alarm) = self.alarm else {
+            return;
+        };
+        let above = |plan: &TaskPlan| plan.statistics.priority < priority;
+        let mut at = plan::next_start_where(self.plans, above);
+        if self
+            .plans
+            .iter()
+            .any(|plan| above(plan) && plan.is_event() && !plan.statistics.faulted)
+        {
+            let poll = self.now_ns() + self.event_poll_ns;
+            at = Some(at.map_or(poll, |at| at.min(poll)));
+        }
+        alarm.arm(at.map(|at| self.epoch + Duration::from_nanos(at)));
+    }
+
+    fn disarm(&self) {
+        if let Some(alarm) = self.alarm {
+            alarm.arm(None);
+        }
+    }
+
+    /// Looks at the triggers of the event tasks in the interrupted cycle's memory, which holds
+    /// the current values of the located areas too (they stay locked meanwhile).
+    fn observe_triggers(&mut self, engine: &EngineView<'_>, now: u64) {
+        for (task, plan) in self.plans.iter_mut().enumerate() {
+            if plan.is_event() {
+                let set = trigger_is_set(engine.image(), task, |region| engine.region(region));
+                plan.observe_trigger(set, now);
+            }
+        }
+    }
+
+    fn now_ns(&self) -> u64 {
+        self.epoch.elapsed().as_nanos() as u64
+    }
+}
+
+impl Preempt for Cycles<'_> {
+    /// Runs each task of higher priority than the interrupted one that is due, at most once
+    /// each (so the interrupted cycle moves on by at least one safe point between two rounds),
+    /// the highest priority first; each may in turn be interrupted by a still higher one.
+    fn preempt(&mut self, mut engine: EngineView<'_>) {
+        let entered = self.now_ns();
+        let Some(priority) = self.levels.last().map(|level| level.priority) else {
+            return;
+        };
+        if self.plans.iter().any(TaskPlan::is_event) {
+            self.observe_triggers(&engine, entered);
+        }
+        let mut ran = Vec::new();
+        while let Some(task) = plan::pick_where(self.plans, self.now_ns(), |index, plan| {
+            plan.statistics.priority < priority && !ran.contains(&index)
+        }) {
+            ran.push(task);
+            self.run(&mut engine, task);
+        }
+        self.arm_above(priority);
+        let spent = self.now_ns().saturating_sub(entered);
+        if let Some(level) = self.levels.last_mut() {
+            level.preempted_ns += spent;
+        }
+    }
+}
+
+/// The value at `place`: the data region from the engine, the located ones from the areas.
+fn read_place(place: Place, data: &[u8], areas: &LocatedAreas) -> Vec<u8> {
+    match place.region_of() {
+        Some(Region::Data) => place.read_from(data),
+        Some(Region::Input) => place.read_from(&areas.input),
+        Some(Region::Output) => place.read_from(&areas.output),
+        Some(Region::Memory) => place.read_from(&areas.memory),
+        None => Vec::new(),
+    }
+}
+
+/// Copies as many bytes as both slices have.
+pub(super) fn copy(from: &[u8], to: &mut [u8]) {
+    let length = from.len().min(to.len());
+    to[..length].copy_from_slice(&from[..length]);
+}
+
+/// The value of the BOOL trigger of event task `task`, read from the region `bytes` gives.
+pub(super) fn trigger_is_set<'b>(
+    image: &ProgramImage,
+    task: usize,
+    bytes: impl Fn(Region) -> &'b [u8],
+) -> bool {
+    let Some(symbol) = image
+        .tasks
+        .get(task)
+        .and_then(|task| task.trigger)
+        .and_then(|trigger| image.symbols.get(trigger as usize))
+    else {
+        return false;
+    };
+    let byte = bytes(symbol.region)
+        .get(symbol.offset as usize)
+        .copied()
+        .unwrap_or(0);
+    match symbol.bit {
+        Some(bit) => byte >> (bit & 7) & 1 == 1,
+        None => byte != 0,
+    }
+}
+
+/// Runs one cycle of `task`. A panic of the engine is a bug of the runtime, not of the program:
+/// it faults the task instead of ending the process (and poisoning the areas, which are locked
+/// during the cycle, for the Modbus server). A panic in a cycle that interrupted another is
+/// caught here too, so the interrupted cycle goes on.
+// As for `EngineView::run_cycle`: a fault is rare and ends the task, so its record is not boxed.
+#[allow(clippy::result_large_err)]
+fn run_guarded(
+    engine: &mut EngineView<'_>,
+    task: usize,
+    now_ns: u64,
+    cycle: u64,
+    preemption: Option<Preemption<'_>>,
+) -> Result<(), FaultRecord> {
+    match std::panic::catch_unwind(AssertUnwindSafe(|| {
+        engine.run_cycle(task, now_ns as i64, cycle, preemption)
+    })) {
+        Ok(result) => result,
+        Err(panic) => {
+            let message = panic
+                .downcast_ref::<&str>()
+                .map(|text| (*text).to_owned())
+                .or_else(|| panic.downcast_ref::<String>().cloned())
+                .unwrap_or_else(|| "the engine panicked".to_owned());
+            Err(task_fault(
+                engine.image(),
+                task,
+                cycle,
+                FaultKind::Internal(message),
+            ))
+        }
+    }
+}
+
+/// A fault of task `task` that belongs to no single instruction (too many watchdog overruns
+/// in a row, a failure of the engine); it names the task's first program.
+pub(super) fn task_fault(
+    image: &ProgramImage,
+    task: usize,
+    cycle: u64,
+    kind: FaultKind,
+) -> FaultRecord {
+    let info = image.tasks.get(task);
+    FaultRecord {
+        task: info.map(|task| task.name.clone()).unwrap_or_default(),
+        kind,
+        pou: info
+            .and_then(|task| task.programs.first())
+            .and_then(|call| image.pous.get(call.pou as usize))
+            .map(|pou| pou.name.clone())
+            .unwrap_or_default(),
+        file: None,
+        line: None,
+        instruction: 0,
+        cycle,
+    }
+}
