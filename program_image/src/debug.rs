@@ -20,7 +20,8 @@ pub struct DebugInfo {
 pub struct PouDebug {
     /// SHA-256 of the POU's declaration and body text as the compiler read them.
     pub source_hash: [u8; 32],
-    /// The variables that live in its frame, in declaration order.
+    /// The variables that live in its frame, in the order of their offsets (parameters, the
+    /// result, then the others, as `docs/program-image.md` §7 lays a frame out).
     pub frame: Vec<FrameVariable>,
 }
 
