@@ -29,7 +29,7 @@ pub mod syntax;
 
 pub use codegen::{
     CompileError, CompiledCondition, ConditionCompileError, compile_condition, compile_project,
-    compile_source,
+    compile_source, compile_source_condition,
 };
 pub use diagnostic::{Code, Diagnostic, Severity};
 pub use source_project::SourceProject;

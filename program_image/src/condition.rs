@@ -16,7 +16,8 @@ use crate::image::Pou;
 pub struct BreakCondition {
     /// The bytes of the scratch area.
     pub scratch_bytes: u32,
-    /// The scratch area's first bytes before each run (at most `scratch_bytes`).
+    /// The scratch area's first bytes, written before each run (at most `scratch_bytes`); the
+    /// bytes after them hold whatever the stack held, so only temporaries live there.
     pub init: Vec<u8>,
     /// The instructions: only those [`BreakCondition::allows`] allows, jumping only forward.
     pub code: Vec<Instr>,

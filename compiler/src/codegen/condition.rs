@@ -14,13 +14,14 @@ use project_model::{PouKind, Project};
 use super::CompileError;
 use super::body::{BodyGen, Gen};
 use super::error::CodegenError;
+use super::program::BodyOrigin;
 use super::program::{Build, Unit, unit_frame};
-use crate::Severity;
 use crate::diagnostic::Diagnostic;
 use crate::sema::scope::{Globals, Scope};
 use crate::sema::ty::Type;
 use crate::syntax::ast::{AstNode, Expr, SourceFile, Stmt};
 use crate::syntax::parse_statements;
+use crate::{Severity, SourceProject};
 
 /// What the user typed is wrapped in an IF so the parser and checker see a BOOL condition.
 const PREFIX: &str = "IF ";
@@ -90,13 +91,39 @@ pub fn compile_condition(
     pou: &str,
     expression: &str,
 ) -> Result<CompiledCondition, ConditionCompileError> {
+    let origin = |file: &Path| (file.to_string_lossy().into_owned(), 1);
+    condition_with(project, &origin, pou, expression)
+}
+
+/// [`compile_condition`] for a project made from one source file, whose image
+/// [`crate::compile_source`] gives with the same `file_name`.
+pub fn compile_source_condition(
+    source: &SourceProject,
+    file_name: &str,
+    pou: &str,
+    expression: &str,
+) -> Result<CompiledCondition, ConditionCompileError> {
+    let origin = |file: &Path| {
+        (
+            file_name.to_owned(),
+            source.body_first_line(file).unwrap_or(1),
+        )
+    };
+    condition_with(&source.project, &origin, pou, expression)
+}
+
+fn condition_with(
+    project: &Project,
+    origin: BodyOrigin<'_>,
+    pou: &str,
+    expression: &str,
+) -> Result<CompiledCondition, ConditionCompileError> {
     let mut job = ConditionJob {
         pou: pou.to_owned(),
         expression: expression.to_owned(),
         outcome: None,
     };
-    let origin = |file: &Path| (file.to_string_lossy().into_owned(), 1);
-    let image = super::compile_with(project, &origin, Some(&mut job))
+    let image = super::compile_with(project, origin, Some(&mut job))
         .map_err(ConditionCompileError::Project)?;
     let (index, condition) = job
         .outcome
@@ -219,13 +246,11 @@ impl ConditionJob {
         let base = first.temporaries_end.next_multiple_of(8);
         let second = codegen(build, globals, unit, &text, &condition, scratch_start, base)
             .map_err(ConditionCompileError::Codegen)?;
+        // The temporaries need no initial value, but the constants after them do: `init`
+        // reaches to their end.
         let mut init = vec![0; (base - scratch_start) as usize];
         init.extend_from_slice(&second.constants);
         let scratch_bytes = init.len() as u32;
-        // Zeros at the end of `init` are what the scratch area would hold anyway.
-        while init.last() == Some(&0) {
-            init.pop();
-        }
         Ok((
             index as u32,
             BreakCondition {

@@ -177,3 +177,16 @@ fn a_pou_the_program_does_not_have_is_named() {
     assert!(matches!(&error, ConditionCompileError::UnknownPou(name) if name == "FB_Missing"));
     assert!(error.to_string().contains("'FB_Missing'"));
 }
+
+#[test]
+fn a_condition_of_a_source_file_belongs_to_the_image_of_that_file() {
+    let source = SourceProject::new(SOURCE);
+    let image = crate::compile_source(&source, "counter.st").unwrap_or_else(|e| panic!("{e}"));
+    let compiled = compile_source_condition(&source, "counter.st", "Main", "big > 3")
+        .unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(compiled.image, image.identity());
+    assert_eq!(
+        image.verify_condition(compiled.pou, &compiled.condition),
+        Ok(())
+    );
+}

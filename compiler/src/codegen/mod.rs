@@ -41,7 +41,9 @@ use project_model::Project;
 use crate::sema::{ProjectDiagnostic, check_lowered};
 use crate::{Severity, SourceProject};
 
-pub use condition::{CompiledCondition, ConditionCompileError, compile_condition};
+pub use condition::{
+    CompiledCondition, ConditionCompileError, compile_condition, compile_source_condition,
+};
 pub use error::{CodegenError, Location, StatementPlace, Within};
 pub use program::BodyOrigin;
 
