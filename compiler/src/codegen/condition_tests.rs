@@ -190,3 +190,38 @@ fn a_condition_of_a_source_file_belongs_to_the_image_of_that_file() {
         Ok(())
     );
 }
+
+#[test]
+fn a_method_condition_sees_its_own_parameters_and_its_instance() {
+    let source = "FUNCTION_BLOCK FB_Axis
+VAR_OUTPUT
+    position : LREAL;
+END_VAR
+METHOD MoveBy : BOOL
+VAR_INPUT
+    distance : LREAL;
+END_VAR
+position := position + distance;
+MoveBy := TRUE;
+END_METHOD
+END_FUNCTION_BLOCK
+
+PROGRAM Main
+VAR
+    axis : FB_Axis;
+    moved : BOOL;
+END_VAR
+moved := axis.MoveBy(distance := 1.5);
+END_PROGRAM
+";
+    let project = SourceProject::new(source).project;
+    let compiled = compile_condition(
+        &project,
+        "FB_Axis.MoveBy",
+        "distance > 1.0 AND position < 10.0",
+    )
+    .unwrap_or_else(|error| panic!("{error}"));
+    let image = compile_project(&project).unwrap_or_else(|error| panic!("{error}"));
+    assert_eq!(image.pous[compiled.pou as usize].name, "FB_Axis.MoveBy");
+    assert_eq!(compiled.image, image.identity());
+}
