@@ -27,6 +27,9 @@ pub mod sfc_chart;
 pub mod source_project;
 pub mod syntax;
 
-pub use codegen::{CompileError, compile_project, compile_source};
+pub use codegen::{
+    CompileError, CompiledCondition, ConditionCompileError, compile_condition, compile_project,
+    compile_source, compile_source_condition,
+};
 pub use diagnostic::{Code, Diagnostic, Severity};
 pub use source_project::SourceProject;

@@ -20,6 +20,8 @@ pub struct Identity {
     pub project: String,
     /// Whether changing services need a password.
     pub password_required: bool,
+    /// What the target says about debugging (the `debug` byte version 3 appends).
+    pub debug: crate::DebugStatus,
 }
 
 /// The state of a target, numbered as `IDENTIFY` and run control send it.

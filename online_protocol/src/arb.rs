@@ -162,7 +162,7 @@ pub fn request() -> impl Strategy<Value = Request> {
             .prop_map(|from| Request::Faults { from })
             .boxed(),
     ];
-    Union::new(arms)
+    prop_oneof![Union::new(arms), crate::debug_arb::request()]
 }
 
 /// A request of `service`, for the answers that need nothing from their request.
@@ -248,6 +248,7 @@ pub fn request_of(service: Service) -> Request {
         },
         Service::Tasks => Request::Tasks,
         Service::Faults => Request::Faults { from: 0 },
+        debug => crate::debug_arb::request_of(debug),
     }
 }
 
@@ -321,9 +322,18 @@ pub fn response() -> impl Strategy<Value = (Request, Response)> {
             prop::option::of(any::<[u8; 32]>().prop_filter("zeros mean none", |h| *h != [0; 32])),
             text(),
             any::<bool>(),
+            any::<u8>().prop_map(crate::DebugStatus::from_bits),
         )
             .prop_map(
-                |(protocol, runtime_version, state, image_hash, project, password_required)| {
+                |(
+                    protocol,
+                    runtime_version,
+                    state,
+                    image_hash,
+                    project,
+                    password_required,
+                    debug,
+                )| {
                     Response::Identify(Identity {
                         protocol,
                         runtime_version,
@@ -331,6 +341,7 @@ pub fn response() -> impl Strategy<Value = (Request, Response)> {
                         image_hash,
                         project,
                         password_required,
+                        debug,
                     })
                 },
             )
@@ -414,7 +425,7 @@ pub fn response() -> impl Strategy<Value = (Request, Response)> {
             .boxed(),
     ];
     let others = Union::new(arms).prop_map(|response| (request_of(response.service()), response));
-    prop_oneof![read(), others]
+    prop_oneof![read(), others, crate::debug_arb::response()]
 }
 
 /// Any refusal (a status other than done, a message that fits).

@@ -9,8 +9,8 @@ pub enum DecodeError {
     /// Not even a service byte.
     #[error("the frame is empty: a service byte is expected")]
     Empty,
-    /// A service number protocol version 2 does not have.
-    #[error("service {0:#04x} is unknown to protocol version 2")]
+    /// A service number protocol version 3 does not have.
+    #[error("service {0:#04x} is unknown to protocol version 3")]
     UnknownService(u8),
     /// The frame ends inside a field.
     #[error(
@@ -64,8 +64,8 @@ pub enum DecodeError {
         /// The bytes that were left.
         left: usize,
     },
-    /// A response with a status number version 2 does not have.
-    #[error("the status at byte 1 is {0}, which protocol version 2 does not have")]
+    /// A response with a status number version 3 does not have.
+    #[error("the status at byte 1 is {0}, which protocol version 3 does not have")]
     UnknownStatus(u8),
     /// A response to another service than the request's.
     #[error("the answer at byte 0 is for service {found:#04x}, not {expected:#04x}")]

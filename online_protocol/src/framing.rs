@@ -5,7 +5,7 @@
 pub const FUNCTION_CODE: u8 = 0x64;
 
 /// The protocol version both sides speak; `IDENTIFY` refuses any other.
-pub const PROTOCOL_VERSION: u16 = 2;
+pub const PROTOCOL_VERSION: u16 = 3;
 
 /// The most bytes of payload a request or response carries: a Modbus PDU is at most 253
 /// bytes, less the function code, the service and (in a response) the status.
@@ -72,3 +72,63 @@ pub const TYPE_ENUM: u8 = 0x22;
 
 /// The `RESOLVE` type of anything neither elementary nor a string.
 pub const TYPE_OTHER: u8 = 0xFF;
+
+// The sizes of the debugging services (§6, version 3).
+
+/// The most seconds a debug session lingers without its connection (`DEBUG_ATTACH`).
+pub const MAX_LINGER_S: u16 = 300;
+
+/// The `task` byte that means every task (`CONTINUE`, `HALT`) or any task (`BREAK_SET`).
+pub const ALL_TASKS: u8 = 0xFF;
+
+/// The `id` of `BREAK_CLEAR` that clears every breakpoint.
+pub const ALL_BREAKPOINTS: u16 = 0xFFFF;
+
+/// The `breakpoint` of a `HALT_STATE` entry that names no breakpoint.
+pub const NO_BREAKPOINT: u16 = 0xFFFF;
+
+/// The `frame` of `FRAME_READ` and `FRAME_WRITE` that means the task's whole stack.
+pub const WHOLE_STACK: u16 = 0xFFFF;
+
+/// The most breakpoints a debug session holds.
+pub const MAX_BREAKPOINTS: usize = 128;
+
+/// The payload bytes of a `BREAK_SET` request before its condition: token, `pou`,
+/// `instruction`, `instance`, `task`, `hit_mode`, `hit_target` and `condition_length`.
+pub const BREAK_SET_HEADER_BYTES: usize = TOKEN_BYTES + 4 + 4 + 8 + 1 + 1 + 4 + 1;
+
+/// The most bytes of a compiled breakpoint condition: what is left of a payload after the
+/// `BREAK_SET` header (211).
+pub const MAX_CONDITION_BYTES: usize = MAX_PAYLOAD_BYTES - BREAK_SET_HEADER_BYTES;
+
+/// The bytes of one breakpoint in a `BREAK_LIST` answer.
+pub const BREAKPOINT_ENTRY_BYTES: usize = 2 + 4 + 4 + 8 + 1 + 1 + 4 + 4 + 1;
+
+/// The most breakpoints one `BREAK_LIST` answer carries (after `total` and `count`).
+pub const BREAK_LIST_ENTRIES: usize = (MAX_PAYLOAD_BYTES - 3) / BREAKPOINT_ENTRY_BYTES;
+
+/// The bytes of one task in a `HALT_STATE` answer.
+pub const HALT_ENTRY_BYTES: usize = 1 + 1 + 1 + 2 + 4 + 4 + 2 + 8 + 4;
+
+/// The bytes of a `HALT_STATE` answer before its tasks: session, options, generation, total
+/// and count.
+pub const HALT_STATE_HEADER_BYTES: usize = 1 + 1 + 4 + 1 + 1;
+
+/// The most tasks one `HALT_STATE` answer carries.
+pub const HALT_STATE_ENTRIES: usize =
+    (MAX_PAYLOAD_BYTES - HALT_STATE_HEADER_BYTES) / HALT_ENTRY_BYTES;
+
+/// The bytes of one frame in a `STACK` answer.
+pub const STACK_FRAME_BYTES: usize = 4 + 4 + 8 + 4 + 4;
+
+/// The most frames one `STACK` answer carries (after `total` and `count`).
+pub const STACK_ENTRIES: usize = (MAX_PAYLOAD_BYTES - 3) / STACK_FRAME_BYTES;
+
+/// The bytes of one range of a frame in `FRAME_READ` and `FRAME_WRITE`: offset and size.
+pub const FRAME_RANGE_BYTES: usize = 6;
+
+/// The most POUs one `FLOW_CONFIGURE` records.
+pub const MAX_FLOW_ENTRIES: usize = 8;
+
+/// The most bitmap bytes one `FLOW_READ` answer carries.
+pub const MAX_FLOW_BITMAP_BYTES: usize = 224;

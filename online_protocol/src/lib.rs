@@ -1,5 +1,5 @@
 //! The requests, responses and status codes of Rivet's online protocol (`docs/protocol.md`,
-//! version 2) with their encoding, written once for both sides: the runtime decodes
+//! version 3) with their encoding, written once for both sides: the runtime decodes
 //! [`Request`]s and encodes [`Response`]s and [`Refusal`]s, the client does the opposite.
 //!
 //! Everything here is plain data and pure functions: no I/O, no threads. Decoding never
@@ -8,9 +8,13 @@
 //! - [`framing`]: the function code, the version and every size of the framing.
 //! - [`Service`] and [`Status`]: the numbers of the services and of the statuses.
 //! - [`Place`]: where a variable is on the target.
-//! - [`Request`] and [`Response`]: one variant per service, with `encode` and `decode`.
+//! - [`Request`] and [`Response`]: one variant per service, with `encode` and `decode`; the
+//!   debugging services of version 3 (§6) as [`DebugRequest`] and [`DebugResponse`].
 
 mod answers;
+mod debug_request;
+mod debug_response;
+mod debug_types;
 mod error;
 pub mod framing;
 mod place;
@@ -23,10 +27,21 @@ mod writer;
 
 #[cfg(test)]
 mod arb;
+#[cfg(test)]
+mod debug_arb;
 
 pub use answers::{
     Enumeration, Fault, Identity, Resolved, Snapshot, TargetState, TaskInfo, TraceSample,
     TraceState, TraceStatus, Value,
+};
+pub use debug_request::DebugRequest;
+pub use debug_response::{
+    BreakpointInfo, DebugResponse, HaltReason, HaltState, SessionState, StackFrame, TaskDebugState,
+    TaskHalt,
+};
+pub use debug_types::{
+    BreakpointSpec, DebugOptions, DebugStatus, FlowCycle, FlowEntry, FrameRange, HitMode, HitRule,
+    StepKind,
 };
 pub use error::DecodeError;
 pub use framing::*;

@@ -2,6 +2,7 @@
 //! (`docs/protocol.md` §3).
 
 use crate::Hash;
+use crate::debug_request::DebugRequest;
 use crate::error::DecodeError;
 use crate::framing::MAX_PRETRIGGER_PERCENT;
 use crate::place::Place;
@@ -155,6 +156,8 @@ pub enum Request {
     Faults {
         from: u16,
     },
+    /// A debugging service (version 3, §6).
+    Debug(DebugRequest),
 }
 
 impl Request {
@@ -186,6 +189,7 @@ impl Request {
             TraceAdd { .. } => Service::TraceAdd,
             Tasks => Service::Tasks,
             Faults { .. } => Service::Faults,
+            Debug(request) => request.service(),
         }
     }
 
@@ -206,6 +210,7 @@ impl Request {
             | TraceConfigure { token, .. }
             | TraceAdd { token, .. }
             | TraceArm { token } => Some(*token),
+            Debug(request) => request.token(),
             Identify { .. }
             | Login { .. }
             | Logout
@@ -276,6 +281,7 @@ impl Request {
                 put_places(&mut out, &config.places);
             }
             TraceUpload { from } => out.extend_from_slice(&from.to_le_bytes()),
+            Debug(request) => request.encode_fields(&mut out),
         }
         out
     }
@@ -372,6 +378,10 @@ impl Request {
             Service::Tasks => Request::Tasks,
             Service::Faults => Request::Faults {
                 from: r.u16("from")?,
+            },
+            debug => match DebugRequest::decode_fields(debug, &mut r)? {
+                Some(request) => Request::Debug(request),
+                None => return Err(DecodeError::UnknownService(number)),
             },
         };
         r.finish()?;

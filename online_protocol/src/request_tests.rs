@@ -92,6 +92,9 @@ fn every_request() -> Vec<Request> {
             from: 2,
         },
     ]
+    .into_iter()
+    .chain(crate::debug_request::tests::every_debug_request())
+    .collect()
 }
 
 /// The `TRACE_CONFIGURE` of [`every_request`].

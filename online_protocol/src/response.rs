@@ -6,6 +6,8 @@ use crate::answers::{
     Fault, Identity, Resolved, Snapshot, TargetState, TaskInfo, TraceSample, TraceState,
     TraceStatus,
 };
+use crate::debug_response::DebugResponse;
+use crate::debug_types::DebugStatus;
 use crate::error::DecodeError;
 use crate::framing::{NO_TRIGGER_SAMPLE, SAMPLE_HEADER_BYTES};
 use crate::place::Place;
@@ -122,6 +124,8 @@ pub enum Response {
         /// The faults, as many as fit one response.
         faults: Vec<Fault>,
     },
+    /// A debugging service's answer (version 3, §6).
+    Debug(DebugResponse),
 }
 
 impl Response {
@@ -153,6 +157,7 @@ impl Response {
             TraceAdd { .. } => Service::TraceAdd,
             Tasks { .. } => Service::Tasks,
             Faults { .. } => Service::Faults,
+            Debug(response) => response.service(),
         }
     }
 
@@ -170,6 +175,7 @@ impl Response {
                 out.extend_from_slice(&identity.image_hash.unwrap_or([0; 32]));
                 put_str8(&mut out, &identity.project);
                 out.push(u8::from(identity.password_required));
+                out.push(identity.debug.bits());
             }
             Login { token } => out.extend_from_slice(&token.to_le_bytes()),
             DownloadBegin {
@@ -272,6 +278,7 @@ impl Response {
                     out.extend_from_slice(&fault.cycle.to_le_bytes());
                 }
             }
+            Debug(response) => response.encode_fields(&mut out),
         }
         out
     }
@@ -315,6 +322,7 @@ fn decode_answer(
             image_hash: Some(r.hash("image hash")?).filter(|hash| *hash != [0; 32]),
             project: r.str8("project")?,
             password_required: r.u8("password required")? != 0,
+            debug: DebugStatus::from_bits(r.u8("debug")?),
         }),
         Service::Login => Response::Login {
             token: r.u128("token")?,
@@ -436,6 +444,10 @@ fn decode_answer(
             }
             Response::Faults { total, faults }
         }
+        debug => match DebugResponse::decode_fields(request, debug, r)? {
+            Some(response) => Response::Debug(response),
+            None => return Err(DecodeError::UnknownService(debug.number())),
+        },
     })
 }
 

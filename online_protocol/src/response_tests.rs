@@ -177,6 +177,7 @@ fn a_zero_hash_means_no_program() {
         image_hash: None,
         project: String::new(),
         password_required: false,
+        debug: DebugStatus::default(),
     };
     let body = Response::Identify(identity).encode();
     assert_eq!(&body[11..43], &[0; 32]);
@@ -204,4 +205,117 @@ proptest! {
     ) {
         let _ = Response::decode(&request, &body);
     }
+}
+
+#[test]
+fn identify_of_version_3_ends_with_the_debug_byte() {
+    let identity = Identity {
+        protocol: crate::PROTOCOL_VERSION,
+        runtime_version: String::new(),
+        state: TargetState::Running,
+        image_hash: None,
+        project: String::new(),
+        password_required: false,
+        debug: DebugStatus {
+            session: true,
+            halted: true,
+            lingering: false,
+            switched_off: true,
+        },
+    };
+    let body = Response::Identify(identity.clone()).encode();
+    assert_eq!(body.last(), Some(&0b1011));
+    let request = request_of(Service::Identify);
+    assert_eq!(
+        Response::decode(&request, &body),
+        Ok(Ok(Response::Identify(identity)))
+    );
+    assert!(matches!(
+        Response::decode(&request, &body[..body.len() - 1]),
+        Err(DecodeError::TooShort { field: "debug", .. })
+    ));
+}
+
+#[test]
+fn a_frame_read_answer_has_the_bytes_of_its_request_ranges() {
+    use crate::{DebugRequest, DebugResponse, FrameRange};
+    let request = Request::Debug(DebugRequest::FrameRead {
+        task: 0,
+        frame: 0,
+        ranges: vec![
+            FrameRange { offset: 0, size: 2 },
+            FrameRange { offset: 8, size: 1 },
+        ],
+    });
+    let body = [0x6B, 0, 1, 2, 3];
+    assert_eq!(
+        Response::decode(&request, &body),
+        Ok(Ok(Response::Debug(DebugResponse::FrameRead {
+            bytes: vec![1, 2, 3]
+        })))
+    );
+    assert!(matches!(
+        Response::decode(&request, &body[..4]),
+        Err(DecodeError::TooShort { .. })
+    ));
+    assert!(matches!(
+        Response::decode(&request, &[0x6B, 0, 1, 2, 3, 4]),
+        Err(DecodeError::LeftOver { at: 5, count: 1 })
+    ));
+}
+
+#[test]
+fn a_truncated_or_extended_debugging_answer_is_an_error() {
+    use proptest::strategy::{Strategy, ValueTree};
+    use proptest::test_runner::TestRunner;
+    let mut runner = TestRunner::deterministic();
+    for _ in 0..200 {
+        let (request, response) = crate::debug_arb::response()
+            .new_tree(&mut runner)
+            .map(|tree| tree.current())
+            .unwrap_or_else(|error| panic!("{error}"));
+        let body = response.encode();
+        for end in 0..body.len() {
+            assert!(
+                Response::decode(&request, &body[..end]).is_err(),
+                "{response:?} cut to {end} bytes"
+            );
+        }
+        let mut longer = body;
+        longer.push(0);
+        assert!(
+            Response::decode(&request, &longer).is_err(),
+            "{response:?} with one more byte"
+        );
+    }
+}
+
+#[test]
+fn a_halt_state_entry_names_no_breakpoint_with_0xffff() {
+    use crate::{
+        DebugOptions, DebugResponse, HaltReason, HaltState, SessionState, TaskDebugState, TaskHalt,
+    };
+    let state = HaltState {
+        session: SessionState::Lingering,
+        options: DebugOptions::default(),
+        generation: 7,
+        total: 1,
+        tasks: vec![TaskHalt {
+            task: 0,
+            state: TaskDebugState::Halted,
+            reason: HaltReason::Halt,
+            breakpoint: None,
+            pou: 1,
+            instruction: 2,
+            depth: 1,
+            cycle: 10,
+            halted_ms: 5,
+        }],
+    };
+    let body = Response::Debug(DebugResponse::HaltState(state)).encode();
+    assert_eq!(
+        body.len(),
+        2 + crate::HALT_STATE_HEADER_BYTES + crate::HALT_ENTRY_BYTES
+    );
+    assert_eq!(&body[2 + 8 + 3..2 + 8 + 5], &[0xFF, 0xFF]);
 }

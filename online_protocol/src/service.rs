@@ -52,11 +52,41 @@ pub enum Service {
     Tasks = 0x50,
     /// `FAULTS`: the faults recorded.
     Faults = 0x51,
+    /// `DEBUG_ATTACH`: the debug session created or taken over (version 3).
+    DebugAttach = 0x60,
+    /// `DEBUG_DETACH`: the debug session ended.
+    DebugDetach = 0x61,
+    /// `BREAK_SET`: a breakpoint set.
+    BreakSet = 0x62,
+    /// `BREAK_CLEAR`: a breakpoint, or every one, cleared.
+    BreakClear = 0x63,
+    /// `BREAK_LIST`: the session's breakpoints.
+    BreakList = 0x64,
+    /// `HALT_STATE`: the session and what every task is doing.
+    HaltState = 0x65,
+    /// `STEP`: a halted task goes on to the next statement start of a kind.
+    Step = 0x66,
+    /// `RUN_TO`: a halted task goes on to a statement start.
+    RunTo = 0x67,
+    /// `CONTINUE`: a halted task goes on.
+    Continue = 0x68,
+    /// `HALT`: a task halts at its next statement start.
+    Halt = 0x69,
+    /// `STACK`: a halted task's call stack.
+    Stack = 0x6A,
+    /// `FRAME_READ`: bytes of a halted task's frame.
+    FrameRead = 0x6B,
+    /// `FRAME_WRITE`: bytes written into a halted task's frame.
+    FrameWrite = 0x6C,
+    /// `FLOW_CONFIGURE`: which POUs' statements are recorded.
+    FlowConfigure = 0x6D,
+    /// `FLOW_READ`: which statements of a POU ran.
+    FlowRead = 0x6E,
 }
 
 impl Service {
     /// Every service, in the order of their numbers.
-    pub const ALL: [Service; 24] = [
+    pub const ALL: [Service; 39] = [
         Service::Identify,
         Service::Login,
         Service::Logout,
@@ -81,6 +111,22 @@ impl Service {
         Service::TraceAdd,
         Service::Tasks,
         Service::Faults,
+        // The debugging services (version 3, §6).
+        Service::DebugAttach,
+        Service::DebugDetach,
+        Service::BreakSet,
+        Service::BreakClear,
+        Service::BreakList,
+        Service::HaltState,
+        Service::Step,
+        Service::RunTo,
+        Service::Continue,
+        Service::Halt,
+        Service::Stack,
+        Service::FrameRead,
+        Service::FrameWrite,
+        Service::FlowConfigure,
+        Service::FlowRead,
     ];
 
     /// The service's number on the wire.
@@ -88,7 +134,7 @@ impl Service {
         self as u8
     }
 
-    /// The service with `number`, if protocol version 2 has one.
+    /// The service with `number`, if protocol version 3 has one.
     pub fn from_number(number: u8) -> Option<Self> {
         Self::ALL
             .into_iter()

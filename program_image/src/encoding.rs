@@ -89,7 +89,7 @@ pub enum ImageError {
 }
 
 /// Section ids (§3), in the order they appear.
-const SECTIONS: [(u16, &str, bool); 12] = [
+const SECTIONS: [(u16, &str, bool); 13] = [
     (1, "types", true),
     (2, "layout", true),
     (3, "initial", true),
@@ -104,6 +104,8 @@ const SECTIONS: [(u16, &str, bool); 12] = [
     (11, "modbus_map", true),
     // Critical: without it the motion function blocks would run without their axes.
     (12, "motion", true),
+    // Not critical: only the debugger reads it (`docs/protocol.md` §6).
+    (13, "debug", false),
 ];
 
 const HEADER_BYTES: usize = 16;
@@ -119,7 +121,7 @@ fn payload<T: Serialize>(value: &T) -> Vec<u8> {
 impl ProgramImage {
     /// The image as bytes: header, sections, trailer.
     pub fn encode(&self) -> Vec<u8> {
-        let sections: [Vec<u8>; 12] = [
+        let sections: [Vec<u8>; 13] = [
             payload(&self.types),
             payload(&self.layout),
             payload(&self.initial),
@@ -132,16 +134,18 @@ impl ProgramImage {
             payload(&self.info),
             self.modbus_map.as_ref().map(payload).unwrap_or_default(),
             self.motion.as_ref().map(payload).unwrap_or_default(),
+            self.debug.as_ref().map(payload).unwrap_or_default(),
         ];
         let mut bytes = Vec::new();
         bytes.extend_from_slice(MAGIC);
         bytes.extend_from_slice(&FORMAT_VERSION.to_le_bytes());
         bytes.extend_from_slice(&0u16.to_le_bytes());
         // The Modbus map section is written only when the project has its own map, the motion
-        // section only when it has axes or cams.
+        // section only when it has axes or cams, the debug section only when the compiler wrote it.
         let present = |id: u16| match id {
             11 => self.modbus_map.is_some(),
             12 => self.motion.is_some(),
+            13 => self.debug.is_some(),
             _ => true,
         };
         let count = SECTIONS.iter().filter(|(id, _, _)| present(*id)).count();
@@ -185,7 +189,7 @@ impl ProgramImage {
             return Err(ImageError::HashMismatch);
         }
         let count = u32::from_le_bytes([bytes[12], bytes[13], bytes[14], bytes[15]]);
-        let mut found: [Option<&[u8]>; 12] = [None; 12];
+        let mut found: [Option<&[u8]>; 13] = [None; 13];
         let mut rest = &content[HEADER_BYTES..];
         let mut last_id = 0u16;
         for _ in 0..count {
@@ -239,6 +243,10 @@ impl ProgramImage {
                 Some(body) => Some(decode_payload(SECTIONS[11].1, body)?),
                 None => None,
             },
+            debug: match found[12] {
+                Some(body) => Some(decode_payload(SECTIONS[12].1, body)?),
+                None => None,
+            },
         };
         image.verify()?;
         Ok(image)
@@ -261,7 +269,7 @@ pub fn identity_of(bytes: &[u8]) -> ImageHash {
 }
 
 fn section<T: DeserializeOwned>(
-    found: &[Option<&[u8]>; 12],
+    found: &[Option<&[u8]>; 13],
     index: usize,
 ) -> Result<T, ImageError> {
     let name = SECTIONS[index].1;
@@ -270,7 +278,7 @@ fn section<T: DeserializeOwned>(
 }
 
 fn optional_section<T: DeserializeOwned + Default>(
-    found: &[Option<&[u8]>; 12],
+    found: &[Option<&[u8]>; 13],
     index: usize,
 ) -> Result<T, ImageError> {
     match found[index] {

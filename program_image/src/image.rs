@@ -33,6 +33,9 @@ pub struct ProgramImage {
     pub modbus_map: Option<Vec<ModbusRange>>,
     /// The project's axes and cam tables (`docs/motion.md`); `None` when it has neither.
     pub motion: Option<crate::motion::MotionSection>,
+    /// What the debugger needs beyond the code (frame variables, source hashes); `None`
+    /// when the compiler wrote none. The runtime never needs it.
+    pub debug: Option<crate::debug::DebugInfo>,
 }
 
 /// A Modbus table.

@@ -8,12 +8,17 @@
 //! The format is specified in `docs/program-image.md`: [`ProgramImage::encode`] and
 //! [`ProgramImage::decode`] implement its container, [`ProgramImage::verify`] its load-time
 //! checks, [`code`] its instructions and [`std_blocks`] the instance layouts of the standard
-//! function blocks.
+//! function blocks; [`DebugInfo`] is the optional debug section, [`BreakCondition`] a
+//! breakpoint's compiled condition with [`ProgramImage::verify_condition`], and
+//! [`ProgramImage::instance_path`] names an instance by its address.
 
 pub mod code;
+mod condition;
+mod debug;
 mod elementary;
 mod encoding;
 mod image;
+mod instance_path;
 mod listing;
 pub mod motion;
 pub mod std_blocks;
@@ -21,6 +26,8 @@ mod types;
 mod verify;
 
 pub use code::{BinaryOp, CompareOp, Instr, Operand, StdBlock, StdFunction, Transfer, UnaryOp};
+pub use condition::{BreakCondition, ConditionError};
+pub use debug::{DebugInfo, FrameVariable, FrameVariableKind, PouDebug, source_hash};
 pub use elementary::Elementary;
 pub use encoding::{FORMAT_VERSION, ImageError, ImageHash, MAGIC, MAX_IMAGE_BYTES, identity_of};
 pub use image::{

@@ -4,7 +4,7 @@
 
 use crate::code::{Instr, Operand, StdFunction};
 use crate::encoding::ImageError;
-use crate::image::{InitRun, PouKind, Region};
+use crate::image::{InitRun, Pou, PouKind, Region};
 use crate::types::TypeDef;
 use crate::{ProgramImage, std_blocks};
 
@@ -94,6 +94,7 @@ impl ProgramImage {
         self.verify_types()?;
         self.verify_initial()?;
         self.verify_motion()?;
+        self.verify_debug()?;
         for (index, symbol) in self.symbols.iter().enumerate() {
             let Some(ty) = self.types.get(symbol.ty as usize) else {
                 return invalid(format!("symbol {} ('{}') has no type", index, symbol.path));
@@ -108,8 +109,8 @@ impl ProgramImage {
                 return invalid(format!("symbol '{}' lies outside its region", symbol.path));
             }
         }
-        for (index, pou) in self.pous.iter().enumerate() {
-            self.verify_pou(index)
+        for pou in &self.pous {
+            self.verify_code(pou)
                 .map_err(|message| ImageError::Invalid(format!("POU '{}': {message}", pou.name)))?;
         }
         for task in &self.tasks {
@@ -226,8 +227,9 @@ impl ProgramImage {
         check(&self.initial.memory, self.layout.memory_size, "%M")
     }
 
-    fn verify_pou(&self, index: usize) -> Result<(), String> {
-        let pou = &self.pous[index];
+    /// Checks the code of `pou` (the image's own, or a breakpoint condition in its POU's
+    /// scope); the error names the instruction.
+    pub(crate) fn verify_code(&self, pou: &Pou) -> Result<(), String> {
         if pou.frame_size > self.layout.stack_size {
             return Err(format!(
                 "its frame of {} bytes exceeds the stack",

@@ -6,10 +6,10 @@ use std::fmt::Write as _;
 
 use expect_test::expect_file;
 use program_image::{
-    BinaryOp, Elementary, FORMAT_VERSION, ImageError, Info, InitRun, InitialValues, Instr, Layout,
-    LineEntry, MAGIC, MAX_REGION_BYTES, ModbusRange, ModbusTable, Operand, Pou, PouKind,
-    ProgramCall, ProgramImage, Region, RetainLayout, StructKind, Symbol, SymbolFlags, Task,
-    TaskKind, TypeDef,
+    BinaryOp, DebugInfo, Elementary, FORMAT_VERSION, FrameVariable, FrameVariableKind, ImageError,
+    Info, InitRun, InitialValues, Instr, Layout, LineEntry, MAGIC, MAX_REGION_BYTES, ModbusRange,
+    ModbusTable, Operand, Pou, PouDebug, PouKind, ProgramCall, ProgramImage, Region, RetainLayout,
+    StructKind, Symbol, SymbolFlags, Task, TaskKind, TypeDef,
 };
 use proptest::prelude::*;
 use sha2::{Digest, Sha256};
@@ -198,6 +198,7 @@ fn small_image() -> ProgramImage {
             words_per_value: 1,
         }]),
         motion: None,
+        debug: None,
     }
 }
 
@@ -770,4 +771,76 @@ proptest! {
         let _ = ProgramImage::decode(&rehashed);
         let _ = ProgramImage::decode(&rehashed[..cut.index(rehashed.len() + 1)]);
     }
+}
+
+/// The small image with a debug section: `double`'s parameter and result in its frame.
+fn with_debug() -> ProgramImage {
+    let mut image = small_image();
+    let double = PouDebug {
+        source_hash: [7; 32],
+        frame: vec![
+            FrameVariable {
+                name: "x".to_owned(),
+                ty: 0,
+                offset: 0,
+                kind: FrameVariableKind::Input,
+            },
+            FrameVariable {
+                name: "double".to_owned(),
+                ty: 0,
+                offset: 4,
+                kind: FrameVariableKind::Result,
+            },
+        ],
+    };
+    image.debug = Some(DebugInfo {
+        pous: vec![PouDebug::default(), double],
+    });
+    image
+}
+
+#[test]
+fn a_debug_section_round_trips_as_the_optional_section_13() {
+    let image = with_debug();
+    let bytes = image.encode();
+    assert_eq!(ProgramImage::decode(&bytes), Ok(image));
+    let debug = sections(&bytes)
+        .into_iter()
+        .find(|section| section.id == 13)
+        .unwrap_or_else(|| panic!("no section 13"));
+    assert_eq!(debug.flags, 0, "the debug section is not critical");
+    // A reader that does not know the section skips it: without it the image is the same.
+    let without: Vec<Section> = sections(&bytes)
+        .into_iter()
+        .filter(|section| section.id != 13)
+        .collect();
+    assert_eq!(
+        ProgramImage::decode(&container(&without)),
+        Ok(small_image())
+    );
+}
+
+#[test]
+fn a_debug_section_that_does_not_match_the_code_is_refused() {
+    let mut image = with_debug();
+    if let Some(debug) = &mut image.debug {
+        debug.pous.pop();
+    }
+    assert_contains(&invalid_message(&image), "debug has 1 POUs, the code 2");
+    let mut image = with_debug();
+    if let Some(debug) = &mut image.debug {
+        debug.pous[1].frame[1].offset = 6;
+    }
+    assert_contains(
+        &invalid_message(&image),
+        "variable 'double' of POU 'double' lies outside its frame",
+    );
+    let mut image = with_debug();
+    if let Some(debug) = &mut image.debug {
+        debug.pous[1].frame[0].ty = 99;
+    }
+    assert_contains(
+        &invalid_message(&image),
+        "variable 'x' of POU 'double' has no type",
+    );
 }

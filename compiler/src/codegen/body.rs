@@ -145,6 +145,13 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
         }
     }
 
+    /// Makes temporaries start at the frame offset `offset`: a breakpoint condition keeps
+    /// them in its scratch area after the POU's frame, where the POU's own are not touched.
+    pub(crate) fn start_temporaries_at(&mut self, offset: u32) {
+        self.temp_top = offset;
+        self.frame_max = self.frame_max.max(offset);
+    }
+
     /// Emits an instruction and returns its index.
     pub(crate) fn emit(&mut self, instr: Instr) -> usize {
         if let Instr::Jump { target }
@@ -273,6 +280,24 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
         result
     }
 
+    /// Records the next instruction as a statement start at `node`'s line, even when the entry
+    /// before has the same line: an `ELSIF` condition, a loop's test and an SFC transition's
+    /// test are places where the debugger halts (`docs/program-image.md` §11). When the entry
+    /// before starts at the same instruction, its statement generated no code, so the
+    /// instruction is this place's.
+    pub(crate) fn mark_statement_start(&mut self, node: &SyntaxNode) {
+        let line = self.line_of(node);
+        let index = self.here();
+        match self.lines.last_mut() {
+            Some(last) if last.index == index => last.line = line,
+            _ => self.lines.push(LineEntry {
+                index,
+                file: self.file,
+                line,
+            }),
+        }
+    }
+
     fn line_of(&self, node: &SyntaxNode) -> u32 {
         let offset = usize::from(node.text_range().start());
         let trimmed = node
@@ -310,6 +335,8 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
             Stmt::CaseStmt(stmt) => self.case_statement(stmt),
             Stmt::ForStmt(stmt) => self.for_statement(stmt),
             Stmt::WhileStmt(stmt) => {
+                // The back edge jumps to the test, which is where the statement starts.
+                self.mark_statement_start(stmt.syntax());
                 let start = self.here();
                 let mut exit = None;
                 self.loops.push(Loop {
@@ -347,6 +374,7 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
                 let mut condition_at = start;
                 self.optional_list(stmt.body())?;
                 if let Some(condition) = stmt.condition() {
+                    self.mark_statement_start(condition.syntax());
                     condition_at = self.here();
                     let condition = self.expr_as(&condition, &Type::BOOL)?;
                     self.emit(Instr::JumpIfNot {
@@ -449,11 +477,19 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
     fn if_statement(&mut self, stmt: &IfStmt) -> Gen<()> {
         let mut ends = Vec::new();
         let mut pending: Option<usize> = None;
-        let branches = std::iter::once((stmt.condition(), stmt.then_branch())).chain(
-            stmt.elsif_branches()
-                .map(|branch| (branch.condition(), branch.body())),
+        let branches = std::iter::once((None, stmt.condition(), stmt.then_branch())).chain(
+            stmt.elsif_branches().map(|branch| {
+                (
+                    Some(branch.syntax().clone()),
+                    branch.condition(),
+                    branch.body(),
+                )
+            }),
         );
-        for (condition, body) in branches {
+        for (elsif, condition, body) in branches {
+            if let Some(elsif) = &elsif {
+                self.mark_statement_start(elsif);
+            }
             if let Some(condition) = condition {
                 let condition = self.expr_as(&condition, &Type::BOOL)?;
                 pending = Some(self.emit(Instr::JumpIfNot {
@@ -625,7 +661,9 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
         let top;
         let done = self.temp(1);
         if let Some(step) = constant_step {
-            // A constant step has a known direction: one comparison an iteration.
+            // A constant step has a known direction: one comparison an iteration. The test,
+            // where the back edge jumps, is a statement start of the FOR line.
+            self.mark_statement_start(stmt.syntax());
             top = self.here();
             let current = self.load(&counter)?;
             let op = if step < 0 {
@@ -650,6 +688,7 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
                 a: step,
                 b: zero,
             });
+            self.mark_statement_start(stmt.syntax());
             top = self.here();
             let current = self.load(&counter)?;
             // Counting up ends past the end; counting down ends below it.

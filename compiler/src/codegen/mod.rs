@@ -13,12 +13,16 @@
 
 mod body;
 mod call;
+mod condition;
 mod constant;
+mod debug_info;
 mod error;
 mod expr;
 mod init;
 mod interface;
 mod layout;
+#[cfg(test)]
+mod line_table_tests;
 mod motion;
 mod program;
 mod property;
@@ -37,6 +41,9 @@ use project_model::Project;
 use crate::sema::{ProjectDiagnostic, check_lowered};
 use crate::{Severity, SourceProject};
 
+pub use condition::{
+    CompiledCondition, ConditionCompileError, compile_condition, compile_source_condition,
+};
 pub use error::{CodegenError, Location, StatementPlace, Within};
 pub use program::BodyOrigin;
 
@@ -56,7 +63,7 @@ pub enum CompileError {
 /// Checks and compiles a project.
 pub fn compile_project(project: &Project) -> Result<ProgramImage, CompileError> {
     let origin = |file: &Path| (file.to_string_lossy().into_owned(), 1);
-    compile_with(project, &origin)
+    compile_with(project, &origin, None)
 }
 
 /// Checks and compiles a project made from one source file; the line table points into that
@@ -71,10 +78,15 @@ pub fn compile_source(
             source.body_first_line(file).unwrap_or(1),
         )
     };
-    compile_with(&source.project, &origin)
+    compile_with(&source.project, &origin, None)
 }
 
-fn compile_with(project: &Project, origin: BodyOrigin<'_>) -> Result<ProgramImage, CompileError> {
+/// Checks and compiles a project, and the breakpoint condition of `condition` in it.
+fn compile_with(
+    project: &Project,
+    origin: BodyOrigin<'_>,
+    condition: Option<&mut condition::ConditionJob>,
+) -> Result<ProgramImage, CompileError> {
     // LD and FBD bodies are checked and compiled as their Structured Text, and what is found
     // in them is moved back onto their elements.
     let lowered = crate::lower::lower_project(project);
@@ -88,6 +100,6 @@ fn compile_with(project: &Project, origin: BodyOrigin<'_>) -> Result<ProgramImag
     {
         return Err(CompileError::Diagnostics(diagnostics));
     }
-    program::build_image(&lowered.project, origin, checked)
+    program::build_image(&lowered.project, origin, checked, condition)
         .map_err(|error| CompileError::Unsupported(lowered.locate_error(error)))
 }

@@ -42,6 +42,9 @@ pub(crate) struct Build<'g, 'p> {
     blocks: Vec<&'p Pou>,
     /// The `AXIS_REF` and `MC_CAM_REF` globals of the axes and cams, by lower-case name.
     devices: HashMap<String, Typed>,
+    /// While a breakpoint condition is compiled: where its constants go, as it cannot add
+    /// to the image's pool.
+    pub(super) scratch_constants: Option<super::condition::ScratchConstants>,
 }
 
 impl<'g, 'p> Build<'g, 'p> {
@@ -56,6 +59,7 @@ impl<'g, 'p> Build<'g, 'p> {
             programs: HashMap::new(),
             blocks: Vec::new(),
             devices: HashMap::new(),
+            scratch_constants: None,
         }
     }
 
@@ -63,6 +67,9 @@ impl<'g, 'p> Build<'g, 'p> {
     pub(crate) fn constant(&mut self, bytes: &[u8]) -> Operand {
         if let Some(at) = self.constant_index.get(bytes) {
             return Operand::Const(*at);
+        }
+        if let Some(scratch) = &mut self.scratch_constants {
+            return scratch.add(bytes);
         }
         let at = self.constants.len().next_multiple_of(8);
         self.constants.resize(at, 0);
@@ -267,13 +274,26 @@ fn key(pou: &str, member: Option<&str>) -> String {
 pub type BodyOrigin<'a> = &'a dyn Fn(&Path) -> (String, u32);
 
 /// One compiled unit: a POU's body, a method or an action.
-struct Unit<'p> {
-    pou: &'p Pou,
-    member: Option<String>,
+pub(super) struct Unit<'p> {
+    /// The POU, or the owner of the method or action.
+    pub(super) pou: &'p Pou,
+    /// The method's, action's or accessor's name.
+    pub(super) member: Option<String>,
     kind: ImageKind,
-    target: TextTarget,
+    /// The body it compiles.
+    pub(super) target: TextTarget,
     /// A library function block the runtime runs natively (`docs/motion.md` §3).
     native: bool,
+}
+
+impl Unit<'_> {
+    /// Its name in the image: `FB_Conveyor`, or `FB_Conveyor.Reset` for a member.
+    pub(super) fn image_name(&self) -> String {
+        match &self.member {
+            Some(member) => format!("{}.{member}", self.pou.name),
+            None => self.pou.name.clone(),
+        }
+    }
 }
 
 /// The data region being laid out.
@@ -311,6 +331,7 @@ pub(crate) fn build_image(
     project: &Project,
     origin: BodyOrigin<'_>,
     mut checked: CheckedBodies,
+    condition: Option<&mut super::condition::ConditionJob>,
 ) -> Gen<ProgramImage> {
     let globals = Globals::new(project);
     let mut build = Build::new(&globals);
@@ -513,11 +534,12 @@ pub(crate) fn build_image(
     let bodies = project_model::st_body_files(project);
     let mut sources: Vec<String> = Vec::new();
     let mut pous = Vec::with_capacity(units.len());
+    let mut debug_pous = Vec::with_capacity(units.len());
     for unit in &units {
         let body = bodies
             .iter()
             .find(|b| std::ptr::eq(b.pou, unit.pou) && b.target == unit.target);
-        pous.push(compile_unit(
+        let (pou, debug) = compile_unit(
             &mut build,
             &globals,
             unit,
@@ -525,7 +547,14 @@ pub(crate) fn build_image(
             origin,
             &mut sources,
             &mut checked,
-        )?);
+        )?;
+        pous.push(pou);
+        debug_pous.push(debug);
+    }
+    // A breakpoint condition is compiled in its POU's scope once every POU is, against the
+    // same layouts and constant pool as the image.
+    if let Some(job) = condition {
+        job.run(&mut build, &globals, &units, &pous);
     }
 
     // Tasks, or one implicit task for a project of one program without a configuration.
@@ -637,6 +666,7 @@ pub(crate) fn build_image(
         },
         modbus_map,
         motion: devices.section,
+        debug: Some(program_image::DebugInfo { pous: debug_pous }),
     };
     image.verify().map_err(CodegenError::InvalidImage)?;
     Ok(image)
@@ -875,30 +905,11 @@ fn instance_symbols<'p>(
     Ok(())
 }
 
-fn compile_unit<'g, 'p>(
-    build: &mut Build<'g, 'p>,
-    globals: &'g Globals<'p>,
-    unit: &Unit<'p>,
-    body: Option<&StBody<'p>>,
-    origin: BodyOrigin<'_>,
-    sources: &mut Vec<String>,
-    checked: &mut CheckedBodies,
-) -> Gen<ImagePou> {
+/// The frame of `unit`: a method's or property accessor's, a function's, or a body's
+/// (VAR_TEMP only).
+pub(super) fn unit_frame<'p>(build: &mut Build<'_, 'p>, unit: &Unit<'p>) -> Gen<Frame<'p>> {
     let pou = unit.pou;
-    let name = match &unit.member {
-        Some(member) => format!("{}.{member}", pou.name),
-        None => pou.name.clone(),
-    };
-    let instance = match pou.kind {
-        PouKind::Program | PouKind::FunctionBlock => Some(
-            build
-                .layouts
-                .instance(pou)
-                .map_err(|e| e.within(Within::Pou(name.clone())))?,
-        ),
-        _ => None,
-    };
-    let frame = match &unit.target {
+    match &unit.target {
         TextTarget::Method { method, .. } => {
             let method = pou
                 .methods
@@ -924,13 +935,44 @@ fn compile_unit<'g, 'p>(
         }
         _ => build.frame_of(pou, &pou.variables, None),
     }
-    .map_err(|e| e.within(Within::Pou(name.clone())))?;
+}
+
+fn compile_unit<'g, 'p>(
+    build: &mut Build<'g, 'p>,
+    globals: &'g Globals<'p>,
+    unit: &Unit<'p>,
+    body: Option<&StBody<'p>>,
+    origin: BodyOrigin<'_>,
+    sources: &mut Vec<String>,
+    checked: &mut CheckedBodies,
+) -> Gen<(ImagePou, program_image::PouDebug)> {
+    let pou = unit.pou;
+    let name = unit.image_name();
+    let instance = match pou.kind {
+        PouKind::Program | PouKind::FunctionBlock => Some(
+            build
+                .layouts
+                .instance(pou)
+                .map_err(|e| e.within(Within::Pou(name.clone())))?,
+        ),
+        _ => None,
+    };
+    let frame = unit_frame(build, unit).map_err(|e| e.within(Within::Pou(name.clone())))?;
     let frame_init = build
         .frame_init(&frame)
         .map_err(|e| e.within(Within::Pou(name.clone())))?;
     let instance_size = instance.as_ref().map_or(0, |i| i.size);
+    let debug = build
+        .pou_debug(
+            pou,
+            &unit.target,
+            &name,
+            &frame,
+            body.map_or("", |b| b.text),
+        )
+        .map_err(|e| e.within(Within::Pou(name.clone())))?;
     if unit.native {
-        return Ok(ImagePou {
+        let native = ImagePou {
             name: name.clone(),
             kind: unit.kind,
             frame_size: frame.size,
@@ -941,7 +983,8 @@ fn compile_unit<'g, 'p>(
                 program_image::Instr::Return,
             ],
             lines: Vec::new(),
-        });
+        };
+        return Ok((native, debug));
     }
     let mut image_pou = ImagePou {
         name: name.clone(),
@@ -983,7 +1026,7 @@ fn compile_unit<'g, 'p>(
             ));
         }
         image_pou.code.push(program_image::Instr::Return);
-        return Ok(image_pou);
+        return Ok((image_pou, debug));
     };
     let (file_name, first_line) = origin(&body.file);
     let file = match sources.iter().position(|s| *s == file_name) {
@@ -1026,5 +1069,5 @@ fn compile_unit<'g, 'p>(
     image_pou.frame_size = generator.frame_max;
     image_pou.code = std::mem::take(&mut generator.code);
     image_pou.lines = std::mem::take(&mut generator.lines);
-    Ok(image_pou)
+    Ok((image_pou, debug))
 }

@@ -612,6 +612,9 @@ impl BodyGen<'_, '_, '_> {
         // skipped together when none of that group's steps is active.
         let mut open: Option<(usize, usize)> = None;
         for transition in chart.transitions_in_test_order() {
+            // Each transition's test is a statement start of its line, where breakpoints,
+            // steps and flow control work.
+            self.mark_statement_start(transition.node.syntax());
             let anchor = transition
                 .from
                 .first()

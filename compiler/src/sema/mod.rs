@@ -239,6 +239,22 @@ pub(crate) fn expression_types(
     checker.types.unwrap_or_default()
 }
 
+/// The checker's type of every expression under `root` and what it finds there, for a
+/// breakpoint condition compiled in a body's scope (`codegen::compile_condition`).
+pub(crate) fn expression_check(
+    scope: &Scope<'_, '_>,
+    root: &crate::syntax::SyntaxNode,
+) -> (expression_types::ExpressionTypes, Vec<Diagnostic>) {
+    let mut usage = Usage::new();
+    let mut checker = BodyChecker::new(scope, &mut usage);
+    checker.types = Some(expression_types::ExpressionTypes::default());
+    checker.check(root);
+    (
+        checker.types.take().unwrap_or_default(),
+        checker.diagnostics,
+    )
+}
+
 /// The names an expression in the body `target` of `pou` sees, for
 /// [`expression_declared_type`]: made once per body, as it indexes all of the POU's names.
 pub(crate) fn expression_scope<'a, 'p>(

@@ -1,12 +1,13 @@
 //! Fuzzes loading a program image: any bytes, given a correct identity hash so that they reach
 //! the section decoders and the verifier, must be refused with an error or decode to an image
 //! that the engine either refuses or loads and runs for one cycle of every task, all without a
-//! panic. A watchdog of 10 ms ends any cycle that loops.
+//! panic. A watchdog of 10 ms ends any cycle that loops. The bytes are also tried as a
+//! breakpoint condition of every POU of a decoded image.
 
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use program_image::ProgramImage;
+use program_image::{BreakCondition, ProgramImage};
 use runtime::engine::Engine;
 use sha2::{Digest, Sha256};
 
@@ -19,6 +20,13 @@ fuzz_target!(|data: &[u8]| {
         return;
     };
     assert_eq!(ProgramImage::decode(&image.encode()).as_ref(), Ok(&image));
+    // The same bytes as a breakpoint condition for every POU: decoding and verifying it never
+    // panic, whatever the image.
+    if let Ok(condition) = BreakCondition::decode(data) {
+        for pou in 0..image.pous.len() {
+            let _ = image.verify_condition(pou as u32, &condition);
+        }
+    }
     for task in &mut image.tasks {
         task.watchdog_ns = 10_000_000;
         task.watchdog_sensitivity = 1;

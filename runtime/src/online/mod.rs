@@ -1,4 +1,4 @@
-//! Rivet's online services (`docs/protocol.md`, version 2) over Modbus function code 0x64:
+//! Rivet's online services (`docs/protocol.md`, version 3) over Modbus function code 0x64:
 //! identity, login, download, run control, monitor, write, force, trace, statistics and faults.
 //!
 //! - The requests and responses themselves, with their encoding, are `online_protocol`'s:

@@ -309,6 +309,9 @@ impl OnlineServices {
                 tasks: self.tasks(),
             }),
             Request::Faults { from } => Ok(self.faults(from)),
+            // Debugging (protocol §6) is not served by this runtime yet: it answers as one
+            // started with `--debug off` does, and says so in IDENTIFY's `debug` byte.
+            Request::Debug(_) => Err(not_now("debugging is switched off on this runtime")),
         }
     }
 
@@ -336,6 +339,10 @@ impl OnlineServices {
             image_hash: status.image,
             project: cut(&project, MAX_TEXT_BYTES).to_owned(),
             password_required: self.password.is_some(),
+            debug: online_protocol::DebugStatus {
+                switched_off: true,
+                ..Default::default()
+            },
         }))
     }
 

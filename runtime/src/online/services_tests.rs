@@ -59,7 +59,9 @@ fn changing_services_need_a_token_from_the_password_and_reading_ones_do_not() {
         },
     );
     assert_eq!(status, 0);
-    assert_eq!(identity.last(), Some(&1), "a password is required");
+    // The password byte, then version 3's debug byte: debugging is not served yet (bit 3).
+    assert_eq!(identity[identity.len() - 2], 1, "a password is required");
+    assert_eq!(identity.last(), Some(&8), "debugging is switched off");
     assert_eq!(ask(&services, &Request::Start { token: 0 }).0, 3);
     assert_eq!(ask(&services, &Request::Start { token: 1234 }).0, 4);
     assert_eq!(ask(&services, &login_with("guess")).0, 4);
@@ -126,7 +128,7 @@ fn another_protocol_version_is_refused_with_both_versions() {
     assert_eq!(status, 9);
     let message = String::from_utf8(message[1..].to_vec()).unwrap();
     assert!(
-        message.contains("version 7") && message.contains("version 2"),
+        message.contains("version 7") && message.contains(&format!("version {PROTOCOL_VERSION}")),
         "{message}"
     );
 }
@@ -168,7 +170,7 @@ fn without_a_program_the_services_that_need_one_say_not_now() {
         },
     );
     assert_eq!(status, 0);
-    assert!(identity.contains(&0) && identity.ends_with(&[0, 0]));
+    assert!(identity.contains(&0) && identity.ends_with(&[0, 0, 8]));
 }
 
 #[test]
