@@ -80,6 +80,12 @@ impl OnlineServices {
         })
     }
 
+    /// How many connections hold a token from a login with the password (0 without a
+    /// password, where none are kept).
+    pub fn logged_in_connections(&self) -> usize {
+        lock(&self.tokens).len()
+    }
+
     /// The hook for [`crate::modbus::ServerOptions::closed`]: a transfer and a token end with
     /// the connection that began the one and logged in for the other (the server closes a
     /// connection after its idle timeout, so a token also ends when its client goes silent).
