@@ -125,6 +125,11 @@ impl Client {
         self.address
     }
 
+    /// Whether the client holds a token from a login with a password (which `LOGOUT` ends).
+    pub fn is_logged_in(&self) -> bool {
+        self.token != 0
+    }
+
     /// One service: the request out, the answer of the same service back.
     async fn call(&mut self, request: &Request) -> Result<Response, OnlineError> {
         let frame = request.encode();
@@ -470,22 +475,32 @@ impl Client {
     ) -> Result<Vec<Sample>, OnlineError> {
         let mut samples = Vec::new();
         loop {
-            let request = Request::TraceUpload {
-                from: samples.len() as u32,
-            };
-            let uploaded = match self.call(&request).await? {
-                Response::TraceUpload { samples } => samples,
-                other => return Err(unexpected(&other)),
-            };
+            let uploaded = self.trace_upload_from(places, samples.len() as u32).await?;
             let count = uploaded.len();
-            for sample in uploaded {
-                samples.push(split_sample(sample, places)?);
-            }
+            samples.extend(uploaded);
             progress(samples.len());
             if count == 0 {
                 return Ok(samples);
             }
         }
+    }
+
+    /// One `TRACE_UPLOAD`: the recorded samples from the `from`-th on that fit one answer
+    /// (none when there are no more yet), so that a trace still recording can be fetched as it
+    /// grows; `places` are the configured ones.
+    pub async fn trace_upload_from(
+        &mut self,
+        places: &[Place],
+        from: u32,
+    ) -> Result<Vec<Sample>, OnlineError> {
+        let uploaded = match self.call(&Request::TraceUpload { from }).await? {
+            Response::TraceUpload { samples } => samples,
+            other => return Err(unexpected(&other)),
+        };
+        uploaded
+            .into_iter()
+            .map(|sample| split_sample(sample, places))
+            .collect()
     }
 
     /// `TASKS`.

@@ -4,7 +4,9 @@
 //! The session connects, identifies and logs in; while a watch list is set it reads it every
 //! `poll_interval` and sends a [`Event::Snapshot`]. When the connection fails it says so
 //! ([`Event::Disconnected`]) and tries again every `reconnect_interval`; on reconnecting it
-//! identifies again (the program may have changed) before anything else.
+//! identifies again (the program may have changed) before anything else. When it ends
+//! ([`Command::Close`], or the command sender dropped) it logs out before closing the
+//! connection, so that its token ends at once.
 
 use std::net::SocketAddr;
 use std::time::Duration;
@@ -56,7 +58,7 @@ pub enum Command {
     /// Upload the recorded samples; answered by [`Event::TraceSamples`] after
     /// [`Event::TraceProgress`] events.
     TraceUpload,
-    /// End the session.
+    /// End the session: `LOGOUT` (waiting at most [`LOGOUT_TIMEOUT`]) and close.
     Close,
 }
 
@@ -176,9 +178,15 @@ async fn run(
                     }
                 }
                 command = commands.recv() => {
-                    let Some(command) = command else { return };
+                    let Some(command) = command else {
+                        log_out(&mut client).await;
+                        return;
+                    };
                     let outcome = match command {
-                        Command::Close => return,
+                        Command::Close => {
+                            log_out(&mut client).await;
+                            return;
+                        }
                         Command::Watch(places) => {
                             watch = places;
                             continue;
@@ -304,6 +312,19 @@ async fn run(
                 }
             }
         }
+    }
+}
+
+/// How long a session that ends waits for the answer to its `LOGOUT` before it closes the
+/// connection all the same (which ends the token too, only less explicitly).
+pub const LOGOUT_TIMEOUT: Duration = Duration::from_secs(1);
+
+/// Ends the client's token with `LOGOUT` when it logged in with a password, so that the token
+/// is of no use from now on even if the connection lingers; best effort, as closing the
+/// connection ends it too.
+async fn log_out(client: &mut Client) {
+    if client.is_logged_in() {
+        let _ = tokio::time::timeout(LOGOUT_TIMEOUT, client.logout()).await;
     }
 }
 

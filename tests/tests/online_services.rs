@@ -387,8 +387,9 @@ async fn with_a_password_only_a_logged_in_client_changes_the_target() {
         password: "sesame".to_owned(),
     };
     assert_eq!(ask(&mut client, &wrong).await.0, 4);
-    // The wrong password locks nobody else out: another client logs in, and its token is
-    // of no use on this connection.
+    // The wrong password's answer came when its address's wait was over, so it locks nobody
+    // out: another client (of the same address) logs in, and its token is of no use on this
+    // connection.
     let mut other = plc.connect().await;
     let other_token = login(&mut other, "open sesame").await;
     let stolen = Request::Start { token: other_token };

@@ -14,6 +14,7 @@ mod device_editors;
 mod devices;
 mod diagram;
 mod editor;
+mod logout;
 mod online;
 mod recovery;
 mod snapshots;

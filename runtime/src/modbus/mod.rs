@@ -28,7 +28,7 @@ pub use pdu::{
 };
 pub use server::{
     ConnectionClosed, CustomFunctions, DEFAULT_FRAME_TIMEOUT, DEFAULT_IDLE_TIMEOUT, ServerOptions,
-    current_connection, delay_answer, serve,
+    current_connection, current_peer, delay_answer, serve,
 };
 pub use write_policy::{
     REFUSED_WRITE, WritableRange, WritableTable, WritePolicy, WritePolicyError,

@@ -1,6 +1,7 @@
 //! The Modbus TCP server: accepting connections, framing requests, answering them.
 
 use std::io;
+use std::net::IpAddr;
 use std::sync::{Arc, Mutex};
 use std::time::Duration;
 
@@ -30,6 +31,8 @@ pub type ConnectionClosed = Arc<dyn Fn(u64) + Send + Sync>;
 tokio::task_local! {
     /// The number of the connection whose request is being served.
     static CONNECTION: u64;
+    /// The IP address of the peer of the connection being served.
+    static PEER: IpAddr;
     /// How long the connection being served waits before it answers (see [`delay_answer`]).
     static ANSWER_DELAY: std::cell::Cell<Duration>;
 }
@@ -48,6 +51,12 @@ pub fn delay_answer(delay: Duration) {
 /// for the life of the server), or `None` outside a server.
 pub fn current_connection() -> Option<u64> {
     CONNECTION.try_with(|connection| *connection).ok()
+}
+
+/// The IP address of the peer whose request a [`CustomFunctions`] hook is serving, or `None`
+/// outside a server; the online services count wrong passwords per address with it.
+pub fn current_peer() -> Option<IpAddr> {
+    PEER.try_with(|peer| *peer).ok()
 }
 
 /// How the server behaves; fixed for the life of one [`serve`] call.
@@ -102,8 +111,8 @@ pub async fn serve(
     loop {
         tokio::select! {
             accepted = listener.accept() => {
-                let stream = match accepted {
-                    Ok((stream, _peer)) => stream,
+                let (stream, peer) = match accepted {
+                    Ok(accepted) => accepted,
                     Err(error) if is_transient(&error) => {
                         tokio::time::sleep(ACCEPT_RETRY_DELAY).await;
                         continue;
@@ -119,7 +128,7 @@ pub async fn serve(
                 let responder = Arc::clone(&responder);
                 let closed = options.closed.clone();
                 let open = Arc::clone(&open);
-                connections.spawn(CONNECTION.scope(id, async move {
+                connections.spawn(CONNECTION.scope(id, PEER.scope(peer.ip(), async move {
                     let mut stream = stream;
                     let served = async {
                         stream.set_nodelay(true)?;
@@ -137,7 +146,7 @@ pub async fn serve(
                     if let Some(closed) = closed {
                         closed(id);
                     }
-                }));
+                })));
             }
             Some(_) = connections.join_next(), if !connections.is_empty() => {}
         }

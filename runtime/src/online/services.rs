@@ -1,8 +1,9 @@
 //! The online services on a scheduler, as the Modbus server's hook for function code 0x64.
 
 use std::collections::HashMap;
+use std::net::IpAddr;
 use std::sync::{Arc, Mutex, MutexGuard, PoisonError};
-use std::time::{Duration, Instant};
+use std::time::Instant;
 
 use online_protocol::{
     CHUNK_BYTES, DecodeError, FUNCTION_CODE, Fault, Identity, MAX_COUNT, MAX_FAULT_TEXT_BYTES,
@@ -16,18 +17,15 @@ use sha2::{Digest, Sha256};
 
 use super::download::Transfer;
 use super::trace::{MAX_TRACE_BYTES, Trace};
+use super::wrong_passwords::WrongPasswords;
 use crate::engine::ResetKind;
 use crate::modbus::{
     ConnectionClosed, CustomFunctions, ExceptionCode, MapSlot, ModbusMap, current_connection,
-    delay_answer,
+    current_peer, delay_answer,
 };
 use crate::retain::RetainRestore;
 use crate::scheduler::{Between, Scheduler, SchedulerError, SchedulerState};
 use crate::value;
-
-/// How long the connection that sent a wrong password waits for the refusal (and so before it
-/// can try again); other connections are not held up, so nobody can lock the others out.
-pub const WRONG_PASSWORD_DELAY: Duration = Duration::from_millis(500);
 
 /// The online services of one runtime: lives as long as its Modbus server; nothing of it is
 /// saved (tokens end with the process).
@@ -39,6 +37,8 @@ pub struct OnlineServices {
     /// Modbus server), valid on that connection only until it logs in again or closes; without
     /// a password none are kept, as any token is accepted.
     tokens: Mutex<HashMap<Option<u64>, u128>>,
+    /// The wrong passwords of each client address, which make all its connections wait.
+    wrong_passwords: Mutex<WrongPasswords>,
     /// The download in progress, if any.
     transfer: Mutex<Option<Transfer>>,
     /// The number of the last transfer begun.
@@ -54,6 +54,7 @@ impl OnlineServices {
             scheduler,
             password,
             tokens: Mutex::new(HashMap::new()),
+            wrong_passwords: Mutex::new(WrongPasswords::default()),
             transfer: Mutex::new(None),
             last_transfer: Mutex::new(0),
             map: None,
@@ -77,6 +78,12 @@ impl OnlineServices {
             }
             services.respond(data)
         })
+    }
+
+    /// How many connections hold a token from a login with the password (0 without a
+    /// password, where none are kept).
+    pub fn logged_in_connections(&self) -> usize {
+        lock(&self.tokens).len()
     }
 
     /// The hook for [`crate::modbus::ServerOptions::closed`]: a transfer and a token end with
@@ -111,6 +118,18 @@ impl OnlineServices {
         connection: Option<u64>,
         request: &[u8],
     ) -> Result<Vec<u8>, ExceptionCode> {
+        self.respond_at(connection, current_peer(), Instant::now(), request)
+    }
+
+    /// The response to a request that came at `now` from `connection` of the client at `peer`
+    /// (`None`: not from a Modbus server, whose wrong passwords are not counted).
+    fn respond_at(
+        &self,
+        connection: Option<u64>,
+        peer: Option<IpAddr>,
+        now: Instant,
+        request: &[u8],
+    ) -> Result<Vec<u8>, ExceptionCode> {
         let Some(&service) = request.first() else {
             return Err(ExceptionCode::IllegalDataValue);
         };
@@ -120,7 +139,7 @@ impl OnlineServices {
                 if let Some(token) = request.token() {
                     self.authorize(connection, token)?;
                 }
-                self.serve(connection, request)
+                self.serve(connection, peer, now, request)
             });
         let mut body = match answer {
             Ok(response) => response.encode(),
@@ -154,10 +173,16 @@ impl OnlineServices {
         }
     }
 
-    fn serve(&self, connection: Option<u64>, request: Request) -> Result<Response, Refusal> {
+    fn serve(
+        &self,
+        connection: Option<u64>,
+        peer: Option<IpAddr>,
+        now: Instant,
+        request: Request,
+    ) -> Result<Response, Refusal> {
         match request {
             Request::Identify { protocol } => self.identify(protocol),
-            Request::Login { password } => self.login(connection, &password),
+            Request::Login { password } => self.login(connection, peer, now, &password),
             Request::Logout => {
                 lock(&self.tokens).remove(&connection);
                 Ok(Response::Logout)
@@ -165,7 +190,7 @@ impl OnlineServices {
             Request::DownloadBegin { size, hash, .. } => {
                 let mut last = lock(&self.last_transfer);
                 *last = last.wrapping_add(1).max(1);
-                let mut transfer = Transfer::begin(*last, size, hash, Instant::now())?;
+                let mut transfer = Transfer::begin(*last, size, hash, now)?;
                 transfer.owner = connection;
                 *lock(&self.transfer) = Some(transfer);
                 Ok(Response::DownloadBegin {
@@ -181,7 +206,7 @@ impl OnlineServices {
             } => {
                 let mut current = lock(&self.transfer);
                 let active = current_transfer(&mut current, transfer)?;
-                let received = active.chunk(offset, &bytes, Instant::now())?;
+                let received = active.chunk(offset, &bytes, now)?;
                 Ok(Response::DownloadChunk { received })
             }
             Request::DownloadCommit {
@@ -346,12 +371,35 @@ impl OnlineServices {
         }))
     }
 
-    fn login(&self, connection: Option<u64>, password: &str) -> Result<Response, Refusal> {
+    /// `LOGIN` from `connection` of the client at `peer`, at `now`.
+    ///
+    /// A wrong password makes its address wait (`docs/protocol.md` §5): until the wait is
+    /// over, no password from any connection of that address is checked, so opening more
+    /// connections does not guess faster; other addresses log in at once.
+    fn login(
+        &self,
+        connection: Option<u64>,
+        peer: Option<IpAddr>,
+        now: Instant,
+        password: &str,
+    ) -> Result<Response, Refusal> {
         let Some(expected) = &self.password else {
             return Ok(Response::Login {
                 token: random_token(),
             });
         };
+        if let Some(address) = peer
+            && let Some(wait) = lock(&self.wrong_passwords).wait(address, now)
+        {
+            // The refusal comes when the address may try again, so that the connection does
+            // not spin asking.
+            delay_answer(wait);
+            return Err(Refusal::not_now(format!(
+                "too many wrong passwords from {address}: no password from it is checked for \
+                 another {} ms",
+                wait.as_millis()
+            )));
+        }
         // Comparing digests takes the same time whatever the password and its length.
         let given: [u8; 32] = Sha256::digest(password.as_bytes()).into();
         let expected: [u8; 32] = Sha256::digest(expected.as_bytes()).into();
@@ -360,12 +408,20 @@ impl OnlineServices {
             .zip(&expected)
             .fold(0u8, |difference, (a, b)| difference | (a ^ b));
         if difference != 0 {
-            // Only this connection waits; a correct password from another logs in at once.
-            delay_answer(WRONG_PASSWORD_DELAY);
+            // This connection, and every other of the same address, waits; other addresses
+            // log in at once.
+            let wait = match peer {
+                Some(address) => lock(&self.wrong_passwords).failed(address, now),
+                None => super::WRONG_PASSWORD_DELAY,
+            };
+            delay_answer(wait);
             return Err(Refusal {
                 status: Status::WrongPassword,
                 message: "wrong password".to_owned(),
             });
+        }
+        if let Some(address) = peer {
+            lock(&self.wrong_passwords).succeeded(address);
         }
         // Logging in again replaces the connection's token.
         let token = random_token();

@@ -1,3 +1,5 @@
+use std::time::Duration;
+
 use proptest::prelude::*;
 
 use super::*;
@@ -71,6 +73,35 @@ fn changing_services_need_a_token_from_the_password_and_reading_ones_do_not() {
     assert_eq!(ask(&services, &Request::Start { token }), (0, vec![2]));
     assert_eq!(ask(&services, &Request::Stop { token }), (0, vec![1]));
     assert_eq!(ask(&services, &Request::Tasks).0, 0);
+}
+
+#[test]
+fn a_wrong_password_holds_every_connection_of_its_address_and_no_other_address() {
+    let services = services(Some("secret"), false);
+    let guesser = IpAddr::from([10, 0, 0, 1]);
+    let other = IpAddr::from([10, 0, 0, 2]);
+    let start = Instant::now();
+    // The status of a LOGIN from `connection` of `peer`, `ms` after the start.
+    let login = |connection: u64, peer: IpAddr, ms: u64, password: &str| {
+        let request = login_with(password).encode();
+        let at = start + Duration::from_millis(ms);
+        services
+            .respond_at(Some(connection), Some(peer), at, &request)
+            .unwrap()[1]
+    };
+    let (wrong, not_now) = (Status::WrongPassword as u8, Status::NotNow as u8);
+    assert_eq!(login(1, guesser, 0, "guess"), wrong);
+    // For 500 ms no password of the address is checked, on any of its connections, not even
+    // the right one; another address logs in at once.
+    assert_eq!(login(2, guesser, 100, "secret"), not_now);
+    assert_eq!(login(3, other, 100, "secret"), 0);
+    // Then it is checked again; a second wrong password in a row holds the address 1 s.
+    assert_eq!(login(2, guesser, 500, "guess again"), wrong);
+    assert_eq!(login(1, guesser, 1499, "secret"), not_now);
+    assert_eq!(login(1, guesser, 1500, "secret"), 0);
+    // The right password forgets the address's wrong ones: the next wrong one holds 500 ms.
+    assert_eq!(login(1, guesser, 1500, "guess"), wrong);
+    assert_eq!(login(2, guesser, 2000, "secret"), 0);
 }
 
 #[test]

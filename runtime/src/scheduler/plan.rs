@@ -99,6 +99,8 @@ impl TaskPlan {
             TaskKind::Cyclic => {
                 let interval = self.interval_ns.max(1);
                 let passed = ended_ns.saturating_sub(planned_ns) / interval;
+                // The planned starts between this one and the next are dropped.
+                self.statistics.missed_cycles += passed.saturating_sub(1);
                 Some(planned_ns + passed.max(1) * interval)
             }
             TaskKind::Freewheeling => Some(ended_ns + pause_ns),
@@ -237,12 +239,16 @@ mod tests {
         assert_eq!(plan.statistics.last_jitter_ns, 200_000);
         // A cycle that ends 2.5 intervals after its planned start: the cycle planned at 20 ms
         // is dropped, the one planned at 30 ms starts at once.
+        assert_eq!(plan.statistics.missed_cycles, 0);
         plan.finish(10 * MS, 10 * MS, 35 * MS, 0, 0);
         assert_eq!(plan.next_start_ns(), Some(30 * MS));
+        assert_eq!(plan.statistics.missed_cycles, 1);
+        // Starting late is not missing: 5 ms late is still the cycle planned at 30 ms.
         plan.finish(30 * MS, 35 * MS, 36 * MS, 0, 0);
         assert_eq!(plan.next_start_ns(), Some(40 * MS));
         assert_eq!(plan.statistics.max_jitter_ns, 5 * MS);
         assert_eq!(plan.statistics.cycles, 3);
+        assert_eq!(plan.statistics.missed_cycles, 1);
     }
 
     #[test]

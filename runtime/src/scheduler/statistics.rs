@@ -33,6 +33,9 @@ pub struct TaskStatistics {
     pub max_jitter_ns: u64,
     /// The sum of all start jitters, for the average.
     pub total_jitter_ns: u128,
+    /// Planned cycles of a cyclic task that were dropped because an earlier cycle (its own or
+    /// another task's) ran past them; the task kept its phase instead of catching up.
+    pub missed_cycles: u64,
     /// Cycles in a row, up to the last, that ran longer than the watchdog time.
     pub consecutive_overruns: u32,
     /// Whether the task has faulted and runs no more.
@@ -54,6 +57,7 @@ impl TaskStatistics {
             last_jitter_ns: 0,
             max_jitter_ns: 0,
             total_jitter_ns: 0,
+            missed_cycles: 0,
             consecutive_overruns: 0,
             faulted: false,
         }

@@ -169,6 +169,14 @@ pub struct Online {
     language: Language,
 }
 
+impl Drop for Online {
+    /// Quitting logs out: the session is told to close before the background thread stops,
+    /// which gives it [`background::LOGOUT_GRACE`] to do so.
+    fn drop(&mut self) {
+        self.link = None;
+    }
+}
+
 impl Default for Online {
     fn default() -> Self {
         Self::new()
@@ -321,7 +329,7 @@ impl Online {
         };
         self.image = Some(image);
         self.link = Some(Link::open(
-            background.handle(),
+            background,
             SessionOptions {
                 address,
                 password,
@@ -358,7 +366,8 @@ impl Online {
         self.is_online() || !self.devices.is_empty()
     }
 
-    /// Ends the session; the target keeps running as it is.
+    /// Ends the session, which logs out of the target in the background (ending its token at
+    /// once); the target keeps running as it is.
     pub fn logout(&mut self) {
         self.link = None;
         self.phase = Phase::Offline;
