@@ -56,6 +56,15 @@ pub(crate) fn located_place(located: program_image::Located) -> Place {
     }
 }
 
+/// Bit `bit` of the value of type `ty` at `place`, directly or through a pointer.
+fn bit_place(place: Place, ty: IE, bit: u8) -> Gen<Place> {
+    match place {
+        Place::Direct(operand) => Ok(Place::Bit { operand, ty, bit }),
+        Place::Indirect(pointer) => Ok(Place::PointedBit { pointer, ty, bit }),
+        Place::Bit { .. } | Place::PointedBit { .. } => Err("a bit has no bits".into()),
+    }
+}
+
 /// A literal's type made concrete by where it goes, or by IEC's defaults (DINT, LREAL).
 pub(crate) fn concrete(ty: &Type, want: Option<&Type>) -> Type {
     let wanted_number = want.filter(|w| {
@@ -107,6 +116,22 @@ impl BodyGen<'_, '_, '_> {
                 });
                 dst
             }
+            Place::PointedBit { pointer, ty, bit } => {
+                let value = self.temp(ty.size_bytes());
+                self.emit(Instr::Load {
+                    size: ty.size_bytes(),
+                    dst: value,
+                    ptr: pointer,
+                });
+                let dst = self.temp(1);
+                self.emit(Instr::GetBit {
+                    ty,
+                    dst,
+                    src: value,
+                    bit,
+                });
+                dst
+            }
         })
     }
 
@@ -146,6 +171,28 @@ impl BodyGen<'_, '_, '_> {
                     src,
                 });
             }
+            Place::PointedBit { pointer, ty, bit } => {
+                // The pointed value is read, changed in one bit and written back whole, as
+                // the image has no instruction that sets a bit through a pointer.
+                let size = ty.size_bytes();
+                let value = self.temp(size);
+                self.emit(Instr::Load {
+                    size,
+                    dst: value,
+                    ptr: pointer,
+                });
+                self.emit(Instr::SetBit {
+                    ty,
+                    dst: value,
+                    bit,
+                    src,
+                });
+                self.emit(Instr::Store {
+                    size,
+                    ptr: pointer,
+                    src: value,
+                });
+            }
         }
         Ok(())
     }
@@ -159,7 +206,9 @@ impl BodyGen<'_, '_, '_> {
                 Ok(dst)
             }
             Place::Indirect(pointer) => Ok(pointer),
-            Place::Bit { .. } => Err("the address of a single bit cannot be taken".into()),
+            Place::Bit { .. } | Place::PointedBit { .. } => {
+                Err("the address of a single bit cannot be taken".into())
+            }
         }
     }
 
@@ -201,6 +250,15 @@ impl BodyGen<'_, '_, '_> {
 
     /// The place an expression names.
     pub(crate) fn place(&mut self, node: &Expr) -> Gen<Typed> {
+        if matches!(node, Expr::NameExpr(_) | Expr::FieldExpr(_))
+            && let Some((owner, property, instance)) = self.property_of(node)?
+        {
+            // A property read as the base of a member, bit or element (`fb.Pos.x`,
+            // `Flags.3`): its getter's value, in a temporary. The checker refuses writing
+            // such a part or passing a property by reference (E0134), which would be lost.
+            let (value, ty) = self.property_get(owner, property, instance)?;
+            return self.typed(Place::Direct(value), ty);
+        }
         match node {
             Expr::ParenExpr(paren) => {
                 let inner = paren.inner().ok_or("empty parentheses")?;
@@ -263,7 +321,8 @@ impl BodyGen<'_, '_, '_> {
             SyntaxKind::IDENT => (first, false),
             SyntaxKind::DOT => (node.ident().ok_or("a name after '.'")?, true),
             SyntaxKind::THIS => {
-                return Err("THIS is not supported by the code generator yet".into());
+                // The checker refuses THIS where a variable is needed (E0134).
+                return Err("THIS is a pointer to the instance, not a variable".into());
             }
             _ => return Err(fail!("'{}' is not a variable", first.text())),
         };
@@ -316,7 +375,9 @@ impl BodyGen<'_, '_, '_> {
                     );
                 }
                 LocalSymbol::Property(_) => {
-                    return Err("properties are not supported by the code generator yet".into());
+                    // `place` reads a property through its getter; only an SFC flag or action
+                    // named after a property arrives here.
+                    return Err(fail!("'{name}' is a property, not a variable"));
                 }
                 LocalSymbol::TransitionValue => {
                     let value = self
@@ -471,15 +532,7 @@ impl BodyGen<'_, '_, '_> {
             if u32::from(bit) >= ty.size_bytes() * 8 {
                 return Err(fail!("{} has no bit {bit}", ty.name()));
             }
-            let operand = match base.place {
-                Place::Direct(op) => op,
-                _ => {
-                    return Err(
-                        "bits of a value reached through a pointer are not supported yet".into(),
-                    );
-                }
-            };
-            return self.typed(Place::Bit { operand, ty, bit }, Type::BOOL);
+            return self.typed(bit_place(base.place, ty, bit)?, Type::BOOL);
         }
         if let LayShape::Pou(pou_name) = &base.lay.shape
             && let Some(pou) = self.scope.globals.pou(pou_name)
@@ -530,20 +583,12 @@ impl BodyGen<'_, '_, '_> {
         if (index + 1) * bits > width {
             return Err(fail!("{} has no {text}", ty.name()));
         }
-        let Place::Direct(operand) = base.place else {
-            return Err("partial access through a pointer is not supported yet".into());
-        };
         match part {
-            None => self.typed(
-                Place::Bit {
-                    operand,
-                    ty,
-                    bit: index as u8,
-                },
-                Type::BOOL,
-            ),
+            None => self.typed(bit_place(base.place, ty, index as u8)?, Type::BOOL),
             Some(part) => {
-                let place = Place::Direct(shifted(operand, index * bits / 8));
+                // Parts are counted from the least significant end, which is the first byte
+                // in the image's little-endian layout.
+                let place = self.member_place(base.place, index * bits / 8)?;
                 self.typed(place, Type::Elementary(part))
             }
         }
@@ -578,7 +623,9 @@ impl BodyGen<'_, '_, '_> {
                     Place::Indirect(dst)
                 }
             }
-            Place::Bit { .. } => return Err("a bit has no members".into()),
+            Place::Bit { .. } | Place::PointedBit { .. } => {
+                return Err("a bit has no members".into());
+            }
         })
     }
 

@@ -206,7 +206,10 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
             return match local {
                 LocalSymbol::Var(variable) => self.variable(variable, mode, &token, true),
                 LocalSymbol::Result(ty) => self.resolve(ty),
-                LocalSymbol::Property(property) => self.resolve(&property.ty),
+                LocalSymbol::Property(property) => {
+                    self.property_nodes.insert(node.syntax().text_range());
+                    self.resolve(&property.ty)
+                }
                 LocalSymbol::Method(_) | LocalSymbol::Action => Type::Void,
                 LocalSymbol::Step => Type::Step,
                 LocalSymbol::SfcAction => Type::SfcAction,
@@ -416,6 +419,7 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                                 .any(|q| q.name.eq_ignore_ascii_case(name))
                         });
                         if is_property {
+                            self.property_nodes.insert(node.text_range());
                             DefinitionKind::Property
                         } else {
                             DefinitionKind::Variable

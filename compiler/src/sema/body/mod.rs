@@ -9,6 +9,9 @@ mod call;
 mod expression;
 mod refused_call;
 mod resolution;
+mod unwritable_place;
+
+use unwritable_place::PlaceUse;
 mod sfc;
 
 use std::collections::HashMap;
@@ -68,6 +71,9 @@ pub(crate) struct BodyChecker<'s, 'a, 'p> {
     /// Types resolved with the POU's own constants (open array bounds), by their text, so an
     /// `ARRAY[*]` parameter is not parsed again at every use.
     local_types: std::cell::RefCell<HashMap<String, Type>>,
+    /// The ranges of the expressions checked so far that name a property (`Pos`, `fb.Pos`),
+    /// for `refuse_unwritable_place`; lives as long as the body's check.
+    property_nodes: std::collections::HashSet<rowan::TextRange>,
 }
 
 fn range_of(node: &SyntaxNode) -> Range<usize> {
@@ -122,6 +128,7 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
             resolutions: None,
             types: None,
             local_types: std::cell::RefCell::default(),
+            property_nodes: std::collections::HashSet::new(),
         }
     }
 
@@ -184,7 +191,9 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                 let target_ty = self.expression(&target, Mode::Write);
                 let value_ty = self.expression(&value, Mode::Read);
                 // A POU or action name has no value to assign to.
-                if !self.assignable_target(&target, &target_ty) {
+                if !self.assignable_target(&target, &target_ty)
+                    || self.refuse_unwritable_place(&target, PlaceUse::Assigned)
+                {
                     return;
                 }
                 self.expect_type(&value_ty, &target_ty, value.syntax(), "the assignment");
@@ -272,6 +281,10 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
         if let (Some(target), Some(value)) = (target, value) {
             self.expression(&target, Mode::Write);
             self.expression(&value, Mode::Read);
+            // `REF=` takes the place of its value too; `?=` only writes its target.
+            if !self.refuse_unwritable_place(&target, PlaceUse::Referenced) {
+                self.refuse_unwritable_place(&value, PlaceUse::Referenced);
+            }
         }
     }
 
@@ -291,7 +304,10 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
         match stmt.variable() {
             Some(variable) => {
                 let ty = self.expression(&variable, Mode::Write);
-                if self.assignable_target(&variable, &ty) && !ty.is_integer_like() {
+                if self.assignable_target(&variable, &ty)
+                    && !self.refuse_unwritable_place(&variable, PlaceUse::Referenced)
+                    && !ty.is_integer_like()
+                {
                     self.error(
                         Code::TypeMismatch,
                         range_of(variable.syntax()),
