@@ -94,6 +94,7 @@ codes! {
     AddressSizeMismatch = "W0006", Warning, "Located variable's type does not match the address size";
     ImplicitNarrowing = "W0012", Warning, "Integer value narrowed or its sign changed implicitly";
     ImplicitRealRounding = "W0013", Warning, "Integer converted implicitly to a real that may round it";
+    ImplicitRealToInteger = "W0014", Warning, "Real converted implicitly to an integer, rounded";
 }
 
 /// One finding of the compiler about the source.

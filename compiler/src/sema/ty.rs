@@ -474,6 +474,20 @@ pub fn lenient_real_conversion(from: &Type, to: &Type) -> bool {
     to.is_real() && (from.is_integer() || (from.is_bit_string() && from != E::Bool))
 }
 
+/// Whether a value of type `from` going into `to` is a real converted to an integer or bit
+/// string (`i := EXPT(2, 10)`, `i := x ** 4`, `i := r`), which IEC refuses and CODESYS V3.5
+/// performs with a warning (its C0197 message, "Implicit conversion from … : possible loss of
+/// information"), as the `TO_` conversion it inserts: the real rounded to the nearest
+/// integer, halves away from zero, like `REAL_TO_INT`.
+pub fn lenient_real_to_integer(from: &Type, to: &Type) -> bool {
+    let Type::Elementary(to) = to else {
+        return false;
+    };
+    let real =
+        matches!(from, Type::RealLiteral) || from.as_elementary().is_some_and(|e| e.is_real());
+    real && (to.is_integer() || (to.is_bit_string() && *to != E::Bool))
+}
+
 /// `value` as stored in an integer or bit string `ty`: its low bits, read with the type's sign.
 pub fn wrapped(value: i128, ty: Elementary) -> i128 {
     let bits = ty.size_bits();

@@ -124,10 +124,44 @@ fn integers_into_reals_that_may_round_them_warn_by_default_and_are_refused_by_ie
 }
 
 #[test]
+fn reals_into_integers_warn_and_round_by_default_and_are_refused_by_iec_strict() {
+    let source = "FUNCTION Twice : DINT VAR_INPUT x : INT; END_VAR Twice := INT_TO_DINT(x) * 2; END_FUNCTION
+        PROGRAM main
+        VAR
+            i : INT; x : INT := 3; p : DINT; half : REAL := 2.5; minus : LREAL := -2.5; low : REAL := 1.4;
+            a : INT; b : DINT; c : SINT; d : INT; w : WORD; t : DINT; k : INT := 7.5;
+        END_VAR
+        i := EXPT(2, 10); p := x ** 4; a := half; b := minus; c := low; d := 7.6; w := half * 100.0;
+        t := Twice(x := half);
+        END_PROGRAM";
+    let warning = (Code::ImplicitRealToInteger, Severity::Warning);
+    assert_eq!(codes(source, Dialect::Codesys), vec![warning; 9]);
+    let s = run(source, 1);
+    // Rounded to the nearest integer, halves away from zero, as REAL_TO_INT rounds.
+    check(
+        &s,
+        &[
+            ("main.i", "1024"),
+            ("main.p", "81"),
+            ("main.a", "3"),
+            ("main.b", "-3"),
+            ("main.c", "1"),
+            ("main.d", "8"),
+            ("main.w", "250"),
+            ("main.t", "6"),
+            ("main.k", "8"),
+        ],
+    );
+    assert_eq!(
+        codes(source, Dialect::IecStrict),
+        vec![(Code::TypeMismatch, Severity::Error); 9]
+    );
+}
+
+#[test]
 fn what_codesys_refuses_both_dialects_refuse() {
     for (declarations, body, code) in [
         ("x : BOOL; n : INT;", "n := x + 1;", Code::InvalidOperands),
-        ("r : REAL := 1.5; n : INT;", "n := r;", Code::TypeMismatch),
         ("t : TIME; n : DINT;", "n := t;", Code::TypeMismatch),
         (
             "s : STRING; b : BYTE;",

@@ -25,7 +25,8 @@ use super::scope::{GlobalSymbol, LocalSymbol, Scope, inheritance_chain, is_visib
 use super::signatures::{self, FunctionSig, Sig};
 use super::ty::{
     DEFAULT_STRING_LENGTH, Type, bit_string_arithmetic, common_type, implicitly_converts,
-    lenient_integer_conversion, lenient_real_conversion, power_type, wrapped,
+    lenient_integer_conversion, lenient_real_conversion, lenient_real_to_integer, power_type,
+    wrapped,
 };
 use super::types::Shape;
 use super::{closest, stdlib};
@@ -494,12 +495,24 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
         };
         let narrowing = copied && lenient_integer_conversion(value, target);
         let rounding = copied && lenient_real_conversion(value, target);
-        let lenient = narrowing || rounding;
+        let real_to_integer = copied && lenient_real_to_integer(value, target);
+        let lenient = narrowing || rounding || real_to_integer;
         if lenient && self.scope.globals.dialect == Dialect::Codesys {
             let (code, message) = if narrowing {
                 (
                     Code::ImplicitNarrowing,
                     narrowing_message(value, target, context),
+                )
+            } else if real_to_integer {
+                let from = match value {
+                    Type::RealLiteral => "LREAL",
+                    other => other.as_elementary().map_or("LREAL", |e| e.name()),
+                };
+                (
+                    Code::ImplicitRealToInteger,
+                    format!(
+                        "{context} converts {value} to {target} implicitly, rounding to the nearest integer (halves away from zero) as {from}_TO_{target} does; write {from}_TO_{target}(…) or TRUNC to say so"
+                    ),
                 )
             } else {
                 (
