@@ -9,7 +9,7 @@ use super::error::fail;
 use super::layout::{Lay, LayShape, located_of};
 use crate::elementary::Elementary;
 use crate::sema::scope::{GlobalSymbol, LocalSymbol};
-use crate::sema::ty::{Type, bit_string_arithmetic, common_type};
+use crate::sema::ty::{Type, bit_string_arithmetic, common_type, mixed_sign_type};
 use crate::syntax::SyntaxKind;
 use crate::syntax::ast::{AstNode, BinaryExpr, Expr, FieldExpr, IndexExpr, NameExpr, UnaryExpr};
 
@@ -1075,6 +1075,7 @@ impl BodyGen<'_, '_, '_> {
         // the checker) is compared in the type their arithmetic has.
         let common = common_type(&lt, &rt)
             .or_else(|| bit_string_arithmetic(&lt, &rt))
+            .or_else(|| mixed_sign_type(&lt, &rt))
             .unwrap_or(lt);
         let ty = concrete(&common, None);
         let sides = [self.type_of(left), self.type_of(right)];

@@ -159,10 +159,55 @@ fn reals_into_integers_warn_and_round_by_default_and_are_refused_by_iec_strict()
 }
 
 #[test]
+fn signed_and_unsigned_integers_combine_in_the_smallest_signed_type_holding_both_by_default() {
+    let declarations = "a : INT := 32767; u : UINT := 65535; minus : INT := -1; d : DINT := -2; ud : UDINT := 4294967295;
+        si : SINT := -1; us : USINT := 255; bb : BYTE := 200; sn : SINT := -100;
+        sum : DINT; product : LINT; small : INT; less : BOOL; same : BOOL; greater : BOOL; bits : INT; rest : DINT; narrow : INT;";
+    let body =
+        "sum := a + u; product := d * ud; small := si + us; less := minus < u; same := si = us;
+        greater := ud > d; bits := bb + sn; rest := minus MOD u; narrow := a + u;";
+    let source = program(declarations, body);
+    // Only the last assignment narrows (DINT into INT), which warns as every narrowing does.
+    assert_eq!(
+        codes(&source, Dialect::Codesys),
+        vec![(Code::ImplicitNarrowing, Severity::Warning)]
+    );
+    let s = run(&source, 1);
+    check(
+        &s,
+        &[
+            // 98302 fits neither INT nor UINT: the sum is a DINT.
+            ("main.sum", "98302"),
+            // -8589934590 fits neither DINT nor UDINT: the product is a LINT.
+            ("main.product", "-8589934590"),
+            ("main.small", "254"),
+            // Compared as numbers, not as bit patterns: -1 < 65535 and -1 <> 255.
+            ("main.less", "TRUE"),
+            ("main.same", "FALSE"),
+            ("main.greater", "TRUE"),
+            ("main.bits", "100"),
+            ("main.rest", "-1"),
+            // 98302 (16#17FFE) keeps its low 16 bits in an INT: 16#7FFE.
+            ("main.narrow", "32766"),
+        ],
+    );
+    assert_eq!(
+        codes(&source, Dialect::IecStrict),
+        vec![(Code::InvalidOperands, Severity::Error); 9]
+    );
+}
+
+#[test]
 fn what_codesys_refuses_both_dialects_refuse() {
     for (declarations, body, code) in [
         ("x : BOOL; n : INT;", "n := x + 1;", Code::InvalidOperands),
         ("t : TIME; n : DINT;", "n := t;", Code::TypeMismatch),
+        // No integer type holds both a LINT's and a ULINT's range.
+        (
+            "l : LINT; ul : ULINT; n : LINT;",
+            "n := l + ul;",
+            Code::InvalidOperands,
+        ),
         (
             "s : STRING; b : BYTE;",
             "b := s + 1;",

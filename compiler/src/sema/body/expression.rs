@@ -691,12 +691,21 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                     | SyntaxKind::GT
                     | SyntaxKind::GE
             )
-            && bit_string_arithmetic(&left, &right).is_some()
+            && (bit_string_arithmetic(&left, &right).is_some()
+                || mixed_sign_type(&left, &right).is_some())
         {
             message.push_str(STRICT_NOTE);
         }
         self.error(Code::InvalidOperands, range_of(node), message);
         Type::Error
+    }
+
+    /// The type of an operation on a signed and an unsigned integer, which the default
+    /// dialect computes as CODESYS does (`ty::mixed_sign_type`) and `iec-strict` refuses.
+    fn lenient_mixed_sign(&self, left: &Type, right: &Type) -> Option<Type> {
+        (self.scope.globals.dialect == Dialect::Codesys)
+            .then(|| mixed_sign_type(left, right))
+            .flatten()
     }
 
     pub(super) fn binary_type(
@@ -711,7 +720,8 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
         match operator {
             PLUS | MINUS | STAR | SLASH => {
                 if left.is_numeric() && right.is_numeric() {
-                    return common_type(left, right);
+                    return common_type(left, right)
+                        .or_else(|| self.lenient_mixed_sign(left, right));
                 }
                 if self.scope.globals.dialect == Dialect::Codesys
                     && let Some(ty) = bit_string_arithmetic(left, right)
@@ -758,7 +768,7 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
             }
             MOD => {
                 if left.is_integer_like() && right.is_integer_like() {
-                    common_type(left, right)
+                    common_type(left, right).or_else(|| self.lenient_mixed_sign(left, right))
                 } else if self.scope.globals.dialect == Dialect::Codesys {
                     bit_string_arithmetic(left, right).filter(Type::is_bits)
                 } else {
@@ -793,6 +803,7 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                     }
                     _ => {
                         common_type(left, right).is_some()
+                            || self.lenient_mixed_sign(left, right).is_some()
                             || (self.scope.globals.dialect == Dialect::Codesys
                                 && bit_string_arithmetic(left, right).is_some())
                     }
