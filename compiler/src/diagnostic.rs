@@ -86,6 +86,7 @@ codes! {
     BitAddressWithoutLocation = "E0132", Error, "BITADR of something without a direct address";
     OpenArrayOutsideInOut = "E0133", Error, "Array with open bounds outside a VAR_IN_OUT parameter";
     UnwritablePlace = "E0134", Error, "THIS, SUPER or a property used where a variable is needed";
+    BitByReference = "E0135", Error, "Single bit passed by reference or given to ADR";
     UnusedVariable = "W0001", Warning, "Variable never used";
     UnassignedVariable = "W0002", Warning, "Variable read but never written";
     OverlappingAddresses = "W0003", Warning, "Located variables overlap";

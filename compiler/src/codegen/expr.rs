@@ -206,8 +206,9 @@ impl BodyGen<'_, '_, '_> {
                 Ok(dst)
             }
             Place::Indirect(pointer) => Ok(pointer),
+            // The checker refuses a bit passed by reference (E0135).
             Place::Bit { .. } | Place::PointedBit { .. } => {
-                Err("the address of a single bit cannot be taken".into())
+                Err("the address of a single bit cannot be taken (E0135)".into())
             }
         }
     }

@@ -160,3 +160,26 @@ fn a_property_part_written_or_passed_by_reference_and_this_assigned_are_refused_
         vec![Code::UnwritablePlace, Code::UnwritablePlace]
     );
 }
+
+#[test]
+fn a_single_bit_passed_by_reference_is_refused_with_e0135_and_copied_through_a_bool_it_runs() {
+    let declarations = "FUNCTION Flip : BOOL VAR_IN_OUT v : BOOL; END_VAR v := NOT v; Flip := v; END_FUNCTION
+         PROGRAM main VAR w : WORD; x AT %IX0.1 : BOOL; p : POINTER TO BOOL; r : REFERENCE TO BOOL; pw : POINTER TO WORD; b : BOOL; END_VAR";
+    for body in [
+        "Flip(v := w.3);",
+        "Flip(v := w.%X3);",
+        "Flip(v := pw^.2);",
+        "Flip(v := x);",
+        "p := ADR(w.3);",
+        "p := ADR(x);",
+        "r REF= w.3;",
+    ] {
+        let source = format!("{declarations}\n{body}\nEND_PROGRAM");
+        assert_eq!(error_codes(&source), vec![Code::BitByReference], "{body}");
+    }
+    // The way CODESYS asks for: through a BOOL variable, copied back.
+    let source = format!(
+        "{declarations}\nw := 16#0008; b := w.3; Flip(v := b); w.3 := b; pw := ADR(w); pw^.0 := Flip(v := b);\nEND_PROGRAM"
+    );
+    check(&run(&source, 1), &[("main.w", "1"), ("main.b", "TRUE")]);
+}

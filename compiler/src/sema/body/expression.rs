@@ -254,6 +254,12 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
         local: bool,
     ) -> Type {
         self.record(variable, mode);
+        let at_bit = variable.address.as_deref().is_some_and(|address| {
+            matches!(crate::sema::address::parse_address(address), Ok(Some(a)) if a.size_bits == 1)
+        });
+        if at_bit && let Some(expression) = token.parent() {
+            self.bit_nodes.insert(expression.text_range());
+        }
         if mode == Mode::Write {
             if variable.constant {
                 self.error(

@@ -75,6 +75,9 @@ pub(crate) struct BodyChecker<'s, 'a, 'p> {
     /// The ranges of the expressions checked so far that name a property (`Pos`, `fb.Pos`),
     /// for `refuse_unwritable_place`; lives as long as the body's check.
     property_nodes: std::collections::HashSet<rowan::TextRange>,
+    /// The ranges of the expressions checked so far that name a BOOL located at a bit address
+    /// (`x AT %IX0.1`), for `refuse_unwritable_place`; lives as long as the body's check.
+    bit_nodes: std::collections::HashSet<rowan::TextRange>,
 }
 
 fn range_of(node: &SyntaxNode) -> Range<usize> {
@@ -130,6 +133,7 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
             types: None,
             local_types: std::cell::RefCell::default(),
             property_nodes: std::collections::HashSet::new(),
+            bit_nodes: std::collections::HashSet::new(),
         }
     }
 
@@ -283,8 +287,8 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
             self.expression(&target, Mode::Write);
             self.expression(&value, Mode::Read);
             // `REF=` takes the place of its value too; `?=` only writes its target.
-            if !self.refuse_unwritable_place(&target, PlaceUse::Referenced) {
-                self.refuse_unwritable_place(&value, PlaceUse::Referenced);
+            if !self.refuse_unwritable_place(&target, PlaceUse::Connected) {
+                self.refuse_unwritable_place(&value, PlaceUse::ByReference);
             }
         }
     }
@@ -306,7 +310,7 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
             Some(variable) => {
                 let ty = self.expression(&variable, Mode::Write);
                 if self.assignable_target(&variable, &ty)
-                    && !self.refuse_unwritable_place(&variable, PlaceUse::Referenced)
+                    && !self.refuse_unwritable_place(&variable, PlaceUse::Connected)
                     && !ty.is_integer_like()
                 {
                     self.error(
