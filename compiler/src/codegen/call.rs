@@ -620,9 +620,7 @@ impl<'p> BodyGen<'_, '_, 'p> {
             },
         };
         if let Type::Reference(target) = ty {
-            let Place::Direct(op) = place else {
-                return Err("a reference reached through a pointer".into());
-            };
+            let op = self.reference_value(place)?;
             let lay = self.lay(&target)?;
             return Ok((
                 Typed {

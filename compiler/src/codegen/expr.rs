@@ -241,12 +241,29 @@ impl BodyGen<'_, '_, '_> {
                 Type::Reference(target) => *target,
                 other => other,
             };
-            let Place::Direct(op) = place else {
-                return Err("a reference inside a reference".into());
-            };
+            let op = self.reference_value(place)?;
             return self.typed(Place::Indirect(op), target);
         }
         self.typed(place, declared)
+    }
+
+    /// The operand holding the address a reference or VAR_IN_OUT slot at `place` holds: the
+    /// slot itself when it is reached directly, its value loaded when the slot is reached
+    /// through a pointer (`p^.r` with `r : REFERENCE TO INT` a member of the pointed structure).
+    pub(crate) fn reference_value(&mut self, place: Place) -> Gen<Operand> {
+        match place {
+            Place::Direct(op) => Ok(op),
+            Place::Indirect(pointer) => {
+                let dst = self.temp(8);
+                self.emit(Instr::Load {
+                    size: 8,
+                    dst,
+                    ptr: pointer,
+                });
+                Ok(dst)
+            }
+            Place::Bit { .. } | Place::PointedBit { .. } => Err("a reference in a bit".into()),
+        }
     }
 
     /// The place an expression names.

@@ -183,3 +183,25 @@ fn a_single_bit_passed_by_reference_is_refused_with_e0135_and_copied_through_a_b
     );
     check(&run(&source, 1), &[("main.w", "1"), ("main.b", "TRUE")]);
 }
+
+#[test]
+fn a_reference_member_reached_through_a_pointer_reaches_its_target() {
+    let s = run(
+        "TYPE ST_Link : STRUCT target : REFERENCE TO INT; scale : INT := 3; END_STRUCT END_TYPE
+         PROGRAM main
+         VAR value : INT := 5; link : ST_Link; p : POINTER TO ST_Link; read : INT; bit1 : BOOL; END_VAR
+         link.target REF= value; p := ADR(link);
+         read := p^.target * p^.scale; p^.target := p^.target + 1; p^.target.3 := TRUE; bit1 := p^.target.1;
+         END_PROGRAM",
+        1,
+    );
+    // 5 * 3 read, then 6 written and bit 3 set: 14, whose bit 1 is set.
+    check(
+        &s,
+        &[
+            ("main.read", "15"),
+            ("main.value", "14"),
+            ("main.bit1", "TRUE"),
+        ],
+    );
+}
