@@ -266,6 +266,25 @@ impl BodyGen<'_, '_, '_> {
         }
     }
 
+    /// The operand of the descriptor of the open array `typed`: where it is, or a copy of it
+    /// when it is reached through a pointer (`THIS^.values` in a function block); the copy
+    /// points to the same elements.
+    fn descriptor_operand(&mut self, typed: &Typed) -> Gen<Operand> {
+        match typed.place {
+            Place::Direct(descriptor) => Ok(descriptor),
+            Place::Indirect(pointer) => {
+                let dst = self.temp(typed.lay.size);
+                self.emit(Instr::Load {
+                    size: typed.lay.size,
+                    dst,
+                    ptr: pointer,
+                });
+                Ok(dst)
+            }
+            Place::Bit { .. } | Place::PointedBit { .. } => Err("an open array in a bit".into()),
+        }
+    }
+
     /// The place an expression names.
     pub(crate) fn place(&mut self, node: &Expr) -> Gen<Typed> {
         if matches!(node, Expr::NameExpr(_) | Expr::FieldExpr(_))
@@ -660,9 +679,7 @@ impl BodyGen<'_, '_, '_> {
             if indices.len() != rank as usize {
                 return Err(fail!("{} index(es) for {rank} dimension(s)", indices.len()));
             }
-            let Place::Direct(descriptor) = base.place else {
-                return Err("an open array reached through a pointer".into());
-            };
+            let descriptor = self.descriptor_operand(&base)?;
             let mut operands = Vec::new();
             for index in &indices {
                 let (value, ty) = self.expr(index, None)?;
@@ -1204,10 +1221,7 @@ impl BodyGen<'_, '_, '_> {
     pub(crate) fn open_array_descriptor(&mut self, node: &Expr, lay: &Lay) -> Gen<Operand> {
         let typed = self.place(node)?;
         if let LayShape::OpenArray { .. } = typed.lay.shape {
-            return match typed.place {
-                Place::Direct(descriptor) => Ok(descriptor),
-                _ => Err("an open array reached through a pointer".into()),
-            };
+            return self.descriptor_operand(&typed);
         }
         let LayShape::Array { dims, .. } = typed.lay.shape.clone() else {
             return Err(fail!("{} is not an array", typed.ty));

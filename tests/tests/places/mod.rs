@@ -205,3 +205,29 @@ fn a_reference_member_reached_through_a_pointer_reaches_its_target() {
         ],
     );
 }
+
+#[test]
+fn an_open_array_reached_through_this_is_indexed_and_passed_on() {
+    let s = run(
+        "FUNCTION Total : INT VAR_IN_OUT values : ARRAY[*] OF INT; END_VAR VAR i : DINT; END_VAR
+         FOR i := LOWER_BOUND(values, 1) TO UPPER_BOUND(values, 1) DO Total := Total + values[i]; END_FOR
+         END_FUNCTION
+         FUNCTION_BLOCK FB_Sum
+         VAR_IN_OUT values : ARRAY[*] OF INT; END_VAR
+         VAR_OUTPUT first : INT; sum : INT; END_VAR
+         first := THIS^.values[1]; THIS^.values[2] := 30; sum := Total(values := THIS^.values);
+         END_FUNCTION_BLOCK
+         PROGRAM main VAR data : ARRAY[1..3] OF INT := [1, 2, 3]; fb : FB_Sum; END_VAR
+         fb(values := data);
+         END_PROGRAM",
+        1,
+    );
+    check(
+        &s,
+        &[
+            ("main.fb.first", "1"),
+            ("main.fb.sum", "34"),
+            ("main.data", "[1, 30, 3]"),
+        ],
+    );
+}
