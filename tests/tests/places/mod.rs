@@ -231,3 +231,26 @@ fn an_open_array_reached_through_this_is_indexed_and_passed_on() {
         ],
     );
 }
+
+#[test]
+fn structures_instances_and_arrays_are_not_compared_as_codesys_compares_elementary_values_only() {
+    let declarations = "TYPE ST_P : STRUCT x : INT; END_STRUCT END_TYPE
+         INTERFACE I_A END_INTERFACE
+         FUNCTION_BLOCK FB_A IMPLEMENTS I_A END_FUNCTION_BLOCK
+         PROGRAM main VAR s1, s2 : ST_P; f1, f2 : FB_A; t1, t2 : TON; a1, a2 : ARRAY[0..1] OF INT; i1, i2 : I_A; b : BOOL; p1, p2 : POINTER TO INT; END_VAR";
+    for body in [
+        "b := s1 = s2;",
+        "b := s1 <> s2;",
+        "b := f1 = f2;",
+        "b := t1 = t2;",
+        "b := a1 = a2;",
+    ] {
+        let source = format!("{declarations}\n{body}\nEND_PROGRAM");
+        assert_eq!(error_codes(&source), vec![Code::InvalidOperands], "{body}");
+    }
+    // Interfaces compare the instance they hold, pointers their address.
+    let source = format!(
+        "{declarations}\ni1 := f1; i2 := f1; p1 := ADR(s1.x); p2 := ADR(s2.x); b := i1 = i2 AND p1 <> p2;\nEND_PROGRAM"
+    );
+    check(&run(&source, 1), &[("main.b", "TRUE")]);
+}

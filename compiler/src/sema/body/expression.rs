@@ -784,9 +784,24 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
             POWER => power_type(left, right),
             EQ | NEQ | LT | LE | GT | GE => {
                 let comparable = match (left, right) {
+                    // Structures, unions, arrays and instances are not compared: CODESYS's EQ
+                    // and NE permit "all elementary data types" (its operator pages), and
+                    // interfaces, which compare the instance they hold.
                     (Type::Named(a), Type::Named(b)) => {
-                        a.eq_ignore_ascii_case(b) && (is_enum(left) || matches!(operator, EQ | NEQ))
+                        a.eq_ignore_ascii_case(b)
+                            && (is_enum(left)
+                                || matches!(operator, EQ | NEQ)
+                                    && !matches!(
+                                        self.scope.globals.shape(a),
+                                        Some(Shape::Struct(_) | Shape::StandardFb(_))
+                                    )
+                                    && self
+                                        .scope
+                                        .globals
+                                        .pou(a)
+                                        .is_none_or(|p| p.kind == PouKind::Interface))
                     }
+                    (Type::Array { .. }, _) | (_, Type::Array { .. }) => false,
                     (Type::String { wide: a, .. }, Type::String { wide: b, .. }) => a == b,
                     (Type::Pointer(_), Type::Pointer(_)) => true,
                     (Type::Pointer(_), other) | (other, Type::Pointer(_)) => {
