@@ -205,7 +205,7 @@ fn check_type_checks_a_single_st_file_and_reports_warnings() {
     let file = dir.path().join("types.st");
     fs::write(
         &file,
-        "PROGRAM P\nVAR\n    iCount : INT;\n    rTotal : REAL := 5.0;\n    iSpare : INT;\nEND_VAR\niCount := rTotal;\nEND_PROGRAM\n",
+        "PROGRAM P\nVAR\n    iCount : INT;\n    tTotal : TIME := T#5S;\n    iSpare : INT;\nEND_VAR\niCount := tTotal;\nEND_PROGRAM\n",
     )
     .unwrap();
     let output = rivet(&["check", path_str(&file)]);
@@ -213,12 +213,12 @@ fn check_type_checks_a_single_st_file_and_reports_warnings() {
     let stderr = text_of(&output.stderr);
     assert!(
         stderr.contains(&format!(
-            "{}:7:11: error[E0104]: the assignment expects INT, found REAL; IEC converts only to wider types, so write REAL_TO_INT(…)",
+            "{}:7:11: error[E0104]: the assignment expects INT, found TIME; IEC converts only to wider types, so write TIME_TO_INT(…)",
             file.display()
         )),
         "{stderr}"
     );
-    assert!(stderr.contains("7 | iCount := rTotal;\n"), "{stderr}");
+    assert!(stderr.contains("7 | iCount := tTotal;\n"), "{stderr}");
     assert!(
         stderr.contains(&format!(
             "{}:5:5: warning[W0001]: 'iSpare' is declared but never used",

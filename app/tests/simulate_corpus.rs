@@ -43,11 +43,6 @@ const DELIBERATE: &[(&str, Difference, &str)] = &[
         Difference::Refused("E0104"),
         "a BOOL result does not convert implicitly to DINT",
     ),
-    (
-        "end_to_end_when_expt_lint_then_correct",
-        Difference::Refused("E0104"),
-        "EXPT gives REAL or LREAL (LC1200 digest), which does not convert implicitly to LINT",
-    ),
 ];
 
 fn corpus() -> PathBuf {

@@ -85,6 +85,8 @@ codes! {
     SystemOperatorUnavailable = "E0131", Error, "CODESYS system operator the runtime does not provide";
     BitAddressWithoutLocation = "E0132", Error, "BITADR of something without a direct address";
     OpenArrayOutsideInOut = "E0133", Error, "Array with open bounds outside a VAR_IN_OUT parameter";
+    UnwritablePlace = "E0134", Error, "THIS, SUPER or a property used where a variable is needed";
+    BitByReference = "E0135", Error, "Single bit passed by reference or given to ADR";
     UnusedVariable = "W0001", Warning, "Variable never used";
     UnassignedVariable = "W0002", Warning, "Variable read but never written";
     OverlappingAddresses = "W0003", Warning, "Located variables overlap";
@@ -93,6 +95,7 @@ codes! {
     AddressSizeMismatch = "W0006", Warning, "Located variable's type does not match the address size";
     ImplicitNarrowing = "W0012", Warning, "Integer value narrowed or its sign changed implicitly";
     ImplicitRealRounding = "W0013", Warning, "Integer converted implicitly to a real that may round it";
+    ImplicitRealToInteger = "W0014", Warning, "Real converted implicitly to an integer, rounded";
 }
 
 /// One finding of the compiler about the source.

@@ -12,8 +12,8 @@ use crate::list_edit::IndexOutOfRange;
 use crate::network_splice::{body_mut, splice_networks};
 use crate::validate::object_problem;
 use crate::{
-    Axis, Body, Controller, Folder, IoArea, ListEdit, ModbusDevice, Network, Node, Object, Project,
-    Task, Variable, is_valid_identifier, same_identifier,
+    Axis, Body, Controller, Dialect, Folder, IoArea, ListEdit, ModbusDevice, Network, Node, Object,
+    Project, Task, Variable, is_valid_identifier, same_identifier,
 };
 
 /// A reversible change to a project.
@@ -29,6 +29,8 @@ pub enum Edit {
     },
     /// Replaces the controller node's settings.
     SetController(Controller),
+    /// Sets the language rules the project is checked by (the manifest's `dialect`).
+    SetDialect(Dialect),
     /// Edits the task configuration.
     Tasks(ListEdit<Task>),
     /// Edits the I/O areas.
@@ -278,6 +280,10 @@ impl Edit {
             Self::SetController(controller) => Ok(Self::SetController(std::mem::replace(
                 &mut project.controller,
                 controller,
+            ))),
+            Self::SetDialect(dialect) => Ok(Self::SetDialect(std::mem::replace(
+                &mut project.dialect,
+                dialect,
             ))),
             Self::Tasks(edit) => Ok(Self::Tasks(edit.apply(&mut project.tasks)?)),
             Self::IoAreas(edit) => Ok(Self::IoAreas(edit.apply(&mut project.io_areas)?)),
@@ -665,6 +671,18 @@ mod tests {
         let mut edited = project();
         assert_eq!(Edit::Tree(edit).apply(&mut edited), Err(expected));
         assert_eq!(edited, project(), "a refused edit changed the project");
+    }
+
+    #[test]
+    fn setting_the_dialect_is_undone_by_the_edit_it_returns() {
+        let mut edited = project();
+        let undo = Edit::SetDialect(Dialect::IecStrict)
+            .apply(&mut edited)
+            .unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(edited.dialect, Dialect::IecStrict);
+        assert_eq!(undo, Edit::SetDialect(Dialect::Codesys));
+        undo.apply(&mut edited).unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(edited, project());
     }
 
     #[test]

@@ -8,8 +8,8 @@ use proptest::sample::Index;
 
 use project_model::arb;
 use project_model::{
-    Axis, Body, Controller, Edit, History, IoArea, ListEdit, ModbusDevice, Node, Object, Project,
-    Task, TextTarget, TreeEdit, VarOwner, Variable, max_element_id,
+    Axis, Body, Controller, Dialect, Edit, History, IoArea, ListEdit, ModbusDevice, Node, Object,
+    Project, Task, TextTarget, TreeEdit, VarOwner, Variable, max_element_id,
 };
 
 /// A list edit on a list of `len` items, with indices chosen by `index`.
@@ -252,6 +252,7 @@ fn edit_for(project: &Project) -> BoxedStrategy<Edit> {
         (arb::text(), arb::text())
             .prop_map(|(name, description)| Edit::SetProjectInfo { name, description }),
         any::<Controller>().prop_map(Edit::SetController),
+        any::<Dialect>().prop_map(Edit::SetDialect),
         list_edit::<Task>(project.tasks.len()).prop_map(Edit::Tasks),
         list_edit::<IoArea>(project.io_areas.len()).prop_map(Edit::IoAreas),
         list_edit::<ModbusDevice>(project.modbus_devices.len()).prop_map(Edit::ModbusDevices),

@@ -15,6 +15,9 @@ mod sfc_chart;
 /// CFC charts compiled and run: execution order, feedback, marks, structures, EN/ENO, jumps.
 mod cfc;
 
+/// Bits and parts reached through pointers, references and properties; E0134.
+mod places;
+
 /// Every standard function and function block compiled, run and checked against its value.
 mod standard_library;
 

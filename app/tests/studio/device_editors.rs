@@ -5,7 +5,7 @@ use app::studio::{Language, Settings, StudioApp, TreeNode};
 use egui::{Key, Modifiers};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable as _;
-use project_model::{ModbusDataType, ModbusTable, Project};
+use project_model::{Dialect, ModbusDataType, ModbusTable, Project};
 
 use crate::support::{example_copy, studio};
 
@@ -97,6 +97,56 @@ fn the_controller_editor_sets_the_port_refuses_port_0_and_undoes() {
             .count,
         1
     );
+}
+
+/// Builds the project as F11 does and returns the codes of the build's findings.
+fn build_codes(harness: &mut Harness<'_, StudioApp>) -> Vec<String> {
+    let revision = harness.state().session().unwrap().history.revision();
+    harness.state_mut().build();
+    crate::support::wait_until(harness, "the build", |app| {
+        !app.is_building() && app.last_build().is_some_and(|b| b.revision == revision)
+    });
+    let outcome = harness.state().last_build().unwrap();
+    outcome.messages.iter().map(|m| m.code.clone()).collect()
+}
+
+#[test]
+fn the_dialect_is_chosen_beside_the_controller_rebuilds_by_its_rules_saves_and_undoes() {
+    // A REAL stored into an INT: a warning in CODESYS, an error in IEC 61131-3.
+    let dir = example_copy(|path| {
+        let main = path.join("application/Main.st");
+        let mut text = std::fs::read_to_string(&main).unwrap();
+        text.push_str("\nGVL_IO.iBeltSpeedSetpoint := GVL_Machine.stRecipe.rBeltSpeed;\n");
+        std::fs::write(&main, text).unwrap();
+    });
+    let mut harness = studio(dir.path());
+    open(&mut harness, TreeNode::Controller);
+    let codes = build_codes(&mut harness);
+    assert!(codes.contains(&"W0014".to_owned()), "{codes:?}");
+    assert!(!codes.iter().any(|c| c.starts_with('E')), "{codes:?}");
+
+    harness.get_by_label("Language rules of PLC").click();
+    harness.run();
+    harness.get_by_label("IEC 61131-3 only").click();
+    harness.run();
+    assert_eq!(project(&harness).dialect, Dialect::IecStrict);
+    assert_eq!(
+        undo_label(&harness).as_deref(),
+        Some("Set language rules of PLC to IEC 61131-3 only")
+    );
+    let codes = build_codes(&mut harness);
+    assert!(codes.contains(&"E0104".to_owned()), "{codes:?}");
+
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::S);
+    harness.step();
+    harness.step();
+    let saved = project_model::load_project(dir.path()).unwrap().project;
+    assert_eq!(saved.dialect, Dialect::IecStrict);
+
+    undo(&mut harness);
+    assert_eq!(project(&harness).dialect, Dialect::Codesys);
+    let codes = build_codes(&mut harness);
+    assert!(!codes.iter().any(|c| c.starts_with('E')), "{codes:?}");
 }
 
 #[test]

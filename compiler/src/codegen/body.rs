@@ -30,6 +30,10 @@ pub(crate) enum Place {
     Indirect(Operand),
     /// One bit of a value of type `ty` at the operand (located BOOLs, `x.3`).
     Bit { operand: Operand, ty: IE, bit: u8 },
+    /// One bit of a value of type `ty` where the pointer held at the operand points
+    /// (`p^.3`, `r.%X1` with `r : REFERENCE TO WORD`): read by loading the value, written by
+    /// loading, setting the bit and storing the value back.
+    PointedBit { pointer: Operand, ty: IE, bit: u8 },
 }
 
 /// A place with its type.

@@ -215,7 +215,9 @@ impl<'p> BodyGen<'_, '_, 'p> {
                 let (instance, indirect) = match instance {
                     Place::Direct(op) => (op, false),
                     Place::Indirect(pointer) => (pointer, true),
-                    Place::Bit { .. } => return Err("an action of a bit".into()),
+                    Place::Bit { .. } | Place::PointedBit { .. } => {
+                        return Err("an action of a bit".into());
+                    }
                 };
                 self.emit(Instr::CallBlock {
                     pou: index,
@@ -538,7 +540,9 @@ impl<'p> BodyGen<'_, '_, 'p> {
         let (instance, indirect) = match typed.place {
             Place::Direct(op) => (op, false),
             Place::Indirect(pointer) => (pointer, true),
-            Place::Bit { .. } => return Err("a bit is no instance".into()),
+            Place::Bit { .. } | Place::PointedBit { .. } => {
+                return Err("a bit is no instance".into());
+            }
         };
         match &typed.lay.shape {
             LayShape::Pou(name) => {
@@ -616,9 +620,7 @@ impl<'p> BodyGen<'_, '_, 'p> {
             },
         };
         if let Type::Reference(target) = ty {
-            let Place::Direct(op) = place else {
-                return Err("a reference reached through a pointer".into());
-            };
+            let op = self.reference_value(place)?;
             let lay = self.lay(&target)?;
             return Ok((
                 Typed {

@@ -9,7 +9,7 @@ use super::error::fail;
 use super::layout::{Lay, LayShape, located_of};
 use crate::elementary::Elementary;
 use crate::sema::scope::{GlobalSymbol, LocalSymbol};
-use crate::sema::ty::{Type, bit_string_arithmetic, common_type};
+use crate::sema::ty::{Type, bit_string_arithmetic, common_type, mixed_sign_type};
 use crate::syntax::SyntaxKind;
 use crate::syntax::ast::{AstNode, BinaryExpr, Expr, FieldExpr, IndexExpr, NameExpr, UnaryExpr};
 
@@ -53,6 +53,15 @@ pub(crate) fn located_place(located: program_image::Located) -> Place {
             bit,
         },
         (operand, None) => Place::Direct(operand),
+    }
+}
+
+/// Bit `bit` of the value of type `ty` at `place`, directly or through a pointer.
+fn bit_place(place: Place, ty: IE, bit: u8) -> Gen<Place> {
+    match place {
+        Place::Direct(operand) => Ok(Place::Bit { operand, ty, bit }),
+        Place::Indirect(pointer) => Ok(Place::PointedBit { pointer, ty, bit }),
+        Place::Bit { .. } | Place::PointedBit { .. } => Err("a bit has no bits".into()),
     }
 }
 
@@ -107,6 +116,22 @@ impl BodyGen<'_, '_, '_> {
                 });
                 dst
             }
+            Place::PointedBit { pointer, ty, bit } => {
+                let value = self.temp(ty.size_bytes());
+                self.emit(Instr::Load {
+                    size: ty.size_bytes(),
+                    dst: value,
+                    ptr: pointer,
+                });
+                let dst = self.temp(1);
+                self.emit(Instr::GetBit {
+                    ty,
+                    dst,
+                    src: value,
+                    bit,
+                });
+                dst
+            }
         })
     }
 
@@ -146,6 +171,28 @@ impl BodyGen<'_, '_, '_> {
                     src,
                 });
             }
+            Place::PointedBit { pointer, ty, bit } => {
+                // The pointed value is read, changed in one bit and written back whole, as
+                // the image has no instruction that sets a bit through a pointer.
+                let size = ty.size_bytes();
+                let value = self.temp(size);
+                self.emit(Instr::Load {
+                    size,
+                    dst: value,
+                    ptr: pointer,
+                });
+                self.emit(Instr::SetBit {
+                    ty,
+                    dst: value,
+                    bit,
+                    src,
+                });
+                self.emit(Instr::Store {
+                    size,
+                    ptr: pointer,
+                    src: value,
+                });
+            }
         }
         Ok(())
     }
@@ -159,7 +206,10 @@ impl BodyGen<'_, '_, '_> {
                 Ok(dst)
             }
             Place::Indirect(pointer) => Ok(pointer),
-            Place::Bit { .. } => Err("the address of a single bit cannot be taken".into()),
+            // The checker refuses a bit passed by reference (E0135).
+            Place::Bit { .. } | Place::PointedBit { .. } => {
+                Err("the address of a single bit cannot be taken (E0135)".into())
+            }
         }
     }
 
@@ -191,16 +241,61 @@ impl BodyGen<'_, '_, '_> {
                 Type::Reference(target) => *target,
                 other => other,
             };
-            let Place::Direct(op) = place else {
-                return Err("a reference inside a reference".into());
-            };
+            let op = self.reference_value(place)?;
             return self.typed(Place::Indirect(op), target);
         }
         self.typed(place, declared)
     }
 
+    /// The operand holding the address a reference or VAR_IN_OUT slot at `place` holds: the
+    /// slot itself when it is reached directly, its value loaded when the slot is reached
+    /// through a pointer (`p^.r` with `r : REFERENCE TO INT` a member of the pointed structure).
+    pub(crate) fn reference_value(&mut self, place: Place) -> Gen<Operand> {
+        match place {
+            Place::Direct(op) => Ok(op),
+            Place::Indirect(pointer) => {
+                let dst = self.temp(8);
+                self.emit(Instr::Load {
+                    size: 8,
+                    dst,
+                    ptr: pointer,
+                });
+                Ok(dst)
+            }
+            Place::Bit { .. } | Place::PointedBit { .. } => Err("a reference in a bit".into()),
+        }
+    }
+
+    /// The operand of the descriptor of the open array `typed`: where it is, or a copy of it
+    /// when it is reached through a pointer (`THIS^.values` in a function block); the copy
+    /// points to the same elements.
+    fn descriptor_operand(&mut self, typed: &Typed) -> Gen<Operand> {
+        match typed.place {
+            Place::Direct(descriptor) => Ok(descriptor),
+            Place::Indirect(pointer) => {
+                let dst = self.temp(typed.lay.size);
+                self.emit(Instr::Load {
+                    size: typed.lay.size,
+                    dst,
+                    ptr: pointer,
+                });
+                Ok(dst)
+            }
+            Place::Bit { .. } | Place::PointedBit { .. } => Err("an open array in a bit".into()),
+        }
+    }
+
     /// The place an expression names.
     pub(crate) fn place(&mut self, node: &Expr) -> Gen<Typed> {
+        if matches!(node, Expr::NameExpr(_) | Expr::FieldExpr(_))
+            && let Some((owner, property, instance)) = self.property_of(node)?
+        {
+            // A property read as the base of a member, bit or element (`fb.Pos.x`,
+            // `Flags.3`): its getter's value, in a temporary. The checker refuses writing
+            // such a part or passing a property by reference (E0134), which would be lost.
+            let (value, ty) = self.property_get(owner, property, instance)?;
+            return self.typed(Place::Direct(value), ty);
+        }
         match node {
             Expr::ParenExpr(paren) => {
                 let inner = paren.inner().ok_or("empty parentheses")?;
@@ -263,7 +358,8 @@ impl BodyGen<'_, '_, '_> {
             SyntaxKind::IDENT => (first, false),
             SyntaxKind::DOT => (node.ident().ok_or("a name after '.'")?, true),
             SyntaxKind::THIS => {
-                return Err("THIS is not supported by the code generator yet".into());
+                // The checker refuses THIS where a variable is needed (E0134).
+                return Err("THIS is a pointer to the instance, not a variable".into());
             }
             _ => return Err(fail!("'{}' is not a variable", first.text())),
         };
@@ -316,7 +412,9 @@ impl BodyGen<'_, '_, '_> {
                     );
                 }
                 LocalSymbol::Property(_) => {
-                    return Err("properties are not supported by the code generator yet".into());
+                    // `place` reads a property through its getter; only an SFC flag or action
+                    // named after a property arrives here.
+                    return Err(fail!("'{name}' is a property, not a variable"));
                 }
                 LocalSymbol::TransitionValue => {
                     let value = self
@@ -471,15 +569,7 @@ impl BodyGen<'_, '_, '_> {
             if u32::from(bit) >= ty.size_bytes() * 8 {
                 return Err(fail!("{} has no bit {bit}", ty.name()));
             }
-            let operand = match base.place {
-                Place::Direct(op) => op,
-                _ => {
-                    return Err(
-                        "bits of a value reached through a pointer are not supported yet".into(),
-                    );
-                }
-            };
-            return self.typed(Place::Bit { operand, ty, bit }, Type::BOOL);
+            return self.typed(bit_place(base.place, ty, bit)?, Type::BOOL);
         }
         if let LayShape::Pou(pou_name) = &base.lay.shape
             && let Some(pou) = self.scope.globals.pou(pou_name)
@@ -530,20 +620,12 @@ impl BodyGen<'_, '_, '_> {
         if (index + 1) * bits > width {
             return Err(fail!("{} has no {text}", ty.name()));
         }
-        let Place::Direct(operand) = base.place else {
-            return Err("partial access through a pointer is not supported yet".into());
-        };
         match part {
-            None => self.typed(
-                Place::Bit {
-                    operand,
-                    ty,
-                    bit: index as u8,
-                },
-                Type::BOOL,
-            ),
+            None => self.typed(bit_place(base.place, ty, index as u8)?, Type::BOOL),
             Some(part) => {
-                let place = Place::Direct(shifted(operand, index * bits / 8));
+                // Parts are counted from the least significant end, which is the first byte
+                // in the image's little-endian layout.
+                let place = self.member_place(base.place, index * bits / 8)?;
                 self.typed(place, Type::Elementary(part))
             }
         }
@@ -578,7 +660,9 @@ impl BodyGen<'_, '_, '_> {
                     Place::Indirect(dst)
                 }
             }
-            Place::Bit { .. } => return Err("a bit has no members".into()),
+            Place::Bit { .. } | Place::PointedBit { .. } => {
+                return Err("a bit has no members".into());
+            }
         })
     }
 
@@ -595,9 +679,7 @@ impl BodyGen<'_, '_, '_> {
             if indices.len() != rank as usize {
                 return Err(fail!("{} index(es) for {rank} dimension(s)", indices.len()));
             }
-            let Place::Direct(descriptor) = base.place else {
-                return Err("an open array reached through a pointer".into());
-            };
+            let descriptor = self.descriptor_operand(&base)?;
             let mut operands = Vec::new();
             for index in &indices {
                 let (value, ty) = self.expr(index, None)?;
@@ -1028,6 +1110,7 @@ impl BodyGen<'_, '_, '_> {
         // the checker) is compared in the type their arithmetic has.
         let common = common_type(&lt, &rt)
             .or_else(|| bit_string_arithmetic(&lt, &rt))
+            .or_else(|| mixed_sign_type(&lt, &rt))
             .unwrap_or(lt);
         let ty = concrete(&common, None);
         let sides = [self.type_of(left), self.type_of(right)];
@@ -1138,10 +1221,7 @@ impl BodyGen<'_, '_, '_> {
     pub(crate) fn open_array_descriptor(&mut self, node: &Expr, lay: &Lay) -> Gen<Operand> {
         let typed = self.place(node)?;
         if let LayShape::OpenArray { .. } = typed.lay.shape {
-            return match typed.place {
-                Place::Direct(descriptor) => Ok(descriptor),
-                _ => Err("an open array reached through a pointer".into()),
-            };
+            return self.descriptor_operand(&typed);
         }
         let LayShape::Array { dims, .. } = typed.lay.shape.clone() else {
             return Err(fail!("{} is not an array", typed.ty));

@@ -723,12 +723,12 @@ fn standard_functions_with_more_inputs_are_called_with_their_pins() {
 
 #[test]
 fn a_code_generation_error_in_a_network_names_the_pou_file_and_the_element() {
-    let source = "FUNCTION_BLOCK Main\nVAR q : BOOL; p : POINTER TO WORD; END_VAR\nEND_FUNCTION_BLOCK\n\
+    let source = "FUNCTION_BLOCK Main\nVAR q : BOOL; p : POINTER TO ARRAY[-9223372036854775807..9223372036854775807] OF BOOL; END_VAR\nEND_FUNCTION_BLOCK\n\
                   PROGRAM Run\nVAR m : Main; END_VAR\nm();\nEND_PROGRAM\n";
     let project = project_with(
         source,
         vec![network(
-            vec![contact(1, "p^.3")],
+            vec![contact(1, "p^[0]")],
             vec![coil(2, "q", CoilKind::Normal)],
         )],
     );
@@ -757,7 +757,8 @@ fn a_code_generation_error_in_a_network_names_the_pou_file_and_the_element() {
         "{location:?}"
     );
     assert!(!message.contains("__"));
-    expect!["application/Main.pou.toml: Main: 1:2: bits of a value reached through a pointer are not supported yet"].assert_eq(&error.to_string());
+    expect!["application/Main.pou.toml: Main: 1:2: the array is larger than a memory region"]
+        .assert_eq(&error.to_string());
 }
 
 #[test]

@@ -405,6 +405,28 @@ pub fn common_type(a: &Type, b: &Type) -> Option<Type> {
     }
 }
 
+/// The type CODESYS V3.5 computes `a + b` (and `-`, `*`, `/`, `MOD` and the comparisons) in
+/// when one operand is a signed and the other an unsigned integer and neither widens to the
+/// other (`INT + UINT`, `DINT * UDINT`, `SINT < USINT`): the smallest signed integer whose
+/// range holds both operands' ranges (`DINT`, `LINT`, `INT`), so every result is the
+/// mathematical one, as CODESYS's register-width computation gives it ("computes temporary
+/// results always with the native size", its operators overview). `None` for other operands,
+/// and for a 64-bit integer with one of the other sign, which no type holds.
+pub fn mixed_sign_type(a: &Type, b: &Type) -> Option<Type> {
+    let (Type::Elementary(a), Type::Elementary(b)) = (strip_subrange(a), strip_subrange(b)) else {
+        return None;
+    };
+    let mixed = (a.is_signed_integer() && b.is_unsigned_integer())
+        || (a.is_unsigned_integer() && b.is_signed_integer());
+    if !mixed || a.widens_to(b) || b.widens_to(a) {
+        return None;
+    }
+    [E::Int, E::Dint, E::Lint]
+        .into_iter()
+        .find(|wide| a.widens_to(*wide) && b.widens_to(*wide))
+        .map(Type::Elementary)
+}
+
 /// The unsigned integer a bit string counts as in CODESYS arithmetic (`BYTE` as `USINT`);
 /// `None` for `BOOL` and everything that is not a bit string.
 pub fn bit_string_counterpart(ty: Elementary) -> Option<Elementary> {
@@ -436,7 +458,9 @@ pub fn bit_string_arithmetic(a: &Type, b: &Type) -> Option<Type> {
         None if ty.is_numeric() => Some(ty.clone()),
         None => None,
     };
-    let common = common_type(&as_number(a, left)?, &as_number(b, right)?)?;
+    let (a_number, b_number) = (as_number(a, left)?, as_number(b, right)?);
+    let common =
+        common_type(&a_number, &b_number).or_else(|| mixed_sign_type(&a_number, &b_number))?;
     for (bits, number) in [left, right].into_iter().flatten() {
         if common == Type::Elementary(number) {
             return Some(Type::Elementary(bits));
@@ -472,6 +496,20 @@ pub fn lenient_real_conversion(from: &Type, to: &Type) -> bool {
         return false;
     };
     to.is_real() && (from.is_integer() || (from.is_bit_string() && from != E::Bool))
+}
+
+/// Whether a value of type `from` going into `to` is a real converted to an integer or bit
+/// string (`i := EXPT(2, 10)`, `i := x ** 4`, `i := r`), which IEC refuses and CODESYS V3.5
+/// performs with a warning (its C0197 message, "Implicit conversion from … : possible loss of
+/// information"), as the `TO_` conversion it inserts: the real rounded to the nearest
+/// integer, halves away from zero, like `REAL_TO_INT`.
+pub fn lenient_real_to_integer(from: &Type, to: &Type) -> bool {
+    let Type::Elementary(to) = to else {
+        return false;
+    };
+    let real =
+        matches!(from, Type::RealLiteral) || from.as_elementary().is_some_and(|e| e.is_real());
+    real && (to.is_integer() || (to.is_bit_string() && *to != E::Bool))
 }
 
 /// `value` as stored in an integer or bit string `ty`: its low bits, read with the type's sign.
@@ -539,9 +577,23 @@ mod tests {
         assert_eq!(bit_string_arithmetic(&e(Byte), &e(Int)), Some(e(Int)));
         assert_eq!(bit_string_arithmetic(&e(Dword), &e(Real)), None);
         assert_eq!(bit_string_arithmetic(&e(Word), &e(Real)), Some(e(Real)));
-        assert_eq!(bit_string_arithmetic(&e(Byte), &e(Sint)), None);
+        // A bit string with a signed integer of its width combines as USINT and SINT do.
+        assert_eq!(bit_string_arithmetic(&e(Byte), &e(Sint)), Some(e(Int)));
+        assert_eq!(bit_string_arithmetic(&e(Lword), &e(Lint)), None);
         assert_eq!(bit_string_arithmetic(&e(Int), &e(Dint)), None);
         assert_eq!(bit_string_arithmetic(&e(Bool), &three), None);
+    }
+
+    #[test]
+    fn signed_and_unsigned_integers_meet_in_the_smallest_signed_type_holding_both() {
+        assert_eq!(mixed_sign_type(&e(Int), &e(Uint)), Some(e(Dint)));
+        assert_eq!(mixed_sign_type(&e(Usint), &e(Sint)), Some(e(Int)));
+        assert_eq!(mixed_sign_type(&e(Dint), &e(Udint)), Some(e(Lint)));
+        assert_eq!(mixed_sign_type(&e(Sint), &e(Udint)), Some(e(Lint)));
+        assert_eq!(mixed_sign_type(&e(Lint), &e(Ulint)), None);
+        // Where one widens to the other, the common type is the usual one, not this.
+        assert_eq!(mixed_sign_type(&e(Dint), &e(Uint)), None);
+        assert_eq!(mixed_sign_type(&e(Int), &e(Word)), None);
     }
 
     #[test]
@@ -558,6 +610,10 @@ mod tests {
         assert!(lenient_real_conversion(&e(Dint), &e(Real)));
         assert!(!lenient_real_conversion(&e(Bool), &e(Real)));
         assert!(!lenient_real_conversion(&e(Real), &e(Dint)));
+        assert!(lenient_real_to_integer(&e(Lreal), &e(Int)));
+        assert!(lenient_real_to_integer(&Type::RealLiteral, &e(Word)));
+        assert!(!lenient_real_to_integer(&e(Real), &e(Bool)));
+        assert!(!lenient_real_to_integer(&e(Dint), &e(Int)));
     }
 
     #[test]

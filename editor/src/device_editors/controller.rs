@@ -1,13 +1,15 @@
-//! The controller's editor: its name, its address and whether it has a Modbus map of its own.
-//! The password is typed when logging in and never stored, so there is no field for it.
+//! The controller's editor: its name, its address, whether it has a Modbus map of its own, and
+//! the language rules (dialect) the project's programs are checked by, the project setting a
+//! user looks for beside the controller it builds for. The password is typed when logging in
+//! and never stored, so there is no field for it.
 
 use egui::{RichText, Ui};
-use project_model::{Controller, Edit, ModbusServerMap, Project, controller_problems};
+use project_model::{Controller, Dialect, Edit, ModbusServerMap, Project, controller_problems};
 
-use super::field::{DeviceEditorState, parse_whole};
+use super::field::{DeviceEditorState, FieldId, combo_ui, parse_whole};
 use super::form::Form;
 use super::map_ranges::map_ranges_ui;
-use super::{DeviceEdit, DeviceTexts, checked_edit, keep};
+use super::{DeviceEdit, DeviceTexts, checked_edit, field_label, keep, set_label};
 
 /// Draws the controller's settings of `project` and returns the edits of this frame's gesture.
 pub fn controller_editor_ui(
@@ -53,6 +55,7 @@ pub fn controller_editor_ui(
             if on { "on" } else { "off" }
         });
     let mut out = form.finish();
+    keep(&mut out, dialect_ui(ui, project, state, texts));
     match &controller.modbus_map {
         None => {
             ui.label(RichText::new(&texts.default_map_note).weak());
@@ -83,4 +86,50 @@ pub fn controller_editor_ui(
         }
     }
     out
+}
+
+/// The project's dialect as a choice of two, with a note saying what it decides.
+fn dialect_ui(
+    ui: &mut Ui,
+    project: &Project,
+    state: &mut DeviceEditorState,
+    texts: &DeviceTexts,
+) -> Option<DeviceEdit> {
+    let node = project.controller.name.as_str();
+    let options = [
+        (texts.dialect_codesys.clone(), Dialect::Codesys),
+        (texts.dialect_iec_strict.clone(), Dialect::IecStrict),
+    ];
+    let label = field_label(texts, &texts.dialect, node);
+    ui.add_space(8.0);
+    let edit = ui
+        .horizontal(|ui| {
+            ui.label(&texts.dialect);
+            let field = FieldId {
+                key: "dialect",
+                label: &label,
+                width: 160.0,
+            };
+            combo_ui(
+                ui,
+                state,
+                texts,
+                field,
+                project.dialect,
+                &options,
+                |dialect| {
+                    let shown = options
+                        .iter()
+                        .find(|(_, value)| *value == dialect)
+                        .map_or(dialect.name(), |(text, _)| text.as_str());
+                    Ok(DeviceEdit {
+                        label: set_label(texts, &texts.dialect, node, shown),
+                        edits: vec![Edit::SetDialect(dialect)],
+                    })
+                },
+            )
+        })
+        .inner;
+    ui.label(RichText::new(&texts.dialect_note).weak());
+    edit
 }

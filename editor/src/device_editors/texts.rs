@@ -113,6 +113,14 @@ pub struct DeviceTexts {
     pub units: String,
     /// Heading of the scaling fields.
     pub scaling: String,
+    /// Field: the language rules the project is checked by (its dialect).
+    pub dialect: String,
+    /// Choice of the dialect: CODESYS V3.5's rules, with warnings.
+    pub dialect_codesys: String,
+    /// Choice of the dialect: IEC 61131-3 only.
+    pub dialect_iec_strict: String,
+    /// Note under the dialect: what it decides.
+    pub dialect_note: String,
     /// Accessible label of a field: `{field}`, `{node}`.
     pub field_of: String,
     /// Accessible label of a cell of a table row: `{field}`, `{row}`.
@@ -186,6 +194,12 @@ impl Default for DeviceTexts {
             increments: s("Increments"),
             units: s("Per units"),
             scaling: s("Scaling"),
+            dialect: s("Language rules"),
+            dialect_codesys: s("CODESYS V3.5"),
+            dialect_iec_strict: s("IEC 61131-3 only"),
+            dialect_note: s(
+                "Where CODESYS accepts what IEC 61131-3 refuses, CODESYS V3.5 compiles it with a warning and IEC 61131-3 only refuses it; the next build checks by the rules chosen",
+            ),
             field_of: s("{field} of {node}"),
             field_of_row: s("{field} of row {row}"),
             set_field: s("Set {field} of {node} to {value}"),

@@ -124,11 +124,90 @@ fn integers_into_reals_that_may_round_them_warn_by_default_and_are_refused_by_ie
 }
 
 #[test]
+fn reals_into_integers_warn_and_round_by_default_and_are_refused_by_iec_strict() {
+    let source = "FUNCTION Twice : DINT VAR_INPUT x : INT; END_VAR Twice := INT_TO_DINT(x) * 2; END_FUNCTION
+        PROGRAM main
+        VAR
+            i : INT; x : INT := 3; p : DINT; half : REAL := 2.5; minus : LREAL := -2.5; low : REAL := 1.4;
+            a : INT; b : DINT; c : SINT; d : INT; w : WORD; t : DINT; k : INT := 7.5;
+        END_VAR
+        i := EXPT(2, 10); p := x ** 4; a := half; b := minus; c := low; d := 7.6; w := half * 100.0;
+        t := Twice(x := half);
+        END_PROGRAM";
+    let warning = (Code::ImplicitRealToInteger, Severity::Warning);
+    assert_eq!(codes(source, Dialect::Codesys), vec![warning; 9]);
+    let s = run(source, 1);
+    // Rounded to the nearest integer, halves away from zero, as REAL_TO_INT rounds.
+    check(
+        &s,
+        &[
+            ("main.i", "1024"),
+            ("main.p", "81"),
+            ("main.a", "3"),
+            ("main.b", "-3"),
+            ("main.c", "1"),
+            ("main.d", "8"),
+            ("main.w", "250"),
+            ("main.t", "6"),
+            ("main.k", "8"),
+        ],
+    );
+    assert_eq!(
+        codes(source, Dialect::IecStrict),
+        vec![(Code::TypeMismatch, Severity::Error); 9]
+    );
+}
+
+#[test]
+fn signed_and_unsigned_integers_combine_in_the_smallest_signed_type_holding_both_by_default() {
+    let declarations = "a : INT := 32767; u : UINT := 65535; minus : INT := -1; d : DINT := -2; ud : UDINT := 4294967295;
+        si : SINT := -1; us : USINT := 255; bb : BYTE := 200; sn : SINT := -100;
+        sum : DINT; product : LINT; small : INT; less : BOOL; same : BOOL; greater : BOOL; bits : INT; rest : DINT; narrow : INT;";
+    let body =
+        "sum := a + u; product := d * ud; small := si + us; less := minus < u; same := si = us;
+        greater := ud > d; bits := bb + sn; rest := minus MOD u; narrow := a + u;";
+    let source = program(declarations, body);
+    // Only the last assignment narrows (DINT into INT), which warns as every narrowing does.
+    assert_eq!(
+        codes(&source, Dialect::Codesys),
+        vec![(Code::ImplicitNarrowing, Severity::Warning)]
+    );
+    let s = run(&source, 1);
+    check(
+        &s,
+        &[
+            // 98302 fits neither INT nor UINT: the sum is a DINT.
+            ("main.sum", "98302"),
+            // -8589934590 fits neither DINT nor UDINT: the product is a LINT.
+            ("main.product", "-8589934590"),
+            ("main.small", "254"),
+            // Compared as numbers, not as bit patterns: -1 < 65535 and -1 <> 255.
+            ("main.less", "TRUE"),
+            ("main.same", "FALSE"),
+            ("main.greater", "TRUE"),
+            ("main.bits", "100"),
+            ("main.rest", "-1"),
+            // 98302 (16#17FFE) keeps its low 16 bits in an INT: 16#7FFE.
+            ("main.narrow", "32766"),
+        ],
+    );
+    assert_eq!(
+        codes(&source, Dialect::IecStrict),
+        vec![(Code::InvalidOperands, Severity::Error); 9]
+    );
+}
+
+#[test]
 fn what_codesys_refuses_both_dialects_refuse() {
     for (declarations, body, code) in [
         ("x : BOOL; n : INT;", "n := x + 1;", Code::InvalidOperands),
-        ("r : REAL := 1.5; n : INT;", "n := r;", Code::TypeMismatch),
         ("t : TIME; n : DINT;", "n := t;", Code::TypeMismatch),
+        // No integer type holds both a LINT's and a ULINT's range.
+        (
+            "l : LINT; ul : ULINT; n : LINT;",
+            "n := l + ul;",
+            Code::InvalidOperands,
+        ),
         (
             "s : STRING; b : BYTE;",
             "b := s + 1;",

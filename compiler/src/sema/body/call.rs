@@ -358,7 +358,9 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                 }
                 (VarSection::VarOutput, true) => {
                     let target = self.expression(&value, Mode::Write);
-                    if !self.assignable_target(&value, &target) {
+                    if !self.assignable_target(&value, &target)
+                        || self.refuse_unwritable_place(&value, PlaceUse::Connected)
+                    {
                         continue;
                     }
                     let context = format!(
@@ -382,7 +384,7 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                             range_of(value.syntax()),
                             format!("'{}' of '{callee}' is VAR_IN_OUT and needs a variable, not a value", param.name),
                         );
-                    } else {
+                    } else if !self.refuse_unwritable_place(&value, PlaceUse::ByReference) {
                         let context = format!("VAR_IN_OUT '{}' of '{callee}'", param.name);
                         self.expect_same_place_type(&ty, &param.ty, value.syntax(), &context);
                     }
@@ -452,6 +454,7 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
             let ty = self.expression(&value, if writes { Mode::Write } else { Mode::Read });
             if writes {
                 self.expression(&value, Mode::Read);
+                self.refuse_unwritable_place(&value, PlaceUse::ByReference);
             }
             let sig = match &formal {
                 Some(formal) => signature

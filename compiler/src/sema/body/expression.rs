@@ -206,7 +206,10 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
             return match local {
                 LocalSymbol::Var(variable) => self.variable(variable, mode, &token, true),
                 LocalSymbol::Result(ty) => self.resolve(ty),
-                LocalSymbol::Property(property) => self.resolve(&property.ty),
+                LocalSymbol::Property(property) => {
+                    self.property_nodes.insert(node.syntax().text_range());
+                    self.resolve(&property.ty)
+                }
                 LocalSymbol::Method(_) | LocalSymbol::Action => Type::Void,
                 LocalSymbol::Step => Type::Step,
                 LocalSymbol::SfcAction => Type::SfcAction,
@@ -251,6 +254,12 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
         local: bool,
     ) -> Type {
         self.record(variable, mode);
+        let at_bit = variable.address.as_deref().is_some_and(|address| {
+            matches!(crate::sema::address::parse_address(address), Ok(Some(a)) if a.size_bits == 1)
+        });
+        if at_bit && let Some(expression) = token.parent() {
+            self.bit_nodes.insert(expression.text_range());
+        }
         if mode == Mode::Write {
             if variable.constant {
                 self.error(
@@ -416,6 +425,7 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                                 .any(|q| q.name.eq_ignore_ascii_case(name))
                         });
                         if is_property {
+                            self.property_nodes.insert(node.text_range());
                             DefinitionKind::Property
                         } else {
                             DefinitionKind::Variable
@@ -687,12 +697,21 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                     | SyntaxKind::GT
                     | SyntaxKind::GE
             )
-            && bit_string_arithmetic(&left, &right).is_some()
+            && (bit_string_arithmetic(&left, &right).is_some()
+                || mixed_sign_type(&left, &right).is_some())
         {
             message.push_str(STRICT_NOTE);
         }
         self.error(Code::InvalidOperands, range_of(node), message);
         Type::Error
+    }
+
+    /// The type of an operation on a signed and an unsigned integer, which the default
+    /// dialect computes as CODESYS does (`ty::mixed_sign_type`) and `iec-strict` refuses.
+    fn lenient_mixed_sign(&self, left: &Type, right: &Type) -> Option<Type> {
+        (self.scope.globals.dialect == Dialect::Codesys)
+            .then(|| mixed_sign_type(left, right))
+            .flatten()
     }
 
     pub(super) fn binary_type(
@@ -707,7 +726,8 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
         match operator {
             PLUS | MINUS | STAR | SLASH => {
                 if left.is_numeric() && right.is_numeric() {
-                    return common_type(left, right);
+                    return common_type(left, right)
+                        .or_else(|| self.lenient_mixed_sign(left, right));
                 }
                 if self.scope.globals.dialect == Dialect::Codesys
                     && let Some(ty) = bit_string_arithmetic(left, right)
@@ -754,7 +774,7 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
             }
             MOD => {
                 if left.is_integer_like() && right.is_integer_like() {
-                    common_type(left, right)
+                    common_type(left, right).or_else(|| self.lenient_mixed_sign(left, right))
                 } else if self.scope.globals.dialect == Dialect::Codesys {
                     bit_string_arithmetic(left, right).filter(Type::is_bits)
                 } else {
@@ -764,9 +784,24 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
             POWER => power_type(left, right),
             EQ | NEQ | LT | LE | GT | GE => {
                 let comparable = match (left, right) {
+                    // Structures, unions, arrays and instances are not compared: CODESYS's EQ
+                    // and NE permit "all elementary data types" (its operator pages), and
+                    // interfaces, which compare the instance they hold.
                     (Type::Named(a), Type::Named(b)) => {
-                        a.eq_ignore_ascii_case(b) && (is_enum(left) || matches!(operator, EQ | NEQ))
+                        a.eq_ignore_ascii_case(b)
+                            && (is_enum(left)
+                                || matches!(operator, EQ | NEQ)
+                                    && !matches!(
+                                        self.scope.globals.shape(a),
+                                        Some(Shape::Struct(_) | Shape::StandardFb(_))
+                                    )
+                                    && self
+                                        .scope
+                                        .globals
+                                        .pou(a)
+                                        .is_none_or(|p| p.kind == PouKind::Interface))
                     }
+                    (Type::Array { .. }, _) | (_, Type::Array { .. }) => false,
                     (Type::String { wide: a, .. }, Type::String { wide: b, .. }) => a == b,
                     (Type::Pointer(_), Type::Pointer(_)) => true,
                     (Type::Pointer(_), other) | (other, Type::Pointer(_)) => {
@@ -789,6 +824,7 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                     }
                     _ => {
                         common_type(left, right).is_some()
+                            || self.lenient_mixed_sign(left, right).is_some()
                             || (self.scope.globals.dialect == Dialect::Codesys
                                 && bit_string_arithmetic(left, right).is_some())
                     }

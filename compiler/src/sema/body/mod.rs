@@ -9,6 +9,9 @@ mod call;
 mod expression;
 mod refused_call;
 mod resolution;
+mod unwritable_place;
+
+use unwritable_place::PlaceUse;
 mod sfc;
 
 use std::collections::HashMap;
@@ -22,7 +25,8 @@ use super::scope::{GlobalSymbol, LocalSymbol, Scope, inheritance_chain, is_visib
 use super::signatures::{self, FunctionSig, Sig};
 use super::ty::{
     DEFAULT_STRING_LENGTH, Type, bit_string_arithmetic, common_type, implicitly_converts,
-    lenient_integer_conversion, lenient_real_conversion, power_type, wrapped,
+    lenient_integer_conversion, lenient_real_conversion, lenient_real_to_integer, mixed_sign_type,
+    power_type, wrapped,
 };
 use super::types::Shape;
 use super::{closest, stdlib};
@@ -68,6 +72,12 @@ pub(crate) struct BodyChecker<'s, 'a, 'p> {
     /// Types resolved with the POU's own constants (open array bounds), by their text, so an
     /// `ARRAY[*]` parameter is not parsed again at every use.
     local_types: std::cell::RefCell<HashMap<String, Type>>,
+    /// The ranges of the expressions checked so far that name a property (`Pos`, `fb.Pos`),
+    /// for `refuse_unwritable_place`; lives as long as the body's check.
+    property_nodes: std::collections::HashSet<rowan::TextRange>,
+    /// The ranges of the expressions checked so far that name a BOOL located at a bit address
+    /// (`x AT %IX0.1`), for `refuse_unwritable_place`; lives as long as the body's check.
+    bit_nodes: std::collections::HashSet<rowan::TextRange>,
 }
 
 fn range_of(node: &SyntaxNode) -> Range<usize> {
@@ -122,6 +132,8 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
             resolutions: None,
             types: None,
             local_types: std::cell::RefCell::default(),
+            property_nodes: std::collections::HashSet::new(),
+            bit_nodes: std::collections::HashSet::new(),
         }
     }
 
@@ -184,7 +196,9 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                 let target_ty = self.expression(&target, Mode::Write);
                 let value_ty = self.expression(&value, Mode::Read);
                 // A POU or action name has no value to assign to.
-                if !self.assignable_target(&target, &target_ty) {
+                if !self.assignable_target(&target, &target_ty)
+                    || self.refuse_unwritable_place(&target, PlaceUse::Assigned)
+                {
                     return;
                 }
                 self.expect_type(&value_ty, &target_ty, value.syntax(), "the assignment");
@@ -272,6 +286,10 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
         if let (Some(target), Some(value)) = (target, value) {
             self.expression(&target, Mode::Write);
             self.expression(&value, Mode::Read);
+            // `REF=` takes the place of its value too; `?=` only writes its target.
+            if !self.refuse_unwritable_place(&target, PlaceUse::Connected) {
+                self.refuse_unwritable_place(&value, PlaceUse::ByReference);
+            }
         }
     }
 
@@ -291,7 +309,10 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
         match stmt.variable() {
             Some(variable) => {
                 let ty = self.expression(&variable, Mode::Write);
-                if self.assignable_target(&variable, &ty) && !ty.is_integer_like() {
+                if self.assignable_target(&variable, &ty)
+                    && !self.refuse_unwritable_place(&variable, PlaceUse::Connected)
+                    && !ty.is_integer_like()
+                {
                     self.error(
                         Code::TypeMismatch,
                         range_of(variable.syntax()),
@@ -478,12 +499,24 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
         };
         let narrowing = copied && lenient_integer_conversion(value, target);
         let rounding = copied && lenient_real_conversion(value, target);
-        let lenient = narrowing || rounding;
+        let real_to_integer = copied && lenient_real_to_integer(value, target);
+        let lenient = narrowing || rounding || real_to_integer;
         if lenient && self.scope.globals.dialect == Dialect::Codesys {
             let (code, message) = if narrowing {
                 (
                     Code::ImplicitNarrowing,
                     narrowing_message(value, target, context),
+                )
+            } else if real_to_integer {
+                let from = match value {
+                    Type::RealLiteral => "LREAL",
+                    other => other.as_elementary().map_or("LREAL", |e| e.name()),
+                };
+                (
+                    Code::ImplicitRealToInteger,
+                    format!(
+                        "{context} converts {value} to {target} implicitly, rounding to the nearest integer (halves away from zero) as {from}_TO_{target} does; write {from}_TO_{target}(…) or TRUNC to say so"
+                    ),
                 )
             } else {
                 (
