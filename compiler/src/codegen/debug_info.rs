@@ -7,6 +7,7 @@ use project_model::{Pou, TextTarget, VarSection};
 
 use super::body::{Frame, Gen};
 use super::program::Build;
+use crate::sema::body::has_open_bounds;
 use crate::sema::ty::Type;
 
 impl<'p> Build<'_, 'p> {
@@ -22,9 +23,13 @@ impl<'p> Build<'_, 'p> {
     ) -> Gen<PouDebug> {
         let mut variables = Vec::with_capacity(frame.vars.len() + 1);
         for (variable, slot) in &frame.vars {
-            // A VAR_IN_OUT holds a pointer; the debugger wants the type it points to.
+            // A VAR_IN_OUT holds a pointer; the debugger wants the type it points to, except
+            // for an open array (ARRAY[*]), which has no layout of its own: its slot's type,
+            // the descriptor with the bounds, is what the frame holds.
             let ty = match (&slot.ty, slot.by_ref) {
-                (Type::Reference(pointee), true) => self.layouts.of(pointee)?.id,
+                (Type::Reference(pointee), true) if !has_open_bounds(pointee) => {
+                    self.layouts.of(pointee)?.id
+                }
                 _ => slot.lay.id,
             };
             let kind = match variable.section {
