@@ -11,6 +11,7 @@ mod fault;
 mod lower;
 mod memory;
 mod native;
+mod online_change;
 mod scalar;
 mod strings;
 
@@ -22,6 +23,9 @@ pub use carry::carry_retained;
 pub use fault::{FaultKind, FaultRecord};
 pub use lower::LowerError;
 pub use native::MotionLoadError;
+pub use online_change::{
+    AppliedChange, ChangeDetail, ChangeRefusal, ChangeSummary, DetailKind, OnlineChangePlan,
+};
 
 use exec::Exec;
 use lower::Compiled;
