@@ -82,6 +82,31 @@ impl Trace {
         *self = Self::default();
     }
 
+    /// Moves the trace's places to their variables' places after an online change, as
+    /// `moved` gives them, and goes on recording; when one is gone or changed type (`moved`
+    /// gives `None`), forgets the trace as a download does. Returns whether it was removed.
+    pub fn follow(&mut self, moved: impl Fn(Place) -> Option<Place>) -> bool {
+        let Some(config) = self.config.as_mut() else {
+            return false;
+        };
+        let places: Option<Vec<Place>> = config.places.iter().map(|&place| moved(place)).collect();
+        let trigger = match config.trigger {
+            TriggerKind::None => Some(config.trigger_place),
+            _ => moved(config.trigger_place),
+        };
+        match (places, trigger) {
+            (Some(places), Some(trigger)) => {
+                config.places = places;
+                config.trigger_place = trigger;
+                false
+            }
+            _ => {
+                self.unconfigure();
+                true
+            }
+        }
+    }
+
     /// Drops the samples and starts recording; false without a configuration.
     pub fn arm(&mut self) -> bool {
         let Some(config) = self.config.take() else {
