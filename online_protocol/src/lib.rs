@@ -13,6 +13,7 @@
 mod answers;
 mod error;
 pub mod framing;
+mod online_change;
 mod place;
 mod reader;
 mod request;
@@ -30,6 +31,7 @@ pub use answers::{
 };
 pub use error::DecodeError;
 pub use framing::*;
+pub use online_change::{ChangeApplied, ChangeCheck, ChangeDetailEntry, MAX_DETAIL_KIND};
 pub use place::Place;
 pub use reader::Reader;
 pub use request::{Request, ResetKind, TraceConfig, TriggerKind};

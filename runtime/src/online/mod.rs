@@ -16,7 +16,7 @@ mod place;
 mod services;
 mod trace;
 
-pub use download::{TRANSFER_TIMEOUT, Transfer};
+pub use download::{CHECKED_TRANSFER_TIMEOUT, TRANSFER_TIMEOUT, Transfer};
 pub use forces::Forces;
 pub use password::{PASSWORD_VARIABLE, PasswordError, read_password};
 pub use place::{Memory, PlaceAccess};

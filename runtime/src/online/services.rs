@@ -15,6 +15,8 @@ use program_image::{Region, TypeDef};
 use sha2::{Digest, Sha256};
 
 use super::download::Transfer;
+
+mod online_change;
 use super::trace::{MAX_TRACE_BYTES, Trace};
 use crate::engine::ResetKind;
 use crate::modbus::{
@@ -41,6 +43,8 @@ pub struct OnlineServices {
     tokens: Mutex<HashMap<Option<u64>, u128>>,
     /// The download in progress, if any.
     transfer: Mutex<Option<Transfer>>,
+    /// The transfer last checked for an online change, with its prepared engine and plan.
+    checked: Mutex<Option<online_change::CheckedChange>>,
     /// The number of the last transfer begun.
     last_transfer: Mutex<u16>,
     /// The Modbus server's map, replaced by the downloaded image's; `None` keeps the server's.
@@ -55,6 +59,7 @@ impl OnlineServices {
             password,
             tokens: Mutex::new(HashMap::new()),
             transfer: Mutex::new(None),
+            checked: Mutex::new(None),
             last_transfer: Mutex::new(0),
             map: None,
         }
@@ -194,6 +199,11 @@ impl OnlineServices {
                 }
                 Ok(Response::DownloadAbort)
             }
+            Request::OnlineChangeCheck { transfer, .. } => self.online_change_check(transfer),
+            Request::OnlineChangeDetails { transfer, from, .. } => {
+                self.online_change_details(transfer, from)
+            }
+            Request::OnlineChangeApply { transfer, .. } => self.online_change_apply(transfer),
             Request::Start { .. } => {
                 self.scheduler.start().map_err(scheduler_refusal)?;
                 Ok(Response::Start {

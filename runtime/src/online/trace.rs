@@ -60,6 +60,11 @@ impl Trace {
             .sum()
     }
 
+    /// The configuration, armed or not.
+    pub fn config(&self) -> Option<&TraceConfig> {
+        self.config.as_ref()
+    }
+
     /// The configuration, when it is configured and not armed yet.
     pub fn pending_config(&self) -> Option<&TraceConfig> {
         match self.state {

@@ -180,7 +180,7 @@ fn same_motion(old: Option<&MotionSection>, new: Option<&MotionSection>) -> bool
 
 /// A duration for people: whole milliseconds as "2 ms", else microseconds.
 fn duration_text(ns: u64) -> String {
-    if ns % 1_000_000 == 0 {
+    if ns.is_multiple_of(1_000_000) {
         format!("{} ms", ns / 1_000_000)
     } else {
         format!("{} µs", ns / 1000)
