@@ -42,6 +42,11 @@ pub(super) struct PointerSlot {
 pub(super) struct Matching {
     pub segments: Vec<Segment>,
     pub slots: Vec<PointerSlot>,
+    /// The starts of structures and instances of the same name carried member by member
+    /// (their type changed): old offset to new, sorted by the old. A pointer to such an
+    /// instance (an interface value, a reference) and the motion blocks kept for it follow
+    /// it there.
+    pub anchors: Vec<(usize, usize)>,
     pub details: Vec<ChangeDetail>,
     /// Variables whose values are carried (a whole variable of the same type counts once).
     pub carried: u32,
@@ -92,6 +97,7 @@ pub(super) fn match_variables(old: &ProgramImage, new: &ProgramImage) -> Matchin
     }
     let mut found = walk.found;
     found.segments = merged(found.segments);
+    found.anchors.sort_unstable();
     found
 }
 
@@ -186,10 +192,14 @@ impl Walk<'_> {
             (
                 TypeDef::Struct {
                     members: old_members,
+                    name: old_name,
                     ..
                 },
-                TypeDef::Struct { members, .. },
+                TypeDef::Struct { members, name, .. },
             ) => {
+                if old_name.eq_ignore_ascii_case(name) {
+                    self.found.anchors.push((old_at, new_at));
+                }
                 for member in members {
                     if member.located.is_some() {
                         continue;

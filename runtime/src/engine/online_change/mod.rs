@@ -99,6 +99,7 @@ pub struct OnlineChangePlan {
     details: Vec<ChangeDetail>,
     segments: Vec<Segment>,
     slots: Vec<PointerSlot>,
+    anchors: Vec<(usize, usize)>,
     /// For each POU index of the old image, the index of the POU of the same name in the new
     /// one (the class of an interface value).
     classes: Vec<Option<u32>>,
@@ -130,6 +131,7 @@ impl OnlineChangePlan {
         let Matching {
             segments,
             slots,
+            anchors,
             details: variable_details,
             carried,
             retained,
@@ -156,6 +158,7 @@ impl OnlineChangePlan {
             details,
             segments,
             slots,
+            anchors,
             classes,
         };
         let mut cleared = Vec::new();
@@ -214,6 +217,18 @@ impl OnlineChangePlan {
         let segment = self.segments.get(at.checked_sub(1)?)?;
         (offset + length <= segment.old + segment.length)
             .then(|| segment.new + (offset - segment.old))
+    }
+
+    /// Where the data byte at `offset` of the old program is in the new one: inside a
+    /// variable carried whole, or the start of a structure or instance carried member by
+    /// member (what a pointer to it, or a motion block kept for it, follows).
+    fn moved_byte(&self, offset: usize) -> Option<usize> {
+        self.moved_range(offset, 1).or_else(|| {
+            self.anchors
+                .binary_search_by_key(&offset, |&(old, _)| old)
+                .ok()
+                .map(|index| self.anchors[index].1)
+        })
     }
 
     /// Carries `old`'s values into `new` by the plan: copies the bytes of the variables that
@@ -306,7 +321,7 @@ impl OnlineChangePlan {
         let (old_base, new_base) = (old.regions.data, new.regions.data);
         let dropped = new.motion.carry_from(old.motion, |instance| {
             let offset = instance.checked_sub(old_base)?;
-            self.moved_range(offset, 1).map(|at| at + new_base)
+            self.moved_byte(offset).map(|at| at + new_base)
         });
         applied.motion_blocks_dropped = dropped as u32;
         applied
@@ -318,7 +333,7 @@ impl OnlineChangePlan {
         let offset = value & OFFSET_MASK;
         match region {
             POINTER_NULL => PointerFate::Kept(value),
-            POINTER_DATA => match self.moved_range(offset as usize, 1) {
+            POINTER_DATA => match self.moved_byte(offset as usize) {
                 Some(at) => PointerFate::Moved(POINTER_DATA << REGION_SHIFT | at as u64),
                 None => PointerFate::Cleared,
             },
