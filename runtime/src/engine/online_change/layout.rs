@@ -2,7 +2,7 @@
 //! bytes are copied where, which pointers are moved, and what is added, removed or
 //! reinitialised (`docs/protocol.md` §7).
 
-use std::collections::HashSet;
+use std::collections::{HashMap, HashSet};
 
 use program_image::{ProgramImage, Region, SymbolFlags, TypeDef, TypeId};
 
@@ -67,12 +67,19 @@ pub(super) fn match_variables(old: &ProgramImage, new: &ProgramImage) -> Matchin
     };
     let old_roots = roots(old);
     let new_roots = roots(new);
+    // Paths compare without case, as IEC 61131-3 names do.
+    let by_path = |image: &'_ ProgramImage, roots: &[usize]| -> HashMap<String, usize> {
+        roots
+            .iter()
+            .map(|&index| (image.symbols[index].path.to_ascii_lowercase(), index))
+            .collect()
+    };
+    let (old_by_path, new_by_path) = (by_path(old, &old_roots), by_path(new, &new_roots));
     for &index in &new_roots {
         let symbol = &new.symbols[index];
-        let previous = old_roots
-            .iter()
-            .map(|&i| &old.symbols[i])
-            .find(|s| s.path.eq_ignore_ascii_case(&symbol.path));
+        let previous = old_by_path
+            .get(&symbol.path.to_ascii_lowercase())
+            .map(|&i| &old.symbols[i]);
         match previous {
             Some(previous) if !symbol.flags.has(SymbolFlags::CONSTANT) => walk.variable(
                 previous.ty,
@@ -88,10 +95,7 @@ pub(super) fn match_variables(old: &ProgramImage, new: &ProgramImage) -> Matchin
     }
     for &index in &old_roots {
         let symbol = &old.symbols[index];
-        if !new_roots
-            .iter()
-            .any(|&i| new.symbols[i].path.eq_ignore_ascii_case(&symbol.path))
-        {
+        if !new_by_path.contains_key(&symbol.path.to_ascii_lowercase()) {
             walk.note(DetailKind::VariableRemoved, &symbol.path);
         }
     }
