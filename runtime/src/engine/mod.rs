@@ -88,6 +88,20 @@ impl Engine {
         &self.image
     }
 
+    /// The data-region offsets of the motion block instances whose commands the motion
+    /// kernel keeps (an online change follows them, or drops those whose instance is gone).
+    pub fn motion_instances(&self) -> Vec<usize> {
+        let base = self.regions.data;
+        let mut offsets: Vec<usize> = self
+            .motion
+            .instances()
+            .into_iter()
+            .filter_map(|offset| offset.checked_sub(base))
+            .collect();
+        offsets.sort_unstable();
+        offsets
+    }
+
     /// Re-initialises memory as `kind` says.
     pub fn reset(&mut self, kind: ResetKind) {
         // The axes start again powered off at rest, and the motion blocks forget their

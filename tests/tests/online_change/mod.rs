@@ -168,6 +168,10 @@ fn the_example_changes_online_with_its_axes_and_a_changed_task_interval_is_refus
         Some(Object::Pou(pou)) => pou.variables.insert(0, Variable::new("nSpare", "DINT")),
         other => panic!("FB_Conveyor: {other:?}"),
     }
+    match changed.application.object_mut("MotionControl") {
+        Some(Object::Pou(pou)) => pou.variables.insert(0, Variable::new("nSpare", "DINT")),
+        other => panic!("MotionControl: {other:?}"),
+    }
     let new = compile_project(&changed);
     let plan = OnlineChangePlan::new(&old, running.region(Region::Data), &new);
     assert_eq!(plan.refusal(), None, "{:?}", plan.details());
@@ -181,9 +185,18 @@ fn the_example_changes_online_with_its_axes_and_a_changed_task_interval_is_refus
         "{:?}",
         plan.details()
     );
+    // The motion blocks the kernel keeps are found at their instances' new places.
+    let instances = running.motion_instances();
+    assert!(!instances.is_empty());
+    assert!(instances.iter().all(|&at| plan.moved_byte(at).is_some()));
+    assert!(
+        instances.iter().any(|&at| plan.moved_byte(at) != Some(at)),
+        "the added variable moves the instances after it"
+    );
     let mut next = Engine::new(new).unwrap();
     let applied = plan.apply(running, &mut next);
     assert_eq!(applied.motion_blocks_dropped, 0);
+    assert_eq!(next.motion_instances().len(), instances.len());
     assert!(applied.carried > 0);
     run(&mut next, 20..25);
 

@@ -147,6 +147,11 @@ impl MotionState {
         dropped
     }
 
+    /// The absolute offsets of the instances whose motion blocks are kept.
+    pub(crate) fn instances(&self) -> Vec<usize> {
+        self.instances.keys().copied().collect()
+    }
+
     /// The kernel's axis for `nAxisId`.
     pub(crate) fn axis(&self, id: usize) -> Option<AxisId> {
         self.axes.get(id).map(|link| link.id)

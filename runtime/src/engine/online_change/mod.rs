@@ -222,7 +222,7 @@ impl OnlineChangePlan {
     /// Where the data byte at `offset` of the old program is in the new one: inside a
     /// variable carried whole, or the start of a structure or instance carried member by
     /// member (what a pointer to it, or a motion block kept for it, follows).
-    fn moved_byte(&self, offset: usize) -> Option<usize> {
+    pub fn moved_byte(&self, offset: usize) -> Option<usize> {
         self.moved_range(offset, 1).or_else(|| {
             self.anchors
                 .binary_search_by_key(&offset, |&(old, _)| old)

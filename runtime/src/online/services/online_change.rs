@@ -30,6 +30,7 @@ struct Running {
     data: Vec<u8>,
     forces: Vec<Place>,
     trace: Option<Vec<Place>>,
+    motion_instances: Vec<usize>,
     identity: Option<ImageHash>,
 }
 
@@ -61,6 +62,7 @@ impl OnlineServices {
                     places.push(config.trigger_place);
                     places
                 }),
+                motion_instances: memory.engine.motion_instances(),
                 identity,
             }))
         })?;
@@ -92,6 +94,20 @@ impl OnlineServices {
             })
         {
             plan.add_detail(DetailKind::TraceRemoved, "trace".to_owned());
+        }
+        for offset in &running.motion_instances {
+            if plan.moved_byte(*offset).is_none() {
+                let place = Place {
+                    region: 0,
+                    offset: u32::try_from(*offset).unwrap_or(u32::MAX),
+                    bit: None,
+                    size: 1,
+                };
+                plan.add_detail(
+                    DetailKind::MotionBlockDropped,
+                    place_name(&running.image, &place),
+                );
+            }
         }
         let summary = plan.summary();
         let (possible, reason, why) = match plan.refusal() {
