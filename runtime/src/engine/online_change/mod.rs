@@ -293,19 +293,13 @@ impl OnlineChangePlan {
                 }
             }
         }
-        let copies: Vec<(usize, Vec<u8>)> = self
-            .segments
-            .iter()
-            .filter_map(|s| {
-                old_data
-                    .get(s.old..s.old + s.length)
-                    .map(|bytes| (s.new, bytes.to_vec()))
-            })
-            .collect();
         let data = new.region_mut(Region::Data);
-        for (at, bytes) in &copies {
-            if let Some(place) = data.get_mut(*at..*at + bytes.len()) {
-                place.copy_from_slice(bytes);
+        for segment in &self.segments {
+            if let (Some(from), Some(to)) = (
+                old_data.get(segment.old..segment.old + segment.length),
+                data.get_mut(segment.new..segment.new + segment.length),
+            ) {
+                to.copy_from_slice(from);
             }
         }
         for (at, bytes) in &writes {
