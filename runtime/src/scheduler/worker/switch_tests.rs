@@ -88,3 +88,60 @@ fn the_new_code_runs_from_the_next_cycle_with_the_count_carried_and_no_cycle_mis
         Err(SchedulerError::ProgramChanged)
     ));
 }
+
+/// The counting image with a variable `GVL.held` at `held` (which no code uses) and, when
+/// `gone`, a variable `GVL.gone` at 20.
+fn with_held(held: u32, gone: bool) -> ProgramImage {
+    let mut image = counting(1);
+    image.layout.data_size = 32;
+    let symbol = |path: &str, offset: u32| Symbol {
+        path: path.to_owned(),
+        ty: 1,
+        region: Region::Data,
+        offset,
+        bit: None,
+        flags: SymbolFlags(SymbolFlags::GLOBAL),
+    };
+    image.symbols.push(symbol("GVL.held", held));
+    if gone {
+        image.symbols.push(symbol("GVL.gone", 20));
+    }
+    image
+}
+
+#[test]
+fn a_force_follows_its_variable_and_one_on_a_removed_variable_is_released() {
+    let areas = Arc::new(Mutex::new(LocatedAreas::default()));
+    let scheduler = Scheduler::spawn(areas, SchedulerOptions::default()).unwrap();
+    let (old, new) = (with_held(16, true), with_held(24, false));
+    scheduler.load(old.clone()).unwrap();
+    let place = |offset: u32| online_protocol::Place {
+        region: 0,
+        offset,
+        bit: None,
+        size: 4,
+    };
+    scheduler
+        .between(move |between| {
+            between.forces.set(place(16), 99_i32.to_le_bytes().to_vec());
+            between.forces.set(place(20), 5_i32.to_le_bytes().to_vec());
+        })
+        .unwrap();
+    let plan = Arc::new(OnlineChangePlan::new(&old, &[0; 32], &new));
+    let engine = Engine::new(new.clone()).unwrap();
+    let report = scheduler
+        .online_change(engine, plan, old.identity(), new.identity())
+        .unwrap();
+    assert_eq!(report.forces_released, 1);
+    let (forces, held) = scheduler
+        .between(|between| {
+            let held = between
+                .memory
+                .as_ref()
+                .map_or(0, |memory| dint(memory.engine.region(Region::Data), 24));
+            (between.forces.entries().to_vec(), held)
+        })
+        .unwrap();
+    assert_eq!(forces, [(place(24), 99_i32.to_le_bytes().to_vec())]);
+    assert_eq!(held, 99);
+}
