@@ -12,8 +12,11 @@ use super::{ChangeDetail, DetailKind};
 /// Bytes of the old data region copied unchanged to the new one.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(super) struct Segment {
+    /// Where the bytes are in the old data region.
     pub old: usize,
+    /// Where they go in the new one.
     pub new: usize,
+    /// How many bytes.
     pub length: usize,
 }
 
@@ -25,28 +28,38 @@ pub(super) enum SlotKind {
     /// An interface value: the instance's address, then its function block's POU index.
     Interface,
     /// An open array's descriptor: the address, then `rank` pairs of bounds, copied as they are.
-    OpenArray { rank: usize },
+    OpenArray {
+        /// The number of dimensions.
+        rank: usize,
+    },
 }
 
 /// A pointer-like variable kept by path: its address is moved at the switch.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub(super) struct PointerSlot {
+    /// Its offset in the old data region.
     pub old: usize,
+    /// Its offset in the new one.
     pub new: usize,
+    /// What it holds besides the address.
     pub kind: SlotKind,
+    /// Its path, for the details.
     pub path: String,
 }
 
 /// What the walk over the two programs' variables found.
 #[derive(Debug, Default)]
 pub(super) struct Matching {
+    /// The bytes copied, sorted by their old offset, adjacent ones joined.
     pub segments: Vec<Segment>,
+    /// The pointer-like variables kept.
     pub slots: Vec<PointerSlot>,
     /// The starts of structures and instances of the same name carried member by member
     /// (their type changed): old offset to new, sorted by the old. A pointer to such an
     /// instance (an interface value, a reference) and the motion blocks kept for it follow
     /// it there.
     pub anchors: Vec<(usize, usize)>,
+    /// Variables added, removed and reinitialised.
     pub details: Vec<ChangeDetail>,
     /// Variables whose values are carried (a whole variable of the same type counts once).
     pub carried: u32,
