@@ -263,6 +263,33 @@ mod tests {
     }
 
     #[test]
+    fn after_an_online_change_the_trace_follows_its_places_or_is_removed() {
+        let mut trace = Trace::default();
+        trace.configure(config(TriggerKind::Rising, 4, 50, 1));
+        assert!(trace.arm());
+        run(&mut trace, 2, 9, 9);
+        let moved = |place: Place| {
+            Some(Place {
+                offset: place.offset + 100,
+                ..place
+            })
+        };
+        assert!(!trace.follow(moved));
+        let config = trace.config().unwrap();
+        assert_eq!(
+            (config.places[0].offset, config.trigger_place.offset),
+            (100, 101)
+        );
+        // Still armed, with the samples taken before the change.
+        assert_eq!(trace.status().0, TraceState::Armed);
+        assert_eq!(cycles(&trace), [1, 2]);
+
+        let trigger_gone = |place: Place| (place.offset != 101).then_some(place);
+        assert!(trace.follow(trigger_gone));
+        assert_eq!(trace.status().0, TraceState::Unconfigured);
+    }
+
+    #[test]
     fn without_a_trigger_every_nth_cycle_is_sampled_until_complete() {
         let mut trace = Trace::default();
         trace.configure(config(TriggerKind::None, 4, 50, 3));
