@@ -173,6 +173,8 @@ impl OnlineServices {
                 let mut transfer = Transfer::begin(*last, size, hash, Instant::now())?;
                 transfer.owner = connection;
                 *lock(&self.transfer) = Some(transfer);
+                // A checked change belongs to the transfer it checked.
+                *lock(&self.checked) = None;
                 Ok(Response::DownloadBegin {
                     transfer: *last,
                     chunk_size: CHUNK_BYTES,
@@ -196,6 +198,7 @@ impl OnlineServices {
                 let mut current = lock(&self.transfer);
                 if current.as_ref().is_some_and(|active| active.id == transfer) {
                     *current = None;
+                    *lock(&self.checked) = None;
                 }
                 Ok(Response::DownloadAbort)
             }
@@ -382,6 +385,7 @@ impl OnlineServices {
             current_transfer(&mut current, transfer)?;
             current.take()
         };
+        *lock(&self.checked) = None;
         let image = active
             .ok_or_else(|| not_now("no download is in progress"))?
             .finish()?;
