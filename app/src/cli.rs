@@ -87,8 +87,16 @@ pub enum Command {
         /// The project folder, or a `.st` source file.
         project: PathBuf,
         /// Start the program once it is loaded.
-        #[arg(long)]
+        #[arg(long, conflicts_with = "online_change")]
         start: bool,
+        /// Change the running program between two cycles without stopping its tasks, the
+        /// variables keeping their values by path and type (docs/debugging.md §6); refused,
+        /// with the reason, when the change does not allow it.
+        #[arg(long)]
+        online_change: bool,
+        /// With --online-change: check and list what would change, and change nothing.
+        #[arg(long, requires = "online_change")]
+        dry_run: bool,
         /// The runtime to talk to.
         #[command(flatten)]
         target: Target,
@@ -221,8 +229,16 @@ pub fn run(command: Command) -> ExitCode {
         Command::Status { target } => online_cli::run(&target, OnlineCommand::Status),
         Command::Download {
             project,
+            online_change: true,
+            dry_run,
+            target,
+            ..
+        } => online_cli::run(&target, OnlineCommand::OnlineChange { project, dry_run }),
+        Command::Download {
+            project,
             start,
             target,
+            ..
         } => online_cli::run(&target, OnlineCommand::Download { project, start }),
         Command::Start { target } => online_cli::run(&target, OnlineCommand::Start),
         Command::Stop { target } => online_cli::run(&target, OnlineCommand::Stop),

@@ -14,6 +14,7 @@ mod cam_cli;
 pub mod cli;
 mod literal_value;
 pub mod modbus_devices;
+pub mod online_change_cli;
 pub mod online_cli;
 pub mod studio;
 pub mod value_text;

@@ -66,6 +66,13 @@ pub enum OnlineCommand {
         /// Start the program once loaded.
         start: bool,
     },
+    /// Compile a project or `.st` file and change the running program to it online.
+    OnlineChange {
+        /// The project folder or source file.
+        project: std::path::PathBuf,
+        /// Check and list only.
+        dry_run: bool,
+    },
     /// Start the program.
     Start,
     /// Stop the program.
@@ -146,6 +153,9 @@ pub fn run(target: &Target, command: OnlineCommand) -> anyhow::Result<()> {
                 }
             }
             OnlineCommand::Download { project, start } => download(&mut client, &identity, &project, start).await?,
+            OnlineCommand::OnlineChange { project, dry_run } => {
+                crate::online_change_cli::online_change(&mut client, &project, dry_run).await?;
+            }
             OnlineCommand::Start => println!("{}", client.start().await?.describe()),
             OnlineCommand::Stop => println!("{}", client.stop().await?.describe()),
             OnlineCommand::Reset(kind) => println!("{}", client.reset(kind).await?.describe()),

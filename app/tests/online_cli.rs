@@ -326,3 +326,151 @@ fn a_missing_runtime_says_what_to_check() {
     let refused = rivet(&["status", "--target", "127.0.0.1:1"]);
     assert!(String::from_utf8_lossy(&refused.stderr).contains("connection refused"));
 }
+
+/// A project folder of one program `Counter`, declaring `variables` (`name: TYPE`), running
+/// `body` every `interval_us` in task MainTask.
+fn write_counter_project(dir: &Path, interval_us: u32, variables: &[(&str, &str)], body: &str) {
+    std::fs::create_dir_all(dir.join("application")).unwrap();
+    std::fs::write(
+        dir.join("rivet.toml"),
+        format!(
+            "format_version = 3\nname = \"Counter\"\napplication = [\"Counter.pou.toml\"]\n\
+             controller = {{ name = \"PLC\", host = \"127.0.0.1\", port = 5020 }}\n\n\
+             [[task]]\nname = \"MainTask\"\n\
+             kind = {{ type = \"cyclic\", interval_us = {interval_us} }}\n\
+             priority = 1\nprograms = [\"Counter\"]\n"
+        ),
+    )
+    .unwrap();
+    let mut pou = "kind = \"program\"\nbody = { language = \"st\" }\n".to_owned();
+    for (name, ty) in variables {
+        pou.push_str(&format!(
+            "\n[[variable]]\nname = \"{name}\"\nsection = \"VAR\"\ntype = \"{ty}\"\n"
+        ));
+    }
+    std::fs::write(dir.join("application/Counter.pou.toml"), pou).unwrap();
+    std::fs::write(dir.join("application/Counter.st"), body).unwrap();
+}
+
+/// The integer after `name = ` in `rivet read`'s output.
+fn value_of(output: &str, name: &str) -> i64 {
+    output
+        .lines()
+        .find_map(|line| line.strip_prefix(&format!("{name} = ")))
+        .unwrap_or_else(|| panic!("no {name} in {output}"))
+        .trim()
+        .parse()
+        .unwrap()
+}
+
+#[test]
+fn an_online_change_carries_the_counter_misses_no_cycle_and_a_task_change_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let project = dir.path().join("counter");
+    let project_arg = project.to_str().unwrap();
+    write_counter_project(
+        &project,
+        2000,
+        &[("count", "DINT")],
+        "count := count + 1;\n",
+    );
+    let runtime = start_runtime(&dir.path().join("data"), None);
+    let target = runtime.target.as_str();
+    ok(&["download", project_arg, "--start", "--target", target]);
+    std::thread::sleep(std::time::Duration::from_millis(100));
+
+    // A variable added and an expression changed: the new code counts by ten, and counts its
+    // own cycles in the new variable.
+    write_counter_project(
+        &project,
+        2000,
+        &[("count", "DINT"), ("cycles", "DINT")],
+        "count := count + 10;\ncycles := cycles + 1;\n",
+    );
+    let dry = ok(&[
+        "download",
+        project_arg,
+        "--online-change",
+        "--dry-run",
+        "--target",
+        target,
+    ]);
+    assert!(
+        dry.contains("online change possible: 1 POU(s) changed, 1 variable(s) added"),
+        "{dry}"
+    );
+    assert!(
+        dry.contains("variable added (starts from its initial value): Counter.cycles"),
+        "{dry}"
+    );
+    assert!(dry.contains("nothing changed"), "{dry}");
+    let changed = ok(&[
+        "download",
+        project_arg,
+        "--online-change",
+        "--target",
+        target,
+    ]);
+    let switched_after: i64 = changed
+        .split("after cycle ")
+        .nth(1)
+        .and_then(|rest| rest.split_whitespace().next())
+        .and_then(|cycles| cycles.parse().ok())
+        .unwrap_or_else(|| panic!("no cycle in {changed}"));
+    assert!(switched_after > 0, "{changed}");
+    std::thread::sleep(std::time::Duration::from_millis(100));
+    // One snapshot of both: the old code counted every cycle before the switch by one (the
+    // value carried over), the new code every cycle since by ten; no cycle was missed.
+    let read = ok(&[
+        "read",
+        "Counter.count",
+        "Counter.cycles",
+        "--target",
+        target,
+    ]);
+    let (count, cycles) = (
+        value_of(&read, "Counter.count"),
+        value_of(&read, "Counter.cycles"),
+    );
+    assert!(cycles > 0, "{read}");
+    assert_eq!(count, switched_after + 10 * cycles, "{changed}\n{read}");
+
+    // A task configuration change is refused with its reason, and nothing changes.
+    write_counter_project(
+        &project,
+        1000,
+        &[("count", "DINT"), ("cycles", "DINT")],
+        "count := count + 10;\ncycles := cycles + 1;\n",
+    );
+    let refused = rivet(&[
+        "download",
+        project_arg,
+        "--online-change",
+        "--target",
+        target,
+    ]);
+    assert!(!refused.status.success());
+    let said = String::from_utf8_lossy(&refused.stderr);
+    assert!(
+        said.contains(
+            "an online change is impossible: task 'MainTask': interval changed from 2 ms to 1 ms"
+        ) && said.contains("download without --online-change"),
+        "{said}"
+    );
+    let read = ok(&[
+        "read",
+        "Counter.count",
+        "Counter.cycles",
+        "--target",
+        target,
+    ]);
+    let (count, cycles) = (
+        value_of(&read, "Counter.count"),
+        value_of(&read, "Counter.cycles"),
+    );
+    assert_eq!(
+        count,
+        switched_after + 10 * cycles,
+        "the changed program still runs: {read}"
+    );
+}

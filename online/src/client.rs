@@ -18,6 +18,8 @@ use tokio_modbus::{Request as ModbusRequest, Response as ModbusResponse};
 
 use crate::error::OnlineError;
 
+mod online_change;
+
 /// How long one request may take before the client gives up.
 pub const REQUEST_TIMEOUT: Duration = Duration::from_secs(5);
 
@@ -199,8 +201,20 @@ impl Client {
         &mut self,
         image: &[u8],
         start: bool,
-        mut progress: impl FnMut(usize, usize),
+        progress: impl FnMut(usize, usize),
     ) -> Result<bool, OnlineError> {
+        let transfer = self.transfer(image, progress).await?;
+        self.commit(transfer, start).await
+    }
+
+    /// `DOWNLOAD_BEGIN` and `DOWNLOAD_CHUNK`s: transfers `image` without loading it, telling
+    /// `progress` the bytes sent of all; returns the transfer's number, for
+    /// [`Client::commit`] or an online change ([`Client::online_change_check`]).
+    pub async fn transfer(
+        &mut self,
+        image: &[u8],
+        mut progress: impl FnMut(usize, usize),
+    ) -> Result<u16, OnlineError> {
         let begin = Request::DownloadBegin {
             token: self.token,
             size: image.len() as u32,
@@ -228,6 +242,12 @@ impl Client {
             offset = end;
             progress(offset, image.len());
         }
+        Ok(transfer)
+    }
+
+    /// `DOWNLOAD_COMMIT` of a transfer: the image replaces the running program (started when
+    /// `start`); returns whether RETAIN and PERSISTENT values were carried over.
+    pub async fn commit(&mut self, transfer: u16, start: bool) -> Result<bool, OnlineError> {
         let commit = Request::DownloadCommit {
             token: self.token,
             transfer,

@@ -17,8 +17,8 @@ pub mod session;
 pub use client::{Client, REQUEST_TIMEOUT, Sample, TraceConfig, Trigger};
 pub use error::OnlineError;
 pub use online_protocol::{
-    Enumeration, Fault, Identity, Place, ResetKind as Reset, Resolved, Snapshot, TargetState,
-    TaskInfo, TraceState, TraceStatus, Value,
+    ChangeApplied, ChangeCheck, ChangeDetailEntry, Enumeration, Fault, Identity, Place,
+    ResetKind as Reset, Resolved, Snapshot, TargetState, TaskInfo, TraceState, TraceStatus, Value,
 };
 // The string and enumeration type tags of a resolved variable, so callers tell strings from elementary values
 // without writing the protocol's numbers by hand or depending on the protocol crate.

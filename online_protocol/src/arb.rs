@@ -122,6 +122,19 @@ pub fn request() -> impl Strategy<Value = Request> {
         (token(), any::<u16>())
             .prop_map(|(token, transfer)| Request::DownloadAbort { token, transfer })
             .boxed(),
+        (token(), any::<u16>())
+            .prop_map(|(token, transfer)| Request::OnlineChangeCheck { token, transfer })
+            .boxed(),
+        (token(), any::<u16>(), any::<u16>())
+            .prop_map(|(token, transfer, from)| Request::OnlineChangeDetails {
+                token,
+                transfer,
+                from,
+            })
+            .boxed(),
+        (token(), any::<u16>())
+            .prop_map(|(token, transfer)| Request::OnlineChangeApply { token, transfer })
+            .boxed(),
         token().prop_map(|token| Request::Start { token }).boxed(),
         token().prop_map(|token| Request::Stop { token }).boxed(),
         (token(), select(ResetKind::ALL.to_vec()))
@@ -192,6 +205,19 @@ pub fn request_of(service: Service) -> Request {
             start: false,
         },
         Service::DownloadAbort => Request::DownloadAbort {
+            token: 0,
+            transfer: 1,
+        },
+        Service::OnlineChangeCheck => Request::OnlineChangeCheck {
+            token: 0,
+            transfer: 1,
+        },
+        Service::OnlineChangeDetails => Request::OnlineChangeDetails {
+            token: 0,
+            transfer: 1,
+            from: 0,
+        },
+        Service::OnlineChangeApply => Request::OnlineChangeApply {
             token: 0,
             transfer: 1,
         },
@@ -363,6 +389,70 @@ pub fn response() -> impl Strategy<Value = (Request, Response)> {
             .prop_map(|retained| Response::DownloadCommit { retained })
             .boxed(),
         Just(Response::DownloadAbort).boxed(),
+        (
+            (
+                any::<bool>(),
+                0..7u8,
+                any::<u16>(),
+                any::<u16>(),
+                any::<u16>(),
+            ),
+            (any::<u32>(), any::<u32>(), any::<u32>(), any::<u32>()),
+            (
+                any::<u32>(),
+                any::<u32>(),
+                any::<u16>(),
+                any::<u16>(),
+                text(),
+            ),
+        )
+            .prop_map(
+                |(
+                    (possible, reason, pous_changed, pous_added, pous_removed),
+                    (carried, added, removed, reinitialised),
+                    (pointers_moved, pointers_cleared, forces_released, details, why),
+                )| {
+                    Response::OnlineChangeCheck(crate::ChangeCheck {
+                        possible,
+                        reason,
+                        pous_changed,
+                        pous_added,
+                        pous_removed,
+                        carried,
+                        added,
+                        removed,
+                        reinitialised,
+                        pointers_moved,
+                        pointers_cleared,
+                        forces_released,
+                        details,
+                        why,
+                    })
+                },
+            )
+            .boxed(),
+        (
+            any::<u16>(),
+            vec((0..=crate::MAX_DETAIL_KIND, text()), 0..4),
+        )
+            .prop_map(|(total, details)| Response::OnlineChangeDetails {
+                total,
+                details: details
+                    .into_iter()
+                    .map(|(kind, name)| crate::ChangeDetailEntry { kind, name })
+                    .collect(),
+            })
+            .boxed(),
+        (any::<u64>(), any::<u32>(), any::<bool>(), any::<u32>())
+            .prop_map(|(cycles, carried, retained, switch_us)| {
+                Response::OnlineChangeApply(crate::ChangeApplied {
+                    cycles,
+                    carried,
+                    retained,
+                    switch_us,
+                })
+            })
+            .boxed(),
         target_state()
             .prop_map(|state| Response::Start { state })
             .boxed(),

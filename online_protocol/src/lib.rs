@@ -17,6 +17,7 @@ mod debug_response;
 mod debug_types;
 mod error;
 pub mod framing;
+mod online_change;
 mod place;
 mod reader;
 mod request;
@@ -45,6 +46,7 @@ pub use debug_types::{
 };
 pub use error::DecodeError;
 pub use framing::*;
+pub use online_change::{ChangeApplied, ChangeCheck, ChangeDetailEntry, MAX_DETAIL_KIND};
 pub use place::Place;
 pub use reader::Reader;
 pub use request::{Request, ResetKind, TraceConfig, TriggerKind};

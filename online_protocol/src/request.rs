@@ -102,6 +102,19 @@ pub enum Request {
         token: u128,
         transfer: u16,
     },
+    OnlineChangeCheck {
+        token: u128,
+        transfer: u16,
+    },
+    OnlineChangeDetails {
+        token: u128,
+        transfer: u16,
+        from: u16,
+    },
+    OnlineChangeApply {
+        token: u128,
+        transfer: u16,
+    },
     Start {
         token: u128,
     },
@@ -172,6 +185,9 @@ impl Request {
             DownloadChunk { .. } => Service::DownloadChunk,
             DownloadCommit { .. } => Service::DownloadCommit,
             DownloadAbort { .. } => Service::DownloadAbort,
+            OnlineChangeCheck { .. } => Service::OnlineChangeCheck,
+            OnlineChangeDetails { .. } => Service::OnlineChangeDetails,
+            OnlineChangeApply { .. } => Service::OnlineChangeApply,
             Start { .. } => Service::Start,
             Stop { .. } => Service::Stop,
             Reset { .. } => Service::Reset,
@@ -201,6 +217,9 @@ impl Request {
             | DownloadChunk { token, .. }
             | DownloadCommit { token, .. }
             | DownloadAbort { token, .. }
+            | OnlineChangeCheck { token, .. }
+            | OnlineChangeDetails { token, .. }
+            | OnlineChangeApply { token, .. }
             | Start { token }
             | Stop { token }
             | Reset { token, .. }
@@ -258,7 +277,13 @@ impl Request {
                 out.extend_from_slice(&transfer.to_le_bytes());
                 out.push(u8::from(*start));
             }
-            DownloadAbort { transfer, .. } => out.extend_from_slice(&transfer.to_le_bytes()),
+            DownloadAbort { transfer, .. }
+            | OnlineChangeCheck { transfer, .. }
+            | OnlineChangeApply { transfer, .. } => out.extend_from_slice(&transfer.to_le_bytes()),
+            OnlineChangeDetails { transfer, from, .. } => {
+                out.extend_from_slice(&transfer.to_le_bytes());
+                out.extend_from_slice(&from.to_le_bytes());
+            }
             Start { .. } | Stop { .. } | TraceArm { .. } | TraceStatus | Tasks => {}
             Reset { kind, .. } => out.push(*kind as u8),
             Resolve { path } => put_str8(&mut out, path),
@@ -322,6 +347,19 @@ impl Request {
                 start: r.flag("start")?,
             },
             Service::DownloadAbort => Request::DownloadAbort {
+                token: r.u128("token")?,
+                transfer: r.u16("transfer")?,
+            },
+            Service::OnlineChangeCheck => Request::OnlineChangeCheck {
+                token: r.u128("token")?,
+                transfer: r.u16("transfer")?,
+            },
+            Service::OnlineChangeDetails => Request::OnlineChangeDetails {
+                token: r.u128("token")?,
+                transfer: r.u16("transfer")?,
+                from: r.u16("from")?,
+            },
+            Service::OnlineChangeApply => Request::OnlineChangeApply {
                 token: r.u128("token")?,
                 transfer: r.u16("transfer")?,
             },

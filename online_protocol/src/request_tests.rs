@@ -43,6 +43,19 @@ fn every_request() -> Vec<Request> {
             token: 7,
             transfer: 2,
         },
+        Request::OnlineChangeCheck {
+            token: 7,
+            transfer: 2,
+        },
+        Request::OnlineChangeDetails {
+            token: 7,
+            transfer: 2,
+            from: 10,
+        },
+        Request::OnlineChangeApply {
+            token: 7,
+            transfer: 2,
+        },
         Request::Start { token: 1 },
         Request::Stop { token: 1 },
         Request::Reset {
@@ -99,7 +112,11 @@ fn every_request() -> Vec<Request> {
 
 /// The `TRACE_CONFIGURE` of [`every_request`].
 fn configure() -> Vec<u8> {
-    every_request()[16].encode()
+    every_request()
+        .into_iter()
+        .find(|request| request.service() == Service::TraceConfigure)
+        .map(|request| request.encode())
+        .unwrap_or_default()
 }
 
 #[test]

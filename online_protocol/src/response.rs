@@ -10,6 +10,7 @@ use crate::debug_response::DebugResponse;
 use crate::debug_types::DebugStatus;
 use crate::error::DecodeError;
 use crate::framing::{NO_TRIGGER_SAMPLE, SAMPLE_HEADER_BYTES};
+use crate::online_change::{self, ChangeApplied, ChangeCheck, ChangeDetailEntry};
 use crate::place::Place;
 use crate::reader::Reader;
 use crate::request::Request;
@@ -52,6 +53,17 @@ pub enum Response {
     },
     /// `DOWNLOAD_ABORT`: the transfer dropped.
     DownloadAbort,
+    /// `ONLINE_CHANGE_CHECK`: the verdict and the counts (§7).
+    OnlineChangeCheck(ChangeCheck),
+    /// `ONLINE_CHANGE_DETAILS`: the details from the request's index on (§7).
+    OnlineChangeDetails {
+        /// How many details the check found.
+        total: u16,
+        /// As many details as fit one response.
+        details: Vec<ChangeDetailEntry>,
+    },
+    /// `ONLINE_CHANGE_APPLY`: what the switch did (§7).
+    OnlineChangeApply(ChangeApplied),
     /// `START`: the state after starting.
     Start {
         /// The target's state.
@@ -140,6 +152,9 @@ impl Response {
             DownloadChunk { .. } => Service::DownloadChunk,
             DownloadCommit { .. } => Service::DownloadCommit,
             DownloadAbort => Service::DownloadAbort,
+            OnlineChangeCheck(_) => Service::OnlineChangeCheck,
+            OnlineChangeDetails { .. } => Service::OnlineChangeDetails,
+            OnlineChangeApply(_) => Service::OnlineChangeApply,
             Start { .. } => Service::Start,
             Stop { .. } => Service::Stop,
             Reset { .. } => Service::Reset,
@@ -187,6 +202,11 @@ impl Response {
             }
             DownloadChunk { received } => out.extend_from_slice(&received.to_le_bytes()),
             DownloadCommit { retained } => out.push(u8::from(*retained)),
+            OnlineChangeCheck(check) => check.encode(&mut out),
+            OnlineChangeDetails { total, details } => {
+                online_change::put_details(&mut out, *total, details);
+            }
+            OnlineChangeApply(applied) => applied.encode(&mut out),
             Logout | DownloadAbort | Write | Force | Unforce | TraceArm => {}
             Start { state } | Stop { state } | Reset { state } => out.push(*state as u8),
             Resolve(resolved) => {
@@ -339,6 +359,12 @@ fn decode_answer(
             retained: r.u8("retained")? != 0,
         },
         Service::DownloadAbort => Response::DownloadAbort,
+        Service::OnlineChangeCheck => Response::OnlineChangeCheck(ChangeCheck::decode(r)?),
+        Service::OnlineChangeDetails => {
+            let (total, details) = online_change::details(r)?;
+            Response::OnlineChangeDetails { total, details }
+        }
+        Service::OnlineChangeApply => Response::OnlineChangeApply(ChangeApplied::decode(r)?),
         Service::Start => Response::Start {
             state: target_state(r)?,
         },

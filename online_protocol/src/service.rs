@@ -18,6 +18,12 @@ pub enum Service {
     DownloadCommit = 0x12,
     /// `DOWNLOAD_ABORT`: drop the transfer.
     DownloadAbort = 0x13,
+    /// `ONLINE_CHANGE_CHECK`: whether the transferred image can take over online (§7).
+    OnlineChangeCheck = 0x14,
+    /// `ONLINE_CHANGE_DETAILS`: what the check found (§7).
+    OnlineChangeDetails = 0x15,
+    /// `ONLINE_CHANGE_APPLY`: the switch to the checked image between two cycles (§7).
+    OnlineChangeApply = 0x16,
     /// `START`: run the program.
     Start = 0x20,
     /// `STOP`: stop the program.
@@ -86,7 +92,7 @@ pub enum Service {
 
 impl Service {
     /// Every service, in the order of their numbers.
-    pub const ALL: [Service; 39] = [
+    pub const ALL: [Service; 42] = [
         Service::Identify,
         Service::Login,
         Service::Logout,
@@ -94,6 +100,9 @@ impl Service {
         Service::DownloadChunk,
         Service::DownloadCommit,
         Service::DownloadAbort,
+        Service::OnlineChangeCheck,
+        Service::OnlineChangeDetails,
+        Service::OnlineChangeApply,
         Service::Start,
         Service::Stop,
         Service::Reset,

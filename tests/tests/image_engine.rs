@@ -11,6 +11,8 @@ use proptest::prelude::*;
 use runtime::engine::Engine;
 use sha2::{Digest, Sha256};
 
+mod online_change;
+
 /// Programs that use most instructions: calls, blocks, timers, arrays, strings, loops, CASE.
 const PROGRAMS: [&str; 3] = [
     "

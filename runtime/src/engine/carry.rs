@@ -49,7 +49,7 @@ pub fn carry_retained(old: &Engine, new: &mut Engine) -> usize {
 
 /// Whether two types of two images lay out the same values. Pointers never match: their
 /// values are addresses of the old program.
-fn same_type(
+pub(super) fn same_type(
     a_image: &ProgramImage,
     a: TypeId,
     b_image: &ProgramImage,

@@ -13,6 +13,7 @@ mod fault;
 mod lower;
 mod memory;
 mod native;
+mod online_change;
 mod scalar;
 mod strings;
 mod view;
@@ -23,6 +24,9 @@ pub use carry::carry_retained;
 pub use fault::{FaultKind, FaultRecord};
 pub use lower::LowerError;
 pub use native::MotionLoadError;
+pub use online_change::{
+    AppliedChange, ChangeDetail, ChangeRefusal, ChangeSummary, DetailKind, OnlineChangePlan,
+};
 pub use view::{EngineView, Preempt, Preemption};
 
 pub(crate) use exec::NATIVE_STACK_BUDGET;
@@ -84,6 +88,20 @@ impl Engine {
     /// The image being run.
     pub fn image(&self) -> &ProgramImage {
         &self.image
+    }
+
+    /// The data-region offsets of the motion block instances whose commands the motion
+    /// kernel keeps (an online change follows them, or drops those whose instance is gone).
+    pub fn motion_instances(&self) -> Vec<usize> {
+        let base = self.regions.data;
+        let mut offsets: Vec<usize> = self
+            .motion
+            .instances()
+            .into_iter()
+            .filter_map(|offset| offset.checked_sub(base))
+            .collect();
+        offsets.sort_unstable();
+        offsets
     }
 
     /// Re-initialises memory as `kind` says.

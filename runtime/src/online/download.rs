@@ -9,6 +9,10 @@ use online_protocol::{CHUNK_BYTES, Refusal, Status};
 /// How long a transfer lives without a chunk.
 pub const TRANSFER_TIMEOUT: Duration = Duration::from_secs(30);
 
+/// How long a transfer lives after an online change check, so the user can read what will
+/// change before applying it (`docs/protocol.md` §7).
+pub const CHECKED_TRANSFER_TIMEOUT: Duration = Duration::from_secs(300);
+
 /// One transfer: lives from `DOWNLOAD_BEGIN` until its commit, its abort, a new begin or
 /// [`TRANSFER_TIMEOUT`] without a chunk; never saved.
 #[derive(Debug)]
@@ -17,6 +21,9 @@ pub struct Transfer {
     pub id: u16,
     /// The Modbus connection that began it, whose closing drops it; `None` outside a server.
     pub owner: Option<u64>,
+    /// Whether an online change check found the image valid: it then lives
+    /// [`CHECKED_TRANSFER_TIMEOUT`].
+    pub checked: bool,
     hash: ImageHash,
     bytes: Vec<u8>,
     /// Whether each byte has arrived.
@@ -36,6 +43,7 @@ impl Transfer {
         Ok(Self {
             id,
             owner: None,
+            checked: false,
             hash,
             bytes: vec![0; size as usize],
             arrived: vec![false; size as usize],
@@ -46,7 +54,12 @@ impl Transfer {
 
     /// Whether the transfer has gone [`TRANSFER_TIMEOUT`] without a chunk at `now`.
     pub fn expired(&self, now: Instant) -> bool {
-        now.saturating_duration_since(self.last_chunk) > TRANSFER_TIMEOUT
+        let timeout = if self.checked {
+            CHECKED_TRANSFER_TIMEOUT
+        } else {
+            TRANSFER_TIMEOUT
+        };
+        now.saturating_duration_since(self.last_chunk) > timeout
     }
 
     /// Writes `chunk` at `offset` and returns how many distinct bytes have arrived.
@@ -78,6 +91,12 @@ impl Transfer {
 
     /// The image, if every byte arrived, the bytes hash to the announced hash and they decode.
     pub fn finish(self) -> Result<ProgramImage, Refusal> {
+        self.image()
+    }
+
+    /// The image, checked as [`Transfer::finish`] checks it, keeping the transfer (an online
+    /// change check leaves it open for the apply or a commit).
+    pub fn image(&self) -> Result<ProgramImage, Refusal> {
         let refuse = |message: String| Refusal {
             status: Status::ImageRefused,
             message,

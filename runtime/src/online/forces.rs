@@ -34,6 +34,24 @@ impl Forces {
         self.entries.clear();
     }
 
+    /// Moves every force to its variable's place after an online change, as `moved` gives
+    /// it, and releases those whose variable is gone or changed type (`moved` gives `None`);
+    /// returns the released places.
+    pub fn follow(&mut self, moved: impl Fn(Place) -> Option<Place>) -> Vec<Place> {
+        let mut released = Vec::new();
+        self.entries.retain_mut(|(place, _)| match moved(*place) {
+            Some(new_place) => {
+                *place = new_place;
+                true
+            }
+            None => {
+                released.push(*place);
+                false
+            }
+        });
+        released
+    }
+
     /// Whether `place` is forced (as exactly that place).
     pub fn is_forced(&self, place: Place) -> bool {
         self.entries.iter().any(|(forced, _)| *forced == place)

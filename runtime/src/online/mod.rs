@@ -19,7 +19,7 @@ mod services;
 mod trace;
 mod wrong_passwords;
 
-pub use download::{TRANSFER_TIMEOUT, Transfer};
+pub use download::{CHECKED_TRANSFER_TIMEOUT, TRANSFER_TIMEOUT, Transfer};
 pub use forces::Forces;
 pub use password::{PASSWORD_VARIABLE, PasswordError, read_password};
 pub use place::{Memory, PlaceAccess};

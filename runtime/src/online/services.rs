@@ -16,6 +16,8 @@ use program_image::{Region, TypeDef};
 use sha2::{Digest, Sha256};
 
 use super::download::Transfer;
+
+mod online_change;
 use super::trace::{MAX_TRACE_BYTES, Trace};
 use super::wrong_passwords::WrongPasswords;
 use crate::engine::ResetKind;
@@ -41,6 +43,8 @@ pub struct OnlineServices {
     wrong_passwords: Mutex<WrongPasswords>,
     /// The download in progress, if any.
     transfer: Mutex<Option<Transfer>>,
+    /// The transfer last checked for an online change, with its prepared engine and plan.
+    checked: Mutex<Option<online_change::CheckedChange>>,
     /// The number of the last transfer begun.
     last_transfer: Mutex<u16>,
     /// The Modbus server's map, replaced by the downloaded image's; `None` keeps the server's.
@@ -56,6 +60,7 @@ impl OnlineServices {
             tokens: Mutex::new(HashMap::new()),
             wrong_passwords: Mutex::new(WrongPasswords::default()),
             transfer: Mutex::new(None),
+            checked: Mutex::new(None),
             last_transfer: Mutex::new(0),
             map: None,
         }
@@ -193,6 +198,8 @@ impl OnlineServices {
                 let mut transfer = Transfer::begin(*last, size, hash, now)?;
                 transfer.owner = connection;
                 *lock(&self.transfer) = Some(transfer);
+                // A checked change belongs to the transfer it checked.
+                *lock(&self.checked) = None;
                 Ok(Response::DownloadBegin {
                     transfer: *last,
                     chunk_size: CHUNK_BYTES,
@@ -216,9 +223,15 @@ impl OnlineServices {
                 let mut current = lock(&self.transfer);
                 if current.as_ref().is_some_and(|active| active.id == transfer) {
                     *current = None;
+                    *lock(&self.checked) = None;
                 }
                 Ok(Response::DownloadAbort)
             }
+            Request::OnlineChangeCheck { transfer, .. } => self.online_change_check(transfer),
+            Request::OnlineChangeDetails { transfer, from, .. } => {
+                self.online_change_details(transfer, from)
+            }
+            Request::OnlineChangeApply { transfer, .. } => self.online_change_apply(transfer),
             Request::Start { .. } => {
                 self.scheduler.start().map_err(scheduler_refusal)?;
                 Ok(Response::Start {
@@ -435,6 +448,7 @@ impl OnlineServices {
             current_transfer(&mut current, transfer)?;
             current.take()
         };
+        *lock(&self.checked) = None;
         let image = active
             .ok_or_else(|| not_now("no download is in progress"))?
             .finish()?;
@@ -688,7 +702,9 @@ fn upload(trace: &Trace, from: u32) -> Vec<TraceSample> {
 
 fn scheduler_refusal(error: SchedulerError) -> Refusal {
     let status = match error {
-        SchedulerError::NoProgram | SchedulerError::Gone => Status::NotNow,
+        SchedulerError::NoProgram | SchedulerError::ProgramChanged | SchedulerError::Gone => {
+            Status::NotNow
+        }
         SchedulerError::Load(_) => Status::ImageRefused,
         // The command was done; only saving the retained values failed.
         SchedulerError::Retain(_) => Status::NotNow,

@@ -60,6 +60,11 @@ impl Trace {
             .sum()
     }
 
+    /// The configuration, armed or not.
+    pub fn config(&self) -> Option<&TraceConfig> {
+        self.config.as_ref()
+    }
+
     /// The configuration, when it is configured and not armed yet.
     pub fn pending_config(&self) -> Option<&TraceConfig> {
         match self.state {
@@ -80,6 +85,31 @@ impl Trace {
     /// Forgets the configuration and the samples (after a download, whose places differ).
     pub fn unconfigure(&mut self) {
         *self = Self::default();
+    }
+
+    /// Moves the trace's places to their variables' places after an online change, as
+    /// `moved` gives them, and goes on recording; when one is gone or changed type (`moved`
+    /// gives `None`), forgets the trace as a download does. Returns whether it was removed.
+    pub fn follow(&mut self, moved: impl Fn(Place) -> Option<Place>) -> bool {
+        let Some(config) = self.config.as_mut() else {
+            return false;
+        };
+        let places: Option<Vec<Place>> = config.places.iter().map(|&place| moved(place)).collect();
+        let trigger = match config.trigger {
+            TriggerKind::None => Some(config.trigger_place),
+            _ => moved(config.trigger_place),
+        };
+        match (places, trigger) {
+            (Some(places), Some(trigger)) => {
+                config.places = places;
+                config.trigger_place = trigger;
+                false
+            }
+            _ => {
+                self.unconfigure();
+                true
+            }
+        }
     }
 
     /// Drops the samples and starts recording; false without a configuration.
@@ -230,6 +260,33 @@ mod tests {
 
     fn cycles(trace: &Trace) -> Vec<u64> {
         trace.samples().map(|sample| sample.cycle).collect()
+    }
+
+    #[test]
+    fn after_an_online_change_the_trace_follows_its_places_or_is_removed() {
+        let mut trace = Trace::default();
+        trace.configure(config(TriggerKind::Rising, 4, 50, 1));
+        assert!(trace.arm());
+        run(&mut trace, 2, 9, 9);
+        let moved = |place: Place| {
+            Some(Place {
+                offset: place.offset + 100,
+                ..place
+            })
+        };
+        assert!(!trace.follow(moved));
+        let config = trace.config().unwrap();
+        assert_eq!(
+            (config.places[0].offset, config.trigger_place.offset),
+            (100, 101)
+        );
+        // Still armed, with the samples taken before the change.
+        assert_eq!(trace.status().0, TraceState::Armed);
+        assert_eq!(cycles(&trace), [1, 2]);
+
+        let trigger_gone = |place: Place| (place.offset != 101).then_some(place);
+        assert!(trace.follow(trigger_gone));
+        assert_eq!(trace.status().0, TraceState::Unconfigured);
     }
 
     #[test]

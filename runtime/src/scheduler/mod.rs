@@ -54,7 +54,7 @@ use std::time::Duration;
 use program_image::{ImageHash, ProgramImage};
 
 use crate::areas::LocatedAreas;
-use crate::engine::{Engine, FaultRecord, LoadError, ResetKind};
+use crate::engine::{AppliedChange, Engine, FaultRecord, LoadError, OnlineChangePlan, ResetKind};
 use crate::online::{Forces, Memory, Trace};
 use crate::retain::{RetainError, RetainRestore};
 
@@ -136,6 +136,21 @@ pub struct LoadReport {
     pub carried: usize,
 }
 
+/// What an online change did (`docs/protocol.md` §7, `ONLINE_CHANGE_APPLY`).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct OnlineChangeReport {
+    /// Cycles run by all tasks before the switch.
+    pub cycles: u64,
+    /// What the switch carried, moved and cleared.
+    pub applied: AppliedChange,
+    /// How many forces were released because their variable is gone or changed type.
+    pub forces_released: usize,
+    /// Whether the trace was removed because one of its variables is gone or changed type.
+    pub trace_removed: bool,
+    /// How long no task could start.
+    pub switch: Duration,
+}
+
 /// What an action run between two cycles (see [`Scheduler::between`]) may touch; it lives only
 /// while the action runs.
 pub struct Between<'a> {
@@ -161,6 +176,9 @@ pub enum SchedulerError {
     /// Retained values could not be saved or deleted; the rest of the command was done.
     #[error(transparent)]
     Retain(#[from] RetainError),
+    /// An online change was planned against another program than the one running now.
+    #[error("the running program changed since the online change was checked")]
+    ProgramChanged,
     /// The scheduler's thread could not be started or has ended.
     #[error("the scheduler thread is not running")]
     Gone,
@@ -226,6 +244,20 @@ impl Scheduler {
         let identity = image.identity();
         let engine = Engine::new(image)?;
         self.ask(|reply| Command::Load(Box::new(engine), identity, reply))?
+    }
+
+    /// Replaces the running program, made from the image `from`, with `engine` (made from
+    /// `to`) between two cycles without stopping the tasks, carrying the values by `plan`
+    /// (made for those two images, and possible); the tasks keep their schedule, cycle counts,
+    /// statistics and faults, and forces and the trace follow their variables.
+    pub fn online_change(
+        &self,
+        engine: Engine,
+        plan: Arc<OnlineChangePlan>,
+        from: ImageHash,
+        to: ImageHash,
+    ) -> Result<OnlineChangeReport, SchedulerError> {
+        self.ask(|reply| Command::OnlineChange(Box::new((engine, plan, from, to)), reply))?
     }
 
     /// Starts every task that has not faulted.
@@ -317,6 +349,11 @@ enum Command {
     Start(Reply),
     Stop(Reply),
     Reset(ResetKind, Reply),
+    /// An online change: the new engine, its plan, the images it changes from and to.
+    OnlineChange(
+        Box<(Engine, Arc<OnlineChangePlan>, ImageHash, ImageHash)>,
+        mpsc::Sender<Result<OnlineChangeReport, SchedulerError>>,
+    ),
     /// An action between two cycles, which sends its own answer.
     Between(BetweenAction),
     Shutdown(Reply),

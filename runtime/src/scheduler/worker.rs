@@ -18,6 +18,8 @@ use crate::engine::{Engine, ResetKind};
 use crate::online::{Forces, Memory, Trace};
 use crate::retain::{RetainSnapshot, RetainStore};
 
+mod switch;
+
 /// Everything the scheduler's thread owns.
 pub(super) struct Worker {
     areas: Arc<Mutex<LocatedAreas>>,
@@ -243,6 +245,10 @@ impl Worker {
                     cycles: self.cycles_total,
                 };
                 action(&mut between);
+            }
+            Command::OnlineChange(change, reply) => {
+                let (engine, plan, from, to) = *change;
+                let _ = reply.send(self.switch(engine, &plan, from, to));
             }
             Command::Shutdown(reply) => {
                 let _ = reply.send(self.stop());

@@ -122,6 +122,36 @@ impl MotionState {
         })
     }
 
+    /// Takes over `old`'s kernel (the axes and their motion), the function blocks kept for
+    /// its instances and when each task last ran, after an online change whose motion section
+    /// differs from the old one only in where its references live. `moved` gives an old
+    /// instance's absolute offset in the new memory, `None` where the instance is gone; such
+    /// blocks are dropped and their count returned.
+    pub(crate) fn carry_from(
+        &mut self,
+        old: MotionState,
+        moved: impl Fn(usize) -> Option<usize>,
+    ) -> usize {
+        self.kernel = old.kernel;
+        self.last_cycle_ns = old.last_cycle_ns;
+        let mut dropped = 0;
+        self.instances = HashMap::default();
+        for (offset, block) in old.instances {
+            match moved(offset) {
+                Some(new_offset) => {
+                    self.instances.insert(new_offset, block);
+                }
+                None => dropped += 1,
+            }
+        }
+        dropped
+    }
+
+    /// The absolute offsets of the instances whose motion blocks are kept.
+    pub(crate) fn instances(&self) -> Vec<usize> {
+        self.instances.keys().copied().collect()
+    }
+
     /// The kernel's axis for `nAxisId`.
     pub(crate) fn axis(&self, id: usize) -> Option<AxisId> {
         self.axes.get(id).map(|link| link.id)

@@ -1,0 +1,76 @@
+//! The online change's switch on the scheduler's thread (`docs/protocol.md` §7): between two
+//! cycles, the new engine takes over with the running one's values, and the tasks keep their
+//! schedule, cycle counts, statistics and faults.
+
+use std::sync::Arc;
+use std::time::Instant;
+
+use online_protocol::Place;
+use program_image::{ImageHash, Region};
+
+use super::{Worker, copy, lock};
+use crate::engine::{Engine, OnlineChangePlan};
+use crate::retain::RetainSnapshot;
+use crate::scheduler::{OnlineChangeReport, SchedulerError};
+
+/// The place number of the data region in a [`Place`].
+const PLACE_DATA: u8 = 0;
+
+impl Worker {
+    /// Replaces the running engine, made from the image `from`, with `engine`, carrying the
+    /// values by `plan`. Commands are handled between cycles only, so no task is in a cycle
+    /// now; the task plans are kept as they are (the task configuration is the same), so the
+    /// next due cycle of every task runs the new code and none is missed.
+    pub(super) fn switch(
+        &mut self,
+        mut engine: Engine,
+        plan: &Arc<OnlineChangePlan>,
+        from: ImageHash,
+        to: ImageHash,
+    ) -> Result<OnlineChangeReport, SchedulerError> {
+        let started = Instant::now();
+        if lock(&self.status).image != Some(from) {
+            return Err(SchedulerError::ProgramChanged);
+        }
+        let Some(program) = self.program.as_mut() else {
+            return Err(SchedulerError::NoProgram);
+        };
+        {
+            // The located areas keep their content: the new engine starts from the shared
+            // areas, as every cycle does.
+            let areas = lock(&self.areas);
+            copy(&areas.input, engine.region_mut(Region::Input));
+            copy(&areas.output, engine.region_mut(Region::Output));
+            copy(&areas.memory, engine.region_mut(Region::Memory));
+        }
+        let old = std::mem::replace(&mut program.engine, engine);
+        let applied = plan.apply(old, &mut program.engine);
+        let moved = |place: Place| match place.region {
+            PLACE_DATA => plan
+                .moved_range(place.offset as usize, place.value_bytes())
+                .and_then(|at| u32::try_from(at).ok())
+                .map(|offset| Place { offset, ..place }),
+            _ => Some(place),
+        };
+        let forces_released = self.forces.follow(moved).len();
+        self.forces.apply_to_engine(&mut program.engine);
+        let trace_removed = self.trace.follow(moved);
+        if let (Some(writer), Some(snapshot)) = (&self.retain, RetainSnapshot::of(&program.engine))
+        {
+            // Saved with the new retained layout, by the writer's thread.
+            writer.write_later(snapshot);
+        }
+        lock(&self.status).image = Some(to);
+        Ok(OnlineChangeReport {
+            cycles: self.cycles_total,
+            applied,
+            forces_released,
+            trace_removed,
+            switch: started.elapsed(),
+        })
+    }
+}
+
+#[cfg(test)]
+#[path = "switch_tests.rs"]
+mod tests;
