@@ -1153,7 +1153,7 @@ impl BodyGen<'_, '_, '_> {
         }
         let scalar = self
             .scalar_of(&ty)
-            .ok_or_else(|| fail!("comparing values of type {ty} is not supported yet"))?;
+            .ok_or_else(|| fail!("internal error: comparing values of type {ty} reached the code generator, which the checker refuses (E0105)"))?;
         let a = self.expr_as(left, &ty)?;
         let b = self.expr_as(right, &ty)?;
         let dst = self.temp(1);

@@ -1022,7 +1022,7 @@ fn compile_unit<'g, 'p>(
         };
         if language != project_model::Language::None {
             return Err(fail!(
-                "{name}: {language:?} bodies are not compiled yet; only Structured Text is"
+                "internal error: {name}: its {language:?} body reached the code generator without being lowered into Structured Text"
             ));
         }
         image_pou.code.push(program_image::Instr::Return);
