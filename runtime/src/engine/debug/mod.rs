@@ -1,0 +1,455 @@
+//! The engine's side of the debug session (`docs/protocol.md` §6, `docs/debugging.md`):
+//! breakpoints, steps, halts and the tasks' call stacks.
+//!
+//! A cycle runs with the debugger only while a session is active; then every POU runs its
+//! "debug variant" (`Exec::run_debug`), which keeps the task's shadow call stack and, at each
+//! statement start, asks [`DebugState`] whether to halt. Without a session the engine runs as
+//! it always did, at the cost of one test per call. A halt hands the cycle's engine to the
+//! scheduler's [`super::Preempt::halt`], which serves requests and runs other tasks until the
+//! halted task is told to go on; the cycle's Rust stack stays where it is meanwhile.
+
+mod breakpoint;
+mod task_debug;
+
+use std::sync::Arc;
+use std::time::Instant;
+
+use program_image::{BreakCondition, ConditionError, ProgramImage};
+
+pub(crate) use breakpoint::LoweredCondition;
+pub use breakpoint::{Breakpoint, BreakpointSpec, HitMode};
+pub(crate) use task_debug::Pending;
+pub use task_debug::{Halt, HaltReason, StackFrame, StepKind, TaskDebug};
+
+/// A session holds at most this many breakpoints (`docs/protocol.md` §6.2).
+pub const MAX_BREAKPOINTS: usize = 128;
+
+/// Why a debugging request is refused; the message names the task, POU or instruction.
+#[derive(Debug, thiserror::Error)]
+pub enum DebugError {
+    /// The image has no such POU.
+    #[error("the image has no POU {0}")]
+    UnknownPou(u32),
+    /// The image has no such task.
+    #[error("the image has no task {0}")]
+    UnknownTask(u8),
+    /// The instruction starts no statement (status 2).
+    #[error("instruction {instruction} of POU '{pou}' starts no statement")]
+    NotStatementStart {
+        /// The POU's name.
+        pou: String,
+        /// The instruction asked for.
+        instruction: u32,
+    },
+    /// A hit mode other than "always" with a target of 0, or an unknown mode (status 2).
+    #[error("hit mode {mode} needs a hit target of at least 1")]
+    HitTarget {
+        /// The mode's number.
+        mode: u8,
+    },
+    /// The condition is refused (status 2).
+    #[error(transparent)]
+    Condition(#[from] ConditionError),
+    /// The session has 128 breakpoints already (status 7).
+    #[error("the debug session holds {MAX_BREAKPOINTS} breakpoints already")]
+    TooManyBreakpoints,
+    /// No breakpoint has this id (status 2).
+    #[error("no breakpoint has id {0}")]
+    UnknownBreakpoint(u16),
+    /// The task is not halted (status 7).
+    #[error("task '{0}' is not halted")]
+    NotHalted(String),
+    /// The task is halted beneath another, which must go on first (status 7).
+    #[error("task '{task}' is halted beneath task '{top}': continue '{top}' first")]
+    Beneath {
+        /// The task asked about.
+        task: String,
+        /// The task halted on top of it.
+        top: String,
+    },
+}
+
+/// The debug session's state as the engine uses it: owned by the engine, changed by the
+/// scheduler (between cycles or from inside a halt) and read at statement starts.
+#[derive(Debug)]
+pub struct DebugState {
+    /// Whether cycles run with the debugger (a session exists).
+    active: bool,
+    breakpoints: Vec<Breakpoint>,
+    /// Per POU, whether a breakpoint is in it, so a statement of another POU looks no further.
+    pou_has_breakpoint: Vec<bool>,
+    next_id: u16,
+    tasks: Vec<TaskDebug>,
+    /// The halted tasks in the order they halted: the last one is on top.
+    halted: Vec<usize>,
+    /// Grows whenever a task's halt state or position changes.
+    generation: u32,
+    /// Set to abandon every halted cycle (`STOP`, `RESET`, `DOWNLOAD_COMMIT`).
+    abandon: bool,
+    /// The statement starts of each POU, sorted.
+    statements: Vec<Vec<u32>>,
+    task_names: Vec<String>,
+    pou_names: Vec<String>,
+}
+
+impl DebugState {
+    /// No session, for `image`.
+    pub(crate) fn new(image: &ProgramImage) -> Self {
+        Self {
+            active: false,
+            breakpoints: Vec::new(),
+            pou_has_breakpoint: vec![false; image.pous.len()],
+            next_id: 0,
+            tasks: image.tasks.iter().map(|_| TaskDebug::new()).collect(),
+            halted: Vec::new(),
+            generation: 0,
+            abandon: false,
+            statements: image
+                .pous
+                .iter()
+                .map(|pou| {
+                    let mut starts: Vec<u32> = pou.lines.iter().map(|e| e.index).collect();
+                    starts.sort_unstable();
+                    starts.dedup();
+                    starts
+                })
+                .collect(),
+            task_names: image.tasks.iter().map(|t| t.name.clone()).collect(),
+            pou_names: image.pous.iter().map(|p| p.name.clone()).collect(),
+        }
+    }
+
+    /// Whether cycles run with the debugger.
+    pub fn active(&self) -> bool {
+        self.active
+    }
+
+    /// Starts running cycles with the debugger (a session was attached). A cycle already in
+    /// progress goes on without it.
+    pub fn begin_session(&mut self) {
+        self.active = true;
+    }
+
+    /// Ends the session: every breakpoint, step and run-to-cursor target is removed and every
+    /// halted task goes on (it returns from its halt when the scheduler next looks).
+    pub fn end_session(&mut self) {
+        self.active = false;
+        self.breakpoints.clear();
+        self.pou_has_breakpoint.fill(false);
+        self.next_id = 0;
+        for task in &mut self.tasks {
+            task.pending = Pending::Nothing;
+            task.stepping = false;
+            task.halt = None;
+        }
+        self.halted.clear();
+        self.generation = self.generation.wrapping_add(1);
+    }
+
+    /// Abandons every halted cycle: each returns from its halt without running the rest of its
+    /// cycle (and without a fault). The scheduler clears this with [`DebugState::settled`]
+    /// once no cycle is in progress.
+    pub fn abandon_halted(&mut self) {
+        self.abandon = true;
+        for &task in &self.halted {
+            if let Some(state) = self.tasks.get_mut(task) {
+                state.halt = None;
+            }
+        }
+        self.halted.clear();
+        self.generation = self.generation.wrapping_add(1);
+    }
+
+    /// Whether halted cycles are being abandoned.
+    pub fn abandoning(&self) -> bool {
+        self.abandon
+    }
+
+    /// No cycle is in progress any more: the next cycles run normally.
+    pub fn settled(&mut self) {
+        self.abandon = false;
+        for task in &mut self.tasks {
+            task.stack.clear();
+        }
+    }
+
+    /// The breakpoints, in the order they were set.
+    pub fn breakpoints(&self) -> &[Breakpoint] {
+        &self.breakpoints
+    }
+
+    /// The debugger's view of task `task`.
+    pub fn task(&self, task: usize) -> Option<&TaskDebug> {
+        self.tasks.get(task)
+    }
+
+    /// How many tasks the image has.
+    pub fn task_count(&self) -> usize {
+        self.tasks.len()
+    }
+
+    /// The halted tasks, the one on top (halted last) last.
+    pub fn halted(&self) -> &[usize] {
+        &self.halted
+    }
+
+    /// Grows by one whenever any task's halt state or position changes.
+    pub fn generation(&self) -> u32 {
+        self.generation
+    }
+
+    /// Checks that `instruction` starts a statement of POU `pou`.
+    pub fn check_statement(&self, pou: u32, instruction: u32) -> Result<(), DebugError> {
+        let starts = self
+            .statements
+            .get(pou as usize)
+            .ok_or(DebugError::UnknownPou(pou))?;
+        if starts.binary_search(&instruction).is_ok() {
+            Ok(())
+        } else {
+            Err(DebugError::NotStatementStart {
+                pou: self
+                    .pou_names
+                    .get(pou as usize)
+                    .cloned()
+                    .unwrap_or_default(),
+                instruction,
+            })
+        }
+    }
+
+    /// Sets a breakpoint whose condition is already lowered; replaces one at the same place,
+    /// instance and task. Returns its id and whether it replaced one.
+    pub(crate) fn insert_breakpoint(
+        &mut self,
+        spec: BreakpointSpec,
+        condition: Option<LoweredCondition>,
+    ) -> Result<(u16, bool), DebugError> {
+        self.check_statement(spec.pou, spec.instruction)?;
+        if let Some(task) = spec.task
+            && usize::from(task) >= self.tasks.len()
+        {
+            return Err(DebugError::UnknownTask(task));
+        }
+        if spec.hit_mode != HitMode::Always && spec.hit_target == 0 {
+            return Err(DebugError::HitTarget {
+                mode: spec.hit_mode.code(),
+            });
+        }
+        let same = self.breakpoints.iter().position(|b| {
+            b.spec.pou == spec.pou
+                && b.spec.instruction == spec.instruction
+                && b.spec.instance == spec.instance
+                && b.spec.task == spec.task
+        });
+        if same.is_none() && self.breakpoints.len() >= MAX_BREAKPOINTS {
+            return Err(DebugError::TooManyBreakpoints);
+        }
+        // Ids are never 0xFFFF (every breakpoint) and not reused within a session; a session
+        // that sets 65535 breakpoints wraps around, past ids long cleared.
+        let id = self.next_id;
+        self.next_id = if self.next_id >= 0xFFFE {
+            0
+        } else {
+            self.next_id + 1
+        };
+        if let Some(flag) = self.pou_has_breakpoint.get_mut(spec.pou as usize) {
+            *flag = true;
+        }
+        let breakpoint = Breakpoint {
+            id,
+            spec,
+            hits: 0,
+            condition: condition.map(Arc::new),
+        };
+        match same {
+            Some(index) => {
+                self.breakpoints[index] = breakpoint;
+                Ok((id, true))
+            }
+            None => {
+                self.breakpoints.push(breakpoint);
+                Ok((id, false))
+            }
+        }
+    }
+
+    /// Removes breakpoint `id`, or every breakpoint with 0xFFFF.
+    pub fn clear_breakpoint(&mut self, id: u16) -> Result<(), DebugError> {
+        if id == 0xFFFF {
+            self.breakpoints.clear();
+        } else {
+            let index = self
+                .breakpoints
+                .iter()
+                .position(|b| b.id == id)
+                .ok_or(DebugError::UnknownBreakpoint(id))?;
+            self.breakpoints.remove(index);
+        }
+        self.pou_has_breakpoint.fill(false);
+        for breakpoint in &self.breakpoints {
+            if let Some(flag) = self
+                .pou_has_breakpoint
+                .get_mut(breakpoint.spec.pou as usize)
+            {
+                *flag = true;
+            }
+        }
+        Ok(())
+    }
+
+    /// The name of task `task`.
+    pub fn task_name(&self, task: usize) -> &str {
+        self.task_names.get(task).map_or("", String::as_str)
+    }
+
+    /// Checks that `task` is halted and on top, so it may go on.
+    fn check_on_top(&self, task: usize) -> Result<(), DebugError> {
+        let state = self
+            .tasks
+            .get(task)
+            .ok_or(DebugError::UnknownTask(task as u8))?;
+        if state.halt.is_none() {
+            return Err(DebugError::NotHalted(self.task_name(task).to_owned()));
+        }
+        match self.halted.last() {
+            Some(&top) if top != task => Err(DebugError::Beneath {
+                task: self.task_name(task).to_owned(),
+                top: self.task_name(top).to_owned(),
+            }),
+            _ => Ok(()),
+        }
+    }
+
+    /// Lets halted task `task` go on until `pending` says it halts.
+    fn resume(&mut self, task: usize, pending: Pending) {
+        if let Some(state) = self.tasks.get_mut(task) {
+            state.halt = None;
+            state.pending = pending;
+            state.stepping = true;
+        }
+        self.halted.retain(|&halted| halted != task);
+        self.generation = self.generation.wrapping_add(1);
+    }
+
+    /// `STEP`: the halted task on top goes on and halts at the statement `kind` says.
+    pub fn step(&mut self, task: usize, kind: StepKind) -> Result<(), DebugError> {
+        self.check_on_top(task)?;
+        let depth = self.tasks.get(task).map_or(0, |state| state.stack.len());
+        let pending = match kind {
+            StepKind::Into => Pending::Within(usize::MAX),
+            StepKind::Over => Pending::Within(depth),
+            StepKind::Out if depth <= 1 => Pending::NextProgram,
+            StepKind::Out => Pending::Below(depth),
+        };
+        self.resume(task, pending);
+        Ok(())
+    }
+
+    /// `RUN_TO`: the halted task on top goes on and halts at the statement start of `pou` at
+    /// `instruction` (any instance), or at a breakpoint before.
+    pub fn run_to(&mut self, task: usize, pou: u32, instruction: u32) -> Result<(), DebugError> {
+        self.check_statement(pou, instruction)?;
+        self.check_on_top(task)?;
+        self.resume(task, Pending::RunTo(pou, instruction));
+        Ok(())
+    }
+
+    /// `CONTINUE` of one task: a halted task on top goes on until a breakpoint; a stepping
+    /// task's step ends.
+    pub fn continue_task(&mut self, task: usize) -> Result<(), DebugError> {
+        let stepping = self.tasks.get(task).is_some_and(|state| state.stepping);
+        if stepping && self.tasks.get(task).is_some_and(|s| s.halt.is_none()) {
+            if let Some(state) = self.tasks.get_mut(task) {
+                state.pending = Pending::Nothing;
+                state.stepping = false;
+            }
+            self.generation = self.generation.wrapping_add(1);
+            return Ok(());
+        }
+        self.check_on_top(task)?;
+        self.resume(task, Pending::Nothing);
+        if let Some(state) = self.tasks.get_mut(task) {
+            state.stepping = false;
+        }
+        Ok(())
+    }
+
+    /// `HALT` of one task: it halts at the next statement start it runs; a halted task stays.
+    pub fn halt_task(&mut self, task: usize) -> Result<(), DebugError> {
+        let state = self
+            .tasks
+            .get_mut(task)
+            .ok_or(DebugError::UnknownTask(task as u8))?;
+        if state.halt.is_none() {
+            state.pending = Pending::Halt;
+        }
+        Ok(())
+    }
+
+    /// Notes that task `task` halts at the top of its stack for `reason`.
+    pub(crate) fn enter_halt(&mut self, task: usize, reason: HaltReason) {
+        if let Some(state) = self.tasks.get_mut(task) {
+            let (pou, instruction) = state
+                .stack
+                .last()
+                .map_or((0, 0), |frame| (frame.pou, frame.instruction));
+            state.halt = Some(Halt {
+                reason,
+                pou,
+                instruction,
+                depth: state.stack.len().min(usize::from(u16::MAX)) as u16,
+                cycle: state.cycle,
+                since: Instant::now(),
+            });
+            state.pending = Pending::Nothing;
+            state.stepping = false;
+        }
+        self.halted.push(task);
+        self.generation = self.generation.wrapping_add(1);
+    }
+
+    /// Whether task `task` is still halted (the scheduler keeps serving until it is not).
+    pub fn is_halted(&self, task: usize) -> bool {
+        self.tasks
+            .get(task)
+            .is_some_and(|state| state.halt.is_some())
+    }
+
+    /// Makes a task that is still halted go on as `CONTINUE` would, whatever is on top: the
+    /// cycle has returned from its halt (a hook that serves nothing, or the session ended).
+    pub(crate) fn leave_halt(&mut self, task: usize) {
+        if self.is_halted(task) {
+            self.resume(task, Pending::Nothing);
+        }
+        if let Some(state) = self.tasks.get_mut(task) {
+            state.stepping = false;
+        }
+    }
+
+    pub(crate) fn task_mut(&mut self, task: usize) -> Option<&mut TaskDebug> {
+        self.tasks.get_mut(task)
+    }
+
+    pub(crate) fn pou_has_breakpoint(&self, pou: usize) -> bool {
+        self.pou_has_breakpoint.get(pou).copied().unwrap_or(false)
+    }
+
+    pub(crate) fn breakpoints_mut(&mut self) -> &mut [Breakpoint] {
+        &mut self.breakpoints
+    }
+
+    /// Decodes and verifies a condition for POU `pou`, for [`DebugState::insert_breakpoint`].
+    pub(crate) fn decode_condition(
+        image: &ProgramImage,
+        pou: u32,
+        bytes: &[u8],
+    ) -> Result<Option<BreakCondition>, DebugError> {
+        if bytes.is_empty() {
+            return Ok(None);
+        }
+        let condition = BreakCondition::decode(bytes)?;
+        image.verify_condition(pou, &condition)?;
+        Ok(Some(condition))
+    }
+}
