@@ -340,3 +340,96 @@ fn steps_go_into_over_and_out_of_a_function_and_a_method() {
     assert_eq!(script.seen[8].reason, HaltReason::Breakpoint(0));
     assert_eq!(script.seen[1].reason, HaltReason::Step);
 }
+
+#[test]
+fn breakpoints_are_refused_off_statements_and_replaced_in_place_with_new_ids() {
+    let (mut engine, image) = engine();
+    let good = spec(&image, "Counter", "count := count + step;");
+    let mut off = good.clone();
+    off.instruction = 9999;
+    let error = engine.view().set_breakpoint(off).expect_err("not a start");
+    assert_eq!(
+        error.to_string(),
+        format!("instruction {} of POU 'Counter' starts no statement", 9999)
+    );
+    let mut no_target = good.clone();
+    no_target.hit_mode = HitMode::Multiple;
+    assert!(engine.view().set_breakpoint(no_target).is_err());
+    let mut bad_condition = good.clone();
+    bad_condition.condition = vec![0xFF, 0xFF, 0xFF];
+    let error = engine
+        .view()
+        .set_breakpoint(bad_condition)
+        .expect_err("no condition");
+    assert!(error.to_string().contains("does not decode"), "{error}");
+    let (first, replaced) = engine.view().set_breakpoint(good.clone()).expect("set");
+    assert!(!replaced);
+    let (second, replaced) = engine.view().set_breakpoint(good.clone()).expect("set");
+    assert!(replaced);
+    assert_ne!(first, second);
+    assert_eq!(engine.debug().breakpoints().len(), 1);
+    engine
+        .debug_mut()
+        .clear_breakpoint(second)
+        .expect("cleared");
+    assert!(engine.debug_mut().clear_breakpoint(second).is_err());
+    for _ in 0..runtime::engine::MAX_BREAKPOINTS {
+        let mut next = good.clone();
+        next.instance =
+            instance(&image, "Main.a") + u64::from(engine.debug().breakpoints().len() as u32) + 1;
+        engine.view().set_breakpoint(next).expect("room");
+    }
+    let mut one_more = good;
+    one_more.instance = 7;
+    assert!(engine.view().set_breakpoint(one_more).is_err());
+}
+
+#[test]
+fn only_the_halted_task_may_step_and_ending_the_session_lets_it_go_on() {
+    let (mut engine, image) = engine();
+    engine
+        .view()
+        .set_breakpoint(spec(&image, "Main", "n := n + 1;"))
+        .expect("set");
+    let error = engine
+        .debug_mut()
+        .step(0, StepKind::Over)
+        .expect_err("not halted");
+    assert_eq!(error.to_string(), "task 'MainTask' is not halted");
+    struct EndsSession(u32);
+    impl Preempt for EndsSession {
+        fn preempt(&mut self, _engine: EngineView<'_>) {}
+        fn halt(&mut self, mut engine: EngineView<'_>, task: usize) {
+            self.0 += 1;
+            assert!(engine.debug().is_halted(task));
+            assert_eq!(engine.debug().halted(), &[task]);
+            engine.debug_mut().end_session();
+        }
+    }
+    let mut hook = EndsSession(0);
+    let due = AtomicBool::new(false);
+    for cycle in 0..3 {
+        engine
+            .view()
+            .run_cycle(
+                0,
+                0,
+                cycle,
+                Some(Preemption {
+                    due: &due,
+                    hook: &mut hook,
+                }),
+            )
+            .expect("no fault");
+    }
+    // The session ended at the first halt: its breakpoint went with it, the cycles ran on.
+    assert_eq!(hook.0, 1);
+    assert!(engine.debug().breakpoints().is_empty());
+    assert!(!engine.debug().active());
+    assert_eq!(
+        runtime::value::read(&engine, "Main.n")
+            .expect("n")
+            .to_string(),
+        "3"
+    );
+}
