@@ -57,6 +57,18 @@ impl EngineView<'_> {
         self.image
     }
 
+    /// The same engine, borrowed again for a shorter time.
+    pub fn reborrow(&mut self) -> EngineView<'_> {
+        EngineView {
+            image: self.image,
+            regions: self.regions,
+            code: self.code,
+            memory: &mut *self.memory,
+            motion: &mut *self.motion,
+            debug: &mut *self.debug,
+        }
+    }
+
     /// The debug session's state.
     pub fn debug(&self) -> &DebugState {
         self.debug

@@ -42,6 +42,8 @@ pub(super) struct Worker {
     alarm: Option<Alarm>,
     /// The cycles in progress while one runs, lent to [`Cycles`].
     levels: Vec<Level>,
+    /// Commands that abandoned halted cycles, done once the cycles have unwound.
+    deferred: Vec<Command>,
 }
 
 /// A loaded program and the schedule of its tasks.
@@ -89,6 +91,7 @@ impl Worker {
             cycles_total: 0,
             alarm,
             levels: Vec::with_capacity(PRIORITY_LEVELS),
+            deferred: Vec::new(),
         }
     }
 
@@ -107,7 +110,14 @@ impl Worker {
                     Err(mpsc::TryRecvError::Disconnected) => return self.exit(),
                 }
             }
-            let Some(wait) = self.run_due() else {
+            let wait = self.run_due(commands);
+            // A command that abandoned halted cycles is done now that they have unwound.
+            for command in std::mem::take(&mut self.deferred) {
+                if self.handle(command) == Next::Exit {
+                    return;
+                }
+            }
+            let Some(wait) = wait else {
                 match commands.recv() {
                     Ok(command) => {
                         if self.handle(command) == Next::Exit {
@@ -135,7 +145,7 @@ impl Worker {
 
     /// Runs the task that is due, if any, and returns how long to wait before looking again:
     /// zero after a cycle, `None` when nothing will ever be due without a command.
-    fn run_due(&mut self) -> Option<Duration> {
+    fn run_due(&mut self, commands: &mpsc::Receiver<Command>) -> Option<Duration> {
         if !self.running {
             return None;
         }
@@ -147,7 +157,7 @@ impl Worker {
         }
         let program = self.program.as_ref()?;
         if let Some(task) = plan::pick(&program.plans, now) {
-            self.run_cycle(task);
+            self.run_cycle(task, commands);
             return Some(Duration::ZERO);
         }
         let mut wake = self.next_retain_save_ns;
@@ -174,19 +184,24 @@ impl Worker {
 
     /// Runs one cycle of `task` with the located areas locked (tasks of higher priority may
     /// interrupt it), then plans its next one.
-    fn run_cycle(&mut self, task: usize) {
+    fn run_cycle(&mut self, task: usize, commands: &mpsc::Receiver<Command>) {
         let Some(program) = self.program.as_mut() else {
             return;
         };
-        let mut areas = lock(&self.areas);
-        copy(&areas.input, program.engine.region_mut(Region::Input));
-        copy(&areas.output, program.engine.region_mut(Region::Output));
-        copy(&areas.memory, program.engine.region_mut(Region::Memory));
+        let mut areas = Some(lock(&self.areas));
+        if let Some(areas) = &areas {
+            copy(&areas.input, program.engine.region_mut(Region::Input));
+            copy(&areas.output, program.engine.region_mut(Region::Output));
+            copy(&areas.memory, program.engine.region_mut(Region::Memory));
+        }
         let mut cycles = Cycles {
             plans: &mut program.plans,
-            forces: &self.forces,
+            forces: &mut self.forces,
             trace: &mut self.trace,
             areas: &mut areas,
+            areas_lock: &self.areas,
+            commands,
+            deferred: &mut self.deferred,
             status: &self.status,
             alarm: self.alarm.as_ref(),
             epoch: self.epoch,
@@ -197,6 +212,10 @@ impl Worker {
             levels: &mut self.levels,
         };
         cycles.run(&mut program.engine.view(), task);
+        // Abandoned halted cycles have unwound: the next cycles run normally.
+        if program.engine.debug().abandoning() {
+            program.engine.debug_mut().settled();
+        }
     }
 
     /// Looks at the triggers of the event tasks.
@@ -235,7 +254,7 @@ impl Worker {
                 let mut areas = lock(&self.areas);
                 let mut between = Between {
                     memory: self.program.as_mut().map(|program| Memory {
-                        engine: &mut program.engine,
+                        engine: program.engine.view(),
                         areas: &mut areas,
                     }),
                     forces: &mut self.forces,
