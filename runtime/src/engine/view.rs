@@ -95,6 +95,18 @@ impl EngineView<'_> {
         self.regions.pointer_to(at, self.regions.stack(task).1)
     }
 
+    /// The bytes of task `task`'s stack (`FRAME_READ`).
+    pub fn stack_bytes(&self, task: usize) -> &[u8] {
+        let (start, end) = self.regions.stack(task);
+        self.memory.get(start..end).unwrap_or_default()
+    }
+
+    /// The bytes of task `task`'s stack, writable (`FRAME_WRITE`).
+    pub fn stack_bytes_mut(&mut self, task: usize) -> &mut [u8] {
+        let (start, end) = self.regions.stack(task);
+        self.memory.get_mut(start..end).unwrap_or_default()
+    }
+
     /// Where task `task`'s stack starts, to give a frame's start from it (`STACK`).
     pub fn stack_start(&self, task: usize) -> usize {
         self.regions.stack(task).0

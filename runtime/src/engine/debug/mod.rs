@@ -387,6 +387,28 @@ impl DebugState {
         Ok(())
     }
 
+    /// `CONTINUE` of every task: every halted task goes on (each beneath the top one as soon
+    /// as it is on top) and every step, run-to-cursor target and `HALT` ends.
+    pub fn continue_all(&mut self) {
+        for task in &mut self.tasks {
+            task.halt = None;
+            task.pending = Pending::Nothing;
+            task.stepping = false;
+        }
+        self.halted.clear();
+        self.generation = self.generation.wrapping_add(1);
+    }
+
+    /// `HALT` of every task: each task that is not halted halts at the next statement start
+    /// it runs.
+    pub fn halt_all(&mut self) {
+        for task in &mut self.tasks {
+            if task.halt.is_none() {
+                task.pending = Pending::Halt;
+            }
+        }
+    }
+
     /// Notes that task `task` halts at the top of its stack for `reason`.
     pub(crate) fn enter_halt(&mut self, task: usize, reason: HaltReason) {
         if let Some(state) = self.tasks.get_mut(task) {
