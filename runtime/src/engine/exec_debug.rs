@@ -19,6 +19,12 @@ impl Exec<'_> {
         }
     }
 
+    /// Notes the end of a cycle run with the debugger: the flow recording's bits become the
+    /// last complete cycle's.
+    pub(super) fn end_debug_cycle(&mut self, cycle: u64) {
+        self.debug.end_flow_cycle(self.task, cycle + 1);
+    }
+
     /// Notes the start of one of the task's programs: a step out of (or over the end of) the
     /// previous program's body halts at its first statement.
     pub(super) fn begin_debug_program(&mut self) {
@@ -103,6 +109,11 @@ impl Exec<'_> {
             return Ok(());
         };
         let depth = state.stack.len();
+        let instance = self.pointer_to(self.bases[usize::from(INSTANCE)]);
+        self.debug.record_flow(self.task, pou, pc as u32, instance);
+        let Some(state) = self.debug.task(self.task) else {
+            return Ok(());
+        };
         let mut reason = match state.pending {
             Pending::Within(most) if depth <= most => Some(HaltReason::Step),
             Pending::Below(fewer) if depth < fewer => Some(HaltReason::Step),

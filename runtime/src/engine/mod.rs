@@ -23,8 +23,8 @@ use program_image::{InitRun, ProgramImage, Region};
 
 pub use carry::carry_retained;
 pub use debug::{
-    Breakpoint, BreakpointSpec, DebugError, DebugState, Halt, HaltReason, HitMode, MAX_BREAKPOINTS,
-    StackFrame, StepKind, TaskDebug,
+    Breakpoint, BreakpointSpec, DebugError, DebugState, FlowRecording, FlowTrack, Halt, HaltReason,
+    HitMode, MAX_BREAKPOINTS, MAX_FLOW_TRACKS, StackFrame, StepKind, TaskDebug,
 };
 pub use fault::{FaultKind, FaultRecord};
 pub use lower::LowerError;

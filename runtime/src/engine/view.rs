@@ -183,6 +183,9 @@ impl EngineView<'_> {
                 return Err(fault_record(image, task, kind, pou, instruction, cycle));
             }
         }
+        if exec.debugging {
+            exec.end_debug_cycle(cycle);
+        }
         let data_start = regions.data;
         let data_end = data_start + image.layout.data_size as usize;
         if let Some(data) = self.memory.get_mut(data_start..data_end) {

@@ -7,8 +7,9 @@ use std::sync::{Mutex, MutexGuard, PoisonError};
 use std::time::{Duration, Instant};
 
 use online_protocol::{
-    BreakpointInfo, DebugOptions, DebugRequest, DebugResponse, DebugStatus, FrameRange, HaltState,
-    HitRule, MAX_PAYLOAD_BYTES, Refusal, Response, SessionState, TaskDebugState, TaskHalt,
+    BreakpointInfo, DebugOptions, DebugRequest, DebugResponse, DebugStatus, FlowCycle, FrameRange,
+    HaltState, HitRule, MAX_FLOW_BITMAP_BYTES, MAX_PAYLOAD_BYTES, Refusal, Response, SessionState,
+    TaskDebugState, TaskHalt,
 };
 
 use crate::engine::{self, BreakpointSpec, DebugError, EngineView, HitMode, StepKind};
@@ -248,10 +249,54 @@ impl Debugging {
                 })?;
                 DebugResponse::FrameWrite
             }
-            DebugRequest::FlowConfigure { .. } | DebugRequest::FlowRead { .. } => {
-                return Err(Refusal::not_now(
-                    "flow recording is not available on this runtime version",
-                ));
+            DebugRequest::FlowConfigure { task, entries, .. } => {
+                self.require(connection)?;
+                let pous: Vec<(u32, u64)> = entries.iter().map(|e| (e.pou, e.instance)).collect();
+                on_engine(scheduler, move |engine| {
+                    Ok(engine
+                        .debug_mut()
+                        .configure_flow(usize::from(task), &pous)?)
+                })?;
+                DebugResponse::FlowConfigure
+            }
+            DebugRequest::FlowRead { entry, which, from } => {
+                if from % 8 != 0 {
+                    return Err(Refusal::bad(format!(
+                        "a flow bitmap is read from a multiple of 8, not from {from}"
+                    )));
+                }
+                on_engine(scheduler, move |engine| {
+                    let flow = engine
+                        .debug()
+                        .flow()
+                        .ok_or_else(|| Refusal::not_now("no flow recording is configured"))?;
+                    let track = flow.tracks.get(usize::from(entry)).ok_or_else(|| {
+                        Refusal::bad(format!(
+                            "the flow recording has {} entries, not {}",
+                            flow.tracks.len(),
+                            u16::from(entry) + 1
+                        ))
+                    })?;
+                    let (bits, cycle) = match which {
+                        FlowCycle::LastComplete => (&track.last, track.last_cycle),
+                        // The cycle in progress is the one after the task's finished cycles.
+                        FlowCycle::Current => (
+                            &track.current,
+                            engine.debug().task(flow.task).map_or(0, |t| t.cycle + 1),
+                        ),
+                    };
+                    let bitmap = bits
+                        .iter()
+                        .skip((from / 8) as usize)
+                        .take(MAX_FLOW_BITMAP_BYTES)
+                        .copied()
+                        .collect();
+                    Ok(DebugResponse::FlowRead {
+                        cycle,
+                        statements: track.statements,
+                        bitmap,
+                    })
+                })?
             }
         };
         Ok(Response::Debug(response))

@@ -177,3 +177,56 @@ fn a_runtime_with_debugging_off_refuses_to_attach_and_says_so() {
         other => panic!("{other:?}"),
     }
 }
+
+#[test]
+fn flow_recording_marks_the_statements_of_the_last_complete_cycle() {
+    let services = services(true);
+    ask(&services, 1, attach(0)).expect("attached");
+    let read = DebugRequest::FlowRead {
+        entry: 0,
+        which: online_protocol::FlowCycle::LastComplete,
+        from: 0,
+    };
+    assert_eq!(
+        ask(&services, 1, read.clone()).expect_err("none").status,
+        Status::NotNow
+    );
+    ask(
+        &services,
+        1,
+        DebugRequest::FlowConfigure {
+            token: 0,
+            task: 0,
+            entries: vec![online_protocol::FlowEntry {
+                pou: 0,
+                instance: 0,
+            }],
+        },
+    )
+    .expect("configured");
+    let start = Instant::now();
+    loop {
+        match ask(&services, 1, read.clone()) {
+            Ok(Response::Debug(DebugResponse::FlowRead {
+                cycle,
+                statements,
+                bitmap,
+            })) if cycle > 0 => {
+                assert_eq!((statements, bitmap), (1, vec![1]));
+                break;
+            }
+            Ok(_) => assert!(start.elapsed().as_secs() < 10, "no cycle recorded"),
+            Err(refusal) => panic!("{refusal:?}"),
+        }
+        std::thread::sleep(std::time::Duration::from_millis(1));
+    }
+    let odd = DebugRequest::FlowRead {
+        entry: 0,
+        which: online_protocol::FlowCycle::Current,
+        from: 3,
+    };
+    assert_eq!(
+        ask(&services, 1, odd).expect_err("odd").status,
+        Status::BadRequest
+    );
+}

@@ -9,6 +9,7 @@
 //! halted task is told to go on; the cycle's Rust stack stays where it is meanwhile.
 
 mod breakpoint;
+mod flow;
 mod task_debug;
 
 use std::sync::Arc;
@@ -18,8 +19,12 @@ use program_image::{BreakCondition, ConditionError, ProgramImage};
 
 pub(crate) use breakpoint::LoweredCondition;
 pub use breakpoint::{Breakpoint, BreakpointSpec, HitMode};
+pub use flow::{FlowRecording, FlowTrack};
 pub(crate) use task_debug::Pending;
 pub use task_debug::{Halt, HaltReason, StackFrame, StepKind, TaskDebug};
+
+/// At most this many POUs are recorded at once (`FLOW_CONFIGURE`).
+pub const MAX_FLOW_TRACKS: usize = 8;
 
 /// A session holds at most this many breakpoints (`docs/protocol.md` §6.2).
 pub const MAX_BREAKPOINTS: usize = 128;
@@ -53,6 +58,9 @@ pub enum DebugError {
     /// The session has 128 breakpoints already (status 7).
     #[error("the debug session holds {MAX_BREAKPOINTS} breakpoints already")]
     TooManyBreakpoints,
+    /// More POUs than a flow recording takes (status 2).
+    #[error("flow recording takes at most {MAX_FLOW_TRACKS} POUs, not {0}")]
+    TooManyFlowEntries(usize),
     /// No breakpoint has this id (status 2).
     #[error("no breakpoint has id {0}")]
     UnknownBreakpoint(u16),
@@ -90,6 +98,12 @@ pub struct DebugState {
     statements: Vec<Vec<u32>>,
     task_names: Vec<String>,
     pou_names: Vec<String>,
+    /// Per POU, its line table's entries as (instruction, entry index), sorted.
+    entries: Vec<Vec<(u32, u32)>>,
+    /// The flow recording, if one is configured.
+    flow: Option<FlowRecording>,
+    /// Per POU, whether the flow recording lists it.
+    pou_recorded: Vec<bool>,
 }
 
 impl DebugState {
@@ -115,6 +129,20 @@ impl DebugState {
                 })
                 .collect(),
             task_names: image.tasks.iter().map(|t| t.name.clone()).collect(),
+            entries: image
+                .pous
+                .iter()
+                .map(|pou| {
+                    let mut entries: Vec<(u32, u32)> = (0u32..)
+                        .zip(&pou.lines)
+                        .map(|(entry, line)| (line.index, entry))
+                        .collect();
+                    entries.sort_unstable();
+                    entries
+                })
+                .collect(),
+            flow: None,
+            pou_recorded: vec![false; image.pous.len()],
             pou_names: image.pous.iter().map(|p| p.name.clone()).collect(),
         }
     }
@@ -143,7 +171,79 @@ impl DebugState {
             task.halt = None;
         }
         self.halted.clear();
+        self.flow = None;
+        self.pou_recorded.fill(false);
         self.generation = self.generation.wrapping_add(1);
+    }
+
+    /// `FLOW_CONFIGURE`: records, for each cycle of `task`, which statements of each listed
+    /// POU (on one instance, or every instance with 0) ran; an empty list ends recording.
+    pub fn configure_flow(&mut self, task: usize, pous: &[(u32, u64)]) -> Result<(), DebugError> {
+        if task >= self.tasks.len() {
+            return Err(DebugError::UnknownTask(task.min(255) as u8));
+        }
+        if pous.len() > MAX_FLOW_TRACKS {
+            return Err(DebugError::TooManyFlowEntries(pous.len()));
+        }
+        let mut tracks = Vec::with_capacity(pous.len());
+        for &(pou, instance) in pous {
+            let entries = self
+                .entries
+                .get(pou as usize)
+                .ok_or(DebugError::UnknownPou(pou))?;
+            tracks.push(FlowTrack::new(pou, instance, entries.len() as u32));
+        }
+        self.pou_recorded.fill(false);
+        for track in &tracks {
+            if let Some(flag) = self.pou_recorded.get_mut(track.pou as usize) {
+                *flag = true;
+            }
+        }
+        self.flow = (!tracks.is_empty()).then_some(FlowRecording { task, tracks });
+        Ok(())
+    }
+
+    /// The flow recording, if one is configured.
+    pub fn flow(&self) -> Option<&FlowRecording> {
+        self.flow.as_ref()
+    }
+
+    /// Notes that task `task` started the statement at instruction `instruction` of POU `pou`
+    /// on the instance whose pointer value is `instance`.
+    pub(crate) fn record_flow(&mut self, task: usize, pou: usize, instruction: u32, instance: u64) {
+        if !self.pou_recorded.get(pou).copied().unwrap_or(false) {
+            return;
+        }
+        let (Some(flow), Some(entries)) = (self.flow.as_mut(), self.entries.get(pou)) else {
+            return;
+        };
+        if flow.task != task {
+            return;
+        }
+        let first = entries.partition_point(|&(at, _)| at < instruction);
+        for track in flow
+            .tracks
+            .iter_mut()
+            .filter(|t| t.pou as usize == pou && (t.instance == 0 || t.instance == instance))
+        {
+            for &(_, entry) in entries[first..]
+                .iter()
+                .take_while(|&&(at, _)| at == instruction)
+            {
+                track.mark(entry);
+            }
+        }
+    }
+
+    /// Task `task` completed its cycle: `finished` cycles are done now.
+    pub(crate) fn end_flow_cycle(&mut self, task: usize, finished: u64) {
+        if let Some(flow) = self.flow.as_mut()
+            && flow.task == task
+        {
+            for track in &mut flow.tracks {
+                track.end_cycle(finished);
+            }
+        }
     }
 
     /// Abandons every halted cycle: each returns from its halt without running the rest of its
