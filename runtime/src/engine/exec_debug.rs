@@ -17,6 +17,7 @@ impl Exec<'_> {
             state.stack.clear();
             state.cycle = cycle;
         }
+        self.debug.cycle_starts(self.task);
     }
 
     /// Notes the end of a cycle run with the debugger: the flow recording's bits become the

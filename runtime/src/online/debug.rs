@@ -344,13 +344,16 @@ impl Debugging {
             Some(current) => return Err(Refusal::not_now(attached_elsewhere(current))),
             None => false,
         };
-        let (halted, breakpoints) = on_engine(scheduler, |engine| {
+        let (halted, breakpoints) = on_engine(scheduler, move |engine| {
             if engine.debug().task_count() > 255 {
                 return Err(Refusal::not_now(
                     "a program with more than 255 tasks cannot be debugged",
                 ));
             }
             engine.debug_mut().begin_session();
+            engine
+                .debug_mut()
+                .set_halt_all_on_halt(options.halt_all_on_halt);
             let debug = engine.debug();
             Ok((
                 u8::try_from(debug.halted().len()).unwrap_or(u8::MAX),
@@ -518,6 +521,8 @@ fn halt_state(
                         halt.instruction = top.instruction;
                     }
                     halt.depth = u16::try_from(state.stack().count()).unwrap_or(u16::MAX);
+                } else if debug.halting_all() && !state.in_cycle() {
+                    halt.state = TaskDebugState::Held;
                 } else if faulted.get(index).copied().unwrap_or(false) {
                     halt.state = TaskDebugState::Faulted;
                 } else if stopped {

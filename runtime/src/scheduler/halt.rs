@@ -34,7 +34,11 @@ impl Cycles<'_, '_> {
             }
             let levels = &self.levels;
             let idle = |index: usize| !levels.iter().any(|level| level.task == index);
-            if let Some(next) = super::plan::pick_where(self.plans, now, |index, _| idle(index)) {
+            // In "halt all" the tasks that are not halted are held: they start no cycle.
+            let holding = engine.debug().holding();
+            if let Some(next) = super::plan::pick_where(self.plans, now, |index, _| idle(index))
+                .filter(|_| !holding)
+            {
                 self.take_areas(&mut engine);
                 self.run(&mut engine, next);
                 *self.areas = None;

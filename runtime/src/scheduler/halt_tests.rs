@@ -129,3 +129,40 @@ fn stop_abandons_a_halted_cycle_without_a_fault() {
     assert_eq!(counts(&scheduler)[1], at_halt[1]);
     assert!(!halted(&scheduler));
 }
+
+#[test]
+fn halt_all_holds_every_task_with_one_halted_until_continue_all() {
+    let (scheduler, _areas) = scheduler(SchedulerOptions::default());
+    scheduler.load(two_tasks()).expect("loads");
+    scheduler.start().expect("starts");
+    scheduler
+        .between(|between| {
+            let memory = between.memory.as_mut().expect("a program");
+            memory.engine.debug_mut().begin_session();
+            memory.engine.debug_mut().halt_all();
+        })
+        .expect("served");
+    let one_halted = |scheduler: &Scheduler| {
+        scheduler
+            .between(|between| {
+                let memory = between.memory.as_ref().expect("a program");
+                memory.engine.debug().halted().len()
+            })
+            .expect("served")
+    };
+    wait_until("one task to halt", || one_halted(&scheduler) == 1);
+    let held = counts(&scheduler);
+    std::thread::sleep(Duration::from_millis(20));
+    assert_eq!(counts(&scheduler), held, "a held task ran");
+    assert_eq!(one_halted(&scheduler), 1);
+    scheduler
+        .between(|between| {
+            let memory = between.memory.as_mut().expect("a program");
+            memory.engine.debug_mut().continue_all();
+        })
+        .expect("served");
+    wait_until("both tasks to run on", || {
+        let now = counts(&scheduler);
+        now[0] > held[0] + 3 && now[1] > held[1] + 3
+    });
+}

@@ -18,6 +18,9 @@ use crate::engine::{Engine, ResetKind};
 use crate::online::{Forces, Memory, Trace};
 use crate::retain::{RetainSnapshot, RetainStore};
 
+/// How long the thread waits for a command while "halt all" holds every task.
+const HOLD_POLL: Duration = Duration::from_millis(10);
+
 /// Everything the scheduler's thread owns.
 pub(super) struct Worker {
     areas: Arc<Mutex<LocatedAreas>>,
@@ -156,6 +159,10 @@ impl Worker {
             self.next_retain_save_ns = now + duration_ns(self.options.retain_save_interval);
         }
         let program = self.program.as_ref()?;
+        if program.engine.debug().holding() {
+            // "Halt all" holds every task: only commands are served, until continue all.
+            return Some(HOLD_POLL);
+        }
         if let Some(task) = plan::pick(&program.plans, now) {
             self.run_cycle(task, commands);
             return Some(Duration::ZERO);

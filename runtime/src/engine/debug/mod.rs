@@ -104,6 +104,12 @@ pub struct DebugState {
     flow: Option<FlowRecording>,
     /// Per POU, whether the flow recording lists it.
     pou_recorded: Vec<bool>,
+    /// "Halt all": tasks that are not halted start no cycle.
+    halt_all: bool,
+    /// In "halt all" with no task halted: the next cycle to start may, and halts at once.
+    halt_next_cycle: bool,
+    /// The session's option: any halt starts "halt all".
+    halt_all_on_halt: bool,
 }
 
 impl DebugState {
@@ -143,6 +149,9 @@ impl DebugState {
                 .collect(),
             flow: None,
             pou_recorded: vec![false; image.pous.len()],
+            halt_all: false,
+            halt_next_cycle: false,
+            halt_all_on_halt: false,
             pou_names: image.pous.iter().map(|p| p.name.clone()).collect(),
         }
     }
@@ -173,7 +182,25 @@ impl DebugState {
         self.halted.clear();
         self.flow = None;
         self.pou_recorded.fill(false);
+        self.halt_all = false;
+        self.halt_next_cycle = false;
+        self.halt_all_on_halt = false;
         self.generation = self.generation.wrapping_add(1);
+    }
+
+    /// Sets the session's option "halt all tasks whenever one halts".
+    pub fn set_halt_all_on_halt(&mut self, on: bool) {
+        self.halt_all_on_halt = on;
+    }
+
+    /// Whether "halt all" holds the tasks that are not halted: the scheduler starts no cycle.
+    pub fn holding(&self) -> bool {
+        self.halt_all && !self.halt_next_cycle
+    }
+
+    /// Whether "halt all" is on.
+    pub fn halting_all(&self) -> bool {
+        self.halt_all
     }
 
     /// `FLOW_CONFIGURE`: records, for each cycle of `task`, which statements of each listed
@@ -490,6 +517,8 @@ impl DebugState {
     /// `CONTINUE` of every task: every halted task goes on (each beneath the top one as soon
     /// as it is on top) and every step, run-to-cursor target and `HALT` ends.
     pub fn continue_all(&mut self) {
+        self.halt_all = false;
+        self.halt_next_cycle = false;
         for task in &mut self.tasks {
             task.halt = None;
             task.pending = Pending::Nothing;
@@ -499,13 +528,22 @@ impl DebugState {
         self.generation = self.generation.wrapping_add(1);
     }
 
-    /// `HALT` of every task: each task that is not halted halts at the next statement start
-    /// it runs.
+    /// `HALT` of every task ("halt all"): every task that is not halted is held (starts no
+    /// cycle) until [`DebugState::continue_all`]; when no task is halted, the next task to
+    /// start a cycle halts at its first statement, so there is one halted place to look at.
     pub fn halt_all(&mut self) {
-        for task in &mut self.tasks {
-            if task.halt.is_none() {
-                task.pending = Pending::Halt;
-            }
+        self.halt_all = true;
+        self.halt_next_cycle = self.halted.is_empty();
+        self.generation = self.generation.wrapping_add(1);
+    }
+
+    /// A cycle of `task` starts: in "halt all" with no task halted, it halts at once.
+    pub(crate) fn cycle_starts(&mut self, task: usize) {
+        if self.halt_next_cycle
+            && let Some(state) = self.tasks.get_mut(task)
+        {
+            state.pending = Pending::Halt;
+            self.halt_next_cycle = false;
         }
     }
 
@@ -528,6 +566,10 @@ impl DebugState {
             state.stepping = false;
         }
         self.halted.push(task);
+        if self.halt_all_on_halt {
+            self.halt_all = true;
+            self.halt_next_cycle = false;
+        }
         self.generation = self.generation.wrapping_add(1);
     }
 
