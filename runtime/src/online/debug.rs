@@ -72,23 +72,29 @@ impl Debugging {
 
     /// The session's connection logged out, logged in again or went away: a logout or login
     /// (`closed` false) ends the session at once; a closed connection leaves it lingering for
-    /// its linger time (or ends it with a linger of 0).
-    pub fn connection_ended(&self, scheduler: &Scheduler, connection: Option<u64>, closed: bool) {
+    /// its linger time (or ends it with a linger of 0). Returns when a lingering session ends
+    /// unless taken over, for the caller to call [`Debugging::expire`] then.
+    pub fn connection_ended(
+        &self,
+        scheduler: &Scheduler,
+        connection: Option<u64>,
+        closed: bool,
+    ) -> Option<Instant> {
         let mut session = lock(&self.session);
-        let Some(current) = session.as_mut() else {
-            return;
-        };
+        let current = session.as_mut()?;
         if current.connection != Some(connection) {
-            return;
+            return None;
         }
         if closed && !current.linger.is_zero() {
+            let until = Instant::now() + current.linger;
             current.connection = None;
-            current.linger_until = Some(Instant::now() + current.linger);
-            return;
+            current.linger_until = Some(until);
+            return Some(until);
         }
         *session = None;
         drop(session);
         end_session(scheduler);
+        None
     }
 
     /// Serves one debugging request from `connection` of the client at `peer`.
@@ -302,8 +308,8 @@ impl Debugging {
         Ok(Response::Debug(response))
     }
 
-    /// Ends a lingering session whose time is up.
-    fn expire(&self, scheduler: &Scheduler, now: Instant) {
+    /// Ends a lingering session whose time is up at `now`.
+    pub fn expire(&self, scheduler: &Scheduler, now: Instant) {
         let mut session = lock(&self.session);
         if session
             .and_then(|s| s.linger_until)

@@ -230,3 +230,26 @@ fn flow_recording_marks_the_statements_of_the_last_complete_cycle() {
         Status::BadRequest
     );
 }
+
+#[test]
+fn a_lingering_session_ends_when_its_time_is_up_and_the_halted_task_goes_on() {
+    let services = services(true);
+    ask(&services, 1, attach(1)).expect("attached");
+    ask(&services, 1, DebugRequest::Halt { token: 0, task: 0 }).expect("halts");
+    wait_for_state(&services, TaskDebugState::Halted);
+    (services.closed_handler())(1);
+    assert_eq!(halt_state(&services).session, SessionState::Lingering);
+    // Nobody asks anything until well after the second of linger.
+    std::thread::sleep(std::time::Duration::from_millis(1500));
+    let status = services
+        .respond_from(
+            Some(2),
+            &Request::Identify {
+                protocol: online_protocol::PROTOCOL_VERSION,
+            }
+            .encode(),
+        )
+        .expect("answers");
+    // The debug byte is the last: no session, nothing halted.
+    assert_eq!(status.last(), Some(&0));
+}

@@ -104,9 +104,19 @@ impl OnlineServices {
         let services = Arc::clone(self);
         Arc::new(move |connection| {
             lock(&services.tokens).remove(&Some(connection));
-            services
-                .debug
-                .connection_ended(&services.scheduler, Some(connection), true);
+            if let Some(until) =
+                services
+                    .debug
+                    .connection_ended(&services.scheduler, Some(connection), true)
+            {
+                // The lingering session ends on time even when no request comes: a thread
+                // waits for its end (a take-over meanwhile leaves nothing to end).
+                let lingering = Arc::clone(&services);
+                std::thread::spawn(move || {
+                    std::thread::sleep(until.saturating_duration_since(Instant::now()));
+                    lingering.debug.expire(&lingering.scheduler, Instant::now());
+                });
+            }
             let mut transfer = lock(&services.transfer);
             if transfer
                 .as_ref()
