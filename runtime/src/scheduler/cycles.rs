@@ -19,6 +19,7 @@ use program_image::{ProgramImage, Region};
 use super::alarm::Alarm;
 use super::plan::{self, TaskPlan};
 use super::record::CycleRecord;
+use super::retain_writer::RetainWriter;
 use super::{Command, MAX_FAULTS, SchedulerState, SchedulerStatus};
 use crate::areas::LocatedAreas;
 use crate::engine::{EngineView, FaultKind, FaultRecord, Preempt, Preemption};
@@ -41,6 +42,9 @@ pub(super) struct Cycles<'w, 'm> {
     pub(super) commands: &'w mpsc::Receiver<Command>,
     /// Commands that abandoned the halted cycles, for the worker once they have unwound.
     pub(super) deferred: &'w mut Vec<Command>,
+    /// Saves retained values while a task is halted, as between cycles: the writer, when the
+    /// next save is due, and the interval between saves.
+    pub(super) retain: (Option<&'w RetainWriter>, &'w mut u64, u64),
     pub(super) status: &'w Mutex<SchedulerStatus>,
     /// The preemption alarm; `None` runs every cycle to its end.
     pub(super) alarm: Option<&'w Alarm>,

@@ -15,6 +15,7 @@ use super::worker::lock;
 use super::{Between, Command};
 use crate::engine::EngineView;
 use crate::online::Memory;
+use crate::retain::RetainSnapshot;
 
 /// The longest wait for a command while halted, so event triggers are looked at often enough.
 const HALT_POLL: Duration = Duration::from_millis(10);
@@ -32,6 +33,7 @@ impl Cycles<'_, '_> {
             if self.plans.iter().any(super::plan::TaskPlan::is_event) {
                 self.observe_triggers(&engine, now);
             }
+            self.save_retain(&engine, now);
             let levels = &self.levels;
             let idle = |index: usize| !levels.iter().any(|level| level.task == index);
             // In "halt all" the tasks that are not halted are held: they start no cycle.
@@ -78,6 +80,23 @@ impl Cycles<'_, '_> {
         }
         if let Some(top) = self.levels.last() {
             self.arm_above(top.priority);
+        }
+    }
+
+    /// Queues the retained values for the writer when a save is due, as the worker does
+    /// between cycles.
+    fn save_retain(&mut self, engine: &EngineView<'_>, now: u64) {
+        let (Some(writer), next, interval) = (self.retain.0, &mut *self.retain.1, self.retain.2)
+        else {
+            return;
+        };
+        if now < *next {
+            return;
+        }
+        *next = now + interval;
+        if let Some(snapshot) = RetainSnapshot::of_data(engine.image(), engine.region(Region::Data))
+        {
+            writer.write_later(snapshot);
         }
     }
 

@@ -166,3 +166,59 @@ fn halt_all_holds_every_task_with_one_halted_until_continue_all() {
         now[0] > held[0] + 3 && now[1] > held[1] + 3
     });
 }
+
+#[test]
+fn retained_values_are_saved_while_a_task_is_halted() {
+    let dir = tempfile::tempdir().expect("a directory");
+    let options = SchedulerOptions {
+        data_dir: Some(dir.path().to_owned()),
+        retain_save_interval: Duration::from_millis(10),
+        ..SchedulerOptions::default()
+    };
+    let mut retained = image(&[TestTask::cyclic(MS, 1)], &[(count(0), 4)]);
+    retained.pous[0].lines = vec![LineEntry {
+        index: 0,
+        file: 0,
+        line: 1,
+    }];
+    let (scheduler, _areas) = scheduler(options);
+    scheduler.load(retained.clone()).expect("loads");
+    scheduler
+        .between(|between| {
+            let memory = between.memory.as_mut().expect("a program");
+            memory.engine.debug_mut().begin_session();
+            memory
+                .engine
+                .debug_mut()
+                .halt_task(0)
+                .expect("task 0 exists");
+        })
+        .expect("served");
+    scheduler.start().expect("starts");
+    let is_halted = || {
+        scheduler
+            .between(|between| {
+                between
+                    .memory
+                    .as_ref()
+                    .is_some_and(|memory| memory.engine.debug().is_halted(0))
+            })
+            .expect("served")
+    };
+    wait_until("task 0 to halt", is_halted);
+    // A value written while halted reaches the retain file without another cycle.
+    scheduler
+        .between(|between| {
+            let memory = between.memory.as_mut().expect("a program");
+            let at = count(0) as usize;
+            memory.engine.region_mut(Region::Data)[at..at + 4]
+                .copy_from_slice(&4321_i32.to_le_bytes());
+        })
+        .expect("served");
+    wait_until("the value saved", || {
+        let mut engine = Engine::new(retained.clone()).expect("loads");
+        crate::retain::RetainStore::new(dir.path()).restore(&mut engine);
+        dint(engine.region(Region::Data), count(0)) == 4321
+    });
+    assert!(is_halted());
+}

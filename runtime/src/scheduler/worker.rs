@@ -209,6 +209,11 @@ impl Worker {
             areas_lock: &self.areas,
             commands,
             deferred: &mut self.deferred,
+            retain: (
+                self.retain.as_ref(),
+                &mut self.next_retain_save_ns,
+                duration_ns(self.options.retain_save_interval),
+            ),
             status: &self.status,
             alarm: self.alarm.as_ref(),
             epoch: self.epoch,
