@@ -70,6 +70,8 @@ pub(crate) struct Exec<'a> {
     pub(super) task: usize,
     /// The debug session's state, lent on with the memory.
     pub(super) debug: &'a mut DebugState,
+    /// Nanoseconds this cycle spent halted, taken out of its axes' clock at its end.
+    pub(super) halted_ns: i64,
     /// Whether the cycle runs with the debugger (a session was active when it started): then
     /// every POU runs its debug variant ([`Exec::run_debug`]).
     pub(super) debugging: bool,
@@ -104,6 +106,7 @@ impl<'a> Exec<'a> {
     ) -> Self {
         let debugging = debug.active();
         Self {
+            halted_ns: 0,
             task,
             debug,
             debugging,

@@ -233,9 +233,13 @@ impl Exec<'_> {
                 task,
             );
         }
+        let halted = paused.elapsed();
         if let Some((deadline, _)) = &mut self.deadline {
-            *deadline += paused.elapsed();
+            *deadline += halted;
         }
+        self.halted_ns = self
+            .halted_ns
+            .saturating_add(i64::try_from(halted.as_nanos()).unwrap_or(i64::MAX));
         if self.debug.abandoning() {
             return Err(FaultKind::Abandoned);
         }

@@ -186,11 +186,13 @@ impl EngineView<'_> {
         if exec.debugging {
             exec.end_debug_cycle(cycle);
         }
+        let halted_ns = exec.halted_ns;
         let data_start = regions.data;
         let data_end = data_start + image.layout.data_size as usize;
         if let Some(data) = self.memory.get_mut(data_start..data_end) {
             self.motion
                 .after_cycle(task, now_ns, info.interval_ns, data);
+            self.motion.skip_halted(task, halted_ns);
         }
         Ok(())
     }
