@@ -179,12 +179,16 @@ impl EngineView<'_> {
             }
             let instance = regions.data + call.instance_offset as usize;
             if let Err(kind) = exec.call_block(call.pou as usize, instance) {
+                if exec.debugging {
+                    exec.debug.cycle_ends(task);
+                }
                 let (pou, instruction) = exec.fault_at.unwrap_or((call.pou as usize, 0));
                 return Err(fault_record(image, task, kind, pou, instruction, cycle));
             }
         }
         if exec.debugging {
             exec.end_debug_cycle(cycle);
+            exec.debug.cycle_ends(task);
         }
         let halted_ns = exec.halted_ns;
         let data_start = regions.data;

@@ -480,7 +480,6 @@ fn halt_state(
     let faulted: Vec<bool> = status.tasks.iter().map(|t| t.faulted).collect();
     on_engine(scheduler, move |engine| {
         let debug = engine.debug();
-        let any_halted = !debug.halted().is_empty();
         let count = debug.task_count();
         // 4 + 4 + 2 bytes of header, 34 of each task.
         let fit = (MAX_PAYLOAD_BYTES - 10) / 34;
@@ -520,7 +519,7 @@ fn halt_state(
                     halt.cycle = at.cycle;
                     halt.halted_ms =
                         u32::try_from(at.since.elapsed().as_millis()).unwrap_or(u32::MAX);
-                } else if any_halted && state.in_cycle() {
+                } else if debug.waiting(index) {
                     halt.state = TaskDebugState::Waiting;
                     if let Some(top) = state.stack().next() {
                         halt.pou = top.pou;
@@ -556,8 +555,7 @@ fn halt_state(
 /// Whether task `task` is halted or waits beneath a halted task.
 fn stopped_in_cycle(engine: &EngineView<'_>, task: usize) -> bool {
     let debug = engine.debug();
-    debug.is_halted(task)
-        || (!debug.halted().is_empty() && debug.task(task).is_some_and(|t| t.in_cycle()))
+    debug.is_halted(task) || debug.waiting(task)
 }
 
 fn not_stopped(engine: &EngineView<'_>, task: u8) -> Refusal {

@@ -110,6 +110,9 @@ pub struct DebugState {
     halt_next_cycle: bool,
     /// The session's option: any halt starts "halt all".
     halt_all_on_halt: bool,
+    /// The tasks in a cycle run with the debugger, in the order their cycles started: each
+    /// runs nested in the one before it on the scheduler thread.
+    in_cycle: Vec<usize>,
 }
 
 impl DebugState {
@@ -152,6 +155,7 @@ impl DebugState {
             halt_all: false,
             halt_next_cycle: false,
             halt_all_on_halt: false,
+            in_cycle: Vec::new(),
             pou_names: image.pous.iter().map(|p| p.name.clone()).collect(),
         }
     }
@@ -295,6 +299,7 @@ impl DebugState {
     /// No cycle is in progress any more: the next cycles run normally.
     pub fn settled(&mut self) {
         self.abandon = false;
+        self.in_cycle.clear();
         for task in &mut self.tasks {
             task.stack.clear();
         }
@@ -537,8 +542,28 @@ impl DebugState {
         self.generation = self.generation.wrapping_add(1);
     }
 
+    /// Whether task `task` waits beneath a halted task: its cycle is in progress and a task
+    /// halted in a cycle that started after it (nested in it).
+    pub fn waiting(&self, task: usize) -> bool {
+        if self.is_halted(task) {
+            return false;
+        }
+        let Some(at) = self.in_cycle.iter().position(|&t| t == task) else {
+            return false;
+        };
+        self.in_cycle[at + 1..].iter().any(|&t| self.is_halted(t))
+    }
+
+    /// A cycle of `task` ended (or faulted, or was abandoned).
+    pub(crate) fn cycle_ends(&mut self, task: usize) {
+        if let Some(at) = self.in_cycle.iter().rposition(|&t| t == task) {
+            self.in_cycle.truncate(at);
+        }
+    }
+
     /// A cycle of `task` starts: in "halt all" with no task halted, it halts at once.
     pub(crate) fn cycle_starts(&mut self, task: usize) {
+        self.in_cycle.push(task);
         if self.halt_next_cycle
             && let Some(state) = self.tasks.get_mut(task)
         {
@@ -617,3 +642,7 @@ impl DebugState {
         Ok(Some(condition))
     }
 }
+
+#[cfg(test)]
+#[path = "state_tests.rs"]
+mod tests;
