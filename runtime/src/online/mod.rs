@@ -12,6 +12,7 @@
 //!   thread applies and feeds around every cycle.
 
 mod debug;
+mod debug_reads;
 mod download;
 mod forces;
 mod password;
