@@ -101,6 +101,7 @@ pub(super) fn halt_state(
                         halt.instruction = top.instruction;
                     }
                     halt.depth = u16::try_from(state.stack().count()).unwrap_or(u16::MAX);
+                    halt.cycle = state.cycle;
                 } else if debug.halting_all() && !state.in_cycle() {
                     halt.state = TaskDebugState::Held;
                 } else if faulted.get(index).copied().unwrap_or(false) {
