@@ -52,18 +52,23 @@ pub struct RetainSnapshot {
 impl RetainSnapshot {
     /// The retained values of `engine`, or `None` when its image has no retained variables.
     pub fn of(engine: &Engine) -> Option<Self> {
-        let ranges = retained_ranges(engine.image());
+        Self::of_data(engine.image(), engine.region(Region::Data))
+    }
+
+    /// The retained values in `data`, the data region of an engine running `image` (also
+    /// inside a halted cycle).
+    pub fn of_data(image: &ProgramImage, data: &[u8]) -> Option<Self> {
+        let ranges = retained_ranges(image);
         if ranges.is_empty() {
             return None;
         }
-        let data = engine.region(Region::Data);
         let mut bytes = Vec::new();
         for (offset, length) in ranges {
             let start = offset as usize;
             bytes.extend_from_slice(data.get(start..start + length as usize).unwrap_or(&[]));
         }
         Some(Self {
-            layout_hash: layout_hash(engine.image()),
+            layout_hash: layout_hash(image),
             bytes,
         })
     }

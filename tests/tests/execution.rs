@@ -15,6 +15,9 @@ mod sfc_chart;
 /// CFC charts compiled and run: execution order, feedback, marks, structures, EN/ENO, jumps.
 mod cfc;
 
+/// The engine's debugger: breakpoints, the call stack and steps.
+mod debugging;
+
 /// Bits and parts reached through pointers, references and properties; E0134.
 mod places;
 

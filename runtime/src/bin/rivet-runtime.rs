@@ -60,6 +60,10 @@ struct Arguments {
     /// is closed.
     #[arg(long, default_value_t = DEFAULT_FRAME_TIMEOUT.as_secs(), value_parser = clap::value_parser!(u64).range(1..))]
     frame_timeout_seconds: u64,
+    /// Whether clients may debug the program (breakpoints, stepping, halts): `off` for a
+    /// plant that must never be halted from outside; online change stays available.
+    #[arg(long, value_name = "on|off", default_value = "on", value_parser = ["on", "off"])]
+    debug: String,
     /// No longer accepted (visible in the process list): refused with a message saying where
     /// the password goes now.
     #[arg(long, hide = true)]
@@ -130,8 +134,11 @@ async fn run(arguments: Arguments) -> anyhow::Result<()> {
 
     // A download replaces the map with the new image's.
     let map = MapSlot::new(map);
-    let services =
-        Arc::new(OnlineServices::new(Arc::clone(&scheduler), password).with_map(Arc::clone(&map)));
+    let services = Arc::new(
+        OnlineServices::new(Arc::clone(&scheduler), password)
+            .with_map(Arc::clone(&map))
+            .with_debugging(arguments.debug == "on"),
+    );
     let server_options = ServerOptions {
         writes,
         idle_timeout: Duration::from_secs(arguments.idle_timeout_seconds),

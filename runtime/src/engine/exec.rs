@@ -6,6 +6,7 @@ use std::time::Instant;
 
 use program_image::ProgramImage;
 
+use super::debug::DebugState;
 use super::fault::FaultKind;
 use super::lower::{Compiled, Flow};
 use super::memory::Regions;
@@ -60,11 +61,20 @@ pub(crate) struct Exec<'a> {
     pub(crate) regions: &'a Regions,
     pub(crate) code: &'a Compiled,
     /// The image, lent with the memory to a task that interrupts this cycle.
-    image: &'a ProgramImage,
+    pub(super) image: &'a ProgramImage,
     /// Set when a task of higher priority may be due; read at every safe point.
     due: &'a AtomicBool,
-    /// Runs the tasks that interrupt this cycle; `None` when nothing may.
-    hook: Option<&'a mut dyn Preempt>,
+    /// Runs the tasks that interrupt this cycle, and serves a halt; `None` when nothing may.
+    pub(super) hook: Option<&'a mut dyn Preempt>,
+    /// The task whose cycle this is.
+    pub(super) task: usize,
+    /// The debug session's state, lent on with the memory.
+    pub(super) debug: &'a mut DebugState,
+    /// Nanoseconds this cycle spent halted, taken out of its axes' clock at its end.
+    pub(super) halted_ns: i64,
+    /// Whether the cycle runs with the debugger (a session was active when it started): then
+    /// every POU runs its debug variant ([`Exec::run_debug`]).
+    pub(super) debugging: bool,
     /// The task clock in nanoseconds, read by the timers.
     pub(crate) now_ns: i64,
     pub(crate) deadline: Option<(Instant, u64)>,
@@ -92,8 +102,14 @@ impl<'a> Exec<'a> {
         deadline: Option<(Instant, u64)>,
         motion: &'a mut super::native::MotionState,
         (due, hook): (&'a AtomicBool, Option<&'a mut dyn Preempt>),
+        (task, debug): (usize, &'a mut DebugState),
     ) -> Self {
+        let debugging = debug.active();
         Self {
+            halted_ns: 0,
+            task,
+            debug,
+            debugging,
             image,
             due,
             hook,
@@ -166,7 +182,7 @@ impl<'a> Exec<'a> {
     /// Counts a backward jump, and looks at the clock every so often. A safe point: a task of
     /// higher priority that is due runs here.
     #[inline(always)]
-    pub(crate) fn tick(&mut self) -> Result<(), FaultKind> {
+    pub(super) fn tick(&mut self) -> Result<(), FaultKind> {
         self.safe_point();
         self.budget -= 1;
         if self.budget == 0 {
@@ -204,6 +220,7 @@ impl<'a> Exec<'a> {
             code: self.code,
             memory: &mut *self.mem,
             motion: &mut *self.motion,
+            debug: &mut *self.debug,
         });
         if let Some((deadline, _)) = &mut self.deadline {
             *deadline += paused.elapsed();
@@ -212,6 +229,10 @@ impl<'a> Exec<'a> {
 
     /// Runs POU `index` with the current bases.
     pub(crate) fn run(&mut self, index: usize) -> Result<(), FaultKind> {
+        // The one cost of the debugger when no session is active: this test per call.
+        if self.debugging {
+            return self.run_debug(index);
+        }
         let code = self.code;
         let Some(pou) = code.pous.get(index) else {
             return Err(FaultKind::Memory);

@@ -36,6 +36,10 @@ pub enum FaultKind {
     /// A memory access outside the engine's memory; verification should make this impossible.
     #[error("memory access outside the program's memory")]
     Memory,
+    /// A halted cycle was abandoned (`STOP`, `RESET` or a download while a task was halted):
+    /// not a fault, the rest of the cycle just does not run.
+    #[error("the halted cycle was abandoned")]
+    Abandoned,
     /// The engine itself failed (a bug in the runtime, caught so that the process goes on).
     #[error("internal error of the runtime: {0}")]
     Internal(String),

@@ -2,9 +2,12 @@
 //! operands resolved to a base and an offset, and the type's arithmetic chosen once.
 
 use program_image::Elementary::{self as E};
-use program_image::{BinaryOp, CompareOp, Instr, Operand, ProgramImage, UnaryOp};
+use program_image::{
+    BinaryOp, BreakCondition, CompareOp, ConditionError, Instr, Operand, ProgramImage, UnaryOp,
+};
 
 use super::blocks;
+use super::debug::LoweredCondition;
 use super::exec::{ABSOLUTE, Addr, Exec, FRAME, INSTANCE};
 use super::fault::FaultKind;
 use super::memory::Regions;
@@ -32,6 +35,9 @@ pub(crate) struct CompiledPou {
     pub(crate) ops: Vec<Op>,
     pub(crate) frame_size: usize,
     pub(crate) frame_init: Vec<(usize, Vec<u8>)>,
+    /// Per instruction, whether it starts a statement (an entry of the line table), where the
+    /// debug variant asks the debugger whether to halt.
+    pub(crate) statement_starts: Vec<bool>,
 }
 
 /// Every POU of an image ready to run.
@@ -70,7 +76,14 @@ impl Compiled {
                     message,
                 })?);
             }
+            let mut statement_starts = vec![false; ops.len()];
+            for entry in &pou.lines {
+                if let Some(start) = statement_starts.get_mut(entry.index as usize) {
+                    *start = true;
+                }
+            }
             pous.push(CompiledPou {
+                statement_starts,
                 ops,
                 frame_size: pou.frame_size as usize,
                 frame_init: pou
@@ -82,6 +95,30 @@ impl Compiled {
         }
         Ok(Self { pous })
     }
+}
+
+/// Lowers a verified breakpoint condition (which calls nothing, so needs no callee sizes).
+pub(crate) fn lower_condition(
+    condition: &BreakCondition,
+    regions: &Regions,
+) -> Result<LoweredCondition, ConditionError> {
+    let ops = condition
+        .code
+        .iter()
+        .enumerate()
+        .map(|(instruction, instr)| {
+            lower(instr, regions, &[]).map_err(|reason| ConditionError::Refused {
+                instruction,
+                reason,
+            })
+        })
+        .collect::<Result<Vec<Op>, ConditionError>>()?;
+    Ok(LoweredCondition {
+        ops,
+        scratch_bytes: condition.scratch_bytes as usize,
+        init: condition.init.clone(),
+        result: condition.result as usize,
+    })
 }
 
 fn addr(operand: Operand, regions: &Regions) -> Addr {

@@ -8,7 +8,9 @@
 
 mod blocks;
 mod carry;
+mod debug;
 mod exec;
+mod exec_debug;
 mod fault;
 mod lower;
 mod memory;
@@ -21,6 +23,10 @@ mod view;
 use program_image::{InitRun, ProgramImage, Region};
 
 pub use carry::carry_retained;
+pub use debug::{
+    Breakpoint, BreakpointSpec, DebugError, DebugState, FlowRecording, FlowTrack, Halt, HaltReason,
+    HitMode, MAX_BREAKPOINTS, MAX_FLOW_TRACKS, StackFrame, StepKind, TaskDebug,
+};
 pub use fault::{FaultKind, FaultRecord};
 pub use lower::LowerError;
 pub use native::MotionLoadError;
@@ -51,6 +57,7 @@ pub struct Engine {
     code: Compiled,
     memory: Vec<u8>,
     motion: native::MotionState,
+    debug: DebugState,
 }
 
 /// Why an image cannot be loaded.
@@ -75,6 +82,7 @@ impl Engine {
         let code = Compiled::new(&image, &regions)?;
         let motion = native::MotionState::new(&image)?;
         let mut engine = Self {
+            debug: DebugState::new(&image),
             memory: vec![0; regions.total],
             image,
             regions,
@@ -179,7 +187,18 @@ impl Engine {
             code: &self.code,
             memory: &mut self.memory,
             motion: &mut self.motion,
+            debug: &mut self.debug,
         }
+    }
+
+    /// The debug session's state.
+    pub fn debug(&self) -> &DebugState {
+        &self.debug
+    }
+
+    /// The debug session's state, to change between cycles.
+    pub fn debug_mut(&mut self) -> &mut DebugState {
+        &mut self.debug
     }
 
     /// The bytes of a region.

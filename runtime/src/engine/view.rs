@@ -6,9 +6,11 @@ use std::time::{Duration, Instant};
 
 use program_image::{ProgramImage, Region};
 
+use super::debug::{BreakpointSpec, DebugError, DebugState};
 use super::exec::{Exec, NEVER_DUE};
 use super::fault::{FaultKind, FaultRecord};
 use super::lower::Compiled;
+use super::lower::lower_condition;
 use super::memory::Regions;
 use super::native::MotionState;
 
@@ -21,6 +23,7 @@ pub struct EngineView<'e> {
     pub(super) code: &'e Compiled,
     pub(super) memory: &'e mut [u8],
     pub(super) motion: &'e mut MotionState,
+    pub(super) debug: &'e mut DebugState,
 }
 
 /// What the scheduler gives a cycle so that a task of higher priority may interrupt it.
@@ -38,12 +41,75 @@ pub trait Preempt {
     /// interrupted cycle goes on when it returns. It should clear [`Preemption::due`] (or
     /// the interrupted cycle calls it again at its next safe point).
     fn preempt(&mut self, engine: EngineView<'_>);
+
+    /// Serves the halt of task `task`, whose cycle is halted at a statement start on
+    /// `engine` (`docs/debugging.md` §2): returns when [`DebugState::is_halted`] says the
+    /// task may go on, or when [`DebugState::abandoning`] says its cycle is abandoned.
+    /// Without this, a halt goes on at once.
+    fn halt(&mut self, engine: EngineView<'_>, task: usize) {
+        let _ = (engine, task);
+    }
 }
 
 impl EngineView<'_> {
     /// The image being run.
     pub fn image(&self) -> &ProgramImage {
         self.image
+    }
+
+    /// The same engine, borrowed again for a shorter time.
+    pub fn reborrow(&mut self) -> EngineView<'_> {
+        EngineView {
+            image: self.image,
+            regions: self.regions,
+            code: self.code,
+            memory: &mut *self.memory,
+            motion: &mut *self.motion,
+            debug: &mut *self.debug,
+        }
+    }
+
+    /// The debug session's state.
+    pub fn debug(&self) -> &DebugState {
+        self.debug
+    }
+
+    /// The debug session's state, to change (from a halt, or between cycles).
+    pub fn debug_mut(&mut self) -> &mut DebugState {
+        self.debug
+    }
+
+    /// `BREAK_SET`: checks `spec` (a statement start, the hit target, the condition decoded,
+    /// verified and lowered) and sets the breakpoint; returns its id and whether it replaced
+    /// one at the same place, instance and task.
+    pub fn set_breakpoint(&mut self, spec: BreakpointSpec) -> Result<(u16, bool), DebugError> {
+        let condition = DebugState::decode_condition(self.image, spec.pou, &spec.condition)?
+            .map(|condition| lower_condition(&condition, self.regions))
+            .transpose()?;
+        self.debug.insert_breakpoint(spec, condition)
+    }
+
+    /// The pointer value (`docs/program-image.md` §5.2) of the absolute offset `at` as task
+    /// `task` sees it: a place in its stack is of region 2.
+    pub fn pointer_value(&self, task: usize, at: usize) -> u64 {
+        self.regions.pointer_to(at, self.regions.stack(task).1)
+    }
+
+    /// The bytes of task `task`'s stack (`FRAME_READ`).
+    pub fn stack_bytes(&self, task: usize) -> &[u8] {
+        let (start, end) = self.regions.stack(task);
+        self.memory.get(start..end).unwrap_or_default()
+    }
+
+    /// The bytes of task `task`'s stack, writable (`FRAME_WRITE`).
+    pub fn stack_bytes_mut(&mut self, task: usize) -> &mut [u8] {
+        let (start, end) = self.regions.stack(task);
+        self.memory.get_mut(start..end).unwrap_or_default()
+    }
+
+    /// Where task `task`'s stack starts, to give a frame's start from it (`STACK`).
+    pub fn stack_start(&self, task: usize) -> usize {
+        self.regions.stack(task).0
     }
 
     /// The bytes of a region.
@@ -102,19 +168,35 @@ impl EngineView<'_> {
             deadline,
             self.motion,
             (due, hook),
+            (task, &mut *self.debug),
         );
+        if exec.debugging {
+            exec.begin_debug_cycle(cycle);
+        }
         for call in &info.programs {
+            if exec.debugging {
+                exec.begin_debug_program();
+            }
             let instance = regions.data + call.instance_offset as usize;
             if let Err(kind) = exec.call_block(call.pou as usize, instance) {
+                if exec.debugging {
+                    exec.debug.cycle_ends(task);
+                }
                 let (pou, instruction) = exec.fault_at.unwrap_or((call.pou as usize, 0));
                 return Err(fault_record(image, task, kind, pou, instruction, cycle));
             }
         }
+        if exec.debugging {
+            exec.end_debug_cycle(cycle);
+            exec.debug.cycle_ends(task);
+        }
+        let halted_ns = exec.halted_ns;
         let data_start = regions.data;
         let data_end = data_start + image.layout.data_size as usize;
         if let Some(data) = self.memory.get_mut(data_start..data_end) {
             self.motion
                 .after_cycle(task, now_ns, info.interval_ns, data);
+            self.motion.skip_halted(task, halted_ns);
         }
         Ok(())
     }

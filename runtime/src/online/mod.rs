@@ -11,6 +11,8 @@
 //! - [`Forces`] and [`Trace`]: the force table and the trace recorder, which the scheduler's
 //!   thread applies and feeds around every cycle.
 
+mod debug;
+mod debug_reads;
 mod download;
 mod forces;
 mod password;
@@ -19,6 +21,7 @@ mod services;
 mod trace;
 mod wrong_passwords;
 
+pub use debug::{Debugging, MAX_LINGER_S};
 pub use download::{CHECKED_TRANSFER_TIMEOUT, TRANSFER_TIMEOUT, Transfer};
 pub use forces::Forces;
 pub use password::{PASSWORD_VARIABLE, PasswordError, read_password};

@@ -4,7 +4,7 @@ use online_protocol::{MAX_BIT, NO_BIT, Place, Refusal, Status};
 use program_image::Region;
 
 use crate::areas::LocatedAreas;
-use crate::engine::Engine;
+use crate::engine::EngineView;
 
 /// What the runtime does with a protocol [`Place`]: find its region, check it against the
 /// region's size, and read and write its value in the region's bytes.
@@ -97,8 +97,8 @@ impl PlaceAccess for Place {
 /// two cycles: the located areas are where the outside world reads and writes `%I`, `%Q` and
 /// `%M`, the engine holds the data region.
 pub struct Memory<'a> {
-    /// The engine of the loaded program.
-    pub engine: &'a mut Engine,
+    /// The engine of the loaded program: between two cycles, or inside a halted one.
+    pub engine: EngineView<'a>,
     /// The located areas shared with the Modbus server.
     pub areas: &'a mut LocatedAreas,
 }

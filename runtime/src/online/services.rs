@@ -15,6 +15,7 @@ use online_protocol::{
 use program_image::{Region, TypeDef};
 use sha2::{Digest, Sha256};
 
+use super::debug::Debugging;
 use super::download::Transfer;
 
 mod online_change;
@@ -49,6 +50,8 @@ pub struct OnlineServices {
     last_transfer: Mutex<u16>,
     /// The Modbus server's map, replaced by the downloaded image's; `None` keeps the server's.
     map: Option<Arc<MapSlot>>,
+    /// The debug session and its services (`docs/protocol.md` §6).
+    debug: Debugging,
 }
 
 impl OnlineServices {
@@ -63,7 +66,15 @@ impl OnlineServices {
             checked: Mutex::new(None),
             last_transfer: Mutex::new(0),
             map: None,
+            debug: Debugging::new(true),
         }
+    }
+
+    /// The same services with the debugging services switched on or off
+    /// (`rivet-runtime --debug on|off`).
+    pub fn with_debugging(mut self, enabled: bool) -> Self {
+        self.debug = Debugging::new(enabled);
+        self
     }
 
     /// The same services, replacing the map in `slot` with a downloaded image's own map (or
@@ -98,6 +109,19 @@ impl OnlineServices {
         let services = Arc::clone(self);
         Arc::new(move |connection| {
             lock(&services.tokens).remove(&Some(connection));
+            if let Some(until) =
+                services
+                    .debug
+                    .connection_ended(&services.scheduler, Some(connection), true)
+            {
+                // The lingering session ends on time even when no request comes: a thread
+                // waits for its end (a take-over meanwhile leaves nothing to end).
+                let lingering = Arc::clone(&services);
+                std::thread::spawn(move || {
+                    std::thread::sleep(until.saturating_duration_since(Instant::now()));
+                    lingering.debug.expire(&lingering.scheduler, Instant::now());
+                });
+            }
             let mut transfer = lock(&services.transfer);
             if transfer
                 .as_ref()
@@ -190,6 +214,8 @@ impl OnlineServices {
             Request::Login { password } => self.login(connection, peer, now, &password),
             Request::Logout => {
                 lock(&self.tokens).remove(&connection);
+                self.debug
+                    .connection_ended(&self.scheduler, connection, false);
                 Ok(Response::Logout)
             }
             Request::DownloadBegin { size, hash, .. } => {
@@ -347,9 +373,10 @@ impl OnlineServices {
                 tasks: self.tasks(),
             }),
             Request::Faults { from } => Ok(self.faults(from)),
-            // Debugging (protocol §6) is not served by this runtime yet: it answers as one
-            // started with `--debug off` does, and says so in IDENTIFY's `debug` byte.
-            Request::Debug(_) => Err(not_now("debugging is switched off on this runtime")),
+            Request::Debug(request) => {
+                self.debug
+                    .serve(&self.scheduler, connection, peer, now, request)
+            }
         }
     }
 
@@ -377,10 +404,7 @@ impl OnlineServices {
             image_hash: status.image,
             project: cut(&project, MAX_TEXT_BYTES).to_owned(),
             password_required: self.password.is_some(),
-            debug: online_protocol::DebugStatus {
-                switched_off: true,
-                ..Default::default()
-            },
+            debug: self.debug.status(&self.scheduler),
         }))
     }
 
@@ -438,6 +462,9 @@ impl OnlineServices {
         }
         // Logging in again replaces the connection's token.
         let token = random_token();
+        // Logging in again ends the connection's debug session.
+        self.debug
+            .connection_ended(&self.scheduler, connection, false);
         lock(&self.tokens).insert(connection, token);
         Ok(Response::Login { token })
     }
@@ -466,6 +493,7 @@ impl OnlineServices {
         if let Some(slot) = &self.map {
             slot.set(map);
         }
+        self.debug.program_loaded(&self.scheduler);
         if start {
             self.scheduler.start().map_err(scheduler_refusal)?;
         }

@@ -61,9 +61,13 @@ fn changing_services_need_a_token_from_the_password_and_reading_ones_do_not() {
         },
     );
     assert_eq!(status, 0);
-    // The password byte, then version 3's debug byte: debugging is not served yet (bit 3).
+    // The password byte, then version 3's debug byte: debugging is on, no session (0).
     assert_eq!(identity[identity.len() - 2], 1, "a password is required");
-    assert_eq!(identity.last(), Some(&8), "debugging is switched off");
+    assert_eq!(
+        identity.last(),
+        Some(&0),
+        "debugging is on without a session"
+    );
     assert_eq!(ask(&services, &Request::Start { token: 0 }).0, 3);
     assert_eq!(ask(&services, &Request::Start { token: 1234 }).0, 4);
     assert_eq!(ask(&services, &login_with("guess")).0, 4);
@@ -201,7 +205,7 @@ fn without_a_program_the_services_that_need_one_say_not_now() {
         },
     );
     assert_eq!(status, 0);
-    assert!(identity.contains(&0) && identity.ends_with(&[0, 0, 8]));
+    assert!(identity.contains(&0) && identity.ends_with(&[0, 0, 0]));
 }
 
 #[test]

@@ -9,7 +9,8 @@
 //! state), feeds the trace at its end, and records its statistics.
 
 use std::panic::AssertUnwindSafe;
-use std::sync::{Mutex, mpsc};
+use std::sync::atomic::AtomicBool;
+use std::sync::{Mutex, MutexGuard, mpsc};
 use std::time::{Duration, Instant};
 
 use online_protocol::Place;
@@ -18,19 +19,32 @@ use program_image::{ProgramImage, Region};
 use super::alarm::Alarm;
 use super::plan::{self, TaskPlan};
 use super::record::CycleRecord;
-use super::{MAX_FAULTS, SchedulerState, SchedulerStatus};
+use super::retain_writer::RetainWriter;
+use super::{Command, MAX_FAULTS, SchedulerState, SchedulerStatus};
 use crate::areas::LocatedAreas;
 use crate::engine::{EngineView, FaultKind, FaultRecord, Preempt, Preemption};
 use crate::online::{Forces, PlaceAccess, Trace};
 
+/// The preemption flag when preemption is off: never set.
+static NEVER_DUE: AtomicBool = AtomicBool::new(false);
+
 /// What running cycles touches, borrowed from the worker for the outermost cycle and lent on
 /// to the cycles that interrupt it.
-pub(super) struct Cycles<'w> {
+pub(super) struct Cycles<'w, 'm> {
     pub(super) plans: &'w mut [TaskPlan],
-    pub(super) forces: &'w Forces,
+    pub(super) forces: &'w mut Forces,
     pub(super) trace: &'w mut Trace,
-    /// The located areas, locked for the whole outermost cycle.
-    pub(super) areas: &'w mut LocatedAreas,
+    /// The located areas, locked for the whole outermost cycle but while a task is halted.
+    pub(super) areas: &'w mut Option<MutexGuard<'m, LocatedAreas>>,
+    /// The lock of the located areas, released and taken again around a halt.
+    pub(super) areas_lock: &'m Mutex<LocatedAreas>,
+    /// The scheduler's commands, served while a task is halted.
+    pub(super) commands: &'w mpsc::Receiver<Command>,
+    /// Commands that abandoned the halted cycles, for the worker once they have unwound.
+    pub(super) deferred: &'w mut Vec<Command>,
+    /// Saves retained values while a task is halted, as between cycles: the writer, when the
+    /// next save is due, and the interval between saves.
+    pub(super) retain: (Option<&'w RetainWriter>, &'w mut u64, u64),
     pub(super) status: &'w Mutex<SchedulerStatus>,
     /// The preemption alarm; `None` runs every cycle to its end.
     pub(super) alarm: Option<&'w Alarm>,
@@ -51,13 +65,13 @@ pub(super) struct Cycles<'w> {
 
 /// A cycle in progress.
 pub(super) struct Level {
-    task: usize,
-    priority: u8,
-    /// Nanoseconds spent so far in cycles that interrupted this one.
-    preempted_ns: u64,
+    pub(super) task: usize,
+    pub(super) priority: u8,
+    /// Nanoseconds spent so far in cycles that interrupted this one, or halted.
+    pub(super) preempted_ns: u64,
 }
 
-impl Cycles<'_> {
+impl Cycles<'_, '_> {
     /// Runs one cycle of `task` on `engine` (whose located regions hold the areas' values),
     /// then plans its next one and publishes its statistics and fault.
     pub(super) fn run(&mut self, engine: &mut EngineView<'_>, task: usize) {
@@ -80,26 +94,22 @@ impl Cycles<'_> {
         let started = self.now_ns();
         // Forced values hold before and after the cycle, whatever the program assigns.
         self.forces.apply_to_view(engine);
-        let result = match self.alarm {
-            Some(alarm) => {
-                let preemption = Preemption {
-                    due: alarm.due(),
-                    hook: self,
-                };
-                run_guarded(engine, task, started, cycle, Some(preemption))
-            }
-            None => run_guarded(engine, task, started, cycle, None),
-        };
+        // The hook is given without preemption too: it serves the halts of the debugger.
+        let due = self.alarm.map_or(&NEVER_DUE, Alarm::due);
+        let preemption = Preemption { due, hook: self };
+        let result = run_guarded(engine, task, started, cycle, Some(preemption));
         // A panic of the scheduler's own code in a nested cycle unwinds to this cycle's guard
         // without popping its levels; what is left of them belongs to no running cycle.
         self.levels.truncate(depth + 1);
         self.forces.apply_to_view(engine);
-        copy(engine.region(Region::Output), &mut self.areas.output);
-        copy(engine.region(Region::Memory), &mut self.areas.memory);
-        self.forces.apply_to_areas(self.areas);
+        let lock = self.areas_lock;
+        let areas = self.areas.get_or_insert_with(|| super::worker::lock(lock));
+        copy(engine.region(Region::Output), &mut areas.output);
+        copy(engine.region(Region::Memory), &mut areas.memory);
+        self.forces.apply_to_areas(areas);
         *self.cycles_total += 1;
         if self.trace.recording_task() == Some(task) {
-            let (data, areas) = (engine.region(Region::Data), &*self.areas);
+            let (data, areas) = (engine.region(Region::Data), &**areas);
             self.trace
                 .end_of_cycle(cycle + 1, started, |place| read_place(place, data, areas));
         }
@@ -150,6 +160,8 @@ impl Cycles<'_> {
         };
         let overrun = plan.finish(planned, started, ended, preempted_ns, self.pause_ns);
         let fault = match result {
+            // A halted cycle abandoned by a stop, reset or download is no fault.
+            Err(fault) if fault.kind == FaultKind::Abandoned => None,
             Err(fault) => Some(fault),
             Ok(()) if overrun => {
                 let limit_us = image.tasks.get(task).map_or(0, |task| task.watchdog_ns) / 1000;
@@ -178,7 +190,7 @@ impl Cycles<'_> {
     /// Arms the alarm for the earliest planned start of a task of higher priority than
     /// `priority`, and for the next look at the triggers when an event task of higher priority
     /// waits for its trigger.
-    fn arm_above(&self, priority: u8) {
+    pub(super) fn arm_above(&self, priority: u8) {
         let Some(alarm) = self.alarm else {
             return;
         };
@@ -195,7 +207,7 @@ impl Cycles<'_> {
         alarm.arm(at.map(|at| self.epoch + Duration::from_nanos(at)));
     }
 
-    fn disarm(&self) {
+    pub(super) fn disarm(&self) {
         if let Some(alarm) = self.alarm {
             alarm.arm(None);
         }
@@ -203,7 +215,7 @@ impl Cycles<'_> {
 
     /// Looks at the triggers of the event tasks in the interrupted cycle's memory, which holds
     /// the current values of the located areas too (they stay locked meanwhile).
-    fn observe_triggers(&mut self, engine: &EngineView<'_>, now: u64) {
+    pub(super) fn observe_triggers(&mut self, engine: &EngineView<'_>, now: u64) {
         for (task, plan) in self.plans.iter_mut().enumerate() {
             if plan.is_event() {
                 let set = trigger_is_set(engine.image(), task, |region| engine.region(region));
@@ -212,12 +224,12 @@ impl Cycles<'_> {
         }
     }
 
-    fn now_ns(&self) -> u64 {
+    pub(super) fn now_ns(&self) -> u64 {
         self.epoch.elapsed().as_nanos() as u64
     }
 }
 
-impl Preempt for Cycles<'_> {
+impl Preempt for Cycles<'_, '_> {
     /// Runs each task of higher priority than the interrupted one that is due, at most once
     /// each (so the interrupted cycle moves on by at least one safe point between two rounds),
     /// the highest priority first; each may in turn be interrupted by a still higher one.
@@ -241,6 +253,10 @@ impl Preempt for Cycles<'_> {
         if let Some(level) = self.levels.last_mut() {
             level.preempted_ns += spent;
         }
+    }
+
+    fn halt(&mut self, engine: EngineView<'_>, task: usize) {
+        self.serve_halt(engine, task);
     }
 }
 

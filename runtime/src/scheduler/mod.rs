@@ -40,6 +40,7 @@
 
 mod alarm;
 mod cycles;
+mod halt;
 mod plan;
 mod record;
 mod retain_writer;
@@ -365,5 +366,7 @@ type BetweenAction = Box<dyn FnOnce(&mut Between<'_>) + Send>;
 #[cfg(test)]
 mod tests;
 
+#[cfg(test)]
+mod halt_tests;
 #[cfg(test)]
 mod preemption_tests;

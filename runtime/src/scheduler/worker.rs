@@ -20,6 +20,9 @@ use crate::retain::{RetainSnapshot, RetainStore};
 
 mod switch;
 
+/// How long the thread waits for a command while "halt all" holds every task.
+const HOLD_POLL: Duration = Duration::from_millis(10);
+
 /// Everything the scheduler's thread owns.
 pub(super) struct Worker {
     areas: Arc<Mutex<LocatedAreas>>,
@@ -44,6 +47,8 @@ pub(super) struct Worker {
     alarm: Option<Alarm>,
     /// The cycles in progress while one runs, lent to [`Cycles`].
     levels: Vec<Level>,
+    /// Commands that abandoned halted cycles, done once the cycles have unwound.
+    deferred: Vec<Command>,
 }
 
 /// A loaded program and the schedule of its tasks.
@@ -91,6 +96,7 @@ impl Worker {
             cycles_total: 0,
             alarm,
             levels: Vec::with_capacity(PRIORITY_LEVELS),
+            deferred: Vec::new(),
         }
     }
 
@@ -109,7 +115,14 @@ impl Worker {
                     Err(mpsc::TryRecvError::Disconnected) => return self.exit(),
                 }
             }
-            let Some(wait) = self.run_due() else {
+            let wait = self.run_due(commands);
+            // A command that abandoned halted cycles is done now that they have unwound.
+            for command in std::mem::take(&mut self.deferred) {
+                if self.handle(command) == Next::Exit {
+                    return;
+                }
+            }
+            let Some(wait) = wait else {
                 match commands.recv() {
                     Ok(command) => {
                         if self.handle(command) == Next::Exit {
@@ -137,7 +150,7 @@ impl Worker {
 
     /// Runs the task that is due, if any, and returns how long to wait before looking again:
     /// zero after a cycle, `None` when nothing will ever be due without a command.
-    fn run_due(&mut self) -> Option<Duration> {
+    fn run_due(&mut self, commands: &mpsc::Receiver<Command>) -> Option<Duration> {
         if !self.running {
             return None;
         }
@@ -148,8 +161,12 @@ impl Worker {
             self.next_retain_save_ns = now + duration_ns(self.options.retain_save_interval);
         }
         let program = self.program.as_ref()?;
+        if program.engine.debug().holding() {
+            // "Halt all" holds every task: only commands are served, until continue all.
+            return Some(HOLD_POLL);
+        }
         if let Some(task) = plan::pick(&program.plans, now) {
-            self.run_cycle(task);
+            self.run_cycle(task, commands);
             return Some(Duration::ZERO);
         }
         let mut wake = self.next_retain_save_ns;
@@ -176,19 +193,29 @@ impl Worker {
 
     /// Runs one cycle of `task` with the located areas locked (tasks of higher priority may
     /// interrupt it), then plans its next one.
-    fn run_cycle(&mut self, task: usize) {
+    fn run_cycle(&mut self, task: usize, commands: &mpsc::Receiver<Command>) {
         let Some(program) = self.program.as_mut() else {
             return;
         };
-        let mut areas = lock(&self.areas);
-        copy(&areas.input, program.engine.region_mut(Region::Input));
-        copy(&areas.output, program.engine.region_mut(Region::Output));
-        copy(&areas.memory, program.engine.region_mut(Region::Memory));
+        let mut areas = Some(lock(&self.areas));
+        if let Some(areas) = &areas {
+            copy(&areas.input, program.engine.region_mut(Region::Input));
+            copy(&areas.output, program.engine.region_mut(Region::Output));
+            copy(&areas.memory, program.engine.region_mut(Region::Memory));
+        }
         let mut cycles = Cycles {
             plans: &mut program.plans,
-            forces: &self.forces,
+            forces: &mut self.forces,
             trace: &mut self.trace,
             areas: &mut areas,
+            areas_lock: &self.areas,
+            commands,
+            deferred: &mut self.deferred,
+            retain: (
+                self.retain.as_ref(),
+                &mut self.next_retain_save_ns,
+                duration_ns(self.options.retain_save_interval),
+            ),
             status: &self.status,
             alarm: self.alarm.as_ref(),
             epoch: self.epoch,
@@ -199,6 +226,10 @@ impl Worker {
             levels: &mut self.levels,
         };
         cycles.run(&mut program.engine.view(), task);
+        // Abandoned halted cycles have unwound: the next cycles run normally.
+        if program.engine.debug().abandoning() {
+            program.engine.debug_mut().settled();
+        }
     }
 
     /// Looks at the triggers of the event tasks.
@@ -237,7 +268,7 @@ impl Worker {
                 let mut areas = lock(&self.areas);
                 let mut between = Between {
                     memory: self.program.as_mut().map(|program| Memory {
-                        engine: &mut program.engine,
+                        engine: program.engine.view(),
                         areas: &mut areas,
                     }),
                     forces: &mut self.forces,

@@ -212,6 +212,14 @@ impl MotionState {
 
     /// After task `task`'s programs ran at `now_ns`: advances its axes by the time since its
     /// previous cycle (`interval_ns` on the first) and writes their `AXIS_REF`s into `data`.
+    /// Takes `halted_ns` out of task `task`'s axes' clock: its cycle was halted that long by
+    /// the debugger, and the next advance should cover one cycle, not the halt too.
+    pub(crate) fn skip_halted(&mut self, task: usize, halted_ns: i64) {
+        if let Some(Some(last)) = self.last_cycle_ns.get_mut(task) {
+            *last = last.saturating_add(halted_ns);
+        }
+    }
+
     pub(crate) fn after_cycle(
         &mut self,
         task: usize,

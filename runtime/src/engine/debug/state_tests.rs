@@ -1,0 +1,63 @@
+use super::*;
+use crate::test_images::{TestTask, image};
+
+fn three_tasks() -> DebugState {
+    let tasks = [
+        TestTask::cyclic(1_000_000, 3),
+        TestTask::cyclic(1_000_000, 2),
+        TestTask::cyclic(1_000_000, 1),
+    ];
+    DebugState::new(&image(&tasks, &[]))
+}
+
+#[test]
+fn a_task_waits_only_beneath_a_task_halted_in_a_cycle_nested_in_its_own() {
+    let mut debug = three_tasks();
+    debug.cycle_starts(0);
+    debug.cycle_starts(1);
+    debug.enter_halt(1, HaltReason::Halt);
+    // Task 2 runs a cycle from inside task 1's halt: it is above the halt, not beneath.
+    debug.cycle_starts(2);
+    assert!(debug.waiting(0));
+    assert!(!debug.waiting(1), "halted, not waiting");
+    assert!(!debug.waiting(2));
+    debug.cycle_ends(2);
+    debug.continue_task(1).expect("on top");
+    debug.cycle_ends(1);
+    debug.cycle_ends(0);
+    assert!(!debug.waiting(0));
+}
+
+#[test]
+fn halts_resume_last_in_first_out() {
+    let mut debug = three_tasks();
+    debug.cycle_starts(0);
+    debug.enter_halt(0, HaltReason::Halt);
+    // Task 1 runs from inside task 0's halt and halts on top of it.
+    debug.cycle_starts(1);
+    debug.enter_halt(1, HaltReason::Halt);
+    let error = debug.step(0, StepKind::Into).expect_err("beneath");
+    assert_eq!(
+        error.to_string(),
+        "task 'Task0' is halted beneath task 'Task1': continue 'Task1' first"
+    );
+    debug.continue_task(1).expect("on top");
+    debug.step(0, StepKind::Into).expect("on top now");
+    let error = debug.step(2, StepKind::Into).expect_err("not halted");
+    assert_eq!(error.to_string(), "task 'Task2' is not halted");
+}
+
+#[test]
+fn ending_the_session_forgets_breakpoints_steps_and_halts() {
+    let mut debug = three_tasks();
+    debug.begin_session();
+    debug.halt_all();
+    assert!(!debug.holding(), "the next cycle may start, to halt");
+    debug.cycle_starts(2);
+    assert!(debug.holding());
+    debug.enter_halt(2, HaltReason::Halt);
+    let generation = debug.generation();
+    debug.end_session();
+    assert!(!debug.active() && !debug.holding() && !debug.is_halted(2));
+    assert!(debug.generation() != generation);
+}

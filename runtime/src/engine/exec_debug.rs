@@ -1,0 +1,249 @@
+//! The debug variant of running a POU: the task's shadow call stack kept, and at each
+//! statement start a look at the debugger (steps, run to cursor, `HALT`, breakpoints with
+//! their filters, conditions and hit counts), halting there when it says so.
+
+use std::time::Instant;
+
+use super::debug::{HaltReason, LoweredCondition, Pending, StackFrame};
+use super::exec::{Exec, FRAME, INSTANCE};
+use super::fault::FaultKind;
+use super::lower::Flow;
+use super::view::EngineView;
+
+impl Exec<'_> {
+    /// Notes the start of a cycle run with the debugger: an empty stack and its count.
+    pub(super) fn begin_debug_cycle(&mut self, cycle: u64) {
+        if let Some(state) = self.debug.task_mut(self.task) {
+            state.stack.clear();
+            state.cycle = cycle;
+        }
+        self.debug.cycle_starts(self.task);
+    }
+
+    /// Notes the end of a cycle run with the debugger: the flow recording's bits become the
+    /// last complete cycle's.
+    pub(super) fn end_debug_cycle(&mut self, cycle: u64) {
+        self.debug.end_flow_cycle(self.task, cycle + 1);
+    }
+
+    /// Notes the start of one of the task's programs: a step out of (or over the end of) the
+    /// previous program's body halts at its first statement.
+    pub(super) fn begin_debug_program(&mut self) {
+        if let Some(state) = self.debug.task_mut(self.task)
+            && state.pending == Pending::NextProgram
+        {
+            state.pending = Pending::Within(usize::MAX);
+        }
+    }
+
+    /// Runs POU `index` with the current bases, as [`Exec::run`] does, keeping the task's
+    /// shadow stack and looking at the debugger at each statement start.
+    #[inline(never)]
+    pub(super) fn run_debug(&mut self, index: usize) -> Result<(), FaultKind> {
+        let code = self.code;
+        let Some(pou) = code.pous.get(index) else {
+            return Err(FaultKind::Memory);
+        };
+        let frame = StackFrame {
+            pou: index as u32,
+            instruction: 0,
+            instance: self.bases[usize::from(INSTANCE)],
+            frame: self.bases[usize::from(FRAME)],
+            frame_bytes: pou.frame_size as u32,
+        };
+        if let Some(state) = self.debug.task_mut(self.task) {
+            state.stack.push(frame);
+        }
+        let result = self.run_debug_body(index);
+        if let Some(state) = self.debug.task_mut(self.task) {
+            state.stack.pop();
+        }
+        result
+    }
+
+    fn run_debug_body(&mut self, index: usize) -> Result<(), FaultKind> {
+        let code = self.code;
+        let Some(pou) = code.pous.get(index) else {
+            return Err(FaultKind::Memory);
+        };
+        let ops = &pou.ops;
+        let mut pc = 0usize;
+        while let Some(op) = ops.get(pc) {
+            if let Some(top) = self
+                .debug
+                .task_mut(self.task)
+                .and_then(|state| state.stack.last_mut())
+            {
+                top.instruction = pc as u32;
+            }
+            if pou.statement_starts.get(pc).copied().unwrap_or(false) {
+                self.statement(index, pc)?;
+            }
+            match op(self) {
+                Ok(Flow::Next) => pc += 1,
+                Ok(Flow::Jump(target)) => {
+                    let target = target as usize;
+                    if target <= pc
+                        && let Err(fault) = self.tick()
+                    {
+                        self.fault_at.get_or_insert((index, pc));
+                        return Err(fault);
+                    }
+                    pc = target;
+                }
+                Ok(Flow::Return) => break,
+                Err(fault) => {
+                    if *fault != FaultKind::Abandoned {
+                        self.fault_at.get_or_insert((index, pc));
+                    }
+                    return Err(*fault);
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// The task reached the statement starting at instruction `pc` of POU `pou`: halts
+    /// there when a step, run to cursor, `HALT` or a breakpoint says so.
+    fn statement(&mut self, pou: usize, pc: usize) -> Result<(), FaultKind> {
+        let Some(state) = self.debug.task(self.task) else {
+            return Ok(());
+        };
+        let depth = state.stack.len();
+        let instance = self.pointer_to(self.bases[usize::from(INSTANCE)]);
+        self.debug.record_flow(self.task, pou, pc as u32, instance);
+        let Some(state) = self.debug.task(self.task) else {
+            return Ok(());
+        };
+        let mut reason = match state.pending {
+            Pending::Within(most) if depth <= most => Some(HaltReason::Step),
+            Pending::Below(fewer) if depth < fewer => Some(HaltReason::Step),
+            Pending::RunTo(at_pou, at) if at_pou as usize == pou && at as usize == pc => {
+                Some(HaltReason::RunTo)
+            }
+            Pending::Halt => Some(HaltReason::Halt),
+            _ => None,
+        };
+        // A breakpoint that hits ends a step there with its own reason.
+        if self.debug.pou_has_breakpoint(pou)
+            && let Some(hit) = self.breakpoint_hit(pou, pc)
+        {
+            reason = Some(hit);
+        }
+        match reason {
+            Some(reason) => self.halt(reason),
+            None => Ok(()),
+        }
+    }
+
+    /// The first breakpoint at this statement that accepts the task and instance, whose
+    /// condition holds and whose hit mode halts, counting the hits on the way.
+    fn breakpoint_hit(&mut self, pou: usize, pc: usize) -> Option<HaltReason> {
+        let instance = self.pointer_to(self.bases[usize::from(INSTANCE)]);
+        let mut index = 0;
+        while let Some(breakpoint) = self.debug.breakpoints().get(index) {
+            index += 1;
+            if breakpoint.spec.pou as usize != pou
+                || breakpoint.spec.instruction as usize != pc
+                || !breakpoint.accepts(self.task, instance)
+            {
+                continue;
+            }
+            let id = breakpoint.id;
+            let holds = match breakpoint.condition.clone() {
+                None => Ok(true),
+                Some(condition) => self.evaluate(&condition, pou),
+            };
+            match holds {
+                Ok(false) => continue,
+                Ok(true) => {
+                    let breakpoint = self.debug.breakpoints_mut().get_mut(index - 1)?;
+                    breakpoint.hits = breakpoint.hits.saturating_add(1);
+                    if breakpoint
+                        .spec
+                        .hit_mode
+                        .halts(breakpoint.hits, breakpoint.spec.hit_target)
+                    {
+                        return Some(HaltReason::Breakpoint(id));
+                    }
+                }
+                // A faulting condition counts as TRUE and says why the task halted.
+                Err(_) => return Some(HaltReason::ConditionFaulted(id)),
+            }
+        }
+        None
+    }
+
+    /// Runs a condition with the bases of POU `pou`, its scratch area right after the frame.
+    fn evaluate(&mut self, condition: &LoweredCondition, pou: usize) -> Result<bool, FaultKind> {
+        let frame_size = self.code.pous.get(pou).map_or(0, |p| p.frame_size);
+        let frame = self.bases[usize::from(FRAME)];
+        let scratch = frame + frame_size;
+        let end = scratch + condition.scratch_bytes;
+        if end > self.stack_end {
+            return Err(FaultKind::StackOverflow);
+        }
+        self.mem
+            .get_mut(scratch..scratch + condition.init.len())
+            .ok_or(FaultKind::Memory)?
+            .copy_from_slice(&condition.init);
+        let saved_sp = self.sp;
+        self.sp = self.sp.max(end);
+        let mut pc = 0usize;
+        let mut outcome = Ok(());
+        while let Some(op) = condition.ops.get(pc) {
+            match op(self) {
+                Ok(Flow::Next) => pc += 1,
+                // The verifier lets a condition jump only forward, so it ends.
+                Ok(Flow::Jump(target)) if target as usize > pc => pc = target as usize,
+                Ok(Flow::Jump(_)) | Ok(Flow::Return) => break,
+                Err(fault) => {
+                    outcome = Err(*fault);
+                    break;
+                }
+            }
+        }
+        self.sp = saved_sp;
+        outcome?;
+        let result = self
+            .mem
+            .get(frame + condition.result)
+            .ok_or(FaultKind::Memory)?;
+        Ok(*result != 0)
+    }
+
+    /// Halts the task here: hands the engine to the scheduler until the task may go on, and
+    /// moves the watchdog's deadline by the time halted. An abandoned cycle ends here.
+    #[cold]
+    #[inline(never)]
+    fn halt(&mut self, reason: HaltReason) -> Result<(), FaultKind> {
+        let task = self.task;
+        self.debug.enter_halt(task, reason);
+        let paused = Instant::now();
+        if let Some(hook) = self.hook.as_deref_mut() {
+            hook.halt(
+                EngineView {
+                    image: self.image,
+                    regions: self.regions,
+                    code: self.code,
+                    memory: &mut *self.mem,
+                    motion: &mut *self.motion,
+                    debug: &mut *self.debug,
+                },
+                task,
+            );
+        }
+        let halted = paused.elapsed();
+        if let Some((deadline, _)) = &mut self.deadline {
+            *deadline += halted;
+        }
+        self.halted_ns = self
+            .halted_ns
+            .saturating_add(i64::try_from(halted.as_nanos()).unwrap_or(i64::MAX));
+        if self.debug.abandoning() {
+            return Err(FaultKind::Abandoned);
+        }
+        self.debug.leave_halt(task);
+        Ok(())
+    }
+}
