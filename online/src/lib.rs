@@ -10,12 +10,21 @@
 //! third-party Modbus TCP device's coils and registers as typed values.
 
 mod client;
+mod debug_client;
 pub mod device;
 mod error;
 pub mod session;
 
 pub use client::{Client, REQUEST_TIMEOUT, Sample, TraceConfig, Trigger};
+pub use debug_client::{Attached, FlowBitmap};
+// The debugging services' types (`docs/protocol.md` §6), so callers need not depend on the
+// protocol crate.
 pub use error::OnlineError;
+pub use online_protocol::{
+    ALL_TASKS, BreakpointInfo, BreakpointSpec, DebugOptions, DebugStatus, FlowCycle, FlowEntry,
+    FrameRange, HaltReason, HaltState, HitMode, HitRule, MAX_CONDITION_BYTES, MAX_LINGER_S,
+    SessionState, StackFrame, StepKind, TaskDebugState, TaskHalt,
+};
 pub use online_protocol::{
     Enumeration, Fault, Identity, Place, ResetKind as Reset, Resolved, Snapshot, TargetState,
     TaskInfo, TraceState, TraceStatus, Value,
