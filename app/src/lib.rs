@@ -12,6 +12,7 @@
 mod build_cli;
 mod cam_cli;
 pub mod cli;
+pub mod debug_places;
 mod literal_value;
 pub mod modbus_devices;
 pub mod online_cli;
