@@ -12,7 +12,9 @@
 mod build_cli;
 mod cam_cli;
 pub mod cli;
+pub mod debug_cli;
 pub mod debug_places;
+pub mod debug_text;
 mod literal_value;
 pub mod modbus_devices;
 pub mod online_cli;
