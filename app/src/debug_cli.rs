@@ -352,14 +352,15 @@ impl Session {
             }
             return Ok(());
         }
-        self.attach().await?;
         if args.clear_all {
+            self.attach().await?;
             let count = self.client.break_list().await?.len();
             self.client.break_clear(None).await?;
             println!("cleared {count} breakpoint(s)");
             return Ok(());
         }
         if !args.clear.is_empty() {
+            self.attach().await?;
             for id in &args.clear {
                 self.client.break_clear(Some(*id)).await?;
             }
@@ -381,6 +382,8 @@ impl Session {
             None => Vec::new(),
         };
         let hit = hit_rule(args);
+        // Only a place, instance and condition that are right change the target.
+        self.attach().await?;
         let spec = BreakpointSpec {
             pou: statement.pou,
             instruction: statement.instruction,
@@ -459,6 +462,10 @@ impl Session {
 
     /// `rivet continue`.
     async fn resume(&mut self, args: &ContinueArgs) -> anyhow::Result<()> {
+        let target = match &args.to {
+            Some(place) => Some(statement_at(&self.image, place)?),
+            None => None,
+        };
         self.attach().await?;
         if args.end {
             self.client.debug_detach().await?;
@@ -472,9 +479,8 @@ impl Session {
             None
         } else {
             let task = self.halted_task(args.task.as_deref()).await?;
-            match &args.to {
-                Some(place) => {
-                    let statement = statement_at(&self.image, place)?;
+            match target {
+                Some(statement) => {
                     self.client
                         .run_to(task, statement.pou, statement.instruction)
                         .await?;
