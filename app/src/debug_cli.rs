@@ -511,8 +511,17 @@ impl Session {
             Some(self.task_or_only(args.task.as_deref())?)
         };
         self.attach().await?;
-        let before = self.client.halt_state().await?.generation;
+        let state = self.client.halt_state().await?;
+        let before = state.generation;
         self.client.halt(task.unwrap_or(ALL_TASKS)).await?;
+        // A task halted already stays where it is, so there is no new halt to wait for.
+        let already = state.tasks.iter().find(|halt| {
+            halt.state == TaskDebugState::Halted && task.is_none_or(|task| halt.task == task)
+        });
+        if let Some(halt) = already {
+            println!("{}", self.describe(halt, None).await?);
+            return Ok(());
+        }
         let halt = self
             .wait_for_halt(task, before, args.wait, |_| true)
             .await?;
