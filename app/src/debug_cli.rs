@@ -15,10 +15,11 @@ use online::{
 };
 use program_image::{FrameVariableKind, ProgramImage, StructKind, TypeDef};
 
+use crate::debug_bodies::GraphicalBodies;
 use crate::debug_places::{Statement, instance_owner, statement_at};
 use crate::debug_text::{
-    describe_breakpoint, describe_frame, describe_halt, describe_hit_rule, describe_stack_header,
-    describe_task_filter, task_name,
+    describe_breakpoint, describe_frame, describe_halt, describe_hit_rule, describe_place,
+    describe_stack_header, describe_task_filter, task_name,
 };
 use crate::online_cli::Target;
 
@@ -216,6 +217,8 @@ impl DebugCommand {
 struct Session {
     client: Client,
     image: ProgramImage,
+    /// The project's graphical bodies, for places in them.
+    bodies: GraphicalBodies,
     project: PathBuf,
     linger_s: u16,
 }
@@ -231,9 +234,11 @@ pub fn run(command: DebugCommand) -> anyhow::Result<()> {
     runtime.block_on(async move {
         let (client, identity) = crate::online_cli::connect(&debug.target).await?;
         same_build(&image, &identity, &debug.project)?;
+        let bodies = graphical_bodies(&debug.project)?;
         let mut session = Session {
             client,
             image,
+            bodies,
             project: debug.project.clone(),
             linger_s: debug.linger,
         };
@@ -246,6 +251,15 @@ pub fn run(command: DebugCommand) -> anyhow::Result<()> {
             DebugCommand::Flow(args) => session.flow(&args).await,
         }
     })
+}
+
+/// The graphical bodies of the project folder `project`; none for a `.st` file.
+fn graphical_bodies(project: &Path) -> anyhow::Result<GraphicalBodies> {
+    if project.is_file() {
+        return Ok(GraphicalBodies::default());
+    }
+    let loaded = project_model::load_project(project).map_err(crate::cli::describe_load_error)?;
+    Ok(GraphicalBodies::of_project(&loaded.project))
 }
 
 /// Refuses a target that runs another build than `image`, naming both identities.
@@ -269,6 +283,23 @@ fn same_build(image: &ProgramImage, identity: &Identity, project: &Path) -> anyh
 }
 
 impl Session {
+    /// The statement a place names, in a graphical body or by its line.
+    fn statement_at(&self, place: &str) -> Result<Statement, crate::debug_places::PlaceError> {
+        match self.bodies.statement_at(&self.image, place) {
+            Some(found) => found,
+            None => statement_at(&self.image, place),
+        }
+    }
+
+    /// A statement as the commands print it: `pous/FB_Counter.st:12 (FB_Counter)`, or its
+    /// network and element in a graphical body.
+    fn shown(&self, statement: &Statement) -> String {
+        match self.bodies.place_of(statement) {
+            Some(place) => format!("{place} ({})", statement.pou_name),
+            None => statement.to_string(),
+        }
+    }
+
     /// Attaches the debug session to this connection (taking a lingering one over).
     async fn attach(&mut self) -> anyhow::Result<()> {
         self.client
@@ -348,7 +379,10 @@ impl Session {
                 println!("no breakpoints");
             }
             for breakpoint in &list {
-                println!("{}", describe_breakpoint(&self.image, breakpoint));
+                println!(
+                    "{}",
+                    describe_breakpoint(&self.image, &self.bodies, breakpoint)
+                );
             }
             return Ok(());
         }
@@ -368,7 +402,7 @@ impl Session {
             return Ok(());
         }
         let place = args.place.as_deref().context("name the place: FILE:LINE")?;
-        let statement = statement_at(&self.image, place)?;
+        let statement = self.statement_at(place)?;
         let instance = match &args.instance {
             Some(path) => self.instance(path, statement.pou).await?,
             None => 0,
@@ -394,7 +428,7 @@ impl Session {
         };
         let before = self.client.halt_state().await?.generation;
         let (id, replaced) = self.client.break_set(&spec).await?;
-        let mut line = format!("breakpoint {id} at {statement}, ");
+        let mut line = format!("breakpoint {id} at {}, ", self.shown(&statement));
         match &args.instance {
             Some(path) => line.push_str(&format!("instance {path}")),
             None => line.push_str("every instance"),
@@ -463,7 +497,7 @@ impl Session {
     /// `rivet continue`.
     async fn resume(&mut self, args: &ContinueArgs) -> anyhow::Result<()> {
         let target = match &args.to {
-            Some(place) => Some(statement_at(&self.image, place)?),
+            Some(place) => Some(self.statement_at(place)?),
             None => None,
         };
         self.attach().await?;
@@ -485,8 +519,9 @@ impl Session {
                         .run_to(task, statement.pou, statement.instruction)
                         .await?;
                     println!(
-                        "task '{}' runs to {statement}",
-                        task_name(&self.image, task)
+                        "task '{}' runs to {}",
+                        task_name(&self.image, task),
+                        self.shown(&statement)
                     );
                 }
                 None => {
@@ -561,7 +596,10 @@ impl Session {
             if args.frame.is_some_and(|only| only != index) {
                 continue;
             }
-            println!("{}", describe_frame(&self.image, index, frame));
+            println!(
+                "{}",
+                describe_frame(&self.image, &self.bodies, index, frame)
+            );
             if args.values {
                 for (name, value) in self.frame_values(task, index, frame).await? {
                     println!("    {name} = {value}");
@@ -680,12 +718,10 @@ impl Session {
         let mut printed = std::collections::BTreeSet::new();
         for (index, entry) in code.lines.iter().enumerate() {
             if flow.ran(index) && printed.insert((entry.file, entry.line)) {
-                let file = self
-                    .image
-                    .sources
-                    .get(entry.file as usize)
-                    .map_or("?", String::as_str);
-                println!("{file}:{}", entry.line);
+                println!(
+                    "{}",
+                    describe_place(&self.image, &self.bodies, pou, entry.index)
+                );
             }
         }
         if printed.is_empty() {
@@ -712,7 +748,14 @@ impl Session {
         let frames = self.client.stack(halt.task).await?;
         let instance = frames.first().map_or(0, |frame| frame.instance);
         let hits = self.hits_of(halt).await?;
-        Ok(describe_halt(&self.image, halt, instance, hits, step))
+        Ok(describe_halt(
+            &self.image,
+            &self.bodies,
+            halt,
+            instance,
+            hits,
+            step,
+        ))
     }
 
     /// Waits until `task` (or any task) is halted in a state newer than `generation` and

@@ -31,8 +31,10 @@ impl fmt::Display for Statement {
 /// Why a place names no statement; each says what was written and what would do.
 #[derive(Debug, PartialEq, Eq, thiserror::Error)]
 pub enum PlaceError {
-    /// Not written as `FILE:LINE` or `POU:LINE`.
-    #[error("'{0}' is no place: write FILE:LINE (FB_Counter.st:12) or POU:LINE (FB_Counter:12)")]
+    /// Not written as `FILE:LINE`, `POU:LINE` or `FILE:POU:NETWORK[:ELEMENT]`.
+    #[error(
+        "'{0}' is no place: write FILE:LINE (FB_Counter.st:12), POU:LINE (FB_Counter:12) or, in a graphical body, FILE:POU:NETWORK[:ELEMENT] (Interlock.pou.toml:Interlock:2:7)"
+    )]
     Syntax(String),
     /// No source file ends so and no POU has the name.
     #[error("'{written}' names no source file and no POU of the program; its files are {known}")]
@@ -50,6 +52,11 @@ pub enum PlaceError {
         /// The files it ends, comma-separated.
         matches: String,
     },
+    /// No statement of a graphical body's network or element can halt.
+    #[error(
+        "{0}: no statement of this network or element can halt (an operator box such as ADD has none); choose a coil, a box or an assignment"
+    )]
+    NoElementStatement(String),
     /// No statement starts on the line or after it.
     #[error(
         "{file}:{line}: no statement starts on this line or after it (the last statement of the file is on line {last})"

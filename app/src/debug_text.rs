@@ -4,6 +4,7 @@
 use online::{BreakpointInfo, HaltReason, HitMode, HitRule, StackFrame, StepKind, TaskHalt};
 use program_image::ProgramImage;
 
+use crate::debug_bodies::GraphicalBodies;
 use crate::debug_places::{instance_owner, statement_of};
 
 /// The name of task `task`, or its number when the image has no such task.
@@ -14,18 +15,33 @@ pub fn task_name(image: &ProgramImage, task: u8) -> String {
         .map_or_else(|| format!("#{task}"), |task| task.name.clone())
 }
 
-/// Where code is, as `rivet check` and `rivet faults` print places: `FILE:LINE`, with the
-/// instance it runs on by path and the POU (`pous/FB_Counter.st:12 in Main.fbA (FB_Counter)`).
+/// The place of the statement instruction `instruction` of POU `pou` belongs to, as
+/// `rivet check` prints places: `FILE:LINE`, or `FILE:POU:NETWORK:ELEMENT` in a graphical
+/// body.
+pub fn describe_place(
+    image: &ProgramImage,
+    bodies: &GraphicalBodies,
+    pou: u32,
+    instruction: u32,
+) -> String {
+    match statement_of(image, pou, instruction) {
+        Some(statement) => bodies
+            .place_of(&statement)
+            .unwrap_or_else(|| format!("{}:{}", statement.file, statement.line)),
+        None => format!("instruction {instruction}"),
+    }
+}
+
+/// Where code is, with the instance it runs on by path and the POU
+/// (`pous/FB_Counter.st:12 in Main.fbA (FB_Counter)`).
 pub fn describe_position(
     image: &ProgramImage,
+    bodies: &GraphicalBodies,
     pou: u32,
     instruction: u32,
     instance: u64,
 ) -> String {
-    let place = match statement_of(image, pou, instruction) {
-        Some(statement) => format!("{}:{}", statement.file, statement.line),
-        None => format!("instruction {instruction}"),
-    };
+    let place = describe_place(image, bodies, pou, instruction);
     let name = image
         .pous
         .get(pou as usize)
@@ -65,6 +81,7 @@ pub fn describe_reason(halt: &TaskHalt, hits: Option<u32>, step: Option<StepKind
 /// Main.fbA (FB_Counter): step over ended`. `instance` is the innermost frame's.
 pub fn describe_halt(
     image: &ProgramImage,
+    bodies: &GraphicalBodies,
     halt: &TaskHalt,
     instance: u64,
     hits: Option<u32>,
@@ -73,7 +90,7 @@ pub fn describe_halt(
     format!(
         "task '{}' halted at {}: {}",
         task_name(image, halt.task),
-        describe_position(image, halt.pou, halt.instruction, instance),
+        describe_position(image, bodies, halt.pou, halt.instruction, instance),
         describe_reason(halt, hits, step)
     )
 }
@@ -100,11 +117,13 @@ pub fn describe_stack_header(image: &ProgramImage, halt: &TaskHalt, hits: Option
 
 /// One frame of a call stack: `#0 pous/FB_Counter.st:12  Main.fbA  (FB_Counter)`; a
 /// function's frame shows `-` for its instance.
-pub fn describe_frame(image: &ProgramImage, index: usize, frame: &StackFrame) -> String {
-    let place = match statement_of(image, frame.pou, frame.instruction) {
-        Some(statement) => format!("{}:{}", statement.file, statement.line),
-        None => format!("instruction {}", frame.instruction),
-    };
+pub fn describe_frame(
+    image: &ProgramImage,
+    bodies: &GraphicalBodies,
+    index: usize,
+    frame: &StackFrame,
+) -> String {
+    let place = describe_place(image, bodies, frame.pou, frame.instruction);
     let name = image
         .pous
         .get(frame.pou as usize)
@@ -134,9 +153,16 @@ pub fn describe_task_filter(image: &ProgramImage, task: u8) -> String {
 
 /// One line of `rivet break --list`: id, place, instance, task, condition, hit rule and
 /// count.
-pub fn describe_breakpoint(image: &ProgramImage, breakpoint: &BreakpointInfo) -> String {
+pub fn describe_breakpoint(
+    image: &ProgramImage,
+    bodies: &GraphicalBodies,
+    breakpoint: &BreakpointInfo,
+) -> String {
     let place = match statement_of(image, breakpoint.pou, breakpoint.instruction) {
-        Some(statement) => statement.to_string(),
+        Some(statement) => match bodies.place_of(&statement) {
+            Some(place) => format!("{place} ({})", statement.pou_name),
+            None => statement.to_string(),
+        },
         None => format!(
             "instruction {} of POU {}",
             breakpoint.instruction, breakpoint.pou

@@ -51,7 +51,14 @@ fn a_halt_names_the_task_the_line_the_instance_and_why() {
     let fb_b = pointer(&image, "Main.fbB");
     let halt = halted_at(&image, "counter.st:4", HaltReason::Step);
     assert_eq!(
-        describe_halt(&image, &halt, fb_b, None, Some(StepKind::Over)),
+        describe_halt(
+            &image,
+            &GraphicalBodies::default(),
+            &halt,
+            fb_b,
+            None,
+            Some(StepKind::Over)
+        ),
         "task 'MainTask' halted at pous/counter.st:4 in Main.fbB (FB_Counter): step over ended"
     );
     let halt = halted_at(&image, "counter.st:4", HaltReason::Breakpoint);
@@ -81,12 +88,22 @@ fn stack_frames_show_the_line_of_the_call_and_the_instance_by_path() {
     let fb_a = pointer(&image, "Main.fbA");
     let main = pointer(&image, "Main");
     assert_eq!(
-        describe_frame(&image, 0, &frame(inner.pou, inner.instruction, fb_a)),
+        describe_frame(
+            &image,
+            &GraphicalBodies::default(),
+            0,
+            &frame(inner.pou, inner.instruction, fb_a)
+        ),
         "#0 pous/counter.st:4  Main.fbA  (FB_Counter)"
     );
     // The call instruction lies after the statement's start: the statement's line is shown.
     assert_eq!(
-        describe_frame(&image, 1, &frame(call.pou, call.instruction + 1, main)),
+        describe_frame(
+            &image,
+            &GraphicalBodies::default(),
+            1,
+            &frame(call.pou, call.instruction + 1, main)
+        ),
         "#1 pous/counter.st:9  Main  (Main)"
     );
 }
@@ -109,7 +126,7 @@ fn a_breakpoint_line_has_its_place_filters_and_hits() {
         conditional: true,
     };
     assert_eq!(
-        describe_breakpoint(&image, &breakpoint),
+        describe_breakpoint(&image, &GraphicalBodies::default(), &breakpoint),
         "2  pous/counter.st:4 (FB_Counter)  instance Main.fbA  any task  conditional  when the hit count is a multiple of 5  hits 7"
     );
     assert_eq!(describe_task_filter(&image, 0), "task 'MainTask'");

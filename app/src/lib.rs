@@ -12,6 +12,7 @@
 mod build_cli;
 mod cam_cli;
 pub mod cli;
+pub mod debug_bodies;
 pub mod debug_cli;
 pub mod debug_places;
 pub mod debug_text;
