@@ -4,7 +4,8 @@
 //! the example machine project when none is given. With a subcommand it works headless:
 //! `rivet check`, `rivet fmt`, `rivet build`, `rivet simulate`, and the online commands
 //! (`rivet status`, `download`, `start`, `stop`, `reset`, `read`, `write`, `force`, `unforce`,
-//! `forces`, `faults`) against a runtime.
+//! `forces`, `faults`) and the debugging ones (`break`, `step`, `continue`, `halt`, `stack`,
+//! `flow`) against a runtime.
 //!
 //! This is the only crate that knows eframe; it owns the window, the docking layout, the device
 //! tree and the menus, and it applies the edits that editors emit.
