@@ -251,3 +251,70 @@ fn a_flow_bitmap_says_which_statements_ran() {
     assert!(flow.ran(0) && !flow.ran(1) && flow.ran(2) && flow.ran(9));
     assert!(!flow.ran(8) && !flow.ran(200));
 }
+
+#[tokio::test]
+async fn a_flow_bitmap_is_read_from_where_each_answer_ended_until_every_statement() {
+    let answer: Answerer = Box::new(|request| match request {
+        DebugRequest::FlowRead { from, .. } => {
+            // 2,000 statements: 250 bytes, more than one answer carries.
+            let first = (*from / 8) as usize;
+            let end = (first + online_protocol::MAX_FLOW_BITMAP_BYTES).min(250);
+            Ok(DebugResponse::FlowRead {
+                cycle: 9,
+                statements: 2000,
+                bitmap: (first..end).map(|byte| byte as u8).collect(),
+            })
+        }
+        _ => Err(Refusal::bad("unexpected")),
+    });
+    let (mut client, seen) = fake(answer).await;
+    let flow = client.flow_read(0, FlowCycle::LastComplete).await.unwrap();
+    assert_eq!(
+        (flow.cycle, flow.statements, flow.bitmap.len()),
+        (9, 2000, 250)
+    );
+    assert_eq!(flow.bitmap[249], 249);
+    let froms: Vec<u32> = seen
+        .lock()
+        .unwrap()
+        .iter()
+        .map(|request| match request {
+            DebugRequest::FlowRead { from, .. } => *from,
+            other => panic!("{other:?}"),
+        })
+        .collect();
+    assert_eq!(froms, [0, 224 * 8]);
+}
+
+#[tokio::test]
+async fn frame_writes_are_split_into_frames_that_fit() {
+    let answer: Answerer = Box::new(|request| match request {
+        DebugRequest::FrameWrite { values, .. } => {
+            let bytes: usize = values.iter().map(|(_, v)| 6 + v.len()).sum();
+            assert!(
+                20 + bytes <= MAX_PAYLOAD_BYTES,
+                "{bytes} bytes in one write"
+            );
+            Ok(DebugResponse::FrameWrite)
+        }
+        _ => Err(Refusal::bad("unexpected")),
+    });
+    let (mut client, seen) = fake(answer).await;
+    client
+        .frame_write(0, 1, &[(0, vec![1; 500]), (600, vec![2; 4])])
+        .await
+        .unwrap();
+    let written: Vec<(u32, usize)> = seen
+        .lock()
+        .unwrap()
+        .iter()
+        .flat_map(|request| match request {
+            DebugRequest::FrameWrite { values, .. } => values
+                .iter()
+                .map(|(range, v)| (range.offset, v.len()))
+                .collect::<Vec<_>>(),
+            other => panic!("{other:?}"),
+        })
+        .collect();
+    assert_eq!(written, [(0, 224), (224, 224), (448, 52), (600, 4)]);
+}
