@@ -4,6 +4,7 @@
 #![allow(clippy::unwrap_used, clippy::expect_used)] // A panic is a failed test.
 
 use clap::Parser as _;
+use online::HitRule;
 
 use super::*;
 use crate::cli::{Cli, Command};

@@ -13,6 +13,7 @@
 mod build_cli;
 mod cam_cli;
 pub mod cli;
+mod debug_args;
 pub mod debug_bodies;
 pub mod debug_cli;
 pub mod debug_places;
