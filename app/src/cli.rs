@@ -1,6 +1,7 @@
 //! The headless command line: `rivet check`, `rivet fmt`, `rivet build`, `rivet simulate`, and
 //! the online commands (`rivet status`, `download`, `start`, `stop`, `reset`, `read`, `write`,
-//! `force`, `unforce`, `forces`, `faults`).
+//! `force`, `unforce`, `forces`, `faults`) and the debugging ones (`break`, `step`, `continue`,
+//! `halt`, `stack`, `flow`).
 
 #![allow(clippy::print_stdout, clippy::print_stderr)] // Printing is what a CLI is for.
 
@@ -11,6 +12,7 @@ use std::process::ExitCode;
 use clap::{Parser, Subcommand};
 use project_model::{LoadError, load_project, save_project};
 
+use crate::debug_cli::{self, DebugCommand};
 use crate::online_cli::{self, OnlineCommand, Target};
 
 /// Rivet: an engineering studio for IEC 61131-3 controllers.
@@ -211,6 +213,18 @@ pub enum Command {
         #[command(flatten)]
         target: Target,
     },
+    /// Set a breakpoint at FILE:LINE, or list or clear them (`docs/debugging.md` §7).
+    Break(debug_cli::BreakArgs),
+    /// Step the halted task into, over or out of a call, and show where it halts.
+    Step(debug_cli::StepArgs),
+    /// Let a halted task (or every task) run on, to the next breakpoint or to a place.
+    Continue(debug_cli::ContinueArgs),
+    /// Halt a task (or every task) at its next statement, and show where.
+    Halt(debug_cli::HaltArgs),
+    /// Show a halted task's call stack, with each frame's variables on request.
+    Stack(debug_cli::StackArgs),
+    /// Record one cycle of a task and print the lines of a POU that ran.
+    Flow(debug_cli::FlowArgs),
 }
 
 /// Runs a subcommand and returns the process exit code.
@@ -276,6 +290,12 @@ pub fn run(command: Command) -> ExitCode {
         }
         Command::Forces { target } => online_cli::run(&target, OnlineCommand::Forces),
         Command::Faults { target } => online_cli::run(&target, OnlineCommand::Faults),
+        Command::Break(args) => debug_cli::run(DebugCommand::Break(args)),
+        Command::Step(args) => debug_cli::run(DebugCommand::Step(args)),
+        Command::Continue(args) => debug_cli::run(DebugCommand::Continue(args)),
+        Command::Halt(args) => debug_cli::run(DebugCommand::Halt(args)),
+        Command::Stack(args) => debug_cli::run(DebugCommand::Stack(args)),
+        Command::Flow(args) => debug_cli::run(DebugCommand::Flow(args)),
         Command::Trace {
             vars,
             task,

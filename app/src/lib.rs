@@ -4,7 +4,8 @@
 //! the example machine project when none is given. With a subcommand it works headless:
 //! `rivet check`, `rivet fmt`, `rivet build`, `rivet simulate`, and the online commands
 //! (`rivet status`, `download`, `start`, `stop`, `reset`, `read`, `write`, `force`, `unforce`,
-//! `forces`, `faults`) against a runtime.
+//! `forces`, `faults`) and the debugging ones (`break`, `step`, `continue`, `halt`, `stack`,
+//! `flow`) against a runtime.
 //!
 //! This is the only crate that knows eframe; it owns the window, the docking layout, the device
 //! tree and the menus, and it applies the edits that editors emit.
@@ -12,6 +13,11 @@
 mod build_cli;
 mod cam_cli;
 pub mod cli;
+mod debug_args;
+pub mod debug_bodies;
+pub mod debug_cli;
+pub mod debug_places;
+pub mod debug_text;
 mod literal_value;
 pub mod modbus_devices;
 pub mod online_change_cli;

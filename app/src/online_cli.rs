@@ -54,6 +54,13 @@ impl Target {
     }
 }
 
+/// Connects to the target, logging in when a password is given.
+pub(crate) async fn connect(target: &Target) -> anyhow::Result<(Client, online::Identity)> {
+    let address = target.address()?;
+    let password = target.password()?;
+    Ok(Client::connect(address, password.as_deref()).await?)
+}
+
 /// One online command.
 #[derive(Debug)]
 pub enum OnlineCommand {

@@ -1,11 +1,15 @@
 //! The online commands against a real `rivet-runtime` on loopback: download, start, read,
-//! write, force, unforce, trace, stop, faults, and the password.
+//! write, force, unforce, trace, stop, faults, and the password; the debugging commands in
+//! `debugging`.
 
 #![allow(clippy::unwrap_used, clippy::expect_used)] // Test helpers may panic: a panic is a failed test.
 
 use std::io::{BufRead as _, BufReader};
 use std::path::{Path, PathBuf};
 use std::process::{Child, Command, Output, Stdio};
+
+#[path = "online_cli/debugging.rs"]
+mod debugging;
 
 /// The runtime binary, built beside `rivet` by `cargo test --workspace`.
 fn runtime_binary() -> PathBuf {

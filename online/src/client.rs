@@ -77,7 +77,8 @@ const VALUES_FIXED_BYTES: usize = TOKEN_BYTES + 1;
 pub struct Client {
     address: SocketAddr,
     context: Context,
-    token: u128,
+    /// The token of `LOGIN`, 0 without a password; the debugging services carry it too.
+    pub(crate) token: u128,
 }
 
 impl Client {
@@ -133,7 +134,7 @@ impl Client {
     }
 
     /// One service: the request out, the answer of the same service back.
-    async fn call(&mut self, request: &Request) -> Result<Response, OnlineError> {
+    pub(crate) async fn call(&mut self, request: &Request) -> Result<Response, OnlineError> {
         let frame = request.encode();
         if frame.len() > MAX_PAYLOAD_BYTES + 1 {
             return Err(OnlineError::Protocol(format!(
@@ -174,7 +175,10 @@ impl Client {
         };
         Response::decode(request, &bytes)
             .map_err(protocol_error)?
-            .map_err(refused)
+            .map_err(|refusal| match request {
+                Request::Debug(debug) => crate::debug_client::debug_refused(debug, refusal),
+                _ => refused(refusal),
+            })
     }
 
     /// `IDENTIFY`.
@@ -595,7 +599,7 @@ fn refused(refusal: Refusal) -> OnlineError {
 
 /// An answer of another service than asked: `Response::decode` never gives one, as it
 /// decodes the answer of the request's service, but the client does not rely on it.
-fn unexpected(response: &Response) -> OnlineError {
+pub(crate) fn unexpected(response: &Response) -> OnlineError {
     OnlineError::Protocol(format!(
         "an answer of service {:?} where another was expected",
         response.service()

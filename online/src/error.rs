@@ -42,6 +42,28 @@ pub enum OnlineError {
     /// Another refusal, with the target's words.
     #[error("the target refused: {0}")]
     Rejected(String),
+    /// A debugging service refused, with the service, the status and the target's words
+    /// (`docs/protocol.md` §6: 7 for the wrong state, 2 for no statement start or a refused
+    /// condition, 5 for a place outside the frame).
+    #[error("the target refused {service} (status {status}): {message}")]
+    DebugRefused {
+        /// The service's name as `docs/protocol.md` writes it (`BREAK_SET`).
+        service: &'static str,
+        /// The status number.
+        status: u8,
+        /// The target's words.
+        message: String,
+    },
+    /// A breakpoint condition too long for the `BREAK_SET` frame, refused before sending.
+    #[error(
+        "this condition compiles to {bytes} bytes; the target takes at most {limit}: split it or watch a variable instead"
+    )]
+    ConditionTooLong {
+        /// The compiled condition's bytes.
+        bytes: usize,
+        /// The most the frame carries (`online_protocol::MAX_CONDITION_BYTES`).
+        limit: usize,
+    },
     /// A Modbus exception.
     #[error("the target answered Modbus exception {0}")]
     Exception(String),

@@ -10,15 +10,24 @@
 //! third-party Modbus TCP device's coils and registers as typed values.
 
 mod client;
+mod debug_client;
 pub mod device;
 mod error;
 pub mod session;
 
 pub use client::{Client, REQUEST_TIMEOUT, Sample, TraceConfig, Trigger};
+pub use debug_client::{Attached, FlowBitmap};
+// The debugging services' types (`docs/protocol.md` §6), so callers need not depend on the
+// protocol crate.
 pub use error::OnlineError;
 pub use online_protocol::{
-    ChangeApplied, ChangeCheck, ChangeDetailEntry, Enumeration, Fault, Identity, Place,
-    ResetKind as Reset, Resolved, Snapshot, TargetState, TaskInfo, TraceState, TraceStatus, Value,
+    ALL_TASKS, BreakpointInfo, BreakpointSpec, DebugOptions, DebugStatus, FlowCycle, FlowEntry,
+    FrameRange, HaltReason, HaltState, HitMode, HitRule, MAX_CONDITION_BYTES, MAX_LINGER_S,
+    SessionState, StackFrame, StepKind, TaskDebugState, TaskHalt,
+};
+pub use online_protocol::{
+    ChangeApplied, ChangeCheck, ChangeDetailEntry, Enumeration, Fault, Identity, Place, ResetKind as Reset, Resolved, Snapshot, TargetState,
+    TaskInfo, TraceState, TraceStatus, Value,
 };
 // The string and enumeration type tags of a resolved variable, so callers tell strings from elementary values
 // without writing the protocol's numbers by hand or depending on the protocol crate.
