@@ -51,9 +51,9 @@ pub use sfc::{
     sfc_layout,
 };
 pub use st_editor::{
-    CompletionItem, CompletionKind, EditorDiagnostic, EditorTexts, Gesture, Highlight, InlineValue,
-    KeywordCompletions, LanguageServices, Severity, StEditor, StEditorOutput, TextBuffer,
-    TextChange,
+    BreakpointLook, BreakpointMark, CompletionItem, CompletionKind, EditorDiagnostic, EditorTexts,
+    Gesture, Highlight, InlineValue, KeywordCompletions, LanguageServices, Severity, StDebugMarks,
+    StEditor, StEditorOutput, TextBuffer, TextChange,
 };
 pub use st_highlight::{TokenClass, classify_tokens};
 pub use table_texts::TableTexts;

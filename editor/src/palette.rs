@@ -61,6 +61,18 @@ pub struct EditorPalette {
     pub active_step: Color32,
     /// The name and time written on an active SFC step, readable on its fill.
     pub active_step_text: Color32,
+    /// A breakpoint's circle (CODESYS draws them red).
+    pub breakpoint: Color32,
+    /// The bar or dot inside a conditional or counted breakpoint's circle.
+    pub breakpoint_symbol: Color32,
+    /// The arrow at a halted task's current statement (CODESYS draws it yellow).
+    pub halt_marker: Color32,
+    /// The outline of the halt arrow, so it shows on the breakpoint's red.
+    pub halt_outline: Color32,
+    /// The background of a halted task's current statement or element.
+    pub halt_line: Color32,
+    /// The flow-control marks of the statements that ran in the last cycle.
+    pub flow_mark: Color32,
 }
 
 impl EditorPalette {
@@ -119,6 +131,12 @@ impl EditorPalette {
             insert_point: visuals.warn_fg_color,
             active_step: link.gamma_multiply(0.6),
             active_step_text: visuals.strong_text_color(),
+            breakpoint: visuals.error_fg_color,
+            breakpoint_symbol: visuals.extreme_bg_color,
+            halt_marker: warn,
+            halt_outline: strong,
+            halt_line: warn.gamma_multiply(0.3),
+            flow_mark: link,
         }
     }
 }

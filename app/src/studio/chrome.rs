@@ -5,8 +5,10 @@ use egui::{RichText, Ui};
 use online::{Reset, TargetState};
 
 use super::command::{Command, Commands};
-use super::i18n::{ChartText, Language, Text};
+use super::debug::DebugCommand;
+use super::i18n::{ChartText, DebugText, Language, Text};
 use super::online::{Phase, TargetKind};
+use super::pane::Pane;
 use super::settings::Theme;
 use super::theme::colors_for;
 use super::view::StudioView;
@@ -187,6 +189,7 @@ impl Chrome<'_, '_> {
                     Command::ReleaseAllForces,
                 );
             });
+            self.debug_menu_ui(ui);
             ui.menu_button(Text::Settings.get(language), |ui| {
                 ui.menu_button(Text::LanguageMenu.get(language), |ui| {
                     for choice in Language::ALL {
@@ -208,6 +211,90 @@ impl Chrome<'_, '_> {
                 ui.label(Text::AboutText.get(language));
                 ui.label(format!("Rivet {}", env!("CARGO_PKG_VERSION")));
             });
+        });
+    }
+
+    /// The Debug menu (`docs/debugging.md` §4): breakpoints work offline, the rest while
+    /// logged in, stepping while a task is halted.
+    fn debug_menu_ui(&mut self, ui: &mut Ui) {
+        let language = self.view.language;
+        let has_project = self.view.session.is_some();
+        let logged_in = self.view.online.is_logged_in();
+        let halted = self.view.debug.is_halted();
+        ui.menu_button(DebugText::Debug.get(language), |ui| {
+            let items = [
+                (
+                    DebugText::ToggleBreakpoint,
+                    "F9",
+                    has_project,
+                    Command::ToggleBreakpointAtCaret,
+                ),
+                (
+                    DebugText::Continue,
+                    "F5",
+                    halted,
+                    Command::Debug(DebugCommand::Continue),
+                ),
+                (
+                    DebugText::StepOver,
+                    "F10",
+                    halted,
+                    Command::Debug(DebugCommand::StepOver),
+                ),
+                (
+                    DebugText::StepInto,
+                    "F8",
+                    halted,
+                    Command::Debug(DebugCommand::StepInto),
+                ),
+                (
+                    DebugText::StepOut,
+                    "Shift+F10",
+                    halted,
+                    Command::Debug(DebugCommand::StepOut),
+                ),
+                (DebugText::RunToCursor, "", halted, Command::RunToCaret),
+                (
+                    DebugText::HaltAll,
+                    "",
+                    logged_in,
+                    Command::Debug(DebugCommand::HaltAll),
+                ),
+            ];
+            for (text, shortcut, enabled, command) in items {
+                let button = egui::Button::new(text.get(language)).shortcut_text(shortcut);
+                if ui.add_enabled(enabled, button).clicked() {
+                    self.commands.push(command);
+                }
+            }
+            let tasks = self.view.online.tasks();
+            ui.add_enabled_ui(logged_in && !tasks.is_empty(), |ui| {
+                ui.menu_button(DebugText::HaltTask.get(language), |ui| {
+                    for task in tasks {
+                        if ui.button(&task.name).clicked() {
+                            self.commands
+                                .push(Command::Debug(DebugCommand::Halt(task.name.clone())));
+                        }
+                    }
+                });
+            });
+            let mut flow = self.view.debug.flow_control;
+            if ui
+                .checkbox(&mut flow, DebugText::FlowControl.get(language))
+                .changed()
+            {
+                self.commands
+                    .push(Command::Debug(DebugCommand::SetFlowControl(flow)));
+            }
+            ui.separator();
+            for (text, pane) in [
+                (DebugText::Breakpoints, Pane::Breakpoints),
+                (DebugText::CallStack, Pane::CallStack),
+            ] {
+                if ui.button(text.get(language)).clicked() {
+                    self.commands.push(Command::ShowPane(pane));
+                }
+            }
         });
     }
 

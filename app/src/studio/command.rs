@@ -6,6 +6,7 @@
 
 use project_model::{Edit, TextTarget, TraceConfig};
 
+use super::debug::{Breakpoint, BreakpointPlace, DebugCommand};
 use super::i18n::Language;
 use super::online::{ForceSource, TargetKind};
 use super::pane::Pane;
@@ -103,6 +104,23 @@ pub(crate) enum Command {
     SetTheme(Theme),
     /// Log in to another kind of target next time.
     SetTarget(TargetKind),
+    /// Set or clear the breakpoint of a line of a body (F9, a click in the gutter); the line
+    /// moves to the statement that starts there or next.
+    ToggleBreakpoint(BreakpointPlace),
+    /// Toggle the breakpoint at the caret of the last Structured Text editor used (the menu).
+    ToggleBreakpointAtCaret,
+    /// Replace the breakpoint on its place (enabled, condition, hit count, filters).
+    UpdateBreakpoint(Breakpoint),
+    /// Remove the breakpoint on a place.
+    RemoveBreakpoint(BreakpointPlace),
+    /// Remove every breakpoint of the project.
+    RemoveAllBreakpoints,
+    /// Send a debugging command to the target.
+    Debug(DebugCommand),
+    /// Run the halted task to the caret of the last Structured Text editor used.
+    RunToCaret,
+    /// Show a frame of a halted task's call stack and open its POU at its line.
+    ShowFrame(String, usize),
 }
 
 /// Where panes, menus and shortcuts put their commands during a frame; the studio takes them

@@ -101,8 +101,28 @@ impl Dock {
         self.show(&pane);
     }
 
-    /// Brings `pane`'s tab forward.
+    /// Brings `pane`'s tab forward; a debugging pane not in the layout yet (they are not in
+    /// the default one) is added beside the messages first.
     pub fn show(&mut self, pane: &Pane) {
+        if matches!(pane, Pane::Breakpoints | Pane::CallStack)
+            && self.tree.tiles.find_pane(pane).is_none()
+        {
+            let beside = self
+                .tree
+                .tiles
+                .find_pane(&Pane::Messages)
+                .and_then(|messages| self.tree.tiles.parent_of(messages));
+            let id = self.tree.tiles.insert_pane(pane.clone());
+            match beside.and_then(|group| self.tree.tiles.get_mut(group)) {
+                Some(Tile::Container(container)) => container.add_child(id),
+                _ => {
+                    let group = self.editor_group();
+                    if let Some(Tile::Container(container)) = self.tree.tiles.get_mut(group) {
+                        container.add_child(id);
+                    }
+                }
+            }
+        }
         self.tree
             .make_active(|_, tile| matches!(tile, Tile::Pane(p) if p == pane));
     }

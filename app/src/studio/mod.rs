@@ -7,6 +7,7 @@ mod cam_documents;
 mod chrome;
 mod command;
 mod cycle_plot;
+mod debug;
 mod device_documents;
 mod device_refusals;
 mod device_tree;
@@ -47,6 +48,10 @@ use std::path::PathBuf;
 
 pub use build_job::{BuildMessage, BuildOutcome};
 pub use cycle_plot::{CYCLE_HISTORY_POINTS, CycleFigures, CycleHistory, CyclePoint, cycle_plot_ui};
+pub use debug::{
+    Breakpoint, BreakpointPlace, Breakpoints, DebugCommand, DebugState, DebugTarget, HaltedTask,
+    HitMode, StackFrame,
+};
 pub use dock::Dock;
 pub use i18n::{Language, Text};
 pub use online::{LiveValue, Online, Phase, TargetKind, TracePhase};

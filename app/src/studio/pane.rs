@@ -2,7 +2,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::i18n::{Language, Text};
+use super::i18n::{DebugText, Language, Text};
 use super::tree_node::TreeNode;
 
 /// A pane of the docking layout: the fixed tool panes and one pane per open document.
@@ -24,6 +24,10 @@ pub enum Pane {
     Trace,
     /// Task statistics and the fault log.
     Tasks,
+    /// The breakpoints of the project; opened from the Debug menu.
+    Breakpoints,
+    /// The call stacks of the halted tasks; opened from the Debug menu and by a halt.
+    CallStack,
 }
 
 impl Pane {
@@ -48,6 +52,8 @@ impl Pane {
             Pane::Forces => Text::Forces.get(language),
             Pane::Trace => Text::Trace.get(language),
             Pane::Tasks => Text::TasksAndFaults.get(language),
+            Pane::Breakpoints => DebugText::Breakpoints.get(language),
+            Pane::CallStack => DebugText::CallStack.get(language),
             Pane::Document(_) => "",
         }
     }

@@ -48,6 +48,10 @@ impl Behavior<Pane> for PaneBehavior<'_> {
                     panes::trace_ui(view, trace, plot, commands, ui)
                 }
                 Pane::Tasks => panes::tasks_ui(view, commands, ui),
+                Pane::Breakpoints => {
+                    panes::breakpoints_ui(view, &mut states.breakpoints, commands, ui);
+                }
+                Pane::CallStack => panes::call_stack_ui(view, commands, ui),
             }
         });
         UiResponse::None

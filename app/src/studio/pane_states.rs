@@ -2,7 +2,7 @@
 
 use super::cam_documents::CamDocuments;
 use super::device_documents::DeviceDocuments;
-use super::panes::{TracePaneState, WatchPaneState};
+use super::panes::{BreakpointsPaneState, TracePaneState, WatchPaneState};
 use super::task_editor::TaskEditorState;
 use super::text_documents::TextDocuments;
 use super::trace_view::TraceViewState;
@@ -29,6 +29,8 @@ pub(crate) struct PaneStates {
     pub cams: CamDocuments,
     /// The device editors' typed text and refusals.
     pub devices: DeviceDocuments,
+    /// The Breakpoints pane's dialog.
+    pub breakpoints: BreakpointsPaneState,
 }
 
 impl PaneStates {

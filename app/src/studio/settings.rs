@@ -1,6 +1,10 @@
 //! Settings remembered between runs of the studio.
 
+use std::collections::BTreeMap;
+
 use serde::{Deserialize, Serialize};
+
+use super::debug::Breakpoints;
 
 use super::i18n::Language;
 use super::online::TargetKind;
@@ -18,6 +22,16 @@ pub struct Settings {
     pub theme: Theme,
     /// The target the studio logs in to.
     pub target: TargetKind,
+    /// The breakpoints of each project, by its folder: kept with the studio, not in the
+    /// project, as they belong to one user's debugging (`docs/debugging.md` §3).
+    pub breakpoints: BTreeMap<String, Breakpoints>,
+}
+
+impl Settings {
+    /// The key of `dir`'s breakpoints in [`Settings::breakpoints`].
+    pub fn project_key(dir: &std::path::Path) -> String {
+        dir.to_string_lossy().into_owned()
+    }
 }
 
 /// The colour theme.

@@ -164,6 +164,21 @@ pub(crate) fn editor_palette(dark_mode: bool) -> EditorPalette {
         } else {
             Color32::BLACK
         },
+        // CODESYS draws breakpoints red and the halted statement with a yellow arrow.
+        breakpoint: Color32::from_rgb(200, 40, 40),
+        breakpoint_symbol: Color32::WHITE,
+        halt_marker: Color32::from_rgb(250, 210, 40),
+        halt_outline: if dark_mode {
+            Color32::BLACK
+        } else {
+            Color32::from_rgb(90, 70, 0)
+        },
+        halt_line: if dark_mode {
+            Color32::from_rgba_unmultiplied(200, 170, 30, 70)
+        } else {
+            Color32::from_rgba_unmultiplied(255, 230, 80, 140)
+        },
+        flow_mark: Color32::from_rgb(30, 160, 70),
     }
 }
 

@@ -6,6 +6,7 @@ use project_model::{LoadProblem, Project};
 
 use super::build_job::BuildOutcome;
 use super::cycle_plot::CycleHistory;
+use super::debug::{Breakpoints, DebugState};
 use super::i18n::Language;
 use super::online::{Online, OnlineMessage};
 use super::references::References;
@@ -48,11 +49,21 @@ pub(crate) struct StudioView<'a> {
     pub status: Option<&'a StatusMessage>,
     /// The located variables whose addresses overlap, computed once per project revision.
     pub overlaps: &'a [compiler::ide::Overlap],
+    /// The halted tasks, the shown frame and the flow marks of the debug session.
+    pub debug: &'a DebugState,
 }
 
 impl<'a> StudioView<'a> {
     /// The open project, if any.
     pub fn project(&self) -> Option<&'a Project> {
         self.session.map(|session| &session.project)
+    }
+
+    /// The open project's breakpoints (none without a project).
+    pub fn breakpoints(&self) -> Option<&'a Breakpoints> {
+        let session = self.session?;
+        self.settings
+            .breakpoints
+            .get(&Settings::project_key(&session.dir))
     }
 }

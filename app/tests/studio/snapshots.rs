@@ -71,6 +71,55 @@ fn the_st_editor_online_with_values_inline() {
 }
 
 #[test]
+fn the_st_editor_halted_with_a_breakpoint_and_flow_marks() {
+    use egui::{Key, Modifiers};
+    use egui_kittest::kittest::Queryable as _;
+
+    // Breakpoints live in the settings, so the example itself is opened: nothing is written.
+    let app = StudioApp::new(Settings::default(), Some(assets::example_project_dir()));
+    let mut harness = Harness::builder()
+        .with_size([1280.0, 800.0])
+        .wgpu()
+        .build_ui_state(|ui, app: &mut StudioApp| app.ui(ui), app);
+    harness.step();
+    harness
+        .state_mut()
+        .open(app::studio::TreeNode::Object("Main".into()));
+    harness.step();
+    // A breakpoint on the statement of line 2 (F9), flow control on, and a halt on line 10.
+    harness.get_by_label("Implementation of Main").focus();
+    harness.step();
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::Home);
+    harness.key_press(Key::ArrowDown);
+    harness.key_press(Key::F9);
+    harness.step();
+    harness.get_by_label("Debug").click();
+    harness.run();
+    harness.get_by_label("Flow control").click();
+    harness.run();
+    harness.key_press(Key::Escape);
+    harness.run();
+    harness.state_mut().set_flow(vec![(
+        "application/Main.st".to_owned(),
+        vec![2, 6, 7, 10, 11],
+    )]);
+    harness
+        .state_mut()
+        .set_halted(vec![app::studio::HaltedTask {
+            task: "MainTask".to_owned(),
+            beneath: None,
+            frames: vec![app::studio::StackFrame {
+                pou: "Main".to_owned(),
+                instance: Some("Main".to_owned()),
+                file: "application/Main.st".to_owned(),
+                line: 10,
+            }],
+        }]);
+    harness.run();
+    harness.snapshot("st_editor_halted");
+}
+
+#[test]
 fn the_trace_view_with_cursors() {
     use app::studio::{TraceData, TracePlotView, TraceSample, TraceSeries};
 

@@ -18,6 +18,8 @@ pub(super) struct FrameResult {
     pub find_references: Option<usize>,
     /// A value prepared in an inline value box.
     pub prepared: Option<(std::ops::Range<usize>, String)>,
+    /// F9 or a click in the breakpoint column on this line (from 0).
+    pub toggle_breakpoint: Option<usize>,
 }
 
 impl FrameResult {
@@ -216,6 +218,9 @@ impl StEditor {
             }
             Key::F12 if shift => result.find_references = Some(self.caret),
             Key::F12 => result.goto_definition = Some(self.caret),
+            Key::F9 if modifiers.is_none() => {
+                result.toggle_breakpoint = Some(self.buffer.line_of(self.caret));
+            }
             Key::F3 => self.find_next(!shift),
             Key::Escape => self.find.open = false,
             Key::Enter if !command => {

@@ -80,7 +80,9 @@ impl StEditor {
         let (row_height, char_width) =
             ui.fonts_mut(|fonts| (fonts.row_height(font), fonts.glyph_width(font, '0')));
         let digits = self.buffer.line_count().to_string().len().max(3);
-        let gutter_width = (digits as f32 + 3.0) * char_width;
+        // The breakpoint column, the numbers and the fold marker.
+        let gutter_width =
+            (super::debug_marks::BREAKPOINT_COLUMN_CHARS + digits as f32 + 3.0) * char_width;
         Metrics {
             row_height: row_height.max(1.0),
             char_width: char_width.max(1.0),

@@ -7,6 +7,7 @@
 
 mod buffer;
 mod completion;
+mod debug_marks;
 mod editing;
 mod find;
 mod folding;
@@ -24,6 +25,7 @@ mod view;
 use std::ops::Range;
 
 pub use buffer::TextBuffer;
+pub use debug_marks::{BreakpointLook, BreakpointMark, StDebugMarks};
 pub use highlight::Highlight;
 pub use texts::EditorTexts;
 pub use types::{
@@ -112,6 +114,8 @@ pub struct StEditor {
     visible: Range<usize>,
     /// The text an input method is composing, shown at the caret, not yet in the buffer.
     preedit: String,
+    /// The debugger's breakpoints, halt line and flow marks, from the app.
+    debug_marks: StDebugMarks,
 }
 
 impl StEditor {
@@ -145,6 +149,7 @@ impl StEditor {
             widest: None,
             visible: 0..0,
             preedit: String::new(),
+            debug_marks: StDebugMarks::default(),
         }
     }
 

@@ -196,8 +196,10 @@ impl StEditor {
                     Severity::Info => 2,
                 });
             if let Some(severity) = worst {
+                // Diagnostics sit right of the breakpoint column.
                 let center = pos2(
-                    clip.min.x + metrics.char_width * 0.6,
+                    clip.min.x
+                        + metrics.char_width * (super::debug_marks::BREAKPOINT_COLUMN_CHARS + 0.6),
                     top + metrics.row_height * 0.5,
                 );
                 painter.circle_filled(
@@ -207,6 +209,7 @@ impl StEditor {
                 );
             }
         }
+        self.paint_debug_gutter(painter, layouts, clip, row_top, metrics);
     }
 }
 

@@ -39,6 +39,7 @@ struct Host {
     change_lists: Vec<Vec<TextChange>>,
     undo_left_for_app: bool,
     prepared: Option<(Range<usize>, String)>,
+    breakpoint_toggles: Vec<usize>,
 }
 
 fn harness(text: &str, caret: usize) -> Harness<'static, Host> {
@@ -52,6 +53,7 @@ fn harness(text: &str, caret: usize) -> Harness<'static, Host> {
         change_lists: Vec::new(),
         undo_left_for_app: false,
         prepared: None,
+        breakpoint_toggles: Vec::new(),
     };
     let mut harness = Harness::builder()
         .with_size(egui::vec2(800.0, 600.0))
@@ -68,6 +70,7 @@ fn harness(text: &str, caret: usize) -> Harness<'static, Host> {
                     host.change_lists.push(output.changes);
                 }
                 host.gestures.extend(output.gesture);
+                host.breakpoint_toggles.extend(output.toggle_breakpoint);
                 if output.prepared.is_some() {
                     host.prepared = output.prepared;
                 }
@@ -417,7 +420,8 @@ fn inline_values_and_diagnostics_draw_without_hiding_text() {
 }
 
 /// The screen position of a char column and line in the editor, from the editor's rectangle
-/// and the monospace font: the gutter is 6 chars wide (3 digits, markers) plus one char gap.
+/// and the monospace font: the gutter is 8 chars wide (the breakpoint column, 3 digits,
+/// markers) plus one char gap.
 fn text_pos(harness: &Harness<'_, Host>, line: usize, col: f32) -> egui::Pos2 {
     let rect = harness.get_by_label("Body of Main").rect();
     let font = egui::TextStyle::Monospace.resolve(&harness.ctx.global_style());
@@ -425,7 +429,7 @@ fn text_pos(harness: &Harness<'_, Host>, line: usize, col: f32) -> egui::Pos2 {
         .ctx
         .fonts_mut(|fonts| (fonts.row_height(&font), fonts.glyph_width(&font, '0')));
     egui::pos2(
-        rect.min.x + (7.0 + col) * char_width,
+        rect.min.x + (9.0 + col) * char_width,
         rect.min.y + (line as f32 + 0.5) * row_height,
     )
 }
@@ -634,4 +638,65 @@ fn clicking_the_fold_marker_in_the_gutter_folds_and_unfolds() {
     click_at(&mut harness, marker);
     harness.run_steps(2);
     assert!(!harness.state().editor.is_line_hidden(2));
+}
+
+#[test]
+fn f9_reports_the_caret_line_even_in_a_read_only_editor() {
+    let mut harness = harness("x := 0;\ny := 1;\nz := 2;", 9);
+    harness.state_mut().editor.set_read_only(true);
+    press(&mut harness, Modifiers::NONE, Key::F9);
+    assert_eq!(harness.state().breakpoint_toggles, vec![1]);
+    assert_eq!(harness.state().editor.caret_line(), 1);
+    // Shift+F9 is not the toggle.
+    press(&mut harness, Modifiers::SHIFT, Key::F9);
+    assert_eq!(harness.state().breakpoint_toggles, vec![1]);
+    check_model(&harness);
+}
+
+#[test]
+fn clicking_the_breakpoint_column_reports_its_line_and_does_not_fold() {
+    let text = "x := 0;\nIF a THEN\n    b := 1;\nEND_IF;\ny := 1;";
+    let mut harness = harness(text, 0);
+    // The breakpoint column is the gutter's first two chars.
+    let column = text_pos(&harness, 1, -8.5);
+    click_at(&mut harness, column);
+    harness.run_steps(2);
+    assert_eq!(harness.state().breakpoint_toggles, vec![1]);
+    assert!(!harness.state().editor.is_line_hidden(2));
+    let column = text_pos(&harness, 4, -8.5);
+    click_at(&mut harness, column);
+    assert_eq!(harness.state().breakpoint_toggles, vec![1, 4]);
+}
+
+#[test]
+fn debug_marks_are_kept_until_replaced_and_draw_beside_the_text() {
+    let text = "x := 0;\ny := 1;\nz := 2;";
+    let mut harness = harness(text, 0);
+    let marks = StDebugMarks {
+        breakpoints: vec![
+            BreakpointMark {
+                line: 0,
+                look: BreakpointLook::Enabled,
+            },
+            BreakpointMark {
+                line: 2,
+                look: BreakpointLook::Conditional,
+            },
+        ],
+        halt_line: Some(1),
+        halt_is_caller: false,
+        flow_lines: vec![0, 1],
+    };
+    harness.state_mut().editor.set_debug_marks(marks.clone());
+    harness.run_steps(2);
+    assert_eq!(harness.state().editor.debug_marks(), &marks);
+    assert_eq!(
+        harness.state().editor.debug_marks().breakpoint_at(2),
+        Some(BreakpointLook::Conditional)
+    );
+    assert_eq!(harness.state().editor.debug_marks().breakpoint_at(1), None);
+    // Typing leaves the marks to the app, which gives new ones from its model.
+    type_text(&mut harness, "a");
+    assert_eq!(harness.state().editor.debug_marks(), &marks);
+    check_model(&harness);
 }

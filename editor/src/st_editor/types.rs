@@ -244,4 +244,7 @@ pub struct StEditorOutput {
     pub prepared: Option<(Range<usize>, String)>,
     /// The caret's byte offset after the frame.
     pub caret: usize,
+    /// Set when the user asked to toggle a breakpoint on this line, counted from 0 (F9, or a
+    /// click in the gutter's breakpoint column); the app decides whether the line can hold one.
+    pub toggle_breakpoint: Option<usize>,
 }

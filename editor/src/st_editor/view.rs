@@ -76,6 +76,7 @@ impl StEditor {
             find_references: result.find_references,
             prepared: result.prepared,
             caret: self.caret,
+            toggle_breakpoint: result.toggle_breakpoint,
         }
     }
 
@@ -129,7 +130,7 @@ impl StEditor {
         let row_top = |row: usize| origin.y + row as f32 * metrics.row_height;
         let clip = ui.clip_rect();
 
-        self.pointer(ui, &response, &layouts, origin, clip, metrics, font);
+        self.pointer(ui, &response, &layouts, origin, clip, metrics, font, result);
 
         let painter = ui.painter_at(clip);
         let visuals = ui.visuals().clone();
@@ -160,6 +161,7 @@ impl StEditor {
             None
         };
         let find_color = crate::EditorPalette::of(ui).find_match;
+        self.paint_halt_line(&painter, &layouts, clip, &row_top, metrics);
         for layout in &layouts {
             let top = row_top(layout.row);
             if layout.line == caret_line && focused {
@@ -298,6 +300,7 @@ impl StEditor {
         clip: Rect,
         metrics: &Metrics,
         font: &FontId,
+        result: &mut FrameResult,
     ) {
         let Some(pos) = response.interact_pointer_pos() else {
             return;
@@ -310,8 +313,14 @@ impl StEditor {
             .min(row_count - 1);
         let line = self.folding.line_of_row(row, line_count);
         if in_gutter {
+            let in_breakpoints = pos.x
+                < clip.min.x + metrics.char_width * super::debug_marks::BREAKPOINT_COLUMN_CHARS;
             if response.clicked() {
-                self.toggle_fold(line);
+                if in_breakpoints {
+                    result.toggle_breakpoint = Some(line);
+                } else {
+                    self.toggle_fold(line);
+                }
             }
             return;
         }

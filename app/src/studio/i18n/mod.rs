@@ -2,6 +2,7 @@
 //! words in `translations.rs`.
 
 mod chart_texts;
+mod debug_texts;
 mod device_texts;
 mod diagram_texts;
 mod language;
@@ -10,6 +11,7 @@ mod template;
 mod translations;
 
 pub use chart_texts::ChartText;
+pub use debug_texts::DebugText;
 pub use device_texts::DeviceText;
 pub use diagram_texts::DiagramText;
 pub use language::Language;

@@ -5,6 +5,7 @@
 //! calls [`Online::poll`] once per frame to take in what arrived, and never waits.
 
 mod background;
+mod debug_target;
 mod devices;
 mod events;
 mod link;

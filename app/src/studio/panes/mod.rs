@@ -1,14 +1,18 @@
 //! The tool panes at the bottom of the studio: messages, watch lists, forces, trace, tasks.
 
+mod breakpoints;
+mod call_stack;
 mod forces;
 mod messages;
 mod tasks;
 mod trace;
 mod watch;
 
+pub(crate) use breakpoints::{BreakpointsPaneState, breakpoints_ui};
+pub(crate) use call_stack::call_stack_ui;
 pub(crate) use forces::forces_ui;
 pub(crate) use messages::{message_count, messages_ui};
-pub(crate) use tasks::tasks_ui;
+pub(crate) use tasks::{fault_place as source_place, tasks_ui};
 pub(crate) use trace::{TracePaneState, trace_ui};
 pub(crate) use watch::{WatchPaneState, watch_ui};
 

@@ -33,8 +33,9 @@ pub(crate) fn tasks_ui(view: StudioView<'_>, commands: &mut Commands, ui: &mut U
     }
 }
 
-/// Where a fault happened: its source line when the body is known, else its POU.
-fn fault_place(view: StudioView<'_>, pou: &str, file: &str, line: u32) -> Command {
+/// Where a fault happened (or a call stack frame is): its source line when the body is
+/// known, else its POU.
+pub(crate) fn fault_place(view: StudioView<'_>, pou: &str, file: &str, line: u32) -> Command {
     // The POU of a method or action is named `FB.Method`; the document is the POU's.
     let object = pou.split('.').next().unwrap_or(pou).to_owned();
     let node = TreeNode::Object(object);

@@ -5,6 +5,7 @@ use std::path::Path;
 
 use super::state::Studio;
 use crate::studio::command::Command;
+use crate::studio::debug::{Breakpoints, DebugCommand};
 use crate::studio::dock::Dock;
 use crate::studio::documents::close_stale_documents;
 use crate::studio::i18n::Text;
@@ -74,7 +75,12 @@ fn apply(studio: &mut Studio, dock: &mut Dock, command: Command, ctx: &egui::Con
         Command::Undo | Command::Redo => studio.undo_redo(command == Command::Undo),
         Command::Build => studio.start_build(),
         Command::Login => studio.login(ctx),
-        Command::Logout => studio.shared.online.logout(),
+        Command::Logout => {
+            studio.shared.online.logout();
+            studio.shared.debug.end_session();
+        }
+        // F5 continues a halted task and starts a stopped program (`docs/debugging.md` §4).
+        Command::Start if studio.shared.debug.is_halted() => studio.debug(DebugCommand::Continue),
         Command::Start => studio.shared.online.start(),
         Command::Stop => studio.shared.online.stop(),
         Command::Reset(kind) => studio.shared.online.reset(kind),
@@ -119,6 +125,30 @@ fn apply(studio: &mut Studio, dock: &mut Dock, command: Command, ctx: &egui::Con
             ctx.set_theme(theme.egui_theme());
         }
         Command::SetTarget(target) => studio.shared.settings.target = target,
+        Command::ToggleBreakpoint(place) => studio.toggle_breakpoint(place),
+        Command::ToggleBreakpointAtCaret => {
+            if let Some(place) = studio.caret_place() {
+                studio.toggle_breakpoint(place);
+            }
+        }
+        Command::UpdateBreakpoint(breakpoint) => {
+            studio.change_breakpoints(|breakpoints| breakpoints.update(breakpoint));
+        }
+        Command::RemoveBreakpoint(place) => {
+            studio.change_breakpoints(|breakpoints| breakpoints.remove(&place));
+        }
+        Command::RemoveAllBreakpoints => studio.change_breakpoints(Breakpoints::clear),
+        Command::Debug(command) => studio.debug(command),
+        Command::RunToCaret => {
+            if let Some(place) = studio.caret_place() {
+                studio.debug(DebugCommand::RunToCursor(place));
+            }
+        }
+        Command::ShowFrame(task, frame) => {
+            if let Some(open) = studio.show_frame(&task, frame) {
+                apply(studio, dock, open, ctx);
+            }
+        }
     }
 }
 

@@ -3,6 +3,7 @@
 
 mod apply;
 mod build_flow;
+mod debug_flow;
 mod editor_hint;
 mod frame;
 mod project_io;
@@ -17,6 +18,8 @@ use project_model::LoadProblem;
 
 use super::build_job::BuildOutcome;
 use super::chrome;
+use super::command::Command;
+use super::debug::{DebugState, HaltedTask};
 use super::dock::{Dock, LAYOUT_KEY};
 use super::fonts::install_fonts;
 use super::online::{Online, TargetKind};
@@ -146,6 +149,40 @@ impl StudioApp {
         target: &project_model::TextTarget,
     ) -> Option<std::ops::Range<usize>> {
         self.studio.panes.texts.body_selection(target)
+    }
+
+    /// The debugger's marks in the editor of a Structured Text body, once it was drawn.
+    pub fn body_debug_marks(
+        &self,
+        target: &project_model::TextTarget,
+    ) -> Option<&editor::StDebugMarks> {
+        self.studio.panes.texts.body_debug_marks(target)
+    }
+
+    /// The debugging state: halted tasks, the shown frame, flow control.
+    pub fn debug_state(&self) -> &DebugState {
+        &self.studio.shared.debug
+    }
+
+    /// Takes the halted tasks and their call stacks as the online session reports them
+    /// (`docs/protocol.md` §6); a new halt brings the Call stack pane forward.
+    pub fn set_halted(&mut self, halted: Vec<HaltedTask>) {
+        let was_halted = self.studio.shared.debug.is_halted();
+        self.studio.shared.debug.set_halted(halted);
+        if !was_halted && self.studio.shared.debug.is_halted() {
+            // A new halt opens the Call stack and the halted statement, as CODESYS does.
+            self.dock.show(&super::pane::Pane::CallStack);
+            if let Some((task, frame)) = self.studio.shared.debug.shown() {
+                let command = Command::ShowFrame(task.to_owned(), frame);
+                self.studio.commands.push(command);
+            }
+        }
+    }
+
+    /// Takes the flow-control lines of the last cycle as the online session reports them:
+    /// each body's file with the lines (from 1) of the statements that ran.
+    pub fn set_flow(&mut self, flow: Vec<(String, Vec<u32>)>) {
+        self.studio.shared.debug.set_flow(flow);
     }
 
     /// The diagram editor of an LD or FBD body, once its document was drawn.

@@ -11,6 +11,7 @@ use crate::studio::build_job::{BuildJob, BuildOutcome};
 use crate::studio::chrome::ChromeState;
 use crate::studio::command::Commands;
 use crate::studio::cycle_plot::CycleHistory;
+use crate::studio::debug::DebugState;
 use crate::studio::online::{Online, OnlineMessage};
 use crate::studio::pane_states::PaneStates;
 use crate::studio::recovery::{Recovered, Recovery};
@@ -77,6 +78,8 @@ pub(crate) struct Shared {
     pub(super) references: References,
     /// The located variables whose addresses overlap, and the project revision they are of.
     pub(super) overlaps: (Option<u64>, Vec<compiler::ide::Overlap>),
+    /// The halted tasks, the shown frame and the flow marks of the debug session.
+    pub(super) debug: DebugState,
 }
 
 /// Copies of unsaved changes: where they go, the one offered at opening, and when to write.
@@ -109,6 +112,7 @@ impl Studio {
                 cycle_history: CycleHistory::default(),
                 references: References::default(),
                 overlaps: (None, Vec::new()),
+                debug: DebugState::default(),
             },
             panes: PaneStates::default(),
             commands: Commands::default(),
@@ -152,6 +156,7 @@ impl Shared {
             references: &self.references,
             status: self.status.as_ref(),
             overlaps: &self.overlaps.1,
+            debug: &self.debug,
         }
     }
 

@@ -7,6 +7,7 @@ use egui::{RichText, Ui};
 use project_model::{Body, Edit};
 
 use crate::studio::command::{Command, Commands};
+use crate::studio::debug::BreakpointPlace;
 use crate::studio::i18n::Text;
 use crate::studio::reveal::Reveal;
 use crate::studio::tree_node::TreeNode;
@@ -159,11 +160,22 @@ pub(super) fn body_ui(
         entry.editor.set_diagnostics(diagnostics);
     }
     entry.editor.set_inline_values(inline);
+    let file = body_file(project, &target);
+    if let Some(file) = &file {
+        let marks = match view.breakpoints() {
+            Some(breakpoints) => view.debug.marks_for(file, breakpoints),
+            None => view
+                .debug
+                .marks_for(file, &crate::studio::debug::Breakpoints::default()),
+        };
+        entry.editor.set_debug_marks(marks);
+    }
     if let Some(Reveal::Body(_, range)) = reveal {
         entry.editor.reveal(range.clone());
         entry.editor.request_focus();
     }
     let output = entry.editor.show(ui, &label, &services);
+    let caret_line = entry.editor.caret_line();
     if let Some(offset) = output.goto_definition {
         match compiler::ide::definition(project, &target, offset) {
             Some(definition) => {
@@ -185,6 +197,18 @@ pub(super) fn body_ui(
                 }
             }
             None => commands.status(Text::NoDeclarationAtCaret.get(language)),
+        }
+    }
+    if let Some(file) = file {
+        let caret_place = |line: usize| BreakpointPlace {
+            file: file.clone(),
+            line: line as u32 + 1,
+        };
+        if output.response.has_focus() {
+            texts.last_caret = Some(caret_place(caret_line));
+        }
+        if let Some(line) = output.toggle_breakpoint {
+            commands.push(Command::ToggleBreakpoint(caret_place(line)));
         }
     }
     if let Some(offset) = output.find_references {
@@ -213,4 +237,16 @@ pub(super) fn body_ui(
             merge_key,
         });
     }
+}
+
+/// The file of the Structured Text body `target`, as the image's line table names it
+/// (`application/Main.st`), or `None` when the project has no such body.
+fn body_file(
+    project: &project_model::Project,
+    target: &project_model::TextTarget,
+) -> Option<String> {
+    project_model::st_body_files(project)
+        .into_iter()
+        .find(|body| &body.target == target)
+        .map(|body| body.file.to_string_lossy().replace('\\', "/"))
 }

@@ -56,6 +56,9 @@ pub struct TextDocuments {
     pub inline: InlineValues,
     /// The diagram editors of the LD and FBD bodies.
     pub graphical: GraphicalDocuments,
+    /// The statement line at the caret of the Structured Text body edited last, where the
+    /// Debug menu's "Toggle breakpoint" and "Run to cursor" act; forgotten with the editors.
+    pub last_caret: Option<crate::studio::debug::BreakpointPlace>,
     /// The language the editors' own words are in.
     language: Language,
 }
@@ -146,6 +149,13 @@ impl TextDocuments {
         self.editors
             .get(&TextKey::Body(target.clone()))
             .map(|entry| entry.editor.selection())
+    }
+
+    /// The debugger's marks the editor of a body draws, if it is open.
+    pub fn body_debug_marks(&self, target: &TextTarget) -> Option<&editor::StDebugMarks> {
+        self.editors
+            .get(&TextKey::Body(target.clone()))
+            .map(|entry| entry.editor.debug_marks())
     }
 
     /// Puts the editors' own words in `language` (called every frame; changes only on a

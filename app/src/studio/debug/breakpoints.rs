@@ -1,0 +1,181 @@
+//! The breakpoints of one project, and where a line's breakpoint goes.
+
+use serde::{Deserialize, Serialize};
+
+use super::breakpoint::{Breakpoint, BreakpointPlace};
+
+/// The breakpoints of one project, in the order they were set; saved with the settings.
+#[derive(Clone, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(transparent)]
+pub struct Breakpoints {
+    /// The breakpoints, one per place.
+    list: Vec<Breakpoint>,
+}
+
+impl Breakpoints {
+    /// Every breakpoint, in the order they were set.
+    pub fn all(&self) -> &[Breakpoint] {
+        &self.list
+    }
+
+    /// Whether there is none.
+    pub fn is_empty(&self) -> bool {
+        self.list.is_empty()
+    }
+
+    /// The breakpoint on `place`, if any.
+    pub fn at(&self, place: &BreakpointPlace) -> Option<&Breakpoint> {
+        self.list
+            .iter()
+            .find(|breakpoint| &breakpoint.place == place)
+    }
+
+    /// The breakpoints in `file`.
+    pub fn in_file<'a>(&'a self, file: &'a str) -> impl Iterator<Item = &'a Breakpoint> + 'a {
+        self.list
+            .iter()
+            .filter(move |breakpoint| breakpoint.place.file == file)
+    }
+
+    /// Sets a plain breakpoint on `place`, or removes the one there (F9); returns whether a
+    /// breakpoint is there now.
+    pub fn toggle(&mut self, place: BreakpointPlace) -> bool {
+        if let Some(index) = self.index_of(&place) {
+            self.list.remove(index);
+            false
+        } else {
+            self.list.push(Breakpoint::at(place));
+            true
+        }
+    }
+
+    /// Replaces the breakpoint on `breakpoint.place` (the dialog's or the check box's change);
+    /// a breakpoint removed meanwhile is not brought back.
+    pub fn update(&mut self, breakpoint: Breakpoint) {
+        if let Some(index) = self.index_of(&breakpoint.place) {
+            self.list[index] = breakpoint;
+        }
+    }
+
+    /// Removes the breakpoint on `place`.
+    pub fn remove(&mut self, place: &BreakpointPlace) {
+        self.list.retain(|breakpoint| &breakpoint.place != place);
+    }
+
+    /// Removes every breakpoint.
+    pub fn clear(&mut self) {
+        self.list.clear();
+    }
+
+    fn index_of(&self, place: &BreakpointPlace) -> Option<usize> {
+        self.list
+            .iter()
+            .position(|breakpoint| &breakpoint.place == place)
+    }
+}
+
+/// The lines (from 1, sorted, without repeats) where statements of the body in `file` start,
+/// from the line table of a built image: the places a breakpoint can go (`docs/debugging.md`
+/// §3; ELSIF conditions and loop tests are in the table too).
+pub fn statement_lines(image: &program_image::ProgramImage, file: &str) -> Vec<u32> {
+    let Some(file_index) = image.sources.iter().position(|source| source == file) else {
+        return Vec::new();
+    };
+    let mut lines: Vec<u32> = image
+        .pous
+        .iter()
+        .flat_map(|pou| pou.lines.iter())
+        .filter(|entry| entry.file as usize == file_index)
+        .map(|entry| entry.line)
+        .collect();
+    lines.sort_unstable();
+    lines.dedup();
+    lines
+}
+
+/// The line where F9 on `line` puts a breakpoint, given the body's statement lines: the line
+/// itself when a statement starts there, else the next line that starts one (as CODESYS moves
+/// a breakpoint from a comment or an `END_IF` to the next statement); `None` after the last.
+/// Without a line table (never built) the line is taken as it is.
+pub fn statement_line(statement_lines: &[u32], line: u32) -> Option<u32> {
+    if statement_lines.is_empty() {
+        return Some(line);
+    }
+    let at = statement_lines.partition_point(|&start| start < line);
+    statement_lines.get(at).copied()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn place(line: u32) -> BreakpointPlace {
+        BreakpointPlace {
+            file: "application/Main.st".to_owned(),
+            line,
+        }
+    }
+
+    #[test]
+    fn toggling_sets_then_clears_the_breakpoint_of_a_place() {
+        let mut breakpoints = Breakpoints::default();
+        assert!(breakpoints.toggle(place(3)));
+        assert!(breakpoints.toggle(place(5)));
+        assert_eq!(breakpoints.all().len(), 2);
+        assert!(!breakpoints.toggle(place(3)));
+        assert_eq!(breakpoints.all(), &[Breakpoint::at(place(5))]);
+        assert_eq!(breakpoints.in_file("application/Main.st").count(), 1);
+        assert_eq!(breakpoints.in_file("application/Other.st").count(), 0);
+    }
+
+    #[test]
+    fn an_update_changes_the_breakpoint_of_its_place_only_while_it_exists() {
+        let mut breakpoints = Breakpoints::default();
+        breakpoints.toggle(place(3));
+        let mut changed = Breakpoint::at(place(3));
+        changed.condition = "x > 1".to_owned();
+        breakpoints.update(changed.clone());
+        assert_eq!(breakpoints.at(&place(3)), Some(&changed));
+        breakpoints.remove(&place(3));
+        breakpoints.update(changed);
+        assert!(breakpoints.is_empty());
+    }
+
+    #[test]
+    fn a_line_without_a_statement_takes_the_next_statement() {
+        let lines = [2, 3, 7];
+        assert_eq!(statement_line(&lines, 2), Some(2));
+        assert_eq!(statement_line(&lines, 1), Some(2));
+        assert_eq!(statement_line(&lines, 4), Some(7));
+        assert_eq!(statement_line(&lines, 8), None);
+        assert_eq!(statement_line(&[], 8), Some(8));
+    }
+
+    #[test]
+    fn statement_lines_come_from_the_line_table_of_the_file() {
+        let pou = |name: &str, lines: &[(u32, u32, u32)]| program_image::Pou {
+            name: name.to_owned(),
+            kind: program_image::PouKind::Program,
+            frame_size: 0,
+            frame_init: Vec::new(),
+            instance_size: 0,
+            code: Vec::new(),
+            lines: lines
+                .iter()
+                .map(|&(index, file, line)| program_image::LineEntry { index, file, line })
+                .collect(),
+        };
+        let image = program_image::ProgramImage {
+            sources: vec!["application/A.st".to_owned(), "application/B.st".to_owned()],
+            pous: vec![
+                pou("B", &[(0, 1, 4), (5, 1, 4)]),
+                pou("A", &[(3, 0, 2)]),
+                pou("B2", &[(9, 1, 1)]),
+            ],
+            ..Default::default()
+        };
+        assert_eq!(statement_lines(&image, "application/B.st"), vec![1, 4]);
+        assert_eq!(statement_lines(&image, "application/A.st"), vec![2]);
+        assert!(statement_lines(&image, "application/C.st").is_empty());
+    }
+}

@@ -1,0 +1,15 @@
+//! The studio's side of debugging (`docs/debugging.md`): the breakpoints the user set, kept per
+//! project in the settings; the halted tasks, their call stacks and the flow-control marks as
+//! the online session reports them; and the commands the Debug menu sends to the online layer.
+//! Everything here is plain data and pure functions, drawn by the editors and the Breakpoints
+//! and Call stack panes.
+
+mod breakpoint;
+mod breakpoints;
+mod command;
+mod halt;
+
+pub use breakpoint::{Breakpoint, BreakpointPlace, HitMode};
+pub use breakpoints::{Breakpoints, statement_line, statement_lines};
+pub use command::{DebugCommand, DebugTarget};
+pub use halt::{DebugState, HaltedTask, StackFrame};

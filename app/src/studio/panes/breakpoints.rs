@@ -1,0 +1,233 @@
+//! The Breakpoints pane: every breakpoint of the project, to switch on and off, edit (condition,
+//! hit count, instance and task) in a small dialog, remove, and go to.
+
+use egui::{RichText, Ui};
+
+use crate::studio::command::{Command, Commands};
+use crate::studio::debug::{Breakpoint, HitMode};
+use crate::studio::i18n::{DebugText, Language};
+use crate::studio::view::StudioView;
+
+use super::tasks::fault_place as source_place;
+
+/// What the Breakpoints pane keeps between frames: the breakpoint being edited in the dialog.
+#[derive(Default)]
+pub(crate) struct BreakpointsPaneState {
+    /// The dialog's copy of the breakpoint, changed as the user types; `None` when closed.
+    editing: Option<Breakpoint>,
+}
+
+/// The Breakpoints pane.
+pub(crate) fn breakpoints_ui(
+    view: StudioView<'_>,
+    state: &mut BreakpointsPaneState,
+    commands: &mut Commands,
+    ui: &mut Ui,
+) {
+    let language = view.language;
+    let breakpoints = view.breakpoints().map_or(&[][..], |list| list.all());
+    if breakpoints.is_empty() {
+        ui.label(RichText::new(DebugText::NoBreakpoints.get(language)).weak());
+    } else if ui.button(DebugText::RemoveAll.get(language)).clicked() {
+        commands.push(Command::RemoveAllBreakpoints);
+    }
+    egui::ScrollArea::vertical()
+        .id_salt("breakpoints")
+        .auto_shrink([false, false])
+        .show(ui, |ui| {
+            for breakpoint in breakpoints {
+                breakpoint_row_ui(view, state, commands, ui, breakpoint);
+            }
+        });
+    edit_dialog_ui(language, state, commands, ui.ctx());
+}
+
+/// One breakpoint: its switch and place, what it halts on, and its buttons.
+fn breakpoint_row_ui(
+    view: StudioView<'_>,
+    state: &mut BreakpointsPaneState,
+    commands: &mut Commands,
+    ui: &mut Ui,
+    breakpoint: &Breakpoint,
+) {
+    let language = view.language;
+    let place = breakpoint.place.label();
+    ui.horizontal(|ui| {
+        let mut enabled = breakpoint.enabled;
+        if ui.checkbox(&mut enabled, place.as_str()).changed() {
+            commands.push(Command::UpdateBreakpoint(Breakpoint {
+                enabled,
+                ..breakpoint.clone()
+            }));
+        }
+        let summary = summary(language, breakpoint);
+        if !summary.is_empty() {
+            ui.label(RichText::new(summary).weak());
+        }
+        if ui.small_button(DebugText::GoTo.get(language)).clicked() {
+            let pou = pou_of_file(&breakpoint.place.file);
+            commands.push(source_place(
+                view,
+                &pou,
+                &breakpoint.place.file,
+                breakpoint.place.line,
+            ));
+        }
+        if ui
+            .small_button(DebugText::EditBreakpoint.get(language))
+            .clicked()
+        {
+            state.editing = Some(breakpoint.clone());
+        }
+        if ui.small_button(DebugText::Remove.get(language)).clicked() {
+            commands.push(Command::RemoveBreakpoint(breakpoint.place.clone()));
+        }
+    });
+}
+
+/// The condition and hit count in words, empty for a plain breakpoint.
+fn summary(language: Language, breakpoint: &Breakpoint) -> String {
+    let mut parts = Vec::new();
+    let condition = breakpoint.condition.trim();
+    if !condition.is_empty() {
+        parts.push(DebugText::SummaryCondition.fill(language, &[("condition", condition)]));
+    }
+    if breakpoint.hit_mode != HitMode::Always {
+        parts.push(DebugText::SummaryHits.fill(
+            language,
+            &[
+                ("mode", hit_mode_text(breakpoint.hit_mode).get(language)),
+                ("target", &breakpoint.hit_target.to_string()),
+            ],
+        ));
+    }
+    for filter in [&breakpoint.instance, &breakpoint.task] {
+        if !filter.trim().is_empty() {
+            parts.push(filter.trim().to_owned());
+        }
+    }
+    parts.join(" · ")
+}
+
+/// The object a body's file belongs to: `application/FB_Conveyor.Reset.st` is FB_Conveyor's.
+fn pou_of_file(file: &str) -> String {
+    let name = file.rsplit('/').next().unwrap_or(file);
+    name.split('.').next().unwrap_or(name).to_owned()
+}
+
+fn hit_mode_text(mode: HitMode) -> DebugText {
+    match mode {
+        HitMode::Always => DebugText::HitAlways,
+        HitMode::Equal => DebugText::HitEqual,
+        HitMode::MultipleOf => DebugText::HitMultipleOf,
+        HitMode::AtLeast => DebugText::HitAtLeast,
+    }
+}
+
+/// The breakpoint dialog, as CODESYS's: the condition, the hit count, one instance, one task.
+fn edit_dialog_ui(
+    language: Language,
+    state: &mut BreakpointsPaneState,
+    commands: &mut Commands,
+    ctx: &egui::Context,
+) {
+    let Some(editing) = &mut state.editing else {
+        return;
+    };
+    let title = DebugText::BreakpointAt.fill(language, &[("place", &editing.place.label())]);
+    let mut close = false;
+    egui::Window::new(title)
+        .id(egui::Id::unique("breakpoint_dialog"))
+        .collapsible(false)
+        .resizable(false)
+        .show(ctx, |ui| {
+            egui::Grid::new("breakpoint_fields")
+                .num_columns(2)
+                .show(ui, |ui| {
+                    let label = ui.label(DebugText::Condition.get(language));
+                    ui.text_edit_singleline(&mut editing.condition)
+                        .labelled_by(label.id);
+                    ui.end_row();
+                    let label = ui.label(DebugText::HitCount.get(language));
+                    egui::ComboBox::from_id_salt("hit_mode")
+                        .selected_text(hit_mode_text(editing.hit_mode).get(language))
+                        .show_ui(ui, |ui| {
+                            for mode in HitMode::ALL {
+                                ui.selectable_value(
+                                    &mut editing.hit_mode,
+                                    mode,
+                                    hit_mode_text(mode).get(language),
+                                );
+                            }
+                        })
+                        .response
+                        .labelled_by(label.id);
+                    ui.end_row();
+                    let label = ui.label(DebugText::HitTarget.get(language));
+                    ui.add_enabled(
+                        editing.hit_mode != HitMode::Always,
+                        egui::DragValue::new(&mut editing.hit_target).range(0..=u32::MAX),
+                    )
+                    .labelled_by(label.id);
+                    ui.end_row();
+                    let label = ui.label(DebugText::Instance.get(language));
+                    ui.add(
+                        egui::TextEdit::singleline(&mut editing.instance)
+                            .hint_text(DebugText::EveryInstance.get(language)),
+                    )
+                    .labelled_by(label.id);
+                    ui.end_row();
+                    let label = ui.label(DebugText::Task.get(language));
+                    ui.add(
+                        egui::TextEdit::singleline(&mut editing.task)
+                            .hint_text(DebugText::EveryTask.get(language)),
+                    )
+                    .labelled_by(label.id);
+                    ui.end_row();
+                });
+            ui.horizontal(|ui| {
+                if ui.button(DebugText::Ok.get(language)).clicked() {
+                    commands.push(Command::UpdateBreakpoint(editing.clone()));
+                    close = true;
+                }
+                if ui.button(DebugText::Cancel.get(language)).clicked() {
+                    close = true;
+                }
+            });
+        });
+    if close {
+        state.editing = None;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::studio::debug::BreakpointPlace;
+
+    #[test]
+    fn a_bodys_file_names_its_object() {
+        assert_eq!(
+            pou_of_file("application/FB_Conveyor.Reset.st"),
+            "FB_Conveyor"
+        );
+        assert_eq!(pou_of_file("Main.st"), "Main");
+    }
+
+    #[test]
+    fn the_summary_names_the_condition_the_hit_count_and_the_filters() {
+        let mut breakpoint = Breakpoint::at(BreakpointPlace {
+            file: "application/Main.st".to_owned(),
+            line: 2,
+        });
+        assert_eq!(summary(Language::English, &breakpoint), "");
+        breakpoint.condition = "x > 1".to_owned();
+        breakpoint.hit_mode = HitMode::AtLeast;
+        breakpoint.hit_target = 3;
+        breakpoint.task = "Fast".to_owned();
+        assert_eq!(
+            summary(Language::English, &breakpoint),
+            "when x > 1 · hit count Greater than or equal to 3 · Fast"
+        );
+    }
+}
