@@ -5,6 +5,7 @@ mod chart_texts;
 mod device_texts;
 mod diagram_texts;
 mod language;
+mod login_texts;
 mod refusal_texts;
 mod template;
 mod translations;
@@ -13,6 +14,7 @@ pub use chart_texts::ChartText;
 pub use device_texts::DeviceText;
 pub use diagram_texts::DiagramText;
 pub use language::Language;
+pub use login_texts::LoginText;
 pub use refusal_texts::RefusalText;
 pub use template::fill_template;
 
