@@ -95,7 +95,7 @@ fn choices_ui(ui: &mut Ui, language: Language, offer: &ChangeOffer, commands: &m
         if button.clicked() {
             commands.push(Command::ChooseLogin(choice));
         }
-        ui.label(RichText::new(hint.get(language)).weak().small());
+        ui.label(RichText::new(hint.get(language)).weak());
         ui.add_space(4.0);
     }
     ui.separator();
