@@ -8,6 +8,10 @@
 //! ([`Command::Close`], or the command sender dropped) it logs out before closing the
 //! connection, so that its token ends at once.
 
+mod online_change;
+
+pub use online_change::ChangeCommand;
+
 use std::net::SocketAddr;
 use std::time::Duration;
 
@@ -16,7 +20,8 @@ use tokio::sync::mpsc;
 use crate::client::{Client, Sample, TraceConfig};
 use crate::error::OnlineError;
 use crate::{
-    Fault, Identity, Place, Reset, Resolved, Snapshot, TargetState, TaskInfo, TraceStatus,
+    ChangeApplied, ChangeCheck, ChangeDetailEntry, Fault, Identity, Place, Reset, Resolved,
+    Snapshot, TargetState, TaskInfo, TraceStatus,
 };
 
 /// What a session is asked to do.
@@ -58,6 +63,8 @@ pub enum Command {
     /// Upload the recorded samples; answered by [`Event::TraceSamples`] after
     /// [`Event::TraceProgress`] events.
     TraceUpload,
+    /// A step of an online change (`docs/protocol.md` §7).
+    OnlineChange(ChangeCommand),
     /// End the session: `LOGOUT` (waiting at most [`LOGOUT_TIMEOUT`]) and close.
     Close,
 }
@@ -77,6 +84,19 @@ pub enum Event {
     Done(TargetState),
     /// A command failed; nothing changed on the target.
     Failed(String),
+    /// The answer to [`ChangeCommand::Check`]: the open transfer, the verdict and
+    /// everything the change would do.
+    ChangeChecked {
+        /// The transfer to apply, commit or abort.
+        transfer: u16,
+        /// The verdict and its counts.
+        check: ChangeCheck,
+        /// What will change, in the protocol's order.
+        details: Vec<ChangeDetailEntry>,
+    },
+    /// The answer to [`ChangeCommand::Apply`]: what the switch did, and the target's
+    /// state after it.
+    ChangeApplied(ChangeApplied, TargetState),
     /// The answer to [`Command::Resolve`]: each path with what the target said about it.
     Resolved(Vec<(String, Result<Resolved, String>)>),
     /// The answer to [`Command::Forces`]: every forced place with its value.
@@ -200,6 +220,18 @@ async fn run(
                                 .await;
                             match result {
                                 Ok(_) => client.identify().await.map(|identity| identity.state),
+                                Err(error) => Err(error),
+                            }
+                        }
+                        Command::OnlineChange(step) => {
+                            match online_change::run(&mut client, step, &events).await {
+                                Ok(Some(event)) => {
+                                    if events.send(event).await.is_err() {
+                                        return;
+                                    }
+                                    continue;
+                                }
+                                Ok(None) => client.identify().await.map(|identity| identity.state),
                                 Err(error) => Err(error),
                             }
                         }

@@ -691,6 +691,90 @@ async fn a_session_streams_snapshots_reports_a_lost_target_and_reconnects() {
 }
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_session_checks_an_online_change_then_drops_applies_or_downloads_the_transfer() {
+    use online::session::{ChangeCommand, Command, Event, SessionOptions};
+    let plc = Plc::start(None).await;
+    let (mut client, _) = online::Client::connect(plc.address, None).await.unwrap();
+    client
+        .download(&compile(COUNTING).encode(), true, |_, _| {})
+        .await
+        .unwrap();
+    drop(client);
+    let (commands, mut events) = online::session::spawn(SessionOptions {
+        address: plc.address,
+        password: None,
+        poll_interval: Duration::from_millis(10),
+        reconnect_interval: Duration::from_millis(50),
+    });
+    let mut next = async || {
+        tokio::time::timeout(PATIENCE, events.recv())
+            .await
+            .unwrap()
+            .unwrap()
+    };
+    assert!(matches!(next().await, Event::Connected(_)));
+    let other = compile(OTHER).encode();
+    let send = async |step: ChangeCommand| {
+        commands.send(Command::OnlineChange(step)).await.unwrap();
+    };
+    // Each step's answer, after the transfer's progress.
+    let mut answer = async || loop {
+        match next().await {
+            Event::DownloadProgress(..) => {}
+            event => return event,
+        }
+    };
+    for step in ["abort", "apply", "commit"] {
+        send(ChangeCommand::Check(other.clone())).await;
+        let transfer = match answer().await {
+            Event::ChangeChecked {
+                transfer,
+                check,
+                details,
+            } if step == "apply" => {
+                assert!(check.possible, "{check:?}");
+                assert_eq!(check.removed, 2, "{check:?}");
+                let names: Vec<&str> = details.iter().map(|d| d.name.as_str()).collect();
+                assert!(names.contains(&"Main"), "{names:?}");
+                transfer
+            }
+            Event::ChangeChecked {
+                transfer, check, ..
+            } => {
+                // After the change, the target already runs this program.
+                assert_eq!(check.possible, step == "abort", "{step}: {check:?}");
+                transfer
+            }
+            other => panic!("{step}: {other:?}"),
+        };
+        match step {
+            "abort" => send(ChangeCommand::Abort(transfer)).await,
+            "apply" => send(ChangeCommand::Apply(transfer)).await,
+            _ => {
+                send(ChangeCommand::Commit {
+                    transfer,
+                    start: true,
+                })
+                .await;
+            }
+        }
+        match answer().await {
+            Event::Done(state) => {
+                assert_ne!(step, "apply");
+                assert_eq!(state, online::TargetState::Running);
+            }
+            Event::ChangeApplied(applied, state) => {
+                assert_eq!(step, "apply");
+                assert!(applied.carried >= 1, "{applied:?}");
+                assert_eq!(state, online::TargetState::Running);
+            }
+            other => panic!("{step}: {other:?}"),
+        }
+    }
+    commands.send(Command::Close).await.unwrap();
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn retained_variables_that_keep_path_and_type_survive_a_download_of_a_changed_program() {
     let first = "PROGRAM Main\nVAR RETAIN total : DINT; changed : INT; END_VAR\nVAR plain : DINT; END_VAR\ntotal := total + 1; changed := 7; plain := 5;\nEND_PROGRAM\n";
     // More variables, `changed` of another type, `total` as it was.

@@ -1,5 +1,5 @@
 //! The studio's frame around the docking layout: menu bar, tool bar with the online controls,
-//! status bar, and the login dialog.
+//! and status bar (the login dialog is in `login_dialog.rs`).
 
 use egui::{RichText, Ui};
 use online::{Reset, TargetState};
@@ -83,11 +83,6 @@ pub(crate) fn status_bar_ui(ui: &mut Ui, view: StudioView<'_>) {
             });
         }
     });
-}
-
-/// The dialog that asks before a download and shows its progress.
-pub(crate) fn login_dialog_ui(ctx: &egui::Context, view: StudioView<'_>, commands: &mut Commands) {
-    Chrome { view, commands }.login_dialog_ui(ctx);
 }
 
 impl Chrome<'_, '_> {
@@ -448,44 +443,6 @@ impl Chrome<'_, '_> {
             );
         });
     }
-
-    fn login_dialog_ui(&mut self, ctx: &egui::Context) {
-        let language = self.view.language;
-        let (reason, progress) = match self.view.online.phase() {
-            Phase::ConfirmDownload { reason } => (reason.clone(), None),
-            Phase::Downloading { sent, total } => (
-                String::new(),
-                Some(if *total == 0 {
-                    0.0
-                } else {
-                    *sent as f32 / *total as f32
-                }),
-            ),
-            _ => return,
-        };
-        egui::Modal::new(egui::Id::unique("login_dialog")).show(ctx, |ui| {
-            ui.set_width(420.0);
-            ui.heading(Text::Login.get(language));
-            match progress {
-                None => {
-                    ui.label(reason);
-                    ui.label(Text::DownloadQuestion.get(language));
-                    ui.horizontal(|ui| {
-                        if ui.button(Text::Download.get(language)).clicked() {
-                            self.commands.push(Command::ConfirmDownload);
-                        }
-                        if ui.button(Text::Cancel.get(language)).clicked() {
-                            self.commands.push(Command::CancelDownload);
-                        }
-                    });
-                }
-                Some(fraction) => {
-                    ui.label(Text::Downloading.get(language));
-                    ui.add(egui::ProgressBar::new(fraction).show_percentage());
-                }
-            }
-        });
-    }
 }
 
 /// The online state in words and colour, for the status bar.
@@ -498,7 +455,11 @@ fn online_state(view: StudioView<'_>, dark_mode: bool) -> (String, Option<egui::
     };
     match view.online.phase() {
         Phase::Offline => (Text::Offline.get(language).to_owned(), None),
-        Phase::Connecting | Phase::ConfirmDownload { .. } => (
+        Phase::Connecting
+        | Phase::ConfirmDownload { .. }
+        | Phase::CheckingChange { .. }
+        | Phase::ChooseLogin(_)
+        | Phase::ApplyingChange => (
             format!("{target}: {}", Text::Connecting.get(language)),
             None,
         ),

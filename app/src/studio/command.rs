@@ -8,7 +8,7 @@ use project_model::{Edit, TextTarget, TraceConfig};
 
 use super::debug::{Breakpoint, BreakpointPlace, DebugCommand};
 use super::i18n::Language;
-use super::online::{ForceSource, TargetKind};
+use super::online::{ForceSource, LoginChoice, TargetKind};
 use super::pane::Pane;
 use super::reveal::Reveal;
 use super::settings::Theme;
@@ -57,6 +57,8 @@ pub(crate) enum Command {
     Unforce(ForceSource),
     /// Answer the login dialog's question with Download.
     ConfirmDownload,
+    /// Answer the login dialog's three choices (a target running another program).
+    ChooseLogin(LoginChoice),
     /// Answer the login dialog's question with Cancel.
     CancelDownload,
     /// Start recording a trace on the target (or on the Modbus devices it reads).

@@ -20,6 +20,7 @@ mod graphical_documents;
 mod i18n;
 #[cfg(test)]
 mod literal_tests;
+mod login_dialog;
 mod online;
 mod pane;
 mod pane_behavior;

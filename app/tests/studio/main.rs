@@ -17,6 +17,7 @@ mod diagram;
 mod editor;
 mod logout;
 mod online;
+mod online_change;
 mod recovery;
 mod snapshots;
 mod support;

@@ -6,6 +6,7 @@ mod debug_texts;
 mod device_texts;
 mod diagram_texts;
 mod language;
+mod login_texts;
 mod refusal_texts;
 mod template;
 mod translations;
@@ -15,6 +16,7 @@ pub use debug_texts::DebugText;
 pub use device_texts::DeviceText;
 pub use diagram_texts::DiagramText;
 pub use language::Language;
+pub use login_texts::LoginText;
 pub use refusal_texts::RefusalText;
 pub use template::fill_template;
 

@@ -6,7 +6,7 @@ use online::Resolved;
 use online::session::{Command, Event};
 
 use super::{LiveValue, Online, OnlineMessage, Phase, STATUS_INTERVAL, devices};
-use crate::studio::i18n::Text;
+use crate::studio::i18n::{LoginText, Text, fill_template};
 use crate::value_text::show;
 
 impl Online {
@@ -95,6 +95,11 @@ impl Online {
                         },
                     }
                 };
+                if !same && identity.image_hash.is_some() {
+                    // Another program runs: whether the project's can take over online is
+                    // the target's to say, so the program is sent and checked first.
+                    self.check_online_change();
+                }
                 self.target_identity = Some(identity);
                 self.last_status = None;
                 self.watched.clear();
@@ -126,11 +131,19 @@ impl Online {
                     );
                 }
             }
-            Event::DownloadProgress(sent, total) => {
-                if matches!(self.phase, Phase::Downloading { .. }) {
-                    self.phase = Phase::Downloading { sent, total };
+            Event::DownloadProgress(sent, total) => match self.phase {
+                Phase::Downloading { .. } => self.phase = Phase::Downloading { sent, total },
+                Phase::CheckingChange { .. } => {
+                    self.phase = Phase::CheckingChange { sent, total };
                 }
-            }
+                _ => {}
+            },
+            Event::ChangeChecked {
+                transfer,
+                check,
+                details,
+            } => self.change_checked(transfer, check, details),
+            Event::ChangeApplied(applied, state) => self.change_applied(applied, state),
             Event::Done(state) => {
                 self.target_state = Some(state);
                 if matches!(self.phase, Phase::Downloading { .. }) {
@@ -146,9 +159,16 @@ impl Online {
                 self.trace.command_done();
             }
             Event::Failed(reason) => {
-                if matches!(self.phase, Phase::Downloading { .. }) {
+                let failed = match self.phase {
+                    Phase::Downloading { .. } => Some(self.text(Text::DownloadFailed)),
+                    Phase::CheckingChange { .. } => Some(self.login_text(LoginText::CheckFailed)),
+                    Phase::ApplyingChange => Some(self.login_text(LoginText::ApplyFailed)),
+                    _ => None,
+                };
+                if let Some(failed) = failed {
+                    // A full download is still possible: the dialog offers it with the reason.
                     self.phase = Phase::ConfirmDownload {
-                        reason: self.text(Text::DownloadFailed).replace("{reason}", &reason),
+                        reason: fill_template(failed, &[("reason", &reason)]),
                     };
                 }
                 self.trace.command_failed();
@@ -184,6 +204,7 @@ impl Online {
     fn show(&self, path: &str, resolved: &Resolved, bytes: &[u8]) -> String {
         if let Some(image) = &self.image
             && self.phase == Phase::Online
+            && self.runs_project()
             && let Ok(place) = runtime::value::resolve(&image.program, path)
             && place.bit.is_none()
         {

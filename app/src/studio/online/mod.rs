@@ -9,6 +9,8 @@ mod debug_target;
 mod devices;
 mod events;
 mod link;
+mod login_change;
+mod login_choice;
 mod simulator;
 mod trace_run;
 mod tracing;
@@ -20,13 +22,14 @@ use std::sync::Arc;
 use project_model::ModbusDevice;
 use std::time::{Duration, Instant};
 
-use online::session::{Command, SessionOptions};
+use online::session::{ChangeCommand, Command, SessionOptions};
 use online::{Fault, Identity, Place, Reset, Resolved, TargetState, TaskInfo};
 use serde::{Deserialize, Serialize};
 
-use super::i18n::{Language, Text};
+use super::i18n::{Language, LoginText, Text};
 use background::Background;
 use link::Link;
+pub use login_choice::{ChangeKind, ChangeOffer, ChangeRefusal, LoginChoice, grouped};
 use simulator::{Simulator, SimulatorError};
 pub use trace_run::{TracePhase, TraceRun};
 
@@ -78,6 +81,18 @@ pub enum Phase {
         /// Why, in words.
         reason: String,
     },
+    /// Connected to a target that runs another program: sending the project's program and
+    /// asking whether it can take over online (`docs/debugging.md` §6); bytes sent of the total.
+    CheckingChange {
+        /// Bytes sent.
+        sent: usize,
+        /// Bytes in all.
+        total: usize,
+    },
+    /// The check came back: the user chooses how to log in ([`LoginChoice`]).
+    ChooseLogin(ChangeOffer),
+    /// The online change is being applied between two cycles.
+    ApplyingChange,
     /// Downloading: bytes sent of the total.
     Downloading {
         /// Bytes sent.
@@ -223,6 +238,11 @@ impl Online {
 
     /// `text` in the messages' language.
     fn text(&self, text: Text) -> &'static str {
+        text.get(self.language)
+    }
+
+    /// `text` of the online change login in the messages' language.
+    fn login_text(&self, text: LoginText) -> &'static str {
         text.get(self.language)
     }
 
@@ -402,8 +422,51 @@ impl Online {
         }
     }
 
+    /// The user chose how to log in to a target that runs another program; nothing on the
+    /// target changed before this.
+    pub fn choose_login(&mut self, choice: LoginChoice) {
+        let Phase::ChooseLogin(offer) = &self.phase else {
+            return;
+        };
+        if !choice.is_enabled(&offer.check) {
+            return;
+        }
+        let transfer = offer.transfer;
+        match choice {
+            LoginChoice::OnlineChange => {
+                if self.command(Command::OnlineChange(ChangeCommand::Apply(transfer))) {
+                    self.phase = Phase::ApplyingChange;
+                }
+            }
+            LoginChoice::Download => {
+                let total = self.image.as_ref().map_or(0, |image| image.bytes.len());
+                let commit = ChangeCommand::Commit {
+                    transfer,
+                    start: false,
+                };
+                if self.command(Command::OnlineChange(commit)) {
+                    // The bytes are on the target already; only the commit is left.
+                    self.phase = Phase::Downloading { sent: total, total };
+                }
+            }
+            LoginChoice::WithoutChange => {
+                if self.command(Command::OnlineChange(ChangeCommand::Abort(transfer))) {
+                    self.phase = Phase::Online;
+                    self.info(self.login_text(LoginText::LoggedInWithoutChange).to_owned());
+                    self.refresh_watch();
+                }
+            }
+        }
+    }
+
     /// The user declined the download: log out again.
     pub fn cancel_download(&mut self) {
+        if let Phase::ChooseLogin(offer) = &self.phase {
+            // The checked transfer is dropped before the session closes, so the target is
+            // left exactly as it was.
+            let transfer = offer.transfer;
+            self.command(Command::OnlineChange(ChangeCommand::Abort(transfer)));
+        }
         self.logout();
         self.info(self.text(Text::LoginCancelled).to_owned());
     }

@@ -86,6 +86,7 @@ fn apply(studio: &mut Studio, dock: &mut Dock, command: Command, ctx: &egui::Con
         Command::Reset(kind) => studio.shared.online.reset(kind),
         Command::ConfirmDownload => studio.shared.online.confirm_download(),
         Command::CancelDownload => studio.shared.online.cancel_download(),
+        Command::ChooseLogin(choice) => studio.shared.online.choose_login(choice),
         Command::WriteValues(values) => {
             if let Err(refused) = studio.shared.online.write(&values)
                 && let Some((path, reason)) = refused.first()

@@ -22,6 +22,7 @@ use super::command::Command;
 use super::debug::{DebugState, HaltedTask};
 use super::dock::{Dock, LAYOUT_KEY};
 use super::fonts::install_fonts;
+use super::login_dialog;
 use super::online::{Online, TargetKind};
 use super::pane_behavior::PaneBehavior;
 use super::recovery::Recovery;
@@ -270,7 +271,7 @@ impl StudioApp {
             chrome::tool_bar_ui(ui, view, chrome_state, commands)
         });
         egui::Panel::bottom("status_bar").show(ui, |ui| chrome::status_bar_ui(ui, view));
-        chrome::login_dialog_ui(ui.ctx(), view, commands);
+        login_dialog::login_dialog_ui(ui.ctx(), view, commands);
         studio.recovery_dialog_ui(ui.ctx());
         let view = studio.shared.view();
         egui::CentralPanel::default_margins().show(ui, |ui| {
