@@ -26,8 +26,8 @@ pub use online_protocol::{
     SessionState, StackFrame, StepKind, TaskDebugState, TaskHalt,
 };
 pub use online_protocol::{
-    ChangeApplied, ChangeCheck, ChangeDetailEntry, Enumeration, Fault, Identity, Place, ResetKind as Reset, Resolved, Snapshot, TargetState,
-    TaskInfo, TraceState, TraceStatus, Value,
+    ChangeApplied, ChangeCheck, ChangeDetailEntry, Enumeration, Fault, Identity, Place,
+    ResetKind as Reset, Resolved, Snapshot, TargetState, TaskInfo, TraceState, TraceStatus, Value,
 };
 // The string and enumeration type tags of a resolved variable, so callers tell strings from elementary values
 // without writing the protocol's numbers by hand or depending on the protocol crate.

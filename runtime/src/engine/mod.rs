@@ -101,15 +101,7 @@ impl Engine {
     /// The data-region offsets of the motion block instances whose commands the motion
     /// kernel keeps (an online change follows them, or drops those whose instance is gone).
     pub fn motion_instances(&self) -> Vec<usize> {
-        let base = self.regions.data;
-        let mut offsets: Vec<usize> = self
-            .motion
-            .instances()
-            .into_iter()
-            .filter_map(|offset| offset.checked_sub(base))
-            .collect();
-        offsets.sort_unstable();
-        offsets
+        motion_offsets(&self.motion, self.regions.data)
     }
 
     /// Re-initialises memory as `kind` says.
@@ -212,4 +204,16 @@ impl Engine {
         let size = self.image.region_size(region) as usize;
         self.memory.get_mut(start..start + size).unwrap_or_default()
     }
+}
+
+/// The data-region offsets of the motion block instances `motion` keeps, sorted; `data_base`
+/// is where the data region starts in memory.
+fn motion_offsets(motion: &native::MotionState, data_base: usize) -> Vec<usize> {
+    let mut offsets: Vec<usize> = motion
+        .instances()
+        .into_iter()
+        .filter_map(|offset| offset.checked_sub(data_base))
+        .collect();
+    offsets.sort_unstable();
+    offsets
 }

@@ -57,6 +57,12 @@ impl EngineView<'_> {
         self.image
     }
 
+    /// The data-region offsets of the motion block instances whose commands the motion
+    /// kernel keeps, as [`Engine::motion_instances`] gives them.
+    pub fn motion_instances(&self) -> Vec<usize> {
+        super::motion_offsets(self.motion, self.regions.data)
+    }
+
     /// The same engine, borrowed again for a shorter time.
     pub fn reborrow(&mut self) -> EngineView<'_> {
         EngineView {

@@ -730,9 +730,10 @@ fn upload(trace: &Trace, from: u32) -> Vec<TraceSample> {
 
 fn scheduler_refusal(error: SchedulerError) -> Refusal {
     let status = match error {
-        SchedulerError::NoProgram | SchedulerError::ProgramChanged | SchedulerError::Gone => {
-            Status::NotNow
-        }
+        SchedulerError::NoProgram
+        | SchedulerError::ProgramChanged
+        | SchedulerError::Halted
+        | SchedulerError::Gone => Status::NotNow,
         SchedulerError::Load(_) => Status::ImageRefused,
         // The command was done; only saving the retained values failed.
         SchedulerError::Retain(_) => Status::NotNow,

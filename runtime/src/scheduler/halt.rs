@@ -12,7 +12,7 @@ use program_image::Region;
 
 use super::cycles::{Cycles, copy};
 use super::worker::lock;
-use super::{Between, Command};
+use super::{Between, Command, SchedulerError};
 use crate::engine::EngineView;
 use crate::online::Memory;
 use crate::retain::RetainSnapshot;
@@ -63,6 +63,11 @@ impl Cycles<'_, '_> {
                         cycles: *self.cycles_total,
                     };
                     action(&mut between);
+                }
+                // An online change waits for a moment when no task is in a cycle; here one is
+                // halted in its cycle, and an online change never abandons a cycle.
+                Ok(Command::OnlineChange(_, reply)) => {
+                    let _ = reply.send(Err(SchedulerError::Halted));
                 }
                 Ok(other) => {
                     engine.debug_mut().abandon_halted();

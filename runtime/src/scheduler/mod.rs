@@ -180,6 +180,10 @@ pub enum SchedulerError {
     /// An online change was planned against another program than the one running now.
     #[error("the running program changed since the online change was checked")]
     ProgramChanged,
+    /// An online change came while a task is halted at a breakpoint: it would abandon the
+    /// halted cycle, which an online change never does.
+    #[error("a task is halted: continue it first (an online change never abandons a cycle)")]
+    Halted,
     /// The scheduler's thread could not be started or has ended.
     #[error("the scheduler thread is not running")]
     Gone,

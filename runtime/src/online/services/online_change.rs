@@ -10,7 +10,7 @@ use online_protocol::{
 use program_image::{ImageHash, ProgramImage, Region};
 
 use super::{OnlineServices, current_transfer, lock, not_now, scheduler_refusal};
-use crate::engine::{ChangeRefusal, DetailKind, Engine, OnlineChangePlan};
+use crate::engine::{ChangeRefusal, DebugState, DetailKind, Engine, OnlineChangePlan, TaskDebug};
 use crate::modbus::ModbusMap;
 use crate::scheduler::SchedulerError;
 
@@ -32,6 +32,8 @@ struct Running {
     trace: Option<Vec<Place>>,
     motion_instances: Vec<usize>,
     identity: Option<ImageHash>,
+    /// The first task halted, waiting beneath a halted task or stepping, by name.
+    halted_task: Option<String>,
 }
 
 impl OnlineServices {
@@ -64,6 +66,7 @@ impl OnlineServices {
                 }),
                 motion_instances: memory.engine.motion_instances(),
                 identity,
+                halted_task: halted_task(memory.engine.debug()),
             }))
         })?;
         let Some(running) = running else {
@@ -110,8 +113,17 @@ impl OnlineServices {
             }
         }
         let summary = plan.summary();
-        let (possible, reason, why) = match plan.refusal() {
-            Some((reason, why)) => (false, reason.number(), why.to_owned()),
+        let refusal = plan.refusal().map(|(reason, why)| (reason, why.to_owned()));
+        let refusal = refusal.or_else(|| {
+            running.halted_task.as_ref().map(|task| {
+                (
+                    ChangeRefusal::Halted,
+                    format!("task '{task}' is halted or stepping: continue it first"),
+                )
+            })
+        });
+        let (possible, reason, why) = match refusal {
+            Some((reason, why)) => (false, reason.number(), why),
             None => (true, 0, String::new()),
         };
         let clamp16 = |count: u32| u16::try_from(count).unwrap_or(u16::MAX);
@@ -211,6 +223,18 @@ impl OnlineServices {
             switch_us: u32::try_from(report.switch.as_micros()).unwrap_or(u32::MAX),
         }))
     }
+}
+
+/// The name of the first task that is halted, waiting beneath a halted task or stepping: an
+/// online change waits for no task to be in a cycle, which such a task is until it goes on.
+fn halted_task(debug: &DebugState) -> Option<String> {
+    (0..debug.task_count())
+        .find(|&task| {
+            debug.is_halted(task)
+                || debug.waiting(task)
+                || debug.task(task).is_some_and(TaskDebug::stepping)
+        })
+        .map(|task| debug.task_name(task).to_owned())
 }
 
 /// The path of the variable at a data place of `image`, as far as the symbols tell it.
