@@ -6,8 +6,10 @@
 //! requests served and failed with their response times per kind of client, and the process's
 //! resident memory at start, after warm-up and at the end.
 //!
-//! `cargo bench -p tests --bench soak_report -- --seconds 600`. Not run in CI: it takes the
-//! whole duration and its figures depend on the machine.
+//! `cargo bench -p tests --bench soak_report -- --seconds 600 [--realtime-priority 50]`; the
+//! priority runs the scheduler as `rivet-runtime --realtime-priority` does (it needs root or
+//! CAP_SYS_NICE; the header says what it got). Not run in CI: it takes the whole duration and
+//! its figures depend on the machine.
 
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::print_stdout)] // A bench binary.
 
@@ -47,23 +49,25 @@ const TRACE_SEGMENT_SAMPLES: u32 = 60_000;
 const VARIABLES: usize = 48;
 
 fn main() {
-    let seconds = seconds_argument();
+    let seconds = argument("--seconds").unwrap_or(600);
+    let realtime_priority = argument("--realtime-priority")
+        .map(|priority| u8::try_from(priority).expect("--realtime-priority takes 1 to 98"));
     let runtime = tokio::runtime::Builder::new_multi_thread()
         .worker_threads(2)
         .enable_all()
         .build()
         .unwrap();
-    runtime.block_on(soak(Duration::from_secs(seconds)));
+    runtime.block_on(soak(Duration::from_secs(seconds), realtime_priority));
 }
 
-/// The value of `--seconds N`, 600 without it; other arguments (cargo's `--bench`) are ignored.
-fn seconds_argument() -> u64 {
+/// The value of `NAME N` among the arguments (`--seconds 600`, `--realtime-priority 50`); other
+/// arguments (cargo's `--bench`) are ignored.
+fn argument(name: &str) -> Option<u64> {
     let arguments: Vec<String> = std::env::args().collect();
     arguments
         .windows(2)
-        .find(|pair| pair[0] == "--seconds")
-        .map(|pair| pair[1].parse().expect("--seconds takes a whole number"))
-        .unwrap_or(600)
+        .find(|pair| pair[0] == name)
+        .map(|pair| pair[1].parse().expect("takes a whole number"))
 }
 
 /// A program whose 1 ms task counts its cycles in `n` and changes every variable each cycle;
@@ -100,10 +104,13 @@ fn program() -> Vec<u8> {
 }
 
 /// The runtime as `rivet-runtime` assembles it, on 127.0.0.1 and a free port.
-async fn start() -> (SocketAddr, Arc<Scheduler>) {
+async fn start(realtime_priority: Option<u8>) -> (SocketAddr, Arc<Scheduler>) {
     let areas = Arc::new(Mutex::new(LocatedAreas::default()));
-    let scheduler =
-        Arc::new(Scheduler::spawn(Arc::clone(&areas), SchedulerOptions::default()).unwrap());
+    let options = SchedulerOptions {
+        realtime_priority,
+        ..SchedulerOptions::default()
+    };
+    let scheduler = Arc::new(Scheduler::spawn(Arc::clone(&areas), options).unwrap());
     let map = MapSlot::new(ModbusMap::default());
     let services = Arc::new(
         OnlineServices::new(Arc::clone(&scheduler), Some(PASSWORD.to_owned()))
@@ -467,10 +474,10 @@ async fn tracer(
     findings
 }
 
-async fn soak(duration: Duration) {
+async fn soak(duration: Duration, realtime_priority: Option<u8>) {
     let rss_start = resident_kb();
     let load_start = load_average();
-    let (address, scheduler) = start().await;
+    let (address, scheduler) = start(realtime_priority).await;
     let (mut setup, _) = Client::connect(address, Some(PASSWORD)).await.unwrap();
     setup.download(&program(), true, |_, _| {}).await.unwrap();
     let counter = setup.resolve("Main.n").await.unwrap().place;
@@ -533,9 +540,10 @@ async fn soak(duration: Duration) {
     let task = scheduler.status().tasks[0].clone();
 
     println!(
-        "soak: {clients_count} clients for {} s against a 1 ms task ({} cycles run) on {} processors; load average {load_start} at the start, {} at the end",
+        "soak: {clients_count} clients for {} s against a 1 ms task ({} cycles run, {}) on {} processors; load average {load_start} at the start, {} at the end",
         duration.as_secs(),
         task.cycles,
+        scheduler.status().realtime,
         std::thread::available_parallelism().map_or(0, usize::from),
         load_average()
     );

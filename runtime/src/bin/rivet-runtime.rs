@@ -23,7 +23,7 @@ use runtime::modbus::{
     serve,
 };
 use runtime::online::{OnlineServices, PASSWORD_VARIABLE, read_password};
-use runtime::scheduler::{Scheduler, SchedulerOptions};
+use runtime::scheduler::{Realtime, Scheduler, SchedulerOptions};
 use tokio::net::TcpListener;
 
 /// The Rivet soft PLC: runs a program image and serves Modbus TCP.
@@ -64,6 +64,11 @@ struct Arguments {
     /// plant that must never be halted from outside; online change stays available.
     #[arg(long, value_name = "on|off", default_value = "on", value_parser = ["on", "off"])]
     debug: String,
+    /// Run the scheduler at this real-time priority (1–98, Linux `SCHED_FIFO`), so that no
+    /// other program on the machine delays a task's start; needs root or CAP_SYS_NICE. Without
+    /// it the tasks run with normal scheduling.
+    #[arg(long, value_name = "1-98", value_parser = clap::value_parser!(u8).range(1..=98))]
+    realtime_priority: Option<u8>,
     /// No longer accepted (visible in the process list): refused with a message saying where
     /// the password goes now.
     #[arg(long, hide = true)]
@@ -111,9 +116,15 @@ async fn run(arguments: Arguments) -> anyhow::Result<()> {
     let areas = Arc::new(Mutex::new(LocatedAreas::default()));
     let options = SchedulerOptions {
         data_dir: Some(arguments.data_dir.clone()),
+        realtime_priority: arguments.realtime_priority,
         ..SchedulerOptions::default()
     };
     let scheduler = Arc::new(Scheduler::spawn(Arc::clone(&areas), options)?);
+    match scheduler.status().realtime {
+        Realtime::Normal => {}
+        granted @ Realtime::Fifo(_) => eprintln!("rivet-runtime: {granted}"),
+        refused @ Realtime::Refused { .. } => eprintln!("rivet-runtime: warning: {refused}"),
+    }
     let loaded = match &arguments.image {
         Some(path) => load(&scheduler, path),
         None => {

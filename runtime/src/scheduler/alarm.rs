@@ -38,8 +38,10 @@ struct State {
 
 impl Alarm {
     /// Starts the alarm's thread, disarmed, spinning `spin` before each armed time; `None` when
-    /// the system refuses a thread (then the scheduler runs without preemption).
-    pub(super) fn spawn(spin: Duration) -> Option<Self> {
+    /// the system refuses a thread (then the scheduler runs without preemption). With
+    /// `realtime_priority` the thread asks for `SCHED_FIFO` one above it, so that it runs while
+    /// the scheduler's thread is busy in a cycle even on one processor.
+    pub(super) fn spawn(spin: Duration, realtime_priority: Option<u8>) -> Option<Self> {
         let shared = Arc::new(Shared {
             due: AtomicBool::new(false),
             state: Mutex::new(State {
@@ -52,7 +54,13 @@ impl Alarm {
         let watched = Arc::clone(&shared);
         let thread = std::thread::Builder::new()
             .name("rivet-preemption-alarm".to_owned())
-            .spawn(move || watched.run())
+            .spawn(move || {
+                if let Some(priority) = realtime_priority {
+                    // The scheduler's thread asks with the same rights and reports a refusal.
+                    let _ = super::realtime::make_current_thread_realtime(priority.saturating_add(1));
+                }
+                watched.run();
+            })
             .ok()?;
         Some(Self {
             shared,
@@ -163,7 +171,7 @@ mod tests {
     #[test]
     fn the_flag_is_set_at_the_armed_time_and_cleared_by_arming_again() {
         for spin in [Duration::ZERO, Duration::from_micros(200)] {
-            let alarm = Alarm::spawn(spin).unwrap();
+            let alarm = Alarm::spawn(spin, None).unwrap();
             assert!(!is_set(&alarm));
             // A time that has passed sets the flag at once.
             alarm.arm(Some(Instant::now()));

@@ -42,6 +42,7 @@ mod alarm;
 mod cycles;
 mod halt;
 mod plan;
+mod realtime;
 mod record;
 mod retain_writer;
 mod statistics;
@@ -59,6 +60,7 @@ use crate::engine::{AppliedChange, Engine, FaultRecord, LoadError, OnlineChangeP
 use crate::online::{Forces, Memory, Trace};
 use crate::retain::{RetainError, RetainRestore};
 
+pub use realtime::{MAX_REALTIME_PRIORITY, Realtime};
 pub use record::CycleRecord;
 pub use statistics::TaskStatistics;
 
@@ -95,6 +97,10 @@ pub struct SchedulerOptions {
     /// Where to send a record of every finished cycle (for measurements such as the jitter
     /// benchmark); the channel is unbounded, so its receiver must keep reading.
     pub cycle_log: Option<mpsc::Sender<CycleRecord>>,
+    /// The `SCHED_FIFO` priority (1–99) of the scheduler's thread, the preemption alarm's one
+    /// above (`docs/scheduler.md` §6); `None` keeps normal scheduling. Refused without the
+    /// right to it (root or CAP_SYS_NICE): then the status says why and the tasks still run.
+    pub realtime_priority: Option<u8>,
 }
 
 /// A snapshot of the scheduler's state, statistics and faults.
@@ -112,6 +118,8 @@ pub struct SchedulerStatus {
     pub faults_total: u64,
     /// Why the last periodic save of retained values failed; `None` once one succeeds.
     pub retain_problem: Option<String>,
+    /// The scheduling the scheduler's thread got.
+    pub realtime: Realtime,
 }
 
 /// The native stack of the scheduler's thread: a cycle may use
@@ -200,7 +208,7 @@ pub struct Scheduler {
 impl Default for SchedulerOptions {
     /// No data directory; retained values saved every second; a freewheeling task pauses
     /// 500 µs; event triggers looked at every millisecond at least; no spinning; preemption on;
-    /// no cycle log.
+    /// no cycle log; normal scheduling.
     fn default() -> Self {
         Self {
             data_dir: None,
@@ -210,6 +218,7 @@ impl Default for SchedulerOptions {
             spin_before_start: Duration::ZERO,
             preemption: true,
             cycle_log: None,
+            realtime_priority: None,
         }
     }
 }
@@ -228,13 +237,28 @@ impl Scheduler {
             faults: Vec::new(),
             faults_total: 0,
             retain_problem: None,
+            realtime: Realtime::Normal,
         }));
+        let realtime_priority = options.realtime_priority;
         let worker = worker::Worker::new(areas, Arc::clone(&status), options);
+        let (scheduled, scheduling) = mpsc::sync_channel(1);
         let thread = std::thread::Builder::new()
             .name("rivet-scheduler".to_owned())
             .stack_size(SCHEDULER_STACK_BYTES)
-            .spawn(move || worker.run(&received))
+            .spawn(move || {
+                let realtime = realtime_priority
+                    .map_or(Realtime::Normal, realtime::make_current_thread_realtime);
+                let _ = scheduled.send(realtime);
+                worker.run(&received);
+            })
             .map_err(|_| SchedulerError::Gone)?;
+        // Known before the first command, so a caller can report it at once.
+        if let Ok(realtime) = scheduling.recv() {
+            status
+                .lock()
+                .unwrap_or_else(PoisonError::into_inner)
+                .realtime = realtime;
+        }
         Ok(Self {
             commands,
             status,

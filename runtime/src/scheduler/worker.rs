@@ -75,7 +75,7 @@ impl Worker {
             lock(&report_status).retain_problem = problem;
         });
         let alarm = if options.preemption {
-            Alarm::spawn(options.spin_before_start)
+            Alarm::spawn(options.spin_before_start, options.realtime_priority)
         } else {
             None
         };

@@ -1,0 +1,108 @@
+//! Real-time priority for the scheduler's threads (`docs/scheduler.md` §6): on Linux a
+//! `SCHED_FIFO` thread runs before every normal thread of the machine, so Modbus clients, the
+//! studio or a build on the same processors cannot delay a task's start.
+
+use std::fmt;
+
+/// The scheduling the scheduler's thread runs with, as the status reports it.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Realtime {
+    /// Normal scheduling (no real-time priority was asked for).
+    Normal,
+    /// `SCHED_FIFO` at this priority (1–99); the preemption alarm runs one above.
+    Fifo(u8),
+    /// A real-time priority was asked for and refused: the threads run with normal scheduling.
+    Refused {
+        /// The priority asked for.
+        priority: u8,
+        /// What the system said.
+        reason: String,
+    },
+}
+
+impl fmt::Display for Realtime {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Realtime::Normal => write!(f, "normal scheduling"),
+            Realtime::Fifo(priority) => write!(f, "real-time priority {priority} (SCHED_FIFO)"),
+            Realtime::Refused { priority, reason } => write!(
+                f,
+                "real-time priority {priority} refused ({reason}): normal scheduling; run the \
+                 runtime as root or give it CAP_SYS_NICE (or an RLIMIT_RTPRIO of {priority})"
+            ),
+        }
+    }
+}
+
+/// The highest priority `SCHED_FIFO` offers on Linux.
+pub const MAX_REALTIME_PRIORITY: u8 = 99;
+
+/// Puts the calling thread at `SCHED_FIFO` priority `priority` (clamped to 1–99) and says what
+/// it got.
+pub(super) fn make_current_thread_realtime(priority: u8) -> Realtime {
+    let priority = priority.clamp(1, MAX_REALTIME_PRIORITY);
+    match fifo_refusal(priority) {
+        None => Realtime::Fifo(priority),
+        Some(reason) => Realtime::Refused { priority, reason },
+    }
+}
+
+/// Asks for `SCHED_FIFO` at `priority` for the calling thread; the system's reason when it
+/// refuses, `None` when granted.
+#[cfg(unix)]
+fn fifo_refusal(priority: u8) -> Option<String> {
+    use thread_priority::unix::{
+        RealtimeThreadSchedulePolicy, ThreadSchedulePolicy, set_thread_priority_and_policy,
+        thread_native_id,
+    };
+    use thread_priority::{Error, ThreadPriority, ThreadPriorityValue};
+    let value = match ThreadPriorityValue::try_from(priority) {
+        Ok(value) => value,
+        Err(reason) => return Some(reason),
+    };
+    let result = set_thread_priority_and_policy(
+        thread_native_id(),
+        ThreadPriority::Crossplatform(value),
+        ThreadSchedulePolicy::Realtime(RealtimeThreadSchedulePolicy::Fifo),
+    );
+    match result {
+        Ok(()) => None,
+        // The system's words for its error number ("Operation not permitted").
+        Err(Error::OS(code)) => Some(std::io::Error::from_raw_os_error(code).to_string()),
+        Err(other) => Some(other.to_string()),
+    }
+}
+
+/// Real-time scheduling is offered on Linux (and other Unix systems) only.
+#[cfg(not(unix))]
+fn fifo_refusal(_priority: u8) -> Option<String> {
+    Some("real-time scheduling is offered on Linux only".to_owned())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_thread_gets_the_priority_or_says_why_not() {
+        // Whether the system allows it depends on the user running the tests; either way the
+        // answer names the priority, clamped to what SCHED_FIFO offers.
+        let got = std::thread::spawn(|| make_current_thread_realtime(120))
+            .join()
+            .unwrap();
+        match got {
+            Realtime::Fifo(priority) => assert_eq!(priority, MAX_REALTIME_PRIORITY),
+            Realtime::Refused { priority, reason } => {
+                assert_eq!(priority, MAX_REALTIME_PRIORITY);
+                assert!(!reason.is_empty());
+            }
+            Realtime::Normal => panic!("a priority was asked for"),
+        }
+        let refused = Realtime::Refused {
+            priority: 40,
+            reason: "Operation not permitted".to_owned(),
+        };
+        assert!(refused.to_string().contains("CAP_SYS_NICE"));
+        assert_eq!(Realtime::Fifo(40).to_string(), "real-time priority 40 (SCHED_FIFO)");
+    }
+}
