@@ -242,8 +242,12 @@ impl Preempt for Cycles<'_, '_> {
             self.observe_triggers(&engine, entered);
         }
         let mut ran = Vec::new();
+        // A task already in a cycle beneath (halted by the debugger, which runs tasks of lower
+        // priority above it) cannot start another before that one ends.
         while let Some(task) = plan::pick_where(self.plans, self.now_ns(), |index, plan| {
-            plan.statistics.priority < priority && !ran.contains(&index)
+            plan.statistics.priority < priority
+                && !ran.contains(&index)
+                && !self.levels.iter().any(|level| level.task == index)
         }) {
             ran.push(task);
             self.run(&mut engine, task);
