@@ -5,13 +5,14 @@
 //! native twin with `Instant` over many repetitions, takes the median of several batches, and
 //! prints nanoseconds per statement (or loop iteration) and per instruction, the native figure
 //! and their ratio. The fixed cost of a cycle (the empty program) is shown on its own line and
-//! not subtracted.
+//! not subtracted. Then what the debugger costs a call-heavy cycle (`debugger_cost`).
 
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::print_stdout)] // A bench binary.
 
 use std::hint::black_box;
 use std::time::Instant;
 
+mod debugger_cost;
 mod workloads;
 
 use workloads::{Native, compile, engine, instructions, workloads};
@@ -103,6 +104,7 @@ fn main() {
             runtime / native_ns.max(f64::MIN_POSITIVE),
         );
     }
+    debugger_cost::report(&|f| median_ns(f));
     if std::env::var_os("SCAN_DUMP").is_some() {
         for workload in workloads() {
             let image = compile(&workload);

@@ -194,12 +194,24 @@ impl Cycles<'_, '_> {
         let Some(alarm) = self.alarm else {
             return;
         };
-        let above = |plan: &TaskPlan| plan.statistics.priority < priority;
-        let mut at = plan::next_start_where(self.plans, above);
+        // A task already in a cycle beneath (halted by the debugger) cannot start another, so
+        // it arms nothing: the cycles above its halt would stop at every safe point in vain.
+        let above = |index: usize, plan: &TaskPlan| {
+            plan.statistics.priority < priority
+                && !self.levels.iter().any(|level| level.task == index)
+        };
+        let mut at = self
+            .plans
+            .iter()
+            .enumerate()
+            .filter(|(index, plan)| above(*index, plan))
+            .filter_map(|(_, plan)| plan.next_start_ns())
+            .min();
         if self
             .plans
             .iter()
-            .any(|plan| above(plan) && plan.is_event() && !plan.statistics.faulted)
+            .enumerate()
+            .any(|(index, plan)| above(index, plan) && plan.is_event() && !plan.statistics.faulted)
         {
             let poll = self.now_ns() + self.event_poll_ns;
             at = Some(at.map_or(poll, |at| at.min(poll)));
@@ -242,8 +254,12 @@ impl Preempt for Cycles<'_, '_> {
             self.observe_triggers(&engine, entered);
         }
         let mut ran = Vec::new();
+        // A task already in a cycle beneath (halted by the debugger, which runs tasks of lower
+        // priority above it) cannot start another before that one ends.
         while let Some(task) = plan::pick_where(self.plans, self.now_ns(), |index, plan| {
-            plan.statistics.priority < priority && !ran.contains(&index)
+            plan.statistics.priority < priority
+                && !ran.contains(&index)
+                && !self.levels.iter().any(|level| level.task == index)
         }) {
             ran.push(task);
             self.run(&mut engine, task);

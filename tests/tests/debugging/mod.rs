@@ -13,6 +13,8 @@ use runtime::engine::{
 
 use super::compile;
 
+mod motion;
+
 const SOURCE: &str = "
 FUNCTION Twice : INT
 VAR_INPUT v : INT; END_VAR
@@ -289,7 +291,7 @@ fn steps_go_into_over_and_out_of_a_function_and_a_method() {
     let (mut engine, image) = engine();
     let mut breakpoint = spec(&image, "Counter", "count := Twice(count) / 2;");
     breakpoint.instance = instance(&image, "Main.a");
-    engine.view().set_breakpoint(breakpoint).expect("set");
+    let (id, _) = engine.view().set_breakpoint(breakpoint).expect("set");
     let mut script = Script {
         actions: vec![
             Action::Step(StepKind::Into),
@@ -337,7 +339,7 @@ fn steps_go_into_over_and_out_of_a_function_and_a_method() {
         script.seen
     );
     assert_eq!(script.seen[3].stack[0].2.as_deref(), Some("Main.a"));
-    assert_eq!(script.seen[8].reason, HaltReason::Breakpoint(0));
+    assert_eq!(script.seen[8].reason, HaltReason::Breakpoint(id));
     assert_eq!(script.seen[1].reason, HaltReason::Step);
 }
 

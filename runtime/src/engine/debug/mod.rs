@@ -122,7 +122,7 @@ impl DebugState {
             active: false,
             breakpoints: Vec::new(),
             pou_has_breakpoint: vec![false; image.pous.len()],
-            next_id: 0,
+            next_id: 1,
             tasks: image.tasks.iter().map(|_| TaskDebug::new()).collect(),
             halted: Vec::new(),
             generation: 0,
@@ -177,7 +177,7 @@ impl DebugState {
         self.active = false;
         self.breakpoints.clear();
         self.pou_has_breakpoint.fill(false);
-        self.next_id = 0;
+        self.next_id = 1;
         for task in &mut self.tasks {
             task.pending = Pending::Nothing;
             task.stepping = false;
@@ -377,11 +377,12 @@ impl DebugState {
         if same.is_none() && self.breakpoints.len() >= MAX_BREAKPOINTS {
             return Err(DebugError::TooManyBreakpoints);
         }
-        // Ids are never 0xFFFF (every breakpoint) and not reused within a session; a session
-        // that sets 65535 breakpoints wraps around, past ids long cleared.
+        // Ids count from 1, as the user sees them (`breakpoint 1`), are never 0xFFFF (every
+        // breakpoint) and are not reused within a session; a session that sets 65534
+        // breakpoints wraps around, past ids long cleared.
         let id = self.next_id;
         self.next_id = if self.next_id >= 0xFFFE {
-            0
+            1
         } else {
             self.next_id + 1
         };

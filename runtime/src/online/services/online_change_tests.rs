@@ -1,11 +1,15 @@
 use std::sync::{Arc, Mutex};
 
-use online_protocol::{ChangeCheck, Request, Response};
-use program_image::ProgramImage;
+use online_protocol::{
+    BreakpointSpec, ChangeCheck, DebugOptions, DebugRequest, DebugResponse, HitRule, Request,
+    Response, TaskDebugState,
+};
+use program_image::{LineEntry, ProgramImage};
 use sha2::{Digest, Sha256};
 
 use super::super::OnlineServices;
 use crate::areas::LocatedAreas;
+use crate::engine::ChangeRefusal;
 use crate::scheduler::{Scheduler, SchedulerOptions};
 use crate::test_images::{TestTask, image};
 
@@ -138,4 +142,101 @@ fn online_change_needs_the_token_of_the_password() {
     ] {
         assert_eq!(answer(&services, &request).unwrap_err().status.number(), 3);
     }
+}
+
+/// A debug request from connection 1, the one the debug session is attached to.
+fn debug(services: &OnlineServices, request: DebugRequest) -> online_protocol::Answer {
+    let request = Request::Debug(request);
+    Response::decode(
+        &request,
+        &services.respond_from(Some(1), &request.encode()).unwrap(),
+    )
+    .unwrap()
+}
+
+/// Waits until task 0 is in `state`, for at most ten seconds.
+#[track_caller]
+fn wait_for_task_state(services: &OnlineServices, state: TaskDebugState) {
+    let start = std::time::Instant::now();
+    loop {
+        let answer = debug(services, DebugRequest::HaltState { from: 0 });
+        let Ok(Response::Debug(DebugResponse::HaltState(halt))) = answer else {
+            panic!("no halt state: {answer:?}");
+        };
+        if halt.tasks[0].state == state {
+            return;
+        }
+        assert!(start.elapsed().as_secs() < 10, "{halt:?}");
+        std::thread::sleep(std::time::Duration::from_millis(1));
+    }
+}
+
+#[test]
+fn an_online_change_is_refused_while_a_task_is_halted_at_a_breakpoint_and_applies_once_it_goes_on()
+{
+    let mut running = image(&[TestTask::cyclic(MS, 1)], &[]);
+    running.pous[0].lines = vec![LineEntry {
+        index: 0,
+        file: 0,
+        line: 1,
+    }];
+    let services = services(None, &running).with_debugging(true);
+    let attach = DebugRequest::Attach {
+        token: 0,
+        linger_s: 0,
+        options: DebugOptions::default(),
+    };
+    assert!(debug(&services, attach).is_ok());
+    let set = DebugRequest::BreakSet {
+        token: 0,
+        breakpoint: BreakpointSpec {
+            pou: 0,
+            instruction: 0,
+            instance: 0,
+            task: 0xFF,
+            hit: HitRule::ALWAYS,
+            condition: Vec::new(),
+        },
+    };
+    assert!(debug(&services, set).is_ok());
+    wait_for_task_state(&services, TaskDebugState::Halted);
+
+    let mut changed = running.clone();
+    changed.pous[0].code.push(program_image::Instr::Return);
+    let id = transfer(&services, 0, &changed);
+    let refused = check(&services, 0, id);
+    assert!(!refused.possible, "{refused:?}");
+    assert_eq!(refused.reason, ChangeRefusal::Halted.number());
+    assert_eq!(refused.reason, 6, "the number protocol §7 gives");
+    assert_eq!(
+        refused.why,
+        "task 'Task0' is halted or stepping: continue it first"
+    );
+    let apply = Request::OnlineChangeApply {
+        token: 0,
+        transfer: id,
+    };
+    assert_eq!(answer(&services, &apply).unwrap_err().status.number(), 7);
+    assert_eq!(services.scheduler.status().image, Some(running.identity()));
+
+    // Without the breakpoint and with the task going on, the same transfer checks and applies.
+    let clear = DebugRequest::BreakClear {
+        token: 0,
+        id: 0xFFFF,
+    };
+    assert!(debug(&services, clear).is_ok());
+    let go_on = DebugRequest::Continue {
+        token: 0,
+        task: 0xFF,
+    };
+    assert!(debug(&services, go_on).is_ok());
+    wait_for_task_state(&services, TaskDebugState::Running);
+    let possible = check(&services, 0, id);
+    assert!(possible.possible, "{possible:?}");
+    let applied = answer(&services, &apply);
+    assert!(
+        matches!(applied, Ok(Response::OnlineChangeApply(_))),
+        "{applied:?}"
+    );
+    assert_eq!(services.scheduler.status().image, Some(changed.identity()));
 }
