@@ -214,18 +214,19 @@ async fn run(
                         }
                         Command::Download { image, start } => {
                             let progress = events.clone();
-                            let result = client
+                            let sent = client
                                 .transfer(&image, |sent, total| {
                                     let _ = progress.try_send(Event::DownloadProgress(sent, total));
                                 })
                                 .await;
-                            match result {
+                            let result = match sent {
                                 Ok(transfer) => {
-                                    match online_change::commit(&mut client, transfer, start).await {
-                                        Ok(()) => client.identify().await.map(|identity| identity.state),
-                                        Err(error) => Err(error),
-                                    }
+                                    online_change::commit(&mut client, transfer, start).await
                                 }
+                                Err(error) => Err(error),
+                            };
+                            match result {
+                                Ok(()) => client.identify().await.map(|identity| identity.state),
                                 Err(error) => Err(error),
                             }
                         }
