@@ -29,11 +29,12 @@ use crate::{
 pub enum Command {
     /// Read these places every poll (an empty list stops polling).
     Watch(Vec<Place>),
-    /// Download an image; `start` starts it once loaded.
+    /// Download an image; `start` starts it once loaded, otherwise the target's program is
+    /// stopped before the load and the new one stays stopped (as CODESYS's download does).
     Download {
         /// The encoded image.
         image: Vec<u8>,
-        /// Start it once loaded.
+        /// Start it once loaded; without it the target is stopped before the load.
         start: bool,
     },
     /// Start the program.
@@ -213,13 +214,19 @@ async fn run(
                         }
                         Command::Download { image, start } => {
                             let progress = events.clone();
-                            let result = client
-                                .download(&image, start, |sent, total| {
+                            let sent = client
+                                .transfer(&image, |sent, total| {
                                     let _ = progress.try_send(Event::DownloadProgress(sent, total));
                                 })
                                 .await;
+                            let result = match sent {
+                                Ok(transfer) => {
+                                    online_change::commit(&mut client, transfer, start).await
+                                }
+                                Err(error) => Err(error),
+                            };
                             match result {
-                                Ok(_) => client.identify().await.map(|identity| identity.state),
+                                Ok(()) => client.identify().await.map(|identity| identity.state),
                                 Err(error) => Err(error),
                             }
                         }

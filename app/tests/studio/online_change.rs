@@ -1,7 +1,7 @@
 //! Logging in to a simulator that runs another version of the project (`docs/debugging.md`
 //! §6): the dialog offers the online change and lists it, the change keeps the program running
 //! with its values, and a task configuration change is refused with its reason and leaves only
-//! the download.
+//! the download, which stops the program and leaves it stopped until the user starts it.
 
 use std::path::Path;
 
@@ -49,7 +49,7 @@ fn change_and_log_in(harness: &mut Harness<'_, StudioApp>, dir: &Path, edit: imp
 }
 
 #[test]
-fn an_online_change_keeps_the_counter_and_a_task_change_offers_only_the_download() {
+fn an_online_change_keeps_the_counter_and_a_task_change_offers_only_the_download_which_stops() {
     let project = example_copy(add_counter);
     let dir = project.path();
     let mut harness = studio(dir);
@@ -146,12 +146,33 @@ fn an_online_change_keeps_the_counter_and_a_task_change_offers_only_the_download
     wait_until(&mut harness, "the download", |app| {
         *app.online().phase() == Phase::Online
     });
-    // A download starts the variables from their initial values: the counter starts again.
+    // As CODESYS's login with download: the running program was stopped, and the new one
+    // waits for the user's start with its variables at their initial values.
+    assert_eq!(
+        harness.state().online().target_state(),
+        Some(TargetState::Stopped)
+    );
     show_tab(&mut harness, "Watch");
     watch(&mut harness, "Main.udiTicks");
-    wait_until(&mut harness, "the counter started again", |app| {
+    wait_until(&mut harness, "the counter at its initial value", |app| {
+        value(app, "Main.udiTicks").is_some_and(|(text, _)| text == "0")
+    });
+    // A few refreshes later it still is: no cycle ran.
+    for _ in 0..20 {
+        harness.step();
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    assert_eq!(
+        value(harness.state(), "Main.udiTicks").map(|(text, _)| text),
+        Some("0".to_owned())
+    );
+    harness.key_press(Key::F5);
+    wait_until(&mut harness, "the start", |app| {
+        app.online().target_state() == Some(TargetState::Running)
+    });
+    wait_until(&mut harness, "the counter counting from its start", |app| {
         value(app, "Main.udiTicks")
             .and_then(|(text, _)| text.parse::<u64>().ok())
-            .is_some_and(|ticks| ticks < 1_000_000)
+            .is_some_and(|ticks| ticks > 0 && ticks < 1_000_000)
     });
 }

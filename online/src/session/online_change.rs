@@ -16,12 +16,13 @@ pub enum ChangeCommand {
     Check(Vec<u8>),
     /// Apply the checked online change of this transfer; answered by [`Event::ChangeApplied`].
     Apply(u16),
-    /// Load the checked transfer as a full download instead (`start` starts it); answered by
-    /// [`Event::Done`].
+    /// Load the checked transfer as a full download instead (`start` starts it; without it the
+    /// target's program is stopped before the load and the new one stays stopped, as
+    /// CODESYS's login with download does); answered by [`Event::Done`].
     Commit {
         /// The transfer's number.
         transfer: u16,
-        /// Start the program once loaded.
+        /// Start the program once loaded; without it the target is stopped before the load.
         start: bool,
     },
     /// Drop a transfer, changing nothing on the target; answered by [`Event::Done`].
@@ -60,7 +61,7 @@ pub(super) async fn run(
             Ok(Some(Event::ChangeApplied(applied, state)))
         }
         ChangeCommand::Commit { transfer, start } => {
-            client.commit(transfer, start).await?;
+            commit(client, transfer, start).await?;
             Ok(None)
         }
         ChangeCommand::Abort(transfer) => {
@@ -68,6 +69,23 @@ pub(super) async fn run(
             Ok(None)
         }
     }
+}
+
+/// `DOWNLOAD_COMMIT` of a transferred image as CODESYS's download does it: without `start`,
+/// the running program is stopped first, so the new one is loaded stopped and waits for the
+/// user's start (a runtime keeps a running target running across a commit, and the new code
+/// would otherwise run at once from its initial values, unasked). With `start` it is started
+/// once loaded.
+pub(super) async fn commit(
+    client: &mut Client,
+    transfer: u16,
+    start: bool,
+) -> Result<(), OnlineError> {
+    if !start {
+        client.stop().await?;
+    }
+    client.commit(transfer, start).await?;
+    Ok(())
 }
 
 /// The check of an open transfer with its details, which exist only when the target runs a

@@ -1,6 +1,7 @@
 //! The execution state of one task while its programs run: memory, the current instance and
 //! frame, the stack pointer, the task clock and the watchdog.
 
+use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Instant;
 
@@ -61,7 +62,7 @@ pub(crate) struct Exec<'a> {
     pub(crate) regions: &'a Regions,
     pub(crate) code: &'a Compiled,
     /// The image, lent with the memory to a task that interrupts this cycle.
-    pub(super) image: &'a ProgramImage,
+    pub(super) image: &'a Arc<ProgramImage>,
     /// Set when a task of higher priority may be due; read at every safe point.
     due: &'a AtomicBool,
     /// Runs the tasks that interrupt this cycle, and serves a halt; `None` when nothing may.
@@ -94,7 +95,7 @@ impl<'a> Exec<'a> {
     #[allow(clippy::too_many_arguments)]
     pub(crate) fn new(
         mem: &'a mut [u8],
-        image: &'a ProgramImage,
+        image: &'a Arc<ProgramImage>,
         regions: &'a Regions,
         code: &'a Compiled,
         (stack_start, stack_end): (usize, usize),

@@ -20,6 +20,8 @@ mod scalar;
 mod strings;
 mod view;
 
+use std::sync::Arc;
+
 use program_image::{InitRun, ProgramImage, Region};
 
 pub use carry::carry_retained;
@@ -52,7 +54,9 @@ pub enum ResetKind {
 
 /// A loaded image with its memory.
 pub struct Engine {
-    image: ProgramImage,
+    /// Shared, so that an online change's check can compare with the running image without
+    /// copying it on the scheduler's thread.
+    image: Arc<ProgramImage>,
     regions: Regions,
     code: Compiled,
     memory: Vec<u8>,
@@ -84,7 +88,7 @@ impl Engine {
         let mut engine = Self {
             debug: DebugState::new(&image),
             memory: vec![0; regions.total],
-            image,
+            image: Arc::new(image),
             regions,
             code,
             motion,
@@ -96,6 +100,11 @@ impl Engine {
     /// The image being run.
     pub fn image(&self) -> &ProgramImage {
         &self.image
+    }
+
+    /// The image being run, shared rather than copied.
+    pub fn shared_image(&self) -> Arc<ProgramImage> {
+        Arc::clone(&self.image)
     }
 
     /// The data-region offsets of the motion block instances whose commands the motion

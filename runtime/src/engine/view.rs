@@ -1,6 +1,7 @@
 //! The engine lent out while a cycle runs: what a preempting task's cycle needs to run on the
 //! same memory as the cycle it interrupts.
 
+use std::sync::Arc;
 use std::sync::atomic::AtomicBool;
 use std::time::{Duration, Instant};
 
@@ -18,7 +19,7 @@ use super::native::MotionState;
 /// from an interrupted cycle at a safe point, where [`Preempt::preempt`] receives it to run
 /// cycles of tasks of higher priority.
 pub struct EngineView<'e> {
-    pub(super) image: &'e ProgramImage,
+    pub(super) image: &'e Arc<ProgramImage>,
     pub(super) regions: &'e Regions,
     pub(super) code: &'e Compiled,
     pub(super) memory: &'e mut [u8],
@@ -55,6 +56,12 @@ impl EngineView<'_> {
     /// The image being run.
     pub fn image(&self) -> &ProgramImage {
         self.image
+    }
+
+    /// The image being run, shared rather than copied (an online change's check keeps it
+    /// while it compares, away from the scheduler's thread).
+    pub fn shared_image(&self) -> Arc<ProgramImage> {
+        Arc::clone(self.image)
     }
 
     /// The data-region offsets of the motion block instances whose commands the motion

@@ -66,8 +66,9 @@ impl Cycles<'_, '_> {
                 }
                 // An online change waits for a moment when no task is in a cycle; here one is
                 // halted in its cycle, and an online change never abandons a cycle.
-                Ok(Command::OnlineChange(_, reply)) => {
-                    let _ = reply.send(Err(SchedulerError::Halted));
+                Ok(Command::OnlineChange(change, reply)) => {
+                    let (refused, ..) = *change;
+                    let _ = reply.send((Err(SchedulerError::Halted), Some(refused)));
                 }
                 Ok(other) => {
                     engine.debug_mut().abandon_halted();

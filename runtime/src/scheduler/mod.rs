@@ -160,6 +160,10 @@ pub struct OnlineChangeReport {
     pub switch: Duration,
 }
 
+/// The scheduler's answer to an online change, with the engine it no longer needs (the old one
+/// after a switch, the new one when refused), for the asking thread to drop.
+type ChangeAnswer = (Result<OnlineChangeReport, SchedulerError>, Option<Engine>);
+
 /// What an action run between two cycles (see [`Scheduler::between`]) may touch; it lives only
 /// while the action runs.
 pub struct Between<'a> {
@@ -286,7 +290,12 @@ impl Scheduler {
         from: ImageHash,
         to: ImageHash,
     ) -> Result<OnlineChangeReport, SchedulerError> {
-        self.ask(|reply| Command::OnlineChange(Box::new((engine, plan, from, to)), reply))?
+        let (result, retired) =
+            self.ask(|reply| Command::OnlineChange(Box::new((engine, plan, from, to)), reply))?;
+        // Freeing an engine's code takes milliseconds for a large program: here, on the
+        // caller's thread, it holds no task.
+        drop(retired);
+        result
     }
 
     /// Starts every task that has not faulted.
@@ -381,7 +390,7 @@ enum Command {
     /// An online change: the new engine, its plan, the images it changes from and to.
     OnlineChange(
         Box<(Engine, Arc<OnlineChangePlan>, ImageHash, ImageHash)>,
-        mpsc::Sender<Result<OnlineChangeReport, SchedulerError>>,
+        mpsc::Sender<ChangeAnswer>,
     ),
     /// An action between two cycles, which sends its own answer.
     Between(BetweenAction),

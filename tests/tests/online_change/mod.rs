@@ -100,6 +100,79 @@ seen := p^;
 END_PROGRAM
 ";
 
+/// Three POUs that use two globals; [`MOVED`] adds a global before them and edits the
+/// function only.
+const GLOBALS: &str = "
+VAR_GLOBAL gCount : DINT; gLimit : DINT := 3; END_VAR
+FUNCTION scale : DINT
+VAR_INPUT x : DINT; END_VAR
+scale := x * 2;
+END_FUNCTION
+FUNCTION_BLOCK adder
+VAR_OUTPUT total : DINT; END_VAR
+total := total + gLimit;
+END_FUNCTION_BLOCK
+PROGRAM main
+VAR a : adder; n : DINT; END_VAR
+a();
+n := scale(gCount);
+gCount := gCount + 1;
+END_PROGRAM
+";
+
+const MOVED: &str = "
+VAR_GLOBAL gFirst : LREAL; gCount : DINT; gLimit : DINT := 3; END_VAR
+FUNCTION scale : DINT
+VAR_INPUT x : DINT; END_VAR
+scale := x * 3;
+END_FUNCTION
+FUNCTION_BLOCK adder
+VAR_OUTPUT total : DINT; END_VAR
+total := total + gLimit;
+END_FUNCTION_BLOCK
+PROGRAM main
+VAR a : adder; n : DINT; END_VAR
+a();
+n := scale(gCount);
+gCount := gCount + 1;
+END_PROGRAM
+";
+
+#[test]
+fn a_global_added_and_one_pou_edited_lists_only_that_pou_as_changed() {
+    let (old, new) = (compile(GLOBALS), compile(MOVED));
+    let code = |image: &ProgramImage, name: &str| {
+        let pou = image
+            .pous
+            .iter()
+            .find(|pou| pou.name.eq_ignore_ascii_case(name));
+        pou.map(|pou| pou.code.clone()).unwrap_or_default()
+    };
+    // The globals moved, so the program's and the block's code were generated anew.
+    for name in ["main", "adder"] {
+        assert_ne!(code(&old, name), code(&new, name), "{name}");
+    }
+    let running = Engine::new(old.clone()).unwrap();
+    let plan = OnlineChangePlan::new(&old, running.region(Region::Data), &new);
+    assert_eq!(plan.refusal(), None);
+    assert_eq!(listed(&plan, DetailKind::PouChanged), ["scale"]);
+    assert_eq!(plan.summary().pous_changed, 1);
+    let added = listed(&plan, DetailKind::VariableAdded);
+    assert!(
+        added.iter().any(|path| path.ends_with("gfirst")),
+        "{added:?}"
+    );
+
+    // Without the debug sections the code decides: the POUs whose code only moved are listed,
+    // and the function is not, because its new factor lives in the constant pool and its
+    // instructions are the same.
+    let (mut bare_old, mut bare_new) = (old, new);
+    bare_old.debug = None;
+    bare_new.debug = None;
+    let plan = OnlineChangePlan::new(&bare_old, running.region(Region::Data), &bare_new);
+    assert_eq!(listed(&plan, DetailKind::PouChanged), ["adder", "main"]);
+}
+
 #[test]
 fn members_of_every_instance_keep_their_values_and_a_pointer_follows_its_target() {
     let (old, new) = (compile(OLD), compile(NEW));
@@ -125,7 +198,7 @@ fn members_of_every_instance_keep_their_values_and_a_pointer_follows_its_target(
     assert_eq!(plan.summary().pointers_moved, 1);
 
     let mut next = Engine::new(new).unwrap();
-    let applied = plan.apply(running, &mut next);
+    let applied = plan.apply(&mut running, &mut next);
     assert_eq!(applied.pointers_moved, 1);
     // Before the first new cycle: the values of the old one, the new ones' initial values.
     assert_eq!(dint(&next, "main.c1.total"), 5);
@@ -194,7 +267,7 @@ fn the_example_changes_online_with_its_axes_and_a_changed_task_interval_is_refus
         "the added variable moves the instances after it"
     );
     let mut next = Engine::new(new).unwrap();
-    let applied = plan.apply(running, &mut next);
+    let applied = plan.apply(&mut running, &mut next);
     assert_eq!(applied.motion_blocks_dropped, 0);
     assert_eq!(next.motion_instances().len(), instances.len());
     assert!(applied.carried > 0);

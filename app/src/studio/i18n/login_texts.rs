@@ -66,8 +66,8 @@ impl LoginText {
                 "新代码在两个周期之间接管；任务继续运行，变量保留其值",
             ),
             Self::DownloadHint => (
-                "The project's program replaces the target's; its variables start from their initial values (RETAIN and PERSISTENT kept)",
-                "项目程序替换目标上的程序；变量从初始值开始（RETAIN 和 PERSISTENT 保留）",
+                "The target's program stops and the project's replaces it, stopped until you start it (F5); its variables start from their initial values (RETAIN and PERSISTENT kept)",
+                "目标上的程序停止并被项目程序替换，替换后保持停止，直到您启动它（F5）；变量从初始值开始（RETAIN 和 PERSISTENT 保留）",
             ),
             Self::WithoutChangeHint => (
                 "Log in to the program the target runs; the project's changes are not sent",

@@ -126,17 +126,18 @@ impl MotionState {
     /// its instances and when each task last ran, after an online change whose motion section
     /// differs from the old one only in where its references live. `moved` gives an old
     /// instance's absolute offset in the new memory, `None` where the instance is gone; such
-    /// blocks are dropped and their count returned.
+    /// blocks are dropped and their count returned. `old` is left without a kernel and
+    /// blocks: it belongs to an engine that is retired.
     pub(crate) fn carry_from(
         &mut self,
-        old: MotionState,
+        old: &mut MotionState,
         moved: impl Fn(usize) -> Option<usize>,
     ) -> usize {
-        self.kernel = old.kernel;
-        self.last_cycle_ns = old.last_cycle_ns;
+        self.kernel = std::mem::take(&mut old.kernel);
+        self.last_cycle_ns = std::mem::take(&mut old.last_cycle_ns);
         let mut dropped = 0;
         self.instances = HashMap::default();
-        for (offset, block) in old.instances {
+        for (offset, block) in std::mem::take(&mut old.instances) {
             match moved(offset) {
                 Some(new_offset) => {
                     self.instances.insert(new_offset, block);

@@ -9,7 +9,9 @@
 mod layout;
 mod verdict;
 
-use program_image::{ProgramImage, Region};
+use std::collections::HashMap;
+
+use program_image::{DebugInfo, ProgramImage, Region};
 
 use super::Engine;
 use layout::{Matching, PointerSlot, Segment, SlotKind};
@@ -235,8 +237,10 @@ impl OnlineChangePlan {
     /// kept their path and type, moves pointers by their current values, and hands `old`'s
     /// motion kernel (axes, motion and the blocks' commands) to `new`. `new` must have been
     /// loaded from the image the plan was made for, and `old` from the running one; the
-    /// located areas are the caller's (they do not move).
-    pub fn apply(&self, old: Engine, new: &mut Engine) -> AppliedChange {
+    /// located areas are the caller's (they do not move). `old` is left without its motion
+    /// kernel; it is borrowed, not taken, so the caller can drop it where freeing its code
+    /// holds no task.
+    pub fn apply(&self, old: &mut Engine, new: &mut Engine) -> AppliedChange {
         let old_data = old.region(Region::Data);
         let mut applied = AppliedChange {
             carried: self.summary.carried,
@@ -313,7 +317,7 @@ impl OnlineChangePlan {
             }
         }
         let (old_base, new_base) = (old.regions.data, new.regions.data);
-        let dropped = new.motion.carry_from(old.motion, |instance| {
+        let dropped = new.motion.carry_from(&mut old.motion, |instance| {
             let offset = instance.checked_sub(old_base)?;
             self.moved_byte(offset).map(|at| at + new_base)
         });
@@ -337,37 +341,53 @@ impl OnlineChangePlan {
     }
 }
 
-/// The POUs changed, added and removed, by name; a POU's code counts as changed when its
-/// instructions or its frame differ (so one whose variables only moved is listed too).
+/// The POUs changed, added and removed, by name. When both images carry a `debug` section, a
+/// POU counts as changed when its source hash differs: adding a global moves the addresses in
+/// nearly every POU's code, and the user is to read the POUs they edited, not those whose
+/// code was generated again around moved variables (which are replaced all the same). Without
+/// both sections a POU counts as changed when its instructions or its frame differ.
 fn pou_details(old: &ProgramImage, new: &ProgramImage) -> Vec<ChangeDetail> {
+    let by_name = |image: &ProgramImage| -> HashMap<String, usize> {
+        image
+            .pous
+            .iter()
+            .enumerate()
+            .map(|(index, pou)| (pou.name.to_ascii_lowercase(), index))
+            .collect()
+    };
+    let (old_names, new_names) = (by_name(old), by_name(new));
+    let hashes = match (&old.debug, &new.debug) {
+        (Some(before), Some(after)) => Some((before, after)),
+        _ => None,
+    };
     let mut details = Vec::new();
-    for pou in &new.pous {
+    for (index, pou) in new.pous.iter().enumerate() {
         let detail = |kind| ChangeDetail {
             kind,
             name: pou.name.clone(),
         };
-        match old
-            .pous
-            .iter()
-            .find(|p| p.name.eq_ignore_ascii_case(&pou.name))
-        {
-            None => details.push(detail(DetailKind::PouAdded)),
-            Some(before)
-                if before.code != pou.code
-                    || before.frame_size != pou.frame_size
-                    || before.frame_init != pou.frame_init =>
-            {
-                details.push(detail(DetailKind::PouChanged));
+        let Some(&old_index) = old_names.get(&pou.name.to_ascii_lowercase()) else {
+            details.push(detail(DetailKind::PouAdded));
+            continue;
+        };
+        let before = &old.pous[old_index];
+        let changed = match hashes {
+            Some((before_debug, after_debug)) => {
+                let hash = |debug: &DebugInfo, at: usize| debug.pous.get(at).map(|p| p.source_hash);
+                hash(before_debug, old_index) != hash(after_debug, index)
             }
-            Some(_) => {}
+            None => {
+                before.code != pou.code
+                    || before.frame_size != pou.frame_size
+                    || before.frame_init != pou.frame_init
+            }
+        };
+        if changed {
+            details.push(detail(DetailKind::PouChanged));
         }
     }
     for pou in &old.pous {
-        if !new
-            .pous
-            .iter()
-            .any(|p| p.name.eq_ignore_ascii_case(&pou.name))
-        {
+        if !new_names.contains_key(&pou.name.to_ascii_lowercase()) {
             details.push(ChangeDetail {
                 kind: DetailKind::PouRemoved,
                 name: pou.name.clone(),

@@ -118,7 +118,7 @@ fn a_member_added_to_a_function_block_keeps_the_other_members_of_every_instance(
     assert_eq!(plan.summary().carried, 4);
 
     let mut next = Engine::new(new).unwrap();
-    let applied = plan.apply(running, &mut next);
+    let applied = plan.apply(&mut running, &mut next);
     assert_eq!(applied.carried, 4);
     assert_eq!(
         [0, 4, 8, 12, 16, 20].map(|offset| read_dint(&next, offset)),
@@ -167,7 +167,7 @@ fn a_changed_type_is_reinitialised_a_removed_variable_listed_and_a_constant_take
     assert_eq!(names(&plan, DetailKind::VariableRemoved), ["GVL.gone"]);
     assert_eq!(plan.summary().carried, 0);
     let mut next = Engine::new(new).unwrap();
-    plan.apply(running, &mut next);
+    plan.apply(&mut running, &mut next);
     assert_eq!(read_dint(&next, 0), 0);
     assert_eq!(read_dint(&next, 8), 50);
 }
@@ -212,7 +212,7 @@ fn a_pointer_follows_its_target_to_its_new_place_and_one_whose_target_is_gone_is
     assert_eq!(plan.summary().pointers_cleared, 1);
     assert_eq!(names(&plan, DetailKind::PointerCleared), ["GVL.toGone"]);
     let mut next = Engine::new(new).unwrap();
-    let applied = plan.apply(running, &mut next);
+    let applied = plan.apply(&mut running, &mut next);
     assert_eq!((applied.pointers_moved, applied.pointers_cleared), (1, 1));
     assert_eq!(read_dint(&next, 4), 77);
     assert_eq!(read_u64_at(&next, 8), data_pointer(4));
@@ -275,4 +275,55 @@ fn a_changed_pou_is_listed_with_those_added_and_removed() {
     assert_eq!(names(&plan, DetailKind::PouAdded), ["Helper"]);
     let back = OnlineChangePlan::new(&new, &[0; 256], &old);
     assert_eq!(names(&back, DetailKind::PouRemoved), ["Helper"]);
+}
+
+/// `image` with a function `Helper` after its program, and a `debug` section giving the
+/// program and the function the source hashes `program` and `helper`.
+fn with_helper_and_hashes(mut image: ProgramImage, program: u8, helper: u8) -> ProgramImage {
+    let mut function = image.pous[0].clone();
+    function.name = "Helper".to_owned();
+    function.kind = program_image::PouKind::Function;
+    image.pous.push(function);
+    let pou = |hash: u8| program_image::PouDebug {
+        source_hash: [hash; 32],
+        frame: Vec::new(),
+    };
+    image.debug = Some(DebugInfo {
+        pous: vec![pou(program), pou(helper)],
+    });
+    image
+}
+
+#[test]
+fn with_source_hashes_only_the_edited_pou_is_changed_when_a_global_moved_every_address() {
+    let old = with_helper_and_hashes(
+        image_with(10_000_000, vec![dint()], vec![symbol("GVL.a", 1, 0)]),
+        1,
+        2,
+    );
+    // A global added before `GVL.a` moves it, so both POUs' code is generated again with
+    // other addresses; only the function's source was edited.
+    let mut new = with_helper_and_hashes(
+        image_with(
+            10_000_000,
+            vec![dint()],
+            vec![symbol("GVL.b", 1, 0), symbol("GVL.a", 1, 4)],
+        ),
+        1,
+        3,
+    );
+    for pou in &mut new.pous {
+        pou.code.insert(0, program_image::Instr::Return);
+    }
+    let plan = OnlineChangePlan::new(&old, &[0; 256], &new);
+    assert_eq!(plan.refusal(), None);
+    assert_eq!(names(&plan, DetailKind::PouChanged), ["Helper"]);
+    assert_eq!(names(&plan, DetailKind::VariableAdded), ["GVL.b"]);
+    assert_eq!(plan.summary().pous_changed, 1);
+
+    // Without the debug section of one image, the code decides: both are listed.
+    let mut bare = new.clone();
+    bare.debug = None;
+    let plan = OnlineChangePlan::new(&old, &[0; 256], &bare);
+    assert_eq!(names(&plan, DetailKind::PouChanged), ["Program0", "Helper"]);
 }

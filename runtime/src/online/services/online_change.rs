@@ -26,7 +26,8 @@ pub(super) struct CheckedChange {
 
 /// What the check needs of the running program, taken between two cycles.
 struct Running {
-    image: ProgramImage,
+    /// Shared with the running engine: copying a large image would hold the tasks.
+    image: Arc<ProgramImage>,
     data: Vec<u8>,
     forces: Vec<Place>,
     trace: Option<Vec<Place>>,
@@ -56,7 +57,7 @@ impl OnlineServices {
         let identity = self.scheduler.status().image;
         let running = self.between(move |between| {
             Ok(between.memory.as_ref().map(|memory| Running {
-                image: memory.engine.image().clone(),
+                image: memory.engine.shared_image(),
                 data: memory.engine.region(Region::Data).to_vec(),
                 forces: between.forces.entries().iter().map(|(p, _)| *p).collect(),
                 trace: between.trace.config().map(|config| {

@@ -11,7 +11,7 @@ use program_image::{ImageHash, Region};
 use super::{Worker, copy, lock};
 use crate::engine::{Engine, OnlineChangePlan};
 use crate::retain::RetainSnapshot;
-use crate::scheduler::{OnlineChangeReport, SchedulerError};
+use crate::scheduler::{ChangeAnswer, OnlineChangeReport, SchedulerError};
 
 /// The place number of the data region in a [`Place`].
 const PLACE_DATA: u8 = 0;
@@ -20,20 +20,22 @@ impl Worker {
     /// Replaces the running engine, made from the image `from`, with `engine`, carrying the
     /// values by `plan`. Commands are handled between cycles only, so no task is in a cycle
     /// now; the task plans are kept as they are (the task configuration is the same), so the
-    /// next due cycle of every task runs the new code and none is missed.
+    /// next due cycle of every task runs the new code and none is missed. The engine that is
+    /// no longer needed (the old one, or `engine` when refused) goes back with the answer, so
+    /// that freeing it holds no task.
     pub(super) fn switch(
         &mut self,
         mut engine: Engine,
         plan: &Arc<OnlineChangePlan>,
         from: ImageHash,
         to: ImageHash,
-    ) -> Result<OnlineChangeReport, SchedulerError> {
+    ) -> ChangeAnswer {
         let started = Instant::now();
         if lock(&self.status).image != Some(from) {
-            return Err(SchedulerError::ProgramChanged);
+            return (Err(SchedulerError::ProgramChanged), Some(engine));
         }
         let Some(program) = self.program.as_mut() else {
-            return Err(SchedulerError::NoProgram);
+            return (Err(SchedulerError::NoProgram), Some(engine));
         };
         {
             // The located areas keep their content: the new engine starts from the shared
@@ -43,8 +45,8 @@ impl Worker {
             copy(&areas.output, engine.region_mut(Region::Output));
             copy(&areas.memory, engine.region_mut(Region::Memory));
         }
-        let old = std::mem::replace(&mut program.engine, engine);
-        let applied = plan.apply(old, &mut program.engine);
+        let mut old = std::mem::replace(&mut program.engine, engine);
+        let applied = plan.apply(&mut old, &mut program.engine);
         let moved = |place: Place| match place.region {
             PLACE_DATA => plan
                 .moved_range(place.offset as usize, place.value_bytes())
@@ -61,13 +63,14 @@ impl Worker {
             writer.write_later(snapshot);
         }
         lock(&self.status).image = Some(to);
-        Ok(OnlineChangeReport {
+        let report = OnlineChangeReport {
             cycles: self.cycles_total,
             applied,
             forces_released,
             trace_removed,
             switch: started.elapsed(),
-        })
+        };
+        (Ok(report), Some(old))
     }
 }
 
