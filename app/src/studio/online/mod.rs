@@ -66,6 +66,9 @@ pub struct BuiltImage {
     /// The image itself, whose types show values as the program declares them (enumerations
     /// by name) once the target is known to run it.
     pub program: Arc<program_image::ProgramImage>,
+    /// The project it was built from, which a breakpoint's condition is compiled against so
+    /// that it belongs to this very image.
+    pub project: Arc<project_model::Project>,
 }
 
 /// Where the login is.
@@ -183,6 +186,8 @@ pub struct Online {
     waker: Option<Waker>,
     /// The language of the messages, set by the studio every frame.
     language: Language,
+    /// The debug session on the target.
+    debugging: debug_target::Debugging,
 }
 
 impl Drop for Online {
@@ -228,6 +233,7 @@ impl Online {
             project_devices: Vec::new(),
             waker: None,
             language: Language::default(),
+            debugging: debug_target::Debugging::default(),
         }
     }
 
@@ -391,6 +397,7 @@ impl Online {
     /// once); the target keeps running as it is.
     pub fn logout(&mut self) {
         self.link = None;
+        self.debug_connection_ended();
         self.phase = Phase::Offline;
         self.target_state = None;
         self.forget_program();

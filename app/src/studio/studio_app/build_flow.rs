@@ -104,5 +104,7 @@ impl Studio {
             .login(target, address, password, image, move || {
                 wake.request_repaint();
             });
+        // The project's breakpoints go to the target once its debug session is attached.
+        self.sync_breakpoints();
     }
 }

@@ -139,9 +139,15 @@ pub(super) fn body_ui(
     }
     let diagnostics = body_diagnostics(&texts.live, project, &pou.name, &target);
     let inline = if view.online.is_online() {
+        // While halted in this POU, its values are the halted frame's instance's.
+        let halted = view
+            .debug
+            .shown_frame()
+            .filter(|frame| frame.pou.eq_ignore_ascii_case(&pou.name))
+            .and_then(|frame| frame.instance.as_deref());
         texts
             .inline
-            .values_for(view.online, project, &target, text, pou)
+            .values_for(view.online, project, &target, text, pou, halted)
     } else {
         texts.inline.forget(&target);
         Vec::new()
