@@ -299,3 +299,28 @@ fn in_the_simulator_a_breakpoint_halts_steps_go_on_a_caller_frame_opens_and_logo
     });
     assert!(!harness.state().debug_state().is_halted());
 }
+
+#[test]
+fn in_the_simulator_flow_control_marks_the_lines_of_main_that_ran() {
+    let project = example_copy(|_| {});
+    let mut harness = studio(project.path());
+    harness.state_mut().build();
+    wait_until(&mut harness, "the build", |app| {
+        app.last_build().is_some_and(|build| build.image.is_some())
+    });
+    open_main_at_start(&mut harness);
+    login_with_download(&mut harness);
+    harness.key_press(Key::F5);
+    harness.get_by_label("Debug").click();
+    harness.run();
+    harness.get_by_label("Flow control").click();
+    harness.step();
+    // The call of fbConveyor (line 2) runs every cycle; the package count (line 15) only on a
+    // package, which never comes here.
+    wait_until(&mut harness, "the flow marks of Main", |app| {
+        app.body_debug_marks(&main_target())
+            .is_some_and(|marks| marks.flow_lines.contains(&1))
+    });
+    let marks = harness.state().body_debug_marks(&main_target()).unwrap();
+    assert!(!marks.flow_lines.contains(&14), "{:?}", marks.flow_lines);
+}

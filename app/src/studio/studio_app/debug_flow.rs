@@ -102,7 +102,7 @@ impl Studio {
 
     /// The POU bodies of the open Structured Text editors with the instances they show, which
     /// flow control records.
-    fn flow_bodies(&self) -> Vec<(String, Option<String>)> {
+    pub(super) fn flow_bodies(&self) -> Vec<(String, Option<String>)> {
         self.shared
             .session
             .as_ref()
