@@ -86,3 +86,43 @@ fn a_lost_controller_is_reported_edits_are_kept_and_the_studio_reconnects() {
     });
     assert!(harness.state().session().unwrap().history.is_dirty());
 }
+
+#[test]
+fn a_lost_controller_ends_the_halt_in_the_studio() {
+    use egui::{Key, Modifiers};
+    use egui_kittest::kittest::Queryable as _;
+
+    let (port, stop) = controller(0);
+    let project = example_copy(|dir| {
+        replace_in(dir, "rivet.toml", "port = 5020", &format!("port = {port}"));
+    });
+    let mut harness = studio(project.path());
+    harness.state_mut().set_target(TargetKind::Controller);
+    harness.state_mut().build();
+    wait_until(&mut harness, "the build", |app| {
+        app.last_build().is_some_and(|build| build.image.is_some())
+    });
+    // F9 on the first line of Main's body sets a breakpoint on its first statement.
+    harness.get_by_label("Main").focus();
+    harness.step();
+    harness.key_press(Key::Enter);
+    harness.step();
+    harness.step();
+    harness.get_by_label("Implementation of Main").click();
+    harness.step();
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::Home);
+    harness.step();
+    harness.key_press(Key::F9);
+    harness.step();
+    login_with_download(&mut harness);
+    harness.key_press(Key::F5);
+    wait_until(&mut harness, "the halt", |app| {
+        app.debug_state().is_halted()
+    });
+
+    drop(stop);
+    wait_until(&mut harness, "the halt ended with the connection", |app| {
+        matches!(app.online().phase(), Phase::Lost(_)) && !app.debug_state().is_halted()
+    });
+    assert_eq!(harness.state().debug_state().shown(), None);
+}
