@@ -248,7 +248,15 @@ fn in_the_simulator_a_breakpoint_halts_steps_go_on_a_caller_frame_opens_and_logo
     wait_for_halt_at(&mut harness, "Main", 1);
     press(&mut harness, Modifiers::NONE, Key::F8);
     wait_for_halt_at(&mut harness, "FB_Conveyor", 1);
-    let frames = harness.state().debug_state().halted()[0].frames.clone();
+    let frames = harness
+        .state()
+        .debug_state()
+        .halted()
+        .iter()
+        .find(|task| task.task == "MainTask")
+        .unwrap()
+        .frames
+        .clone();
     assert_eq!(frames.len(), 2);
     assert_eq!(frames[0].instance.as_deref(), Some("Main.fbConveyor"));
     // Its inline values are the halted instance's.
@@ -269,10 +277,14 @@ fn in_the_simulator_a_breakpoint_halts_steps_go_on_a_caller_frame_opens_and_logo
     assert_eq!(marks.halt_line, Some(1));
     assert!(marks.halt_is_caller);
 
-    // F5 continues: the task runs on and halts at the breakpoint again.
+    // F5 continues: the task runs on and halts at the breakpoint again, shown as the halt
+    // itself rather than as the caller's frame it was shown as before.
     press(&mut harness, Modifiers::NONE, Key::F5);
-    wait_for_halt_at(&mut harness, "Main", 1);
-    assert_eq!(harness.state().debug_state().shown(), Some(("MainTask", 0)));
+    wait_until(&mut harness, "the halt at the breakpoint again", |app| {
+        app.debug_state().shown() == Some(("MainTask", 0)) && halt_line(app, "Main") == Some(1)
+    });
+    let marks = harness.state().body_debug_marks(&main_target()).unwrap();
+    assert!(!marks.halt_is_caller);
 
     // Logging out ends the debug session: nothing is halted any more, and logged in again
     // the target reports no halted task.
@@ -323,4 +335,49 @@ fn in_the_simulator_flow_control_marks_the_lines_of_main_that_ran() {
     });
     let marks = harness.state().body_debug_marks(&main_target()).unwrap();
     assert!(!marks.flow_lines.contains(&14), "{:?}", marks.flow_lines);
+}
+
+#[test]
+fn in_the_simulator_a_method_halted_in_shows_its_locals_from_its_frame() {
+    let project = example_copy(|dir| {
+        let main = dir.join("application/Main.st");
+        let mut text = std::fs::read_to_string(&main).unwrap();
+        text.push_str("GVL_Machine.xResetCounter := NOT fbConveyor.Reset();\n");
+        std::fs::write(&main, text).unwrap();
+    });
+    let mut harness = studio(project.path());
+    harness.state_mut().build();
+    wait_until(&mut harness, "the build", |app| {
+        app.last_build().is_some_and(|build| build.image.is_some())
+    });
+    open_main_at_start(&mut harness);
+    // The call of the method is the last line; F9 there, then run and step into it.
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::End);
+    harness.step();
+    harness.key_press(Key::ArrowUp);
+    harness.step();
+    press(&mut harness, Modifiers::NONE, Key::F9);
+    assert_eq!(
+        breakpoints(harness.state()),
+        vec![Breakpoint::at(main_place(17))]
+    );
+    login_with_download(&mut harness);
+    harness.key_press(Key::F5);
+    wait_for_halt_at(&mut harness, "Main", 16);
+    press(&mut harness, Modifiers::NONE, Key::F8);
+    let method = TextTarget::Method {
+        pou: "FB_Conveyor".to_owned(),
+        method: "Reset".to_owned(),
+    };
+    wait_until(&mut harness, "the halt in FB_Conveyor.Reset", |app| {
+        app.body_debug_marks(&method)
+            .is_some_and(|marks| marks.halt_line == Some(0))
+    });
+    // The method's result lives in its frame: FRAME_READ gives it before it is set.
+    wait_until(&mut harness, "the method's locals", |app| {
+        app.online()
+            .frame_locals()
+            .iter()
+            .any(|(name, value)| name == "Reset" && value == "FALSE")
+    });
 }

@@ -30,6 +30,8 @@ pub(super) struct Debugging {
     flow_bodies: Vec<(String, Option<String>)>,
     /// The places of each breakpoint replacement sent and not answered yet, in the order sent.
     sent: VecDeque<Vec<BreakpointPlace>>,
+    /// The halted tasks as the session reported them last.
+    reported: Vec<ReportedTask>,
     /// The halted tasks reported and not taken by the studio yet.
     halted: Option<Vec<HaltedTask>>,
     /// The flow lines reported and not taken by the studio yet.
@@ -144,6 +146,7 @@ impl Online {
     /// is halted as far as the studio is concerned.
     pub(super) fn debug_connection_ended(&mut self) {
         let had = self.debugging.attach_sent;
+        self.debugging.reported.clear();
         self.debugging.attach_sent = false;
         self.debugging.attached = false;
         if had {
@@ -162,10 +165,22 @@ impl Online {
     }
 
     /// Takes the session's report of the halted tasks.
-    pub(super) fn debug_halted(&mut self, reported: &[ReportedTask]) {
+    pub(super) fn debug_halted(&mut self, reported: Vec<ReportedTask>) {
         if let Some(image) = &self.image {
-            self.debugging.halted = Some(halted_tasks(&image.program, reported));
+            self.debugging.halted = Some(halted_tasks(&image.program, &reported));
         }
+        self.debugging.reported = reported;
+        self.frame_locals_stale();
+    }
+
+    /// The POU index of frame `frame` of task `task` as the session reported it last.
+    pub(super) fn reported_frame_pou(&self, task: u8, frame: u16) -> Option<usize> {
+        let task = self
+            .debugging
+            .reported
+            .iter()
+            .find(|reported| reported.halt.task == task)?;
+        Some(task.frames.get(usize::from(frame))?.pou as usize)
     }
 
     /// Takes the session's flow bitmaps.
@@ -276,7 +291,7 @@ impl Online {
     }
 
     /// The index of the task named `name` in the image logged in with.
-    fn task_index(&self, name: &str) -> Option<u8> {
+    pub(super) fn task_index(&self, name: &str) -> Option<u8> {
         let image = self.image.as_ref()?;
         let index = image
             .program

@@ -194,10 +194,14 @@ impl Online {
             Event::TraceStatus(status) => self.trace.status(status),
             Event::TraceProgress(received, total) => self.trace.progress(received, total),
             Event::DebugAttached(_) => self.debug_attached(),
-            Event::Halted(tasks) => self.debug_halted(&tasks),
+            Event::Halted(tasks) => self.debug_halted(tasks),
             Event::Flow { bitmaps, .. } => self.debug_flow(&bitmaps),
             Event::BreakpointsSet(ids) => self.breakpoints_set(ids),
-            Event::FrameRead { .. } => {}
+            Event::FrameRead {
+                task,
+                frame,
+                values,
+            } => self.frame_read(task, frame, &values),
             Event::DebugFailed(reason) => {
                 let text = DebugText::DebugRefused.fill(self.language, &[("reason", &reason)]);
                 self.error(text);

@@ -8,6 +8,7 @@ mod background;
 mod debug_target;
 mod devices;
 mod events;
+mod frame_locals;
 mod link;
 mod login_change;
 mod login_choice;
@@ -188,6 +189,8 @@ pub struct Online {
     language: Language,
     /// The debug session on the target.
     debugging: debug_target::Debugging,
+    /// The locals of the halted function or method the studio shows.
+    frame_locals: frame_locals::FrameLocals,
 }
 
 impl Drop for Online {
@@ -234,6 +237,7 @@ impl Online {
             waker: None,
             language: Language::default(),
             debugging: debug_target::Debugging::default(),
+            frame_locals: frame_locals::FrameLocals::default(),
         }
     }
 

@@ -194,6 +194,8 @@ impl StudioApp {
         if let Some(flow) = self.studio.shared.online.take_flow() {
             self.studio.shared.debug.set_flow(flow);
         }
+        let shared = &mut self.studio.shared;
+        shared.online.show_frame_locals(shared.debug.shown());
     }
 
     /// Opens the shown frame's POU at its line.
