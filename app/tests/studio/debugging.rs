@@ -335,6 +335,18 @@ fn in_the_simulator_flow_control_marks_the_lines_of_main_that_ran() {
     });
     let marks = harness.state().body_debug_marks(&main_target()).unwrap();
     assert!(!marks.flow_lines.contains(&14), "{:?}", marks.flow_lines);
+
+    // A body opened while flow control is on is recorded too: FB_Conveyor's first IF.
+    harness.get_by_label("FB_Conveyor").focus();
+    harness.step();
+    harness.key_press(Key::Enter);
+    harness.step();
+    harness.step();
+    let conveyor = TextTarget::Pou("FB_Conveyor".to_owned());
+    wait_until(&mut harness, "the flow marks of FB_Conveyor", |app| {
+        app.body_debug_marks(&conveyor)
+            .is_some_and(|marks| marks.flow_lines.contains(&1))
+    });
 }
 
 #[test]

@@ -120,6 +120,18 @@ impl Online {
         self.debugging.flow_bodies = bodies;
     }
 
+    /// Keeps flow control recording the bodies open now: sent again when they changed (an
+    /// editor opened or closed) while the session is attached. Called every frame while flow
+    /// control is on.
+    pub fn keep_flow_bodies(&mut self, bodies: Vec<(String, Option<String>)>) {
+        if bodies != self.debugging.flow_bodies {
+            self.debugging.flow_bodies = bodies;
+            if self.debugging.attached {
+                self.send_flow();
+            }
+        }
+    }
+
     /// The halted tasks the session reported since the last call, if it reported any.
     pub fn take_halted(&mut self) -> Option<Vec<HaltedTask>> {
         self.debugging.halted.take()

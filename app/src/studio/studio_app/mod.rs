@@ -196,6 +196,10 @@ impl StudioApp {
         }
         let shared = &mut self.studio.shared;
         shared.online.show_frame_locals(shared.debug.shown());
+        if shared.debug.flow_control && shared.online.is_logged_in() {
+            let bodies = self.studio.flow_bodies();
+            self.studio.shared.online.keep_flow_bodies(bodies);
+        }
     }
 
     /// Opens the shown frame's POU at its line.
