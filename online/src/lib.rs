@@ -22,8 +22,8 @@ pub use debug_client::{Attached, FlowBitmap};
 pub use error::OnlineError;
 pub use online_protocol::{
     ALL_TASKS, BreakpointInfo, BreakpointSpec, DebugOptions, DebugStatus, FlowCycle, FlowEntry,
-    FrameRange, HaltReason, HaltState, HitMode, HitRule, MAX_CONDITION_BYTES, MAX_LINGER_S,
-    SessionState, StackFrame, StepKind, TaskDebugState, TaskHalt,
+    FrameRange, HaltReason, HaltState, HitMode, HitRule, MAX_CONDITION_BYTES, MAX_FLOW_ENTRIES,
+    MAX_LINGER_S, SessionState, StackFrame, StepKind, TaskDebugState, TaskHalt,
 };
 pub use online_protocol::{
     ChangeApplied, ChangeCheck, ChangeDetailEntry, Enumeration, Fault, Identity, Place,

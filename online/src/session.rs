@@ -7,9 +7,16 @@
 //! identifies again (the program may have changed) before anything else. When it ends
 //! ([`Command::Close`], or the command sender dropped) it logs out before closing the
 //! connection, so that its token ends at once.
+//!
+//! Debugging ([`Command::Debug`], `session/debug.rs`): once attached it polls `HALT_STATE`
+//! a few times a second and reports each change with the call stacks ([`Event::Halted`]), and
+//! the flow bitmaps while flow recording is configured ([`Event::Flow`]); it detaches before
+//! logging out.
 
+mod debug;
 mod online_change;
 
+pub use debug::{DebugCommand, FLOW_POLL_INTERVAL, HALT_POLL_INTERVAL, HaltedTask};
 pub use online_change::ChangeCommand;
 
 use std::net::SocketAddr;
@@ -18,10 +25,11 @@ use std::time::Duration;
 use tokio::sync::mpsc;
 
 use crate::client::{Client, Sample, TraceConfig};
+use crate::debug_client::{Attached, FlowBitmap};
 use crate::error::OnlineError;
 use crate::{
-    ChangeApplied, ChangeCheck, ChangeDetailEntry, Fault, Identity, Place, Reset, Resolved,
-    Snapshot, TargetState, TaskInfo, TraceStatus,
+    ChangeApplied, ChangeCheck, ChangeDetailEntry, Fault, FlowEntry, Identity, Place, Reset,
+    Resolved, Snapshot, TargetState, TaskInfo, TraceStatus,
 };
 
 /// What a session is asked to do.
@@ -66,6 +74,8 @@ pub enum Command {
     TraceUpload,
     /// A step of an online change (`docs/protocol.md` §7).
     OnlineChange(ChangeCommand),
+    /// A debugging step (`docs/protocol.md` §6).
+    Debug(DebugCommand),
     /// End the session: `LOGOUT` (waiting at most [`LOGOUT_TIMEOUT`]) and close.
     Close,
 }
@@ -117,6 +127,32 @@ pub enum Event {
         /// The sample at the trigger.
         trigger_sample: Option<u32>,
     },
+    /// The answer to [`DebugCommand::Attach`]: the session is attached and its halts watched.
+    DebugAttached(Attached),
+    /// The halted tasks (and those waiting beneath them) with their call stacks, sent when the
+    /// target's halt state changed; empty when no task is halted any more.
+    Halted(Vec<HaltedTask>),
+    /// The flow bitmaps of the last complete cycle of `task`, one per configured entry.
+    Flow {
+        /// The task recorded.
+        task: u8,
+        /// Each entry with its bitmap, in the order they were configured.
+        bitmaps: Vec<(FlowEntry, FlowBitmap)>,
+    },
+    /// The answer to [`DebugCommand::SetBreakpoints`]: each breakpoint's id or why the target
+    /// refused it, in the order given.
+    BreakpointsSet(Vec<Result<u16, String>>),
+    /// The answer to [`DebugCommand::FrameRead`]: the bytes of each range asked for.
+    FrameRead {
+        /// The task.
+        task: u8,
+        /// The frame.
+        frame: u16,
+        /// The bytes of each range, in the order asked.
+        values: Vec<Vec<u8>>,
+    },
+    /// A debugging command failed; the words name the service and the target's reason.
+    DebugFailed(String),
 }
 
 /// How a session behaves.
@@ -183,8 +219,50 @@ async fn run(
             }
         };
         let mut poll = tokio::time::interval(options.poll_interval);
+        // A new connection has no debug session: the user's side attaches again.
+        let mut debugging = debug::DebugWatch::default();
+        let mut halt_poll = tokio::time::interval(HALT_POLL_INTERVAL);
+        let mut flow_poll = tokio::time::interval(FLOW_POLL_INTERVAL);
         loop {
             tokio::select! {
+                _ = halt_poll.tick(), if debugging.attached => {
+                    match debug::poll_halts(&mut client, &mut debugging).await {
+                        Ok(Some(event)) => {
+                            if events.send(event).await.is_err() {
+                                return;
+                            }
+                        }
+                        Ok(None) => {}
+                        Err(error @ (OnlineError::Io(..) | OnlineError::Timeout(..))) => {
+                            let _ = events.send(Event::Disconnected(error.to_string())).await;
+                            continue 'connect;
+                        }
+                        Err(error) => {
+                            // The session is gone (taken over, or the program replaced): the
+                            // halts are no longer this session's to watch.
+                            debugging.attached = false;
+                            let _ = events.send(Event::DebugFailed(error.to_string())).await;
+                        }
+                    }
+                }
+                _ = flow_poll.tick(), if debugging.records_flow() => {
+                    match debug::read_flow(&mut client, &debugging).await {
+                        Ok(Some(event)) => {
+                            if events.send(event).await.is_err() {
+                                return;
+                            }
+                        }
+                        Ok(None) => {}
+                        Err(error @ (OnlineError::Io(..) | OnlineError::Timeout(..))) => {
+                            let _ = events.send(Event::Disconnected(error.to_string())).await;
+                            continue 'connect;
+                        }
+                        Err(error) => {
+                            debugging.flow = None;
+                            let _ = events.send(Event::DebugFailed(error.to_string())).await;
+                        }
+                    }
+                }
                 _ = poll.tick(), if !watch.is_empty() => {
                     match client.read(&watch).await {
                         Ok(snapshot) => {
@@ -200,13 +278,35 @@ async fn run(
                 }
                 command = commands.recv() => {
                     let Some(command) = command else {
+                        detach(&mut client, &debugging).await;
                         log_out(&mut client).await;
                         return;
                     };
                     let outcome = match command {
                         Command::Close => {
+                            detach(&mut client, &debugging).await;
                             log_out(&mut client).await;
                             return;
+                        }
+                        Command::Debug(step) => {
+                            match debug::run(&mut client, step, &mut debugging).await {
+                                Ok(Some(event)) => {
+                                    if events.send(event).await.is_err() {
+                                        return;
+                                    }
+                                }
+                                Ok(None) => {}
+                                Err(error @ (OnlineError::Io(..) | OnlineError::Timeout(..))) => {
+                                    let _ = events.send(Event::Disconnected(error.to_string())).await;
+                                    continue 'connect;
+                                }
+                                Err(error) => {
+                                    if events.send(Event::DebugFailed(error.to_string())).await.is_err() {
+                                        return;
+                                    }
+                                }
+                            }
+                            continue;
                         }
                         Command::Watch(places) => {
                             watch = places;
@@ -357,6 +457,15 @@ async fn run(
 /// How long a session that ends waits for the answer to its `LOGOUT` before it closes the
 /// connection all the same (which ends the token too, only less explicitly).
 pub const LOGOUT_TIMEOUT: Duration = Duration::from_secs(1);
+
+/// Ends an attached debug session with `DEBUG_DETACH` (waiting at most [`LOGOUT_TIMEOUT`]),
+/// so every breakpoint goes and every halted task runs on before the session ends; best
+/// effort, as a linger of 0 ends it with the connection too.
+async fn detach(client: &mut Client, watch: &debug::DebugWatch) {
+    if watch.attached {
+        let _ = tokio::time::timeout(LOGOUT_TIMEOUT, client.debug_detach()).await;
+    }
+}
 
 /// Ends the client's token with `LOGOUT` when it logged in with a password, so that the token
 /// is of no use from now on even if the connection lingers; best effort, as closing the

@@ -167,6 +167,7 @@ pub fn build(project: &Project, revision: u64) -> BuildOutcome {
                         hash,
                         tasks,
                         program: Arc::new(image),
+                        project: Arc::new(project.clone()),
                     }),
                     None,
                 )

@@ -3,7 +3,7 @@
 //! session shows its statement and the call stack, a caller's frame opens its POU at the call,
 //! and flow control marks the lines that ran.
 
-use crate::support::{example_copy, studio, wait_until};
+use crate::support::{example_copy, login_with_download, studio, wait_until};
 use app::studio::{Breakpoint, BreakpointPlace, HaltedTask, StackFrame, StudioApp};
 use editor::{BreakpointLook, BreakpointMark};
 use egui::{Key, Modifiers};
@@ -195,4 +195,201 @@ fn flow_control_marks_the_lines_that_ran_once_switched_on() {
     assert!(harness.state().debug_state().flow_control);
     let marks = harness.state().body_debug_marks(&main_target()).unwrap();
     assert_eq!(marks.flow_lines, vec![1, 6]);
+}
+
+/// The line of the shown frame's halt marker in the body of `pou`, if its editor marks one.
+fn halt_line(app: &StudioApp, pou: &str) -> Option<usize> {
+    app.body_debug_marks(&TextTarget::Pou(pou.to_owned()))
+        .and_then(|marks| marks.halt_line)
+}
+
+/// Waits until the halt marker of `pou`'s editor is on `line` (from 0).
+fn wait_for_halt_at(harness: &mut Harness<'_, StudioApp>, pou: &str, line: usize) {
+    wait_until(
+        harness,
+        &format!("the halt at line {} of {pou}", line + 1),
+        |app| app.debug_state().is_halted() && halt_line(app, pou) == Some(line),
+    );
+}
+
+#[test]
+fn in_the_simulator_a_breakpoint_halts_steps_go_on_a_caller_frame_opens_and_logout_releases() {
+    let project = example_copy(|_| {});
+    let mut harness = studio(project.path());
+    harness.state_mut().build();
+    wait_until(&mut harness, "the build", |app| {
+        app.last_build().is_some_and(|build| build.image.is_some())
+    });
+    open_main_at_start(&mut harness);
+    // F9 on the comment of line 1 sets the breakpoint on the call of fbConveyor on line 2.
+    press(&mut harness, Modifiers::NONE, Key::F9);
+    assert_eq!(
+        breakpoints(harness.state()),
+        vec![Breakpoint::at(main_place(2))]
+    );
+    login_with_download(&mut harness);
+    harness.key_press(Key::F5);
+
+    // The task halts there; the marker is on the line and Main's values show inline.
+    wait_for_halt_at(&mut harness, "Main", 1);
+    assert_eq!(harness.state().debug_state().shown(), Some(("MainTask", 0)));
+    wait_until(&mut harness, "inline values of Main", |app| {
+        app.inline_paths()
+            .iter()
+            .any(|path| path.starts_with("Main.") || path.starts_with("GVL_IO."))
+    });
+
+    // F10 runs the call whole and halts on the next statement, line 6.
+    press(&mut harness, Modifiers::NONE, Key::F10);
+    wait_for_halt_at(&mut harness, "Main", 5);
+
+    // F5 goes on to the breakpoint in the next cycle; F8 there steps into FB_Conveyor.
+    press(&mut harness, Modifiers::NONE, Key::F5);
+    wait_for_halt_at(&mut harness, "Main", 1);
+    press(&mut harness, Modifiers::NONE, Key::F8);
+    wait_for_halt_at(&mut harness, "FB_Conveyor", 1);
+    let frames = harness
+        .state()
+        .debug_state()
+        .halted()
+        .iter()
+        .find(|task| task.task == "MainTask")
+        .unwrap()
+        .frames
+        .clone();
+    assert_eq!(frames.len(), 2);
+    assert_eq!(frames[0].instance.as_deref(), Some("Main.fbConveyor"));
+    // Its inline values are the halted instance's.
+    wait_until(&mut harness, "inline values of Main.fbConveyor", |app| {
+        app.inline_paths()
+            .iter()
+            .any(|path| path.starts_with("Main.fbConveyor."))
+    });
+
+    // The caller's frame in the Call stack opens Main at the call.
+    harness
+        .get_by_label("Main (Main) application/Main.st:2")
+        .click();
+    harness.step();
+    harness.step();
+    assert_eq!(harness.state().debug_state().shown(), Some(("MainTask", 1)));
+    let marks = harness.state().body_debug_marks(&main_target()).unwrap();
+    assert_eq!(marks.halt_line, Some(1));
+    assert!(marks.halt_is_caller);
+
+    // F5 continues: the task runs on and halts at the breakpoint again, shown as the halt
+    // itself rather than as the caller's frame it was shown as before.
+    press(&mut harness, Modifiers::NONE, Key::F5);
+    wait_until(&mut harness, "the halt at the breakpoint again", |app| {
+        app.debug_state().shown() == Some(("MainTask", 0)) && halt_line(app, "Main") == Some(1)
+    });
+    let marks = harness.state().body_debug_marks(&main_target()).unwrap();
+    assert!(!marks.halt_is_caller);
+
+    // Logging out ends the debug session: nothing is halted any more, and logged in again
+    // the target reports no halted task.
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::F8);
+    harness.step();
+    harness.step();
+    assert!(!harness.state().online().is_logged_in());
+    assert!(!harness.state().debug_state().is_halted());
+    harness.get_by_label("Debug").click();
+    harness.run();
+    harness.get_by_label("Breakpoints").click();
+    harness.step();
+    harness.step();
+    harness.get_by_label("Remove all").click();
+    harness.step();
+    assert!(breakpoints(harness.state()).is_empty());
+    harness.key_press_modifiers(Modifiers::ALT, Key::F8);
+    wait_until(&mut harness, "the login again", |app| {
+        *app.online().phase() == app::studio::Phase::Online
+    });
+    let cycle = harness.state().online().cycle();
+    wait_until(&mut harness, "the program running on", |app| {
+        app.online().cycle() > cycle + 10
+    });
+    assert!(!harness.state().debug_state().is_halted());
+}
+
+#[test]
+fn in_the_simulator_flow_control_marks_the_lines_of_main_that_ran() {
+    let project = example_copy(|_| {});
+    let mut harness = studio(project.path());
+    harness.state_mut().build();
+    wait_until(&mut harness, "the build", |app| {
+        app.last_build().is_some_and(|build| build.image.is_some())
+    });
+    open_main_at_start(&mut harness);
+    login_with_download(&mut harness);
+    harness.key_press(Key::F5);
+    harness.get_by_label("Debug").click();
+    harness.run();
+    harness.get_by_label("Flow control").click();
+    harness.step();
+    // The call of fbConveyor (line 2) runs every cycle; the package count (line 15) only on a
+    // package, which never comes here.
+    wait_until(&mut harness, "the flow marks of Main", |app| {
+        app.body_debug_marks(&main_target())
+            .is_some_and(|marks| marks.flow_lines.contains(&1))
+    });
+    let marks = harness.state().body_debug_marks(&main_target()).unwrap();
+    assert!(!marks.flow_lines.contains(&14), "{:?}", marks.flow_lines);
+
+    // A body opened while flow control is on is recorded too: FB_Conveyor's first IF.
+    harness.get_by_label("FB_Conveyor").focus();
+    harness.step();
+    harness.key_press(Key::Enter);
+    harness.step();
+    harness.step();
+    let conveyor = TextTarget::Pou("FB_Conveyor".to_owned());
+    wait_until(&mut harness, "the flow marks of FB_Conveyor", |app| {
+        app.body_debug_marks(&conveyor)
+            .is_some_and(|marks| marks.flow_lines.contains(&1))
+    });
+}
+
+#[test]
+fn in_the_simulator_a_method_halted_in_shows_its_locals_from_its_frame() {
+    let project = example_copy(|dir| {
+        let main = dir.join("application/Main.st");
+        let mut text = std::fs::read_to_string(&main).unwrap();
+        text.push_str("GVL_Machine.xResetCounter := NOT fbConveyor.Reset();\n");
+        std::fs::write(&main, text).unwrap();
+    });
+    let mut harness = studio(project.path());
+    harness.state_mut().build();
+    wait_until(&mut harness, "the build", |app| {
+        app.last_build().is_some_and(|build| build.image.is_some())
+    });
+    open_main_at_start(&mut harness);
+    // The call of the method is the last line; F9 there, then run and step into it.
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::End);
+    harness.step();
+    harness.key_press(Key::ArrowUp);
+    harness.step();
+    press(&mut harness, Modifiers::NONE, Key::F9);
+    assert_eq!(
+        breakpoints(harness.state()),
+        vec![Breakpoint::at(main_place(17))]
+    );
+    login_with_download(&mut harness);
+    harness.key_press(Key::F5);
+    wait_for_halt_at(&mut harness, "Main", 16);
+    press(&mut harness, Modifiers::NONE, Key::F8);
+    let method = TextTarget::Method {
+        pou: "FB_Conveyor".to_owned(),
+        method: "Reset".to_owned(),
+    };
+    wait_until(&mut harness, "the halt in FB_Conveyor.Reset", |app| {
+        app.body_debug_marks(&method)
+            .is_some_and(|marks| marks.halt_line == Some(0))
+    });
+    // The method's result lives in its frame: FRAME_READ gives it before it is set.
+    wait_until(&mut harness, "the method's locals", |app| {
+        app.online()
+            .frame_locals()
+            .iter()
+            .any(|(name, value)| name == "Reset" && value == "FALSE")
+    });
 }

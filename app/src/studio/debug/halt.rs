@@ -60,6 +60,12 @@ impl DebugState {
         self.halted = halted;
     }
 
+    /// Shows the first halted task's innermost frame from the next [`DebugState::set_halted`]
+    /// on (a new halt reported, rather than the same halt again).
+    pub fn show_innermost(&mut self) {
+        self.shown = None;
+    }
+
     /// The halted and waiting tasks.
     pub fn halted(&self) -> &[HaltedTask] {
         &self.halted

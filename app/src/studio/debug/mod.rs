@@ -8,8 +8,12 @@ mod breakpoint;
 mod breakpoints;
 mod command;
 mod halt;
+mod reported;
+mod target_breakpoint;
 
 pub use breakpoint::{Breakpoint, BreakpointPlace, HitMode};
 pub use breakpoints::{Breakpoints, statement_line, statement_lines};
 pub use command::{DebugCommand, DebugTarget};
 pub use halt::{DebugState, HaltedTask, StackFrame};
+pub use reported::{flow_lines, halted_tasks};
+pub use target_breakpoint::{breakpoint_spec, breakpoint_statement};

@@ -49,6 +49,12 @@ pub enum DebugText {
     NoCaret,
     SummaryCondition,
     SummaryHits,
+    BreakpointNotSet,
+    BreakpointConditionError,
+    BreakpointNoInstance,
+    BreakpointNoTask,
+    BreakpointOtherBuild,
+    DebugRefused,
 }
 
 impl DebugText {
@@ -98,6 +104,27 @@ impl DebugText {
             ),
             Self::LogInToDebug => ("log in to debug (Alt+F8)", "请先登录再调试 (Alt+F8)"),
             Self::NotHalted => ("no task is halted", "没有暂停的任务"),
+            Self::BreakpointNotSet => (
+                "breakpoint {place} not set: {reason}",
+                "断点 {place} 未设置：{reason}",
+            ),
+            Self::BreakpointConditionError => (
+                "breakpoint {place} not set: the condition '{condition}' does not compile: {reason}",
+                "断点 {place} 未设置：条件“{condition}”无法编译：{reason}",
+            ),
+            Self::BreakpointNoInstance => (
+                "breakpoint {place} not set: '{instance}' is no instance this statement runs on",
+                "断点 {place} 未设置：“{instance}”不是执行此语句的实例",
+            ),
+            Self::BreakpointNoTask => (
+                "breakpoint {place} not set: the program has no task '{task}'",
+                "断点 {place} 未设置：程序中没有任务“{task}”",
+            ),
+            Self::BreakpointOtherBuild => (
+                "breakpoint {place} not set: its condition belongs to another build than the one logged in with; log in again",
+                "断点 {place} 未设置：其条件属于与登录时不同的编译结果，请重新登录",
+            ),
+            Self::DebugRefused => ("debugging: {reason}", "调试：{reason}"),
             Self::TargetRefusesDebugging => (
                 "the target does not offer debugging",
                 "目标设备不提供调试功能",

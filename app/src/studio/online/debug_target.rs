@@ -1,14 +1,320 @@
-//! The debugger's door to the target (`docs/protocol.md` §6).
+//! The debugger's door to the target (`docs/protocol.md` §6): the Debug menu's commands become
+//! the session's debugging commands through the image the studio logged in with, and the
+//! session's halts and flow bitmaps come back as the studio's [`HaltedTask`]s and flow lines.
 
-use super::Online;
-use crate::studio::debug::{DebugCommand, DebugTarget};
+use std::collections::VecDeque;
+
+use online::session::{Command, DebugCommand as SessionCommand, HaltedTask as ReportedTask};
+use online::{ALL_TASKS, FlowBitmap, FlowEntry, StepKind};
+
+use super::{Online, Phase};
+use crate::studio::debug::{
+    Breakpoint, BreakpointPlace, DebugCommand, DebugTarget, HaltedTask, breakpoint_spec,
+    breakpoint_statement, flow_lines, halted_tasks,
+};
+use crate::studio::i18n::DebugText;
+
+/// The debugging side of the login: whether the session is attached, what the studio asked for
+/// (sent again at each attach), and what the target reported since the studio last looked.
+#[derive(Default)]
+pub(super) struct Debugging {
+    /// `DEBUG_ATTACH` was sent on this connection.
+    attach_sent: bool,
+    /// The target answered it: the session is attached.
+    attached: bool,
+    /// The enabled breakpoints the studio asked for last.
+    breakpoints: Vec<Breakpoint>,
+    /// The task whose frame the studio shows, which steps and continues act on.
+    shown_task: Option<String>,
+    /// The bodies flow control records (POU name, instance path), empty when it is off.
+    flow_bodies: Vec<(String, Option<String>)>,
+    /// The places of each breakpoint replacement sent and not answered yet, in the order sent.
+    sent: VecDeque<Vec<BreakpointPlace>>,
+    /// The halted tasks as the session reported them last.
+    reported: Vec<ReportedTask>,
+    /// The halted tasks reported and not taken by the studio yet.
+    halted: Option<Vec<HaltedTask>>,
+    /// The flow lines reported and not taken by the studio yet.
+    flow: Option<Vec<(String, Vec<u32>)>>,
+}
 
 impl DebugTarget for Online {
-    /// The session offers no debugging service yet: the runtime answers every debugging
-    /// request with status 7, as a `--debug off` runtime does, so every command is refused
-    /// here and the studio says the target does not offer debugging. The session's calls of
-    /// `docs/protocol.md` §6 replace this refusal when the online client offers them.
-    fn debug(&mut self, _command: DebugCommand) -> bool {
-        false
+    /// Queues `command` while logged in to a target that offers debugging; breakpoints and
+    /// flow control given before the session is attached are sent once it is.
+    fn debug(&mut self, command: DebugCommand) -> bool {
+        if self.link.is_none() || !self.offers_debugging() {
+            return false;
+        }
+        match command {
+            DebugCommand::SyncBreakpoints(breakpoints) => {
+                self.debugging.breakpoints = breakpoints;
+                if self.debugging.attached {
+                    self.send_breakpoints();
+                }
+                true
+            }
+            DebugCommand::SetFlowControl(_) => {
+                if self.debugging.attached {
+                    self.send_flow();
+                }
+                true
+            }
+            DebugCommand::Continue => self.on_shown_task(SessionCommand::Continue),
+            DebugCommand::StepOver => self.on_shown_task(|task| SessionCommand::Step {
+                task,
+                kind: StepKind::Over,
+            }),
+            DebugCommand::StepInto => self.on_shown_task(|task| SessionCommand::Step {
+                task,
+                kind: StepKind::Into,
+            }),
+            DebugCommand::StepOut => self.on_shown_task(|task| SessionCommand::Step {
+                task,
+                kind: StepKind::Out,
+            }),
+            DebugCommand::RunToCursor(place) => {
+                let Some(image) = &self.image else {
+                    return false;
+                };
+                match breakpoint_statement(&image.program, &place) {
+                    Ok(statement) => self.on_shown_task(|task| SessionCommand::RunTo {
+                        task,
+                        pou: statement.pou,
+                        instruction: statement.instruction,
+                    }),
+                    Err(error) => {
+                        let reason = error.to_string();
+                        self.error(
+                            DebugText::DebugRefused.fill(self.language, &[("reason", &reason)]),
+                        );
+                        true
+                    }
+                }
+            }
+            DebugCommand::Halt(task) => match self.task_index(&task) {
+                Some(task) => self.send_debug(SessionCommand::Halt(task)),
+                None => false,
+            },
+            DebugCommand::HaltAll => self.send_debug(SessionCommand::Halt(ALL_TASKS)),
+        }
+    }
+}
+
+impl Online {
+    /// Whether the target said it offers debugging (not a runtime started with `--debug off`).
+    fn offers_debugging(&self) -> bool {
+        self.target_identity
+            .as_ref()
+            .is_none_or(|identity| !identity.debug.switched_off)
+    }
+
+    /// Tells which task's frame the studio shows: steps and continues act on it.
+    pub fn set_shown_task(&mut self, task: Option<String>) {
+        self.debugging.shown_task = task;
+    }
+
+    /// Sets the bodies flow control records, each a POU's name with the instance its editor
+    /// shows (none for every instance); empty turns it off. Sent with the next
+    /// [`DebugCommand::SetFlowControl`] or attach.
+    pub fn set_flow_bodies(&mut self, bodies: Vec<(String, Option<String>)>) {
+        self.debugging.flow_bodies = bodies;
+    }
+
+    /// Keeps flow control recording the bodies open now: sent again when they changed (an
+    /// editor opened or closed) while the session is attached. Called every frame while flow
+    /// control is on.
+    pub fn keep_flow_bodies(&mut self, bodies: Vec<(String, Option<String>)>) {
+        if bodies != self.debugging.flow_bodies {
+            self.debugging.flow_bodies = bodies;
+            if self.debugging.attached {
+                self.send_flow();
+            }
+        }
+    }
+
+    /// The halted tasks the session reported since the last call, if it reported any.
+    pub fn take_halted(&mut self) -> Option<Vec<HaltedTask>> {
+        self.debugging.halted.take()
+    }
+
+    /// The flow lines the session reported since the last call, if it reported any.
+    pub fn take_flow(&mut self) -> Option<Vec<(String, Vec<u32>)>> {
+        self.debugging.flow.take()
+    }
+
+    /// Attaches the debug session once the target runs the project's program, if it offers
+    /// debugging. Called every frame; sends at most one attach per connection.
+    pub(super) fn attach_when_online(&mut self) {
+        if self.phase == Phase::Online
+            && !self.debugging.attach_sent
+            && self.offers_debugging()
+            && self.command(Command::Debug(SessionCommand::Attach))
+        {
+            self.debugging.attach_sent = true;
+        }
+    }
+
+    /// The connection ended or a new one began: there is no debug session on it, and no task
+    /// is halted as far as the studio is concerned.
+    pub(super) fn debug_connection_ended(&mut self) {
+        let had = self.debugging.attach_sent;
+        self.debugging.reported.clear();
+        self.debugging.attach_sent = false;
+        self.debugging.attached = false;
+        if had {
+            self.debugging.halted = Some(Vec::new());
+            self.debugging.flow = Some(Vec::new());
+        }
+    }
+
+    /// The session is attached: the breakpoints and flow control asked for so far are sent.
+    pub(super) fn debug_attached(&mut self) {
+        self.debugging.attached = true;
+        self.send_breakpoints();
+        if !self.debugging.flow_bodies.is_empty() {
+            self.send_flow();
+        }
+    }
+
+    /// Takes the session's report of the halted tasks.
+    pub(super) fn debug_halted(&mut self, reported: Vec<ReportedTask>) {
+        if let Some(image) = &self.image {
+            self.debugging.halted = Some(halted_tasks(&image.program, &reported));
+        }
+        self.debugging.reported = reported;
+        self.frame_locals_stale();
+    }
+
+    /// The POU index of frame `frame` of task `task` as the session reported it last.
+    pub(super) fn reported_frame_pou(&self, task: u8, frame: u16) -> Option<usize> {
+        let task = self
+            .debugging
+            .reported
+            .iter()
+            .find(|reported| reported.halt.task == task)?;
+        Some(task.frames.get(usize::from(frame))?.pou as usize)
+    }
+
+    /// Takes the session's flow bitmaps.
+    pub(super) fn debug_flow(&mut self, bitmaps: &[(FlowEntry, FlowBitmap)]) {
+        if let Some(image) = &self.image {
+            self.debugging.flow = Some(flow_lines(&image.program, bitmaps));
+        }
+    }
+
+    /// Reports the breakpoints the target refused, naming each one's place.
+    pub(super) fn breakpoints_set(&mut self, ids: Vec<Result<u16, String>>) {
+        // The session answers each replacement in the order they were sent.
+        let places = self.debugging.sent.pop_front().unwrap_or_default();
+        for (place, id) in places.iter().zip(ids) {
+            if let Err(reason) = id {
+                let place = place.label();
+                self.error(
+                    DebugText::BreakpointNotSet
+                        .fill(self.language, &[("place", &place), ("reason", &reason)]),
+                );
+            }
+        }
+    }
+
+    /// Replaces the target's breakpoints with the studio's; one that does not convert is
+    /// reported with its place and not sent.
+    fn send_breakpoints(&mut self) {
+        let Some(image) = &self.image else { return };
+        let mut specs = Vec::new();
+        let mut errors = Vec::new();
+        let mut places = Vec::new();
+        for breakpoint in &self.debugging.breakpoints {
+            match breakpoint_spec(&image.program, &image.project, breakpoint) {
+                Ok(spec) => {
+                    specs.push(spec);
+                    places.push(breakpoint.place.clone());
+                }
+                Err(error) => errors.push(error.text(self.language)),
+            }
+        }
+        for error in errors {
+            self.error(error);
+        }
+        if self.send_debug(SessionCommand::SetBreakpoints(specs)) {
+            self.debugging.sent.push_back(places);
+        }
+    }
+
+    /// Configures flow recording for the bodies asked for, in the task that calls the first
+    /// of them (bodies of other tasks are left out: the target records one task at a time).
+    fn send_flow(&mut self) {
+        let Some(image) = &self.image else { return };
+        let program = &image.program;
+        let mut task = None;
+        let mut entries = Vec::new();
+        for (pou_name, instance) in &self.debugging.flow_bodies {
+            let Some(pou) = program
+                .pous
+                .iter()
+                .position(|pou| pou.name.eq_ignore_ascii_case(pou_name))
+            else {
+                continue;
+            };
+            let root = instance
+                .as_deref()
+                .unwrap_or(pou_name)
+                .split('.')
+                .next()
+                .unwrap_or_default();
+            let Some(body_task) = program.tasks.iter().position(|task| {
+                task.programs.iter().any(|call| {
+                    program
+                        .pous
+                        .get(call.pou as usize)
+                        .is_some_and(|called| called.name.eq_ignore_ascii_case(root))
+                })
+            }) else {
+                continue;
+            };
+            if *task.get_or_insert(body_task) != body_task {
+                continue;
+            }
+            let pointer = instance
+                .as_deref()
+                .and_then(|path| runtime::value::resolve(program, path).ok())
+                .filter(|place| place.region == program_image::Region::Data)
+                .map_or(0, |place| (1 << 56) | place.offset);
+            entries.push(FlowEntry {
+                pou: pou as u32,
+                instance: pointer,
+            });
+        }
+        let entries: Vec<FlowEntry> = entries.into_iter().take(online::MAX_FLOW_ENTRIES).collect();
+        let task = task.and_then(|task| u8::try_from(task).ok()).unwrap_or(0);
+        if entries.is_empty() {
+            self.debugging.flow = Some(Vec::new());
+        }
+        self.send_debug(SessionCommand::Flow { task, entries });
+    }
+
+    /// Sends a command for the task whose frame is shown.
+    fn on_shown_task(&mut self, command: impl FnOnce(u8) -> SessionCommand) -> bool {
+        let shown = self.debugging.shown_task.clone();
+        match shown.and_then(|task| self.task_index(&task)) {
+            Some(task) => self.send_debug(command(task)),
+            None => false,
+        }
+    }
+
+    /// The index of the task named `name` in the image logged in with.
+    pub(super) fn task_index(&self, name: &str) -> Option<u8> {
+        let image = self.image.as_ref()?;
+        let index = image
+            .program
+            .tasks
+            .iter()
+            .position(|task| task.name.eq_ignore_ascii_case(name))?;
+        u8::try_from(index).ok()
+    }
+
+    /// Queues a debugging command for the session.
+    fn send_debug(&mut self, command: SessionCommand) -> bool {
+        self.command(Command::Debug(command))
     }
 }

@@ -6,7 +6,7 @@ use online::Resolved;
 use online::session::{Command, Event};
 
 use super::{LiveValue, Online, OnlineMessage, Phase, STATUS_INTERVAL, devices};
-use crate::studio::i18n::{LoginText, Text, fill_template};
+use crate::studio::i18n::{DebugText, LoginText, Text, fill_template};
 use crate::value_text::show;
 
 impl Online {
@@ -57,6 +57,7 @@ impl Online {
         for event in events {
             self.handle(event);
         }
+        self.attach_when_online();
         if self.phase == Phase::Online
             && self
                 .last_status
@@ -75,6 +76,7 @@ impl Online {
     fn handle(&mut self, event: Event) {
         match event {
             Event::Connected(identity) => {
+                self.debug_connection_ended();
                 self.target_state = Some(identity.state);
                 let ours = self.image.as_ref().map(|image| image.hash);
                 let same = ours.is_some() && identity.image_hash == ours;
@@ -111,6 +113,7 @@ impl Online {
                     self.error(text.replace("{reason}", &reason));
                 }
                 self.phase = Phase::Lost(reason);
+                self.debug_connection_ended();
                 self.watched.clear();
             }
             Event::Snapshot(snapshot) => {
@@ -190,6 +193,19 @@ impl Online {
             Event::Faults(faults) => self.faults = faults,
             Event::TraceStatus(status) => self.trace.status(status),
             Event::TraceProgress(received, total) => self.trace.progress(received, total),
+            Event::DebugAttached(_) => self.debug_attached(),
+            Event::Halted(tasks) => self.debug_halted(tasks),
+            Event::Flow { bitmaps, .. } => self.debug_flow(&bitmaps),
+            Event::BreakpointsSet(ids) => self.breakpoints_set(ids),
+            Event::FrameRead {
+                task,
+                frame,
+                values,
+            } => self.frame_read(task, frame, &values),
+            Event::DebugFailed(reason) => {
+                let text = DebugText::DebugRefused.fill(self.language, &[("reason", &reason)]);
+                self.error(text);
+            }
             Event::TraceSamples {
                 samples,
                 trigger_sample,

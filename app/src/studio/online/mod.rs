@@ -8,6 +8,7 @@ mod background;
 mod debug_target;
 mod devices;
 mod events;
+mod frame_locals;
 mod link;
 mod login_change;
 mod login_choice;
@@ -66,6 +67,9 @@ pub struct BuiltImage {
     /// The image itself, whose types show values as the program declares them (enumerations
     /// by name) once the target is known to run it.
     pub program: Arc<program_image::ProgramImage>,
+    /// The project it was built from, which a breakpoint's condition is compiled against so
+    /// that it belongs to this very image.
+    pub project: Arc<project_model::Project>,
 }
 
 /// Where the login is.
@@ -183,6 +187,10 @@ pub struct Online {
     waker: Option<Waker>,
     /// The language of the messages, set by the studio every frame.
     language: Language,
+    /// The debug session on the target.
+    debugging: debug_target::Debugging,
+    /// The locals of the halted function or method the studio shows.
+    frame_locals: frame_locals::FrameLocals,
 }
 
 impl Drop for Online {
@@ -228,6 +236,8 @@ impl Online {
             project_devices: Vec::new(),
             waker: None,
             language: Language::default(),
+            debugging: debug_target::Debugging::default(),
+            frame_locals: frame_locals::FrameLocals::default(),
         }
     }
 
@@ -391,6 +401,7 @@ impl Online {
     /// once); the target keeps running as it is.
     pub fn logout(&mut self) {
         self.link = None;
+        self.debug_connection_ended();
         self.phase = Phase::Offline;
         self.target_state = None;
         self.forget_program();

@@ -104,5 +104,12 @@ impl Studio {
             .login(target, address, password, image, move || {
                 wake.request_repaint();
             });
+        // The project's breakpoints, and flow control when it is on, go to the target once its
+        // debug session is attached.
+        self.sync_breakpoints();
+        if self.shared.debug.flow_control {
+            let bodies = self.flow_bodies();
+            self.shared.online.set_flow_bodies(bodies);
+        }
     }
 }

@@ -52,7 +52,7 @@ impl Studio {
 
     /// Sends the enabled breakpoints to the target while logged in; offline they wait in the
     /// settings for the next login.
-    fn sync_breakpoints(&mut self) {
+    pub(super) fn sync_breakpoints(&mut self) {
         if !self.shared.online.is_logged_in() {
             return;
         }
@@ -88,10 +88,26 @@ impl Studio {
             self.commands.error(DebugText::NotHalted.get(language));
             return;
         }
+        let shown = self.shared.debug.shown().map(|(task, _)| task.to_owned());
+        self.shared.online.set_shown_task(shown);
+        if let DebugCommand::SetFlowControl(on) = command {
+            let bodies = if on { self.flow_bodies() } else { Vec::new() };
+            self.shared.online.set_flow_bodies(bodies);
+        }
         if !self.shared.online.debug(command) {
             self.commands
                 .error(DebugText::TargetRefusesDebugging.get(language));
         }
+    }
+
+    /// The POU bodies of the open Structured Text editors with the instances they show, which
+    /// flow control records.
+    pub(super) fn flow_bodies(&self) -> Vec<(String, Option<String>)> {
+        self.shared
+            .session
+            .as_ref()
+            .map(|session| self.panes.texts.flow_bodies(&session.project))
+            .unwrap_or_default()
     }
 
     /// The place at the caret of the last Structured Text editor used, or a status saying to

@@ -173,10 +173,40 @@ impl StudioApp {
         if !was_halted && self.studio.shared.debug.is_halted() {
             // A new halt opens the Call stack and the halted statement, as CODESYS does.
             self.dock.show(&super::pane::Pane::CallStack);
-            if let Some((task, frame)) = self.studio.shared.debug.shown() {
-                let command = Command::ShowFrame(task.to_owned(), frame);
-                self.studio.commands.push(command);
+            self.open_shown_frame();
+        }
+    }
+
+    /// Takes in what the online session reported about debugging since the last frame; a
+    /// halt that moved (a breakpoint, a step, a step into a callee) shows its innermost frame
+    /// and opens its statement.
+    fn take_debug_reports(&mut self) {
+        if let Some(halted) = self.studio.shared.online.take_halted()
+            && halted.as_slice() != self.studio.shared.debug.halted()
+        {
+            let was_halted = self.studio.shared.debug.is_halted();
+            self.studio.shared.debug.show_innermost();
+            self.set_halted(halted);
+            if was_halted {
+                self.open_shown_frame();
             }
+        }
+        if let Some(flow) = self.studio.shared.online.take_flow() {
+            self.studio.shared.debug.set_flow(flow);
+        }
+        let shared = &mut self.studio.shared;
+        shared.online.show_frame_locals(shared.debug.shown());
+        if shared.debug.flow_control && shared.online.is_logged_in() {
+            let bodies = self.studio.flow_bodies();
+            self.studio.shared.online.keep_flow_bodies(bodies);
+        }
+    }
+
+    /// Opens the shown frame's POU at its line.
+    fn open_shown_frame(&mut self) {
+        if let Some((task, frame)) = self.studio.shared.debug.shown() {
+            let command = Command::ShowFrame(task.to_owned(), frame);
+            self.studio.commands.push(command);
         }
     }
 
@@ -261,6 +291,8 @@ impl StudioApp {
         }
         theme::install_palettes(ui.ctx());
         studio.take_in_background_results(ui.ctx());
+        self.take_debug_reports();
+        let studio = &mut self.studio;
         shortcuts::handle_shortcuts(ui.ctx(), &mut studio.commands);
         studio.update_title(ui.ctx());
         let view = studio.shared.view();

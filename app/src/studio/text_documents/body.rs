@@ -19,6 +19,7 @@ use crate::studio::graphical_documents::{
 
 use super::diagnostics::body_diagnostics;
 use super::documents::{TextDocuments, TextKey};
+use super::frame_inline;
 use super::inline::instance_of;
 use super::live_check;
 use super::part::{Shown, body_of, target_label};
@@ -139,9 +140,33 @@ pub(super) fn body_ui(
     }
     let diagnostics = body_diagnostics(&texts.live, project, &pou.name, &target);
     let inline = if view.online.is_online() {
-        texts
+        // While halted in this POU (or a method or action of it), its values are the halted
+        // frame's instance's; a halted function's or method's locals come from its frame.
+        let shown = view.debug.shown_frame();
+        let halted = shown
+            .filter(|frame| {
+                let owner = frame
+                    .pou
+                    .split_once('.')
+                    .map_or(&*frame.pou, |(owner, _)| owner);
+                owner.eq_ignore_ascii_case(&pou.name)
+            })
+            .and_then(|frame| frame.instance.as_deref());
+        let mut values = texts
             .inline
-            .values_for(view.online, project, &target, text, pou)
+            .values_for(view.online, project, &target, text, pou, halted);
+        let in_frame = shown.is_some_and(|frame| {
+            frame_inline::image_name(&target)
+                .is_some_and(|name| name.eq_ignore_ascii_case(&frame.pou))
+        });
+        if in_frame {
+            values.extend(frame_inline::frame_inline_values(
+                text,
+                view.online.frame_locals(),
+            ));
+            values.sort_by_key(|value| value.range.start);
+        }
+        values
     } else {
         texts.inline.forget(&target);
         Vec::new()

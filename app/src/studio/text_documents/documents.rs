@@ -158,6 +158,26 @@ impl TextDocuments {
             .map(|entry| entry.editor.debug_marks())
     }
 
+    /// The POU bodies open in Structured Text editors, each with the instance its inline
+    /// values show (none for a function), sorted by name: what flow control records.
+    pub fn flow_bodies(&self, project: &project_model::Project) -> Vec<(String, Option<String>)> {
+        let mut bodies: Vec<(String, Option<String>)> = project_model::object_files(project)
+            .into_iter()
+            .filter_map(|(_, object)| match object {
+                project_model::Object::Pou(pou)
+                    if self
+                        .editors
+                        .contains_key(&TextKey::Body(TextTarget::Pou(pou.name.clone()))) =>
+                {
+                    Some((pou.name.clone(), super::inline::instance_of(project, pou)))
+                }
+                _ => None,
+            })
+            .collect();
+        bodies.sort();
+        bodies
+    }
+
     /// Puts the editors' own words in `language` (called every frame; changes only on a
     /// switch of language).
     pub fn set_language(&mut self, language: Language) {

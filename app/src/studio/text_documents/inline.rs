@@ -60,7 +60,8 @@ impl InlineValues {
         self.shown.iter()
     }
 
-    /// The values to show in the body `target` (whose text is `text`) of `pou`.
+    /// The values to show in the body `target` (whose text is `text`) of `pou`: of the
+    /// `halted` instance when a task is halted in it, else of its first instance.
     pub fn values_for(
         &mut self,
         online: &Online,
@@ -68,8 +69,12 @@ impl InlineValues {
         target: &TextTarget,
         text: &str,
         pou: &Pou,
+        halted: Option<&str>,
     ) -> Vec<InlineValue> {
-        let Some(instance) = instance_of(project, pou) else {
+        let Some(instance) = halted
+            .map(str::to_owned)
+            .or_else(|| instance_of(project, pou))
+        else {
             return Vec::new();
         };
         let stale = self

@@ -7,6 +7,7 @@ mod body;
 mod declarations;
 mod diagnostics;
 mod documents;
+mod frame_inline;
 mod inline;
 mod live_check;
 mod part;

@@ -1,0 +1,247 @@
+//! The session's debugging events against a small fake runtime on loopback: attaching, halts
+//! reported once per change with their call stacks, breakpoints replaced with their refusals
+//! named, and a detach at the session's end.
+
+#![allow(clippy::unwrap_used, clippy::expect_used)] // A panic is a failed test.
+
+use std::net::SocketAddr;
+use std::sync::{Arc, Mutex};
+use std::time::Duration;
+
+use online_protocol::{
+    DebugRequest, DebugResponse, DebugStatus, HaltReason, HaltState, Identity, PROTOCOL_VERSION,
+    Refusal, Request, Response, SessionState, TargetState,
+};
+use tokio::io::{AsyncReadExt as _, AsyncWriteExt as _};
+use tokio::net::TcpListener;
+use tokio::sync::mpsc;
+
+use super::super::{Command, Event, SessionOptions, spawn};
+use super::*;
+
+/// What the fake runtime knows: the halt state's generation and whether task 0 is halted.
+#[derive(Default)]
+struct Fake {
+    generation: u32,
+    halted: bool,
+    seen: Vec<DebugRequest>,
+}
+
+fn task(halted: bool) -> TaskHalt {
+    TaskHalt {
+        task: 0,
+        state: if halted {
+            TaskDebugState::Halted
+        } else {
+            TaskDebugState::Running
+        },
+        reason: HaltReason::Breakpoint,
+        breakpoint: halted.then_some(1),
+        pou: if halted { 2 } else { 0 },
+        instruction: if halted { 7 } else { 0 },
+        depth: u16::from(halted),
+        cycle: 0,
+        halted_ms: 0,
+    }
+}
+
+fn answer(fake: &mut Fake, request: &DebugRequest) -> Result<DebugResponse, Refusal> {
+    fake.seen.push(request.clone());
+    Ok(match request {
+        DebugRequest::Attach { .. } => DebugResponse::Attach {
+            took_over: false,
+            halted: 0,
+            breakpoints: 0,
+        },
+        DebugRequest::Detach { .. } => DebugResponse::Detach,
+        DebugRequest::BreakClear { .. } => DebugResponse::BreakClear,
+        DebugRequest::BreakSet { breakpoint, .. } => {
+            if breakpoint.pou == 9 {
+                return Err(Refusal::bad(
+                    "no statement starts at instruction 3 of POU 9",
+                ));
+            }
+            DebugResponse::BreakSet {
+                id: 1,
+                replaced: false,
+            }
+        }
+        DebugRequest::HaltState { .. } => DebugResponse::HaltState(HaltState {
+            session: SessionState::Attached,
+            options: DebugOptions::default(),
+            generation: fake.generation,
+            total: 1,
+            tasks: vec![task(fake.halted)],
+        }),
+        DebugRequest::Stack { .. } => DebugResponse::Stack {
+            total: 1,
+            frames: vec![StackFrame {
+                pou: 2,
+                instruction: 7,
+                instance: 1 << 56,
+                frame: 0,
+                frame_bytes: 0,
+            }],
+        },
+        DebugRequest::Continue { .. } => {
+            fake.halted = false;
+            fake.generation += 1;
+            DebugResponse::Continue
+        }
+        other => return Err(Refusal::bad(format!("unexpected {other:?}"))),
+    })
+}
+
+/// Serves connections on 127.0.0.1 from `fake`.
+async fn serve(fake: Arc<Mutex<Fake>>) -> SocketAddr {
+    let listener = TcpListener::bind("127.0.0.1:0").await.unwrap();
+    let address = listener.local_addr().unwrap();
+    tokio::spawn(async move {
+        let (mut stream, _) = listener.accept().await.unwrap();
+        loop {
+            let mut header = [0u8; 7];
+            if stream.read_exact(&mut header).await.is_err() {
+                return;
+            }
+            let length = usize::from(u16::from_be_bytes([header[4], header[5]]));
+            let mut pdu = vec![0u8; length - 1];
+            stream.read_exact(&mut pdu).await.unwrap();
+            let request = Request::decode(&pdu[1..]).unwrap();
+            let body = match &request {
+                Request::Identify { .. } => Response::Identify(Identity {
+                    protocol: PROTOCOL_VERSION,
+                    runtime_version: "fake".to_owned(),
+                    state: TargetState::Running,
+                    image_hash: None,
+                    project: String::new(),
+                    password_required: false,
+                    debug: DebugStatus::default(),
+                })
+                .encode(),
+                Request::Debug(debug) => match answer(&mut fake.lock().unwrap(), debug) {
+                    Ok(response) => Response::Debug(response).encode(),
+                    Err(refusal) => refusal.encode(debug.service().number()),
+                },
+                other => panic!("the fake runtime got {other:?}"),
+            };
+            let mut frame = header[..4].to_vec();
+            frame.extend_from_slice(&((body.len() + 2) as u16).to_be_bytes());
+            frame.push(header[6]);
+            frame.push(online_protocol::FUNCTION_CODE);
+            frame.extend_from_slice(&body);
+            stream.write_all(&frame).await.unwrap();
+        }
+    });
+    address
+}
+
+/// The next event that is not a snapshot, waiting at most five seconds.
+async fn next(events: &mut mpsc::Receiver<Event>) -> Event {
+    tokio::time::timeout(Duration::from_secs(5), events.recv())
+        .await
+        .expect("an event within five seconds")
+        .expect("the session runs")
+}
+
+#[tokio::test]
+async fn an_attached_session_reports_each_halt_once_with_its_stack_and_detaches_at_the_end() {
+    let fake = Arc::new(Mutex::new(Fake::default()));
+    let address = serve(Arc::clone(&fake)).await;
+    let (commands, mut events) = spawn(SessionOptions {
+        address,
+        password: None,
+        poll_interval: Duration::from_millis(50),
+        reconnect_interval: Duration::from_secs(1),
+    });
+    assert!(matches!(next(&mut events).await, Event::Connected(_)));
+    commands
+        .send(Command::Debug(DebugCommand::Attach))
+        .await
+        .unwrap();
+    assert!(matches!(next(&mut events).await, Event::DebugAttached(_)));
+    // The first look reports that nothing is halted.
+    match next(&mut events).await {
+        Event::Halted(tasks) => assert!(tasks.is_empty()),
+        other => panic!("{other:?}"),
+    }
+    {
+        let mut fake = fake.lock().unwrap();
+        fake.halted = true;
+        fake.generation = 1;
+    }
+    match next(&mut events).await {
+        Event::Halted(tasks) => {
+            assert_eq!(tasks.len(), 1);
+            assert_eq!(tasks[0].halt.state, TaskDebugState::Halted);
+            assert_eq!(tasks[0].frames[0].instruction, 7);
+        }
+        other => panic!("{other:?}"),
+    }
+    // The same generation again is not reported: the next event is the continue's own.
+    tokio::time::sleep(HALT_POLL_INTERVAL * 3).await;
+    commands
+        .send(Command::Debug(DebugCommand::Continue(0)))
+        .await
+        .unwrap();
+    match next(&mut events).await {
+        Event::Halted(tasks) => assert!(tasks.is_empty()),
+        other => panic!("{other:?}"),
+    }
+    let stacks = fake
+        .lock()
+        .unwrap()
+        .seen
+        .iter()
+        .filter(|request| matches!(request, DebugRequest::Stack { .. }))
+        .count();
+    assert_eq!(stacks, 1, "the stack is read once per change");
+    commands.send(Command::Close).await.unwrap();
+    while events.recv().await.is_some() {}
+    let seen = &fake.lock().unwrap().seen;
+    assert!(matches!(seen.last(), Some(DebugRequest::Detach { .. })));
+}
+
+#[tokio::test]
+async fn breakpoints_are_replaced_and_each_refusal_is_named_in_its_place() {
+    let fake = Arc::new(Mutex::new(Fake::default()));
+    let address = serve(Arc::clone(&fake)).await;
+    let (commands, mut events) = spawn(SessionOptions {
+        address,
+        password: None,
+        poll_interval: Duration::from_millis(50),
+        reconnect_interval: Duration::from_secs(1),
+    });
+    assert!(matches!(next(&mut events).await, Event::Connected(_)));
+    let spec = |pou| BreakpointSpec {
+        pou,
+        instruction: 3,
+        instance: 0,
+        task: online_protocol::ALL_TASKS,
+        hit: online_protocol::HitRule::ALWAYS,
+        condition: Vec::new(),
+    };
+    commands
+        .send(Command::Debug(DebugCommand::SetBreakpoints(vec![
+            spec(2),
+            spec(9),
+        ])))
+        .await
+        .unwrap();
+    match next(&mut events).await {
+        Event::BreakpointsSet(ids) => {
+            assert_eq!(ids[0], Ok(1));
+            let refused = ids[1].as_ref().unwrap_err();
+            assert!(refused.contains("BREAK_SET"), "{refused}");
+            assert!(refused.contains("POU 9"), "{refused}");
+        }
+        other => panic!("{other:?}"),
+    }
+    let seen = &fake.lock().unwrap().seen;
+    assert!(matches!(seen[0], DebugRequest::BreakClear { .. }));
+    // Not attached: no halt is polled.
+    assert!(
+        !seen
+            .iter()
+            .any(|request| matches!(request, DebugRequest::HaltState { .. }))
+    );
+}
