@@ -110,10 +110,7 @@ mod tests {
     use super::*;
 
     fn place(line: u32) -> BreakpointPlace {
-        BreakpointPlace {
-            file: "application/Main.st".to_owned(),
-            line,
-        }
+        BreakpointPlace::text("application/Main.st", line)
     }
 
     #[test]

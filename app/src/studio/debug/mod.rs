@@ -7,9 +7,13 @@
 mod breakpoint;
 mod breakpoints;
 mod command;
+mod graphical_place;
 mod halt;
 
 pub use breakpoint::{Breakpoint, BreakpointPlace, HitMode};
 pub use breakpoints::{Breakpoints, statement_line, statement_lines};
 pub use command::{DebugCommand, DebugTarget};
+pub use graphical_place::{
+    GraphicalPlace, body_name, body_target, has_statement, place_at_line, statement_of_place,
+};
 pub use halt::{DebugState, HaltedTask, StackFrame};

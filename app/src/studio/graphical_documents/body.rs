@@ -13,6 +13,7 @@ use project_model::{
 };
 
 use crate::studio::command::{Command, Commands};
+use crate::studio::debug::{Breakpoints, body_name};
 use crate::studio::error_texts::diagram_refusal_text;
 use crate::studio::i18n::{DiagramText, Language, Text};
 use crate::studio::view::StudioView;
@@ -66,6 +67,27 @@ pub(crate) fn graphical_body_ui(
         .map(|findings| element_diagnostics(findings, target))
         .unwrap_or_default();
 
+    let file = super::pou_file(project, &shown.pou.name);
+    let body_name = body_name(target);
+    // The halt and flow marks are reported by lines of the lowered text; breakpoints alone
+    // need no lowering.
+    let debugging = !view.debug.halted().is_empty() || view.debug.flow_control;
+    let lowered = if debugging {
+        documents
+            .lowering
+            .bodies(project, revision)
+            .iter()
+            .find(|body| body.target == *target)
+    } else {
+        None
+    };
+    let no_breakpoints = Breakpoints::default();
+    let marks = view.debug.body_marks_for(
+        &file,
+        &body_name,
+        lowered,
+        view.breakpoints().unwrap_or(&no_breakpoints),
+    );
     // While online the lowering says where each element's value is read and which element a
     // fault's line belongs to.
     let mut paths = Vec::new();
@@ -119,6 +141,7 @@ pub(crate) fn graphical_body_ui(
     document.set_read_only(view.online.is_logged_in());
     document.set_diagnostics(markers);
     document.editor.set_online(online);
+    document.editor.set_debug_marks(marks);
     if let Some((network, element)) = shown.reveal {
         match element {
             Some(id) => document.editor.reveal(id),
@@ -142,6 +165,7 @@ pub(crate) fn graphical_body_ui(
         declare_instance,
         prepared: prepared_operand,
         refusal,
+        toggle_breakpoint,
         ..
     } = output;
     if let Some(refusal) = refusal {
@@ -151,6 +175,14 @@ pub(crate) fn graphical_body_ui(
         && let Some(path) = operand_path(&operand.operand)
     {
         prepare_value(prepared, path, &operand.value);
+    }
+    if let Some(place) = toggle_breakpoint {
+        let lowered = documents
+            .lowering
+            .bodies(project, revision)
+            .iter()
+            .find(|body| body.target == *target);
+        super::toggle_breakpoint(commands, target, &file, place, lowered, language);
     }
     if let Some(change) = change {
         let edit = Edit::SpliceNetworks {

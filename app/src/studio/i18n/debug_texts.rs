@@ -43,6 +43,9 @@ pub enum DebugText {
     WaitingBeneath,
     Halted,
     NoStatementAfter,
+    NoElementStatement,
+    GraphicalNetwork,
+    GraphicalElement,
     LogInToDebug,
     NotHalted,
     TargetRefusesDebugging,
@@ -95,6 +98,15 @@ impl DebugText {
             Self::NoStatementAfter => (
                 "no statement at or after line {line} of {file}",
                 "{file} 第 {line} 行及其后没有语句",
+            ),
+            Self::NoElementStatement => (
+                "{place} has no statement of its own (an operator box such as ADD is computed in the statement of what it feeds, an empty network has none): put the breakpoint on the network, a coil, a box or an assignment",
+                "{place} 没有自己的语句（ADD 等运算框在其所连接元素的语句中计算，空网络没有语句）：请将断点设在网络、线圈、功能块或赋值上",
+            ),
+            Self::GraphicalNetwork => ("{body}: network {network}", "{body}：网络 {network}"),
+            Self::GraphicalElement => (
+                "{body}: network {network}, element {element}",
+                "{body}：网络 {network}，元素 {element}",
             ),
             Self::LogInToDebug => ("log in to debug (Alt+F8)", "请先登录再调试 (Alt+F8)"),
             Self::NotHalted => ("no task is halted", "没有暂停的任务"),

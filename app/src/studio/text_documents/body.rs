@@ -200,10 +200,7 @@ pub(super) fn body_ui(
         }
     }
     if let Some(file) = file {
-        let caret_place = |line: usize| BreakpointPlace {
-            file: file.clone(),
-            line: line as u32 + 1,
-        };
+        let caret_place = |line: usize| BreakpointPlace::text(file.clone(), line as u32 + 1);
         if output.response.has_focus() {
             texts.last_caret = Some(caret_place(caret_line));
         }
