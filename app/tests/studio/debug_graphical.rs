@@ -150,3 +150,86 @@ fn a_halt_in_an_ld_body_marks_its_element_and_flow_control_its_network() {
     assert_eq!(marks.flow, vec![place]);
     assert!(marks.network_flowed(1) && !marks.network_flowed(0));
 }
+
+fn pack_cycle() -> TextTarget {
+    TextTarget::Pou("PackCycle".to_owned())
+}
+
+/// The SFC chart of the PackCycle as the model holds it.
+fn pack_cycle_chart(app: &StudioApp) -> project_model::SfcChart {
+    match app
+        .session()
+        .unwrap()
+        .project
+        .application
+        .object("PackCycle")
+    {
+        Some(project_model::Object::Pou(pou)) => match &pou.body {
+            project_model::Body::Sfc { chart } => chart.clone(),
+            other => panic!("the PackCycle is not SFC: {other:?}"),
+        },
+        _ => panic!("the example has the PackCycle"),
+    }
+}
+
+#[test]
+fn a_halt_in_an_sfc_chart_marks_its_step_and_f9_sets_a_breakpoint_named_by_the_step() {
+    let project = example_copy(|_| {});
+    let mut harness = studio(project.path());
+    harness.run_steps(2);
+    let chart = pack_cycle_chart(harness.state());
+    let project = harness.state().session().unwrap().project.clone();
+    let lowered = compiler::lower::lower_project(&project).bodies;
+    let body = lowered
+        .iter()
+        .find(|body| body.target == pack_cycle())
+        .unwrap();
+    // The first line of the chart's text that comes from a step: where its actions run.
+    let (line, place, step) = (1..=body.text.lines().count() as u32)
+        .find_map(|line| {
+            let place = app::studio::place_at_line(body, line)?;
+            match project_model::sfc_edit::find_node(&chart, place.element?) {
+                Some(project_model::SfcNode::Step(step)) => Some((line, place, step.clone())),
+                _ => None,
+            }
+        })
+        .expect("a step of the PackCycle has a statement");
+    harness.state_mut().set_halted(vec![HaltedTask {
+        task: "MainTask".to_owned(),
+        beneath: None,
+        frames: vec![StackFrame {
+            pou: "PackCycle".to_owned(),
+            instance: Some("PackCycle".to_owned()),
+            file: body.text_file.to_string_lossy().into_owned(),
+            line,
+        }],
+    }]);
+    harness.run_steps(4);
+    let editor = harness.state().sfc_editor(&pack_cycle()).unwrap();
+    assert_eq!(editor.debug_marks().halt, Some(place));
+    assert_eq!(editor.selection(), [step.id]);
+
+    // F9 on the selected step sets a breakpoint the pane names by the step.
+    harness.get_by_label("Implementation of PackCycle").focus();
+    harness.step();
+    harness.key_press(Key::F9);
+    harness.run_steps(3);
+    let set = breakpoints(harness.state());
+    assert_eq!(set.len(), 1);
+    let graphical = set[0].place.graphical.clone().unwrap();
+    assert_eq!(graphical.element, Some(step.id.0));
+    assert_eq!(set[0].place.file, "application/PackCycle.pou.toml");
+    let marks = harness
+        .state()
+        .sfc_editor(&pack_cycle())
+        .unwrap()
+        .debug_marks()
+        .clone();
+    assert_eq!(marks.breakpoints.len(), 1);
+    assert_eq!(marks.breakpoints[0].place, place);
+    harness.get_by_label("Debug").click();
+    harness.run();
+    harness.get_by_label("Breakpoints").click();
+    harness.run_steps(2);
+    harness.get_by_label(&format!("PackCycle: step {}", step.name));
+}

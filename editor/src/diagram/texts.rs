@@ -101,7 +101,7 @@ impl Default for DiagramTexts {
             blocks: "Blocks".to_owned(),
             prepared_value: "Prepared value".to_owned(),
             zoom: "Zoom (Ctrl+wheel)".to_owned(),
-            toggle_breakpoint: "Toggle breakpoint (F9)".to_owned(),
+            toggle_breakpoint: "Toggle breakpoint".to_owned(),
         }
     }
 }

@@ -5,13 +5,8 @@
 
 use compiler::lower::LoweredBody;
 use compiler::origin::Origin;
-use program_image::ProgramImage;
 use project_model::{ElementId, TextTarget};
 use serde::{Deserialize, Serialize};
-
-use super::breakpoint::BreakpointPlace;
-use crate::debug_bodies::GraphicalBodies;
-use crate::debug_places::Statement;
 
 /// A network of a graphical body, or one element of it: in LD and FBD a network (its first
 /// statement) or a coil, box or assignment; in CFC (network 0) an element with an execution
@@ -121,33 +116,6 @@ pub fn body_target(project: &project_model::Project, body: &str) -> Option<TextT
         .find(|target| body_name(target).eq_ignore_ascii_case(body))
 }
 
-/// The statement a breakpoint's place names in `image`: for a Structured Text place the first
-/// statement starting on its line, for a graphical place the first statement of its network or
-/// element (through `bodies`, the project's lowered graphical bodies). `None` when no statement
-/// is there (an operator box has none of its own, an empty network none at all).
-pub fn statement_of_place(
-    place: &BreakpointPlace,
-    image: &ProgramImage,
-    bodies: &GraphicalBodies,
-) -> Option<Statement> {
-    match &place.graphical {
-        Some(graphical) => bodies.statement_of(
-            image,
-            &place.file,
-            &graphical.body,
-            graphical.network,
-            graphical.element,
-        ),
-        None => {
-            let file = image
-                .sources
-                .iter()
-                .position(|source| *source == place.file)?;
-            crate::debug_bodies::statement_on_line(image, file as u32, place.line)
-        }
-    }
-}
-
 /// The network and element whose statement is on `line` (from 1) of the lowered text of
 /// `body`: where a halt, a frame or a flow mark reported by line goes in the editor.
 pub fn place_at_line(body: &LoweredBody, line: u32) -> Option<editor::BodyPlace> {
@@ -176,85 +144,11 @@ mod tests {
 
     use super::*;
 
-    fn interlock() -> (project_model::Project, ProgramImage, GraphicalBodies) {
+    #[test]
+    fn a_body_name_leads_back_to_its_target() {
         let project = project_model::load_project(&assets::example_project_dir())
             .unwrap()
             .project;
-        let image = compiler::compile_project(&project).unwrap();
-        let bodies = GraphicalBodies::of_project(&project);
-        (project, image, bodies)
-    }
-
-    #[test]
-    fn a_graphical_place_names_the_statement_of_its_network_and_back() {
-        let (project, image, bodies) = interlock();
-        let network = GraphicalPlace {
-            body: "Interlock".to_owned(),
-            network: 1,
-            element: None,
-        };
-        let file = "application/Interlock.pou.toml";
-        let place = BreakpointPlace::graphical(file, network.clone());
-        let statement = statement_of_place(&place, &image, &bodies).unwrap();
-        assert_eq!(statement.pou_name, "Interlock");
-        // The statement's line leads back to an element of the same network.
-        let lowered = compiler::lower::lower_project(&project).bodies;
-        let body = lowered
-            .iter()
-            .find(|body| body.text_file.to_string_lossy() == statement.file)
-            .unwrap();
-        let at = place_at_line(body, statement.line).unwrap();
-        assert_eq!(at.network, 1);
-        let element = at.element.unwrap();
-        assert!(has_statement(body, at));
-        // That element is a place of its own naming the same statement.
-        let element_place = BreakpointPlace::graphical(
-            file,
-            GraphicalPlace {
-                element: Some(element.0),
-                ..network.clone()
-            },
-        );
-        assert_eq!(
-            statement_of_place(&element_place, &image, &bodies),
-            Some(statement)
-        );
-        // A network that is not there names nothing.
-        let missing = BreakpointPlace::graphical(
-            file,
-            GraphicalPlace {
-                network: 99,
-                ..network
-            },
-        );
-        assert_eq!(statement_of_place(&missing, &image, &bodies), None);
-        assert!(!has_statement(
-            body,
-            editor::BodyPlace {
-                network: 99,
-                element: None
-            }
-        ));
-    }
-
-    #[test]
-    fn a_text_place_names_the_statement_on_its_line() {
-        let (_, image, bodies) = interlock();
-        let (file, line) = image
-            .pous
-            .iter()
-            .flat_map(|pou| pou.lines.iter())
-            .map(|entry| (image.sources[entry.file as usize].clone(), entry.line))
-            .find(|(file, _)| file.ends_with(".st"))
-            .unwrap();
-        let place = BreakpointPlace::text(file.clone(), line);
-        let statement = statement_of_place(&place, &image, &bodies).unwrap();
-        assert_eq!((statement.file, statement.line), (file, line));
-    }
-
-    #[test]
-    fn a_body_name_leads_back_to_its_target() {
-        let (project, _, _) = interlock();
         assert_eq!(
             body_target(&project, "Interlock"),
             Some(TextTarget::Pou("Interlock".into()))

@@ -11,9 +11,7 @@ mod graphical_place;
 mod halt;
 
 pub use breakpoint::{Breakpoint, BreakpointPlace, HitMode};
-pub use breakpoints::{Breakpoints, statement_line, statement_lines};
+pub use breakpoints::{Breakpoints, statement_line, statement_lines, statement_of_place};
 pub use command::{DebugCommand, DebugTarget};
-pub use graphical_place::{
-    GraphicalPlace, body_name, body_target, has_statement, place_at_line, statement_of_place,
-};
+pub use graphical_place::{GraphicalPlace, body_name, body_target, has_statement, place_at_line};
 pub use halt::{DebugState, HaltedTask, StackFrame};

@@ -13,7 +13,6 @@ use project_model::{
 };
 
 use crate::studio::command::{Command, Commands};
-use crate::studio::debug::{Breakpoints, body_name};
 use crate::studio::error_texts::diagram_refusal_text;
 use crate::studio::i18n::{DiagramText, Language, Text};
 use crate::studio::view::StudioView;
@@ -67,26 +66,13 @@ pub(crate) fn graphical_body_ui(
         .map(|findings| element_diagnostics(findings, target))
         .unwrap_or_default();
 
-    let file = super::pou_file(project, &shown.pou.name);
-    let body_name = body_name(target);
-    // The halt and flow marks are reported by lines of the lowered text; breakpoints alone
-    // need no lowering.
-    let debugging = !view.debug.halted().is_empty() || view.debug.flow_control;
-    let lowered = if debugging {
-        documents
-            .lowering
-            .bodies(project, revision)
-            .iter()
-            .find(|body| body.target == *target)
-    } else {
-        None
-    };
-    let no_breakpoints = Breakpoints::default();
-    let marks = view.debug.body_marks_for(
-        &file,
-        &body_name,
-        lowered,
-        view.breakpoints().unwrap_or(&no_breakpoints),
+    let (file, marks) = super::body_marks(
+        &view,
+        &mut documents.lowering,
+        project,
+        revision,
+        &shown.pou.name,
+        target,
     );
     // While online the lowering says where each element's value is read and which element a
     // fault's line belongs to.
@@ -177,12 +163,15 @@ pub(crate) fn graphical_body_ui(
         prepare_value(prepared, path, &operand.value);
     }
     if let Some(place) = toggle_breakpoint {
-        let lowered = documents
-            .lowering
-            .bodies(project, revision)
-            .iter()
-            .find(|body| body.target == *target);
-        super::toggle_breakpoint(commands, target, &file, place, lowered, language);
+        super::toggle_breakpoint(
+            commands,
+            target,
+            &file,
+            place,
+            &mut documents.lowering,
+            (project, revision),
+            language,
+        );
     }
     if let Some(change) = change {
         let edit = Edit::SpliceNetworks {

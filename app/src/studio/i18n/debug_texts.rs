@@ -46,6 +46,8 @@ pub enum DebugText {
     NoElementStatement,
     GraphicalNetwork,
     GraphicalElement,
+    GraphicalStep,
+    GraphicalTransition,
     LogInToDebug,
     NotHalted,
     TargetRefusesDebugging,
@@ -108,6 +110,10 @@ impl DebugText {
                 "{body}: network {network}, element {element}",
                 "{body}：网络 {network}，元素 {element}",
             ),
+            Self::GraphicalStep => ("{body}: step {name}", "{body}：步 {name}"),
+            Self::GraphicalTransition => {
+                ("{body}: transition {condition}", "{body}：转换 {condition}")
+            }
             Self::LogInToDebug => ("log in to debug (Alt+F8)", "请先登录再调试 (Alt+F8)"),
             Self::NotHalted => ("no task is halted", "没有暂停的任务"),
             Self::TargetRefusesDebugging => (

@@ -51,7 +51,7 @@ fn breakpoint_row_ui(
     breakpoint: &Breakpoint,
 ) {
     let language = view.language;
-    let place = place_text(language, breakpoint);
+    let place = place_text(language, view, breakpoint);
     ui.horizontal(|ui| {
         let mut enabled = breakpoint.enabled;
         if ui.checkbox(&mut enabled, place.as_str()).changed() {
@@ -79,12 +79,38 @@ fn breakpoint_row_ui(
     });
 }
 
-/// The place in words: `FILE:LINE` in text, `Interlock: network 2, element 7` in a graphical
-/// body.
-fn place_text(language: Language, breakpoint: &Breakpoint) -> String {
+/// The place in words: `FILE:LINE` in text, `Interlock: network 2, element 7` in LD, FBD or
+/// CFC, `PackCycle: step Fill` and `PackCycle: transition bFull` in an SFC chart.
+fn place_text(language: Language, view: StudioView<'_>, breakpoint: &Breakpoint) -> String {
     let Some(graphical) = &breakpoint.place.graphical else {
         return breakpoint.place.label();
     };
+    let body = &graphical.body;
+    let chart_node = view
+        .project()
+        .zip(graphical.element)
+        .and_then(|(project, id)| match project.application.object(body) {
+            Some(project_model::Object::Pou(pou)) => match &pou.body {
+                project_model::Body::Sfc { chart } => {
+                    project_model::sfc_edit::find_node(chart, project_model::ElementId(id)).cloned()
+                }
+                _ => None,
+            },
+            _ => None,
+        });
+    match chart_node {
+        Some(project_model::SfcNode::Step(step)) => {
+            return DebugText::GraphicalStep
+                .fill(language, &[("body", body), ("name", &step.name)]);
+        }
+        Some(project_model::SfcNode::Transition(transition)) => {
+            return DebugText::GraphicalTransition.fill(
+                language,
+                &[("body", body), ("condition", &transition.condition)],
+            );
+        }
+        _ => {}
+    }
     let network = (graphical.network + 1).to_string();
     match graphical.element {
         Some(element) => DebugText::GraphicalElement.fill(
