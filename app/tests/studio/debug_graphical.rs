@@ -65,7 +65,15 @@ fn interlock_line(app: &StudioApp, network: usize) -> (String, u32, BodyPlace) {
 #[test]
 fn f9_on_a_selected_ld_network_sets_a_breakpoint_listed_in_the_pane_and_drawn() {
     let project = example_copy(|_| {});
-    let mut harness = studio(project.path());
+    // Tall enough to show every network of the Interlock.
+    let app = StudioApp::new(
+        app::studio::Settings::default(),
+        Some(project.path().to_owned()),
+    );
+    let mut harness = Harness::builder()
+        .with_size([1400.0, 1800.0])
+        .build_ui_state(|ui, app: &mut StudioApp| app.ui(ui), app);
+    harness.step();
     open_interlock_first_network(&mut harness);
     let selected = harness
         .state()
@@ -100,7 +108,45 @@ fn f9_on_a_selected_ld_network_sets_a_breakpoint_listed_in_the_pane_and_drawn() 
     assert_eq!(marks.breakpoints[0].place, selected.unwrap());
     assert_eq!(marks.breakpoints[0].look, BreakpointLook::Enabled);
 
-    // The Breakpoints pane lists it by body and network; "Go to" opens the network.
+    // The plain contact of the last network is computed inside its coil's statement (unlike
+    // an edge contact, whose trigger is a statement): it is not offered, and the status line
+    // says why.
+    let editor = harness.state().diagram_editor(&interlock()).unwrap();
+    let last = editor.networks().len() - 1;
+    let contact = editor.networks()[last]
+        .rung
+        .iter()
+        .find_map(|node| match node {
+            project_model::FlowNode::Operand(operand) => Some(operand.id),
+            _ => None,
+        })
+        .expect("the last network starts with a contact");
+    let at = editor.element_screen_rect(contact).unwrap().center();
+    harness.hover_at(at);
+    harness.step();
+    for pressed in [true, false] {
+        harness.event(Event::PointerButton {
+            pos: at,
+            button: egui::PointerButton::Primary,
+            pressed,
+            modifiers: Modifiers::NONE,
+        });
+        harness.step();
+    }
+    harness.key_press(Key::F9);
+    harness.run_steps(3);
+    assert_eq!(breakpoints(harness.state()).len(), 1);
+    let status = harness.state().status().map(|status| status.text.clone());
+    assert!(
+        status.as_deref().is_some_and(|text| text.contains(&format!(
+            "Interlock:{}:{}",
+            last + 1,
+            contact.0
+        )) && text.contains("no statement of its own")),
+        "{status:?}"
+    );
+
+    // The Breakpoints pane lists it by body and network.
     harness.get_by_label("Debug").click();
     harness.run();
     harness.get_by_label("Breakpoints").click();
