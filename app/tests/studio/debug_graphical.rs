@@ -278,4 +278,11 @@ fn a_halt_in_an_sfc_chart_marks_its_step_and_f9_sets_a_breakpoint_named_by_the_s
     harness.get_by_label("Breakpoints").click();
     harness.run_steps(2);
     harness.get_by_label(&format!("PackCycle: step {}", step.name));
+
+    // The Debug menu's "Toggle breakpoint" acts on the step selected last, as on the caret.
+    harness.get_by_label("Debug").click();
+    harness.run();
+    harness.get_by_label_contains("Toggle breakpoint").click();
+    harness.run_steps(2);
+    assert!(breakpoints(harness.state()).is_empty());
 }

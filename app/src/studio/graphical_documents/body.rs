@@ -141,6 +141,14 @@ pub(crate) fn graphical_body_ui(
     };
     let label = Text::ImplementationOf.fill(view.language, &[("name", shown.label)]);
     let output = document.editor.show(ui, &label, &services);
+    if let Some(place) = super::focused_place(
+        output.response.has_focus(),
+        document.editor.breakpoint_place(),
+        target,
+        &file,
+    ) {
+        documents.focused_place = Some(place);
+    }
     if output.change.is_some() {
         // The model answers the change next frame, whether it takes it or refuses it.
         document.synced = None;

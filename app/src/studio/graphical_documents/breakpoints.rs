@@ -81,3 +81,18 @@ pub(super) fn toggle_breakpoint(
         file, graphical,
     )));
 }
+
+/// The breakpoint place of the selection `selected` of the editor of the body `target` in
+/// `file`, when that editor has the keyboard focus (`focused`).
+pub(super) fn focused_place(
+    focused: bool,
+    selected: Option<editor::BodyPlace>,
+    target: &TextTarget,
+    file: &str,
+) -> Option<BreakpointPlace> {
+    let selected = selected.filter(|_| focused)?;
+    Some(BreakpointPlace::graphical(
+        file,
+        GraphicalPlace::of_editor(target, selected),
+    ))
+}

@@ -156,6 +156,14 @@ pub(crate) fn cfc_body_ui(
     };
     let label = Text::ImplementationOf.fill(view.language, &[("name", shown.label)]);
     let output = document.editor.show(ui, &label, &services);
+    if let Some(place) = super::focused_place(
+        output.response.has_focus(),
+        document.editor.breakpoint_place(),
+        target,
+        &file,
+    ) {
+        documents.focused_place = Some(place);
+    }
     // The editor's own toggle (its context menu) is the studio's setting for every chart.
     if documents.show_execution_order.is_some() {
         documents.show_execution_order = Some(document.editor.shows_execution_order());
@@ -297,6 +305,14 @@ pub(crate) fn sfc_body_ui(
     };
     let label = Text::ImplementationOf.fill(view.language, &[("name", shown.label)]);
     let output = document.editor.show(ui, &label, &services);
+    if let Some(place) = super::focused_place(
+        output.response.has_focus(),
+        document.editor.breakpoint_place(),
+        target,
+        &file,
+    ) {
+        documents.focused_place = Some(place);
+    }
     if output.change.is_some() {
         document.synced = None;
     }

@@ -76,6 +76,10 @@ pub struct GraphicalDocuments {
     /// Whether the CFC editors show the execution order; `None` until the user chose, when each
     /// editor shows its default.
     pub(super) show_execution_order: Option<bool>,
+    /// The network, element, step or transition selected in the graphical editor that has the
+    /// keyboard focus this frame, taken by the text documents as the place the Debug menu's
+    /// "Toggle breakpoint" and "Run to cursor" act on.
+    pub(crate) focused_place: Option<crate::studio::debug::BreakpointPlace>,
 }
 
 /// The lowered LD/FBD bodies of one project revision, for their probes and the origins of

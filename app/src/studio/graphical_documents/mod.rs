@@ -23,4 +23,4 @@ pub(crate) use body::{GraphicalShown, graphical_body_ui};
 pub(crate) use chart_body::{ChartShown, cfc_body_ui, sfc_body_ui};
 pub use documents::GraphicalDocuments;
 
-use breakpoints::{body_marks, toggle_breakpoint};
+use breakpoints::{body_marks, focused_place, toggle_breakpoint};

@@ -132,6 +132,9 @@ pub(super) fn body_ui(
             // An ST body has its text, drawn below.
             Body::St { .. } => {}
         }
+        if let Some(place) = texts.graphical.focused_place.take() {
+            texts.last_caret = Some(place);
+        }
         return;
     };
     if texts.live.update(project, &pou.name, revision) {
