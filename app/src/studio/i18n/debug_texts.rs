@@ -121,8 +121,8 @@ impl DebugText {
                 "目标设备不提供调试功能",
             ),
             Self::NoCaret => (
-                "put the caret on a statement of a Structured Text body first",
-                "请先将光标放在结构化文本实现的语句上",
+                "put the caret on a statement of a Structured Text body, or select a network, element, step or transition of a graphical body, first",
+                "请先将光标放在结构化文本实现的语句上，或在图形实现中选择网络、元素、步或转换",
             ),
             Self::SummaryCondition => ("when {condition}", "当 {condition}"),
             Self::SummaryHits => ("hit count {mode} {target}", "命中次数{mode} {target}"),
