@@ -3,7 +3,7 @@
 //! compiled as Structured Text with each element's statement on a line of its own, so an
 //! element's place is a line of that text (`docs/debugging.md` §3).
 
-use compiler::lower::{ElementPlace, lower_project};
+use compiler::lower::{ElementPlace, LoweredBody, lower_project};
 use compiler::origin::Origin;
 use program_image::ProgramImage;
 use project_model::Project;
@@ -32,9 +32,12 @@ struct GraphicalBody {
 impl GraphicalBodies {
     /// The graphical bodies of `project`, lowered as the compiler lowers them.
     pub fn of_project(project: &Project) -> Self {
-        let lowered = lower_project(project);
+        Self::of_lowered(&lower_project(project).bodies)
+    }
+
+    /// The graphical bodies of a project lowered already (the studio keeps its lowering).
+    pub fn of_lowered(lowered: &[LoweredBody]) -> Self {
         let bodies = lowered
-            .bodies
             .iter()
             .map(|body| {
                 let count = body.text.lines().count();
@@ -71,33 +74,53 @@ impl GraphicalBodies {
         place: &str,
     ) -> Option<Result<Statement, PlaceError>> {
         let (file, pou, network, element) = parse(place.trim())?;
-        let wanted = file.replace('\\', "/");
-        let mut bodies = self
-            .bodies
-            .iter()
-            .filter(|body| body.file == wanted || body.file.ends_with(&format!("/{wanted}")))
-            .peekable();
-        bodies.peek()?;
-        for body in bodies {
-            let source = image.sources.iter().position(|s| *s == body.text_file)? as u32;
-            for (at, origin) in body.lines.iter().enumerate() {
+        self.bodies_in(file).next()?;
+        Some(
+            self.statement_of(image, file, pou, network - 1, element)
+                .ok_or_else(|| PlaceError::NoElementStatement(place.trim().to_owned())),
+        )
+    }
+
+    /// The first statement of network `network` (from 0) of the body named `body` (`Main`,
+    /// `FB.Reset`) in `file`, or of its element `element`; `None` when none is there.
+    pub fn statement_of(
+        &self,
+        image: &ProgramImage,
+        file: &str,
+        body: &str,
+        network: usize,
+        element: Option<u32>,
+    ) -> Option<Statement> {
+        for graphical in self.bodies_in(file) {
+            let Some(source) = image.sources.iter().position(|s| *s == graphical.text_file) else {
+                continue;
+            };
+            for (at, origin) in graphical.lines.iter().enumerate() {
                 let Some(origin) = origin else { continue };
                 let name = origin.to_string();
                 let Some((origin_pou, _)) = name.split_once(':') else {
                     continue;
                 };
-                let same = origin_pou.eq_ignore_ascii_case(pou)
-                    && origin.network + 1 == network
+                let same = origin_pou.eq_ignore_ascii_case(body)
+                    && origin.network == network
                     && element.is_none_or(|element| origin.element.map(|e| e.0) == Some(element));
                 if !same {
                     continue;
                 }
-                if let Some(statement) = statement_on_line(image, source, at as u32 + 1) {
-                    return Some(Ok(statement));
+                if let Some(statement) = statement_on_line(image, source as u32, at as u32 + 1) {
+                    return Some(statement);
                 }
             }
         }
-        Some(Err(PlaceError::NoElementStatement(place.trim().to_owned())))
+        None
+    }
+
+    /// The bodies whose `.pou.toml` file is `file` or ends with it after a `/`.
+    fn bodies_in<'a>(&'a self, file: &str) -> impl Iterator<Item = &'a GraphicalBody> + 'a {
+        let wanted = file.replace('\\', "/");
+        self.bodies
+            .iter()
+            .filter(move |body| body.file == wanted || body.file.ends_with(&format!("/{wanted}")))
     }
 
     /// The graphical place of `statement` (`application/Interlock.pou.toml:Interlock:2:7`);
@@ -148,7 +171,7 @@ fn parse(place: &str) -> Option<(&str, &str, usize, Option<u32>)> {
 }
 
 /// The first statement starting on `line` of source file `file`.
-fn statement_on_line(image: &ProgramImage, file: u32, line: u32) -> Option<Statement> {
+pub(crate) fn statement_on_line(image: &ProgramImage, file: u32, line: u32) -> Option<Statement> {
     let (pou, instruction) = image
         .pous
         .iter()

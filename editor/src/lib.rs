@@ -15,6 +15,7 @@
 //! laid out by [`sfc_layout`]; and the read-only [`CodeView`]
 //! with lexical highlighting.
 
+mod body_debug_marks;
 mod cfc;
 mod code_view;
 mod device_editors;
@@ -27,6 +28,7 @@ mod st_highlight;
 mod table_texts;
 mod variable_table;
 
+pub use body_debug_marks::{BodyBreakpointMark, BodyDebugMarks, BodyPlace};
 pub use cfc::{
     CfcChange, CfcDiagnostic, CfcEditor, CfcOrderCommand, CfcOutput, CfcRefusal, CfcSelection,
     CfcTexts, CfcTool, VariableDragPayload,

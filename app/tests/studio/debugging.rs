@@ -38,10 +38,7 @@ fn breakpoints(app: &StudioApp) -> Vec<Breakpoint> {
 }
 
 fn main_place(line: u32) -> BreakpointPlace {
-    BreakpointPlace {
-        file: "application/Main.st".to_owned(),
-        line,
-    }
+    BreakpointPlace::text("application/Main.st", line)
 }
 
 fn press(harness: &mut Harness<'_, StudioApp>, modifiers: Modifiers, key: Key) {

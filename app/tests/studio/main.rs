@@ -10,6 +10,7 @@
 mod basics;
 mod cam_editor;
 mod charts;
+mod debug_graphical;
 mod debugging;
 mod device_editors;
 mod devices;

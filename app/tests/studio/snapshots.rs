@@ -447,3 +447,45 @@ fn the_cfc_and_sfc_editors_offline_and_online() {
     }
     results.unwrap();
 }
+
+#[test]
+fn the_diagram_editor_halted_with_breakpoints_and_flow_marks() {
+    use editor::{
+        BodyBreakpointMark, BodyDebugMarks, BodyPlace, BreakpointLook, DiagramEditor, DiagramView,
+    };
+    use project_model::ElementId;
+
+    let place = |network: usize, element: Option<u32>| BodyPlace {
+        network,
+        element: element.map(ElementId),
+    };
+    let mut editor = DiagramEditor::new(&interlock_body(), DiagramView::Ladder);
+    // A breakpoint on the first network and a conditional one on its coil `lamp`, the halt on
+    // its timer and the flow bars of the contacts that ran before it.
+    editor.set_debug_marks(BodyDebugMarks {
+        breakpoints: vec![
+            BodyBreakpointMark {
+                place: place(0, None),
+                look: BreakpointLook::Enabled,
+            },
+            BodyBreakpointMark {
+                place: place(0, Some(9)),
+                look: BreakpointLook::Conditional,
+            },
+        ],
+        halt: Some(place(0, Some(6))),
+        halt_is_caller: false,
+        flow: vec![place(0, Some(1)), place(0, Some(2)), place(0, Some(4))],
+    });
+    let mut harness = Harness::builder()
+        .with_size([1000.0, 300.0])
+        .wgpu()
+        .build_ui_state(
+            |ui, editor: &mut DiagramEditor| {
+                editor.show(ui, "Body of Interlock", &NoDiagramServices);
+            },
+            editor,
+        );
+    harness.run_steps(3);
+    harness.snapshot("diagram_ld_halted");
+}

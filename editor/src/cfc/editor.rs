@@ -126,6 +126,8 @@ pub struct CfcEditor {
     pub(super) last_origin: Pos2,
     /// What the open context menu was opened on.
     pub(super) context_hit: Option<super::canvas::Hit>,
+    /// The debugger's breakpoints, halt and flow marks, as the app gave them.
+    pub(super) debug_marks: crate::BodyDebugMarks,
 }
 
 /// What a frame collects for its output.
@@ -135,6 +137,7 @@ pub(super) struct FrameResult {
     pub declare_instance: Option<InstanceDeclaration>,
     pub prepared: Option<PreparedOperand>,
     pub refusal: Option<CfcRefusal>,
+    pub toggle_breakpoint: Option<crate::BodyPlace>,
 }
 
 impl CfcEditor {
@@ -165,6 +168,7 @@ impl CfcEditor {
             pending_commands: Vec::new(),
             last_origin: Pos2::ZERO,
             context_hit: None,
+            debug_marks: crate::BodyDebugMarks::default(),
         };
         editor.rebuild();
         editor
@@ -269,6 +273,28 @@ impl CfcEditor {
         self.diagnostics = diagnostics;
     }
 
+    /// The debugger's marks to draw until replaced; an empty value removes them.
+    pub fn set_debug_marks(&mut self, marks: crate::BodyDebugMarks) {
+        self.debug_marks = marks;
+    }
+
+    /// The debugger's marks being drawn.
+    pub fn debug_marks(&self) -> &crate::BodyDebugMarks {
+        &self.debug_marks
+    }
+
+    /// Where a breakpoint toggled now would go: the one selected element (the chart is
+    /// network 0); `None` for no element or several.
+    pub fn breakpoint_place(&self) -> Option<crate::BodyPlace> {
+        match self.selection.elements.as_slice() {
+            [id] => Some(crate::BodyPlace {
+                network: 0,
+                element: Some(*id),
+            }),
+            _ => None,
+        }
+    }
+
     /// Sets the values read from the target (`None` when offline): by element and pin, the
     /// pin `None` for an input's or output's expression.
     pub fn set_online(&mut self, online: Option<DiagramOnline>) {
@@ -331,6 +357,7 @@ impl CfcEditor {
             declare_instance: frame.declare_instance,
             prepared: frame.prepared,
             refusal: frame.refusal,
+            toggle_breakpoint: frame.toggle_breakpoint,
         }
     }
 

@@ -48,7 +48,18 @@ impl CfcEditor {
             return;
         };
         let texts = self.texts.clone();
+        let breakpoint_place = self.breakpoint_place();
         response.context_menu(|ui| {
+            if ui
+                .add_enabled(
+                    breakpoint_place.is_some(),
+                    egui::Button::new(&texts.toggle_breakpoint),
+                )
+                .clicked()
+            {
+                frame.toggle_breakpoint = breakpoint_place;
+                ui.close();
+            }
             ui.checkbox(&mut self.show_order, &texts.display_execution_order);
             if self.read_only {
                 return;
@@ -205,6 +216,10 @@ impl CfcEditor {
     }
 
     fn key(&mut self, key: Key, modifiers: Modifiers, frame: &mut FrameResult) {
+        if key == Key::F9 && modifiers.is_none() {
+            frame.toggle_breakpoint = self.breakpoint_place();
+            return;
+        }
         let command = modifiers.command;
         let order = match (key, command) {
             (Key::Home, true) => Some(CfcOrderCommand::SendToFront),

@@ -42,6 +42,16 @@ impl CfcEditor {
                 continue;
             }
             self.paint_element(&painter, origin, element, &shape, rect, &colors);
+            if !self.debug_marks.is_empty() {
+                crate::body_debug_marks::paint_element_marks(
+                    &painter,
+                    &self.debug_marks,
+                    0,
+                    element.id,
+                    rect,
+                    5.0 * self.zoom,
+                );
+            }
         }
         self.paint_wire_values(&painter, origin, &colors);
         self.paint_gesture(&painter, origin, &colors);

@@ -77,6 +77,7 @@ struct Host {
     declared: Vec<InstanceDeclaration>,
     refusals: Vec<CfcRefusal>,
     prepared: Vec<PreparedOperand>,
+    toggles: Vec<crate::BodyPlace>,
 }
 
 fn harness(chart: CfcChart) -> Harness<'static, Host> {
@@ -88,6 +89,7 @@ fn harness(chart: CfcChart) -> Harness<'static, Host> {
         changes: 0,
         declared: Vec::new(),
         refusals: Vec::new(),
+        toggles: Vec::new(),
         prepared: Vec::new(),
     };
     let mut harness = Harness::builder()
@@ -104,6 +106,7 @@ fn harness(chart: CfcChart) -> Harness<'static, Host> {
                 }
                 host.declared.extend(output.declare_instance);
                 host.refusals.extend(output.refusal);
+                host.toggles.extend(output.toggle_breakpoint);
                 host.prepared.extend(output.prepared);
             },
             host,
@@ -775,4 +778,31 @@ fn a_jump_completes_the_labels_of_the_chart() {
     place(&mut harness, "Jump", 2.0, 8.0, "re");
     let chart = &harness.state().chart;
     assert!(matches!(&chart.elements[1].kind, CfcElementKind::Jump { label } if label == "retry"));
+}
+
+#[test]
+fn f9_asks_for_a_breakpoint_on_the_selected_element_and_the_marks_are_kept() {
+    let mut harness = drawn_chart();
+    harness.state_mut().editor.reveal(ElementId(2));
+    harness.run_steps(2);
+    harness.key_press(Key::F9);
+    harness.run_steps(2);
+    let output = crate::BodyPlace {
+        network: 0,
+        element: Some(ElementId(2)),
+    };
+    assert_eq!(harness.state().toggles, vec![output]);
+    let marks = crate::BodyDebugMarks {
+        breakpoints: vec![crate::BodyBreakpointMark {
+            place: output,
+            look: crate::BreakpointLook::HitCount,
+        }],
+        halt: Some(output),
+        halt_is_caller: true,
+        flow: vec![output],
+    };
+    harness.state_mut().editor.set_debug_marks(marks.clone());
+    harness.run_steps(2);
+    assert_eq!(harness.state().editor.debug_marks(), &marks);
+    assert_eq!(harness.state().editor.breakpoint_place(), Some(output));
 }

@@ -86,6 +86,8 @@ pub struct CfcTexts {
     pub prepared_value: String,
     /// The zoom percentage's tooltip.
     pub zoom: String,
+    /// The context menu's entry that sets or clears the breakpoint of the selected element.
+    pub toggle_breakpoint: String,
 }
 
 impl Default for CfcTexts {
@@ -133,6 +135,7 @@ impl Default for CfcTexts {
             order_field: text("Execution order"),
             prepared_value: text("Prepared value"),
             zoom: text("Zoom (Ctrl+wheel)"),
+            toggle_breakpoint: text("Toggle breakpoint"),
         }
     }
 }

@@ -137,4 +137,7 @@ pub struct CfcOutput {
     pub prepared: Option<PreparedOperand>,
     /// Why the last gesture did nothing, if it did nothing.
     pub refusal: Option<CfcRefusal>,
+    /// Where the user asked to set or clear a breakpoint (F9 or the context menu): the one
+    /// selected element, in network 0; the app decides whether it has a statement.
+    pub toggle_breakpoint: Option<crate::BodyPlace>,
 }

@@ -165,6 +165,34 @@ impl DiagramEditor {
             let hit = self.hit(to_content(pointer));
             self.click(hit, shift);
         }
+        if response.secondary_clicked()
+            && let Some(pointer) = response.interact_pointer_pos()
+        {
+            // A right-click selects what it is on, unless that is selected already, so the
+            // menu acts on what the user pointed at.
+            match self.hit(to_content(pointer)) {
+                Hit::Element(network, element, _) => {
+                    if !self.selection.elements.contains(&element) {
+                        self.select(Some(network), vec![element]);
+                    }
+                }
+                Hit::Header(network, _) | Hit::Network(network) => {
+                    self.select(Some(network), Vec::new());
+                }
+                Hit::Empty => {}
+            }
+        }
+        let toggle_words = self.texts.toggle_breakpoint.clone();
+        let place = self.breakpoint_place();
+        response.context_menu(|ui| {
+            if ui
+                .add_enabled(place.is_some(), egui::Button::new(&toggle_words))
+                .clicked()
+            {
+                frame.toggle_breakpoint = place;
+                ui.close();
+            }
+        });
         if response.double_clicked()
             && let Some(pointer) = response.interact_pointer_pos()
         {

@@ -61,6 +61,7 @@ impl DiagramEditor {
             let network_origin = origin + self.network_origin_px(index).to_vec2() * self.zoom;
             self.paint_grid(&painter, network_origin, index, context.weak);
             context.network(&self.layouts[index], network_origin);
+            self.paint_debug_marks(&painter, index, block_top, network_origin);
             if self.layouts[index].elements.is_empty() && self.view == DiagramView::FunctionBlock {
                 // An empty FBD network has no rung line to show where it is: a placeholder
                 // marks the place to click and insert, as CODESYS shows "???".
@@ -98,6 +99,52 @@ impl DiagramEditor {
                 ui.visuals().widgets.inactive.weak_bg_fill,
             );
             ghost.galley(text_rect.min, galley, context.line);
+        }
+    }
+
+    /// The debugger's marks of network `index`: in the margin beside its number (its
+    /// breakpoint, the halt arrow, a flow bar down its height) and on its elements.
+    fn paint_debug_marks(
+        &self,
+        painter: &egui::Painter,
+        index: usize,
+        block_top: Pos2,
+        network_origin: Pos2,
+    ) {
+        if self.debug_marks.is_empty() {
+            return;
+        }
+        let zoom = self.zoom;
+        let radius = 6.0 * zoom;
+        let layout = &self.layouts[index];
+        let height = HEADER_HEIGHT_PX + layout.size.y * self.cell_px().y;
+        let bar = Rect::from_min_size(
+            block_top + vec2(LEFT_MARGIN_PX - 6.0, 0.0) * zoom,
+            vec2(3.0, height) * zoom,
+        );
+        let center = block_top + vec2(LEFT_MARGIN_PX - 16.0, 12.0) * zoom;
+        super::super::body_debug_marks::paint_network_marks(
+            painter,
+            &self.debug_marks,
+            index,
+            center,
+            bar,
+            radius,
+        );
+        for element in &layout.elements {
+            let Some(id) = element.id else { continue };
+            let rect = Rect::from_min_max(
+                network_origin + element.rect.min.to_vec2() * self.cell_px() * zoom,
+                network_origin + element.rect.max.to_vec2() * self.cell_px() * zoom,
+            );
+            super::super::body_debug_marks::paint_element_marks(
+                painter,
+                &self.debug_marks,
+                index,
+                id,
+                rect,
+                radius,
+            );
         }
     }
 

@@ -17,7 +17,7 @@ use super::types::{
     DiagramChange, DiagramOnline, DiagramOutput, DiagramRefusal, DiagramServices, DiagramView,
     ElementDiagnostic, InstanceDeclaration, PreparedOperand,
 };
-use crate::Severity;
+use crate::{BodyDebugMarks, BodyPlace, Severity};
 
 /// The height of a network's header (number, title, comment), in points at zoom 1.
 pub(super) const HEADER_HEIGHT_PX: f32 = 40.0;
@@ -89,6 +89,8 @@ pub struct DiagramEditor {
     pub(super) selected_pin: Option<String>,
     /// The networks the last frame painted.
     pub(super) visible: std::ops::Range<usize>,
+    /// The debugger's breakpoints, halt and flow marks, as the app gave them.
+    pub(super) debug_marks: BodyDebugMarks,
 }
 
 /// What a frame collects for its output.
@@ -100,6 +102,8 @@ pub(super) struct FrameResult {
     pub declare_instance: Option<InstanceDeclaration>,
     pub prepared: Option<PreparedOperand>,
     pub refusal: Option<DiagramRefusal>,
+    /// Where F9 or the context menu asked for a breakpoint.
+    pub toggle_breakpoint: Option<BodyPlace>,
 }
 
 impl DiagramEditor {
@@ -130,6 +134,7 @@ impl DiagramEditor {
             last_origin: Pos2::ZERO,
             selected_pin: None,
             visible: 0..0,
+            debug_marks: BodyDebugMarks::default(),
         };
         editor.relayout_all();
         editor
@@ -264,6 +269,35 @@ impl DiagramEditor {
         self.texts = texts;
     }
 
+    /// The debugger's marks to draw until replaced; an empty value removes them.
+    pub fn set_debug_marks(&mut self, marks: BodyDebugMarks) {
+        self.debug_marks = marks;
+    }
+
+    /// The debugger's marks being drawn.
+    pub fn debug_marks(&self) -> &BodyDebugMarks {
+        &self.debug_marks
+    }
+
+    /// Where a breakpoint toggled now would go: the one selected element, or the selected
+    /// network when no element is selected; `None` for no selection or several elements.
+    pub fn breakpoint_place(&self) -> Option<BodyPlace> {
+        match self.selection.elements.as_slice() {
+            [element] => Some(BodyPlace {
+                network: self
+                    .networks
+                    .iter()
+                    .position(|network| network.element(*element).is_some())?,
+                element: Some(*element),
+            }),
+            [] => Some(BodyPlace {
+                network: self.selection.network?,
+                element: None,
+            }),
+            _ => None,
+        }
+    }
+
     /// The layout of network `index` in the current view.
     pub fn layout(&self, index: usize) -> Option<&NetworkLayout> {
         self.layouts.get(index)
@@ -346,6 +380,7 @@ impl DiagramEditor {
             declare_instance: frame.declare_instance,
             prepared: frame.prepared,
             refusal: frame.refusal,
+            toggle_breakpoint: frame.toggle_breakpoint,
         }
     }
 

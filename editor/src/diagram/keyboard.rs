@@ -47,6 +47,9 @@ impl DiagramEditor {
                             self.open_selected_entry(None);
                         }
                         Key::Escape => self.select(None, Vec::new()),
+                        Key::F9 if modifiers.is_none() => {
+                            frame.toggle_breakpoint = self.breakpoint_place();
+                        }
                         _ => {}
                     }
                 }

@@ -68,6 +68,7 @@ struct Host {
     declared: Vec<InstanceDeclaration>,
     refusals: Vec<DiagramRefusal>,
     prepared: Vec<PreparedOperand>,
+    toggles: Vec<crate::BodyPlace>,
 }
 
 fn harness(body: Vec<Network>, view: DiagramView) -> Harness<'static, Host> {
@@ -80,6 +81,7 @@ fn harness(body: Vec<Network>, view: DiagramView) -> Harness<'static, Host> {
         declared: Vec::new(),
         refusals: Vec::new(),
         prepared: Vec::new(),
+        toggles: Vec::new(),
     };
     let mut harness = Harness::builder()
         .with_size(egui::vec2(1000.0, 700.0))
@@ -94,6 +96,7 @@ fn harness(body: Vec<Network>, view: DiagramView) -> Harness<'static, Host> {
                 host.declared.extend(output.declare_instance);
                 host.refusals.extend(output.refusal);
                 host.prepared.extend(output.prepared);
+                host.toggles.extend(output.toggle_breakpoint);
             },
             host,
         );
@@ -908,4 +911,98 @@ fn ctrl_shift_b_gives_the_selected_box_en_and_eno_and_takes_them_away() {
     harness.run_steps(3);
     assert_eq!(pins(harness.state()), ["IN", "PT"]);
     assert_eq!(harness.state().changes, 2);
+}
+
+#[test]
+fn f9_and_the_context_menu_ask_for_a_breakpoint_on_the_selected_element_or_network() {
+    let mut harness = harness(one_rung(), DiagramView::Ladder);
+    harness
+        .state_mut()
+        .editor
+        .select(Some(0), vec![ElementId(2)]);
+    harness.run_steps(2);
+    harness.key_press(Key::F9);
+    harness.run_steps(2);
+    // Shift+F9 is not the toggle.
+    harness.key_press_modifiers(Modifiers::SHIFT, Key::F9);
+    harness.run_steps(2);
+    harness.state_mut().editor.select(Some(0), Vec::new());
+    harness.run_steps(2);
+    harness.key_press(Key::F9);
+    harness.run_steps(2);
+    let coil = crate::BodyPlace {
+        network: 0,
+        element: Some(ElementId(2)),
+    };
+    let network = crate::BodyPlace {
+        network: 0,
+        element: None,
+    };
+    assert_eq!(harness.state().toggles, vec![coil, network]);
+    // A right-click on the contact selects it and offers the toggle.
+    let contact = harness
+        .state()
+        .editor
+        .element_screen_rect(ElementId(1))
+        .unwrap();
+    harness.hover_at(contact.center());
+    harness.run_steps(1);
+    for pressed in [true, false] {
+        harness.event(Event::PointerButton {
+            pos: contact.center(),
+            button: egui::PointerButton::Secondary,
+            pressed,
+            modifiers: Modifiers::NONE,
+        });
+    }
+    harness.run_steps(3);
+    harness.get_by_label("Toggle breakpoint").click();
+    harness.run_steps(3);
+    assert_eq!(
+        harness.state().toggles.last(),
+        Some(&crate::BodyPlace {
+            network: 0,
+            element: Some(ElementId(1)),
+        })
+    );
+    assert!(
+        harness.state().body == one_rung(),
+        "the toggle changes nothing in the body"
+    );
+}
+
+#[test]
+fn debug_marks_are_kept_until_replaced_and_tell_what_ran() {
+    let mut harness = harness(one_rung(), DiagramView::Ladder);
+    let marks = crate::BodyDebugMarks {
+        breakpoints: vec![crate::BodyBreakpointMark {
+            place: crate::BodyPlace {
+                network: 0,
+                element: Some(ElementId(2)),
+            },
+            look: crate::BreakpointLook::Conditional,
+        }],
+        halt: Some(crate::BodyPlace {
+            network: 0,
+            element: Some(ElementId(2)),
+        }),
+        halt_is_caller: false,
+        flow: vec![crate::BodyPlace {
+            network: 0,
+            element: Some(ElementId(1)),
+        }],
+    };
+    harness.state_mut().editor.set_debug_marks(marks.clone());
+    harness.run_steps(2);
+    let editor = &harness.state().editor;
+    assert_eq!(editor.debug_marks(), &marks);
+    assert!(editor.debug_marks().network_flowed(0) && !editor.debug_marks().network_flowed(1));
+    assert!(editor.debug_marks().element_flowed(ElementId(1)));
+    assert!(!editor.debug_marks().element_flowed(ElementId(2)));
+    harness
+        .state_mut()
+        .editor
+        .set_debug_marks(crate::BodyDebugMarks::default());
+    harness.run_steps(1);
+    assert!(harness.state().editor.debug_marks().is_empty());
 }

@@ -64,6 +64,8 @@ pub struct DiagramTexts {
     pub prepared_value: String,
     /// The zoom percentage's tooltip.
     pub zoom: String,
+    /// The context menu's entry that sets or clears the breakpoint of the selection.
+    pub toggle_breakpoint: String,
 }
 
 impl Default for DiagramTexts {
@@ -99,6 +101,7 @@ impl Default for DiagramTexts {
             blocks: "Blocks".to_owned(),
             prepared_value: "Prepared value".to_owned(),
             zoom: "Zoom (Ctrl+wheel)".to_owned(),
+            toggle_breakpoint: "Toggle breakpoint".to_owned(),
         }
     }
 }

@@ -155,4 +155,7 @@ pub struct DiagramOutput {
     pub prepared: Option<PreparedOperand>,
     /// Why the last command did nothing, if it did nothing.
     pub refusal: Option<DiagramRefusal>,
+    /// Where the user asked to set or clear a breakpoint (F9 or the context menu): the selected
+    /// network or element; the app decides whether it has a statement.
+    pub toggle_breakpoint: Option<crate::BodyPlace>,
 }

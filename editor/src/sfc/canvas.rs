@@ -123,7 +123,18 @@ impl SfcEditor {
             }
         }
         let mut chosen = None;
+        let breakpoint_place = self.breakpoint_place();
         response.context_menu(|ui| {
+            if ui
+                .add_enabled(
+                    breakpoint_place.is_some(),
+                    egui::Button::new(&self.texts.toggle_breakpoint),
+                )
+                .clicked()
+            {
+                frame.toggle_breakpoint = breakpoint_place;
+                ui.close();
+            }
             if !self.read_only {
                 for command in INSERTIONS.into_iter().chain([
                     SfcCommand::Delete,
@@ -238,6 +249,10 @@ impl SfcEditor {
                     }
                     if let Some(command) = command_for_key(*key, *modifiers) {
                         self.command(ctx, command, frame);
+                        continue;
+                    }
+                    if *key == Key::F9 && modifiers.is_none() {
+                        frame.toggle_breakpoint = self.breakpoint_place();
                         continue;
                     }
                     let extend = modifiers.shift;

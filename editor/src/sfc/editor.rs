@@ -60,6 +60,8 @@ pub struct SfcEditor {
     /// The selection the view last scrolled to, so a new selection (an inserted step, a
     /// revealed finding) is scrolled into view once and the user's own scrolling is kept.
     pub(super) scrolled_to: Vec<ElementId>,
+    /// The debugger's breakpoints, halt and flow marks, as the app gave them.
+    pub(super) debug_marks: crate::BodyDebugMarks,
 }
 
 /// What one frame collects for its output.
@@ -71,6 +73,8 @@ pub(super) struct FrameResult {
     pub online: Option<SfcOnlineCommand>,
     /// Why this frame's command did nothing.
     pub refusal: Option<SfcEditError>,
+    /// Where F9 or the context menu asked for a breakpoint.
+    pub toggle_breakpoint: Option<crate::BodyPlace>,
 }
 
 impl SfcEditor {
@@ -92,6 +96,7 @@ impl SfcEditor {
             read_only: false,
             focus_requested: false,
             scrolled_to: Vec::new(),
+            debug_marks: crate::BodyDebugMarks::default(),
             pending_commands: Vec::new(),
             panel: None,
             last_origin: Pos2::ZERO,
@@ -145,6 +150,32 @@ impl SfcEditor {
     /// The findings shown.
     pub fn diagnostics(&self) -> &[SfcDiagnostic] {
         &self.diagnostics
+    }
+
+    /// The debugger's marks to draw until replaced; an empty value removes them.
+    pub fn set_debug_marks(&mut self, marks: crate::BodyDebugMarks) {
+        self.debug_marks = marks;
+    }
+
+    /// The debugger's marks being drawn.
+    pub fn debug_marks(&self) -> &crate::BodyDebugMarks {
+        &self.debug_marks
+    }
+
+    /// Where a breakpoint toggled now would go: the one selected step or transition (the
+    /// chart is network 0); `None` for anything else, which has no statement of its own.
+    pub fn breakpoint_place(&self) -> Option<crate::BodyPlace> {
+        let [id] = self.selection[..] else {
+            return None;
+        };
+        matches!(
+            find_node(&self.chart, id),
+            Some(SfcNode::Step(_) | SfcNode::Transition(_))
+        )
+        .then_some(crate::BodyPlace {
+            network: 0,
+            element: Some(id),
+        })
     }
 
     /// Sets the online state (`None` when logged out).
@@ -269,6 +300,7 @@ impl SfcEditor {
             change: frame.change,
             online: frame.online,
             refusal: frame.refusal,
+            toggle_breakpoint: frame.toggle_breakpoint,
         }
     }
 

@@ -132,6 +132,18 @@ impl SfcEditor {
                 );
             }
         }
+        for placed in &self.layout.elements {
+            if !self.debug_marks.is_empty() {
+                crate::body_debug_marks::paint_element_marks(
+                    pen.painter,
+                    &self.debug_marks,
+                    0,
+                    placed.id,
+                    pen.rect(placed.rect),
+                    5.0 * self.zoom,
+                );
+            }
+        }
         self.drop_target_ui(&pen, response);
         self.hover_ui(response, &nodes);
     }

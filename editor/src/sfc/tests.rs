@@ -53,6 +53,7 @@ struct Host {
     changes: usize,
     refusals: Vec<SfcEditError>,
     online: Vec<SfcOnlineCommand>,
+    toggles: Vec<crate::BodyPlace>,
 }
 
 fn harness(chart: SfcChart) -> Harness<'static, Host> {
@@ -64,6 +65,7 @@ fn harness(chart: SfcChart) -> Harness<'static, Host> {
         changes: 0,
         refusals: Vec::new(),
         online: Vec::new(),
+        toggles: Vec::new(),
     };
     let mut harness = Harness::builder()
         .with_size(egui::vec2(1100.0, 700.0))
@@ -77,6 +79,7 @@ fn harness(chart: SfcChart) -> Harness<'static, Host> {
                 }
                 host.refusals.extend(output.refusal);
                 host.online.extend(output.online);
+                host.toggles.extend(output.toggle_breakpoint);
             },
             host,
         );
@@ -518,4 +521,36 @@ fn a_finding_and_an_exceeded_maximum_time_are_shown_at_their_elements() {
     harness.hover_at(step);
     harness.run_steps(60);
     harness.get_by_label("Maximum time exceeded");
+}
+
+#[test]
+fn f9_asks_for_a_breakpoint_on_a_step_or_a_transition_and_the_marks_are_drawn() {
+    let mut harness = harness(SfcChart::new_body());
+    let place = |id: u32| crate::BodyPlace {
+        network: 0,
+        element: Some(ElementId(id)),
+    };
+    click(&mut harness, ElementId(1), Modifiers::NONE);
+    command(&mut harness, Modifiers::NONE, Key::F9);
+    click(&mut harness, ElementId(2), Modifiers::NONE);
+    command(&mut harness, Modifiers::NONE, Key::F9);
+    // A jump has no statement of its own: nothing is asked.
+    click(&mut harness, ElementId(3), Modifiers::NONE);
+    assert_eq!(harness.state().editor.breakpoint_place(), None);
+    command(&mut harness, Modifiers::NONE, Key::F9);
+    assert_eq!(harness.state().toggles, vec![place(1), place(2)]);
+    assert_eq!(harness.state().changes, 0);
+
+    let marks = crate::BodyDebugMarks {
+        breakpoints: vec![crate::BodyBreakpointMark {
+            place: place(2),
+            look: crate::BreakpointLook::Enabled,
+        }],
+        halt: Some(place(1)),
+        halt_is_caller: false,
+        flow: vec![place(1)],
+    };
+    harness.state_mut().editor.set_debug_marks(marks.clone());
+    harness.run_steps(2);
+    assert_eq!(harness.state().editor.debug_marks(), &marks);
 }

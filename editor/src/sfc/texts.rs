@@ -89,6 +89,9 @@ pub struct SfcTexts {
     pub jump_target_field: String,
     /// "Zoom" (the tooltip of the zoom percentage).
     pub zoom: String,
+    /// The context menu's entry that sets or clears the breakpoint of the selected step or
+    /// transition.
+    pub toggle_breakpoint: String,
     /// The refusal's reason in the user's language.
     pub refusal: SfcRefusalWords,
 }
@@ -143,6 +146,7 @@ impl Default for SfcTexts {
             condition_field: "Condition".into(),
             jump_target_field: "Jump target".into(),
             zoom: "Zoom (Ctrl + mouse wheel)".into(),
+            toggle_breakpoint: "Toggle breakpoint".into(),
             refusal: Arc::new(|error: &SfcEditError| error.to_string()),
         }
     }

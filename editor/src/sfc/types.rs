@@ -86,4 +86,7 @@ pub struct SfcOutput {
     pub online: Option<SfcOnlineCommand>,
     /// Why the last command did nothing, if it did nothing; the editor also shows it.
     pub refusal: Option<SfcEditError>,
+    /// Where the user asked to set or clear a breakpoint (F9 or the context menu): the
+    /// selected step (its actions) or transition (its test), in network 0.
+    pub toggle_breakpoint: Option<crate::BodyPlace>,
 }

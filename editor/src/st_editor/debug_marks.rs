@@ -145,7 +145,7 @@ impl StEditor {
 }
 
 /// One breakpoint's symbol, as CODESYS draws them: red and filled when on, a ring when off.
-fn paint_breakpoint(
+pub(crate) fn paint_breakpoint(
     painter: &Painter,
     center: egui::Pos2,
     radius: f32,
@@ -177,7 +177,7 @@ fn paint_breakpoint(
 }
 
 /// The arrow that points at the halted statement: filled for the halt, hollow for a caller.
-fn paint_halt_arrow(
+pub(crate) fn paint_halt_arrow(
     painter: &Painter,
     center: egui::Pos2,
     radius: f32,

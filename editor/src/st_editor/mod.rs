@@ -26,6 +26,7 @@ use std::ops::Range;
 
 pub use buffer::TextBuffer;
 pub use debug_marks::{BreakpointLook, BreakpointMark, StDebugMarks};
+pub(crate) use debug_marks::{paint_breakpoint, paint_halt_arrow};
 pub use highlight::Highlight;
 pub use texts::EditorTexts;
 pub use types::{

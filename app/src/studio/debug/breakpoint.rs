@@ -2,20 +2,51 @@
 
 use serde::{Deserialize, Serialize};
 
-/// A statement of a Structured Text body: the body's file in the project (as `rivet check` and
-/// the image's line table name it, `application/Main.st`) and the statement's line.
+use super::graphical_place::GraphicalPlace;
+
+/// Where a breakpoint is: a statement of a Structured Text body (the body's file in the
+/// project, as `rivet check` and the image's line table name it, `application/Main.st`, and
+/// the statement's line), or a network or element of a graphical body (its `.pou.toml` file
+/// and [`GraphicalPlace`], with line 0).
 #[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
 pub struct BreakpointPlace {
     /// The body's file, relative to the project folder, with `/` between folders.
     pub file: String,
-    /// The statement's line, counted from 1.
+    /// The statement's line, counted from 1; 0 in a graphical body.
     pub line: u32,
+    /// The network or element of a graphical body (LD, FBD, CFC, SFC); `None` for Structured
+    /// Text. Absent from the settings of a text breakpoint, so those saved before graphical
+    /// breakpoints existed still load.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub graphical: Option<GraphicalPlace>,
 }
 
 impl BreakpointPlace {
-    /// The place as the command line writes it, `FILE:LINE`.
+    /// The statement on `line` of the Structured Text body in `file`.
+    pub fn text(file: impl Into<String>, line: u32) -> Self {
+        Self {
+            file: file.into(),
+            line,
+            graphical: None,
+        }
+    }
+
+    /// The network or element `place` of the graphical body in `file` (its `.pou.toml`).
+    pub fn graphical(file: impl Into<String>, place: GraphicalPlace) -> Self {
+        Self {
+            file: file.into(),
+            line: 0,
+            graphical: Some(place),
+        }
+    }
+
+    /// The place as the command line writes it, `FILE:LINE` or, in a graphical body,
+    /// `FILE:POU:NETWORK[:ELEMENT]`.
     pub fn label(&self) -> String {
-        format!("{}:{}", self.file, self.line)
+        match &self.graphical {
+            None => format!("{}:{}", self.file, self.line),
+            Some(place) => format!("{}:{}", self.file, place.command_line()),
+        }
     }
 }
 
@@ -77,10 +108,7 @@ pub struct Breakpoint {
 
 impl Default for Breakpoint {
     fn default() -> Self {
-        Self::at(BreakpointPlace {
-            file: String::new(),
-            line: 1,
-        })
+        Self::at(BreakpointPlace::text(String::new(), 1))
     }
 }
 
@@ -127,10 +155,7 @@ mod tests {
 
     #[test]
     fn the_look_follows_enabled_then_hit_count_then_condition() {
-        let mut breakpoint = Breakpoint::at(BreakpointPlace {
-            file: "application/Main.st".to_owned(),
-            line: 3,
-        });
+        let mut breakpoint = Breakpoint::at(BreakpointPlace::text("application/Main.st", 3));
         assert_eq!(breakpoint.look(), editor::BreakpointLook::Enabled);
         breakpoint.condition = "iCount > 100".to_owned();
         assert_eq!(breakpoint.look(), editor::BreakpointLook::Conditional);
@@ -139,5 +164,36 @@ mod tests {
         breakpoint.enabled = false;
         assert_eq!(breakpoint.look(), editor::BreakpointLook::Disabled);
         assert_eq!(breakpoint.place.label(), "application/Main.st:3");
+    }
+
+    #[test]
+    fn text_breakpoints_saved_before_graphical_ones_existed_still_load() {
+        let saved = r#"{"place":{"file":"application/Main.st","line":3},"enabled":false}"#;
+        let breakpoint: Breakpoint = serde_json::from_str(saved).unwrap_or_default();
+        assert_eq!(
+            breakpoint.place,
+            BreakpointPlace::text("application/Main.st", 3)
+        );
+        assert!(!breakpoint.enabled);
+        // A text breakpoint is saved as before; a graphical one round-trips with its element.
+        let text = serde_json::to_string(&breakpoint).unwrap_or_default();
+        assert!(!text.contains("graphical"), "{text}");
+        let graphical = Breakpoint::at(BreakpointPlace::graphical(
+            "application/Interlock.pou.toml",
+            GraphicalPlace {
+                body: "Interlock".to_owned(),
+                network: 1,
+                element: Some(7),
+            },
+        ));
+        let text = serde_json::to_string(&graphical).unwrap_or_default();
+        assert_eq!(
+            serde_json::from_str::<Breakpoint>(&text).ok(),
+            Some(graphical.clone())
+        );
+        assert_eq!(
+            graphical.place.label(),
+            "application/Interlock.pou.toml:Interlock:2:7"
+        );
     }
 }

@@ -3,6 +3,8 @@
 use serde::{Deserialize, Serialize};
 
 use super::breakpoint::{Breakpoint, BreakpointPlace};
+use crate::debug_bodies::GraphicalBodies;
+use crate::debug_places::Statement;
 
 /// The breakpoints of one project, in the order they were set; saved with the settings.
 #[derive(Clone, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
@@ -105,15 +107,119 @@ pub fn statement_line(statement_lines: &[u32], line: u32) -> Option<u32> {
     statement_lines.get(at).copied()
 }
 
+/// The statement a breakpoint's place names in `image`: for a Structured Text place the first
+/// statement starting on its line, for a graphical place the first statement of its network or
+/// element (through `bodies`, the project's lowered graphical bodies). `None` when no statement
+/// is there (an operator box has none of its own, an empty network none at all).
+pub fn statement_of_place(
+    place: &BreakpointPlace,
+    image: &program_image::ProgramImage,
+    bodies: &GraphicalBodies,
+) -> Option<Statement> {
+    match &place.graphical {
+        Some(graphical) => bodies.statement_of(
+            image,
+            &place.file,
+            &graphical.body,
+            graphical.network,
+            graphical.element,
+        ),
+        None => {
+            let file = image
+                .sources
+                .iter()
+                .position(|source| *source == place.file)?;
+            crate::debug_bodies::statement_on_line(image, file as u32, place.line)
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
+    #![allow(clippy::unwrap_used, clippy::expect_used)] // A panic is a failed test.
+
+    use super::super::graphical_place::{GraphicalPlace, has_statement, place_at_line};
     use super::*;
+    use program_image::ProgramImage;
+
+    fn interlock() -> (project_model::Project, ProgramImage, GraphicalBodies) {
+        let project = project_model::load_project(&assets::example_project_dir())
+            .unwrap()
+            .project;
+        let image = compiler::compile_project(&project).unwrap();
+        let bodies = GraphicalBodies::of_project(&project);
+        (project, image, bodies)
+    }
+
+    #[test]
+    fn a_graphical_place_names_the_statement_of_its_network_and_back() {
+        let (project, image, bodies) = interlock();
+        let network = GraphicalPlace {
+            body: "Interlock".to_owned(),
+            network: 1,
+            element: None,
+        };
+        let file = "application/Interlock.pou.toml";
+        let place = BreakpointPlace::graphical(file, network.clone());
+        let statement = statement_of_place(&place, &image, &bodies).unwrap();
+        assert_eq!(statement.pou_name, "Interlock");
+        // The statement's line leads back to an element of the same network.
+        let lowered = compiler::lower::lower_project(&project).bodies;
+        let body = lowered
+            .iter()
+            .find(|body| body.text_file.to_string_lossy() == statement.file)
+            .unwrap();
+        let at = place_at_line(body, statement.line).unwrap();
+        assert_eq!(at.network, 1);
+        let element = at.element.unwrap();
+        assert!(has_statement(body, at));
+        // That element is a place of its own naming the same statement.
+        let element_place = BreakpointPlace::graphical(
+            file,
+            GraphicalPlace {
+                element: Some(element.0),
+                ..network.clone()
+            },
+        );
+        assert_eq!(
+            statement_of_place(&element_place, &image, &bodies),
+            Some(statement)
+        );
+        // A network that is not there names nothing.
+        let missing = BreakpointPlace::graphical(
+            file,
+            GraphicalPlace {
+                network: 99,
+                ..network
+            },
+        );
+        assert_eq!(statement_of_place(&missing, &image, &bodies), None);
+        assert!(!has_statement(
+            body,
+            editor::BodyPlace {
+                network: 99,
+                element: None
+            }
+        ));
+    }
+
+    #[test]
+    fn a_text_place_names_the_statement_on_its_line() {
+        let (_, image, bodies) = interlock();
+        let (file, line) = image
+            .pous
+            .iter()
+            .flat_map(|pou| pou.lines.iter())
+            .map(|entry| (image.sources[entry.file as usize].clone(), entry.line))
+            .find(|(file, _)| file.ends_with(".st"))
+            .unwrap();
+        let place = BreakpointPlace::text(file.clone(), line);
+        let statement = statement_of_place(&place, &image, &bodies).unwrap();
+        assert_eq!((statement.file, statement.line), (file, line));
+    }
 
     fn place(line: u32) -> BreakpointPlace {
-        BreakpointPlace {
-            file: "application/Main.st".to_owned(),
-            line,
-        }
+        BreakpointPlace::text("application/Main.st", line)
     }
 
     #[test]
@@ -165,7 +271,7 @@ mod tests {
                 .map(|&(index, file, line)| program_image::LineEntry { index, file, line })
                 .collect(),
         };
-        let image = program_image::ProgramImage {
+        let image = ProgramImage {
             sources: vec!["application/A.st".to_owned(), "application/B.st".to_owned()],
             pous: vec![
                 pou("B", &[(0, 1, 4), (5, 1, 4)]),

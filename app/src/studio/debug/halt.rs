@@ -2,6 +2,7 @@
 //! the frame the user looks at, and the statements that ran in the last cycle.
 
 use super::breakpoints::Breakpoints;
+use super::graphical_place::place_at_line;
 
 /// One frame of a halted task's call stack, innermost first (`docs/debugging.md` §4).
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -120,7 +121,9 @@ impl DebugState {
         editor::StDebugMarks {
             breakpoints: breakpoints
                 .in_file(file)
-                .filter(|breakpoint| breakpoint.place.line > 0)
+                .filter(|breakpoint| {
+                    breakpoint.place.graphical.is_none() && breakpoint.place.line > 0
+                })
                 .map(|breakpoint| editor::BreakpointMark {
                     line: breakpoint.place.line as usize - 1,
                     look: breakpoint.look(),
@@ -143,8 +146,65 @@ impl DebugState {
     }
 }
 
+impl DebugState {
+    /// The marks of the graphical editor of the body named `body` (`Interlock`, `FB.Reset`)
+    /// in `file` (its `.pou.toml`): its breakpoints, and through `lowered` (the body's lowered
+    /// text, which the image's lines count) the shown frame's element and, while flow control
+    /// is on, the elements that ran. Without `lowered` only the breakpoints are marked.
+    pub fn body_marks_for(
+        &self,
+        file: &str,
+        body: &str,
+        lowered: Option<&compiler::lower::LoweredBody>,
+        breakpoints: &Breakpoints,
+    ) -> editor::BodyDebugMarks {
+        let breakpoints = breakpoints
+            .in_file(file)
+            .filter_map(|breakpoint| {
+                let place = breakpoint.place.graphical.as_ref()?;
+                place
+                    .body
+                    .eq_ignore_ascii_case(body)
+                    .then(|| editor::BodyBreakpointMark {
+                        place: place.in_editor(),
+                        look: breakpoint.look(),
+                    })
+            })
+            .collect();
+        let Some(lowered) = lowered else {
+            return editor::BodyDebugMarks {
+                breakpoints,
+                ..Default::default()
+            };
+        };
+        let text_file = lowered.text_file.to_string_lossy().replace('\\', "/");
+        let halt = self
+            .shown_frame()
+            .filter(|frame| frame.file == text_file)
+            .and_then(|frame| place_at_line(lowered, frame.line));
+        let flow = if self.flow_control {
+            self.flow
+                .iter()
+                .filter(|(flow_file, _)| *flow_file == text_file)
+                .flat_map(|(_, lines)| lines.iter())
+                .filter_map(|line| place_at_line(lowered, *line))
+                .collect()
+        } else {
+            Vec::new()
+        };
+        editor::BodyDebugMarks {
+            breakpoints,
+            halt,
+            halt_is_caller: halt.is_some() && self.shown().is_some_and(|(_, index)| index > 0),
+            flow,
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
+    #![allow(clippy::expect_used)] // A panic is a failed test.
+
     use super::super::breakpoint::BreakpointPlace;
     use super::*;
 
@@ -205,10 +265,7 @@ mod tests {
     #[test]
     fn breakpoints_and_flow_lines_are_marked_in_their_file_only_with_flow_control_on() {
         let mut breakpoints = Breakpoints::default();
-        breakpoints.toggle(BreakpointPlace {
-            file: "application/Main.st".to_owned(),
-            line: 3,
-        });
+        breakpoints.toggle(BreakpointPlace::text("application/Main.st", 3));
         let mut state = DebugState::default();
         state.set_flow(vec![("application/Main.st".to_owned(), vec![1, 3])]);
         let marks = state.marks_for("application/Main.st", &breakpoints);
@@ -220,5 +277,56 @@ mod tests {
         assert_eq!(marks.flow_lines, vec![0, 2]);
         let marks = state.marks_for("application/Other.st", &breakpoints);
         assert!(marks.breakpoints.is_empty() && marks.flow_lines.is_empty());
+    }
+
+    #[test]
+    fn a_graphical_body_marks_its_breakpoints_and_the_element_of_the_halted_line() {
+        let project = project_model::load_project(&assets::example_project_dir())
+            .map(|loaded| loaded.project)
+            .unwrap_or_default();
+        let lowered = compiler::lower::lower_project(&project).bodies;
+        let body = lowered
+            .iter()
+            .find(|body| body.pou == "Interlock")
+            .expect("the example has the LD program Interlock");
+        let text_file = body.text_file.to_string_lossy().into_owned();
+        // The first line of the lowered text with an element: where a halt would be.
+        let (line, place) = (1..=body.text.lines().count() as u32)
+            .find_map(|line| Some((line, place_at_line(body, line)?)))
+            .expect("a lowered LD body has element lines");
+        let file = "application/Interlock.pou.toml";
+        let mut breakpoints = Breakpoints::default();
+        breakpoints.toggle(BreakpointPlace::graphical(
+            file,
+            super::super::graphical_place::GraphicalPlace {
+                body: "Interlock".to_owned(),
+                network: 0,
+                element: None,
+            },
+        ));
+        let mut state = DebugState::default();
+        state.set_halted(vec![HaltedTask {
+            task: "Main".to_owned(),
+            beneath: None,
+            frames: vec![frame("Interlock", &text_file, line)],
+        }]);
+        state.set_flow(vec![(text_file.clone(), vec![line])]);
+        let marks = state.body_marks_for(file, "Interlock", Some(body), &breakpoints);
+        assert_eq!(marks.breakpoints.len(), 1);
+        assert_eq!(marks.breakpoints[0].place.network, 0);
+        assert_eq!(marks.halt, Some(place));
+        assert!(!marks.halt_is_caller);
+        assert!(marks.flow.is_empty(), "flow control is off");
+        state.flow_control = true;
+        let marks = state.body_marks_for(file, "Interlock", Some(body), &breakpoints);
+        assert_eq!(marks.flow, vec![place]);
+        // Another body has none of these; the text editor does not show graphical breakpoints.
+        let other = state.body_marks_for(file, "Other", Some(body), &breakpoints);
+        assert!(other.breakpoints.is_empty());
+        assert!(state.marks_for(file, &breakpoints).breakpoints.is_empty());
+        // Without the lowering only the breakpoints are known.
+        let offline = state.body_marks_for(file, "Interlock", None, &breakpoints);
+        assert_eq!(offline.breakpoints.len(), 1);
+        assert_eq!(offline.halt, None);
     }
 }

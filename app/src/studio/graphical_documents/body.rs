@@ -66,6 +66,14 @@ pub(crate) fn graphical_body_ui(
         .map(|findings| element_diagnostics(findings, target))
         .unwrap_or_default();
 
+    let (file, marks) = super::body_marks(
+        &view,
+        &mut documents.lowering,
+        project,
+        revision,
+        &shown.pou.name,
+        target,
+    );
     // While online the lowering says where each element's value is read and which element a
     // fault's line belongs to.
     let mut paths = Vec::new();
@@ -119,6 +127,7 @@ pub(crate) fn graphical_body_ui(
     document.set_read_only(view.online.is_logged_in());
     document.set_diagnostics(markers);
     document.editor.set_online(online);
+    document.editor.set_debug_marks(marks);
     if let Some((network, element)) = shown.reveal {
         match element {
             Some(id) => document.editor.reveal(id),
@@ -132,6 +141,14 @@ pub(crate) fn graphical_body_ui(
     };
     let label = Text::ImplementationOf.fill(view.language, &[("name", shown.label)]);
     let output = document.editor.show(ui, &label, &services);
+    if let Some(place) = super::focused_place(
+        output.response.has_focus(),
+        document.editor.breakpoint_place(),
+        target,
+        &file,
+    ) {
+        documents.focused_place = Some(place);
+    }
     if output.change.is_some() {
         // The model answers the change next frame, whether it takes it or refuses it.
         document.synced = None;
@@ -142,6 +159,7 @@ pub(crate) fn graphical_body_ui(
         declare_instance,
         prepared: prepared_operand,
         refusal,
+        toggle_breakpoint,
         ..
     } = output;
     if let Some(refusal) = refusal {
@@ -151,6 +169,17 @@ pub(crate) fn graphical_body_ui(
         && let Some(path) = operand_path(&operand.operand)
     {
         prepare_value(prepared, path, &operand.value);
+    }
+    if let Some(place) = toggle_breakpoint {
+        super::toggle_breakpoint(
+            commands,
+            target,
+            &file,
+            place,
+            &mut documents.lowering,
+            (project, revision),
+            language,
+        );
     }
     if let Some(change) = change {
         let edit = Edit::SpliceNetworks {

@@ -102,6 +102,14 @@ pub(crate) fn cfc_body_ui(
             message: marker.message,
         })
         .collect();
+    let (file, marks) = super::body_marks(
+        &view,
+        &mut documents.lowering,
+        project,
+        revision,
+        &shown.pou.name,
+        target,
+    );
 
     let mut paths = Vec::new();
     let mut online = None;
@@ -129,6 +137,7 @@ pub(crate) fn cfc_body_ui(
     }
 
     let document = documents.charts.cfc(target, chart, revision);
+    document.editor.set_debug_marks(marks);
     document.set_language(view.language);
     document.sync(chart, revision);
     document.set_read_only(view.online.is_logged_in());
@@ -147,6 +156,14 @@ pub(crate) fn cfc_body_ui(
     };
     let label = Text::ImplementationOf.fill(view.language, &[("name", shown.label)]);
     let output = document.editor.show(ui, &label, &services);
+    if let Some(place) = super::focused_place(
+        output.response.has_focus(),
+        document.editor.breakpoint_place(),
+        target,
+        &file,
+    ) {
+        documents.focused_place = Some(place);
+    }
     // The editor's own toggle (its context menu) is the studio's setting for every chart.
     if documents.show_execution_order.is_some() {
         documents.show_execution_order = Some(document.editor.shows_execution_order());
@@ -161,6 +178,7 @@ pub(crate) fn cfc_body_ui(
         declare_instance,
         prepared: prepared_operand,
         refusal,
+        toggle_breakpoint,
         ..
     } = output;
     if let Some(refusal) = refusal {
@@ -172,6 +190,17 @@ pub(crate) fn cfc_body_ui(
             .and_then(|probes| probes.operand_path(&operand.operand))
     {
         prepare_value(prepared, path, &operand.value);
+    }
+    if let Some(place) = toggle_breakpoint {
+        super::toggle_breakpoint(
+            commands,
+            target,
+            &file,
+            place,
+            &mut documents.lowering,
+            (project, revision),
+            language,
+        );
     }
     if let Some(change) = change {
         let edit = Edit::ReplaceChart {
@@ -235,7 +264,16 @@ pub(crate) fn sfc_body_ui(
         instance_path = Some(readings.instance);
     }
 
+    let (file, marks) = super::body_marks(
+        &view,
+        &mut documents.lowering,
+        project,
+        revision,
+        &shown.pou.name,
+        target,
+    );
     let document = documents.charts.sfc(target, chart, revision);
+    document.editor.set_debug_marks(marks);
     document.set_language(view.language);
     let pou = shown.pou;
     document.sync(
@@ -267,6 +305,14 @@ pub(crate) fn sfc_body_ui(
     };
     let label = Text::ImplementationOf.fill(view.language, &[("name", shown.label)]);
     let output = document.editor.show(ui, &label, &services);
+    if let Some(place) = super::focused_place(
+        output.response.has_focus(),
+        document.editor.breakpoint_place(),
+        target,
+        &file,
+    ) {
+        documents.focused_place = Some(place);
+    }
     if output.change.is_some() {
         document.synced = None;
     }
@@ -275,8 +321,20 @@ pub(crate) fn sfc_body_ui(
         change,
         online: online_command,
         refusal,
+        toggle_breakpoint,
         ..
     } = output;
+    if let Some(place) = toggle_breakpoint {
+        super::toggle_breakpoint(
+            commands,
+            target,
+            &file,
+            place,
+            &mut documents.lowering,
+            (project, revision),
+            language,
+        );
+    }
     if let Some(refusal) = refusal {
         commands.error(sfc_edit_error_text(&refusal, language));
     }

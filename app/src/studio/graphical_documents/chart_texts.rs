@@ -52,6 +52,9 @@ pub(super) fn cfc_texts(language: Language) -> CfcTexts {
         order_field: get(ChartText::OrderField),
         prepared_value: get(ChartText::PreparedValue),
         zoom: get(ChartText::CfcZoom),
+        toggle_breakpoint: crate::studio::i18n::DebugText::ToggleBreakpoint
+            .get(language)
+            .to_owned(),
     }
 }
 
@@ -98,6 +101,9 @@ pub(super) fn sfc_texts(language: Language) -> SfcTexts {
         condition_field: get(ChartText::ConditionField),
         jump_target_field: get(ChartText::JumpTargetField),
         zoom: get(ChartText::SfcZoom),
+        toggle_breakpoint: crate::studio::i18n::DebugText::ToggleBreakpoint
+            .get(language)
+            .to_owned(),
         refusal: Arc::new(move |error| sfc_edit_error_text(error, language)),
     }
 }

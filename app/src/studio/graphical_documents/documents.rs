@@ -76,6 +76,10 @@ pub struct GraphicalDocuments {
     /// Whether the CFC editors show the execution order; `None` until the user chose, when each
     /// editor shows its default.
     pub(super) show_execution_order: Option<bool>,
+    /// The network, element, step or transition selected in the graphical editor that has the
+    /// keyboard focus this frame, taken by the text documents as the place the Debug menu's
+    /// "Toggle breakpoint" and "Run to cursor" act on.
+    pub(crate) focused_place: Option<crate::studio::debug::BreakpointPlace>,
 }
 
 /// The lowered LD/FBD bodies of one project revision, for their probes and the origins of
@@ -90,6 +94,21 @@ pub(super) struct LoweringCache {
 }
 
 impl LoweringCache {
+    /// Every lowered body of `project` at `revision`, lowering the project again when it
+    /// changed.
+    pub(super) fn bodies(&mut self, project: &Project, revision: u64) -> &[LoweredBody] {
+        if self
+            .lowered
+            .as_ref()
+            .is_none_or(|(seen, _)| *seen != revision)
+        {
+            let bodies = compiler::lower::lower_project(project).bodies;
+            self.lowered = Some((revision, bodies));
+            self.paths.clear();
+        }
+        self.lowered.as_ref().map_or(&[], |(_, bodies)| bodies)
+    }
+
     /// The lowered body `target` of `project` at `revision` and its probes' paths for the
     /// instance at `instance`, lowering the project again when it changed.
     pub(super) fn body(
@@ -154,6 +173,35 @@ pub(super) fn document<'d>(
 }
 
 impl GraphicalDocuments {
+    /// The graphical body whose lowered text is `file` (as the image's sources name it) and
+    /// the network and element of its `line` (from 1): where a halt or a frame of the call
+    /// stack is shown. `None` for a Structured Text body.
+    pub(crate) fn place_of_line(
+        &mut self,
+        project: &Project,
+        revision: u64,
+        file: &str,
+        line: u32,
+    ) -> Option<(TextTarget, editor::BodyPlace)> {
+        let body = self
+            .lowering
+            .bodies(project, revision)
+            .iter()
+            .find(|body| body.text_file.to_string_lossy().replace('\\', "/") == file)?;
+        let place = crate::studio::debug::place_at_line(body, line)?;
+        Some((body.target.clone(), place))
+    }
+
+    /// The graphical bodies of `project` at `revision` with the element of each line of their
+    /// lowered text, from the lowering kept for the editors.
+    pub(crate) fn graphical_bodies(
+        &mut self,
+        project: &Project,
+        revision: u64,
+    ) -> crate::debug_bodies::GraphicalBodies {
+        crate::debug_bodies::GraphicalBodies::of_lowered(self.lowering.bodies(project, revision))
+    }
+
     /// The diagram editor of `target`, if its document was drawn.
     pub fn editor(&self, target: &TextTarget) -> Option<&DiagramEditor> {
         self.documents.get(target).map(|document| &document.editor)

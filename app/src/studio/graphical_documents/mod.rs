@@ -6,6 +6,7 @@
 //! `Edit::ReplaceChart` undo step.
 
 mod body;
+mod breakpoints;
 mod chart_body;
 mod chart_documents;
 mod chart_online;
@@ -21,3 +22,5 @@ mod texts;
 pub(crate) use body::{GraphicalShown, graphical_body_ui};
 pub(crate) use chart_body::{ChartShown, cfc_body_ui, sfc_body_ui};
 pub use documents::GraphicalDocuments;
+
+use breakpoints::{body_marks, focused_place, toggle_breakpoint};

@@ -38,6 +38,9 @@ pub(super) fn diagram_texts(language: Language) -> DiagramTexts {
         blocks: get(DiagramText::Blocks),
         prepared_value: get(DiagramText::PreparedValue),
         zoom: get(DiagramText::Zoom),
+        toggle_breakpoint: crate::studio::i18n::DebugText::ToggleBreakpoint
+            .get(language)
+            .to_owned(),
     }
 }
 

@@ -43,6 +43,11 @@ pub enum DebugText {
     WaitingBeneath,
     Halted,
     NoStatementAfter,
+    NoElementStatement,
+    GraphicalNetwork,
+    GraphicalElement,
+    GraphicalStep,
+    GraphicalTransition,
     LogInToDebug,
     NotHalted,
     TargetRefusesDebugging,
@@ -102,6 +107,19 @@ impl DebugText {
                 "no statement at or after line {line} of {file}",
                 "{file} 第 {line} 行及其后没有语句",
             ),
+            Self::NoElementStatement => (
+                "{place} has no statement of its own (an operator box such as ADD is computed in the statement of what it feeds, an empty network has none): put the breakpoint on the network, a coil, a box or an assignment",
+                "{place} 没有自己的语句（ADD 等运算框在其所连接元素的语句中计算，空网络没有语句）：请将断点设在网络、线圈、功能块或赋值上",
+            ),
+            Self::GraphicalNetwork => ("{body}: network {network}", "{body}：网络 {network}"),
+            Self::GraphicalElement => (
+                "{body}: network {network}, element {element}",
+                "{body}：网络 {network}，元素 {element}",
+            ),
+            Self::GraphicalStep => ("{body}: step {name}", "{body}：步 {name}"),
+            Self::GraphicalTransition => {
+                ("{body}: transition {condition}", "{body}：转换 {condition}")
+            }
             Self::LogInToDebug => ("log in to debug (Alt+F8)", "请先登录再调试 (Alt+F8)"),
             Self::NotHalted => ("no task is halted", "没有暂停的任务"),
             Self::BreakpointNotSet => (
@@ -130,8 +148,8 @@ impl DebugText {
                 "目标设备不提供调试功能",
             ),
             Self::NoCaret => (
-                "put the caret on a statement of a Structured Text body first",
-                "请先将光标放在结构化文本实现的语句上",
+                "put the caret on a statement of a Structured Text body, or select a network, element, step or transition of a graphical body, first",
+                "请先将光标放在结构化文本实现的语句上，或在图形实现中选择网络、元素、步或转换",
             ),
             Self::SummaryCondition => ("when {condition}", "当 {condition}"),
             Self::SummaryHits => ("hit count {mode} {target}", "命中次数{mode} {target}"),

@@ -4,7 +4,7 @@
 use egui::{RichText, Ui};
 
 use crate::studio::command::{Command, Commands};
-use crate::studio::debug::{Breakpoint, HitMode};
+use crate::studio::debug::{Breakpoint, HitMode, body_target};
 use crate::studio::i18n::{DebugText, Language};
 use crate::studio::view::StudioView;
 
@@ -51,7 +51,7 @@ fn breakpoint_row_ui(
     breakpoint: &Breakpoint,
 ) {
     let language = view.language;
-    let place = breakpoint.place.label();
+    let place = place_text(language, view, breakpoint);
     ui.horizontal(|ui| {
         let mut enabled = breakpoint.enabled;
         if ui.checkbox(&mut enabled, place.as_str()).changed() {
@@ -65,13 +65,7 @@ fn breakpoint_row_ui(
             ui.label(RichText::new(summary).weak());
         }
         if ui.small_button(DebugText::GoTo.get(language)).clicked() {
-            let pou = pou_of_file(&breakpoint.place.file);
-            commands.push(source_place(
-                view,
-                &pou,
-                &breakpoint.place.file,
-                breakpoint.place.line,
-            ));
+            commands.push(go_to(view, breakpoint));
         }
         if ui
             .small_button(DebugText::EditBreakpoint.get(language))
@@ -83,6 +77,85 @@ fn breakpoint_row_ui(
             commands.push(Command::RemoveBreakpoint(breakpoint.place.clone()));
         }
     });
+}
+
+/// The place in words: `FILE:LINE` in text, `Interlock: network 2, element 7` in LD, FBD or
+/// CFC, `PackCycle: step Fill` and `PackCycle: transition bFull` in an SFC chart.
+fn place_text(language: Language, view: StudioView<'_>, breakpoint: &Breakpoint) -> String {
+    let Some(graphical) = &breakpoint.place.graphical else {
+        return breakpoint.place.label();
+    };
+    let body = &graphical.body;
+    let chart_node = view
+        .project()
+        .zip(graphical.element)
+        .and_then(|(project, id)| match project.application.object(body) {
+            Some(project_model::Object::Pou(pou)) => match &pou.body {
+                project_model::Body::Sfc { chart } => {
+                    project_model::sfc_edit::find_node(chart, project_model::ElementId(id)).cloned()
+                }
+                _ => None,
+            },
+            _ => None,
+        });
+    match chart_node {
+        Some(project_model::SfcNode::Step(step)) => {
+            return DebugText::GraphicalStep
+                .fill(language, &[("body", body), ("name", &step.name)]);
+        }
+        Some(project_model::SfcNode::Transition(transition)) => {
+            return DebugText::GraphicalTransition.fill(
+                language,
+                &[("body", body), ("condition", &transition.condition)],
+            );
+        }
+        _ => {}
+    }
+    let network = (graphical.network + 1).to_string();
+    match graphical.element {
+        Some(element) => DebugText::GraphicalElement.fill(
+            language,
+            &[
+                ("body", &graphical.body),
+                ("network", &network),
+                ("element", &element.to_string()),
+            ],
+        ),
+        None => DebugText::GraphicalNetwork.fill(
+            language,
+            &[("body", &graphical.body), ("network", &network)],
+        ),
+    }
+}
+
+/// Opens the breakpoint's body at its line, network or element.
+fn go_to(view: StudioView<'_>, breakpoint: &Breakpoint) -> Command {
+    let place = &breakpoint.place;
+    let Some(graphical) = &place.graphical else {
+        let pou = pou_of_file(&place.file);
+        return source_place(view, &pou, &place.file, place.line);
+    };
+    let pou = graphical
+        .body
+        .split('.')
+        .next()
+        .unwrap_or_default()
+        .to_owned();
+    let node = crate::studio::tree_node::TreeNode::Object(pou);
+    match view
+        .project()
+        .and_then(|project| body_target(project, &graphical.body))
+    {
+        Some(target) => Command::Reveal(
+            node,
+            crate::studio::reveal::Reveal::Element {
+                target,
+                network: graphical.network,
+                element: graphical.element.map(project_model::ElementId),
+            },
+        ),
+        None => Command::Open(node),
+    }
 }
 
 /// The condition and hit count in words, empty for a plain breakpoint.
@@ -216,10 +289,7 @@ mod tests {
 
     #[test]
     fn the_summary_names_the_condition_the_hit_count_and_the_filters() {
-        let mut breakpoint = Breakpoint::at(BreakpointPlace {
-            file: "application/Main.st".to_owned(),
-            line: 2,
-        });
+        let mut breakpoint = Breakpoint::at(BreakpointPlace::text("application/Main.st", 2));
         assert_eq!(summary(Language::English, &breakpoint), "");
         breakpoint.condition = "x > 1".to_owned();
         breakpoint.hit_mode = HitMode::AtLeast;

@@ -5,6 +5,7 @@ use super::state::Studio;
 use crate::studio::command::Command;
 use crate::studio::debug::{
     BreakpointPlace, Breakpoints, DebugCommand, DebugTarget as _, statement_line, statement_lines,
+    statement_of_place,
 };
 use crate::studio::i18n::DebugText;
 use crate::studio::settings::Settings;
@@ -20,6 +21,10 @@ impl Studio {
     /// there or next by the last build's line table.
     pub(super) fn toggle_breakpoint(&mut self, place: BreakpointPlace) {
         let language = self.shared.settings.language;
+        if place.graphical.is_some() {
+            self.toggle_graphical_breakpoint(place);
+            return;
+        }
         let lines = self
             .shared
             .last_build
@@ -36,6 +41,42 @@ impl Studio {
             return;
         };
         let place = BreakpointPlace { line, ..place };
+        if let Some(breakpoints) = self.breakpoints_mut() {
+            breakpoints.toggle(place);
+        }
+        self.sync_breakpoints();
+    }
+
+    /// Sets or clears the breakpoint of a network or element of a graphical body. A new one is
+    /// refused, with the reason, when the last build is of the project as it is and no
+    /// statement of the image comes from the place (the editor checked the lowering already).
+    fn toggle_graphical_breakpoint(&mut self, place: BreakpointPlace) {
+        let exists = self
+            .breakpoints_mut()
+            .is_some_and(|breakpoints| breakpoints.at(&place).is_some());
+        if !exists
+            && let Some(session) = self.shared.session.as_ref()
+            && let Some(build) = self.shared.last_build.as_ref()
+            && build.revision == session.history.revision()
+            && let Some(image) = build.image.as_ref()
+        {
+            let bodies = self
+                .panes
+                .texts
+                .graphical
+                .graphical_bodies(&session.project, build.revision);
+            if statement_of_place(&place, &image.program, &bodies).is_none() {
+                let language = self.shared.settings.language;
+                let what = place
+                    .graphical
+                    .as_ref()
+                    .map(|graphical| graphical.command_line())
+                    .unwrap_or_default();
+                self.commands
+                    .error(DebugText::NoElementStatement.fill(language, &[("place", &what)]));
+                return;
+            }
+        }
         if let Some(breakpoints) = self.breakpoints_mut() {
             breakpoints.toggle(place);
         }
@@ -125,6 +166,25 @@ impl Studio {
     pub(super) fn show_frame(&mut self, task: &str, frame: usize) -> Option<Command> {
         self.shared.debug.show_frame(task, frame);
         let frame = self.shared.debug.shown_frame()?.clone();
+        if let Some(session) = self.shared.session.as_ref()
+            && let Some((target, place)) = self.panes.texts.graphical.place_of_line(
+                &session.project,
+                session.history.revision(),
+                &frame.file,
+                frame.line,
+            )
+        {
+            // A graphical body: its editor selects the element the halt or call is at.
+            let pou = frame.pou.split('.').next().unwrap_or_default().to_owned();
+            return Some(Command::Reveal(
+                crate::studio::tree_node::TreeNode::Object(pou),
+                crate::studio::reveal::Reveal::Element {
+                    target,
+                    network: place.network,
+                    element: place.element,
+                },
+            ));
+        }
         Some(crate::studio::panes::source_place(
             self.shared.view(),
             &frame.pou,

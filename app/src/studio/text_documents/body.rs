@@ -133,6 +133,9 @@ pub(super) fn body_ui(
             // An ST body has its text, drawn below.
             Body::St { .. } => {}
         }
+        if let Some(place) = texts.graphical.focused_place.take() {
+            texts.last_caret = Some(place);
+        }
         return;
     };
     if texts.live.update(project, &pou.name, revision) {
@@ -225,10 +228,7 @@ pub(super) fn body_ui(
         }
     }
     if let Some(file) = file {
-        let caret_place = |line: usize| BreakpointPlace {
-            file: file.clone(),
-            line: line as u32 + 1,
-        };
+        let caret_place = |line: usize| BreakpointPlace::text(file.clone(), line as u32 + 1);
         if output.response.has_focus() {
             texts.last_caret = Some(caret_place(caret_line));
         }

@@ -56,8 +56,9 @@ pub struct TextDocuments {
     pub inline: InlineValues,
     /// The diagram editors of the LD and FBD bodies.
     pub graphical: GraphicalDocuments,
-    /// The statement line at the caret of the Structured Text body edited last, where the
-    /// Debug menu's "Toggle breakpoint" and "Run to cursor" act; forgotten with the editors.
+    /// The statement line at the caret of the Structured Text body edited last, or the
+    /// selected network, element, step or transition of the graphical body used last, where
+    /// the Debug menu's "Toggle breakpoint" and "Run to cursor" act; forgotten with the editors.
     pub last_caret: Option<crate::studio::debug::BreakpointPlace>,
     /// The language the editors' own words are in.
     language: Language,
