@@ -57,7 +57,8 @@ impl Alarm {
             .spawn(move || {
                 if let Some(priority) = realtime_priority {
                     // The scheduler's thread asks with the same rights and reports a refusal.
-                    let _ = super::realtime::make_current_thread_realtime(priority.saturating_add(1));
+                    let _ =
+                        super::realtime::make_current_thread_realtime(priority.saturating_add(1));
                 }
                 watched.run();
             })

@@ -103,6 +103,9 @@ mod tests {
             reason: "Operation not permitted".to_owned(),
         };
         assert!(refused.to_string().contains("CAP_SYS_NICE"));
-        assert_eq!(Realtime::Fifo(40).to_string(), "real-time priority 40 (SCHED_FIFO)");
+        assert_eq!(
+            Realtime::Fifo(40).to_string(),
+            "real-time priority 40 (SCHED_FIFO)"
+        );
     }
 }

@@ -7,6 +7,8 @@ use program_image::ProgramImage;
 use project_model::Project;
 
 use super::breakpoint::{Breakpoint, BreakpointPlace, HitMode};
+use super::breakpoints::statement_of_place;
+use crate::debug_bodies::GraphicalBodies;
 use crate::debug_places::{PlaceError, Statement, instance_owner, statement_at};
 use crate::studio::i18n::{DebugText, Language};
 
@@ -85,12 +87,19 @@ impl BreakpointError {
 }
 
 /// The statement a breakpoint's place names in `image`: the one starting on its line, or the
-/// next one of the same file. The one place where a breakpoint's place becomes the target's
-/// `(pou, instruction)`, for setting it and for running to the cursor.
+/// next one of the same file; for a graphical place, the first statement of its network or
+/// element in the body `project` lowers. The one place where a breakpoint's place becomes the
+/// target's `(pou, instruction)`, for setting it and for running to the cursor.
 pub fn breakpoint_statement(
     image: &ProgramImage,
+    project: &Project,
     place: &BreakpointPlace,
 ) -> Result<Statement, PlaceError> {
+    if place.graphical.is_some() {
+        let bodies = GraphicalBodies::of_project(project);
+        return statement_of_place(place, image, &bodies)
+            .ok_or_else(|| PlaceError::NoElementStatement(place.label()));
+    }
     statement_at(image, &place.label())
 }
 
@@ -101,10 +110,11 @@ pub fn breakpoint_spec(
     breakpoint: &Breakpoint,
 ) -> Result<BreakpointSpec, BreakpointError> {
     let place = &breakpoint.place;
-    let statement = breakpoint_statement(image, place).map_err(|error| BreakpointError::Place {
-        place: place.clone(),
-        reason: error.to_string(),
-    })?;
+    let statement =
+        breakpoint_statement(image, project, place).map_err(|error| BreakpointError::Place {
+            place: place.clone(),
+            reason: error.to_string(),
+        })?;
     let instance = match breakpoint.instance.trim() {
         "" => 0,
         path => {

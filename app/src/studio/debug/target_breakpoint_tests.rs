@@ -16,16 +16,13 @@ fn example() -> (Project, ProgramImage) {
 }
 
 fn at(file: &str, line: u32) -> Breakpoint {
-    Breakpoint::at(BreakpointPlace {
-        file: format!("application/{file}"),
-        line,
-    })
+    Breakpoint::at(BreakpointPlace::text(format!("application/{file}"), line))
 }
 
 #[test]
 fn a_plain_breakpoint_on_a_comment_goes_to_the_next_statement_for_every_instance_and_task() {
     let (project, image) = example();
-    let statement = breakpoint_statement(&image, &at("Main.st", 1).place).unwrap();
+    let statement = breakpoint_statement(&image, &project, &at("Main.st", 1).place).unwrap();
     assert_eq!((statement.pou_name.as_str(), statement.line), ("Main", 2));
     let spec = breakpoint_spec(&image, &project, &at("Main.st", 1)).unwrap();
     assert_eq!(

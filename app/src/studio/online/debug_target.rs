@@ -76,7 +76,7 @@ impl DebugTarget for Online {
                 let Some(image) = &self.image else {
                     return false;
                 };
-                match breakpoint_statement(&image.program, &place) {
+                match breakpoint_statement(&image.program, &image.project, &place) {
                     Ok(statement) => self.on_shown_task(|task| SessionCommand::RunTo {
                         task,
                         pou: statement.pou,
