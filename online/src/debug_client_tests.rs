@@ -6,11 +6,8 @@
 use std::sync::{Arc, Mutex};
 
 use online_protocol::{
-    BreakpointInfo, DebugStatus, HaltReason, HitRule, Identity, PROTOCOL_VERSION, SessionState,
-    TargetState, TaskDebugState, TaskHalt,
+    BreakpointInfo, HaltReason, HitRule, SessionState, TaskDebugState, TaskHalt,
 };
-use tokio::io::{AsyncReadExt as _, AsyncWriteExt as _};
-use tokio::net::TcpListener;
 
 use super::*;
 
@@ -20,49 +17,13 @@ type Answerer = Box<dyn Fn(&DebugRequest) -> Result<DebugResponse, Refusal> + Se
 /// Serves one connection on 127.0.0.1 with `answer`, recording each debugging request it
 /// gets, and returns a client connected to it with the record.
 async fn fake(answer: Answerer) -> (Client, Arc<Mutex<Vec<DebugRequest>>>) {
-    let listener = TcpListener::bind("127.0.0.1:0").await.unwrap();
-    let address = listener.local_addr().unwrap();
     let seen = Arc::new(Mutex::new(Vec::new()));
     let record = Arc::clone(&seen);
-    tokio::spawn(async move {
-        let (mut stream, _) = listener.accept().await.unwrap();
-        loop {
-            let mut header = [0u8; 7];
-            if stream.read_exact(&mut header).await.is_err() {
-                return;
-            }
-            let length = usize::from(u16::from_be_bytes([header[4], header[5]]));
-            let mut pdu = vec![0u8; length - 1];
-            stream.read_exact(&mut pdu).await.unwrap();
-            let request = Request::decode(&pdu[1..]).unwrap();
-            let body = match &request {
-                Request::Identify { .. } => Response::Identify(Identity {
-                    protocol: PROTOCOL_VERSION,
-                    runtime_version: "fake".to_owned(),
-                    state: TargetState::Running,
-                    image_hash: None,
-                    project: String::new(),
-                    password_required: false,
-                    debug: DebugStatus::default(),
-                })
-                .encode(),
-                Request::Debug(debug) => {
-                    record.lock().unwrap().push(debug.clone());
-                    match answer(debug) {
-                        Ok(response) => Response::Debug(response).encode(),
-                        Err(refusal) => refusal.encode(debug.service().number()),
-                    }
-                }
-                other => panic!("the fake runtime got {other:?}"),
-            };
-            let mut frame = header[..4].to_vec();
-            frame.extend_from_slice(&((body.len() + 2) as u16).to_be_bytes());
-            frame.push(header[6]);
-            frame.push(online_protocol::FUNCTION_CODE);
-            frame.extend_from_slice(&body);
-            stream.write_all(&frame).await.unwrap();
-        }
-    });
+    let address = crate::fake_debug_target::serve(move |debug| {
+        record.lock().unwrap().push(debug.clone());
+        answer(debug)
+    })
+    .await;
     let (client, _) = Client::connect(address, None).await.unwrap();
     (client, seen)
 }

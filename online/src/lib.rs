@@ -13,6 +13,8 @@ mod client;
 mod debug_client;
 pub mod device;
 mod error;
+#[cfg(test)]
+mod fake_debug_target;
 pub mod session;
 
 pub use client::{Client, REQUEST_TIMEOUT, Sample, TraceConfig, Trigger};

@@ -8,12 +8,7 @@ use std::net::SocketAddr;
 use std::sync::{Arc, Mutex};
 use std::time::Duration;
 
-use online_protocol::{
-    DebugRequest, DebugResponse, DebugStatus, HaltReason, HaltState, Identity, PROTOCOL_VERSION,
-    Refusal, Request, Response, SessionState, TargetState,
-};
-use tokio::io::{AsyncReadExt as _, AsyncWriteExt as _};
-use tokio::net::TcpListener;
+use online_protocol::{DebugRequest, DebugResponse, HaltReason, HaltState, Refusal, SessionState};
 use tokio::sync::mpsc;
 
 use super::super::{Command, Event, SessionOptions, spawn};
@@ -94,45 +89,7 @@ fn answer(fake: &mut Fake, request: &DebugRequest) -> Result<DebugResponse, Refu
 
 /// Serves connections on 127.0.0.1 from `fake`.
 async fn serve(fake: Arc<Mutex<Fake>>) -> SocketAddr {
-    let listener = TcpListener::bind("127.0.0.1:0").await.unwrap();
-    let address = listener.local_addr().unwrap();
-    tokio::spawn(async move {
-        let (mut stream, _) = listener.accept().await.unwrap();
-        loop {
-            let mut header = [0u8; 7];
-            if stream.read_exact(&mut header).await.is_err() {
-                return;
-            }
-            let length = usize::from(u16::from_be_bytes([header[4], header[5]]));
-            let mut pdu = vec![0u8; length - 1];
-            stream.read_exact(&mut pdu).await.unwrap();
-            let request = Request::decode(&pdu[1..]).unwrap();
-            let body = match &request {
-                Request::Identify { .. } => Response::Identify(Identity {
-                    protocol: PROTOCOL_VERSION,
-                    runtime_version: "fake".to_owned(),
-                    state: TargetState::Running,
-                    image_hash: None,
-                    project: String::new(),
-                    password_required: false,
-                    debug: DebugStatus::default(),
-                })
-                .encode(),
-                Request::Debug(debug) => match answer(&mut fake.lock().unwrap(), debug) {
-                    Ok(response) => Response::Debug(response).encode(),
-                    Err(refusal) => refusal.encode(debug.service().number()),
-                },
-                other => panic!("the fake runtime got {other:?}"),
-            };
-            let mut frame = header[..4].to_vec();
-            frame.extend_from_slice(&((body.len() + 2) as u16).to_be_bytes());
-            frame.push(header[6]);
-            frame.push(online_protocol::FUNCTION_CODE);
-            frame.extend_from_slice(&body);
-            stream.write_all(&frame).await.unwrap();
-        }
-    });
-    address
+    crate::fake_debug_target::serve(move |debug| answer(&mut fake.lock().unwrap(), debug)).await
 }
 
 /// The next event that is not a snapshot, waiting at most five seconds.
