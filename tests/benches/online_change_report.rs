@@ -17,15 +17,12 @@
 
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::print_stdout)] // A bench binary.
 
-use std::net::SocketAddr;
-use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
 use online::{Client, TraceConfig, Trigger};
-use runtime::areas::LocatedAreas;
-use runtime::modbus::{MapSlot, ModbusMap, ServerOptions, serve};
-use runtime::online::OnlineServices;
 use runtime::scheduler::{Scheduler, SchedulerOptions};
+
+mod bench_runtime;
 
 #[path = "../../compiler/benches/generate/mod.rs"]
 mod generate;
@@ -108,31 +105,6 @@ fn image(source: &str) -> Vec<u8> {
         programs: vec!["Main".to_owned()],
     }];
     compiler::compile_project(&project).unwrap().encode()
-}
-
-/// The runtime as `rivet-runtime` assembles it, on 127.0.0.1 and a free port.
-async fn start() -> (SocketAddr, Arc<Scheduler>) {
-    let areas = Arc::new(Mutex::new(LocatedAreas::default()));
-    let scheduler =
-        Arc::new(Scheduler::spawn(Arc::clone(&areas), SchedulerOptions::default()).unwrap());
-    let map = MapSlot::new(ModbusMap::default());
-    let services = Arc::new(
-        OnlineServices::new(Arc::clone(&scheduler), Some(PASSWORD.to_owned()))
-            .with_map(Arc::clone(&map)),
-    );
-    let listener = tokio::net::TcpListener::bind("127.0.0.1:0").await.unwrap();
-    let address = listener.local_addr().unwrap();
-    tokio::spawn(serve(
-        listener,
-        areas,
-        map,
-        ServerOptions {
-            custom: Some(services.handler()),
-            closed: Some(services.closed_handler()),
-            ..ServerOptions::default()
-        },
-    ));
-    (address, scheduler)
 }
 
 /// Milliseconds of a duration, for the tables.
@@ -265,7 +237,7 @@ async fn bench() {
         load_average()
     );
 
-    let (address, scheduler) = start().await;
+    let (address, scheduler) = bench_runtime::start(SchedulerOptions::default(), PASSWORD).await;
     let (mut client, _) = Client::connect(address, Some(PASSWORD)).await.unwrap();
 
     // The reference: a full download and start of the old image, phase by phase.

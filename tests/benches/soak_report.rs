@@ -20,10 +20,9 @@ use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
 use online::{Client, Place, TraceConfig, TraceState, Trigger};
-use runtime::areas::LocatedAreas;
-use runtime::modbus::{MapSlot, ModbusMap, ServerOptions, serve};
-use runtime::online::OnlineServices;
-use runtime::scheduler::{Scheduler, SchedulerOptions};
+use runtime::scheduler::SchedulerOptions;
+
+mod bench_runtime;
 use tokio_modbus::client::Reader as _;
 
 /// The password the runtime is given, so that every changing request carries a token.
@@ -101,34 +100,6 @@ fn program() -> Vec<u8> {
         programs: vec!["Main".to_owned()],
     }];
     compiler::compile_project(&project).unwrap().encode()
-}
-
-/// The runtime as `rivet-runtime` assembles it, on 127.0.0.1 and a free port.
-async fn start(realtime_priority: Option<u8>) -> (SocketAddr, Arc<Scheduler>) {
-    let areas = Arc::new(Mutex::new(LocatedAreas::default()));
-    let options = SchedulerOptions {
-        realtime_priority,
-        ..SchedulerOptions::default()
-    };
-    let scheduler = Arc::new(Scheduler::spawn(Arc::clone(&areas), options).unwrap());
-    let map = MapSlot::new(ModbusMap::default());
-    let services = Arc::new(
-        OnlineServices::new(Arc::clone(&scheduler), Some(PASSWORD.to_owned()))
-            .with_map(Arc::clone(&map)),
-    );
-    let listener = tokio::net::TcpListener::bind("127.0.0.1:0").await.unwrap();
-    let address = listener.local_addr().unwrap();
-    tokio::spawn(serve(
-        listener,
-        areas,
-        map,
-        ServerOptions {
-            custom: Some(services.handler()),
-            closed: Some(services.closed_handler()),
-            ..ServerOptions::default()
-        },
-    ));
-    (address, scheduler)
 }
 
 /// The kinds of client, in the order the report lists them.
@@ -477,7 +448,11 @@ async fn tracer(
 async fn soak(duration: Duration, realtime_priority: Option<u8>) {
     let rss_start = resident_kb();
     let load_start = load_average();
-    let (address, scheduler) = start(realtime_priority).await;
+    let options = SchedulerOptions {
+        realtime_priority,
+        ..SchedulerOptions::default()
+    };
+    let (address, scheduler) = bench_runtime::start(options, PASSWORD).await;
     let (mut setup, _) = Client::connect(address, Some(PASSWORD)).await.unwrap();
     setup.download(&program(), true, |_, _| {}).await.unwrap();
     let counter = setup.resolve("Main.n").await.unwrap().place;
