@@ -88,30 +88,32 @@ impl BreakpointError {
 
 /// The statement a breakpoint's place names in `image`: the one starting on its line, or the
 /// next one of the same file; for a graphical place, the first statement of its network or
-/// element in the body `project` lowers. The one place where a breakpoint's place becomes the
-/// target's `(pou, instruction)`, for setting it and for running to the cursor.
+/// element in `bodies` (the project's lowered graphical bodies, made once by the caller for
+/// all its breakpoints). The one place where a breakpoint's place becomes the target's
+/// `(pou, instruction)`, for setting it and for running to the cursor.
 pub fn breakpoint_statement(
     image: &ProgramImage,
-    project: &Project,
+    bodies: &GraphicalBodies,
     place: &BreakpointPlace,
 ) -> Result<Statement, PlaceError> {
     if place.graphical.is_some() {
-        let bodies = GraphicalBodies::of_project(project);
-        return statement_of_place(place, image, &bodies)
+        return statement_of_place(place, image, bodies)
             .ok_or_else(|| PlaceError::NoElementStatement(place.label()));
     }
     statement_at(image, &place.label())
 }
 
-/// The breakpoint as `BREAK_SET` takes it, for `image`, built from `project`.
+/// The breakpoint as `BREAK_SET` takes it, for `image`, built from `project` (whose lowered
+/// graphical bodies are `bodies`).
 pub fn breakpoint_spec(
     image: &ProgramImage,
     project: &Project,
+    bodies: &GraphicalBodies,
     breakpoint: &Breakpoint,
 ) -> Result<BreakpointSpec, BreakpointError> {
     let place = &breakpoint.place;
     let statement =
-        breakpoint_statement(image, project, place).map_err(|error| BreakpointError::Place {
+        breakpoint_statement(image, bodies, place).map_err(|error| BreakpointError::Place {
             place: place.clone(),
             reason: error.to_string(),
         })?;

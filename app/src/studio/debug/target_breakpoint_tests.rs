@@ -22,9 +22,20 @@ fn at(file: &str, line: u32) -> Breakpoint {
 #[test]
 fn a_plain_breakpoint_on_a_comment_goes_to_the_next_statement_for_every_instance_and_task() {
     let (project, image) = example();
-    let statement = breakpoint_statement(&image, &project, &at("Main.st", 1).place).unwrap();
+    let statement = breakpoint_statement(
+        &image,
+        &GraphicalBodies::of_project(&project),
+        &at("Main.st", 1).place,
+    )
+    .unwrap();
     assert_eq!((statement.pou_name.as_str(), statement.line), ("Main", 2));
-    let spec = breakpoint_spec(&image, &project, &at("Main.st", 1)).unwrap();
+    let spec = breakpoint_spec(
+        &image,
+        &project,
+        &GraphicalBodies::of_project(&project),
+        &at("Main.st", 1),
+    )
+    .unwrap();
     assert_eq!(
         (spec.pou, spec.instruction),
         (statement.pou, statement.instruction)
@@ -44,7 +55,13 @@ fn filters_hit_rules_and_conditions_go_with_the_breakpoint() {
     breakpoint.hit_mode = HitMode::MultipleOf;
     breakpoint.hit_target = 3;
     breakpoint.condition = "xStart AND NOT xStop".to_owned();
-    let spec = breakpoint_spec(&image, &project, &breakpoint).unwrap();
+    let spec = breakpoint_spec(
+        &image,
+        &project,
+        &GraphicalBodies::of_project(&project),
+        &breakpoint,
+    )
+    .unwrap();
     assert_eq!(
         image.instance_path(spec.instance, Some("FB_Conveyor")),
         Some("Main.fbConveyor".to_owned())
@@ -65,7 +82,13 @@ fn a_condition_that_does_not_compile_names_the_place_and_the_compilers_message()
     let (project, image) = example();
     let mut breakpoint = at("FB_Conveyor.st", 3);
     breakpoint.condition = "xNoSuchVariable > 1".to_owned();
-    let error = breakpoint_spec(&image, &project, &breakpoint).unwrap_err();
+    let error = breakpoint_spec(
+        &image,
+        &project,
+        &GraphicalBodies::of_project(&project),
+        &breakpoint,
+    )
+    .unwrap_err();
     let text = error.text(Language::English);
     assert!(
         text.starts_with("breakpoint application/FB_Conveyor.st:3 not set: the condition 'xNoSuchVariable > 1' does not compile:"),
@@ -80,16 +103,33 @@ fn a_wrong_instance_task_or_place_is_refused_with_the_place() {
     let mut breakpoint = at("FB_Conveyor.st", 3);
     breakpoint.instance = "Main.rtrigPackage".to_owned();
     assert!(matches!(
-        breakpoint_spec(&image, &project, &breakpoint),
+        breakpoint_spec(
+            &image,
+            &project,
+            &GraphicalBodies::of_project(&project),
+            &breakpoint
+        ),
         Err(BreakpointError::Instance { .. })
     ));
     let mut breakpoint = at("FB_Conveyor.st", 3);
     breakpoint.task = "NoTask".to_owned();
-    let error = breakpoint_spec(&image, &project, &breakpoint).unwrap_err();
+    let error = breakpoint_spec(
+        &image,
+        &project,
+        &GraphicalBodies::of_project(&project),
+        &breakpoint,
+    )
+    .unwrap_err();
     assert_eq!(
         error.text(Language::English),
         "breakpoint application/FB_Conveyor.st:3 not set: the program has no task 'NoTask'"
     );
-    let error = breakpoint_spec(&image, &project, &at("Main.st", 9999)).unwrap_err();
+    let error = breakpoint_spec(
+        &image,
+        &project,
+        &GraphicalBodies::of_project(&project),
+        &at("Main.st", 9999),
+    )
+    .unwrap_err();
     assert!(matches!(error, BreakpointError::Place { .. }), "{error:?}");
 }

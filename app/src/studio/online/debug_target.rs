@@ -8,6 +8,7 @@ use online::session::{Command, DebugCommand as SessionCommand, HaltedTask as Rep
 use online::{ALL_TASKS, FlowBitmap, FlowEntry, StepKind};
 
 use super::{Online, Phase};
+use crate::debug_bodies::GraphicalBodies;
 use crate::studio::debug::{
     Breakpoint, BreakpointPlace, DebugCommand, DebugTarget, HaltedTask, breakpoint_spec,
     breakpoint_statement, flow_lines, halted_tasks,
@@ -76,7 +77,8 @@ impl DebugTarget for Online {
                 let Some(image) = &self.image else {
                     return false;
                 };
-                match breakpoint_statement(&image.program, &image.project, &place) {
+                let bodies = GraphicalBodies::of_project(&image.project);
+                match breakpoint_statement(&image.program, &bodies, &place) {
                     Ok(statement) => self.on_shown_task(|task| SessionCommand::RunTo {
                         task,
                         pou: statement.pou,
@@ -224,8 +226,10 @@ impl Online {
         let mut specs = Vec::new();
         let mut errors = Vec::new();
         let mut places = Vec::new();
+        // Lowered once for all the breakpoints; only graphical places need it.
+        let bodies = GraphicalBodies::of_project(&image.project);
         for breakpoint in &self.debugging.breakpoints {
-            match breakpoint_spec(&image.program, &image.project, breakpoint) {
+            match breakpoint_spec(&image.program, &image.project, &bodies, breakpoint) {
                 Ok(spec) => {
                     specs.push(spec);
                     places.push(breakpoint.place.clone());
