@@ -22,6 +22,7 @@ mod declarations_edit;
 mod device_check;
 mod dialect;
 mod edit;
+mod element_caption;
 mod files;
 mod gvl;
 mod history;

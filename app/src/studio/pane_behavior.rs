@@ -51,7 +51,9 @@ impl Behavior<Pane> for PaneBehavior<'_> {
                 Pane::Breakpoints => {
                     panes::breakpoints_ui(view, &mut states.breakpoints, commands, ui);
                 }
-                Pane::CallStack => panes::call_stack_ui(view, commands, ui),
+                Pane::CallStack => {
+                    panes::call_stack_ui(view, &mut states.texts.graphical, commands, ui);
+                }
             }
         });
         UiResponse::None

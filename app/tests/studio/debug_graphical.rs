@@ -178,6 +178,24 @@ fn a_halt_in_an_ld_body_marks_its_element_and_flow_control_its_network() {
     assert!(!editor.debug_marks().halt_is_caller);
     assert_eq!(editor.breakpoint_place(), Some(place));
 
+    // The Call stack names the halted element by what it reads or writes, not by the line of
+    // the text the body was compiled from.
+    let caption = match &harness
+        .state()
+        .session()
+        .unwrap()
+        .project
+        .application
+        .object("Interlock")
+    {
+        Some(project_model::Object::Pou(pou)) => pou
+            .body
+            .element_caption(place.network, place.element.unwrap())
+            .unwrap(),
+        _ => panic!("the example has the Interlock"),
+    };
+    harness.get_by_label(&format!("Interlock: network 2, {caption}"));
+
     // Flow control marks the network of the lines that ran once switched on.
     harness.state_mut().set_flow(vec![(file, vec![line])]);
     harness.step();

@@ -142,9 +142,7 @@ fn a_halt_shows_its_statement_and_a_callers_frame_opens_the_caller_at_the_call()
 
     // The call stack lists both frames; the caller's opens Main at the call.
     harness.get_by_label("Main.fbConveyor (FB_Conveyor) application/FB_Conveyor.st:3");
-    harness
-        .get_by_label("Main (Main) application/Main.st:2")
-        .click();
+    harness.get_by_label("Main application/Main.st:2").click();
     harness.step();
     harness.step();
     harness.step();
@@ -264,9 +262,7 @@ fn in_the_simulator_a_breakpoint_halts_steps_go_on_a_caller_frame_opens_and_logo
     });
 
     // The caller's frame in the Call stack opens Main at the call.
-    harness
-        .get_by_label("Main (Main) application/Main.st:2")
-        .click();
+    harness.get_by_label("Main application/Main.st:2").click();
     harness.step();
     harness.step();
     assert_eq!(harness.state().debug_state().shown(), Some(("MainTask", 1)));

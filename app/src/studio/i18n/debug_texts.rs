@@ -46,6 +46,8 @@ pub enum DebugText {
     NoElementStatement,
     GraphicalNetwork,
     GraphicalElement,
+    GraphicalNamedElement,
+    GraphicalChartElement,
     GraphicalStep,
     GraphicalTransition,
     LogInToDebug,
@@ -116,6 +118,11 @@ impl DebugText {
                 "{body}: network {network}, element {element}",
                 "{body}：网络 {network}，元素 {element}",
             ),
+            Self::GraphicalNamedElement => (
+                "{body}: network {network}, {name}",
+                "{body}：网络 {network}，{name}",
+            ),
+            Self::GraphicalChartElement => ("{body}: {name}", "{body}：{name}"),
             Self::GraphicalStep => ("{body}: step {name}", "{body}：步 {name}"),
             Self::GraphicalTransition => {
                 ("{body}: transition {condition}", "{body}：转换 {condition}")

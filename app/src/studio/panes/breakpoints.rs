@@ -4,7 +4,7 @@
 use egui::{RichText, Ui};
 
 use crate::studio::command::{Command, Commands};
-use crate::studio::debug::{Breakpoint, HitMode, body_target};
+use crate::studio::debug::{Breakpoint, GraphicalPlace, HitMode, body_target};
 use crate::studio::i18n::{DebugText, Language};
 use crate::studio::view::StudioView;
 
@@ -82,48 +82,62 @@ fn breakpoint_row_ui(
 /// The place in words: `FILE:LINE` in text, `Interlock: network 2, element 7` in LD, FBD or
 /// CFC, `PackCycle: step Fill` and `PackCycle: transition bFull` in an SFC chart.
 fn place_text(language: Language, view: StudioView<'_>, breakpoint: &Breakpoint) -> String {
-    let Some(graphical) = &breakpoint.place.graphical else {
-        return breakpoint.place.label();
-    };
-    let body = &graphical.body;
-    let chart_node = view
-        .project()
-        .zip(graphical.element)
-        .and_then(|(project, id)| match project.application.object(body) {
-            Some(project_model::Object::Pou(pou)) => match &pou.body {
-                project_model::Body::Sfc { chart } => {
-                    project_model::sfc_edit::find_node(chart, project_model::ElementId(id)).cloned()
-                }
-                _ => None,
-            },
-            _ => None,
-        });
-    match chart_node {
-        Some(project_model::SfcNode::Step(step)) => {
-            return DebugText::GraphicalStep
-                .fill(language, &[("body", body), ("name", &step.name)]);
-        }
-        Some(project_model::SfcNode::Transition(transition)) => {
-            return DebugText::GraphicalTransition.fill(
-                language,
-                &[("body", body), ("condition", &transition.condition)],
-            );
-        }
-        _ => {}
+    match &breakpoint.place.graphical {
+        Some(graphical) => graphical_place_text(language, view.project(), graphical),
+        None => breakpoint.place.label(),
     }
+}
+
+/// A graphical place as the user knows it: an SFC step by its name, a transition by its
+/// condition, a CFC element and an LD/FBD element by what it reads, writes or calls, an LD/FBD
+/// network by its number (from 1); shared by the Breakpoints and Call stack panes.
+pub(crate) fn graphical_place_text(
+    language: Language,
+    project: Option<&project_model::Project>,
+    graphical: &GraphicalPlace,
+) -> String {
+    let name = &graphical.body;
+    let (pou, member) = name.split_once('.').unwrap_or((name, ""));
+    let body = project.and_then(|project| match project.application.object(pou) {
+        Some(project_model::Object::Pou(pou)) => pou.body_named(member),
+        _ => None,
+    });
     let network = (graphical.network + 1).to_string();
-    match graphical.element {
-        Some(element) => DebugText::GraphicalElement.fill(
+    let Some(id) = graphical.element.map(project_model::ElementId) else {
+        return DebugText::GraphicalNetwork
+            .fill(language, &[("body", name), ("network", &network)]);
+    };
+    if let Some(project_model::Body::Sfc { chart }) = body {
+        match project_model::sfc_edit::find_node(chart, id) {
+            Some(project_model::SfcNode::Step(step)) => {
+                return DebugText::GraphicalStep
+                    .fill(language, &[("body", name), ("name", &step.name)]);
+            }
+            Some(project_model::SfcNode::Transition(transition)) => {
+                return DebugText::GraphicalTransition.fill(
+                    language,
+                    &[("body", name), ("condition", &transition.condition)],
+                );
+            }
+            _ => {}
+        }
+    }
+    let caption = body.and_then(|body| body.element_caption(graphical.network, id));
+    match (body, caption) {
+        (Some(project_model::Body::Cfc { .. }), Some(caption)) => {
+            DebugText::GraphicalChartElement.fill(language, &[("body", name), ("name", &caption)])
+        }
+        (_, Some(caption)) => DebugText::GraphicalNamedElement.fill(
+            language,
+            &[("body", name), ("network", &network), ("name", &caption)],
+        ),
+        (_, None) => DebugText::GraphicalElement.fill(
             language,
             &[
-                ("body", &graphical.body),
+                ("body", name),
                 ("network", &network),
-                ("element", &element.to_string()),
+                ("element", &id.0.to_string()),
             ],
-        ),
-        None => DebugText::GraphicalNetwork.fill(
-            language,
-            &[("body", &graphical.body), ("network", &network)],
         ),
     }
 }
