@@ -476,6 +476,12 @@ fn online_state(view: StudioView<'_>, dark_mode: bool) -> (String, Option<egui::
         ),
         Phase::Online => {
             let state = view.online.target_state();
+            if state == Some(TargetState::Running) && view.debug.is_halted() {
+                // CODESYS says a running application is halted while a task stands at a
+                // breakpoint: the other tasks run, but the program is not running freely.
+                let words = Text::StateHalted.get(language);
+                return (format!("{target}: {words}"), Some(colors.target_stopped));
+            }
             let color = match state {
                 Some(TargetState::Running) => colors.target_running,
                 Some(TargetState::Faulted) => colors.target_failed,

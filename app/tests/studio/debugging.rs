@@ -228,6 +228,12 @@ fn in_the_simulator_a_breakpoint_halts_steps_go_on_a_caller_frame_opens_and_logo
     // The task halts there; the marker is on the line and Main's values show inline.
     wait_for_halt_at(&mut harness, "Main", 1);
     assert_eq!(harness.state().debug_state().shown(), Some(("MainTask", 0)));
+    // The status bar says the running application is halted, not merely running.
+    assert!(
+        harness
+            .query_by_label_contains("running, halted at a breakpoint")
+            .is_some()
+    );
     wait_until(&mut harness, "inline values of Main", |app| {
         app.inline_paths()
             .iter()

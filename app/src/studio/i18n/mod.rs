@@ -368,6 +368,7 @@ pub enum Text {
     StateNoProgram,
     StateStopped,
     StateRunning,
+    StateHalted,
     StateFaulted,
     ProgramHasNoTask,
     TooManyTasks,

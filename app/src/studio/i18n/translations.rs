@@ -445,6 +445,7 @@ impl Text {
             Self::StateNoProgram => ("no program", "无程序"),
             Self::StateStopped => ("stopped", "已停止"),
             Self::StateRunning => ("running", "运行中"),
+            Self::StateHalted => ("running, halted at a breakpoint", "运行中，已在断点处暂停"),
             Self::StateFaulted => ("running with a faulted task", "运行中，有任务故障"),
             Self::ProgramHasNoTask => {
                 ("the program has no task '{task}'", "程序中没有任务“{task}”")
