@@ -121,6 +121,10 @@ fn f9_on_a_selected_ld_network_sets_a_breakpoint_listed_in_the_pane_and_drawn() 
             _ => None,
         })
         .expect("the last network starts with a contact");
+    let operand = match editor.networks()[last].element(contact) {
+        Some(project_model::ElementRef::Operand(operand)) => operand.text.clone(),
+        _ => panic!("the contact is an operand"),
+    };
     let at = editor.element_screen_rect(contact).unwrap().center();
     harness.hover_at(at);
     harness.step();
@@ -137,12 +141,11 @@ fn f9_on_a_selected_ld_network_sets_a_breakpoint_listed_in_the_pane_and_drawn() 
     harness.run_steps(3);
     assert_eq!(breakpoints(harness.state()).len(), 1);
     let status = harness.state().status().map(|status| status.text.clone());
+    // The status line names the contact as the user knows it: network and operand.
     assert!(
-        status.as_deref().is_some_and(|text| text.contains(&format!(
-            "Interlock:{}:{}",
-            last + 1,
-            contact.0
-        )) && text.contains("no statement of its own")),
+        status.as_deref().is_some_and(|text| text
+            .contains(&format!("Interlock: network {}, {operand}", last + 1))
+            && text.contains("no statement of its own")),
         "{status:?}"
     );
 

@@ -291,6 +291,18 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
     /// instruction is this place's.
     pub(crate) fn mark_statement_start(&mut self, node: &SyntaxNode) {
         let line = self.line_of(node);
+        self.mark_line_start(line);
+    }
+
+    /// Records the next instruction as a statement start at the line of the source's byte
+    /// `offset`, as [`Self::mark_statement_start`] does for a node: an SFC step, known by its
+    /// name's place, is a statement start where its active pass begins.
+    pub(crate) fn mark_statement_start_at(&mut self, offset: usize) {
+        let line = self.line_of_offset(offset);
+        self.mark_line_start(line);
+    }
+
+    fn mark_line_start(&mut self, line: u32) {
         let index = self.here();
         match self.lines.last_mut() {
             Some(last) if last.index == index => last.line = line,
@@ -307,7 +319,10 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
         let trimmed = node
             .first_token()
             .map_or(offset, |t| usize::from(t.text_range().start()));
-        let offset = offset.max(trimmed);
+        self.line_of_offset(offset.max(trimmed))
+    }
+
+    fn line_of_offset(&self, offset: usize) -> u32 {
         self.line_starts.partition_point(|&start| start <= offset) as u32 + self.line_offset
     }
 

@@ -156,12 +156,13 @@ fn a_loop_whose_body_and_test_share_a_line_keeps_its_entries_in_order() {
 }
 
 #[test]
-fn every_sfc_transition_test_is_a_statement_start_of_its_line() {
+fn every_sfc_step_and_transition_test_is_a_statement_start_of_its_line() {
     // Lines: 5 INITIAL_STEP, 6 END_STEP, 7 TRANSITION, 8 END_TRANSITION, 9 STEP Run, ...
     let main = main_of(
         "go : BOOL; done : BOOL;",
         "INITIAL_STEP Idle:\nEND_STEP\nTRANSITION FROM Idle TO Run := go;\nEND_TRANSITION\nSTEP Run:\nEND_STEP\nTRANSITION FROM Run TO Idle := done;\nEND_TRANSITION",
     );
     assert_ascending(&main);
-    assert_eq!(lines(&main), [7, 11]);
+    // Each step's active pass starts at its line, before the transitions are tested.
+    assert_eq!(lines(&main), [5, 9, 7, 11]);
 }

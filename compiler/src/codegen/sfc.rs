@@ -522,6 +522,9 @@ impl BodyGen<'_, '_, '_> {
         inline: &HashMap<String, StatementList>,
     ) -> Gen<()> {
         let off = self.skip_unless(inst(slots.next()));
+        // The step's line starts a statement where its active pass begins, so a breakpoint on
+        // the step halts while it is active (as CODESYS does) and flow control marks it then.
+        self.mark_statement_start_at(step.name_range.start);
         let steady = self.skip_if(inst(slots.x()));
         self.set_bool(slots.x(), true);
         self.emit(Instr::Move {

@@ -14,6 +14,7 @@ use runtime::engine::{
 use super::compile;
 
 mod motion;
+mod sfc;
 
 const SOURCE: &str = "
 FUNCTION Twice : INT

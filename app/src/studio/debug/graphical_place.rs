@@ -180,4 +180,62 @@ mod tests {
         assert_eq!(place.command_line(), "FB.Reset:3:5");
         assert_eq!(place.in_editor().element, Some(ElementId(5)));
     }
+
+    #[test]
+    fn every_step_and_transition_of_an_sfc_chart_has_a_statement_in_the_image() {
+        let project = project_model::load_project(&assets::example_project_dir())
+            .unwrap()
+            .project;
+        let lowered = compiler::lower::lower_project(&project).bodies;
+        let body = lowered.iter().find(|body| body.pou == "PackCycle").unwrap();
+        let image = compiler::compile_project(&project).unwrap();
+        let bodies = crate::debug_bodies::GraphicalBodies::of_project(&project);
+        let Some(project_model::Object::Pou(pou)) = project.application.object("PackCycle") else {
+            panic!("the example has the PackCycle");
+        };
+        let project_model::Body::Sfc { chart } = &pou.body else {
+            panic!("the PackCycle is SFC");
+        };
+        let mut ids = Vec::new();
+        collect_node_ids(&chart.sequence, &mut ids);
+        assert!(ids.len() >= 9, "{ids:?}");
+        for id in ids {
+            let place = editor::BodyPlace {
+                network: 0,
+                element: Some(id),
+            };
+            // Offline, F9 looks at the lowered text; logged in, the breakpoint needs the
+            // image's statement.
+            assert!(has_statement(body, place), "{id:?} has no line");
+            let breakpoint = crate::studio::debug::BreakpointPlace::graphical(
+                "application/PackCycle.pou.toml",
+                GraphicalPlace {
+                    body: "PackCycle".to_owned(),
+                    network: 0,
+                    element: Some(id.0),
+                },
+            );
+            assert!(
+                crate::studio::debug::statement_of_place(&breakpoint, &image, &bodies).is_some(),
+                "{id:?} has no statement in the image"
+            );
+        }
+    }
+
+    /// The ids of the steps and transitions of `nodes`, in branches too.
+    fn collect_node_ids(nodes: &[project_model::SfcNode], ids: &mut Vec<ElementId>) {
+        for node in nodes {
+            match node {
+                project_model::SfcNode::Step(step) => ids.push(step.id),
+                project_model::SfcNode::Transition(transition) => ids.push(transition.id),
+                project_model::SfcNode::Alternative(branches)
+                | project_model::SfcNode::Parallel(branches) => {
+                    for branch in &branches.branches {
+                        collect_node_ids(&branch.nodes, ids);
+                    }
+                }
+                _ => {}
+            }
+        }
+    }
 }

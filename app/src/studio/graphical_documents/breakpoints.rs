@@ -73,7 +73,7 @@ pub(super) fn toggle_breakpoint(
         .find(|body| body.target == *target);
     let graphical = GraphicalPlace::of_editor(target, place);
     if lowered.is_some_and(|body: &LoweredBody| !has_statement(body, place)) {
-        let what = graphical.command_line();
+        let what = crate::studio::panes::graphical_place_text(language, Some(project), &graphical);
         commands.error(DebugText::NoElementStatement.fill(language, &[("place", &what)]));
         return;
     }

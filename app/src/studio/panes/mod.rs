@@ -8,7 +8,7 @@ mod tasks;
 mod trace;
 mod watch;
 
-pub(crate) use breakpoints::{BreakpointsPaneState, breakpoints_ui};
+pub(crate) use breakpoints::{BreakpointsPaneState, breakpoints_ui, graphical_place_text};
 pub(crate) use call_stack::call_stack_ui;
 pub(crate) use forces::forces_ui;
 pub(crate) use messages::{message_count, messages_ui};

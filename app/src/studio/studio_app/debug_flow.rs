@@ -70,7 +70,13 @@ impl Studio {
                 let what = place
                     .graphical
                     .as_ref()
-                    .map(|graphical| graphical.command_line())
+                    .map(|graphical| {
+                        crate::studio::panes::graphical_place_text(
+                            language,
+                            Some(&session.project),
+                            graphical,
+                        )
+                    })
                     .unwrap_or_default();
                 self.commands
                     .error(DebugText::NoElementStatement.fill(language, &[("place", &what)]));
