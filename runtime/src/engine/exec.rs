@@ -243,7 +243,7 @@ impl<'a> Exec<'a> {
     /// Runs POU `index` with the current bases, called from instruction `call_site` of the
     /// POU that calls it (0 for a task's program).
     pub(crate) fn run(&mut self, index: usize, call_site: u32) -> Result<(), FaultKind> {
-        // The one cost of the debugger when no session is active: this test per call.
+        // The one cost of the debugger in a cycle that runs without it: this test per call.
         if self.debugging {
             return self.run_watched(index, call_site);
         }
