@@ -154,8 +154,10 @@ impl Exec<'_> {
         let Some(depth) = self.debug.note_position(self.task, pc as u32) else {
             return Ok(());
         };
-        let instance = self.pointer_to(self.bases[usize::from(INSTANCE)]);
-        self.debug.record_flow(self.task, pou, pc as u32, instance);
+        if self.debug.records(pou) {
+            let instance = self.pointer_to(self.bases[usize::from(INSTANCE)]);
+            self.debug.record_flow(self.task, pou, pc as u32, instance);
+        }
         let Some(state) = self.debug.task(self.task) else {
             return Ok(());
         };

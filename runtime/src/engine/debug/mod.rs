@@ -371,10 +371,15 @@ impl DebugState {
         self.flow.as_ref()
     }
 
+    /// Whether the flow recording lists POU `pou` (for some task).
+    pub(crate) fn records(&self, pou: usize) -> bool {
+        self.pou_recorded.get(pou).copied().unwrap_or(false)
+    }
+
     /// Notes that task `task` started the statement at instruction `instruction` of POU `pou`
     /// on the instance whose pointer value is `instance`.
     pub(crate) fn record_flow(&mut self, task: usize, pou: usize, instruction: u32, instance: u64) {
-        if !self.pou_recorded.get(pou).copied().unwrap_or(false) {
+        if !self.records(pou) {
             return;
         }
         let (Some(flow), Some(entries)) = (self.flow.as_mut(), self.entries.get(pou)) else {
