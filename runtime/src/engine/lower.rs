@@ -40,7 +40,7 @@ pub(crate) struct CompiledPou {
     pub(crate) frame_size: usize,
     pub(crate) frame_init: Vec<(usize, Vec<u8>)>,
     /// Per instruction, whether it starts a statement (an entry of the line table), where the
-    /// debug variant asks the debugger whether to halt.
+    /// debug form asks the debugger whether to halt.
     pub(crate) statement_starts: Vec<bool>,
 }
 

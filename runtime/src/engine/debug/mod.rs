@@ -1,12 +1,13 @@
 //! The engine's side of the debug session (`docs/protocol.md` §6, `docs/debugging.md`):
 //! breakpoints, steps, halts and the tasks' call stacks.
 //!
-//! A cycle runs with the debugger only while a session is active; then every call pushes its
-//! frame on the task's shadow call stack ([`DebugState::enter_pou`]), and only a POU with a
-//! breakpoint or flow recording, or any POU of a task that is stepping, running to a cursor
-//! or told to halt, runs the debug form (`Exec::run_watched`), which at each statement start
-//! asks [`DebugState`] whether to halt. Without a session the engine runs as it always did,
-//! at the cost of one test per call. A halt hands the cycle's engine to the
+//! A cycle runs with the debugger only while a session is active and something can halt
+//! while it runs ([`DebugState::cycle_needs_debugger`]); then every call pushes its frame on
+//! the task's shadow call stack ([`DebugState::enter_pou`]), and only a POU with a breakpoint
+//! or flow recording, or any POU of a task that is stepping, running to a cursor or told to
+//! halt, runs the debug form (`Exec::run_watched`), which at each statement start asks
+//! [`DebugState`] whether to halt. Any other cycle runs as the engine always did, at the cost
+//! of one test per call. A halt hands the cycle's engine to the
 //! scheduler's [`super::Preempt::halt`], which serves requests and runs other tasks until the
 //! halted task is told to go on; the cycle's Rust stack stays where it is meanwhile.
 
