@@ -2,7 +2,8 @@
 //! runs the debug form, yet a halt in it shows its callers that ran the light form with their
 //! call sites; steps out of it and over its end land in such a caller, which goes on in the
 //! debug form; flow recording of one POU works while its caller runs light; a breakpoint set
-//! during a halt takes effect at its POU's next call, in the same cycle.
+//! during a halt takes effect at its POU's next call, in the same cycle; a task interrupted
+//! by a task of higher priority that halts shows its whole stack while it waits.
 
 use std::sync::atomic::AtomicBool;
 
@@ -28,12 +29,22 @@ VAR_INPUT v : INT; END_VAR
 Tick := v + 1;
 END_FUNCTION
 
+FUNCTION Sum : INT
+VAR_INPUT v : INT; END_VAR
+VAR i : INT; END_VAR
+Sum := 0;
+FOR i := 1 TO 3 DO
+    Sum := Sum + v;
+END_FOR;
+END_FUNCTION
+
 PROGRAM Main
 VAR n : INT; r : INT; END_VAR
 n := n + 1;
 r := Tick(n);
 r := Clamp(r) + 1;
 n := n + 0;
+r := Sum(r);
 END_PROGRAM
 ";
 
@@ -280,4 +291,115 @@ fn a_breakpoint_set_during_a_halt_halts_at_its_functions_next_call_in_the_same_c
         ]
     );
     assert!(matches!(seen[1].reason, HaltReason::Breakpoint(_)));
+}
+
+/// Task 1's halts: what task 0, waiting beneath, shows then.
+struct Urgent {
+    /// Task 0's stack at each halt, innermost first: POU name and instruction.
+    waiting: Vec<Vec<(String, u32)>>,
+}
+
+impl Preempt for Urgent {
+    fn preempt(&mut self, _engine: EngineView<'_>) {}
+
+    fn halt(&mut self, mut engine: EngineView<'_>, task: usize) {
+        assert_eq!(task, 1);
+        let image = engine.image().clone();
+        let debug = engine.debug();
+        assert!(debug.waiting(0), "task 0 waits beneath task 1");
+        let state = debug.task(0).expect("task 0 exists");
+        self.waiting.push(
+            state
+                .stack()
+                .map(|frame| {
+                    (
+                        image.pous[frame.pou as usize].name.clone(),
+                        frame.instruction,
+                    )
+                })
+                .collect(),
+        );
+        engine.debug_mut().continue_task(1).expect("it goes on");
+    }
+}
+
+/// Task 0's interruptions: once it is in `Sum`, task 1's cycle runs on top of it.
+struct Interrupts<'a> {
+    due: &'a AtomicBool,
+    urgent: Urgent,
+}
+
+impl Preempt for Interrupts<'_> {
+    fn preempt(&mut self, mut engine: EngineView<'_>) {
+        let image = engine.image().clone();
+        let in_sum = engine
+            .debug()
+            .task(0)
+            .and_then(|state| state.stack().next())
+            .is_some_and(|top| image.pous[top.pou as usize].name == "Sum");
+        if !in_sum {
+            return;
+        }
+        self.due.store(false, std::sync::atomic::Ordering::Relaxed);
+        let never = AtomicBool::new(false);
+        let preemption = Preemption {
+            due: &never,
+            hook: &mut self.urgent,
+        };
+        engine
+            .run_cycle(1, 0, 0, Some(preemption))
+            .expect("no fault");
+    }
+}
+
+#[test]
+fn a_task_waiting_beneath_a_halted_task_of_higher_priority_shows_its_whole_stack() {
+    let mut image = compile(SOURCE);
+    // A second task, of higher priority, runs the same program.
+    let mut urgent = image.tasks[0].clone();
+    urgent.name = "Urgent".to_owned();
+    urgent.priority = image.tasks[0].priority.saturating_sub(1);
+    image.tasks[0].priority = urgent.priority + 1;
+    image.tasks.push(urgent);
+    let mut engine = Engine::new(image.clone()).expect("the image loads");
+    engine.debug_mut().begin_session();
+    // Only task 1 halts there: task 0 keeps its stack because task 1 may halt above it.
+    let mut only_urgent = spec(&image, "Tick", "Tick := v + 1;");
+    only_urgent.task = Some(1);
+    engine.view().set_breakpoint(only_urgent).expect("set");
+    // Task 0 is due to be interrupted at every safe point until it is in `Sum`'s loop.
+    let due = AtomicBool::new(true);
+    let mut interrupts = Interrupts {
+        due: &due,
+        urgent: Urgent {
+            waiting: Vec::new(),
+        },
+    };
+    let preemption = Preemption {
+        due: &due,
+        hook: &mut interrupts,
+    };
+    engine
+        .view()
+        .run_cycle(0, 0, 0, Some(preemption))
+        .expect("no fault");
+    let waiting = &interrupts.urgent.waiting;
+    assert_eq!(waiting.len(), 1, "{waiting:?}");
+    let names: Vec<&str> = waiting[0].iter().map(|(name, _)| name.as_str()).collect();
+    assert_eq!(names, ["Sum", "Main"]);
+    let sum = statement(&image, "Sum", line("Sum := 0;")).0 as usize;
+    let main = statement(&image, "Main", line("r := Sum(r);"));
+    // Sum stands at the backward jump where it was interrupted, Main at its call of Sum.
+    assert!(matches!(
+        image.pous[sum].code[waiting[0][0].1 as usize],
+        Instr::Jump { .. } | Instr::JumpIf { .. } | Instr::JumpIfNot { .. }
+    ));
+    assert_eq!(
+        line_of(&image, main.0, waiting[0][1].1),
+        line("r := Sum(r);")
+    );
+    assert!(matches!(
+        image.pous[main.0 as usize].code[waiting[0][1].1 as usize],
+        Instr::CallFunction { .. }
+    ));
 }
