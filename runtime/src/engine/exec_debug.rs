@@ -196,10 +196,21 @@ impl Exec<'_> {
                 continue;
             }
             let id = breakpoint.id;
-            let holds = match breakpoint.condition.clone() {
+            // The condition is lent out of its breakpoint while it runs (it calls nothing,
+            // so nothing can look at the breakpoints meanwhile): moving it costs less than
+            // counting a reference to it up and down at every hit.
+            let condition = self
+                .debug
+                .breakpoints_mut()
+                .get_mut(index - 1)
+                .and_then(|breakpoint| breakpoint.condition.take());
+            let holds = match &condition {
                 None => Ok(true),
-                Some(condition) => self.evaluate(&condition, pou),
+                Some(condition) => self.evaluate(condition, pou),
             };
+            if let Some(breakpoint) = self.debug.breakpoints_mut().get_mut(index - 1) {
+                breakpoint.condition = condition;
+            }
             match holds {
                 Ok(false) => continue,
                 Ok(true) => {
