@@ -58,6 +58,12 @@ fn main() {
         }
         return;
     }
+    // `SCAN_SECTION=debugger` only measures what the debugger costs, the one figure a change
+    // to the engine's debug forms moves.
+    if std::env::var_os("SCAN_SECTION").is_some_and(|section| section == "debugger") {
+        debugger_cost::report(&|f| median_ns(f));
+        return;
+    }
     println!(
         "| workload | unit | units/cycle | instructions/cycle | runtime ns/cycle | runtime ns/unit | runtime ns/instruction | native ns/unit | ratio |"
     );

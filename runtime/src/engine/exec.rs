@@ -73,8 +73,12 @@ pub(crate) struct Exec<'a> {
     pub(super) debug: &'a mut DebugState,
     /// Nanoseconds this cycle spent halted, taken out of its axes' clock at its end.
     pub(super) halted_ns: i64,
-    /// Whether the cycle runs with the debugger (a session was active when it started): then
-    /// every POU runs its debug variant ([`Exec::run_debug`]).
+    /// Whether a session was active when the cycle started: then the debugger keeps count of
+    /// the cycle (its start, end and flow recording).
+    pub(super) session: bool,
+    /// Whether the cycle runs with the debugger ([`DebugState::cycle_needs_debugger`], set
+    /// when the cycle starts): then every call keeps the task's shadow call stack, and each
+    /// POU runs the debug form or the light form as [`Exec::run_watched`] decides.
     pub(super) debugging: bool,
     /// The task clock in nanoseconds, read by the timers.
     pub(crate) now_ns: i64,
@@ -105,12 +109,13 @@ impl<'a> Exec<'a> {
         (due, hook): (&'a AtomicBool, Option<&'a mut dyn Preempt>),
         (task, debug): (usize, &'a mut DebugState),
     ) -> Self {
-        let debugging = debug.active();
+        let session = debug.active();
         Self {
             halted_ns: 0,
             task,
             debug,
-            debugging,
+            session,
+            debugging: false,
             image,
             due,
             hook,
@@ -180,11 +185,12 @@ impl<'a> Exec<'a> {
         self.regions.resolve(pointer, size, self.stack_end)
     }
 
-    /// Counts a backward jump, and looks at the clock every so often. A safe point: a task of
-    /// higher priority that is due runs here.
+    /// Counts the backward jump at instruction `pc`, and looks at the clock every so often. A
+    /// safe point: a task of higher priority that is due runs here. Says whether the task
+    /// came to be watched by the debugger while it was interrupted.
     #[inline(always)]
-    pub(super) fn tick(&mut self) -> Result<(), FaultKind> {
-        self.safe_point();
+    pub(super) fn tick(&mut self, pc: usize) -> Result<bool, FaultKind> {
+        let watched = self.safe_point(pc);
         self.budget -= 1;
         if self.budget == 0 {
             self.budget = WATCHDOG_STRIDE;
@@ -194,26 +200,31 @@ impl<'a> Exec<'a> {
                 return Err(FaultKind::Watchdog { limit_us });
             }
         }
-        Ok(())
+        Ok(watched)
     }
 
-    /// Lets the tasks of higher priority that are due run, when the alarm says one may be.
+    /// Lets the tasks of higher priority that are due run, when the alarm says one may be;
+    /// `at` is the instruction of the current POU the task stands at. Says whether the task
+    /// came to be watched by the debugger meanwhile.
     #[inline(always)]
-    fn safe_point(&mut self) {
-        if self.due.load(Ordering::Relaxed) {
-            self.preempt();
-        }
+    fn safe_point(&mut self, at: usize) -> bool {
+        self.due.load(Ordering::Relaxed) && self.preempt(at)
     }
 
     /// Lends the memory to the scheduler, which runs the due tasks of higher priority on it,
     /// and moves the watchdog's deadline by the time they took: the watchdog counts this
-    /// cycle's own time.
+    /// cycle's own time. With the debugger, the innermost frame first notes instruction `at`,
+    /// so a client sees where the waiting task stands; returns whether the task is watched
+    /// (a step, run to cursor or halt was given to it meanwhile).
     #[cold]
     #[inline(never)]
-    fn preempt(&mut self) {
+    fn preempt(&mut self, at: usize) -> bool {
         let Some(hook) = self.hook.as_deref_mut() else {
-            return;
+            return false;
         };
+        if self.debugging {
+            self.debug.note_position(self.task, at as u32);
+        }
         let paused = Instant::now();
         hook.preempt(EngineView {
             image: self.image,
@@ -226,13 +237,15 @@ impl<'a> Exec<'a> {
         if let Some((deadline, _)) = &mut self.deadline {
             *deadline += paused.elapsed();
         }
+        self.debugging && self.debug.watched(self.task)
     }
 
-    /// Runs POU `index` with the current bases.
-    pub(crate) fn run(&mut self, index: usize) -> Result<(), FaultKind> {
-        // The one cost of the debugger when no session is active: this test per call.
+    /// Runs POU `index` with the current bases, called from instruction `call_site` of the
+    /// POU that calls it (0 for a task's program).
+    pub(crate) fn run(&mut self, index: usize, call_site: u32) -> Result<(), FaultKind> {
+        // The one cost of the debugger in a cycle that runs without it: this test per call.
         if self.debugging {
-            return self.run_debug(index);
+            return self.run_watched(index, call_site);
         }
         let code = self.code;
         let Some(pou) = code.pous.get(index) else {
@@ -242,11 +255,11 @@ impl<'a> Exec<'a> {
         let mut pc = 0usize;
         while let Some(op) = ops.get(pc) {
             match op(self) {
-                Ok(Flow::Next) => pc += 1,
+                Ok(Flow::Next | Flow::NextWatched) => pc += 1,
                 Ok(Flow::Jump(target)) => {
                     let target = target as usize;
                     if target <= pc
-                        && let Err(fault) = self.tick()
+                        && let Err(fault) = self.tick(pc)
                     {
                         self.fault_at.get_or_insert((index, pc));
                         return Err(fault);
@@ -263,10 +276,11 @@ impl<'a> Exec<'a> {
         Ok(())
     }
 
-    /// Pushes a frame for POU `index`, initialised from its template, and returns its start.
-    /// Every call does, so this is a safe point.
-    pub(crate) fn push_frame(&mut self, index: usize) -> Result<usize, FaultKind> {
-        self.safe_point();
+    /// Pushes a frame for POU `index`, called from instruction `call_site` of its caller,
+    /// initialised from its template, and returns its start. Every call does, so this is a
+    /// safe point.
+    pub(crate) fn push_frame(&mut self, index: usize, call_site: u32) -> Result<usize, FaultKind> {
+        self.safe_point(call_site as usize);
         let code = self.code;
         let pou = code.pous.get(index).ok_or(FaultKind::Memory)?;
         let frame = self.sp;
@@ -295,15 +309,33 @@ impl<'a> Exec<'a> {
         self.depth = self.depth.saturating_sub(1);
     }
 
-    /// Runs POU `index` on the instance at `instance` with a new frame.
-    pub(crate) fn call_block(&mut self, index: usize, instance: usize) -> Result<Flow, FaultKind> {
+    /// Runs POU `index` on the instance at `instance` with a new frame, called from
+    /// instruction `call_site` of its caller (0 for a task's program).
+    pub(crate) fn call_block(
+        &mut self,
+        index: usize,
+        instance: usize,
+        call_site: u32,
+    ) -> Result<Flow, FaultKind> {
         let saved = (self.bases, self.sp);
-        let frame = self.push_frame(index)?;
+        let frame = self.push_frame(index, call_site)?;
         self.bases = [0, instance, frame];
-        let result = self.run(index);
+        let result = self.run(index, call_site);
         self.bases = saved.0;
         self.sp = saved.1;
         self.pop_depth();
-        result.map(|()| Flow::Next)
+        result.map(|()| self.after_call())
+    }
+
+    /// How the caller goes on after a call returned: in the debug form from its next
+    /// instruction when the task came to be watched during the call (a step out of the
+    /// callee, for one), else as it was.
+    #[inline(always)]
+    pub(crate) fn after_call(&self) -> Flow {
+        if self.debugging && self.debug.watched(self.task) {
+            Flow::NextWatched
+        } else {
+            Flow::Next
+        }
     }
 }

@@ -1,6 +1,10 @@
-//! The debug variant of running a POU: the task's shadow call stack kept, and at each
-//! statement start a look at the debugger (steps, run to cursor, `HALT`, breakpoints with
-//! their filters, conditions and hit counts), halting there when it says so.
+//! Running a POU while a debug session is active (`docs/debugging.md` §3, "Cost"): every
+//! call keeps the task's shadow call stack; a POU the debugger watches (a breakpoint or flow
+//! recording in it, or its task stepping, running to a cursor or told to halt) runs the debug
+//! form, which at each statement start looks at the debugger (steps, run to cursor, `HALT`,
+//! breakpoints with their filters, conditions and hit counts) and halts there when it says
+//! so; any other runs the light form, which asks nothing and notes its position only at calls
+//! and interruptions.
 
 use std::time::Instant;
 
@@ -11,17 +15,21 @@ use super::lower::Flow;
 use super::view::EngineView;
 
 impl Exec<'_> {
-    /// Notes the start of a cycle run with the debugger: an empty stack and its count.
+    /// Notes the start of a cycle during a session: an empty stack and its count; decides
+    /// whether the cycle runs with the debugger.
     pub(super) fn begin_debug_cycle(&mut self, cycle: u64) {
         if let Some(state) = self.debug.task_mut(self.task) {
             state.stack.clear();
             state.cycle = cycle;
         }
         self.debug.cycle_starts(self.task);
+        self.debugging = self
+            .debug
+            .cycle_needs_debugger(self.task, self.hook.is_some());
     }
 
-    /// Notes the end of a cycle run with the debugger: the flow recording's bits become the
-    /// last complete cycle's.
+    /// Notes the end of a cycle during a session: the flow recording's bits become the last
+    /// complete cycle's.
     pub(super) fn end_debug_cycle(&mut self, cycle: u64) {
         self.debug.end_flow_cycle(self.task, cycle + 1);
     }
@@ -36,10 +44,12 @@ impl Exec<'_> {
         }
     }
 
-    /// Runs POU `index` with the current bases, as [`Exec::run`] does, keeping the task's
-    /// shadow stack and looking at the debugger at each statement start.
+    /// Runs POU `index` with the current bases, as [`Exec::run`] does, while a session is
+    /// active: pushes the POU's frame on the task's shadow stack (the caller's frame notes
+    /// `call_site`), then runs the debug form when the debugger watches the POU or the task
+    /// ([`DebugState::enter_pou`](super::debug::DebugState::enter_pou)), else the light form.
     #[inline(never)]
-    pub(super) fn run_debug(&mut self, index: usize) -> Result<(), FaultKind> {
+    pub(super) fn run_watched(&mut self, index: usize, call_site: u32) -> Result<(), FaultKind> {
         let code = self.code;
         let Some(pou) = code.pous.get(index) else {
             return Err(FaultKind::Memory);
@@ -51,17 +61,19 @@ impl Exec<'_> {
             frame: self.bases[usize::from(FRAME)],
             frame_bytes: pou.frame_size as u32,
         };
-        if let Some(state) = self.debug.task_mut(self.task) {
-            state.stack.push(frame);
-        }
-        let result = self.run_debug_body(index);
-        if let Some(state) = self.debug.task_mut(self.task) {
-            state.stack.pop();
-        }
+        let result = if self.debug.enter_pou(self.task, frame, call_site) {
+            self.run_debug_body(index, 0)
+        } else {
+            self.run_light_body(index)
+        };
+        self.debug.leave_pou(self.task);
         result
     }
 
-    fn run_debug_body(&mut self, index: usize) -> Result<(), FaultKind> {
+    /// The light form: the plain loop of [`Exec::run`], which asks the debugger nothing, but
+    /// goes on in the debug form when the task comes to be watched during a call it makes or
+    /// while it is interrupted at a backward jump.
+    fn run_light_body(&mut self, index: usize) -> Result<(), FaultKind> {
         let code = self.code;
         let Some(pou) = code.pous.get(index) else {
             return Err(FaultKind::Memory);
@@ -69,22 +81,54 @@ impl Exec<'_> {
         let ops = &pou.ops;
         let mut pc = 0usize;
         while let Some(op) = ops.get(pc) {
-            if let Some(top) = self
-                .debug
-                .task_mut(self.task)
-                .and_then(|state| state.stack.last_mut())
-            {
-                top.instruction = pc as u32;
+            match op(self) {
+                Ok(Flow::Next) => pc += 1,
+                Ok(Flow::NextWatched) => return self.run_debug_body(index, pc + 1),
+                Ok(Flow::Jump(target)) => {
+                    let target = target as usize;
+                    if target <= pc {
+                        match self.tick(pc) {
+                            Ok(false) => {}
+                            Ok(true) => return self.run_debug_body(index, target),
+                            Err(fault) => {
+                                self.fault_at.get_or_insert((index, pc));
+                                return Err(fault);
+                            }
+                        }
+                    }
+                    pc = target;
+                }
+                Ok(Flow::Return) => break,
+                Err(fault) => {
+                    if *fault != FaultKind::Abandoned {
+                        self.fault_at.get_or_insert((index, pc));
+                    }
+                    return Err(*fault);
+                }
             }
+        }
+        Ok(())
+    }
+
+    /// The debug form from instruction `start` on: at each statement start, the frame notes
+    /// where the task is and the debugger is asked whether to halt.
+    fn run_debug_body(&mut self, index: usize, start: usize) -> Result<(), FaultKind> {
+        let code = self.code;
+        let Some(pou) = code.pous.get(index) else {
+            return Err(FaultKind::Memory);
+        };
+        let ops = &pou.ops;
+        let mut pc = start;
+        while let Some(op) = ops.get(pc) {
             if pou.statement_starts.get(pc).copied().unwrap_or(false) {
                 self.statement(index, pc)?;
             }
             match op(self) {
-                Ok(Flow::Next) => pc += 1,
+                Ok(Flow::Next | Flow::NextWatched) => pc += 1,
                 Ok(Flow::Jump(target)) => {
                     let target = target as usize;
                     if target <= pc
-                        && let Err(fault) = self.tick()
+                        && let Err(fault) = self.tick(pc)
                     {
                         self.fault_at.get_or_insert((index, pc));
                         return Err(fault);
@@ -103,15 +147,17 @@ impl Exec<'_> {
         Ok(())
     }
 
-    /// The task reached the statement starting at instruction `pc` of POU `pou`: halts
-    /// there when a step, run to cursor, `HALT` or a breakpoint says so.
+    /// The task reached the statement starting at instruction `pc` of POU `pou`: notes it in
+    /// the innermost frame, and halts there when a step, run to cursor, `HALT` or a
+    /// breakpoint says so.
     fn statement(&mut self, pou: usize, pc: usize) -> Result<(), FaultKind> {
-        let Some(state) = self.debug.task(self.task) else {
+        let Some(depth) = self.debug.note_position(self.task, pc as u32) else {
             return Ok(());
         };
-        let depth = state.stack.len();
-        let instance = self.pointer_to(self.bases[usize::from(INSTANCE)]);
-        self.debug.record_flow(self.task, pou, pc as u32, instance);
+        if self.debug.records(pou) {
+            let instance = self.pointer_to(self.bases[usize::from(INSTANCE)]);
+            self.debug.record_flow(self.task, pou, pc as u32, instance);
+        }
         let Some(state) = self.debug.task(self.task) else {
             return Ok(());
         };
@@ -150,10 +196,21 @@ impl Exec<'_> {
                 continue;
             }
             let id = breakpoint.id;
-            let holds = match breakpoint.condition.clone() {
+            // The condition is lent out of its breakpoint while it runs (it calls nothing,
+            // so nothing can look at the breakpoints meanwhile): moving it costs less than
+            // counting a reference to it up and down at every hit.
+            let condition = self
+                .debug
+                .breakpoints_mut()
+                .get_mut(index - 1)
+                .and_then(|breakpoint| breakpoint.condition.take());
+            let holds = match &condition {
                 None => Ok(true),
-                Some(condition) => self.evaluate(&condition, pou),
+                Some(condition) => self.evaluate(condition, pou),
             };
+            if let Some(breakpoint) = self.debug.breakpoints_mut().get_mut(index - 1) {
+                breakpoint.condition = condition;
+            }
             match holds {
                 Ok(false) => continue,
                 Ok(true) => {
@@ -193,7 +250,8 @@ impl Exec<'_> {
         let mut outcome = Ok(());
         while let Some(op) = condition.ops.get(pc) {
             match op(self) {
-                Ok(Flow::Next) => pc += 1,
+                // A condition calls nothing, so it is never told to go on watched.
+                Ok(Flow::Next | Flow::NextWatched) => pc += 1,
                 // The verifier lets a condition jump only forward, so it ends.
                 Ok(Flow::Jump(target)) if target as usize > pc => pc = target as usize,
                 Ok(Flow::Jump(_)) | Ok(Flow::Return) => break,

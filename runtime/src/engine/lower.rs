@@ -19,6 +19,10 @@ use crate::stdlib::convert;
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum Flow {
     Next,
+    /// Go on at the next instruction in the debug form: a call returned and, during it, the
+    /// task came to be watched (a step, run to cursor or halt was given), so its caller must
+    /// see its next statement start (`docs/debugging.md` §3, "Cost").
+    NextWatched,
     Jump(u32),
     Return,
 }
@@ -36,7 +40,7 @@ pub(crate) struct CompiledPou {
     pub(crate) frame_size: usize,
     pub(crate) frame_init: Vec<(usize, Vec<u8>)>,
     /// Per instruction, whether it starts a statement (an entry of the line table), where the
-    /// debug variant asks the debugger whether to halt.
+    /// debug form asks the debugger whether to halt.
     pub(crate) statement_starts: Vec<bool>,
 }
 
@@ -68,7 +72,7 @@ impl Compiled {
             for (index, instr) in pou.code.iter().enumerate() {
                 let op = match instr {
                     Instr::Native { block } => super::native::lower(block, &pou.name, image),
-                    other => lower(other, regions, &sizes),
+                    other => lower(other, regions, &sizes, index as u32),
                 };
                 ops.push(op.map_err(|message| LowerError {
                     pou: pou.name.clone(),
@@ -107,9 +111,11 @@ pub(crate) fn lower_condition(
         .iter()
         .enumerate()
         .map(|(instruction, instr)| {
-            lower(instr, regions, &[]).map_err(|reason| ConditionError::Refused {
-                instruction,
-                reason,
+            lower(instr, regions, &[], instruction as u32).map_err(|reason| {
+                ConditionError::Refused {
+                    instruction,
+                    reason,
+                }
             })
         })
         .collect::<Result<Vec<Op>, ConditionError>>()?;
@@ -180,7 +186,9 @@ macro_rules! dispatch {
     };
 }
 
-fn lower(instr: &Instr, regions: &Regions, sizes: &[usize]) -> Result<Op, String> {
+/// `at` is the instruction's own index in its POU, which a call gives the debugger as the
+/// caller's call site (the instruction a caller's frame shows on the call stack).
+fn lower(instr: &Instr, regions: &Regions, sizes: &[usize], at: u32) -> Result<Op, String> {
     let a = |operand: &Operand| addr(*operand, regions);
     Ok(match instr {
         Instr::Move { ty, dst, src } => dispatch!(all ty, mov(a(dst), a(src))),
@@ -346,12 +354,12 @@ fn lower(instr: &Instr, regions: &Regions, sizes: &[usize]) -> Result<Op, String
             // A pointer to an instance must reach a whole instance of the callee.
             let size = sizes.get(pou).copied().unwrap_or(0);
             Box::new(move |x| {
-                let at = if indirect {
+                let instance_at = if indirect {
                     x.deref(x.get::<u64>(instance)?, size)?
                 } else {
                     x.at(instance)
                 };
-                Ok(x.call_block(pou, at)?)
+                Ok(x.call_block(pou, instance_at, at)?)
             })
         }
         Instr::CallFunction {
@@ -370,7 +378,7 @@ fn lower(instr: &Instr, regions: &Regions, sizes: &[usize]) -> Result<Op, String
                     Some(pointer) => x.deref(x.get::<u64>(pointer)?, size)?,
                     None => x.bases[usize::from(INSTANCE)],
                 };
-                Ok(call_frame(x, pou, this, &inputs, &outputs)?)
+                Ok(call_frame(x, (pou, at), this, &inputs, &outputs)?)
             })
         }
         Instr::CallStdBlock {
@@ -422,7 +430,7 @@ fn lower(instr: &Instr, regions: &Regions, sizes: &[usize]) -> Result<Op, String
                     .map(|(_, method, size)| (*method, *size))
                     .ok_or(FaultKind::BadPointer(pointer))?;
                 let this = x.deref(pointer, size)?;
-                Ok(call_frame(x, method, this, &inputs, &outputs)?)
+                Ok(call_frame(x, (method, at), this, &inputs, &outputs)?)
             })
         }
         Instr::OpenElement {
@@ -506,22 +514,22 @@ fn transfers(list: &[program_image::Transfer], regions: &Regions) -> Vec<(Addr, 
 }
 
 /// Calls a function or method: a new frame, the inputs copied in, the body run on `this`,
-/// the outputs copied out.
+/// the outputs copied out. `call_site` is the call's instruction index in the caller.
 fn call_frame(
     x: &mut Exec<'_>,
-    pou: usize,
+    (pou, call_site): (usize, u32),
     this: usize,
     inputs: &[(Addr, usize, usize)],
     outputs: &[(Addr, usize, usize)],
 ) -> Result<Flow, FaultKind> {
     let saved = (x.bases, x.sp);
-    let frame = x.push_frame(pou)?;
+    let frame = x.push_frame(pou, call_site)?;
     for (caller, offset, size) in inputs {
         let from = x.at(*caller);
         x.copy(frame + offset, from, *size)?;
     }
     x.bases = [0, this, frame];
-    let result = x.run(pou);
+    let result = x.run(pou, call_site);
     x.bases = saved.0;
     if result.is_ok() {
         for (caller, offset, size) in outputs {
@@ -531,7 +539,7 @@ fn call_frame(
     }
     x.sp = saved.1;
     x.pop_depth();
-    result.map(|()| Flow::Next)
+    result.map(|()| x.after_call())
 }
 
 /// Reads a value of type `ty` as raw bits.

@@ -183,23 +183,23 @@ impl EngineView<'_> {
             (due, hook),
             (task, &mut *self.debug),
         );
-        if exec.debugging {
+        if exec.session {
             exec.begin_debug_cycle(cycle);
         }
         for call in &info.programs {
-            if exec.debugging {
+            if exec.session {
                 exec.begin_debug_program();
             }
             let instance = regions.data + call.instance_offset as usize;
-            if let Err(kind) = exec.call_block(call.pou as usize, instance) {
-                if exec.debugging {
+            if let Err(kind) = exec.call_block(call.pou as usize, instance, 0) {
+                if exec.session {
                     exec.debug.cycle_ends(task);
                 }
                 let (pou, instruction) = exec.fault_at.unwrap_or((call.pou as usize, 0));
                 return Err(fault_record(image, task, kind, pou, instruction, cycle));
             }
         }
-        if exec.debugging {
+        if exec.session {
             exec.end_debug_cycle(cycle);
             exec.debug.cycle_ends(task);
         }

@@ -13,6 +13,7 @@ use runtime::engine::{
 
 use super::compile;
 
+mod forms;
 mod motion;
 mod sfc;
 

@@ -89,7 +89,8 @@ pub struct Breakpoint {
     pub spec: BreakpointSpec,
     /// Hits since it was set.
     pub hits: u32,
-    /// The condition, shared so a run of it borrows nothing from the session.
+    /// The condition, shared so a copy of the breakpoint copies no code; lent out of the
+    /// breakpoint while it runs.
     pub(crate) condition: Option<Arc<LoweredCondition>>,
 }
 

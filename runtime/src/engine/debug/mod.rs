@@ -1,16 +1,20 @@
 //! The engine's side of the debug session (`docs/protocol.md` §6, `docs/debugging.md`):
 //! breakpoints, steps, halts and the tasks' call stacks.
 //!
-//! A cycle runs with the debugger only while a session is active; then every POU runs its
-//! "debug variant" (`Exec::run_debug`), which keeps the task's shadow call stack and, at each
-//! statement start, asks [`DebugState`] whether to halt. Without a session the engine runs as
-//! it always did, at the cost of one test per call. A halt hands the cycle's engine to the
+//! A cycle runs with the debugger only while a session is active and something can halt
+//! while it runs ([`DebugState::cycle_needs_debugger`]); then every call pushes its frame on
+//! the task's shadow call stack ([`DebugState::enter_pou`]), and only a POU with a breakpoint
+//! or flow recording, or any POU of a task that is stepping, running to a cursor or told to
+//! halt, runs the debug form (`Exec::run_watched`), which at each statement start asks
+//! [`DebugState`] whether to halt. Any other cycle runs as the engine always did, at the cost
+//! of one test per call. A halt hands the cycle's engine to the
 //! scheduler's [`super::Preempt::halt`], which serves requests and runs other tasks until the
 //! halted task is told to go on; the cycle's Rust stack stays where it is meanwhile.
 
 mod breakpoint;
 mod control;
 mod flow;
+mod reach;
 mod task_debug;
 
 use std::sync::Arc;
@@ -86,6 +90,16 @@ pub struct DebugState {
     breakpoints: Vec<Breakpoint>,
     /// Per POU, whether a breakpoint is in it, so a statement of another POU looks no further.
     pou_has_breakpoint: Vec<bool>,
+    /// Per POU, whether its calls run the debug form: a breakpoint or flow recording is in it
+    /// (kept by [`DebugState::refresh_debug_forms`] whenever either changes).
+    debug_form: Vec<bool>,
+    /// Per task, per POU, whether a cycle of the task may run the POU.
+    task_runs: Vec<Vec<bool>>,
+    /// Per task, whether a breakpoint that accepts it is in a POU it may run (kept with
+    /// `debug_form`).
+    task_may_hit: Vec<bool>,
+    /// Per task, its priority (0 highest): a task is interrupted only by higher ones.
+    task_priorities: Vec<u8>,
     next_id: u16,
     tasks: Vec<TaskDebug>,
     /// The halted tasks in the order they halted: the last one is on top.
@@ -122,6 +136,10 @@ impl DebugState {
             active: false,
             breakpoints: Vec::new(),
             pou_has_breakpoint: vec![false; image.pous.len()],
+            debug_form: vec![false; image.pous.len()],
+            task_runs: reach::pous_run_by_tasks(image),
+            task_may_hit: vec![false; image.tasks.len()],
+            task_priorities: image.tasks.iter().map(|t| t.priority).collect(),
             next_id: 1,
             tasks: image.tasks.iter().map(|_| TaskDebug::new()).collect(),
             halted: Vec::new(),
@@ -186,6 +204,8 @@ impl DebugState {
         self.halted.clear();
         self.flow = None;
         self.pou_recorded.fill(false);
+        self.debug_form.fill(false);
+        self.task_may_hit.fill(false);
         self.halt_all = false;
         self.halt_next_cycle = false;
         self.halt_all_on_halt = false;
@@ -231,7 +251,120 @@ impl DebugState {
             }
         }
         self.flow = (!tracks.is_empty()).then_some(FlowRecording { task, tracks });
+        self.refresh_debug_forms();
         Ok(())
+    }
+
+    /// Recomputes which POUs run the debug form after a breakpoint or the flow recording
+    /// changed (those with a breakpoint or recorded), and which tasks may reach a breakpoint.
+    /// A call decides its form on entry, so a change takes effect from the POU's next call
+    /// on (`docs/debugging.md` §3).
+    fn refresh_debug_forms(&mut self) {
+        for ((form, &breakpoint), &recorded) in self
+            .debug_form
+            .iter_mut()
+            .zip(&self.pou_has_breakpoint)
+            .zip(&self.pou_recorded)
+        {
+            *form = breakpoint || recorded;
+        }
+        for (task, (may_hit, runs)) in self
+            .task_may_hit
+            .iter_mut()
+            .zip(&self.task_runs)
+            .enumerate()
+        {
+            *may_hit = self.breakpoints.iter().any(|breakpoint| {
+                breakpoint
+                    .spec
+                    .task
+                    .is_none_or(|only| usize::from(only) == task)
+                    && runs
+                        .get(breakpoint.spec.pou as usize)
+                        .copied()
+                        .unwrap_or(false)
+            });
+        }
+    }
+
+    /// Whether task `task` may halt: it is watched or may reach a breakpoint.
+    fn may_halt(&self, task: usize) -> bool {
+        self.watched(task) || self.task_may_hit.get(task).copied().unwrap_or(false)
+    }
+
+    /// Whether a cycle of task `task` that starts now runs with the debugger: keeps its
+    /// shadow call stack and lets the POUs the debugger watches run the debug form. It need
+    /// not when nothing can halt while it runs (`docs/debugging.md` §3, "Cost"): the task may
+    /// reach no breakpoint and is not watched, no flow recording is of it, no "halt all" is
+    /// on and, when it can be `interrupted`, no task of higher priority may halt (a task
+    /// waiting beneath a halted one shows its call stack too). Nothing of this changes until
+    /// a task halts, since requests are served only between cycles and during halts.
+    pub(crate) fn cycle_needs_debugger(&self, task: usize, interrupted: bool) -> bool {
+        if !self.active {
+            return false;
+        }
+        if self.halt_all
+            || self.halt_next_cycle
+            || self.may_halt(task)
+            || self.flow.as_ref().is_some_and(|flow| flow.task == task)
+        {
+            return true;
+        }
+        let priority = self.task_priorities.get(task).copied().unwrap_or(0);
+        interrupted
+            && (0..self.tasks.len()).any(|other| {
+                other != task
+                    && self.task_priorities.get(other).copied().unwrap_or(u8::MAX) < priority
+                    && self.may_halt(other)
+            })
+    }
+
+    /// Task `task` enters a POU whose frame is `frame`, called from instruction `call_site`
+    /// of the POU on top of its shadow stack: the caller's frame notes the call site and the
+    /// new frame goes on top. Says whether the POU runs the debug form: it has a breakpoint or
+    /// is recorded, or the task is watched ([`DebugState::watched`]).
+    #[inline(always)]
+    pub(crate) fn enter_pou(&mut self, task: usize, frame: StackFrame, call_site: u32) -> bool {
+        let Some(state) = self.tasks.get_mut(task) else {
+            return false;
+        };
+        if let Some(caller) = state.stack.last_mut() {
+            caller.instruction = call_site;
+        }
+        state.stack.push(frame);
+        state.pending != Pending::Nothing
+            || self
+                .debug_form
+                .get(frame.pou as usize)
+                .copied()
+                .unwrap_or(false)
+    }
+
+    /// Task `task` leaves the POU on top of its shadow stack.
+    #[inline(always)]
+    pub(crate) fn leave_pou(&mut self, task: usize) {
+        if let Some(state) = self.tasks.get_mut(task) {
+            state.stack.pop();
+        }
+    }
+
+    /// Whether every POU task `task` runs must run the debug form: it is stepping, running to
+    /// a cursor or told to halt, so any statement start may be where it halts.
+    #[inline(always)]
+    pub(crate) fn watched(&self, task: usize) -> bool {
+        self.tasks
+            .get(task)
+            .is_some_and(|state| state.pending != Pending::Nothing)
+    }
+
+    /// Notes that task `task` stands at instruction `instruction` of the POU on top of its
+    /// shadow stack; returns the stack's depth, `None` when the task is unknown.
+    pub(crate) fn note_position(&mut self, task: usize, instruction: u32) -> Option<usize> {
+        let state = self.tasks.get_mut(task)?;
+        if let Some(top) = state.stack.last_mut() {
+            top.instruction = instruction;
+        }
+        Some(state.stack.len())
     }
 
     /// The flow recording, if one is configured.
@@ -239,10 +372,15 @@ impl DebugState {
         self.flow.as_ref()
     }
 
+    /// Whether the flow recording lists POU `pou` (for some task).
+    pub(crate) fn records(&self, pou: usize) -> bool {
+        self.pou_recorded.get(pou).copied().unwrap_or(false)
+    }
+
     /// Notes that task `task` started the statement at instruction `instruction` of POU `pou`
     /// on the instance whose pointer value is `instance`.
     pub(crate) fn record_flow(&mut self, task: usize, pou: usize, instruction: u32, instance: u64) {
-        if !self.pou_recorded.get(pou).copied().unwrap_or(false) {
+        if !self.records(pou) {
             return;
         }
         let (Some(flow), Some(entries)) = (self.flow.as_mut(), self.entries.get(pou)) else {
@@ -395,16 +533,18 @@ impl DebugState {
             hits: 0,
             condition: condition.map(Arc::new),
         };
-        match same {
+        let replaced = match same {
             Some(index) => {
                 self.breakpoints[index] = breakpoint;
-                Ok((id, true))
+                true
             }
             None => {
                 self.breakpoints.push(breakpoint);
-                Ok((id, false))
+                false
             }
-        }
+        };
+        self.refresh_debug_forms();
+        Ok((id, replaced))
     }
 
     /// Removes breakpoint `id`, or every breakpoint with 0xFFFF.
@@ -428,6 +568,7 @@ impl DebugState {
                 *flag = true;
             }
         }
+        self.refresh_debug_forms();
         Ok(())
     }
 

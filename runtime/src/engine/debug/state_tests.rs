@@ -61,3 +61,59 @@ fn ending_the_session_forgets_breakpoints_steps_and_halts() {
     assert!(!debug.active() && !debug.holding() && !debug.is_halted(2));
     assert!(debug.generation() != generation);
 }
+
+#[test]
+fn a_cycle_runs_with_the_debugger_only_when_something_can_halt_while_it_runs() {
+    // Task i runs POU i; task 2 has the highest priority, task 0 the lowest.
+    let tasks = [
+        TestTask::cyclic(1_000_000, 3),
+        TestTask::cyclic(1_000_000, 2),
+        TestTask::cyclic(1_000_000, 1),
+    ];
+    let mut image = image(&tasks, &[]);
+    for pou in &mut image.pous {
+        pou.lines = vec![program_image::LineEntry {
+            index: 0,
+            file: 0,
+            line: 1,
+        }];
+    }
+    let mut debug = DebugState::new(&image);
+    let needs = |debug: &DebugState, interrupted| -> Vec<bool> {
+        (0..3)
+            .map(|task| debug.cycle_needs_debugger(task, interrupted))
+            .collect()
+    };
+    let spec = |pou: u32, task: Option<u8>| BreakpointSpec {
+        pou,
+        instruction: 0,
+        instance: 0,
+        task,
+        hit_mode: HitMode::Always,
+        hit_target: 0,
+        condition: Vec::new(),
+    };
+    // No session, then a session with nothing set: no cycle needs it.
+    debug.insert_breakpoint(spec(1, None), None).expect("set");
+    assert_eq!(needs(&debug, true), [false; 3]);
+    debug.end_session();
+    debug.begin_session();
+    assert_eq!(needs(&debug, true), [false; 3]);
+    // A breakpoint in task 1's POU: task 1, and task 0 when task 1 may interrupt it.
+    let (id, _) = debug.insert_breakpoint(spec(1, None), None).expect("set");
+    assert_eq!(needs(&debug, true), [true, true, false]);
+    assert_eq!(needs(&debug, false), [false, true, false]);
+    // The same breakpoint for task 0 only: no task reaches it.
+    debug
+        .insert_breakpoint(spec(1, Some(0)), None)
+        .expect("set");
+    debug.clear_breakpoint(id).expect("cleared");
+    assert_eq!(needs(&debug, true), [false; 3]);
+    debug.clear_breakpoint(0xFFFF).expect("cleared");
+    // Flow recording of task 2, and a halt asked of task 1.
+    debug.configure_flow(2, &[(2, 0)]).expect("configured");
+    assert_eq!(needs(&debug, false), [false, false, true]);
+    debug.halt_task(1).expect("task 1 exists");
+    assert_eq!(needs(&debug, false), [false, true, true]);
+    assert_eq!(needs(&debug, true), [true, true, true]);
+}
