@@ -139,6 +139,15 @@ fn a_halt_shows_its_statement_and_a_callers_frame_opens_the_caller_at_the_call()
     let marks = harness.state().body_debug_marks(&conveyor).unwrap();
     assert_eq!(marks.halt_line, Some(2));
     assert!(!marks.halt_is_caller);
+    // The caret is at the statement's start, nothing selected (the line is marked already).
+    let caret = harness.state().body_selection(&conveyor).unwrap();
+    assert!(caret.is_empty(), "{caret:?}");
+    let text = pou_text(harness.state(), "FB_Conveyor");
+    assert!(
+        text[caret.start..].starts_with("xRunRequest := FALSE;"),
+        "{:?}",
+        &text[caret.start..]
+    );
 
     // The call stack lists both frames; the caller's opens Main at the call.
     harness.get_by_label("Main.fbConveyor (FB_Conveyor) application/FB_Conveyor.st:3");
@@ -158,19 +167,18 @@ fn a_halt_shows_its_statement_and_a_callers_frame_opens_the_caller_at_the_call()
     assert_eq!(marks.halt_line, Some(1));
     assert!(marks.halt_is_caller);
     let selection = harness.state().body_selection(&main_target()).unwrap();
-    let body = harness
-        .state()
-        .session()
-        .unwrap()
-        .project
-        .application
-        .object("Main");
-    let text = match body {
-        Some(project_model::Object::Pou(pou)) => pou.body.st_text().unwrap().to_owned(),
-        _ => panic!("Main is a POU"),
-    };
+    let text = pou_text(harness.state(), "Main");
     assert_eq!(text[..selection.start].matches('\n').count(), 1);
+    assert!(selection.is_empty(), "{selection:?}");
     assert_eq!(harness.state().debug_state().shown(), Some(("MainTask", 1)));
+}
+
+/// The Structured Text body of POU `pou` as the open project has it.
+fn pou_text(app: &StudioApp, pou: &str) -> String {
+    match app.session().unwrap().project.application.object(pou) {
+        Some(project_model::Object::Pou(pou)) => pou.body.st_text().unwrap().to_owned(),
+        _ => panic!("{pou} is a POU"),
+    }
 }
 
 #[test]
