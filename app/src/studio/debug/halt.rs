@@ -22,10 +22,20 @@ pub struct StackFrame {
 pub struct HaltedTask {
     /// The task's name.
     pub task: String,
-    /// The halted task this one waits beneath, if it is not halted itself.
-    pub beneath: Option<String>,
+    /// What this task waits beneath, if it is not halted itself.
+    pub beneath: Option<Beneath>,
     /// Its frames, innermost first.
     pub frames: Vec<StackFrame>,
+}
+
+/// What a waiting task waits beneath, as exactly as the target's reports tell it.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Beneath {
+    /// The one halted task (with a single halted task there is no other it could wait for).
+    Task(String),
+    /// One of several halted tasks: `HALT_STATE` does not say in which order their cycles
+    /// nest on the scheduler thread, so the studio names none rather than guess.
+    AHaltedTask,
 }
 
 /// The debugging state of the session, replaced as the online layer reports; lives while the
@@ -221,7 +231,7 @@ mod tests {
         vec![
             HaltedTask {
                 task: "Slow".to_owned(),
-                beneath: Some("Fast".to_owned()),
+                beneath: Some(Beneath::Task("Fast".to_owned())),
                 frames: vec![frame("Main", "application/Main.st", 2)],
             },
             HaltedTask {

@@ -16,6 +16,6 @@ pub use breakpoint::{Breakpoint, BreakpointPlace, HitMode};
 pub use breakpoints::{Breakpoints, statement_line, statement_lines, statement_of_place};
 pub use command::{DebugCommand, DebugTarget};
 pub use graphical_place::{GraphicalPlace, body_name, body_target, has_statement, place_at_line};
-pub use halt::{DebugState, HaltedTask, StackFrame};
+pub use halt::{Beneath, DebugState, HaltedTask, StackFrame};
 pub use reported::{flow_lines, halted_tasks};
 pub use target_breakpoint::{breakpoint_spec, breakpoint_statement};

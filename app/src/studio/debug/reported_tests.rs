@@ -61,7 +61,7 @@ fn frames_are_named_by_pou_instance_file_and_line_and_a_waiting_task_is_beneath_
     ];
     let tasks = halted_tasks(&image, &reported);
     assert_eq!(tasks[0].task, "MotionTask");
-    assert_eq!(tasks[0].beneath.as_deref(), Some("MainTask"));
+    assert_eq!(tasks[0].beneath, Some(Beneath::Task("MainTask".to_owned())));
     assert_eq!(tasks[1].beneath, None);
     assert_eq!(
         tasks[1].frames[0],
@@ -76,6 +76,28 @@ fn frames_are_named_by_pou_instance_file_and_line_and_a_waiting_task_is_beneath_
         (tasks[1].frames[1].pou.as_str(), tasks[1].frames[1].line),
         ("Main", 2)
     );
+}
+
+#[test]
+fn a_task_waiting_while_two_tasks_are_halted_names_neither_as_what_it_waits_beneath() {
+    let image = image();
+    let task = |index: u8, state: TaskDebugState| ReportedTask {
+        halt: halt(index, state),
+        frames: Vec::new(),
+    };
+    // The target does not say whether task 2 waits beneath task 0's cycle or task 1's.
+    let reported = vec![
+        task(0, TaskDebugState::Halted),
+        task(1, TaskDebugState::Halted),
+        task(2, TaskDebugState::Waiting),
+    ];
+    let tasks = halted_tasks(&image, &reported);
+    assert_eq!(
+        (tasks[0].beneath.clone(), tasks[1].beneath.clone()),
+        (None, None)
+    );
+    assert_eq!(tasks[2].task, "#2");
+    assert_eq!(tasks[2].beneath, Some(Beneath::AHaltedTask));
 }
 
 #[test]
