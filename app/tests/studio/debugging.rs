@@ -398,3 +398,86 @@ fn in_the_simulator_a_method_halted_in_shows_its_locals_from_its_frame() {
             .any(|(name, value)| name == "Reset" && value == "FALSE")
     });
 }
+
+#[test]
+fn in_the_simulator_flow_control_marks_the_programs_of_both_tasks() {
+    let project = example_copy(|_| {});
+    let mut harness = studio(project.path());
+    harness.state_mut().build();
+    wait_until(&mut harness, "the build", |app| {
+        app.last_build().is_some_and(|build| build.image.is_some())
+    });
+    open_main_at_start(&mut harness);
+    // MotionControl runs in MotionTask, Main in MainTask.
+    harness.get_by_label("MotionControl").focus();
+    harness.step();
+    harness.key_press(Key::Enter);
+    harness.step();
+    harness.step();
+    login_with_download(&mut harness);
+    harness.key_press(Key::F5);
+    harness.get_by_label("Debug").click();
+    harness.run();
+    harness.get_by_label("Flow control").click();
+    harness.step();
+    // MotionControl's editor is in front: its first line runs every cycle of MotionTask.
+    let motion = TextTarget::Pou("MotionControl".to_owned());
+    wait_until(&mut harness, "the flow marks of MotionControl", |app| {
+        app.body_debug_marks(&motion)
+            .is_some_and(|marks| marks.flow_lines.contains(&0))
+    });
+    // Main's editor, brought to the front by its tab, marks the call on line 2 of MainTask.
+    for node in harness.query_all_by_label("Main") {
+        node.click();
+    }
+    harness.step();
+    harness.step();
+    wait_until(&mut harness, "the flow marks of Main", |app| {
+        app.body_debug_marks(&main_target())
+            .is_some_and(|marks| marks.flow_lines.contains(&1))
+    });
+}
+
+#[test]
+fn in_the_simulator_flow_while_halted_marks_the_halted_cycle_so_far() {
+    let project = example_copy(|_| {});
+    let mut harness = studio(project.path());
+    harness.state_mut().build();
+    wait_until(&mut harness, "the build", |app| {
+        app.last_build().is_some_and(|build| build.image.is_some())
+    });
+    open_main_at_start(&mut harness);
+    login_with_download(&mut harness);
+    harness.key_press(Key::F5);
+    harness.get_by_label("Debug").click();
+    harness.run();
+    harness.get_by_label("Flow control").click();
+    harness.step();
+    // Line 12 runs every cycle, so a complete cycle marks it.
+    wait_until(&mut harness, "the flow marks of a complete cycle", |app| {
+        app.body_debug_marks(&main_target())
+            .is_some_and(|marks| marks.flow_lines.contains(&11))
+    });
+    // A breakpoint on line 7 halts the cycle before line 12 runs.
+    harness.get_by_label("Implementation of Main").click();
+    harness.step();
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::Home);
+    harness.step();
+    for _ in 0..6 {
+        harness.key_press(Key::ArrowDown);
+        harness.step();
+    }
+    press(&mut harness, Modifiers::NONE, Key::F9);
+    assert_eq!(
+        breakpoints(harness.state()),
+        vec![Breakpoint::at(main_place(7))]
+    );
+    wait_for_halt_at(&mut harness, "Main", 6);
+    wait_until(&mut harness, "the flow marks of the halted cycle", |app| {
+        app.body_debug_marks(&main_target()).is_some_and(|marks| {
+            marks.flow_lines.contains(&1)
+                && marks.flow_lines.contains(&6)
+                && !marks.flow_lines.contains(&11)
+        })
+    });
+}

@@ -61,10 +61,11 @@ fn stack_frame(image: &ProgramImage, frame: &online::StackFrame) -> StackFrame {
 }
 
 /// The lines whose statements ran, per body file, from the flow bitmaps of the configured
-/// POUs (bit `i` of a POU's bitmap is its line-table entry `i`).
-pub fn flow_lines(
+/// POUs (bit `i` of a POU's bitmap is its line-table entry `i`); a POU recorded in several
+/// tasks has a line that ran in any of them.
+pub fn flow_lines<'a>(
     image: &ProgramImage,
-    bitmaps: &[(FlowEntry, FlowBitmap)],
+    bitmaps: impl IntoIterator<Item = (&'a FlowEntry, &'a FlowBitmap)>,
 ) -> Vec<(String, Vec<u32>)> {
     let mut files: Vec<(String, Vec<u32>)> = Vec::new();
     for (entry, bitmap) in bitmaps {

@@ -108,22 +108,20 @@ fn flow_bits_become_the_lines_of_their_statements_per_file() {
     // The first and third statements of Main ran.
     let mut bitmap = vec![0u8; entries.len().div_ceil(8)];
     bitmap[0] = 0b101;
-    let bitmaps = vec![(
-        FlowEntry {
-            pou: main.pou,
-            instance: 0,
-        },
-        FlowBitmap {
-            cycle: 4,
-            statements: entries.len() as u32,
-            bitmap,
-        },
-    )];
+    let entry = FlowEntry {
+        pou: main.pou,
+        instance: 0,
+    };
+    let bitmap = FlowBitmap {
+        cycle: 4,
+        statements: entries.len() as u32,
+        bitmap,
+    };
     let mut expected = vec![entries[0].line, entries[2].line];
     expected.sort_unstable();
     expected.dedup();
     assert_eq!(
-        flow_lines(&image, &bitmaps),
+        flow_lines(&image, [(&entry, &bitmap)]),
         vec![("application/Main.st".to_owned(), expected)]
     );
 }

@@ -11,7 +11,7 @@ use super::{Online, Phase};
 use crate::debug_bodies::GraphicalBodies;
 use crate::studio::debug::{
     Breakpoint, BreakpointPlace, DebugCommand, DebugTarget, HaltedTask, breakpoint_spec,
-    breakpoint_statement, flow_lines, halted_tasks,
+    breakpoint_statement, flow_entries, flow_lines, halted_tasks,
 };
 use crate::studio::i18n::DebugText;
 
@@ -198,8 +198,9 @@ impl Online {
     }
 
     /// Takes the session's flow bitmaps.
-    pub(super) fn debug_flow(&mut self, bitmaps: &[(FlowEntry, FlowBitmap)]) {
+    pub(super) fn debug_flow(&mut self, bitmaps: &[(u8, FlowEntry, FlowBitmap)]) {
         if let Some(image) = &self.image {
+            let bitmaps = bitmaps.iter().map(|(_, entry, bitmap)| (entry, bitmap));
             self.debugging.flow = Some(flow_lines(&image.program, bitmaps));
         }
     }
@@ -245,56 +246,17 @@ impl Online {
         }
     }
 
-    /// Configures flow recording for the bodies asked for, in the task that calls the first
-    /// of them (bodies of other tasks are left out: the target records one task at a time).
+    /// Configures flow recording for the bodies asked for, in every task that runs each one
+    /// (`flow_entries`); a task that runs none of them ends its recording.
     fn send_flow(&mut self) {
         let Some(image) = &self.image else { return };
-        let program = &image.program;
-        let mut task = None;
-        let mut entries = Vec::new();
-        for (pou_name, instance) in &self.debugging.flow_bodies {
-            let Some(pou) = program
-                .pous
-                .iter()
-                .position(|pou| pou.name.eq_ignore_ascii_case(pou_name))
-            else {
-                continue;
-            };
-            let root = instance
-                .as_deref()
-                .unwrap_or(pou_name)
-                .split('.')
-                .next()
-                .unwrap_or_default();
-            let Some(body_task) = program.tasks.iter().position(|task| {
-                task.programs.iter().any(|call| {
-                    program
-                        .pous
-                        .get(call.pou as usize)
-                        .is_some_and(|called| called.name.eq_ignore_ascii_case(root))
-                })
-            }) else {
-                continue;
-            };
-            if *task.get_or_insert(body_task) != body_task {
-                continue;
-            }
-            let pointer = instance
-                .as_deref()
-                .and_then(|path| runtime::value::resolve(program, path).ok())
-                .filter(|place| place.region == program_image::Region::Data)
-                .map_or(0, |place| (1 << 56) | place.offset);
-            entries.push(FlowEntry {
-                pou: pou as u32,
-                instance: pointer,
-            });
-        }
-        let entries: Vec<FlowEntry> = entries.into_iter().take(online::MAX_FLOW_ENTRIES).collect();
-        let task = task.and_then(|task| u8::try_from(task).ok()).unwrap_or(0);
-        if entries.is_empty() {
+        let tasks = flow_entries(&image.program, &self.debugging.flow_bodies);
+        if tasks.iter().all(|(_, entries)| entries.is_empty()) {
             self.debugging.flow = Some(Vec::new());
         }
-        self.send_debug(SessionCommand::Flow { task, entries });
+        for (task, entries) in tasks {
+            self.send_debug(SessionCommand::Flow { task, entries });
+        }
     }
 
     /// Sends a command for the task whose frame is shown.
