@@ -481,3 +481,48 @@ fn in_the_simulator_flow_while_halted_marks_the_halted_cycle_so_far() {
         })
     });
 }
+
+#[test]
+fn in_the_simulator_a_condition_that_does_not_compile_is_named_under_its_breakpoint() {
+    let project = example_copy(|_| {});
+    let mut list = app::studio::Breakpoints::default();
+    let mut broken = Breakpoint::at(main_place(2));
+    broken.condition = "xNoSuchVariable AND".to_owned();
+    list.toggle(main_place(2));
+    list.update(broken);
+    let mut settings = app::studio::Settings::default();
+    settings
+        .breakpoints
+        .insert(app::studio::Settings::project_key(project.path()), list);
+    let app = StudioApp::new(settings, Some(project.path().to_owned()));
+    let mut harness = Harness::builder()
+        .with_size([1400.0, 900.0])
+        .build_ui_state(|ui, app: &mut StudioApp| app.ui(ui), app);
+    harness.step();
+    harness.state_mut().build();
+    wait_until(&mut harness, "the build", |app| {
+        app.last_build().is_some_and(|build| build.image.is_some())
+    });
+    login_with_download(&mut harness);
+    // The condition compiles on a worker thread; its error then names the breakpoint.
+    wait_until(&mut harness, "the condition's error", |app| {
+        app.online().breakpoint_problem(&main_place(2)).is_some()
+    });
+    let problem = harness
+        .state()
+        .online()
+        .breakpoint_problem(&main_place(2))
+        .unwrap()
+        .to_owned();
+    assert!(problem.contains("application/Main.st:2"), "{problem}");
+    assert!(problem.contains("xNoSuchVariable AND"), "{problem}");
+    // The Breakpoints pane shows it under the breakpoint, besides the status line.
+    let shown = |harness: &Harness<'_, StudioApp>| harness.query_all_by_label(&problem).count();
+    let elsewhere = shown(&harness);
+    harness.get_by_label("Debug").click();
+    harness.run();
+    harness.get_by_label("Breakpoints").click();
+    harness.step();
+    harness.step();
+    assert_eq!(shown(&harness), elsewhere + 1);
+}

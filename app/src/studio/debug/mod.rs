@@ -7,6 +7,7 @@
 mod breakpoint;
 mod breakpoints;
 mod command;
+mod condition_cache;
 mod flow_entries;
 mod graphical_place;
 mod halt;
@@ -16,8 +17,9 @@ mod target_breakpoint;
 pub use breakpoint::{Breakpoint, BreakpointPlace, HitMode};
 pub use breakpoints::{Breakpoints, statement_line, statement_lines, statement_of_place};
 pub use command::{DebugCommand, DebugTarget};
+pub use condition_cache::{ConditionCache, ConditionKey, compile_condition};
 pub use flow_entries::flow_entries;
 pub use graphical_place::{GraphicalPlace, body_name, body_target, has_statement, place_at_line};
 pub use halt::{Beneath, DebugState, HaltedTask, StackFrame};
 pub use reported::{flow_lines, halted_tasks};
-pub use target_breakpoint::{breakpoint_spec, breakpoint_statement};
+pub use target_breakpoint::{breakpoint_spec_with, breakpoint_statement, condition_key};
