@@ -127,6 +127,49 @@ pub fn place_at_line(body: &LoweredBody, line: u32) -> Option<editor::BodyPlace>
     }
 }
 
+/// The network and element of every line of a lowered body's text, worked out in one pass
+/// when the body is lowered (a project revision), so the marks of a halt and of every flow
+/// line are looked up each frame rather than searched for in the text.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct BodyLines {
+    /// The lowered text's file as the image's line table names it (`/` between folders).
+    pub text_file: String,
+    /// Line by line (line 1 first), the place its statement comes from.
+    places: Vec<Option<editor::BodyPlace>>,
+}
+
+impl BodyLines {
+    /// The places of every line of `body`'s lowered text.
+    pub fn of(body: &LoweredBody) -> Self {
+        let mut start = 0;
+        let places = body
+            .text
+            .split_inclusive('\n')
+            .map(|text| {
+                // The statement of a line, as `LoweredBody::origin_at_line` takes it.
+                let offset = start + (text.len() - text.trim_start().len());
+                start += text.len();
+                match body.origins.origin(offset..offset + text.trim().len())? {
+                    Origin::Element {
+                        network, element, ..
+                    } => Some(editor::BodyPlace { network, element }),
+                    Origin::Text { .. } => None,
+                }
+            })
+            .collect();
+        Self {
+            text_file: body.text_file.to_string_lossy().replace('\\', "/"),
+            places,
+        }
+    }
+
+    /// The place of line `line` (from 1), as [`place_at_line`] gives it.
+    pub fn place_at(&self, line: u32) -> Option<editor::BodyPlace> {
+        let index = usize::try_from(line).ok()?.checked_sub(1)?;
+        self.places.get(index).copied().flatten()
+    }
+}
+
 /// Whether some statement of `body` comes from `place`: an element computed inside another's
 /// statement (an operator box such as ADD feeding a coil) has none, nor has an empty network.
 pub fn has_statement(body: &LoweredBody, place: editor::BodyPlace) -> bool {

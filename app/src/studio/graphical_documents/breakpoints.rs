@@ -25,13 +25,10 @@ pub(super) fn body_marks(
     pou: &str,
     target: &TextTarget,
 ) -> (String, editor::BodyDebugMarks) {
-    let file = pou_file(project, pou);
+    let file = lowering.pou_file(project, revision, pou).to_owned();
     let debugging = !view.debug.halted().is_empty() || view.debug.flow_control;
-    let lowered = if debugging {
-        lowering
-            .bodies(project, revision)
-            .iter()
-            .find(|body| body.target == *target)
+    let lines = if debugging {
+        lowering.body_lines(project, revision, target)
     } else {
         None
     };
@@ -39,7 +36,7 @@ pub(super) fn body_marks(
     let marks = view.debug.body_marks_for(
         &file,
         &body_name(target),
-        lowered,
+        lines,
         view.breakpoints().unwrap_or(&no_breakpoints),
     );
     (file, marks)
