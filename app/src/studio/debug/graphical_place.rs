@@ -163,22 +163,20 @@ impl BodyLines {
         }
     }
 
+    /// Whether some line's statement comes from `place`: an element computed inside another's
+    /// statement (an operator box such as ADD feeding a coil) has none, nor has an empty
+    /// network.
+    pub fn has_statement(&self, place: editor::BodyPlace) -> bool {
+        self.places.iter().flatten().any(|at| {
+            at.network == place.network && (place.element.is_none() || at.element == place.element)
+        })
+    }
+
     /// The place of line `line` (from 1), as [`place_at_line`] gives it.
     pub fn place_at(&self, line: u32) -> Option<editor::BodyPlace> {
         let index = usize::try_from(line).ok()?.checked_sub(1)?;
         self.places.get(index).copied().flatten()
     }
-}
-
-/// Whether some statement of `body` comes from `place`: an element computed inside another's
-/// statement (an operator box such as ADD feeding a coil) has none, nor has an empty network.
-pub fn has_statement(body: &LoweredBody, place: editor::BodyPlace) -> bool {
-    let lines = body.text.lines().count() as u32;
-    (1..=lines).any(|line| {
-        place_at_line(body, line).is_some_and(|at| {
-            at.network == place.network && (place.element.is_none() || at.element == place.element)
-        })
-    })
 }
 
 #[cfg(test)]

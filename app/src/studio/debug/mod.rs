@@ -19,9 +19,7 @@ pub use breakpoints::{Breakpoints, statement_line, statement_lines, statement_of
 pub use command::{DebugCommand, DebugTarget};
 pub use condition_cache::{ConditionCache, ConditionKey, compile_condition};
 pub use flow_entries::flow_entries;
-pub use graphical_place::{
-    BodyLines, GraphicalPlace, body_name, body_target, has_statement, place_at_line,
-};
+pub use graphical_place::{BodyLines, GraphicalPlace, body_name, body_target, place_at_line};
 pub use halt::{Beneath, DebugState, HaltedTask, StackFrame};
 pub use reported::{flow_lines, halted_tasks};
 pub use target_breakpoint::{breakpoint_spec_with, breakpoint_statement, condition_key};

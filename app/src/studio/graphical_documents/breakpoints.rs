@@ -2,13 +2,10 @@
 //! breakpoint place of the body's `.pou.toml` file, refused with the reason when it has no
 //! statement of its own.
 
-use compiler::lower::LoweredBody;
 use project_model::{Object, Project, TextTarget};
 
 use crate::studio::command::{Command, Commands};
-use crate::studio::debug::{
-    BreakpointPlace, Breakpoints, GraphicalPlace, body_name, has_statement,
-};
+use crate::studio::debug::{BreakpointPlace, Breakpoints, GraphicalPlace, body_name};
 use crate::studio::i18n::{DebugText, Language};
 use crate::studio::view::StudioView;
 
@@ -64,12 +61,9 @@ pub(super) fn toggle_breakpoint(
     (project, revision): (&Project, u64),
     language: Language,
 ) {
-    let lowered = lowering
-        .bodies(project, revision)
-        .iter()
-        .find(|body| body.target == *target);
+    let lines = lowering.body_lines(project, revision, target);
     let graphical = GraphicalPlace::of_editor(target, place);
-    if lowered.is_some_and(|body: &LoweredBody| !has_statement(body, place)) {
+    if lines.is_some_and(|lines| !lines.has_statement(place)) {
         let what = graphical.command_line();
         commands.error(DebugText::NoElementStatement.fill(language, &[("place", &what)]));
         return;
