@@ -132,12 +132,12 @@ pub enum Event {
     /// The halted tasks (and those waiting beneath them) with their call stacks, sent when the
     /// target's halt state changed; empty when no task is halted any more.
     Halted(Vec<HaltedTask>),
-    /// The flow bitmaps of the last complete cycle of `task`, one per configured entry.
+    /// The flow bitmaps of every recording task, one per configured entry: of the task's
+    /// last complete cycle, or of its cycle so far while it is halted or waits beneath a
+    /// halted task.
     Flow {
-        /// The task recorded.
-        task: u8,
-        /// Each entry with its bitmap, in the order they were configured.
-        bitmaps: Vec<(FlowEntry, FlowBitmap)>,
+        /// Each entry with its task and bitmap, in task order, then in the order configured.
+        bitmaps: Vec<(u8, FlowEntry, FlowBitmap)>,
     },
     /// The answer to [`DebugCommand::SetBreakpoints`]: each breakpoint's id or why the target
     /// refused it, in the order given.
@@ -258,7 +258,7 @@ async fn run(
                             continue 'connect;
                         }
                         Err(error) => {
-                            debugging.flow = None;
+                            debugging.flow.clear();
                             let _ = events.send(Event::DebugFailed(error.to_string())).await;
                         }
                     }

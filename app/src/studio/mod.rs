@@ -50,7 +50,7 @@ use std::path::PathBuf;
 pub use build_job::{BuildMessage, BuildOutcome};
 pub use cycle_plot::{CYCLE_HISTORY_POINTS, CycleFigures, CycleHistory, CyclePoint, cycle_plot_ui};
 pub use debug::{
-    Breakpoint, BreakpointPlace, Breakpoints, DebugCommand, DebugState, DebugTarget,
+    Beneath, Breakpoint, BreakpointPlace, Breakpoints, DebugCommand, DebugState, DebugTarget,
     GraphicalPlace, HaltedTask, HitMode, StackFrame, place_at_line,
 };
 pub use dock::Dock;

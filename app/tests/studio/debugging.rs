@@ -139,6 +139,15 @@ fn a_halt_shows_its_statement_and_a_callers_frame_opens_the_caller_at_the_call()
     let marks = harness.state().body_debug_marks(&conveyor).unwrap();
     assert_eq!(marks.halt_line, Some(2));
     assert!(!marks.halt_is_caller);
+    // The caret is at the statement's start, nothing selected (the line is marked already).
+    let caret = harness.state().body_selection(&conveyor).unwrap();
+    assert!(caret.is_empty(), "{caret:?}");
+    let text = pou_text(harness.state(), "FB_Conveyor");
+    assert!(
+        text[caret.start..].starts_with("xRunRequest := FALSE;"),
+        "{:?}",
+        &text[caret.start..]
+    );
 
     // The call stack lists both frames; the caller's opens Main at the call.
     harness.get_by_label("Main.fbConveyor (FB_Conveyor) application/FB_Conveyor.st:3");
@@ -156,19 +165,18 @@ fn a_halt_shows_its_statement_and_a_callers_frame_opens_the_caller_at_the_call()
     assert_eq!(marks.halt_line, Some(1));
     assert!(marks.halt_is_caller);
     let selection = harness.state().body_selection(&main_target()).unwrap();
-    let body = harness
-        .state()
-        .session()
-        .unwrap()
-        .project
-        .application
-        .object("Main");
-    let text = match body {
-        Some(project_model::Object::Pou(pou)) => pou.body.st_text().unwrap().to_owned(),
-        _ => panic!("Main is a POU"),
-    };
+    let text = pou_text(harness.state(), "Main");
     assert_eq!(text[..selection.start].matches('\n').count(), 1);
+    assert!(selection.is_empty(), "{selection:?}");
     assert_eq!(harness.state().debug_state().shown(), Some(("MainTask", 1)));
+}
+
+/// The Structured Text body of POU `pou` as the open project has it.
+fn pou_text(app: &StudioApp, pou: &str) -> String {
+    match app.session().unwrap().project.application.object(pou) {
+        Some(project_model::Object::Pou(pou)) => pou.body.st_text().unwrap().to_owned(),
+        _ => panic!("{pou} is a POU"),
+    }
 }
 
 #[test]
@@ -391,4 +399,132 @@ fn in_the_simulator_a_method_halted_in_shows_its_locals_from_its_frame() {
             .iter()
             .any(|(name, value)| name == "Reset" && value == "FALSE")
     });
+}
+
+#[test]
+fn in_the_simulator_flow_control_marks_the_programs_of_both_tasks() {
+    let project = example_copy(|_| {});
+    let mut harness = studio(project.path());
+    harness.state_mut().build();
+    wait_until(&mut harness, "the build", |app| {
+        app.last_build().is_some_and(|build| build.image.is_some())
+    });
+    open_main_at_start(&mut harness);
+    // MotionControl runs in MotionTask, Main in MainTask.
+    harness.get_by_label("MotionControl").focus();
+    harness.step();
+    harness.key_press(Key::Enter);
+    harness.step();
+    harness.step();
+    login_with_download(&mut harness);
+    harness.key_press(Key::F5);
+    harness.get_by_label("Debug").click();
+    harness.run();
+    harness.get_by_label("Flow control").click();
+    harness.step();
+    // MotionControl's editor is in front: its first line runs every cycle of MotionTask.
+    let motion = TextTarget::Pou("MotionControl".to_owned());
+    wait_until(&mut harness, "the flow marks of MotionControl", |app| {
+        app.body_debug_marks(&motion)
+            .is_some_and(|marks| marks.flow_lines.contains(&0))
+    });
+    // Main's editor, brought to the front by its tab, marks the call on line 2 of MainTask.
+    for node in harness.query_all_by_label("Main") {
+        node.click();
+    }
+    harness.step();
+    harness.step();
+    wait_until(&mut harness, "the flow marks of Main", |app| {
+        app.body_debug_marks(&main_target())
+            .is_some_and(|marks| marks.flow_lines.contains(&1))
+    });
+}
+
+#[test]
+fn in_the_simulator_flow_while_halted_marks_the_halted_cycle_so_far() {
+    let project = example_copy(|_| {});
+    let mut harness = studio(project.path());
+    harness.state_mut().build();
+    wait_until(&mut harness, "the build", |app| {
+        app.last_build().is_some_and(|build| build.image.is_some())
+    });
+    open_main_at_start(&mut harness);
+    login_with_download(&mut harness);
+    harness.key_press(Key::F5);
+    harness.get_by_label("Debug").click();
+    harness.run();
+    harness.get_by_label("Flow control").click();
+    harness.step();
+    // Line 12 runs every cycle, so a complete cycle marks it.
+    wait_until(&mut harness, "the flow marks of a complete cycle", |app| {
+        app.body_debug_marks(&main_target())
+            .is_some_and(|marks| marks.flow_lines.contains(&11))
+    });
+    // A breakpoint on line 7 halts the cycle before line 12 runs.
+    harness.get_by_label("Implementation of Main").click();
+    harness.step();
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::Home);
+    harness.step();
+    for _ in 0..6 {
+        harness.key_press(Key::ArrowDown);
+        harness.step();
+    }
+    press(&mut harness, Modifiers::NONE, Key::F9);
+    assert_eq!(
+        breakpoints(harness.state()),
+        vec![Breakpoint::at(main_place(7))]
+    );
+    wait_for_halt_at(&mut harness, "Main", 6);
+    wait_until(&mut harness, "the flow marks of the halted cycle", |app| {
+        app.body_debug_marks(&main_target()).is_some_and(|marks| {
+            marks.flow_lines.contains(&1)
+                && marks.flow_lines.contains(&6)
+                && !marks.flow_lines.contains(&11)
+        })
+    });
+}
+
+#[test]
+fn in_the_simulator_a_condition_that_does_not_compile_is_named_under_its_breakpoint() {
+    let project = example_copy(|_| {});
+    let mut list = app::studio::Breakpoints::default();
+    let mut broken = Breakpoint::at(main_place(2));
+    broken.condition = "xNoSuchVariable AND".to_owned();
+    list.toggle(main_place(2));
+    list.update(broken);
+    let mut settings = app::studio::Settings::default();
+    settings
+        .breakpoints
+        .insert(app::studio::Settings::project_key(project.path()), list);
+    let app = StudioApp::new(settings, Some(project.path().to_owned()));
+    let mut harness = Harness::builder()
+        .with_size([1400.0, 900.0])
+        .build_ui_state(|ui, app: &mut StudioApp| app.ui(ui), app);
+    harness.step();
+    harness.state_mut().build();
+    wait_until(&mut harness, "the build", |app| {
+        app.last_build().is_some_and(|build| build.image.is_some())
+    });
+    login_with_download(&mut harness);
+    // The condition compiles on a worker thread; its error then names the breakpoint.
+    wait_until(&mut harness, "the condition's error", |app| {
+        app.online().breakpoint_problem(&main_place(2)).is_some()
+    });
+    let problem = harness
+        .state()
+        .online()
+        .breakpoint_problem(&main_place(2))
+        .unwrap()
+        .to_owned();
+    assert!(problem.contains("application/Main.st:2"), "{problem}");
+    assert!(problem.contains("xNoSuchVariable AND"), "{problem}");
+    // The Breakpoints pane shows it under the breakpoint, besides the status line.
+    let shown = |harness: &Harness<'_, StudioApp>| harness.query_all_by_label(&problem).count();
+    let elsewhere = shown(&harness);
+    harness.get_by_label("Debug").click();
+    harness.run();
+    harness.get_by_label("Breakpoints").click();
+    harness.step();
+    harness.step();
+    assert_eq!(shown(&harness), elsewhere + 1);
 }

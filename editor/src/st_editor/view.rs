@@ -270,7 +270,15 @@ impl StEditor {
         );
         if std::mem::take(&mut self.scroll_to_caret) {
             let margin = vec2(metrics.char_width * 4.0, metrics.row_height * 2.0);
-            ui.scroll_to_rect(caret_rect.expand2(margin), None);
+            let mut target = caret_rect.expand2(margin);
+            // A caret in a line's indentation (a statement revealed at its start) scrolls the
+            // view fully left, so the line reads from its first column beside the gutter.
+            let line = self.buffer.line(caret_line);
+            let indent_bytes = line.len() - line.trim_start().len();
+            if self.caret <= self.buffer.line_range(caret_line).start + indent_bytes {
+                target.min.x = origin.x;
+            }
+            ui.scroll_to_rect(target, None);
         }
         if focused {
             // Tells the platform where the caret is, so an input method's window opens there.

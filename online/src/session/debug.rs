@@ -51,7 +51,8 @@ pub enum DebugCommand {
     /// `HALT` of a task ([`online_protocol::ALL_TASKS`] for "halt all").
     Halt(u8),
     /// `FLOW_CONFIGURE`: records which statements of these POUs run in each cycle of `task`,
-    /// read about ten times a second into [`Event::Flow`]; no entries end the recording.
+    /// read about ten times a second into [`Event::Flow`]; replaces `task`'s list only (each
+    /// task records its own), and no entries end `task`'s recording.
     Flow {
         /// The task whose cycles are recorded.
         task: u8,
@@ -85,14 +86,27 @@ pub(super) struct DebugWatch {
     pub(super) attached: bool,
     /// The `generation` of the last `HALT_STATE` reported; `None` before the first.
     generation: Option<u32>,
-    /// The task and entries flow recording is configured with.
-    pub(super) flow: Option<(u8, Vec<FlowEntry>)>,
+    /// Each recording task with its entries, in task order (the order `FLOW_READ` numbers
+    /// the entries in); none empty.
+    pub(super) flow: Vec<(u8, Vec<FlowEntry>)>,
+    /// The tasks halted or waiting beneath a halted task at the last change of the halts:
+    /// their flow is read from the cycle in progress.
+    stopped: Vec<u8>,
 }
 
 impl DebugWatch {
     /// Whether flow bitmaps are read.
     pub(super) fn records_flow(&self) -> bool {
-        self.attached && self.flow.is_some()
+        self.attached && !self.flow.is_empty()
+    }
+
+    /// Replaces `task`'s flow entries, keeping the tasks in order.
+    fn configure_flow(&mut self, task: u8, entries: Vec<FlowEntry>) {
+        self.flow.retain(|(known, _)| *known != task);
+        if !entries.is_empty() {
+            let at = self.flow.partition_point(|(known, _)| *known < task);
+            self.flow.insert(at, (task, entries));
+        }
     }
 }
 
@@ -120,7 +134,8 @@ pub(super) async fn run(
         }
         DebugCommand::Detach => {
             watch.attached = false;
-            watch.flow = None;
+            watch.flow.clear();
+            watch.stopped.clear();
             client.debug_detach().await?;
             // Every halt ended with the session.
             watch.generation = None;
@@ -162,7 +177,7 @@ pub(super) async fn run(
         }
         DebugCommand::Flow { task, entries } => {
             client.flow_configure(task, &entries).await?;
-            watch.flow = (!entries.is_empty()).then_some((task, entries));
+            watch.configure_flow(task, entries);
             Ok(None)
         }
         DebugCommand::FrameRead {
@@ -199,28 +214,37 @@ pub(super) async fn poll_halts(
         let frames = client.stack(halt.task).await?;
         halted.push(HaltedTask { halt, frames });
     }
+    watch.stopped = halted.iter().map(|task| task.halt.task).collect();
     watch.generation = Some(state.generation);
     Ok(Some(Event::Halted(halted)))
 }
 
-/// Reads the last complete cycle's bitmap of every configured flow entry.
+/// Reads the bitmap of every configured flow entry of every recording task: the last
+/// complete cycle's, or the cycle so far of a task that is halted or waits beneath a halted
+/// task (`docs/debugging.md` §5).
 pub(super) async fn read_flow(
     client: &mut Client,
     watch: &DebugWatch,
 ) -> Result<Option<Event>, OnlineError> {
-    let Some((task, entries)) = &watch.flow else {
+    if watch.flow.is_empty() {
         return Ok(None);
-    };
-    let mut bitmaps: Vec<(FlowEntry, FlowBitmap)> = Vec::with_capacity(entries.len());
-    for (index, entry) in entries.iter().enumerate() {
-        let index = u8::try_from(index).unwrap_or(u8::MAX);
-        let bitmap = client.flow_read(index, FlowCycle::LastComplete).await?;
-        bitmaps.push((*entry, bitmap));
     }
-    Ok(Some(Event::Flow {
-        task: *task,
-        bitmaps,
-    }))
+    let mut bitmaps: Vec<(u8, FlowEntry, FlowBitmap)> = Vec::new();
+    // `FLOW_READ` numbers the entries through every task's list in task order.
+    let mut index: u8 = 0;
+    for (task, entries) in &watch.flow {
+        let which = if watch.stopped.contains(task) {
+            FlowCycle::Current
+        } else {
+            FlowCycle::LastComplete
+        };
+        for entry in entries {
+            let bitmap = client.flow_read(index, which).await?;
+            bitmaps.push((*task, *entry, bitmap));
+            index = index.saturating_add(1);
+        }
+    }
+    Ok(Some(Event::Flow { bitmaps }))
 }
 
 #[cfg(test)]

@@ -83,6 +83,16 @@ fn answer(fake: &mut Fake, request: &DebugRequest) -> Result<DebugResponse, Refu
             fake.generation += 1;
             DebugResponse::Continue
         }
+        DebugRequest::FlowConfigure { .. } => DebugResponse::FlowConfigure,
+        // Entry `i` has bit `i` set; the cycle so far is numbered 100, the last complete 99.
+        DebugRequest::FlowRead { entry, which, .. } => DebugResponse::FlowRead {
+            cycle: match which {
+                FlowCycle::Current => 100,
+                FlowCycle::LastComplete => 99,
+            },
+            statements: 8,
+            bitmap: vec![1 << entry],
+        },
         other => return Err(Refusal::bad(format!("unexpected {other:?}"))),
     })
 }
@@ -201,4 +211,69 @@ async fn breakpoints_are_replaced_and_each_refusal_is_named_in_its_place() {
             .iter()
             .any(|request| matches!(request, DebugRequest::HaltState { .. }))
     );
+}
+
+#[tokio::test]
+async fn flow_is_read_for_every_recording_task_and_from_the_cycle_so_far_of_a_halted_one() {
+    let fake = Arc::new(Mutex::new(Fake {
+        generation: 1,
+        halted: true,
+        seen: Vec::new(),
+    }));
+    let address = serve(Arc::clone(&fake)).await;
+    let (commands, mut events) = spawn(SessionOptions {
+        address,
+        password: None,
+        poll_interval: Duration::from_millis(50),
+        reconnect_interval: Duration::from_secs(1),
+    });
+    assert!(matches!(next(&mut events).await, Event::Connected(_)));
+    commands
+        .send(Command::Debug(DebugCommand::Attach))
+        .await
+        .unwrap();
+    assert!(matches!(next(&mut events).await, Event::DebugAttached(_)));
+    match next(&mut events).await {
+        Event::Halted(tasks) => assert_eq!(tasks[0].halt.task, 0),
+        other => panic!("{other:?}"),
+    }
+    let entry = |pou| FlowEntry { pou, instance: 0 };
+    // Task 1 is configured first; the entries are read in task order all the same.
+    for (task, pou) in [(1, 5), (0, 4)] {
+        let entries = vec![entry(pou)];
+        commands
+            .send(Command::Debug(DebugCommand::Flow { task, entries }))
+            .await
+            .unwrap();
+    }
+    let bitmaps = loop {
+        match next(&mut events).await {
+            Event::Flow { bitmaps } if bitmaps.len() == 2 => break bitmaps,
+            _ => {}
+        }
+    };
+    let read: Vec<(u8, u32, u64, Vec<u8>)> = bitmaps
+        .into_iter()
+        .map(|(task, entry, bitmap)| (task, entry.pou, bitmap.cycle, bitmap.bitmap))
+        .collect();
+    // Task 0 is halted: its cycle so far; task 1 runs: its last complete cycle.
+    assert_eq!(read, vec![(0, 4, 100, vec![1]), (1, 5, 99, vec![2])]);
+
+    // An empty list ends task 0's recording only.
+    commands
+        .send(Command::Debug(DebugCommand::Flow {
+            task: 0,
+            entries: Vec::new(),
+        }))
+        .await
+        .unwrap();
+    loop {
+        match next(&mut events).await {
+            Event::Flow { bitmaps } if bitmaps.len() == 1 => {
+                assert_eq!((bitmaps[0].0, bitmaps[0].1.pou), (1, 5));
+                break;
+            }
+            _ => {}
+        }
+    }
 }

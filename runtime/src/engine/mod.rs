@@ -26,8 +26,8 @@ use program_image::{InitRun, ProgramImage, Region};
 
 pub use carry::carry_retained;
 pub use debug::{
-    Breakpoint, BreakpointSpec, DebugError, DebugState, FlowRecording, FlowTrack, Halt, HaltReason,
-    HitMode, MAX_BREAKPOINTS, MAX_FLOW_TRACKS, StackFrame, StepKind, TaskDebug,
+    Breakpoint, BreakpointSpec, DebugError, DebugState, FlowRecording, FlowRecordings, FlowTrack,
+    Halt, HaltReason, HitMode, MAX_BREAKPOINTS, MAX_FLOW_TRACKS, StackFrame, StepKind, TaskDebug,
 };
 pub use fault::{FaultKind, FaultRecord};
 pub use lower::LowerError;

@@ -278,14 +278,15 @@ impl Debugging {
                     )));
                 }
                 on_engine(scheduler, move |engine| {
-                    let flow = engine
-                        .debug()
-                        .flow()
-                        .ok_or_else(|| Refusal::not_now("no flow recording is configured"))?;
-                    let track = flow.tracks.get(usize::from(entry)).ok_or_else(|| {
+                    let flow = engine.debug().flow();
+                    if flow.is_empty() {
+                        return Err(Refusal::not_now("no flow recording is configured"));
+                    }
+                    // Entries are numbered through every task's list in task order.
+                    let (task, track) = flow.entry(usize::from(entry)).ok_or_else(|| {
                         Refusal::bad(format!(
-                            "the flow recording has {} entries, not {}",
-                            flow.tracks.len(),
+                            "the flow recordings have {} entries, not {}",
+                            flow.entry_count(),
                             u16::from(entry) + 1
                         ))
                     })?;
@@ -294,7 +295,7 @@ impl Debugging {
                         // The cycle in progress is the one after the task's finished cycles.
                         FlowCycle::Current => (
                             &track.current,
-                            engine.debug().task(flow.task).map_or(0, |t| t.cycle + 1),
+                            engine.debug().task(task).map_or(0, |t| t.cycle + 1),
                         ),
                     };
                     let bitmap = bits

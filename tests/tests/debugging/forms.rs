@@ -256,8 +256,8 @@ fn flow_recording_of_a_function_marks_its_branch_while_its_caller_runs_light() {
         .expect("configured");
     let seen = run(&mut engine, Vec::new(), 2);
     assert!(seen.is_empty(), "nothing halts: {seen:#?}");
-    let flow = engine.debug().flow().expect("recording");
-    let track = &flow.tracks[0];
+    let (task, track) = engine.debug().flow().entry(0).expect("recording");
+    assert_eq!(task, 0);
     assert_eq!(track.last_cycle, 2);
     // The line-table entries whose bits are set: n is small, so the ELSE branch ran.
     let lines = &image.pous[clamp as usize].lines;

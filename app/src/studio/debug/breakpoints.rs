@@ -138,7 +138,7 @@ pub fn statement_of_place(
 mod tests {
     #![allow(clippy::unwrap_used, clippy::expect_used)] // A panic is a failed test.
 
-    use super::super::graphical_place::{GraphicalPlace, has_statement, place_at_line};
+    use super::super::graphical_place::{BodyLines, GraphicalPlace, place_at_line};
     use super::*;
     use program_image::ProgramImage;
 
@@ -172,7 +172,7 @@ mod tests {
         let at = place_at_line(body, statement.line).unwrap();
         assert_eq!(at.network, 1);
         let element = at.element.unwrap();
-        assert!(has_statement(body, at));
+        assert!(BodyLines::of(body).has_statement(at));
         // That element is a place of its own naming the same statement.
         let element_place = BreakpointPlace::graphical(
             file,
@@ -194,13 +194,10 @@ mod tests {
             },
         );
         assert_eq!(statement_of_place(&missing, &image, &bodies), None);
-        assert!(!has_statement(
-            body,
-            editor::BodyPlace {
-                network: 99,
-                element: None
-            }
-        ));
+        assert!(!BodyLines::of(body).has_statement(editor::BodyPlace {
+            network: 99,
+            element: None
+        }));
     }
 
     #[test]

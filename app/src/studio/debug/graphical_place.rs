@@ -127,15 +127,56 @@ pub fn place_at_line(body: &LoweredBody, line: u32) -> Option<editor::BodyPlace>
     }
 }
 
-/// Whether some statement of `body` comes from `place`: an element computed inside another's
-/// statement (an operator box such as ADD feeding a coil) has none, nor has an empty network.
-pub fn has_statement(body: &LoweredBody, place: editor::BodyPlace) -> bool {
-    let lines = body.text.lines().count() as u32;
-    (1..=lines).any(|line| {
-        place_at_line(body, line).is_some_and(|at| {
+/// The network and element of every line of a lowered body's text, worked out in one pass
+/// when the body is lowered (a project revision), so the marks of a halt and of every flow
+/// line are looked up each frame rather than searched for in the text.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct BodyLines {
+    /// The lowered text's file as the image's line table names it (`/` between folders).
+    pub text_file: String,
+    /// Line by line (line 1 first), the place its statement comes from.
+    places: Vec<Option<editor::BodyPlace>>,
+}
+
+impl BodyLines {
+    /// The places of every line of `body`'s lowered text.
+    pub fn of(body: &LoweredBody) -> Self {
+        let mut start = 0;
+        let places = body
+            .text
+            .split_inclusive('\n')
+            .map(|text| {
+                // The statement of a line, as `LoweredBody::origin_at_line` takes it.
+                let offset = start + (text.len() - text.trim_start().len());
+                start += text.len();
+                match body.origins.origin(offset..offset + text.trim().len())? {
+                    Origin::Element {
+                        network, element, ..
+                    } => Some(editor::BodyPlace { network, element }),
+                    Origin::Text { .. } => None,
+                }
+            })
+            .collect();
+        Self {
+            text_file: body.text_file.to_string_lossy().replace('\\', "/"),
+            places,
+        }
+    }
+
+    /// Whether some line's statement comes from `place`: an element computed inside another's
+    /// statement (an operator box such as ADD feeding a coil) has none, nor has an empty
+    /// network.
+    pub fn has_statement(&self, place: editor::BodyPlace) -> bool {
+        self.places.iter().flatten().any(|at| {
             at.network == place.network && (place.element.is_none() || at.element == place.element)
         })
-    })
+    }
+
+    /// The place of line `line` (from 1), as [`place_at_line`] gives it.
+    pub fn place_at(&self, line: u32) -> Option<editor::BodyPlace> {
+        let index = usize::try_from(line).ok()?.checked_sub(1)?;
+        self.places.get(index).copied().flatten()
+    }
 }
 
 #[cfg(test)]
@@ -206,7 +247,10 @@ mod tests {
             };
             // Offline, F9 looks at the lowered text; logged in, the breakpoint needs the
             // image's statement.
-            assert!(has_statement(body, place), "{id:?} has no line");
+            assert!(
+                BodyLines::of(body).has_statement(place),
+                "{id:?} has no line"
+            );
             let breakpoint = crate::studio::debug::BreakpointPlace::graphical(
                 "application/PackCycle.pou.toml",
                 GraphicalPlace {

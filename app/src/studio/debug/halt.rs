@@ -2,7 +2,7 @@
 //! the frame the user looks at, and the statements that ran in the last cycle.
 
 use super::breakpoints::Breakpoints;
-use super::graphical_place::place_at_line;
+use super::graphical_place::BodyLines;
 
 /// One frame of a halted task's call stack, innermost first (`docs/debugging.md` §4).
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -22,10 +22,20 @@ pub struct StackFrame {
 pub struct HaltedTask {
     /// The task's name.
     pub task: String,
-    /// The halted task this one waits beneath, if it is not halted itself.
-    pub beneath: Option<String>,
+    /// What this task waits beneath, if it is not halted itself.
+    pub beneath: Option<Beneath>,
     /// Its frames, innermost first.
     pub frames: Vec<StackFrame>,
+}
+
+/// What a waiting task waits beneath, as exactly as the target's reports tell it.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Beneath {
+    /// The one halted task (with a single halted task there is no other it could wait for).
+    Task(String),
+    /// One of several halted tasks: `HALT_STATE` does not say in which order their cycles
+    /// nest on the scheduler thread, so the studio names none rather than guess.
+    AHaltedTask,
 }
 
 /// The debugging state of the session, replaced as the online layer reports; lives while the
@@ -148,14 +158,15 @@ impl DebugState {
 
 impl DebugState {
     /// The marks of the graphical editor of the body named `body` (`Interlock`, `FB.Reset`)
-    /// in `file` (its `.pou.toml`): its breakpoints, and through `lowered` (the body's lowered
-    /// text, which the image's lines count) the shown frame's element and, while flow control
-    /// is on, the elements that ran. Without `lowered` only the breakpoints are marked.
+    /// in `file` (its `.pou.toml`): its breakpoints, and through `lines` (the places of the
+    /// lines of the body's lowered text, which the image's lines count) the shown frame's
+    /// element and, while flow control is on, the elements that ran. Without `lines` only the
+    /// breakpoints are marked.
     pub fn body_marks_for(
         &self,
         file: &str,
         body: &str,
-        lowered: Option<&compiler::lower::LoweredBody>,
+        lines: Option<&BodyLines>,
         breakpoints: &Breakpoints,
     ) -> editor::BodyDebugMarks {
         let breakpoints = breakpoints
@@ -171,23 +182,22 @@ impl DebugState {
                     })
             })
             .collect();
-        let Some(lowered) = lowered else {
+        let Some(lines) = lines else {
             return editor::BodyDebugMarks {
                 breakpoints,
                 ..Default::default()
             };
         };
-        let text_file = lowered.text_file.to_string_lossy().replace('\\', "/");
         let halt = self
             .shown_frame()
-            .filter(|frame| frame.file == text_file)
-            .and_then(|frame| place_at_line(lowered, frame.line));
+            .filter(|frame| frame.file == lines.text_file)
+            .and_then(|frame| lines.place_at(frame.line));
         let flow = if self.flow_control {
             self.flow
                 .iter()
-                .filter(|(flow_file, _)| *flow_file == text_file)
-                .flat_map(|(_, lines)| lines.iter())
-                .filter_map(|line| place_at_line(lowered, *line))
+                .filter(|(flow_file, _)| *flow_file == lines.text_file)
+                .flat_map(|(_, ran)| ran.iter())
+                .filter_map(|line| lines.place_at(*line))
                 .collect()
         } else {
             Vec::new()
@@ -206,6 +216,7 @@ mod tests {
     #![allow(clippy::expect_used)] // A panic is a failed test.
 
     use super::super::breakpoint::BreakpointPlace;
+    use super::super::graphical_place::place_at_line;
     use super::*;
 
     fn frame(pou: &str, file: &str, line: u32) -> StackFrame {
@@ -221,7 +232,7 @@ mod tests {
         vec![
             HaltedTask {
                 task: "Slow".to_owned(),
-                beneath: Some("Fast".to_owned()),
+                beneath: Some(Beneath::Task("Fast".to_owned())),
                 frames: vec![frame("Main", "application/Main.st", 2)],
             },
             HaltedTask {
@@ -290,6 +301,15 @@ mod tests {
             .find(|body| body.pou == "Interlock")
             .expect("the example has the LD program Interlock");
         let text_file = body.text_file.to_string_lossy().into_owned();
+        let lines = BodyLines::of(body);
+        // Every line has the place the text search gives it.
+        for line in 0..=body.text.lines().count() as u32 + 1 {
+            assert_eq!(
+                lines.place_at(line),
+                place_at_line(body, line),
+                "line {line}"
+            );
+        }
         // The first line of the lowered text with an element: where a halt would be.
         let (line, place) = (1..=body.text.lines().count() as u32)
             .find_map(|line| Some((line, place_at_line(body, line)?)))
@@ -311,17 +331,17 @@ mod tests {
             frames: vec![frame("Interlock", &text_file, line)],
         }]);
         state.set_flow(vec![(text_file.clone(), vec![line])]);
-        let marks = state.body_marks_for(file, "Interlock", Some(body), &breakpoints);
+        let marks = state.body_marks_for(file, "Interlock", Some(&lines), &breakpoints);
         assert_eq!(marks.breakpoints.len(), 1);
         assert_eq!(marks.breakpoints[0].place.network, 0);
         assert_eq!(marks.halt, Some(place));
         assert!(!marks.halt_is_caller);
         assert!(marks.flow.is_empty(), "flow control is off");
         state.flow_control = true;
-        let marks = state.body_marks_for(file, "Interlock", Some(body), &breakpoints);
+        let marks = state.body_marks_for(file, "Interlock", Some(&lines), &breakpoints);
         assert_eq!(marks.flow, vec![place]);
         // Another body has none of these; the text editor does not show graphical breakpoints.
-        let other = state.body_marks_for(file, "Other", Some(body), &breakpoints);
+        let other = state.body_marks_for(file, "Other", Some(&lines), &breakpoints);
         assert!(other.breakpoints.is_empty());
         assert!(state.marks_for(file, &breakpoints).breakpoints.is_empty());
         // Without the lowering only the breakpoints are known.

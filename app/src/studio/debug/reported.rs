@@ -6,11 +6,12 @@ use online::session::HaltedTask as ReportedTask;
 use online::{FlowBitmap, FlowEntry, TaskDebugState};
 use program_image::ProgramImage;
 
-use super::halt::{HaltedTask, StackFrame};
+use super::halt::{Beneath, HaltedTask, StackFrame};
 use crate::debug_places::{instance_owner, statement_of};
 
-/// The halted and waiting tasks as the studio shows them; a waiting task is shown beneath the
-/// first halted task (the target does not say which halted task interrupted it).
+/// The halted and waiting tasks as the studio shows them. A waiting task is shown beneath
+/// the halted task by name only when one task is halted: the target does not say in which
+/// order several halted cycles nest, so beneath one of several no name is given.
 pub fn halted_tasks(image: &ProgramImage, reported: &[ReportedTask]) -> Vec<HaltedTask> {
     let name = |task: u8| {
         image
@@ -18,19 +19,18 @@ pub fn halted_tasks(image: &ProgramImage, reported: &[ReportedTask]) -> Vec<Halt
             .get(usize::from(task))
             .map_or_else(|| format!("#{task}"), |task| task.name.clone())
     };
-    let halted = reported
+    let mut halted = reported
         .iter()
-        .find(|task| task.halt.state == TaskDebugState::Halted)
-        .map(|task| name(task.halt.task));
+        .filter(|task| task.halt.state == TaskDebugState::Halted);
+    let beneath = match (halted.next(), halted.next()) {
+        (Some(only), None) => Beneath::Task(name(only.halt.task)),
+        _ => Beneath::AHaltedTask,
+    };
     reported
         .iter()
         .map(|task| HaltedTask {
             task: name(task.halt.task),
-            beneath: if task.halt.state == TaskDebugState::Halted {
-                None
-            } else {
-                halted.clone()
-            },
+            beneath: (task.halt.state != TaskDebugState::Halted).then(|| beneath.clone()),
             frames: task
                 .frames
                 .iter()
@@ -61,10 +61,11 @@ fn stack_frame(image: &ProgramImage, frame: &online::StackFrame) -> StackFrame {
 }
 
 /// The lines whose statements ran, per body file, from the flow bitmaps of the configured
-/// POUs (bit `i` of a POU's bitmap is its line-table entry `i`).
-pub fn flow_lines(
+/// POUs (bit `i` of a POU's bitmap is its line-table entry `i`); a POU recorded in several
+/// tasks has a line that ran in any of them.
+pub fn flow_lines<'a>(
     image: &ProgramImage,
-    bitmaps: &[(FlowEntry, FlowBitmap)],
+    bitmaps: impl IntoIterator<Item = (&'a FlowEntry, &'a FlowBitmap)>,
 ) -> Vec<(String, Vec<u32>)> {
     let mut files: Vec<(String, Vec<u32>)> = Vec::new();
     for (entry, bitmap) in bitmaps {

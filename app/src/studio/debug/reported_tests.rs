@@ -61,7 +61,7 @@ fn frames_are_named_by_pou_instance_file_and_line_and_a_waiting_task_is_beneath_
     ];
     let tasks = halted_tasks(&image, &reported);
     assert_eq!(tasks[0].task, "MotionTask");
-    assert_eq!(tasks[0].beneath.as_deref(), Some("MainTask"));
+    assert_eq!(tasks[0].beneath, Some(Beneath::Task("MainTask".to_owned())));
     assert_eq!(tasks[1].beneath, None);
     assert_eq!(
         tasks[1].frames[0],
@@ -79,6 +79,28 @@ fn frames_are_named_by_pou_instance_file_and_line_and_a_waiting_task_is_beneath_
 }
 
 #[test]
+fn a_task_waiting_while_two_tasks_are_halted_names_neither_as_what_it_waits_beneath() {
+    let image = image();
+    let task = |index: u8, state: TaskDebugState| ReportedTask {
+        halt: halt(index, state),
+        frames: Vec::new(),
+    };
+    // The target does not say whether task 2 waits beneath task 0's cycle or task 1's.
+    let reported = vec![
+        task(0, TaskDebugState::Halted),
+        task(1, TaskDebugState::Halted),
+        task(2, TaskDebugState::Waiting),
+    ];
+    let tasks = halted_tasks(&image, &reported);
+    assert_eq!(
+        (tasks[0].beneath.clone(), tasks[1].beneath.clone()),
+        (None, None)
+    );
+    assert_eq!(tasks[2].task, "#2");
+    assert_eq!(tasks[2].beneath, Some(Beneath::AHaltedTask));
+}
+
+#[test]
 fn flow_bits_become_the_lines_of_their_statements_per_file() {
     let image = image();
     let main = statement_at(&image, "application/Main.st:2").unwrap();
@@ -86,22 +108,20 @@ fn flow_bits_become_the_lines_of_their_statements_per_file() {
     // The first and third statements of Main ran.
     let mut bitmap = vec![0u8; entries.len().div_ceil(8)];
     bitmap[0] = 0b101;
-    let bitmaps = vec![(
-        FlowEntry {
-            pou: main.pou,
-            instance: 0,
-        },
-        FlowBitmap {
-            cycle: 4,
-            statements: entries.len() as u32,
-            bitmap,
-        },
-    )];
+    let entry = FlowEntry {
+        pou: main.pou,
+        instance: 0,
+    };
+    let bitmap = FlowBitmap {
+        cycle: 4,
+        statements: entries.len() as u32,
+        bitmap,
+    };
     let mut expected = vec![entries[0].line, entries[2].line];
     expected.sort_unstable();
     expected.dedup();
     assert_eq!(
-        flow_lines(&image, &bitmaps),
+        flow_lines(&image, [(&entry, &bitmap)]),
         vec![("application/Main.st".to_owned(), expected)]
     );
 }

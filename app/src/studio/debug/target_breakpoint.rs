@@ -3,11 +3,11 @@
 //! and its condition compiled against the very project that image was built from.
 
 use online::{ALL_TASKS, BreakpointSpec, HitRule};
-use program_image::ProgramImage;
-use project_model::Project;
+use program_image::{ImageHash, ProgramImage};
 
 use super::breakpoint::{Breakpoint, BreakpointPlace, HitMode};
 use super::breakpoints::statement_of_place;
+use super::condition_cache::{ConditionKey, ConditionOutcome};
 use crate::debug_bodies::GraphicalBodies;
 use crate::debug_places::{PlaceError, Statement, instance_owner, statement_at};
 use crate::studio::i18n::{DebugText, Language};
@@ -103,14 +103,40 @@ pub fn breakpoint_statement(
     statement_at(image, &place.label())
 }
 
-/// The breakpoint as `BREAK_SET` takes it, for `image`, built from `project` (whose lowered
-/// graphical bodies are `bodies`).
-pub fn breakpoint_spec(
+/// What the condition of `breakpoint` depends on, for the cache, in `image` whose identity
+/// is `identity`; `None` without a condition or when its place names no statement of `image`
+/// (which [`breakpoint_spec_with`] reports).
+pub fn condition_key(
     image: &ProgramImage,
-    project: &Project,
+    identity: ImageHash,
     bodies: &GraphicalBodies,
     breakpoint: &Breakpoint,
+) -> Option<ConditionKey> {
+    let condition = breakpoint.condition.trim();
+    if condition.is_empty() {
+        return None;
+    }
+    let statement = breakpoint_statement(image, bodies, &breakpoint.place).ok()?;
+    Some(ConditionKey {
+        image: identity,
+        pou: statement.pou_name,
+        condition: condition.to_owned(),
+    })
+}
+
+/// The breakpoint as `BREAK_SET` takes it, for `image` whose identity is `identity` (its
+/// encoding's hash, which the caller knows) and whose lowered graphical bodies are `bodies`,
+/// with its condition's outcome from `condition` (the studio's [`super::ConditionCache`],
+/// compiled against the project `image` was built from), given the key [`condition_key`]
+/// names.
+pub fn breakpoint_spec_with(
+    image: &ProgramImage,
+    identity: ImageHash,
+    bodies: &GraphicalBodies,
+    breakpoint: &Breakpoint,
+    condition: &mut dyn FnMut(&ConditionKey) -> ConditionOutcome,
 ) -> Result<BreakpointSpec, BreakpointError> {
+    let compile = condition;
     let place = &breakpoint.place;
     let statement =
         breakpoint_statement(image, bodies, place).map_err(|error| BreakpointError::Place {
@@ -146,14 +172,18 @@ pub fn breakpoint_spec(
                 condition: expression.to_owned(),
                 reason,
             };
-            let compiled = compiler::compile_condition(project, &statement.pou_name, expression)
-                .map_err(|error| failed(error.to_string()))?;
-            if compiled.pou != statement.pou || compiled.image != image.identity() {
+            let key = ConditionKey {
+                image: identity,
+                pou: statement.pou_name.clone(),
+                condition: expression.to_owned(),
+            };
+            let compiled = compile(&key).map_err(failed)?;
+            if compiled.pou != statement.pou || compiled.image != key.image {
                 return Err(BreakpointError::OtherBuild {
                     place: place.clone(),
                 });
             }
-            compiled.condition.encode()
+            compiled.bytes
         }
     };
     Ok(BreakpointSpec {

@@ -6,6 +6,7 @@ use std::path::Path;
 
 use super::*;
 use crate::studio::i18n::Language;
+use project_model::Project;
 
 /// The example project and its image.
 fn example() -> (Project, ProgramImage) {
@@ -13,6 +14,18 @@ fn example() -> (Project, ProgramImage) {
     let project = project_model::load_project(&dir).unwrap().project;
     let image = compiler::compile_project(&project).unwrap();
     (project, image)
+}
+
+/// The breakpoint as `BREAK_SET` takes it, its condition compiled against `project` now.
+fn breakpoint_spec(
+    image: &ProgramImage,
+    project: &Project,
+    bodies: &GraphicalBodies,
+    breakpoint: &Breakpoint,
+) -> Result<BreakpointSpec, BreakpointError> {
+    breakpoint_spec_with(image, image.identity(), bodies, breakpoint, &mut |key| {
+        super::super::compile_condition(project, key)
+    })
 }
 
 fn at(file: &str, line: u32) -> Breakpoint {

@@ -2,13 +2,10 @@
 //! breakpoint place of the body's `.pou.toml` file, refused with the reason when it has no
 //! statement of its own.
 
-use compiler::lower::LoweredBody;
 use project_model::{Object, Project, TextTarget};
 
 use crate::studio::command::{Command, Commands};
-use crate::studio::debug::{
-    BreakpointPlace, Breakpoints, GraphicalPlace, body_name, has_statement,
-};
+use crate::studio::debug::{BreakpointPlace, Breakpoints, GraphicalPlace, body_name};
 use crate::studio::i18n::{DebugText, Language};
 use crate::studio::view::StudioView;
 
@@ -25,13 +22,10 @@ pub(super) fn body_marks(
     pou: &str,
     target: &TextTarget,
 ) -> (String, editor::BodyDebugMarks) {
-    let file = pou_file(project, pou);
+    let file = lowering.pou_file(project, revision, pou).to_owned();
     let debugging = !view.debug.halted().is_empty() || view.debug.flow_control;
-    let lowered = if debugging {
-        lowering
-            .bodies(project, revision)
-            .iter()
-            .find(|body| body.target == *target)
+    let lines = if debugging {
+        lowering.body_lines(project, revision, target)
     } else {
         None
     };
@@ -39,7 +33,7 @@ pub(super) fn body_marks(
     let marks = view.debug.body_marks_for(
         &file,
         &body_name(target),
-        lowered,
+        lines,
         view.breakpoints().unwrap_or(&no_breakpoints),
     );
     (file, marks)
@@ -67,12 +61,9 @@ pub(super) fn toggle_breakpoint(
     (project, revision): (&Project, u64),
     language: Language,
 ) {
-    let lowered = lowering
-        .bodies(project, revision)
-        .iter()
-        .find(|body| body.target == *target);
+    let lines = lowering.body_lines(project, revision, target);
     let graphical = GraphicalPlace::of_editor(target, place);
-    if lowered.is_some_and(|body: &LoweredBody| !has_statement(body, place)) {
+    if lines.is_some_and(|lines| !lines.has_statement(place)) {
         let what = crate::studio::panes::graphical_place_text(language, Some(project), &graphical);
         commands.error(DebugText::NoElementStatement.fill(language, &[("place", &what)]));
         return;

@@ -7,6 +7,7 @@ use compiler::lower::LoweredBody;
 use editor::{CfcEditor, DiagramEditor, DiagramView, ElementDiagnostic, SfcEditor};
 use project_model::{Network, Pou, Project, TextTarget};
 
+use crate::studio::debug::BodyLines;
 use crate::studio::i18n::Language;
 
 use super::chart_documents::ChartDocuments;
@@ -91,12 +92,18 @@ pub(super) struct LoweringCache {
     lowered: Option<(u64, Vec<LoweredBody>)>,
     /// The probes' paths of each body shown for an instance, at the lowered revision.
     paths: HashMap<(TextTarget, String), Vec<ProbePath>>,
+    /// The places of the lines of each lowered body, made when the debugger first marks it
+    /// at the lowered revision.
+    lines: HashMap<TextTarget, BodyLines>,
+    /// The `.pou.toml` file of each POU asked for, and the revision they are of (kept apart
+    /// from the lowering, which breakpoints alone do not need).
+    pou_files: (u64, HashMap<String, String>),
 }
 
 impl LoweringCache {
-    /// Every lowered body of `project` at `revision`, lowering the project again when it
-    /// changed.
-    pub(super) fn bodies(&mut self, project: &Project, revision: u64) -> &[LoweredBody] {
+    /// Lowers `project` again when `revision` is not the one lowered, forgetting what was
+    /// worked out from the last lowering.
+    fn lower(&mut self, project: &Project, revision: u64) {
         if self
             .lowered
             .as_ref()
@@ -105,8 +112,49 @@ impl LoweringCache {
             let bodies = compiler::lower::lower_project(project).bodies;
             self.lowered = Some((revision, bodies));
             self.paths.clear();
+            self.lines.clear();
         }
+    }
+
+    /// Every lowered body of `project` at `revision`, lowering the project again when it
+    /// changed.
+    pub(super) fn bodies(&mut self, project: &Project, revision: u64) -> &[LoweredBody] {
+        self.lower(project, revision);
         self.lowered.as_ref().map_or(&[], |(_, bodies)| bodies)
+    }
+
+    /// The places of the lines of the lowered body `target` of `project` at `revision`, worked
+    /// out once per revision; `None` for a body that is not lowered.
+    pub(super) fn body_lines(
+        &mut self,
+        project: &Project,
+        revision: u64,
+        target: &TextTarget,
+    ) -> Option<&BodyLines> {
+        self.lower(project, revision);
+        if !self.lines.contains_key(target) {
+            let body = self
+                .lowered
+                .as_ref()?
+                .1
+                .iter()
+                .find(|body| body.target == *target)?;
+            self.lines.insert(target.clone(), BodyLines::of(body));
+        }
+        self.lines.get(target)
+    }
+
+    /// The `.pou.toml` file of the POU `pou` of `project` at `revision` (as
+    /// [`super::breakpoints::pou_file`] names it), found once per revision.
+    pub(super) fn pou_file(&mut self, project: &Project, revision: u64, pou: &str) -> &str {
+        let (seen, files) = &mut self.pou_files;
+        if *seen != revision {
+            *seen = revision;
+            files.clear();
+        }
+        files
+            .entry(pou.to_owned())
+            .or_insert_with(|| super::breakpoints::pou_file(project, pou))
     }
 
     /// The lowered body `target` of `project` at `revision` and its probes' paths for the
@@ -119,15 +167,7 @@ impl LoweringCache {
         target: &TextTarget,
         instance: &str,
     ) -> Option<(&LoweredBody, &[ProbePath])> {
-        if self
-            .lowered
-            .as_ref()
-            .is_none_or(|(seen, _)| *seen != revision)
-        {
-            let bodies = compiler::lower::lower_project(project).bodies;
-            self.lowered = Some((revision, bodies));
-            self.paths.clear();
-        }
+        self.lower(project, revision);
         let body = self
             .lowered
             .as_ref()?
@@ -227,5 +267,36 @@ impl GraphicalDocuments {
                 .is_none_or(|document| document.editor.shows_execution_order())
         });
         self.show_execution_order = Some(!shown);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #![allow(clippy::unwrap_used)] // A panic is a failed test.
+
+    use super::*;
+
+    #[test]
+    fn a_bodys_lines_and_file_are_worked_out_once_per_revision() {
+        let project = project_model::load_project(&assets::example_project_dir())
+            .unwrap()
+            .project;
+        let interlock = TextTarget::Pou("Interlock".to_owned());
+        let mut cache = LoweringCache::default();
+        let lowered = cache
+            .bodies(&project, 1)
+            .iter()
+            .find(|body| body.target == interlock)
+            .map(BodyLines::of)
+            .unwrap();
+        assert_eq!(cache.body_lines(&project, 1, &interlock), Some(&lowered));
+        assert_eq!(
+            cache.pou_file(&project, 1, "Interlock"),
+            "application/Interlock.pou.toml"
+        );
+        // Another revision is worked out again: here a project without the POU.
+        let empty = Project::default();
+        assert_eq!(cache.body_lines(&empty, 2, &interlock), None);
+        assert_eq!(cache.pou_file(&empty, 2, "Interlock"), "");
     }
 }

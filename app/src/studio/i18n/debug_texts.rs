@@ -41,6 +41,7 @@ pub enum DebugText {
     Cancel,
     BreakpointAt,
     WaitingBeneath,
+    WaitingBeneathAHaltedTask,
     Halted,
     NoStatementAfter,
     NoElementStatement,
@@ -104,6 +105,10 @@ impl DebugText {
             Self::Cancel => ("Cancel", "取消"),
             Self::BreakpointAt => ("Breakpoint at {place}", "位于 {place} 的断点"),
             Self::WaitingBeneath => ("{task}: waiting beneath {halted}", "{task}：等待 {halted}"),
+            Self::WaitingBeneathAHaltedTask => (
+                "{task}: waiting beneath a halted task",
+                "{task}：等待一个已暂停的任务",
+            ),
             Self::Halted => ("{task}: halted", "{task}：已暂停"),
             Self::NoStatementAfter => (
                 "no statement at or after line {line} of {file}",

@@ -10,8 +10,9 @@ use online::{ALL_TASKS, FlowBitmap, FlowEntry, StepKind};
 use super::{Online, Phase};
 use crate::debug_bodies::GraphicalBodies;
 use crate::studio::debug::{
-    Breakpoint, BreakpointPlace, DebugCommand, DebugTarget, HaltedTask, breakpoint_spec,
-    breakpoint_statement, flow_lines, halted_tasks,
+    Breakpoint, BreakpointPlace, ConditionCache, ConditionKey, DebugCommand, DebugTarget,
+    HaltedTask, breakpoint_spec_with, breakpoint_statement, compile_condition, condition_key,
+    flow_entries, flow_lines, halted_tasks,
 };
 use crate::studio::i18n::DebugText;
 
@@ -37,6 +38,11 @@ pub(super) struct Debugging {
     halted: Option<Vec<HaltedTask>>,
     /// The flow lines reported and not taken by the studio yet.
     flow: Option<Vec<(String, Vec<u32>)>>,
+    /// The breakpoints' conditions compiled for the image logged in with.
+    conditions: ConditionCache,
+    /// Why breakpoints of the last list sent are not set, by place, in words naming the place;
+    /// the Breakpoints pane shows each under its breakpoint.
+    problems: Vec<(BreakpointPlace, String)>,
 }
 
 impl DebugTarget for Online {
@@ -139,6 +145,16 @@ impl Online {
         self.debugging.halted.take()
     }
 
+    /// Why the breakpoint at `place` is not set on the target, if the last list sent says so
+    /// (a condition that does not compile, a place without a statement, a refusal).
+    pub fn breakpoint_problem(&self, place: &BreakpointPlace) -> Option<&str> {
+        self.debugging
+            .problems
+            .iter()
+            .find(|(known, _)| known == place)
+            .map(|(_, text)| text.as_str())
+    }
+
     /// The flow lines the session reported since the last call, if it reported any.
     pub fn take_flow(&mut self) -> Option<Vec<(String, Vec<u32>)>> {
         self.debugging.flow.take()
@@ -163,6 +179,7 @@ impl Online {
         self.debugging.reported.clear();
         self.debugging.attach_sent = false;
         self.debugging.attached = false;
+        self.debugging.problems.clear();
         if had {
             self.debugging.halted = Some(Vec::new());
             self.debugging.flow = Some(Vec::new());
@@ -198,8 +215,9 @@ impl Online {
     }
 
     /// Takes the session's flow bitmaps.
-    pub(super) fn debug_flow(&mut self, bitmaps: &[(FlowEntry, FlowBitmap)]) {
+    pub(super) fn debug_flow(&mut self, bitmaps: &[(u8, FlowEntry, FlowBitmap)]) {
         if let Some(image) = &self.image {
+            let bitmaps = bitmaps.iter().map(|(_, entry, bitmap)| (entry, bitmap));
             self.debugging.flow = Some(flow_lines(&image.program, bitmaps));
         }
     }
@@ -210,34 +228,67 @@ impl Online {
         let places = self.debugging.sent.pop_front().unwrap_or_default();
         for (place, id) in places.iter().zip(ids) {
             if let Err(reason) = id {
-                let place = place.label();
-                self.error(
-                    DebugText::BreakpointNotSet
-                        .fill(self.language, &[("place", &place), ("reason", &reason)]),
+                let text = DebugText::BreakpointNotSet.fill(
+                    self.language,
+                    &[("place", &place.label()), ("reason", &reason)],
                 );
+                self.debugging.problems.push((place.clone(), text.clone()));
+                self.error(text);
             }
         }
     }
 
     /// Replaces the target's breakpoints with the studio's; one that does not convert is
-    /// reported with its place and not sent.
+    /// reported with its place and not sent. Conditions not compiled yet are compiled on a
+    /// worker thread first, and the list goes once they are ([`Online::poll_conditions`]).
     fn send_breakpoints(&mut self) {
         let Some(image) = &self.image else { return };
         let mut specs = Vec::new();
         let mut errors = Vec::new();
         let mut places = Vec::new();
-        // Lowered once for all the breakpoints; only graphical places need it.
-        let bodies = GraphicalBodies::of_project(&image.project);
+        // Lowered once for all the breakpoints, and only when a graphical place needs it.
+        let bodies = if self
+            .debugging
+            .breakpoints
+            .iter()
+            .any(|breakpoint| breakpoint.place.graphical.is_some())
+        {
+            GraphicalBodies::of_project(&image.project)
+        } else {
+            GraphicalBodies::default()
+        };
+        let keys: Vec<ConditionKey> = self
+            .debugging
+            .breakpoints
+            .iter()
+            .filter_map(|breakpoint| condition_key(&image.program, image.hash, &bodies, breakpoint))
+            .collect();
+        let conditions = &mut self.debugging.conditions;
+        if conditions.compile_missing(&image.project, &keys, self.waker.clone()) {
+            return;
+        }
         for breakpoint in &self.debugging.breakpoints {
-            match breakpoint_spec(&image.program, &image.project, &bodies, breakpoint) {
+            let spec = breakpoint_spec_with(
+                &image.program,
+                image.hash,
+                &bodies,
+                breakpoint,
+                &mut |key| match conditions.get(key) {
+                    Some(outcome) => outcome.clone(),
+                    // Not reached: every key was compiled above.
+                    None => compile_condition(&image.project, key),
+                },
+            );
+            match spec {
                 Ok(spec) => {
                     specs.push(spec);
                     places.push(breakpoint.place.clone());
                 }
-                Err(error) => errors.push(error.text(self.language)),
+                Err(error) => errors.push((breakpoint.place.clone(), error.text(self.language))),
             }
         }
-        for error in errors {
+        self.debugging.problems.clone_from(&errors);
+        for (_, error) in errors {
             self.error(error);
         }
         if self.send_debug(SessionCommand::SetBreakpoints(specs)) {
@@ -245,56 +296,25 @@ impl Online {
         }
     }
 
-    /// Configures flow recording for the bodies asked for, in the task that calls the first
-    /// of them (bodies of other tasks are left out: the target records one task at a time).
+    /// Sends the breakpoints once the conditions they waited for are compiled. Called every
+    /// frame.
+    pub(super) fn poll_conditions(&mut self) {
+        if self.debugging.conditions.take_finished() && self.debugging.attached {
+            self.send_breakpoints();
+        }
+    }
+
+    /// Configures flow recording for the bodies asked for, in every task that runs each one
+    /// (`flow_entries`); a task that runs none of them ends its recording.
     fn send_flow(&mut self) {
         let Some(image) = &self.image else { return };
-        let program = &image.program;
-        let mut task = None;
-        let mut entries = Vec::new();
-        for (pou_name, instance) in &self.debugging.flow_bodies {
-            let Some(pou) = program
-                .pous
-                .iter()
-                .position(|pou| pou.name.eq_ignore_ascii_case(pou_name))
-            else {
-                continue;
-            };
-            let root = instance
-                .as_deref()
-                .unwrap_or(pou_name)
-                .split('.')
-                .next()
-                .unwrap_or_default();
-            let Some(body_task) = program.tasks.iter().position(|task| {
-                task.programs.iter().any(|call| {
-                    program
-                        .pous
-                        .get(call.pou as usize)
-                        .is_some_and(|called| called.name.eq_ignore_ascii_case(root))
-                })
-            }) else {
-                continue;
-            };
-            if *task.get_or_insert(body_task) != body_task {
-                continue;
-            }
-            let pointer = instance
-                .as_deref()
-                .and_then(|path| runtime::value::resolve(program, path).ok())
-                .filter(|place| place.region == program_image::Region::Data)
-                .map_or(0, |place| (1 << 56) | place.offset);
-            entries.push(FlowEntry {
-                pou: pou as u32,
-                instance: pointer,
-            });
-        }
-        let entries: Vec<FlowEntry> = entries.into_iter().take(online::MAX_FLOW_ENTRIES).collect();
-        let task = task.and_then(|task| u8::try_from(task).ok()).unwrap_or(0);
-        if entries.is_empty() {
+        let tasks = flow_entries(&image.program, &self.debugging.flow_bodies);
+        if tasks.iter().all(|(_, entries)| entries.is_empty()) {
             self.debugging.flow = Some(Vec::new());
         }
-        self.send_debug(SessionCommand::Flow { task, entries });
+        for (task, entries) in tasks {
+            self.send_debug(SessionCommand::Flow { task, entries });
+        }
     }
 
     /// Sends a command for the task whose frame is shown.

@@ -58,6 +58,7 @@ impl Online {
             self.handle(event);
         }
         self.attach_when_online();
+        self.poll_conditions();
         if self.phase == Phase::Online
             && self
                 .last_status

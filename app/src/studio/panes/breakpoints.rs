@@ -77,6 +77,9 @@ fn breakpoint_row_ui(
             commands.push(Command::RemoveBreakpoint(breakpoint.place.clone()));
         }
     });
+    if let Some(problem) = view.online.breakpoint_problem(&breakpoint.place) {
+        ui.label(RichText::new(problem).color(ui.visuals().error_fg_color));
+    }
 }
 
 /// The place in words: `FILE:LINE` in text, `Interlock: network 2, element 7` in LD, FBD or

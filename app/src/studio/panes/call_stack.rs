@@ -6,7 +6,7 @@
 use egui::{RichText, Ui};
 
 use crate::studio::command::{Command, Commands};
-use crate::studio::debug::{GraphicalPlace, StackFrame};
+use crate::studio::debug::{Beneath, GraphicalPlace, StackFrame};
 use crate::studio::graphical_documents::GraphicalDocuments;
 use crate::studio::i18n::DebugText;
 use crate::studio::view::StudioView;
@@ -33,8 +33,11 @@ pub(crate) fn call_stack_ui(
         .show(ui, |ui| {
             for task in halted {
                 let heading = match &task.beneath {
-                    Some(halted) => DebugText::WaitingBeneath
+                    Some(Beneath::Task(halted)) => DebugText::WaitingBeneath
                         .fill(language, &[("task", &task.task), ("halted", halted)]),
+                    Some(Beneath::AHaltedTask) => {
+                        DebugText::WaitingBeneathAHaltedTask.fill(language, &[("task", &task.task)])
+                    }
                     None => DebugText::Halted.fill(language, &[("task", &task.task)]),
                 };
                 ui.strong(heading);

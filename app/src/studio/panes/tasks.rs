@@ -33,8 +33,12 @@ pub(crate) fn tasks_ui(view: StudioView<'_>, commands: &mut Commands, ui: &mut U
     }
 }
 
-/// Where a fault happened (or a call stack frame is): its source line when the body is
-/// known, else its POU.
+/// Where a fault happened (or a call stack frame or a breakpoint is): the caret at the start
+/// of the statement on its source line when the body is known, else its POU.
+///
+/// The line table gives lines, not columns, so the statement starts at the line's first
+/// character that is not blank; nothing is selected, so the editor scrolls to the line's
+/// start rather than to the end of a long line, as CODESYS shows its arrow and line.
 pub(crate) fn fault_place(view: StudioView<'_>, pou: &str, file: &str, line: u32) -> Command {
     // The POU of a method or action is named `FB.Method`; the document is the POU's.
     let object = pou.split('.').next().unwrap_or(pou).to_owned();
@@ -47,18 +51,28 @@ pub(crate) fn fault_place(view: StudioView<'_>, pou: &str, file: &str, line: u32
     });
     match body {
         Some((target, text)) if line > 0 => {
-            let start: usize = text
-                .split_inclusive('\n')
-                .take(line as usize - 1)
-                .map(str::len)
-                .sum();
-            let end = text[start.min(text.len())..]
-                .find('\n')
-                .map_or(text.len(), |at| start + at);
-            Command::Reveal(node, Reveal::Body(target, start.min(end)..end))
+            let statement = statement_start(&text, line);
+            Command::Reveal(node, Reveal::Body(target, statement..statement))
         }
         _ => Command::Open(node),
     }
+}
+
+/// The byte offset of the first character of line `line` (from 1) of `text` that is not
+/// blank, or the line's end when it is all blank; the text's end past its last line.
+fn statement_start(text: &str, line: u32) -> usize {
+    let start: usize = text
+        .split_inclusive('\n')
+        .take(line as usize - 1)
+        .map(str::len)
+        .sum::<usize>()
+        .min(text.len());
+    let rest = &text[start..];
+    let line_text = &rest[..rest.find('\n').unwrap_or(rest.len())];
+    start
+        + line_text
+            .find(|c: char| !c.is_whitespace())
+            .unwrap_or(line_text.trim_end_matches('\r').len())
 }
 
 /// The fault log; returns the POU, file and line of a clicked fault.
@@ -94,4 +108,20 @@ fn faults_ui(view: StudioView<'_>, ui: &mut Ui) -> Option<(String, String, u32)>
             }
         });
     open
+}
+
+#[cfg(test)]
+mod tests {
+    use super::statement_start;
+
+    #[test]
+    fn a_statement_starts_at_its_lines_first_character_that_is_not_blank() {
+        let text = "(* a comment *)\n    x := 1;\r\n\n\ty := 2;";
+        assert_eq!(statement_start(text, 1), 0);
+        assert_eq!(&text[statement_start(text, 2)..][..7], "x := 1;");
+        // A blank line has its statement place at the line's end, on the line.
+        assert_eq!(statement_start(text, 3), text.find("\n\n").unwrap() + 1);
+        assert_eq!(&text[statement_start(text, 4)..], "y := 2;");
+        assert_eq!(statement_start(text, 9), text.len());
+    }
 }

@@ -1,5 +1,6 @@
 //! Flow recording (`docs/protocol.md` §6.2, "Flow control"): which statements of the listed
-//! POUs one task ran in its last complete cycle and in the current one.
+//! POUs each recorded task ran in its last complete cycle and in the current one. Every task
+//! has its own list, so a POU called from two tasks is recorded in both, each by its cycles.
 
 /// One recorded POU: its statements' bits for the cycle in progress and the last complete one.
 #[derive(Clone, Debug)]
@@ -25,6 +26,82 @@ pub struct FlowRecording {
     pub task: usize,
     /// The recorded POUs, in the order they were configured.
     pub tracks: Vec<FlowTrack>,
+}
+
+/// The recordings of every task that records, in task order; lives with the debug session.
+#[derive(Clone, Debug, Default)]
+pub struct FlowRecordings {
+    /// One recording per recorded task, sorted by task, none with an empty list.
+    recordings: Vec<FlowRecording>,
+}
+
+impl FlowRecordings {
+    /// Whether no task records.
+    pub fn is_empty(&self) -> bool {
+        self.recordings.is_empty()
+    }
+
+    /// Entry `entry` of the lists of every task taken one after the other in task order
+    /// (`FLOW_READ`'s numbering), with the task that records it.
+    pub fn entry(&self, entry: usize) -> Option<(usize, &FlowTrack)> {
+        self.recordings
+            .iter()
+            .flat_map(|recording| recording.tracks.iter().map(|track| (recording.task, track)))
+            .nth(entry)
+    }
+
+    /// How many entries the lists of every task have together.
+    pub fn entry_count(&self) -> usize {
+        self.recordings.iter().map(|r| r.tracks.len()).sum()
+    }
+
+    /// Whether some task's list records POU `pou`.
+    pub fn records(&self, pou: u32) -> bool {
+        self.recordings
+            .iter()
+            .any(|recording| recording.tracks.iter().any(|track| track.pou == pou))
+    }
+
+    /// Whether task `task` records.
+    pub fn records_task(&self, task: usize) -> bool {
+        self.recordings
+            .iter()
+            .any(|recording| recording.task == task)
+    }
+
+    /// Replaces task `task`'s list with `tracks`; an empty list ends that task's recording
+    /// and leaves the other tasks' as they are.
+    pub(crate) fn configure(&mut self, task: usize, tracks: Vec<FlowTrack>) {
+        let at = self.recordings.partition_point(|r| r.task < task);
+        let known = self.recordings.get(at).is_some_and(|r| r.task == task);
+        match (known, tracks.is_empty()) {
+            (true, true) => {
+                self.recordings.remove(at);
+            }
+            (true, false) => {
+                if let Some(recording) = self.recordings.get_mut(at) {
+                    recording.tracks = tracks;
+                }
+            }
+            (false, false) => self.recordings.insert(at, FlowRecording { task, tracks }),
+            (false, true) => {}
+        }
+    }
+
+    /// Task `task`'s recording, if it records.
+    pub(crate) fn of_task_mut(&mut self, task: usize) -> Option<&mut FlowRecording> {
+        self.recordings.iter_mut().find(|r| r.task == task)
+    }
+
+    /// Task `task` completed its cycle: `finished` cycles are done now; the other tasks'
+    /// cycles go on, so their bits stay.
+    pub(crate) fn end_cycle(&mut self, task: usize, finished: u64) {
+        if let Some(recording) = self.of_task_mut(task) {
+            for track in &mut recording.tracks {
+                track.end_cycle(finished);
+            }
+        }
+    }
 }
 
 impl FlowTrack {
@@ -70,5 +147,45 @@ mod tests {
         track.end_cycle(7);
         assert_eq!((track.last.clone(), track.last_cycle), (vec![1, 2], 7));
         assert_eq!(track.current, vec![0, 0]);
+    }
+
+    #[test]
+    fn each_task_has_its_own_list_and_entries_are_numbered_in_task_order() {
+        let mut flow = FlowRecordings::default();
+        flow.configure(2, vec![FlowTrack::new(5, 0, 8)]);
+        flow.configure(0, vec![FlowTrack::new(5, 0, 8), FlowTrack::new(6, 0, 3)]);
+        assert_eq!(flow.entry_count(), 3);
+        let entry = |flow: &FlowRecordings, index| flow.entry(index).map(|(t, k)| (t, k.pou));
+        assert_eq!(entry(&flow, 0), Some((0, 5)));
+        assert_eq!(entry(&flow, 1), Some((0, 6)));
+        assert_eq!(entry(&flow, 2), Some((2, 5)));
+        assert_eq!(entry(&flow, 3), None);
+        assert!(flow.records(6) && !flow.records(7));
+
+        // A cycle of task 2 ends its bits only; task 0's cycle in progress keeps its own.
+        for recording in [0, 2] {
+            if let Some(recording) = flow.of_task_mut(recording) {
+                recording.tracks[0].mark(1);
+            }
+        }
+        flow.end_cycle(2, 9);
+        let task = |flow: &FlowRecordings, index| flow.entry(index).map(|(_, k)| k.clone());
+        let two = task(&flow, 2).expect("task 2's entry");
+        assert_eq!(
+            (two.last, two.current, two.last_cycle),
+            (vec![2], vec![0], 9)
+        );
+        let zero = task(&flow, 0).expect("task 0's entry");
+        assert_eq!(
+            (zero.last, zero.current, zero.last_cycle),
+            (vec![0], vec![2], 0)
+        );
+
+        // An empty list ends one task's recording; the other's goes on.
+        flow.configure(0, Vec::new());
+        assert_eq!(entry(&flow, 0), Some((2, 5)));
+        assert!(!flow.records(6));
+        flow.configure(2, Vec::new());
+        assert!(flow.is_empty());
     }
 }

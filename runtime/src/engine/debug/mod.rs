@@ -23,7 +23,7 @@ use program_image::{BreakCondition, ConditionError, ProgramImage};
 
 pub(crate) use breakpoint::LoweredCondition;
 pub use breakpoint::{Breakpoint, BreakpointSpec, HitMode};
-pub use flow::{FlowRecording, FlowTrack};
+pub use flow::{FlowRecording, FlowRecordings, FlowTrack};
 pub(crate) use task_debug::Pending;
 pub use task_debug::{Halt, HaltReason, StackFrame, StepKind, TaskDebug};
 
@@ -114,9 +114,9 @@ pub struct DebugState {
     pou_names: Vec<String>,
     /// Per POU, its line table's entries as (instruction, entry index), sorted.
     entries: Vec<Vec<(u32, u32)>>,
-    /// The flow recording, if one is configured.
-    flow: Option<FlowRecording>,
-    /// Per POU, whether the flow recording lists it.
+    /// The flow recordings, one per recorded task.
+    flow: FlowRecordings,
+    /// Per POU, whether some task's flow recording lists it.
     pou_recorded: Vec<bool>,
     /// "Halt all": tasks that are not halted start no cycle.
     halt_all: bool,
@@ -168,7 +168,7 @@ impl DebugState {
                     entries
                 })
                 .collect(),
-            flow: None,
+            flow: FlowRecordings::default(),
             pou_recorded: vec![false; image.pous.len()],
             halt_all: false,
             halt_next_cycle: false,
@@ -202,7 +202,7 @@ impl DebugState {
             task.halt = None;
         }
         self.halted.clear();
-        self.flow = None;
+        self.flow = FlowRecordings::default();
         self.pou_recorded.fill(false);
         self.debug_form.fill(false);
         self.task_may_hit.fill(false);
@@ -228,7 +228,8 @@ impl DebugState {
     }
 
     /// `FLOW_CONFIGURE`: records, for each cycle of `task`, which statements of each listed
-    /// POU (on one instance, or every instance with 0) ran; an empty list ends recording.
+    /// POU (on one instance, or every instance with 0) ran; replaces that task's list only, and
+    /// an empty list ends that task's recording.
     pub fn configure_flow(&mut self, task: usize, pous: &[(u32, u64)]) -> Result<(), DebugError> {
         if task >= self.tasks.len() {
             return Err(DebugError::UnknownTask(task.min(255) as u8));
@@ -244,13 +245,10 @@ impl DebugState {
                 .ok_or(DebugError::UnknownPou(pou))?;
             tracks.push(FlowTrack::new(pou, instance, entries.len() as u32));
         }
-        self.pou_recorded.fill(false);
-        for track in &tracks {
-            if let Some(flag) = self.pou_recorded.get_mut(track.pou as usize) {
-                *flag = true;
-            }
+        self.flow.configure(task, tracks);
+        for (pou, flag) in (0u32..).zip(self.pou_recorded.iter_mut()) {
+            *flag = self.flow.records(pou);
         }
-        self.flow = (!tracks.is_empty()).then_some(FlowRecording { task, tracks });
         self.refresh_debug_forms();
         Ok(())
     }
@@ -306,7 +304,7 @@ impl DebugState {
         if self.halt_all
             || self.halt_next_cycle
             || self.may_halt(task)
-            || self.flow.as_ref().is_some_and(|flow| flow.task == task)
+            || self.flow.records_task(task)
         {
             return true;
         }
@@ -367,9 +365,9 @@ impl DebugState {
         Some(state.stack.len())
     }
 
-    /// The flow recording, if one is configured.
-    pub fn flow(&self) -> Option<&FlowRecording> {
-        self.flow.as_ref()
+    /// The flow recordings of every task that records.
+    pub fn flow(&self) -> &FlowRecordings {
+        &self.flow
     }
 
     /// Whether the flow recording lists POU `pou` (for some task).
@@ -383,12 +381,10 @@ impl DebugState {
         if !self.records(pou) {
             return;
         }
-        let (Some(flow), Some(entries)) = (self.flow.as_mut(), self.entries.get(pou)) else {
+        let (Some(flow), Some(entries)) = (self.flow.of_task_mut(task), self.entries.get(pou))
+        else {
             return;
         };
-        if flow.task != task {
-            return;
-        }
         let first = entries.partition_point(|&(at, _)| at < instruction);
         for track in flow
             .tracks
@@ -406,13 +402,7 @@ impl DebugState {
 
     /// Task `task` completed its cycle: `finished` cycles are done now.
     pub(crate) fn end_flow_cycle(&mut self, task: usize, finished: u64) {
-        if let Some(flow) = self.flow.as_mut()
-            && flow.task == task
-        {
-            for track in &mut flow.tracks {
-                track.end_cycle(finished);
-            }
-        }
+        self.flow.end_cycle(task, finished);
     }
 
     /// Abandons every halted cycle: each returns from its halt without running the rest of its

@@ -117,3 +117,37 @@ fn a_cycle_runs_with_the_debugger_only_when_something_can_halt_while_it_runs() {
     assert_eq!(needs(&debug, false), [false, true, true]);
     assert_eq!(needs(&debug, true), [true, true, true]);
 }
+
+#[test]
+fn a_pou_recorded_in_two_tasks_marks_its_statements_in_the_task_that_ran_them() {
+    let tasks = [
+        TestTask::cyclic(1_000_000, 2),
+        TestTask::cyclic(1_000_000, 1),
+    ];
+    let mut image = image(&tasks, &[]);
+    image.pous[0].lines = vec![program_image::LineEntry {
+        index: 0,
+        file: 0,
+        line: 1,
+    }];
+    let mut debug = DebugState::new(&image);
+    debug.begin_session();
+    debug.configure_flow(0, &[(0, 0)]).expect("task 0 records");
+    debug.configure_flow(1, &[(0, 0)]).expect("task 1 records");
+    debug.record_flow(1, 0, 0, 0);
+    debug.end_flow_cycle(1, 1);
+    debug.end_flow_cycle(0, 1);
+    let last = |debug: &DebugState, entry| {
+        debug
+            .flow()
+            .entry(entry)
+            .map(|(task, track)| (task, track.last.clone()))
+    };
+    assert_eq!(last(&debug, 0), Some((0, vec![0])));
+    assert_eq!(last(&debug, 1), Some((1, vec![1])));
+    // Ending one task's recording keeps the POU recorded while the other task records it.
+    debug.configure_flow(0, &[]).expect("task 0 ends");
+    assert!(debug.pou_recorded[0]);
+    debug.configure_flow(1, &[]).expect("task 1 ends");
+    assert!(!debug.pou_recorded[0] && debug.flow().is_empty());
+}
