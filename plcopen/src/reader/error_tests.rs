@@ -1,0 +1,1 @@
+//! Bad input: each error names the line, column and element path.

@@ -1,0 +1,105 @@
+//! The reader: bytes to text, text to a DOM, the DOM to the typed [`Document`].
+//!
+//! `context.rs` holds what every part of the reading needs (positions, paths, attributes);
+//! `project.rs` the headers and instances, `pou.rs` POUs, interfaces and types, `body.rs` bodies and
+//! their objects, `checks.rs` the checks across a body and across names, `encoding.rs` bytes to
+//! text, `upgrade.rs` the PLCopen v1.0 rules.
+
+mod body;
+mod checks;
+mod context;
+mod encoding;
+mod pou;
+mod project;
+mod upgrade;
+
+#[cfg(test)]
+mod corpus_tests;
+#[cfg(test)]
+mod error_tests;
+
+use std::path::Path;
+
+use crate::document::{Dialect, Document};
+use crate::error::{ReadError, ReadErrorKind};
+use context::Context;
+
+/// The largest file the reader accepts, 64 MiB. The DOM of a PLCopen file takes about four times
+/// its size (`docs/plcopen-xml.md` §1.8), so this bounds the reader's memory near 300 MB; the
+/// largest real exports seen are a few megabytes.
+pub const MAX_FILE_BYTES: usize = 64 * 1024 * 1024;
+
+/// The most XML nodes the DOM may hold. A file of [`MAX_FILE_BYTES`] cannot reach it unless it is
+/// made of nothing but empty elements; the limit keeps such a file from taking more memory.
+const MAX_NODES: u32 = 8 * 1024 * 1024;
+
+/// Reads a PLCopen XML document from text. `file_name` only names the file in errors.
+pub fn read(text: &str, file_name: &str) -> Result<Document, ReadError> {
+    if text.len() > MAX_FILE_BYTES {
+        return Err(encoding::too_large(file_name, text.len()));
+    }
+    let options = roxmltree::ParsingOptions {
+        allow_dtd: false,
+        nodes_limit: MAX_NODES,
+        ..roxmltree::ParsingOptions::default()
+    };
+    let dom = roxmltree::Document::parse_with_options(text, options).map_err(|error| {
+        let position = error.pos();
+        ReadError {
+            file: file_name.to_owned(),
+            line: position.row,
+            column: position.col,
+            path: String::new(),
+            kind: ReadErrorKind::NotXml(error.to_string()),
+        }
+    })?;
+    let root = dom.root_element();
+    let dialect = dialect_of(root, file_name, &dom)?;
+    let context = Context::new(&dom, text, file_name, dialect);
+    let document = project::read_project(&context, root)?;
+    checks::check_names(&context, &document)?;
+    Ok(document)
+}
+
+/// Reads a PLCopen XML document from the bytes of a file: UTF-8 with or without a byte order mark,
+/// or UTF-16 with one; files over [`MAX_FILE_BYTES`] are refused before anything is decoded.
+pub fn read_bytes(bytes: &[u8], file_name: &str) -> Result<Document, ReadError> {
+    let text = encoding::decode(bytes, file_name)?;
+    read(&text, file_name)
+}
+
+/// Reads a PLCopen XML file; the file name in errors is the path as given.
+pub fn read_file(path: &Path) -> Result<Document, std::io::Error> {
+    let bytes = std::fs::read(path)?;
+    read_bytes(&bytes, &path.display().to_string()).map_err(std::io::Error::other)
+}
+
+/// The dialect of the root element, or the error for a root that is no PLCopen project.
+fn dialect_of(
+    root: roxmltree::Node<'_, '_>,
+    file_name: &str,
+    dom: &roxmltree::Document<'_>,
+) -> Result<Dialect, ReadError> {
+    let position = dom.text_pos_at(root.range().start);
+    let error = |kind| ReadError {
+        file: file_name.to_owned(),
+        line: position.row,
+        column: position.col,
+        path: root.tag_name().name().to_owned(),
+        kind,
+    };
+    if root.tag_name().name() != "project" {
+        return Err(error(ReadErrorKind::WrongRoot {
+            found: root.tag_name().name().to_owned(),
+        }));
+    }
+    let namespace = root.tag_name().namespace().unwrap_or("");
+    [Dialect::V201, Dialect::V200, Dialect::V10]
+        .into_iter()
+        .find(|dialect| dialect.namespace() == namespace)
+        .ok_or_else(|| {
+            error(ReadErrorKind::WrongNamespace {
+                found: namespace.to_owned(),
+            })
+        })
+}
