@@ -76,7 +76,7 @@ fn decode_utf16(
 }
 
 /// The line and column (1-based) just after valid UTF-8 `text`.
-fn line_and_column(text: &[u8]) -> (u32, u32) {
+pub(super) fn line_and_column(text: &[u8]) -> (u32, u32) {
     let before = String::from_utf8_lossy(text);
     let line = before.matches('\n').count() + 1;
     let column = before

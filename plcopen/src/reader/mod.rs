@@ -44,11 +44,18 @@ pub fn read(text: &str, file_name: &str) -> Result<Document, ReadError> {
         ..roxmltree::ParsingOptions::default()
     };
     let dom = roxmltree::Document::parse_with_options(text, options).map_err(|error| {
-        let position = error.pos();
+        // roxmltree places faults found at the end of the text (a truncated file) at 1:1; the
+        // user needs to see where the text stops.
+        let (line, column) = match error {
+            roxmltree::Error::UnclosedRootNode | roxmltree::Error::UnexpectedEndOfStream => {
+                encoding::line_and_column(text.as_bytes())
+            }
+            _ => (error.pos().row, error.pos().col),
+        };
         ReadError {
             file: file_name.to_owned(),
-            line: position.row,
-            column: position.col,
+            line,
+            column,
             path: String::new(),
             kind: ReadErrorKind::NotXml(error.to_string()),
         }
