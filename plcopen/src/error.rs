@@ -58,6 +58,14 @@ pub enum ReadErrorKind {
     /// UTF-16 text whose code units do not pair up.
     #[error("the file is not valid UTF-16 text")]
     NotUtf16,
+    /// The file holds more XML nodes than the reader builds a tree of.
+    #[error(
+        "the file holds more than {limit} XML elements and texts, more than a PLCopen file of this size can have"
+    )]
+    TooManyNodes {
+        /// The reader's limit.
+        limit: u32,
+    },
     /// The XML parser refused the text.
     #[error("not well-formed XML: {0}")]
     NotXml(String),

@@ -24,14 +24,16 @@ use crate::document::{Dialect, Document};
 use crate::error::{ReadError, ReadErrorKind};
 use context::Context;
 
-/// The largest file the reader accepts, 64 MiB. The DOM of a PLCopen file takes about four times
-/// its size (`docs/plcopen-xml.md` §1.8), so this bounds the reader's memory near 300 MB; the
-/// largest real exports seen are a few megabytes.
-pub const MAX_FILE_BYTES: usize = 64 * 1024 * 1024;
+/// The largest file the reader accepts, 32 MiB. Reading takes about 7.5 bytes of memory per byte
+/// of file at its peak (the DOM and the model; a 10 MB file: 76 MB, `docs/plcopen-xml.md` §1.8),
+/// so this keeps the reader under about 250 MB; the largest real exports seen are a few
+/// megabytes.
+pub const MAX_FILE_BYTES: usize = 32 * 1024 * 1024;
 
-/// The most XML nodes the DOM may hold. A file of [`MAX_FILE_BYTES`] cannot reach it unless it is
-/// made of nothing but empty elements; the limit keeps such a file from taking more memory.
-const MAX_NODES: u32 = 8 * 1024 * 1024;
+/// The most XML nodes the DOM may hold. Real files have one node per 20 to 25 bytes (a 32 MiB file
+/// about 1.5 million); a file of nothing but empty elements would have far more, and this limit
+/// keeps its DOM as small as a real file's.
+const MAX_NODES: u32 = 4 * 1024 * 1024;
 
 /// Reads a PLCopen XML document from text. `file_name` only names the file in errors.
 pub fn read(text: &str, file_name: &str) -> Result<Document, ReadError> {
@@ -52,12 +54,16 @@ pub fn read(text: &str, file_name: &str) -> Result<Document, ReadError> {
             }
             _ => (error.pos().row, error.pos().col),
         };
+        let kind = match error {
+            roxmltree::Error::NodesLimitReached => ReadErrorKind::TooManyNodes { limit: MAX_NODES },
+            _ => ReadErrorKind::NotXml(error.to_string()),
+        };
         ReadError {
             file: file_name.to_owned(),
             line,
             column,
             path: String::new(),
-            kind: ReadErrorKind::NotXml(error.to_string()),
+            kind,
         }
     })?;
     let root = dom.root_element();
