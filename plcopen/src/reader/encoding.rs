@@ -1,4 +1,5 @@
-//! Bytes to text: UTF-8 (with or without a byte order mark) and UTF-16 with a byte order mark.
+//! Bytes to text: UTF-8 (with or without a byte order mark) and UTF-16 (with a byte order mark,
+//! or without one when the text starts with `<`).
 
 use std::borrow::Cow;
 
@@ -29,6 +30,13 @@ pub(super) fn decode<'b>(bytes: &'b [u8], file_name: &str) -> Result<Cow<'b, str
     }
     if let Some(rest) = bytes.strip_prefix(&[0xFE, 0xFF]) {
         return decode_utf16(rest, file_name, u16::from_be_bytes).map(Cow::Owned);
+    }
+    // UTF-16 without a byte order mark still starts with `<`, which tells the byte order.
+    if bytes.starts_with(&[b'<', 0]) {
+        return decode_utf16(bytes, file_name, u16::from_le_bytes).map(Cow::Owned);
+    }
+    if bytes.starts_with(&[0, b'<']) {
+        return decode_utf16(bytes, file_name, u16::from_be_bytes).map(Cow::Owned);
     }
     let bytes = bytes.strip_prefix(&[0xEF, 0xBB, 0xBF]).unwrap_or(bytes);
     std::str::from_utf8(bytes)

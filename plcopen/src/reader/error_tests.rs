@@ -203,9 +203,25 @@ fn utf16_and_a_utf8_byte_order_mark_are_read() {
     utf16.extend(text.encode_utf16().flat_map(u16::to_le_bytes));
     let document = read_bytes(&utf16, "utf16.xml").unwrap_or_else(|error| panic!("{error}"));
     assert_eq!(document.pous[0].name, "Main");
+    let big_endian: Vec<u8> = text.encode_utf16().flat_map(u16::to_be_bytes).collect();
+    let document = read_bytes(&big_endian, "utf16be.xml").unwrap_or_else(|error| panic!("{error}"));
+    assert_eq!(document.pous[0].name, "Main");
     let mut with_bom = vec![0xEF, 0xBB, 0xBF];
     with_bom.extend(text.as_bytes());
     assert!(read_bytes(&with_bom, "bom.xml").is_ok());
+}
+
+#[test]
+fn utf16_with_an_unpaired_surrogate_is_refused_where_it_stands() {
+    let mut utf16 = vec![0xFF, 0xFE];
+    utf16.extend("<project>\n  ".encode_utf16().flat_map(u16::to_le_bytes));
+    utf16.extend(0xDC00u16.to_le_bytes());
+    let error = match read_bytes(&utf16, "utf16.xml") {
+        Ok(_) => panic!("read"),
+        Err(error) => error,
+    };
+    assert_eq!(error.kind, ReadErrorKind::NotUtf16);
+    assert_eq!((error.line, error.column), (2, 3));
 }
 
 #[test]
