@@ -96,7 +96,41 @@ fn read_object(context: &Context<'_, '_>, node: Node<'_, '_>) -> Read<BodyObject
     })
 }
 
+/// The children each object may have besides `position`, `addData` and `documentation`; `None`
+/// for an element that is no body object.
+fn allowed_children(element: &str) -> Option<&'static [&'static str]> {
+    const IN: &str = "connectionPointIn";
+    const OUT: &str = "connectionPointOut";
+    const PINS: [&str; 3] = ["inputVariables", "inOutVariables", "outputVariables"];
+    Some(match element {
+        "block" => &PINS,
+        "inVariable" => &[OUT, "expression"],
+        "outVariable" => &[IN, "expression"],
+        "inOutVariable" => &[IN, OUT, "expression"],
+        "jump" | "return" | "connector" | "rightPowerRail" | "jumpStep" => &[IN],
+        "continuation" | "leftPowerRail" => &[OUT],
+        "comment" | "error" => &["content"],
+        "vendorElement" => &["alternativeText", PINS[0], PINS[1], PINS[2]],
+        "contact" | "coil" => &[IN, OUT, "variable"],
+        "step" => &[IN, OUT, "connectionPointOutAction"],
+        "macroStep" => &[IN, OUT, "body"],
+        "transition" => &[IN, OUT, "condition"],
+        "selectionDivergence"
+        | "selectionConvergence"
+        | "simultaneousDivergence"
+        | "simultaneousConvergence" => &[IN, OUT],
+        "actionBlock" => &[IN, "action"],
+        "label" => &[],
+        _ => return None,
+    })
+}
+
 fn read_kind(context: &Context<'_, '_>, node: Node<'_, '_>) -> Read<ObjectKind> {
+    if let Some(allowed) = allowed_children(node.tag_name().name()) {
+        let mut allowed_here = vec!["position"];
+        allowed_here.extend_from_slice(allowed);
+        context.only_children(node, &allowed_here, "this kind of body object")?;
+    }
     let input = || point_in(context, node, "connectionPointIn");
     let output = || point_out(context, node, "connectionPointOut");
     let expression =
@@ -298,6 +332,7 @@ fn pins(
 }
 
 fn read_pin(context: &Context<'_, '_>, node: Node<'_, '_>) -> Read<BlockPin> {
+    context.only_children(node, &["connectionPointIn", "connectionPointOut"], "a pin")?;
     Ok(BlockPin {
         formal_parameter: context.required(node, "formalParameter")?.to_owned(),
         negated: context.optional_bool(node, "negated")?,
@@ -332,6 +367,13 @@ fn point_out(
 
 /// Reads a `connectionPointIn` (or, for v1.0 conditions, any element holding `connection`s).
 fn read_point_in(context: &Context<'_, '_>, node: Node<'_, '_>) -> Read<ConnectionPointIn> {
+    if node.tag_name().name() == "connectionPointIn" {
+        context.only_children(
+            node,
+            &["relPosition", "connection", "expression"],
+            "a connectionPointIn",
+        )?;
+    }
     let mut connections = Vec::new();
     for connection in children_named(node, "connection") {
         let mut points = Vec::new();
@@ -355,6 +397,7 @@ fn read_point_in(context: &Context<'_, '_>, node: Node<'_, '_>) -> Read<Connecti
 }
 
 fn read_point_out(context: &Context<'_, '_>, node: Node<'_, '_>) -> Read<ConnectionPointOut> {
+    context.only_children(node, &["relPosition", "expression"], "a connectionPointOut")?;
     Ok(ConnectionPointOut {
         rel_position: context.child_point(node, "relPosition")?,
         formal_parameter: context.optional(node, "formalParameter"),

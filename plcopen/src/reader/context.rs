@@ -297,6 +297,23 @@ impl<'a, 'input> Context<'a, 'input> {
             .collect()
     }
 
+    /// Refuses a child element of `node` that is not in `allowed` (nor `addData` or
+    /// `documentation`, which every element may have), so nothing is dropped unseen.
+    pub fn only_children(
+        &self,
+        node: Node<'_, '_>,
+        allowed: &[&str],
+        context: &'static str,
+    ) -> Read<()> {
+        match elements(node).find(|element| {
+            let name = element.tag_name().name();
+            name != "addData" && name != "documentation" && !allowed.contains(&name)
+        }) {
+            Some(element) => Err(self.unexpected(element, context)),
+            None => Ok(()),
+        }
+    }
+
     /// An error for an element that does not belong where it stands.
     pub fn unexpected(&self, node: Node<'_, '_>, context: &'static str) -> ReadError {
         self.error(

@@ -254,3 +254,19 @@ fn a_missing_header_element_is_named() {
         (4, 27, "project/contentHeader[@name='n']/coordinateInfo")
     );
 }
+
+#[test]
+fn an_unknown_child_of_a_body_object_is_refused() {
+    let error = read_error(&with_fbd(
+        &IN_VARIABLE_7.replace("<expression>", "<negation/><expression>"),
+    ));
+    assert!(
+        matches!(&error.kind, ReadErrorKind::UnexpectedElement { element, .. } if element == "negation"),
+        "{error}"
+    );
+    assert_eq!((error.line, error.column), (7, 75));
+    assert_eq!(
+        error.path,
+        "project/types/pous/pou[@name='Main']/body/FBD/inVariable[@localId='7']/negation"
+    );
+}

@@ -147,6 +147,7 @@ pub(super) fn read_var_list(context: &Context<'_, '_>, node: Node<'_, '_>) -> Re
 fn read_variables(context: &Context<'_, '_>, node: Node<'_, '_>) -> Read<Vec<Variable>> {
     let mut variables = Vec::new();
     for variable in children_named(node, "variable") {
+        context.only_children(variable, &["type", "initialValue"], "a variable")?;
         variables.push(Variable {
             name: context.required(variable, "name")?.to_owned(),
             address: context.optional(variable, "address"),
@@ -168,6 +169,7 @@ pub(super) fn read_data_type_decl(
     context: &Context<'_, '_>,
     node: Node<'_, '_>,
 ) -> Read<DataTypeDecl> {
+    context.only_children(node, &["baseType", "initialValue"], "a dataType")?;
     Ok(DataTypeDecl {
         name: context.required(node, "name")?.to_owned(),
         base_type: read_type_holder(context, context.required_child(node, "baseType")?)?,
