@@ -346,8 +346,8 @@ pub(super) fn children_named<'a, 'input>(
     elements(node).filter(move |element| element.tag_name().name() == name)
 }
 
-/// The path of an element from the root, each step its local name with `name` or `localId` as a
-/// predicate: `project/types/pous/pou[@name='Main']/body/FBD/block[@localId='7']`.
+/// The path of an element from the root, each step its local name with `name`, `localId` or
+/// `formalParameter` (pins) as a predicate: `project/types/pous/pou[@name='Main']/body/FBD/block[@localId='7']`.
 pub(super) fn element_path(node: Node<'_, '_>) -> String {
     let mut steps: Vec<String> = node
         .ancestors()
@@ -358,6 +358,8 @@ pub(super) fn element_path(node: Node<'_, '_>) -> String {
                 format!("{name}[@name='{value}']")
             } else if let Some(value) = element.attribute("localId") {
                 format!("{name}[@localId='{value}']")
+            } else if let Some(value) = element.attribute("formalParameter") {
+                format!("{name}[@formalParameter='{value}']")
             } else {
                 name.to_owned()
             }

@@ -1,6 +1,6 @@
 //! Bad input: each error names the line, column and element path.
 
-use crate::{MAX_FILE_BYTES, ReadError, ReadErrorKind, read, read_bytes};
+use crate::{MAX_FILE_BYTES, ReadError, ReadErrorKind, ReadFileError, read, read_bytes, read_file};
 
 /// A v2.01 document whose program `Main` has an FBD body of `objects`, which start on line 7.
 fn with_fbd(objects: &str) -> String {
@@ -269,4 +269,27 @@ fn an_unknown_child_of_a_body_object_is_refused() {
         error.path,
         "project/types/pous/pou[@name='Main']/body/FBD/inVariable[@localId='7']/negation"
     );
+}
+
+#[test]
+fn a_missing_file_is_named() {
+    let path = std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/no-such-file.xml"));
+    let error = match read_file(path) {
+        Ok(_) => panic!("read"),
+        Err(error) => error,
+    };
+    assert!(matches!(&error, ReadFileError::Io { file, .. } if file.ends_with("no-such-file.xml")));
+    assert!(error.to_string().contains("no-such-file.xml: "), "{error}");
+}
+
+#[test]
+fn a_pin_is_named_by_its_formal_parameter_in_the_path() {
+    let error = read_error(&with_fbd(
+        r#"      <block localId="3" typeName="ADD"><inputVariables><variable formalParameter="IN1" negated="maybe"/></inputVariables><inOutVariables/><outputVariables/></block>"#,
+    ));
+    assert_eq!(
+        error.path,
+        "project/types/pous/pou[@name='Main']/body/FBD/block[@localId='3']/inputVariables/variable[@formalParameter='IN1']"
+    );
+    assert_eq!((error.line, error.column), (7, 89));
 }

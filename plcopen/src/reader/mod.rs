@@ -81,10 +81,39 @@ pub fn read_bytes(bytes: &[u8], file_name: &str) -> Result<Document, ReadError> 
     read(&text, file_name)
 }
 
-/// Reads a PLCopen XML file; the file name in errors is the path as given.
-pub fn read_file(path: &Path) -> Result<Document, std::io::Error> {
-    let bytes = std::fs::read(path)?;
-    read_bytes(&bytes, &path.display().to_string()).map_err(std::io::Error::other)
+/// Reads a PLCopen XML file; the file name in errors is the path as given. A file over
+/// [`MAX_FILE_BYTES`] is refused from its metadata, before it is read into memory.
+pub fn read_file(path: &Path) -> Result<Document, ReadFileError> {
+    let file_name = path.display().to_string();
+    let io_error = |source| ReadFileError::Io {
+        file: file_name.clone(),
+        source,
+    };
+    let size_bytes = std::fs::metadata(path).map_err(io_error)?.len();
+    let size_bytes = usize::try_from(size_bytes).unwrap_or(usize::MAX);
+    if size_bytes > MAX_FILE_BYTES {
+        return Err(ReadFileError::Read(encoding::too_large(
+            &file_name, size_bytes,
+        )));
+    }
+    let bytes = std::fs::read(path).map_err(io_error)?;
+    Ok(read_bytes(&bytes, &file_name)?)
+}
+
+/// Why [`read_file`] failed: the file could not be read, or its content was refused.
+#[derive(Debug, thiserror::Error)]
+pub enum ReadFileError {
+    /// The file could not be opened or read.
+    #[error("{file}: {source}")]
+    Io {
+        /// The path as given.
+        file: String,
+        /// The operating system's error.
+        source: std::io::Error,
+    },
+    /// The content is not a PLCopen XML document the reader accepts.
+    #[error(transparent)]
+    Read(#[from] ReadError),
 }
 
 /// The dialect of the root element, or the error for a root that is no PLCopen project.
