@@ -107,6 +107,36 @@ fn beremiz_first_steps_has_its_five_languages_and_task() {
     assert!(ld.iter().all(|object| object.position.is_some()));
     let plc_prg = pou(&document, "plc_prg").bodies[0].content.objects();
     assert!(!objects_named(plc_prg, "block").is_empty());
+    // The SFC: an initial step, a selection divergence, transitions with inline ST conditions.
+    let sfc = pou(&document, "CounterSFC").bodies[0].content.objects();
+    let ObjectKind::Step(start) = &sfc[0].kind else {
+        panic!("the SFC does not start with its step");
+    };
+    assert_eq!((start.name.as_str(), start.initial), ("Start", true));
+    let ObjectKind::SelectionDivergence(divergence) = &sfc[1].kind else {
+        panic!("no selection divergence");
+    };
+    assert_eq!(divergence.outputs.len(), 2);
+    assert_eq!(divergence.outputs[0].formal_parameter.as_deref(), Some(""));
+    let conditions: Vec<&str> = objects_named(sfc, "transition")
+        .iter()
+        .filter_map(|object| match &object.kind {
+            ObjectKind::Transition(transition) => transition.condition.as_ref(),
+            _ => None,
+        })
+        .filter_map(|condition| match &condition.form {
+            ConditionForm::Inline { body, .. } => match &body.content {
+                BodyContent::St(text) => Some(text.text.as_str()),
+                _ => None,
+            },
+            _ => None,
+        })
+        .take(2)
+        .collect();
+    assert_eq!(conditions, ["Reset", "NOT Reset"]);
+    // Absent and 0 stay apart: transition 3 has no executionOrderId, transition 4 has 0.
+    assert_eq!((sfc[2].local_id, sfc[2].execution_order_id), (3, None));
+    assert_eq!((sfc[3].local_id, sfc[3].execution_order_id), (4, Some(0)));
     let task = &document.configurations[0].resources[0].tasks[0];
     assert_eq!(task.name, "plc_task");
     assert_eq!(task.interval.as_deref(), Some("T#100ms"));
