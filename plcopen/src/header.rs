@@ -52,6 +52,8 @@ pub struct ContentHeader {
     pub comment: Option<String>,
     /// The drawing grid.
     pub coordinate_info: CoordinateInfo,
+    /// `addDataInfo` (which vendor extensions the file uses), as its raw XML text.
+    pub add_data_info: Option<String>,
     /// Vendor data of the header.
     pub add_data: AddData,
     /// Documentation, where a vendor wrote one.

@@ -28,6 +28,7 @@ pub(super) fn read_project(context: &Context<'_, '_>, root: Node<'_, '_>) -> Rea
     // v1.0 and v2.01 require `types`; an export with nothing in it is still a project, so a missing
     // `types` reads as empty rather than refusing the file.
     if let Some(types) = child(root, "types") {
+        context.only_children(types, &["dataTypes", "pous"], "types")?;
         if let Some(list) = child(types, "dataTypes") {
             for data_type in children_named(list, "dataType") {
                 data_types.push(read_data_type_decl(context, data_type)?);
@@ -40,6 +41,9 @@ pub(super) fn read_project(context: &Context<'_, '_>, root: Node<'_, '_>) -> Rea
         }
     }
     let mut configurations = Vec::new();
+    if let Some(instances) = child(root, "instances") {
+        context.only_children(instances, &["configurations"], "instances")?;
+    }
     if let Some(instances) = child(root, "instances")
         && let Some(list) = child(instances, "configurations")
     {
@@ -73,6 +77,11 @@ fn read_file_header(context: &Context<'_, '_>, node: Node<'_, '_>) -> Read<FileH
 }
 
 fn read_content_header(context: &Context<'_, '_>, node: Node<'_, '_>) -> Read<ContentHeader> {
+    context.only_children(
+        node,
+        &["Comment", "coordinateInfo", "addDataInfo"],
+        "contentHeader",
+    )?;
     let coordinates = context.required_child(node, "coordinateInfo")?;
     let scaling = |language: &'static str| -> Read<_> {
         let language_node = context.required_child(coordinates, language)?;
@@ -92,6 +101,7 @@ fn read_content_header(context: &Context<'_, '_>, node: Node<'_, '_>) -> Read<Co
             ld_scaling: scaling("ld")?,
             sfc_scaling: scaling("sfc")?,
         },
+        add_data_info: child(node, "addDataInfo").map(|info| context.source(info).to_owned()),
         add_data: context.add_data(node)?,
         documentation: context.documentation(node),
     })
@@ -216,6 +226,7 @@ fn read_resource(
 }
 
 fn read_task(context: &Context<'_, '_>, node: Node<'_, '_>) -> Read<Task> {
+    context.only_children(node, &["pouInstance"], "a task")?;
     let priority =
         context.required_parsed(node, "priority", "an integer from 0 to 65535", |text| {
             text.parse::<u16>().ok().map(u32::from)
