@@ -6,7 +6,7 @@
 # target directory so the crates they fuzz are not checked a second time. .ci/run calls it.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-for crate in compiler online_protocol program_image runtime; do
+for crate in compiler online_protocol plcopen program_image runtime; do
     echo "fuzz targets of $crate"
     cargo check --locked --manifest-path "$crate/fuzz/Cargo.toml" --target-dir target --bins
 done

@@ -1,0 +1,45 @@
+//! A typed model of a PLCopen TC6 XML document (v2.01, CODESYS's `tc6_0200` and v1.0) and a reader
+//! that turns the XML text into it, refusing bad input with the file, line, column and element path.
+//!
+//! The rules the reader follows are written in `docs/plcopen-xml.md`. The crate is pure: it knows no
+//! other crate of the workspace, and its only I/O is the [`read_file`] convenience.
+
+mod add_data;
+mod body;
+mod body_object;
+mod connection;
+mod data_type;
+mod document;
+mod error;
+mod fbd;
+mod header;
+mod instances;
+mod interface;
+mod ld;
+mod pou;
+mod reader;
+mod sfc;
+mod text;
+
+pub use add_data::{AddData, AddDataEntry, HandleUnknown};
+pub use body::{Body, BodyContent};
+pub use body_object::{BodyObject, ObjectKind, Size};
+pub use connection::{Connection, ConnectionPointIn, ConnectionPointOut};
+pub use data_type::{DataType, DataTypeDecl, Dimension, EnumValue, Value, ValueItem};
+pub use document::{Dialect, Document, XmlComment};
+pub use error::{ReadError, ReadErrorKind};
+pub use fbd::{
+    Block, BlockPin, Connector, Continuation, InOutVariable, InVariable, Jump, Label, OutVariable,
+    Return, VendorElement,
+};
+pub use header::{ContentHeader, CoordinateInfo, FileHeader, Point};
+pub use instances::{AccessVariable, ConfigVariable, Configuration, PouInstance, Resource, Task};
+pub use interface::{Interface, VarList, VarListKind, Variable};
+pub use ld::{Coil, Contact, Edge, LeftPowerRail, RightPowerRail, Storage};
+pub use pou::{Action, Method, Pou, PouLocation, PouType, Transition};
+pub use reader::{MAX_FILE_BYTES, ReadFileError, read, read_bytes, read_file};
+pub use sfc::{
+    ActionBlock, ActionBlockAction, ActionContent, Condition, ConditionForm, Convergence,
+    Divergence, JumpStep, MacroStep, Qualifier, SfcTransition, Step,
+};
+pub use text::{FormattedText, TextMarkup};

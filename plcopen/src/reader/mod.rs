@@ -1,0 +1,147 @@
+//! The reader: bytes to text, text to a DOM, the DOM to the typed [`Document`].
+//!
+//! `context.rs` holds what every part of the reading needs (positions, paths, attributes);
+//! `project.rs` the headers and instances, `pou.rs` POUs, interfaces and types, `body.rs` bodies and
+//! their objects, `checks.rs` the checks across a body and across names, `encoding.rs` bytes to
+//! text, `upgrade.rs` the PLCopen v1.0 rules.
+
+mod body;
+mod checks;
+mod context;
+mod encoding;
+mod pou;
+mod project;
+mod upgrade;
+
+#[cfg(test)]
+mod corpus_tests;
+#[cfg(test)]
+mod error_tests;
+
+use std::path::Path;
+
+use crate::document::{Dialect, Document};
+use crate::error::{ReadError, ReadErrorKind};
+use context::Context;
+
+/// The largest file the reader accepts, 32 MiB. Reading takes about 7.5 bytes of memory per byte
+/// of file at its peak (the DOM and the model; a 10 MB file: 76 MB, `docs/plcopen-xml.md` §1.8),
+/// so this keeps the reader under about 250 MB; the largest real exports seen are a few
+/// megabytes.
+pub const MAX_FILE_BYTES: usize = 32 * 1024 * 1024;
+
+/// The most XML nodes the DOM may hold. Real files have one node per 20 to 25 bytes (a 32 MiB file
+/// about 1.5 million); a file of nothing but empty elements would have far more, and this limit
+/// keeps its DOM as small as a real file's.
+const MAX_NODES: u32 = 4 * 1024 * 1024;
+
+/// Reads a PLCopen XML document from text. `file_name` only names the file in errors.
+pub fn read(text: &str, file_name: &str) -> Result<Document, ReadError> {
+    if text.len() > MAX_FILE_BYTES {
+        return Err(encoding::too_large(file_name, text.len()));
+    }
+    let options = roxmltree::ParsingOptions {
+        allow_dtd: false,
+        nodes_limit: MAX_NODES,
+        ..roxmltree::ParsingOptions::default()
+    };
+    let dom = roxmltree::Document::parse_with_options(text, options).map_err(|error| {
+        // roxmltree places faults found at the end of the text (a truncated file) at 1:1; the
+        // user needs to see where the text stops.
+        let (line, column) = match error {
+            roxmltree::Error::UnclosedRootNode | roxmltree::Error::UnexpectedEndOfStream => {
+                encoding::line_and_column(text.as_bytes())
+            }
+            _ => (error.pos().row, error.pos().col),
+        };
+        let kind = match error {
+            roxmltree::Error::NodesLimitReached => ReadErrorKind::TooManyNodes { limit: MAX_NODES },
+            _ => ReadErrorKind::NotXml(error.to_string()),
+        };
+        ReadError {
+            file: file_name.to_owned(),
+            line,
+            column,
+            path: String::new(),
+            kind,
+        }
+    })?;
+    let root = dom.root_element();
+    let dialect = dialect_of(root, file_name, &dom)?;
+    let context = Context::new(&dom, text, file_name, dialect);
+    let document = project::read_project(&context, root)?;
+    checks::check_names(&context, &document)?;
+    Ok(document)
+}
+
+/// Reads a PLCopen XML document from the bytes of a file: UTF-8 with or without a byte order mark,
+/// or UTF-16 with one; files over [`MAX_FILE_BYTES`] are refused before anything is decoded.
+pub fn read_bytes(bytes: &[u8], file_name: &str) -> Result<Document, ReadError> {
+    let text = encoding::decode(bytes, file_name)?;
+    read(&text, file_name)
+}
+
+/// Reads a PLCopen XML file; the file name in errors is the path as given. A file over
+/// [`MAX_FILE_BYTES`] is refused from its metadata, before it is read into memory.
+pub fn read_file(path: &Path) -> Result<Document, ReadFileError> {
+    let file_name = path.display().to_string();
+    let io_error = |source| ReadFileError::Io {
+        file: file_name.clone(),
+        source,
+    };
+    let size_bytes = std::fs::metadata(path).map_err(io_error)?.len();
+    let size_bytes = usize::try_from(size_bytes).unwrap_or(usize::MAX);
+    if size_bytes > MAX_FILE_BYTES {
+        return Err(ReadFileError::Read(encoding::too_large(
+            &file_name, size_bytes,
+        )));
+    }
+    let bytes = std::fs::read(path).map_err(io_error)?;
+    Ok(read_bytes(&bytes, &file_name)?)
+}
+
+/// Why [`read_file`] failed: the file could not be read, or its content was refused.
+#[derive(Debug, thiserror::Error)]
+pub enum ReadFileError {
+    /// The file could not be opened or read.
+    #[error("{file}: {source}")]
+    Io {
+        /// The path as given.
+        file: String,
+        /// The operating system's error.
+        source: std::io::Error,
+    },
+    /// The content is not a PLCopen XML document the reader accepts.
+    #[error(transparent)]
+    Read(#[from] ReadError),
+}
+
+/// The dialect of the root element, or the error for a root that is no PLCopen project.
+fn dialect_of(
+    root: roxmltree::Node<'_, '_>,
+    file_name: &str,
+    dom: &roxmltree::Document<'_>,
+) -> Result<Dialect, ReadError> {
+    let position = dom.text_pos_at(root.range().start);
+    let error = |kind| ReadError {
+        file: file_name.to_owned(),
+        line: position.row,
+        column: position.col,
+        path: root.tag_name().name().to_owned(),
+        kind,
+    };
+    if root.tag_name().name() != "project" {
+        return Err(error(ReadErrorKind::WrongRoot {
+            found: root.tag_name().name().to_owned(),
+        }));
+    }
+    let namespace = root.tag_name().namespace().unwrap_or("");
+    [Dialect::V201, Dialect::V200, Dialect::V10]
+        .into_iter()
+        .find(|dialect| dialect.namespace() == namespace)
+        .ok_or_else(|| {
+            error(ReadErrorKind::WrongNamespace {
+                found: namespace.to_owned(),
+            })
+        })
+}
