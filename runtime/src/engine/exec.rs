@@ -184,7 +184,7 @@ impl<'a> Exec<'a> {
     /// higher priority that is due runs here.
     #[inline(always)]
     pub(super) fn tick(&mut self) -> Result<(), FaultKind> {
-        self.safe_point();
+        self.safe_point()?;
         self.budget -= 1;
         if self.budget == 0 {
             self.budget = WATCHDOG_STRIDE;
@@ -198,21 +198,24 @@ impl<'a> Exec<'a> {
     }
 
     /// Lets the tasks of higher priority that are due run, when the alarm says one may be.
+    /// Fails with [`FaultKind::Abandoned`] when the scheduler abandoned the cycles in progress
+    /// meanwhile (a stop while a task is halted).
     #[inline(always)]
-    fn safe_point(&mut self) {
+    fn safe_point(&mut self) -> Result<(), FaultKind> {
         if self.due.load(Ordering::Relaxed) {
-            self.preempt();
+            return self.preempt();
         }
+        Ok(())
     }
 
-    /// Lends the memory to the scheduler, which runs the due tasks of higher priority on it,
-    /// and moves the watchdog's deadline by the time they took: the watchdog counts this
-    /// cycle's own time.
+    /// Lends the memory to the scheduler, which runs the due tasks of higher priority on it
+    /// (and, while a task is halted, serves its commands), and moves the watchdog's deadline by
+    /// the time they took: the watchdog counts this cycle's own time.
     #[cold]
     #[inline(never)]
-    fn preempt(&mut self) {
+    fn preempt(&mut self) -> Result<(), FaultKind> {
         let Some(hook) = self.hook.as_deref_mut() else {
-            return;
+            return Ok(());
         };
         let paused = Instant::now();
         hook.preempt(EngineView {
@@ -226,6 +229,12 @@ impl<'a> Exec<'a> {
         if let Some((deadline, _)) = &mut self.deadline {
             *deadline += paused.elapsed();
         }
+        // A cycle beneath or above a halted one ends with it: a stop is not kept waiting by a
+        // cycle that loops.
+        if self.debug.abandoning() {
+            return Err(FaultKind::Abandoned);
+        }
+        Ok(())
     }
 
     /// Runs POU `index` with the current bases.
@@ -266,7 +275,7 @@ impl<'a> Exec<'a> {
     /// Pushes a frame for POU `index`, initialised from its template, and returns its start.
     /// Every call does, so this is a safe point.
     pub(crate) fn push_frame(&mut self, index: usize) -> Result<usize, FaultKind> {
-        self.safe_point();
+        self.safe_point()?;
         let code = self.code;
         let pou = code.pous.get(index).ok_or(FaultKind::Memory)?;
         let frame = self.sp;

@@ -61,6 +61,9 @@ pub(super) struct Cycles<'w, 'm> {
     /// The cycles in progress, outermost first (empty between outermost cycles; kept by the
     /// worker so that a cycle allocates nothing).
     pub(super) levels: &'w mut Vec<Level>,
+    /// How many halts are being served beneath the running cycle: while there are any, its
+    /// safe points serve the commands too.
+    pub(super) halts: u32,
 }
 
 /// A cycle in progress.
@@ -216,6 +219,11 @@ impl Cycles<'_, '_> {
             let poll = self.now_ns() + self.event_poll_ns;
             at = Some(at.map_or(poll, |at| at.min(poll)));
         }
+        if self.halts > 0 {
+            // A halt beneath: the cycle's safe points let the debugger's commands in.
+            let poll = self.now_ns() + super::halt::HALT_POLL.as_nanos() as u64;
+            at = Some(at.map_or(poll, |at| at.min(poll)));
+        }
         alarm.arm(at.map(|at| self.epoch + Duration::from_nanos(at)));
     }
 
@@ -250,6 +258,13 @@ impl Preempt for Cycles<'_, '_> {
         let Some(priority) = self.levels.last().map(|level| level.priority) else {
             return;
         };
+        if self.halts > 0 {
+            self.serve_above_halt(&mut engine);
+        }
+        if engine.debug().abandoning() {
+            // The cycle ends at once (the engine sees the same); nothing new starts.
+            return;
+        }
         if self.plans.iter().any(TaskPlan::is_event) {
             self.observe_triggers(&engine, entered);
         }
@@ -263,6 +278,9 @@ impl Preempt for Cycles<'_, '_> {
         }) {
             ran.push(task);
             self.run(&mut engine, task);
+            if engine.debug().abandoning() {
+                break;
+            }
         }
         self.arm_above(priority);
         let spent = self.now_ns().saturating_sub(entered);

@@ -224,6 +224,7 @@ impl Worker {
             cycles_total: &mut self.cycles_total,
             log: self.options.cycle_log.as_ref(),
             levels: &mut self.levels,
+            halts: 0,
         };
         cycles.run(&mut program.engine.view(), task);
         // Abandoned halted cycles have unwound: the next cycles run normally.
