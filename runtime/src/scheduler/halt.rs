@@ -1,6 +1,5 @@
 //! What the scheduler thread does while a task is halted (`docs/debugging.md` §2): from inside
-//! the halted cycle, it publishes `%Q` and `%M`, releases the located areas, serves the
-//! commands, runs the other tasks when they are due (lower priorities too) and looks at the
+//! the halted cycle, it publishes `%Q` and `%M`, serves the commands, runs the other tasks when they are due (lower priorities too) and looks at the
 //! event triggers, until the task may go on; the time halted counts neither in the cycle's
 //! time nor in the watchdog of any cycle in progress. A cycle the halt runs serves the
 //! commands at its safe points (at least every [`HALT_POLL`]), so a task that loops does not
@@ -13,7 +12,8 @@ use std::time::Duration;
 
 use program_image::Region;
 
-use super::cycles::{Cycles, copy};
+use super::cycles::Cycles;
+use super::located;
 use super::worker::lock;
 use super::{Between, Command, SchedulerError};
 use crate::engine::EngineView;
@@ -30,10 +30,15 @@ impl Cycles<'_, '_> {
         let entered = self.now_ns();
         self.halts += 1;
         self.disarm();
-        // What the halted cycle wrote so far becomes visible, as at the end of a cycle.
-        self.publish(&engine);
-        *self.areas = None;
+        // What the halted cycle wrote so far becomes visible, as at the end of a cycle (when the
+        // areas are free: else at the next look).
+        let mut published = located::publish(self.areas, &engine, self.forces);
+        // The cycles the halt runs publish their outputs, as outermost ones do.
+        let publish_depth = std::mem::replace(&mut self.publish_depth, self.levels.len());
         while engine.debug().is_halted(task) && !engine.debug().abandoning() {
+            if !published {
+                published = located::publish(self.areas, &engine, self.forces);
+            }
             let now = self.now_ns();
             if self.plans.iter().any(super::plan::TaskPlan::is_event) {
                 self.observe_triggers(&engine, now);
@@ -46,9 +51,8 @@ impl Cycles<'_, '_> {
             if let Some(next) = super::plan::pick_where(self.plans, now, |index, _| idle(index))
                 .filter(|_| !holding)
             {
-                self.take_areas(&mut engine);
+                located::take_in(self.areas, &mut engine);
                 self.run(&mut engine, next);
-                *self.areas = None;
                 continue;
             }
             // The tasks in a cycle (the halted one among them) are planned in the past: only
@@ -63,7 +67,10 @@ impl Cycles<'_, '_> {
             }
         }
         self.halts -= 1;
-        self.take_areas(&mut engine);
+        self.publish_depth = publish_depth;
+        // What the outside world wrote meanwhile, for the rest of the halted cycle (a waiting
+        // one takes it at the next exchange when the areas are busy now).
+        located::take_in(self.areas, &mut engine);
         let halted_ns = self.now_ns().saturating_sub(entered);
         // Neither the halted task nor a task waiting beneath it counts the time halted.
         for level in self.levels.iter_mut() {
@@ -96,23 +103,19 @@ impl Cycles<'_, '_> {
     fn serve_while_halted(&mut self, engine: &mut EngineView<'_>, command: Command) {
         match command {
             Command::Between(action) => {
-                // A cycle run by the halt holds the located areas; the halt itself does not.
-                let held = self.areas.is_some();
-                let lock_of = self.areas_lock;
-                let areas = self.areas.get_or_insert_with(|| lock(lock_of));
+                // While a task is halted the thread may wait for the areas: debugging suspends
+                // the timing guarantees anyway.
+                let mut areas = lock(self.areas);
                 let mut between = Between {
                     memory: Some(Memory {
                         engine: engine.reborrow(),
-                        areas,
+                        areas: &mut areas,
                     }),
                     forces: &mut *self.forces,
                     trace: &mut *self.trace,
                     cycles: *self.cycles_total,
                 };
                 action(&mut between);
-                if !held {
-                    *self.areas = None;
-                }
             }
             // An online change waits for a moment when no task is in a cycle; here one is
             // halted in its cycle, and an online change never abandons a cycle.
@@ -142,24 +145,5 @@ impl Cycles<'_, '_> {
         {
             writer.write_later(snapshot);
         }
-    }
-
-    /// Copies `%Q` and `%M` of `engine` to the located areas, with the forces.
-    fn publish(&mut self, engine: &EngineView<'_>) {
-        let lock_of = self.areas_lock;
-        let areas = self.areas.get_or_insert_with(|| lock(lock_of));
-        copy(engine.region(Region::Output), &mut areas.output);
-        copy(engine.region(Region::Memory), &mut areas.memory);
-        self.forces.apply_to_areas(areas);
-    }
-
-    /// Takes the located areas again and copies what the outside world wrote meanwhile into
-    /// `engine`, as the worker does before a cycle.
-    fn take_areas(&mut self, engine: &mut EngineView<'_>) {
-        let lock_of = self.areas_lock;
-        let areas = self.areas.get_or_insert_with(|| lock(lock_of));
-        copy(&areas.input, engine.region_mut(Region::Input));
-        copy(&areas.output, engine.region_mut(Region::Output));
-        copy(&areas.memory, engine.region_mut(Region::Memory));
     }
 }

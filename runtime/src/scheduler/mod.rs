@@ -41,6 +41,8 @@
 mod alarm;
 mod cycles;
 mod halt;
+mod located;
+mod outbox;
 mod plan;
 mod realtime;
 mod record;
@@ -405,5 +407,7 @@ mod tests;
 
 #[cfg(test)]
 mod halt_tests;
+#[cfg(test)]
+mod lock_tests;
 #[cfg(test)]
 mod preemption_tests;
