@@ -13,6 +13,7 @@ use std::time::Duration;
 use program_image::Region;
 
 use super::cycles::Cycles;
+use super::inbox::Received;
 use super::located;
 use super::worker::lock;
 use super::{Between, Command, SchedulerError};
@@ -60,10 +61,10 @@ impl Cycles<'_, '_> {
             let wait = super::plan::next_start_where(self.plans, |index, _| idle(index))
                 .map_or(HALT_POLL, |at| Duration::from_nanos(at.saturating_sub(now)))
                 .min(HALT_POLL);
-            match self.commands.recv_timeout(wait) {
-                Ok(command) => self.serve_while_halted(&mut engine, command),
-                Err(mpsc::RecvTimeoutError::Timeout) => {}
-                Err(mpsc::RecvTimeoutError::Disconnected) => engine.debug_mut().abandon_halted(),
+            match super::inbox::wait(self.commands, Some(wait)) {
+                Received::Command(command) => self.serve_while_halted(&mut engine, command),
+                Received::Nothing => {}
+                Received::Gone => engine.debug_mut().abandon_halted(),
             }
         }
         self.halts -= 1;

@@ -41,6 +41,7 @@
 mod alarm;
 mod cycles;
 mod halt;
+mod inbox;
 mod located;
 mod outbox;
 mod plan;
@@ -207,6 +208,8 @@ pub enum SchedulerError {
 /// ends the thread.
 pub struct Scheduler {
     commands: mpsc::Sender<Command>,
+    /// The scheduler's thread, unparked after each command (`inbox.rs`).
+    waker: std::thread::Thread,
     status: Arc<Mutex<SchedulerStatus>>,
     thread: Option<JoinHandle<()>>,
 }
@@ -267,6 +270,7 @@ impl Scheduler {
         }
         Ok(Self {
             commands,
+            waker: thread.thread().clone(),
             status,
             thread: Some(thread),
         })
@@ -324,7 +328,7 @@ impl Scheduler {
         &self,
         action: impl FnOnce(&mut Between<'_>) -> T + Send + 'static,
     ) -> Result<T, SchedulerError> {
-        self.ask(|reply: mpsc::Sender<T>| {
+        self.ask(|reply: inbox::Answer<T>| {
             Command::Between(Box::new(move |between| {
                 let _ = reply.send(action(between));
             }))
@@ -353,13 +357,14 @@ impl Scheduler {
     /// Sends a command and waits for its answer.
     fn ask<T>(
         &self,
-        command: impl FnOnce(mpsc::Sender<T>) -> Command,
+        command: impl FnOnce(inbox::Answer<T>) -> Command,
     ) -> Result<T, SchedulerError> {
-        let (reply, answer) = mpsc::channel();
+        let (reply, answer) = inbox::answer();
         self.commands
             .send(command(reply))
             .map_err(|_| SchedulerError::Gone)?;
-        answer.recv().map_err(|_| SchedulerError::Gone)
+        self.waker.unpark();
+        inbox::wait_for_answer(&answer).ok_or(SchedulerError::Gone)
     }
 }
 
@@ -367,9 +372,10 @@ impl Drop for Scheduler {
     fn drop(&mut self) {
         if let Some(thread) = self.thread.take() {
             // A failed save cannot be reported from a drop; `shutdown` reports it.
-            let (reply, answer) = mpsc::channel();
+            let (reply, answer) = inbox::answer();
             if self.commands.send(Command::Shutdown(reply)).is_ok() {
-                let _ = answer.recv();
+                self.waker.unpark();
+                let _ = inbox::wait_for_answer(&answer);
             }
             let _ = thread.join();
         }
@@ -377,14 +383,14 @@ impl Drop for Scheduler {
 }
 
 /// The answer to a command.
-type Reply = mpsc::Sender<Result<(), SchedulerError>>;
+type Reply = inbox::Answer<Result<(), SchedulerError>>;
 
 /// What the handle asks of the thread.
 enum Command {
     Load(
         Box<Engine>,
         ImageHash,
-        mpsc::Sender<Result<LoadReport, SchedulerError>>,
+        inbox::Answer<Result<LoadReport, SchedulerError>>,
     ),
     Start(Reply),
     Stop(Reply),
@@ -392,7 +398,7 @@ enum Command {
     /// An online change: the new engine, its plan, the images it changes from and to.
     OnlineChange(
         Box<(Engine, Arc<OnlineChangePlan>, ImageHash, ImageHash)>,
-        mpsc::Sender<ChangeAnswer>,
+        inbox::Answer<ChangeAnswer>,
     ),
     /// An action between two cycles, which sends its own answer.
     Between(BetweenAction),

@@ -8,6 +8,7 @@ use program_image::{ImageHash, Region};
 
 use super::alarm::Alarm;
 use super::cycles::{self, Cycles, Level, copy};
+use super::inbox::{self, Received};
 use super::located;
 use super::outbox::Outbox;
 use super::plan::{self, TaskPlan};
@@ -154,28 +155,17 @@ impl Worker {
                     return;
                 }
             }
-            let Some(wait) = wait else {
-                match commands.recv() {
-                    Ok(command) => {
-                        if self.receive(command) == Next::Exit {
-                            return;
-                        }
-                        continue;
-                    }
-                    Err(_) => return self.exit(),
-                }
-            };
-            if wait.is_zero() {
+            if wait.is_some_and(|wait| wait.is_zero()) {
                 continue;
             }
-            match commands.recv_timeout(wait) {
-                Ok(command) => {
+            match inbox::wait(commands, wait) {
+                Received::Command(command) => {
                     if self.receive(command) == Next::Exit {
                         return;
                     }
                 }
-                Err(mpsc::RecvTimeoutError::Timeout) => {}
-                Err(mpsc::RecvTimeoutError::Disconnected) => return self.exit(),
+                Received::Nothing => {}
+                Received::Gone => return self.exit(),
             }
         }
     }
