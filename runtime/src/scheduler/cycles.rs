@@ -42,7 +42,7 @@ pub(super) struct Cycles<'w, 'm> {
     /// 0, the outermost only, but while a halt runs cycles above it.
     pub(super) publish_depth: usize,
     /// The scheduler's commands, served while a task is halted.
-    pub(super) commands: &'w mpsc::Receiver<Command>,
+    pub(super) commands: &'w super::inbox::Inbox,
     /// Commands that abandoned the halted cycles, for the worker once they have unwound.
     pub(super) deferred: &'w mut Vec<Command>,
     /// Saves retained values while a task is halted, as between cycles: the writer, when the

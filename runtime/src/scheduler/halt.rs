@@ -7,7 +7,6 @@
 //! halted cycles, and every cycle beneath or above them at its next safe point, and is done
 //! by the worker once they have unwound.
 
-use std::sync::mpsc;
 use std::time::Duration;
 
 use program_image::Region;
@@ -58,10 +57,14 @@ impl Cycles<'_, '_> {
             }
             // The tasks in a cycle (the halted one among them) are planned in the past: only
             // the others say how long to wait, or the thread would spin while halted.
-            let wait = super::plan::next_start_where(self.plans, |index, _| idle(index))
+            let mut wait = super::plan::next_start_where(self.plans, |index, _| idle(index))
                 .map_or(HALT_POLL, |at| Duration::from_nanos(at.saturating_sub(now)))
                 .min(HALT_POLL);
-            match super::inbox::wait(self.commands, Some(wait)) {
+            // Statistics and faults a reader kept from being published go out while halted too.
+            if !self.outbox.try_publish(self.status, self.plans) {
+                wait = wait.min(super::inbox::LOCK_RETRY);
+            }
+            match self.commands.wait(Some(wait)) {
                 Received::Command(command) => self.serve_while_halted(&mut engine, command),
                 Received::Nothing => {}
                 Received::Gone => engine.debug_mut().abandon_halted(),
@@ -87,10 +90,10 @@ impl Cycles<'_, '_> {
     /// for that cycle's end, and a stop abandons it here.
     pub(super) fn serve_above_halt(&mut self, engine: &mut EngineView<'_>) {
         loop {
-            match self.commands.try_recv() {
-                Ok(command) => self.serve_while_halted(engine, command),
-                Err(mpsc::TryRecvError::Empty) => return,
-                Err(mpsc::TryRecvError::Disconnected) => {
+            match self.commands.try_take() {
+                Received::Command(command) => self.serve_while_halted(engine, command),
+                Received::Nothing => return,
+                Received::Gone => {
                     engine.debug_mut().abandon_halted();
                     return;
                 }

@@ -94,24 +94,29 @@ fn cycles_run_while_the_areas_are_held_and_their_data_arrives_once_released() {
 #[test]
 fn cycles_run_while_the_status_is_held_and_their_statistics_and_faults_arrive_once_released() {
     let (options, records) = logged();
-    let (scheduler, _areas) = scheduler(options);
+    let (scheduler, areas) = scheduler(options);
+    // Task 1 loops past its watchdog once its trigger %MX4.0 rises.
     let faulting = TestTask {
+        kind: program_image::TaskKind::Event,
         watchdog_ns: MS,
         body: crate::test_images::Body::Watch {
             iterations: i32::MAX,
             sets_trigger: false,
         },
-        ..TestTask::cyclic(60_000 * MS, 5)
+        ..TestTask::cyclic(0, 5)
     };
     scheduler
         .load(image(&[TestTask::cyclic(MS, 1), faulting], &[]))
         .unwrap();
-    let held = scheduler.status.lock().unwrap();
-    // Started and stopped by commands that wait for the status, so start before holding it.
-    drop(held);
+    // Start waits for the status, so it comes before holding it.
     scheduler.start().unwrap();
     let held = scheduler.status.lock().unwrap();
     let seen = held.tasks[0].cycles;
+    areas
+        .lock()
+        .unwrap()
+        .set_bit(Area::Memory, 4, 0, true)
+        .unwrap();
     // Task 1 faults by its watchdog, and task 0 goes on, while nobody can publish.
     cycles_end(&records, 1, 1);
     cycles_end(&records, 0, 20);

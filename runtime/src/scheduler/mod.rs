@@ -207,7 +207,7 @@ pub enum SchedulerError {
 /// A handle on the scheduler's thread. Dropping it stops the tasks, saves retained values and
 /// ends the thread.
 pub struct Scheduler {
-    commands: mpsc::Sender<Command>,
+    commands: inbox::Postbox,
     /// The scheduler's thread, unparked after each command (`inbox.rs`).
     waker: std::thread::Thread,
     status: Arc<Mutex<SchedulerStatus>>,
@@ -238,7 +238,7 @@ impl Scheduler {
         areas: Arc<Mutex<LocatedAreas>>,
         options: SchedulerOptions,
     ) -> Result<Self, SchedulerError> {
-        let (commands, received) = mpsc::channel();
+        let (commands, received) = inbox::queue();
         let status = Arc::new(Mutex::new(SchedulerStatus {
             state: SchedulerState::Stopped,
             image: None,

@@ -1,14 +1,14 @@
 //! The scheduler's thread: commands from the handle, and task cycles when they are due.
 
 use std::collections::VecDeque;
-use std::sync::{Arc, Mutex, MutexGuard, PoisonError, mpsc};
+use std::sync::{Arc, Mutex, MutexGuard, PoisonError};
 use std::time::{Duration, Instant};
 
 use program_image::{ImageHash, Region};
 
 use super::alarm::Alarm;
 use super::cycles::{self, Cycles, Level, copy};
-use super::inbox::{self, Received};
+use super::inbox::{Inbox, LOCK_RETRY, Received};
 use super::located;
 use super::outbox::Outbox;
 use super::plan::{self, TaskPlan};
@@ -26,11 +26,6 @@ mod switch;
 
 /// How long the thread waits for a command while "halt all" holds every task.
 const HOLD_POLL: Duration = Duration::from_millis(10);
-
-/// The longest wait while something waits for a lock another thread holds (a command that
-/// needs the located areas, statistics to publish): the thread tries again this soon instead
-/// of waiting for the lock.
-const LOCK_RETRY: Duration = Duration::from_micros(200);
 
 /// Everything the scheduler's thread owns.
 pub(super) struct Worker {
@@ -117,7 +112,7 @@ impl Worker {
     }
 
     /// Runs until the handle asks it to end or goes away.
-    pub(super) fn run(mut self, commands: &mpsc::Receiver<Command>) {
+    pub(super) fn run(mut self, commands: &Inbox) {
         loop {
             // Commands first, so the handle is never kept waiting by a busy schedule; those
             // postponed before come first.
@@ -132,14 +127,14 @@ impl Worker {
                 }
             }
             loop {
-                match commands.try_recv() {
-                    Ok(command) => {
+                match commands.try_take() {
+                    Received::Command(command) => {
                         if self.receive(command) == Next::Exit {
                             return;
                         }
                     }
-                    Err(mpsc::TryRecvError::Empty) => break,
-                    Err(mpsc::TryRecvError::Disconnected) => return self.exit(),
+                    Received::Nothing => break,
+                    Received::Gone => return self.exit(),
                 }
             }
             let mut wait = self.run_due(commands);
@@ -158,7 +153,7 @@ impl Worker {
             if wait.is_some_and(|wait| wait.is_zero()) {
                 continue;
             }
-            match inbox::wait(commands, wait) {
+            match commands.wait(wait) {
                 Received::Command(command) => {
                     if self.receive(command) == Next::Exit {
                         return;
@@ -172,7 +167,7 @@ impl Worker {
 
     /// Runs the task that is due, if any, and returns how long to wait before looking again:
     /// zero after a cycle, `None` when nothing will ever be due without a command.
-    fn run_due(&mut self, commands: &mpsc::Receiver<Command>) -> Option<Duration> {
+    fn run_due(&mut self, commands: &Inbox) -> Option<Duration> {
         if !self.running {
             return None;
         }
@@ -215,7 +210,7 @@ impl Worker {
 
     /// Runs one cycle of `task` with the located areas locked (tasks of higher priority may
     /// interrupt it), then plans its next one.
-    fn run_cycle(&mut self, task: usize, commands: &mpsc::Receiver<Command>) {
+    fn run_cycle(&mut self, task: usize, commands: &Inbox) {
         let Some(program) = self.program.as_mut() else {
             return;
         };
