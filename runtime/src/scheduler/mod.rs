@@ -92,7 +92,8 @@ pub struct SchedulerOptions {
     /// How long before a planned start the scheduler stops sleeping and yields the processor
     /// in a loop instead: less start jitter (a sleep wakes late by the system's timer slack and
     /// wake-up latency) for that much busy time per cycle. Zero always sleeps. The preemption
-    /// alarm does the same before the start of a task that interrupts another.
+    /// alarm spins (without yielding) for that long before the start of a task that interrupts
+    /// another.
     pub spin_before_start: Duration,
     /// Whether a task of higher priority that becomes due interrupts a running cycle of a
     /// lower one at its next safe point (`docs/scheduler.md`); off, every cycle runs to its end.
