@@ -2,9 +2,13 @@
 //!
 //! `%MWn` is bytes `2n..=2n+1` little-endian, `%MDn` bytes `4n..=4n+3`, `%MLn` bytes
 //! `8n..=8n+7`, and `%MXb.i` bit `i` of byte `b`; `%I` and `%Q` are laid out the same way.
-//! The engine owns them behind an `Arc<std::sync::Mutex<LocatedAreas>>` and holds the lock for a
-//! whole PLC cycle; the Modbus server holds it for one request, so every request sees the areas
-//! as they are between two cycles.
+//! They are shared behind an `Arc<std::sync::Mutex<LocatedAreas>>`. The scheduler locks them
+//! only to exchange them with the program's memory at the start and the end of an outermost
+//! cycle, and never waits for the lock (a busy lock defers the exchange to the next cycle, see
+//! [`LocatedAreas::exchange`]); the Modbus server holds it for one request, so every request
+//! sees the areas as they are between two cycles.
+
+mod exchange;
 
 /// One of the three located areas.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -20,7 +24,10 @@ pub enum Area {
 /// The bytes of `%I`, `%Q` and `%M`.
 ///
 /// They live as long as the runtime runs one program image; they are not saved (retain data is
-/// kept elsewhere).
+/// kept elsewhere). Besides the bytes, they remember which bits of `%Q` and `%M` clients wrote
+/// through [`LocatedAreas::set_bit`] and [`LocatedAreas::set_word_at_byte`] since the program
+/// last took them in, so that a write is never lost when an exchange is deferred (equality
+/// compares those marks too).
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct LocatedAreas {
     /// `%I`: the inputs, written by the I/O layer before each cycle.
@@ -29,6 +36,10 @@ pub struct LocatedAreas {
     pub output: Vec<u8>,
     /// `%M`: the memory, free for the program and for Modbus clients.
     pub memory: Vec<u8>,
+    /// The bits of `%Q` written by clients since the last exchange; empty when none.
+    written_output: Vec<u8>,
+    /// The bits of `%M` written by clients since the last exchange; empty when none.
+    written_memory: Vec<u8>,
 }
 
 impl Area {
@@ -55,6 +66,8 @@ impl LocatedAreas {
             input: vec![0; input_bytes],
             output: vec![0; output_bytes],
             memory: vec![0; memory_bytes],
+            written_output: Vec::new(),
+            written_memory: Vec::new(),
         }
     }
 
@@ -67,13 +80,26 @@ impl LocatedAreas {
         }
     }
 
-    /// The bytes of one area, for writing.
+    /// The bytes of one area, for writing. A write through it is not marked as a client's: a
+    /// running program's next exchange may undo it in `%Q` and `%M` (use
+    /// [`LocatedAreas::write_bytes`] there).
     pub fn bytes_mut(&mut self, area: Area) -> &mut [u8] {
         match area {
             Area::Input => &mut self.input,
             Area::Output => &mut self.output,
             Area::Memory => &mut self.memory,
         }
+    }
+
+    /// Writes `bytes` from byte `byte` of `area` as a client does, so the running program takes
+    /// them in at its next exchange; `None` (and no change) when they do not fit in the area.
+    pub fn write_bytes(&mut self, area: Area, byte: usize, bytes: &[u8]) -> Option<()> {
+        let end = byte.checked_add(bytes.len())?;
+        self.bytes_mut(area)
+            .get_mut(byte..end)?
+            .copy_from_slice(bytes);
+        self.mark_written(area, byte, std::iter::repeat_n(0xFF, bytes.len()));
+        Some(())
     }
 
     /// Bit `bit` of byte `byte` (`%IXbyte.bit`, `%QX…`, `%MX…`), or `None` when the byte is
@@ -99,6 +125,7 @@ impl LocatedAreas {
         } else {
             *target &= !(1 << bit);
         }
+        self.mark_written(area, byte, [1 << bit]);
         Some(())
     }
 
@@ -128,6 +155,7 @@ impl LocatedAreas {
         self.bytes_mut(area)
             .get_mut(byte..end)?
             .copy_from_slice(&value.to_le_bytes());
+        self.mark_written(area, byte, [0xFF, 0xFF]);
         Some(())
     }
 }

@@ -190,7 +190,7 @@ impl<'a> Exec<'a> {
     /// came to be watched by the debugger while it was interrupted.
     #[inline(always)]
     pub(super) fn tick(&mut self, pc: usize) -> Result<bool, FaultKind> {
-        let watched = self.safe_point(pc);
+        let watched = self.safe_point(pc)?;
         self.budget -= 1;
         if self.budget == 0 {
             self.budget = WATCHDOG_STRIDE;
@@ -205,22 +205,28 @@ impl<'a> Exec<'a> {
 
     /// Lets the tasks of higher priority that are due run, when the alarm says one may be;
     /// `at` is the instruction of the current POU the task stands at. Says whether the task
-    /// came to be watched by the debugger meanwhile.
+    /// came to be watched by the debugger meanwhile; fails with [`FaultKind::Abandoned`] when
+    /// the scheduler abandoned the cycles in progress meanwhile (a stop while a task is
+    /// halted).
     #[inline(always)]
-    fn safe_point(&mut self, at: usize) -> bool {
-        self.due.load(Ordering::Relaxed) && self.preempt(at)
+    fn safe_point(&mut self, at: usize) -> Result<bool, FaultKind> {
+        if self.due.load(Ordering::Relaxed) {
+            return self.preempt(at);
+        }
+        Ok(false)
     }
 
-    /// Lends the memory to the scheduler, which runs the due tasks of higher priority on it,
-    /// and moves the watchdog's deadline by the time they took: the watchdog counts this
-    /// cycle's own time. With the debugger, the innermost frame first notes instruction `at`,
-    /// so a client sees where the waiting task stands; returns whether the task is watched
-    /// (a step, run to cursor or halt was given to it meanwhile).
+    /// Lends the memory to the scheduler, which runs the due tasks of higher priority on it
+    /// (and, while a task is halted, serves its commands), and moves the watchdog's deadline by
+    /// the time they took: the watchdog counts this cycle's own time. With the debugger, the
+    /// innermost frame first notes instruction `at`, so a client sees where the waiting task
+    /// stands; returns whether the task is watched (a step, run to cursor or halt was given to
+    /// it meanwhile).
     #[cold]
     #[inline(never)]
-    fn preempt(&mut self, at: usize) -> bool {
+    fn preempt(&mut self, at: usize) -> Result<bool, FaultKind> {
         let Some(hook) = self.hook.as_deref_mut() else {
-            return false;
+            return Ok(false);
         };
         if self.debugging {
             self.debug.note_position(self.task, at as u32);
@@ -237,7 +243,12 @@ impl<'a> Exec<'a> {
         if let Some((deadline, _)) = &mut self.deadline {
             *deadline += paused.elapsed();
         }
-        self.debugging && self.debug.watched(self.task)
+        // A cycle beneath or above a halted one ends with it: a stop is not kept waiting by a
+        // cycle that loops.
+        if self.debug.abandoning() {
+            return Err(FaultKind::Abandoned);
+        }
+        Ok(self.debugging && self.debug.watched(self.task))
     }
 
     /// Runs POU `index` with the current bases, called from instruction `call_site` of the
@@ -280,7 +291,7 @@ impl<'a> Exec<'a> {
     /// initialised from its template, and returns its start. Every call does, so this is a
     /// safe point.
     pub(crate) fn push_frame(&mut self, index: usize, call_site: u32) -> Result<usize, FaultKind> {
-        self.safe_point(call_site as usize);
+        self.safe_point(call_site as usize)?;
         let code = self.code;
         let pou = code.pous.get(index).ok_or(FaultKind::Memory)?;
         let frame = self.sp;

@@ -105,11 +105,7 @@ mod tests {
     #[test]
     fn forced_values_overwrite_the_areas_and_a_release_stops_that() {
         let mut forces = Forces::default();
-        let mut areas = LocatedAreas {
-            input: vec![0; 4],
-            output: vec![0; 4],
-            memory: vec![0; 4],
-        };
+        let mut areas = LocatedAreas::new(4, 4, 4);
         forces.set(place(0, Some(3), 1), vec![1]);
         forces.set(place(2, None, 2), vec![0x34, 0x12]);
         forces.set(place(2, None, 2), vec![0x78, 0x56]);

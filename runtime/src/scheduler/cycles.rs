@@ -1,26 +1,28 @@
 //! One task cycle with everything around it (forces, located areas, trace, statistics, faults),
 //! and the cycles of tasks of higher priority that interrupt it at its safe points.
 //!
-//! The outermost cycle is started by the worker with the located areas locked and copied into
-//! the engine; a cycle that interrupts another runs on the same engine memory under the same
-//! lock, so it does not copy the areas in again (that would undo what the interrupted cycle
-//! wrote). Every cycle, nested or not, applies the forces before and after, copies `%Q` and `%M`
-//! out (the areas stay locked until the outermost cycle ends, so nobody sees the intermediate
-//! state), feeds the trace at its end, and records its statistics.
+//! The outermost cycle is started by the worker after exchanging the located areas with the
+//! engine; a cycle that interrupts another runs on the same engine memory, so it does not take
+//! the areas in again (that would undo what the interrupted cycle wrote), and does not publish
+//! its `%Q` and `%M` either: the outermost cycle does at its end, so nobody sees the
+//! intermediate state. Every cycle, nested or not, applies the forces before and after, feeds
+//! the trace at its end, and records its statistics. None of it waits for a lock another
+//! thread holds (`located.rs`, `outbox.rs`).
 
 use std::panic::AssertUnwindSafe;
 use std::sync::atomic::AtomicBool;
-use std::sync::{Mutex, MutexGuard, mpsc};
+use std::sync::{Mutex, mpsc};
 use std::time::{Duration, Instant};
 
 use online_protocol::Place;
 use program_image::{ProgramImage, Region};
 
 use super::alarm::Alarm;
+use super::outbox::Outbox;
 use super::plan::{self, TaskPlan};
 use super::record::CycleRecord;
 use super::retain_writer::RetainWriter;
-use super::{Command, MAX_FAULTS, SchedulerState, SchedulerStatus};
+use super::{Command, SchedulerStatus};
 use crate::areas::LocatedAreas;
 use crate::engine::{EngineView, FaultKind, FaultRecord, Preempt, Preemption};
 use crate::online::{Forces, PlaceAccess, Trace};
@@ -34,18 +36,21 @@ pub(super) struct Cycles<'w, 'm> {
     pub(super) plans: &'w mut [TaskPlan],
     pub(super) forces: &'w mut Forces,
     pub(super) trace: &'w mut Trace,
-    /// The located areas, locked for the whole outermost cycle but while a task is halted.
-    pub(super) areas: &'w mut Option<MutexGuard<'m, LocatedAreas>>,
-    /// The lock of the located areas, released and taken again around a halt.
-    pub(super) areas_lock: &'m Mutex<LocatedAreas>,
+    /// The located areas, exchanged with the engine when their lock is free.
+    pub(super) areas: &'m Mutex<LocatedAreas>,
+    /// Cycles that start at this depth of nesting or less publish `%Q` and `%M` at their end:
+    /// 0, the outermost only, but while a halt runs cycles above it.
+    pub(super) publish_depth: usize,
     /// The scheduler's commands, served while a task is halted.
-    pub(super) commands: &'w mpsc::Receiver<Command>,
+    pub(super) commands: &'w super::inbox::Inbox,
     /// Commands that abandoned the halted cycles, for the worker once they have unwound.
     pub(super) deferred: &'w mut Vec<Command>,
     /// Saves retained values while a task is halted, as between cycles: the writer, when the
     /// next save is due, and the interval between saves.
     pub(super) retain: (Option<&'w RetainWriter>, &'w mut u64, u64),
     pub(super) status: &'w Mutex<SchedulerStatus>,
+    /// Statistics and faults waiting for the status's lock.
+    pub(super) outbox: &'w mut Outbox,
     /// The preemption alarm; `None` runs every cycle to its end.
     pub(super) alarm: Option<&'w Alarm>,
     /// The origin of the scheduler's clock.
@@ -61,6 +66,9 @@ pub(super) struct Cycles<'w, 'm> {
     /// The cycles in progress, outermost first (empty between outermost cycles; kept by the
     /// worker so that a cycle allocates nothing).
     pub(super) levels: &'w mut Vec<Level>,
+    /// How many halts are being served beneath the running cycle: while there are any, its
+    /// safe points serve the commands too.
+    pub(super) halts: u32,
 }
 
 /// A cycle in progress.
@@ -102,16 +110,15 @@ impl Cycles<'_, '_> {
         // without popping its levels; what is left of them belongs to no running cycle.
         self.levels.truncate(depth + 1);
         self.forces.apply_to_view(engine);
-        let lock = self.areas_lock;
-        let areas = self.areas.get_or_insert_with(|| super::worker::lock(lock));
-        copy(engine.region(Region::Output), &mut areas.output);
-        copy(engine.region(Region::Memory), &mut areas.memory);
-        self.forces.apply_to_areas(areas);
+        if depth <= self.publish_depth {
+            // A busy lock leaves the outputs to the next exchange, which loses nothing.
+            super::located::publish(self.areas, engine, self.forces);
+        }
         *self.cycles_total += 1;
         if self.trace.recording_task() == Some(task) {
-            let (data, areas) = (engine.region(Region::Data), &**areas);
+            let engine = &*engine;
             self.trace
-                .end_of_cycle(cycle + 1, started, |place| read_place(place, data, areas));
+                .end_of_cycle(cycle + 1, started, |place| read_place(place, engine));
         }
         let ended = self.now_ns();
         let preempted_ns = self.levels.pop().map_or(0, |level| level.preempted_ns);
@@ -173,18 +180,9 @@ impl Cycles<'_, '_> {
         if fault.is_some() {
             plan.fault();
         }
-        let mut status = super::worker::lock(self.status);
-        if let Some(published) = status.tasks.get_mut(task) {
-            published.clone_from(&plan.statistics);
-        }
-        if let Some(fault) = fault {
-            if status.faults.len() >= MAX_FAULTS {
-                status.faults.remove(0);
-            }
-            status.faults.push(fault);
-            status.faults_total += 1;
-            status.state = SchedulerState::Faulted;
-        }
+        self.outbox.post(fault);
+        // A reader holding the status leaves it to the next cycle or the worker's next look.
+        self.outbox.try_publish(self.status, self.plans);
     }
 
     /// Arms the alarm for the earliest planned start of a task of higher priority than
@@ -216,6 +214,11 @@ impl Cycles<'_, '_> {
             let poll = self.now_ns() + self.event_poll_ns;
             at = Some(at.map_or(poll, |at| at.min(poll)));
         }
+        if self.halts > 0 {
+            // A halt beneath: the cycle's safe points let the debugger's commands in.
+            let poll = self.now_ns() + super::halt::HALT_POLL.as_nanos() as u64;
+            at = Some(at.map_or(poll, |at| at.min(poll)));
+        }
         alarm.arm(at.map(|at| self.epoch + Duration::from_nanos(at)));
     }
 
@@ -226,7 +229,7 @@ impl Cycles<'_, '_> {
     }
 
     /// Looks at the triggers of the event tasks in the interrupted cycle's memory, which holds
-    /// the current values of the located areas too (they stay locked meanwhile).
+    /// the located areas' values of the last exchange.
     pub(super) fn observe_triggers(&mut self, engine: &EngineView<'_>, now: u64) {
         for (task, plan) in self.plans.iter_mut().enumerate() {
             if plan.is_event() {
@@ -250,6 +253,13 @@ impl Preempt for Cycles<'_, '_> {
         let Some(priority) = self.levels.last().map(|level| level.priority) else {
             return;
         };
+        if self.halts > 0 {
+            self.serve_above_halt(&mut engine);
+        }
+        if engine.debug().abandoning() {
+            // The cycle ends at once (the engine sees the same); nothing new starts.
+            return;
+        }
         if self.plans.iter().any(TaskPlan::is_event) {
             self.observe_triggers(&engine, entered);
         }
@@ -263,6 +273,9 @@ impl Preempt for Cycles<'_, '_> {
         }) {
             ran.push(task);
             self.run(&mut engine, task);
+            if engine.debug().abandoning() {
+                break;
+            }
         }
         self.arm_above(priority);
         let spent = self.now_ns().saturating_sub(entered);
@@ -276,13 +289,10 @@ impl Preempt for Cycles<'_, '_> {
     }
 }
 
-/// The value at `place`: the data region from the engine, the located ones from the areas.
-fn read_place(place: Place, data: &[u8], areas: &LocatedAreas) -> Vec<u8> {
+/// The value at `place` in the engine's memory, forces applied, as the cycle left it.
+fn read_place(place: Place, engine: &EngineView<'_>) -> Vec<u8> {
     match place.region_of() {
-        Some(Region::Data) => place.read_from(data),
-        Some(Region::Input) => place.read_from(&areas.input),
-        Some(Region::Output) => place.read_from(&areas.output),
-        Some(Region::Memory) => place.read_from(&areas.memory),
+        Some(region) => place.read_from(engine.region(region)),
         None => Vec::new(),
     }
 }
@@ -318,9 +328,8 @@ pub(super) fn trigger_is_set<'b>(
 }
 
 /// Runs one cycle of `task`. A panic of the engine is a bug of the runtime, not of the program:
-/// it faults the task instead of ending the process (and poisoning the areas, which are locked
-/// during the cycle, for the Modbus server). A panic in a cycle that interrupted another is
-/// caught here too, so the interrupted cycle goes on.
+/// it faults the task instead of ending the process. A panic in a cycle that interrupted another
+/// is caught here too, so the interrupted cycle goes on.
 // As for `EngineView::run_cycle`: a fault is rare and ends the task, so its record is not boxed.
 #[allow(clippy::result_large_err)]
 fn run_guarded(

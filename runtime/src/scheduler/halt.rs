@@ -1,34 +1,44 @@
 //! What the scheduler thread does while a task is halted (`docs/debugging.md` §2): from inside
-//! the halted cycle, it publishes `%Q` and `%M`, releases the located areas, serves the
-//! commands, runs the other tasks when they are due (lower priorities too) and looks at the
+//! the halted cycle, it publishes `%Q` and `%M`, serves the commands, runs the other tasks when they are due (lower priorities too) and looks at the
 //! event triggers, until the task may go on; the time halted counts neither in the cycle's
-//! time nor in the watchdog of any cycle in progress. A stop, reset, download or shutdown
-//! abandons the halted cycles and is done by the worker once they have unwound.
+//! time nor in the watchdog of any cycle in progress. A cycle the halt runs serves the
+//! commands at its safe points (at least every [`HALT_POLL`]), so a task that loops does not
+//! make the debugger wait for its watchdog. A stop, reset, download or shutdown abandons the
+//! halted cycles, and every cycle beneath or above them at its next safe point, and is done
+//! by the worker once they have unwound.
 
-use std::sync::mpsc;
 use std::time::Duration;
 
 use program_image::Region;
 
-use super::cycles::{Cycles, copy};
+use super::cycles::Cycles;
+use super::inbox::Received;
+use super::located;
 use super::worker::lock;
 use super::{Between, Command, SchedulerError};
 use crate::engine::EngineView;
 use crate::online::Memory;
 use crate::retain::RetainSnapshot;
 
-/// The longest wait for a command while halted, so event triggers are looked at often enough.
-const HALT_POLL: Duration = Duration::from_millis(10);
+/// The longest wait for a command while halted, so event triggers are looked at often enough;
+/// also how often a cycle run by the halt lets the commands in.
+pub(super) const HALT_POLL: Duration = Duration::from_millis(10);
 
 impl Cycles<'_, '_> {
     /// Serves the halt of `task` on `engine` until it may go on or its cycle is abandoned.
     pub(super) fn serve_halt(&mut self, mut engine: EngineView<'_>, task: usize) {
         let entered = self.now_ns();
+        self.halts += 1;
         self.disarm();
-        // What the halted cycle wrote so far becomes visible, as at the end of a cycle.
-        self.publish(&engine);
-        *self.areas = None;
+        // What the halted cycle wrote so far becomes visible, as at the end of a cycle (when the
+        // areas are free: else at the next look).
+        let mut published = located::publish(self.areas, &engine, self.forces);
+        // The cycles the halt runs publish their outputs, as outermost ones do.
+        let publish_depth = std::mem::replace(&mut self.publish_depth, self.levels.len());
         while engine.debug().is_halted(task) && !engine.debug().abandoning() {
+            if !published {
+                published = located::publish(self.areas, &engine, self.forces);
+            }
             let now = self.now_ns();
             if self.plans.iter().any(super::plan::TaskPlan::is_event) {
                 self.observe_triggers(&engine, now);
@@ -41,44 +51,30 @@ impl Cycles<'_, '_> {
             if let Some(next) = super::plan::pick_where(self.plans, now, |index, _| idle(index))
                 .filter(|_| !holding)
             {
-                self.take_areas(&mut engine);
+                located::take_in(self.areas, &mut engine);
                 self.run(&mut engine, next);
-                *self.areas = None;
                 continue;
             }
-            let wait = super::plan::next_start_where(self.plans, |_| true)
+            // The tasks in a cycle (the halted one among them) are planned in the past: only
+            // the others say how long to wait, or the thread would spin while halted.
+            let mut wait = super::plan::next_start_where(self.plans, |index, _| idle(index))
                 .map_or(HALT_POLL, |at| Duration::from_nanos(at.saturating_sub(now)))
                 .min(HALT_POLL);
-            match self.commands.recv_timeout(wait) {
-                Ok(Command::Between(action)) => {
-                    let lock_of = self.areas_lock;
-                    let mut areas = lock(lock_of);
-                    let mut between = Between {
-                        memory: Some(Memory {
-                            engine: engine.reborrow(),
-                            areas: &mut areas,
-                        }),
-                        forces: &mut *self.forces,
-                        trace: &mut *self.trace,
-                        cycles: *self.cycles_total,
-                    };
-                    action(&mut between);
-                }
-                // An online change waits for a moment when no task is in a cycle; here one is
-                // halted in its cycle, and an online change never abandons a cycle.
-                Ok(Command::OnlineChange(change, reply)) => {
-                    let (refused, ..) = *change;
-                    let _ = reply.send((Err(SchedulerError::Halted), Some(refused)));
-                }
-                Ok(other) => {
-                    engine.debug_mut().abandon_halted();
-                    self.deferred.push(other);
-                }
-                Err(mpsc::RecvTimeoutError::Timeout) => {}
-                Err(mpsc::RecvTimeoutError::Disconnected) => engine.debug_mut().abandon_halted(),
+            // Statistics and faults a reader kept from being published go out while halted too.
+            if !self.outbox.try_publish(self.status, self.plans) {
+                wait = wait.min(super::inbox::LOCK_RETRY);
+            }
+            match self.commands.wait(Some(wait)) {
+                Received::Command(command) => self.serve_while_halted(&mut engine, command),
+                Received::Nothing => {}
+                Received::Gone => engine.debug_mut().abandon_halted(),
             }
         }
-        self.take_areas(&mut engine);
+        self.halts -= 1;
+        self.publish_depth = publish_depth;
+        // What the outside world wrote meanwhile, for the rest of the halted cycle (a waiting
+        // one takes it at the next exchange when the areas are busy now).
+        located::take_in(self.areas, &mut engine);
         let halted_ns = self.now_ns().saturating_sub(entered);
         // Neither the halted task nor a task waiting beneath it counts the time halted.
         for level in self.levels.iter_mut() {
@@ -86,6 +82,55 @@ impl Cycles<'_, '_> {
         }
         if let Some(top) = self.levels.last() {
             self.arm_above(top.priority);
+        }
+    }
+
+    /// Serves the commands that came while a cycle run by a halt is in progress, from one of
+    /// its safe points: what a halted task is told (continue, logout) is heard without waiting
+    /// for that cycle's end, and a stop abandons it here.
+    pub(super) fn serve_above_halt(&mut self, engine: &mut EngineView<'_>) {
+        loop {
+            match self.commands.try_take() {
+                Received::Command(command) => self.serve_while_halted(engine, command),
+                Received::Nothing => return,
+                Received::Gone => {
+                    engine.debug_mut().abandon_halted();
+                    return;
+                }
+            }
+        }
+    }
+
+    /// Does a command that came while a task is halted: an action at once, on the memory as it
+    /// is; an online change refused; anything else (stop, reset, download, shutdown) abandons
+    /// the cycles in progress and is left for the worker.
+    fn serve_while_halted(&mut self, engine: &mut EngineView<'_>, command: Command) {
+        match command {
+            Command::Between(action) => {
+                // While a task is halted the thread may wait for the areas: debugging suspends
+                // the timing guarantees anyway.
+                let mut areas = lock(self.areas);
+                let mut between = Between {
+                    memory: Some(Memory {
+                        engine: engine.reborrow(),
+                        areas: &mut areas,
+                    }),
+                    forces: &mut *self.forces,
+                    trace: &mut *self.trace,
+                    cycles: *self.cycles_total,
+                };
+                action(&mut between);
+            }
+            // An online change waits for a moment when no task is in a cycle; here one is
+            // halted in its cycle, and an online change never abandons a cycle.
+            Command::OnlineChange(change, reply) => {
+                let (refused, ..) = *change;
+                let _ = reply.send((Err(SchedulerError::Halted), Some(refused)));
+            }
+            other => {
+                engine.debug_mut().abandon_halted();
+                self.deferred.push(other);
+            }
         }
     }
 
@@ -104,24 +149,5 @@ impl Cycles<'_, '_> {
         {
             writer.write_later(snapshot);
         }
-    }
-
-    /// Copies `%Q` and `%M` of `engine` to the located areas, with the forces.
-    fn publish(&mut self, engine: &EngineView<'_>) {
-        let lock_of = self.areas_lock;
-        let areas = self.areas.get_or_insert_with(|| lock(lock_of));
-        copy(engine.region(Region::Output), &mut areas.output);
-        copy(engine.region(Region::Memory), &mut areas.memory);
-        self.forces.apply_to_areas(areas);
-    }
-
-    /// Takes the located areas again and copies what the outside world wrote meanwhile into
-    /// `engine`, as the worker does before a cycle.
-    fn take_areas(&mut self, engine: &mut EngineView<'_>) {
-        let lock_of = self.areas_lock;
-        let areas = self.areas.get_or_insert_with(|| lock(lock_of));
-        copy(&areas.input, engine.region_mut(Region::Input));
-        copy(&areas.output, engine.region_mut(Region::Output));
-        copy(&areas.memory, engine.region_mut(Region::Memory));
     }
 }

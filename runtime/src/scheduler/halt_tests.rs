@@ -8,6 +8,7 @@ use program_image::{LineEntry, ProgramImage, Region};
 
 use super::tests::{MS, PATIENCE, dword, scheduler, wait_for};
 use super::*;
+use crate::engine::FaultKind;
 use crate::test_images::{TestTask, count, count_in_output, dint, image};
 
 /// Two counting tasks every millisecond, the second with a 5 ms watchdog; each program's
@@ -221,4 +222,344 @@ fn retained_values_are_saved_while_a_task_is_halted() {
         dint(engine.region(Region::Data), count(0)) == 4321
     });
     assert!(is_halted());
+}
+
+/// How long a scenario with a looping task may take before it counts as hung: far more than
+/// its watchdogs, far less than a blocked test run.
+const HANG: Duration = Duration::from_secs(30);
+
+/// A watchdog far longer than a preempting task's start latency on a loaded machine.
+const LOOP_WATCHDOG_NS: u64 = 50 * MS;
+
+/// Runs `scenario` on a thread of its own and fails when it has not ended within [`HANG`], so
+/// a scheduler that hangs fails the test instead of blocking the whole run (the thread is
+/// left behind; the test process ends it).
+#[track_caller]
+fn without_hanging(scenario: impl FnOnce() + Send + 'static) {
+    let (ended, end) = mpsc::channel();
+    let thread = std::thread::spawn(move || {
+        scenario();
+        let _ = ended.send(());
+    });
+    match end.recv_timeout(HANG) {
+        Ok(()) => thread.join().expect("the scenario ended"),
+        Err(mpsc::RecvTimeoutError::Timeout) => panic!("the scenario hung for {HANG:?}"),
+        // The scenario panicked: its own message says why.
+        Err(mpsc::RecvTimeoutError::Disconnected) => {
+            if let Err(panic) = thread.join() {
+                std::panic::resume_unwind(panic);
+            }
+        }
+    }
+}
+
+/// A task of `priority` every `interval_ns` whose cycle loops (practically) for ever, with a
+/// watchdog of [`LOOP_WATCHDOG_NS`].
+fn endless(interval_ns: u64, priority: u8) -> TestTask {
+    TestTask {
+        body: crate::test_images::Body::Watch {
+            iterations: i32::MAX,
+            sets_trigger: false,
+        },
+        watchdog_ns: LOOP_WATCHDOG_NS,
+        ..TestTask::cyclic(interval_ns, priority)
+    }
+}
+
+/// An image of `tasks` whose programs start a statement at their first instruction.
+fn debuggable(tasks: &[TestTask]) -> ProgramImage {
+    let mut image = image(tasks, &[]);
+    for pou in &mut image.pous {
+        pou.lines = vec![LineEntry {
+            index: 0,
+            file: 0,
+            line: 1,
+        }];
+    }
+    image
+}
+
+/// Runs `change` on the debug session's state between two cycles (or from inside a halt).
+fn debug<T: Send + 'static>(
+    scheduler: &Scheduler,
+    change: impl FnOnce(&mut crate::engine::DebugState) -> T + Send + 'static,
+) -> T {
+    scheduler
+        .between(|between| {
+            let memory = between.memory.as_mut().expect("a program");
+            change(memory.engine.debug_mut())
+        })
+        .expect("served")
+}
+
+/// Sets a breakpoint at the first statement of task `task`'s program that halts at its
+/// `hit`-th hit only.
+fn break_at_hit(scheduler: &Scheduler, task: u32, hit: u32) {
+    scheduler
+        .between(move |between| {
+            let memory = between.memory.as_mut().expect("a program");
+            memory.engine.debug_mut().begin_session();
+            memory
+                .engine
+                .set_breakpoint(crate::engine::BreakpointSpec {
+                    pou: task,
+                    instruction: 0,
+                    instance: 0,
+                    task: None,
+                    hit_mode: crate::engine::HitMode::Equal,
+                    hit_target: hit,
+                    condition: Vec::new(),
+                })
+                .expect("a statement start");
+        })
+        .expect("served");
+}
+
+/// The watchdog faults of task `task` so far.
+fn watchdog_faults(scheduler: &Scheduler, task: usize) -> usize {
+    let name = format!("Task{task}");
+    scheduler
+        .status()
+        .faults
+        .iter()
+        .filter(|fault| fault.task == name && matches!(fault.kind, FaultKind::Watchdog { .. }))
+        .count()
+}
+
+#[test]
+fn a_lower_task_that_loops_while_a_higher_one_is_halted_ends_by_its_watchdog() {
+    without_hanging(|| {
+        let (scheduler, _areas) = scheduler(SchedulerOptions::default());
+        scheduler
+            .load(debuggable(&[TestTask::cyclic(MS, 1), endless(10 * MS, 10)]))
+            .expect("loads");
+        debug(&scheduler, |debug| {
+            debug.begin_session();
+            debug.halt_task(0).expect("task 0 exists");
+        });
+        scheduler.start().expect("starts");
+        // Task 0 halts in its first cycle; the halt runs task 1, which loops until its
+        // watchdog ends it; then commands are served again.
+        wait_until("task 0 to halt", || {
+            debug(&scheduler, |debug| debug.is_halted(0))
+        });
+        wait_until("task 1's watchdog", || watchdog_faults(&scheduler, 1) == 1);
+        let halted_at = counts(&scheduler)[0];
+        debug(&scheduler, |debug| debug.continue_task(0).expect("on top"));
+        wait_until("task 0 to run on", || counts(&scheduler)[0] > halted_at + 3);
+        assert_eq!(watchdog_faults(&scheduler, 0), 0);
+        scheduler.stop().expect("stops");
+    });
+}
+
+/// How a test lets a task halted inside a looping cycle go on.
+#[derive(Clone, Copy, Debug)]
+enum Release {
+    Continue,
+    /// Logout and a lost connection both end the session.
+    EndSession,
+    Stop,
+}
+
+#[test]
+fn a_higher_task_halted_inside_a_looping_lower_one_goes_on_cleanly() {
+    for release in [Release::Continue, Release::EndSession, Release::Stop] {
+        without_hanging(move || {
+            let (scheduler, _areas) = scheduler(SchedulerOptions::default());
+            scheduler
+                .load(debuggable(&[
+                    TestTask::cyclic(MS, 1),
+                    endless(60_000 * MS, 10),
+                ]))
+                .expect("loads");
+            // Task 0 runs first, then task 1 loops; task 0's third cycle halts inside it.
+            break_at_hit(&scheduler, 0, 3);
+            scheduler.start().expect("starts");
+            wait_until("task 0 to halt", || {
+                debug(&scheduler, |debug| debug.is_halted(0))
+            });
+            assert!(debug(&scheduler, |debug| debug.waiting(1)), "{release:?}");
+            // Longer than task 1's watchdog: the time halted does not count.
+            std::thread::sleep(Duration::from_nanos(2 * LOOP_WATCHDOG_NS));
+            assert_eq!(watchdog_faults(&scheduler, 1), 0, "{release:?}");
+            assert_eq!(counts(&scheduler)[0], 2, "{release:?}");
+            match release {
+                Release::Continue => {
+                    debug(&scheduler, |debug| debug.continue_task(0).expect("on top"));
+                }
+                Release::EndSession => debug(&scheduler, |debug| debug.end_session()),
+                Release::Stop => {
+                    scheduler.stop().expect("stops");
+                    assert_eq!(scheduler.status().state, SchedulerState::Stopped);
+                    assert!(!debug(&scheduler, |debug| debug.is_halted(0)));
+                    assert_eq!(counts(&scheduler)[0], 2, "the abandoned cycle went on");
+                    return;
+                }
+            }
+            // The looping cycle goes on, task 0 interrupting it, until its watchdog ends it.
+            wait_until("task 1's watchdog", || watchdog_faults(&scheduler, 1) == 1);
+            wait_until("task 0 to run on", || counts(&scheduler)[0] > 5);
+            assert_eq!(watchdog_faults(&scheduler, 0), 0, "{release:?}");
+            scheduler.stop().expect("stops");
+        });
+    }
+}
+
+#[test]
+fn a_higher_task_that_loops_while_a_lower_one_is_halted_ends_by_its_watchdog() {
+    without_hanging(|| {
+        let (scheduler, _areas) = scheduler(SchedulerOptions::default());
+        scheduler
+            .load(debuggable(&[endless(10 * MS, 1), TestTask::cyclic(MS, 10)]))
+            .expect("loads");
+        debug(&scheduler, |debug| {
+            debug.begin_session();
+            debug.halt_task(1).expect("task 1 exists");
+        });
+        scheduler.start().expect("starts");
+        // Task 0 loops first and faults; task 1 then halts, and nothing else is due.
+        wait_until("task 1 to halt", || {
+            debug(&scheduler, |debug| debug.is_halted(1))
+        });
+        wait_until("task 0's watchdog", || watchdog_faults(&scheduler, 0) == 1);
+        let halted_at = counts(&scheduler)[1];
+        debug(&scheduler, |debug| debug.continue_task(1).expect("on top"));
+        wait_until("task 1 to run on", || counts(&scheduler)[1] > halted_at + 3);
+        assert_eq!(watchdog_faults(&scheduler, 1), 0);
+        scheduler.stop().expect("stops");
+    });
+}
+
+#[test]
+fn two_tasks_halted_at_once_go_on_top_first() {
+    without_hanging(|| {
+        let (scheduler, _areas) = scheduler(SchedulerOptions::default());
+        scheduler.load(two_tasks()).expect("loads");
+        debug(&scheduler, |debug| {
+            debug.begin_session();
+            debug.halt_task(0).expect("task 0 exists");
+            debug.halt_task(1).expect("task 1 exists");
+        });
+        scheduler.start().expect("starts");
+        // Task 0 halts first; its halt runs task 1, which halts on top of it.
+        wait_until("both to halt", || {
+            debug(&scheduler, |debug| debug.halted().to_vec()) == [0, 1]
+        });
+        let refused = debug(&scheduler, |debug| debug.continue_task(0).is_err());
+        assert!(refused, "task 0 went on beneath task 1");
+        std::thread::sleep(Duration::from_millis(20));
+        assert_eq!(counts(&scheduler), [0, 0]);
+        debug(&scheduler, |debug| debug.continue_task(1).expect("on top"));
+        wait_until("task 0 alone halted", || {
+            debug(&scheduler, |debug| debug.halted().to_vec()) == [0]
+        });
+        debug(&scheduler, |debug| debug.continue_task(0).expect("on top"));
+        wait_until("both to run on", || {
+            counts(&scheduler).iter().all(|&n| n > 3)
+        });
+        let status = scheduler.status();
+        assert!(status.faults.is_empty(), "{:?}", status.faults);
+        scheduler.stop().expect("stops");
+    });
+}
+
+/// The processor time the scheduler's thread has used, read on that thread (Linux).
+#[cfg(target_os = "linux")]
+fn thread_time(scheduler: &Scheduler) -> Duration {
+    let text = scheduler
+        .between(|_| std::fs::read_to_string("/proc/thread-self/schedstat"))
+        .expect("served")
+        .expect("the thread's scheduling statistics");
+    let nanoseconds = text
+        .split_whitespace()
+        .next()
+        .and_then(|field| field.parse().ok())
+        .expect("a time in nanoseconds");
+    Duration::from_nanos(nanoseconds)
+}
+
+#[cfg(target_os = "linux")]
+#[test]
+fn a_halt_waits_for_commands_without_spinning() {
+    let (records, log) = mpsc::channel();
+    let options = SchedulerOptions {
+        cycle_log: Some(records),
+        ..SchedulerOptions::default()
+    };
+    let (scheduler, _areas) = scheduler(options);
+    // One task, halted in its first cycle: nothing else is due, so the thread only waits.
+    scheduler
+        .load(debuggable(&[TestTask::cyclic(MS, 1)]))
+        .expect("loads");
+    debug(&scheduler, |debug| {
+        debug.begin_session();
+        debug.halt_task(0).expect("task 0 exists");
+    });
+    scheduler.start().expect("starts");
+    wait_until("task 0 to halt", || {
+        debug(&scheduler, |debug| debug.is_halted(0))
+    });
+    let thread = thread_time(&scheduler);
+    std::thread::sleep(Duration::from_millis(200));
+    let busy = thread_time(&scheduler).saturating_sub(thread);
+    assert!(
+        busy < Duration::from_millis(20),
+        "busy {busy:?} of 200 ms halted"
+    );
+    assert!(log.try_recv().is_err(), "a cycle ended while halted");
+}
+
+#[test]
+fn commands_are_served_while_a_task_run_by_a_halt_loops() {
+    for release in [Release::Continue, Release::EndSession, Release::Stop] {
+        without_hanging(move || {
+            let (scheduler, _areas) = scheduler(SchedulerOptions::default());
+            // Task 1's watchdog is longer than the test may take: only serving the commands
+            // from its safe points lets the test go on.
+            let looping = TestTask {
+                watchdog_ns: 2 * HANG.as_nanos() as u64,
+                ..endless(10 * MS, 10)
+            };
+            scheduler
+                .load(debuggable(&[TestTask::cyclic(MS, 1), looping]))
+                .expect("loads");
+            debug(&scheduler, |debug| {
+                debug.begin_session();
+                debug.halt_task(0).expect("task 0 exists");
+            });
+            scheduler.start().expect("starts");
+            // Task 0 halts in its first cycle, and its halt runs task 1's endless cycle.
+            wait_until("task 0 to halt", || {
+                debug(&scheduler, |debug| debug.is_halted(0))
+            });
+            wait_until("task 1 to loop", || {
+                scheduler
+                    .between(|between| {
+                        let memory = between.memory.as_ref().expect("a program");
+                        let data = memory.engine.region(Region::Data);
+                        dint(data, crate::test_images::watch_counter(1)) > 1000
+                    })
+                    .expect("served")
+            });
+            match release {
+                Release::Continue => {
+                    debug(&scheduler, |debug| debug.continue_task(0).expect("on top"));
+                    assert!(!debug(&scheduler, |debug| debug.is_halted(0)));
+                }
+                Release::EndSession => {
+                    debug(&scheduler, |debug| debug.end_session());
+                    assert!(!debug(&scheduler, |debug| debug.active()));
+                }
+                Release::Stop => {}
+            }
+            // Task 0 goes on once task 1's cycle ends, which only a stop makes it do.
+            scheduler.stop().expect("stops");
+            let status = scheduler.status();
+            assert_eq!(status.state, SchedulerState::Stopped, "{release:?}");
+            assert!(status.faults.is_empty(), "{release:?}: {:?}", status.faults);
+            // Neither abandoned cycle ran on.
+            assert_eq!(counts(&scheduler), [0, 0], "{release:?}");
+            assert!(!debug(&scheduler, |debug| debug.abandoning()));
+        });
+    }
 }

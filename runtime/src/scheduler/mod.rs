@@ -41,6 +41,9 @@
 mod alarm;
 mod cycles;
 mod halt;
+mod inbox;
+mod located;
+mod outbox;
 mod plan;
 mod realtime;
 mod record;
@@ -89,7 +92,8 @@ pub struct SchedulerOptions {
     /// How long before a planned start the scheduler stops sleeping and yields the processor
     /// in a loop instead: less start jitter (a sleep wakes late by the system's timer slack and
     /// wake-up latency) for that much busy time per cycle. Zero always sleeps. The preemption
-    /// alarm does the same before the start of a task that interrupts another.
+    /// alarm spins (without yielding) for that long before the start of a task that interrupts
+    /// another.
     pub spin_before_start: Duration,
     /// Whether a task of higher priority that becomes due interrupts a running cycle of a
     /// lower one at its next safe point (`docs/scheduler.md`); off, every cycle runs to its end.
@@ -204,7 +208,9 @@ pub enum SchedulerError {
 /// A handle on the scheduler's thread. Dropping it stops the tasks, saves retained values and
 /// ends the thread.
 pub struct Scheduler {
-    commands: mpsc::Sender<Command>,
+    commands: inbox::Postbox,
+    /// The scheduler's thread, unparked after each command (`inbox.rs`).
+    waker: std::thread::Thread,
     status: Arc<Mutex<SchedulerStatus>>,
     thread: Option<JoinHandle<()>>,
 }
@@ -233,7 +239,7 @@ impl Scheduler {
         areas: Arc<Mutex<LocatedAreas>>,
         options: SchedulerOptions,
     ) -> Result<Self, SchedulerError> {
-        let (commands, received) = mpsc::channel();
+        let (commands, received) = inbox::queue();
         let status = Arc::new(Mutex::new(SchedulerStatus {
             state: SchedulerState::Stopped,
             image: None,
@@ -265,6 +271,7 @@ impl Scheduler {
         }
         Ok(Self {
             commands,
+            waker: thread.thread().clone(),
             status,
             thread: Some(thread),
         })
@@ -322,7 +329,7 @@ impl Scheduler {
         &self,
         action: impl FnOnce(&mut Between<'_>) -> T + Send + 'static,
     ) -> Result<T, SchedulerError> {
-        self.ask(|reply: mpsc::Sender<T>| {
+        self.ask(|reply: inbox::Answer<T>| {
             Command::Between(Box::new(move |between| {
                 let _ = reply.send(action(between));
             }))
@@ -351,13 +358,14 @@ impl Scheduler {
     /// Sends a command and waits for its answer.
     fn ask<T>(
         &self,
-        command: impl FnOnce(mpsc::Sender<T>) -> Command,
+        command: impl FnOnce(inbox::Answer<T>) -> Command,
     ) -> Result<T, SchedulerError> {
-        let (reply, answer) = mpsc::channel();
+        let (reply, answer) = inbox::answer();
         self.commands
             .send(command(reply))
             .map_err(|_| SchedulerError::Gone)?;
-        answer.recv().map_err(|_| SchedulerError::Gone)
+        self.waker.unpark();
+        inbox::wait_for_answer(&answer).ok_or(SchedulerError::Gone)
     }
 }
 
@@ -365,9 +373,10 @@ impl Drop for Scheduler {
     fn drop(&mut self) {
         if let Some(thread) = self.thread.take() {
             // A failed save cannot be reported from a drop; `shutdown` reports it.
-            let (reply, answer) = mpsc::channel();
+            let (reply, answer) = inbox::answer();
             if self.commands.send(Command::Shutdown(reply)).is_ok() {
-                let _ = answer.recv();
+                self.waker.unpark();
+                let _ = inbox::wait_for_answer(&answer);
             }
             let _ = thread.join();
         }
@@ -375,14 +384,14 @@ impl Drop for Scheduler {
 }
 
 /// The answer to a command.
-type Reply = mpsc::Sender<Result<(), SchedulerError>>;
+type Reply = inbox::Answer<Result<(), SchedulerError>>;
 
 /// What the handle asks of the thread.
 enum Command {
     Load(
         Box<Engine>,
         ImageHash,
-        mpsc::Sender<Result<LoadReport, SchedulerError>>,
+        inbox::Answer<Result<LoadReport, SchedulerError>>,
     ),
     Start(Reply),
     Stop(Reply),
@@ -390,7 +399,7 @@ enum Command {
     /// An online change: the new engine, its plan, the images it changes from and to.
     OnlineChange(
         Box<(Engine, Arc<OnlineChangePlan>, ImageHash, ImageHash)>,
-        mpsc::Sender<ChangeAnswer>,
+        inbox::Answer<ChangeAnswer>,
     ),
     /// An action between two cycles, which sends its own answer.
     Between(BetweenAction),
@@ -405,5 +414,7 @@ mod tests;
 
 #[cfg(test)]
 mod halt_tests;
+#[cfg(test)]
+mod lock_tests;
 #[cfg(test)]
 mod preemption_tests;

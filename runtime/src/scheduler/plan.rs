@@ -147,18 +147,19 @@ pub(crate) fn pick_where(
 
 /// The earliest planned start of any task.
 pub(crate) fn next_start_ns(plans: &[TaskPlan]) -> Option<u64> {
-    next_start_where(plans, |_| true)
+    next_start_where(plans, |_, _| true)
 }
 
-/// The earliest planned start of the tasks `allowed` accepts.
+/// The earliest planned start of the tasks `allowed` accepts (given their index and plan).
 pub(crate) fn next_start_where(
     plans: &[TaskPlan],
-    allowed: impl Fn(&TaskPlan) -> bool,
+    allowed: impl Fn(usize, &TaskPlan) -> bool,
 ) -> Option<u64> {
     plans
         .iter()
-        .filter(|plan| allowed(plan))
-        .filter_map(TaskPlan::next_start_ns)
+        .enumerate()
+        .filter(|(index, plan)| allowed(*index, plan))
+        .filter_map(|(_, plan)| plan.next_start_ns())
         .min()
 }
 
@@ -322,11 +323,11 @@ mod tests {
         assert_eq!(pick_where(&plans, 0, above(1)), None);
         assert_eq!(pick_where(&plans, 0, |index, _| index != 1), Some(0));
         assert_eq!(
-            next_start_where(&plans, |plan| plan.statistics.priority < 9),
+            next_start_where(&plans, |_, plan| plan.statistics.priority < 9),
             Some(0)
         );
         assert_eq!(
-            next_start_where(&plans, |plan| plan.statistics.priority < 1),
+            next_start_where(&plans, |_, plan| plan.statistics.priority < 1),
             None
         );
     }

@@ -36,7 +36,9 @@ impl RetainWriter {
         let thread = std::thread::Builder::new()
             .name("rivet-retain".to_owned())
             .spawn(move || {
-                for job in received {
+                // Polled, never blocked in: a thread asleep inside the channel would make the
+                // scheduler's send take the channel's lock (`inbox.rs` says why that matters).
+                while let Some(job) = next_job(&received) {
                     match job {
                         Job::Write(snapshot) => {
                             let written = lock(&thread_store).write(snapshot);
@@ -63,6 +65,7 @@ impl RetainWriter {
             Some(jobs) => jobs.send(Job::Write(snapshot)).err().map(|error| error.0),
             None => Some(Job::Write(snapshot)),
         };
+        self.wake();
         if let Some(Job::Write(snapshot)) = unsent {
             let written = lock(&self.store).write(snapshot);
             (self.report)(written.err().map(|error| error.to_string()));
@@ -74,6 +77,7 @@ impl RetainWriter {
         if let Some(jobs) = &self.jobs {
             let (done, finished) = mpsc::channel();
             if jobs.send(Job::Flush(done)).is_ok() {
+                self.wake();
                 // An error means the thread has ended, and then nothing is queued any more.
                 let _ = finished.recv();
             }
@@ -82,10 +86,32 @@ impl RetainWriter {
     }
 }
 
+impl RetainWriter {
+    /// Wakes the writer's thread to look at its queue.
+    fn wake(&self) {
+        if let Some(thread) = &self.thread {
+            thread.thread().unpark();
+        }
+    }
+}
+
+/// The next job for the writer's thread, parked until one comes; `None` once the queue is
+/// closed and empty.
+fn next_job(received: &mpsc::Receiver<Job>) -> Option<Job> {
+    loop {
+        match received.try_recv() {
+            Ok(job) => return Some(job),
+            Err(mpsc::TryRecvError::Disconnected) => return None,
+            Err(mpsc::TryRecvError::Empty) => std::thread::park(),
+        }
+    }
+}
+
 impl Drop for RetainWriter {
     fn drop(&mut self) {
         // Closing the queue ends the thread once it has written what is queued.
         self.jobs = None;
+        self.wake();
         if let Some(thread) = self.thread.take() {
             let _ = thread.join();
         }

@@ -114,7 +114,11 @@ fn a_task_past_its_watchdog_faults_and_the_others_go_on() {
         .load(image(&[slow, TestTask::cyclic(MS, 0)], &[]))
         .unwrap();
     // The slow task loops far longer than its watchdog allows.
-    areas.lock().unwrap().memory[..4].copy_from_slice(&i32::MAX.to_le_bytes());
+    areas
+        .lock()
+        .unwrap()
+        .write_bytes(Area::Memory, 0, &i32::MAX.to_le_bytes())
+        .unwrap();
     scheduler.start().unwrap();
     let status = wait_for(&scheduler, "the watchdog", |status| {
         !status.faults.is_empty()

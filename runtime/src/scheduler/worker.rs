@@ -1,12 +1,16 @@
 //! The scheduler's thread: commands from the handle, and task cycles when they are due.
 
-use std::sync::{Arc, Mutex, MutexGuard, PoisonError, mpsc};
+use std::collections::VecDeque;
+use std::sync::{Arc, Mutex, MutexGuard, PoisonError};
 use std::time::{Duration, Instant};
 
 use program_image::{ImageHash, Region};
 
 use super::alarm::Alarm;
 use super::cycles::{self, Cycles, Level, copy};
+use super::inbox::{Inbox, LOCK_RETRY, Received};
+use super::located;
+use super::outbox::Outbox;
 use super::plan::{self, TaskPlan};
 use super::retain_writer::RetainWriter;
 use super::{
@@ -49,6 +53,11 @@ pub(super) struct Worker {
     levels: Vec<Level>,
     /// Commands that abandoned halted cycles, done once the cycles have unwound.
     deferred: Vec<Command>,
+    /// Commands received but not done yet because the located areas were busy, oldest first;
+    /// later commands wait behind them, so they are done in the order they came.
+    postponed: VecDeque<Command>,
+    /// Statistics and faults waiting for the status's lock.
+    outbox: Outbox,
 }
 
 /// A loaded program and the schedule of its tasks.
@@ -97,60 +106,68 @@ impl Worker {
             alarm,
             levels: Vec::with_capacity(PRIORITY_LEVELS),
             deferred: Vec::new(),
+            postponed: VecDeque::new(),
+            outbox: Outbox::default(),
         }
     }
 
     /// Runs until the handle asks it to end or goes away.
-    pub(super) fn run(mut self, commands: &mpsc::Receiver<Command>) {
+    pub(super) fn run(mut self, commands: &Inbox) {
         loop {
-            // Commands first, so the handle is never kept waiting by a busy schedule.
+            // Commands first, so the handle is never kept waiting by a busy schedule; those
+            // postponed before come first.
+            while let Some(command) = self.postponed.pop_front() {
+                match self.try_handle(command) {
+                    Ok(Next::Exit) => return,
+                    Ok(Next::Continue) => {}
+                    Err(command) => {
+                        self.postponed.push_front(command);
+                        break;
+                    }
+                }
+            }
             loop {
-                match commands.try_recv() {
-                    Ok(command) => {
-                        if self.handle(command) == Next::Exit {
+                match commands.try_take() {
+                    Received::Command(command) => {
+                        if self.receive(command) == Next::Exit {
                             return;
                         }
                     }
-                    Err(mpsc::TryRecvError::Empty) => break,
-                    Err(mpsc::TryRecvError::Disconnected) => return self.exit(),
+                    Received::Nothing => break,
+                    Received::Gone => return self.exit(),
                 }
             }
-            let wait = self.run_due(commands);
+            let mut wait = self.run_due(commands);
+            if let Some(program) = &self.program {
+                self.outbox.try_publish(&self.status, &program.plans);
+            }
+            if !self.postponed.is_empty() || self.outbox.pending() {
+                wait = Some(wait.map_or(LOCK_RETRY, |wait| wait.min(LOCK_RETRY)));
+            }
             // A command that abandoned halted cycles is done now that they have unwound.
             for command in std::mem::take(&mut self.deferred) {
-                if self.handle(command) == Next::Exit {
+                if self.receive(command) == Next::Exit {
                     return;
                 }
             }
-            let Some(wait) = wait else {
-                match commands.recv() {
-                    Ok(command) => {
-                        if self.handle(command) == Next::Exit {
-                            return;
-                        }
-                        continue;
-                    }
-                    Err(_) => return self.exit(),
-                }
-            };
-            if wait.is_zero() {
+            if wait.is_some_and(|wait| wait.is_zero()) {
                 continue;
             }
-            match commands.recv_timeout(wait) {
-                Ok(command) => {
-                    if self.handle(command) == Next::Exit {
+            match commands.wait(wait) {
+                Received::Command(command) => {
+                    if self.receive(command) == Next::Exit {
                         return;
                     }
                 }
-                Err(mpsc::RecvTimeoutError::Timeout) => {}
-                Err(mpsc::RecvTimeoutError::Disconnected) => return self.exit(),
+                Received::Nothing => {}
+                Received::Gone => return self.exit(),
             }
         }
     }
 
     /// Runs the task that is due, if any, and returns how long to wait before looking again:
     /// zero after a cycle, `None` when nothing will ever be due without a command.
-    fn run_due(&mut self, commands: &mpsc::Receiver<Command>) -> Option<Duration> {
+    fn run_due(&mut self, commands: &Inbox) -> Option<Duration> {
         if !self.running {
             return None;
         }
@@ -193,22 +210,19 @@ impl Worker {
 
     /// Runs one cycle of `task` with the located areas locked (tasks of higher priority may
     /// interrupt it), then plans its next one.
-    fn run_cycle(&mut self, task: usize, commands: &mpsc::Receiver<Command>) {
+    fn run_cycle(&mut self, task: usize, commands: &Inbox) {
         let Some(program) = self.program.as_mut() else {
             return;
         };
-        let mut areas = Some(lock(&self.areas));
-        if let Some(areas) = &areas {
-            copy(&areas.input, program.engine.region_mut(Region::Input));
-            copy(&areas.output, program.engine.region_mut(Region::Output));
-            copy(&areas.memory, program.engine.region_mut(Region::Memory));
-        }
+        // When a Modbus thread holds the areas, this cycle runs on the values of the last
+        // exchange; nothing is lost (`located.rs`).
+        located::take_in(&self.areas, &mut program.engine.view());
         let mut cycles = Cycles {
             plans: &mut program.plans,
             forces: &mut self.forces,
             trace: &mut self.trace,
-            areas: &mut areas,
-            areas_lock: &self.areas,
+            areas: &self.areas,
+            publish_depth: 0,
             commands,
             deferred: &mut self.deferred,
             retain: (
@@ -217,6 +231,7 @@ impl Worker {
                 duration_ns(self.options.retain_save_interval),
             ),
             status: &self.status,
+            outbox: &mut self.outbox,
             alarm: self.alarm.as_ref(),
             epoch: self.epoch,
             pause_ns: duration_ns(self.options.freewheeling_pause),
@@ -224,6 +239,7 @@ impl Worker {
             cycles_total: &mut self.cycles_total,
             log: self.options.cycle_log.as_ref(),
             levels: &mut self.levels,
+            halts: 0,
         };
         cycles.run(&mut program.engine.view(), task);
         // Abandoned halted cycles have unwound: the next cycles run normally.
@@ -240,12 +256,54 @@ impl Worker {
         if !program.plans.iter().any(TaskPlan::is_event) {
             return;
         }
-        let areas = lock(&self.areas);
+        // Busy areas: the next look (at most an event poll interval later) sees the trigger.
+        let Some(areas) = located::try_lock(&self.areas) else {
+            return;
+        };
         for (task, plan) in program.plans.iter_mut().enumerate() {
             if plan.is_event() {
                 let set = trigger_is_set(&program.engine, &areas, task);
                 plan.observe_trigger(set, now);
             }
+        }
+    }
+
+    /// Does a command that just came, or postpones it behind those postponed before.
+    fn receive(&mut self, command: Command) -> Next {
+        if !self.postponed.is_empty() {
+            self.postponed.push_back(command);
+            return Next::Continue;
+        }
+        match self.try_handle(command) {
+            Ok(next) => next,
+            Err(command) => {
+                self.postponed.push_back(command);
+                Next::Continue
+            }
+        }
+    }
+
+    /// Does what the handle asked, but gives back an action between cycles when the located
+    /// areas are busy: the thread does not wait for a Modbus thread that holds them.
+    fn try_handle(&mut self, command: Command) -> Result<Next, Command> {
+        match command {
+            Command::Between(action) => {
+                let Some(mut areas) = located::try_lock(&self.areas) else {
+                    return Err(Command::Between(action));
+                };
+                let mut between = Between {
+                    memory: self.program.as_mut().map(|program| Memory {
+                        engine: program.engine.view(),
+                        areas: &mut areas,
+                    }),
+                    forces: &mut self.forces,
+                    trace: &mut self.trace,
+                    cycles: self.cycles_total,
+                };
+                action(&mut between);
+                Ok(Next::Continue)
+            }
+            other => Ok(self.handle(other)),
         }
     }
 
@@ -264,19 +322,8 @@ impl Worker {
             Command::Reset(kind, reply) => {
                 let _ = reply.send(self.reset(kind));
             }
-            Command::Between(action) => {
-                let mut areas = lock(&self.areas);
-                let mut between = Between {
-                    memory: self.program.as_mut().map(|program| Memory {
-                        engine: program.engine.view(),
-                        areas: &mut areas,
-                    }),
-                    forces: &mut self.forces,
-                    trace: &mut self.trace,
-                    cycles: self.cycles_total,
-                };
-                action(&mut between);
-            }
+            // An action needs the located areas: `try_handle` does it when they are free.
+            Command::Between(action) => self.postponed.push_back(Command::Between(action)),
             Command::OnlineChange(change, reply) => {
                 let (engine, plan, from, to) = *change;
                 let _ = reply.send(self.switch(engine, &plan, from, to));
@@ -318,6 +365,7 @@ impl Worker {
             areas.input = engine.region(Region::Input).to_vec();
             areas.output = engine.region(Region::Output).to_vec();
             areas.memory = engine.region(Region::Memory).to_vec();
+            areas.forget_writes();
         }
         let plans = engine.image().tasks.iter().map(TaskPlan::new).collect();
         self.program = Some(Program { engine, plans });
@@ -392,6 +440,7 @@ impl Worker {
             let mut areas = lock(&self.areas);
             copy(program.engine.region(Region::Output), &mut areas.output);
             copy(program.engine.region(Region::Memory), &mut areas.memory);
+            areas.forget_writes();
         }
         let retain = match (&self.retain, kind) {
             (Some(writer), ResetKind::Origin) => writer.with_store(RetainStore::delete),
@@ -416,8 +465,12 @@ impl Worker {
     }
 
     /// Publishes the whole status after a load or reset.
-    fn publish(&self, identity: Option<ImageHash>) {
+    fn publish(&mut self, identity: Option<ImageHash>) {
         let mut status = lock(&self.status);
+        // The faults of cycles before come first (the statistics are replaced below).
+        if let Some(program) = &self.program {
+            self.outbox.publish(&mut status, &program.plans);
+        }
         status.image = identity;
         status.tasks = self
             .program
@@ -427,8 +480,12 @@ impl Worker {
         status.state = self.state();
     }
 
-    fn publish_state(&self) {
-        lock(&self.status).state = self.state();
+    fn publish_state(&mut self) {
+        let mut status = lock(&self.status);
+        if let Some(program) = &self.program {
+            self.outbox.publish(&mut status, &program.plans);
+        }
+        status.state = self.state();
     }
 
     fn state(&self) -> SchedulerState {

@@ -39,8 +39,10 @@ impl Worker {
         };
         {
             // The located areas keep their content: the new engine starts from the shared
-            // areas, as every cycle does.
-            let areas = lock(&self.areas);
+            // areas, as every cycle does, once they hold what the running engine wrote (its last
+            // publish may have been skipped) and the running engine what clients wrote.
+            let mut areas = lock(&self.areas);
+            super::located::exchange(&mut areas, &mut program.engine.view());
             copy(&areas.input, engine.region_mut(Region::Input));
             copy(&areas.output, engine.region_mut(Region::Output));
             copy(&areas.memory, engine.region_mut(Region::Memory));
