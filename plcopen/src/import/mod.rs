@@ -1,5 +1,6 @@
 //! The conversion of a [`Document`] into a Rivet project (`docs/plcopen-xml.md` §2).
 
+mod codesys_attributes;
 mod converter;
 mod data_types;
 mod duration;

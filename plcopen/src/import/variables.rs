@@ -2,6 +2,7 @@
 
 use project_model::{VarSection, Variable};
 
+use super::codesys_attributes::codesys_attribute;
 use super::converter::{Converter, Place, comment};
 use super::error::{ImportError, ImportErrorKind};
 use super::report::Outcome;
@@ -60,13 +61,25 @@ impl Converter<'_> {
                     line: variable.line,
                     column: variable.column,
                 };
-                let ty = type_text(&variable.data_type).map_err(|message| {
+                let mut ty = type_text(&variable.data_type).map_err(|message| {
                     self.error(&place, ImportErrorKind::InexpressibleType(message))
                 })?;
+                let mut variable_section = section;
+                // CODESYS writes a variable-length array (`VAR_IN_OUT a : ARRAY[*] OF INT`) as
+                // a pointer to its element type, with the declaration in two attributes.
+                if let Some(array) = codesys_attribute(&variable.add_data, "variable_length_array")
+                {
+                    ty = array;
+                    if codesys_attribute(&variable.add_data, "variable_length_array_original_scope")
+                        .is_some_and(|scope| scope.eq_ignore_ascii_case("inout"))
+                    {
+                        variable_section = VarSection::VarInOut;
+                    }
+                }
                 self.opaque(&variable.add_data, &place.path, place.line);
                 converted.push(Variable {
                     name: variable.name.clone(),
-                    section,
+                    section: variable_section,
                     ty,
                     initial: variable.initial_value.as_ref().map(value_text),
                     address: variable.address.clone(),
