@@ -121,6 +121,9 @@ mod tests {
         assert_eq!(parse_interval_us("PT0.2S"), Some(200_000));
         assert_eq!(parse_interval_us("PT1M30S"), Some(90_000_000));
         assert_eq!(parse_interval_us("pt0.001s"), Some(1_000));
+        assert_eq!(parse_interval_us("P0DT0H1M"), Some(60_000_000));
+        // 26 hours: beyond the 71 minutes of a u32 of microseconds.
+        assert_eq!(parse_interval_us("P1DT2H"), None);
     }
 
     #[test]
