@@ -254,6 +254,25 @@ fn codesys_converts_st_pous_methods_and_tasks() {
             trigger: "x01_ImpactOfDynamicArrays.vStart".into()
         }
     );
+    // CODESYS writes one configuration per device: the second device's tasks are reported.
+    let second = imported
+        .report
+        .entry("task 'x01' of CODESYS_Control_RTE_V3_x64/Application");
+    assert_eq!(
+        second.map(|entry| entry.outcome),
+        Some(Outcome::NotConverted)
+    );
+    assert_eq!(imported.project.tasks.len(), 18);
+    let method = imported
+        .report
+        .with_outcome(Outcome::Converted)
+        .find(|entry| entry.what.starts_with("method "));
+    assert!(
+        method.is_some_and(|entry| entry.path.contains(
+            "/addData/data[@name='http://www.3s-software.com/plcopenxml/method']/Method[@name='"
+        )),
+        "{method:?}"
+    );
     // The visualisation's program comes from a library the file does not hold.
     let visu = imported
         .report

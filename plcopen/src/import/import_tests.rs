@@ -206,3 +206,41 @@ fn a_structure_inside_a_variable_is_refused() {
         "{error}"
     );
 }
+
+#[test]
+fn st_actions_convert_and_others_are_reported() {
+    let types = r#"  <types><dataTypes/><pous><pou name="Fb" pouType="functionBlock"><interface/><actions>
+<action name="Reset"><body><ST><xhtml:p>x := 0;</xhtml:p></ST></body></action>
+<action name="Old"><body><IL><xhtml:p>LD 1</xhtml:p></IL></body></action></actions>
+<body><ST><xhtml:p></xhtml:p></ST></body><documentation><xhtml:p>
+  A block.
+</xhtml:p></documentation></pou></pous></types>"#;
+    let imported = imported(&document(
+        types,
+        r#"<configuration name="Config"><globalVars name="Kept" persistent="true" retain="true"><variable name="total"><type><LINT/></type></variable></globalVars></configuration>"#,
+    ));
+    let Some(Object::Pou(block)) = imported.project.application.object("Fb") else {
+        panic!("{imported:?}")
+    };
+    assert_eq!(block.comment, "A block.");
+    let actions: Vec<&str> = block
+        .actions
+        .iter()
+        .map(|action| action.name.as_str())
+        .collect();
+    assert_eq!(actions, ["Reset"]);
+    assert_eq!(block.actions[0].body.st_text(), Some("x := 0;"));
+    let old = imported.report.entry("action 'Fb.Old'");
+    assert!(
+        old.is_some_and(|entry| entry.outcome == Outcome::NotConverted
+            && entry.note.starts_with("its body is IL"))
+    );
+    let Some(Object::Gvl(kept)) = imported.project.application.object("Kept") else {
+        panic!("{imported:?}")
+    };
+    assert!(kept.variables[0].persistent && kept.variables[0].retain);
+    assert_eq!(
+        kept.variables[0].section,
+        project_model::VarSection::VarGlobal
+    );
+}

@@ -155,9 +155,13 @@ impl Converter<'_> {
                 ),
             }
         }
+        let method_entry = pou
+            .add_data
+            .entry_ending_with("/method")
+            .map_or("", |entry| entry.name.as_str());
         for method in &pou.methods {
             let method_path = format!(
-                "{}/addData/data/Method[@name='{}']",
+                "{}/addData/data[@name='{method_entry}']/Method[@name='{}']",
                 place.path, method.name
             );
             let what = format!("method '{}.{}'", pou.name, method.name);
