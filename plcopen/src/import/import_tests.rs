@@ -244,3 +244,17 @@ fn st_actions_convert_and_others_are_reported() {
         project_model::VarSection::VarGlobal
     );
 }
+
+#[test]
+fn xml_comments_are_reported_as_kept() {
+    let types = "  <types><dataTypes/><pous><!--ObjectVersion: LD1--></pous></types>";
+    let imported = imported(&document(types, ""));
+    let entry = imported.report.entry("XML comment 'ObjectVersion: LD1'");
+    assert!(
+        entry.is_some_and(|entry| entry.outcome == Outcome::KeptOpaque
+            && entry.line == 5
+            && entry.path == "project/types/pous"),
+        "{:?}",
+        imported.report
+    );
+}

@@ -52,6 +52,16 @@ pub fn import(document: &Document) -> Result<Imported, ImportError> {
     converter.globals()?;
     converter.tasks()?;
     converter.opaque(&document.add_data, "project", 1);
+    // XML comments (`<!--ObjectVersion: LD1-->`) stay in the document for the export.
+    for comment in &document.xml_comments {
+        converter.report.push(
+            Outcome::KeptOpaque,
+            format!("XML comment '{}'", comment.text.trim()),
+            &comment.parent_path,
+            comment.line,
+            "",
+        );
+    }
     Ok(Imported {
         project: converter.project,
         report: converter.report,
