@@ -258,3 +258,20 @@ fn xml_comments_are_reported_as_kept() {
         imported.report
     );
 }
+
+#[test]
+fn pou_names_differing_in_non_ascii_case_are_refused() {
+    // The reader compares names in ASCII upper case; the import as IEC identifiers compare.
+    let pous = format!(
+        "  <types><dataTypes/><pous>{}\n{}</pous></types>",
+        PROGRAM_MAIN.replace("\"Main\"", "\"Ölpumpe\""),
+        PROGRAM_MAIN.replace("\"Main\"", "\"öLPUMPE\"")
+    );
+    let error = import_error(&document(&pous, ""));
+    assert!(
+        matches!(&*error.kind, ImportErrorKind::DuplicateName { what: "POU", name, first, first_line: 5 } if name == "öLPUMPE" && first == "Ölpumpe"),
+        "{error}"
+    );
+    assert_eq!((error.line, error.column), (6, 1), "{error}");
+    assert_eq!(error.path, "project/types/pous/pou[@name='öLPUMPE']");
+}
