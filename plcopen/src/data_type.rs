@@ -19,6 +19,8 @@ pub struct DataTypeDecl {
     pub documentation: Option<FormattedText>,
     /// Line of the `dataType` element (1-based), for the conversion's messages.
     pub line: u32,
+    /// Column of the element's `<` (1-based, in characters), for the conversion's messages.
+    pub column: u32,
 }
 
 /// The type grammar of the schema (`dataType`).

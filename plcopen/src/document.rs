@@ -10,6 +10,8 @@ use crate::text::FormattedText;
 /// A PLCopen TC6 XML document as read.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Document {
+    /// The file name given to the reader, for the conversion's messages.
+    pub file_name: String,
     /// The schema version the file was written for, from the root's namespace.
     pub dialect: Dialect,
     /// `fileHeader`.

@@ -24,6 +24,10 @@ pub struct Configuration {
     pub add_data: AddData,
     /// Documentation.
     pub documentation: Option<FormattedText>,
+    /// Line of the element (1-based), for the conversion's messages.
+    pub line: u32,
+    /// Column of the element's `<` (1-based, in characters), for the conversion's messages.
+    pub column: u32,
 }
 
 /// `resource`.
@@ -43,6 +47,10 @@ pub struct Resource {
     pub add_data: AddData,
     /// Documentation.
     pub documentation: Option<FormattedText>,
+    /// Line of the element (1-based), for the conversion's messages.
+    pub line: u32,
+    /// Column of the element's `<` (1-based, in characters), for the conversion's messages.
+    pub column: u32,
 }
 
 /// `task`.
@@ -67,6 +75,8 @@ pub struct Task {
     pub documentation: Option<FormattedText>,
     /// Line of the `task` element (1-based).
     pub line: u32,
+    /// Column of the element's `<` (1-based, in characters), for the conversion's messages.
+    pub column: u32,
 }
 
 /// `pouInstance`: a program instance.

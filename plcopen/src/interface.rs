@@ -78,6 +78,10 @@ pub struct VarList {
     pub add_data: AddData,
     /// Documentation.
     pub documentation: Option<FormattedText>,
+    /// Line of the element (1-based), for the conversion's messages.
+    pub line: u32,
+    /// Column of the element's `<` (1-based, in characters), for the conversion's messages.
+    pub column: u32,
 }
 
 /// A variable (`variable`), also a structure member.
@@ -99,4 +103,6 @@ pub struct Variable {
     pub documentation: Option<FormattedText>,
     /// Line of the `variable` element (1-based).
     pub line: u32,
+    /// Column of the element's `<` (1-based, in characters), for the conversion's messages.
+    pub column: u32,
 }

@@ -1,8 +1,10 @@
 //! A typed model of a PLCopen TC6 XML document (v2.01, CODESYS's `tc6_0200` and v1.0) and a reader
 //! that turns the XML text into it, refusing bad input with the file, line, column and element path.
 //!
-//! The rules the reader follows are written in `docs/plcopen-xml.md`. The crate is pure: it knows no
-//! other crate of the workspace, and its only I/O is the [`read_file`] convenience.
+//! [`import`] converts a document into a `project_model::Project` in memory, with a report of
+//! what became of each part. The rules of both are written in `docs/plcopen-xml.md`. The crate is
+//! pure: of the workspace it knows only `project_model`, and its only I/O is the [`read_file`]
+//! convenience.
 
 mod add_data;
 mod body;
@@ -13,6 +15,7 @@ mod document;
 mod error;
 mod fbd;
 mod header;
+mod import;
 mod instances;
 mod interface;
 mod ld;
@@ -33,6 +36,10 @@ pub use fbd::{
     Return, VendorElement,
 };
 pub use header::{ContentHeader, CoordinateInfo, FileHeader, Point};
+pub use import::{
+    ImportError, ImportErrorKind, ImportReport, Imported, Outcome, ReportEntry, import,
+    parse_interval_us,
+};
 pub use instances::{AccessVariable, ConfigVariable, Configuration, PouInstance, Resource, Task};
 pub use interface::{Interface, VarList, VarListKind, Variable};
 pub use ld::{Coil, Contact, Edge, LeftPowerRail, RightPowerRail, Storage};

@@ -33,6 +33,8 @@ pub struct Pou {
     pub location: PouLocation,
     /// Line of the `pou` element (1-based).
     pub line: u32,
+    /// Column of the element's `<` (1-based, in characters), for the conversion's messages.
+    pub column: u32,
 }
 
 /// `pouType`.

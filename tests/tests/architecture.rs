@@ -18,7 +18,7 @@ const ALLOWED_INTERNAL: &[(&str, &[&str])] = &[
     // The online protocol's one definition: no crate of ours; only the two peers use it.
     ("online_protocol", &[]),
     // The PLCopen XML reader: pure, no crate of ours.
-    ("plcopen", &[]),
+    ("plcopen", &["project_model"]),
     ("assets", &[]),
     ("compiler", &["project_model", "program_image"]),
     ("runtime", &["program_image", "motion", "online_protocol"]),

@@ -18,6 +18,9 @@ mod cfc;
 /// The engine's debugger: breakpoints, the call stack and steps.
 mod debugging;
 
+/// PLCopen XML files imported and their ST part checked.
+mod plcopen_import;
+
 /// Bits and parts reached through pointers, references and properties; E0134.
 mod places;
 

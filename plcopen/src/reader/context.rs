@@ -16,7 +16,8 @@ pub(super) type Read<T> = Result<T, ReadError>;
 pub(super) struct Context<'a, 'input> {
     dom: &'a roxmltree::Document<'input>,
     text: &'input str,
-    file_name: &'a str,
+    /// The file name given to the reader.
+    pub file_name: &'a str,
     /// Byte offset of the start of every line: roxmltree's `text_pos_at` scans from the start of
     /// the text, which made reading a 10 MB file quadratic.
     line_starts: Vec<usize>,

@@ -38,6 +38,7 @@ pub(super) fn read_pou(
         documentation: context.documentation(node),
         location,
         line: context.line(node),
+        column: context.line_column(node).1,
     };
     for element in elements(node) {
         match element.tag_name().name() {
@@ -141,6 +142,8 @@ pub(super) fn read_var_list(context: &Context<'_, '_>, node: Node<'_, '_>) -> Re
         variables: read_variables(context, node)?,
         add_data: context.add_data(node)?,
         documentation: context.documentation(node),
+        line: context.line(node),
+        column: context.line_column(node).1,
     })
 }
 
@@ -159,6 +162,7 @@ fn read_variables(context: &Context<'_, '_>, node: Node<'_, '_>) -> Read<Vec<Var
             add_data: context.add_data(variable)?,
             documentation: context.documentation(variable),
             line: context.line(variable),
+            column: context.line_column(variable).1,
         });
     }
     Ok(variables)
@@ -179,6 +183,7 @@ pub(super) fn read_data_type_decl(
         add_data: context.add_data(node)?,
         documentation: context.documentation(node),
         line: context.line(node),
+        column: context.line_column(node).1,
     })
 }
 

@@ -52,6 +52,7 @@ pub(super) fn read_project(context: &Context<'_, '_>, root: Node<'_, '_>) -> Rea
         }
     }
     Ok(Document {
+        file_name: context.file_name.to_owned(),
         dialect: context.dialect,
         file_header,
         content_header,
@@ -122,6 +123,8 @@ fn read_configuration(
         config_vars: Vec::new(),
         add_data: context.add_data(node)?,
         documentation: context.documentation(node),
+        line: context.line(node),
+        column: context.line_column(node).1,
     };
     for element in elements(node) {
         match element.tag_name().name() {
@@ -192,6 +195,8 @@ fn read_resource(
         pou_instances: Vec::new(),
         add_data: context.add_data(node)?,
         documentation: context.documentation(node),
+        line: context.line(node),
+        column: context.line_column(node).1,
     };
     for element in elements(node) {
         match element.tag_name().name() {
@@ -259,6 +264,7 @@ fn read_task(context: &Context<'_, '_>, node: Node<'_, '_>) -> Read<Task> {
         add_data: context.add_data(node)?,
         documentation: context.documentation(node),
         line: context.line(node),
+        column: context.line_column(node).1,
     })
 }
 

@@ -1,0 +1,69 @@
+//! The conversion of a [`Document`] into a Rivet project (`docs/plcopen-xml.md` §2).
+
+mod codesys_attributes;
+mod converter;
+mod data_types;
+mod duration;
+mod error;
+mod globals;
+mod pous;
+mod report;
+mod tasks;
+mod type_text;
+mod variables;
+
+#[cfg(test)]
+mod corpus_tests;
+#[cfg(test)]
+mod import_tests;
+
+use crate::document::Document;
+use converter::Converter;
+
+pub use duration::parse_interval_us;
+pub use error::{ImportError, ImportErrorKind};
+pub use report::{ImportReport, Outcome, ReportEntry};
+
+/// A project converted from a document, with the report of what became of each part.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Imported {
+    /// The project, built in memory only: data types, POUs and global variable lists in the
+    /// application folder in document order, and the tasks.
+    pub project: project_model::Project,
+    /// Every object converted, every vendor element kept opaque and every object not converted.
+    pub report: ImportReport,
+}
+
+/// Converts `document` into a project; nothing is written anywhere.
+///
+/// ST bodies, actions, transitions and methods are converted; LD, FBD, CFC, SFC and IL bodies
+/// are listed in the report as not converted (a later part of issue 18 converts them).
+pub fn import(document: &Document) -> Result<Imported, ImportError> {
+    let mut converter = Converter::new(document);
+    converter.project.name = document.content_header.name.clone();
+    converter.project.description = document.content_header.comment.clone().unwrap_or_default();
+    converter.opaque(
+        &document.content_header.add_data,
+        "project/contentHeader",
+        1,
+    );
+    converter.data_types()?;
+    converter.pous()?;
+    converter.globals()?;
+    converter.tasks()?;
+    converter.opaque(&document.add_data, "project", 1);
+    // XML comments (`<!--ObjectVersion: LD1-->`) stay in the document for the export.
+    for comment in &document.xml_comments {
+        converter.report.push(
+            Outcome::KeptOpaque,
+            format!("XML comment '{}'", comment.text.trim()),
+            &comment.parent_path,
+            comment.line,
+            "",
+        );
+    }
+    Ok(Imported {
+        project: converter.project,
+        report: converter.report,
+    })
+}

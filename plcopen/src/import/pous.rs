@@ -1,0 +1,249 @@
+//! POUs with their actions, transitions and CODESYS methods → POU objects.
+
+use project_model::{Body, Method, Object, PouAction, PouKind};
+
+use super::converter::{Converter, Place, comment};
+use super::error::{ImportError, ImportErrorKind};
+use super::report::Outcome;
+use super::type_text::type_text;
+use crate::body::{Body as XmlBody, BodyContent};
+use crate::interface::Interface;
+use crate::pou::{Pou, PouLocation, PouType};
+
+/// Why a body is not converted by this part of the import.
+const LATER: &str = "LD, FBD, CFC, SFC and IL bodies are converted by a later part of the import";
+
+/// The language of a body as the report names it (CODESYS CFC stands beside an empty ST).
+fn language(body: &XmlBody) -> &'static str {
+    if body.cfc.is_some() {
+        "CFC"
+    } else {
+        body.content.language()
+    }
+}
+
+/// The ST text of a body, or `None` when it is in another language.
+fn st_text(body: &XmlBody) -> Option<String> {
+    match &body.content {
+        BodyContent::St(text) if body.cfc.is_none() => Some(text.text.clone()),
+        _ => None,
+    }
+}
+
+impl Converter<'_> {
+    /// Converts every POU whose body is ST (or that has none), in document order.
+    pub fn pous(&mut self) -> Result<(), ImportError> {
+        for pou in &self.document.pous {
+            self.pou(pou)?;
+        }
+        Ok(())
+    }
+
+    fn pou(&mut self, pou: &Pou) -> Result<(), ImportError> {
+        let path = match &pou.location {
+            PouLocation::Types => format!("project/types/pous/pou[@name='{}']", pou.name),
+            PouLocation::Resource {
+                configuration,
+                resource,
+            } => format!(
+                "project/instances/configurations/configuration[@name='{configuration}']/resource[@name='{resource}']/addData/data/pou[@name='{}']",
+                pou.name
+            ),
+        };
+        let place = Place {
+            path,
+            line: pou.line,
+            column: pou.column,
+        };
+        let what = format!("POU '{}'", pou.name);
+        let body = match pou.bodies.first() {
+            None => Body::None,
+            Some(first) => match st_text(first) {
+                Some(text) => Body::St { text },
+                None => {
+                    let note = format!("its body is {}; {LATER}", language(first));
+                    self.report
+                        .push(Outcome::NotConverted, what, &place.path, place.line, note);
+                    return Ok(());
+                }
+            },
+        };
+        for extra in pou.bodies.iter().skip(1) {
+            self.report.push(
+                Outcome::NotConverted,
+                format!("second {} body of POU '{}'", language(extra), pou.name),
+                &format!("{}/body", place.path),
+                extra.line,
+                "Rivet's POUs have one body",
+            );
+        }
+        let (variables, return_type) = self.interface(
+            pou.interface.as_ref(),
+            &format!("{}/interface", place.path),
+            &place,
+        )?;
+        let mut converted = project_model::Pou {
+            name: pou.name.clone(),
+            kind: match pou.pou_type {
+                PouType::Program => PouKind::Program,
+                PouType::FunctionBlock => PouKind::FunctionBlock,
+                PouType::Function => PouKind::Function,
+            },
+            return_type,
+            extends: None,
+            implements: Vec::new(),
+            comment: comment(pou.documentation.as_ref()),
+            variables,
+            body,
+            methods: Vec::new(),
+            properties: Vec::new(),
+            actions: Vec::new(),
+            transitions: Vec::new(),
+        };
+        for action in &pou.actions {
+            let action_path = format!("{}/actions/action[@name='{}']", place.path, action.name);
+            self.opaque(&action.add_data, &action_path, action.body.line);
+            match st_text(&action.body) {
+                Some(text) => {
+                    converted.actions.push(PouAction {
+                        name: action.name.clone(),
+                        body: Body::St { text },
+                    });
+                    self.report.push(
+                        Outcome::Converted,
+                        format!("action '{}.{}'", pou.name, action.name),
+                        &action_path,
+                        action.body.line,
+                        "",
+                    );
+                }
+                None => self.report.push(
+                    Outcome::NotConverted,
+                    format!("action '{}.{}'", pou.name, action.name),
+                    &action_path,
+                    action.body.line,
+                    format!("its body is {}; {LATER}", language(&action.body)),
+                ),
+            }
+        }
+        for transition in &pou.transitions {
+            let transition_path = format!(
+                "{}/transitions/transition[@name='{}']",
+                place.path, transition.name
+            );
+            self.opaque(&transition.add_data, &transition_path, transition.body.line);
+            match st_text(&transition.body) {
+                Some(text) => {
+                    converted.transitions.push(PouAction {
+                        name: transition.name.clone(),
+                        body: Body::St { text },
+                    });
+                    self.report.push(
+                        Outcome::Converted,
+                        format!("transition '{}.{}'", pou.name, transition.name),
+                        &transition_path,
+                        transition.body.line,
+                        "",
+                    );
+                }
+                None => self.report.push(
+                    Outcome::NotConverted,
+                    format!("transition '{}.{}'", pou.name, transition.name),
+                    &transition_path,
+                    transition.body.line,
+                    format!("its body is {}; {LATER}", language(&transition.body)),
+                ),
+            }
+        }
+        let method_entry = pou
+            .add_data
+            .entry_ending_with("/method")
+            .map_or("", |entry| entry.name.as_str());
+        for method in &pou.methods {
+            let method_path = format!(
+                "{}/addData/data[@name='{method_entry}']/Method[@name='{}']",
+                place.path, method.name
+            );
+            let what = format!("method '{}.{}'", pou.name, method.name);
+            let body = match method.bodies.first() {
+                None => Body::None,
+                Some(first) => match st_text(first) {
+                    Some(text) => Body::St { text },
+                    None => {
+                        let note = format!("its body is {}; {LATER}", language(first));
+                        self.report.push(
+                            Outcome::NotConverted,
+                            what,
+                            &method_path,
+                            place.line,
+                            note,
+                        );
+                        continue;
+                    }
+                },
+            };
+            let (variables, return_type) = self.interface(
+                method.interface.as_ref(),
+                &format!("{method_path}/interface"),
+                &place,
+            )?;
+            self.opaque(&method.add_data, &method_path, place.line);
+            converted.methods.push(Method {
+                name: method.name.clone(),
+                return_type,
+                access: project_model::AccessSpecifier::Public,
+                is_abstract: false,
+                comment: comment(method.documentation.as_ref()),
+                variables,
+                body,
+            });
+            self.report
+                .push(Outcome::Converted, what, &method_path, place.line, "");
+        }
+        for body in &pou.bodies {
+            self.opaque(&body.add_data, &format!("{}/body", place.path), body.line);
+        }
+        self.add_object("POU", Object::Pou(converted), &place)?;
+        self.report.push(
+            Outcome::Converted,
+            format!("POU '{}'", pou.name),
+            &place.path,
+            place.line,
+            "",
+        );
+        // The methods were read from the POU's own `addData`; the other entries are opaque.
+        for entry in &pou.add_data.entries {
+            if !entry.name.ends_with("/method") {
+                self.report.push(
+                    Outcome::KeptOpaque,
+                    format!("addData '{}'", entry.name),
+                    &format!("{}/addData/data[@name='{}']", place.path, entry.name),
+                    place.line,
+                    "",
+                );
+            }
+        }
+        Ok(())
+    }
+
+    /// The declarations and return type of an interface.
+    fn interface(
+        &mut self,
+        interface: Option<&Interface>,
+        path: &str,
+        place: &Place,
+    ) -> Result<(Vec<project_model::Variable>, Option<String>), ImportError> {
+        let Some(interface) = interface else {
+            return Ok((Vec::new(), None));
+        };
+        let return_type = match &interface.return_type {
+            Some(data_type) => Some(type_text(data_type).map_err(|message| {
+                self.error(place, ImportErrorKind::InexpressibleType(message))
+            })?),
+            None => None,
+        };
+        let variables = self.variables(&interface.var_lists, path, place.line)?;
+        self.opaque(&interface.add_data, path, place.line);
+        Ok((variables, return_type))
+    }
+}
