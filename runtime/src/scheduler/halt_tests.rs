@@ -328,28 +328,9 @@ fn watchdog_faults(scheduler: &Scheduler, task: usize) -> usize {
 
 #[test]
 fn a_lower_task_that_loops_while_a_higher_one_is_halted_ends_by_its_watchdog() {
-    without_hanging(|| {
-        let (scheduler, _areas) = scheduler(SchedulerOptions::default());
-        scheduler
-            .load(debuggable(&[TestTask::cyclic(MS, 1), endless(10 * MS, 10)]))
-            .expect("loads");
-        debug(&scheduler, |debug| {
-            debug.begin_session();
-            debug.halt_task(0).expect("task 0 exists");
-        });
-        scheduler.start().expect("starts");
-        // Task 0 halts in its first cycle; the halt runs task 1, which loops until its
-        // watchdog ends it; then commands are served again.
-        wait_until("task 0 to halt", || {
-            debug(&scheduler, |debug| debug.is_halted(0))
-        });
-        wait_until("task 1's watchdog", || watchdog_faults(&scheduler, 1) == 1);
-        let halted_at = counts(&scheduler)[0];
-        debug(&scheduler, |debug| debug.continue_task(0).expect("on top"));
-        wait_until("task 0 to run on", || counts(&scheduler)[0] > halted_at + 3);
-        assert_eq!(watchdog_faults(&scheduler, 0), 0);
-        scheduler.stop().expect("stops");
-    });
+    // Task 0 halts in its first cycle; the halt runs task 1, which loops until its watchdog
+    // ends it; then commands are served again.
+    halted_while_the_other_loops(&[TestTask::cyclic(MS, 1), endless(10 * MS, 10)], 0);
 }
 
 /// How a test lets a task halted inside a looping cycle go on.
@@ -407,25 +388,38 @@ fn a_higher_task_halted_inside_a_looping_lower_one_goes_on_cleanly() {
 
 #[test]
 fn a_higher_task_that_loops_while_a_lower_one_is_halted_ends_by_its_watchdog() {
-    without_hanging(|| {
+    // Task 0 loops first and faults; task 1 then halts, and nothing else is due.
+    halted_while_the_other_loops(&[endless(10 * MS, 1), TestTask::cyclic(MS, 10)], 1);
+}
+
+/// Runs the two `tasks`, one of which loops without end, with task `halted` (the other one)
+/// told to halt: it halts, the looping task's watchdog ends its cycle, and the halted task
+/// then goes on when continued, its own watchdog untouched.
+fn halted_while_the_other_loops(tasks: &[TestTask], halted: usize) {
+    let looping = 1 - halted;
+    let image = debuggable(tasks);
+    without_hanging(move || {
         let (scheduler, _areas) = scheduler(SchedulerOptions::default());
-        scheduler
-            .load(debuggable(&[endless(10 * MS, 1), TestTask::cyclic(MS, 10)]))
-            .expect("loads");
-        debug(&scheduler, |debug| {
+        scheduler.load(image).expect("loads");
+        debug(&scheduler, move |debug| {
             debug.begin_session();
-            debug.halt_task(1).expect("task 1 exists");
+            debug.halt_task(halted).expect("the task exists");
         });
         scheduler.start().expect("starts");
-        // Task 0 loops first and faults; task 1 then halts, and nothing else is due.
-        wait_until("task 1 to halt", || {
-            debug(&scheduler, |debug| debug.is_halted(1))
+        wait_until("the task to halt", || {
+            debug(&scheduler, move |debug| debug.is_halted(halted))
         });
-        wait_until("task 0's watchdog", || watchdog_faults(&scheduler, 0) == 1);
-        let halted_at = counts(&scheduler)[1];
-        debug(&scheduler, |debug| debug.continue_task(1).expect("on top"));
-        wait_until("task 1 to run on", || counts(&scheduler)[1] > halted_at + 3);
-        assert_eq!(watchdog_faults(&scheduler, 1), 0);
+        wait_until("the looping task's watchdog", || {
+            watchdog_faults(&scheduler, looping) == 1
+        });
+        let halted_at = counts(&scheduler)[halted];
+        debug(&scheduler, move |debug| {
+            debug.continue_task(halted).expect("on top")
+        });
+        wait_until("the halted task to run on", || {
+            counts(&scheduler)[halted] > halted_at + 3
+        });
+        assert_eq!(watchdog_faults(&scheduler, halted), 0);
         scheduler.stop().expect("stops");
     });
 }

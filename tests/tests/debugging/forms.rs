@@ -9,10 +9,10 @@ use std::sync::atomic::AtomicBool;
 
 use program_image::{Instr, ProgramImage};
 use runtime::engine::{
-    BreakpointSpec, Engine, EngineView, HaltReason, HitMode, Preempt, Preemption, StepKind,
+    BreakpointSpec, Engine, EngineView, HaltReason, Preempt, Preemption, StepKind,
 };
 
-use super::{compile, line_of, statement};
+use super::{compile, line_in, line_of, spec_at, statement};
 
 const SOURCE: &str = "
 FUNCTION Clamp : INT
@@ -50,24 +50,12 @@ END_PROGRAM
 
 /// The source line where `text` starts in [`SOURCE`].
 fn line(text: &str) -> u32 {
-    let at = SOURCE
-        .find(text)
-        .unwrap_or_else(|| panic!("{text} is not in the source"));
-    SOURCE[..at].lines().count() as u32 + u32::from(SOURCE[..at].ends_with('\n'))
+    line_in(SOURCE, text)
 }
 
 /// A breakpoint, halting always, on the statement of `pou` that starts with `text`.
 fn spec(image: &ProgramImage, pou: &str, text: &str) -> BreakpointSpec {
-    let (pou, instruction) = statement(image, pou, line(text));
-    BreakpointSpec {
-        pou,
-        instruction,
-        instance: 0,
-        task: None,
-        hit_mode: HitMode::Always,
-        hit_target: 0,
-        condition: Vec::new(),
-    }
+    spec_at(image, pou, line(text))
 }
 
 /// What the hook does at a halt.

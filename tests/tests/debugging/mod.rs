@@ -142,14 +142,26 @@ fn statement(image: &ProgramImage, name: &str, line: u32) -> (u32, u32) {
 
 /// The source line where `text` starts in [`SOURCE`].
 fn line(text: &str) -> u32 {
-    let at = SOURCE
-        .find(text)
-        .unwrap_or_else(|| panic!("{text} is not in the source"));
-    SOURCE[..at].lines().count() as u32 + u32::from(SOURCE[..at].ends_with('\n'))
+    line_in(SOURCE, text)
 }
 
+/// The line (from 1) where `text` starts in `source`.
+fn line_in(source: &str, text: &str) -> u32 {
+    let at = source
+        .find(text)
+        .unwrap_or_else(|| panic!("{text} is not in the source"));
+    source[..at].lines().count() as u32 + u32::from(source[..at].ends_with('\n'))
+}
+
+/// A breakpoint, halting always, on the statement of `pou` that starts with `text` in
+/// [`SOURCE`].
 fn spec(image: &ProgramImage, pou: &str, text: &str) -> BreakpointSpec {
-    let (pou, instruction) = statement(image, pou, line(text));
+    spec_at(image, pou, line(text))
+}
+
+/// A breakpoint, halting always, on the first statement start of `pou` on source line `line`.
+fn spec_at(image: &ProgramImage, pou: &str, line: u32) -> BreakpointSpec {
+    let (pou, instruction) = statement(image, pou, line);
     BreakpointSpec {
         pou,
         instruction,

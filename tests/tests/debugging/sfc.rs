@@ -2,9 +2,9 @@
 //! of its active pass, so its breakpoint halts in the cycles the step is active and in no
 //! other (`docs/debugging.md` §3).
 
-use runtime::engine::{Engine, HaltReason, HitMode};
+use runtime::engine::{Engine, HaltReason};
 
-use super::{Script, compile, run_cycles};
+use super::{Script, compile, line_in, run_cycles, spec_at};
 
 const CHART: &str = "
 PROGRAM Main
@@ -27,34 +27,10 @@ fn a_breakpoint_on_a_step_halts_only_in_the_cycles_the_step_is_active() {
     let image = compile(CHART);
     let mut engine = Engine::new(image.clone()).expect("the image loads");
     engine.debug_mut().begin_session();
-    // Lines count from 1.
-    let run_line = CHART
-        .lines()
-        .position(|line| line.starts_with("STEP Run"))
-        .expect("the chart has the step Run") as u32
-        + 1;
-    let pou = image
-        .pous
-        .iter()
-        .position(|pou| pou.name == "Main")
-        .expect("Main is compiled") as u32;
-    let instruction = image.pous[pou as usize]
-        .lines
-        .iter()
-        .find(|entry| entry.line == run_line)
-        .expect("the step's line starts a statement")
-        .index;
+    let run_line = line_in(CHART, "STEP Run");
     let (id, _) = engine
         .view()
-        .set_breakpoint(runtime::engine::BreakpointSpec {
-            pou,
-            instruction,
-            instance: 0,
-            task: None,
-            hit_mode: HitMode::Always,
-            hit_target: 0,
-            condition: Vec::new(),
-        })
+        .set_breakpoint(spec_at(&image, "Main", run_line))
         .expect("the breakpoint is set");
     let mut script = Script {
         actions: Vec::new(),
