@@ -187,7 +187,7 @@ impl<'a> Exec<'a> {
 
     /// Counts the backward jump at instruction `pc`, and looks at the clock every so often. A
     /// safe point: a task of higher priority that is due runs here. Says whether the task
-    /// came to be watched by the debugger while it was interrupted.
+    /// may halt now, after what was served while it was interrupted.
     #[inline(always)]
     pub(super) fn tick(&mut self, pc: usize) -> Result<bool, FaultKind> {
         let watched = self.safe_point(pc)?;
@@ -205,7 +205,7 @@ impl<'a> Exec<'a> {
 
     /// Lets the tasks of higher priority that are due run, when the alarm says one may be;
     /// `at` is the instruction of the current POU the task stands at. Says whether the task
-    /// came to be watched by the debugger meanwhile; fails with [`FaultKind::Abandoned`] when
+    /// may halt now, after what was served meanwhile; fails with [`FaultKind::Abandoned`] when
     /// the scheduler abandoned the cycles in progress meanwhile (a stop while a task is
     /// halted).
     #[inline(always)]
@@ -220,8 +220,8 @@ impl<'a> Exec<'a> {
     /// (and, while a task is halted, serves its commands), and moves the watchdog's deadline by
     /// the time they took: the watchdog counts this cycle's own time. With the debugger, the
     /// innermost frame first notes instruction `at`, so a client sees where the waiting task
-    /// stands; returns whether the task is watched (a step, run to cursor or halt was given to
-    /// it meanwhile).
+    /// stands; returns whether the task may halt now (a step, run to cursor, halt or a
+    /// breakpoint it can reach was given meanwhile), so the POU goes on in the debug form.
     #[cold]
     #[inline(never)]
     fn preempt(&mut self, at: usize) -> Result<bool, FaultKind> {
@@ -248,7 +248,9 @@ impl<'a> Exec<'a> {
         if self.debug.abandoning() {
             return Err(FaultKind::Abandoned);
         }
-        Ok(self.debugging && self.debug.watched(self.task))
+        // Requests served meanwhile (above a halt) may have given the task a step, a halt
+        // or a breakpoint it can reach: the POU goes on in the debug form.
+        Ok(self.debugging && self.debug.may_halt(self.task))
     }
 
     /// Runs POU `index` with the current bases, called from instruction `call_site` of the

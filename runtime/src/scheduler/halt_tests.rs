@@ -557,3 +557,50 @@ fn commands_are_served_while_a_task_run_by_a_halt_loops() {
         });
     }
 }
+
+#[test]
+fn a_task_looping_in_a_cycle_run_by_a_halt_can_be_halted_too() {
+    without_hanging(|| {
+        let (scheduler, _areas) = scheduler(SchedulerOptions::default());
+        let looping = TestTask {
+            watchdog_ns: 2 * HANG.as_nanos() as u64,
+            ..endless(10 * MS, 10)
+        };
+        // The loop jumps back to instruction 2 of task 1's program: a statement start there
+        // is where a halt can stop it.
+        let mut image = debuggable(&[TestTask::cyclic(MS, 1), looping]);
+        image.pous[1].lines.push(LineEntry {
+            index: 2,
+            file: 0,
+            line: 2,
+        });
+        scheduler.load(image).expect("loads");
+        debug(&scheduler, |debug| {
+            debug.begin_session();
+            debug.halt_task(0).expect("task 0 exists");
+        });
+        scheduler.start().expect("starts");
+        wait_until("task 0 to halt", || {
+            debug(&scheduler, |debug| debug.is_halted(0))
+        });
+        wait_until("task 1 to loop", || {
+            scheduler
+                .between(|between| {
+                    let memory = between.memory.as_ref().expect("a program");
+                    let data = memory.engine.region(Region::Data);
+                    dint(data, crate::test_images::watch_counter(1)) > 1000
+                })
+                .expect("served")
+        });
+        // Task 1's cycle started while task 0 was halted, so it runs with the debugger: a
+        // halt given while it loops stops it at its next statement, not at its watchdog.
+        debug(&scheduler, |debug| {
+            debug.halt_task(1).expect("task 1 exists")
+        });
+        wait_until("task 1 to halt", || {
+            debug(&scheduler, |debug| debug.is_halted(1))
+        });
+        scheduler.stop().expect("stops");
+        assert!(scheduler.status().faults.is_empty());
+    });
+}

@@ -286,7 +286,7 @@ impl DebugState {
     }
 
     /// Whether task `task` may halt: it is watched or may reach a breakpoint.
-    fn may_halt(&self, task: usize) -> bool {
+    pub(crate) fn may_halt(&self, task: usize) -> bool {
         self.watched(task) || self.task_may_hit.get(task).copied().unwrap_or(false)
     }
 
@@ -294,15 +294,18 @@ impl DebugState {
     /// shadow call stack and lets the POUs the debugger watches run the debug form. It need
     /// not when nothing can halt while it runs (`docs/debugging.md` §3, "Cost"): the task may
     /// reach no breakpoint and is not watched, no flow recording is of it, no "halt all" is
-    /// on and, when it can be `interrupted`, no task of higher priority may halt (a task
-    /// waiting beneath a halted one shows its call stack too). Nothing of this changes until
-    /// a task halts, since requests are served only between cycles and during halts.
+    /// on, no task is halted and, when it can be `interrupted`, no task of higher priority may
+    /// halt (a task waiting beneath a halted one shows its call stack too). Nothing of this
+    /// changes while the cycle runs, since requests are served only between cycles and during
+    /// halts; a cycle that starts while a task is halted runs above that halt, where requests
+    /// are served at its safe points, so it always runs with the debugger.
     pub(crate) fn cycle_needs_debugger(&self, task: usize, interrupted: bool) -> bool {
         if !self.active {
             return false;
         }
         if self.halt_all
             || self.halt_next_cycle
+            || !self.halted.is_empty()
             || self.may_halt(task)
             || self.flow.records_task(task)
         {
