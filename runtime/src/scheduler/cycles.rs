@@ -43,6 +43,8 @@ pub(super) struct Cycles<'w, 'm> {
     pub(super) publish_depth: usize,
     /// The scheduler's commands, served while a task is halted.
     pub(super) commands: &'w super::inbox::Inbox,
+    /// The commands the worker postponed while the areas were busy; a halt serves them first.
+    pub(super) postponed: &'w mut std::collections::VecDeque<Command>,
     /// Commands that abandoned the halted cycles, for the worker once they have unwound.
     pub(super) deferred: &'w mut Vec<Command>,
     /// Saves retained values while a task is halted, as between cycles: the writer, when the

@@ -64,6 +64,7 @@ impl Cycles<'_, '_> {
             if !self.outbox.try_publish(self.status, self.plans) {
                 wait = wait.min(super::inbox::LOCK_RETRY);
             }
+            self.serve_postponed(&mut engine);
             match self.commands.wait(Some(wait)) {
                 Received::Command(command) => self.serve_while_halted(&mut engine, command),
                 Received::Nothing => {}
@@ -89,6 +90,7 @@ impl Cycles<'_, '_> {
     /// its safe points: what a halted task is told (continue, logout) is heard without waiting
     /// for that cycle's end, and a stop abandons it here.
     pub(super) fn serve_above_halt(&mut self, engine: &mut EngineView<'_>) {
+        self.serve_postponed(engine);
         loop {
             match self.commands.try_take() {
                 Received::Command(command) => self.serve_while_halted(engine, command),
@@ -98,6 +100,15 @@ impl Cycles<'_, '_> {
                     return;
                 }
             }
+        }
+    }
+
+    /// Serves the commands postponed before the halt because the areas were busy, in the order
+    /// they came and before any newer one: the client that sent them may be the one that has
+    /// to continue the halt.
+    fn serve_postponed(&mut self, engine: &mut EngineView<'_>) {
+        while let Some(command) = self.postponed.pop_front() {
+            self.serve_while_halted(engine, command);
         }
     }
 

@@ -604,3 +604,45 @@ fn a_task_looping_in_a_cycle_run_by_a_halt_can_be_halted_too() {
         assert!(scheduler.status().faults.is_empty());
     });
 }
+
+#[test]
+fn a_command_postponed_while_the_areas_were_busy_is_served_by_a_halt_that_follows() {
+    without_hanging(|| {
+        let (scheduler, areas) = scheduler(SchedulerOptions::default());
+        scheduler
+            .load(debuggable(&[TestTask::cyclic(MS, 1)]))
+            .expect("loads");
+        scheduler.start().expect("starts");
+        // The task halts at its 30th cycle from now.
+        let before = scheduler.status().tasks[0].cycles;
+        break_at_hit(&scheduler, 0, 30);
+        let scheduler = Arc::new(scheduler);
+        let held = areas.lock().expect("the areas");
+        // A client's request comes while a Modbus thread holds the areas: it is postponed.
+        let (answered, answer) = mpsc::channel();
+        let asking = Arc::clone(&scheduler);
+        let client = std::thread::spawn(move || {
+            let halted = asking
+                .between(|between| {
+                    let memory = between.memory.as_mut().expect("a program");
+                    memory.engine.debug().is_halted(0)
+                })
+                .expect("served");
+            let _ = answered.send(halted);
+        });
+        // The cycles go on meanwhile, and the task halts in its 30th.
+        wait_for(&scheduler, "the cycles before the halt", |status| {
+            status.tasks[0].cycles >= before + 29
+        });
+        std::thread::sleep(Duration::from_millis(100));
+        drop(held);
+        // The halt serves the postponed request (the task is still halted when it runs)
+        // instead of keeping it until the halt ends, which that client may have to ask for.
+        let halted = answer
+            .recv_timeout(PATIENCE)
+            .expect("the postponed request is answered during the halt");
+        assert!(halted);
+        client.join().expect("the client ends");
+        scheduler.stop().expect("stops");
+    });
+}

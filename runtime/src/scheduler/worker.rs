@@ -224,6 +224,7 @@ impl Worker {
             areas: &self.areas,
             publish_depth: 0,
             commands,
+            postponed: &mut self.postponed,
             deferred: &mut self.deferred,
             retain: (
                 self.retain.as_ref(),
