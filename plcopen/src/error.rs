@@ -66,6 +66,12 @@ pub enum ReadErrorKind {
         /// The reader's limit.
         limit: u32,
     },
+    /// Elements nest deeper than the reader follows.
+    #[error("elements nest more than {limit} deep, deeper than a PLCopen file has")]
+    TooDeep {
+        /// The reader's limit.
+        limit: usize,
+    },
     /// The XML parser refused the text.
     #[error("not well-formed XML: {0}")]
     NotXml(String),

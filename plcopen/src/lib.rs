@@ -44,7 +44,7 @@ pub use instances::{AccessVariable, ConfigVariable, Configuration, PouInstance, 
 pub use interface::{Interface, VarList, VarListKind, Variable};
 pub use ld::{Coil, Contact, Edge, LeftPowerRail, RightPowerRail, Storage};
 pub use pou::{Action, Method, Pou, PouLocation, PouType, Transition};
-pub use reader::{MAX_FILE_BYTES, ReadFileError, read, read_bytes, read_file};
+pub use reader::{MAX_DEPTH, MAX_FILE_BYTES, ReadFileError, read, read_bytes, read_file};
 pub use sfc::{
     ActionBlock, ActionBlockAction, ActionContent, Condition, ConditionForm, Convergence,
     Divergence, JumpStep, MacroStep, Qualifier, SfcTransition, Step,

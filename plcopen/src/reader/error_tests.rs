@@ -293,3 +293,36 @@ fn a_pin_is_named_by_its_formal_parameter_in_the_path() {
     );
     assert_eq!((error.line, error.column), (7, 89));
 }
+
+#[test]
+fn types_nested_deeper_than_the_limit_are_refused_without_overflowing_the_stack() {
+    // An array of an array of … 400,000 deep: 68 bytes a level, under the size and node
+    // limits, which the reader's recursion over types would follow off its stack.
+    let levels = 400_000;
+    let level = "<array><dimension lower=\"0\" upper=\"1\"/><baseType>";
+    let start = "<types><dataTypes><dataType name=\"T\"><baseType>";
+    let header = r#"<project xmlns="http://www.plcopen.org/xml/tc6_0201">
+<fileHeader companyName="c" productName="p" productVersion="1" creationDateTime="2024-01-01T00:00:00"/>
+<contentHeader name="n"><coordinateInfo><fbd><scaling x="0" y="0"/></fbd><ld><scaling x="0" y="0"/></ld><sfc><scaling x="0" y="0"/></sfc></coordinateInfo></contentHeader>
+"#;
+    let mut text = format!("{header}{start}");
+    text.push_str(&level.repeat(levels));
+    text.push_str("<BOOL/>");
+    text.push_str(&"</baseType></array>".repeat(levels));
+    text.push_str("</baseType></dataType></dataTypes></types></project>\n");
+    let error = read_error(&text);
+    assert!(
+        matches!(
+            error.kind,
+            ReadErrorKind::TooDeep {
+                limit: crate::MAX_DEPTH
+            }
+        ),
+        "{error}"
+    );
+    // project, types, dataTypes, dataType and baseType are five levels; each array two more
+    // (its dimension and baseType one below it): the first element past 128 is the 62nd
+    // array's dimension.
+    let column = start.len() + 61 * level.len() + "<array>".len() + 1;
+    assert_eq!((error.line, error.column), (4, column as u32), "{error}");
+}

@@ -35,6 +35,12 @@ pub const MAX_FILE_BYTES: usize = 32 * 1024 * 1024;
 /// keeps its DOM as small as a real file's.
 const MAX_NODES: u32 = 4 * 1024 * 1024;
 
+/// The deepest nesting of elements the reader accepts. The reader walks types, SFC macro steps
+/// and inline bodies by recursion, so a file made of elements nested a million deep would
+/// overflow the thread's stack; real files nest a few dozen deep (a macro step's body inside
+/// a CODESYS resource's `addData` is about 15).
+pub const MAX_DEPTH: usize = 128;
+
 /// Reads a PLCopen XML document from text. `file_name` only names the file in errors.
 pub fn read(text: &str, file_name: &str) -> Result<Document, ReadError> {
     if text.len() > MAX_FILE_BYTES {
@@ -66,12 +72,46 @@ pub fn read(text: &str, file_name: &str) -> Result<Document, ReadError> {
             kind,
         }
     })?;
+    check_depth(&dom, text, file_name)?;
     let root = dom.root_element();
     let dialect = dialect_of(root, file_name, &dom)?;
     let context = Context::new(&dom, text, file_name, dialect);
     let document = project::read_project(&context, root)?;
     checks::check_names(&context, &document)?;
     Ok(document)
+}
+
+/// Refuses a document whose elements nest deeper than [`MAX_DEPTH`], at the first element too
+/// deep in document order; works out each node's depth from its parent's, without recursion.
+fn check_depth(
+    dom: &roxmltree::Document<'_>,
+    text: &str,
+    file_name: &str,
+) -> Result<(), ReadError> {
+    let mut depths: Vec<u32> = Vec::new();
+    for node in dom.descendants() {
+        let parent_depth = node
+            .parent()
+            .and_then(|parent| depths.get(parent.id().get_usize()).copied())
+            .unwrap_or(0);
+        let depth = parent_depth + u32::from(node.is_element());
+        let at = node.id().get_usize();
+        if depths.len() <= at {
+            depths.resize(at + 1, 0);
+        }
+        depths[at] = depth;
+        if depth as usize > MAX_DEPTH {
+            let (line, column) = encoding::line_and_column(&text.as_bytes()[..node.range().start]);
+            return Err(ReadError {
+                file: file_name.to_owned(),
+                line,
+                column,
+                path: String::new(),
+                kind: ReadErrorKind::TooDeep { limit: MAX_DEPTH },
+            });
+        }
+    }
+    Ok(())
 }
 
 /// Reads a PLCopen XML document from the bytes of a file: UTF-8 with or without a byte order mark,
