@@ -223,13 +223,21 @@ impl GraphicalDocuments {
         file: &str,
         line: u32,
     ) -> Option<(TextTarget, editor::BodyPlace)> {
-        let body = self
+        // Called for every frame of the call stack each UI frame: the body is found by
+        // comparing paths (no string built per body) and its lines come from the cache.
+        let wanted = std::path::Path::new(file);
+        let target = self
             .lowering
             .bodies(project, revision)
             .iter()
-            .find(|body| body.text_file.to_string_lossy().replace('\\', "/") == file)?;
-        let place = crate::studio::debug::place_at_line(body, line)?;
-        Some((body.target.clone(), place))
+            .find(|body| body.text_file == wanted)?
+            .target
+            .clone();
+        let place = self
+            .lowering
+            .body_lines(project, revision, &target)?
+            .place_at(line)?;
+        Some((target, place))
     }
 
     /// The graphical bodies of `project` at `revision` with the element of each line of their
