@@ -1,28 +1,10 @@
 //! The files of the PLCopen and matiec corpora converted, with spot checks per file.
 
-use std::path::{Path, PathBuf};
-
 use project_model::{Body, Object, PouKind, TaskKind, VarSection};
 
 use super::{Imported, Outcome, import};
-use crate::{BodyContent, Document, read_bytes};
-
-/// The shared corpora beside the repository, as the reader's tests find them.
-fn corpora() -> PathBuf {
-    let folder = Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/../../shared/corpora"));
-    assert!(
-        folder.is_dir(),
-        "the shared corpora are expected at {}",
-        folder.display()
-    );
-    folder.to_path_buf()
-}
-
-fn read_corpus(relative: &str) -> Document {
-    let path = corpora().join(relative);
-    let bytes = std::fs::read(&path).unwrap_or_else(|error| panic!("{}: {error}", path.display()));
-    read_bytes(&bytes, relative).unwrap_or_else(|error| panic!("{error}"))
-}
+use crate::reader::corpus_tests::read_corpus;
+use crate::{BodyContent, Document};
 
 fn import_corpus(relative: &str) -> (Document, Imported) {
     let document = read_corpus(relative);

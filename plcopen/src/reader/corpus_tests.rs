@@ -8,7 +8,7 @@ use crate::{
 };
 
 /// The shared corpora beside the repository, as the compiler's tests find them.
-fn corpora() -> PathBuf {
+pub(crate) fn corpora() -> PathBuf {
     let folder = Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/../../shared/corpora"));
     assert!(
         folder.is_dir(),
@@ -18,7 +18,8 @@ fn corpora() -> PathBuf {
     folder.to_path_buf()
 }
 
-fn read_corpus(relative: &str) -> Document {
+/// The corpus file at `relative` below [`corpora`], read.
+pub(crate) fn read_corpus(relative: &str) -> Document {
     let path = corpora().join(relative);
     let bytes = std::fs::read(&path).unwrap_or_else(|error| panic!("{}: {error}", path.display()));
     read_bytes(&bytes, relative).unwrap_or_else(|error| panic!("{error}"))

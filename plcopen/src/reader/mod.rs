@@ -14,7 +14,7 @@ mod project;
 mod upgrade;
 
 #[cfg(test)]
-mod corpus_tests;
+pub(crate) mod corpus_tests;
 #[cfg(test)]
 mod error_tests;
 
