@@ -507,34 +507,7 @@ fn a_halt_waits_for_commands_without_spinning() {
 fn commands_are_served_while_a_task_run_by_a_halt_loops() {
     for release in [Release::Continue, Release::EndSession, Release::Stop] {
         without_hanging(move || {
-            let (scheduler, _areas) = scheduler(SchedulerOptions::default());
-            // Task 1's watchdog is longer than the test may take: only serving the commands
-            // from its safe points lets the test go on.
-            let looping = TestTask {
-                watchdog_ns: 2 * HANG.as_nanos() as u64,
-                ..endless(10 * MS, 10)
-            };
-            scheduler
-                .load(debuggable(&[TestTask::cyclic(MS, 1), looping]))
-                .expect("loads");
-            debug(&scheduler, |debug| {
-                debug.begin_session();
-                debug.halt_task(0).expect("task 0 exists");
-            });
-            scheduler.start().expect("starts");
-            // Task 0 halts in its first cycle, and its halt runs task 1's endless cycle.
-            wait_until("task 0 to halt", || {
-                debug(&scheduler, |debug| debug.is_halted(0))
-            });
-            wait_until("task 1 to loop", || {
-                scheduler
-                    .between(|between| {
-                        let memory = between.memory.as_ref().expect("a program");
-                        let data = memory.engine.region(Region::Data);
-                        dint(data, crate::test_images::watch_counter(1)) > 1000
-                    })
-                    .expect("served")
-            });
+            let scheduler = looping_above_a_halt(debuggable(&looping_above_a_halt_tasks()));
             match release {
                 Release::Continue => {
                     debug(&scheduler, |debug| debug.continue_task(0).expect("on top"));
@@ -561,37 +534,15 @@ fn commands_are_served_while_a_task_run_by_a_halt_loops() {
 #[test]
 fn a_task_looping_in_a_cycle_run_by_a_halt_can_be_halted_too() {
     without_hanging(|| {
-        let (scheduler, _areas) = scheduler(SchedulerOptions::default());
-        let looping = TestTask {
-            watchdog_ns: 2 * HANG.as_nanos() as u64,
-            ..endless(10 * MS, 10)
-        };
         // The loop jumps back to instruction 2 of task 1's program: a statement start there
         // is where a halt can stop it.
-        let mut image = debuggable(&[TestTask::cyclic(MS, 1), looping]);
+        let mut image = debuggable(&looping_above_a_halt_tasks());
         image.pous[1].lines.push(LineEntry {
             index: 2,
             file: 0,
             line: 2,
         });
-        scheduler.load(image).expect("loads");
-        debug(&scheduler, |debug| {
-            debug.begin_session();
-            debug.halt_task(0).expect("task 0 exists");
-        });
-        scheduler.start().expect("starts");
-        wait_until("task 0 to halt", || {
-            debug(&scheduler, |debug| debug.is_halted(0))
-        });
-        wait_until("task 1 to loop", || {
-            scheduler
-                .between(|between| {
-                    let memory = between.memory.as_ref().expect("a program");
-                    let data = memory.engine.region(Region::Data);
-                    dint(data, crate::test_images::watch_counter(1)) > 1000
-                })
-                .expect("served")
-        });
+        let scheduler = looping_above_a_halt(image);
         // Task 1's cycle started while task 0 was halted, so it runs with the debugger: a
         // halt given while it loops stops it at its next statement, not at its watchdog.
         debug(&scheduler, |debug| {
@@ -603,6 +554,42 @@ fn a_task_looping_in_a_cycle_run_by_a_halt_can_be_halted_too() {
         scheduler.stop().expect("stops");
         assert!(scheduler.status().faults.is_empty());
     });
+}
+
+/// Two tasks: task 0 every millisecond at priority 1, and task 1 at priority 10, whose cycle
+/// never ends and whose watchdog is longer than a test may take, so only serving the
+/// commands from its safe points lets a test go on.
+fn looping_above_a_halt_tasks() -> [TestTask; 2] {
+    let looping = TestTask {
+        watchdog_ns: 2 * HANG.as_nanos() as u64,
+        ..endless(10 * MS, 10)
+    };
+    [TestTask::cyclic(MS, 1), looping]
+}
+
+/// Runs `image` (of [`looping_above_a_halt_tasks`]) in a debug session with task 0 told to
+/// halt, and returns once task 0 is halted and task 1's endless cycle, run by the halt, loops.
+fn looping_above_a_halt(image: ProgramImage) -> Scheduler {
+    let (scheduler, _areas) = scheduler(SchedulerOptions::default());
+    scheduler.load(image).expect("loads");
+    debug(&scheduler, |debug| {
+        debug.begin_session();
+        debug.halt_task(0).expect("task 0 exists");
+    });
+    scheduler.start().expect("starts");
+    wait_until("task 0 to halt", || {
+        debug(&scheduler, |debug| debug.is_halted(0))
+    });
+    wait_until("task 1 to loop", || {
+        scheduler
+            .between(|between| {
+                let memory = between.memory.as_ref().expect("a program");
+                let data = memory.engine.region(Region::Data);
+                dint(data, crate::test_images::watch_counter(1)) > 1000
+            })
+            .expect("served")
+    });
+    scheduler
 }
 
 #[test]
