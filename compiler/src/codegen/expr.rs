@@ -9,7 +9,9 @@ use super::error::fail;
 use super::layout::{Lay, LayShape, located_of};
 use crate::elementary::Elementary;
 use crate::sema::scope::{GlobalSymbol, LocalSymbol};
-use crate::sema::ty::{Type, bit_string_arithmetic, common_type, mixed_sign_type};
+use crate::sema::ty::{
+    Type, bit_string_arithmetic, common_type, integer_real_type, mixed_sign_type,
+};
 use crate::syntax::SyntaxKind;
 use crate::syntax::ast::{AstNode, BinaryExpr, Expr, FieldExpr, IndexExpr, NameExpr, UnaryExpr};
 
@@ -1111,6 +1113,7 @@ impl BodyGen<'_, '_, '_> {
         let common = common_type(&lt, &rt)
             .or_else(|| bit_string_arithmetic(&lt, &rt))
             .or_else(|| mixed_sign_type(&lt, &rt))
+            .or_else(|| integer_real_type(&lt, &rt))
             .unwrap_or(lt);
         let ty = concrete(&common, None);
         let sides = [self.type_of(left), self.type_of(right)];

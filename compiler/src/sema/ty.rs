@@ -427,6 +427,22 @@ pub fn mixed_sign_type(a: &Type, b: &Type) -> Option<Type> {
         .map(Type::Elementary)
 }
 
+/// The type CODESYS V3.5 computes `a * b` (and `+`, `-`, `/` and the comparisons) in when one
+/// operand is an integer and the other a `REAL` or `LREAL` (`UDINT * REAL`, `i < r`): the real
+/// operand's type, the integer converted to it first. IEC 61131-3 refuses the mix; CODESYS
+/// compiles it (`codesys_code_execution_speedTests.xml` computes `UDINT * REAL`). `None` for
+/// other operands.
+pub fn integer_real_type(a: &Type, b: &Type) -> Option<Type> {
+    let (Type::Elementary(a), Type::Elementary(b)) = (strip_subrange(a), strip_subrange(b)) else {
+        return None;
+    };
+    match (a.is_integer(), a.is_real(), b.is_integer(), b.is_real()) {
+        (true, _, _, true) => Some(Type::Elementary(b)),
+        (_, true, true, _) => Some(Type::Elementary(a)),
+        _ => None,
+    }
+}
+
 /// The unsigned integer a bit string counts as in CODESYS arithmetic (`BYTE` as `USINT`);
 /// `None` for `BOOL` and everything that is not a bit string.
 pub fn bit_string_counterpart(ty: Elementary) -> Option<Elementary> {
@@ -594,6 +610,15 @@ mod tests {
         // Where one widens to the other, the common type is the usual one, not this.
         assert_eq!(mixed_sign_type(&e(Dint), &e(Uint)), None);
         assert_eq!(mixed_sign_type(&e(Int), &e(Word)), None);
+    }
+
+    #[test]
+    fn an_integer_meets_a_real_in_the_real_type() {
+        assert_eq!(integer_real_type(&e(Udint), &e(Real)), Some(e(Real)));
+        assert_eq!(integer_real_type(&e(Lreal), &e(Sint)), Some(e(Lreal)));
+        assert_eq!(integer_real_type(&e(Real), &e(Lreal)), None);
+        assert_eq!(integer_real_type(&e(Dword), &e(Real)), None);
+        assert_eq!(integer_real_type(&e(Int), &e(Dint)), None);
     }
 
     #[test]

@@ -198,6 +198,36 @@ fn signed_and_unsigned_integers_combine_in_the_smallest_signed_type_holding_both
 }
 
 #[test]
+fn integers_and_reals_combine_in_the_real_type_by_default() {
+    let declarations =
+        "ud : UDINT := 3; r : REAL := 0.5; i : INT := 4; l : LREAL := 0.25; d : DINT := 16777217;
+        p : REAL; q : LREAL; s : REAL; less : BOOL; same : BOOL;";
+    let body = "p := ud * r; q := i + l; s := d / r; less := i < r; same := i = l * 16.0;";
+    let source = program(declarations, body);
+    // UDINT and DINT may round in a REAL, which warns as the assignment `r := d` does; an INT
+    // is exact in both real types, so IEC converts it too and only the first two are refused
+    // by iec-strict.
+    let warning = (Code::ImplicitRealRounding, Severity::Warning);
+    assert_eq!(codes(&source, Dialect::Codesys), vec![warning; 2]);
+    let s = run(&source, 1);
+    check(
+        &s,
+        &[
+            ("main.p", "1.5"),
+            ("main.q", "4.25"),
+            // 16777217 rounds to 16777216 in a REAL before the division.
+            ("main.s", "33554432"),
+            ("main.less", "FALSE"),
+            ("main.same", "TRUE"),
+        ],
+    );
+    assert_eq!(
+        codes(&source, Dialect::IecStrict),
+        vec![(Code::InvalidOperands, Severity::Error); 2]
+    );
+}
+
+#[test]
 fn what_codesys_refuses_both_dialects_refuse() {
     for (declarations, body, code) in [
         ("x : BOOL; n : INT;", "n := x + 1;", Code::InvalidOperands),

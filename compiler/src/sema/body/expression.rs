@@ -659,6 +659,7 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
         }
         let result = self.binary_type(operator.kind(), &left, &right);
         if let Some(ty) = result {
+            self.warn_integer_rounded_into_real(&left_node, &left, &right_node, &right);
             // Fold literal arithmetic so `-128` or `2 * 64` still fit a SINT.
             if matches!(ty, Type::IntLiteral(_))
                 && let Some(Const::Int(value)) =
@@ -698,7 +699,8 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                     | SyntaxKind::GE
             )
             && (bit_string_arithmetic(&left, &right).is_some()
-                || mixed_sign_type(&left, &right).is_some())
+                || mixed_sign_type(&left, &right).is_some()
+                || integer_real_type(&left, &right).is_some())
         {
             message.push_str(STRICT_NOTE);
         }
@@ -706,11 +708,39 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
         Type::Error
     }
 
-    /// The type of an operation on a signed and an unsigned integer, which the default
-    /// dialect computes as CODESYS does (`ty::mixed_sign_type`) and `iec-strict` refuses.
+    /// Warns (W0013, as an assignment would) when an operation of an integer with a real
+    /// converts the integer into a real type that may round it (`d * r` with `d : DINT`,
+    /// `r : REAL`): only the CODESYS dialect lets such an operation through.
+    fn warn_integer_rounded_into_real(
+        &mut self,
+        left_node: &Expr,
+        left: &Type,
+        right_node: &Expr,
+        right: &Type,
+    ) {
+        let Some(real) = integer_real_type(left, right) else {
+            return;
+        };
+        for (node, ty) in [(left_node, left), (right_node, right)] {
+            if !implicitly_converts(ty, &real) && lenient_real_conversion(ty, &real) {
+                self.diagnostics.push(Diagnostic::new(
+                    Code::ImplicitRealRounding,
+                    range_of(node.syntax()),
+                    format!(
+                        "this operation converts {ty} to {real} implicitly, which rounds integers it cannot hold exactly (use LREAL, or write {}_TO_{real}(…) to say so)",
+                        ty.as_elementary().map_or("ANY", |e| e.name()),
+                    ),
+                ));
+            }
+        }
+    }
+
+    /// The type of an operation on a signed and an unsigned integer, or on an integer and a
+    /// real, which the default dialect computes as CODESYS does (`ty::mixed_sign_type`,
+    /// `ty::integer_real_type`) and `iec-strict` refuses.
     fn lenient_mixed_sign(&self, left: &Type, right: &Type) -> Option<Type> {
         (self.scope.globals.dialect == Dialect::Codesys)
-            .then(|| mixed_sign_type(left, right))
+            .then(|| mixed_sign_type(left, right).or_else(|| integer_real_type(left, right)))
             .flatten()
     }
 

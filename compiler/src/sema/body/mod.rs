@@ -25,8 +25,8 @@ use super::scope::{GlobalSymbol, LocalSymbol, Scope, inheritance_chain, is_visib
 use super::signatures::{self, FunctionSig, Sig};
 use super::ty::{
     DEFAULT_STRING_LENGTH, Type, bit_string_arithmetic, common_type, implicitly_converts,
-    lenient_integer_conversion, lenient_real_conversion, lenient_real_to_integer, mixed_sign_type,
-    power_type, wrapped,
+    integer_real_type, lenient_integer_conversion, lenient_real_conversion,
+    lenient_real_to_integer, mixed_sign_type, power_type, wrapped,
 };
 use super::types::Shape;
 use super::{closest, stdlib};
