@@ -302,3 +302,18 @@ fn a_compile_error_hands_the_caller_the_file_pou_line_and_origin_as_data() {
     let body = main.body.st_text().unwrap_or_default();
     assert_eq!(body.get(range), Some("fb ?= i;"));
 }
+
+#[test]
+fn the_clock_operators_read_the_clock_into_a_temporary_of_their_width() {
+    check_main(
+        "t : TIME; l : LTIME;",
+        "t := TIME() - t;\nl := LTIME();",
+        expect![[r#"
+            0   time F0
+            1   sub TIME I0 <- F0, I0
+            2   ltime F0
+            3   move LTIME I8 <- F0
+            4   return
+        "#]],
+    );
+}
