@@ -317,3 +317,15 @@ fn the_clock_operators_read_the_clock_into_a_temporary_of_their_width() {
         "#]],
     );
 }
+
+#[test]
+fn a_function_the_project_names_time_is_called_instead_of_the_clock() {
+    // ironplc's `time_function_decl.st`: the project's own TIME shadows the clock operator.
+    let source = "FUNCTION TIME : TIME\nTIME := T#5s;\nEND_FUNCTION\n\nPROGRAM Main\nVAR\n    t : TIME;\nEND_VAR\nt := TIME();\nEND_PROGRAM\n";
+    expect![[r#"
+        0   call pou0 in [] out [F0@0:4]
+        1   move TIME I0 <- F0
+        2   return
+    "#]]
+    .assert_eq(&code_of(source, "Main"));
+}

@@ -140,3 +140,23 @@ fn the_clock_stands_still_during_a_simulated_cycle_and_moves_by_the_interval() {
     let output = simulation.engine().region(program_image::Region::Output);
     assert_eq!(dword(output, 0), 120_000);
 }
+
+#[test]
+fn time_keeps_the_low_32_bits_of_the_milliseconds_as_time_wraps() {
+    let mut engine = Engine::new(image()).unwrap();
+    let wrap_ms: i64 = 1 << 32;
+    // 49.7 days and 7 ms after the start: TIME counts on from 0, LTIME does not wrap.
+    let now_ns = (wrap_ms + 7) * 1_000_000;
+    engine.run_cycle(0, now_ns, 0).unwrap();
+    assert_eq!(dword(engine.region(program_image::Region::Output), 0), 7);
+    assert_eq!(
+        lint(engine.region(program_image::Region::Memory), 0),
+        now_ns
+    );
+    // Past 24.8 days Rivet's signed TIME reads negative, with the bits CODESYS's unsigned has.
+    engine.run_cycle(0, (1 << 31) * 1_000_000, 1).unwrap();
+    assert_eq!(
+        dword(engine.region(program_image::Region::Output), 0),
+        i32::MIN
+    );
+}
