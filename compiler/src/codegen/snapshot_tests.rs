@@ -329,3 +329,19 @@ fn a_function_the_project_names_time_is_called_instead_of_the_clock() {
     "#]]
     .assert_eq(&code_of(source, "Main"));
 }
+
+#[test]
+fn an_index_into_a_string_reads_its_bytes_from_0_with_the_terminator_inside_the_bounds() {
+    check_main(
+        "s : STRING(4) := 'abcd'; w : WSTRING(2); j : INT; b : BYTE; c : WORD;",
+        "b := s[j];\nc := w[1];",
+        expect![[r#"
+            0   address F0 <- &I0
+            1   element F8 <- F0[I12 INT from 0, 5 of 1]
+            2   load 1 F16 <- *F8
+            3   move BYTE I14 <- F16
+            4   move WORD I16 <- I8
+            5   return
+        "#]],
+    );
+}

@@ -247,3 +247,21 @@ fn the_clock_operators_give_time_and_ltime_and_take_no_argument() {
         ]
     );
 }
+
+#[test]
+fn a_constant_index_past_a_strings_terminator_is_refused_by_the_checker() {
+    let main = pou(
+        "Main",
+        PouKind::Program,
+        vec![Variable::new("s", "STRING(4)"), Variable::new("b", "BYTE")],
+        "b := s[4];\nb := s[5];\nb := s[-1];\nb := s[1, 2];\n",
+    );
+    assert_eq!(
+        messages(&project(vec![main])),
+        vec![
+            "application/Main.st E0111: index 5 is outside the characters 0..4 of 's'",
+            "application/Main.st E0111: index -1 is outside the characters 0..4 of 's'",
+            "application/Main.st E0111: 's' is a string and takes one index, but 2 are given",
+        ]
+    );
+}
