@@ -424,4 +424,16 @@ pub enum Instr {
         /// The block's name.
         block: String,
     },
+    /// `dst := TIME()` (`long` false) or `dst := LTIME()` (`long` true), CODESYS's clock
+    /// operators: the time since the runtime started at the instant of the call, as a TIME in
+    /// milliseconds (wrapping as TIME does) or an LTIME in nanoseconds. On the real scheduler
+    /// that is the task clock at the cycle's start plus the time elapsed since, so the
+    /// difference of two calls in one cycle measures the code between them; on a simulated
+    /// clock it is the task clock, which stands still during a cycle.
+    Clock {
+        /// LTIME (nanoseconds, 8 bytes) rather than TIME (milliseconds, 4 bytes).
+        long: bool,
+        /// The TIME or LTIME written.
+        dst: Operand,
+    },
 }

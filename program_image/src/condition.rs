@@ -67,7 +67,7 @@ impl BreakCondition {
         }
     }
 
-    /// Whether a condition may use `instr`: instructions 0–15, 20, 22, 23, 25 and 26 of
+    /// Whether a condition may use `instr`: instructions 0–15, 20, 22, 23, 25, 26 and 28 of
     /// `docs/program-image.md` §7.1 (no calls of POUs or blocks, no `Store`, no `Return`, no
     /// `Native`).
     pub fn allows(instr: &Instr) -> bool {
@@ -210,6 +210,7 @@ fn written(instr: &Instr) -> Option<(Operand, u64)> {
         | Instr::Offset { dst, .. }
         | Instr::OpenElement { dst, .. }
         | Instr::Now { dst } => (*dst, 8),
+        Instr::Clock { long, dst } => (*dst, if *long { 8 } else { 4 }),
         Instr::Load {
             size: bytes, dst, ..
         } => (*dst, size(*bytes)),

@@ -203,6 +203,8 @@ impl fmt::Display for Instr {
             }
             Self::Now { dst } => write!(f, "now {dst}"),
             Self::Native { block } => write!(f, "native {block}"),
+            Self::Clock { long: false, dst } => write!(f, "time {dst}"),
+            Self::Clock { long: true, dst } => write!(f, "ltime {dst}"),
         }
     }
 }
@@ -263,6 +265,10 @@ mod tests {
                 }],
                 outputs: Vec::new(),
             },
+            Instr::Clock {
+                long: true,
+                dst: Operand::Frame(32),
+            },
             Instr::Return,
         ];
         expect![[r#"
@@ -272,7 +278,8 @@ mod tests {
             3   setbit BYTE %Q2.3 <- %I0
             4   callstd Ton on *F24
             5   call pou2 in [%M4@0:4] out []
-            6   return
+            6   ltime F32
+            7   return
         "#]]
         .assert_eq(&listing(&code));
     }

@@ -506,6 +506,7 @@ impl ProgramImage {
                     }
                 }
                 Instr::Now { dst } => operand(*dst, 8, word)?,
+                Instr::Clock { long, dst } => operand(*dst, if *long { 8 } else { 4 }, word)?,
                 // The runtime resolves the block's name and its members at load.
                 Instr::Native { .. } => {}
                 Instr::ToText {

@@ -513,6 +513,24 @@ fn an_operand_outside_its_region_is_refused() {
 }
 
 #[test]
+fn a_clock_read_is_checked_for_the_width_of_its_time() {
+    // `main`'s instance has 12 bytes: a TIME fits at offset 8, an LTIME does not.
+    let mut image = small_image();
+    image.pous[0].code[1] = Instr::Clock {
+        long: false,
+        dst: Operand::Instance(8),
+    };
+    assert_eq!(ProgramImage::decode(&image.encode()), Ok(image.clone()));
+    image.pous[0].code[1] = Instr::Clock {
+        long: true,
+        dst: Operand::Instance(8),
+    };
+    let message = invalid_message(&image);
+    assert_contains(&message, "instruction 1");
+    assert_contains(&message, "Instance(8) of 8 bytes is outside its region");
+}
+
+#[test]
 fn a_jump_outside_the_code_is_refused() {
     let mut image = small_image();
     image.pous[0].code[3] = Instr::JumpIfNot {

@@ -461,6 +461,45 @@ END_PROGRAM",
     assert_eq!(value(&s, "main.n"), "1");
 }
 
+/// CODESYS's index access to a STRING gives the byte at the index, counted from 0, and to a
+/// WSTRING the word (https://content.helpme-codesys.com/en/CODESYS%20Development%20System/_cds_datatype_pointer.html);
+/// the terminator's place is inside the bounds, one past it is a fault.
+#[test]
+fn an_index_into_a_string_reads_and_writes_its_characters_from_0() {
+    let s = run(
+        "PROGRAM main VAR s : STRING(4) := 'abcd'; w : WSTRING(3) := \"xyz\"; first : BYTE; last : BYTE; after : BYTE; wide : WORD; i : INT := 4; END_VAR
+first := s[0]; last := s[3]; after := s[i]; wide := w[2]; s[1] := 66;
+END_PROGRAM",
+        1,
+    );
+    check(
+        &s,
+        &[
+            ("main.first", "97"),
+            ("main.last", "100"),
+            ("main.after", "0"),
+            ("main.wide", "122"),
+            ("main.s", "'aBcd'"),
+        ],
+    );
+    let s = run(
+        "PROGRAM main VAR s : STRING(4); b : BYTE; i : INT := 5; END_VAR b := s[i]; END_PROGRAM",
+        1,
+    );
+    assert!(
+        matches!(
+            s.faults()[0].kind,
+            runtime::engine::FaultKind::IndexOutOfBounds {
+                index: 5,
+                low: 0,
+                high: 4
+            }
+        ),
+        "{:?}",
+        s.faults()
+    );
+}
+
 #[test]
 fn an_index_out_of_bounds_and_runaway_recursion_are_faults_not_crashes() {
     let s = run(

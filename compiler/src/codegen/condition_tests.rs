@@ -121,6 +121,25 @@ fn a_function_condition_sees_its_parameters_and_locals_and_an_array_element_its_
 }
 
 #[test]
+fn a_condition_may_read_the_clock_and_the_verifier_lets_it() {
+    let image = image();
+    let compiled = compiled("Main", "LTIME() > LTIME#1s AND TIME() < T#1h");
+    assert_eq!(
+        image.verify_condition(compiled.pou, &compiled.condition),
+        Ok(())
+    );
+    let listing = program_image::listing(&compiled.condition.code);
+    let operations: Vec<&str> = listing
+        .lines()
+        .filter_map(|line| line.split_whitespace().nth(1))
+        .collect();
+    assert!(
+        operations.contains(&"ltime") && operations.contains(&"time"),
+        "{listing}"
+    );
+}
+
+#[test]
 fn an_unknown_name_is_reported_at_its_place_in_the_expression() {
     let ConditionCompileError::Diagnostics(found) = refused("Main", "i > 0 AND nope") else {
         panic!("expected the checker's errors");

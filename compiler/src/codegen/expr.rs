@@ -703,13 +703,24 @@ impl BodyGen<'_, '_, '_> {
                 lay: *element,
             });
         }
-        let LayShape::Array {
-            element,
-            element_ty,
-            dims,
-        } = base.lay.shape.clone()
-        else {
-            return Err(fail!("'{}' is not an array", written(&base_node)));
+        let (element, element_ty, dims) = match base.lay.shape.clone() {
+            LayShape::Array {
+                element,
+                element_ty,
+                dims,
+            } => (element, element_ty, dims),
+            // CODESYS indexes a STRING's bytes (a WSTRING's words) from 0, as the checker types
+            // them; the terminator's place, at the length, is the last one inside.
+            LayShape::Text { wide, length } => {
+                let element_ty = Type::Elementary(if wide {
+                    Elementary::Word
+                } else {
+                    Elementary::Byte
+                });
+                let element = self.lay(&element_ty)?;
+                (Box::new(element), element_ty, vec![(0, i64::from(length))])
+            }
+            _ => return Err(fail!("'{}' is not an array", written(&base_node))),
         };
         if dims.len() != indices.len() {
             return Err(fail!(

@@ -302,3 +302,46 @@ fn a_compile_error_hands_the_caller_the_file_pou_line_and_origin_as_data() {
     let body = main.body.st_text().unwrap_or_default();
     assert_eq!(body.get(range), Some("fb ?= i;"));
 }
+
+#[test]
+fn the_clock_operators_read_the_clock_into_a_temporary_of_their_width() {
+    check_main(
+        "t : TIME; l : LTIME;",
+        "t := TIME() - t;\nl := LTIME();",
+        expect![[r#"
+            0   time F0
+            1   sub TIME I0 <- F0, I0
+            2   ltime F0
+            3   move LTIME I8 <- F0
+            4   return
+        "#]],
+    );
+}
+
+#[test]
+fn a_function_the_project_names_time_is_called_instead_of_the_clock() {
+    // ironplc's `time_function_decl.st`: the project's own TIME shadows the clock operator.
+    let source = "FUNCTION TIME : TIME\nTIME := T#5s;\nEND_FUNCTION\n\nPROGRAM Main\nVAR\n    t : TIME;\nEND_VAR\nt := TIME();\nEND_PROGRAM\n";
+    expect![[r#"
+        0   call pou0 in [] out [F0@0:4]
+        1   move TIME I0 <- F0
+        2   return
+    "#]]
+    .assert_eq(&code_of(source, "Main"));
+}
+
+#[test]
+fn an_index_into_a_string_reads_its_bytes_from_0_with_the_terminator_inside_the_bounds() {
+    check_main(
+        "s : STRING(4) := 'abcd'; w : WSTRING(2); j : INT; b : BYTE; c : WORD;",
+        "b := s[j];\nc := w[1];",
+        expect![[r#"
+            0   address F0 <- &I0
+            1   element F8 <- F0[I12 INT from 0, 5 of 1]
+            2   load 1 F16 <- *F8
+            3   move BYTE I14 <- F16
+            4   move WORD I16 <- I8
+            5   return
+        "#]],
+    );
+}

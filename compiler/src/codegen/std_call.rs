@@ -258,6 +258,12 @@ impl BodyGen<'_, '_, '_> {
             return self.time_arithmetic(op, &values, &result_ty).map(Some);
         }
         match upper.as_str() {
+            "TIME" | "LTIME" => {
+                let long = upper == "LTIME";
+                let dst = self.temp(if long { 8 } else { 4 });
+                self.emit(Instr::Clock { long, dst });
+                Ok(Some((dst, result_ty)))
+            }
             "MOVE" => {
                 let value = self.expr_as(&first()?, &result_ty)?;
                 Ok(Some((value, result_ty)))

@@ -147,6 +147,9 @@ pub(crate) fn function(name: &str) -> Option<FunctionSig> {
         "SUB_TOD_TOD" => sig(&[("IN1", E(TimeOfDay)), ("IN2", E(TimeOfDay))], E(Time)),
         "SUB_DT_DT" => sig(&[("IN1", E(DateAndTime)), ("IN2", E(DateAndTime))], E(Time)),
         "CONCAT_DATE_TOD" => sig(&[("IN1", E(Date)), ("IN2", E(TimeOfDay))], E(DateAndTime)),
+        // CODESYS's clock operators: the time since the runtime started.
+        "TIME" => sig(&[], E(Time)),
+        "LTIME" => sig(&[], E(Ltime)),
         "TRUNC" => sig(&[("IN", Class(G::Real))], E(Dint)),
         "TRUNC_INT" => sig(&[("IN", Class(G::Real))], E(Int)),
         "ROUND" => one(G::Real, T(G::Real)),

@@ -71,6 +71,9 @@ const FUNCTIONS: &[&str] = &[
     "SUB_DT_TIME",
     "SUB_DT_DT",
     "CONCAT_DATE_TOD",
+    // CODESYS's clock operators.
+    "TIME",
+    "LTIME",
     // Conversion helpers.
     "TRUNC",
     "TRUNC_INT",

@@ -223,3 +223,45 @@ fn an_array_with_open_bounds_is_refused_outside_a_var_in_out_parameter() {
     }
     assert!(!refused.iter().any(|m| m.contains("'values'")), "{found:?}");
 }
+
+#[test]
+fn the_clock_operators_give_time_and_ltime_and_take_no_argument() {
+    let main = pou(
+        "Main",
+        PouKind::Program,
+        vec![
+            Variable::new("t", "TIME"),
+            Variable::new("l", "LTIME"),
+            Variable::new("b", "BOOL"),
+        ],
+        "t := TIME() - t;\nl := LTIME() - l;\nb := TIME() - t;\nb := LTIME();\nt := TIME(t);\nl := LTIME(IN := l);\n",
+    );
+    // The first two lines check; the BOOL assignments name the types the calls have.
+    assert_eq!(
+        messages(&project(vec![main])),
+        vec![
+            "application/Main.st E0104: the assignment expects BOOL, found TIME; IEC converts only to wider types, so write TIME_TO_BOOL(…)",
+            "application/Main.st E0104: the assignment expects BOOL, found LTIME; IEC converts only to wider types, so write LTIME_TO_BOOL(…)",
+            "application/Main.st E0106: 'TIME' takes 0 input(s), but 1 are given",
+            "application/Main.st E0106: 'LTIME' has no parameter 'IN'",
+        ]
+    );
+}
+
+#[test]
+fn a_constant_index_past_a_strings_terminator_is_refused_by_the_checker() {
+    let main = pou(
+        "Main",
+        PouKind::Program,
+        vec![Variable::new("s", "STRING(4)"), Variable::new("b", "BYTE")],
+        "b := s[4];\nb := s[5];\nb := s[-1];\nb := s[1, 2];\n",
+    );
+    assert_eq!(
+        messages(&project(vec![main])),
+        vec![
+            "application/Main.st E0111: index 5 is outside the characters 0..4 of 's'",
+            "application/Main.st E0111: index -1 is outside the characters 0..4 of 's'",
+            "application/Main.st E0111: 's' is a string and takes one index, but 2 are given",
+        ]
+    );
+}

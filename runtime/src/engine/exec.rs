@@ -82,6 +82,9 @@ pub(crate) struct Exec<'a> {
     pub(super) debugging: bool,
     /// The task clock in nanoseconds, read by the timers.
     pub(crate) now_ns: i64,
+    /// When the cycle started, on the real clock; `None` on a simulated clock, where time
+    /// stands still during a cycle. `TIME()` and `LTIME()` add the time elapsed since.
+    pub(crate) clock_started: Option<Instant>,
     pub(crate) deadline: Option<(Instant, u64)>,
     budget: u32,
     depth: u32,
@@ -126,6 +129,7 @@ impl<'a> Exec<'a> {
             regions,
             code,
             now_ns,
+            clock_started: None,
             deadline,
             budget: WATCHDOG_STRIDE,
             depth: 0,
@@ -133,6 +137,15 @@ impl<'a> Exec<'a> {
             native_base: stack_position(),
             motion,
         }
+    }
+
+    /// The clock `TIME()` and `LTIME()` read, in nanoseconds since the runtime started: the
+    /// task clock plus, on the real clock, the time elapsed since the cycle started.
+    pub(crate) fn clock_ns(&self) -> i64 {
+        let elapsed_ns = self.clock_started.map_or(0, |started| {
+            i64::try_from(started.elapsed().as_nanos()).unwrap_or(i64::MAX)
+        });
+        self.now_ns.saturating_add(elapsed_ns)
     }
 
     /// The absolute offset of an operand.

@@ -483,6 +483,23 @@ fn lower(instr: &Instr, regions: &Regions, sizes: &[usize], at: u32) -> Result<O
                 Ok(Flow::Next)
             })
         }
+        Instr::Clock { long: true, dst } => {
+            let dst = a(dst);
+            Box::new(move |x| {
+                let now_ns = x.clock_ns();
+                x.set::<i64>(dst, now_ns)?;
+                Ok(Flow::Next)
+            })
+        }
+        Instr::Clock { long: false, dst } => {
+            let dst = a(dst);
+            Box::new(move |x| {
+                // TIME keeps the low 32 bits of the milliseconds, so it wraps as TIME does.
+                let now_ms = x.clock_ns().div_euclid(1_000_000) as i32;
+                x.set::<i32>(dst, now_ms)?;
+                Ok(Flow::Next)
+            })
+        }
         Instr::ToText {
             from,
             wide,

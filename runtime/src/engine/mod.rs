@@ -18,6 +18,7 @@ mod native;
 mod online_change;
 mod scalar;
 mod strings;
+mod task_clock;
 mod view;
 
 use std::sync::Arc;
@@ -35,6 +36,7 @@ pub use native::MotionLoadError;
 pub use online_change::{
     AppliedChange, ChangeDetail, ChangeRefusal, ChangeSummary, DetailKind, OnlineChangePlan,
 };
+pub use task_clock::TaskClock;
 pub use view::{EngineView, Preempt, Preemption};
 
 pub(crate) use exec::NATIVE_STACK_BUDGET;
@@ -171,13 +173,15 @@ impl Engine {
         }
     }
 
-    /// Runs one cycle of task `task` at task time `now_ns`: its programs in order. A fault
-    /// stops the cycle where it happened and is returned with its place. Nothing interrupts
-    /// it (the scheduler runs cycles through [`EngineView::run_cycle`] to let tasks preempt).
+    /// Runs one cycle of task `task` at task time `now_ns` on a simulated clock
+    /// ([`TaskClock::Simulated`]): its programs in order. A fault stops the cycle where it
+    /// happened and is returned with its place. Nothing interrupts it (the scheduler runs
+    /// cycles through [`EngineView::run_cycle`] on the real clock to let tasks preempt).
     // A fault is rare and ends the task, so its record need not be boxed to keep `Ok` small.
     #[allow(clippy::result_large_err)]
     pub fn run_cycle(&mut self, task: usize, now_ns: i64, cycle: u64) -> Result<(), FaultRecord> {
-        self.view().run_cycle(task, now_ns, cycle, None)
+        self.view()
+            .run_cycle(task, now_ns, TaskClock::Simulated, cycle, None)
     }
 
     /// The code and memory, borrowed together, to run cycles on.

@@ -14,6 +14,7 @@ use super::lower::Compiled;
 use super::lower::lower_condition;
 use super::memory::Regions;
 use super::native::MotionState;
+use super::task_clock::TaskClock;
 
 /// The engine's code and memory, borrowed: from [`super::Engine::view`] between cycles, or
 /// from an interrupted cycle at a safe point, where [`Preempt::preempt`] receives it to run
@@ -137,16 +138,18 @@ impl EngineView<'_> {
         self.memory.get_mut(start..start + size).unwrap_or_default()
     }
 
-    /// Runs one cycle of task `task` at task time `now_ns`: its programs in order, then the
-    /// motion kernel's end of cycle. A fault stops the cycle where it happened and is returned
-    /// with its place. With `preemption`, tasks of higher priority may interrupt the cycle at
-    /// its safe points; the time they take does not count against its watchdog.
+    /// Runs one cycle of task `task` at task time `now_ns` on the `clock` it comes from: its
+    /// programs in order, then the motion kernel's end of cycle. A fault stops the cycle where
+    /// it happened and is returned with its place. With `preemption`, tasks of higher priority
+    /// may interrupt the cycle at its safe points; the time they take does not count against
+    /// its watchdog.
     // A fault is rare and ends the task, so its record need not be boxed to keep `Ok` small.
     #[allow(clippy::result_large_err)]
     pub fn run_cycle(
         &mut self,
         task: usize,
         now_ns: i64,
+        clock: TaskClock,
         cycle: u64,
         preemption: Option<Preemption<'_>>,
     ) -> Result<(), FaultRecord> {
@@ -161,10 +164,8 @@ impl EngineView<'_> {
         } else {
             10_000_000_000
         };
-        let deadline = Some((
-            Instant::now() + Duration::from_nanos(limit_ns),
-            limit_ns / 1000,
-        ));
+        let started = Instant::now();
+        let deadline = Some((started + Duration::from_nanos(limit_ns), limit_ns / 1000));
         let regions = self.regions;
         let mut preemption = preemption;
         let (due, hook): (&AtomicBool, Option<&mut dyn Preempt>) = match preemption.as_mut() {
@@ -183,6 +184,7 @@ impl EngineView<'_> {
             (due, hook),
             (task, &mut *self.debug),
         );
+        exec.clock_started = (clock == TaskClock::Real).then_some(started);
         if exec.session {
             exec.begin_debug_cycle(cycle);
         }

@@ -24,7 +24,7 @@ use super::record::CycleRecord;
 use super::retain_writer::RetainWriter;
 use super::{Command, SchedulerStatus};
 use crate::areas::LocatedAreas;
-use crate::engine::{EngineView, FaultKind, FaultRecord, Preempt, Preemption};
+use crate::engine::{EngineView, FaultKind, FaultRecord, Preempt, Preemption, TaskClock};
 use crate::online::{Forces, PlaceAccess, Trace};
 
 /// The preemption flag when preemption is off: never set.
@@ -342,7 +342,7 @@ fn run_guarded(
     preemption: Option<Preemption<'_>>,
 ) -> Result<(), FaultRecord> {
     match std::panic::catch_unwind(AssertUnwindSafe(|| {
-        engine.run_cycle(task, now_ns as i64, cycle, preemption)
+        engine.run_cycle(task, now_ns as i64, TaskClock::Real, cycle, preemption)
     })) {
         Ok(result) => result,
         Err(panic) => {

@@ -413,6 +413,8 @@ type BetweenAction = Box<dyn FnOnce(&mut Between<'_>) + Send>;
 mod tests;
 
 #[cfg(test)]
+mod clock_tests;
+#[cfg(test)]
 mod halt_tests;
 #[cfg(test)]
 mod lock_tests;

@@ -9,7 +9,7 @@ use std::sync::atomic::AtomicBool;
 
 use program_image::{Instr, ProgramImage};
 use runtime::engine::{
-    BreakpointSpec, Engine, EngineView, HaltReason, Preempt, Preemption, StepKind,
+    BreakpointSpec, Engine, EngineView, HaltReason, Preempt, Preemption, StepKind, TaskClock,
 };
 
 use super::{compile, line_in, line_of, spec_at, statement};
@@ -149,7 +149,7 @@ fn run(engine: &mut Engine, then: Vec<Then>, cycles: u64) -> Vec<Seen> {
         };
         engine
             .view()
-            .run_cycle(0, 0, cycle, Some(preemption))
+            .run_cycle(0, 0, TaskClock::Simulated, cycle, Some(preemption))
             .expect("no fault");
     }
     hook.seen
@@ -335,7 +335,7 @@ impl Preempt for Interrupts<'_> {
             hook: &mut self.urgent,
         };
         engine
-            .run_cycle(1, 0, 0, Some(preemption))
+            .run_cycle(1, 0, TaskClock::Simulated, 0, Some(preemption))
             .expect("no fault");
     }
 }
@@ -369,7 +369,7 @@ fn a_task_waiting_beneath_a_halted_task_of_higher_priority_shows_its_whole_stack
     };
     engine
         .view()
-        .run_cycle(0, 0, 0, Some(preemption))
+        .run_cycle(0, 0, TaskClock::Simulated, 0, Some(preemption))
         .expect("no fault");
     let waiting = &interrupts.urgent.waiting;
     assert_eq!(waiting.len(), 1, "{waiting:?}");

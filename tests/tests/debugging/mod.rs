@@ -9,6 +9,7 @@ use std::sync::atomic::AtomicBool;
 use program_image::ProgramImage;
 use runtime::engine::{
     BreakpointSpec, Engine, EngineView, HaltReason, HitMode, Preempt, Preemption, StepKind,
+    TaskClock,
 };
 
 use super::compile;
@@ -192,7 +193,7 @@ fn run_cycles(engine: &mut Engine, script: &mut Script, cycles: u64) {
         };
         engine
             .view()
-            .run_cycle(0, 0, cycle, Some(preemption))
+            .run_cycle(0, 0, TaskClock::Simulated, cycle, Some(preemption))
             .expect("no fault");
     }
 }
@@ -430,6 +431,7 @@ fn only_the_halted_task_may_step_and_ending_the_session_lets_it_go_on() {
             .run_cycle(
                 0,
                 0,
+                TaskClock::Simulated,
                 cycle,
                 Some(Preemption {
                     due: &due,

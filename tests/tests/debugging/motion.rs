@@ -10,7 +10,9 @@ use std::time::{Duration, Instant};
 
 use program_image::{ProgramImage, Region};
 use project_model::{Body, Node, Object, Project, VarSection, Variable};
-use runtime::engine::{BreakpointSpec, Engine, EngineView, HitMode, Preempt, Preemption};
+use runtime::engine::{
+    BreakpointSpec, Engine, EngineView, HitMode, Preempt, Preemption, TaskClock,
+};
 
 /// MotionTask's interval, as the example's.
 const MOTION_NS: i64 = 2_000_000;
@@ -110,7 +112,13 @@ impl Clock {
     fn run_main(&mut self, engine: &mut EngineView<'_>, now_ns: i64, in_halt: bool) {
         while self.next_main_ns <= now_ns {
             engine
-                .run_cycle(self.main_task, self.next_main_ns, self.main_cycles, None)
+                .run_cycle(
+                    self.main_task,
+                    self.next_main_ns,
+                    TaskClock::Simulated,
+                    self.main_cycles,
+                    None,
+                )
                 .expect("MainTask does not fault");
             self.main_cycles += 1;
             self.next_main_ns += MAIN_NS;
@@ -193,6 +201,7 @@ fn a_halted_tasks_axis_resumes_by_one_cycle_and_another_tasks_axis_keeps_its_tim
             .run_cycle(
                 motion_task,
                 now_ns,
+                TaskClock::Simulated,
                 cycle,
                 Some(Preemption {
                     due: &due,

@@ -373,6 +373,30 @@ fn cases() -> Vec<Case> {
             vec![("n", Is("3"))],
         ),
         // Time and date.
+        // The clock operators on the simulated clock: the task time, which moves by the
+        // implicit task's 10 ms from the first cycle (at 0) to the second and stands still
+        // within a cycle.
+        case(
+            "TIME",
+            "t : TIME; d : TIME; e : TIME; ms : DINT;",
+            "d := TIME() - t; t := TIME(); e := TIME() - t; ms := TIME_TO_DINT(TIME());",
+            vec![
+                ("t", Is("T#10ms")),
+                ("d", Is("T#10ms")),
+                ("e", Is("T#0ms")),
+                ("ms", Is("10")),
+            ],
+        ),
+        case(
+            "LTIME",
+            "l : LTIME; d : LTIME; ns : LINT; r : REAL;",
+            "d := LTIME() - l; l := LTIME(); ns := LTIME_TO_LINT(LTIME()); r := LTIME_TO_REAL(d);",
+            vec![
+                ("d", Is("LTIME#10ms")),
+                ("ns", Is("10000000")),
+                ("r", Near(1e7)),
+            ],
+        ),
         case(
             "ADD_TIME",
             "t : TIME;",

@@ -580,11 +580,36 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                 }
                 *element
             }
-            Type::String { wide, .. } => Type::Elementary(if wide {
-                Elementary::Word
-            } else {
-                Elementary::Byte
-            }),
+            Type::String { wide, length } => {
+                // The code generator indexes the characters and the terminator: 0 to the length.
+                if indices.len() != 1 {
+                    self.error(
+                        Code::IndexOutOfRange,
+                        range_of(node),
+                        format!(
+                            "'{}' is a string and takes one index, but {} are given",
+                            text(base.syntax()),
+                            indices.len()
+                        ),
+                    );
+                } else if let Some(Const::Int(value)) = self.constant_value(&indices[0])
+                    && !(0..=i128::from(length)).contains(&value)
+                {
+                    self.error(
+                        Code::IndexOutOfRange,
+                        range_of(indices[0].syntax()),
+                        format!(
+                            "index {value} is outside the characters 0..{length} of '{}'",
+                            text(base.syntax())
+                        ),
+                    );
+                }
+                Type::Elementary(if wide {
+                    Elementary::Word
+                } else {
+                    Elementary::Byte
+                })
+            }
             Type::Pointer(target) => *target,
             other => {
                 self.error(
