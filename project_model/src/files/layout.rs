@@ -34,9 +34,10 @@ pub(crate) fn folder_entry(folder: &[String]) -> String {
     folder.iter().map(|name| format!("{name}/")).collect()
 }
 
-/// A place in a POU that holds a body, and the suffix of its `.st` file.
+/// A place in a POU that holds a body, and the suffix of its text file.
 pub(crate) struct BodySlot<'a> {
-    /// The file name suffix after the POU's name, such as `.st` or `.Reset.st`.
+    /// The file name suffix after the POU's name, such as `.st`, `.Reset.st` or `.il` (the
+    /// extension follows the body's language; non-textual bodies get `.st`, unused).
     pub suffix: String,
     /// The body.
     pub body: &'a Body,
@@ -45,17 +46,20 @@ pub(crate) struct BodySlot<'a> {
     pub owner: String,
 }
 
-/// Every body of a POU with the suffix of its `.st` file, in a fixed order.
+/// Every body of a POU with the suffix of its text file (`.st`, or `.il` for an IL body), in a
+/// fixed order.
 pub(crate) fn body_slots(pou: &Pou) -> Vec<BodySlot<'_>> {
     let pou_owner = format!("POU '{}'", pou.name);
+    let suffix =
+        |base: String, body: &Body| format!("{base}.{}", body.text_extension().unwrap_or("st"));
     let mut slots = vec![BodySlot {
-        suffix: ".st".into(),
+        suffix: suffix(String::new(), &pou.body),
         body: &pou.body,
         owner: pou_owner.clone(),
     }];
     for method in &pou.methods {
         slots.push(BodySlot {
-            suffix: format!(".{}.st", method.name),
+            suffix: suffix(format!(".{}", method.name), &method.body),
             body: &method.body,
             owner: format!("{pou_owner}, method '{}'", method.name),
         });
@@ -64,7 +68,7 @@ pub(crate) fn body_slots(pou: &Pou) -> Vec<BodySlot<'_>> {
         for (accessor, which) in [(&property.get, "get"), (&property.set, "set")] {
             if let Some(accessor) = accessor {
                 slots.push(BodySlot {
-                    suffix: format!(".{}.{which}.st", property.name),
+                    suffix: suffix(format!(".{}.{which}", property.name), &accessor.body),
                     body: &accessor.body,
                     owner: format!("{pou_owner}, property '{}' ({which})", property.name),
                 });
@@ -73,14 +77,14 @@ pub(crate) fn body_slots(pou: &Pou) -> Vec<BodySlot<'_>> {
     }
     for action in &pou.actions {
         slots.push(BodySlot {
-            suffix: format!(".{}.st", action.name),
+            suffix: suffix(format!(".{}", action.name), &action.body),
             body: &action.body,
             owner: format!("{pou_owner}, action '{}'", action.name),
         });
     }
     for transition in &pou.transitions {
         slots.push(BodySlot {
-            suffix: format!(".{}.st", transition.name),
+            suffix: suffix(format!(".{}", transition.name), &transition.body),
             body: &transition.body,
             owner: format!("{pou_owner}, transition '{}'", transition.name),
         });
