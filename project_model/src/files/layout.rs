@@ -183,10 +183,10 @@ pub(crate) fn parse_entry(entry: &str) -> Result<Entry, String> {
     })
 }
 
-/// A Structured Text body of a project with where it is stored.
+/// A textual body (Structured Text or Instruction List) of a project with where it is stored.
 #[derive(Clone, Debug)]
 pub struct StBody<'a> {
-    /// The `.st` file, relative to the project folder.
+    /// The `.st` (or `.il`) file, relative to the project folder.
     pub file: PathBuf,
     /// The POU it belongs to.
     pub pou: &'a Pou,
@@ -199,13 +199,24 @@ pub struct StBody<'a> {
 /// Every Structured Text body of `project` with its file, in tree order: what a checker reads
 /// and reports against.
 pub fn st_body_files(project: &Project) -> Vec<StBody<'_>> {
+    body_files(project, Body::st_text)
+}
+
+/// Every textual body of `project` (Structured Text in `.st` files, Instruction List in `.il`
+/// files) with its file, in tree order: what editors show and findings are reported against.
+pub fn text_body_files(project: &Project) -> Vec<StBody<'_>> {
+    body_files(project, Body::text)
+}
+
+/// Every body of `project` whose text `text_of` gives, with its file, in tree order.
+fn body_files<'p>(project: &'p Project, text_of: fn(&Body) -> Option<&str>) -> Vec<StBody<'p>> {
     let mut out = Vec::new();
     for (file, object) in object_files(project) {
         let Object::Pou(pou) = object else { continue };
         let folder = file.parent().map(PathBuf::from).unwrap_or_default();
         let targets = body_targets(pou);
         for (slot, target) in body_slots(pou).into_iter().zip(targets) {
-            if let Some(text) = slot.body.st_text() {
+            if let Some(text) = text_of(slot.body) {
                 out.push(StBody {
                     file: folder.join(format!("{}{}", pou.name, slot.suffix)),
                     pou,

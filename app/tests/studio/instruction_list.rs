@@ -1,0 +1,107 @@
+//! Instruction List in the studio: a POU added in IL opens in a text editor that highlights
+//! IL's operators and labels, its findings are on IL lines, and its text is saved in a `.il`
+//! file.
+
+use egui::{Color32, Key, Shape};
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable as _;
+use project_model::{Body, Object};
+
+use super::tree::{enter_text, example_copy, menu, project, shortcut, studio};
+use app::studio::StudioApp;
+
+/// The colour the editor painted the first occurrence of `word` with, on the line whose
+/// text is `line`.
+fn color_of(harness: &Harness<'_, StudioApp>, line: &str, word: &str) -> Option<Color32> {
+    let mut shapes = Vec::new();
+    for clipped in &harness.output().shapes {
+        collect_text(&clipped.shape, &mut shapes);
+    }
+    shapes
+        .into_iter()
+        .find_map(|galley: std::sync::Arc<egui::Galley>| {
+            let job = &galley.job;
+            if job.text != line {
+                return None;
+            }
+            let at = job.text.find(word)?;
+            job.sections
+                .iter()
+                .find(|section| section.byte_range.start.0 <= at && at < section.byte_range.end.0)
+                .map(|section| section.format.color)
+        })
+}
+
+fn collect_text(shape: &Shape, out: &mut Vec<std::sync::Arc<egui::Galley>>) {
+    match shape {
+        Shape::Text(text) => out.push(text.galley.clone()),
+        Shape::Vec(shapes) => {
+            for shape in shapes {
+                collect_text(shape, out);
+            }
+        }
+        _ => {}
+    }
+}
+
+/// Types `text` as a user would: characters as text events, line breaks with Enter.
+fn type_text(harness: &mut Harness<'_, StudioApp>, text: &str) {
+    for (index, line) in text.split('\n').enumerate() {
+        if index > 0 {
+            harness.key_press(Key::Enter);
+            harness.step();
+        }
+        if !line.is_empty() {
+            harness.event(egui::Event::Text(line.to_owned()));
+            harness.step();
+        }
+    }
+    harness.step();
+}
+
+#[test]
+fn a_pou_in_il_opens_highlighted_reports_on_its_lines_and_is_saved_as_an_il_file() {
+    let dir = example_copy();
+    let mut harness = studio(dir.path());
+    menu(&mut harness, "Application", "Add POU…");
+    harness.get_by_label("Instruction List (IL)").click();
+    harness.run();
+    enter_text(&mut harness, "Name", "PRG_Il");
+    let added = match project(&harness).application.object("PRG_Il") {
+        Some(Object::Pou(pou)) => pou.body.clone(),
+        other => panic!("PRG_Il is not a POU: {other:?}"),
+    };
+    assert_eq!(
+        added,
+        Body::Il {
+            text: String::new()
+        }
+    );
+
+    harness.get_by_label("Implementation of PRG_Il").click();
+    harness.step();
+    type_text(&mut harness, "LD TRUE\nJMPC Done\nDone: ST nowhere");
+    harness.run();
+
+    let operator = color_of(&harness, "JMPC Done", "JMPC");
+    let target = color_of(&harness, "JMPC Done", "Done");
+    let load = color_of(&harness, "LD TRUE", "LD");
+    let label = color_of(&harness, "Done: ST nowhere", "Done");
+    let operand = color_of(&harness, "Done: ST nowhere", "nowhere");
+    assert!(operator.is_some() && target.is_some() && operand.is_some());
+    assert_eq!(operator, load, "operators share the keyword colour");
+    assert_eq!(target, label, "a jump's target is coloured as its label");
+    assert_ne!(operator, operand, "an operand is not an operator");
+    assert_ne!(label, operand, "an operand is not a label");
+
+    // The unknown name is found on the IL line, while typing.
+    super::support::wait_until(&mut harness, "the live finding", |app| {
+        app.live_findings("PRG_Il")
+            .iter()
+            .any(|finding| finding.contains("nowhere"))
+    });
+
+    shortcut(&mut harness, Key::S);
+    let saved = std::fs::read_to_string(dir.path().join("application/PRG_Il.il")).unwrap();
+    assert_eq!(saved, "LD TRUE\nJMPC Done\nDone: ST nowhere");
+}
