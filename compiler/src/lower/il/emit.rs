@@ -58,6 +58,9 @@ pub(crate) struct IlLowering<'t> {
     label_types: HashMap<String, String>,
     /// The labels some jump goes to, lower case.
     jumped_to: Vec<String>,
+    /// The labels whose first instruction reads the current result, lower case: only these
+    /// carry it across (a label followed by `LD` needs nothing from before it).
+    live: Vec<String>,
     /// The hidden variable of each depth and type.
     slots: HashMap<(usize, String), String>,
     /// Whether findings and text are kept (the last pass) or only label types learnt.
@@ -84,6 +87,7 @@ impl<'t> IlLowering<'t> {
             line_starts: Vec::new(),
             label_types: HashMap::new(),
             jumped_to: Vec::new(),
+            live: Vec::new(),
             slots: HashMap::new(),
             emitting: false,
             out: String::new(),
@@ -138,8 +142,24 @@ impl<'t> IlLowering<'t> {
         std::mem::take(&mut self.out)
     }
 
-    /// Finds labels declared twice and jumps to labels the body does not have.
+    /// Finds labels declared twice and jumps to labels the body does not have, and the labels
+    /// the current result is live at.
     fn check_labels(&mut self, program: &IlProgram) {
+        let mut waiting: Vec<String> = Vec::new();
+        for item in &program.items {
+            match item {
+                IlItem::Label { name, .. } => waiting.push(name.to_lowercase()),
+                IlItem::Instruction(instruction) => {
+                    if reads_current(instruction) {
+                        self.live.append(&mut waiting);
+                    } else {
+                        waiting.clear();
+                    }
+                }
+            }
+        }
+        // A label at the end of a transition hands the current result on as its condition.
+        self.live.append(&mut waiting);
         let mut labels: Vec<String> = Vec::new();
         for item in &program.items {
             if let IlItem::Label { name, range } = item {
@@ -211,6 +231,14 @@ impl<'t> IlLowering<'t> {
             );
         }
         let key = name.to_lowercase();
+        if !self.live.contains(&key) {
+            // What follows loads its own current result, so nothing crosses the label.
+            self.emit(range.start, &format!("{name}:"));
+            if self.jumped_to.contains(&key) {
+                self.current = Current::Undefined;
+            }
+            return;
+        }
         if let Current::Value { ty: Some(ty), .. } = &self.current
             && !self.label_types.contains_key(&key)
         {
@@ -395,6 +423,7 @@ impl<'t> IlLowering<'t> {
         }
         if let Current::Value { ty: Some(ty), .. } = &self.current
             && !self.label_types.contains_key(&key)
+            && self.live.contains(&key)
         {
             self.label_types.insert(key.clone(), ty.clone());
         }
@@ -526,6 +555,20 @@ impl<'t> IlLowering<'t> {
                 message,
             });
         }
+    }
+}
+
+/// Whether `instruction` reads the current result before it sets one.
+fn reads_current(instruction: &Instruction) -> bool {
+    match &instruction.operator {
+        Operator::Load => false,
+        Operator::Call | Operator::Return => instruction.conditional,
+        Operator::Function(_) => !instruction
+            .operand
+            .as_ref()
+            .is_some_and(|(arguments, _)| arguments.starts_with('(')),
+        // A jump hands the current result on to its label.
+        _ => true,
     }
 }
 

@@ -163,6 +163,26 @@ fn jumps_go_to_labels_and_the_current_result_crosses_them_in_one_variable() {
 }
 
 #[test]
+fn a_label_followed_by_a_load_takes_nothing_across_whatever_type_the_result_had() {
+    check_lowering(
+        "LD a\nJMPC Skip\nLD x\nADD 1\nST x\nSkip:\nLD y\nST z\n",
+        expect![[r#"
+            __cr0 : BOOL;
+            __cr1 : INT;
+            ---
+            __cr0 := a;
+            IF __cr0 THEN JMP Skip; END_IF;
+            __cr1 := x;
+            __cr1 := __cr1 + 1;
+            x := __cr1;
+            Skip:
+            __cr1 := y;
+            z := __cr1;
+        "#]],
+    );
+}
+
+#[test]
 fn blocks_are_called_with_their_arguments_or_inputs_and_functions_with_the_current_result() {
     check_lowering(
         "CAL t(IN := a, PT := T#1s)\nLD t.Q\nCU ctr\nCALC ctr(\n  RESET := b,\n  PV := 3)\nLD x\nTwice\nST y\nLD x\nLIMIT 0, 10\nST z\nMAX(IN1 := x, IN2 := y)\nST z\n",
