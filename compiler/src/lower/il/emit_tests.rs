@@ -272,3 +272,45 @@ fn the_line_table_names_the_il_file_and_its_lines() {
         .into_owned();
     assert_eq!(lines, vec![(file.clone(), 1), (file.clone(), 4), (file, 5)]);
 }
+
+#[test]
+fn any_text_lowers_without_panicking_into_as_many_lines() {
+    use super::IlLowering;
+    use project_model::Variable;
+
+    const FRAGMENTS: [&str; 28] = [
+        "LD ", "LDN ", "ST ", "AND( ", ")", "JMP ", "JMPC ", "CAL ", "L1:", "L2: ", "(*", "*)",
+        "'", "x", "a.b", "1", "T#1s", "&N ", "中文", "\n", " ", ",", "(", ":=", "$", "//", "RETC",
+        "\r\n",
+    ];
+    let type_of = |_: &[Variable], expression: &str| {
+        (!expression.contains('1')).then(|| {
+            if expression.contains('x') {
+                "INT".to_owned()
+            } else {
+                "BOOL".to_owned()
+            }
+        })
+    };
+    // A linear congruential generator keeps the cases the same from run to run.
+    let mut state: u64 = 0x2545_f491_4f6c_dd1d;
+    let mut next = |bound: usize| {
+        state = state
+            .wrapping_mul(6_364_136_223_846_793_005)
+            .wrapping_add(1_442_695_040_888_963_407);
+        (state >> 33) as usize % bound
+    };
+    for _ in 0..3000 {
+        let length = next(40);
+        let text: String = (0..length)
+            .map(|_| FRAGMENTS[next(FRAGMENTS.len())])
+            .collect();
+        let mut lowering = IlLowering::new("__".into(), &type_of);
+        let lowered = lowering.lower(&text, Some("T"));
+        assert_eq!(
+            lowered.matches('\n').count(),
+            text.matches('\n').count(),
+            "{text:?} became {lowered:?}"
+        );
+    }
+}
