@@ -105,3 +105,50 @@ fn a_pou_in_il_opens_highlighted_reports_on_its_lines_and_is_saved_as_an_il_file
     let saved = std::fs::read_to_string(dir.path().join("application/PRG_Il.il")).unwrap();
     assert_eq!(saved, "LD TRUE\nJMPC Done\nDone: ST nowhere");
 }
+
+/// `Main` of the example in IL: the conveyor called with its inputs, its motor output copied.
+const MAIN_IL: &str = "CAL fbConveyor(
+    xStart := GVL_IO.xStartButton,
+    xStop := GVL_IO.xStopButton OR GVL_IO.xEmergencyStop,
+    tStartDelay := T#2S)
+LD fbConveyor.xMotorOn
+ST GVL_IO.xConveyorMotor
+";
+
+#[test]
+fn an_il_body_shows_values_at_its_operands_while_online() {
+    use super::support;
+
+    let project = support::example_copy(|dir| {
+        support::replace_in(
+            dir,
+            "application/Main.pou.toml",
+            "language = \"st\"",
+            "language = \"il\"",
+        );
+        std::fs::remove_file(dir.join("application/Main.st")).unwrap();
+        std::fs::write(dir.join("application/Main.il"), MAIN_IL).unwrap();
+    });
+    let mut harness = support::studio(project.path());
+    harness.get_by_label("Main").focus();
+    harness.step();
+    harness.key_press(Key::Enter);
+    harness.step();
+    harness.step();
+    support::login_with_download(&mut harness);
+    harness.key_press(Key::F5);
+    support::wait_until(&mut harness, "the values at the IL's operands", |app| {
+        let paths = app.inline_paths();
+        paths.contains(&"Main.fbConveyor.xMotorOn".to_owned())
+            && paths.contains(&"GVL_IO.xConveyorMotor".to_owned())
+            && app.online().value("GVL_IO.xConveyorMotor").is_some()
+    });
+    // The current result's hidden variable is no operand, so it shows nowhere.
+    assert!(
+        harness
+            .state()
+            .inline_paths()
+            .iter()
+            .all(|path| !path.contains("__"))
+    );
+}

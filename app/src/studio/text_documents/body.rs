@@ -143,9 +143,7 @@ pub(super) fn body_ui(
     }
     let diagnostics = body_diagnostics(&texts.live, project, &pou.name, &target);
     let instruction_list = matches!(body, Body::Il { .. });
-    // Inline values place themselves by Structured Text's names, so an IL body shows none; its
-    // values are in the watch list.
-    let inline = if view.online.is_online() && !instruction_list {
+    let inline = if view.online.is_online() {
         // While halted in this POU (or a method or action of it), its values are the halted
         // frame's instance's; a halted function's or method's locals come from its frame.
         let shown = view.debug.shown_frame();

@@ -73,6 +73,12 @@ pub(crate) struct IlLowering<'t> {
     current: Current,
     /// The open parentheses, innermost last.
     deferred: Vec<Deferred>,
+    /// The operand in the next emitted text: its byte offset there, its length and its start in
+    /// the IL text.
+    operand: Option<(usize, usize, usize)>,
+    /// Each operand copied into the generated text: its range there and its start in the IL
+    /// text, so values shown at names of the generated text can be shown at the IL's.
+    pub operands: Vec<(Range<usize>, usize)>,
 }
 
 impl<'t> IlLowering<'t> {
@@ -94,6 +100,8 @@ impl<'t> IlLowering<'t> {
             out_lines: 0,
             current: Current::Undefined,
             deferred: Vec::new(),
+            operand: None,
+            operands: Vec::new(),
         }
     }
 
@@ -205,6 +213,7 @@ impl<'t> IlLowering<'t> {
     fn pass(&mut self, program: &IlProgram) {
         self.out.clear();
         self.out_lines = 0;
+        self.operands.clear();
         self.current = Current::Undefined;
         self.deferred.clear();
         for item in &program.items {
@@ -276,12 +285,23 @@ impl<'t> IlLowering<'t> {
     fn instruction(&mut self, instruction: &Instruction) {
         let at = instruction.range.start;
         let operand = instruction.operand.as_ref().map(|(text, _)| text.as_str());
+        let il_operand = instruction
+            .operand
+            .as_ref()
+            .map_or(0, |(_, range)| range.start);
+        // Where `operand` is in `text` when written there as `grouped` gives it.
+        let within = |text_before: usize, operand: &str| {
+            let parenthesis = usize::from(grouped(operand) != operand);
+            Some((text_before + parenthesis, operand.len(), il_operand))
+        };
         match &instruction.operator {
             Operator::Load => {
                 let Some(operand) = operand else { return };
                 let value = if instruction.negated {
+                    self.operand = within(4, operand);
                     format!("NOT {}", grouped(operand))
                 } else {
+                    self.operand = Some((0, operand.len(), il_operand));
                     operand.to_owned()
                 };
                 self.set_current(at, value);
@@ -295,6 +315,7 @@ impl<'t> IlLowering<'t> {
                 } else {
                     value
                 };
+                self.operand = Some((0, target.len(), il_operand));
                 self.emit(at, &format!("{target} := {value};"));
             }
             Operator::Set | Operator::Reset => {
@@ -306,6 +327,7 @@ impl<'t> IlLowering<'t> {
                 } else {
                     "FALSE"
                 };
+                self.operand = Some((value.len() + 9, target.len(), il_operand));
                 self.emit(at, &format!("IF {value} THEN {target} := {bit}; END_IF;"));
             }
             Operator::Not => {
@@ -324,12 +346,14 @@ impl<'t> IlLowering<'t> {
                     });
                     self.current = Current::Undefined;
                     if let Some(operand) = operand {
+                        self.operand = Some((0, operand.len(), il_operand));
                         self.set_current(at, operand.to_owned());
                     }
                     return;
                 }
                 let Some(operand) = operand else { return };
                 let not = if instruction.negated { "NOT " } else { "" };
+                self.operand = within(value.len() + binary.st().len() + 2 + not.len(), operand);
                 self.set_current(
                     at,
                     format!("{value} {} {not}{}", binary.st(), grouped(operand)),
@@ -344,12 +368,14 @@ impl<'t> IlLowering<'t> {
                 } else {
                     format!("{operand}();")
                 };
+                self.operand = Some((0, operand.len(), il_operand));
                 self.conditionally(instruction, call);
             }
             Operator::BlockInput(pin) => {
                 let (Some(instance), Some(value)) = (operand, self.read(instruction)) else {
                     return;
                 };
+                self.operand = Some((0, instance.len(), il_operand));
                 self.emit(at, &format!("{instance}({pin} := {value});"));
             }
             Operator::Return => {
@@ -364,11 +390,16 @@ impl<'t> IlLowering<'t> {
             }
             Operator::Function(name) => {
                 let call = match operand {
-                    Some(arguments) if arguments.starts_with('(') => format!("{name}{arguments}"),
+                    Some(arguments) if arguments.starts_with('(') => {
+                        self.operand = Some((name.len(), arguments.len(), il_operand));
+                        format!("{name}{arguments}")
+                    }
                     Some(arguments) => {
                         let Some(value) = self.read(instruction) else {
                             return;
                         };
+                        self.operand =
+                            Some((name.len() + value.len() + 3, arguments.len(), il_operand));
                         format!("{name}({value}, {arguments})")
                     }
                     None => {
@@ -441,6 +472,7 @@ impl<'t> IlLowering<'t> {
             self.emit(at, &statement);
             return;
         }
+        let operand = self.operand.take();
         let Some(value) = self.read(instruction) else {
             return;
         };
@@ -449,6 +481,7 @@ impl<'t> IlLowering<'t> {
         } else {
             value
         };
+        self.operand = operand.map(|(offset, len, il)| (offset + condition.len() + 9, len, il));
         self.emit(at, &format!("IF {condition} THEN {statement} END_IF;"));
     }
 
@@ -480,9 +513,11 @@ impl<'t> IlLowering<'t> {
     /// it is.
     fn set_current(&mut self, at: usize, value: String) {
         let ty = (self.type_of)(&self.hidden, &value);
+        let operand = self.operand.take();
         self.current = match ty {
             Some(ty) => {
                 let slot = self.slot(self.deferred.len(), &ty);
+                self.operand = operand.map(|(offset, len, il)| (offset + slot.len() + 4, len, il));
                 self.emit(at, &format!("{slot} := {value};"));
                 Current::Value {
                     expression: slot,
@@ -501,6 +536,7 @@ impl<'t> IlLowering<'t> {
                     _ => "BOOL".to_owned(),
                 };
                 let slot = self.slot(self.deferred.len(), &ty);
+                self.operand = operand.map(|(offset, len, il)| (offset + slot.len() + 4, len, il));
                 self.emit(at, &format!("{slot} := {value};"));
                 Current::Value {
                     expression: slot,
@@ -542,6 +578,10 @@ impl<'t> IlLowering<'t> {
         }
         if !self.out.is_empty() && !self.out.ends_with('\n') {
             self.out.push(' ');
+        }
+        if let Some((offset, len, il)) = self.operand.take() {
+            let start = self.out.len() + offset;
+            self.operands.push((start..start + len, il));
         }
         self.out.push_str(statement);
         self.out_lines += statement.matches('\n').count();

@@ -314,3 +314,34 @@ fn any_text_lowers_without_panicking_into_as_many_lines() {
         );
     }
 }
+
+#[test]
+fn values_are_shown_at_the_operands_of_the_il_text() {
+    let il = "LD x\nADD y (* more *)\nST z\nLDN a\nS q\nCAL t(IN := b, PT := T#1s)\nLD t.Q\nCU ctr\nLIMIT 0, big\nJMPC L\nL: ANDN c\n";
+    let names =
+        crate::ide::monitor_paths(&project_with(il), &TextTarget::Pou("Main".into()), "Main");
+    let shown: Vec<String> = names
+        .iter()
+        .map(|name| {
+            let (line, column) = line_column(il, name.range.start);
+            format!("{line}:{column} {} {}", &il[name.range.clone()], name.path)
+        })
+        .collect();
+    expect![[r#"
+        [
+            "1:4 x Main.x",
+            "2:5 y Main.y",
+            "3:4 z Main.z",
+            "4:5 a Main.a",
+            "5:3 q Main.q",
+            "6:5 t Main.t",
+            "6:13 b Main.b",
+            "7:4 t Main.t",
+            "7:6 Q Main.t.Q",
+            "8:4 ctr Main.ctr",
+            "9:10 big Main.big",
+            "11:9 c Main.c",
+        ]
+    "#]]
+    .assert_debug_eq(&shown);
+}

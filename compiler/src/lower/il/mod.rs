@@ -40,6 +40,8 @@ pub struct LoweredIl {
     descriptions: Vec<(String, String)>,
     /// What the lowering found that cannot be compiled.
     findings: Vec<ProjectDiagnostic>,
+    /// Each operand copied into `text`: its range there and its start in the IL text.
+    operands: Vec<(Range<usize>, usize)>,
 }
 
 impl LoweredIl {
@@ -88,6 +90,7 @@ impl LoweredIl {
             lines,
             descriptions: lowering.descriptions,
             findings,
+            operands: lowering.operands,
         };
         (lowered, lowering.hidden)
     }
@@ -107,6 +110,18 @@ impl LoweredIl {
             super::locate::describe_hidden(&finding.diagnostic.message, &self.descriptions);
         finding.file = self.file.clone();
         finding
+    }
+
+    /// The range in the IL text of the bytes `range` of the lowered text, when they lie in an
+    /// operand the IL wrote (not in generated text such as the current result's variable).
+    pub fn il_range(&self, range: Range<usize>) -> Option<Range<usize>> {
+        self.operands
+            .iter()
+            .find(|(lowered, _)| lowered.start <= range.start && range.end <= lowered.end)
+            .map(|(lowered, il)| {
+                let start = il + (range.start - lowered.start);
+                start..start + range.len()
+            })
     }
 
     /// Whether `name` is a hidden variable of this body.
