@@ -107,7 +107,8 @@ fn a_pou_in_il_opens_highlighted_reports_on_its_lines_and_is_saved_as_an_il_file
 }
 
 /// `Main` of the example in IL: the conveyor called with its inputs, its motor output copied.
-const MAIN_IL: &str = "CAL fbConveyor(
+const MAIN_IL: &str = "(* The conveyor *)
+CAL fbConveyor(
     xStart := GVL_IO.xStartButton,
     xStop := GVL_IO.xStopButton OR GVL_IO.xEmergencyStop,
     tStartDelay := T#2S)
@@ -115,11 +116,11 @@ LD fbConveyor.xMotorOn
 ST GVL_IO.xConveyorMotor
 ";
 
-#[test]
-fn an_il_body_shows_values_at_its_operands_while_online() {
+/// The example with `Main` in IL.
+fn example_with_il_main() -> tempfile::TempDir {
     use super::support;
 
-    let project = support::example_copy(|dir| {
+    support::example_copy(|dir| {
         support::replace_in(
             dir,
             "application/Main.pou.toml",
@@ -128,7 +129,14 @@ fn an_il_body_shows_values_at_its_operands_while_online() {
         );
         std::fs::remove_file(dir.join("application/Main.st")).unwrap();
         std::fs::write(dir.join("application/Main.il"), MAIN_IL).unwrap();
-    });
+    })
+}
+
+#[test]
+fn an_il_body_shows_values_at_its_operands_while_online() {
+    use super::support;
+
+    let project = example_with_il_main();
     let mut harness = support::studio(project.path());
     harness.get_by_label("Main").focus();
     harness.step();
@@ -151,4 +159,52 @@ fn an_il_body_shows_values_at_its_operands_while_online() {
             .iter()
             .all(|path| !path.contains("__"))
     );
+}
+
+#[test]
+fn f9_in_an_il_body_sets_a_breakpoint_on_the_next_instruction_of_the_il_file() {
+    use super::support;
+    use app::studio::{Breakpoint, BreakpointPlace};
+    use egui::Modifiers;
+
+    let project = example_with_il_main();
+    let mut harness = support::studio(project.path());
+    harness.state_mut().build();
+    support::wait_until(&mut harness, "the build", |app| {
+        app.last_build().is_some_and(|build| build.image.is_some())
+    });
+    harness.get_by_label("Main").focus();
+    harness.step();
+    harness.key_press(Key::Enter);
+    harness.step();
+    harness.step();
+    harness.get_by_label("Implementation of Main").click();
+    harness.step();
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::Home);
+    harness.step();
+
+    // Line 1 is a comment: the breakpoint goes to the call on line 2.
+    harness.key_press(Key::F9);
+    harness.step();
+    harness.step();
+    let app = harness.state();
+    let dir = &app.session().unwrap().dir;
+    let set = app
+        .settings()
+        .breakpoints
+        .get(&app::studio::Settings::project_key(dir))
+        .map(|list| list.all().to_vec())
+        .unwrap_or_default();
+    assert_eq!(
+        set,
+        vec![Breakpoint::at(BreakpointPlace::text(
+            "application/Main.il",
+            2
+        ))]
+    );
+    let marks = app
+        .body_debug_marks(&project_model::TextTarget::Pou("Main".into()))
+        .unwrap();
+    assert_eq!(marks.breakpoints.len(), 1);
+    assert_eq!(marks.breakpoints[0].line, 1);
 }
