@@ -353,7 +353,7 @@ fn check(path: &Path) -> anyhow::Result<()> {
     for warning in &loaded.warnings {
         eprintln!("{warning}");
     }
-    let bodies: HashMap<PathBuf, &str> = project_model::st_body_files(&loaded.project)
+    let bodies: HashMap<PathBuf, &str> = project_model::text_body_files(&loaded.project)
         .into_iter()
         .map(|body| (body.file, body.text))
         .collect();

@@ -681,3 +681,42 @@ fn simulate_runs_an_ld_program() {
         "Main.n = 5\nMain.q = TRUE\nMain.r = FALSE\n"
     );
 }
+
+#[test]
+fn simulate_runs_an_il_program_and_check_reports_its_errors_at_the_il_line() {
+    let dir = tempfile::tempdir().unwrap();
+    fs::write(
+        dir.path().join("rivet.toml"),
+        "format_version = 3\nname = \"Counter\"\napplication = [\"Counter.pou.toml\"]\ncontroller = { name = \"PLC\", host = \"127.0.0.1\", port = 5020 }\n\n[[task]]\nname = \"MainTask\"\nkind = { type = \"cyclic\", interval_us = 10000 }\npriority = 1\nprograms = [\"Counter\"]\n",
+    )
+    .unwrap();
+    fs::create_dir(dir.path().join("application")).unwrap();
+    fs::write(
+        dir.path().join("application/Counter.pou.toml"),
+        "kind = \"program\"\nbody = { language = \"il\" }\n\n[[variable]]\nname = \"count\"\ntype = \"INT\"\n",
+    )
+    .unwrap();
+    let il = dir.path().join("application/Counter.il");
+    fs::write(
+        &il,
+        "(* one more each cycle *)\nLD count\nADD 1\nST count\n",
+    )
+    .unwrap();
+    let output = rivet(&[
+        "simulate",
+        path_str(dir.path()),
+        "--cycles",
+        "4",
+        "--watch",
+        "Counter.count",
+    ]);
+    assert!(output.status.success(), "{}", text_of(&output.stderr));
+    assert_eq!(text_of(&output.stdout), "Counter.count = 4\n");
+
+    fs::write(&il, "LD count\nADD 1\nST\n").unwrap();
+    let output = rivet(&["check", path_str(dir.path())]);
+    assert_eq!(output.status.code(), Some(1));
+    let stderr = text_of(&output.stderr);
+    let location = format!("{}:3:1: error[E0136]: 'ST' needs an operand", il.display());
+    assert!(stderr.contains(&location), "{stderr}");
+}

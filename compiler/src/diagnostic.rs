@@ -87,6 +87,10 @@ codes! {
     OpenArrayOutsideInOut = "E0133", Error, "Array with open bounds outside a VAR_IN_OUT parameter";
     UnwritablePlace = "E0134", Error, "THIS, SUPER or a property used where a variable is needed";
     BitByReference = "E0135", Error, "Single bit passed by reference or given to ADR";
+    InvalidIlInstruction = "E0136", Error, "Instruction List line that is not an instruction";
+    IlLabel = "E0137", Error, "Instruction List jump to a missing label, or a label declared twice";
+    IlParenthesis = "E0138", Error, "Instruction List parentheses that do not match";
+    IlNoCurrentResult = "E0139", Error, "Instruction List operator without a current result";
     UnusedVariable = "W0001", Warning, "Variable never used";
     UnassignedVariable = "W0002", Warning, "Variable read but never written";
     OverlappingAddresses = "W0003", Warning, "Located variables overlap";

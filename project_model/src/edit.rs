@@ -620,7 +620,7 @@ fn variables_mut<'a>(
 
 fn text_mut<'a>(root: &'a mut Folder, target: &TextTarget) -> Result<&'a mut String, EditError> {
     body_mut(root, target)?
-        .st_text_mut()
+        .text_mut()
         .ok_or_else(|| EditError::NotText(target.to_string()))
 }
 

@@ -98,6 +98,8 @@ pub enum Language {
     None,
     /// Structured Text.
     St,
+    /// Instruction List (IEC 61131-3 ed. 2; deprecated in ed. 3 but found in exported projects).
+    Il,
     /// Ladder Diagram.
     Ld,
     /// Function Block Diagram.
@@ -110,8 +112,9 @@ pub enum Language {
 
 /// The implementation of a POU, method, property accessor or action.
 ///
-/// In files, the text of an ST body lives in a `.st` file of its own beside the object's file
-/// (see `docs/project-format.md`); graphical bodies are stored inline.
+/// In files, the text of an ST body lives in a `.st` file of its own beside the object's file,
+/// that of an IL body in a `.il` file (see `docs/project-format.md`); graphical bodies are
+/// stored inline.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[cfg_attr(feature = "proptest", derive(proptest_derive::Arbitrary))]
 #[serde(tag = "language", rename_all = "snake_case", deny_unknown_fields)]
@@ -121,6 +124,13 @@ pub enum Body {
     /// Structured Text.
     St {
         /// The statements, exactly as written.
+        #[serde(skip)]
+        #[cfg_attr(feature = "proptest", proptest(strategy = "crate::arb::text()"))]
+        text: String,
+    },
+    /// Instruction List: one instruction per line (`docs/instruction-list.md`).
+    Il {
+        /// The instructions, exactly as written; stored in a `.il` file like ST's `.st`.
         #[serde(skip)]
         #[cfg_attr(feature = "proptest", proptest(strategy = "crate::arb::text()"))]
         text: String,
@@ -164,6 +174,7 @@ impl Body {
         match self {
             Self::None => Language::None,
             Self::St { .. } => Language::St,
+            Self::Il { .. } => Language::Il,
             Self::Ld { .. } => Language::Ld,
             Self::Fbd { .. } => Language::Fbd,
             Self::Cfc { .. } => Language::Cfc,
@@ -183,6 +194,31 @@ impl Body {
     pub fn st_text_mut(&mut self) -> Option<&mut String> {
         match self {
             Self::St { text } => Some(text),
+            _ => None,
+        }
+    }
+
+    /// The text of a textual body (ST or IL), the one kept in a file of its own.
+    pub fn text(&self) -> Option<&str> {
+        match self {
+            Self::St { text } | Self::Il { text } => Some(text),
+            _ => None,
+        }
+    }
+
+    /// The text of a textual body (ST or IL), mutably.
+    pub fn text_mut(&mut self) -> Option<&mut String> {
+        match self {
+            Self::St { text } | Self::Il { text } => Some(text),
+            _ => None,
+        }
+    }
+
+    /// The file name extension of a textual body's file: `st` or `il`; `None` for the others.
+    pub fn text_extension(&self) -> Option<&'static str> {
+        match self {
+            Self::St { .. } => Some("st"),
+            Self::Il { .. } => Some("il"),
             _ => None,
         }
     }

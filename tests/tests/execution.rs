@@ -21,6 +21,9 @@ mod debugging;
 /// PLCopen XML files imported and their ST part checked.
 mod plcopen_import;
 
+/// Instruction List bodies compiled and run, Beremiz's IL counter against its ST twin.
+mod instruction_list;
+
 /// Bits and parts reached through pointers, references and properties; E0134.
 mod places;
 

@@ -190,7 +190,7 @@ pub fn build(project: &Project, revision: u64) -> BuildOutcome {
 /// The checker's findings with lines, columns and the places to jump to.
 fn messages(project: &Project) -> Vec<BuildMessage> {
     let bodies: HashMap<PathBuf, (String, TextTarget, &str)> =
-        project_model::st_body_files(project)
+        project_model::text_body_files(project)
             .into_iter()
             .map(|body| (body.file, (body.pou.name.clone(), body.target, body.text)))
             .collect();

@@ -100,6 +100,8 @@ fn compile_with(
     {
         return Err(CompileError::Diagnostics(diagnostics));
     }
-    program::build_image(&lowered.project, origin, checked, condition)
+    // The line table names an IL body's `.il` file: its lowered text has the same lines.
+    let origin = |file: &Path| origin(lowered.il_file_of(file).unwrap_or(file));
+    program::build_image(&lowered.project, &origin, checked, condition)
         .map_err(|error| CompileError::Unsupported(lowered.locate_error(error)))
 }

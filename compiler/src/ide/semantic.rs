@@ -115,8 +115,54 @@ pub struct MonitoredName {
 /// while online. `instance` is the path of the instance whose values are shown: the program's
 /// name for a program body, an instance path such as `Main.fbConveyor` for a function block's
 /// body. Locals of functions and methods (which live on the stack) have no path and are left
-/// out, as are names that are not variables.
+/// out, as are names that are not variables. In an Instruction List body, the names are those
+/// of its operands.
 pub fn monitor_paths(project: &Project, target: &TextTarget, instance: &str) -> Vec<MonitoredName> {
+    if let Some(names) = il_monitor_paths(project, target, instance) {
+        return names;
+    }
+    st_monitor_paths(project, target, instance)
+}
+
+/// The names of the Instruction List body `target` to show values at, as
+/// [`monitor_paths`] gives them: those of its lowered text that lie in an operand, at their
+/// place in the IL text; `None` when the body is not IL.
+fn il_monitor_paths(
+    project: &Project,
+    target: &TextTarget,
+    instance: &str,
+) -> Option<Vec<MonitoredName>> {
+    let (TextTarget::Pou(pou)
+    | TextTarget::Method { pou, .. }
+    | TextTarget::Property { pou, .. }
+    | TextTarget::Action { pou, .. }
+    | TextTarget::Transition { pou, .. }) = target;
+    let is_il = project_model::text_body_files(project)
+        .into_iter()
+        .any(|body| &body.target == target && body.file.extension().is_some_and(|e| e == "il"));
+    if !is_il {
+        return None;
+    }
+    let lowered = crate::lower::lower_project(project);
+    let body = lowered
+        .il
+        .iter()
+        .find(|body| body.pou.eq_ignore_ascii_case(pou) && &body.target == target)?;
+    let mut names: Vec<MonitoredName> = st_monitor_paths(&lowered.project, target, instance)
+        .into_iter()
+        .filter_map(|name| {
+            body.il_range(name.range).map(|range| MonitoredName {
+                range,
+                path: name.path,
+            })
+        })
+        .collect();
+    names.dedup();
+    Some(names)
+}
+
+/// [`monitor_paths`] of a Structured Text body.
+fn st_monitor_paths(project: &Project, target: &TextTarget, instance: &str) -> Vec<MonitoredName> {
     let Some(body) = body(project, target) else {
         return Vec::new();
     };

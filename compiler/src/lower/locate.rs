@@ -93,6 +93,9 @@ impl LoweredProject<'_> {
                 });
             }
         }
+        for body in &self.il {
+            found.extend(body.findings().iter().cloned());
+        }
         found
     }
 
@@ -100,7 +103,7 @@ impl LoweredProject<'_> {
     /// elements with messages in the user's words; findings about hidden declarations (which
     /// the user cannot act on) are dropped.
     pub(crate) fn locate(&self, found: Vec<ProjectDiagnostic>) -> Vec<ProjectDiagnostic> {
-        if self.bodies.is_empty() {
+        if self.bodies.is_empty() && self.il.is_empty() {
             return found;
         }
         found
@@ -110,8 +113,16 @@ impl LoweredProject<'_> {
                     let hidden = self
                         .bodies
                         .iter()
-                        .any(|body| body.file == finding.file && body.is_hidden(name));
+                        .any(|body| body.file == finding.file && body.is_hidden(name))
+                        || self.il.iter().any(|body| body.is_hidden(name));
                     return (!hidden).then_some(finding);
+                }
+                if let Some(body) = self
+                    .il
+                    .iter()
+                    .find(|body| body.has_text_file(&finding.file))
+                {
+                    return Some(body.locate(finding));
                 }
                 let Some(body) = self.body_of_text_file(&finding.file) else {
                     return Some(finding);
@@ -159,6 +170,14 @@ impl LoweredProject<'_> {
         else {
             return error;
         };
+        // An IL body's text has the IL file's lines, so only the file's name changes.
+        for place in &mut location.within {
+            if let Within::File(name) = place
+                && let Some(il_file) = self.il_file_of(std::path::Path::new(name.as_str()))
+            {
+                *name = il_file.to_string_lossy().into_owned();
+            }
+        }
         let body = location.within.iter().find_map(|place| match place {
             Within::File(name) => self
                 .bodies

@@ -13,6 +13,7 @@
 mod boxes;
 mod cfc;
 mod fragment;
+mod il;
 mod locate;
 mod network;
 mod operator;
@@ -36,6 +37,7 @@ use fragment::Span;
 use network::BodyLowering;
 use operator::Operator;
 
+pub use il::LoweredIl;
 pub use locate::OriginMap;
 pub use place::ElementPlace;
 
@@ -48,6 +50,8 @@ pub struct LoweredProject<'p> {
     pub project: Cow<'p, Project>,
     /// Every lowered body, in tree order.
     pub bodies: Vec<LoweredBody>,
+    /// Every Instruction List body, lowered into Structured Text line for line, in tree order.
+    pub il: Vec<LoweredIl>,
 }
 
 /// One LD or FBD body as Structured Text, or one SFC chart as textual SFC.
@@ -141,7 +145,11 @@ pub fn lower_project(project: &Project) -> LoweredProject<'_> {
     let graphical = |body: &Body| {
         matches!(
             body,
-            Body::Ld { .. } | Body::Fbd { .. } | Body::Sfc { .. } | Body::Cfc { .. }
+            Body::Ld { .. }
+                | Body::Fbd { .. }
+                | Body::Sfc { .. }
+                | Body::Cfc { .. }
+                | Body::Il { .. }
         )
     };
     let pous: Vec<(PathBuf, &Pou)> = project_model::object_files(project)
@@ -160,6 +168,7 @@ pub fn lower_project(project: &Project) -> LoweredProject<'_> {
         return LoweredProject {
             project: Cow::Borrowed(project),
             bodies: Vec::new(),
+            il: Vec::new(),
         };
     }
     let kinds: HashMap<String, PouKind> = project
@@ -201,6 +210,7 @@ pub fn lower_project(project: &Project) -> LoweredProject<'_> {
     let globals = std::cell::OnceCell::new();
     let mut lowered = project.clone();
     let mut bodies = Vec::new();
+    let mut il_bodies = Vec::new();
     for (file, pou) in pous {
         let folder = file.parent().map(PathBuf::from).unwrap_or_default();
         let mut texts = Vec::new();
@@ -219,6 +229,15 @@ pub fn lower_project(project: &Project) -> LoweredProject<'_> {
                     format!("__{property}_{}__", if *get { "get" } else { "set" })
                 }
             };
+            if let Body::Il { text } = body {
+                let (il_body, mut il_hidden) = lower_il(
+                    project, &globals, pou, &folder, &suffix, target, prefix, text,
+                );
+                texts.push((index, il_body.text.clone()));
+                hidden.append(&mut il_hidden);
+                il_bodies.push(il_body);
+                continue;
+            }
             // Each graphical body is lowered into ST text with its probes, descriptions and
             // findings; the text then takes the body's place in the copy that is checked.
             let (out, probes, descriptions, findings) = if let Body::Sfc { chart } = body {
@@ -321,7 +340,54 @@ pub fn lower_project(project: &Project) -> LoweredProject<'_> {
     LoweredProject {
         project: Cow::Owned(lowered),
         bodies,
+        il: il_bodies,
     }
+}
+
+/// Lowers the IL body `text` of `target` of `pou` (stored in `folder`), typing the current
+/// result with the checker's view of the project with the hidden variables declared so far.
+#[allow(clippy::too_many_arguments)]
+fn lower_il<'p>(
+    project: &'p Project,
+    globals: &std::cell::OnceCell<crate::sema::scope::Globals<'p>>,
+    pou: &Pou,
+    folder: &std::path::Path,
+    suffix: &str,
+    target: TextTarget,
+    prefix: String,
+    text: &str,
+) -> (LoweredIl, Vec<Variable>) {
+    // The passes of the lowering ask the same questions again, so answers are kept by the
+    // number of hidden variables declared (which only grows) and the expression.
+    let answers = std::cell::RefCell::new(HashMap::<(usize, String), Option<String>>::new());
+    let type_of = |hidden: &[Variable], expression: &str| {
+        let key = (hidden.len(), expression.to_owned());
+        if let Some(answer) = answers.borrow().get(&key) {
+            return answer.clone();
+        }
+        let globals = globals.get_or_init(|| crate::sema::scope::Globals::new(project));
+        let mut with_hidden = pou.clone();
+        with_hidden.variables.extend(hidden.iter().cloned());
+        let scope = crate::sema::expression_scope(globals, &with_hidden, &target);
+        let answer = crate::sema::expression_declared_type(&scope, expression);
+        answers.borrow_mut().insert(key, answer.clone());
+        answer
+    };
+    let stem = suffix.strip_suffix(".st").unwrap_or(suffix);
+    let transition = match &target {
+        TextTarget::Transition { transition, .. } => Some(transition.clone()),
+        _ => None,
+    };
+    LoweredIl::new(
+        &pou.name,
+        target.clone(),
+        folder.join(format!("{}{stem}.il", pou.name)),
+        folder.join(format!("{}{suffix}", pou.name)),
+        text,
+        prefix,
+        &type_of,
+        transition.as_deref(),
+    )
 }
 
 /// Turns the transition objects of `pou` (their bodies already Structured Text) into methods
@@ -465,6 +531,14 @@ impl LoweredProject<'_> {
         self.bodies
             .iter()
             .find(|body| body.pou.eq_ignore_ascii_case(pou) && &body.target == target)
+    }
+
+    /// The IL file of the lowered IL body the checker or code generator names `file`.
+    pub fn il_file_of(&self, file: &std::path::Path) -> Option<&std::path::Path> {
+        self.il
+            .iter()
+            .find(|body| body.has_text_file(file))
+            .map(|body| body.file.as_path())
     }
 
     /// The lowered body the checker or code generator names by its text file.

@@ -153,23 +153,22 @@ fn check_text_project(
 /// edit of that POU, without the rest of the project.
 pub fn check_pou(project: &Project, pou_name: &str) -> Vec<ProjectDiagnostic> {
     let lowered = crate::lower::lower_project(project);
-    let mut found: Vec<ProjectDiagnostic> = lowered
-        .findings()
-        .into_iter()
-        .filter(|finding| {
-            finding
-                .element
-                .as_ref()
-                .is_some_and(|place| place.pou.eq_ignore_ascii_case(pou_name))
-        })
-        .collect();
-    // The POU's own files: its `.pou.toml` and the `.st` files of its bodies, beside it.
+    // The POU's own files: its `.pou.toml` and the `.st` and `.il` files of its bodies, beside
+    // it.
     let own = |file: &std::path::Path| {
         file.file_name()
             .and_then(|name| name.to_str())
             .and_then(|name| name.split('.').next())
             .is_some_and(|name| name.eq_ignore_ascii_case(pou_name))
     };
+    let mut found: Vec<ProjectDiagnostic> = lowered
+        .findings()
+        .into_iter()
+        .filter(|finding| match &finding.element {
+            Some(place) => place.pou.eq_ignore_ascii_case(pou_name),
+            None => own(&finding.file),
+        })
+        .collect();
     found.extend(
         reserved::reserved_names(project)
             .into_iter()

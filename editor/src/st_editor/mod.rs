@@ -13,6 +13,7 @@ mod find;
 mod folding;
 mod galleys;
 mod highlight;
+mod il_highlight;
 mod input;
 mod layout;
 mod overlays;
@@ -151,6 +152,16 @@ impl StEditor {
             visible: 0..0,
             preedit: String::new(),
             debug_marks: StDebugMarks::default(),
+        }
+    }
+
+    /// An editor holding `text`, an Instruction List body (`docs/instruction-list.md`):
+    /// highlighted by IL's own scanner (labels, operators, jump targets, functions, comments,
+    /// literals); everything else is as for Structured Text.
+    pub fn instruction_list(text: &str) -> Self {
+        Self {
+            syntax: Syntax::instruction_list(),
+            ..Self::new(text)
         }
     }
 

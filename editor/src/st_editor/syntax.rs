@@ -33,6 +33,8 @@ pub struct Syntax {
     span_cache: Option<Cached<Vec<Vec<LineSpan>>>>,
     /// The foldable blocks of the last line range asked for, with its generation.
     fold_cache: Option<Cached<Vec<(usize, usize)>>>,
+    /// Whether the text is Instruction List, highlighted by `il_highlight` without a tree.
+    instruction_list: bool,
 }
 
 impl Syntax {
@@ -60,9 +62,25 @@ impl Syntax {
             generation: 0,
             span_cache: None,
             fold_cache: None,
+            instruction_list: false,
         };
         syntax.reparse(text, false);
         syntax
+    }
+
+    /// The syntax of an Instruction List text: no tree-sitter parser (the grammar is ST's),
+    /// highlighting by the IL scanner, nothing to fold or match.
+    pub fn instruction_list() -> Self {
+        Self {
+            parser: None,
+            tree: None,
+            highlights: None,
+            folds: None,
+            generation: 0,
+            span_cache: None,
+            fold_cache: None,
+            instruction_list: true,
+        }
     }
 
     /// Forgets the old tree and parses `text` again (after `set_text`).
@@ -160,6 +178,16 @@ impl Syntax {
                         rank,
                         class,
                     );
+                }
+            }
+            _ if self.instruction_list && !lines.is_empty() => {
+                let first = buffer.line_range(lines.start).start;
+                let last = buffer.line_range(lines.end - 1).end;
+                for (range, class) in super::il_highlight::il_spans(buffer.text()) {
+                    if range.end <= first || range.start >= last {
+                        continue;
+                    }
+                    paint(buffer, &lines, &mut per_byte, range, 0, class);
                 }
             }
             _ => {
@@ -365,6 +393,27 @@ mod tests {
             .iter()
             .find(|(range, _)| range.contains(&column))
             .map(|(_, class)| *class)
+    }
+
+    #[test]
+    fn an_instruction_list_text_is_highlighted_line_by_line_without_a_tree() {
+        let text = "(* count\n   up *)\nLD x\nNext: ADD 1\nJMPC Next\n";
+        let buffer = TextBuffer::new(text);
+        let mut syntax = Syntax::instruction_list();
+        let spans = syntax.highlight_lines(&buffer, 1..5);
+        let class = |line: usize, column: usize| {
+            spans[line - 1]
+                .iter()
+                .find(|(range, _)| range.contains(&column))
+                .map(|(_, class)| *class)
+        };
+        assert_eq!(class(1, 4), Some(Highlight::Comment));
+        assert_eq!(class(2, 0), Some(Highlight::Keyword));
+        assert_eq!(class(3, 0), Some(Highlight::Label));
+        assert_eq!(class(3, 6), Some(Highlight::Keyword));
+        assert_eq!(class(3, 10), Some(Highlight::Number));
+        assert_eq!(class(4, 6), Some(Highlight::Label));
+        assert!(syntax.folds_starting_in(&buffer, 0..5).is_empty());
     }
 
     const SAMPLE: &str = "PROGRAM Main\nVAR\n    count : INT := 42; // 计数\n    name : STRING := 'hello';\nEND_VAR\nIF count > 10 THEN\n    count := 0;\nEND_IF;\nEND_PROGRAM\n";

@@ -185,3 +185,48 @@ body = { language = "cfc", chart = { element = [{ id = 1, x = 2, y = 4, kind = {
     assert_eq!(canonical(compact), expected);
     assert_eq!(canonical(expected), expected);
 }
+
+#[test]
+fn il_bodies_are_saved_in_il_files_beside_the_pou_and_load_back_unchanged() {
+    use std::collections::BTreeSet;
+    use std::path::PathBuf;
+
+    use crate::{Body, Folder, Node, PouAction, Project, load_project, save_project};
+
+    let text = "kind = \"function_block\"\nbody = { language = \"il\" }\n";
+    let mut pou: Pou = toml::from_str(text).unwrap();
+    pou.name = "Counter".into();
+    pou.body = Body::Il {
+        text: "LD Reset\nJMPC ResetCnt\n(* count *)\nLD Cnt\nADD 1\n".into(),
+    };
+    pou.actions.push(PouAction {
+        name: "Clear".into(),
+        body: Body::Il {
+            text: "LD 0\nST Cnt\n".into(),
+        },
+    });
+    let project = Project {
+        application: Folder {
+            name: String::new(),
+            children: vec![Node::Object(Object::Pou(pou))],
+        },
+        ..Project::default()
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let first = save_project(&project, dir.path(), &BTreeSet::new()).unwrap();
+    let il_files: Vec<&PathBuf> = first
+        .files
+        .iter()
+        .filter(|file| file.extension().is_some_and(|ext| ext == "il"))
+        .collect();
+    assert_eq!(il_files.len(), 2, "{:?}", first.files);
+    let body = std::fs::read_to_string(dir.path().join("application/Counter.il")).unwrap();
+    assert_eq!(
+        body,
+        "LD Reset\nJMPC ResetCnt\n(* count *)\nLD Cnt\nADD 1\n"
+    );
+    let loaded = load_project(dir.path()).unwrap();
+    assert_eq!(loaded.project, project);
+    let second = save_project(&loaded.project, dir.path(), &loaded.files).unwrap();
+    assert!(second.written.is_empty(), "rewrote {:?}", second.written);
+}

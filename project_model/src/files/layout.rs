@@ -34,9 +34,10 @@ pub(crate) fn folder_entry(folder: &[String]) -> String {
     folder.iter().map(|name| format!("{name}/")).collect()
 }
 
-/// A place in a POU that holds a body, and the suffix of its `.st` file.
+/// A place in a POU that holds a body, and the suffix of its text file.
 pub(crate) struct BodySlot<'a> {
-    /// The file name suffix after the POU's name, such as `.st` or `.Reset.st`.
+    /// The file name suffix after the POU's name, such as `.st`, `.Reset.st` or `.il` (the
+    /// extension follows the body's language; non-textual bodies get `.st`, unused).
     pub suffix: String,
     /// The body.
     pub body: &'a Body,
@@ -45,17 +46,20 @@ pub(crate) struct BodySlot<'a> {
     pub owner: String,
 }
 
-/// Every body of a POU with the suffix of its `.st` file, in a fixed order.
+/// Every body of a POU with the suffix of its text file (`.st`, or `.il` for an IL body), in a
+/// fixed order.
 pub(crate) fn body_slots(pou: &Pou) -> Vec<BodySlot<'_>> {
     let pou_owner = format!("POU '{}'", pou.name);
+    let suffix =
+        |base: String, body: &Body| format!("{base}.{}", body.text_extension().unwrap_or("st"));
     let mut slots = vec![BodySlot {
-        suffix: ".st".into(),
+        suffix: suffix(String::new(), &pou.body),
         body: &pou.body,
         owner: pou_owner.clone(),
     }];
     for method in &pou.methods {
         slots.push(BodySlot {
-            suffix: format!(".{}.st", method.name),
+            suffix: suffix(format!(".{}", method.name), &method.body),
             body: &method.body,
             owner: format!("{pou_owner}, method '{}'", method.name),
         });
@@ -64,7 +68,7 @@ pub(crate) fn body_slots(pou: &Pou) -> Vec<BodySlot<'_>> {
         for (accessor, which) in [(&property.get, "get"), (&property.set, "set")] {
             if let Some(accessor) = accessor {
                 slots.push(BodySlot {
-                    suffix: format!(".{}.{which}.st", property.name),
+                    suffix: suffix(format!(".{}.{which}", property.name), &accessor.body),
                     body: &accessor.body,
                     owner: format!("{pou_owner}, property '{}' ({which})", property.name),
                 });
@@ -73,14 +77,14 @@ pub(crate) fn body_slots(pou: &Pou) -> Vec<BodySlot<'_>> {
     }
     for action in &pou.actions {
         slots.push(BodySlot {
-            suffix: format!(".{}.st", action.name),
+            suffix: suffix(format!(".{}", action.name), &action.body),
             body: &action.body,
             owner: format!("{pou_owner}, action '{}'", action.name),
         });
     }
     for transition in &pou.transitions {
         slots.push(BodySlot {
-            suffix: format!(".{}.st", transition.name),
+            suffix: suffix(format!(".{}", transition.name), &transition.body),
             body: &transition.body,
             owner: format!("{pou_owner}, transition '{}'", transition.name),
         });
@@ -179,10 +183,10 @@ pub(crate) fn parse_entry(entry: &str) -> Result<Entry, String> {
     })
 }
 
-/// A Structured Text body of a project with where it is stored.
+/// A textual body (Structured Text or Instruction List) of a project with where it is stored.
 #[derive(Clone, Debug)]
 pub struct StBody<'a> {
-    /// The `.st` file, relative to the project folder.
+    /// The `.st` (or `.il`) file, relative to the project folder.
     pub file: PathBuf,
     /// The POU it belongs to.
     pub pou: &'a Pou,
@@ -195,13 +199,24 @@ pub struct StBody<'a> {
 /// Every Structured Text body of `project` with its file, in tree order: what a checker reads
 /// and reports against.
 pub fn st_body_files(project: &Project) -> Vec<StBody<'_>> {
+    body_files(project, Body::st_text)
+}
+
+/// Every textual body of `project` (Structured Text in `.st` files, Instruction List in `.il`
+/// files) with its file, in tree order: what editors show and findings are reported against.
+pub fn text_body_files(project: &Project) -> Vec<StBody<'_>> {
+    body_files(project, Body::text)
+}
+
+/// Every body of `project` whose text `text_of` gives, with its file, in tree order.
+fn body_files<'p>(project: &'p Project, text_of: fn(&Body) -> Option<&str>) -> Vec<StBody<'p>> {
     let mut out = Vec::new();
     for (file, object) in object_files(project) {
         let Object::Pou(pou) = object else { continue };
         let folder = file.parent().map(PathBuf::from).unwrap_or_default();
         let targets = body_targets(pou);
         for (slot, target) in body_slots(pou).into_iter().zip(targets) {
-            if let Some(text) = slot.body.st_text() {
+            if let Some(text) = text_of(slot.body) {
                 out.push(StBody {
                     file: folder.join(format!("{}{}", pou.name, slot.suffix)),
                     pou,

@@ -290,11 +290,11 @@ impl Loader<'_> {
         Some(object)
     }
 
-    /// Fills the text of every ST body of `pou` from its `.st` file.
+    /// Fills the text of every ST and IL body of `pou` from its `.st` or `.il` file.
     fn load_st_bodies(&mut self, folder: &[String], pou: &mut Pou, pou_file: &Path) -> Option<()> {
         let suffixes: Vec<Option<String>> = body_slots(pou)
             .into_iter()
-            .map(|slot| matches!(slot.body, Body::St { .. }).then_some(slot.suffix))
+            .map(|slot| slot.body.text_extension().map(|_| slot.suffix))
             .collect();
         let pou_name = pou.name.clone();
         let mut complete = true;
@@ -307,16 +307,24 @@ impl Loader<'_> {
                     self.dir.join(&st_file),
                     None,
                     format!(
-                        "file not found; {} declares a Structured Text body, whose text belongs \
-                         in this file",
-                        self.dir.join(pou_file).display()
+                        "file not found; {} declares a {} body, whose text belongs in this file",
+                        self.dir.join(pou_file).display(),
+                        if matches!(body, Body::Il { .. }) {
+                            "Instruction List"
+                        } else {
+                            "Structured Text"
+                        }
                     ),
                 ));
                 complete = false;
                 continue;
             }
             match self.read_text(&st_file) {
-                Some(text) => *body = Body::St { text },
+                Some(read) => {
+                    if let Some(text) = body.text_mut() {
+                        *text = read;
+                    }
+                }
                 None => complete = false,
             }
         }

@@ -20,7 +20,7 @@ mod save;
 
 pub use held_back::HeldBackObject;
 pub(crate) use layout::body_slots;
-pub use layout::{StBody, object_files, st_body_files};
+pub use layout::{StBody, object_files, st_body_files, text_body_files};
 pub use load::{LoadedProject, load_project};
 pub use problem::{LoadError, LoadProblem, Severity};
 pub use save::{SaveError, SaveReport, save_project, save_project_keeping};

@@ -206,7 +206,7 @@ fn render_object(
     files.insert(file, text);
     if let Object::Pou(pou) = object {
         for slot in body_slots(pou) {
-            if let Some(text) = slot.body.st_text() {
+            if let Some(text) = slot.body.text() {
                 let mut st_file = folder_dir(folder);
                 st_file.push(format!("{name}{}", slot.suffix));
                 files.insert(st_file, text.to_owned());

@@ -172,6 +172,7 @@ pub enum Text {
     AddPropertyMenu,
     ImplementationLanguage,
     LanguageSt,
+    LanguageIl,
     LanguageLd,
     LanguageFbd,
     LanguageCfc,

@@ -196,6 +196,7 @@ impl Text {
             Self::AddPropertyMenu => ("Add property…", "添加属性…"),
             Self::ImplementationLanguage => ("Implementation language", "实现语言"),
             Self::LanguageSt => ("Structured Text (ST)", "结构化文本 (ST)"),
+            Self::LanguageIl => ("Instruction List (IL)", "指令表 (IL)"),
             Self::LanguageLd => ("Ladder Diagram (LD)", "梯形图 (LD)"),
             Self::LanguageFbd => ("Function Block Diagram (FBD)", "功能块图 (FBD)"),
             Self::LanguageCfc => ("Continuous Function Chart (CFC)", "连续功能图 (CFC)"),

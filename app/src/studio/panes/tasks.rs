@@ -44,7 +44,7 @@ pub(crate) fn fault_place(view: StudioView<'_>, pou: &str, file: &str, line: u32
     let object = pou.split('.').next().unwrap_or(pou).to_owned();
     let node = TreeNode::Object(object);
     let body = view.project().and_then(|project| {
-        project_model::st_body_files(project)
+        project_model::text_body_files(project)
             .into_iter()
             .find(|body| body.file == std::path::Path::new(file))
             .map(|body| (body.target, body.text.to_owned()))

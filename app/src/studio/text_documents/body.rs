@@ -45,7 +45,7 @@ pub(super) fn body_ui(
     };
     let project = &session.project;
     let revision = session.history.revision();
-    let Some(text) = body.st_text() else {
+    let Some(text) = body.text() else {
         match body {
             Body::None => {
                 ui.label(RichText::new(Text::NoImplementation.get(language)).weak());
@@ -130,8 +130,8 @@ pub(super) fn body_ui(
                     texts.inline.show(path);
                 }
             }
-            // An ST body has its text, drawn below.
-            Body::St { .. } => {}
+            // An ST or IL body has its text, drawn below.
+            Body::St { .. } | Body::Il { .. } => {}
         }
         if let Some(place) = texts.graphical.focused_place.take() {
             texts.last_caret = Some(place);
@@ -142,6 +142,7 @@ pub(super) fn body_ui(
         ui.ctx().request_repaint_after(live_check::CHECK_DELAY);
     }
     let diagnostics = body_diagnostics(&texts.live, project, &pou.name, &target);
+    let instruction_list = matches!(body, Body::Il { .. });
     let inline = if view.online.is_online() {
         // While halted in this POU (or a method or action of it), its values are the halted
         // frame's instance's; a halted function's or method's locals come from its frame.
@@ -182,7 +183,11 @@ pub(super) fn body_ui(
         project,
         target: target.clone(),
     };
-    let entry = texts.editor(key, &text);
+    let entry = if instruction_list {
+        texts.instruction_list_editor(key, &text)
+    } else {
+        texts.editor(key, &text)
+    };
     entry.editor.set_read_only(read_only);
     if let Some(diagnostics) = diagnostics {
         entry.editor.set_diagnostics(diagnostics);
@@ -264,13 +269,13 @@ pub(super) fn body_ui(
     }
 }
 
-/// The file of the Structured Text body `target`, as the image's line table names it
-/// (`application/Main.st`), or `None` when the project has no such body.
+/// The file of the Structured Text or IL body `target`, as the image's line table names it
+/// (`application/Main.st`, `application/Main.il`), or `None` when the project has no such body.
 fn body_file(
     project: &project_model::Project,
     target: &project_model::TextTarget,
 ) -> Option<String> {
-    project_model::st_body_files(project)
+    project_model::text_body_files(project)
         .into_iter()
         .find(|body| &body.target == target)
         .map(|body| body.file.to_string_lossy().replace('\\', "/"))

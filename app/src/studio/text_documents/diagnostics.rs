@@ -77,7 +77,7 @@ pub(super) fn body_diagnostics(
     target: &TextTarget,
 ) -> Option<Vec<EditorDiagnostic>> {
     let (_, findings) = live.findings(pou)?;
-    let file = project_model::st_body_files(project)
+    let file = project_model::text_body_files(project)
         .into_iter()
         .find(|body| body.target == *target)
         .map(|body| body.file)?;

@@ -191,9 +191,23 @@ impl TextDocuments {
     }
 
     pub(super) fn editor(&mut self, key: TextKey, model: &str) -> &mut TextEditor {
+        self.editor_of(key, model, StEditor::new)
+    }
+
+    /// The editor of an Instruction List body, highlighted as IL.
+    pub(super) fn instruction_list_editor(&mut self, key: TextKey, model: &str) -> &mut TextEditor {
+        self.editor_of(key, model, StEditor::instruction_list)
+    }
+
+    fn editor_of(
+        &mut self,
+        key: TextKey,
+        model: &str,
+        new: fn(&str) -> StEditor,
+    ) -> &mut TextEditor {
         let language = self.language;
         let entry = self.editors.entry(key).or_insert_with(|| {
-            let mut editor = StEditor::new(model);
+            let mut editor = new(model);
             editor.set_texts(editor_texts(language));
             TextEditor {
                 editor,

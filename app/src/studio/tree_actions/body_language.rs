@@ -10,6 +10,8 @@ pub enum BodyLanguage {
     /// Structured Text.
     #[default]
     St,
+    /// Instruction List.
+    Il,
     /// Ladder Diagram.
     Ld,
     /// Function Block Diagram.
@@ -22,15 +24,25 @@ pub enum BodyLanguage {
 
 impl BodyLanguage {
     /// The languages the dialogs offer, in the order they show them.
-    pub const OFFERED: [Self; 5] = [Self::St, Self::Ld, Self::Fbd, Self::Cfc, Self::Sfc];
+    pub const OFFERED: [Self; 6] = [
+        Self::St,
+        Self::Il,
+        Self::Ld,
+        Self::Fbd,
+        Self::Cfc,
+        Self::Sfc,
+    ];
 
-    /// The body a new POU or member starts with: no text for ST; for LD and FBD one empty
+    /// The body a new POU or member starts with: no text for ST and IL; for LD and FBD one empty
     /// network (no title, comment, label, elements or outputs), as CODESYS creates them, so the
     /// editor opens on a network the user can insert into right away; an empty CFC chart; for
     /// SFC CODESYS's start: the step `Init`, a transition and a jump back to `Init`.
     pub fn empty_body(self) -> Body {
         match self {
             Self::St => Body::st(""),
+            Self::Il => Body::Il {
+                text: String::new(),
+            },
             Self::Ld => Body::Ld {
                 networks: vec![Network::default()],
             },
@@ -50,6 +62,7 @@ impl BodyLanguage {
     pub fn text(self) -> Text {
         match self {
             Self::St => Text::LanguageSt,
+            Self::Il => Text::LanguageIl,
             Self::Ld => Text::LanguageLd,
             Self::Fbd => Text::LanguageFbd,
             Self::Cfc => Text::LanguageCfc,
