@@ -83,7 +83,12 @@ impl FileSummary {
     /// The summary of `document`.
     pub fn of(document: &Document) -> Self {
         let header = &document.file_header;
-        let product = format!("{} {}", header.product_name, header.product_version);
+        // CODESYS repeats its name in the version (`CODESYS`, `CODESYS V3.5 SP18`).
+        let product = if header.product_version.starts_with(&header.product_name) {
+            header.product_version.clone()
+        } else {
+            format!("{} {}", header.product_name, header.product_version)
+        };
         Self {
             file: document.file_name.clone(),
             dialect: document.dialect,

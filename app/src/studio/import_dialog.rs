@@ -134,7 +134,8 @@ fn report_ui(ui: &mut Ui, language: Language, file: &ImportedFile) {
         ],
     ));
     let entries = &file.imported.report.entries;
-    let row_height = ui.text_style_height(&egui::TextStyle::Body);
+    // A horizontal row is as tall as an interactive widget.
+    let row_height = ui.spacing().interact_size.y;
     ScrollArea::vertical()
         .id_salt("import_report")
         .max_height(REPORT_HEIGHT)
@@ -160,7 +161,10 @@ fn entry_ui(ui: &mut Ui, language: Language, file: &str, entry: &ReportEntry) {
         ui.label(RichText::new(place).weak())
             .on_hover_text(&entry.path);
         if !entry.note.is_empty() {
-            ui.label(RichText::new(&entry.note).weak());
+            // A long note is cut at the dialog's edge rather than widening it; the whole note
+            // shows on hover.
+            ui.add(egui::Label::new(RichText::new(&entry.note).weak()).truncate())
+                .on_hover_text(&entry.note);
         }
     });
 }
@@ -189,6 +193,7 @@ fn plan_ui(ui: &mut Ui, language: Language, plan: &mut MergePlan) {
             });
     }
     if !plan.clashes.is_empty() {
+        ui.add_space(4.0);
         let count = plan.clashes.len().to_string();
         ui.label(ImportText::Clashes.fill(language, &[("count", &count)]));
         ScrollArea::vertical()
@@ -221,6 +226,7 @@ fn plan_ui(ui: &mut Ui, language: Language, plan: &mut MergePlan) {
             });
     }
     if !plan.ignored.is_empty() {
+        ui.add_space(4.0);
         let parts: Vec<&str> = plan
             .ignored
             .iter()
