@@ -152,13 +152,24 @@ pub fn write_new_project(
     std::fs::create_dir_all(&staging).map_err(io(&staging))?;
     let written = project_model::save_project(project, &staging, &BTreeSet::new())
         .map_err(NewProjectError::from)
-        // Renaming a folder onto an empty one replaces it (POSIX), so an empty target is fine.
-        .and_then(|_| std::fs::rename(&staging, dir).map_err(io(dir)));
+        .and_then(|_| move_into_place(&staging, dir).map_err(io(dir)));
     if written.is_err() {
         // The staging folder is ours alone; nothing of the user's is in it.
         let _ = std::fs::remove_dir_all(&staging);
     }
     written
+}
+
+/// Renames `staging` to `dir`. POSIX renames a folder onto an empty one; where the system
+/// refuses that (Windows), the empty target is removed first and the rename tried again.
+fn move_into_place(staging: &Path, dir: &Path) -> std::io::Result<()> {
+    match std::fs::rename(staging, dir) {
+        Err(error) if dir.is_dir() => {
+            std::fs::remove_dir(dir).map_err(|_| error)?;
+            std::fs::rename(staging, dir)
+        }
+        result => result,
+    }
 }
 
 /// A fresh hidden sibling of `dir` to save into before the rename.
@@ -180,3 +191,7 @@ fn staging_folder(dir: &Path) -> PathBuf {
         attempt += 1;
     }
 }
+
+#[cfg(test)]
+#[path = "plcopen_import_tests.rs"]
+mod tests;

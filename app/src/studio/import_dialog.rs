@@ -182,12 +182,15 @@ fn plan_ui(ui: &mut Ui, language: Language, plan: &mut MergePlan) {
     } else {
         let count = plan.additions.len().to_string();
         ui.label(ImportText::Added.fill(language, &[("count", &count)]));
+        // Only the visible rows are laid out: a large file adds thousands of things.
+        let row_height = ui.text_style_height(&egui::TextStyle::Body);
+        let additions = &plan.additions;
         ScrollArea::vertical()
             .id_salt("import_additions")
             .max_height(PLAN_LIST_HEIGHT)
             .auto_shrink([false, true])
-            .show(ui, |ui| {
-                for item in &plan.additions {
+            .show_rows(ui, row_height, additions.len(), |ui, rows| {
+                for item in &additions[rows] {
                     ui.label(format!("+ {}", item_text(language, item)));
                 }
             });
@@ -196,12 +199,14 @@ fn plan_ui(ui: &mut Ui, language: Language, plan: &mut MergePlan) {
         ui.add_space(4.0);
         let count = plan.clashes.len().to_string();
         ui.label(ImportText::Clashes.fill(language, &[("count", &count)]));
+        let row_height = ui.spacing().interact_size.y;
+        let rows_count = plan.clashes.len();
         ScrollArea::vertical()
             .id_salt("import_clashes")
             .max_height(PLAN_LIST_HEIGHT)
             .auto_shrink([false, true])
-            .show(ui, |ui| {
-                for clash in &mut plan.clashes {
+            .show_rows(ui, row_height, rows_count, |ui, rows| {
+                for clash in &mut plan.clashes[rows] {
                     ui.horizontal(|ui| {
                         ui.radio_value(
                             &mut clash.choice,

@@ -153,3 +153,23 @@ fn importing_as_a_new_project_refuses_a_busy_folder_and_opens_the_new_one() {
     assert_eq!(session.project.name, "First Steps");
     assert!(harness.query_by_label("CounterST").is_some());
 }
+
+#[test]
+fn without_an_open_project_the_preview_offers_only_a_new_project() {
+    let app = StudioApp::new(app::studio::Settings::default(), None);
+    let mut harness = Harness::builder()
+        .with_size([1280.0, 800.0])
+        .build_ui_state(|ui, app: &mut StudioApp| app.ui(ui), app);
+    harness.run();
+    preview(&mut harness, &first_steps());
+    assert!(
+        harness
+            .query_by_label("No project is open: import as a new project")
+            .is_some()
+    );
+    // The disabled button does nothing.
+    harness.get_by_label("Import into this project").click();
+    harness.run();
+    assert!(harness.state().is_import_open());
+    assert!(harness.state().session().is_none());
+}
