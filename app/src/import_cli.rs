@@ -67,16 +67,18 @@ pub fn outcome_word(outcome: Outcome) -> &'static str {
 
 /// Prints one line per report entry (`outcome: what (file:line): note`) and the counts.
 fn print_report(file: &str, imported: &Imported) {
+    // An entry stays on one line even when its text spans several (an XML comment's).
+    let one_line = |text: &str| text.replace(['\n', '\r'], " ");
     for entry in &imported.report.entries {
         let note = if entry.note.is_empty() {
             String::new()
         } else {
-            format!(": {}", entry.note)
+            format!(": {}", one_line(&entry.note))
         };
         println!(
             "{}: {} ({file}:{}){note}",
             outcome_word(entry.outcome),
-            entry.what,
+            one_line(&entry.what),
             entry.line
         );
     }
