@@ -1,7 +1,7 @@
 //! The merge of an imported project into an open one (`docs/plcopen-xml.md` §6.3): what it
 //! adds, what clashes with what is there, and the project that applying it gives.
 
-use crate::{Object, ObjectKind, Project, Task, same_identifier};
+use crate::{Folder, Node, Object, ObjectKind, Project, Task, same_identifier};
 
 /// What a merge adds or replaces, for the open project and an imported one.
 ///
@@ -173,8 +173,9 @@ impl MergePlan {
     }
 
     /// The project that merging `imported` into `open` by this plan gives: `open` with the
-    /// imported objects added at the end of the application's root folder (a replacing one
-    /// takes the place of the one it replaces), the imported tasks added at the end of the
+    /// imported objects added at the end of their folder (the folder of the same path, made
+    /// when `open` has none; a replacing one takes the place of the one it replaces), the
+    /// imported tasks added at the end of the
     /// task list (or in the place of the one they replace) with their program calls, and
     /// everything else of `open` as it was.
     ///
@@ -182,7 +183,7 @@ impl MergePlan {
     /// (the projects changed since it was made) is skipped: nothing is overwritten unasked.
     pub fn apply(&self, open: &Project, imported: &Project) -> Project {
         let mut merged = open.clone();
-        for object in imported.application.objects() {
+        for (path, object) in objects_with_paths(&imported.application) {
             let item = MergeItem::object(object);
             match open.application.object(object.name()) {
                 Some(existing) => {
@@ -192,10 +193,7 @@ impl MergePlan {
                         *slot = object.clone();
                     }
                 }
-                None => merged
-                    .application
-                    .children
-                    .push(crate::Node::Object(object.clone())),
+                None => push_into(&mut merged.application, &path, object.clone()),
             }
         }
         for task in &imported.tasks {
@@ -254,6 +252,54 @@ fn other_caller<'a>(open: &'a Project, task: &str, program: &str) -> Option<&'a 
                 .iter()
                 .any(|called| same_identifier(called, program))
     })
+}
+
+/// Every object below `folder` with the path of the folder holding it, depth first in tree
+/// order (the order of [`Folder::objects`]).
+fn objects_with_paths(folder: &Folder) -> Vec<(Vec<String>, &Object)> {
+    let mut found = Vec::new();
+    collect_objects(folder, &mut Vec::new(), &mut found);
+    found
+}
+
+fn collect_objects<'a>(
+    folder: &'a Folder,
+    path: &mut Vec<String>,
+    found: &mut Vec<(Vec<String>, &'a Object)>,
+) {
+    for node in &folder.children {
+        match node {
+            Node::Folder(child) => {
+                path.push(child.name.clone());
+                collect_objects(child, path, found);
+                path.pop();
+            }
+            Node::Object(object) => found.push((path.clone(), object)),
+        }
+    }
+}
+
+/// Adds `object` at the end of the folder at `path` below `root`, making the folders that are
+/// missing (at the end of their parent).
+fn push_into(root: &mut Folder, path: &[String], object: Object) {
+    let Some((first, rest)) = path.split_first() else {
+        root.children.push(Node::Object(object));
+        return;
+    };
+    let existing = root.children.iter_mut().find_map(|node| match node {
+        Node::Folder(child) if child.name == *first => Some(child),
+        _ => None,
+    });
+    if let Some(child) = existing {
+        push_into(child, rest, object);
+        return;
+    }
+    let mut child = Folder {
+        name: first.clone(),
+        children: Vec::new(),
+    };
+    push_into(&mut child, rest, object);
+    root.children.push(Node::Folder(child));
 }
 
 fn position_of_task(tasks: &[Task], name: &str) -> Option<usize> {

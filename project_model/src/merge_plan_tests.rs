@@ -221,3 +221,33 @@ fn a_clash_the_plan_does_not_know_of_is_skipped() {
         pairs(&[("Globals", "mine")])
     );
 }
+
+#[test]
+fn objects_go_into_the_folder_of_their_path_made_where_missing() {
+    let mut open = project(vec![list("Globals", "mine")], vec![]);
+    open.application.children.push(Node::Folder(crate::Folder {
+        name: "Types".into(),
+        children: vec![Node::Object(alias("Speed", "INT"))],
+    }));
+    let mut imported = Project::default();
+    imported.application.children = vec![
+        Node::Folder(crate::Folder {
+            name: "Types".into(),
+            children: vec![Node::Object(alias("Length", "REAL"))],
+        }),
+        Node::Folder(crate::Folder {
+            name: "Io".into(),
+            children: vec![Node::Object(list("Inputs", "theirs"))],
+        }),
+    ];
+    let merged = MergePlan::new(&open, &imported).apply(&open, &imported);
+    assert_eq!(
+        merged.application.locate("Length"),
+        Some((vec!["Types".to_owned()], 1))
+    );
+    assert_eq!(
+        merged.application.locate("Inputs"),
+        Some((vec!["Io".to_owned()], 0))
+    );
+    assert_eq!(merged.application.children.len(), 3);
+}
