@@ -225,17 +225,17 @@ fn a_clash_the_plan_does_not_know_of_is_skipped() {
 #[test]
 fn objects_go_into_the_folder_of_their_path_made_where_missing() {
     let mut open = project(vec![list("Globals", "mine")], vec![]);
-    open.application.children.push(Node::Folder(crate::Folder {
+    open.application.children.push(Node::Folder(Folder {
         name: "Types".into(),
         children: vec![Node::Object(alias("Speed", "INT"))],
     }));
     let mut imported = Project::default();
     imported.application.children = vec![
-        Node::Folder(crate::Folder {
+        Node::Folder(Folder {
             name: "Types".into(),
             children: vec![Node::Object(alias("Length", "REAL"))],
         }),
-        Node::Folder(crate::Folder {
+        Node::Folder(Folder {
             name: "Io".into(),
             children: vec![Node::Object(list("Inputs", "theirs"))],
         }),
