@@ -1,6 +1,6 @@
-//! The headless command line: `rivet check`, `rivet fmt`, `rivet build`, `rivet simulate`, and
-//! the online commands (`rivet status`, `download`, `start`, `stop`, `reset`, `read`, `write`,
-//! `force`, `unforce`, `forces`, `faults`) and the debugging ones (`break`, `step`, `continue`,
+//! The headless command line: `rivet check`, `rivet fmt`, `rivet build`, `rivet simulate`,
+//! `rivet import`, the online commands (`rivet status`, `download`, `start`, `stop`, `reset`,
+//! `read`, `write`, `force`, `unforce`, `forces`, `faults`) and the debugging ones (`break`, `step`, `continue`,
 //! `halt`, `stack`, `flow`).
 
 #![allow(clippy::print_stdout, clippy::print_stderr)] // Printing is what a CLI is for.
@@ -70,6 +70,22 @@ pub enum Command {
         /// Print one JSON object mapping each watched path to its value.
         #[arg(long)]
         json: bool,
+    },
+    /// Import a PLCopen XML file (CODESYS, Beremiz, OpenPLC) into a new project, or merge it
+    /// into an existing one; print the import report. Nothing is written unless the whole
+    /// import succeeds.
+    Import {
+        /// The PLCopen XML file.
+        file: PathBuf,
+        /// The new project's folder: it must not exist or be empty.
+        #[arg(short, long, required_unless_present = "into", conflicts_with = "into")]
+        output: Option<PathBuf>,
+        /// Merge into the project in this folder instead; what clashes with it is skipped.
+        #[arg(long)]
+        into: Option<PathBuf>,
+        /// With --into: replace what clashes instead of skipping it.
+        #[arg(long, requires = "into")]
+        replace: bool,
     },
     /// Work with a project's cam tables: list them, evaluate one, export its point table.
     Cam {
@@ -239,6 +255,23 @@ pub fn run(command: Command) -> ExitCode {
             watch,
             json,
         } => crate::build_cli::simulate(&project, cycles, &watch, json),
+        Command::Import {
+            file,
+            output,
+            into,
+            replace,
+        } => {
+            let target = match (output, into) {
+                (_, Some(project)) => crate::import_cli::ImportTarget::Into { project, replace },
+                (Some(dir), None) => crate::import_cli::ImportTarget::NewProject(dir),
+                (None, None) => {
+                    return fail(&anyhow::anyhow!(
+                        "name the new project's folder (-o) or the project to merge into (--into)"
+                    ));
+                }
+            };
+            crate::import_cli::run(&file, &target)
+        }
         Command::Cam { action } => crate::cam_cli::run(action),
         Command::Status { target } => online_cli::run(&target, OnlineCommand::Status),
         Command::Download {
@@ -330,11 +363,14 @@ pub fn run(command: Command) -> ExitCode {
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
-        Err(error) => {
-            report_error(&error);
-            ExitCode::FAILURE
-        }
+        Err(error) => fail(&error),
     }
+}
+
+/// Reports `error` and gives the failure exit code.
+fn fail(error: &anyhow::Error) -> ExitCode {
+    report_error(error);
+    ExitCode::FAILURE
 }
 
 /// Prints an error and its causes to standard error.

@@ -2,8 +2,8 @@
 //!
 //! `rivet` without a subcommand opens the studio (an eframe window) on a project folder, or on
 //! the example machine project when none is given. With a subcommand it works headless:
-//! `rivet check`, `rivet fmt`, `rivet build`, `rivet simulate`, and the online commands
-//! (`rivet status`, `download`, `start`, `stop`, `reset`, `read`, `write`, `force`, `unforce`,
+//! `rivet check`, `rivet fmt`, `rivet build`, `rivet simulate`, `rivet import`, and the online
+//! commands (`rivet status`, `download`, `start`, `stop`, `reset`, `read`, `write`, `force`, `unforce`,
 //! `forces`, `faults`) and the debugging ones (`break`, `step`, `continue`, `halt`, `stack`,
 //! `flow`) against a runtime.
 //!
@@ -18,9 +18,11 @@ pub mod debug_bodies;
 pub mod debug_cli;
 pub mod debug_places;
 pub mod debug_text;
+mod import_cli;
 mod literal_value;
 pub mod modbus_devices;
 pub mod online_change_cli;
 pub mod online_cli;
+pub mod plcopen_import;
 pub mod studio;
 pub mod value_text;

@@ -6,6 +6,9 @@ use std::fs;
 use std::path::Path;
 use std::process::{Command, Output};
 
+#[path = "cli/import.rs"]
+mod import;
+
 fn rivet(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_rivet"))
         .args(args)

@@ -29,6 +29,7 @@ mod history;
 mod identifier;
 mod io_area;
 mod list_edit;
+mod merge_plan;
 mod modbus_device;
 mod network;
 mod network_check;
@@ -81,6 +82,7 @@ pub use history::{History, Transaction};
 pub use identifier::{is_valid_identifier, same_identifier};
 pub use io_area::{IoArea, IoDirection};
 pub use list_edit::ListEdit;
+pub use merge_plan::{ClashChoice, IgnoredPart, MergeClash, MergeItem, MergePlan};
 pub use modbus_device::{ModbusBinding, ModbusDataType, ModbusDevice, ModbusTable, WordOrder};
 pub use network::{
     BlockCall, BlockInput, BlockOutput, Branch, Coil, CoilKind, EN_PIN, ENO_PIN, Edge, ElementId,

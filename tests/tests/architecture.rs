@@ -37,6 +37,8 @@ const ALLOWED_INTERNAL: &[(&str, &[&str])] = &[
             "editor",
             "motion",
             "online",
+            // `rivet import` and File ▸ Import PLCopen XML… (`docs/plcopen-xml.md` §6).
+            "plcopen",
             "program_image",
             "project_model",
             "runtime",

@@ -6,7 +6,7 @@ use online::{Reset, TargetState};
 
 use super::command::{Command, Commands};
 use super::debug::DebugCommand;
-use super::i18n::{ChartText, DebugText, Language, Text};
+use super::i18n::{ChartText, DebugText, ImportText, Language, Text};
 use super::online::{Phase, TargetKind};
 use super::pane::Pane;
 use super::settings::Theme;
@@ -95,6 +95,11 @@ impl Chrome<'_, '_> {
                 self.menu_item(ui, Text::Open, "Ctrl+O", true, Command::OpenDialog);
                 self.menu_item(ui, Text::Save, "Ctrl+S", has_project, Command::Save);
                 self.menu_item(ui, Text::SaveAs, "", has_project, Command::SaveAsDialog);
+                ui.separator();
+                let import = egui::Button::new(ImportText::MenuItem.get(language));
+                if ui.add(import).clicked() {
+                    self.commands.push(Command::ImportPlcopenDialog);
+                }
                 ui.separator();
                 self.menu_item(ui, Text::Quit, "", true, Command::Quit);
             });

@@ -24,6 +24,14 @@ pub(crate) enum Command {
     Save,
     /// Ask for a folder and save the project into it.
     SaveAsDialog,
+    /// Ask for a PLCopen XML file and preview its import (`docs/plcopen-xml.md` §6.2).
+    ImportPlcopenDialog,
+    /// Apply the import preview's plan to the open project, as one undo step.
+    ImportIntoProject,
+    /// Ask for an empty folder, write the previewed import there and open it.
+    ImportAsNewProjectDialog,
+    /// Close the import preview; nothing changes.
+    CloseImport,
     /// Close the window.
     Quit,
     /// Undo the last change.

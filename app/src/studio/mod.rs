@@ -18,6 +18,7 @@ mod error_texts;
 mod fonts;
 mod graphical_documents;
 mod i18n;
+mod import_dialog;
 #[cfg(test)]
 mod literal_tests;
 mod login_dialog;

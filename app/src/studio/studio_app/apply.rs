@@ -8,7 +8,7 @@ use crate::studio::command::Command;
 use crate::studio::debug::{Breakpoints, DebugCommand};
 use crate::studio::dock::Dock;
 use crate::studio::documents::close_stale_documents;
-use crate::studio::i18n::Text;
+use crate::studio::i18n::{ImportText, Text};
 use crate::studio::pane::Pane;
 use crate::studio::status::StatusMessage;
 
@@ -70,6 +70,25 @@ fn apply(studio: &mut Studio, dock: &mut Dock, command: Command, ctx: &egui::Con
                 studio.save_as(&dir);
             }
         }
+        Command::ImportPlcopenDialog => {
+            if let Some(path) = rfd::FileDialog::new()
+                .set_title(ImportText::PickFile.get(language))
+                .add_filter(ImportText::FileFilter.get(language), &["xml"])
+                .pick_file()
+            {
+                studio.open_import(path);
+            }
+        }
+        Command::ImportIntoProject => studio.import_into_project(),
+        Command::ImportAsNewProjectDialog => {
+            if let Some(dir) = rfd::FileDialog::new()
+                .set_title(ImportText::PickFolder.get(language))
+                .pick_folder()
+            {
+                studio.import_as_new_project(dock, &dir);
+            }
+        }
+        Command::CloseImport => studio.import = None,
         Command::Save => studio.save(),
         Command::Quit => ctx.send_viewport_cmd(egui::ViewportCommand::Close),
         Command::Undo | Command::Redo => studio.undo_redo(command == Command::Undo),

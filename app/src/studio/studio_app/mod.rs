@@ -6,6 +6,7 @@ mod build_flow;
 mod debug_flow;
 mod editor_hint;
 mod frame;
+mod import_flow;
 mod project_io;
 mod recovery_copy;
 mod shortcuts;
@@ -270,6 +271,23 @@ impl StudioApp {
         self.studio.shared.settings.target = target;
     }
 
+    /// Reads and converts a PLCopen XML file and shows the import preview, as File ▸ Import
+    /// PLCopen XML… does once the file is chosen.
+    pub fn import_plcopen(&mut self, path: &Path) {
+        self.studio.open_import(path.to_owned());
+    }
+
+    /// Whether the import preview is open.
+    pub fn is_import_open(&self) -> bool {
+        self.studio.import.is_some()
+    }
+
+    /// Writes the previewed import into `dir` and opens it, as the preview's "Import as new
+    /// project…" does once the folder is chosen.
+    pub fn import_as_new_project(&mut self, dir: &Path) {
+        self.studio.import_as_new_project(&mut self.dock, dir);
+    }
+
     /// Saves the open project to its folder.
     pub fn save(&mut self) {
         self.studio.save();
@@ -305,6 +323,7 @@ impl StudioApp {
         egui::Panel::bottom("status_bar").show(ui, |ui| chrome::status_bar_ui(ui, view));
         login_dialog::login_dialog_ui(ui.ctx(), view, commands);
         studio.recovery_dialog_ui(ui.ctx());
+        studio.import_dialog_ui(ui.ctx());
         let view = studio.shared.view();
         egui::CentralPanel::default_margins().show(ui, |ui| {
             let mut behavior = PaneBehavior {

@@ -12,6 +12,7 @@ use crate::studio::chrome::ChromeState;
 use crate::studio::command::Commands;
 use crate::studio::cycle_plot::CycleHistory;
 use crate::studio::debug::DebugState;
+use crate::studio::import_dialog::ImportDialog;
 use crate::studio::online::{Online, OnlineMessage};
 use crate::studio::pane_states::PaneStates;
 use crate::studio::recovery::{Recovered, Recovery};
@@ -47,6 +48,8 @@ pub(crate) struct Studio {
     pub(super) waker_set: bool,
     /// Copies of unsaved changes.
     pub(super) recovery: RecoveryCopies,
+    /// The preview of a PLCopen XML import, while it is open.
+    pub(super) import: Option<ImportDialog>,
 }
 
 /// What panes read of the studio; changed only between frames, by the studio.
@@ -129,6 +132,7 @@ impl Studio {
                 schedule: RecoverySchedule::default(),
                 writing: None,
             },
+            import: None,
         }
     }
 
