@@ -86,7 +86,12 @@ impl<'d> Converter<'d> {
 
     /// Lists every `addData` entry of an element as kept opaque.
     pub fn opaque(&mut self, add_data: &AddData, path: &str, line: u32) {
-        for entry in &add_data.entries {
+        // Rivet's own entries are read back, not kept (§5.4).
+        for entry in add_data
+            .entries
+            .iter()
+            .filter(|entry| !is_rivet_entry(&entry.name))
+        {
             self.report.push(
                 Outcome::KeptOpaque,
                 format!("addData '{}'", entry.name),
@@ -96,6 +101,11 @@ impl<'d> Converter<'d> {
             );
         }
     }
+}
+
+/// True for the entries of Rivet's own data, which the import reads rather than keeps.
+pub(super) fn is_rivet_entry(name: &str) -> bool {
+    name.starts_with(crate::rivet_data::RIVET_NAMESPACE)
 }
 
 /// The comment of a documentation: its text without the blank lines and spaces around it.

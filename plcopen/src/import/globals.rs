@@ -67,7 +67,20 @@ impl Converter<'_> {
         owner_path: &str,
     ) -> Result<(), ImportError> {
         let mut unnamed: Option<(GlobalVarList, Place)> = None;
+        let restored = Self::rivet_list_names(lists);
         for list in lists {
+            if let Some(name) = &list.name
+                && restored.contains(name)
+            {
+                let place = Place {
+                    path: format!("{owner_path}/globalVars[@name='{name}']"),
+                    line: list.line,
+                    column: list.column,
+                };
+                // Only the last list of the name carries the entry; the others are its parts.
+                self.rivet_list(list, &place)?;
+                continue;
+            }
             let variables = self.variables(std::slice::from_ref(list), owner_path, list.line)?;
             let (list_line, list_column) = (list.line, list.column);
             match &list.name {

@@ -1,0 +1,31 @@
+//! The export of a Rivet project as a PLCopen TC6 XML v2.01 document (`docs/plcopen-xml.md` §5).
+//!
+//! The document is written with quick-xml's streaming writer straight from the project: the
+//! reader's `Document` model says what a file holds, while the export only needs to say what the
+//! project holds, and a writer needs no tree.
+
+mod data_types;
+mod error;
+mod graph_bodies;
+mod pous;
+mod project_writer;
+mod rivet_entries;
+mod type_xml;
+mod variables;
+mod xml_writer;
+
+#[cfg(test)]
+mod export_tests;
+#[cfg(test)]
+mod round_trip_tests;
+
+pub use error::ExportError;
+
+/// The document `project` exports to: UTF-8 bytes of a v2.01 document that the schema accepts.
+///
+/// The same project always gives the same bytes: nothing is taken from the clock or the
+/// machine. What the schema has no place for is written as Rivet's `addData` (§5.4), so
+/// [`crate::import`] gives the project back.
+pub fn export(project: &project_model::Project) -> Result<Vec<u8>, ExportError> {
+    project_writer::ProjectWriter::new(project)?.write()
+}

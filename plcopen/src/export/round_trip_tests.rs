@@ -1,0 +1,85 @@
+//! Round trips through the export: the example project and every corpus file, validated by
+//! xmllint against the v2.01 schema, imported back equal, and exported again to the same bytes.
+
+use std::path::PathBuf;
+use std::process::Command;
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+use project_model::{Object, Project};
+
+use super::export;
+use crate::import::corpus_tests::FILES;
+use crate::reader::corpus_tests::{corpora, read_corpus};
+use crate::{import, read_bytes};
+
+/// Checks `xml` against the v2.01 schema with xmllint (Debian's libxml2-utils, which
+/// `scripts/test.sh` installs).
+#[track_caller]
+pub(super) fn assert_valid(xml: &[u8], what: &str) {
+    static COUNT: AtomicUsize = AtomicUsize::new(0);
+    let file = std::env::temp_dir().join(format!(
+        "rivet-plcopen-export-{}-{}.xml",
+        std::process::id(),
+        COUNT.fetch_add(1, Ordering::Relaxed)
+    ));
+    std::fs::write(&file, xml).unwrap();
+    let schema: PathBuf = corpora().join("plcopen/schema/tc6_xml_v201.xsd");
+    let output = Command::new("xmllint")
+        .arg("--noout")
+        .arg("--schema")
+        .arg(&schema)
+        .arg(&file)
+        .output()
+        .unwrap_or_else(|error| {
+            panic!("xmllint (Debian package libxml2-utils) cannot be run: {error}")
+        });
+    let _ = std::fs::remove_file(&file);
+    assert!(
+        output.status.success(),
+        "{what}: the export does not validate:\n{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+}
+
+/// Exports `project`, checks the document, imports it back and checks the project and a second
+/// export; gives the document.
+#[track_caller]
+pub(super) fn assert_round_trip(project: &Project, what: &str) -> Vec<u8> {
+    let xml = export(project).unwrap_or_else(|error| panic!("{what}: {error}"));
+    assert_valid(&xml, what);
+    let document = read_bytes(&xml, "export.xml").unwrap_or_else(|error| panic!("{what}: {error}"));
+    let imported = import(&document).unwrap_or_else(|error| panic!("{what}: {error}"));
+    assert_eq!(
+        &imported.project, project,
+        "{what}: the project came back changed"
+    );
+    let again = export(&imported.project).unwrap_or_else(|error| panic!("{what}: {error}"));
+    assert!(xml == again, "{what}: the second export differs");
+    xml
+}
+
+#[test]
+fn the_example_project_round_trips_through_a_valid_document() {
+    let loaded = project_model::load_project(&assets::example_project_dir()).unwrap();
+    let project = loaded.project;
+    let xml = assert_round_trip(&project, "the example project");
+    // Other tools see the POUs and lists as PLCopen, not only in Rivet's data.
+    let document = read_bytes(&xml, "export.xml").unwrap();
+    let pous = project
+        .application
+        .objects()
+        .into_iter()
+        .filter(|object| matches!(object, Object::Pou(_)))
+        .count();
+    assert_eq!(document.pous.len(), pous);
+    assert!(!document.configurations[0].resources[0].tasks.is_empty());
+}
+
+#[test]
+fn every_corpus_project_round_trips_through_a_valid_document() {
+    for file in FILES {
+        let document = read_corpus(file);
+        let imported = import(&document).unwrap_or_else(|error| panic!("{file}: {error}"));
+        assert_round_trip(&imported.project, file);
+    }
+}

@@ -1,0 +1,145 @@
+//! Declarations as PLCopen variable lists, and formatted text.
+
+use project_model::{GlobalVarList, VarSection, Variable};
+
+use super::error::ExportError;
+use super::project_writer::ProjectWriter;
+use super::type_xml::{write_type, write_value};
+
+/// The list element a section's variables are written in. PLCopen has no static, instance or
+/// configuration lists: those are written as local or global lists, and Rivet's object entry
+/// keeps the section.
+pub(super) fn list_element(section: VarSection) -> &'static str {
+    match section {
+        VarSection::Var | VarSection::VarStat | VarSection::VarInst => "localVars",
+        VarSection::VarInput => "inputVars",
+        VarSection::VarOutput => "outputVars",
+        VarSection::VarInOut => "inOutVars",
+        VarSection::VarGlobal | VarSection::VarConfig => "globalVars",
+        VarSection::VarExternal => "externalVars",
+        VarSection::VarTemp => "tempVars",
+    }
+}
+
+impl ProjectWriter<'_> {
+    /// Writes `variables` as lists in declaration order: consecutive variables of one list
+    /// element and the same flags share a list.
+    pub(super) fn variable_lists(&mut self, variables: &[Variable]) -> Result<(), ExportError> {
+        for run in runs(variables, |variable| list_element(variable.section)) {
+            let element = run
+                .first()
+                .map_or("localVars", |variable| list_element(variable.section));
+            self.variable_list(element, None, run, None)?;
+        }
+        Ok(())
+    }
+
+    /// Writes a global variable list as `globalVars` named after it (more than one when its
+    /// variables' flags differ); the last one carries the list's Rivet entry.
+    pub(super) fn global_list(&mut self, list: &GlobalVarList) -> Result<(), ExportError> {
+        self.xml.context = format!("global variable list '{}'", list.name);
+        let name = list.name.as_str();
+        let lists = runs(&list.variables, |_| "globalVars");
+        if lists.is_empty() {
+            self.xml.start("globalVars", &[("name", name)])?;
+            self.list_add_data(list)?;
+            return self.xml.end("globalVars");
+        }
+        let last = lists.len() - 1;
+        for (index, run) in lists.into_iter().enumerate() {
+            let entry_of = (index == last).then_some(list);
+            self.variable_list("globalVars", Some(name), run, entry_of)?;
+        }
+        Ok(())
+    }
+
+    /// One list element, with the Rivet entry of `entry_of` when given.
+    fn variable_list(
+        &mut self,
+        element: &'static str,
+        name: Option<&str>,
+        variables: &[Variable],
+        entry_of: Option<&GlobalVarList>,
+    ) -> Result<(), ExportError> {
+        let mut attributes = Vec::new();
+        if let Some(name) = name {
+            attributes.push(("name", name));
+        }
+        if let Some(first) = variables.first() {
+            if first.constant {
+                attributes.push(("constant", "true"));
+            }
+            if first.retain {
+                attributes.push(("retain", "true"));
+            }
+            if first.persistent {
+                attributes.push(("persistent", "true"));
+            }
+        }
+        self.xml.start(element, &attributes)?;
+        for variable in variables {
+            self.variable(variable)?;
+        }
+        if let Some(list) = entry_of {
+            self.list_add_data(list)?;
+        }
+        self.xml.end(element)
+    }
+
+    fn variable(&mut self, variable: &Variable) -> Result<(), ExportError> {
+        let mut attributes = vec![("name", variable.name.as_str())];
+        if let Some(address) = &variable.address {
+            attributes.push(("address", address));
+        }
+        self.xml.start("variable", &attributes)?;
+        self.xml.start("type", &[])?;
+        write_type(&mut self.xml, &variable.ty)?;
+        self.xml.end("type")?;
+        if let Some(initial) = &variable.initial {
+            self.xml.start("initialValue", &[])?;
+            write_value(&mut self.xml, initial)?;
+            self.xml.end("initialValue")?;
+        }
+        self.documentation(&variable.comment)?;
+        self.xml.end("variable")
+    }
+
+    /// Writes `documentation` with the text in an XHTML paragraph, unless the text is empty.
+    pub(super) fn documentation(&mut self, text: &str) -> Result<(), ExportError> {
+        if text.is_empty() {
+            return Ok(());
+        }
+        self.xml.start("documentation", &[])?;
+        self.formatted_text(text)?;
+        self.xml.end("documentation")
+    }
+
+    /// Writes the content of a `formattedText`: `<xhtml:p>` with the text as CDATA, as Beremiz
+    /// writes it.
+    pub(super) fn formatted_text(&mut self, text: &str) -> Result<(), ExportError> {
+        self.xml.start("xhtml:p", &[])?;
+        self.xml.cdata(text)?;
+        self.xml.end("xhtml:p")
+    }
+}
+
+/// Consecutive variables with the same list element and flags.
+fn runs(variables: &[Variable], element: impl Fn(&Variable) -> &'static str) -> Vec<&[Variable]> {
+    let key = |variable: &Variable| {
+        (
+            element(variable),
+            variable.constant,
+            variable.retain,
+            variable.persistent,
+        )
+    };
+    let mut runs = Vec::new();
+    let mut start = 0;
+    for at in 1..=variables.len() {
+        if at == variables.len() || key(&variables[at]) != key(&variables[start]) {
+            runs.push(&variables[start..at]);
+            start = at;
+        }
+    }
+    runs
+}
