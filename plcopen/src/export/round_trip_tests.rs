@@ -12,10 +12,9 @@ use crate::import::corpus_tests::FILES;
 use crate::reader::corpus_tests::{corpora, read_corpus};
 use crate::{import, read_bytes};
 
-/// Checks `xml` against the v2.01 schema with xmllint (Debian's libxml2-utils, which
-/// `scripts/test.sh` installs).
-#[track_caller]
-pub(super) fn assert_valid(xml: &[u8], what: &str) {
+/// What xmllint (Debian's libxml2-utils, which `scripts/test.sh` installs) says against `xml`
+/// when the v2.01 schema refuses it.
+fn schema_errors(xml: &[u8]) -> Option<String> {
     static COUNT: AtomicUsize = AtomicUsize::new(0);
     let file = std::env::temp_dir().join(format!(
         "rivet-plcopen-export-{}-{}.xml",
@@ -34,11 +33,30 @@ pub(super) fn assert_valid(xml: &[u8], what: &str) {
             panic!("xmllint (Debian package libxml2-utils) cannot be run: {error}")
         });
     let _ = std::fs::remove_file(&file);
-    assert!(
-        output.status.success(),
-        "{what}: the export does not validate:\n{}",
-        String::from_utf8_lossy(&output.stderr)
-    );
+    (!output.status.success()).then(|| String::from_utf8_lossy(&output.stderr).into_owned())
+}
+
+/// Checks `xml` against the v2.01 schema.
+#[track_caller]
+pub(super) fn assert_valid(xml: &[u8], what: &str) {
+    if let Some(errors) = schema_errors(xml) {
+        panic!("{what}: the export does not validate:\n{errors}");
+    }
+}
+
+#[test]
+fn the_schema_check_refuses_what_the_schema_does_not_accept() {
+    let text = String::from_utf8(export(&Project::default()).unwrap()).unwrap();
+    assert!(text.contains("<resource name=\"Application\">"), "{text}");
+    // A task without its required priority.
+    let xml = text
+        .replace(
+            "<resource name=\"Application\">",
+            "<resource name=\"Application\"><task name=\"t\"/>",
+        )
+        .into_bytes();
+    let errors = schema_errors(&xml).expect("xmllint accepted a task without priority");
+    assert!(errors.contains("priority"), "{errors}");
 }
 
 /// Exports `project`, checks the document, imports it back and checks the project and a second
@@ -81,5 +99,19 @@ fn every_corpus_project_round_trips_through_a_valid_document() {
         let document = read_corpus(file);
         let imported = import(&document).unwrap_or_else(|error| panic!("{file}: {error}"));
         assert_round_trip(&imported.project, file);
+    }
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig {
+        cases: 24,
+        ..proptest::prelude::ProptestConfig::default()
+    })]
+
+    #[test]
+    fn a_generated_project_round_trips_through_a_valid_document(
+        project in project_model::arb::project()
+    ) {
+        assert_round_trip(&project, "a generated project");
     }
 }
