@@ -46,6 +46,7 @@ mod task;
 mod trace;
 mod validate;
 mod variable;
+mod vendor_data;
 mod watch;
 
 #[cfg(feature = "proptest")]
@@ -73,7 +74,7 @@ pub use dialect::Dialect;
 pub use edit::{Edit, EditError, TextTarget, TreeEdit, VarOwner};
 pub use files::{
     APPLICATION_DIR, FORMAT_VERSION, HeldBackObject, LoadError, LoadProblem, LoadedProject,
-    MANIFEST_FILE_NAME, SaveError, SaveReport, Severity, StBody, load_project, object_files,
+    MANIFEST_FILE_NAME, SaveError, VENDOR_DATA_FILE_NAME, SaveReport, Severity, StBody, load_project, object_files,
     save_project, save_project_keeping, st_body_files,
 };
 pub use gvl::GlobalVarList;
@@ -109,4 +110,5 @@ pub use sfc_problem::{SfcNodeKind, SfcProblem, SfcProblemKind};
 pub use task::{Task, TaskKind, Watchdog};
 pub use trace::{TraceConfig, TraceTrigger, TraceTriggerCondition, TraceVariable};
 pub use variable::{VarSection, Variable};
+pub use vendor_data::{VendorData, VendorEntry};
 pub use watch::{WatchEntry, WatchList};
