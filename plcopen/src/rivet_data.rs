@@ -19,6 +19,11 @@ pub(crate) const PROJECT_ENTRY: &str = "https://rivet-plc.dev/plcopen/1/project"
 /// `addData`) holding the object's file.
 pub(crate) const OBJECT_ENTRY: &str = "https://rivet-plc.dev/plcopen/1/object";
 
+/// The entry of the project's `addData` holding another tool's entry whose place the export does
+/// not write (a POU Rivet did not convert, for one): `<vendor place="…">` with the entry's XML
+/// as text.
+pub(crate) const VENDOR_ENTRY: &str = "https://rivet-plc.dev/plcopen/1/vendor";
+
 /// What the project entry holds: the device tree, the dialect and the application tree, which
 /// PLCopen has no place for (its tasks are also written as PLCopen tasks, but Rivet's carry a
 /// watchdog and events PLCopen cannot say).
@@ -179,6 +184,28 @@ pub(crate) fn parse_project_entry(xml: &str) -> Result<ProjectEntry, String> {
         return Err(format!("expected a `project` element of {RIVET_NAMESPACE}"));
     }
     toml::from_str(&child_text(element)).map_err(|error| error.to_string())
+}
+
+/// Reads a vendor entry kept in a `…/vendor` entry: its place and XML.
+pub(crate) fn parse_vendor_entry(xml: &str) -> Result<project_model::VendorEntry, String> {
+    let document = roxmltree::Document::parse(xml).map_err(|error| error.to_string())?;
+    let element = document
+        .root_element()
+        .children()
+        .find(|node| node.is_element())
+        .ok_or("the entry holds no element")?;
+    if element.tag_name().namespace() != Some(RIVET_NAMESPACE)
+        || element.tag_name().name() != "vendor"
+    {
+        return Err(format!("expected a `vendor` element of {RIVET_NAMESPACE}"));
+    }
+    Ok(project_model::VendorEntry {
+        place: element
+            .attribute("place")
+            .ok_or("`place` is missing")?
+            .to_owned(),
+        xml: child_text(element),
+    })
 }
 
 /// The text of an element: its text and CDATA nodes joined.

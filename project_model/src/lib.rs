@@ -74,8 +74,8 @@ pub use dialect::Dialect;
 pub use edit::{Edit, EditError, TextTarget, TreeEdit, VarOwner};
 pub use files::{
     APPLICATION_DIR, FORMAT_VERSION, HeldBackObject, LoadError, LoadProblem, LoadedProject,
-    MANIFEST_FILE_NAME, SaveError, VENDOR_DATA_FILE_NAME, SaveReport, Severity, StBody, load_project, object_files,
-    save_project, save_project_keeping, st_body_files,
+    MANIFEST_FILE_NAME, SaveError, SaveReport, Severity, StBody, VENDOR_DATA_FILE_NAME,
+    load_project, object_files, save_project, save_project_keeping, st_body_files,
 };
 pub use gvl::GlobalVarList;
 pub use history::{History, Transaction};

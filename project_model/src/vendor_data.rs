@@ -1,5 +1,5 @@
 //! Data other tools wrote into an imported PLCopen XML file that Rivet does not model, kept in
-//! the project so an export writes it back where it came from (`docs/plcopen-xml.md` §2.6, §5.6).
+//! the project so an export writes it back where it came from (`docs/plcopen-xml.md` §2.6, §5.5).
 
 use serde::{Deserialize, Serialize};
 
@@ -38,7 +38,9 @@ impl VendorData {
 
     /// The entries of `place`, in order.
     pub fn at<'a>(&'a self, place: &'a str) -> impl Iterator<Item = &'a VendorEntry> + 'a {
-        self.entries.iter().filter(move |entry| entry.place == place)
+        self.entries
+            .iter()
+            .filter(move |entry| entry.place == place)
     }
 }
 
@@ -68,7 +70,11 @@ mod tests {
         let dir = tempfile::tempdir().unwrap();
         let project = with_vendor_data();
         let saved = save_project(&project, dir.path(), &BTreeSet::new()).unwrap();
-        assert!(saved.files.contains(std::path::Path::new(VENDOR_DATA_FILE_NAME)));
+        assert!(
+            saved
+                .files
+                .contains(std::path::Path::new(VENDOR_DATA_FILE_NAME))
+        );
         let loaded = load_project(dir.path()).unwrap();
         assert_eq!(loaded.project, project);
         assert!(loaded.warnings.is_empty(), "{:?}", loaded.warnings);
@@ -83,7 +89,10 @@ mod tests {
             ..Project::default()
         };
         let second = save_project(&emptied, dir.path(), &saved.files).unwrap();
-        assert_eq!(second.removed, vec![std::path::PathBuf::from(VENDOR_DATA_FILE_NAME)]);
+        assert_eq!(
+            second.removed,
+            vec![std::path::PathBuf::from(VENDOR_DATA_FILE_NAME)]
+        );
         assert!(!dir.path().join(VENDOR_DATA_FILE_NAME).exists());
         assert_eq!(load_project(dir.path()).unwrap().project, emptied);
     }

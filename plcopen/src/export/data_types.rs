@@ -35,6 +35,11 @@ impl ProjectWriter<'_> {
                 }
                 self.xml.end("struct")?;
             }
+            // The schema wants at least one value; an enumeration without any is written as its
+            // base type, and Rivet's entry keeps what it is.
+            TypeDefinition::Enum { base, values } if values.is_empty() => {
+                write_type(&mut self.xml, base.as_deref().unwrap_or("INT"))?;
+            }
             TypeDefinition::Enum { base, values } => {
                 self.xml.start("enum", &[])?;
                 self.xml.start("values", &[])?;
@@ -65,6 +70,7 @@ impl ProjectWriter<'_> {
             self.xml.end("initialValue")?;
         }
         self.xml.start("addData", &[])?;
+        self.vendor_entries(&format!("type:{}", data_type.name))?;
         let toml = toml_text(data_type, &self.xml.context)?;
         self.entry(ObjectEntryKind::DataType, &data_type.name, &toml, &[])?;
         self.xml.end("addData")?;

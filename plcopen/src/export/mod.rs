@@ -9,9 +9,12 @@ mod error;
 mod graph_bodies;
 mod pous;
 mod project_writer;
+
+pub(crate) use project_writer::CREATION_DATE_TIME;
 mod rivet_entries;
 mod type_xml;
 mod variables;
+mod vendor_entries;
 mod xml_writer;
 
 #[cfg(test)]

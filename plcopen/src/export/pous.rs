@@ -24,13 +24,15 @@ impl ProjectWriter<'_> {
         };
         self.xml
             .start("pou", &[("name", &pou.name), ("pouType", pou_type)])?;
-        self.interface(pou.return_type.as_deref(), &pou.variables)?;
+        let place = format!("pou:{}", pou.name);
+        self.interface(pou.return_type.as_deref(), &pou.variables, Some(&place))?;
         if !pou.actions.is_empty() {
             self.xml.start("actions", &[])?;
             for action in &pou.actions {
                 self.xml.context = format!("action '{}.{}'", pou.name, action.name);
                 self.xml.start("action", &[("name", &action.name)])?;
-                self.body(&action.body, true)?;
+                self.body(&action.body, true, None)?;
+                self.vendor_add_data(&format!("{place}/action:{}", action.name))?;
                 self.xml.end("action")?;
             }
             self.xml.end("actions")?;
@@ -41,13 +43,14 @@ impl ProjectWriter<'_> {
                 self.xml.context = format!("transition '{}.{}'", pou.name, transition.name);
                 self.xml
                     .start("transition", &[("name", &transition.name)])?;
-                self.body(&transition.body, true)?;
+                self.body(&transition.body, true, None)?;
+                self.vendor_add_data(&format!("{place}/transition:{}", transition.name))?;
                 self.xml.end("transition")?;
             }
             self.xml.end("transitions")?;
         }
         self.xml.context = format!("POU '{}'", pou.name);
-        self.body(&pou.body, false)?;
+        self.body(&pou.body, false, Some(&format!("{place}/body")))?;
         self.xml.start("addData", &[])?;
         for method in &pou.methods {
             self.xml.context = format!("method '{}.{}'", pou.name, method.name);
@@ -59,14 +62,15 @@ impl ProjectWriter<'_> {
                 ],
             )?;
             self.xml.start("Method", &[("name", &method.name)])?;
-            self.interface(method.return_type.as_deref(), &method.variables)?;
-            self.body(&method.body, false)?;
+            self.interface(method.return_type.as_deref(), &method.variables, None)?;
+            self.body(&method.body, false, None)?;
             self.xml.empty("addData", &[])?;
             self.documentation(&method.comment)?;
             self.xml.end("Method")?;
             self.xml.end("data")?;
         }
         self.xml.context = format!("POU '{}'", pou.name);
+        self.vendor_entries(&place)?;
         let toml = toml_text(pou, &self.xml.context)?;
         let mut accessor_texts = Vec::new();
         for property in &pou.properties {
@@ -82,13 +86,19 @@ impl ProjectWriter<'_> {
         self.xml.end("pou")
     }
 
-    /// Writes an `interface` when there is a return type or a declaration.
+    /// Writes an `interface` when there is a return type, a declaration or vendor data; `owner`
+    /// is the place of the POU (§5.5), `None` for a method.
     fn interface(
         &mut self,
         return_type: Option<&str>,
         variables: &[Variable],
+        owner: Option<&str>,
     ) -> Result<(), ExportError> {
-        if return_type.is_none() && variables.is_empty() {
+        let place = owner.map(|owner| format!("{owner}/interface"));
+        let vendor = place
+            .as_deref()
+            .is_some_and(|place| self.has_vendor_entries(place));
+        if return_type.is_none() && variables.is_empty() && !vendor {
             return Ok(());
         }
         self.xml.start("interface", &[])?;
@@ -97,16 +107,25 @@ impl ProjectWriter<'_> {
             write_type(&mut self.xml, return_type)?;
             self.xml.end("returnType")?;
         }
-        self.variable_lists(variables)?;
+        self.variable_lists(variables, owner)?;
+        if let Some(place) = &place {
+            self.vendor_add_data(place)?;
+        }
         self.xml.end("interface")
     }
 
     /// Writes a body; `required` where the schema requires one (actions, transitions), so an
-    /// empty one is written for a body without implementation.
-    fn body(&mut self, body: &Body, required: bool) -> Result<(), ExportError> {
+    /// empty one is written for a body without implementation; `place` names the body's vendor
+    /// data (§5.5).
+    fn body(
+        &mut self,
+        body: &Body,
+        required: bool,
+        place: Option<&str>,
+    ) -> Result<(), ExportError> {
         match body {
-            Body::St { text } => self.st_body(text),
-            Body::None if required => self.st_body(""),
+            Body::St { text } => self.st_body(text, place),
+            Body::None if required => self.st_body("", place),
             Body::None => Ok(()),
             Body::Ld { .. } | Body::Fbd { .. } | Body::Cfc { .. } | Body::Sfc { .. } => {
                 self.graphical_body(body, required)
@@ -114,11 +133,14 @@ impl ProjectWriter<'_> {
         }
     }
 
-    fn st_body(&mut self, text: &str) -> Result<(), ExportError> {
+    fn st_body(&mut self, text: &str, place: Option<&str>) -> Result<(), ExportError> {
         self.xml.start("body", &[])?;
         self.xml.start("ST", &[])?;
         self.formatted_text(text)?;
         self.xml.end("ST")?;
+        if let Some(place) = place {
+            self.vendor_add_data(place)?;
+        }
         self.xml.end("body")
     }
 }

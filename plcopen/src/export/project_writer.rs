@@ -1,6 +1,8 @@
 //! The document's frame: headers, the application's objects in order, instances and Rivet's
 //! project data.
 
+use std::collections::HashSet;
+
 use project_model::{Folder, Node, Object, Project, TaskKind};
 
 use super::error::ExportError;
@@ -14,7 +16,7 @@ pub(super) const XHTML_NAMESPACE: &str = "http://www.w3.org/1999/xhtml";
 
 /// The `creationDateTime` of every export: the schema requires one, and the export must give the
 /// same bytes for the same project, so it is fixed rather than taken from the clock.
-pub(super) const CREATION_DATE_TIME: &str = "1970-01-01T00:00:00";
+pub(crate) const CREATION_DATE_TIME: &str = "1970-01-01T00:00:00";
 
 /// The name of the one resource the controller's tasks and lists are written in.
 pub(super) const RESOURCE_NAME: &str = "Application";
@@ -25,6 +27,8 @@ pub(super) struct ProjectWriter<'p> {
     pub project: &'p Project,
     /// The document so far.
     pub xml: XmlWriter,
+    /// The places of the vendor data written so far (§5.5).
+    pub written_places: HashSet<String>,
 }
 
 impl<'p> ProjectWriter<'p> {
@@ -33,6 +37,7 @@ impl<'p> ProjectWriter<'p> {
         Ok(Self {
             project,
             xml: XmlWriter::new()?,
+            written_places: HashSet::new(),
         })
     }
 
@@ -53,7 +58,14 @@ impl<'p> ProjectWriter<'p> {
                 ("companyName", "Rivet"),
                 ("productName", "Rivet"),
                 ("productVersion", env!("CARGO_PKG_VERSION")),
-                ("creationDateTime", CREATION_DATE_TIME),
+                (
+                    "creationDateTime",
+                    project
+                        .vendor_data
+                        .creation_date_time
+                        .as_deref()
+                        .unwrap_or(CREATION_DATE_TIME),
+                ),
             ],
         )?;
         self.xml
@@ -69,6 +81,7 @@ impl<'p> ProjectWriter<'p> {
             self.xml.end(language)?;
         }
         self.xml.end("coordinateInfo")?;
+        self.vendor_add_data("contentHeader")?;
         self.xml.end("contentHeader")?;
 
         let objects = project.application.objects();
@@ -91,6 +104,7 @@ impl<'p> ProjectWriter<'p> {
 
         self.instances(&objects)?;
         self.xml.start("addData", &[])?;
+        self.vendor_entries("project")?;
         self.project_entry()?;
         for object in &objects {
             match object {
@@ -100,6 +114,7 @@ impl<'p> ProjectWriter<'p> {
                 Object::Pou(_) | Object::Gvl(_) | Object::DataType(_) => {}
             }
         }
+        self.leftover_vendor_entries()?;
         self.xml.end("addData")?;
         self.xml.end("project")?;
         Ok(self.xml.finish())
@@ -129,7 +144,8 @@ impl<'p> ProjectWriter<'p> {
                 TaskKind::Freewheeling => {}
             }
             attributes.push(("priority", &priority));
-            if task.programs.is_empty() {
+            let place = format!("task:{}", task.name);
+            if task.programs.is_empty() && !self.has_vendor_entries(&place) {
                 self.xml.empty("task", &attributes)?;
                 continue;
             }
@@ -138,6 +154,7 @@ impl<'p> ProjectWriter<'p> {
                 self.xml
                     .empty("pouInstance", &[("name", program), ("typeName", program)])?;
             }
+            self.vendor_add_data(&place)?;
             self.xml.end("task")?;
         }
         for object in objects {
@@ -145,7 +162,9 @@ impl<'p> ProjectWriter<'p> {
                 self.global_list(list)?;
             }
         }
+        self.vendor_add_data("resource")?;
         self.xml.end("resource")?;
+        self.vendor_add_data("configuration")?;
         self.xml.end("configuration")?;
         self.xml.end("configurations")?;
         self.xml.end("instances")

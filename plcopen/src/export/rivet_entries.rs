@@ -75,6 +75,7 @@ impl ProjectWriter<'_> {
     pub(super) fn list_add_data(&mut self, list: &GlobalVarList) -> Result<(), ExportError> {
         let toml = toml_text(list, &self.xml.context)?;
         self.xml.start("addData", &[])?;
+        self.vendor_entries(&format!("gvl:{}", list.name))?;
         self.entry(ObjectEntryKind::Gvl, &list.name, &toml, &[])?;
         self.xml.end("addData")
     }

@@ -98,7 +98,16 @@ fn every_corpus_project_round_trips_through_a_valid_document() {
     for file in FILES {
         let document = read_corpus(file);
         let imported = import(&document).unwrap_or_else(|error| panic!("{file}: {error}"));
-        assert_round_trip(&imported.project, file);
+        let xml = assert_round_trip(&imported.project, file);
+        // Every entry another tool wrote goes back, as it was.
+        let text = String::from_utf8(xml).unwrap();
+        for entry in &imported.project.vendor_data.entries {
+            assert!(
+                text.contains(&entry.xml) || text.contains(&format!("<![CDATA[{}", entry.xml)),
+                "{file}: the entry at {} is not written back",
+                entry.place
+            );
+        }
     }
 }
 
@@ -114,4 +123,30 @@ proptest::proptest! {
     ) {
         assert_round_trip(&project, "a generated project");
     }
+}
+
+#[test]
+fn codesys_entries_go_back_into_the_element_they_came_from() {
+    let file = "plcopen/codesys/codesys_code_execution_speedTests.xml";
+    let imported = import(&read_corpus(file)).unwrap();
+    let kept = &imported.project.vendor_data;
+    assert!(
+        kept.at("pou:x01_ImpactOfDynamicArrays").next().is_some(),
+        "{kept:?}"
+    );
+    let xml = export(&imported.project).unwrap();
+    let document = read_bytes(&xml, "export.xml").unwrap();
+    let pou = document
+        .pous
+        .iter()
+        .find(|pou| pou.name == "x01_ImpactOfDynamicArrays")
+        .unwrap();
+    assert!(
+        pou.add_data
+            .entries
+            .iter()
+            .any(|entry| entry.name.ends_with("/objectid")),
+        "{:?}",
+        pou.add_data
+    );
 }

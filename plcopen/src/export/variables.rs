@@ -24,12 +24,17 @@ pub(super) fn list_element(section: VarSection) -> &'static str {
 impl ProjectWriter<'_> {
     /// Writes `variables` as lists in declaration order: consecutive variables of one list
     /// element and the same flags share a list.
-    pub(super) fn variable_lists(&mut self, variables: &[Variable]) -> Result<(), ExportError> {
+    /// `owner` is the place of the POU whose variables they are (§5.5), `None` for a method.
+    pub(super) fn variable_lists(
+        &mut self,
+        variables: &[Variable],
+        owner: Option<&str>,
+    ) -> Result<(), ExportError> {
         for run in runs(variables, |variable| list_element(variable.section)) {
             let element = run
                 .first()
                 .map_or("localVars", |variable| list_element(variable.section));
-            self.variable_list(element, None, run, None)?;
+            self.variable_list(element, None, run, None, owner)?;
         }
         Ok(())
     }
@@ -48,7 +53,8 @@ impl ProjectWriter<'_> {
         let last = lists.len() - 1;
         for (index, run) in lists.into_iter().enumerate() {
             let entry_of = (index == last).then_some(list);
-            self.variable_list("globalVars", Some(name), run, entry_of)?;
+            let owner = format!("gvl:{name}");
+            self.variable_list("globalVars", Some(name), run, entry_of, Some(&owner))?;
         }
         Ok(())
     }
@@ -60,6 +66,7 @@ impl ProjectWriter<'_> {
         name: Option<&str>,
         variables: &[Variable],
         entry_of: Option<&GlobalVarList>,
+        owner: Option<&str>,
     ) -> Result<(), ExportError> {
         let mut attributes = Vec::new();
         if let Some(name) = name {
@@ -78,7 +85,8 @@ impl ProjectWriter<'_> {
         }
         self.xml.start(element, &attributes)?;
         for variable in variables {
-            self.variable(variable)?;
+            let place = owner.map(|owner| format!("{owner}/variable:{}", variable.name));
+            self.variable(variable, place.as_deref())?;
         }
         if let Some(list) = entry_of {
             self.list_add_data(list)?;
@@ -86,7 +94,7 @@ impl ProjectWriter<'_> {
         self.xml.end(element)
     }
 
-    fn variable(&mut self, variable: &Variable) -> Result<(), ExportError> {
+    fn variable(&mut self, variable: &Variable, place: Option<&str>) -> Result<(), ExportError> {
         let mut attributes = vec![("name", variable.name.as_str())];
         if let Some(address) = &variable.address {
             attributes.push(("address", address));
@@ -99,6 +107,9 @@ impl ProjectWriter<'_> {
             self.xml.start("initialValue", &[])?;
             write_value(&mut self.xml, initial)?;
             self.xml.end("initialValue")?;
+        }
+        if let Some(place) = place {
+            self.vendor_add_data(place)?;
         }
         self.documentation(&variable.comment)?;
         self.xml.end("variable")

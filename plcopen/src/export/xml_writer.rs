@@ -95,6 +95,13 @@ impl XmlWriter {
         Ok(())
     }
 
+    /// Writes a fragment of XML kept from an imported file as it was, on a line of its own.
+    pub fn raw(&mut self, xml: &str) -> Result<(), ExportError> {
+        self.writer.write_indent()?;
+        self.writer.get_mut().extend_from_slice(xml.as_bytes());
+        Ok(())
+    }
+
     fn element<'a>(
         &self,
         name: &'a str,

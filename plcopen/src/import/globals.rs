@@ -44,13 +44,7 @@ impl Converter<'_> {
                 // CODESYS writes its POUs into a resource's `addData`; they were read as POUs.
                 for entry in &resource.add_data.entries {
                     if !entry.name.ends_with("/pou") {
-                        self.report.push(
-                            Outcome::KeptOpaque,
-                            format!("addData '{}'", entry.name),
-                            &format!("{resource_path}/addData/data[@name='{}']", entry.name),
-                            resource_line,
-                            "",
-                        );
+                        self.keep_vendor_entry(entry, &resource_path, resource_line);
                     }
                 }
             }

@@ -12,6 +12,7 @@ mod rivet_data;
 mod tasks;
 mod type_text;
 mod variables;
+mod vendor_places;
 
 #[cfg(test)]
 pub(crate) mod corpus_tests;
@@ -57,6 +58,7 @@ pub fn import(document: &Document) -> Result<Imported, ImportError> {
         None => converter.tasks()?,
     }
     converter.opaque(&document.add_data, "project", 1);
+    converter.keep_header(document);
     // XML comments (`<!--ObjectVersion: LD1-->`) stay in the document for the export.
     for comment in &document.xml_comments {
         converter.report.push(

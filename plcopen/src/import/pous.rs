@@ -217,13 +217,7 @@ impl Converter<'_> {
         // The methods were read from the POU's own `addData`; the other entries are opaque.
         for entry in &pou.add_data.entries {
             if !entry.name.ends_with("/method") && !is_rivet_entry(&entry.name) {
-                self.report.push(
-                    Outcome::KeptOpaque,
-                    format!("addData '{}'", entry.name),
-                    &format!("{}/addData/data[@name='{}']", place.path, entry.name),
-                    place.line,
-                    "",
-                );
+                self.keep_vendor_entry(entry, &place.path, place.line);
             }
         }
         Ok(())

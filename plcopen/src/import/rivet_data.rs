@@ -3,6 +3,7 @@
 
 use project_model::{Body, Folder, Node, Object};
 
+use super::converter::is_rivet_entry;
 use super::converter::{Converter, Place};
 use super::error::{ImportError, ImportErrorKind};
 use super::report::Outcome;
@@ -12,8 +13,8 @@ use crate::data_type::DataTypeDecl;
 use crate::interface::VarList;
 use crate::pou::Pou as XmlPou;
 use crate::rivet_data::{
-    OBJECT_ENTRY, ObjectEntry, ObjectEntryKind, PROJECT_ENTRY, ProjectEntry, parse_object_entry,
-    parse_project_entry,
+    OBJECT_ENTRY, ObjectEntry, ObjectEntryKind, PROJECT_ENTRY, ProjectEntry, VENDOR_ENTRY,
+    parse_object_entry, parse_project_entry, parse_vendor_entry,
 };
 
 /// The ST text of a body written in ST.
@@ -140,6 +141,7 @@ impl Converter<'_> {
                 }
             }
         }
+        self.keep_pou_vendor_data(pou, place);
         let what = format!("POU '{}'", pou.name);
         self.add_object("POU", Object::Pou(restored), place)?;
         self.report.push(
@@ -150,6 +152,84 @@ impl Converter<'_> {
             "restored from Rivet's data",
         );
         Ok(true)
+    }
+
+    /// Keeps the vendor data of a POU restored from Rivet's entry, as the conversion of a POU
+    /// keeps it (§2.6).
+    fn keep_pou_vendor_data(&mut self, pou: &XmlPou, place: &Place) {
+        let (path, line) = (place.path.as_str(), place.line);
+        for entry in &pou.add_data.entries {
+            if !entry.name.ends_with("/method") && !is_rivet_entry(&entry.name) {
+                self.keep_vendor_entry(entry, path, line);
+            }
+        }
+        for body in &pou.bodies {
+            self.opaque(&body.add_data, &format!("{path}/body"), body.line);
+        }
+        if let Some(interface) = &pou.interface {
+            self.opaque(&interface.add_data, &format!("{path}/interface"), line);
+            for list in &interface.var_lists {
+                self.opaque(&list.add_data, &format!("{path}/interface/list"), list.line);
+                for variable in &list.variables {
+                    let variable_path =
+                        format!("{path}/interface/list/variable[@name='{}']", variable.name);
+                    self.opaque(&variable.add_data, &variable_path, variable.line);
+                }
+            }
+        }
+        for action in &pou.actions {
+            let action_path = format!("{path}/actions/action[@name='{}']", action.name);
+            self.opaque(&action.add_data, &action_path, action.body.line);
+        }
+        for transition in &pou.transitions {
+            let transition_path =
+                format!("{path}/transitions/transition[@name='{}']", transition.name);
+            self.opaque(&transition.add_data, &transition_path, transition.body.line);
+        }
+        for method in &pou.methods {
+            let method_path = format!("{path}/addData/data/Method[@name='{}']", method.name);
+            self.opaque(&method.add_data, &method_path, line);
+        }
+    }
+
+    /// Keeps the vendor data of the tasks and their program instances when Rivet's project
+    /// entry gives the tasks.
+    fn keep_task_vendor_data(&mut self) {
+        let document = self.document;
+        for configuration in &document.configurations {
+            for resource in &configuration.resources {
+                for task in &resource.tasks {
+                    let path = format!(
+                        "project/instances/configurations/configuration[@name='{}']/resource[@name='{}']/task[@name='{}']",
+                        configuration.name, resource.name, task.name
+                    );
+                    self.opaque(&task.add_data, &path, task.line);
+                    for instance in &task.pou_instances {
+                        let instance_path =
+                            format!("{path}/pouInstance[@name='{}']", instance.name);
+                        self.opaque(&instance.add_data, &instance_path, task.line);
+                    }
+                }
+            }
+        }
+    }
+
+    /// Keeps the imported file's creation date (unless it is the export's fixed one) and puts the
+    /// vendor data in its order: by place, and within a place as the file had it.
+    pub fn keep_header(&mut self, document: &crate::Document) {
+        // v1.0 files write `2007-07-07 11:58:26`, which the v2.01 schema refuses; the date is
+        // kept in the schema's form, and not at all when it has none.
+        let date = document
+            .file_header
+            .creation_date_time
+            .replacen(' ', "T", 1);
+        if date != crate::export::CREATION_DATE_TIME && is_date_time(&date) {
+            self.project.vendor_data.creation_date_time = Some(date);
+        }
+        self.project
+            .vendor_data
+            .entries
+            .sort_by(|a, b| a.place.cmp(&b.place));
     }
 
     /// Restores a data type from its Rivet entry; false when it has none.
@@ -165,6 +245,16 @@ impl Converter<'_> {
         };
         let mut restored: project_model::DataType = self.rivet_toml(&entry, place)?;
         restored.name = declaration.name.clone();
+        self.opaque(&declaration.add_data, &place.path, place.line);
+        if let crate::DataType::Struct { members } = &declaration.base_type {
+            for member in members {
+                let path = format!(
+                    "{}/baseType/struct/variable[@name='{}']",
+                    place.path, member.name
+                );
+                self.opaque(&member.add_data, &path, member.line);
+            }
+        }
         let what = format!("data type '{}'", declaration.name);
         self.add_object("data type", Object::DataType(restored), place)?;
         self.report.push(
@@ -194,6 +284,11 @@ impl Converter<'_> {
         };
         let mut restored: project_model::GlobalVarList = self.rivet_toml(&entry, place)?;
         restored.name = list.name.clone().unwrap_or(entry.name);
+        self.opaque(&list.add_data, &place.path, place.line);
+        for variable in &list.variables {
+            let path = format!("{}/variable[@name='{}']", place.path, variable.name);
+            self.opaque(&variable.add_data, &path, variable.line);
+        }
         let what = format!("global variable list '{}'", restored.name);
         self.add_object("global variable list", Object::Gvl(restored), place)?;
         self.report.push(
@@ -218,7 +313,19 @@ impl Converter<'_> {
         project.io_areas = entry.io_areas;
         project.modbus_devices = entry.modbus_devices;
         project.axes = entry.axes;
+        self.keep_task_vendor_data();
         for data in &self.document.add_data.entries {
+            if data.name == VENDOR_ENTRY {
+                let place = Place {
+                    path: format!("project/addData/data[@name='{VENDOR_ENTRY}']"),
+                    line: 1,
+                    column: 1,
+                };
+                let kept = parse_vendor_entry(&data.xml)
+                    .map_err(|message| self.error(&place, ImportErrorKind::RivetData(message)))?;
+                self.project.vendor_data.entries.push(kept);
+                continue;
+            }
             if data.name != OBJECT_ENTRY {
                 continue;
             }
@@ -292,6 +399,32 @@ impl Converter<'_> {
     }
 }
 
+/// True for an `xs:dateTime`: `YYYY-MM-DDTHH:MM:SS`, optionally with a fraction of a second and
+/// a zone (`Z` or `±HH:MM`).
+fn is_date_time(text: &str) -> bool {
+    let digits =
+        |part: &str, count: usize| part.len() == count && part.bytes().all(|b| b.is_ascii_digit());
+    let Some((date, time)) = text.split_once('T') else {
+        return false;
+    };
+    let date_parts: Vec<&str> = date.split('-').collect();
+    let date_ok =
+        matches!(date_parts.as_slice(), [y, m, d] if digits(y, 4) && digits(m, 2) && digits(d, 2));
+    let (time, zone) = match time.find(['Z', '+', '-']) {
+        Some(at) => time.split_at(at),
+        None => (time, ""),
+    };
+    let zone_ok = zone.is_empty()
+        || zone == "Z"
+        || matches!(zone[1..].split_once(':'), Some((h, m)) if digits(h, 2) && digits(m, 2));
+    let (clock, fraction) = time.split_once('.').unwrap_or((time, "0"));
+    let clock_parts: Vec<&str> = clock.split(':').collect();
+    let clock_ok =
+        matches!(clock_parts.as_slice(), [h, m, s] if digits(h, 2) && digits(m, 2) && digits(s, 2));
+    let fraction_ok = !fraction.is_empty() && fraction.bytes().all(|b| b.is_ascii_digit());
+    date_ok && clock_ok && fraction_ok && zone_ok
+}
+
 /// Puts `object` into the folder at `path` below `root`, creating the folders missing; with
 /// no object, only the folders.
 fn place(root: &mut Folder, path: &[String], object: Option<Object>) {
@@ -324,5 +457,20 @@ fn create_folders(folder: &mut Folder, path: &[String]) {
             create_folders(child, rest);
             return;
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::is_date_time;
+
+    #[test]
+    fn dates_are_kept_only_in_the_schema_form() {
+        assert!(is_date_time("2016-10-24T18:09:22"));
+        assert!(is_date_time("2024-07-12T16:04:57.123+02:00"));
+        assert!(is_date_time("2024-07-12T16:04:57Z"));
+        assert!(!is_date_time("2007-07-07 11:58:26"));
+        assert!(!is_date_time("yesterday"));
+        assert!(!is_date_time("2024-07-12T16:04"));
     }
 }

@@ -12,9 +12,7 @@ use super::older_versions::{OlderFailure, pou_from_older};
 use super::problem::{LoadError, LoadProblem, Severity, line_of, toml_problem};
 use super::{APPLICATION_DIR, FORMAT_VERSION, MANIFEST_FILE_NAME, VENDOR_DATA_FILE_NAME};
 use crate::validate::{body_problems, member_problem};
-use crate::{
-    Body, Folder, Node, Object, ObjectKind, Pou, Project, VendorData, same_identifier,
-};
+use crate::{Body, Folder, Node, Object, ObjectKind, Pou, Project, VendorData, same_identifier};
 
 /// A project read from disk.
 #[derive(Clone, Debug, PartialEq)]

@@ -149,12 +149,11 @@ fn render(
     })?;
     files.insert(PathBuf::from(MANIFEST_FILE_NAME), text);
     if !project.vendor_data.is_empty() {
-        let text = to_canonical_toml(&project.vendor_data).map_err(|message| {
-            SaveError::Serialize {
+        let text =
+            to_canonical_toml(&project.vendor_data).map_err(|message| SaveError::Serialize {
                 path: VENDOR_DATA_FILE_NAME.into(),
                 message,
-            }
-        })?;
+            })?;
         files.insert(PathBuf::from(VENDOR_DATA_FILE_NAME), text);
     }
     Ok(files)
