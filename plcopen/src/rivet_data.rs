@@ -19,6 +19,10 @@ pub(crate) const PROJECT_ENTRY: &str = "https://rivet-plc.dev/plcopen/1/project"
 /// `addData`) holding the object's file.
 pub(crate) const OBJECT_ENTRY: &str = "https://rivet-plc.dev/plcopen/1/object";
 
+/// The entry of an LD or FBD body's `addData` delimiting its networks and holding their
+/// titles, comments and labels: `<networks><network first="LOCALID" title comment label/>`.
+pub(crate) const NETWORKS_ENTRY: &str = "https://rivet-plc.dev/plcopen/1/networks";
+
 /// The entry of the project's `addData` holding another tool's entry whose place the export does
 /// not write (a POU Rivet did not convert, for one): `<vendor place="…">` with the entry's XML
 /// as text.

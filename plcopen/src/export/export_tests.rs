@@ -45,3 +45,93 @@ fn the_export_is_read_back_by_the_reader() {
     assert_eq!(document.pous[0].name, "Main");
     assert_eq!(document.content_header.name, "Demo");
 }
+
+fn graphical(body: Body) -> Project {
+    let mut project = small_project();
+    if let Some(Node::Object(Object::Pou(pou))) = project.application.children.first_mut() {
+        pou.body = body;
+    }
+    project
+}
+
+fn network(toml_text: &str) -> project_model::Network {
+    toml::from_str(toml_text).unwrap()
+}
+
+#[test]
+fn an_ld_network_is_a_graph_between_power_rails_with_its_header_in_rivet_data() {
+    let rung = network(
+        r#"
+title = "Start"
+label = "L1"
+rung = [
+  { type = "operand", id = 1, text = "a" },
+  { type = "parallel", id = 2, branch = [
+      { rung = [{ type = "operand", id = 3, text = "b" }] },
+      { rung = [{ type = "operand", id = 4, text = "c", negated = true }] },
+  ] },
+]
+output = [{ type = "coil", id = 5, variable = "q" }]
+"#,
+    );
+    let xml = String::from_utf8(
+        export(&graphical(Body::Ld {
+            networks: vec![rung],
+        }))
+        .unwrap(),
+    )
+    .unwrap();
+    // The reader checks every connection names an object of the body.
+    crate::read(&xml, "ld.xml").unwrap();
+    let body = &xml[xml.find("<LD>").unwrap()..xml.find("</LD>").unwrap()];
+    assert!(
+        body.contains("<label localId=\"6\" label=\"L1\">"),
+        "{body}"
+    );
+    assert!(body.contains("<leftPowerRail localId=\"7\">"), "{body}");
+    // The branches meet in a wired OR at the coil, in branch order.
+    let coil = &body[body.find("<coil localId=\"5\">").unwrap()..];
+    let b = coil.find("refLocalId=\"3\"").unwrap();
+    let c = coil.find("refLocalId=\"4\"").unwrap();
+    assert!(b < c, "{coil}");
+    assert!(body.contains("<rightPowerRail localId=\"8\">"), "{body}");
+    assert!(
+        xml.contains("<network first=\"6\" title=\"Start\" label=\"L1\"/>"),
+        "{xml}"
+    );
+}
+
+#[test]
+fn an_fbd_chain_ands_its_operands_and_assigns_box_outputs() {
+    let rung = network(
+        r#"
+rung = [
+  { type = "operand", id = 1, text = "a" },
+  { type = "operand", id = 2, text = "b" },
+  { type = "block", id = 3, type_name = "TON", instance = "t", input = [
+      { pin = "IN" },
+      { pin = "PT", source = [{ type = "operand", id = 4, text = "T#1s" }] },
+  ], output = [{ pin = "Q" }, { pin = "ET", assign = "elapsed" }] },
+]
+output = [{ type = "coil", id = 5, variable = "q" }]
+"#,
+    );
+    let xml = String::from_utf8(
+        export(&graphical(Body::Fbd {
+            networks: vec![rung],
+        }))
+        .unwrap(),
+    )
+    .unwrap();
+    crate::read(&xml, "fbd.xml").unwrap();
+    let body = &xml[xml.find("<FBD>").unwrap()..xml.find("</FBD>").unwrap()];
+    assert!(body.contains("typeName=\"AND\""), "{body}");
+    assert!(body.contains("<expression>T#1s</expression>"), "{body}");
+    assert!(body.contains("<expression>elapsed</expression>"), "{body}");
+    let out = &body[body.find("<outVariable localId=\"5\">").unwrap()..];
+    assert!(
+        out.contains("<connection refLocalId=\"3\" formalParameter=\"Q\"/>"),
+        "{out}"
+    );
+    assert!(!body.contains("PowerRail"), "{body}");
+}

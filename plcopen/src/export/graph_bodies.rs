@@ -1,25 +1,69 @@
-//! Graphical bodies (LD, FBD, CFC, SFC) as PLCopen graphs.
+//! Graphical bodies as PLCopen graphs: LD and FBD networks (`network_graph.rs`) with the body's
+//! `…/networks` entry.
 
 use project_model::Body;
 
 use super::error::ExportError;
+use super::network_graph::NetworkGraph;
 use super::project_writer::ProjectWriter;
+use crate::rivet_data::{NETWORKS_ENTRY, RIVET_NAMESPACE};
 
 impl ProjectWriter<'_> {
-    /// Writes a graphical body. Its structure is kept whole in the POU's Rivet entry, which the
-    /// import restores it from; where the schema requires a body, an empty ST body stands in.
+    /// Writes a graphical body; `place` names its vendor data (§5.5). LD and FBD bodies are
+    /// written as graphs. CFC and SFC bodies are kept whole in the POU's Rivet entry, which the
+    /// import restores them from; where the schema requires a body, an empty ST body stands in.
     pub(super) fn graphical_body(
         &mut self,
-        _body: &Body,
+        body: &Body,
         required: bool,
+        place: Option<&str>,
     ) -> Result<(), ExportError> {
-        if required {
-            self.xml.start("body", &[])?;
-            self.xml.start("ST", &[])?;
-            self.formatted_text("")?;
-            self.xml.end("ST")?;
-            self.xml.end("body")?;
+        let (language, networks) = match body {
+            Body::Ld { networks } => ("LD", networks),
+            Body::Fbd { networks } => ("FBD", networks),
+            Body::None | Body::St { .. } | Body::Cfc { .. } | Body::Sfc { .. } => {
+                if required {
+                    self.xml.start("body", &[])?;
+                    self.xml.start("ST", &[])?;
+                    self.formatted_text("")?;
+                    self.xml.end("ST")?;
+                    self.xml.end("body")?;
+                }
+                return Ok(());
+            }
+        };
+        self.xml.start("body", &[])?;
+        self.xml.start(language, &[])?;
+        let starts =
+            NetworkGraph::new(&mut self.xml, language == "LD", networks).write(networks)?;
+        self.xml.end(language)?;
+        self.xml.start("addData", &[])?;
+        if let Some(place) = place {
+            self.vendor_entries(place)?;
         }
-        Ok(())
+        self.xml.start(
+            "data",
+            &[("name", NETWORKS_ENTRY), ("handleUnknown", "preserve")],
+        )?;
+        self.xml.start("networks", &[("xmlns", RIVET_NAMESPACE)])?;
+        for start in starts {
+            let first = start.first.to_string();
+            let mut attributes = vec![("first", first.as_str())];
+            let network = start.network;
+            for (name, value) in [
+                ("title", &network.title),
+                ("comment", &network.comment),
+                ("label", &network.label),
+            ] {
+                if !value.is_empty() {
+                    attributes.push((name, value));
+                }
+            }
+            self.xml.empty("network", &attributes)?;
+        }
+        self.xml.end("networks")?;
+        self.xml.end("data")?;
+        self.xml.end("addData")?;
+        self.xml.end("body")
     }
 }

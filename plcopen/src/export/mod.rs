@@ -7,6 +7,7 @@
 mod data_types;
 mod error;
 mod graph_bodies;
+mod network_graph;
 mod pous;
 mod project_writer;
 

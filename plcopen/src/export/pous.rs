@@ -128,7 +128,7 @@ impl ProjectWriter<'_> {
             Body::None if required => self.st_body("", place),
             Body::None => Ok(()),
             Body::Ld { .. } | Body::Fbd { .. } | Body::Cfc { .. } | Body::Sfc { .. } => {
-                self.graphical_body(body, required)
+                self.graphical_body(body, required, place)
             }
         }
     }
