@@ -23,6 +23,9 @@ pub(crate) const OBJECT_ENTRY: &str = "https://rivet-plc.dev/plcopen/1/object";
 /// titles, comments and labels: `<networks><network first="LOCALID" title comment label/>`.
 pub(crate) const NETWORKS_ENTRY: &str = "https://rivet-plc.dev/plcopen/1/networks";
 
+/// The entry of an FBD body's `addData` saying it is a CFC chart: `<language name="CFC"/>`.
+pub(crate) const LANGUAGE_ENTRY: &str = "https://rivet-plc.dev/plcopen/1/language";
+
 /// The entry of the project's `addData` holding another tool's entry whose place the export does
 /// not write (a POU Rivet did not convert, for one): `<vendor place="…">` with the entry's XML
 /// as text.

@@ -135,3 +135,54 @@ output = [{ type = "coil", id = 5, variable = "q" }]
     );
     assert!(!body.contains("PowerRail"), "{body}");
 }
+
+#[test]
+fn a_cfc_chart_is_an_fbd_body_with_execution_order_and_its_language_marked() {
+    let chart: project_model::CfcChart = toml::from_str(
+        r#"
+[[element]]
+id = 1
+x = 2
+y = 3
+kind = { type = "input", expression = "a" }
+
+[[element]]
+id = 2
+x = 10
+y = 3
+order = 0
+kind = { type = "output", expression = "q", coil = "set" }
+
+[[element]]
+id = 3
+x = 2
+y = 8
+kind = { type = "comment", text = "note", width = 8, height = 2 }
+
+[[wire]]
+from = { element = 1 }
+to = { element = 2 }
+points = [{ x = 6, y = 3 }]
+"#,
+    )
+    .unwrap();
+    let xml = String::from_utf8(export(&graphical(Body::Cfc { chart })).unwrap()).unwrap();
+    crate::read(&xml, "cfc.xml").unwrap();
+    let body = &xml[xml.find("<FBD>").unwrap()..xml.find("</FBD>").unwrap()];
+    assert!(body.contains("<inVariable localId=\"1\">"), "{body}");
+    assert!(
+        body.contains("<outVariable localId=\"2\" executionOrderId=\"1\" storage=\"set\">"),
+        "{body}"
+    );
+    assert!(body.contains("<position x=\"20\" y=\"30\"/>"), "{body}");
+    assert!(
+        body.contains("<connection refLocalId=\"1\">\n")
+            && body.contains("<position x=\"60\" y=\"30\"/>"),
+        "{body}"
+    );
+    assert!(body.contains("height=\"20\" width=\"80\""), "{body}");
+    assert!(
+        xml.contains("<language xmlns=\"https://rivet-plc.dev/plcopen/1\" name=\"CFC\"/>"),
+        "{xml}"
+    );
+}

@@ -3,15 +3,17 @@
 
 use project_model::Body;
 
+use super::cfc_graph::write_cfc;
 use super::error::ExportError;
 use super::network_graph::NetworkGraph;
 use super::project_writer::ProjectWriter;
-use crate::rivet_data::{NETWORKS_ENTRY, RIVET_NAMESPACE};
+use crate::rivet_data::{LANGUAGE_ENTRY, NETWORKS_ENTRY, RIVET_NAMESPACE};
 
 impl ProjectWriter<'_> {
     /// Writes a graphical body; `place` names its vendor data (§5.5). LD and FBD bodies are
-    /// written as graphs. CFC and SFC bodies are kept whole in the POU's Rivet entry, which the
-    /// import restores them from; where the schema requires a body, an empty ST body stands in.
+    /// written as graphs, CFC charts as FBD bodies marked `…/language` CFC. SFC charts are kept
+    /// whole in the POU's Rivet entry, which the import restores them from; where the schema
+    /// requires a body, an empty ST body stands in.
     pub(super) fn graphical_body(
         &mut self,
         body: &Body,
@@ -21,7 +23,26 @@ impl ProjectWriter<'_> {
         let (language, networks) = match body {
             Body::Ld { networks } => ("LD", networks),
             Body::Fbd { networks } => ("FBD", networks),
-            Body::None | Body::St { .. } | Body::Cfc { .. } | Body::Sfc { .. } => {
+            Body::Cfc { chart } => {
+                self.xml.start("body", &[])?;
+                self.xml.start("FBD", &[])?;
+                write_cfc(&mut self.xml, chart)?;
+                self.xml.end("FBD")?;
+                self.xml.start("addData", &[])?;
+                if let Some(place) = place {
+                    self.vendor_entries(place)?;
+                }
+                self.xml.start(
+                    "data",
+                    &[("name", LANGUAGE_ENTRY), ("handleUnknown", "preserve")],
+                )?;
+                self.xml
+                    .empty("language", &[("xmlns", RIVET_NAMESPACE), ("name", "CFC")])?;
+                self.xml.end("data")?;
+                self.xml.end("addData")?;
+                return self.xml.end("body");
+            }
+            Body::None | Body::St { .. } | Body::Sfc { .. } => {
                 if required {
                     self.xml.start("body", &[])?;
                     self.xml.start("ST", &[])?;

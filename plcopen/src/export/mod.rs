@@ -4,6 +4,7 @@
 //! reader's `Document` model says what a file holds, while the export only needs to say what the
 //! project holds, and a writer needs no tree.
 
+mod cfc_graph;
 mod data_types;
 mod error;
 mod graph_bodies;
