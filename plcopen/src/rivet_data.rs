@@ -26,6 +26,10 @@ pub(crate) const NETWORKS_ENTRY: &str = "https://rivet-plc.dev/plcopen/1/network
 /// The entry of an FBD body's `addData` saying it is a CFC chart: `<language name="CFC"/>`.
 pub(crate) const LANGUAGE_ENTRY: &str = "https://rivet-plc.dev/plcopen/1/language";
 
+/// The entry of an SFC step's `addData` with what PLCopen has no attribute for:
+/// `<step minTime maxTime entryAction mainAction exitAction comment/>`, empty ones left out.
+pub(crate) const STEP_ENTRY: &str = "https://rivet-plc.dev/plcopen/1/step";
+
 /// The entry of the project's `addData` holding another tool's entry whose place the export does
 /// not write (a POU Rivet did not convert, for one): `<vendor place="…">` with the entry's XML
 /// as text.

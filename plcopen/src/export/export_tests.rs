@@ -186,3 +186,83 @@ points = [{ x = 6, y = 3 }]
         "{xml}"
     );
 }
+
+#[test]
+fn an_sfc_chart_is_written_in_beremiz_form_with_rivet_step_details() {
+    use project_model::{
+        ActionAssociation, ActionQualifier, ElementId, SfcBranches, SfcChart, SfcNode,
+    };
+    let mut init = SfcNode::step(ElementId(1), "Init");
+    if let SfcNode::Step(step) = &mut init {
+        step.max_time = Some("T#5s".into());
+        step.actions.push(ActionAssociation {
+            action: "Fill".into(),
+            qualifier: ActionQualifier::S,
+            duration: Some("T#2s".into()),
+            indicator: None,
+        });
+    }
+    let mut ready = SfcNode::transition(ElementId(3), "Ready");
+    if let SfcNode::Transition(transition) = &mut ready {
+        transition.priority = Some(1);
+    }
+    let chart = SfcChart {
+        sequence: vec![
+            init,
+            SfcNode::Alternative(SfcBranches::new(
+                ElementId(2),
+                vec![
+                    vec![
+                        ready,
+                        SfcNode::step(ElementId(4), "Run"),
+                        SfcNode::transition(ElementId(5), "done AND NOT stop"),
+                    ],
+                    vec![
+                        SfcNode::transition(ElementId(6), "abort"),
+                        SfcNode::jump(ElementId(7), "Init"),
+                    ],
+                ],
+            )),
+            SfcNode::jump(ElementId(8), "Init"),
+        ],
+    };
+    let mut project = graphical(Body::Sfc { chart });
+    if let Some(Node::Object(Object::Pou(pou))) = project.application.children.first_mut() {
+        pou.transitions.push(project_model::PouAction {
+            name: "Ready".into(),
+            body: Body::st("Ready := TRUE;"),
+        });
+    }
+    let bytes = export(&project).unwrap();
+    super::round_trip_tests::assert_valid(&bytes, "an SFC chart");
+    let xml = String::from_utf8(bytes).unwrap();
+    crate::read(&xml, "sfc.xml").unwrap();
+    let body = &xml[xml.find("<SFC>").unwrap()..xml.find("</SFC>").unwrap()];
+    assert!(
+        body.contains("<step localId=\"1\" name=\"Init\" initialStep=\"true\">"),
+        "{body}"
+    );
+    assert!(body.contains("maxTime=\"T#5s\""), "{body}");
+    assert!(body.contains("qualifier=\"S\" duration=\"T#2s\""), "{body}");
+    assert!(body.contains("<reference name=\"Ready\"/>"), "{body}");
+    assert!(body.contains("<![CDATA[done AND NOT stop]]>"), "{body}");
+    assert!(
+        body.contains("<transition localId=\"3\" priority=\"1\">"),
+        "{body}"
+    );
+    assert!(
+        body.contains("<selectionDivergence localId=\"2\">"),
+        "{body}"
+    );
+    // Only the first branch goes on: the convergence gathers it, then the jump back.
+    let convergence = &body[body.find("<selectionConvergence").unwrap()..];
+    assert!(convergence.contains("refLocalId=\"5\""), "{convergence}");
+    assert!(
+        !convergence[..convergence.find("</selectionConvergence>").unwrap()]
+            .contains("refLocalId=\"7\"")
+    );
+    assert!(
+        body.contains("<jumpStep localId=\"8\" targetName=\"Init\">"),
+        "{body}"
+    );
+}

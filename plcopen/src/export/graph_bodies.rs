@@ -7,13 +7,13 @@ use super::cfc_graph::write_cfc;
 use super::error::ExportError;
 use super::network_graph::NetworkGraph;
 use super::project_writer::ProjectWriter;
+use super::sfc_graph::SfcGraph;
 use crate::rivet_data::{LANGUAGE_ENTRY, NETWORKS_ENTRY, RIVET_NAMESPACE};
 
 impl ProjectWriter<'_> {
     /// Writes a graphical body; `place` names its vendor data (§5.5). LD and FBD bodies are
-    /// written as graphs, CFC charts as FBD bodies marked `…/language` CFC. SFC charts are kept
-    /// whole in the POU's Rivet entry, which the import restores them from; where the schema
-    /// requires a body, an empty ST body stands in.
+    /// written as graphs, CFC charts as FBD bodies marked `…/language` CFC, SFC charts in
+    /// Beremiz's form.
     pub(super) fn graphical_body(
         &mut self,
         body: &Body,
@@ -42,7 +42,20 @@ impl ProjectWriter<'_> {
                 self.xml.end("addData")?;
                 return self.xml.end("body");
             }
-            Body::None | Body::St { .. } | Body::Sfc { .. } => {
+            Body::Sfc { chart } => {
+                self.xml.start("body", &[])?;
+                self.xml.start("SFC", &[])?;
+                let transitions = std::mem::take(&mut self.transition_names);
+                let written = SfcGraph::new(&mut self.xml, chart, &transitions).write(chart);
+                self.transition_names = transitions;
+                written?;
+                self.xml.end("SFC")?;
+                if let Some(place) = place {
+                    self.vendor_add_data(place)?;
+                }
+                return self.xml.end("body");
+            }
+            Body::None | Body::St { .. } => {
                 if required {
                     self.xml.start("body", &[])?;
                     self.xml.start("ST", &[])?;

@@ -14,6 +14,7 @@ mod project_writer;
 
 pub(crate) use project_writer::CREATION_DATE_TIME;
 mod rivet_entries;
+mod sfc_graph;
 mod type_xml;
 mod variables;
 mod vendor_entries;

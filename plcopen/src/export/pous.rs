@@ -25,6 +25,7 @@ impl ProjectWriter<'_> {
         self.xml
             .start("pou", &[("name", &pou.name), ("pouType", pou_type)])?;
         let place = format!("pou:{}", pou.name);
+        self.transition_names = pou.transitions.iter().map(|t| t.name.clone()).collect();
         self.interface(pou.return_type.as_deref(), &pou.variables, Some(&place))?;
         if !pou.actions.is_empty() {
             self.xml.start("actions", &[])?;

@@ -29,6 +29,8 @@ pub(super) struct ProjectWriter<'p> {
     pub xml: XmlWriter,
     /// The places of the vendor data written so far (§5.5).
     pub written_places: HashSet<String>,
+    /// The transition objects of the POU being written, which SFC conditions may name.
+    pub transition_names: Vec<String>,
 }
 
 impl<'p> ProjectWriter<'p> {
@@ -38,6 +40,7 @@ impl<'p> ProjectWriter<'p> {
             project,
             xml: XmlWriter::new()?,
             written_places: HashSet::new(),
+            transition_names: Vec::new(),
         })
     }
 
