@@ -266,3 +266,44 @@ fn an_sfc_chart_is_written_in_beremiz_form_with_rivet_step_details() {
         "{body}"
     );
 }
+
+#[test]
+fn declarations_another_tool_changed_win_over_rivet_data_and_st_edits_are_taken() {
+    let mut project = small_project();
+    project
+        .application
+        .children
+        .push(Node::Object(Object::Gvl(project_model::GlobalVarList {
+            name: "G".into(),
+            comment: String::new(),
+            variables: vec![Variable {
+                section: project_model::VarSection::VarGlobal,
+                ..Variable::new("a", "INT")
+            }],
+        })));
+    let xml = String::from_utf8(export(&project).unwrap()).unwrap();
+    let added = "<variable name=\"extra\">\n<type>\n<BOOL/>\n</type>\n</variable>\n";
+    // Another tool adds a variable to the POU and one to the list, and edits the ST body.
+    let edited = xml
+        .replacen("</localVars>", &format!("{added}</localVars>"), 1)
+        .replacen(
+            "<globalVars name=\"G\">",
+            &format!("<globalVars name=\"G\">{added}"),
+            1,
+        )
+        .replace("count := count + 1;", "count := count + 2;");
+    assert_ne!(edited, xml);
+    let document = crate::read(&edited, "edited.xml").unwrap();
+    let imported = crate::import(&document).unwrap();
+    let Some(Object::Pou(main)) = imported.project.application.object("Main") else {
+        panic!("no Main");
+    };
+    let names: Vec<&str> = main.variables.iter().map(|v| v.name.as_str()).collect();
+    assert_eq!(names, ["count", "extra"]);
+    assert_eq!(main.body.st_text(), Some("count := count + 2;\n"));
+    let Some(Object::Gvl(list)) = imported.project.application.object("G") else {
+        panic!("no G");
+    };
+    let names: Vec<&str> = list.variables.iter().map(|v| v.name.as_str()).collect();
+    assert_eq!(names, ["extra", "a"], "{edited}");
+}

@@ -2,7 +2,7 @@
 
 use project_model::{GlobalVarList, Object};
 
-use super::converter::{Converter, Place, comment};
+use super::converter::{Converter, Place, comment, is_rivet_entry};
 use super::error::ImportError;
 use super::report::Outcome;
 use crate::interface::VarList;
@@ -72,7 +72,19 @@ impl Converter<'_> {
                     column: list.column,
                 };
                 // Only the last list of the name carries the entry; the others are its parts.
-                self.rivet_list(list, &place)?;
+                let has_entry = list
+                    .add_data
+                    .entries
+                    .iter()
+                    .any(|entry| is_rivet_entry(&entry.name));
+                if has_entry {
+                    let parts: Vec<VarList> = lists
+                        .iter()
+                        .filter(|part| part.name.as_ref() == Some(name))
+                        .cloned()
+                        .collect();
+                    self.rivet_list(&parts, &place)?;
+                }
                 continue;
             }
             let variables = self.variables(std::slice::from_ref(list), owner_path, list.line)?;

@@ -224,7 +224,7 @@ impl Converter<'_> {
     }
 
     /// The declarations and return type of an interface.
-    fn interface(
+    pub(super) fn interface(
         &mut self,
         interface: Option<&Interface>,
         path: &str,

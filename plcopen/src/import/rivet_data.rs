@@ -142,15 +142,23 @@ impl Converter<'_> {
             }
         }
         self.keep_pou_vendor_data(pou, place);
+        // Another tool may have changed the declarations and kept Rivet's entry: when the
+        // document declares other names than the entry, its declarations win.
+        let (variables, return_type) = self.interface(
+            pou.interface.as_ref(),
+            &format!("{}/interface", place.path),
+            place,
+        )?;
+        let mut note = "restored from Rivet's data";
+        if !same_names(&variables, &restored.variables) {
+            restored.variables = variables;
+            restored.return_type = return_type;
+            note = "restored from Rivet's data; its declarations from the document, which declares other names";
+        }
         let what = format!("POU '{}'", pou.name);
         self.add_object("POU", Object::Pou(restored), place)?;
-        self.report.push(
-            Outcome::Converted,
-            what,
-            &place.path,
-            place.line,
-            "restored from Rivet's data",
-        );
+        self.report
+            .push(Outcome::Converted, what, &place.path, place.line, note);
         Ok(true)
     }
 
@@ -166,17 +174,7 @@ impl Converter<'_> {
         for body in &pou.bodies {
             self.opaque(&body.add_data, &format!("{path}/body"), body.line);
         }
-        if let Some(interface) = &pou.interface {
-            self.opaque(&interface.add_data, &format!("{path}/interface"), line);
-            for list in &interface.var_lists {
-                self.opaque(&list.add_data, &format!("{path}/interface/list"), list.line);
-                for variable in &list.variables {
-                    let variable_path =
-                        format!("{path}/interface/list/variable[@name='{}']", variable.name);
-                    self.opaque(&variable.add_data, &variable_path, variable.line);
-                }
-            }
-        }
+        // The interface's entries are kept by its conversion (`rivet_pou`).
         for action in &pou.actions {
             let action_path = format!("{path}/actions/action[@name='{}']", action.name);
             self.opaque(&action.add_data, &action_path, action.body.line);
@@ -277,27 +275,55 @@ impl Converter<'_> {
             .collect()
     }
 
-    /// Restores a global variable list from its Rivet entry; false when it has none.
-    pub fn rivet_list(&mut self, list: &VarList, place: &Place) -> Result<bool, ImportError> {
-        let Some(entry) = self.rivet_object(&list.add_data, ObjectEntryKind::Gvl, place)? else {
+    /// Restores a global variable list from its Rivet entry, carried by the last of `parts`
+    /// (the `globalVars` of its name); false when it has none.
+    pub fn rivet_list(&mut self, parts: &[VarList], place: &Place) -> Result<bool, ImportError> {
+        let Some(last) = parts.last() else {
+            return Ok(false);
+        };
+        let Some(entry) = self.rivet_object(&last.add_data, ObjectEntryKind::Gvl, place)? else {
             return Ok(false);
         };
         let mut restored: project_model::GlobalVarList = self.rivet_toml(&entry, place)?;
-        restored.name = list.name.clone().unwrap_or(entry.name);
-        self.opaque(&list.add_data, &place.path, place.line);
-        for variable in &list.variables {
-            let path = format!("{}/variable[@name='{}']", place.path, variable.name);
-            self.opaque(&variable.add_data, &path, variable.line);
+        restored.name = last.name.clone().unwrap_or(entry.name);
+        let mut declared = Vec::new();
+        for part in parts {
+            self.opaque(&part.add_data, &place.path, place.line);
+            for variable in &part.variables {
+                let path = format!("{}/variable[@name='{}']", place.path, variable.name);
+                self.opaque(&variable.add_data, &path, variable.line);
+                declared.push(variable.name.as_str());
+            }
+        }
+        let mut note = "restored from Rivet's data";
+        let same = declared.len() == restored.variables.len()
+            && declared
+                .iter()
+                .zip(&restored.variables)
+                .all(|(written, kept)| *written == kept.name);
+        if !same {
+            // Another tool changed the list and kept Rivet's entry: the document's declarations
+            // win (their vendor data is already kept above).
+            let mut converted = Vec::new();
+            for part in parts {
+                let report_length = self.report.entries.len();
+                let kept_length = self.project.vendor_data.entries.len();
+                converted.extend(self.variables(
+                    std::slice::from_ref(part),
+                    &place.path,
+                    place.line,
+                )?);
+                // The entries were kept above; drop the second keeping of the same entries.
+                self.report.entries.truncate(report_length);
+                self.project.vendor_data.entries.truncate(kept_length);
+            }
+            restored.variables = converted;
+            note = "restored from Rivet's data; its variables from the document, which declares other names";
         }
         let what = format!("global variable list '{}'", restored.name);
         self.add_object("global variable list", Object::Gvl(restored), place)?;
-        self.report.push(
-            Outcome::Converted,
-            what,
-            &place.path,
-            place.line,
-            "restored from Rivet's data",
-        );
+        self.report
+            .push(Outcome::Converted, what, &place.path, place.line, note);
         Ok(true)
     }
 
@@ -397,6 +423,15 @@ impl Converter<'_> {
         self.project.application = root;
         Ok(())
     }
+}
+
+/// True when two declaration lists name the same variables in the same order.
+fn same_names(document: &[project_model::Variable], entry: &[project_model::Variable]) -> bool {
+    document.len() == entry.len()
+        && document
+            .iter()
+            .zip(entry)
+            .all(|(written, kept)| written.name == kept.name)
 }
 
 /// True for an `xs:dateTime`: `YYYY-MM-DDTHH:MM:SS`, optionally with a fraction of a second and
