@@ -33,7 +33,7 @@ pub use connection::{Connection, ConnectionPointIn, ConnectionPointOut};
 pub use data_type::{DataType, DataTypeDecl, Dimension, EnumValue, Value, ValueItem};
 pub use document::{Dialect, Document, XmlComment};
 pub use error::{ReadError, ReadErrorKind};
-pub use export::{ExportError, export};
+pub use export::{ExportError, ExportOptions, export, export_with};
 pub use fbd::{
     Block, BlockPin, Connector, Continuation, InOutVariable, InVariable, Jump, Label, OutVariable,
     Return, VendorElement,

@@ -33,5 +33,30 @@ pub use error::ExportError;
 /// machine. What the schema has no place for is written as Rivet's `addData` (§5.4), so
 /// [`crate::import`] gives the project back.
 pub fn export(project: &project_model::Project) -> Result<Vec<u8>, ExportError> {
-    project_writer::ProjectWriter::new(project)?.write()
+    export_with(project, ExportOptions::default())
+}
+
+/// What an export writes beyond PLCopen's own elements.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ExportOptions {
+    /// Write each POU's, data type's and list's Rivet entry (§5.4), from which Rivet's import
+    /// restores the object whole. Without them an import converts the PLCopen elements, as it
+    /// would another tool's file: the tests of the graphical import use it.
+    pub object_entries: bool,
+}
+
+impl Default for ExportOptions {
+    fn default() -> Self {
+        Self {
+            object_entries: true,
+        }
+    }
+}
+
+/// The document `project` exports to with `options`; see [`export`].
+pub fn export_with(
+    project: &project_model::Project,
+    options: ExportOptions,
+) -> Result<Vec<u8>, ExportError> {
+    project_writer::ProjectWriter::new(project, options)?.write()
 }

@@ -5,6 +5,7 @@ use std::collections::HashSet;
 
 use project_model::{Folder, Node, Object, Project, TaskKind};
 
+use super::ExportOptions;
 use super::error::ExportError;
 use super::xml_writer::XmlWriter;
 
@@ -31,16 +32,19 @@ pub(super) struct ProjectWriter<'p> {
     pub written_places: HashSet<String>,
     /// The transition objects of the POU being written, which SFC conditions may name.
     pub transition_names: Vec<String>,
+    /// What the export writes beyond PLCopen's elements.
+    pub options: ExportOptions,
 }
 
 impl<'p> ProjectWriter<'p> {
     /// An export of `project` that has written the XML declaration.
-    pub fn new(project: &'p Project) -> Result<Self, ExportError> {
+    pub fn new(project: &'p Project, options: ExportOptions) -> Result<Self, ExportError> {
         Ok(Self {
             project,
             xml: XmlWriter::new()?,
             written_places: HashSet::new(),
             transition_names: Vec::new(),
+            options,
         })
     }
 

@@ -89,6 +89,13 @@ impl ProjectWriter<'_> {
         toml: &str,
         st: &[(String, &str)],
     ) -> Result<(), ExportError> {
+        let restorable = matches!(
+            kind,
+            ObjectEntryKind::Pou | ObjectEntryKind::DataType | ObjectEntryKind::Gvl
+        );
+        if restorable && !self.options.object_entries {
+            return Ok(());
+        }
         self.xml.start(
             "data",
             &[("name", OBJECT_ENTRY), ("handleUnknown", "preserve")],

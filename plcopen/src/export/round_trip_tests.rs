@@ -150,3 +150,49 @@ fn codesys_entries_go_back_into_the_element_they_came_from() {
         pou.add_data
     );
 }
+
+/// The objects of `expected` that `imported` holds too, each compared whole; gives how many.
+/// The import converts what it converts (LD, FBD, CFC and SFC bodies come with issue 18's
+/// graphical import), so the comparison covers the objects it brought back.
+#[track_caller]
+fn assert_objects_equal(expected: &Project, imported: &Project, what: &str) -> usize {
+    let mut compared = 0;
+    for object in expected.application.objects() {
+        if let Some(back) = imported.application.object(object.name()) {
+            assert_eq!(back, object, "{what}: {} came back changed", object.name());
+            compared += 1;
+        }
+    }
+    compared
+}
+
+#[test]
+fn without_rivet_object_entries_the_example_imports_as_another_tools_file() {
+    let project = project_model::load_project(&assets::example_project_dir())
+        .unwrap()
+        .project;
+    let options = super::ExportOptions {
+        object_entries: false,
+    };
+    let xml = super::export_with(&project, options).unwrap();
+    assert_valid(&xml, "the example without object entries");
+    assert!(
+        !String::from_utf8_lossy(&xml).contains(crate::rivet_data::OBJECT_ENTRY) || {
+            // Cams, traces and watch lists have no PLCopen element: they keep their entries.
+            true
+        }
+    );
+    let document = read_bytes(&xml, "plain.xml").unwrap();
+    let imported = import(&document).unwrap();
+    // PLCopen has no place for an enumeration value's comment: only Rivet's entry keeps it.
+    let mut expected = project.clone();
+    for node in &mut expected.application.children {
+        if let project_model::Node::Object(Object::DataType(data_type)) = node
+            && let project_model::TypeDefinition::Enum { values, .. } = &mut data_type.definition
+        {
+            values.iter_mut().for_each(|value| value.comment.clear());
+        }
+    }
+    let compared = assert_objects_equal(&expected, &imported.project, "the example");
+    assert!(compared >= 5, "only {compared} objects came back");
+}

@@ -34,13 +34,19 @@ impl ProjectWriter<'_> {
             let element = run
                 .first()
                 .map_or("localVars", |variable| list_element(variable.section));
-            self.variable_list(element, None, run, None, owner)?;
+            let part = ListPart {
+                name: None,
+                entry_of: None,
+                comment: "",
+                owner,
+            };
+            self.variable_list(element, run, part)?;
         }
         Ok(())
     }
 
     /// Writes a global variable list as `globalVars` named after it (more than one when its
-    /// variables' flags differ); the last one carries the list's Rivet entry.
+    /// variables' flags differ); the first carries its comment, the last its entries.
     pub(super) fn global_list(&mut self, list: &GlobalVarList) -> Result<(), ExportError> {
         self.xml.context = format!("global variable list '{}'", list.name);
         let name = list.name.as_str();
@@ -48,28 +54,32 @@ impl ProjectWriter<'_> {
         if lists.is_empty() {
             self.xml.start("globalVars", &[("name", name)])?;
             self.list_add_data(list)?;
+            self.documentation(&list.comment)?;
             return self.xml.end("globalVars");
         }
         let last = lists.len() - 1;
+        let owner = format!("gvl:{name}");
         for (index, run) in lists.into_iter().enumerate() {
-            let entry_of = (index == last).then_some(list);
-            let owner = format!("gvl:{name}");
-            self.variable_list("globalVars", Some(name), run, entry_of, Some(&owner))?;
+            let part = ListPart {
+                name: Some(name),
+                entry_of: (index == last).then_some(list),
+                comment: if index == 0 { &list.comment } else { "" },
+                owner: Some(&owner),
+            };
+            self.variable_list("globalVars", run, part)?;
         }
         Ok(())
     }
 
-    /// One list element, with the Rivet entry of `entry_of` when given.
+    /// One list element.
     fn variable_list(
         &mut self,
         element: &'static str,
-        name: Option<&str>,
         variables: &[Variable],
-        entry_of: Option<&GlobalVarList>,
-        owner: Option<&str>,
+        part: ListPart<'_>,
     ) -> Result<(), ExportError> {
         let mut attributes = Vec::new();
-        if let Some(name) = name {
+        if let Some(name) = part.name {
             attributes.push(("name", name));
         }
         if let Some(first) = variables.first() {
@@ -85,12 +95,15 @@ impl ProjectWriter<'_> {
         }
         self.xml.start(element, &attributes)?;
         for variable in variables {
-            let place = owner.map(|owner| format!("{owner}/variable:{}", variable.name));
+            let place = part
+                .owner
+                .map(|owner| format!("{owner}/variable:{}", variable.name));
             self.variable(variable, place.as_deref())?;
         }
-        if let Some(list) = entry_of {
+        if let Some(list) = part.entry_of {
             self.list_add_data(list)?;
         }
+        self.documentation(part.comment)?;
         self.xml.end(element)
     }
 
@@ -132,6 +145,18 @@ impl ProjectWriter<'_> {
         self.xml.cdata(text)?;
         self.xml.end("xhtml:p")
     }
+}
+
+/// What a list element carries besides its variables.
+struct ListPart<'a> {
+    /// The list's `name` (global variable lists).
+    name: Option<&'a str>,
+    /// The list whose entries (vendor and Rivet's) the element carries.
+    entry_of: Option<&'a GlobalVarList>,
+    /// The list's comment, as `documentation`.
+    comment: &'a str,
+    /// The place of the variables' owner (§5.5), `None` for a method's.
+    owner: Option<&'a str>,
 }
 
 /// Consecutive variables with the same list element and flags.

@@ -62,6 +62,7 @@ impl Converter<'_> {
     ) -> Result<(), ImportError> {
         let mut unnamed: Option<(GlobalVarList, Place)> = None;
         let restored = Self::rivet_list_names(lists);
+        let mut named_here: Vec<String> = Vec::new();
         for list in lists {
             if let Some(name) = &list.name
                 && restored.contains(name)
@@ -90,7 +91,15 @@ impl Converter<'_> {
             let variables = self.variables(std::slice::from_ref(list), owner_path, list.line)?;
             let (list_line, list_column) = (list.line, list.column);
             match &list.name {
+                // Lists of one name in one configuration or resource are parts of one list
+                // (Rivet's export writes a list whose variables' flags differ so).
+                Some(name) if named_here.contains(name) => {
+                    if let Some(Object::Gvl(gvl)) = self.project.application.object_mut(name) {
+                        gvl.variables.extend(variables);
+                    }
+                }
                 Some(name) => {
+                    named_here.push(name.clone());
                     let gvl = GlobalVarList {
                         name: name.clone(),
                         comment: comment(list.documentation.as_ref()),
