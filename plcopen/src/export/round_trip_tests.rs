@@ -196,3 +196,19 @@ fn without_rivet_object_entries_the_example_imports_as_another_tools_file() {
     let compared = assert_objects_equal(&expected, &imported.project, "the example");
     assert!(compared >= 5, "only {compared} objects came back");
 }
+
+#[test]
+fn without_rivet_object_entries_every_corpus_project_imports_back_its_objects() {
+    let options = super::ExportOptions {
+        object_entries: false,
+    };
+    for file in FILES {
+        let project = import(&read_corpus(file)).unwrap().project;
+        let xml = super::export_with(&project, options).unwrap();
+        assert_valid(&xml, file);
+        let document = read_bytes(&xml, "plain.xml").unwrap_or_else(|error| panic!("{error}"));
+        let imported = import(&document).unwrap_or_else(|error| panic!("{file}: {error}"));
+        assert_objects_equal(&project, &imported.project, file);
+        assert_eq!(imported.project.vendor_data, project.vendor_data, "{file}");
+    }
+}
