@@ -13,6 +13,7 @@ mod connection;
 mod data_type;
 mod document;
 mod error;
+mod export;
 mod fbd;
 mod header;
 mod import;
@@ -21,6 +22,7 @@ mod interface;
 mod ld;
 mod pou;
 mod reader;
+mod rivet_data;
 mod sfc;
 mod text;
 
@@ -31,6 +33,7 @@ pub use connection::{Connection, ConnectionPointIn, ConnectionPointOut};
 pub use data_type::{DataType, DataTypeDecl, Dimension, EnumValue, Value, ValueItem};
 pub use document::{Dialect, Document, XmlComment};
 pub use error::{ReadError, ReadErrorKind};
+pub use export::{ExportError, ExportOptions, export, export_with};
 pub use fbd::{
     Block, BlockPin, Connector, Continuation, InOutVariable, InVariable, Jump, Label, OutVariable,
     Return, VendorElement,
@@ -45,6 +48,7 @@ pub use interface::{Interface, VarList, VarListKind, Variable};
 pub use ld::{Coil, Contact, Edge, LeftPowerRail, RightPowerRail, Storage};
 pub use pou::{Action, Method, Pou, PouLocation, PouType, Transition};
 pub use reader::{MAX_DEPTH, MAX_FILE_BYTES, ReadFileError, read, read_bytes, read_file};
+pub use rivet_data::RIVET_NAMESPACE;
 pub use sfc::{
     ActionBlock, ActionBlockAction, ActionContent, Condition, ConditionForm, Convergence,
     Divergence, JumpStep, MacroStep, Qualifier, SfcTransition, Step,

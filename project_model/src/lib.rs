@@ -47,6 +47,7 @@ mod task;
 mod trace;
 mod validate;
 mod variable;
+mod vendor_data;
 mod watch;
 
 #[cfg(feature = "proptest")]
@@ -74,8 +75,9 @@ pub use dialect::Dialect;
 pub use edit::{Edit, EditError, TextTarget, TreeEdit, VarOwner};
 pub use files::{
     APPLICATION_DIR, FORMAT_VERSION, HeldBackObject, LoadError, LoadProblem, LoadedProject,
-    MANIFEST_FILE_NAME, SaveError, SaveReport, Severity, StBody, load_project, object_files,
-    save_project, save_project_keeping, st_body_files, text_body_files,
+    MANIFEST_FILE_NAME, SaveError, SaveReport, Severity, StBody, VENDOR_DATA_FILE_NAME,
+    load_project, object_files, save_project, save_project_keeping, st_body_files,
+    text_body_files,
 };
 pub use gvl::GlobalVarList;
 pub use history::{History, Transaction};
@@ -111,4 +113,5 @@ pub use sfc_problem::{SfcNodeKind, SfcProblem, SfcProblemKind};
 pub use task::{Task, TaskKind, Watchdog};
 pub use trace::{TraceConfig, TraceTrigger, TraceTriggerCondition, TraceVariable};
 pub use variable::{VarSection, Variable};
+pub use vendor_data::{VendorData, VendorEntry};
 pub use watch::{WatchEntry, WatchList};

@@ -2,7 +2,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::{Axis, Dialect, Folder, IoArea, ModbusDevice, Task};
+use crate::{Axis, Dialect, Folder, IoArea, ModbusDevice, Task, VendorData};
 
 /// A whole Rivet project, as loaded from its folder.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -32,6 +32,13 @@ pub struct Project {
     pub dialect: Dialect,
     /// The application: POUs, variable lists, types, cams, traces and watch lists in folders.
     pub application: Folder,
+    /// What another tool wrote into the PLCopen file the project was imported from that Rivet
+    /// does not model, written back by the export; saved in `plcopen.toml`.
+    #[cfg_attr(
+        feature = "proptest",
+        proptest(strategy = "proptest::strategy::Just(VendorData::default())")
+    )]
+    pub vendor_data: VendorData,
 }
 
 /// The controller node: the PLC the application is downloaded to.

@@ -2,11 +2,12 @@
 
 use std::collections::HashMap;
 
-use project_model::{Node, Object, Project};
+use project_model::{Node, Object, Project, VendorEntry};
 
 use super::error::{ImportError, ImportErrorKind};
 use super::report::{ImportReport, Outcome};
-use crate::add_data::AddData;
+use super::vendor_places::vendor_place;
+use crate::add_data::{AddData, AddDataEntry};
 use crate::document::Document;
 use crate::text::FormattedText;
 
@@ -84,18 +85,48 @@ impl<'d> Converter<'d> {
         Ok(())
     }
 
-    /// Lists every `addData` entry of an element as kept opaque.
+    /// Keeps every `addData` entry of an element in the project's vendor data and lists it as
+    /// kept opaque.
     pub fn opaque(&mut self, add_data: &AddData, path: &str, line: u32) {
-        for entry in &add_data.entries {
-            self.report.push(
-                Outcome::KeptOpaque,
-                format!("addData '{}'", entry.name),
-                &format!("{path}/addData/data[@name='{}']", entry.name),
-                line,
-                "",
-            );
+        // Rivet's own entries are read back, not kept (§5.4).
+        for entry in add_data
+            .entries
+            .iter()
+            .filter(|entry| !is_rivet_entry(&entry.name))
+        {
+            self.keep_vendor_entry(entry, path, line);
         }
     }
+
+    /// Keeps one entry of the element at `path` in the project's vendor data (§2.6), or reports
+    /// it not converted when its XML cannot stand alone.
+    pub fn keep_vendor_entry(&mut self, entry: &AddDataEntry, path: &str, line: u32) {
+        let what = format!("addData '{}'", entry.name);
+        let entry_path = format!("{path}/addData/data[@name='{}']", entry.name);
+        // The entry's text leaves out its ancestors' namespace declarations; the export
+        // declares only `xhtml`, so an entry using another prefix from outside cannot go back.
+        let standalone = format!(
+            "<r xmlns:xhtml=\"http://www.w3.org/1999/xhtml\">{}</r>",
+            entry.xml
+        );
+        if let Err(error) = roxmltree::Document::parse(&standalone) {
+            let note = format!("its XML cannot be written back on its own: {error}");
+            self.report
+                .push(Outcome::NotConverted, what, &entry_path, line, note);
+            return;
+        }
+        self.project.vendor_data.entries.push(VendorEntry {
+            place: vendor_place(path),
+            xml: entry.xml.clone(),
+        });
+        self.report
+            .push(Outcome::KeptOpaque, what, &entry_path, line, "");
+    }
+}
+
+/// True for the entries of Rivet's own data, which the import reads rather than keeps.
+pub(super) fn is_rivet_entry(name: &str) -> bool {
+    name.starts_with(crate::rivet_data::RIVET_NAMESPACE)
 }
 
 /// The comment of a documentation: its text without the blank lines and spaces around it.

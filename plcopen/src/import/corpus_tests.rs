@@ -26,7 +26,7 @@ fn is_st(pou: &crate::Pou) -> bool {
         .is_none_or(|body| body.cfc.is_none() && matches!(body.content, BodyContent::St(_)))
 }
 
-const FILES: [&str; 7] = [
+pub(crate) const FILES: [&str; 7] = [
     "plcopen/beremiz/exemples/first_steps/plc.xml",
     "plcopen/beremiz/tests/projects/iec61131_lang_test/plc.xml",
     "plcopen/beremiz/tests/projects/svghmi_basic/plc.xml",

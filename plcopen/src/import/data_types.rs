@@ -20,6 +20,9 @@ impl Converter<'_> {
                 line: declaration.line,
                 column: declaration.column,
             };
+            if self.rivet_data_type(declaration, &place)? {
+                continue;
+            }
             let definition = self.definition(declaration, &place)?;
             let data_type = project_model::DataType {
                 name: declaration.name.clone(),

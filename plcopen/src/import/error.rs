@@ -57,4 +57,7 @@ pub enum ImportErrorKind {
     /// A name that is not an IEC identifier, which Rivet needs for an object or task.
     #[error("`{0}` is not an IEC 61131-3 identifier")]
     BadName(String),
+    /// Rivet's own `addData` entry (`docs/plcopen-xml.md` §5.4) that cannot be read back.
+    #[error("Rivet's data cannot be read: {0}")]
+    RivetData(String),
 }

@@ -2,7 +2,7 @@
 
 use project_model::{GlobalVarList, Object};
 
-use super::converter::{Converter, Place, comment};
+use super::converter::{Converter, Place, comment, is_rivet_entry};
 use super::error::ImportError;
 use super::report::Outcome;
 use crate::interface::VarList;
@@ -44,13 +44,7 @@ impl Converter<'_> {
                 // CODESYS writes its POUs into a resource's `addData`; they were read as POUs.
                 for entry in &resource.add_data.entries {
                     if !entry.name.ends_with("/pou") {
-                        self.report.push(
-                            Outcome::KeptOpaque,
-                            format!("addData '{}'", entry.name),
-                            &format!("{resource_path}/addData/data[@name='{}']", entry.name),
-                            resource_line,
-                            "",
-                        );
+                        self.keep_vendor_entry(entry, &resource_path, resource_line);
                     }
                 }
             }
@@ -67,11 +61,45 @@ impl Converter<'_> {
         owner_path: &str,
     ) -> Result<(), ImportError> {
         let mut unnamed: Option<(GlobalVarList, Place)> = None;
+        let restored = Self::rivet_list_names(lists);
+        let mut named_here: Vec<String> = Vec::new();
         for list in lists {
+            if let Some(name) = &list.name
+                && restored.contains(name)
+            {
+                let place = Place {
+                    path: format!("{owner_path}/globalVars[@name='{name}']"),
+                    line: list.line,
+                    column: list.column,
+                };
+                // Only the last list of the name carries the entry; the others are its parts.
+                let has_entry = list
+                    .add_data
+                    .entries
+                    .iter()
+                    .any(|entry| is_rivet_entry(&entry.name));
+                if has_entry {
+                    let parts: Vec<VarList> = lists
+                        .iter()
+                        .filter(|part| part.name.as_ref() == Some(name))
+                        .cloned()
+                        .collect();
+                    self.rivet_list(&parts, &place)?;
+                }
+                continue;
+            }
             let variables = self.variables(std::slice::from_ref(list), owner_path, list.line)?;
             let (list_line, list_column) = (list.line, list.column);
             match &list.name {
+                // Lists of one name in one configuration or resource are parts of one list
+                // (Rivet's export writes a list whose variables' flags differ so).
+                Some(name) if named_here.contains(name) => {
+                    if let Some(Object::Gvl(gvl)) = self.project.application.object_mut(name) {
+                        gvl.variables.extend(variables);
+                    }
+                }
                 Some(name) => {
+                    named_here.push(name.clone());
                     let gvl = GlobalVarList {
                         name: name.clone(),
                         comment: comment(list.documentation.as_ref()),

@@ -8,12 +8,14 @@ mod error;
 mod globals;
 mod pous;
 mod report;
+mod rivet_data;
 mod tasks;
 mod type_text;
 mod variables;
+mod vendor_places;
 
 #[cfg(test)]
-mod corpus_tests;
+pub(crate) mod corpus_tests;
 #[cfg(test)]
 mod import_tests;
 
@@ -50,8 +52,13 @@ pub fn import(document: &Document) -> Result<Imported, ImportError> {
     converter.data_types()?;
     converter.pous()?;
     converter.globals()?;
-    converter.tasks()?;
+    // A document Rivet wrote carries its tasks (with what PLCopen cannot say) in its own data.
+    match converter.rivet_project()? {
+        Some(entry) => converter.apply_rivet_project(entry)?,
+        None => converter.tasks()?,
+    }
     converter.opaque(&document.add_data, "project", 1);
+    converter.keep_header(document);
     // XML comments (`<!--ObjectVersion: LD1-->`) stay in the document for the export.
     for comment in &document.xml_comments {
         converter.report.push(

@@ -2,7 +2,7 @@
 
 use project_model::{Body, Method, Object, PouAction, PouKind};
 
-use super::converter::{Converter, Place, comment};
+use super::converter::{Converter, Place, comment, is_rivet_entry};
 use super::error::{ImportError, ImportErrorKind};
 use super::report::Outcome;
 use super::type_text::type_text;
@@ -55,6 +55,9 @@ impl Converter<'_> {
             line: pou.line,
             column: pou.column,
         };
+        if self.rivet_pou(pou, &place)? {
+            return Ok(());
+        }
         let what = format!("POU '{}'", pou.name);
         let body = match pou.bodies.first() {
             None => Body::None,
@@ -213,21 +216,15 @@ impl Converter<'_> {
         );
         // The methods were read from the POU's own `addData`; the other entries are opaque.
         for entry in &pou.add_data.entries {
-            if !entry.name.ends_with("/method") {
-                self.report.push(
-                    Outcome::KeptOpaque,
-                    format!("addData '{}'", entry.name),
-                    &format!("{}/addData/data[@name='{}']", place.path, entry.name),
-                    place.line,
-                    "",
-                );
+            if !entry.name.ends_with("/method") && !is_rivet_entry(&entry.name) {
+                self.keep_vendor_entry(entry, &place.path, place.line);
             }
         }
         Ok(())
     }
 
     /// The declarations and return type of an interface.
-    fn interface(
+    pub(super) fn interface(
         &mut self,
         interface: Option<&Interface>,
         path: &str,

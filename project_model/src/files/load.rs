@@ -10,9 +10,9 @@ use super::layout::{Entry, bodies_mut, body_slots, folder_dir, object_file, pars
 use super::manifest::{Manifest, VersionProbe};
 use super::older_versions::{OlderFailure, pou_from_older};
 use super::problem::{LoadError, LoadProblem, Severity, line_of, toml_problem};
-use super::{APPLICATION_DIR, FORMAT_VERSION, MANIFEST_FILE_NAME};
+use super::{APPLICATION_DIR, FORMAT_VERSION, MANIFEST_FILE_NAME, VENDOR_DATA_FILE_NAME};
 use crate::validate::{body_problems, member_problem};
-use crate::{Body, Folder, Node, Object, ObjectKind, Pou, Project, same_identifier};
+use crate::{Body, Folder, Node, Object, ObjectKind, Pou, Project, VendorData, same_identifier};
 
 /// A project read from disk.
 #[derive(Clone, Debug, PartialEq)]
@@ -119,7 +119,9 @@ impl Loader<'_> {
             let line = line_of(&text, entry.span().start);
             self.load_entry(&mut application, entry.get_ref(), &display, line);
         }
+        let vendor_data = self.load_vendor_data()?;
         Some(Project {
+            vendor_data,
             name: manifest.name,
             description: manifest.description,
             controller: manifest.controller,
@@ -130,6 +132,17 @@ impl Loader<'_> {
             dialect: manifest.dialect,
             application,
         })
+    }
+
+    /// The vendor data of `plcopen.toml`, empty when the file is absent; `None` (with the
+    /// problem reported) when it cannot be read.
+    fn load_vendor_data(&mut self) -> Option<VendorData> {
+        let file = PathBuf::from(VENDOR_DATA_FILE_NAME);
+        if !self.dir.join(&file).exists() {
+            return Some(VendorData::default());
+        }
+        let text = self.read_text(&file)?;
+        self.parse(&file, &text)
     }
 
     /// Reports a missing or foreign format version; returns whether loading can go on.

@@ -31,5 +31,9 @@ pub const FORMAT_VERSION: u32 = 3;
 /// The name of the manifest file at the root of a project folder.
 pub const MANIFEST_FILE_NAME: &str = "rivet.toml";
 
+/// The name of the file beside the manifest that holds the vendor data of an imported PLCopen
+/// file, present only when there is some.
+pub const VENDOR_DATA_FILE_NAME: &str = "plcopen.toml";
+
 /// The folder, relative to the project folder, that holds the application's objects.
 pub const APPLICATION_DIR: &str = "application";

@@ -11,7 +11,7 @@ use super::canonical::to_canonical_toml;
 use super::held_back::HeldBackObject;
 use super::layout::{body_slots, folder_dir, folder_entry, object_entry, object_file, object_toml};
 use super::manifest::Manifest;
-use super::{FORMAT_VERSION, MANIFEST_FILE_NAME};
+use super::{FORMAT_VERSION, MANIFEST_FILE_NAME, VENDOR_DATA_FILE_NAME};
 use crate::validate::object_problem;
 use crate::{Folder, Node, Object, Project, is_valid_identifier, same_identifier};
 
@@ -148,6 +148,14 @@ fn render(
         message,
     })?;
     files.insert(PathBuf::from(MANIFEST_FILE_NAME), text);
+    if !project.vendor_data.is_empty() {
+        let text =
+            to_canonical_toml(&project.vendor_data).map_err(|message| SaveError::Serialize {
+                path: VENDOR_DATA_FILE_NAME.into(),
+                message,
+            })?;
+        files.insert(PathBuf::from(VENDOR_DATA_FILE_NAME), text);
+    }
     Ok(files)
 }
 

@@ -1,0 +1,228 @@
+//! Rivet's own data in `addData` (`docs/plcopen-xml.md` §5.4): what PLCopen cannot express, so a
+//! project exported and imported again is the same project.
+//!
+//! Every entry is `<data name="https://rivet-plc.dev/plcopen/1/WHAT" handleUnknown="preserve">`
+//! with one element of the namespace `https://rivet-plc.dev/plcopen/1` inside. The export writes
+//! them and the import reads them; the texts inside are the TOML of the project's own files
+//! (`docs/project-format.md`), so the two formats cannot drift apart.
+
+use project_model::{Axis, Controller, Dialect, IoArea, ModbusDevice, Task};
+use serde::{Deserialize, Serialize};
+
+/// Rivet's namespace for its `addData` entries and their elements.
+pub const RIVET_NAMESPACE: &str = "https://rivet-plc.dev/plcopen/1";
+
+/// The entry of the project's `addData` holding [`ProjectEntry`].
+pub(crate) const PROJECT_ENTRY: &str = "https://rivet-plc.dev/plcopen/1/project";
+
+/// The entry of an object (POU, data type, list; cams, traces and watch lists in the project's
+/// `addData`) holding the object's file.
+pub(crate) const OBJECT_ENTRY: &str = "https://rivet-plc.dev/plcopen/1/object";
+
+/// The entry of an LD or FBD body's `addData` delimiting its networks and holding their
+/// titles, comments and labels: `<networks><network first="LOCALID" title comment label/>`.
+pub(crate) const NETWORKS_ENTRY: &str = "https://rivet-plc.dev/plcopen/1/networks";
+
+/// The entry of an FBD body's `addData` saying it is a CFC chart: `<language name="CFC"/>`.
+pub(crate) const LANGUAGE_ENTRY: &str = "https://rivet-plc.dev/plcopen/1/language";
+
+/// The entry of an SFC step's `addData` with what PLCopen has no attribute for:
+/// `<step minTime maxTime entryAction mainAction exitAction comment/>`, empty ones left out.
+pub(crate) const STEP_ENTRY: &str = "https://rivet-plc.dev/plcopen/1/step";
+
+/// The entry of the project's `addData` holding another tool's entry whose place the export does
+/// not write (a POU Rivet did not convert, for one): `<vendor place="…">` with the entry's XML
+/// as text.
+pub(crate) const VENDOR_ENTRY: &str = "https://rivet-plc.dev/plcopen/1/vendor";
+
+/// What the project entry holds: the device tree, the dialect and the application tree, which
+/// PLCopen has no place for (its tasks are also written as PLCopen tasks, but Rivet's carry a
+/// watchdog and events PLCopen cannot say).
+#[derive(Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct ProjectEntry {
+    /// The project's name (also the content header's `name`).
+    pub name: String,
+    /// The project's description (also the content header's `Comment`).
+    #[serde(default)]
+    pub description: String,
+    /// The dialect.
+    #[serde(default)]
+    pub dialect: Dialect,
+    /// The controller.
+    pub controller: Controller,
+    /// The tasks, in order.
+    #[serde(default, rename = "task")]
+    pub tasks: Vec<Task>,
+    /// The I/O areas.
+    #[serde(default, rename = "io_area")]
+    pub io_areas: Vec<IoArea>,
+    /// The Modbus devices.
+    #[serde(default, rename = "modbus_device")]
+    pub modbus_devices: Vec<ModbusDevice>,
+    /// The axes.
+    #[serde(default, rename = "axis")]
+    pub axes: Vec<Axis>,
+    /// The application tree in display order, depth first: folders and objects by name.
+    #[serde(default, rename = "node")]
+    pub nodes: Vec<TreeNode>,
+}
+
+/// One entry of the application tree.
+#[derive(Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct TreeNode {
+    /// The folder path the entry stands in (for a folder: its own path, its name last).
+    #[serde(default)]
+    pub folder: Vec<String>,
+    /// The object's name; `None` for a folder.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub object: Option<String>,
+}
+
+/// The kind of an object entry, as its `kind` attribute says it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum ObjectEntryKind {
+    /// `pou`.
+    Pou,
+    /// `type`.
+    DataType,
+    /// `gvl`.
+    Gvl,
+    /// `cam`.
+    Cam,
+    /// `trace`.
+    Trace,
+    /// `watch`.
+    Watch,
+}
+
+impl ObjectEntryKind {
+    /// The `kind` attribute.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Self::Pou => "pou",
+            Self::DataType => "type",
+            Self::Gvl => "gvl",
+            Self::Cam => "cam",
+            Self::Trace => "trace",
+            Self::Watch => "watch",
+        }
+    }
+
+    /// The kind named by a `kind` attribute.
+    pub fn parse(text: &str) -> Option<Self> {
+        [
+            Self::Pou,
+            Self::DataType,
+            Self::Gvl,
+            Self::Cam,
+            Self::Trace,
+            Self::Watch,
+        ]
+        .into_iter()
+        .find(|kind| kind.as_str() == text)
+    }
+}
+
+/// An object entry as read back: its kind, name, TOML and the ST texts PLCopen has no place for
+/// (property accessors), by the key `PROPERTY.get` or `PROPERTY.set`.
+#[derive(Debug, PartialEq)]
+pub(crate) struct ObjectEntry {
+    /// The object's kind.
+    pub kind: ObjectEntryKind,
+    /// The object's name.
+    pub name: String,
+    /// The object's file, as TOML.
+    pub toml: String,
+    /// ST texts by key.
+    pub st: Vec<(String, String)>,
+}
+
+/// Reads the element of a Rivet entry from the entry's raw XML (`<data …>…</data>`): the
+/// element's attributes, its text and its children's (name, key attribute, text).
+pub(crate) fn parse_object_entry(xml: &str) -> Result<ObjectEntry, String> {
+    let document = roxmltree::Document::parse(xml).map_err(|error| error.to_string())?;
+    let element = document
+        .root_element()
+        .children()
+        .find(|node| node.is_element())
+        .ok_or("the entry holds no element")?;
+    if element.tag_name().namespace() != Some(RIVET_NAMESPACE)
+        || element.tag_name().name() != "object"
+    {
+        return Err(format!("expected an `object` element of {RIVET_NAMESPACE}"));
+    }
+    let kind_text = element.attribute("kind").ok_or("`kind` is missing")?;
+    let kind = ObjectEntryKind::parse(kind_text)
+        .ok_or_else(|| format!("`{kind_text}` is not a kind of object"))?;
+    let name = element
+        .attribute("name")
+        .ok_or("`name` is missing")?
+        .to_owned();
+    let mut toml = None;
+    let mut st = Vec::new();
+    for child in element.children().filter(|node| node.is_element()) {
+        let text = child_text(child);
+        match child.tag_name().name() {
+            "toml" => toml = Some(text),
+            "st" => {
+                let key = child.attribute("body").ok_or("an `st` without `body`")?;
+                st.push((key.to_owned(), text));
+            }
+            other => return Err(format!("unexpected element `{other}`")),
+        }
+    }
+    Ok(ObjectEntry {
+        kind,
+        name,
+        toml: toml.ok_or("the `toml` element is missing")?,
+        st,
+    })
+}
+
+/// Reads the TOML of the project entry from its raw XML.
+pub(crate) fn parse_project_entry(xml: &str) -> Result<ProjectEntry, String> {
+    let document = roxmltree::Document::parse(xml).map_err(|error| error.to_string())?;
+    let element = document
+        .root_element()
+        .children()
+        .find(|node| node.is_element())
+        .ok_or("the entry holds no element")?;
+    if element.tag_name().namespace() != Some(RIVET_NAMESPACE)
+        || element.tag_name().name() != "project"
+    {
+        return Err(format!("expected a `project` element of {RIVET_NAMESPACE}"));
+    }
+    toml::from_str(&child_text(element)).map_err(|error| error.to_string())
+}
+
+/// Reads a vendor entry kept in a `…/vendor` entry: its place and XML.
+pub(crate) fn parse_vendor_entry(xml: &str) -> Result<project_model::VendorEntry, String> {
+    let document = roxmltree::Document::parse(xml).map_err(|error| error.to_string())?;
+    let element = document
+        .root_element()
+        .children()
+        .find(|node| node.is_element())
+        .ok_or("the entry holds no element")?;
+    if element.tag_name().namespace() != Some(RIVET_NAMESPACE)
+        || element.tag_name().name() != "vendor"
+    {
+        return Err(format!("expected a `vendor` element of {RIVET_NAMESPACE}"));
+    }
+    Ok(project_model::VendorEntry {
+        place: element
+            .attribute("place")
+            .ok_or("`place` is missing")?
+            .to_owned(),
+        xml: child_text(element),
+    })
+}
+
+/// The text of an element: its text and CDATA nodes joined.
+fn child_text(node: roxmltree::Node<'_, '_>) -> String {
+    node.children()
+        .filter(|child| child.is_text())
+        .filter_map(|child| child.text())
+        .collect()
+}

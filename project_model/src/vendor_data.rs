@@ -1,0 +1,109 @@
+//! Data other tools wrote into an imported PLCopen XML file that Rivet does not model, kept in
+//! the project so an export writes it back where it came from (`docs/plcopen-xml.md` §2.6, §5.5).
+
+use serde::{Deserialize, Serialize};
+
+/// The vendor data of an imported PLCopen file. Saved in `plcopen.toml` beside the manifest
+/// when not empty (`docs/project-format.md` §3.1); lives as long as the project.
+#[derive(Clone, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct VendorData {
+    /// The imported file's `fileHeader@creationDateTime`, which the export writes back instead
+    /// of its fixed date, so a file taken in and given back keeps its date.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub creation_date_time: Option<String>,
+    /// The `addData/data` entries, ordered by place and, within a place, as the file had them.
+    #[serde(default, rename = "entry", skip_serializing_if = "Vec::is_empty")]
+    pub entries: Vec<VendorEntry>,
+}
+
+/// One `addData/data` entry of another tool.
+#[derive(Clone, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct VendorEntry {
+    /// Where it stood, named by object and path: `project`, `contentHeader`, `pou:Main`,
+    /// `pou:Main/body`, `pou:Main/interface`, `pou:Main/action:A`, `pou:Main/transition:T`,
+    /// `pou:Main/variable:x`, `type:T`, `gvl:G`, `gvl:G/variable:x`, `task:T`,
+    /// `configuration`, `resource` (`docs/plcopen-xml.md` §2.6).
+    pub place: String,
+    /// The whole `data` element as the file had it, from `<data` to `</data>`.
+    pub xml: String,
+}
+
+impl VendorData {
+    /// True when there is nothing to keep.
+    pub fn is_empty(&self) -> bool {
+        self.creation_date_time.is_none() && self.entries.is_empty()
+    }
+
+    /// The entries of `place`, in order.
+    pub fn at<'a>(&'a self, place: &'a str) -> impl Iterator<Item = &'a VendorEntry> + 'a {
+        self.entries
+            .iter()
+            .filter(move |entry| entry.place == place)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use std::collections::BTreeSet;
+
+    use super::*;
+    use crate::{Project, VENDOR_DATA_FILE_NAME, load_project, save_project};
+
+    fn with_vendor_data() -> Project {
+        Project {
+            name: "Imported".into(),
+            vendor_data: VendorData {
+                creation_date_time: Some("2016-10-24T18:09:22".into()),
+                entries: vec![VendorEntry {
+                    place: "pou:Main".into(),
+                    xml: "<data name=\"http://www.3s-software.com/plcopenxml/objectid\" handleUnknown=\"discard\">\n  <ObjectId>832e</ObjectId>\n</data>".into(),
+                }],
+            },
+            ..Project::default()
+        }
+    }
+
+    #[test]
+    fn vendor_data_is_saved_beside_the_manifest_and_loads_back() {
+        let dir = tempfile::tempdir().unwrap();
+        let project = with_vendor_data();
+        let saved = save_project(&project, dir.path(), &BTreeSet::new()).unwrap();
+        assert!(
+            saved
+                .files
+                .contains(std::path::Path::new(VENDOR_DATA_FILE_NAME))
+        );
+        let loaded = load_project(dir.path()).unwrap();
+        assert_eq!(loaded.project, project);
+        assert!(loaded.warnings.is_empty(), "{:?}", loaded.warnings);
+    }
+
+    #[test]
+    fn a_project_without_vendor_data_has_no_file_and_loses_an_old_one() {
+        let dir = tempfile::tempdir().unwrap();
+        let saved = save_project(&with_vendor_data(), dir.path(), &BTreeSet::new()).unwrap();
+        let emptied = Project {
+            name: "Imported".into(),
+            ..Project::default()
+        };
+        let second = save_project(&emptied, dir.path(), &saved.files).unwrap();
+        assert_eq!(
+            second.removed,
+            vec![std::path::PathBuf::from(VENDOR_DATA_FILE_NAME)]
+        );
+        assert!(!dir.path().join(VENDOR_DATA_FILE_NAME).exists());
+        assert_eq!(load_project(dir.path()).unwrap().project, emptied);
+    }
+
+    #[test]
+    fn a_broken_vendor_data_file_is_an_error_naming_it() {
+        let dir = tempfile::tempdir().unwrap();
+        save_project(&with_vendor_data(), dir.path(), &BTreeSet::new()).unwrap();
+        std::fs::write(dir.path().join(VENDOR_DATA_FILE_NAME), "entry = 3\n").unwrap();
+        let error = load_project(dir.path()).unwrap_err();
+        let text = error.to_string();
+        assert!(text.contains(VENDOR_DATA_FILE_NAME), "{text}");
+    }
+}
