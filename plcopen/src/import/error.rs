@@ -57,4 +57,7 @@ pub enum ImportErrorKind {
     /// A name that is not an IEC identifier, which Rivet needs for an object or task.
     #[error("`{0}` is not an IEC 61131-3 identifier")]
     BadName(String),
+    /// An LD or FBD body Rivet cannot turn into networks (`docs/plcopen-xml.md` §3.6).
+    #[error("{0}")]
+    Network(#[from] super::network_error::NetworkError),
 }

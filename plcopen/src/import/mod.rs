@@ -6,6 +6,12 @@ mod data_types;
 mod duration;
 mod error;
 mod globals;
+mod network_build;
+mod network_error;
+mod network_graph;
+mod network_groups;
+mod network_import;
+mod network_series_parallel;
 mod pous;
 mod report;
 mod tasks;
@@ -16,12 +22,15 @@ mod variables;
 mod corpus_tests;
 #[cfg(test)]
 mod import_tests;
+#[cfg(test)]
+mod network_corpus_tests;
 
 use crate::document::Document;
 use converter::Converter;
 
 pub use duration::parse_interval_us;
 pub use error::{ImportError, ImportErrorKind};
+pub use network_error::NetworkError;
 pub use report::{ImportReport, Outcome, ReportEntry};
 
 /// A project converted from a document, with the report of what became of each part.
