@@ -24,6 +24,8 @@ mod corpus_tests;
 mod import_tests;
 #[cfg(test)]
 mod network_corpus_tests;
+#[cfg(test)]
+mod network_tests;
 
 use crate::document::Document;
 use converter::Converter;

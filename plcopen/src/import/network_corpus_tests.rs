@@ -1,7 +1,8 @@
 //! The LD and FBD bodies of the corpora converted into networks.
 
-use project_model::{Body, Object};
+use project_model::{Body, Network, Object};
 
+use super::network_tests::rendered;
 use super::{Imported, Outcome, import};
 use crate::reader::corpus_tests::read_corpus;
 
@@ -10,27 +11,97 @@ fn import_corpus(relative: &str) -> Imported {
     import(&document).unwrap_or_else(|error| panic!("{error}"))
 }
 
-#[test]
-fn dump() {
-    for file in [
-        "plcopen/beremiz/exemples/first_steps/plc.xml",
-        "plcopen/beremiz/tests/projects/iec61131_lang_test/plc.xml",
-        "plcopen/codesys/codesys_code_execution_speedTests.xml",
-        "matiec/tests/LD_TEST.xml",
-    ] {
-        let imported = import_corpus(file);
-        for node in &imported.project.application.children {
-            if let project_model::Node::Object(Object::Pou(pou)) = node {
-                if let Body::Ld { networks } | Body::Fbd { networks } = &pou.body {
-                    eprintln!("== {file} {}", pou.name);
-                    for n in networks {
-                        eprintln!("{n:?}");
-                    }
-                }
-            }
-        }
-        for entry in imported.report.with_outcome(Outcome::NotConverted) {
-            eprintln!("NOT {}: {}", entry.what, entry.note);
-        }
+#[track_caller]
+fn networks<'i>(imported: &'i Imported, name: &str) -> &'i [Network] {
+    match imported.project.application.object(name) {
+        Some(Object::Pou(pou)) => match &pou.body {
+            Body::Ld { networks } | Body::Fbd { networks } => networks,
+            other => panic!("{name}: {other:?}"),
+        },
+        other => panic!("{name}: {other:?}"),
     }
+}
+
+const FIRST_STEPS: &str = "plcopen/beremiz/exemples/first_steps/plc.xml";
+
+#[test]
+fn first_steps_counters_in_ld_and_fbd_write_the_counter_and_its_output() {
+    let imported = import_corpus(FIRST_STEPS);
+    // The inOutVariable Cnt is written by SEL and read by ADD before the write.
+    assert_eq!(
+        rendered(networks(&imported, "CounterLD")),
+        ["Reset SEL(G; IN0=1 ADD(IN1; IN2=Cnt); IN1=ResetCounterValue) -> Out, Cnt"]
+    );
+    assert_eq!(
+        rendered(networks(&imported, "CounterFBD")),
+        ["Reset SEL(G; IN0=1 ADD(IN1; IN2=Cnt); IN1=ResetCounterValue) -> OUT, Cnt"]
+    );
+}
+
+#[test]
+fn first_steps_program_runs_its_counters_before_the_average_that_reads_them() {
+    let imported = import_corpus(FIRST_STEPS);
+    let networks = networks(&imported, "plc_prg");
+    assert_eq!(
+        rendered(networks),
+        [
+            "Reset CounterFBD[CounterFBD0](Reset) -> Cnt2",
+            "Reset CounterSFC[CounterSFC0](Reset) -> Cnt3",
+            "Reset CounterIL[CounterIL0](Reset) -> Cnt4",
+            "Reset CounterLD[CounterLD0](Reset) -> Cnt5",
+            "Reset CounterST[CounterST0](Reset) -> {AverageVal(Cnt1; Cnt2=Cnt2; Cnt3=Cnt3; Cnt4=Cnt4; Cnt5=Cnt5) -> AVCnt}, Cnt1",
+        ]
+    );
+    assert!(networks[0].comment.contains("all five IEC 61131-3"));
+    assert_eq!(
+        imported
+            .report
+            .entry("POU 'plc_prg'")
+            .map(|entry| entry.outcome),
+        Some(Outcome::Converted)
+    );
+}
+
+#[test]
+fn language_test_reads_instance_outputs_wired_to_several_boxes_as_variables() {
+    let imported = import_corpus("plcopen/beremiz/tests/projects/iec61131_lang_test/plc.xml");
+    let rendered = rendered(networks(&imported, "main_test"));
+    assert_eq!(rendered.len(), 3, "{rendered:#?}");
+    assert_eq!(
+        rendered[1],
+        "CONVERSION_TEST0.ENO LOGGER[LOGGER0](TRIG; MSG='CONVERSION: ' CONCAT(IN1; IN2=CONVERSION_TEST0.RESULT); LEVEL=DEBUG)"
+    );
+    assert_eq!(
+        rendered[2],
+        "TEMPO_TEST0.VALID LOGGER[LOGGER1](TRIG; MSG='TEMPO: ' CONCAT(IN1; IN2=TEMPO_TEST0.RESULT); LEVEL=DEBUG)"
+    );
+    // SUB's result, not its ENO, feeds the next box: a graph for a CFC chart.
+    let tempo = imported.report.entry("POU 'TEMPO_TEST'");
+    assert!(
+        tempo.is_some_and(|entry| entry.outcome == Outcome::NotConverted
+            && entry
+                .note
+                .contains("the output OUT of the function SUB drives another element")),
+        "{tempo:?}"
+    );
+}
+
+#[test]
+fn codesys_boxes_without_positions_assign_their_output_expressions() {
+    let imported = import_corpus("plcopen/codesys/codesys_code_execution_speedTests.xml");
+    // CODESYS writes a contact TRUE before a box's EN, and the box's result as an expression.
+    assert_eq!(
+        rendered(networks(&imported, "addTwoIntsLadder")),
+        ["TRUE ADD(EN; In2=Int1; In3=Int2) Out2:=addTwoIntsLadder"]
+    );
+    assert_eq!(
+        rendered(networks(&imported, "addTwoIntsFBD")),
+        ["int1 ADD(In1; In2=int2) -> addTwoIntsFBD"]
+    );
+}
+
+#[test]
+fn matiec_empty_ld_body_has_no_networks() {
+    let imported = import_corpus("matiec/tests/LD_TEST.xml");
+    assert!(networks(&imported, "MAIN_TEST").is_empty());
 }
