@@ -1,4 +1,4 @@
-//! The conversion of a [`Document`] into a Rivet project (`docs/plcopen-xml.md` §2).
+//! The conversion of a [`Document`] into a Rivet project (`docs/plcopen-xml.md` §2 and §3).
 
 mod codesys_attributes;
 mod converter;
@@ -47,8 +47,10 @@ pub struct Imported {
 
 /// Converts `document` into a project; nothing is written anywhere.
 ///
-/// ST bodies, actions, transitions and methods are converted; LD, FBD, CFC, SFC and IL bodies
-/// are listed in the report as not converted (a later part of issue 18 converts them).
+/// ST, LD and FBD bodies of POUs, actions, transitions and methods are converted (LD and FBD
+/// into networks, §3 of `docs/plcopen-xml.md`); CFC, SFC and IL bodies, and FBD graphs that are
+/// not networks, are listed in the report as not converted (a later part of issue 18 converts
+/// them).
 pub fn import(document: &Document) -> Result<Imported, ImportError> {
     let mut converter = Converter::new(document);
     converter.project.name = document.content_header.name.clone();

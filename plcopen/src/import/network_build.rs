@@ -124,7 +124,9 @@ impl<'g, 'b> NetworkBuilder<'g, 'b> {
             return Ok(network);
         }
         let upstream = self.ancestors(&sink_points);
-        for &point in &upstream {
+        let mut in_order: Vec<usize> = upstream.iter().copied().collect();
+        in_order.sort_unstable();
+        for point in in_order {
             if self.value_uses[point] > 0 {
                 return Err(self.fan_out(point));
             }
@@ -404,14 +406,18 @@ impl<'g, 'b> NetworkBuilder<'g, 'b> {
     }
 
     fn fan_out(&self, point: usize) -> BuildFailure {
+        // A junction of one wire is an alias of its producer's output: name the producer.
         let what = self
             .points
             .iter()
-            .find(|(_, p)| **p == point)
-            .and_then(|(key, _)| match key {
-                PointKey::Output(object, _) | PointKey::Junction(object, _) => Some(*object),
+            .filter(|(_, p)| **p == point)
+            .filter_map(|(key, _)| match key {
+                PointKey::Output(object, _) => Some((0, *object)),
+                PointKey::Junction(object, _) => Some((1, *object)),
                 _ => None,
             })
+            .min()
+            .map(|(_, object)| object)
             .map_or_else(String::new, |object| {
                 format!(
                     " of the {} with local id {}",
@@ -661,7 +667,9 @@ impl<'g, 'b> NetworkBuilder<'g, 'b> {
     /// The chain that drives a box input at `point`, which nothing else may read.
     fn value_source(&mut self, point: usize) -> Result<Vec<FlowNode>, BuildFailure> {
         let upstream = self.ancestors(&[point]);
-        for &inner in &upstream {
+        let mut in_order: Vec<usize> = upstream.iter().copied().collect();
+        in_order.sort_unstable();
+        for inner in in_order {
             if inner == 0 {
                 continue;
             }

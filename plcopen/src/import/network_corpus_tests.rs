@@ -66,14 +66,13 @@ fn first_steps_program_runs_its_counters_before_the_average_that_reads_them() {
 fn language_test_reads_instance_outputs_wired_to_several_boxes_as_variables() {
     let imported = import_corpus("plcopen/beremiz/tests/projects/iec61131_lang_test/plc.xml");
     let rendered = rendered(networks(&imported, "main_test"));
-    assert_eq!(rendered.len(), 3, "{rendered:#?}");
+    // CONVERSION_TEST0's ENO drives two boxes: two branches of the power.
     assert_eq!(
-        rendered[1],
-        "CONVERSION_TEST0.ENO LOGGER[LOGGER0](TRIG; MSG='CONVERSION: ' CONCAT(IN1; IN2=CONVERSION_TEST0.RESULT); LEVEL=DEBUG)"
-    );
-    assert_eq!(
-        rendered[2],
-        "TEMPO_TEST0.VALID LOGGER[LOGGER1](TRIG; MSG='TEMPO: ' CONCAT(IN1; IN2=TEMPO_TEST0.RESULT); LEVEL=DEBUG)"
+        rendered,
+        [
+            "TRUE R_TRIG[R_TRIG0](CLK) CONVERSION_TEST[CONVERSION_TEST0](EN) -> {AND(IN1; IN2=CONVERSION_TEST0.RESULT EQ(IN1; IN2='OK')) SR[SR1](S1; R) AND(IN1; IN2=TRUE TEMPO_TEST[TEMPO_TEST0](RUN) AND(IN1; IN2=TEMPO_TEST0.RESULT EQ(IN1; IN2='OK')) SR[SR0](S1; R)) LOGGER[LOGGER2](TRIG; MSG='ALL TESTS OK'; LEVEL=DEBUG)}, {LOGGER[LOGGER0](TRIG; MSG='CONVERSION: ' CONCAT(IN1; IN2=CONVERSION_TEST0.RESULT); LEVEL=DEBUG)}",
+            "TEMPO_TEST0.VALID LOGGER[LOGGER1](TRIG; MSG='TEMPO: ' CONCAT(IN1; IN2=TEMPO_TEST0.RESULT); LEVEL=DEBUG)",
+        ]
     );
     // SUB's result, not its ENO, feeds the next box: a graph for a CFC chart.
     let tempo = imported.report.entry("POU 'TEMPO_TEST'");
@@ -104,4 +103,20 @@ fn codesys_boxes_without_positions_assign_their_output_expressions() {
 fn matiec_empty_ld_body_has_no_networks() {
     let imported = import_corpus("matiec/tests/LD_TEST.xml");
     assert!(networks(&imported, "MAIN_TEST").is_empty());
+}
+
+#[test]
+fn matiec_string_tests_convert_and_a_function_read_twice_is_left_for_a_chart() {
+    let imported = import_corpus("matiec/tests/STD_TEST.xml");
+    assert_eq!(
+        rendered(networks(&imported, "TEST_FROM_STRINGS"))[0],
+        "-> {TESTNR -> NEXT_TEST}, {0 LIMIT(MN; IN=TESTNR; MX=3) -> {MUX(K; IN0=IN1 LEN(IN); IN1=IN1 EQ(IN1; IN2=IN2); IN2=IN2 EQ(IN1; IN2=IN2); IN3=IN1 FIND(IN1; IN2=IN2)) -> INTRES}, {MUX(K; IN0='LEN'; IN1='EQ(IN1,IN2)'; IN2='EQ(IN2,IN2)'; IN3='FIND') -> TEST_NAME}}"
+    );
+    let entry = imported.report.entry("POU 'TEST_TO_STRINGS'");
+    assert!(
+        entry.is_some_and(|entry| entry
+            .note
+            .contains("the value of the block with local id 2 drives more than one input")),
+        "{entry:?}"
+    );
 }

@@ -14,6 +14,11 @@ pub(super) struct BodyGraph<'b> {
     pub objects: &'b [BodyObject],
     /// Each object's input points in order (a block's inputs, then its in-outs).
     pub inputs: Vec<Vec<InputPoint<'b>>>,
+    /// The consumers of each output (object, pin): object and input index, in document order;
+    /// rebuilt after each change of the wires.
+    consumer_index: HashMap<(usize, usize), Vec<(usize, usize)>>,
+    /// For each object, the objects its outputs drive; rebuilt with `consumer_index`.
+    reader_index: Vec<Vec<usize>>,
 }
 
 /// One input point of an object and what drives it.
@@ -91,29 +96,56 @@ impl<'b> BodyGraph<'b> {
         let mut graph = Self {
             objects,
             inputs: Vec::with_capacity(objects.len()),
+            consumer_index: HashMap::new(),
+            reader_index: Vec::new(),
         };
         for (position, object) in objects.iter().enumerate() {
             let points = graph.raw_inputs(position, object, &index)?;
             graph.inputs.push(points);
         }
         graph.resolve_continuations()?;
+        graph.reindex();
         graph.read_instances();
+        graph.reindex();
         graph.read_in_outs_before_their_write();
+        graph.reindex();
         Ok(graph)
     }
 
-    /// Every consumer of `producer`: the object and its input's index.
+    /// Every consumer of output `pin` of `object`: the object and its input's index.
     pub fn consumers(&self, object: usize, pin: usize) -> Vec<(usize, usize)> {
-        let wanted = Producer::Output { object, pin };
-        let mut found = Vec::new();
+        self.consumer_index
+            .get(&(object, pin))
+            .cloned()
+            .unwrap_or_default()
+    }
+
+    /// For each object, the objects its outputs drive.
+    pub fn readers(&self) -> &[Vec<usize>] {
+        &self.reader_index
+    }
+
+    fn reindex(&mut self) {
+        let mut consumers: HashMap<(usize, usize), Vec<(usize, usize)>> = HashMap::new();
+        let mut readers = vec![Vec::new(); self.objects.len()];
         for (consumer, points) in self.inputs.iter().enumerate() {
+            if self.is_ignored(consumer) {
+                continue;
+            }
             for (input, point) in points.iter().enumerate() {
-                if point.producers.contains(&wanted) && !self.is_ignored(consumer) {
-                    found.push((consumer, input));
+                for producer in &point.producers {
+                    if let Producer::Output { object, pin } = producer {
+                        let list = consumers.entry((*object, *pin)).or_default();
+                        if !list.contains(&(consumer, input)) {
+                            list.push((consumer, input));
+                        }
+                        readers[*object].push(consumer);
+                    }
                 }
             }
         }
-        found
+        self.consumer_index = consumers;
+        self.reader_index = readers;
     }
 
     /// Objects whose inputs mean nothing to a network: right power rails (and the connectors,
@@ -320,7 +352,8 @@ impl<'b> BodyGraph<'b> {
             }
         }
         // An instance's output wired to several elements drives the first (top, then document
-        // order) and is read as a variable by the others, so no value fans out.
+        // order) and is read as a variable by the others, so no value fans out; ENO is no
+        // variable of the instance, so its readers stay wires (branches of the power).
         for object in 0..self.objects.len() {
             let ObjectKind::Block(block) = &self.objects[object].kind else {
                 continue;
@@ -332,7 +365,12 @@ impl<'b> BodyGraph<'b> {
             else {
                 continue;
             };
-            for pin in 0..block.outputs.len() {
+            let variables = (0..block.outputs.len()).filter(|&pin| {
+                !block.outputs[pin]
+                    .formal_parameter
+                    .eq_ignore_ascii_case(project_model::ENO_PIN)
+            });
+            for pin in variables {
                 let mut readers: Vec<(usize, usize)> = self
                     .consumers(object, pin)
                     .into_iter()
@@ -418,7 +456,6 @@ impl<'b> BodyGraph<'b> {
 
     /// Whether `to` is reachable from `from` along wires.
     pub fn reaches(&self, from: usize, to: usize) -> bool {
-        let readers = self.readers();
         let mut seen = vec![false; self.objects.len()];
         let mut stack = vec![from];
         while let Some(object) = stack.pop() {
@@ -428,27 +465,9 @@ impl<'b> BodyGraph<'b> {
             if std::mem::replace(&mut seen[object], true) {
                 continue;
             }
-            stack.extend(readers[object].iter().copied());
+            stack.extend(self.reader_index[object].iter().copied());
         }
         false
-    }
-
-    /// For each object, the objects its outputs drive.
-    pub fn readers(&self) -> Vec<Vec<usize>> {
-        let mut readers = vec![Vec::new(); self.objects.len()];
-        for (consumer, points) in self.inputs.iter().enumerate() {
-            if self.is_ignored(consumer) {
-                continue;
-            }
-            for point in points {
-                for producer in &point.producers {
-                    if let Producer::Output { object, .. } = producer {
-                        readers[*object].push(consumer);
-                    }
-                }
-            }
-        }
-        readers
     }
 }
 

@@ -145,9 +145,12 @@ fn outputs(list: &[NetworkOutput]) -> String {
                 rung,
                 outputs: inner,
                 ..
-            } => {
-                format!("{{{} -> {}}}", chain(rung), outputs(inner))
-            }
+            } if inner.is_empty() => format!("{{{}}}", chain(rung)),
+            NetworkOutput::Branch {
+                rung,
+                outputs: inner,
+                ..
+            } => format!("{{{} -> {}}}", chain(rung), outputs(inner)),
         })
         .collect::<Vec<_>>()
         .join(", ")
