@@ -78,8 +78,12 @@ pub(super) struct NetworkBuilder<'g, 'b> {
     points: HashMap<PointKey, usize>,
     edges: Vec<GraphEdge>,
     sinks: Vec<Sink>,
-    /// How many box inputs read each point as a value.
+    /// How many box inputs read each point as a value; its length is the number of points.
     value_uses: Vec<usize>,
+    /// The edges leaving each point, by index into `edges`.
+    leaving: Vec<Vec<usize>>,
+    /// The edges entering each point, by index into `edges`.
+    entering: Vec<Vec<usize>>,
     reads: usize,
 }
 
@@ -95,6 +99,8 @@ impl<'g, 'b> NetworkBuilder<'g, 'b> {
             edges: Vec::new(),
             sinks: Vec::new(),
             value_uses: vec![0],
+            leaving: vec![Vec::new()],
+            entering: vec![Vec::new()],
             reads: 0,
         }
     }
@@ -151,8 +157,16 @@ impl<'g, 'b> NetworkBuilder<'g, 'b> {
         let point = *self.points.entry(key).or_insert(next);
         if point == next {
             self.value_uses.push(0);
+            self.leaving.push(Vec::new());
+            self.entering.push(Vec::new());
         }
         point
+    }
+
+    fn push_edge(&mut self, edge: GraphEdge) {
+        self.leaving[edge.from].push(self.edges.len());
+        self.entering[edge.to].push(self.edges.len());
+        self.edges.push(edge);
     }
 
     /// The point a producer's value stands at: coils and inOutVariables pass on their input.
@@ -161,7 +175,7 @@ impl<'g, 'b> NetworkBuilder<'g, 'b> {
             Producer::Read { text, negated, .. } => {
                 self.reads += 1;
                 let point = self.point(PointKey::Read(self.reads));
-                self.edges.push(GraphEdge {
+                self.push_edge(GraphEdge {
                     from: 0,
                     to: point,
                     label: EdgeLabel::Read {
@@ -188,7 +202,7 @@ impl<'g, 'b> NetworkBuilder<'g, 'b> {
                     let point = self.point(key);
                     if !known {
                         let key = self.key(*object);
-                        self.edges.push(GraphEdge {
+                        self.push_edge(GraphEdge {
                             from: 0,
                             to: point,
                             label: EdgeLabel::Object(*object),
@@ -214,14 +228,16 @@ impl<'g, 'b> NetworkBuilder<'g, 'b> {
         match point_in.producers.as_slice() {
             [] => {
                 let text = point_in.point.and_then(|point| point.expression.as_ref())?;
-                self.producer_point(
+                let point = self.producer_point(
                     &Producer::Read {
                         text: text.trim().to_owned(),
                         negated: false,
                         after: None,
                     },
                     key,
-                )
+                )?;
+                self.points.insert(PointKey::Junction(object, input), point);
+                Some(point)
             }
             [only] => {
                 let point = self.producer_point(only, key)?;
@@ -236,7 +252,7 @@ impl<'g, 'b> NetworkBuilder<'g, 'b> {
                         Producer::Read { .. } => key,
                     };
                     if let Some(from) = self.producer_point(producer, producer_key) {
-                        self.edges.push(GraphEdge {
+                        self.push_edge(GraphEdge {
                             from,
                             to: junction,
                             label: EdgeLabel::Wire,
@@ -267,7 +283,7 @@ impl<'g, 'b> NetworkBuilder<'g, 'b> {
                 } else {
                     EdgeLabel::Object(object)
                 };
-                self.edges.push(GraphEdge {
+                self.push_edge(GraphEdge {
                     from,
                     to,
                     label,
@@ -281,7 +297,7 @@ impl<'g, 'b> NetworkBuilder<'g, 'b> {
                     self.input_point(object, 0).unwrap_or(0)
                 };
                 let to = self.point(PointKey::Output(object, chain_output(block)));
-                self.edges.push(GraphEdge {
+                self.push_edge(GraphEdge {
                     from,
                     to,
                     label: EdgeLabel::Object(object),
@@ -437,10 +453,9 @@ impl<'g, 'b> NetworkBuilder<'g, 'b> {
         while let Some(point) = stack.pop() {
             if seen.insert(point) {
                 stack.extend(
-                    self.edges
+                    self.entering[point]
                         .iter()
-                        .filter(|edge| edge.to == point)
-                        .map(|edge| edge.from),
+                        .map(|&edge| self.edges[edge].from),
                 );
             }
         }
@@ -453,12 +468,7 @@ impl<'g, 'b> NetworkBuilder<'g, 'b> {
         let mut stack = vec![source];
         while let Some(point) = stack.pop() {
             if allowed.contains(&point) && seen.insert(point) {
-                stack.extend(
-                    self.edges
-                        .iter()
-                        .filter(|edge| edge.from == point)
-                        .map(|edge| edge.to),
-                );
+                stack.extend(self.leaving[point].iter().map(|&edge| self.edges[edge].to));
             }
         }
         seen
@@ -472,9 +482,10 @@ impl<'g, 'b> NetworkBuilder<'g, 'b> {
         allowed: &HashSet<usize>,
     ) -> Result<usize, BuildFailure> {
         let order = self.topological_order(allowed)?;
+        let reachable = self.descendants(root, allowed);
         let mut best = root;
         for &candidate in &order {
-            if candidate == root || !self.descendants(root, allowed).contains(&candidate) {
+            if candidate == root || !reachable.contains(&candidate) {
                 continue;
             }
             let mut without = allowed.clone();
@@ -506,7 +517,10 @@ impl<'g, 'b> NetworkBuilder<'g, 'b> {
         let mut order = Vec::new();
         while let Some(point) = ready.pop() {
             order.push(point);
-            for edge in inner.iter().filter(|edge| edge.from == point) {
+            for edge in self.leaving[point].iter().map(|&edge| &self.edges[edge]) {
+                if !allowed.contains(&edge.to) {
+                    continue;
+                }
                 if let Some(count) = incoming.get_mut(&edge.to) {
                     *count -= 1;
                     if *count == 0 {
@@ -674,10 +688,9 @@ impl<'g, 'b> NetworkBuilder<'g, 'b> {
                 continue;
             }
             let sinks = self.sinks.iter().filter(|sink| sink.point == inner).count();
-            let leaving = self
-                .edges
+            let leaving = self.leaving[inner]
                 .iter()
-                .filter(|edge| edge.from == inner && !upstream.contains(&edge.to))
+                .filter(|&&edge| !upstream.contains(&self.edges[edge].to))
                 .count();
             let uses = if inner == point { 1 } else { 0 };
             if sinks > 0 || leaving > 0 || self.value_uses[inner] != uses {
@@ -699,11 +712,9 @@ impl<'g, 'b> NetworkBuilder<'g, 'b> {
             }
         }
         let all: HashSet<usize> = (0..self.value_uses.len()).collect();
-        let leaving: Vec<GraphEdge> = self
-            .edges
+        let leaving: Vec<GraphEdge> = self.leaving[root]
             .iter()
-            .filter(|edge| edge.from == root)
-            .cloned()
+            .map(|&edge| self.edges[edge].clone())
             .collect();
         // Edges whose downstream parts meet belong to one branch.
         let mut groups: Vec<(HashSet<usize>, (f64, usize))> = Vec::new();

@@ -57,7 +57,7 @@ pub(super) enum Producer {
 /// A fault at one object of the body.
 #[derive(Debug)]
 pub(super) struct ObjectFault {
-    /// The object's index.
+    /// The object's index; out of range for a fault of the body itself.
     pub object: usize,
     /// The fault.
     pub error: NetworkError,
@@ -227,6 +227,15 @@ impl<'b> BodyGraph<'b> {
                         .as_deref()
                         .filter(|p| !p.is_empty())
                     {
+                        None if block.outputs.is_empty() => {
+                            return Err(ObjectFault {
+                                object: consumer,
+                                error: NetworkError::UnknownPin {
+                                    pin: String::new(),
+                                    block: block.type_name.clone(),
+                                },
+                            });
+                        }
                         None => chain_output(block),
                         Some(name) => block
                             .outputs

@@ -65,8 +65,9 @@ fn is_wired(object: &BodyObject) -> bool {
 }
 
 fn rivet_groups(objects: &[BodyObject], xml: &str) -> Result<Vec<NetworkGroup>, ObjectFault> {
+    // The entry belongs to the body, not to an object: the error stands at the body.
     let fault = |message: String| ObjectFault {
-        object: 0,
+        object: usize::MAX,
         error: NetworkError::NetworksEntry(message),
     };
     let document = roxmltree::Document::parse(xml).map_err(|error| fault(error.to_string()))?;

@@ -522,3 +522,65 @@ fn codesys_network_titles_delimit_networks_in_document_order() {
         ("Two", "Two comment")
     );
 }
+
+#[test]
+fn actions_and_transitions_drawn_in_ld_and_fbd_become_networks() {
+    let ld = [
+        rail(1, 0),
+        contact(2, "a", &[1], 0, ""),
+        coil(3, "X", &[2], 0, ""),
+    ]
+    .concat();
+    let fbd = r#"<inVariable localId="1"><position x="0" y="0"/><connectionPointOut/><expression>a</expression></inVariable><outVariable localId="2"><position x="100" y="0"/><connectionPointIn><connection refLocalId="1"/></connectionPointIn><expression>T</expression></outVariable>"#;
+    let text = document("LD", &ld, "").replace(
+        r#"<pou name="P" pouType="program"><body>"#,
+        &format!(
+            r#"<pou name="P" pouType="program"><actions><action name="Act"><body><LD>{ld}</LD></body></action></actions><transitions><transition name="T"><body><FBD>{fbd}</FBD></body></transition></transitions><body>"#
+        ),
+    );
+    let imported = imported(&text);
+    let Some(Object::Pou(pou)) = imported.project.application.object("P") else {
+        panic!("{imported:?}")
+    };
+    let Body::Ld { networks } = &pou.actions[0].body else {
+        panic!("{:?}", pou.actions)
+    };
+    assert_eq!(rendered(networks), ["a -> X"]);
+    let Body::Fbd { networks } = &pou.transitions[0].body else {
+        panic!("{:?}", pou.transitions)
+    };
+    assert_eq!(rendered(networks), ["a -> T"]);
+    for what in ["action 'P.Act'", "transition 'P.T'"] {
+        assert_eq!(
+            imported.report.entry(what).map(|entry| entry.outcome),
+            Some(Outcome::Converted),
+            "{what}"
+        );
+    }
+}
+
+#[test]
+fn rivets_networks_entry_naming_a_missing_object_is_refused() {
+    let objects = [
+        rail(1, 0),
+        contact(2, "a", &[1], 0, ""),
+        coil(3, "X", &[2], 0, ""),
+    ]
+    .concat();
+    let entry = r#"<addData><data name="https://rivet-plc.dev/plcopen/1/networks" handleUnknown="preserve"><networks xmlns="https://rivet-plc.dev/plcopen/1"><network first="9"/></networks></data></addData>"#;
+    let error = import_error(&document("LD", &objects, entry)).to_string();
+    assert!(
+        error.contains("Rivet's networks entry is unreadable: no object has the localId 9"),
+        "{error}"
+    );
+}
+
+#[test]
+fn an_in_out_variable_with_a_negation_is_refused() {
+    let objects = r#"<inVariable localId="1"><position x="0" y="0"/><connectionPointOut/><expression>a</expression></inVariable><inOutVariable localId="2" negatedIn="true"><position x="100" y="0"/><connectionPointIn><connection refLocalId="1"/></connectionPointIn><connectionPointOut/><expression>v</expression></inOutVariable>"#;
+    let error = import_error(&document("FBD", objects, "")).to_string();
+    assert!(
+        error.contains("inOutVariable[@localId='2']: the inOutVariable `v` has a negation"),
+        "{error}"
+    );
+}
