@@ -112,7 +112,6 @@ impl<'g, 'b> NetworkBuilder<'g, 'b> {
         comment: String,
         label: String,
     ) -> Result<Network, BuildFailure> {
-        self.refuse_loops()?;
         let mut members: Vec<usize> = self.members.iter().copied().collect();
         members.sort_unstable();
         for &object in &members {
@@ -380,45 +379,6 @@ impl<'g, 'b> NetworkBuilder<'g, 'b> {
                 }
             }
         }
-    }
-
-    /// Refuses a wire loop among the members (an FBD feedback), which a CFC chart can hold.
-    fn refuse_loops(&self) -> Result<(), BuildFailure> {
-        let readers = self.graph.readers();
-        // 0: not seen, 1: on the current path, 2: done.
-        let mut state = vec![0u8; self.graph.objects.len()];
-        let mut members: Vec<usize> = self.members.iter().copied().collect();
-        members.sort_unstable();
-        for start in members {
-            if state[start] != 0 {
-                continue;
-            }
-            let mut stack = vec![(start, 0usize)];
-            state[start] = 1;
-            while let Some(&mut (object, ref mut next)) = stack.last_mut() {
-                if let Some(&reader) = readers[object].get(*next) {
-                    *next += 1;
-                    match state[reader] {
-                        1 => {
-                            return Err(BuildFailure::NotANetwork(format!(
-                                "the {} with local id {} is on a feedback loop",
-                                self.graph.objects[reader].kind.element_name(),
-                                self.graph.objects[reader].local_id
-                            )));
-                        }
-                        0 => {
-                            state[reader] = 1;
-                            stack.push((reader, 0));
-                        }
-                        _ => {}
-                    }
-                } else {
-                    state[object] = 2;
-                    stack.pop();
-                }
-            }
-        }
-        Ok(())
     }
 
     fn fan_out(&self, point: usize) -> BuildFailure {

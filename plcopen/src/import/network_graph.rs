@@ -120,11 +120,6 @@ impl<'b> BodyGraph<'b> {
             .unwrap_or_default()
     }
 
-    /// For each object, the objects its outputs drive.
-    pub fn readers(&self) -> &[Vec<usize>] {
-        &self.reader_index
-    }
-
     fn reindex(&mut self) {
         let mut consumers: HashMap<(usize, usize), Vec<(usize, usize)>> = HashMap::new();
         let mut readers = vec![Vec::new(); self.objects.len()];
@@ -461,6 +456,36 @@ impl<'b> BodyGraph<'b> {
                 }
             }
         }
+    }
+
+    /// An object on a wire loop (an FBD feedback, which a CFC chart can hold), if there is one.
+    pub fn object_on_loop(&self) -> Option<usize> {
+        // 0: not seen, 1: on the current path, 2: done.
+        let mut state = vec![0u8; self.objects.len()];
+        for start in 0..self.objects.len() {
+            if state[start] != 0 {
+                continue;
+            }
+            let mut stack = vec![(start, 0usize)];
+            state[start] = 1;
+            while let Some(&mut (object, ref mut next)) = stack.last_mut() {
+                if let Some(&reader) = self.reader_index[object].get(*next) {
+                    *next += 1;
+                    match state[reader] {
+                        1 => return Some(reader),
+                        0 => {
+                            state[reader] = 1;
+                            stack.push((reader, 0));
+                        }
+                        _ => {}
+                    }
+                } else {
+                    state[object] = 2;
+                    stack.pop();
+                }
+            }
+        }
+        None
     }
 
     /// Whether `to` is reachable from `from` along wires.

@@ -1,6 +1,8 @@
 //! Where the networks of an LD or FBD body begin and end (`docs/plcopen-xml.md` §3.1): by
 //! Rivet's `…/networks` entry, by CODESYS's network titles, or else by the wires.
 
+use std::collections::{HashMap, HashSet};
+
 use super::network_error::NetworkError;
 use super::network_graph::{BodyGraph, ObjectFault, Producer};
 use crate::add_data::AddData;
@@ -91,12 +93,14 @@ fn rivet_groups(objects: &[BodyObject], xml: &str) -> Result<Vec<NetworkGroup>, 
             },
         ));
     }
+    let starts: HashMap<u64, usize> = groups
+        .iter()
+        .enumerate()
+        .map(|(at, (first, _))| (*first, at))
+        .collect();
     let mut current: Option<usize> = None;
     for (index, object) in objects.iter().enumerate() {
-        if let Some(start) = groups
-            .iter()
-            .position(|(first, _)| *first == object.local_id)
-        {
+        if let Some(&start) = starts.get(&object.local_id) {
             current = Some(start);
         }
         if is_wired(object) {
@@ -106,8 +110,9 @@ fn rivet_groups(objects: &[BodyObject], xml: &str) -> Result<Vec<NetworkGroup>, 
             }
         }
     }
+    let local_ids: HashSet<u64> = objects.iter().map(|object| object.local_id).collect();
     for (first, _) in &groups {
-        if !objects.iter().any(|object| object.local_id == *first) {
+        if !local_ids.contains(first) {
             return Err(fault(format!("no object has the localId {first}")));
         }
     }
@@ -183,11 +188,15 @@ fn wired_groups(graph: &BodyGraph<'_>) -> Vec<NetworkGroup> {
             .map_or((0.0, 0.0), |position| (position.y, position.x))
     };
     let mut components: Vec<(usize, Vec<usize>)> = Vec::new();
+    let mut component_of_root: HashMap<usize, usize> = HashMap::new();
     for index in (0..objects.len()).filter(|&index| is_wired(&objects[index])) {
         let component = root(&mut parent, index);
-        match components.iter_mut().find(|(root, _)| *root == component) {
-            Some((_, members)) => members.push(index),
-            None => components.push((component, vec![index])),
+        match component_of_root.get(&component) {
+            Some(&at) => components[at].1.push(index),
+            None => {
+                component_of_root.insert(component, components.len());
+                components.push((component, vec![index]));
+            }
         }
     }
     let topmost = |members: &[usize]| -> (f64, f64, usize) {
@@ -298,6 +307,9 @@ fn in_data_flow_order(graph: &BodyGraph<'_>, ordered: Vec<(usize, Vec<usize>)>) 
                 }
             }
         }
+    }
+    if before.iter().all(Vec::is_empty) {
+        return ordered.into_iter().map(|(_, members)| members).collect();
     }
     let mut placed = vec![false; ordered.len()];
     let mut order = Vec::with_capacity(ordered.len());

@@ -61,6 +61,16 @@ impl Converter<'_> {
             converter.error(&object_place, ImportErrorKind::Network(fault.error))
         };
         let graph = BodyGraph::new(objects).map_err(|error| fault(self, error))?;
+        if let Some(object) = graph.object_on_loop() {
+            let object = &objects[object];
+            return Ok(Some(NetworkOutcome::NotANetwork {
+                reason: format!(
+                    "the {} with local id {} is on a feedback loop",
+                    object.kind.element_name(),
+                    object.local_id
+                ),
+            }));
+        }
         let groups = network_groups(&graph, &body.add_data).map_err(|error| fault(self, error))?;
         let mut networks = Vec::with_capacity(groups.len());
         for group in groups {
