@@ -7,6 +7,7 @@ mod duration;
 mod error;
 mod globals;
 mod network_build;
+mod network_elements;
 mod network_error;
 mod network_graph;
 mod network_groups;

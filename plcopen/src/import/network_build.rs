@@ -8,6 +8,7 @@ use project_model::{
     Operand,
 };
 
+use super::network_elements::{coil_kind, edge, operand};
 use super::network_error::NetworkError;
 use super::network_graph::{BodyGraph, ObjectFault, Producer, chain_output, is_power_input};
 use super::network_series_parallel::{ChainEdge, compare_keys, reduce};
@@ -51,32 +52,49 @@ enum EdgeLabel {
     /// A plain wire (into a wired OR, or an empty CODESYS contact).
     Wire,
     /// A variable read where a wire was.
-    Read { text: String, negated: bool },
+    Read {
+        /// The variable's path.
+        text: String,
+        /// The read is negated.
+        negated: bool,
+    },
 }
 
+/// An edge of the rung's graph.
 #[derive(Clone, Debug)]
 struct GraphEdge {
+    /// The point the power or value enters.
     from: usize,
+    /// The point it leaves.
     to: usize,
+    /// What lies between.
     label: EdgeLabel,
+    /// Its order among parallel edges and outputs: top, then document order.
     key: (f64, usize),
 }
 
 /// What the power at a point drives.
 #[derive(Clone, Copy, Debug)]
 struct Sink {
+    /// The point whose power it takes.
     point: usize,
     /// The coil, outVariable, inOutVariable, jump or return; `None` for a chain's end.
     object: Option<usize>,
+    /// Its order among the outputs: top, then document order.
     key: (f64, usize),
 }
 
 /// The conversion of one network's objects.
 pub(super) struct NetworkBuilder<'g, 'b> {
+    /// The body's wires.
     graph: &'g BodyGraph<'b>,
+    /// The network's objects.
     members: HashSet<usize>,
+    /// The points by what they are; aliases (a junction of one wire) share a number.
     points: HashMap<PointKey, usize>,
+    /// The edges between points.
     edges: Vec<GraphEdge>,
+    /// The coils, variables, jumps, returns and chain ends at points.
     sinks: Vec<Sink>,
     /// How many box inputs read each point as a value; its length is the number of points.
     value_uses: Vec<usize>,
@@ -84,9 +102,11 @@ pub(super) struct NetworkBuilder<'g, 'b> {
     leaving: Vec<Vec<usize>>,
     /// The edges entering each point, by index into `edges`.
     entering: Vec<Vec<usize>>,
+    /// The number of variable reads so far, which numbers their points.
     reads: usize,
 }
 
+/// The key of a plain wire, which never decides an order.
 const LAST: (f64, usize) = (f64::INFINITY, usize::MAX);
 
 impl<'g, 'b> NetworkBuilder<'g, 'b> {
@@ -808,61 +828,5 @@ impl<'g, 'b> NetworkBuilder<'g, 'b> {
             ObjectKind::Return(_) => NetworkOutput::Return { id },
             _ => return Ok(None),
         }))
-    }
-}
-
-fn operand(text: &str, negated: Option<bool>, edge_attribute: Option<XmlEdge>) -> FlowNode {
-    FlowNode::Operand(Operand {
-        id: Default::default(),
-        text: text.trim().to_owned(),
-        negated: negated.unwrap_or(false),
-        edge: edge(edge_attribute),
-    })
-}
-
-fn edge(edge: Option<XmlEdge>) -> Edge {
-    match edge {
-        Some(XmlEdge::Rising) => Edge::Rising,
-        Some(XmlEdge::Falling) => Edge::Falling,
-        Some(XmlEdge::None) | None => Edge::None,
-    }
-}
-
-/// The coil kind its attributes ask for; two at once are refused.
-fn coil_kind(
-    object: usize,
-    variable: &str,
-    negated: Option<bool>,
-    edge: Option<XmlEdge>,
-    storage: Option<Storage>,
-) -> Result<CoilKind, BuildFailure> {
-    let mut kinds = Vec::new();
-    if negated == Some(true) {
-        kinds.push(("negated", CoilKind::Negated));
-    }
-    match storage {
-        Some(Storage::Set) => kinds.push(("set", CoilKind::Set)),
-        Some(Storage::Reset) => kinds.push(("reset", CoilKind::Reset)),
-        Some(Storage::None) | None => {}
-    }
-    match edge {
-        Some(XmlEdge::Rising) => kinds.push(("rising", CoilKind::Rising)),
-        Some(XmlEdge::Falling) => kinds.push(("falling", CoilKind::Falling)),
-        Some(XmlEdge::None) | None => {}
-    }
-    match kinds.as_slice() {
-        [] => Ok(CoilKind::Normal),
-        [(_, kind)] => Ok(*kind),
-        several => Err(BuildFailure::Fault(ObjectFault {
-            object,
-            error: NetworkError::ConflictingCoil {
-                variable: variable.trim().to_owned(),
-                attributes: several
-                    .iter()
-                    .map(|(word, _)| *word)
-                    .collect::<Vec<_>>()
-                    .join(" and "),
-            },
-        })),
     }
 }
