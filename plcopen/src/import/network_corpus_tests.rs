@@ -2,6 +2,8 @@
 
 use project_model::{Body, Network, Object};
 
+use super::converter::{Converter, Place};
+use super::network_import::NetworkOutcome;
 use super::network_tests::rendered;
 use super::{Imported, Outcome, import};
 use crate::reader::corpus_tests::read_corpus;
@@ -119,4 +121,84 @@ fn matiec_string_tests_convert_and_a_function_read_twice_is_left_for_a_chart() {
             .contains("the value of the block with local id 2 drives more than one input")),
         "{entry:?}"
     );
+}
+
+/// Every LD and FBD body of a POU, action, transition or method of `document`, with its name.
+fn network_bodies(document: &crate::Document) -> Vec<(String, &crate::Body)> {
+    let mut found: Vec<(String, &crate::Body)> = Vec::new();
+    for pou in &document.pous {
+        found.extend(pou.bodies.iter().map(|body| (pou.name.clone(), body)));
+        found.extend(
+            pou.actions
+                .iter()
+                .map(|action| (format!("{}.{}", pou.name, action.name), &action.body)),
+        );
+        found.extend(pou.transitions.iter().map(|transition| {
+            (
+                format!("{}.{}", pou.name, transition.name),
+                &transition.body,
+            )
+        }));
+        for method in &pou.methods {
+            found.extend(
+                method
+                    .bodies
+                    .iter()
+                    .map(|body| (format!("{}.{}", pou.name, method.name), body)),
+            );
+        }
+    }
+    found.retain(|(_, body)| {
+        body.cfc.is_none()
+            && matches!(
+                body.content,
+                crate::BodyContent::Ld(_) | crate::BodyContent::Fbd(_)
+            )
+    });
+    found
+}
+
+#[test]
+fn every_ld_and_fbd_body_of_the_corpora_converts_or_is_left_for_a_chart() {
+    let mut converted = 0;
+    for file in [
+        FIRST_STEPS,
+        "plcopen/beremiz/tests/projects/iec61131_lang_test/plc.xml",
+        "plcopen/beremiz/tests/projects/svghmi_basic/plc.xml",
+        "plcopen/codesys/codesys_code_execution_speedTests.xml",
+        "matiec/tests/LD_TEST.xml",
+        "matiec/tests/STD_TEST.xml",
+    ] {
+        let document = read_corpus(file);
+        let mut converter = Converter::new(&document);
+        for (what, body) in network_bodies(&document) {
+            let place = Place {
+                path: what.clone(),
+                line: body.line,
+                column: 1,
+            };
+            match converter.networks(body, &place, &what) {
+                Ok(Some(NetworkOutcome::Networks(networks))) => {
+                    assert!(
+                        project_model::network_problems(&networks).is_empty(),
+                        "{file}: {what}"
+                    );
+                    converted += 1;
+                }
+                Ok(Some(NetworkOutcome::NotANetwork { reason })) => {
+                    assert!(
+                        ["TEMPO_TEST", "TEST_TO_STRINGS"]
+                            .iter()
+                            .any(|expected| what.starts_with(expected)),
+                        "{file}: {what}: {reason}"
+                    );
+                }
+                Ok(None) => panic!("{file}: {what} is not LD or FBD"),
+                Err(error) => panic!("{file}: {what}: {error}"),
+            }
+        }
+    }
+    // first_steps 3, iec61131_lang_test 1, svghmi_basic 3 (its program and two actions of its
+    // SFC block), CODESYS 2, LD_TEST 1, STD_TEST 3.
+    assert_eq!(converted, 13);
 }
