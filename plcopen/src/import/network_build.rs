@@ -309,6 +309,10 @@ impl<'g, 'b> NetworkBuilder<'g, 'b> {
                     key,
                 });
             }
+            // A variable read by nothing stands alone as a chain of one operand.
+            ObjectKind::InVariable(_) if graph.consumers(object, 0).is_empty() => {
+                self.producer_point(&Producer::Output { object, pin: 0 }, key);
+            }
             ObjectKind::Block(block) => {
                 let from = if graph.inputs[object].is_empty() {
                     0
@@ -379,7 +383,7 @@ impl<'g, 'b> NetworkBuilder<'g, 'b> {
         }
     }
 
-    /// A contact or box whose output drives nothing ends a chain of its own.
+    /// A contact, box or variable whose output drives nothing ends a chain of its own.
     fn add_chain_ends(&mut self) {
         let mut used: HashSet<usize> = self.edges.iter().map(|edge| edge.from).collect();
         used.extend(self.sinks.iter().map(|sink| sink.point));
@@ -387,7 +391,7 @@ impl<'g, 'b> NetworkBuilder<'g, 'b> {
             if let EdgeLabel::Object(object) = edge.label {
                 let is_end = matches!(
                     self.graph.objects[object].kind,
-                    ObjectKind::Contact(_) | ObjectKind::Block(_)
+                    ObjectKind::Contact(_) | ObjectKind::Block(_) | ObjectKind::InVariable(_)
                 );
                 if is_end && !used.contains(&edge.to) && self.value_uses[edge.to] == 0 {
                     used.insert(edge.to);

@@ -584,3 +584,20 @@ fn an_in_out_variable_with_a_negation_is_refused() {
         "{error}"
     );
 }
+
+#[test]
+fn a_variable_or_box_that_drives_nothing_ends_a_chain_of_its_own() {
+    let objects = r#"<inVariable localId="1"><position x="0" y="0"/><connectionPointOut/><expression>alone</expression></inVariable>
+<block localId="2" typeName="TON" instanceName="t"><position x="0" y="100"/><inputVariables><variable formalParameter="IN"><connectionPointIn/></variable></inputVariables><inOutVariables/><outputVariables><variable formalParameter="Q"><connectionPointOut/></variable></outputVariables></block>"#;
+    assert_eq!(rendered(&networks("FBD", objects)), ["alone", "TON[t](IN)"]);
+}
+
+#[test]
+fn a_block_naming_one_pin_twice_is_refused() {
+    let objects = r#"<block localId="2" typeName="ADD"><position x="0" y="0"/><inputVariables><variable formalParameter="IN1"><connectionPointIn/></variable><variable formalParameter="in1"><connectionPointIn/></variable></inputVariables><inOutVariables/><outputVariables><variable formalParameter="OUT"><connectionPointOut/></variable></outputVariables></block>"#;
+    let error = import_error(&document("FBD", objects, "")).to_string();
+    assert!(
+        error.contains("block[@localId='2']: the block `ADD` has two pins named `in1`"),
+        "{error}"
+    );
+}
