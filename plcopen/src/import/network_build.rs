@@ -106,9 +106,6 @@ pub(super) struct NetworkBuilder<'g, 'b> {
     reads: usize,
 }
 
-/// The key of a plain wire, which never decides an order.
-const LAST: (f64, usize) = (f64::INFINITY, usize::MAX);
-
 impl<'g, 'b> NetworkBuilder<'g, 'b> {
     /// A builder for the objects `members` of `graph`.
     pub fn new(graph: &'g BodyGraph<'b>, members: &[usize]) -> Self {
@@ -162,11 +159,16 @@ impl<'g, 'b> NetworkBuilder<'g, 'b> {
         Ok(network)
     }
 
+    /// The order key of an object: its top, then its place in the document, after every
+    /// wire's connection index (so that, at one height, the connections of a wired OR decide).
     fn key(&self, object: usize) -> (f64, usize) {
-        let y = self.graph.objects[object]
+        (self.top(object), self.graph.objects.len() + object)
+    }
+
+    fn top(&self, object: usize) -> f64 {
+        self.graph.objects[object]
             .position
-            .map_or(0.0, |position| position.y);
-        (y, object)
+            .map_or(0.0, |position| position.y)
     }
 
     fn point(&mut self, key: PointKey) -> usize {
@@ -265,17 +267,19 @@ impl<'g, 'b> NetworkBuilder<'g, 'b> {
             }
             several => {
                 let junction = self.point(PointKey::Junction(object, input));
-                for producer in several {
-                    let producer_key = match producer {
-                        Producer::Output { object, .. } => self.key(*object),
-                        Producer::Read { .. } => key,
+                // A branch of a wired OR is ordered by its top, then by its connection's place
+                // in the OR (CODESYS writes no positions: its connection order is the order).
+                for (connection, producer) in several.iter().enumerate() {
+                    let (producer_key, top) = match producer {
+                        Producer::Output { object, .. } => (self.key(*object), self.top(*object)),
+                        Producer::Read { .. } => (key, key.0),
                     };
                     if let Some(from) = self.producer_point(producer, producer_key) {
                         self.push_edge(GraphEdge {
                             from,
                             to: junction,
                             label: EdgeLabel::Wire,
-                            key: LAST,
+                            key: (top, connection),
                         });
                     }
                 }

@@ -601,3 +601,13 @@ fn a_block_naming_one_pin_twice_is_refused() {
         "{error}"
     );
 }
+
+#[test]
+fn without_positions_the_connections_of_a_wired_or_order_its_branches() {
+    // CODESYS: no positions; b is written before a, but the OR connects a first.
+    let objects = r#"<leftPowerRail localId="0"><connectionPointOut formalParameter="none"/></leftPowerRail>
+<contact localId="1"><connectionPointIn><connection refLocalId="0"/></connectionPointIn><connectionPointOut/><variable>b</variable></contact>
+<contact localId="2"><connectionPointIn><connection refLocalId="0"/></connectionPointIn><connectionPointOut/><variable>a</variable></contact>
+<coil localId="3"><connectionPointIn><connection refLocalId="2"/><connection refLocalId="1"/></connectionPointIn><connectionPointOut/><variable>X</variable></coil>"#;
+    assert_eq!(rendered(&networks("LD", objects)), ["(a | b) -> X"]);
+}
