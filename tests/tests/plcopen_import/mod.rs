@@ -199,3 +199,121 @@ fn codesys_st_pous_check_except_for_missing_library_parts() {
         "{errors:#?}"
     );
 }
+
+#[test]
+fn codesys_functions_drawn_in_ld_and_fbd_add_like_the_st_one() {
+    let document = plcopen::read_file(&corpus(
+        "plcopen/codesys/codesys_code_execution_speedTests.xml",
+    ))
+    .unwrap_or_else(|error| panic!("{error}"));
+    let mut project = plcopen::import(&document)
+        .unwrap_or_else(|error| panic!("{error}"))
+        .project;
+    // Only the three functions, called from an ST program: the rest of the file needs CODESYS
+    // libraries.
+    project.application.children.retain(|node| {
+        matches!(node, project_model::Node::Object(object)
+            if ["addTwoIntsLadder", "addTwoIntsFBD", "addTwoIntsST"].contains(&object.name()))
+    });
+    assert_eq!(project.application.children.len(), 3);
+    project.tasks.clear();
+    let main = compiler::SourceProject::new(
+        "PROGRAM Main
+VAR ld, fbd, st : INT; END_VAR
+ld := addTwoIntsLadder(Int1 := 30, Int2 := 12);
+fbd := addTwoIntsFBD(int1 := 30, int2 := 12);
+st := addTwoIntsST(int1 := 30, int2 := 12);
+END_PROGRAM
+",
+    )
+    .project;
+    project
+        .application
+        .children
+        .extend(main.application.children);
+    let image = compiler::compile_project(&project).unwrap_or_else(|error| panic!("{error:?}"));
+    let mut simulation = runtime::simulation::Simulation::new(image).expect("the image loads");
+    simulation.run(1);
+    assert!(simulation.faults().is_empty(), "{:?}", simulation.faults());
+    let values = ["Main.ld", "Main.fbd", "Main.st"].map(|path| {
+        runtime::value::read(simulation.engine(), path)
+            .unwrap_or_else(|error| panic!("{path}: {error}"))
+            .to_string()
+    });
+    assert_eq!(values, ["42", "42", "42"]);
+}
+
+/// A function block `Bridge` in LD: contacts a and b from the rail, c after a, d after b, and e
+/// from a's output into d's input (a bridge), driving X; and Y set by a, reset by b.
+const BRIDGE: &str = r#"<?xml version="1.0" encoding="UTF-8"?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0201">
+  <fileHeader companyName="c" productName="p" productVersion="1" creationDateTime="2024-01-01T00:00:00"/>
+  <contentHeader name="n"><coordinateInfo><fbd><scaling x="0" y="0"/></fbd><ld><scaling x="0" y="0"/></ld><sfc><scaling x="0" y="0"/></sfc></coordinateInfo></contentHeader>
+  <types><dataTypes/><pous><pou name="Bridge" pouType="functionBlock">
+    <interface>
+      <inputVars><variable name="a"><type><BOOL/></type></variable><variable name="b"><type><BOOL/></type></variable><variable name="c"><type><BOOL/></type></variable><variable name="d"><type><BOOL/></type></variable><variable name="e"><type><BOOL/></type></variable></inputVars>
+      <outputVars><variable name="X"><type><BOOL/></type></variable><variable name="Y"><type><BOOL/></type></variable></outputVars>
+    </interface>
+    <body><LD>
+      <leftPowerRail localId="1"><position x="0" y="0"/><connectionPointOut formalParameter=""/></leftPowerRail>
+      <contact localId="2"><position x="20" y="0"/><connectionPointIn><connection refLocalId="1"/></connectionPointIn><connectionPointOut/><variable>a</variable></contact>
+      <contact localId="3"><position x="20" y="40"/><connectionPointIn><connection refLocalId="1"/></connectionPointIn><connectionPointOut/><variable>b</variable></contact>
+      <contact localId="4"><position x="40" y="20"/><connectionPointIn><connection refLocalId="2"/></connectionPointIn><connectionPointOut/><variable>e</variable></contact>
+      <contact localId="5"><position x="60" y="0"/><connectionPointIn><connection refLocalId="2"/></connectionPointIn><connectionPointOut/><variable>c</variable></contact>
+      <contact localId="6"><position x="60" y="40"/><connectionPointIn><connection refLocalId="3"/><connection refLocalId="4"/></connectionPointIn><connectionPointOut/><variable>d</variable></contact>
+      <coil localId="7"><position x="100" y="0"/><connectionPointIn><connection refLocalId="5"/><connection refLocalId="6"/></connectionPointIn><connectionPointOut/><variable>X</variable></coil>
+      <leftPowerRail localId="8"><position x="0" y="100"/><connectionPointOut formalParameter=""/></leftPowerRail>
+      <contact localId="9"><position x="20" y="100"/><connectionPointIn><connection refLocalId="8"/></connectionPointIn><connectionPointOut/><variable>a</variable></contact>
+      <coil localId="10" storage="set"><position x="100" y="100"/><connectionPointIn><connection refLocalId="9"/></connectionPointIn><connectionPointOut/><variable>Y</variable></coil>
+      <contact localId="11"><position x="20" y="140"/><connectionPointIn><connection refLocalId="8"/></connectionPointIn><connectionPointOut/><variable>b</variable></contact>
+      <coil localId="12" storage="reset"><position x="100" y="140"/><connectionPointIn><connection refLocalId="11"/></connectionPointIn><connectionPointOut/><variable>Y</variable></coil>
+    </LD></body>
+  </pou></pous></types>
+  <instances><configurations/></instances>
+</project>
+"#;
+
+#[test]
+fn an_imported_ld_bridge_and_set_reset_coils_run_as_their_logic_says() {
+    let document = plcopen::read(BRIDGE, "bridge.xml").unwrap_or_else(|error| panic!("{error}"));
+    let mut project = plcopen::import(&document)
+        .unwrap_or_else(|error| panic!("{error}"))
+        .project;
+    // Every combination of the five inputs, one per cycle; Y follows a set and b reset, the
+    // reset written after the set.
+    let main = compiler::SourceProject::new(
+        "PROGRAM Main
+VAR fb : Bridge; i : INT; mismatches : INT; a, b, c, d, e, y : BOOL; END_VAR
+IF i < 32 THEN
+  a := (i MOD 2) = 1; b := ((i / 2) MOD 2) = 1; c := ((i / 4) MOD 2) = 1;
+  d := ((i / 8) MOD 2) = 1; e := ((i / 16) MOD 2) = 1;
+  fb(a := a, b := b, c := c, d := d, e := e);
+  IF a THEN y := TRUE; END_IF;
+  IF b THEN y := FALSE; END_IF;
+  IF fb.X <> ((a AND c) OR (a AND e AND d) OR (b AND d)) OR fb.Y <> y THEN
+    mismatches := mismatches + 1;
+  END_IF;
+  i := i + 1;
+END_IF;
+END_PROGRAM
+",
+    )
+    .project;
+    project
+        .application
+        .children
+        .extend(main.application.children);
+    let image = compiler::compile_project(&project).unwrap_or_else(|error| panic!("{error:?}"));
+    let mut simulation = runtime::simulation::Simulation::new(image).expect("the image loads");
+    simulation.run(40);
+    assert!(simulation.faults().is_empty(), "{:?}", simulation.faults());
+    let read = |path: &str| {
+        runtime::value::read(simulation.engine(), path)
+            .unwrap_or_else(|error| panic!("{path}: {error}"))
+            .to_string()
+    };
+    assert_eq!(
+        (read("Main.i"), read("Main.mismatches")),
+        ("32".to_owned(), "0".to_owned())
+    );
+}
