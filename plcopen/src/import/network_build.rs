@@ -104,6 +104,8 @@ pub(super) struct NetworkBuilder<'g, 'b> {
     entering: Vec<Vec<usize>>,
     /// The number of variable reads so far, which numbers their points.
     reads: usize,
+    /// How deep the conversion is in box inputs and output branches.
+    depth: usize,
 }
 
 impl<'g, 'b> NetworkBuilder<'g, 'b> {
@@ -119,6 +121,7 @@ impl<'g, 'b> NetworkBuilder<'g, 'b> {
             leaving: vec![Vec::new()],
             entering: vec![Vec::new()],
             reads: 0,
+            depth: 0,
         }
     }
 
@@ -409,10 +412,10 @@ impl<'g, 'b> NetworkBuilder<'g, 'b> {
         }
     }
 
-    fn fan_out(&self, point: usize) -> BuildFailure {
-        // A junction of one wire is an alias of its producer's output: name the producer.
-        let what = self
-            .points
+    /// The object a point stands for: a junction of one wire is an alias of its producer's
+    /// output, so the producer is preferred.
+    fn object_at(&self, point: usize) -> Option<usize> {
+        self.points
             .iter()
             .filter(|(_, p)| **p == point)
             .filter_map(|(key, _)| match key {
@@ -422,13 +425,16 @@ impl<'g, 'b> NetworkBuilder<'g, 'b> {
             })
             .min()
             .map(|(_, object)| object)
-            .map_or_else(String::new, |object| {
-                format!(
-                    " of the {} with local id {}",
-                    self.graph.objects[object].kind.element_name(),
-                    self.graph.objects[object].local_id
-                )
-            });
+    }
+
+    fn fan_out(&self, point: usize) -> BuildFailure {
+        let what = self.object_at(point).map_or_else(String::new, |object| {
+            format!(
+                " of the {} with local id {}",
+                self.graph.objects[object].kind.element_name(),
+                self.graph.objects[object].local_id
+            )
+        });
         BuildFailure::NotANetwork(format!(
             "the value{what} drives more than one input, and one of them is a box input"
         ))
@@ -685,7 +691,19 @@ impl<'g, 'b> NetworkBuilder<'g, 'b> {
                 return Err(self.fan_out(inner));
             }
         }
-        self.chain(0, point)
+        // Boxes nested in inputs deeper than a body may hold would also deepen this recursion.
+        self.depth += 1;
+        if self.depth > project_model::MAX_NETWORK_NESTING {
+            return Err(BuildFailure::Fault(ObjectFault {
+                object: self.object_at(point).unwrap_or(usize::MAX),
+                error: NetworkError::TooDeep {
+                    limit: project_model::MAX_NETWORK_NESTING,
+                },
+            }));
+        }
+        let chain = self.chain(0, point);
+        self.depth -= 1;
+        chain
     }
 
     /// The outputs driven by the power at `root`: its coils, jumps and returns, then a branch
@@ -739,7 +757,17 @@ impl<'g, 'b> NetworkBuilder<'g, 'b> {
             let dominator = self.deepest_dominator(root, &targets, &allowed)?;
             if dominator != root {
                 let rung = self.chain(root, dominator)?;
+                self.depth += 1;
+                if self.depth > project_model::MAX_NETWORK_NESTING {
+                    return Err(BuildFailure::Fault(ObjectFault {
+                        object: self.object_at(dominator).unwrap_or(usize::MAX),
+                        error: NetworkError::TooDeep {
+                            limit: project_model::MAX_NETWORK_NESTING,
+                        },
+                    }));
+                }
                 let outputs = self.outputs(dominator)?;
+                self.depth -= 1;
                 items.push((
                     key,
                     NetworkOutput::Branch {

@@ -22,8 +22,11 @@ pub enum NetworkError {
         /// Line of the second connector.
         second_line: u32,
     },
-    /// Connectors and continuations that lead back to themselves without an element between.
-    #[error("the connector `{name}` leads back to itself through continuations")]
+    /// Connectors and continuations that lead back to themselves without an element between, or
+    /// a chain of more than 256 of them.
+    #[error(
+        "the connector `{name}` leads back to itself through continuations, or through more than 256"
+    )]
     ConnectorLoop {
         /// The name of a connector on the loop.
         name: String,
@@ -81,6 +84,12 @@ pub enum NetworkError {
     #[error("the rung is not series-parallel and has more than {limit} paths to expand")]
     TooManyPaths {
         /// The limit.
+        limit: usize,
+    },
+    /// Boxes nested in box inputs, or output branches, deeper than a Rivet body may hold.
+    #[error("the network nests boxes or branches more than {limit} levels deep")]
+    TooDeep {
+        /// The limit (`project_model::MAX_NETWORK_NESTING`).
         limit: usize,
     },
     /// Rivet's own `…/networks` entry cannot be read.

@@ -8,6 +8,9 @@ use crate::body_object::{BodyObject, ObjectKind};
 use crate::connection::ConnectionPointIn;
 use crate::fbd::Block;
 
+/// The most connectors a wire may pass through one after another.
+const MAX_CONNECTOR_CHAIN: usize = 256;
+
 /// The resolved wires of one body; it lives as long as the conversion of the body.
 pub(super) struct BodyGraph<'b> {
     /// The body's objects in document order; indices into this slice name objects.
@@ -312,7 +315,9 @@ impl<'b> BodyGraph<'b> {
                 },
             });
         };
-        if depth > self.objects.len() {
+        // A connector reached again, or a chain of continuations longer than any drawing needs,
+        // is refused before the recursion grows.
+        if depth > MAX_CONNECTOR_CHAIN {
             return Err(ObjectFault {
                 object: connector,
                 error: NetworkError::ConnectorLoop {

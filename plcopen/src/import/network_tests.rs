@@ -611,3 +611,25 @@ fn without_positions_the_connections_of_a_wired_or_order_its_branches() {
 <coil localId="3"><connectionPointIn><connection refLocalId="2"/><connection refLocalId="1"/></connectionPointIn><connectionPointOut/><variable>X</variable></coil>"#;
     assert_eq!(rendered(&networks("LD", objects)), ["(a | b) -> X"]);
 }
+
+#[test]
+fn boxes_nested_deeper_than_a_body_may_hold_are_refused() {
+    // ADD k adds `x` to ADD k-1 through its second input, 100 levels deep.
+    let mut objects = String::from(
+        r#"<inVariable localId="1"><position x="0" y="0"/><connectionPointOut/><expression>x</expression></inVariable>"#,
+    );
+    for level in 0..100u64 {
+        let id = 10 + level;
+        let second = if level == 0 { 1 } else { id - 1 };
+        objects.push_str(&format!(
+            r#"<block localId="{id}" typeName="ADD"><position x="0" y="0"/><inputVariables><variable formalParameter="IN1"><connectionPointIn><connection refLocalId="1"/></connectionPointIn></variable><variable formalParameter="IN2"><connectionPointIn><connection refLocalId="{second}" formalParameter="OUT"/></connectionPointIn></variable></inputVariables><inOutVariables/><outputVariables><variable formalParameter="OUT"><connectionPointOut/></variable></outputVariables></block>
+"#
+        ));
+    }
+    objects.push_str(r#"<outVariable localId="500"><position x="0" y="0"/><connectionPointIn><connection refLocalId="109" formalParameter="OUT"/></connectionPointIn><expression>y</expression></outVariable>"#);
+    let error = import_error(&document("FBD", &objects, "")).to_string();
+    assert!(
+        error.contains("the network nests boxes or branches more than 64 levels deep"),
+        "{error}"
+    );
+}
