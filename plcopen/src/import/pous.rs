@@ -14,6 +14,14 @@ use crate::pou::{Pou, PouLocation, PouType};
 /// Why a body is not converted by this part of the import.
 const LATER: &str = "CFC, SFC and IL bodies are converted by a later part of the import";
 
+/// What became of one body.
+enum BodyOutcome {
+    /// The Rivet body.
+    Converted(Body),
+    /// Not converted, for the reason given (the report's note).
+    NotConverted(String),
+}
+
 /// The language of a body as the report names it (CODESYS CFC stands beside an empty ST).
 fn language(body: &XmlBody) -> &'static str {
     if body.cfc.is_some() {
@@ -39,21 +47,23 @@ impl Converter<'_> {
         body: &XmlBody,
         place: &Place,
         what: &str,
-    ) -> Result<Result<Body, String>, ImportError> {
+    ) -> Result<BodyOutcome, ImportError> {
         if let Some(text) = st_text(body) {
-            return Ok(Ok(Body::St { text }));
+            return Ok(BodyOutcome::Converted(Body::St { text }));
         }
-        match self.networks(body, place, what)? {
-            Some(NetworkOutcome::Networks(networks)) => Ok(Ok(match body.content {
-                BodyContent::Ld(_) => Body::Ld { networks },
-                _ => Body::Fbd { networks },
-            })),
-            Some(NetworkOutcome::NotANetwork { reason }) => Ok(Err(format!(
+        Ok(match self.networks(body, place, what)? {
+            Some(NetworkOutcome::Networks(networks)) => {
+                BodyOutcome::Converted(match body.content {
+                    BodyContent::Ld(_) => Body::Ld { networks },
+                    _ => Body::Fbd { networks },
+                })
+            }
+            Some(NetworkOutcome::NotANetwork { reason }) => BodyOutcome::NotConverted(format!(
                 "its {} body is not a set of networks: {reason}",
                 language(body)
-            ))),
-            None => Ok(Err(format!("its body is {}; {LATER}", language(body)))),
-        }
+            )),
+            None => BodyOutcome::NotConverted(format!("its body is {}; {LATER}", language(body))),
+        })
     }
 
     /// Converts every POU whose body is ST (or that has none), in document order.
@@ -84,8 +94,8 @@ impl Converter<'_> {
         let body = match pou.bodies.first() {
             None => Body::None,
             Some(first) => match self.body(first, &place, &what)? {
-                Ok(body) => body,
-                Err(note) => {
+                BodyOutcome::Converted(body) => body,
+                BodyOutcome::NotConverted(note) => {
                     self.report
                         .push(Outcome::NotConverted, what, &place.path, place.line, note);
                     return Ok(());
@@ -134,7 +144,7 @@ impl Converter<'_> {
             };
             let what = format!("action '{}.{}'", pou.name, action.name);
             match self.body(&action.body, &action_place, &what)? {
-                Ok(body) => {
+                BodyOutcome::Converted(body) => {
                     converted.actions.push(PouAction {
                         name: action.name.clone(),
                         body,
@@ -147,7 +157,7 @@ impl Converter<'_> {
                         "",
                     );
                 }
-                Err(note) => self.report.push(
+                BodyOutcome::NotConverted(note) => self.report.push(
                     Outcome::NotConverted,
                     what,
                     &action_path,
@@ -169,7 +179,7 @@ impl Converter<'_> {
             };
             let what = format!("transition '{}.{}'", pou.name, transition.name);
             match self.body(&transition.body, &transition_place, &what)? {
-                Ok(body) => {
+                BodyOutcome::Converted(body) => {
                     converted.transitions.push(PouAction {
                         name: transition.name.clone(),
                         body,
@@ -182,7 +192,7 @@ impl Converter<'_> {
                         "",
                     );
                 }
-                Err(note) => self.report.push(
+                BodyOutcome::NotConverted(note) => self.report.push(
                     Outcome::NotConverted,
                     what,
                     &transition_path,
@@ -209,8 +219,8 @@ impl Converter<'_> {
             let body = match method.bodies.first() {
                 None => Body::None,
                 Some(first) => match self.body(first, &method_place, &what)? {
-                    Ok(body) => body,
-                    Err(note) => {
+                    BodyOutcome::Converted(body) => body,
+                    BodyOutcome::NotConverted(note) => {
                         self.report.push(
                             Outcome::NotConverted,
                             what,
