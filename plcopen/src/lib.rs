@@ -40,8 +40,8 @@ pub use fbd::{
 };
 pub use header::{ContentHeader, CoordinateInfo, FileHeader, Point};
 pub use import::{
-    ImportError, ImportErrorKind, ImportReport, Imported, Outcome, ReportEntry, import,
-    parse_interval_us,
+    ImportError, ImportErrorKind, ImportReport, Imported, NetworkError, Outcome, ReportEntry,
+    import, parse_interval_us,
 };
 pub use instances::{AccessVariable, ConfigVariable, Configuration, PouInstance, Resource, Task};
 pub use interface::{Interface, VarList, VarListKind, Variable};

@@ -60,4 +60,7 @@ pub enum ImportErrorKind {
     /// Rivet's own `addData` entry (`docs/plcopen-xml.md` §5.4) that cannot be read back.
     #[error("Rivet's data cannot be read: {0}")]
     RivetData(String),
+    /// An LD or FBD body Rivet cannot turn into networks (`docs/plcopen-xml.md` §3.6).
+    #[error("{0}")]
+    Network(#[from] super::network_error::NetworkError),
 }

@@ -1,4 +1,4 @@
-//! The conversion of a [`Document`] into a Rivet project (`docs/plcopen-xml.md` §2).
+//! The conversion of a [`Document`] into a Rivet project (`docs/plcopen-xml.md` §2 and §3).
 
 mod codesys_attributes;
 mod converter;
@@ -6,6 +6,13 @@ mod data_types;
 mod duration;
 mod error;
 mod globals;
+mod network_build;
+mod network_elements;
+mod network_error;
+mod network_graph;
+mod network_groups;
+mod network_import;
+mod network_series_parallel;
 mod pous;
 mod report;
 mod rivet_data;
@@ -18,12 +25,17 @@ mod vendor_places;
 pub(crate) mod corpus_tests;
 #[cfg(test)]
 mod import_tests;
+#[cfg(test)]
+mod network_corpus_tests;
+#[cfg(test)]
+mod network_tests;
 
 use crate::document::Document;
 use converter::Converter;
 
 pub use duration::parse_interval_us;
 pub use error::{ImportError, ImportErrorKind};
+pub use network_error::NetworkError;
 pub use report::{ImportReport, Outcome, ReportEntry};
 
 /// A project converted from a document, with the report of what became of each part.
@@ -38,8 +50,10 @@ pub struct Imported {
 
 /// Converts `document` into a project; nothing is written anywhere.
 ///
-/// ST bodies, actions, transitions and methods are converted; LD, FBD, CFC, SFC and IL bodies
-/// are listed in the report as not converted (a later part of issue 18 converts them).
+/// ST, LD and FBD bodies of POUs, actions, transitions and methods are converted (LD and FBD
+/// into networks, §3 of `docs/plcopen-xml.md`); CFC, SFC and IL bodies, and FBD graphs that are
+/// not networks, are listed in the report as not converted (a later part of issue 18 converts
+/// them).
 pub fn import(document: &Document) -> Result<Imported, ImportError> {
     let mut converter = Converter::new(document);
     converter.project.name = document.content_header.name.clone();

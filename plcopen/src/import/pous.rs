@@ -4,6 +4,7 @@ use project_model::{Body, Method, Object, PouAction, PouKind};
 
 use super::converter::{Converter, Place, comment, is_rivet_entry};
 use super::error::{ImportError, ImportErrorKind};
+use super::network_import::NetworkOutcome;
 use super::report::Outcome;
 use super::type_text::type_text;
 use crate::body::{Body as XmlBody, BodyContent};
@@ -11,7 +12,15 @@ use crate::interface::Interface;
 use crate::pou::{Pou, PouLocation, PouType};
 
 /// Why a body is not converted by this part of the import.
-const LATER: &str = "LD, FBD, CFC, SFC and IL bodies are converted by a later part of the import";
+const LATER: &str = "CFC, SFC and IL bodies are converted by a later part of the import";
+
+/// What became of one body.
+enum BodyOutcome {
+    /// The Rivet body.
+    Converted(Body),
+    /// Not converted, for the reason given (the report's note).
+    NotConverted(String),
+}
 
 /// The language of a body as the report names it (CODESYS CFC stands beside an empty ST).
 fn language(body: &XmlBody) -> &'static str {
@@ -31,6 +40,32 @@ fn st_text(body: &XmlBody) -> Option<String> {
 }
 
 impl Converter<'_> {
+    /// The Rivet body of `body`, or the reason it is not converted; `place` is the element that
+    /// holds the body and `what` names it in the report.
+    fn body(
+        &mut self,
+        body: &XmlBody,
+        place: &Place,
+        what: &str,
+    ) -> Result<BodyOutcome, ImportError> {
+        if let Some(text) = st_text(body) {
+            return Ok(BodyOutcome::Converted(Body::St { text }));
+        }
+        Ok(match self.networks(body, place, what)? {
+            Some(NetworkOutcome::Networks(networks)) => {
+                BodyOutcome::Converted(match body.content {
+                    BodyContent::Ld(_) => Body::Ld { networks },
+                    _ => Body::Fbd { networks },
+                })
+            }
+            Some(NetworkOutcome::NotANetwork { reason }) => BodyOutcome::NotConverted(format!(
+                "its {} body is not a set of networks: {reason}",
+                language(body)
+            )),
+            None => BodyOutcome::NotConverted(format!("its body is {}; {LATER}", language(body))),
+        })
+    }
+
     /// Converts every POU whose body is ST (or that has none), in document order.
     pub fn pous(&mut self) -> Result<(), ImportError> {
         for pou in &self.document.pous {
@@ -61,10 +96,9 @@ impl Converter<'_> {
         let what = format!("POU '{}'", pou.name);
         let body = match pou.bodies.first() {
             None => Body::None,
-            Some(first) => match st_text(first) {
-                Some(text) => Body::St { text },
-                None => {
-                    let note = format!("its body is {}; {LATER}", language(first));
+            Some(first) => match self.body(first, &place, &what)? {
+                BodyOutcome::Converted(body) => body,
+                BodyOutcome::NotConverted(note) => {
                     self.report
                         .push(Outcome::NotConverted, what, &place.path, place.line, note);
                     return Ok(());
@@ -106,11 +140,17 @@ impl Converter<'_> {
         for action in &pou.actions {
             let action_path = format!("{}/actions/action[@name='{}']", place.path, action.name);
             self.opaque(&action.add_data, &action_path, action.body.line);
-            match st_text(&action.body) {
-                Some(text) => {
+            let action_place = Place {
+                path: action_path.clone(),
+                line: action.body.line,
+                column: 1,
+            };
+            let what = format!("action '{}.{}'", pou.name, action.name);
+            match self.body(&action.body, &action_place, &what)? {
+                BodyOutcome::Converted(body) => {
                     converted.actions.push(PouAction {
                         name: action.name.clone(),
-                        body: Body::St { text },
+                        body,
                     });
                     self.report.push(
                         Outcome::Converted,
@@ -120,12 +160,12 @@ impl Converter<'_> {
                         "",
                     );
                 }
-                None => self.report.push(
+                BodyOutcome::NotConverted(note) => self.report.push(
                     Outcome::NotConverted,
-                    format!("action '{}.{}'", pou.name, action.name),
+                    what,
                     &action_path,
                     action.body.line,
-                    format!("its body is {}; {LATER}", language(&action.body)),
+                    note,
                 ),
             }
         }
@@ -135,11 +175,17 @@ impl Converter<'_> {
                 place.path, transition.name
             );
             self.opaque(&transition.add_data, &transition_path, transition.body.line);
-            match st_text(&transition.body) {
-                Some(text) => {
+            let transition_place = Place {
+                path: transition_path.clone(),
+                line: transition.body.line,
+                column: 1,
+            };
+            let what = format!("transition '{}.{}'", pou.name, transition.name);
+            match self.body(&transition.body, &transition_place, &what)? {
+                BodyOutcome::Converted(body) => {
                     converted.transitions.push(PouAction {
                         name: transition.name.clone(),
-                        body: Body::St { text },
+                        body,
                     });
                     self.report.push(
                         Outcome::Converted,
@@ -149,12 +195,12 @@ impl Converter<'_> {
                         "",
                     );
                 }
-                None => self.report.push(
+                BodyOutcome::NotConverted(note) => self.report.push(
                     Outcome::NotConverted,
-                    format!("transition '{}.{}'", pou.name, transition.name),
+                    what,
                     &transition_path,
                     transition.body.line,
-                    format!("its body is {}; {LATER}", language(&transition.body)),
+                    note,
                 ),
             }
         }
@@ -168,12 +214,16 @@ impl Converter<'_> {
                 place.path, method.name
             );
             let what = format!("method '{}.{}'", pou.name, method.name);
+            let method_place = Place {
+                path: method_path.clone(),
+                line: place.line,
+                column: place.column,
+            };
             let body = match method.bodies.first() {
                 None => Body::None,
-                Some(first) => match st_text(first) {
-                    Some(text) => Body::St { text },
-                    None => {
-                        let note = format!("its body is {}; {LATER}", language(first));
+                Some(first) => match self.body(first, &method_place, &what)? {
+                    BodyOutcome::Converted(body) => body,
+                    BodyOutcome::NotConverted(note) => {
                         self.report.push(
                             Outcome::NotConverted,
                             what,

@@ -1,0 +1,175 @@
+//! LD and FBD bodies → Rivet networks: the entry point the POU conversion calls
+//! (`docs/plcopen-xml.md` §3).
+
+use project_model::{ElementId, FlowNode, Network, NetworkOutput};
+
+use super::converter::{Converter, Place};
+use super::error::{ImportError, ImportErrorKind};
+use super::network_build::{BuildFailure, NetworkBuilder};
+use super::network_error::NetworkError;
+use super::network_graph::{BodyGraph, ObjectFault};
+use super::network_groups::{is_network_title, network_groups};
+use super::report::Outcome;
+use crate::body::{Body as XmlBody, BodyContent};
+use crate::body_object::ObjectKind;
+
+/// What became of an LD or FBD body.
+#[derive(Clone, Debug, PartialEq)]
+pub(super) enum NetworkOutcome {
+    /// The body's networks, with element ids numbered from 1 in tree order.
+    Networks(Vec<Network>),
+    /// A sound graph that structured networks cannot hold (a feedback loop, a value read by
+    /// two inputs): the body can be imported as a CFC chart instead.
+    NotANetwork {
+        /// Why, in a sentence naming the element.
+        reason: String,
+    },
+}
+
+impl Converter<'_> {
+    /// Converts the LD or FBD `body` of the object at `place` (`what` names it in the report)
+    /// into networks; `None` when the body is in another language.
+    pub fn networks(
+        &mut self,
+        body: &XmlBody,
+        place: &Place,
+        what: &str,
+    ) -> Result<Option<NetworkOutcome>, ImportError> {
+        let objects = match &body.content {
+            BodyContent::Ld(objects) | BodyContent::Fbd(objects) if body.cfc.is_none() => objects,
+            _ => return Ok(None),
+        };
+        let language = body.content.language();
+        let body_path = format!("{}/body/{language}", place.path);
+        let fault = |converter: &Self, fault: ObjectFault| -> ImportError {
+            let object_place = match objects.get(fault.object) {
+                Some(object) => Place {
+                    path: format!(
+                        "{body_path}/{}[@localId='{}']",
+                        object.kind.element_name(),
+                        object.local_id
+                    ),
+                    line: object.line,
+                    column: object.column,
+                },
+                None => Place {
+                    path: body_path.clone(),
+                    line: body.line,
+                    column: 1,
+                },
+            };
+            converter.error(&object_place, ImportErrorKind::Network(fault.error))
+        };
+        let graph = BodyGraph::new(objects).map_err(|error| fault(self, error))?;
+        if let Some(object) = graph.object_on_loop() {
+            let object = &objects[object];
+            return Ok(Some(NetworkOutcome::NotANetwork {
+                reason: format!(
+                    "the {} with local id {} is on a feedback loop",
+                    object.kind.element_name(),
+                    object.local_id
+                ),
+            }));
+        }
+        let groups = network_groups(&graph, &body.add_data).map_err(|error| fault(self, error))?;
+        let mut networks = Vec::with_capacity(groups.len());
+        for group in groups {
+            let builder = NetworkBuilder::new(&graph, &group.members);
+            match builder.build(group.title, group.comment, group.label) {
+                Ok(network) => networks.push(network),
+                Err(BuildFailure::Fault(error)) => return Err(fault(self, error)),
+                Err(BuildFailure::NotANetwork(reason)) => {
+                    return Ok(Some(NetworkOutcome::NotANetwork { reason }));
+                }
+            }
+        }
+        number_elements(&mut networks);
+        if let Some(problem) = project_model::network_problems(&networks).first() {
+            let place = Place {
+                path: body_path.clone(),
+                line: body.line,
+                column: 1,
+            };
+            return Err(self.error(
+                &place,
+                ImportErrorKind::Network(NetworkError::Problem(problem.to_string())),
+            ));
+        }
+        for object in objects {
+            let object_path = format!(
+                "{body_path}/{}[@localId='{}']",
+                object.kind.element_name(),
+                object.local_id
+            );
+            match &object.kind {
+                ObjectKind::VendorElement(_) if !is_network_title(object) => self.report.push(
+                    Outcome::KeptOpaque,
+                    format!("vendorElement of {what}"),
+                    &object_path,
+                    object.line,
+                    "",
+                ),
+                ObjectKind::Error(text) => self.report.push(
+                    Outcome::NotConverted,
+                    format!("error element of {what}"),
+                    &object_path,
+                    object.line,
+                    text.text.trim().to_owned(),
+                ),
+                _ => {}
+            }
+        }
+        Ok(Some(NetworkOutcome::Networks(networks)))
+    }
+}
+
+/// Gives every element a fresh id, from 1 in tree order (networks in order; in a network its
+/// rung, then its outputs; an element before the chains inside it).
+pub(super) fn number_elements(networks: &mut [Network]) {
+    let mut next = 0u32;
+    for network in networks {
+        number_chain(&mut network.rung, &mut next);
+        number_outputs(&mut network.outputs, &mut next);
+    }
+}
+
+fn fresh(next: &mut u32) -> ElementId {
+    *next += 1;
+    ElementId(*next)
+}
+
+fn number_chain(chain: &mut [FlowNode], next: &mut u32) {
+    for node in chain {
+        match node {
+            FlowNode::Operand(operand) => operand.id = fresh(next),
+            FlowNode::Parallel(parallel) => {
+                parallel.id = fresh(next);
+                for branch in &mut parallel.branches {
+                    number_chain(&mut branch.rung, next);
+                }
+            }
+            FlowNode::Block(block) => {
+                block.id = fresh(next);
+                for input in &mut block.inputs {
+                    number_chain(&mut input.source, next);
+                }
+            }
+        }
+    }
+}
+
+fn number_outputs(outputs: &mut [NetworkOutput], next: &mut u32) {
+    for output in outputs {
+        match output {
+            NetworkOutput::Coil(coil) => coil.id = fresh(next),
+            NetworkOutput::Jump { id, .. } | NetworkOutput::Return { id } => *id = fresh(next),
+            NetworkOutput::Branch {
+                id, rung, outputs, ..
+            } => {
+                *id = fresh(next);
+                number_chain(rung, next);
+                number_outputs(outputs, next);
+            }
+        }
+    }
+}
