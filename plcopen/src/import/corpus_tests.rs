@@ -19,11 +19,12 @@ fn pou<'p>(imported: &'p Imported, name: &str) -> &'p project_model::Pou {
     }
 }
 
-/// True when the POU's first body is ST (not CODESYS's empty ST beside a CFC) or it has none.
+/// True when the POU's first body is one this part of the import converts: ST, SFC or
+/// CODESYS's CFC, or none.
 fn is_st(pou: &crate::Pou) -> bool {
-    pou.bodies
-        .first()
-        .is_none_or(|body| body.cfc.is_none() && matches!(body.content, BodyContent::St(_)))
+    pou.bodies.first().is_none_or(|body| {
+        body.cfc.is_some() || matches!(body.content, BodyContent::St(_) | BodyContent::Sfc(_))
+    })
 }
 
 const FILES: [&str; 7] = [
@@ -125,13 +126,7 @@ fn first_steps_converts_its_st_pous_task_and_globals() {
     assert_eq!(average.kind, PouKind::Function);
     assert_eq!(average.return_type.as_deref(), Some("REAL"));
 
-    for not_converted in [
-        "plc_prg",
-        "CounterFBD",
-        "CounterSFC",
-        "CounterIL",
-        "CounterLD",
-    ] {
+    for not_converted in ["plc_prg", "CounterFBD", "CounterIL", "CounterLD"] {
         let entry = imported
             .report
             .entry(&format!("POU '{not_converted}'"))

@@ -57,4 +57,12 @@ pub enum ImportErrorKind {
     /// A name that is not an IEC identifier, which Rivet needs for an object or task.
     #[error("`{0}` is not an IEC 61131-3 identifier")]
     BadName(String),
+    /// An SFC body that Rivet's structured chart cannot hold, or that is incomplete (no initial
+    /// step, a transition leading nowhere); the message names the element.
+    #[error("{0}")]
+    BadSfc(String),
+    /// A CFC or FBD graph that cannot become a chart (a wire from an object that is not in the
+    /// body, two wires into one pin); the message names the element.
+    #[error("{0}")]
+    BadCfc(String),
 }

@@ -1,21 +1,33 @@
 //! The conversion of a [`Document`] into a Rivet project (`docs/plcopen-xml.md` §2).
 
+mod body_fault;
+mod cfc_chart;
+mod cfc_order;
 mod codesys_attributes;
 mod converter;
 mod data_types;
 mod duration;
 mod error;
 mod globals;
+mod pou_objects;
 mod pous;
 mod report;
+mod rivet_data;
+mod sfc_chart;
+mod sfc_condition;
+mod sfc_step;
 mod tasks;
 mod type_text;
 mod variables;
 
 #[cfg(test)]
+mod cfc_tests;
+#[cfg(test)]
 mod corpus_tests;
 #[cfg(test)]
 mod import_tests;
+#[cfg(test)]
+mod sfc_tests;
 
 use crate::document::Document;
 use converter::Converter;

@@ -2,20 +2,32 @@
 
 use project_model::{Body, Method, Object, PouAction, PouKind};
 
+use super::body_fault::BodyFault;
+use super::cfc_chart::{PIXELS_PER_GRID_UNIT, PositionScale, fbd_graph_to_cfc};
 use super::converter::{Converter, Place, comment};
 use super::error::{ImportError, ImportErrorKind};
+use super::pou_objects::PouObjects;
 use super::report::Outcome;
+use super::rivet_data::rivet_attributes;
+use super::sfc_chart::SfcChartBuilder;
 use super::type_text::type_text;
 use crate::body::{Body as XmlBody, BodyContent};
 use crate::interface::Interface;
 use crate::pou::{Pou, PouLocation, PouType};
 
 /// Why a body is not converted by this part of the import.
-const LATER: &str = "LD, FBD, CFC, SFC and IL bodies are converted by a later part of the import";
+const LATER: &str = "LD, FBD and IL bodies are converted by a later part of the import";
+
+/// Whether an FBD body carries Rivet's marker of a CFC chart (the `…/language` entry holding
+/// `<language name="CFC"/>`).
+fn is_rivet_cfc(body: &XmlBody) -> bool {
+    rivet_attributes(&body.add_data, "language")
+        .is_some_and(|attributes| attributes.get("name").is_some_and(|name| name == "CFC"))
+}
 
 /// The language of a body as the report names it (CODESYS CFC stands beside an empty ST).
 fn language(body: &XmlBody) -> &'static str {
-    if body.cfc.is_some() {
+    if body.cfc.is_some() || is_rivet_cfc(body) {
         "CFC"
     } else {
         body.content.language()
@@ -56,17 +68,38 @@ impl Converter<'_> {
             column: pou.column,
         };
         let what = format!("POU '{}'", pou.name);
+        let mut synthesized = PouObjects::new(
+            pou.interface
+                .iter()
+                .flat_map(|interface| &interface.var_lists)
+                .flat_map(|list| &list.variables)
+                .map(|variable| variable.name.as_str())
+                .chain(pou.actions.iter().map(|action| action.name.as_str()))
+                .chain(
+                    pou.transitions
+                        .iter()
+                        .map(|transition| transition.name.as_str()),
+                )
+                .chain(pou.methods.iter().map(|method| method.name.as_str())),
+        );
         let body = match pou.bodies.first() {
             None => Body::None,
-            Some(first) => match st_text(first) {
-                Some(text) => Body::St { text },
-                None => {
-                    let note = format!("its body is {}; {LATER}", language(first));
-                    self.report
-                        .push(Outcome::NotConverted, what, &place.path, place.line, note);
-                    return Ok(());
+            Some(first) => {
+                let body_path = format!("{}/body", place.path);
+                match self.body(first, &body_path, &mut synthesized)? {
+                    Ok(body) => body,
+                    Err(note) => {
+                        self.report.push(
+                            Outcome::NotConverted,
+                            what,
+                            &place.path,
+                            place.line,
+                            note,
+                        );
+                        return Ok(());
+                    }
                 }
-            },
+            }
         };
         for extra in pou.bodies.iter().skip(1) {
             self.report.push(
@@ -103,11 +136,12 @@ impl Converter<'_> {
         for action in &pou.actions {
             let action_path = format!("{}/actions/action[@name='{}']", place.path, action.name);
             self.opaque(&action.add_data, &action_path, action.body.line);
-            match st_text(&action.body) {
-                Some(text) => {
+            let body_path = format!("{action_path}/body");
+            match self.body(&action.body, &body_path, &mut synthesized)? {
+                Ok(body) => {
                     converted.actions.push(PouAction {
                         name: action.name.clone(),
-                        body: Body::St { text },
+                        body,
                     });
                     self.report.push(
                         Outcome::Converted,
@@ -117,12 +151,12 @@ impl Converter<'_> {
                         "",
                     );
                 }
-                None => self.report.push(
+                Err(note) => self.report.push(
                     Outcome::NotConverted,
                     format!("action '{}.{}'", pou.name, action.name),
                     &action_path,
                     action.body.line,
-                    format!("its body is {}; {LATER}", language(&action.body)),
+                    note,
                 ),
             }
         }
@@ -132,11 +166,12 @@ impl Converter<'_> {
                 place.path, transition.name
             );
             self.opaque(&transition.add_data, &transition_path, transition.body.line);
-            match st_text(&transition.body) {
-                Some(text) => {
+            let body_path = format!("{transition_path}/body");
+            match self.body(&transition.body, &body_path, &mut synthesized)? {
+                Ok(body) => {
                     converted.transitions.push(PouAction {
                         name: transition.name.clone(),
-                        body: Body::St { text },
+                        body,
                     });
                     self.report.push(
                         Outcome::Converted,
@@ -146,12 +181,12 @@ impl Converter<'_> {
                         "",
                     );
                 }
-                None => self.report.push(
+                Err(note) => self.report.push(
                     Outcome::NotConverted,
                     format!("transition '{}.{}'", pou.name, transition.name),
                     &transition_path,
                     transition.body.line,
-                    format!("its body is {}; {LATER}", language(&transition.body)),
+                    note,
                 ),
             }
         }
@@ -167,20 +202,21 @@ impl Converter<'_> {
             let what = format!("method '{}.{}'", pou.name, method.name);
             let body = match method.bodies.first() {
                 None => Body::None,
-                Some(first) => match st_text(first) {
-                    Some(text) => Body::St { text },
-                    None => {
-                        let note = format!("its body is {}; {LATER}", language(first));
-                        self.report.push(
-                            Outcome::NotConverted,
-                            what,
-                            &method_path,
-                            place.line,
-                            note,
-                        );
-                        continue;
+                Some(first) => {
+                    match self.body(first, &format!("{method_path}/body"), &mut synthesized)? {
+                        Ok(body) => body,
+                        Err(note) => {
+                            self.report.push(
+                                Outcome::NotConverted,
+                                what,
+                                &method_path,
+                                place.line,
+                                note,
+                            );
+                            continue;
+                        }
                     }
-                },
+                }
             };
             let (variables, return_type) = self.interface(
                 method.interface.as_ref(),
@@ -203,6 +239,7 @@ impl Converter<'_> {
         for body in &pou.bodies {
             self.opaque(&body.add_data, &format!("{}/body", place.path), body.line);
         }
+        self.synthesized(&pou.name, &place, synthesized, &mut converted);
         self.add_object("POU", Object::Pou(converted), &place)?;
         self.report.push(
             Outcome::Converted,
@@ -224,6 +261,100 @@ impl Converter<'_> {
             }
         }
         Ok(())
+    }
+
+    /// The body `body` at `path` converted, or why it is not (a full sentence for the report).
+    /// SFC and CFC bodies add their inline actions and conditions to `synthesized`.
+    fn body(
+        &mut self,
+        body: &XmlBody,
+        path: &str,
+        synthesized: &mut PouObjects,
+    ) -> Result<Result<Body, String>, ImportError> {
+        if let Some(text) = st_text(body) {
+            return Ok(Ok(Body::St { text }));
+        }
+        let converted = match (&body.cfc, &body.content) {
+            (Some(objects), _) => {
+                let entry = body
+                    .add_data
+                    .entry_ending_with("/cfc")
+                    .map_or("", |entry| entry.name.as_str());
+                let cfc_path = format!("{path}/addData/data[@name='{entry}']/CFC");
+                fbd_graph_to_cfc(objects, PositionScale::GridUnits, &cfc_path, body.line)
+                    .map(|chart| Body::Cfc { chart })
+            }
+            (None, BodyContent::Sfc(objects)) => {
+                let builder =
+                    SfcChartBuilder::new(objects, &format!("{path}/SFC"), body.line, synthesized);
+                builder.chart().map(|(chart, entries)| {
+                    self.report.entries.extend(entries);
+                    Body::Sfc { chart }
+                })
+            }
+            (None, BodyContent::Fbd(objects)) if is_rivet_cfc(body) => fbd_graph_to_cfc(
+                objects,
+                PositionScale::PerGridUnit(PIXELS_PER_GRID_UNIT),
+                &format!("{path}/FBD"),
+                body.line,
+            )
+            .map(|chart| Body::Cfc { chart }),
+            _ => return Ok(Err(format!("its body is {}; {LATER}", language(body)))),
+        };
+        match converted {
+            Ok(body) => Ok(Ok(body)),
+            Err(BodyFault::NotConverted(reason)) => {
+                Ok(Err(format!("its body is {}: {reason}", language(body))))
+            }
+            Err(BodyFault::Error(place, kind)) => Err(self.error(&place, kind)),
+        }
+    }
+
+    /// Adds the actions and transition objects synthesized from inline bodies to the POU, and
+    /// reports each (and each name changed because it was taken).
+    fn synthesized(
+        &mut self,
+        pou: &str,
+        place: &Place,
+        synthesized: PouObjects,
+        converted: &mut project_model::Pou,
+    ) {
+        for (kind, objects, note) in [
+            (
+                "action",
+                synthesized.actions,
+                "made of an inline action body of an SFC step",
+            ),
+            (
+                "transition",
+                synthesized.transitions,
+                "made of a transition's inline or wired condition",
+            ),
+        ] {
+            for object in objects {
+                self.report.push(
+                    Outcome::Converted,
+                    format!("{kind} '{pou}.{}'", object.name),
+                    &place.path,
+                    place.line,
+                    note,
+                );
+                if kind == "action" {
+                    converted.actions.push(object);
+                } else {
+                    converted.transitions.push(object);
+                }
+            }
+        }
+        for renamed in synthesized.renamed {
+            self.report.push(
+                Outcome::Converted,
+                format!("POU '{pou}'"),
+                &place.path,
+                place.line,
+                renamed,
+            );
+        }
     }
 
     /// The declarations and return type of an interface.
