@@ -45,7 +45,7 @@ fn chart<'i>(imported: &'i Imported, name: &str) -> &'i CfcChart {
     }
 }
 
-fn element<'c>(chart: &'c CfcChart, wanted: impl Fn(&CfcElementKind) -> bool) -> &'c CfcElement {
+fn element(chart: &CfcChart, wanted: impl Fn(&CfcElementKind) -> bool) -> &CfcElement {
     chart
         .elements
         .iter()
