@@ -19,14 +19,29 @@ use crate::fbd::BlockPin;
 use crate::header::Point;
 use crate::ld::{Edge, Storage};
 
-/// How the positions of a graph relate to Rivet's grid.
+/// Who wrote a graph, which says how its positions and execution order ids read.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) enum PositionScale {
-    /// Positions are grid units already (CODESYS's CFC).
-    GridUnits,
-    /// Positions are this many units per grid unit (Rivet's export writes grid units × 10;
-    /// Beremiz's pixels are read at the same pitch).
-    PerGridUnit(u32),
+pub(crate) enum CfcDialect {
+    /// CODESYS's CFC: positions in grid units; `executionOrderId`s rank the elements that data
+    /// flow leaves free (CODESYS's default "auto data flow" mode computes the order from the
+    /// wires, and files carry numbers that run against them).
+    Codesys,
+    /// Rivet's own export: positions are grid units × 10; `executionOrderId` is the order + 1,
+    /// kept exactly (a feedback loop depends on it).
+    Rivet,
+    /// Beremiz and other free-placement editors: pixels, read at 10 per grid unit;
+    /// `executionOrderId`s above 0 kept exactly, else Beremiz's generator's order.
+    Beremiz,
+}
+
+impl CfcDialect {
+    /// Positions per grid unit.
+    fn pitch(self) -> f64 {
+        match self {
+            CfcDialect::Codesys => 1.0,
+            CfcDialect::Rivet | CfcDialect::Beremiz => f64::from(PIXELS_PER_GRID_UNIT),
+        }
+    }
 }
 
 /// The pitch at which Rivet's exported positions and Beremiz's pixels become grid units.
@@ -36,11 +51,11 @@ pub(crate) const PIXELS_PER_GRID_UNIT: u32 = 10;
 /// `body_line`) into a chart.
 pub(crate) fn fbd_graph_to_cfc(
     objects: &[BodyObject],
-    scale: PositionScale,
+    dialect: CfcDialect,
     body_path: &str,
     body_line: u32,
 ) -> Result<CfcChart, BodyFault> {
-    let mut builder = CfcChartBuilder::new(objects.iter().collect(), scale, body_path, body_line);
+    let mut builder = CfcChartBuilder::new(objects.iter().collect(), dialect, body_path, body_line);
     builder.build()?;
     builder.finish()
 }
@@ -51,8 +66,8 @@ pub(super) struct CfcChartBuilder<'o> {
     objects: Vec<&'o BodyObject>,
     /// The same objects by `localId`.
     by_local_id: HashMap<u64, &'o BodyObject>,
-    /// How positions become grid units.
-    scale: PositionScale,
+    /// Who wrote the graph.
+    dialect: CfcDialect,
     /// The element path of the body, for errors.
     body_path: String,
     /// Line of the body, for errors about the chart as a whole.
@@ -73,7 +88,7 @@ impl<'o> CfcChartBuilder<'o> {
     /// A builder for `objects` (document order).
     pub fn new(
         objects: Vec<&'o BodyObject>,
-        scale: PositionScale,
+        dialect: CfcDialect,
         body_path: &str,
         body_line: u32,
     ) -> Self {
@@ -84,7 +99,7 @@ impl<'o> CfcChartBuilder<'o> {
         Self {
             objects,
             by_local_id,
-            scale,
+            dialect,
             body_path: body_path.to_owned(),
             body_line,
             element_of: HashMap::new(),
@@ -409,7 +424,7 @@ impl<'o> CfcChartBuilder<'o> {
 
     /// The chart, numbered in execution order and checked against Rivet's rules.
     pub fn finish(self) -> Result<CfcChart, BodyFault> {
-        let order = execution_order(&self.elements, &self.wires);
+        let order = execution_order(&self.elements, &self.wires, self.dialect);
         let rank: HashMap<ElementId, u32> = order.into_iter().zip(0u32..).collect();
         let chart = CfcChart {
             elements: self
@@ -447,10 +462,7 @@ impl<'o> CfcChartBuilder<'o> {
 
     /// A coordinate in grid units, rounded.
     fn grid(&self, value: f64) -> i32 {
-        let units = match self.scale {
-            PositionScale::GridUnits => value,
-            PositionScale::PerGridUnit(pitch) => value / f64::from(pitch),
-        };
+        let units = value / self.dialect.pitch();
         // Saturating: a coordinate beyond i32 is nonsense, and the chart still loads.
         units.round() as i32
     }
@@ -469,10 +481,7 @@ impl<'o> CfcChartBuilder<'o> {
             return Vec::new();
         }
         let on_grid = |value: f64| {
-            let units = match self.scale {
-                PositionScale::GridUnits => value,
-                PositionScale::PerGridUnit(pitch) => value / f64::from(pitch),
-            };
+            let units = value / self.dialect.pitch();
             (units.fract() == 0.0).then_some(units as i32)
         };
         points[1..points.len() - 1]

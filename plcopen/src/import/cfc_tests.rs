@@ -5,7 +5,7 @@ use project_model::{
     Body, CfcChart, CfcElement, CfcElementKind, CoilKind, ElementId, GridPoint, Object, PinRef,
 };
 
-use super::cfc_chart::{PIXELS_PER_GRID_UNIT, PositionScale, fbd_graph_to_cfc};
+use super::cfc_chart::{CfcDialect, fbd_graph_to_cfc};
 use super::{ImportErrorKind, Imported, Outcome, import};
 use crate::read;
 use crate::reader::corpus_tests::read_corpus;
@@ -80,9 +80,9 @@ fn codesys_add_two_ints_cfc_resolves_its_junctions_and_keeps_its_order() {
         |kind| matches!(kind, CfcElementKind::Output { expression, .. } if expression == "addTwoIntsCFC"),
     );
     assert_eq!((output.x, output.y), (11, 3));
-    // CODESYS numbered the output 1 and the box 2: kept, renumbered from 0.
-    assert_eq!(output.order, Some(0));
-    assert_eq!(add.order, Some(1));
+    // CODESYS numbered the output 1 and the box 2, against the wire: data flow comes first.
+    assert_eq!(add.order, Some(0));
+    assert_eq!(output.order, Some(1));
     let int1 = input(chart, "int1");
     let int2 = input(chart, "int2");
     let mut wires: Vec<(PinRef, PinRef)> = chart
@@ -198,13 +198,8 @@ fn a_beremiz_fbd_graph_runs_each_block_before_what_it_drives() {
         let BodyContent::Fbd(objects) = &body.content else {
             continue;
         };
-        let chart = fbd_graph_to_cfc(
-            objects,
-            PositionScale::PerGridUnit(PIXELS_PER_GRID_UNIT),
-            "body/FBD",
-            body.line,
-        )
-        .unwrap_or_else(|fault| panic!("{}: {fault:?}", pou.name));
+        let chart = fbd_graph_to_cfc(objects, CfcDialect::Beremiz, "body/FBD", body.line)
+            .unwrap_or_else(|fault| panic!("{}: {fault:?}", pou.name));
         let order_of = |id: ElementId| {
             chart
                 .elements

@@ -3,7 +3,7 @@
 use project_model::{Body, Method, Object, PouAction, PouKind};
 
 use super::body_fault::BodyFault;
-use super::cfc_chart::{PIXELS_PER_GRID_UNIT, PositionScale, fbd_graph_to_cfc};
+use super::cfc_chart::{CfcDialect, fbd_graph_to_cfc};
 use super::converter::{Converter, Place, comment};
 use super::error::{ImportError, ImportErrorKind};
 use super::pou_objects::PouObjects;
@@ -281,7 +281,7 @@ impl Converter<'_> {
                     .entry_ending_with("/cfc")
                     .map_or("", |entry| entry.name.as_str());
                 let cfc_path = format!("{path}/addData/data[@name='{entry}']/CFC");
-                fbd_graph_to_cfc(objects, PositionScale::GridUnits, &cfc_path, body.line)
+                fbd_graph_to_cfc(objects, CfcDialect::Codesys, &cfc_path, body.line)
                     .map(|chart| Body::Cfc { chart })
             }
             (None, BodyContent::Sfc(objects)) => {
@@ -294,7 +294,7 @@ impl Converter<'_> {
             }
             (None, BodyContent::Fbd(objects)) if is_rivet_cfc(body) => fbd_graph_to_cfc(
                 objects,
-                PositionScale::PerGridUnit(PIXELS_PER_GRID_UNIT),
+                CfcDialect::Rivet,
                 &format!("{path}/FBD"),
                 body.line,
             )

@@ -6,7 +6,7 @@ use std::collections::{HashSet, VecDeque};
 use project_model::{Body, PouAction, Transition};
 
 use super::body_fault::BodyFault;
-use super::cfc_chart::{CfcChartBuilder, PIXELS_PER_GRID_UNIT, PositionScale};
+use super::cfc_chart::{CfcChartBuilder, CfcDialect};
 use super::converter::comment;
 use super::sfc_chart::SfcChartBuilder;
 use crate::body::BodyContent;
@@ -137,7 +137,7 @@ impl<'o> SfcChartBuilder<'o, '_> {
         let name = self.pou_objects.condition_name(&self.last_step.clone());
         let mut builder = CfcChartBuilder::new(
             graph.clone(),
-            PositionScale::PerGridUnit(PIXELS_PER_GRID_UNIT),
+            CfcDialect::Beremiz,
             &self.body_path,
             object.line,
         );

@@ -3,7 +3,7 @@
 use project_model::{ActionAssociation, ActionQualifier, Body, Step};
 
 use super::body_fault::BodyFault;
-use super::cfc_chart::{PIXELS_PER_GRID_UNIT, PositionScale, fbd_graph_to_cfc};
+use super::cfc_chart::{CfcDialect, fbd_graph_to_cfc};
 use super::converter::comment;
 use super::rivet_data::rivet_attributes;
 use super::sfc_chart::SfcChartBuilder;
@@ -91,7 +91,7 @@ impl SfcChartBuilder<'_, '_> {
                         Body::Cfc {
                             chart: fbd_graph_to_cfc(
                                 objects,
-                                PositionScale::PerGridUnit(PIXELS_PER_GRID_UNIT),
+                                CfcDialect::Beremiz,
                                 &path,
                                 body.line,
                             )?,
