@@ -48,8 +48,9 @@ pub struct Imported {
 
 /// Converts `document` into a project; nothing is written anywhere.
 ///
-/// ST bodies, actions, transitions and methods are converted; LD, FBD, CFC, SFC and IL bodies
-/// are listed in the report as not converted (a later part of issue 18 converts them).
+/// ST, SFC and CFC bodies (CODESYS's, and FBD bodies Rivet marked as CFC) of POUs, actions,
+/// transitions and methods are converted (docs/plcopen-xml.md §2, §4); LD, FBD and IL bodies
+/// are listed in the report as not converted (other parts of issue 18 convert them).
 pub fn import(document: &Document) -> Result<Imported, ImportError> {
     let mut converter = Converter::new(document);
     converter.project.name = document.content_header.name.clone();
