@@ -224,3 +224,35 @@ END_PROGRAM
         assert_eq!(value.to_string(), want, "{path}");
     }
 }
+
+/// matiec's `SFC_TEST` chart, imported, runs: with every input FALSE it leaves `GO` (its
+/// condition is `IX1 = FALSE`) for `STEP1`, whose action `ONSTEP1` sets `QX1`, and waits there
+/// for `IX2`.
+#[test]
+fn matiec_sfc_test_steps_into_its_first_step() {
+    let document = plcopen::read_file(&corpus("matiec/tests/SFC_TEST.xml"))
+        .unwrap_or_else(|error| panic!("{error}"));
+    let imported = plcopen::import(&document).unwrap_or_else(|error| panic!("{error}"));
+    // The file's instance runs in no task; the test puts the program in the file's task.
+    let mut project = imported.project;
+    let [task] = project.tasks.as_mut_slice() else {
+        panic!("{:?}", project.tasks)
+    };
+    task.programs.push("MAIN_TEST".to_owned());
+    let image = compiler::compile_project(&project).unwrap_or_else(|error| panic!("{error:?}"));
+    let mut simulation =
+        runtime::simulation::Simulation::new(image).unwrap_or_else(|error| panic!("{error}"));
+    let read = |simulation: &runtime::simulation::Simulation, path: &str| {
+        runtime::value::read(simulation.engine(), path)
+            .unwrap_or_else(|error| panic!("{path}: {error}"))
+            .to_string()
+    };
+    simulation.run(1);
+    assert_eq!(read(&simulation, "MAIN_TEST.GO.x"), "TRUE");
+    assert_eq!(read(&simulation, "MAIN_TEST.QX1"), "FALSE");
+    simulation.run(3);
+    assert!(simulation.faults().is_empty(), "{:?}", simulation.faults());
+    assert_eq!(read(&simulation, "MAIN_TEST.GO.x"), "FALSE");
+    assert_eq!(read(&simulation, "MAIN_TEST.STEP1.x"), "TRUE");
+    assert_eq!(read(&simulation, "MAIN_TEST.QX1"), "TRUE");
+}
