@@ -287,7 +287,7 @@ impl Converter<'_> {
             (None, BodyContent::Sfc(objects)) => {
                 let builder =
                     SfcChartBuilder::new(objects, &format!("{path}/SFC"), body.line, synthesized);
-                builder.chart().map(|(chart, entries)| {
+                builder.chart_on_own_stack().map(|(chart, entries)| {
                     self.report.entries.extend(entries);
                     Body::Sfc { chart }
                 })

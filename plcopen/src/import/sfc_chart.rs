@@ -15,6 +15,14 @@ use crate::body::BodyContent;
 use crate::body_object::{BodyObject, ObjectKind};
 use crate::connection::ConnectionPointIn;
 
+/// How deep branches may nest (a chain of choices nests one level per choice): the walk
+/// recurses per level, and this bounds its stack.
+const MAX_BRANCH_DEPTH: usize = 1000;
+
+/// The stack of the thread the walk runs on: room for [`MAX_BRANCH_DEPTH`] levels even in an
+/// unoptimised build (about 20 KiB a level there), whatever stack the caller's thread has.
+const WALK_STACK_BYTES: usize = 64 << 20;
+
 /// How a sequence walked from an element ends.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum End {
@@ -54,6 +62,8 @@ pub(super) struct SfcChartBuilder<'o, 'p> {
     pub(super) used: HashSet<u64>,
     /// The last element id given out (shared with the bodies of macro steps).
     last_id: u32,
+    /// How many divergences the walk is inside.
+    depth: usize,
     /// The name of the step walked last, which names synthesized conditions.
     pub(super) last_step: String,
     /// The actions and transition objects the body adds to its POU.
@@ -104,9 +114,30 @@ impl<'o, 'p> SfcChartBuilder<'o, 'p> {
             placed_steps: HashMap::new(),
             used: HashSet::new(),
             last_id: 0,
+            depth: 0,
             last_step: String::new(),
             pou_objects,
             report: Vec::new(),
+        }
+    }
+
+    /// [`Self::chart`] on a thread of its own with a stack of [`WALK_STACK_BYTES`], as the walk
+    /// recurses once per nested branch.
+    pub fn chart_on_own_stack(self) -> Result<(SfcChart, Vec<ReportEntry>), BodyFault> {
+        let walked = std::thread::scope(|scope| {
+            std::thread::Builder::new()
+                .name("sfc import".to_owned())
+                .stack_size(WALK_STACK_BYTES)
+                .spawn_scoped(scope, move || self.chart())
+                .map(|handle| handle.join())
+        });
+        match walked {
+            Ok(Ok(result)) => result,
+            // A panic in the walk is a bug: it goes on in the caller's thread.
+            Ok(Err(panic)) => std::panic::resume_unwind(panic),
+            Err(error) => Err(BodyFault::NotConverted(format!(
+                "no thread could be started for the walk of the chart: {error}"
+            ))),
         }
     }
 
@@ -318,6 +349,12 @@ impl<'o, 'p> SfcChartBuilder<'o, 'p> {
         object: &BodyObject,
         parallel: bool,
     ) -> Result<(SfcNode, Option<u64>), BodyFault> {
+        if self.depth >= MAX_BRANCH_DEPTH {
+            return Err(self.error_at(
+                object.local_id,
+                &format!("branches nest more than {MAX_BRANCH_DEPTH} deep here"),
+            ));
+        }
         let id = self.fresh_id();
         let firsts: Vec<u64> = self
             .consumers
@@ -338,7 +375,10 @@ impl<'o, 'p> SfcChartBuilder<'o, 'p> {
         let mut arrivals = 0;
         for first in firsts {
             let mut nodes = Vec::new();
-            match self.sequence(first, &mut nodes, false)? {
+            self.depth += 1;
+            let end = self.sequence(first, &mut nodes, false);
+            self.depth -= 1;
+            match end? {
                 End::Closed if parallel => {
                     return Err(self.error_at(
                         object.local_id,
@@ -442,6 +482,7 @@ impl<'o, 'p> SfcChartBuilder<'o, 'p> {
         );
         let mut inner = SfcChartBuilder::new(objects, &path, object.line, self.pou_objects);
         inner.last_id = self.last_id;
+        inner.depth = self.depth + 1;
         let first = objects.iter().find(|candidate| {
             matches!(&candidate.kind, ObjectKind::Step(step)
                 if step.initial || step.input.as_ref().is_none_or(|point| point.connections.is_empty()))

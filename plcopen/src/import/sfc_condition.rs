@@ -123,7 +123,8 @@ impl<'o> SfcChartBuilder<'o, '_> {
         let graph = self.driving_graph(source.local_id)?;
         if graph.iter().any(|object| is_ld_object(&object.kind)) {
             // Contacts in series and parallel from a left rail are a boolean expression.
-            if let Some(text) = self.contact_expression(source.local_id, graph.len()) {
+            // The walk recurses per contact: a bounded budget keeps its stack small.
+            if let Some(text) = self.contact_expression(source.local_id, graph.len().min(256)) {
                 for part in &graph {
                     self.used.insert(part.local_id);
                 }

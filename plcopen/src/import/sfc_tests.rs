@@ -514,3 +514,44 @@ fn a_convergence_of_branches_of_different_divergences_is_refused() {
         "{refused}"
     );
 }
+
+/// A chain of `choices` choices: each step offers `go` to the next step and `stop` back to the
+/// first, drawn as Beremiz draws it (no convergence).
+fn chain_of_choices(choices: u64) -> String {
+    let mut objects = vec![step(1, "S0", true, None)];
+    let mut previous_step = 1;
+    for index in 0..choices {
+        let base = 10 + index * 10;
+        objects.push(format!(
+            r#"<selectionDivergence localId="{base}"><connectionPointIn><connection refLocalId="{previous_step}"/></connectionPointIn><connectionPointOut/><connectionPointOut/></selectionDivergence>"#
+        ));
+        objects.push(transition(base + 1, base, &inline_st("go")));
+        objects.push(transition(base + 2, base, &inline_st("NOT go")));
+        objects.push(jump(base + 3, base + 2, "S0"));
+        objects.push(step(
+            base + 4,
+            &format!("S{}", index + 1),
+            false,
+            Some(base + 1),
+        ));
+        previous_step = base + 4;
+    }
+    objects.push(transition(5, previous_step, &inline_st("TRUE")));
+    objects.push(jump(6, 5, "S0"));
+    objects.join("\n")
+}
+
+#[test]
+fn a_chain_of_choices_becomes_a_flat_sequence_and_a_too_deep_one_an_error() {
+    let imported = imported(&document(&chain_of_choices(100), ""));
+    let chart = chart(pou(&imported, "Seq"));
+    // Step, alternative, step…: the last choice's two branches both end in jumps, so it holds
+    // its step; the 99 before it are followed by theirs.
+    assert_eq!(chart.sequence.len(), 100 * 2);
+    assert!(project_model::sfc_problems(chart).is_empty());
+    let refused = error(&document(&chain_of_choices(1001), ""));
+    assert!(
+        refused.to_string().contains("nest more than 1000"),
+        "{refused}"
+    );
+}
