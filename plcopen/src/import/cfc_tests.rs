@@ -259,3 +259,86 @@ fn two_wires_into_one_input_are_refused() {
         error.path
     );
 }
+
+#[test]
+fn an_action_with_a_marked_body_is_a_cfc_action_and_off_grid_wires_route_themselves() {
+    let off_grid = RIVET_CFC.replace(
+        r#"<position x="100" y="40"/>"#,
+        r#"<position x="105" y="40"/>"#,
+    );
+    let action = format!(
+        r#"<actions><action name="Act">{off_grid}</action></actions><body><ST><xhtml:p>Act();</xhtml:p></ST></body>"#
+    );
+    let imported = imported(&document(&action));
+    let Some(Object::Pou(pou)) = imported.project.application.object("Chart") else {
+        panic!("{:#?}", imported.report)
+    };
+    let [act] = pou.actions.as_slice() else {
+        panic!("{:?}", pou.actions)
+    };
+    let Body::Cfc { chart } = &act.body else {
+        panic!("{:?}", act.body)
+    };
+    assert!(
+        chart.wires.iter().all(|wire| wire.points.is_empty()),
+        "{chart:#?}"
+    );
+    let entry = imported.report.entry("action 'Chart.Act'");
+    assert_eq!(entry.map(|entry| entry.outcome), Some(Outcome::Converted));
+}
+
+#[test]
+fn a_beremiz_feedback_loop_keeps_every_element_once() {
+    // ADD reads its own output through a connector: the loop is broken, each element runs once.
+    let body = r#"<body><FBD>
+      <inVariable localId="1"><position x="10" y="10"/><connectionPointOut/><expression>1</expression></inVariable>
+      <continuation localId="2" name="loop"><position x="10" y="40"/><connectionPointOut/></continuation>
+      <block localId="3" typeName="ADD" executionOrderId="0"><position x="60" y="10"/>
+        <inputVariables>
+          <variable formalParameter="IN1"><connectionPointIn><connection refLocalId="1"/></connectionPointIn></variable>
+          <variable formalParameter="IN2"><connectionPointIn><connection refLocalId="2"/></connectionPointIn></variable>
+        </inputVariables><inOutVariables/>
+        <outputVariables><variable formalParameter="OUT"><connectionPointOut/></variable></outputVariables>
+      </block>
+      <connector localId="4" name="loop"><position x="120" y="40"/><connectionPointIn><connection refLocalId="3" formalParameter="OUT"/></connectionPointIn></connector>
+      <outVariable localId="5" executionOrderId="0"><position x="120" y="10"/><connectionPointIn><connection refLocalId="3" formalParameter="OUT"/></connectionPointIn><expression>a</expression></outVariable>
+    </FBD></body>"#;
+    let looped = read(&document(body), "in.xml").unwrap_or_else(|error| panic!("{error}"));
+    let objects = match &looped.pous[0].bodies[0].content {
+        BodyContent::Fbd(objects) => objects,
+        other => panic!("{other:?}"),
+    };
+    let chart = fbd_graph_to_cfc(objects, CfcDialect::Beremiz, "body/FBD", 1)
+        .unwrap_or_else(|fault| panic!("{fault:?}"));
+    let add = element(&chart, |kind| matches!(kind, CfcElementKind::Box(_)));
+    let out = element(&chart, |kind| matches!(kind, CfcElementKind::Output { .. }));
+    assert_eq!((add.order, out.order), (Some(0), Some(1)));
+    assert!(project_model::cfc_problems(&chart).is_empty());
+    // Numbered against the flow, as CODESYS writes them: the flow still comes first.
+    let numbered = body
+        .replace(
+            r#"typeName="ADD" executionOrderId="0""#,
+            r#"typeName="ADD" executionOrderId="2""#,
+        )
+        .replace(
+            r#"<outVariable localId="5" executionOrderId="0""#,
+            r#"<outVariable localId="5" executionOrderId="1""#,
+        );
+    let renumbered = read(&document(&numbered), "in.xml").unwrap_or_else(|error| panic!("{error}"));
+    let objects = match &renumbered.pous[0].bodies[0].content {
+        BodyContent::Fbd(objects) => objects,
+        other => panic!("{other:?}"),
+    };
+    let codesys = fbd_graph_to_cfc(objects, CfcDialect::Codesys, "body/FBD", 1)
+        .unwrap_or_else(|fault| panic!("{fault:?}"));
+    let rivet = fbd_graph_to_cfc(objects, CfcDialect::Rivet, "body/FBD", 1)
+        .unwrap_or_else(|fault| panic!("{fault:?}"));
+    let orders = |chart: &CfcChart| {
+        let add = element(chart, |kind| matches!(kind, CfcElementKind::Box(_))).order;
+        let out = element(chart, |kind| matches!(kind, CfcElementKind::Output { .. })).order;
+        (add, out)
+    };
+    assert_eq!(orders(&codesys), (Some(0), Some(1)));
+    // Rivet's own numbers are kept exactly.
+    assert_eq!(orders(&rivet), (Some(1), Some(0)));
+}
