@@ -555,3 +555,36 @@ fn a_chain_of_choices_becomes_a_flat_sequence_and_a_too_deep_one_an_error() {
         "{refused}"
     );
 }
+
+#[test]
+fn an_inline_fbd_action_becomes_a_cfc_action_and_an_inline_ld_one_waits() {
+    let fbd = r#"<inline><FBD>
+        <inVariable localId="1"><position x="10" y="10"/><connectionPointOut/><expression>TRUE</expression></inVariable>
+        <outVariable localId="2"><position x="60" y="10"/><connectionPointIn><connection refLocalId="1"/></connectionPointIn><expression>go</expression></outVariable>
+      </FBD></inline>"#;
+    let objects = [
+        step(1, "A", true, None),
+        format!(
+            r#"<actionBlock localId="9"><connectionPointIn><connection refLocalId="1"/></connectionPointIn><action localId="0">{fbd}</action></actionBlock>"#
+        ),
+        transition(2, 1, &inline_st("go")),
+        jump(3, 2, "A"),
+    ]
+    .join("\n");
+    let converted = imported(&document(&objects, ""));
+    let seq = pou(&converted, "Seq");
+    let [action] = seq.actions.as_slice() else {
+        panic!("{:?}", seq.actions)
+    };
+    assert_eq!(action.name, "A_INLINE1_2");
+    assert!(matches!(&action.body, Body::Cfc { chart } if chart.elements.len() == 2));
+
+    let ld = objects.replace(fbd, r#"<inline><LD/></inline>"#);
+    let waiting = imported(&document(&ld, ""));
+    let entry = waiting.report.entry("POU 'Seq'");
+    assert!(
+        entry.is_some_and(|entry| entry.outcome == Outcome::NotConverted
+            && entry.note.contains("inline action of step `A`")),
+        "{entry:?}"
+    );
+}
