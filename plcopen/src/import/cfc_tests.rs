@@ -101,6 +101,9 @@ fn codesys_add_two_ints_cfc_resolves_its_junctions_and_keeps_its_order() {
     );
     let entry = imported.report.entry("POU 'addTwoIntsCFC'");
     assert_eq!(entry.map(|entry| entry.outcome), Some(Outcome::Converted));
+    // The box's call type stays in the document for the export, and the report says where.
+    assert!(imported.report.with_outcome(Outcome::KeptOpaque).any(|entry| entry.path
+        == "project/types/pous/pou[@name='addTwoIntsCFC']/body/addData/data[@name='http://www.3s-software.com/plcopenxml/cfc']/CFC/block[@localId='2']/addData/data[@name='http://www.3s-software.com/plcopenxml/cfccalltype']"));
 }
 
 /// An FBD body as Rivet's export writes a CFC chart: positions × 10, `executionOrderId` =

@@ -8,7 +8,7 @@ use super::converter::{Converter, Place, comment};
 use super::error::{ImportError, ImportErrorKind};
 use super::pou_objects::PouObjects;
 use super::report::Outcome;
-use super::rivet_data::rivet_attributes;
+use super::rivet_data::{RIVET_NAMESPACE, rivet_attributes};
 use super::sfc_chart::SfcChartBuilder;
 use super::type_text::type_text;
 use crate::body::{Body as XmlBody, BodyContent};
@@ -274,39 +274,67 @@ impl Converter<'_> {
         if let Some(text) = st_text(body) {
             return Ok(Ok(Body::St { text }));
         }
+        let cfc_entry = body
+            .add_data
+            .entry_ending_with("/cfc")
+            .map_or("", |entry| entry.name.as_str());
+        // Where the body's objects stand, for errors and the report.
+        let objects_path = match &body.cfc {
+            Some(_) => format!("{path}/addData/data[@name='{cfc_entry}']/CFC"),
+            None => format!("{path}/{}", body.content.language()),
+        };
         let converted = match (&body.cfc, &body.content) {
             (Some(objects), _) => {
-                let entry = body
-                    .add_data
-                    .entry_ending_with("/cfc")
-                    .map_or("", |entry| entry.name.as_str());
-                let cfc_path = format!("{path}/addData/data[@name='{entry}']/CFC");
-                fbd_graph_to_cfc(objects, CfcDialect::Codesys, &cfc_path, body.line)
+                fbd_graph_to_cfc(objects, CfcDialect::Codesys, &objects_path, body.line)
                     .map(|chart| Body::Cfc { chart })
             }
             (None, BodyContent::Sfc(objects)) => {
-                let builder =
-                    SfcChartBuilder::new(objects, &format!("{path}/SFC"), body.line, synthesized);
+                let builder = SfcChartBuilder::new(objects, &objects_path, body.line, synthesized);
                 builder.chart_on_own_stack().map(|(chart, entries)| {
                     self.report.entries.extend(entries);
                     Body::Sfc { chart }
                 })
             }
-            (None, BodyContent::Fbd(objects)) if is_rivet_cfc(body) => fbd_graph_to_cfc(
-                objects,
-                CfcDialect::Rivet,
-                &format!("{path}/FBD"),
-                body.line,
-            )
-            .map(|chart| Body::Cfc { chart }),
+            (None, BodyContent::Fbd(objects)) if is_rivet_cfc(body) => {
+                fbd_graph_to_cfc(objects, CfcDialect::Rivet, &objects_path, body.line)
+                    .map(|chart| Body::Cfc { chart })
+            }
             _ => return Ok(Err(format!("its body is {}; {LATER}", language(body)))),
         };
+        let objects = body.cfc.as_deref().unwrap_or(body.content.objects());
         match converted {
-            Ok(body) => Ok(Ok(body)),
+            Ok(converted) => {
+                self.opaque_objects(objects, &objects_path);
+                Ok(Ok(converted))
+            }
             Err(BodyFault::NotConverted(reason)) => {
                 Ok(Err(format!("its body is {}: {reason}", language(body))))
             }
             Err(BodyFault::Error(place, kind)) => Err(self.error(&place, kind)),
+        }
+    }
+
+    /// Lists the `addData` entries of the objects of a converted body as kept opaque (CODESYS's
+    /// `sfc/element`, `cfccalltype`…); Rivet's own entries were read into the chart.
+    fn opaque_objects(&mut self, objects: &[crate::BodyObject], path: &str) {
+        for object in objects {
+            for entry in &object.add_data.entries {
+                if entry.name.starts_with(RIVET_NAMESPACE) {
+                    continue;
+                }
+                self.report.push(
+                    Outcome::KeptOpaque,
+                    format!("addData '{}'", entry.name),
+                    &format!(
+                        "{path}/{}[@localId='{}']/addData/data[@name='{}']",
+                        object.kind.element_name(),
+                        object.local_id,
+                        entry.name
+                    ),
+                    object.line,
+                    "",
+                );
+            }
         }
     }
 
