@@ -76,8 +76,7 @@ pub use edit::{Edit, EditError, TextTarget, TreeEdit, VarOwner};
 pub use files::{
     APPLICATION_DIR, FORMAT_VERSION, HeldBackObject, LoadError, LoadProblem, LoadedProject,
     MANIFEST_FILE_NAME, SaveError, SaveReport, Severity, StBody, VENDOR_DATA_FILE_NAME,
-    load_project, object_files, save_project, save_project_keeping, st_body_files,
-    text_body_files,
+    load_project, object_files, save_project, save_project_keeping, st_body_files, text_body_files,
 };
 pub use gvl::GlobalVarList;
 pub use history::{History, Transaction};

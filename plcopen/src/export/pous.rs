@@ -76,7 +76,7 @@ impl ProjectWriter<'_> {
         let mut accessor_texts = Vec::new();
         for property in &pou.properties {
             for (accessor, key) in [(&property.get, "get"), (&property.set, "set")] {
-                if let Some(text) = accessor.as_ref().and_then(|a| a.body.st_text()) {
+                if let Some(text) = accessor.as_ref().and_then(|a| a.body.text()) {
                     accessor_texts.push((format!("{}.{key}", property.name), text));
                 }
             }

@@ -63,4 +63,12 @@ pub enum ImportErrorKind {
     /// An LD or FBD body Rivet cannot turn into networks (`docs/plcopen-xml.md` §3.6).
     #[error("{0}")]
     Network(#[from] super::network_error::NetworkError),
+    /// An SFC body that Rivet's structured chart cannot hold, or that is incomplete (no initial
+    /// step, a transition leading nowhere); the message names the element.
+    #[error("{0}")]
+    BadSfc(String),
+    /// A CFC or FBD graph that cannot become a chart (a wire from an object that is not in the
+    /// body, two wires into one pin); the message names the element.
+    #[error("{0}")]
+    BadCfc(String),
 }

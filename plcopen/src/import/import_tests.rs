@@ -208,7 +208,7 @@ fn a_structure_inside_a_variable_is_refused() {
 }
 
 #[test]
-fn st_actions_convert_and_others_are_reported() {
+fn st_and_il_actions_convert() {
     let types = r#"  <types><dataTypes/><pous><pou name="Fb" pouType="functionBlock"><interface/><actions>
 <action name="Reset"><body><ST><xhtml:p>x := 0;</xhtml:p></ST></body></action>
 <action name="Old"><body><IL><xhtml:p>LD 1</xhtml:p></IL></body></action></actions>
@@ -228,13 +228,13 @@ fn st_actions_convert_and_others_are_reported() {
         .iter()
         .map(|action| action.name.as_str())
         .collect();
-    assert_eq!(actions, ["Reset"]);
+    assert_eq!(actions, ["Reset", "Old"]);
     assert_eq!(block.actions[0].body.st_text(), Some("x := 0;"));
-    let old = imported.report.entry("action 'Fb.Old'");
-    assert!(
-        old.is_some_and(|entry| entry.outcome == Outcome::NotConverted
-            && entry.note.starts_with("its body is IL"))
-    );
+    assert_eq!(block.actions[1].body.text(), Some("LD 1"));
+    assert!(matches!(
+        block.actions[1].body,
+        project_model::Body::Il { .. }
+    ));
     let Some(Object::Gvl(kept)) = imported.project.application.object("Kept") else {
         panic!("{imported:?}")
     };

@@ -1,5 +1,8 @@
 //! The conversion of a [`Document`] into a Rivet project (`docs/plcopen-xml.md` §2 and §3).
 
+mod body_fault;
+mod cfc_chart;
+mod cfc_order;
 mod codesys_attributes;
 mod converter;
 mod data_types;
@@ -13,14 +16,21 @@ mod network_graph;
 mod network_groups;
 mod network_import;
 mod network_series_parallel;
+mod pou_objects;
 mod pous;
 mod report;
+mod rivet_attributes;
 mod rivet_data;
+mod sfc_chart;
+mod sfc_condition;
+mod sfc_step;
 mod tasks;
 mod type_text;
 mod variables;
 mod vendor_places;
 
+#[cfg(test)]
+mod cfc_tests;
 #[cfg(test)]
 pub(crate) mod corpus_tests;
 #[cfg(test)]
@@ -29,6 +39,8 @@ mod import_tests;
 mod network_corpus_tests;
 #[cfg(test)]
 mod network_tests;
+#[cfg(test)]
+mod sfc_tests;
 
 use crate::document::Document;
 use converter::Converter;
@@ -50,10 +62,9 @@ pub struct Imported {
 
 /// Converts `document` into a project; nothing is written anywhere.
 ///
-/// ST, LD and FBD bodies of POUs, actions, transitions and methods are converted (LD and FBD
-/// into networks, §3 of `docs/plcopen-xml.md`); CFC, SFC and IL bodies, and FBD graphs that are
-/// not networks, are listed in the report as not converted (a later part of issue 18 converts
-/// them).
+/// ST and IL bodies keep their text; LD and FBD bodies become networks (§3 of
+/// `docs/plcopen-xml.md`, an FBD graph that is not a set of networks a CFC chart), SFC bodies
+/// charts and CFC bodies (CODESYS's, and FBD bodies Rivet marked as CFC) charts (§4).
 pub fn import(document: &Document) -> Result<Imported, ImportError> {
     let mut converter = Converter::new(document);
     converter.project.name = document.content_header.name.clone();

@@ -77,9 +77,9 @@ fn language_test_reads_instance_outputs_wired_to_several_boxes_as_variables() {
         ]
     );
     // SUB's result, not its ENO, feeds the next box: a graph for a CFC chart.
-    let tempo = imported.report.entry("POU 'TEMPO_TEST'");
+    let tempo = imported.report.entry("FBD body of POU 'TEMPO_TEST'");
     assert!(
-        tempo.is_some_and(|entry| entry.outcome == Outcome::NotConverted
+        tempo.is_some_and(|entry| entry.outcome == Outcome::Converted
             && entry
                 .note
                 .contains("the output OUT of the function SUB drives another element")),
@@ -114,7 +114,7 @@ fn matiec_string_tests_convert_and_a_function_read_twice_is_left_for_a_chart() {
         rendered(networks(&imported, "TEST_FROM_STRINGS"))[0],
         "-> {TESTNR -> NEXT_TEST}, {0 LIMIT(MN; IN=TESTNR; MX=3) -> {MUX(K; IN0=IN1 LEN(IN); IN1=IN1 EQ(IN1; IN2=IN2); IN2=IN2 EQ(IN1; IN2=IN2); IN3=IN1 FIND(IN1; IN2=IN2)) -> INTRES}, {MUX(K; IN0='LEN'; IN1='EQ(IN1,IN2)'; IN2='EQ(IN2,IN2)'; IN3='FIND') -> TEST_NAME}}"
     );
-    let entry = imported.report.entry("POU 'TEST_TO_STRINGS'");
+    let entry = imported.report.entry("FBD body of POU 'TEST_TO_STRINGS'");
     assert!(
         entry.is_some_and(|entry| entry
             .note

@@ -429,11 +429,15 @@ fn a_feedback_loop_is_not_a_network_and_is_reported() {
 </inputVariables><inOutVariables/><outputVariables><variable formalParameter="OUT"><connectionPointOut/></variable></outputVariables></block>
 <outVariable localId="3"><position x="200" y="0"/><connectionPointIn><connection refLocalId="2" formalParameter="OUT"/></connectionPointIn><expression>y</expression></outVariable>"#;
     let imported = imported(&document("FBD", objects, ""));
-    assert!(imported.project.application.object("P").is_none());
-    let entry = imported.report.entry("POU 'P'");
+    // A CFC chart runs the loop as drawn, and the report says why the body became one.
+    assert!(matches!(
+        imported.project.application.object("P"),
+        Some(Object::Pou(pou)) if matches!(pou.body, Body::Cfc { .. })
+    ));
+    let entry = imported.report.entry("FBD body of POU 'P'");
     assert!(
-        entry.is_some_and(|entry| entry.outcome == Outcome::NotConverted
-            && entry.note.contains("not a set of networks")
+        entry.is_some_and(|entry| entry.outcome == Outcome::Converted
+            && entry.note.contains("imported as a CFC chart")
             && entry.note.contains("feedback loop")),
         "{entry:?}"
     );
@@ -453,9 +457,10 @@ fn a_function_result_read_by_two_inputs_is_not_a_network() {
 <outVariable localId="5"><position x="300" y="0"/><connectionPointIn><connection refLocalId="3" formalParameter="OUT"/></connectionPointIn><expression>y</expression></outVariable>
 <outVariable localId="6"><position x="200" y="60"/><connectionPointIn><connection refLocalId="2" formalParameter="OUT"/></connectionPointIn><expression>z</expression></outVariable>"#;
     let imported = imported(&document("FBD", objects, ""));
-    let entry = imported.report.entry("POU 'P'");
+    let entry = imported.report.entry("FBD body of POU 'P'");
     assert!(
-        entry.is_some_and(|entry| entry.note.contains("drives more than one input")),
+        entry.is_some_and(|entry| entry.note.contains("imported as a CFC chart")
+            && entry.note.contains("drives more than one input")),
         "{entry:?}"
     );
 }

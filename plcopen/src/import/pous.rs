@@ -2,29 +2,30 @@
 
 use project_model::{Body, Method, Object, PouAction, PouKind};
 
+use super::body_fault::BodyFault;
+use super::cfc_chart::{CfcDialect, fbd_graph_to_cfc};
 use super::converter::{Converter, Place, comment, is_rivet_entry};
 use super::error::{ImportError, ImportErrorKind};
 use super::network_import::NetworkOutcome;
+use super::pou_objects::PouObjects;
 use super::report::Outcome;
+use super::rivet_attributes::rivet_attributes;
+use super::sfc_chart::SfcChartBuilder;
 use super::type_text::type_text;
 use crate::body::{Body as XmlBody, BodyContent};
 use crate::interface::Interface;
 use crate::pou::{Pou, PouLocation, PouType};
 
-/// Why a body is not converted by this part of the import.
-const LATER: &str = "CFC, SFC and IL bodies are converted by a later part of the import";
-
-/// What became of one body.
-enum BodyOutcome {
-    /// The Rivet body.
-    Converted(Body),
-    /// Not converted, for the reason given (the report's note).
-    NotConverted(String),
+/// Whether an FBD body carries Rivet's marker of a CFC chart (the `…/language` entry holding
+/// `<language name="CFC"/>`).
+fn is_rivet_cfc(body: &XmlBody) -> bool {
+    rivet_attributes(&body.add_data, "language")
+        .is_some_and(|attributes| attributes.get("name").is_some_and(|name| name == "CFC"))
 }
 
 /// The language of a body as the report names it (CODESYS CFC stands beside an empty ST).
 fn language(body: &XmlBody) -> &'static str {
-    if body.cfc.is_some() {
+    if body.cfc.is_some() || is_rivet_cfc(body) {
         "CFC"
     } else {
         body.content.language()
@@ -40,32 +41,6 @@ fn st_text(body: &XmlBody) -> Option<String> {
 }
 
 impl Converter<'_> {
-    /// The Rivet body of `body`, or the reason it is not converted; `place` is the element that
-    /// holds the body and `what` names it in the report.
-    fn body(
-        &mut self,
-        body: &XmlBody,
-        place: &Place,
-        what: &str,
-    ) -> Result<BodyOutcome, ImportError> {
-        if let Some(text) = st_text(body) {
-            return Ok(BodyOutcome::Converted(Body::St { text }));
-        }
-        Ok(match self.networks(body, place, what)? {
-            Some(NetworkOutcome::Networks(networks)) => {
-                BodyOutcome::Converted(match body.content {
-                    BodyContent::Ld(_) => Body::Ld { networks },
-                    _ => Body::Fbd { networks },
-                })
-            }
-            Some(NetworkOutcome::NotANetwork { reason }) => BodyOutcome::NotConverted(format!(
-                "its {} body is not a set of networks: {reason}",
-                language(body)
-            )),
-            None => BodyOutcome::NotConverted(format!("its body is {}; {LATER}", language(body))),
-        })
-    }
-
     /// Converts every POU whose body is ST (or that has none), in document order.
     pub fn pous(&mut self) -> Result<(), ImportError> {
         for pou in &self.document.pous {
@@ -94,11 +69,25 @@ impl Converter<'_> {
             return Ok(());
         }
         let what = format!("POU '{}'", pou.name);
+        let mut synthesized = PouObjects::new(
+            pou.interface
+                .iter()
+                .flat_map(|interface| &interface.var_lists)
+                .flat_map(|list| &list.variables)
+                .map(|variable| variable.name.as_str())
+                .chain(pou.actions.iter().map(|action| action.name.as_str()))
+                .chain(
+                    pou.transitions
+                        .iter()
+                        .map(|transition| transition.name.as_str()),
+                )
+                .chain(pou.methods.iter().map(|method| method.name.as_str())),
+        );
         let body = match pou.bodies.first() {
             None => Body::None,
-            Some(first) => match self.body(first, &place, &what)? {
-                BodyOutcome::Converted(body) => body,
-                BodyOutcome::NotConverted(note) => {
+            Some(first) => match self.body(first, &place, &what, &mut synthesized)? {
+                Ok(body) => body,
+                Err(note) => {
                     self.report
                         .push(Outcome::NotConverted, what, &place.path, place.line, note);
                     return Ok(());
@@ -146,8 +135,8 @@ impl Converter<'_> {
                 column: 1,
             };
             let what = format!("action '{}.{}'", pou.name, action.name);
-            match self.body(&action.body, &action_place, &what)? {
-                BodyOutcome::Converted(body) => {
+            match self.body(&action.body, &action_place, &what, &mut synthesized)? {
+                Ok(body) => {
                     converted.actions.push(PouAction {
                         name: action.name.clone(),
                         body,
@@ -160,7 +149,7 @@ impl Converter<'_> {
                         "",
                     );
                 }
-                BodyOutcome::NotConverted(note) => self.report.push(
+                Err(note) => self.report.push(
                     Outcome::NotConverted,
                     what,
                     &action_path,
@@ -181,8 +170,8 @@ impl Converter<'_> {
                 column: 1,
             };
             let what = format!("transition '{}.{}'", pou.name, transition.name);
-            match self.body(&transition.body, &transition_place, &what)? {
-                BodyOutcome::Converted(body) => {
+            match self.body(&transition.body, &transition_place, &what, &mut synthesized)? {
+                Ok(body) => {
                     converted.transitions.push(PouAction {
                         name: transition.name.clone(),
                         body,
@@ -195,7 +184,7 @@ impl Converter<'_> {
                         "",
                     );
                 }
-                BodyOutcome::NotConverted(note) => self.report.push(
+                Err(note) => self.report.push(
                     Outcome::NotConverted,
                     what,
                     &transition_path,
@@ -221,9 +210,9 @@ impl Converter<'_> {
             };
             let body = match method.bodies.first() {
                 None => Body::None,
-                Some(first) => match self.body(first, &method_place, &what)? {
-                    BodyOutcome::Converted(body) => body,
-                    BodyOutcome::NotConverted(note) => {
+                Some(first) => match self.body(first, &method_place, &what, &mut synthesized)? {
+                    Ok(body) => body,
+                    Err(note) => {
                         self.report.push(
                             Outcome::NotConverted,
                             what,
@@ -256,6 +245,7 @@ impl Converter<'_> {
         for body in &pou.bodies {
             self.opaque(&body.add_data, &format!("{}/body", place.path), body.line);
         }
+        self.synthesized(&pou.name, &place, synthesized, &mut converted);
         self.add_object("POU", Object::Pou(converted), &place)?;
         self.report.push(
             Outcome::Converted,
@@ -271,6 +261,180 @@ impl Converter<'_> {
             }
         }
         Ok(())
+    }
+
+    /// The body of the element at `holder` (named `what` in the report) converted, or why it
+    /// is not (a full sentence for the report). SFC and CFC bodies add their inline actions and
+    /// conditions to `synthesized`; an FBD graph that is not a set of networks becomes a CFC
+    /// chart (§3.6).
+    fn body(
+        &mut self,
+        body: &XmlBody,
+        holder: &Place,
+        what: &str,
+        synthesized: &mut PouObjects,
+    ) -> Result<Result<Body, String>, ImportError> {
+        if let Some(text) = st_text(body) {
+            return Ok(Ok(Body::St { text }));
+        }
+        if let BodyContent::Il(text) = &body.content {
+            return Ok(Ok(Body::Il {
+                text: text.text.clone(),
+            }));
+        }
+        let body_path = format!("{}/body", holder.path);
+        let path = body_path.as_str();
+        let mut fallback_note = None;
+        if !is_rivet_cfc(body) {
+            match self.networks(body, holder, what)? {
+                Some(NetworkOutcome::Networks(networks)) => {
+                    return Ok(Ok(match body.content {
+                        BodyContent::Ld(_) => Body::Ld { networks },
+                        _ => Body::Fbd { networks },
+                    }));
+                }
+                Some(NetworkOutcome::NotANetwork { reason }) => {
+                    if !matches!(body.content, BodyContent::Fbd(_)) {
+                        return Ok(Err(format!(
+                            "its {} body is not a set of networks: {reason}",
+                            language(body)
+                        )));
+                    }
+                    fallback_note = Some(reason);
+                }
+                None => {}
+            }
+        }
+        let cfc_entry = body
+            .add_data
+            .entry_ending_with("/cfc")
+            .map_or("", |entry| entry.name.as_str());
+        // Where the body's objects stand, for errors and the report.
+        let objects_path = match &body.cfc {
+            Some(_) => format!("{path}/addData/data[@name='{cfc_entry}']/CFC"),
+            None => format!("{path}/{}", body.content.language()),
+        };
+        let converted = match (&body.cfc, &body.content) {
+            (Some(objects), _) => {
+                fbd_graph_to_cfc(objects, CfcDialect::Codesys, &objects_path, body.line)
+                    .map(|chart| Body::Cfc { chart })
+            }
+            (None, BodyContent::Sfc(objects)) => {
+                let builder = SfcChartBuilder::new(objects, &objects_path, body.line, synthesized);
+                builder.chart_on_own_stack().map(|(chart, entries)| {
+                    self.report.entries.extend(entries);
+                    Body::Sfc { chart }
+                })
+            }
+            (None, BodyContent::Fbd(objects)) if is_rivet_cfc(body) => {
+                fbd_graph_to_cfc(objects, CfcDialect::Rivet, &objects_path, body.line)
+                    .map(|chart| Body::Cfc { chart })
+            }
+            // An FBD graph with feedback or fan-out: a CFC chart runs it as drawn.
+            (None, BodyContent::Fbd(objects)) => {
+                fbd_graph_to_cfc(objects, CfcDialect::Beremiz, &objects_path, body.line)
+                    .map(|chart| Body::Cfc { chart })
+            }
+            _ => {
+                return Ok(Err(format!(
+                    "its body is {}, which Rivet does not convert",
+                    language(body)
+                )));
+            }
+        };
+        if let (Ok(_), Some(reason)) = (&converted, &fallback_note) {
+            self.report.push(
+                Outcome::Converted,
+                format!("FBD body of {what}"),
+                path,
+                body.line,
+                format!("imported as a CFC chart, because the FBD graph is not a set of networks: {reason}"),
+            );
+        }
+        let objects = body.cfc.as_deref().unwrap_or(body.content.objects());
+        match converted {
+            Ok(converted) => {
+                self.opaque_objects(objects, &objects_path);
+                Ok(Ok(converted))
+            }
+            Err(BodyFault::NotConverted(reason)) => {
+                Ok(Err(format!("its body is {}: {reason}", language(body))))
+            }
+            Err(BodyFault::Error(place, kind)) => Err(self.error(&place, kind)),
+        }
+    }
+
+    /// Reports the `addData` entries of the objects of a converted body (CODESYS's
+    /// `sfc/element`, `cfccalltype`…) as not converted: the body's objects are renumbered and
+    /// rebuilt, so their entries have no element to go back to (CODESYS's CFC keeps them inside
+    /// its `…/cfc` entry, which is kept). Rivet's own entries were read into the chart.
+    fn opaque_objects(&mut self, objects: &[crate::BodyObject], path: &str) {
+        for object in objects {
+            for entry in &object.add_data.entries {
+                if is_rivet_entry(&entry.name) {
+                    continue;
+                }
+                self.report.push(
+                    Outcome::NotConverted,
+                    format!("addData '{}'", entry.name),
+                    &format!(
+                        "{path}/{}[@localId='{}']/addData/data[@name='{}']",
+                        object.kind.element_name(),
+                        object.local_id,
+                        entry.name
+                    ),
+                    object.line,
+                    "the data of one object of a converted body: Rivet rebuilds the body's objects, so it has no element to go back to",
+                );
+            }
+        }
+    }
+
+    /// Adds the actions and transition objects synthesized from inline bodies to the POU, and
+    /// reports each (and each name changed because it was taken).
+    fn synthesized(
+        &mut self,
+        pou: &str,
+        place: &Place,
+        synthesized: PouObjects,
+        converted: &mut project_model::Pou,
+    ) {
+        for (kind, objects, note) in [
+            (
+                "action",
+                synthesized.actions,
+                "made of an inline action body of an SFC step",
+            ),
+            (
+                "transition",
+                synthesized.transitions,
+                "made of a transition's inline or wired condition",
+            ),
+        ] {
+            for object in objects {
+                self.report.push(
+                    Outcome::Converted,
+                    format!("{kind} '{pou}.{}'", object.name),
+                    &place.path,
+                    place.line,
+                    note,
+                );
+                if kind == "action" {
+                    converted.actions.push(object);
+                } else {
+                    converted.transitions.push(object);
+                }
+            }
+        }
+        for renamed in synthesized.renamed {
+            self.report.push(
+                Outcome::Converted,
+                format!("POU '{pou}'"),
+                &place.path,
+                place.line,
+                renamed,
+            );
+        }
     }
 
     /// The declarations and return type of an interface.

@@ -17,17 +17,18 @@ use crate::rivet_data::{
     parse_object_entry, parse_project_entry, parse_vendor_entry,
 };
 
-/// The ST text of a body written in ST.
-fn st_text(body: &XmlBody) -> Option<&str> {
+/// The text of a body written in ST or IL.
+fn written_text(body: &XmlBody) -> Option<&str> {
     match &body.content {
-        BodyContent::St(text) if body.cfc.is_none() => Some(&text.text),
+        BodyContent::St(text) | BodyContent::Il(text) if body.cfc.is_none() => Some(&text.text),
         _ => None,
     }
 }
 
-/// Puts `text` into `body` when it is an ST body (whose text the object's file leaves out).
-fn fill_st(body: &mut Body, text: Option<&str>) {
-    if let (Some(slot), Some(text)) = (body.st_text_mut(), text) {
+/// Puts `text` into `body` when it is an ST or IL body (whose text the object's file leaves
+/// out).
+fn fill_text(body: &mut Body, text: Option<&str>) {
+    if let (Some(slot), Some(text)) = (body.text_mut(), text) {
         text.clone_into(slot);
     }
 }
@@ -102,22 +103,25 @@ impl Converter<'_> {
         };
         let mut restored: project_model::Pou = self.rivet_toml(&entry, place)?;
         restored.name = pou.name.clone();
-        fill_st(&mut restored.body, pou.bodies.first().and_then(st_text));
+        fill_text(
+            &mut restored.body,
+            pou.bodies.first().and_then(written_text),
+        );
         for action in &mut restored.actions {
             let text = pou
                 .actions
                 .iter()
                 .find(|written| written.name == action.name)
-                .and_then(|written| st_text(&written.body));
-            fill_st(&mut action.body, text);
+                .and_then(|written| written_text(&written.body));
+            fill_text(&mut action.body, text);
         }
         for transition in &mut restored.transitions {
             let text = pou
                 .transitions
                 .iter()
                 .find(|written| written.name == transition.name)
-                .and_then(|written| st_text(&written.body));
-            fill_st(&mut transition.body, text);
+                .and_then(|written| written_text(&written.body));
+            fill_text(&mut transition.body, text);
         }
         for method in &mut restored.methods {
             let text = pou
@@ -125,8 +129,8 @@ impl Converter<'_> {
                 .iter()
                 .find(|written| written.name == method.name)
                 .and_then(|written| written.bodies.first())
-                .and_then(st_text);
-            fill_st(&mut method.body, text);
+                .and_then(written_text);
+            fill_text(&mut method.body, text);
         }
         for property in &mut restored.properties {
             for (accessor, key) in [(&mut property.get, "get"), (&mut property.set, "set")] {
@@ -137,7 +141,7 @@ impl Converter<'_> {
                     .find(|(written, _)| *written == key)
                     .map(|(_, text)| text.as_str());
                 if let Some(accessor) = accessor {
-                    fill_st(&mut accessor.body, text);
+                    fill_text(&mut accessor.body, text);
                 }
             }
         }

@@ -1,0 +1,252 @@
+//! The execution order of a chart built from a graph (docs/plcopen-xml.md §4.6): the
+//! document's `executionOrderId`s where it has them, else Beremiz's rule.
+
+use std::cmp::Reverse;
+use std::collections::{BTreeSet, BinaryHeap, HashMap, HashSet};
+
+use project_model::{CfcElement, CfcElementKind, ElementId, Wire};
+
+use super::cfc_chart::CfcDialect;
+
+/// One element of a chart in the making, with the order the document gave it.
+#[derive(Clone, Debug)]
+pub(super) struct OrderedElement {
+    /// The element.
+    pub element: CfcElement,
+    /// The object's `executionOrderId` (`None` and `Some(0)` both mean "none").
+    pub execution_order_id: Option<u64>,
+}
+
+/// The executable elements of `elements` (in document order) in the order they run.
+///
+/// Rivet's own export numbers every executable element: those numbers are the order, exactly
+/// (the elements without one follow in document order). Beremiz's files have 0 everywhere:
+/// Beremiz's generator's order ([`by_data_flow`]), unless some number is above 0, which is then
+/// kept as Rivet's. CODESYS's numbers rank the elements among those whose inputs are ready
+/// ([`by_rank_and_flow`]).
+pub(super) fn execution_order(
+    elements: &[OrderedElement],
+    wires: &[Wire],
+    dialect: CfcDialect,
+) -> Vec<ElementId> {
+    let executable: Vec<&OrderedElement> = elements
+        .iter()
+        .filter(|placed| placed.element.kind.is_executable())
+        .collect();
+    let numbered = |placed: &&OrderedElement| placed.execution_order_id.is_some_and(|id| id > 0);
+    match dialect {
+        CfcDialect::Codesys => return by_rank_and_flow(elements, wires),
+        CfcDialect::Beremiz if !executable.iter().any(numbered) => {
+            return by_data_flow(elements, wires);
+        }
+        CfcDialect::Beremiz | CfcDialect::Rivet => {}
+    }
+    let mut first: Vec<&OrderedElement> = executable.iter().copied().filter(numbered).collect();
+    // A stable sort keeps the document order among equal numbers.
+    first.sort_by_key(|placed| placed.execution_order_id);
+    let rest = executable
+        .iter()
+        .copied()
+        .filter(|placed| !numbered(placed));
+    first
+        .into_iter()
+        .chain(rest)
+        .map(|placed| placed.element.id)
+        .collect()
+}
+
+/// The executable elements whose values each executable element reads directly: back through
+/// its wires, past inputs' none, from a sink to the sources of its name and past a source to
+/// what drives it.
+fn executable_drivers(
+    elements: &[OrderedElement],
+    wires: &[Wire],
+) -> HashMap<ElementId, BTreeSet<ElementId>> {
+    let by_id: HashMap<ElementId, &CfcElement> = elements
+        .iter()
+        .map(|placed| (placed.element.id, &placed.element))
+        .collect();
+    let mut wired: HashMap<ElementId, Vec<ElementId>> = HashMap::new();
+    for wire in wires {
+        wired
+            .entry(wire.to.element)
+            .or_default()
+            .push(wire.from.element);
+    }
+    let mut sources: HashMap<String, Vec<ElementId>> = HashMap::new();
+    for placed in elements {
+        if let CfcElementKind::ConnectionSource { name } = &placed.element.kind {
+            sources
+                .entry(name.to_lowercase())
+                .or_default()
+                .push(placed.element.id);
+        }
+    }
+    let mut drivers = HashMap::new();
+    for placed in elements {
+        if !placed.element.kind.is_executable() {
+            continue;
+        }
+        let mut found = BTreeSet::new();
+        let mut seen = HashSet::new();
+        let mut stack: Vec<ElementId> = wired.get(&placed.element.id).cloned().unwrap_or_default();
+        while let Some(id) = stack.pop() {
+            if !seen.insert(id) {
+                continue;
+            }
+            match by_id.get(&id).map(|element| &element.kind) {
+                Some(kind) if kind.is_executable() => {
+                    found.insert(id);
+                }
+                Some(CfcElementKind::ConnectionSink { name }) => {
+                    stack.extend(sources.get(&name.to_lowercase()).into_iter().flatten());
+                }
+                Some(CfcElementKind::ConnectionSource { .. }) => {
+                    stack.extend(wired.get(&id).into_iter().flatten());
+                }
+                _ => {}
+            }
+        }
+        found.remove(&placed.element.id);
+        drivers.insert(placed.element.id, found);
+    }
+    drivers
+}
+
+/// Data flow first, the document's numbers among the elements it leaves free: an element runs
+/// once every executable element it reads has run, and of those ready the one with the lowest
+/// number (then the first in the document) runs next. In a feedback loop nothing is ready: the
+/// lowest-ranked element left runs and reads the others' values of the previous cycle.
+fn by_rank_and_flow(elements: &[OrderedElement], wires: &[Wire]) -> Vec<ElementId> {
+    let drivers = executable_drivers(elements, wires);
+    let rank: HashMap<ElementId, (u64, usize)> = elements
+        .iter()
+        .enumerate()
+        .filter(|(_, placed)| placed.element.kind.is_executable())
+        .map(|(index, placed)| {
+            let number = placed
+                .execution_order_id
+                .filter(|id| *id > 0)
+                .unwrap_or(u64::MAX);
+            (placed.element.id, (number, index))
+        })
+        .collect();
+    let mut waiting: HashMap<ElementId, usize> = HashMap::new();
+    let mut readers: HashMap<ElementId, Vec<ElementId>> = HashMap::new();
+    for (id, from) in &drivers {
+        waiting.insert(*id, from.len());
+        for driver in from {
+            readers.entry(*driver).or_default().push(*id);
+        }
+    }
+    let mut ready: BinaryHeap<Reverse<((u64, usize), ElementId)>> = waiting
+        .iter()
+        .filter(|(_, count)| **count == 0)
+        .map(|(id, _)| Reverse((rank[id], *id)))
+        .collect();
+    let mut order = Vec::new();
+    let mut done: HashSet<ElementId> = HashSet::new();
+    while done.len() < rank.len() {
+        let next = match ready.pop() {
+            Some(Reverse((_, id))) if done.contains(&id) => continue,
+            Some(Reverse((_, id))) => id,
+            // A loop: the lowest-ranked element left breaks it.
+            None => match rank
+                .iter()
+                .filter(|(id, _)| !done.contains(id))
+                .min_by_key(|(_, key)| **key)
+            {
+                Some((id, _)) => *id,
+                None => break,
+            },
+        };
+        done.insert(next);
+        order.push(next);
+        for reader in readers.get(&next).into_iter().flatten() {
+            if let Some(count) = waiting.get_mut(reader) {
+                *count = count.saturating_sub(1);
+                if *count == 0 && !done.contains(reader) {
+                    ready.push(Reverse((rank[reader], *reader)));
+                }
+            }
+        }
+    }
+    order
+}
+
+/// Beremiz's order for a graph without execution order ids.
+fn by_data_flow(elements: &[OrderedElement], wires: &[Wire]) -> Vec<ElementId> {
+    let by_id: HashMap<ElementId, &CfcElement> = elements
+        .iter()
+        .map(|placed| (placed.element.id, &placed.element))
+        .collect();
+    let mut drivers: HashMap<ElementId, Vec<ElementId>> = HashMap::new();
+    for wire in wires {
+        drivers
+            .entry(wire.to.element)
+            .or_default()
+            .push(wire.from.element);
+    }
+    let mut sources: HashMap<String, Vec<ElementId>> = HashMap::new();
+    for placed in elements {
+        if let CfcElementKind::ConnectionSource { name } = &placed.element.kind {
+            sources
+                .entry(name.to_lowercase())
+                .or_default()
+                .push(placed.element.id);
+        }
+    }
+    let mut roots: Vec<(bool, i32, i32, usize, ElementId)> = elements
+        .iter()
+        .enumerate()
+        .filter(|(_, placed)| placed.element.kind.is_executable())
+        .map(|(index, placed)| {
+            let writes = matches!(
+                placed.element.kind,
+                CfcElementKind::Output { .. }
+                    | CfcElementKind::Jump { .. }
+                    | CfcElementKind::Return
+            );
+            (
+                !writes,
+                placed.element.y,
+                placed.element.x,
+                index,
+                placed.element.id,
+            )
+        })
+        .collect();
+    roots.sort();
+    let mut visited: HashSet<ElementId> = HashSet::new();
+    let mut order = Vec::new();
+    for (_, _, _, _, root) in roots {
+        // An explicit stack, so a long chain cannot overflow the thread's stack.
+        let mut stack = vec![(root, false)];
+        while let Some((id, expanded)) = stack.pop() {
+            if expanded {
+                if by_id
+                    .get(&id)
+                    .is_some_and(|element| element.kind.is_executable())
+                {
+                    order.push(id);
+                }
+                continue;
+            }
+            if !visited.insert(id) {
+                continue;
+            }
+            stack.push((id, true));
+            let mut before: Vec<ElementId> = drivers.get(&id).cloned().unwrap_or_default();
+            if let Some(CfcElementKind::ConnectionSink { name }) = by_id.get(&id).map(|e| &e.kind) {
+                before.extend(sources.get(&name.to_lowercase()).into_iter().flatten());
+            }
+            // Pushed in reverse, so the first driver is visited (and numbered) first.
+            for driver in before.into_iter().rev() {
+                if !visited.contains(&driver) {
+                    stack.push((driver, false));
+                }
+            }
+        }
+    }
+    order
+}

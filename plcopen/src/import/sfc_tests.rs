@@ -1,0 +1,590 @@
+//! The SFC import (docs/plcopen-xml.md §4.1–4.4) on small documents and on the corpus.
+
+use project_model::{ActionQualifier, Body, Object, Pou, SfcChart, SfcNode};
+
+use super::{ImportErrorKind, Imported, Outcome, import};
+use crate::read;
+use crate::reader::corpus_tests::read_corpus;
+
+/// A v2.01 document with one function block `Seq` whose SFC body holds `objects`, and the
+/// actions and transitions `extra` (in the POU's `actions`/`transitions` elements).
+fn document(objects: &str, extra: &str) -> String {
+    format!(
+        r#"<?xml version="1.0" encoding="UTF-8"?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0201" xmlns:xhtml="http://www.w3.org/1999/xhtml">
+  <fileHeader companyName="c" productName="p" productVersion="1" creationDateTime="2024-01-01T00:00:00"/>
+  <contentHeader name="n"><coordinateInfo><fbd><scaling x="0" y="0"/></fbd><ld><scaling x="0" y="0"/></ld><sfc><scaling x="0" y="0"/></sfc></coordinateInfo></contentHeader>
+  <types><dataTypes/><pous>
+    <pou name="Seq" pouType="functionBlock">
+      <interface><localVars><variable name="go"><type><BOOL/></type></variable><variable name="A_INLINE1"><type><BOOL/></type></variable></localVars></interface>
+      {extra}
+      <body><SFC>
+{objects}
+      </SFC></body>
+    </pou>
+  </pous></types>
+  <instances><configurations/></instances>
+</project>
+"#
+    )
+}
+
+fn step(id: u64, name: &str, initial: bool, from: Option<u64>) -> String {
+    let input = from.map_or(String::new(), |from| {
+        format!(r#"<connectionPointIn><connection refLocalId="{from}"/></connectionPointIn>"#)
+    });
+    format!(
+        r#"<step localId="{id}" name="{name}" initialStep="{initial}">{input}<connectionPointOut/><connectionPointOutAction/></step>"#
+    )
+}
+
+fn transition(id: u64, from: u64, condition: &str) -> String {
+    format!(
+        r#"<transition localId="{id}"><connectionPointIn><connection refLocalId="{from}"/></connectionPointIn><connectionPointOut/><condition>{condition}</condition></transition>"#
+    )
+}
+
+fn inline_st(text: &str) -> String {
+    format!(r#"<inline name=""><ST><xhtml:p><![CDATA[{text}]]></xhtml:p></ST></inline>"#)
+}
+
+fn jump(id: u64, from: u64, target: &str) -> String {
+    format!(
+        r#"<jumpStep localId="{id}" targetName="{target}"><connectionPointIn><connection refLocalId="{from}"/></connectionPointIn></jumpStep>"#
+    )
+}
+
+fn imported(text: &str) -> Imported {
+    let document = read(text, "in.xml").unwrap_or_else(|error| panic!("{error}"));
+    import(&document).unwrap_or_else(|error| panic!("{error}"))
+}
+
+fn pou<'i>(imported: &'i Imported, name: &str) -> &'i Pou {
+    match imported.project.application.object(name) {
+        Some(Object::Pou(pou)) => pou,
+        other => panic!("no POU {name}: {other:?}\n{:#?}", imported.report),
+    }
+}
+
+fn chart(pou: &Pou) -> &SfcChart {
+    match &pou.body {
+        Body::Sfc { chart } => chart,
+        other => panic!("not SFC: {other:?}"),
+    }
+}
+
+fn error(text: &str) -> super::ImportError {
+    let document = read(text, "bad.xml").unwrap_or_else(|error| panic!("{error}"));
+    match import(&document) {
+        Ok(imported) => panic!("imported: {imported:?}"),
+        Err(error) => error,
+    }
+}
+
+/// The chart as a compact outline: `S:Name`, `T:condition`, `J:target`, `A[..|..]`, `P[..|..]`.
+fn outline(nodes: &[SfcNode]) -> String {
+    nodes
+        .iter()
+        .map(|node| match node {
+            SfcNode::Step(step) => format!("S:{}", step.name),
+            SfcNode::Transition(transition) => format!("T:{}", transition.condition),
+            SfcNode::Jump(jump) => format!("J:{}", jump.target),
+            SfcNode::Alternative(branches) | SfcNode::Parallel(branches) => {
+                let inner: Vec<String> = branches
+                    .branches
+                    .iter()
+                    .map(|branch| outline(&branch.nodes))
+                    .collect();
+                let letter = if matches!(node, SfcNode::Alternative(_)) {
+                    "A"
+                } else {
+                    "P"
+                };
+                format!("{letter}[{}]", inner.join(" | "))
+            }
+            SfcNode::Macro(macro_step) => {
+                format!("M:{}({})", macro_step.name, outline(&macro_step.body))
+            }
+        })
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+#[test]
+fn first_steps_counter_sfc_becomes_a_structured_chart_with_inline_actions() {
+    let imported = import(&read_corpus("plcopen/beremiz/exemples/first_steps/plc.xml"))
+        .unwrap_or_else(|error| panic!("{error}"));
+    let counter = pou(&imported, "CounterSFC");
+    let chart = chart(counter);
+    // Branches left to right by where their wires leave the divergence (x 70, then 501).
+    assert_eq!(
+        outline(&chart.sequence),
+        "S:Start A[T:NOT Reset S:Count T:Reset | T:Reset S:ResetCounter T:NOT Reset] J:Start"
+    );
+    let SfcNode::Alternative(branches) = &chart.sequence[1] else {
+        panic!("{chart:?}")
+    };
+    let SfcNode::Step(count) = &branches.branches[0].nodes[1] else {
+        panic!("{branches:?}")
+    };
+    let actions: Vec<(&str, ActionQualifier)> = count
+        .actions
+        .iter()
+        .map(|association| (association.action.as_str(), association.qualifier))
+        .collect();
+    assert_eq!(
+        actions,
+        [
+            ("Count_INLINE1", ActionQualifier::N),
+            ("Count_INLINE2", ActionQualifier::N)
+        ]
+    );
+    let bodies: Vec<(&str, Option<&str>)> = counter
+        .actions
+        .iter()
+        .map(|action| (action.name.as_str(), action.body.st_text()))
+        .collect();
+    assert_eq!(
+        bodies,
+        [
+            ("Count_INLINE1", Some("Cnt := Cnt + 1;")),
+            ("Count_INLINE2", Some("OUT := Cnt;")),
+            ("ResetCounter_INLINE3", Some("Cnt := ResetCounterValue;")),
+            ("ResetCounter_INLINE4", Some("OUT := Cnt;")),
+        ]
+    );
+    // Element ids are fresh, from 1, in the order the walk meets the elements.
+    assert_eq!(chart.sequence[0].id().0, 1);
+    assert_eq!(chart.sequence[1].id().0, 2);
+    let entry = imported.report.entry("POU 'CounterSFC'");
+    assert_eq!(entry.map(|entry| entry.outcome), Some(Outcome::Converted));
+    assert!(
+        imported
+            .report
+            .entry("action 'CounterSFC.Count_INLINE1'")
+            .is_some()
+    );
+}
+
+#[test]
+fn svghmi_traffic_lights_keep_qualifiers_durations_and_contact_conditions() {
+    let imported = import(&read_corpus(
+        "plcopen/beremiz/tests/projects/svghmi_basic/plc.xml",
+    ))
+    .unwrap_or_else(|error| panic!("{error}"));
+    let sequence = pou(&imported, "traffic_light_sequence");
+    let chart = chart(sequence);
+    let text = outline(&chart.sequence);
+    // Chains of choices whose one branch goes on become alternatives followed by that branch.
+    assert!(text.starts_with("S:Standstill T:"), "{text}");
+    assert!(text.contains("J:Standstill"), "{text}");
+    assert!(project_model::sfc_problems(chart).is_empty());
+    let mut qualifiers = Vec::new();
+    let mut all_steps = Vec::new();
+    collect_steps(&chart.sequence, &mut all_steps);
+    for step in &all_steps {
+        for association in &step.actions {
+            qualifiers.push(association.qualifier);
+            if association.qualifier == ActionQualifier::D {
+                assert!(
+                    association
+                        .duration
+                        .as_deref()
+                        .is_some_and(|time| time.starts_with("T#"))
+                );
+            }
+        }
+    }
+    for expected in [
+        ActionQualifier::D,
+        ActionQualifier::P,
+        ActionQualifier::R,
+        ActionQualifier::S,
+    ] {
+        assert!(qualifiers.contains(&expected), "{qualifiers:?}");
+    }
+    // A condition wired from a negated contact on a left rail is its expression.
+    let mut conditions = Vec::new();
+    collect_conditions(&chart.sequence, &mut conditions);
+    assert!(
+        conditions
+            .iter()
+            .any(|condition| condition.starts_with("NOT ")),
+        "{conditions:?}"
+    );
+    // A condition wired from FBD blocks became a transition object with a CFC body.
+    let wired = sequence
+        .transitions
+        .iter()
+        .find(|transition| transition.name == "GREEN_CONDITION1");
+    assert!(
+        wired.is_some_and(|transition| matches!(transition.body, Body::Cfc { .. })),
+        "{:?}",
+        sequence.transitions
+    );
+    assert!(
+        conditions
+            .iter()
+            .any(|condition| condition == "GREEN_CONDITION1")
+    );
+    // Free comments cannot stand in a chart: each is reported.
+    assert!(
+        imported
+            .report
+            .with_outcome(Outcome::NotConverted)
+            .any(|entry| entry.what.starts_with("comment '"))
+    );
+}
+
+fn collect_steps<'c>(nodes: &'c [SfcNode], steps: &mut Vec<&'c project_model::Step>) {
+    for node in nodes {
+        match node {
+            SfcNode::Step(step) => steps.push(step),
+            SfcNode::Alternative(branches) | SfcNode::Parallel(branches) => {
+                for branch in &branches.branches {
+                    collect_steps(&branch.nodes, steps);
+                }
+            }
+            SfcNode::Macro(macro_step) => collect_steps(&macro_step.body, steps),
+            SfcNode::Transition(_) | SfcNode::Jump(_) => {}
+        }
+    }
+}
+
+fn collect_conditions(nodes: &[SfcNode], conditions: &mut Vec<String>) {
+    for node in nodes {
+        match node {
+            SfcNode::Transition(transition) => conditions.push(transition.condition.clone()),
+            SfcNode::Alternative(branches) | SfcNode::Parallel(branches) => {
+                for branch in &branches.branches {
+                    collect_conditions(&branch.nodes, conditions);
+                }
+            }
+            SfcNode::Macro(macro_step) => collect_conditions(&macro_step.body, conditions),
+            SfcNode::Step(_) | SfcNode::Jump(_) => {}
+        }
+    }
+}
+
+#[test]
+fn matiec_sfc_test_has_simultaneous_branches_inside_an_alternative() {
+    let imported =
+        import(&read_corpus("matiec/tests/SFC_TEST.xml")).unwrap_or_else(|error| panic!("{error}"));
+    let chart = chart(pou(&imported, "MAIN_TEST"));
+    let text = outline(&chart.sequence);
+    assert!(text.starts_with("S:GO T:"), "{text}");
+    assert!(
+        text.contains("P[S:D1 T:"),
+        "the simultaneous divergence opens with D1: {text}"
+    );
+    assert!(text.contains("S:E3] T:"), "and joins after E3: {text}");
+    assert!(text.ends_with("J:STEP2"), "{text}");
+    let SfcNode::Alternative(choice) = chart
+        .sequence
+        .iter()
+        .find(|node| matches!(node, SfcNode::Alternative(_)))
+        .unwrap_or_else(|| panic!("{text}"))
+    else {
+        unreachable!()
+    };
+    assert_eq!(choice.branches.len(), 4, "{text}");
+}
+
+#[test]
+fn a_loop_back_without_a_jump_step_becomes_a_jump_and_statements_a_transition_object() {
+    let objects = [
+        step(1, "Idle", true, Some(4)),
+        transition(2, 1, &inline_st("go")),
+        step(3, "Busy", false, Some(2)),
+        transition(4, 3, &inline_st("T := NOT go;")),
+    ]
+    .join("\n");
+    let imported = imported(&document(&objects, ""));
+    let seq = pou(&imported, "Seq");
+    assert_eq!(
+        outline(&chart(seq).sequence),
+        "S:Idle T:go S:Busy T:Busy_CONDITION1 J:Idle"
+    );
+    let [condition] = seq.transitions.as_slice() else {
+        panic!("{:?}", seq.transitions)
+    };
+    assert_eq!(condition.body.st_text(), Some("T := NOT go;"));
+}
+
+#[test]
+fn references_negation_priorities_and_qualifiers_are_kept() {
+    let objects = [
+        step(1, "A", true, None),
+        r#"<actionBlock localId="9"><connectionPointIn><connection refLocalId="1"/></connectionPointIn>
+             <action localId="0" qualifier="P1"><reference name="Enter"/></action>
+             <action localId="0" qualifier="L" duration="T#2s" indicator="lit"><reference name="go"/></action>
+             <action localId="0" qualifier="DL" duration="T#1s"><reference name="Enter"/></action>
+             <action localId="0"><inline><ST><xhtml:p>go := TRUE;</xhtml:p></ST></inline></action>
+           </actionBlock>"#
+            .to_owned(),
+        r#"<selectionDivergence localId="2"><connectionPointIn><connection refLocalId="1"/></connectionPointIn><connectionPointOut/><connectionPointOut/></selectionDivergence>"#.to_owned(),
+        r#"<transition localId="3" priority="2"><position x="10" y="0"/><connectionPointIn><connection refLocalId="2"/></connectionPointIn><connectionPointOut/><condition negated="true"><reference name="Ready"/></condition></transition>"#.to_owned(),
+        r#"<transition localId="4" priority="1"><position x="90" y="0"/><connectionPointIn><connection refLocalId="2"/></connectionPointIn><connectionPointOut/><condition negated="true"><inline name=""><ST><xhtml:p>go OR go</xhtml:p></ST></inline></condition></transition>"#.to_owned(),
+        jump(5, 3, "A"),
+        jump(6, 4, "A"),
+    ]
+    .join("\n");
+    let extra = r#"<actions><action name="Enter"><body><ST><xhtml:p>;</xhtml:p></ST></body></action></actions><transitions><transition name="Ready"><body><ST><xhtml:p>go</xhtml:p></ST></body></transition></transitions>"#;
+    let imported = imported(&document(&objects, extra));
+    let seq = pou(&imported, "Seq");
+    let chart = chart(seq);
+    assert_eq!(
+        outline(&chart.sequence),
+        "S:A A[T:NOT Ready() J:A | T:NOT (go OR go) J:A]"
+    );
+    let SfcNode::Alternative(branches) = &chart.sequence[1] else {
+        panic!()
+    };
+    let SfcNode::Transition(first) = &branches.branches[0].nodes[0] else {
+        panic!()
+    };
+    assert_eq!(first.priority, Some(2));
+    let SfcNode::Step(step) = &chart.sequence[0] else {
+        panic!()
+    };
+    let associations: Vec<(&str, ActionQualifier, Option<&str>, Option<&str>)> = step
+        .actions
+        .iter()
+        .map(|association| {
+            (
+                association.action.as_str(),
+                association.qualifier,
+                association.duration.as_deref(),
+                association.indicator.as_deref(),
+            )
+        })
+        .collect();
+    // The inline action's name `A_INLINE1` is a variable of the POU: it gets a suffix.
+    assert_eq!(
+        associations,
+        [
+            ("Enter", ActionQualifier::P1, None, None),
+            ("go", ActionQualifier::L, Some("T#2s"), Some("lit")),
+            ("Enter", ActionQualifier::D, Some("T#1s"), None),
+            ("A_INLINE1_2", ActionQualifier::N, None, None),
+        ]
+    );
+    let notes: Vec<&str> = imported
+        .report
+        .entries
+        .iter()
+        .map(|entry| entry.note.as_str())
+        .collect();
+    assert!(notes.iter().any(|note| note.contains("DL")), "{notes:?}");
+    assert!(
+        notes
+            .iter()
+            .any(|note| note.contains("`A_INLINE1` was taken")),
+        "{notes:?}"
+    );
+}
+
+#[test]
+fn a_wired_in_variable_and_rivets_step_data_are_read() {
+    let objects = [
+        r#"<step localId="1" name="Fill" initialStep="true"><connectionPointOut/>
+             <addData><data name="https://rivet-plc.dev/plcopen/1/step" handleUnknown="preserve"><step xmlns="https://rivet-plc.dev/plcopen/1" entryAction="Open" exitAction="Close" minTime="T#1s" maxTime="T#9s" comment="Fills the tank."/></data></addData>
+           </step>"#.to_owned(),
+        r#"<inVariable localId="7"><connectionPointOut/><expression>go AND go</expression></inVariable>"#.to_owned(),
+        r#"<transition localId="2"><connectionPointIn><connection refLocalId="1"/></connectionPointIn><connectionPointOut/><condition><connectionPointIn><connection refLocalId="7"/></connectionPointIn></condition></transition>"#.to_owned(),
+        jump(3, 2, "Fill"),
+    ]
+    .join("\n");
+    let imported = imported(&document(&objects, ""));
+    let chart = chart(pou(&imported, "Seq"));
+    assert_eq!(outline(&chart.sequence), "S:Fill T:go AND go J:Fill");
+    let SfcNode::Step(fill) = &chart.sequence[0] else {
+        panic!()
+    };
+    assert_eq!(fill.entry_action.as_deref(), Some("Open"));
+    assert_eq!(fill.exit_action.as_deref(), Some("Close"));
+    assert_eq!(fill.main_action, None);
+    assert_eq!(fill.min_time.as_deref(), Some("T#1s"));
+    assert_eq!(fill.max_time.as_deref(), Some("T#9s"));
+    assert_eq!(fill.comment, "Fills the tank.");
+}
+
+#[test]
+fn a_last_step_without_successor_stays_active_with_a_false_transition() {
+    let objects = [
+        step(1, "Start", true, None),
+        transition(2, 1, &inline_st("go")),
+        step(3, "Done", false, Some(2)),
+    ]
+    .join("\n");
+    let imported = imported(&document(&objects, ""));
+    assert_eq!(
+        outline(&chart(pou(&imported, "Seq")).sequence),
+        "S:Start T:go S:Done T:FALSE J:Done"
+    );
+}
+
+#[test]
+fn a_macro_step_holds_its_body() {
+    let objects = [
+        step(1, "Start", true, None),
+        transition(2, 1, &inline_st("go")),
+        format!(
+            r#"<macroStep localId="3" name="Inner"><connectionPointIn><connection refLocalId="2"/></connectionPointIn><connectionPointOut/><body><SFC>{}{}{}</SFC></body></macroStep>"#,
+            step(1, "In1", false, None),
+            transition(2, 1, &inline_st("NOT go")),
+            step(3, "In2", false, Some(2)),
+        ),
+        transition(4, 3, &inline_st("TRUE")),
+        jump(5, 4, "Start"),
+    ]
+    .join("\n");
+    let imported = imported(&document(&objects, ""));
+    assert_eq!(
+        outline(&chart(pou(&imported, "Seq")).sequence),
+        "S:Start T:go M:Inner(S:In1 T:NOT go S:In2) T:TRUE J:Start"
+    );
+}
+
+#[test]
+fn a_chart_without_initial_step_or_with_two_is_refused_at_the_element() {
+    let none = error(&document(
+        &[
+            step(1, "A", false, None),
+            transition(2, 1, &inline_st("go")),
+            jump(3, 2, "A"),
+        ]
+        .join("\n"),
+        "",
+    ));
+    assert!(
+        matches!(&*none.kind, ImportErrorKind::BadSfc(message) if message.contains("initialStep"))
+    );
+    assert_eq!(none.path, "project/types/pous/pou[@name='Seq']/body/SFC");
+    let two = error(&document(
+        &[step(1, "A", true, None), step(2, "B", true, None)].join("\n"),
+        "",
+    ));
+    assert!(two.to_string().contains("`A` and `B`"), "{two}");
+    assert!(
+        two.path.ends_with("/SFC/step[@localId='2']"),
+        "{}",
+        two.path
+    );
+}
+
+#[test]
+fn a_transition_leading_nowhere_is_refused_with_its_line() {
+    let text = document(
+        &[step(1, "A", true, None), transition(2, 1, &inline_st("go"))].join("\n"),
+        "",
+    );
+    let refused = error(&text);
+    assert!(
+        refused.path.ends_with("/SFC/transition[@localId='2']"),
+        "{}",
+        refused.path
+    );
+    assert!(refused.to_string().contains("leads nowhere"), "{refused}");
+    assert_eq!(refused.file, "bad.xml");
+    assert!(refused.line > 5);
+}
+
+#[test]
+fn a_convergence_of_branches_of_different_divergences_is_refused() {
+    // Two alternatives whose branches all meet at one convergence.
+    let objects = [
+        step(1, "A", true, None),
+        r#"<selectionDivergence localId="2"><connectionPointIn><connection refLocalId="1"/></connectionPointIn><connectionPointOut/><connectionPointOut/></selectionDivergence>"#.to_owned(),
+        transition(3, 2, &inline_st("go")),
+        transition(4, 2, &inline_st("NOT go")),
+        step(5, "B", false, Some(3)),
+        r#"<selectionDivergence localId="6"><connectionPointIn><connection refLocalId="5"/></connectionPointIn><connectionPointOut/><connectionPointOut/></selectionDivergence>"#.to_owned(),
+        transition(7, 6, &inline_st("go")),
+        transition(8, 6, &inline_st("NOT go")),
+        r#"<selectionConvergence localId="9"><connectionPointIn><connection refLocalId="4"/></connectionPointIn><connectionPointIn><connection refLocalId="7"/></connectionPointIn><connectionPointIn><connection refLocalId="8"/></connectionPointIn><connectionPointOut/></selectionConvergence>"#.to_owned(),
+        step(10, "C", false, Some(9)),
+        transition(11, 10, &inline_st("TRUE")),
+        jump(12, 11, "A"),
+    ]
+    .join("\n");
+    let refused = error(&document(&objects, ""));
+    assert!(
+        refused.path.ends_with("selectionConvergence[@localId='9']"),
+        "{refused}"
+    );
+}
+
+/// A chain of `choices` choices: each step offers `go` to the next step and `stop` back to the
+/// first, drawn as Beremiz draws it (no convergence).
+fn chain_of_choices(choices: u64) -> String {
+    let mut objects = vec![step(1, "S0", true, None)];
+    let mut previous_step = 1;
+    for index in 0..choices {
+        let base = 10 + index * 10;
+        objects.push(format!(
+            r#"<selectionDivergence localId="{base}"><connectionPointIn><connection refLocalId="{previous_step}"/></connectionPointIn><connectionPointOut/><connectionPointOut/></selectionDivergence>"#
+        ));
+        objects.push(transition(base + 1, base, &inline_st("go")));
+        objects.push(transition(base + 2, base, &inline_st("NOT go")));
+        objects.push(jump(base + 3, base + 2, "S0"));
+        objects.push(step(
+            base + 4,
+            &format!("S{}", index + 1),
+            false,
+            Some(base + 1),
+        ));
+        previous_step = base + 4;
+    }
+    objects.push(transition(5, previous_step, &inline_st("TRUE")));
+    objects.push(jump(6, 5, "S0"));
+    objects.join("\n")
+}
+
+#[test]
+fn a_chain_of_choices_becomes_a_flat_sequence_and_a_too_deep_one_an_error() {
+    let imported = imported(&document(&chain_of_choices(100), ""));
+    let chart = chart(pou(&imported, "Seq"));
+    // Step, alternative, step…: the last choice's two branches both end in jumps, so it holds
+    // its step; the 99 before it are followed by theirs.
+    assert_eq!(chart.sequence.len(), 100 * 2);
+    assert!(project_model::sfc_problems(chart).is_empty());
+    let refused = error(&document(&chain_of_choices(1001), ""));
+    assert!(
+        refused.to_string().contains("nest more than 1000"),
+        "{refused}"
+    );
+}
+
+#[test]
+fn an_inline_fbd_action_becomes_a_cfc_action_and_an_inline_ld_one_waits() {
+    let fbd = r#"<inline><FBD>
+        <inVariable localId="1"><position x="10" y="10"/><connectionPointOut/><expression>TRUE</expression></inVariable>
+        <outVariable localId="2"><position x="60" y="10"/><connectionPointIn><connection refLocalId="1"/></connectionPointIn><expression>go</expression></outVariable>
+      </FBD></inline>"#;
+    let objects = [
+        step(1, "A", true, None),
+        format!(
+            r#"<actionBlock localId="9"><connectionPointIn><connection refLocalId="1"/></connectionPointIn><action localId="0">{fbd}</action></actionBlock>"#
+        ),
+        transition(2, 1, &inline_st("go")),
+        jump(3, 2, "A"),
+    ]
+    .join("\n");
+    let converted = imported(&document(&objects, ""));
+    let seq = pou(&converted, "Seq");
+    let [action] = seq.actions.as_slice() else {
+        panic!("{:?}", seq.actions)
+    };
+    assert_eq!(action.name, "A_INLINE1_2");
+    assert!(matches!(&action.body, Body::Cfc { chart } if chart.elements.len() == 2));
+
+    let ld = objects.replace(fbd, r#"<inline><LD/></inline>"#);
+    let waiting = imported(&document(&ld, ""));
+    let entry = waiting.report.entry("POU 'Seq'");
+    assert!(
+        entry.is_some_and(|entry| entry.outcome == Outcome::NotConverted
+            && entry.note.contains("inline action of step `A`")),
+        "{entry:?}"
+    );
+}
