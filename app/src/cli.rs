@@ -87,6 +87,15 @@ pub enum Command {
         #[arg(long, requires = "into")]
         replace: bool,
     },
+    /// Export a project as a PLCopen XML (TC6 v2.01) file that CODESYS, Beremiz and OpenPLC
+    /// read; Rivet's own data goes into `addData`, so importing the file gives the project back.
+    Export {
+        /// The project folder (the folder holding rivet.toml).
+        project: PathBuf,
+        /// The XML file to write.
+        #[arg(short, long)]
+        output: PathBuf,
+    },
     /// Work with a project's cam tables: list them, evaluate one, export its point table.
     Cam {
         /// What to do.
@@ -272,6 +281,7 @@ pub fn run(command: Command) -> ExitCode {
             };
             crate::import_cli::run(&file, &target)
         }
+        Command::Export { project, output } => crate::export_cli::run(&project, &output),
         Command::Cam { action } => crate::cam_cli::run(action),
         Command::Status { target } => online_cli::run(&target, OnlineCommand::Status),
         Command::Download {

@@ -18,6 +18,7 @@ pub mod debug_bodies;
 pub mod debug_cli;
 pub mod debug_places;
 pub mod debug_text;
+mod export_cli;
 mod import_cli;
 mod literal_value;
 pub mod modbus_devices;

@@ -240,3 +240,39 @@ fn into_adds_what_is_new_and_skips_clashes_unless_told_to_replace() {
         text_of(&check.stderr)
     );
 }
+
+#[test]
+fn export_writes_a_file_that_imports_back_into_the_same_project() {
+    let temp = tempfile::tempdir().unwrap();
+    let example = assets::example_project_dir();
+    let xml = temp.path().join("machine.xml");
+    let output = rivet(&["export", path_str(&example), "-o", path_str(&xml)]);
+    assert!(output.status.success(), "{}", text_of(&output.stderr));
+    assert!(text_of(&output.stdout).contains("bytes of PLCopen XML written"));
+    assert!(
+        fs::read_to_string(&xml)
+            .unwrap()
+            .contains("http://www.plcopen.org/xml/tc6_0201")
+    );
+    // No partial file is left beside it.
+    let left: Vec<_> = fs::read_dir(temp.path()).unwrap().collect();
+    assert_eq!(left.len(), 1);
+
+    let back = temp.path().join("back");
+    let file = xml.to_string_lossy().into_owned();
+    let output = rivet(&["import", &file, "-o", path_str(&back)]);
+    assert!(output.status.success(), "{}", text_of(&output.stderr));
+    let original = project_model::load_project(&example).unwrap().project;
+    let imported = project_model::load_project(&back).unwrap().project;
+    assert_eq!(imported.application, original.application);
+    assert_eq!(imported.tasks, original.tasks);
+    assert_eq!(imported.axes, original.axes);
+    assert_eq!(imported.modbus_devices, original.modbus_devices);
+
+    // A project that does not load is an error naming it, and nothing is written.
+    let missing = temp.path().join("missing");
+    let refused = temp.path().join("refused.xml");
+    let output = rivet(&["export", path_str(&missing), "-o", path_str(&refused)]);
+    assert!(!output.status.success());
+    assert!(!refused.exists());
+}
