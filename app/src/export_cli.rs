@@ -26,8 +26,11 @@ pub fn run(project: &Path, output: &Path) -> anyhow::Result<()> {
     temporary_name.push(file_name);
     temporary_name.push(".partial");
     let temporary = output.with_file_name(temporary_name);
-    std::fs::write(&temporary, &xml)
-        .with_context(|| format!("{}: cannot be written", temporary.display()))?;
+    if let Err(error) = std::fs::write(&temporary, &xml) {
+        // A partly written temporary file is ours; removing it leaves the folder as it was.
+        let _ = std::fs::remove_file(&temporary);
+        return Err(error).with_context(|| format!("{}: cannot be written", output.display()));
+    }
     if let Err(error) = std::fs::rename(&temporary, output) {
         // The temporary file is ours; removing it leaves the folder as it was.
         let _ = std::fs::remove_file(&temporary);

@@ -274,5 +274,10 @@ fn export_writes_a_file_that_imports_back_into_the_same_project() {
     let refused = temp.path().join("refused.xml");
     let output = rivet(&["export", path_str(&missing), "-o", path_str(&refused)]);
     assert!(!output.status.success());
+    assert!(
+        text_of(&output.stderr).contains(&*missing.to_string_lossy()),
+        "{}",
+        text_of(&output.stderr)
+    );
     assert!(!refused.exists());
 }

@@ -103,11 +103,11 @@ impl Converter<'_> {
             );
             match &object.kind {
                 ObjectKind::VendorElement(_) if !is_network_title(object) => self.report.push(
-                    Outcome::KeptOpaque,
+                    Outcome::NotConverted,
                     format!("vendorElement of {what}"),
                     &object_path,
                     object.line,
-                    "",
+                    "Rivet's networks have no element of another tool's own",
                 ),
                 ObjectKind::Error(text) => self.report.push(
                     Outcome::NotConverted,

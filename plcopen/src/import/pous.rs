@@ -19,8 +19,9 @@ use crate::pou::{Pou, PouLocation, PouType};
 /// Whether an FBD body carries Rivet's marker of a CFC chart (the `…/language` entry holding
 /// `<language name="CFC"/>`).
 fn is_rivet_cfc(body: &XmlBody) -> bool {
-    rivet_attributes(&body.add_data, "language")
-        .is_some_and(|attributes| attributes.get("name").is_some_and(|name| name == "CFC"))
+    matches!(body.content, BodyContent::Fbd(_))
+        && rivet_attributes(&body.add_data, "language")
+            .is_some_and(|attributes| attributes.get("name").is_some_and(|name| name == "CFC"))
 }
 
 /// The language of a body as the report names it (CODESYS CFC stands beside an empty ST).
@@ -288,6 +289,8 @@ impl Converter<'_> {
         if !is_rivet_cfc(body) {
             match self.networks(body, holder, what)? {
                 Some(NetworkOutcome::Networks(networks)) => {
+                    let objects = body.content.objects();
+                    self.opaque_objects(objects, &format!("{path}/{}", body.content.language()));
                     return Ok(Ok(match body.content {
                         BodyContent::Ld(_) => Body::Ld { networks },
                         _ => Body::Fbd { networks },
@@ -357,9 +360,13 @@ impl Converter<'_> {
                 self.opaque_objects(objects, &objects_path);
                 Ok(Ok(converted))
             }
-            Err(BodyFault::NotConverted(reason)) => {
-                Ok(Err(format!("its body is {}: {reason}", language(body))))
-            }
+            Err(BodyFault::NotConverted(reason)) => Ok(Err(match fallback_note {
+                Some(network_reason) => format!(
+                    "its body is {}: it is not a set of networks ({network_reason}), nor a CFC chart: {reason}",
+                    language(body)
+                ),
+                None => format!("its body is {}: {reason}", language(body)),
+            })),
             Err(BodyFault::Error(place, kind)) => Err(self.error(&place, kind)),
         }
     }

@@ -24,21 +24,30 @@ fn import_errors(relative: &str) -> (usize, Vec<String>) {
 }
 
 /// The Beremiz and matiec POUs that do not check, each for a reason outside the import: the
-/// file of the POU and why.
-const BEREMIZ_AND_MATIEC_POUS_NOT_CHECKING: [(&str, &str); 4] = [
+/// file, the POU and why.
+const BEREMIZ_AND_MATIEC_POUS_NOT_CHECKING: [(&str, &str, &str); 5] = [
     (
+        "iec61131_lang_test",
         "main_test",
         "LOGGER, a block of Beremiz's own runtime library",
     ),
     (
+        "svghmi_basic",
         "main_program",
         "SVGHMI's HMI_BOOL types and python_eval, Beremiz extensions",
     ),
     (
-        "TEST_",
-        "matiec names the string functions' inputs IN, L, P, IN1, IN2 where Rivet follows CODESYS's names",
+        "STD_TEST",
+        "TEST_FROM_STRINGS",
+        "matiec names the string functions' inputs IN, IN1, IN2 where Rivet follows CODESYS's names",
     ),
     (
+        "STD_TEST",
+        "TEST_STRINGS_OPS",
+        "matiec names the string functions' inputs IN, L, P where Rivet follows CODESYS's names",
+    ),
+    (
+        "STD_TEST",
         "MAIN_TEST",
         "matiec's test gives a STRING a real literal as initial value",
     ),
@@ -60,20 +69,28 @@ fn beremiz_and_matiec_files_check_but_for_parts_of_their_own_libraries() {
     ] {
         let (imported, errors) = import_errors(file);
         assert_eq!(imported, objects, "{file}");
+        let pinned: Vec<&str> = BEREMIZ_AND_MATIEC_POUS_NOT_CHECKING
+            .iter()
+            .filter(|(pinned_file, _, _)| file.contains(pinned_file))
+            .map(|(_, pou, _)| *pou)
+            .collect();
+        let failing_pou = |error: &String| {
+            let file = error.strip_prefix("application/").unwrap_or(error.as_str());
+            file.split('.').next().unwrap_or(file).to_owned()
+        };
         let unexplained: Vec<&String> = errors
             .iter()
-            .filter(|error| {
-                let pou = error.strip_prefix("application/").unwrap_or(error.as_str());
-                !BEREMIZ_AND_MATIEC_POUS_NOT_CHECKING
-                    .iter()
-                    .any(|(prefix, _)| pou.starts_with(prefix))
-            })
+            .filter(|error| !pinned.contains(&failing_pou(error).as_str()))
             .collect();
         assert!(unexplained.is_empty(), "{file}: {unexplained:#?}");
+        // Every POU pinned still fails, so the list does not outlive its reasons.
+        for pou in pinned {
+            assert!(
+                errors.iter().any(|error| failing_pou(error) == pou),
+                "{file}: {pou} checks now: unpin it"
+            );
+        }
     }
-    // first_steps checks whole: its five counters, AverageVal and plc_prg (FBD).
-    let (_, errors) = import_errors("plcopen/beremiz/exemples/first_steps/plc.xml");
-    assert!(errors.is_empty(), "{errors:#?}");
 }
 
 /// Beremiz's counters in ST, LD, FBD and IL, run side by side from an ST program that resets them
@@ -150,13 +167,6 @@ fn codesys_st_pous_check_except_for_missing_library_parts() {
         })
         .collect();
     assert!(unexplained.is_empty(), "{unexplained:#?}");
-    // The runner, the functions and the data types did check: only the listed POUs fail.
-    assert!(
-        errors
-            .iter()
-            .all(|error| !error.starts_with("application/speedRunner")),
-        "{errors:#?}"
-    );
 }
 
 /// Removes the objects named in `names` from `folder` and its subfolders.
