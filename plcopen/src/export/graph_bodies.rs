@@ -55,7 +55,10 @@ impl ProjectWriter<'_> {
                 }
                 return self.xml.end("body");
             }
-            Body::None | Body::St { .. } | Body::Il { .. } => {
+            // Textual bodies are written by `body`; a caller that passes one here gets it too.
+            Body::St { text } => return self.text_body("ST", text, place),
+            Body::Il { text } => return self.text_body("IL", text, place),
+            Body::None => {
                 if required {
                     self.xml.start("body", &[])?;
                     self.xml.start("ST", &[])?;

@@ -145,7 +145,7 @@ impl ProjectWriter<'_> {
     }
 
     /// Writes a textual body: `language` is its element (`ST`, `IL`).
-    fn text_body(
+    pub(super) fn text_body(
         &mut self,
         language: &str,
         text: &str,

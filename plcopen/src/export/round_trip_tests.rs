@@ -220,3 +220,29 @@ fn without_rivet_object_entries_every_corpus_project_imports_back_its_objects() 
         assert_eq!(imported.project.vendor_data, project.vendor_data, "{file}");
     }
 }
+
+#[test]
+fn a_body_another_tool_rewrote_in_another_language_wins_over_rivets_entry() {
+    let document = read_corpus("plcopen/beremiz/exemples/first_steps/plc.xml");
+    let project = import(&document).unwrap().project;
+    let xml = String::from_utf8(export(&project).unwrap()).unwrap();
+    // CounterST's body (it has no actions) rewritten in IL, Rivet's object entry left as it was.
+    let pou = xml.find("<pou name=\"CounterST\"").unwrap();
+    let open = pou + xml[pou..].find("<ST>").unwrap();
+    let close = open + xml[open..].find("</ST>").unwrap();
+    let body = &xml[open + "<ST>".len()..close];
+    let il = "<![CDATA[LD Cnt\nADD 1\nST Cnt\nST OUT]]>";
+    let rewritten = format!(
+        "{}<IL><xhtml:p xmlns:xhtml=\"http://www.w3.org/1999/xhtml\">{il}</xhtml:p></IL>{}",
+        &xml[..open],
+        &xml[close + "</ST>".len()..]
+    );
+    assert!(!body.is_empty());
+    let document = read_bytes(rewritten.as_bytes(), "rewritten.xml").unwrap();
+    let imported = import(&document).unwrap();
+    let Some(Object::Pou(counter)) = imported.project.application.object("CounterST") else {
+        panic!("CounterST is not imported")
+    };
+    assert_eq!(counter.body.text(), Some("LD Cnt\nADD 1\nST Cnt\nST OUT"));
+    assert!(matches!(counter.body, project_model::Body::Il { .. }));
+}

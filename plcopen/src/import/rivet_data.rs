@@ -25,6 +25,23 @@ fn written_text(body: &XmlBody) -> Option<&str> {
     }
 }
 
+/// Whether a body restored from Rivet's entry is in the language the document writes for it:
+/// another tool may have rewritten an ST body in IL or as a graph while keeping the entry, and
+/// then the document wins.
+fn same_language(restored: &Body, written: Option<&XmlBody>) -> bool {
+    let written_content = written
+        .filter(|body| body.cfc.is_none())
+        .map(|body| &body.content);
+    match (restored, written_content) {
+        (Body::St { .. }, Some(BodyContent::St(_)))
+        | (Body::Il { .. }, Some(BodyContent::Il(_))) => true,
+        (Body::St { .. } | Body::Il { .. }, _) => false,
+        (Body::None, _) => true,
+        (_, Some(BodyContent::St(text) | BodyContent::Il(text))) => text.text.trim().is_empty(),
+        _ => true,
+    }
+}
+
 /// Puts `text` into `body` when it is an ST or IL body (whose text the object's file leaves
 /// out).
 fn fill_text(body: &mut Body, text: Option<&str>) {
@@ -102,6 +119,36 @@ impl Converter<'_> {
             return Ok(false);
         };
         let mut restored: project_model::Pou = self.rivet_toml(&entry, place)?;
+        // A body the document writes in another language than the entry: the document wins,
+        // and the POU is converted from it like any other tool's.
+        let languages_agree = same_language(&restored.body, pou.bodies.first())
+            && restored.actions.iter().all(|action| {
+                let written = pou
+                    .actions
+                    .iter()
+                    .find(|written| written.name == action.name);
+                same_language(&action.body, written.map(|written| &written.body))
+            })
+            && restored.transitions.iter().all(|transition| {
+                let written = pou
+                    .transitions
+                    .iter()
+                    .find(|written| written.name == transition.name);
+                same_language(&transition.body, written.map(|written| &written.body))
+            })
+            && restored.methods.iter().all(|method| {
+                let written = pou
+                    .methods
+                    .iter()
+                    .find(|written| written.name == method.name);
+                same_language(
+                    &method.body,
+                    written.and_then(|written| written.bodies.first()),
+                )
+            });
+        if !languages_agree {
+            return Ok(false);
+        }
         restored.name = pou.name.clone();
         fill_text(
             &mut restored.body,
