@@ -23,6 +23,25 @@ fn import_errors(relative: &str) -> (usize, Vec<String>) {
     (imported.project.application.objects().len(), errors)
 }
 
+/// `project` compiled and loaded into a simulation; a project that does not check panics with
+/// its errors as `file: message`.
+#[track_caller]
+fn simulation_of(project: &project_model::Project) -> runtime::simulation::Simulation {
+    let image = match compiler::compile_project(project) {
+        Ok(image) => image,
+        Err(compiler::CompileError::Diagnostics(found)) => {
+            let errors: Vec<String> = found
+                .iter()
+                .filter(|d| d.diagnostic.severity == Severity::Error)
+                .map(|d| format!("{}: {}", d.file.display(), d.diagnostic.message))
+                .collect();
+            panic!("the project does not check: {errors:#?}")
+        }
+        Err(error) => panic!("the project does not compile: {error}"),
+    };
+    runtime::simulation::Simulation::new(image).unwrap_or_else(|error| panic!("{error}"))
+}
+
 /// The Beremiz and matiec POUs that do not check, each for a reason outside the import: the
 /// file, the POU and why.
 const BEREMIZ_AND_MATIEC_POUS_NOT_CHECKING: [(&str, &str, &str); 5] = [
@@ -122,8 +141,7 @@ END_PROGRAM
         .application
         .children
         .extend(main.application.children);
-    let image = compiler::compile_project(&project).unwrap_or_else(|error| panic!("{error:?}"));
-    let mut simulation = runtime::simulation::Simulation::new(image).expect("the image loads");
+    let mut simulation = simulation_of(&project);
     simulation.run(cycles);
     assert!(simulation.faults().is_empty(), "{:?}", simulation.faults());
     ["Main.st.OUT", "Main.ld.Out", "Main.fbd.OUT", "Main.il.OUT"].map(|path| {
@@ -227,19 +245,7 @@ fn a_codesys_speed_test_program_builds_and_runs_in_simulation() {
         watchdog: None,
         programs: vec!["x08_CheckingBools".to_owned()],
     }];
-    let image = match compiler::compile_project(&project) {
-        Ok(image) => image,
-        Err(compiler::CompileError::Diagnostics(found)) => {
-            let errors: Vec<String> = found
-                .iter()
-                .filter(|d| d.diagnostic.severity == Severity::Error)
-                .map(|d| format!("{}: {}", d.file.display(), d.diagnostic.message))
-                .collect();
-            panic!("the project does not check: {errors:#?}")
-        }
-        Err(error) => panic!("the project does not compile: {error}"),
-    };
-    let mut simulation = runtime::simulation::Simulation::new(image).expect("the image loads");
+    let mut simulation = simulation_of(&project);
     simulation.run(3);
     assert!(simulation.faults().is_empty(), "{:?}", simulation.faults());
     assert_eq!(simulation.cycles(), [3]);
@@ -296,8 +302,7 @@ END_PROGRAM
         .application
         .children
         .extend(main.application.children);
-    let image = compiler::compile_project(&project).unwrap_or_else(|error| panic!("{error:?}"));
-    let mut simulation = runtime::simulation::Simulation::new(image).expect("the image loads");
+    let mut simulation = simulation_of(&project);
     simulation.run(1);
     assert!(simulation.faults().is_empty(), "{:?}", simulation.faults());
     let values = ["Main.ld", "Main.fbd", "Main.st"].map(|path| {
@@ -368,8 +373,7 @@ END_PROGRAM
         .application
         .children
         .extend(main.application.children);
-    let image = compiler::compile_project(&project).unwrap_or_else(|error| panic!("{error:?}"));
-    let mut simulation = runtime::simulation::Simulation::new(image).expect("the image loads");
+    let mut simulation = simulation_of(&project);
     simulation.run(40);
     assert!(simulation.faults().is_empty(), "{:?}", simulation.faults());
     let read = |path: &str| {
@@ -427,20 +431,7 @@ END_PROGRAM
                 .push(project_model::Node::Object(object.clone()));
         }
     }
-    let image = match compiler::compile_project(&project) {
-        Ok(image) => image,
-        Err(compiler::CompileError::Diagnostics(found)) => {
-            let errors: Vec<String> = found
-                .iter()
-                .filter(|d| d.diagnostic.severity == Severity::Error)
-                .map(|d| format!("{}: {}", d.file.display(), d.diagnostic.message))
-                .collect();
-            panic!("the imported project does not check: {errors:#?}")
-        }
-        Err(error) => panic!("the imported project does not compile: {error}"),
-    };
-    let mut simulation =
-        runtime::simulation::Simulation::new(image).unwrap_or_else(|error| panic!("{error}"));
+    let mut simulation = simulation_of(&project);
     let mut seen = Vec::new();
     for _ in 0..10 {
         simulation.run(1);
@@ -501,9 +492,7 @@ END_PROGRAM
                 .push(project_model::Node::Object(object.clone()));
         }
     }
-    let image = compiler::compile_project(&project).unwrap_or_else(|error| panic!("{error:?}"));
-    let mut simulation =
-        runtime::simulation::Simulation::new(image).unwrap_or_else(|error| panic!("{error}"));
+    let mut simulation = simulation_of(&project);
     simulation.run(1);
     assert!(simulation.faults().is_empty(), "{:?}", simulation.faults());
     for (path, want) in [("Main.sum", "5"), ("Main.other", "-38")] {
@@ -527,9 +516,7 @@ fn matiec_sfc_test_steps_into_its_first_step() {
         panic!("{:?}", project.tasks)
     };
     task.programs.push("MAIN_TEST".to_owned());
-    let image = compiler::compile_project(&project).unwrap_or_else(|error| panic!("{error:?}"));
-    let mut simulation =
-        runtime::simulation::Simulation::new(image).unwrap_or_else(|error| panic!("{error}"));
+    let mut simulation = simulation_of(&project);
     let read = |simulation: &runtime::simulation::Simulation, path: &str| {
         runtime::value::read(simulation.engine(), path)
             .unwrap_or_else(|error| panic!("{path}: {error}"))
