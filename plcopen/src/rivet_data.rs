@@ -143,16 +143,7 @@ pub(crate) struct ObjectEntry {
 /// element's attributes, its text and its children's (name, key attribute, text).
 pub(crate) fn parse_object_entry(xml: &str) -> Result<ObjectEntry, String> {
     let document = roxmltree::Document::parse(xml).map_err(|error| error.to_string())?;
-    let element = document
-        .root_element()
-        .children()
-        .find(|node| node.is_element())
-        .ok_or("the entry holds no element")?;
-    if element.tag_name().namespace() != Some(RIVET_NAMESPACE)
-        || element.tag_name().name() != "object"
-    {
-        return Err(format!("expected an `object` element of {RIVET_NAMESPACE}"));
-    }
+    let element = rivet_element(&document, "object")?;
     let kind_text = element.attribute("kind").ok_or("`kind` is missing")?;
     let kind = ObjectEntryKind::parse(kind_text)
         .ok_or_else(|| format!("`{kind_text}` is not a kind of object"))?;
@@ -184,32 +175,14 @@ pub(crate) fn parse_object_entry(xml: &str) -> Result<ObjectEntry, String> {
 /// Reads the TOML of the project entry from its raw XML.
 pub(crate) fn parse_project_entry(xml: &str) -> Result<ProjectEntry, String> {
     let document = roxmltree::Document::parse(xml).map_err(|error| error.to_string())?;
-    let element = document
-        .root_element()
-        .children()
-        .find(|node| node.is_element())
-        .ok_or("the entry holds no element")?;
-    if element.tag_name().namespace() != Some(RIVET_NAMESPACE)
-        || element.tag_name().name() != "project"
-    {
-        return Err(format!("expected a `project` element of {RIVET_NAMESPACE}"));
-    }
+    let element = rivet_element(&document, "project")?;
     toml::from_str(&child_text(element)).map_err(|error| error.to_string())
 }
 
 /// Reads a vendor entry kept in a `…/vendor` entry: its place and XML.
 pub(crate) fn parse_vendor_entry(xml: &str) -> Result<project_model::VendorEntry, String> {
     let document = roxmltree::Document::parse(xml).map_err(|error| error.to_string())?;
-    let element = document
-        .root_element()
-        .children()
-        .find(|node| node.is_element())
-        .ok_or("the entry holds no element")?;
-    if element.tag_name().namespace() != Some(RIVET_NAMESPACE)
-        || element.tag_name().name() != "vendor"
-    {
-        return Err(format!("expected a `vendor` element of {RIVET_NAMESPACE}"));
-    }
+    let element = rivet_element(&document, "vendor")?;
     Ok(project_model::VendorEntry {
         place: element
             .attribute("place")
@@ -217,6 +190,23 @@ pub(crate) fn parse_vendor_entry(xml: &str) -> Result<project_model::VendorEntry
             .to_owned(),
         xml: child_text(element),
     })
+}
+
+/// The one element of Rivet's namespace named `name` inside an entry's `data` element.
+fn rivet_element<'a, 'input>(
+    document: &'a roxmltree::Document<'input>,
+    name: &str,
+) -> Result<roxmltree::Node<'a, 'input>, String> {
+    let element = document
+        .root_element()
+        .children()
+        .find(|node| node.is_element())
+        .ok_or("the entry holds no element")?;
+    if element.tag_name().namespace() != Some(RIVET_NAMESPACE) || element.tag_name().name() != name
+    {
+        return Err(format!("expected a `{name}` element of {RIVET_NAMESPACE}"));
+    }
+    Ok(element)
 }
 
 /// The text of an element: its text and CDATA nodes joined.
