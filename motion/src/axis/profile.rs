@@ -31,6 +31,12 @@ pub struct ProfileLimits {
     pub deceleration: f64,
     /// The highest jerk; 0 plans a trapezoidal profile (acceleration steps).
     pub jerk: f64,
+    /// The jerk that brings an acceleration above `acceleration` or `deceleration`, carried
+    /// over from an aborted command, back within them: the axis's jerk limit, so that a gentle
+    /// command taking over a hard ramp does not overshoot far past its target. Not above
+    /// `jerk` it has no effect; 0 means the axis has no jerk limit and the excess is dropped at
+    /// once.
+    pub recovery_jerk: f64,
 }
 
 impl ProfileLimits {
@@ -332,14 +338,34 @@ impl Builder {
     }
 
     /// Brings a non-zero acceleration back to zero at the jerk limit, so that the ramps that
-    /// follow all start and end at zero acceleration.
+    /// follow all start and end at zero acceleration. The part of the acceleration above the
+    /// command's own limit (a harder ramp of an aborted command) is first taken back at the
+    /// recovery jerk.
     fn settle_acceleration(&mut self) {
         let jerk = self.limits.jerk;
-        if jerk > 0.0 && self.acceleration != 0.0 {
-            let a = self.acceleration;
-            self.push(a.abs() / jerk, a, -a.signum() * jerk);
-            self.acceleration = 0.0;
+        if jerk <= 0.0 || self.acceleration == 0.0 {
+            return;
         }
+        let a = self.acceleration;
+        // Speeding up is bounded by the acceleration limit, slowing down by the deceleration.
+        let bound = if a * self.velocity > 0.0 {
+            self.limits.acceleration
+        } else {
+            self.limits.deceleration
+        };
+        let recovery_jerk = self.limits.recovery_jerk;
+        if a.abs() > bound && recovery_jerk > jerk {
+            let excess = a.abs() - bound;
+            self.push(excess / recovery_jerk, a, -a.signum() * recovery_jerk);
+            // The recovery ends exactly on the bound, free of integration rounding.
+            self.acceleration = a.signum() * bound;
+        } else if a.abs() > bound && recovery_jerk == 0.0 {
+            // Without an axis jerk limit the excess may step away.
+            self.acceleration = a.signum() * bound;
+        }
+        let a = self.acceleration;
+        self.push(a.abs() / jerk, a, -a.signum() * jerk);
+        self.acceleration = 0.0;
     }
 
     /// Appends a ramp from speed `from` to speed `to`, both measured along `dir`.
@@ -406,6 +432,7 @@ mod tests {
         acceleration: 1000.0,
         deceleration: 500.0,
         jerk: 0.0,
+        recovery_jerk: 0.0,
     };
 
     #[test]

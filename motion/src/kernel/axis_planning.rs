@@ -23,6 +23,7 @@ impl AxisRuntime {
             acceleration: dynamics.acceleration * self.overrides.acceleration,
             deceleration: dynamics.deceleration * self.overrides.acceleration,
             jerk: jerk * self.overrides.jerk,
+            recovery_jerk: self.config.max_jerk,
         }
     }
 
@@ -37,6 +38,7 @@ impl AxisRuntime {
             } else {
                 self.config.max_jerk
             },
+            recovery_jerk: self.config.max_jerk,
         }
     }
 

@@ -191,6 +191,7 @@ impl Kernel {
             acceleration: config.max_acceleration,
             deceleration: config.max_deceleration,
             jerk: config.max_jerk,
+            recovery_jerk: config.max_jerk,
         };
         let mut free = Running::new(
             decoupling.fb_name(),
@@ -252,6 +253,7 @@ impl Kernel {
             acceleration: dynamics.acceleration,
             deceleration: dynamics.deceleration,
             jerk: dynamics.jerk,
+            recovery_jerk: dynamics.jerk,
         };
         if let Some(previous) = phase.run.take() {
             registry.set(previous.id, CommandStatus::Aborted);

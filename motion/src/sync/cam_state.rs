@@ -205,6 +205,8 @@ impl CamState {
             acceleration: inputs.acceleration,
             deceleration: inputs.deceleration,
             jerk: inputs.jerk,
+            // The ramp starts at zero acceleration, so there is nothing to recover.
+            recovery_jerk: inputs.jerk,
         };
         Some(RampIn {
             offset,

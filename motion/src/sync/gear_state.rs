@@ -35,6 +35,8 @@ impl GearState {
             acceleration: limit,
             deceleration: limit,
             jerk: inputs.jerk,
+            // The ramp starts at zero acceleration, so there is nothing to recover.
+            recovery_jerk: inputs.jerk,
         };
         let ramp = Profile::to_velocity(0.0, difference, 0.0, limits);
         Self {
