@@ -831,3 +831,25 @@ AND A_INLINE1]]></xhtml:p></IL></inline>"#;
         "{entry:?}"
     );
 }
+
+#[test]
+fn ld_conditions_and_inline_ld_actions_come_back_from_the_plain_export() {
+    let objects = ld_wired_chart(r#" edge="rising""#).replace(
+        &step(1, "A", true, None),
+        &format!(
+            r#"{}<actionBlock localId="9"><connectionPointIn><connection refLocalId="1"/></connectionPointIn><action localId="0">{INLINE_LD}</action></actionBlock>"#,
+            step(1, "A", true, None)
+        ),
+    );
+    let first = imported(&document(&objects, ""));
+    let options = crate::ExportOptions {
+        object_entries: false,
+    };
+    let xml = crate::export_with(&first.project, options).unwrap_or_else(|error| panic!("{error}"));
+    let document = crate::read_bytes(&xml, "plain.xml").unwrap_or_else(|error| panic!("{error}"));
+    let again = import(&document).unwrap_or_else(|error| panic!("{error}"));
+    let seq = pou(&first, "Seq");
+    assert_eq!(seq.actions.len(), 1, "{:?}", seq.actions);
+    assert_eq!(seq.transitions.len(), 1, "{:?}", seq.transitions);
+    assert_eq!(pou(&again, "Seq"), seq);
+}
