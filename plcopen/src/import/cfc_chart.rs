@@ -220,9 +220,11 @@ impl<'o> CfcChartBuilder<'o> {
                 height: self.extent(object.size.height),
             },
             ObjectKind::VendorElement(_) => {
-                let element_type = object
-                    .add_data
-                    .entry_ending_with("/fbdelementtype")
+                // CODESYS names the kind in `…/cfcelementtype` in a CFC, `…/fbdelementtype` in
+                // an FBD body.
+                let element_type = ["/cfcelementtype", "/fbdelementtype"]
+                    .into_iter()
+                    .find_map(|suffix| object.add_data.entry_ending_with(suffix))
                     .and_then(|entry| vendor_element_type(&entry.xml))
                     .unwrap_or_else(|| "vendorElement".to_owned());
                 return Err(BodyFault::NotConverted(format!(
@@ -581,7 +583,8 @@ impl<'o> CfcChartBuilder<'o> {
     }
 }
 
-/// The element type of CODESYS's `…/fbdelementtype` entry (`<ElementType>composer</ElementType>`).
+/// The element type of CODESYS's `…/cfcelementtype` or `…/fbdelementtype` entry
+/// (`<ElementType>composer</ElementType>`).
 fn vendor_element_type(xml: &str) -> Option<String> {
     let start = xml.find("<ElementType")?;
     let text = &xml[start..];

@@ -555,7 +555,7 @@ fn composers_and_selectors_come_back_from_the_plain_export() {
 fn a_codesys_composer_is_reported_with_its_element_type() {
     let body = r#"<body><ST><xhtml:p></xhtml:p></ST><addData><data name="http://www.3s-software.com/plcopenxml/cfc" handleUnknown="implementation"><CFC>
       <vendorElement localId="1"><position x="2" y="2"/><alternativeText><xhtml xmlns="http://www.w3.org/1999/xhtml">Point</xhtml></alternativeText>
-        <addData><data name="http://www.3s-software.com/plcopenxml/fbdelementtype" handleUnknown="implementation"><ElementType xmlns="">composer</ElementType></data></addData>
+        <addData><data name="http://www.3s-software.com/plcopenxml/cfcelementtype" handleUnknown="implementation"><ElementType xmlns="">composer</ElementType></data></addData>
       </vendorElement>
     </CFC></data></addData></body>"#;
     let imported = imported(&document(body));
