@@ -15,7 +15,7 @@ use super::converter::Place;
 use super::error::ImportErrorKind;
 use crate::body_object::{BodyObject, ObjectKind};
 use crate::connection::{Connection, ConnectionPointIn};
-use crate::fbd::BlockPin;
+use crate::fbd::{BlockPin, InOutVariable};
 use crate::header::Point;
 use crate::ld::{Edge, Storage};
 
@@ -43,6 +43,9 @@ impl CfcDialect {
         }
     }
 }
+
+/// The least distance, in grid units, from the output of an in-out's pair to its input.
+const IN_OUT_MIN_WIDTH: u32 = 4;
 
 /// The pitch at which Rivet's exported positions and Beremiz's pixels become grid units.
 pub(crate) const PIXELS_PER_GRID_UNIT: u32 = 10;
@@ -72,8 +75,11 @@ pub(super) struct CfcChartBuilder<'o> {
     body_path: String,
     /// Line of the body, for errors about the chart as a whole.
     body_line: u32,
-    /// The element made of each object that has one (unnamed connectors have none).
+    /// The element made of each object that has one (unnamed connectors have none); for an
+    /// `inOutVariable`, the input its readers are wired from.
     element_of: HashMap<u64, ElementId>,
+    /// The output that writes the variable of each `inOutVariable`, by `localId`.
+    in_out_writes: HashMap<u64, ElementId>,
     /// The elements so far, in document order.
     elements: Vec<OrderedElement>,
     /// The wires so far.
@@ -103,6 +109,7 @@ impl<'o> CfcChartBuilder<'o> {
             body_path: body_path.to_owned(),
             body_line,
             element_of: HashMap::new(),
+            in_out_writes: HashMap::new(),
             elements: Vec::new(),
             wires: Vec::new(),
             taken_places: HashSet::new(),
@@ -134,6 +141,24 @@ impl<'o> CfcChartBuilder<'o> {
 
     fn element(&mut self, object: &BodyObject) -> Result<(), BodyFault> {
         let kind = match &object.kind {
+            // A box pin has a name; Rivet's export writes a composer's structure output and a
+            // selector's structure input as the one unnamed pin of a block (§5.2).
+            ObjectKind::Block(block)
+                if is_unnamed_pin(&block.outputs) && block.in_outs.is_empty() =>
+            {
+                CfcElementKind::Composer {
+                    type_name: block.type_name.clone(),
+                    inputs: block.inputs.iter().map(pin).collect(),
+                }
+            }
+            ObjectKind::Block(block)
+                if is_unnamed_pin(&block.inputs) && block.in_outs.is_empty() =>
+            {
+                CfcElementKind::Selector {
+                    type_name: block.type_name.clone(),
+                    outputs: block.outputs.iter().map(pin).collect(),
+                }
+            }
             ObjectKind::Block(block) => CfcElementKind::Box(CfcBox {
                 type_name: block.type_name.clone(),
                 instance: block.instance_name.clone().unwrap_or_default(),
@@ -188,11 +213,25 @@ impl<'o> CfcChartBuilder<'o> {
             ObjectKind::Continuation(continuation) => CfcElementKind::ConnectionSink {
                 name: continuation.name.clone(),
             },
+            ObjectKind::InOutVariable(variable) => return self.in_out(object, variable),
             ObjectKind::Comment(text) => CfcElementKind::Comment {
                 text: text.text.trim().to_owned(),
                 width: self.extent(object.size.width),
                 height: self.extent(object.size.height),
             },
+            ObjectKind::VendorElement(_) => {
+                // CODESYS names the kind in `…/cfcelementtype` in a CFC, `…/fbdelementtype` in
+                // an FBD body.
+                let element_type = ["/cfcelementtype", "/fbdelementtype"]
+                    .into_iter()
+                    .find_map(|suffix| object.add_data.entry_ending_with(suffix))
+                    .and_then(|entry| vendor_element_type(&entry.xml))
+                    .unwrap_or_else(|| "vendorElement".to_owned());
+                return Err(BodyFault::NotConverted(format!(
+                    "its {element_type} at line {} is another tool's own element (a vendorElement): its meaning (for CODESYS's composer and selector, the structure and its members) stays in that tool's data, which this import does not read",
+                    object.line
+                )));
+            }
             other => {
                 return Err(BodyFault::NotConverted(format!(
                     "its {} at line {} has no counterpart in a CFC chart",
@@ -202,8 +241,46 @@ impl<'o> CfcChartBuilder<'o> {
             }
         };
         let (x, y) = self.grid_place(object.position.as_ref());
-        let id = self.push(x, y, kind, object.execution_order_id);
+        let id = self.push(x, y, kind, object.execution_order_id, None);
         self.element_of.insert(object.local_id, id);
+        Ok(())
+    }
+
+    /// An `inOutVariable` as an output writing its variable and, to the right of it, an input
+    /// reading the variable, which its readers are wired from (docs/plcopen-xml.md §4.5).
+    fn in_out(&mut self, object: &BodyObject, variable: &InOutVariable) -> Result<(), BodyFault> {
+        let expression = variable.expression.trim();
+        if matches!(variable.edge_out, Some(Edge::Rising | Edge::Falling)) {
+            return Err(BodyFault::NotConverted(format!(
+                "the inOutVariable `{expression}` at line {} detects an edge on its output, which a chart's input cannot",
+                object.line
+            )));
+        }
+        if matches!(variable.storage_out, Some(Storage::Set | Storage::Reset)) {
+            return Err(BodyFault::NotConverted(format!(
+                "the inOutVariable `{expression}` at line {} stores its output, which a chart's input cannot",
+                object.line
+            )));
+        }
+        let (x, y) = self.grid_place(object.position.as_ref());
+        let write = CfcElementKind::Output {
+            expression: expression.to_owned(),
+            coil: coil_kind(variable.negated_in, variable.edge_in, variable.storage_in),
+        };
+        let output = self.push(x, y, write, object.execution_order_id, None);
+        let read = CfcElementKind::Input {
+            expression: if variable.negated_out == Some(true) {
+                format!("NOT ({expression})")
+            } else {
+                expression.to_owned()
+            },
+        };
+        // Right of the output by the in-out's width, so the two stand where it stood.
+        let width = self.extent(object.size.width).max(IN_OUT_MIN_WIDTH);
+        let gap = i32::try_from(width).unwrap_or(i32::MAX);
+        let input = self.push(x.saturating_add(gap), y, read, None, Some(output));
+        self.in_out_writes.insert(object.local_id, output);
+        self.element_of.insert(object.local_id, input);
         Ok(())
     }
 
@@ -214,6 +291,7 @@ impl<'o> CfcChartBuilder<'o> {
         mut y: i32,
         kind: CfcElementKind,
         execution_order_id: Option<u64>,
+        reads_write_of: Option<ElementId>,
     ) -> ElementId {
         // Rounding pixels to the grid may bring two elements onto one place: keep them apart.
         while !self.taken_places.insert((x, y)) {
@@ -230,6 +308,7 @@ impl<'o> CfcChartBuilder<'o> {
                 kind,
             },
             execution_order_id,
+            reads_write_of,
         });
         id
     }
@@ -240,6 +319,12 @@ impl<'o> CfcChartBuilder<'o> {
         };
         let place = self.place_of(object);
         match &object.kind {
+            ObjectKind::InOutVariable(variable) => {
+                let output = self.in_out_writes.get(&object.local_id).copied();
+                if let (Some(point), Some(output)) = (&variable.input, output) {
+                    self.wire_into(point, PinRef::new(output, ""), &place)?;
+                }
+            }
             ObjectKind::Block(block) => {
                 for input in block.inputs.iter().chain(&block.in_outs) {
                     if let Some(point) = &input.input {
@@ -261,7 +346,7 @@ impl<'o> CfcChartBuilder<'o> {
                             expression: expression.to_owned(),
                             coil: CoilKind::Normal,
                         };
-                        let assign = self.push(x + 8, y, kind, None);
+                        let assign = self.push(x + 8, y, kind, None, None);
                         self.wires.push(Wire::routed(
                             PinRef::new(element, output.formal_parameter.clone()),
                             PinRef::new(assign, ""),
@@ -313,7 +398,7 @@ impl<'o> CfcChartBuilder<'o> {
                     let kind = CfcElementKind::Input {
                         expression: expression.to_owned(),
                     };
-                    let input = self.push(x - 6, y, kind, None);
+                    let input = self.push(x - 6, y, kind, None, None);
                     self.wires.push(Wire::routed(PinRef::new(input, ""), to));
                 }
                 Ok(())
@@ -418,7 +503,7 @@ impl<'o> CfcChartBuilder<'o> {
             expression: expression.to_owned(),
             coil: CoilKind::Normal,
         };
-        let output = self.push(x + 8, y, kind, None);
+        let output = self.push(x + 8, y, kind, None, None);
         self.wires.push(Wire::routed(from, PinRef::new(output, "")));
     }
 
@@ -496,6 +581,22 @@ impl<'o> CfcChartBuilder<'o> {
             .collect::<Option<Vec<_>>>()
             .unwrap_or_default()
     }
+}
+
+/// The element type of CODESYS's `…/cfcelementtype` or `…/fbdelementtype` entry
+/// (`<ElementType>composer</ElementType>`).
+fn vendor_element_type(xml: &str) -> Option<String> {
+    let start = xml.find("<ElementType")?;
+    let text = &xml[start..];
+    let open_end = text.find('>')? + 1;
+    let close = text.find("</ElementType>")?;
+    let name = text.get(open_end..close)?.trim();
+    (!name.is_empty()).then(|| format!("CODESYS {name}"))
+}
+
+/// Whether `pins` is one pin without a name: a composer's output or a selector's input.
+fn is_unnamed_pin(pins: &[BlockPin]) -> bool {
+    matches!(pins, [only] if only.formal_parameter.trim().is_empty())
 }
 
 /// A pin of a box: its name, negation and edge.

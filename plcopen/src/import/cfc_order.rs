@@ -15,6 +15,69 @@ pub(super) struct OrderedElement {
     pub element: CfcElement,
     /// The object's `executionOrderId` (`None` and `Some(0)` both mean "none").
     pub execution_order_id: Option<u64>,
+    /// For the input of an `inOutVariable`'s pair, the pair's output: the input reads what that
+    /// output writes, so it counts as driven by it.
+    pub reads_write_of: Option<ElementId>,
+}
+
+/// What drives each element of a chart in the making: the elements its wires come from, for a
+/// connection sink the sources of its name, and for an in-out's input its output.
+struct Drivers<'e> {
+    /// The elements by id.
+    by_id: HashMap<ElementId, &'e CfcElement>,
+    /// The elements wired into each element, in wire order, then the output of an in-out's
+    /// input.
+    wired: HashMap<ElementId, Vec<ElementId>>,
+    /// The connection sources by lower-case name, in document order.
+    sources: HashMap<String, Vec<ElementId>>,
+}
+
+impl<'e> Drivers<'e> {
+    fn new(elements: &'e [OrderedElement], wires: &[Wire]) -> Self {
+        let by_id = elements
+            .iter()
+            .map(|placed| (placed.element.id, &placed.element))
+            .collect();
+        let mut wired: HashMap<ElementId, Vec<ElementId>> = HashMap::new();
+        for wire in wires {
+            wired
+                .entry(wire.to.element)
+                .or_default()
+                .push(wire.from.element);
+        }
+        let mut sources: HashMap<String, Vec<ElementId>> = HashMap::new();
+        for placed in elements {
+            if let Some(output) = placed.reads_write_of {
+                wired.entry(placed.element.id).or_default().push(output);
+            }
+            if let CfcElementKind::ConnectionSource { name } = &placed.element.kind {
+                sources
+                    .entry(name.to_lowercase())
+                    .or_default()
+                    .push(placed.element.id);
+            }
+        }
+        Self {
+            by_id,
+            wired,
+            sources,
+        }
+    }
+
+    /// The kind of the element `id`.
+    fn kind(&self, id: ElementId) -> Option<&'e CfcElementKind> {
+        self.by_id.get(&id).map(|element| &element.kind)
+    }
+
+    /// What `id` reads directly: the elements wired into it, and for a connection sink the
+    /// sources of its name.
+    fn before(&self, id: ElementId) -> Vec<ElementId> {
+        let mut before: Vec<ElementId> = self.wired.get(&id).cloned().unwrap_or_default();
+        if let Some(CfcElementKind::ConnectionSink { name }) = self.kind(id) {
+            before.extend(self.sources.get(&name.to_lowercase()).into_iter().flatten());
+        }
+        before
+    }
 }
 
 /// The executable elements of `elements` (in document order) in the order they run.
@@ -56,32 +119,13 @@ pub(super) fn execution_order(
 }
 
 /// The executable elements whose values each executable element reads directly: back through
-/// its wires, past inputs' none, from a sink to the sources of its name and past a source to
-/// what drives it.
+/// its wires, past the values that are not run (from a sink to the sources of its name, past a
+/// source to what drives it, from an in-out's input to its output).
 fn executable_drivers(
     elements: &[OrderedElement],
     wires: &[Wire],
 ) -> HashMap<ElementId, BTreeSet<ElementId>> {
-    let by_id: HashMap<ElementId, &CfcElement> = elements
-        .iter()
-        .map(|placed| (placed.element.id, &placed.element))
-        .collect();
-    let mut wired: HashMap<ElementId, Vec<ElementId>> = HashMap::new();
-    for wire in wires {
-        wired
-            .entry(wire.to.element)
-            .or_default()
-            .push(wire.from.element);
-    }
-    let mut sources: HashMap<String, Vec<ElementId>> = HashMap::new();
-    for placed in elements {
-        if let CfcElementKind::ConnectionSource { name } = &placed.element.kind {
-            sources
-                .entry(name.to_lowercase())
-                .or_default()
-                .push(placed.element.id);
-        }
-    }
+    let links = Drivers::new(elements, wires);
     let mut drivers = HashMap::new();
     for placed in elements {
         if !placed.element.kind.is_executable() {
@@ -89,22 +133,19 @@ fn executable_drivers(
         }
         let mut found = BTreeSet::new();
         let mut seen = HashSet::new();
-        let mut stack: Vec<ElementId> = wired.get(&placed.element.id).cloned().unwrap_or_default();
+        let mut stack: Vec<ElementId> = links.before(placed.element.id);
         while let Some(id) = stack.pop() {
             if !seen.insert(id) {
                 continue;
             }
-            match by_id.get(&id).map(|element| &element.kind) {
+            match links.kind(id) {
                 Some(kind) if kind.is_executable() => {
                     found.insert(id);
                 }
-                Some(CfcElementKind::ConnectionSink { name }) => {
-                    stack.extend(sources.get(&name.to_lowercase()).into_iter().flatten());
-                }
-                Some(CfcElementKind::ConnectionSource { .. }) => {
-                    stack.extend(wired.get(&id).into_iter().flatten());
-                }
-                _ => {}
+                // Past a value that is not run (a sink, a source, an in-out's input) to what
+                // it reads.
+                Some(_) => stack.extend(links.before(id)),
+                None => {}
             }
         }
         found.remove(&placed.element.id);
@@ -176,26 +217,7 @@ fn by_rank_and_flow(elements: &[OrderedElement], wires: &[Wire]) -> Vec<ElementI
 
 /// Beremiz's order for a graph without execution order ids.
 fn by_data_flow(elements: &[OrderedElement], wires: &[Wire]) -> Vec<ElementId> {
-    let by_id: HashMap<ElementId, &CfcElement> = elements
-        .iter()
-        .map(|placed| (placed.element.id, &placed.element))
-        .collect();
-    let mut drivers: HashMap<ElementId, Vec<ElementId>> = HashMap::new();
-    for wire in wires {
-        drivers
-            .entry(wire.to.element)
-            .or_default()
-            .push(wire.from.element);
-    }
-    let mut sources: HashMap<String, Vec<ElementId>> = HashMap::new();
-    for placed in elements {
-        if let CfcElementKind::ConnectionSource { name } = &placed.element.kind {
-            sources
-                .entry(name.to_lowercase())
-                .or_default()
-                .push(placed.element.id);
-        }
-    }
+    let links = Drivers::new(elements, wires);
     let mut roots: Vec<(bool, i32, i32, usize, ElementId)> = elements
         .iter()
         .enumerate()
@@ -224,10 +246,7 @@ fn by_data_flow(elements: &[OrderedElement], wires: &[Wire]) -> Vec<ElementId> {
         let mut stack = vec![(root, false)];
         while let Some((id, expanded)) = stack.pop() {
             if expanded {
-                if by_id
-                    .get(&id)
-                    .is_some_and(|element| element.kind.is_executable())
-                {
+                if links.kind(id).is_some_and(CfcElementKind::is_executable) {
                     order.push(id);
                 }
                 continue;
@@ -236,12 +255,8 @@ fn by_data_flow(elements: &[OrderedElement], wires: &[Wire]) -> Vec<ElementId> {
                 continue;
             }
             stack.push((id, true));
-            let mut before: Vec<ElementId> = drivers.get(&id).cloned().unwrap_or_default();
-            if let Some(CfcElementKind::ConnectionSink { name }) = by_id.get(&id).map(|e| &e.kind) {
-                before.extend(sources.get(&name.to_lowercase()).into_iter().flatten());
-            }
             // Pushed in reverse, so the first driver is visited (and numbered) first.
-            for driver in before.into_iter().rev() {
+            for driver in links.before(id).into_iter().rev() {
                 if !visited.contains(&driver) {
                     stack.push((driver, false));
                 }

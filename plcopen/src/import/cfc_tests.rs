@@ -345,3 +345,224 @@ fn a_beremiz_feedback_loop_keeps_every_element_once() {
     // Rivet's own numbers are kept exactly.
     assert_eq!(orders(&rivet), (Some(1), Some(0)));
 }
+
+/// A counter as Beremiz draws it, in CODESYS's CFC: `ADD(a, 1)` into an in-out `a`, whose
+/// output `b` reads.
+const IN_OUT_COUNTER: &str = r#"<body><ST><xhtml:p></xhtml:p></ST><addData><data name="http://www.3s-software.com/plcopenxml/cfc" handleUnknown="implementation"><CFC>
+      <inVariable localId="1"><position x="1" y="2"/><connectionPointOut/><expression>1</expression></inVariable>
+      <block localId="3" typeName="ADD" executionOrderId="1"><position x="6" y="1"/>
+        <inputVariables>
+          <variable formalParameter="IN1"><connectionPointIn><connection refLocalId="4"/></connectionPointIn></variable>
+          <variable formalParameter="IN2"><connectionPointIn><connection refLocalId="1"/></connectionPointIn></variable>
+        </inputVariables><inOutVariables/>
+        <outputVariables><variable formalParameter="OUT"><connectionPointOut/></variable></outputVariables>
+      </block>
+      <inOutVariable localId="4" executionOrderId="0"><position x="12" y="1"/><connectionPointIn><connection refLocalId="3" formalParameter="OUT"/></connectionPointIn><connectionPointOut/><expression>a</expression></inOutVariable>
+      <outVariable localId="5" executionOrderId="2"><position x="20" y="1"/><connectionPointIn><connection refLocalId="4"/></connectionPointIn><expression>b</expression></outVariable>
+    </CFC></data></addData></body>"#;
+
+#[test]
+fn an_in_out_variable_is_an_output_and_an_input_read_after_it() {
+    let imported = imported(&document(IN_OUT_COUNTER));
+    let chart = chart(&imported, "Chart");
+    let write = element(
+        chart,
+        |kind| matches!(kind, CfcElementKind::Output { expression, .. } if expression == "a"),
+    );
+    let read = input(chart, "a");
+    let add = element(chart, |kind| matches!(kind, CfcElementKind::Box(_)));
+    let out = element(
+        chart,
+        |kind| matches!(kind, CfcElementKind::Output { expression, .. } if expression == "b"),
+    );
+    // The output stands where the in-out stood, the input to its right.
+    assert_eq!((write.x, write.y), (12, 1));
+    let read_element = element(
+        chart,
+        |kind| matches!(kind, CfcElementKind::Input { expression } if expression == "a"),
+    );
+    assert!(read_element.x > write.x, "{chart:#?}");
+    assert!(chart.wires.contains(&project_model::Wire::routed(
+        PinRef::new(add.id, "OUT"),
+        PinRef::new(write.id, "")
+    )));
+    for reader in [PinRef::new(add.id, "IN1"), PinRef::new(out.id, "")] {
+        assert!(
+            chart
+                .wires
+                .iter()
+                .any(|wire| wire.from == PinRef::new(read, "") && wire.to == reader),
+            "{chart:#?}"
+        );
+    }
+    // ADD reads the value of the previous cycle, the write follows it, and `b` reads the new
+    // value after the write.
+    assert_eq!(
+        (add.order, write.order, out.order),
+        (Some(0), Some(1), Some(2))
+    );
+    assert!(project_model::cfc_problems(chart).is_empty());
+    assert!(
+        imported
+            .report
+            .with_outcome(Outcome::NotConverted)
+            .all(|entry| !entry.what.contains("Chart")),
+        "{:#?}",
+        imported.report
+    );
+}
+
+#[test]
+fn an_in_out_variable_in_beremiz_order_is_written_before_its_readers() {
+    let body = IN_OUT_COUNTER
+        .replace(r#"executionOrderId="1""#, r#"executionOrderId="0""#)
+        .replace(r#"executionOrderId="2""#, r#"executionOrderId="0""#);
+    let parsed = read(&document(&body), "in.xml").unwrap_or_else(|error| panic!("{error}"));
+    let Some(objects) = &parsed.pous[0].bodies[0].cfc else {
+        panic!("{:?}", parsed.pous[0].bodies[0])
+    };
+    let chart = fbd_graph_to_cfc(objects, CfcDialect::Beremiz, "body/FBD", 1)
+        .unwrap_or_else(|fault| panic!("{fault:?}"));
+    let order = |expression: &str| {
+        element(
+            &chart,
+            |kind| matches!(kind, CfcElementKind::Output { expression: e, .. } if e == expression),
+        )
+        .order
+    };
+    let add = element(&chart, |kind| matches!(kind, CfcElementKind::Box(_))).order;
+    assert_eq!((add, order("a"), order("b")), (Some(0), Some(1), Some(2)));
+}
+
+#[test]
+fn an_in_out_variable_comes_back_from_the_plain_export_as_the_same_pair() {
+    let imported = imported(&document(IN_OUT_COUNTER));
+    let options = crate::ExportOptions {
+        object_entries: false,
+    };
+    let xml =
+        crate::export_with(&imported.project, options).unwrap_or_else(|error| panic!("{error}"));
+    let document = crate::read_bytes(&xml, "plain.xml").unwrap_or_else(|error| panic!("{error}"));
+    let again = import(&document).unwrap_or_else(|error| panic!("{error}"));
+    assert_eq!(chart(&again, "Chart"), chart(&imported, "Chart"));
+}
+
+#[test]
+fn an_in_out_variable_that_detects_an_edge_on_its_output_is_not_converted() {
+    let body = IN_OUT_COUNTER.replace(
+        r#"<inOutVariable localId="4""#,
+        r#"<inOutVariable localId="4" edgeOut="rising""#,
+    );
+    let imported = imported(&document(&body));
+    let entry = imported.report.entry("POU 'Chart'");
+    assert!(
+        entry.is_some_and(|entry| entry.outcome == Outcome::NotConverted
+            && entry.note.contains("detects an edge on its output")),
+        "{entry:?}"
+    );
+}
+
+#[test]
+fn composers_and_selectors_come_back_from_the_plain_export() {
+    let mut project = imported(&document(RIVET_CFC)).project;
+    let at = |id: u32, x: i32, order: Option<u32>, kind: CfcElementKind| CfcElement {
+        id: ElementId(id),
+        x,
+        y: 2,
+        order,
+        kind,
+    };
+    let members = || {
+        vec![
+            project_model::CfcPin::named("x"),
+            project_model::CfcPin::named("y"),
+        ]
+    };
+    let structures = CfcChart {
+        elements: vec![
+            at(
+                1,
+                1,
+                None,
+                CfcElementKind::Input {
+                    expression: "a".into(),
+                },
+            ),
+            at(
+                2,
+                6,
+                Some(0),
+                CfcElementKind::Composer {
+                    type_name: "Point".into(),
+                    inputs: members(),
+                },
+            ),
+            at(
+                3,
+                12,
+                Some(1),
+                CfcElementKind::Selector {
+                    type_name: "Point".into(),
+                    outputs: members(),
+                },
+            ),
+            at(
+                4,
+                18,
+                Some(2),
+                CfcElementKind::Output {
+                    expression: "b".into(),
+                    coil: CoilKind::Normal,
+                },
+            ),
+        ],
+        wires: vec![
+            project_model::Wire::routed(
+                PinRef::new(ElementId(1), ""),
+                PinRef::new(ElementId(2), "x"),
+            ),
+            project_model::Wire::routed(
+                PinRef::new(ElementId(1), ""),
+                PinRef::new(ElementId(2), "y"),
+            ),
+            project_model::Wire::routed(
+                PinRef::new(ElementId(2), ""),
+                PinRef::new(ElementId(3), ""),
+            ),
+            project_model::Wire::routed(
+                PinRef::new(ElementId(3), "x"),
+                PinRef::new(ElementId(4), ""),
+            ),
+        ],
+    };
+    assert!(project_model::cfc_problems(&structures).is_empty());
+    let Some(Object::Pou(pou)) = project.application.object_mut("Chart") else {
+        panic!("no POU Chart")
+    };
+    pou.body = Body::Cfc {
+        chart: structures.clone(),
+    };
+    let options = crate::ExportOptions {
+        object_entries: false,
+    };
+    let xml = crate::export_with(&project, options).unwrap_or_else(|error| panic!("{error}"));
+    let document = crate::read_bytes(&xml, "plain.xml").unwrap_or_else(|error| panic!("{error}"));
+    let again = import(&document).unwrap_or_else(|error| panic!("{error}"));
+    assert_eq!(chart(&again, "Chart"), &structures);
+}
+
+#[test]
+fn a_codesys_composer_is_reported_with_its_element_type() {
+    let body = r#"<body><ST><xhtml:p></xhtml:p></ST><addData><data name="http://www.3s-software.com/plcopenxml/cfc" handleUnknown="implementation"><CFC>
+      <vendorElement localId="1"><position x="2" y="2"/><alternativeText><xhtml xmlns="http://www.w3.org/1999/xhtml">Point</xhtml></alternativeText>
+        <addData><data name="http://www.3s-software.com/plcopenxml/cfcelementtype" handleUnknown="implementation"><ElementType xmlns="">composer</ElementType></data></addData>
+      </vendorElement>
+    </CFC></data></addData></body>"#;
+    let imported = imported(&document(body));
+    let entry = imported.report.entry("POU 'Chart'");
+    assert!(
+        entry.is_some_and(|entry| entry.outcome == Outcome::NotConverted
+            && entry.note.contains("CODESYS composer at line")),
+        "{entry:?}"
+    );
+}

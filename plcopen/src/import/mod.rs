@@ -23,6 +23,7 @@ mod rivet_attributes;
 mod rivet_data;
 mod sfc_chart;
 mod sfc_condition;
+mod sfc_nested;
 mod sfc_step;
 mod tasks;
 mod type_text;

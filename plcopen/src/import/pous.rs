@@ -16,6 +16,19 @@ use crate::body::{Body as XmlBody, BodyContent};
 use crate::interface::Interface;
 use crate::pou::{Pou, PouLocation, PouType};
 
+/// Where a body stands in the document, for errors and the report.
+pub(super) struct BodyAt<'p> {
+    /// The element that holds the body: a POU, action, transition or method, or for a body
+    /// inside an SFC body the SFC object it belongs to.
+    pub holder: &'p Place,
+    /// The path of the element that holds the language element (`…/body`, an inline body's
+    /// `…/inline`), or of the SFC body a wired condition's objects stand in.
+    pub body_path: String,
+    /// The path of the element whose children are the body's objects (`…/body/LD`), or of the
+    /// SFC body a wired condition's objects stand in.
+    pub objects_path: String,
+}
+
 /// Whether an FBD body carries Rivet's marker of a CFC chart (the `…/language` entry holding
 /// `<language name="CFC"/>`).
 fn is_rivet_cfc(body: &XmlBody) -> bool {
@@ -275,6 +288,24 @@ impl Converter<'_> {
         what: &str,
         synthesized: &mut PouObjects,
     ) -> Result<Result<Body, String>, ImportError> {
+        let body_path = format!("{}/body", holder.path);
+        let at = BodyAt {
+            holder,
+            objects_path: format!("{body_path}/{}", body.content.language()),
+            body_path,
+        };
+        self.body_at(body, &at, what, synthesized)
+    }
+
+    /// [`Self::body`] for a body that stands at `at`: a POU's, or one inside an SFC body (an
+    /// inline action, the LD graph of a wired condition).
+    pub(super) fn body_at(
+        &mut self,
+        body: &XmlBody,
+        at: &BodyAt<'_>,
+        what: &str,
+        synthesized: &mut PouObjects,
+    ) -> Result<Result<Body, String>, ImportError> {
         if let Some(text) = st_text(body) {
             return Ok(Ok(Body::St { text }));
         }
@@ -283,14 +314,13 @@ impl Converter<'_> {
                 text: text.text.clone(),
             }));
         }
-        let body_path = format!("{}/body", holder.path);
-        let path = body_path.as_str();
+        let path = at.body_path.as_str();
         let mut fallback_note = None;
         if !is_rivet_cfc(body) {
-            match self.networks(body, holder, what)? {
+            match self.networks_at(body, at, what)? {
                 Some(NetworkOutcome::Networks(networks)) => {
                     let objects = body.content.objects();
-                    self.opaque_objects(objects, &format!("{path}/{}", body.content.language()));
+                    self.opaque_objects(objects, &at.objects_path);
                     return Ok(Ok(match body.content {
                         BodyContent::Ld(_) => Body::Ld { networks },
                         _ => Body::Fbd { networks },
@@ -315,7 +345,7 @@ impl Converter<'_> {
         // Where the body's objects stand, for errors and the report.
         let objects_path = match &body.cfc {
             Some(_) => format!("{path}/addData/data[@name='{cfc_entry}']/CFC"),
-            None => format!("{path}/{}", body.content.language()),
+            None => at.objects_path.clone(),
         };
         let converted = match (&body.cfc, &body.content) {
             (Some(objects), _) => {
@@ -323,7 +353,8 @@ impl Converter<'_> {
                     .map(|chart| Body::Cfc { chart })
             }
             (None, BodyContent::Sfc(objects)) => {
-                let builder = SfcChartBuilder::new(objects, &objects_path, body.line, synthesized);
+                let builder =
+                    SfcChartBuilder::new(objects, &objects_path, body.line, synthesized, self);
                 builder.chart_on_own_stack().map(|(chart, entries)| {
                     self.report.entries.extend(entries);
                     Body::Sfc { chart }
@@ -369,6 +400,34 @@ impl Converter<'_> {
             })),
             Err(BodyFault::Error(place, kind)) => Err(self.error(&place, kind)),
         }
+    }
+
+    /// [`Self::networks`] for the body at `at`: the network import names a body
+    /// `{holder}/body/LANG`, so the paths of its errors and report entries are moved to where
+    /// the body's objects stand (an inline body's `…/inline/LD`, a wired condition's SFC body).
+    fn networks_at(
+        &mut self,
+        body: &XmlBody,
+        at: &BodyAt<'_>,
+        what: &str,
+    ) -> Result<Option<NetworkOutcome>, ImportError> {
+        let named = format!("{}/body/{}", at.holder.path, body.content.language());
+        let relocated = |path: &mut String| {
+            if named != at.objects_path
+                && let Some(rest) = path.strip_prefix(named.as_str())
+            {
+                *path = format!("{}{rest}", at.objects_path);
+            }
+        };
+        let first_entry = self.report.entries.len();
+        let outcome = self.networks(body, at.holder, what);
+        for entry in &mut self.report.entries[first_entry..] {
+            relocated(&mut entry.path);
+        }
+        outcome.map_err(|mut error| {
+            relocated(&mut error.path);
+            error
+        })
     }
 
     /// Reports the `addData` entries of the objects of a converted body (CODESYS's

@@ -11,6 +11,7 @@ use super::converter::{Place, comment};
 use super::error::ImportErrorKind;
 use super::pou_objects::PouObjects;
 use super::report::{Outcome, ReportEntry};
+use super::sfc_nested::NestedBodies;
 use crate::body::BodyContent;
 use crate::body_object::{BodyObject, ObjectKind};
 use crate::connection::ConnectionPointIn;
@@ -68,17 +69,21 @@ pub(super) struct SfcChartBuilder<'o, 'p> {
     pub(super) last_step: String,
     /// The actions and transition objects the body adds to its POU.
     pub(super) pou_objects: &'p mut PouObjects,
+    /// The conversion of the bodies inside this one (inline actions, LD conditions).
+    pub(super) bodies: &'p mut dyn NestedBodies,
     /// Report lines about parts of the body (dropped comments, renamed objects, rewrites).
     pub(super) report: Vec<ReportEntry>,
 }
 
 impl<'o, 'p> SfcChartBuilder<'o, 'p> {
-    /// A builder for the SFC `objects` of the body at `body_path` (line `body_line`).
+    /// A builder for the SFC `objects` of the body at `body_path` (line `body_line`), adding
+    /// what it synthesizes to `pou_objects` and converting the bodies inside it with `bodies`.
     pub fn new(
         objects: &'o [BodyObject],
         body_path: &str,
         body_line: u32,
         pou_objects: &'p mut PouObjects,
+        bodies: &'p mut dyn NestedBodies,
     ) -> Self {
         let by_local_id = objects
             .iter()
@@ -117,6 +122,7 @@ impl<'o, 'p> SfcChartBuilder<'o, 'p> {
             depth: 0,
             last_step: String::new(),
             pou_objects,
+            bodies,
             report: Vec::new(),
         }
     }
@@ -480,7 +486,8 @@ impl<'o, 'p> SfcChartBuilder<'o, 'p> {
             "{}/macroStep[@localId='{}']/body/SFC",
             self.body_path, object.local_id
         );
-        let mut inner = SfcChartBuilder::new(objects, &path, object.line, self.pou_objects);
+        let mut inner =
+            SfcChartBuilder::new(objects, &path, object.line, self.pou_objects, self.bodies);
         inner.last_id = self.last_id;
         inner.depth = self.depth + 1;
         let first = objects.iter().find(|candidate| {

@@ -1,5 +1,7 @@
 //! A transition of an SFC graph and its condition → a [`Transition`] (docs/plcopen-xml.md
-//! §4.2): a reference, an inline body, or a wire from objects of the same body.
+//! §4.2): a reference, an inline body, or a wire from objects of the same body (an inVariable,
+//! contacts, an LD graph into a transition object of LD networks, an FBD graph into one of a
+//! CFC chart).
 
 use std::collections::{HashSet, VecDeque};
 
@@ -8,11 +10,13 @@ use project_model::{Body, PouAction, Transition};
 use super::body_fault::BodyFault;
 use super::cfc_chart::{CfcChartBuilder, CfcDialect};
 use super::converter::comment;
+use super::pous::BodyAt;
 use super::sfc_chart::SfcChartBuilder;
-use crate::body::BodyContent;
-use crate::body_object::{BodyObject, ObjectKind};
-use crate::connection::ConnectionPointIn;
-use crate::ld::Edge;
+use crate::add_data::AddData;
+use crate::body::{Body as XmlBody, BodyContent};
+use crate::body_object::{BodyObject, ObjectKind, Size};
+use crate::connection::{Connection, ConnectionPointIn};
+use crate::ld::{Coil, Edge};
 use crate::sfc::{Condition, ConditionForm, SfcTransition};
 
 /// A condition as the chart writes it.
@@ -70,9 +74,24 @@ impl<'o> SfcChartBuilder<'o, '_> {
                         }
                     }
                 },
+                // An IL condition ends with its value as the current result, as an IL
+                // transition object does (docs/instruction-list.md).
+                BodyContent::Il(text) => {
+                    let name = self.pou_objects.condition_name(&self.last_step.clone());
+                    self.pou_objects.transitions.push(PouAction {
+                        name: name.clone(),
+                        body: Body::Il {
+                            text: text.text.clone(),
+                        },
+                    });
+                    ConditionText {
+                        text: name,
+                        names_object: true,
+                    }
+                }
                 other => {
                     return Err(BodyFault::NotConverted(format!(
-                        "the inline condition of the transition at line {} is {}, which this import does not convert yet",
+                        "the inline condition of the transition at line {} is {}, whose body has no variable to write the condition to",
                         object.line,
                         other.language()
                     )));
@@ -89,8 +108,9 @@ impl<'o> SfcChartBuilder<'o, '_> {
         )
     }
 
-    /// A condition wired from objects of the body: an `inVariable`'s expression (CODESYS), or
-    /// a transition object whose CFC body is the FBD graph that drives the wire.
+    /// A condition wired from objects of the body: an `inVariable`'s expression (CODESYS), the
+    /// expression of contacts from a left rail, a transition object whose LD networks are the
+    /// LD graph that drives the wire, or one whose CFC body is the FBD graph that drives it.
     fn wired_condition(
         &mut self,
         object: &BodyObject,
@@ -133,7 +153,7 @@ impl<'o> SfcChartBuilder<'o, '_> {
                     names_object: false,
                 });
             }
-            return wired_ld_condition(object);
+            return self.ld_condition(object, connection, &graph);
         }
         let name = self.pou_objects.condition_name(&self.last_step.clone());
         let mut builder = CfcChartBuilder::new(
@@ -161,6 +181,103 @@ impl<'o> SfcChartBuilder<'o, '_> {
         self.pou_objects.transitions.push(PouAction {
             name: name.clone(),
             body: Body::Cfc { chart },
+        });
+        Ok(ConditionText {
+            text: name,
+            names_object: true,
+        })
+    }
+
+    /// A condition wired from an LD graph that is more than contacts (`graph`, the objects that
+    /// drive the wire `connection` into the condition of `transition`): a transition object
+    /// whose LD networks are the graph, with a coil writing the object's name at the wire's end.
+    fn ld_condition(
+        &mut self,
+        transition: &BodyObject,
+        connection: &Connection,
+        graph: &[&'o BodyObject],
+    ) -> Result<ConditionText, BodyFault> {
+        let name = self.pou_objects.condition_name(&self.last_step.clone());
+        let taken: HashSet<u64> = self.all_objects().iter().map(|o| o.local_id).collect();
+        // Any id no object of the body has: the body holds fewer ids than there are.
+        let mut coil_id = 0;
+        while taken.contains(&coil_id) {
+            coil_id += 1;
+        }
+        let coil = BodyObject {
+            local_id: coil_id,
+            execution_order_id: None,
+            global_id: None,
+            // Where the wire ends, so the networks order their branches as drawn.
+            position: transition.position,
+            size: Size::default(),
+            kind: ObjectKind::Coil(Coil {
+                variable: name.clone(),
+                negated: None,
+                edge: None,
+                storage: None,
+                input: Some(ConnectionPointIn {
+                    rel_position: None,
+                    connections: vec![connection.clone()],
+                    expression: None,
+                    add_data: AddData::default(),
+                }),
+                output: None,
+            }),
+            add_data: AddData::default(),
+            documentation: None,
+            line: transition.line,
+            column: transition.column,
+        };
+        let objects: Vec<BodyObject> = graph
+            .iter()
+            .map(|part| (*part).clone())
+            .chain([coil])
+            .collect();
+        let body = XmlBody {
+            worksheet_name: None,
+            global_id: None,
+            content: BodyContent::Ld(objects),
+            cfc: None,
+            add_data: AddData::default(),
+            documentation: None,
+            line: transition.line,
+        };
+        let holder = self.place(transition);
+        let at = BodyAt {
+            holder: &holder,
+            body_path: self.body_path.clone(),
+            objects_path: self.body_path.clone(),
+        };
+        let what = format!("condition '{name}'");
+        let converted = self
+            .bodies
+            .nested_body(&body, &at, &what, self.pou_objects)
+            .map_err(|fault| match fault {
+                BodyFault::NotConverted(reason) => BodyFault::NotConverted(format!(
+                    "the condition of the transition at line {} is wired from an LD graph that cannot be converted: {reason}",
+                    transition.line
+                )),
+                error @ BodyFault::Error(..) => error,
+            })?;
+        for part in graph {
+            self.used.insert(part.local_id);
+        }
+        let runs_with_state = graph.iter().any(|part| match &part.kind {
+            ObjectKind::Block(block) => block.instance_name.is_some(),
+            ObjectKind::Coil(_) => true,
+            _ => false,
+        });
+        if runs_with_state {
+            self.note(
+                transition,
+                what,
+                "Beremiz runs the blocks and coils of an SFC body every cycle; Rivet runs them when the transition is tested",
+            );
+        }
+        self.pou_objects.transitions.push(PouAction {
+            name: name.clone(),
+            body: converted,
         });
         Ok(ConditionText {
             text: name,
@@ -238,16 +355,6 @@ impl<'o> SfcChartBuilder<'o, '_> {
             .filter(|object| seen.contains(&object.local_id))
             .collect())
     }
-}
-
-/// A condition wired from an LD graph (contacts, coils, power rails): its transition object's
-/// body would be LD networks, which the LD/FBD part of the import builds. Until the lead wires
-/// that conversion in here, such a body is reported not converted.
-fn wired_ld_condition(transition: &BodyObject) -> Result<ConditionText, BodyFault> {
-    Err(BodyFault::NotConverted(format!(
-        "the condition of the transition at line {} is wired from an LD graph, which becomes a transition object once LD networks are imported",
-        transition.line
-    )))
 }
 
 /// Whether `kind` belongs to LD only.

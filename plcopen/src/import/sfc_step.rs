@@ -1,13 +1,12 @@
 //! A step of an SFC graph with its action blocks → a [`Step`] (docs/plcopen-xml.md §4.3).
 
-use project_model::{ActionAssociation, ActionQualifier, Body, Step};
+use project_model::{ActionAssociation, ActionQualifier, Step};
 
 use super::body_fault::BodyFault;
-use super::cfc_chart::{CfcDialect, fbd_graph_to_cfc};
 use super::converter::comment;
+use super::pous::BodyAt;
 use super::rivet_attributes::rivet_attributes;
 use super::sfc_chart::SfcChartBuilder;
-use crate::body::BodyContent;
 use crate::body_object::{BodyObject, ObjectKind};
 use crate::sfc::{ActionBlockAction, ActionContent, Qualifier};
 
@@ -81,30 +80,27 @@ impl SfcChartBuilder<'_, '_> {
         let name = match &action.content {
             ActionContent::Reference(name) => name.trim().to_owned(),
             ActionContent::Inline(body) => {
-                let converted = match &body.content {
-                    BodyContent::St(text) => Body::st(text.text.clone()),
-                    BodyContent::Fbd(objects) => {
-                        let path = format!(
-                            "{}/actionBlock[@localId='{}']/action/inline/FBD",
-                            self.body_path, block.local_id
-                        );
-                        Body::Cfc {
-                            chart: fbd_graph_to_cfc(
-                                objects,
-                                CfcDialect::Beremiz,
-                                &path,
-                                body.line,
-                            )?,
-                        }
-                    }
-                    other => {
-                        return Err(BodyFault::NotConverted(format!(
-                            "an inline action of step `{step}` (line {}) is {}, which this import does not convert inside an SFC body yet",
-                            block.line,
-                            other.language()
-                        )));
-                    }
+                let body_path = format!(
+                    "{}/actionBlock[@localId='{}']/action/inline",
+                    self.body_path, block.local_id
+                );
+                let holder = self.place(block);
+                let at = BodyAt {
+                    holder: &holder,
+                    objects_path: format!("{body_path}/{}", body.content.language()),
+                    body_path,
                 };
+                let what = format!("inline action of step '{step}'");
+                let converted = self
+                    .bodies
+                    .nested_body(body, &at, &what, self.pou_objects)
+                    .map_err(|fault| match fault {
+                        BodyFault::NotConverted(reason) => BodyFault::NotConverted(format!(
+                            "an inline action of step `{step}` (line {}) cannot be converted: {reason}",
+                            block.line
+                        )),
+                        error @ BodyFault::Error(..) => error,
+                    })?;
                 self.pou_objects.inline_action(step, converted)
             }
         };

@@ -556,35 +556,300 @@ fn a_chain_of_choices_becomes_a_flat_sequence_and_a_too_deep_one_an_error() {
     );
 }
 
-#[test]
-fn an_inline_fbd_action_becomes_a_cfc_action_and_an_inline_ld_one_waits() {
-    let fbd = r#"<inline><FBD>
-        <inVariable localId="1"><position x="10" y="10"/><connectionPointOut/><expression>TRUE</expression></inVariable>
-        <outVariable localId="2"><position x="60" y="10"/><connectionPointIn><connection refLocalId="1"/></connectionPointIn><expression>go</expression></outVariable>
-      </FBD></inline>"#;
-    let objects = [
+/// A step `A` whose action block holds one inline action with `inline` (an `inline` element),
+/// then a transition `go` and a jump back.
+fn inline_action_chart(inline: &str) -> String {
+    [
         step(1, "A", true, None),
         format!(
-            r#"<actionBlock localId="9"><connectionPointIn><connection refLocalId="1"/></connectionPointIn><action localId="0">{fbd}</action></actionBlock>"#
+            r#"<actionBlock localId="9"><connectionPointIn><connection refLocalId="1"/></connectionPointIn><action localId="0">{inline}</action></actionBlock>"#
         ),
         transition(2, 1, &inline_st("go")),
         jump(3, 2, "A"),
     ]
-    .join("\n");
-    let converted = imported(&document(&objects, ""));
-    let seq = pou(&converted, "Seq");
+    .join("\n")
+}
+
+/// The one action of `Seq` in `imported` (named `A_INLINE1_2`: the test's POU declares a
+/// variable `A_INLINE1`).
+fn inline_action(imported: &Imported) -> &project_model::PouAction {
+    let seq = pou(imported, "Seq");
     let [action] = seq.actions.as_slice() else {
-        panic!("{:?}", seq.actions)
+        panic!("{:?}\n{:#?}", seq.actions, imported.report)
     };
     assert_eq!(action.name, "A_INLINE1_2");
-    assert!(matches!(&action.body, Body::Cfc { chart } if chart.elements.len() == 2));
+    action
+}
 
-    let ld = objects.replace(fbd, r#"<inline><LD/></inline>"#);
-    let waiting = imported(&document(&ld, ""));
-    let entry = waiting.report.entry("POU 'Seq'");
+/// An inline LD body: a contact `go` from a left rail drives the coil `A_INLINE1`.
+const INLINE_LD: &str = r#"<inline><LD>
+        <leftPowerRail localId="1"><position x="10" y="10"/><connectionPointOut formalParameter=""/></leftPowerRail>
+        <contact localId="2"><position x="40" y="10"/><connectionPointIn><connection refLocalId="1"/></connectionPointIn><connectionPointOut/><variable>go</variable></contact>
+        <coil localId="3"><position x="90" y="10"/><connectionPointIn><connection refLocalId="2"/></connectionPointIn><connectionPointOut/><variable>A_INLINE1</variable></coil>
+      </LD></inline>"#;
+
+#[test]
+fn inline_ld_fbd_and_il_actions_become_actions_in_their_language() {
+    let ld = imported(&document(&inline_action_chart(INLINE_LD), ""));
+    let Body::Ld { networks } = &inline_action(&ld).body else {
+        panic!("{:?}", inline_action(&ld).body)
+    };
+    let [network] = networks.as_slice() else {
+        panic!("{networks:?}")
+    };
+    assert!(
+        matches!(network.rung.as_slice(), [project_model::FlowNode::Operand(go)] if go.text == "go"),
+        "{network:?}"
+    );
+    assert!(
+        matches!(network.outputs.as_slice(), [project_model::NetworkOutput::Coil(coil)] if coil.variable == "A_INLINE1"),
+        "{network:?}"
+    );
+    let step = &chart(pou(&ld, "Seq")).sequence[0];
+    assert!(
+        matches!(step, SfcNode::Step(a) if a.actions[0].action == "A_INLINE1_2"),
+        "{step:?}"
+    );
+
+    let fbd = r#"<inline><FBD>
+        <inVariable localId="1"><position x="10" y="10"/><connectionPointOut/><expression>TRUE</expression></inVariable>
+        <outVariable localId="2"><position x="60" y="10"/><connectionPointIn><connection refLocalId="1"/></connectionPointIn><expression>go</expression></outVariable>
+      </FBD></inline>"#;
+    let networks = imported(&document(&inline_action_chart(fbd), ""));
+    assert!(
+        matches!(&inline_action(&networks).body, Body::Fbd { networks } if networks.len() == 1),
+        "{:?}",
+        inline_action(&networks).body
+    );
+
+    let il = r#"<inline><IL><xhtml:p><![CDATA[LD go
+ST A_INLINE1]]></xhtml:p></IL></inline>"#;
+    let text = imported(&document(&inline_action_chart(il), ""));
+    assert_eq!(
+        inline_action(&text).body,
+        Body::Il {
+            text: "LD go\nST A_INLINE1".to_owned()
+        }
+    );
+}
+
+#[test]
+fn an_inline_fbd_action_with_feedback_becomes_a_cfc_action_with_a_note() {
+    // ADD reads its own output through a connector: no network holds that loop.
+    let looped = r#"<inline><FBD>
+        <inVariable localId="1"><position x="10" y="10"/><connectionPointOut/><expression>1</expression></inVariable>
+        <continuation localId="2" name="loop"><position x="10" y="40"/><connectionPointOut/></continuation>
+        <block localId="3" typeName="ADD"><position x="60" y="10"/>
+          <inputVariables>
+            <variable formalParameter="IN1"><connectionPointIn><connection refLocalId="1"/></connectionPointIn></variable>
+            <variable formalParameter="IN2"><connectionPointIn><connection refLocalId="2"/></connectionPointIn></variable>
+          </inputVariables><inOutVariables/>
+          <outputVariables><variable formalParameter="OUT"><connectionPointOut/></variable></outputVariables>
+        </block>
+        <connector localId="4" name="loop"><position x="120" y="40"/><connectionPointIn><connection refLocalId="3" formalParameter="OUT"/></connectionPointIn></connector>
+      </FBD></inline>"#;
+    let imported = imported(&document(&inline_action_chart(looped), ""));
+    assert!(
+        matches!(&inline_action(&imported).body, Body::Cfc { chart } if chart.elements.len() == 4),
+        "{:?}",
+        inline_action(&imported).body
+    );
+    let note = imported
+        .report
+        .entry("FBD body of inline action of step 'A'");
+    assert!(
+        note.is_some_and(|entry| entry.note.contains("imported as a CFC chart")
+            && entry
+                .path
+                .ends_with("/actionBlock[@localId='9']/action/inline")),
+        "{note:?}"
+    );
+}
+
+#[test]
+fn a_wrong_inline_ld_action_is_an_error_at_its_object_inside_the_action() {
+    // The coil has nothing before it.
+    let dangling = INLINE_LD.replace(
+        r#"<connectionPointIn><connection refLocalId="2"/></connectionPointIn><connectionPointOut/><variable>A_INLINE1"#,
+        r#"<connectionPointOut/><variable>A_INLINE1"#,
+    );
+    assert_ne!(dangling, INLINE_LD);
+    let refused = error(&document(&inline_action_chart(&dangling), ""));
+    assert!(
+        refused
+            .path
+            .ends_with("/body/SFC/actionBlock[@localId='9']/action/inline/LD/coil[@localId='3']"),
+        "{}",
+        refused.path
+    );
+    assert!(
+        matches!(&*refused.kind, ImportErrorKind::Network(_)),
+        "{refused}"
+    );
+}
+
+/// A left rail, a contact `go` with `edge`, a coil `seen` and a contact `A_INLINE1` in series,
+/// wired into the condition of the transition 2 (after step 1 `A`), then a jump back.
+fn ld_wired_chart(edge: &str) -> String {
+    [
+        step(1, "A", true, None),
+        r#"<leftPowerRail localId="10"><position x="10" y="100"/><connectionPointOut formalParameter=""/></leftPowerRail>"#.to_owned(),
+        format!(
+            r#"<contact localId="11"{edge}><position x="40" y="100"/><connectionPointIn><connection refLocalId="10"/></connectionPointIn><connectionPointOut/><variable>go</variable></contact>"#
+        ),
+        r#"<coil localId="12"><position x="80" y="100"/><connectionPointIn><connection refLocalId="11"/></connectionPointIn><connectionPointOut/><variable>seen</variable></coil>"#.to_owned(),
+        r#"<contact localId="13"><position x="120" y="100"/><connectionPointIn><connection refLocalId="12"/></connectionPointIn><connectionPointOut/><variable>A_INLINE1</variable></contact>"#.to_owned(),
+        r#"<transition localId="2"><position x="160" y="100"/><connectionPointIn><connection refLocalId="1"/></connectionPointIn><connectionPointOut/><condition><connectionPointIn><connection refLocalId="13"/></connectionPointIn></condition></transition>"#.to_owned(),
+        jump(3, 2, "A"),
+    ]
+    .join("\n")
+}
+
+#[test]
+fn a_condition_wired_from_an_ld_graph_becomes_a_transition_object_of_ld_networks() {
+    let imported = imported(&document(&ld_wired_chart(r#" edge="rising""#), ""));
+    let seq = pou(&imported, "Seq");
+    assert_eq!(
+        outline(&chart(seq).sequence),
+        "S:A T:A_CONDITION1 J:A",
+        "{:#?}",
+        imported.report
+    );
+    let [condition] = seq.transitions.as_slice() else {
+        panic!("{:?}", seq.transitions)
+    };
+    assert_eq!(condition.name, "A_CONDITION1");
+    let Body::Ld { networks } = &condition.body else {
+        panic!("{:?}", condition.body)
+    };
+    // go (rising) → seen, then A_INLINE1 → the object's own name: the coils in series.
+    let [network] = networks.as_slice() else {
+        panic!("{networks:?}")
+    };
+    assert!(
+        matches!(network.rung.as_slice(), [project_model::FlowNode::Operand(go)]
+            if go.text == "go" && go.edge == project_model::Edge::Rising),
+        "{network:#?}"
+    );
+    let text = format!("{network:?}");
+    for part in ["\"seen\"", "\"A_INLINE1\"", "\"A_CONDITION1\""] {
+        assert!(text.contains(part), "{part}: {network:#?}");
+    }
+    assert!(project_model::network_problems(networks).is_empty());
+    // The coil runs only when the transition is tested: the report says so.
+    let note = imported.report.entry("condition 'A_CONDITION1'");
+    assert!(
+        note.is_some_and(|entry| entry.outcome == Outcome::Converted
+            && entry.note.contains("when the transition is tested")),
+        "{:#?}",
+        imported.report
+    );
+    assert!(
+        imported
+            .report
+            .with_outcome(Outcome::NotConverted)
+            .all(|entry| !entry.path.contains("pou[@name='Seq']")),
+        "{:#?}",
+        imported.report
+    );
+    // A negated condition calls the object under NOT.
+    let negated = ld_wired_chart("").replace(
+        "<condition><connectionPointIn>",
+        r#"<condition negated="true"><connectionPointIn>"#,
+    );
+    let imported = self::imported(&document(&negated, ""));
+    assert_eq!(
+        outline(&chart(pou(&imported, "Seq")).sequence),
+        "S:A T:NOT A_CONDITION1() J:A"
+    );
+}
+
+#[test]
+fn an_ld_condition_that_is_no_network_leaves_the_pou_not_converted_with_the_reason() {
+    // A box whose value input is powered by the contact's power as well as its EN: a contact's
+    // power that also drives a box's value input is no network (docs/plcopen-xml.md §3.6).
+    let objects = [
+        step(1, "A", true, None),
+        r#"<leftPowerRail localId="10"><position x="10" y="100"/><connectionPointOut formalParameter=""/></leftPowerRail>"#.to_owned(),
+        r#"<contact localId="11"><position x="40" y="100"/><connectionPointIn><connection refLocalId="10"/></connectionPointIn><connectionPointOut/><variable>go</variable></contact>"#.to_owned(),
+        r#"<block localId="12" typeName="AND"><position x="80" y="100"/>
+          <inputVariables>
+            <variable formalParameter="EN"><connectionPointIn><connection refLocalId="11"/></connectionPointIn></variable>
+            <variable formalParameter="IN1"><connectionPointIn><connection refLocalId="11"/></connectionPointIn></variable>
+            <variable formalParameter="IN2"><connectionPointIn><connection refLocalId="11"/></connectionPointIn></variable>
+          </inputVariables><inOutVariables/>
+          <outputVariables><variable formalParameter="ENO"><connectionPointOut/></variable><variable formalParameter="OUT"><connectionPointOut/></variable></outputVariables>
+        </block>"#.to_owned(),
+        r#"<transition localId="2"><position x="160" y="100"/><connectionPointIn><connection refLocalId="1"/></connectionPointIn><connectionPointOut/><condition><connectionPointIn><connection refLocalId="12" formalParameter="OUT"/></connectionPointIn></condition></transition>"#.to_owned(),
+        jump(3, 2, "A"),
+    ]
+    .join("\n");
+    let imported = imported(&document(&objects, ""));
+    let entry = imported.report.entry("POU 'Seq'");
     assert!(
         entry.is_some_and(|entry| entry.outcome == Outcome::NotConverted
-            && entry.note.contains("inline action of step `A`")),
+            && entry
+                .note
+                .contains("wired from an LD graph that cannot be converted")
+            && entry.note.contains("not a set of networks")),
         "{entry:?}"
     );
+}
+
+#[test]
+fn an_inline_il_condition_becomes_an_il_transition_object_and_an_inline_ld_one_is_reported() {
+    let il = r#"<inline name=""><IL><xhtml:p><![CDATA[LD go
+AND A_INLINE1]]></xhtml:p></IL></inline>"#;
+    let objects = [
+        step(1, "A", true, None),
+        transition(2, 1, il),
+        jump(3, 2, "A"),
+    ]
+    .join("\n");
+    let imported = imported(&document(&objects, ""));
+    let seq = pou(&imported, "Seq");
+    assert_eq!(outline(&chart(seq).sequence), "S:A T:A_CONDITION1 J:A");
+    assert_eq!(
+        seq.transitions
+            .iter()
+            .map(|transition| (transition.name.as_str(), &transition.body))
+            .collect::<Vec<_>>(),
+        [(
+            "A_CONDITION1",
+            &Body::Il {
+                text: "LD go\nAND A_INLINE1".to_owned()
+            }
+        )]
+    );
+
+    let ld = objects.replace(il, r#"<inline name=""><LD/></inline>"#);
+    let reported = self::imported(&document(&ld, ""));
+    let entry = reported.report.entry("POU 'Seq'");
+    assert!(
+        entry.is_some_and(|entry| entry.outcome == Outcome::NotConverted
+            && entry.note.contains("no variable to write the condition to")),
+        "{entry:?}"
+    );
+}
+
+#[test]
+fn ld_conditions_and_inline_ld_actions_come_back_from_the_plain_export() {
+    let objects = ld_wired_chart(r#" edge="rising""#).replace(
+        &step(1, "A", true, None),
+        &format!(
+            r#"{}<actionBlock localId="9"><connectionPointIn><connection refLocalId="1"/></connectionPointIn><action localId="0">{INLINE_LD}</action></actionBlock>"#,
+            step(1, "A", true, None)
+        ),
+    );
+    let first = imported(&document(&objects, ""));
+    let options = crate::ExportOptions {
+        object_entries: false,
+    };
+    let xml = crate::export_with(&first.project, options).unwrap_or_else(|error| panic!("{error}"));
+    let document = crate::read_bytes(&xml, "plain.xml").unwrap_or_else(|error| panic!("{error}"));
+    let again = import(&document).unwrap_or_else(|error| panic!("{error}"));
+    let seq = pou(&first, "Seq");
+    assert_eq!(seq.actions.len(), 1, "{:?}", seq.actions);
+    assert_eq!(seq.transitions.len(), 1, "{:?}", seq.transitions);
+    assert_eq!(pou(&again, "Seq"), seq);
 }

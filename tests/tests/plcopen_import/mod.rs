@@ -531,3 +531,162 @@ fn matiec_sfc_test_steps_into_its_first_step() {
     assert_eq!(read(&simulation, "MAIN_TEST.STEP1.x"), "TRUE");
     assert_eq!(read(&simulation, "MAIN_TEST.QX1"), "TRUE");
 }
+
+/// A function block `Seq` in SFC as Beremiz draws it: step `A` leaves for `B` on a condition
+/// wired from an LD rung (contact `go`, coil `seen`, contact `enable`), and `B`, whose inline LD
+/// action copies `go` into `held`, goes back to `A` on `NOT go`.
+const LD_IN_SFC: &str = r#"<?xml version="1.0" encoding="UTF-8"?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0201" xmlns:xhtml="http://www.w3.org/1999/xhtml">
+  <fileHeader companyName="c" productName="p" productVersion="1" creationDateTime="2024-01-01T00:00:00"/>
+  <contentHeader name="n"><coordinateInfo><fbd><scaling x="0" y="0"/></fbd><ld><scaling x="0" y="0"/></ld><sfc><scaling x="0" y="0"/></sfc></coordinateInfo></contentHeader>
+  <types><dataTypes/><pous><pou name="Seq" pouType="functionBlock">
+    <interface>
+      <inputVars><variable name="go"><type><BOOL/></type></variable><variable name="enable"><type><BOOL/></type></variable></inputVars>
+      <outputVars><variable name="seen"><type><BOOL/></type></variable><variable name="held"><type><BOOL/></type></variable></outputVars>
+    </interface>
+    <body><SFC>
+      <step localId="1" name="A" initialStep="true"><position x="100" y="10"/><connectionPointOut/></step>
+      <leftPowerRail localId="10"><position x="10" y="60"/><connectionPointOut formalParameter=""/></leftPowerRail>
+      <contact localId="11"><position x="30" y="60"/><connectionPointIn><connection refLocalId="10"/></connectionPointIn><connectionPointOut/><variable>go</variable></contact>
+      <coil localId="12"><position x="60" y="60"/><connectionPointIn><connection refLocalId="11"/></connectionPointIn><connectionPointOut/><variable>seen</variable></coil>
+      <contact localId="13"><position x="80" y="60"/><connectionPointIn><connection refLocalId="12"/></connectionPointIn><connectionPointOut/><variable>enable</variable></contact>
+      <transition localId="2"><position x="100" y="60"/><connectionPointIn><connection refLocalId="1"/></connectionPointIn><connectionPointOut/><condition><connectionPointIn><connection refLocalId="13"/></connectionPointIn></condition></transition>
+      <step localId="4" name="B"><position x="100" y="110"/><connectionPointIn><connection refLocalId="2"/></connectionPointIn><connectionPointOut/><connectionPointOutAction/></step>
+      <actionBlock localId="7"><position x="150" y="110"/><connectionPointIn><connection refLocalId="4"/></connectionPointIn>
+        <action localId="0" qualifier="N"><inline><LD>
+          <leftPowerRail localId="1"><position x="0" y="0"/><connectionPointOut formalParameter=""/></leftPowerRail>
+          <contact localId="2"><position x="20" y="0"/><connectionPointIn><connection refLocalId="1"/></connectionPointIn><connectionPointOut/><variable>go</variable></contact>
+          <coil localId="3"><position x="60" y="0"/><connectionPointIn><connection refLocalId="2"/></connectionPointIn><connectionPointOut/><variable>held</variable></coil>
+        </LD></inline></action>
+      </actionBlock>
+      <transition localId="5"><position x="100" y="160"/><connectionPointIn><connection refLocalId="4"/></connectionPointIn><connectionPointOut/><condition><inline name=""><ST><xhtml:p><![CDATA[NOT go]]></xhtml:p></ST></inline></condition></transition>
+      <jumpStep localId="6" targetName="A"><position x="100" y="210"/><connectionPointIn><connection refLocalId="5"/></connectionPointIn></jumpStep>
+    </SFC></body>
+  </pou></pous></types>
+  <instances><configurations/></instances>
+</project>
+"#;
+
+/// The chart of [`LD_IN_SFC`], imported, runs: its wired LD condition became a transition
+/// object of LD networks, its inline LD action an action, and both behave as drawn.
+#[test]
+fn an_imported_sfc_with_an_ld_condition_and_an_inline_ld_action_runs_as_drawn() {
+    let document =
+        plcopen::read(LD_IN_SFC, "ld_in_sfc.xml").unwrap_or_else(|error| panic!("{error}"));
+    let imported = plcopen::import(&document).unwrap_or_else(|error| panic!("{error}"));
+    let not_converted: Vec<_> = imported
+        .report
+        .with_outcome(plcopen::Outcome::NotConverted)
+        .collect();
+    assert!(not_converted.is_empty(), "{not_converted:#?}");
+    let main = compiler::SourceProject::new(
+        "PROGRAM Main
+VAR fb : Seq; cycle : INT; END_VAR
+cycle := cycle + 1;
+fb(go := cycle >= 3 AND cycle <= 8, enable := cycle >= 5);
+END_PROGRAM
+",
+    )
+    .project;
+    let mut project = imported.project;
+    project
+        .application
+        .children
+        .extend(main.application.children);
+    let mut simulation = simulation_of(&project);
+    let mut seen = Vec::new();
+    for _ in 0..12 {
+        simulation.run(1);
+        assert!(simulation.faults().is_empty(), "{:?}", simulation.faults());
+        let read = |path: &str| {
+            runtime::value::read(simulation.engine(), path)
+                .unwrap_or_else(|error| panic!("{path}: {error}"))
+                .to_string()
+        };
+        let step = if read("Main.fb.A.x") == "TRUE" {
+            "A"
+        } else {
+            "B"
+        };
+        seen.push(format!(
+            "{step} {} {}",
+            read("Main.fb.seen"),
+            read("Main.fb.held")
+        ));
+    }
+    // `seen` follows `go` while `A` is tested; the condition holds from cycle 5 (go and
+    // enable), so `B` is active from cycle 6, its action copies `go` into `held` (one last run
+    // when `go` falls at cycle 9), and `NOT go` brings the chart back to `A`.
+    let expected = [
+        "A FALSE FALSE",
+        "A FALSE FALSE",
+        "A TRUE FALSE",
+        "A TRUE FALSE",
+        "A TRUE FALSE",
+        "B TRUE TRUE",
+        "B TRUE TRUE",
+        "B TRUE TRUE",
+        "B TRUE FALSE",
+        "A FALSE FALSE",
+        "A FALSE FALSE",
+        "A FALSE FALSE",
+    ];
+    assert_eq!(seen, expected);
+}
+
+/// A function block `Counter` in CODESYS's CFC counting as Beremiz draws a counter: `ADD(a, 1)` into
+/// an in-out `a`, whose output `b` reads.
+const IN_OUT_CFC: &str = r#"<?xml version="1.0" encoding="UTF-8"?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0200" xmlns:xhtml="http://www.w3.org/1999/xhtml">
+  <fileHeader companyName="c" productName="CODESYS" productVersion="1" creationDateTime="2024-01-01T00:00:00"/>
+  <contentHeader name="n"><coordinateInfo><fbd><scaling x="1" y="1"/></fbd><ld><scaling x="1" y="1"/></ld><sfc><scaling x="1" y="1"/></sfc></coordinateInfo></contentHeader>
+  <types><dataTypes/><pous><pou name="Counter" pouType="functionBlock">
+    <interface><localVars><variable name="a"><type><INT/></type></variable><variable name="b"><type><INT/></type></variable></localVars></interface>
+    <body><ST><xhtml xmlns="http://www.w3.org/1999/xhtml"/></ST><addData><data name="http://www.3s-software.com/plcopenxml/cfc" handleUnknown="implementation"><CFC>
+      <inVariable localId="1"><position x="1" y="2"/><connectionPointOut/><expression>1</expression></inVariable>
+      <block localId="3" typeName="ADD" executionOrderId="1"><position x="6" y="1"/>
+        <inputVariables>
+          <variable formalParameter="IN1"><connectionPointIn><connection refLocalId="4"/></connectionPointIn></variable>
+          <variable formalParameter="IN2"><connectionPointIn><connection refLocalId="1"/></connectionPointIn></variable>
+        </inputVariables><inOutVariables/>
+        <outputVariables><variable formalParameter="OUT"><connectionPointOut/></variable></outputVariables>
+      </block>
+      <inOutVariable localId="4" executionOrderId="2"><position x="12" y="1"/><connectionPointIn><connection refLocalId="3" formalParameter="OUT"/></connectionPointIn><connectionPointOut/><expression>a</expression></inOutVariable>
+      <outVariable localId="5" executionOrderId="3"><position x="20" y="1"/><connectionPointIn><connection refLocalId="4"/></connectionPointIn><expression>b</expression></outVariable>
+    </CFC></data></addData></body>
+  </pou></pous></types>
+  <instances><configurations/></instances>
+</project>
+"#;
+
+/// The in-out of [`IN_OUT_CFC`], imported as an output and an input of `a`, counts: `ADD`
+/// reads the previous cycle's `a`, and `b` the new one.
+#[test]
+fn an_imported_cfc_in_out_variable_counts_and_is_read_after_its_write() {
+    let document =
+        plcopen::read(IN_OUT_CFC, "in_out.xml").unwrap_or_else(|error| panic!("{error}"));
+    let mut project = plcopen::import(&document)
+        .unwrap_or_else(|error| panic!("{error}"))
+        .project;
+    let main = compiler::SourceProject::new(
+        "PROGRAM Main
+VAR counter : Counter; END_VAR
+counter();
+END_PROGRAM
+",
+    )
+    .project;
+    project
+        .application
+        .children
+        .extend(main.application.children);
+    let mut simulation = simulation_of(&project);
+    simulation.run(5);
+    assert!(simulation.faults().is_empty(), "{:?}", simulation.faults());
+    let values = ["Main.counter.a", "Main.counter.b"].map(|path| {
+        runtime::value::read(simulation.engine(), path)
+            .unwrap_or_else(|error| panic!("{path}: {error}"))
+            .to_string()
+    });
+    assert_eq!(values, ["5", "5"]);
+}
