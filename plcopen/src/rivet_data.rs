@@ -32,6 +32,11 @@ pub(crate) const LANGUAGE_ENTRY: &str = "https://rivet-plc.dev/plcopen/1/languag
 /// gives the chain and the group back rather than boxes (§5.2).
 pub(crate) const GATE_ENTRY: &str = "https://rivet-plc.dev/plcopen/1/gate";
 
+/// The entry of a box first in a rung or an input's source whose first input has a source of
+/// its own: `<source pin="IN"/>`, so the import gives that source back to the pin rather than as
+/// the chain before the box, which the lowering treats as power (§5.2).
+pub(crate) const SOURCE_ENTRY: &str = "https://rivet-plc.dev/plcopen/1/source";
+
 /// The entry of an SFC step's `addData` with what PLCopen has no attribute for:
 /// `<step minTime maxTime entryAction mainAction exitAction comment/>`, empty ones left out.
 pub(crate) const STEP_ENTRY: &str = "https://rivet-plc.dev/plcopen/1/step";

@@ -5,9 +5,6 @@
 //! of the spellings; the export and the import agree on this one (`docs/plcopen-xml.md` §3.4).
 //! Each rule keeps every element and the order in which the lowering runs them:
 //!
-//! - a box first in a rung or in an input's source whose first input has a source of its own
-//!   takes that source as the chain before it (the power into a chain's start is the rail, or
-//!   nothing in a source, and the lowering ignores either when the first input has a source);
 //! - a parallel branch that is one parallel group gives its branches to the enclosing group
 //!   (OR is associative), and a parallel group of one branch is that branch's chain;
 //! - an output branch without elements gives its outputs to the enclosing list in its place,
@@ -39,28 +36,24 @@ pub fn normalize_network(network: &mut Network) {
         outputs = inner;
     }
     network.outputs = outputs;
-    normalize_chain(&mut network.rung, true);
+    normalize_chain(&mut network.rung);
 }
 
-/// Normalizes a chain; `starts_fresh` tells whether the power into its first element is the
-/// rail or nothing (a rung, an input's source) rather than the power of elements before it.
-fn normalize_chain(chain: &mut Vec<FlowNode>, starts_fresh: bool) {
-    if starts_fresh {
-        hoist_first_source(chain);
-    }
+/// Normalizes a chain and the chains inside it.
+fn normalize_chain(chain: &mut Vec<FlowNode>) {
     let mut nodes = Vec::with_capacity(chain.len());
     for mut node in std::mem::take(chain) {
         match &mut node {
             FlowNode::Operand(_) => {}
             FlowNode::Block(block) => {
                 for input in &mut block.inputs {
-                    normalize_chain(&mut input.source, true);
+                    normalize_chain(&mut input.source);
                 }
             }
             FlowNode::Parallel(parallel) => {
                 let mut branches = Vec::with_capacity(parallel.branches.len());
                 for mut branch in std::mem::take(&mut parallel.branches) {
-                    normalize_chain(&mut branch.rung, false);
+                    normalize_chain(&mut branch.rung);
                     match branch.rung.as_mut_slice() {
                         [FlowNode::Parallel(inner)] => {
                             branches.append(&mut inner.branches);
@@ -78,24 +71,6 @@ fn normalize_chain(chain: &mut Vec<FlowNode>, starts_fresh: bool) {
         nodes.push(node);
     }
     *chain = nodes;
-}
-
-/// While the chain starts with a box whose first input has a source, moves that source before
-/// the box.
-fn hoist_first_source(chain: &mut Vec<FlowNode>) {
-    loop {
-        let Some(FlowNode::Block(block)) = chain.first_mut() else {
-            return;
-        };
-        let Some(first) = block.inputs.first_mut() else {
-            return;
-        };
-        if first.source.is_empty() {
-            return;
-        }
-        let source = std::mem::take(&mut first.source);
-        chain.splice(0..0, source);
-    }
 }
 
 /// Normalizes the outputs of a rung or branch: the chains of branches, and the outputs of
@@ -124,7 +99,7 @@ fn normalize_outputs(outputs: &mut Vec<NetworkOutput>) {
                     rung.extend(more);
                     inner = last;
                 }
-                normalize_chain(&mut rung, false);
+                normalize_chain(&mut rung);
                 flat.push(NetworkOutput::Branch {
                     id,
                     rung,
@@ -195,44 +170,42 @@ mod tests {
     }
 
     #[test]
-    fn the_source_of_a_first_box_in_a_rung_moves_before_it_recursively() {
-        let inner = block(2, vec![operand(3, "a")]);
-        let network = Network {
-            rung: vec![block(1, vec![inner]), operand(4, "b")],
-            ..Network::default()
-        };
-        let Network { rung, .. } = normalized(&network);
-        assert_eq!(
-            rung,
+    fn a_source_of_a_first_box_stays_at_its_pin_and_nested_chains_are_normalized() {
+        // The lowering takes what stands before a box as power, a first input's own source as
+        // a value: the two spellings differ, so both stay as they are.
+        let nested = parallel(
+            5,
             vec![
-                operand(3, "a"),
-                block(2, vec![]),
-                block(1, vec![]),
-                operand(4, "b")
-            ]
+                vec![parallel(
+                    6,
+                    vec![vec![operand(7, "c")], vec![operand(8, "d")]],
+                )],
+                vec![operand(9, "e")],
+            ],
         );
-    }
-
-    #[test]
-    fn a_box_after_other_elements_keeps_its_chain_and_a_source_of_a_later_input_stays() {
-        let mut later = block(2, vec![]);
-        if let FlowNode::Block(call) = &mut later {
-            call.inputs[1].source = vec![block(3, vec![operand(4, "c")])];
-        }
         let network = Network {
-            rung: vec![operand(1, "a"), later],
+            rung: vec![block(1, vec![operand(2, "a")]), operand(3, "b")],
             ..Network::default()
         };
-        let Network { rung, .. } = normalized(&network);
-        let FlowNode::Block(call) = &rung[1] else {
-            panic!("{rung:?}")
+        assert_eq!(normalized(&network), network);
+        let with_group = Network {
+            rung: vec![block(1, vec![nested])],
+            ..Network::default()
         };
-        // The box in the second input's source is first in that source: its source moves too.
+        let FlowNode::Block(call) = &normalized(&with_group).rung[0] else {
+            panic!("not a box")
+        };
         assert_eq!(
-            call.inputs[1].source,
-            vec![operand(4, "c"), block(3, vec![])]
+            call.inputs[0].source,
+            vec![parallel(
+                5,
+                vec![
+                    vec![operand(7, "c")],
+                    vec![operand(8, "d")],
+                    vec![operand(9, "e")]
+                ]
+            )]
         );
-        assert_eq!(rung[0], operand(1, "a"));
     }
 
     #[test]

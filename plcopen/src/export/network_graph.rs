@@ -10,7 +10,7 @@ use project_model::{
 
 use super::error::ExportError;
 use super::xml_writer::XmlWriter;
-use crate::rivet_data::{GATE_ENTRY, RIVET_NAMESPACE};
+use crate::rivet_data::{GATE_ENTRY, RIVET_NAMESPACE, SOURCE_ENTRY};
 
 /// Grid units between two columns and two rows (positions are grid units × 10).
 const COLUMN_WIDTH: i64 = 10;
@@ -277,6 +277,21 @@ impl<'x> NetworkGraph<'x> {
             self.xml.end("variable")?;
         }
         self.xml.end("outputVariables")?;
+        if let Some(first) = block.inputs.first()
+            && !first.source.is_empty()
+        {
+            self.xml.start("addData", &[])?;
+            self.xml.start(
+                "data",
+                &[("name", SOURCE_ENTRY), ("handleUnknown", "discard")],
+            )?;
+            self.xml.empty(
+                "source",
+                &[("xmlns", RIVET_NAMESPACE), ("pin", first.pin.as_str())],
+            )?;
+            self.xml.end("data")?;
+            self.xml.end("addData")?;
+        }
         self.xml.end("block")?;
         let after = source_column + 1;
         for pin in block.outputs.iter().filter(|pin| !pin.assign.is_empty()) {

@@ -356,7 +356,9 @@ impl<'g, 'b> NetworkBuilder<'g, 'b> {
                 self.add_gate(object);
             }
             ObjectKind::Block(block) => {
-                let from = if graph.inputs[object].is_empty() {
+                // A box whose first input has a source of its own starts its chain.
+                let own_source = graph.has_own_first_source(object);
+                let from = if graph.inputs[object].is_empty() || own_source {
                     0
                 } else {
                     self.input_point(object, 0).unwrap_or(0)
@@ -368,7 +370,8 @@ impl<'g, 'b> NetworkBuilder<'g, 'b> {
                     label: EdgeLabel::Object(object),
                     key,
                 });
-                for input in 1..graph.inputs[object].len() {
+                let first_value = if own_source { 0 } else { 1 };
+                for input in first_value..graph.inputs[object].len() {
                     if let Some(point) = self.input_point(object, input) {
                         self.value_uses[point] += 1;
                     }

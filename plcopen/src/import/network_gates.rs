@@ -1,8 +1,8 @@
-//! The FBD boxes Rivet's export writes for what its networks have no box for
-//! (`docs/plcopen-xml.md` §3.4, §5.2): the `AND` of a chain's operand and the `OR` of a parallel
-//! group, each marked with Rivet's `…/gate` entry. The import reads them back as the chain and
-//! the group; a marked box whose wires no longer fit the mark (another tool edited them) is an
-//! ordinary box.
+//! The marks Rivet's export puts on boxes (`docs/plcopen-xml.md` §3.4, §5.2): the FBD boxes
+//! written for what its networks have no box for, the `AND` of a chain's operand and the `OR` of
+//! a parallel group, each marked with Rivet's `…/gate` entry, which the import reads back as the
+//! chain and the group; and a box's first input driven by a source of its own (`…/source`). A
+//! marked box whose wires no longer fit the mark (another tool edited them) is an ordinary box.
 
 use super::network_graph::{InputPoint, Producer};
 use super::rivet_attributes::rivet_attributes;
@@ -65,4 +65,26 @@ pub(super) fn gate_of(
         }
         _ => None,
     }
+}
+
+/// Whether `objects[object]` is a box whose first input Rivet's export marked as driven by a
+/// source of its own (the `…/source` entry naming that pin) and something drives it.
+pub(super) fn has_own_first_source(
+    objects: &[BodyObject],
+    inputs: &[Vec<InputPoint<'_>>],
+    object: usize,
+) -> bool {
+    let ObjectKind::Block(block) = &objects[object].kind else {
+        return false;
+    };
+    let Some(attributes) = rivet_attributes(&objects[object].add_data, "source") else {
+        return false;
+    };
+    let first = block.inputs.first();
+    first.is_some_and(|pin| {
+        attributes.get("pin") == Some(&pin.formal_parameter)
+            && inputs[object]
+                .first()
+                .is_some_and(|point| !point.producers.is_empty())
+    })
 }

@@ -4,7 +4,7 @@
 use std::collections::HashMap;
 
 use super::network_error::NetworkError;
-use super::network_gates::{Gate, gate_of};
+use super::network_gates::{Gate, gate_of, has_own_first_source};
 use crate::body_object::{BodyObject, ObjectKind};
 use crate::connection::ConnectionPointIn;
 use crate::fbd::Block;
@@ -25,6 +25,8 @@ pub(super) struct BodyGraph<'b> {
     reader_index: Vec<Vec<usize>>,
     /// For each object, the structure Rivet's export wrote it for, if it is such a box.
     gates: Vec<Option<Gate>>,
+    /// For each object, whether it is a box whose first input has a source of its own.
+    own_first_source: Vec<bool>,
 }
 
 /// One input point of an object and what drives it.
@@ -96,6 +98,7 @@ impl<'b> BodyGraph<'b> {
             consumer_index: HashMap::new(),
             reader_index: Vec::new(),
             gates: Vec::new(),
+            own_first_source: Vec::new(),
         };
         for (position, object) in objects.iter().enumerate() {
             let points = graph.raw_inputs(position, object, &index)?;
@@ -113,6 +116,9 @@ impl<'b> BodyGraph<'b> {
                 })
             })
             .collect();
+        graph.own_first_source = (0..objects.len())
+            .map(|object| has_own_first_source(objects, &graph.inputs, object))
+            .collect();
         graph.read_instances(power_wires);
         graph.reindex();
         graph.read_in_outs_before_their_write();
@@ -125,12 +131,21 @@ impl<'b> BodyGraph<'b> {
         self.gates.get(object).copied().flatten()
     }
 
+    /// Whether the box `object`'s first input has a source of its own, as Rivet's export
+    /// marks it: a value input, the box starting its chain.
+    pub fn has_own_first_source(&self, object: usize) -> bool {
+        self.own_first_source.get(object).copied().unwrap_or(false)
+    }
+
     /// Whether input `input` of `object` carries power along a chain (a contact's, coil's or
-    /// variable's single input, a block's first input, every input of a parallel group's OR)
-    /// rather than a value into a box.
+    /// variable's single input, a block's first input unless it has a source of its own, every
+    /// input of a parallel group's OR) rather than a value into a box.
     pub fn is_power_input(&self, object: usize, input: usize) -> bool {
         match &self.objects[object].kind {
-            ObjectKind::Block(_) => input == 0 || self.gate(object) == Some(Gate::Parallel),
+            ObjectKind::Block(_) => {
+                input == 0 && !self.has_own_first_source(object)
+                    || self.gate(object) == Some(Gate::Parallel)
+            }
             ObjectKind::RightPowerRail(_) => false,
             _ => true,
         }
