@@ -396,10 +396,10 @@ impl<'b> BodyGraph<'b> {
                 }
             }
         }
-        // An instance's output wired to several elements, one of them a box's value input,
-        // drives the first (top, then document order) and is read as a variable by the others,
-        // so no value fans out; ENO is no
-        // variable of the instance, so its readers stay wires (branches of the power).
+        // An instance's output wired to several elements drives the first (top, then document
+        // order) and is read as a variable by the others, so no value fans out; with
+        // `power_wires` only when one of them is a box's value input. ENO is no variable of the
+        // instance, so its readers stay wires (branches of the power).
         for object in 0..self.objects.len() {
             let ObjectKind::Block(block) = &self.objects[object].kind else {
                 continue;
