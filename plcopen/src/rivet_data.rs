@@ -26,6 +26,17 @@ pub(crate) const NETWORKS_ENTRY: &str = "https://rivet-plc.dev/plcopen/1/network
 /// The entry of an FBD body's `addData` saying it is a CFC chart: `<language name="CFC"/>`.
 pub(crate) const LANGUAGE_ENTRY: &str = "https://rivet-plc.dev/plcopen/1/language";
 
+/// The entry of an FBD `AND` or `OR` box that the export writes for what the model has no box
+/// for: `<gate of="series"/>` on the AND of a chain's operand with the chain before it (its
+/// `IN1`) and `<gate of="parallel"/>` on the OR of a parallel group's branches, so the import
+/// gives the chain and the group back rather than boxes (§5.2).
+pub(crate) const GATE_ENTRY: &str = "https://rivet-plc.dev/plcopen/1/gate";
+
+/// The entry of a box first in a rung or an input's source whose first input has a source of
+/// its own: `<source pin="IN"/>`, so the import gives that source back to the pin rather than as
+/// the chain before the box, which the lowering treats as power (§5.2).
+pub(crate) const SOURCE_ENTRY: &str = "https://rivet-plc.dev/plcopen/1/source";
+
 /// The entry of an SFC step's `addData` with what PLCopen has no attribute for:
 /// `<step minTime maxTime entryAction mainAction exitAction comment/>`, empty ones left out.
 pub(crate) const STEP_ENTRY: &str = "https://rivet-plc.dev/plcopen/1/step";

@@ -246,6 +246,153 @@ fn outputs() -> impl Strategy<Value = Vec<NetworkOutput>> {
     })
 }
 
+/// Up to three LD/FBD networks as an editor draws them, keeping the rules of `network_check`:
+/// operands, coils, pins and labels are identifiers, every rung has an element, parallel groups
+/// have two or three branches with elements, boxes have an input and an output (so the power
+/// goes on) and assign only their other outputs, and a first input has a source only where
+/// nothing else feeds it. What a PLCopen
+/// graph holds, so a plain PLCopen document gives these networks back in the normal form.
+pub fn drawn_networks() -> impl Strategy<Value = Vec<Network>> {
+    let network = (
+        text(),
+        text(),
+        prop_oneof![Just(String::new()), ident()],
+        drawn_chain(),
+        drawn_outputs(),
+    )
+        .prop_map(|(title, comment, label, rung, outputs)| Network {
+            title,
+            comment,
+            label,
+            rung,
+            outputs,
+        });
+    proptest::collection::vec(network, 0..4).prop_map(|mut networks| {
+        let mut next = 1;
+        for (index, network) in networks.iter_mut().enumerate() {
+            if !network.label.is_empty() {
+                network.label = format!("{}_{index}", network.label);
+            }
+            renumber_chain(&mut network.rung, &mut next, false);
+            renumber_outputs(&mut network.outputs, &mut next);
+        }
+        networks
+    })
+}
+
+/// A drawn chain of at least one element: operands (contacts with any modifier), parallel
+/// groups and boxes, nested at most three levels deep.
+fn drawn_chain() -> impl Strategy<Value = Vec<FlowNode>> {
+    let operand = (ident(), any::<bool>(), any::<Edge>()).prop_map(|(text, negated, edge)| {
+        FlowNode::Operand(Operand {
+            id: ElementId(0),
+            text,
+            negated,
+            edge,
+        })
+    });
+    let leaf = proptest::collection::vec(operand, 1..4);
+    leaf.prop_recursive(3, 24, 3, |inner| {
+        let parallel = proptest::collection::vec(inner.clone(), 2..4).prop_map(|branches| {
+            FlowNode::Parallel(Parallel {
+                id: ElementId(0),
+                branches: branches.into_iter().map(|rung| Branch { rung }).collect(),
+            })
+        });
+        // An input's source may be empty: the input is left open.
+        let source = prop_oneof![Just(Vec::new()), inner.clone()];
+        let input =
+            (any::<bool>(), any::<Edge>(), source).prop_map(|(negated, edge, source)| BlockInput {
+                pin: String::new(),
+                negated,
+                edge,
+                source,
+            });
+        let output = (any::<bool>(), prop_oneof![Just(String::new()), ident()]).prop_map(
+            |(negated, assign)| BlockOutput {
+                pin: String::new(),
+                negated,
+                assign,
+            },
+        );
+        let block = (
+            ident(),
+            prop_oneof![Just(String::new()), ident()],
+            proptest::collection::vec(input, 1..4),
+            proptest::collection::vec(output, 1..3),
+        )
+            .prop_map(|(type_name, instance, mut inputs, mut outputs)| {
+                for (index, input) in inputs.iter_mut().enumerate() {
+                    input.pin = format!("IN{index}");
+                }
+                for (index, output) in outputs.iter_mut().enumerate() {
+                    output.pin = format!("OUT{index}");
+                }
+                // The first output passes the power on; the editors draw no assignment on it.
+                if let Some(first) = outputs.first_mut() {
+                    first.assign.clear();
+                }
+                FlowNode::Block(BlockCall {
+                    id: ElementId(0),
+                    type_name,
+                    instance,
+                    inputs,
+                    outputs,
+                })
+            });
+        let element = prop_oneof![parallel, block].boxed();
+        prop_oneof![
+            (inner, proptest::collection::vec(element.clone(), 0..3)).prop_map(
+                |(mut operands, elements)| {
+                    operands.extend(elements);
+                    operands
+                }
+            ),
+            // A chain that starts with a box or a parallel group.
+            proptest::collection::vec(element, 1..3),
+        ]
+    })
+}
+
+/// Drawn outputs, at least one: coils of every kind, jumps, returns and output branches (some
+/// without elements, which the normal form takes apart).
+fn drawn_outputs() -> impl Strategy<Value = Vec<NetworkOutput>> {
+    let leaf = prop_oneof![
+        (ident(), any::<CoilKind>()).prop_map(|(variable, kind)| NetworkOutput::Coil(Coil {
+            id: ElementId(0),
+            variable,
+            kind,
+        })),
+        ident().prop_map(|label| NetworkOutput::Jump {
+            id: ElementId(0),
+            label,
+        }),
+        Just(NetworkOutput::Return { id: ElementId(0) }),
+    ]
+    .boxed();
+    // Every rung and branch drives something: an unfinished LD rung ending in a parallel
+    // group has no point its branches meet at in a PLCopen graph.
+    let leaves = proptest::collection::vec(leaf.clone(), 1..3);
+    leaves.prop_recursive(2, 8, 3, move |inner| {
+        let rung = prop_oneof![Just(Vec::new()), drawn_chain()];
+        let branches = proptest::collection::vec(
+            (rung, inner).prop_map(|(rung, outputs)| NetworkOutput::Branch {
+                id: ElementId(0),
+                rung,
+                outputs,
+            }),
+            1..3,
+        );
+        // Coils and branches side by side, in any order.
+        (proptest::collection::vec(leaf.clone(), 0..3), branches).prop_flat_map(
+            |(mut outputs, branches)| {
+                outputs.extend(branches);
+                Just(outputs).prop_shuffle()
+            },
+        )
+    })
+}
+
 /// Gives every element of a chain the next free id, and drops the source of a box's first
 /// input where the power also drives it (`fed_by_power`: the chain's start is powered).
 fn renumber_chain(chain: &mut [FlowNode], next: &mut u32, fed_by_power: bool) {

@@ -10,10 +10,20 @@ use project_model::{
 
 use super::error::ExportError;
 use super::xml_writer::XmlWriter;
+use crate::rivet_data::{GATE_ENTRY, RIVET_NAMESPACE, SOURCE_ENTRY};
 
 /// Grid units between two columns and two rows (positions are grid units × 10).
 const COLUMN_WIDTH: i64 = 10;
 const ROW_HEIGHT: i64 = 4;
+
+/// What an FBD box written for the model's structure stands for.
+#[derive(Clone, Copy, Debug)]
+enum Gate {
+    /// The AND of a chain's operand (`IN2`) with the chain before it (`IN1`).
+    Series,
+    /// The OR of a parallel group's branches, one input each in branch order.
+    Parallel,
+}
 
 /// Where power or a value comes from: an object and, for a box, its output pin.
 #[derive(Clone, Debug)]
@@ -170,7 +180,7 @@ impl<'x> NetworkGraph<'x> {
                     return Ok((vec![value], column + 1));
                 }
                 // In FBD a chain ANDs its operands into what comes before them.
-                let and = self.operator("AND", &[input, vec![value]], column + 1, row)?;
+                let and = self.gate(Gate::Series, &[input, vec![value]], column + 1, row)?;
                 Ok((vec![and], column + 2))
             }
             FlowNode::Parallel(parallel) => {
@@ -187,7 +197,7 @@ impl<'x> NetworkGraph<'x> {
                     // LD: the branches meet in a wired OR, listed in branch order.
                     Ok((ends.into_iter().flatten().collect(), widest))
                 } else {
-                    let or = self.operator("OR", &ends, widest, row)?;
+                    let or = self.gate(Gate::Parallel, &ends, widest, row)?;
                     Ok((vec![or], widest + 1))
                 }
             }
@@ -267,6 +277,21 @@ impl<'x> NetworkGraph<'x> {
             self.xml.end("variable")?;
         }
         self.xml.end("outputVariables")?;
+        if let Some(first) = block.inputs.first()
+            && !first.source.is_empty()
+        {
+            self.xml.start("addData", &[])?;
+            self.xml.start(
+                "data",
+                &[("name", SOURCE_ENTRY), ("handleUnknown", "discard")],
+            )?;
+            self.xml.empty(
+                "source",
+                &[("xmlns", RIVET_NAMESPACE), ("pin", first.pin.as_str())],
+            )?;
+            self.xml.end("data")?;
+            self.xml.end("addData")?;
+        }
         self.xml.end("block")?;
         let after = source_column + 1;
         for pin in block.outputs.iter().filter(|pin| !pin.assign.is_empty()) {
@@ -376,14 +401,19 @@ impl<'x> NetworkGraph<'x> {
         Ok(Link { id, pin: None })
     }
 
-    /// Writes an FBD operator box (`AND`, `OR`) over `inputs`, one pin each.
-    fn operator(
+    /// Writes the FBD box of `gate` over `inputs`, one pin each, marked with Rivet's `…/gate`
+    /// entry so the import gives the chain or the group back.
+    fn gate(
         &mut self,
-        name: &str,
+        gate: Gate,
         inputs: &[Vec<Link>],
         column: i64,
         row: i64,
     ) -> Result<Link, ExportError> {
+        let (name, of) = match gate {
+            Gate::Series => ("AND", "series"),
+            Gate::Parallel => ("OR", "parallel"),
+        };
         let id = self.fresh();
         self.start_object("block", id, &[("typeName", name)], column, row)?;
         self.xml.start("inputVariables", &[])?;
@@ -402,6 +432,15 @@ impl<'x> NetworkGraph<'x> {
         self.xml.empty("connectionPointOut", &[])?;
         self.xml.end("variable")?;
         self.xml.end("outputVariables")?;
+        self.xml.start("addData", &[])?;
+        self.xml.start(
+            "data",
+            &[("name", GATE_ENTRY), ("handleUnknown", "discard")],
+        )?;
+        self.xml
+            .empty("gate", &[("xmlns", RIVET_NAMESPACE), ("of", of)])?;
+        self.xml.end("data")?;
+        self.xml.end("addData")?;
         self.xml.end("block")?;
         Ok(Link {
             id,

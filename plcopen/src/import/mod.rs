@@ -10,11 +10,15 @@ mod duration;
 mod error;
 mod globals;
 mod network_build;
+mod network_dominators;
 mod network_elements;
 mod network_error;
+mod network_gates;
 mod network_graph;
 mod network_groups;
 mod network_import;
+#[cfg(test)]
+pub(crate) use network_import::number_elements;
 mod network_series_parallel;
 mod pou_objects;
 mod pous;

@@ -8,9 +8,11 @@ use project_model::{
     Operand,
 };
 
+use super::network_dominators::deepest_common_dominator;
 use super::network_elements::{coil_kind, edge, operand};
 use super::network_error::NetworkError;
-use super::network_graph::{BodyGraph, ObjectFault, Producer, chain_output, is_power_input};
+use super::network_gates::Gate;
+use super::network_graph::{BodyGraph, ObjectFault, Producer, chain_output};
 use super::network_series_parallel::{ChainEdge, compare_keys, reduce};
 use crate::body_object::ObjectKind;
 use crate::ld::{Edge as XmlEdge, Storage};
@@ -32,7 +34,7 @@ impl From<ObjectFault> for BuildFailure {
 }
 
 /// A point of the rung's graph.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
 enum PointKey {
     /// The left power rail (in FBD, where a chain starts).
     Rail,
@@ -40,6 +42,9 @@ enum PointKey {
     Output(usize, usize),
     /// The meeting of several wires at input `input` of an object (a wired OR).
     Junction(usize, usize),
+    /// The meeting of several wires from these outputs (object, pin), in connection order: the
+    /// inputs wired to the same outputs share one wired OR.
+    Wired(Vec<(usize, usize)>),
     /// The value read by a [`Producer::Read`], by its number.
     Read(usize),
 }
@@ -106,11 +111,15 @@ pub(super) struct NetworkBuilder<'g, 'b> {
     reads: usize,
     /// How deep the conversion is in box inputs and output branches.
     depth: usize,
+    /// Whether a variable read only by power inputs is one point for all its readers (the
+    /// power fans out after it) rather than read again for each.
+    power_wires: bool,
 }
 
 impl<'g, 'b> NetworkBuilder<'g, 'b> {
-    /// A builder for the objects `members` of `graph`.
-    pub fn new(graph: &'g BodyGraph<'b>, members: &[usize]) -> Self {
+    /// A builder for the objects `members` of `graph`; `power_wires` tells whether a variable
+    /// read only by power inputs is one point for all its readers.
+    pub fn new(graph: &'g BodyGraph<'b>, members: &[usize], power_wires: bool) -> Self {
         Self {
             graph,
             members: members.iter().copied().collect(),
@@ -122,6 +131,7 @@ impl<'g, 'b> NetworkBuilder<'g, 'b> {
             entering: vec![Vec::new()],
             reads: 0,
             depth: 0,
+            power_wires,
         }
     }
 
@@ -215,7 +225,13 @@ impl<'g, 'b> NetworkBuilder<'g, 'b> {
                 // A variable read is repeated for each reader (an edge trigger is not: it has
                 // a state of its own).
                 ObjectKind::InVariable(variable) => {
-                    let shared = variable.edge.is_some_and(|edge| edge != XmlEdge::None);
+                    let graph = self.graph;
+                    let shared = variable.edge.is_some_and(|edge| edge != XmlEdge::None)
+                        || self.power_wires
+                            && graph
+                                .consumers(*object, 0)
+                                .iter()
+                                .all(|&(reader, input)| graph.is_power_input(reader, input));
                     let key = if shared {
                         PointKey::Output(*object, 0)
                     } else {
@@ -269,7 +285,23 @@ impl<'g, 'b> NetworkBuilder<'g, 'b> {
                 Some(point)
             }
             several => {
+                let wired: Option<Vec<(usize, usize)>> = several
+                    .iter()
+                    .map(|producer| match producer {
+                        Producer::Output { object, pin } => Some((*object, *pin)),
+                        Producer::Read { .. } => None,
+                    })
+                    .collect();
+                if let Some(wired) = &wired
+                    && let Some(&point) = self.points.get(&PointKey::Wired(wired.clone()))
+                {
+                    self.points.insert(PointKey::Junction(object, input), point);
+                    return Some(point);
+                }
                 let junction = self.point(PointKey::Junction(object, input));
+                if let Some(wired) = wired {
+                    self.points.insert(PointKey::Wired(wired), junction);
+                }
                 // A branch of a wired OR is ordered by its top, then by its connection's place
                 // in the OR (CODESYS writes no positions: its connection order is the order).
                 for (connection, producer) in several.iter().enumerate() {
@@ -320,8 +352,13 @@ impl<'g, 'b> NetworkBuilder<'g, 'b> {
             ObjectKind::InVariable(_) if graph.consumers(object, 0).is_empty() => {
                 self.producer_point(&Producer::Output { object, pin: 0 }, key);
             }
+            ObjectKind::Block(_) if graph.gate(object).is_some() => {
+                self.add_gate(object);
+            }
             ObjectKind::Block(block) => {
-                let from = if graph.inputs[object].is_empty() {
+                // A box whose first input has a source of its own starts its chain.
+                let own_source = graph.has_own_first_source(object);
+                let from = if graph.inputs[object].is_empty() || own_source {
                     0
                 } else {
                     self.input_point(object, 0).unwrap_or(0)
@@ -333,7 +370,8 @@ impl<'g, 'b> NetworkBuilder<'g, 'b> {
                     label: EdgeLabel::Object(object),
                     key,
                 });
-                for input in 1..graph.inputs[object].len() {
+                let first_value = if own_source { 0 } else { 1 };
+                for input in first_value..graph.inputs[object].len() {
                     if let Some(point) = self.input_point(object, input) {
                         self.value_uses[point] += 1;
                     }
@@ -372,6 +410,45 @@ impl<'g, 'b> NetworkBuilder<'g, 'b> {
             _ => {}
         }
         Ok(())
+    }
+
+    /// A box Rivet's export wrote for a chain's operand or a parallel group: the operand is an
+    /// edge like a contact's, the group's branches meet at the box's output like a wired OR.
+    fn add_gate(&mut self, object: usize) {
+        let graph = self.graph;
+        let output = self.point(PointKey::Output(object, 0));
+        match graph.gate(object) {
+            Some(Gate::Series { operand }) => {
+                let from = self.input_point(object, 0).unwrap_or(0);
+                let key = self.key(operand);
+                self.push_edge(GraphEdge {
+                    from,
+                    to: output,
+                    label: EdgeLabel::Object(operand),
+                    key,
+                });
+            }
+            Some(Gate::Parallel) => {
+                for input in 0..graph.inputs[object].len() {
+                    // A branch without elements at the start of an FBD rung leaves its input
+                    // open: it starts where the rung does.
+                    let from = self.input_point(object, input).unwrap_or(0);
+                    let top = match graph.inputs[object][input].producers.first() {
+                        Some(Producer::Output {
+                            object: producer, ..
+                        }) => self.top(*producer),
+                        _ => self.top(object),
+                    };
+                    self.push_edge(GraphEdge {
+                        from,
+                        to: output,
+                        label: EdgeLabel::Wire,
+                        key: (top, input),
+                    });
+                }
+            }
+            None => {}
+        }
     }
 
     /// Whether an outVariable is the assignment of a box's output other than its chain output.
@@ -475,21 +552,19 @@ impl<'g, 'b> NetworkBuilder<'g, 'b> {
         targets: &[usize],
         allowed: &HashSet<usize>,
     ) -> Result<usize, BuildFailure> {
-        let order = self.topological_order(allowed)?;
         let reachable = self.descendants(root, allowed);
-        let mut best = root;
-        for &candidate in &order {
-            if candidate == root || !reachable.contains(&candidate) {
-                continue;
-            }
-            let mut without = allowed.clone();
-            without.remove(&candidate);
-            let reached = self.descendants(root, &without);
-            if targets.iter().all(|target| !reached.contains(target)) {
-                best = candidate;
-            }
-        }
-        Ok(best)
+        let order: Vec<usize> = self
+            .topological_order(allowed)?
+            .into_iter()
+            .filter(|point| reachable.contains(point))
+            .collect();
+        Ok(deepest_common_dominator(root, &order, targets, |point| {
+            self.entering[point]
+                .iter()
+                .map(|&edge| self.edges[edge].from)
+                .filter(|from| reachable.contains(from))
+                .collect()
+        }))
     }
 
     fn topological_order(&self, allowed: &HashSet<usize>) -> Result<Vec<usize>, BuildFailure> {
@@ -552,6 +627,7 @@ impl<'g, 'b> NetworkBuilder<'g, 'b> {
                 nodes,
                 key: edge.key,
                 has_block,
+                branch_keys: Vec::new(),
             });
         }
         let first_object = self
@@ -609,7 +685,7 @@ impl<'g, 'b> NetworkBuilder<'g, 'b> {
         };
         let mut inputs = Vec::new();
         for (index, pin) in block.inputs.iter().chain(&block.in_outs).enumerate() {
-            let source = if is_power_input(&graph.objects[object], index) {
+            let source = if graph.is_power_input(object, index) {
                 Vec::new()
             } else {
                 match self.input_point(object, index) {

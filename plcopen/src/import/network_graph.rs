@@ -4,6 +4,7 @@
 use std::collections::HashMap;
 
 use super::network_error::NetworkError;
+use super::network_gates::{Gate, gate_of, has_own_first_source};
 use crate::body_object::{BodyObject, ObjectKind};
 use crate::connection::ConnectionPointIn;
 use crate::fbd::Block;
@@ -22,6 +23,10 @@ pub(super) struct BodyGraph<'b> {
     consumer_index: HashMap<(usize, usize), Vec<(usize, usize)>>,
     /// For each object, the objects its outputs drive; rebuilt with `consumer_index`.
     reader_index: Vec<Vec<usize>>,
+    /// For each object, the structure Rivet's export wrote it for, if it is such a box.
+    gates: Vec<Option<Gate>>,
+    /// For each object, whether it is a box whose first input has a source of its own.
+    own_first_source: Vec<bool>,
 }
 
 /// One input point of an object and what drives it.
@@ -78,19 +83,10 @@ pub(super) fn chain_output(block: &Block) -> usize {
         .unwrap_or(0)
 }
 
-/// Whether input `input` of `object` carries power along a chain (a contact's, coil's or
-/// variable's single input, a block's first input) rather than a value into a box.
-pub(super) fn is_power_input(object: &BodyObject, input: usize) -> bool {
-    match &object.kind {
-        ObjectKind::Block(_) => input == 0,
-        ObjectKind::RightPowerRail(_) => false,
-        _ => true,
-    }
-}
-
 impl<'b> BodyGraph<'b> {
-    /// Resolves the wires of `objects`.
-    pub fn new(objects: &'b [BodyObject]) -> Result<Self, ObjectFault> {
+    /// Resolves the wires of `objects`; with `power_wires`, an instance's output that only
+    /// power inputs read stays a wire to each of them (else all but one read the variable).
+    pub fn new(objects: &'b [BodyObject], power_wires: bool) -> Result<Self, ObjectFault> {
         let index: HashMap<u64, usize> = objects
             .iter()
             .enumerate()
@@ -101,6 +97,8 @@ impl<'b> BodyGraph<'b> {
             inputs: Vec::with_capacity(objects.len()),
             consumer_index: HashMap::new(),
             reader_index: Vec::new(),
+            gates: Vec::new(),
+            own_first_source: Vec::new(),
         };
         for (position, object) in objects.iter().enumerate() {
             let points = graph.raw_inputs(position, object, &index)?;
@@ -108,11 +106,49 @@ impl<'b> BodyGraph<'b> {
         }
         graph.resolve_continuations()?;
         graph.reindex();
-        graph.read_instances();
+        graph.gates = (0..objects.len())
+            .map(|object| {
+                gate_of(objects, &graph.inputs, object, |producer, pin| {
+                    graph
+                        .consumer_index
+                        .get(&(producer, pin))
+                        .map_or(0, Vec::len)
+                })
+            })
+            .collect();
+        graph.own_first_source = (0..objects.len())
+            .map(|object| has_own_first_source(objects, &graph.inputs, object))
+            .collect();
+        graph.read_instances(power_wires);
         graph.reindex();
         graph.read_in_outs_before_their_write();
         graph.reindex();
         Ok(graph)
+    }
+
+    /// The structure Rivet's export wrote `object` for, if it is such a box.
+    pub fn gate(&self, object: usize) -> Option<Gate> {
+        self.gates.get(object).copied().flatten()
+    }
+
+    /// Whether the box `object`'s first input has a source of its own, as Rivet's export
+    /// marks it: a value input, the box starting its chain.
+    pub fn has_own_first_source(&self, object: usize) -> bool {
+        self.own_first_source.get(object).copied().unwrap_or(false)
+    }
+
+    /// Whether input `input` of `object` carries power along a chain (a contact's, coil's or
+    /// variable's single input, a block's first input unless it has a source of its own, every
+    /// input of a parallel group's OR) rather than a value into a box.
+    pub fn is_power_input(&self, object: usize, input: usize) -> bool {
+        match &self.objects[object].kind {
+            ObjectKind::Block(_) => {
+                input == 0 && !self.has_own_first_source(object)
+                    || self.gate(object) == Some(Gate::Parallel)
+            }
+            ObjectKind::RightPowerRail(_) => false,
+            _ => true,
+        }
     }
 
     /// Every consumer of output `pin` of `object`: the object and its input's index.
@@ -333,7 +369,7 @@ impl<'b> BodyGraph<'b> {
 
     /// An instance's output read away from its box becomes a read of `instance.pin`: what its
     /// box's chain output passes along a chain, and what a single value input nests, stay wires.
-    fn read_instances(&mut self) {
+    fn read_instances(&mut self, power_wires: bool) {
         for consumer in 0..self.inputs.len() {
             for input in 0..self.inputs[consumer].len() {
                 for slot in 0..self.inputs[consumer][input].producers.len() {
@@ -361,8 +397,9 @@ impl<'b> BodyGraph<'b> {
             }
         }
         // An instance's output wired to several elements drives the first (top, then document
-        // order) and is read as a variable by the others, so no value fans out; ENO is no
-        // variable of the instance, so its readers stay wires (branches of the power).
+        // order) and is read as a variable by the others, so no value fans out; with
+        // `power_wires` only when one of them is a box's value input. ENO is no variable of the
+        // instance, so its readers stay wires (branches of the power).
         for object in 0..self.objects.len() {
             let ObjectKind::Block(block) = &self.objects[object].kind else {
                 continue;
@@ -390,6 +427,15 @@ impl<'b> BodyGraph<'b> {
                         )
                     })
                     .collect();
+                // Power may fan out (parallel groups, output branches): only a value read by
+                // a box input must not.
+                if power_wires
+                    && readers
+                        .iter()
+                        .all(|&(reader, input)| self.is_power_input(reader, input))
+                {
+                    continue;
+                }
                 readers.sort_by(|a, b| {
                     let top = |reader: usize| {
                         self.objects[reader]
@@ -422,7 +468,7 @@ impl<'b> BodyGraph<'b> {
         if pin != chain_output(block) {
             return is_out_variable;
         }
-        if is_power_input(consumer_object, input) {
+        if self.is_power_input(consumer, input) {
             return true;
         }
         // A box nested into another box's input: its only reader besides variables it assigns.
@@ -443,7 +489,7 @@ impl<'b> BodyGraph<'b> {
             };
             for (consumer, input) in self.consumers(in_out, 0) {
                 let before = self.reaches(consumer, in_out);
-                if before || !is_power_input(&self.objects[consumer], input) {
+                if before || !self.is_power_input(consumer, input) {
                     for producer in &mut self.inputs[consumer][input].producers {
                         if *producer
                             == (Producer::Output {

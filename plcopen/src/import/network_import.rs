@@ -10,6 +10,7 @@ use super::network_error::NetworkError;
 use super::network_graph::{BodyGraph, ObjectFault};
 use super::network_groups::{is_network_title, network_groups};
 use super::report::Outcome;
+use crate::add_data::AddData;
 use crate::body::{Body as XmlBody, BodyContent};
 use crate::body_object::ObjectKind;
 
@@ -60,29 +61,25 @@ impl Converter<'_> {
             };
             converter.error(&object_place, ImportErrorKind::Network(fault.error))
         };
-        let graph = BodyGraph::new(objects).map_err(|error| fault(self, error))?;
-        if let Some(object) = graph.object_on_loop() {
-            let object = &objects[object];
-            return Ok(Some(NetworkOutcome::NotANetwork {
-                reason: format!(
-                    "the {} with local id {} is on a feedback loop",
-                    object.kind.element_name(),
-                    object.local_id
-                ),
-            }));
-        }
-        let groups = network_groups(&graph, &body.add_data).map_err(|error| fault(self, error))?;
-        let mut networks = Vec::with_capacity(groups.len());
-        for group in groups {
-            let builder = NetworkBuilder::new(&graph, &group.members);
-            match builder.build(group.title, group.comment, group.label) {
-                Ok(network) => networks.push(network),
-                Err(BuildFailure::Fault(error)) => return Err(fault(self, error)),
-                Err(BuildFailure::NotANetwork(reason)) => {
-                    return Ok(Some(NetworkOutcome::NotANetwork { reason }));
-                }
+        // Power that fans out (an operand or a box output several branches or outputs follow)
+        // is first kept as wires, as Rivet's export writes it; when the body then is no set of
+        // networks, its variables are read again for each reader as in another tool's file.
+        let mut outcome = Err(BuildFailure::NotANetwork(String::new()));
+        for power_wires in [true, false] {
+            let graph = BodyGraph::new(objects, power_wires).map_err(|error| fault(self, error))?;
+            outcome = build_networks(&graph, &body.add_data, power_wires);
+            if outcome.is_ok() {
+                break;
             }
         }
+        let mut networks = match outcome {
+            Ok(networks) => networks,
+            Err(BuildFailure::Fault(error)) => return Err(fault(self, error)),
+            Err(BuildFailure::NotANetwork(reason)) => {
+                return Ok(Some(NetworkOutcome::NotANetwork { reason }));
+            }
+        };
+        project_model::normalize_networks(&mut networks);
         number_elements(&mut networks);
         if let Some(problem) = project_model::network_problems(&networks).first() {
             let place = Place {
@@ -123,9 +120,33 @@ impl Converter<'_> {
     }
 }
 
+/// The networks of the body whose wires are `graph`, or why they are none; `power_wires` as
+/// the graph was built with.
+fn build_networks(
+    graph: &BodyGraph<'_>,
+    body_add_data: &AddData,
+    power_wires: bool,
+) -> Result<Vec<Network>, BuildFailure> {
+    if let Some(object) = graph.object_on_loop() {
+        let object = &graph.objects[object];
+        return Err(BuildFailure::NotANetwork(format!(
+            "the {} with local id {} is on a feedback loop",
+            object.kind.element_name(),
+            object.local_id
+        )));
+    }
+    let groups = network_groups(graph, body_add_data)?;
+    let mut networks = Vec::with_capacity(groups.len());
+    for group in groups {
+        let builder = NetworkBuilder::new(graph, &group.members, power_wires);
+        networks.push(builder.build(group.title, group.comment, group.label)?);
+    }
+    Ok(networks)
+}
+
 /// Gives every element a fresh id, from 1 in tree order (networks in order; in a network its
 /// rung, then its outputs; an element before the chains inside it).
-pub(super) fn number_elements(networks: &mut [Network]) {
+pub(crate) fn number_elements(networks: &mut [Network]) {
     let mut next = 0u32;
     for network in networks {
         number_chain(&mut network.rung, &mut next);

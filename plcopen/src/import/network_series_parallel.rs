@@ -22,6 +22,9 @@ pub(super) struct ChainEdge {
     /// Whether the chain holds something other than operands (a box), which the expansion of a
     /// bridge must not duplicate.
     pub has_block: bool,
+    /// When the chain is one parallel group merged from edges: each branch's key, in order;
+    /// empty otherwise.
+    pub branch_keys: Vec<(f64, usize)>,
 }
 
 /// The chain from `source` to `target` through `edges`, which hold only the edges between
@@ -74,14 +77,28 @@ fn merge_parallel(edges: Vec<ChainEdge>) -> Vec<ChainEdge> {
             let key = group[0].key;
             let (from, to) = (group[0].from, group[0].to);
             let has_block = group.iter().any(|edge| edge.has_block);
-            let mut branches = Vec::new();
+            // A group merged before gives its branches with their own keys, so a branch that
+            // reduces later still takes its place among them.
+            let mut keyed: Vec<((f64, usize), Branch)> = Vec::new();
             for edge in group {
+                let edge_key = edge.key;
+                let branch_keys = edge.branch_keys;
                 match <[FlowNode; 1]>::try_from(edge.nodes) {
-                    Ok([FlowNode::Parallel(parallel)]) => branches.extend(parallel.branches),
-                    Ok([node]) => branches.push(Branch { rung: vec![node] }),
-                    Err(nodes) => branches.push(Branch { rung: nodes }),
+                    Ok([FlowNode::Parallel(parallel)]) => {
+                        let count = parallel.branches.len();
+                        let keys = if branch_keys.len() == count {
+                            branch_keys
+                        } else {
+                            vec![edge_key; count]
+                        };
+                        keyed.extend(keys.into_iter().zip(parallel.branches));
+                    }
+                    Ok([node]) => keyed.push((edge_key, Branch { rung: vec![node] })),
+                    Err(nodes) => keyed.push((edge_key, Branch { rung: nodes })),
                 }
             }
+            keyed.sort_by(|a, b| compare_keys(a.0, b.0));
+            let (branch_keys, branches): (Vec<_>, Vec<_>) = keyed.into_iter().unzip();
             ChainEdge {
                 from,
                 to,
@@ -91,6 +108,7 @@ fn merge_parallel(edges: Vec<ChainEdge>) -> Vec<ChainEdge> {
                 })],
                 key,
                 has_block,
+                branch_keys,
             }
         })
         .collect()
@@ -113,6 +131,12 @@ fn merge_series(source: usize, target: usize, mut edges: Vec<ChainEdge>) -> Vec<
             let later = edges[second].clone();
             let earlier = &mut edges[first];
             earlier.to = later.to;
+            // The keys of a parallel group's branches hold while a wire is all that joins it.
+            earlier.branch_keys = match (earlier.nodes.is_empty(), later.nodes.is_empty()) {
+                (_, true) => std::mem::take(&mut earlier.branch_keys),
+                (true, false) => later.branch_keys,
+                (false, false) => Vec::new(),
+            };
             earlier.nodes.extend(later.nodes);
             earlier.has_block |= later.has_block;
             if compare_keys(later.key, earlier.key).is_lt() {
