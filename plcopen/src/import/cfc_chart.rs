@@ -15,7 +15,7 @@ use super::converter::Place;
 use super::error::ImportErrorKind;
 use crate::body_object::{BodyObject, ObjectKind};
 use crate::connection::{Connection, ConnectionPointIn};
-use crate::fbd::{BlockPin, InOutVariable};
+use crate::fbd::{Block, BlockPin, InOutVariable};
 use crate::header::Point;
 use crate::ld::{Edge, Storage};
 
@@ -51,20 +51,30 @@ const IN_OUT_MIN_WIDTH: u32 = 4;
 pub(crate) const PIXELS_PER_GRID_UNIT: u32 = 10;
 
 /// Converts the FBD graph `objects` (document order) of the body at `body_path` (line
-/// `body_line`) into a chart.
+/// `body_line`) into a chart; `structures` are the lower-case names of the document's
+/// structure types, which a block with one unnamed output composes (input selects).
 pub(crate) fn fbd_graph_to_cfc(
     objects: &[BodyObject],
     dialect: CfcDialect,
     body_path: &str,
     body_line: u32,
+    structures: &HashSet<String>,
 ) -> Result<CfcChart, BodyFault> {
-    let mut builder = CfcChartBuilder::new(objects.iter().collect(), dialect, body_path, body_line);
+    let mut builder = CfcChartBuilder::new(
+        objects.iter().collect(),
+        dialect,
+        body_path,
+        body_line,
+        structures,
+    );
     builder.build()?;
     builder.finish()
 }
 
 /// A chart in the making from a graph of objects.
 pub(super) struct CfcChartBuilder<'o> {
+    /// The lower-case names of the document's structure types.
+    structures: &'o HashSet<String>,
     /// The objects converted, in document order.
     objects: Vec<&'o BodyObject>,
     /// The same objects by `localId`.
@@ -91,18 +101,21 @@ pub(super) struct CfcChartBuilder<'o> {
 }
 
 impl<'o> CfcChartBuilder<'o> {
-    /// A builder for `objects` (document order).
+    /// A builder for `objects` (document order) of a document whose structure types are
+    /// `structures` (lower-case names).
     pub fn new(
         objects: Vec<&'o BodyObject>,
         dialect: CfcDialect,
         body_path: &str,
         body_line: u32,
+        structures: &'o HashSet<String>,
     ) -> Self {
         let by_local_id = objects
             .iter()
             .map(|object| (object.local_id, *object))
             .collect();
         Self {
+            structures,
             objects,
             by_local_id,
             dialect,
@@ -142,9 +155,11 @@ impl<'o> CfcChartBuilder<'o> {
     fn element(&mut self, object: &BodyObject) -> Result<(), BodyFault> {
         let kind = match &object.kind {
             // A box pin has a name; Rivet's export writes a composer's structure output and a
-            // selector's structure input as the one unnamed pin of a block (§5.2).
+            // selector's structure input as the one unnamed pin of a block (§5.2). Beremiz
+            // names a function's result "" too, so only a block of a structure type without
+            // an instance is taken for one.
             ObjectKind::Block(block)
-                if is_unnamed_pin(&block.outputs) && block.in_outs.is_empty() =>
+                if self.composes_structure(block) && is_unnamed_pin(&block.outputs) =>
             {
                 CfcElementKind::Composer {
                     type_name: block.type_name.clone(),
@@ -152,7 +167,7 @@ impl<'o> CfcChartBuilder<'o> {
                 }
             }
             ObjectKind::Block(block)
-                if is_unnamed_pin(&block.inputs) && block.in_outs.is_empty() =>
+                if self.composes_structure(block) && is_unnamed_pin(&block.inputs) =>
             {
                 CfcElementKind::Selector {
                     type_name: block.type_name.clone(),
@@ -167,7 +182,10 @@ impl<'o> CfcChartBuilder<'o> {
                     .outputs
                     .iter()
                     .chain(&block.in_outs)
-                    .map(pin)
+                    .map(|output| CfcPin {
+                        name: result_pin_name(&output.formal_parameter),
+                        ..pin(output)
+                    })
                     .collect(),
             }),
             ObjectKind::InVariable(variable) => {
@@ -246,8 +264,30 @@ impl<'o> CfcChartBuilder<'o> {
         Ok(())
     }
 
+    /// Whether `block` may be a composer or selector: no in-outs, no instance, and a type that
+    /// is a structure of the document (or any type, in Rivet's own export, which writes them
+    /// so for structures of libraries too).
+    fn composes_structure(&self, block: &Block) -> bool {
+        block.in_outs.is_empty()
+            && block
+                .instance_name
+                .as_deref()
+                .is_none_or(|name| name.trim().is_empty())
+            && (self.dialect == CfcDialect::Rivet
+                || self
+                    .structures
+                    .contains(&block.type_name.trim().to_lowercase()))
+    }
+
+    /// Whether `block` becomes a box (not a composer or selector).
+    fn is_box(&self, block: &Block) -> bool {
+        !(self.composes_structure(block)
+            && (is_unnamed_pin(&block.outputs) || is_unnamed_pin(&block.inputs)))
+    }
+
     /// An `inOutVariable` as an output writing its variable and, to the right of it, an input
-    /// reading the variable, which its readers are wired from (docs/plcopen-xml.md §4.5).
+    /// reading the variable, which its readers are wired from (docs/plcopen-xml.md §4.5). An
+    /// in-out nothing is wired into writes nothing: it is the input alone.
     fn in_out(&mut self, object: &BodyObject, variable: &InOutVariable) -> Result<(), BodyFault> {
         let expression = variable.expression.trim();
         if matches!(variable.edge_out, Some(Edge::Rising | Edge::Falling)) {
@@ -263,11 +303,6 @@ impl<'o> CfcChartBuilder<'o> {
             )));
         }
         let (x, y) = self.grid_place(object.position.as_ref());
-        let write = CfcElementKind::Output {
-            expression: expression.to_owned(),
-            coil: coil_kind(variable.negated_in, variable.edge_in, variable.storage_in),
-        };
-        let output = self.push(x, y, write, object.execution_order_id, None);
         let read = CfcElementKind::Input {
             expression: if variable.negated_out == Some(true) {
                 format!("NOT ({expression})")
@@ -275,6 +310,23 @@ impl<'o> CfcChartBuilder<'o> {
                 expression.to_owned()
             },
         };
+        let written = variable.input.as_ref().is_some_and(|point| {
+            !point.connections.is_empty()
+                || point
+                    .expression
+                    .as_deref()
+                    .is_some_and(|text| !text.trim().is_empty())
+        });
+        if !written {
+            let input = self.push(x, y, read, None, None);
+            self.element_of.insert(object.local_id, input);
+            return Ok(());
+        }
+        let write = CfcElementKind::Output {
+            expression: expression.to_owned(),
+            coil: coil_kind(variable.negated_in, variable.edge_in, variable.storage_in),
+        };
+        let output = self.push(x, y, write, object.execution_order_id, None);
         // Right of the output by the in-out's width, so the two stand where it stood.
         let width = self.extent(object.size.width).max(IN_OUT_MIN_WIDTH);
         let gap = i32::try_from(width).unwrap_or(i32::MAX);
@@ -284,19 +336,26 @@ impl<'o> CfcChartBuilder<'o> {
         Ok(())
     }
 
-    /// Adds an element at the first free place from (`x`, `y`) downwards; returns its id.
+    /// Adds an element at the first free place from (`x`, `y`) downwards (upwards from the
+    /// chart's last row); returns its id.
     fn push(
         &mut self,
         x: i32,
-        mut y: i32,
+        y: i32,
         kind: CfcElementKind,
         execution_order_id: Option<u64>,
         reads_write_of: Option<ElementId>,
     ) -> ElementId {
         // Rounding pixels to the grid may bring two elements onto one place: keep them apart.
-        while !self.taken_places.insert((x, y)) {
-            y += 1;
-        }
+        // The column holds more rows than the chart has elements, so a free one is found.
+        let below = (y..=i32::MAX).map(|row| (x, row));
+        let above = (i32::MIN..y).rev().map(|row| (x, row));
+        let free = below
+            .chain(above)
+            .find(|place| !self.taken_places.contains(place))
+            .unwrap_or((x, y));
+        self.taken_places.insert(free);
+        let (x, y) = free;
         self.last_id += 1;
         let id = ElementId(self.last_id);
         self.elements.push(OrderedElement {
@@ -346,9 +405,14 @@ impl<'o> CfcChartBuilder<'o> {
                             expression: expression.to_owned(),
                             coil: CoilKind::Normal,
                         };
-                        let assign = self.push(x + 8, y, kind, None, None);
+                        let assign = self.push(x.saturating_add(8), y, kind, None, None);
+                        let from = if self.is_box(block) {
+                            result_pin_name(&output.formal_parameter)
+                        } else {
+                            output.formal_parameter.clone()
+                        };
                         self.wires.push(Wire::routed(
-                            PinRef::new(element, output.formal_parameter.clone()),
+                            PinRef::new(element, from),
                             PinRef::new(assign, ""),
                         ));
                     }
@@ -398,7 +462,7 @@ impl<'o> CfcChartBuilder<'o> {
                     let kind = CfcElementKind::Input {
                         expression: expression.to_owned(),
                     };
-                    let input = self.push(x - 6, y, kind, None, None);
+                    let input = self.push(x.saturating_sub(6), y, kind, None, None);
                     self.wires.push(Wire::routed(PinRef::new(input, ""), to));
                 }
                 Ok(())
@@ -461,24 +525,31 @@ impl<'o> CfcChartBuilder<'o> {
                 .get(&source.local_id)
                 .ok_or_else(|| missing(source.local_id))?;
             let pin = match &source.kind {
-                ObjectKind::Block(block) => match connection.formal_parameter.as_deref() {
-                    Some(name) if !name.trim().is_empty() => name.to_owned(),
-                    // No pin named: the block's result, its first output other than ENO.
-                    _ => block
-                        .outputs
-                        .iter()
-                        .map(|pin| pin.formal_parameter.clone())
-                        .find(|name| !name.eq_ignore_ascii_case("ENO"))
-                        .ok_or_else(|| {
-                            BodyFault::Error(
-                                place.clone(),
-                                ImportErrorKind::BadCfc(format!(
-                                    "a connection comes from the block `{}` (localId {}), which has no output",
-                                    block.type_name, source.local_id
-                                )),
-                            )
-                        })?,
-                },
+                ObjectKind::Block(block) => {
+                    let name = match connection.formal_parameter.as_deref() {
+                        Some(name) if !name.trim().is_empty() => name.to_owned(),
+                        // No pin named: the block's result, its first output other than ENO.
+                        _ => block
+                            .outputs
+                            .iter()
+                            .map(|pin| pin.formal_parameter.clone())
+                            .find(|name| !name.eq_ignore_ascii_case("ENO"))
+                            .ok_or_else(|| {
+                                BodyFault::Error(
+                                    place.clone(),
+                                    ImportErrorKind::BadCfc(format!(
+                                        "a connection comes from the block `{}` (localId {}), which has no output",
+                                        block.type_name, source.local_id
+                                    )),
+                                )
+                            })?,
+                    };
+                    if self.is_box(block) {
+                        result_pin_name(&name)
+                    } else {
+                        name
+                    }
+                }
                 _ => String::new(),
             };
             return Ok(PinRef::new(element, pin));
@@ -503,7 +574,7 @@ impl<'o> CfcChartBuilder<'o> {
             expression: expression.to_owned(),
             coil: CoilKind::Normal,
         };
-        let output = self.push(x + 8, y, kind, None, None);
+        let output = self.push(x.saturating_add(8), y, kind, None, None);
         self.wires.push(Wire::routed(from, PinRef::new(output, "")));
     }
 
@@ -597,6 +668,16 @@ fn vendor_element_type(xml: &str) -> Option<String> {
 /// Whether `pins` is one pin without a name: a composer's output or a selector's input.
 fn is_unnamed_pin(pins: &[BlockPin]) -> bool {
     matches!(pins, [only] if only.formal_parameter.trim().is_empty())
+}
+
+/// The name of a box's output pin `name`: a function's result, which Beremiz names "", is
+/// `OUT`, as Rivet names it.
+fn result_pin_name(name: &str) -> String {
+    if name.trim().is_empty() {
+        "OUT".to_owned()
+    } else {
+        name.to_owned()
+    }
 }
 
 /// A pin of a box: its name, negation and edge.

@@ -21,7 +21,8 @@ pub(super) struct OrderedElement {
 }
 
 /// What drives each element of a chart in the making: the elements its wires come from, for a
-/// connection sink the sources of its name, and for an in-out's input its output.
+/// connection sink the sources of its name, and (in CODESYS's order) for an in-out's input its
+/// output.
 struct Drivers<'e> {
     /// The elements by id.
     by_id: HashMap<ElementId, &'e CfcElement>,
@@ -33,7 +34,9 @@ struct Drivers<'e> {
 }
 
 impl<'e> Drivers<'e> {
-    fn new(elements: &'e [OrderedElement], wires: &[Wire]) -> Self {
+    /// The drivers of `elements` through `wires`; an in-out's input is driven by its output
+    /// when `in_outs_written_first`.
+    fn new(elements: &'e [OrderedElement], wires: &[Wire], in_outs_written_first: bool) -> Self {
         let by_id = elements
             .iter()
             .map(|placed| (placed.element.id, &placed.element))
@@ -47,7 +50,9 @@ impl<'e> Drivers<'e> {
         }
         let mut sources: HashMap<String, Vec<ElementId>> = HashMap::new();
         for placed in elements {
-            if let Some(output) = placed.reads_write_of {
+            if let Some(output) = placed.reads_write_of
+                && in_outs_written_first
+            {
                 wired.entry(placed.element.id).or_default().push(output);
             }
             if let CfcElementKind::ConnectionSource { name } = &placed.element.kind {
@@ -125,7 +130,7 @@ fn executable_drivers(
     elements: &[OrderedElement],
     wires: &[Wire],
 ) -> HashMap<ElementId, BTreeSet<ElementId>> {
-    let links = Drivers::new(elements, wires);
+    let links = Drivers::new(elements, wires, true);
     let mut drivers = HashMap::new();
     for placed in elements {
         if !placed.element.kind.is_executable() {
@@ -215,9 +220,12 @@ fn by_rank_and_flow(elements: &[OrderedElement], wires: &[Wire]) -> Vec<ElementI
     order
 }
 
-/// Beremiz's order for a graph without execution order ids.
+/// Beremiz's order for a graph without execution order ids. Beremiz's generator reads an
+/// in-out as its variable's name and runs the writes in place order, so a reader drawn above
+/// an in-out runs before its write and reads the previous cycle's value: an in-out's input is
+/// not driven by its output here.
 fn by_data_flow(elements: &[OrderedElement], wires: &[Wire]) -> Vec<ElementId> {
-    let links = Drivers::new(elements, wires);
+    let links = Drivers::new(elements, wires, false);
     let mut roots: Vec<(bool, i32, i32, usize, ElementId)> = elements
         .iter()
         .enumerate()

@@ -1,6 +1,8 @@
 //! The CFC import (docs/plcopen-xml.md §4.5–4.6): CODESYS's CFC, Rivet's marked FBD bodies and
 //! any FBD graph.
 
+use std::collections::HashSet;
+
 use project_model::{
     Body, CfcChart, CfcElement, CfcElementKind, CoilKind, ElementId, GridPoint, Object, PinRef,
 };
@@ -201,8 +203,14 @@ fn a_beremiz_fbd_graph_runs_each_block_before_what_it_drives() {
         let BodyContent::Fbd(objects) = &body.content else {
             continue;
         };
-        let chart = fbd_graph_to_cfc(objects, CfcDialect::Beremiz, "body/FBD", body.line)
-            .unwrap_or_else(|fault| panic!("{}: {fault:?}", pou.name));
+        let chart = fbd_graph_to_cfc(
+            objects,
+            CfcDialect::Beremiz,
+            "body/FBD",
+            body.line,
+            &HashSet::new(),
+        )
+        .unwrap_or_else(|fault| panic!("{}: {fault:?}", pou.name));
         let order_of = |id: ElementId| {
             chart
                 .elements
@@ -311,7 +319,7 @@ fn a_beremiz_feedback_loop_keeps_every_element_once() {
         BodyContent::Fbd(objects) => objects,
         other => panic!("{other:?}"),
     };
-    let chart = fbd_graph_to_cfc(objects, CfcDialect::Beremiz, "body/FBD", 1)
+    let chart = fbd_graph_to_cfc(objects, CfcDialect::Beremiz, "body/FBD", 1, &HashSet::new())
         .unwrap_or_else(|fault| panic!("{fault:?}"));
     let add = element(&chart, |kind| matches!(kind, CfcElementKind::Box(_)));
     let out = element(&chart, |kind| matches!(kind, CfcElementKind::Output { .. }));
@@ -332,9 +340,9 @@ fn a_beremiz_feedback_loop_keeps_every_element_once() {
         BodyContent::Fbd(objects) => objects,
         other => panic!("{other:?}"),
     };
-    let codesys = fbd_graph_to_cfc(objects, CfcDialect::Codesys, "body/FBD", 1)
+    let codesys = fbd_graph_to_cfc(objects, CfcDialect::Codesys, "body/FBD", 1, &HashSet::new())
         .unwrap_or_else(|fault| panic!("{fault:?}"));
-    let rivet = fbd_graph_to_cfc(objects, CfcDialect::Rivet, "body/FBD", 1)
+    let rivet = fbd_graph_to_cfc(objects, CfcDialect::Rivet, "body/FBD", 1, &HashSet::new())
         .unwrap_or_else(|fault| panic!("{fault:?}"));
     let orders = |chart: &CfcChart| {
         let add = element(chart, |kind| matches!(kind, CfcElementKind::Box(_))).order;
@@ -412,26 +420,144 @@ fn an_in_out_variable_is_an_output_and_an_input_read_after_it() {
     );
 }
 
+/// Beremiz's counter: `ADD(a, 1)` into an in-out `a`, whose output `b` reads; `b` drawn at
+/// `b_y` pixels (the in-out at 10).
+fn beremiz_in_out_counter(b_y: u32) -> String {
+    format!(
+        r#"<body><FBD>
+      <inVariable localId="1"><position x="10" y="20"/><connectionPointOut/><expression>1</expression></inVariable>
+      <block localId="3" typeName="ADD"><position x="60" y="10"/>
+        <inputVariables>
+          <variable formalParameter="IN1"><connectionPointIn><connection refLocalId="4"/></connectionPointIn></variable>
+          <variable formalParameter="IN2"><connectionPointIn><connection refLocalId="1"/></connectionPointIn></variable>
+        </inputVariables><inOutVariables/>
+        <outputVariables><variable formalParameter="OUT"><connectionPointOut/></variable></outputVariables>
+      </block>
+      <inOutVariable localId="4"><position x="120" y="10"/><connectionPointIn><connection refLocalId="3" formalParameter="OUT"/></connectionPointIn><connectionPointOut/><expression>a</expression></inOutVariable>
+      <outVariable localId="5"><position x="200" y="{b_y}"/><connectionPointIn><connection refLocalId="4"/></connectionPointIn><expression>b</expression></outVariable>
+    </FBD></body>"#
+    )
+}
+
+/// The FBD graph of the one body of `body`'s document, as a chart in Beremiz's dialect.
+fn beremiz_chart(body: &str, structures: &HashSet<String>) -> CfcChart {
+    let parsed = read(&document(body), "in.xml").unwrap_or_else(|error| panic!("{error}"));
+    let objects = parsed.pous[0].bodies[0].content.objects();
+    fbd_graph_to_cfc(objects, CfcDialect::Beremiz, "body/FBD", 1, structures)
+        .unwrap_or_else(|fault| panic!("{fault:?}"))
+}
+
 #[test]
-fn an_in_out_variable_in_beremiz_order_is_written_before_its_readers() {
-    let body = IN_OUT_COUNTER
-        .replace(r#"executionOrderId="1""#, r#"executionOrderId="0""#)
-        .replace(r#"executionOrderId="2""#, r#"executionOrderId="0""#);
-    let parsed = read(&document(&body), "in.xml").unwrap_or_else(|error| panic!("{error}"));
-    let Some(objects) = &parsed.pous[0].bodies[0].cfc else {
-        panic!("{:?}", parsed.pous[0].bodies[0])
+fn an_in_out_variable_in_beremiz_order_is_written_before_its_readers_below_it() {
+    let order = |chart: &CfcChart| {
+        let output = |expression: &str| {
+            element(
+                chart,
+                |kind| matches!(kind, CfcElementKind::Output { expression: e, .. } if e == expression),
+            )
+            .order
+        };
+        let add = element(chart, |kind| matches!(kind, CfcElementKind::Box(_))).order;
+        (add, output("a"), output("b"))
     };
-    let chart = fbd_graph_to_cfc(objects, CfcDialect::Beremiz, "body/FBD", 1)
-        .unwrap_or_else(|fault| panic!("{fault:?}"));
-    let order = |expression: &str| {
-        element(
-            &chart,
-            |kind| matches!(kind, CfcElementKind::Output { expression: e, .. } if e == expression),
-        )
-        .order
+    // `b` on the in-out's row, right of it: Beremiz runs the write first, `b` reads the new
+    // value.
+    let level = beremiz_chart(&beremiz_in_out_counter(10), &HashSet::new());
+    assert_eq!(order(&level), (Some(0), Some(1), Some(2)), "{level:#?}");
+    // `b` drawn above the in-out: Beremiz's generator reads an in-out as its variable's name
+    // and runs `b` first, so `b` reads the previous cycle's value.
+    let above = beremiz_chart(&beremiz_in_out_counter(0), &HashSet::new());
+    assert_eq!(order(&above), (Some(1), Some(2), Some(0)), "{above:#?}");
+}
+
+#[test]
+fn an_in_out_variable_nothing_is_wired_into_is_only_read() {
+    let body = IN_OUT_COUNTER.replace(
+        r#"<connectionPointIn><connection refLocalId="3" formalParameter="OUT"/></connectionPointIn><connectionPointOut/><expression>a</expression>"#,
+        r#"<connectionPointIn/><connectionPointOut/><expression>a</expression>"#,
+    );
+    assert_ne!(body, IN_OUT_COUNTER);
+    let imported = imported(&document(&body));
+    let chart = chart(&imported, "Chart");
+    assert!(
+        !chart
+            .elements
+            .iter()
+            .any(|element| matches!(&element.kind, CfcElementKind::Output { expression, .. } if expression == "a")),
+        "{chart:#?}"
+    );
+    let read = input(chart, "a");
+    let out = element(
+        chart,
+        |kind| matches!(kind, CfcElementKind::Output { expression, .. } if expression == "b"),
+    );
+    assert!(chart.wires.contains(&project_model::Wire::routed(
+        PinRef::new(read, ""),
+        PinRef::new(out.id, "")
+    )));
+    assert!(project_model::cfc_problems(chart).is_empty());
+}
+
+/// A block `type_name` (with `instance` attributes) with one input and one unnamed output,
+/// read from `a` and written to `b`, in a Beremiz FBD graph.
+fn unnamed_output_block(type_name: &str, instance: &str) -> String {
+    format!(
+        r#"<body><FBD>
+      <inVariable localId="1"><position x="10" y="10"/><connectionPointOut/><expression>a</expression></inVariable>
+      <block localId="2" typeName="{type_name}"{instance}><position x="60" y="10"/>
+        <inputVariables><variable formalParameter="IN"><connectionPointIn><connection refLocalId="1"/></connectionPointIn></variable></inputVariables>
+        <inOutVariables/>
+        <outputVariables><variable formalParameter=""><connectionPointOut/></variable></outputVariables>
+      </block>
+      <outVariable localId="3"><position x="120" y="10"/><connectionPointIn><connection refLocalId="2"/></connectionPointIn><expression>b</expression></outVariable>
+    </FBD></body>"#
+    )
+}
+
+#[test]
+fn only_a_structure_of_the_document_without_instance_is_taken_for_a_composer() {
+    let structures: HashSet<String> = ["point".to_owned()].into();
+    let kind_of = |body: &str| {
+        let chart = beremiz_chart(body, &structures);
+        element(&chart, |kind| {
+            matches!(
+                kind,
+                CfcElementKind::Box(_) | CfcElementKind::Composer { .. }
+            )
+        })
+        .kind
+        .clone()
     };
-    let add = element(&chart, |kind| matches!(kind, CfcElementKind::Box(_))).order;
-    assert_eq!((add, order("a"), order("b")), (Some(0), Some(1), Some(2)));
+    // Beremiz names a function's result "": ABS stays a box.
+    assert!(
+        matches!(kind_of(&unnamed_output_block("ABS", "")), CfcElementKind::Box(b) if b.type_name == "ABS"),
+    );
+    assert!(matches!(
+        kind_of(&unnamed_output_block("Point", "")),
+        CfcElementKind::Composer { type_name, .. } if type_name == "Point"
+    ));
+    // An instance is kept: a box of that name.
+    assert!(matches!(
+        kind_of(&unnamed_output_block("Point", r#" instanceName="p1""#)),
+        CfcElementKind::Box(b) if b.instance == "p1"
+    ));
+}
+
+#[test]
+fn an_in_out_at_the_end_of_the_coordinates_finds_a_free_place() {
+    // Both elements of the pair round to the last place of the grid: the input goes above.
+    let body = beremiz_in_out_counter(10).replace(
+        r#"<inOutVariable localId="4"><position x="120" y="10"/>"#,
+        r#"<inOutVariable localId="4"><position x="1e300" y="1e300"/>"#,
+    );
+    let chart = beremiz_chart(&body, &HashSet::new());
+    let places: HashSet<(i32, i32)> = chart
+        .elements
+        .iter()
+        .map(|element| (element.x, element.y))
+        .collect();
+    assert_eq!(places.len(), chart.elements.len(), "{chart:#?}");
+    assert!(places.contains(&(i32::MAX, i32::MAX)), "{chart:#?}");
 }
 
 #[test]

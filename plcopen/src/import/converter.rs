@@ -1,6 +1,6 @@
 //! The state of one conversion: the project so far, the report, and the names already taken.
 
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 
 use project_model::{Node, Object, Project, VendorEntry};
 
@@ -8,6 +8,7 @@ use super::error::{ImportError, ImportErrorKind};
 use super::report::{ImportReport, Outcome};
 use super::vendor_places::vendor_place;
 use crate::add_data::{AddData, AddDataEntry};
+use crate::data_type::DataType;
 use crate::document::Document;
 use crate::text::FormattedText;
 
@@ -21,6 +22,12 @@ pub(super) struct Converter<'d> {
     pub report: ImportReport,
     /// The objects of the application by their lower-case name: the name as written and its line.
     object_names: HashMap<String, (String, u32)>,
+    /// The lower-case names of the document's structure types, which a block with one unnamed
+    /// output or input composes or selects (docs/plcopen-xml.md §4.5).
+    pub structures: HashSet<String>,
+    /// The paths of the `addData` entries of converted objects reported so far: an object in
+    /// both a wired condition and its SFC body, or read by two conditions, is reported once.
+    pub reported_object_data: HashSet<String>,
 }
 
 /// Where an element stands, for errors and the report.
@@ -42,6 +49,13 @@ impl<'d> Converter<'d> {
             project: Project::default(),
             report: ImportReport::default(),
             object_names: HashMap::new(),
+            structures: document
+                .data_types
+                .iter()
+                .filter(|declared| matches!(declared.base_type, DataType::Struct { .. }))
+                .map(|declared| declared.name.trim().to_lowercase())
+                .collect(),
+            reported_object_data: HashSet::new(),
         }
     }
 

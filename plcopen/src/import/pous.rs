@@ -27,6 +27,9 @@ pub(super) struct BodyAt<'p> {
     /// The path of the element whose children are the body's objects (`…/body/LD`), or of the
     /// SFC body a wired condition's objects stand in.
     pub objects_path: String,
+    /// The path of an object the import added to the body (the coil at a wired condition's
+    /// end), and the path its errors and report entries name instead (the condition).
+    pub invented: Option<(String, String)>,
 }
 
 /// Whether an FBD body carries Rivet's marker of a CFC chart (the `…/language` entry holding
@@ -293,6 +296,7 @@ impl Converter<'_> {
             holder,
             objects_path: format!("{body_path}/{}", body.content.language()),
             body_path,
+            invented: None,
         };
         self.body_at(body, &at, what, synthesized)
     }
@@ -348,10 +352,14 @@ impl Converter<'_> {
             None => at.objects_path.clone(),
         };
         let converted = match (&body.cfc, &body.content) {
-            (Some(objects), _) => {
-                fbd_graph_to_cfc(objects, CfcDialect::Codesys, &objects_path, body.line)
-                    .map(|chart| Body::Cfc { chart })
-            }
+            (Some(objects), _) => fbd_graph_to_cfc(
+                objects,
+                CfcDialect::Codesys,
+                &objects_path,
+                body.line,
+                &self.structures,
+            )
+            .map(|chart| Body::Cfc { chart }),
             (None, BodyContent::Sfc(objects)) => {
                 let builder =
                     SfcChartBuilder::new(objects, &objects_path, body.line, synthesized, self);
@@ -360,15 +368,23 @@ impl Converter<'_> {
                     Body::Sfc { chart }
                 })
             }
-            (None, BodyContent::Fbd(objects)) if is_rivet_cfc(body) => {
-                fbd_graph_to_cfc(objects, CfcDialect::Rivet, &objects_path, body.line)
-                    .map(|chart| Body::Cfc { chart })
-            }
+            (None, BodyContent::Fbd(objects)) if is_rivet_cfc(body) => fbd_graph_to_cfc(
+                objects,
+                CfcDialect::Rivet,
+                &objects_path,
+                body.line,
+                &self.structures,
+            )
+            .map(|chart| Body::Cfc { chart }),
             // An FBD graph with feedback or fan-out: a CFC chart runs it as drawn.
-            (None, BodyContent::Fbd(objects)) => {
-                fbd_graph_to_cfc(objects, CfcDialect::Beremiz, &objects_path, body.line)
-                    .map(|chart| Body::Cfc { chart })
-            }
+            (None, BodyContent::Fbd(objects)) => fbd_graph_to_cfc(
+                objects,
+                CfcDialect::Beremiz,
+                &objects_path,
+                body.line,
+                &self.structures,
+            )
+            .map(|chart| Body::Cfc { chart }),
             _ => {
                 return Ok(Err(format!(
                     "its body is {}, which Rivet does not convert",
@@ -418,6 +434,11 @@ impl Converter<'_> {
             {
                 *path = format!("{}{rest}", at.objects_path);
             }
+            if let Some((invented, instead)) = &at.invented
+                && let Some(rest) = path.strip_prefix(invented.as_str())
+            {
+                *path = format!("{instead}{rest}");
+            }
         };
         let first_entry = self.report.entries.len();
         let outcome = self.networks(body, at.holder, what);
@@ -440,15 +461,21 @@ impl Converter<'_> {
                 if is_rivet_entry(&entry.name) {
                     continue;
                 }
+                let entry_path = format!(
+                    "{path}/{}[@localId='{}']/addData/data[@name='{}']",
+                    object.kind.element_name(),
+                    object.local_id,
+                    entry.name
+                );
+                // An object of a wired condition is converted with the condition and with its
+                // SFC body, and may feed several conditions: one entry says it.
+                if !self.reported_object_data.insert(entry_path.clone()) {
+                    continue;
+                }
                 self.report.push(
                     Outcome::NotConverted,
                     format!("addData '{}'", entry.name),
-                    &format!(
-                        "{path}/{}[@localId='{}']/addData/data[@name='{}']",
-                        object.kind.element_name(),
-                        object.local_id,
-                        entry.name
-                    ),
+                    &entry_path,
                     object.line,
                     "the data of one object of a converted body: Rivet rebuilds the body's objects, so it has no element to go back to",
                 );

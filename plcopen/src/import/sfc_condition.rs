@@ -3,7 +3,7 @@
 //! contacts, an LD graph into a transition object of LD networks, an FBD graph into one of a
 //! CFC chart).
 
-use std::collections::{HashSet, VecDeque};
+use std::collections::{HashMap, HashSet, VecDeque};
 
 use project_model::{Body, PouAction, Transition};
 
@@ -148,6 +148,7 @@ impl<'o> SfcChartBuilder<'o, '_> {
                 for part in &graph {
                     self.used.insert(part.local_id);
                 }
+                self.note_condition_coils(&graph);
                 return Ok(ConditionText {
                     text,
                     names_object: false,
@@ -161,6 +162,7 @@ impl<'o> SfcChartBuilder<'o, '_> {
             CfcDialect::Beremiz,
             &self.body_path,
             object.line,
+            self.bodies.structures(),
         );
         builder.build()?;
         let from = builder.source_of(connection, &self.place(object))?;
@@ -169,13 +171,12 @@ impl<'o> SfcChartBuilder<'o, '_> {
         for part in &graph {
             self.used.insert(part.local_id);
         }
-        if graph.iter().any(
-            |part| matches!(&part.kind, ObjectKind::Block(block) if block.instance_name.is_some()),
-        ) {
+        let (instances, edges) = stateful_parts(&graph);
+        if instances + edges > 0 {
             self.note(
                 object,
                 format!("condition '{name}'"),
-                "Beremiz runs the blocks of an SFC body every cycle; Rivet runs them when the transition is tested",
+                &stateful_note(instances, edges),
             );
         }
         self.pou_objects.transitions.push(PouAction {
@@ -190,7 +191,8 @@ impl<'o> SfcChartBuilder<'o, '_> {
 
     /// A condition wired from an LD graph that is more than contacts (`graph`, the objects that
     /// drive the wire `connection` into the condition of `transition`): a transition object
-    /// whose LD networks are the graph, with a coil writing the object's name at the wire's end.
+    /// whose LD networks are the graph without its coils, with a coil writing the object's name
+    /// at the wire's end.
     fn ld_condition(
         &mut self,
         transition: &BodyObject,
@@ -204,6 +206,9 @@ impl<'o> SfcChartBuilder<'o, '_> {
         while taken.contains(&coil_id) {
             coil_id += 1;
         }
+        // Beremiz's generator writes no coil of a condition: each passes its power on, so
+        // whatever reads a coil reads what powers it.
+        let (objects, into_condition) = without_coils(graph, connection);
         let coil = BodyObject {
             local_id: coil_id,
             execution_order_id: None,
@@ -218,7 +223,7 @@ impl<'o> SfcChartBuilder<'o, '_> {
                 storage: None,
                 input: Some(ConnectionPointIn {
                     rel_position: None,
-                    connections: vec![connection.clone()],
+                    connections: into_condition,
                     expression: None,
                     add_data: AddData::default(),
                 }),
@@ -229,11 +234,7 @@ impl<'o> SfcChartBuilder<'o, '_> {
             line: transition.line,
             column: transition.column,
         };
-        let objects: Vec<BodyObject> = graph
-            .iter()
-            .map(|part| (*part).clone())
-            .chain([coil])
-            .collect();
+        let objects: Vec<BodyObject> = objects.into_iter().chain([coil]).collect();
         let body = XmlBody {
             worksheet_name: None,
             global_id: None,
@@ -248,6 +249,11 @@ impl<'o> SfcChartBuilder<'o, '_> {
             holder: &holder,
             body_path: self.body_path.clone(),
             objects_path: self.body_path.clone(),
+            // The coil is the import's own: what concerns it concerns the condition.
+            invented: Some((
+                format!("{}/coil[@localId='{coil_id}']", self.body_path),
+                format!("{}/condition", holder.path),
+            )),
         };
         let what = format!("condition '{name}'");
         let converted = self
@@ -263,17 +269,10 @@ impl<'o> SfcChartBuilder<'o, '_> {
         for part in graph {
             self.used.insert(part.local_id);
         }
-        let runs_with_state = graph.iter().any(|part| match &part.kind {
-            ObjectKind::Block(block) => block.instance_name.is_some(),
-            ObjectKind::Coil(_) => true,
-            _ => false,
-        });
-        if runs_with_state {
-            self.note(
-                transition,
-                what,
-                "Beremiz runs the blocks and coils of an SFC body every cycle; Rivet runs them when the transition is tested",
-            );
+        self.note_condition_coils(graph);
+        let (instances, edges) = stateful_parts(graph);
+        if instances + edges > 0 {
+            self.note(transition, what, &stateful_note(instances, edges));
         }
         self.pou_objects.transitions.push(PouAction {
             name: name.clone(),
@@ -287,8 +286,8 @@ impl<'o> SfcChartBuilder<'o, '_> {
 
     /// The expression of a network of contacts from a left power rail ending at `local_id`:
     /// a contact is its variable (`NOT v` when negated) ANDed with what powers it, parallel
-    /// wires are ORed. `None` when the network holds anything else (a coil, a block, an edge
-    /// contact), or is deeper than `budget` (a ring).
+    /// wires are ORed; a coil passes its power on. `None` when the network holds anything else
+    /// (a block, an edge contact), or is deeper than `budget` (a ring).
     fn contact_expression(&self, local_id: u64, budget: usize) -> Option<String> {
         let budget = budget.checked_sub(1)?;
         let object = self.object(local_id).ok()?;
@@ -304,23 +303,48 @@ impl<'o> SfcChartBuilder<'o, '_> {
                 } else {
                     variable.to_owned()
                 };
-                let connections = &contact.input.as_ref()?.connections;
-                let mut powers = Vec::new();
-                for connection in connections {
-                    powers.push(self.contact_expression(connection.ref_local_id, budget)?);
-                }
-                let power = match powers.as_slice() {
-                    [] => return None,
-                    [one] => one.clone(),
-                    several => format!("({})", several.join(" OR ")),
-                };
+                let power = self.power_expression(contact.input.as_ref()?, budget)?;
                 Some(if power == "TRUE" {
                     operand
                 } else {
                     format!("{power} AND {operand}")
                 })
             }
+            // A coil of a condition passes its power on and writes nothing (§4.2).
+            ObjectKind::Coil(coil) => self.power_expression(coil.input.as_ref()?, budget),
             _ => None,
+        }
+    }
+
+    /// The power that reaches `point` as an expression: its wires' expressions ORed.
+    fn power_expression(&self, point: &ConnectionPointIn, budget: usize) -> Option<String> {
+        let mut powers = Vec::new();
+        for connection in &point.connections {
+            powers.push(self.contact_expression(connection.ref_local_id, budget)?);
+        }
+        match powers.as_slice() {
+            [] => None,
+            [one] => Some(one.clone()),
+            several => Some(format!("({})", several.join(" OR "))),
+        }
+    }
+
+    /// Reports each coil of `graph`, the objects of a condition: Beremiz's generator passes a
+    /// condition's coil's power on without writing its variable, and so does the import.
+    fn note_condition_coils(&mut self, graph: &[&'o BodyObject]) {
+        for part in graph {
+            if let ObjectKind::Coil(coil) = &part.kind {
+                // A coil that feeds several conditions is reported once.
+                let path = self.place(part).path;
+                if self.report.iter().any(|entry| entry.path == path) {
+                    continue;
+                }
+                self.note(
+                    part,
+                    format!("coil '{}'", coil.variable.trim()),
+                    "a coil in a transition's condition passes its power on and writes nothing, as in Beremiz's generator",
+                );
+            }
         }
     }
 
@@ -366,6 +390,124 @@ fn is_ld_object(kind: &ObjectKind) -> bool {
             | ObjectKind::LeftPowerRail(_)
             | ObjectKind::RightPowerRail(_)
     )
+}
+
+/// How many function block instances and edge detections (edge contacts, edge pins of blocks)
+/// the objects of a condition hold: the parts with state, which Beremiz runs every cycle.
+fn stateful_parts(graph: &[&BodyObject]) -> (usize, usize) {
+    let is_edge = |edge: Option<Edge>| matches!(edge, Some(Edge::Rising | Edge::Falling));
+    let mut instances = 0;
+    let mut edges = 0;
+    for part in graph {
+        match &part.kind {
+            ObjectKind::Block(block) => {
+                if block.instance_name.is_some() {
+                    instances += 1;
+                }
+                edges += block
+                    .inputs
+                    .iter()
+                    .chain(&block.in_outs)
+                    .chain(&block.outputs)
+                    .filter(|pin| is_edge(pin.edge))
+                    .count();
+            }
+            ObjectKind::Contact(contact) if is_edge(contact.edge) => edges += 1,
+            _ => {}
+        }
+    }
+    (instances, edges)
+}
+
+/// The report's note on a condition with `instances` function block instances and `edges`
+/// edge detections (docs/plcopen-xml.md §4.2, the decision).
+fn stateful_note(instances: usize, edges: usize) -> String {
+    format!(
+        "it holds {instances} function block instance(s) and {edges} edge detection(s), which Beremiz runs every cycle (its action COMPUTE_FUNCTION_BLOCKS) and Rivet only when the transition is tested: an edge that comes while the step is inactive is consumed in Beremiz and seen by Rivet when the step becomes active"
+    )
+}
+
+/// The objects of `graph` without their coils, and the wires of `connection` (into the
+/// condition) likewise: each wire from a coil is replaced by the wires into the coil, through
+/// chains of coils, as Beremiz's generator passes a coil's power on.
+fn without_coils(
+    graph: &[&BodyObject],
+    connection: &Connection,
+) -> (Vec<BodyObject>, Vec<Connection>) {
+    let coil_inputs: HashMap<u64, &[Connection]> = graph
+        .iter()
+        .filter_map(|part| match &part.kind {
+            ObjectKind::Coil(coil) => Some((
+                part.local_id,
+                coil.input
+                    .as_ref()
+                    .map_or(&[][..], |point| point.connections.as_slice()),
+            )),
+            _ => None,
+        })
+        .collect();
+    let past_coils = |connections: &[Connection]| -> Vec<Connection> {
+        let mut found: Vec<Connection> = Vec::new();
+        let mut expanded: HashSet<u64> = HashSet::new();
+        let mut stack: Vec<Connection> = connections.iter().rev().cloned().collect();
+        while let Some(next) = stack.pop() {
+            match coil_inputs.get(&next.ref_local_id) {
+                // Each coil once: a ring of coils ends.
+                Some(inputs) => {
+                    if expanded.insert(next.ref_local_id) {
+                        stack.extend(inputs.iter().rev().cloned());
+                    }
+                }
+                None => {
+                    let same = |other: &Connection| {
+                        other.ref_local_id == next.ref_local_id
+                            && other.formal_parameter == next.formal_parameter
+                    };
+                    if !found.iter().any(same) {
+                        found.push(next);
+                    }
+                }
+            }
+        }
+        found
+    };
+    let objects = graph
+        .iter()
+        .filter(|part| !matches!(part.kind, ObjectKind::Coil(_)))
+        .map(|part| {
+            let mut part = (*part).clone();
+            for point in graph_inputs_mut(&mut part.kind) {
+                point.connections = past_coils(&point.connections);
+            }
+            part
+        })
+        .collect();
+    (objects, past_coils(std::slice::from_ref(connection)))
+}
+
+/// [`graph_inputs`], to be rewired.
+fn graph_inputs_mut(kind: &mut ObjectKind) -> Vec<&mut ConnectionPointIn> {
+    match kind {
+        ObjectKind::Block(block) => block
+            .inputs
+            .iter_mut()
+            .chain(&mut block.in_outs)
+            .filter_map(|pin| pin.input.as_mut())
+            .collect(),
+        ObjectKind::VendorElement(element) => element
+            .inputs
+            .iter_mut()
+            .chain(&mut element.in_outs)
+            .filter_map(|pin| pin.input.as_mut())
+            .collect(),
+        ObjectKind::OutVariable(variable) => variable.input.iter_mut().collect(),
+        ObjectKind::InOutVariable(variable) => variable.input.iter_mut().collect(),
+        ObjectKind::Connector(connector) => connector.input.iter_mut().collect(),
+        ObjectKind::Contact(contact) => contact.input.iter_mut().collect(),
+        ObjectKind::Coil(coil) => coil.input.iter_mut().collect(),
+        ObjectKind::RightPowerRail(rail) => rail.inputs.iter_mut().collect(),
+        _ => Vec::new(),
+    }
 }
 
 /// The connection points through which an FBD or LD object reads others.

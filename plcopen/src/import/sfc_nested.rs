@@ -2,6 +2,8 @@
 //! wired condition), converted as the POU conversion converts any body (docs/plcopen-xml.md
 //! §4.2, §4.3): the chart's walk hands them to it through [`NestedBodies`].
 
+use std::collections::HashSet;
+
 use project_model::Body;
 
 use super::body_fault::BodyFault;
@@ -24,6 +26,9 @@ pub(super) trait NestedBodies: Send {
         what: &str,
         synthesized: &mut PouObjects,
     ) -> Result<Body, BodyFault>;
+
+    /// The lower-case names of the document's structure types (docs/plcopen-xml.md §4.5).
+    fn structures(&self) -> &HashSet<String>;
 }
 
 impl NestedBodies for Converter<'_> {
@@ -46,5 +51,9 @@ impl NestedBodies for Converter<'_> {
                 *error.kind,
             )),
         }
+    }
+
+    fn structures(&self) -> &HashSet<String> {
+        &self.structures
     }
 }

@@ -7,6 +7,7 @@ use super::converter::comment;
 use super::pous::BodyAt;
 use super::rivet_attributes::rivet_attributes;
 use super::sfc_chart::SfcChartBuilder;
+use crate::body::BodyContent;
 use crate::body_object::{BodyObject, ObjectKind};
 use crate::sfc::{ActionBlockAction, ActionContent, Qualifier};
 
@@ -41,20 +42,29 @@ impl SfcChartBuilder<'_, '_> {
             let ObjectKind::ActionBlock(action_block) = &block.kind else {
                 continue;
             };
-            for action in &action_block.actions {
-                let association = self.association(block, name, action)?;
+            // A path names the action by its index when the block holds several.
+            let several = action_block.actions.len() > 1;
+            for (index, action) in action_block.actions.iter().enumerate() {
+                let element = if several {
+                    format!("action[{}]", index + 1)
+                } else {
+                    "action".to_owned()
+                };
+                let association = self.association(block, name, action, &element)?;
                 step.actions.push(association);
             }
         }
         Ok(step)
     }
 
-    /// One action of an action block of the step `step`.
+    /// One action of an action block of the step `step`, named `element` in the block's path
+    /// (`action`, or `action[2]` in a block of several).
     fn association(
         &mut self,
         block: &BodyObject,
         step: &str,
         action: &ActionBlockAction,
+        element: &str,
     ) -> Result<ActionAssociation, BodyFault> {
         let qualifier = match action.qualifier {
             None | Some(Qualifier::N) => ActionQualifier::N,
@@ -80,8 +90,16 @@ impl SfcChartBuilder<'_, '_> {
         let name = match &action.content {
             ActionContent::Reference(name) => name.trim().to_owned(),
             ActionContent::Inline(body) => {
+                if matches!(body.content, BodyContent::Sfc(_)) {
+                    // The compiler runs a chart only as the body of a program or function
+                    // block (E0124, docs/graphical-semantics.md §7), not inside an action.
+                    return Err(BodyFault::NotConverted(format!(
+                        "an inline action of step `{step}` (line {}) is an SFC chart, which Rivet runs only as the body of a program or function block, not inside an action",
+                        block.line
+                    )));
+                }
                 let body_path = format!(
-                    "{}/actionBlock[@localId='{}']/action/inline",
+                    "{}/actionBlock[@localId='{}']/{element}/inline",
                     self.body_path, block.local_id
                 );
                 let holder = self.place(block);
@@ -89,6 +107,7 @@ impl SfcChartBuilder<'_, '_> {
                     holder: &holder,
                     objects_path: format!("{body_path}/{}", body.content.language()),
                     body_path,
+                    invented: None,
                 };
                 let what = format!("inline action of step '{step}'");
                 let converted = self

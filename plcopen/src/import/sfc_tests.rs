@@ -722,24 +722,35 @@ fn a_condition_wired_from_an_ld_graph_becomes_a_transition_object_of_ld_networks
     let Body::Ld { networks } = &condition.body else {
         panic!("{:?}", condition.body)
     };
-    // go (rising) → seen, then A_INLINE1 → the object's own name: the coils in series.
+    // go (rising) and A_INLINE1 → the object's own name; the coil `seen` passes its power on
+    // and writes nothing, as in Beremiz's generator.
     let [network] = networks.as_slice() else {
         panic!("{networks:?}")
     };
     assert!(
-        matches!(network.rung.as_slice(), [project_model::FlowNode::Operand(go)]
-            if go.text == "go" && go.edge == project_model::Edge::Rising),
+        matches!(network.rung.as_slice(), [project_model::FlowNode::Operand(go), project_model::FlowNode::Operand(and)]
+            if go.text == "go" && go.edge == project_model::Edge::Rising && and.text == "A_INLINE1"),
         "{network:#?}"
     );
-    let text = format!("{network:?}");
-    for part in ["\"seen\"", "\"A_INLINE1\"", "\"A_CONDITION1\""] {
-        assert!(text.contains(part), "{part}: {network:#?}");
-    }
+    assert!(
+        matches!(network.outputs.as_slice(), [project_model::NetworkOutput::Coil(coil)] if coil.variable == "A_CONDITION1"),
+        "{network:#?}"
+    );
     assert!(project_model::network_problems(networks).is_empty());
-    // The coil runs only when the transition is tested: the report says so.
+    let coil = imported.report.entry("coil 'seen'");
+    assert!(
+        coil.is_some_and(|entry| entry.note.contains("writes nothing")
+            && entry.path.ends_with("/body/SFC/coil[@localId='12']")),
+        "{:#?}",
+        imported.report
+    );
+    // The edge's trigger runs only when the transition is tested: the report says so.
     let note = imported.report.entry("condition 'A_CONDITION1'");
     assert!(
         note.is_some_and(|entry| entry.outcome == Outcome::Converted
+            && entry
+                .note
+                .contains("0 function block instance(s) and 1 edge detection(s)")
             && entry.note.contains("when the transition is tested")),
         "{:#?}",
         imported.report
@@ -753,7 +764,7 @@ fn a_condition_wired_from_an_ld_graph_becomes_a_transition_object_of_ld_networks
         imported.report
     );
     // A negated condition calls the object under NOT.
-    let negated = ld_wired_chart("").replace(
+    let negated = ld_wired_chart(r#" edge="falling""#).replace(
         "<condition><connectionPointIn>",
         r#"<condition negated="true"><connectionPointIn>"#,
     );
@@ -762,6 +773,145 @@ fn a_condition_wired_from_an_ld_graph_becomes_a_transition_object_of_ld_networks
         outline(&chart(pou(&imported, "Seq")).sequence),
         "S:A T:NOT A_CONDITION1() J:A"
     );
+    // Without the edge, the coil passing its power on leaves contacts: an expression.
+    let contacts = ld_wired_chart("").replace(
+        "<condition><connectionPointIn>",
+        r#"<condition negated="true"><connectionPointIn>"#,
+    );
+    let imported = self::imported(&document(&contacts, ""));
+    let seq = pou(&imported, "Seq");
+    assert_eq!(
+        outline(&chart(seq).sequence),
+        "S:A T:NOT (go AND A_INLINE1) J:A"
+    );
+    assert!(seq.transitions.is_empty(), "{:?}", seq.transitions);
+    assert!(imported.report.entry("coil 'seen'").is_some());
+}
+
+#[test]
+fn an_error_at_the_end_of_a_wired_ld_condition_names_the_condition() {
+    // The condition reads a coil with nothing before it: the coil passes on no power, so the
+    // import's own coil at the wire's end has nothing before it.
+    let objects = [
+        step(1, "A", true, None),
+        r#"<coil localId="12"><position x="80" y="100"/><connectionPointOut/><variable>seen</variable></coil>"#.to_owned(),
+        r#"<transition localId="2"><position x="160" y="100"/><connectionPointIn><connection refLocalId="1"/></connectionPointIn><connectionPointOut/><condition><connectionPointIn><connection refLocalId="12"/></connectionPointIn></condition></transition>"#.to_owned(),
+        jump(3, 2, "A"),
+    ]
+    .join("\n");
+    let refused = error(&document(&objects, ""));
+    assert!(
+        refused
+            .path
+            .ends_with("/body/SFC/transition[@localId='2']/condition"),
+        "{refused}"
+    );
+    assert!(
+        matches!(&*refused.kind, ImportErrorKind::Network(_)),
+        "{refused}"
+    );
+}
+
+#[test]
+fn a_block_instance_in_a_wired_ld_condition_is_counted_in_the_note() {
+    // A contact `go` drives the EN of a TON `delay`, whose Q is the condition.
+    let objects = [
+        step(1, "A", true, None),
+        r#"<leftPowerRail localId="10"><position x="10" y="100"/><connectionPointOut formalParameter=""/></leftPowerRail>"#.to_owned(),
+        r#"<contact localId="11"><position x="40" y="100"/><connectionPointIn><connection refLocalId="10"/></connectionPointIn><connectionPointOut/><variable>go</variable></contact>"#.to_owned(),
+        r#"<block localId="12" typeName="TON" instanceName="delay"><position x="80" y="100"/>
+          <inputVariables>
+            <variable formalParameter="IN"><connectionPointIn><connection refLocalId="11"/></connectionPointIn></variable>
+            <variable formalParameter="PT"><connectionPointIn/></variable>
+          </inputVariables><inOutVariables/>
+          <outputVariables><variable formalParameter="Q"><connectionPointOut/></variable><variable formalParameter="ET"><connectionPointOut/></variable></outputVariables>
+        </block>"#.to_owned(),
+        r#"<transition localId="2"><position x="160" y="100"/><connectionPointIn><connection refLocalId="1"/></connectionPointIn><connectionPointOut/><condition><connectionPointIn><connection refLocalId="12" formalParameter="Q"/></connectionPointIn></condition></transition>"#.to_owned(),
+        jump(3, 2, "A"),
+    ]
+    .join("\n");
+    let imported = imported(&document(&objects, ""));
+    let note = imported.report.entry("condition 'A_CONDITION1'");
+    assert!(
+        note.is_some_and(|entry| entry
+            .note
+            .contains("1 function block instance(s) and 0 edge detection(s)")),
+        "{:#?}",
+        imported.report
+    );
+}
+
+#[test]
+fn an_inline_sfc_action_leaves_the_pou_not_converted_with_the_reason() {
+    let sfc = format!(
+        r#"<inline><SFC>{}</SFC></inline>"#,
+        step(1, "Inner", true, None)
+    );
+    let imported = imported(&document(&inline_action_chart(&sfc), ""));
+    let entry = imported.report.entry("POU 'Seq'");
+    assert!(
+        entry.is_some_and(|entry| entry.outcome == Outcome::NotConverted
+            && entry.note.contains("is an SFC chart")
+            && entry.note.contains("not inside an action")),
+        "{entry:?}"
+    );
+}
+
+#[test]
+fn an_error_in_the_second_inline_action_of_a_block_names_the_action() {
+    let dangling = INLINE_LD.replace(
+        r#"<connectionPointIn><connection refLocalId="2"/></connectionPointIn><connectionPointOut/><variable>A_INLINE1"#,
+        r#"<connectionPointOut/><variable>A_INLINE1"#,
+    );
+    let two = inline_action_chart(INLINE_LD).replace(
+        "</action></actionBlock>",
+        &format!(r#"</action><action localId="1">{dangling}</action></actionBlock>"#),
+    );
+    let refused = error(&document(&two, ""));
+    assert!(
+        refused.path.ends_with(
+            "/body/SFC/actionBlock[@localId='9']/action[2]/inline/LD/coil[@localId='3']"
+        ),
+        "{}",
+        refused.path
+    );
+}
+
+#[test]
+fn the_data_of_an_object_shared_by_two_conditions_is_reported_once() {
+    // The contacts `go` (edge) and `A_INLINE1` feed both transitions out of `A`'s alternative;
+    // the contact `go` carries another tool's entry.
+    let entry =
+        r#"<addData><data name="urn:other/x" handleUnknown="preserve"><x/></data></addData>"#;
+    let objects = ld_wired_chart(r#" edge="rising""#)
+        .replace(
+            "<variable>go</variable></contact>",
+            &format!("<variable>go</variable>{entry}</contact>"),
+        )
+        .replace(
+            &jump(3, 2, "A"),
+            &format!(
+                "{}\n{}\n{}\n{}",
+                r#"<selectionDivergence localId="20"><connectionPointIn><connection refLocalId="1"/></connectionPointIn><connectionPointOut formalParameter=""/></selectionDivergence>"#,
+                r#"<transition localId="21"><position x="300" y="100"/><connectionPointIn><connection refLocalId="20"/></connectionPointIn><connectionPointOut/><condition><connectionPointIn><connection refLocalId="13"/></connectionPointIn></condition></transition>"#,
+                jump(3, 2, "A"),
+                jump(22, 21, "A"),
+            ),
+        )
+        .replace(
+            r#"<transition localId="2"><position x="160" y="100"/><connectionPointIn><connection refLocalId="1"/>"#,
+            r#"<transition localId="2"><position x="160" y="100"/><connectionPointIn><connection refLocalId="20"/>"#,
+        );
+    let imported = imported(&document(&objects, ""));
+    let seq = pou(&imported, "Seq");
+    assert_eq!(seq.transitions.len(), 2, "{:#?}", imported.report);
+    let reported: Vec<_> = imported
+        .report
+        .entries
+        .iter()
+        .filter(|entry| entry.what == "addData 'urn:other/x'")
+        .collect();
+    assert_eq!(reported.len(), 1, "{reported:#?}");
 }
 
 #[test]

@@ -533,8 +533,9 @@ fn matiec_sfc_test_steps_into_its_first_step() {
 }
 
 /// A function block `Seq` in SFC as Beremiz draws it: step `A` leaves for `B` on a condition
-/// wired from an LD rung (contact `go`, coil `seen`, contact `enable`), and `B`, whose inline LD
-/// action copies `go` into `held`, goes back to `A` on `NOT go`.
+/// wired from an LD rung (contact `go`, coil `seen`, contact `enable`; the coil passes its power
+/// on and, as in Beremiz's generator, writes nothing), and `B`, whose inline LD action copies
+/// `go` into `held`, goes back to `A` on `NOT go`.
 const LD_IN_SFC: &str = r#"<?xml version="1.0" encoding="UTF-8"?>
 <project xmlns="http://www.plcopen.org/xml/tc6_0201" xmlns:xhtml="http://www.w3.org/1999/xhtml">
   <fileHeader companyName="c" productName="p" productVersion="1" creationDateTime="2024-01-01T00:00:00"/>
@@ -567,8 +568,8 @@ const LD_IN_SFC: &str = r#"<?xml version="1.0" encoding="UTF-8"?>
 </project>
 "#;
 
-/// The chart of [`LD_IN_SFC`], imported, runs: its wired LD condition became a transition
-/// object of LD networks, its inline LD action an action, and both behave as drawn.
+/// The chart of [`LD_IN_SFC`], imported, runs: its wired LD condition became the expression
+/// of its contacts, its inline LD action an action, and both behave as Beremiz runs them.
 #[test]
 fn an_imported_sfc_with_an_ld_condition_and_an_inline_ld_action_runs_as_drawn() {
     let document =
@@ -614,19 +615,20 @@ END_PROGRAM
             read("Main.fb.held")
         ));
     }
-    // `seen` follows `go` while `A` is tested; the condition holds from cycle 5 (go and
-    // enable), so `B` is active from cycle 6, its action copies `go` into `held` (one last run
-    // when `go` falls at cycle 9), and `NOT go` brings the chart back to `A`.
+    // `seen` is never written (Beremiz writes no coil of a condition); the condition holds
+    // from cycle 5 (go and enable), so `B` is active from cycle 6, its action copies `go` into
+    // `held` (one last run when `go` falls at cycle 9), and `NOT go` brings the chart back to
+    // `A`.
     let expected = [
         "A FALSE FALSE",
         "A FALSE FALSE",
-        "A TRUE FALSE",
-        "A TRUE FALSE",
-        "A TRUE FALSE",
-        "B TRUE TRUE",
-        "B TRUE TRUE",
-        "B TRUE TRUE",
-        "B TRUE FALSE",
+        "A FALSE FALSE",
+        "A FALSE FALSE",
+        "A FALSE FALSE",
+        "B FALSE TRUE",
+        "B FALSE TRUE",
+        "B FALSE TRUE",
+        "B FALSE FALSE",
         "A FALSE FALSE",
         "A FALSE FALSE",
         "A FALSE FALSE",
