@@ -11,6 +11,8 @@ use program_image::ProgramImage;
 use project_model::load_project;
 use runtime::simulation::Simulation;
 
+use crate::simulation_writes::SimulationWrite;
+
 /// Compiles `path` (a project folder or a `.st` file). Problems the checker finds are printed
 /// as `rivet check` prints them.
 pub fn compile_path(path: &Path) -> anyhow::Result<ProgramImage> {
@@ -62,16 +64,39 @@ pub fn build(path: &Path, output: &Path) -> anyhow::Result<()> {
     Ok(())
 }
 
-/// `rivet simulate PATH --cycles N --watch A,B [--json]`.
-pub fn simulate(path: &Path, cycles: u64, watch: &[String], json: bool) -> anyhow::Result<()> {
+/// `rivet simulate PATH --cycles N --watch A,B [--set CYCLE:PATH=VALUE]… [--json]`.
+pub fn simulate(
+    path: &Path,
+    cycles: u64,
+    watch: &[String],
+    writes: &[String],
+    json: bool,
+) -> anyhow::Result<()> {
     let image = compile_path(path)?;
-    // Unknown variables are refused before anything runs.
+    // Unknown variables and values that do not fit are refused before anything runs.
     for name in watch {
         runtime::value::resolve(&image, name)
             .map_err(|error| anyhow::anyhow!("--watch {name}: {error}"))?;
     }
+    let writes = writes
+        .iter()
+        .map(|write| SimulationWrite::parse(write, &image, cycles))
+        .collect::<anyhow::Result<Vec<_>>>()?;
     let mut simulation = Simulation::new(image).context("the compiled image does not load")?;
-    simulation.run(cycles);
+    // The cycles run in stretches from one write to the next; the writes of one cycle are made
+    // in the order given, so a later one wins.
+    let mut cycles_run = 0;
+    let mut write_cycles: Vec<u64> = writes.iter().map(|write| write.cycle).collect();
+    write_cycles.sort_unstable();
+    write_cycles.dedup();
+    for cycle in write_cycles {
+        simulation.run(cycle - 1 - cycles_run);
+        cycles_run = cycle - 1;
+        for write in writes.iter().filter(|write| write.cycle == cycle) {
+            write.apply(simulation.engine_mut());
+        }
+    }
+    simulation.run(cycles - cycles_run);
     let mut values = Vec::new();
     for name in watch {
         let value = runtime::value::read(simulation.engine(), name)

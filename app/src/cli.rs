@@ -67,6 +67,10 @@ pub enum Command {
         /// Variables to print, by path (`main.x`, `Main.fb.ET`, `Main.a[3]`), comma-separated.
         #[arg(long, value_delimiter = ',')]
         watch: Vec<String>,
+        /// A value to write before a cycle, as `CYCLE:PATH=VALUE` (`5:Main.reset=TRUE`; cycles
+        /// count from 1); repeat it for several. The value stays until the program changes it.
+        #[arg(long = "set", value_name = "CYCLE:PATH=VALUE")]
+        writes: Vec<String>,
         /// Print one JSON object mapping each watched path to its value.
         #[arg(long)]
         json: bool,
@@ -262,8 +266,9 @@ pub fn run(command: Command) -> ExitCode {
             project,
             cycles,
             watch,
+            writes,
             json,
-        } => crate::build_cli::simulate(&project, cycles, &watch, json),
+        } => crate::build_cli::simulate(&project, cycles, &watch, &writes, json),
         Command::Import {
             file,
             output,

@@ -1,5 +1,5 @@
-//! `rivet export PROJECT_DIR -o FILE.xml` (`docs/plcopen-xml.md` §5): write a project as a
-//! PLCopen TC6 XML v2.01 document that CODESYS, Beremiz and OpenPLC read.
+//! `rivet export PROJECT_DIR -o FILE.xml` (`docs/plcopen-xml.md` §5 and §6.4): write a project
+//! as a PLCopen TC6 XML v2.01 document that CODESYS, Beremiz and OpenPLC read.
 
 #![allow(clippy::print_stdout, clippy::print_stderr)] // Printing is what a CLI is for.
 
@@ -9,6 +9,7 @@ use anyhow::Context;
 use project_model::load_project;
 
 use crate::cli::describe_load_error;
+use crate::plcopen_export::{ExportFailure, write_export};
 
 /// Runs `rivet export`: loads the project, exports it and writes the file through a temporary
 /// sibling renamed at the end, so a failure leaves any earlier file as it was.
@@ -17,29 +18,17 @@ pub fn run(project: &Path, output: &Path) -> anyhow::Result<()> {
     for warning in &loaded.warnings {
         eprintln!("{warning}");
     }
-    let xml = plcopen::export(&loaded.project)
-        .with_context(|| format!("{}: cannot be exported", project.display()))?;
-    let file_name = output
-        .file_name()
-        .with_context(|| format!("{}: not a file name", output.display()))?;
-    let mut temporary_name = std::ffi::OsString::from(".");
-    temporary_name.push(file_name);
-    temporary_name.push(".partial");
-    let temporary = output.with_file_name(temporary_name);
-    if let Err(error) = std::fs::write(&temporary, &xml) {
-        // A partly written temporary file is ours; removing it leaves the folder as it was.
-        let _ = std::fs::remove_file(&temporary);
-        return Err(error).with_context(|| format!("{}: cannot be written", output.display()));
-    }
-    if let Err(error) = std::fs::rename(&temporary, output) {
-        // The temporary file is ours; removing it leaves the folder as it was.
-        let _ = std::fs::remove_file(&temporary);
-        return Err(error).with_context(|| format!("{}: cannot be written", output.display()));
-    }
+    let bytes = match write_export(&loaded.project, output) {
+        Ok(bytes) => bytes,
+        Err(ExportFailure::Export(error)) => {
+            return Err(error)
+                .with_context(|| format!("{}: cannot be exported", project.display()));
+        }
+        Err(error) => return Err(error.into()),
+    };
     println!(
-        "{}: {} bytes of PLCopen XML written ({} objects)",
+        "{}: {bytes} bytes of PLCopen XML written ({} objects)",
         output.display(),
-        xml.len(),
         loaded.project.application.objects().len()
     );
     Ok(())

@@ -2,7 +2,7 @@
 //!
 //! `rivet` without a subcommand opens the studio (an eframe window) on a project folder, or on
 //! the example machine project when none is given. With a subcommand it works headless:
-//! `rivet check`, `rivet fmt`, `rivet build`, `rivet simulate`, `rivet import`, and the online
+//! `rivet check`, `rivet fmt`, `rivet build`, `rivet simulate`, `rivet import`, `rivet export`, and the online
 //! commands (`rivet status`, `download`, `start`, `stop`, `reset`, `read`, `write`, `force`, `unforce`,
 //! `forces`, `faults`) and the debugging ones (`break`, `step`, `continue`, `halt`, `stack`,
 //! `flow`) against a runtime.
@@ -24,6 +24,8 @@ mod literal_value;
 pub mod modbus_devices;
 pub mod online_change_cli;
 pub mod online_cli;
+pub mod plcopen_export;
 pub mod plcopen_import;
+mod simulation_writes;
 pub mod studio;
 pub mod value_text;

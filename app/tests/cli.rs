@@ -8,6 +8,8 @@ use std::process::{Command, Output};
 
 #[path = "cli/import.rs"]
 mod import;
+#[path = "cli/simulate_import.rs"]
+mod simulate_import;
 
 fn rivet(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_rivet"))

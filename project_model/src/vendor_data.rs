@@ -22,7 +22,8 @@ pub struct VendorData {
 #[serde(deny_unknown_fields)]
 pub struct VendorEntry {
     /// Where it stood, named by object and path: `project`, `contentHeader`, `pou:Main`,
-    /// `pou:Main/body`, `pou:Main/interface`, `pou:Main/action:A`, `pou:Main/transition:T`,
+    /// `pou:Main/body`, `pou:Main/body/element:7` (element 7 of its LD or FBD body),
+    /// `pou:Main/interface`, `pou:Main/action:A`, `pou:Main/transition:T`,
     /// `pou:Main/variable:x`, `type:T`, `gvl:G`, `gvl:G/variable:x`, `task:T`,
     /// `configuration`, `resource` (`docs/plcopen-xml.md` §2.6).
     pub place: String,

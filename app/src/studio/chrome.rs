@@ -6,7 +6,7 @@ use online::{Reset, TargetState};
 
 use super::command::{Command, Commands};
 use super::debug::DebugCommand;
-use super::i18n::{ChartText, DebugText, ImportText, Language, Text};
+use super::i18n::{ChartText, DebugText, ExportText, ImportText, Language, Text};
 use super::online::{Phase, TargetKind};
 use super::pane::Pane;
 use super::settings::Theme;
@@ -99,6 +99,10 @@ impl Chrome<'_, '_> {
                 let import = egui::Button::new(ImportText::MenuItem.get(language));
                 if ui.add(import).clicked() {
                     self.commands.push(Command::ImportPlcopenDialog);
+                }
+                let export = egui::Button::new(ExportText::MenuItem.get(language));
+                if ui.add_enabled(has_project, export).clicked() {
+                    self.commands.push(Command::ExportPlcopenDialog);
                 }
                 ui.separator();
                 self.menu_item(ui, Text::Quit, "", true, Command::Quit);

@@ -32,6 +32,9 @@ pub(crate) enum Command {
     ImportAsNewProjectDialog,
     /// Close the import preview; nothing changes.
     CloseImport,
+    /// Ask for a file and export the open project to it as PLCopen XML
+    /// (`docs/plcopen-xml.md` §6.4).
+    ExportPlcopenDialog,
     /// Close the window.
     Quit,
     /// Undo the last change.

@@ -16,6 +16,7 @@ mod device_editors;
 mod devices;
 mod diagram;
 mod editor;
+mod export;
 mod import;
 mod instruction_list;
 mod logout;

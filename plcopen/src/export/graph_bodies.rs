@@ -71,8 +71,18 @@ impl ProjectWriter<'_> {
         };
         self.xml.start("body", &[])?;
         self.xml.start(language, &[])?;
-        let starts =
-            NetworkGraph::new(&mut self.xml, language == "LD", networks).write(networks)?;
+        let element_data = place
+            .map(|place| self.element_entries(place))
+            .unwrap_or_default();
+        let mut graph = NetworkGraph::new(&mut self.xml, language == "LD", networks)
+            .with_element_data(element_data);
+        let starts = graph.write(networks)?;
+        let data_written = graph.data_written().to_vec();
+        if let Some(place) = place {
+            for id in data_written {
+                self.written_places.insert(format!("{place}/element:{id}"));
+            }
+        }
         self.xml.end(language)?;
         self.xml.start("addData", &[])?;
         if let Some(place) = place {

@@ -4,6 +4,8 @@
 //! ids above the largest for the objects the model has no element for (power rails, labels,
 //! assignments of box outputs, the AND and OR boxes of FBD).
 
+use std::collections::BTreeMap;
+
 use project_model::{
     BlockCall, CoilKind, Edge, FlowNode, Network, NetworkOutput, Operand, max_element_id,
 };
@@ -56,6 +58,10 @@ pub(super) struct NetworkGraph<'x> {
     left_rail: u64,
     /// The first object written for the network being written.
     first_written: Option<u64>,
+    /// Other tools' `addData` entries of elements, by element id: each entry's XML as it was.
+    element_data: BTreeMap<u64, Vec<String>>,
+    /// The elements whose entries were written, in the order written.
+    data_written: Vec<u64>,
 }
 
 impl<'x> NetworkGraph<'x> {
@@ -68,7 +74,21 @@ impl<'x> NetworkGraph<'x> {
             next_row: 0,
             left_rail: 0,
             first_written: None,
+            element_data: BTreeMap::new(),
+            data_written: Vec::new(),
         }
+    }
+
+    /// The writer with other tools' entries of elements (by element id) to write in the
+    /// `addData` of the object each element becomes (§5.5).
+    pub fn with_element_data(mut self, element_data: BTreeMap<u64, Vec<String>>) -> Self {
+        self.element_data = element_data;
+        self
+    }
+
+    /// The elements whose entries were written: the others have no object in the document.
+    pub fn data_written(&self) -> &[u64] {
+        &self.data_written
     }
 
     /// Writes every network; gives where each starts.
@@ -171,7 +191,7 @@ impl<'x> NetworkGraph<'x> {
                 self.xml.end("connectionPointIn")?;
                 self.xml.empty("connectionPointOut", &[])?;
                 self.xml.text_element("variable", &[], &operand.text)?;
-                self.xml.end("contact")?;
+                self.end_object("contact", id)?;
                 Ok((vec![Link { id, pin: None }], column + 1))
             }
             FlowNode::Operand(operand) => {
@@ -277,22 +297,14 @@ impl<'x> NetworkGraph<'x> {
             self.xml.end("variable")?;
         }
         self.xml.end("outputVariables")?;
-        if let Some(first) = block.inputs.first()
-            && !first.source.is_empty()
-        {
-            self.xml.start("addData", &[])?;
-            self.xml.start(
-                "data",
-                &[("name", SOURCE_ENTRY), ("handleUnknown", "discard")],
-            )?;
-            self.xml.empty(
-                "source",
-                &[("xmlns", RIVET_NAMESPACE), ("pin", first.pin.as_str())],
-            )?;
-            self.xml.end("data")?;
-            self.xml.end("addData")?;
-        }
-        self.xml.end("block")?;
+        // A box whose first input has its own source is marked, so that the import gives the
+        // source back to the pin instead of putting it before the box (§5.2).
+        let source_pin = block
+            .inputs
+            .first()
+            .filter(|first| !first.source.is_empty())
+            .map(|first| first.pin.as_str());
+        self.end_object_marked("block", id, source_pin)?;
         let after = source_column + 1;
         for pin in block.outputs.iter().filter(|pin| !pin.assign.is_empty()) {
             let out = self.fresh();
@@ -357,7 +369,7 @@ impl<'x> NetworkGraph<'x> {
                     } else {
                         self.xml.text_element("expression", &[], &coil.variable)?;
                     }
-                    self.xml.end(element)?;
+                    self.end_object(element, id)?;
                 }
                 NetworkOutput::Jump { id, label } => {
                     let id = u64::from(id.0);
@@ -365,7 +377,7 @@ impl<'x> NetworkGraph<'x> {
                     self.xml.start("connectionPointIn", &[])?;
                     self.connections(end)?;
                     self.xml.end("connectionPointIn")?;
-                    self.xml.end("jump")?;
+                    self.end_object("jump", id)?;
                 }
                 NetworkOutput::Return { id } => {
                     let id = u64::from(id.0);
@@ -373,7 +385,7 @@ impl<'x> NetworkGraph<'x> {
                     self.xml.start("connectionPointIn", &[])?;
                     self.connections(end)?;
                     self.xml.end("connectionPointIn")?;
-                    self.xml.end("return")?;
+                    self.end_object("return", id)?;
                 }
                 NetworkOutput::Branch { rung, outputs, .. } => {
                     let (branch_end, after) =
@@ -397,7 +409,7 @@ impl<'x> NetworkGraph<'x> {
         self.start_object("inVariable", id, &attributes, column, row)?;
         self.xml.empty("connectionPointOut", &[])?;
         self.xml.text_element("expression", &[], &operand.text)?;
-        self.xml.end("inVariable")?;
+        self.end_object("inVariable", id)?;
         Ok(Link { id, pin: None })
     }
 
@@ -446,6 +458,43 @@ impl<'x> NetworkGraph<'x> {
             id,
             pin: Some("OUT".into()),
         })
+    }
+
+    /// Closes the object of element `id`, after the `addData` with its entries when it has
+    /// some (the schema puts `addData` last but for `documentation`, which these objects lack).
+    fn end_object(&mut self, element: &str, id: u64) -> Result<(), ExportError> {
+        self.end_object_marked(element, id, None)
+    }
+
+    /// [`Self::end_object`] for a box, with Rivet's source mark naming `source_pin` when its
+    /// first input has its own source: one `addData` holds the kept entries and the mark.
+    fn end_object_marked(
+        &mut self,
+        element: &str,
+        id: u64,
+        source_pin: Option<&str>,
+    ) -> Result<(), ExportError> {
+        let entries = self.element_data.remove(&id);
+        if entries.is_some() || source_pin.is_some() {
+            self.xml.start("addData", &[])?;
+            if let Some(entries) = &entries {
+                for entry in entries {
+                    self.xml.raw(entry)?;
+                }
+                self.data_written.push(id);
+            }
+            if let Some(pin) = source_pin {
+                self.xml.start(
+                    "data",
+                    &[("name", SOURCE_ENTRY), ("handleUnknown", "discard")],
+                )?;
+                self.xml
+                    .empty("source", &[("xmlns", RIVET_NAMESPACE), ("pin", pin)])?;
+                self.xml.end("data")?;
+            }
+            self.xml.end("addData")?;
+        }
+        self.xml.end(element)
     }
 
     /// Opens an object with its `localId` and attributes and writes its position.

@@ -10,7 +10,7 @@ use project_model::{Body, Edge, FlowNode, Network, NetworkOutput, Object, Operan
 use super::export;
 use crate::import::corpus_tests::FILES;
 use crate::reader::corpus_tests::{corpora, read_corpus};
-use crate::{import, read_bytes};
+use crate::{Outcome, import, read_bytes};
 
 /// What xmllint (Debian's libxml2-utils, which `scripts/test.sh` installs) says against `xml`
 /// when the v2.01 schema refuses it.
@@ -148,6 +148,88 @@ fn codesys_entries_go_back_into_the_element_they_came_from() {
             .any(|entry| entry.name.ends_with("/objectid")),
         "{:?}",
         pou.add_data
+    );
+}
+
+#[test]
+fn codesys_entries_of_a_box_follow_the_element_it_became() {
+    let file = "plcopen/codesys/codesys_code_execution_speedTests.xml";
+    let imported = import(&read_corpus(file)).unwrap();
+    // The ADD box of the LD function carries CODESYS's call type, kept with its element.
+    let pou = "addTwoIntsLadder";
+    let prefix = format!("pou:{pou}/body/element:");
+    let kept: Vec<&project_model::VendorEntry> = imported
+        .project
+        .vendor_data
+        .entries
+        .iter()
+        .filter(|entry| entry.place.starts_with(&prefix))
+        .collect();
+    assert_eq!(kept.len(), 1, "{kept:?}");
+    assert!(kept[0].xml.contains("fbdcalltype"), "{}", kept[0].xml);
+    let id: u32 = kept[0].place[prefix.len()..].parse().unwrap();
+    let Some(Object::Pou(converted)) = imported.project.application.object(pou) else {
+        panic!("{pou} is not converted");
+    };
+    let Body::Ld { networks } = &converted.body else {
+        panic!("{pou}: {:?}", converted.body);
+    };
+    let element = networks
+        .iter()
+        .find_map(|network| network.element(project_model::ElementId(id)));
+    assert!(
+        matches!(element, Some(project_model::ElementRef::Block(block)) if block.type_name == "ADD"),
+        "{element:?}"
+    );
+    let reported = imported
+        .report
+        .entries
+        .iter()
+        .find(|entry| entry.path.contains("addTwoIntsLadder']/body/LD/block"))
+        .unwrap();
+    assert_eq!(reported.outcome, Outcome::KeptOpaque);
+
+    // The export writes it into the object of that element, and the import puts it back.
+    let xml = export(&imported.project).unwrap();
+    let document = read_bytes(&xml, "export.xml").unwrap();
+    let written = document
+        .pous
+        .iter()
+        .find(|written| written.name == pou)
+        .unwrap();
+    let block = written.bodies[0]
+        .content
+        .objects()
+        .iter()
+        .find(|object| object.local_id == u64::from(id))
+        .unwrap();
+    assert!(matches!(
+        block.kind,
+        crate::body_object::ObjectKind::Block(_)
+    ));
+    assert_eq!(block.add_data.entries.len(), 1);
+    assert_eq!(block.add_data.entries[0].xml, kept[0].xml);
+    let back = import(&document).unwrap();
+    assert_eq!(back.project.vendor_data, imported.project.vendor_data);
+}
+
+#[test]
+fn an_entry_whose_element_was_deleted_is_kept_in_rivets_vendor_entry() {
+    let file = "plcopen/codesys/codesys_code_execution_speedTests.xml";
+    let mut project = import(&read_corpus(file)).unwrap().project;
+    for entry in &mut project.vendor_data.entries {
+        if entry
+            .place
+            .starts_with("pou:addTwoIntsLadder/body/element:")
+        {
+            entry.place = "pou:addTwoIntsLadder/body/element:999".into();
+        }
+    }
+    let xml = assert_round_trip(&project, "an entry without its element");
+    let text = String::from_utf8(xml).unwrap();
+    assert!(
+        text.contains("place=\"pou:addTwoIntsLadder/body/element:999\""),
+        "the entry is not in Rivet's vendor entry"
     );
 }
 
@@ -313,7 +395,7 @@ fn plain_import(xml: &[u8], what: &str, all_converted: bool) -> Project {
     let imported = import(&document).unwrap_or_else(|error| panic!("{what}: {error}"));
     let not_converted: Vec<String> = imported
         .report
-        .with_outcome(import::Outcome::NotConverted)
+        .with_outcome(Outcome::NotConverted)
         .map(|entry| format!("{}: {}", entry.what, entry.note))
         .collect();
     assert!(

@@ -1,6 +1,8 @@
 //! Another tool's `addData` entries, kept in the project's vendor data, written back where they
 //! came from (`docs/plcopen-xml.md` §5.5).
 
+use std::collections::BTreeMap;
+
 use super::error::ExportError;
 use super::project_writer::ProjectWriter;
 use crate::rivet_data::{RIVET_NAMESPACE, VENDOR_ENTRY};
@@ -19,6 +21,23 @@ impl ProjectWriter<'_> {
         }
         self.written_places.insert(place.to_owned());
         Ok(())
+    }
+
+    /// The vendor entries of the elements of the body at `body_place` (places
+    /// `BODY/element:ID`), by element id, each entry's XML as it was.
+    pub(super) fn element_entries(&self, body_place: &str) -> BTreeMap<u64, Vec<String>> {
+        let prefix = format!("{body_place}/element:");
+        let mut entries: BTreeMap<u64, Vec<String>> = BTreeMap::new();
+        for entry in &self.project.vendor_data.entries {
+            if let Some(id) = entry
+                .place
+                .strip_prefix(&prefix)
+                .and_then(|id| id.parse::<u64>().ok())
+            {
+                entries.entry(id).or_default().push(entry.xml.clone());
+            }
+        }
+        entries
     }
 
     /// Writes an `addData` with the vendor entries of `place`, when there are any.

@@ -115,6 +115,18 @@ impl<'d> Converter<'d> {
     /// Keeps one entry of the element at `path` in the project's vendor data (§2.6), or reports
     /// it not converted when its XML cannot stand alone.
     pub fn keep_vendor_entry(&mut self, entry: &AddDataEntry, path: &str, line: u32) {
+        self.keep_vendor_entry_at(entry, path, line, vendor_place(path));
+    }
+
+    /// Keeps one entry of the element at `path` at `place` in the project's vendor data, or
+    /// reports it not converted when its XML cannot stand alone.
+    pub fn keep_vendor_entry_at(
+        &mut self,
+        entry: &AddDataEntry,
+        path: &str,
+        line: u32,
+        place: String,
+    ) {
         let what = format!("addData '{}'", entry.name);
         let entry_path = format!("{path}/addData/data[@name='{}']", entry.name);
         // The entry's text leaves out its ancestors' namespace declarations; the export
@@ -130,7 +142,7 @@ impl<'d> Converter<'d> {
             return;
         }
         self.project.vendor_data.entries.push(VendorEntry {
-            place: vendor_place(path),
+            place,
             xml: entry.xml.clone(),
         });
         self.report

@@ -246,17 +246,21 @@ fn st_and_il_actions_convert() {
 }
 
 #[test]
-fn xml_comments_are_reported_as_kept() {
+fn xml_comments_are_reported_as_not_written_back() {
     let types = "  <types><dataTypes/><pous><!--ObjectVersion: LD1--></pous></types>";
     let imported = imported(&document(types, ""));
     let entry = imported.report.entry("XML comment 'ObjectVersion: LD1'");
     assert!(
-        entry.is_some_and(|entry| entry.outcome == Outcome::KeptOpaque
+        entry.is_some_and(|entry| entry.outcome == Outcome::NotConverted
             && entry.line == 5
-            && entry.path == "project/types/pous"),
+            && entry.path == "project/types/pous"
+            && entry.note.contains("not written back")),
         "{:?}",
         imported.report
     );
+    // Nothing of it is in the project, so its export has no comment.
+    let xml = crate::export(&imported.project).unwrap();
+    assert!(!String::from_utf8(xml).unwrap().contains("ObjectVersion"));
 }
 
 #[test]

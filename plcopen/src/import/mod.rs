@@ -89,14 +89,15 @@ pub fn import(document: &Document) -> Result<Imported, ImportError> {
     }
     converter.opaque(&document.add_data, "project", 1);
     converter.keep_header(document);
-    // XML comments (`<!--ObjectVersion: LD1-->`) stay in the document for the export.
+    // XML comments (`<!--ObjectVersion: LD1-->`) carry no data and describe the other tool's
+    // copy of an element, so the export does not write them back (§5.5); the report says so.
     for comment in &document.xml_comments {
         converter.report.push(
-            Outcome::KeptOpaque,
+            Outcome::NotConverted,
             format!("XML comment '{}'", comment.text.trim()),
             &comment.parent_path,
             comment.line,
-            "",
+            "an XML comment carries no data and describes the other tool's copy of the element; it is not written back on export",
         );
     }
     Ok(Imported {

@@ -13,6 +13,7 @@ use super::network_elements::{coil_kind, edge, operand};
 use super::network_error::NetworkError;
 use super::network_gates::Gate;
 use super::network_graph::{BodyGraph, ObjectFault, Producer, chain_output};
+use super::network_import::{from_object, provisional_id};
 use super::network_series_parallel::{ChainEdge, compare_keys, reduce};
 use crate::body_object::ObjectKind;
 use crate::ld::{Edge as XmlEdge, Storage};
@@ -661,14 +662,16 @@ impl<'g, 'b> NetworkBuilder<'g, 'b> {
             ),
             EdgeLabel::Object(object) => match &graph.objects[*object].kind {
                 ObjectKind::Contact(contact) => (
-                    vec![operand(&contact.variable, contact.negated, contact.edge)],
+                    vec![from_object(
+                        operand(&contact.variable, contact.negated, contact.edge),
+                        *object,
+                    )],
                     false,
                 ),
                 ObjectKind::InVariable(variable) => (
-                    vec![operand(
-                        &variable.expression,
-                        variable.negated,
-                        variable.edge,
+                    vec![from_object(
+                        operand(&variable.expression, variable.negated, variable.edge),
+                        *object,
                     )],
                     false,
                 ),
@@ -735,7 +738,7 @@ impl<'g, 'b> NetworkBuilder<'g, 'b> {
             });
         }
         Ok(BlockCall {
-            id: Default::default(),
+            id: provisional_id(object),
             type_name: block.type_name.trim().to_owned(),
             instance: block
                 .instance_name
@@ -888,7 +891,7 @@ impl<'g, 'b> NetworkBuilder<'g, 'b> {
         let Some(object) = sink.object else {
             return Ok(None);
         };
-        let id = Default::default();
+        let id = provisional_id(object);
         Ok(Some(match &self.graph.objects[object].kind {
             ObjectKind::Coil(coil) => NetworkOutput::Coil(Coil {
                 id,

@@ -178,7 +178,7 @@ fn every_ld_and_fbd_body_of_the_corpora_converts_or_is_left_for_a_chart() {
                 column: 1,
             };
             match converter.networks(body, &place, &what) {
-                Ok(Some(NetworkOutcome::Networks(networks))) => {
+                Ok(Some(NetworkOutcome::Networks(networks, _))) => {
                     assert!(
                         project_model::network_problems(&networks).is_empty(),
                         "{file}: {what}"

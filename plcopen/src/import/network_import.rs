@@ -1,6 +1,8 @@
 //! LD and FBD bodies → Rivet networks: the entry point the POU conversion calls
 //! (`docs/plcopen-xml.md` §3).
 
+use std::collections::BTreeMap;
+
 use project_model::{ElementId, FlowNode, Network, NetworkOutput};
 
 use super::converter::{Converter, Place};
@@ -14,11 +16,16 @@ use crate::add_data::AddData;
 use crate::body::{Body as XmlBody, BodyContent};
 use crate::body_object::ObjectKind;
 
+/// The element id each object of a body became, by the object's `localId` (an object repeated
+/// in several places, a contact of a bridge, by its first element in tree order).
+pub(super) type ElementIds = BTreeMap<u64, ElementId>;
+
 /// What became of an LD or FBD body.
 #[derive(Clone, Debug, PartialEq)]
 pub(super) enum NetworkOutcome {
-    /// The body's networks, with element ids numbered from 1 in tree order.
-    Networks(Vec<Network>),
+    /// The body's networks, with element ids numbered from 1 in tree order, and the element
+    /// each object became, so that the objects' vendor data can follow them (§5.5).
+    Networks(Vec<Network>, ElementIds),
     /// A sound graph that structured networks cannot hold (a feedback loop, a value read by
     /// two inputs): the body can be imported as a CFC chart instead.
     NotANetwork {
@@ -80,7 +87,10 @@ impl Converter<'_> {
             }
         };
         project_model::normalize_networks(&mut networks);
-        number_elements(&mut networks);
+        let element_ids: ElementIds = number_elements(&mut networks)
+            .into_iter()
+            .filter_map(|(object, id)| Some((objects.get(object)?.local_id, id)))
+            .collect();
         if let Some(problem) = project_model::network_problems(&networks).first() {
             let place = Place {
                 path: body_path.clone(),
@@ -116,7 +126,7 @@ impl Converter<'_> {
                 _ => {}
             }
         }
-        Ok(Some(NetworkOutcome::Networks(networks)))
+        Ok(Some(NetworkOutcome::Networks(networks, element_ids)))
     }
 }
 
@@ -144,33 +154,67 @@ fn build_networks(
     Ok(networks)
 }
 
+/// The id an element built from the body's object at `object` (its index) carries until
+/// [`number_elements`] gives it its own: the index + 1, so the numbering can tell which object
+/// each element came from (0 is no object).
+pub(super) fn provisional_id(object: usize) -> ElementId {
+    ElementId(u32::try_from(object).map_or(0, |index| index.saturating_add(1)))
+}
+
+/// `node` (an operand) marked as built from the body's object at `object`.
+pub(super) fn from_object(mut node: FlowNode, object: usize) -> FlowNode {
+    if let FlowNode::Operand(operand) = &mut node {
+        operand.id = provisional_id(object);
+    }
+    node
+}
+
 /// Gives every element a fresh id, from 1 in tree order (networks in order; in a network its
-/// rung, then its outputs; an element before the chains inside it).
-pub(crate) fn number_elements(networks: &mut [Network]) {
-    let mut next = 0u32;
+/// rung, then its outputs; an element before the chains inside it); gives the fresh id of the
+/// first element built from each object (by the object's index), as [`provisional_id`] marked
+/// them.
+pub(crate) fn number_elements(networks: &mut [Network]) -> BTreeMap<usize, ElementId> {
+    let mut numbering = Numbering::default();
     for network in networks {
-        number_chain(&mut network.rung, &mut next);
-        number_outputs(&mut network.outputs, &mut next);
+        number_chain(&mut network.rung, &mut numbering);
+        number_outputs(&mut network.outputs, &mut numbering);
+    }
+    numbering.of_object
+}
+
+/// The numbering of one body's elements.
+#[derive(Default)]
+struct Numbering {
+    /// The last id given.
+    last: u32,
+    /// The fresh id of the first element of each object, by the object's index.
+    of_object: BTreeMap<usize, ElementId>,
+}
+
+impl Numbering {
+    /// A fresh id for the element that carries `provisional`.
+    fn fresh(&mut self, provisional: ElementId) -> ElementId {
+        self.last += 1;
+        let id = ElementId(self.last);
+        if let Some(object) = provisional.0.checked_sub(1) {
+            self.of_object.entry(object as usize).or_insert(id);
+        }
+        id
     }
 }
 
-fn fresh(next: &mut u32) -> ElementId {
-    *next += 1;
-    ElementId(*next)
-}
-
-fn number_chain(chain: &mut [FlowNode], next: &mut u32) {
+fn number_chain(chain: &mut [FlowNode], next: &mut Numbering) {
     for node in chain {
         match node {
-            FlowNode::Operand(operand) => operand.id = fresh(next),
+            FlowNode::Operand(operand) => operand.id = next.fresh(operand.id),
             FlowNode::Parallel(parallel) => {
-                parallel.id = fresh(next);
+                parallel.id = next.fresh(parallel.id);
                 for branch in &mut parallel.branches {
                     number_chain(&mut branch.rung, next);
                 }
             }
             FlowNode::Block(block) => {
-                block.id = fresh(next);
+                block.id = next.fresh(block.id);
                 for input in &mut block.inputs {
                     number_chain(&mut input.source, next);
                 }
@@ -179,15 +223,15 @@ fn number_chain(chain: &mut [FlowNode], next: &mut u32) {
     }
 }
 
-fn number_outputs(outputs: &mut [NetworkOutput], next: &mut u32) {
+fn number_outputs(outputs: &mut [NetworkOutput], next: &mut Numbering) {
     for output in outputs {
         match output {
-            NetworkOutput::Coil(coil) => coil.id = fresh(next),
-            NetworkOutput::Jump { id, .. } | NetworkOutput::Return { id } => *id = fresh(next),
+            NetworkOutput::Coil(coil) => coil.id = next.fresh(coil.id),
+            NetworkOutput::Jump { id, .. } | NetworkOutput::Return { id } => *id = next.fresh(*id),
             NetworkOutput::Branch {
                 id, rung, outputs, ..
             } => {
-                *id = fresh(next);
+                *id = next.fresh(*id);
                 number_chain(rung, next);
                 number_outputs(outputs, next);
             }

@@ -6,12 +6,13 @@ use super::body_fault::BodyFault;
 use super::cfc_chart::{CfcDialect, fbd_graph_to_cfc};
 use super::converter::{Converter, Place, comment, is_rivet_entry};
 use super::error::{ImportError, ImportErrorKind};
-use super::network_import::NetworkOutcome;
+use super::network_import::{ElementIds, NetworkOutcome};
 use super::pou_objects::PouObjects;
 use super::report::Outcome;
 use super::rivet_attributes::rivet_attributes;
 use super::sfc_chart::SfcChartBuilder;
 use super::type_text::type_text;
+use super::vendor_places::element_place;
 use crate::body::{Body as XmlBody, BodyContent};
 use crate::interface::Interface;
 use crate::pou::{Pou, PouLocation, PouType};
@@ -322,9 +323,14 @@ impl Converter<'_> {
         let mut fallback_note = None;
         if !is_rivet_cfc(body) {
             match self.networks_at(body, at, what)? {
-                Some(NetworkOutcome::Networks(networks)) => {
+                Some(NetworkOutcome::Networks(networks, element_ids)) => {
                     let objects = body.content.objects();
-                    self.opaque_objects(objects, &at.objects_path);
+                    // Only a POU's own body keeps its objects' vendor data with the elements
+                    // they became: an inline or condition body's objects stand elsewhere.
+                    let own_objects =
+                        format!("{}/body/{}", at.holder.path, body.content.language());
+                    let elements = (at.objects_path == own_objects).then_some((path, &element_ids));
+                    self.opaque_objects(objects, &at.objects_path, elements);
                     return Ok(Ok(match body.content {
                         BodyContent::Ld(_) => Body::Ld { networks },
                         _ => Body::Fbd { networks },
@@ -404,7 +410,7 @@ impl Converter<'_> {
         let objects = body.cfc.as_deref().unwrap_or(body.content.objects());
         match converted {
             Ok(converted) => {
-                self.opaque_objects(objects, &objects_path);
+                self.opaque_objects(objects, &objects_path, None);
                 Ok(Ok(converted))
             }
             Err(BodyFault::NotConverted(reason)) => Ok(Err(match fallback_note {
@@ -451,34 +457,52 @@ impl Converter<'_> {
         })
     }
 
-    /// Reports the `addData` entries of the objects of a converted body (CODESYS's
-    /// `sfc/element`, `cfccalltype`…) as not converted: the body's objects are renumbered and
-    /// rebuilt, so their entries have no element to go back to (CODESYS's CFC keeps them inside
-    /// its `…/cfc` entry, which is kept). Rivet's own entries were read into the chart.
-    fn opaque_objects(&mut self, objects: &[crate::BodyObject], path: &str) {
+    /// Keeps the `addData` entries of the objects of a converted body (CODESYS's
+    /// `fbdcalltype`, `sfc/element`…) with the element each object became, when `elements`
+    /// gives the body's path and that map and the export writes the body's elements with their
+    /// ids (a POU's own LD or FBD body, §5.5). The others are reported not converted: the
+    /// body's objects are rebuilt, so their entries have no element to go back to (CODESYS's
+    /// CFC keeps them inside its `…/cfc` entry, which is kept). Rivet's own entries were read
+    /// into the chart.
+    pub(super) fn opaque_objects(
+        &mut self,
+        objects: &[crate::BodyObject],
+        path: &str,
+        elements: Option<(&str, &ElementIds)>,
+    ) {
         for object in objects {
+            let object_path = format!(
+                "{path}/{}[@localId='{}']",
+                object.kind.element_name(),
+                object.local_id
+            );
+            let place = elements
+                .and_then(|(body_path, ids)| element_place(body_path, *ids.get(&object.local_id)?));
             for entry in &object.add_data.entries {
                 if is_rivet_entry(&entry.name) {
                     continue;
                 }
-                let entry_path = format!(
-                    "{path}/{}[@localId='{}']/addData/data[@name='{}']",
-                    object.kind.element_name(),
-                    object.local_id,
-                    entry.name
-                );
-                // An object of a wired condition is converted with the condition and with its
-                // SFC body, and may feed several conditions: one entry says it.
-                if !self.reported_object_data.insert(entry_path.clone()) {
-                    continue;
+                match &place {
+                    Some(place) => {
+                        self.keep_vendor_entry_at(entry, &object_path, object.line, place.clone());
+                    }
+                    None => {
+                        let entry_path =
+                            format!("{object_path}/addData/data[@name='{}']", entry.name);
+                        // An object of a wired condition is converted with the condition and
+                        // with its SFC body, and may feed several conditions: one entry says it.
+                        if !self.reported_object_data.insert(entry_path.clone()) {
+                            continue;
+                        }
+                        self.report.push(
+                            Outcome::NotConverted,
+                            format!("addData '{}'", entry.name),
+                            &entry_path,
+                            object.line,
+                            "the data of one object of a converted body: Rivet rebuilds the body's objects, so it has no element to go back to",
+                        );
+                    }
                 }
-                self.report.push(
-                    Outcome::NotConverted,
-                    format!("addData '{}'", entry.name),
-                    &entry_path,
-                    object.line,
-                    "the data of one object of a converted body: Rivet rebuilds the body's objects, so it has no element to go back to",
-                );
             }
         }
     }

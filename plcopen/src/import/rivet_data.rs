@@ -1,11 +1,14 @@
 //! Rivet's own `addData` read back (`docs/plcopen-xml.md` §5.4): objects restored from their
 //! entries, the device tree and the application tree from the project entry.
 
-use project_model::{Body, Folder, Node, Object};
+use std::collections::HashSet;
+
+use project_model::{Body, ElementId, Folder, Node, Object};
 
 use super::converter::is_rivet_entry;
 use super::converter::{Converter, Place};
 use super::error::{ImportError, ImportErrorKind};
+use super::network_import::ElementIds;
 use super::report::Outcome;
 use crate::add_data::AddData;
 use crate::body::{Body as XmlBody, BodyContent};
@@ -192,7 +195,7 @@ impl Converter<'_> {
                 }
             }
         }
-        self.keep_pou_vendor_data(pou, place);
+        self.keep_pou_vendor_data(pou, place, &restored.body);
         // Another tool may have changed the declarations and kept Rivet's entry: when the
         // document declares other names than the entry, its declarations win.
         let (variables, return_type) = self.interface(
@@ -214,16 +217,50 @@ impl Converter<'_> {
     }
 
     /// Keeps the vendor data of a POU restored from Rivet's entry, as the conversion of a POU
-    /// keeps it (§2.6).
-    fn keep_pou_vendor_data(&mut self, pou: &XmlPou, place: &Place) {
+    /// keeps it (§2.6); the entries of the objects of its LD or FBD body go with the elements
+    /// of `restored_body` whose ids the objects carry as `localId`s (§5.5).
+    fn keep_pou_vendor_data(&mut self, pou: &XmlPou, place: &Place, restored_body: &Body) {
         let (path, line) = (place.path.as_str(), place.line);
         for entry in &pou.add_data.entries {
             if !entry.name.ends_with("/method") && !is_rivet_entry(&entry.name) {
                 self.keep_vendor_entry(entry, path, line);
             }
         }
+        let body_path = format!("{path}/body");
         for body in &pou.bodies {
-            self.opaque(&body.add_data, &format!("{path}/body"), body.line);
+            self.opaque(&body.add_data, &body_path, body.line);
+        }
+        if let (Some(body), Body::Ld { networks } | Body::Fbd { networks }) =
+            (pou.bodies.first(), restored_body)
+        {
+            let objects = body.content.objects();
+            let has_entries = objects.iter().any(|object| {
+                object
+                    .add_data
+                    .entries
+                    .iter()
+                    .any(|entry| !is_rivet_entry(&entry.name))
+            });
+            if has_entries {
+                // Rivet's export writes each element with its id as `localId`; the objects it
+                // adds (rails, AND and OR boxes) take ids no element has.
+                let mut ids = HashSet::new();
+                for network in networks {
+                    network.for_each_element(&mut |element| {
+                        ids.insert(u64::from(element.id().0));
+                    });
+                }
+                let element_ids: ElementIds = objects
+                    .iter()
+                    .filter(|object| ids.contains(&object.local_id))
+                    .filter_map(|object| {
+                        let id = u32::try_from(object.local_id).ok()?;
+                        Some((object.local_id, ElementId(id)))
+                    })
+                    .collect();
+                let objects_path = format!("{body_path}/{}", body.content.language());
+                self.opaque_objects(objects, &objects_path, Some((&body_path, &element_ids)));
+            }
         }
         // The interface's entries are kept by its conversion (`rivet_pou`).
         for action in &pou.actions {

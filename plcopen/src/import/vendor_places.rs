@@ -1,6 +1,8 @@
 //! Where another tool's `addData` entry stood, as the place `project_model::VendorEntry` names
 //! (`docs/plcopen-xml.md` §2.6), worked out from the element path the import reports.
 
+use project_model::ElementId;
+
 /// The place of an entry found in the element at `path`. Entries of elements the export does
 /// not write an `addData` for (a variable list, a structure's member, a method, a program
 /// instance) go to the nearest element it does: the interface, the data type, the POU, the task.
@@ -59,6 +61,16 @@ pub(super) fn vendor_place(path: &str) -> String {
     "project".to_owned()
 }
 
+/// The place of an entry of the object that became element `id` of the body at `body_path`
+/// (`pou:Main/body/element:7`), where the export writes that body's elements with their ids as
+/// `localId`s and so can put the entry back: a POU's own LD or FBD body. `None` for the bodies
+/// of actions, transitions and methods, whose vendor data goes to their POU.
+pub(super) fn element_place(body_path: &str, id: ElementId) -> Option<String> {
+    let body = vendor_place(body_path);
+    body.ends_with("/body")
+        .then(|| format!("{body}/element:{}", id.0))
+}
+
 /// The place in a global variable list: the list, or one of its variables.
 fn list_place(list: &str, rest: &str) -> String {
     match after_named(rest, "variable") {
@@ -82,7 +94,9 @@ fn after_named<'p>(path: &'p str, element: &str) -> Option<(&'p str, &'p str)> {
 
 #[cfg(test)]
 mod tests {
-    use super::vendor_place;
+    use project_model::ElementId;
+
+    use super::{element_place, vendor_place};
 
     #[test]
     fn places_name_the_object_and_the_element_below_it() {
@@ -137,6 +151,17 @@ mod tests {
             "gvl:r/variable:v"
         );
         assert_eq!(vendor_place("project/contentHeader"), "contentHeader");
+        assert_eq!(
+            element_place(&format!("{pou}/body"), ElementId(7)).as_deref(),
+            Some("pou:Main/body/element:7")
+        );
+        assert_eq!(
+            element_place(
+                &format!("{pou}/actions/action[@name='A']/body"),
+                ElementId(7)
+            ),
+            None
+        );
         assert_eq!(vendor_place("project"), "project");
     }
 }

@@ -89,6 +89,7 @@ fn apply(studio: &mut Studio, dock: &mut Dock, command: Command, ctx: &egui::Con
             }
         }
         Command::CloseImport => studio.import = None,
+        Command::ExportPlcopenDialog => studio.export_plcopen_dialog(),
         Command::Save => studio.save(),
         Command::Quit => ctx.send_viewport_cmd(egui::ViewportCommand::Close),
         Command::Undo | Command::Redo => studio.undo_redo(command == Command::Undo),

@@ -5,6 +5,7 @@ mod apply;
 mod build_flow;
 mod debug_flow;
 mod editor_hint;
+mod export_flow;
 mod frame;
 mod import_flow;
 mod project_io;
@@ -275,6 +276,13 @@ impl StudioApp {
     /// PLCopen XML… does once the file is chosen.
     pub fn import_plcopen(&mut self, path: &Path) {
         self.studio.open_import(path.to_owned());
+    }
+
+    /// Exports the open project as it is in the editor (unsaved changes included) to the
+    /// PLCopen XML file `path`, as File ▸ Export PLCopen XML… does once the file is chosen; the
+    /// status bar says what was written or why nothing was.
+    pub fn export_plcopen(&mut self, path: &Path) {
+        self.studio.export_plcopen(path);
     }
 
     /// Whether the import preview is open.

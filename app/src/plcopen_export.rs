@@ -1,0 +1,114 @@
+//! What `rivet export` and the studio's File ▸ Export PLCopen XML… share
+//! (`docs/plcopen-xml.md` §6.4): exporting a project and writing the file so that a failure
+//! half-way leaves an earlier file of that name as it was.
+
+use std::ffi::OsString;
+use std::path::{Path, PathBuf};
+
+/// Why a project was not exported to a file. Nothing was written; an earlier file of that name
+/// is as it was.
+#[derive(Debug, thiserror::Error)]
+pub enum ExportFailure {
+    /// The export refused the project; the error names the object at fault.
+    #[error(transparent)]
+    Export(#[from] plcopen::ExportError),
+    /// The path does not end in a file name (`..`, `/`).
+    #[error("{0}: not a file name")]
+    NotAFileName(PathBuf),
+    /// The file system refused to write or rename the file.
+    #[error("{path}: cannot be written: {source}")]
+    Write {
+        /// The file asked for.
+        path: PathBuf,
+        /// The operating system's error.
+        source: std::io::Error,
+    },
+}
+
+/// Exports `project` (`docs/plcopen-xml.md` §5) and writes the document to `path` through a
+/// hidden sibling file (`.NAME.partial`) renamed onto it at the end. Gives the number of bytes
+/// written.
+pub fn write_export(project: &project_model::Project, path: &Path) -> Result<usize, ExportFailure> {
+    let xml = plcopen::export(project)?;
+    let file_name = path
+        .file_name()
+        .ok_or_else(|| ExportFailure::NotAFileName(path.to_owned()))?;
+    let mut temporary_name = OsString::from(".");
+    temporary_name.push(file_name);
+    temporary_name.push(".partial");
+    let temporary = path.with_file_name(temporary_name);
+    let written = std::fs::write(&temporary, &xml).and_then(|()| std::fs::rename(&temporary, path));
+    if let Err(source) = written {
+        // The temporary file is ours alone; removing it leaves the folder as it was.
+        let _ = std::fs::remove_file(&temporary);
+        return Err(ExportFailure::Write {
+            path: path.to_owned(),
+            source,
+        });
+    }
+    Ok(xml.len())
+}
+
+#[cfg(test)]
+mod tests {
+    #![allow(clippy::unwrap_used)] // A panic is a failed test.
+
+    use super::*;
+
+    fn example() -> project_model::Project {
+        project_model::load_project(&assets::example_project_dir())
+            .unwrap()
+            .project
+    }
+
+    #[test]
+    fn the_file_holds_the_export_and_no_partial_file_is_left() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("machine.xml");
+        std::fs::write(&path, "older").unwrap();
+        let project = example();
+        let bytes = write_export(&project, &path).unwrap();
+        let written = std::fs::read(&path).unwrap();
+        assert_eq!(written.len(), bytes);
+        assert_eq!(written, plcopen::export(&project).unwrap());
+        let names: Vec<_> = std::fs::read_dir(dir.path())
+            .unwrap()
+            .map(|entry| entry.unwrap().file_name())
+            .collect();
+        assert_eq!(names, vec![OsString::from("machine.xml")]);
+    }
+
+    #[test]
+    fn a_folder_that_does_not_exist_is_named_and_nothing_is_written() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("missing").join("machine.xml");
+        let error = write_export(&example(), &path).unwrap_err();
+        assert!(matches!(error, ExportFailure::Write { .. }), "{error:?}");
+        assert!(
+            error
+                .to_string()
+                .starts_with(&format!("{}: cannot be written: ", path.display())),
+            "{error}"
+        );
+        assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 0);
+    }
+
+    #[test]
+    fn a_rename_onto_a_folder_fails_and_leaves_the_folder_and_no_partial_file() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("taken.xml");
+        std::fs::create_dir(&path).unwrap();
+        std::fs::write(path.join("inside.txt"), "mine").unwrap();
+        let error = write_export(&example(), &path).unwrap_err();
+        assert!(matches!(error, ExportFailure::Write { .. }), "{error:?}");
+        assert!(path.join("inside.txt").is_file());
+        assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 1);
+    }
+
+    #[test]
+    fn a_path_without_a_file_name_is_refused() {
+        let error = write_export(&example(), Path::new("/")).unwrap_err();
+        assert!(matches!(error, ExportFailure::NotAFileName(_)), "{error:?}");
+        assert_eq!(error.to_string(), "/: not a file name");
+    }
+}
