@@ -248,10 +248,11 @@ fn outputs() -> impl Strategy<Value = Vec<NetworkOutput>> {
 
 /// Up to three LD/FBD networks as an editor draws them, keeping the rules of `network_check`:
 /// operands, coils, pins and labels are identifiers, every rung has an element, parallel groups
-/// have two or three branches with elements, boxes have an input and an output (so the power
-/// goes on) and assign only their other outputs, and a first input has a source only where
-/// nothing else feeds it. What a PLCopen
-/// graph holds, so a plain PLCopen document gives these networks back in the normal form.
+/// have two or three branches with elements (one group of the rung and of each output branch
+/// may have an empty one where one wire feeds it), boxes have an input and an
+/// output (so the power goes on) and assign only their other outputs, and a first input has a
+/// source only where nothing else feeds it; outputs come in any order. What a PLCopen graph
+/// holds, so a plain PLCopen document gives these networks back in the normal form.
 pub fn drawn_networks() -> impl Strategy<Value = Vec<Network>> {
     let network = (
         text(),
@@ -259,13 +260,25 @@ pub fn drawn_networks() -> impl Strategy<Value = Vec<Network>> {
         prop_oneof![Just(String::new()), ident()],
         drawn_chain(),
         drawn_outputs(),
+        proptest::option::of(0..3usize),
     )
-        .prop_map(|(title, comment, label, rung, outputs)| Network {
-            title,
-            comment,
-            label,
-            rung,
-            outputs,
+        .prop_map(|(title, comment, label, mut rung, mut outputs, empty)| {
+            if let Some(place) = empty {
+                empty_a_branch(&mut rung, place, true);
+                let fed_by_one_wire = !matches!(rung.last(), Some(FlowNode::Parallel(_)));
+                for output in &mut outputs {
+                    if let NetworkOutput::Branch { rung: branch, .. } = output {
+                        empty_a_branch(branch, place, fed_by_one_wire);
+                    }
+                }
+            }
+            Network {
+                title,
+                comment,
+                label,
+                rung,
+                outputs,
+            }
         });
     proptest::collection::vec(network, 0..4).prop_map(|mut networks| {
         let mut next = 1;
@@ -278,6 +291,27 @@ pub fn drawn_networks() -> impl Strategy<Value = Vec<Network>> {
         }
         networks
     })
+}
+
+/// Empties branch `place` (modulo their count) of the first parallel group of `chain` that one
+/// wire feeds: the first element when `first_fed_by_one_wire`, else one after an operand or a
+/// box. In LD an empty branch is a wire from where the group starts; after another group there
+/// is no such point (its branches' ends are wired on one by one), and the import gives the
+/// paths expanded instead, which run the same but are another spelling.
+fn empty_a_branch(chain: &mut [FlowNode], place: usize, first_fed_by_one_wire: bool) {
+    for index in 0..chain.len() {
+        let fed_by_one_wire = match index {
+            0 => first_fed_by_one_wire,
+            _ => !matches!(chain[index - 1], FlowNode::Parallel(_)),
+        };
+        if let FlowNode::Parallel(parallel) = &mut chain[index]
+            && fed_by_one_wire
+        {
+            let count = parallel.branches.len();
+            parallel.branches[place % count].rung.clear();
+            return;
+        }
+    }
 }
 
 /// A drawn chain of at least one element: operands (contacts with any modifier), parallel

@@ -98,7 +98,7 @@ pub use network_edit::{
     new_jump, new_return, paste, set_element_text, set_network_header, set_pin_operand,
     toggle_en_eno, toggle_negation,
 };
-pub use network_normal_form::{normalize_network, normalize_networks};
+pub use network_normal_form::{is_nested_too_deeply, normalize_network, normalize_networks};
 pub use network_walk::{ElementRef, max_element_id, walk_chain, walk_outputs};
 pub use pou::{
     AccessSpecifier, Body, Language, Method, Pou, PouAction, PouKind, Property, PropertyAccessor,

@@ -8,9 +8,10 @@
 //! - a parallel branch that is one parallel group gives its branches to the enclosing group
 //!   (OR is associative), and a parallel group of one branch is that branch's chain;
 //! - an output branch without elements gives its outputs to the enclosing list in its place,
-//!   and outputs that are a single branch continue the chain before them.
+//!   and outputs that are a single branch continue the chain before them; a branch that drives
+//!   nothing is left as it is (merged, it would leave a result unused, or vanish).
 
-use crate::{FlowNode, Network, NetworkOutput};
+use crate::{FlowNode, MAX_NETWORK_NESTING, Network, NetworkOutput};
 
 /// Brings every network of a body into the normal form; element ids are kept.
 pub fn normalize_networks(networks: &mut [Network]) {
@@ -19,11 +20,20 @@ pub fn normalize_networks(networks: &mut [Network]) {
     }
 }
 
-/// Brings `network` into the normal form; element ids are kept.
+/// Brings `network` into the normal form; element ids are kept. A network nested deeper than
+/// [`MAX_NETWORK_NESTING`] is left as it is, for `network_problems` to refuse: the rules below
+/// recurse into the nesting.
 pub fn normalize_network(network: &mut Network) {
+    if is_nested_too_deeply(network) {
+        return;
+    }
     let mut outputs = std::mem::take(&mut network.outputs);
     normalize_outputs(&mut outputs);
-    while let [NetworkOutput::Branch { .. }] = outputs.as_slice() {
+    // A lone branch that drives nothing stays a branch: merged into the rung it would leave
+    // the network's result unused, which the lowering refuses.
+    while let [NetworkOutput::Branch { outputs: inner, .. }] = outputs.as_slice()
+        && !inner.is_empty()
+    {
         let Some(NetworkOutput::Branch {
             rung,
             outputs: inner,
@@ -37,6 +47,67 @@ pub fn normalize_network(network: &mut Network) {
     }
     network.outputs = outputs;
     normalize_chain(&mut network.rung);
+}
+
+/// Whether an element of `network` lies [`MAX_NETWORK_NESTING`] levels deep or deeper (in
+/// parallel branches, box inputs and output branches), the depth at which `network_problems`
+/// refuses it; found without recursion, so any depth is answered.
+pub fn is_nested_too_deeply(network: &Network) -> bool {
+    enum Part<'n> {
+        Chain(&'n [FlowNode]),
+        Outputs(&'n [NetworkOutput]),
+    }
+    let mut stack = vec![
+        (Part::Chain(&network.rung), 0usize),
+        (Part::Outputs(&network.outputs), 0),
+    ];
+    while let Some((part, depth)) = stack.pop() {
+        let is_empty = match part {
+            Part::Chain(chain) => chain.is_empty(),
+            Part::Outputs(outputs) => outputs.is_empty(),
+        };
+        if is_empty {
+            continue;
+        }
+        if depth >= MAX_NETWORK_NESTING {
+            return true;
+        }
+        match part {
+            Part::Chain(chain) => {
+                for node in chain {
+                    match node {
+                        FlowNode::Operand(_) => {}
+                        FlowNode::Parallel(parallel) => stack.extend(
+                            parallel
+                                .branches
+                                .iter()
+                                .map(|branch| (Part::Chain(&branch.rung), depth + 1)),
+                        ),
+                        FlowNode::Block(block) => stack.extend(
+                            block
+                                .inputs
+                                .iter()
+                                .map(|input| (Part::Chain(&input.source), depth + 1)),
+                        ),
+                    }
+                }
+            }
+            Part::Outputs(outputs) => {
+                for output in outputs {
+                    if let NetworkOutput::Branch {
+                        rung,
+                        outputs: inner,
+                        ..
+                    } = output
+                    {
+                        stack.push((Part::Chain(rung), depth + 1));
+                        stack.push((Part::Outputs(inner), depth + 1));
+                    }
+                }
+            }
+        }
+    }
+    false
 }
 
 /// Normalizes a chain and the chains inside it.
@@ -85,11 +156,14 @@ fn normalize_outputs(outputs: &mut Vec<NetworkOutput>) {
                 outputs: mut inner,
             } => {
                 normalize_outputs(&mut inner);
-                if rung.is_empty() {
+                // A branch with neither elements nor outputs is kept: the normal form changes
+                // the spelling, never drops what a body holds.
+                if rung.is_empty() && !inner.is_empty() {
                     flat.append(&mut inner);
                     continue;
                 }
-                if let [NetworkOutput::Branch { .. }] = inner.as_slice()
+                if let [NetworkOutput::Branch { outputs: last, .. }] = inner.as_slice()
+                    && !last.is_empty()
                     && let Some(NetworkOutput::Branch {
                         rung: more,
                         outputs: last,
@@ -310,5 +384,74 @@ mod tests {
             ..Network::default()
         };
         assert_eq!(normalized(&network), network);
+    }
+
+    #[test]
+    fn a_branch_that_drives_nothing_is_neither_merged_nor_dropped() {
+        // Merged into the rung, the group's result would go nowhere, which the lowering refuses.
+        let lone = Network {
+            rung: vec![operand(1, "a")],
+            outputs: vec![NetworkOutput::Branch {
+                id: ElementId(2),
+                rung: vec![parallel(
+                    3,
+                    vec![vec![operand(4, "a")], vec![operand(5, "b")]],
+                )],
+                outputs: Vec::new(),
+            }],
+            ..Network::default()
+        };
+        assert_eq!(normalized(&lone), lone);
+        let nested = Network {
+            rung: vec![operand(1, "a")],
+            outputs: vec![
+                coil(2, "x"),
+                NetworkOutput::Branch {
+                    id: ElementId(3),
+                    rung: vec![operand(4, "b")],
+                    outputs: vec![NetworkOutput::Branch {
+                        id: ElementId(5),
+                        rung: vec![operand(6, "c")],
+                        outputs: Vec::new(),
+                    }],
+                },
+                NetworkOutput::Branch {
+                    id: ElementId(7),
+                    rung: Vec::new(),
+                    outputs: Vec::new(),
+                },
+            ],
+            ..Network::default()
+        };
+        assert_eq!(normalized(&nested), nested);
+    }
+
+    /// A rung of `levels` parallel groups of one branch each, one inside the other.
+    fn groups_of_one_branch(levels: u32) -> Network {
+        let mut chain = vec![operand(1, "a")];
+        for level in 0..levels {
+            chain = vec![parallel(level + 2, vec![chain])];
+        }
+        Network {
+            rung: chain,
+            outputs: vec![coil(levels + 2, "x")],
+            ..Network::default()
+        }
+    }
+
+    #[test]
+    fn a_network_nested_too_deeply_is_left_for_the_check_to_refuse() {
+        let limit = MAX_NETWORK_NESTING as u32;
+        // The operand in `limit` groups lies `limit` levels deep.
+        assert!(!is_nested_too_deeply(&groups_of_one_branch(limit - 1)));
+        assert!(is_nested_too_deeply(&groups_of_one_branch(limit)));
+        let deep = groups_of_one_branch(limit + 36);
+        assert_eq!(normalized(&deep), deep);
+        assert!(!crate::network_problems(std::slice::from_ref(&deep)).is_empty());
+        // Within the limit, the groups of one branch are their chains.
+        assert_eq!(
+            normalized(&groups_of_one_branch(limit - 1)).rung,
+            vec![operand(1, "a")]
+        );
     }
 }

@@ -631,3 +631,98 @@ fn a_parallel_branch_that_reduces_last_keeps_its_place_among_the_branches() {
     let imported = plain_import(&xml, "three branches", true);
     assert_same_objects(&project, &imported, "three branches");
 }
+
+#[test]
+fn an_empty_parallel_branch_keeps_its_place_and_the_outputs_their_order() {
+    use project_model::{Branch, Coil, ElementId, Parallel};
+    let operand = |text: &str| {
+        FlowNode::Operand(Operand {
+            text: text.to_owned(),
+            ..Operand::default()
+        })
+    };
+    let parallel = |branches: Vec<Vec<FlowNode>>| {
+        FlowNode::Parallel(Parallel {
+            id: ElementId(0),
+            branches: branches.into_iter().map(|rung| Branch { rung }).collect(),
+        })
+    };
+    let coil = |variable: &str| {
+        NetworkOutput::Coil(Coil {
+            variable: variable.to_owned(),
+            ..Coil::default()
+        })
+    };
+    // [x] => <X, {(a|) => Y}>: the group's empty branch is wired from x, above the group, and
+    // the group stands below X.
+    let mut networks = vec![
+        Network {
+            rung: vec![operand("x")],
+            outputs: vec![
+                coil("X"),
+                NetworkOutput::Branch {
+                    id: ElementId(0),
+                    rung: vec![parallel(vec![vec![operand("a")], Vec::new()])],
+                    outputs: vec![coil("Y")],
+                },
+            ],
+            ..Network::default()
+        },
+        Network {
+            rung: vec![operand("x"), parallel(vec![vec![operand("a")], Vec::new()])],
+            outputs: vec![
+                NetworkOutput::Jump {
+                    id: ElementId(0),
+                    label: "L".to_owned(),
+                },
+                coil("Y"),
+            ],
+            ..Network::default()
+        },
+        // An empty branch after two others, the second on a row of its own, and after a
+        // group that the normal form gives its branches.
+        Network {
+            rung: vec![
+                operand("x"),
+                parallel(vec![vec![operand("a")], vec![operand("b")], Vec::new()]),
+            ],
+            outputs: vec![NetworkOutput::Return { id: ElementId(0) }],
+            ..Network::default()
+        },
+        Network {
+            rung: vec![
+                operand("y"),
+                parallel(vec![
+                    vec![parallel(vec![vec![operand("c")], vec![operand("d")]])],
+                    Vec::new(),
+                ]),
+            ],
+            outputs: vec![coil("Z")],
+            ..Network::default()
+        },
+    ];
+    import::number_elements(&mut networks);
+    let project_of = |networks: &[Network]| {
+        let mut project = Project::default();
+        project.application.children = vec![
+            project_model::Node::Object(program(
+                "Ladder",
+                Body::Ld {
+                    networks: networks.to_vec(),
+                },
+            )),
+            project_model::Node::Object(program(
+                "Blocks",
+                Body::Fbd {
+                    networks: networks.to_vec(),
+                },
+            )),
+        ];
+        project
+    };
+    let xml = plain_export(&project_of(&networks), "an empty branch");
+    let imported = plain_import(&xml, "an empty branch", true);
+    project_model::normalize_networks(&mut networks);
+    import::number_elements(&mut networks);
+    assert_same_objects(&project_of(&networks), &imported, "an empty branch");
+}

@@ -18,6 +18,10 @@ use super::network_series_parallel::{ChainEdge, compare_keys, reduce};
 use crate::body_object::ObjectKind;
 use crate::ld::{Edge as XmlEdge, Storage};
 
+/// How far below an inner OR's last branch the next branch of the OR it drives is ordered: less
+/// than the whole unit positions come in, many times over.
+const NESTED_OR_STEP: f64 = 1e-3;
+
 /// Why a group of objects did not become a network.
 #[derive(Debug)]
 pub(super) enum BuildFailure {
@@ -112,8 +116,12 @@ pub(super) struct NetworkBuilder<'g, 'b> {
     reads: usize,
     /// How deep the conversion is in box inputs and output branches.
     depth: usize,
-    /// Whether a variable read only by power inputs is one point for all its readers (the
-    /// power fans out after it) rather than read again for each.
+    /// For each of Rivet's ORs added so far, the top its last branch is ordered by: an OR
+    /// driving another's input gives its branches to that group, ordered among them.
+    or_bottoms: HashMap<usize, f64>,
+    /// Whether the body is Rivet's export (it carries the `…/networks` entry): a variable read
+    /// only by power inputs is one point for all its readers (the power fans out after it)
+    /// rather than read again for each, and a wired OR's branches are in connection order.
     power_wires: bool,
 }
 
@@ -132,6 +140,7 @@ impl<'g, 'b> NetworkBuilder<'g, 'b> {
             entering: vec![Vec::new()],
             reads: 0,
             depth: 0,
+            or_bottoms: HashMap::new(),
             power_wires,
         }
     }
@@ -158,6 +167,32 @@ impl<'g, 'b> NetworkBuilder<'g, 'b> {
         };
         if sink_points.is_empty() {
             return Ok(network);
+        }
+        // An output no wire from the rail reaches (an object another tool left unwired in a
+        // way no drawing has) would vanish from the tree: the body is no set of networks.
+        let all: HashSet<usize> = (0..self.value_uses.len()).collect();
+        let powered = self.descendants(0, &all);
+        if let Some(sink) = self
+            .sinks
+            .iter()
+            .find(|sink| !powered.contains(&sink.point))
+        {
+            let what = sink
+                .object
+                .or_else(|| self.object_at(sink.point))
+                .map_or_else(
+                    || "an output".to_owned(),
+                    |object| {
+                        format!(
+                            "the {} with local id {}",
+                            self.graph.objects[object].kind.element_name(),
+                            self.graph.objects[object].local_id
+                        )
+                    },
+                );
+            return Err(BuildFailure::NotANetwork(format!(
+                "{what} is reached by no wire from the power rail"
+            )));
         }
         let upstream = self.ancestors(&sink_points);
         let mut in_order: Vec<usize> = upstream.iter().copied().collect();
@@ -305,9 +340,24 @@ impl<'g, 'b> NetworkBuilder<'g, 'b> {
                 }
                 // A branch of a wired OR is ordered by its top, then by its connection's place
                 // in the OR (CODESYS writes no positions: its connection order is the order).
+                // Rivet's export lists the ends in branch order, and an empty branch's end is
+                // the element before the group, higher up: there a branch's top is never above
+                // the one before it nor above the element the branches meet at (§3.4).
+                let mut floor = self.top(object);
                 for (connection, producer) in several.iter().enumerate() {
                     let (producer_key, top) = match producer {
-                        Producer::Output { object, .. } => (self.key(*object), self.top(*object)),
+                        Producer::Output {
+                            object: producer, ..
+                        } => {
+                            let top = self.top(*producer);
+                            let top = if self.power_wires {
+                                floor = floor.max(top);
+                                floor
+                            } else {
+                                top
+                            };
+                            (self.key(*producer), top)
+                        }
                         Producer::Read { .. } => (key, key.0),
                     };
                     if let Some(from) = self.producer_point(producer, producer_key) {
@@ -430,23 +480,39 @@ impl<'g, 'b> NetworkBuilder<'g, 'b> {
                 });
             }
             Some(Gate::Parallel) => {
+                // The branches are in pin order (§3.4), each on rows below the one before:
+                // a branch's top is that of what drives it, but never above the branch before
+                // it (an inner OR's last branch included, whose branches join this group's)
+                // nor above the OR (the row of the first branch), since an empty branch is
+                // wired from the element before the group, which may stand higher up. So the
+                // group also stands among the outputs below the coils written before it.
+                let mut top = self.top(object);
                 for input in 0..graph.inputs[object].len() {
                     // A branch without elements at the start of an FBD rung leaves its input
                     // open: it starts where the rung does.
                     let from = self.input_point(object, input).unwrap_or(0);
-                    let top = match graph.inputs[object][input].producers.first() {
+                    let producer = match graph.inputs[object][input].producers.first() {
                         Some(Producer::Output {
                             object: producer, ..
-                        }) => self.top(*producer),
-                        _ => self.top(object),
+                        }) => Some(*producer),
+                        _ => None,
                     };
+                    if let Some(producer) = producer {
+                        top = top.max(self.top(producer));
+                    }
                     self.push_edge(GraphEdge {
                         from,
                         to: output,
                         label: EdgeLabel::Wire,
                         key: (top, input),
                     });
+                    // Just below the inner OR's last branch: positions are whole numbers, so
+                    // the next branch sorts after each of its branches, however deep they nest.
+                    if let Some(&bottom) = producer.and_then(|p| self.or_bottoms.get(&p)) {
+                        top = top.max(bottom + NESTED_OR_STEP);
+                    }
                 }
+                self.or_bottoms.insert(object, top);
             }
             None => {}
         }

@@ -60,7 +60,11 @@ pub(super) fn gate_of(
             let is_variable = matches!(objects[*operand].kind, ObjectKind::InVariable(_));
             (is_variable && readers(*operand, 0) == 1).then_some(Gate::Series { operand: *operand })
         }
-        Some("parallel") if block.type_name.trim().eq_ignore_ascii_case("OR") => {
+        // A group has two branches or more; an OR with fewer inputs was edited by another
+        // tool, and its output would be reached by no wire.
+        Some("parallel")
+            if block.type_name.trim().eq_ignore_ascii_case("OR") && inputs[object].len() >= 2 =>
+        {
             Some(Gate::Parallel)
         }
         _ => None,
@@ -68,11 +72,16 @@ pub(super) fn gate_of(
 }
 
 /// Whether `objects[object]` is a box whose first input Rivet's export marked as driven by a
-/// source of its own (the `…/source` entry naming that pin) and something drives it.
+/// source of its own (the `…/source` entry naming that pin), given how many inputs each output
+/// drives (`readers(object, pin)`). The mark holds only where the wires fit it: something other
+/// than the power rail alone drives the pin, and each element that does drives nothing else (a
+/// source is read by its pin only); a mark another tool's edits made stale is ignored, and the
+/// box is an ordinary one.
 pub(super) fn has_own_first_source(
     objects: &[BodyObject],
     inputs: &[Vec<InputPoint<'_>>],
     object: usize,
+    readers: impl Fn(usize, usize) -> usize,
 ) -> bool {
     let ObjectKind::Block(block) = &objects[object].kind else {
         return false;
@@ -80,11 +89,30 @@ pub(super) fn has_own_first_source(
     let Some(attributes) = rivet_attributes(&objects[object].add_data, "source") else {
         return false;
     };
-    let first = block.inputs.first();
-    first.is_some_and(|pin| {
-        attributes.get("pin") == Some(&pin.formal_parameter)
-            && inputs[object]
-                .first()
-                .is_some_and(|point| !point.producers.is_empty())
-    })
+    let Some(first) = block.inputs.first() else {
+        return false;
+    };
+    let Some(point) = inputs[object].first() else {
+        return false;
+    };
+    let is_rail = |producer: usize| matches!(objects[producer].kind, ObjectKind::LeftPowerRail(_));
+    let mut only_rails = true;
+    for producer in &point.producers {
+        let Producer::Output {
+            object: producer,
+            pin,
+        } = producer
+        else {
+            return false;
+        };
+        // An empty parallel branch of an LD source starts at the rail, as the source does.
+        if is_rail(*producer) {
+            continue;
+        }
+        only_rails = false;
+        if readers(*producer, *pin) != 1 {
+            return false;
+        }
+    }
+    attributes.get("pin") == Some(&first.formal_parameter) && !only_rails
 }

@@ -117,7 +117,14 @@ impl<'b> BodyGraph<'b> {
             })
             .collect();
         graph.own_first_source = (0..objects.len())
-            .map(|object| has_own_first_source(objects, &graph.inputs, object))
+            .map(|object| {
+                has_own_first_source(objects, &graph.inputs, object, |producer, pin| {
+                    graph
+                        .consumer_index
+                        .get(&(producer, pin))
+                        .map_or(0, Vec::len)
+                })
+            })
             .collect();
         graph.read_instances(power_wires);
         graph.reindex();

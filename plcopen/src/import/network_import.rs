@@ -10,7 +10,7 @@ use super::error::{ImportError, ImportErrorKind};
 use super::network_build::{BuildFailure, NetworkBuilder};
 use super::network_error::NetworkError;
 use super::network_graph::{BodyGraph, ObjectFault};
-use super::network_groups::{is_network_title, network_groups};
+use super::network_groups::{NETWORKS_ENTRY, is_network_title, network_groups};
 use super::report::Outcome;
 use crate::add_data::AddData;
 use crate::body::{Body as XmlBody, BodyContent};
@@ -68,24 +68,53 @@ impl Converter<'_> {
             };
             converter.error(&object_place, ImportErrorKind::Network(fault.error))
         };
-        // Power that fans out (an operand or a box output several branches or outputs follow)
-        // is first kept as wires, as Rivet's export writes it; when the body then is no set of
-        // networks, its variables are read again for each reader as in another tool's file.
-        let mut outcome = Err(BuildFailure::NotANetwork(String::new()));
-        for power_wires in [true, false] {
-            let graph = BodyGraph::new(objects, power_wires).map_err(|error| fault(self, error))?;
-            outcome = build_networks(&graph, &body.add_data, power_wires);
-            if outcome.is_ok() {
-                break;
-            }
-        }
-        let mut networks = match outcome {
-            Ok(networks) => networks,
+        // Rivet's export keeps power that fans out (an operand or a box output several branches
+        // or outputs follow) as wires, and always writes its `…/networks` entry; another tool's
+        // variables are read again for each reader, as they always were (§3.3).
+        let plain = BodyGraph::new(objects, false).map_err(|error| fault(self, error))?;
+        let outcome = if body
+            .add_data
+            .entries
+            .iter()
+            .any(|entry| entry.name == NETWORKS_ENTRY)
+        {
+            let wired = BodyGraph::new(objects, true).map_err(|error| fault(self, error))?;
+            rivet_networks(&wired, &plain, &body.add_data)
+        } else {
+            build_networks(&plain, &body.add_data).map(|networks| (networks, Vec::new()))
+        };
+        let (mut networks, read_again) = match outcome {
+            Ok(built) => built,
             Err(BuildFailure::Fault(error)) => return Err(fault(self, error)),
             Err(BuildFailure::NotANetwork(reason)) => {
                 return Ok(Some(NetworkOutcome::NotANetwork { reason }));
             }
         };
+        for network in read_again {
+            self.report.push(
+                Outcome::Converted,
+                format!("network {} of {what}", network + 1),
+                &body_path,
+                body.line,
+                "its wires no longer fit Rivet's export (another tool changed them): \
+                 read as another tool's network, each variable read again for each reader",
+            );
+        }
+        // Series-parallel reduction nests parallel groups as deep as the wires do; the normal
+        // form and the numbering recurse, so the nesting is checked first.
+        if networks.iter().any(project_model::is_nested_too_deeply) {
+            let place = Place {
+                path: body_path.clone(),
+                line: body.line,
+                column: 1,
+            };
+            return Err(self.error(
+                &place,
+                ImportErrorKind::Network(NetworkError::TooDeep {
+                    limit: project_model::MAX_NETWORK_NESTING,
+                }),
+            ));
+        }
         project_model::normalize_networks(&mut networks);
         let element_ids: ElementIds = number_elements(&mut networks)
             .into_iter()
@@ -130,25 +159,16 @@ impl Converter<'_> {
     }
 }
 
-/// The networks of the body whose wires are `graph`, or why they are none; `power_wires` as
-/// the graph was built with.
+/// The networks of another tool's body whose wires are `graph`, or why they are none.
 fn build_networks(
     graph: &BodyGraph<'_>,
     body_add_data: &AddData,
-    power_wires: bool,
 ) -> Result<Vec<Network>, BuildFailure> {
-    if let Some(object) = graph.object_on_loop() {
-        let object = &graph.objects[object];
-        return Err(BuildFailure::NotANetwork(format!(
-            "the {} with local id {} is on a feedback loop",
-            object.kind.element_name(),
-            object.local_id
-        )));
-    }
+    refuse_loops(graph)?;
     let groups = network_groups(graph, body_add_data)?;
     let mut networks = Vec::with_capacity(groups.len());
     for group in groups {
-        let builder = NetworkBuilder::new(graph, &group.members, power_wires);
+        let builder = NetworkBuilder::new(graph, &group.members, false);
         networks.push(builder.build(group.title, group.comment, group.label)?);
     }
     Ok(networks)
@@ -167,6 +187,62 @@ pub(super) fn from_object(mut node: FlowNode, object: usize) -> FlowNode {
         operand.id = provisional_id(object);
     }
     node
+}
+
+/// The networks of a body Rivet's export wrote (`wired`: power that fans out kept as wires),
+/// with the indices of the networks that only `plain` (every variable read again for each
+/// reader) gives, as another tool's file: a network another tool edited falls back alone.
+fn rivet_networks(
+    wired: &BodyGraph<'_>,
+    plain: &BodyGraph<'_>,
+    body_add_data: &AddData,
+) -> Result<(Vec<Network>, Vec<usize>), BuildFailure> {
+    // Wires kept where reads were can close a loop the plain graph does not have; a loop
+    // belongs to the whole body, so the whole body is read as another tool's.
+    if wired.object_on_loop().is_some() {
+        let networks = build_networks(plain, body_add_data)?;
+        let every = (0..networks.len()).collect();
+        return Ok((networks, every));
+    }
+    let groups = network_groups(wired, body_add_data)?;
+    let mut networks = Vec::with_capacity(groups.len());
+    let mut read_again = Vec::new();
+    for (index, group) in groups.into_iter().enumerate() {
+        let builder = NetworkBuilder::new(wired, &group.members, true);
+        let built = builder.build(
+            group.title.clone(),
+            group.comment.clone(),
+            group.label.clone(),
+        );
+        let network = match built {
+            Ok(network) => network,
+            Err(_) => {
+                read_again.push(index);
+                NetworkBuilder::new(plain, &group.members, false).build(
+                    group.title,
+                    group.comment,
+                    group.label,
+                )?
+            }
+        };
+        networks.push(network);
+    }
+    Ok((networks, read_again))
+}
+
+/// Refuses a body with a wire loop as no set of networks.
+fn refuse_loops(graph: &BodyGraph<'_>) -> Result<(), BuildFailure> {
+    match graph.object_on_loop() {
+        Some(object) => {
+            let object = &graph.objects[object];
+            Err(BuildFailure::NotANetwork(format!(
+                "the {} with local id {} is on a feedback loop",
+                object.kind.element_name(),
+                object.local_id
+            )))
+        }
+        None => Ok(()),
+    }
 }
 
 /// Gives every element a fresh id, from 1 in tree order (networks in order; in a network its

@@ -638,3 +638,207 @@ fn boxes_nested_deeper_than_a_body_may_hold_are_refused() {
         "{error}"
     );
 }
+
+/// Rivet's `…/networks` entry with a network starting at each of `firsts`.
+fn networks_entry(firsts: &[u64]) -> String {
+    let networks: String = firsts
+        .iter()
+        .map(|first| format!(r#"<network first="{first}"/>"#))
+        .collect();
+    format!(
+        r#"<addData><data name="https://rivet-plc.dev/plcopen/1/networks" handleUnknown="preserve"><networks xmlns="https://rivet-plc.dev/plcopen/1">{networks}</networks></data></addData>"#
+    )
+}
+
+fn in_variable(id: u64, expression: &str, y: u32) -> String {
+    format!(
+        r#"<inVariable localId="{id}"><position x="0" y="{y}"/><connectionPointOut/><expression>{expression}</expression></inVariable>"#
+    )
+}
+
+fn out_variable(id: u64, expression: &str, from: &str, y: u32) -> String {
+    format!(
+        r#"<outVariable localId="{id}"><position x="500" y="{y}"/><connectionPointIn>{from}</connectionPointIn><expression>{expression}</expression></outVariable>"#
+    )
+}
+
+/// A box `type_name` at `y` with one input per `(pin, connections)` and the output `OUT`;
+/// `add_data` is written inside it.
+fn function_box(
+    id: u64,
+    type_name: &str,
+    inputs: &[(&str, &str)],
+    y: u32,
+    add_data: &str,
+) -> String {
+    let pins: String = inputs
+        .iter()
+        .map(|(pin, from)| {
+            format!(
+                r#"<variable formalParameter="{pin}"><connectionPointIn>{from}</connectionPointIn></variable>"#
+            )
+        })
+        .collect();
+    format!(
+        r#"<block localId="{id}" typeName="{type_name}"><position x="200" y="{y}"/><inputVariables>{pins}</inputVariables><inOutVariables/><outputVariables><variable formalParameter="OUT"><connectionPointOut/></variable></outputVariables>{add_data}</block>"#
+    )
+}
+
+fn from(id: u64) -> String {
+    format!(r#"<connection refLocalId="{id}"/>"#)
+}
+
+fn from_out(id: u64) -> String {
+    format!(r#"<connection refLocalId="{id}" formalParameter="OUT"/>"#)
+}
+
+#[test]
+fn another_tools_variable_read_by_two_first_inputs_is_read_again_for_each() {
+    let objects = [
+        in_variable(1, "x", 0),
+        in_variable(2, "1", 40),
+        function_box(3, "ADD", &[("IN1", &from(1)), ("IN2", &from(2))], 0, ""),
+        out_variable(4, "x", &from_out(3), 0),
+        in_variable(5, "10", 140),
+        function_box(6, "ADD", &[("IN1", &from(1)), ("IN2", &from(5))], 100, ""),
+        out_variable(7, "y", &from_out(6), 100),
+    ]
+    .concat();
+    // An INT is no power: kept as one operand the two boxes follow, the lowering would store
+    // it in a BOOL, and the lower box would not see the upper box's write.
+    assert_eq!(
+        rendered(&networks("FBD", &objects)),
+        ["-> {x ADD(IN1; IN2=1) -> x}, {x ADD(IN1; IN2=10) -> y}"]
+    );
+}
+
+#[test]
+fn a_network_of_rivets_body_another_tool_changed_falls_back_alone_and_is_reported() {
+    let objects = [
+        // Network 1, as Rivet's export writes it: b's power fans out to two coils.
+        in_variable(1, "b", 0),
+        out_variable(2, "P", &from(1), 0),
+        out_variable(3, "Q", &from(1), 40),
+        // Network 2, edited: x drives F1 and F2, and F1's result is a value into ADD.
+        in_variable(10, "x", 100),
+        function_box(11, "F1", &[("IN", &from(10))], 100, ""),
+        in_variable(12, "y", 160),
+        function_box(
+            13,
+            "ADD",
+            &[("IN1", &from(12)), ("IN2", &from_out(11))],
+            160,
+            "",
+        ),
+        out_variable(14, "Z", &from_out(13), 160),
+        function_box(15, "F2", &[("IN", &from(10))], 200, ""),
+        out_variable(16, "W", &from_out(15), 200),
+    ]
+    .concat();
+    let imported = imported(&document("FBD", &objects, &networks_entry(&[1, 10])));
+    assert_eq!(
+        rendered(&networks_of(&imported)),
+        [
+            "b -> P, Q",
+            "-> {x F2(IN) -> W}, {y ADD(IN1; IN2=x F1(IN)) -> Z}"
+        ]
+    );
+    let notes: Vec<&str> = imported
+        .report
+        .entries
+        .iter()
+        .filter(|entry| entry.what.starts_with("network "))
+        .map(|entry| entry.what.as_str())
+        .collect();
+    assert_eq!(notes, ["network 2 of POU 'P'"]);
+}
+
+#[test]
+fn a_marked_or_without_inputs_is_an_ordinary_box_and_keeps_what_follows_it() {
+    let gate = r#"<addData><data name="https://rivet-plc.dev/plcopen/1/gate" handleUnknown="discard"><gate xmlns="https://rivet-plc.dev/plcopen/1" of="parallel"/></data></addData>"#;
+    let objects = [
+        in_variable(1, "a", 0),
+        out_variable(2, "X", &from(1), 0),
+        function_box(3, "OR", &[], 40, gate),
+        out_variable(4, "Y", &from_out(3), 40),
+    ]
+    .concat();
+    let imported = imported(&document("FBD", &objects, &networks_entry(&[1, 3])));
+    assert_eq!(rendered(&networks_of(&imported)), ["a -> X", "OR() -> Y"]);
+}
+
+#[test]
+fn an_output_no_wire_from_the_rail_reaches_makes_the_body_no_set_of_networks() {
+    // Y's wire comes from the jump, which passes nothing on.
+    let objects = [
+        rail(1, 0),
+        contact(2, "a", &[1], 0, ""),
+        format!(
+            r#"<jump localId="3" label="Done"><position x="500" y="0"/>{}</jump>"#,
+            wires(&[2])
+        ),
+        coil(4, "Y", &[3], 40, ""),
+    ]
+    .concat();
+    let imported = imported(&document("LD", &objects, ""));
+    let entry = imported.report.entries.iter().find(|entry| {
+        entry
+            .note
+            .contains("is reached by no wire from the power rail")
+    });
+    assert!(
+        entry.is_some_and(|entry| entry.note.contains("coil with local id 4")),
+        "{:?}",
+        imported.report
+    );
+}
+
+#[test]
+fn a_source_mark_the_wires_no_longer_fit_is_ignored() {
+    let mark = r#"<addData><data name="https://rivet-plc.dev/plcopen/1/source" handleUnknown="discard"><source xmlns="https://rivet-plc.dev/plcopen/1" pin="IN1"/></data></addData>"#;
+    // Another tool wired the rail to the marked pin: the box takes the power, as any box.
+    let ladder = [
+        rail(1, 0),
+        in_variable(2, "x", 40),
+        function_box(3, "ADD", &[("IN1", &from(1)), ("IN2", &from(2))], 0, mark),
+        coil(4, "Y", &[3], 0, ""),
+    ]
+    .concat();
+    assert_eq!(rendered(&networks("LD", &ladder)), ["ADD(IN1; IN2=x) -> Y"]);
+    // The marked pin's variable also drives a coil: one read, the power for both.
+    let blocks = [
+        in_variable(1, "a", 0),
+        function_box(2, "ADD", &[("IN1", &from(1)), ("IN2", "")], 0, mark),
+        out_variable(3, "Y", &from_out(2), 0),
+        out_variable(4, "Z", &from(1), 40),
+    ]
+    .concat();
+    assert_eq!(
+        rendered(&networks_of(&imported(&document(
+            "FBD",
+            &blocks,
+            &networks_entry(&[1])
+        )))),
+        ["a -> {ADD(IN1; IN2) -> Y}, Z"]
+    );
+}
+
+#[test]
+fn parallel_groups_nested_deeper_than_a_body_may_hold_are_refused_as_too_deep() {
+    // Level k: (level k-1, then c_k) in parallel with b_k, 100 levels deep.
+    let mut objects = vec![rail(1, 0), contact(2, "a", &[1], 0, "")];
+    let mut end = 2;
+    for level in 0..100u64 {
+        let b = 1000 + 2 * level;
+        let c = b + 1;
+        objects.push(contact(b, "b", &[1], 40, ""));
+        objects.push(contact(c, "c", &[end, b], 0, ""));
+        end = c;
+    }
+    objects.push(coil(5000, "X", &[end], 0, ""));
+    let error = import_error(&document("LD", &objects.concat(), "")).to_string();
+    assert!(
+        error.contains("the network nests boxes or branches more than 64 levels deep"),
+        "{error}"
+    );
+}

@@ -387,6 +387,79 @@ END_PROGRAM
     );
 }
 
+/// A Beremiz-style FBD body (no Rivet entries): the INT variable `x` read by the first input of
+/// two `ADD` boxes, the upper one writing `x` back.
+const TWO_ADDS_READING_ONE_VARIABLE: &str = r#"<?xml version="1.0" encoding="UTF-8"?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0201">
+  <fileHeader companyName="c" productName="p" productVersion="1" creationDateTime="2024-01-01T00:00:00"/>
+  <contentHeader name="n"><coordinateInfo><fbd><scaling x="0" y="0"/></fbd><ld><scaling x="0" y="0"/></ld><sfc><scaling x="0" y="0"/></sfc></coordinateInfo></contentHeader>
+  <types><dataTypes/><pous><pou name="TwoAdds" pouType="functionBlock">
+    <interface>
+      <outputVars><variable name="x"><type><INT/></type></variable><variable name="y"><type><INT/></type></variable></outputVars>
+    </interface>
+    <body><FBD>
+      <inVariable localId="1" height="30" width="20"><position x="20" y="20"/><connectionPointOut/><expression>x</expression></inVariable>
+      <inVariable localId="2" height="30" width="20"><position x="20" y="60"/><connectionPointOut/><expression>1</expression></inVariable>
+      <block localId="3" typeName="ADD" height="60" width="60"><position x="100" y="20"/>
+        <inputVariables>
+          <variable formalParameter="IN1"><connectionPointIn><connection refLocalId="1"/></connectionPointIn></variable>
+          <variable formalParameter="IN2"><connectionPointIn><connection refLocalId="2"/></connectionPointIn></variable>
+        </inputVariables>
+        <inOutVariables/>
+        <outputVariables><variable formalParameter="OUT"><connectionPointOut/></variable></outputVariables>
+      </block>
+      <outVariable localId="4" height="30" width="20"><position x="200" y="20"/><connectionPointIn><connection refLocalId="3" formalParameter="OUT"/></connectionPointIn><expression>x</expression></outVariable>
+      <inVariable localId="5" height="30" width="20"><position x="20" y="160"/><connectionPointOut/><expression>10</expression></inVariable>
+      <block localId="6" typeName="ADD" height="60" width="60"><position x="100" y="120"/>
+        <inputVariables>
+          <variable formalParameter="IN1"><connectionPointIn><connection refLocalId="1"/></connectionPointIn></variable>
+          <variable formalParameter="IN2"><connectionPointIn><connection refLocalId="5"/></connectionPointIn></variable>
+        </inputVariables>
+        <inOutVariables/>
+        <outputVariables><variable formalParameter="OUT"><connectionPointOut/></variable></outputVariables>
+      </block>
+      <outVariable localId="7" height="30" width="20"><position x="200" y="120"/><connectionPointIn><connection refLocalId="6" formalParameter="OUT"/></connectionPointIn><expression>y</expression></outVariable>
+    </FBD></body>
+  </pou></pous></types>
+  <instances><configurations/></instances>
+</project>
+"#;
+
+#[test]
+fn another_tools_variable_read_by_two_boxes_is_read_again_by_each_after_the_earlier_writes() {
+    let document = plcopen::read(TWO_ADDS_READING_ONE_VARIABLE, "two_adds.xml")
+        .unwrap_or_else(|error| panic!("{error}"));
+    let mut project = plcopen::import(&document)
+        .unwrap_or_else(|error| panic!("{error}"))
+        .project;
+    let main = compiler::SourceProject::new(
+        "PROGRAM Main
+VAR adds : TwoAdds; END_VAR
+adds();
+END_PROGRAM
+",
+    )
+    .project;
+    project
+        .application
+        .children
+        .extend(main.application.children);
+    // An INT is no power: a rung holding x with two branches after it would not check.
+    let mut simulation = simulation_of(&project);
+    simulation.run(3);
+    assert!(simulation.faults().is_empty(), "{:?}", simulation.faults());
+    let read = |path: &str| {
+        runtime::value::read(simulation.engine(), path)
+            .unwrap_or_else(|error| panic!("{path}: {error}"))
+            .to_string()
+    };
+    // The lower box runs after the upper one wrote x, and reads x again: 3 + 10.
+    assert_eq!(
+        (read("Main.adds.x"), read("Main.adds.y")),
+        ("3".to_owned(), "13".to_owned())
+    );
+}
+
 /// Beremiz's `first_steps` counts in every language; its SFC counter, imported, runs in a
 /// program beside the ST one and counts alike: up by one each cycle, back to
 /// `ResetCounterValue` (17) on `Reset`. The chart spends a cycle in each step it passes: it
