@@ -65,8 +65,8 @@ impl<'a, 'input> Context<'a, 'input> {
     }
 
     /// Line and column (1-based, the column in characters) of a byte offset. Takes time
-    /// bounded by [`CHARACTER_CHECKPOINT_BYTES`] and the logarithm of the number of lines,
-    /// however long the line is.
+    /// bounded by twice [`CHARACTER_CHECKPOINT_BYTES`] and the logarithm of the number of
+    /// lines, however long the line is.
     fn position(&self, offset: usize) -> (u32, u32) {
         let offset = offset.min(self.text.len());
         let line_index = self
@@ -74,7 +74,15 @@ impl<'a, 'input> Context<'a, 'input> {
             .partition_point(|start| *start <= offset)
             .saturating_sub(1);
         let line_start = self.line_starts.get(line_index).copied().unwrap_or(0);
-        let column = self.character_index(offset) - self.character_index(line_start);
+        // Most lines are short: counting their characters is cheaper than two lookups.
+        let column = if offset.saturating_sub(line_start) <= CHARACTER_CHECKPOINT_BYTES {
+            self.text
+                .as_bytes()
+                .get(line_start..offset)
+                .map_or(0, character_starts)
+        } else {
+            self.character_index(offset) - self.character_index(line_start)
+        };
         (
             u32::try_from(line_index + 1).unwrap_or(u32::MAX),
             u32::try_from(column + 1).unwrap_or(u32::MAX),
