@@ -43,12 +43,11 @@ impl fmt::Display for ReadError {
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
 pub enum ReadErrorKind {
     /// The file is larger than the reader accepts.
-    #[error(
-        "the file has {size_bytes} bytes, more than the {limit_bytes} bytes a PLCopen XML file may have"
-    )]
+    #[error("{}", too_large_message(*.size_bytes, *.limit_bytes))]
     TooLarge {
-        /// The file's size.
-        size_bytes: usize,
+        /// The file's size; `None` when the file does not say it (a pipe, a device) and the
+        /// reader stopped reading past the limit.
+        size_bytes: Option<usize>,
         /// [`crate::MAX_FILE_BYTES`].
         limit_bytes: usize,
     },
@@ -82,7 +81,7 @@ pub enum ReadErrorKind {
         found: String,
     },
     /// The root's namespace is none of those accepted.
-    #[error("namespace `{found}` is not a PLCopen TC6 namespace (tc6_0201, tc6_0200 or tc6.xsd)")]
+    #[error("{}", wrong_namespace_message(.found))]
     WrongNamespace {
         /// The root's namespace, empty when it has none.
         found: String,
@@ -132,13 +131,50 @@ pub enum ReadErrorKind {
         ref_local_id: u64,
     },
     /// Two POUs or data types have the same name (IEC names ignore case).
-    #[error("{what} `{name}` is already declared on line {first_line}")]
+    #[error(
+        "the {what} `{name}` has the name of the {first_what} on line {first_line}; IEC 61131-3 names ignore case"
+    )]
     DuplicateName {
         /// `POU` or `data type`.
         what: &'static str,
         /// The name.
         name: String,
+        /// What the first declaration is: `POU` or `data type`.
+        first_what: &'static str,
         /// Line of the first declaration.
         first_line: u32,
     },
+}
+
+/// The message of [`ReadErrorKind::TooLarge`]: the size in bytes and MiB when it is known.
+fn too_large_message(size_bytes: Option<usize>, limit_bytes: usize) -> String {
+    const MIB: f64 = 1024.0 * 1024.0;
+    let limit_mib = limit_bytes as f64 / MIB;
+    match size_bytes {
+        Some(size_bytes) => format!(
+            "the file has {size_bytes} bytes ({:.1} MiB), more than the {limit_mib} MiB a PLCopen XML file may have",
+            size_bytes as f64 / MIB
+        ),
+        None => format!("the file has more than the {limit_mib} MiB a PLCopen XML file may have"),
+    }
+}
+
+/// The message of [`ReadErrorKind::WrongNamespace`], naming the namespaces accepted.
+fn wrong_namespace_message(found: &str) -> String {
+    use crate::document::Dialect;
+    let accepted = format!(
+        "{} (v2.01), {} (CODESYS) or {} (v1.0)",
+        Dialect::V201.namespace(),
+        Dialect::V200.namespace(),
+        Dialect::V10.namespace()
+    );
+    if found.is_empty() {
+        format!(
+            "the root element `project` has no namespace; a PLCopen TC6 file declares {accepted}"
+        )
+    } else {
+        format!(
+            "namespace `{found}` is not a PLCopen TC6 namespace; a PLCopen TC6 file declares {accepted}"
+        )
+    }
 }

@@ -48,7 +48,7 @@ pub use interface::{Interface, VarList, VarListKind, Variable};
 pub use ld::{Coil, Contact, Edge, LeftPowerRail, RightPowerRail, Storage};
 pub use pou::{Action, Method, Pou, PouLocation, PouType, Transition};
 pub use reader::{MAX_DEPTH, MAX_FILE_BYTES, ReadFileError, read, read_bytes, read_file};
-pub use rivet_data::RIVET_NAMESPACE;
+pub use rivet_data::{RIVET_NAMESPACE, RivetDataError};
 pub use sfc::{
     ActionBlock, ActionBlockAction, ActionContent, Condition, ConditionForm, Convergence,
     Divergence, JumpStep, MacroStep, Qualifier, SfcTransition, Step,

@@ -150,17 +150,77 @@ pub(crate) struct ObjectEntry {
     pub st: Vec<(String, String)>,
 }
 
+/// Why one of Rivet's own entries cannot be read back (`docs/plcopen-xml.md` §5.4); the
+/// import wraps it in [`crate::ImportErrorKind::RivetData`] at the entry's element.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum RivetDataError {
+    /// The entry's text is not well-formed XML on its own.
+    #[error("{0}")]
+    NotXml(#[from] roxmltree::Error),
+    /// The `data` element holds no element.
+    #[error("the entry holds no element")]
+    NoElement,
+    /// The `data` element holds another element than the one its name announces.
+    #[error("expected a `{expected}` element of {RIVET_NAMESPACE}")]
+    WrongElement {
+        /// The local name the entry's kind needs (`object`, `project`, `vendor`).
+        expected: &'static str,
+    },
+    /// A required attribute of the entry's element is missing.
+    #[error("`{0}` is missing")]
+    MissingAttribute(&'static str),
+    /// An object entry's `kind` names no kind of object.
+    #[error("`{0}` is not a kind of object")]
+    UnknownKind(String),
+    /// An `st` child without the `body` attribute that says which accessor it holds.
+    #[error("an `st` without `body`")]
+    StWithoutBody,
+    /// A child of an object entry other than `toml` and `st`.
+    #[error("unexpected element `{0}`")]
+    UnexpectedElement(String),
+    /// An object entry without its `toml` child.
+    #[error("the `toml` element is missing")]
+    MissingToml,
+    /// The project entry's TOML does not describe a project's device tree and application tree.
+    #[error("{0}")]
+    ProjectToml(Box<toml::de::Error>),
+    /// An object entry of another kind than the element it stands in.
+    #[error("the entry is of a {found}, not of a {expected}")]
+    WrongKind {
+        /// The entry's `kind` attribute.
+        found: &'static str,
+        /// The kind the element it stands in needs.
+        expected: &'static str,
+    },
+    /// An object entry whose TOML is not the file of an object of its kind.
+    #[error("the {kind} '{name}': {source}")]
+    ObjectToml {
+        /// The entry's `kind` attribute.
+        kind: &'static str,
+        /// The object's name.
+        name: String,
+        /// What the TOML reader found (boxed: the TOML reader's error is large).
+        source: Box<toml::de::Error>,
+    },
+    /// An entry of a POU, data type or variable list in the project's `addData`, where only
+    /// cams, traces and watch lists stand.
+    #[error("a {0} entry stands in the project's addData")]
+    MisplacedObject(&'static str),
+}
+
 /// Reads the element of a Rivet entry from the entry's raw XML (`<data …>…</data>`): the
 /// element's attributes, its text and its children's (name, key attribute, text).
-pub(crate) fn parse_object_entry(xml: &str) -> Result<ObjectEntry, String> {
-    let document = roxmltree::Document::parse(xml).map_err(|error| error.to_string())?;
+pub(crate) fn parse_object_entry(xml: &str) -> Result<ObjectEntry, RivetDataError> {
+    let document = roxmltree::Document::parse(xml)?;
     let element = rivet_element(&document, "object")?;
-    let kind_text = element.attribute("kind").ok_or("`kind` is missing")?;
+    let kind_text = element
+        .attribute("kind")
+        .ok_or(RivetDataError::MissingAttribute("kind"))?;
     let kind = ObjectEntryKind::parse(kind_text)
-        .ok_or_else(|| format!("`{kind_text}` is not a kind of object"))?;
+        .ok_or_else(|| RivetDataError::UnknownKind(kind_text.to_owned()))?;
     let name = element
         .attribute("name")
-        .ok_or("`name` is missing")?
+        .ok_or(RivetDataError::MissingAttribute("name"))?
         .to_owned();
     let mut toml = None;
     let mut st = Vec::new();
@@ -169,35 +229,38 @@ pub(crate) fn parse_object_entry(xml: &str) -> Result<ObjectEntry, String> {
         match child.tag_name().name() {
             "toml" => toml = Some(text),
             "st" => {
-                let key = child.attribute("body").ok_or("an `st` without `body`")?;
+                let key = child
+                    .attribute("body")
+                    .ok_or(RivetDataError::StWithoutBody)?;
                 st.push((key.to_owned(), text));
             }
-            other => return Err(format!("unexpected element `{other}`")),
+            other => return Err(RivetDataError::UnexpectedElement(other.to_owned())),
         }
     }
     Ok(ObjectEntry {
         kind,
         name,
-        toml: toml.ok_or("the `toml` element is missing")?,
+        toml: toml.ok_or(RivetDataError::MissingToml)?,
         st,
     })
 }
 
 /// Reads the TOML of the project entry from its raw XML.
-pub(crate) fn parse_project_entry(xml: &str) -> Result<ProjectEntry, String> {
-    let document = roxmltree::Document::parse(xml).map_err(|error| error.to_string())?;
+pub(crate) fn parse_project_entry(xml: &str) -> Result<ProjectEntry, RivetDataError> {
+    let document = roxmltree::Document::parse(xml)?;
     let element = rivet_element(&document, "project")?;
-    toml::from_str(&child_text(element)).map_err(|error| error.to_string())
+    toml::from_str(&child_text(element))
+        .map_err(|error| RivetDataError::ProjectToml(Box::new(error)))
 }
 
 /// Reads a vendor entry kept in a `…/vendor` entry: its place and XML.
-pub(crate) fn parse_vendor_entry(xml: &str) -> Result<project_model::VendorEntry, String> {
-    let document = roxmltree::Document::parse(xml).map_err(|error| error.to_string())?;
+pub(crate) fn parse_vendor_entry(xml: &str) -> Result<project_model::VendorEntry, RivetDataError> {
+    let document = roxmltree::Document::parse(xml)?;
     let element = rivet_element(&document, "vendor")?;
     Ok(project_model::VendorEntry {
         place: element
             .attribute("place")
-            .ok_or("`place` is missing")?
+            .ok_or(RivetDataError::MissingAttribute("place"))?
             .to_owned(),
         xml: child_text(element),
     })
@@ -206,16 +269,16 @@ pub(crate) fn parse_vendor_entry(xml: &str) -> Result<project_model::VendorEntry
 /// The one element of Rivet's namespace named `name` inside an entry's `data` element.
 fn rivet_element<'a, 'input>(
     document: &'a roxmltree::Document<'input>,
-    name: &str,
-) -> Result<roxmltree::Node<'a, 'input>, String> {
+    name: &'static str,
+) -> Result<roxmltree::Node<'a, 'input>, RivetDataError> {
     let element = document
         .root_element()
         .children()
         .find(|node| node.is_element())
-        .ok_or("the entry holds no element")?;
+        .ok_or(RivetDataError::NoElement)?;
     if element.tag_name().namespace() != Some(RIVET_NAMESPACE) || element.tag_name().name() != name
     {
-        return Err(format!("expected a `{name}` element of {RIVET_NAMESPACE}"));
+        return Err(RivetDataError::WrongElement { expected: name });
     }
     Ok(element)
 }
@@ -226,4 +289,99 @@ fn child_text(node: roxmltree::Node<'_, '_>) -> String {
         .filter(|child| child.is_text())
         .filter_map(|child| child.text())
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{RivetDataError, parse_object_entry, parse_project_entry, parse_vendor_entry};
+
+    /// An entry `<data>` holding `inner`, with Rivet's namespace bound to `r`.
+    fn entry(inner: &str) -> String {
+        format!(
+            r#"<data name="n" handleUnknown="preserve" xmlns:r="https://rivet-plc.dev/plcopen/1">{inner}</data>"#
+        )
+    }
+
+    #[track_caller]
+    fn object_error(inner: &str) -> RivetDataError {
+        match parse_object_entry(&entry(inner)) {
+            Ok(parsed) => panic!("read: {parsed:?}"),
+            Err(error) => error,
+        }
+    }
+
+    #[test]
+    fn an_object_entry_reads_its_kind_name_toml_and_accessors() {
+        let parsed = parse_object_entry(&entry(
+            r#"<r:object kind="pou" name="P"><r:toml>x = 1</r:toml><r:st body="V.get">V := 1;</r:st></r:object>"#,
+        ));
+        let parsed = parsed.unwrap_or_else(|error| panic!("{error}"));
+        assert_eq!((parsed.name.as_str(), parsed.toml.as_str()), ("P", "x = 1"));
+        assert_eq!(parsed.st, [("V.get".to_owned(), "V := 1;".to_owned())]);
+    }
+
+    #[test]
+    fn each_fault_of_an_object_entry_has_its_kind_and_message() {
+        let cases = [
+            ("", RivetDataError::NoElement, "the entry holds no element"),
+            (
+                "<object/>",
+                RivetDataError::WrongElement { expected: "object" },
+                "expected a `object` element of https://rivet-plc.dev/plcopen/1",
+            ),
+            (
+                r#"<r:object name="P"/>"#,
+                RivetDataError::MissingAttribute("kind"),
+                "`kind` is missing",
+            ),
+            (
+                r#"<r:object kind="pou"/>"#,
+                RivetDataError::MissingAttribute("name"),
+                "`name` is missing",
+            ),
+            (
+                r#"<r:object kind="macro" name="P"/>"#,
+                RivetDataError::UnknownKind("macro".to_owned()),
+                "`macro` is not a kind of object",
+            ),
+            (
+                r#"<r:object kind="pou" name="P"><r:st/></r:object>"#,
+                RivetDataError::StWithoutBody,
+                "an `st` without `body`",
+            ),
+            (
+                r#"<r:object kind="pou" name="P"><r:json/></r:object>"#,
+                RivetDataError::UnexpectedElement("json".to_owned()),
+                "unexpected element `json`",
+            ),
+            (
+                r#"<r:object kind="pou" name="P"/>"#,
+                RivetDataError::MissingToml,
+                "the `toml` element is missing",
+            ),
+        ];
+        for (inner, kind, message) in cases {
+            let error = object_error(inner);
+            assert_eq!(
+                (&error, error.to_string().as_str()),
+                (&kind, message),
+                "{inner}"
+            );
+        }
+    }
+
+    #[test]
+    fn xml_that_does_not_parse_and_toml_that_does_not_read_keep_their_readers_messages() {
+        let error = object_error("<r:object>");
+        assert!(matches!(error, RivetDataError::NotXml(_)), "{error:?}");
+        let Err(error) = parse_project_entry(&entry("<r:project>name = </r:project>")) else {
+            panic!("read")
+        };
+        assert!(matches!(error, RivetDataError::ProjectToml(_)), "{error:?}");
+        assert!(error.to_string().contains("line 1"), "{error}");
+        let Err(error) = parse_vendor_entry(&entry("<r:vendor/>")) else {
+            panic!("read")
+        };
+        assert_eq!(error, RivetDataError::MissingAttribute("place"));
+    }
 }

@@ -158,6 +158,30 @@ fn a_truncated_file_gives_line_and_column_and_writes_nothing() {
 }
 
 #[test]
+fn a_50_mb_file_is_refused_from_its_size_and_writes_nothing() {
+    let temp = tempfile::tempdir().unwrap();
+    let file = temp.path().join("huge.xml");
+    // Sparse: 50 MB long without writing them; the import must refuse it from its size.
+    fs::File::create(&file)
+        .unwrap()
+        .set_len(50_000_000)
+        .unwrap();
+    let target = temp.path().join("project");
+    let output = rivet(&["import", path_str(&file), "-o", path_str(&target)]);
+    assert_eq!(output.status.code(), Some(1));
+    assert_eq!(
+        text_of(&output.stderr).trim_end(),
+        format!(
+            "{}:1:1: the file has 50000000 bytes (47.7 MiB), more than the 32 MiB a \
+             PLCopen XML file may have",
+            file.display()
+        )
+    );
+    assert!(!target.exists());
+    assert_eq!(fs::read_dir(temp.path()).unwrap().count(), 1);
+}
+
+#[test]
 fn a_folder_that_is_not_empty_is_refused_and_left_untouched() {
     let temp = tempfile::tempdir().unwrap();
     let target = temp.path().join("busy");

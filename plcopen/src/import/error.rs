@@ -59,7 +59,7 @@ pub enum ImportErrorKind {
     BadName(String),
     /// Rivet's own `addData` entry (`docs/plcopen-xml.md` §5.4) that cannot be read back.
     #[error("Rivet's data cannot be read: {0}")]
-    RivetData(String),
+    RivetData(crate::rivet_data::RivetDataError),
     /// An LD or FBD body Rivet cannot turn into networks (`docs/plcopen-xml.md` §3.6).
     #[error("{0}")]
     Network(#[from] super::network_error::NetworkError),

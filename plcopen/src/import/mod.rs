@@ -35,11 +35,15 @@ mod variables;
 mod vendor_places;
 
 #[cfg(test)]
+mod bad_input_tests;
+#[cfg(test)]
 mod cfc_tests;
 #[cfg(test)]
 pub(crate) mod corpus_tests;
 #[cfg(test)]
 mod import_tests;
+#[cfg(test)]
+mod mutation_tests;
 #[cfg(test)]
 mod network_corpus_tests;
 #[cfg(test)]

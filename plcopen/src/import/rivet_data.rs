@@ -16,8 +16,8 @@ use crate::data_type::DataTypeDecl;
 use crate::interface::VarList;
 use crate::pou::Pou as XmlPou;
 use crate::rivet_data::{
-    OBJECT_ENTRY, ObjectEntry, ObjectEntryKind, PROJECT_ENTRY, ProjectEntry, VENDOR_ENTRY,
-    parse_object_entry, parse_project_entry, parse_vendor_entry,
+    OBJECT_ENTRY, ObjectEntry, ObjectEntryKind, PROJECT_ENTRY, ProjectEntry, RivetDataError,
+    VENDOR_ENTRY, parse_object_entry, parse_project_entry, parse_vendor_entry,
 };
 
 /// The text of a body written in ST or IL.
@@ -72,7 +72,7 @@ impl Converter<'_> {
         };
         parse_project_entry(&entry.xml)
             .map(Some)
-            .map_err(|message| self.error(&place, ImportErrorKind::RivetData(message)))
+            .map_err(|error| self.error(&place, ImportErrorKind::RivetData(error)))
     }
 
     /// The object entry among `add_data`, checked to be of `kind`.
@@ -90,14 +90,13 @@ impl Converter<'_> {
             return Ok(None);
         };
         let parsed = parse_object_entry(&entry.xml)
-            .map_err(|message| self.error(place, ImportErrorKind::RivetData(message)))?;
+            .map_err(|error| self.error(place, ImportErrorKind::RivetData(error)))?;
         if parsed.kind != kind {
-            let message = format!(
-                "the entry is of a {}, not of a {}",
-                parsed.kind.as_str(),
-                kind.as_str()
-            );
-            return Err(self.error(place, ImportErrorKind::RivetData(message)));
+            let error = RivetDataError::WrongKind {
+                found: parsed.kind.as_str(),
+                expected: kind.as_str(),
+            };
+            return Err(self.error(place, ImportErrorKind::RivetData(error)));
         }
         Ok(Some(parsed))
     }
@@ -108,9 +107,13 @@ impl Converter<'_> {
         entry: &ObjectEntry,
         place: &Place,
     ) -> Result<T, ImportError> {
-        toml::from_str(&entry.toml).map_err(|error| {
-            let message = format!("the {} '{}': {error}", entry.kind.as_str(), entry.name);
-            self.error(place, ImportErrorKind::RivetData(message))
+        toml::from_str(&entry.toml).map_err(|source| {
+            let error = RivetDataError::ObjectToml {
+                kind: entry.kind.as_str(),
+                name: entry.name.clone(),
+                source: Box::new(source),
+            };
+            self.error(place, ImportErrorKind::RivetData(error))
         })
     }
 
@@ -436,7 +439,7 @@ impl Converter<'_> {
                     column: 1,
                 };
                 let kept = parse_vendor_entry(&data.xml)
-                    .map_err(|message| self.error(&place, ImportErrorKind::RivetData(message)))?;
+                    .map_err(|error| self.error(&place, ImportErrorKind::RivetData(error)))?;
                 self.project.vendor_data.entries.push(kept);
                 continue;
             }
@@ -449,7 +452,7 @@ impl Converter<'_> {
                 column: 1,
             };
             let object_entry = parse_object_entry(&data.xml)
-                .map_err(|message| self.error(&place, ImportErrorKind::RivetData(message)))?;
+                .map_err(|error| self.error(&place, ImportErrorKind::RivetData(error)))?;
             let object = match object_entry.kind {
                 ObjectEntryKind::Cam => {
                     let mut cam: project_model::CamTable =
@@ -470,11 +473,8 @@ impl Converter<'_> {
                     Object::WatchList(watch)
                 }
                 ObjectEntryKind::Pou | ObjectEntryKind::DataType | ObjectEntryKind::Gvl => {
-                    let message = format!(
-                        "a {} entry stands in the project's addData",
-                        object_entry.kind.as_str()
-                    );
-                    return Err(self.error(&place, ImportErrorKind::RivetData(message)));
+                    let error = RivetDataError::MisplacedObject(object_entry.kind.as_str());
+                    return Err(self.error(&place, ImportErrorKind::RivetData(error)));
                 }
             };
             let what = format!("{} '{}'", object_entry.kind.as_str(), object_entry.name);

@@ -66,7 +66,7 @@ fn belongs_to(node: Node<'_, '_>, language: Node<'_, '_>) -> bool {
 /// Checks that no two POUs or data types share a name (IEC names ignore case; POUs and types
 /// share one namespace).
 pub(super) fn check_names(context: &Context<'_, '_>, document: &Document) -> Read<()> {
-    let mut first_lines: HashMap<String, u32> = HashMap::new();
+    let mut first_declarations: HashMap<String, (&'static str, u32)> = HashMap::new();
     let declarations = document
         .data_types
         .iter()
@@ -78,25 +78,26 @@ pub(super) fn check_names(context: &Context<'_, '_>, document: &Document) -> Rea
                 .map(|pou| ("POU", pou.name.as_str(), pou.line)),
         );
     for (what, name, line) in declarations {
-        if let Some(first_line) = first_lines.insert(name.to_ascii_uppercase(), line) {
-            return Err(duplicate_name(context, what, name, line, first_line));
+        if let Some(first) = first_declarations.insert(name.to_ascii_uppercase(), (what, line)) {
+            return Err(duplicate_name(context, what, name, line, first));
         }
     }
     Ok(())
 }
 
 /// The error for the declaration of `name` on `line`, found by line since the document no longer
-/// has its nodes.
+/// has its nodes; `first` is what the first declaration of the name is and its line.
 fn duplicate_name(
     context: &Context<'_, '_>,
     what: &'static str,
     name: &str,
     line: u32,
-    first_line: u32,
+    (first_what, first_line): (&'static str, u32),
 ) -> ReadError {
     let kind = ReadErrorKind::DuplicateName {
         what,
         name: name.to_owned(),
+        first_what,
         first_line,
     };
     let element = if what == "POU" { "pou" } else { "dataType" };

@@ -21,6 +21,10 @@ pub(super) struct Context<'a, 'input> {
     /// Byte offset of the start of every line: roxmltree's `text_pos_at` scans from the start of
     /// the text, which made reading a 10 MB file quadratic.
     line_starts: Vec<usize>,
+    /// The number of characters before every [`CHARACTER_CHECKPOINT_BYTES`]th byte: a column
+    /// counted from the start of its line made a file written on one line quadratic (4 s for
+    /// 4.8 MB), so a column is the difference of two character indices found from here.
+    characters_before_checkpoint: Vec<usize>,
     /// The schema version, for the v1.0 upgrade rules.
     pub dialect: Dialect,
 }
@@ -41,30 +45,66 @@ impl<'a, 'input> Context<'a, 'input> {
                     .map(|(offset, _)| offset + 1),
             )
             .collect();
+        let characters_before_checkpoint = std::iter::once(0)
+            .chain(text.as_bytes().chunks(CHARACTER_CHECKPOINT_BYTES).scan(
+                0,
+                |characters, chunk| {
+                    *characters += character_starts(chunk);
+                    Some(*characters)
+                },
+            ))
+            .collect();
         Context {
             dom,
             text,
             file_name,
             line_starts,
+            characters_before_checkpoint,
             dialect,
         }
     }
 
-    /// Line and column (1-based, the column in characters) of a byte offset.
+    /// Line and column (1-based, the column in characters) of a byte offset. Takes time
+    /// bounded by twice [`CHARACTER_CHECKPOINT_BYTES`] and the logarithm of the number of
+    /// lines, however long the line is.
     fn position(&self, offset: usize) -> (u32, u32) {
+        let offset = offset.min(self.text.len());
         let line_index = self
             .line_starts
             .partition_point(|start| *start <= offset)
             .saturating_sub(1);
         let line_start = self.line_starts.get(line_index).copied().unwrap_or(0);
-        let column = self
-            .text
-            .get(line_start..offset)
-            .map_or(0, |before| before.chars().count());
+        // Most lines are short: counting their characters is cheaper than two lookups.
+        let column = if offset.saturating_sub(line_start) <= CHARACTER_CHECKPOINT_BYTES {
+            self.text
+                .as_bytes()
+                .get(line_start..offset)
+                .map_or(0, character_starts)
+        } else {
+            self.character_index(offset) - self.character_index(line_start)
+        };
         (
             u32::try_from(line_index + 1).unwrap_or(u32::MAX),
             u32::try_from(column + 1).unwrap_or(u32::MAX),
         )
+    }
+
+    /// The number of characters before byte `offset` (at most the text's length), counted from
+    /// the checkpoint before it.
+    fn character_index(&self, offset: usize) -> usize {
+        let checkpoint = offset / CHARACTER_CHECKPOINT_BYTES;
+        let checkpoint_offset = checkpoint * CHARACTER_CHECKPOINT_BYTES;
+        let before_checkpoint = self
+            .characters_before_checkpoint
+            .get(checkpoint)
+            .copied()
+            .unwrap_or(0);
+        let since_checkpoint = self
+            .text
+            .as_bytes()
+            .get(checkpoint_offset..offset)
+            .map_or(0, character_starts);
+        before_checkpoint + since_checkpoint
     }
 
     /// An error at byte `offset`, inside `node`.
@@ -327,6 +367,20 @@ impl<'a, 'input> Context<'a, 'input> {
     }
 }
 
+/// The distance in bytes between two checkpoints of [`Context`]'s character index: a position
+/// counts the characters of at most this many bytes, and the index takes 8 bytes per this many
+/// bytes of text (128 KiB for a 32 MiB file).
+const CHARACTER_CHECKPOINT_BYTES: usize = 2048;
+
+/// The number of characters that start in `bytes` of UTF-8 text: every byte but the
+/// continuation bytes (`10xxxxxx`), so a slice may begin or end inside a character.
+fn character_starts(bytes: &[u8]) -> usize {
+    bytes
+        .iter()
+        .filter(|byte| (**byte & 0b1100_0000) != 0b1000_0000)
+        .count()
+}
+
 /// The element children of a node.
 pub(super) fn elements<'a, 'input>(
     node: Node<'a, 'input>,
@@ -373,4 +427,42 @@ pub(super) fn element_path(node: Node<'_, '_>) -> String {
 /// An `xsd:decimal` (also accepting exponents, which some exporters write).
 fn parse_decimal(text: &str) -> Option<f64> {
     text.parse::<f64>().ok().filter(|value| value.is_finite())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{CHARACTER_CHECKPOINT_BYTES, Context};
+    use crate::document::Dialect;
+
+    /// Checks the position of every character of `text` (and of its end) against one counted
+    /// character by character from the start.
+    #[track_caller]
+    fn check_every_offset(text: &str) {
+        let dom = roxmltree::Document::parse(text).unwrap_or_else(|error| panic!("{error}"));
+        let context = Context::new(&dom, text, "t.xml", Dialect::V201);
+        let (mut line, mut column) = (1, 1);
+        for (offset, character) in text.char_indices() {
+            assert_eq!(context.position(offset), (line, column), "at byte {offset}");
+            if character == '\n' {
+                (line, column) = (line + 1, 1);
+            } else {
+                column += 1;
+            }
+        }
+        assert_eq!(context.position(text.len()), (line, column), "at the end");
+    }
+
+    #[test]
+    fn positions_on_a_long_line_of_several_byte_characters_count_characters() {
+        // Two- to four-byte characters straddle every checkpoint of the index.
+        let long_line = "aé中😀".repeat(CHARACTER_CHECKPOINT_BYTES / 2);
+        check_every_offset(&format!(
+            "<r>\n<a b=\"{long_line}\"/>{long_line}\n\n<c/>{long_line}</r>"
+        ));
+    }
+
+    #[test]
+    fn positions_of_short_lines_count_from_the_line_start() {
+        check_every_offset("<r>\r\n  <a/>\n\t<b>é</b>\n</r>\n");
+    }
 }

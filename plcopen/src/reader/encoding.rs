@@ -6,8 +6,9 @@ use std::borrow::Cow;
 use super::MAX_FILE_BYTES;
 use crate::error::{ReadError, ReadErrorKind};
 
-/// The error for a file over the size limit.
-pub(super) fn too_large(file_name: &str, size_bytes: usize) -> ReadError {
+/// The error for a file over the size limit; `size_bytes` is `None` when the file's size is not
+/// known (the reader stopped reading past the limit).
+pub(super) fn too_large(file_name: &str, size_bytes: Option<usize>) -> ReadError {
     ReadError {
         file: file_name.to_owned(),
         line: 1,
@@ -23,7 +24,7 @@ pub(super) fn too_large(file_name: &str, size_bytes: usize) -> ReadError {
 /// The text of a file's bytes, without a byte order mark.
 pub(super) fn decode<'b>(bytes: &'b [u8], file_name: &str) -> Result<Cow<'b, str>, ReadError> {
     if bytes.len() > MAX_FILE_BYTES {
-        return Err(too_large(file_name, bytes.len()));
+        return Err(too_large(file_name, Some(bytes.len())));
     }
     if let Some(rest) = bytes.strip_prefix(&[0xFF, 0xFE]) {
         return decode_utf16(rest, file_name, u16::from_le_bytes).map(Cow::Owned);

@@ -176,6 +176,7 @@ fn duplicate_pou_names_are_refused_ignoring_case() {
         ReadErrorKind::DuplicateName {
             what: "POU",
             name: "MAIN".to_owned(),
+            first_what: "POU",
             first_line: 6
         }
     );
@@ -234,11 +235,59 @@ fn a_file_over_the_limit_is_refused_before_parsing() {
     assert_eq!(
         error.kind,
         ReadErrorKind::TooLarge {
-            size_bytes: MAX_FILE_BYTES + 1,
+            size_bytes: Some(MAX_FILE_BYTES + 1),
             limit_bytes: MAX_FILE_BYTES
         }
     );
     assert_eq!((error.line, error.column), (1, 1));
+    assert_eq!(
+        error.to_string(),
+        "huge.xml:1:1: the file has 33554433 bytes (32.0 MiB), more than the 32 MiB a PLCopen XML \
+         file may have"
+    );
+}
+
+#[test]
+fn a_50_mb_file_is_refused_from_its_size_without_being_read() {
+    // A sparse file: 50 MB long, nothing written, so the test neither writes nor reads 50 MB.
+    let path = std::env::temp_dir().join(format!("plcopen-50mb-{}.xml", std::process::id()));
+    let file = std::fs::File::create(&path).unwrap_or_else(|error| panic!("{error}"));
+    file.set_len(50_000_000)
+        .unwrap_or_else(|error| panic!("{error}"));
+    let outcome = read_file(&path);
+    std::fs::remove_file(&path).unwrap_or_else(|error| panic!("{error}"));
+    let Err(ReadFileError::Read(error)) = outcome else {
+        panic!("{outcome:?}")
+    };
+    assert_eq!(
+        error.kind,
+        ReadErrorKind::TooLarge {
+            size_bytes: Some(50_000_000),
+            limit_bytes: MAX_FILE_BYTES
+        }
+    );
+    assert_eq!(
+        error.to_string(),
+        format!(
+            "{}:1:1: the file has 50000000 bytes (47.7 MiB), more than the 32 MiB a PLCopen XML \
+             file may have",
+            path.display()
+        )
+    );
+}
+
+#[cfg(target_os = "linux")]
+#[test]
+fn a_file_without_a_size_is_read_no_further_than_the_limit() {
+    // `/dev/zero` has no size in its metadata and never ends.
+    let outcome = read_file(std::path::Path::new("/dev/zero"));
+    let Err(ReadFileError::Read(error)) = outcome else {
+        panic!("{outcome:?}")
+    };
+    assert_eq!(
+        error.to_string(),
+        "/dev/zero:1:1: the file has more than the 32 MiB a PLCopen XML file may have"
+    );
 }
 
 #[test]

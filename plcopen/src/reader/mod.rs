@@ -44,7 +44,7 @@ pub const MAX_DEPTH: usize = 128;
 /// Reads a PLCopen XML document from text. `file_name` only names the file in errors.
 pub fn read(text: &str, file_name: &str) -> Result<Document, ReadError> {
     if text.len() > MAX_FILE_BYTES {
-        return Err(encoding::too_large(file_name, text.len()));
+        return Err(encoding::too_large(file_name, Some(text.len())));
     }
     let options = roxmltree::ParsingOptions {
         allow_dtd: false,
@@ -122,21 +122,34 @@ pub fn read_bytes(bytes: &[u8], file_name: &str) -> Result<Document, ReadError> 
 }
 
 /// Reads a PLCopen XML file; the file name in errors is the path as given. A file over
-/// [`MAX_FILE_BYTES`] is refused from its metadata, before it is read into memory.
+/// [`MAX_FILE_BYTES`] is refused from its metadata, before it is read into memory; a file whose
+/// metadata gives no size (a pipe, a device) is read up to one byte past the limit and no
+/// further, so no file makes the reader hold more than the limit.
 pub fn read_file(path: &Path) -> Result<Document, ReadFileError> {
+    use std::io::Read as _;
+
     let file_name = path.display().to_string();
     let io_error = |source| ReadFileError::Io {
         file: file_name.clone(),
         source,
     };
-    let size_bytes = std::fs::metadata(path).map_err(io_error)?.len();
+    let file = std::fs::File::open(path).map_err(io_error)?;
+    let size_bytes = file.metadata().map_err(io_error)?.len();
     let size_bytes = usize::try_from(size_bytes).unwrap_or(usize::MAX);
     if size_bytes > MAX_FILE_BYTES {
         return Err(ReadFileError::Read(encoding::too_large(
-            &file_name, size_bytes,
+            &file_name,
+            Some(size_bytes),
         )));
     }
-    let bytes = std::fs::read(path).map_err(io_error)?;
+    let limit = u64::try_from(MAX_FILE_BYTES).unwrap_or(u64::MAX);
+    let mut bytes = Vec::with_capacity(size_bytes);
+    file.take(limit + 1)
+        .read_to_end(&mut bytes)
+        .map_err(io_error)?;
+    if bytes.len() > MAX_FILE_BYTES {
+        return Err(ReadFileError::Read(encoding::too_large(&file_name, None)));
+    }
     Ok(read_bytes(&bytes, &file_name)?)
 }
 

@@ -44,6 +44,7 @@ pub(super) fn read_pou(
         match element.tag_name().name() {
             "interface" => pou.interface = Some(read_interface(context, element)?),
             "actions" => {
+                context.only_children(element, &["action"], "actions, which holds only action")?;
                 for action in children_named(element, "action") {
                     pou.actions.push(Action {
                         name: context.required(action, "name")?.to_owned(),
@@ -55,6 +56,11 @@ pub(super) fn read_pou(
                 }
             }
             "transitions" => {
+                context.only_children(
+                    element,
+                    &["transition"],
+                    "transitions, which holds only transition",
+                )?;
                 for transition in children_named(element, "transition") {
                     pou.transitions.push(Transition {
                         name: context.required(transition, "name")?.to_owned(),
@@ -148,6 +154,7 @@ pub(super) fn read_var_list(context: &Context<'_, '_>, node: Node<'_, '_>) -> Re
 }
 
 fn read_variables(context: &Context<'_, '_>, node: Node<'_, '_>) -> Read<Vec<Variable>> {
+    context.only_children(node, &["variable"], "a list of variables")?;
     let mut variables = Vec::new();
     for variable in children_named(node, "variable") {
         context.only_children(variable, &["type", "initialValue"], "a variable")?;

@@ -30,11 +30,13 @@ pub(super) fn read_project(context: &Context<'_, '_>, root: Node<'_, '_>) -> Rea
     if let Some(types) = child(root, "types") {
         context.only_children(types, &["dataTypes", "pous"], "types")?;
         if let Some(list) = child(types, "dataTypes") {
+            context.only_children(list, &["dataType"], "dataTypes, which holds only dataType")?;
             for data_type in children_named(list, "dataType") {
                 data_types.push(read_data_type_decl(context, data_type)?);
             }
         }
         if let Some(list) = child(types, "pous") {
+            context.only_children(list, &["pou"], "pous, which holds only pou")?;
             for pou in children_named(list, "pou") {
                 pous.push(read_pou(context, pou, PouLocation::Types)?);
             }
@@ -47,6 +49,11 @@ pub(super) fn read_project(context: &Context<'_, '_>, root: Node<'_, '_>) -> Rea
     if let Some(instances) = child(root, "instances")
         && let Some(list) = child(instances, "configurations")
     {
+        context.only_children(
+            list,
+            &["configuration"],
+            "configurations, which holds only configuration",
+        )?;
         for configuration in children_named(list, "configuration") {
             configurations.push(read_configuration(context, configuration, &mut pous)?);
         }
@@ -135,6 +142,11 @@ fn read_configuration(
                 .global_vars
                 .push(read_var_list(context, element)?),
             "accessVars" => {
+                context.only_children(
+                    element,
+                    &["accessVariable"],
+                    "accessVars, which holds only accessVariable",
+                )?;
                 for variable in children_named(element, "accessVariable") {
                     configuration.access_vars.push(AccessVariable {
                         alias: context.required(variable, "alias")?.to_owned(),
@@ -147,6 +159,11 @@ fn read_configuration(
                 }
             }
             "configVars" => {
+                context.only_children(
+                    element,
+                    &["configVariable"],
+                    "configVars, which holds only configVariable",
+                )?;
                 for variable in children_named(element, "configVariable") {
                     configuration.config_vars.push(ConfigVariable {
                         instance_path_and_name: context
