@@ -9,6 +9,7 @@ use super::error::fail;
 use super::expr::concrete;
 use super::layout::LayShape;
 use crate::elementary::Elementary;
+use crate::sema::signatures::iec_input_alias;
 use crate::sema::ty::Type;
 use crate::syntax::ast::{CallExpr, Expr};
 
@@ -30,12 +31,14 @@ fn time_arithmetic(name: &str) -> Option<BinaryOp> {
 fn formal_order(name: &str) -> &'static [&'static str] {
     match name {
         "LIMIT" => &["MN", "IN", "MX"],
+        "LEN" => &["STR"],
         "SEL" => &["G", "IN0", "IN1"],
         "MID" => &["STR", "LEN", "POS"],
         "LEFT" | "RIGHT" => &["STR", "SIZE"],
         "INSERT" => &["STR1", "STR2", "POS"],
         "DELETE" => &["STR", "LEN", "POS"],
-        "REPLACE" => &["STR1", "STR2", "LEN", "POS"],
+        // CODESYS names REPLACE's length and position L and P, unlike MID's and DELETE's.
+        "REPLACE" => &["STR1", "STR2", "L", "P"],
         "FIND" => &["STR1", "STR2"],
         _ => &[],
     }
@@ -54,15 +57,17 @@ impl BodyGen<'_, '_, '_> {
                 None => position,
                 Some(formal) => {
                     let upper = formal.to_ascii_uppercase();
+                    let upper = iec_input_alias(name, &upper).map_or(upper, str::to_owned);
                     if let Some(at) = order.iter().position(|f| *f == upper) {
                         at
                     } else if upper == "IN" {
                         0
                     } else if let Some(n) = upper
                         .strip_prefix("IN")
+                        .or_else(|| upper.strip_prefix("STR").filter(|_| name == "CONCAT"))
                         .and_then(|n| n.parse::<usize>().ok())
                     {
-                        // IN1, IN2…, and MUX's IN0, IN1… after K.
+                        // IN1, IN2… (CONCAT's STR1, STR2… too), and MUX's IN0, IN1… after K.
                         if name == "MUX" {
                             n + 1
                         } else {

@@ -59,6 +59,22 @@ fn extensible(inputs: &[(&str, Sig)], result: Sig) -> FunctionSig {
     }
 }
 
+/// The input name Rivet's signature of the string function `function` (upper case) gives the
+/// IEC 61131-3 input name `formal` (upper case), where the two differ: IEC names the inputs
+/// `IN`, `IN1`, `IN2`, `L` and `P` (Beremiz and matiec follow it), CODESYS `STR`, `STR1`,
+/// `STR2`, `SIZE`, `LEN` and `POS` (Rivet's names). Both spellings are accepted.
+pub(crate) fn iec_input_alias(function: &str, formal: &str) -> Option<&'static str> {
+    Some(match (function, formal) {
+        ("LEN" | "LEFT" | "RIGHT" | "MID" | "DELETE", "IN") => "STR",
+        ("LEFT" | "RIGHT", "L") => "SIZE",
+        ("MID" | "DELETE", "L") => "LEN",
+        ("MID" | "DELETE" | "INSERT", "P") => "POS",
+        ("INSERT" | "REPLACE" | "FIND", "IN1") => "STR1",
+        ("INSERT" | "REPLACE" | "FIND", "IN2") => "STR2",
+        _ => return None,
+    })
+}
+
 /// The signature of the standard function `name` (any case), conversions included.
 pub(crate) fn function(name: &str) -> Option<FunctionSig> {
     use Generic as G;

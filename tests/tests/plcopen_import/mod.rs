@@ -44,7 +44,7 @@ fn simulation_of(project: &project_model::Project) -> runtime::simulation::Simul
 
 /// The Beremiz and matiec POUs that do not check, each for a reason outside the import: the
 /// file, the POU and why.
-const BEREMIZ_AND_MATIEC_POUS_NOT_CHECKING: [(&str, &str, &str); 5] = [
+const BEREMIZ_AND_MATIEC_POUS_NOT_CHECKING: [(&str, &str, &str); 3] = [
     (
         "iec61131_lang_test",
         "main_test",
@@ -54,16 +54,6 @@ const BEREMIZ_AND_MATIEC_POUS_NOT_CHECKING: [(&str, &str, &str); 5] = [
         "svghmi_basic",
         "main_program",
         "SVGHMI's HMI_BOOL types and python_eval, Beremiz extensions",
-    ),
-    (
-        "STD_TEST",
-        "TEST_FROM_STRINGS",
-        "matiec names the string functions' inputs IN, IN1, IN2 where Rivet follows CODESYS's names",
-    ),
-    (
-        "STD_TEST",
-        "TEST_STRINGS_OPS",
-        "matiec names the string functions' inputs IN, L, P where Rivet follows CODESYS's names",
     ),
     (
         "STD_TEST",

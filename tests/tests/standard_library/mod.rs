@@ -372,6 +372,56 @@ fn cases() -> Vec<Case> {
             "n := FIND('abcabc', 'ca');",
             vec![("n", Is("3"))],
         ),
+        // The string functions by formal name: CODESYS's names (Rivet's own), and the IEC
+        // 61131-3 names Beremiz and matiec use (IN, IN1, IN2, L, P).
+        case(
+            "LEN",
+            "n : INT; m : INT;",
+            "n := LEN(STR := 'hello'); m := LEN(IN := 'hey');",
+            vec![("n", Is("5")), ("m", Is("3"))],
+        ),
+        case(
+            "LEFT",
+            "s : STRING; t : STRING;",
+            "s := LEFT(STR := 'hello', SIZE := 2); t := LEFT(L := 3, IN := 'hello');",
+            vec![("s", Is("'he'")), ("t", Is("'hel'"))],
+        ),
+        case(
+            "MID",
+            "s : STRING; t : STRING;",
+            "s := MID(STR := 'hello', LEN := 3, POS := 2); t := MID(IN := 'hello', P := 2, L := 3);",
+            vec![("s", Is("'ell'")), ("t", Is("'ell'"))],
+        ),
+        case(
+            "CONCAT",
+            "s : STRING; t : STRING;",
+            "s := CONCAT(STR1 := 'ab', STR2 := 'cd'); t := CONCAT(IN1 := 'ab', IN2 := 'cd', IN3 := 'e');",
+            vec![("s", Is("'abcd'")), ("t", Is("'abcde'"))],
+        ),
+        case(
+            "INSERT",
+            "s : STRING;",
+            "s := INSERT(IN1 := 'abc', IN2 := 'XY', P := 2);",
+            vec![("s", Is("'abXYc'"))],
+        ),
+        case(
+            "DELETE",
+            "s : STRING;",
+            "s := DELETE(IN := 'abcdef', L := 2, P := 3);",
+            vec![("s", Is("'abef'"))],
+        ),
+        case(
+            "REPLACE",
+            "s : STRING; t : STRING;",
+            "s := REPLACE(STR1 := 'abcdef', STR2 := 'XY', L := 2, P := 3); t := REPLACE(IN1 := 'abcdef', IN2 := 'XY', L := 2, P := 3);",
+            vec![("s", Is("'abXYef'")), ("t", Is("'abXYef'"))],
+        ),
+        case(
+            "FIND",
+            "n : INT; m : INT;",
+            "n := FIND(STR1 := 'abcabc', STR2 := 'ca'); m := FIND(IN2 := 'bc', IN1 := 'abcabc');",
+            vec![("n", Is("3")), ("m", Is("2"))],
+        ),
         // Time and date.
         // The clock operators on the simulated clock: the task time, which moves by the
         // implicit task's 10 ms from the first cycle (at 0) to the second and stands still

@@ -457,17 +457,22 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                 self.refuse_unwritable_place(&value, PlaceUse::ByReference);
             }
             let sig = match &formal {
-                Some(formal) => signature
-                    .inputs
-                    .iter()
-                    .find(|(n, _)| n.eq_ignore_ascii_case(formal.text()))
-                    .map(|(_, s)| *s)
-                    .or_else(|| {
-                        signature
-                            .extensible
-                            .then(|| signature.inputs.last().map(|(_, s)| *s))
-                            .flatten()
-                    }),
+                Some(formal) => {
+                    let formal_upper = formal.text().to_ascii_uppercase();
+                    let name = super::super::signatures::iec_input_alias(&upper, &formal_upper)
+                        .unwrap_or(formal_upper.as_str());
+                    signature
+                        .inputs
+                        .iter()
+                        .find(|(n, _)| n.eq_ignore_ascii_case(name))
+                        .map(|(_, s)| *s)
+                        .or_else(|| {
+                            signature
+                                .extensible
+                                .then(|| signature.inputs.last().map(|(_, s)| *s))
+                                .flatten()
+                        })
+                }
                 None => signature.inputs.get(index).map(|(_, s)| *s).or_else(|| {
                     signature
                         .extensible
