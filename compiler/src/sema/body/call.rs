@@ -459,7 +459,7 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
             let sig = match &formal {
                 Some(formal) => {
                     let formal_upper = formal.text().to_ascii_uppercase();
-                    let name = super::super::signatures::iec_input_alias(&upper, &formal_upper)
+                    let name = signatures::iec_input_alias(&upper, &formal_upper)
                         .unwrap_or(formal_upper.as_str());
                     signature
                         .inputs
