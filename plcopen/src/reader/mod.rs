@@ -144,6 +144,13 @@ pub fn read_file(path: &Path) -> Result<Document, ReadFileError> {
     }
     let limit = u64::try_from(MAX_FILE_BYTES).unwrap_or(u64::MAX);
     let mut bytes = Vec::with_capacity(size_bytes);
+    if size_bytes == 0 {
+        // A pipe or a device has no size: room for the limit up front, so that the buffer's
+        // doubling cannot take twice the limit (pages not written are not resident).
+        bytes
+            .try_reserve_exact(MAX_FILE_BYTES + 1)
+            .map_err(|_| io_error(std::io::Error::from(std::io::ErrorKind::OutOfMemory)))?;
+    }
     file.take(limit + 1)
         .read_to_end(&mut bytes)
         .map_err(io_error)?;

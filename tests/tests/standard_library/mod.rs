@@ -792,6 +792,63 @@ fn the_refused_standard_names_are_refused_with_their_code() {
     }
 }
 
+/// Calls the checker refuses with E0106, each with the message's gist: an input given twice
+/// (by its two names, or by name and position), an extensible function's input by a name it
+/// does not have.
+#[test]
+fn calls_giving_an_input_twice_or_by_an_unknown_name_are_refused() {
+    for (vars, body, gist) in [
+        (
+            "s : STRING;",
+            "s := MID(STR := 'abcdef', L := 2, LEN := 3);",
+            "'MID': LEN gives an input L already gives",
+        ),
+        (
+            "s : STRING;",
+            "s := LEFT('abc', IN := 'def');",
+            "'LEFT': IN gives an input argument 1 already gives",
+        ),
+        (
+            "s : STRING;",
+            "s := CONCAT(X := 'a', Y := 'b');",
+            "'CONCAT' has no parameter 'X'",
+        ),
+        (
+            "n : INT;",
+            "n := ADD(IN0 := 1, IN1 := 2);",
+            "'ADD' has no parameter 'IN0'",
+        ),
+        (
+            "n : INT;",
+            "n := ADD(IN1 := 1, IN1 := 2);",
+            "'ADD': IN1 gives an input IN1 already gives",
+        ),
+    ] {
+        let source = format!("PROGRAM main VAR {vars} END_VAR\n{body}\nEND_PROGRAM");
+        let project = compiler::SourceProject::new(&source);
+        let errors: Vec<(String, String)> = match compiler::compile_source(&project, "test.st") {
+            Err(compiler::CompileError::Diagnostics(found)) => found
+                .iter()
+                .filter(|d| d.diagnostic.severity == compiler::Severity::Error)
+                .map(|d| {
+                    (
+                        d.diagnostic.code.id().to_owned(),
+                        d.diagnostic.message.clone(),
+                    )
+                })
+                .collect(),
+            Ok(_) => panic!("{body}: compiled, but must be refused"),
+            Err(error) => panic!("{body}: refused by the code generator, not the checker: {error}"),
+        };
+        assert!(
+            errors
+                .iter()
+                .any(|(code, message)| code == "E0106" && message.contains(gist)),
+            "{body}: {errors:?}"
+        );
+    }
+}
+
 #[test]
 fn every_standard_name_has_a_case() {
     let covered: BTreeSet<&str> = cases()

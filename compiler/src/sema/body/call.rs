@@ -440,6 +440,7 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
         }
         // Arguments by position, or by formal name (`IN1 := …`).
         let mut typed: Vec<(Sig, Type, Expr)> = Vec::new();
+        let mut given: HashMap<usize, String> = HashMap::new();
         for (index, argument) in arguments.iter().enumerate() {
             let Some(value) = argument.value() else {
                 continue;
@@ -456,30 +457,34 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
                 self.expression(&value, Mode::Read);
                 self.refuse_unwritable_place(&value, PlaceUse::ByReference);
             }
-            let sig = match &formal {
-                Some(formal) => {
-                    let formal_upper = formal.text().to_ascii_uppercase();
-                    let name = signatures::iec_input_alias(&upper, &formal_upper)
-                        .unwrap_or(formal_upper.as_str());
-                    signature
-                        .inputs
-                        .iter()
-                        .find(|(n, _)| n.eq_ignore_ascii_case(name))
-                        .map(|(_, s)| *s)
-                        .or_else(|| {
-                            signature
-                                .extensible
-                                .then(|| signature.inputs.last().map(|(_, s)| *s))
-                                .flatten()
-                        })
+            let slot = match &formal {
+                Some(formal) => standard_input_slot(&upper, signature, formal.text()),
+                None => Some(index),
+            };
+            // An input given twice (by name and position, or by its CODESYS and IEC names)
+            // would leave another input without a value.
+            if let Some(slot) = slot {
+                let given_as = formal.as_ref().map_or_else(
+                    || format!("argument {}", index + 1),
+                    |formal| formal.text().to_owned(),
+                );
+                if let Some(earlier) = given.insert(slot, given_as.clone()) {
+                    self.error(
+                        Code::InvalidCall,
+                        range_of(argument.syntax()),
+                        format!("'{upper}': {given_as} gives an input {earlier} already gives"),
+                    );
+                    continue;
                 }
-                None => signature.inputs.get(index).map(|(_, s)| *s).or_else(|| {
+            }
+            let sig = slot.and_then(|slot| {
+                signature.inputs.get(slot).map(|(_, s)| *s).or_else(|| {
                     signature
                         .extensible
                         .then(|| signature.inputs.last().map(|(_, s)| *s))
                         .flatten()
-                }),
-            };
+                })
+            });
             match sig {
                 Some(sig) => typed.push((sig, ty, value)),
                 None => {
@@ -632,5 +637,34 @@ pub(super) fn is_place(node: &Expr) -> bool {
         Expr::NameExpr(_) | Expr::FieldExpr(_) | Expr::IndexExpr(_) | Expr::DerefExpr(_) => true,
         Expr::ParenExpr(paren) => paren.inner().is_some_and(|inner| is_place(&inner)),
         _ => false,
+    }
+}
+
+/// The position of the input the standard function `upper` (upper case) calls `formal`: by
+/// its signature's name or the IEC 61131-3 name of a string function's input
+/// ([`signatures::iec_input_alias`]), and for an extensible function `IN1`, `IN2`… (CONCAT's
+/// `STR1`, `STR2`… too; MUX's `IN0`, `IN1`… after `K`); `None` when it has no such input.
+fn standard_input_slot(upper: &str, signature: &FunctionSig, formal: &str) -> Option<usize> {
+    let formal = formal.to_ascii_uppercase();
+    let name = signatures::iec_input_alias(upper, &formal).unwrap_or(formal.as_str());
+    if let Some(slot) = signature
+        .inputs
+        .iter()
+        .position(|(input, _)| input.eq_ignore_ascii_case(name))
+    {
+        return Some(slot);
+    }
+    if !signature.extensible {
+        return None;
+    }
+    let number = name
+        .strip_prefix("IN")
+        .or_else(|| name.strip_prefix("STR").filter(|_| upper == "CONCAT"))
+        .filter(|digits| !digits.is_empty() && digits.bytes().all(|b| b.is_ascii_digit()))
+        .and_then(|digits| digits.parse::<usize>().ok())?;
+    if upper == "MUX" {
+        number.checked_add(1)
+    } else {
+        number.checked_sub(1)
     }
 }
