@@ -3,6 +3,9 @@
 
 use serde::{Deserialize, Serialize};
 
+use crate::network::NetworkOutput;
+use crate::network_walk::ElementRef;
+
 /// The vendor data of an imported PLCopen file. Saved in `plcopen.toml` beside the manifest
 /// when not empty (`docs/project-format.md` §3.1); lives as long as the project.
 #[derive(Clone, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
@@ -29,6 +32,40 @@ pub struct VendorEntry {
     pub place: String,
     /// The whole `data` element as the file had it, from `<data` to `</data>`.
     pub xml: String,
+    /// For an element's entry (`…/element:ID`), the [`element_signature`] of the element the
+    /// object became: the export writes the entry into element ID only while its signature is
+    /// the same, since an edit may give the id to another element or change the element
+    /// (`docs/plcopen-xml.md` §5.5). An element's entry without one is never written into an
+    /// element.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub signature: Option<String>,
+}
+
+impl VendorEntry {
+    /// True when this entry belongs to `element`: its recorded signature is the element's
+    /// (identifiers compare without regard to case, as in IEC 61131-3).
+    pub fn fits(&self, element: ElementRef<'_>) -> bool {
+        self.signature
+            .as_deref()
+            .is_some_and(|signature| signature.eq_ignore_ascii_case(&element_signature(element)))
+    }
+}
+
+/// What an LD or FBD element is, in a few words: its kind and what tells one of that kind from
+/// another (`block ADD`, `block TON EN` for a box with EN/ENO, `operand x`, `coil y`,
+/// `jump L`, `return`, `parallel`, `branch`). Another tool's data of an object is only written
+/// back into an element with the signature the object's element had.
+pub fn element_signature(element: ElementRef<'_>) -> String {
+    match element {
+        ElementRef::Operand(operand) => format!("operand {}", operand.text.trim()),
+        ElementRef::Parallel(_) => "parallel".to_owned(),
+        ElementRef::Block(block) if block.has_en_eno() => format!("block {} EN", block.type_name),
+        ElementRef::Block(block) => format!("block {}", block.type_name),
+        ElementRef::Output(NetworkOutput::Coil(coil)) => format!("coil {}", coil.variable.trim()),
+        ElementRef::Output(NetworkOutput::Jump { label, .. }) => format!("jump {label}"),
+        ElementRef::Output(NetworkOutput::Return { .. }) => "return".to_owned(),
+        ElementRef::Output(NetworkOutput::Branch { .. }) => "branch".to_owned(),
+    }
 }
 
 impl VendorData {
@@ -60,6 +97,7 @@ mod tests {
                 entries: vec![VendorEntry {
                     place: "pou:Main".into(),
                     xml: "<data name=\"http://www.3s-software.com/plcopenxml/objectid\" handleUnknown=\"discard\">\n  <ObjectId>832e</ObjectId>\n</data>".into(),
+                    signature: None,
                 }],
             },
             ..Project::default()
