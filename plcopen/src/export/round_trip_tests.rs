@@ -233,6 +233,26 @@ fn an_entry_whose_element_was_deleted_is_kept_in_rivets_vendor_entry() {
     );
 }
 
+#[test]
+fn the_data_of_a_wire_is_reported_not_converted() {
+    let file = "plcopen/codesys/codesys_code_execution_speedTests.xml";
+    let imported = import(&read_corpus(file)).unwrap();
+    let wires: Vec<_> = imported
+        .report
+        .entries
+        .iter()
+        .filter(|entry| entry.path.contains("/connection[@refLocalId="))
+        .collect();
+    assert!(!wires.is_empty(), "no wire's data is reported");
+    assert!(
+        wires
+            .iter()
+            .all(|entry| entry.outcome == Outcome::NotConverted
+                && entry.path.ends_with("ldbranchid']")),
+        "{wires:?}"
+    );
+}
+
 /// The id of the `addTwoIntsLadder` element that keeps CODESYS's call type, and the project.
 fn project_with_box_entry() -> (Project, u32) {
     let file = "plcopen/codesys/codesys_code_execution_speedTests.xml";
