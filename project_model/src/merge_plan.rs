@@ -1,6 +1,7 @@
 //! The merge of an imported project into an open one (`docs/plcopen-xml.md` §6.3): what it
 //! adds, what clashes with what is there, and the project that applying it gives.
 
+use crate::vendor_data::{is_place_of, vendor_prefix};
 use crate::{Folder, Node, Object, ObjectKind, Project, Task, same_identifier};
 
 /// What a merge adds or replaces, for the open project and an imported one.
@@ -272,28 +273,6 @@ impl MergePlan {
         }
         added
     }
-}
-
-/// The vendor data place of an object (`pou:NAME`, `gvl:NAME`, `type:NAME`), below which the
-/// places of its parts are; `None` for kinds vendor data never names.
-fn vendor_prefix(kind: ObjectKind, name: &str) -> Option<String> {
-    let prefix = match kind {
-        ObjectKind::Pou => "pou",
-        ObjectKind::Gvl => "gvl",
-        ObjectKind::DataType => "type",
-        ObjectKind::CamTable | ObjectKind::Trace | ObjectKind::WatchList => return None,
-    };
-    Some(format!("{prefix}:{name}"))
-}
-
-/// True when the vendor data place `place` is `object` (a [`vendor_prefix`]) or one of its
-/// parts; names compare without regard to case, as identifiers do.
-fn is_place_of(place: &str, object: &str) -> bool {
-    let Some(head) = place.get(..object.len()) else {
-        return false;
-    };
-    head.eq_ignore_ascii_case(object)
-        && (place.len() == object.len() || place[object.len()..].starts_with('/'))
 }
 
 /// The task of `open`, other than the one named `task`, that calls `program`.

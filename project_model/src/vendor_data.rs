@@ -3,6 +3,7 @@
 
 use serde::{Deserialize, Serialize};
 
+use crate::ObjectKind;
 use crate::network::NetworkOutput;
 use crate::network_walk::ElementRef;
 
@@ -74,12 +75,49 @@ impl VendorData {
         self.creation_date_time.is_none() && self.entries.is_empty()
     }
 
+    /// Moves the entries of the object `old` of `kind` (its own and its parts') to its new name
+    /// `new`, as a rename of the object does: their places name it.
+    pub fn rename_object(&mut self, kind: ObjectKind, old: &str, new: &str) {
+        let (Some(old), Some(new)) = (vendor_prefix(kind, old), vendor_prefix(kind, new)) else {
+            return;
+        };
+        for entry in &mut self.entries {
+            if is_place_of(&entry.place, &old) {
+                entry.place = format!("{new}{}", &entry.place[old.len()..]);
+            }
+        }
+        self.entries
+            .sort_by(|left, right| left.place.cmp(&right.place));
+    }
+
     /// The entries of `place`, in order.
     pub fn at<'a>(&'a self, place: &'a str) -> impl Iterator<Item = &'a VendorEntry> + 'a {
         self.entries
             .iter()
             .filter(move |entry| entry.place == place)
     }
+}
+
+/// The vendor data place of an object (`pou:NAME`, `gvl:NAME`, `type:NAME`), below which the
+/// places of its parts are; `None` for kinds vendor data never names.
+pub(crate) fn vendor_prefix(kind: ObjectKind, name: &str) -> Option<String> {
+    let prefix = match kind {
+        ObjectKind::Pou => "pou",
+        ObjectKind::Gvl => "gvl",
+        ObjectKind::DataType => "type",
+        ObjectKind::CamTable | ObjectKind::Trace | ObjectKind::WatchList => return None,
+    };
+    Some(format!("{prefix}:{name}"))
+}
+
+/// True when the vendor data place `place` is `object` (a [`vendor_prefix`]) or one of its
+/// parts; names compare without regard to case, as identifiers do.
+pub(crate) fn is_place_of(place: &str, object: &str) -> bool {
+    let Some(head) = place.get(..object.len()) else {
+        return false;
+    };
+    head.eq_ignore_ascii_case(object)
+        && (place.len() == object.len() || place[object.len()..].starts_with('/'))
 }
 
 #[cfg(test)]
@@ -134,6 +172,65 @@ mod tests {
         );
         assert!(!dir.path().join(VENDOR_DATA_FILE_NAME).exists());
         assert_eq!(load_project(dir.path()).unwrap().project, emptied);
+    }
+
+    #[test]
+    fn a_renamed_object_takes_its_entries_along_and_no_other() {
+        let entry = |place: &str| VendorEntry {
+            place: place.into(),
+            xml: "<data/>".into(),
+            signature: None,
+        };
+        let mut data = VendorData {
+            creation_date_time: None,
+            entries: vec![
+                entry("pou:Main"),
+                entry("pou:Main/body/element:3"),
+                entry("pou:MainTwo"),
+                entry("gvl:Main"),
+            ],
+        };
+        data.rename_object(ObjectKind::Pou, "main", "Cycle");
+        let places: Vec<&str> = data
+            .entries
+            .iter()
+            .map(|entry| entry.place.as_str())
+            .collect();
+        assert_eq!(
+            places,
+            [
+                "gvl:Main",
+                "pou:Cycle",
+                "pou:Cycle/body/element:3",
+                "pou:MainTwo"
+            ]
+        );
+    }
+
+    #[test]
+    fn renaming_a_list_by_an_edit_moves_its_entries_and_undo_moves_them_back() {
+        let mut project = with_vendor_data();
+        project
+            .application
+            .children
+            .push(crate::Node::Object(crate::Object::Gvl(
+                crate::GlobalVarList {
+                    name: "Main".into(),
+                    ..crate::GlobalVarList::default()
+                },
+            )));
+        project.vendor_data.entries[0].place = "gvl:Main/variable:x".into();
+        let before = project.vendor_data.clone();
+        let inverse = crate::Edit::Tree(crate::TreeEdit::Rename {
+            folder: Vec::new(),
+            index: 0,
+            name: "Cycle".into(),
+        })
+        .apply(&mut project)
+        .unwrap();
+        assert_eq!(project.vendor_data.entries[0].place, "gvl:Cycle/variable:x");
+        inverse.apply(&mut project).unwrap();
+        assert_eq!(project.vendor_data, before);
     }
 
     #[test]
