@@ -3,6 +3,7 @@
 //! half-way leaves an earlier file of that name as it was.
 
 use std::ffi::OsString;
+use std::io::Write;
 use std::path::{Path, PathBuf};
 
 /// Why a project was not exported to a file. Nothing was written; an earlier file of that name
@@ -26,26 +27,37 @@ pub enum ExportFailure {
 }
 
 /// Exports `project` (`docs/plcopen-xml.md` §5) and writes the document to `path` through a
-/// hidden sibling file (`.NAME.partial`) renamed onto it at the end. Gives the number of bytes
-/// written.
+/// new hidden sibling file of a name no other file has (`.NAME.XXXXXX.partial`), synced to disk
+/// and renamed onto `path` at the end: a file of the user's is never overwritten but `path`, and
+/// a crash leaves `path` whole (old or new), never empty. Gives the number of bytes written.
 pub fn write_export(project: &project_model::Project, path: &Path) -> Result<usize, ExportFailure> {
     let xml = plcopen::export(project)?;
     let file_name = path
         .file_name()
         .ok_or_else(|| ExportFailure::NotAFileName(path.to_owned()))?;
-    let mut temporary_name = OsString::from(".");
-    temporary_name.push(file_name);
-    temporary_name.push(".partial");
-    let temporary = path.with_file_name(temporary_name);
-    let written = std::fs::write(&temporary, &xml).and_then(|()| std::fs::rename(&temporary, path));
-    if let Err(source) = written {
-        // The temporary file is ours alone; removing it leaves the folder as it was.
-        let _ = std::fs::remove_file(&temporary);
-        return Err(ExportFailure::Write {
-            path: path.to_owned(),
-            source,
-        });
-    }
+    let folder = match path.parent() {
+        Some(parent) if !parent.as_os_str().is_empty() => parent,
+        _ => Path::new("."),
+    };
+    let mut prefix = OsString::from(".");
+    prefix.push(file_name);
+    prefix.push(".");
+    let failed = |source: std::io::Error| ExportFailure::Write {
+        path: path.to_owned(),
+        source,
+    };
+    // The temporary file removes itself when dropped, so every failure below leaves the
+    // folder as it was.
+    let mut temporary = tempfile::Builder::new()
+        .prefix(&prefix)
+        .suffix(".partial")
+        .tempfile_in(folder)
+        .map_err(failed)?;
+    temporary.write_all(&xml).map_err(failed)?;
+    temporary.as_file().sync_all().map_err(failed)?;
+    temporary
+        .persist(path)
+        .map_err(|error| failed(error.error))?;
     Ok(xml.len())
 }
 
@@ -76,6 +88,17 @@ mod tests {
             .map(|entry| entry.unwrap().file_name())
             .collect();
         assert_eq!(names, vec![OsString::from("machine.xml")]);
+    }
+
+    #[test]
+    fn a_users_file_named_like_a_partial_file_is_left_as_it_was() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("machine.xml");
+        let users = dir.path().join(".machine.xml.partial");
+        std::fs::write(&users, "mine").unwrap();
+        write_export(&example(), &path).unwrap();
+        assert_eq!(std::fs::read_to_string(&users).unwrap(), "mine");
+        assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 2);
     }
 
     #[test]

@@ -94,7 +94,16 @@ fn value_bytes(image: &ProgramImage, place: Place, text: &str) -> anyhow::Result
             u16::try_from(*length).unwrap_or(u16::MAX),
         ),
         Some(TypeDef::Enum { name, values, base }) => {
-            let value_name = text.rsplit_once('#').map_or(text, |(_, value)| value);
+            // A typed value must name this enumeration: `Other#GREEN` is not a `Light`, even
+            // when both have a GREEN.
+            let value_name = match text.rsplit_once('#') {
+                Some((type_name, value)) if type_name.trim().eq_ignore_ascii_case(name) => value,
+                Some((type_name, _)) => anyhow::bail!(
+                    "'{text}' is a value of {}, but the variable is a {name}",
+                    type_name.trim()
+                ),
+                None => text,
+            };
             let number = values
                 .iter()
                 .find(|(value, _)| value.eq_ignore_ascii_case(value_name))
@@ -148,6 +157,7 @@ END_PROGRAM
         assert_eq!(written("2:Main.speed=-1500").to_string(), "-1500");
         assert_eq!(written("3:Main.name='abc'").to_string(), "'abc'");
         assert_eq!(written("1:Main.light=Light#GREEN").to_string(), "GREEN");
+        assert_eq!(written("1:Main.light=light#green").to_string(), "GREEN");
         assert_eq!(written("1:Main.at_q=TRUE").to_string(), "TRUE");
     }
 
@@ -171,6 +181,10 @@ END_PROGRAM
         assert_eq!(
             refused("1:Main.speed=40000"),
             "--set Main.speed: 40000 is outside the range of INT"
+        );
+        assert_eq!(
+            refused("1:Main.light=Other#GREEN"),
+            "--set Main.light: 'Other#GREEN' is a value of Other, but the variable is a Light"
         );
         assert_eq!(
             refused("1:Main.light=BLUE"),

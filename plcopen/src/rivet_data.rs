@@ -263,6 +263,7 @@ pub(crate) fn parse_vendor_entry(xml: &str) -> Result<project_model::VendorEntry
             .ok_or(RivetDataError::MissingAttribute("place"))?
             .to_owned(),
         xml: child_text(element),
+        signature: element.attribute("signature").map(str::to_owned),
     })
 }
 

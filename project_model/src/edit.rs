@@ -291,7 +291,31 @@ impl Edit {
                 edit.apply(&mut project.modbus_devices)?,
             )),
             Self::Axes(edit) => Ok(Self::Axes(edit.apply(&mut project.axes)?)),
-            Self::Tree(edit) => Ok(Self::Tree(apply_tree_edit(edit, &mut project.application)?)),
+            Self::Tree(edit) => {
+                // A renamed object's vendor data follows it, as its places name it.
+                let renamed = match &edit {
+                    TreeEdit::Rename {
+                        folder,
+                        index,
+                        name,
+                    } => project
+                        .application
+                        .folder(folder)
+                        .and_then(|parent| parent.children.get(*index))
+                        .and_then(|node| match node {
+                            Node::Object(object) => {
+                                Some((object.kind(), object.name().to_owned(), name.clone()))
+                            }
+                            Node::Folder(_) => None,
+                        }),
+                    _ => None,
+                };
+                let inverse = apply_tree_edit(edit, &mut project.application)?;
+                if let Some((kind, old, new)) = renamed {
+                    project.vendor_data.rename_object(kind, &old, &new);
+                }
+                Ok(Self::Tree(inverse))
+            }
             Self::ReplaceObject(object) => replace_object(object, &mut project.application),
             Self::ReplaceProject(replacement) => Ok(Self::ReplaceProject(Box::new(
                 std::mem::replace(project, *replacement),

@@ -114,5 +114,5 @@ pub use sfc_problem::{SfcNodeKind, SfcProblem, SfcProblemKind};
 pub use task::{Task, TaskKind, Watchdog};
 pub use trace::{TraceConfig, TraceTrigger, TraceTriggerCondition, TraceVariable};
 pub use variable::{VarSection, Variable};
-pub use vendor_data::{VendorData, VendorEntry};
+pub use vendor_data::{VendorData, VendorEntry, element_signature};
 pub use watch::{WatchEntry, WatchList};

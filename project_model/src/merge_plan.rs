@@ -1,6 +1,7 @@
 //! The merge of an imported project into an open one (`docs/plcopen-xml.md` §6.3): what it
 //! adds, what clashes with what is there, and the project that applying it gives.
 
+use crate::vendor_data::{is_place_of, vendor_prefix};
 use crate::{Folder, Node, Object, ObjectKind, Project, Task, same_identifier};
 
 /// What a merge adds or replaces, for the open project and an imported one.
@@ -183,6 +184,9 @@ impl MergePlan {
     /// (the projects changed since it was made) is skipped: nothing is overwritten unasked.
     pub fn apply(&self, open: &Project, imported: &Project) -> Project {
         let mut merged = open.clone();
+        // The vendor data of what the merge takes goes with it; that of what it replaces goes.
+        let mut taken = Vec::new();
+        let mut replaced = Vec::new();
         for (path, object) in objects_with_paths(&imported.application) {
             let item = MergeItem::object(object);
             match open.application.object(object.name()) {
@@ -190,10 +194,15 @@ impl MergePlan {
                     if self.choice(&item) == Some(ClashChoice::Replace)
                         && let Some(slot) = merged.application.object_mut(existing.name())
                     {
+                        replaced.push(vendor_prefix(existing.kind(), existing.name()));
+                        taken.push(vendor_prefix(object.kind(), object.name()));
                         *slot = object.clone();
                     }
                 }
-                None => push_into(&mut merged.application, &path, object.clone()),
+                None => {
+                    taken.push(vendor_prefix(object.kind(), object.name()));
+                    push_into(&mut merged.application, &path, object.clone());
+                }
             }
         }
         for task in &imported.tasks {
@@ -207,11 +216,34 @@ impl MergePlan {
                 None => None,
             };
             let added = self.task_with_calls(open, task, &mut merged);
+            if let Some(name) = replace {
+                replaced.push(Some(format!("task:{name}")));
+            }
+            taken.push(Some(format!("task:{}", task.name)));
             match replace.and_then(|name| position_of_task(&merged.tasks, name)) {
                 Some(index) => merged.tasks[index] = added,
                 None => merged.tasks.push(added),
             }
         }
+        let replaced: Vec<String> = replaced.into_iter().flatten().collect();
+        let taken: Vec<String> = taken.into_iter().flatten().collect();
+        let entries = &mut merged.vendor_data.entries;
+        entries.retain(|entry| {
+            !replaced
+                .iter()
+                .any(|prefix| is_place_of(&entry.place, prefix))
+        });
+        entries.extend(
+            imported
+                .vendor_data
+                .entries
+                .iter()
+                .filter(|entry| taken.iter().any(|prefix| is_place_of(&entry.place, prefix)))
+                .cloned(),
+        );
+        // The vendor data is ordered by place (`VendorData::entries`); the sort is stable, so
+        // the entries of one place stay in their order.
+        entries.sort_by(|left, right| left.place.cmp(&right.place));
         merged
     }
 

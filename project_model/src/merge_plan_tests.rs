@@ -251,3 +251,57 @@ fn objects_go_into_the_folder_of_their_path_made_where_missing() {
     );
     assert_eq!(merged.application.children.len(), 3);
 }
+
+fn entry(place: &str, xml: &str) -> crate::VendorEntry {
+    crate::VendorEntry {
+        place: place.into(),
+        xml: xml.into(),
+        signature: None,
+    }
+}
+
+#[test]
+fn the_vendor_data_of_what_is_taken_comes_along_and_that_of_what_is_replaced_goes() {
+    let mut open = project(vec![list("Globals", "mine"), list("Kept", "mine")], vec![]);
+    open.vendor_data.entries = vec![
+        entry("gvl:Globals", "<data>open globals</data>"),
+        entry("gvl:Globals/variable:x", "<data>open x</data>"),
+        entry("gvl:Kept", "<data>open kept</data>"),
+    ];
+    let mut imported = project(
+        vec![
+            list("globals", "theirs"),
+            list("Kept", "theirs"),
+            list("New", "theirs"),
+        ],
+        vec![],
+    );
+    imported.vendor_data.entries = vec![
+        entry("gvl:globals", "<data>imported globals</data>"),
+        entry("gvl:Kept", "<data>imported kept</data>"),
+        entry("gvl:New/variable:y", "<data>imported y</data>"),
+        entry("gvl:Newer", "<data>of nothing merged</data>"),
+        entry("project", "<data>imported project</data>"),
+    ];
+    let mut plan = MergePlan::new(&open, &imported);
+    for clash in &mut plan.clashes {
+        if clash.imported.name() == "globals" {
+            clash.choice = ClashChoice::Replace;
+        }
+    }
+    let merged = plan.apply(&open, &imported);
+    let kept: Vec<&str> = merged
+        .vendor_data
+        .entries
+        .iter()
+        .map(|entry| entry.xml.as_str())
+        .collect();
+    assert_eq!(
+        kept,
+        [
+            "<data>open kept</data>",
+            "<data>imported y</data>",
+            "<data>imported globals</data>"
+        ]
+    );
+}

@@ -265,6 +265,23 @@ fn into_adds_what_is_new_and_skips_clashes_unless_told_to_replace() {
 }
 
 #[test]
+fn into_keeps_the_vendor_data_of_the_objects_it_adds() {
+    let temp = tempfile::tempdir().unwrap();
+    let project = temp.path().join("project");
+    import_into_new(FIRST_STEPS, &project);
+    let codesys = corpus("plcopen/codesys/codesys_code_execution_speedTests.xml");
+    let output = rivet(&["import", path_str(&codesys), "--into", path_str(&project)]);
+    assert!(output.status.success(), "{}", text_of(&output.stderr));
+    // CODESYS's call type of the ADD box of the LD POU comes along, with its element.
+    let kept = fs::read_to_string(project.join("plcopen.toml")).unwrap();
+    assert!(
+        kept.contains("place = \"pou:addTwoIntsLadder/body/element:"),
+        "{kept}"
+    );
+    assert!(kept.contains("fbdcalltype"), "{kept}");
+}
+
+#[test]
 fn export_writes_a_file_that_imports_back_into_the_same_project() {
     let temp = tempfile::tempdir().unwrap();
     let example = assets::example_project_dir();

@@ -72,7 +72,7 @@ impl ProjectWriter<'_> {
         self.xml.start("body", &[])?;
         self.xml.start(language, &[])?;
         let element_data = place
-            .map(|place| self.element_entries(place))
+            .map(|place| self.element_entries(place, networks))
             .unwrap_or_default();
         let mut graph = NetworkGraph::new(&mut self.xml, language == "LD", networks)
             .with_element_data(element_data);

@@ -233,6 +233,130 @@ fn an_entry_whose_element_was_deleted_is_kept_in_rivets_vendor_entry() {
     );
 }
 
+#[test]
+fn the_data_of_a_wire_is_reported_not_converted() {
+    let file = "plcopen/codesys/codesys_code_execution_speedTests.xml";
+    let imported = import(&read_corpus(file)).unwrap();
+    let wires: Vec<_> = imported
+        .report
+        .entries
+        .iter()
+        .filter(|entry| entry.path.contains("/connection[@refLocalId="))
+        .collect();
+    assert!(!wires.is_empty(), "no wire's data is reported");
+    assert!(
+        wires
+            .iter()
+            .all(|entry| entry.outcome == Outcome::NotConverted
+                && entry.path.ends_with("ldbranchid']")),
+        "{wires:?}"
+    );
+}
+
+/// The id of the `addTwoIntsLadder` element that keeps CODESYS's call type, and the project.
+fn project_with_box_entry() -> (Project, u32) {
+    let file = "plcopen/codesys/codesys_code_execution_speedTests.xml";
+    let project = import(&read_corpus(file)).unwrap().project;
+    let prefix = "pou:addTwoIntsLadder/body/element:";
+    let entry = project
+        .vendor_data
+        .entries
+        .iter()
+        .find(|entry| entry.place.starts_with(prefix))
+        .unwrap();
+    assert_eq!(
+        entry.signature.as_deref(),
+        Some("block ADD EN"),
+        "{entry:?}"
+    );
+    let id = entry.place[prefix.len()..].parse().unwrap();
+    (project, id)
+}
+
+/// The networks of the LD POU `name` of `project`, to edit.
+fn ld_networks<'p>(project: &'p mut Project, name: &str) -> &'p mut Vec<Network> {
+    let Some(Object::Pou(pou)) = project.application.object_mut(name) else {
+        panic!("{name} is not a POU");
+    };
+    let Body::Ld { networks } = &mut pou.body else {
+        panic!("{name} is not LD");
+    };
+    networks
+}
+
+#[test]
+fn an_entry_never_goes_into_another_element_that_took_its_id() {
+    let (mut project, id) = project_with_box_entry();
+    // An edit replaces the ADD box by a TON box with the same id.
+    let mut replaced = false;
+    for network in ld_networks(&mut project, "addTwoIntsLadder").iter_mut() {
+        for node in &mut network.rung {
+            if let FlowNode::Block(block) = node
+                && block.id.0 == id
+            {
+                block.type_name = "TON".into();
+                replaced = true;
+            }
+        }
+    }
+    assert!(replaced, "the ADD box is not in the rung");
+    let xml = export(&project).unwrap();
+    let document = read_bytes(&xml, "export.xml").unwrap();
+    let written = document
+        .pous
+        .iter()
+        .find(|written| written.name == "addTwoIntsLadder")
+        .unwrap();
+    let block = written.bodies[0]
+        .content
+        .objects()
+        .iter()
+        .find(|object| object.local_id == u64::from(id))
+        .unwrap();
+    assert!(
+        !block
+            .add_data
+            .entries
+            .iter()
+            .any(|entry| entry.xml.contains("fbdcalltype")),
+        "the ADD box's data went into the TON box"
+    );
+    // It is kept with its place and signature in Rivet's vendor entry, and comes back so.
+    let text = String::from_utf8(xml).unwrap();
+    assert!(
+        text.contains("signature=\"block ADD EN\""),
+        "not a leftover"
+    );
+    let back = import(&document).unwrap();
+    assert_eq!(back.project.vendor_data, project.vendor_data);
+}
+
+#[test]
+fn an_object_another_tool_changed_does_not_take_the_entry_of_its_id() {
+    let (project, id) = project_with_box_entry();
+    let text = String::from_utf8(export(&project).unwrap()).unwrap();
+    // Another tool turns the box of that id into a SUB box; Rivet's entry still says ADD.
+    let marker = format!("localId=\"{id}\" typeName=\"ADD\"");
+    assert!(text.contains(&marker), "the box is not written as expected");
+    let changed = text.replace(&marker, &format!("localId=\"{id}\" typeName=\"SUB\""));
+    let document = read_bytes(changed.as_bytes(), "changed.xml").unwrap();
+    let back = import(&document).unwrap();
+    let place = format!("pou:addTwoIntsLadder/body/element:{id}");
+    assert!(
+        back.project.vendor_data.at(&place).next().is_none(),
+        "{:?}",
+        back.project.vendor_data
+    );
+    assert!(
+        back.report
+            .entries
+            .iter()
+            .any(|entry| entry.outcome == Outcome::NotConverted
+                && entry.path.contains(&format!("[@localId='{id}']"))),
+        "not reported"
+    );
+}
+
 /// The objects of `expected` that `imported` holds too, each compared whole: how many were
 /// compared, and the names of those that came back changed (sorted).
 fn objects_changed(expected: &Project, imported: &Project) -> (usize, Vec<String>) {

@@ -3,6 +3,8 @@
 
 use std::collections::BTreeMap;
 
+use project_model::{ElementId, Network};
+
 use super::error::ExportError;
 use super::project_writer::ProjectWriter;
 use crate::rivet_data::{RIVET_NAMESPACE, VENDOR_ENTRY};
@@ -24,17 +26,33 @@ impl ProjectWriter<'_> {
     }
 
     /// The vendor entries of the elements of the body at `body_place` (places
-    /// `BODY/element:ID`), by element id, each entry's XML as it was.
-    pub(super) fn element_entries(&self, body_place: &str) -> BTreeMap<u64, Vec<String>> {
+    /// `BODY/element:ID`) that `networks` still hold as they were imported, by element id, each
+    /// entry's XML as it was. An entry whose element is gone or was changed (its signature is
+    /// not the element's: an edit gave the id to another element, or changed the element) is
+    /// left out, so it is written with the leftovers, never into another element (§5.5).
+    pub(super) fn element_entries(
+        &self,
+        body_place: &str,
+        networks: &[Network],
+    ) -> BTreeMap<u64, Vec<String>> {
         let prefix = format!("{body_place}/element:");
         let mut entries: BTreeMap<u64, Vec<String>> = BTreeMap::new();
         for entry in &self.project.vendor_data.entries {
-            if let Some(id) = entry
+            let Some(id) = entry
                 .place
                 .strip_prefix(&prefix)
-                .and_then(|id| id.parse::<u64>().ok())
-            {
-                entries.entry(id).or_default().push(entry.xml.clone());
+                .and_then(|id| id.parse::<u32>().ok())
+            else {
+                continue;
+            };
+            let element = networks
+                .iter()
+                .find_map(|network| network.element(ElementId(id)));
+            if element.is_some_and(|element| entry.fits(element)) {
+                entries
+                    .entry(u64::from(id))
+                    .or_default()
+                    .push(entry.xml.clone());
             }
         }
         entries
@@ -64,10 +82,13 @@ impl ProjectWriter<'_> {
                 "data",
                 &[("name", VENDOR_ENTRY), ("handleUnknown", "preserve")],
             )?;
-            self.xml.start(
-                "vendor",
-                &[("xmlns", RIVET_NAMESPACE), ("place", &entry.place)],
-            )?;
+            let mut attributes = vec![("xmlns", RIVET_NAMESPACE), ("place", entry.place.as_str())];
+            // An element's entry keeps its element's signature, so that an import of this
+            // file does not put it into another element that has its id by then.
+            if let Some(signature) = &entry.signature {
+                attributes.push(("signature", signature.as_str()));
+            }
+            self.xml.start("vendor", &attributes)?;
             self.xml.cdata(&entry.xml)?;
             self.xml.end("vendor")?;
             self.xml.end("data")?;

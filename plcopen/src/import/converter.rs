@@ -115,7 +115,7 @@ impl<'d> Converter<'d> {
     /// Keeps one entry of the element at `path` in the project's vendor data (§2.6), or reports
     /// it not converted when its XML cannot stand alone.
     pub fn keep_vendor_entry(&mut self, entry: &AddDataEntry, path: &str, line: u32) {
-        self.keep_vendor_entry_at(entry, path, line, vendor_place(path));
+        self.keep_vendor_entry_at(entry, path, line, vendor_place(path), None);
     }
 
     /// Keeps one entry of the element at `path` at `place` in the project's vendor data, or
@@ -126,6 +126,7 @@ impl<'d> Converter<'d> {
         path: &str,
         line: u32,
         place: String,
+        signature: Option<String>,
     ) {
         let what = format!("addData '{}'", entry.name);
         let entry_path = format!("{path}/addData/data[@name='{}']", entry.name);
@@ -144,6 +145,7 @@ impl<'d> Converter<'d> {
         self.project.vendor_data.entries.push(VendorEntry {
             place,
             xml: entry.xml.clone(),
+            signature,
         });
         self.report
             .push(Outcome::KeptOpaque, what, &entry_path, line, "");

@@ -5,7 +5,7 @@ use std::collections::BTreeMap;
 
 use project_model::{ElementId, FlowNode, Network, NetworkOutput};
 
-use super::converter::{Converter, Place};
+use super::converter::{Converter, Place, is_rivet_entry};
 use super::error::{ImportError, ImportErrorKind};
 use super::network_build::{BuildFailure, NetworkBuilder};
 use super::network_error::NetworkError;
@@ -15,6 +15,7 @@ use super::report::Outcome;
 use crate::add_data::AddData;
 use crate::body::{Body as XmlBody, BodyContent};
 use crate::body_object::ObjectKind;
+use crate::connection::ConnectionPointIn;
 
 /// The element id each object of a body became, by the object's `localId` (an object repeated
 /// in several places, a contact of a bridge, by its first element in tree order).
@@ -154,8 +155,55 @@ impl Converter<'_> {
                 ),
                 _ => {}
             }
+            // The data of a wire (CODESYS's `ldbranchid`) has no element to go with: the
+            // networks' wires follow from their structure, so it is listed, not kept.
+            for point in connection_points_in(&object.kind) {
+                for connection in &point.connections {
+                    for entry in &connection.add_data.entries {
+                        if is_rivet_entry(&entry.name) {
+                            continue;
+                        }
+                        let entry_path = format!(
+                            "{object_path}/connectionPointIn/connection[@refLocalId='{}']/addData/data[@name='{}']",
+                            connection.ref_local_id, entry.name
+                        );
+                        // A body read for a condition and again for its chart says it once.
+                        if !self.reported_object_data.insert(entry_path.clone()) {
+                            continue;
+                        }
+                        self.report.push(
+                            Outcome::NotConverted,
+                            format!("addData '{}'", entry.name),
+                            &entry_path,
+                            object.line,
+                            "the data of a wire: Rivet's networks rebuild their wires from the rungs, so it has nothing to go with",
+                        );
+                    }
+                }
+            }
         }
         Ok(Some(NetworkOutcome::Networks(networks, element_ids)))
+    }
+}
+
+/// The connection points of an LD or FBD object that take wires, in document order.
+fn connection_points_in(kind: &ObjectKind) -> Vec<&ConnectionPointIn> {
+    match kind {
+        ObjectKind::Block(block) => block
+            .inputs
+            .iter()
+            .chain(&block.in_outs)
+            .filter_map(|pin| pin.input.as_ref())
+            .collect(),
+        ObjectKind::RightPowerRail(rail) => rail.inputs.iter().collect(),
+        ObjectKind::OutVariable(variable) => variable.input.iter().collect(),
+        ObjectKind::InOutVariable(variable) => variable.input.iter().collect(),
+        ObjectKind::Contact(contact) => contact.input.iter().collect(),
+        ObjectKind::Coil(coil) => coil.input.iter().collect(),
+        ObjectKind::Jump(jump) => jump.input.iter().collect(),
+        ObjectKind::Return(ret) => ret.input.iter().collect(),
+        ObjectKind::Connector(connector) => connector.input.iter().collect(),
+        _ => Vec::new(),
     }
 }
 

@@ -1,6 +1,6 @@
 //! POUs with their actions, transitions and CODESYS methods → POU objects.
 
-use project_model::{Body, Method, Object, PouAction, PouKind};
+use project_model::{Body, Method, Network, Object, PouAction, PouKind, element_signature};
 
 use super::body_fault::BodyFault;
 use super::cfc_chart::{CfcDialect, fbd_graph_to_cfc};
@@ -329,7 +329,11 @@ impl Converter<'_> {
                     // they became: an inline or condition body's objects stand elsewhere.
                     let own_objects =
                         format!("{}/body/{}", at.holder.path, body.content.language());
-                    let elements = (at.objects_path == own_objects).then_some((path, &element_ids));
+                    let elements = (at.objects_path == own_objects).then_some((
+                        path,
+                        &element_ids,
+                        networks.as_slice(),
+                    ));
                     self.opaque_objects(objects, &at.objects_path, elements);
                     return Ok(Ok(match body.content {
                         BodyContent::Ld(_) => Body::Ld { networks },
@@ -468,7 +472,7 @@ impl Converter<'_> {
         &mut self,
         objects: &[crate::BodyObject],
         path: &str,
-        elements: Option<(&str, &ElementIds)>,
+        elements: Option<(&str, &ElementIds, &[Network])>,
     ) {
         for object in objects {
             let object_path = format!(
@@ -476,15 +480,27 @@ impl Converter<'_> {
                 object.kind.element_name(),
                 object.local_id
             );
-            let place = elements
-                .and_then(|(body_path, ids)| element_place(body_path, *ids.get(&object.local_id)?));
+            // The element's signature goes with the entry so that the export writes it back
+            // only into that element, not into another that took its id since (§5.5).
+            let place = elements.and_then(|(body_path, ids, networks)| {
+                let id = *ids.get(&object.local_id)?;
+                let place = element_place(body_path, id)?;
+                let element = networks.iter().find_map(|network| network.element(id))?;
+                Some((place, element_signature(element)))
+            });
             for entry in &object.add_data.entries {
                 if is_rivet_entry(&entry.name) {
                     continue;
                 }
                 match &place {
-                    Some(place) => {
-                        self.keep_vendor_entry_at(entry, &object_path, object.line, place.clone());
+                    Some((place, signature)) => {
+                        self.keep_vendor_entry_at(
+                            entry,
+                            &object_path,
+                            object.line,
+                            place.clone(),
+                            Some(signature.clone()),
+                        );
                     }
                     None => {
                         let entry_path =

@@ -1,15 +1,16 @@
 //! Rivet's own `addData` read back (`docs/plcopen-xml.md` §5.4): objects restored from their
 //! entries, the device tree and the application tree from the project entry.
 
-use std::collections::HashSet;
+use std::collections::HashMap;
 
-use project_model::{Body, ElementId, Folder, Node, Object};
+use project_model::{Body, ElementId, Folder, Node, Object, element_signature};
 
 use super::converter::is_rivet_entry;
 use super::converter::{Converter, Place};
 use super::error::{ImportError, ImportErrorKind};
 use super::network_import::ElementIds;
 use super::report::Outcome;
+use super::vendor_places::object_signature;
 use crate::add_data::AddData;
 use crate::body::{Body as XmlBody, BodyContent};
 use crate::data_type::DataTypeDecl;
@@ -246,23 +247,35 @@ impl Converter<'_> {
             });
             if has_entries {
                 // Rivet's export writes each element with its id as `localId`; the objects it
-                // adds (rails, AND and OR boxes) take ids no element has.
-                let mut ids = HashSet::new();
+                // adds (rails, AND and OR boxes) take ids no element has. Another tool may
+                // have renumbered or added objects since: an object goes with the element of
+                // its id only when it is that element (same kind, box type, operand text or
+                // coil variable); the others' entries are reported not converted.
+                let mut signatures = HashMap::new();
                 for network in networks {
                     network.for_each_element(&mut |element| {
-                        ids.insert(u64::from(element.id().0));
+                        signatures.insert(u64::from(element.id().0), element_signature(element));
                     });
                 }
                 let element_ids: ElementIds = objects
                     .iter()
-                    .filter(|object| ids.contains(&object.local_id))
+                    .filter(|object| {
+                        let element = signatures.get(&object.local_id);
+                        object_signature(object).is_some_and(|signature| {
+                            element.is_some_and(|element| signature.eq_ignore_ascii_case(element))
+                        })
+                    })
                     .filter_map(|object| {
                         let id = u32::try_from(object.local_id).ok()?;
                         Some((object.local_id, ElementId(id)))
                     })
                     .collect();
                 let objects_path = format!("{body_path}/{}", body.content.language());
-                self.opaque_objects(objects, &objects_path, Some((&body_path, &element_ids)));
+                self.opaque_objects(
+                    objects,
+                    &objects_path,
+                    Some((&body_path, &element_ids, networks.as_slice())),
+                );
             }
         }
         // The interface's entries are kept by its conversion (`rivet_pou`).

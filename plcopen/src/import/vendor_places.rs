@@ -3,6 +3,8 @@
 
 use project_model::ElementId;
 
+use crate::body_object::{BodyObject, ObjectKind};
+
 /// The place of an entry found in the element at `path`. Entries of elements the export does
 /// not write an `addData` for (a variable list, a structure's member, a method, a program
 /// instance) go to the nearest element it does: the interface, the data type, the POU, the task.
@@ -69,6 +71,32 @@ pub(super) fn element_place(body_path: &str, id: ElementId) -> Option<String> {
     let body = vendor_place(body_path);
     body.ends_with("/body")
         .then(|| format!("{body}/element:{}", id.0))
+}
+
+/// The signature (`project_model::element_signature`) of the element an object of Rivet's own
+/// export stands for, so that an object another tool renumbered or added is not taken for the
+/// element whose id it carries (§5.5); `None` for objects that stand for no one element.
+pub(super) fn object_signature(object: &BodyObject) -> Option<String> {
+    Some(match &object.kind {
+        ObjectKind::Block(block) => {
+            let has_en = block
+                .inputs
+                .first()
+                .is_some_and(|pin| pin.formal_parameter.eq_ignore_ascii_case("EN"));
+            if has_en {
+                format!("block {} EN", block.type_name)
+            } else {
+                format!("block {}", block.type_name)
+            }
+        }
+        ObjectKind::InVariable(variable) => format!("operand {}", variable.expression.trim()),
+        ObjectKind::Contact(contact) => format!("operand {}", contact.variable.trim()),
+        ObjectKind::OutVariable(variable) => format!("coil {}", variable.expression.trim()),
+        ObjectKind::Coil(coil) => format!("coil {}", coil.variable.trim()),
+        ObjectKind::Jump(jump) => format!("jump {}", jump.label),
+        ObjectKind::Return(_) => "return".to_owned(),
+        _ => return None,
+    })
 }
 
 /// The place in a global variable list: the list, or one of its variables.
