@@ -54,6 +54,20 @@ pub fn write_export(project: &project_model::Project, path: &Path) -> Result<usi
         .tempfile_in(folder)
         .map_err(failed)?;
     temporary.write_all(&xml).map_err(failed)?;
+    // A temporary file is private (0600); the export gets the permissions of the file it
+    // replaces, or those of a new file (0644, as the usual umask gives).
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt as _;
+        let permissions = std::fs::metadata(path).map_or_else(
+            |_| std::fs::Permissions::from_mode(0o644),
+            |existing| existing.permissions(),
+        );
+        temporary
+            .as_file()
+            .set_permissions(permissions)
+            .map_err(failed)?;
+    }
     temporary.as_file().sync_all().map_err(failed)?;
     temporary
         .persist(path)
@@ -66,6 +80,22 @@ mod tests {
     #![allow(clippy::unwrap_used)] // A panic is a failed test.
 
     use super::*;
+
+    #[cfg(unix)]
+    #[test]
+    fn the_export_keeps_the_permissions_of_the_file_it_replaces_or_gets_0644() {
+        use std::os::unix::fs::PermissionsExt as _;
+        let dir = tempfile::tempdir().unwrap();
+        let new = dir.path().join("new.xml");
+        write_export(&example(), &new).unwrap();
+        let mode = |path: &Path| std::fs::metadata(path).unwrap().permissions().mode() & 0o777;
+        assert_eq!(mode(&new), 0o644);
+        let old = dir.path().join("old.xml");
+        std::fs::write(&old, "earlier").unwrap();
+        std::fs::set_permissions(&old, std::fs::Permissions::from_mode(0o640)).unwrap();
+        write_export(&example(), &old).unwrap();
+        assert_eq!(mode(&old), 0o640);
+    }
 
     fn example() -> project_model::Project {
         project_model::load_project(&assets::example_project_dir())

@@ -1,6 +1,7 @@
 //! The objects of a graphical body.
 
 use crate::add_data::AddData;
+use crate::connection::ConnectionPointIn;
 use crate::fbd::{
     Block, Connector, Continuation, InOutVariable, InVariable, Jump, Label, OutVariable, Return,
     VendorElement,
@@ -101,6 +102,63 @@ pub enum ObjectKind {
 }
 
 impl ObjectKind {
+    /// The connection points through which an FBD, LD or CFC object reads others (a block's
+    /// and a vendor element's inputs and in-outs, a variable's, connector's, contact's, coil's,
+    /// jump's and return's input, a right rail's inputs), in document order; none for the
+    /// others.
+    pub fn graph_inputs(&self) -> Vec<&ConnectionPointIn> {
+        match self {
+            ObjectKind::Block(block) => block
+                .inputs
+                .iter()
+                .chain(&block.in_outs)
+                .filter_map(|pin| pin.input.as_ref())
+                .collect(),
+            ObjectKind::VendorElement(element) => element
+                .inputs
+                .iter()
+                .chain(&element.in_outs)
+                .filter_map(|pin| pin.input.as_ref())
+                .collect(),
+            ObjectKind::OutVariable(variable) => variable.input.iter().collect(),
+            ObjectKind::InOutVariable(variable) => variable.input.iter().collect(),
+            ObjectKind::Connector(connector) => connector.input.iter().collect(),
+            ObjectKind::Contact(contact) => contact.input.iter().collect(),
+            ObjectKind::Coil(coil) => coil.input.iter().collect(),
+            ObjectKind::Jump(jump) => jump.input.iter().collect(),
+            ObjectKind::Return(ret) => ret.input.iter().collect(),
+            ObjectKind::RightPowerRail(rail) => rail.inputs.iter().collect(),
+            _ => Vec::new(),
+        }
+    }
+
+    /// [`Self::graph_inputs`], to be rewired.
+    pub fn graph_inputs_mut(&mut self) -> Vec<&mut ConnectionPointIn> {
+        match self {
+            ObjectKind::Block(block) => block
+                .inputs
+                .iter_mut()
+                .chain(&mut block.in_outs)
+                .filter_map(|pin| pin.input.as_mut())
+                .collect(),
+            ObjectKind::VendorElement(element) => element
+                .inputs
+                .iter_mut()
+                .chain(&mut element.in_outs)
+                .filter_map(|pin| pin.input.as_mut())
+                .collect(),
+            ObjectKind::OutVariable(variable) => variable.input.iter_mut().collect(),
+            ObjectKind::InOutVariable(variable) => variable.input.iter_mut().collect(),
+            ObjectKind::Connector(connector) => connector.input.iter_mut().collect(),
+            ObjectKind::Contact(contact) => contact.input.iter_mut().collect(),
+            ObjectKind::Coil(coil) => coil.input.iter_mut().collect(),
+            ObjectKind::Jump(jump) => jump.input.iter_mut().collect(),
+            ObjectKind::Return(ret) => ret.input.iter_mut().collect(),
+            ObjectKind::RightPowerRail(rail) => rail.inputs.iter_mut().collect(),
+            _ => Vec::new(),
+        }
+    }
+
     /// The element name of the kind.
     pub fn element_name(&self) -> &'static str {
         match self {

@@ -228,9 +228,13 @@ impl MergePlan {
         let replaced: Vec<String> = replaced.into_iter().flatten().collect();
         let taken: Vec<String> = taken.into_iter().flatten().collect();
         let entries = &mut merged.vendor_data.entries;
+        // The open project's entries of what the import takes go: a replaced object's, and the
+        // leftovers of a deleted object whose name an added one takes (they would be written
+        // into it).
         entries.retain(|entry| {
             !replaced
                 .iter()
+                .chain(&taken)
                 .any(|prefix| is_place_of(&entry.place, prefix))
         });
         entries.extend(

@@ -267,6 +267,8 @@ fn the_vendor_data_of_what_is_taken_comes_along_and_that_of_what_is_replaced_goe
         entry("gvl:Globals", "<data>open globals</data>"),
         entry("gvl:Globals/variable:x", "<data>open x</data>"),
         entry("gvl:Kept", "<data>open kept</data>"),
+        // Left by a deleted list whose name the imported `New` takes: it must not go into it.
+        entry("gvl:New", "<data>stale new</data>"),
     ];
     let mut imported = project(
         vec![

@@ -76,11 +76,20 @@ impl VendorData {
     }
 
     /// Moves the entries of the object `old` of `kind` (its own and its parts') to its new name
-    /// `new`, as a rename of the object does: their places name it.
+    /// `new`, as a rename of the object does: their places name it. Entries already at `new`
+    /// are a deleted object's (names are unique): they move to `detached:PLACE`, a place no
+    /// object has, so they are kept as leftovers and not written into the renamed object.
     pub fn rename_object(&mut self, kind: ObjectKind, old: &str, new: &str) {
         let (Some(old), Some(new)) = (vendor_prefix(kind, old), vendor_prefix(kind, new)) else {
             return;
         };
+        // A rename that changes only the case keeps the entries where they are.
+        let same_name = old.eq_ignore_ascii_case(&new);
+        for entry in &mut self.entries {
+            if !same_name && is_place_of(&entry.place, &new) {
+                entry.place = format!("detached:{}", entry.place);
+            }
+        }
         for entry in &mut self.entries {
             if is_place_of(&entry.place, &old) {
                 entry.place = format!("{new}{}", &entry.place[old.len()..]);
@@ -204,6 +213,38 @@ mod tests {
                 "pou:Cycle/body/element:3",
                 "pou:MainTwo"
             ]
+        );
+    }
+
+    #[test]
+    fn renaming_onto_a_deleted_objects_name_detaches_its_entries() {
+        let entry = |place: &str| VendorEntry {
+            place: place.into(),
+            xml: "<data/>".into(),
+            signature: None,
+        };
+        // `pou:Old` is what a deleted POU left; `Cycle` is renamed to its name.
+        let mut data = VendorData {
+            creation_date_time: None,
+            entries: vec![entry("pou:Cycle/interface"), entry("pou:Old/interface")],
+        };
+        data.rename_object(ObjectKind::Pou, "Cycle", "Old");
+        let places: Vec<&str> = data
+            .entries
+            .iter()
+            .map(|entry| entry.place.as_str())
+            .collect();
+        assert_eq!(places, ["detached:pou:Old/interface", "pou:Old/interface"]);
+        // Back again: the renamed object's entries follow it; the detached ones stay.
+        data.rename_object(ObjectKind::Pou, "Old", "Cycle");
+        let places: Vec<&str> = data
+            .entries
+            .iter()
+            .map(|entry| entry.place.as_str())
+            .collect();
+        assert_eq!(
+            places,
+            ["detached:pou:Old/interface", "pou:Cycle/interface"]
         );
     }
 

@@ -79,9 +79,7 @@ impl ProjectWriter<'_> {
         let starts = graph.write(networks)?;
         let data_written = graph.data_written().to_vec();
         if let Some(place) = place {
-            for id in data_written {
-                self.written_places.insert(format!("{place}/element:{id}"));
-            }
+            self.mark_element_entries_written(place, networks, &data_written);
         }
         self.xml.end(language)?;
         self.xml.start("addData", &[])?;

@@ -28,8 +28,12 @@ pub(super) struct ProjectWriter<'p> {
     pub project: &'p Project,
     /// The document so far.
     pub xml: XmlWriter,
-    /// The places of the vendor data written so far (§5.5).
+    /// The places of the vendor data written so far (§5.5), but for elements' places.
     pub written_places: HashSet<String>,
+    /// The elements' entries written into their elements so far, by index in the project's
+    /// vendor data: one place may also hold entries another element had (§5.5), which go to
+    /// the leftovers.
+    pub written_element_entries: HashSet<usize>,
     /// The transition objects of the POU being written, which SFC conditions may name.
     pub transition_names: Vec<String>,
     /// What the export writes beyond PLCopen's elements.
@@ -43,6 +47,7 @@ impl<'p> ProjectWriter<'p> {
             project,
             xml: XmlWriter::new()?,
             written_places: HashSet::new(),
+            written_element_entries: HashSet::new(),
             transition_names: Vec::new(),
             options,
         })

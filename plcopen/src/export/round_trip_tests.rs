@@ -332,6 +332,62 @@ fn an_entry_never_goes_into_another_element_that_took_its_id() {
 }
 
 #[test]
+fn an_element_written_with_its_entry_keeps_another_elements_entry_of_its_id_as_a_leftover() {
+    let (mut project, id) = project_with_box_entry();
+    // The box's own entry, and one an earlier TON box of that id left.
+    let own = project
+        .vendor_data
+        .entries
+        .iter()
+        .find(|entry| entry.signature.as_deref() == Some("block ADD EN"))
+        .cloned()
+        .unwrap();
+    project
+        .vendor_data
+        .entries
+        .push(project_model::VendorEntry {
+            place: own.place.clone(),
+            xml: "<data name=\"old\" handleUnknown=\"discard\"><old/></data>".into(),
+            signature: Some("block TON EN".into()),
+        });
+    project
+        .vendor_data
+        .entries
+        .sort_by(|left, right| left.place.cmp(&right.place));
+    let xml = export(&project).unwrap();
+    let document = read_bytes(&xml, "export.xml").unwrap();
+    let written = document
+        .pous
+        .iter()
+        .find(|written| written.name == "addTwoIntsLadder")
+        .unwrap();
+    let block = written.bodies[0]
+        .content
+        .objects()
+        .iter()
+        .find(|object| object.local_id == u64::from(id))
+        .unwrap();
+    let names: Vec<&str> = block
+        .add_data
+        .entries
+        .iter()
+        .map(|entry| entry.name.as_str())
+        .collect();
+    assert!(
+        !names.contains(&"old"),
+        "the TON box's entry went into the ADD box"
+    );
+    assert!(
+        String::from_utf8(xml)
+            .unwrap()
+            .contains("signature=\"block TON EN\""),
+        "the TON box's entry was dropped"
+    );
+    let back = import(&document).unwrap();
+    assert_eq!(back.project.vendor_data, project.vendor_data);
+}
+
+#[test]
 fn an_object_another_tool_changed_does_not_take_the_entry_of_its_id() {
     let (project, id) = project_with_box_entry();
     let text = String::from_utf8(export(&project).unwrap()).unwrap();

@@ -58,6 +58,36 @@ impl ProjectWriter<'_> {
         entries
     }
 
+    /// Records which entries of the elements of the body at `body_place` went into their
+    /// elements: those of the elements in `written` (ids) that fit them, as
+    /// [`Self::element_entries`] chose them.
+    pub(super) fn mark_element_entries_written(
+        &mut self,
+        body_place: &str,
+        networks: &[Network],
+        written: &[u64],
+    ) {
+        let prefix = format!("{body_place}/element:");
+        for (index, entry) in self.project.vendor_data.entries.iter().enumerate() {
+            let Some(id) = entry
+                .place
+                .strip_prefix(&prefix)
+                .and_then(|id| id.parse::<u32>().ok())
+            else {
+                continue;
+            };
+            if !written.contains(&u64::from(id)) {
+                continue;
+            }
+            let element = networks
+                .iter()
+                .find_map(|network| network.element(ElementId(id)));
+            if element.is_some_and(|element| entry.fits(element)) {
+                self.written_element_entries.insert(index);
+            }
+        }
+    }
+
     /// Writes an `addData` with the vendor entries of `place`, when there are any.
     pub(super) fn vendor_add_data(&mut self, place: &str) -> Result<(), ExportError> {
         if !self.has_vendor_entries(place) {
@@ -74,8 +104,10 @@ impl ProjectWriter<'_> {
     pub(super) fn leftover_vendor_entries(&mut self) -> Result<(), ExportError> {
         let project = self.project;
         self.xml.context = "the vendor data".into();
-        for entry in &project.vendor_data.entries {
-            if self.written_places.contains(&entry.place) {
+        for (index, entry) in project.vendor_data.entries.iter().enumerate() {
+            if self.written_places.contains(&entry.place)
+                || self.written_element_entries.contains(&index)
+            {
                 continue;
             }
             self.xml.start(

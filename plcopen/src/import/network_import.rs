@@ -15,7 +15,6 @@ use super::report::Outcome;
 use crate::add_data::AddData;
 use crate::body::{Body as XmlBody, BodyContent};
 use crate::body_object::ObjectKind;
-use crate::connection::ConnectionPointIn;
 
 /// The element id each object of a body became, by the object's `localId` (an object repeated
 /// in several places, a contact of a bridge, by its first element in tree order).
@@ -157,7 +156,7 @@ impl Converter<'_> {
             }
             // The data of a wire (CODESYS's `ldbranchid`) has no element to go with: the
             // networks' wires follow from their structure, so it is listed, not kept.
-            for point in connection_points_in(&object.kind) {
+            for point in object.kind.graph_inputs() {
                 for connection in &point.connections {
                     for entry in &connection.add_data.entries {
                         if is_rivet_entry(&entry.name) {
@@ -183,27 +182,6 @@ impl Converter<'_> {
             }
         }
         Ok(Some(NetworkOutcome::Networks(networks, element_ids)))
-    }
-}
-
-/// The connection points of an LD or FBD object that take wires, in document order.
-fn connection_points_in(kind: &ObjectKind) -> Vec<&ConnectionPointIn> {
-    match kind {
-        ObjectKind::Block(block) => block
-            .inputs
-            .iter()
-            .chain(&block.in_outs)
-            .filter_map(|pin| pin.input.as_ref())
-            .collect(),
-        ObjectKind::RightPowerRail(rail) => rail.inputs.iter().collect(),
-        ObjectKind::OutVariable(variable) => variable.input.iter().collect(),
-        ObjectKind::InOutVariable(variable) => variable.input.iter().collect(),
-        ObjectKind::Contact(contact) => contact.input.iter().collect(),
-        ObjectKind::Coil(coil) => coil.input.iter().collect(),
-        ObjectKind::Jump(jump) => jump.input.iter().collect(),
-        ObjectKind::Return(ret) => ret.input.iter().collect(),
-        ObjectKind::Connector(connector) => connector.input.iter().collect(),
-        _ => Vec::new(),
     }
 }
 

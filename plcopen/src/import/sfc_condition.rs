@@ -367,7 +367,7 @@ impl<'o> SfcChartBuilder<'o, '_> {
                     }
                 }
             }
-            for point in graph_inputs(&object.kind) {
+            for point in object.kind.graph_inputs() {
                 for connection in &point.connections {
                     queue.push_back(connection.ref_local_id);
                 }
@@ -476,63 +476,13 @@ fn without_coils(
         .filter(|part| !matches!(part.kind, ObjectKind::Coil(_)))
         .map(|part| {
             let mut part = (*part).clone();
-            for point in graph_inputs_mut(&mut part.kind) {
+            for point in part.kind.graph_inputs_mut() {
                 point.connections = past_coils(&point.connections);
             }
             part
         })
         .collect();
     (objects, past_coils(std::slice::from_ref(connection)))
-}
-
-/// [`graph_inputs`], to be rewired.
-fn graph_inputs_mut(kind: &mut ObjectKind) -> Vec<&mut ConnectionPointIn> {
-    match kind {
-        ObjectKind::Block(block) => block
-            .inputs
-            .iter_mut()
-            .chain(&mut block.in_outs)
-            .filter_map(|pin| pin.input.as_mut())
-            .collect(),
-        ObjectKind::VendorElement(element) => element
-            .inputs
-            .iter_mut()
-            .chain(&mut element.in_outs)
-            .filter_map(|pin| pin.input.as_mut())
-            .collect(),
-        ObjectKind::OutVariable(variable) => variable.input.iter_mut().collect(),
-        ObjectKind::InOutVariable(variable) => variable.input.iter_mut().collect(),
-        ObjectKind::Connector(connector) => connector.input.iter_mut().collect(),
-        ObjectKind::Contact(contact) => contact.input.iter_mut().collect(),
-        ObjectKind::Coil(coil) => coil.input.iter_mut().collect(),
-        ObjectKind::RightPowerRail(rail) => rail.inputs.iter_mut().collect(),
-        _ => Vec::new(),
-    }
-}
-
-/// The connection points through which an FBD or LD object reads others.
-fn graph_inputs(kind: &ObjectKind) -> Vec<&ConnectionPointIn> {
-    match kind {
-        ObjectKind::Block(block) => block
-            .inputs
-            .iter()
-            .chain(&block.in_outs)
-            .filter_map(|pin| pin.input.as_ref())
-            .collect(),
-        ObjectKind::VendorElement(element) => element
-            .inputs
-            .iter()
-            .chain(&element.in_outs)
-            .filter_map(|pin| pin.input.as_ref())
-            .collect(),
-        ObjectKind::OutVariable(variable) => variable.input.iter().collect(),
-        ObjectKind::InOutVariable(variable) => variable.input.iter().collect(),
-        ObjectKind::Connector(connector) => connector.input.iter().collect(),
-        ObjectKind::Contact(contact) => contact.input.iter().collect(),
-        ObjectKind::Coil(coil) => coil.input.iter().collect(),
-        ObjectKind::RightPowerRail(rail) => rail.inputs.iter().collect(),
-        _ => Vec::new(),
-    }
 }
 
 /// The expression of an inline ST condition that is one expression (`a AND b`, `a AND b;`),
