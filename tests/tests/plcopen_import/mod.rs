@@ -42,6 +42,24 @@ fn simulation_of(project: &project_model::Project) -> runtime::simulation::Simul
     runtime::simulation::Simulation::new(image).unwrap_or_else(|error| panic!("{error}"))
 }
 
+/// Adds the POUs of the ST `source` to `project`: a test's own `Main` that calls what was
+/// imported.
+fn add_st(project: &mut project_model::Project, source: &str) {
+    let built = compiler::SourceProject::new(source).project;
+    project
+        .application
+        .children
+        .extend(built.application.children);
+}
+
+/// The value at `path` in `simulation`, as text.
+#[track_caller]
+fn value_of(simulation: &runtime::simulation::Simulation, path: &str) -> String {
+    runtime::value::read(simulation.engine(), path)
+        .unwrap_or_else(|error| panic!("{path}: {error}"))
+        .to_string()
+}
+
 /// The Beremiz and matiec POUs that do not check, each for a reason outside the import: the
 /// file, the POU and why.
 const BEREMIZ_AND_MATIEC_POUS_NOT_CHECKING: [(&str, &str, &str); 4] = [
@@ -120,8 +138,10 @@ fn first_steps_counters(cycles: u64, reset_cycle: u32) -> [String; 4] {
         |node| !matches!(node, project_model::Node::Object(object) if object.name() == "plc_prg"),
     );
     project.tasks.clear();
-    let main = compiler::SourceProject::new(&format!(
-        "PROGRAM Main
+    add_st(
+        &mut project,
+        &format!(
+            "PROGRAM Main
 VAR st : CounterST; ld : CounterLD; fbd : CounterFBD; il : CounterIL; i : INT; END_VAR
 i := i + 1;
 st(Reset := i = {reset_cycle});
@@ -130,12 +150,8 @@ fbd(Reset := i = {reset_cycle});
 il(Reset := i = {reset_cycle});
 END_PROGRAM
 "
-    ))
-    .project;
-    project
-        .application
-        .children
-        .extend(main.application.children);
+        ),
+    );
     let mut simulation = simulation_of(&project);
     simulation.run(cycles);
     assert!(simulation.faults().is_empty(), "{:?}", simulation.faults());
@@ -283,7 +299,8 @@ fn codesys_functions_drawn_in_ld_and_fbd_add_like_the_st_one() {
     });
     assert_eq!(project.application.children.len(), 3);
     project.tasks.clear();
-    let main = compiler::SourceProject::new(
+    add_st(
+        &mut project,
         "PROGRAM Main
 VAR ld, fbd, st : INT; END_VAR
 ld := addTwoIntsLadder(Int1 := 30, Int2 := 12);
@@ -291,12 +308,7 @@ fbd := addTwoIntsFBD(int1 := 30, int2 := 12);
 st := addTwoIntsST(int1 := 30, int2 := 12);
 END_PROGRAM
 ",
-    )
-    .project;
-    project
-        .application
-        .children
-        .extend(main.application.children);
+    );
     let mut simulation = simulation_of(&project);
     simulation.run(1);
     assert!(simulation.faults().is_empty(), "{:?}", simulation.faults());
@@ -346,7 +358,8 @@ fn an_imported_ld_bridge_and_set_reset_coils_run_as_their_logic_says() {
         .project;
     // Every combination of the five inputs, one per cycle; Y follows a set and b reset, the
     // reset written after the set.
-    let main = compiler::SourceProject::new(
+    add_st(
+        &mut project,
         "PROGRAM Main
 VAR fb : Bridge; i : INT; mismatches : INT; a, b, c, d, e, y : BOOL; END_VAR
 IF i < 32 THEN
@@ -362,20 +375,11 @@ IF i < 32 THEN
 END_IF;
 END_PROGRAM
 ",
-    )
-    .project;
-    project
-        .application
-        .children
-        .extend(main.application.children);
+    );
     let mut simulation = simulation_of(&project);
     simulation.run(40);
     assert!(simulation.faults().is_empty(), "{:?}", simulation.faults());
-    let read = |path: &str| {
-        runtime::value::read(simulation.engine(), path)
-            .unwrap_or_else(|error| panic!("{path}: {error}"))
-            .to_string()
-    };
+    let read = |path: &str| value_of(&simulation, path);
     assert_eq!(
         (read("Main.i"), read("Main.mismatches")),
         ("32".to_owned(), "0".to_owned())
@@ -427,27 +431,19 @@ fn another_tools_variable_read_by_two_boxes_is_read_again_by_each_after_the_earl
     let mut project = plcopen::import(&document)
         .unwrap_or_else(|error| panic!("{error}"))
         .project;
-    let main = compiler::SourceProject::new(
+    add_st(
+        &mut project,
         "PROGRAM Main
 VAR adds : TwoAdds; END_VAR
 adds();
 END_PROGRAM
 ",
-    )
-    .project;
-    project
-        .application
-        .children
-        .extend(main.application.children);
+    );
     // An INT is no power: a rung holding x with two branches after it would not check.
     let mut simulation = simulation_of(&project);
     simulation.run(3);
     assert!(simulation.faults().is_empty(), "{:?}", simulation.faults());
-    let read = |path: &str| {
-        runtime::value::read(simulation.engine(), path)
-            .unwrap_or_else(|error| panic!("{path}: {error}"))
-            .to_string()
-    };
+    let read = |path: &str| value_of(&simulation, path);
     // The lower box runs after the upper one wrote x, and reads x again: 3 + 10.
     assert_eq!(
         (read("Main.adds.x"), read("Main.adds.y")),
@@ -504,11 +500,7 @@ END_PROGRAM
     for _ in 0..10 {
         simulation.run(1);
         assert!(simulation.faults().is_empty(), "{:?}", simulation.faults());
-        let read = |path: &str| {
-            runtime::value::read(simulation.engine(), path)
-                .unwrap_or_else(|error| panic!("{path}: {error}"))
-                .to_string()
-        };
+        let read = |path: &str| value_of(&simulation, path);
         seen.push((read("Main.st_out"), read("Main.sfc_out")));
     }
     let expected = [
@@ -648,30 +640,22 @@ fn an_imported_sfc_with_an_ld_condition_and_an_inline_ld_action_runs_as_drawn() 
         .with_outcome(plcopen::Outcome::NotConverted)
         .collect();
     assert!(not_converted.is_empty(), "{not_converted:#?}");
-    let main = compiler::SourceProject::new(
+    let mut project = imported.project;
+    add_st(
+        &mut project,
         "PROGRAM Main
 VAR fb : Seq; cycle : INT; END_VAR
 cycle := cycle + 1;
 fb(go := cycle >= 3 AND cycle <= 8, enable := cycle >= 5);
 END_PROGRAM
 ",
-    )
-    .project;
-    let mut project = imported.project;
-    project
-        .application
-        .children
-        .extend(main.application.children);
+    );
     let mut simulation = simulation_of(&project);
     let mut seen = Vec::new();
     for _ in 0..12 {
         simulation.run(1);
         assert!(simulation.faults().is_empty(), "{:?}", simulation.faults());
-        let read = |path: &str| {
-            runtime::value::read(simulation.engine(), path)
-                .unwrap_or_else(|error| panic!("{path}: {error}"))
-                .to_string()
-        };
+        let read = |path: &str| value_of(&simulation, path);
         let step = if read("Main.fb.A.x") == "TRUE" {
             "A"
         } else {
@@ -738,25 +722,17 @@ fn an_imported_cfc_in_out_variable_counts_and_is_read_after_its_write() {
     let mut project = plcopen::import(&document)
         .unwrap_or_else(|error| panic!("{error}"))
         .project;
-    let main = compiler::SourceProject::new(
+    add_st(
+        &mut project,
         "PROGRAM Main
 VAR counter : Counter; END_VAR
 counter();
 END_PROGRAM
 ",
-    )
-    .project;
-    project
-        .application
-        .children
-        .extend(main.application.children);
+    );
     let mut simulation = simulation_of(&project);
     simulation.run(5);
     assert!(simulation.faults().is_empty(), "{:?}", simulation.faults());
-    let values = ["Main.counter.a", "Main.counter.b"].map(|path| {
-        runtime::value::read(simulation.engine(), path)
-            .unwrap_or_else(|error| panic!("{path}: {error}"))
-            .to_string()
-    });
+    let values = ["Main.counter.a", "Main.counter.b"].map(|path| value_of(&simulation, path));
     assert_eq!(values, ["5", "5"]);
 }
