@@ -74,7 +74,8 @@ fn f9_sets_a_breakpoint_on_the_next_statement_lists_it_and_clears_it() {
 
     // The Breakpoints pane lists it; switching it off there changes its look.
     harness.get_by_label("Debug").click();
-    harness.run();
+    // Logged in, the studio repaints every 100 ms, so `run` may never settle under load.
+    harness.run_steps(3);
     harness.get_by_label("Breakpoints").click();
     harness.step();
     harness.step();
@@ -191,7 +192,8 @@ fn flow_control_marks_the_lines_that_ran_once_switched_on() {
     let marks = harness.state().body_debug_marks(&main_target()).unwrap();
     assert!(marks.flow_lines.is_empty());
     harness.get_by_label("Debug").click();
-    harness.run();
+    // Logged in, the studio repaints every 100 ms, so `run` may never settle under load.
+    harness.run_steps(3);
     harness.get_by_label("Flow control").click();
     harness.step();
     harness.step();
@@ -301,7 +303,8 @@ fn in_the_simulator_a_breakpoint_halts_steps_go_on_a_caller_frame_opens_and_logo
     assert!(!harness.state().online().is_logged_in());
     assert!(!harness.state().debug_state().is_halted());
     harness.get_by_label("Debug").click();
-    harness.run();
+    // Logged in, the studio repaints every 100 ms, so `run` may never settle under load.
+    harness.run_steps(3);
     harness.get_by_label("Breakpoints").click();
     harness.step();
     harness.step();
@@ -331,7 +334,8 @@ fn in_the_simulator_flow_control_marks_the_lines_of_main_that_ran() {
     login_with_download(&mut harness);
     harness.key_press(Key::F5);
     harness.get_by_label("Debug").click();
-    harness.run();
+    // Logged in, the studio repaints every 100 ms, so `run` may never settle under load.
+    harness.run_steps(3);
     harness.get_by_label("Flow control").click();
     harness.step();
     // The call of fbConveyor (line 2) runs every cycle; the package count (line 15) only on a
@@ -419,7 +423,8 @@ fn in_the_simulator_flow_control_marks_the_programs_of_both_tasks() {
     login_with_download(&mut harness);
     harness.key_press(Key::F5);
     harness.get_by_label("Debug").click();
-    harness.run();
+    // Logged in, the studio repaints every 100 ms, so `run` may never settle under load.
+    harness.run_steps(3);
     harness.get_by_label("Flow control").click();
     harness.step();
     // MotionControl's editor is in front: its first line runs every cycle of MotionTask.
@@ -452,7 +457,8 @@ fn in_the_simulator_flow_while_halted_marks_the_halted_cycle_so_far() {
     login_with_download(&mut harness);
     harness.key_press(Key::F5);
     harness.get_by_label("Debug").click();
-    harness.run();
+    // Logged in, the studio repaints every 100 ms, so `run` may never settle under load.
+    harness.run_steps(3);
     harness.get_by_label("Flow control").click();
     harness.step();
     // Line 12 runs every cycle, so a complete cycle marks it.
@@ -522,7 +528,8 @@ fn in_the_simulator_a_condition_that_does_not_compile_is_named_under_its_breakpo
     let shown = |harness: &Harness<'_, StudioApp>| harness.query_all_by_label(&problem).count();
     let elsewhere = shown(&harness);
     harness.get_by_label("Debug").click();
-    harness.run();
+    // Logged in, the studio repaints every 100 ms, so `run` may never settle under load.
+    harness.run_steps(3);
     harness.get_by_label("Breakpoints").click();
     harness.step();
     harness.step();

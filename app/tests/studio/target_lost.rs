@@ -147,7 +147,8 @@ fn a_controller_without_debugging_is_named_as_such_when_asked_to_halt() {
     harness.state_mut().set_target(TargetKind::Controller);
     login_with_download(&mut harness);
     harness.get_by_label("Debug").click();
-    harness.run();
+    // Logged in, the studio repaints every 100 ms, so `run` may never settle under load.
+    harness.run_steps(3);
     harness.get_by_label_contains("Halt all").click();
     harness.step();
     harness.step();
