@@ -192,17 +192,7 @@ fn codesys_entries_of_a_box_follow_the_element_it_became() {
     // The export writes it into the object of that element, and the import puts it back.
     let xml = export(&imported.project).unwrap();
     let document = read_bytes(&xml, "export.xml").unwrap();
-    let written = document
-        .pous
-        .iter()
-        .find(|written| written.name == pou)
-        .unwrap();
-    let block = written.bodies[0]
-        .content
-        .objects()
-        .iter()
-        .find(|object| object.local_id == u64::from(id))
-        .unwrap();
+    let block = body_object(&document, pou, id);
     assert!(matches!(
         block.kind,
         crate::body_object::ObjectKind::Block(_)
@@ -284,6 +274,21 @@ fn ld_networks<'p>(project: &'p mut Project, name: &str) -> &'p mut Vec<Network>
     networks
 }
 
+/// The object of element `id` in the first body of POU `pou` of an exported `document`.
+fn body_object<'d>(document: &'d crate::Document, pou: &str, id: u32) -> &'d crate::BodyObject {
+    let written = document
+        .pous
+        .iter()
+        .find(|written| written.name == pou)
+        .unwrap();
+    written.bodies[0]
+        .content
+        .objects()
+        .iter()
+        .find(|object| object.local_id == u64::from(id))
+        .unwrap()
+}
+
 #[test]
 fn an_entry_never_goes_into_another_element_that_took_its_id() {
     let (mut project, id) = project_with_box_entry();
@@ -302,17 +307,7 @@ fn an_entry_never_goes_into_another_element_that_took_its_id() {
     assert!(replaced, "the ADD box is not in the rung");
     let xml = export(&project).unwrap();
     let document = read_bytes(&xml, "export.xml").unwrap();
-    let written = document
-        .pous
-        .iter()
-        .find(|written| written.name == "addTwoIntsLadder")
-        .unwrap();
-    let block = written.bodies[0]
-        .content
-        .objects()
-        .iter()
-        .find(|object| object.local_id == u64::from(id))
-        .unwrap();
+    let block = body_object(&document, "addTwoIntsLadder", id);
     assert!(
         !block
             .add_data
@@ -356,17 +351,7 @@ fn an_element_written_with_its_entry_keeps_another_elements_entry_of_its_id_as_a
         .sort_by(|left, right| left.place.cmp(&right.place));
     let xml = export(&project).unwrap();
     let document = read_bytes(&xml, "export.xml").unwrap();
-    let written = document
-        .pous
-        .iter()
-        .find(|written| written.name == "addTwoIntsLadder")
-        .unwrap();
-    let block = written.bodies[0]
-        .content
-        .objects()
-        .iter()
-        .find(|object| object.local_id == u64::from(id))
-        .unwrap();
+    let block = body_object(&document, "addTwoIntsLadder", id);
     let names: Vec<&str> = block
         .add_data
         .entries
