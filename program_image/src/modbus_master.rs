@@ -286,3 +286,66 @@ pub fn request_limit(direction: Direction, table: ModbusTable) -> u32 {
         (Direction::Write, false) => WRITE_REGISTERS_MAX,
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_default_silence_is_three_and_a_half_characters_up_to_19200_baud() {
+        assert_eq!(silent_interval_us(9600), 4011);
+        assert_eq!(silent_interval_us(19200), 2006);
+        assert_eq!(silent_interval_us(1200), 32084);
+        assert_eq!(silent_interval_us(38400), MIN_SILENT_INTERVAL_US);
+        assert_eq!(silent_interval_us(0), MAX_INTER_FRAME_DELAY_US);
+        let mut port = SerialPortDef {
+            name: "RS485".to_owned(),
+            device: "/dev/ttyS1".to_owned(),
+            baud_rate: 9600,
+            parity: Parity::Even,
+            data_bits: 8,
+            stop_bits: 1,
+            inter_frame_delay_us: 0,
+        };
+        assert_eq!(port.silent_interval_us(), 4011);
+        // A Delta DVP-15MC wants 5 ms, whatever the baud rate.
+        port.inter_frame_delay_us = 5000;
+        assert_eq!(port.silent_interval_us(), 5000);
+    }
+
+    #[test]
+    fn a_channel_takes_count_times_its_width_and_its_values_bytes() {
+        let mut channel = ChannelDef {
+            variable: "GVL.arValues".to_owned(),
+            table: ModbusTable::HoldingRegisters,
+            address: 0,
+            value_type: Elementary::Lreal,
+            count: 3,
+            direction: Direction::Read,
+            function_code: 3,
+            trigger: Trigger::Cyclic,
+            on_error: OnError::KeepLastValue,
+            error_flag: None,
+        };
+        assert_eq!(
+            (channel.width(), channel.span(), channel.value_bytes()),
+            (4, 12, 24)
+        );
+        channel.value_type = Elementary::Uint;
+        assert_eq!(
+            (channel.width(), channel.span(), channel.value_bytes()),
+            (1, 3, 6)
+        );
+        channel.table = ModbusTable::Coils;
+        channel.value_type = Elementary::Bool;
+        assert_eq!(
+            (channel.width(), channel.span(), channel.value_bytes()),
+            (1, 3, 3)
+        );
+        assert_eq!(request_limit(Direction::Write, ModbusTable::Coils), 1968);
+        assert_eq!(
+            request_limit(Direction::Read, ModbusTable::InputRegisters),
+            125
+        );
+    }
+}

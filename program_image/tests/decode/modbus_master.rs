@@ -359,3 +359,35 @@ fn a_malformed_master_section_is_refused_by_name() {
         other => panic!("expected a malformed section, got {other}"),
     }
 }
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(1000))]
+
+    #[test]
+    fn mutations_of_a_master_section_never_panic_and_plan_what_they_accept(
+        edits in proptest::collection::vec(
+            (proptest::prelude::any::<proptest::sample::Index>(), proptest::prelude::any::<u8>()),
+            1..6,
+        ),
+    ) {
+        let bytes = with_master().encode();
+        let mut all = sections(&bytes);
+        if let Some(master) = all.iter_mut().find(|section| section.id == 14) {
+            for (at, byte) in &edits {
+                let at = at.index(master.payload.len());
+                master.payload[at] = *byte;
+            }
+        }
+        // The verifier and the decoder see the mutated section; what they accept, the runtime
+        // plans, so planning it must not panic either.
+        if let Ok(image) = ProgramImage::decode(&container(&all))
+            && let Some(master) = &image.modbus_master
+        {
+            for device in &master.devices {
+                let requests = program_image::modbus_master::plan(device);
+                let served: usize = requests.iter().map(|r| r.channels.len()).sum();
+                proptest::prop_assert_eq!(served, device.channels.len());
+            }
+        }
+    }
+}
