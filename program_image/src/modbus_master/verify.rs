@@ -96,20 +96,20 @@ impl MasterSection {
             if let Some((field, problem)) = self.device_problem(device, task_count) {
                 return fail(field, problem);
             }
-            let channel_fail = |index: usize, field, problem| {
+            let channel_fail = |channel: usize, field, problem| {
                 Err(MasterSectionError {
                     place: MasterPlace::Channel {
                         device: device.name.clone(),
-                        number: index + 1,
-                        variable: device.channels[index].variable.clone(),
+                        number: channel + 1,
+                        variable: device.channels[channel].variable.clone(),
                     },
                     field,
                     problem,
                 })
             };
-            for (index, channel) in device.channels.iter().enumerate() {
+            for (number, channel) in device.channels.iter().enumerate() {
                 if let Some((field, problem)) = channel_problem(channel) {
-                    return channel_fail(index, field, problem);
+                    return channel_fail(number, field, problem);
                 }
             }
             if let Some((later, earlier)) = overlap(&device.channels) {
@@ -132,6 +132,14 @@ impl MasterSection {
         device: &DeviceDef,
         task_count: usize,
     ) -> Option<(&'static str, MasterProblem)> {
+        if device.name.trim().is_empty() {
+            return Some((
+                "name",
+                MasterProblem::Empty {
+                    expected: "the device's name in the project",
+                },
+            ));
+        }
         match &device.link {
             Link::Tcp { host, .. } if host.trim().is_empty() => {
                 return Some((

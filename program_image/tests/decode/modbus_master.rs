@@ -166,7 +166,7 @@ fn the_encoding_of_a_small_master_section_is_pinned() {
 
 #[test]
 fn device_refusals_name_the_device_and_the_field() {
-    let cases: [Case; 8] = [
+    let cases: [Case; 9] = [
         (
             "Modbus device 'BeltDrive', field task: index 4, but the image has 1 tasks",
             |s| s.devices[0].task = 4,
@@ -203,6 +203,10 @@ fn device_refusals_name_the_device_and_the_field() {
         (
             "Modbus device 'beltdrive', field name: 'beltdrive' is also the name of an earlier device",
             |s| s.devices[1].name = "beltdrive".to_owned(),
+        ),
+        (
+            "Modbus device '', field name: it is empty, expected the device's name in the project",
+            |s| s.devices[0].name = String::new(),
         ),
     ];
     for (expected, change) in cases {
