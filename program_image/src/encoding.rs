@@ -86,10 +86,13 @@ pub enum ImageError {
     /// The decoded image is inconsistent (a reference out of range, code that would misbehave).
     #[error("the image is inconsistent: {0}")]
     Invalid(String),
+    /// The Modbus master section is inconsistent (`docs/modbus-master.md` §5.2).
+    #[error("the image is inconsistent: {0}")]
+    ModbusMaster(#[from] crate::modbus_master::MasterSectionError),
 }
 
 /// Section ids (§3), in the order they appear.
-const SECTIONS: [(u16, &str, bool); 13] = [
+const SECTIONS: [(u16, &str, bool); 14] = [
     (1, "types", true),
     (2, "layout", true),
     (3, "initial", true),
@@ -106,6 +109,9 @@ const SECTIONS: [(u16, &str, bool); 13] = [
     (12, "motion", true),
     // Not critical: only the debugger reads it (`docs/protocol.md` §6).
     (13, "debug", false),
+    // Critical: running the program without its remote I/O would look like a working machine
+    // that does nothing.
+    (14, "modbus_master", true),
 ];
 
 const HEADER_BYTES: usize = 16;
@@ -121,7 +127,7 @@ fn payload<T: Serialize>(value: &T) -> Vec<u8> {
 impl ProgramImage {
     /// The image as bytes: header, sections, trailer.
     pub fn encode(&self) -> Vec<u8> {
-        let sections: [Vec<u8>; 13] = [
+        let sections: [Vec<u8>; 14] = [
             payload(&self.types),
             payload(&self.layout),
             payload(&self.initial),
@@ -135,17 +141,20 @@ impl ProgramImage {
             self.modbus_map.as_ref().map(payload).unwrap_or_default(),
             self.motion.as_ref().map(payload).unwrap_or_default(),
             self.debug.as_ref().map(payload).unwrap_or_default(),
+            self.modbus_master.as_ref().map(payload).unwrap_or_default(),
         ];
         let mut bytes = Vec::new();
         bytes.extend_from_slice(MAGIC);
         bytes.extend_from_slice(&FORMAT_VERSION.to_le_bytes());
         bytes.extend_from_slice(&0u16.to_le_bytes());
         // The Modbus map section is written only when the project has its own map, the motion
-        // section only when it has axes or cams, the debug section only when the compiler wrote it.
+        // section only when it has axes or cams, the debug section only when the compiler wrote it,
+        // the Modbus master section only when the project has a runtime device.
         let present = |id: u16| match id {
             11 => self.modbus_map.is_some(),
             12 => self.motion.is_some(),
             13 => self.debug.is_some(),
+            14 => self.modbus_master.is_some(),
             _ => true,
         };
         let count = SECTIONS.iter().filter(|(id, _, _)| present(*id)).count();
@@ -189,7 +198,7 @@ impl ProgramImage {
             return Err(ImageError::HashMismatch);
         }
         let count = u32::from_le_bytes([bytes[12], bytes[13], bytes[14], bytes[15]]);
-        let mut found: [Option<&[u8]>; 13] = [None; 13];
+        let mut found: [Option<&[u8]>; 14] = [None; 14];
         let mut rest = &content[HEADER_BYTES..];
         let mut last_id = 0u16;
         for _ in 0..count {
@@ -247,6 +256,10 @@ impl ProgramImage {
                 Some(body) => Some(decode_payload(SECTIONS[12].1, body)?),
                 None => None,
             },
+            modbus_master: match found[13] {
+                Some(body) => Some(decode_payload(SECTIONS[13].1, body)?),
+                None => None,
+            },
         };
         image.verify()?;
         Ok(image)
@@ -269,7 +282,7 @@ pub fn identity_of(bytes: &[u8]) -> ImageHash {
 }
 
 fn section<T: DeserializeOwned>(
-    found: &[Option<&[u8]>; 13],
+    found: &[Option<&[u8]>; 14],
     index: usize,
 ) -> Result<T, ImageError> {
     let name = SECTIONS[index].1;
@@ -278,7 +291,7 @@ fn section<T: DeserializeOwned>(
 }
 
 fn optional_section<T: DeserializeOwned + Default>(
-    found: &[Option<&[u8]>; 13],
+    found: &[Option<&[u8]>; 14],
     index: usize,
 ) -> Result<T, ImageError> {
     match found[index] {

@@ -36,6 +36,9 @@ pub struct ProgramImage {
     /// What the debugger needs beyond the code (frame variables, source hashes); `None`
     /// when the compiler wrote none. The runtime never needs it.
     pub debug: Option<crate::debug::DebugInfo>,
+    /// The devices the runtime masters over Modbus TCP and RTU, with their serial ports
+    /// (`docs/modbus-master.md` §5); `None` when the project has no device with an I/O task.
+    pub modbus_master: Option<crate::modbus_master::MasterSection>,
 }
 
 /// A Modbus table.

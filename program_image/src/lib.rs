@@ -9,8 +9,9 @@
 //! [`ProgramImage::decode`] implement its container, [`ProgramImage::verify`] its load-time
 //! checks, [`code`] its instructions and [`std_blocks`] the instance layouts of the standard
 //! function blocks; [`DebugInfo`] is the optional debug section, [`BreakCondition`] a
-//! breakpoint's compiled condition with [`ProgramImage::verify_condition`], and
-//! [`ProgramImage::instance_path`] names an instance by its address.
+//! breakpoint's compiled condition with [`ProgramImage::verify_condition`],
+//! [`ProgramImage::instance_path`] names an instance by its address, and [`modbus_master`] is the
+//! section of the devices the runtime masters over Modbus, with their request plan and value codec.
 
 pub mod code;
 mod condition;
@@ -20,6 +21,7 @@ mod encoding;
 mod image;
 mod instance_path;
 mod listing;
+pub mod modbus_master;
 pub mod motion;
 pub mod std_blocks;
 mod types;

@@ -95,6 +95,9 @@ impl ProgramImage {
         self.verify_initial()?;
         self.verify_motion()?;
         self.verify_debug()?;
+        if let Some(master) = &self.modbus_master {
+            master.verify(self.tasks.len())?;
+        }
         for (index, symbol) in self.symbols.iter().enumerate() {
             let Some(ty) = self.types.get(symbol.ty as usize) else {
                 return invalid(format!("symbol {} ('{}') has no type", index, symbol.path));

@@ -14,6 +14,9 @@ use program_image::{
 use proptest::prelude::*;
 use sha2::{Digest, Sha256};
 
+#[path = "decode/modbus_master.rs"]
+mod modbus_master;
+
 /// A small image of every section: a program `main` that adds two DINTs in a loop and calls a
 /// function, one task, a retained variable and a line table.
 fn small_image() -> ProgramImage {
@@ -199,6 +202,7 @@ fn small_image() -> ProgramImage {
         }]),
         motion: None,
         debug: None,
+        modbus_master: None,
     }
 }
 

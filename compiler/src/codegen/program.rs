@@ -667,6 +667,8 @@ pub(crate) fn build_image(
         modbus_map,
         motion: devices.section,
         debug: Some(program_image::DebugInfo { pous: debug_pous }),
+        // The compiler writes no runtime Modbus device yet (issue 19, wave 2).
+        modbus_master: None,
     };
     image.verify().map_err(CodegenError::InvalidImage)?;
     Ok(image)
