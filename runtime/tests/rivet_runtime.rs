@@ -31,6 +31,7 @@ use program_image::{
 use tokio_modbus::client::{Context, Reader, Writer};
 
 mod peers;
+mod rtu;
 
 use peers::{python_with_pymodbus, required_program, run};
 

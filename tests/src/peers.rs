@@ -1,5 +1,6 @@
 //! Independent Modbus clients for the end-to-end tests: mbpoll and pymodbus, system packages
-//! that `scripts/test.sh` installs. Without them the tests that use them fail and say so.
+//! that `scripts/test.sh` installs, and socat's virtual serial cables ([`SocatPair`]).
+//! Without them the tests that use them fail and say so.
 
 use std::process::Command;
 
@@ -12,7 +13,8 @@ pub fn required_program(name: &str) -> String {
         .unwrap_or_else(|error| panic!("cannot run sh to look for {name}: {error}"));
     assert!(
         found.status.success(),
-        "{name} is not installed: run scripts/test.sh, which installs mbpoll and python3-pymodbus"
+        "{name} is not installed: run scripts/test.sh, which installs mbpoll, python3-pymodbus and \
+         socat"
     );
     String::from_utf8_lossy(&found.stdout).trim().to_owned()
 }
@@ -55,4 +57,97 @@ pub fn run(program: &str, args: &[String]) -> String {
         String::from_utf8_lossy(&output.stderr)
     );
     stdout
+}
+
+/// A virtual serial cable: socat joining two pseudo-terminals under the names `master` and
+/// `slave` in a directory the test chooses (`socat pty,raw,echo=0,link=DIR/master
+/// pty,raw,echo=0,link=DIR/slave`).
+///
+/// Bytes written to one end are read at the other. [`SocatPair::kill`] is a pulled cable: the
+/// names go, and a port open on either end reads end of file and fails to write;
+/// [`SocatPair::restart`] makes new pseudo-terminals under the same names, as a USB adapter
+/// that comes back. This machine's kernel refuses parity and 7 data bits on a pseudo-terminal,
+/// so the lines are 8N1 or 8N2. Dropping the pair ends socat.
+pub struct SocatPair {
+    /// The end a master (mbpoll, the runtime's master) opens.
+    pub master: std::path::PathBuf,
+    /// The end a slave (the runtime's RTU slave, pymodbus's RTU server) opens.
+    pub slave: std::path::PathBuf,
+    /// The running socat, while the cable is plugged in.
+    socat: Option<std::process::Child>,
+}
+
+/// How long socat may take to make its pseudo-terminals or to end.
+const SOCAT_PATIENCE: std::time::Duration = std::time::Duration::from_secs(5);
+
+impl SocatPair {
+    /// Starts socat with the two names in `dir` and waits until both exist; panics, saying how to
+    /// install socat, when it is missing.
+    #[track_caller]
+    pub fn start(dir: &std::path::Path) -> Self {
+        let mut pair = Self {
+            master: dir.join("master"),
+            slave: dir.join("slave"),
+            socat: None,
+        };
+        pair.restart();
+        pair
+    }
+
+    /// Starts socat again (after [`SocatPair::kill`]) under the same names, and waits until
+    /// they exist.
+    #[track_caller]
+    pub fn restart(&mut self) {
+        self.kill();
+        let socat = required_program("socat");
+        let end = |path: &std::path::Path| format!("pty,raw,echo=0,link={}", path.display());
+        let child = Command::new(socat)
+            .args([end(&self.master), end(&self.slave)])
+            .stdin(std::process::Stdio::null())
+            .stdout(std::process::Stdio::null())
+            .stderr(std::process::Stdio::null())
+            .spawn()
+            .unwrap_or_else(|error| panic!("cannot start socat: {error}"));
+        self.socat = Some(child);
+        let deadline = std::time::Instant::now() + SOCAT_PATIENCE;
+        while !(self.master.exists() && self.slave.exists()) {
+            assert!(
+                std::time::Instant::now() < deadline,
+                "socat made no pseudo-terminals at {} and {}",
+                self.master.display(),
+                self.slave.display()
+            );
+            std::thread::sleep(std::time::Duration::from_millis(5));
+        }
+    }
+
+    /// Ends socat (SIGTERM, so it removes its names) and waits until it has; does nothing when
+    /// it is not running.
+    pub fn kill(&mut self) {
+        let Some(mut child) = self.socat.take() else {
+            return;
+        };
+        let terminated = Command::new("kill")
+            .args(["-TERM", &child.id().to_string()])
+            .status()
+            .is_ok_and(|status| status.success());
+        let deadline = std::time::Instant::now() + SOCAT_PATIENCE;
+        while terminated && std::time::Instant::now() < deadline {
+            if matches!(child.try_wait(), Ok(Some(_))) {
+                break;
+            }
+            std::thread::sleep(std::time::Duration::from_millis(5));
+        }
+        // A socat that ignored SIGTERM is killed outright, which leaves its names behind.
+        let _ = child.kill();
+        let _ = child.wait();
+        let _ = std::fs::remove_file(&self.master);
+        let _ = std::fs::remove_file(&self.slave);
+    }
+}
+
+impl Drop for SocatPair {
+    fn drop(&mut self) {
+        self.kill();
+    }
 }
