@@ -7,6 +7,7 @@ use runtime::serial::{SerialSettings, open_port};
 use tokio::io::{AsyncReadExt, AsyncWriteExt};
 
 use crate::peers::SocatPair;
+use crate::rtu::open_when_free;
 
 /// How long a byte may take to cross the cable before the test gives up.
 const CROSSING: Duration = Duration::from_secs(5);
@@ -16,9 +17,8 @@ async fn both_ends_of_a_socat_pair_open_8n1_and_8n2_and_carry_bytes_both_ways() 
     let dir = tempfile::tempdir().unwrap();
     let cable = SocatPair::start(dir.path());
     for format in ["19200-8N1", "9600-8N2", "115200-8N1"] {
-        let settings: SerialSettings = format.parse().unwrap();
-        let mut master = open_port(&cable.master, &settings).unwrap();
-        let mut slave = open_port(&cable.slave, &settings).unwrap();
+        let mut master = open_when_free(&cable.master, format);
+        let mut slave = open_when_free(&cable.slave, format);
         master.write_all(b"\x01\x03\x00\x00").await.unwrap();
         let mut received = [0; 4];
         tokio::time::timeout(CROSSING, slave.read_exact(&mut received))
@@ -41,7 +41,7 @@ async fn an_open_port_is_exclusive_and_a_pulled_cable_reads_end_of_file() {
     let dir = tempfile::tempdir().unwrap();
     let mut cable = SocatPair::start(dir.path());
     let settings: SerialSettings = "19200-8N1".parse().unwrap();
-    let mut slave = open_port(&cable.slave, &settings).unwrap();
+    let mut slave = open_when_free(&cable.slave, "19200-8N1");
     let second = open_port(&cable.slave, &settings).unwrap_err();
     assert!(
         second
@@ -57,5 +57,5 @@ async fn an_open_port_is_exclusive_and_a_pulled_cable_reads_end_of_file() {
         .unwrap();
     assert!(matches!(read, Ok(0) | Err(_)), "{read:?}");
     cable.restart();
-    open_port(&cable.slave, &settings).unwrap();
+    open_when_free(&cable.slave, "19200-8N1");
 }
