@@ -11,7 +11,7 @@
 mod shared;
 
 #[allow(unused_imports)]
-pub use shared::{SocatPair, python_with_pymodbus, required_program};
+pub use shared::{PymodbusServer, SocatPair, python_with_pymodbus, required_program};
 
 /// Runs a program to its end off the async workers and returns its standard output, or fails
 /// with everything it said.

@@ -1,7 +1,9 @@
 //! Modbus RTU over socat's virtual serial cables (`peers::SocatPair`, 8N1 and 8N2: this
-//! machine's pseudo-terminals refuse parity): the runtime's serial ports, and
-//! `rivet-runtime --modbus-rtu` as a slave to mbpoll (`docs/modbus-master.md` §7, §10 test 4).
+//! machine's pseudo-terminals refuse parity): the runtime's serial ports,
+//! `rivet-runtime --modbus-rtu` as a slave to mbpoll (`docs/modbus-master.md` §7, §10 test 4),
+//! and the pymodbus peer the master's tests use, over TCP and RTU.
 
+mod pymodbus_peer;
 mod serial_ports;
 mod slave;
 
