@@ -2,7 +2,8 @@
 //! (`docs/modbus-master.md` §10, test 4): mbpoll reads a holding register the program counts
 //! up and writes one the program reads, whose effect shows on a coil over RTU and over TCP; a
 //! frame with a bad CRC and a frame for another unit get no answer, and the next good frame
-//! does.
+//! does. A port that is missing at the start or goes away is opened again by its path
+//! (`docs/modbus-master.md` §7), and bad line settings are refused at the start.
 
 use std::process::Command;
 use std::time::{Duration, Instant};
@@ -139,4 +140,75 @@ async fn mbpoll_reads_and_writes_the_runtime_over_rtu_and_bad_frames_get_no_answ
     assert!(other.is_err(), "unit 2 was answered: {other:?}");
     mbpoll(&cable.master, &read_counter, &[]).await.unwrap();
     runtime.terminate();
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn the_slave_waits_for_its_port_and_serves_it_again_after_the_cable_comes_back() {
+    let dir = tempfile::tempdir().unwrap();
+    let cable_dir = dir.path().join("cable");
+    std::fs::create_dir(&cable_dir).unwrap();
+    let slave_path = cable_dir.join("slave");
+    let image = write_image(dir.path(), &image().encode());
+    let mut runtime = Runtime::start(
+        &dir.path().join("data"),
+        Some(&image),
+        &[
+            "--modbus-rtu",
+            slave_path.to_str().unwrap(),
+            "--modbus-rtu-format",
+            "19200-8N1",
+            "--modbus-rtu-unit",
+            "7",
+        ],
+    );
+    let missing = runtime.wait_for_message("trying again in 100 ms");
+    assert!(
+        missing.contains(&format!("cannot open {}", slave_path.display())),
+        "{missing}"
+    );
+    // The TCP server goes on meanwhile.
+    let mut tcp = connect(runtime.address).await;
+    tcp.read_holding_registers(1, 1).await.unwrap().unwrap();
+
+    let mut cable = SocatPair::start(&cable_dir);
+    runtime.wait_for_message("Modbus RTU slave 7 on");
+    let read_counter = ["-a", "7", "-t", "4", "-r", "2", "-c", "1"];
+    mbpoll(&cable.master, &read_counter, &[]).await.unwrap();
+
+    cable.kill();
+    runtime.wait_for_message("closed (the device went away)");
+    cable.restart();
+    let deadline = Instant::now() + PATIENCE;
+    while mbpoll(&cable.master, &read_counter, &[]).await.is_err() {
+        assert!(
+            Instant::now() < deadline,
+            "the slave never served the cable again"
+        );
+    }
+    runtime.terminate();
+}
+
+#[test]
+fn a_bad_line_format_or_unit_is_refused_by_the_argument_parser_saying_why() {
+    let dir = tempfile::tempdir().unwrap();
+    let refusal = |arguments: &[&str]| {
+        let output = Command::new(env!("CARGO_BIN_EXE_rivet-runtime"))
+            .args(["--listen", "127.0.0.1:0", "--modbus-rtu", "/dev/ttyUSB0"])
+            .args(arguments)
+            .arg("--data-dir")
+            .arg(dir.path())
+            .output()
+            .unwrap();
+        assert!(!output.status.success(), "{arguments:?} was accepted");
+        String::from_utf8_lossy(&output.stderr).into_owned()
+    };
+    let said = refusal(&["--modbus-rtu-format", "19200-7E1"]);
+    assert!(
+        said.contains("7 data bits cannot carry Modbus RTU"),
+        "{said}"
+    );
+    let said = refusal(&["--modbus-rtu-format", "19200/8E1"]);
+    assert!(said.contains("such as 19200-8E1"), "{said}");
+    let said = refusal(&["--modbus-rtu-unit", "0"]);
+    assert!(said.contains("--modbus-rtu-unit"), "{said}");
 }
