@@ -151,3 +151,72 @@ async fn the_end_of_the_port_ends_the_frames() {
     assert_eq!(reader.next_frame().await.unwrap(), Some(request(GOLDEN[2])));
     assert_eq!(reader.next_frame().await.unwrap(), None);
 }
+
+#[tokio::test(start_paused = true)]
+async fn a_frame_interrupted_by_a_silence_is_dropped_in_two_parts() {
+    let (mut reader, mut sender) = line();
+    let frame = hex(GOLDEN[3]);
+    sender.write_all(&frame[..5]).await.unwrap();
+    assert_eq!(
+        reader.next_frame().await.unwrap(),
+        Some(RtuFrame::Dropped(DroppedFrame::BadCrc))
+    );
+    sender.write_all(&frame[5..]).await.unwrap();
+    assert_eq!(
+        reader.next_frame().await.unwrap(),
+        Some(RtuFrame::Dropped(DroppedFrame::BadCrc))
+    );
+}
+
+mod chunks {
+    use proptest::prelude::*;
+
+    use super::*;
+
+    /// The requests among the golden frames.
+    const REQUESTS: [&str; 6] = [
+        GOLDEN[0], GOLDEN[2], GOLDEN[3], GOLDEN[5], GOLDEN[7], GOLDEN[10],
+    ];
+
+    proptest! {
+        #[test]
+        fn requests_back_to_back_in_chunks_of_any_size_come_out_whole_and_in_order(
+            picks in prop::collection::vec(0..REQUESTS.len(), 1..6),
+            chunk_sizes in prop::collection::vec(1usize..12, 1..40),
+            pauses_us in prop::collection::vec(0u64..1000, 1..40),
+        ) {
+            let bytes: Vec<u8> = picks.iter().flat_map(|&pick| hex(REQUESTS[pick])).collect();
+            let frames = picks.len();
+            let received = tokio::runtime::Builder::new_current_thread()
+                .enable_time()
+                .start_paused(true)
+                .build()
+                .unwrap()
+                .block_on(async move {
+                    let (mut reader, mut sender) = line();
+                    tokio::spawn(async move {
+                        let mut rest = &bytes[..];
+                        let mut step = 0;
+                        while !rest.is_empty() {
+                            let size = chunk_sizes[step % chunk_sizes.len()].min(rest.len());
+                            sender.write_all(&rest[..size]).await.unwrap();
+                            rest = &rest[size..];
+                            // Pauses shorter than the silence keep a frame together.
+                            let pause = pauses_us[step % pauses_us.len()];
+                            tokio::time::sleep(Duration::from_micros(pause)).await;
+                            step += 1;
+                        }
+                        std::future::pending::<()>().await;
+                    });
+                    let mut received = Vec::new();
+                    for _ in 0..frames {
+                        received.push(reader.next_frame().await.unwrap());
+                    }
+                    received
+                });
+            let expected: Vec<Option<RtuFrame>> =
+                picks.iter().map(|&pick| Some(request(REQUESTS[pick]))).collect();
+            prop_assert_eq!(received, expected);
+        }
+    }
+}
