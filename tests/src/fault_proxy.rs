@@ -53,6 +53,7 @@ impl FaultProxy {
     /// Starts a proxy in [`ProxyMode::Pass`] on 127.0.0.1, port 0, forwarding to `slave`.
     pub fn start(slave: SocketAddr) -> io::Result<Self> {
         let listener = TcpListener::bind("127.0.0.1:0")?;
+        listener.set_nonblocking(true)?;
         let address = listener.local_addr()?;
         let shared = Arc::new(Shared {
             mode: Mutex::new(ProxyMode::Pass),
@@ -126,14 +127,16 @@ fn accept(
             continue;
         }
         // The port is the proxy's: std sets SO_REUSEADDR, so it binds again after a refusal.
-        let Some(open) = listener.take().or_else(|| TcpListener::bind(address).ok()) else {
+        // The listener does not block, so that the thread sees mode changes and the drop.
+        if listener.is_none() {
+            listener = TcpListener::bind(address)
+                .and_then(|bound| bound.set_nonblocking(true).map(|()| bound))
+                .ok();
+        }
+        let Some(open) = &listener else {
             std::thread::sleep(POLL_INTERVAL);
             continue;
         };
-        if open.set_nonblocking(true).is_err() {
-            std::thread::sleep(POLL_INTERVAL);
-            continue;
-        }
         match open.accept() {
             Ok((master, _)) => {
                 shared.connections.fetch_add(1, Ordering::SeqCst);
@@ -142,12 +145,9 @@ fn accept(
                     let _ = forward(master, slave, &shared);
                 });
             }
-            Err(error) if error.kind() == io::ErrorKind::WouldBlock => {
-                std::thread::sleep(POLL_INTERVAL);
-            }
+            // Nobody is connecting (or a connection failed before it was taken).
             Err(_) => std::thread::sleep(POLL_INTERVAL),
         }
-        listener = Some(open);
     }
 }
 
