@@ -18,6 +18,7 @@ use tokio_modbus::{Request as ModbusRequest, Response as ModbusResponse};
 
 use crate::error::OnlineError;
 
+mod modbus_devices;
 mod online_change;
 
 /// How long one request may take before the client gives up.
@@ -177,6 +178,10 @@ impl Client {
             .map_err(protocol_error)?
             .map_err(|refusal| match request {
                 Request::Debug(debug) => crate::debug_client::debug_refused(debug, refusal),
+                // A runtime older than the service answers it as unknown (status 1).
+                Request::ModbusDevices { .. } if refusal.status == Status::UnknownService => {
+                    OnlineError::ModbusDevicesNotReported
+                }
                 _ => refused(refusal),
             })
     }

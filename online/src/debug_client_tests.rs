@@ -19,7 +19,7 @@ type Answerer = Box<dyn Fn(&DebugRequest) -> Result<DebugResponse, Refusal> + Se
 async fn fake(answer: Answerer) -> (Client, Arc<Mutex<Vec<DebugRequest>>>) {
     let seen = Arc::new(Mutex::new(Vec::new()));
     let record = Arc::clone(&seen);
-    let address = crate::fake_debug_target::serve(move |debug| {
+    let address = crate::fake_target::serve(move |debug| {
         record.lock().unwrap().push(debug.clone());
         answer(debug)
     })

@@ -64,6 +64,10 @@ pub enum OnlineError {
         /// The most the frame carries (`online_protocol::MAX_CONDITION_BYTES`).
         limit: usize,
     },
+    /// The runtime does not know `MODBUS_DEVICES` (status 1): it is older than its Modbus
+    /// master (`docs/modbus-master.md` §9.1), so the studio shows no device states.
+    #[error("this runtime does not report its Modbus devices")]
+    ModbusDevicesNotReported,
     /// A Modbus exception.
     #[error("the target answered Modbus exception {0}")]
     Exception(String),

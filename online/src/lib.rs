@@ -14,7 +14,7 @@ mod debug_client;
 pub mod device;
 mod error;
 #[cfg(test)]
-mod fake_debug_target;
+mod fake_target;
 pub mod session;
 
 pub use client::{Client, REQUEST_TIMEOUT, Sample, TraceConfig, Trigger};
@@ -28,8 +28,9 @@ pub use online_protocol::{
     MAX_LINGER_S, SessionState, StackFrame, StepKind, TaskDebugState, TaskHalt,
 };
 pub use online_protocol::{
-    ChangeApplied, ChangeCheck, ChangeDetailEntry, Enumeration, Fault, Identity, Place,
-    ResetKind as Reset, Resolved, Snapshot, TargetState, TaskInfo, TraceState, TraceStatus, Value,
+    ChangeApplied, ChangeCheck, ChangeDetailEntry, Enumeration, Fault, Identity,
+    ModbusDeviceReport, ModbusDeviceState, Place, ResetKind as Reset, Resolved, Snapshot,
+    TargetState, TaskInfo, TraceState, TraceStatus, Value,
 };
 // The string and enumeration type tags of a resolved variable, so callers tell strings from elementary values
 // without writing the protocol's numbers by hand or depending on the protocol crate.

@@ -5,10 +5,11 @@ use proptest::prelude::*;
 use proptest::sample::select;
 use proptest::strategy::{BoxedStrategy, Union};
 
-use crate::framing::{NO_BIT, NO_TRIGGER_SAMPLE};
+use crate::framing::{NO_BIT, NO_ERROR_YET_MS, NO_TRIGGER_SAMPLE};
 use crate::{
-    Fault, Identity, Place, Refusal, Request, ResetKind, Resolved, Response, Service, Snapshot,
-    Status, TargetState, TaskInfo, TraceConfig, TraceSample, TraceState, TraceStatus, TriggerKind,
+    Fault, Identity, ModbusDeviceReport, ModbusDeviceState, Place, Refusal, Request, ResetKind,
+    Resolved, Response, Service, Snapshot, Status, TargetState, TaskInfo, TraceConfig, TraceSample,
+    TraceState, TraceStatus, TriggerKind,
 };
 
 /// A text that fits an `str8` and a refusal's message: at most 40 characters of 4 bytes.
@@ -174,6 +175,9 @@ pub fn request() -> impl Strategy<Value = Request> {
         any::<u16>()
             .prop_map(|from| Request::Faults { from })
             .boxed(),
+        any::<u8>()
+            .prop_map(|from| Request::ModbusDevices { from })
+            .boxed(),
     ];
     prop_oneof![Union::new(arms), crate::debug_arb::request()]
 }
@@ -274,6 +278,7 @@ pub fn request_of(service: Service) -> Request {
         },
         Service::Tasks => Request::Tasks,
         Service::Faults => Request::Faults { from: 0 },
+        Service::ModbusDevices => Request::ModbusDevices { from: 0 },
         debug => crate::debug_arb::request_of(debug),
     }
 }
@@ -302,6 +307,36 @@ fn fault() -> impl Strategy<Value = Fault> {
             cycle,
         },
     )
+}
+
+/// A device report with any fields the wire can carry (`Some(NO_ERROR_YET_MS)` cannot be
+/// sent: it reads back as `None`).
+fn modbus_device() -> impl Strategy<Value = ModbusDeviceReport> {
+    (
+        (
+            text(),
+            select(ModbusDeviceState::ALL.to_vec()),
+            any::<[u8; 2]>(),
+        ),
+        any::<[u32; 6]>(),
+        (proptest::option::of(0..NO_ERROR_YET_MS), text()),
+    )
+        .prop_map(
+            |((name, state, codes), numbers, (since_last_error_ms, detail))| ModbusDeviceReport {
+                name,
+                state,
+                last_error: codes[0],
+                last_exception: codes[1],
+                consecutive_errors: numbers[0],
+                requests: numbers[1],
+                errors: numbers[2],
+                rounds: numbers[3],
+                overruns: numbers[4],
+                last_response_us: numbers[5],
+                since_last_error_ms,
+                detail,
+            },
+        )
 }
 
 /// `READ` with places and its answer with their values.
@@ -512,6 +547,9 @@ pub fn response() -> impl Strategy<Value = (Request, Response)> {
             .boxed(),
         (any::<u16>(), vec(fault(), 0..4))
             .prop_map(|(total, faults)| Response::Faults { total, faults })
+            .boxed(),
+        (any::<u8>(), vec(modbus_device(), 0..4))
+            .prop_map(|(total, devices)| Response::ModbusDevices { total, devices })
             .boxed(),
     ];
     let others = Union::new(arms).prop_map(|response| (request_of(response.service()), response));

@@ -24,6 +24,24 @@ pub const MAX_TEXT_BYTES: usize = 200;
 /// The most bytes of each text of a `FAULTS` entry, so that one fault always fits a response.
 pub const MAX_FAULT_TEXT_BYTES: usize = 48;
 
+/// The most bytes of a device's name in a `MODBUS_DEVICES` entry (`docs/modbus-master.md` §9.1).
+pub const MAX_MODBUS_DEVICE_NAME_BYTES: usize = 32;
+
+/// The most bytes of a device's `detail` (its last failure in words) in a `MODBUS_DEVICES`
+/// entry.
+pub const MAX_MODBUS_DEVICE_DETAIL_BYTES: usize = 48;
+
+/// The bytes of a `MODBUS_DEVICES` entry besides its two texts: the texts' two length bytes,
+/// `state`, `last_error`, `last_exception` and seven `u32` counters.
+pub const MODBUS_DEVICE_FIXED_BYTES: usize = 2 + 3 + 7 * 4;
+
+/// The most bytes of one `MODBUS_DEVICES` entry, with both texts cut to their limits (113).
+pub const MAX_MODBUS_DEVICE_ENTRY_BYTES: usize =
+    MODBUS_DEVICE_FIXED_BYTES + MAX_MODBUS_DEVICE_NAME_BYTES + MAX_MODBUS_DEVICE_DETAIL_BYTES;
+
+/// The `since_last_error_ms` of a `MODBUS_DEVICES` entry whose device has not failed yet.
+pub const NO_ERROR_YET_MS: u32 = u32::MAX;
+
 /// The bytes of a place on the wire: region, offset, bit and size.
 pub const PLACE_BYTES: usize = 8;
 

@@ -10,6 +10,8 @@
 //! - [`Place`]: where a variable is on the target.
 //! - [`Request`] and [`Response`]: one variant per service, with `encode` and `decode`; the
 //!   debugging services of version 3 (§6) as [`DebugRequest`] and [`DebugResponse`].
+//! - [`ModbusDeviceReport`] and [`modbus_devices_page`]: the `MODBUS_DEVICES` answer and the
+//!   page of it the runtime sends.
 
 mod answers;
 mod debug_request;
@@ -17,6 +19,7 @@ mod debug_response;
 mod debug_types;
 mod error;
 pub mod framing;
+mod modbus_devices;
 mod online_change;
 mod place;
 mod reader;
@@ -46,6 +49,7 @@ pub use debug_types::{
 };
 pub use error::DecodeError;
 pub use framing::*;
+pub use modbus_devices::{ModbusDeviceReport, ModbusDeviceState, modbus_devices_page};
 pub use online_change::{ChangeApplied, ChangeCheck, ChangeDetailEntry, MAX_DETAIL_KIND};
 pub use place::Place;
 pub use reader::Reader;

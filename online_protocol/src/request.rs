@@ -169,6 +169,9 @@ pub enum Request {
     Faults {
         from: u16,
     },
+    ModbusDevices {
+        from: u8,
+    },
     /// A debugging service (version 3, §6).
     Debug(DebugRequest),
 }
@@ -205,6 +208,7 @@ impl Request {
             TraceAdd { .. } => Service::TraceAdd,
             Tasks => Service::Tasks,
             Faults { .. } => Service::Faults,
+            ModbusDevices { .. } => Service::ModbusDevices,
             Debug(request) => request.service(),
         }
     }
@@ -240,7 +244,8 @@ impl Request {
             | TraceStatus
             | TraceUpload { .. }
             | Tasks
-            | Faults { .. } => None,
+            | Faults { .. }
+            | ModbusDevices { .. } => None,
         }
     }
 
@@ -296,6 +301,7 @@ impl Request {
             }
             Write { values, .. } | Force { values, .. } => put_values(&mut out, values),
             Forces { from } | Faults { from } => out.extend_from_slice(&from.to_le_bytes()),
+            ModbusDevices { from } => out.push(*from),
             TraceConfigure { config, .. } => {
                 out.push(config.task);
                 out.extend_from_slice(&config.every.to_le_bytes());
@@ -416,6 +422,9 @@ impl Request {
             Service::Tasks => Request::Tasks,
             Service::Faults => Request::Faults {
                 from: r.u16("from")?,
+            },
+            Service::ModbusDevices => Request::ModbusDevices {
+                from: r.u8("from")?,
             },
             debug => match DebugRequest::decode_fields(debug, &mut r)? {
                 Some(request) => Request::Debug(request),

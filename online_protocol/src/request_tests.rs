@@ -96,6 +96,7 @@ fn every_request() -> Vec<Request> {
         Request::TraceUpload { from: 17 },
         Request::Tasks,
         Request::Faults { from: 2 },
+        Request::ModbusDevices { from: 3 },
         Request::TraceAdd {
             token: 3,
             places: vec![a],
@@ -152,6 +153,11 @@ fn a_request_is_its_service_number_then_its_fields_in_the_documented_order() {
         reset.encode(),
         expected,
         "a token is 16 bytes, little-endian"
+    );
+    assert_eq!(
+        Request::ModbusDevices { from: 7 }.encode(),
+        [0x52, 7],
+        "MODBUS_DEVICES carries one byte, the first device to list, and no token"
     );
     let whole = place(0, 0, None, 4);
     let mut bytes = Vec::new();

@@ -10,6 +10,7 @@ use crate::debug_response::DebugResponse;
 use crate::debug_types::DebugStatus;
 use crate::error::DecodeError;
 use crate::framing::{NO_TRIGGER_SAMPLE, SAMPLE_HEADER_BYTES};
+use crate::modbus_devices::ModbusDeviceReport;
 use crate::online_change::{self, ChangeApplied, ChangeCheck, ChangeDetailEntry};
 use crate::place::Place;
 use crate::reader::Reader;
@@ -136,6 +137,15 @@ pub enum Response {
         /// The faults, as many as fit one response.
         faults: Vec<Fault>,
     },
+    /// `MODBUS_DEVICES`: the devices the runtime masters from the request's index on
+    /// (`docs/modbus-master.md` §9.1); the runtime builds it with
+    /// [`crate::modbus_devices_page`].
+    ModbusDevices {
+        /// How many devices the runtime masters (0 without a program or runtime devices).
+        total: u8,
+        /// Their reports in the image's order, as many as fit one response.
+        devices: Vec<ModbusDeviceReport>,
+    },
     /// A debugging service's answer (version 3, §6).
     Debug(DebugResponse),
 }
@@ -172,6 +182,7 @@ impl Response {
             TraceAdd { .. } => Service::TraceAdd,
             Tasks { .. } => Service::Tasks,
             Faults { .. } => Service::Faults,
+            ModbusDevices { .. } => Service::ModbusDevices,
             Debug(response) => response.service(),
         }
     }
@@ -296,6 +307,14 @@ impl Response {
                     }
                     out.extend_from_slice(&fault.line.to_le_bytes());
                     out.extend_from_slice(&fault.cycle.to_le_bytes());
+                }
+            }
+            ModbusDevices { total, devices } => {
+                out.push(*total);
+                let devices = first(devices);
+                out.push(devices.len() as u8);
+                for device in devices {
+                    device.encode(&mut out);
                 }
             }
             Debug(response) => response.encode_fields(&mut out),
@@ -469,6 +488,15 @@ fn decode_answer(
                 });
             }
             Response::Faults { total, faults }
+        }
+        Service::ModbusDevices => {
+            let total = r.u8("total")?;
+            let count = r.u8("count")?;
+            let mut devices = Vec::with_capacity(usize::from(count));
+            for _ in 0..count {
+                devices.push(ModbusDeviceReport::decode(r)?);
+            }
+            Response::ModbusDevices { total, devices }
         }
         debug => match DebugResponse::decode_fields(request, debug, r)? {
             Some(response) => Response::Debug(response),

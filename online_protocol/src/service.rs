@@ -58,6 +58,8 @@ pub enum Service {
     Tasks = 0x50,
     /// `FAULTS`: the faults recorded.
     Faults = 0x51,
+    /// `MODBUS_DEVICES`: the state and counters of the Modbus devices the runtime masters.
+    ModbusDevices = 0x52,
     /// `DEBUG_ATTACH`: the debug session created or taken over (version 3).
     DebugAttach = 0x60,
     /// `DEBUG_DETACH`: the debug session ended.
@@ -92,7 +94,7 @@ pub enum Service {
 
 impl Service {
     /// Every service, in the order of their numbers.
-    pub const ALL: [Service; 42] = [
+    pub const ALL: [Service; 43] = [
         Service::Identify,
         Service::Login,
         Service::Logout,
@@ -120,6 +122,7 @@ impl Service {
         Service::TraceAdd,
         Service::Tasks,
         Service::Faults,
+        Service::ModbusDevices,
         // The debugging services (version 3, §6).
         Service::DebugAttach,
         Service::DebugDetach,

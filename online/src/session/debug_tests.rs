@@ -99,7 +99,7 @@ fn answer(fake: &mut Fake, request: &DebugRequest) -> Result<DebugResponse, Refu
 
 /// Serves connections on 127.0.0.1 from `fake`.
 async fn serve(fake: Arc<Mutex<Fake>>) -> SocketAddr {
-    crate::fake_debug_target::serve(move |debug| answer(&mut fake.lock().unwrap(), debug)).await
+    crate::fake_target::serve(move |debug| answer(&mut fake.lock().unwrap(), debug)).await
 }
 
 /// The next event that is not a snapshot, waiting at most five seconds.

@@ -373,6 +373,12 @@ impl OnlineServices {
                 tasks: self.tasks(),
             }),
             Request::Faults { from } => Ok(self.faults(from)),
+            // Served with the runtime's Modbus master (issue 19, wave 2); until then this
+            // runtime answers as one that does not know the service (docs/protocol.md §3).
+            Request::ModbusDevices { .. } => Err(Refusal::new(
+                Status::UnknownService,
+                "this runtime does not report its Modbus devices",
+            )),
             Request::Debug(request) => {
                 self.debug
                     .serve(&self.scheduler, connection, peer, now, request)

@@ -1,6 +1,6 @@
-//! A small fake runtime on loopback for the debugging tests: it answers `IDENTIFY` as a
-//! version-3 runtime offering debugging and each debugging request with a function the test
-//! gives, framed as `online_protocol` frames them.
+//! A small fake runtime on loopback for the client's tests: it answers `IDENTIFY` as a
+//! version-3 runtime and every other request with a function the test gives, framed as
+//! `online_protocol` frames them.
 
 #![allow(clippy::unwrap_used, clippy::expect_used)] // A panic is a failed test.
 
@@ -14,9 +14,22 @@ use tokio::io::{AsyncReadExt as _, AsyncWriteExt as _};
 use tokio::net::TcpListener;
 
 /// Serves one connection on 127.0.0.1 and a free port, answering each debugging request with
-/// `answer`; returns the address to connect to.
+/// `answer` (any other request but `IDENTIFY` fails the test); returns the address to
+/// connect to.
 pub(crate) async fn serve(
     mut answer: impl FnMut(&DebugRequest) -> Result<DebugResponse, Refusal> + Send + 'static,
+) -> SocketAddr {
+    serve_requests(move |request| match request {
+        Request::Debug(debug) => answer(debug).map(Response::Debug),
+        other => panic!("the fake runtime got {other:?}"),
+    })
+    .await
+}
+
+/// Serves one connection on 127.0.0.1 and a free port, answering each request but
+/// `IDENTIFY` with `answer`; returns the address to connect to.
+pub(crate) async fn serve_requests(
+    mut answer: impl FnMut(&Request) -> Result<Response, Refusal> + Send + 'static,
 ) -> SocketAddr {
     let listener = TcpListener::bind("127.0.0.1:0").await.unwrap();
     let address = listener.local_addr().unwrap();
@@ -42,11 +55,10 @@ pub(crate) async fn serve(
                     debug: DebugStatus::default(),
                 })
                 .encode(),
-                Request::Debug(debug) => match answer(debug) {
-                    Ok(response) => Response::Debug(response).encode(),
-                    Err(refusal) => refusal.encode(debug.service().number()),
+                other => match answer(other) {
+                    Ok(response) => response.encode(),
+                    Err(refusal) => refusal.encode(other.service().number()),
                 },
-                other => panic!("the fake runtime got {other:?}"),
             };
             let mut frame = header[..4].to_vec();
             frame.extend_from_slice(&((body.len() + 2) as u16).to_be_bytes());
