@@ -37,8 +37,9 @@ pub const READ_REGISTERS_MAX: u32 = 125;
 pub const WRITE_BITS_MAX: u32 = 1968;
 /// The most registers one write request carries (function code 16).
 pub const WRITE_REGISTERS_MAX: u32 = 123;
-/// The most devices a section may hold.
-pub const MAX_DEVICES: usize = 256;
+/// The most devices a section may hold: 255, so that `MODBUS_DEVICES` (one-byte `total` and
+/// `from`, `docs/protocol.md`) lists every one.
+pub const MAX_DEVICES: usize = 255;
 /// The most channels one device may hold.
 pub const MAX_CHANNELS_PER_DEVICE: usize = 1024;
 /// The most serial ports a section may hold.

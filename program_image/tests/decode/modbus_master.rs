@@ -322,10 +322,10 @@ fn serial_port_and_count_refusals_name_the_port_or_the_list() {
             },
         ),
         (
-            "the Modbus master section, field devices: 257 entries, at most 256 are accepted",
+            "the Modbus master section, field devices: 256 entries, at most 255 are accepted",
             |s| {
                 let device = s.devices[0].clone();
-                s.devices = (0..257)
+                s.devices = (0..256)
                     .map(|n| DeviceDef {
                         name: format!("D{n}"),
                         ..device.clone()
