@@ -85,6 +85,38 @@ impl ModbusSchedule {
 }
 
 impl ModbusDevice {
+    /// The poll interval a new device gets, and the one the studio uses for a TCP device that
+    /// has none (a problem the device checks report), in milliseconds.
+    pub const DEFAULT_POLL_INTERVAL_MS: u32 = 100;
+
+    /// A studio device over TCP at `host` and `port`: unit 1, high word first, polled every
+    /// 100 ms with a 500 ms timeout, no channel.
+    pub fn tcp(name: impl Into<String>, host: impl Into<String>, port: u16) -> Self {
+        Self {
+            name: name.into(),
+            link: ModbusLink::Tcp {
+                host: host.into(),
+                port,
+            },
+            unit_id: 1,
+            word_order: WordOrder::HighFirst,
+            poll_interval_ms: Some(Self::DEFAULT_POLL_INTERVAL_MS),
+            timeout_ms: 500,
+            task: None,
+            schedule: ModbusSchedule::Interval,
+            max_read_gap: 0,
+            status: None,
+            bindings: Vec::new(),
+        }
+    }
+
+    /// How often the studio polls the device, in milliseconds: its poll interval, or
+    /// [`Self::DEFAULT_POLL_INTERVAL_MS`] when it has none.
+    pub fn studio_poll_interval_ms(&self) -> u32 {
+        self.poll_interval_ms
+            .unwrap_or(Self::DEFAULT_POLL_INTERVAL_MS)
+    }
+
     /// Whether the runtime masters the device (it names an I/O task).
     pub fn is_runtime_device(&self) -> bool {
         self.task.is_some()

@@ -197,7 +197,7 @@ pub enum DeviceProblem {
     },
     /// A write channel on a table that cannot be written.
     #[error(
-        "channel {row} writes a {}, which cannot be written: only coils and holding registers can",
+        "channel {row} writes to the {} table, which is read-only: only coils and holding registers can be written",
         table_name(*table)
     )]
     WriteToReadOnlyTable {
@@ -218,7 +218,7 @@ pub enum DeviceProblem {
     },
     /// A function code that cannot write the channel's table.
     #[error(
-        "channel {row}: function code {code} cannot write a {}; use 5 or 15 for coils, 6 or 16 for holding registers",
+        "channel {row}: function code {code} cannot write the {} table; use 5 or 15 for coils, 6 or 16 for holding registers",
         table_name(*table)
     )]
     FunctionCodeMisfit {
