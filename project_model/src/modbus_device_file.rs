@@ -6,7 +6,10 @@ use serde::{Deserialize, Serialize};
 
 use crate::{ModbusBinding, ModbusDevice, ModbusLink, ModbusSchedule, WordOrder};
 
-/// The keys of a `[[modbus_device]]` table, in file order.
+/// The keys of a `[[modbus_device]]` table, in file order. Each field is the [`ModbusDevice`]
+/// field of its name, but for the link, which is split into `host` and `port` (TCP) and
+/// `serial_port` (RTU); keys holding their defaults are left out, but for `word_order`, which
+/// files have always written.
 #[derive(Clone, Debug, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct ModbusDeviceFile {
@@ -18,7 +21,6 @@ pub(crate) struct ModbusDeviceFile {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     serial_port: Option<String>,
     unit_id: u8,
-    // Written even when it is the default, as it always was.
     #[serde(default)]
     word_order: WordOrder,
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -63,6 +65,7 @@ pub(crate) enum LinkError {
     },
 }
 
+/// Whether `max_read_gap` is the default, which the manifest leaves out.
 fn is_zero(value: &u16) -> bool {
     *value == 0
 }
