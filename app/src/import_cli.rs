@@ -153,6 +153,7 @@ fn ignored_text(part: IgnoredPart) -> &'static str {
         IgnoredPart::Controller => "controller",
         IgnoredPart::Dialect => "dialect",
         IgnoredPart::IoAreas => "I/O areas",
+        IgnoredPart::SerialPorts => "serial ports",
         IgnoredPart::ModbusDevices => "Modbus devices",
         IgnoredPart::Axes => "axes",
     }

@@ -8,7 +8,7 @@ use std::time::Duration;
 use online::OnlineError;
 use online::device::{Channel, Device, Table, WordOrder};
 use program_image::Elementary;
-use project_model::{ModbusDataType, ModbusDevice, ModbusTable};
+use project_model::{ModbusDataType, ModbusDevice, ModbusLink, ModbusTable};
 
 /// The channels of a device node's bindings, in their order.
 pub fn channels_of(device: &ModbusDevice) -> Vec<Channel> {
@@ -39,9 +39,16 @@ pub fn channels_of(device: &ModbusDevice) -> Vec<Channel> {
         .collect()
 }
 
-/// Connects to a device node with its host, port, unit, word order, timeout and bindings.
+/// Connects to a device node with its host, port, unit, word order, timeout and bindings; a
+/// Modbus RTU device is refused, since the studio does not poll serial ports.
 pub async fn connect(device: &ModbusDevice) -> Result<Device, OnlineError> {
-    let text = format!("{}:{}", device.host, device.port);
+    let ModbusLink::Tcp { host, port } = &device.link else {
+        return Err(OnlineError::Rejected(format!(
+            "device '{}' is on a serial port, which only the runtime polls",
+            device.name
+        )));
+    };
+    let text = format!("{host}:{port}");
     let address = text
         .to_socket_addrs()
         .ok()
@@ -95,20 +102,16 @@ mod tests {
                 runtime::modbus::ServerOptions::default(),
             ));
             let device = ModbusDevice {
-                name: "Drive".to_owned(),
-                host: "127.0.0.1".to_owned(),
-                port,
-                unit_id: 1,
                 word_order: project_model::WordOrder::LowFirst,
-                poll_interval_ms: 10,
+                poll_interval_ms: Some(10),
                 timeout_ms: 1000,
-                bindings: vec![project_model::ModbusBinding {
-                    variable: "GVL.rSpeed".to_owned(),
-                    table: ModbusTable::HoldingRegister,
-                    address: 1024,
-                    data_type: ModbusDataType::Real,
-                    comment: String::new(),
-                }],
+                bindings: vec![project_model::ModbusBinding::new(
+                    "GVL.rSpeed",
+                    ModbusTable::HoldingRegister,
+                    1024,
+                    ModbusDataType::Real,
+                )],
+                ..ModbusDevice::tcp("Drive", "127.0.0.1", port)
             };
             let mut connected = connect(&device).await.unwrap();
             connected

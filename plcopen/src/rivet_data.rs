@@ -6,7 +6,7 @@
 //! them and the import reads them; the texts inside are the TOML of the project's own files
 //! (`docs/project-format.md`), so the two formats cannot drift apart.
 
-use project_model::{Axis, Controller, Dialect, IoArea, ModbusDevice, Task};
+use project_model::{Axis, Controller, Dialect, IoArea, ModbusDevice, SerialPort, Task};
 use serde::{Deserialize, Serialize};
 
 /// Rivet's namespace for its `addData` entries and their elements.
@@ -68,6 +68,9 @@ pub(crate) struct ProjectEntry {
     /// The I/O areas.
     #[serde(default, rename = "io_area")]
     pub io_areas: Vec<IoArea>,
+    /// The serial ports.
+    #[serde(default, rename = "serial_port", skip_serializing_if = "Vec::is_empty")]
+    pub serial_ports: Vec<SerialPort>,
     /// The Modbus devices.
     #[serde(default, rename = "modbus_device")]
     pub modbus_devices: Vec<ModbusDevice>,

@@ -35,6 +35,11 @@ pub fn ident_vec() -> impl Strategy<Value = Vec<String>> {
     proptest::collection::vec(ident(), 0..3)
 }
 
+/// An optional identifier.
+pub fn opt_ident() -> impl Strategy<Value = Option<String>> {
+    proptest::option::of(ident())
+}
+
 /// Free text, including line breaks, quotes and non-ASCII characters.
 pub fn text() -> impl Strategy<Value = String> {
     prop_oneof![Just(String::new()), "[ -~\n\t\"'\\\\中文]{0,40}"]

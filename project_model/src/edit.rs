@@ -13,7 +13,7 @@ use crate::network_splice::{body_mut, splice_networks};
 use crate::validate::object_problem;
 use crate::{
     Axis, Body, Controller, Dialect, Folder, IoArea, ListEdit, ModbusDevice, Network, Node, Object,
-    Project, Task, Variable, is_valid_identifier, same_identifier,
+    Project, SerialPort, Task, Variable, is_valid_identifier, same_identifier,
 };
 
 /// A reversible change to a project.
@@ -35,7 +35,9 @@ pub enum Edit {
     Tasks(ListEdit<Task>),
     /// Edits the I/O areas.
     IoAreas(ListEdit<IoArea>),
-    /// Edits the Modbus TCP devices.
+    /// Edits the serial ports.
+    SerialPorts(ListEdit<SerialPort>),
+    /// Edits the Modbus devices.
     ModbusDevices(ListEdit<ModbusDevice>),
     /// Edits the motion axes.
     Axes(ListEdit<Axis>),
@@ -287,6 +289,9 @@ impl Edit {
             ))),
             Self::Tasks(edit) => Ok(Self::Tasks(edit.apply(&mut project.tasks)?)),
             Self::IoAreas(edit) => Ok(Self::IoAreas(edit.apply(&mut project.io_areas)?)),
+            Self::SerialPorts(edit) => {
+                Ok(Self::SerialPorts(edit.apply(&mut project.serial_ports)?))
+            }
             Self::ModbusDevices(edit) => Ok(Self::ModbusDevices(
                 edit.apply(&mut project.modbus_devices)?,
             )),

@@ -1,7 +1,7 @@
 //! The Rivet project as plain data.
 //!
 //! This crate is the ground truth of the studio: the device tree (controller, tasks, I/O areas,
-//! Modbus TCP devices, motion axes) and the application (folders, POUs, global variable lists,
+//! serial ports, Modbus TCP and RTU devices, motion axes) and the application (folders, POUs, global variable lists,
 //! data types, cam tables, trace configurations, watch lists).
 //! It loads and saves projects as folders of text files (see `docs/project-format.md`), and
 //! changes them only through [`Edit`]s, each of which returns its inverse so [`History`] can undo
@@ -31,6 +31,7 @@ mod io_area;
 mod list_edit;
 mod merge_plan;
 mod modbus_device;
+mod modbus_device_file;
 mod network;
 mod network_check;
 mod network_edit;
@@ -39,6 +40,7 @@ mod network_splice;
 mod network_walk;
 mod pou;
 mod project;
+mod serial_port;
 mod sfc;
 mod sfc_check;
 pub mod sfc_edit;
@@ -69,8 +71,9 @@ pub use declarations_edit::{
     pou_declarations_change,
 };
 pub use device_check::{
-    DeviceProblem, LOCATED_AREA_BYTES, axis_problems, binding_problems, controller_problems,
-    device_problems, io_area_problems, map_range_problems, modbus_device_problems, new_problem,
+    DeviceProblem, LOCATED_AREA_BYTES, MAX_POLL_INTERVAL_MS, MAX_READ_GAP, MAX_TIMEOUT_MS,
+    axis_problems, binding_problems, controller_problems, device_problems, io_area_problems,
+    map_range_problems, modbus_device_problems, new_problem, request_limit, serial_port_problems,
 };
 pub use dialect::Dialect;
 pub use edit::{Edit, EditError, TextTarget, TreeEdit, VarOwner};
@@ -85,7 +88,10 @@ pub use identifier::{is_valid_identifier, same_identifier};
 pub use io_area::{IoArea, IoDirection};
 pub use list_edit::ListEdit;
 pub use merge_plan::{ClashChoice, IgnoredPart, MergeClash, MergeItem, MergePlan};
-pub use modbus_device::{ModbusBinding, ModbusDataType, ModbusDevice, ModbusTable, WordOrder};
+pub use modbus_device::{
+    ChannelDirection, ChannelErrorAction, ChannelTrigger, ModbusBinding, ModbusDataType,
+    ModbusDevice, ModbusLink, ModbusSchedule, ModbusTable, WordOrder,
+};
 pub use network::{
     BlockCall, BlockInput, BlockOutput, Branch, Coil, CoilKind, EN_PIN, ENO_PIN, Edge, ElementId,
     FlowNode, Network, NetworkOutput, Operand, Parallel,
@@ -104,6 +110,7 @@ pub use pou::{
     AccessSpecifier, Body, Language, Method, Pou, PouAction, PouKind, Property, PropertyAccessor,
 };
 pub use project::{Controller, ModbusServerMap, ModbusServerRange, Project};
+pub use serial_port::{Parity, SerialPort};
 pub use sfc::{
     ActionAssociation, ActionQualifier, Jump, MacroStep, SfcBranches, SfcChart, SfcNode,
     SfcSequence, Step, Transition,

@@ -80,6 +80,8 @@ pub enum IgnoredPart {
     Dialect,
     /// The imported project has I/O areas.
     IoAreas,
+    /// The imported project has serial ports.
+    SerialPorts,
     /// The imported project has Modbus devices.
     ModbusDevices,
     /// The imported project has axes.
@@ -357,6 +359,9 @@ fn ignored_parts(open: &Project, imported: &Project) -> Vec<IgnoredPart> {
     }
     if !imported.io_areas.is_empty() {
         ignored.push(IgnoredPart::IoAreas);
+    }
+    if !imported.serial_ports.is_empty() {
+        ignored.push(IgnoredPart::SerialPorts);
     }
     if !imported.modbus_devices.is_empty() {
         ignored.push(IgnoredPart::ModbusDevices);

@@ -118,13 +118,17 @@ fn applying_leaves_the_rest_of_the_open_project_as_it_was() {
     let mut imported = project(vec![], vec![]);
     imported.name = "Other".into();
     imported.dialect = crate::Dialect::IecStrict;
+    imported
+        .serial_ports
+        .push(crate::SerialPort::new("RS485", "/dev/ttyS1"));
     let plan = MergePlan::new(&open, &imported);
     assert_eq!(
         plan.ignored,
         vec![
             IgnoredPart::ProjectInfo,
             IgnoredPart::Controller,
-            IgnoredPart::Dialect
+            IgnoredPart::Dialect,
+            IgnoredPart::SerialPorts
         ]
     );
     assert_eq!(plan.apply(&open, &imported), open);

@@ -2,7 +2,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::{Axis, Dialect, Folder, IoArea, ModbusDevice, Task, VendorData};
+use crate::{Axis, Dialect, Folder, IoArea, ModbusDevice, SerialPort, Task, VendorData};
 
 /// A whole Rivet project, as loaded from its folder.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -22,7 +22,10 @@ pub struct Project {
     /// The controller's local I/O areas.
     #[cfg_attr(feature = "proptest", proptest(strategy = "crate::arb::small_vec()"))]
     pub io_areas: Vec<IoArea>,
-    /// Third-party Modbus TCP devices.
+    /// The controller's serial ports, for Modbus RTU devices.
+    #[cfg_attr(feature = "proptest", proptest(strategy = "crate::arb::small_vec()"))]
+    pub serial_ports: Vec<SerialPort>,
+    /// Third-party Modbus devices, over TCP or on a serial port.
     #[cfg_attr(feature = "proptest", proptest(strategy = "crate::arb::small_vec()"))]
     pub modbus_devices: Vec<ModbusDevice>,
     /// Motion axes.
@@ -104,5 +107,12 @@ impl Project {
         self.tasks
             .iter()
             .find(|task| crate::same_identifier(&task.name, name))
+    }
+
+    /// The serial port named `name`, compared as IEC identifiers are.
+    pub fn serial_port(&self, name: &str) -> Option<&SerialPort> {
+        self.serial_ports
+            .iter()
+            .find(|port| crate::same_identifier(&port.name, name))
     }
 }

@@ -703,3 +703,60 @@ fn a_cfc_chart_loads_and_saves_unchanged_and_a_broken_one_is_refused_at_its_elem
         )
     );
 }
+
+/// The 1-based line of the first line of `path` that is `line`.
+fn line_number(path: &Path, line: &str) -> usize {
+    let text = fs::read_to_string(path).unwrap();
+    text.lines().position(|each| each == line).unwrap() + 1
+}
+
+#[test]
+fn a_modbus_device_with_both_links_or_neither_is_refused_at_its_table() {
+    let cases = [
+        (
+            "port = 502\n",
+            "port = 502\nserial_port = \"RS485\"\n",
+            "has both",
+        ),
+        ("host = \"192.168.1.50\"\nport = 502\n", "", "has neither"),
+        ("port = 502\n", "", "has 'host' but no 'port'"),
+    ];
+    for (from, to, expected) in cases {
+        let dir = example_copy();
+        let manifest = dir.path().join("rivet.toml");
+        let table = line_number(&manifest, "[[modbus_device]]");
+        replace_in(&manifest, from, to);
+        let error = load_fails(dir.path());
+        assert_error(&error, dir.path(), "rivet.toml", Some(table), expected);
+        assert_error(&error, dir.path(), "rivet.toml", Some(table), "'BeltDrive'");
+    }
+}
+
+#[test]
+fn an_unknown_key_of_a_modbus_device_or_a_serial_port_is_reported() {
+    let dir = example_copy();
+    let manifest = dir.path().join("rivet.toml");
+    replace_in(
+        &manifest,
+        "timeout_ms = 500\n",
+        "timeout_ms = 500\npriority = 1\n",
+    );
+    let error = load_fails(dir.path());
+    assert!(
+        error.to_string().contains("unknown field `priority`"),
+        "{error}"
+    );
+    let dir = example_copy();
+    let manifest = dir.path().join("rivet.toml");
+    replace_in(
+        &manifest,
+        "[[modbus_device]]",
+        "[[serial_port]]\nname = \"RS485\"\ndevice = \"/dev/ttyS1\"\nbaud_rate = 19200\n\
+         parity = \"none\"\ndata_bits = 8\nstop_bits = 2\nflow_control = true\n\n[[modbus_device]]",
+    );
+    let error = load_fails(dir.path());
+    assert!(
+        error.to_string().contains("unknown field `flow_control`"),
+        "{error}"
+    );
+}

@@ -9,7 +9,7 @@ use proptest::sample::Index;
 use project_model::arb;
 use project_model::{
     Axis, Body, Controller, Dialect, Edit, History, IoArea, ListEdit, ModbusDevice, Node, Object,
-    Project, Task, TextTarget, TreeEdit, VarOwner, Variable, max_element_id,
+    Project, SerialPort, Task, TextTarget, TreeEdit, VarOwner, Variable, max_element_id,
 };
 
 /// A list edit on a list of `len` items, with indices chosen by `index`.
@@ -255,6 +255,7 @@ fn edit_for(project: &Project) -> BoxedStrategy<Edit> {
         any::<Dialect>().prop_map(Edit::SetDialect),
         list_edit::<Task>(project.tasks.len()).prop_map(Edit::Tasks),
         list_edit::<IoArea>(project.io_areas.len()).prop_map(Edit::IoAreas),
+        list_edit::<SerialPort>(project.serial_ports.len()).prop_map(Edit::SerialPorts),
         list_edit::<ModbusDevice>(project.modbus_devices.len()).prop_map(Edit::ModbusDevices),
         list_edit::<Axis>(project.axes.len()).prop_map(Edit::Axes),
         tree_insert,

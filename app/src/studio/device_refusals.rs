@@ -152,6 +152,101 @@ pub(crate) fn describe_problem(problem: &DeviceProblem, language: Language) -> S
                 ("data_type", data_type.iec_name()),
             ],
         ),
+        DeviceProblem::EmptySerialPort => fill(DeviceText::ProblemEmptySerialPort, &[]),
+        DeviceProblem::NoSuchSerialPort(port) => {
+            fill(DeviceText::ProblemNoSuchSerialPort, &[("port", port)])
+        }
+        DeviceProblem::RtuWithoutTask => fill(DeviceText::ProblemRtuWithoutTask, &[]),
+        DeviceProblem::RtuUnitId(unit_id) => fill(
+            DeviceText::ProblemRtuUnitId,
+            &[("unit_id", &unit_id.to_string())],
+        ),
+        DeviceProblem::TimeoutTooLong(timeout_ms) => fill(
+            DeviceText::ProblemTimeoutTooLong,
+            &[("timeout_ms", &timeout_ms.to_string())],
+        ),
+        DeviceProblem::PollIntervalTooLong(poll_interval_ms) => fill(
+            DeviceText::ProblemPollIntervalTooLong,
+            &[("poll_interval_ms", &poll_interval_ms.to_string())],
+        ),
+        DeviceProblem::MissingPollInterval => fill(DeviceText::ProblemMissingPollInterval, &[]),
+        DeviceProblem::ReadGapTooLarge(gap) => fill(
+            DeviceText::ProblemReadGapTooLarge,
+            &[("gap", &gap.to_string())],
+        ),
+        DeviceProblem::ZeroCount { row } => {
+            fill(DeviceText::ProblemZeroCount, &[("row", &row.to_string())])
+        }
+        DeviceProblem::ChannelTooLong {
+            row,
+            count,
+            span,
+            limit,
+        } => fill(
+            DeviceText::ProblemChannelTooLong,
+            &[
+                ("row", &row.to_string()),
+                ("count", &count.to_string()),
+                ("span", &span.to_string()),
+                ("limit", &limit.to_string()),
+            ],
+        ),
+        DeviceProblem::WriteToReadOnlyTable { row, table } => fill(
+            DeviceText::ProblemWriteToReadOnlyTable,
+            &[
+                ("row", &row.to_string()),
+                ("table", &table_word(*table, language)),
+            ],
+        ),
+        DeviceProblem::FunctionCodeOnRead { row, code } => fill(
+            DeviceText::ProblemFunctionCodeOnRead,
+            &[("row", &row.to_string()), ("code", &code.to_string())],
+        ),
+        DeviceProblem::FunctionCodeMisfit { row, code, table } => fill(
+            DeviceText::ProblemFunctionCodeMisfit,
+            &[
+                ("row", &row.to_string()),
+                ("code", &code.to_string()),
+                ("table", &table_word(*table, language)),
+            ],
+        ),
+        DeviceProblem::SingleWriteTooWide { row, code, span } => fill(
+            DeviceText::ProblemSingleWriteTooWide,
+            &[
+                ("row", &row.to_string()),
+                ("code", &code.to_string()),
+                ("span", &span.to_string()),
+            ],
+        ),
+        DeviceProblem::TriggerVariableWithoutEdge { row } => fill(
+            DeviceText::ProblemTriggerVariableWithoutEdge,
+            &[("row", &row.to_string())],
+        ),
+        DeviceProblem::EdgeWithoutTriggerVariable { row } => fill(
+            DeviceText::ProblemEdgeWithoutTriggerVariable,
+            &[("row", &row.to_string())],
+        ),
+        DeviceProblem::OnErrorOnWrite { row } => fill(
+            DeviceText::ProblemOnErrorOnWrite,
+            &[("row", &row.to_string())],
+        ),
+        DeviceProblem::EmptyDevice => fill(DeviceText::ProblemEmptyDevice, &[]),
+        DeviceProblem::UnsupportedBaudRate(baud_rate) => fill(
+            DeviceText::ProblemUnsupportedBaudRate,
+            &[("baud_rate", &baud_rate.to_string())],
+        ),
+        DeviceProblem::UnsupportedDataBits(data_bits) => fill(
+            DeviceText::ProblemUnsupportedDataBits,
+            &[("data_bits", &data_bits.to_string())],
+        ),
+        DeviceProblem::UnsupportedStopBits(stop_bits) => fill(
+            DeviceText::ProblemUnsupportedStopBits,
+            &[("stop_bits", &stop_bits.to_string())],
+        ),
+        DeviceProblem::InterFrameDelayTooLong(delay_us) => fill(
+            DeviceText::ProblemInterFrameDelayTooLong,
+            &[("delay_us", &delay_us.to_string())],
+        ),
         DeviceProblem::NoSuchTask(task) => fill(DeviceText::ProblemNoSuchTask, &[("task", task)]),
         DeviceProblem::EmptyUnit => fill(DeviceText::ProblemEmptyUnit, &[]),
         DeviceProblem::NotFinite { field } => {
@@ -240,6 +335,7 @@ fn word(english: &str, language: Language) -> String {
         "controller" => DeviceText::WordController,
         "I/O area" => DeviceText::WordIoArea,
         "Modbus device" => DeviceText::WordModbusDevice,
+        "serial port" => DeviceText::WordSerialPort,
         "axis" => DeviceText::WordAxis,
         "modulo period" => DeviceText::WordModuloPeriod,
         "negative software limit" => DeviceText::WordNegativeSoftwareLimit,

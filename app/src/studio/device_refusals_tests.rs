@@ -56,6 +56,53 @@ fn every_refusal() -> Vec<Refusal> {
             table: ModbusTable::Coil,
             data_type: ModbusDataType::Real,
         },
+        DeviceProblem::EmptySerialPort,
+        DeviceProblem::NoSuchSerialPort("RS232".into()),
+        DeviceProblem::RtuWithoutTask,
+        DeviceProblem::RtuUnitId(0),
+        DeviceProblem::TimeoutTooLong(60_001),
+        DeviceProblem::PollIntervalTooLong(3_600_001),
+        DeviceProblem::MissingPollInterval,
+        DeviceProblem::ReadGapTooLarge(126),
+        DeviceProblem::ZeroCount { row: 2 },
+        DeviceProblem::ChannelTooLong {
+            row: 1,
+            count: 62,
+            span: 124,
+            limit: 123,
+        },
+        DeviceProblem::WriteToReadOnlyTable {
+            row: 3,
+            table: ModbusTable::InputRegister,
+        },
+        DeviceProblem::WriteToReadOnlyTable {
+            row: 3,
+            table: ModbusTable::DiscreteInput,
+        },
+        DeviceProblem::FunctionCodeOnRead { row: 1, code: 3 },
+        DeviceProblem::FunctionCodeMisfit {
+            row: 1,
+            code: 6,
+            table: ModbusTable::Coil,
+        },
+        DeviceProblem::FunctionCodeMisfit {
+            row: 1,
+            code: 5,
+            table: ModbusTable::HoldingRegister,
+        },
+        DeviceProblem::SingleWriteTooWide {
+            row: 4,
+            code: 6,
+            span: 2,
+        },
+        DeviceProblem::TriggerVariableWithoutEdge { row: 1 },
+        DeviceProblem::EdgeWithoutTriggerVariable { row: 1 },
+        DeviceProblem::OnErrorOnWrite { row: 2 },
+        DeviceProblem::EmptyDevice,
+        DeviceProblem::UnsupportedBaudRate(14400),
+        DeviceProblem::UnsupportedDataBits(6),
+        DeviceProblem::UnsupportedStopBits(3),
+        DeviceProblem::InterFrameDelayTooLong(1_000_001),
         DeviceProblem::NoSuchTask("Fast".into()),
         DeviceProblem::EmptyUnit,
         DeviceProblem::ModuloNotPositive(0.0),
@@ -64,7 +111,13 @@ fn every_refusal() -> Vec<Refusal> {
             max: -2.5,
         },
     ];
-    for kind in ["controller", "I/O area", "Modbus device", "axis"] {
+    for kind in [
+        "controller",
+        "I/O area",
+        "serial port",
+        "Modbus device",
+        "axis",
+    ] {
         let name = "1st".to_owned();
         problems.push(DeviceProblem::InvalidName {
             kind,
@@ -184,6 +237,7 @@ fn every_kind_and_field_word_the_checks_use_has_chinese_words() {
         "controller",
         "I/O area",
         "Modbus device",
+        "serial port",
         "axis",
         "modulo period",
         "negative software limit",

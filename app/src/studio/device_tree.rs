@@ -502,7 +502,7 @@ impl TreeUi<'_> {
         let label = Text::ModbusDevices.get(language);
         self.branch(ui, TreeNode::ModbusDevices, "MB", label, "", |tree, ui| {
             for device in &project.modbus_devices {
-                let detail = format!("{}:{} #{}", device.host, device.port, device.unit_id);
+                let detail = format!("{} #{}", device.link, device.unit_id);
                 tree.leaf(
                     ui,
                     TreeNode::ModbusDevice(device.name.clone()),

@@ -300,6 +300,7 @@ fn part_text(part: IgnoredPart) -> ImportText {
         IgnoredPart::Controller => ImportText::PartController,
         IgnoredPart::Dialect => ImportText::PartDialect,
         IgnoredPart::IoAreas => ImportText::PartIoAreas,
+        IgnoredPart::SerialPorts => ImportText::PartSerialPorts,
         IgnoredPart::ModbusDevices => ImportText::PartModbusDevices,
         IgnoredPart::Axes => ImportText::PartAxes,
     }

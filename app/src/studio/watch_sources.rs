@@ -60,20 +60,13 @@ mod tests {
 
     fn device_bound_to(variable: &str) -> ModbusDevice {
         ModbusDevice {
-            name: "Drive".to_owned(),
-            host: "127.0.0.1".to_owned(),
-            port: 502,
-            unit_id: 1,
-            word_order: project_model::WordOrder::HighFirst,
-            poll_interval_ms: 100,
-            timeout_ms: 500,
-            bindings: vec![project_model::ModbusBinding {
-                variable: variable.to_owned(),
-                table: project_model::ModbusTable::HoldingRegister,
-                address: 0,
-                data_type: project_model::ModbusDataType::Int16,
-                comment: String::new(),
-            }],
+            bindings: vec![project_model::ModbusBinding::new(
+                variable,
+                project_model::ModbusTable::HoldingRegister,
+                0,
+                project_model::ModbusDataType::Int16,
+            )],
+            ..ModbusDevice::tcp("Drive", "127.0.0.1", 502)
         }
     }
 

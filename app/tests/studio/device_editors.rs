@@ -179,7 +179,7 @@ fn the_modbus_device_editor_edits_settings_and_channels_and_refuses_what_does_no
     let drive = |harness: &Harness<'_, StudioApp>| project(harness).modbus_devices[0].clone();
 
     enter_text(&mut harness, "Poll interval of BeltDrive", "250");
-    assert_eq!(drive(&harness).poll_interval_ms, 250);
+    assert_eq!(drive(&harness).poll_interval_ms, Some(250));
     enter_text(&mut harness, "Timeout of BeltDrive", "0");
     assert_refused(&harness, "the timeout is at least 1 ms");
     enter_text(&mut harness, "Unit id of BeltDrive", "300");
@@ -227,7 +227,7 @@ fn the_modbus_device_editor_edits_settings_and_channels_and_refuses_what_does_no
     undo(&mut harness);
     undo(&mut harness);
     assert_eq!(drive(&harness).bindings.len(), 2);
-    assert_eq!(drive(&harness).poll_interval_ms, 100);
+    assert_eq!(drive(&harness).poll_interval_ms, Some(100));
 }
 
 #[test]

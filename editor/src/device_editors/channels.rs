@@ -138,22 +138,12 @@ fn new_binding(
         .iter()
         .filter(|binding| binding.table == table)
         .map(|binding| {
-            let width = if table.holds_bits() {
-                1
-            } else {
-                binding.data_type.width()
-            };
-            binding.address.saturating_add(width)
+            let span = u16::try_from(binding.span()).unwrap_or(u16::MAX);
+            binding.address.saturating_add(span)
         })
         .max()
         .unwrap_or(0);
-    Ok(ModbusBinding {
-        variable: variable.to_owned(),
-        table,
-        address,
-        data_type,
-        comment: String::new(),
-    })
+    Ok(ModbusBinding::new(variable, table, address, data_type))
 }
 
 /// The data type a channel moved to `table` gets: BOOL in a bit table; in a register table,

@@ -1,8 +1,9 @@
-//! The editor of a Modbus TCP device: its address, unit, word order, timing and channel table.
+//! The editor of a Modbus device: its address, unit, word order, timing and channel table.
 
 use egui::Ui;
 use project_model::{
-    Edit, ListEdit, ModbusBinding, ModbusDevice, Project, WordOrder, modbus_device_problems,
+    Edit, ListEdit, ModbusBinding, ModbusDevice, ModbusLink, Project, WordOrder,
+    modbus_device_problems,
 };
 
 use super::channels::channels_ui;
@@ -22,7 +23,6 @@ pub fn modbus_device_editor_ui(
     let device = project.modbus_devices.get(index)?;
     state.follow(device);
     let node = device.name.as_str();
-    let devices = &project.modbus_devices;
     let replace = |label: String, item: ModbusDevice| {
         // Deleting a channel brings no problem, but it renumbers the rows old problems name,
         // which would make them look new.
@@ -31,7 +31,7 @@ pub fn modbus_device_editor_ui(
             if deleted {
                 Vec::new()
             } else {
-                modbus_device_problems(devices, Some(index), device)
+                modbus_device_problems(project, Some(index), device)
             }
         };
         checked_edit(label, device, item, problems, |item| {
@@ -45,14 +45,26 @@ pub fn modbus_device_editor_ui(
     let milliseconds = texts.milliseconds.as_str();
     let mut form = Form::node(state, texts, device, node, &replace);
     form.grid_ui(ui, ("modbus device editor", index), |form, ui| {
-        form.field("host", &texts.host, 160.0)
-            .text_ui(ui, &device.host, |item, host| item.host = host);
-        form.field("port", &texts.port, 60.0).whole_ui(
-            ui,
-            device.port,
-            0..=u16::MAX,
-            |item, port| item.port = port,
-        );
+        // The fields of an RTU device's serial port and of the master's settings are issue 19's
+        // editor part; until then an RTU device shows no link fields.
+        if let ModbusLink::Tcp { host, port } = &device.link {
+            form.field("host", &texts.host, 160.0)
+                .text_ui(ui, host, |item, host| {
+                    if let ModbusLink::Tcp { host: old, .. } = &mut item.link {
+                        *old = host;
+                    }
+                });
+            form.field("port", &texts.port, 60.0).whole_ui(
+                ui,
+                *port,
+                0..=u16::MAX,
+                |item, port| {
+                    if let ModbusLink::Tcp { port: old, .. } = &mut item.link {
+                        *old = port;
+                    }
+                },
+            );
+        }
         form.field("unit", &texts.unit_id, 60.0).whole_ui(
             ui,
             device.unit_id,
@@ -67,9 +79,12 @@ pub fn modbus_device_editor_ui(
         );
         form.field("poll", &texts.poll_interval, 60.0)
             .suffix(milliseconds)
-            .whole_ui(ui, device.poll_interval_ms, 0..=u32::MAX, |item, poll| {
-                item.poll_interval_ms = poll;
-            });
+            .whole_ui(
+                ui,
+                device.poll_interval_ms.unwrap_or(0),
+                0..=u32::MAX,
+                |item, poll| item.poll_interval_ms = Some(poll),
+            );
         form.field("timeout", &texts.timeout, 60.0)
             .suffix(milliseconds)
             .whole_ui(ui, device.timeout_ms, 0..=u32::MAX, |item, timeout| {

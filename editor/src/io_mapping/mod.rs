@@ -162,7 +162,7 @@ fn variable_link_ui(ui: &mut Ui, variable: &LocatedVariable, output: &mut IoMapp
     }
 }
 
-/// One Modbus TCP device and its bindings.
+/// One Modbus device and its bindings.
 fn device_ui(
     ui: &mut Ui,
     index: usize,
@@ -171,9 +171,13 @@ fn device_ui(
     texts: &TableTexts,
     output: &mut IoMappingOutput,
 ) {
+    let protocol = match device.link {
+        project_model::ModbusLink::Tcp { .. } => "TCP",
+        project_model::ModbusLink::Rtu { .. } => "RTU",
+    };
     let title = format!(
-        "{} (Modbus TCP {}:{}, unit {})",
-        device.name, device.host, device.port, device.unit_id
+        "{} (Modbus {protocol} {}, unit {})",
+        device.name, device.link, device.unit_id
     );
     CollapsingHeader::new(title)
         .id_salt(("modbus_device", index))

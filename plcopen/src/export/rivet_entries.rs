@@ -31,6 +31,7 @@ impl ProjectWriter<'_> {
             controller: project.controller.clone(),
             tasks: project.tasks.clone(),
             io_areas: project.io_areas.clone(),
+            serial_ports: project.serial_ports.clone(),
             modbus_devices: project.modbus_devices.clone(),
             axes: project.axes.clone(),
             nodes: nodes

@@ -94,6 +94,53 @@ fn the_example_project_round_trips_through_a_valid_document() {
 }
 
 #[test]
+fn serial_ports_and_runtime_modbus_devices_round_trip_in_rivets_data() {
+    use project_model::{
+        ChannelDirection, ChannelTrigger, ModbusBinding, ModbusDataType, ModbusLink,
+        ModbusSchedule, ModbusTable, Parity, SerialPort,
+    };
+
+    let mut project = project_model::load_project(&assets::example_project_dir())
+        .unwrap()
+        .project;
+    project.serial_ports.push(SerialPort {
+        parity: Parity::Odd,
+        inter_frame_delay_us: 5000,
+        ..SerialPort::new("RS485", "/dev/ttyUSB0")
+    });
+    project
+        .serial_ports
+        .push(SerialPort::new("RS232", "/dev/ttyS0"));
+    let mut device = project.modbus_devices[0].clone();
+    device.name = "TempController".into();
+    device.link = ModbusLink::Rtu {
+        serial_port: "RS485".into(),
+    };
+    device.poll_interval_ms = None;
+    device.task = Some("MainTask".into());
+    device.schedule = ModbusSchedule::EveryCycle;
+    device.max_read_gap = 3;
+    device.status = Some("GVL_Machine.stTemp".into());
+    let mut channel = ModbusBinding::new(
+        "GVL_Machine.xPulse",
+        ModbusTable::Coil,
+        4,
+        ModbusDataType::Bool,
+    );
+    channel.direction = ChannelDirection::Write;
+    channel.function_code = Some(5);
+    channel.trigger = ChannelTrigger::RisingEdge;
+    channel.trigger_variable = Some("GVL_Machine.xSend".into());
+    channel.error_flag = Some("GVL_Machine.xPulseError".into());
+    device.bindings.push(channel);
+    project.modbus_devices.push(device);
+    let xml = assert_round_trip(&project, "runtime Modbus devices");
+    let text = String::from_utf8(xml).unwrap();
+    assert!(text.contains("[[serial_port]]"), "{text}");
+    assert!(text.contains("serial_port = \"RS485\""), "{text}");
+}
+
+#[test]
 fn every_corpus_project_round_trips_through_a_valid_document() {
     for file in FILES {
         let document = read_corpus(file);

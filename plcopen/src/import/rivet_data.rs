@@ -441,6 +441,7 @@ impl Converter<'_> {
         project.controller = entry.controller;
         project.tasks = entry.tasks;
         project.io_areas = entry.io_areas;
+        project.serial_ports = entry.serial_ports;
         project.modbus_devices = entry.modbus_devices;
         project.axes = entry.axes;
         self.keep_task_vendor_data();

@@ -12,12 +12,17 @@ mod controller;
 mod io_area;
 mod modbus;
 mod problem;
+mod serial_port;
 
 pub use axis::axis_problems;
 pub use controller::{controller_problems, map_range_problems};
 pub use io_area::{LOCATED_AREA_BYTES, io_area_problems};
-pub use modbus::{binding_problems, modbus_device_problems};
+pub use modbus::{
+    MAX_POLL_INTERVAL_MS, MAX_READ_GAP, MAX_TIMEOUT_MS, binding_problems, modbus_device_problems,
+    request_limit,
+};
 pub use problem::DeviceProblem;
+pub use serial_port::serial_port_problems;
 
 use crate::{Project, is_valid_identifier, same_identifier};
 
@@ -48,8 +53,16 @@ pub fn device_problems(project: &Project) -> Vec<(String, DeviceProblem)> {
                 .map(of(format!("I/O area '{}'", area.name))),
         );
     }
+    for (index, port) in project.serial_ports.iter().enumerate() {
+        let found = serial_port_problems(&project.serial_ports, Some(index), port);
+        problems.extend(
+            found
+                .into_iter()
+                .map(of(format!("serial port '{}'", port.name))),
+        );
+    }
     for (index, device) in project.modbus_devices.iter().enumerate() {
-        let found = modbus_device_problems(&project.modbus_devices, Some(index), device);
+        let found = modbus_device_problems(project, Some(index), device);
         problems.extend(
             found
                 .into_iter()
@@ -109,6 +122,33 @@ mod tests {
     fn the_example_project_has_no_device_problem() {
         let loaded = crate::load_project(&assets::example_project_dir()).unwrap();
         assert_eq!(device_problems(&loaded.project), Vec::new());
+    }
+
+    #[test]
+    fn the_problems_of_serial_ports_are_listed_by_port_before_the_devices() {
+        let mut project = crate::load_project(&assets::example_project_dir())
+            .unwrap()
+            .project;
+        let mut port = crate::SerialPort::new("RS485", "");
+        port.stop_bits = 3;
+        project.serial_ports.push(port);
+        project.modbus_devices[0].link = crate::ModbusLink::Rtu {
+            serial_port: "RS232".into(),
+        };
+        let node = |name: &str| format!("serial port '{name}'");
+        let device = "Modbus device 'BeltDrive'".to_owned();
+        assert_eq!(
+            device_problems(&project),
+            [
+                (node("RS485"), DeviceProblem::EmptyDevice),
+                (node("RS485"), DeviceProblem::UnsupportedStopBits(3)),
+                (
+                    device.clone(),
+                    DeviceProblem::NoSuchSerialPort("RS232".into())
+                ),
+                (device, DeviceProblem::RtuWithoutTask),
+            ]
+        );
     }
 
     #[test]

@@ -117,7 +117,7 @@ pub enum DeviceProblem {
         /// Its first address.
         address: u16,
         /// How many coils or registers it takes.
-        width: u16,
+        width: u32,
     },
     /// Two channels of the same table sharing addresses.
     #[error(
@@ -147,6 +147,141 @@ pub enum DeviceProblem {
         /// The data type.
         data_type: ModbusDataType,
     },
+    /// An RTU device whose serial port is not chosen.
+    #[error("the serial port is empty: choose one of the project's serial ports")]
+    EmptySerialPort,
+    /// An RTU device naming a serial port the project does not have.
+    #[error("there is no serial port named '{0}': add it under the controller or choose another")]
+    NoSuchSerialPort(String),
+    /// An RTU device without an I/O task, which nothing would poll.
+    #[error(
+        "a Modbus RTU device needs an I/O task: the studio does not poll serial ports, the runtime does"
+    )]
+    RtuWithoutTask,
+    /// An RTU device's unit id outside 1 to 247.
+    #[error("unit id {0} cannot be used on a serial line: enter 1 to 247")]
+    RtuUnitId(u8),
+    /// A timeout above 60000 ms.
+    #[error("the timeout is {0} ms; it is at most 60000 ms")]
+    TimeoutTooLong(u32),
+    /// A poll interval above one hour.
+    #[error("the poll interval is {0} ms; it is at most 3600000 ms (one hour)")]
+    PollIntervalTooLong(u32),
+    /// No poll interval where the device needs one.
+    #[error(
+        "the poll interval is missing: every device needs one but a Modbus RTU device polled every cycle"
+    )]
+    MissingPollInterval,
+    /// A read gap above 125.
+    #[error("the maximum read gap is {0}; it is at most 125")]
+    ReadGapTooLarge(u16),
+    /// A channel of no value.
+    #[error("channel {row} has a count of 0: bind at least 1 value")]
+    ZeroCount {
+        /// The channel's number, from 1.
+        row: usize,
+    },
+    /// A channel larger than one request carries.
+    #[error(
+        "channel {row}: {count} values take {span} coils or registers, more than one request carries ({limit})"
+    )]
+    ChannelTooLong {
+        /// The channel's number, from 1.
+        row: usize,
+        /// The channel's count.
+        count: u16,
+        /// The coils or registers the channel takes.
+        span: u32,
+        /// The most one request of its table and direction carries.
+        limit: u32,
+    },
+    /// A write channel on a table that cannot be written.
+    #[error(
+        "channel {row} writes to the {} table, which is read-only: only coils and holding registers can be written",
+        table_name(*table)
+    )]
+    WriteToReadOnlyTable {
+        /// The channel's number, from 1.
+        row: usize,
+        /// The table.
+        table: ModbusTable,
+    },
+    /// A function code on a read channel, whose code follows from its table.
+    #[error(
+        "channel {row} reads, so it takes no function code ({code}): a read uses its table's code"
+    )]
+    FunctionCodeOnRead {
+        /// The channel's number, from 1.
+        row: usize,
+        /// The code given.
+        code: u8,
+    },
+    /// A function code that cannot write the channel's table.
+    #[error(
+        "channel {row}: function code {code} cannot write the {} table; use 5 or 15 for coils, 6 or 16 for holding registers",
+        table_name(*table)
+    )]
+    FunctionCodeMisfit {
+        /// The channel's number, from 1.
+        row: usize,
+        /// The code given.
+        code: u8,
+        /// The channel's table.
+        table: ModbusTable,
+    },
+    /// A single-write function code (5 or 6) on a channel of more than one coil or register.
+    #[error(
+        "channel {row}: function code {code} writes one coil or register, but the channel takes {span}; use 15 or 16"
+    )]
+    SingleWriteTooWide {
+        /// The channel's number, from 1.
+        row: usize,
+        /// The code given.
+        code: u8,
+        /// The coils or registers the channel takes.
+        span: u32,
+    },
+    /// A trigger variable on a cyclic channel.
+    #[error(
+        "channel {row} has a trigger variable but a cyclic trigger: choose the rising edge trigger or remove the variable"
+    )]
+    TriggerVariableWithoutEdge {
+        /// The channel's number, from 1.
+        row: usize,
+    },
+    /// A rising edge trigger without its variable.
+    #[error(
+        "channel {row} is triggered by a rising edge but has no trigger variable: enter the path of a BOOL"
+    )]
+    EdgeWithoutTriggerVariable {
+        /// The channel's number, from 1.
+        row: usize,
+    },
+    /// An error action on a write channel, which has no value to keep or zero.
+    #[error(
+        "channel {row} writes, so 'on error' does not apply: it chooses what a read channel's variable holds"
+    )]
+    OnErrorOnWrite {
+        /// The channel's number, from 1.
+        row: usize,
+    },
+    /// A serial port without a device file.
+    #[error("the device file is empty: enter the port's device, such as /dev/ttyUSB0")]
+    EmptyDevice,
+    /// A baud rate the runtime does not offer.
+    #[error(
+        "{0} baud is not offered: choose 1200, 2400, 4800, 9600, 19200, 38400, 57600, 115200 or 230400"
+    )]
+    UnsupportedBaudRate(u32),
+    /// Data bits other than 7 or 8.
+    #[error("{0} data bits cannot be used: enter 8 (Modbus RTU sends 8 data bits)")]
+    UnsupportedDataBits(u8),
+    /// Stop bits other than 1 or 2.
+    #[error("{0} stop bits cannot be used: enter 1 or 2")]
+    UnsupportedStopBits(u8),
+    /// An inter-frame delay above one second.
+    #[error("the inter-frame delay is {0} µs; it is at most 1000000 µs (1 s)")]
+    InterFrameDelayTooLong(u32),
     /// An axis updated by a task that does not exist.
     #[error("there is no task named '{0}' to update the axis")]
     NoSuchTask(String),

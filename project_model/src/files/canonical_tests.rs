@@ -230,3 +230,182 @@ fn il_bodies_are_saved_in_il_files_beside_the_pou_and_load_back_unchanged() {
     let second = save_project(&loaded.project, dir.path(), &loaded.files).unwrap();
     assert!(second.written.is_empty(), "rewrote {:?}", second.written);
 }
+
+#[test]
+fn serial_ports_and_runtime_devices_are_saved_in_canonical_order_and_load_back_equal() {
+    use std::collections::BTreeSet;
+
+    use crate::{
+        ChannelDirection, ChannelErrorAction, ChannelTrigger, ModbusBinding, ModbusDataType,
+        ModbusDevice, ModbusLink, ModbusSchedule, ModbusTable, Parity, Project, SerialPort,
+        WordOrder, load_project, save_project,
+    };
+
+    let mut temperatures = ModbusBinding::new(
+        "GVL_Io.aiTemperatures",
+        ModbusTable::InputRegister,
+        0,
+        ModbusDataType::Int16,
+    );
+    temperatures.count = 8;
+    temperatures.on_error = ChannelErrorAction::SetToZero;
+    temperatures.error_flag = Some("GVL_Io.xTempError".into());
+    let mut setpoint = ModbusBinding::new(
+        "GVL_Io.iSetpoint",
+        ModbusTable::HoldingRegister,
+        10,
+        ModbusDataType::Int16,
+    );
+    setpoint.direction = ChannelDirection::Write;
+    setpoint.function_code = Some(6);
+    setpoint.trigger = ChannelTrigger::RisingEdge;
+    setpoint.trigger_variable = Some("GVL_Io.xSend".into());
+    setpoint.comment = "Sent on a rising edge".into();
+    let project = Project {
+        serial_ports: vec![SerialPort {
+            parity: Parity::None,
+            stop_bits: 2,
+            inter_frame_delay_us: 5000,
+            ..SerialPort::new("RS485", "/dev/ttyUSB0")
+        }],
+        modbus_devices: vec![
+            ModbusDevice {
+                name: "BeltDrive".into(),
+                link: ModbusLink::Tcp {
+                    host: "127.0.0.1".into(),
+                    port: 5502,
+                },
+                unit_id: 1,
+                word_order: WordOrder::HighFirst,
+                poll_interval_ms: Some(10),
+                timeout_ms: 100,
+                task: Some("MainTask".into()),
+                schedule: ModbusSchedule::Interval,
+                max_read_gap: 4,
+                status: Some("GVL_Io.stBeltDrive".into()),
+                bindings: Vec::new(),
+            },
+            ModbusDevice {
+                name: "TempController".into(),
+                link: ModbusLink::Rtu {
+                    serial_port: "RS485".into(),
+                },
+                unit_id: 3,
+                word_order: WordOrder::LowFirst,
+                poll_interval_ms: None,
+                timeout_ms: 200,
+                task: Some("MainTask".into()),
+                schedule: ModbusSchedule::EveryCycle,
+                max_read_gap: 0,
+                status: None,
+                bindings: vec![temperatures, setpoint],
+            },
+        ],
+        ..Project::default()
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let first = save_project(&project, dir.path(), &BTreeSet::new()).unwrap();
+    let manifest = std::fs::read_to_string(dir.path().join("rivet.toml")).unwrap();
+    let devices = &manifest[manifest.find("[[serial_port]]").unwrap()..];
+    assert_eq!(
+        devices,
+        r#"[[serial_port]]
+name = "RS485"
+device = "/dev/ttyUSB0"
+baud_rate = 19200
+parity = "none"
+data_bits = 8
+stop_bits = 2
+inter_frame_delay_us = 5000
+
+[[modbus_device]]
+name = "BeltDrive"
+host = "127.0.0.1"
+port = 5502
+unit_id = 1
+word_order = "high_first"
+poll_interval_ms = 10
+timeout_ms = 100
+task = "MainTask"
+max_read_gap = 4
+status = "GVL_Io.stBeltDrive"
+
+[[modbus_device]]
+name = "TempController"
+serial_port = "RS485"
+unit_id = 3
+word_order = "low_first"
+timeout_ms = 200
+task = "MainTask"
+schedule = "every_cycle"
+
+[[modbus_device.binding]]
+variable = "GVL_Io.aiTemperatures"
+table = "input_register"
+address = 0
+data_type = "int16"
+count = 8
+on_error = "set_to_zero"
+error_flag = "GVL_Io.xTempError"
+
+[[modbus_device.binding]]
+variable = "GVL_Io.iSetpoint"
+table = "holding_register"
+address = 10
+data_type = "int16"
+direction = "write"
+function_code = 6
+trigger = "rising_edge"
+trigger_variable = "GVL_Io.xSend"
+comment = "Sent on a rising edge"
+"#
+    );
+    let loaded = load_project(dir.path()).unwrap();
+    assert_eq!(loaded.project, project);
+    let second = save_project(&loaded.project, dir.path(), &loaded.files).unwrap();
+    assert!(
+        second.written.is_empty(),
+        "{:?} after {:?}",
+        second.written,
+        first.written
+    );
+}
+
+#[test]
+fn a_studio_device_leaves_every_new_key_out() {
+    use crate::{ModbusBinding, ModbusDataType, ModbusDevice, ModbusLink, ModbusTable};
+
+    let text = r#"name = "BeltDrive"
+host = "192.168.1.50"
+port = 502
+unit_id = 1
+word_order = "high_first"
+poll_interval_ms = 100
+timeout_ms = 500
+
+[[binding]]
+variable = "GVL_Machine.rBeltSpeedActual"
+table = "input_register"
+address = 0
+data_type = "real"
+"#;
+    let device: ModbusDevice = toml::from_str(text).unwrap();
+    assert_eq!(
+        device.link,
+        ModbusLink::Tcp {
+            host: "192.168.1.50".into(),
+            port: 502
+        }
+    );
+    assert!(!device.is_runtime_device());
+    assert_eq!(
+        device.bindings,
+        [ModbusBinding::new(
+            "GVL_Machine.rBeltSpeedActual",
+            ModbusTable::InputRegister,
+            0,
+            ModbusDataType::Real
+        )]
+    );
+    assert_eq!(super::to_canonical_toml(&device).unwrap(), text);
+}

@@ -127,6 +127,7 @@ impl Loader<'_> {
             controller: manifest.controller,
             tasks: manifest.tasks,
             io_areas: manifest.io_areas,
+            serial_ports: manifest.serial_ports,
             modbus_devices: manifest.modbus_devices,
             axes: manifest.axes,
             dialect: manifest.dialect,

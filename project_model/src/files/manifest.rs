@@ -3,7 +3,7 @@
 use serde::{Deserialize, Serialize};
 use toml::Spanned;
 
-use crate::{Axis, Controller, Dialect, IoArea, ModbusDevice, Task};
+use crate::{Axis, Controller, Dialect, IoArea, ModbusDevice, SerialPort, Task};
 
 /// The manifest's fields in file order.
 ///
@@ -25,6 +25,8 @@ pub(crate) struct Manifest {
     pub tasks: Vec<Task>,
     #[serde(default, rename = "io_area", skip_serializing_if = "Vec::is_empty")]
     pub io_areas: Vec<IoArea>,
+    #[serde(default, rename = "serial_port", skip_serializing_if = "Vec::is_empty")]
+    pub serial_ports: Vec<SerialPort>,
     #[serde(
         default,
         rename = "modbus_device",

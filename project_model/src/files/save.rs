@@ -140,6 +140,7 @@ fn render(
         controller: project.controller.clone(),
         tasks: project.tasks.clone(),
         io_areas: project.io_areas.clone(),
+        serial_ports: project.serial_ports.clone(),
         modbus_devices: project.modbus_devices.clone(),
         axes: project.axes.clone(),
     };

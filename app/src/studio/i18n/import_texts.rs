@@ -48,6 +48,7 @@ pub enum ImportText {
     PartController,
     PartDialect,
     PartIoAreas,
+    PartSerialPorts,
     PartModbusDevices,
     PartAxes,
     // The buttons and what they lead to.
@@ -119,6 +120,7 @@ impl ImportText {
             Self::PartController => ("controller", "控制器"),
             Self::PartDialect => ("language dialect", "语言方言"),
             Self::PartIoAreas => ("I/O areas", "输入/输出区"),
+            Self::PartSerialPorts => ("serial ports", "串口"),
             Self::PartModbusDevices => ("Modbus devices", "Modbus 设备"),
             Self::PartAxes => ("axes", "轴"),
             Self::IntoProject => ("Import into this project", "导入到当前项目"),

@@ -98,8 +98,10 @@ impl DeviceLinks {
         paths: &[String],
         wake: &Waker,
     ) {
+        // The studio polls TCP devices only: the runtime polls serial lines.
         let wanted: Vec<&ModbusDevice> = devices
             .iter()
+            .filter(|device| matches!(device.link, project_model::ModbusLink::Tcp { .. }))
             .filter(|device| {
                 paths.iter().any(|path| {
                     device
@@ -288,7 +290,7 @@ fn start(handle: &tokio::runtime::Handle, config: ModbusDevice, wake: Waker) -> 
             wake();
             sent
         };
-        let interval = Duration::from_millis(u64::from(device.poll_interval_ms.max(10)));
+        let interval = Duration::from_millis(u64::from(device.studio_poll_interval_ms().max(10)));
         loop {
             let mut connected: Device = match crate::modbus_devices::connect(&device).await {
                 Ok(connected) => connected,

@@ -76,7 +76,8 @@ impl Online {
             .find(|d| d.name == device_name)
             .ok_or(self.text(Text::DeviceGone))?;
         let interval = Duration::from_millis(
-            u64::from(device.poll_interval_ms.max(10)) * u64::from(config.every_n_cycles.max(1)),
+            u64::from(device.studio_poll_interval_ms().max(10))
+                * u64::from(config.every_n_cycles.max(1)),
         );
         let samples = usize::try_from(config.record_count)
             .unwrap_or(usize::MAX)

@@ -3,7 +3,7 @@
 use project_model::{
     Axis, AxisKind, AxisLimits, AxisScaling, CamTable, DataType, GlobalVarList, IoArea,
     IoDirection, ModbusDevice, Object, Pou, PouKind, Project, SoftwareLimits, Task, TaskKind,
-    TraceConfig, TypeDefinition, WatchList, WordOrder,
+    TraceConfig, TypeDefinition, WatchList,
 };
 
 use super::body_language::BodyLanguage;
@@ -149,16 +149,7 @@ pub fn new_io_area(project: &Project, name: String) -> IoArea {
 
 /// A Modbus TCP device on the standard port without bindings.
 pub fn new_modbus_device(name: String) -> ModbusDevice {
-    ModbusDevice {
-        name,
-        host: "192.168.1.10".to_owned(),
-        port: 502,
-        unit_id: 1,
-        word_order: WordOrder::default(),
-        poll_interval_ms: 100,
-        timeout_ms: 500,
-        bindings: Vec::new(),
-    }
+    ModbusDevice::tcp(name, "192.168.1.10", 502)
 }
 
 /// A linear virtual axis in millimetres, updated by the first task.
