@@ -14,6 +14,7 @@ mod exception;
 mod frame;
 mod map;
 mod map_slot;
+pub mod master;
 mod pdu;
 mod server;
 mod write_policy;
