@@ -100,6 +100,16 @@ impl Master {
     ) -> Result<MasterHandle, MasterError> {
         let section = image.modbus_master.clone().unwrap_or_default();
         let places = resolve_section(image, &section)?;
+        // `--serial-port NAME=PATH`: this machine's device file of a port, by its name. The
+        // section itself stays as the image has it, for an online change to compare.
+        let mut serial_ports = section.serial_ports.clone();
+        for (name, path) in &options.serial_ports {
+            for port in &mut serial_ports {
+                if port.name.eq_ignore_ascii_case(name) {
+                    port.device.clone_from(path);
+                }
+            }
+        }
         let exchanges: Vec<Arc<DeviceExchange>> = section
             .devices
             .iter()
@@ -148,11 +158,9 @@ impl Master {
                 }
                 Link::Rtu { serial_port } => {
                     // This build has no serial lines: the device reports its port as failed.
-                    let port = handle
-                        .section
-                        .serial_ports
+                    let port = serial_ports
                         .get(*serial_port as usize)
-                        .map_or("?", |port| port.name.as_str());
+                        .map_or("?", |port| port.device.as_str());
                     let mut status = lock(&handle.statuses[index]);
                     status.state = DeviceState::SerialPortError;
                     status.last_error = error_codes::SERIAL_PORT_ERROR;

@@ -3,7 +3,7 @@
 //! build too (tokio-modbus's convenience readers would).
 
 use std::sync::Arc;
-use std::sync::atomic::{AtomicU8, Ordering};
+use std::sync::atomic::{AtomicU8, AtomicU32, Ordering};
 
 use program_image::modbus_master::Schedule;
 use runtime::areas::LocatedAreas;
@@ -21,12 +21,21 @@ const SHORT_COUNT: u8 = 1;
 const WRONG_ECHO: u8 = 2;
 /// Answers a read from holding register 2 with exception 2.
 const EXCEPTION: u8 = 3;
+/// Answers nothing (a device slower than any timeout).
+const SILENT: u8 = 4;
 
 /// What every register of the fake slave holds.
 const VALUE: i16 = 4;
 
-/// Serves connections on a runtime of its own, answering as `mode` says.
-fn fake_slave(mode: Arc<AtomicU8>) -> (std::net::SocketAddr, tokio::runtime::Runtime) {
+/// A fake slave: how it answers, and how many writes to holding register 20 it received.
+#[derive(Clone, Default)]
+pub(super) struct Fake {
+    mode: Arc<AtomicU8>,
+    pub(super) writes_to_20: Arc<AtomicU32>,
+}
+
+/// Serves connections on a runtime of its own, answering as `fake` says.
+pub(super) fn fake_slave(fake: &Fake) -> (std::net::SocketAddr, tokio::runtime::Runtime) {
     let runtime = tokio::runtime::Builder::new_multi_thread()
         .worker_threads(1)
         .enable_all()
@@ -36,16 +45,17 @@ fn fake_slave(mode: Arc<AtomicU8>) -> (std::net::SocketAddr, tokio::runtime::Run
         .block_on(tokio::net::TcpListener::bind("127.0.0.1:0"))
         .unwrap();
     let address = listener.local_addr().unwrap();
+    let fake = fake.clone();
     runtime.spawn(async move {
         while let Ok((stream, _)) = listener.accept().await {
-            tokio::spawn(answer(stream, Arc::clone(&mode)));
+            tokio::spawn(answer(stream, fake.clone()));
         }
     });
     (address, runtime)
 }
 
 /// Answers the requests of one connection until it closes.
-async fn answer(mut stream: tokio::net::TcpStream, mode: Arc<AtomicU8>) {
+async fn answer(mut stream: tokio::net::TcpStream, fake: Fake) {
     let mut header = [0u8; 7];
     while stream.read_exact(&mut header).await.is_ok() {
         let length = usize::from(u16::from_be_bytes([header[4], header[5]]));
@@ -56,7 +66,13 @@ async fn answer(mut stream: tokio::net::TcpStream, mode: Arc<AtomicU8>) {
         let function = pdu[0];
         let address = u16::from_be_bytes([pdu[1], pdu[2]]);
         let quantity = u16::from_be_bytes([pdu[3], pdu[4]]);
-        let mode = mode.load(Ordering::Acquire);
+        let mode = fake.mode.load(Ordering::Acquire);
+        if function == 16 && address == 20 {
+            fake.writes_to_20.fetch_add(1, Ordering::AcqRel);
+        }
+        if mode == SILENT {
+            continue;
+        }
         let reply: Vec<u8> = match function {
             3 if mode == EXCEPTION && address == 2 => vec![0x83, 2],
             3 => {
@@ -96,8 +112,10 @@ async fn answer(mut stream: tokio::net::TcpStream, mode: Arc<AtomicU8>) {
 
 #[test]
 fn wrong_answers_are_invalid_data_exceptions_fail_one_request_and_nothing_panics() {
-    let mode = Arc::new(AtomicU8::new(SHORT_COUNT));
-    let (address, _slave) = fake_slave(Arc::clone(&mode));
+    let fake = Fake::default();
+    let mode = Arc::clone(&fake.mode);
+    mode.store(SHORT_COUNT, Ordering::Release);
+    let (address, _slave) = fake_slave(&fake);
     let areas = Arc::new(std::sync::Mutex::new(LocatedAreas::default()));
     let scheduler = Scheduler::spawn(areas, SchedulerOptions::default()).unwrap();
     scheduler
@@ -113,9 +131,12 @@ fn wrong_answers_are_invalid_data_exceptions_fail_one_request_and_nothing_panics
             && device.state == DeviceState::AnsweringWithErrors
             && device.errors > 5
     });
-    // Every read was refused: the variables keep their initial values, the flag says so.
+    // Every read was refused: the variables keep their initial values, the flag says so (from
+    // the next cycle's start on).
+    wait_until("the program sees the refused reads", || {
+        read(&scheduler, "Main.xInError", 1) == [1]
+    });
     assert_eq!(read_int(&scheduler, "Main.iIn"), 0);
-    assert_eq!(read(&scheduler, "Main.xInError", 1), [1]);
 
     mode.store(RIGHT, Ordering::Release);
     wait_until("right answers deliver", || {
@@ -144,5 +165,22 @@ fn wrong_answers_are_invalid_data_exceptions_fail_one_request_and_nothing_panics
     let device = first(&scheduler.modbus_devices());
     assert_eq!(device.state, DeviceState::AnsweringWithErrors);
     assert_eq!(read(&scheduler, "Main.stDevice", 4)[..2], [1, 1]);
+
+    // A device that stops answering: a timeout ends the round, the connection is made anew.
+    mode.store(SILENT, Ordering::Release);
+    wait_until("silence is a timeout", || {
+        let device = first(&scheduler.modbus_devices());
+        device.last_error == error_codes::RESPONSE_TIMEOUT
+            && device.state == DeviceState::NotAnswering
+            && device.consecutive_errors > 3
+    });
+    // The program sees it at the next cycle's start.
+    wait_until("the program sees the failure", || {
+        read(&scheduler, "Main.xInError", 1) == [1] && read(&scheduler, "Main.stDevice", 1) == [0]
+    });
+    mode.store(RIGHT, Ordering::Release);
+    wait_until("answers again", || {
+        first(&scheduler.modbus_devices()).state == DeviceState::Communicating
+    });
     scheduler.shutdown().unwrap();
 }

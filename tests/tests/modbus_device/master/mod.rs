@@ -2,6 +2,7 @@
 //! server on 127.0.0.1 port 0 and against misbehaving fake slaves written here. No test
 //! asserts timing: counters and cycle counts that keep growing are the checks.
 
+mod edges;
 mod faults;
 mod scheduler;
 
@@ -61,9 +62,15 @@ VAR
     xInError : BOOL;
     udiCycles : UDINT;
     stDevice : MODBUS_DEVICE_STATUS;
+    xSend : BOOL;
+    iEdges : INT;
 END_VAR
 udiCycles := udiCycles + 1;
 iOut := iIn * 2;
+xSend := (udiCycles MOD 10) = 0;
+IF xSend THEN
+    iEdges := iEdges + 1;
+END_IF
 END_PROGRAM
 ";
 
