@@ -210,3 +210,44 @@ fn read_bool(memory: &impl ProgramMemory, place: BytePlace) -> bool {
     read_place(memory, place, &mut byte);
     byte[0] != 0
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    struct Located(Vec<u8>);
+
+    impl ProgramMemory for Located {
+        fn bytes(&self, _region: Region) -> &[u8] {
+            &self.0
+        }
+        fn bytes_mut(&mut self, _region: Region) -> &mut [u8] {
+            &mut self.0
+        }
+    }
+
+    #[test]
+    fn a_located_bool_is_copied_as_its_bit_and_the_other_bits_stay() {
+        let bit = BytePlace {
+            region: Region::Output,
+            offset: 1,
+            bytes: 1,
+            bit: Some(3),
+        };
+        let mut memory = Located(vec![0b1010_0101, 0b1111_0111]);
+        write_place(&mut memory, bit, &[1]);
+        assert_eq!(memory.0, [0b1010_0101, 0b1111_1111]);
+        write_place(&mut memory, bit, &[0]);
+        assert_eq!(memory.0, [0b1010_0101, 0b1111_0111]);
+        let mut value = [7u8];
+        read_place(&memory, bit, &mut value);
+        assert_eq!(value, [0]);
+        memory.0[1] = 0b0000_1000;
+        assert!(read_bool(&memory, bit));
+        // A place beyond the region is neither read nor written.
+        let beyond = BytePlace { offset: 9, ..bit };
+        write_place(&mut memory, beyond, &[1]);
+        assert_eq!(memory.0, [0b1010_0101, 0b0000_1000]);
+        assert!(!read_bool(&memory, beyond));
+    }
+}

@@ -32,6 +32,8 @@ const VALUE: i16 = 4;
 pub(super) struct Fake {
     mode: Arc<AtomicU8>,
     pub(super) writes_to_20: Arc<AtomicU32>,
+    /// Connections accepted so far.
+    pub(super) connections: Arc<AtomicU32>,
 }
 
 /// Serves connections on a runtime of its own, answering as `fake` says.
@@ -48,6 +50,7 @@ pub(super) fn fake_slave(fake: &Fake) -> (std::net::SocketAddr, tokio::runtime::
     let fake = fake.clone();
     runtime.spawn(async move {
         while let Ok((stream, _)) = listener.accept().await {
+            fake.connections.fetch_add(1, Ordering::AcqRel);
             tokio::spawn(answer(stream, fake.clone()));
         }
     });

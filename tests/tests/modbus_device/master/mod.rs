@@ -4,6 +4,7 @@
 
 mod edges;
 mod faults;
+mod online_change;
 mod scheduler;
 
 use std::net::SocketAddr;
@@ -76,7 +77,12 @@ END_PROGRAM
 
 /// Compiles the program with the library.
 fn program() -> ProgramImage {
-    let text = format!("{LIBRARY}{PROGRAM}");
+    compile(PROGRAM)
+}
+
+/// Compiles `program` with the library.
+fn compile(program: &str) -> ProgramImage {
+    let text = format!("{LIBRARY}{program}");
     let source = compiler::SourceProject::new(&text);
     match compiler::compile_source(&source, "main.st") {
         Ok(image) => image,
