@@ -5,7 +5,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-# The runtime's Modbus tests use mbpoll and pymodbus as independent clients (Debian packages);
+# The runtime's Modbus tests use mbpoll and pymodbus as independent clients (Debian packages),
+# and socat's pseudo-terminal pairs as virtual serial cables for Modbus RTU;
 # the studio's image snapshots render with Mesa's software Vulkan driver (lavapipe).
 # Debian's pymodbus is seen by /usr/bin/python3 only, not by a pyenv python3 earlier on the
 # path; the test tries both. The PLCopen export is validated against the TC6 schema with
@@ -16,11 +17,11 @@ pymodbus_importable() {
 lavapipe_installed() {
     ls /usr/share/vulkan/icd.d/lvp_icd.*.json >/dev/null 2>&1
 }
-if ! command -v mbpoll >/dev/null || ! command -v xmllint >/dev/null || ! pymodbus_importable || ! lavapipe_installed; then
+if ! command -v mbpoll >/dev/null || ! command -v socat >/dev/null || ! command -v xmllint >/dev/null || ! pymodbus_importable || ! lavapipe_installed; then
     sudo=""
     if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
     $sudo apt-get update
-    $sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y mbpoll python3-pymodbus mesa-vulkan-drivers libxml2-utils
+    $sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y mbpoll socat python3-pymodbus mesa-vulkan-drivers libxml2-utils
 fi
 
 log=$(mktemp)

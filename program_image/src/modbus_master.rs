@@ -175,8 +175,7 @@ pub struct ChannelDef {
     /// The zero-based address of the first coil or register.
     pub address: u16,
     /// The type of each value: BOOL in a bit table; INT, UINT, DINT, UDINT, LINT, ULINT, REAL
-    /// or LREAL in a register table. On the wire its tag (`docs/program-image.md` §4); the
-    /// specification calls the field `value`.
+    /// or LREAL in a register table. On the wire its tag (`docs/program-image.md` §4).
     pub value_type: Elementary,
     /// How many consecutive values (at least 1); more than 1 binds an array.
     pub count: u16,

@@ -17,6 +17,7 @@
 //! - [`retain`]: RETAIN and PERSISTENT variables saved in the data directory.
 //! - [`modbus`]: the Modbus TCP server that maps the standard function codes onto the located
 //!   areas (the default map is `docs/modbus-map.md`) and leaves a hook for the online services.
+//! - [`serial`]: serial ports for Modbus RTU: line settings, their timing, opening a port.
 //! - [`online`]: the online services of `docs/protocol.md` (identity, download, run control,
 //!   monitor, write, force, trace, statistics, faults) on that hook.
 
@@ -26,6 +27,7 @@ pub mod modbus;
 pub mod online;
 pub mod retain;
 pub mod scheduler;
+pub mod serial;
 pub mod simulation;
 pub mod stdlib;
 pub mod value;

@@ -1,7 +1,8 @@
 //! The `rivet-runtime` binary as a process: it runs an image, serves it over Modbus TCP to
 //! tokio-modbus, mbpoll and pymodbus, keeps a RETAIN variable across a restart, refuses a
 //! damaged image while it goes on serving, and with `--password-file` lets only a logged-in client
-//! change the target over the online services.
+//! change the target over the online services. Module `rtu` runs it as a Modbus RTU slave to
+//! mbpoll over socat's virtual serial cables.
 //!
 //! The image is built by hand from `program_image` types (the runtime may not use the compiler;
 //! the `tests` crate runs compiled Structured Text in process). It is this program, with a
@@ -31,6 +32,7 @@ use program_image::{
 use tokio_modbus::client::{Context, Reader, Writer};
 
 mod peers;
+mod rtu;
 
 use peers::{python_with_pymodbus, required_program, run};
 

@@ -62,6 +62,8 @@ const RESTRICTED: &[(&str, &[&str])] = &[
     ("egui_plot", &["app", "editor", "cam_editor"]),
     ("tokio", &["app", "online", "runtime"]),
     ("tokio-modbus", &["app", "online", "runtime"]),
+    // Serial ports belong to the soft PLC: its RTU slave and its Modbus master's serial lines.
+    ("tokio-serial", &["runtime"]),
     // Tree-sitter serves editor highlighting and folding only; diagnostics come from the compiler.
     ("tree-sitter", &["tree-sitter-rivet-st", "editor"]),
 ];

@@ -2,10 +2,14 @@
 //! from the little-endian bytes the program's variables hold.
 //!
 //! Registers are 16-bit words (tokio-modbus has already taken each from its big-endian bytes);
-//! a value of 2 or 4 registers is assembled in the device's word order. Bits arrive as booleans,
-//! one per coil or discrete input, and a BOOL variable holds one byte, 0 or 1. The master
-//! converts on its own thread, so the scheduler's copy into the program is one `memcpy` per
-//! channel.
+//! a value of 2 or 4 registers is assembled in the device's word order. Bits are booleans, one
+//! per coil or discrete input, and a BOOL variable holds one byte, 0 or 1. A read of bits does
+//! not give exactly those booleans: tokio-modbus 0.17's `Client::call` answers with 8 booleans
+//! per byte of the response, the last byte padded, since the response does not say how many
+//! were asked for. The caller first checks the byte count (`ceil(quantity / 8)`,
+//! `docs/modbus-master.md` §6.6), then passes each channel the slice `[offset, offset + count)`
+//! of its request. The master converts on its own thread, so the scheduler's copy into the
+//! program is one `memcpy` per channel.
 
 use crate::Elementary;
 

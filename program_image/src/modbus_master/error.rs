@@ -159,6 +159,11 @@ pub enum MasterProblem {
         /// The coils or registers it takes.
         span: u32,
     },
+    /// `on_error` set to zero on a write channel, whose variable the master never writes.
+    #[error(
+        "set to zero (1) applies to a read channel's variable after a failed request; the master never writes a write channel's variable: expected keep last value (0)"
+    )]
+    SetToZeroOnWrite,
     /// Two channels of one table share addresses.
     #[error("the channel overlaps channel {other} ({other_variable}) in the same table")]
     Overlap {

@@ -238,18 +238,34 @@ fn an_unverified_device_is_planned_without_panicking() {
     assert!(requests.iter().all(|r| r.quantity >= 1));
 }
 
-/// A valid channel set: per table, channels laid out one after another with random gaps, then
-/// shuffled; each channel with a random type, count, direction the table allows, function code
-/// and one of a few triggers.
-fn channel_sets() -> impl Strategy<Value = (u16, Vec<ChannelDef>)> {
-    let one = (
-        prop::sample::select(vec![
-            Coils,
-            DiscreteInputs,
-            HoldingRegisters,
-            InputRegisters,
-        ]),
-        0u16..6,
+/// One channel's random choices: table, unused addresses before it, register type, count,
+/// whether it writes, whether it uses a single-write code, its trigger (0 cyclic, else the
+/// number of one of three BOOLs), whether its trigger path is spelt in another case, and
+/// whether a read sets its variable to zero on error.
+type ChannelSpec = (
+    ModbusTable,
+    u16,
+    Elementary,
+    u16,
+    bool,
+    bool,
+    usize,
+    bool,
+    bool,
+);
+
+/// The choices of one channel on one of `tables`, with the unused addresses before it, its
+/// count, whether it writes and its trigger drawn from the strategies given.
+fn channel_specs(
+    tables: Vec<ModbusTable>,
+    gaps: BoxedStrategy<u16>,
+    counts: BoxedStrategy<u16>,
+    writes: BoxedStrategy<bool>,
+    triggers: BoxedStrategy<usize>,
+) -> impl Strategy<Value = ChannelSpec> {
+    (
+        prop::sample::select(tables),
+        gaps,
         prop::sample::select(vec![
             Elementary::Int,
             Elementary::Uint,
@@ -258,20 +274,32 @@ fn channel_sets() -> impl Strategy<Value = (u16, Vec<ChannelDef>)> {
             Elementary::Lint,
             Elementary::Lreal,
         ]),
-        prop_oneof![4 => 1u16..4, 1 => 1u16..40],
+        counts,
+        writes,
+        any::<bool>(),
+        triggers,
         any::<bool>(),
         any::<bool>(),
-        0usize..4,
-    );
+    )
+}
+
+/// A valid channel set: per table, channels laid out one after another with random gaps, then
+/// shuffled; each channel with a random type, count, direction the table allows, function code,
+/// `on_error` and one of a few triggers, whose paths may differ only in case.
+fn channel_sets_of(
+    specs: impl Strategy<Value = ChannelSpec>,
+) -> impl Strategy<Value = (u16, Vec<ChannelDef>)> {
     (
         0u16..12,
-        prop::collection::vec(one, 0..60),
+        prop::collection::vec(specs, 0..60),
         any::<proptest::sample::Index>(),
     )
         .prop_map(|(gap, specs, shuffle)| {
             let mut next = [0u32; 4];
             let mut channels = Vec::new();
-            for (table, gap_before, register_type, count, write, single, trigger) in specs {
+            for spec in specs {
+                let (table, gap_before, register_type, count, write, single, trigger, upper, zero) =
+                    spec;
                 let bits = table_holds_bits(table);
                 let value_type = if bits {
                     Elementary::Bool
@@ -287,9 +315,14 @@ fn channel_sets() -> impl Strategy<Value = (u16, Vec<ChannelDef>)> {
                 if direction == Write && single && channel.span() == 1 {
                     channel.function_code = if bits { 5 } else { 6 };
                 }
+                if direction == Read && zero {
+                    channel.on_error = OnError::SetToZero;
+                }
                 if trigger > 0 {
+                    // IEC names ignore case, so GVL.xTrigger1 and gvl.XTRIGGER1 are one BOOL.
+                    let path = format!("GVL.xTrigger{trigger}");
                     channel.trigger = Trigger::RisingEdge {
-                        variable: format!("GVL.xTrigger{trigger}"),
+                        variable: if upper { path.to_uppercase() } else { path },
                     };
                 }
                 if channel.span() > request_limit(direction, table) {
@@ -314,14 +347,65 @@ fn channel_sets() -> impl Strategy<Value = (u16, Vec<ChannelDef>)> {
         })
 }
 
+/// Channel sets over all four tables, mostly of a few values each, in both directions and
+/// with four triggers.
+fn mixed_channel_sets() -> impl Strategy<Value = (u16, Vec<ChannelDef>)> {
+    channel_sets_of(channel_specs(
+        vec![Coils, DiscreteInputs, HoldingRegisters, InputRegisters],
+        (0u16..6).boxed(),
+        prop_oneof![4 => 1u16..4, 1 => 1u16..40].boxed(),
+        any::<bool>().boxed(),
+        (0usize..4).boxed(),
+    ))
+}
+
+/// Channel sets of coils and discrete inputs of up to 500 bits each, mostly cyclic, adjacent
+/// and of one direction (reads only, or mostly writes), so that runs of one group are long
+/// enough for requests to close at the limits of 2000 bits read and 1968 written.
+fn bit_heavy_channel_sets() -> impl Strategy<Value = (u16, Vec<ChannelDef>)> {
+    let bit_specs = |tables: Vec<ModbusTable>, writes: BoxedStrategy<bool>| {
+        channel_specs(
+            tables,
+            prop_oneof![3 => Just(0u16), 1 => 0u16..6].boxed(),
+            prop_oneof![1 => 1u16..4, 3 => 1u16..500].boxed(),
+            writes,
+            prop_oneof![15 => Just(0usize), 1 => 1usize..4].boxed(),
+        )
+    };
+    prop_oneof![
+        channel_sets_of(bit_specs(vec![Coils, DiscreteInputs], Just(false).boxed())),
+        channel_sets_of(bit_specs(
+            vec![Coils],
+            prop_oneof![9 => Just(true), 1 => Just(false)].boxed()
+        )),
+    ]
+}
+
+/// What makes requests one group: direction, table, function code and trigger (without case).
+type RequestGroup = (Direction, ModbusTable, u8, Option<String>);
+
+/// The trigger's BOOL without case, so that triggers spelt differently compare as one.
+fn trigger_key(trigger: &Trigger) -> Option<String> {
+    match trigger {
+        Trigger::Cyclic => None,
+        Trigger::RisingEdge { variable } => Some(variable.to_ascii_lowercase()),
+    }
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(500))]
 
     #[test]
     fn every_channel_is_served_once_within_the_limits_in_round_order(
-        (gap, channels) in channel_sets()
+        (gap, channels) in prop_oneof![mixed_channel_sets(), bit_heavy_channel_sets()]
     ) {
         let device = device(gap, channels.clone());
+        // The sets are valid ones: the verifier accepts them as they are planned.
+        let section = MasterSection {
+            serial_ports: Vec::new(),
+            devices: vec![device.clone()],
+        };
+        prop_assert_eq!(section.verify(1), Ok(()));
         let requests = plan(&device);
         let mut served = vec![0; channels.len()];
         let mut places = Vec::new();
@@ -334,11 +418,12 @@ proptest! {
             for served_channel in &request.channels {
                 let channel = &channels[served_channel.channel];
                 served[served_channel.channel] += 1;
-                // A request holds one direction, table, function code and trigger.
+                // A request holds one direction, table, function code and trigger (its BOOL
+                // whatever the case of its path).
                 prop_assert_eq!(channel.direction, request.direction);
                 prop_assert_eq!(channel.table, request.table);
                 prop_assert_eq!(channel.function_code, request.function_code);
-                prop_assert_eq!(&channel.trigger, &request.trigger);
+                prop_assert_eq!(trigger_key(&channel.trigger), trigger_key(&request.trigger));
                 prop_assert_eq!(
                     u32::from(channel.address),
                     u32::from(request.start) + u32::from(served_channel.offset)
@@ -365,11 +450,11 @@ proptest! {
                 (Read, Trigger::Cyclic) => 2,
                 (Read, _) => 3,
             };
-            let trigger_rank = match &request.trigger {
-                Trigger::Cyclic => 0,
-                Trigger::RisingEdge { variable } => 1 + channels
+            let trigger_rank = match trigger_key(&request.trigger) {
+                None => 0,
+                Some(key) => 1 + channels
                     .iter()
-                    .position(|c| matches!(&c.trigger, Trigger::RisingEdge { variable: v } if v == variable))
+                    .position(|c| trigger_key(&c.trigger).as_ref() == Some(&key))
                     .unwrap_or(usize::MAX - 1),
             };
             let table_rank = match request.table {
@@ -383,25 +468,34 @@ proptest! {
         prop_assert!(served.iter().all(|&count| count == 1), "served {:?}", served);
         prop_assert!(places.windows(2).all(|pair| pair[0] <= pair[1]), "order {:?}", places);
         // Greedy: a request of a group starts only because its first channel could not have
-        // joined the group's request before it.
-        for pair in requests.windows(2) {
-            let (before, after) = (&pair[0], &pair[1]);
-            let same_group = before.direction == after.direction
-                && before.table == after.table
-                && before.function_code == after.function_code
-                && before.trigger == after.trigger
-                && !matches!(before.function_code, 5 | 6);
-            if same_group {
+        // joined the group's request before it. That request need not be the round's previous
+        // one: a single write of the same table may lie between them.
+        let mut last_of_group: Vec<(RequestGroup, &PlannedRequest)> = Vec::new();
+        for after in requests.iter().filter(|r| !matches!(r.function_code, 5 | 6)) {
+            let key = (
+                after.direction,
+                after.table,
+                after.function_code,
+                trigger_key(&after.trigger),
+            );
+            let previous = last_of_group.iter().position(|(group, _)| *group == key);
+            if let Some(at) = previous {
+                let before = last_of_group[at].1;
                 let first = &channels[after.channels[0].channel];
                 let end = u32::from(before.start) + u32::from(before.quantity);
+                let address = u32::from(first.address);
+                prop_assert!(address >= end, "{:?} starts inside {:?}", after, before);
                 let allowed = match after.direction {
                     Read => u32::from(gap),
                     Write => 0,
                 };
-                let too_far = u32::from(first.address) - end > allowed;
-                let too_long = u32::from(first.address) + first.span() - u32::from(before.start)
+                let too_far = address - end > allowed;
+                let too_long = address + first.span() - u32::from(before.start)
                     > request_limit(after.direction, after.table);
                 prop_assert!(too_far || too_long, "{:?} could have joined {:?}", after, before);
+                last_of_group[at].1 = after;
+            } else {
+                last_of_group.push((key, after));
             }
         }
     }

@@ -1,14 +1,15 @@
 //! The structural checks of `docs/modbus-master.md` §5.2 that need no symbol: indices, counts,
-//! ranges, function codes against table and direction, one-request limits and overlaps. The
-//! runtime resolves the paths and checks the variables' types at load itself.
+//! ranges, function codes against table and direction, one-request limits and overlaps; and of
+//! §2.4, a write channel's `on_error` and a rising edge's path. The runtime resolves the paths
+//! and checks the variables' types at load itself.
 
 use crate::{Elementary, ModbusTable};
 
 use super::{
     BAUD_RATES, ChannelDef, DeviceDef, Direction, Link, MAX_CHANNELS_PER_DEVICE, MAX_DEVICES,
     MAX_INTER_FRAME_DELAY_US, MAX_INTERVAL_MS, MAX_READ_GAP, MAX_SERIAL_PORTS, MAX_TIMEOUT_MS,
-    MasterPlace, MasterProblem, MasterSection, MasterSectionError, Schedule, SerialPortDef,
-    request_limit, table_holds_bits,
+    MasterPlace, MasterProblem, MasterSection, MasterSectionError, OnError, Schedule,
+    SerialPortDef, Trigger, request_limit, table_holds_bits,
 };
 
 /// The register types a channel may have: the elementary tags of `docs/modbus-master.md` §2.2's
@@ -80,16 +81,17 @@ impl MasterSection {
                     problem,
                 })
             };
-            if self.devices[..index]
+            if let Some(other) = self.devices[..index]
                 .iter()
-                .any(|other| other.name.eq_ignore_ascii_case(&device.name))
+                .position(|other| other.name.eq_ignore_ascii_case(&device.name))
             {
-                // Messages and `MODBUS_DEVICES` tell devices apart by name only.
+                // Messages and `MODBUS_DEVICES` tell devices apart by name only; the earlier
+                // device is named as spelt, which may differ in case.
                 return fail(
                     "name",
                     MasterProblem::NameTaken {
                         name: device.name.clone(),
-                        other: "an earlier device".to_owned(),
+                        other: format!("device {other} ('{}')", self.devices[other].name),
                     },
                 );
             }
@@ -332,6 +334,24 @@ fn channel_problem(channel: &ChannelDef) -> Option<(&'static str, MasterProblem)
             MasterProblem::PastLastAddress {
                 address: channel.address,
                 span,
+            },
+        ));
+    }
+    // `on_error` says what a read channel's variable holds after a failure; the master never
+    // writes a write channel's variable, so setting it to zero there is a corrupt section
+    // (§2.4 refuses `on_error` on a write channel).
+    if channel.direction == Direction::Write && channel.on_error == OnError::SetToZero {
+        return Some(("on_error", MasterProblem::SetToZeroOnWrite));
+    }
+    // A rising edge needs the BOOL whose edge it is (§2.4: `rising_edge` without
+    // `trigger_variable`).
+    if let Trigger::RisingEdge { variable } = &channel.trigger
+        && variable.trim().is_empty()
+    {
+        return Some((
+            "trigger.variable",
+            MasterProblem::Empty {
+                expected: "the path of the BOOL whose rising edge transfers the channel",
             },
         ));
     }

@@ -7,7 +7,7 @@ use std::fmt::Write as _;
 use expect_test::expect_file;
 use program_image::modbus_master::{
     ChannelDef, DeviceDef, Direction, Link, MasterSection, OnError, Parity, Schedule,
-    SerialPortDef, Trigger, WordOrder,
+    SerialPortDef, Trigger, WordOrder, request_limit,
 };
 use program_image::{Elementary, ImageError, ModbusTable, ProgramImage};
 
@@ -201,7 +201,7 @@ fn device_refusals_name_the_device_and_the_field() {
             |s| s.devices[1].max_read_gap = 126,
         ),
         (
-            "Modbus device 'beltdrive', field name: 'beltdrive' is also the name of an earlier device",
+            "Modbus device 'beltdrive', field name: 'beltdrive' is also the name of device 0 ('BeltDrive')",
             |s| s.devices[1].name = "beltdrive".to_owned(),
         ),
         (
@@ -221,7 +221,19 @@ fn device_refusals_name_the_device_and_the_field() {
 
 #[test]
 fn channel_refusals_name_the_device_the_channel_number_and_the_field() {
-    let cases: [Case; 8] = [
+    let cases: [Case; 10] = [
+        (
+            "Modbus device 'BeltDrive', channel 2 (Main.iOut), field on_error: set to zero (1) applies to a read channel's variable after a failed request; the master never writes a write channel's variable: expected keep last value (0)",
+            |s| s.devices[0].channels[1].on_error = OnError::SetToZero,
+        ),
+        (
+            "Modbus device 'Valves', channel 1 (GVL_Io.xValve), field trigger.variable: it is empty, expected the path of the BOOL whose rising edge transfers the channel",
+            |s| {
+                s.devices[1].channels[0].trigger = Trigger::RisingEdge {
+                    variable: " ".to_owned(),
+                }
+            },
+        ),
         (
             "Modbus device 'BeltDrive', channel 2 (Main.iOut), field function_code: function code 3 does not write a holding register: expected 6 or 16",
             |s| s.devices[0].channels[1].function_code = 3,
@@ -383,7 +395,8 @@ proptest::proptest! {
             }
         }
         // The verifier and the decoder see the mutated section; what they accept, the runtime
-        // plans, so planning it must not panic either.
+        // plans, so planning it must not panic, and every request it plans must be one a
+        // device can answer: within its function's limit and the address space.
         if let Ok(image) = ProgramImage::decode(&container(&all))
             && let Some(master) = &image.modbus_master
         {
@@ -391,6 +404,18 @@ proptest::proptest! {
                 let requests = program_image::modbus_master::plan(device);
                 let served: usize = requests.iter().map(|r| r.channels.len()).sum();
                 proptest::prop_assert_eq!(served, device.channels.len());
+                for request in &requests {
+                    let limit = request_limit(request.direction, request.table);
+                    let quantity = u32::from(request.quantity);
+                    proptest::prop_assert!(
+                        (1..=limit).contains(&quantity),
+                        "{:?} exceeds {}", request, limit
+                    );
+                    proptest::prop_assert!(
+                        u32::from(request.start) + quantity <= 65_536,
+                        "{:?} passes address 65535", request
+                    );
+                }
             }
         }
     }

@@ -1,7 +1,7 @@
 //! `rivet-runtime`: the Rivet soft PLC as a process.
 //!
 //! It loads a program image, runs its tasks on the scheduler, serves the located areas over
-//! Modbus TCP, keeps RETAIN and PERSISTENT variables in its data directory, and saves them when
+//! Modbus TCP (and, with `--modbus-rtu`, as a Modbus RTU slave on a serial port), keeps RETAIN and PERSISTENT variables in its data directory, and saves them when
 //! it is interrupted or terminated. The first line on standard output is the address it
 //! listens on (`listening on 127.0.0.1:5020`), so a caller that asked for port 0 learns the
 //! port; everything else it says goes to standard error.
@@ -19,12 +19,16 @@ use clap::Parser;
 use program_image::ProgramImage;
 use runtime::areas::LocatedAreas;
 use runtime::modbus::master::MasterOptions;
+use runtime::modbus::rtu_slave::{
+    RtuPortEvent, RtuSlaveCounters, RtuSlaveCounts, RtuSlaveOptions, serve_rtu_port,
+};
 use runtime::modbus::{
     DEFAULT_FRAME_TIMEOUT, DEFAULT_IDLE_TIMEOUT, MapSlot, ModbusMap, ServerOptions, WritePolicy,
     serve,
 };
 use runtime::online::{OnlineServices, PASSWORD_VARIABLE, read_password};
 use runtime::scheduler::{Realtime, Scheduler, SchedulerOptions};
+use runtime::serial::SerialSettings;
 use tokio::net::TcpListener;
 
 /// The Rivet soft PLC: runs a program image and serves Modbus TCP.
@@ -79,6 +83,24 @@ struct Arguments {
     /// the image names, such as `RS485=/dev/ttyUSB1`; may be given once per port.
     #[arg(long, value_name = "NAME=PATH", value_parser = parse_serial_port)]
     serial_port: Vec<(String, String)>,
+    /// Also serve the located areas as a Modbus RTU slave on this serial port (a device file
+    /// such as /dev/ttyUSB0), with the same map and write policy as Modbus TCP; the port is
+    /// opened again when it fails or goes away.
+    #[arg(long, value_name = "PATH")]
+    modbus_rtu: Option<PathBuf>,
+    /// The RTU slave's line: baud rate, data bits (8), parity (N, E or O) and stop bits (1 or
+    /// 2).
+    #[arg(
+        long,
+        value_name = "BAUD-DPS",
+        default_value = "19200-8E1",
+        requires = "modbus_rtu"
+    )]
+    modbus_rtu_format: SerialSettings,
+    /// The RTU slave's address on the line.
+    #[arg(long, value_name = "1-247", default_value_t = 1, requires = "modbus_rtu",
+          value_parser = clap::value_parser!(u8).range(1..=247))]
+    modbus_rtu_unit: u8,
     /// No longer accepted (visible in the process list): refused with a message saying where
     /// the password goes now.
     #[arg(long, hide = true)]
@@ -179,7 +201,7 @@ async fn run(arguments: Arguments) -> anyhow::Result<()> {
             .with_debugging(arguments.debug == "on"),
     );
     let server_options = ServerOptions {
-        writes,
+        writes: writes.clone(),
         idle_timeout: Duration::from_secs(arguments.idle_timeout_seconds),
         frame_timeout: Duration::from_secs(arguments.frame_timeout_seconds),
         custom: Some(services.handler()),
@@ -187,14 +209,20 @@ async fn run(arguments: Arguments) -> anyhow::Result<()> {
         ..ServerOptions::default()
     };
     drop(services);
+    let rtu_counters = RtuSlaveCounters::default();
+    let (rtu_areas, rtu_map) = (Arc::clone(&areas), Arc::clone(&map));
+    let rtu_slave = serve_rtu_slave(&arguments, writes, &rtu_areas, &rtu_map, &rtu_counters);
+    let mut reported_rtu = RtuSlaveCounts::default();
     let server = serve(listener, areas, map, server_options);
     let mut reported_faults = 0;
     let mut fault_check = tokio::time::interval(FAULT_REPORT_INTERVAL);
     let mut ended = std::pin::pin!(end_signal());
     let mut server = Box::pin(server);
+    let mut rtu_slave = std::pin::pin!(rtu_slave);
     let outcome = loop {
         tokio::select! {
             served = &mut server => break served.context("the Modbus server stopped"),
+            () = &mut rtu_slave => {}
             signal = &mut ended => {
                 eprintln!("rivet-runtime: {signal}; stopping");
                 break Ok(());
@@ -208,6 +236,12 @@ async fn run(arguments: Arguments) -> anyhow::Result<()> {
                     eprintln!("rivet-runtime: {fault}");
                 }
                 reported_faults = status.faults_total;
+                // Damaged frames point at a wrong line setting or a noisy cable.
+                let rtu = rtu_counters.counts();
+                if rtu.dropped() > reported_rtu.dropped() {
+                    eprintln!("rivet-runtime: Modbus RTU: {rtu}");
+                }
+                reported_rtu = rtu;
             }
         }
     };
@@ -221,6 +255,48 @@ async fn run(arguments: Arguments) -> anyhow::Result<()> {
         Err(scheduler) => drop(scheduler),
     }
     outcome
+}
+
+/// Serves the RTU slave of `--modbus-rtu` for ever, saying on standard error when its port
+/// opens, cannot be opened or closes; without `--modbus-rtu`, waits for ever.
+async fn serve_rtu_slave(
+    arguments: &Arguments,
+    writes: WritePolicy,
+    areas: &Mutex<LocatedAreas>,
+    map: &MapSlot,
+    counters: &RtuSlaveCounters,
+) {
+    let Some(path) = &arguments.modbus_rtu else {
+        return std::future::pending().await;
+    };
+    let settings = arguments.modbus_rtu_format;
+    let options = RtuSlaveOptions {
+        unit_id: arguments.modbus_rtu_unit,
+        silence: settings.silence(),
+        writes,
+    };
+    let shown = path.display();
+    let report = |event: RtuPortEvent<'_>| match event {
+        RtuPortEvent::Opened => eprintln!(
+            "rivet-runtime: Modbus RTU slave {} on {shown} at {settings}",
+            options.unit_id
+        ),
+        RtuPortEvent::OpenFailed { error, retry_in } => eprintln!(
+            "rivet-runtime: Modbus RTU: {error}; trying again in {} ms",
+            retry_in.as_millis()
+        ),
+        RtuPortEvent::Closed { error, retry_in } => {
+            let why = match error {
+                Some(error) => format!("failed: {error}"),
+                None => "closed (the device went away)".to_owned(),
+            };
+            eprintln!(
+                "rivet-runtime: Modbus RTU: {shown} {why}; opening it again in {} ms",
+                retry_in.as_millis()
+            );
+        }
+    };
+    serve_rtu_port(path, &settings, areas, map, &options, counters, report).await;
 }
 
 /// Loads the image at `path` and gives the Modbus map it asks for; a file that cannot be read

@@ -6,9 +6,12 @@
 //! A write touches the areas only after every address of it has been found present, so a
 //! request is all or nothing.
 
+use std::sync::Mutex;
+
 use crate::areas::LocatedAreas;
 use crate::modbus::exception::ExceptionCode;
 use crate::modbus::map::{BitLocation, ModbusMap, RegisterLocation, Table};
+use crate::modbus::write_policy::{REFUSED_WRITE, WritePolicy};
 
 /// The longest PDU of Modbus TCP: 253 bytes, function code included.
 pub const MAX_PDU_BYTES: usize = 253;
@@ -59,6 +62,32 @@ pub fn handle_pdu(areas: &mut LocatedAreas, map: &ModbusMap, request: &[u8]) -> 
             response
         }
         Err(exception) => exception.response(function),
+    }
+}
+
+/// The response PDU to the request PDU `request` on the areas a server shares with the
+/// engine: a write that `writes` does not allow gets [`REFUSED_WRITE`], and areas the engine
+/// left poisoned (it panicked while holding them) exception 4; otherwise [`handle_pdu`] with
+/// the areas locked for this one request.
+///
+/// The TCP server answers its standard function codes with it and the RTU slave every
+/// request, so the two serve the map alike.
+pub fn serve_pdu(
+    areas: &Mutex<LocatedAreas>,
+    map: &ModbusMap,
+    writes: &WritePolicy,
+    request: &[u8],
+) -> Vec<u8> {
+    let function = request.first().copied().unwrap_or(0);
+    if !is_standard_function(function) {
+        return ExceptionCode::IllegalFunction.response(function);
+    }
+    if !writes.allows(request) {
+        return REFUSED_WRITE.response(function);
+    }
+    match areas.lock() {
+        Ok(mut areas) => handle_pdu(&mut areas, map, request),
+        Err(_) => ExceptionCode::ServerDeviceFailure.response(function),
     }
 }
 

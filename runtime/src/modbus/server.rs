@@ -15,8 +15,8 @@ use crate::modbus::connections::Connections;
 use crate::modbus::exception::ExceptionCode;
 use crate::modbus::frame::{HEADER_BYTES, MbapHeader};
 use crate::modbus::map_slot::MapSlot;
-use crate::modbus::pdu::{MAX_PDU_BYTES, handle_pdu, is_standard_function};
-use crate::modbus::write_policy::{REFUSED_WRITE, WritePolicy};
+use crate::modbus::pdu::{MAX_PDU_BYTES, is_standard_function, serve_pdu};
+use crate::modbus::write_policy::WritePolicy;
 
 /// A handler of the function codes the areas do not serve (Rivet's online services).
 ///
@@ -216,15 +216,7 @@ impl Responder {
             return ExceptionCode::IllegalFunction.response(0);
         };
         if is_standard_function(function) {
-            if !self.writes.allows(request) {
-                return REFUSED_WRITE.response(function);
-            }
-            let map = self.map.get();
-            return match self.areas.lock() {
-                Ok(mut areas) => handle_pdu(&mut areas, &map, request),
-                // The engine panicked while it held the areas: their state is unknown.
-                Err(_) => ExceptionCode::ServerDeviceFailure.response(function),
-            };
+            return serve_pdu(&self.areas, &self.map.get(), &self.writes, request);
         }
         let custom = match &self.custom {
             Some(custom) if function < 0x80 => custom,

@@ -5,10 +5,13 @@
 //! The lookups are the workspace tests' own (`tests/src/peers.rs`), compiled in here too, so
 //! both crates find the peers the same way; only running them off the async workers is added.
 
+// Each test binary uses a part of the shared helpers, and the rest would be dead code in it.
+#[allow(dead_code)]
 #[path = "../../../tests/src/peers.rs"]
 mod shared;
 
-pub use shared::{python_with_pymodbus, required_program};
+#[allow(unused_imports)]
+pub use shared::{PymodbusServer, SocatPair, python_with_pymodbus, required_program};
 
 /// Runs a program to its end off the async workers and returns its standard output, or fails
 /// with everything it said.
