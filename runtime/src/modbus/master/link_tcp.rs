@@ -1,70 +1,36 @@
 //! A Modbus TCP device's task on the master's thread (`docs/modbus-master.md` §6.7): its own
 //! connection, its rounds as they fall due, and the reconnection with back-off.
 
-use std::sync::{Arc, Mutex, PoisonError};
 use std::time::{Duration, Instant};
 
-use program_image::modbus_master::{DeviceDef, Direction, PlannedRequest, Trigger, plan};
+use program_image::modbus_master::{DeviceDef, Link};
 use tokio_modbus::Slave;
 use tokio_modbus::client::Context;
 
-use super::StateLines;
 use super::backoff::Backoff;
-use super::due::{Due, RoundKind};
-use super::exchange::{DeviceExchange, InputImage};
-use super::round::{Answer, RoundResults, call_checked};
-use super::status::{DeviceStatus, Outcome, error_codes};
+use super::device_round::DeviceRound;
+use super::due::Due;
+use super::round::{Answer, call_checked};
+use super::status::{Outcome, error_codes};
 
 /// The shortest time a connection attempt is given, whatever the response timeout.
 const MIN_CONNECT_TIMEOUT: Duration = Duration::from_millis(1000);
 
-/// One TCP device: its definition, its plan, and what the round moves.
+/// One TCP device: its rounds and its schedule.
 pub struct TcpDevice {
-    device: DeviceDef,
-    requests: Vec<PlannedRequest>,
-    exchange: Arc<DeviceExchange>,
-    /// The counters as the online service reads them, replaced after each round.
-    shared_status: Arc<Mutex<DeviceStatus>>,
-    results: RoundResults,
-    outputs: Vec<u8>,
-    edge_values: Vec<u8>,
-    pending: Vec<bool>,
+    round: DeviceRound,
     due: Due,
     peer: String,
-    state_lines: Option<StateLines>,
 }
 
 impl TcpDevice {
-    /// The task of `device`, whose I/O task cycles every `idle_interval` when the program
-    /// stops (for an every-cycle device).
-    pub fn new(
-        device: DeviceDef,
-        exchange: Arc<DeviceExchange>,
-        shared_status: Arc<Mutex<DeviceStatus>>,
-        idle_interval: Duration,
-        state_lines: Option<StateLines>,
-    ) -> Self {
-        let layout = &exchange.layout;
-        let peer = match &device.link {
-            program_image::modbus_master::Link::Tcp { host, port } => format!("{host}:{port}"),
-            program_image::modbus_master::Link::Rtu { .. } => String::new(),
+    /// The task of the device `round` serves, due as `due` says.
+    pub fn new(round: DeviceRound, due: Due) -> Self {
+        let peer = match &round.device.link {
+            Link::Tcp { host, port } => format!("{host}:{port}"),
+            Link::Rtu { .. } => String::new(),
         };
-        Self {
-            requests: plan(&device),
-            results: RoundResults {
-                image: InputImage::empty(layout),
-                status: DeviceStatus::new(&device.name, false),
-            },
-            outputs: vec![0; layout.total],
-            edge_values: vec![0; layout.total],
-            pending: vec![false; layout.triggers.len()],
-            due: Due::new(device.schedule, Arc::clone(&exchange), idle_interval),
-            device,
-            exchange,
-            shared_status,
-            peer,
-            state_lines,
-        }
+        Self { round, due, peer }
     }
 
     /// Runs rounds until the master's runtime is dropped.
@@ -73,51 +39,25 @@ impl TcpDevice {
         let mut backoff = Backoff::default();
         loop {
             let kind = self.due.wait().await;
-            let published = self.exchange.take_outputs(
-                &mut self.outputs,
-                &mut self.edge_values,
-                &mut self.pending,
-            );
-            // Nothing is written before the I/O task ended a cycle, nor while the program is
-            // stopped.
-            let may_write = published && self.exchange.running();
-            let layout = &self.exchange.layout;
-            let round: Vec<&PlannedRequest> = self
-                .requests
-                .iter()
-                .filter(|request| {
-                    let wanted = match &request.trigger {
-                        Trigger::Cyclic => matches!(kind, RoundKind::Full { .. }),
-                        Trigger::RisingEdge { variable } => layout
-                            .triggers
-                            .iter()
-                            .position(|known| known.eq_ignore_ascii_case(variable))
-                            .is_some_and(|index| self.pending[index]),
-                    };
-                    wanted && (request.direction == Direction::Read || may_write)
-                })
-                .collect();
-            for (index, request) in round.iter().enumerate() {
+            let requests = self.round.begin(kind);
+            for (position, &request) in requests.iter().enumerate() {
                 if connection.is_none() {
                     let now = Instant::now();
                     if !backoff.may_try(now) {
-                        self.results.not_sent(
-                            &self.device,
-                            layout,
-                            &round[index..],
+                        // Waiting for the back-off: the round counts as failed, not sent.
+                        self.round.not_sent(
+                            &requests[position..],
                             error_codes::TCP_COMMUNICATION_ERROR,
                             "",
                         );
                         break;
                     }
-                    match connect(&self.device, &self.peer).await {
+                    match connect(&self.round.device, &self.peer).await {
                         Ok(context) => connection = Some(context),
                         Err(detail) => {
                             backoff.failed(now);
-                            self.results.not_sent(
-                                &self.device,
-                                layout,
-                                &round[index..],
+                            self.round.not_sent(
+                                &requests[position..],
                                 error_codes::TCP_COMMUNICATION_ERROR,
                                 &detail,
                             );
@@ -128,13 +68,16 @@ impl TcpDevice {
                 let Some(context) = connection.as_mut() else {
                     break;
                 };
-                let values = match request.trigger {
-                    Trigger::Cyclic => &self.outputs,
-                    Trigger::RisingEdge { .. } => &self.edge_values,
-                };
                 let started = Instant::now();
-                let answer =
-                    call_checked(context, request, &self.device, layout, values, &self.peer).await;
+                let answer = call_checked(
+                    context,
+                    &self.round.requests[request],
+                    &self.round.device,
+                    &self.round.exchange.layout,
+                    self.round.values_for(request),
+                    &self.peer,
+                )
+                .await;
                 let took = started.elapsed();
                 let (close, unanswered) = match &answer {
                     Answer::Failed {
@@ -148,30 +91,17 @@ impl TcpDevice {
                         (false, None)
                     }
                 };
-                self.results
-                    .apply(&self.device, layout, request, answer, took);
+                self.round.apply(request, answer, took);
                 if close {
                     // A late answer would be taken for the next request's: a new connection.
                     connection = None;
                 }
                 if let Some(code) = unanswered {
-                    self.results
-                        .not_sent(&self.device, layout, &round[index + 1..], code, "");
+                    self.round.not_sent(&requests[position + 1..], code, "");
                     break;
                 }
             }
-            let overruns = match kind {
-                RoundKind::Full { overruns } => overruns,
-                RoundKind::EdgesOnly => 0,
-            };
-            if let (Some(line), Some(lines)) = (self.results.end(overruns), &self.state_lines) {
-                lines(&line);
-            }
-            self.exchange.publish_round(&self.results.image);
-            *self
-                .shared_status
-                .lock()
-                .unwrap_or_else(PoisonError::into_inner) = self.results.status.clone();
+            self.round.end(kind);
         }
     }
 }
@@ -179,7 +109,7 @@ impl TcpDevice {
 /// Opens the device's connection with `TCP_NODELAY` within `max(timeout_ms, 1000)` ms, or
 /// says in words why it could not.
 async fn connect(device: &DeviceDef, peer: &str) -> Result<Context, String> {
-    let program_image::modbus_master::Link::Tcp { host, port } = &device.link else {
+    let Link::Tcp { host, port } = &device.link else {
         return Err(format!("'{}' is not a TCP device", device.name));
     };
     let limit = Duration::from_millis(u64::from(device.timeout_ms)).max(MIN_CONNECT_TIMEOUT);

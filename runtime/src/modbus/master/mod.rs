@@ -1,19 +1,24 @@
 //! The runtime as a Modbus master (`docs/modbus-master.md` §4, §6): the devices of an image's
 //! section 14 read and written in rounds on a thread of their own, `rivet-modbus-master` (a
-//! current-thread tokio runtime, one task per TCP device), and exchanged with the scheduler
+//! current-thread tokio runtime, one task per TCP device and one per serial line), and exchanged with the scheduler
 //! through per-device buffers the scheduler only ever tries to lock.
 //!
 //! - [`exchange`]: the input image, output image and cycle-end counter of one device.
 //! - [`copier`]: the scheduler's side: what a cycle of the I/O task copies in and out.
 //! - [`resolve`]: the section's paths as places in the program's memory, checked at load.
 //! - [`status`]: counters, state, `MB_ErrorCodes` and the status variable's bytes.
-//! - `round.rs`, `link_tcp.rs`, `due.rs`, `backoff.rs`: the rounds on the master's thread.
+//! - `round.rs`, `device_round.rs`, `due.rs`, `backoff.rs`: the rounds on the master's thread;
+//!   `link_tcp.rs` a TCP device's task, `line_rtu.rs` a serial line's (every device of a port
+//!   in turn) over `line_port.rs`, the transport that keeps the silence and drops unasked input.
 //! - `wake.rs`: the `rivet-modbus-wake` thread between the scheduler and the tokio tasks.
 
 mod backoff;
 pub mod copier;
+mod device_round;
 mod due;
 pub mod exchange;
+mod line_port;
+mod line_rtu;
 mod link_tcp;
 pub mod resolve;
 mod round;
@@ -32,6 +37,9 @@ pub use exchange::DeviceExchange;
 pub use resolve::{DevicePlaces, ResolveError, resolve_section};
 pub use status::{DeviceSnapshot, DeviceState, DeviceStatus, error_codes};
 
+use device_round::DeviceRound;
+use due::Due;
+use line_rtu::{LineDevice, RtuLine};
 use link_tcp::TcpDevice;
 use wake::{Wake, WakeTarget};
 
@@ -134,6 +142,7 @@ impl Master {
             return Ok(handle);
         }
         let mut tcp = Vec::new();
+        let mut lines: Vec<Vec<LineDevice>> = serial_ports.iter().map(|_| Vec::new()).collect();
         let mut targets = Vec::new();
         for (index, device) in handle.section.devices.iter().enumerate() {
             let exchange = Arc::clone(&handle.exchanges[index]);
@@ -141,34 +150,34 @@ impl Master {
                 exchange: Arc::clone(&exchange),
                 every_cycle: device.schedule == Schedule::EveryCycle,
             });
+            let idle = image
+                .tasks
+                .get(device.task as usize)
+                .filter(|task| task.kind == TaskKind::Cyclic && task.interval_ns > 0)
+                .map_or(IDLE_POLL, |task| Duration::from_nanos(task.interval_ns));
+            let due = Due::new(device.schedule, Arc::clone(&exchange), idle);
+            let round = DeviceRound::new(
+                device.clone(),
+                exchange,
+                Arc::clone(&handle.statuses[index]),
+                options.state_lines.clone(),
+            );
             match &device.link {
-                Link::Tcp { .. } => {
-                    let idle = image
-                        .tasks
-                        .get(device.task as usize)
-                        .filter(|task| task.kind == TaskKind::Cyclic && task.interval_ns > 0)
-                        .map_or(IDLE_POLL, |task| Duration::from_nanos(task.interval_ns));
-                    tcp.push(TcpDevice::new(
-                        device.clone(),
-                        exchange,
-                        Arc::clone(&handle.statuses[index]),
-                        idle,
-                        options.state_lines.clone(),
-                    ));
-                }
+                Link::Tcp { .. } => tcp.push(TcpDevice::new(round, due)),
                 Link::Rtu { serial_port } => {
-                    // This build has no serial lines: the device reports its port as failed.
-                    let port = serial_ports
-                        .get(*serial_port as usize)
-                        .map_or("?", |port| port.device.as_str());
-                    let mut status = lock(&handle.statuses[index]);
-                    status.state = DeviceState::SerialPortError;
-                    status.last_error = error_codes::SERIAL_PORT_ERROR;
-                    status.detail =
-                        format!("serial port {port}: Modbus RTU is not available in this build");
+                    // Verification has checked the index.
+                    if let Some(line) = lines.get_mut(*serial_port as usize) {
+                        line.push(LineDevice { round, due });
+                    }
                 }
             }
         }
+        let lines: Vec<RtuLine> = serial_ports
+            .into_iter()
+            .zip(lines)
+            .filter(|(_, devices)| !devices.is_empty())
+            .map(|(port, devices)| RtuLine::new(port, devices))
+            .collect();
         handle.wake = Some(Wake::spawn(targets)?);
         let shutdown = Arc::clone(&handle.shutdown);
         let runtime = tokio::runtime::Builder::new_current_thread()
@@ -180,6 +189,9 @@ impl Master {
                 .spawn(move || {
                     for device in tcp {
                         runtime.spawn(device.run());
+                    }
+                    for line in lines {
+                        runtime.spawn(line.run());
                     }
                     runtime.block_on(shutdown.notified());
                     // Dropping the runtime ends the devices' tasks and closes their connections.

@@ -5,6 +5,7 @@
 mod edges;
 mod faults;
 mod online_change;
+mod rtu;
 mod scheduler;
 
 use std::net::SocketAddr;
