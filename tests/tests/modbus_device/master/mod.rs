@@ -5,6 +5,7 @@
 mod edges;
 mod faults;
 mod online_change;
+mod proxy;
 mod rtu;
 mod scheduler;
 
