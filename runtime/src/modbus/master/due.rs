@@ -3,7 +3,9 @@
 //! edge; with the overruns counted as the specification says.
 
 use std::sync::Arc;
-use std::time::{Duration, Instant};
+use std::time::Duration;
+
+use tokio::time::Instant;
 
 use program_image::modbus_master::Schedule;
 
@@ -52,9 +54,8 @@ impl Due {
     pub async fn wait(&mut self) -> RoundKind {
         match self.schedule {
             Schedule::Interval { interval_ms } => loop {
-                let next = tokio::time::Instant::from_std(self.next);
                 tokio::select! {
-                    () = tokio::time::sleep_until(next) => {
+                    () = tokio::time::sleep_until(self.next) => {
                         let overruns = self.advance(interval_ms);
                         return RoundKind::Full { overruns };
                     }
@@ -97,5 +98,67 @@ impl Due {
         let passed = u32::try_from(late.as_nanos() / interval.as_nanos()).unwrap_or(u32::MAX);
         self.next += interval * passed.saturating_add(1);
         passed
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use program_image::modbus_master::{DeviceDef, Link, WordOrder};
+
+    use super::*;
+
+    fn exchange() -> Arc<DeviceExchange> {
+        Arc::new(DeviceExchange::new(&DeviceDef {
+            name: "Drive".to_owned(),
+            link: Link::Tcp {
+                host: "127.0.0.1".to_owned(),
+                port: 502,
+            },
+            unit_id: 1,
+            timeout_ms: 100,
+            task: 0,
+            schedule: Schedule::EveryCycle,
+            word_order: WordOrder::HighFirst,
+            max_read_gap: 0,
+            status: None,
+            channels: Vec::new(),
+        }))
+    }
+
+    #[tokio::test(start_paused = true)]
+    async fn a_late_round_starts_its_successor_at_once_and_drops_the_due_times_passed() {
+        let schedule = Schedule::Interval { interval_ms: 10 };
+        let mut due = Due::new(schedule, exchange(), Duration::from_millis(100));
+        let start = Instant::now();
+        assert_eq!(due.wait().await, RoundKind::Full { overruns: 0 });
+        // A round of 35 ms: the round due at 10 ms starts at once, those of 20 and 30 ms are
+        // dropped, and the next is due at 40 ms.
+        tokio::time::advance(Duration::from_millis(35)).await;
+        assert_eq!(due.wait().await, RoundKind::Full { overruns: 2 });
+        assert_eq!(Instant::now() - start, Duration::from_millis(35));
+        assert_eq!(due.wait().await, RoundKind::Full { overruns: 0 });
+        assert_eq!(Instant::now() - start, Duration::from_millis(40));
+    }
+
+    #[tokio::test(start_paused = true)]
+    async fn cycle_ends_during_a_round_are_merged_into_one_more_round() {
+        let exchange = exchange();
+        let mut due = Due::new(
+            Schedule::EveryCycle,
+            Arc::clone(&exchange),
+            Duration::from_millis(100),
+        );
+        exchange.set_running(true);
+        exchange.cycle_ended(false);
+        assert_eq!(due.wait().await, RoundKind::Full { overruns: 0 });
+        for _ in 0..3 {
+            exchange.cycle_ended(false);
+        }
+        assert_eq!(due.wait().await, RoundKind::Full { overruns: 2 });
+        // Stopped, the device is read at its task's pace without cycle ends.
+        exchange.set_running(false);
+        let start = Instant::now();
+        assert_eq!(due.wait().await, RoundKind::Full { overruns: 0 });
+        assert_eq!(Instant::now() - start, Duration::from_millis(100));
     }
 }
