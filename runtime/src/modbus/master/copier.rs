@@ -67,7 +67,8 @@ impl DeviceCopier {
 
     /// At the start of a cycle of the I/O task: takes the newest round when the input image is
     /// free, and copies the round it has (read channels' values, error flags, status) into the
-    /// program. Before the first round nothing is copied. Returns whether the image was free.
+    /// program. Before the first round only the status is copied (a device not yet polled), and
+    /// the variables keep their initial values. Returns whether the image was free.
     pub fn cycle_start(&mut self, memory: &mut impl ProgramMemory) -> bool {
         let taken = match self.exchange.try_input() {
             Some(input) => {
@@ -78,6 +79,9 @@ impl DeviceCopier {
             }
             None => false,
         };
+        if let Some(status) = self.places.status {
+            write_place(memory, status, &self.kept.status);
+        }
         if self.kept.round == 0 {
             return taken;
         }
@@ -93,9 +97,6 @@ impl DeviceCopier {
             if let Some(flag) = channel.error_flag {
                 write_place(memory, flag, &[u8::from(self.kept.failed[index])]);
             }
-        }
-        if let Some(status) = self.places.status {
-            write_place(memory, status, &self.kept.status);
         }
         taken
     }

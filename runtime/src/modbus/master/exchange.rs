@@ -13,7 +13,7 @@ use std::sync::{Mutex, MutexGuard, PoisonError, TryLockError};
 
 use program_image::modbus_master::{DeviceDef, Trigger};
 
-use super::status::STATUS_BYTES;
+use super::status::{DeviceStatus, STATUS_BYTES};
 
 /// Where each channel's values lie in the images' value buffers: channels in the project's
 /// order, each taking its values' bytes in the program's memory layout.
@@ -109,14 +109,15 @@ pub struct OutputImage {
 }
 
 impl InputImage {
-    /// The image before any round: nothing to deliver.
+    /// The image before any round: nothing to deliver, and the status of a device not yet
+    /// polled (`eLastError` is `NOT_YET_POLLED`, every counter 0).
     pub fn empty(layout: &ValueLayout) -> Self {
         Self {
             round: 0,
             values: vec![0; layout.total],
             deliver: vec![false; layout.ranges.len()],
             failed: vec![false; layout.ranges.len()],
-            status: [0; STATUS_BYTES],
+            status: DeviceStatus::new("", false).encode(),
         }
     }
 

@@ -270,3 +270,25 @@ fn a_round_published_while_the_scheduler_copies_is_never_torn() {
     }
     assert!(publisher.join().is_ok());
 }
+
+#[test]
+fn before_the_first_round_only_the_status_is_copied_and_says_not_yet_polled() {
+    let (exchange, mut copier) = device();
+    let mut data = Data(vec![0x55; 96]);
+    assert!(copier.cycle_start(&mut data));
+    // The channel's variable keeps its initial value.
+    assert!(
+        data.0[READ_AT..READ_AT + 2 * READ_VALUES]
+            .iter()
+            .all(|byte| *byte == 0x55)
+    );
+    let status = &data.0[STATUS_AT..STATUS_AT + STATUS_BYTES];
+    assert_eq!(
+        (status[0], status[1], status[2]),
+        (0, 0, super::super::status::error_codes::NOT_YET_POLLED)
+    );
+    assert!(status[4..].iter().all(|byte| *byte == 0));
+    exchange.publish_round(&round(&exchange, 1));
+    copier.cycle_start(&mut data);
+    assert_eq!(seen(&data), vec![1; READ_VALUES + 1]);
+}
