@@ -29,7 +29,7 @@ pub struct Wake {
 }
 
 impl Wake {
-    /// Starts the thread for `targets`; `None` when it cannot be started.
+    /// Starts the thread for `targets`, or says why the system would not.
     pub fn spawn(targets: Vec<WakeTarget>) -> std::io::Result<Self> {
         let stop = Arc::new(AtomicBool::new(false));
         let stopping = Arc::clone(&stop);
