@@ -1,5 +1,5 @@
 //! Modbus RTU against pymodbus over a socat pair (8N1; this machine's ptys refuse parity): two
-//! devices on one line, polled in turn; the cable pulled (socat killed) fails every device of
+//! devices on one line, polled in turn; a slave slower than the timeout; the cable pulled (socat killed) fails every device of
 //! the port with `SERIAL_PORT_ERROR`, and the line opens the port again when it comes back.
 
 use std::sync::Arc;
@@ -81,6 +81,25 @@ fn two_units_on_one_line_are_polled_in_turn_and_the_port_is_reopened() {
             .all(|device| device.state == DeviceState::Communicating)
     );
 
+    // A slave slower than the timeout: each device times out in its turn, and the late
+    // answers are dropped before the next request, so the line is in step again afterwards.
+    slave.delay(300);
+    wait_until("both devices time out", || {
+        scheduler.modbus_devices().iter().all(|device| {
+            device.state == DeviceState::NotAnswering
+                && device.last_error == error_codes::RESPONSE_TIMEOUT
+        })
+    });
+    slave.delay(0);
+    slave.set("ir", 0, 22);
+    wait_until("the line is in step again", || {
+        read_int(&scheduler, "Main.iOut") == 44
+            && scheduler
+                .modbus_devices()
+                .iter()
+                .all(|device| device.state == DeviceState::Communicating)
+    });
+
     // The cable is pulled: every device of the port fails with SERIAL_PORT_ERROR while the
     // task goes on.
     drop(slave);
@@ -95,7 +114,7 @@ fn two_units_on_one_line_are_polled_in_turn_and_the_port_is_reopened() {
     wait_until("the task goes on", || {
         read_udint(&scheduler, "Main.udiCycles") > cycles + 5
     });
-    assert_eq!(read_int(&scheduler, "Main.iIn"), 21);
+    assert_eq!(read_int(&scheduler, "Main.iIn"), 22);
 
     // It comes back under the same name: the port is opened again and values resume.
     cable.restart();
