@@ -35,7 +35,9 @@ fn change(scheduler: &Scheduler, old: &ProgramImage, new: ProgramImage) {
 fn an_equal_section_keeps_the_connection_and_follows_the_moved_variables() {
     let fake = Fake::default();
     let (address, _slave) = fake_slave(&fake);
-    let section_device = device(address, Schedule::EveryCycle);
+    let mut section_device = device(address, Schedule::EveryCycle);
+    // A timeout no loaded machine reaches, so that the connection count means the switch.
+    section_device.timeout_ms = 10_000;
     let old = image_with(vec![section_device.clone()]);
     let areas = Arc::new(std::sync::Mutex::new(LocatedAreas::default()));
     let scheduler = Scheduler::spawn(areas, SchedulerOptions::default()).unwrap();
