@@ -586,6 +586,20 @@ fn a_password_on_the_command_line_and_bad_server_options_are_refused_saying_why(
     assert!(!output.status.success());
     let said = String::from_utf8_lossy(&output.stderr);
     assert!(said.contains("--idle-timeout-seconds"), "{said}");
+    // The Modbus master's options (`docs/modbus-master.md` §6.11).
+    for (option, value, expected) in [
+        ("--serial-port", "RS485", "is not NAME=PATH"),
+        ("--modbus-master", "maybe", "--modbus-master"),
+    ] {
+        let output = Command::new(env!("CARGO_BIN_EXE_rivet-runtime"))
+            .args(["--listen", "127.0.0.1:0", option, value, "--data-dir"])
+            .arg(dir.path())
+            .output()
+            .unwrap();
+        assert!(!output.status.success());
+        let said = String::from_utf8_lossy(&output.stderr);
+        assert!(said.contains(expected), "{said}");
+    }
 }
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]

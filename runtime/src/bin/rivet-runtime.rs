@@ -18,6 +18,7 @@ use anyhow::Context;
 use clap::Parser;
 use program_image::ProgramImage;
 use runtime::areas::LocatedAreas;
+use runtime::modbus::master::MasterOptions;
 use runtime::modbus::rtu_slave::{
     RtuPortEvent, RtuSlaveCounters, RtuSlaveCounts, RtuSlaveOptions, serve_rtu_port,
 };
@@ -73,6 +74,15 @@ struct Arguments {
     /// it the tasks run with normal scheduling.
     #[arg(long, value_name = "1-98", value_parser = clap::value_parser!(u8).range(1..=98))]
     realtime_priority: Option<u8>,
+    /// Whether the runtime masters the image's Modbus devices (`docs/modbus-master.md`):
+    /// `off` runs the program without them (on a desk, against a plant's image); their
+    /// variables then keep their initial values.
+    #[arg(long, value_name = "on|off", default_value = "on", value_parser = ["on", "off"])]
+    modbus_master: String,
+    /// The device file of the project's serial port NAME on this machine, in place of the one
+    /// the image names, such as `RS485=/dev/ttyUSB1`; may be given once per port.
+    #[arg(long, value_name = "NAME=PATH", value_parser = parse_serial_port)]
+    serial_port: Vec<(String, String)>,
     /// Also serve the located areas as a Modbus RTU slave on this serial port (a device file
     /// such as /dev/ttyUSB0), with the same map and write policy as Modbus TCP; the port is
     /// opened again when it fails or goes away.
@@ -95,6 +105,18 @@ struct Arguments {
     /// the password goes now.
     #[arg(long, hide = true)]
     password: Option<String>,
+}
+
+/// Reads `NAME=PATH` of `--serial-port`.
+fn parse_serial_port(text: &str) -> Result<(String, String), String> {
+    match text.split_once('=') {
+        Some((name, path)) if !name.trim().is_empty() && !path.trim().is_empty() => {
+            Ok((name.trim().to_owned(), path.trim().to_owned()))
+        }
+        _ => Err(format!(
+            "'{text}' is not NAME=PATH (a serial port's name in the project, then its device file)"
+        )),
+    }
 }
 
 /// How often the runtime looks for new faults to report.
@@ -139,6 +161,12 @@ async fn run(arguments: Arguments) -> anyhow::Result<()> {
     let options = SchedulerOptions {
         data_dir: Some(arguments.data_dir.clone()),
         realtime_priority: arguments.realtime_priority,
+        modbus_master: MasterOptions {
+            enabled: arguments.modbus_master == "on",
+            serial_ports: arguments.serial_port.clone(),
+            // One line per change of a device's state, never per request (§4.2).
+            state_lines: Some(Arc::new(|line: &str| eprintln!("{line}"))),
+        },
         ..SchedulerOptions::default()
     };
     let scheduler = Arc::new(Scheduler::spawn(Arc::clone(&areas), options)?);

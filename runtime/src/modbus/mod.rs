@@ -16,6 +16,7 @@ mod exception;
 mod frame;
 mod map;
 mod map_slot;
+pub mod master;
 mod pdu;
 pub mod rtu_slave;
 mod server;

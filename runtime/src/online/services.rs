@@ -22,6 +22,7 @@ mod online_change;
 use super::trace::{MAX_TRACE_BYTES, Trace};
 use super::wrong_passwords::WrongPasswords;
 use crate::engine::ResetKind;
+use crate::modbus::master::MasterError;
 use crate::modbus::{
     ConnectionClosed, CustomFunctions, ExceptionCode, MapSlot, ModbusMap, current_connection,
     current_peer, delay_answer,
@@ -741,6 +742,10 @@ fn scheduler_refusal(error: SchedulerError) -> Refusal {
         | SchedulerError::Halted
         | SchedulerError::Gone => Status::NotNow,
         SchedulerError::Load(_) => Status::ImageRefused,
+        // Paths that do not fit the program refuse the image; threads that cannot be started
+        // are a passing condition of the machine.
+        SchedulerError::ModbusMaster(MasterError::Resolve(_)) => Status::ImageRefused,
+        SchedulerError::ModbusMaster(MasterError::Thread(_)) => Status::NotNow,
         // The command was done; only saving the retained values failed.
         SchedulerError::Retain(_) => Status::NotNow,
     };

@@ -18,6 +18,7 @@ use online_protocol::Place;
 use program_image::{ProgramImage, Region};
 
 use super::alarm::Alarm;
+use super::modbus_io::ModbusIo;
 use super::outbox::Outbox;
 use super::plan::{self, TaskPlan};
 use super::record::CycleRecord;
@@ -71,6 +72,8 @@ pub(super) struct Cycles<'w, 'm> {
     /// How many halts are being served beneath the running cycle: while there are any, its
     /// safe points serve the commands too.
     pub(super) halts: u32,
+    /// The Modbus master's copy points, when the program has runtime devices.
+    pub(super) modbus: Option<&'w mut ModbusIo>,
 }
 
 /// A cycle in progress.
@@ -102,6 +105,11 @@ impl Cycles<'_, '_> {
         });
         self.arm_above(priority);
         let started = self.now_ns();
+        // The devices' newest rounds come in after the located areas and before the forces,
+        // so a forced variable of a read channel holds (`docs/modbus-master.md` §4.1).
+        if let Some(modbus) = self.modbus.as_deref_mut() {
+            modbus.cycle_start(task, engine);
+        }
         // Forced values hold before and after the cycle, whatever the program assigns.
         self.forces.apply_to_view(engine);
         // The hook is given without preemption too: it serves the halts of the debugger.
@@ -112,6 +120,10 @@ impl Cycles<'_, '_> {
         // without popping its levels; what is left of them belongs to no running cycle.
         self.levels.truncate(depth + 1);
         self.forces.apply_to_view(engine);
+        // The devices get the outputs with the forces applied: a forced value is sent.
+        if let Some(modbus) = self.modbus.as_deref_mut() {
+            modbus.cycle_end(task, engine);
+        }
         if depth <= self.publish_depth {
             // A busy lock leaves the outputs to the next exchange, which loses nothing.
             super::located::publish(self.areas, engine, self.forces);

@@ -43,6 +43,7 @@ mod cycles;
 mod halt;
 mod inbox;
 mod located;
+mod modbus_io;
 mod outbox;
 mod plan;
 mod realtime;
@@ -60,6 +61,7 @@ use program_image::{ImageHash, ProgramImage};
 
 use crate::areas::LocatedAreas;
 use crate::engine::{AppliedChange, Engine, FaultRecord, LoadError, OnlineChangePlan, ResetKind};
+use crate::modbus::master::{DeviceSnapshot, DeviceStatus, MasterError, MasterOptions};
 use crate::online::{Forces, Memory, Trace};
 use crate::retain::{RetainError, RetainRestore};
 
@@ -105,6 +107,9 @@ pub struct SchedulerOptions {
     /// above (`docs/scheduler.md` §6); `None` keeps normal scheduling. Refused without the
     /// right to it (root or CAP_SYS_NICE): then the status says why and the tasks still run.
     pub realtime_priority: Option<u8>,
+    /// The Modbus master of an image with runtime devices (`docs/modbus-master.md` §6.11): on
+    /// or off, the serial ports' device files on this machine, where state lines go.
+    pub modbus_master: MasterOptions,
 }
 
 /// A snapshot of the scheduler's state, statistics and faults.
@@ -200,6 +205,10 @@ pub enum SchedulerError {
     /// halted cycle, which an online change never does.
     #[error("a task is halted: continue it first (an online change never abandons a cycle)")]
     Halted,
+    /// The image's Modbus master cannot run: its paths do not fit the program, or its threads
+    /// cannot be started; the scheduler keeps what it had.
+    #[error(transparent)]
+    ModbusMaster(#[from] MasterError),
     /// The scheduler's thread could not be started or has ended.
     #[error("the scheduler thread is not running")]
     Gone,
@@ -212,13 +221,19 @@ pub struct Scheduler {
     /// The scheduler's thread, unparked after each command (`inbox.rs`).
     waker: std::thread::Thread,
     status: Arc<Mutex<SchedulerStatus>>,
+    /// The Modbus master's devices of the loaded program, replaced at each load.
+    modbus_devices: ModbusDevices,
     thread: Option<JoinHandle<()>>,
 }
+
+/// The counters of the loaded program's Modbus devices, shared with the worker, which
+/// replaces the list when it loads a program.
+pub(crate) type ModbusDevices = Arc<Mutex<Vec<Arc<Mutex<DeviceStatus>>>>>;
 
 impl Default for SchedulerOptions {
     /// No data directory; retained values saved every second; a freewheeling task pauses
     /// 500 µs; event triggers looked at every millisecond at least; no spinning; preemption on;
-    /// no cycle log; normal scheduling.
+    /// no cycle log; normal scheduling; the Modbus master on.
     fn default() -> Self {
         Self {
             data_dir: None,
@@ -229,6 +244,7 @@ impl Default for SchedulerOptions {
             preemption: true,
             cycle_log: None,
             realtime_priority: None,
+            modbus_master: MasterOptions::default(),
         }
     }
 }
@@ -250,7 +266,13 @@ impl Scheduler {
             realtime: Realtime::Normal,
         }));
         let realtime_priority = options.realtime_priority;
-        let worker = worker::Worker::new(areas, Arc::clone(&status), options);
+        let modbus_devices = ModbusDevices::default();
+        let worker = worker::Worker::new(
+            areas,
+            Arc::clone(&status),
+            Arc::clone(&modbus_devices),
+            options,
+        );
         let (scheduled, scheduling) = mpsc::sync_channel(1);
         let thread = std::thread::Builder::new()
             .name("rivet-scheduler".to_owned())
@@ -273,6 +295,7 @@ impl Scheduler {
             commands,
             waker: thread.thread().clone(),
             status,
+            modbus_devices,
             thread: Some(thread),
         })
     }
@@ -282,6 +305,7 @@ impl Scheduler {
     /// it ran. When the image is refused, everything stays as it was.
     pub fn load(&self, image: ProgramImage) -> Result<LoadReport, SchedulerError> {
         let identity = image.identity();
+        check_modbus_master(&image)?;
         let engine = Engine::new(image)?;
         self.ask(|reply| Command::Load(Box::new(engine), identity, reply))?
     }
@@ -297,12 +321,29 @@ impl Scheduler {
         from: ImageHash,
         to: ImageHash,
     ) -> Result<OnlineChangeReport, SchedulerError> {
+        check_modbus_master(engine.image())?;
         let (result, retired) =
             self.ask(|reply| Command::OnlineChange(Box::new((engine, plan, from, to)), reply))?;
         // Freeing an engine's code takes milliseconds for a large program: here, on the
         // caller's thread, it holds no task.
         drop(retired);
         result
+    }
+
+    /// The loaded program's Modbus devices with their state and counters, in the image's
+    /// order (`docs/modbus-master.md` §9.1); empty without a program or without devices.
+    pub fn modbus_devices(&self) -> Vec<DeviceSnapshot> {
+        self.modbus_devices
+            .lock()
+            .unwrap_or_else(PoisonError::into_inner)
+            .iter()
+            .map(|device| {
+                device
+                    .lock()
+                    .unwrap_or_else(PoisonError::into_inner)
+                    .snapshot()
+            })
+            .collect()
     }
 
     /// Starts every task that has not faulted.
@@ -381,6 +422,16 @@ impl Drop for Scheduler {
             let _ = thread.join();
         }
     }
+}
+
+/// Refuses an image whose Modbus master's paths do not fit its program (§5.2 of
+/// `docs/modbus-master.md`), before anything is replaced.
+fn check_modbus_master(image: &ProgramImage) -> Result<(), SchedulerError> {
+    if let Some(section) = &image.modbus_master {
+        crate::modbus::master::resolve_section(image, section)
+            .map_err(|error| SchedulerError::ModbusMaster(error.into()))?;
+    }
+    Ok(())
 }
 
 /// The answer to a command.

@@ -10,15 +10,17 @@ use super::alarm::Alarm;
 use super::cycles::{self, Cycles, Level, copy};
 use super::inbox::{Inbox, LOCK_RETRY, Received};
 use super::located;
+use super::modbus_io::ModbusIo;
 use super::outbox::Outbox;
 use super::plan::{self, TaskPlan};
 use super::retain_writer::RetainWriter;
 use super::{
-    Between, Command, LoadReport, PRIORITY_LEVELS, SchedulerError, SchedulerOptions,
+    Between, Command, LoadReport, ModbusDevices, PRIORITY_LEVELS, SchedulerError, SchedulerOptions,
     SchedulerState, SchedulerStatus,
 };
 use crate::areas::LocatedAreas;
 use crate::engine::{Engine, ResetKind};
+use crate::modbus::master::Master;
 use crate::online::{Forces, Memory, Trace};
 use crate::retain::{RetainSnapshot, RetainStore};
 
@@ -58,12 +60,16 @@ pub(super) struct Worker {
     postponed: VecDeque<Command>,
     /// Statistics and faults waiting for the status's lock.
     outbox: Outbox,
+    /// The loaded program's Modbus devices' counters, shared with the handle.
+    modbus_devices: ModbusDevices,
 }
 
 /// A loaded program and the schedule of its tasks.
 struct Program {
     engine: Engine,
     plans: Vec<TaskPlan>,
+    /// The Modbus master of a program with runtime devices.
+    modbus: Option<ModbusIo>,
 }
 
 /// Whether the thread goes on after a command.
@@ -77,6 +83,7 @@ impl Worker {
     pub(super) fn new(
         areas: Arc<Mutex<LocatedAreas>>,
         status: Arc<Mutex<SchedulerStatus>>,
+        modbus_devices: ModbusDevices,
         options: SchedulerOptions,
     ) -> Self {
         let report_status = Arc::clone(&status);
@@ -108,6 +115,7 @@ impl Worker {
             deferred: Vec::new(),
             postponed: VecDeque::new(),
             outbox: Outbox::default(),
+            modbus_devices,
         }
     }
 
@@ -241,6 +249,7 @@ impl Worker {
             log: self.options.cycle_log.as_ref(),
             levels: &mut self.levels,
             halts: 0,
+            modbus: program.modbus.as_mut(),
         };
         cycles.run(&mut program.engine.view(), task);
         // Abandoned halted cycles have unwound: the next cycles run normally.
@@ -348,6 +357,12 @@ impl Worker {
         mut engine: Engine,
         identity: ImageHash,
     ) -> Result<LoadReport, SchedulerError> {
+        // The old master stops before the new one starts (a serial port is opened by one
+        // master at a time), and before the new program's first cycle (§6.10).
+        if let Some(old) = self.program.as_mut() {
+            old.modbus = None;
+        }
+        let master = self.start_master(engine.image())?;
         let was_running = self.running;
         // The old program's retained values go to the disk first, so an image with the same
         // retained layout takes them over.
@@ -369,7 +384,11 @@ impl Worker {
             areas.forget_writes();
         }
         let plans = engine.image().tasks.iter().map(TaskPlan::new).collect();
-        self.program = Some(Program { engine, plans });
+        self.program = Some(Program {
+            engine,
+            plans,
+            modbus: master,
+        });
         // The new program's places are not the old one's.
         self.forces.clear();
         self.trace.unconfigure();
@@ -396,6 +415,9 @@ impl Worker {
             }
         }
         self.running = true;
+        if let Some(modbus) = &program.modbus {
+            modbus.set_running(true);
+        }
         self.next_retain_save_ns = now + duration_ns(self.options.retain_save_interval);
         self.publish_state();
         Ok(())
@@ -406,6 +428,9 @@ impl Worker {
         let saved = match self.program.as_mut() {
             Some(program) => {
                 program.plans.iter_mut().for_each(TaskPlan::stop);
+                if let Some(modbus) = &program.modbus {
+                    modbus.set_running(false);
+                }
                 match (&self.retain, was_running) {
                     (Some(writer), true) => {
                         writer.with_store(|store| store.save(&program.engine).map(|_| ()))
@@ -452,6 +477,18 @@ impl Worker {
         self.publish(identity);
         saved?;
         retain.map_err(Into::into)
+    }
+
+    /// Starts the Modbus master of `image` (a handle without threads when it has no devices
+    /// or the master is off) and publishes its devices' counters; `None` when the master
+    /// copies nothing.
+    fn start_master(
+        &mut self,
+        image: &program_image::ProgramImage,
+    ) -> Result<Option<ModbusIo>, SchedulerError> {
+        let handle = Master::start(image, &self.options.modbus_master)?;
+        *lock(&self.modbus_devices) = handle.statuses();
+        Ok(handle.active().then(|| ModbusIo::new(handle)))
     }
 
     /// Queues the retained values for the writer thread while running; it writes them when

@@ -49,6 +49,15 @@ impl Worker {
         }
         let mut old = std::mem::replace(&mut program.engine, engine);
         let applied = plan.apply(&mut old, &mut program.engine);
+        // The master goes on through the switch when the section is the same, with its paths
+        // resolved in the new program; otherwise the old one stops and the new one starts
+        // (`docs/modbus-master.md` §6.10).
+        let keeps_master = program.modbus.as_mut().is_some_and(|modbus| {
+            modbus.same_section(program.engine.image())
+                && modbus.rebind(program.engine.image()).is_ok()
+        });
+        let restart = !keeps_master
+            && (program.modbus.is_some() || program.engine.image().modbus_master.is_some());
         let moved = |place: Place| match place.region {
             PLACE_DATA => plan
                 .moved_range(place.offset as usize, place.value_bytes())
@@ -65,6 +74,9 @@ impl Worker {
             writer.write_later(snapshot);
         }
         lock(&self.status).image = Some(to);
+        if restart {
+            self.restart_master();
+        }
         let report = OnlineChangeReport {
             cycles: self.cycles_total,
             applied,
@@ -73,6 +85,35 @@ impl Worker {
             switch: started.elapsed(),
         };
         (Ok(report), Some(old))
+    }
+}
+
+impl Worker {
+    /// Stops the running program's master and starts the master of its (new) image, running
+    /// if the program runs. The caller checked the image's paths, so only a thread that cannot
+    /// be started stops it: the program then runs without its devices, which the status says.
+    fn restart_master(&mut self) {
+        let Some(program) = self.program.as_mut() else {
+            return;
+        };
+        program.modbus = None;
+        let image = program.engine.shared_image();
+        match self.start_master(&image) {
+            Ok(modbus) => {
+                if let Some(modbus) = &modbus
+                    && self.running
+                {
+                    modbus.set_running(true);
+                }
+                if let Some(program) = self.program.as_mut() {
+                    program.modbus = modbus;
+                }
+            }
+            Err(_) => {
+                // Every device then shows no counters; there is no caller left to tell.
+                lock(&self.modbus_devices).clear();
+            }
+        }
     }
 }
 

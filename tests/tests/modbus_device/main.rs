@@ -1,7 +1,8 @@
 //! A generic Modbus TCP device polled by `online::device`: typed channels over coils and
 //! registers, both word orders, writes, forces that hold, and a trace sampled by polling.
 //! The device here is the runtime's own Modbus server over bare areas (no program), which
-//! answers exactly as the standard says.
+//! answers exactly as the standard says. `master/` tests the runtime's own Modbus master
+//! (`docs/modbus-master.md`) against the same server and against misbehaving fake slaves.
 
 // The helpers below are test code too: a failure should stop the test where it happens.
 #![allow(clippy::unwrap_used, clippy::expect_used)]
@@ -13,6 +14,8 @@ use online::device::{Channel, Device, Table, WordOrder};
 use program_image::Elementary;
 use runtime::areas::LocatedAreas;
 use runtime::modbus::{MapSlot, ModbusMap, ServerOptions, serve};
+
+mod master;
 
 async fn device_server() -> (std::net::SocketAddr, Arc<Mutex<LocatedAreas>>) {
     let areas = Arc::new(Mutex::new(LocatedAreas::new(64, 64, 8192)));

@@ -1,0 +1,164 @@
+//! When a device's rounds are due (`docs/modbus-master.md` §6.3): every `interval_ms` from the
+//! master's start, or after each cycle end of the I/O task, and at once for a pending rising
+//! edge; with the overruns counted as the specification says.
+
+use std::sync::Arc;
+use std::time::Duration;
+
+use tokio::time::Instant;
+
+use program_image::modbus_master::Schedule;
+
+use super::exchange::DeviceExchange;
+
+/// What kind of round is due.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum RoundKind {
+    /// A whole round: cyclic requests and the pending edges'; with the round starts dropped
+    /// since the last one.
+    Full {
+        /// Round starts dropped (interval) or cycle ends merged (every cycle).
+        overruns: u32,
+    },
+    /// An extra round with only the pending edges' requests; it moves no due time.
+    EdgesOnly,
+}
+
+/// A device's schedule as the master's task follows it.
+#[derive(Debug)]
+pub struct Due {
+    schedule: Schedule,
+    exchange: Arc<DeviceExchange>,
+    /// The next due time of an interval schedule.
+    next: Instant,
+    /// The cycle ends the last every-cycle round answered.
+    seen_cycle_ends: u64,
+    /// How often an every-cycle device is polled while its task has no cycles (the program is
+    /// stopped): its task's interval, or 100 ms.
+    idle_interval: Duration,
+}
+
+impl Due {
+    /// The schedule of a device, starting now.
+    pub fn new(schedule: Schedule, exchange: Arc<DeviceExchange>, idle_interval: Duration) -> Self {
+        Self {
+            schedule,
+            seen_cycle_ends: exchange.cycle_ends(),
+            exchange,
+            next: Instant::now(),
+            idle_interval,
+        }
+    }
+
+    /// Waits until a round is due.
+    pub async fn wait(&mut self) -> RoundKind {
+        match self.schedule {
+            Schedule::Interval { interval_ms } => loop {
+                tokio::select! {
+                    () = tokio::time::sleep_until(self.next) => {
+                        let overruns = self.advance(interval_ms);
+                        return RoundKind::Full { overruns };
+                    }
+                    () = self.exchange.notify.notified() => {
+                        if self.exchange.has_pending() {
+                            return RoundKind::EdgesOnly;
+                        }
+                    }
+                }
+            },
+            Schedule::EveryCycle => loop {
+                let ends = self.exchange.cycle_ends();
+                if ends > self.seen_cycle_ends {
+                    let merged = ends - self.seen_cycle_ends - 1;
+                    self.seen_cycle_ends = ends;
+                    return RoundKind::Full {
+                        overruns: u32::try_from(merged).unwrap_or(u32::MAX),
+                    };
+                }
+                if self.exchange.running() {
+                    self.exchange.notify.notified().await;
+                } else {
+                    // No cycles to follow: the device is still read, at the task's pace.
+                    tokio::select! {
+                        () = tokio::time::sleep(self.idle_interval) => {
+                            return RoundKind::Full { overruns: 0 };
+                        }
+                        () = self.exchange.notify.notified() => {}
+                    }
+                }
+            },
+        }
+    }
+
+    /// Moves the due time past the round that starts now. When the last round ended after
+    /// this one was due, every due time passed meanwhile is dropped, and their number returned.
+    fn advance(&mut self, interval_ms: u32) -> u32 {
+        let interval = Duration::from_millis(u64::from(interval_ms.max(1)));
+        let late = Instant::now().saturating_duration_since(self.next);
+        let passed = u32::try_from(late.as_nanos() / interval.as_nanos()).unwrap_or(u32::MAX);
+        self.next += interval * passed.saturating_add(1);
+        passed
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use program_image::modbus_master::{DeviceDef, Link, WordOrder};
+
+    use super::*;
+
+    fn exchange() -> Arc<DeviceExchange> {
+        Arc::new(DeviceExchange::new(&DeviceDef {
+            name: "Drive".to_owned(),
+            link: Link::Tcp {
+                host: "127.0.0.1".to_owned(),
+                port: 502,
+            },
+            unit_id: 1,
+            timeout_ms: 100,
+            task: 0,
+            schedule: Schedule::EveryCycle,
+            word_order: WordOrder::HighFirst,
+            max_read_gap: 0,
+            status: None,
+            channels: Vec::new(),
+        }))
+    }
+
+    #[tokio::test(start_paused = true)]
+    async fn a_late_round_starts_its_successor_at_once_and_drops_the_due_times_passed() {
+        let schedule = Schedule::Interval { interval_ms: 10 };
+        let mut due = Due::new(schedule, exchange(), Duration::from_millis(100));
+        let start = Instant::now();
+        assert_eq!(due.wait().await, RoundKind::Full { overruns: 0 });
+        // A round of 35 ms: the round due at 10 ms starts at once, those of 20 and 30 ms are
+        // dropped, and the next is due at 40 ms.
+        tokio::time::advance(Duration::from_millis(35)).await;
+        assert_eq!(due.wait().await, RoundKind::Full { overruns: 2 });
+        assert_eq!(Instant::now() - start, Duration::from_millis(35));
+        assert_eq!(due.wait().await, RoundKind::Full { overruns: 0 });
+        assert_eq!(Instant::now() - start, Duration::from_millis(40));
+    }
+
+    #[tokio::test(start_paused = true)]
+    async fn cycle_ends_during_a_round_are_merged_into_one_more_round() {
+        let exchange = exchange();
+        let mut due = Due::new(
+            Schedule::EveryCycle,
+            Arc::clone(&exchange),
+            Duration::from_millis(100),
+        );
+        exchange.set_running(true);
+        exchange.cycle_ended(false);
+        assert_eq!(due.wait().await, RoundKind::Full { overruns: 0 });
+        for _ in 0..3 {
+            exchange.cycle_ended(false);
+        }
+        assert_eq!(due.wait().await, RoundKind::Full { overruns: 2 });
+        // Stopped, the device is read at its task's pace without cycle ends.
+        exchange.set_running(false);
+        let start = Instant::now();
+        assert_eq!(due.wait().await, RoundKind::Full { overruns: 0 });
+        assert_eq!(Instant::now() - start, Duration::from_millis(100));
+    }
+}
