@@ -18,6 +18,7 @@ use sha2::{Digest, Sha256};
 use super::debug::Debugging;
 use super::download::Transfer;
 
+mod modbus_devices;
 mod online_change;
 use super::trace::{MAX_TRACE_BYTES, Trace};
 use super::wrong_passwords::WrongPasswords;
@@ -374,12 +375,7 @@ impl OnlineServices {
                 tasks: self.tasks(),
             }),
             Request::Faults { from } => Ok(self.faults(from)),
-            // Served with the runtime's Modbus master (issue 19, wave 2); until then this
-            // runtime answers as one that does not know the service (docs/protocol.md §3).
-            Request::ModbusDevices { .. } => Err(Refusal::new(
-                Status::UnknownService,
-                "this runtime does not report its Modbus devices",
-            )),
+            Request::ModbusDevices { from } => Ok(self.modbus_devices(from)),
             Request::Debug(request) => {
                 self.debug
                     .serve(&self.scheduler, connection, peer, now, request)

@@ -340,3 +340,19 @@ fn an_enumeration_resolves_as_one_and_lists_its_values_page_by_page() {
     };
     assert_eq!(ask(&services, &unknown).0, 6);
 }
+
+#[test]
+fn modbus_devices_lists_nothing_without_a_program_or_without_runtime_devices() {
+    // A program with no Modbus master section, and no program at all: both answer total 0
+    // (docs/modbus-master.md §9.1), and without a password.
+    for loaded in [false, true] {
+        let services = services(Some("secret"), loaded);
+        match answer(&services, &Request::ModbusDevices { from: 0 }) {
+            Ok(Response::ModbusDevices { total, devices }) => {
+                assert_eq!(total, 0, "loaded: {loaded}");
+                assert!(devices.is_empty());
+            }
+            other => panic!("loaded: {loaded}: {other:?}"),
+        }
+    }
+}
