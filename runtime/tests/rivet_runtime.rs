@@ -223,6 +223,14 @@ impl Runtime {
         }
     }
 
+    /// Everything it has said on standard error up to now.
+    fn messages(&mut self) -> &[String] {
+        while let Ok(line) = self.stderr.try_recv() {
+            self.said.push(line);
+        }
+        &self.said
+    }
+
     /// Sends SIGTERM, waits for a successful exit, and returns all it said on standard error.
     #[track_caller]
     fn terminate(mut self) -> Vec<String> {

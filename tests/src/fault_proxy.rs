@@ -21,8 +21,9 @@ pub enum ProxyMode {
     Delay(Duration),
     /// Takes every byte and forwards none, without closing anything: a pulled cable.
     Swallow,
-    /// Closes every open connection and stops listening, so a new connection is refused: a
-    /// stopped server. Back in another mode, it listens again on the same port.
+    /// Resets every open connection and every new one as soon as it is accepted (RST, not an
+    /// orderly close): a stopped server behind a host that is still up. The proxy keeps its
+    /// port all the while, so no other test can take it, and counts the connections it resets.
     Refuse,
 }
 
@@ -61,8 +62,7 @@ impl FaultProxy {
             stopping: AtomicBool::new(false),
         });
         let acceptor_shared = Arc::clone(&shared);
-        let acceptor =
-            std::thread::spawn(move || accept(Some(listener), address, slave, &acceptor_shared));
+        let acceptor = std::thread::spawn(move || accept(&listener, slave, &acceptor_shared));
         Ok(Self {
             address,
             shared,
@@ -81,7 +81,8 @@ impl FaultProxy {
         *lock(&self.shared.mode) = mode;
     }
 
-    /// How many connections masters have opened through the proxy so far.
+    /// How many connections masters have opened through the proxy so far, those reset in
+    /// [`ProxyMode::Refuse`] included.
     pub fn connections(&self) -> u64 {
         self.shared.connections.load(Ordering::SeqCst)
     }
@@ -100,11 +101,6 @@ impl Shared {
     fn mode(&self) -> ProxyMode {
         *lock(&self.mode)
     }
-
-    /// Whether a connection should end now.
-    fn closing(&self) -> bool {
-        self.stopping.load(Ordering::SeqCst) || self.mode() == ProxyMode::Refuse
-    }
 }
 
 /// The mode, even when a thread panicked while holding it (it only ever stores a value).
@@ -113,33 +109,17 @@ fn lock(mode: &Mutex<ProxyMode>) -> std::sync::MutexGuard<'_, ProxyMode> {
         .unwrap_or_else(std::sync::PoisonError::into_inner)
 }
 
-/// Accepts connections until the proxy is dropped, closing the listener while refusing.
-fn accept(
-    mut listener: Option<TcpListener>,
-    address: SocketAddr,
-    slave: SocketAddr,
-    shared: &Arc<Shared>,
-) {
+/// Accepts connections until the proxy is dropped; while refusing, resets each at once.
+fn accept(listener: &TcpListener, slave: SocketAddr, shared: &Arc<Shared>) {
     while !shared.stopping.load(Ordering::SeqCst) {
-        if shared.mode() == ProxyMode::Refuse {
-            listener = None;
-            std::thread::sleep(POLL_INTERVAL);
-            continue;
-        }
-        // The port is the proxy's: std sets SO_REUSEADDR, so it binds again after a refusal.
-        // The listener does not block, so that the thread sees mode changes and the drop.
-        if listener.is_none() {
-            listener = TcpListener::bind(address)
-                .and_then(|bound| bound.set_nonblocking(true).map(|()| bound))
-                .ok();
-        }
-        let Some(open) = &listener else {
-            std::thread::sleep(POLL_INTERVAL);
-            continue;
-        };
-        match open.accept() {
+        // The listener does not block, so that the thread sees the drop.
+        match listener.accept() {
             Ok((master, _)) => {
                 shared.connections.fetch_add(1, Ordering::SeqCst);
+                if shared.mode() == ProxyMode::Refuse {
+                    reset(&master);
+                    continue;
+                }
                 let shared = Arc::clone(shared);
                 std::thread::spawn(move || {
                     let _ = forward(master, slave, &shared);
@@ -149,6 +129,12 @@ fn accept(
             Err(_) => std::thread::sleep(POLL_INTERVAL),
         }
     }
+}
+
+/// Makes the closing of `stream`'s last handle send a reset (SO_LINGER 0) rather than an
+/// orderly end; a stream that cannot be set so still closes.
+fn reset(stream: &TcpStream) {
+    let _ = socket2::SockRef::from(stream).set_linger(Some(Duration::ZERO));
 }
 
 /// Joins one master connection to a new connection to the slave until either closes, the
@@ -194,7 +180,17 @@ fn pump(
 ) -> io::Result<()> {
     let mut buffer = [0; 1024];
     let carried = loop {
-        if shared.closing() {
+        if shared.mode() == ProxyMode::Refuse {
+            // The master's side is reset when its last handle closes, after both pumps end:
+            // an orderly shutdown first would send an end of file before the reset.
+            let master = match direction {
+                Direction::Requests => &from,
+                Direction::Answers => &to,
+            };
+            reset(master);
+            return Ok(());
+        }
+        if shared.stopping.load(Ordering::SeqCst) {
             break Ok(());
         }
         let count = match from.read(&mut buffer) {
@@ -281,35 +277,31 @@ mod tests {
         assert_eq!(echo(&mut stream, b"three"), None);
 
         proxy.set_mode(ProxyMode::Refuse);
-        // The open connection is closed, and a new one is refused.
+        // The open connection is reset, and so is a new one, on the port the proxy keeps.
         let deadline = Instant::now() + Duration::from_secs(5);
         let mut byte = [0; 1];
         loop {
             match stream.read(&mut byte) {
-                Ok(0) => break,
-                Err(error) if !is_timeout(&error) => break,
-                _ => assert!(Instant::now() < deadline, "the proxy kept its connection"),
+                Err(error) if error.kind() == io::ErrorKind::ConnectionReset => break,
+                Err(error) if is_timeout(&error) => {
+                    assert!(Instant::now() < deadline, "the proxy kept its connection");
+                }
+                other => panic!("the connection ended without a reset: {other:?}"),
             }
-        }
-        while TcpStream::connect(proxy.address()).is_ok() {
-            assert!(Instant::now() < deadline, "the proxy kept listening");
-            std::thread::sleep(POLL_INTERVAL);
         }
         let before = proxy.connections();
+        let mut refused = connect(&proxy);
+        let read = refused.read(&mut byte);
+        assert!(
+            read.as_ref()
+                .is_err_and(|error| error.kind() == io::ErrorKind::ConnectionReset),
+            "a new connection was not reset: {read:?}"
+        );
+        assert_eq!(proxy.connections(), before + 1);
 
         proxy.set_mode(ProxyMode::Pass);
-        let deadline = Instant::now() + Duration::from_secs(5);
-        let mut stream = loop {
-            if let Ok(stream) = TcpStream::connect(proxy.address()) {
-                stream
-                    .set_read_timeout(Some(Duration::from_millis(300)))
-                    .unwrap();
-                break stream;
-            }
-            assert!(Instant::now() < deadline, "the proxy never listened again");
-            std::thread::sleep(POLL_INTERVAL);
-        };
+        let mut stream = connect(&proxy);
         assert_eq!(echo(&mut stream, b"four").as_deref(), Some(&b"four"[..]));
-        assert_eq!(proxy.connections(), before + 1);
+        assert_eq!(proxy.connections(), before + 2);
     }
 }

@@ -164,6 +164,9 @@ pub struct PymodbusServer {
     commands: std::process::ChildStdin,
     /// Its standard output, line by line.
     replies: std::sync::mpsc::Receiver<String>,
+    /// What it said on standard error so far (why it failed, pymodbus's warnings), for the
+    /// panics that report it.
+    said: std::sync::Arc<std::sync::Mutex<String>>,
 }
 
 /// How long the script may take to start or to answer a command.
@@ -179,7 +182,12 @@ impl PymodbusServer {
         server.port = first
             .strip_prefix("port ")
             .and_then(|port| port.parse().ok())
-            .unwrap_or_else(|| panic!("pymodbus_server.py tcp printed {first:?}"));
+            .unwrap_or_else(|| {
+                panic!(
+                    "pymodbus_server.py tcp printed {first:?}; on standard error:\n{}",
+                    server.errors()
+                )
+            });
         server
     }
 
@@ -203,7 +211,12 @@ impl PymodbusServer {
             units.join(","),
         ]);
         let first = server.reply();
-        assert_eq!(first, "ready", "pymodbus_server.py rtu printed {first:?}");
+        assert_eq!(
+            first,
+            "ready",
+            "pymodbus_server.py rtu printed {first:?}; on standard error:\n{}",
+            server.errors()
+        );
         server
     }
 
@@ -263,12 +276,28 @@ impl PymodbusServer {
             .args(arguments)
             .stdin(std::process::Stdio::piped())
             .stdout(std::process::Stdio::piped())
-            .stderr(std::process::Stdio::null())
+            .stderr(std::process::Stdio::piped())
             .spawn()
             .unwrap_or_else(|error| panic!("cannot start {script}: {error}"));
-        let (Some(commands), Some(stdout)) = (child.stdin.take(), child.stdout.take()) else {
-            panic!("pymodbus_server.py has no standard input or output");
+        let (Some(commands), Some(stdout), Some(stderr)) =
+            (child.stdin.take(), child.stdout.take(), child.stderr.take())
+        else {
+            panic!("pymodbus_server.py has no standard input, output or error");
         };
+        // Read all along, so that a chatty script never fills the pipe and blocks.
+        let said = std::sync::Arc::new(std::sync::Mutex::new(String::new()));
+        let errors = std::sync::Arc::clone(&said);
+        std::thread::spawn(move || {
+            use std::io::BufRead;
+            for line in std::io::BufReader::new(stderr).lines() {
+                let Ok(line) = line else { return };
+                let mut errors = errors
+                    .lock()
+                    .unwrap_or_else(std::sync::PoisonError::into_inner);
+                errors.push_str(&line);
+                errors.push('\n');
+            }
+        });
         let (sender, replies) = std::sync::mpsc::channel();
         std::thread::spawn(move || {
             use std::io::BufRead;
@@ -284,17 +313,34 @@ impl PymodbusServer {
             child,
             commands,
             replies,
+            said,
         }
+    }
+
+    /// What the script has said on standard error so far; waits a little for the end of it
+    /// when the script has ended.
+    fn errors(&mut self) -> String {
+        if matches!(self.child.try_wait(), Ok(Some(_))) {
+            std::thread::sleep(std::time::Duration::from_millis(100));
+        }
+        self.said
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner)
+            .clone()
     }
 
     #[track_caller]
     fn reply(&mut self) -> String {
         match self.replies.recv_timeout(PYMODBUS_PATIENCE) {
             Ok(line) => line,
-            Err(_) => panic!(
-                "pymodbus_server.py said nothing (exit status {:?})",
-                self.child.try_wait()
-            ),
+            Err(_) => {
+                let status = self.child.try_wait();
+                panic!(
+                    "pymodbus_server.py said nothing (exit status {status:?}); on standard \
+                     error:\n{}",
+                    self.errors()
+                )
+            }
         }
     }
 }

@@ -20,7 +20,7 @@ use program_image::ProgramImage;
 use runtime::areas::LocatedAreas;
 use runtime::modbus::master::MasterOptions;
 use runtime::modbus::rtu_slave::{
-    RtuPortEvent, RtuSlaveCounters, RtuSlaveCounts, RtuSlaveOptions, serve_rtu_port,
+    DamagedFrameReports, RtuPortEvent, RtuSlaveCounters, RtuSlaveOptions, serve_rtu_port,
 };
 use runtime::modbus::{
     DEFAULT_FRAME_TIMEOUT, DEFAULT_IDLE_TIMEOUT, MapSlot, ModbusMap, ServerOptions, WritePolicy,
@@ -212,7 +212,7 @@ async fn run(arguments: Arguments) -> anyhow::Result<()> {
     let rtu_counters = RtuSlaveCounters::default();
     let (rtu_areas, rtu_map) = (Arc::clone(&areas), Arc::clone(&map));
     let rtu_slave = serve_rtu_slave(&arguments, writes, &rtu_areas, &rtu_map, &rtu_counters);
-    let mut reported_rtu = RtuSlaveCounts::default();
+    let mut damaged_frame_reports = DamagedFrameReports::default();
     let server = serve(listener, areas, map, server_options);
     let mut reported_faults = 0;
     let mut fault_check = tokio::time::interval(FAULT_REPORT_INTERVAL);
@@ -222,7 +222,7 @@ async fn run(arguments: Arguments) -> anyhow::Result<()> {
     let outcome = loop {
         tokio::select! {
             served = &mut server => break served.context("the Modbus server stopped"),
-            () = &mut rtu_slave => {}
+            never = &mut rtu_slave => match never {},
             signal = &mut ended => {
                 eprintln!("rivet-runtime: {signal}; stopping");
                 break Ok(());
@@ -238,10 +238,12 @@ async fn run(arguments: Arguments) -> anyhow::Result<()> {
                 reported_faults = status.faults_total;
                 // Damaged frames point at a wrong line setting or a noisy cable.
                 let rtu = rtu_counters.counts();
-                if rtu.dropped() > reported_rtu.dropped() {
-                    eprintln!("rivet-runtime: Modbus RTU: {rtu}");
+                if let Some(damaged) = damaged_frame_reports.due(&rtu, std::time::Instant::now()) {
+                    eprintln!(
+                        "rivet-runtime: Modbus RTU: {damaged} damaged frame(s) since the last \
+                         report; {rtu}"
+                    );
                 }
-                reported_rtu = rtu;
             }
         }
     };
@@ -258,14 +260,16 @@ async fn run(arguments: Arguments) -> anyhow::Result<()> {
 }
 
 /// Serves the RTU slave of `--modbus-rtu` for ever, saying on standard error when its port
-/// opens, cannot be opened or closes; without `--modbus-rtu`, waits for ever.
+/// opens, cannot be opened (once until the reason changes or the port opens: a missing
+/// adapter would otherwise be reported every 5 s for as long as it is missing) or closes;
+/// without `--modbus-rtu`, waits for ever.
 async fn serve_rtu_slave(
     arguments: &Arguments,
     writes: WritePolicy,
     areas: &Mutex<LocatedAreas>,
     map: &MapSlot,
     counters: &RtuSlaveCounters,
-) {
+) -> std::convert::Infallible {
     let Some(path) = &arguments.modbus_rtu else {
         return std::future::pending().await;
     };
@@ -276,15 +280,26 @@ async fn serve_rtu_slave(
         writes,
     };
     let shown = path.display();
+    let mut last_open_failure: Option<String> = None;
     let report = |event: RtuPortEvent<'_>| match event {
-        RtuPortEvent::Opened => eprintln!(
-            "rivet-runtime: Modbus RTU slave {} on {shown} at {settings}",
-            options.unit_id
-        ),
-        RtuPortEvent::OpenFailed { error, retry_in } => eprintln!(
-            "rivet-runtime: Modbus RTU: {error}; trying again in {} ms",
-            retry_in.as_millis()
-        ),
+        RtuPortEvent::Opened => {
+            last_open_failure = None;
+            eprintln!(
+                "rivet-runtime: Modbus RTU slave {} on {shown} at {settings}",
+                options.unit_id
+            );
+        }
+        RtuPortEvent::OpenFailed { error, retry_in } => {
+            let text = error.to_string();
+            if last_open_failure.as_ref() != Some(&text) {
+                eprintln!(
+                    "rivet-runtime: Modbus RTU: {text}; trying again in {} ms, and every 5 s \
+                     at the most (said again when the reason changes)",
+                    retry_in.as_millis()
+                );
+                last_open_failure = Some(text);
+            }
+        }
         RtuPortEvent::Closed { error, retry_in } => {
             let why = match error {
                 Some(error) => format!("failed: {error}"),
@@ -296,7 +311,7 @@ async fn serve_rtu_slave(
             );
         }
     };
-    serve_rtu_port(path, &settings, areas, map, &options, counters, report).await;
+    serve_rtu_port(path, &settings, areas, map, &options, counters, report).await
 }
 
 /// Loads the image at `path` and gives the Modbus map it asks for; a file that cannot be read

@@ -6,11 +6,12 @@ Usage:
 
 `tcp` serves Modbus TCP on 127.0.0.1, on PORT or (without it, or with 0) a port the system
 picks, and prints `port N` once it listens (a test that killed it starts it again on the same
-port); it answers every unit id from the same tables. `rtu` serves Modbus RTU on the serial
-port PATH (a socat pseudo-terminal in the tests) with BAUD, PARITY (N, E or O) and STOPBITS
-(1 or 2), 8 data bits, as the units listed in UNITS (comma-separated, default 1), each with
+port, whose old connections may be in TIME_WAIT: the socket reuses the address); it answers
+every unit id from the same tables. `rtu` serves Modbus RTU on the serial port PATH (a socat
+pseudo-terminal in the tests) with BAUD, PARITY (N, E or O) and STOPBITS (1 or 2), 8 data bits, as the units listed in UNITS (comma-separated, default 1), each with
 tables of its own, and prints `ready` once the port is open; it opens the port again when it
-goes away (socat killed and started again).
+goes away (socat killed and started again). A port that cannot be bound or opened at the
+start, or a server that fails, ends the script with status 1 and the reason on standard error.
 
 Every unit has coils (co), discrete inputs (di), holding registers (hr) and input registers
 (ir) at addresses 0 to 999 (PDU addresses, 0-based: the datastores use zero_mode, without which
@@ -132,15 +133,35 @@ def serve_commands(units):
     os._exit(0)
 
 
+def fail(reason):
+    """Ends the process with status 1 after saying `reason` on standard error, for the test."""
+    print(f"pymodbus_server.py: {reason}", file=sys.stderr, flush=True)
+    os._exit(1)
+
+
 async def serve_tcp(port):
     unit = unit_context()
-    server = ModbusTcpServer(ModbusServerContext(slaves=unit, single=True), address=("127.0.0.1", port))
+    # A test that killed the server starts it again on the same port, whose old connections
+    # are still in TIME_WAIT: without SO_REUSEADDR that bind fails.
+    server = ModbusTcpServer(
+        ModbusServerContext(slaves=unit, single=True),
+        address=("127.0.0.1", port),
+        allow_reuse_address=True,
+    )
     task = asyncio.create_task(server.serve_forever())
     while server.server is None:
+        if task.done():
+            # The bind failed: serve_forever raised before it set server.server.
+            error = task.exception() if not task.cancelled() else "cancelled"
+            fail(f"cannot serve Modbus TCP on 127.0.0.1:{port}: {error}")
         await asyncio.sleep(0.01)
     print(f"port {server.server.sockets[0].getsockname()[1]}", flush=True)
     threading.Thread(target=serve_commands, args=({1: unit},), daemon=True).start()
-    await task
+    try:
+        await task
+    except Exception as error:  # pylint: disable=broad-except
+        fail(f"the Modbus TCP server failed: {error!r}")
+    fail("the Modbus TCP server stopped")
 
 
 async def serve_rtu(path, baud, parity, stop_bits, unit_ids):
@@ -158,9 +179,16 @@ async def serve_rtu(path, baud, parity, stop_bits, unit_ids):
         reconnect_delay=0.1,
     )
     await server.start()
+    # With auto_reconnect, pymodbus swallows a failed open and tries again later; at the start
+    # the port must open, or the test would talk to nobody.
+    if server.transport is None:
+        fail(f"cannot open the serial port {path}")
     print("ready", flush=True)
     threading.Thread(target=serve_commands, args=(units,), daemon=True).start()
-    await server.serve_forever()
+    try:
+        await server.serve_forever()
+    except Exception as error:  # pylint: disable=broad-except
+        fail(f"the Modbus RTU server failed: {error!r}")
 
 
 def main():

@@ -122,6 +122,12 @@ async fn mbpoll_reads_and_writes_the_runtime_over_rtu_and_bad_frames_get_no_answ
     let silent = tokio::time::timeout(NO_ANSWER, master.read(&mut answer)).await;
     assert!(silent.is_err(), "a damaged frame was answered: {answer:?}");
     runtime.wait_for_message("(1 bad CRC");
+    // More damage soon after is not said at once (the runtime looks every 100 ms).
+    for _ in 0..2 {
+        master.write_all(&damaged).await.unwrap();
+        let silent = tokio::time::timeout(NO_ANSWER, master.read(&mut answer)).await;
+        assert!(silent.is_err(), "a damaged frame was answered: {answer:?}");
+    }
     master.write_all(&read_flags).await.unwrap();
     tokio::time::timeout(PATIENCE, master.read_exact(&mut answer))
         .await
@@ -130,16 +136,28 @@ async fn mbpoll_reads_and_writes_the_runtime_over_rtu_and_bad_frames_get_no_answ
     assert_eq!(answer.to_vec(), rtu_frame(1, &[0x03, 0x02, 0x00, 0x01]));
     drop(master);
 
-    // Unit 2 is another slave's business: mbpoll times out.
+    // Unit 2 is another slave's business: mbpoll times out (libmodbus's ETIMEDOUT), rather
+    // than failing in any other way.
     let other = mbpoll(
         &cable.master,
         &["-a", "2", "-t", "4", "-r", "2", "-c", "1"],
         &[],
     )
     .await;
-    assert!(other.is_err(), "unit 2 was answered: {other:?}");
+    assert!(
+        other
+            .as_ref()
+            .is_err_and(|said| said.contains("failed: Connection timed out")),
+        "unit 2 was answered, or mbpoll failed otherwise: {other:?}"
+    );
     mbpoll(&cable.master, &read_counter, &[]).await.unwrap();
-    runtime.terminate();
+    let said = runtime.terminate();
+    // The damaged frames after the first are counted, not each said on a line of its own.
+    let damage_lines: Vec<&String> = said
+        .iter()
+        .filter(|line| line.contains("bad CRC"))
+        .collect();
+    assert_eq!(damage_lines.len(), 1, "{damage_lines:#?}");
 }
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
@@ -169,6 +187,15 @@ async fn the_slave_waits_for_its_port_and_serves_it_again_after_the_cable_comes_
     // The TCP server goes on meanwhile.
     let mut tcp = connect(runtime.address).await;
     tcp.read_holding_registers(1, 1).await.unwrap().unwrap();
+    // The attempts of the next second (100, 200 and 400 ms apart) fail the same way, and are
+    // not said again.
+    tokio::time::sleep(Duration::from_secs(1)).await;
+    let failures = runtime
+        .messages()
+        .iter()
+        .filter(|line| line.contains("cannot open"))
+        .count();
+    assert_eq!(failures, 1, "{:#?}", runtime.messages());
 
     let mut cable = SocatPair::start(&cable_dir);
     runtime.wait_for_message("Modbus RTU slave 7 on");
@@ -192,13 +219,26 @@ async fn the_slave_waits_for_its_port_and_serves_it_again_after_the_cable_comes_
 fn a_bad_line_format_or_unit_is_refused_by_the_argument_parser_saying_why() {
     let dir = tempfile::tempdir().unwrap();
     let refusal = |arguments: &[&str]| {
-        let output = Command::new(env!("CARGO_BIN_EXE_rivet-runtime"))
+        let mut child = Command::new(env!("CARGO_BIN_EXE_rivet-runtime"))
             .args(["--listen", "127.0.0.1:0", "--modbus-rtu", "/dev/ttyUSB0"])
             .args(arguments)
             .arg("--data-dir")
             .arg(dir.path())
-            .output()
+            .stdout(std::process::Stdio::null())
+            .stderr(std::process::Stdio::piped())
+            .spawn()
             .unwrap();
+        // A runtime that took the arguments would run for ever: it is killed instead.
+        let deadline = Instant::now() + PATIENCE;
+        while child.try_wait().unwrap().is_none() {
+            if Instant::now() > deadline {
+                let _ = child.kill();
+                let _ = child.wait();
+                panic!("{arguments:?} was accepted: the runtime ran");
+            }
+            std::thread::sleep(Duration::from_millis(10));
+        }
+        let output = child.wait_with_output().unwrap();
         assert!(!output.status.success(), "{arguments:?} was accepted");
         String::from_utf8_lossy(&output.stderr).into_owned()
     };

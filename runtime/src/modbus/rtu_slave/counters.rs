@@ -12,7 +12,7 @@ pub struct RtuSlaveCounters {
     answered: AtomicU64,
     /// Broadcast writes run (address 0, no answer).
     broadcasts: AtomicU64,
-    /// Frames for another slave, and broadcast reads, ignored.
+    /// Frames for another slave, broadcast reads and exception answers, ignored.
     ignored: AtomicU64,
     /// Frames dropped for a bad CRC or too few bytes.
     bad_crc: AtomicU64,
@@ -27,7 +27,7 @@ pub struct RtuSlaveCounts {
     pub answered: u64,
     /// Broadcast writes run (address 0, no answer).
     pub broadcasts: u64,
-    /// Frames for another slave, and broadcast reads, ignored.
+    /// Frames for another slave, broadcast reads and exception answers, ignored.
     pub ignored: u64,
     /// Frames dropped for a bad CRC or too few bytes.
     pub bad_crc: u64,

@@ -12,6 +12,12 @@ pub const MAX_RTU_FRAME_BYTES: usize = 256;
 /// The shortest RTU frame: address, function code and the two CRC bytes.
 const MIN_RTU_FRAME_BYTES: usize = 4;
 
+/// How long a frame that is known to be incomplete (it holds fewer bytes than its function
+/// code implies) may pause before it is dropped (`docs/modbus-master.md` §7): USB adapters
+/// deliver bytes in batches (an FTDI chip every 16 ms, its latency timer), so a pause longer
+/// than the 3.5-character silence inside such a frame is the adapter's, not the master's.
+pub const INCOMPLETE_FRAME_PATIENCE: Duration = Duration::from_millis(50);
+
 /// The Modbus CRC-16 of `bytes` (polynomial 0xA001 reflected, initial value 0xFFFF); it travels
 /// low byte first.
 pub fn crc16(bytes: &[u8]) -> u16 {
@@ -66,8 +72,9 @@ pub enum DroppedFrame {
 ///
 /// A silence of `silence` (3.5 characters) ends a frame. A frame also ends as soon as it holds
 /// as many bytes as its function code implies and its CRC matches, because adapters and
-/// pseudo-terminals deliver bytes in chunks in which the time between bytes means nothing.
-/// Lives as long as the port is open.
+/// pseudo-terminals deliver bytes in chunks in which the time between bytes means nothing;
+/// for the same reason a frame holding fewer bytes than its function code implies ends only
+/// at a pause of [`INCOMPLETE_FRAME_PATIENCE`]. Lives as long as the port is open.
 #[derive(Debug)]
 pub struct RtuFrameReader<Port> {
     /// The port read from.
@@ -98,15 +105,31 @@ impl<Port: AsyncRead + Unpin> RtuFrameReader<Port> {
     ///
     /// Cancel-safe: a frame cut short by dropping the future goes on at the next call.
     pub async fn next_frame(&mut self) -> io::Result<Option<RtuFrame>> {
-        let mut chunk = [0; MAX_RTU_FRAME_BYTES];
+        // One byte more than a frame, so that a frame that runs past the limit is seen.
+        let mut chunk = [0; MAX_RTU_FRAME_BYTES + 1];
         loop {
             if let Some(frame) = self.complete_by_length() {
                 return Ok(Some(frame));
             }
-            let read = if self.buffer.is_empty() && !self.overflowing {
-                self.port.read(&mut chunk).await
+            // Only now, so that a frame complete by its length at the front of the buffer is
+            // taken even when the bytes after it would make the buffer too long.
+            if self.buffer.len() > MAX_RTU_FRAME_BYTES {
+                self.buffer.clear();
+                self.overflowing = true;
+            }
+            // Never more than fills the buffer to one byte past a frame: leftovers of the last
+            // chunk and a whole next frame then still fit.
+            let wanted = if self.overflowing {
+                chunk.len()
             } else {
-                match tokio::time::timeout(self.silence, self.port.read(&mut chunk)).await {
+                MAX_RTU_FRAME_BYTES + 1 - self.buffer.len()
+            };
+            let pause = self.pause_that_ends_the_frame();
+            let read = self.port.read(&mut chunk[..wanted]);
+            let read = if self.buffer.is_empty() && !self.overflowing {
+                read.await
+            } else {
+                match tokio::time::timeout(pause, read).await {
                     Ok(read) => read,
                     Err(_silence) => return Ok(Some(self.end_at_silence())),
                 }
@@ -115,13 +138,8 @@ impl<Port: AsyncRead + Unpin> RtuFrameReader<Port> {
             if count == 0 {
                 return Ok(None);
             }
-            if self.overflowing {
-                continue;
-            }
-            self.buffer.extend_from_slice(&chunk[..count]);
-            if self.buffer.len() > MAX_RTU_FRAME_BYTES {
-                self.buffer.clear();
-                self.overflowing = true;
+            if !self.overflowing {
+                self.buffer.extend_from_slice(&chunk[..count]);
             }
         }
     }
@@ -129,6 +147,16 @@ impl<Port: AsyncRead + Unpin> RtuFrameReader<Port> {
     /// The port, to write answers to.
     pub fn port_mut(&mut self) -> &mut Port {
         &mut self.port
+    }
+
+    /// The pause that ends the frame being received: the silence, or the longer patience
+    /// while the frame is known to be incomplete.
+    fn pause_that_ends_the_frame(&self) -> Duration {
+        if !self.overflowing && self.buffer.len() < least_length(&self.buffer) {
+            INCOMPLETE_FRAME_PATIENCE
+        } else {
+            self.silence
+        }
     }
 
     /// The request at the front of the buffer when the buffer holds as many bytes as its
@@ -166,6 +194,20 @@ fn implied_length(bytes: &[u8]) -> Option<usize> {
         15 | 16 => bytes.get(6).map(|&count| 9 + usize::from(count)),
         23 => bytes.get(10).map(|&count| 13 + usize::from(count)),
         _ => None,
+    }
+}
+
+/// The fewest bytes a frame starting with `bytes` can have: its implied length when the
+/// bytes tell it, the length with a byte count of 0 for function codes 15, 16 and 23 before
+/// the count arrives, and the 4 bytes of any frame otherwise.
+fn least_length(bytes: &[u8]) -> usize {
+    if let Some(length) = implied_length(bytes) {
+        return length;
+    }
+    match bytes.get(1) {
+        Some(15 | 16) => 9,
+        Some(23) => 13,
+        _ => MIN_RTU_FRAME_BYTES,
     }
 }
 

@@ -4,14 +4,20 @@
 //! malformed frames.
 //!
 //! [`RtuFrameReader`] cuts the port's bytes into frames, [`serve_rtu`] answers them over any
-//! byte stream, and [`serve_rtu_port`] keeps a serial port open by its path.
+//! byte stream, [`serve_rtu_port`] keeps a serial port open by its path, and
+//! [`DamagedFrameReports`] says how often damaged frames are worth a line on standard error.
 
 mod counters;
+mod damage_reports;
 mod frame;
 mod port;
 mod serve;
 
 pub use counters::{RtuSlaveCounters, RtuSlaveCounts};
-pub use frame::{DroppedFrame, MAX_RTU_FRAME_BYTES, RtuFrame, RtuFrameReader, crc16, rtu_frame};
+pub use damage_reports::{DAMAGED_FRAMES_REPORT_INTERVAL, DamagedFrameReports};
+pub use frame::{
+    DroppedFrame, INCOMPLETE_FRAME_PATIENCE, MAX_RTU_FRAME_BYTES, RtuFrame, RtuFrameReader, crc16,
+    rtu_frame,
+};
 pub use port::{RtuPortEvent, serve_rtu_port};
 pub use serve::{RtuSlaveOptions, serve_rtu};

@@ -1,5 +1,6 @@
 //! Keeping the RTU slave's serial port open by its path.
 
+use std::convert::Infallible;
 use std::path::Path;
 use std::sync::Mutex;
 use std::time::Duration;
@@ -33,7 +34,8 @@ pub enum RtuPortEvent<'a> {
     },
 }
 
-/// Serves the serial port at `path` with `settings` as the RTU slave of `options`, for ever:
+/// Serves the serial port at `path` with `settings` as the RTU slave of `options`, for ever (it
+/// never returns, which its type says, so a caller cannot poll it after an end):
 /// when the port cannot be opened or closes, `report` is told, and the port is opened again by
 /// its path after the back-off of `docs/modbus-master.md` §6.8 (100 ms doubling to 5 s; back to
 /// 100 ms once a frame has arrived), so a USB adapter that comes back is served again.
@@ -45,7 +47,7 @@ pub async fn serve_rtu_port(
     options: &RtuSlaveOptions,
     counters: &RtuSlaveCounters,
     mut report: impl FnMut(RtuPortEvent<'_>),
-) {
+) -> Infallible {
     let mut backoff = Backoff::default();
     loop {
         let port = match open_port(path, settings) {

@@ -16,6 +16,9 @@ use crate::modbus::write_policy::WritePolicy;
 /// The broadcast address: every slave runs the write, none answers.
 const BROADCAST: u8 = 0;
 
+/// The bit an exception answer sets in the function code; no request has it.
+const EXCEPTION_BIT: u8 = 0x80;
+
 /// How the RTU slave answers; fixed while a port is served.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct RtuSlaveOptions {
@@ -33,8 +36,9 @@ pub struct RtuSlaveOptions {
 /// A request for `options.unit_id` is answered with [`serve_pdu`] after a silence, with the
 /// address and a CRC; a function code the areas do not serve (such as 100, the online
 /// services, which belong to TCP connections) gets exception 1. A broadcast write runs without
-/// an answer; a broadcast read, a frame for another slave and a damaged frame get none either,
-/// and each is counted in `counters`.
+/// an answer; a broadcast read, a frame for another slave, an answer (function code 0x80 or
+/// above, an exception) and a damaged frame get none either, and each is counted in
+/// `counters`.
 pub async fn serve_rtu<Port: AsyncRead + AsyncWrite + Unpin>(
     port: Port,
     areas: &Mutex<LocatedAreas>,
@@ -51,6 +55,15 @@ pub async fn serve_rtu<Port: AsyncRead + AsyncWrite + Unpin>(
                 continue;
             }
         };
+        // An answer or an exception is another slave's (or our own, echoed by an adapter):
+        // answering it with an exception could make two slaves answer each other for ever.
+        if pdu
+            .first()
+            .is_some_and(|&function| function >= EXCEPTION_BIT)
+        {
+            counters.count_ignored();
+            continue;
+        }
         if address == BROADCAST {
             if is_broadcast_write(&pdu) {
                 serve_pdu(areas, &map.get(), &options.writes, &pdu);
@@ -68,8 +81,12 @@ pub async fn serve_rtu<Port: AsyncRead + AsyncWrite + Unpin>(
         // The master may still be turning its line round to receive.
         tokio::time::sleep(options.silence).await;
         let port = frames.port_mut();
+        // No flush: tokio-serial's flush is tcdrain, which blocks the thread until the bytes
+        // are on the wire, and rivet-runtime runs every task on one thread, so each answer
+        // would freeze Modbus TCP, the online services and the signals for its whole
+        // transmission. The kernel sends the queued bytes in order anyway, and nothing here
+        // needs to know when they have left (no RTS to turn round: the adapter does that).
         port.write_all(&rtu_frame(address, &response)).await?;
-        port.flush().await?;
         counters.count_answered();
     }
     Ok(())

@@ -153,19 +153,68 @@ async fn the_end_of_the_port_ends_the_frames() {
 }
 
 #[tokio::test(start_paused = true)]
-async fn a_frame_interrupted_by_a_silence_is_dropped_in_two_parts() {
+async fn a_frame_paused_longer_than_the_silence_but_within_the_patience_is_taken_whole() {
+    // A USB adapter's batches: the pause is the adapter's latency timer, not the master's.
+    for text in [GOLDEN[0], GOLDEN[3]] {
+        let frame = hex(text);
+        let (mut reader, mut sender) = line();
+        sender.write_all(&frame[..5]).await.unwrap();
+        let rest = frame[5..].to_vec();
+        tokio::spawn(async move {
+            tokio::time::sleep(Duration::from_millis(16)).await;
+            sender.write_all(&rest).await.unwrap();
+            std::future::pending::<()>().await;
+        });
+        assert_eq!(reader.next_frame().await.unwrap(), Some(request(text)));
+    }
+}
+
+#[tokio::test(start_paused = true)]
+async fn a_frame_paused_longer_than_the_patience_is_dropped_in_two_parts() {
     let (mut reader, mut sender) = line();
     let frame = hex(GOLDEN[3]);
     sender.write_all(&frame[..5]).await.unwrap();
+    let start = tokio::time::Instant::now();
     assert_eq!(
         reader.next_frame().await.unwrap(),
         Some(RtuFrame::Dropped(DroppedFrame::BadCrc))
+    );
+    // tokio's timers tick in whole milliseconds, so the patience may end up to one later.
+    let waited = start.elapsed();
+    assert!(
+        waited >= INCOMPLETE_FRAME_PATIENCE
+            && waited <= INCOMPLETE_FRAME_PATIENCE + Duration::from_millis(1),
+        "{waited:?}"
     );
     sender.write_all(&frame[5..]).await.unwrap();
     assert_eq!(
         reader.next_frame().await.unwrap(),
         Some(RtuFrame::Dropped(DroppedFrame::BadCrc))
     );
+}
+
+#[tokio::test(start_paused = true)]
+async fn leftovers_and_the_next_read_never_make_a_good_frame_too_long() {
+    // Function code 16 with 123 registers: a 255-byte frame.
+    let mut registers = vec![0x10, 0x00, 0x00, 0x00, 123, 246];
+    registers.extend(std::iter::repeat_n(0xAB, 246));
+    let long = rtu_frame(1, &registers);
+    assert_eq!(long.len(), 255);
+    let mut line_bytes = hex(GOLDEN[0]);
+    line_bytes.extend(&long);
+    line_bytes.extend(&long);
+    let (mut reader, mut sender) = line();
+    sender.write_all(&line_bytes).await.unwrap();
+    let long_request = RtuFrame::Request {
+        address: 1,
+        pdu: registers,
+    };
+    assert_eq!(reader.next_frame().await.unwrap(), Some(request(GOLDEN[0])));
+    assert_eq!(
+        reader.next_frame().await.unwrap(),
+        Some(long_request.clone())
+    );
+    assert_eq!(reader.next_frame().await.unwrap(), Some(long_request));
 }
 
 mod chunks {

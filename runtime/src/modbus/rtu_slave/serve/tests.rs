@@ -174,3 +174,86 @@ async fn the_slave_ends_at_the_port_s_end_of_file() {
         .unwrap();
     assert_eq!(counters.counts(), RtuSlaveCounts::default());
 }
+
+#[tokio::test(start_paused = true)]
+async fn an_exception_answer_on_the_line_is_ignored_not_answered() {
+    let mut line = line(WritePolicy::All);
+    // An exception of function code 3, as an echoing adapter would hand back.
+    line.send(&rtu_frame(1, &[0x83, 0x02])).await;
+    line.no_answer().await;
+    line.send(&rtu_frame(1, &[0x03, 0x00, 0x00, 0x00, 0x01]))
+        .await;
+    assert_eq!(
+        line.answer(7).await,
+        rtu_frame(1, &[0x03, 0x02, 0x00, 0x01])
+    );
+    assert_eq!((line.counts().ignored, line.counts().answered), (1, 1));
+}
+
+/// A port whose flush never ends, like a serial port's `tcdrain` on a line that is slow to
+/// send: the slave must not wait for it.
+struct NeverDrains(DuplexStream);
+
+impl AsyncRead for NeverDrains {
+    fn poll_read(
+        mut self: std::pin::Pin<&mut Self>,
+        context: &mut std::task::Context<'_>,
+        buffer: &mut tokio::io::ReadBuf<'_>,
+    ) -> std::task::Poll<io::Result<()>> {
+        std::pin::Pin::new(&mut self.0).poll_read(context, buffer)
+    }
+}
+
+impl AsyncWrite for NeverDrains {
+    fn poll_write(
+        mut self: std::pin::Pin<&mut Self>,
+        context: &mut std::task::Context<'_>,
+        bytes: &[u8],
+    ) -> std::task::Poll<io::Result<usize>> {
+        std::pin::Pin::new(&mut self.0).poll_write(context, bytes)
+    }
+
+    fn poll_flush(
+        self: std::pin::Pin<&mut Self>,
+        _context: &mut std::task::Context<'_>,
+    ) -> std::task::Poll<io::Result<()>> {
+        std::task::Poll::Pending
+    }
+
+    fn poll_shutdown(
+        mut self: std::pin::Pin<&mut Self>,
+        context: &mut std::task::Context<'_>,
+    ) -> std::task::Poll<io::Result<()>> {
+        std::pin::Pin::new(&mut self.0).poll_shutdown(context)
+    }
+}
+
+#[tokio::test(start_paused = true)]
+async fn the_slave_answers_without_waiting_for_the_port_to_drain() {
+    let (mut master, port) = tokio::io::duplex(1024);
+    let counters = Arc::new(RtuSlaveCounters::default());
+    let served_counters = Arc::clone(&counters);
+    tokio::spawn(async move {
+        let areas = Mutex::new(LocatedAreas::new(4, 4, 4));
+        let map = MapSlot::new(ModbusMap::default());
+        let options = RtuSlaveOptions {
+            unit_id: 1,
+            silence: SILENCE,
+            writes: WritePolicy::All,
+        };
+        serve_rtu(NeverDrains(port), &areas, &map, &options, &served_counters).await
+    });
+    for _ in 0..2 {
+        master
+            .write_all(&rtu_frame(1, &[0x03, 0x00, 0x00, 0x00, 0x01]))
+            .await
+            .unwrap();
+        let mut answer = [0; 7];
+        tokio::time::timeout(NO_ANSWER, master.read_exact(&mut answer))
+            .await
+            .expect("no answer")
+            .unwrap();
+        assert_eq!(answer.to_vec(), rtu_frame(1, &[0x03, 0x02, 0x00, 0x00]));
+    }
+    assert_eq!(counters.counts().answered, 2);
+}
