@@ -220,10 +220,11 @@ impl DeviceExchange {
 
     /// The scheduler's side, at the end of a cycle of the I/O task: counts it.
     pub fn cycle_ended(&self, edge_published: bool) {
-        self.cycle_ends.fetch_add(1, Ordering::Release);
+        // The flag first: the wake thread that sees the new count must see the edge with it.
         if edge_published {
             self.edge_published.store(true, Ordering::Release);
         }
+        self.cycle_ends.fetch_add(1, Ordering::Release);
     }
 
     /// Cycles of the I/O task ended since the master started.

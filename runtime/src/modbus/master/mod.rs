@@ -99,9 +99,23 @@ pub enum MasterError {
 /// The Modbus master: [`Master::start`] gives a [`MasterHandle`].
 pub struct Master;
 
+/// What the master's thread is told before its devices' tasks begin.
+enum Signal {
+    /// Begin polling.
+    Go,
+    /// End without polling (the handle went away first).
+    Stop,
+}
+
 impl Master {
     /// Resolves `image`'s section and, unless `options` turn it off, starts the master's
-    /// threads. An image without a section gives a handle without devices and without threads.
+    /// threads, which poll nothing until [`MasterStarter::go`] (so a new master can be prepared
+    /// on the caller's thread while the old one still has the serial ports). An image without
+    /// a section gives a handle without devices and without threads.
+    ///
+    /// The threads run with normal scheduling even when the caller runs at real-time
+    /// priority (`docs/scheduler.md` §6): a slow name lookup or a busy line never competes
+    /// with the tasks.
     pub fn start(
         image: &ProgramImage,
         options: &MasterOptions,
@@ -137,6 +151,7 @@ impl Master {
             wake: None,
             thread: None,
             shutdown: Arc::new(tokio::sync::Notify::new()),
+            signals: None,
         };
         if off || handle.section.devices.is_empty() {
             return Ok(handle);
@@ -180,13 +195,24 @@ impl Master {
             .collect();
         handle.wake = Some(Wake::spawn(targets)?);
         let shutdown = Arc::clone(&handle.shutdown);
+        // tokio's blocking threads (name lookups) are started by the master's thread, but
+        // each gives up a real-time policy itself too, whoever starts it.
         let runtime = tokio::runtime::Builder::new_current_thread()
             .enable_all()
+            .thread_name("rivet-modbus-blocking")
+            .on_thread_start(become_normal)
             .build()?;
+        let (signals, received) = std::sync::mpsc::channel();
+        handle.signals = Some(signals);
         handle.thread = Some(
             std::thread::Builder::new()
                 .name("rivet-modbus-master".to_owned())
                 .spawn(move || {
+                    become_normal();
+                    if !matches!(received.recv(), Ok(Signal::Go)) {
+                        runtime.shutdown_background();
+                        return;
+                    }
                     for device in tcp {
                         runtime.spawn(device.run());
                     }
@@ -194,24 +220,59 @@ impl Master {
                         runtime.spawn(line.run());
                     }
                     runtime.block_on(shutdown.notified());
-                    // Dropping the runtime ends the devices' tasks and closes their connections.
-                    drop(runtime);
+                    // Ending the runtime ends the devices' tasks and closes their connections
+                    // and ports; a name lookup still running on a blocking thread is left to
+                    // finish on its own rather than waited for.
+                    runtime.shutdown_background();
                 })?,
         );
         Ok(handle)
     }
 }
 
+/// Gives up a real-time policy the calling thread inherited (`docs/modbus-master.md` §6.1).
+fn become_normal() {
+    // Giving up a real-time policy needs no privilege; should the system refuse anyway, the
+    // thread runs as it is, which is what it did before this call.
+    let _ = crate::scheduler::make_current_thread_normal();
+}
+
+/// Lets a prepared master's devices begin polling; kept by whoever drops the master it
+/// replaces, so that the old one's serial ports are closed first.
+pub struct MasterStarter {
+    signals: Option<std::sync::mpsc::Sender<Signal>>,
+}
+
+impl MasterStarter {
+    /// Lets the devices begin polling (nothing when the master has no threads, or its handle
+    /// has already gone away).
+    pub fn go(self) {
+        if let Some(signals) = &self.signals {
+            // A thread already told to stop has ended and drops nothing here.
+            let _ = signals.send(Signal::Go);
+        }
+    }
+}
+
 /// The running master of one image. Dropping it stops it: its connections are closed and its
 /// threads end.
 pub struct MasterHandle {
+    /// The section the master runs, as the image has it.
     section: MasterSection,
+    /// Per device, its places in the program's memory.
     places: Vec<DevicePlaces>,
+    /// Per device, its exchange with the scheduler.
     exchanges: Vec<Arc<DeviceExchange>>,
+    /// Per device, its counters and state, shared with the online service.
     statuses: Vec<Arc<Mutex<DeviceStatus>>>,
+    /// The `rivet-modbus-wake` thread, for a master with devices.
     wake: Option<Wake>,
+    /// The `rivet-modbus-master` thread, for a master with devices.
     thread: Option<JoinHandle<()>>,
+    /// Ends the devices' tasks (the master's thread waits for it).
     shutdown: Arc<tokio::sync::Notify>,
+    /// Tells the master's thread to begin polling, or to end before it began.
+    signals: Option<std::sync::mpsc::Sender<Signal>>,
 }
 
 impl MasterHandle {
@@ -223,6 +284,18 @@ impl MasterHandle {
     /// Whether the master runs devices (it is on and the image has some).
     pub fn active(&self) -> bool {
         self.thread.is_some()
+    }
+
+    /// What lets the devices begin polling (see [`Master::start`]).
+    pub fn starter(&self) -> MasterStarter {
+        MasterStarter {
+            signals: self.signals.clone(),
+        }
+    }
+
+    /// Per device, its places in the program's memory (resolved when the master started).
+    pub fn places(&self) -> &[DevicePlaces] {
+        &self.places
     }
 
     /// The scheduler's side of every device, for a running master; none when it is off.
@@ -271,6 +344,10 @@ impl MasterHandle {
 
 impl Drop for MasterHandle {
     fn drop(&mut self) {
+        if let Some(signals) = self.signals.take() {
+            // A thread that has not begun polling ends; one that has waits for `shutdown`.
+            let _ = signals.send(Signal::Stop);
+        }
         self.shutdown.notify_one();
         if let Some(thread) = self.thread.take() {
             // A panic there has been reported by the panic hook; nothing is left to do.

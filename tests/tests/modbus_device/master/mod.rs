@@ -232,7 +232,9 @@ fn read_udint(scheduler: &Scheduler, path: &str) -> u32 {
     u32::from_le_bytes([bytes[0], bytes[1], bytes[2], bytes[3]])
 }
 
-/// Waits until `done` holds, polling; panics with `what` after [`PATIENCE`].
+/// Waits until `done` holds, polling; panics with `what` after [`PATIENCE`], naming the
+/// caller's line.
+#[track_caller]
 fn wait_until(what: &str, mut done: impl FnMut() -> bool) {
     let deadline = Instant::now() + PATIENCE;
     while !done() {

@@ -74,12 +74,12 @@ fn two_units_on_one_line_are_polled_in_turn_and_the_port_is_reopened() {
             && slave.get("hr", 10) == 42
             && slave.get("2.hr", 10) == 42
     });
-    let devices = scheduler.modbus_devices();
-    assert!(
-        devices
+    wait_until("both units communicate", || {
+        scheduler
+            .modbus_devices()
             .iter()
             .all(|device| device.state == DeviceState::Communicating)
-    );
+    });
 
     // A slave slower than the timeout: each device times out in its turn, and the late
     // answers are dropped before the next request, so the line is in step again afterwards.
