@@ -46,7 +46,7 @@ mod located;
 mod modbus_io;
 mod outbox;
 mod plan;
-mod realtime;
+pub(crate) mod realtime;
 mod record;
 mod retain_writer;
 mod statistics;

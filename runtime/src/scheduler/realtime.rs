@@ -39,7 +39,7 @@ pub const MAX_REALTIME_PRIORITY: u8 = 99;
 
 /// Puts the calling thread at `SCHED_FIFO` priority `priority` (clamped to 1–99) and says what
 /// it got.
-pub(super) fn make_current_thread_realtime(priority: u8) -> Realtime {
+pub(crate) fn make_current_thread_realtime(priority: u8) -> Realtime {
     let priority = priority.clamp(1, MAX_REALTIME_PRIORITY);
     match fifo_refusal(priority) {
         None => Realtime::Fifo(priority),

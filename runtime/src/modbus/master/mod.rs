@@ -360,3 +360,100 @@ impl Drop for MasterHandle {
 fn lock<T>(mutex: &Mutex<T>) -> std::sync::MutexGuard<'_, T> {
     mutex.lock().unwrap_or_else(PoisonError::into_inner)
 }
+
+#[cfg(test)]
+mod tests {
+    use program_image::modbus_master::{ChannelDef, DeviceDef, WordOrder};
+
+    use super::*;
+    use crate::test_images::{TestTask, image};
+
+    /// The scheduling policy of each of this process's threads whose name starts with
+    /// `prefix` (`/proc/self/task/*/stat`, field 41: 0 is `SCHED_OTHER`).
+    fn policies(prefix: &str) -> Vec<(String, u32)> {
+        let mut found = Vec::new();
+        for task in std::fs::read_dir("/proc/self/task").unwrap().flatten() {
+            let Ok(stat) = std::fs::read_to_string(task.path().join("stat")) else {
+                continue;
+            };
+            let (Some(open), Some(close)) = (stat.find('('), stat.rfind(')')) else {
+                continue;
+            };
+            let name = stat[open + 1..close].to_owned();
+            // The fields after the name start with field 3.
+            let policy = stat[close + 1..]
+                .split_whitespace()
+                .nth(41 - 3)
+                .and_then(|field| field.parse().ok());
+            if let (true, Some(policy)) = (name.starts_with(prefix), policy) {
+                found.push((name, policy));
+            }
+        }
+        found
+    }
+
+    #[cfg(target_os = "linux")]
+    #[test]
+    fn a_master_started_by_a_realtime_thread_runs_its_threads_with_normal_scheduling() {
+        let mut image = image(&[TestTask::cyclic(1_000_000, 1)], &[]);
+        image.modbus_master = Some(MasterSection {
+            serial_ports: Vec::new(),
+            devices: vec![DeviceDef {
+                name: "Named".to_owned(),
+                // A host name, so that tokio resolves it on a blocking thread.
+                link: Link::Tcp {
+                    host: "localhost".to_owned(),
+                    port: 1,
+                },
+                unit_id: 1,
+                timeout_ms: 100,
+                task: 0,
+                schedule: Schedule::Interval { interval_ms: 10 },
+                word_order: WordOrder::HighFirst,
+                max_read_gap: 0,
+                status: None,
+                // A request, so that the device connects: a read of one coil into the
+                // image's located BOOL.
+                channels: vec![ChannelDef {
+                    variable: "Trigger".to_owned(),
+                    table: program_image::ModbusTable::Coils,
+                    address: 0,
+                    value_type: program_image::Elementary::Bool,
+                    count: 1,
+                    direction: program_image::modbus_master::Direction::Read,
+                    function_code: 1,
+                    trigger: program_image::modbus_master::Trigger::Cyclic,
+                    on_error: program_image::modbus_master::OnError::KeepLastValue,
+                    error_flag: None,
+                }],
+            }],
+        });
+        // Started by a SCHED_FIFO thread (when the system grants it), as the scheduler's
+        // thread with `--realtime-priority` would.
+        let handle = std::thread::spawn(move || {
+            let _ = crate::scheduler::realtime::make_current_thread_realtime(10);
+            let handle = Master::start(&image, &MasterOptions::default()).unwrap();
+            handle.starter().go();
+            handle
+        })
+        .join()
+        .unwrap();
+        // The device tries to connect, which resolves its host on a blocking thread.
+        let deadline = std::time::Instant::now() + Duration::from_secs(10);
+        while handle.snapshot()[0].errors == 0 && std::time::Instant::now() < deadline {
+            std::thread::sleep(Duration::from_millis(10));
+        }
+        let threads = policies("rivet-modbus-");
+        let names: Vec<&str> = threads.iter().map(|(name, _)| name.as_str()).collect();
+        assert!(names.contains(&"rivet-modbus-ma"), "{names:?}");
+        assert!(names.contains(&"rivet-modbus-wa"), "{names:?}");
+        assert!(names.contains(&"rivet-modbus-bl"), "{names:?}");
+        // Whether or not the system granted SCHED_FIFO to the starting thread, every thread of
+        // the master runs with SCHED_OTHER.
+        assert!(
+            threads.iter().all(|(_, policy)| *policy == 0),
+            "{threads:?}"
+        );
+        drop(handle);
+    }
+}
