@@ -2,6 +2,7 @@
 //! server on 127.0.0.1 port 0 and against misbehaving fake slaves written here. No test
 //! asserts timing: counters and cycle counts that keep growing are the checks.
 
+mod coils;
 mod edges;
 mod faults;
 mod online_change;
