@@ -240,6 +240,7 @@ fn become_normal() {
 /// Lets a prepared master's devices begin polling; kept by whoever drops the master it
 /// replaces, so that the old one's serial ports are closed first.
 pub struct MasterStarter {
+    /// The master thread's signals; `None` for a master without threads.
     signals: Option<std::sync::mpsc::Sender<Signal>>,
 }
 
