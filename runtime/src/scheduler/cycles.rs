@@ -120,8 +120,11 @@ impl Cycles<'_, '_> {
         // without popping its levels; what is left of them belongs to no running cycle.
         self.levels.truncate(depth + 1);
         self.forces.apply_to_view(engine);
-        // The devices get the outputs with the forces applied: a forced value is sent.
-        if let Some(modbus) = self.modbus.as_deref_mut() {
+        // The devices get the outputs with the forces applied: a forced value is sent. A halted
+        // cycle abandoned by a stop, reset or download did not end: its half-run outputs and
+        // edges are not the program's, and its end wakes no device.
+        let abandoned = matches!(&result, Err(fault) if fault.kind == FaultKind::Abandoned);
+        if !abandoned && let Some(modbus) = self.modbus.as_deref_mut() {
             modbus.cycle_end(task, engine);
         }
         if depth <= self.publish_depth {

@@ -15,7 +15,7 @@ use super::cycles::Cycles;
 use super::inbox::Received;
 use super::located;
 use super::worker::lock;
-use super::{Between, Command, SchedulerError};
+use super::{Between, Command, Retired, SchedulerError};
 use crate::engine::EngineView;
 use crate::online::Memory;
 use crate::retain::RetainSnapshot;
@@ -135,8 +135,12 @@ impl Cycles<'_, '_> {
             // An online change waits for a moment when no task is in a cycle; here one is
             // halted in its cycle, and an online change never abandons a cycle.
             Command::OnlineChange(change, reply) => {
-                let (refused, ..) = *change;
-                let _ = reply.send((Err(SchedulerError::Halted), Some(refused)));
+                let (refused, _, _, _, master) = *change;
+                let retired = Retired {
+                    engine: Some(refused),
+                    master: Some(master),
+                };
+                let _ = reply.send((Err(SchedulerError::Halted), retired));
             }
             other => {
                 engine.debug_mut().abandon_halted();

@@ -46,7 +46,7 @@ mod located;
 mod modbus_io;
 mod outbox;
 mod plan;
-mod realtime;
+pub(crate) mod realtime;
 mod record;
 mod retain_writer;
 mod statistics;
@@ -61,10 +61,13 @@ use program_image::{ImageHash, ProgramImage};
 
 use crate::areas::LocatedAreas;
 use crate::engine::{AppliedChange, Engine, FaultRecord, LoadError, OnlineChangePlan, ResetKind};
-use crate::modbus::master::{DeviceSnapshot, DeviceStatus, MasterError, MasterOptions};
+use crate::modbus::master::{
+    DeviceSnapshot, DeviceStatus, Master, MasterError, MasterHandle, MasterOptions,
+};
 use crate::online::{Forces, Memory, Trace};
 use crate::retain::{RetainError, RetainRestore};
 
+pub(crate) use realtime::make_current_thread_normal;
 pub use realtime::{MAX_REALTIME_PRIORITY, Realtime};
 pub use record::CycleRecord;
 pub use statistics::TaskStatistics;
@@ -169,9 +172,24 @@ pub struct OnlineChangeReport {
     pub switch: Duration,
 }
 
-/// The scheduler's answer to an online change, with the engine it no longer needs (the old one
-/// after a switch, the new one when refused), for the asking thread to drop.
-type ChangeAnswer = (Result<OnlineChangeReport, SchedulerError>, Option<Engine>);
+/// The scheduler's answer to an online change, with what it no longer needs, for the asking
+/// thread to drop.
+type ChangeAnswer = (Result<OnlineChangeReport, SchedulerError>, Retired);
+
+/// The scheduler's answer to a load, with what it no longer needs, for the asking thread to
+/// drop.
+type LoadAnswer = (Result<LoadReport, SchedulerError>, Retired);
+
+/// What a load or an online change leaves over: freeing an engine's code takes milliseconds
+/// for a large program, and stopping a Modbus master joins its threads, which may wait for a
+/// name lookup (`docs/modbus-master.md` §6.10); on the asking thread neither holds a task.
+#[derive(Default)]
+struct Retired {
+    /// The old engine after a switch or a load, the new one when refused.
+    engine: Option<Engine>,
+    /// The old master when a new one replaced it, or the new one when it is not needed.
+    master: Option<MasterHandle>,
+}
 
 /// What an action run between two cycles (see [`Scheduler::between`]) may touch; it lives only
 /// while the action runs.
@@ -223,6 +241,8 @@ pub struct Scheduler {
     status: Arc<Mutex<SchedulerStatus>>,
     /// The Modbus master's devices of the loaded program, replaced at each load.
     modbus_devices: ModbusDevices,
+    /// How the masters run; each load's master is prepared on the caller's thread.
+    modbus_master: MasterOptions,
     thread: Option<JoinHandle<()>>,
 }
 
@@ -266,6 +286,7 @@ impl Scheduler {
             realtime: Realtime::Normal,
         }));
         let realtime_priority = options.realtime_priority;
+        let modbus_master = options.modbus_master.clone();
         let modbus_devices = ModbusDevices::default();
         let worker = worker::Worker::new(
             areas,
@@ -296,6 +317,7 @@ impl Scheduler {
             waker: thread.thread().clone(),
             status,
             modbus_devices,
+            modbus_master,
             thread: Some(thread),
         })
     }
@@ -305,9 +327,17 @@ impl Scheduler {
     /// it ran. When the image is refused, everything stays as it was.
     pub fn load(&self, image: ProgramImage) -> Result<LoadReport, SchedulerError> {
         let identity = image.identity();
-        check_modbus_master(&image)?;
         let engine = Engine::new(image)?;
-        self.ask(|reply| Command::Load(Box::new(engine), identity, reply))?
+        // The new master is made here, not on the scheduler's thread, which may run at
+        // real-time priority and must not wait for threads to start; its devices begin
+        // polling once the old master has closed its connections and ports.
+        let master = Master::start(engine.image(), &self.modbus_master)?;
+        let starter = master.starter();
+        let (loaded, retired) =
+            self.ask(|reply| Command::Load(Box::new((engine, identity, master)), reply))?;
+        drop(retired);
+        starter.go();
+        loaded
     }
 
     /// Replaces the running program, made from the image `from`, with `engine` (made from
@@ -321,12 +351,17 @@ impl Scheduler {
         from: ImageHash,
         to: ImageHash,
     ) -> Result<OnlineChangeReport, SchedulerError> {
-        check_modbus_master(engine.image())?;
-        let (result, retired) =
-            self.ask(|reply| Command::OnlineChange(Box::new((engine, plan, from, to)), reply))?;
-        // Freeing an engine's code takes milliseconds for a large program: here, on the
-        // caller's thread, it holds no task.
+        // Prepared whether or not the switch keeps the running master (only the scheduler
+        // knows): a master that is not needed goes back unstarted with the answer.
+        let master = Master::start(engine.image(), &self.modbus_master)?;
+        let starter = master.starter();
+        let (result, retired) = self.ask(|reply| {
+            Command::OnlineChange(Box::new((engine, plan, from, to, master)), reply)
+        })?;
+        // Freeing an engine's code and joining a master's threads take time: here, on the
+        // caller's thread, they hold no task.
         drop(retired);
+        starter.go();
         result
     }
 
@@ -424,32 +459,29 @@ impl Drop for Scheduler {
     }
 }
 
-/// Refuses an image whose Modbus master's paths do not fit its program (§5.2 of
-/// `docs/modbus-master.md`), before anything is replaced.
-fn check_modbus_master(image: &ProgramImage) -> Result<(), SchedulerError> {
-    if let Some(section) = &image.modbus_master {
-        crate::modbus::master::resolve_section(image, section)
-            .map_err(|error| SchedulerError::ModbusMaster(error.into()))?;
-    }
-    Ok(())
-}
-
 /// The answer to a command.
 type Reply = inbox::Answer<Result<(), SchedulerError>>;
 
 /// What the handle asks of the thread.
 enum Command {
+    /// A load: the new engine, its image's identity and its master, prepared (not polling).
     Load(
-        Box<Engine>,
-        ImageHash,
-        inbox::Answer<Result<LoadReport, SchedulerError>>,
+        Box<(Engine, ImageHash, MasterHandle)>,
+        inbox::Answer<LoadAnswer>,
     ),
     Start(Reply),
     Stop(Reply),
     Reset(ResetKind, Reply),
-    /// An online change: the new engine, its plan, the images it changes from and to.
+    /// An online change: the new engine, its plan, the images it changes from and to, and the
+    /// new image's master, prepared (not polling).
     OnlineChange(
-        Box<(Engine, Arc<OnlineChangePlan>, ImageHash, ImageHash)>,
+        Box<(
+            Engine,
+            Arc<OnlineChangePlan>,
+            ImageHash,
+            ImageHash,
+            MasterHandle,
+        )>,
         inbox::Answer<ChangeAnswer>,
     ),
     /// An action between two cycles, which sends its own answer.

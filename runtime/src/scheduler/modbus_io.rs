@@ -6,17 +6,19 @@
 
 use std::thread::Thread;
 
-use program_image::{ProgramImage, Region};
+use program_image::Region;
+use program_image::modbus_master::MasterSection;
 
 use crate::engine::EngineView;
-use crate::modbus::master::{
-    DeviceCopier, MasterHandle, ProgramMemory, ResolveError, resolve_section,
-};
+use crate::modbus::master::{DeviceCopier, DevicePlaces, MasterHandle, ProgramMemory};
 
 /// The running master of the loaded program and the scheduler's side of its devices.
 pub(super) struct ModbusIo {
+    /// The master.
     handle: MasterHandle,
+    /// Per device, what a cycle of its I/O task copies.
     copiers: Vec<DeviceCopier>,
+    /// The `rivet-modbus-wake` thread, unparked after a cycle end.
     waker: Option<Thread>,
 }
 
@@ -54,25 +56,39 @@ impl ModbusIo {
         }
     }
 
-    /// Tells the devices whether the program runs (between cycles).
-    pub(super) fn set_running(&self, running: bool) {
+    /// Tells the devices whether the program runs (between cycles); a stop also forgets the
+    /// edges seen at cycle ends and not yet handed to the master, so a restart sends none of
+    /// them.
+    pub(super) fn set_running(&mut self, running: bool) {
+        if !running {
+            self.copiers.iter_mut().for_each(DeviceCopier::forget_edges);
+        }
         self.handle.set_running(running);
     }
 
-    /// Whether `image` has the same section as the running master, so the master may go on
-    /// through an online change to it (`docs/modbus-master.md` §6.10).
-    pub(super) fn same_section(&self, image: &ProgramImage) -> bool {
-        image.modbus_master.clone().unwrap_or_default() == *self.handle.section()
+    /// Whether `section` is the running master's, so the master may go on through an online
+    /// change to an image with it (`docs/modbus-master.md` §6.10).
+    pub(super) fn same_section(&self, section: &MasterSection) -> bool {
+        section == self.handle.section()
     }
 
-    /// Resolves the paths again in `image` (an online change to an image with the same
-    /// section): the devices' connections and kept rounds stay.
-    pub(super) fn rebind(&mut self, image: &ProgramImage) -> Result<(), ResolveError> {
-        let places = resolve_section(image, self.handle.section())?;
-        for (copier, places) in self.copiers.iter_mut().zip(places) {
-            copier.rebind(places);
+    /// Takes the paths as resolved in a new image with the same section (an online change):
+    /// the devices' connections and kept rounds stay. False when `places` do not fit.
+    pub(super) fn rebind(&mut self, places: &[DevicePlaces]) -> bool {
+        if places.len() != self.copiers.len() {
+            return false;
         }
-        Ok(())
+        for (copier, places) in self.copiers.iter_mut().zip(places) {
+            copier.rebind(places.clone());
+        }
+        true
+    }
+
+    /// Ends the scheduler's side; the master, told the program no longer runs so that it
+    /// writes nothing more, goes to whoever stops it.
+    pub(super) fn retire(mut self) -> MasterHandle {
+        self.set_running(false);
+        self.handle
     }
 }
 

@@ -39,7 +39,7 @@ pub const MAX_REALTIME_PRIORITY: u8 = 99;
 
 /// Puts the calling thread at `SCHED_FIFO` priority `priority` (clamped to 1–99) and says what
 /// it got.
-pub(super) fn make_current_thread_realtime(priority: u8) -> Realtime {
+pub(crate) fn make_current_thread_realtime(priority: u8) -> Realtime {
     let priority = priority.clamp(1, MAX_REALTIME_PRIORITY);
     match fifo_refusal(priority) {
         None => Realtime::Fifo(priority),
@@ -79,6 +79,51 @@ fn fifo_refusal(_priority: u8) -> Option<String> {
     Some("real-time scheduling is offered on Linux only".to_owned())
 }
 
+/// Puts the calling thread back to normal scheduling (`SCHED_OTHER`, nice 0) when it inherited
+/// a real-time policy, and leaves a normal thread as it is; says why when the system refuses.
+///
+/// A thread started by a `SCHED_FIFO` thread inherits its policy: the Modbus master's threads,
+/// which may be started while the scheduler's thread runs at real-time priority, call this
+/// first, so a busy network or a slow name lookup never competes with the tasks.
+pub(crate) fn make_current_thread_normal() -> Result<(), String> {
+    #[cfg(unix)]
+    {
+        use thread_priority::unix::{
+            NormalThreadSchedulePolicy, ThreadSchedulePolicy, set_thread_priority_and_policy,
+            thread_native_id, thread_schedule_policy,
+        };
+        use thread_priority::{ThreadPriority, ThreadPriorityValue};
+        let normal = ThreadSchedulePolicy::Normal(NormalThreadSchedulePolicy::Other);
+        match thread_schedule_policy() {
+            Ok(ThreadSchedulePolicy::Normal(_)) => return Ok(()),
+            Ok(_) => {}
+            Err(error) => return Err(error.to_string()),
+        }
+        // The crate maps its portable priorities to nice values for normal policies: the one
+        // that gives nice 0, a new thread's default.
+        let nice_zero = (0..=MAX_REALTIME_PRIORITY)
+            .filter_map(|value| ThreadPriorityValue::try_from(value).ok())
+            .map(ThreadPriority::Crossplatform)
+            .find(|priority| priority.to_posix(normal).is_ok_and(|nice| nice == 0))
+            .unwrap_or(ThreadPriority::Min);
+        set_thread_priority_and_policy(thread_native_id(), nice_zero, normal)
+            .map_err(|error| error.to_string())
+    }
+    #[cfg(not(unix))]
+    Ok(())
+}
+
+/// The policy the calling thread runs with: whether it is real-time (`SCHED_FIFO`, `SCHED_RR`
+/// or `SCHED_DEADLINE`).
+#[cfg(all(test, unix))]
+pub(crate) fn current_thread_is_realtime() -> bool {
+    use thread_priority::unix::{ThreadSchedulePolicy, thread_schedule_policy};
+    matches!(
+        thread_schedule_policy(),
+        Ok(ThreadSchedulePolicy::Realtime(_))
+    )
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -107,5 +152,31 @@ mod tests {
             Realtime::Fifo(40).to_string(),
             "real-time priority 40 (SCHED_FIFO)"
         );
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn a_thread_started_by_a_realtime_one_goes_back_to_normal_scheduling() {
+        let (granted, inherited, normal) = std::thread::spawn(|| {
+            let granted = matches!(make_current_thread_realtime(10), Realtime::Fifo(_));
+            // A thread started now inherits SCHED_FIFO, as the Modbus master's would.
+            std::thread::spawn(move || {
+                let inherited = current_thread_is_realtime();
+                make_current_thread_normal().unwrap();
+                (granted, inherited, !current_thread_is_realtime())
+            })
+            .join()
+            .unwrap()
+        })
+        .join()
+        .unwrap();
+        // Without the right to real-time priority there is nothing to undo; with it, the
+        // child inherits the policy and gives it up.
+        assert_eq!(inherited, granted);
+        assert!(normal);
+        // A normal thread stays as it is.
+        std::thread::spawn(|| make_current_thread_normal().unwrap())
+            .join()
+            .unwrap();
     }
 }

@@ -15,12 +15,12 @@ use super::outbox::Outbox;
 use super::plan::{self, TaskPlan};
 use super::retain_writer::RetainWriter;
 use super::{
-    Between, Command, LoadReport, ModbusDevices, PRIORITY_LEVELS, SchedulerError, SchedulerOptions,
-    SchedulerState, SchedulerStatus,
+    Between, Command, LoadReport, ModbusDevices, PRIORITY_LEVELS, Retired, SchedulerError,
+    SchedulerOptions, SchedulerState, SchedulerStatus,
 };
 use crate::areas::LocatedAreas;
 use crate::engine::{Engine, ResetKind};
-use crate::modbus::master::Master;
+use crate::modbus::master::MasterHandle;
 use crate::online::{Forces, Memory, Trace};
 use crate::retain::{RetainSnapshot, RetainStore};
 
@@ -320,8 +320,9 @@ impl Worker {
     /// Does what the handle asked.
     fn handle(&mut self, command: Command) -> Next {
         match command {
-            Command::Load(engine, identity, reply) => {
-                let _ = reply.send(self.load(*engine, identity));
+            Command::Load(load, reply) => {
+                let (engine, identity, master) = *load;
+                let _ = reply.send(self.load(engine, identity, master));
             }
             Command::Start(reply) => {
                 let _ = reply.send(self.start());
@@ -335,8 +336,8 @@ impl Worker {
             // An action needs the located areas: `try_handle` does it when they are free.
             Command::Between(action) => self.postponed.push_back(Command::Between(action)),
             Command::OnlineChange(change, reply) => {
-                let (engine, plan, from, to) = *change;
-                let _ = reply.send(self.switch(engine, &plan, from, to));
+                let (engine, plan, from, to, master) = *change;
+                let _ = reply.send(self.switch(engine, &plan, from, to, master));
             }
             Command::Shutdown(reply) => {
                 let _ = reply.send(self.stop());
@@ -352,17 +353,34 @@ impl Worker {
         let _ = self.stop();
     }
 
+    /// Replaces the program with `engine` and its `master` (prepared, not yet polling); the
+    /// old engine and master go back for the asking thread to drop. The old master, writing
+    /// nothing from now on, is stopped there before the new one begins polling (a serial port
+    /// is opened by one master at a time), so its devices take no output of the new program
+    /// (`docs/modbus-master.md` §6.10).
     fn load(
+        &mut self,
+        engine: Engine,
+        identity: ImageHash,
+        master: MasterHandle,
+    ) -> (Result<LoadReport, SchedulerError>, Retired) {
+        let mut retired = Retired::default();
+        if let Some(old) = self.program.as_mut() {
+            retired.master = old.modbus.take().map(ModbusIo::retire);
+        }
+        let modbus = self.install_master(master);
+        let result = self.load_engine(engine, identity, modbus, &mut retired);
+        (result, retired)
+    }
+
+    /// The rest of [`Worker::load`]: the old program's values, the new program in place.
+    fn load_engine(
         &mut self,
         mut engine: Engine,
         identity: ImageHash,
+        master: Option<ModbusIo>,
+        retired: &mut Retired,
     ) -> Result<LoadReport, SchedulerError> {
-        // The old master stops before the new one starts (a serial port is opened by one
-        // master at a time), and before the new program's first cycle (§6.10).
-        if let Some(old) = self.program.as_mut() {
-            old.modbus = None;
-        }
-        let master = self.start_master(engine.image())?;
         let was_running = self.running;
         // The old program's retained values go to the disk first, so an image with the same
         // retained layout takes them over.
@@ -384,11 +402,12 @@ impl Worker {
             areas.forget_writes();
         }
         let plans = engine.image().tasks.iter().map(TaskPlan::new).collect();
-        self.program = Some(Program {
+        let old = self.program.replace(Program {
             engine,
             plans,
             modbus: master,
         });
+        retired.engine = old.map(|old| old.engine);
         // The new program's places are not the old one's.
         self.forces.clear();
         self.trace.unconfigure();
@@ -415,7 +434,7 @@ impl Worker {
             }
         }
         self.running = true;
-        if let Some(modbus) = &program.modbus {
+        if let Some(modbus) = &mut program.modbus {
             modbus.set_running(true);
         }
         self.next_retain_save_ns = now + duration_ns(self.options.retain_save_interval);
@@ -428,7 +447,7 @@ impl Worker {
         let saved = match self.program.as_mut() {
             Some(program) => {
                 program.plans.iter_mut().for_each(TaskPlan::stop);
-                if let Some(modbus) = &program.modbus {
+                if let Some(modbus) = &mut program.modbus {
                     modbus.set_running(false);
                 }
                 match (&self.retain, was_running) {
@@ -479,16 +498,12 @@ impl Worker {
         retain.map_err(Into::into)
     }
 
-    /// Starts the Modbus master of `image` (a handle without threads when it has no devices
-    /// or the master is off) and publishes its devices' counters; `None` when the master
-    /// copies nothing.
-    fn start_master(
-        &mut self,
-        image: &program_image::ProgramImage,
-    ) -> Result<Option<ModbusIo>, SchedulerError> {
-        let handle = Master::start(image, &self.options.modbus_master)?;
-        *lock(&self.modbus_devices) = handle.statuses();
-        Ok(handle.active().then(|| ModbusIo::new(handle)))
+    /// Publishes the devices' counters of `master` (a handle without threads when it has no
+    /// devices or the master is off); its copy points, `None` when the master copies nothing.
+    fn install_master(&mut self, master: MasterHandle) -> Option<ModbusIo> {
+        *lock(&self.modbus_devices) = master.statuses();
+        // A handle without threads is dropped at once: there is nothing to wait for.
+        master.active().then(|| ModbusIo::new(master))
     }
 
     /// Queues the retained values for the writer thread while running; it writes them when

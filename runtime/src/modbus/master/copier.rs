@@ -60,6 +60,12 @@ impl DeviceCopier {
         self.places.task
     }
 
+    /// Forgets the edges latched and not handed over yet (the program stopped: a restart must
+    /// not send a write for an edge of the run before).
+    pub fn forget_edges(&mut self) {
+        self.latched.iter_mut().for_each(|latched| *latched = false);
+    }
+
     /// Takes new places (an online change that keeps the master running); what was kept stays.
     pub fn rebind(&mut self, places: DevicePlaces) {
         self.places = places;

@@ -21,11 +21,17 @@ pub struct DeviceRound {
     pub requests: Vec<PlannedRequest>,
     /// The exchange with the scheduler.
     pub exchange: Arc<DeviceExchange>,
+    /// The counters and state the online service reads, replaced at each round's end.
     shared_status: Arc<Mutex<DeviceStatus>>,
+    /// The round being built, request by request.
     results: RoundResults,
+    /// The write channels' values of the newest cycle end, taken at the round's start.
     outputs: Vec<u8>,
+    /// The values latched with the pending edges, taken at the round's start.
     edge_values: Vec<u8>,
+    /// Per trigger, whether its group is pending in this round.
     pending: Vec<bool>,
+    /// Where a change of state is written, if anywhere.
     state_lines: Option<StateLines>,
 }
 
@@ -79,6 +85,14 @@ impl DeviceRound {
             })
             .map(|(index, _)| index)
             .collect()
+    }
+
+    /// Whether request `request` may be sent now: a write only while the program runs, looked
+    /// at before each request, so that a round begun before a stop sends no write after it.
+    pub fn may_send(&self, request: usize) -> bool {
+        self.requests
+            .get(request)
+            .is_some_and(|planned| planned.direction == Direction::Read || self.exchange.running())
     }
 
     /// The values a write request takes its coils or registers from.

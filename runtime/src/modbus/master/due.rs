@@ -24,10 +24,23 @@ pub enum RoundKind {
     EdgesOnly,
 }
 
+impl RoundKind {
+    /// The same round without overruns: one the back-off kept from being sent counts none
+    /// (`docs/modbus-master.md` §6.8).
+    pub fn without_overruns(self) -> Self {
+        match self {
+            RoundKind::Full { .. } => RoundKind::Full { overruns: 0 },
+            RoundKind::EdgesOnly => RoundKind::EdgesOnly,
+        }
+    }
+}
+
 /// A device's schedule as the master's task follows it.
 #[derive(Debug)]
 pub struct Due {
+    /// The device's schedule.
     schedule: Schedule,
+    /// The device's exchange: cycle ends, the program's state, pending edges and wake-ups.
     exchange: Arc<DeviceExchange>,
     /// The next due time of an interval schedule.
     next: Instant,
@@ -75,16 +88,18 @@ impl Due {
                         overruns: u32::try_from(merged).unwrap_or(u32::MAX),
                     };
                 }
-                if self.exchange.running() {
-                    self.exchange.notify.notified().await;
-                } else {
-                    // No cycles to follow: the device is still read, at the task's pace.
-                    tokio::select! {
-                        () = tokio::time::sleep(self.idle_interval) => {
+                // A stop wakes nobody (the scheduler never touches tokio's locks): the wait
+                // looks at the program's state at the task's pace. Stopped, there are no
+                // cycles to follow, and the device is still read at that pace (§6.10).
+                tokio::select! {
+                    () = tokio::time::sleep(self.idle_interval) => {
+                        if !self.exchange.running()
+                            && self.exchange.cycle_ends() == self.seen_cycle_ends
+                        {
                             return RoundKind::Full { overruns: 0 };
                         }
-                        () = self.exchange.notify.notified() => {}
                     }
+                    () = self.exchange.notify.notified() => {}
                 }
             },
         }
@@ -160,5 +175,30 @@ mod tests {
         let start = Instant::now();
         assert_eq!(due.wait().await, RoundKind::Full { overruns: 0 });
         assert_eq!(Instant::now() - start, Duration::from_millis(100));
+    }
+
+    #[tokio::test(start_paused = true)]
+    async fn a_stop_while_waiting_for_a_cycle_end_turns_to_polling_at_the_task_s_pace() {
+        let exchange = exchange();
+        let mut due = Due::new(
+            Schedule::EveryCycle,
+            Arc::clone(&exchange),
+            Duration::from_millis(100),
+        );
+        exchange.set_running(true);
+        // The round waits for a cycle end that never comes: the program stops meanwhile, and
+        // nobody notifies the device.
+        let stopping = async {
+            tokio::time::sleep(Duration::from_millis(30)).await;
+            exchange.set_running(false);
+        };
+        let waited = tokio::time::timeout(Duration::from_secs(10), async {
+            tokio::join!(due.wait(), stopping).0
+        })
+        .await;
+        assert_eq!(waited, Ok(RoundKind::Full { overruns: 0 }));
+        // And it goes on being due at that pace.
+        let again = tokio::time::timeout(Duration::from_secs(10), due.wait()).await;
+        assert_eq!(again, Ok(RoundKind::Full { overruns: 0 }));
     }
 }

@@ -154,8 +154,12 @@ fn copy_same<T: Copy>(from: &[T], to: &mut [T]) {
 pub struct DeviceExchange {
     /// The layout of both images' values.
     pub layout: ValueLayout,
+    /// The newest complete round, replaced whole by the master, tried by the scheduler.
     input: Mutex<InputImage>,
+    /// The newest cycle end's outputs and pending edges, replaced by the scheduler (which only
+    /// tries it), taken by the master at a round's start.
     output: Mutex<OutputImage>,
+    /// Cycles of the I/O task ended since the master started.
     cycle_ends: AtomicU64,
     /// Set by the scheduler when it published a pending edge, taken by the wake thread.
     edge_published: AtomicBool,
@@ -220,10 +224,11 @@ impl DeviceExchange {
 
     /// The scheduler's side, at the end of a cycle of the I/O task: counts it.
     pub fn cycle_ended(&self, edge_published: bool) {
-        self.cycle_ends.fetch_add(1, Ordering::Release);
+        // The flag first: the wake thread that sees the new count must see the edge with it.
         if edge_published {
             self.edge_published.store(true, Ordering::Release);
         }
+        self.cycle_ends.fetch_add(1, Ordering::Release);
     }
 
     /// Cycles of the I/O task ended since the master started.

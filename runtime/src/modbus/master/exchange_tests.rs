@@ -292,3 +292,26 @@ fn before_the_first_round_only_the_status_is_copied_and_says_not_yet_polled() {
     copier.cycle_start(&mut data);
     assert_eq!(seen(&data), vec![1; READ_VALUES + 1]);
 }
+
+#[test]
+fn an_edge_latched_at_a_stop_is_forgotten_and_not_sent_after_the_restart() {
+    let (exchange, mut copier) = device();
+    let mut data = Data(vec![0; 96]);
+    exchange.set_running(true);
+    // The last cycle before the stop sees an edge while the master holds the output image:
+    // the copier latches it.
+    data.0[TRIGGER_AT] = 1;
+    let guard = exchange.output.lock();
+    assert!(!copier.cycle_end(&data));
+    drop(guard);
+    // The stop forgets it, so the first cycle of the next run hands over no edge of the last.
+    copier.forget_edges();
+    exchange.set_running(false);
+    exchange.set_running(true);
+    assert!(copier.cycle_end(&data));
+    let mut values = vec![0; exchange.layout.total];
+    let mut edge_values = vec![0; exchange.layout.total];
+    let mut pending = vec![false];
+    assert!(exchange.take_outputs(&mut values, &mut edge_values, &mut pending));
+    assert_eq!(pending, [false]);
+}

@@ -16,10 +16,11 @@ use tokio_modbus::slave::SlaveContext;
 use super::backoff::Backoff;
 use super::device_round::DeviceRound;
 use super::due::{Due, RoundKind};
-use super::line_port::{LineActivity, LinePort};
+use super::line_port::{LineActivity, LinePort, StreamSlot};
 use super::round::{Answer, call_checked};
 use super::status::{Outcome, error_codes};
 use crate::serial::{SerialSettings, StopBits, open_port};
+use tokio_serial::SerialStream;
 
 /// A device of the line: its rounds and its schedule.
 pub struct LineDevice {
@@ -33,14 +34,52 @@ pub struct LineDevice {
 pub struct RtuLine {
     /// The port, with this machine's device file.
     port: SerialPortDef,
+    /// The devices' rounds, in the project's order.
     devices: Vec<DeviceRound>,
+    /// The devices' schedules, handed to their tasks when the line runs.
     dues: Vec<Due>,
 }
 
 /// The open port: tokio-modbus's client over it, and what it notes of the line.
 struct OpenPort {
+    /// tokio-modbus's RTU client over the port.
     context: Context,
+    /// What the transport notes of the line.
     activity: Arc<LineActivity>,
+    /// Where the transport leaves the stream when the client is dropped.
+    returned: StreamSlot<SerialStream>,
+}
+
+impl OpenPort {
+    /// tokio-modbus's client over `stream`.
+    fn attach(stream: SerialStream, activity: Arc<LineActivity>) -> Self {
+        let returned = StreamSlot::default();
+        let transport = LinePort::new(stream, Arc::clone(&activity), Arc::clone(&returned));
+        Self {
+            context: tokio_modbus::client::rtu::attach_slave(transport, Slave(0)),
+            activity,
+            returned,
+        }
+    }
+
+    /// A new client over the same open port. After a frame its decoder could not read,
+    /// tokio-modbus's framing stays failed and would report every later call as a broken
+    /// pipe; the port itself is fine (`docs/modbus-master.md` §4.2: an invalid response is
+    /// handled as a timeout). `None` if the stream did not come back.
+    fn renewed(self) -> Option<Self> {
+        let Self {
+            context,
+            activity,
+            returned,
+        } = self;
+        // Dropping the client drops its transport, which leaves the stream in the slot.
+        drop(context);
+        let stream = returned
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner)
+            .take()?;
+        Some(Self::attach(stream, activity))
+    }
 }
 
 impl RtuLine {
@@ -108,7 +147,7 @@ impl RtuLine {
     async fn run_round(
         &mut self,
         index: usize,
-        kind: RoundKind,
+        mut kind: RoundKind,
         port: &mut Option<OpenPort>,
         backoff: &mut Backoff,
     ) {
@@ -119,16 +158,20 @@ impl RtuLine {
         };
         let requests = round.begin(kind);
         for (position, &request) in requests.iter().enumerate() {
+            if !round.may_send(request) {
+                continue;
+            }
             if port.is_none() {
-                let now = Instant::now();
-                if !backoff.may_try(now) {
+                if !backoff.may_try(Instant::now()) {
                     round.not_sent(&requests[position..], error_codes::SERIAL_PORT_ERROR, "");
+                    kind = kind.without_overruns();
                     break;
                 }
                 match open(&self.port) {
                     Ok(opened) => *port = Some(opened),
                     Err(detail) => {
-                        backoff.failed(now);
+                        backoff.failed(Instant::now());
+                        kind = kind.without_overruns();
                         round.not_sent(
                             &requests[position..],
                             error_codes::SERIAL_PORT_ERROR,
@@ -154,6 +197,7 @@ impl RtuLine {
                 &round.exchange.layout,
                 round.values_for(request),
                 &format!("unit {} on {path}", round.device.unit_id),
+                Some(self.port.baud_rate),
             )
             .await;
             let took = started.elapsed();
@@ -196,8 +240,13 @@ impl RtuLine {
                     outcome: Outcome::Invalid(_),
                     ..
                 } => {
+                    // That request fails; the silence counts from now, what arrives meanwhile
+                    // is dropped before the next request, and the next goes to a new client
+                    // on the same port (a frame tokio-modbus could not decode leaves its
+                    // client failed).
                     open.activity.touch();
                     round.apply(request, answer, took);
+                    *port = port.take().and_then(OpenPort::renewed);
                 }
                 _ => {
                     backoff.succeeded();
@@ -227,10 +276,5 @@ fn open(port: &SerialPortDef) -> Result<OpenPort, String> {
     };
     let stream =
         open_port(Path::new(&port.device), &settings).map_err(|error| error.to_string())?;
-    let activity = LineActivity::new();
-    let transport = LinePort::new(stream, Arc::clone(&activity));
-    Ok(OpenPort {
-        context: tokio_modbus::client::rtu::attach_slave(transport, Slave(0)),
-        activity,
-    })
+    Ok(OpenPort::attach(stream, LineActivity::new()))
 }

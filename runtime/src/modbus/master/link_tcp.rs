@@ -18,8 +18,11 @@ const MIN_CONNECT_TIMEOUT: Duration = Duration::from_millis(1000);
 
 /// One TCP device: its rounds and its schedule.
 pub struct TcpDevice {
+    /// Its rounds.
     round: DeviceRound,
+    /// When they are due.
     due: Due,
+    /// `host:port`, naming the device in failures.
     peer: String,
 }
 
@@ -38,24 +41,30 @@ impl TcpDevice {
         let mut connection: Option<Context> = None;
         let mut backoff = Backoff::default();
         loop {
-            let kind = self.due.wait().await;
+            let mut kind = self.due.wait().await;
             let requests = self.round.begin(kind);
             for (position, &request) in requests.iter().enumerate() {
+                if !self.round.may_send(request) {
+                    continue;
+                }
                 if connection.is_none() {
-                    let now = Instant::now();
-                    if !backoff.may_try(now) {
+                    if !backoff.may_try(Instant::now()) {
                         // Waiting for the back-off: the round counts as failed, not sent.
                         self.round.not_sent(
                             &requests[position..],
                             error_codes::TCP_COMMUNICATION_ERROR,
                             "",
                         );
+                        kind = kind.without_overruns();
                         break;
                     }
                     match connect(&self.round.device, &self.peer).await {
                         Ok(context) => connection = Some(context),
                         Err(detail) => {
-                            backoff.failed(now);
+                            // The wait counts from the attempt's end: an attempt may take a
+                            // second, which would eat the first waits whole.
+                            backoff.failed(Instant::now());
+                            kind = kind.without_overruns();
                             self.round.not_sent(
                                 &requests[position..],
                                 error_codes::TCP_COMMUNICATION_ERROR,
@@ -76,6 +85,7 @@ impl TcpDevice {
                     &self.round.exchange.layout,
                     self.round.values_for(request),
                     &self.peer,
+                    None,
                 )
                 .await;
                 let took = started.elapsed();

@@ -99,9 +99,23 @@ pub enum MasterError {
 /// The Modbus master: [`Master::start`] gives a [`MasterHandle`].
 pub struct Master;
 
+/// What the master's thread is told before its devices' tasks begin.
+enum Signal {
+    /// Begin polling.
+    Go,
+    /// End without polling (the handle went away first).
+    Stop,
+}
+
 impl Master {
     /// Resolves `image`'s section and, unless `options` turn it off, starts the master's
-    /// threads. An image without a section gives a handle without devices and without threads.
+    /// threads, which poll nothing until [`MasterStarter::go`] (so a new master can be prepared
+    /// on the caller's thread while the old one still has the serial ports). An image without
+    /// a section gives a handle without devices and without threads.
+    ///
+    /// The threads run with normal scheduling even when the caller runs at real-time
+    /// priority (`docs/scheduler.md` §6): a slow name lookup or a busy line never competes
+    /// with the tasks.
     pub fn start(
         image: &ProgramImage,
         options: &MasterOptions,
@@ -137,6 +151,7 @@ impl Master {
             wake: None,
             thread: None,
             shutdown: Arc::new(tokio::sync::Notify::new()),
+            signals: None,
         };
         if off || handle.section.devices.is_empty() {
             return Ok(handle);
@@ -180,13 +195,24 @@ impl Master {
             .collect();
         handle.wake = Some(Wake::spawn(targets)?);
         let shutdown = Arc::clone(&handle.shutdown);
+        // tokio's blocking threads (name lookups) are started by the master's thread, but
+        // each gives up a real-time policy itself too, whoever starts it.
         let runtime = tokio::runtime::Builder::new_current_thread()
             .enable_all()
+            .thread_name("rivet-modbus-blocking")
+            .on_thread_start(become_normal)
             .build()?;
+        let (signals, received) = std::sync::mpsc::channel();
+        handle.signals = Some(signals);
         handle.thread = Some(
             std::thread::Builder::new()
                 .name("rivet-modbus-master".to_owned())
                 .spawn(move || {
+                    become_normal();
+                    if !matches!(received.recv(), Ok(Signal::Go)) {
+                        runtime.shutdown_background();
+                        return;
+                    }
                     for device in tcp {
                         runtime.spawn(device.run());
                     }
@@ -194,24 +220,60 @@ impl Master {
                         runtime.spawn(line.run());
                     }
                     runtime.block_on(shutdown.notified());
-                    // Dropping the runtime ends the devices' tasks and closes their connections.
-                    drop(runtime);
+                    // Ending the runtime ends the devices' tasks and closes their connections
+                    // and ports; a name lookup still running on a blocking thread is left to
+                    // finish on its own rather than waited for.
+                    runtime.shutdown_background();
                 })?,
         );
         Ok(handle)
     }
 }
 
+/// Gives up a real-time policy the calling thread inherited (`docs/modbus-master.md` §6.1).
+fn become_normal() {
+    // Giving up a real-time policy needs no privilege; should the system refuse anyway, the
+    // thread runs as it is, which is what it did before this call.
+    let _ = crate::scheduler::make_current_thread_normal();
+}
+
+/// Lets a prepared master's devices begin polling; kept by whoever drops the master it
+/// replaces, so that the old one's serial ports are closed first.
+pub struct MasterStarter {
+    /// The master thread's signals; `None` for a master without threads.
+    signals: Option<std::sync::mpsc::Sender<Signal>>,
+}
+
+impl MasterStarter {
+    /// Lets the devices begin polling (nothing when the master has no threads, or its handle
+    /// has already gone away).
+    pub fn go(self) {
+        if let Some(signals) = &self.signals {
+            // A thread already told to stop has ended and drops nothing here.
+            let _ = signals.send(Signal::Go);
+        }
+    }
+}
+
 /// The running master of one image. Dropping it stops it: its connections are closed and its
 /// threads end.
 pub struct MasterHandle {
+    /// The section the master runs, as the image has it.
     section: MasterSection,
+    /// Per device, its places in the program's memory.
     places: Vec<DevicePlaces>,
+    /// Per device, its exchange with the scheduler.
     exchanges: Vec<Arc<DeviceExchange>>,
+    /// Per device, its counters and state, shared with the online service.
     statuses: Vec<Arc<Mutex<DeviceStatus>>>,
+    /// The `rivet-modbus-wake` thread, for a master with devices.
     wake: Option<Wake>,
+    /// The `rivet-modbus-master` thread, for a master with devices.
     thread: Option<JoinHandle<()>>,
+    /// Ends the devices' tasks (the master's thread waits for it).
     shutdown: Arc<tokio::sync::Notify>,
+    /// Tells the master's thread to begin polling, or to end before it began.
+    signals: Option<std::sync::mpsc::Sender<Signal>>,
 }
 
 impl MasterHandle {
@@ -223,6 +285,18 @@ impl MasterHandle {
     /// Whether the master runs devices (it is on and the image has some).
     pub fn active(&self) -> bool {
         self.thread.is_some()
+    }
+
+    /// What lets the devices begin polling (see [`Master::start`]).
+    pub fn starter(&self) -> MasterStarter {
+        MasterStarter {
+            signals: self.signals.clone(),
+        }
+    }
+
+    /// Per device, its places in the program's memory (resolved when the master started).
+    pub fn places(&self) -> &[DevicePlaces] {
+        &self.places
     }
 
     /// The scheduler's side of every device, for a running master; none when it is off.
@@ -271,6 +345,10 @@ impl MasterHandle {
 
 impl Drop for MasterHandle {
     fn drop(&mut self) {
+        if let Some(signals) = self.signals.take() {
+            // A thread that has not begun polling ends; one that has waits for `shutdown`.
+            let _ = signals.send(Signal::Stop);
+        }
         self.shutdown.notify_one();
         if let Some(thread) = self.thread.take() {
             // A panic there has been reported by the panic hook; nothing is left to do.
@@ -282,4 +360,101 @@ impl Drop for MasterHandle {
 
 fn lock<T>(mutex: &Mutex<T>) -> std::sync::MutexGuard<'_, T> {
     mutex.lock().unwrap_or_else(PoisonError::into_inner)
+}
+
+#[cfg(test)]
+mod tests {
+    use program_image::modbus_master::{ChannelDef, DeviceDef, WordOrder};
+
+    use super::*;
+    use crate::test_images::{TestTask, image};
+
+    /// The scheduling policy of each of this process's threads whose name starts with
+    /// `prefix` (`/proc/self/task/*/stat`, field 41: 0 is `SCHED_OTHER`).
+    fn policies(prefix: &str) -> Vec<(String, u32)> {
+        let mut found = Vec::new();
+        for task in std::fs::read_dir("/proc/self/task").unwrap().flatten() {
+            let Ok(stat) = std::fs::read_to_string(task.path().join("stat")) else {
+                continue;
+            };
+            let (Some(open), Some(close)) = (stat.find('('), stat.rfind(')')) else {
+                continue;
+            };
+            let name = stat[open + 1..close].to_owned();
+            // The fields after the name start with field 3.
+            let policy = stat[close + 1..]
+                .split_whitespace()
+                .nth(41 - 3)
+                .and_then(|field| field.parse().ok());
+            if let (true, Some(policy)) = (name.starts_with(prefix), policy) {
+                found.push((name, policy));
+            }
+        }
+        found
+    }
+
+    #[cfg(target_os = "linux")]
+    #[test]
+    fn a_master_started_by_a_realtime_thread_runs_its_threads_with_normal_scheduling() {
+        let mut image = image(&[TestTask::cyclic(1_000_000, 1)], &[]);
+        image.modbus_master = Some(MasterSection {
+            serial_ports: Vec::new(),
+            devices: vec![DeviceDef {
+                name: "Named".to_owned(),
+                // A host name, so that tokio resolves it on a blocking thread.
+                link: Link::Tcp {
+                    host: "localhost".to_owned(),
+                    port: 1,
+                },
+                unit_id: 1,
+                timeout_ms: 100,
+                task: 0,
+                schedule: Schedule::Interval { interval_ms: 10 },
+                word_order: WordOrder::HighFirst,
+                max_read_gap: 0,
+                status: None,
+                // A request, so that the device connects: a read of one coil into the
+                // image's located BOOL.
+                channels: vec![ChannelDef {
+                    variable: "Trigger".to_owned(),
+                    table: program_image::ModbusTable::Coils,
+                    address: 0,
+                    value_type: program_image::Elementary::Bool,
+                    count: 1,
+                    direction: program_image::modbus_master::Direction::Read,
+                    function_code: 1,
+                    trigger: program_image::modbus_master::Trigger::Cyclic,
+                    on_error: program_image::modbus_master::OnError::KeepLastValue,
+                    error_flag: None,
+                }],
+            }],
+        });
+        // Started by a SCHED_FIFO thread (when the system grants it), as the scheduler's
+        // thread with `--realtime-priority` would.
+        let handle = std::thread::spawn(move || {
+            let _ = crate::scheduler::realtime::make_current_thread_realtime(10);
+            let handle = Master::start(&image, &MasterOptions::default()).unwrap();
+            handle.starter().go();
+            handle
+        })
+        .join()
+        .unwrap();
+        // The device tries to connect, which resolves its host on a blocking thread.
+        let deadline = std::time::Instant::now() + Duration::from_secs(10);
+        while handle.snapshot()[0].errors == 0 && std::time::Instant::now() < deadline {
+            std::thread::sleep(Duration::from_millis(10));
+        }
+        let threads = policies("rivet-modbus-");
+        let names: Vec<&str> = threads.iter().map(|(name, _)| name.as_str()).collect();
+        assert!(names.contains(&"rivet-modbus-ma"), "{names:?}");
+        assert!(names.contains(&"rivet-modbus-wa"), "{names:?}");
+        assert!(names.contains(&"rivet-modbus-bl"), "{names:?}");
+        // Whether or not the system granted SCHED_FIFO to the starting thread, every thread of
+        // the master runs with SCHED_OTHER.
+        assert!(
+            threads.iter().all(|(_, policy)| *policy == 0),
+            "{threads:?}"
+        );
+        drop(handle);
+    }
 }

@@ -68,15 +68,35 @@ pub fn resolve_section(
     image: &ProgramImage,
     section: &MasterSection,
 ) -> Result<Vec<DevicePlaces>, ResolveError> {
+    // Only constants are refused as targets: their paths, lowered once for every path asked.
+    let constants: Vec<(String, Region)> = image
+        .symbols
+        .iter()
+        .filter(|symbol| symbol.flags.has(SymbolFlags::CONSTANT))
+        .map(|symbol| (symbol.path.to_ascii_lowercase(), symbol.region))
+        .collect();
+    let image = Resolving { image, constants };
     section
         .devices
         .iter()
-        .map(|device| resolve_device(image, device))
+        .map(|device| resolve_device(&image, device))
         .collect()
 }
 
+/// The image being resolved, with its constants' paths in lower case.
+struct Resolving<'i> {
+    /// The image.
+    image: &'i ProgramImage,
+    /// Each `CONSTANT` symbol's path in lower case, and its region.
+    constants: Vec<(String, Region)>,
+}
+
 /// Resolves one device's paths and checks their types.
-fn resolve_device(image: &ProgramImage, device: &DeviceDef) -> Result<DevicePlaces, ResolveError> {
+fn resolve_device(
+    resolving: &Resolving<'_>,
+    device: &DeviceDef,
+) -> Result<DevicePlaces, ResolveError> {
+    let image = resolving.image;
     let refuse = |channel: Option<usize>, field: &'static str, problem: String| ResolveError {
         device: device.name.clone(),
         channel: channel.map_or_else(String::new, |index| {
@@ -100,14 +120,14 @@ fn resolve_device(image: &ProgramImage, device: &DeviceDef) -> Result<DevicePlac
         let place = lookup(image, &channel.variable)
             .map_err(|problem| refuse(Some(index), "variable", problem))?;
         if channel.direction == Direction::Read {
-            writable(image, &channel.variable, place)
+            writable(resolving, &channel.variable, place)
                 .map_err(|problem| refuse(Some(index), "variable", problem))?;
         }
         fits_channel(image, place.ty, channel.value_type, channel.count)
             .map_err(|problem| refuse(Some(index), "variable", problem))?;
         let error_flag = match &channel.error_flag {
             Some(path) => Some(
-                bool_place(image, path, true)
+                bool_place(resolving, path, true)
                     .map_err(|problem| refuse(Some(index), "error_flag", problem))?,
             ),
             None => None,
@@ -119,7 +139,7 @@ fn resolve_device(image: &ProgramImage, device: &DeviceDef) -> Result<DevicePlac
         {
             trigger_paths.push(variable);
             triggers.push(
-                bool_place(image, variable, false)
+                bool_place(resolving, variable, false)
                     .map_err(|problem| refuse(Some(index), "trigger", problem))?,
             );
         }
@@ -132,7 +152,7 @@ fn resolve_device(image: &ProgramImage, device: &DeviceDef) -> Result<DevicePlac
     let status = match &device.status {
         Some(path) => {
             let place = lookup(image, path).map_err(|problem| refuse(None, "status", problem))?;
-            writable(image, path, place).map_err(|problem| refuse(None, "status", problem))?;
+            writable(resolving, path, place).map_err(|problem| refuse(None, "status", problem))?;
             status_fits(image, place.ty).map_err(|problem| refuse(None, "status", problem))?;
             Some(byte_place(place, STATUS_BYTES))
         }
@@ -152,15 +172,14 @@ fn lookup(image: &ProgramImage, path: &str) -> Result<Place, String> {
 }
 
 /// Refuses a `CONSTANT` as the target of a read channel, a status or an error flag.
-fn writable(image: &ProgramImage, path: &str, place: Place) -> Result<(), String> {
+fn writable(resolving: &Resolving<'_>, path: &str, place: Place) -> Result<(), String> {
     let lower = path.to_ascii_lowercase();
-    let constant = image.symbols.iter().any(|symbol| {
-        let name = symbol.path.to_ascii_lowercase();
+    let constant = resolving.constants.iter().any(|(name, region)| {
         // The symbol the path starts with: its whole name, then nothing, a member or an index.
         let names_it = lower
-            .strip_prefix(&name)
+            .strip_prefix(name.as_str())
             .is_some_and(|rest| rest.is_empty() || rest.starts_with('.') || rest.starts_with('['));
-        names_it && symbol.flags.has(SymbolFlags::CONSTANT) && symbol.region == place.region
+        names_it && *region == place.region
     });
     if constant {
         return Err(format!(
@@ -171,10 +190,11 @@ fn writable(image: &ProgramImage, path: &str, place: Place) -> Result<(), String
 }
 
 /// The place of a BOOL (an error flag, which must be writable, or a trigger).
-fn bool_place(image: &ProgramImage, path: &str, written: bool) -> Result<BytePlace, String> {
+fn bool_place(resolving: &Resolving<'_>, path: &str, written: bool) -> Result<BytePlace, String> {
+    let image = resolving.image;
     let place = lookup(image, path)?;
     if written {
-        writable(image, path, place)?;
+        writable(resolving, path, place)?;
     }
     match image.types.get(place.ty as usize) {
         Some(TypeDef::Elementary(Elementary::Bool)) => Ok(byte_place(place, 1)),

@@ -62,8 +62,17 @@ fn device(variable: &str, value_type: Elementary, count: u16) -> DeviceDef {
     }
 }
 
+/// Resolves a section of `device` alone.
+fn resolve_one(image: &ProgramImage, device: &DeviceDef) -> Result<DevicePlaces, ResolveError> {
+    let section = MasterSection {
+        devices: vec![device.clone()],
+        ..MasterSection::default()
+    };
+    resolve_section(image, &section).map(|mut places| places.remove(0))
+}
+
 fn refusal(device: DeviceDef) -> String {
-    match resolve_device(&program(), &device) {
+    match resolve_one(&program(), &device) {
         Ok(places) => panic!("resolved: {places:?}"),
         Err(error) => error.to_string(),
     }
@@ -72,7 +81,7 @@ fn refusal(device: DeviceDef) -> String {
 #[test]
 fn paths_become_places_and_misfits_are_refused_with_device_channel_and_field() {
     let image = program();
-    let places = resolve_device(&image, &device("GVL.values", Elementary::Dint, 4)).unwrap();
+    let places = resolve_one(&image, &device("GVL.values", Elementary::Dint, 4)).unwrap();
     assert_eq!(places.task, 0);
     let channel = &places.channels[0];
     assert_eq!((channel.variable.offset, channel.variable.bytes), (16, 16));

@@ -40,8 +40,14 @@ pub enum Answer {
     },
 }
 
+/// Bits a byte takes on a serial line: start, 8 data, parity or a second stop bit, stop (the
+/// Modbus RTU character of 11 bits, whatever the port's framing, as the silence is counted).
+const RTU_BITS_PER_BYTE: u64 = 11;
+
 /// Sends `request` (a write takes its coils or registers from `values`, laid out by `layout`)
-/// and checks the answer; `peer` names the device in failures.
+/// and checks the answer; `peer` names the device in failures. On a serial line at
+/// `rtu_baud_rate`, the time the request takes to send is added to the timeout, which counts
+/// from its last byte (`docs/modbus-master.md` §2.1, §6.9).
 pub async fn call_checked(
     context: &mut Context,
     request: &PlannedRequest,
@@ -49,8 +55,8 @@ pub async fn call_checked(
     layout: &ValueLayout,
     values: &[u8],
     peer: &str,
+    rtu_baud_rate: Option<u32>,
 ) -> Answer {
-    let timeout = Duration::from_millis(u64::from(device.timeout_ms));
     let start = request.start;
     let quantity = request.quantity;
     let modbus_request = match build(request, device, layout, values) {
@@ -63,6 +69,10 @@ pub async fn call_checked(
             };
         }
     };
+    let timeout = Duration::from_millis(u64::from(device.timeout_ms))
+        + rtu_baud_rate.map_or(Duration::ZERO, |baud_rate| {
+            rtu_send_time(rtu_frame_bytes(&modbus_request), baud_rate)
+        });
     let sent = modbus_request.clone();
     let result = match tokio::time::timeout(timeout, context.call(modbus_request)).await {
         Ok(result) => result,
@@ -108,6 +118,24 @@ pub async fn call_checked(
     check(&sent, response, start, quantity).unwrap_or_else(|(code, problem)| {
         invalid(code, format!("{peer} gave an invalid answer: {problem}"))
     })
+}
+
+/// The bytes of `request`'s RTU frame: unit id, function code, its data, CRC.
+pub fn rtu_frame_bytes(request: &Request<'_>) -> usize {
+    let data = match request {
+        Request::WriteMultipleCoils(_, coils) => 5 + coils.len().div_ceil(8),
+        Request::WriteMultipleRegisters(_, words) => 5 + 2 * words.len(),
+        // Reads, and writes of one coil or register: an address and a count or a value.
+        _ => 4,
+    };
+    1 + 1 + data + 2
+}
+
+/// How long `bytes` take to send at `baud_rate`, in whole microseconds rounded up.
+pub fn rtu_send_time(bytes: usize, baud_rate: u32) -> Duration {
+    let bits = bytes as u64 * RTU_BITS_PER_BYTE;
+    let micros = (bits * 1_000_000).div_ceil(u64::from(baud_rate.max(1)));
+    Duration::from_micros(micros)
 }
 
 /// The Modbus request for `request`, with a write's values converted from the program's bytes.

@@ -57,3 +57,22 @@ fn counts_echoes_and_functions_are_checked_and_a_wrong_unit_is_named() {
         "expected/request = Header { slave_id: 1 }, actual/response = Header { slave_id: 3 }"
     ));
 }
+
+#[test]
+fn an_rtu_request_s_sending_time_is_its_frame_s_bytes_at_eleven_bits_each() {
+    // A read is 8 bytes: unit, function, address, count, CRC.
+    let read = Request::ReadHoldingRegisters(0, 10);
+    assert_eq!(rtu_frame_bytes(&read), 8);
+    assert_eq!(rtu_frame_bytes(&Request::WriteSingleCoil(3, true)), 8);
+    // Writes of many carry a byte count and their data: 10 coils in 2 bytes, 3 registers in 6.
+    let coils = Request::WriteMultipleCoils(0, Cow::Owned(vec![true; 10]));
+    assert_eq!(rtu_frame_bytes(&coils), 11);
+    let words = Request::WriteMultipleRegisters(0, Cow::Owned(vec![1, 2, 3]));
+    assert_eq!(rtu_frame_bytes(&words), 15);
+    // 8 bytes × 11 bits at 9600 baud: 88 / 9600 s = 9166.67 µs, rounded up.
+    assert_eq!(rtu_send_time(8, 9600), Duration::from_micros(9167));
+    // 15 bytes at 19200 baud: 165 / 19200 s = 8593.75 µs.
+    assert_eq!(rtu_send_time(15, 19200), Duration::from_micros(8594));
+    // Exact at 110 baud: 10 bytes take one second.
+    assert_eq!(rtu_send_time(10, 110), Duration::from_secs(1));
+}

@@ -281,12 +281,20 @@ impl DeviceStatus {
             rounds: self.rounds,
             overruns: self.overruns,
             last_response_us: u32::try_from(self.last_response.as_micros()).unwrap_or(u32::MAX),
-            since_last_error_ms: self.last_error_at.map_or(u32::MAX, |at| {
-                u32::try_from(at.elapsed().as_millis()).unwrap_or(u32::MAX - 1)
-            }),
+            since_last_error_ms: self
+                .last_error_at
+                .map_or(u32::MAX, |at| since_last_error_ms(at.elapsed())),
             detail: self.detail.clone(),
         }
     }
+}
+
+/// `since_last_error_ms` of a failure `elapsed` ago: whole milliseconds, held at
+/// `u32::MAX - 1` (49 days), since `u32::MAX` means no failure yet.
+pub fn since_last_error_ms(elapsed: Duration) -> u32 {
+    u32::try_from(elapsed.as_millis())
+        .unwrap_or(u32::MAX)
+        .min(u32::MAX - 1)
 }
 
 /// One device as `MODBUS_DEVICES` (§9.1) lists it.

@@ -61,3 +61,23 @@ fn counters_follow_failures_and_the_state_line_is_written_only_on_a_change() {
     assert_eq!((bytes[0], bytes[1], bytes[2], bytes[3]), (1, 0, 2, 2));
     assert_eq!(bytes[4], 0);
 }
+
+#[test]
+fn a_failure_long_ago_never_reads_as_none_yet() {
+    use std::time::Duration;
+    assert_eq!(since_last_error_ms(Duration::from_millis(1500)), 1500);
+    let max = u64::from(u32::MAX);
+    assert_eq!(
+        since_last_error_ms(Duration::from_millis(max - 1)),
+        u32::MAX - 1
+    );
+    // Exactly u32::MAX ms, and beyond: held one below "none yet".
+    assert_eq!(
+        since_last_error_ms(Duration::from_millis(max)),
+        u32::MAX - 1
+    );
+    assert_eq!(
+        since_last_error_ms(Duration::from_millis(max * 2)),
+        u32::MAX - 1
+    );
+}

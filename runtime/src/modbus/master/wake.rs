@@ -24,7 +24,9 @@ pub struct WakeTarget {
 
 /// The running thread.
 pub struct Wake {
+    /// The thread, until it is joined.
     thread: Option<JoinHandle<()>>,
+    /// Set when the thread is to end.
     stop: Arc<AtomicBool>,
 }
 
@@ -36,6 +38,8 @@ impl Wake {
         let thread = std::thread::Builder::new()
             .name("rivet-modbus-wake".to_owned())
             .spawn(move || {
+                // Started by whichever thread starts the master, which may be real-time.
+                super::become_normal();
                 let mut seen: Vec<u64> = targets
                     .iter()
                     .map(|target| target.exchange.cycle_ends())

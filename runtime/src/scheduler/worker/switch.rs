@@ -10,8 +10,10 @@ use program_image::{ImageHash, Region};
 
 use super::{Worker, copy, lock};
 use crate::engine::{Engine, OnlineChangePlan};
+use crate::modbus::master::MasterHandle;
 use crate::retain::RetainSnapshot;
-use crate::scheduler::{ChangeAnswer, OnlineChangeReport, SchedulerError};
+use crate::scheduler::modbus_io::ModbusIo;
+use crate::scheduler::{ChangeAnswer, OnlineChangeReport, Retired, SchedulerError};
 
 /// The place number of the data region in a [`Place`].
 const PLACE_DATA: u8 = 0;
@@ -22,20 +24,22 @@ impl Worker {
     /// now; the task plans are kept as they are (the task configuration is the same), so the
     /// next due cycle of every task runs the new code and none is missed. The engine that is
     /// no longer needed (the old one, or `engine` when refused) goes back with the answer, so
-    /// that freeing it holds no task.
+    /// that freeing it holds no task; so does the master no longer needed: the old one when
+    /// `master` (the new image's, prepared) replaces it, else `master`.
     pub(super) fn switch(
         &mut self,
         mut engine: Engine,
         plan: &Arc<OnlineChangePlan>,
         from: ImageHash,
         to: ImageHash,
+        master: MasterHandle,
     ) -> ChangeAnswer {
         let started = Instant::now();
         if lock(&self.status).image != Some(from) {
-            return (Err(SchedulerError::ProgramChanged), Some(engine));
+            return refused(SchedulerError::ProgramChanged, engine, master);
         }
         let Some(program) = self.program.as_mut() else {
-            return (Err(SchedulerError::NoProgram), Some(engine));
+            return refused(SchedulerError::NoProgram, engine, master);
         };
         {
             // The located areas keep their content: the new engine starts from the shared
@@ -50,14 +54,12 @@ impl Worker {
         let mut old = std::mem::replace(&mut program.engine, engine);
         let applied = plan.apply(&mut old, &mut program.engine);
         // The master goes on through the switch when the section is the same, with its paths
-        // resolved in the new program; otherwise the old one stops and the new one starts
-        // (`docs/modbus-master.md` §6.10).
+        // as the new image's master resolved them on the caller's thread; otherwise the new
+        // one replaces it, and the old one stops on the caller's thread before the new one
+        // begins polling (`docs/modbus-master.md` §6.10).
         let keeps_master = program.modbus.as_mut().is_some_and(|modbus| {
-            modbus.same_section(program.engine.image())
-                && modbus.rebind(program.engine.image()).is_ok()
+            modbus.same_section(master.section()) && modbus.rebind(master.places())
         });
-        let restart = !keeps_master
-            && (program.modbus.is_some() || program.engine.image().modbus_master.is_some());
         let moved = |place: Place| match place.region {
             PLACE_DATA => plan
                 .moved_range(place.offset as usize, place.value_bytes())
@@ -74,9 +76,11 @@ impl Worker {
             writer.write_later(snapshot);
         }
         lock(&self.status).image = Some(to);
-        if restart {
-            self.restart_master();
-        }
+        let master = if keeps_master {
+            Some(master)
+        } else {
+            self.replace_master(master)
+        };
         let report = OnlineChangeReport {
             cycles: self.cycles_total,
             applied,
@@ -84,37 +88,37 @@ impl Worker {
             trace_removed,
             switch: started.elapsed(),
         };
-        (Ok(report), Some(old))
+        let retired = Retired {
+            engine: Some(old),
+            master,
+        };
+        (Ok(report), retired)
     }
 }
 
 impl Worker {
-    /// Stops the running program's master and starts the master of its (new) image, running
-    /// if the program runs. The caller checked the image's paths, so only a thread that cannot
-    /// be started stops it: the program then runs without its devices, which the status says.
-    fn restart_master(&mut self) {
-        let Some(program) = self.program.as_mut() else {
-            return;
-        };
-        program.modbus = None;
-        let image = program.engine.shared_image();
-        match self.start_master(&image) {
-            Ok(modbus) => {
-                if let Some(modbus) = &modbus
-                    && self.running
-                {
-                    modbus.set_running(true);
-                }
-                if let Some(program) = self.program.as_mut() {
-                    program.modbus = modbus;
-                }
-            }
-            Err(_) => {
-                // Every device then shows no counters; there is no caller left to tell.
-                lock(&self.modbus_devices).clear();
-            }
+    /// Puts `master` in place of the running program's master, running if the program runs;
+    /// gives back the old one, which writes nothing from now on.
+    fn replace_master(&mut self, master: MasterHandle) -> Option<MasterHandle> {
+        let mut modbus = self.install_master(master);
+        if let Some(modbus) = &mut modbus
+            && self.running
+        {
+            modbus.set_running(true);
         }
+        let program = self.program.as_mut()?;
+        let old = std::mem::replace(&mut program.modbus, modbus);
+        old.map(ModbusIo::retire)
     }
+}
+
+/// The answer to a refused online change: the new engine and master go back unused.
+fn refused(error: SchedulerError, engine: Engine, master: MasterHandle) -> ChangeAnswer {
+    let retired = Retired {
+        engine: Some(engine),
+        master: Some(master),
+    };
+    (Err(error), retired)
 }
 
 #[cfg(test)]

@@ -2,8 +2,8 @@
 //! reports each as §6.6 says, keeps the other channels going, and never panics, in a debug
 //! build too (tokio-modbus's convenience readers would).
 
-use std::sync::Arc;
 use std::sync::atomic::{AtomicU8, AtomicU32, Ordering};
+use std::sync::{Arc, Mutex};
 
 use program_image::modbus_master::Schedule;
 use runtime::areas::LocatedAreas;
@@ -27,11 +27,13 @@ const SILENT: u8 = 4;
 /// What every register of the fake slave holds.
 const VALUE: i16 = 4;
 
-/// A fake slave: how it answers, and how many writes to holding register 20 it received.
+/// A fake slave: how it answers, and the writes to holding register 20 it received.
 #[derive(Clone, Default)]
 pub(super) struct Fake {
+    /// How it answers (`RIGHT`, `SHORT_COUNT` …).
     mode: Arc<AtomicU8>,
-    pub(super) writes_to_20: Arc<AtomicU32>,
+    /// The values written to holding register 20, in the order they came.
+    pub(super) writes_to_20: Arc<Mutex<Vec<i16>>>,
     /// Connections accepted so far.
     pub(super) connections: Arc<AtomicU32>,
 }
@@ -70,8 +72,9 @@ async fn answer(mut stream: tokio::net::TcpStream, fake: Fake) {
         let address = u16::from_be_bytes([pdu[1], pdu[2]]);
         let quantity = u16::from_be_bytes([pdu[3], pdu[4]]);
         let mode = fake.mode.load(Ordering::Acquire);
-        if function == 16 && address == 20 {
-            fake.writes_to_20.fetch_add(1, Ordering::AcqRel);
+        if function == 16 && address == 20 && pdu.len() >= 8 {
+            let value = i16::from_be_bytes([pdu[6], pdu[7]]);
+            fake.writes_to_20.lock().unwrap().push(value);
         }
         if mode == SILENT {
             continue;
@@ -119,7 +122,7 @@ fn wrong_answers_are_invalid_data_exceptions_fail_one_request_and_nothing_panics
     let mode = Arc::clone(&fake.mode);
     mode.store(SHORT_COUNT, Ordering::Release);
     let (address, _slave) = fake_slave(&fake);
-    let areas = Arc::new(std::sync::Mutex::new(LocatedAreas::default()));
+    let areas = Arc::new(Mutex::new(LocatedAreas::default()));
     let scheduler = Scheduler::spawn(areas, SchedulerOptions::default()).unwrap();
     scheduler
         .load(image_with(vec![device(
@@ -153,7 +156,9 @@ fn wrong_answers_are_invalid_data_exceptions_fail_one_request_and_nothing_panics
         let device = first(&scheduler.modbus_devices());
         device.last_error == error_codes::RESPONSE_INVALID_DATA && device.errors > errors + 3
     });
-    assert_eq!(read(&scheduler, "Main.xInError", 1), [0]);
+    wait_until("the reads' channel is not in error", || {
+        read(&scheduler, "Main.xInError", 1) == [0]
+    });
 
     mode.store(EXCEPTION, Ordering::Release);
     wait_until("an exception fails its request only", || {
@@ -164,10 +169,15 @@ fn wrong_answers_are_invalid_data_exceptions_fail_one_request_and_nothing_panics
     wait_until("the refused channel is zeroed", || {
         read_int(&scheduler, "Main.iZeroed") == 0
     });
-    assert_eq!(read(&scheduler, "Main.xInError", 1), [0]);
-    let device = first(&scheduler.modbus_devices());
-    assert_eq!(device.state, DeviceState::AnsweringWithErrors);
-    assert_eq!(read(&scheduler, "Main.stDevice", 4)[..2], [1, 1]);
+    // A stray timeout on a loaded machine passes with the next round: the state is waited for.
+    wait_until(
+        "the other channel delivers and the status says answering with errors",
+        || {
+            read(&scheduler, "Main.xInError", 1) == [0]
+                && first(&scheduler.modbus_devices()).state == DeviceState::AnsweringWithErrors
+                && read(&scheduler, "Main.stDevice", 4)[..2] == [1, 1]
+        },
+    );
 
     // A device that stops answering: a timeout ends the round, the connection is made anew.
     mode.store(SILENT, Ordering::Release);

@@ -2,6 +2,7 @@
 //! server on 127.0.0.1 port 0 and against misbehaving fake slaves written here. No test
 //! asserts timing: counters and cycle counts that keep growing are the checks.
 
+mod coils;
 mod edges;
 mod faults;
 mod online_change;
@@ -232,7 +233,9 @@ fn read_udint(scheduler: &Scheduler, path: &str) -> u32 {
     u32::from_le_bytes([bytes[0], bytes[1], bytes[2], bytes[3]])
 }
 
-/// Waits until `done` holds, polling; panics with `what` after [`PATIENCE`].
+/// Waits until `done` holds, polling; panics with `what` after [`PATIENCE`], naming the
+/// caller's line.
+#[track_caller]
 fn wait_until(what: &str, mut done: impl FnMut() -> bool) {
     let deadline = Instant::now() + PATIENCE;
     while !done() {
