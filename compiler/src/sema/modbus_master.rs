@@ -276,11 +276,18 @@ fn check_device<'p>(
             direction: ChannelDirection::Read,
         };
         if let Some(bound) = bind(project, globals, &place, Field::Status, path, found) {
-            if !is_status_type(globals, &bound.ty) {
-                let message = format!(
-                    "{prefix}: the status variable is declared as {}: declare it as {MODBUS_DEVICE_STATUS}",
+            let misfit = match status_fit(globals, &bound.ty) {
+                StatusFit::Fits => None,
+                StatusFit::OtherType => Some(format!(
+                    "the status variable is declared as {}: declare it as {MODBUS_DEVICE_STATUS}",
                     bound.ty
-                );
+                )),
+                StatusFit::OwnDeclarationDiffers => Some(format!(
+                    "the project declares its own {MODBUS_DEVICE_STATUS}, whose members differ from the Modbus library's, which the runtime writes: remove the project's declaration or give it the library's members"
+                )),
+            };
+            if let Some(misfit) = misfit {
+                let message = format!("{prefix}: {misfit}");
                 found.push(finding(name, Code::ModbusFlagType, message));
             }
             filled.push(filled_by(name, prefix, Field::Status, path, &bound));
@@ -452,14 +459,28 @@ fn channel_prefix(device: &ModbusDevice, row: usize) -> String {
     )
 }
 
-/// Whether `ty` is the Modbus library's status structure, or a project's own declaration of its
-/// name with the same members (the runtime finds the members by name and offset).
-fn is_status_type(globals: &Globals<'_>, ty: &Type) -> bool {
+/// Whether a status variable's type is the one the runtime writes.
+enum StatusFit {
+    /// The Modbus library's status structure, or a project's own declaration of its name with
+    /// the same members (the runtime finds the members by name and offset).
+    Fits,
+    /// Another type.
+    OtherType,
+    /// A project's own declaration of the name with other members.
+    OwnDeclarationDiffers,
+}
+
+/// How `ty` fits a status variable.
+fn status_fit(globals: &Globals<'_>, ty: &Type) -> StatusFit {
     let Type::Named(name) = ty else {
-        return *ty == Type::Error;
+        return if *ty == Type::Error {
+            StatusFit::Fits
+        } else {
+            StatusFit::OtherType
+        };
     };
     if !name.eq_ignore_ascii_case(MODBUS_DEVICE_STATUS) {
-        return false;
+        return StatusFit::OtherType;
     }
     let library = crate::library::modbus().application.objects();
     let members = |definition: &TypeDefinition| -> Option<Vec<(String, String)>> {
@@ -490,7 +511,11 @@ fn is_status_type(globals: &Globals<'_>, ty: &Type) -> bool {
     let declared = globals
         .data_type(name)
         .and_then(|data_type| members(&data_type.definition));
-    expected.is_some() && expected == declared
+    if expected.is_some() && expected == declared {
+        StatusFit::Fits
+    } else {
+        StatusFit::OwnDeclarationDiffers
+    }
 }
 
 /// The channel a problem of the device editor's checks is about, numbered from 1; `None` for a

@@ -372,7 +372,7 @@ fn a_project_s_own_status_type_must_have_the_library_s_members() {
     assert_eq!(
         found,
         [
-            "E0145 BeltDrive: Modbus device 'BeltDrive', status (GVL.stDrive): the status variable is declared as MODBUS_DEVICE_STATUS: declare it as MODBUS_DEVICE_STATUS"
+            "E0145 BeltDrive: Modbus device 'BeltDrive', status (GVL.stDrive): the project declares its own MODBUS_DEVICE_STATUS, whose members differ from the Modbus library's, which the runtime writes: remove the project's declaration or give it the library's members"
         ]
     );
 }
