@@ -91,6 +91,12 @@ codes! {
     IlLabel = "E0137", Error, "Instruction List jump to a missing label, or a label declared twice";
     IlParenthesis = "E0138", Error, "Instruction List parentheses that do not match";
     IlNoCurrentResult = "E0139", Error, "Instruction List operator without a current result";
+    ModbusUncopyableVariable = "E0140", Error, "Modbus channel bound to something the runtime cannot copy";
+    ModbusChannelType = "E0141", Error, "Modbus channel variable of the wrong type";
+    ModbusDoubleWrite = "E0142", Error, "Variable written by two Modbus channels";
+    ModbusDeviceSetting = "E0143", Error, "Modbus device or serial port setting the runtime cannot use";
+    ModbusChannelSetting = "E0144", Error, "Modbus channel setting the runtime cannot use";
+    ModbusFlagType = "E0145", Error, "Modbus status, error flag or trigger variable of the wrong type";
     UnusedVariable = "W0001", Warning, "Variable never used";
     UnassignedVariable = "W0002", Warning, "Variable read but never written";
     OverlappingAddresses = "W0003", Warning, "Located variables overlap";
@@ -100,6 +106,8 @@ codes! {
     ImplicitNarrowing = "W0012", Warning, "Integer value narrowed or its sign changed implicitly";
     ImplicitRealRounding = "W0013", Warning, "Integer converted implicitly to a real that may round it";
     ImplicitRealToInteger = "W0014", Warning, "Real converted implicitly to an integer, rounded";
+    ModbusReadVariableWritten = "W0015", Warning, "Variable of a Modbus read channel also written by the program";
+    ModbusPollFasterThanTask = "W0016", Warning, "Modbus device polled more often than its task copies its values";
 }
 
 /// One finding of the compiler about the source.

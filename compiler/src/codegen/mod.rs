@@ -23,6 +23,7 @@ mod interface;
 mod layout;
 #[cfg(test)]
 mod line_table_tests;
+mod modbus_master;
 mod motion;
 mod program;
 mod property;

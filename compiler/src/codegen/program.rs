@@ -1,5 +1,6 @@
 //! The build: the data region (globals and program instances), the constant pool, POU
-//! indices, frames, symbols, tasks, and the code of every body, assembled into an image.
+//! indices, frames, symbols, tasks, the Modbus master's devices, and the code of every body,
+//! assembled into an image.
 
 use std::collections::HashMap;
 use std::path::Path;
@@ -629,6 +630,7 @@ pub(crate) fn build_image(
         }
     }
 
+    let modbus_master = super::modbus_master::master_section(project, &globals, &tasks)?;
     let modbus_map = match &project.controller.modbus_map {
         Some(map) => Some(modbus_ranges(map)?),
         None => None,
@@ -667,8 +669,7 @@ pub(crate) fn build_image(
         modbus_map,
         motion: devices.section,
         debug: Some(program_image::DebugInfo { pous: debug_pous }),
-        // The compiler writes no runtime Modbus device yet (issue 19, wave 2).
-        modbus_master: None,
+        modbus_master,
     };
     image.verify().map_err(CodegenError::InvalidImage)?;
     Ok(image)

@@ -14,7 +14,7 @@ mod folding;
 mod outline;
 pub mod semantic;
 mod semantic_tokens;
-mod variable_type;
+pub(crate) mod variable_type;
 
 use std::ops::Range;
 
@@ -36,7 +36,10 @@ pub use semantic::{
     definition, hover, monitor_paths, pou_diagnostics, references,
 };
 pub use semantic_tokens::{SemanticClass, SemanticToken, semantic_tokens};
-pub use variable_type::{ChannelVariableError, check_channel_variable, variable_type};
+pub use variable_type::{
+    ChannelBindingError, ChannelMisfit, ChannelVariableError, check_channel_binding,
+    check_channel_variable, variable_type,
+};
 
 use crate::Diagnostic;
 

@@ -1,11 +1,17 @@
 //! The declared type of a variable named by its path, for editors that bind variables to
-//! channels (the Modbus device editor) and must say whether a variable exists and fits.
+//! channels (the Modbus device editor) and must say whether a variable exists and fits; the
+//! checker's Modbus checks (`sema::modbus_master`) and the code generator use the same path
+//! resolution ([`bound_path`]) and fits, so the editor, the build and the image agree.
 
-use project_model::{ModbusDataType, PouKind, Project};
+use project_model::{
+    ChannelDirection, ModbusBinding, ModbusDataType, Object, PouKind, Project, VarSection,
+    Variable, is_valid_identifier,
+};
 use thiserror::Error;
 
-use crate::sema::scope::{GlobalSymbol, Globals};
+use crate::sema::scope::{GlobalSymbol, Globals, inheritance_chain};
 use crate::sema::ty::Type;
+use crate::sema::types::Shape;
 
 /// Why a variable cannot be bound to a Modbus channel of some data type.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
@@ -29,6 +35,75 @@ pub enum ChannelVariableError {
         /// The types that fit the channel, such as `UINT or WORD`.
         expected: String,
     },
+}
+
+/// Why a variable cannot be bound to a channel of some data type and count
+/// ([`check_channel_binding`]).
+#[derive(Clone, Debug, PartialEq, Eq, Error)]
+pub enum ChannelBindingError {
+    /// The path names no variable of the project.
+    #[error(
+        "there is no variable '{0}': write the path of a global or program variable, such as GVL_IO.rSpeed"
+    )]
+    NoSuchVariable(String),
+    /// The variable's type does not fit the channel's data type and count.
+    #[error("'{path}': {misfit}")]
+    Misfit {
+        /// The variable's path.
+        path: String,
+        /// How it does not fit.
+        misfit: ChannelMisfit,
+    },
+}
+
+/// How a variable's declared type misses a channel: the channel's values, the declared type and
+/// the declarations that would fit (`docs/modbus-master.md` §2.2).
+#[derive(Clone, Debug, PartialEq, Eq, Error)]
+#[error(
+    "the channel {} {}, but the variable is declared as {declared}: declare it as {expected}",
+    if *direction == ChannelDirection::Write { "writes" } else { "reads" },
+    values(*data_type, *count)
+)]
+pub struct ChannelMisfit {
+    /// Whether the channel reads or writes.
+    pub direction: ChannelDirection,
+    /// The channel's data type.
+    pub data_type: ModbusDataType,
+    /// How many values the channel holds.
+    pub count: u16,
+    /// The variable's declared type, as the compiler spells it.
+    pub declared: String,
+    /// The declarations that fit, such as `ARRAY[0..7] OF UINT or ARRAY[0..7] OF WORD`.
+    pub expected: String,
+}
+
+/// A variable path of a Modbus binding resolved against the project's declarations.
+pub(crate) struct BoundPath<'p> {
+    /// The path as the runtime finds it among the image's symbols: an unqualified global gets
+    /// its list's name in front.
+    pub(crate) canonical: String,
+    /// The declared type of what the path names.
+    pub(crate) ty: Type,
+    /// The declaration the path starts from: a global variable or a program's variable.
+    pub(crate) root: &'p Variable,
+    /// The declaration of the variable the path names, when it is a declared variable (of a
+    /// list, a program or a function block) rather than a member of a structure or of a
+    /// standard function block.
+    pub(crate) last: Option<&'p Variable>,
+    /// Whether the path names `root` itself, not a part of it.
+    pub(crate) whole: bool,
+    /// Whether a declaration along the path is `CONSTANT`.
+    pub(crate) constant: bool,
+}
+
+/// Why a path names nothing the runtime can copy to or from between cycles.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub(crate) enum Unbound {
+    /// It names no variable of the project.
+    NoVariable,
+    /// It names something without a fixed place between cycles: the words say what, such as
+    /// `a VAR_TEMP`.
+    NoFixedPlace(&'static str),
 }
 
 /// The declared type of the variable at `path` (`GVL_IO.rSpeed`, `Main.fbConveyor.xRun`, or an
@@ -65,6 +140,245 @@ pub fn check_channel_variable(
         data_type: data_type.iec_name().to_owned(),
         expected: fitting.join(" or "),
     })
+}
+
+/// Checks that `binding.variable` names a variable that fits the channel: its data type as
+/// [`check_channel_variable`] says, and for a `count` above 1 a one-dimensional `ARRAY` of
+/// exactly `count` such elements.
+pub fn check_channel_binding(
+    project: &Project,
+    binding: &ModbusBinding,
+) -> Result<(), ChannelBindingError> {
+    let globals = Globals::new(project);
+    let path = binding.variable.trim();
+    let bound = bound_path(project, &globals, path)
+        .map_err(|_| ChannelBindingError::NoSuchVariable(path.to_owned()))?;
+    match channel_misfit(&bound.ty, binding) {
+        None => Ok(()),
+        Some(misfit) => Err(ChannelBindingError::Misfit {
+            path: path.to_owned(),
+            misfit,
+        }),
+    }
+}
+
+/// How `ty` misses the channel `binding`, or `None` when it fits.
+pub(crate) fn channel_misfit(ty: &Type, binding: &ModbusBinding) -> Option<ChannelMisfit> {
+    let fitting = fitting_types(binding.data_type);
+    let fits = |ty: &Type| elementary_name(ty).is_some_and(|name| fitting.contains(&name));
+    let count = binding.count;
+    let (fit, low) = match ty {
+        Type::Array { element, dims } => match dims.as_slice() {
+            [Some((low, high))] => (
+                count > 1 && high - low + 1 == i128::from(count) && fits(element),
+                *low,
+            ),
+            _ => (false, 0),
+        },
+        _ => (count == 1 && fits(ty), 0),
+    };
+    if fit || *ty == Type::Error {
+        return None;
+    }
+    let expected: Vec<String> = fitting
+        .iter()
+        .map(|name| {
+            if count == 1 {
+                (*name).to_owned()
+            } else {
+                format!("ARRAY[{low}..{}] OF {name}", low + i128::from(count) - 1)
+            }
+        })
+        .collect();
+    Some(ChannelMisfit {
+        direction: binding.direction,
+        data_type: binding.data_type,
+        count,
+        declared: ty.to_string(),
+        expected: expected.join(" or "),
+    })
+}
+
+/// The IEC name of an elementary type or of a subrange's base, the names [`fitting_types`]
+/// lists.
+fn elementary_name(ty: &Type) -> Option<&'static str> {
+    match ty {
+        Type::Elementary(elementary)
+        | Type::Subrange {
+            base: elementary, ..
+        } => Some(elementary.name()),
+        _ => None,
+    }
+}
+
+/// `one int16 value` or `8 real values`, with the data type as the project file spells it.
+fn values(data_type: ModbusDataType, count: u16) -> String {
+    let name = data_type_file_name(data_type);
+    if count == 1 {
+        format!("one {name} value")
+    } else {
+        format!("{count} {name} values")
+    }
+}
+
+/// The data type as `rivet.toml` spells it (`int16`).
+pub(crate) fn data_type_file_name(data_type: ModbusDataType) -> &'static str {
+    match data_type {
+        ModbusDataType::Bool => "bool",
+        ModbusDataType::Int16 => "int16",
+        ModbusDataType::Uint16 => "uint16",
+        ModbusDataType::Int32 => "int32",
+        ModbusDataType::Uint32 => "uint32",
+        ModbusDataType::Int64 => "int64",
+        ModbusDataType::Uint64 => "uint64",
+        ModbusDataType::Real => "real",
+        ModbusDataType::Lreal => "lreal",
+    }
+}
+
+/// Resolves a binding's `path` (`GVL_Io.aiTemps`, `Main.fbDrive.xReady`, an unqualified global)
+/// to the declaration it names and its type, or says why the runtime could not copy it.
+pub(crate) fn bound_path<'p>(
+    project: &'p Project,
+    globals: &Globals<'p>,
+    path: &str,
+) -> Result<BoundPath<'p>, Unbound> {
+    let path = path.trim();
+    let segments: Vec<&str> = path.split('.').collect();
+    if !segments.iter().all(|segment| is_valid_identifier(segment)) {
+        return Err(Unbound::NoVariable);
+    }
+    let (root, canonical, rest) = match globals.lookup(segments[0]) {
+        Some(GlobalSymbol::Var(variable)) => {
+            let list = project
+                .application
+                .objects()
+                .into_iter()
+                .find_map(|object| match object {
+                    Object::Gvl(gvl) if gvl.variables.iter().any(|v| std::ptr::eq(v, variable)) => {
+                        Some(gvl.name.as_str())
+                    }
+                    _ => None,
+                });
+            let canonical = match list {
+                Some(list) => format!("{list}.{path}"),
+                None => path.to_owned(),
+            };
+            (variable, canonical, &segments[1..])
+        }
+        Some(GlobalSymbol::Gvl(gvl)) => {
+            let name = segments.get(1).ok_or(Unbound::NoVariable)?;
+            let variable = gvl
+                .variables
+                .iter()
+                .find(|v| v.name.eq_ignore_ascii_case(name))
+                .ok_or(Unbound::NoVariable)?;
+            (variable, path.to_owned(), &segments[2..])
+        }
+        Some(GlobalSymbol::Pou(pou)) => {
+            let name = segments.get(1).ok_or(Unbound::NoVariable)?;
+            let variable = match pou.kind {
+                PouKind::Program => pou_variable(globals, pou, name)?,
+                PouKind::FunctionBlock => {
+                    // Only a function block's static variables have a place of their own.
+                    let variable = pou_variable(globals, pou, name)?;
+                    if variable.section != VarSection::VarStat {
+                        return Err(Unbound::NoVariable);
+                    }
+                    variable
+                }
+                PouKind::Function => {
+                    return Err(Unbound::NoFixedPlace(
+                        "a variable of a function, which has no place between calls",
+                    ));
+                }
+                _ => return Err(Unbound::NoVariable),
+            };
+            (variable, path.to_owned(), &segments[2..])
+        }
+        Some(GlobalSymbol::Axis | GlobalSymbol::Cam) => {
+            return Err(Unbound::NoFixedPlace(
+                "an axis or cam table, which the motion kernel writes",
+            ));
+        }
+        _ => return Err(Unbound::NoVariable),
+    };
+    let mut bound = BoundPath {
+        canonical,
+        ty: globals.resolve_type(&root.ty),
+        root,
+        last: Some(root),
+        whole: rest.is_empty(),
+        constant: root.constant,
+    };
+    for segment in rest {
+        let Type::Named(name) = &bound.ty else {
+            return Err(Unbound::NoVariable);
+        };
+        match globals.shape(name).ok_or(Unbound::NoVariable)? {
+            Shape::Struct(_) | Shape::StandardFb(_) => {
+                let member = globals.member(name, segment).ok_or(Unbound::NoVariable)?;
+                bound.ty = member.ty;
+                bound.last = None;
+            }
+            Shape::Pou(pou) if pou.kind == PouKind::FunctionBlock => {
+                let variable = pou_variable(globals, pou, segment)?;
+                bound.ty = globals.resolve_type(&variable.ty);
+                bound.constant |= variable.constant;
+                bound.last = Some(variable);
+            }
+            Shape::Pou(_) | Shape::Enum(_) => return Err(Unbound::NoVariable),
+        }
+    }
+    Ok(bound)
+}
+
+/// The variable `name` of a program or function block (its bases' included) that has a place in
+/// its instance, or why not.
+fn pou_variable<'p>(
+    globals: &Globals<'p>,
+    pou: &'p project_model::Pou,
+    name: &str,
+) -> Result<&'p Variable, Unbound> {
+    for current in inheritance_chain(globals, pou) {
+        if let Some(variable) = current
+            .variables
+            .iter()
+            .find(|v| v.name.eq_ignore_ascii_case(name))
+        {
+            return match variable.section {
+                VarSection::VarTemp => Err(Unbound::NoFixedPlace(
+                    "a VAR_TEMP, which has no place between cycles",
+                )),
+                VarSection::VarInOut => Err(Unbound::NoFixedPlace(
+                    "a VAR_IN_OUT, a reference to a caller's variable",
+                )),
+                VarSection::VarExternal => Err(Unbound::NoFixedPlace(
+                    "a VAR_EXTERNAL, a reference to a global variable",
+                )),
+                _ => Ok(variable),
+            };
+        }
+        if current
+            .methods
+            .iter()
+            .any(|m| m.name.eq_ignore_ascii_case(name))
+        {
+            return Err(Unbound::NoFixedPlace(
+                "a method, whose variables have no place between calls",
+            ));
+        }
+        if current
+            .properties
+            .iter()
+            .any(|p| p.name.eq_ignore_ascii_case(name))
+        {
+            return Err(Unbound::NoFixedPlace(
+                "a property, whose value its accessors compute",
+            ));
+        }
+    }
+    Err(Unbound::NoVariable)
 }
 
 /// The IEC types a channel of `data_type` may be bound to.
@@ -168,6 +482,39 @@ mod tests {
             Err(ChannelVariableError::NoSuchVariable(
                 "GVL_Machine.rNothing".into()
             ))
+        );
+    }
+
+    #[test]
+    fn a_channel_of_several_values_needs_an_array_of_exactly_that_many() {
+        let project = crate::SourceProject::new(
+            "VAR_GLOBAL\n    awRaw : ARRAY[1..4] OF WORD;\n    iOne : INT;\nEND_VAR\n",
+        )
+        .project;
+        let mut binding = ModbusBinding::new(
+            "GVL.awRaw",
+            project_model::ModbusTable::HoldingRegister,
+            0,
+            ModbusDataType::Uint16,
+        );
+        binding.count = 4;
+        assert_eq!(check_channel_binding(&project, &binding), Ok(()));
+        binding.count = 5;
+        binding.direction = ChannelDirection::Write;
+        assert_eq!(
+            check_channel_binding(&project, &binding)
+                .unwrap_err()
+                .to_string(),
+            "'GVL.awRaw': the channel writes 5 uint16 values, but the variable is declared as ARRAY[1..4] OF WORD: declare it as ARRAY[1..5] OF UINT or ARRAY[1..5] OF WORD"
+        );
+        binding.variable = "GVL.iOne".into();
+        binding.data_type = ModbusDataType::Int16;
+        binding.count = 1;
+        assert_eq!(check_channel_binding(&project, &binding), Ok(()));
+        binding.variable = "GVL.iNone".into();
+        assert_eq!(
+            check_channel_binding(&project, &binding),
+            Err(ChannelBindingError::NoSuchVariable("GVL.iNone".into()))
         );
     }
 }

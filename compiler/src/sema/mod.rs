@@ -9,6 +9,7 @@ mod complete;
 pub(crate) mod constant;
 mod definition;
 pub(crate) mod expression_types;
+pub(crate) mod modbus_master;
 mod reserved;
 pub(crate) mod scope;
 mod sfc_flags;
@@ -81,6 +82,10 @@ fn check_text_project(
 ) -> Vec<ProjectDiagnostic> {
     let globals = Globals::new(project);
     let mut found = Vec::new();
+    // The variables runtime Modbus devices fill, which W0002 leaves alone, and the variables
+    // some body writes, for W0015.
+    let filled = modbus_master::runtime_filled(project, &globals);
+    let mut written = HashSet::new();
     // Each POU's bodies, grouped once rather than searched for every POU.
     let mut bodies: HashMap<*const Pou, Vec<StBody<'_>>> = HashMap::new();
     for body in project_model::st_body_files(project) {
@@ -105,12 +110,17 @@ fn check_text_project(
                 let own = bodies
                     .get(&std::ptr::from_ref(pou))
                     .map_or(&[][..], Vec::as_slice);
+                let usage = UsageContext {
+                    filled: &filled,
+                    written: &mut written,
+                };
                 found.extend(check_pou_bodies(
                     &globals,
                     &file,
                     pou,
                     own,
                     keep.as_deref_mut(),
+                    usage,
                 ));
             }
             Object::Gvl(gvl) => {
@@ -146,6 +156,9 @@ fn check_text_project(
             }
         }
     }
+    found.extend(modbus_master::check_modbus_master(
+        project, &globals, &written,
+    ));
     found
 }
 
@@ -203,7 +216,12 @@ fn check_text_pou(project: &Project, pou_name: &str) -> Vec<ProjectDiagnostic> {
         .into_iter()
         .filter(|body| std::ptr::eq(body.pou, pou))
         .collect();
-    found.extend(check_pou_bodies(&globals, &file, pou, &bodies, None));
+    let filled = modbus_master::runtime_filled(project, &globals);
+    let usage = UsageContext {
+        filled: &filled,
+        written: &mut HashSet::new(),
+    };
+    found.extend(check_pou_bodies(&globals, &file, pou, &bodies, None, usage));
     found
 }
 
@@ -361,6 +379,15 @@ pub fn references_to(
     found
 }
 
+/// What the usage warnings of one POU share with the rest of the project.
+struct UsageContext<'u> {
+    /// The declarations runtime Modbus devices fill, which W0002 does not report.
+    filled: &'u HashSet<*const Variable>,
+    /// The declarations written by the bodies checked so far, to which this POU's writes are
+    /// added (W0015).
+    written: &'u mut HashSet<*const Variable>,
+}
+
 /// The bodies of one POU (`bodies` are all its own) checked, with the usage warnings of its
 /// variables.
 fn check_pou_bodies(
@@ -369,6 +396,7 @@ fn check_pou_bodies(
     pou: &Pou,
     bodies: &[StBody<'_>],
     mut keep: Option<&mut expression_types::CheckedBodies>,
+    context: UsageContext<'_>,
 ) -> Vec<ProjectDiagnostic> {
     let mut found = Vec::new();
     let mut usage = Usage::new();
@@ -397,16 +425,28 @@ fn check_pou_bodies(
             diagnostic,
         }));
     }
+    context.written.extend(
+        usage
+            .iter()
+            .filter(|(_, access)| access.written)
+            .map(|(variable, _)| *variable),
+    );
     // Usage is only complete when every body is Structured Text that parsed.
     if clean && all_bodies_are_text(pou) {
-        usage_warnings(globals, pou, &usage, &mut |name, diagnostic| {
-            found.push(ProjectDiagnostic {
-                file: file.to_owned(),
-                declaration: Some(name.to_owned()),
-                element: None,
-                diagnostic,
-            });
-        });
+        usage_warnings(
+            globals,
+            pou,
+            &usage,
+            context.filled,
+            &mut |name, diagnostic| {
+                found.push(ProjectDiagnostic {
+                    file: file.to_owned(),
+                    declaration: Some(name.to_owned()),
+                    element: None,
+                    diagnostic,
+                });
+            },
+        );
     }
     found
 }
@@ -499,11 +539,13 @@ fn duplicates<'n>(
     }
 }
 
-/// Unused and unassigned local variables of a POU, its methods and accessors.
+/// Unused and unassigned local variables of a POU, its methods and accessors; a variable in
+/// `filled` is written by the runtime's Modbus master, so it is never reported as unassigned.
 fn usage_warnings(
     globals: &Globals<'_>,
     pou: &Pou,
     usage: &Usage,
+    filled: &HashSet<*const Variable>,
     report: &mut impl FnMut(&str, Diagnostic),
 ) {
     let locals = pou
@@ -541,6 +583,7 @@ fn usage_warnings(
             );
         } else if access.read
             && !access.written
+            && !filled.contains(&std::ptr::from_ref(variable))
             && variable.initial.is_none()
             && !variable.constant
             && globals.resolve_type(&variable.ty).as_elementary().is_some()

@@ -1,0 +1,559 @@
+//! The build's checks of the runtime Modbus master (`docs/modbus-master.md` §3): the devices
+//! that name an I/O task, their channels and the serial ports they use, reported in `rivet.toml`
+//! at the device's (or port's) name with E0140–E0145, W0015 and W0016.
+//!
+//! The settings' own rules are `project_model::device_check`'s, which the device editors refuse
+//! with; the build reports them for files edited by hand and adds what needs the program: the
+//! task, the bound variables and their types, and what else writes them.
+
+use std::collections::HashSet;
+use std::path::PathBuf;
+
+use project_model::{
+    ChannelDirection, DeviceProblem, ModbusBinding, ModbusDevice, ModbusSchedule, Project,
+    TaskKind, TypeDefinition, Variable, modbus_device_problems, same_identifier,
+    serial_port_problems,
+};
+
+use super::ProjectDiagnostic;
+use super::scope::Globals;
+use super::ty::Type;
+use crate::diagnostic::{Code, Diagnostic};
+use crate::elementary::Elementary;
+use crate::ide::variable_type::{BoundPath, Unbound, bound_path, channel_misfit};
+use crate::library::MODBUS_DEVICE_STATUS;
+
+/// What a bound path is to its device, for the words of a finding.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Field {
+    /// A channel's `variable`.
+    Variable,
+    /// The device's `status`.
+    Status,
+    /// A channel's `error_flag`.
+    ErrorFlag,
+    /// A channel's `trigger_variable`.
+    Trigger,
+}
+
+impl Field {
+    /// The field in a sentence: `the error flag`.
+    fn words(self) -> &'static str {
+        match self {
+            Self::Variable => "the variable",
+            Self::Status => "the status variable",
+            Self::ErrorFlag => "the error flag",
+            Self::Trigger => "the trigger variable",
+        }
+    }
+
+    /// Whether the runtime writes the variable; a channel's `variable` only when the channel
+    /// reads.
+    fn is_written_by_runtime(self, direction: ChannelDirection) -> bool {
+        match self {
+            Self::Variable => direction == ChannelDirection::Read,
+            Self::Status | Self::ErrorFlag => true,
+            Self::Trigger => false,
+        }
+    }
+}
+
+/// A variable the runtime fills (a read channel's, a status, an error flag), kept to find two
+/// fillers of one variable (E0142) and the program's writes of it (W0015).
+struct Filled<'p> {
+    /// The device's name, where the finding goes.
+    device: String,
+    /// `Modbus device 'X', channel N (path)` or `Modbus device 'X', status (path)`.
+    prefix: String,
+    /// What fills it.
+    field: Field,
+    /// The path as the runtime finds it, in lower case, split at the dots.
+    segments: Vec<String>,
+    /// The path as written.
+    path: String,
+    /// The declaration the path starts from.
+    root: &'p Variable,
+    /// Whether the path names the whole declaration.
+    whole: bool,
+}
+
+/// Every finding about the project's runtime Modbus devices; `written` holds the declarations
+/// some body writes (as W0002 finds writes), for W0015.
+pub(super) fn check_modbus_master(
+    project: &Project,
+    globals: &Globals<'_>,
+    written: &HashSet<*const Variable>,
+) -> Vec<ProjectDiagnostic> {
+    let mut found = Vec::new();
+    let devices: Vec<(usize, &ModbusDevice)> = runtime_devices(project).collect();
+    if devices.is_empty() {
+        return found;
+    }
+    check_serial_ports(project, &devices, &mut found);
+    let mut filled = Vec::new();
+    for &(index, device) in &devices {
+        check_device(project, globals, index, device, &mut filled, &mut found);
+    }
+    for (position, later) in filled.iter().enumerate() {
+        let earlier = filled[..position].iter().find(|earlier| {
+            let shared = earlier.segments.len().min(later.segments.len());
+            earlier.segments[..shared] == later.segments[..shared]
+        });
+        if let Some(earlier) = earlier {
+            let message = format!(
+                "{}: {} '{}' is also filled by {}{}: bind each channel, status and error flag to a variable of its own",
+                later.prefix,
+                later.field.words(),
+                later.path,
+                earlier.prefix,
+                match earlier.field {
+                    Field::Status => ", as its status",
+                    Field::ErrorFlag => ", as its error flag",
+                    _ => "",
+                },
+            );
+            found.push(finding(&later.device, Code::ModbusDoubleWrite, message));
+        }
+    }
+    for filled in &filled {
+        if filled.whole && written.contains(&std::ptr::from_ref(filled.root)) {
+            let fix = match filled.field {
+                Field::Variable => "write another variable, or make the channel a write channel",
+                _ => "leave it to the runtime, or bind another variable",
+            };
+            let message = format!(
+                "{}: the program also writes {} '{}', but the next cycle's copy from the device overwrites what it wrote: {fix}",
+                filled.prefix,
+                filled.field.words(),
+                filled.path,
+            );
+            found.push(finding(
+                &filled.device,
+                Code::ModbusReadVariableWritten,
+                message,
+            ));
+        }
+    }
+    found
+}
+
+/// The declarations that read channels, status variables and error flags of runtime devices
+/// fill: W0002 does not report them, since the runtime writes them every cycle.
+pub(super) fn runtime_filled(project: &Project, globals: &Globals<'_>) -> HashSet<*const Variable> {
+    let mut filled = HashSet::new();
+    for (_, device) in runtime_devices(project) {
+        let read_channels = device
+            .bindings
+            .iter()
+            .filter(|binding| binding.direction == ChannelDirection::Read)
+            .map(|binding| binding.variable.as_str());
+        let paths = read_channels.chain(device.status.as_deref()).chain(
+            device
+                .bindings
+                .iter()
+                .filter_map(|b| b.error_flag.as_deref()),
+        );
+        for path in paths {
+            if let Ok(BoundPath {
+                last: Some(variable),
+                ..
+            }) = bound_path(project, globals, path)
+            {
+                filled.insert(std::ptr::from_ref(variable));
+            }
+        }
+    }
+    filled
+}
+
+/// The devices the runtime masters (those with an I/O task), with their index in the project.
+fn runtime_devices(project: &Project) -> impl Iterator<Item = (usize, &ModbusDevice)> {
+    project
+        .modbus_devices
+        .iter()
+        .enumerate()
+        .filter(|(_, device)| device.is_runtime_device())
+}
+
+/// A finding in `rivet.toml` at the device's or port's `name`.
+fn finding(declaration: &str, code: Code, message: String) -> ProjectDiagnostic {
+    ProjectDiagnostic {
+        file: PathBuf::from(project_model::MANIFEST_FILE_NAME),
+        declaration: Some(declaration.to_owned()),
+        element: None,
+        diagnostic: Diagnostic::new(code, 0..0, message),
+    }
+}
+
+/// The serial ports runtime devices name: their problems as the editor finds them, 7 data bits
+/// (which the editor accepts and Modbus RTU cannot send), and two ports on one device file.
+fn check_serial_ports(
+    project: &Project,
+    devices: &[(usize, &ModbusDevice)],
+    found: &mut Vec<ProjectDiagnostic>,
+) {
+    let mut used: Vec<usize> = Vec::new();
+    for (index, port) in project.serial_ports.iter().enumerate() {
+        let named = devices.iter().any(|(_, device)| {
+            device
+                .serial_port()
+                .is_some_and(|name| same_identifier(name, &port.name))
+        });
+        if !named {
+            continue;
+        }
+        let mut problems = serial_port_problems(&project.serial_ports, Some(index), port);
+        if port.data_bits == 7 {
+            problems.push(DeviceProblem::UnsupportedDataBits(7));
+        }
+        for problem in problems {
+            let message = format!("serial port '{}': {problem}", port.name);
+            found.push(finding(&port.name, Code::ModbusDeviceSetting, message));
+        }
+        let device_file = port.device.trim();
+        let sharing = used
+            .iter()
+            .map(|&other| &project.serial_ports[other])
+            .find(|other| !device_file.is_empty() && other.device.trim() == device_file);
+        if let Some(other) = sharing {
+            let message = format!(
+                "serial port '{}': its device file '{device_file}' is also the device file of serial port '{}': two ports cannot share one device file",
+                port.name, other.name
+            );
+            found.push(finding(&port.name, Code::ModbusDeviceSetting, message));
+        }
+        used.push(index);
+    }
+}
+
+/// One runtime device: its task, the editor's problems, its status, its channels and how often
+/// it is polled.
+fn check_device<'p>(
+    project: &'p Project,
+    globals: &Globals<'p>,
+    index: usize,
+    device: &ModbusDevice,
+    filled: &mut Vec<Filled<'p>>,
+    found: &mut Vec<ProjectDiagnostic>,
+) {
+    let name = device.name.as_str();
+    let device_prefix = format!("Modbus device '{name}'");
+    let task_name = device.task.as_deref().unwrap_or_default();
+    let task = project
+        .tasks
+        .iter()
+        .find(|task| same_identifier(&task.name, task_name));
+    if task.is_none() {
+        let message = format!(
+            "{device_prefix}: there is no task named '{task_name}' to copy the device's values: choose one of the project's tasks"
+        );
+        found.push(finding(name, Code::ModbusDeviceSetting, message));
+    }
+    for problem in modbus_device_problems(project, Some(index), device) {
+        match channel_row(&problem) {
+            // A path that is not one names no variable: the variable check says so (E0140).
+            Some(_)
+                if matches!(
+                    problem,
+                    DeviceProblem::EmptyVariable { .. } | DeviceProblem::InvalidVariable { .. }
+                ) => {}
+            Some(row) => {
+                let prefix = channel_prefix(device, row);
+                let message = format!("{prefix}: {}", without_row(&problem.to_string(), row));
+                found.push(finding(name, Code::ModbusChannelSetting, message));
+            }
+            None => {
+                let message = format!("{device_prefix}: {problem}");
+                found.push(finding(name, Code::ModbusDeviceSetting, message));
+            }
+        }
+    }
+    if let Some(path) = device.status.as_deref() {
+        let prefix = format!("{device_prefix}, status ({})", path.trim());
+        let place = Place {
+            prefix: &prefix,
+            device: name,
+            direction: ChannelDirection::Read,
+        };
+        if let Some(bound) = bind(project, globals, &place, Field::Status, path, found) {
+            let misfit = match status_fit(globals, &bound.ty) {
+                StatusFit::Fits => None,
+                StatusFit::OtherType => Some(format!(
+                    "the status variable is declared as {}: declare it as {MODBUS_DEVICE_STATUS}",
+                    bound.ty
+                )),
+                StatusFit::OwnDeclarationDiffers => Some(format!(
+                    "the project declares its own {MODBUS_DEVICE_STATUS}, whose members differ from the Modbus library's, which the runtime writes: remove the project's declaration or give it the library's members"
+                )),
+            };
+            if let Some(misfit) = misfit {
+                let message = format!("{prefix}: {misfit}");
+                found.push(finding(name, Code::ModbusFlagType, message));
+            }
+            filled.push(filled_by(name, prefix, Field::Status, path, &bound));
+        }
+    }
+    for (position, binding) in device.bindings.iter().enumerate() {
+        check_channel(
+            project,
+            globals,
+            device,
+            position + 1,
+            binding,
+            filled,
+            found,
+        );
+    }
+    if let (Some(task), ModbusSchedule::Interval, Some(poll_interval_ms)) =
+        (task, device.schedule, device.poll_interval_ms)
+        && let TaskKind::Cyclic { interval_us } = task.kind
+        && u64::from(poll_interval_ms) * 1000 < u64::from(interval_us)
+    {
+        let task_interval = if interval_us % 1000 == 0 {
+            format!("{} ms", interval_us / 1000)
+        } else {
+            format!("{interval_us} µs")
+        };
+        let message = format!(
+            "{device_prefix}: polled every {poll_interval_ms} ms, but its task '{}' copies its values every {task_interval}: set poll_interval_ms to {} or more, or schedule = \"every_cycle\"",
+            task.name,
+            interval_us.div_ceil(1000)
+        );
+        found.push(finding(name, Code::ModbusPollFasterThanTask, message));
+    }
+}
+
+/// One channel: its variable, error flag and trigger variable.
+fn check_channel<'p>(
+    project: &'p Project,
+    globals: &Globals<'p>,
+    device: &ModbusDevice,
+    row: usize,
+    binding: &ModbusBinding,
+    filled: &mut Vec<Filled<'p>>,
+    found: &mut Vec<ProjectDiagnostic>,
+) {
+    let name = device.name.as_str();
+    let prefix = channel_prefix(device, row);
+    let reads = binding.direction == ChannelDirection::Read;
+    let place = Place {
+        prefix: &prefix,
+        device: name,
+        direction: binding.direction,
+    };
+    if let Some(bound) = bind(
+        project,
+        globals,
+        &place,
+        Field::Variable,
+        &binding.variable,
+        found,
+    ) {
+        if let Some(misfit) = channel_misfit(&bound.ty, binding) {
+            let message = format!("{prefix}: {misfit}");
+            found.push(finding(name, Code::ModbusChannelType, message));
+        }
+        if reads {
+            filled.push(filled_by(
+                name,
+                prefix.clone(),
+                Field::Variable,
+                &binding.variable,
+                &bound,
+            ));
+        }
+    }
+    for (field, path) in [
+        (Field::ErrorFlag, binding.error_flag.as_deref()),
+        (Field::Trigger, binding.trigger_variable.as_deref()),
+    ] {
+        let Some(path) = path else { continue };
+        let Some(bound) = bind(project, globals, &place, field, path, found) else {
+            continue;
+        };
+        if !matches!(bound.ty, Type::Elementary(Elementary::Bool) | Type::Error) {
+            let message = format!(
+                "{prefix}: {} '{}' is declared as {}: declare it as BOOL",
+                field.words(),
+                path.trim(),
+                bound.ty
+            );
+            found.push(finding(name, Code::ModbusFlagType, message));
+        }
+        if field == Field::ErrorFlag {
+            filled.push(filled_by(name, prefix.clone(), field, path, &bound));
+        }
+    }
+}
+
+/// Resolves a bound path, reporting E0140 when it names nothing the runtime can copy, or a
+/// `CONSTANT` the runtime would write.
+fn bind<'p>(
+    project: &'p Project,
+    globals: &Globals<'p>,
+    place: &Place<'_>,
+    field: Field,
+    path: &str,
+    found: &mut Vec<ProjectDiagnostic>,
+) -> Option<BoundPath<'p>> {
+    let path = path.trim();
+    let words = field.words();
+    let problem = match bound_path(project, globals, path) {
+        Ok(bound) if bound.constant && field.is_written_by_runtime(place.direction) => format!(
+            "{words} '{path}' is a CONSTANT, which the runtime cannot write: remove CONSTANT or bind another variable"
+        ),
+        Ok(bound) => return Some(bound),
+        Err(Unbound::NoVariable) => format!(
+            "{words} '{path}' names no variable of the project: write the path of a global or program variable, such as GVL_IO.rSpeed"
+        ),
+        Err(Unbound::NoFixedPlace(what)) => format!(
+            "{words} '{path}' is {what}: bind a global variable or a program's VAR, VAR_INPUT or VAR_OUTPUT"
+        ),
+    };
+    found.push(finding(
+        place.device,
+        Code::ModbusUncopyableVariable,
+        format!("{}: {problem}", place.prefix),
+    ));
+    None
+}
+
+/// Where a bound path belongs, for [`bind`]'s finding.
+struct Place<'a> {
+    /// `Modbus device 'X', channel N (path)`.
+    prefix: &'a str,
+    /// The device's name.
+    device: &'a str,
+    /// The channel's direction (a status is read).
+    direction: ChannelDirection,
+}
+
+/// What [`Filled`] keeps of a resolved path.
+fn filled_by<'p>(
+    device: &str,
+    prefix: String,
+    field: Field,
+    path: &str,
+    bound: &BoundPath<'p>,
+) -> Filled<'p> {
+    Filled {
+        device: device.to_owned(),
+        prefix,
+        field,
+        segments: bound.canonical.split('.').map(str::to_lowercase).collect(),
+        path: path.trim().to_owned(),
+        root: bound.root,
+        whole: bound.whole,
+    }
+}
+
+/// `Modbus device 'X', channel N (path)`, channels numbered from 1.
+fn channel_prefix(device: &ModbusDevice, row: usize) -> String {
+    let variable = device
+        .bindings
+        .get(row.wrapping_sub(1))
+        .map_or("", |binding| binding.variable.trim());
+    format!(
+        "Modbus device '{}', channel {row} ({variable})",
+        device.name
+    )
+}
+
+/// Whether a status variable's type is the one the runtime writes.
+enum StatusFit {
+    /// The Modbus library's status structure, or a project's own declaration of its name with
+    /// the same members (the runtime finds the members by name and offset).
+    Fits,
+    /// Another type.
+    OtherType,
+    /// A project's own declaration of the name with other members.
+    OwnDeclarationDiffers,
+}
+
+/// How `ty` fits a status variable.
+fn status_fit(globals: &Globals<'_>, ty: &Type) -> StatusFit {
+    let Type::Named(name) = ty else {
+        return if *ty == Type::Error {
+            StatusFit::Fits
+        } else {
+            StatusFit::OtherType
+        };
+    };
+    if !name.eq_ignore_ascii_case(MODBUS_DEVICE_STATUS) {
+        return StatusFit::OtherType;
+    }
+    let library = crate::library::modbus().application.objects();
+    let members = |definition: &TypeDefinition| -> Option<Vec<(String, String)>> {
+        match definition {
+            TypeDefinition::Struct {
+                members,
+                extends: None,
+            } => Some(
+                members
+                    .iter()
+                    .map(|member| {
+                        let ty: String = member.ty.split_whitespace().collect();
+                        (member.name.to_lowercase(), ty.to_lowercase())
+                    })
+                    .collect(),
+            ),
+            _ => None,
+        }
+    };
+    let expected = library.iter().find_map(|object| match object {
+        project_model::Object::DataType(data_type)
+            if data_type.name.eq_ignore_ascii_case(MODBUS_DEVICE_STATUS) =>
+        {
+            members(&data_type.definition)
+        }
+        _ => None,
+    });
+    let declared = globals
+        .data_type(name)
+        .and_then(|data_type| members(&data_type.definition));
+    if expected.is_some() && expected == declared {
+        StatusFit::Fits
+    } else {
+        StatusFit::OwnDeclarationDiffers
+    }
+}
+
+/// The channel a problem of the device editor's checks is about, numbered from 1; `None` for a
+/// problem of the device itself.
+fn channel_row(problem: &DeviceProblem) -> Option<usize> {
+    match problem {
+        DeviceProblem::EmptyVariable { row }
+        | DeviceProblem::InvalidVariable { row, .. }
+        | DeviceProblem::ChannelPastEnd { row, .. }
+        | DeviceProblem::ChannelsOverlap { row, .. }
+        | DeviceProblem::TableTypeMismatch { row, .. }
+        | DeviceProblem::ZeroCount { row }
+        | DeviceProblem::ChannelTooLong { row, .. }
+        | DeviceProblem::WriteToReadOnlyTable { row, .. }
+        | DeviceProblem::FunctionCodeOnRead { row, .. }
+        | DeviceProblem::FunctionCodeMisfit { row, .. }
+        | DeviceProblem::SingleWriteTooWide { row, .. }
+        | DeviceProblem::TriggerVariableWithoutEdge { row }
+        | DeviceProblem::EdgeWithoutTriggerVariable { row }
+        | DeviceProblem::OnErrorOnWrite { row } => Some(*row),
+        _ => None,
+    }
+}
+
+/// A channel problem's text without its leading `channel N`, which the finding's prefix already
+/// says: `channel 2: a coil cannot…` becomes `a coil cannot…`, `channel 2 writes…` becomes
+/// `the channel writes…`.
+fn without_row(text: &str, row: usize) -> String {
+    let lead = format!("channel {row}");
+    match text.strip_prefix(&lead) {
+        Some(rest) => match rest.strip_prefix(": ") {
+            Some(rest) => rest.to_owned(),
+            None => format!("the channel{rest}"),
+        },
+        None => text.to_owned(),
+    }
+}
+
+#[cfg(test)]
+#[path = "modbus_master_tests.rs"]
+mod tests;
