@@ -724,12 +724,28 @@ fn a_modbus_device_with_both_links_or_neither_is_refused_at_its_table() {
     for (from, to, expected) in cases {
         let dir = example_copy();
         let manifest = dir.path().join("rivet.toml");
-        let table = line_number(&manifest, "[[modbus_device]]");
         replace_in(&manifest, from, to);
+        // A sound device before the broken one: the error must name the broken device's own
+        // table, not the first `[[modbus_device]]` of the file.
+        replace_in(
+            &manifest,
+            "[[modbus_device]]\n",
+            "[[modbus_device]]\nname = \"Meter\"\nhost = \"192.168.1.60\"\nport = 502\n\
+             unit_id = 2\ntimeout_ms = 500\n\n[[modbus_device]]\n",
+        );
+        let table = last_line_number(&manifest, "[[modbus_device]]");
         let error = load_fails(dir.path());
         assert_error(&error, dir.path(), "rivet.toml", Some(table), expected);
         assert_error(&error, dir.path(), "rivet.toml", Some(table), "'BeltDrive'");
+        assert_eq!(error.problems.len(), 1, "{error}");
     }
+}
+
+/// The 1-based line of the last line of `path` that is `line`.
+fn last_line_number(path: &Path, line: &str) -> usize {
+    let text = fs::read_to_string(path).unwrap();
+    let lines: Vec<&str> = text.lines().collect();
+    lines.iter().rposition(|each| *each == line).unwrap() + 1
 }
 
 #[test]
@@ -742,9 +758,13 @@ fn an_unknown_key_of_a_modbus_device_or_a_serial_port_is_reported() {
         "timeout_ms = 500\npriority = 1\n",
     );
     let error = load_fails(dir.path());
-    assert!(
-        error.to_string().contains("unknown field `priority`"),
-        "{error}"
+    let line = last_line_number(&manifest, "priority = 1");
+    assert_error(
+        &error,
+        dir.path(),
+        "rivet.toml",
+        Some(line),
+        "unknown field `priority`",
     );
     let dir = example_copy();
     let manifest = dir.path().join("rivet.toml");
@@ -755,8 +775,12 @@ fn an_unknown_key_of_a_modbus_device_or_a_serial_port_is_reported() {
          parity = \"none\"\ndata_bits = 8\nstop_bits = 2\nflow_control = true\n\n[[modbus_device]]",
     );
     let error = load_fails(dir.path());
-    assert!(
-        error.to_string().contains("unknown field `flow_control`"),
-        "{error}"
+    let line = line_number(&manifest, "flow_control = true");
+    assert_error(
+        &error,
+        dir.path(),
+        "rivet.toml",
+        Some(line),
+        "unknown field `flow_control`",
     );
 }

@@ -2,6 +2,8 @@
 
 use project_model::ModbusDevice;
 
+use super::online::{Bound, bound};
+
 /// Where the watched variables come from this frame.
 #[derive(Debug, Default)]
 pub(crate) struct WatchSources {
@@ -16,9 +18,14 @@ pub(crate) struct WatchSources {
 }
 
 /// The paths to watch in the order of their sources: the watch list as it is, then, each added
-/// once, the shown trace's variables that are bound to a Modbus device (so the trace can record
-/// them by polling; the target records the others itself), the inline values and the cams.
-pub(crate) fn watched_paths(sources: WatchSources, devices: &[ModbusDevice]) -> Vec<String> {
+/// once, the shown trace's variables on a Modbus device the studio polls (so the trace can
+/// record them by polling; the target records the others itself, a runtime device's among them
+/// while `logged_in`), the inline values and the cams.
+pub(crate) fn watched_paths(
+    sources: WatchSources,
+    devices: &[ModbusDevice],
+    logged_in: bool,
+) -> Vec<String> {
     let WatchSources {
         watch_list,
         trace,
@@ -33,21 +40,11 @@ pub(crate) fn watched_paths(sources: WatchSources, devices: &[ModbusDevice]) -> 
     };
     trace
         .into_iter()
-        .filter(|path| is_device_bound(devices, path))
+        .filter(|path| matches!(bound(devices, path, logged_in), Some(Bound::Polled(..))))
         .for_each(&mut add);
     inline.into_iter().for_each(&mut add);
     cams.into_iter().for_each(&mut add);
     watched
-}
-
-/// Whether a channel of one of `devices` is bound to the variable `path`.
-fn is_device_bound(devices: &[ModbusDevice], path: &str) -> bool {
-    devices.iter().any(|device| {
-        device
-            .bindings
-            .iter()
-            .any(|binding| binding.variable.eq_ignore_ascii_case(path))
-    })
 }
 
 #[cfg(test)]
@@ -80,6 +77,7 @@ mod tests {
                 cams: paths(&["Main.cam.master", "Main.a"]),
             },
             &[],
+            false,
         );
         assert_eq!(
             watched,
@@ -96,7 +94,24 @@ mod tests {
                 ..WatchSources::default()
             },
             &devices,
+            false,
         );
         assert_eq!(watched, paths(&["gvl_io.rspeed"]));
+    }
+
+    #[test]
+    fn a_runtime_device_s_trace_variables_are_not_polled_while_logged_in() {
+        let mut device = device_bound_to("GVL_IO.rSpeed");
+        device.task = Some("MainTask".into());
+        let sources = || WatchSources {
+            trace: paths(&["GVL_IO.rSpeed"]),
+            ..WatchSources::default()
+        };
+        let devices = [device];
+        assert_eq!(
+            watched_paths(sources(), &devices, false),
+            paths(&["GVL_IO.rSpeed"])
+        );
+        assert!(watched_paths(sources(), &devices, true).is_empty());
     }
 }

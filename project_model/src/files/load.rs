@@ -4,6 +4,7 @@ use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
 
 use serde::de::DeserializeOwned;
+use toml::Spanned;
 
 use super::held_back::HeldBackObject;
 use super::layout::{Entry, bodies_mut, body_slots, folder_dir, object_file, parse_entry};
@@ -11,8 +12,11 @@ use super::manifest::{Manifest, VersionProbe};
 use super::older_versions::{OlderFailure, pou_from_older};
 use super::problem::{LoadError, LoadProblem, Severity, line_of, toml_problem};
 use super::{APPLICATION_DIR, FORMAT_VERSION, MANIFEST_FILE_NAME, VENDOR_DATA_FILE_NAME};
+use crate::modbus_device_file::ModbusDeviceFile;
 use crate::validate::{body_problems, member_problem};
-use crate::{Body, Folder, Node, Object, ObjectKind, Pou, Project, VendorData, same_identifier};
+use crate::{
+    Body, Folder, ModbusDevice, Node, Object, ObjectKind, Pou, Project, VendorData, same_identifier,
+};
 
 /// A project read from disk.
 #[derive(Clone, Debug, PartialEq)]
@@ -119,6 +123,7 @@ impl Loader<'_> {
             let line = line_of(&text, entry.span().start);
             self.load_entry(&mut application, entry.get_ref(), &display, line);
         }
+        let modbus_devices = self.modbus_devices(manifest.modbus_devices, &display, &text);
         let vendor_data = self.load_vendor_data()?;
         Some(Project {
             vendor_data,
@@ -128,11 +133,33 @@ impl Loader<'_> {
             tasks: manifest.tasks,
             io_areas: manifest.io_areas,
             serial_ports: manifest.serial_ports,
-            modbus_devices: manifest.modbus_devices,
+            modbus_devices,
             axes: manifest.axes,
             dialect: manifest.dialect,
             application,
         })
+    }
+
+    /// The devices of the manifest's `[[modbus_device]]` tables; a table whose link is wrong
+    /// (both `host`/`port` and `serial_port`, or neither) is reported at its own line and left out.
+    fn modbus_devices(
+        &mut self,
+        tables: Vec<Spanned<ModbusDeviceFile>>,
+        manifest: &Path,
+        text: &str,
+    ) -> Vec<ModbusDevice> {
+        let mut devices = Vec::with_capacity(tables.len());
+        for table in tables {
+            let line = line_of(text, table.span().start);
+            match ModbusDevice::try_from(table.into_inner()) {
+                Ok(device) => devices.push(device),
+                Err(error) => {
+                    self.problems
+                        .push(LoadProblem::error(manifest, Some(line), error.to_string()))
+                }
+            }
+        }
+        devices
     }
 
     /// The vendor data of `plcopen.toml`, empty when the file is absent; `None` (with the

@@ -3,7 +3,8 @@
 use serde::{Deserialize, Serialize};
 use toml::Spanned;
 
-use crate::{Axis, Controller, Dialect, IoArea, ModbusDevice, SerialPort, Task};
+use crate::modbus_device_file::ModbusDeviceFile;
+use crate::{Axis, Controller, Dialect, IoArea, SerialPort, Task};
 
 /// The manifest's fields in file order.
 ///
@@ -32,7 +33,9 @@ pub(crate) struct Manifest {
         rename = "modbus_device",
         skip_serializing_if = "Vec::is_empty"
     )]
-    pub modbus_devices: Vec<ModbusDevice>,
+    /// The devices as their tables read, each with its span: a table whose link is wrong is
+    /// refused after it is read, so the loader converts each itself to name its own line.
+    pub modbus_devices: Vec<Spanned<ModbusDeviceFile>>,
     #[serde(default, rename = "axis", skip_serializing_if = "Vec::is_empty")]
     pub axes: Vec<Axis>,
 }

@@ -12,6 +12,7 @@ use super::held_back::HeldBackObject;
 use super::layout::{body_slots, folder_dir, folder_entry, object_entry, object_file, object_toml};
 use super::manifest::Manifest;
 use super::{FORMAT_VERSION, MANIFEST_FILE_NAME, VENDOR_DATA_FILE_NAME};
+use crate::modbus_device_file::ModbusDeviceFile;
 use crate::validate::object_problem;
 use crate::{Folder, Node, Object, Project, is_valid_identifier, same_identifier};
 
@@ -141,7 +142,11 @@ fn render(
         tasks: project.tasks.clone(),
         io_areas: project.io_areas.clone(),
         serial_ports: project.serial_ports.clone(),
-        modbus_devices: project.modbus_devices.clone(),
+        modbus_devices: project
+            .modbus_devices
+            .iter()
+            .map(|device| Spanned::new(0..0, ModbusDeviceFile::from(device.clone())))
+            .collect(),
         axes: project.axes.clone(),
     };
     let text = to_canonical_toml(&manifest).map_err(|message| SaveError::Serialize {

@@ -348,11 +348,11 @@ impl DeviceText {
             ),
             Self::ProblemRtuWithoutTask => (
                 "a Modbus RTU device needs an I/O task: the studio does not poll serial ports, the runtime does",
-                "Modbus RTU 设备需要 I/O 任务：串口由运行时轮询，而不是由工作室轮询",
+                "Modbus RTU 设备需要 I/O 任务：串口由运行时轮询，而不是由开发环境轮询",
             ),
             Self::ProblemRtuUnitId => (
                 "unit id {unit_id} cannot be used on a serial line: enter 1 to 247",
-                "单元 ID {unit_id} 不能用于串行线路：请输入 1 到 247",
+                "单元标识 {unit_id} 不能用于串行线路：请输入 1 到 247",
             ),
             Self::ProblemTimeoutTooLong => (
                 "the timeout is {timeout_ms} ms; it is at most 60000 ms",

@@ -380,9 +380,12 @@ pub enum Text {
     RecordCountZero,
     EveryNthRange,
     TriggerNotBool,
-    BoundToNoDevice,
     DeviceNotPolled,
     DeviceBusy,
+    ReadThroughRuntime,
+    DeviceArrayChannel,
+    DeviceOnSerialPort,
+    DeviceNotAnAddress,
     // Undo labels, accessible labels and tree details; the templates among them are filled
     // with `Text::fill`. The refusals are `RefusalText`s.
     UndoAddFolder,

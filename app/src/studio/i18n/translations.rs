@@ -461,7 +461,6 @@ impl Text {
                 "the trigger {name} is not a BOOL; the target triggers on BOOL edges and levels",
                 "触发变量 {name} 不是 BOOL；目标只能在 BOOL 的边沿和电平上触发",
             ),
-            Self::BoundToNoDevice => ("{path} is bound to no device", "{path} 未绑定到任何设备"),
             Self::DeviceNotPolled => (
                 "device {device} is not polled; watch one of its variables",
                 "设备 {device} 未被轮询；请监视其一个变量",
@@ -469,6 +468,24 @@ impl Text {
             Self::DeviceBusy => (
                 "device {device} is busy; try again",
                 "设备 {device} 忙；请重试",
+            ),
+            Self::ReadThroughRuntime => (
+                "read through the runtime when logged in",
+                "登录后通过运行时读取",
+            ),
+            Self::DeviceArrayChannel => (
+                "{path} is bound to a channel of {count} values: the studio polls channels of one \
+                 value only; give the device an I/O task and log in to read it through the runtime",
+                "{path} 绑定到含 {count} 个值的通道：开发环境只轮询单值通道；请为设备指定 I/O \
+                 任务并登录，通过运行时读取",
+            ),
+            Self::DeviceOnSerialPort => (
+                "device {device} is on a serial port, which only the runtime polls",
+                "设备 {device} 位于串口上，串口只由运行时轮询",
+            ),
+            Self::DeviceNotAnAddress => (
+                "device {device}: '{address}' is not an address",
+                "设备 {device}：'{address}' 不是地址",
             ),
             Self::UndoAddFolder => ("Add folder {name}", "添加文件夹 {name}"),
             Self::UndoAdd => ("Add {kind} {name}", "添加{kind} {name}"),

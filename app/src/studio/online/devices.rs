@@ -1,16 +1,18 @@
 //! Third-party Modbus TCP devices of the project, polled while any of their bound variables is
 //! watched: their values, writes and forces go through the same panes as the controller's,
-//! without a login or a download.
+//! without a login or a download. A device the runtime masters (one with an I/O task) is read
+//! through the runtime instead while logged in ([`source_of`], `docs/modbus-master.md` §9.2).
 
 use std::collections::HashMap;
 use std::sync::{Arc, mpsc};
 use std::time::Duration;
 
 use online::device::Device;
-use project_model::ModbusDevice;
+use project_model::{ModbusDevice, ModbusLink};
 use tokio::sync::mpsc as async_mpsc;
 
 use super::{LiveValue, Waker};
+use crate::modbus_devices::{ConnectError, channel_index, polled_bindings};
 use crate::studio::i18n::{Language, Text};
 use crate::value_text::{describe_elementary, hex};
 
@@ -74,43 +76,101 @@ pub struct DeviceForce {
     pub value: String,
 }
 
-/// Where a variable path is bound on a device: the device and the channel index.
-pub fn binding_of<'d>(
-    devices: &'d [ModbusDevice],
-    path: &str,
-) -> Option<(&'d ModbusDevice, usize)> {
+/// Who serves the variables bound to a Modbus device: read, written, forced and traced
+/// (`docs/modbus-master.md` §9.2).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum DeviceSource {
+    /// The studio's own poll: a studio device (no I/O task) over TCP, logged in or not, or a
+    /// runtime device over TCP while not logged in.
+    StudioPoll,
+    /// The runtime, as the program variables they are: a device with an I/O task while logged
+    /// in. The studio never polls such a device then, so it does not get two masters.
+    Runtime,
+    /// Nobody: a device on a serial port while not logged in. Only the runtime reaches a serial
+    /// line; the value shows once logged in.
+    RuntimeWhenLoggedIn,
+}
+
+/// Who serves the variables bound to `device`, given whether the studio is logged in to a
+/// runtime. The one decision every reader of device-bound variables follows: the watch list,
+/// inline values, writes, forces and traces.
+pub fn source_of(device: &ModbusDevice, logged_in: bool) -> DeviceSource {
+    match (&device.link, logged_in) {
+        (ModbusLink::Rtu { .. }, false) => DeviceSource::RuntimeWhenLoggedIn,
+        // An RTU device without a task is a project problem the build refuses; its variables
+        // are still the program's while logged in.
+        (ModbusLink::Rtu { .. }, true) => DeviceSource::Runtime,
+        (ModbusLink::Tcp { .. }, true) if device.is_runtime_device() => DeviceSource::Runtime,
+        (ModbusLink::Tcp { .. }, _) => DeviceSource::StudioPoll,
+    }
+}
+
+/// How the studio reaches a variable bound to a Modbus device.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Bound<'d> {
+    /// The studio polls it: the device and the channel's index among
+    /// [`crate::modbus_devices::channels_of`].
+    Polled(&'d ModbusDevice, usize),
+    /// The studio would poll the device, but the binding holds `count` values, which its poll
+    /// does not read (see [`crate::modbus_devices::polled_bindings`]).
+    SeveralValues(&'d ModbusDevice, u16),
+    /// Through the runtime, as any program variable.
+    Runtime,
+    /// Not now: its device is on a serial port and the studio is not logged in.
+    RuntimeWhenLoggedIn,
+}
+
+/// How the studio reaches `path` when it is bound to one of `devices`; `None` for a variable
+/// bound to no device, which only the runtime has.
+pub fn bound<'d>(devices: &'d [ModbusDevice], path: &str, logged_in: bool) -> Option<Bound<'d>> {
     devices.iter().find_map(|device| {
-        device
+        let index = device
             .bindings
             .iter()
-            .position(|binding| binding.variable.eq_ignore_ascii_case(path))
-            .map(|index| (device, index))
+            .position(|binding| binding.variable.eq_ignore_ascii_case(path))?;
+        Some(match source_of(device, logged_in) {
+            DeviceSource::Runtime => Bound::Runtime,
+            DeviceSource::RuntimeWhenLoggedIn => Bound::RuntimeWhenLoggedIn,
+            DeviceSource::StudioPoll => match channel_index(device, index) {
+                Some(channel) => Bound::Polled(device, channel),
+                None => Bound::SeveralValues(device, device.bindings[index].count),
+            },
+        })
     })
 }
 
+/// The devices the studio polls for `paths`: those its own poll serves ([`source_of`]) that
+/// hold one of `paths` on a channel it reads.
+fn devices_to_poll<'d>(
+    devices: &'d [ModbusDevice],
+    paths: &[String],
+    logged_in: bool,
+) -> Vec<&'d ModbusDevice> {
+    devices
+        .iter()
+        .filter(|device| source_of(device, logged_in) == DeviceSource::StudioPoll)
+        .filter(|device| {
+            paths
+                .iter()
+                .any(|path| polled_bindings(device).any(|b| b.variable.eq_ignore_ascii_case(path)))
+        })
+        .collect()
+}
+
 impl DeviceLinks {
-    /// Polls exactly the devices that hold one of `paths`, starting and stopping tasks on
-    /// `handle` as needed.
+    /// Polls exactly the devices the studio serves ([`source_of`]) that hold one of `paths`,
+    /// starting and stopping tasks on `handle` as needed; a device's problems are worded in
+    /// `language`.
     pub fn keep(
         &mut self,
         handle: &tokio::runtime::Handle,
         devices: &[ModbusDevice],
         paths: &[String],
+        logged_in: bool,
         wake: &Waker,
+        language: Language,
     ) {
-        // The studio polls TCP devices only: the runtime polls serial lines.
-        let wanted: Vec<&ModbusDevice> = devices
-            .iter()
-            .filter(|device| matches!(device.link, project_model::ModbusLink::Tcp { .. }))
-            .filter(|device| {
-                paths.iter().any(|path| {
-                    device
-                        .bindings
-                        .iter()
-                        .any(|b| b.variable.eq_ignore_ascii_case(path))
-                })
-            })
-            .collect();
+        let wanted = devices_to_poll(devices, paths, logged_in);
         self.links.retain(|name, link| {
             wanted
                 .iter()
@@ -118,7 +178,7 @@ impl DeviceLinks {
         });
         for device in wanted {
             if !self.links.contains_key(&device.name) {
-                let link = start(handle, device.clone(), Arc::clone(wake));
+                let link = start(handle, device.clone(), Arc::clone(wake), language);
                 self.links.insert(device.name.clone(), link);
             }
         }
@@ -164,13 +224,8 @@ impl DeviceLinks {
         }
     }
 
-    /// The last value of a device-bound path, or why there is none.
-    pub fn value(
-        &self,
-        devices: &[ModbusDevice],
-        path: &str,
-    ) -> Option<Result<&LiveValue, String>> {
-        let (device, index) = binding_of(devices, path)?;
+    /// The last value of channel `index` of a polled `device`, or why there is none.
+    pub fn value(&self, device: &ModbusDevice, index: usize) -> Option<Result<&LiveValue, String>> {
         let link = self.links.get(&device.name)?;
         if let Some(problem) = &link.problem {
             return Some(Err(format!("{}: {problem}", device.name)));
@@ -178,17 +233,15 @@ impl DeviceLinks {
         link.values.get(index).and_then(Option::as_ref).map(Ok)
     }
 
-    /// Sends a write or force of a device-bound path's channel.
+    /// Sends a write or force of channel `index` of a polled `device`.
     pub fn send(
         &mut self,
-        devices: &[ModbusDevice],
-        path: &str,
+        device: &ModbusDevice,
+        index: usize,
         bytes: Vec<u8>,
         force: bool,
         language: Language,
     ) -> Result<(), String> {
-        let (device, index) = binding_of(devices, path)
-            .ok_or_else(|| Text::BoundToNoDevice.get(language).replace("{path}", path))?;
         let link = self
             .links
             .get(&device.name)
@@ -253,10 +306,8 @@ impl DeviceLinks {
         let mut out = Vec::new();
         for (name, link) in &self.links {
             for &channel in &link.forced {
-                let path = link
-                    .config
-                    .bindings
-                    .get(channel)
+                let path = polled_bindings(&link.config)
+                    .nth(channel)
                     .map(|b| b.variable.clone())
                     .unwrap_or_default();
                 let value = link
@@ -279,8 +330,13 @@ impl DeviceLinks {
 }
 
 /// Starts the task that connects to a device and polls it, retrying once a second when it is
-/// away.
-fn start(handle: &tokio::runtime::Handle, config: ModbusDevice, wake: Waker) -> DeviceLink {
+/// away; a failed connection is worded in `language`.
+fn start(
+    handle: &tokio::runtime::Handle,
+    config: ModbusDevice,
+    wake: Waker,
+    language: Language,
+) -> DeviceLink {
     let (commands, mut command_rx) = async_mpsc::channel::<DeviceCommand>(32);
     let (event_tx, events) = mpsc::channel();
     let device = config.clone();
@@ -295,7 +351,7 @@ fn start(handle: &tokio::runtime::Handle, config: ModbusDevice, wake: Waker) -> 
             let mut connected: Device = match crate::modbus_devices::connect(&device).await {
                 Ok(connected) => connected,
                 Err(error) => {
-                    if !report(DeviceEvent::Problem(error.to_string())) {
+                    if !report(DeviceEvent::Problem(connect_problem(&error, language))) {
                         return;
                     }
                     tokio::time::sleep(Duration::from_secs(1)).await;
@@ -365,6 +421,21 @@ fn start(handle: &tokio::runtime::Handle, config: ModbusDevice, wake: Waker) -> 
     }
 }
 
+/// Why the studio could not connect to a device, in `language`.
+fn connect_problem(error: &ConnectError, language: Language) -> String {
+    match error {
+        ConnectError::OnSerialPort(device) => {
+            Text::DeviceOnSerialPort.fill(language, &[("device", device)])
+        }
+        ConnectError::NotAnAddress { device, address } => {
+            Text::DeviceNotAnAddress.fill(language, &[("device", device), ("address", address)])
+        }
+        // The connection's own errors come from the `online` crate, in English, as every
+        // other transport error the studio shows.
+        ConnectError::Online(error) => error.to_string(),
+    }
+}
+
 /// Why a device cannot be written or traced: nothing polls it.
 fn not_polled(device: &str, language: Language) -> String {
     Text::DeviceNotPolled
@@ -375,4 +446,125 @@ fn not_polled(device: &str, language: Language) -> String {
 /// Why a device command was refused: the device's queue is full.
 fn busy(device: &str, language: Language) -> String {
     Text::DeviceBusy.get(language).replace("{device}", device)
+}
+
+#[cfg(test)]
+mod tests {
+    use project_model::{ModbusBinding, ModbusDataType, ModbusTable};
+
+    use super::*;
+
+    /// A device named `name` with one INT channel bound to each of `variables`.
+    fn device(name: &str, variables: &[&str]) -> ModbusDevice {
+        ModbusDevice {
+            bindings: variables
+                .iter()
+                .zip(0..)
+                .map(|(variable, address)| {
+                    ModbusBinding::new(
+                        *variable,
+                        ModbusTable::HoldingRegister,
+                        address,
+                        ModbusDataType::Int16,
+                    )
+                })
+                .collect(),
+            ..ModbusDevice::tcp(name, "127.0.0.1", 502)
+        }
+    }
+
+    fn with_task(mut device: ModbusDevice) -> ModbusDevice {
+        device.task = Some("MainTask".into());
+        device
+    }
+
+    fn on_serial_port(mut device: ModbusDevice) -> ModbusDevice {
+        device.link = ModbusLink::Rtu {
+            serial_port: "RS485".into(),
+        };
+        device
+    }
+
+    #[test]
+    fn the_source_follows_the_task_the_link_and_the_login() {
+        let studio = device("Drive", &[]);
+        let runtime = with_task(device("Drive", &[]));
+        let rtu = on_serial_port(with_task(device("Meter", &[])));
+        assert_eq!(source_of(&studio, false), DeviceSource::StudioPoll);
+        assert_eq!(source_of(&studio, true), DeviceSource::StudioPoll);
+        assert_eq!(source_of(&runtime, false), DeviceSource::StudioPoll);
+        assert_eq!(source_of(&runtime, true), DeviceSource::Runtime);
+        assert_eq!(source_of(&rtu, false), DeviceSource::RuntimeWhenLoggedIn);
+        assert_eq!(source_of(&rtu, true), DeviceSource::Runtime);
+    }
+
+    #[test]
+    fn a_path_is_bound_as_its_device_s_source_says() {
+        let mut island = device("Island", &["GVL.iFirst", "GVL.aWords", "GVL.iLast"]);
+        island.bindings[1].count = 8;
+        let devices = [
+            island,
+            with_task(device("Drive", &["GVL.rSpeed"])),
+            on_serial_port(with_task(device("Meter", &["GVL.rPower"]))),
+        ];
+        let island = &devices[0];
+        assert_eq!(
+            bound(&devices, "gvl.ilast", false),
+            Some(Bound::Polled(island, 1))
+        );
+        assert_eq!(
+            bound(&devices, "GVL.aWords", true),
+            Some(Bound::SeveralValues(island, 8))
+        );
+        assert_eq!(
+            bound(&devices, "GVL.rSpeed", false),
+            Some(Bound::Polled(&devices[1], 0))
+        );
+        assert_eq!(bound(&devices, "GVL.rSpeed", true), Some(Bound::Runtime));
+        assert_eq!(
+            bound(&devices, "GVL.rPower", false),
+            Some(Bound::RuntimeWhenLoggedIn)
+        );
+        assert_eq!(bound(&devices, "GVL.rPower", true), Some(Bound::Runtime));
+        assert_eq!(bound(&devices, "Main.iCount", false), None);
+    }
+
+    #[test]
+    fn a_runtime_device_is_not_polled_while_logged_in_nor_an_rtu_device_ever() {
+        let devices = [
+            device("Island", &["GVL.iFirst", "GVL.aWords"]),
+            with_task(device("Drive", &["GVL.rSpeed"])),
+            on_serial_port(with_task(device("Meter", &["GVL.rPower"]))),
+        ];
+        let paths: Vec<String> = ["gvl.ifirst", "GVL.rSpeed", "GVL.rPower"]
+            .map(String::from)
+            .to_vec();
+        let names = |logged_in| -> Vec<&str> {
+            devices_to_poll(&devices, &paths, logged_in)
+                .iter()
+                .map(|device| device.name.as_str())
+                .collect()
+        };
+        assert_eq!(names(false), ["Island", "Drive"]);
+        assert_eq!(names(true), ["Island"]);
+        let mut only_array = devices[0].clone();
+        only_array.bindings[1].count = 8;
+        let watched = vec!["GVL.aWords".to_owned()];
+        assert!(devices_to_poll(&[only_array], &watched, false).is_empty());
+    }
+
+    #[test]
+    fn a_connection_refusal_is_worded_in_the_user_s_language() {
+        let error = ConnectError::OnSerialPort("Meter".into());
+        assert_eq!(
+            connect_problem(&error, Language::English),
+            "device Meter is on a serial port, which only the runtime polls"
+        );
+        assert!(connect_problem(&error, Language::SimplifiedChinese).contains("串口"));
+        let error = ConnectError::NotAnAddress {
+            device: "Drive".into(),
+            address: "nowhere:502".into(),
+        };
+        assert!(connect_problem(&error, Language::SimplifiedChinese).contains("nowhere:502"));
+    }
 }

@@ -24,8 +24,14 @@ impl Online {
                         .trace
                         .variables()
                         .iter()
-                        .filter_map(|(path, _)| devices::binding_of(&self.project_devices, path))
-                        .map(|(_, index)| index)
+                        // The trace was recorded by the studio's own poll, which serves the
+                        // devices it polls as when not logged in (`devices::source_of`).
+                        .filter_map(|(path, _)| {
+                            match devices::bound(&self.project_devices, path, false) {
+                                Some(devices::Bound::Polled(_, index)) => Some(index),
+                                _ => None,
+                            }
+                        })
                         .collect();
                     let samples = snapshots
                         .into_iter()

@@ -29,6 +29,7 @@ use serde::{Deserialize, Serialize};
 
 use super::i18n::{Language, LoginText, Text};
 use background::Background;
+pub use devices::{Bound, bound};
 use link::Link;
 pub use login_choice::{ChangeKind, ChangeOffer, ChangeRefusal, LoginChoice, grouped};
 use simulator::{Simulator, SimulatorError};
@@ -502,15 +503,24 @@ impl Online {
         if devices != self.project_devices.as_slice() {
             self.project_devices = devices.to_vec();
         }
-        let on_device = |path: &String| devices::binding_of(devices, path).is_some();
-        // Devices are polled only while one of their variables is watched.
+        let logged_in = self.is_logged_in();
+        let on_device =
+            |path: &String| matches!(bound(devices, path, logged_in), Some(Bound::Polled(..)));
+        // Devices are polled only while one of their variables is watched, and only those the
+        // studio serves (`devices::source_of`): never one the runtime masters while logged in.
         let needs_devices = paths.iter().any(on_device) || !self.devices.is_empty();
         if needs_devices
             && self.start_background()
             && let (Some(background), Some(waker)) = (&self.background, &self.waker)
         {
-            self.devices
-                .keep(background.handle(), devices, &paths, waker);
+            self.devices.keep(
+                background.handle(),
+                devices,
+                &paths,
+                logged_in,
+                waker,
+                self.language,
+            );
         }
         // A device-bound variable is read from the target too: the program computes with its
         // own copy, which is what a diagram's power flow and values must show.
@@ -525,34 +535,56 @@ impl Online {
         self.values.get(path)
     }
 
-    /// The last value of a watched variable, from its Modbus device when it is bound to one.
+    /// The last value of a watched variable: from its Modbus device when the studio polls it,
+    /// else the runtime's (a runtime device's variable while logged in is a program variable).
     pub fn value(&self, path: &str) -> Option<&LiveValue> {
-        if self.is_device_bound(path) {
+        match self.bound(path) {
             // The device's own value, never the program's copy read beside it.
-            return self
-                .devices
-                .value(&self.project_devices, path)
-                .and_then(Result::ok);
+            Some(Bound::Polled(device, channel)) => {
+                self.devices.value(device, channel).and_then(Result::ok)
+            }
+            Some(Bound::SeveralValues(..) | Bound::RuntimeWhenLoggedIn) => None,
+            Some(Bound::Runtime) | None => self.values.get(path),
         }
-        self.values.get(path)
     }
 
-    /// Why a watched variable has no value: unknown on the target, or its device unreachable.
+    /// Why a watched variable has no value: unknown on the target, its device unreachable, or a
+    /// channel of several values, which the studio's poll does not read.
     pub fn problem(&self, path: &str) -> Option<String> {
-        if devices::binding_of(&self.project_devices, path).is_some() {
-            return match self.devices.value(&self.project_devices, path) {
+        match self.bound(path) {
+            Some(Bound::Polled(device, channel)) => match self.devices.value(device, channel) {
                 Some(Err(problem)) => Some(problem),
                 _ => None,
-            };
-        }
-        match self.resolved.get(path) {
-            Some(Err(reason)) => Some(reason.clone()),
-            _ => None,
+            },
+            Some(Bound::SeveralValues(_, count)) => Some(self.several_values(path, count)),
+            Some(Bound::RuntimeWhenLoggedIn) => None,
+            Some(Bound::Runtime) | None => match self.resolved.get(path) {
+                Some(Err(reason)) => Some(reason.clone()),
+                _ => None,
+            },
         }
     }
 
-    /// Whether a path is bound to a Modbus device of the project.
-    pub fn is_device_bound(&self, path: &str) -> bool {
-        devices::binding_of(&self.project_devices, path).is_some()
+    /// How the studio reaches a path bound to a Modbus device of the project now; `None` for a
+    /// path bound to no device.
+    pub fn bound(&self, path: &str) -> Option<Bound<'_>> {
+        bound(&self.project_devices, path, self.is_logged_in())
+    }
+
+    /// Whether the studio polls a path's device itself, so it is read, written and traced
+    /// without a login.
+    pub fn is_polled_by_studio(&self, path: &str) -> bool {
+        matches!(
+            self.bound(path),
+            Some(Bound::Polled(..) | Bound::SeveralValues(..))
+        )
+    }
+
+    /// Why the studio does not read `path`, bound to a channel of `count` values.
+    fn several_values(&self, path: &str, count: u16) -> String {
+        Text::DeviceArrayChannel.fill(
+            self.language,
+            &[("path", path), ("count", &count.to_string())],
+        )
     }
 }

@@ -5,18 +5,18 @@ use std::time::Duration;
 use online::session::Command;
 use online::{Place, Resolved};
 
-use super::Online;
-use super::devices;
+use super::{Bound, Online};
 use crate::studio::i18n::Text;
 
 impl Online {
     /// Configures and arms a trace of `config` on the target, or, when its variables are the
-    /// channels of one Modbus device, records it by polling that device.
+    /// channels of one Modbus device the studio polls, records it by polling that device (a
+    /// runtime device's variables while logged in are the program's, traced on the target).
     pub fn trace_start(&mut self, config: &project_model::TraceConfig) {
         if config
             .variables
             .iter()
-            .any(|v| self.is_device_bound(&v.path))
+            .any(|v| self.is_polled_by_studio(&v.path))
         {
             if let Err(reason) = self.device_trace_start(config) {
                 self.error(format!("{}: {reason}", self.trace_named(&config.name)));
@@ -42,11 +42,17 @@ impl Online {
         let mut device_name = None;
         let mut variables = Vec::new();
         for variable in &config.variables {
-            let (device, index) = devices::binding_of(&self.project_devices, &variable.path)
-                .ok_or_else(|| {
-                    self.text(Text::NotBoundToDevice)
-                        .replace("{path}", &variable.path)
-                })?;
+            let (device, index) = match self.bound(&variable.path) {
+                Some(Bound::Polled(device, index)) => (device, index),
+                Some(Bound::SeveralValues(_, count)) => {
+                    return Err(self.several_values(&variable.path, count));
+                }
+                _ => {
+                    return Err(self
+                        .text(Text::NotBoundToDevice)
+                        .replace("{path}", &variable.path));
+                }
+            };
             if device_name.get_or_insert_with(|| device.name.clone()) != &device.name {
                 return Err(self.text(Text::DifferentDevices).to_owned());
             }

@@ -3,7 +3,7 @@
 use online::Place;
 use online::session::Command;
 
-use super::{ForceSource, ForcedValue, Online, Refusal, devices};
+use super::{Bound, ForceSource, ForcedValue, Online, Refusal, devices};
 use crate::studio::error_texts::value_error_text;
 use crate::studio::i18n::Text;
 use crate::value_text::{describe_place, show};
@@ -13,7 +13,7 @@ use crate::value_text::{describe_place, show};
 struct Encoded {
     /// Values for the controller, by place.
     target: Vec<(Place, Vec<u8>)>,
-    /// Values for Modbus device channels, by bound path.
+    /// Values for the channels of the Modbus devices the studio polls, by bound path.
     devices: Vec<(String, Vec<u8>)>,
     /// Paths for the controller while logged out.
     logged_out: Vec<String>,
@@ -21,14 +21,19 @@ struct Encoded {
 
 impl Online {
     /// Turns typed values into bytes of their variables' types: for the controller by the
-    /// places it resolved, for Modbus devices by their channels. Values for the controller
-    /// are left out while logged out (`send` refuses them). Each failure names the path and
-    /// the reason; nothing is sent when any value is refused.
+    /// places it resolved, for the Modbus devices the studio polls by their channels (a
+    /// runtime device's variable while logged in is the program's, written on the controller).
+    /// Values for the controller are left out while logged out (`send` refuses them). Each
+    /// failure names the path and the reason; nothing is sent when any value is refused.
     fn encode(&self, values: &[(String, String)]) -> Result<Encoded, Vec<Refusal>> {
         let mut encoded = Encoded::default();
         let mut refused = Vec::new();
         for (path, text) in values {
-            if let Some((device, index)) = devices::binding_of(&self.project_devices, path) {
+            if let Some(Bound::SeveralValues(_, count)) = self.bound(path) {
+                refused.push((path.clone(), self.several_values(path, count)));
+                continue;
+            }
+            if let Some(Bound::Polled(device, index)) = self.bound(path) {
                 let channels = crate::modbus_devices::channels_of(device);
                 let Some(channel) = channels.get(index) else {
                     continue;
@@ -98,10 +103,16 @@ impl Online {
             .into_iter()
             .map(|path| (path, self.text(Text::LogInToWrite).to_owned()))
             .collect();
+        let logged_in = self.is_logged_in();
         for (path, bytes) in encoded.devices {
-            if let Err(reason) =
-                self.devices
-                    .send(&self.project_devices, &path, bytes, force, self.language)
+            let Some(Bound::Polled(device, index)) =
+                devices::bound(&self.project_devices, &path, logged_in)
+            else {
+                continue;
+            };
+            if let Err(reason) = self
+                .devices
+                .send(device, index, bytes, force, self.language)
             {
                 refused.push((path, reason));
             }

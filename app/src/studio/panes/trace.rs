@@ -271,11 +271,12 @@ pub(crate) fn trace_ui(
             })
             .response
             .labelled_by(label.id);
-        // A trace of a Modbus device's channels records by polling, without a login.
+        // A trace of the channels of a Modbus device the studio polls records by polling,
+        // without a login.
         let on_device = config
             .variables
             .iter()
-            .any(|v| view.online.is_device_bound(&v.path));
+            .any(|v| view.online.is_polled_by_studio(&v.path));
         let can_start = online || (on_device && view.online.can_write());
         if ui
             .add_enabled(can_start, egui::Button::new(Text::StartTrace.get(language)))

@@ -8,6 +8,7 @@ use project_model::{Edit, Object, WatchEntry, WatchList};
 
 use crate::studio::command::{Command, Commands};
 use crate::studio::i18n::Text;
+use crate::studio::online::Bound;
 use crate::studio::session::Session;
 use crate::studio::theme;
 use crate::studio::view::StudioView;
@@ -217,7 +218,13 @@ fn value_cell(view: StudioView<'_>, ui: &mut Ui, path: &str) {
         ui.label(RichText::new(problem).color(ui.visuals().error_fg_color));
         return;
     }
-    if !view.online.is_online() && !view.online.is_device_bound(path) {
+    if matches!(view.online.bound(path), Some(Bound::RuntimeWhenLoggedIn)) {
+        // A device on a serial port: only the runtime reaches it.
+        ui.label(RichText::new("—").weak())
+            .on_hover_text(Text::ReadThroughRuntime.get(language));
+        return;
+    }
+    if !view.online.is_online() && !view.online.is_polled_by_studio(path) {
         ui.label(RichText::new("—").weak())
             .on_hover_text(Text::NotOnline.get(language));
         return;

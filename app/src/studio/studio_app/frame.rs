@@ -69,7 +69,7 @@ impl Studio {
             inline: self.panes.texts.inline.paths().cloned().collect(),
             cams: self.panes.cams.take_live_paths(),
         };
-        let watched = watched_paths(sources, devices);
+        let watched = watched_paths(sources, devices, self.shared.online.is_logged_in());
         self.shared.online.set_watch(watched, devices);
     }
 
