@@ -377,6 +377,54 @@ fn a_project_s_own_status_type_must_have_the_library_s_members() {
     );
 }
 
+/// The E0145 findings of a device whose status is `GVL.stDrive`, with `declarations` before
+/// `SOURCE`.
+fn status_findings(declarations: &str) -> Vec<String> {
+    let source = format!("{declarations}\n{SOURCE}");
+    let mut device = device("BeltDrive", Vec::new());
+    device.status = Some("GVL.stDrive".into());
+    findings(&project_from(&source, vec![device]))
+        .into_iter()
+        .filter(|finding| finding.starts_with("E0145"))
+        .collect()
+}
+
+#[test]
+fn a_project_s_own_error_codes_must_keep_the_status_layout() {
+    assert_eq!(
+        status_findings("TYPE MB_ErrorCodes : (A, B); END_TYPE"),
+        [
+            "E0145 BeltDrive: Modbus device 'BeltDrive', status (GVL.stDrive): the project's MB_ErrorCodes has the base type INT (the default), which makes the member eLastError another size than the runtime writes: the project's MB_ErrorCodes must have the base type USINT"
+        ]
+    );
+    assert_eq!(
+        status_findings("TYPE MB_ErrorCodes : (A, B) UDINT; END_TYPE"),
+        [
+            "E0145 BeltDrive: Modbus device 'BeltDrive', status (GVL.stDrive): the project's MB_ErrorCodes has the base type UDINT, which makes the member eLastError another size than the runtime writes: the project's MB_ErrorCodes must have the base type USINT"
+        ]
+    );
+    // A one-byte base keeps eLastError at its offset, as the runtime reads it.
+    assert_eq!(
+        status_findings("TYPE MB_ErrorCodes : (A, B) SINT; END_TYPE"),
+        Vec::<String>::new()
+    );
+}
+
+#[test]
+fn a_project_s_own_status_type_must_keep_each_member_s_size() {
+    let declaration = "TYPE MODBUS_DEVICE_STATUS :\nSTRUCT\n    xConnected : BOOL;\n    xError : BOOL;\n    eLastError : MB_ErrorCodes;\n    byLastException : BYTE;\n    udiConsecutiveErrors : UDINT;\n    udiRequests : UDINT;\n    udiErrors : UDINT;\n    udiRounds : UINT;\n    udiOverruns : UDINT;\n    ltLastResponseTime : LTIME;\nEND_STRUCT\nEND_TYPE";
+    assert_eq!(
+        status_findings(declaration),
+        [
+            "E0145 BeltDrive: Modbus device 'BeltDrive', status (GVL.stDrive): the project's MODBUS_DEVICE_STATUS declares the member udiRounds as UINT, which the runtime cannot write: declare it as UDINT"
+        ]
+    );
+    assert_eq!(
+        status_findings(&declaration.replace("udiRounds : UINT", "udiRounds : UDINT")),
+        Vec::<String>::new()
+    );
+}
+
 #[test]
 fn w0015_finds_the_program_writing_a_read_channel_s_whole_variable() {
     assert_eq!(
