@@ -16,6 +16,7 @@ use project_model::{
 };
 
 use super::ProjectDiagnostic;
+use super::address::parse_address;
 use super::scope::Globals;
 use super::ty::Type;
 use crate::diagnostic::{Code, Diagnostic};
@@ -353,6 +354,20 @@ fn check_channel<'p>(
         if let Some(misfit) = channel_misfit(&bound.ty, binding) {
             let message = format!("{prefix}: {misfit}");
             found.push(finding(name, Code::ModbusChannelType, message));
+        } else if binding.count > 1
+            && let Some(address) = bound.root.address.as_deref()
+            && let Ok(Some(located)) = parse_address(address)
+            && located.size_bits == 1
+        {
+            // The runtime copies a symbol at a bit address as that one bit, so the other
+            // values of an array there would be lost.
+            let message = format!(
+                "{prefix}: the variable '{}' is located at the bit address {}, where the runtime copies one bit, but the channel holds {} values: remove the AT address, or bind a variable of its own to each bit",
+                binding.variable.trim(),
+                address.trim(),
+                binding.count
+            );
+            found.push(finding(name, Code::ModbusChannelType, message));
         }
         if reads {
             filled.push(filled_by(
@@ -406,6 +421,9 @@ fn bind<'p>(
         Ok(bound) => return Some(bound),
         Err(Unbound::NoVariable) => format!(
             "{words} '{path}' names no variable of the project: write the path of a global or program variable, such as GVL_IO.rSpeed"
+        ),
+        Err(Unbound::StaticElsewhere(symbol)) => format!(
+            "{words} '{path}' names a VAR_STAT, which all instances share under the name of the function block declaring it: bind '{symbol}' instead"
         ),
         Err(Unbound::NoFixedPlace(what)) => format!(
             "{words} '{path}' is {what}: bind a global variable or a program's VAR, VAR_INPUT or VAR_OUTPUT"

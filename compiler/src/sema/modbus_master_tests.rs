@@ -208,6 +208,60 @@ fn e0140_names_paths_the_runtime_cannot_copy() {
 }
 
 #[test]
+fn e0140_refuses_a_static_variable_reached_through_an_instance_or_a_derived_block() {
+    let source = format!(
+        "FUNCTION_BLOCK FB_Base\nVAR_STAT\n    iShared : INT;\nEND_VAR\nEND_FUNCTION_BLOCK\n\
+         FUNCTION_BLOCK FB_Derived EXTENDS FB_Base\nEND_FUNCTION_BLOCK\n{}",
+        SOURCE.replace("iUnused : INT;", "iUnused : INT;\n    fbX : FB_Derived;")
+    );
+    let device = device(
+        "BeltDrive",
+        vec![
+            read("Main.fbX.iShared", 0, ModbusDataType::Int16),
+            read("FB_Derived.iShared", 1, ModbusDataType::Int16),
+            read("FB_Base.iShared", 2, ModbusDataType::Int16),
+        ],
+    );
+    let found: Vec<String> = findings(&project_from(&source, vec![device]))
+        .into_iter()
+        .filter(|finding| finding.starts_with("E0140"))
+        .collect();
+    assert_eq!(
+        found,
+        [
+            "E0140 BeltDrive: Modbus device 'BeltDrive', channel 1 (Main.fbX.iShared): the variable 'Main.fbX.iShared' names a VAR_STAT, which all instances share under the name of the function block declaring it: bind 'FB_Base.iShared' instead",
+            "E0140 BeltDrive: Modbus device 'BeltDrive', channel 2 (FB_Derived.iShared): the variable 'FB_Derived.iShared' names a VAR_STAT, which all instances share under the name of the function block declaring it: bind 'FB_Base.iShared' instead",
+        ]
+    );
+}
+
+#[test]
+fn e0141_refuses_several_values_at_a_bit_address() {
+    let source = SOURCE.replace(
+        "wRaw : WORD;",
+        "wRaw : WORD;\n    axBits AT %IX0.0 : ARRAY[0..7] OF BOOL;\n    xOne AT %IX1.0 : BOOL;",
+    );
+    let coils = |variable: &str, address: u16, count: u16| ModbusBinding {
+        count,
+        ..ModbusBinding::new(variable, ModbusTable::Coil, address, ModbusDataType::Bool)
+    };
+    let device = device(
+        "BeltDrive",
+        vec![coils("GVL.axBits", 0, 8), coils("GVL.xOne", 8, 1)],
+    );
+    let found: Vec<String> = findings(&project_from(&source, vec![device]))
+        .into_iter()
+        .filter(|finding| finding.starts_with("E0141"))
+        .collect();
+    assert_eq!(
+        found,
+        [
+            "E0141 BeltDrive: Modbus device 'BeltDrive', channel 1 (GVL.axBits): the variable 'GVL.axBits' is located at the bit address %IX0.0, where the runtime copies one bit, but the channel holds 8 values: remove the AT address, or bind a variable of its own to each bit"
+        ]
+    );
+}
+
+#[test]
 fn e0141_says_which_declaration_fits_the_data_type_and_count() {
     let mut temps = read("GVL.aiTemps", 0, ModbusDataType::Int16);
     temps.count = 8;
