@@ -23,6 +23,7 @@ use crate::diagnostic::{Code, Diagnostic};
 use crate::elementary::Elementary;
 use crate::ide::variable_type::{BoundPath, Unbound, bound_path, channel_misfit};
 use crate::library::MODBUS_DEVICE_STATUS;
+use program_image::modbus_master::{MAX_CHANNELS_PER_DEVICE, MAX_DEVICES, MAX_SERIAL_PORTS};
 
 /// What a bound path is to its device, for the words of a finding.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -91,6 +92,18 @@ pub(super) fn check_modbus_master(
         return found;
     }
     check_serial_ports(project, &devices, &mut found);
+    if let Some((_, first_too_many)) = devices.get(MAX_DEVICES) {
+        let message = format!(
+            "Modbus device '{}': the project has {} devices with an I/O task, but the runtime masters at most {MAX_DEVICES}: this and the later ones are too many; master some in the Studio (no task)",
+            first_too_many.name,
+            devices.len()
+        );
+        found.push(finding(
+            &first_too_many.name,
+            Code::ModbusDeviceSetting,
+            message,
+        ));
+    }
     let mut filled = Vec::new();
     for &(index, device) in &devices {
         check_device(project, globals, index, device, &mut filled, &mut found);
@@ -224,6 +237,13 @@ fn check_serial_ports(
             found.push(finding(&port.name, Code::ModbusDeviceSetting, message));
         }
         used.push(index);
+        if used.len() == MAX_SERIAL_PORTS + 1 {
+            let message = format!(
+                "serial port '{}': the project's runtime devices name more than {MAX_SERIAL_PORTS} serial ports, the most the runtime masters: let devices share ports, or move some to the Studio",
+                port.name
+            );
+            found.push(finding(&port.name, Code::ModbusDeviceSetting, message));
+        }
     }
 }
 
@@ -249,6 +269,13 @@ fn check_device<'p>(
             "{device_prefix}: there is no task named '{task_name}' to copy the device's values: choose one of the project's tasks"
         );
         found.push(finding(name, Code::ModbusDeviceSetting, message));
+    }
+    if device.bindings.len() > MAX_CHANNELS_PER_DEVICE {
+        let message = format!(
+            "{device_prefix}: it has {} channels, but the runtime masters at most {MAX_CHANNELS_PER_DEVICE} per device: merge neighbouring channels into longer ones, or split the device",
+            device.bindings.len()
+        );
+        found.push(finding(name, Code::ModbusChannelSetting, message));
     }
     for problem in modbus_device_problems(project, Some(index), device) {
         match channel_row(&problem) {

@@ -322,6 +322,51 @@ fn e0142_finds_two_devices_filling_one_variable_or_a_part_of_it() {
 }
 
 #[test]
+fn e0143_and_e0144_report_a_project_past_the_runtime_s_limits() {
+    let mut devices: Vec<ModbusDevice> = (0..256u16)
+        .map(|number| ModbusDevice {
+            poll_interval_ms: Some(10),
+            task: Some("MainTask".into()),
+            ..ModbusDevice::tcp(&format!("Tcp{number}"), "127.0.0.1", 5000 + number)
+        })
+        .collect();
+    devices[0].bindings = (0..1025u16)
+        .map(|address| {
+            ModbusBinding::new(
+                "GVL.xError",
+                ModbusTable::DiscreteInput,
+                address,
+                ModbusDataType::Bool,
+            )
+        })
+        .collect();
+    let mut project = project(Vec::new());
+    for number in 0..33 {
+        let port = format!("Port{number}");
+        project
+            .serial_ports
+            .push(SerialPort::new(&port, &format!("/dev/ttyS{number}")));
+        devices.push(ModbusDevice {
+            link: ModbusLink::Rtu { serial_port: port },
+            ..device(&format!("Rtu{number}"), Vec::new())
+        });
+    }
+    project.modbus_devices = devices;
+    let found: Vec<String> = findings(&project)
+        .into_iter()
+        .filter(|finding| finding.contains("at most") || finding.contains("the most"))
+        .collect();
+    assert_eq!(
+        found,
+        [
+            "E0143 Port32: serial port 'Port32': the project's runtime devices name more than 32 serial ports, the most the runtime masters: let devices share ports, or move some to the Studio",
+            "E0143 Tcp255: Modbus device 'Tcp255': the project has 289 devices with an I/O task, but the runtime masters at most 255: this and the later ones are too many; master some in the Studio (no task)",
+            "E0144 Tcp0: Modbus device 'Tcp0': it has 1025 channels, but the runtime masters at most 1024 per device: merge neighbouring channels into longer ones, or split the device",
+        ]
+    );
+}
+
+#[test]
 fn e0143_reports_the_task_the_editor_s_device_problems_and_the_serial_ports() {
     let mut tcp = device("BeltDrive", Vec::new());
     tcp.task = Some("FastTask".into());
