@@ -327,7 +327,7 @@ fn e0143_and_e0144_report_a_project_past_the_runtime_s_limits() {
         .map(|number| ModbusDevice {
             poll_interval_ms: Some(10),
             task: Some("MainTask".into()),
-            ..ModbusDevice::tcp(&format!("Tcp{number}"), "127.0.0.1", 5000 + number)
+            ..ModbusDevice::tcp(format!("Tcp{number}"), "127.0.0.1", 5000 + number)
         })
         .collect();
     devices[0].bindings = (0..1025u16)
@@ -345,7 +345,7 @@ fn e0143_and_e0144_report_a_project_past_the_runtime_s_limits() {
         let port = format!("Port{number}");
         project
             .serial_ports
-            .push(SerialPort::new(&port, &format!("/dev/ttyS{number}")));
+            .push(SerialPort::new(&port, format!("/dev/ttyS{number}")));
         devices.push(ModbusDevice {
             link: ModbusLink::Rtu { serial_port: port },
             ..device(&format!("Rtu{number}"), Vec::new())
