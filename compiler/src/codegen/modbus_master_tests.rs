@@ -246,3 +246,40 @@ fn the_example_project_builds_without_a_modbus_finding_or_section() {
     let image = compile_project(&project).unwrap();
     assert_eq!(image.modbus_master, None);
 }
+
+#[test]
+fn bit_channels_without_a_function_code_get_the_defaults_1_2_and_15() {
+    let mut project = SourceProject::new(SOURCE).project;
+    project.tasks = vec![task("MainTask", 10_000, "Main")];
+    let bit = |variable: &str, table, address| {
+        ModbusBinding::new(variable, table, address, ModbusDataType::Bool)
+    };
+    let mut send = bit("GVL.xSend", ModbusTable::Coil, 8);
+    send.direction = ChannelDirection::Write;
+    project.modbus_devices = vec![ModbusDevice {
+        task: Some("MainTask".into()),
+        poll_interval_ms: Some(10),
+        bindings: vec![
+            bit("GVL.xPump", ModbusTable::Coil, 0),
+            bit("GVL.xError", ModbusTable::DiscreteInput, 0),
+            send,
+        ],
+        ..ModbusDevice::tcp("Valves", "127.0.0.1", 5502)
+    }];
+    let image = compile_project(&project).unwrap();
+    let codes: Vec<(String, u8)> = image
+        .modbus_master
+        .iter()
+        .flat_map(|section| &section.devices)
+        .flat_map(|device| &device.channels)
+        .map(|channel| (channel.variable.clone(), channel.function_code))
+        .collect();
+    assert_eq!(
+        codes,
+        [
+            ("GVL.xPump".to_owned(), 1),
+            ("GVL.xError".to_owned(), 2),
+            ("GVL.xSend".to_owned(), 15),
+        ]
+    );
+}

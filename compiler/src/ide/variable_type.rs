@@ -104,6 +104,10 @@ pub(crate) enum Unbound {
     /// It names something without a fixed place between cycles: the words say what, such as
     /// `a VAR_TEMP`.
     NoFixedPlace(&'static str),
+    /// It names a `VAR_STAT` through an instance or through a function block derived from the
+    /// one declaring it: the runtime's symbol of the one shared variable is
+    /// `<declaring POU>.<name>`, the path the finding asks for.
+    StaticElsewhere(String),
 }
 
 /// The declared type of the variable at `path` (`GVL_IO.rSpeed`, `Main.fbConveyor.xRun`, or an
@@ -278,12 +282,19 @@ pub(crate) fn bound_path<'p>(
         Some(GlobalSymbol::Pou(pou)) => {
             let name = segments.get(1).ok_or(Unbound::NoVariable)?;
             let variable = match pou.kind {
-                PouKind::Program => pou_variable(globals, pou, name)?,
+                PouKind::Program => pou_variable(globals, pou, name)?.1,
                 PouKind::FunctionBlock => {
-                    // Only a function block's static variables have a place of their own.
-                    let variable = pou_variable(globals, pou, name)?;
+                    // Only a function block's static variables have a place of their own, under
+                    // the name of the block that declares them.
+                    let (declaring, variable) = pou_variable(globals, pou, name)?;
                     if variable.section != VarSection::VarStat {
                         return Err(Unbound::NoVariable);
+                    }
+                    if !std::ptr::eq(declaring, pou) {
+                        return Err(Unbound::StaticElsewhere(format!(
+                            "{}.{}",
+                            declaring.name, variable.name
+                        )));
                     }
                     variable
                 }
@@ -322,7 +333,14 @@ pub(crate) fn bound_path<'p>(
                 bound.last = None;
             }
             Shape::Pou(pou) if pou.kind == PouKind::FunctionBlock => {
-                let variable = pou_variable(globals, pou, segment)?;
+                let (declaring, variable) = pou_variable(globals, pou, segment)?;
+                // An instance holds no VAR_STAT: all instances share the declaring block's one.
+                if variable.section == VarSection::VarStat {
+                    return Err(Unbound::StaticElsewhere(format!(
+                        "{}.{}",
+                        declaring.name, variable.name
+                    )));
+                }
                 bound.ty = globals.resolve_type(&variable.ty);
                 bound.constant |= variable.constant;
                 bound.last = Some(variable);
@@ -334,12 +352,12 @@ pub(crate) fn bound_path<'p>(
 }
 
 /// The variable `name` of a program or function block (its bases' included) that has a place in
-/// its instance, or why not.
+/// its instance, with the POU declaring it, or why not.
 fn pou_variable<'p>(
     globals: &Globals<'p>,
     pou: &'p project_model::Pou,
     name: &str,
-) -> Result<&'p Variable, Unbound> {
+) -> Result<(&'p project_model::Pou, &'p Variable), Unbound> {
     for current in inheritance_chain(globals, pou) {
         if let Some(variable) = current
             .variables
@@ -356,7 +374,7 @@ fn pou_variable<'p>(
                 VarSection::VarExternal => Err(Unbound::NoFixedPlace(
                     "a VAR_EXTERNAL, a reference to a global variable",
                 )),
-                _ => Ok(variable),
+                _ => Ok((current, variable)),
             };
         }
         if current

@@ -16,12 +16,14 @@ use project_model::{
 };
 
 use super::ProjectDiagnostic;
+use super::address::parse_address;
 use super::scope::Globals;
 use super::ty::Type;
 use crate::diagnostic::{Code, Diagnostic};
 use crate::elementary::Elementary;
 use crate::ide::variable_type::{BoundPath, Unbound, bound_path, channel_misfit};
 use crate::library::MODBUS_DEVICE_STATUS;
+use program_image::modbus_master::{MAX_CHANNELS_PER_DEVICE, MAX_DEVICES, MAX_SERIAL_PORTS};
 
 /// What a bound path is to its device, for the words of a finding.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -90,6 +92,18 @@ pub(super) fn check_modbus_master(
         return found;
     }
     check_serial_ports(project, &devices, &mut found);
+    if let Some((_, first_too_many)) = devices.get(MAX_DEVICES) {
+        let message = format!(
+            "Modbus device '{}': the project has {} devices with an I/O task, but the runtime masters at most {MAX_DEVICES}: this and the later ones are too many; master some in the Studio (no task)",
+            first_too_many.name,
+            devices.len()
+        );
+        found.push(finding(
+            &first_too_many.name,
+            Code::ModbusDeviceSetting,
+            message,
+        ));
+    }
     let mut filled = Vec::new();
     for &(index, device) in &devices {
         check_device(project, globals, index, device, &mut filled, &mut found);
@@ -223,6 +237,13 @@ fn check_serial_ports(
             found.push(finding(&port.name, Code::ModbusDeviceSetting, message));
         }
         used.push(index);
+        if used.len() == MAX_SERIAL_PORTS + 1 {
+            let message = format!(
+                "serial port '{}': the project's runtime devices name more than {MAX_SERIAL_PORTS} serial ports, the most the runtime masters: let devices share ports, or move some to the Studio",
+                port.name
+            );
+            found.push(finding(&port.name, Code::ModbusDeviceSetting, message));
+        }
     }
 }
 
@@ -248,6 +269,13 @@ fn check_device<'p>(
             "{device_prefix}: there is no task named '{task_name}' to copy the device's values: choose one of the project's tasks"
         );
         found.push(finding(name, Code::ModbusDeviceSetting, message));
+    }
+    if device.bindings.len() > MAX_CHANNELS_PER_DEVICE {
+        let message = format!(
+            "{device_prefix}: it has {} channels, but the runtime masters at most {MAX_CHANNELS_PER_DEVICE} per device: merge neighbouring channels into longer ones, or split the device",
+            device.bindings.len()
+        );
+        found.push(finding(name, Code::ModbusChannelSetting, message));
     }
     for problem in modbus_device_problems(project, Some(index), device) {
         match channel_row(&problem) {
@@ -285,6 +313,7 @@ fn check_device<'p>(
                 StatusFit::OwnDeclarationDiffers => Some(format!(
                     "the project declares its own {MODBUS_DEVICE_STATUS}, whose members differ from the Modbus library's, which the runtime writes: remove the project's declaration or give it the library's members"
                 )),
+                StatusFit::MemberMisfit(misfit) => Some(misfit),
             };
             if let Some(misfit) = misfit {
                 let message = format!("{prefix}: {misfit}");
@@ -352,6 +381,20 @@ fn check_channel<'p>(
         if let Some(misfit) = channel_misfit(&bound.ty, binding) {
             let message = format!("{prefix}: {misfit}");
             found.push(finding(name, Code::ModbusChannelType, message));
+        } else if binding.count > 1
+            && let Some(address) = bound.root.address.as_deref()
+            && let Ok(Some(located)) = parse_address(address)
+            && located.size_bits == 1
+        {
+            // The runtime copies a symbol at a bit address as that one bit, so the other
+            // values of an array there would be lost.
+            let message = format!(
+                "{prefix}: the variable '{}' is located at the bit address {}, where the runtime copies one bit, but the channel holds {} values: remove the AT address, or bind a variable of its own to each bit",
+                binding.variable.trim(),
+                address.trim(),
+                binding.count
+            );
+            found.push(finding(name, Code::ModbusChannelType, message));
         }
         if reads {
             filled.push(filled_by(
@@ -406,6 +449,9 @@ fn bind<'p>(
         Err(Unbound::NoVariable) => format!(
             "{words} '{path}' names no variable of the project: write the path of a global or program variable, such as GVL_IO.rSpeed"
         ),
+        Err(Unbound::StaticElsewhere(symbol)) => format!(
+            "{words} '{path}' names a VAR_STAT, which all instances share under the name of the function block declaring it: bind '{symbol}' instead"
+        ),
         Err(Unbound::NoFixedPlace(what)) => format!(
             "{words} '{path}' is {what}: bind a global variable or a program's VAR, VAR_INPUT or VAR_OUTPUT"
         ),
@@ -459,15 +505,24 @@ fn channel_prefix(device: &ModbusDevice, row: usize) -> String {
     )
 }
 
+/// The size in bytes of each member of `MODBUS_DEVICE_STATUS` as the runtime writes it
+/// (`docs/modbus-master.md` §3.1), in the library's member order: with these sizes the
+/// structure's members fall at the spec's offsets and the structure is 32 bytes.
+const STATUS_MEMBER_BYTES: [u32; 10] = [1, 1, 1, 1, 4, 4, 4, 4, 4, 8];
+
 /// Whether a status variable's type is the one the runtime writes.
 enum StatusFit {
     /// The Modbus library's status structure, or a project's own declaration of its name with
-    /// the same members (the runtime finds the members by name and offset).
+    /// the same members whose types resolve to the same sizes (the runtime finds the members by
+    /// name and offset).
     Fits,
     /// Another type.
     OtherType,
     /// A project's own declaration of the name with other members.
     OwnDeclarationDiffers,
+    /// A project's own declaration (of the structure or of a member's type) that makes a member
+    /// another size than the runtime writes: the words say which and how to fix it.
+    MemberMisfit(String),
 }
 
 /// How `ty` fits a status variable.
@@ -491,10 +546,7 @@ fn status_fit(globals: &Globals<'_>, ty: &Type) -> StatusFit {
             } => Some(
                 members
                     .iter()
-                    .map(|member| {
-                        let ty: String = member.ty.split_whitespace().collect();
-                        (member.name.to_lowercase(), ty.to_lowercase())
-                    })
+                    .map(|member| (member.name.clone(), member.ty.clone()))
                     .collect(),
             ),
             _ => None,
@@ -511,11 +563,67 @@ fn status_fit(globals: &Globals<'_>, ty: &Type) -> StatusFit {
     let declared = globals
         .data_type(name)
         .and_then(|data_type| members(&data_type.definition));
-    if expected.is_some() && expected == declared {
-        StatusFit::Fits
-    } else {
-        StatusFit::OwnDeclarationDiffers
+    let (Some(expected), Some(declared)) = (expected, declared) else {
+        return StatusFit::OwnDeclarationDiffers;
+    };
+    let same_names = expected.len() == declared.len()
+        && expected
+            .iter()
+            .zip(&declared)
+            .all(|((expected, _), (declared, _))| expected.eq_ignore_ascii_case(declared));
+    if !same_names {
+        return StatusFit::OwnDeclarationDiffers;
     }
+    // The names match; the runtime also needs each member's size, which a project's own
+    // declaration of a member's type (MB_ErrorCodes without a base) can change.
+    for (((member, library_ty), (_, declared_ty)), bytes) in
+        expected.iter().zip(&declared).zip(STATUS_MEMBER_BYTES)
+    {
+        if let Some(misfit) = member_misfit(globals, member, library_ty, declared_ty, bytes) {
+            return StatusFit::MemberMisfit(misfit);
+        }
+    }
+    StatusFit::Fits
+}
+
+/// Why the status structure's member `member`, declared as `declared_ty`, is not an integer,
+/// bit string, duration or enumeration of `bytes` bytes as the library's `library_ty`.
+fn member_misfit(
+    globals: &Globals<'_>,
+    member: &str,
+    library_ty: &str,
+    declared_ty: &str,
+    bytes: u32,
+) -> Option<String> {
+    let declared_ty = declared_ty.trim();
+    let resolved = globals.resolve_type(declared_ty);
+    let size = |ty: &Type| match ty {
+        Type::Elementary(elementary)
+        | Type::Subrange {
+            base: elementary, ..
+        } => Some(elementary.size_bits() / 8),
+        _ => None,
+    };
+    if let Type::Named(enum_name) = &resolved
+        && let Some(data_type) = globals.data_type(enum_name)
+        && let TypeDefinition::Enum { base, .. } = &data_type.definition
+    {
+        let base_text = base.as_deref().map_or("INT", str::trim);
+        if size(&globals.resolve_type(base_text)) == Some(bytes) {
+            return None;
+        }
+        let default = if base.is_none() { " (the default)" } else { "" };
+        return Some(format!(
+            "the project's {} has the base type {base_text}{default}, which makes the member {member} another size than the runtime writes: the project's {} must have the base type USINT",
+            data_type.name, data_type.name
+        ));
+    }
+    if resolved == Type::Error || size(&resolved) == Some(bytes) {
+        return None;
+    }
+    Some(format!(
+        "the project's {MODBUS_DEVICE_STATUS} declares the member {member} as {declared_ty}, which the runtime cannot write: declare it as {library_ty}"
+    ))
 }
 
 /// The channel a problem of the device editor's checks is about, numbered from 1; `None` for a

@@ -208,6 +208,60 @@ fn e0140_names_paths_the_runtime_cannot_copy() {
 }
 
 #[test]
+fn e0140_refuses_a_static_variable_reached_through_an_instance_or_a_derived_block() {
+    let source = format!(
+        "FUNCTION_BLOCK FB_Base\nVAR_STAT\n    iShared : INT;\nEND_VAR\nEND_FUNCTION_BLOCK\n\
+         FUNCTION_BLOCK FB_Derived EXTENDS FB_Base\nEND_FUNCTION_BLOCK\n{}",
+        SOURCE.replace("iUnused : INT;", "iUnused : INT;\n    fbX : FB_Derived;")
+    );
+    let device = device(
+        "BeltDrive",
+        vec![
+            read("Main.fbX.iShared", 0, ModbusDataType::Int16),
+            read("FB_Derived.iShared", 1, ModbusDataType::Int16),
+            read("FB_Base.iShared", 2, ModbusDataType::Int16),
+        ],
+    );
+    let found: Vec<String> = findings(&project_from(&source, vec![device]))
+        .into_iter()
+        .filter(|finding| finding.starts_with("E0140"))
+        .collect();
+    assert_eq!(
+        found,
+        [
+            "E0140 BeltDrive: Modbus device 'BeltDrive', channel 1 (Main.fbX.iShared): the variable 'Main.fbX.iShared' names a VAR_STAT, which all instances share under the name of the function block declaring it: bind 'FB_Base.iShared' instead",
+            "E0140 BeltDrive: Modbus device 'BeltDrive', channel 2 (FB_Derived.iShared): the variable 'FB_Derived.iShared' names a VAR_STAT, which all instances share under the name of the function block declaring it: bind 'FB_Base.iShared' instead",
+        ]
+    );
+}
+
+#[test]
+fn e0141_refuses_several_values_at_a_bit_address() {
+    let source = SOURCE.replace(
+        "wRaw : WORD;",
+        "wRaw : WORD;\n    axBits AT %IX0.0 : ARRAY[0..7] OF BOOL;\n    xOne AT %IX1.0 : BOOL;",
+    );
+    let coils = |variable: &str, address: u16, count: u16| ModbusBinding {
+        count,
+        ..ModbusBinding::new(variable, ModbusTable::Coil, address, ModbusDataType::Bool)
+    };
+    let device = device(
+        "BeltDrive",
+        vec![coils("GVL.axBits", 0, 8), coils("GVL.xOne", 8, 1)],
+    );
+    let found: Vec<String> = findings(&project_from(&source, vec![device]))
+        .into_iter()
+        .filter(|finding| finding.starts_with("E0141"))
+        .collect();
+    assert_eq!(
+        found,
+        [
+            "E0141 BeltDrive: Modbus device 'BeltDrive', channel 1 (GVL.axBits): the variable 'GVL.axBits' is located at the bit address %IX0.0, where the runtime copies one bit, but the channel holds 8 values: remove the AT address, or bind a variable of its own to each bit"
+        ]
+    );
+}
+
+#[test]
 fn e0141_says_which_declaration_fits_the_data_type_and_count() {
     let mut temps = read("GVL.aiTemps", 0, ModbusDataType::Int16);
     temps.count = 8;
@@ -263,6 +317,51 @@ fn e0142_finds_two_devices_filling_one_variable_or_a_part_of_it() {
             "E0142 Meter: Modbus device 'Meter', channel 1 (GVL.stDrive.xError): the variable 'GVL.stDrive.xError' is also filled by Modbus device 'Meter', status (GVL.stDrive), as its status: bind each channel, status and error flag to a variable of its own",
             "E0142 Meter: Modbus device 'Meter', channel 2 (iIn): the variable 'iIn' is also filled by Modbus device 'BeltDrive', channel 1 (GVL.iIn): bind each channel, status and error flag to a variable of its own",
             "E0142 Meter: Modbus device 'Meter', channel 2 (iIn): the error flag 'gvl.xerror' is also filled by Modbus device 'BeltDrive', channel 1 (GVL.iIn), as its error flag: bind each channel, status and error flag to a variable of its own",
+        ]
+    );
+}
+
+#[test]
+fn e0143_and_e0144_report_a_project_past_the_runtime_s_limits() {
+    let mut devices: Vec<ModbusDevice> = (0..256u16)
+        .map(|number| ModbusDevice {
+            poll_interval_ms: Some(10),
+            task: Some("MainTask".into()),
+            ..ModbusDevice::tcp(format!("Tcp{number}"), "127.0.0.1", 5000 + number)
+        })
+        .collect();
+    devices[0].bindings = (0..1025u16)
+        .map(|address| {
+            ModbusBinding::new(
+                "GVL.xError",
+                ModbusTable::DiscreteInput,
+                address,
+                ModbusDataType::Bool,
+            )
+        })
+        .collect();
+    let mut project = project(Vec::new());
+    for number in 0..33 {
+        let port = format!("Port{number}");
+        project
+            .serial_ports
+            .push(SerialPort::new(&port, format!("/dev/ttyS{number}")));
+        devices.push(ModbusDevice {
+            link: ModbusLink::Rtu { serial_port: port },
+            ..device(&format!("Rtu{number}"), Vec::new())
+        });
+    }
+    project.modbus_devices = devices;
+    let found: Vec<String> = findings(&project)
+        .into_iter()
+        .filter(|finding| finding.contains("at most") || finding.contains("the most"))
+        .collect();
+    assert_eq!(
+        found,
+        [
+            "E0143 Port32: serial port 'Port32': the project's runtime devices name more than 32 serial ports, the most the runtime masters: let devices share ports, or move some to the Studio",
+            "E0143 Tcp255: Modbus device 'Tcp255': the project has 289 devices with an I/O task, but the runtime masters at most 255: this and the later ones are too many; master some in the Studio (no task)",
+            "E0144 Tcp0: Modbus device 'Tcp0': it has 1025 channels, but the runtime masters at most 1024 per device: merge neighbouring channels into longer ones, or split the device",
         ]
     );
 }
@@ -374,6 +473,54 @@ fn a_project_s_own_status_type_must_have_the_library_s_members() {
         [
             "E0145 BeltDrive: Modbus device 'BeltDrive', status (GVL.stDrive): the project declares its own MODBUS_DEVICE_STATUS, whose members differ from the Modbus library's, which the runtime writes: remove the project's declaration or give it the library's members"
         ]
+    );
+}
+
+/// The E0145 findings of a device whose status is `GVL.stDrive`, with `declarations` before
+/// `SOURCE`.
+fn status_findings(declarations: &str) -> Vec<String> {
+    let source = format!("{declarations}\n{SOURCE}");
+    let mut device = device("BeltDrive", Vec::new());
+    device.status = Some("GVL.stDrive".into());
+    findings(&project_from(&source, vec![device]))
+        .into_iter()
+        .filter(|finding| finding.starts_with("E0145"))
+        .collect()
+}
+
+#[test]
+fn a_project_s_own_error_codes_must_keep_the_status_layout() {
+    assert_eq!(
+        status_findings("TYPE MB_ErrorCodes : (A, B); END_TYPE"),
+        [
+            "E0145 BeltDrive: Modbus device 'BeltDrive', status (GVL.stDrive): the project's MB_ErrorCodes has the base type INT (the default), which makes the member eLastError another size than the runtime writes: the project's MB_ErrorCodes must have the base type USINT"
+        ]
+    );
+    assert_eq!(
+        status_findings("TYPE MB_ErrorCodes : (A, B) UDINT; END_TYPE"),
+        [
+            "E0145 BeltDrive: Modbus device 'BeltDrive', status (GVL.stDrive): the project's MB_ErrorCodes has the base type UDINT, which makes the member eLastError another size than the runtime writes: the project's MB_ErrorCodes must have the base type USINT"
+        ]
+    );
+    // A one-byte base keeps eLastError at its offset, as the runtime reads it.
+    assert_eq!(
+        status_findings("TYPE MB_ErrorCodes : (A, B) SINT; END_TYPE"),
+        Vec::<String>::new()
+    );
+}
+
+#[test]
+fn a_project_s_own_status_type_must_keep_each_member_s_size() {
+    let declaration = "TYPE MODBUS_DEVICE_STATUS :\nSTRUCT\n    xConnected : BOOL;\n    xError : BOOL;\n    eLastError : MB_ErrorCodes;\n    byLastException : BYTE;\n    udiConsecutiveErrors : UDINT;\n    udiRequests : UDINT;\n    udiErrors : UDINT;\n    udiRounds : UINT;\n    udiOverruns : UDINT;\n    ltLastResponseTime : LTIME;\nEND_STRUCT\nEND_TYPE";
+    assert_eq!(
+        status_findings(declaration),
+        [
+            "E0145 BeltDrive: Modbus device 'BeltDrive', status (GVL.stDrive): the project's MODBUS_DEVICE_STATUS declares the member udiRounds as UINT, which the runtime cannot write: declare it as UDINT"
+        ]
+    );
+    assert_eq!(
+        status_findings(&declaration.replace("udiRounds : UINT", "udiRounds : UDINT")),
+        Vec::<String>::new()
     );
 }
 

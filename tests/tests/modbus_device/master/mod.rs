@@ -6,6 +6,7 @@ mod coils;
 mod edges;
 mod faults;
 mod online_change;
+mod project;
 mod proxy;
 mod rtu;
 mod scheduler;
