@@ -422,10 +422,14 @@ fn check(path: &Path) -> anyhow::Result<()> {
             ),
             (None, Some(text)) => eprint!("{}", found.diagnostic.render(&shown, text)),
             (declaration, _) => {
-                // A finding in data: point at the line that declares the name, if it is found.
-                let line = declaration
-                    .as_deref()
-                    .and_then(|name| declaration_line(&path.join(&found.file), name));
+                // A finding in data: point at the line that declares the name, if it is found;
+                // for a Modbus channel, at the line of the channel's variable.
+                let line = declaration.as_deref().and_then(|name| {
+                    let file = path.join(&found.file);
+                    modbus_channel(name, &found.diagnostic.message)
+                        .and_then(|channel| modbus_channel_line(&file, name, channel))
+                        .or_else(|| declaration_line(&file, name))
+                });
                 let location = line.map_or(shown.clone(), |line| format!("{shown}:{line}"));
                 eprintln!(
                     "{location}: {}[{}]: {}",
@@ -463,6 +467,54 @@ fn declaration_line(file: &Path, name: &str) -> Option<usize> {
     let needle = format!("name = \"{name}\"");
     let offset = text.find(&needle)?;
     Some(text[..offset].matches('\n').count() + 1)
+}
+
+/// The channel number (from 1) a finding about the Modbus device `device` names, as the build
+/// words it: `Modbus device 'BeltDrive', channel 2 (GVL_Io.aiTemps): …` (`docs/modbus-master.md`
+/// §3).
+fn modbus_channel(device: &str, message: &str) -> Option<usize> {
+    let rest = message.strip_prefix(&format!("Modbus device '{device}', channel "))?;
+    let digits = rest.split(' ').next()?;
+    digits.parse().ok()
+}
+
+/// The 1-based line of the `variable = "…"` key of channel `channel` (from 1) of the Modbus
+/// device `device` in the manifest `file`, as the project files write it: the device's
+/// `[[modbus_device]]` table with its `name`, then one `[[modbus_device.binding]]` table per
+/// channel.
+fn modbus_channel_line(file: &Path, device: &str, channel: usize) -> Option<usize> {
+    let text = std::fs::read_to_string(file).ok()?;
+    modbus_channel_line_in(&text, device, channel)
+}
+
+/// [`modbus_channel_line`] on the manifest's text.
+fn modbus_channel_line_in(text: &str, device: &str, channel: usize) -> Option<usize> {
+    let name = format!("name = \"{device}\"");
+    // Whether the lines are in the device's tables, and how many channel tables began there.
+    let mut in_device = false;
+    let mut in_device_table = false;
+    let mut channels = 0usize;
+    for (index, line) in text.lines().enumerate() {
+        let line = line.trim();
+        if line.starts_with('[') {
+            in_device_table = line == "[[modbus_device]]";
+            if in_device_table {
+                in_device = false;
+            } else if line == "[[modbus_device.binding]]" && in_device {
+                channels += 1;
+            } else if !line.starts_with("[modbus_device.") {
+                in_device = false;
+            }
+            continue;
+        }
+        if in_device_table && line == name {
+            in_device = true;
+            channels = 0;
+        } else if in_device && channels == channel && line.starts_with("variable =") {
+            return Some(index + 1);
+        }
+    }
+    None
 }
 
 fn severity_word(severity: compiler::Severity) -> &'static str {

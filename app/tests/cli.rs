@@ -57,6 +57,40 @@ fn check_fails_on_a_broken_copy_with_file_and_line() {
 }
 
 #[test]
+fn check_points_a_modbus_channel_finding_at_the_channel_s_variable_line() {
+    let dir = example_copy();
+    let manifest = dir.path().join("rivet.toml");
+    // A runtime device on the loopback address, whose second channel reads a BOOL into a REAL.
+    let broken = fs::read_to_string(&manifest)
+        .unwrap()
+        .replace(
+            "host = \"192.168.1.50\"",
+            "host = \"127.0.0.1\"\ntask = \"MainTask\"",
+        )
+        .replace(
+            "variable = \"GVL_Machine.xDriveReady\"",
+            "variable = \"GVL_Machine.rBeltSpeedActual\"",
+        );
+    fs::write(&manifest, &broken).unwrap();
+    // The second of the two channels now bound to the speed.
+    let second = broken
+        .lines()
+        .enumerate()
+        .filter(|(_, text)| *text == "variable = \"GVL_Machine.rBeltSpeedActual\"")
+        .map(|(index, _)| index + 1)
+        .nth(1)
+        .unwrap();
+    let output = rivet(&["check", path_str(dir.path())]);
+    assert_eq!(output.status.code(), Some(1));
+    let stderr = text_of(&output.stderr);
+    let expected = format!(
+        "{}:{second}: error[E0141]: Modbus device 'BeltDrive', channel 2 (GVL_Machine.rBeltSpeedActual): the channel reads one bool value, but the variable is declared as REAL: declare it as BOOL",
+        manifest.display()
+    );
+    assert!(stderr.contains(&expected), "{stderr}");
+}
+
+#[test]
 fn fmt_leaves_a_canonical_project_untouched() {
     let dir = example_copy();
     let manifest = dir.path().join("rivet.toml");
