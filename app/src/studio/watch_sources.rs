@@ -2,7 +2,7 @@
 
 use project_model::ModbusDevice;
 
-use super::online::{Bound, bound};
+use super::online::devices::{Bound, bound};
 
 /// Where the watched variables come from this frame.
 #[derive(Debug, Default)]

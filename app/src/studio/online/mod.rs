@@ -6,7 +6,7 @@
 
 mod background;
 mod debug_target;
-mod devices;
+pub(crate) mod devices;
 mod events;
 mod frame_locals;
 mod link;
@@ -29,7 +29,6 @@ use serde::{Deserialize, Serialize};
 
 use super::i18n::{Language, LoginText, Text};
 use background::Background;
-pub use devices::{Bound, bound};
 use link::Link;
 pub use login_choice::{ChangeKind, ChangeOffer, ChangeRefusal, LoginChoice, grouped};
 use simulator::{Simulator, SimulatorError};
@@ -504,8 +503,12 @@ impl Online {
             self.project_devices = devices.to_vec();
         }
         let logged_in = self.is_logged_in();
-        let on_device =
-            |path: &String| matches!(bound(devices, path, logged_in), Some(Bound::Polled(..)));
+        let on_device = |path: &String| {
+            matches!(
+                devices::bound(devices, path, logged_in),
+                Some(devices::Bound::Polled(..))
+            )
+        };
         // Devices are polled only while one of their variables is watched, and only those the
         // studio serves (`devices::source_of`): never one the runtime masters while logged in.
         let needs_devices = paths.iter().any(on_device) || !self.devices.is_empty();
@@ -540,11 +543,11 @@ impl Online {
     pub fn value(&self, path: &str) -> Option<&LiveValue> {
         match self.bound(path) {
             // The device's own value, never the program's copy read beside it.
-            Some(Bound::Polled(device, channel)) => {
+            Some(devices::Bound::Polled(device, channel)) => {
                 self.devices.value(device, channel).and_then(Result::ok)
             }
-            Some(Bound::SeveralValues(..) | Bound::RuntimeWhenLoggedIn) => None,
-            Some(Bound::Runtime) | None => self.values.get(path),
+            Some(devices::Bound::SeveralValues(..) | devices::Bound::RuntimeWhenLoggedIn) => None,
+            Some(devices::Bound::Runtime) | None => self.values.get(path),
         }
     }
 
@@ -552,13 +555,15 @@ impl Online {
     /// channel of several values, which the studio's poll does not read.
     pub fn problem(&self, path: &str) -> Option<String> {
         match self.bound(path) {
-            Some(Bound::Polled(device, channel)) => match self.devices.value(device, channel) {
-                Some(Err(problem)) => Some(problem),
-                _ => None,
-            },
-            Some(Bound::SeveralValues(_, count)) => Some(self.several_values(path, count)),
-            Some(Bound::RuntimeWhenLoggedIn) => None,
-            Some(Bound::Runtime) | None => match self.resolved.get(path) {
+            Some(devices::Bound::Polled(device, channel)) => {
+                match self.devices.value(device, channel) {
+                    Some(Err(problem)) => Some(problem),
+                    _ => None,
+                }
+            }
+            Some(devices::Bound::SeveralValues(_, count)) => Some(self.several_values(path, count)),
+            Some(devices::Bound::RuntimeWhenLoggedIn) => None,
+            Some(devices::Bound::Runtime) | None => match self.resolved.get(path) {
                 Some(Err(reason)) => Some(reason.clone()),
                 _ => None,
             },
@@ -567,8 +572,8 @@ impl Online {
 
     /// How the studio reaches a path bound to a Modbus device of the project now; `None` for a
     /// path bound to no device.
-    pub fn bound(&self, path: &str) -> Option<Bound<'_>> {
-        bound(&self.project_devices, path, self.is_logged_in())
+    pub fn bound(&self, path: &str) -> Option<devices::Bound<'_>> {
+        devices::bound(&self.project_devices, path, self.is_logged_in())
     }
 
     /// Whether the studio polls a path's device itself, so it is read, written and traced
@@ -576,7 +581,7 @@ impl Online {
     pub fn is_polled_by_studio(&self, path: &str) -> bool {
         matches!(
             self.bound(path),
-            Some(Bound::Polled(..) | Bound::SeveralValues(..))
+            Some(devices::Bound::Polled(..) | devices::Bound::SeveralValues(..))
         )
     }
 

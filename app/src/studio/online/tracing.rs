@@ -5,7 +5,8 @@ use std::time::Duration;
 use online::session::Command;
 use online::{Place, Resolved};
 
-use super::{Bound, Online};
+use super::Online;
+use super::devices::Bound;
 use crate::studio::i18n::Text;
 
 impl Online {

@@ -3,7 +3,8 @@
 use online::Place;
 use online::session::Command;
 
-use super::{Bound, ForceSource, ForcedValue, Online, Refusal, devices};
+use super::devices::Bound;
+use super::{ForceSource, ForcedValue, Online, Refusal, devices};
 use crate::studio::error_texts::value_error_text;
 use crate::studio::i18n::Text;
 use crate::value_text::{describe_place, show};

@@ -8,7 +8,7 @@ use project_model::{Edit, Object, WatchEntry, WatchList};
 
 use crate::studio::command::{Command, Commands};
 use crate::studio::i18n::Text;
-use crate::studio::online::Bound;
+use crate::studio::online::devices::Bound;
 use crate::studio::session::Session;
 use crate::studio::theme;
 use crate::studio::view::StudioView;
