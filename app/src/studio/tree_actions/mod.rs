@@ -198,9 +198,14 @@ fn plan_rename(
         let edit = kind
             .renamed(project, index, name)
             .ok_or_else(|| missing(project, node))?;
+        let mut edits = vec![edit];
+        // The devices on a renamed serial port follow it, in the same undo step.
+        if kind == ListKind::SerialPorts {
+            edits.extend(editor::serial_port_rename_edits(project, old, name));
+        }
         return Ok(Some(Plan {
             label,
-            edits: vec![edit],
+            edits,
             open: None,
             select: Some(kind.entry(name.to_owned())),
             part: None,
