@@ -1,6 +1,6 @@
 //! The editor of a serial port (`docs/modbus-master.md` §2.3): its device file and line
 //! settings, and the Modbus devices on it. The port is renamed in the device tree, as every
-//! device node is (its open tab follows the name there), and the new name is carried into the
+//! device node is (a rename closes its open tab there), and the new name is carried into the
 //! devices that name the port, in the same undo step ([`serial_port_rename_edits`]).
 
 use egui::{RichText, Ui};
@@ -102,7 +102,7 @@ pub fn serial_port_editor_ui(
                 },
             );
         ui.label(&texts.devices_on_port);
-        let devices = devices_on_port(project, &port.name);
+        let devices = project.devices_on_serial_port(&port.name);
         if devices.is_empty() {
             ui.label(RichText::new(&texts.no_devices_on_port).weak());
         } else {
@@ -135,20 +135,6 @@ pub fn serial_port_rename_edits(project: &Project, old: &str, new: &str) -> Vec<
             };
             Edit::ModbusDevices(ListEdit::Replace { index, item })
         })
-        .collect()
-}
-
-/// The names of the Modbus devices on the port named `name`, in the project's order.
-fn devices_on_port<'a>(project: &'a Project, name: &str) -> Vec<&'a str> {
-    project
-        .modbus_devices
-        .iter()
-        .filter(|device| {
-            device
-                .serial_port()
-                .is_some_and(|port| same_identifier(port, name))
-        })
-        .map(|device| device.name.as_str())
         .collect()
 }
 
@@ -185,12 +171,5 @@ mod tests {
         assert_eq!(*index, 1);
         assert_eq!(item.serial_port(), Some("Line1"));
         assert!(serial_port_rename_edits(&project, "RS485", "RS485").is_empty());
-    }
-
-    #[test]
-    fn the_devices_on_a_port_are_found_whatever_the_case() {
-        let project = project_with_port();
-        assert_eq!(devices_on_port(&project, "RS485"), vec!["Drive"]);
-        assert!(devices_on_port(&project, "RS232").is_empty());
     }
 }

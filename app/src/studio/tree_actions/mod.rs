@@ -348,6 +348,16 @@ fn rename_objects(folder: &mut Folder, rename: &mut impl FnMut(&mut Object)) {
 fn plan_delete(project: &Project, node: &TreeNode, language: Language) -> Result<Plan, Refusal> {
     let name = node.title(Some(project));
     let edit = if let Some((kind, entry)) = ListKind::of_entry(node) {
+        // A port the devices still name stays: deleting it would leave them dangling.
+        if kind == ListKind::SerialPorts {
+            let devices = project.devices_on_serial_port(entry);
+            if !devices.is_empty() {
+                return Err(Refusal::SerialPortInUse(
+                    entry.to_owned(),
+                    devices.into_iter().map(str::to_owned).collect(),
+                ));
+            }
+        }
         let index = kind
             .index_of(project, entry)
             .ok_or_else(|| missing(project, node))?;
