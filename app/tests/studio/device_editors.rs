@@ -325,10 +325,7 @@ fn a_refused_master_setting_shows_its_reason_and_changes_nothing() {
         "Link of BeltDrive",
         "Modbus RTU (serial port)",
     );
-    assert_refused(
-        &harness,
-        "the serial port is empty: choose one of the project's serial ports",
-    );
+    assert_refused(&harness, "add a serial port under the controller first");
     assert_eq!(drive(&harness), before);
 
     // An input register cannot be written.

@@ -11,6 +11,7 @@ use super::channels::channels_ui;
 use super::field::DeviceEditorState;
 use super::form::Form;
 use super::modbus_master::{link_fields_ui, master_fields_ui, poll_interval_ui};
+use super::refusal::Refusal;
 use super::{DeviceEdit, DeviceTexts, checked_edit, keep};
 
 /// Counts the requests of one round of a device as the build would plan them
@@ -96,20 +97,19 @@ pub fn modbus_device_editor_ui(
 
 /// The link a device gets when the user switches it to `rtu` (or back to TCP): the first of the
 /// project's serial ports, or a TCP device at the Modbus port of this computer, since the model
-/// keeps only one link and the other one's settings are gone.
-pub(crate) fn switched_link(project: &Project, rtu: bool) -> ModbusLink {
+/// keeps only one link and the other one's settings are gone. RTU is refused in a project
+/// without serial ports, since there is no port to choose until one is added.
+pub(crate) fn switched_link(project: &Project, rtu: bool) -> Result<ModbusLink, Refusal> {
     if rtu {
-        let serial_port = project
-            .serial_ports
-            .first()
-            .map(|port| port.name.clone())
-            .unwrap_or_default();
-        ModbusLink::Rtu { serial_port }
+        let port = project.serial_ports.first().ok_or(Refusal::NoSerialPorts)?;
+        Ok(ModbusLink::Rtu {
+            serial_port: port.name.clone(),
+        })
     } else {
-        ModbusLink::Tcp {
+        Ok(ModbusLink::Tcp {
             host: "127.0.0.1".to_owned(),
             port: 502,
-        }
+        })
     }
 }
 
@@ -121,27 +121,22 @@ mod tests {
     #[test]
     fn a_device_switched_to_rtu_takes_the_first_serial_port_and_back_to_tcp_the_modbus_port() {
         let mut project = Project::default();
-        assert_eq!(
-            switched_link(&project, true),
-            ModbusLink::Rtu {
-                serial_port: String::new()
-            }
-        );
+        assert_eq!(switched_link(&project, true), Err(Refusal::NoSerialPorts));
         project
             .serial_ports
             .push(SerialPort::new("RS485", "/dev/ttyUSB0"));
         assert_eq!(
             switched_link(&project, true),
-            ModbusLink::Rtu {
+            Ok(ModbusLink::Rtu {
                 serial_port: "RS485".into()
-            }
+            })
         );
         assert_eq!(
             switched_link(&project, false),
-            ModbusLink::Tcp {
+            Ok(ModbusLink::Tcp {
                 host: "127.0.0.1".into(),
                 port: 502
-            }
+            })
         );
     }
 }

@@ -28,8 +28,9 @@ pub(crate) fn link_fields_ui(
     ];
     let rtu = matches!(device.link, ModbusLink::Rtu { .. });
     form.field("link", &texts.link, 200.0)
-        .combo_ui(ui, rtu, &kinds, |item, rtu| {
-            item.link = switched_link(project, rtu);
+        .checked_combo_ui(ui, rtu, &kinds, |item, rtu| {
+            item.link = switched_link(project, rtu)?;
+            Ok(())
         });
     match &device.link {
         ModbusLink::Tcp { host, port } => {

@@ -122,6 +122,7 @@ pub enum DeviceText {
     RegisterTableAddress,
     NotANumber,
     NotAWholeNumber,
+    NoSerialPorts,
     // The reasons for a refused value and the words they hold (`device_refusals.rs`).
     ProblemInvalidName,
     ProblemDuplicateName,
@@ -335,6 +336,10 @@ impl DeviceText {
             Self::RegisterTableAddress => (
                 "a register range starts at a W, D or L address, such as %MW0, not {address}",
                 "寄存器范围从 W、D 或 L 地址开始，例如 %MW0，而不是 {address}",
+            ),
+            Self::NoSerialPorts => (
+                "add a serial port under the controller first",
+                "请先在控制器下添加串口",
             ),
             Self::NotANumber => ("'{text}' is not a number", "'{text}' 不是数字"),
             Self::NotAWholeNumber => (
