@@ -120,6 +120,7 @@ fn device_texts(language: Language) -> DeviceTexts {
         high_first: get(DeviceText::HighFirst),
         low_first: get(DeviceText::LowFirst),
         poll_interval: get(DeviceText::PollInterval),
+        no_poll_interval: get(DeviceText::NoPollInterval),
         timeout: get(DeviceText::Timeout),
         channels: get(DeviceText::Channels),
         variable: get(DeviceText::Variable),

@@ -389,6 +389,18 @@ fn a_serial_port_added_in_the_tree_is_edited_and_an_rtu_device_put_on_it() {
     assert_eq!(drive(&harness).serial_port(), Some(name.as_str()));
     assert!(harness.query_by_label("Serial port of BeltDrive").is_some());
     assert!(harness.query_by_label("Host of BeltDrive").is_none());
+    // Polled every cycle, the RTU device may have no poll interval, and the undo label says so.
+    choose(
+        &mut harness,
+        "Schedule of BeltDrive",
+        "Every cycle of the task",
+    );
+    enter_text(&mut harness, "Poll interval of BeltDrive", "");
+    assert_eq!(drive(&harness).poll_interval_ms, None);
+    assert_eq!(
+        undo_label(&harness).as_deref(),
+        Some("Set poll interval of BeltDrive to none")
+    );
     // The port's row is marked as changed since the last save.
     let row = format!("{name} *");
     harness.get_by_label(&row).scroll_to_me();

@@ -5,7 +5,7 @@
 
 use compiler::ide::{ChannelVariableError, variable_type};
 use egui::{RichText, Ui};
-use project_model::{ModbusDevice, ModbusLink, ModbusSchedule, Project};
+use project_model::{ModbusDevice, ModbusLink, ModbusSchedule, Project, same_identifier};
 
 use super::DeviceTexts;
 use super::field::parse_whole;
@@ -58,7 +58,9 @@ pub(crate) fn link_fields_ui(
                 .enumerate()
                 .map(|(position, name)| (name.clone(), position))
                 .collect();
-            let current = names.iter().position(|name| name == serial_port);
+            let current = names
+                .iter()
+                .position(|name| same_identifier(name, serial_port));
             form.field("serial port", &texts.serial_port, 160.0)
                 .combo_ui(
                     ui,
@@ -97,11 +99,12 @@ pub(crate) fn poll_interval_ui(
     form.field("poll", &texts.poll_interval, 60.0)
         .suffix(&suffix)
         .typed_ui(ui, &shown, |item, text| {
-            item.poll_interval_ms = if text.is_empty() {
-                None
-            } else {
-                Some(parse_whole(text, 0, u32::MAX)?)
-            };
+            if text.is_empty() {
+                item.poll_interval_ms = None;
+                // The undo label says the interval is gone rather than ending on a blank.
+                return Ok(texts.no_poll_interval.clone());
+            }
+            item.poll_interval_ms = Some(parse_whole(text, 0, u32::MAX)?);
             Ok(text.to_owned())
         });
 }
@@ -129,7 +132,7 @@ pub(crate) fn master_fields_ui(
         .collect();
     let current = choices
         .iter()
-        .position(|task| *task == device.task)
+        .position(|task| same_task(task.as_deref(), device.task.as_deref()))
         .unwrap_or_default();
     form.field("task", &texts.io_task, 200.0)
         .combo_ui(ui, current, &options, |item, chosen| {
@@ -199,7 +202,7 @@ fn port_choices(project: &Project, current: &str) -> Vec<String> {
         .iter()
         .map(|port| port.name.clone())
         .collect();
-    if !current.is_empty() && !names.iter().any(|name| name == current) {
+    if !current.is_empty() && !names.iter().any(|name| same_identifier(name, current)) {
         names.push(current.to_owned());
     }
     names
@@ -212,11 +215,23 @@ fn task_choices(project: &Project, current: Option<&str>) -> Vec<Option<String>>
         .chain(project.tasks.iter().map(|task| Some(task.name.clone())))
         .collect();
     if let Some(current) = current
-        && !choices.iter().any(|task| task.as_deref() == Some(current))
+        && !choices
+            .iter()
+            .any(|task| same_task(task.as_deref(), Some(current)))
     {
         choices.push(Some(current.to_owned()));
     }
     choices
+}
+
+/// Whether two I/O task choices are the same: both none, or names equal as identifiers are
+/// (without regard to case), as the model compares them.
+fn same_task(a: Option<&str>, b: Option<&str>) -> bool {
+    match (a, b) {
+        (None, None) => true,
+        (Some(a), Some(b)) => same_identifier(a, b),
+        _ => false,
+    }
 }
 
 #[cfg(test)]
@@ -232,14 +247,20 @@ mod tests {
     #[test]
     fn the_task_choices_are_none_then_the_tasks_then_a_missing_one_named_by_the_device() {
         let project = example();
-        let tasks: Vec<Option<String>> = std::iter::once(None)
-            .chain(project.tasks.iter().map(|task| Some(task.name.clone())))
-            .collect();
+        let tasks = vec![
+            None,
+            Some("MainTask".to_owned()),
+            Some("MotionTask".to_owned()),
+        ];
         assert_eq!(task_choices(&project, None), tasks);
-        assert_eq!(task_choices(&project, Some(&project.tasks[0].name)), tasks);
+        assert_eq!(task_choices(&project, Some("MainTask")), tasks);
+        // A task named in another case is the same task, not a missing one.
+        assert_eq!(task_choices(&project, Some("maintask")), tasks);
         let mut with_missing = tasks.clone();
         with_missing.push(Some("Gone".into()));
         assert_eq!(task_choices(&project, Some("Gone")), with_missing);
+        assert!(same_task(Some("MainTask"), Some("MAINTASK")));
+        assert!(!same_task(None, Some("MainTask")));
     }
 
     #[test]
@@ -251,6 +272,8 @@ mod tests {
             .serial_ports
             .push(project_model::SerialPort::new("RS485", "/dev/ttyS0"));
         assert_eq!(port_choices(&project, "RS485"), vec!["RS485".to_owned()]);
+        // A port named in another case is the project's port, not a second one.
+        assert_eq!(port_choices(&project, "rs485"), vec!["RS485".to_owned()]);
     }
 
     #[test]

@@ -63,6 +63,8 @@ pub struct DeviceTexts {
     pub low_first: String,
     /// Field: the poll interval.
     pub poll_interval: String,
+    /// Undo label's value of an emptied poll interval: none.
+    pub no_poll_interval: String,
     /// Field: the response timeout.
     pub timeout: String,
     /// Heading of a device's channel table.
@@ -263,6 +265,7 @@ impl Default for DeviceTexts {
             high_first: s("High word first"),
             low_first: s("Low word first"),
             poll_interval: s("Poll interval"),
+            no_poll_interval: s("none"),
             timeout: s("Timeout"),
             channels: s("Channels"),
             variable: s("Variable"),
