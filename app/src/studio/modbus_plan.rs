@@ -70,14 +70,6 @@ fn channel_def(binding: &ModbusBinding) -> ChannelDef {
         ChannelDirection::Read => Direction::Read,
         ChannelDirection::Write => Direction::Write,
     };
-    let default_code = match (direction, binding.table.holds_bits(), table) {
-        (Direction::Read, _, ModbusTable::Coils) => 1,
-        (Direction::Read, _, ModbusTable::DiscreteInputs) => 2,
-        (Direction::Read, _, ModbusTable::HoldingRegisters) => 3,
-        (Direction::Read, _, ModbusTable::InputRegisters) => 4,
-        (Direction::Write, true, _) => 15,
-        (Direction::Write, false, _) => 16,
-    };
     let trigger = match (binding.trigger, &binding.trigger_variable) {
         (ChannelTrigger::RisingEdge, Some(variable)) => Trigger::RisingEdge {
             variable: variable.clone(),
@@ -91,7 +83,9 @@ fn channel_def(binding: &ModbusBinding) -> ChannelDef {
         value_type: value_type(binding.data_type),
         count: binding.count,
         direction,
-        function_code: binding.function_code.unwrap_or(default_code),
+        function_code: binding
+            .function_code
+            .unwrap_or_else(|| binding.default_function_code()),
         trigger,
         on_error: match binding.on_error {
             ChannelErrorAction::KeepLastValue => OnError::KeepLastValue,

@@ -112,14 +112,7 @@ pub(crate) fn function_code_choices(
     binding: &ModbusBinding,
 ) -> Vec<(String, Option<u8>)> {
     let coils = binding.table == ModbusTable::Coil;
-    let default_code = match (binding.direction, binding.table) {
-        (ChannelDirection::Read, ModbusTable::Coil) => 1,
-        (ChannelDirection::Read, ModbusTable::DiscreteInput) => 2,
-        (ChannelDirection::Read, ModbusTable::HoldingRegister) => 3,
-        (ChannelDirection::Read, ModbusTable::InputRegister) => 4,
-        (ChannelDirection::Write, _) if coils => 15,
-        (ChannelDirection::Write, _) => 16,
-    };
+    let default_code = binding.default_function_code();
     let mut choices = vec![(
         fill(&texts.default_code, &[("code", &default_code.to_string())]),
         None,
