@@ -302,6 +302,21 @@ impl ModbusBinding {
     pub fn span(&self) -> u32 {
         u32::from(self.count) * u32::from(self.value_width())
     }
+
+    /// The function code the channel uses when it names none (`docs/modbus-master.md` §2.2):
+    /// a read uses its table's (1 coils, 2 discrete inputs, 3 holding registers, 4 input
+    /// registers), a write the multiple write of its kind of value (15 for bits, 16 for
+    /// registers). A write to a read-only table gets one too; the device checks refuse it.
+    pub fn default_function_code(&self) -> u8 {
+        match (self.direction, self.table) {
+            (ChannelDirection::Read, ModbusTable::Coil) => 1,
+            (ChannelDirection::Read, ModbusTable::DiscreteInput) => 2,
+            (ChannelDirection::Read, ModbusTable::HoldingRegister) => 3,
+            (ChannelDirection::Read, ModbusTable::InputRegister) => 4,
+            (ChannelDirection::Write, table) if table.holds_bits() => 15,
+            (ChannelDirection::Write, _) => 16,
+        }
+    }
 }
 
 /// The default `count` of a channel.
@@ -408,5 +423,27 @@ impl ModbusTable {
     /// Whether the table holds bits (coils and discrete inputs) rather than 16-bit registers.
     pub fn holds_bits(self) -> bool {
         matches!(self, Self::Coil | Self::DiscreteInput)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_channel_without_a_function_code_reads_by_its_table_and_writes_many() {
+        let code = |table, direction| {
+            let mut binding = ModbusBinding::new("x", table, 0, ModbusDataType::Int16);
+            binding.direction = direction;
+            binding.default_function_code()
+        };
+        let read = ChannelDirection::Read;
+        let write = ChannelDirection::Write;
+        assert_eq!(code(ModbusTable::Coil, read), 1);
+        assert_eq!(code(ModbusTable::DiscreteInput, read), 2);
+        assert_eq!(code(ModbusTable::HoldingRegister, read), 3);
+        assert_eq!(code(ModbusTable::InputRegister, read), 4);
+        assert_eq!(code(ModbusTable::Coil, write), 15);
+        assert_eq!(code(ModbusTable::HoldingRegister, write), 16);
     }
 }

@@ -2,6 +2,8 @@
 
 use serde::{Deserialize, Serialize};
 
+use crate::{Project, same_identifier};
+
 /// A serial port of the controller (`[[serial_port]]` in the manifest): the device file and the
 /// line settings its Modbus RTU devices share (`docs/modbus-master.md` §2.3).
 #[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
@@ -69,6 +71,23 @@ impl Parity {
     pub const ALL: [Self; 3] = [Self::None, Self::Even, Self::Odd];
 }
 
+impl Project {
+    /// The names of the Modbus devices on the serial port named `name` (compared as
+    /// identifiers, without regard to case), in the project's order: the devices a rename
+    /// carries along and that keep the port from being deleted.
+    pub fn devices_on_serial_port(&self, name: &str) -> Vec<&str> {
+        self.modbus_devices
+            .iter()
+            .filter(|device| {
+                device
+                    .serial_port()
+                    .is_some_and(|port| same_identifier(port, name))
+            })
+            .map(|device| device.name.as_str())
+            .collect()
+    }
+}
+
 /// Whether the inter-frame delay is the default, which the manifest leaves out.
 fn is_zero(value: &u32) -> bool {
     *value == 0
@@ -88,6 +107,27 @@ mod tests {
         let delayed: SerialPort =
             toml::from_str(&format!("{text}inter_frame_delay_us = 5000\n")).unwrap();
         assert_eq!(delayed.inter_frame_delay_us, 5000);
+    }
+
+    #[test]
+    fn the_devices_on_a_port_are_found_without_regard_to_case() {
+        let mut project = Project::default();
+        project
+            .serial_ports
+            .push(SerialPort::new("RS485", "/dev/ttyUSB0"));
+        let mut drive = crate::ModbusDevice::tcp("Drive", "127.0.0.1", 502);
+        drive.link = crate::ModbusLink::Rtu {
+            serial_port: "rs485".into(),
+        };
+        let mut meter = drive.clone();
+        meter.name = "Meter".into();
+        let panel = crate::ModbusDevice::tcp("Panel", "127.0.0.1", 502);
+        project.modbus_devices = vec![drive, panel, meter];
+        assert_eq!(
+            project.devices_on_serial_port("RS485"),
+            vec!["Drive", "Meter"]
+        );
+        assert!(project.devices_on_serial_port("RS232").is_empty());
     }
 
     #[test]

@@ -1,4 +1,4 @@
-//! The documents of the controller, I/O areas, Modbus devices and axes: the device editors of
+//! The documents of the controller, I/O areas, serial ports, Modbus devices and axes: the device editors of
 //! the `editor` crate in the user's language, their edits queued as commands.
 
 use std::collections::HashMap;
@@ -10,6 +10,7 @@ use project_model::Project;
 use super::command::{Command, Commands};
 use super::device_refusals::refusal_words;
 use super::i18n::{DeviceText, Language};
+use super::modbus_plan::round_requests;
 use super::tree_node::TreeNode;
 
 /// What the device editors keep between frames: each node's typed text and refusals. Not
@@ -71,7 +72,12 @@ fn editor_ui(
                 .modbus_devices
                 .iter()
                 .position(|d| d.name == *name)?;
-            editor::modbus_device_editor_ui(ui, project, index, state, texts)
+            editor::modbus_device_editor_ui(ui, project, index, state, texts, &round_requests)
+        }
+        TreeNode::SerialPort(name) => {
+            let index = project.serial_ports.iter().position(|p| p.name == *name)?;
+            let silence = program_image::modbus_master::silent_interval_us;
+            editor::serial_port_editor_ui(ui, project, index, state, texts, silence)
         }
         TreeNode::Axis(name) => {
             let index = project.axes.iter().position(|a| a.name == *name)?;
@@ -114,6 +120,7 @@ fn device_texts(language: Language) -> DeviceTexts {
         high_first: get(DeviceText::HighFirst),
         low_first: get(DeviceText::LowFirst),
         poll_interval: get(DeviceText::PollInterval),
+        no_poll_interval: get(DeviceText::NoPollInterval),
         timeout: get(DeviceText::Timeout),
         channels: get(DeviceText::Channels),
         variable: get(DeviceText::Variable),
@@ -143,6 +150,53 @@ fn device_texts(language: Language) -> DeviceTexts {
         dialect_codesys: get(DeviceText::DialectCodesys),
         dialect_iec_strict: get(DeviceText::DialectIecStrict),
         dialect_note: get(DeviceText::DialectNote),
+        link: get(DeviceText::Link),
+        link_tcp: get(DeviceText::LinkTcp),
+        link_rtu: get(DeviceText::LinkRtu),
+        serial_port: get(DeviceText::SerialPort),
+        io_task: get(DeviceText::IoTask),
+        no_task: get(DeviceText::NoTask),
+        studio_device_note: get(DeviceText::StudioDeviceNote),
+        schedule: get(DeviceText::Schedule),
+        schedule_interval: get(DeviceText::ScheduleInterval),
+        schedule_every_cycle: get(DeviceText::ScheduleEveryCycle),
+        max_read_gap: get(DeviceText::MaxReadGap),
+        addresses: get(DeviceText::Addresses),
+        status_variable: get(DeviceText::StatusVariable),
+        optional: get(DeviceText::Optional),
+        request_per_round: get(DeviceText::RequestPerRound),
+        requests_per_round: get(DeviceText::RequestsPerRound),
+        round: get(DeviceText::Round),
+        read: get(DeviceText::Read),
+        write: get(DeviceText::Write),
+        function_code: get(DeviceText::FunctionCode),
+        default_code: get(DeviceText::DefaultCode),
+        write_single_coil: get(DeviceText::WriteSingleCoil),
+        write_multiple_coils: get(DeviceText::WriteMultipleCoils),
+        write_single_register: get(DeviceText::WriteSingleRegister),
+        write_multiple_registers: get(DeviceText::WriteMultipleRegisters),
+        trigger: get(DeviceText::Trigger),
+        cyclic: get(DeviceText::Cyclic),
+        rising_edge: get(DeviceText::RisingEdge),
+        trigger_variable: get(DeviceText::TriggerVariable),
+        on_error: get(DeviceText::OnError),
+        keep_last_value: get(DeviceText::KeepLastValue),
+        set_to_zero: get(DeviceText::SetToZero),
+        error_flag: get(DeviceText::ErrorFlag),
+        not_applicable: get(DeviceText::NotApplicable),
+        device_file: get(DeviceText::DeviceFile),
+        baud_rate: get(DeviceText::BaudRate),
+        parity: get(DeviceText::Parity),
+        parity_none: get(DeviceText::ParityNone),
+        parity_even: get(DeviceText::ParityEven),
+        parity_odd: get(DeviceText::ParityOdd),
+        data_bits: get(DeviceText::DataBits),
+        stop_bits: get(DeviceText::StopBits),
+        inter_frame_delay: get(DeviceText::InterFrameDelay),
+        microseconds: get(DeviceText::Microseconds),
+        standard_delay: get(DeviceText::StandardDelay),
+        devices_on_port: get(DeviceText::DevicesOnPort),
+        no_devices_on_port: get(DeviceText::NoDevicesOnPort),
         field_of: get(DeviceText::FieldOf),
         field_of_row: get(DeviceText::FieldOfRow),
         set_field: get(DeviceText::SetField),

@@ -26,6 +26,7 @@ pub(crate) fn describe_refusal(refusal: &Refusal, language: Language) -> String 
         Refusal::RegisterTableAddress { address } => {
             fill(DeviceText::RegisterTableAddress, &[("address", address)])
         }
+        Refusal::NoSerialPorts => fill(DeviceText::NoSerialPorts, &[]),
         Refusal::NotANumber { text } => fill(DeviceText::NotANumber, &[("text", text)]),
         Refusal::NotAWholeNumber { text, min, max } => fill(
             DeviceText::NotAWholeNumber,

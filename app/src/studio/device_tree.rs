@@ -5,7 +5,7 @@ use std::collections::HashSet;
 
 use egui::collapsing_header::CollapsingState;
 use egui::{Color32, Key, Modifiers, RichText, Ui};
-use project_model::{Folder, IoDirection, Node, Object, Project, TaskKind};
+use project_model::{Folder, IoDirection, Node, Object, Parity, Project, SerialPort, TaskKind};
 
 use super::command::{Command, Commands};
 use super::i18n::{Language, Text};
@@ -183,6 +183,7 @@ pub fn device_tree_ui(ui: &mut Ui, context: TreeContext<'_>, keys: bool) -> Tree
                         },
                     );
                     tree.io_areas(ui, project, language);
+                    tree.serial_ports(ui, project, language);
                     tree.modbus_devices(ui, project, language);
                     tree.axes(ui, project, language);
                 },
@@ -381,6 +382,7 @@ impl TreeUi<'_> {
         let list = match node {
             TreeNode::TaskConfiguration => Some(ListKind::Tasks),
             TreeNode::IoAreas => Some(ListKind::IoAreas),
+            TreeNode::SerialPorts => Some(ListKind::SerialPorts),
             TreeNode::ModbusDevices => Some(ListKind::ModbusDevices),
             TreeNode::Axes => Some(ListKind::Axes),
             other => ListKind::of_entry(other).map(|(kind, _)| kind),
@@ -389,6 +391,7 @@ impl TreeUi<'_> {
             let text = match kind {
                 ListKind::Tasks => Text::AddTask,
                 ListKind::IoAreas => Text::AddIoArea,
+                ListKind::SerialPorts => Text::AddSerialPort,
                 ListKind::ModbusDevices => Text::AddModbusDevice,
                 ListKind::Axes => Text::AddAxis,
             };
@@ -498,6 +501,22 @@ impl TreeUi<'_> {
         );
     }
 
+    fn serial_ports(&mut self, ui: &mut Ui, project: &Project, language: Language) {
+        let label = Text::SerialPorts.get(language);
+        self.branch(ui, TreeNode::SerialPorts, "COM", label, "", |tree, ui| {
+            for port in &project.serial_ports {
+                let detail = format!("{} · {}", port.device, line_settings(port));
+                tree.leaf(
+                    ui,
+                    TreeNode::SerialPort(port.name.clone()),
+                    "COM",
+                    &port.name,
+                    &detail,
+                );
+            }
+        });
+    }
+
     fn modbus_devices(&mut self, ui: &mut Ui, project: &Project, language: Language) {
         let label = Text::ModbusDevices.get(language);
         self.branch(ui, TreeNode::ModbusDevices, "MB", label, "", |tree, ui| {
@@ -557,6 +576,19 @@ fn drag_preview(ctx: &egui::Context, label: &str) {
                 ui.label(label);
             });
         });
+}
+
+/// A port's line settings as PLC engineers write them: `19200-8E1`.
+fn line_settings(port: &SerialPort) -> String {
+    let parity = match port.parity {
+        Parity::None => 'N',
+        Parity::Even => 'E',
+        Parity::Odd => 'O',
+    };
+    format!(
+        "{}-{}{parity}{}",
+        port.baud_rate, port.data_bits, port.stop_bits
+    )
 }
 
 /// `10000` µs as `10 ms`, `500` as `500 µs`.

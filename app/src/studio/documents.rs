@@ -13,13 +13,15 @@ pub fn node_exists(project: &Project, node: &TreeNode) -> bool {
         | TreeNode::Application
         | TreeNode::IoAreas
         | TreeNode::ModbusDevices
-        | TreeNode::Axes => true,
+        | TreeNode::Axes
+        | TreeNode::SerialPorts => true,
         TreeNode::Task(name) => project.task(name).is_some(),
         TreeNode::Object(name) => project.application.object(name).is_some(),
         TreeNode::Folder(_) => true,
         TreeNode::IoArea(name) => project.io_areas.iter().any(|area| area.name == *name),
         TreeNode::ModbusDevice(name) => project.modbus_devices.iter().any(|d| d.name == *name),
         TreeNode::Axis(name) => project.axes.iter().any(|axis| axis.name == *name),
+        TreeNode::SerialPort(name) => project.serial_ports.iter().any(|port| port.name == *name),
     }
 }
 

@@ -183,8 +183,9 @@ fn document_pane_ui(
         io_document_ui(view, &mut states.devices, commands, ui, node);
         return;
     }
-    // Axes are edited in place by their device editor, under their title, scrolled.
-    if let (TreeNode::Axis(_), Some(project)) = (node, view.project()) {
+    // Axes and serial ports are edited in place by their device editor, under their title,
+    // scrolled.
+    if let (TreeNode::Axis(_) | TreeNode::SerialPort(_), Some(project)) = (node, view.project()) {
         let devices = &mut states.devices;
         egui::ScrollArea::vertical()
             .id_salt(("axis document", node))

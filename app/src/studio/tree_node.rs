@@ -23,14 +23,18 @@ pub enum TreeNode {
     IoAreas,
     /// An I/O area.
     IoArea(String),
-    /// The Modbus TCP devices.
+    /// The Modbus devices (TCP or RTU).
     ModbusDevices,
-    /// A Modbus TCP device.
+    /// A Modbus device.
     ModbusDevice(String),
     /// The motion axes.
     Axes,
     /// A motion axis.
     Axis(String),
+    /// The controller's serial ports.
+    SerialPorts,
+    /// A serial port, by name.
+    SerialPort(String),
 }
 
 impl TreeNode {
@@ -45,6 +49,7 @@ impl TreeNode {
                 | Self::IoArea(_)
                 | Self::ModbusDevice(_)
                 | Self::Axis(_)
+                | Self::SerialPort(_)
         )
     }
 
@@ -58,13 +63,15 @@ impl TreeNode {
             | Self::Object(name)
             | Self::IoArea(name)
             | Self::ModbusDevice(name)
-            | Self::Axis(name) => name.clone(),
+            | Self::Axis(name)
+            | Self::SerialPort(name) => name.clone(),
             Self::Folder(path) => path.last().cloned().unwrap_or_default(),
             Self::TaskConfiguration
             | Self::Application
             | Self::IoAreas
             | Self::ModbusDevices
-            | Self::Axes => String::new(),
+            | Self::Axes
+            | Self::SerialPorts => String::new(),
         }
     }
 }

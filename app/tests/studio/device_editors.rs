@@ -24,9 +24,12 @@ fn open(harness: &mut Harness<'_, StudioApp>, node: TreeNode) {
     harness.run();
 }
 
-/// Types `text` into the text field labelled `label` over its old text and presses Enter.
+/// Types `text` into the text field labelled `label` over its old text and presses Enter,
+/// scrolling the field into view first as a user would (a channel table is wide).
 fn enter_text(harness: &mut Harness<'_, StudioApp>, label: &str, text: &str) {
     let role = egui::accesskit::Role::TextInput;
+    harness.get_by_role_and_label(role, label).scroll_to_me();
+    harness.run();
     harness.get_by_role_and_label(role, label).click();
     harness.run();
     harness.key_press_modifiers(Modifiers::COMMAND, Key::A);
@@ -228,6 +231,196 @@ fn the_modbus_device_editor_edits_settings_and_channels_and_refuses_what_does_no
     undo(&mut harness);
     assert_eq!(drive(&harness).bindings.len(), 2);
     assert_eq!(drive(&harness).poll_interval_ms, Some(100));
+}
+
+/// Opens the combo box labelled `combo` and chooses `option`, the last widget so labelled (the
+/// popup is drawn after the tree, which may show the same name).
+fn choose(harness: &mut Harness<'_, StudioApp>, combo: &str, option: &str) {
+    harness.get_by_label(combo).scroll_to_me();
+    harness.run();
+    harness.get_by_label(combo).click();
+    harness.run();
+    let chosen = harness.get_all_by_label(option).last().unwrap();
+    chosen.click();
+    harness.run();
+}
+
+#[test]
+fn the_master_settings_show_once_a_task_is_chosen_with_the_requests_of_a_round() {
+    let dir = example_copy(|_| {});
+    let mut harness = studio(dir.path());
+    open(&mut harness, TreeNode::ModbusDevice("BeltDrive".into()));
+    let drive = |harness: &Harness<'_, StudioApp>| project(harness).modbus_devices[0].clone();
+    assert!(harness.query_by_label("Schedule of BeltDrive").is_none());
+    assert!(harness.query_by_label("Direction of row 1").is_none());
+
+    choose(&mut harness, "I/O task of BeltDrive", "MainTask");
+    assert_eq!(drive(&harness).task.as_deref(), Some("MainTask"));
+    assert_eq!(
+        undo_label(&harness).as_deref(),
+        Some("Set I/O task of BeltDrive to MainTask")
+    );
+    assert!(harness.query_by_label("Schedule of BeltDrive").is_some());
+    assert!(
+        harness
+            .query_by_label("Status variable of BeltDrive")
+            .is_some()
+    );
+    assert!(harness.query_by_label("Error flag of row 2").is_some());
+    // An input register and a discrete input: two tables, two requests.
+    assert!(harness.query_by_label("2 requests per round").is_some());
+
+    choose(
+        &mut harness,
+        "Schedule of BeltDrive",
+        "Every cycle of the task",
+    );
+    assert_eq!(
+        drive(&harness).schedule,
+        project_model::ModbusSchedule::EveryCycle
+    );
+    enter_text(
+        &mut harness,
+        "Error flag of row 1",
+        "GVL_Machine.xDriveReady",
+    );
+    assert_eq!(
+        drive(&harness).bindings[0].error_flag.as_deref(),
+        Some("GVL_Machine.xDriveReady")
+    );
+    enter_text(
+        &mut harness,
+        "Trigger variable of row 1",
+        "GVL_Machine.xDriveReady",
+    );
+    assert_eq!(
+        drive(&harness).bindings[0].trigger,
+        project_model::ChannelTrigger::RisingEdge
+    );
+
+    // The poll interval is kept by every other edit, and emptied only where it may be.
+    enter_text(&mut harness, "Poll interval of BeltDrive", "");
+    assert_refused(&harness, "the poll interval is missing");
+    assert_eq!(drive(&harness).poll_interval_ms, Some(100));
+    harness.key_press(Key::Escape);
+    undo(&mut harness);
+    undo(&mut harness);
+    undo(&mut harness);
+    undo(&mut harness);
+    assert_eq!(drive(&harness).task, None);
+    assert!(harness.query_by_label("Schedule of BeltDrive").is_none());
+}
+
+#[test]
+fn a_refused_master_setting_shows_its_reason_and_changes_nothing() {
+    let dir = example_copy(|_| {});
+    let mut harness = studio(dir.path());
+    open(&mut harness, TreeNode::ModbusDevice("BeltDrive".into()));
+    let drive = |harness: &Harness<'_, StudioApp>| project(harness).modbus_devices[0].clone();
+    let before = drive(&harness);
+
+    // RTU in a project without serial ports.
+    choose(
+        &mut harness,
+        "Link of BeltDrive",
+        "Modbus RTU (serial port)",
+    );
+    assert_refused(&harness, "add a serial port under the controller first");
+    assert_eq!(drive(&harness), before);
+
+    // An input register cannot be written.
+    choose(&mut harness, "I/O task of BeltDrive", "MainTask");
+    choose(&mut harness, "Direction of row 1", "Write");
+    assert_refused(&harness, "which is read-only");
+    assert_eq!(drive(&harness).bindings, before.bindings);
+    enter_text(
+        &mut harness,
+        "Error flag of row 2",
+        "GVL_Machine.rBeltSpeedActual",
+    );
+    assert_refused(&harness, "declare it as BOOL");
+    assert_eq!(drive(&harness).bindings, before.bindings);
+}
+
+#[test]
+fn a_serial_port_added_in_the_tree_is_edited_and_an_rtu_device_put_on_it() {
+    let dir = example_copy(|_| {});
+    let mut harness = studio(dir.path());
+    harness.get_by_label("Serial ports").click_secondary();
+    harness.run();
+    harness.get_by_label("Add serial port").click();
+    harness.run();
+    let ports = |harness: &Harness<'_, StudioApp>| project(harness).serial_ports.clone();
+    assert_eq!(ports(&harness).len(), 1);
+    let name = ports(&harness)[0].name.clone();
+    assert!(
+        harness
+            .query_by_label_contains("0 = 3.5 characters (2006 µs)")
+            .is_some()
+    );
+
+    choose(&mut harness, &format!("Baud rate of {name}"), "9600");
+    assert_eq!(ports(&harness)[0].baud_rate, 9600);
+    assert_eq!(
+        undo_label(&harness),
+        Some(format!("Set baud rate of {name} to 9600"))
+    );
+    assert!(
+        harness
+            .query_by_label_contains("0 = 3.5 characters (4011 µs)")
+            .is_some()
+    );
+    enter_text(&mut harness, &format!("Device file of {name}"), "");
+    assert_refused(&harness, "the device file is empty");
+    assert_eq!(ports(&harness)[0].device, "/dev/ttyUSB0");
+    harness.key_press(Key::Escape);
+    undo(&mut harness);
+    assert_eq!(ports(&harness)[0].baud_rate, 19200);
+
+    // A device with a task moves onto the port, and follows the port's new name.
+    open(&mut harness, TreeNode::ModbusDevice("BeltDrive".into()));
+    choose(&mut harness, "I/O task of BeltDrive", "MainTask");
+    choose(
+        &mut harness,
+        "Link of BeltDrive",
+        "Modbus RTU (serial port)",
+    );
+    let drive = |harness: &Harness<'_, StudioApp>| project(harness).modbus_devices[0].clone();
+    assert_eq!(drive(&harness).serial_port(), Some(name.as_str()));
+    assert!(harness.query_by_label("Serial port of BeltDrive").is_some());
+    assert!(harness.query_by_label("Host of BeltDrive").is_none());
+    // Polled every cycle, the RTU device may have no poll interval, and the undo label says so.
+    choose(
+        &mut harness,
+        "Schedule of BeltDrive",
+        "Every cycle of the task",
+    );
+    enter_text(&mut harness, "Poll interval of BeltDrive", "");
+    assert_eq!(drive(&harness).poll_interval_ms, None);
+    assert_eq!(
+        undo_label(&harness).as_deref(),
+        Some("Set poll interval of BeltDrive to none")
+    );
+    // The port's row is marked as changed since the last save.
+    let row = format!("{name} *");
+    harness.get_by_label(&row).scroll_to_me();
+    harness.run();
+    harness.get_by_label(&row).click_secondary();
+    harness.run();
+    harness.get_by_label("Rename").click();
+    harness.run();
+    harness.get_by_label("Name").click();
+    harness.run();
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::A);
+    harness.get_by_label("Name").type_text("RS485");
+    harness.run();
+    harness.get_by_label("OK").click();
+    harness.run();
+    assert_eq!(ports(&harness)[0].name, "RS485");
+    assert_eq!(drive(&harness).serial_port(), Some("RS485"));
+    undo(&mut harness);
+    assert_eq!(ports(&harness)[0].name, name);
+    assert_eq!(drive(&harness).serial_port(), Some(name.as_str()));
 }
 
 #[test]

@@ -1,10 +1,13 @@
 //! The channel table of a Modbus device: each channel's variable, table, address, data type
-//! and comment, rows added by naming a variable and deleted by a button.
+//! and comment, and on a device the runtime masters its count, direction, function code,
+//! trigger, error handling and error flag (`channel_master.rs`); rows added by naming a
+//! variable and deleted by a button.
 
 use compiler::ide::{check_channel_variable, variable_type};
 use egui::Ui;
 use project_model::{ModbusBinding, ModbusDataType, ModbusTable, Project};
 
+use super::channel_master::channel_master_cells_ui;
 use super::field::{DeviceEditorState, FieldId, reason_ui, text_field_ui};
 use super::map_ranges::table_options;
 use super::refusal::Refusal;
@@ -12,13 +15,15 @@ use super::table::{Commit, Table, table_ui};
 use super::texts::fill;
 use super::{DeviceEdit, DeviceTexts, keep};
 
-/// Draws the channels as a table, with a field that adds a channel for a variable.
+/// Draws the channels as a table, with a field that adds a channel for a variable; `master`
+/// adds the columns of the runtime master's settings.
 pub(crate) fn channels_ui(
     ui: &mut Ui,
     project: &Project,
     state: &mut DeviceEditorState,
     texts: &DeviceTexts,
     bindings: &[ModbusBinding],
+    master: bool,
     commit: Commit<'_, ModbusBinding>,
 ) -> Option<DeviceEdit> {
     ui.strong(&texts.channels);
@@ -32,13 +37,7 @@ pub(crate) fn channels_ui(
         key: "channels",
         row_key: "channel",
         name: &texts.channels,
-        columns: &[
-            &texts.variable,
-            &texts.table,
-            &texts.address,
-            &texts.data_type,
-            &texts.comment,
-        ],
+        columns: &columns(texts, master),
         rows: bindings,
         commit,
     };
@@ -80,6 +79,9 @@ pub(crate) fn channels_ui(
                 Ok(())
             },
         );
+        if master {
+            channel_master_cells_ui(ui, row, project, texts, binding);
+        }
         row.field("comment", &texts.comment, 160.0).text_ui(
             ui,
             &binding.comment,
@@ -109,6 +111,30 @@ pub(crate) fn channels_ui(
     });
     reason_ui(ui, state, texts, "channels");
     out
+}
+
+/// The titles of the table's columns: the master's settings only on a device the runtime
+/// masters, where they have an effect.
+fn columns(texts: &DeviceTexts, master: bool) -> Vec<&str> {
+    let mut columns = vec![
+        texts.variable.as_str(),
+        &texts.table,
+        &texts.address,
+        &texts.data_type,
+    ];
+    if master {
+        columns.extend([
+            texts.count.as_str(),
+            &texts.direction,
+            &texts.function_code,
+            &texts.trigger,
+            &texts.trigger_variable,
+            &texts.on_error,
+            &texts.error_flag,
+        ]);
+    }
+    columns.push(&texts.comment);
+    columns
 }
 
 /// A channel for `variable`: the data type of its declared type, a coil for a BOOL and a

@@ -1,6 +1,7 @@
 //! The editors of the device tree's nodes, as CODESYS's device editors: the controller (name,
-//! address, Modbus map override), I/O areas (direction, start byte, size), Modbus TCP devices
-//! (address, timing, channel table) and motion axes (task, unit, period, limits, scaling).
+//! address, Modbus map override), I/O areas (direction, start byte, size), serial ports (device
+//! file, line settings), Modbus devices (TCP or RTU link, timing, the runtime master's
+//! settings, channel table) and motion axes (task, unit, period, limits, scaling).
 //!
 //! Each editor draws the node's current value, keeps typed text in a [`DeviceEditorState`] and
 //! returns the edits of one gesture as a [`DeviceEdit`]; it never changes the model. A typed
@@ -9,6 +10,7 @@
 //! colour with the reason beside it and changes nothing.
 
 mod axis;
+mod channel_master;
 mod channels;
 mod controller;
 mod field;
@@ -16,7 +18,9 @@ mod form;
 mod io_area;
 mod map_ranges;
 mod modbus_device;
+mod modbus_master;
 mod refusal;
+mod serial_port;
 mod table;
 mod texts;
 
@@ -24,8 +28,9 @@ pub use axis::axis_editor_ui;
 pub use controller::controller_editor_ui;
 pub use field::DeviceEditorState;
 pub use io_area::io_area_editor_ui;
-pub use modbus_device::modbus_device_editor_ui;
+pub use modbus_device::{RoundRequests, modbus_device_editor_ui};
 pub use refusal::{Refusal, RefusalWords};
+pub use serial_port::{StandardSilence, serial_port_editor_ui, serial_port_rename_edits};
 pub use texts::DeviceTexts;
 
 use project_model::{DeviceProblem, Edit, new_problem};
@@ -64,11 +69,23 @@ fn set_label(texts: &DeviceTexts, field: &str, node: &str, value: &str) -> Strin
     fill(
         &texts.set_field,
         &[
-            ("field", &field.to_lowercase()),
+            ("field", &in_sentence(field)),
             ("node", node),
             ("value", value),
         ],
     )
+}
+
+/// A field's name inside a sentence: its first letter in lower case, unless the first word is
+/// an abbreviation ("I/O task", "ID"), which keeps its capitals.
+fn in_sentence(field: &str) -> String {
+    let first_word = field.split(' ').next().unwrap_or_default();
+    let capitals = first_word.chars().filter(|c| c.is_uppercase()).count();
+    let mut chars = field.chars();
+    match chars.next() {
+        Some(first) if capitals < 2 => first.to_lowercase().chain(chars).collect(),
+        _ => field.to_owned(),
+    }
 }
 
 /// The accessible label of a field of `node`: "Port of PLC".
@@ -88,5 +105,19 @@ fn row_label(texts: &DeviceTexts, field: &str, row: usize) -> String {
 fn keep(out: &mut Option<DeviceEdit>, edit: Option<DeviceEdit>) {
     if edit.is_some() {
         *out = edit;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_field_s_name_in_a_sentence_starts_in_lower_case_but_keeps_abbreviations() {
+        assert_eq!(in_sentence("Poll interval"), "poll interval");
+        assert_eq!(in_sentence("Own Modbus map"), "own Modbus map");
+        assert_eq!(in_sentence("I/O task"), "I/O task");
+        assert_eq!(in_sentence("端口"), "端口");
+        assert_eq!(in_sentence(""), "");
     }
 }

@@ -35,6 +35,9 @@ pub enum Refusal {
         /// The address given.
         address: String,
     },
+    /// A device switched to Modbus RTU in a project with no serial port to put it on.
+    #[error("add a serial port under the controller first")]
+    NoSerialPorts,
     /// A text that is not a finite number.
     #[error("'{text}' is not a number")]
     NotANumber {

@@ -3,8 +3,8 @@
 
 use super::refusal::RefusalWords;
 
-/// Every word the controller, I/O area, Modbus device and axis editors show; `Default` is
-/// English.
+/// Every word the controller, I/O area, serial port, Modbus device and axis editors show;
+/// `Default` is English.
 #[derive(Clone, Debug)]
 pub struct DeviceTexts {
     /// Field: a node's name.
@@ -63,6 +63,8 @@ pub struct DeviceTexts {
     pub low_first: String,
     /// Field: the poll interval.
     pub poll_interval: String,
+    /// Undo label's value of an emptied poll interval: none.
+    pub no_poll_interval: String,
     /// Field: the response timeout.
     pub timeout: String,
     /// Heading of a device's channel table.
@@ -121,6 +123,100 @@ pub struct DeviceTexts {
     pub dialect_iec_strict: String,
     /// Note under the dialect: what it decides.
     pub dialect_note: String,
+    /// Field: how a Modbus device is reached (TCP or a serial port).
+    pub link: String,
+    /// Link: Modbus TCP.
+    pub link_tcp: String,
+    /// Link: Modbus RTU on a serial port.
+    pub link_rtu: String,
+    /// Field: a Modbus RTU device's serial port.
+    pub serial_port: String,
+    /// Field: the task whose cycles copy a Modbus device's values (the runtime masters it).
+    pub io_task: String,
+    /// Choice of the I/O task: none, the studio polls the device.
+    pub no_task: String,
+    /// Note beside a studio device's task: what choosing a task does.
+    pub studio_device_note: String,
+    /// Field: when the runtime starts a round of a device.
+    pub schedule: String,
+    /// Schedule: a round every poll interval.
+    pub schedule_interval: String,
+    /// Schedule: a round after each cycle of the I/O task.
+    pub schedule_every_cycle: String,
+    /// Field: how many unused addresses a read request may bridge.
+    pub max_read_gap: String,
+    /// The unit after the read gap: coils or registers.
+    pub addresses: String,
+    /// Field: the device's `MODBUS_DEVICE_STATUS` variable.
+    pub status_variable: String,
+    /// Note after an optional field left empty.
+    pub optional: String,
+    /// How many requests a round of the device sends, for one: `{count}`.
+    pub request_per_round: String,
+    /// How many requests a round of the device sends: `{count}`.
+    pub requests_per_round: String,
+    /// Field: the requests of a round.
+    pub round: String,
+    /// Channel direction: read from the device.
+    pub read: String,
+    /// Channel direction: written to the device.
+    pub write: String,
+    /// Column: a write channel's function code.
+    pub function_code: String,
+    /// Function code: none chosen, the table's own (`{code}`).
+    pub default_code: String,
+    /// Function code 5.
+    pub write_single_coil: String,
+    /// Function code 15.
+    pub write_multiple_coils: String,
+    /// Function code 6.
+    pub write_single_register: String,
+    /// Function code 16.
+    pub write_multiple_registers: String,
+    /// Column: when a channel is sent or read.
+    pub trigger: String,
+    /// Trigger: in every round.
+    pub cyclic: String,
+    /// Trigger: on a rising edge of the trigger variable.
+    pub rising_edge: String,
+    /// Column: the BOOL whose rising edge triggers a channel.
+    pub trigger_variable: String,
+    /// Column: what a read channel's variable holds after a failed request.
+    pub on_error: String,
+    /// On error: the last value.
+    pub keep_last_value: String,
+    /// On error: zero.
+    pub set_to_zero: String,
+    /// Column: the BOOL that is TRUE while a channel's last request failed.
+    pub error_flag: String,
+    /// A cell that does not apply to the row.
+    pub not_applicable: String,
+    /// Field: a serial port's device file.
+    pub device_file: String,
+    /// Field: a serial port's baud rate.
+    pub baud_rate: String,
+    /// Field: a serial port's parity.
+    pub parity: String,
+    /// Parity: none.
+    pub parity_none: String,
+    /// Parity: even.
+    pub parity_even: String,
+    /// Parity: odd.
+    pub parity_odd: String,
+    /// Field: data bits per character.
+    pub data_bits: String,
+    /// Field: stop bits per character.
+    pub stop_bits: String,
+    /// Field: the silence before each request.
+    pub inter_frame_delay: String,
+    /// The unit after a time: microseconds.
+    pub microseconds: String,
+    /// Note after the inter-frame delay: what 0 means at this baud rate, `{us}`.
+    pub standard_delay: String,
+    /// Field: the Modbus devices on a serial port.
+    pub devices_on_port: String,
+    /// Shown when no device uses a serial port.
+    pub no_devices_on_port: String,
     /// Accessible label of a field: `{field}`, `{node}`.
     pub field_of: String,
     /// Accessible label of a cell of a table row: `{field}`, `{row}`.
@@ -169,6 +265,7 @@ impl Default for DeviceTexts {
             high_first: s("High word first"),
             low_first: s("Low word first"),
             poll_interval: s("Poll interval"),
+            no_poll_interval: s("none"),
             timeout: s("Timeout"),
             channels: s("Channels"),
             variable: s("Variable"),
@@ -200,6 +297,55 @@ impl Default for DeviceTexts {
             dialect_note: s(
                 "Where CODESYS accepts what IEC 61131-3 refuses, CODESYS V3.5 compiles it with a warning and IEC 61131-3 only refuses it; the next build checks by the rules chosen",
             ),
+            link: s("Link"),
+            link_tcp: s("Modbus TCP"),
+            link_rtu: s("Modbus RTU (serial port)"),
+            serial_port: s("Serial port"),
+            io_task: s("I/O task"),
+            no_task: s("None: polled by the studio"),
+            studio_device_note: s(
+                "Choose an I/O task to have the runtime master the device in that task's cycles",
+            ),
+            schedule: s("Schedule"),
+            schedule_interval: s("Every poll interval"),
+            schedule_every_cycle: s("Every cycle of the task"),
+            max_read_gap: s("Maximum read gap"),
+            addresses: s("coils or registers"),
+            status_variable: s("Status variable"),
+            optional: s("optional"),
+            request_per_round: s("{count} request per round"),
+            requests_per_round: s("{count} requests per round"),
+            round: s("Round"),
+            read: s("Read"),
+            write: s("Write"),
+            function_code: s("Function code"),
+            default_code: s("Default ({code})"),
+            write_single_coil: s("5: write single coil"),
+            write_multiple_coils: s("15: write multiple coils"),
+            write_single_register: s("6: write single register"),
+            write_multiple_registers: s("16: write multiple registers"),
+            trigger: s("Trigger"),
+            cyclic: s("Cyclic"),
+            rising_edge: s("Rising edge"),
+            trigger_variable: s("Trigger variable"),
+            on_error: s("On error"),
+            keep_last_value: s("Keep last value"),
+            set_to_zero: s("Set to zero"),
+            error_flag: s("Error flag"),
+            not_applicable: s("—"),
+            device_file: s("Device file"),
+            baud_rate: s("Baud rate"),
+            parity: s("Parity"),
+            parity_none: s("None"),
+            parity_even: s("Even"),
+            parity_odd: s("Odd"),
+            data_bits: s("Data bits"),
+            stop_bits: s("Stop bits"),
+            inter_frame_delay: s("Inter-frame delay"),
+            microseconds: s("µs"),
+            standard_delay: s("0 = 3.5 characters ({us} µs)"),
+            devices_on_port: s("Devices"),
+            no_devices_on_port: s("No Modbus device uses this port"),
             field_of: s("{field} of {node}"),
             field_of_row: s("{field} of row {row}"),
             set_field: s("Set {field} of {node} to {value}"),

@@ -50,6 +50,7 @@ pub enum RefusalText {
     RefuseNoPropertyType,
     RefuseNoMembers,
     RefuseSfcNotHere,
+    RefuseSerialPortInUse,
     TimeEmpty,
     TimeTooLong,
     TimeNotWholeMicros,
@@ -202,6 +203,10 @@ impl RefusalText {
             Self::RefuseSfcNotHere => (
                 "only a program or function block itself can be a Sequential Function Chart",
                 "只有程序或功能块本身可以用顺序功能图编写",
+            ),
+            Self::RefuseSerialPortInUse => (
+                "the serial port '{port}' is used by {devices}: move them to another port or delete them first",
+                "串口“{port}”正被 {devices} 使用：请先将这些设备移到其他串口或删除",
             ),
             Self::TimeEmpty => (
                 "enter a time such as T#10ms, or a number of microseconds",

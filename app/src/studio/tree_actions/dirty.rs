@@ -65,6 +65,14 @@ pub fn dirty_nodes(project: &Project, saved: &Project) -> HashSet<TreeNode> {
     );
     compare_list(
         &mut dirty,
+        &project.serial_ports,
+        &saved.serial_ports,
+        |p| &p.name,
+        TreeNode::SerialPorts,
+        TreeNode::SerialPort,
+    );
+    compare_list(
+        &mut dirty,
         &project.modbus_devices,
         &saved.modbus_devices,
         |d| &d.name,

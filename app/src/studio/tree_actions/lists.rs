@@ -1,10 +1,10 @@
-//! The four lists of the device tree (tasks, I/O areas, Modbus TCP devices, axes) seen through
-//! one interface, so adding, renaming, duplicating, deleting and reordering work alike.
+//! The five lists of the device tree (tasks, I/O areas, serial ports, Modbus devices, axes) seen
+//! through one interface, so adding, renaming, duplicating, deleting and reordering work alike.
 
 use project_model::{Edit, ListEdit, Project};
 
 use super::names::{NameScope, unique_name};
-use super::new_objects::{new_axis, new_io_area, new_modbus_device, new_task};
+use super::new_objects::{new_axis, new_io_area, new_modbus_device, new_serial_port, new_task};
 use crate::studio::i18n::Text;
 use crate::studio::tree_node::TreeNode;
 
@@ -15,7 +15,9 @@ pub enum ListKind {
     Tasks,
     /// The I/O areas.
     IoAreas,
-    /// The Modbus TCP devices.
+    /// The serial ports.
+    SerialPorts,
+    /// The Modbus devices.
     ModbusDevices,
     /// The motion axes.
     Axes,
@@ -27,6 +29,7 @@ impl ListKind {
         match node {
             TreeNode::Task(name) => Some((Self::Tasks, name)),
             TreeNode::IoArea(name) => Some((Self::IoAreas, name)),
+            TreeNode::SerialPort(name) => Some((Self::SerialPorts, name)),
             TreeNode::ModbusDevice(name) => Some((Self::ModbusDevices, name)),
             TreeNode::Axis(name) => Some((Self::Axes, name)),
             _ => None,
@@ -38,6 +41,7 @@ impl ListKind {
         match self {
             Self::Tasks => TreeNode::Task(name),
             Self::IoAreas => TreeNode::IoArea(name),
+            Self::SerialPorts => TreeNode::SerialPort(name),
             Self::ModbusDevices => TreeNode::ModbusDevice(name),
             Self::Axes => TreeNode::Axis(name),
         }
@@ -48,6 +52,7 @@ impl ListKind {
         match self {
             Self::Tasks => NameScope::Task,
             Self::IoAreas => NameScope::IoArea,
+            Self::SerialPorts => NameScope::SerialPort,
             Self::ModbusDevices => NameScope::ModbusDevice,
             Self::Axes => NameScope::Axis,
         }
@@ -58,6 +63,7 @@ impl ListKind {
         match self {
             Self::Tasks => Text::NounTask,
             Self::IoAreas => Text::NounIoArea,
+            Self::SerialPorts => Text::NounSerialPort,
             Self::ModbusDevices => Text::NounModbusDevice,
             Self::Axes => Text::NounAxis,
         }
@@ -68,6 +74,7 @@ impl ListKind {
         match self {
             Self::Tasks => "Task",
             Self::IoAreas => "IoArea",
+            Self::SerialPorts => "COM",
             Self::ModbusDevices => "ModbusDevice",
             Self::Axes => "Axis",
         }
@@ -78,6 +85,11 @@ impl ListKind {
         match self {
             Self::Tasks => project.tasks.iter().map(|t| t.name.as_str()).collect(),
             Self::IoAreas => project.io_areas.iter().map(|a| a.name.as_str()).collect(),
+            Self::SerialPorts => project
+                .serial_ports
+                .iter()
+                .map(|p| p.name.as_str())
+                .collect(),
             Self::ModbusDevices => project
                 .modbus_devices
                 .iter()
@@ -109,6 +121,10 @@ impl ListKind {
                 index: project.io_areas.len(),
                 item: new_io_area(project, name.clone()),
             }),
+            Self::SerialPorts => Edit::SerialPorts(ListEdit::Insert {
+                index: project.serial_ports.len(),
+                item: new_serial_port(name.clone()),
+            }),
             Self::ModbusDevices => Edit::ModbusDevices(ListEdit::Insert {
                 index: project.modbus_devices.len(),
                 item: new_modbus_device(name.clone()),
@@ -127,6 +143,7 @@ impl ListKind {
         Some(match self {
             Self::Tasks => Edit::Tasks(replace(&project.tasks, index, named)?),
             Self::IoAreas => Edit::IoAreas(replace(&project.io_areas, index, named)?),
+            Self::SerialPorts => Edit::SerialPorts(replace(&project.serial_ports, index, named)?),
             Self::ModbusDevices => {
                 Edit::ModbusDevices(replace(&project.modbus_devices, index, named)?)
             }
@@ -140,6 +157,9 @@ impl ListKind {
         Some(match self {
             Self::Tasks => Edit::Tasks(copy_after(&project.tasks, index, named)?),
             Self::IoAreas => Edit::IoAreas(copy_after(&project.io_areas, index, named)?),
+            Self::SerialPorts => {
+                Edit::SerialPorts(copy_after(&project.serial_ports, index, named)?)
+            }
             Self::ModbusDevices => {
                 Edit::ModbusDevices(copy_after(&project.modbus_devices, index, named)?)
             }
@@ -152,6 +172,7 @@ impl ListKind {
         match self {
             Self::Tasks => Edit::Tasks(ListEdit::Remove { index }),
             Self::IoAreas => Edit::IoAreas(ListEdit::Remove { index }),
+            Self::SerialPorts => Edit::SerialPorts(ListEdit::Remove { index }),
             Self::ModbusDevices => Edit::ModbusDevices(ListEdit::Remove { index }),
             Self::Axes => Edit::Axes(ListEdit::Remove { index }),
         }
@@ -162,6 +183,7 @@ impl ListKind {
         match self {
             Self::Tasks => Edit::Tasks(ListEdit::Move { from, to }),
             Self::IoAreas => Edit::IoAreas(ListEdit::Move { from, to }),
+            Self::SerialPorts => Edit::SerialPorts(ListEdit::Move { from, to }),
             Self::ModbusDevices => Edit::ModbusDevices(ListEdit::Move { from, to }),
             Self::Axes => Edit::Axes(ListEdit::Move { from, to }),
         }
@@ -186,6 +208,7 @@ macro_rules! set_name_field {
 set_name_field!(
     project_model::Task,
     project_model::IoArea,
+    project_model::SerialPort,
     project_model::ModbusDevice,
     project_model::Axis
 );

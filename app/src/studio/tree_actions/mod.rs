@@ -198,9 +198,14 @@ fn plan_rename(
         let edit = kind
             .renamed(project, index, name)
             .ok_or_else(|| missing(project, node))?;
+        let mut edits = vec![edit];
+        // The devices on a renamed serial port follow it, in the same undo step.
+        if kind == ListKind::SerialPorts {
+            edits.extend(editor::serial_port_rename_edits(project, old, name));
+        }
         return Ok(Some(Plan {
             label,
-            edits: vec![edit],
+            edits,
             open: None,
             select: Some(kind.entry(name.to_owned())),
             part: None,
@@ -343,6 +348,16 @@ fn rename_objects(folder: &mut Folder, rename: &mut impl FnMut(&mut Object)) {
 fn plan_delete(project: &Project, node: &TreeNode, language: Language) -> Result<Plan, Refusal> {
     let name = node.title(Some(project));
     let edit = if let Some((kind, entry)) = ListKind::of_entry(node) {
+        // A port the devices still name stays: deleting it would leave them dangling.
+        if kind == ListKind::SerialPorts {
+            let devices = project.devices_on_serial_port(entry);
+            if !devices.is_empty() {
+                return Err(Refusal::SerialPortInUse(
+                    entry.to_owned(),
+                    devices.into_iter().map(str::to_owned).collect(),
+                ));
+            }
+        }
         let index = kind
             .index_of(project, entry)
             .ok_or_else(|| missing(project, node))?;

@@ -18,10 +18,12 @@ pub enum NameScope<'a> {
     Task,
     /// I/O areas.
     IoArea,
-    /// Modbus TCP devices.
+    /// Modbus devices.
     ModbusDevice,
     /// Motion axes.
     Axis,
+    /// Serial ports.
+    SerialPort,
 }
 
 impl NameScope<'_> {
@@ -47,6 +49,7 @@ impl NameScope<'_> {
             Self::IoArea => project.io_areas.iter().any(|area| clashes(&area.name)),
             Self::ModbusDevice => project.modbus_devices.iter().any(|d| clashes(&d.name)),
             Self::Axis => project.axes.iter().any(|axis| clashes(&axis.name)),
+            Self::SerialPort => project.serial_ports.iter().any(|port| clashes(&port.name)),
         }
     }
 }

@@ -2,8 +2,8 @@
 
 use project_model::{
     Axis, AxisKind, AxisLimits, AxisScaling, CamTable, DataType, GlobalVarList, IoArea,
-    IoDirection, ModbusDevice, Object, Pou, PouKind, Project, SoftwareLimits, Task, TaskKind,
-    TraceConfig, TypeDefinition, WatchList,
+    IoDirection, ModbusDevice, Object, Pou, PouKind, Project, SerialPort, SoftwareLimits, Task,
+    TaskKind, TraceConfig, TypeDefinition, WatchList,
 };
 
 use super::body_language::BodyLanguage;
@@ -145,6 +145,12 @@ pub fn new_io_area(project: &Project, name: String) -> IoArea {
         size_bytes: 2,
         comment: String::new(),
     }
+}
+
+/// A serial port on the first USB serial adapter with the Modbus serial line standard's
+/// settings (19200 baud, 8 data bits, even parity, one stop bit).
+pub fn new_serial_port(name: String) -> SerialPort {
+    SerialPort::new(name, "/dev/ttyUSB0")
 }
 
 /// A Modbus TCP device on the standard port without bindings.

@@ -25,6 +25,9 @@ pub enum Refusal {
     /// An SFC chart was chosen for a function or a member: only the body of a program or
     /// function block itself can be one.
     SfcNotHere,
+    /// The serial port (named first) cannot be deleted while the Modbus devices named next
+    /// are on it: deleting it would leave them naming a port the project lacks.
+    SerialPortInUse(String, Vec<String>),
 }
 
 impl Refusal {
@@ -38,6 +41,17 @@ impl Refusal {
             Self::NoPropertyType => RefusalText::RefuseNoPropertyType.get(language).to_owned(),
             Self::NoMembers(pou) => RefusalText::RefuseNoMembers.fill(language, &[("pou", pou)]),
             Self::SfcNotHere => RefusalText::RefuseSfcNotHere.get(language).to_owned(),
+            Self::SerialPortInUse(port, devices) => {
+                // Chinese lists its items with the enumeration comma, English with commas.
+                let separator = match language {
+                    Language::English => ", ",
+                    Language::SimplifiedChinese => "、",
+                };
+                RefusalText::RefuseSerialPortInUse.fill(
+                    language,
+                    &[("port", port), ("devices", &devices.join(separator))],
+                )
+            }
         }
     }
 }
@@ -68,6 +82,18 @@ mod tests {
         assert_eq!(
             taken.text(Language::SimplifiedChinese),
             "名称“Main”已被使用"
+        );
+        let in_use = Refusal::SerialPortInUse(
+            "RS485".to_owned(),
+            vec!["Drive".to_owned(), "Meter".to_owned()],
+        );
+        assert_eq!(
+            in_use.text(Language::English),
+            "the serial port 'RS485' is used by Drive, Meter: move them to another port or delete them first"
+        );
+        assert_eq!(
+            in_use.text(Language::SimplifiedChinese),
+            "串口“RS485”正被 Drive、Meter 使用：请先将这些设备移到其他串口或删除"
         );
     }
 }

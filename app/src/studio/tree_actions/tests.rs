@@ -100,6 +100,38 @@ fn list_entries_reorder_and_duplicate_within_their_list() {
 }
 
 #[test]
+fn a_serial_port_is_deleted_only_when_no_device_names_it() {
+    let mut project = example();
+    project
+        .serial_ports
+        .push(project_model::SerialPort::new("RS485", "/dev/ttyUSB0"));
+    let mut drive = project.modbus_devices[0].clone();
+    drive.link = project_model::ModbusLink::Rtu {
+        serial_port: "rs485".into(),
+    };
+    let mut meter = drive.clone();
+    meter.name = "Meter".into();
+    project.modbus_devices = vec![drive.clone(), meter];
+    let delete = TreeAction::Delete(TreeNode::SerialPort("RS485".into()));
+    let Err(refusal) = plan(&project, &delete, Language::English) else {
+        panic!("a port two devices name was deleted");
+    };
+    assert_eq!(
+        refusal,
+        Refusal::SerialPortInUse("RS485".into(), vec!["BeltDrive".into(), "Meter".into()])
+    );
+    assert!(
+        refusal
+            .text(Language::SimplifiedChinese)
+            .contains("BeltDrive、Meter")
+    );
+    // Once the devices are gone, the port goes.
+    project.modbus_devices.clear();
+    apply(&mut project, delete);
+    assert!(project.serial_ports.is_empty());
+}
+
+#[test]
 fn a_duplicated_folder_gives_every_object_in_it_a_new_name() {
     let mut project = example();
     apply(
