@@ -242,6 +242,13 @@ pub enum Command {
         #[command(flatten)]
         target: Target,
     },
+    /// List the Modbus devices the runtime masters: state, last error, counters
+    /// (`docs/modbus-master.md` §9.1).
+    Devices {
+        /// The runtime to talk to.
+        #[command(flatten)]
+        target: Target,
+    },
     /// Set a breakpoint at FILE:LINE, or list or clear them (`docs/debugging.md` §7).
     Break(debug_cli::BreakArgs),
     /// Step the halted task into, over or out of a call, and show where it halts.
@@ -338,6 +345,7 @@ pub fn run(command: Command) -> ExitCode {
         }
         Command::Forces { target } => online_cli::run(&target, OnlineCommand::Forces),
         Command::Faults { target } => online_cli::run(&target, OnlineCommand::Faults),
+        Command::Devices { target } => online_cli::run(&target, OnlineCommand::Devices),
         Command::Break(args) => debug_cli::run(DebugCommand::Break(args)),
         Command::Step(args) => debug_cli::run(DebugCommand::Step(args)),
         Command::Continue(args) => debug_cli::run(DebugCommand::Continue(args)),

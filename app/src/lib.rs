@@ -22,6 +22,7 @@ mod export_cli;
 mod import_cli;
 mod literal_value;
 pub mod modbus_devices;
+pub mod modbus_devices_cli;
 pub mod online_change_cli;
 pub mod online_cli;
 pub mod plcopen_export;

@@ -1,5 +1,5 @@
 //! The online commands of the command line: `rivet status`, `download`, `start`, `stop`,
-//! `reset`, `read`, `write`, `force`, `unforce`, `forces`, `faults`, each against
+//! `reset`, `read`, `write`, `force`, `unforce`, `forces`, `faults`, `devices`, each against
 //! `--target HOST:PORT` over Rivet's online protocol (`docs/protocol.md`).
 
 #![allow(clippy::print_stdout, clippy::print_stderr)] // Printing is what a CLI is for.
@@ -98,6 +98,8 @@ pub enum OnlineCommand {
     Forces,
     /// List faults.
     Faults,
+    /// List the Modbus devices the runtime masters, with their states and counters.
+    Devices,
     /// Record a trace on the target and save it as CSV.
     Trace(TraceRequest),
 }
@@ -218,6 +220,15 @@ pub fn run(target: &Target, command: OnlineCommand) -> anyhow::Result<()> {
                 for fault in faults {
                     let place = if fault.line > 0 { format!("{}:{}", fault.file, fault.line) } else { fault.file.clone() };
                     println!("task '{}' cycle {}: {} in {} ({place})", fault.task, fault.cycle, fault.kind, fault.pou);
+                }
+            }
+            OnlineCommand::Devices => {
+                let devices = client.modbus_devices().await?;
+                if devices.is_empty() {
+                    println!("no Modbus devices");
+                }
+                for device in &devices {
+                    println!("{}", crate::modbus_devices_cli::device_line(device));
                 }
             }
         }

@@ -1,6 +1,6 @@
 //! The online commands against a real `rivet-runtime` on loopback: download, start, read,
 //! write, force, unforce, trace, stop, faults, and the password; the debugging commands in
-//! `debugging`.
+//! `debugging`; the runtime's Modbus master against independent slaves in `modbus`.
 
 #![allow(clippy::unwrap_used, clippy::expect_used)] // Test helpers may panic: a panic is a failed test.
 
@@ -10,6 +10,19 @@ use std::process::{Child, Command, Output, Stdio};
 
 #[path = "online_cli/debugging.rs"]
 mod debugging;
+#[path = "online_cli/modbus.rs"]
+mod modbus;
+
+/// The workspace tests' independent Modbus peers (pymodbus, socat), shared as the runtime's
+/// tests share them; each test uses a part of them.
+#[allow(dead_code)]
+#[path = "../../tests/src/peers.rs"]
+mod peers;
+
+/// The workspace tests' fault proxy, between the master and its slave.
+#[allow(dead_code)]
+#[path = "../../tests/src/fault_proxy.rs"]
+mod fault_proxy;
 
 /// The runtime binary, built beside `rivet` by `cargo test --workspace`.
 fn runtime_binary() -> PathBuf {
@@ -37,10 +50,17 @@ impl Drop for Runtime {
 }
 
 fn start_runtime(data: &Path, password: Option<&str>) -> Runtime {
+    start_runtime_with(data, password, &[])
+}
+
+/// A runtime on 127.0.0.1, port 0, with `arguments` after the usual ones
+/// (`--serial-port RS485=PATH`).
+fn start_runtime_with(data: &Path, password: Option<&str>, arguments: &[&str]) -> Runtime {
     let mut command = Command::new(runtime_binary());
     command
         .args(["--listen", "127.0.0.1:0", "--data-dir"])
-        .arg(data);
+        .arg(data)
+        .args(arguments);
     command.env_remove("RIVET_PASSWORD");
     if let Some(password) = password {
         command.env("RIVET_PASSWORD", password);

@@ -1,0 +1,625 @@
+//! The runtime's Modbus master end to end (`docs/modbus-master.md` §10): a project built and
+//! downloaded with the CLI masters an independent pymodbus slave, and the values, the status
+//! variable and `rivet devices` are checked through the CLI and through the slave's own API.
+//! Nothing here asserts timing: every wait has a generous deadline and counters must grow.
+
+use std::path::Path;
+use std::time::{Duration, Instant};
+
+use super::fault_proxy::{FaultProxy, ProxyMode};
+use super::peers::{PymodbusServer, SocatPair};
+use super::{ok, start_runtime, start_runtime_with, value_of};
+
+/// How long a value may take to travel between the slave and the program: far more than the
+/// few 10 ms cycles it needs, so a busy machine does not fail the test.
+const PATIENCE: Duration = Duration::from_secs(30);
+
+/// Waits until `condition` holds, asking again every 50 ms, or panics with `what` and the
+/// last thing `condition` saw.
+#[track_caller]
+fn wait_until(what: &str, mut condition: impl FnMut() -> Result<(), String>) {
+    let deadline = Instant::now() + PATIENCE;
+    loop {
+        let seen = match condition() {
+            Ok(()) => return,
+            Err(seen) => seen,
+        };
+        assert!(Instant::now() < deadline, "never {what}; last seen: {seen}");
+        std::thread::sleep(Duration::from_millis(50));
+    }
+}
+
+/// Where the master reads `Main.iIn` and writes `Main.iOut` in a slave.
+struct Registers {
+    /// The table `Main.iIn` is read from (`input_register` or `holding_register`).
+    read_table: &'static str,
+    /// The address `Main.iIn` is read from.
+    read_address: u16,
+    /// The holding register `Main.iOut` is written to.
+    write_address: u16,
+}
+
+/// Pymodbus's registers: input register 0 in, holding register 10 out.
+const PYMODBUS_REGISTERS: Registers = Registers {
+    read_table: "input_register",
+    read_address: 0,
+    write_address: 10,
+};
+
+/// Writes a project folder with the device at 127.0.0.1:`port` and pymodbus's registers.
+fn write_master_project(dir: &Path, port: u16) {
+    write_project_with(dir, port, &PYMODBUS_REGISTERS);
+}
+
+/// Writes a project folder: program `Main` (`iOut := iIn * 2`, counting its cycles in
+/// `udiCycles`) in a 10 ms task, and a runtime device at 127.0.0.1:`port` polled after every
+/// cycle, whose status is `GVL.stDev`: `registers` says where `Main.iIn` is read (set to zero
+/// on a failure, with the error flag `GVL.xInError`) and where `Main.iOut` is written.
+fn write_project_with(dir: &Path, port: u16, registers: &Registers) {
+    let Registers {
+        read_table,
+        read_address,
+        write_address,
+    } = registers;
+    std::fs::create_dir_all(dir.join("application")).unwrap();
+    std::fs::write(
+        dir.join("rivet.toml"),
+        format!(
+            "format_version = 3\nname = \"Master\"\n\
+             application = [\"GVL.gvl.toml\", \"Main.pou.toml\"]\n\
+             controller = {{ name = \"PLC\", host = \"127.0.0.1\", port = 5020 }}\n\n\
+             [[task]]\nname = \"MainTask\"\nkind = {{ type = \"cyclic\", interval_us = 10000 }}\n\
+             priority = 1\nprograms = [\"Main\"]\n\n\
+             [[modbus_device]]\nname = \"Slave\"\nhost = \"127.0.0.1\"\nport = {port}\n\
+             unit_id = 1\nword_order = \"high_first\"\npoll_interval_ms = 10\ntimeout_ms = 200\n\
+             task = \"MainTask\"\nschedule = \"every_cycle\"\nstatus = \"GVL.stDev\"\n\n\
+             [[modbus_device.binding]]\nvariable = \"Main.iIn\"\ntable = \"{read_table}\"\n\
+             address = {read_address}\ndata_type = \"int16\"\non_error = \"set_to_zero\"\n\
+             error_flag = \"GVL.xInError\"\n\n\
+             [[modbus_device.binding]]\nvariable = \"Main.iOut\"\ntable = \"holding_register\"\n\
+             address = {write_address}\ndata_type = \"int16\"\ndirection = \"write\"\n"
+        ),
+    )
+    .unwrap();
+    let variable = |name: &str, section: &str, ty: &str| {
+        format!("\n[[variable]]\nname = \"{name}\"\nsection = \"{section}\"\ntype = \"{ty}\"\n")
+    };
+    std::fs::write(
+        dir.join("application/GVL.gvl.toml"),
+        format!(
+            "{}{}",
+            variable("stDev", "VAR_GLOBAL", "MODBUS_DEVICE_STATUS"),
+            variable("xInError", "VAR_GLOBAL", "BOOL")
+        ),
+    )
+    .unwrap();
+    std::fs::write(
+        dir.join("application/Main.pou.toml"),
+        format!(
+            "kind = \"program\"\nbody = {{ language = \"st\" }}\n{}{}{}",
+            variable("iIn", "VAR", "INT"),
+            variable("iOut", "VAR", "INT"),
+            variable("udiCycles", "VAR", "UDINT")
+        ),
+    )
+    .unwrap();
+    std::fs::write(
+        dir.join("application/Main.st"),
+        "iOut := iIn * 2;\nudiCycles := udiCycles + 1;\n",
+    )
+    .unwrap();
+}
+
+/// What `rivet read` prints for `paths` on `target`.
+fn read(paths: &[&str], target: &str) -> String {
+    ok(&[&["read"][..], paths, &["--target", target]].concat())
+}
+
+/// The text after `name = ` in `rivet read`'s output.
+#[track_caller]
+fn text_of(output: &str, name: &str) -> String {
+    output
+        .lines()
+        .find_map(|line| line.strip_prefix(&format!("{name} = ")))
+        .unwrap_or_else(|| panic!("no {name} in {output}"))
+        .trim()
+        .to_owned()
+}
+
+/// Waits until the program reads `value` from input register 0 and the slave holds twice it
+/// in holding register 10.
+#[track_caller]
+fn wait_for_the_round_trip(slave: &mut PymodbusServer, value: u16, target: &str) {
+    slave.set("ir", 0, value);
+    let doubled = i64::from(value) * 2;
+    wait_until(&format!("Main.iOut = {doubled}"), || {
+        let read = read(&["Main.iOut"], target);
+        (value_of(&read, "Main.iOut") == doubled)
+            .then_some(())
+            .ok_or(read)
+    });
+    wait_until(&format!("hr 10 = {doubled} in the slave"), || {
+        let held = slave.get("hr", 10);
+        (i64::from(held) == doubled)
+            .then_some(())
+            .ok_or_else(|| held.to_string())
+    });
+}
+
+/// The one line of `rivet devices` for the device `Slave`.
+#[track_caller]
+fn devices_line(target: &str) -> String {
+    let devices = ok(&["devices", "--target", target]);
+    let lines: Vec<&str> = devices.lines().collect();
+    assert_eq!(lines.len(), 1, "{devices}");
+    assert!(lines[0].starts_with("device 'Slave': "), "{devices}");
+    lines[0].to_owned()
+}
+
+/// The number before `word` in a `rivet devices` line (`123 rounds`).
+#[track_caller]
+fn counter_of(line: &str, word: &str) -> u64 {
+    line.split(", ")
+        .find_map(|part| part.strip_suffix(&format!(" {word}"))?.parse().ok())
+        .unwrap_or_else(|| panic!("no {word} in {line}"))
+}
+
+#[test]
+fn modbus_tcp_master_against_pymodbus_values_both_ways_status_and_devices() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut slave = PymodbusServer::tcp(0);
+    let project = dir.path().join("project");
+    write_master_project(&project, slave.port);
+    let project = project.to_str().unwrap();
+    let image = dir.path().join("image.bin");
+    ok(&["build", project, "--output", image.to_str().unwrap()]);
+    assert!(image.is_file());
+    let runtime = start_runtime(&dir.path().join("data"), None);
+    let target = runtime.target.as_str();
+    ok(&["download", project, "--start", "--target", target]);
+
+    wait_for_the_round_trip(&mut slave, 21, target);
+    wait_for_the_round_trip(&mut slave, 50, target);
+
+    let status = [
+        "GVL.stDev.xConnected",
+        "GVL.stDev.xError",
+        "GVL.stDev.udiRounds",
+        "GVL.xInError",
+    ];
+    let first = read(&status, target);
+    assert_eq!(text_of(&first, "GVL.stDev.xConnected"), "TRUE", "{first}");
+    assert_eq!(text_of(&first, "GVL.stDev.xError"), "FALSE", "{first}");
+    assert_eq!(text_of(&first, "GVL.xInError"), "FALSE", "{first}");
+    let rounds = value_of(&first, "GVL.stDev.udiRounds");
+    wait_until("udiRounds growing", || {
+        let again = read(&status, target);
+        (value_of(&again, "GVL.stDev.udiRounds") > rounds)
+            .then_some(())
+            .ok_or(again)
+    });
+
+    // `rivet devices` says what the status variable says, and its counters grow too.
+    let line = devices_line(target);
+    assert!(
+        line.starts_with("device 'Slave': communicating, last error RESPONSE_SUCCESS, last exception 0, 0 consecutive errors"),
+        "{line}"
+    );
+    let devices_rounds = counter_of(&line, "rounds");
+    assert!(devices_rounds > 0, "{line}");
+    assert_eq!(counter_of(&line, "errors"), 0, "{line}");
+    wait_until("the rounds of rivet devices growing", || {
+        let again = devices_line(target);
+        (counter_of(&again, "rounds") > devices_rounds)
+            .then_some(())
+            .ok_or(again)
+    });
+}
+
+#[test]
+fn modbus_tcp_master_rides_out_a_stopped_slave_and_exceptions_while_the_task_runs() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut slave = PymodbusServer::tcp(0);
+    let port = slave.port;
+    let project = dir.path().join("project");
+    write_master_project(&project, port);
+    let project = project.to_str().unwrap();
+    let runtime = start_runtime(&dir.path().join("data"), None);
+    let target = runtime.target.as_str();
+    ok(&["download", project, "--start", "--target", target]);
+    wait_for_the_round_trip(&mut slave, 21, target);
+
+    // The slave stops: no connection, the read channel set to zero, its error flag set, and
+    // the task's cycles still counting.
+    drop(slave);
+    let cycles = value_of(&read(&["Main.udiCycles"], target), "Main.udiCycles");
+    let fields = [
+        "GVL.stDev.xConnected",
+        "GVL.stDev.xError",
+        "GVL.stDev.eLastError",
+        "GVL.stDev.udiConsecutiveErrors",
+        "GVL.xInError",
+        "Main.iIn",
+        "Main.udiCycles",
+    ];
+    wait_until("the stopped slave reported", || {
+        let seen = read(&fields, target);
+        let reported = text_of(&seen, "GVL.stDev.xConnected") == "FALSE"
+            && text_of(&seen, "GVL.stDev.xError") == "TRUE"
+            && text_of(&seen, "GVL.stDev.eLastError").contains("TCP_COMMUNICATION_ERROR")
+            && value_of(&seen, "GVL.stDev.udiConsecutiveErrors") > 1
+            && text_of(&seen, "GVL.xInError") == "TRUE"
+            && value_of(&seen, "Main.iIn") == 0
+            && value_of(&seen, "Main.udiCycles") > cycles;
+        reported.then_some(()).ok_or(seen)
+    });
+    let line = devices_line(target);
+    assert!(
+        line.starts_with("device 'Slave': not answering, last error TCP_COMMUNICATION_ERROR"),
+        "{line}"
+    );
+    let errors = value_of(
+        &read(&["GVL.stDev.udiConsecutiveErrors"], target),
+        "GVL.stDev.udiConsecutiveErrors",
+    );
+    wait_until("the consecutive errors growing", || {
+        let seen = read(&["GVL.stDev.udiConsecutiveErrors"], target);
+        (value_of(&seen, "GVL.stDev.udiConsecutiveErrors") > errors)
+            .then_some(())
+            .ok_or(seen)
+    });
+
+    // The slave comes back on the same port: the master reconnects and the values follow.
+    let mut slave = PymodbusServer::tcp(port);
+    wait_for_the_round_trip(&mut slave, 30, target);
+    wait_until("the error cleared", || {
+        let seen = read(&["GVL.stDev.xError", "GVL.xInError"], target);
+        (text_of(&seen, "GVL.stDev.xError") == "FALSE" && text_of(&seen, "GVL.xInError") == "FALSE")
+            .then_some(())
+            .ok_or(seen)
+    });
+
+    // Exceptions: still connected, the exception code kept, the status and `rivet devices`
+    // agreeing.
+    slave.exceptions(true);
+    wait_until("exception 2 reported", || {
+        let seen = read(
+            &[
+                "GVL.stDev.xConnected",
+                "GVL.stDev.xError",
+                "GVL.stDev.byLastException",
+            ],
+            target,
+        );
+        let reported = text_of(&seen, "GVL.stDev.xConnected") == "TRUE"
+            && text_of(&seen, "GVL.stDev.xError") == "TRUE"
+            && text_of(&seen, "GVL.stDev.byLastException").ends_with('2');
+        reported.then_some(()).ok_or(seen)
+    });
+    let line = devices_line(target);
+    assert!(
+        line.starts_with(
+            "device 'Slave': answering with errors, last error ILLEGAL_DATA_ADDRESS, last exception 2"
+        ),
+        "{line}"
+    );
+    slave.exceptions(false);
+    wait_for_the_round_trip(&mut slave, 40, target);
+    wait_until("communicating again", || {
+        let line = devices_line(target);
+        line.starts_with("device 'Slave': communicating")
+            .then_some(())
+            .ok_or(line)
+    });
+}
+
+/// The slave runtime's program: it counts `%MW0` (holding register 1024 in the default map)
+/// up and copies `%QW0` (holding register 0), which the master writes, into `copy`.
+const SLAVE_PROGRAM: &str = "PROGRAM Slave
+VAR counter AT %MW0 : INT; received AT %QW0 : INT; copy : INT; END_VAR
+counter := (counter + 1) MOD 10000;
+copy := received;
+END_PROGRAM
+";
+
+#[test]
+fn modbus_tcp_master_against_a_second_rivet_runtime_as_the_slave() {
+    let dir = tempfile::tempdir().unwrap();
+    let slave_source = dir.path().join("slave.st");
+    std::fs::write(&slave_source, SLAVE_PROGRAM).unwrap();
+    let slave = start_runtime(&dir.path().join("slave-data"), None);
+    let slave_target = slave.target.as_str();
+    ok(&[
+        "download",
+        slave_source.to_str().unwrap(),
+        "--start",
+        "--target",
+        slave_target,
+    ]);
+    // A runtime whose program has no runtime devices lists none.
+    assert_eq!(
+        ok(&["devices", "--target", slave_target]).trim(),
+        "no Modbus devices"
+    );
+    let slave_port: u16 = slave_target
+        .rsplit(':')
+        .next()
+        .and_then(|port| port.parse().ok())
+        .unwrap();
+
+    let project = dir.path().join("project");
+    write_project_with(
+        &project,
+        slave_port,
+        &Registers {
+            read_table: "holding_register",
+            read_address: 1024,
+            write_address: 0,
+        },
+    );
+    let master = start_runtime(&dir.path().join("master-data"), None);
+    let target = master.target.as_str();
+    ok(&[
+        "download",
+        project.to_str().unwrap(),
+        "--start",
+        "--target",
+        target,
+    ]);
+
+    // The master reads the slave's counter, and the slave receives twice it: both grow, and
+    // what the slave received is always an even number the master computed.
+    let mut last_copy = 0;
+    for round in 0..2 {
+        wait_until(&format!("the slave's copy growing ({round})"), || {
+            let read_slave = read(&["Slave.copy"], slave_target);
+            let copy = value_of(&read_slave, "Slave.copy");
+            (copy > last_copy && copy % 2 == 0)
+                .then(|| last_copy = copy)
+                .ok_or(read_slave)
+        });
+    }
+    let read_master = read(
+        &[
+            "Main.iIn",
+            "Main.iOut",
+            "GVL.stDev.xConnected",
+            "GVL.stDev.xError",
+        ],
+        target,
+    );
+    assert_eq!(
+        value_of(&read_master, "Main.iOut"),
+        value_of(&read_master, "Main.iIn") * 2,
+        "{read_master}"
+    );
+    assert_eq!(
+        text_of(&read_master, "GVL.stDev.xConnected"),
+        "TRUE",
+        "{read_master}"
+    );
+    assert_eq!(
+        text_of(&read_master, "GVL.stDev.xError"),
+        "FALSE",
+        "{read_master}"
+    );
+    assert!(devices_line(target).starts_with("device 'Slave': communicating"));
+}
+
+/// Writes a project folder: program `Main` (`iOut := iIn * 2; iOut2 := iIn2 + 1;`, counting
+/// its cycles) in a 10 ms task, a serial port RS485 (19200 8N1; its device file is given to
+/// the runtime with `--serial-port`) and two devices on it polled after every cycle, units 1
+/// and 2, each reading input register 0 and writing holding register 10, with the statuses
+/// `GVL.stOne` and `GVL.stTwo`.
+fn write_rtu_project(dir: &Path) {
+    std::fs::create_dir_all(dir.join("application")).unwrap();
+    let device = |name: &str, unit: u8, input: &str, output: &str, status: &str| {
+        format!(
+            "\n[[modbus_device]]\nname = \"{name}\"\nserial_port = \"RS485\"\nunit_id = {unit}\n\
+             word_order = \"high_first\"\ntimeout_ms = 200\ntask = \"MainTask\"\n\
+             schedule = \"every_cycle\"\nstatus = \"{status}\"\n\n\
+             [[modbus_device.binding]]\nvariable = \"{input}\"\ntable = \"input_register\"\n\
+             address = 0\ndata_type = \"int16\"\n\n\
+             [[modbus_device.binding]]\nvariable = \"{output}\"\ntable = \"holding_register\"\n\
+             address = 10\ndata_type = \"int16\"\ndirection = \"write\"\n"
+        )
+    };
+    std::fs::write(
+        dir.join("rivet.toml"),
+        format!(
+            "format_version = 3\nname = \"RtuMaster\"\n\
+             application = [\"GVL.gvl.toml\", \"Main.pou.toml\"]\n\
+             controller = {{ name = \"PLC\", host = \"127.0.0.1\", port = 5020 }}\n\n\
+             [[task]]\nname = \"MainTask\"\nkind = {{ type = \"cyclic\", interval_us = 10000 }}\n\
+             priority = 1\nprograms = [\"Main\"]\n\n\
+             [[serial_port]]\nname = \"RS485\"\ndevice = \"/dev/ttyUSB0\"\nbaud_rate = 19200\n\
+             parity = \"none\"\ndata_bits = 8\nstop_bits = 1\n{}{}",
+            device("One", 1, "Main.iIn", "Main.iOut", "GVL.stOne"),
+            device("Two", 2, "Main.iIn2", "Main.iOut2", "GVL.stTwo"),
+        ),
+    )
+    .unwrap();
+    let variable = |name: &str, section: &str, ty: &str| {
+        format!("\n[[variable]]\nname = \"{name}\"\nsection = \"{section}\"\ntype = \"{ty}\"\n")
+    };
+    std::fs::write(
+        dir.join("application/GVL.gvl.toml"),
+        format!(
+            "{}{}",
+            variable("stOne", "VAR_GLOBAL", "MODBUS_DEVICE_STATUS"),
+            variable("stTwo", "VAR_GLOBAL", "MODBUS_DEVICE_STATUS")
+        ),
+    )
+    .unwrap();
+    let mut pou = "kind = \"program\"\nbody = { language = \"st\" }\n".to_owned();
+    for name in ["iIn", "iOut", "iIn2", "iOut2"] {
+        pou.push_str(&variable(name, "VAR", "INT"));
+    }
+    pou.push_str(&variable("udiCycles", "VAR", "UDINT"));
+    std::fs::write(dir.join("application/Main.pou.toml"), pou).unwrap();
+    std::fs::write(
+        dir.join("application/Main.st"),
+        "iOut := iIn * 2;\niOut2 := iIn2 + 1;\nudiCycles := udiCycles + 1;\n",
+    )
+    .unwrap();
+}
+
+/// Waits until `table` register `address` of the slave holds `value`.
+#[track_caller]
+fn wait_for_the_slave(slave: &mut PymodbusServer, table: &str, address: u16, value: u16) {
+    wait_until(&format!("{table} {address} = {value} in the slave"), || {
+        let held = slave.get(table, address);
+        (held == value)
+            .then_some(())
+            .ok_or_else(|| held.to_string())
+    });
+}
+
+/// Waits until `rivet read` shows `path` = `value` on `target`.
+#[track_caller]
+fn wait_for_the_program(path: &str, value: i64, target: &str) {
+    wait_until(&format!("{path} = {value}"), || {
+        let seen = read(&[path], target);
+        (value_of(&seen, path) == value).then_some(()).ok_or(seen)
+    });
+}
+
+#[test]
+fn modbus_rtu_master_with_two_units_on_a_socat_cable_and_a_pulled_cable() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut cable = SocatPair::start(dir.path());
+    let mut slave = PymodbusServer::rtu(&cable.slave, 19200, 'N', 1, &[1, 2]);
+    let project = dir.path().join("project");
+    write_rtu_project(&project);
+    let port = format!("RS485={}", cable.master.display());
+    let runtime = start_runtime_with(
+        &dir.path().join("data"),
+        None,
+        &["--serial-port", port.as_str()],
+    );
+    let target = runtime.target.as_str();
+    ok(&[
+        "download",
+        project.to_str().unwrap(),
+        "--start",
+        "--target",
+        target,
+    ]);
+
+    slave.set("ir", 0, 21);
+    slave.set("2.ir", 0, 7);
+    wait_for_the_program("Main.iOut", 42, target);
+    wait_for_the_program("Main.iOut2", 8, target);
+    wait_for_the_slave(&mut slave, "hr", 10, 42);
+    wait_for_the_slave(&mut slave, "2.hr", 10, 8);
+    slave.set("ir", 0, 50);
+    slave.set("2.ir", 0, 70);
+    wait_for_the_program("Main.iOut", 100, target);
+    wait_for_the_program("Main.iOut2", 71, target);
+    wait_for_the_slave(&mut slave, "hr", 10, 100);
+    wait_for_the_slave(&mut slave, "2.hr", 10, 71);
+    let status = read(&["GVL.stOne.xConnected", "GVL.stTwo.xConnected"], target);
+    assert_eq!(text_of(&status, "GVL.stOne.xConnected"), "TRUE", "{status}");
+    assert_eq!(text_of(&status, "GVL.stTwo.xConnected"), "TRUE", "{status}");
+    let devices = ok(&["devices", "--target", target]);
+    assert_eq!(devices.lines().count(), 2, "{devices}");
+    assert!(
+        devices
+            .lines()
+            .all(|line| line.contains(": communicating, last error RESPONSE_SUCCESS")),
+        "{devices}"
+    );
+
+    // The cable pulled: both devices of the port report a serial port error while the task
+    // goes on counting its cycles.
+    drop(slave);
+    cable.kill();
+    let cycles = value_of(&read(&["Main.udiCycles"], target), "Main.udiCycles");
+    wait_until("a serial port error for both devices", || {
+        let seen = read(
+            &[
+                "GVL.stOne.eLastError",
+                "GVL.stTwo.eLastError",
+                "Main.udiCycles",
+            ],
+            target,
+        );
+        let reported = text_of(&seen, "GVL.stOne.eLastError").contains("SERIAL_PORT_ERROR")
+            && text_of(&seen, "GVL.stTwo.eLastError").contains("SERIAL_PORT_ERROR")
+            && value_of(&seen, "Main.udiCycles") > cycles;
+        reported.then_some(()).ok_or(seen)
+    });
+    let devices = ok(&["devices", "--target", target]);
+    assert!(
+        devices
+            .lines()
+            .all(|line| line.contains(": serial port error, last error SERIAL_PORT_ERROR")),
+        "{devices}"
+    );
+
+    // The cable back: the master opens the port again and the values follow.
+    cable.restart();
+    let mut slave = PymodbusServer::rtu(&cable.slave, 19200, 'N', 1, &[1, 2]);
+    slave.set("ir", 0, 60);
+    slave.set("2.ir", 0, 5);
+    wait_for_the_program("Main.iOut", 120, target);
+    wait_for_the_program("Main.iOut2", 6, target);
+    wait_for_the_slave(&mut slave, "hr", 10, 120);
+    wait_for_the_slave(&mut slave, "2.hr", 10, 6);
+}
+
+#[test]
+fn modbus_tcp_master_behind_a_slow_proxy_reports_timeouts_and_resumes() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut slave = PymodbusServer::tcp(0);
+    let proxy =
+        FaultProxy::start(std::net::SocketAddr::from(([127, 0, 0, 1], slave.port))).unwrap();
+    let project = dir.path().join("project");
+    write_master_project(&project, proxy.address().port());
+    let runtime = start_runtime(&dir.path().join("data"), None);
+    let target = runtime.target.as_str();
+    ok(&[
+        "download",
+        project.to_str().unwrap(),
+        "--start",
+        "--target",
+        target,
+    ]);
+    wait_for_the_round_trip(&mut slave, 21, target);
+
+    // Answers three times the 200 ms timeout late: timeouts, a new connection each time, and
+    // `rivet devices` agreeing with the status variable.
+    proxy.set_mode(ProxyMode::Delay(Duration::from_millis(600)));
+    let connections = proxy.connections();
+    let cycles = value_of(&read(&["Main.udiCycles"], target), "Main.udiCycles");
+    wait_until("timeouts with reconnections", || {
+        let seen = read(
+            &[
+                "GVL.stDev.xConnected",
+                "GVL.stDev.eLastError",
+                "Main.udiCycles",
+            ],
+            target,
+        );
+        let reported = text_of(&seen, "GVL.stDev.xConnected") == "FALSE"
+            && text_of(&seen, "GVL.stDev.eLastError").contains("RESPONSE_TIMEOUT")
+            && value_of(&seen, "Main.udiCycles") > cycles
+            && proxy.connections() > connections + 1;
+        reported.then_some(()).ok_or(seen)
+    });
+    let line = devices_line(target);
+    assert!(
+        line.starts_with("device 'Slave': not answering, last error RESPONSE_TIMEOUT"),
+        "{line}"
+    );
+    assert!(counter_of(&line, "consecutive errors") > 0, "{line}");
+
+    proxy.set_mode(ProxyMode::Pass);
+    wait_for_the_round_trip(&mut slave, 33, target);
+    wait_until("communicating again", || {
+        let line = devices_line(target);
+        line.starts_with("device 'Slave': communicating")
+            .then_some(())
+            .ok_or(line)
+    });
+}
