@@ -19,16 +19,20 @@ pub fn required_program(name: &str) -> String {
     String::from_utf8_lossy(&found.stdout).trim().to_owned()
 }
 
-/// A Python interpreter that can import pymodbus: `$RIVET_PYTHON`, `python3` on the path, or
-/// Debian's `/usr/bin/python3` (which a pyenv on the path may hide).
+/// A Python interpreter that can import what the peer script imports (pymodbus 3.0's server
+/// and RTU framer, and serial_asyncio): `$RIVET_PYTHON`, Debian's `/usr/bin/python3` (whose
+/// pymodbus the script is written for), or `python3` on the path.
 #[track_caller]
 pub fn python_with_pymodbus() -> String {
     let candidates = std::env::var("RIVET_PYTHON")
         .into_iter()
-        .chain(["python3".to_owned(), "/usr/bin/python3".to_owned()]);
+        .chain(["/usr/bin/python3".to_owned(), "python3".to_owned()]);
     for python in candidates {
         let imports = Command::new(&python)
-            .args(["-c", "import pymodbus"])
+            .args([
+                "-c",
+                "import pymodbus.server.async_io, pymodbus.framer.rtu_framer, serial_asyncio",
+            ])
             .output();
         if imports.is_ok_and(|output| output.status.success()) {
             return python;

@@ -109,10 +109,16 @@ fn a_program_reads_and_writes_a_device_and_recovers_when_its_server_comes_back()
     });
     assert_eq!(read(&scheduler, "Main.xInError", 1), [0]);
     assert_eq!(read_int(&scheduler, "Main.iZeroed"), 5);
-    // The last failure's kind is kept for the user to read.
-    assert_eq!(
-        status(&scheduler).last_error,
-        error_codes::TCP_COMMUNICATION_ERROR
+    // The last failure's kind is kept for the user to read: the stopped server's, or a
+    // timeout's if a request of the restart was late on a loaded machine.
+    let kept = status(&scheduler).last_error;
+    assert!(
+        [
+            error_codes::TCP_COMMUNICATION_ERROR,
+            error_codes::RESPONSE_TIMEOUT
+        ]
+        .contains(&kept),
+        "{kept:#x}"
     );
     scheduler.shutdown().unwrap();
 }
