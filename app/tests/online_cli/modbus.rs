@@ -51,6 +51,11 @@ fn write_master_project(dir: &Path, port: u16) {
     write_project_with(dir, port, &PYMODBUS_REGISTERS);
 }
 
+/// A `[[variable]]` table of a global variable list or POU file.
+fn variable(name: &str, section: &str, ty: &str) -> String {
+    format!("\n[[variable]]\nname = \"{name}\"\nsection = \"{section}\"\ntype = \"{ty}\"\n")
+}
+
 /// Writes a project folder: program `Main` (`iOut := iIn * 2`, counting its cycles in
 /// `udiCycles`) in a 10 ms task, and a runtime device at 127.0.0.1:`port` polled after every
 /// cycle, whose status is `GVL.stDev`: `registers` says where `Main.iIn` is read (set to zero
@@ -81,9 +86,6 @@ fn write_project_with(dir: &Path, port: u16, registers: &Registers) {
         ),
     )
     .unwrap();
-    let variable = |name: &str, section: &str, ty: &str| {
-        format!("\n[[variable]]\nname = \"{name}\"\nsection = \"{section}\"\ntype = \"{ty}\"\n")
-    };
     std::fs::write(
         dir.join("application/GVL.gvl.toml"),
         format!(
@@ -448,9 +450,6 @@ fn write_rtu_project(dir: &Path) {
         ),
     )
     .unwrap();
-    let variable = |name: &str, section: &str, ty: &str| {
-        format!("\n[[variable]]\nname = \"{name}\"\nsection = \"{section}\"\ntype = \"{ty}\"\n")
-    };
     std::fs::write(
         dir.join("application/GVL.gvl.toml"),
         format!(
