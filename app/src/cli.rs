@@ -58,6 +58,8 @@ pub enum Command {
     ///
     /// Time advances by the task interval each cycle (a single `.st` file with one PROGRAM
     /// runs in an implicit 10 ms task); with several tasks, N counts cycles of the fastest.
+    /// Runtime Modbus devices are not polled: variables they fill keep their values unless
+    /// `--set` writes them, so that a run gives the same output every time.
     Simulate {
         /// The project folder, or a `.st` source file.
         project: PathBuf,
