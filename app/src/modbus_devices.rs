@@ -53,6 +53,21 @@ pub fn channel_index(device: &ModbusDevice, binding_index: usize) -> Option<usiz
     })
 }
 
+/// The elementary type a value of `data_type` is held in by a program variable.
+pub fn elementary_of(data_type: ModbusDataType) -> Elementary {
+    match data_type {
+        ModbusDataType::Bool => Elementary::Bool,
+        ModbusDataType::Int16 => Elementary::Int,
+        ModbusDataType::Uint16 => Elementary::Uint,
+        ModbusDataType::Int32 => Elementary::Dint,
+        ModbusDataType::Uint32 => Elementary::Udint,
+        ModbusDataType::Int64 => Elementary::Lint,
+        ModbusDataType::Uint64 => Elementary::Ulint,
+        ModbusDataType::Real => Elementary::Real,
+        ModbusDataType::Lreal => Elementary::Lreal,
+    }
+}
+
 /// The channels of a device node's bindings of one value ([`polled_bindings`]), in their order.
 pub fn channels_of(device: &ModbusDevice) -> Vec<Channel> {
     polled_bindings(device)
@@ -65,17 +80,7 @@ pub fn channels_of(device: &ModbusDevice) -> Vec<Channel> {
                 ModbusTable::InputRegister => Table::InputRegisters,
             },
             address: binding.address,
-            ty: match binding.data_type {
-                ModbusDataType::Bool => Elementary::Bool,
-                ModbusDataType::Int16 => Elementary::Int,
-                ModbusDataType::Uint16 => Elementary::Uint,
-                ModbusDataType::Int32 => Elementary::Dint,
-                ModbusDataType::Uint32 => Elementary::Udint,
-                ModbusDataType::Int64 => Elementary::Lint,
-                ModbusDataType::Uint64 => Elementary::Ulint,
-                ModbusDataType::Real => Elementary::Real,
-                ModbusDataType::Lreal => Elementary::Lreal,
-            },
+            ty: elementary_of(binding.data_type),
         })
         .collect()
 }

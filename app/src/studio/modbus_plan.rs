@@ -3,13 +3,13 @@
 //! and planned with `program_image::modbus_master::plan`, the function the runtime's master
 //! plans with (`docs/modbus-master.md` §6.2), so the count shown is the count sent.
 
+use program_image::ModbusTable;
 use program_image::modbus_master::{
     ChannelDef, DeviceDef, Direction, Link, OnError, Schedule, Trigger, WordOrder, plan,
 };
-use program_image::{Elementary, ModbusTable};
 use project_model::{
-    ChannelDirection, ChannelErrorAction, ChannelTrigger, ModbusBinding, ModbusDataType,
-    ModbusDevice, ModbusLink, ModbusSchedule, Project, same_identifier,
+    ChannelDirection, ChannelErrorAction, ChannelTrigger, ModbusBinding, ModbusDevice, ModbusLink,
+    ModbusSchedule, Project, same_identifier,
 };
 
 /// How many requests a round of `device` sends, planned as the build will plan it.
@@ -80,7 +80,7 @@ fn channel_def(binding: &ModbusBinding) -> ChannelDef {
         variable: binding.variable.clone(),
         table,
         address: binding.address,
-        value_type: value_type(binding.data_type),
+        value_type: crate::modbus_devices::elementary_of(binding.data_type),
         count: binding.count,
         direction,
         function_code: binding
@@ -92,21 +92,6 @@ fn channel_def(binding: &ModbusBinding) -> ChannelDef {
             ChannelErrorAction::SetToZero => OnError::SetToZero,
         },
         error_flag: binding.error_flag.clone(),
-    }
-}
-
-/// The elementary type a value of `data_type` is copied as.
-fn value_type(data_type: ModbusDataType) -> Elementary {
-    match data_type {
-        ModbusDataType::Bool => Elementary::Bool,
-        ModbusDataType::Int16 => Elementary::Int,
-        ModbusDataType::Uint16 => Elementary::Uint,
-        ModbusDataType::Int32 => Elementary::Dint,
-        ModbusDataType::Uint32 => Elementary::Udint,
-        ModbusDataType::Int64 => Elementary::Lint,
-        ModbusDataType::Uint64 => Elementary::Ulint,
-        ModbusDataType::Real => Elementary::Real,
-        ModbusDataType::Lreal => Elementary::Lreal,
     }
 }
 
@@ -123,7 +108,7 @@ fn position<'a>(names: impl Iterator<Item = &'a str>, name: &str) -> u32 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use project_model::{ModbusTable as Table, SerialPort};
+    use project_model::{ModbusDataType, ModbusTable as Table, SerialPort};
 
     fn register(variable: &str, address: u16) -> ModbusBinding {
         ModbusBinding::new(
