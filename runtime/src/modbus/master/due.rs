@@ -46,6 +46,9 @@ pub struct Due {
     next: Instant,
     /// The cycle ends the last every-cycle round answered.
     seen_cycle_ends: u64,
+    /// Whether the first round has been due: the schedule starts when the device begins
+    /// polling, not when the master was prepared.
+    began: bool,
     /// How often an every-cycle device is polled while its task has no cycles (the program is
     /// stopped): its task's interval, or 100 ms.
     idle_interval: Duration,
@@ -59,12 +62,16 @@ impl Due {
             seen_cycle_ends: exchange.cycle_ends(),
             exchange,
             next: Instant::now(),
+            began: false,
             idle_interval,
         }
     }
 
     /// Waits until a round is due.
     pub async fn wait(&mut self) -> RoundKind {
+        if !self.began {
+            self.begin();
+        }
         match self.schedule {
             Schedule::Interval { interval_ms } => loop {
                 tokio::select! {
@@ -103,6 +110,22 @@ impl Due {
                 }
             },
         }
+    }
+
+    /// Starts the schedule when the device begins polling. A master is prepared on the loading
+    /// thread and its devices begin polling only after the master it replaces has stopped
+    /// (`MasterStarter::go`), while the new program's cycles already run: the due times and
+    /// cycle ends passed meanwhile found no round running, so they are no overruns (§6.3
+    /// counts only what a running round made wait). The first round is due at once, the
+    /// interval's due times count from it, and cycle ends already passed make one round.
+    fn begin(&mut self) {
+        self.began = true;
+        self.next = Instant::now();
+        self.seen_cycle_ends = self
+            .exchange
+            .cycle_ends()
+            .saturating_sub(1)
+            .max(self.seen_cycle_ends);
     }
 
     /// Moves the due time past the round that starts now. When the last round ended after
@@ -153,6 +176,50 @@ mod tests {
         assert_eq!(Instant::now() - start, Duration::from_millis(35));
         assert_eq!(due.wait().await, RoundKind::Full { overruns: 0 });
         assert_eq!(Instant::now() - start, Duration::from_millis(40));
+    }
+
+    #[tokio::test(start_paused = true)]
+    async fn due_times_passed_before_the_device_began_polling_are_no_overruns() {
+        // The master is prepared at load; its devices begin polling 35 ms later, once the old
+        // master has stopped. No round ran meanwhile, so nothing was dropped by one.
+        let schedule = Schedule::Interval { interval_ms: 10 };
+        let mut due = Due::new(schedule, exchange(), Duration::from_millis(100));
+        tokio::time::advance(Duration::from_millis(35)).await;
+        let began = Instant::now();
+        assert_eq!(due.wait().await, RoundKind::Full { overruns: 0 });
+        assert_eq!(Instant::now(), began);
+        // The interval counts from the first round.
+        assert_eq!(due.wait().await, RoundKind::Full { overruns: 0 });
+        assert_eq!(Instant::now() - began, Duration::from_millis(10));
+    }
+
+    #[tokio::test(start_paused = true)]
+    async fn cycle_ends_before_the_device_began_polling_make_one_round_without_overruns() {
+        // The new program's first cycles end before its master's devices begin polling (the
+        // start-up of a download): no round was running at those ends.
+        let exchange = exchange();
+        let mut due = Due::new(
+            Schedule::EveryCycle,
+            Arc::clone(&exchange),
+            Duration::from_millis(100),
+        );
+        exchange.set_running(true);
+        exchange.cycle_ended(false);
+        exchange.cycle_ended(false);
+        assert_eq!(due.wait().await, RoundKind::Full { overruns: 0 });
+        // From then on, the ends while a round runs are counted as §6.3 says: the first is
+        // the next round's, the second merged into it.
+        exchange.cycle_ended(false);
+        exchange.cycle_ended(false);
+        assert_eq!(due.wait().await, RoundKind::Full { overruns: 1 });
+        // Without a cycle end since the last round, no round is due.
+        exchange.cycle_ended(false);
+        assert_eq!(due.wait().await, RoundKind::Full { overruns: 0 });
+        let waited = tokio::time::timeout(Duration::from_millis(50), due.wait()).await;
+        assert!(
+            waited.is_err(),
+            "no cycle ended, yet a round was due: {waited:?}"
+        );
     }
 
     #[tokio::test(start_paused = true)]
