@@ -177,11 +177,12 @@ pub struct PymodbusServer {
 const PYMODBUS_PATIENCE: std::time::Duration = std::time::Duration::from_secs(10);
 
 impl PymodbusServer {
-    /// A Modbus TCP server on 127.0.0.1 at `port` (0: a port the system picks, then in
-    /// [`PymodbusServer::port`]).
+    /// A Modbus TCP server on 127.0.0.1 on a port the system picks, then in
+    /// [`PymodbusServer::port`]. One stopped and started again gets a new port: a test puts
+    /// the fault proxy in front to keep the master's address (`fault_proxy::FaultProxy`).
     #[track_caller]
-    pub fn tcp(port: u16) -> Self {
-        let mut server = Self::start(&["tcp".to_owned(), port.to_string()]);
+    pub fn tcp() -> Self {
+        let mut server = Self::start(&["tcp".to_owned()]);
         let first = server.reply();
         server.port = first
             .strip_prefix("port ")

@@ -146,7 +146,9 @@ fn image_with(devices: Vec<DeviceDef>) -> ProgramImage {
 }
 
 /// Rivet's Modbus server on its own tokio runtime, so that a test can stop it whole (its
-/// listener and every connection) and start it again on the same port.
+/// listener and every connection) and start it again, on a new port (behind a
+/// `FaultProxy`, which keeps the master's address: a port freed and bound again could be
+/// taken by another test meanwhile).
 struct Slave {
     areas: Arc<Mutex<LocatedAreas>>,
     address: SocketAddr,
@@ -165,7 +167,7 @@ impl Slave {
         slave
     }
 
-    /// Serves on the slave's address (a free port the first time).
+    /// Serves on 127.0.0.1 on a port the system picks, then in `address`.
     fn serve(&mut self) {
         let runtime = tokio::runtime::Builder::new_multi_thread()
             .worker_threads(1)
@@ -173,7 +175,10 @@ impl Slave {
             .build()
             .unwrap();
         let listener = runtime
-            .block_on(tokio::net::TcpListener::bind(self.address))
+            .block_on(tokio::net::TcpListener::bind(SocketAddr::from((
+                [127, 0, 0, 1],
+                0,
+            ))))
             .unwrap();
         self.address = listener.local_addr().unwrap();
         runtime.spawn(serve(
