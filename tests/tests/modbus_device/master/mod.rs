@@ -229,6 +229,21 @@ fn read(scheduler: &Scheduler, path: &str, bytes: usize) -> Vec<u8> {
         .unwrap()
 }
 
+/// Writes `value` into the INT variable `path` of the loaded program between two cycles (as
+/// an online write would).
+fn write_int(scheduler: &Scheduler, path: &str, value: i16) {
+    let path = path.to_owned();
+    scheduler
+        .between(move |between| {
+            let memory = between.memory.as_mut().unwrap();
+            let place = runtime::value::resolve(memory.engine.image(), &path).unwrap();
+            let start = place.offset as usize;
+            memory.engine.region_mut(place.region)[start..start + 2]
+                .copy_from_slice(&value.to_le_bytes());
+        })
+        .unwrap();
+}
+
 fn read_int(scheduler: &Scheduler, path: &str) -> i16 {
     let bytes = read(scheduler, path, 2);
     i16::from_le_bytes([bytes[0], bytes[1]])
