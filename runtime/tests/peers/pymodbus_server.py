@@ -1,13 +1,16 @@
 """pymodbus as an independent Modbus slave (server) for the runtime's Modbus master tests.
 
 Usage:
-    pymodbus_server.py tcp
+    pymodbus_server.py tcp [PORT]
     pymodbus_server.py rtu PATH BAUD PARITY STOPBITS [UNITS]
 
-`tcp` serves Modbus TCP on 127.0.0.1 on a port the system picks, and prints `port N` once it
-listens; it answers every unit id from the same tables. A test that stops it and starts it
-again gets a new port, and keeps the master's address with the fault proxy in front
-(`tests/src/fault_proxy.rs`): a port freed and bound again could be taken meanwhile. `rtu` serves Modbus RTU on the serial port PATH (a socat
+`tcp` serves Modbus TCP on 127.0.0.1, on PORT or (without it, or with 0) a port the system
+picks, and prints `port N` once it listens; it answers every unit id from the same tables.
+The tests always let the system pick: one that stops the server and starts it again gets a
+new port and keeps the master's address with the fault proxy in front
+(`tests/src/fault_proxy.rs`), since a port freed and bound again could be taken meanwhile.
+PORT is for a person trying a project at the desk (the README's "try it"), whose device names
+a fixed port. `rtu` serves Modbus RTU on the serial port PATH (a socat
 pseudo-terminal in the tests) with BAUD, PARITY (N, E or O) and STOPBITS (1 or 2), 8 data bits, as the units listed in UNITS (comma-separated, default 1), each with
 tables of its own, and prints `ready` once the port is open; it opens the port again when it
 goes away (socat killed and started again). A port that cannot be bound or opened at the
@@ -139,18 +142,21 @@ def fail(reason):
     os._exit(1)
 
 
-async def serve_tcp():
+async def serve_tcp(port):
     unit = unit_context()
+    # A person who stops the script and starts it again on the same fixed port finds the old
+    # connections in TIME_WAIT: without SO_REUSEADDR that bind fails for a minute.
     server = ModbusTcpServer(
         ModbusServerContext(slaves=unit, single=True),
-        address=("127.0.0.1", 0),
+        address=("127.0.0.1", port),
+        allow_reuse_address=True,
     )
     task = asyncio.create_task(server.serve_forever())
     while server.server is None:
         if task.done():
             # The bind failed: serve_forever raised before it set server.server.
             error = task.exception() if not task.cancelled() else "cancelled"
-            fail(f"cannot serve Modbus TCP on 127.0.0.1: {error}")
+            fail(f"cannot serve Modbus TCP on 127.0.0.1:{port}: {error}")
         await asyncio.sleep(0.01)
     print(f"port {server.server.sockets[0].getsockname()[1]}", flush=True)
     threading.Thread(target=serve_commands, args=({1: unit},), daemon=True).start()
@@ -190,8 +196,8 @@ async def serve_rtu(path, baud, parity, stop_bits, unit_ids):
 
 def main():
     mode = sys.argv[1:2]
-    if mode == ["tcp"] and len(sys.argv) == 2:
-        asyncio.run(serve_tcp())
+    if mode == ["tcp"] and len(sys.argv) in (2, 3):
+        asyncio.run(serve_tcp(int(sys.argv[2]) if len(sys.argv) == 3 else 0))
     elif mode == ["rtu"] and len(sys.argv) in (6, 7):
         path, baud, parity, stop_bits = sys.argv[2], int(sys.argv[3]), sys.argv[4], int(sys.argv[5])
         unit_ids = [int(unit) for unit in (sys.argv[6] if len(sys.argv) == 7 else "1").split(",")]
