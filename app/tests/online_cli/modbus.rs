@@ -42,14 +42,19 @@ struct Registers {
     /// A holding register the slave does not have, read into `Main.iMissing` with the error
     /// flag `GVL.xMissingError`; none without it.
     missing_address: Option<u16>,
+    /// A holding register read into `Main.iKept`, which keeps its last value on a failure;
+    /// none without it.
+    kept_address: Option<u16>,
 }
 
-/// Pymodbus's registers: input register 0 in, holding register 10 out.
+/// Pymodbus's registers: input register 0 in, holding register 10 out, holding register 20
+/// kept.
 const PYMODBUS_REGISTERS: Registers = Registers {
     read_table: "input_register",
     read_address: 0,
     write_address: 10,
     missing_address: None,
+    kept_address: Some(20),
 };
 
 /// Writes a project folder with the device at 127.0.0.1:`port` and pymodbus's registers.
@@ -65,15 +70,27 @@ fn variable(name: &str, section: &str, ty: &str) -> String {
 /// Writes a project folder: program `Main` (`iOut := iIn * 2`, counting its cycles in
 /// `udiCycles`) in a 10 ms task, and a runtime device at 127.0.0.1:`port` polled after every
 /// cycle, whose status is `GVL.stDev`: `registers` says where `Main.iIn` is read (set to zero
-/// on a failure, with the error flag `GVL.xInError`), where `Main.iOut` is written, and
-/// whether a channel reads an address the slave does not have.
+/// on a failure, with the error flag `GVL.xInError`), where `Main.iOut` is written, whether a
+/// channel reads an address the slave does not have, and whether one reads `Main.iKept`.
 fn write_project_with(dir: &Path, port: u16, registers: &Registers) {
     let Registers {
         read_table,
         read_address,
         write_address,
         missing_address,
+        kept_address,
     } = registers;
+    let kept_binding = kept_address.map_or_else(String::new, |address| {
+        format!(
+            "\n[[modbus_device.binding]]\nvariable = \"Main.iKept\"\n\
+             table = \"holding_register\"\naddress = {address}\ndata_type = \"int16\"\n"
+        )
+    });
+    let kept_variable = if kept_address.is_some() {
+        variable("iKept", "VAR", "INT")
+    } else {
+        String::new()
+    };
     let missing_binding = missing_address.map_or_else(String::new, |address| {
         format!(
             "\n[[modbus_device.binding]]\nvariable = \"Main.iMissing\"\n\
@@ -106,7 +123,7 @@ fn write_project_with(dir: &Path, port: u16, registers: &Registers) {
              error_flag = \"GVL.xInError\"\n\n\
              [[modbus_device.binding]]\nvariable = \"Main.iOut\"\ntable = \"holding_register\"\n\
              address = {write_address}\ndata_type = \"int16\"\ndirection = \"write\"\n\
-             {missing_binding}"
+             {missing_binding}{kept_binding}"
         ),
     )
     .unwrap();
@@ -122,7 +139,8 @@ fn write_project_with(dir: &Path, port: u16, registers: &Registers) {
     std::fs::write(
         dir.join("application/Main.pou.toml"),
         format!(
-            "kind = \"program\"\nbody = {{ language = \"st\" }}\n{}{}{}{missing_variable}",
+            "kind = \"program\"\nbody = {{ language = \"st\" }}\n{}{}{}{missing_variable}\
+             {kept_variable}",
             variable("iIn", "VAR", "INT"),
             variable("iOut", "VAR", "INT"),
             variable("udiCycles", "VAR", "UDINT")
@@ -286,11 +304,14 @@ fn modbus_tcp_master_rides_out_a_stopped_slave_and_exceptions_while_the_task_run
         FaultProxy::start(std::net::SocketAddr::from(([127, 0, 0, 1], slave.port))).unwrap();
     let runtime = run_master_project(dir.path(), proxy.address().port(), &PYMODBUS_REGISTERS);
     let target = runtime.target.as_str();
+    slave.set("hr", 20, 77);
     wait_for_the_round_trip(&mut slave, 21, target);
+    wait_for_the_program("Main.iKept", 77, target);
 
     // The slave stops (the proxy resets every connection meanwhile, as the host of a stopped
-    // server does, and keeps its port): no connection, the read channel set to zero, its
-    // error flag set, and the task's cycles still counting.
+    // server does, and keeps its port): no connection, the set_to_zero channel zeroed with its
+    // error flag set, the other read channel keeping its last value, and the task's cycles
+    // still counting.
     proxy.set_mode(ProxyMode::Refuse);
     drop(slave);
     let cycles = value_of(&read(&["Main.udiCycles"], target), "Main.udiCycles");
@@ -302,6 +323,7 @@ fn modbus_tcp_master_rides_out_a_stopped_slave_and_exceptions_while_the_task_run
         "GVL.xInError",
         "Main.iIn",
         "Main.iOut",
+        "Main.iKept",
         "Main.udiCycles",
     ];
     wait_until("the stopped slave reported", || {
@@ -313,6 +335,7 @@ fn modbus_tcp_master_rides_out_a_stopped_slave_and_exceptions_while_the_task_run
             && text_of(&seen, "GVL.xInError") == "TRUE"
             && value_of(&seen, "Main.iIn") == 0
             && value_of(&seen, "Main.iOut") == 0
+            && value_of(&seen, "Main.iKept") == 77
             && value_of(&seen, "Main.udiCycles") > cycles;
         reported.then_some(()).ok_or(seen)
     });
@@ -343,7 +366,9 @@ fn modbus_tcp_master_rides_out_a_stopped_slave_and_exceptions_while_the_task_run
     let mut slave = PymodbusServer::tcp();
     proxy.set_slave(std::net::SocketAddr::from(([127, 0, 0, 1], slave.port)));
     proxy.set_mode(ProxyMode::Pass);
+    slave.set("hr", 20, 78);
     wait_for_the_round_trip(&mut slave, 30, target);
+    wait_for_the_program("Main.iKept", 78, target);
     wait_until("the error cleared", || {
         let seen = read(&["GVL.stDev.xError", "GVL.xInError"], target);
         (text_of(&seen, "GVL.stDev.xError") == "FALSE" && text_of(&seen, "GVL.xInError") == "FALSE")
@@ -498,6 +523,7 @@ fn modbus_tcp_master_against_a_second_rivet_runtime_as_the_slave() {
             read_address: 1024,
             write_address: 0,
             missing_address: None,
+            kept_address: None,
         },
     );
     let master = start_runtime(&dir.path().join("master-data"), None);
