@@ -25,9 +25,9 @@ pub enum ProxyMode {
     /// connection: a pulled cable. A request on an open connection gets no answer; a new
     /// connection gets no answer to its SYN (the listener's backlog is 0 and nothing is
     /// accepted, so the kernel completes at most one handshake, which then answers nothing
-    /// either), so a master's connection attempt times out. Connections the kernel queued
-    /// meanwhile are reset when the mode changes, so nothing sent while the cable was out
-    /// reaches the slave afterwards.
+    /// either), so a master's connection attempt times out. The connection the kernel queued
+    /// meanwhile is reset when the mode changes, before any new one is taken, so nothing sent
+    /// while the cable was out reaches the slave afterwards.
     Swallow,
     /// Resets every open connection and every new one as soon as it is accepted (RST, not an
     /// orderly close): a stopped server behind a host that is still up. The proxy keeps its
@@ -47,6 +47,8 @@ pub struct FaultProxy {
 
 /// The state the proxy's threads share.
 struct Shared {
+    /// The listener masters connect to; it does not block.
+    listener: TcpListener,
     /// The current mode.
     mode: Mutex<ProxyMode>,
     /// Where new connections are forwarded.
@@ -67,13 +69,14 @@ impl FaultProxy {
         listener.set_nonblocking(true)?;
         let address = listener.local_addr()?;
         let shared = Arc::new(Shared {
+            listener,
             mode: Mutex::new(ProxyMode::Pass),
             slave: Mutex::new(slave),
             connections: AtomicU64::new(0),
             stopping: AtomicBool::new(false),
         });
         let acceptor_shared = Arc::clone(&shared);
-        let acceptor = std::thread::spawn(move || accept(&listener, &acceptor_shared));
+        let acceptor = std::thread::spawn(move || accept(&acceptor_shared));
         Ok(Self {
             address,
             shared,
@@ -87,9 +90,14 @@ impl FaultProxy {
     }
 
     /// Switches the mode; connections open now follow it from their next bytes on (within
-    /// 10 ms for [`ProxyMode::Refuse`]).
+    /// 10 ms for [`ProxyMode::Refuse`]). Leaving [`ProxyMode::Swallow`] first resets the
+    /// connection the kernel queued while the cable was pulled.
     pub fn set_mode(&self, mode: ProxyMode) {
-        *lock(&self.shared.mode) = mode;
+        let mut current = lock(&self.shared.mode);
+        if *current == ProxyMode::Swallow && mode != ProxyMode::Swallow {
+            reset_queued(&self.shared);
+        }
+        *current = mode;
     }
 
     /// Forwards the connections opened from now on to `slave` (a slave started again on a
@@ -143,21 +151,19 @@ fn listen_with_backlog_0() -> io::Result<TcpListener> {
 }
 
 /// Accepts connections until the proxy is dropped; while refusing, resets each at once; while
-/// the cable is pulled, accepts none, and resets those queued meanwhile once it is back.
-fn accept(listener: &TcpListener, shared: &Arc<Shared>) {
-    let mut cable_was_pulled = false;
+/// the cable is pulled, accepts none (see [`ProxyMode::Swallow`]).
+fn accept(shared: &Arc<Shared>) {
     while !shared.stopping.load(Ordering::SeqCst) {
         let mode = shared.mode();
         if mode == ProxyMode::Swallow {
-            cable_was_pulled = true;
             std::thread::sleep(POLL_INTERVAL);
             continue;
         }
         // The listener does not block, so that the thread sees the drop and the mode.
-        match listener.accept() {
+        match shared.listener.accept() {
             Ok((master, _)) => {
                 shared.connections.fetch_add(1, Ordering::SeqCst);
-                if mode == ProxyMode::Refuse || cable_was_pulled {
+                if mode == ProxyMode::Refuse {
                     reset(&master);
                     continue;
                 }
@@ -166,13 +172,19 @@ fn accept(listener: &TcpListener, shared: &Arc<Shared>) {
                     let _ = forward(master, &shared);
                 });
             }
-            // Nobody is connecting (or a connection failed before it was taken): the queue
-            // is empty, so what comes next came after the cable was back.
-            Err(_) => {
-                cable_was_pulled = false;
-                std::thread::sleep(POLL_INTERVAL);
-            }
+            // Nobody is connecting (or a connection failed before it was taken).
+            Err(_) => std::thread::sleep(POLL_INTERVAL),
         }
+    }
+}
+
+/// Resets every connection the kernel queued while the cable was pulled (counting them: a
+/// master opened them); called with the mode still [`ProxyMode::Swallow`] and locked, so the
+/// acceptor takes none of them and every later one is new.
+fn reset_queued(shared: &Shared) {
+    while let Ok((queued, _)) = shared.listener.accept() {
+        shared.connections.fetch_add(1, Ordering::SeqCst);
+        reset(&queued);
     }
 }
 
