@@ -65,21 +65,27 @@ fn start_runtime_with(data: &Path, password: Option<&str>, arguments: &[&str]) -
     if let Some(password) = password {
         command.env("RIVET_PASSWORD", password);
     }
-    let mut child = command
+    let child = command
         .stdout(Stdio::piped())
         .stderr(Stdio::null())
         .spawn()
         .unwrap();
+    // Owned by its guard before anything can panic, so a runtime that says something else
+    // first is killed with the test rather than left running.
+    let mut runtime = Runtime {
+        child,
+        target: String::new(),
+    };
     let mut first = String::new();
-    BufReader::new(child.stdout.take().unwrap())
+    BufReader::new(runtime.child.stdout.take().unwrap())
         .read_line(&mut first)
         .unwrap();
-    let target = first
+    runtime.target = first
         .trim()
         .strip_prefix("listening on ")
         .unwrap_or_else(|| panic!("unexpected first line {first:?}"))
         .to_owned();
-    Runtime { child, target }
+    runtime
 }
 
 fn rivet(args: &[&str]) -> Output {

@@ -2,8 +2,10 @@
 //! (`docs/modbus-master.md` §10): a slow slave, a pulled cable, a stopped server.
 //!
 //! It listens on 127.0.0.1 on a port the system picks and forwards every connection to the
-//! slave; a test switches its [`ProxyMode`] while it runs. Plain threads and `std::net`, so any
-//! test (async or not, in any crate) can use it.
+//! slave; a test switches its [`ProxyMode`] while it runs, and may point it at another slave
+//! ([`FaultProxy::set_slave`]): a slave stopped and started again gets a new port of its own,
+//! while the master's address, the proxy's, never changes and no port is ever bound twice.
+//! Plain threads and `std::net`, so any test (async or not, in any crate) can use it.
 
 use std::io::{self, Read, Write};
 use std::net::{Shutdown, SocketAddr, TcpListener, TcpStream};
@@ -19,7 +21,13 @@ pub enum ProxyMode {
     Pass,
     /// Forwards requests at once and every answer `Duration` late: a slow slave.
     Delay(Duration),
-    /// Takes every byte and forwards none, without closing anything: a pulled cable.
+    /// Takes every byte and forwards none, without closing anything, and answers no new
+    /// connection: a pulled cable. A request on an open connection gets no answer; a new
+    /// connection gets no answer to its SYN (the listener's backlog is 0 and nothing is
+    /// accepted, so the kernel completes at most one handshake, which then answers nothing
+    /// either), so a master's connection attempt times out. The connection the kernel queued
+    /// meanwhile is reset when the mode changes, before any new one is taken, so nothing sent
+    /// while the cable was out reaches the slave afterwards.
     Swallow,
     /// Resets every open connection and every new one as soon as it is accepted (RST, not an
     /// orderly close): a stopped server behind a host that is still up. The proxy keeps its
@@ -39,8 +47,12 @@ pub struct FaultProxy {
 
 /// The state the proxy's threads share.
 struct Shared {
+    /// The listener masters connect to; it does not block.
+    listener: TcpListener,
     /// The current mode.
     mode: Mutex<ProxyMode>,
+    /// Where new connections are forwarded.
+    slave: Mutex<SocketAddr>,
     /// Connections accepted so far.
     connections: AtomicU64,
     /// Set when the proxy is dropped.
@@ -53,16 +65,18 @@ const POLL_INTERVAL: Duration = Duration::from_millis(10);
 impl FaultProxy {
     /// Starts a proxy in [`ProxyMode::Pass`] on 127.0.0.1, port 0, forwarding to `slave`.
     pub fn start(slave: SocketAddr) -> io::Result<Self> {
-        let listener = TcpListener::bind("127.0.0.1:0")?;
+        let listener = listen_with_backlog_0()?;
         listener.set_nonblocking(true)?;
         let address = listener.local_addr()?;
         let shared = Arc::new(Shared {
+            listener,
             mode: Mutex::new(ProxyMode::Pass),
+            slave: Mutex::new(slave),
             connections: AtomicU64::new(0),
             stopping: AtomicBool::new(false),
         });
         let acceptor_shared = Arc::clone(&shared);
-        let acceptor = std::thread::spawn(move || accept(&listener, slave, &acceptor_shared));
+        let acceptor = std::thread::spawn(move || accept(&acceptor_shared));
         Ok(Self {
             address,
             shared,
@@ -76,13 +90,24 @@ impl FaultProxy {
     }
 
     /// Switches the mode; connections open now follow it from their next bytes on (within
-    /// 10 ms for [`ProxyMode::Refuse`]).
+    /// 10 ms for [`ProxyMode::Refuse`]). Leaving [`ProxyMode::Swallow`] first resets the
+    /// connection the kernel queued while the cable was pulled.
     pub fn set_mode(&self, mode: ProxyMode) {
-        *lock(&self.shared.mode) = mode;
+        let mut current = lock(&self.shared.mode);
+        if *current == ProxyMode::Swallow && mode != ProxyMode::Swallow {
+            reset_queued(&self.shared);
+        }
+        *current = mode;
+    }
+
+    /// Forwards the connections opened from now on to `slave` (a slave started again on a
+    /// port of its own); open connections stay with the slave they were made to.
+    pub fn set_slave(&self, slave: SocketAddr) {
+        *lock(&self.shared.slave) = slave;
     }
 
     /// How many connections masters have opened through the proxy so far, those reset in
-    /// [`ProxyMode::Refuse`] included.
+    /// [`ProxyMode::Refuse`] and those queued while it was a pulled cable included.
     pub fn connections(&self) -> u64 {
         self.shared.connections.load(Ordering::SeqCst)
     }
@@ -101,33 +126,65 @@ impl Shared {
     fn mode(&self) -> ProxyMode {
         *lock(&self.mode)
     }
+
+    fn slave(&self) -> SocketAddr {
+        *lock(&self.slave)
+    }
 }
 
-/// The mode, even when a thread panicked while holding it (it only ever stores a value).
-fn lock(mode: &Mutex<ProxyMode>) -> std::sync::MutexGuard<'_, ProxyMode> {
-    mode.lock()
+/// A value the proxy's threads share, even when a thread panicked while holding it (they
+/// only ever store a whole value).
+fn lock<T>(value: &Mutex<T>) -> std::sync::MutexGuard<'_, T> {
+    value
+        .lock()
         .unwrap_or_else(std::sync::PoisonError::into_inner)
 }
 
-/// Accepts connections until the proxy is dropped; while refusing, resets each at once.
-fn accept(listener: &TcpListener, slave: SocketAddr, shared: &Arc<Shared>) {
+/// A listener on 127.0.0.1, port 0, whose accept queue holds one connection: while the proxy
+/// accepts nothing (a pulled cable), the kernel answers no further SYN, so a master's
+/// connection attempt times out as it would without a cable.
+fn listen_with_backlog_0() -> io::Result<TcpListener> {
+    let socket = socket2::Socket::new(socket2::Domain::IPV4, socket2::Type::STREAM, None)?;
+    socket.bind(&SocketAddr::from(([127, 0, 0, 1], 0)).into())?;
+    socket.listen(0)?;
+    Ok(socket.into())
+}
+
+/// Accepts connections until the proxy is dropped; while refusing, resets each at once; while
+/// the cable is pulled, accepts none (see [`ProxyMode::Swallow`]).
+fn accept(shared: &Arc<Shared>) {
     while !shared.stopping.load(Ordering::SeqCst) {
-        // The listener does not block, so that the thread sees the drop.
-        match listener.accept() {
+        let mode = shared.mode();
+        if mode == ProxyMode::Swallow {
+            std::thread::sleep(POLL_INTERVAL);
+            continue;
+        }
+        // The listener does not block, so that the thread sees the drop and the mode.
+        match shared.listener.accept() {
             Ok((master, _)) => {
                 shared.connections.fetch_add(1, Ordering::SeqCst);
-                if shared.mode() == ProxyMode::Refuse {
+                if mode == ProxyMode::Refuse {
                     reset(&master);
                     continue;
                 }
                 let shared = Arc::clone(shared);
                 std::thread::spawn(move || {
-                    let _ = forward(master, slave, &shared);
+                    let _ = forward(master, &shared);
                 });
             }
             // Nobody is connecting (or a connection failed before it was taken).
             Err(_) => std::thread::sleep(POLL_INTERVAL),
         }
+    }
+}
+
+/// Resets every connection the kernel queued while the cable was pulled (counting them: a
+/// master opened them); called with the mode still [`ProxyMode::Swallow`] and locked, so the
+/// acceptor takes none of them and every later one is new.
+fn reset_queued(shared: &Shared) {
+    while let Ok((queued, _)) = shared.listener.accept() {
+        shared.connections.fetch_add(1, Ordering::SeqCst);
+        reset(&queued);
     }
 }
 
@@ -139,9 +196,9 @@ fn reset(stream: &TcpStream) {
 
 /// Joins one master connection to a new connection to the slave until either closes, the
 /// proxy refuses or is dropped.
-fn forward(master: TcpStream, slave: SocketAddr, shared: &Arc<Shared>) -> io::Result<()> {
+fn forward(master: TcpStream, shared: &Arc<Shared>) -> io::Result<()> {
     master.set_nonblocking(false)?;
-    let upstream = TcpStream::connect_timeout(&slave, Duration::from_secs(5))?;
+    let upstream = TcpStream::connect_timeout(&shared.slave(), Duration::from_secs(5))?;
     for stream in [&master, &upstream] {
         stream.set_nodelay(true)?;
         stream.set_read_timeout(Some(POLL_INTERVAL))?;
@@ -226,8 +283,9 @@ mod tests {
     use super::*;
     use std::time::Instant;
 
-    /// A slave that answers every chunk with the same bytes, on 127.0.0.1:0.
-    fn echo_slave() -> SocketAddr {
+    /// A slave that answers every chunk with the same bytes (in capitals when `shouting`, to
+    /// tell two slaves apart), on 127.0.0.1:0.
+    fn echo_slave(shouting: bool) -> SocketAddr {
         let listener = TcpListener::bind("127.0.0.1:0").unwrap();
         let address = listener.local_addr().unwrap();
         std::thread::spawn(move || {
@@ -236,6 +294,9 @@ mod tests {
                 std::thread::spawn(move || {
                     let mut buffer = [0; 256];
                     while let Ok(count @ 1..) = stream.read(&mut buffer) {
+                        if shouting {
+                            buffer[..count].make_ascii_uppercase();
+                        }
                         if stream.write_all(&buffer[..count]).is_err() {
                             return;
                         }
@@ -247,23 +308,39 @@ mod tests {
     }
 
     fn connect(proxy: &FaultProxy) -> TcpStream {
-        let stream = TcpStream::connect(proxy.address()).unwrap();
+        let stream = TcpStream::connect_timeout(&proxy.address(), Duration::from_secs(5)).unwrap();
         stream
             .set_read_timeout(Some(Duration::from_millis(300)))
             .unwrap();
         stream
     }
 
-    /// Sends `bytes` and reads the echo, or `None` when none came within 300 ms.
+    /// Sends `bytes` and reads the answer, or `None` when none came within 300 ms.
     fn echo(stream: &mut TcpStream, bytes: &[u8]) -> Option<Vec<u8>> {
         stream.write_all(bytes).unwrap();
         let mut answer = vec![0; bytes.len()];
         stream.read_exact(&mut answer).ok().map(|()| answer)
     }
 
+    /// Waits until the proxy resets `stream`; panics when it ends otherwise or stays open.
+    #[track_caller]
+    fn wait_for_a_reset(stream: &mut TcpStream, what: &str) {
+        let deadline = Instant::now() + Duration::from_secs(5);
+        let mut byte = [0; 1];
+        loop {
+            match stream.read(&mut byte) {
+                Err(error) if error.kind() == io::ErrorKind::ConnectionReset => return,
+                Err(error) if is_timeout(&error) => {
+                    assert!(Instant::now() < deadline, "the proxy kept {what}");
+                }
+                other => panic!("{what} ended without a reset: {other:?}"),
+            }
+        }
+    }
+
     #[test]
     fn the_proxy_passes_delays_swallows_and_refuses_as_switched_and_counts_connections() {
-        let proxy = FaultProxy::start(echo_slave()).unwrap();
+        let proxy = FaultProxy::start(echo_slave(false)).unwrap();
         let mut stream = connect(&proxy);
         assert_eq!(echo(&mut stream, b"one").as_deref(), Some(&b"one"[..]));
         assert_eq!(proxy.connections(), 1);
@@ -273,35 +350,73 @@ mod tests {
         assert_eq!(echo(&mut stream, b"two").as_deref(), Some(&b"two"[..]));
         assert!(start.elapsed() >= Duration::from_millis(100));
 
+        // A pulled cable: the open connection answers nothing; of the new ones, the kernel
+        // completes one handshake (which answers nothing either) and answers no SYN after it.
         proxy.set_mode(ProxyMode::Swallow);
         assert_eq!(echo(&mut stream, b"three"), None);
+        let mut queued = connect(&proxy);
+        assert_eq!(echo(&mut queued, b"lost"), None);
+        let unanswered = TcpStream::connect_timeout(&proxy.address(), Duration::from_millis(300));
+        assert!(
+            unanswered.as_ref().is_err_and(is_timeout),
+            "a connection was answered without a cable: {unanswered:?}"
+        );
 
         proxy.set_mode(ProxyMode::Refuse);
-        // The open connection is reset, and so is a new one, on the port the proxy keeps.
-        let deadline = Instant::now() + Duration::from_secs(5);
-        let mut byte = [0; 1];
-        loop {
-            match stream.read(&mut byte) {
-                Err(error) if error.kind() == io::ErrorKind::ConnectionReset => break,
-                Err(error) if is_timeout(&error) => {
-                    assert!(Instant::now() < deadline, "the proxy kept its connection");
-                }
-                other => panic!("the connection ended without a reset: {other:?}"),
-            }
-        }
+        // The open connection is reset, and so is the one queued while the cable was out,
+        // and a new one, on the port the proxy keeps.
+        wait_for_a_reset(&mut stream, "its connection");
+        wait_for_a_reset(&mut queued, "the connection queued without a cable");
         let before = proxy.connections();
         let mut refused = connect(&proxy);
-        let read = refused.read(&mut byte);
-        assert!(
-            read.as_ref()
-                .is_err_and(|error| error.kind() == io::ErrorKind::ConnectionReset),
-            "a new connection was not reset: {read:?}"
-        );
+        wait_for_a_reset(&mut refused, "a new connection");
         assert_eq!(proxy.connections(), before + 1);
 
         proxy.set_mode(ProxyMode::Pass);
         let mut stream = connect(&proxy);
         assert_eq!(echo(&mut stream, b"four").as_deref(), Some(&b"four"[..]));
         assert_eq!(proxy.connections(), before + 2);
+
+        // Another slave (one started again on a port of its own) behind the same address:
+        // new connections go to it, the open one stays with the first.
+        proxy.set_slave(echo_slave(true));
+        let mut moved = connect(&proxy);
+        assert_eq!(echo(&mut moved, b"five").as_deref(), Some(&b"FIVE"[..]));
+        assert_eq!(echo(&mut stream, b"six").as_deref(), Some(&b"six"[..]));
+    }
+
+    #[test]
+    fn nothing_sent_while_the_cable_was_out_reaches_the_slave_when_it_is_back() {
+        // A slave that counts the bytes it receives.
+        let listener = TcpListener::bind("127.0.0.1:0").unwrap();
+        let slave = listener.local_addr().unwrap();
+        let received = Arc::new(AtomicU64::new(0));
+        let counting = Arc::clone(&received);
+        std::thread::spawn(move || {
+            for stream in listener.incoming() {
+                let Ok(mut stream) = stream else { return };
+                let counting = Arc::clone(&counting);
+                std::thread::spawn(move || {
+                    let mut buffer = [0; 256];
+                    while let Ok(count @ 1..) = stream.read(&mut buffer) {
+                        counting.fetch_add(count as u64, Ordering::SeqCst);
+                        let _ = stream.write_all(&buffer[..count]);
+                    }
+                });
+            }
+        });
+        let proxy = FaultProxy::start(slave).unwrap();
+        proxy.set_mode(ProxyMode::Swallow);
+        let mut queued = connect(&proxy);
+        assert_eq!(echo(&mut queued, b"stale"), None);
+        proxy.set_mode(ProxyMode::Pass);
+        wait_for_a_reset(&mut queued, "the connection queued without a cable");
+        let mut stream = connect(&proxy);
+        assert_eq!(echo(&mut stream, b"fresh").as_deref(), Some(&b"fresh"[..]));
+        assert_eq!(
+            received.load(Ordering::SeqCst),
+            5,
+            "the stale request reached the slave"
+        );
     }
 }

@@ -171,17 +171,20 @@ pub struct PymodbusServer {
     /// What it said on standard error so far (why it failed, pymodbus's warnings), for the
     /// panics that report it.
     said: std::sync::Arc<std::sync::Mutex<String>>,
+    /// The thread collecting `said`, which ends with the script's standard error.
+    said_reader: std::thread::JoinHandle<()>,
 }
 
 /// How long the script may take to start or to answer a command.
 const PYMODBUS_PATIENCE: std::time::Duration = std::time::Duration::from_secs(10);
 
 impl PymodbusServer {
-    /// A Modbus TCP server on 127.0.0.1 at `port` (0: a port the system picks, then in
-    /// [`PymodbusServer::port`]).
+    /// A Modbus TCP server on 127.0.0.1 on a port the system picks, then in
+    /// [`PymodbusServer::port`]. One stopped and started again gets a new port: a test puts
+    /// the fault proxy in front to keep the master's address (`fault_proxy::FaultProxy`).
     #[track_caller]
-    pub fn tcp(port: u16) -> Self {
-        let mut server = Self::start(&["tcp".to_owned(), port.to_string()]);
+    pub fn tcp() -> Self {
+        let mut server = Self::start(&["tcp".to_owned()]);
         let first = server.reply();
         server.port = first
             .strip_prefix("port ")
@@ -291,7 +294,7 @@ impl PymodbusServer {
         // Read all along, so that a chatty script never fills the pipe and blocks.
         let said = std::sync::Arc::new(std::sync::Mutex::new(String::new()));
         let errors = std::sync::Arc::clone(&said);
-        std::thread::spawn(move || {
+        let said_reader = std::thread::spawn(move || {
             use std::io::BufRead;
             for line in std::io::BufReader::new(stderr).lines() {
                 let Ok(line) = line else { return };
@@ -318,14 +321,18 @@ impl PymodbusServer {
             commands,
             replies,
             said,
+            said_reader,
         }
     }
 
-    /// What the script has said on standard error so far; waits a little for the end of it
-    /// when the script has ended.
+    /// What the script has said on standard error so far; when the script has ended, all of
+    /// it (the reader ends with the pipe), waited for at most a second.
     fn errors(&mut self) -> String {
         if matches!(self.child.try_wait(), Ok(Some(_))) {
-            std::thread::sleep(std::time::Duration::from_millis(100));
+            let deadline = std::time::Instant::now() + std::time::Duration::from_secs(1);
+            while !self.said_reader.is_finished() && std::time::Instant::now() < deadline {
+                std::thread::sleep(std::time::Duration::from_millis(5));
+            }
         }
         self.said
             .lock()

@@ -2,6 +2,8 @@
 //! downloaded with the CLI masters an independent pymodbus slave, and the values, the status
 //! variable and `rivet devices` are checked through the CLI and through the slave's own API.
 //! Nothing here asserts timing: every wait has a generous deadline and counters must grow.
+//! A slave that is stopped and started again gets a new port: the fault proxy in front keeps
+//! the master's address, so no port is ever bound twice (another test could take it between).
 
 use std::path::Path;
 use std::time::{Duration, Instant};
@@ -37,13 +39,22 @@ struct Registers {
     read_address: u16,
     /// The holding register `Main.iOut` is written to.
     write_address: u16,
+    /// A holding register the slave does not have, read into `Main.iMissing` with the error
+    /// flag `GVL.xMissingError`; none without it.
+    missing_address: Option<u16>,
+    /// A holding register read into `Main.iKept`, which keeps its last value on a failure;
+    /// none without it.
+    kept_address: Option<u16>,
 }
 
-/// Pymodbus's registers: input register 0 in, holding register 10 out.
+/// Pymodbus's registers: input register 0 in, holding register 10 out, holding register 20
+/// kept.
 const PYMODBUS_REGISTERS: Registers = Registers {
     read_table: "input_register",
     read_address: 0,
     write_address: 10,
+    missing_address: None,
+    kept_address: Some(20),
 };
 
 /// Writes a project folder with the device at 127.0.0.1:`port` and pymodbus's registers.
@@ -59,13 +70,42 @@ fn variable(name: &str, section: &str, ty: &str) -> String {
 /// Writes a project folder: program `Main` (`iOut := iIn * 2`, counting its cycles in
 /// `udiCycles`) in a 10 ms task, and a runtime device at 127.0.0.1:`port` polled after every
 /// cycle, whose status is `GVL.stDev`: `registers` says where `Main.iIn` is read (set to zero
-/// on a failure, with the error flag `GVL.xInError`) and where `Main.iOut` is written.
+/// on a failure, with the error flag `GVL.xInError`), where `Main.iOut` is written, whether a
+/// channel reads an address the slave does not have, and whether one reads `Main.iKept`.
 fn write_project_with(dir: &Path, port: u16, registers: &Registers) {
     let Registers {
         read_table,
         read_address,
         write_address,
+        missing_address,
+        kept_address,
     } = registers;
+    let kept_binding = kept_address.map_or_else(String::new, |address| {
+        format!(
+            "\n[[modbus_device.binding]]\nvariable = \"Main.iKept\"\n\
+             table = \"holding_register\"\naddress = {address}\ndata_type = \"int16\"\n"
+        )
+    });
+    let kept_variable = if kept_address.is_some() {
+        variable("iKept", "VAR", "INT")
+    } else {
+        String::new()
+    };
+    let missing_binding = missing_address.map_or_else(String::new, |address| {
+        format!(
+            "\n[[modbus_device.binding]]\nvariable = \"Main.iMissing\"\n\
+             table = \"holding_register\"\naddress = {address}\ndata_type = \"int16\"\n\
+             error_flag = \"GVL.xMissingError\"\n"
+        )
+    });
+    let (missing_flag, missing_variable) = if missing_address.is_some() {
+        (
+            variable("xMissingError", "VAR_GLOBAL", "BOOL"),
+            variable("iMissing", "VAR", "INT"),
+        )
+    } else {
+        (String::new(), String::new())
+    };
     std::fs::create_dir_all(dir.join("application")).unwrap();
     std::fs::write(
         dir.join("rivet.toml"),
@@ -82,14 +122,15 @@ fn write_project_with(dir: &Path, port: u16, registers: &Registers) {
              address = {read_address}\ndata_type = \"int16\"\non_error = \"set_to_zero\"\n\
              error_flag = \"GVL.xInError\"\n\n\
              [[modbus_device.binding]]\nvariable = \"Main.iOut\"\ntable = \"holding_register\"\n\
-             address = {write_address}\ndata_type = \"int16\"\ndirection = \"write\"\n"
+             address = {write_address}\ndata_type = \"int16\"\ndirection = \"write\"\n\
+             {missing_binding}{kept_binding}"
         ),
     )
     .unwrap();
     std::fs::write(
         dir.join("application/GVL.gvl.toml"),
         format!(
-            "{}{}",
+            "{}{}{missing_flag}",
             variable("stDev", "VAR_GLOBAL", "MODBUS_DEVICE_STATUS"),
             variable("xInError", "VAR_GLOBAL", "BOOL")
         ),
@@ -98,7 +139,8 @@ fn write_project_with(dir: &Path, port: u16, registers: &Registers) {
     std::fs::write(
         dir.join("application/Main.pou.toml"),
         format!(
-            "kind = \"program\"\nbody = {{ language = \"st\" }}\n{}{}{}",
+            "kind = \"program\"\nbody = {{ language = \"st\" }}\n{}{}{}{missing_variable}\
+             {kept_variable}",
             variable("iIn", "VAR", "INT"),
             variable("iOut", "VAR", "INT"),
             variable("udiCycles", "VAR", "UDINT")
@@ -169,7 +211,7 @@ fn counter_of(line: &str, word: &str) -> u64 {
 #[test]
 fn modbus_tcp_master_against_pymodbus_values_both_ways_status_and_devices() {
     let dir = tempfile::tempdir().unwrap();
-    let mut slave = PymodbusServer::tcp(0);
+    let mut slave = PymodbusServer::tcp();
     let project = dir.path().join("project");
     write_master_project(&project, slave.port);
     let project = project.to_str().unwrap();
@@ -227,21 +269,50 @@ fn modbus_tcp_master_against_pymodbus_values_both_ways_status_and_devices() {
     });
 }
 
+/// Starts a runtime with the project of `registers` built and downloaded, its device at
+/// `port`, running; the runtime ends when the returned handle is dropped.
+fn run_master_project(dir: &Path, port: u16, registers: &Registers) -> super::Runtime {
+    let project = dir.join("project");
+    write_project_with(&project, port, registers);
+    let runtime = start_runtime(&dir.join("data"), None);
+    ok(&[
+        "download",
+        project.to_str().unwrap(),
+        "--start",
+        "--target",
+        runtime.target.as_str(),
+    ]);
+    runtime
+}
+
+/// Waits until `Main.udiCycles` is beyond `cycles`: the task goes on.
+#[track_caller]
+fn wait_for_more_cycles(cycles: i64, target: &str) {
+    wait_until(&format!("Main.udiCycles beyond {cycles}"), || {
+        let seen = read(&["Main.udiCycles"], target);
+        (value_of(&seen, "Main.udiCycles") > cycles)
+            .then_some(())
+            .ok_or(seen)
+    });
+}
+
 #[test]
 fn modbus_tcp_master_rides_out_a_stopped_slave_and_exceptions_while_the_task_runs() {
     let dir = tempfile::tempdir().unwrap();
-    let mut slave = PymodbusServer::tcp(0);
-    let port = slave.port;
-    let project = dir.path().join("project");
-    write_master_project(&project, port);
-    let project = project.to_str().unwrap();
-    let runtime = start_runtime(&dir.path().join("data"), None);
+    let mut slave = PymodbusServer::tcp();
+    let proxy =
+        FaultProxy::start(std::net::SocketAddr::from(([127, 0, 0, 1], slave.port))).unwrap();
+    let runtime = run_master_project(dir.path(), proxy.address().port(), &PYMODBUS_REGISTERS);
     let target = runtime.target.as_str();
-    ok(&["download", project, "--start", "--target", target]);
+    slave.set("hr", 20, 77);
     wait_for_the_round_trip(&mut slave, 21, target);
+    wait_for_the_program("Main.iKept", 77, target);
 
-    // The slave stops: no connection, the read channel set to zero, its error flag set, and
-    // the task's cycles still counting.
+    // The slave stops (the proxy resets every connection meanwhile, as the host of a stopped
+    // server does, and keeps its port): no connection, the set_to_zero channel zeroed with its
+    // error flag set, the other read channel keeping its last value, and the task's cycles
+    // still counting.
+    proxy.set_mode(ProxyMode::Refuse);
     drop(slave);
     let cycles = value_of(&read(&["Main.udiCycles"], target), "Main.udiCycles");
     let fields = [
@@ -251,16 +322,20 @@ fn modbus_tcp_master_rides_out_a_stopped_slave_and_exceptions_while_the_task_run
         "GVL.stDev.udiConsecutiveErrors",
         "GVL.xInError",
         "Main.iIn",
+        "Main.iOut",
+        "Main.iKept",
         "Main.udiCycles",
     ];
     wait_until("the stopped slave reported", || {
         let seen = read(&fields, target);
         let reported = text_of(&seen, "GVL.stDev.xConnected") == "FALSE"
             && text_of(&seen, "GVL.stDev.xError") == "TRUE"
-            && text_of(&seen, "GVL.stDev.eLastError").contains("TCP_COMMUNICATION_ERROR")
+            && text_of(&seen, "GVL.stDev.eLastError") == "TCP_COMMUNICATION_ERROR"
             && value_of(&seen, "GVL.stDev.udiConsecutiveErrors") > 1
             && text_of(&seen, "GVL.xInError") == "TRUE"
             && value_of(&seen, "Main.iIn") == 0
+            && value_of(&seen, "Main.iOut") == 0
+            && value_of(&seen, "Main.iKept") == 77
             && value_of(&seen, "Main.udiCycles") > cycles;
         reported.then_some(()).ok_or(seen)
     });
@@ -279,10 +354,21 @@ fn modbus_tcp_master_rides_out_a_stopped_slave_and_exceptions_while_the_task_run
             .then_some(())
             .ok_or(seen)
     });
+    wait_until("rivet devices counting them too", || {
+        let line = devices_line(target);
+        (counter_of(&line, "consecutive errors") > errors as u64)
+            .then_some(())
+            .ok_or(line)
+    });
 
-    // The slave comes back on the same port: the master reconnects and the values follow.
-    let mut slave = PymodbusServer::tcp(port);
+    // The slave comes back, on a port of its own behind the proxy: the master reconnects to
+    // the same address and the values follow.
+    let mut slave = PymodbusServer::tcp();
+    proxy.set_slave(std::net::SocketAddr::from(([127, 0, 0, 1], slave.port)));
+    proxy.set_mode(ProxyMode::Pass);
+    slave.set("hr", 20, 78);
     wait_for_the_round_trip(&mut slave, 30, target);
+    wait_for_the_program("Main.iKept", 78, target);
     wait_until("the error cleared", || {
         let seen = read(&["GVL.stDev.xError", "GVL.xInError"], target);
         (text_of(&seen, "GVL.stDev.xError") == "FALSE" && text_of(&seen, "GVL.xInError") == "FALSE")
@@ -291,20 +377,25 @@ fn modbus_tcp_master_rides_out_a_stopped_slave_and_exceptions_while_the_task_run
     });
 
     // Exceptions: still connected, the exception code kept, the status and `rivet devices`
-    // agreeing.
+    // agreeing, the task going on.
     slave.exceptions(true);
+    let cycles = value_of(&read(&["Main.udiCycles"], target), "Main.udiCycles");
     wait_until("exception 2 reported", || {
         let seen = read(
             &[
                 "GVL.stDev.xConnected",
                 "GVL.stDev.xError",
                 "GVL.stDev.byLastException",
+                "GVL.stDev.eLastError",
+                "GVL.xInError",
             ],
             target,
         );
         let reported = text_of(&seen, "GVL.stDev.xConnected") == "TRUE"
             && text_of(&seen, "GVL.stDev.xError") == "TRUE"
-            && text_of(&seen, "GVL.stDev.byLastException").ends_with('2');
+            && value_of(&seen, "GVL.stDev.byLastException") == 2
+            && text_of(&seen, "GVL.stDev.eLastError") == "ILLEGAL_DATA_ADDRESS"
+            && text_of(&seen, "GVL.xInError") == "TRUE";
         reported.then_some(()).ok_or(seen)
     });
     wait_until("rivet devices reporting the exception", || {
@@ -315,6 +406,7 @@ fn modbus_tcp_master_rides_out_a_stopped_slave_and_exceptions_while_the_task_run
         .then_some(())
         .ok_or(line)
     });
+    wait_for_more_cycles(cycles, target);
     slave.exceptions(false);
     wait_for_the_round_trip(&mut slave, 40, target);
     wait_until("communicating again", || {
@@ -323,6 +415,69 @@ fn modbus_tcp_master_rides_out_a_stopped_slave_and_exceptions_while_the_task_run
             .then_some(())
             .ok_or(line)
     });
+}
+
+#[test]
+fn modbus_tcp_master_a_channel_at_an_address_the_slave_lacks_fails_alone() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut slave = PymodbusServer::tcp();
+    // Pymodbus has holding registers 0 to 999: 5000 is answered with exception 2.
+    let registers = Registers {
+        missing_address: Some(5000),
+        ..PYMODBUS_REGISTERS
+    };
+    let runtime = run_master_project(dir.path(), slave.port, &registers);
+    let target = runtime.target.as_str();
+
+    // The other channels of the device deliver both ways, round after round.
+    let cycles = value_of(&read(&["Main.udiCycles"], target), "Main.udiCycles");
+    wait_for_the_round_trip(&mut slave, 21, target);
+    wait_for_the_round_trip(&mut slave, 50, target);
+    wait_for_more_cycles(cycles, target);
+
+    // Only the missing channel's request failed: its error flag is set and the device is
+    // connected with exception 2 in its status; the read channel's flag is clear.
+    let fields = [
+        "GVL.stDev.xConnected",
+        "GVL.stDev.xError",
+        "GVL.stDev.eLastError",
+        "GVL.stDev.byLastException",
+        "GVL.stDev.udiRounds",
+        "GVL.xMissingError",
+        "GVL.xInError",
+        "Main.iMissing",
+    ];
+    let mut seen = String::new();
+    wait_until("exception 2 for the missing channel only", || {
+        seen = read(&fields, target);
+        let reported = text_of(&seen, "GVL.stDev.xConnected") == "TRUE"
+            && text_of(&seen, "GVL.stDev.xError") == "TRUE"
+            && text_of(&seen, "GVL.stDev.eLastError") == "ILLEGAL_DATA_ADDRESS"
+            && value_of(&seen, "GVL.stDev.byLastException") == 2
+            && text_of(&seen, "GVL.xMissingError") == "TRUE"
+            && text_of(&seen, "GVL.xInError") == "FALSE"
+            && value_of(&seen, "Main.iMissing") == 0;
+        reported.then_some(()).ok_or(seen.clone())
+    });
+    let rounds = value_of(&seen, "GVL.stDev.udiRounds");
+    wait_until("udiRounds growing", || {
+        let again = read(&["GVL.stDev.udiRounds"], target);
+        (value_of(&again, "GVL.stDev.udiRounds") > rounds)
+            .then_some(())
+            .ok_or(again)
+    });
+    wait_until("rivet devices agreeing", || {
+        let line = devices_line(target);
+        (line.starts_with(
+            "device 'Slave': answering with errors, last error ILLEGAL_DATA_ADDRESS, last exception 2, ",
+        ) && counter_of(&line, "rounds") > rounds as u64
+            && counter_of(&line, "errors") > 0)
+            .then_some(())
+            .ok_or(line)
+    });
+
+    // And the values go on following the slave.
+    wait_for_the_round_trip(&mut slave, 60, target);
 }
 
 /// The slave runtime's program: it counts `%MW0` (holding register 1024 in the default map)
@@ -367,6 +522,8 @@ fn modbus_tcp_master_against_a_second_rivet_runtime_as_the_slave() {
             read_table: "holding_register",
             read_address: 1024,
             write_address: 0,
+            missing_address: None,
+            kept_address: None,
         },
     );
     let master = start_runtime(&dir.path().join("master-data"), None);
@@ -379,18 +536,23 @@ fn modbus_tcp_master_against_a_second_rivet_runtime_as_the_slave() {
         target,
     ]);
 
-    // The master reads the slave's counter, and the slave receives twice it: the copy
-    // changes (the counter wraps, so it is not asked to grow), and what the slave received is
-    // always an even number the master computed.
+    // The master reads the slave's counter, and the slave receives twice it: what the slave
+    // received is an even number, half of it a value the counter has had (at most its value
+    // now: the counter wraps only after 10,000 cycles of the implicit 10 ms task, 100 s,
+    // beyond any patience here), and it grows as the counter does.
     let mut last_copy = 0;
     for round in 0..2 {
-        wait_until(&format!("the slave's copy changing ({round})"), || {
-            let read_slave = read(&["Slave.copy"], slave_target);
-            let copy = value_of(&read_slave, "Slave.copy");
-            (copy != last_copy && copy % 2 == 0)
-                .then(|| last_copy = copy)
-                .ok_or(read_slave)
-        });
+        wait_until(
+            &format!("the slave receiving twice its counter ({round})"),
+            || {
+                let read_slave = read(&["Slave.counter", "Slave.copy"], slave_target);
+                let counter = value_of(&read_slave, "Slave.counter");
+                let copy = value_of(&read_slave, "Slave.copy");
+                (copy > last_copy && copy % 2 == 0 && copy / 2 <= counter)
+                    .then(|| last_copy = copy)
+                    .ok_or(read_slave)
+            },
+        );
     }
     // A stray timeout on a loaded machine fails one round: the state is waited for.
     wait_until("the master connected, without error and doubling", || {
@@ -566,9 +728,10 @@ fn modbus_rtu_master_with_two_units_on_a_socat_cable_and_a_pulled_cable() {
     });
     let devices = ok(&["devices", "--target", target]);
     assert!(
-        devices
-            .lines()
-            .all(|line| line.contains(": serial port error, last error SERIAL_PORT_ERROR")),
+        devices.lines().count() == 2
+            && devices
+                .lines()
+                .all(|line| line.contains(": serial port error, last error SERIAL_PORT_ERROR")),
         "{devices}"
     );
 
@@ -584,22 +747,13 @@ fn modbus_rtu_master_with_two_units_on_a_socat_cable_and_a_pulled_cable() {
 }
 
 #[test]
-fn modbus_tcp_master_behind_a_slow_proxy_reports_timeouts_and_resumes() {
+fn modbus_tcp_master_behind_a_slow_proxy_and_a_pulled_cable_reports_timeouts_and_resumes() {
     let dir = tempfile::tempdir().unwrap();
-    let mut slave = PymodbusServer::tcp(0);
+    let mut slave = PymodbusServer::tcp();
     let proxy =
         FaultProxy::start(std::net::SocketAddr::from(([127, 0, 0, 1], slave.port))).unwrap();
-    let project = dir.path().join("project");
-    write_master_project(&project, proxy.address().port());
-    let runtime = start_runtime(&dir.path().join("data"), None);
+    let runtime = run_master_project(dir.path(), proxy.address().port(), &PYMODBUS_REGISTERS);
     let target = runtime.target.as_str();
-    ok(&[
-        "download",
-        project.to_str().unwrap(),
-        "--start",
-        "--target",
-        target,
-    ]);
     wait_for_the_round_trip(&mut slave, 21, target);
 
     // Answers three times the 200 ms timeout late: timeouts, a new connection each time, and
@@ -617,7 +771,7 @@ fn modbus_tcp_master_behind_a_slow_proxy_reports_timeouts_and_resumes() {
             target,
         );
         let reported = text_of(&seen, "GVL.stDev.xConnected") == "FALSE"
-            && text_of(&seen, "GVL.stDev.eLastError").contains("RESPONSE_TIMEOUT")
+            && text_of(&seen, "GVL.stDev.eLastError") == "RESPONSE_TIMEOUT"
             && value_of(&seen, "Main.udiCycles") > cycles
             && proxy.connections() > connections + 1;
         reported.then_some(()).ok_or(seen)
@@ -632,6 +786,59 @@ fn modbus_tcp_master_behind_a_slow_proxy_reports_timeouts_and_resumes() {
     proxy.set_mode(ProxyMode::Pass);
     wait_for_the_round_trip(&mut slave, 33, target);
     wait_until("communicating again", || {
+        let line = devices_line(target);
+        line.starts_with("device 'Slave': communicating")
+            .then_some(())
+            .ok_or(line)
+    });
+
+    // The cable pulled (§4.2): the request on the open connection times out, then so do the
+    // connection attempts, which no SYN answer comes to: RESPONSE_TIMEOUT, then
+    // TCP_COMMUNICATION_ERROR; the read channel set to zero, the task going on.
+    proxy.set_mode(ProxyMode::Swallow);
+    let cycles = value_of(&read(&["Main.udiCycles"], target), "Main.udiCycles");
+    let fields = [
+        "GVL.stDev.xConnected",
+        "GVL.stDev.xError",
+        "GVL.stDev.eLastError",
+        "GVL.xInError",
+        "Main.iIn",
+    ];
+    let pulled = |last_error: &'static str| {
+        move |seen: &str| {
+            text_of(seen, "GVL.stDev.xConnected") == "FALSE"
+                && text_of(seen, "GVL.stDev.xError") == "TRUE"
+                && text_of(seen, "GVL.stDev.eLastError") == last_error
+                && text_of(seen, "GVL.xInError") == "TRUE"
+                && value_of(seen, "Main.iIn") == 0
+        }
+    };
+    let timed_out = pulled("RESPONSE_TIMEOUT");
+    wait_until("the requests timing out without a cable", || {
+        let seen = read(&fields, target);
+        timed_out(&seen).then_some(()).ok_or(seen)
+    });
+    let cannot_connect = pulled("TCP_COMMUNICATION_ERROR");
+    wait_until("then the connection attempts timing out", || {
+        let seen = read(&fields, target);
+        cannot_connect(&seen).then_some(()).ok_or(seen)
+    });
+    wait_until(
+        "rivet devices naming the connection attempt's timeout",
+        || {
+            let line = devices_line(target);
+            (line.starts_with("device 'Slave': not answering, last error TCP_COMMUNICATION_ERROR")
+                && line.ends_with("within 1000 ms"))
+            .then_some(())
+            .ok_or(line)
+        },
+    );
+    wait_for_more_cycles(cycles, target);
+
+    // The cable back: the master connects again (after its back-off) and the values follow.
+    proxy.set_mode(ProxyMode::Pass);
+    wait_for_the_round_trip(&mut slave, 44, target);
+    wait_until("communicating again after the cable", || {
         let line = devices_line(target);
         line.starts_with("device 'Slave': communicating")
             .then_some(())

@@ -5,9 +5,12 @@ Usage:
     pymodbus_server.py rtu PATH BAUD PARITY STOPBITS [UNITS]
 
 `tcp` serves Modbus TCP on 127.0.0.1, on PORT or (without it, or with 0) a port the system
-picks, and prints `port N` once it listens (a test that killed it starts it again on the same
-port, whose old connections may be in TIME_WAIT: the socket reuses the address); it answers
-every unit id from the same tables. `rtu` serves Modbus RTU on the serial port PATH (a socat
+picks, and prints `port N` once it listens; it answers every unit id from the same tables.
+The tests always let the system pick: one that stops the server and starts it again gets a
+new port and keeps the master's address with the fault proxy in front
+(`tests/src/fault_proxy.rs`), since a port freed and bound again could be taken meanwhile.
+PORT is for a person trying a project at the desk (the README's "try it"), whose device names
+a fixed port. `rtu` serves Modbus RTU on the serial port PATH (a socat
 pseudo-terminal in the tests) with BAUD, PARITY (N, E or O) and STOPBITS (1 or 2), 8 data bits, as the units listed in UNITS (comma-separated, default 1), each with
 tables of its own, and prints `ready` once the port is open; it opens the port again when it
 goes away (socat killed and started again). A port that cannot be bound or opened at the
@@ -141,8 +144,8 @@ def fail(reason):
 
 async def serve_tcp(port):
     unit = unit_context()
-    # A test that killed the server starts it again on the same port, whose old connections
-    # are still in TIME_WAIT: without SO_REUSEADDR that bind fails.
+    # A person who stops the script and starts it again on the same fixed port finds the old
+    # connections in TIME_WAIT: without SO_REUSEADDR that bind fails for a minute.
     server = ModbusTcpServer(
         ModbusServerContext(slaves=unit, single=True),
         address=("127.0.0.1", port),

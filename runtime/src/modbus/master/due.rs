@@ -46,6 +46,9 @@ pub struct Due {
     next: Instant,
     /// The cycle ends the last every-cycle round answered.
     seen_cycle_ends: u64,
+    /// Whether the first round has been due: the schedule starts when the device begins
+    /// polling, not when the master was prepared.
+    began: bool,
     /// How often an every-cycle device is polled while its task has no cycles (the program is
     /// stopped): its task's interval, or 100 ms.
     idle_interval: Duration,
@@ -59,60 +62,94 @@ impl Due {
             seen_cycle_ends: exchange.cycle_ends(),
             exchange,
             next: Instant::now(),
+            began: false,
             idle_interval,
         }
     }
 
-    /// Waits until a round is due.
+    /// Waits until a round is due. It is called when the device's last round has ended (or
+    /// before its first), so what it finds passed on entry is what that round made wait: only
+    /// that counts as overruns (§6.3). Due times or cycle ends that pass while no round runs
+    /// (the master's thread was slow to wake) are merged into the next round uncounted.
     pub async fn wait(&mut self) -> RoundKind {
+        if !self.began {
+            self.begin();
+        }
         match self.schedule {
-            Schedule::Interval { interval_ms } => loop {
-                tokio::select! {
-                    () = tokio::time::sleep_until(self.next) => {
-                        let overruns = self.advance(interval_ms);
+            Schedule::Interval { interval_ms } => {
+                let overruns = self.passed_due_times(interval_ms);
+                loop {
+                    tokio::select! {
+                        () = tokio::time::sleep_until(self.next) => {
+                            self.advance(interval_ms);
+                            return RoundKind::Full { overruns };
+                        }
+                        () = self.exchange.notify.notified() => {
+                            if self.exchange.has_pending() {
+                                return RoundKind::EdgesOnly;
+                            }
+                        }
+                    }
+                }
+            }
+            Schedule::EveryCycle => {
+                // The first cycle end during the last round makes the next round due; the
+                // others are merged into it.
+                let during_round = self.exchange.cycle_ends() - self.seen_cycle_ends;
+                let overruns = u32::try_from(during_round.saturating_sub(1)).unwrap_or(u32::MAX);
+                loop {
+                    let ends = self.exchange.cycle_ends();
+                    if ends > self.seen_cycle_ends {
+                        self.seen_cycle_ends = ends;
                         return RoundKind::Full { overruns };
                     }
-                    () = self.exchange.notify.notified() => {
-                        if self.exchange.has_pending() {
-                            return RoundKind::EdgesOnly;
+                    // A stop wakes nobody (the scheduler never touches tokio's locks): the wait
+                    // looks at the program's state at the task's pace. Stopped, there are no
+                    // cycles to follow, and the device is still read at that pace (§6.10).
+                    tokio::select! {
+                        () = tokio::time::sleep(self.idle_interval) => {
+                            if !self.exchange.running()
+                                && self.exchange.cycle_ends() == self.seen_cycle_ends
+                            {
+                                return RoundKind::Full { overruns: 0 };
+                            }
                         }
+                        () = self.exchange.notify.notified() => {}
                     }
                 }
-            },
-            Schedule::EveryCycle => loop {
-                let ends = self.exchange.cycle_ends();
-                if ends > self.seen_cycle_ends {
-                    let merged = ends - self.seen_cycle_ends - 1;
-                    self.seen_cycle_ends = ends;
-                    return RoundKind::Full {
-                        overruns: u32::try_from(merged).unwrap_or(u32::MAX),
-                    };
-                }
-                // A stop wakes nobody (the scheduler never touches tokio's locks): the wait
-                // looks at the program's state at the task's pace. Stopped, there are no
-                // cycles to follow, and the device is still read at that pace (§6.10).
-                tokio::select! {
-                    () = tokio::time::sleep(self.idle_interval) => {
-                        if !self.exchange.running()
-                            && self.exchange.cycle_ends() == self.seen_cycle_ends
-                        {
-                            return RoundKind::Full { overruns: 0 };
-                        }
-                    }
-                    () = self.exchange.notify.notified() => {}
-                }
-            },
+            }
         }
     }
 
-    /// Moves the due time past the round that starts now. When the last round ended after
-    /// this one was due, every due time passed meanwhile is dropped, and their number returned.
-    fn advance(&mut self, interval_ms: u32) -> u32 {
+    /// Starts the schedule when the device begins polling. A master is prepared on the loading
+    /// thread and its devices begin polling only after the master it replaces has stopped
+    /// (`MasterStarter::go`), while the new program's cycles already run: the due times and
+    /// cycle ends passed meanwhile found no round running, so they are no overruns (§6.3
+    /// counts only what a running round made wait). The first round is due at once, the
+    /// interval's due times count from it, and cycle ends already passed make one round.
+    fn begin(&mut self) {
+        self.began = true;
+        self.next = Instant::now();
+        self.seen_cycle_ends = self
+            .exchange
+            .cycle_ends()
+            .saturating_sub(1)
+            .max(self.seen_cycle_ends);
+    }
+
+    /// How many due times after the next one have passed by now: when the last round ended
+    /// after its successor was due, those are the round starts it made the device drop.
+    fn passed_due_times(&self, interval_ms: u32) -> u32 {
         let interval = Duration::from_millis(u64::from(interval_ms.max(1)));
         let late = Instant::now().saturating_duration_since(self.next);
-        let passed = u32::try_from(late.as_nanos() / interval.as_nanos()).unwrap_or(u32::MAX);
+        u32::try_from(late.as_nanos() / interval.as_nanos()).unwrap_or(u32::MAX)
+    }
+
+    /// Moves the due time past the round that starts now, dropping every due time passed.
+    fn advance(&mut self, interval_ms: u32) {
+        let interval = Duration::from_millis(u64::from(interval_ms.max(1)));
+        let passed = self.passed_due_times(interval_ms);
         self.next += interval * passed.saturating_add(1);
-        passed
     }
 }
 
@@ -153,6 +190,88 @@ mod tests {
         assert_eq!(Instant::now() - start, Duration::from_millis(35));
         assert_eq!(due.wait().await, RoundKind::Full { overruns: 0 });
         assert_eq!(Instant::now() - start, Duration::from_millis(40));
+    }
+
+    #[tokio::test(start_paused = true)]
+    async fn due_times_passed_before_the_device_began_polling_are_no_overruns() {
+        // The master is prepared at load; its devices begin polling 35 ms later, once the old
+        // master has stopped. No round ran meanwhile, so nothing was dropped by one.
+        let schedule = Schedule::Interval { interval_ms: 10 };
+        let mut due = Due::new(schedule, exchange(), Duration::from_millis(100));
+        tokio::time::advance(Duration::from_millis(35)).await;
+        let began = Instant::now();
+        assert_eq!(due.wait().await, RoundKind::Full { overruns: 0 });
+        assert_eq!(Instant::now(), began);
+        // The interval counts from the first round.
+        assert_eq!(due.wait().await, RoundKind::Full { overruns: 0 });
+        assert_eq!(Instant::now() - began, Duration::from_millis(10));
+    }
+
+    #[tokio::test(start_paused = true)]
+    async fn cycle_ends_before_the_device_began_polling_make_one_round_without_overruns() {
+        // The new program's first cycles end before its master's devices begin polling (the
+        // start-up of a download): no round was running at those ends.
+        let exchange = exchange();
+        let mut due = Due::new(
+            Schedule::EveryCycle,
+            Arc::clone(&exchange),
+            Duration::from_millis(100),
+        );
+        exchange.set_running(true);
+        exchange.cycle_ended(false);
+        exchange.cycle_ended(false);
+        assert_eq!(due.wait().await, RoundKind::Full { overruns: 0 });
+        // From then on, the ends while a round runs are counted as §6.3 says: the first is
+        // the next round's, the second merged into it.
+        exchange.cycle_ended(false);
+        exchange.cycle_ended(false);
+        assert_eq!(due.wait().await, RoundKind::Full { overruns: 1 });
+        // Without a cycle end since the last round, no round is due.
+        exchange.cycle_ended(false);
+        assert_eq!(due.wait().await, RoundKind::Full { overruns: 0 });
+        let waited = tokio::time::timeout(Duration::from_millis(50), due.wait()).await;
+        assert!(
+            waited.is_err(),
+            "no cycle ended, yet a round was due: {waited:?}"
+        );
+    }
+
+    #[tokio::test(start_paused = true)]
+    async fn due_times_passed_while_no_round_runs_are_no_overruns() {
+        let schedule = Schedule::Interval { interval_ms: 10 };
+        let mut due = Due::new(schedule, exchange(), Duration::from_millis(100));
+        let start = Instant::now();
+        assert_eq!(due.wait().await, RoundKind::Full { overruns: 0 });
+        // The round ends at once; the master's thread then wakes 35 ms late (a loaded
+        // machine): the rounds due at 20 and 30 ms are dropped, but no round made them wait.
+        let (waited, ()) = tokio::join!(due.wait(), async {
+            tokio::time::advance(Duration::from_millis(35)).await;
+        });
+        assert_eq!(waited, RoundKind::Full { overruns: 0 });
+        assert_eq!(Instant::now() - start, Duration::from_millis(35));
+        assert_eq!(due.wait().await, RoundKind::Full { overruns: 0 });
+        assert_eq!(Instant::now() - start, Duration::from_millis(40));
+    }
+
+    #[tokio::test(start_paused = true)]
+    async fn cycle_ends_while_no_round_runs_make_one_round_without_overruns() {
+        let exchange = exchange();
+        let mut due = Due::new(
+            Schedule::EveryCycle,
+            Arc::clone(&exchange),
+            Duration::from_millis(100),
+        );
+        exchange.set_running(true);
+        exchange.cycle_ended(false);
+        assert_eq!(due.wait().await, RoundKind::Full { overruns: 0 });
+        // The round ends before the next cycle end; two cycles then end before the device's
+        // task is woken (the wake thread or the master's thread was slow).
+        let (waited, ()) = tokio::join!(due.wait(), async {
+            exchange.cycle_ended(false);
+            exchange.cycle_ended(false);
+            exchange.notify.notify_one();
+        });
+        assert_eq!(waited, RoundKind::Full { overruns: 0 });
     }
 
     #[tokio::test(start_paused = true)]

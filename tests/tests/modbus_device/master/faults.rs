@@ -150,11 +150,16 @@ fn wrong_answers_are_invalid_data_exceptions_fail_one_request_and_nothing_panics
             && first(&scheduler.modbus_devices()).state == DeviceState::Communicating
     });
 
+    // A wrong echo: invalid data, and a new connection each time, since the stream may be
+    // out of step (§4.2).
     mode.store(WRONG_ECHO, Ordering::Release);
     let errors = first(&scheduler.modbus_devices()).errors;
+    let connections = fake.connections.load(Ordering::Acquire);
     wait_until("a wrong echo is invalid data, and the reads go on", || {
         let device = first(&scheduler.modbus_devices());
-        device.last_error == error_codes::RESPONSE_INVALID_DATA && device.errors > errors + 3
+        device.last_error == error_codes::RESPONSE_INVALID_DATA
+            && device.errors > errors + 3
+            && fake.connections.load(Ordering::Acquire) > connections + 3
     });
     wait_until("the reads' channel is not in error", || {
         read(&scheduler, "Main.xInError", 1) == [0]
@@ -181,11 +186,13 @@ fn wrong_answers_are_invalid_data_exceptions_fail_one_request_and_nothing_panics
 
     // A device that stops answering: a timeout ends the round, the connection is made anew.
     mode.store(SILENT, Ordering::Release);
+    let connections = fake.connections.load(Ordering::Acquire);
     wait_until("silence is a timeout", || {
         let device = first(&scheduler.modbus_devices());
         device.last_error == error_codes::RESPONSE_TIMEOUT
             && device.state == DeviceState::NotAnswering
             && device.consecutive_errors > 3
+            && fake.connections.load(Ordering::Acquire) > connections + 1
     });
     // The program sees it at the next cycle's start.
     wait_until("the program sees the failure", || {

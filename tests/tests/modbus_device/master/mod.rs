@@ -27,36 +27,6 @@ use runtime::scheduler::Scheduler;
 /// How long any one step may take before the test gives up.
 const PATIENCE: Duration = Duration::from_secs(15);
 
-/// The status structure and its error codes as `compiler/src/library/modbus.st` will declare
-/// them (§3.1); declared here until the compiler brings its library.
-const LIBRARY: &str = "\
-TYPE MB_ErrorCodes :
-(
-    RESPONSE_SUCCESS := 16#00,
-    ILLEGAL_DATA_ADDRESS := 16#02,
-    RESPONSE_TIMEOUT := 16#A1,
-    TCP_COMMUNICATION_ERROR := 16#A5,
-    RESPONSE_INVALID_DATA := 16#A6,
-    NOT_YET_POLLED := 16#C1
-) USINT;
-END_TYPE
-
-TYPE MODBUS_DEVICE_STATUS :
-STRUCT
-    xConnected : BOOL;
-    xError : BOOL;
-    eLastError : MB_ErrorCodes;
-    byLastException : BYTE;
-    udiConsecutiveErrors : UDINT;
-    udiRequests : UDINT;
-    udiErrors : UDINT;
-    udiRounds : UDINT;
-    udiOverruns : UDINT;
-    ltLastResponseTime : LTIME;
-END_STRUCT
-END_TYPE
-";
-
 /// The program: doubles what it reads, counts its cycles, has a device's status.
 const PROGRAM: &str = "
 PROGRAM Main
@@ -79,15 +49,15 @@ END_IF
 END_PROGRAM
 ";
 
-/// Compiles the program with the library.
+/// Compiles the program.
 fn program() -> ProgramImage {
     compile(PROGRAM)
 }
 
-/// Compiles `program` with the library.
+/// Compiles `program`; `MODBUS_DEVICE_STATUS` comes from the compiler's own Modbus library
+/// (`compiler/src/library/modbus.st`).
 fn compile(program: &str) -> ProgramImage {
-    let text = format!("{LIBRARY}{program}");
-    let source = compiler::SourceProject::new(&text);
+    let source = compiler::SourceProject::new(program);
     match compiler::compile_source(&source, "main.st") {
         Ok(image) => image,
         Err(error) => panic!("the test program does not compile: {error:?}"),
@@ -146,7 +116,9 @@ fn image_with(devices: Vec<DeviceDef>) -> ProgramImage {
 }
 
 /// Rivet's Modbus server on its own tokio runtime, so that a test can stop it whole (its
-/// listener and every connection) and start it again on the same port.
+/// listener and every connection) and start it again, on a new port (behind a
+/// `FaultProxy`, which keeps the master's address: a port freed and bound again could be
+/// taken by another test meanwhile).
 struct Slave {
     areas: Arc<Mutex<LocatedAreas>>,
     address: SocketAddr,
@@ -165,7 +137,7 @@ impl Slave {
         slave
     }
 
-    /// Serves on the slave's address (a free port the first time).
+    /// Serves on 127.0.0.1 on a port the system picks, then in `address`.
     fn serve(&mut self) {
         let runtime = tokio::runtime::Builder::new_multi_thread()
             .worker_threads(1)
@@ -173,7 +145,10 @@ impl Slave {
             .build()
             .unwrap();
         let listener = runtime
-            .block_on(tokio::net::TcpListener::bind(self.address))
+            .block_on(tokio::net::TcpListener::bind(SocketAddr::from((
+                [127, 0, 0, 1],
+                0,
+            ))))
             .unwrap();
         self.address = listener.local_addr().unwrap();
         runtime.spawn(serve(
@@ -222,6 +197,21 @@ fn read(scheduler: &Scheduler, path: &str, bytes: usize) -> Vec<u8> {
             memory.engine.region(place.region)[start..start + bytes].to_vec()
         })
         .unwrap()
+}
+
+/// Writes `value` into the INT variable `path` of the loaded program between two cycles (as
+/// an online write would).
+fn write_int(scheduler: &Scheduler, path: &str, value: i16) {
+    let path = path.to_owned();
+    scheduler
+        .between(move |between| {
+            let memory = between.memory.as_mut().unwrap();
+            let place = runtime::value::resolve(memory.engine.image(), &path).unwrap();
+            let start = place.offset as usize;
+            memory.engine.region_mut(place.region)[start..start + 2]
+                .copy_from_slice(&value.to_le_bytes());
+        })
+        .unwrap();
 }
 
 fn read_int(scheduler: &Scheduler, path: &str) -> i16 {

@@ -82,7 +82,8 @@ fn a_compiled_project_with_devices_loads_into_the_scheduler() {
             channel("GVL.wRaw", 7, ModbusDataType::Uint16, 1, Read),
             channel("GVL.wLocated", 8, ModbusDataType::Uint16, 1, Read),
         ],
-        // A port nothing listens on: the test loads the image and never starts the master.
+        // A port nothing listens on: the master, which polls from the load on, is refused
+        // there; the test looks only at what the load resolved and never starts the program.
         ..ModbusDevice::tcp("Drive", "127.0.0.1", 1)
     }];
     let modbus_findings: Vec<String> = compiler::sema::check_project(&project)

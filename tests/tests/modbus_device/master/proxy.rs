@@ -58,11 +58,19 @@ fn a_slow_slave_a_pulled_cable_and_a_stopped_server_fail_and_recover() {
     proxy.set_mode(ProxyMode::Pass);
     resumes(12);
 
-    // A pulled cable: nothing comes back and nothing is closed.
+    // A pulled cable: nothing comes back and nothing is closed; requests time out, then the
+    // connection attempts do (§4.2: as a timeout, then TCP_COMMUNICATION_ERROR).
     proxy.set_mode(ProxyMode::Swallow);
     wait_until("a pulled cable times out", || {
         let device = first(&scheduler.modbus_devices());
-        device.last_error == error_codes::RESPONSE_TIMEOUT && device.consecutive_errors > 3
+        device.last_error == error_codes::RESPONSE_TIMEOUT
+            && device.state == DeviceState::NotAnswering
+    });
+    wait_until("then its connection attempts time out", || {
+        let device = first(&scheduler.modbus_devices());
+        device.last_error == error_codes::TCP_COMMUNICATION_ERROR
+            && device.state == DeviceState::NotAnswering
+            && device.detail.ends_with("within 1000 ms")
     });
     cycles_go_on("the task goes on without the cable");
     proxy.set_mode(ProxyMode::Pass);

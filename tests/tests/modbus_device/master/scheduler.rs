@@ -1,5 +1,6 @@
 //! A program reads and writes a device through the scheduler's copy points; the device's server
-//! stops and comes back while the task goes on.
+//! stops and comes back (on a new port, behind a fault proxy that keeps the master's address)
+//! while the task goes on.
 
 use std::sync::{Arc, Mutex};
 
@@ -7,6 +8,7 @@ use program_image::modbus_master::Schedule;
 use runtime::areas::LocatedAreas;
 use runtime::modbus::master::{DeviceState, error_codes};
 use runtime::scheduler::{Scheduler, SchedulerOptions};
+use tests::fault_proxy::{FaultProxy, ProxyMode};
 
 use super::{Slave, device, first, image_with, read, read_int, read_udint, wait_until};
 
@@ -37,11 +39,12 @@ fn a_program_reads_and_writes_a_device_and_recovers_when_its_server_comes_back()
     let mut slave = Slave::start();
     slave.set(0, 21);
     slave.set(2, 5);
+    let proxy = FaultProxy::start(slave.address).unwrap();
     let areas = Arc::new(Mutex::new(LocatedAreas::default()));
     let scheduler = Scheduler::spawn(areas, SchedulerOptions::default()).unwrap();
     scheduler
         .load(image_with(vec![device(
-            slave.address,
+            proxy.address(),
             Schedule::EveryCycle,
         )]))
         .unwrap();
@@ -72,6 +75,9 @@ fn a_program_reads_and_writes_a_device_and_recovers_when_its_server_comes_back()
     });
 
     // The server stops: the task goes on, the values stay, a set_to_zero channel is zeroed.
+    // The proxy resets every connection while the server is down, as a host whose server
+    // has stopped does, and keeps its port meanwhile.
+    proxy.set_mode(ProxyMode::Refuse);
     slave.stop();
     wait_until("the status says the connection is gone", || {
         let seen = status(&scheduler);
@@ -92,14 +98,16 @@ fn a_program_reads_and_writes_a_device_and_recovers_when_its_server_comes_back()
     let snapshot = first(&scheduler.modbus_devices());
     assert_eq!(snapshot.state, DeviceState::NotAnswering);
     assert!(
-        snapshot.detail.contains(&slave.address.to_string()),
+        snapshot.detail.contains(&proxy.address().to_string()),
         "{}",
         snapshot.detail
     );
 
-    // It comes back on the same port: values resume after the back-off.
+    // It comes back, on a port of its own behind the proxy: values resume after the back-off.
     slave.set(0, 8);
     slave.serve();
+    proxy.set_slave(slave.address);
+    proxy.set_mode(ProxyMode::Pass);
     wait_until("the device is read and written again", || {
         read_int(&scheduler, "Main.iOut") == 16 && slave.get(10) == 16
     });
