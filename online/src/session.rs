@@ -169,7 +169,7 @@ pub enum ModbusDevicesAnswer {
     Reports(Vec<ModbusDeviceReport>),
     /// The target does not know the service (an older runtime).
     NotReported,
-    /// The target refused the question; the words say why.
+    /// The target refused the question: its reason in its own words, or the failure's.
     Refused(String),
 }
 
@@ -422,6 +422,10 @@ async fn run(
                                     let _ = events.send(Event::Disconnected(error.to_string())).await;
                                     continue 'connect;
                                 }
+                                // The target's own words: the studio says whose they are.
+                                Err(OnlineError::Rejected(reason)) => {
+                                    ModbusDevicesAnswer::Refused(reason)
+                                }
                                 Err(error) => ModbusDevicesAnswer::Refused(error.to_string()),
                             };
                             if events.send(Event::ModbusDevices(answer)).await.is_err() {
@@ -552,3 +556,7 @@ async fn finish(
     result?;
     client.identify().await.map(|identity| identity.state)
 }
+
+#[cfg(test)]
+#[path = "session/modbus_devices_tests.rs"]
+mod modbus_devices_tests;

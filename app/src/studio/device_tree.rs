@@ -550,10 +550,13 @@ impl TreeUi<'_> {
                 // before the tag, where a narrow pane does not cut it off and the names stay
                 // aligned, and its counters on hovering the icon or the name.
                 ui.horizontal(|ui| {
-                    let spacing = ui.spacing().item_spacing.x;
-                    ui.add_space((ui.spacing().indent - DEVICE_ICON_SIZE - spacing).max(0.0));
-                    let icon = device_icon_ui(ui, &device.name, &shown);
+                    // Laid out as a leaf, the icon painted in the indentation.
+                    let left = ui.cursor().min.x;
+                    let indent = ui.spacing().indent;
+                    ui.add_space(indent);
                     let row = tree.row(ui, node, "MB", &device.name, &detail);
+                    let center = egui::pos2(left + indent / 2.0, row.rect.center().y);
+                    let icon = device_icon_ui(ui, center, &device.name, &shown);
                     for response in [row, icon] {
                         response.on_hover_ui(|ui| device_tooltip_ui(ui, &device.name, &shown));
                     }
@@ -596,10 +599,18 @@ const DEVICE_ICON_SIZE: f32 = 12.0;
 
 /// A runtime device's state as a small icon in the theme's colour of its light, its shape
 /// telling the lights apart without colour: a disc (communicating), a triangle (failing), a
-/// ring (off) and a ring with a dot (waiting). Its accessible label is "NAME: STATE".
-fn device_icon_ui(ui: &mut Ui, name: &str, shown: &DeviceOnline) -> egui::Response {
+/// ring (off) and a ring with a dot (waiting), centred on `center`. Its accessible label is
+/// "NAME: STATE".
+fn device_icon_ui(
+    ui: &mut Ui,
+    center: egui::Pos2,
+    name: &str,
+    shown: &DeviceOnline,
+) -> egui::Response {
     let size = egui::vec2(DEVICE_ICON_SIZE, DEVICE_ICON_SIZE);
-    let (rect, response) = ui.allocate_exact_size(size, egui::Sense::hover());
+    let rect = egui::Rect::from_center_size(center, size);
+    let id = ui.scope_id().with(("device state icon", name));
+    let response = ui.interact(rect, id, egui::Sense::hover());
     let label = format!("{name}: {}", shown.state);
     response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Image, true, &label));
     let color = shown.light.color(colors(ui));

@@ -19,7 +19,8 @@ pub(crate) enum DeviceLight {
     Communicating,
     /// The device answers with errors, does not answer, or its serial port failed.
     Failing,
-    /// Nothing is polled: the runtime's master is off, or the program is not running.
+    /// Nothing reaches the program: the runtime's master is off, or the program is not running
+    /// (the master may still poll the device, and its counters say so).
     Off,
     /// No round has ended yet, or the runtime has not reported the device yet.
     Waiting,
@@ -301,7 +302,10 @@ mod tests {
             Language::English,
         );
         assert_eq!(stopped.light, DeviceLight::Off);
-        assert_eq!(stopped.state, "Off: the program is not running");
+        assert_eq!(
+            stopped.state,
+            "Off: the program is not running, so no values are copied"
+        );
         let faulted = describe(
             Some(&report),
             true,

@@ -43,7 +43,7 @@ pub(crate) struct StudioColors {
     pub device_communicating: Color32,
     /// While it answers with errors, does not answer, or its serial port failed.
     pub device_failing: Color32,
-    /// While nothing is polled: the master is off or the program is not running.
+    /// While nothing reaches the program: the master is off or the program is not running.
     pub device_off: Color32,
     /// Before its first round ended, or before the runtime reported it.
     pub device_waiting: Color32,

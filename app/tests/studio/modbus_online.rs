@@ -95,7 +95,7 @@ fn runtime_devices_show_their_state_in_the_tree_the_editor_and_the_status_line()
     harness.step();
     assert!(
         harness
-            .query_by_label("BeltDrive: Off: the program is not running")
+            .query_by_label("BeltDrive: Off: the program is not running, so no values are copied")
             .is_some()
     );
     assert!(

@@ -76,7 +76,10 @@ impl ModbusOnlineText {
                 "Off: the runtime's Modbus master is off",
                 "关闭：运行时的 Modbus 主站已关闭",
             ),
-            Self::ProgramNotRunning => ("Off: the program is not running", "关闭：程序未运行"),
+            Self::ProgramNotRunning => (
+                "Off: the program is not running, so no values are copied",
+                "关闭：程序未运行，不复制数值",
+            ),
             Self::NoReportYet => (
                 "Not yet connected: no report from the runtime yet",
                 "尚未连接：还没有收到运行时的报告",
