@@ -48,8 +48,8 @@ fn step_until_shown(harness: &mut Harness<'_, StudioApp>, text: &str) {
 fn runtime_devices_show_their_state_in_the_tree_the_editor_and_the_status_line() {
     let drive = crate::devices::drive(Arc::new(Mutex::new(LocatedAreas::new(16, 64, 8192))));
     let nobody = closed_port();
-    // The example's belt drive on the loopback server, mastered by the runtime in MainTask, and
-    // a meter at a port nobody listens on.
+    // The example's belt drive on the loopback server, mastered by the runtime in MainTask, a
+    // meter at a port nobody listens on, and a scale the studio would poll itself (no task).
     let project = example_copy(|dir| {
         replace_in(
             dir,
@@ -70,7 +70,9 @@ fn runtime_devices_show_their_state_in_the_tree_the_editor_and_the_status_line()
              unit_id = 1\nword_order = \"high_first\"\npoll_interval_ms = 100\n\
              timeout_ms = 100\ntask = \"MainTask\"\n\n[[modbus_device.binding]]\n\
              variable = \"GVL_Machine.xAcknowledge\"\ntable = \"discrete_input\"\naddress = 0\n\
-             data_type = \"bool\"\n"
+             data_type = \"bool\"\n\n[[modbus_device]]\nname = \"Scale\"\nhost = \"127.0.0.1\"\n\
+             port = {nobody}\nunit_id = 1\nword_order = \"high_first\"\npoll_interval_ms = 100\n\
+             timeout_ms = 100\n"
         ));
         std::fs::write(&manifest, text).unwrap();
     });
@@ -112,6 +114,8 @@ fn runtime_devices_show_their_state_in_the_tree_the_editor_and_the_status_line()
     });
     harness.step();
     assert!(harness.query_by_label("BeltDrive: Communicating").is_some());
+    // A studio device shows nothing new.
+    assert!(harness.query_by_label_contains("Scale: ").is_none());
 
     // The meter's tooltip gives its last error in words and its counters.
     harness.get_by_label("Meter: Not answering").scroll_to_me();

@@ -65,7 +65,9 @@ impl Online {
                 self.modbus_reports.reports.clear();
                 self.modbus_reports.problem = Some(ModbusReportsProblem::NotReported);
             }
+            // The reports are dropped rather than shown stale beside a refusal nobody sees.
             ModbusDevicesAnswer::Refused(reason) => {
+                self.modbus_reports.reports.clear();
                 self.modbus_reports.problem = Some(ModbusReportsProblem::Refused(reason));
             }
         }
