@@ -28,8 +28,8 @@ use crate::client::{Client, Sample, TraceConfig};
 use crate::debug_client::{Attached, FlowBitmap};
 use crate::error::OnlineError;
 use crate::{
-    ChangeApplied, ChangeCheck, ChangeDetailEntry, Fault, FlowEntry, Identity, Place, Reset,
-    Resolved, Snapshot, TargetState, TaskInfo, TraceStatus,
+    ChangeApplied, ChangeCheck, ChangeDetailEntry, Fault, FlowEntry, Identity, ModbusDeviceReport,
+    Place, Reset, Resolved, Snapshot, TargetState, TaskInfo, TraceStatus,
 };
 
 /// What a session is asked to do.
@@ -65,6 +65,9 @@ pub enum Command {
     Tasks,
     /// Ask for the fault log; answered by [`Event::Faults`].
     Faults,
+    /// Ask for the Modbus devices the target's master polls (`MODBUS_DEVICES`); answered by
+    /// [`Event::ModbusDevices`].
+    ModbusDevices,
     /// Configure a trace and arm it; answered by [`Event::Done`].
     TraceStart(TraceConfig),
     /// Ask where the trace is; answered by [`Event::TraceStatus`].
@@ -116,6 +119,10 @@ pub enum Event {
     Tasks(Vec<TaskInfo>),
     /// The answer to [`Command::Faults`].
     Faults(Vec<Fault>),
+    /// The answer to [`Command::ModbusDevices`]; a refusal is reported here rather than as
+    /// [`Event::Failed`], since the question is asked every second and its failure changes
+    /// nothing on the target.
+    ModbusDevices(ModbusDevicesAnswer),
     /// The answer to [`Command::TraceStatus`].
     TraceStatus(TraceStatus),
     /// Trace upload progress: samples received of the total.
@@ -153,6 +160,17 @@ pub enum Event {
     },
     /// A debugging command failed; the words name the service and the target's reason.
     DebugFailed(String),
+}
+
+/// What a target said to [`Command::ModbusDevices`].
+#[derive(Clone, Debug, PartialEq)]
+pub enum ModbusDevicesAnswer {
+    /// Every device its master polls, in the image's order.
+    Reports(Vec<ModbusDeviceReport>),
+    /// The target does not know the service (an older runtime).
+    NotReported,
+    /// The target refused the question: its reason in its own words, or the failure's.
+    Refused(String),
 }
 
 /// How a session behaves.
@@ -392,6 +410,29 @@ async fn run(
                             }
                             Err(error) => Err(error),
                         },
+                        Command::ModbusDevices => {
+                            let answer = match client.modbus_devices().await {
+                                Ok(reports) => ModbusDevicesAnswer::Reports(reports),
+                                Err(OnlineError::ModbusDevicesNotReported) => {
+                                    ModbusDevicesAnswer::NotReported
+                                }
+                                // A lost connection is the session's to handle, as for any
+                                // command.
+                                Err(error @ (OnlineError::Io(..) | OnlineError::Timeout(..))) => {
+                                    let _ = events.send(Event::Disconnected(error.to_string())).await;
+                                    continue 'connect;
+                                }
+                                // The target's own words: the studio says whose they are.
+                                Err(OnlineError::Rejected(reason)) => {
+                                    ModbusDevicesAnswer::Refused(reason)
+                                }
+                                Err(error) => ModbusDevicesAnswer::Refused(error.to_string()),
+                            };
+                            if events.send(Event::ModbusDevices(answer)).await.is_err() {
+                                return;
+                            }
+                            continue;
+                        }
                         Command::TraceStart(config) => {
                             trace_places.clone_from(&config.places);
                             let result = match client.trace_configure(&config).await {
@@ -515,3 +556,7 @@ async fn finish(
     result?;
     client.identify().await.map(|identity| identity.state)
 }
+
+#[cfg(test)]
+#[path = "session/modbus_devices_tests.rs"]
+mod modbus_devices_tests;

@@ -7,6 +7,7 @@ use online::{Reset, TargetState};
 use super::command::{Command, Commands};
 use super::debug::DebugCommand;
 use super::i18n::{ChartText, DebugText, ExportText, ImportText, Language, Text};
+use super::modbus_online::polling_status;
 use super::online::{Phase, TargetKind};
 use super::pane::Pane;
 use super::settings::Theme;
@@ -61,6 +62,10 @@ pub(crate) fn status_bar_ui(ui: &mut Ui, view: StudioView<'_>) {
         if view.online.is_online() {
             let cycle = format!("{} {}", Text::Cycle.get(view.language), view.online.cycle());
             ui.label(RichText::new(cycle).weak());
+        }
+        if let Some(polling) = simulator_polling(view) {
+            ui.separator();
+            ui.label(polling);
         }
         if let Some(session) = view.session {
             ui.separator();
@@ -452,6 +457,17 @@ impl Chrome<'_, '_> {
             );
         });
     }
+}
+
+/// "Simulator: polling 2 Modbus devices" while logged in to the simulator with a program whose
+/// runtime master polls devices (`docs/modbus-master.md` §6.11): the devices get real traffic
+/// from this computer, which the user should know.
+fn simulator_polling(view: StudioView<'_>) -> Option<String> {
+    let online = view.online;
+    if !online.is_online() || online.logged_in_target() != Some(TargetKind::Simulation) {
+        return None;
+    }
+    polling_status(online.runtime_device_count(), view.language)
 }
 
 /// The online state in words and colour, for the status bar.

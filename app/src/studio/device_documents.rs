@@ -9,8 +9,11 @@ use project_model::Project;
 
 use super::command::{Command, Commands};
 use super::device_refusals::refusal_words;
-use super::i18n::{DeviceText, Language};
+use super::i18n::{DeviceText, Language, ModbusOnlineText};
+use super::modbus_online::device_online;
 use super::modbus_plan::round_requests;
+use super::online::Online;
+use super::theme::colors;
 use super::tree_node::TreeNode;
 
 /// What the device editors keep between frames: each node's typed text and refusals. Not
@@ -50,6 +53,38 @@ pub(crate) fn device_editor_ui(
         None => return false,
     }
     true
+}
+
+/// The read-only Online part of a runtime Modbus device's editor (`docs/modbus-master.md`
+/// §9.2): its state, last error and counters while logged in; nothing for any other node, for
+/// a studio device, or when not logged in.
+pub(crate) fn modbus_online_part_ui(
+    ui: &mut Ui,
+    project: &Project,
+    node: &TreeNode,
+    online: &Online,
+    language: Language,
+) {
+    let TreeNode::ModbusDevice(name) = node else {
+        return;
+    };
+    let Some(device) = project.modbus_devices.iter().find(|d| d.name == *name) else {
+        return;
+    };
+    let Some(shown) = device_online(online, device, language) else {
+        return;
+    };
+    editor::modbus_online_ui(
+        ui,
+        &editor::ModbusOnlinePart {
+            device: name,
+            heading: ModbusOnlineText::Online.get(language),
+            state_label: ModbusOnlineText::StateLabel.get(language),
+            state: &shown.state,
+            state_color: shown.light.color(colors(ui)),
+            rows: &shown.rows,
+        },
+    );
 }
 
 /// The editor of `node` and its gesture: `None` when `node` has no device editor or is no

@@ -9,6 +9,8 @@ use project_model::{Folder, IoDirection, Node, Object, Parity, Project, SerialPo
 
 use super::command::{Command, Commands};
 use super::i18n::{Language, Text};
+use super::modbus_online::{DeviceLight, DeviceOnline, device_online};
+use super::online::Online;
 use super::reveal::Reveal;
 use super::theme::{StudioColors, colors};
 use super::tree_actions::{
@@ -70,6 +72,7 @@ pub(crate) fn devices_pane_ui(
             language,
             dirty,
             body_language: state.body_language,
+            online: view.online,
         },
         !dialog_open,
     );
@@ -140,6 +143,8 @@ pub struct TreeContext<'a> {
     pub dirty: &'a HashSet<TreeNode>,
     /// The implementation language the add dialogs propose.
     pub body_language: BodyLanguage,
+    /// The online state, whose runtime Modbus devices' reports the device nodes show.
+    pub online: &'a Online,
 }
 
 /// Draws the device tree and reports what the user did; it never changes the project. `keys`
@@ -151,6 +156,7 @@ pub fn device_tree_ui(ui: &mut Ui, context: TreeContext<'_>, keys: bool) -> Tree
         language,
         dirty,
         body_language,
+        online,
     } = context;
     let mut tree = TreeUi {
         project,
@@ -158,6 +164,7 @@ pub fn device_tree_ui(ui: &mut Ui, context: TreeContext<'_>, keys: bool) -> Tree
         language,
         dirty,
         body_language,
+        online,
         row_focused: false,
         response: TreeResponse::default(),
     };
@@ -215,6 +222,8 @@ struct TreeUi<'a> {
     dirty: &'a HashSet<TreeNode>,
     /// The implementation language the add dialogs propose.
     body_language: BodyLanguage,
+    /// The online state, for the runtime Modbus devices' icons.
+    online: &'a Online,
     /// Whether a row had the keyboard focus this frame.
     row_focused: bool,
     response: TreeResponse,
@@ -233,14 +242,23 @@ impl TreeUi<'_> {
     ) {
         let id = ui.make_persistent_id(("device_tree", &node));
         CollapsingState::load_with_default_open(ui.ctx(), id, true)
-            .show_header(ui, |ui| self.row(ui, node, tag, label, detail))
+            .show_header(ui, |ui| {
+                self.row(ui, node, tag, label, detail);
+            })
             .body(|ui| children(self, ui));
     }
 
     /// One selectable row: a tag, the name (the row's accessible label, with ` *` when the node
     /// differs from the saved project) and a weak detail. The row opens a context menu, can be
     /// dragged when the node can move, and takes drops of nodes that may land on it.
-    fn row(&mut self, ui: &mut Ui, node: TreeNode, tag: &str, label: &str, detail: &str) {
+    fn row(
+        &mut self,
+        ui: &mut Ui,
+        node: TreeNode,
+        tag: &str,
+        label: &str,
+        detail: &str,
+    ) -> egui::Response {
         // A fixed-width tag column keeps the names aligned.
         let tag_size = egui::vec2(30.0, ui.spacing().interact_size.y);
         ui.allocate_ui_with_layout(
@@ -284,6 +302,7 @@ impl TreeUi<'_> {
         }
         self.drop_target(ui, &response, &node);
         response.context_menu(|ui| self.menu(ui, &node));
+        response
     }
 
     /// Shows where a dragged node would land on this row, and reports the drop.
@@ -522,13 +541,26 @@ impl TreeUi<'_> {
         self.branch(ui, TreeNode::ModbusDevices, "MB", label, "", |tree, ui| {
             for device in &project.modbus_devices {
                 let detail = format!("{} #{}", device.link, device.unit_id);
-                tree.leaf(
-                    ui,
-                    TreeNode::ModbusDevice(device.name.clone()),
-                    "MB",
-                    &device.name,
-                    &detail,
-                );
+                let node = TreeNode::ModbusDevice(device.name.clone());
+                let Some(shown) = device_online(tree.online, device, language) else {
+                    tree.leaf(ui, node, "MB", &device.name, &detail);
+                    continue;
+                };
+                // A runtime device while logged in: its state as an icon in the indentation
+                // before the tag, where a narrow pane does not cut it off and the names stay
+                // aligned, and its counters on hovering the icon or the name.
+                ui.horizontal(|ui| {
+                    // Laid out as a leaf, the icon painted in the indentation.
+                    let left = ui.cursor().min.x;
+                    let indent = ui.spacing().indent;
+                    ui.add_space(indent);
+                    let row = tree.row(ui, node, "MB", &device.name, &detail);
+                    let center = egui::pos2(left + indent / 2.0, row.rect.center().y);
+                    let icon = device_icon_ui(ui, center, &device.name, &shown);
+                    for response in [row, icon] {
+                        response.on_hover_ui(|ui| device_tooltip_ui(ui, &device.name, &shown));
+                    }
+                });
             }
         });
     }
@@ -560,6 +592,79 @@ impl TreeUi<'_> {
             },
         );
     }
+}
+
+/// The side of a runtime device's state icon, in points.
+const DEVICE_ICON_SIZE: f32 = 12.0;
+
+/// A runtime device's state as a small icon in the theme's colour of its light, its shape
+/// telling the lights apart without colour: a disc (communicating), a triangle (failing), a
+/// ring (off) and a ring with a dot (waiting), centred on `center`. Its accessible label is
+/// "NAME: STATE".
+fn device_icon_ui(
+    ui: &mut Ui,
+    center: egui::Pos2,
+    name: &str,
+    shown: &DeviceOnline,
+) -> egui::Response {
+    let size = egui::vec2(DEVICE_ICON_SIZE, DEVICE_ICON_SIZE);
+    let rect = egui::Rect::from_center_size(center, size);
+    let id = ui.scope_id().with(("device state icon", name));
+    let response = ui.interact(rect, id, egui::Sense::hover());
+    let label = format!("{name}: {}", shown.state);
+    response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Image, true, &label));
+    let color = shown.light.color(colors(ui));
+    let painter = ui.painter();
+    let center = rect.center();
+    let radius = 4.5;
+    match shown.light {
+        DeviceLight::Communicating => {
+            painter.circle_filled(center, radius, color);
+        }
+        DeviceLight::Failing => {
+            let points = vec![
+                center + egui::vec2(0.0, -radius - 0.5),
+                center + egui::vec2(radius + 0.5, radius),
+                center + egui::vec2(-radius - 0.5, radius),
+            ];
+            painter.add(egui::Shape::convex_polygon(
+                points,
+                color,
+                egui::Stroke::NONE,
+            ));
+        }
+        DeviceLight::Off => {
+            painter.circle_stroke(center, radius, egui::Stroke::new(1.5, color));
+        }
+        DeviceLight::Waiting => {
+            painter.circle_stroke(center, radius, egui::Stroke::new(1.5, color));
+            painter.circle_filled(center, 1.5, color);
+        }
+    }
+    response
+}
+
+/// A runtime device's tooltip: its name and state, then the last error and the counters.
+fn device_tooltip_ui(ui: &mut Ui, name: &str, shown: &DeviceOnline) {
+    let color = shown.light.color(colors(ui));
+    ui.label(
+        RichText::new(format!("{name}: {}", shown.state))
+            .strong()
+            .color(color),
+    );
+    if shown.rows.is_empty() {
+        return;
+    }
+    egui::Grid::new(("device tooltip", name))
+        .num_columns(2)
+        .spacing([12.0, 2.0])
+        .show(ui, |ui| {
+            for (label, value) in &shown.rows {
+                ui.label(RichText::new(label).weak());
+                ui.label(value);
+                ui.end_row();
+            }
+        });
 }
 
 /// The name of the dragged node beside the pointer, so the user sees what is being moved.

@@ -22,6 +22,7 @@ mod import_dialog;
 #[cfg(test)]
 mod literal_tests;
 mod login_dialog;
+mod modbus_online;
 mod modbus_plan;
 mod online;
 mod pane;

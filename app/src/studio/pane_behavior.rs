@@ -236,6 +236,7 @@ fn io_document_ui(
         .id_salt(("io_document_settings", node))
         .default_open(true)
         .show(ui, |ui| {
+            device_documents::modbus_online_part_ui(ui, project, node, view.online, view.language);
             device_documents::device_editor_ui(ui, project, node, view.language, devices, commands);
         });
     ui.separator();

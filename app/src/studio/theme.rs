@@ -39,6 +39,14 @@ pub(crate) struct StudioColors {
     pub tag_task: Color32,
     /// Every other tag.
     pub tag_other: Color32,
+    /// A runtime Modbus device's icon and state while its last round had no failure.
+    pub device_communicating: Color32,
+    /// While it answers with errors, does not answer, or its serial port failed.
+    pub device_failing: Color32,
+    /// While nothing reaches the program: the master is off or the program is not running.
+    pub device_off: Color32,
+    /// Before its first round ended, or before the runtime reported it.
+    pub device_waiting: Color32,
 }
 
 /// Distinct colours for trace series without a configured colour, readable on dark and light
@@ -77,6 +85,10 @@ const DARK: StudioColors = StudioColors {
     tag_motion: Color32::from_rgb(230, 120, 100),
     tag_task: Color32::from_rgb(100, 180, 180),
     tag_other: Color32::GRAY,
+    device_communicating: Color32::from_rgb(60, 170, 80),
+    device_failing: Color32::from_rgb(220, 80, 60),
+    device_off: Color32::GRAY,
+    device_waiting: Color32::from_rgb(200, 160, 40),
 };
 
 /// The colours of the light theme.

@@ -13,7 +13,7 @@ use runtime::modbus::{MapSlot, ModbusMap, ServerOptions, serve};
 
 /// A Modbus TCP server on loopback standing in for the drive: its holding registers are the
 /// `%QW` area of `areas`. Returns its port; it runs until the test ends.
-fn drive(areas: Arc<Mutex<LocatedAreas>>) -> u16 {
+pub(crate) fn drive(areas: Arc<Mutex<LocatedAreas>>) -> u16 {
     let listener = std::net::TcpListener::bind("127.0.0.1:0").unwrap();
     listener.set_nonblocking(true).unwrap();
     let port = listener.local_addr().unwrap().port();

@@ -20,6 +20,7 @@ mod export;
 mod import;
 mod instruction_list;
 mod logout;
+mod modbus_online;
 mod online;
 mod online_change;
 mod recovery;

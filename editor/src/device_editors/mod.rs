@@ -1,7 +1,7 @@
 //! The editors of the device tree's nodes, as CODESYS's device editors: the controller (name,
 //! address, Modbus map override), I/O areas (direction, start byte, size), serial ports (device
 //! file, line settings), Modbus devices (TCP or RTU link, timing, the runtime master's
-//! settings, channel table) and motion axes (task, unit, period, limits, scaling).
+//! settings, channel table, and while logged in the read-only Online part) and motion axes (task, unit, period, limits, scaling).
 //!
 //! Each editor draws the node's current value, keeps typed text in a [`DeviceEditorState`] and
 //! returns the edits of one gesture as a [`DeviceEdit`]; it never changes the model. A typed
@@ -19,6 +19,7 @@ mod io_area;
 mod map_ranges;
 mod modbus_device;
 mod modbus_master;
+mod modbus_online;
 mod refusal;
 mod serial_port;
 mod table;
@@ -29,6 +30,7 @@ pub use controller::controller_editor_ui;
 pub use field::DeviceEditorState;
 pub use io_area::io_area_editor_ui;
 pub use modbus_device::{RoundRequests, modbus_device_editor_ui};
+pub use modbus_online::{ModbusOnlinePart, modbus_online_ui};
 pub use refusal::{Refusal, RefusalWords};
 pub use serial_port::{StandardSilence, serial_port_editor_ui, serial_port_rename_edits};
 pub use texts::DeviceTexts;

@@ -9,6 +9,7 @@ mod export_texts;
 mod import_texts;
 mod language;
 mod login_texts;
+mod modbus_online_texts;
 mod refusal_texts;
 mod template;
 mod translations;
@@ -21,6 +22,7 @@ pub use export_texts::ExportText;
 pub use import_texts::ImportText;
 pub use language::Language;
 pub use login_texts::LoginText;
+pub use modbus_online_texts::ModbusOnlineText;
 pub use refusal_texts::RefusalText;
 pub use template::fill_template;
 

@@ -78,6 +78,7 @@ impl Online {
                 self.command(Command::TraceStatus);
             }
         }
+        self.ask_modbus_devices_when_due(now);
     }
 
     fn handle(&mut self, event: Event) {
@@ -198,6 +199,7 @@ impl Online {
                 self.tasks_generation += 1;
             }
             Event::Faults(faults) => self.faults = faults,
+            Event::ModbusDevices(answer) => self.modbus_devices_answered(answer),
             Event::TraceStatus(status) => self.trace.status(status),
             Event::TraceProgress(received, total) => self.trace.progress(received, total),
             Event::DebugAttached(_) => self.debug_attached(),

@@ -12,6 +12,7 @@ mod frame_locals;
 mod link;
 mod login_change;
 mod login_choice;
+pub(crate) mod modbus_reports;
 mod simulator;
 mod trace_run;
 mod tracing;
@@ -191,6 +192,10 @@ pub struct Online {
     debugging: debug_target::Debugging,
     /// The locals of the halted function or method the studio shows.
     frame_locals: frame_locals::FrameLocals,
+    /// The target's Modbus devices as `MODBUS_DEVICES` last reported them.
+    modbus_reports: modbus_reports::ModbusReports,
+    /// The kind of target of the last login, which the status line names.
+    logged_in_target: Option<TargetKind>,
 }
 
 impl Drop for Online {
@@ -238,6 +243,8 @@ impl Online {
             language: Language::default(),
             debugging: debug_target::Debugging::default(),
             frame_locals: frame_locals::FrameLocals::default(),
+            modbus_reports: modbus_reports::ModbusReports::default(),
+            logged_in_target: None,
         }
     }
 
@@ -359,6 +366,7 @@ impl Online {
             }
         };
         self.image = Some(image);
+        self.logged_in_target = Some(target);
         self.link = Some(Link::open(
             background,
             SessionOptions {
@@ -418,6 +426,7 @@ impl Online {
         self.values.clear();
         self.forces.clear();
         self.trace = TraceRun::default();
+        self.forget_modbus_reports();
     }
 
     /// The user agreed to download the project's program.
