@@ -24,18 +24,22 @@ pub enum ProxyMode {
     /// Takes every byte and forwards none, without closing anything, and answers no new
     /// connection: a pulled cable. A request on an open connection gets no answer; a new
     /// connection gets no answer to its SYN (the listener's backlog is 0 and nothing is
-    /// accepted, so the kernel completes at most one handshake, which then answers nothing
+    /// accepted, so the kernel queues at most one connection, which then answers nothing
     /// either), so a master's connection attempt times out. The connection the kernel queued
     /// meanwhile is reset when the mode changes, before any new one is taken, so nothing sent
     /// while the cable was out reaches the slave afterwards.
     Swallow,
-    /// Resets every open connection and every new one as soon as it is accepted (RST, not an
-    /// orderly close): a stopped server behind a host that is still up. The proxy keeps its
-    /// port all the while, so no other test can take it, and counts the connections it resets.
+    /// Completes the handshake of every new connection and resets it at once, and resets every
+    /// open connection (RST, not an orderly close). A master's connection attempt therefore
+    /// succeeds and its first request fails, so it reconnects at every round without backing
+    /// off; a host whose server has stopped refuses the SYN instead, which a test gets from a
+    /// port bound and never listened on. The proxy keeps its port all the while, so no other
+    /// test can take it, and counts the connections it resets.
     Refuse,
 }
 
-/// A running proxy; dropping it closes its connections and stops listening.
+/// A running proxy; dropping it stops listening at once (the port is closed before `drop`
+/// returns) and ends its connections within [`POLL_INTERVAL`].
 pub struct FaultProxy {
     /// The address masters connect to.
     address: SocketAddr,
@@ -47,10 +51,9 @@ pub struct FaultProxy {
 
 /// The state the proxy's threads share.
 struct Shared {
-    /// The listener masters connect to; it does not block.
-    listener: TcpListener,
-    /// The current mode.
-    mode: Mutex<ProxyMode>,
+    /// The mode and the listener under one lock: a connection is taken only while it is held,
+    /// so a switch of mode never falls between reading the mode and accepting.
+    gate: Mutex<Gate>,
     /// Where new connections are forwarded.
     slave: Mutex<SocketAddr>,
     /// Connections accepted so far.
@@ -59,18 +62,36 @@ struct Shared {
     stopping: AtomicBool,
 }
 
+/// The mode, and the listener it decides about.
+struct Gate {
+    /// The current mode.
+    mode: ProxyMode,
+    /// The listener masters connect to; it does not block. Taken (and so closed) when the
+    /// proxy is dropped, while forwarding threads may still hold the shared state.
+    listener: Option<TcpListener>,
+}
+
 /// How often idle threads look at the mode and at `stopping`.
 const POLL_INTERVAL: Duration = Duration::from_millis(10);
 
+/// How long [`FaultProxy::start`] waits for its own trial connection to be queued and taken.
+const TRIAL_PATIENCE: Duration = Duration::from_secs(5);
+
 impl FaultProxy {
     /// Starts a proxy in [`ProxyMode::Pass`] on 127.0.0.1, port 0, forwarding to `slave`.
+    ///
+    /// Fails when this machine's kernel queues no connection on a listener whose backlog is 0
+    /// (see [`listen_with_backlog_0`]): the proxy could then pass nothing.
     pub fn start(slave: SocketAddr) -> io::Result<Self> {
         let listener = listen_with_backlog_0()?;
         listener.set_nonblocking(true)?;
         let address = listener.local_addr()?;
+        check_one_connection_is_queued(&listener, address)?;
         let shared = Arc::new(Shared {
-            listener,
-            mode: Mutex::new(ProxyMode::Pass),
+            gate: Mutex::new(Gate {
+                mode: ProxyMode::Pass,
+                listener: Some(listener),
+            }),
             slave: Mutex::new(slave),
             connections: AtomicU64::new(0),
             stopping: AtomicBool::new(false),
@@ -90,14 +111,15 @@ impl FaultProxy {
     }
 
     /// Switches the mode; connections open now follow it from their next bytes on (within
-    /// 10 ms for [`ProxyMode::Refuse`]). Leaving [`ProxyMode::Swallow`] first resets the
-    /// connection the kernel queued while the cable was pulled.
+    /// 10 ms for [`ProxyMode::Refuse`]), and every connection taken after this returns follows
+    /// it from the start. Leaving [`ProxyMode::Swallow`] first resets the connection the kernel
+    /// queued while the cable was pulled.
     pub fn set_mode(&self, mode: ProxyMode) {
-        let mut current = lock(&self.shared.mode);
-        if *current == ProxyMode::Swallow && mode != ProxyMode::Swallow {
-            reset_queued(&self.shared);
+        let mut gate = lock(&self.shared.gate);
+        if gate.mode == ProxyMode::Swallow && mode != ProxyMode::Swallow {
+            reset_queued(&gate, &self.shared);
         }
-        *current = mode;
+        gate.mode = mode;
     }
 
     /// Forwards the connections opened from now on to `slave` (a slave started again on a
@@ -119,12 +141,15 @@ impl Drop for FaultProxy {
         if let Some(acceptor) = self.acceptor.take() {
             let _ = acceptor.join();
         }
+        // The forwarding threads hold the shared state until their pumps see `stopping`; the
+        // port must not outlive the proxy meanwhile.
+        lock(&self.shared.gate).listener = None;
     }
 }
 
 impl Shared {
     fn mode(&self) -> ProxyMode {
-        *lock(&self.mode)
+        lock(&self.gate).mode
     }
 
     fn slave(&self) -> SocketAddr {
@@ -143,6 +168,11 @@ fn lock<T>(value: &Mutex<T>) -> std::sync::MutexGuard<'_, T> {
 /// A listener on 127.0.0.1, port 0, whose accept queue holds one connection: while the proxy
 /// accepts nothing (a pulled cable), the kernel answers no further SYN, so a master's
 /// connection attempt times out as it would without a cable.
+///
+/// A backlog of 0 queues that one connection only on a kernel that allows a connection when
+/// `sk_max_ack_backlog` is zero (the accept queue counts as full only beyond its backlog), or
+/// that answers with SYN cookies (`net.ipv4.tcp_syncookies`) the SYN a backlog of 0 would
+/// drop; elsewhere nothing gets through, which [`FaultProxy::start`] finds out and says.
 fn listen_with_backlog_0() -> io::Result<TcpListener> {
     let socket = socket2::Socket::new(socket2::Domain::IPV4, socket2::Type::STREAM, None)?;
     socket.bind(&SocketAddr::from(([127, 0, 0, 1], 0)).into())?;
@@ -150,39 +180,75 @@ fn listen_with_backlog_0() -> io::Result<TcpListener> {
     Ok(socket.into())
 }
 
-/// Accepts connections until the proxy is dropped; while refusing, resets each at once; while
-/// the cable is pulled, accepts none (see [`ProxyMode::Swallow`]).
-fn accept(shared: &Arc<Shared>) {
-    while !shared.stopping.load(Ordering::SeqCst) {
-        let mode = shared.mode();
-        if mode == ProxyMode::Swallow {
-            std::thread::sleep(POLL_INTERVAL);
-            continue;
-        }
-        // The listener does not block, so that the thread sees the drop and the mode.
-        match shared.listener.accept() {
-            Ok((master, _)) => {
-                shared.connections.fetch_add(1, Ordering::SeqCst);
-                if mode == ProxyMode::Refuse {
-                    reset(&master);
-                    continue;
-                }
-                let shared = Arc::clone(shared);
-                std::thread::spawn(move || {
-                    let _ = forward(master, &shared);
-                });
+/// Connects to `listener` (at `address`, not blocking) once and takes the connection, as
+/// [`ProxyMode::Pass`] will; fails with what to look at when the kernel queues nothing.
+fn check_one_connection_is_queued(listener: &TcpListener, address: SocketAddr) -> io::Result<()> {
+    let refused = |what: String| {
+        io::Error::other(format!(
+            "the fault proxy's listener on {address} (backlog 0) {what}: this kernel queues \
+             no connection on a listener with backlog 0; the proxy needs a kernel that allows \
+             one connection when sk_max_ack_backlog is zero, or SYN cookies \
+             (net.ipv4.tcp_syncookies = 1)"
+        ))
+    };
+    let trial = TcpStream::connect_timeout(&address, TRIAL_PATIENCE)
+        .map_err(|error| refused(format!("took no trial connection ({error})")))?;
+    let deadline = std::time::Instant::now() + TRIAL_PATIENCE;
+    loop {
+        match listener.accept() {
+            // The trial is no master's: it is closed and not counted.
+            Ok(_) => return Ok(()),
+            Err(error) if is_timeout(&error) && std::time::Instant::now() < deadline => {
+                std::thread::sleep(POLL_INTERVAL);
             }
-            // Nobody is connecting (or a connection failed before it was taken).
-            Err(_) => std::thread::sleep(POLL_INTERVAL),
+            Err(error) => {
+                drop(trial);
+                return Err(refused(format!("queued no trial connection ({error})")));
+            }
         }
     }
 }
 
+/// Accepts connections until the proxy is dropped; while refusing, resets each at once; while
+/// the cable is pulled, accepts none (see [`ProxyMode::Swallow`]).
+fn accept(shared: &Arc<Shared>) {
+    while !shared.stopping.load(Ordering::SeqCst) {
+        // The mode is read and the connection taken under one lock, so that a connection made
+        // after `set_mode` returns is always handled in the new mode. The listener does not
+        // block, so the lock is held only for a look, and the thread sees the drop.
+        let taken = {
+            let gate = lock(&shared.gate);
+            match (&gate.listener, gate.mode) {
+                (_, ProxyMode::Swallow) | (None, _) => None,
+                (Some(listener), mode) => listener.accept().ok().map(|(master, _)| (master, mode)),
+            }
+        };
+        // Nobody is connecting (or a connection failed before it was taken), or the cable is
+        // pulled.
+        let Some((master, mode)) = taken else {
+            std::thread::sleep(POLL_INTERVAL);
+            continue;
+        };
+        shared.connections.fetch_add(1, Ordering::SeqCst);
+        if mode == ProxyMode::Refuse {
+            reset(&master);
+            continue;
+        }
+        let shared = Arc::clone(shared);
+        std::thread::spawn(move || {
+            let _ = forward(master, &shared);
+        });
+    }
+}
+
 /// Resets every connection the kernel queued while the cable was pulled (counting them: a
-/// master opened them); called with the mode still [`ProxyMode::Swallow`] and locked, so the
-/// acceptor takes none of them and every later one is new.
-fn reset_queued(shared: &Shared) {
-    while let Ok((queued, _)) = shared.listener.accept() {
+/// master opened them); called with the mode still [`ProxyMode::Swallow`] and locked in
+/// `gate`, so the acceptor takes none of them and every later one is new.
+fn reset_queued(gate: &Gate, shared: &Shared) {
+    let Some(listener) = &gate.listener else {
+        return;
+    };
+    while let Ok((queued, _)) = listener.accept() {
         shared.connections.fetch_add(1, Ordering::SeqCst);
         reset(&queued);
     }
@@ -417,6 +483,50 @@ mod tests {
             received.load(Ordering::SeqCst),
             5,
             "the stale request reached the slave"
+        );
+    }
+
+    #[test]
+    fn a_connection_made_after_a_switch_follows_the_new_mode_every_time() {
+        // The acceptor takes a connection only under the mode's lock: one made after the
+        // switch to Pass is never reset as the Refuse before it would, and one made after the
+        // switch to Refuse is never passed.
+        let proxy = FaultProxy::start(echo_slave(false)).unwrap();
+        for round in 0..20 {
+            proxy.set_mode(ProxyMode::Refuse);
+            let mut refused = connect(&proxy);
+            wait_for_a_reset(
+                &mut refused,
+                &format!("connection {round} made while refusing"),
+            );
+            proxy.set_mode(ProxyMode::Pass);
+            let mut passed = connect(&proxy);
+            // An answer is expected: a loaded machine may take long to forward it.
+            passed
+                .set_read_timeout(Some(Duration::from_secs(5)))
+                .unwrap();
+            assert_eq!(
+                echo(&mut passed, b"on").as_deref(),
+                Some(&b"on"[..]),
+                "connection {round} made after the switch to Pass"
+            );
+        }
+        assert_eq!(proxy.connections(), 40);
+    }
+
+    #[test]
+    fn a_dropped_proxy_stops_listening_though_a_connection_was_still_open() {
+        let proxy = FaultProxy::start(echo_slave(false)).unwrap();
+        let address = proxy.address();
+        let mut stream = connect(&proxy);
+        assert_eq!(echo(&mut stream, b"open").as_deref(), Some(&b"open"[..]));
+        drop(proxy);
+        let after = TcpStream::connect_timeout(&address, Duration::from_secs(5));
+        assert!(
+            after
+                .as_ref()
+                .is_err_and(|error| error.kind() == io::ErrorKind::ConnectionRefused),
+            "the port still took a connection after the drop: {after:?}"
         );
     }
 }

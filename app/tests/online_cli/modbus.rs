@@ -39,8 +39,8 @@ struct Registers {
     read_address: u16,
     /// The holding register `Main.iOut` is written to.
     write_address: u16,
-    /// A holding register the slave does not have, read into `Main.iMissing` with the error
-    /// flag `GVL.xMissingError`; none without it.
+    /// A holding register the slave does not have, read into `Main.iMissing` (initially 7,
+    /// kept on a failure) with the error flag `GVL.xMissingError`; none without it.
     missing_address: Option<u16>,
     /// A holding register read into `Main.iKept`, which keeps its last value on a failure;
     /// none without it.
@@ -101,7 +101,7 @@ fn write_project_with(dir: &Path, port: u16, registers: &Registers) {
     let (missing_flag, missing_variable) = if missing_address.is_some() {
         (
             variable("xMissingError", "VAR_GLOBAL", "BOOL"),
-            variable("iMissing", "VAR", "INT"),
+            format!("{}initial = \"7\"\n", variable("iMissing", "VAR", "INT")),
         )
     } else {
         (String::new(), String::new())
@@ -428,14 +428,9 @@ fn modbus_tcp_master_a_channel_at_an_address_the_slave_lacks_fails_alone() {
     };
     let runtime = run_master_project(dir.path(), slave.port, &registers);
     let target = runtime.target.as_str();
-
-    // The other channels of the device deliver both ways, round after round.
-    let cycles = value_of(&read(&["Main.udiCycles"], target), "Main.udiCycles");
     wait_for_the_round_trip(&mut slave, 21, target);
-    wait_for_the_round_trip(&mut slave, 50, target);
-    wait_for_more_cycles(cycles, target);
 
-    // Only the missing channel's request failed: its error flag is set and the device is
+    // Only the missing channel's request fails: its error flag is set and the device is
     // connected with exception 2 in its status; the read channel's flag is clear.
     let fields = [
         "GVL.stDev.xConnected",
@@ -446,26 +441,41 @@ fn modbus_tcp_master_a_channel_at_an_address_the_slave_lacks_fails_alone() {
         "GVL.xMissingError",
         "GVL.xInError",
         "Main.iMissing",
+        "Main.udiCycles",
     ];
+    let failing_alone = |seen: &str| {
+        text_of(seen, "GVL.stDev.xConnected") == "TRUE"
+            && text_of(seen, "GVL.stDev.xError") == "TRUE"
+            && text_of(seen, "GVL.stDev.eLastError") == "ILLEGAL_DATA_ADDRESS"
+            && value_of(seen, "GVL.stDev.byLastException") == 2
+            && text_of(seen, "GVL.xMissingError") == "TRUE"
+            && text_of(seen, "GVL.xInError") == "FALSE"
+            // Kept, as the channel's default says, and never overwritten by a failed read.
+            && value_of(seen, "Main.iMissing") == 7
+    };
     let mut seen = String::new();
     wait_until("exception 2 for the missing channel only", || {
         seen = read(&fields, target);
-        let reported = text_of(&seen, "GVL.stDev.xConnected") == "TRUE"
-            && text_of(&seen, "GVL.stDev.xError") == "TRUE"
-            && text_of(&seen, "GVL.stDev.eLastError") == "ILLEGAL_DATA_ADDRESS"
-            && value_of(&seen, "GVL.stDev.byLastException") == 2
-            && text_of(&seen, "GVL.xMissingError") == "TRUE"
-            && text_of(&seen, "GVL.xInError") == "FALSE"
-            && value_of(&seen, "Main.iMissing") == 0;
-        reported.then_some(()).ok_or(seen.clone())
+        failing_alone(&seen).then_some(()).ok_or(seen.clone())
     });
+
+    // From then on, the other channels deliver both ways a value set only now, round after
+    // round, the task's cycles going on, while the missing channel goes on failing alone.
     let rounds = value_of(&seen, "GVL.stDev.udiRounds");
-    wait_until("udiRounds growing", || {
-        let again = read(&["GVL.stDev.udiRounds"], target);
-        (value_of(&again, "GVL.stDev.udiRounds") > rounds)
-            .then_some(())
-            .ok_or(again)
-    });
+    let cycles = value_of(&seen, "Main.udiCycles");
+    wait_for_the_round_trip(&mut slave, 50, target);
+    // A stray timeout on a loaded machine changes the status for one round: it is waited for.
+    wait_until(
+        "the missing channel still failing alone, rounds and cycles going on",
+        || {
+            let after = read(&fields, target);
+            (failing_alone(&after)
+                && value_of(&after, "GVL.stDev.udiRounds") > rounds
+                && value_of(&after, "Main.udiCycles") > cycles)
+                .then_some(())
+                .ok_or(after)
+        },
+    );
     wait_until("rivet devices agreeing", || {
         let line = devices_line(target);
         (line.starts_with(
@@ -478,6 +488,10 @@ fn modbus_tcp_master_a_channel_at_an_address_the_slave_lacks_fails_alone() {
 
     // And the values go on following the slave.
     wait_for_the_round_trip(&mut slave, 60, target);
+    wait_until("the missing channel still failing alone", || {
+        let last = read(&fields, target);
+        failing_alone(&last).then_some(()).ok_or(last)
+    });
 }
 
 /// The slave runtime's program: it counts `%MW0` (holding register 1024 in the default map)
@@ -795,8 +809,12 @@ fn modbus_tcp_master_behind_a_slow_proxy_and_a_pulled_cable_reports_timeouts_and
     // The cable pulled (§4.2): the request on the open connection times out, then so do the
     // connection attempts, which no SYN answer comes to: RESPONSE_TIMEOUT, then
     // TCP_COMMUNICATION_ERROR; the read channel set to zero, the task going on.
-    proxy.set_mode(ProxyMode::Swallow);
+    // RESPONSE_TIMEOUT lasts only until the first connection attempt times out (about a
+    // second), which two `rivet read` processes on a loaded machine may miss: here either
+    // passes the first wait, and `master::proxy` in `tests/tests/modbus_device`, looking every
+    // 10 ms in process, pins the order.
     let cycles = value_of(&read(&["Main.udiCycles"], target), "Main.udiCycles");
+    proxy.set_mode(ProxyMode::Swallow);
     let fields = [
         "GVL.stDev.xConnected",
         "GVL.stDev.xError",
@@ -804,31 +822,33 @@ fn modbus_tcp_master_behind_a_slow_proxy_and_a_pulled_cable_reports_timeouts_and
         "GVL.xInError",
         "Main.iIn",
     ];
-    let pulled = |last_error: &'static str| {
-        move |seen: &str| {
-            text_of(seen, "GVL.stDev.xConnected") == "FALSE"
-                && text_of(seen, "GVL.stDev.xError") == "TRUE"
-                && text_of(seen, "GVL.stDev.eLastError") == last_error
-                && text_of(seen, "GVL.xInError") == "TRUE"
-                && value_of(seen, "Main.iIn") == 0
-        }
+    let pulled = |seen: &str, last_errors: &[&str]| {
+        text_of(seen, "GVL.stDev.xConnected") == "FALSE"
+            && text_of(seen, "GVL.stDev.xError") == "TRUE"
+            && last_errors.contains(&text_of(seen, "GVL.stDev.eLastError").as_str())
+            && text_of(seen, "GVL.xInError") == "TRUE"
+            && value_of(seen, "Main.iIn") == 0
     };
-    let timed_out = pulled("RESPONSE_TIMEOUT");
     wait_until("the requests timing out without a cable", || {
         let seen = read(&fields, target);
-        timed_out(&seen).then_some(()).ok_or(seen)
+        pulled(&seen, &["RESPONSE_TIMEOUT", "TCP_COMMUNICATION_ERROR"])
+            .then_some(())
+            .ok_or(seen)
     });
-    let cannot_connect = pulled("TCP_COMMUNICATION_ERROR");
     wait_until("then the connection attempts timing out", || {
         let seen = read(&fields, target);
-        cannot_connect(&seen).then_some(()).ok_or(seen)
+        pulled(&seen, &["TCP_COMMUNICATION_ERROR"])
+            .then_some(())
+            .ok_or(seen)
     });
+    // The detail is cut to 48 bytes on the wire (§9.1): its beginning names the timeout.
+    let timed_out = format!(": cannot connect to {} within", proxy.address());
     wait_until(
         "rivet devices naming the connection attempt's timeout",
         || {
             let line = devices_line(target);
             (line.starts_with("device 'Slave': not answering, last error TCP_COMMUNICATION_ERROR")
-                && line.ends_with("within 1000 ms"))
+                && line.contains(&timed_out))
             .then_some(())
             .ok_or(line)
         },

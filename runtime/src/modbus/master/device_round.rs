@@ -111,6 +111,12 @@ impl DeviceRound {
         }
     }
 
+    /// Counts a connection attempt about to be made (`DeviceSnapshot::connection_attempts`).
+    pub fn connecting(&mut self) {
+        let status = &mut self.results.status;
+        status.connection_attempts = status.connection_attempts.wrapping_add(1);
+    }
+
     /// Fails the requests `requests` of the round, not sent, with `code`.
     pub fn not_sent(&mut self, requests: &[usize], code: u8, detail: &str) {
         let planned: Vec<&PlannedRequest> = requests

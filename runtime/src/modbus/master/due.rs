@@ -1,6 +1,6 @@
 //! When a device's rounds are due (`docs/modbus-master.md` §6.3): every `interval_ms` from the
-//! master's start, or after each cycle end of the I/O task, and at once for a pending rising
-//! edge; with the overruns counted as the specification says.
+//! device's first wait (when it begins polling), or after each cycle end of the I/O task, and
+//! at once for a pending rising edge; with the overruns counted as the specification says.
 
 use std::sync::Arc;
 use std::time::Duration;
@@ -15,7 +15,7 @@ use super::exchange::DeviceExchange;
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum RoundKind {
     /// A whole round: cyclic requests and the pending edges'; with the round starts dropped
-    /// since the last one.
+    /// because the last round was still running (§6.3); none for the device's first round.
     Full {
         /// Round starts dropped (interval) or cycle ends merged (every cycle).
         overruns: u32,
@@ -55,7 +55,8 @@ pub struct Due {
 }
 
 impl Due {
-    /// The schedule of a device, starting now.
+    /// The schedule of a device; it starts at the device's first [`Due::wait`], not now (the
+    /// master is prepared before its devices begin polling).
     pub fn new(schedule: Schedule, exchange: Arc<DeviceExchange>, idle_interval: Duration) -> Self {
         Self {
             schedule,
@@ -72,14 +73,20 @@ impl Due {
     /// that counts as overruns (§6.3). Due times or cycle ends that pass while no round runs
     /// (the master's thread was slow to wake) are merged into the next round uncounted.
     pub async fn wait(&mut self) -> RoundKind {
+        // One reading of the counter serves the start and the count: a cycle end between two
+        // readings would count as an overrun of a round that never ran.
+        let cycle_ends = self.exchange.cycle_ends();
         if !self.began {
-            self.begin();
+            self.begin(cycle_ends);
         }
         match self.schedule {
             Schedule::Interval { interval_ms } => {
                 let overruns = self.passed_due_times(interval_ms);
                 loop {
+                    // Biased, due time first: a late full round is never overtaken by an
+                    // edges-only one notified in the same poll, which would move it further.
                     tokio::select! {
+                        biased;
                         () = tokio::time::sleep_until(self.next) => {
                             self.advance(interval_ms);
                             return RoundKind::Full { overruns };
@@ -95,7 +102,7 @@ impl Due {
             Schedule::EveryCycle => {
                 // The first cycle end during the last round makes the next round due; the
                 // others are merged into it.
-                let during_round = self.exchange.cycle_ends() - self.seen_cycle_ends;
+                let during_round = cycle_ends.saturating_sub(self.seen_cycle_ends);
                 let overruns = u32::try_from(during_round.saturating_sub(1)).unwrap_or(u32::MAX);
                 loop {
                     let ends = self.exchange.cycle_ends();
@@ -126,15 +133,12 @@ impl Due {
     /// (`MasterStarter::go`), while the new program's cycles already run: the due times and
     /// cycle ends passed meanwhile found no round running, so they are no overruns (§6.3
     /// counts only what a running round made wait). The first round is due at once, the
-    /// interval's due times count from it, and cycle ends already passed make one round.
-    fn begin(&mut self) {
+    /// interval's due times count from it, and cycle ends already passed make one round;
+    /// `cycle_ends` is the counter as the first wait read it.
+    fn begin(&mut self, cycle_ends: u64) {
         self.began = true;
         self.next = Instant::now();
-        self.seen_cycle_ends = self
-            .exchange
-            .cycle_ends()
-            .saturating_sub(1)
-            .max(self.seen_cycle_ends);
+        self.seen_cycle_ends = cycle_ends.saturating_sub(1).max(self.seen_cycle_ends);
     }
 
     /// How many due times after the next one have passed by now: when the last round ended
@@ -155,12 +159,20 @@ impl Due {
 
 #[cfg(test)]
 mod tests {
-    use program_image::modbus_master::{DeviceDef, Link, WordOrder};
+    use program_image::modbus_master::{
+        ChannelDef, DeviceDef, Direction, Link, OnError, Trigger, WordOrder,
+    };
+    use program_image::{Elementary, ModbusTable};
 
     use super::*;
 
     fn exchange() -> Arc<DeviceExchange> {
-        Arc::new(DeviceExchange::new(&DeviceDef {
+        Arc::new(DeviceExchange::new(&exchange_device()))
+    }
+
+    /// A device without channels, polled after every cycle.
+    fn exchange_device() -> DeviceDef {
+        DeviceDef {
             name: "Drive".to_owned(),
             link: Link::Tcp {
                 host: "127.0.0.1".to_owned(),
@@ -174,7 +186,54 @@ mod tests {
             max_read_gap: 0,
             status: None,
             channels: Vec::new(),
-        }))
+        }
+    }
+
+    /// An exchange whose device writes one register on the rising edge of `Main.xSend`.
+    fn exchange_with_an_edge() -> Arc<DeviceExchange> {
+        let mut device = DeviceDef {
+            channels: vec![ChannelDef {
+                variable: "Main.iOut".to_owned(),
+                table: ModbusTable::HoldingRegisters,
+                address: 0,
+                value_type: Elementary::Int,
+                count: 1,
+                direction: Direction::Write,
+                function_code: 16,
+                trigger: Trigger::RisingEdge {
+                    variable: "Main.xSend".to_owned(),
+                },
+                on_error: OnError::KeepLastValue,
+                error_flag: None,
+            }],
+            ..exchange_device()
+        };
+        device.schedule = Schedule::Interval { interval_ms: 10 };
+        Arc::new(DeviceExchange::new(&device))
+    }
+
+    #[tokio::test(start_paused = true)]
+    async fn a_late_due_time_is_served_before_an_edge_notified_with_it() {
+        // A round ended after its successor was due, and an edge was notified meanwhile: the
+        // full round goes first (the edge's requests go in it). Were the two branches polled
+        // in a random order, about one trial in two would start an edges-only round first.
+        for trial in 0..20 {
+            let exchange = exchange_with_an_edge();
+            let schedule = Schedule::Interval { interval_ms: 10 };
+            let mut due = Due::new(schedule, Arc::clone(&exchange), Duration::from_millis(100));
+            assert_eq!(due.wait().await, RoundKind::Full { overruns: 0 });
+            tokio::time::advance(Duration::from_millis(15)).await;
+            if let Some(mut output) = exchange.try_output() {
+                output.pending[0] = true;
+            }
+            assert!(exchange.has_pending(), "trial {trial}");
+            exchange.notify.notify_one();
+            assert_eq!(
+                due.wait().await,
+                RoundKind::Full { overruns: 0 },
+                "trial {trial}"
+            );
+        }
     }
 
     #[tokio::test(start_paused = true)]

@@ -58,6 +58,7 @@ impl TcpDevice {
                         kind = kind.without_overruns();
                         break;
                     }
+                    self.round.connecting();
                     match connect(&self.round.device, &self.peer).await {
                         Ok(context) => connection = Some(context),
                         Err(detail) => {

@@ -107,6 +107,9 @@ pub struct DeviceStatus {
     pub rounds: u32,
     /// Round starts dropped because the previous round still ran.
     pub overruns: u32,
+    /// Connection attempts made (TCP; 0 on a serial line), failed or not: the back-off of
+    /// §6.8 keeps them few while a device refuses. Not on the status variable nor the wire.
+    pub connection_attempts: u32,
     /// How long the last answered request took.
     pub last_response: Duration,
     /// When the last failure happened.
@@ -138,6 +141,7 @@ impl DeviceStatus {
             errors: 0,
             rounds: 0,
             overruns: 0,
+            connection_attempts: 0,
             last_response: Duration::ZERO,
             last_error_at: None,
             detail: String::new(),
@@ -280,6 +284,7 @@ impl DeviceStatus {
             errors: self.errors,
             rounds: self.rounds,
             overruns: self.overruns,
+            connection_attempts: self.connection_attempts,
             last_response_us: u32::try_from(self.last_response.as_micros()).unwrap_or(u32::MAX),
             since_last_error_ms: self
                 .last_error_at
@@ -297,7 +302,8 @@ pub fn since_last_error_ms(elapsed: Duration) -> u32 {
         .min(u32::MAX - 1)
 }
 
-/// One device as `MODBUS_DEVICES` (§9.1) lists it.
+/// One device as `MODBUS_DEVICES` (§9.1) lists it, and its connection attempts, which the
+/// service does not carry (for the runtime's own readers and tests).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct DeviceSnapshot {
     /// The device's name.
@@ -318,6 +324,8 @@ pub struct DeviceSnapshot {
     pub rounds: u32,
     /// Round starts dropped.
     pub overruns: u32,
+    /// Connection attempts made (TCP; 0 on a serial line); not reported by the service.
+    pub connection_attempts: u32,
     /// The last answered request's duration in microseconds.
     pub last_response_us: u32,
     /// Milliseconds since the last failure; `u32::MAX` if none yet.

@@ -67,6 +67,7 @@ mod tests {
             errors: 5,
             rounds: 20,
             overruns: 1,
+            connection_attempts: 2,
             last_response_us: 850,
             since_last_error_ms,
             detail: "no answer from 127.0.0.1:5502 within 100 ms".to_owned(),

@@ -13,6 +13,12 @@ use tokio::io::{AsyncReadExt, AsyncWriteExt};
 
 use super::{device, first, image_with, read, read_int, wait_until};
 
+/// Connection attempts the master may make while its device refuses during 100 rounds of
+/// 10 ms: the back-off of §6.8 (100, 200, 400, 800, 1600 ms …) allows about five in the
+/// second those rounds take at least, and nine in the test's whole patience; without it
+/// there would be one a round.
+const ATTEMPTS_BACKED_OFF: u32 = 10;
+
 /// Answers every request right.
 const RIGHT: u8 = 0;
 /// Answers a read with one register too few.
@@ -203,4 +209,61 @@ fn wrong_answers_are_invalid_data_exceptions_fail_one_request_and_nothing_panics
         first(&scheduler.modbus_devices()).state == DeviceState::Communicating
     });
     scheduler.shutdown().unwrap();
+}
+
+#[test]
+fn a_refused_connection_is_reported_and_backed_off() {
+    // A port bound and never listened on: the kernel refuses every connection to it (a host
+    // whose server has stopped), and no other test can take the port meanwhile.
+    let reserved =
+        socket2::Socket::new(socket2::Domain::IPV4, socket2::Type::STREAM, None).unwrap();
+    reserved
+        .bind(&std::net::SocketAddr::from(([127, 0, 0, 1], 0)).into())
+        .unwrap();
+    let address = reserved.local_addr().unwrap().as_socket().unwrap();
+    let areas = Arc::new(Mutex::new(LocatedAreas::default()));
+    let scheduler = Scheduler::spawn(areas, SchedulerOptions::default()).unwrap();
+    scheduler
+        .load(image_with(vec![device(
+            address,
+            Schedule::Interval { interval_ms: 10 },
+        )]))
+        .unwrap();
+    scheduler.start().unwrap();
+
+    let refused = format!("connection refused by {address}");
+    wait_until("the refusal is reported", || {
+        let device = first(&scheduler.modbus_devices());
+        device.last_error == error_codes::TCP_COMMUNICATION_ERROR
+            && device.state == DeviceState::NotAnswering
+            && device.detail == refused
+            && device.connection_attempts > 0
+    });
+    // A hundred rounds (a second at least): few attempts, as the back-off spaces them.
+    let before = first(&scheduler.modbus_devices());
+    wait_until("a hundred rounds more", || {
+        first(&scheduler.modbus_devices()).rounds >= before.rounds + 100
+    });
+    let after = first(&scheduler.modbus_devices());
+    let attempts = after.connection_attempts - before.connection_attempts;
+    assert!(
+        attempts <= ATTEMPTS_BACKED_OFF,
+        "{attempts} connection attempts in {} rounds",
+        after.rounds - before.rounds
+    );
+    // Every round not sent is counted as failed, with the refusal kept in words.
+    assert!(
+        after.consecutive_errors > before.consecutive_errors,
+        "{after:?}"
+    );
+    assert_eq!(after.last_error, error_codes::TCP_COMMUNICATION_ERROR);
+    assert_eq!(after.detail, refused);
+    assert_eq!(after.requests, 0);
+    // And the master goes on trying.
+    wait_until("another attempt", || {
+        first(&scheduler.modbus_devices()).connection_attempts > after.connection_attempts
+    });
+    assert_eq!(read(&scheduler, "Main.xInError", 1), [1]);
+    scheduler.shutdown().unwrap();
+    drop(reserved);
 }

@@ -76,7 +76,10 @@ fn a_slow_slave_a_pulled_cable_and_a_stopped_server_fail_and_recover() {
     proxy.set_mode(ProxyMode::Pass);
     resumes(13);
 
-    // A stopped server: connections are refused, the master backs off and tries again.
+    // A stopped server behind the proxy: each connection's handshake completes and the proxy
+    // resets it at once, so the master's connection attempts succeed, its requests fail, and
+    // it connects again at every round, without backing off (a real refusal, which starts the
+    // back-off, is `a_refused_connection_is_reported_and_backed_off` in `faults.rs`).
     proxy.set_mode(ProxyMode::Refuse);
     wait_until("a stopped server is a communication error", || {
         let device = first(&scheduler.modbus_devices());

@@ -75,8 +75,9 @@ fn a_program_reads_and_writes_a_device_and_recovers_when_its_server_comes_back()
     });
 
     // The server stops: the task goes on, the values stay, a set_to_zero channel is zeroed.
-    // The proxy resets every connection while the server is down, as a host whose server
-    // has stopped does, and keeps its port meanwhile.
+    // While the server is down the proxy completes each connection's handshake and resets it
+    // at once, keeping its port meanwhile: the master's connection attempts succeed and its
+    // requests fail, so it connects again at every round without backing off.
     proxy.set_mode(ProxyMode::Refuse);
     slave.stop();
     wait_until("the status says the connection is gone", || {
@@ -103,7 +104,8 @@ fn a_program_reads_and_writes_a_device_and_recovers_when_its_server_comes_back()
         snapshot.detail
     );
 
-    // It comes back, on a port of its own behind the proxy: values resume after the back-off.
+    // It comes back, on a port of its own behind the proxy: values resume at the next round
+    // (no back-off was started, as no connection attempt failed).
     slave.set(0, 8);
     slave.serve();
     proxy.set_slave(slave.address);
