@@ -10,7 +10,6 @@ use project_model::Project;
 use super::command::{Command, Commands};
 use super::device_refusals::refusal_words;
 use super::i18n::{DeviceText, Language};
-use super::modbus_plan::round_requests;
 use super::tree_node::TreeNode;
 
 /// What the device editors keep between frames: each node's typed text and refusals. Not
@@ -72,7 +71,7 @@ fn editor_ui(
                 .modbus_devices
                 .iter()
                 .position(|d| d.name == *name)?;
-            editor::modbus_device_editor_ui(ui, project, index, state, texts, &round_requests)
+            editor::modbus_device_editor_ui(ui, project, index, state, texts)
         }
         TreeNode::SerialPort(name) => {
             let index = project.serial_ports.iter().position(|p| p.name == *name)?;

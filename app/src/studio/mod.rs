@@ -22,7 +22,6 @@ mod import_dialog;
 #[cfg(test)]
 mod literal_tests;
 mod login_dialog;
-mod modbus_plan;
 mod online;
 mod pane;
 mod pane_behavior;

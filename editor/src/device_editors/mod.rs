@@ -28,7 +28,7 @@ pub use axis::axis_editor_ui;
 pub use controller::controller_editor_ui;
 pub use field::DeviceEditorState;
 pub use io_area::io_area_editor_ui;
-pub use modbus_device::{RoundRequests, modbus_device_editor_ui};
+pub use modbus_device::modbus_device_editor_ui;
 pub use refusal::{Refusal, RefusalWords};
 pub use serial_port::{StandardSilence, serial_port_editor_ui, serial_port_rename_edits};
 pub use texts::DeviceTexts;

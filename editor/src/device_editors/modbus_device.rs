@@ -14,21 +14,14 @@ use super::modbus_master::{link_fields_ui, master_fields_ui, poll_interval_ui};
 use super::refusal::Refusal;
 use super::{DeviceEdit, DeviceTexts, checked_edit, keep};
 
-/// Counts the requests of one round of a device as the build would plan them
-/// (`program_image::modbus_master::plan`, which this crate does not depend on: the app gives
-/// it).
-pub type RoundRequests<'a> = &'a dyn Fn(&Project, &ModbusDevice) -> usize;
-
 /// Draws the settings and channels of the Modbus device at `index` of `project` and returns
-/// the edits of this frame's gesture; nothing when there is no such device. `round_requests`
-/// counts the requests of a round, shown once the device has an I/O task.
+/// the edits of this frame's gesture; nothing when there is no such device.
 pub fn modbus_device_editor_ui(
     ui: &mut Ui,
     project: &Project,
     index: usize,
     state: &mut DeviceEditorState,
     texts: &DeviceTexts,
-    round_requests: RoundRequests<'_>,
 ) -> Option<DeviceEdit> {
     let device = project.modbus_devices.get(index)?;
     state.follow(device);
@@ -74,7 +67,7 @@ pub fn modbus_device_editor_ui(
             .whole_ui(ui, device.timeout_ms, 0..=u32::MAX, |item, timeout| {
                 item.timeout_ms = timeout;
             });
-        master_fields_ui(form, ui, project, device, texts, round_requests);
+        master_fields_ui(form, ui, project, device, texts);
     });
     let mut out = form.finish();
     ui.add_space(8.0);

@@ -3,14 +3,14 @@
 //! (I/O task, schedule, read gap, status variable), shown once a task is chosen as
 //! `docs/modbus-master.md` §2.1 says.
 
-use compiler::ide::{ChannelVariableError, variable_type};
+use compiler::ide::{ChannelVariableError, modbus_round_requests, variable_type};
 use egui::{RichText, Ui};
 use project_model::{ModbusDevice, ModbusLink, ModbusSchedule, Project, same_identifier};
 
 use super::DeviceTexts;
 use super::field::parse_whole;
 use super::form::Form;
-use super::modbus_device::{RoundRequests, switched_link};
+use super::modbus_device::switched_link;
 use super::refusal::Refusal;
 use super::texts::fill;
 
@@ -117,7 +117,6 @@ pub(crate) fn master_fields_ui(
     project: &Project,
     device: &ModbusDevice,
     texts: &DeviceTexts,
-    round_requests: RoundRequests<'_>,
 ) {
     let choices = task_choices(project, device.task.as_deref());
     let options: Vec<(String, usize)> = choices
@@ -171,7 +170,9 @@ pub(crate) fn master_fields_ui(
             item.status = existing_variable(project, text)?;
             Ok(text.to_owned())
         });
-    let count = round_requests(project, device);
+    // Counted by the conversion and planner the build and the runtime use, so it is the count
+    // the runtime sends.
+    let count = modbus_round_requests(project, device);
     let template = if count == 1 {
         &texts.request_per_round
     } else {

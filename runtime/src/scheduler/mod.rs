@@ -61,9 +61,7 @@ use program_image::{ImageHash, ProgramImage};
 
 use crate::areas::LocatedAreas;
 use crate::engine::{AppliedChange, Engine, FaultRecord, LoadError, OnlineChangePlan, ResetKind};
-use crate::modbus::master::{
-    DeviceSnapshot, DeviceStatus, Master, MasterError, MasterHandle, MasterOptions,
-};
+use crate::modbus::master::{DeviceStatus, Master, MasterError, MasterHandle, MasterOptions};
 use crate::online::{Forces, Memory, Trace};
 use crate::retain::{RetainError, RetainRestore};
 
@@ -367,7 +365,7 @@ impl Scheduler {
 
     /// The loaded program's Modbus devices with their state and counters, in the image's
     /// order (`docs/modbus-master.md` §9.1); empty without a program or without devices.
-    pub fn modbus_devices(&self) -> Vec<DeviceSnapshot> {
+    pub fn modbus_devices(&self) -> Vec<online_protocol::ModbusDeviceReport> {
         self.modbus_devices
             .lock()
             .unwrap_or_else(PoisonError::into_inner)
