@@ -342,6 +342,80 @@ fn a_refused_master_setting_shows_its_reason_and_changes_nothing() {
     assert_eq!(drive(&harness).bindings, before.bindings);
 }
 
+/// The example with an array of two REALs in `GVL_Machine`, for a channel of two values.
+fn example_with_speed_array() -> tempfile::TempDir {
+    example_copy(|dir| {
+        let gvl = dir.join("application/GVL_Machine.gvl.toml");
+        let mut text = std::fs::read_to_string(&gvl).unwrap();
+        text.push_str(
+            "\n[[variable]]\nname = \"arSpeeds\"\nsection = \"VAR_GLOBAL\"\ntype = \"ARRAY[0..1] OF REAL\"\n",
+        );
+        std::fs::write(&gvl, text).unwrap();
+    })
+}
+
+#[test]
+fn a_runtime_channel_s_variable_is_checked_with_its_count_while_editing() {
+    let dir = example_with_speed_array();
+    let mut harness = studio(dir.path());
+    open(&mut harness, TreeNode::ModbusDevice("BeltDrive".into()));
+    let drive = |harness: &Harness<'_, StudioApp>| project(harness).modbus_devices[0].clone();
+    choose(&mut harness, "I/O task of BeltDrive", "MainTask");
+
+    // The array does not fit a channel of one value: refused beside the field.
+    enter_text(&mut harness, "Variable of row 1", "GVL_Machine.arSpeeds");
+    assert_refused(
+        &harness,
+        "'GVL_Machine.arSpeeds': the channel reads one real value, but the variable is declared as ARRAY[0..1] OF REAL: declare it as REAL",
+    );
+    assert_eq!(
+        drive(&harness).bindings[0].variable,
+        "GVL_Machine.rBeltSpeedActual"
+    );
+    harness.key_press(Key::Escape);
+    harness.run();
+
+    // A count the variable does not fit is taken, and the row says what to declare.
+    enter_text(&mut harness, "Count of row 1", "2");
+    assert_eq!(drive(&harness).bindings[0].count, 2);
+    assert_refused(
+        &harness,
+        "the channel reads 2 real values, but the variable is declared as REAL: declare it as ARRAY[0..1] OF REAL",
+    );
+    enter_text(&mut harness, "Variable of row 1", "GVL_Machine.arSpeeds");
+    assert_eq!(drive(&harness).bindings[0].variable, "GVL_Machine.arSpeeds");
+    assert!(
+        harness
+            .query_by_label_contains("the channel reads 2 real values")
+            .is_none()
+    );
+}
+
+#[test]
+fn a_channel_s_misfit_is_said_in_chinese_when_chosen() {
+    let dir = example_with_speed_array();
+    let settings = Settings {
+        language: Language::SimplifiedChinese,
+        ..Settings::default()
+    };
+    let app = StudioApp::new(settings, Some(dir.path().to_owned()));
+    let mut harness = Harness::builder()
+        .with_size([1400.0, 900.0])
+        .build_ui_state(|ui, app: &mut StudioApp| app.ui(ui), app);
+    open(&mut harness, TreeNode::ModbusDevice("BeltDrive".into()));
+    choose(&mut harness, "BeltDrive 的I/O 任务", "MainTask");
+    enter_text(&mut harness, "第 1 行的变量", "GVL_Machine.arSpeeds");
+    assert_refused(
+        &harness,
+        "'GVL_Machine.arSpeeds'：通道读取一个 real 值，但变量声明为 ARRAY[0..1] OF REAL：请将其声明为 REAL",
+    );
+    assert!(
+        harness
+            .query_by_label_contains("the channel reads")
+            .is_none()
+    );
+}
+
 #[test]
 fn a_serial_port_added_in_the_tree_is_edited_and_an_rtu_device_put_on_it() {
     let dir = example_copy(|_| {});

@@ -23,6 +23,8 @@ pub(crate) fn channel_master_cells_ui(
     texts: &DeviceTexts,
     binding: &ModbusBinding,
 ) {
+    // A count the variable does not fit is taken, and the row says why it does not fit: going
+    // from one value to an array changes the count and the variable in two edits.
     row.field("count", &texts.count, 50.0).whole_ui(
         ui,
         binding.count,
