@@ -495,6 +495,18 @@ fn a_serial_port_added_in_the_tree_is_edited_and_an_rtu_device_put_on_it() {
     undo(&mut harness);
     assert_eq!(ports(&harness)[0].name, name);
     assert_eq!(drive(&harness).serial_port(), Some(name.as_str()));
+
+    // Back on TCP (which needs a poll interval), the device has the host and port it had
+    // before it went onto the port.
+    enter_text(&mut harness, "Poll interval of BeltDrive", "100");
+    choose(&mut harness, "Link of BeltDrive", "Modbus TCP");
+    assert_eq!(
+        drive(&harness).link,
+        project_model::ModbusLink::Tcp {
+            host: "192.168.1.50".into(),
+            port: 502
+        }
+    );
 }
 
 #[test]

@@ -7,6 +7,7 @@ use std::collections::HashMap;
 use egui::{Key, RichText, Ui, WidgetInfo};
 
 use super::DeviceEdit;
+use super::link_memory::LinkMemory;
 use super::refusal::Refusal;
 use super::texts::DeviceTexts;
 
@@ -21,6 +22,9 @@ pub struct DeviceEditorState {
     refused: HashMap<String, Refusal>,
     /// A copy of the node's value the drafts belong to; `None` before the first frame.
     seen: Option<Box<dyn Any>>,
+    /// A Modbus device's last link of each kind, so switching the kind back restores it; kept
+    /// when the value changes, unlike the drafts.
+    pub(crate) links: LinkMemory,
 }
 
 impl DeviceEditorState {

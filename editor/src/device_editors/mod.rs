@@ -16,6 +16,7 @@ mod controller;
 mod field;
 mod form;
 mod io_area;
+mod link_memory;
 mod map_ranges;
 mod modbus_device;
 mod modbus_master;

@@ -10,17 +10,19 @@ use project_model::{ModbusDevice, ModbusLink, ModbusSchedule, Project, same_iden
 use super::DeviceTexts;
 use super::field::parse_whole;
 use super::form::Form;
-use super::modbus_device::switched_link;
+use super::link_memory::{LinkMemory, switched_link};
 use super::refusal::Refusal;
 use super::texts::fill;
 
-/// The link's kind, then a TCP device's host and port or an RTU device's serial port.
+/// The link's kind, then a TCP device's host and port or an RTU device's serial port; switching
+/// the kind brings back the link of that kind the device last had (`links`).
 pub(crate) fn link_fields_ui(
     form: &mut Form<'_, ModbusDevice>,
     ui: &mut Ui,
     project: &Project,
     device: &ModbusDevice,
     texts: &DeviceTexts,
+    links: &LinkMemory,
 ) {
     let kinds = [
         (texts.link_tcp.clone(), false),
@@ -29,7 +31,7 @@ pub(crate) fn link_fields_ui(
     let rtu = matches!(device.link, ModbusLink::Rtu { .. });
     form.field("link", &texts.link, 200.0)
         .checked_combo_ui(ui, rtu, &kinds, |item, rtu| {
-            item.link = switched_link(project, rtu)?;
+            item.link = switched_link(project, rtu, links)?;
             Ok(())
         });
     match &device.link {
