@@ -178,6 +178,7 @@ fn device_texts(language: Language) -> DeviceTexts {
         cyclic: get(DeviceText::Cyclic),
         rising_edge: get(DeviceText::RisingEdge),
         trigger_variable: get(DeviceText::TriggerVariable),
+        trigger_variable_hint: get(DeviceText::TriggerVariableHint),
         on_error: get(DeviceText::OnError),
         keep_last_value: get(DeviceText::KeepLastValue),
         set_to_zero: get(DeviceText::SetToZero),

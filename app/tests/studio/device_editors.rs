@@ -417,6 +417,80 @@ fn a_channel_s_misfit_is_said_in_chinese_when_chosen() {
 }
 
 #[test]
+fn a_rising_edge_waits_for_its_trigger_variable_which_then_sets_both_in_one_step() {
+    let dir = example_copy(|_| {});
+    let mut harness = studio(dir.path());
+    open(&mut harness, TreeNode::ModbusDevice("BeltDrive".into()));
+    let drive = |harness: &Harness<'_, StudioApp>| project(harness).modbus_devices[0].clone();
+    choose(&mut harness, "I/O task of BeltDrive", "MainTask");
+    let hint = "Name the BOOL variable whose rising edge sends the channel";
+    assert!(harness.query_by_label_contains(hint).is_none());
+
+    // The choice is shown and waits: nothing is refused and the model is unchanged.
+    choose(&mut harness, "Trigger of row 1", "Rising edge");
+    assert!(harness.query_by_label_contains(hint).is_some());
+    assert!(
+        harness
+            .query_by_label_contains("has no trigger variable")
+            .is_none()
+    );
+    assert_eq!(
+        drive(&harness).bindings[0].trigger,
+        project_model::ChannelTrigger::Cyclic
+    );
+
+    // A variable that is no BOOL is refused and the choice keeps waiting.
+    enter_text(
+        &mut harness,
+        "Trigger variable of row 1",
+        "GVL_Machine.rBeltSpeedActual",
+    );
+    assert_refused(&harness, "declare it as BOOL");
+    assert!(harness.query_by_label_contains(hint).is_some());
+    harness.key_press(Key::Escape);
+    harness.run();
+
+    enter_text(
+        &mut harness,
+        "Trigger variable of row 1",
+        "GVL_Machine.xDriveReady",
+    );
+    let channel = drive(&harness).bindings[0].clone();
+    assert_eq!(channel.trigger, project_model::ChannelTrigger::RisingEdge);
+    assert_eq!(
+        channel.trigger_variable.as_deref(),
+        Some("GVL_Machine.xDriveReady")
+    );
+    assert!(harness.query_by_label_contains(hint).is_none());
+    undo(&mut harness);
+    let channel = drive(&harness).bindings[0].clone();
+    assert_eq!(channel.trigger, project_model::ChannelTrigger::Cyclic);
+    assert_eq!(channel.trigger_variable, None);
+}
+
+#[test]
+fn the_waiting_rising_edge_asks_for_its_variable_in_chinese() {
+    let dir = example_copy(|_| {});
+    let settings = Settings {
+        language: Language::SimplifiedChinese,
+        ..Settings::default()
+    };
+    let app = StudioApp::new(settings, Some(dir.path().to_owned()));
+    let mut harness = Harness::builder()
+        .with_size([1400.0, 900.0])
+        .build_ui_state(|ui, app: &mut StudioApp| app.ui(ui), app);
+    open(&mut harness, TreeNode::ModbusDevice("BeltDrive".into()));
+    choose(&mut harness, "BeltDrive 的I/O 任务", "MainTask");
+    choose(&mut harness, "第 1 行的触发", "上升沿");
+    assert!(
+        harness
+            .query_by_label_contains("请填写 BOOL 变量，其上升沿发送该通道")
+            .is_some()
+    );
+    assert!(harness.query_by_label_contains("Name the BOOL").is_none());
+}
+
+#[test]
 fn a_serial_port_added_in_the_tree_is_edited_and_an_rtu_device_put_on_it() {
     let dir = example_copy(|_| {});
     let mut harness = studio(dir.path());

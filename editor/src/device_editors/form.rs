@@ -9,8 +9,8 @@ use std::ops::RangeInclusive;
 use egui::Ui;
 
 use super::field::{
-    DeviceEditorState, FieldId, checkbox_ui, combo_ui, parse_number, parse_whole, row_ui,
-    text_field_ui,
+    DeviceEditorState, FieldId, checkbox_ui, combo_ui, parse_number, parse_whole, pending_combo_ui,
+    row_ui, text_field_ui,
 };
 use super::refusal::Refusal;
 use super::table::Table;
@@ -136,6 +136,12 @@ impl<'a, T: Clone> Form<'a, T> {
             width,
             suffix: "",
         }
+    }
+
+    /// Whether the combo box keyed `key` shows a choice that waits for another field
+    /// ([`FormField::pending_combo_ui`]).
+    pub(crate) fn is_pending(&self, key: &str) -> bool {
+        self.state.is_pending(&self.subject.key(key))
     }
 
     /// The edit of this frame's gesture, if there was one.
@@ -298,6 +304,41 @@ impl<'f, 'a, T: Clone> FormField<'f, 'a, T> {
         self.checked_combo_ui(ui, current, options, |item, chosen| {
             put(item, chosen);
             Ok(())
+        });
+    }
+
+    /// A combo box of `options` whose choice of a value that `waits` names is shown but not
+    /// applied until another field's edit completes it; other choices are put into a copy of
+    /// the value.
+    pub(crate) fn pending_combo_ui<V: PartialEq + Copy>(
+        self,
+        ui: &mut Ui,
+        current: V,
+        options: &[(String, V)],
+        waits: impl Fn(V) -> bool,
+        put: impl FnOnce(&mut T, V),
+    ) {
+        let title = self.name;
+        self.show(ui, title, |ui, state, subject, field, name| {
+            pending_combo_ui(
+                ui,
+                state,
+                subject.texts,
+                field,
+                current,
+                options,
+                waits,
+                |chosen| {
+                    let mut item = subject.value.clone();
+                    put(&mut item, chosen);
+                    let value = options
+                        .iter()
+                        .find(|(_, value)| *value == chosen)
+                        .map(|(text, _)| text.as_str())
+                        .unwrap_or_default();
+                    subject.change(name, value, item)
+                },
+            )
         });
     }
 

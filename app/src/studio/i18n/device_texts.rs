@@ -96,6 +96,7 @@ pub enum DeviceText {
     Cyclic,
     RisingEdge,
     TriggerVariable,
+    TriggerVariableHint,
     OnError,
     KeepLastValue,
     SetToZero,
@@ -306,6 +307,10 @@ impl DeviceText {
             Self::Cyclic => ("Cyclic", "循环"),
             Self::RisingEdge => ("Rising edge", "上升沿"),
             Self::TriggerVariable => ("Trigger variable", "触发变量"),
+            Self::TriggerVariableHint => (
+                "Name the BOOL variable whose rising edge sends the channel",
+                "请填写 BOOL 变量，其上升沿发送该通道",
+            ),
             Self::OnError => ("On error", "出错时"),
             Self::KeepLastValue => ("Keep last value", "保持最后值"),
             Self::SetToZero => ("Set to zero", "置零"),
