@@ -501,6 +501,16 @@ fn a_serial_port_added_in_the_tree_is_edited_and_an_rtu_device_put_on_it() {
     let ports = |harness: &Harness<'_, StudioApp>| project(harness).serial_ports.clone();
     assert_eq!(ports(&harness).len(), 1);
     let name = ports(&harness)[0].name.clone();
+    // Selected in the tree, the port's settings show in the Properties pane as the manifest
+    // names them, like the other device nodes'.
+    harness.get_by_label(&format!("{name} *")).click();
+    harness.run();
+    assert_eq!(
+        harness.state().selection(),
+        Some(&TreeNode::SerialPort(name.clone()))
+    );
+    assert!(harness.query_by_label("baud_rate").is_some());
+    assert!(harness.query_by_label("stop_bits").is_some());
     assert!(
         harness
             .query_by_label_contains("0 = 3.5 characters (2006 µs)")
