@@ -46,6 +46,18 @@ fn undo(harness: &mut Harness<'_, StudioApp>) {
     harness.run();
 }
 
+/// The studio on `project` with its interface in Simplified Chinese.
+fn chinese_studio(project: &std::path::Path) -> Harness<'static, StudioApp> {
+    let settings = Settings {
+        language: Language::SimplifiedChinese,
+        ..Settings::default()
+    };
+    let app = StudioApp::new(settings, Some(project.to_owned()));
+    Harness::builder()
+        .with_size([1400.0, 900.0])
+        .build_ui_state(|ui, app: &mut StudioApp| app.ui(ui), app)
+}
+
 #[track_caller]
 fn assert_refused(harness: &Harness<'_, StudioApp>, reason: &str) {
     assert!(
@@ -394,14 +406,7 @@ fn a_runtime_channel_s_variable_is_checked_with_its_count_while_editing() {
 #[test]
 fn a_channel_s_misfit_is_said_in_chinese_when_chosen() {
     let dir = example_with_speed_array();
-    let settings = Settings {
-        language: Language::SimplifiedChinese,
-        ..Settings::default()
-    };
-    let app = StudioApp::new(settings, Some(dir.path().to_owned()));
-    let mut harness = Harness::builder()
-        .with_size([1400.0, 900.0])
-        .build_ui_state(|ui, app: &mut StudioApp| app.ui(ui), app);
+    let mut harness = chinese_studio(dir.path());
     open(&mut harness, TreeNode::ModbusDevice("BeltDrive".into()));
     choose(&mut harness, "BeltDrive 的I/O 任务", "MainTask");
     enter_text(&mut harness, "第 1 行的变量", "GVL_Machine.arSpeeds");
@@ -471,14 +476,7 @@ fn a_rising_edge_waits_for_its_trigger_variable_which_then_sets_both_in_one_step
 #[test]
 fn the_waiting_rising_edge_asks_for_its_variable_in_chinese() {
     let dir = example_copy(|_| {});
-    let settings = Settings {
-        language: Language::SimplifiedChinese,
-        ..Settings::default()
-    };
-    let app = StudioApp::new(settings, Some(dir.path().to_owned()));
-    let mut harness = Harness::builder()
-        .with_size([1400.0, 900.0])
-        .build_ui_state(|ui, app: &mut StudioApp| app.ui(ui), app);
+    let mut harness = chinese_studio(dir.path());
     open(&mut harness, TreeNode::ModbusDevice("BeltDrive".into()));
     choose(&mut harness, "BeltDrive 的I/O 任务", "MainTask");
     choose(&mut harness, "第 1 行的触发", "上升沿");
@@ -633,14 +631,7 @@ fn the_axis_editor_sets_limits_with_units_refuses_a_period_of_0_and_undoes() {
 #[test]
 fn the_device_editors_speak_chinese_when_chosen() {
     let dir = example_copy(|_| {});
-    let settings = Settings {
-        language: Language::SimplifiedChinese,
-        ..Settings::default()
-    };
-    let app = StudioApp::new(settings, Some(dir.path().to_owned()));
-    let mut harness = Harness::builder()
-        .with_size([1400.0, 900.0])
-        .build_ui_state(|ui, app: &mut StudioApp| app.ui(ui), app);
+    let mut harness = chinese_studio(dir.path());
     open(&mut harness, TreeNode::Axis("Knife".into()));
     assert!(harness.query_by_label("Knife 的速度").is_some());
     assert!(harness.query_by_label("Velocity of Knife").is_none());
@@ -652,14 +643,7 @@ fn the_device_editors_speak_chinese_when_chosen() {
 #[test]
 fn a_value_refused_in_chinese_gives_its_reason_in_chinese() {
     let dir = example_copy(|_| {});
-    let settings = Settings {
-        language: Language::SimplifiedChinese,
-        ..Settings::default()
-    };
-    let app = StudioApp::new(settings, Some(dir.path().to_owned()));
-    let mut harness = Harness::builder()
-        .with_size([1400.0, 900.0])
-        .build_ui_state(|ui, app: &mut StudioApp| app.ui(ui), app);
+    let mut harness = chinese_studio(dir.path());
     open(&mut harness, TreeNode::Controller);
     let port = project(&harness).controller.port;
     enter_text(&mut harness, "PLC 的端口", "0");

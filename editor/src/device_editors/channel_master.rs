@@ -70,6 +70,7 @@ pub(crate) fn channel_master_cells_ui(
                 if trigger == ChannelTrigger::Cyclic {
                     item.trigger_variable = None;
                 }
+                Ok(())
             },
         );
     let hint = if row.is_pending("trigger") {

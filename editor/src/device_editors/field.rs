@@ -152,8 +152,7 @@ pub(crate) fn combo_ui<T: PartialEq + Copy>(
     options: &[(String, T)],
     accept: impl FnOnce(T) -> Result<DeviceEdit, Refusal>,
 ) -> Option<DeviceEdit> {
-    let value = combo_choice_ui(ui, state, texts, &field, current, options)?;
-    state.settle(field.key, accept(value))
+    pending_combo_ui(ui, state, texts, field, current, options, |_| false, accept)
 }
 
 /// A combo box of `options` whose choice waits, shown but not applied, while `waits` says it
