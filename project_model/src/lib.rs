@@ -40,6 +40,7 @@ mod network_splice;
 mod network_walk;
 mod pou;
 mod project;
+mod rename_edits;
 mod serial_port;
 mod sfc;
 mod sfc_check;
@@ -47,7 +48,6 @@ pub mod sfc_edit;
 mod sfc_fire;
 mod sfc_problem;
 mod task;
-mod task_rename;
 mod trace;
 mod validate;
 mod variable;
@@ -111,6 +111,7 @@ pub use pou::{
     AccessSpecifier, Body, Language, Method, Pou, PouAction, PouKind, Property, PropertyAccessor,
 };
 pub use project::{Controller, ModbusServerMap, ModbusServerRange, Project};
+pub use rename_edits::{serial_port_rename_edits, task_rename_edits};
 pub use serial_port::{Parity, SerialPort};
 pub use sfc::{
     ActionAssociation, ActionQualifier, Jump, MacroStep, SfcBranches, SfcChart, SfcNode,
@@ -120,7 +121,6 @@ pub use sfc_check::{sfc_chart_problems, sfc_problems};
 pub use sfc_fire::{TransitionSteps, transition_steps};
 pub use sfc_problem::{SfcNodeKind, SfcProblem, SfcProblemKind};
 pub use task::{Task, TaskKind, Watchdog};
-pub use task_rename::task_rename_edits;
 pub use trace::{TraceConfig, TraceTrigger, TraceTriggerCondition, TraceVariable};
 pub use variable::{VarSection, Variable};
 pub use vendor_data::{VendorData, VendorEntry, element_signature};

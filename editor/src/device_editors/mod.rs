@@ -31,7 +31,7 @@ pub use field::DeviceEditorState;
 pub use io_area::io_area_editor_ui;
 pub use modbus_device::modbus_device_editor_ui;
 pub use refusal::{Refusal, RefusalWords};
-pub use serial_port::{StandardSilence, serial_port_editor_ui, serial_port_rename_edits};
+pub use serial_port::{StandardSilence, serial_port_editor_ui};
 pub use texts::DeviceTexts;
 
 use project_model::{DeviceProblem, Edit, new_problem};

@@ -203,7 +203,7 @@ fn plan_rename(
         // a renamed task follow the task, in the same undo step.
         match kind {
             ListKind::SerialPorts => {
-                edits.extend(editor::serial_port_rename_edits(project, old, name));
+                edits.extend(project_model::serial_port_rename_edits(project, old, name));
             }
             ListKind::Tasks => {
                 edits.extend(project_model::task_rename_edits(project, old, name));

@@ -1,7 +1,8 @@
-//! What a task's rename carries along: everything else in the project that names the task, so a
-//! rename never leaves a device, an axis or a trace on a task that no longer exists.
+//! What a rename carries along: everything else in the project that names the renamed task or
+//! serial port, so a rename never leaves a device, an axis or a trace on something that no
+//! longer exists. The edits are applied with the rename's own edit, in one undo step.
 
-use crate::{Edit, ListEdit, Object, Project, same_identifier};
+use crate::{Edit, ListEdit, ModbusLink, Object, Project, same_identifier};
 
 /// The edits that carry a task's new name from `old` to `new` into every runtime Modbus device
 /// polled in it (`modbus_devices[].task`), every axis it updates (`axes[].task`) and every trace
@@ -47,10 +48,35 @@ pub fn task_rename_edits(project: &Project, old: &str, new: &str) -> Vec<Edit> {
     devices.chain(axes).chain(traces).collect()
 }
 
+/// The edits that carry a serial port's new name from `old` to `new` into every Modbus device
+/// on the port; none when the name keeps its spelling.
+pub fn serial_port_rename_edits(project: &Project, old: &str, new: &str) -> Vec<Edit> {
+    if old == new {
+        return Vec::new();
+    }
+    project
+        .modbus_devices
+        .iter()
+        .enumerate()
+        .filter(|(_, device)| {
+            device
+                .serial_port()
+                .is_some_and(|port| same_identifier(port, old))
+        })
+        .map(|(index, device)| {
+            let mut item = device.clone();
+            item.link = ModbusLink::Rtu {
+                serial_port: new.to_owned(),
+            };
+            Edit::ModbusDevices(ListEdit::Replace { index, item })
+        })
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{History, ModbusDevice};
+    use crate::{History, ModbusDevice, SerialPort};
 
     fn example() -> Project {
         crate::load_project(&assets::example_project_dir())
@@ -100,5 +126,35 @@ mod tests {
     #[test]
     fn a_rename_that_keeps_the_spelling_carries_nothing() {
         assert!(task_rename_edits(&example(), "MainTask", "MainTask").is_empty());
+    }
+
+    fn project_with_port() -> Project {
+        let mut project = Project::default();
+        project
+            .serial_ports
+            .push(SerialPort::new("RS485", "/dev/ttyUSB0"));
+        let mut drive = ModbusDevice::tcp("Drive", "127.0.0.1", 502);
+        drive.link = ModbusLink::Rtu {
+            serial_port: "rs485".into(),
+        };
+        drive.task = Some("MainTask".into());
+        project
+            .modbus_devices
+            .push(ModbusDevice::tcp("Meter", "10.0.0.2", 502));
+        project.modbus_devices.push(drive);
+        project
+    }
+
+    #[test]
+    fn a_renamed_port_is_renamed_in_the_devices_on_it_only() {
+        let project = project_with_port();
+        let edits = serial_port_rename_edits(&project, "RS485", "Line1");
+        assert_eq!(edits.len(), 1);
+        let Edit::ModbusDevices(ListEdit::Replace { index, item }) = &edits[0] else {
+            panic!("{edits:?}");
+        };
+        assert_eq!(*index, 1);
+        assert_eq!(item.serial_port(), Some("Line1"));
+        assert!(serial_port_rename_edits(&project, "RS485", "RS485").is_empty());
     }
 }
