@@ -7,8 +7,7 @@ use std::time::Duration;
 
 use online::OnlineError;
 use online::device::{Channel, Device, Table, WordOrder};
-use program_image::Elementary;
-use project_model::{ModbusBinding, ModbusDataType, ModbusDevice, ModbusLink, ModbusTable};
+use project_model::{ModbusBinding, ModbusDevice, ModbusLink, ModbusTable};
 
 /// Why the studio could not connect to a device; the studio words it in the user's language.
 #[derive(Debug, thiserror::Error)]
@@ -53,21 +52,6 @@ pub fn channel_index(device: &ModbusDevice, binding_index: usize) -> Option<usiz
     })
 }
 
-/// The elementary type a value of `data_type` is held in by a program variable.
-pub fn elementary_of(data_type: ModbusDataType) -> Elementary {
-    match data_type {
-        ModbusDataType::Bool => Elementary::Bool,
-        ModbusDataType::Int16 => Elementary::Int,
-        ModbusDataType::Uint16 => Elementary::Uint,
-        ModbusDataType::Int32 => Elementary::Dint,
-        ModbusDataType::Uint32 => Elementary::Udint,
-        ModbusDataType::Int64 => Elementary::Lint,
-        ModbusDataType::Uint64 => Elementary::Ulint,
-        ModbusDataType::Real => Elementary::Real,
-        ModbusDataType::Lreal => Elementary::Lreal,
-    }
-}
-
 /// The channels of a device node's bindings of one value ([`polled_bindings`]), in their order.
 pub fn channels_of(device: &ModbusDevice) -> Vec<Channel> {
     polled_bindings(device)
@@ -80,7 +64,9 @@ pub fn channels_of(device: &ModbusDevice) -> Vec<Channel> {
                 ModbusTable::InputRegister => Table::InputRegisters,
             },
             address: binding.address,
-            ty: elementary_of(binding.data_type),
+            // The type the runtime's master reads the channel as, so the studio's poll shows
+            // the value the program gets.
+            ty: compiler::ide::modbus_value_type(binding.data_type),
         })
         .collect()
 }
@@ -111,6 +97,9 @@ pub async fn connect(device: &ModbusDevice) -> Result<Device, ConnectError> {
 #[cfg(test)]
 mod tests {
     use std::sync::{Arc, Mutex};
+
+    use program_image::Elementary;
+    use project_model::ModbusDataType;
 
     use super::*;
 

@@ -36,8 +36,8 @@ pub use cfc::{
 pub use code_view::CodeView;
 pub use device_editors::{
     DeviceEdit, DeviceEditorState, DeviceTexts, ModbusOnlinePart, Refusal, RefusalWords,
-    RoundRequests, StandardSilence, axis_editor_ui, controller_editor_ui, io_area_editor_ui,
-    modbus_device_editor_ui, modbus_online_ui, serial_port_editor_ui, serial_port_rename_edits,
+    StandardSilence, axis_editor_ui, controller_editor_ui, io_area_editor_ui,
+    modbus_device_editor_ui, modbus_online_ui, serial_port_editor_ui,
 };
 pub use diagram::{
     BlockSignature, DiagramChange, DiagramCommand, DiagramEditor, DiagramOnline, DiagramOutput,

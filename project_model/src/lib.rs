@@ -40,6 +40,7 @@ mod network_splice;
 mod network_walk;
 mod pou;
 mod project;
+mod rename_edits;
 mod serial_port;
 mod sfc;
 mod sfc_check;
@@ -110,6 +111,7 @@ pub use pou::{
     AccessSpecifier, Body, Language, Method, Pou, PouAction, PouKind, Property, PropertyAccessor,
 };
 pub use project::{Controller, ModbusServerMap, ModbusServerRange, Project};
+pub use rename_edits::{serial_port_rename_edits, task_rename_edits};
 pub use serial_port::{Parity, SerialPort};
 pub use sfc::{
     ActionAssociation, ActionQualifier, Jump, MacroStep, SfcBranches, SfcChart, SfcNode,

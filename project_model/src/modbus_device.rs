@@ -409,6 +409,21 @@ impl ModbusDataType {
             Self::Lreal => "LREAL",
         }
     }
+
+    /// The type as `rivet.toml` spells it (`int16`), which the build's messages use.
+    pub fn file_name(self) -> &'static str {
+        match self {
+            Self::Bool => "bool",
+            Self::Int16 => "int16",
+            Self::Uint16 => "uint16",
+            Self::Int32 => "int32",
+            Self::Uint32 => "uint32",
+            Self::Int64 => "int64",
+            Self::Uint64 => "uint64",
+            Self::Real => "real",
+            Self::Lreal => "lreal",
+        }
+    }
 }
 
 impl ModbusTable {
@@ -429,6 +444,14 @@ impl ModbusTable {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_data_type_s_file_name_is_how_the_manifest_spells_it() {
+        for data_type in ModbusDataType::ALL {
+            let written = toml::Value::try_from(data_type).unwrap();
+            assert_eq!(written.as_str(), Some(data_type.file_name()));
+        }
+    }
 
     #[test]
     fn a_channel_without_a_function_code_reads_by_its_table_and_writes_many() {

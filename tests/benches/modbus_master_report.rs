@@ -19,12 +19,12 @@ use std::net::SocketAddr;
 use std::sync::{Arc, Mutex, mpsc};
 use std::time::{Duration, Instant};
 
+use online_protocol::ModbusDeviceReport;
 use program_image::modbus_master::{
     ChannelDef, DeviceDef, Direction, Link, MasterSection, OnError, Schedule, Trigger, WordOrder,
 };
 use program_image::{Elementary, ModbusTable, ProgramImage};
 use runtime::areas::LocatedAreas;
-use runtime::modbus::master::DeviceSnapshot;
 use runtime::modbus::{MapSlot, ModbusMap, ServerOptions, serve};
 use runtime::scheduler::{CycleRecord, Scheduler, SchedulerOptions};
 
@@ -156,7 +156,7 @@ fn percentile(sorted: &[u64], p: f64) -> u64 {
 struct Run {
     records: Vec<CycleRecord>,
     missed_cycles: u64,
-    devices: Vec<DeviceSnapshot>,
+    devices: Vec<ModbusDeviceReport>,
     response_us: Vec<u64>,
     seconds: f64,
     realtime: String,

@@ -11,7 +11,6 @@ use super::command::{Command, Commands};
 use super::device_refusals::refusal_words;
 use super::i18n::{DeviceText, Language, ModbusOnlineText};
 use super::modbus_online::device_online;
-use super::modbus_plan::round_requests;
 use super::online::Online;
 use super::theme::colors;
 use super::tree_node::TreeNode;
@@ -107,7 +106,7 @@ fn editor_ui(
                 .modbus_devices
                 .iter()
                 .position(|d| d.name == *name)?;
-            editor::modbus_device_editor_ui(ui, project, index, state, texts, &round_requests)
+            editor::modbus_device_editor_ui(ui, project, index, state, texts)
         }
         TreeNode::SerialPort(name) => {
             let index = project.serial_ports.iter().position(|p| p.name == *name)?;
@@ -214,6 +213,7 @@ fn device_texts(language: Language) -> DeviceTexts {
         cyclic: get(DeviceText::Cyclic),
         rising_edge: get(DeviceText::RisingEdge),
         trigger_variable: get(DeviceText::TriggerVariable),
+        trigger_variable_hint: get(DeviceText::TriggerVariableHint),
         on_error: get(DeviceText::OnError),
         keep_last_value: get(DeviceText::KeepLastValue),
         set_to_zero: get(DeviceText::SetToZero),

@@ -2,9 +2,9 @@
 //! [`DeviceProblem`] mapped to a template of [`DeviceText`], so a new variant cannot compile without
 //! its words.
 
-use compiler::ide::{AddressError, ChannelVariableError};
+use compiler::ide::{AddressError, ChannelBindingError, ChannelVariableError};
 use editor::{Refusal, RefusalWords};
-use project_model::{DeviceProblem, ModbusTable};
+use project_model::{ChannelDirection, DeviceProblem, ModbusTable};
 
 use super::i18n::{DeviceText, Language};
 
@@ -20,6 +20,7 @@ pub(crate) fn describe_refusal(refusal: &Refusal, language: Language) -> String 
         Refusal::Problem(problem) => describe_problem(problem, language),
         Refusal::Address(error) => describe_address(error, language),
         Refusal::ChannelVariable(error) => describe_channel_variable(error, language),
+        Refusal::ChannelBinding(error) => describe_channel_binding(error, language),
         Refusal::BitTableAddress { address } => {
             fill(DeviceText::BitTableAddress, &[("address", address)])
         }
@@ -311,6 +312,48 @@ fn describe_channel_variable(error: &ChannelVariableError, language: Language) -
                     ("path", path),
                     ("declared", declared),
                     ("data_type", data_type),
+                    ("expected", &expected),
+                ],
+            )
+        }
+    }
+}
+
+/// Why a variable does not fit a runtime device's channel (its data type and count), in
+/// `language`.
+fn describe_channel_binding(error: &ChannelBindingError, language: Language) -> String {
+    let fill = |text: DeviceText, pairs: &[(&str, &str)]| fill(text.get(language), pairs);
+    match error {
+        ChannelBindingError::NoSuchVariable(path) => {
+            fill(DeviceText::NoSuchVariable, &[("path", path)])
+        }
+        ChannelBindingError::Misfit { path, misfit } => {
+            // The data type as the project file and the build's message spell it.
+            let data_type = misfit.data_type.file_name();
+            let values = if misfit.count == 1 {
+                fill(DeviceText::OneChannelValue, &[("data_type", data_type)])
+            } else {
+                fill(
+                    DeviceText::ChannelValues,
+                    &[
+                        ("count", &misfit.count.to_string()),
+                        ("data_type", data_type),
+                    ],
+                )
+            };
+            // The fitting declarations come joined by the English "or".
+            let or = format!(" {} ", DeviceText::WordOr.get(language));
+            let expected = misfit.expected.replace(" or ", &or);
+            let template = match misfit.direction {
+                ChannelDirection::Read => DeviceText::ChannelMisfitReads,
+                ChannelDirection::Write => DeviceText::ChannelMisfitWrites,
+            };
+            fill(
+                template,
+                &[
+                    ("path", path),
+                    ("values", &values),
+                    ("declared", &misfit.declared),
                     ("expected", &expected),
                 ],
             )

@@ -171,6 +171,24 @@ fn every_refusal() -> Vec<Refusal> {
         ]
         .map(Refusal::from),
     );
+    let misfit = |direction, count, declared: &str, expected: &str| ChannelBindingError::Misfit {
+        path: "GVL.x".into(),
+        misfit: compiler::ide::ChannelMisfit {
+            direction,
+            data_type: ModbusDataType::Int16,
+            count,
+            declared: declared.into(),
+            expected: expected.into(),
+        },
+    };
+    refusals.extend(
+        [
+            ChannelBindingError::NoSuchVariable("GVL.x".into()),
+            misfit(ChannelDirection::Read, 1, "REAL", "INT"),
+            misfit(ChannelDirection::Write, 8, "INT", "ARRAY[0..7] OF INT"),
+        ]
+        .map(Refusal::from),
+    );
     refusals.extend([
         Refusal::BitTableAddress {
             address: "%QX4.1".into(),

@@ -37,6 +37,7 @@ enum Content<'a> {
     Object(&'a Object),
     Controller(&'a project_model::Controller),
     IoArea(&'a project_model::IoArea),
+    SerialPort(&'a project_model::SerialPort),
     ModbusDevice(&'a project_model::ModbusDevice),
     Axis(&'a project_model::Axis),
 }
@@ -50,6 +51,11 @@ fn document_content<'a>(project: &'a Project, node: &TreeNode) -> Option<Content
             .iter()
             .find(|a| a.name == *name)
             .map(Content::IoArea),
+        TreeNode::SerialPort(name) => project
+            .serial_ports
+            .iter()
+            .find(|p| p.name == *name)
+            .map(Content::SerialPort),
         TreeNode::ModbusDevice(name) => project
             .modbus_devices
             .iter()
@@ -78,13 +84,16 @@ fn content_ui(ui: &mut Ui, node: &TreeNode, content: Content<'_>) {
         Content::Object(Object::CamTable(_)) => {}
         Content::Object(Object::Trace(trace)) => property_view_ui(ui, &salt, trace),
         Content::Object(Object::WatchList(watch)) => property_view_ui(ui, &salt, watch),
-        Content::Controller(_) | Content::IoArea(_) | Content::ModbusDevice(_) => {}
+        Content::Controller(_)
+        | Content::IoArea(_)
+        | Content::SerialPort(_)
+        | Content::ModbusDevice(_) => {}
         Content::Axis(axis) => property_view_ui(ui, &salt, axis),
     }
 }
 
-/// The settings of a device tree node that has some (controller, task, I/O area, Modbus
-/// device, axis) as a property grid; `false` when the node has none.
+/// The settings of a device tree node that has some (controller, task, I/O area, serial port,
+/// Modbus device, axis) as a property grid; `false` when the node has none.
 pub fn settings_ui(ui: &mut Ui, project: &Project, node: &TreeNode) -> bool {
     let salt = format!("settings {node:?}");
     if let TreeNode::Task(name) = node {
@@ -99,6 +108,7 @@ pub fn settings_ui(ui: &mut Ui, project: &Project, node: &TreeNode) -> bool {
     match document_content(project, node) {
         Some(Content::Controller(controller)) => property_view_ui(ui, &salt, controller),
         Some(Content::IoArea(area)) => property_view_ui(ui, &salt, area),
+        Some(Content::SerialPort(port)) => property_view_ui(ui, &salt, port),
         Some(Content::ModbusDevice(device)) => property_view_ui(ui, &salt, device),
         Some(Content::Axis(axis)) => property_view_ui(ui, &salt, axis),
         Some(Content::Object(_)) | None => return false,

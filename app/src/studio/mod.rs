@@ -23,7 +23,6 @@ mod import_dialog;
 mod literal_tests;
 mod login_dialog;
 mod modbus_online;
-mod modbus_plan;
 mod online;
 mod pane;
 mod pane_behavior;

@@ -41,8 +41,8 @@ pub(crate) struct TaskEditorState {
     revision: Option<u64>,
 }
 
-/// One accepted change: its undo label and edit.
-type Change = (String, Edit);
+/// One accepted change: its undo label and edits, one undo step.
+type Change = (String, Vec<Edit>);
 
 /// Draws the editor for `node` (the task configuration, or a single task) and queues the
 /// accepted changes as edits.
@@ -101,7 +101,10 @@ pub(crate) fn task_editor_ui(
                 && ui.button(Text::AddTask.get(language)).clicked()
             {
                 let (edit, name) = ListKind::Tasks.add(project);
-                changes.push((Text::UndoAddTask.fill(language, &[("name", &name)]), edit));
+                changes.push((
+                    Text::UndoAddTask.fill(language, &[("name", &name)]),
+                    vec![edit],
+                ));
                 state.selected = Some(name);
             }
             let mut editor = Editor {
@@ -120,8 +123,8 @@ pub(crate) fn task_editor_ui(
                 editor.calls_ui(ui, index);
             }
         });
-    for (label, edit) in changes {
-        commands.push(Command::Edit(label, vec![edit]));
+    for (label, edits) in changes {
+        commands.push(Command::Edit(label, edits));
     }
 }
 
@@ -209,9 +212,15 @@ impl Editor<'_> {
         self.field_ui(ui, index, task, Field::Sensitivity, 40.0);
     }
 
+    /// Replaces the task at `index` with `item`; a new name is carried into the devices, axes
+    /// and traces that name the task, in the same undo step.
     fn replace(&mut self, label: String, index: usize, item: Task) {
-        self.changes
-            .push((label, Edit::Tasks(ListEdit::Replace { index, item })));
+        let carried = self.project.tasks.get(index).map_or_else(Vec::new, |old| {
+            project_model::task_rename_edits(self.project, &old.name, &item.name)
+        });
+        let mut edits = vec![Edit::Tasks(ListEdit::Replace { index, item })];
+        edits.extend(carried);
+        self.changes.push((label, edits));
     }
 
     /// A text field of the table; the value is checked and applied when the field is left.

@@ -46,6 +46,18 @@ fn undo(harness: &mut Harness<'_, StudioApp>) {
     harness.run();
 }
 
+/// The studio on `project` with its interface in Simplified Chinese.
+fn chinese_studio(project: &std::path::Path) -> Harness<'static, StudioApp> {
+    let settings = Settings {
+        language: Language::SimplifiedChinese,
+        ..Settings::default()
+    };
+    let app = StudioApp::new(settings, Some(project.to_owned()));
+    Harness::builder()
+        .with_size([1400.0, 900.0])
+        .build_ui_state(|ui, app: &mut StudioApp| app.ui(ui), app)
+}
+
 #[track_caller]
 fn assert_refused(harness: &Harness<'_, StudioApp>, reason: &str) {
     assert!(
@@ -342,6 +354,140 @@ fn a_refused_master_setting_shows_its_reason_and_changes_nothing() {
     assert_eq!(drive(&harness).bindings, before.bindings);
 }
 
+/// The example with an array of two REALs in `GVL_Machine`, for a channel of two values.
+fn example_with_speed_array() -> tempfile::TempDir {
+    example_copy(|dir| {
+        let gvl = dir.join("application/GVL_Machine.gvl.toml");
+        let mut text = std::fs::read_to_string(&gvl).unwrap();
+        text.push_str(
+            "\n[[variable]]\nname = \"arSpeeds\"\nsection = \"VAR_GLOBAL\"\ntype = \"ARRAY[0..1] OF REAL\"\n",
+        );
+        std::fs::write(&gvl, text).unwrap();
+    })
+}
+
+#[test]
+fn a_runtime_channel_s_variable_is_checked_with_its_count_while_editing() {
+    let dir = example_with_speed_array();
+    let mut harness = studio(dir.path());
+    open(&mut harness, TreeNode::ModbusDevice("BeltDrive".into()));
+    let drive = |harness: &Harness<'_, StudioApp>| project(harness).modbus_devices[0].clone();
+    choose(&mut harness, "I/O task of BeltDrive", "MainTask");
+
+    // The array does not fit a channel of one value: refused beside the field.
+    enter_text(&mut harness, "Variable of row 1", "GVL_Machine.arSpeeds");
+    assert_refused(
+        &harness,
+        "'GVL_Machine.arSpeeds': the channel reads one real value, but the variable is declared as ARRAY[0..1] OF REAL: declare it as REAL",
+    );
+    assert_eq!(
+        drive(&harness).bindings[0].variable,
+        "GVL_Machine.rBeltSpeedActual"
+    );
+    harness.key_press(Key::Escape);
+    harness.run();
+
+    // A count the variable does not fit is taken, and the row says what to declare.
+    enter_text(&mut harness, "Count of row 1", "2");
+    assert_eq!(drive(&harness).bindings[0].count, 2);
+    assert_refused(
+        &harness,
+        "the channel reads 2 real values, but the variable is declared as REAL: declare it as ARRAY[0..1] OF REAL",
+    );
+    enter_text(&mut harness, "Variable of row 1", "GVL_Machine.arSpeeds");
+    assert_eq!(drive(&harness).bindings[0].variable, "GVL_Machine.arSpeeds");
+    assert!(
+        harness
+            .query_by_label_contains("the channel reads 2 real values")
+            .is_none()
+    );
+}
+
+#[test]
+fn a_channel_s_misfit_is_said_in_chinese_when_chosen() {
+    let dir = example_with_speed_array();
+    let mut harness = chinese_studio(dir.path());
+    open(&mut harness, TreeNode::ModbusDevice("BeltDrive".into()));
+    choose(&mut harness, "BeltDrive 的I/O 任务", "MainTask");
+    enter_text(&mut harness, "第 1 行的变量", "GVL_Machine.arSpeeds");
+    assert_refused(
+        &harness,
+        "'GVL_Machine.arSpeeds'：通道读取一个 real 值，但变量声明为 ARRAY[0..1] OF REAL：请将其声明为 REAL",
+    );
+    assert!(
+        harness
+            .query_by_label_contains("the channel reads")
+            .is_none()
+    );
+}
+
+#[test]
+fn a_rising_edge_waits_for_its_trigger_variable_which_then_sets_both_in_one_step() {
+    let dir = example_copy(|_| {});
+    let mut harness = studio(dir.path());
+    open(&mut harness, TreeNode::ModbusDevice("BeltDrive".into()));
+    let drive = |harness: &Harness<'_, StudioApp>| project(harness).modbus_devices[0].clone();
+    choose(&mut harness, "I/O task of BeltDrive", "MainTask");
+    let hint = "Name the BOOL variable whose rising edge sends the channel";
+    assert!(harness.query_by_label_contains(hint).is_none());
+
+    // The choice is shown and waits: nothing is refused and the model is unchanged.
+    choose(&mut harness, "Trigger of row 1", "Rising edge");
+    assert!(harness.query_by_label_contains(hint).is_some());
+    assert!(
+        harness
+            .query_by_label_contains("has no trigger variable")
+            .is_none()
+    );
+    assert_eq!(
+        drive(&harness).bindings[0].trigger,
+        project_model::ChannelTrigger::Cyclic
+    );
+
+    // A variable that is no BOOL is refused and the choice keeps waiting.
+    enter_text(
+        &mut harness,
+        "Trigger variable of row 1",
+        "GVL_Machine.rBeltSpeedActual",
+    );
+    assert_refused(&harness, "declare it as BOOL");
+    assert!(harness.query_by_label_contains(hint).is_some());
+    harness.key_press(Key::Escape);
+    harness.run();
+
+    enter_text(
+        &mut harness,
+        "Trigger variable of row 1",
+        "GVL_Machine.xDriveReady",
+    );
+    let channel = drive(&harness).bindings[0].clone();
+    assert_eq!(channel.trigger, project_model::ChannelTrigger::RisingEdge);
+    assert_eq!(
+        channel.trigger_variable.as_deref(),
+        Some("GVL_Machine.xDriveReady")
+    );
+    assert!(harness.query_by_label_contains(hint).is_none());
+    undo(&mut harness);
+    let channel = drive(&harness).bindings[0].clone();
+    assert_eq!(channel.trigger, project_model::ChannelTrigger::Cyclic);
+    assert_eq!(channel.trigger_variable, None);
+}
+
+#[test]
+fn the_waiting_rising_edge_asks_for_its_variable_in_chinese() {
+    let dir = example_copy(|_| {});
+    let mut harness = chinese_studio(dir.path());
+    open(&mut harness, TreeNode::ModbusDevice("BeltDrive".into()));
+    choose(&mut harness, "BeltDrive 的I/O 任务", "MainTask");
+    choose(&mut harness, "第 1 行的触发", "上升沿");
+    assert!(
+        harness
+            .query_by_label_contains("请填写 BOOL 变量，其上升沿发送该通道")
+            .is_some()
+    );
+    assert!(harness.query_by_label_contains("Name the BOOL").is_none());
+}
+
 #[test]
 fn a_serial_port_added_in_the_tree_is_edited_and_an_rtu_device_put_on_it() {
     let dir = example_copy(|_| {});
@@ -353,6 +499,16 @@ fn a_serial_port_added_in_the_tree_is_edited_and_an_rtu_device_put_on_it() {
     let ports = |harness: &Harness<'_, StudioApp>| project(harness).serial_ports.clone();
     assert_eq!(ports(&harness).len(), 1);
     let name = ports(&harness)[0].name.clone();
+    // Selected in the tree, the port's settings show in the Properties pane as the manifest
+    // names them, like the other device nodes'.
+    harness.get_by_label(&format!("{name} *")).click();
+    harness.run();
+    assert_eq!(
+        harness.state().selection(),
+        Some(&TreeNode::SerialPort(name.clone()))
+    );
+    assert!(harness.query_by_label("baud_rate").is_some());
+    assert!(harness.query_by_label("stop_bits").is_some());
     assert!(
         harness
             .query_by_label_contains("0 = 3.5 characters (2006 µs)")
@@ -421,6 +577,18 @@ fn a_serial_port_added_in_the_tree_is_edited_and_an_rtu_device_put_on_it() {
     undo(&mut harness);
     assert_eq!(ports(&harness)[0].name, name);
     assert_eq!(drive(&harness).serial_port(), Some(name.as_str()));
+
+    // Back on TCP (which needs a poll interval), the device has the host and port it had
+    // before it went onto the port.
+    enter_text(&mut harness, "Poll interval of BeltDrive", "100");
+    choose(&mut harness, "Link of BeltDrive", "Modbus TCP");
+    assert_eq!(
+        drive(&harness).link,
+        project_model::ModbusLink::Tcp {
+            host: "192.168.1.50".into(),
+            port: 502
+        }
+    );
 }
 
 #[test]
@@ -463,14 +631,7 @@ fn the_axis_editor_sets_limits_with_units_refuses_a_period_of_0_and_undoes() {
 #[test]
 fn the_device_editors_speak_chinese_when_chosen() {
     let dir = example_copy(|_| {});
-    let settings = Settings {
-        language: Language::SimplifiedChinese,
-        ..Settings::default()
-    };
-    let app = StudioApp::new(settings, Some(dir.path().to_owned()));
-    let mut harness = Harness::builder()
-        .with_size([1400.0, 900.0])
-        .build_ui_state(|ui, app: &mut StudioApp| app.ui(ui), app);
+    let mut harness = chinese_studio(dir.path());
     open(&mut harness, TreeNode::Axis("Knife".into()));
     assert!(harness.query_by_label("Knife 的速度").is_some());
     assert!(harness.query_by_label("Velocity of Knife").is_none());
@@ -482,14 +643,7 @@ fn the_device_editors_speak_chinese_when_chosen() {
 #[test]
 fn a_value_refused_in_chinese_gives_its_reason_in_chinese() {
     let dir = example_copy(|_| {});
-    let settings = Settings {
-        language: Language::SimplifiedChinese,
-        ..Settings::default()
-    };
-    let app = StudioApp::new(settings, Some(dir.path().to_owned()));
-    let mut harness = Harness::builder()
-        .with_size([1400.0, 900.0])
-        .build_ui_state(|ui, app: &mut StudioApp| app.ui(ui), app);
+    let mut harness = chinese_studio(dir.path());
     open(&mut harness, TreeNode::Controller);
     let port = project(&harness).controller.port;
     enter_text(&mut harness, "PLC 的端口", "0");

@@ -201,6 +201,31 @@ fn renaming_a_program_renames_its_task_calls_in_the_same_undo_step() {
 }
 
 #[test]
+fn renaming_a_task_carries_into_its_axes_and_traces_in_the_same_undo_step() {
+    let dir = example_copy();
+    let mut harness = studio(dir.path());
+    menu(&mut harness, "MotionTask", "Rename");
+    enter_text(&mut harness, "Name", "Motion");
+    let project_now = project(&harness);
+    assert!(project_now.task("Motion").is_some());
+    assert!(project_now.axes.iter().all(|axis| axis.task == "Motion"));
+    let trace_task = |project: &Project| match project.application.object("TRC_Knife") {
+        Some(Object::Trace(trace)) => trace.task.clone(),
+        _ => String::new(),
+    };
+    assert_eq!(trace_task(project_now), "Motion");
+    shortcut(&mut harness, Key::Z);
+    let project_now = project(&harness);
+    assert!(
+        project_now
+            .axes
+            .iter()
+            .all(|axis| axis.task == "MotionTask")
+    );
+    assert_eq!(trace_task(project_now), "MotionTask");
+}
+
+#[test]
 fn duplicate_puts_a_copy_next_to_the_original_and_delete_removes_nodes() {
     let dir = example_copy();
     let mut harness = studio(dir.path());

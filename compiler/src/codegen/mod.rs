@@ -23,6 +23,7 @@ mod interface;
 mod layout;
 #[cfg(test)]
 mod line_table_tests;
+pub(crate) mod modbus_device_def;
 mod modbus_master;
 mod motion;
 mod program;

@@ -9,7 +9,7 @@ use program_image::modbus_master::{
 };
 use project_model::{
     ChannelDirection, ChannelErrorAction, ChannelTrigger, ModbusBinding, ModbusDataType,
-    ModbusDevice, ModbusLink, ModbusSchedule, ModbusTable, SerialPort, Task, TaskKind,
+    ModbusDevice, ModbusLink, ModbusSchedule, ModbusTable, Project, SerialPort, Task, TaskKind,
 };
 
 use crate::{SourceProject, compile_project};
@@ -49,8 +49,10 @@ fn task(name: &str, interval_us: u32, program: &str) -> Task {
     }
 }
 
-#[test]
-fn the_section_holds_the_runtime_devices_with_indices_codes_and_tags_resolved() {
+/// Two runtime devices (TCP polled every 20 ms, RTU after every cycle) with channels of every
+/// kind (reads, a default and a single write, an array, an edge-triggered write, an error flag
+/// and a status), and a studio device between them.
+fn two_device_project() -> Project {
     let mut project = SourceProject::new(SOURCE).project;
     project.tasks = vec![
         task("SlowTask", 100_000, "Slow"),
@@ -131,6 +133,12 @@ fn the_section_holds_the_runtime_devices_with_indices_codes_and_tags_resolved() 
     };
     project.modbus_devices = vec![drive, studio, heater];
 
+    project
+}
+
+#[test]
+fn the_section_holds_the_runtime_devices_with_indices_codes_and_tags_resolved() {
+    let project = two_device_project();
     let image = compile_project(&project).unwrap();
     let channel = |variable: &str, table, address, value_type, function_code| ChannelDef {
         variable: variable.to_owned(),
@@ -282,4 +290,26 @@ fn bit_channels_without_a_function_code_get_the_defaults_1_2_and_15() {
             ("GVL.xSend".to_owned(), 15),
         ]
     );
+}
+
+#[test]
+fn the_editor_defines_and_counts_each_device_as_the_build_does() {
+    let project = two_device_project();
+    let image = compile_project(&project).unwrap();
+    let built = image.modbus_master.unwrap().devices;
+    let runtime_devices: Vec<&ModbusDevice> = project
+        .modbus_devices
+        .iter()
+        .filter(|device| device.is_runtime_device())
+        .collect();
+    assert_eq!(runtime_devices.len(), built.len());
+    for (device, built) in runtime_devices.into_iter().zip(&built) {
+        assert_eq!(&crate::ide::modbus_device_def(&project, device), built);
+        assert_eq!(
+            crate::ide::modbus_round_requests(&project, device),
+            program_image::modbus_master::plan(built).len(),
+            "{}",
+            device.name
+        );
+    }
 }

@@ -5,12 +5,14 @@
 //! folding ranges. From the project: hover, go to definition, find references, completion
 //! candidates and the diagnostics of one POU ([`semantic`]). For the declaration table and the
 //! I/O mapping: direct addresses checked against their types, overlapping located variables, and
-//! declaration text read back into variables.
+//! declaration text read back into variables. For the Modbus device editor: a device as the build
+//! defines it and the requests of its round ([`modbus_round_requests`]).
 
 mod addresses;
 mod blocks;
 mod declarations;
 mod folding;
+mod modbus_round;
 mod outline;
 pub mod semantic;
 mod semantic_tokens;
@@ -18,6 +20,7 @@ pub(crate) mod variable_type;
 
 use std::ops::Range;
 
+pub use crate::codegen::modbus_device_def::value_type as modbus_value_type;
 pub use crate::sema::address::AddressError;
 pub use addresses::{
     AddressArea, AddressCheckError, AddressInfo, LocatedVariable, Overlap, address_info,
@@ -30,6 +33,7 @@ pub use declarations::{
     DeclarationHeader, DeclarationKind, ParsedDeclarations, parse_declarations,
 };
 pub use folding::folding_ranges;
+pub use modbus_round::{modbus_device_def, modbus_round_requests};
 pub use outline::{OutlineItem, OutlineKind, outline};
 pub use semantic::{
     Completion, Definition, DefinitionKind, Hover, MonitoredName, Reference, completions,

@@ -217,26 +217,11 @@ fn elementary_name(ty: &Type) -> Option<&'static str> {
 
 /// `one int16 value` or `8 real values`, with the data type as the project file spells it.
 fn values(data_type: ModbusDataType, count: u16) -> String {
-    let name = data_type_file_name(data_type);
+    let name = data_type.file_name();
     if count == 1 {
         format!("one {name} value")
     } else {
         format!("{count} {name} values")
-    }
-}
-
-/// The data type as `rivet.toml` spells it (`int16`).
-pub(crate) fn data_type_file_name(data_type: ModbusDataType) -> &'static str {
-    match data_type {
-        ModbusDataType::Bool => "bool",
-        ModbusDataType::Int16 => "int16",
-        ModbusDataType::Uint16 => "uint16",
-        ModbusDataType::Int32 => "int32",
-        ModbusDataType::Uint32 => "uint32",
-        ModbusDataType::Int64 => "int64",
-        ModbusDataType::Uint64 => "uint64",
-        ModbusDataType::Real => "real",
-        ModbusDataType::Lreal => "lreal",
     }
 }
 

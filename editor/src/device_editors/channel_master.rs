@@ -23,6 +23,8 @@ pub(crate) fn channel_master_cells_ui(
     texts: &DeviceTexts,
     binding: &ModbusBinding,
 ) {
+    // A count the variable does not fit is taken, and the row says why it does not fit: going
+    // from one value to an array changes the count and the variable in two edits.
     row.field("count", &texts.count, 50.0).whole_ui(
         ui,
         binding.count,
@@ -54,19 +56,31 @@ pub(crate) fn channel_master_cells_ui(
         (texts.cyclic.clone(), ChannelTrigger::Cyclic),
         (texts.rising_edge.clone(), ChannelTrigger::RisingEdge),
     ];
-    row.field("trigger", &texts.trigger, 100.0).combo_ui(
-        ui,
-        binding.trigger,
-        &triggers,
-        |item, trigger| {
-            item.trigger = trigger;
-            if trigger == ChannelTrigger::Cyclic {
-                item.trigger_variable = None;
-            }
-        },
-    );
+    // A rising edge without its variable is refused by the model, so choosing it waits for the
+    // variable: the trigger shows "Rising edge" and the variable's field asks for one, whose
+    // edit sets both.
+    row.field("trigger", &texts.trigger, 100.0)
+        .pending_combo_ui(
+            ui,
+            binding.trigger,
+            &triggers,
+            |trigger| trigger == ChannelTrigger::RisingEdge && binding.trigger_variable.is_none(),
+            |item, trigger| {
+                item.trigger = trigger;
+                if trigger == ChannelTrigger::Cyclic {
+                    item.trigger_variable = None;
+                }
+                Ok(())
+            },
+        );
+    let hint = if row.is_pending("trigger") {
+        texts.trigger_variable_hint.as_str()
+    } else {
+        ""
+    };
     let trigger_variable = binding.trigger_variable.clone().unwrap_or_default();
     row.field("trigger variable", &texts.trigger_variable, 150.0)
+        .suffix(hint)
         .typed_ui(ui, &trigger_variable, |item, text| {
             // Naming a trigger variable asks for the rising edge it triggers on; clearing it
             // makes the channel cyclic again.

@@ -3,7 +3,7 @@
 //! trigger, error handling and error flag (`channel_master.rs`); rows added by naming a
 //! variable and deleted by a button.
 
-use compiler::ide::{check_channel_variable, variable_type};
+use compiler::ide::{check_channel_binding, check_channel_variable, variable_type};
 use egui::Ui;
 use project_model::{ModbusBinding, ModbusDataType, ModbusTable, Project};
 
@@ -42,13 +42,13 @@ pub(crate) fn channels_ui(
         commit,
     };
     let mut out = table_ui(ui, state, texts, &table, |ui, row, binding| {
-        let fits = check_channel_variable(project, &binding.variable, binding.data_type);
+        let fits = channel_fit(project, binding, master);
         row.field("variable", &texts.variable, 190.0).typed_ui(
             ui,
             &binding.variable,
             |item, text| {
-                check_channel_variable(project, text, item.data_type)?;
                 item.variable = text.to_owned();
+                channel_fit(project, item, master)?;
                 Ok(text.to_owned())
             },
         );
@@ -72,10 +72,10 @@ pub(crate) fn channels_ui(
             binding.data_type,
             &types,
             |item, data_type| {
-                if fits.is_ok() {
-                    check_channel_variable(project, &item.variable, data_type)?;
-                }
                 item.data_type = data_type;
+                if fits.is_ok() {
+                    channel_fit(project, item, master)?;
+                }
                 Ok(())
             },
         );
@@ -87,9 +87,9 @@ pub(crate) fn channels_ui(
             &binding.comment,
             |item, comment| item.comment = comment,
         );
-        // Bound before this check existed, or the variable changed since: say so.
-        fits.err()
-            .map(|error| texts.refusal.describe(&Refusal::from(error)))
+        // Bound before this check existed, the variable changed since, or the count was changed
+        // ahead of the variable (so a channel can go from one value to an array): say so.
+        fits.err().map(|refusal| texts.refusal.describe(&refusal))
     });
     ui.horizontal(|ui| {
         ui.label(&texts.new_channel);
@@ -111,6 +111,21 @@ pub(crate) fn channels_ui(
     });
     reason_ui(ui, state, texts, "channels");
     out
+}
+
+/// Whether `binding`'s variable fits the channel: on a device the runtime masters by data type
+/// and count, as the build checks it (E0141); on a studio device, which polls one value per
+/// channel, by data type.
+fn channel_fit(project: &Project, binding: &ModbusBinding, master: bool) -> Result<(), Refusal> {
+    if master {
+        Ok(check_channel_binding(project, binding)?)
+    } else {
+        Ok(check_channel_variable(
+            project,
+            &binding.variable,
+            binding.data_type,
+        )?)
+    }
 }
 
 /// The titles of the table's columns: the master's settings only on a device the runtime

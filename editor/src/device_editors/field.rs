@@ -7,6 +7,7 @@ use std::collections::HashMap;
 use egui::{Key, RichText, Ui, WidgetInfo};
 
 use super::DeviceEdit;
+use super::link_memory::LinkMemory;
 use super::refusal::Refusal;
 use super::texts::DeviceTexts;
 
@@ -21,6 +22,13 @@ pub struct DeviceEditorState {
     refused: HashMap<String, Refusal>,
     /// A copy of the node's value the drafts belong to; `None` before the first frame.
     seen: Option<Box<dyn Any>>,
+    /// The option a combo box shows without it being applied yet, by field key: a choice that
+    /// needs another field first (a rising edge needs its trigger variable). Dropped with the
+    /// drafts when the node's value changes.
+    pending: HashMap<String, usize>,
+    /// A Modbus device's last link of each kind, so switching the kind back restores it; kept
+    /// when the value changes, unlike the drafts.
+    pub(crate) links: LinkMemory,
 }
 
 impl DeviceEditorState {
@@ -38,8 +46,14 @@ impl DeviceEditorState {
         if !same {
             self.drafts.clear();
             self.refused.clear();
+            self.pending.clear();
             self.seen = Some(Box::new(value.clone()));
         }
+    }
+
+    /// Whether the combo box `key` shows a choice that waits for another field.
+    pub(crate) fn is_pending(&self, key: &str) -> bool {
+        self.pending.contains_key(key)
     }
 
     /// Why the value last given to the field `key` was refused, if it was.
@@ -138,6 +152,54 @@ pub(crate) fn combo_ui<T: PartialEq + Copy>(
     options: &[(String, T)],
     accept: impl FnOnce(T) -> Result<DeviceEdit, Refusal>,
 ) -> Option<DeviceEdit> {
+    pending_combo_ui(ui, state, texts, field, current, options, |_| false, accept)
+}
+
+/// A combo box of `options` whose choice waits, shown but not applied, while `waits` says it
+/// needs another field first; the other field's edit applies it (and drops the wait, as any
+/// change of the node does). Any other choice is given to `accept`. Shows the option equal to
+/// `current` when nothing waits.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn pending_combo_ui<T: PartialEq + Copy>(
+    ui: &mut Ui,
+    state: &mut DeviceEditorState,
+    texts: &DeviceTexts,
+    field: FieldId<'_>,
+    current: T,
+    options: &[(String, T)],
+    waits: impl Fn(T) -> bool,
+    accept: impl FnOnce(T) -> Result<DeviceEdit, Refusal>,
+) -> Option<DeviceEdit> {
+    let shown = state
+        .pending
+        .get(field.key)
+        .and_then(|&index| options.get(index))
+        .map_or(current, |(_, value)| *value);
+    let value = combo_choice_ui(ui, state, texts, &field, shown, options)?;
+    state.refused.remove(field.key);
+    if waits(value) {
+        let index = options.iter().position(|(_, option)| *option == value)?;
+        state.pending.insert(field.key.to_owned(), index);
+        return None;
+    }
+    state.pending.remove(field.key);
+    if value == current {
+        // Back to the value the node has: only the wait is dropped.
+        return None;
+    }
+    state.settle(field.key, accept(value))
+}
+
+/// Draws a combo box of `options` showing the one equal to `current`, with the field's refusal
+/// beside it, and returns the option chosen this frame, if another than `current`.
+fn combo_choice_ui<T: PartialEq + Copy>(
+    ui: &mut Ui,
+    state: &DeviceEditorState,
+    texts: &DeviceTexts,
+    field: &FieldId<'_>,
+    current: T,
+    options: &[(String, T)],
+) -> Option<T> {
     let shown = options
         .iter()
         .find(|(_, value)| *value == current)
@@ -160,8 +222,7 @@ pub(crate) fn combo_ui<T: PartialEq + Copy>(
             .widget_info(|| WidgetInfo::labeled(egui::Role::ComboBox, true, label.clone()));
         reason_ui(ui, state, texts, field.key);
     });
-    let value = chosen?;
-    state.settle(field.key, accept(value))
+    chosen
 }
 
 /// A check box; a change is given to `accept`, and a refusal is shown beside it.

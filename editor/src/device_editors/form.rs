@@ -9,7 +9,7 @@ use std::ops::RangeInclusive;
 use egui::Ui;
 
 use super::field::{
-    DeviceEditorState, FieldId, checkbox_ui, combo_ui, parse_number, parse_whole, row_ui,
+    DeviceEditorState, FieldId, checkbox_ui, parse_number, parse_whole, pending_combo_ui, row_ui,
     text_field_ui,
 };
 use super::refusal::Refusal;
@@ -138,6 +138,12 @@ impl<'a, T: Clone> Form<'a, T> {
         }
     }
 
+    /// Whether the combo box keyed `key` shows a choice that waits for another field
+    /// ([`FormField::pending_combo_ui`]).
+    pub(crate) fn is_pending(&self, key: &str) -> bool {
+        self.state.is_pending(&self.subject.key(key))
+    }
+
     /// The edit of this frame's gesture, if there was one.
     pub(crate) fn finish(self) -> Option<DeviceEdit> {
         self.edit
@@ -264,27 +270,7 @@ impl<'f, 'a, T: Clone> FormField<'f, 'a, T> {
         options: &[(String, V)],
         accept: impl FnOnce(&mut T, V) -> Result<(), Refusal>,
     ) {
-        let title = self.name;
-        self.show(ui, title, |ui, state, subject, field, name| {
-            combo_ui(
-                ui,
-                state,
-                subject.texts,
-                field,
-                current,
-                options,
-                |chosen| {
-                    let mut item = subject.value.clone();
-                    accept(&mut item, chosen)?;
-                    let value = options
-                        .iter()
-                        .find(|(_, value)| *value == chosen)
-                        .map(|(text, _)| text.as_str())
-                        .unwrap_or_default();
-                    subject.change(name, value, item)
-                },
-            )
-        });
+        self.pending_combo_ui(ui, current, options, |_| false, accept);
     }
 
     /// A combo box of `options` whose choice is put into a copy of the value.
@@ -298,6 +284,36 @@ impl<'f, 'a, T: Clone> FormField<'f, 'a, T> {
         self.checked_combo_ui(ui, current, options, |item, chosen| {
             put(item, chosen);
             Ok(())
+        });
+    }
+
+    /// A combo box of `options` whose choice of a value that `waits` names is shown but not
+    /// applied until another field's edit completes it; other choices change a copy of the
+    /// value through `accept`, and the undo label shows the option's text.
+    pub(crate) fn pending_combo_ui<V: PartialEq + Copy>(
+        self,
+        ui: &mut Ui,
+        current: V,
+        options: &[(String, V)],
+        waits: impl Fn(V) -> bool,
+        accept: impl FnOnce(&mut T, V) -> Result<(), Refusal>,
+    ) {
+        let title = self.name;
+        self.show(ui, title, |ui, state, subject, field, name| {
+            pending_combo_ui(
+                ui,
+                state,
+                subject.texts,
+                field,
+                current,
+                options,
+                waits,
+                |chosen| {
+                    let mut item = subject.value.clone();
+                    accept(&mut item, chosen)?;
+                    subject.change(name, option_text(options, chosen), item)
+                },
+            )
         });
     }
 
@@ -361,6 +377,15 @@ impl<'f, 'a, T: Clone> FormField<'f, 'a, T> {
         };
         keep(edit, made);
     }
+}
+
+/// The text of the option whose value is `chosen`, which an undo label shows.
+fn option_text<V: PartialEq>(options: &[(String, V)], chosen: V) -> &str {
+    options
+        .iter()
+        .find(|(_, value)| *value == chosen)
+        .map(|(text, _)| text.as_str())
+        .unwrap_or_default()
 }
 
 #[cfg(test)]

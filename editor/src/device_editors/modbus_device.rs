@@ -3,35 +3,28 @@
 
 use egui::Ui;
 use project_model::{
-    Edit, ListEdit, ModbusBinding, ModbusDevice, ModbusLink, Project, WordOrder,
-    modbus_device_problems,
+    Edit, ListEdit, ModbusBinding, ModbusDevice, Project, WordOrder, modbus_device_problems,
 };
 
 use super::channels::channels_ui;
 use super::field::DeviceEditorState;
 use super::form::Form;
 use super::modbus_master::{link_fields_ui, master_fields_ui, poll_interval_ui};
-use super::refusal::Refusal;
 use super::{DeviceEdit, DeviceTexts, checked_edit, keep};
 
-/// Counts the requests of one round of a device as the build would plan them
-/// (`program_image::modbus_master::plan`, which this crate does not depend on: the app gives
-/// it).
-pub type RoundRequests<'a> = &'a dyn Fn(&Project, &ModbusDevice) -> usize;
-
 /// Draws the settings and channels of the Modbus device at `index` of `project` and returns
-/// the edits of this frame's gesture; nothing when there is no such device. `round_requests`
-/// counts the requests of a round, shown once the device has an I/O task.
+/// the edits of this frame's gesture; nothing when there is no such device.
 pub fn modbus_device_editor_ui(
     ui: &mut Ui,
     project: &Project,
     index: usize,
     state: &mut DeviceEditorState,
     texts: &DeviceTexts,
-    round_requests: RoundRequests<'_>,
 ) -> Option<DeviceEdit> {
     let device = project.modbus_devices.get(index)?;
     state.follow(device);
+    state.links.remember(&device.link);
+    let links = state.links.clone();
     let node = device.name.as_str();
     let replace = |label: String, item: ModbusDevice| {
         // Deleting a channel brings no problem, but it renumbers the rows old problems name,
@@ -55,7 +48,7 @@ pub fn modbus_device_editor_ui(
     let milliseconds = texts.milliseconds.as_str();
     let mut form = Form::node(state, texts, device, node, &replace);
     form.grid_ui(ui, ("modbus device editor", index), |form, ui| {
-        link_fields_ui(form, ui, project, device, texts);
+        link_fields_ui(form, ui, project, device, texts, &links);
         form.field("unit", &texts.unit_id, 60.0).whole_ui(
             ui,
             device.unit_id,
@@ -74,7 +67,7 @@ pub fn modbus_device_editor_ui(
             .whole_ui(ui, device.timeout_ms, 0..=u32::MAX, |item, timeout| {
                 item.timeout_ms = timeout;
             });
-        master_fields_ui(form, ui, project, device, texts, round_requests);
+        master_fields_ui(form, ui, project, device, texts);
     });
     let mut out = form.finish();
     ui.add_space(8.0);
@@ -93,50 +86,4 @@ pub fn modbus_device_editor_ui(
         channels_ui(ui, project, state, texts, &device.bindings, master, &commit),
     );
     out
-}
-
-/// The link a device gets when the user switches it to `rtu` (or back to TCP): the first of the
-/// project's serial ports, or a TCP device at the Modbus port of this computer, since the model
-/// keeps only one link and the other one's settings are gone. RTU is refused in a project
-/// without serial ports, since there is no port to choose until one is added.
-pub(crate) fn switched_link(project: &Project, rtu: bool) -> Result<ModbusLink, Refusal> {
-    if rtu {
-        let port = project.serial_ports.first().ok_or(Refusal::NoSerialPorts)?;
-        Ok(ModbusLink::Rtu {
-            serial_port: port.name.clone(),
-        })
-    } else {
-        Ok(ModbusLink::Tcp {
-            host: "127.0.0.1".to_owned(),
-            port: 502,
-        })
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use project_model::SerialPort;
-
-    #[test]
-    fn a_device_switched_to_rtu_takes_the_first_serial_port_and_back_to_tcp_the_modbus_port() {
-        let mut project = Project::default();
-        assert_eq!(switched_link(&project, true), Err(Refusal::NoSerialPorts));
-        project
-            .serial_ports
-            .push(SerialPort::new("RS485", "/dev/ttyUSB0"));
-        assert_eq!(
-            switched_link(&project, true),
-            Ok(ModbusLink::Rtu {
-                serial_port: "RS485".into()
-            })
-        );
-        assert_eq!(
-            switched_link(&project, false),
-            Ok(ModbusLink::Tcp {
-                host: "127.0.0.1".into(),
-                port: 502
-            })
-        );
-    }
 }

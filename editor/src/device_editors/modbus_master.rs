@@ -3,24 +3,26 @@
 //! (I/O task, schedule, read gap, status variable), shown once a task is chosen as
 //! `docs/modbus-master.md` §2.1 says.
 
-use compiler::ide::{ChannelVariableError, variable_type};
+use compiler::ide::{ChannelVariableError, modbus_round_requests, variable_type};
 use egui::{RichText, Ui};
 use project_model::{ModbusDevice, ModbusLink, ModbusSchedule, Project, same_identifier};
 
 use super::DeviceTexts;
 use super::field::parse_whole;
 use super::form::Form;
-use super::modbus_device::{RoundRequests, switched_link};
+use super::link_memory::{LinkMemory, switched_link};
 use super::refusal::Refusal;
 use super::texts::fill;
 
-/// The link's kind, then a TCP device's host and port or an RTU device's serial port.
+/// The link's kind, then a TCP device's host and port or an RTU device's serial port; switching
+/// the kind brings back the link of that kind the device last had (`links`).
 pub(crate) fn link_fields_ui(
     form: &mut Form<'_, ModbusDevice>,
     ui: &mut Ui,
     project: &Project,
     device: &ModbusDevice,
     texts: &DeviceTexts,
+    links: &LinkMemory,
 ) {
     let kinds = [
         (texts.link_tcp.clone(), false),
@@ -29,7 +31,7 @@ pub(crate) fn link_fields_ui(
     let rtu = matches!(device.link, ModbusLink::Rtu { .. });
     form.field("link", &texts.link, 200.0)
         .checked_combo_ui(ui, rtu, &kinds, |item, rtu| {
-            item.link = switched_link(project, rtu)?;
+            item.link = switched_link(project, rtu, links)?;
             Ok(())
         });
     match &device.link {
@@ -117,7 +119,6 @@ pub(crate) fn master_fields_ui(
     project: &Project,
     device: &ModbusDevice,
     texts: &DeviceTexts,
-    round_requests: RoundRequests<'_>,
 ) {
     let choices = task_choices(project, device.task.as_deref());
     let options: Vec<(String, usize)> = choices
@@ -171,7 +172,9 @@ pub(crate) fn master_fields_ui(
             item.status = existing_variable(project, text)?;
             Ok(text.to_owned())
         });
-    let count = round_requests(project, device);
+    // Counted by the conversion and planner the build and the runtime use, so it is the count
+    // the runtime sends.
+    let count = modbus_round_requests(project, device);
     let template = if count == 1 {
         &texts.request_per_round
     } else {

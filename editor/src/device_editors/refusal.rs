@@ -4,7 +4,7 @@
 use std::fmt;
 use std::sync::Arc;
 
-use compiler::ide::{AddressError, ChannelVariableError};
+use compiler::ide::{AddressError, ChannelBindingError, ChannelVariableError};
 use project_model::DeviceProblem;
 use thiserror::Error;
 
@@ -21,6 +21,9 @@ pub enum Refusal {
     /// The variable cannot be bound to the channel.
     #[error(transparent)]
     ChannelVariable(#[from] ChannelVariableError),
+    /// The variable does not fit a channel of the runtime master: its data type and count.
+    #[error(transparent)]
+    ChannelBinding(#[from] ChannelBindingError),
     /// A coil or discrete input range that does not start at bit 0 of a byte.
     #[error(
         "a coil or discrete input range starts at bit 0 of a byte, such as %QX4.0, not {address}"

@@ -1,12 +1,10 @@
 //! The editor of a serial port (`docs/modbus-master.md` §2.3): its device file and line
 //! settings, and the Modbus devices on it. The port is renamed in the device tree, as every
 //! device node is (a rename closes its open tab there), and the new name is carried into the
-//! devices that name the port, in the same undo step ([`serial_port_rename_edits`]).
+//! devices that name the port, in the same undo step (`project_model::serial_port_rename_edits`).
 
 use egui::{RichText, Ui};
-use project_model::{
-    Edit, ListEdit, ModbusLink, Parity, Project, SerialPort, same_identifier, serial_port_problems,
-};
+use project_model::{Edit, ListEdit, Parity, Project, SerialPort, serial_port_problems};
 
 use super::field::DeviceEditorState;
 use super::form::Form;
@@ -111,65 +109,4 @@ pub fn serial_port_editor_ui(
         ui.end_row();
     });
     form.finish()
-}
-
-/// The edits that carry a serial port's new name from `old` to `new` into every Modbus device
-/// on the port; none when the name keeps its spelling.
-pub fn serial_port_rename_edits(project: &Project, old: &str, new: &str) -> Vec<Edit> {
-    if old == new {
-        return Vec::new();
-    }
-    project
-        .modbus_devices
-        .iter()
-        .enumerate()
-        .filter(|(_, device)| {
-            device
-                .serial_port()
-                .is_some_and(|port| same_identifier(port, old))
-        })
-        .map(|(index, device)| {
-            let mut item = device.clone();
-            item.link = ModbusLink::Rtu {
-                serial_port: new.to_owned(),
-            };
-            Edit::ModbusDevices(ListEdit::Replace { index, item })
-        })
-        .collect()
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use project_model::ModbusDevice;
-
-    fn project_with_port() -> Project {
-        let mut project = Project::default();
-        project
-            .serial_ports
-            .push(SerialPort::new("RS485", "/dev/ttyUSB0"));
-        let mut drive = ModbusDevice::tcp("Drive", "127.0.0.1", 502);
-        drive.link = ModbusLink::Rtu {
-            serial_port: "rs485".into(),
-        };
-        drive.task = Some("MainTask".into());
-        project
-            .modbus_devices
-            .push(ModbusDevice::tcp("Meter", "10.0.0.2", 502));
-        project.modbus_devices.push(drive);
-        project
-    }
-
-    #[test]
-    fn a_renamed_port_is_renamed_in_the_devices_on_it_only() {
-        let project = project_with_port();
-        let edits = serial_port_rename_edits(&project, "RS485", "Line1");
-        assert_eq!(edits.len(), 1);
-        let Edit::ModbusDevices(ListEdit::Replace { index, item }) = &edits[0] else {
-            panic!("{edits:?}");
-        };
-        assert_eq!(*index, 1);
-        assert_eq!(item.serial_port(), Some("Line1"));
-        assert!(serial_port_rename_edits(&project, "RS485", "RS485").is_empty());
-    }
 }

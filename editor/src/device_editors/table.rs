@@ -33,7 +33,8 @@ pub(crate) struct Table<'a, T> {
 }
 
 /// Draws `table` as a striped grid whose rows are drawn by `cells`, each followed by a delete
-/// button and, when `cells` returns one, a warning whose reason shows on hover.
+/// button and, when `cells` returns one, a warning whose reason shows on hover and is its
+/// accessible name.
 pub(crate) fn table_ui<T: Clone>(
     ui: &mut Ui,
     state: &mut DeviceEditorState,
@@ -61,12 +62,17 @@ pub(crate) fn table_ui<T: Clone>(
                 let row = index + 1;
                 let delete = ui.button(&texts.delete);
                 if let Some(reason) = warning {
-                    ui.label(
+                    let mark = ui.label(
                         RichText::new("!")
                             .strong()
                             .color(ui.visuals().warn_fg_color),
-                    )
-                    .on_hover_text(reason);
+                    );
+                    // The reason is the mark's accessible name too, so a screen reader says
+                    // it where a sighted user hovers.
+                    mark.widget_info(|| {
+                        WidgetInfo::labeled(egui::Role::Label, true, reason.clone())
+                    });
+                    mark.on_hover_text(reason);
                 }
                 let label = row_label(texts, &texts.delete, row);
                 delete.widget_info(|| WidgetInfo::labeled(egui::Role::Button, true, label.clone()));

@@ -181,6 +181,8 @@ pub struct DeviceTexts {
     pub rising_edge: String,
     /// Column: the BOOL whose rising edge triggers a channel.
     pub trigger_variable: String,
+    /// The hint beside the trigger variable while "Rising edge" waits for one.
+    pub trigger_variable_hint: String,
     /// Column: what a read channel's variable holds after a failed request.
     pub on_error: String,
     /// On error: the last value.
@@ -328,6 +330,7 @@ impl Default for DeviceTexts {
             cyclic: s("Cyclic"),
             rising_edge: s("Rising edge"),
             trigger_variable: s("Trigger variable"),
+            trigger_variable_hint: s("Name the BOOL variable whose rising edge sends the channel"),
             on_error: s("On error"),
             keep_last_value: s("Keep last value"),
             set_to_zero: s("Set to zero"),

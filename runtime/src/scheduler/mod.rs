@@ -61,9 +61,7 @@ use program_image::{ImageHash, ProgramImage};
 
 use crate::areas::LocatedAreas;
 use crate::engine::{AppliedChange, Engine, FaultRecord, LoadError, OnlineChangePlan, ResetKind};
-use crate::modbus::master::{
-    DeviceSnapshot, DeviceStatus, Master, MasterError, MasterHandle, MasterOptions,
-};
+use crate::modbus::master::{DeviceStatus, Master, MasterError, MasterHandle, MasterOptions};
 use crate::online::{Forces, Memory, Trace};
 use crate::retain::{RetainError, RetainRestore};
 
@@ -367,7 +365,7 @@ impl Scheduler {
 
     /// The loaded program's Modbus devices with their state and counters, in the image's
     /// order (`docs/modbus-master.md` §9.1); empty without a program or without devices.
-    pub fn modbus_devices(&self) -> Vec<DeviceSnapshot> {
+    pub fn modbus_devices(&self) -> Vec<online_protocol::ModbusDeviceReport> {
         self.modbus_devices
             .lock()
             .unwrap_or_else(PoisonError::into_inner)
@@ -377,6 +375,23 @@ impl Scheduler {
                     .lock()
                     .unwrap_or_else(PoisonError::into_inner)
                     .snapshot()
+            })
+            .collect()
+    }
+
+    /// How many connections each loaded Modbus device has tried to open (TCP; 0 on a serial
+    /// line), in the image's order. `MODBUS_DEVICES` does not carry the count: it is for the
+    /// runtime's own readers and the tests that check the back-off (§6.8).
+    pub fn modbus_connection_attempts(&self) -> Vec<u32> {
+        self.modbus_devices
+            .lock()
+            .unwrap_or_else(PoisonError::into_inner)
+            .iter()
+            .map(|device| {
+                device
+                    .lock()
+                    .unwrap_or_else(PoisonError::into_inner)
+                    .connection_attempts
             })
             .collect()
     }

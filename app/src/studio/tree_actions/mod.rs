@@ -199,9 +199,16 @@ fn plan_rename(
             .renamed(project, index, name)
             .ok_or_else(|| missing(project, node))?;
         let mut edits = vec![edit];
-        // The devices on a renamed serial port follow it, in the same undo step.
-        if kind == ListKind::SerialPorts {
-            edits.extend(editor::serial_port_rename_edits(project, old, name));
+        // The devices on a renamed serial port follow it, and the devices, axes and traces of
+        // a renamed task follow the task, in the same undo step.
+        match kind {
+            ListKind::SerialPorts => {
+                edits.extend(project_model::serial_port_rename_edits(project, old, name));
+            }
+            ListKind::Tasks => {
+                edits.extend(project_model::task_rename_edits(project, old, name));
+            }
+            _ => {}
         }
         return Ok(Some(Plan {
             label,

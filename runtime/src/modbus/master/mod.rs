@@ -35,7 +35,7 @@ use program_image::{ProgramImage, TaskKind};
 pub use copier::{DeviceCopier, ProgramMemory};
 pub use exchange::DeviceExchange;
 pub use resolve::{DevicePlaces, ResolveError, resolve_section};
-pub use status::{DeviceSnapshot, DeviceState, DeviceStatus, error_codes};
+pub use status::{DeviceState, DeviceStatus, error_codes};
 
 use device_round::DeviceRound;
 use due::Due;
@@ -324,7 +324,7 @@ impl MasterHandle {
     }
 
     /// Every device's state and counters, in the image's order (for `MODBUS_DEVICES`).
-    pub fn snapshot(&self) -> Vec<DeviceSnapshot> {
+    pub fn snapshot(&self) -> Vec<online_protocol::ModbusDeviceReport> {
         self.statuses
             .iter()
             .map(|status| lock(status).snapshot())

@@ -4,6 +4,7 @@
 
 use std::time::{Duration, Instant};
 
+use online_protocol::ModbusDeviceReport;
 use program_image::Elementary;
 
 /// The name of the status structure, found by name in the image's type table.
@@ -50,22 +51,9 @@ pub mod error_codes {
     pub const NOT_YET_POLLED: u8 = 0xC1;
 }
 
-/// A device's state as `MODBUS_DEVICES` reports it (§9.1).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum DeviceState {
-    /// No round has ended yet.
-    Starting = 0,
-    /// The last round had no failure.
-    Communicating = 1,
-    /// The device answers, with exceptions or invalid answers.
-    AnsweringWithErrors = 2,
-    /// Timeouts or no connection; reconnecting.
-    NotAnswering = 3,
-    /// The serial port cannot be opened or failed.
-    SerialPortError = 4,
-    /// The master is off (`--modbus-master off`).
-    Off = 5,
-}
+/// A device's state as `MODBUS_DEVICES` reports it (§9.1): the protocol's enumeration, so the
+/// master's states and the reported ones cannot drift apart.
+pub use online_protocol::ModbusDeviceState as DeviceState;
 
 /// How one request ended, as far as the counters care.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -272,9 +260,10 @@ impl DeviceStatus {
         bytes
     }
 
-    /// A copy for readers outside the master (the online service).
-    pub fn snapshot(&self) -> DeviceSnapshot {
-        DeviceSnapshot {
+    /// A copy for readers outside the master, as the online service `MODBUS_DEVICES` reports
+    /// it: the same state and counters the program's status variable holds.
+    pub fn snapshot(&self) -> ModbusDeviceReport {
+        ModbusDeviceReport {
             name: self.name.clone(),
             state: self.state,
             last_error: self.last_error,
@@ -284,54 +273,21 @@ impl DeviceStatus {
             errors: self.errors,
             rounds: self.rounds,
             overruns: self.overruns,
-            connection_attempts: self.connection_attempts,
             last_response_us: u32::try_from(self.last_response.as_micros()).unwrap_or(u32::MAX),
             since_last_error_ms: self
                 .last_error_at
-                .map_or(u32::MAX, |at| since_last_error_ms(at.elapsed())),
+                .map(|at| since_last_error_ms(at.elapsed())),
             detail: self.detail.clone(),
         }
     }
 }
 
 /// `since_last_error_ms` of a failure `elapsed` ago: whole milliseconds, held at
-/// `u32::MAX - 1` (49 days), since `u32::MAX` means no failure yet.
+/// `u32::MAX - 1` (49 days), since `u32::MAX` on the wire means no failure yet.
 pub fn since_last_error_ms(elapsed: Duration) -> u32 {
     u32::try_from(elapsed.as_millis())
         .unwrap_or(u32::MAX)
         .min(u32::MAX - 1)
-}
-
-/// One device as `MODBUS_DEVICES` (§9.1) lists it, and its connection attempts, which the
-/// service does not carry (for the runtime's own readers and tests).
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct DeviceSnapshot {
-    /// The device's name.
-    pub name: String,
-    /// Its state.
-    pub state: DeviceState,
-    /// The last failure's `MB_ErrorCodes` value.
-    pub last_error: u8,
-    /// The last exception code, 0 if none.
-    pub last_exception: u8,
-    /// Requests failed since the last that succeeded.
-    pub consecutive_errors: u32,
-    /// Requests sent.
-    pub requests: u32,
-    /// Requests failed or not sent.
-    pub errors: u32,
-    /// Rounds ended.
-    pub rounds: u32,
-    /// Round starts dropped.
-    pub overruns: u32,
-    /// Connection attempts made (TCP; 0 on a serial line); not reported by the service.
-    pub connection_attempts: u32,
-    /// The last answered request's duration in microseconds.
-    pub last_response_us: u32,
-    /// Milliseconds since the last failure; `u32::MAX` if none yet.
-    pub since_last_error_ms: u32,
-    /// The last failure in words.
-    pub detail: String,
 }
 
 #[cfg(test)]

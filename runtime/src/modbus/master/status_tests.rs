@@ -6,6 +6,7 @@ use super::*;
 fn counters_follow_failures_and_the_state_line_is_written_only_on_a_change() {
     let mut status = DeviceStatus::new("BeltDrive", false);
     assert_eq!(status.encode()[2], error_codes::NOT_YET_POLLED);
+    assert_eq!(status.snapshot().since_last_error_ms, None);
     status.request(Outcome::Success, Duration::from_micros(300), "");
     assert_eq!(
         status.end_round(0).as_deref(),
@@ -45,7 +46,14 @@ fn counters_follow_failures_and_the_state_line_is_written_only_on_a_change() {
         u32::from_le_bytes([bytes[20], bytes[21], bytes[22], bytes[23]]),
         3
     );
-    assert_eq!(status.snapshot().state, DeviceState::NotAnswering);
+    let report = status.snapshot();
+    assert_eq!(report.state, DeviceState::NotAnswering);
+    assert_eq!(
+        (report.last_error, report.consecutive_errors, report.errors),
+        (error_codes::RESPONSE_TIMEOUT, 3, 3)
+    );
+    assert!(report.since_last_error_ms.is_some());
+    assert_eq!(report.detail, "no answer from 127.0.0.1:5502 within 100 ms");
     // An exception is an answer: connected, with an error, and the code kept afterwards.
     status.request(Outcome::Exception(2), Duration::ZERO, "exception 2");
     assert_eq!(status.state, DeviceState::NotAnswering);

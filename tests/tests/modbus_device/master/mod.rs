@@ -15,12 +15,12 @@ use std::net::SocketAddr;
 use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
+use online_protocol::ModbusDeviceReport;
 use program_image::modbus_master::{
     ChannelDef, DeviceDef, Direction, Link, MasterSection, OnError, Schedule, Trigger, WordOrder,
 };
 use program_image::{Elementary, ModbusTable, ProgramImage};
 use runtime::areas::LocatedAreas;
-use runtime::modbus::master::DeviceSnapshot;
 use runtime::modbus::{MapSlot, ModbusMap, ServerOptions, serve};
 use runtime::scheduler::Scheduler;
 
@@ -236,6 +236,6 @@ fn wait_until(what: &str, mut done: impl FnMut() -> bool) {
 }
 
 /// The first device's snapshot.
-fn first(devices: &[DeviceSnapshot]) -> DeviceSnapshot {
+fn first(devices: &[ModbusDeviceReport]) -> ModbusDeviceReport {
     devices.first().cloned().expect("the program has a device")
 }
