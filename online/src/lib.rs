@@ -35,3 +35,6 @@ pub use online_protocol::{
 // The string and enumeration type tags of a resolved variable, so callers tell strings from elementary values
 // without writing the protocol's numbers by hand or depending on the protocol crate.
 pub use online_protocol::{TYPE_ENUM, TYPE_STRING, TYPE_WSTRING};
+// A device's name as `MODBUS_DEVICES` carries it (cut at a character boundary to its limit), so
+// the studio matches a report to its device exactly as the runtime cut the name.
+pub use online_protocol::{MAX_MODBUS_DEVICE_NAME_BYTES, cut};

@@ -165,8 +165,15 @@ pub enum Event {
 /// What a target said to [`Command::ModbusDevices`].
 #[derive(Clone, Debug, PartialEq)]
 pub enum ModbusDevicesAnswer {
-    /// Every device its master polls, in the image's order.
-    Reports(Vec<ModbusDeviceReport>),
+    /// Every device its master polls, in the image's order, with the target's state asked right
+    /// after them (`IDENTIFY`): whether the program runs decides whether the devices' values
+    /// reach it, and a start or stop from elsewhere is seen no later than the next question.
+    Reports {
+        /// The devices' reports, in the image's order.
+        reports: Vec<ModbusDeviceReport>,
+        /// The target's state when they were read.
+        state: TargetState,
+    },
     /// The target does not know the service (an older runtime).
     NotReported,
     /// The target refused the question: its reason in its own words, or the failure's.
@@ -228,6 +235,9 @@ async fn run(
                         command = commands.recv() => match command {
                             None | Some(Command::Close) => return,
                             Some(Command::Watch(places)) => watch = places,
+                            // Asked every second while logged in, and again once connected:
+                            // its failure is no news for the user.
+                            Some(Command::ModbusDevices) => {}
                             Some(_) => {
                                 let _ = events.send(Event::Failed(format!("{error}; not connected"))).await;
                             }
@@ -411,8 +421,15 @@ async fn run(
                             Err(error) => Err(error),
                         },
                         Command::ModbusDevices => {
-                            let answer = match client.modbus_devices().await {
-                                Ok(reports) => ModbusDevicesAnswer::Reports(reports),
+                            let asked = match client.modbus_devices().await {
+                                Ok(reports) => client
+                                    .identify()
+                                    .await
+                                    .map(|identity| (reports, identity.state)),
+                                Err(error) => Err(error),
+                            };
+                            let answer = match asked {
+                                Ok((reports, state)) => ModbusDevicesAnswer::Reports { reports, state },
                                 Err(OnlineError::ModbusDevicesNotReported) => {
                                     ModbusDevicesAnswer::NotReported
                                 }

@@ -1,7 +1,7 @@
 //! The device tree panel: controller, tasks, application, I/O, Modbus devices and axes, with
 //! context menus, drag and drop and dirty markers for editing it.
 
-use std::collections::HashSet;
+use std::collections::{HashMap, HashSet};
 
 use egui::collapsing_header::CollapsingState;
 use egui::{Color32, Key, Modifiers, RichText, Ui};
@@ -10,7 +10,6 @@ use project_model::{Folder, IoDirection, Node, Object, Parity, Project, SerialPo
 use super::command::{Command, Commands};
 use super::i18n::{Language, Text};
 use super::modbus_online::{DeviceLight, DeviceOnline, device_online};
-use super::online::Online;
 use super::reveal::Reveal;
 use super::theme::{StudioColors, colors};
 use super::tree_actions::{
@@ -64,6 +63,15 @@ pub(crate) fn devices_pane_ui(
         .dirty
         .get(project, session.history.revision(), &session.saved);
     let dialog_open = state.dialog.is_some();
+    // What each runtime device shows online, decided once here so the tree only draws it.
+    let device_states: HashMap<String, DeviceOnline> = project
+        .modbus_devices
+        .iter()
+        .filter_map(|device| {
+            let shown = device_online(view.online, device, language)?;
+            Some((device.name.clone(), shown))
+        })
+        .collect();
     let mut response = device_tree_ui(
         ui,
         TreeContext {
@@ -72,7 +80,7 @@ pub(crate) fn devices_pane_ui(
             language,
             dirty,
             body_language: state.body_language,
-            online: view.online,
+            device_states: &device_states,
         },
         !dialog_open,
     );
@@ -143,8 +151,9 @@ pub struct TreeContext<'a> {
     pub dirty: &'a HashSet<TreeNode>,
     /// The implementation language the add dialogs propose.
     pub body_language: BodyLanguage,
-    /// The online state, whose runtime Modbus devices' reports the device nodes show.
-    pub online: &'a Online,
+    /// What each runtime Modbus device shows while logged in, by the device's name; a device
+    /// missing from it shows nothing online.
+    pub device_states: &'a HashMap<String, DeviceOnline>,
 }
 
 /// Draws the device tree and reports what the user did; it never changes the project. `keys`
@@ -156,7 +165,7 @@ pub fn device_tree_ui(ui: &mut Ui, context: TreeContext<'_>, keys: bool) -> Tree
         language,
         dirty,
         body_language,
-        online,
+        device_states,
     } = context;
     let mut tree = TreeUi {
         project,
@@ -164,7 +173,7 @@ pub fn device_tree_ui(ui: &mut Ui, context: TreeContext<'_>, keys: bool) -> Tree
         language,
         dirty,
         body_language,
-        online,
+        device_states,
         row_focused: false,
         response: TreeResponse::default(),
     };
@@ -222,8 +231,8 @@ struct TreeUi<'a> {
     dirty: &'a HashSet<TreeNode>,
     /// The implementation language the add dialogs propose.
     body_language: BodyLanguage,
-    /// The online state, for the runtime Modbus devices' icons.
-    online: &'a Online,
+    /// What each runtime Modbus device shows online, by name, for their icons.
+    device_states: &'a HashMap<String, DeviceOnline>,
     /// Whether a row had the keyboard focus this frame.
     row_focused: bool,
     response: TreeResponse,
@@ -542,7 +551,8 @@ impl TreeUi<'_> {
             for device in &project.modbus_devices {
                 let detail = format!("{} #{}", device.link, device.unit_id);
                 let node = TreeNode::ModbusDevice(device.name.clone());
-                let Some(shown) = device_online(tree.online, device, language) else {
+                let device_states = tree.device_states;
+                let Some(shown) = device_states.get(&device.name) else {
                     tree.leaf(ui, node, "MB", &device.name, &detail);
                     continue;
                 };
@@ -556,9 +566,9 @@ impl TreeUi<'_> {
                     ui.add_space(indent);
                     let row = tree.row(ui, node, "MB", &device.name, &detail);
                     let center = egui::pos2(left + indent / 2.0, row.rect.center().y);
-                    let icon = device_icon_ui(ui, center, &device.name, &shown);
+                    let icon = device_icon_ui(ui, center, &device.name, shown);
                     for response in [row, icon] {
-                        response.on_hover_ui(|ui| device_tooltip_ui(ui, &device.name, &shown));
+                        response.on_hover_ui(|ui| device_tooltip_ui(ui, &device.name, shown));
                     }
                 });
             }

@@ -3,8 +3,8 @@
 //! the master's counters, decided here from the runtime's report so the device tree, the
 //! device editor and the status line only draw them.
 
-use online::{ModbusDeviceReport, ModbusDeviceState, TargetState};
-use project_model::ModbusDevice;
+use online::{ModbusDeviceReport, ModbusDeviceState, TargetState, TaskInfo};
+use project_model::{ModbusDevice, same_identifier};
 
 use super::i18n::{Language, ModbusOnlineText};
 use super::online::Online;
@@ -19,8 +19,9 @@ pub(crate) enum DeviceLight {
     Communicating,
     /// The device answers with errors, does not answer, or its serial port failed.
     Failing,
-    /// Nothing reaches the program: the runtime's master is off, or the program is not running
-    /// (the master may still poll the device, and its counters say so).
+    /// Nothing reaches the program: the runtime's master is off, or the program or the
+    /// device's I/O task is not running (the master may still poll the device, and its
+    /// counters say so).
     Off,
     /// No round has ended yet, or the runtime has not reported the device yet.
     Waiting,
@@ -60,23 +61,35 @@ pub(crate) fn device_online(
     if !device.is_runtime_device() || !online.is_online() || online.runtime_device_count() == 0 {
         return None;
     }
+    let io_task = device.task.as_deref().unwrap_or_default();
     Some(describe(
         online.modbus_device_report(&device.name),
         online.modbus_reports_answered(),
         online.modbus_reports_problem(),
-        online.target_state(),
+        io_task_runs(online.target_state(), online.tasks(), io_task),
         language,
     ))
 }
 
+/// Whether the I/O task named `io_task` runs, so that values are exchanged with its devices:
+/// the target's program runs (`state`, refreshed with each `MODBUS_DEVICES` answer) and the
+/// last task statistics do not say a fault stopped that task.
+pub(crate) fn io_task_runs(state: Option<TargetState>, tasks: &[TaskInfo], io_task: &str) -> bool {
+    let program_runs = matches!(state, Some(TargetState::Running | TargetState::Faulted));
+    let task_faulted = tasks
+        .iter()
+        .any(|task| task.faulted && same_identifier(&task.name, io_task));
+    program_runs && !task_faulted
+}
+
 /// A device's online state from its last `report` (`None`: the runtime has not reported it;
-/// `answered` when it has reported other devices), the last question's `problem` and the
-/// target's `program` state.
+/// `answered` when it has reported other devices), the last question's `problem` and whether
+/// its I/O task runs (`task_runs`).
 pub(crate) fn describe(
     report: Option<&ModbusDeviceReport>,
     answered: bool,
     problem: Option<&ModbusReportsProblem>,
-    program: Option<TargetState>,
+    task_runs: bool,
     language: Language,
 ) -> DeviceOnline {
     let word = |text: ModbusOnlineText| text.get(language).to_owned();
@@ -97,11 +110,13 @@ pub(crate) fn describe(
             rows: Vec::new(),
         };
     };
-    let running = matches!(program, Some(TargetState::Running | TargetState::Faulted));
+    // The runtime reports the master's view only: it polls on while the program is stopped
+    // (state 5 means the master itself is off), so whether values reach the program is decided
+    // here.
     let (light, state) = match report.state {
         ModbusDeviceState::Off => (DeviceLight::Off, ModbusOnlineText::MasterOff),
-        // A stopped program copies nothing in or out, whatever the master last did.
-        _ if !running => (DeviceLight::Off, ModbusOnlineText::ProgramNotRunning),
+        // A stopped program or I/O task copies nothing in or out, whatever the master last did.
+        _ if !task_runs => (DeviceLight::Off, ModbusOnlineText::ProgramNotRunning),
         ModbusDeviceState::Starting => (DeviceLight::Waiting, ModbusOnlineText::NotYetConnected),
         ModbusDeviceState::Communicating => {
             (DeviceLight::Communicating, ModbusOnlineText::Communicating)
@@ -130,12 +145,18 @@ pub(crate) fn counter_rows(
     let mut last_error = error_in_words(report.last_error, language);
     if !report.detail.is_empty() {
         // The runtime's own words name what failed ("connection refused by 127.0.0.1:5502").
-        last_error = format!("{last_error}: {}", report.detail);
+        last_error = ModbusOnlineText::ErrorDetail.fill(
+            language,
+            &[("error", &last_error), ("detail", &report.detail)],
+        );
     }
     if let (Some(age_ms), true) = (report.since_last_error_ms, report.last_error != 0) {
         last_error = ModbusOnlineText::LastErrorAgo.fill(
             language,
-            &[("error", &last_error), ("age", &duration_words(age_ms))],
+            &[
+                ("error", &last_error),
+                ("age", &duration_words(age_ms, language)),
+            ],
         );
     }
     let last_exception = match report.last_exception {
@@ -161,7 +182,7 @@ pub(crate) fn counter_rows(
         ),
         (
             word(ModbusOnlineText::LastResponse),
-            response_time_words(report.last_response_us),
+            response_time_words(report.last_response_us, language),
         ),
     ]
 }
@@ -170,6 +191,17 @@ pub(crate) fn counter_rows(
 /// ("No answer within the timeout (RESPONSE_TIMEOUT)") so it matches what the program's
 /// `eLastError` shows; a value the library does not name shows its number.
 pub(crate) fn error_in_words(code: u8, language: Language) -> String {
+    match error_words(code) {
+        Some(words) => format!("{} ({})", words.get(language), error_code_name(code)),
+        None => {
+            let number = format!("16#{code:02X}");
+            ModbusOnlineText::ErrorCodeUnknown.fill(language, &[("code", &number)])
+        }
+    }
+}
+
+/// The words of an `MB_ErrorCodes` value the library names; `None` for any other value.
+fn error_words(code: u8) -> Option<ModbusOnlineText> {
     let words = match code {
         0x00 => ModbusOnlineText::ResponseSuccess,
         0x01 => ModbusOnlineText::IllegalFunction,
@@ -192,12 +224,9 @@ pub(crate) fn error_in_words(code: u8, language: Language) -> String {
         0xA8 => ModbusOnlineText::ResponseInvalidHeader,
         0xC0 => ModbusOnlineText::SerialPortFailed,
         0xC1 => ModbusOnlineText::NotYetPolled,
-        _ => {
-            let number = format!("16#{code:02X}");
-            return ModbusOnlineText::ErrorCodeUnknown.fill(language, &[("code", &number)]);
-        }
+        _ => return None,
     };
-    format!("{} ({})", words.get(language), error_code_name(code))
+    Some(words)
 }
 
 /// The status line's words while logged in to the simulator whose master polls `count`
@@ -211,22 +240,33 @@ pub(crate) fn polling_status(count: usize, language: Language) -> Option<String>
     Some(text.fill(language, &[("count", &count.to_string())]))
 }
 
-/// A response time as engineers read it: `850 µs`, `12.3 ms`.
-fn response_time_words(time_us: u32) -> String {
-    if time_us < 1000 {
-        format!("{time_us} µs")
-    } else {
-        format!("{:.1} ms", f64::from(time_us) / 1000.0)
+/// A response time as engineers read it: `850 µs`, `12.3 ms`; "None yet" for 0, which the
+/// runtime keeps until the device's first answer (an answer takes at least a microsecond).
+fn response_time_words(time_us: u32, language: Language) -> String {
+    match time_us {
+        0 => ModbusOnlineText::NoResponseYet.get(language).to_owned(),
+        // Units of the metric system read the same in both languages.
+        1..1000 => format!("{time_us} µs"),
+        _ => format!("{:.1} ms", f64::from(time_us) / 1000.0),
     }
 }
 
-/// A time since an event: `350 ms`, `4.2 s`, `12 min`.
-fn duration_words(time_ms: u32) -> String {
-    match time_ms {
-        0..1000 => format!("{time_ms} ms"),
-        1000..120_000 => format!("{:.1} s", f64::from(time_ms) / 1000.0),
-        _ => format!("{} min", time_ms / 60_000),
-    }
+/// A time since an event in the unit that fits, in the words of `language`: `350 ms`,
+/// `4.2 s`, `12 min`, `2 h` ("4.2 秒", "12 分钟", "2 小时").
+fn duration_words(time_ms: u32, language: Language) -> String {
+    const MINUTE_MS: u32 = 60_000;
+    const HOUR_MS: u32 = 60 * MINUTE_MS;
+    // Each unit is used up to twice the next one, so a value never reads as 1 of a coarse unit.
+    let (unit, value) = match time_ms {
+        0..1000 => (ModbusOnlineText::Milliseconds, time_ms.to_string()),
+        1000..120_000 => (
+            ModbusOnlineText::Seconds,
+            format!("{:.1}", f64::from(time_ms) / 1000.0),
+        ),
+        120_000..7_200_000 => (ModbusOnlineText::Minutes, (time_ms / MINUTE_MS).to_string()),
+        _ => (ModbusOnlineText::Hours, (time_ms / HOUR_MS).to_string()),
+    };
+    unit.fill(language, &[("value", &value)])
 }
 
 #[cfg(test)]
@@ -263,7 +303,8 @@ mod tests {
         }
     }
 
-    const RUNNING: Option<TargetState> = Some(TargetState::Running);
+    /// The device's I/O task runs.
+    const RUNNING: bool = true;
 
     #[test]
     fn each_report_state_gets_its_light_while_the_program_runs() {
@@ -292,41 +333,66 @@ mod tests {
     }
 
     #[test]
-    fn a_stopped_program_shows_its_devices_off_and_a_faulted_one_does_not() {
+    fn a_stopped_io_task_shows_its_devices_off_whatever_the_master_reports() {
         let report = communicating();
-        let stopped = describe(
-            Some(&report),
-            true,
-            None,
-            Some(TargetState::Stopped),
-            Language::English,
-        );
+        let stopped = describe(Some(&report), true, None, false, Language::English);
         assert_eq!(stopped.light, DeviceLight::Off);
         assert_eq!(
             stopped.state,
-            "Off: the program is not running, so no values are copied"
+            "Stopped: the program is not running, so no I/O data is exchanged"
         );
-        let faulted = describe(
-            Some(&report),
-            true,
-            None,
-            Some(TargetState::Faulted),
-            Language::English,
+        assert_eq!(
+            describe(
+                Some(&report),
+                true,
+                None,
+                false,
+                Language::SimplifiedChinese
+            )
+            .state,
+            "停止：程序未运行，不交换 I/O 数据"
         );
-        assert_eq!(faulted.light, DeviceLight::Communicating);
         // The master being off says so, whatever the program does.
         let off = ModbusDeviceReport {
             state: ModbusDeviceState::Off,
             ..report
         };
-        let off = describe(
-            Some(&off),
-            true,
+        let off = describe(Some(&off), true, None, false, Language::English);
+        assert_eq!(off.state, "Disabled: the runtime's Modbus master is off");
+    }
+
+    fn task(name: &str, faulted: bool) -> TaskInfo {
+        TaskInfo {
+            name: name.to_owned(),
+            cycles: 10,
+            last_ns: 0,
+            min_ns: 0,
+            max_ns: 0,
+            average_ns: 0,
+            jitter_max_ns: 0,
+            faulted,
+        }
+    }
+
+    #[test]
+    fn an_io_task_runs_while_the_program_runs_and_no_fault_stopped_it() {
+        let tasks = [task("MainTask", false), task("FastTask", true)];
+        let running = Some(TargetState::Running);
+        assert!(io_task_runs(running, &tasks, "MainTask"));
+        assert!(io_task_runs(Some(TargetState::Faulted), &tasks, "maintask"));
+        // The device's own task was stopped by a fault.
+        assert!(!io_task_runs(
+            Some(TargetState::Faulted),
+            &tasks,
+            "FastTask"
+        ));
+        for state in [
             None,
             Some(TargetState::Stopped),
-            Language::English,
-        );
-        assert_eq!(off.state, "Off: the runtime's Modbus master is off");
+            Some(TargetState::NoProgram),
+        ] {
+            assert!(!io_task_runs(state, &tasks, "MainTask"), "{state:?}");
+        }
     }
 
     #[test]
@@ -395,11 +461,12 @@ mod tests {
         );
         assert_eq!(shown.state, "无应答");
         assert_eq!(shown.rows[0].0, "最近错误");
-        assert!(
-            shown.rows[0].1.starts_with("响应超时 (RESPONSE_TIMEOUT)"),
-            "{}",
-            shown.rows[0].1
+        // The detail and the age joined with the language's own punctuation and units.
+        assert_eq!(
+            shown.rows[0].1,
+            "响应超时 (RESPONSE_TIMEOUT)：no answer within 100 ms，1.5 秒前"
         );
+        assert_eq!(shown.rows[6].0, "轮询超限次数");
         assert_eq!(
             error_in_words(0xA5, Language::SimplifiedChinese),
             "与设备的 TCP 连接失败 (TCP_COMMUNICATION_ERROR)"
@@ -413,9 +480,11 @@ mod tests {
             0xA4, 0xA5, 0xA6, 0xA7, 0xA8, 0xC0, 0xC1,
         ];
         for language in [Language::English, Language::SimplifiedChinese] {
-            let words: std::collections::HashSet<String> = named
+            // The translated words alone, without the library's distinct name after them.
+            let words: std::collections::HashSet<&str> = named
                 .iter()
-                .map(|&code| error_in_words(code, language))
+                .filter_map(|&code| error_words(code))
+                .map(|words| words.get(language))
                 .collect();
             assert_eq!(words.len(), named.len(), "{language:?}");
             for code in named {
@@ -453,7 +522,10 @@ mod tests {
             RUNNING,
             Language::English,
         );
-        assert_eq!(old.state, "This runtime does not report its Modbus devices");
+        assert_eq!(
+            old.state,
+            "This runtime version does not report the Modbus devices' states"
+        );
         let refused = describe(
             None,
             false,
@@ -461,7 +533,7 @@ mod tests {
             RUNNING,
             Language::SimplifiedChinese,
         );
-        assert_eq!(refused.state, "运行时未报告其 Modbus 设备：busy");
+        assert_eq!(refused.state, "运行时拒绝报告 Modbus 设备状态：busy");
     }
 
     #[test]
@@ -482,11 +554,41 @@ mod tests {
     }
 
     #[test]
-    fn times_read_in_the_unit_that_fits() {
-        assert_eq!(response_time_words(999), "999 µs");
-        assert_eq!(response_time_words(12_345), "12.3 ms");
-        assert_eq!(duration_words(350), "350 ms");
-        assert_eq!(duration_words(4_200), "4.2 s");
-        assert_eq!(duration_words(720_000), "12 min");
+    fn times_read_in_the_unit_that_fits_in_each_language() {
+        let english = Language::English;
+        let chinese = Language::SimplifiedChinese;
+        assert_eq!(response_time_words(999, english), "999 µs");
+        assert_eq!(response_time_words(12_345, english), "12.3 ms");
+        assert_eq!(duration_words(350, english), "350 ms");
+        assert_eq!(duration_words(4_200, english), "4.2 s");
+        assert_eq!(duration_words(720_000, english), "12 min");
+        assert_eq!(duration_words(5_400_000, english), "90 min");
+        assert_eq!(duration_words(43_200_000, english), "12 h");
+        assert_eq!(duration_words(350, chinese), "350 毫秒");
+        assert_eq!(duration_words(1_500, chinese), "1.5 秒");
+        assert_eq!(duration_words(720_000, chinese), "12 分钟");
+        assert_eq!(duration_words(7_200_000, chinese), "2 小时");
+    }
+
+    #[test]
+    fn a_device_never_answered_has_no_response_time_yet() {
+        let never = ModbusDeviceReport {
+            last_response_us: 0,
+            ..timed_out()
+        };
+        let shown = describe(Some(&never), true, None, RUNNING, Language::English);
+        assert_eq!(
+            shown.rows[7],
+            ("Last response time".into(), "None yet".into())
+        );
+        let shown = describe(
+            Some(&never),
+            true,
+            None,
+            RUNNING,
+            Language::SimplifiedChinese,
+        );
+        assert_eq!(shown.rows[7].1, "尚无应答");
+        assert_eq!(response_time_words(1, Language::English), "1 µs");
     }
 }

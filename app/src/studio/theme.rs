@@ -64,8 +64,8 @@ pub(crate) const TRACE_SERIES: [Color32; 10] = [
     Color32::from_rgb(0x17, 0xbe, 0xcf),
 ];
 
-/// The colours of the dark theme. The light theme uses the same today: they were chosen to
-/// read on both; a colour that needs to differ changes in [`LIGHT`] only.
+/// The colours of the dark theme. The light theme uses most of them: they were chosen to read
+/// on both; a colour that needs to differ changes in [`LIGHT`] only.
 const DARK: StudioColors = StudioColors {
     target_running: Color32::from_rgb(60, 170, 80),
     target_stopped: Color32::from_rgb(200, 160, 40),
@@ -91,8 +91,15 @@ const DARK: StudioColors = StudioColors {
     device_waiting: Color32::from_rgb(200, 160, 40),
 };
 
-/// The colours of the light theme.
-const LIGHT: StudioColors = DARK;
+/// The colours of the light theme: the dark theme's, but for the Modbus device lights, which
+/// are darker so that a small icon keeps its contrast on a light panel.
+const LIGHT: StudioColors = StudioColors {
+    device_communicating: Color32::from_rgb(25, 125, 45),
+    device_failing: Color32::from_rgb(190, 40, 30),
+    device_off: Color32::from_rgb(105, 105, 105),
+    device_waiting: Color32::from_rgb(150, 105, 0),
+    ..DARK
+};
 
 /// The studio's colours for the theme `ui` is drawn in.
 pub(crate) fn colors(ui: &egui::Ui) -> &'static StudioColors {
@@ -215,5 +222,53 @@ pub(crate) fn cam_palette(_dark_mode: bool) -> CamPalette {
         tappet_on: Color32::from_rgb(0x30, 0xb0, 0x50),
         tappet_off: Color32::from_rgb(0xd0, 0x40, 0x40),
         tappet_invert: Color32::from_rgb(0xe0, 0xb0, 0x20),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The relative luminance of a colour (WCAG 2).
+    fn luminance(color: Color32) -> f64 {
+        let channel = |value: u8| {
+            let value = f64::from(value) / 255.0;
+            if value <= 0.040_45 {
+                value / 12.92
+            } else {
+                ((value + 0.055) / 1.055).powf(2.4)
+            }
+        };
+        0.2126 * channel(color.r()) + 0.7152 * channel(color.g()) + 0.0722 * channel(color.b())
+    }
+
+    /// The contrast ratio of two colours, 1 to 21.
+    fn contrast(a: Color32, b: Color32) -> f64 {
+        let (a, b) = (luminance(a), luminance(b));
+        (a.max(b) + 0.05) / (a.min(b) + 0.05)
+    }
+
+    #[test]
+    fn the_device_lights_stand_out_from_the_panel_in_both_themes() {
+        for (colors, visuals) in [
+            (&DARK, egui::Visuals::dark()),
+            (&LIGHT, egui::Visuals::light()),
+        ] {
+            let lights = [
+                colors.device_communicating,
+                colors.device_failing,
+                colors.device_off,
+                colors.device_waiting,
+            ];
+            for light in lights {
+                // 3:1 is what WCAG asks of graphics that carry meaning.
+                let ratio = contrast(light, visuals.panel_fill);
+                assert!(
+                    ratio >= 3.0,
+                    "{light:?} on {:?}: {ratio:.2}",
+                    visuals.panel_fill
+                );
+            }
+        }
     }
 }

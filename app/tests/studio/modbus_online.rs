@@ -97,7 +97,9 @@ fn runtime_devices_show_their_state_in_the_tree_the_editor_and_the_status_line()
     harness.step();
     assert!(
         harness
-            .query_by_label("BeltDrive: Off: the program is not running, so no values are copied")
+            .query_by_label(
+                "BeltDrive: Stopped: the program is not running, so no I/O data is exchanged"
+            )
             .is_some()
     );
     assert!(
@@ -132,6 +134,9 @@ fn runtime_devices_show_their_state_in_the_tree_the_editor_and_the_status_line()
     );
     assert!(harness.query_by_label("Consecutive errors").is_some());
     assert!(harness.query_by_label("Last response time").is_some());
+    // The meter never answered: no response time yet, rather than 0 µs.
+    assert!(harness.query_by_label("None yet").is_some());
+    assert!(harness.query_by_label("0 µs").is_none());
 
     // The drive's editor has the read-only Online part with its state and counters.
     harness

@@ -1,6 +1,7 @@
 //! The session's `MODBUS_DEVICES` question against a small fake runtime on loopback: the
 //! reports, an older runtime's unknown service and a refusal each come back as an answer, and
-//! none of them ends the connection, since the studio asks every second.
+//! none of them ends the connection, since the studio asks every second; a question that
+//! waits for a connection is dropped rather than failed.
 
 #![allow(clippy::unwrap_used, clippy::expect_used)] // A panic is a failed test.
 
@@ -69,10 +70,16 @@ async fn reports_an_unknown_service_and_a_refusal_are_answers_and_the_session_st
     });
     assert!(matches!(next(&mut events).await, Event::Connected(_)));
     let expected = [
-        ModbusDevicesAnswer::Reports(vec![meter()]),
+        // The fake runtime's `IDENTIFY` says it runs.
+        ModbusDevicesAnswer::Reports {
+            reports: vec![meter()],
+            state: online_protocol::TargetState::Running,
+        },
         ModbusDevicesAnswer::NotReported,
         ModbusDevicesAnswer::Refused("the frame is too short".to_owned()),
     ];
+    // The fake serves a single connection: had an answer ended it, the next event would be
+    // `Disconnected` rather than the next answer.
     for answer in expected {
         commands.send(Command::ModbusDevices).await.unwrap();
         match next(&mut events).await {
@@ -80,6 +87,35 @@ async fn reports_an_unknown_service_and_a_refusal_are_answers_and_the_session_st
             other => panic!("{other:?}"),
         }
     }
-    assert_eq!(*asked.lock().unwrap(), 3, "one connection served all three");
+    assert_eq!(
+        *asked.lock().unwrap(),
+        3,
+        "each command asked MODBUS_DEVICES once, none was sent again"
+    );
+    commands.send(Command::Close).await.unwrap();
+}
+
+#[tokio::test]
+async fn the_question_waiting_for_a_connection_is_dropped_without_a_failure() {
+    // A port nobody listens on: bound, then let go.
+    let address = {
+        let listener = std::net::TcpListener::bind("127.0.0.1:0").unwrap();
+        listener.local_addr().unwrap()
+    };
+    let (commands, mut events) = spawn(SessionOptions {
+        address,
+        password: None,
+        poll_interval: Duration::from_millis(50),
+        reconnect_interval: Duration::from_secs(30),
+    });
+    assert!(matches!(next(&mut events).await, Event::Disconnected(_)));
+    // The question, then a command whose failure the user must see.
+    commands.send(Command::ModbusDevices).await.unwrap();
+    commands.send(Command::Start).await.unwrap();
+    assert!(matches!(next(&mut events).await, Event::Failed(_)));
+    // Commands are served in order: a failure of the question would have come first, and a
+    // second one now.
+    let later = tokio::time::timeout(Duration::from_millis(300), events.recv()).await;
+    assert!(later.is_err(), "{later:?}");
     commands.send(Command::Close).await.unwrap();
 }

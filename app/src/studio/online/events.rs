@@ -85,6 +85,7 @@ impl Online {
         match event {
             Event::Connected(identity) => {
                 self.debug_connection_ended();
+                self.modbus_question_ended();
                 self.target_state = Some(identity.state);
                 let ours = self.image.as_ref().map(|image| image.hash);
                 let same = ours.is_some() && identity.image_hash == ours;
@@ -122,6 +123,7 @@ impl Online {
                 }
                 self.phase = Phase::Lost(reason);
                 self.debug_connection_ended();
+                self.modbus_question_ended();
                 self.watched.clear();
             }
             Event::Snapshot(snapshot) => {

@@ -1,11 +1,14 @@
 //! The Modbus devices the target's master polls, as `MODBUS_DEVICES` last reported them
 //! (`docs/modbus-master.md` §9.1, §9.2): asked for once a second while logged in to a target
-//! that runs a program with runtime devices, forgotten at logout.
+//! that runs the project's program with runtime devices, one question at a time, forgotten at
+//! logout.
 
 use std::time::{Duration, Instant};
 
-use online::ModbusDeviceReport;
 use online::session::{Command, ModbusDevicesAnswer};
+use online::{MAX_MODBUS_DEVICE_NAME_BYTES, ModbusDeviceReport, cut};
+use program_image::modbus_master::DeviceDef;
+use project_model::same_identifier;
 
 use super::{Online, Phase, TargetKind};
 
@@ -33,33 +36,84 @@ pub(super) struct ModbusReports {
     problem: Option<ModbusReportsProblem>,
     /// When the question was last asked, so it is asked once per [`MODBUS_DEVICES_INTERVAL`].
     last_asked: Option<Instant>,
+    /// Whether a question was sent and neither its answer nor the end of its connection came
+    /// yet: a slow target gets one question at a time rather than a full queue.
+    in_flight: bool,
+}
+
+/// Everything that decides whether the Modbus devices' question is asked now; made each frame.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct ModbusQuestion {
+    /// Logged in ([`Phase::Online`]).
+    pub online: bool,
+    /// The target runs the project's program, whose image names the devices.
+    pub runs_project: bool,
+    /// That program's image has devices the runtime masters.
+    pub has_runtime_devices: bool,
+    /// The last question has not been answered yet.
+    pub in_flight: bool,
+    /// The target said it does not know the question (an older runtime): not asked again
+    /// before the next login.
+    pub not_reported: bool,
+    /// [`MODBUS_DEVICES_INTERVAL`] passed since the last question, or none was asked.
+    pub interval_passed: bool,
+}
+
+impl ModbusQuestion {
+    /// Whether the question is due.
+    pub(crate) fn is_due(self) -> bool {
+        self.online
+            && self.runs_project
+            && self.has_runtime_devices
+            && !self.in_flight
+            && !self.not_reported
+            && self.interval_passed
+    }
 }
 
 impl Online {
-    /// Asks for the Modbus devices' reports when they are due: logged in to a target that runs
-    /// the project's program, and only when that program has runtime devices.
+    /// Asks for the Modbus devices' reports when they are due ([`ModbusQuestion::is_due`]).
+    /// A full command queue is not reported: the question comes back at the next second.
     pub(super) fn ask_modbus_devices_when_due(&mut self, now: Instant) {
-        if self.phase != Phase::Online || self.runtime_device_count() == 0 {
+        let reports = &self.modbus_reports;
+        let question = ModbusQuestion {
+            online: self.phase == Phase::Online,
+            runs_project: self.runs_project(),
+            has_runtime_devices: self.runtime_device_count() > 0,
+            in_flight: reports.in_flight,
+            not_reported: reports.problem == Some(ModbusReportsProblem::NotReported),
+            interval_passed: reports
+                .last_asked
+                .is_none_or(|last| now.duration_since(last) >= MODBUS_DEVICES_INTERVAL),
+        };
+        if !question.is_due() {
             return;
         }
-        let due = self
-            .modbus_reports
-            .last_asked
-            .is_none_or(|last| now.duration_since(last) >= MODBUS_DEVICES_INTERVAL);
-        if due {
-            self.modbus_reports.last_asked = Some(now);
-            self.command(Command::ModbusDevices);
-        }
+        self.modbus_reports.last_asked = Some(now);
+        let sent = self
+            .link
+            .as_ref()
+            .is_some_and(|link| link.send(Command::ModbusDevices));
+        self.modbus_reports.in_flight = sent;
     }
 
     /// Takes in the target's answer to `MODBUS_DEVICES`. A failure is kept to be shown; it is
-    /// not a message, since the question comes back every second.
+    /// not a message, since the question comes back every second. An answer that arrives when
+    /// the target no longer runs the project's program (another program was found, or the
+    /// user logged in without change) is dropped: its devices are not the project's.
     pub(super) fn modbus_devices_answered(&mut self, answer: ModbusDevicesAnswer) {
+        self.modbus_reports.in_flight = false;
+        if !self.logged_in_to_project() {
+            return;
+        }
         match answer {
-            ModbusDevicesAnswer::Reports(reports) => {
+            ModbusDevicesAnswer::Reports { reports, state } => {
                 self.modbus_reports.reports = reports;
                 self.modbus_reports.answered = true;
                 self.modbus_reports.problem = None;
+                // Asked with the reports, so that a start, a stop or a fault from elsewhere
+                // shows on the devices within a second.
+                self.target_state = Some(state);
             }
             ModbusDevicesAnswer::NotReported => {
                 self.modbus_reports.reports.clear();
@@ -73,44 +127,56 @@ impl Online {
         }
     }
 
+    /// The connection was made or lost: a question sent on it will get no answer.
+    pub(super) fn modbus_question_ended(&mut self) {
+        self.modbus_reports.in_flight = false;
+    }
+
     /// Forgets the reports (at logout, or when the target's program changes).
     pub(super) fn forget_modbus_reports(&mut self) {
         self.modbus_reports = ModbusReports::default();
     }
 
-    /// The number of devices the program logged in with has its runtime master poll: the
-    /// devices of its image's Modbus master section; 0 when not logged in.
-    pub fn runtime_device_count(&self) -> usize {
-        if self.link.is_none() {
-            return 0;
+    /// Whether the studio is logged in to a target that runs the project's program: only then
+    /// are the target's devices the project's.
+    fn logged_in_to_project(&self) -> bool {
+        self.phase == Phase::Online && self.runs_project()
+    }
+
+    /// The devices of the Modbus master section of the program logged in with, while the
+    /// target runs it.
+    fn runtime_devices(&self) -> Option<&[DeviceDef]> {
+        if !self.logged_in_to_project() {
+            return None;
         }
-        self.image
-            .as_ref()
-            .and_then(|image| image.program.modbus_master.as_ref())
-            .map_or(0, |section| section.devices.len())
+        let image = self.image.as_ref()?;
+        let section = image.program.modbus_master.as_ref()?;
+        Some(&section.devices)
+    }
+
+    /// The number of devices the program logged in with has its runtime master poll: the
+    /// devices of its image's Modbus master section; 0 when not logged in to a target that
+    /// runs that program.
+    pub fn runtime_device_count(&self) -> usize {
+        self.runtime_devices().map_or(0, <[DeviceDef]>::len)
     }
 
     /// The last report of the runtime device `name`, while logged in to a target that runs the
-    /// project's program; the runtime names devices as the project does, without case.
+    /// project's program.
     pub fn modbus_device_report(&self, name: &str) -> Option<&ModbusDeviceReport> {
-        if self.phase != Phase::Online {
-            return None;
-        }
-        self.modbus_reports
-            .reports
-            .iter()
-            .find(|report| report.name.eq_ignore_ascii_case(name))
+        report_of(self.runtime_devices()?, &self.modbus_reports.reports, name)
     }
 
     /// Whether the target answered `MODBUS_DEVICES` with reports since the login, so a device
     /// missing from them is not in its program.
     pub fn modbus_reports_answered(&self) -> bool {
-        self.phase == Phase::Online && self.modbus_reports.answered
+        self.logged_in_to_project() && self.modbus_reports.answered
     }
 
-    /// Why the last `MODBUS_DEVICES` question had no answer, while logged in.
+    /// Why the last `MODBUS_DEVICES` question had no answer, while logged in to a target that
+    /// runs the project's program.
     pub fn modbus_reports_problem(&self) -> Option<&ModbusReportsProblem> {
-        if self.phase != Phase::Online {
+        if !self.logged_in_to_project() {
             return None;
         }
         self.modbus_reports.problem.as_ref()
@@ -121,3 +187,24 @@ impl Online {
         self.link.as_ref().and(self.logged_in_target)
     }
 }
+
+/// The report of the device the project names `name` among `reports`, which the runtime lists
+/// in the order of the image's `devices`: the device is found in the image as the project finds
+/// names (without case), and its report is the one at the same place, provided it carries the
+/// image's name as the runtime sends it (cut to [`MAX_MODBUS_DEVICE_NAME_BYTES`]).
+fn report_of<'a>(
+    devices: &[DeviceDef],
+    reports: &'a [ModbusDeviceReport],
+    name: &str,
+) -> Option<&'a ModbusDeviceReport> {
+    let index = devices
+        .iter()
+        .position(|device| same_identifier(&device.name, name))?;
+    let report = reports.get(index)?;
+    let sent_name = cut(&devices[index].name, MAX_MODBUS_DEVICE_NAME_BYTES);
+    (report.name == sent_name).then_some(report)
+}
+
+#[cfg(test)]
+#[path = "modbus_reports_tests.rs"]
+mod tests;
