@@ -110,12 +110,14 @@ fn runtime_devices_show_their_state_in_the_tree_the_editor_and_the_status_line()
 
     // Running, the drive communicates and the meter does not answer.
     harness.key_press(Key::F5);
+    // The node shows the report together with the program's state, which the studio learns
+    // with the next answer after the start: both must have arrived.
     wait_until(&mut harness, "the drive communicating", |app| {
         reported(app, "BeltDrive", ModbusDeviceState::Communicating)
             && reported(app, "Meter", ModbusDeviceState::NotAnswering)
+            && app.online().target_state() == Some(TargetState::Running)
     });
-    harness.step();
-    assert!(harness.query_by_label("BeltDrive: Communicating").is_some());
+    step_until_shown(&mut harness, "BeltDrive: Communicating");
     // A studio device shows nothing new.
     assert!(harness.query_by_label_contains("Scale: ").is_none());
 
