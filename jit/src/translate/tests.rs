@@ -1370,3 +1370,121 @@ fn a_layout_that_is_not_the_images_is_refused() {
         Err(crate::NativeUnsupported::LayoutMismatch { .. })
     ));
 }
+
+#[test]
+fn pure_functions_carry_expt_bcd_and_the_real_library() {
+    let code = vec![
+        Instr::Binary {
+            op: BinaryOp::Expt,
+            ty: Int,
+            dst: I(16),
+            a: I(0),
+            b: I(2),
+        },
+        Instr::Unary {
+            op: UnaryOp::ToBcd,
+            ty: Word,
+            dst: I(18),
+            src: I(4),
+        },
+        Instr::Unary {
+            op: UnaryOp::FromBcd,
+            ty: Word,
+            dst: I(20),
+            src: I(6),
+        },
+        Instr::Unary {
+            op: UnaryOp::Ln,
+            ty: Lreal,
+            dst: I(24),
+            src: I(8),
+        },
+        Instr::Binary {
+            op: BinaryOp::Expt,
+            ty: Real,
+            dst: I(32),
+            a: I(36),
+            b: I(40),
+        },
+    ];
+    let fixture = Fixture::new(code);
+    let mut host = fixture.host();
+    host.put(0, 3, 2);
+    host.put(2, 5, 2);
+    host.put(4, 1234, 2);
+    host.put(6, 0x0987, 2);
+    host.put(8, 10f64.to_bits(), 8);
+    host.put(36, u64::from(2f32.to_bits()), 4);
+    host.put(40, u64::from(0.5f32.to_bits()), 4);
+    assert_eq!(fixture.run(&mut host), Status::Ok);
+    assert_eq!(host.get(16, 2), 243);
+    assert_eq!(host.get(18, 2), 0x1234);
+    assert_eq!(host.get(20, 2), 987);
+    assert_eq!(host.get(24, 8), 10f64.ln().to_bits());
+    assert_eq!(host.get(32, 4), u64::from(2f32.powf(0.5).to_bits()));
+}
+
+#[test]
+fn library_calls_other_than_the_float_roundings_are_foreign() {
+    use cranelift_codegen::ir::LibCall;
+    for call in [
+        LibCall::FloorF32,
+        LibCall::CeilF64,
+        LibCall::TruncF64,
+        LibCall::NearestF32,
+    ] {
+        let name = super::host_calls::libcall_name(call);
+        assert!(OUR_SYMBOLS.contains(&name.as_str()), "{name}");
+    }
+    for call in [
+        LibCall::Memcpy,
+        LibCall::Memset,
+        LibCall::FmaF64,
+        LibCall::Probestack,
+    ] {
+        let name = super::host_calls::libcall_name(call);
+        assert!(!OUR_SYMBOLS.contains(&name.as_str()), "{name}");
+    }
+}
+
+#[test]
+fn forward_jumps_skip_and_fall_through() {
+    // IF c THEN x := 1 END_IF; a jump to the next instruction; y := 2 after a Return is never run.
+    let code = vec![
+        Instr::JumpIfNot {
+            cond: I(0),
+            target: 2,
+        },
+        Instr::Move {
+            ty: Sint,
+            dst: I(1),
+            src: I(8),
+        },
+        Instr::JumpIf {
+            cond: I(0),
+            target: 3,
+        },
+        Instr::Jump { target: 5 },
+        Instr::Move {
+            ty: Sint,
+            dst: I(2),
+            src: I(8),
+        },
+        Instr::Return,
+        Instr::Move {
+            ty: Sint,
+            dst: I(3),
+            src: I(8),
+        },
+    ];
+    let fixture = Fixture::new(code);
+    for condition in [0u64, 1, 2] {
+        let mut host = fixture.host();
+        host.put(0, condition, 1);
+        host.put(8, 7, 1);
+        assert_eq!(fixture.run(&mut host), Status::Ok);
+        assert_eq!(host.get(1, 1), if condition != 0 { 7 } else { 0 });
+        assert_eq!(host.get(2, 1), 0);
+        assert_eq!(host.get(3, 1), 0);
+    }
+}
