@@ -1,6 +1,7 @@
 //! Building the code module of one image: every POU translated and defined, the module
 //! finalised, and the code-size count (`docs/native-engine.md` §8.2, §9.2).
 
+use std::panic::AssertUnwindSafe;
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::sync::{Arc, Mutex};
 
@@ -68,12 +69,16 @@ impl Translation {
             pous: &image.pous,
             layout,
             imports: &imports,
+            folded_constants: crate::translate::scalar::constant_pool_is_read_only(image)
+                .then_some(image.constants.as_slice()),
             signature: pou_signature(module.make_signature()),
         };
         let mut function_context = FunctionBuilderContext::new();
         let mut codegen = module.make_context();
         let mut defined = Vec::with_capacity(image.pous.len());
         let mut untranslated = Vec::new();
+        #[cfg(test)]
+        let mut listings = Vec::new();
         for (index, pou) in image.pous.iter().enumerate() {
             let index = index as u32;
             let refused = |reason: String| Untranslated {
@@ -82,15 +87,27 @@ impl Translation {
                 instruction: None,
                 reason,
             };
-            let function =
-                match translate_pou(&environment, index, &mut function_context, &mut module) {
-                    Ok(function) => function,
-                    Err(refusal) => {
-                        untranslated.push(refusal);
-                        defined.push(None);
-                        continue;
-                    }
-                };
+            // A translator bug must not take the loading thread down: the POU falls back to
+            // the interpreter with the reason (§8.2).
+            let translated = std::panic::catch_unwind(AssertUnwindSafe(|| {
+                translate_pou(&environment, index, &mut function_context, &mut module)
+            }));
+            let function = match translated {
+                Ok(Ok(function)) => function,
+                Ok(Err(refusal)) => {
+                    untranslated.push(refusal);
+                    defined.push(None);
+                    continue;
+                }
+                Err(_) => {
+                    untranslated.push(refused(
+                        "the translator failed on it (an internal error)".into(),
+                    ));
+                    defined.push(None);
+                    function_context = FunctionBuilderContext::new();
+                    continue;
+                }
+            };
             let id = match module.declare_function(
                 &format!("rivet_pou_{index}"),
                 Linkage::Local,
@@ -104,7 +121,16 @@ impl Translation {
                 }
             };
             codegen.func = function;
+            // The tests read the machine code's listing (§7 rule 5: no reachable trap).
+            codegen.set_disasm(cfg!(test));
             let result = module.define_function(id, &mut codegen);
+            #[cfg(test)]
+            listings.push(
+                codegen
+                    .compiled_code()
+                    .and_then(|compiled| compiled.vcode.clone())
+                    .unwrap_or_default(),
+            );
             module.clear_context(&mut codegen);
             match result {
                 Ok(()) => defined.push(Some(id)),
@@ -140,6 +166,8 @@ impl Translation {
             untranslated,
             code_bytes: code_bytes.load(Ordering::Relaxed),
             freed,
+            #[cfg(test)]
+            listings,
             _machine: MachineCode::new(module),
         })
     }
@@ -159,6 +187,9 @@ pub struct Code {
     untranslated: Vec<Untranslated>,
     code_bytes: u64,
     freed: Arc<AtomicBool>,
+    /// The machine code of each POU as text, for the tests.
+    #[cfg(test)]
+    pub(crate) listings: Vec<String>,
     /// Owned for its `Drop`, which frees the machine code.
     _machine: MachineCode,
 }

@@ -9,7 +9,7 @@ mod call;
 pub(crate) mod host_calls;
 mod pointer;
 mod real;
-mod scalar;
+pub(crate) mod scalar;
 
 use cranelift_codegen::ir::condcodes::IntCC;
 use cranelift_codegen::ir::{
@@ -71,6 +71,8 @@ pub(crate) struct Environment<'a> {
     pub(crate) layout: &'a Layout,
     /// The imported callbacks and pure functions.
     pub(crate) imports: &'a Imports,
+    /// The constant pool, when nothing can write it, so its values may be folded (§5.2).
+    pub(crate) folded_constants: Option<&'a [u8]>,
     /// The signature of a POU function on this machine.
     pub(crate) signature: Signature,
 }
@@ -110,6 +112,8 @@ pub(crate) struct Translator<'a, 'b> {
     pub(crate) builder: FunctionBuilder<'b>,
     pub(crate) layout: &'a Layout,
     imports: &'a Imports,
+    /// The constant pool, when its values may be folded.
+    folded_constants: Option<&'a [u8]>,
     module: &'a mut dyn cranelift_module::Module,
     refs: Vec<Option<FuncRef>>,
     /// This POU's index.
@@ -151,6 +155,7 @@ impl<'a, 'b> Translator<'a, 'b> {
             builder,
             layout: environment.layout,
             imports: environment.imports,
+            folded_constants: environment.folded_constants,
             module,
             refs: vec![None; Import::COUNT],
             pou: index,
@@ -475,6 +480,11 @@ impl<'a, 'b> Translator<'a, 'b> {
 
     /// Loads a value of IR type `ty` from a direct operand.
     pub(crate) fn load(&mut self, ty: Type, operand: Operand) -> Value {
+        if let Operand::Const(offset) = operand
+            && let Some(folded) = self.folded_constant(ty, offset)
+        {
+            return folded;
+        }
         let (address, displacement) = self.operand_address(operand);
         self.builder
             .ins()

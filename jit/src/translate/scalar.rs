@@ -2,8 +2,9 @@
 //! (`docs/native-engine.md` §5.1).
 
 use cranelift_codegen::ir::condcodes::{FloatCC, IntCC};
+use cranelift_codegen::ir::immediates::{Ieee32, Ieee64};
 use cranelift_codegen::ir::{InstBuilder, Type, Value, types};
-use program_image::{BinaryOp, CompareOp, Elementary, Operand, UnaryOp};
+use program_image::{BinaryOp, CompareOp, Elementary, Instr, Operand, ProgramImage, UnaryOp};
 
 use super::host_calls::Import;
 use super::{Translator, int_type, is_signed};
@@ -12,7 +13,69 @@ use crate::fault_kind;
 /// The largest copy done with inline loads and stores; larger ones go to `rivet_jit_copy`.
 const INLINE_COPY_BYTES: u32 = 64;
 
+/// Whether nothing in `image` can write its constant pool, so that `Const` operands may be
+/// folded into the code (§5.2): no `Const` operand anywhere but in the places an instruction
+/// only reads (a pointer cannot reach the pool either, because no `Address` takes a `Const`
+/// place and a pointer cannot leave its region).
+pub(crate) fn constant_pool_is_read_only(image: &ProgramImage) -> bool {
+    let writable = |operand: &Operand| matches!(operand, Operand::Const(_));
+    image
+        .pous
+        .iter()
+        .flat_map(|pou| &pou.code)
+        .all(|instr| match instr {
+            Instr::Move { dst, .. }
+            | Instr::Copy { dst, .. }
+            | Instr::Unary { dst, .. }
+            | Instr::Binary { dst, .. }
+            | Instr::Compare { dst, .. }
+            | Instr::Convert { dst, .. }
+            | Instr::Trunc { dst, .. }
+            | Instr::GetBit { dst, .. }
+            | Instr::SetBit { dst, .. }
+            | Instr::Element { dst, .. }
+            | Instr::Offset { dst, .. }
+            | Instr::Load { dst, .. }
+            | Instr::OpenElement { dst, .. }
+            | Instr::Now { dst }
+            | Instr::Clock { dst, .. }
+            | Instr::ToText { dst, .. }
+            | Instr::FromText { dst, .. } => !writable(dst),
+            Instr::Address { dst, place } => !writable(dst) && !writable(place),
+            Instr::CallStdFunction { dst, .. } => !writable(&dst.0),
+            Instr::CallFunction { outputs, .. } | Instr::CallVirtual { outputs, .. } => {
+                outputs.iter().all(|transfer| !writable(&transfer.caller))
+            }
+            // A block runs on its instance, which it writes.
+            Instr::CallBlock { instance, .. } | Instr::CallStdBlock { instance, .. } => {
+                !writable(instance)
+            }
+            Instr::Jump { .. }
+            | Instr::JumpIf { .. }
+            | Instr::JumpIfNot { .. }
+            | Instr::Store { .. }
+            | Instr::Return
+            | Instr::Native { .. } => true,
+        })
+}
+
 impl Translator<'_, '_> {
+    /// The value of type `ty` at `offset` of the constant pool as an immediate, when the pool
+    /// may be folded; floats keep their stored bits.
+    pub(crate) fn folded_constant(&mut self, ty: Type, offset: u32) -> Option<Value> {
+        let pool = self.folded_constants?;
+        let size = ty.bytes() as usize;
+        let bytes = pool.get(offset as usize..)?.get(..size)?;
+        let mut raw = [0u8; 8];
+        raw[..size].copy_from_slice(bytes);
+        let bits = u64::from_le_bytes(raw);
+        Some(match ty {
+            types::F32 => self.builder.ins().f32const(Ieee32::with_bits(bits as u32)),
+            types::F64 => self.builder.ins().f64const(Ieee64::with_bits(bits)),
+            _ => self.builder.ins().iconst(ty, bits as i64),
+        })
+    }
+
     /// `value` of integer type `from` as integer type `to`: narrowed to its low bits, or
     /// widened by `signed`.
     pub(crate) fn resized(&mut self, value: Value, from: Type, to: Type, signed: bool) -> Value {
