@@ -14,11 +14,11 @@ pub enum NativeUnsupported {
         /// The machine's architecture, as Rust names it.
         machine: &'static str,
         /// What refused it.
-        reason: String,
+        reason: &'static str,
     },
     /// A code generator flag was refused (a Cranelift version this crate was not written for).
-    #[error("the native code generator refused its settings: {0}")]
-    Settings(String),
+    #[error("the native code generator refused its settings")]
+    Settings(#[source] SettingsError),
     /// The image does not pass verification, which the translator relies on.
     #[error("the image does not pass verification: {0}")]
     Unverified(#[from] program_image::ImageError),
@@ -31,11 +31,30 @@ pub enum NativeUnsupported {
         image: String,
     },
     /// The code module could not be built or finalised (no executable memory, for one).
-    #[error("the machine code could not be made executable: {0}")]
-    Module(String),
+    #[error("the machine code could not be made executable")]
+    Module(#[source] Box<cranelift_module::ModuleError>),
     /// Generated code would import a symbol that is not one of this crate's callbacks.
     #[error("generated code would import the foreign symbol '{0}'")]
     ForeignSymbol(String),
+}
+
+/// Which of the code generator's settings was refused.
+#[derive(Debug, thiserror::Error)]
+pub enum SettingsError {
+    /// A flag of §8.1.
+    #[error("the flag {name} = {value}")]
+    Flag {
+        /// The flag's name.
+        name: &'static str,
+        /// The value given.
+        value: &'static str,
+        /// What Cranelift said.
+        #[source]
+        source: settings::SetError,
+    },
+    /// The instruction set with the flags.
+    #[error("the instruction set with these flags")]
+    Isa(#[source] cranelift_codegen::CodegenError),
 }
 
 /// The instruction set of this machine with the flags of §8.1.
@@ -46,7 +65,7 @@ pub(crate) fn host_isa() -> Result<OwnedTargetIsa, NativeUnsupported> {
     if !matches!(machine, "x86_64" | "aarch64") || cfg!(target_endian = "big") {
         return Err(NativeUnsupported::NoBackend {
             machine,
-            reason: "the native engine runs on x86-64 and aarch64 only".into(),
+            reason: "the native engine runs on x86-64 and aarch64 only",
         });
     }
     let mut flags = settings::builder();
@@ -64,15 +83,17 @@ pub(crate) fn host_isa() -> Result<OwnedTargetIsa, NativeUnsupported> {
         ("preserve_frame_pointers", "true"),
         ("enable_verifier", verifier),
     ] {
-        flags
-            .set(name, value)
-            .map_err(|error| NativeUnsupported::Settings(format!("{name} = {value}: {error}")))?;
+        flags.set(name, value).map_err(|source| {
+            NativeUnsupported::Settings(SettingsError::Flag {
+                name,
+                value,
+                source,
+            })
+        })?;
     }
-    let builder = cranelift_native::builder().map_err(|reason| NativeUnsupported::NoBackend {
-        machine,
-        reason: reason.to_string(),
-    })?;
+    let builder = cranelift_native::builder()
+        .map_err(|reason| NativeUnsupported::NoBackend { machine, reason })?;
     builder
         .finish(settings::Flags::new(flags))
-        .map_err(|error| NativeUnsupported::Settings(error.to_string()))
+        .map_err(|source| NativeUnsupported::Settings(SettingsError::Isa(source)))
 }

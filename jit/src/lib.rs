@@ -37,7 +37,7 @@ mod machine;
 mod module;
 mod translate;
 
-pub use isa::NativeUnsupported;
+pub use isa::{NativeUnsupported, SettingsError};
 pub use layout::Layout;
 pub use module::{Code, Translation, Untranslated};
 pub use translate::host_calls::{
@@ -103,6 +103,10 @@ pub enum NativeFault {
     StackOverflow,
     /// A base outside the memory.
     Memory,
+    /// A [`Host`] method panicked during a callback; the panic was caught in the callback's
+    /// shim, never unwound into generated code (the runtime records it as an internal fault,
+    /// `docs/native-engine.md` §4.3).
+    HostPanicked,
 }
 
 impl NativeFault {

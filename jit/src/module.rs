@@ -12,10 +12,10 @@ use program_image::ProgramImage;
 
 use crate::isa::{NativeUnsupported, host_isa};
 use crate::layout::Layout;
-use crate::machine::{self, Checked, CountingMemory, MachineCode, PouEntry};
+use crate::machine::{self, CountingMemory, MachineCode};
 use crate::translate::host_calls::{Imports, PureFunctions, libcall_name, libcall_symbols};
 use crate::translate::{Environment, pou_signature, translate_pou};
-use crate::{Counters, Entry, Host, NativeFault, Site, Status};
+use crate::{Counters, Entry, Host, Status};
 
 pub use crate::translate::Untranslated;
 
@@ -34,6 +34,16 @@ impl Translation {
         layout: &Layout,
         pure: &PureFunctions,
     ) -> Result<Code, NativeUnsupported> {
+        Self::with_symbols(image, layout, our_symbols(pure))
+    }
+
+    /// [`Translation::new`] with the symbols the module may import given as a table of names
+    /// and addresses; the tests leave one out to see it refused as foreign.
+    pub(crate) fn with_symbols(
+        image: &ProgramImage,
+        layout: &Layout,
+        table: Vec<(&'static str, usize)>,
+    ) -> Result<Code, NativeUnsupported> {
         // The translator relies on verification (operands inside their regions, jump targets
         // inside the POU, bits below their widths, §2); checking again keeps `Code` sound
         // whatever image it is given.
@@ -42,29 +52,25 @@ impl Translation {
         let isa = host_isa()?;
         let code_bytes = Arc::new(AtomicU64::new(0));
         let freed = Arc::new(AtomicBool::new(false));
-        let foreign: Arc<Mutex<Vec<String>>> = Arc::default();
+        let symbols = Symbols::default();
         let mut builder = JITBuilder::with_isa(isa, Box::new(libcall_name));
-        for (name, address) in machine::callback_symbols()
-            .into_iter()
-            .chain(pure.symbols())
-            .chain(libcall_symbols())
-        {
-            builder.symbol(name, address);
-        }
-        let seen = Arc::clone(&foreign);
-        // Tried before the system's symbol search, which is therefore never reached.
-        builder.symbol_lookup_fn(Box::new(move |name| {
-            if let Ok(mut seen) = seen.lock() {
-                seen.push(name.to_string());
-            }
-            Some(machine::foreign_symbol())
-        }));
+        // Every name the module asks for comes here (the builder's own table is left empty,
+        // and this lookup is tried before the system's symbol search, which is therefore never
+        // reached), so the names it resolved are known and a foreign one refuses the module.
+        let lookup = symbols.clone();
+        builder.symbol_lookup_fn(Box::new(move |name| Some(lookup.resolve(name, &table))));
         builder.memory_provider(Box::new(CountingMemory::new(
             Arc::clone(&code_bytes),
             Arc::clone(&freed),
         )));
         let mut module = JITModule::new(builder);
-        let imports = Imports::declare(&mut module).map_err(|error| module_error(*error))?;
+        let imports = match Imports::declare(&mut module) {
+            Ok(imports) => imports,
+            Err(error) => {
+                machine::discard(module);
+                return Err(NativeUnsupported::Module(error));
+            }
+        };
         let environment = Environment {
             pous: &image.pous,
             layout,
@@ -123,7 +129,10 @@ impl Translation {
             codegen.func = function;
             // The tests read the machine code's listing (§7 rule 5: no reachable trap).
             codegen.set_disasm(cfg!(test));
-            let result = module.define_function(id, &mut codegen);
+            // A Cranelift panic must not take the loading thread down either (§8.2).
+            let result = std::panic::catch_unwind(AssertUnwindSafe(|| {
+                module.define_function(id, &mut codegen).map_err(Box::new)
+            }));
             #[cfg(test)]
             listings.push(
                 codegen
@@ -133,77 +142,152 @@ impl Translation {
             );
             module.clear_context(&mut codegen);
             match result {
-                Ok(()) => defined.push(Some(id)),
-                Err(error) => {
+                Ok(Ok(())) => defined.push(Some(id)),
+                Ok(Err(error)) => {
                     untranslated.push(refused(format!("{error:?}")));
                     defined.push(None);
                 }
+                Err(_) => {
+                    untranslated.push(refused(
+                        "the code generator failed on it (an internal error)".into(),
+                    ));
+                    defined.push(None);
+                    codegen = module.make_context();
+                }
             }
         }
-        module.finalize_definitions().map_err(module_error)?;
-        let foreign_names = foreign
-            .lock()
-            .map(|names| names.clone())
-            .unwrap_or_default();
-        if let Some(name) = foreign_names.into_iter().next() {
-            // Dropping the module leaks its code by design; free it before refusing.
-            drop(MachineCode::new(module));
+        if let Err(error) = module.finalize_definitions() {
+            machine::discard(module);
+            return Err(NativeUnsupported::Module(Box::new(error)));
+        }
+        if let Some(name) = symbols.foreign() {
+            machine::discard(module);
             return Err(NativeUnsupported::ForeignSymbol(name));
         }
-        let functions = defined
-            .iter()
-            .map(|id| id.map(|id| PouEntry::from_finalized(module.get_finalized_function(id))))
-            .collect();
         let sizes = image
             .pous
             .iter()
             .map(|pou| (u64::from(pou.instance_size), u64::from(pou.frame_size)))
             .collect();
+        let machine = MachineCode::new(module, &defined, &environment.signature, sizes, *layout);
+        for (index, pou) in image.pous.iter().enumerate() {
+            let index = index as u32;
+            if defined[index as usize].is_some() && !machine.has(index) {
+                untranslated.push(Untranslated {
+                    pou: index,
+                    name: pou.name.clone(),
+                    instruction: None,
+                    reason:
+                        "its function was not declared with the POU signature (an internal error)"
+                            .into(),
+                });
+            }
+        }
         Ok(Code {
-            functions,
-            sizes,
-            layout: *layout,
             untranslated,
             code_bytes: code_bytes.load(Ordering::Relaxed),
+            imported: symbols.resolved(),
             freed,
             #[cfg(test)]
             listings,
-            _machine: MachineCode::new(module),
+            machine,
         })
     }
 }
 
-fn module_error(error: cranelift_module::ModuleError) -> NativeUnsupported {
-    NativeUnsupported::Module(error.to_string())
+/// The names and addresses of every symbol generated code may import: the callbacks, the
+/// runtime's pure functions and the float rounding library calls ([`crate::OUR_SYMBOLS`]).
+pub(crate) fn our_symbols(pure: &PureFunctions) -> Vec<(&'static str, usize)> {
+    machine::callback_symbols()
+        .into_iter()
+        .chain(pure.symbols())
+        .chain(libcall_symbols())
+        .map(|(name, address)| (name, address as usize))
+        .collect()
+}
+
+/// The names a module asked for while it was finalised, shared with its symbol lookup.
+#[derive(Clone, Default)]
+struct Symbols {
+    /// Every name asked for, in order, and whether it was in the table.
+    names: Arc<Mutex<Vec<(String, bool)>>>,
+    /// Whether any name was not in the table; an atomic, so that a poisoned lock cannot hide
+    /// it.
+    foreign: Arc<AtomicBool>,
+}
+
+impl Symbols {
+    /// The address of `name` in `table`; a foreign name is recorded and answered with an
+    /// address that is never called, because the module is then refused.
+    fn resolve(&self, name: &str, table: &[(&'static str, usize)]) -> *const u8 {
+        let found = table.iter().find(|(known, _)| *known == name);
+        if found.is_none() {
+            self.foreign.store(true, Ordering::Relaxed);
+        }
+        self.names
+            .lock()
+            .unwrap_or_else(|poisoned| poisoned.into_inner())
+            .push((name.to_string(), found.is_some()));
+        found.map_or_else(machine::foreign_symbol, |(_, address)| {
+            *address as *const u8
+        })
+    }
+
+    /// The first foreign name asked for, if any.
+    fn foreign(&self) -> Option<String> {
+        if !self.foreign.load(Ordering::Relaxed) {
+            return None;
+        }
+        let names = self
+            .names
+            .lock()
+            .unwrap_or_else(|poisoned| poisoned.into_inner());
+        // Refused even if the name itself was lost: the flag is what decides.
+        Some(
+            names
+                .iter()
+                .find(|(_, ours)| !ours)
+                .map(|(name, _)| name.clone())
+                .unwrap_or_default(),
+        )
+    }
+
+    /// Every name asked for.
+    fn resolved(&self) -> Vec<String> {
+        self.names
+            .lock()
+            .unwrap_or_else(|poisoned| poisoned.into_inner())
+            .iter()
+            .map(|(name, _)| name.clone())
+            .collect()
+    }
 }
 
 /// The machine code of one image: a function per translated POU (`docs/native-engine.md`
 /// §1.3). Freed when dropped.
 pub struct Code {
-    functions: Vec<Option<PouEntry>>,
-    /// Per POU: instance and frame sizes in bytes.
-    sizes: Vec<(u64, u64)>,
-    layout: Layout,
+    /// The POUs that run in the interpreter, with the reasons.
     untranslated: Vec<Untranslated>,
+    /// Every byte allocated for the machine code.
     code_bytes: u64,
+    /// The symbols the module resolved when it was finalised.
+    imported: Vec<String>,
+    /// Set when the machine code is unmapped.
     freed: Arc<AtomicBool>,
     /// The machine code of each POU as text, for the tests.
     #[cfg(test)]
     pub(crate) listings: Vec<String>,
-    /// Owned for its `Drop`, which frees the machine code.
-    _machine: MachineCode,
+    /// The functions and the module; its `Drop` frees the machine code.
+    machine: MachineCode,
 }
 
 impl std::fmt::Debug for Code {
     fn fmt(&self, formatter: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         formatter
             .debug_struct("Code")
-            .field(
-                "translated",
-                &self.functions.iter().filter(|f| f.is_some()).count(),
-            )
             .field("untranslated", &self.untranslated)
             .field("code_bytes", &self.code_bytes)
+            .field("imported", &self.imported)
             .finish()
     }
 }
@@ -211,7 +295,7 @@ impl std::fmt::Debug for Code {
 impl Code {
     /// Whether POU `pou` has machine code.
     pub fn has(&self, pou: u32) -> bool {
-        matches!(self.functions.get(pou as usize), Some(Some(_)))
+        self.machine.has(pou)
     }
 
     /// The POUs that run in the interpreter, with the reasons.
@@ -224,9 +308,11 @@ impl Code {
         self.code_bytes
     }
 
-    /// The symbols generated code imports (each one of [`crate::OUR_SYMBOLS`]).
-    pub fn imported_symbols(&self) -> Vec<String> {
-        Imports::names()
+    /// The symbols the module resolved when it was finalised: the callbacks, pure functions
+    /// and library calls its code calls (each one of [`crate::OUR_SYMBOLS`], or the image
+    /// would have been refused).
+    pub fn imported_symbols(&self) -> &[String] {
+        &self.imported
     }
 
     /// A flag set once the machine code is unmapped (when this `Code` is dropped).
@@ -245,52 +331,6 @@ impl Code {
         entry: Entry<'_>,
         counters: &mut Counters,
     ) -> Status {
-        let site = Site {
-            pou,
-            instruction: 0,
-        };
-        match self.check(pou, host, &entry) {
-            Ok(checked) => machine::enter(checked, host, &entry, counters),
-            Err(fault) => {
-                host.fault(site, fault);
-                Status::Faulted
-            }
-        }
-    }
-
-    /// The checks of §7 rule 2 on entry.
-    fn check(
-        &self,
-        pou: u32,
-        host: &mut dyn Host,
-        entry: &Entry<'_>,
-    ) -> Result<Checked, NativeFault> {
-        let index = pou as usize;
-        let (Some(Some(function)), Some((instance_size, frame_size))) =
-            (self.functions.get(index), self.sizes.get(index))
-        else {
-            return Err(NativeFault::Memory);
-        };
-        let memory_len = host.memory().len() as u64;
-        let regions_inside = self.layout.total <= memory_len;
-        let stack_inside = entry.stack_end <= memory_len;
-        let instance_inside = entry
-            .instance
-            .checked_add(*instance_size)
-            .is_some_and(|end| end <= memory_len);
-        if !(regions_inside && stack_inside && instance_inside) {
-            return Err(NativeFault::Memory);
-        }
-        let frame_inside = entry
-            .frame
-            .checked_add(*frame_size)
-            .is_some_and(|end| end <= entry.stack_end);
-        if !frame_inside {
-            return Err(NativeFault::StackOverflow);
-        }
-        Ok(Checked {
-            function: *function,
-            spans: self.layout.spans(entry.stack_end),
-        })
+        self.machine.run(pou, host, &entry, counters)
     }
 }

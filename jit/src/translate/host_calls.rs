@@ -154,14 +154,6 @@ impl Imports {
     pub(crate) fn id(&self, import: Import) -> FuncId {
         self.ids[import as usize]
     }
-
-    /// The names of every import.
-    pub(crate) fn names() -> Vec<String> {
-        Import::ALL
-            .iter()
-            .map(|import| import.name().to_string())
-            .collect()
-    }
 }
 
 impl PureFunctions {

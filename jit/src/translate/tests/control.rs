@@ -265,13 +265,102 @@ fn bases_outside_the_memory_fault_on_entry() {
 }
 
 #[test]
+fn code_runs_on_the_memory_its_bases_were_checked_against() {
+    // The host answers a buffer of 64 bytes on every second borrow: the entry must borrow the
+    // memory once, check the bases against it and run on it; a callback that comes back with
+    // the short buffer ends the code with `Memory` at its site.
+    let fixture = Fixture::new(vec![
+        Instr::Move {
+            ty: Lint,
+            dst: I(200),
+            src: I(0),
+        },
+        Instr::Now { dst: I(8) },
+        Instr::CallStdFunction {
+            function: StdFunction::Len,
+            wide: false,
+            dst: (I(16), 0),
+            args: vec![(I(24), 10)],
+        },
+        Instr::Move {
+            ty: Lint,
+            dst: I(208),
+            src: I(0),
+        },
+    ]);
+    let mut host = fixture.host();
+    host.decoy = Some(vec![0; 64]);
+    host.put(0, 0x1122_3344_5566_7788, 8);
+    assert_eq!(fixture.run(&mut host), Status::Faulted);
+    assert_eq!(host.get(200, 8), 0x1122_3344_5566_7788);
+    assert_eq!(host.get(8, 8), 1_234_567);
+    assert_eq!(host.get(208, 8), 0, "no instruction runs after the shrink");
+    assert_eq!(host.decoy.as_deref(), Some(&[0u8; 64][..]));
+    let site = Site {
+        pou: 0,
+        instruction: 2,
+    };
+    assert_eq!(host.faults, vec![(site, NativeFault::Memory)]);
+}
+
+#[test]
+fn a_panicking_host_is_a_fault_at_the_callbacks_site() {
+    // A panic must not unwind through generated code (it would abort the process).
+    let code = vec![
+        Instr::CallStdFunction {
+            function: StdFunction::Len,
+            wide: false,
+            dst: (I(8), 0),
+            args: vec![(I(16), 10)],
+        },
+        Instr::Copy {
+            size: 100,
+            dst: I(0),
+            src: I(120),
+        },
+    ];
+    let fixture = Fixture::new(code.clone());
+    let mut host = fixture.host();
+    host.panic = Some("a host bug in op");
+    assert_eq!(fixture.run(&mut host), Status::Faulted);
+    let site = |instruction| Site {
+        pou: 0,
+        instruction,
+    };
+    assert_eq!(host.faults, vec![(site(0), NativeFault::HostPanicked)]);
+    // A copy has no site of its own: the fault generated code records at the `Copy` says the
+    // host panicked, not that the range was outside the memory.
+    let fixture = Fixture::new(code[1..].to_vec());
+    let mut host = fixture.host();
+    host.panic = Some("a host bug in copy");
+    assert_eq!(fixture.run(&mut host), Status::Faulted);
+    assert_eq!(host.faults, vec![(site(0), NativeFault::HostPanicked)]);
+}
+
+#[test]
 fn only_our_symbols_are_imported_and_the_code_is_counted_and_freed() {
     fn send_and_sync<T: Send + Sync>() {}
     send_and_sync::<Code>();
     let fixture = Fixture::new(real_code(Real));
-    for name in fixture.code.imported_symbols() {
+    let imported = fixture.code.imported_symbols();
+    // The names the module resolved: the real code calls the pure functions and, for its
+    // conversion faults, nothing else of ours is needed but what it uses.
+    assert!(
+        imported
+            .iter()
+            .any(|name| name == "rivet_pure_real_unary_f32"),
+        "{imported:?}"
+    );
+    for name in imported {
         assert!(OUR_SYMBOLS.contains(&name.as_str()), "{name}");
     }
+    // A module of moves alone imports nothing.
+    let moves = Fixture::new(vec![Instr::Move {
+        ty: Dint,
+        dst: I(0),
+        src: I(4),
+    }]);
+    assert_eq!(moves.code.imported_symbols(), &[] as &[String]);
     assert!(fixture.code.code_bytes() > 0);
     assert!(fixture.code.has(0));
     assert!(!fixture.code.has(1));
@@ -279,4 +368,33 @@ fn only_our_symbols_are_imported_and_the_code_is_counted_and_freed() {
     assert!(!freed.load(Ordering::Relaxed));
     drop(fixture);
     assert!(freed.load(Ordering::Relaxed));
+}
+
+#[test]
+fn an_image_needing_a_symbol_outside_the_table_is_refused() {
+    // The division calls `rivet_jit_fault` for its zero check; without it in the table the
+    // name is foreign, and the module is refused (and freed) before any of its code runs.
+    let code = vec![Instr::Binary {
+        op: BinaryOp::Div,
+        ty: Dint,
+        dst: I(0),
+        a: I(4),
+        b: I(8),
+    }];
+    let image = image(code, vec![0; 16]);
+    let layout = Layout::of(&image, 1);
+    let table: Vec<_> = crate::module::our_symbols(&PURE)
+        .into_iter()
+        .filter(|(name, _)| *name != "rivet_jit_fault")
+        .collect();
+    match Translation::with_symbols(&image, &layout, table) {
+        Err(crate::NativeUnsupported::ForeignSymbol(name)) => assert_eq!(name, "rivet_jit_fault"),
+        other => panic!("not refused: {other:?}"),
+    }
+    let accepted =
+        Translation::with_symbols(&image, &layout, crate::module::our_symbols(&PURE)).unwrap();
+    assert_eq!(
+        accepted.imported_symbols(),
+        &["rivet_jit_fault".to_string()]
+    );
 }

@@ -41,11 +41,22 @@ struct TestHost {
     faults: Vec<(Site, NativeFault)>,
     /// Set during a tick, to see a flag cleared by the host.
     clear_due: Option<&'static AtomicBool>,
+    /// When set, every second call of `memory` (the 2nd, the 4th, …) returns this shorter
+    /// buffer instead: a safe host that code must never run on past its length.
+    decoy: Option<Vec<u8>>,
+    /// Calls of `memory` so far.
+    memory_calls: usize,
+    /// When set, `op` and `copy` panic with this message.
+    panic: Option<&'static str>,
 }
 
 impl Host for TestHost {
     fn memory(&mut self) -> &mut [u8] {
-        &mut self.memory
+        self.memory_calls += 1;
+        match &mut self.decoy {
+            Some(decoy) if self.memory_calls.is_multiple_of(2) => decoy,
+            _ => &mut self.memory,
+        }
     }
     fn tick(&mut self, site: Site, counters: &mut Counters) -> Status {
         self.ticks.push((site, *counters));
@@ -62,6 +73,9 @@ impl Host for TestHost {
         Status::Ok
     }
     fn op(&mut self, site: Site, instance: u64, frame: u64, _: &mut Counters) -> Status {
+        if let Some(message) = self.panic {
+            panic!("{message}");
+        }
         self.ops.push((site, instance, frame));
         Status::Ok
     }
@@ -69,6 +83,9 @@ impl Host for TestHost {
         self.faults.push((site, fault));
     }
     fn copy(&mut self, to: u64, from: u64, bytes: u64) -> Status {
+        if let Some(message) = self.panic {
+            panic!("{message}");
+        }
         let (to, from, bytes) = (to as usize, from as usize, bytes as usize);
         let inside = |at: usize| {
             at.checked_add(bytes)
@@ -274,6 +291,9 @@ impl Fixture {
             ticks: Vec::new(),
             faults: Vec::new(),
             clear_due: None,
+            decoy: None,
+            memory_calls: 0,
+            panic: None,
         }
     }
 
