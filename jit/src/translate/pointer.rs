@@ -14,13 +14,22 @@ impl Translator<'_, '_> {
     /// The pointer value of a direct place (`Address`): a constant for the fixed regions, made
     /// at run time for instance and frame places, searching the spans in the runtime's order.
     pub(crate) fn address_of(&mut self, place: Operand) -> Value {
-        if let Some(at) = self.layout.absolute(place) {
-            // A fixed place matches its own region (or an earlier empty one) before the stack,
-            // so its pointer does not depend on the running task.
+        let fixed = self.layout.absolute(place);
+        if let Some(at) = fixed {
+            // A fixed place inside its own region (or at an earlier empty one) matches it
+            // before the stack, so its pointer does not depend on the running task. One that
+            // matches no fixed span (the zero-size place at the end of the constant pool,
+            // which is where the first task's stack starts) is searched at run time like an
+            // instance or frame place, as the interpreter's `pointer_to` does.
             let pointer = self.layout.pointer_to(at, 0);
-            return self.builder.ins().iconst(types::I64, pointer as i64);
+            if pointer != 0 {
+                return self.builder.ins().iconst(types::I64, pointer as i64);
+            }
         }
-        let at = self.absolute(place);
+        let at = match fixed {
+            Some(at) => self.builder.ins().iconst(types::I64, at as i64),
+            None => self.absolute(place),
+        };
         let stack_end = self.builder.ins().load(
             types::I64,
             context_flags(),

@@ -14,9 +14,13 @@ use crate::fault_kind;
 const INLINE_COPY_BYTES: u32 = 64;
 
 /// Whether nothing in `image` can write its constant pool, so that `Const` operands may be
-/// folded into the code (§5.2): no `Const` operand anywhere but in the places an instruction
-/// only reads (a pointer cannot reach the pool either, because no `Address` takes a `Const`
-/// place and a pointer cannot leave its region).
+/// folded into the code (§5.2). Two ways could write it: a `Const` destination (a call's
+/// output transfer and the instance of a direct `CallBlock` or `CallStdBlock` count as
+/// destinations), and a write through a pointer. ST allows pointer arithmetic, so a pointer
+/// can be moved from any region into the pool's (tag 6); the pool is therefore writable as
+/// soon as the image writes through any pointer at all: a `Store`, a block or method called on
+/// an instance pointer (`CallBlock` or `CallStdBlock` with `indirect`, `CallFunction` with an
+/// `instance`, `CallVirtual`), or a native block, which writes its `VAR_IN_OUT`s through theirs.
 pub(crate) fn constant_pool_is_read_only(image: &ProgramImage) -> bool {
     let writable = |operand: &Operand| matches!(operand, Operand::Const(_));
     image
@@ -40,22 +44,23 @@ pub(crate) fn constant_pool_is_read_only(image: &ProgramImage) -> bool {
             | Instr::Now { dst }
             | Instr::Clock { dst, .. }
             | Instr::ToText { dst, .. }
-            | Instr::FromText { dst, .. } => !writable(dst),
-            Instr::Address { dst, place } => !writable(dst) && !writable(place),
+            | Instr::FromText { dst, .. }
+            | Instr::Address { dst, .. } => !writable(dst),
             Instr::CallStdFunction { dst, .. } => !writable(&dst.0),
-            Instr::CallFunction { outputs, .. } | Instr::CallVirtual { outputs, .. } => {
-                outputs.iter().all(|transfer| !writable(&transfer.caller))
-            }
+            Instr::CallFunction {
+                outputs, instance, ..
+            } => instance.is_none() && outputs.iter().all(|transfer| !writable(&transfer.caller)),
             // A block runs on its instance, which it writes.
-            Instr::CallBlock { instance, .. } | Instr::CallStdBlock { instance, .. } => {
-                !writable(instance)
+            Instr::CallBlock {
+                instance, indirect, ..
             }
-            Instr::Jump { .. }
-            | Instr::JumpIf { .. }
-            | Instr::JumpIfNot { .. }
-            | Instr::Store { .. }
-            | Instr::Return
-            | Instr::Native { .. } => true,
+            | Instr::CallStdBlock {
+                instance, indirect, ..
+            } => !indirect && !writable(instance),
+            Instr::Store { .. } | Instr::CallVirtual { .. } | Instr::Native { .. } => false,
+            Instr::Jump { .. } | Instr::JumpIf { .. } | Instr::JumpIfNot { .. } | Instr::Return => {
+                true
+            }
         })
 }
 

@@ -153,16 +153,34 @@ mod reference {
     }
 }
 
+// The pure functions below are the interpreter's, written again for these tests from
+// `runtime/src/engine/lower.rs` (`real1`, `real2`), `engine/scalar.rs` (`Arith::expt`, `%`,
+// `powf`) and `stdlib/numeric.rs` (`to_bcd`, `from_bcd`): they only show that generated code
+// calls them with the right codes and values. The real check is N4's differential tests, where
+// the runtime hands the translator the interpreter's own functions.
+
 extern "C" fn real_unary_f32(op: u32, x: f32) -> f32 {
+    // REAL is computed in f64 and rounded back, as `Real::apply` does.
     real_unary_f64(op, f64::from(x)) as f32
 }
 extern "C" fn real_unary_f64(op: u32, x: f64) -> f64 {
-    match crate::unary_op_from_code(op) {
-        Some(UnaryOp::Ln) => x.ln(),
-        Some(UnaryOp::Round) => x.round(),
-        Some(UnaryOp::Sin) => x.sin(),
-        _ => x,
-    }
+    let f: fn(f64) -> f64 = match crate::unary_op_from_code(op) {
+        Some(UnaryOp::Sqrt) => f64::sqrt,
+        Some(UnaryOp::Ln) => f64::ln,
+        Some(UnaryOp::Log) => f64::log10,
+        Some(UnaryOp::Exp) => f64::exp,
+        Some(UnaryOp::Sin) => f64::sin,
+        Some(UnaryOp::Cos) => f64::cos,
+        Some(UnaryOp::Tan) => f64::tan,
+        Some(UnaryOp::Asin) => f64::asin,
+        Some(UnaryOp::Acos) => f64::acos,
+        Some(UnaryOp::Atan) => f64::atan,
+        Some(UnaryOp::Round) => f64::round,
+        Some(UnaryOp::Neg) => |v| -v,
+        Some(UnaryOp::Abs) => f64::abs,
+        Some(UnaryOp::Not | UnaryOp::ToBcd | UnaryOp::FromBcd) | None => |v| v,
+    };
+    f(x)
 }
 extern "C" fn real_binary_f32(op: u32, a: f32, b: f32) -> f32 {
     match crate::binary_op_from_code(op) {
@@ -179,19 +197,34 @@ extern "C" fn real_binary_f64(op: u32, a: f64, b: f64) -> f64 {
     }
 }
 extern "C" fn int_expt(a: u64, b: u64, ty: u32) -> u64 {
+    // `Arith::expt` of the type: a negative exponent gives 0 unless the base is 1 or −1 (the
+    // real result truncated toward zero); otherwise the wrapping power, the exponent's raw
+    // value saturated at `u32::MAX`.
     let ty = Elementary::from_tag(ty as u8).unwrap();
     let (base, exponent) = (reference::value(a, ty), reference::value(b, ty));
-    let mut result: i128 = 1;
-    for _ in 0..exponent.clamp(0, 200) {
-        result = (result * base) & i128::from(u64::MAX);
+    let mask = reference::mask(ty);
+    if exponent < 0 {
+        return match base {
+            1 => 1,
+            -1 if exponent % 2 == 0 => 1,
+            -1 => mask,
+            _ => 0,
+        };
     }
-    (result as u64) & reference::mask(ty)
+    let exponent = u32::try_from(b & mask).unwrap_or(u32::MAX);
+    (base as u64).wrapping_pow(exponent) & mask
 }
 extern "C" fn bcd(raw: u64, _: u32, to_bcd: u32) -> u64 {
     if to_bcd == 1 {
-        (0..16).fold(0, |bcd, nibble| {
-            bcd | ((raw / 10u64.pow(nibble) % 10) << (4 * nibble))
-        })
+        let (mut value, mut bcd) = (raw, 0u64);
+        for nibble in 0..16 {
+            bcd |= (value % 10) << (4 * nibble);
+            value /= 10;
+            if value == 0 {
+                break;
+            }
+        }
+        bcd
     } else {
         (0..16).rev().fold(0, |value, nibble| {
             value * 10 + ((raw >> (4 * nibble)) & 0xF).min(9)

@@ -127,6 +127,29 @@ fn pointers_are_made_and_resolved_in_every_region() {
 }
 
 #[test]
+fn the_address_past_the_constant_pool_is_the_stacks_as_in_the_interpreter() {
+    // `Const(len)` is a zero-size place verification accepts; it matches no fixed span, so
+    // the interpreter's `pointer_to` finds it at the start of the first task's stack.
+    let constants = vec![1, 2, 3, 4, 5, 6, 7, 8];
+    let code = vec![Instr::Address {
+        dst: I(0),
+        place: Operand::Const(constants.len() as u32),
+    }];
+    let fixture = Fixture::with_constants(code, constants);
+    let layout = fixture.layout;
+    let mut host = fixture.host();
+    assert_eq!(fixture.run(&mut host), Status::Ok);
+    let stack_end = layout.stacks + layout.stack_size;
+    let expected = layout.pointer_to(layout.constants + 8, stack_end);
+    assert_eq!(
+        expected,
+        2 << 56,
+        "the interpreter's rule, restated by the layout"
+    );
+    assert_eq!(host.get(0, 8), expected);
+}
+
+#[test]
 fn bad_pointers_fault() {
     let code = vec![
         Instr::Store {
