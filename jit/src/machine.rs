@@ -217,8 +217,11 @@ impl Drop for MachineCode {
 /// The system's memory provider, counting every byte allocated for the module (§9.2) and
 /// telling when its memory is freed.
 pub(crate) struct CountingMemory {
+    /// The provider that maps the memory.
     inner: SystemMemoryProvider,
+    /// Bytes allocated so far, shared with the `Code` that reports them.
     bytes: Arc<AtomicU64>,
+    /// Set once the memory is unmapped, shared with the `Code`'s `freed_flag`.
     freed: Arc<AtomicBool>,
 }
 

@@ -8,7 +8,9 @@ use program_image::Instr;
 /// The block each instruction index starts, if it starts one; index `code.len()` is the end,
 /// where running past the last instruction returns.
 pub(crate) struct Blocks {
+    /// Per instruction index (and `code.len()`): the block it starts, if any.
     starts: Vec<Option<Block>>,
+    /// The block past the last instruction, which returns `Ok`.
     end: Block,
 }
 

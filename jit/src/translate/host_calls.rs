@@ -132,6 +132,7 @@ impl Import {
 
 /// The imported functions declared in one module.
 pub(crate) struct Imports {
+    /// The module's id of each import, indexed by [`Import`].
     ids: Vec<FuncId>,
 }
 

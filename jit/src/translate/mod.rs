@@ -109,20 +109,29 @@ pub(crate) fn translate_pou(
 
 /// The state of one POU's translation.
 pub(crate) struct Translator<'a, 'b> {
+    /// The builder of the POU's function.
     pub(crate) builder: FunctionBuilder<'b>,
+    /// Where the regions lie in the engine's memory.
     pub(crate) layout: &'a Layout,
+    /// The module's ids of the callbacks and pure functions.
     imports: &'a Imports,
     /// The constant pool, when its values may be folded.
     folded_constants: Option<&'a [u8]>,
+    /// The module the function is made for, which declares the imports in it.
     module: &'a mut dyn cranelift_module::Module,
+    /// Per import: its reference in this function, once declared in it.
     refs: Vec<Option<FuncRef>>,
     /// This POU's index.
     pub(crate) pou: u32,
+    /// This POU's instructions.
     code: &'a [Instr],
+    /// The block each instruction starts.
     blocks: Blocks,
-    /// The context pointer, the instance and frame offsets (the function's parameters).
+    /// The context pointer (the function's first parameter).
     pub(crate) context: Value,
+    /// The instance's offset in the memory (the second parameter).
     pub(crate) instance: Value,
+    /// The frame's offset in the memory (the third parameter).
     pub(crate) frame: Value,
     /// The memory's address, reloaded after every call.
     memory: Variable,
