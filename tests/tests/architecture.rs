@@ -21,7 +21,12 @@ const ALLOWED_INTERNAL: &[(&str, &[&str])] = &[
     ("plcopen", &["project_model"]),
     ("assets", &[]),
     ("compiler", &["project_model", "program_image"]),
-    ("runtime", &["program_image", "motion", "online_protocol"]),
+    (
+        "runtime",
+        &["program_image", "motion", "online_protocol", "jit"],
+    ),
+    // The native engine: the translator and the only unsafe module (docs/native-engine.md §1.1).
+    ("jit", &["program_image"]),
     ("online", &["program_image", "online_protocol"]),
     (
         "editor",
@@ -64,6 +69,12 @@ const RESTRICTED: &[(&str, &[&str])] = &[
     ("tokio-modbus", &["app", "online", "runtime"]),
     // Serial ports belong to the soft PLC: its RTU slave and its Modbus master's serial lines.
     ("tokio-serial", &["runtime"]),
+    // The code generator of the native engine stays behind `jit`'s audit boundary.
+    ("cranelift-codegen", &["jit"]),
+    ("cranelift-frontend", &["jit"]),
+    ("cranelift-jit", &["jit"]),
+    ("cranelift-module", &["jit"]),
+    ("cranelift-native", &["jit"]),
     // Tree-sitter serves editor highlighting and folding only; diagnostics come from the compiler.
     ("tree-sitter", &["tree-sitter-rivet-st", "editor"]),
 ];
@@ -107,6 +118,112 @@ fn workspace_dependencies_of_kind(kind: Option<&str>) -> BTreeMap<String, BTreeS
         crates.insert(name, dependencies);
     }
     crates
+}
+
+/// The crates that may not take the workspace's lints (whose `unsafe_code = "forbid"` cannot be
+/// lifted for one item) and deny unsafe code in their own table instead: the native engine
+/// (`jit::machine`) and the grammar's one `unsafe extern` declaration.
+const UNSAFE_DENIED_NOT_FORBIDDEN: &[&str] = &["jit", "tree-sitter-rivet-st"];
+
+/// Each workspace crate's name with the text of its `Cargo.toml`.
+fn workspace_manifests() -> Vec<(String, String)> {
+    let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
+    let output = Command::new(cargo)
+        .args([
+            "metadata",
+            "--format-version",
+            "1",
+            "--no-deps",
+            "--offline",
+        ])
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .expect("cargo metadata runs");
+    let metadata: Value = serde_json::from_slice(&output.stdout).expect("cargo metadata is JSON");
+    metadata["packages"]
+        .as_array()
+        .expect("packages")
+        .iter()
+        .map(|package| {
+            let path = package["manifest_path"].as_str().expect("manifest_path");
+            let text = std::fs::read_to_string(path).expect("a readable Cargo.toml");
+            (package["name"].as_str().expect("name").to_owned(), text)
+        })
+        .collect()
+}
+
+/// Whether a manifest takes the workspace's lints (`[lints]` then `workspace = true`).
+fn takes_workspace_lints(manifest: &str) -> bool {
+    let mut lines = manifest.lines().map(str::trim);
+    while let Some(line) = lines.next() {
+        if line == "[lints]" {
+            return lines.next() == Some("workspace = true");
+        }
+    }
+    false
+}
+
+/// Whether a manifest's own `[lints.rust]` table denies unsafe code.
+fn denies_unsafe_code(manifest: &str) -> bool {
+    let Some((_, rust)) = manifest.split_once("[lints.rust]") else {
+        return false;
+    };
+    let table = rust.split("\n[").next().unwrap_or_default();
+    table
+        .lines()
+        .any(|line| line.replace(' ', "") == "unsafe_code=\"deny\"")
+}
+
+#[test]
+fn unsafe_code_is_forbidden_everywhere_but_in_the_two_crates_that_deny_it() {
+    for (name, manifest) in workspace_manifests() {
+        if UNSAFE_DENIED_NOT_FORBIDDEN.contains(&name.as_str()) {
+            assert!(
+                !takes_workspace_lints(&manifest) && denies_unsafe_code(&manifest),
+                "{name} must deny unsafe code in its own [lints.rust] table"
+            );
+        } else {
+            assert!(
+                takes_workspace_lints(&manifest),
+                "{name} must take the workspace's lints ([lints] workspace = true), which forbid unsafe code"
+            );
+        }
+    }
+    // Inside `jit`, only `machine.rs` allows it (docs/native-engine.md §1.1).
+    let jit_source = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../jit/src");
+    let mut allowing = Vec::new();
+    let mut folders = vec![jit_source.clone()];
+    while let Some(folder) = folders.pop() {
+        for entry in std::fs::read_dir(&folder).expect("jit/src is readable") {
+            let path = entry.expect("an entry").path();
+            if path.is_dir() {
+                folders.push(path);
+            } else if std::fs::read_to_string(&path)
+                .expect("a source file")
+                .contains("allow(unsafe_code)")
+            {
+                allowing.push(path.strip_prefix(&jit_source).expect("inside").to_owned());
+            }
+        }
+    }
+    assert_eq!(allowing, vec![std::path::PathBuf::from("machine.rs")]);
+}
+
+#[test]
+fn the_lint_checks_read_manifests_as_written() {
+    assert!(takes_workspace_lints(
+        "[package]\nname = \"x\"\n\n[lints]\nworkspace = true\n"
+    ));
+    assert!(!takes_workspace_lints(
+        "[lints.rust]\nunsafe_code = \"deny\"\n"
+    ));
+    assert!(denies_unsafe_code(
+        "[lints.rust]\nmissing_docs = \"warn\"\nunsafe_code = \"deny\"\n"
+    ));
+    assert!(!denies_unsafe_code(
+        "[lints.rust]\nunsafe_code = \"allow\"\n"
+    ));
+    assert!(!denies_unsafe_code("[lints]\nworkspace = true\n"));
 }
 
 #[test]

@@ -1,0 +1,336 @@
+//! Building the code module of one image: every POU translated and defined, the module
+//! finalised, and the code-size count (`docs/native-engine.md` §8.2, §9.2).
+
+use std::panic::AssertUnwindSafe;
+use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
+use std::sync::{Arc, Mutex};
+
+use cranelift_frontend::FunctionBuilderContext;
+use cranelift_jit::{JITBuilder, JITModule};
+use cranelift_module::{Linkage, Module};
+use program_image::ProgramImage;
+
+use crate::isa::{NativeUnsupported, host_isa};
+use crate::layout::Layout;
+use crate::machine::{self, CountingMemory, MachineCode};
+use crate::translate::host_calls::{Imports, PureFunctions, libcall_name, libcall_symbols};
+use crate::translate::{Environment, pou_signature, translate_pou};
+use crate::{Counters, Entry, Host, Status};
+
+pub use crate::translate::Untranslated;
+
+/// The translation of an image into machine code (`docs/native-engine.md` §8).
+#[derive(Debug)]
+pub struct Translation;
+
+impl Translation {
+    /// Translates every POU of `image`, laid out in memory as `layout` says, with the
+    /// runtime's `pure` functions. POUs the translator refuses are listed in
+    /// [`Code::untranslated`] and run in the interpreter; the whole image is refused only when
+    /// no machine code can be made at all.
+    #[allow(clippy::new_ret_no_self)] // The translation is a step, its result the code.
+    pub fn new(
+        image: &ProgramImage,
+        layout: &Layout,
+        pure: &PureFunctions,
+    ) -> Result<Code, NativeUnsupported> {
+        Self::with_symbols(image, layout, our_symbols(pure))
+    }
+
+    /// [`Translation::new`] with the symbols the module may import given as a table of names
+    /// and addresses; the tests leave one out to see it refused as foreign.
+    pub(crate) fn with_symbols(
+        image: &ProgramImage,
+        layout: &Layout,
+        table: Vec<(&'static str, usize)>,
+    ) -> Result<Code, NativeUnsupported> {
+        // The translator relies on verification (operands inside their regions, jump targets
+        // inside the POU, bits below their widths, §2); checking again keeps `Code` sound
+        // whatever image it is given.
+        image.verify()?;
+        layout.check(image)?;
+        let isa = host_isa()?;
+        let code_bytes = Arc::new(AtomicU64::new(0));
+        let freed = Arc::new(AtomicBool::new(false));
+        let symbols = Symbols::default();
+        let mut builder = JITBuilder::with_isa(isa, Box::new(libcall_name));
+        // Every name the module asks for comes here (the builder's own table is left empty,
+        // and this lookup is tried before the system's symbol search, which is therefore never
+        // reached), so the names it resolved are known and a foreign one refuses the module.
+        let lookup = symbols.clone();
+        builder.symbol_lookup_fn(Box::new(move |name| Some(lookup.resolve(name, &table))));
+        builder.memory_provider(Box::new(CountingMemory::new(
+            Arc::clone(&code_bytes),
+            Arc::clone(&freed),
+        )));
+        let mut module = JITModule::new(builder);
+        let imports = match Imports::declare(&mut module) {
+            Ok(imports) => imports,
+            Err(error) => {
+                machine::discard(module);
+                return Err(NativeUnsupported::Module(error));
+            }
+        };
+        let environment = Environment {
+            pous: &image.pous,
+            layout,
+            imports: &imports,
+            folded_constants: crate::translate::scalar::constant_pool_is_read_only(image)
+                .then_some(image.constants.as_slice()),
+            signature: pou_signature(module.make_signature()),
+        };
+        let mut function_context = FunctionBuilderContext::new();
+        let mut codegen = module.make_context();
+        let mut defined = Vec::with_capacity(image.pous.len());
+        let mut untranslated = Vec::new();
+        #[cfg(test)]
+        let mut listings = Vec::new();
+        for (index, pou) in image.pous.iter().enumerate() {
+            let index = index as u32;
+            let refused = |reason: String| Untranslated {
+                pou: index,
+                name: pou.name.clone(),
+                instruction: None,
+                reason,
+            };
+            // A translator bug must not take the loading thread down: the POU falls back to
+            // the interpreter with the reason (§8.2).
+            let translated = std::panic::catch_unwind(AssertUnwindSafe(|| {
+                translate_pou(&environment, index, &mut function_context, &mut module)
+            }));
+            let function = match translated {
+                Ok(Ok(function)) => function,
+                Ok(Err(refusal)) => {
+                    untranslated.push(refusal);
+                    defined.push(None);
+                    continue;
+                }
+                Err(_) => {
+                    untranslated.push(refused(
+                        "the translator failed on it (an internal error)".into(),
+                    ));
+                    defined.push(None);
+                    function_context = FunctionBuilderContext::new();
+                    continue;
+                }
+            };
+            let id = match module.declare_function(
+                &format!("rivet_pou_{index}"),
+                Linkage::Local,
+                &environment.signature,
+            ) {
+                Ok(id) => id,
+                Err(error) => {
+                    untranslated.push(refused(error.to_string()));
+                    defined.push(None);
+                    continue;
+                }
+            };
+            codegen.func = function;
+            // The tests read the machine code's listing (§7 rule 5: no reachable trap).
+            codegen.set_disasm(cfg!(test));
+            // A Cranelift panic must not take the loading thread down either (§8.2).
+            let result = std::panic::catch_unwind(AssertUnwindSafe(|| {
+                module.define_function(id, &mut codegen).map_err(Box::new)
+            }));
+            #[cfg(test)]
+            listings.push(
+                codegen
+                    .compiled_code()
+                    .and_then(|compiled| compiled.vcode.clone())
+                    .unwrap_or_default(),
+            );
+            module.clear_context(&mut codegen);
+            match result {
+                Ok(Ok(())) => defined.push(Some(id)),
+                Ok(Err(error)) => {
+                    untranslated.push(refused(format!("{error:?}")));
+                    defined.push(None);
+                }
+                Err(_) => {
+                    untranslated.push(refused(
+                        "the code generator failed on it (an internal error)".into(),
+                    ));
+                    defined.push(None);
+                    codegen = module.make_context();
+                }
+            }
+        }
+        if let Err(error) = module.finalize_definitions() {
+            machine::discard(module);
+            return Err(NativeUnsupported::Module(Box::new(error)));
+        }
+        if let Some(name) = symbols.foreign() {
+            machine::discard(module);
+            return Err(NativeUnsupported::ForeignSymbol(name));
+        }
+        let sizes = image
+            .pous
+            .iter()
+            .map(|pou| (u64::from(pou.instance_size), u64::from(pou.frame_size)))
+            .collect();
+        let machine = MachineCode::new(module, &defined, &environment.signature, sizes, *layout);
+        for (index, pou) in image.pous.iter().enumerate() {
+            let index = index as u32;
+            if defined[index as usize].is_some() && !machine.has(index) {
+                untranslated.push(Untranslated {
+                    pou: index,
+                    name: pou.name.clone(),
+                    instruction: None,
+                    reason:
+                        "its function was not declared with the POU signature (an internal error)"
+                            .into(),
+                });
+            }
+        }
+        Ok(Code {
+            untranslated,
+            code_bytes: code_bytes.load(Ordering::Relaxed),
+            imported: symbols.resolved(),
+            freed,
+            #[cfg(test)]
+            listings,
+            machine,
+        })
+    }
+}
+
+/// The names and addresses of every symbol generated code may import: the callbacks, the
+/// runtime's pure functions and the float rounding library calls ([`crate::OUR_SYMBOLS`]).
+pub(crate) fn our_symbols(pure: &PureFunctions) -> Vec<(&'static str, usize)> {
+    machine::callback_symbols()
+        .into_iter()
+        .chain(pure.symbols())
+        .chain(libcall_symbols())
+        .map(|(name, address)| (name, address as usize))
+        .collect()
+}
+
+/// The names a module asked for while it was finalised, shared with its symbol lookup.
+#[derive(Clone, Default)]
+struct Symbols {
+    /// Every name asked for, in order, and whether it was in the table.
+    names: Arc<Mutex<Vec<(String, bool)>>>,
+    /// Whether any name was not in the table; an atomic, so that a poisoned lock cannot hide
+    /// it.
+    foreign: Arc<AtomicBool>,
+}
+
+impl Symbols {
+    /// The address of `name` in `table`; a foreign name is recorded and answered with an
+    /// address that is never called, because the module is then refused.
+    fn resolve(&self, name: &str, table: &[(&'static str, usize)]) -> *const u8 {
+        let found = table.iter().find(|(known, _)| *known == name);
+        if found.is_none() {
+            self.foreign.store(true, Ordering::Relaxed);
+        }
+        self.names
+            .lock()
+            .unwrap_or_else(|poisoned| poisoned.into_inner())
+            .push((name.to_string(), found.is_some()));
+        found.map_or_else(machine::foreign_symbol, |(_, address)| {
+            *address as *const u8
+        })
+    }
+
+    /// The first foreign name asked for, if any.
+    fn foreign(&self) -> Option<String> {
+        if !self.foreign.load(Ordering::Relaxed) {
+            return None;
+        }
+        let names = self
+            .names
+            .lock()
+            .unwrap_or_else(|poisoned| poisoned.into_inner());
+        // Refused even if the name itself was lost: the flag is what decides.
+        Some(
+            names
+                .iter()
+                .find(|(_, ours)| !ours)
+                .map(|(name, _)| name.clone())
+                .unwrap_or_default(),
+        )
+    }
+
+    /// Every name asked for.
+    fn resolved(&self) -> Vec<String> {
+        self.names
+            .lock()
+            .unwrap_or_else(|poisoned| poisoned.into_inner())
+            .iter()
+            .map(|(name, _)| name.clone())
+            .collect()
+    }
+}
+
+/// The machine code of one image: a function per translated POU (`docs/native-engine.md`
+/// §1.3). Freed when dropped.
+pub struct Code {
+    /// The POUs that run in the interpreter, with the reasons.
+    untranslated: Vec<Untranslated>,
+    /// Every byte allocated for the machine code.
+    code_bytes: u64,
+    /// The symbols the module resolved when it was finalised.
+    imported: Vec<String>,
+    /// Set when the machine code is unmapped.
+    freed: Arc<AtomicBool>,
+    /// The machine code of each POU as text, for the tests.
+    #[cfg(test)]
+    pub(crate) listings: Vec<String>,
+    /// The functions and the module; its `Drop` frees the machine code.
+    machine: MachineCode,
+}
+
+impl std::fmt::Debug for Code {
+    fn fmt(&self, formatter: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        formatter
+            .debug_struct("Code")
+            .field("untranslated", &self.untranslated)
+            .field("code_bytes", &self.code_bytes)
+            .field("imported", &self.imported)
+            .finish()
+    }
+}
+
+impl Code {
+    /// Whether POU `pou` has machine code.
+    pub fn has(&self, pou: u32) -> bool {
+        self.machine.has(pou)
+    }
+
+    /// The POUs that run in the interpreter, with the reasons.
+    pub fn untranslated(&self) -> &[Untranslated] {
+        &self.untranslated
+    }
+
+    /// Every byte allocated for the machine code (text, read-only data, alignment; §9.2).
+    pub fn code_bytes(&self) -> u64 {
+        self.code_bytes
+    }
+
+    /// The symbols the module resolved when it was finalised: the callbacks, pure functions
+    /// and library calls its code calls (each one of [`crate::OUR_SYMBOLS`], or the image
+    /// would have been refused).
+    pub fn imported_symbols(&self) -> &[String] {
+        &self.imported
+    }
+
+    /// A flag set once the machine code is unmapped (when this `Code` is dropped).
+    pub fn freed_flag(&self) -> Arc<AtomicBool> {
+        Arc::clone(&self.freed)
+    }
+
+    /// Runs POU `pou`'s machine code on the host's memory, from `entry`, with the counters
+    /// carried in and out. A POU without machine code, or bases outside the memory (the checks
+    /// of the interpreter's `push_frame`), fault at instruction 0: `StackOverflow` for a frame
+    /// past the stack's end, `Memory` otherwise.
+    pub fn run(
+        &self,
+        pou: u32,
+        host: &mut dyn Host,
+        entry: Entry<'_>,
+        counters: &mut Counters,
+    ) -> Status {
+        self.machine.run(pou, host, &entry, counters)
+    }
+}

@@ -1,0 +1,57 @@
+//! Instruction indices to Cranelift blocks: a block starts at instruction 0, at every jump
+//! target and after every instruction that branches or returns (`docs/native-engine.md` §3).
+
+use cranelift_codegen::ir::Block;
+use cranelift_frontend::FunctionBuilder;
+use program_image::Instr;
+
+/// The block each instruction index starts, if it starts one; index `code.len()` is the end,
+/// where running past the last instruction returns.
+pub(crate) struct Blocks {
+    /// Per instruction index (and `code.len()`): the block it starts, if any.
+    starts: Vec<Option<Block>>,
+    /// The block past the last instruction, which returns `Ok`.
+    end: Block,
+}
+
+impl Blocks {
+    /// Creates a block for every instruction that starts one.
+    pub(crate) fn new(code: &[Instr], builder: &mut FunctionBuilder<'_>) -> Self {
+        let mut starts = vec![None; code.len() + 1];
+        let mut mark = |index: usize, builder: &mut FunctionBuilder<'_>| {
+            if let Some(slot) = starts.get_mut(index)
+                && slot.is_none()
+            {
+                *slot = Some(builder.create_block());
+            }
+        };
+        mark(0, builder);
+        for (index, instr) in code.iter().enumerate() {
+            match instr {
+                Instr::Jump { target }
+                | Instr::JumpIf { target, .. }
+                | Instr::JumpIfNot { target, .. } => {
+                    mark(*target as usize, builder);
+                    mark(index + 1, builder);
+                }
+                Instr::Return => mark(index + 1, builder),
+                _ => {}
+            }
+        }
+        let end = builder.create_block();
+        if let Some(last) = starts.last_mut() {
+            *last = Some(end);
+        }
+        Self { starts, end }
+    }
+
+    /// The end block, where running past the last instruction returns.
+    pub(crate) fn end(&self) -> Block {
+        self.end
+    }
+
+    /// The block instruction `index` starts, if any.
+    pub(crate) fn at(&self, index: usize) -> Option<Block> {
+        self.starts.get(index).copied().flatten()
+    }
+}

@@ -1,0 +1,528 @@
+//! One POU's instructions into one Cranelift function (`docs/native-engine.md` §3, §5).
+//!
+//! The function has the one signature of §4.1, `(context, instance, frame) -> status`. The
+//! memory's address lives in a variable reloaded from the context after every call (§7 rule 3),
+//! the watchdog budget in a variable stored to the context around every call (§4.2).
+
+mod blocks;
+mod call;
+pub(crate) mod host_calls;
+mod pointer;
+mod real;
+pub(crate) mod scalar;
+
+use cranelift_codegen::ir::condcodes::IntCC;
+use cranelift_codegen::ir::{
+    AbiParam, Block, FuncRef, Function, InstBuilder, MemFlagsData, Signature, Type, UserFuncName,
+    Value, types,
+};
+use cranelift_frontend::{FunctionBuilder, FunctionBuilderContext, Variable};
+use program_image::{Elementary, Instr, Operand, Pou};
+
+use crate::context;
+use crate::layout::Layout;
+use blocks::Blocks;
+use host_calls::{Import, Imports};
+
+/// A POU the translator leaves to the interpreter, with the reason (`docs/native-engine.md`
+/// §8.2).
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("POU '{name}' (index {pou}) runs in the interpreter: {}{reason}", instruction_text(*.instruction))]
+pub struct Untranslated {
+    /// The POU's index in the image.
+    pub pou: u32,
+    /// The POU's name.
+    pub name: String,
+    /// The instruction that could not be translated, when one could be named.
+    pub instruction: Option<u32>,
+    /// Why.
+    pub reason: String,
+}
+
+fn instruction_text(instruction: Option<u32>) -> String {
+    instruction.map_or(String::new(), |index| format!("instruction {index}: "))
+}
+
+/// The one signature of every POU function: `(context, instance, frame) -> status`.
+pub(crate) fn pou_signature(mut signature: Signature) -> Signature {
+    signature.params.push(AbiParam::new(types::I64));
+    signature.params.push(AbiParam::new(types::I64));
+    signature.params.push(AbiParam::new(types::I64));
+    signature.returns.push(AbiParam::new(types::I32));
+    signature
+}
+
+/// The flags of every access to the engine's memory: never trapping (every access is checked
+/// or verified), never assumed aligned (the layout does not promise it).
+pub(crate) fn memory_flags() -> MemFlagsData {
+    MemFlagsData::new().with_notrap()
+}
+
+/// The flags of accesses to the context, a `#[repr(C)]` structure on `Code::run`'s stack.
+pub(crate) fn context_flags() -> MemFlagsData {
+    MemFlagsData::trusted()
+}
+
+/// What the translation of every POU shares.
+pub(crate) struct Environment<'a> {
+    /// The image's POUs.
+    pub(crate) pous: &'a [Pou],
+    /// Where the regions lie.
+    pub(crate) layout: &'a Layout,
+    /// The imported callbacks and pure functions.
+    pub(crate) imports: &'a Imports,
+    /// The constant pool, when nothing can write it, so its values may be folded (§5.2).
+    pub(crate) folded_constants: Option<&'a [u8]>,
+    /// The signature of a POU function on this machine.
+    pub(crate) signature: Signature,
+}
+
+/// Translates POU `index` into a function, or says why it cannot.
+pub(crate) fn translate_pou(
+    environment: &Environment<'_>,
+    index: u32,
+    function_context: &mut FunctionBuilderContext,
+    module: &mut dyn cranelift_module::Module,
+) -> Result<Function, Untranslated> {
+    let pou = environment
+        .pous
+        .get(index as usize)
+        .ok_or_else(|| Untranslated {
+            pou: index,
+            name: String::new(),
+            instruction: None,
+            reason: "no such POU".into(),
+        })?;
+    let mut function =
+        Function::with_name_signature(UserFuncName::user(0, index), environment.signature.clone());
+    {
+        let builder = FunctionBuilder::new(&mut function, function_context);
+        let config = module.target_config();
+        let mut translator = Translator::new(environment, index, pou, builder, module);
+        translator.body();
+        let Translator { mut builder, .. } = translator;
+        builder.seal_all_blocks();
+        builder.finalize(config);
+    }
+    Ok(function)
+}
+
+/// The state of one POU's translation.
+pub(crate) struct Translator<'a, 'b> {
+    /// The builder of the POU's function.
+    pub(crate) builder: FunctionBuilder<'b>,
+    /// Where the regions lie in the engine's memory.
+    pub(crate) layout: &'a Layout,
+    /// The module's ids of the callbacks and pure functions.
+    imports: &'a Imports,
+    /// The constant pool, when its values may be folded.
+    folded_constants: Option<&'a [u8]>,
+    /// The module the function is made for, which declares the imports in it.
+    module: &'a mut dyn cranelift_module::Module,
+    /// Per import: its reference in this function, once declared in it.
+    refs: Vec<Option<FuncRef>>,
+    /// This POU's index.
+    pub(crate) pou: u32,
+    /// This POU's instructions.
+    code: &'a [Instr],
+    /// The block each instruction starts.
+    blocks: Blocks,
+    /// The context pointer (the function's first parameter).
+    pub(crate) context: Value,
+    /// The instance's offset in the memory (the second parameter).
+    pub(crate) instance: Value,
+    /// The frame's offset in the memory (the third parameter).
+    pub(crate) frame: Value,
+    /// The memory's address, reloaded after every call.
+    memory: Variable,
+    /// Backward jumps left before the watchdog looks at the clock.
+    budget: Variable,
+    /// The instruction being translated.
+    pub(crate) pc: u32,
+    /// Back-edge blocks of the current instruction and where each goes, to emit once the
+    /// current block is terminated.
+    back_edges: Vec<(Block, Block)>,
+}
+
+impl<'a, 'b> Translator<'a, 'b> {
+    fn new(
+        environment: &Environment<'a>,
+        index: u32,
+        pou: &'a Pou,
+        mut builder: FunctionBuilder<'b>,
+        module: &'a mut dyn cranelift_module::Module,
+    ) -> Self {
+        let blocks = Blocks::new(&pou.code, &mut builder);
+        let entry = builder.create_block();
+        builder.append_block_params_for_function_params(entry);
+        builder.switch_to_block(entry);
+        let params = builder.block_params(entry).to_vec();
+        let (context, instance, frame) = (params[0], params[1], params[2]);
+        let memory = builder.declare_var(types::I64);
+        let budget = builder.declare_var(types::I32);
+        let mut translator = Self {
+            builder,
+            layout: environment.layout,
+            imports: environment.imports,
+            folded_constants: environment.folded_constants,
+            module,
+            refs: vec![None; Import::COUNT],
+            pou: index,
+            code: &pou.code,
+            blocks,
+            context,
+            instance,
+            frame,
+            memory,
+            budget,
+            pc: 0,
+            back_edges: Vec::new(),
+        };
+        translator.reload_memory();
+        let budget_now =
+            translator
+                .builder
+                .ins()
+                .load(types::I32, context_flags(), context, context::BUDGET);
+        translator.builder.def_var(budget, budget_now);
+        translator
+    }
+
+    /// Emits every instruction, then the end (running past the last instruction returns).
+    fn body(&mut self) {
+        let first = self.blocks.at(0);
+        if let Some(first) = first {
+            self.builder.ins().jump(first, &[]);
+        }
+        let mut reachable = false;
+        for index in 0..self.code.len() {
+            if let Some(block) = self.blocks.at(index) {
+                if reachable {
+                    self.builder.ins().jump(block, &[]);
+                }
+                self.builder.switch_to_block(block);
+                reachable = true;
+            }
+            if !reachable {
+                continue;
+            }
+            self.pc = index as u32;
+            let instr = &self.code[index];
+            reachable = self.instruction(instr);
+            self.emit_back_edges();
+        }
+        if let Some(end) = self.blocks.at(self.code.len()) {
+            if reachable {
+                self.builder.ins().jump(end, &[]);
+            }
+            self.builder.switch_to_block(end);
+            self.return_status(0);
+        }
+    }
+
+    /// Emits one instruction; false when control does not fall through to the next.
+    fn instruction(&mut self, instr: &Instr) -> bool {
+        match instr {
+            Instr::Jump { target } => {
+                let block = self.branch_target(*target);
+                self.builder.ins().jump(block, &[]);
+                false
+            }
+            Instr::JumpIf { cond, target } | Instr::JumpIfNot { cond, target } => {
+                let value = self.load(types::I8, *cond);
+                let taken = self.branch_target(*target);
+                let next = self.next_block();
+                if matches!(instr, Instr::JumpIf { .. }) {
+                    self.builder.ins().brif(value, taken, &[], next, &[]);
+                } else {
+                    self.builder.ins().brif(value, next, &[], taken, &[]);
+                }
+                false
+            }
+            Instr::Return => {
+                self.return_status(0);
+                false
+            }
+            other => {
+                if !self.inline(other) {
+                    self.host_op();
+                }
+                true
+            }
+        }
+    }
+
+    /// Emits an instruction inline, or returns false to hand it to the host.
+    fn inline(&mut self, instr: &Instr) -> bool {
+        match instr {
+            Instr::Move { ty, dst, src } => {
+                let ty = int_type(*ty);
+                let value = self.load(ty, *src);
+                self.store(value, *dst);
+                true
+            }
+            Instr::Copy { size, dst, src } => {
+                let (to, from) = (self.absolute(*dst), self.absolute(*src));
+                self.copy_bytes(to, from, *size);
+                true
+            }
+            Instr::Unary { op, ty, dst, src } => self.unary(*op, *ty, *dst, *src),
+            Instr::Binary { op, ty, dst, a, b } => self.binary(*op, *ty, *dst, *a, *b),
+            Instr::Compare { op, ty, dst, a, b } => self.compare(*op, *ty, *dst, *a, *b),
+            Instr::Convert { from, to, dst, src } => self.convert(*from, *to, *dst, *src, false),
+            Instr::Trunc { from, to, dst, src } => self.convert(*from, *to, *dst, *src, true),
+            Instr::GetBit { ty, dst, src, bit } => {
+                let value = self.load(int_type(*ty), *src);
+                let shifted = self.builder.ins().ushr_imm_u(value, i64::from(*bit));
+                let one = self.builder.ins().band_imm_u(shifted, 1);
+                let byte = self.resized(one, int_type(*ty), types::I8, false);
+                self.store(byte, *dst);
+                true
+            }
+            Instr::SetBit { ty, dst, bit, src } => {
+                let ty = int_type(*ty);
+                let value = self.load(ty, *dst);
+                let on = self.load(types::I8, *src);
+                let mask = 1u64 << bit;
+                let set = self.builder.ins().bor_imm_u(value, mask as i64);
+                let cleared = self.builder.ins().band_imm_u(value, !mask as i64);
+                let result = self.builder.ins().select(on, set, cleared);
+                self.store(result, *dst);
+                true
+            }
+            Instr::Address { dst, place } => {
+                let pointer = self.address_of(*place);
+                self.store(pointer, *dst);
+                true
+            }
+            Instr::Element {
+                dst,
+                base,
+                index,
+                index_ty,
+                low,
+                count,
+                stride,
+            } => {
+                self.element(*dst, *base, (*index, *index_ty), *low, *count, *stride);
+                true
+            }
+            Instr::Offset { dst, base, offset } => {
+                self.offset(*dst, *base, *offset);
+                true
+            }
+            Instr::Load { size, dst, ptr } => {
+                let from = self.resolve(*ptr, *size);
+                let to = self.absolute(*dst);
+                self.copy_bytes(to, from, *size);
+                true
+            }
+            Instr::Store { size, ptr, src } => {
+                let to = self.resolve(*ptr, *size);
+                let from = self.absolute(*src);
+                self.copy_bytes(to, from, *size);
+                true
+            }
+            Instr::Now { dst } => {
+                let now = self.builder.ins().load(
+                    types::I64,
+                    context_flags(),
+                    self.context,
+                    context::NOW_NS,
+                );
+                self.store(now, *dst);
+                true
+            }
+            // Calls, the runtime's blocks and functions, strings, the real clock and open
+            // arrays run in the interpreter in this wave (§5.1 "host").
+            _ => false,
+        }
+    }
+
+    /// The block after the current instruction (every branch ends a block, `blocks.rs`).
+    fn next_block(&self) -> Block {
+        self.blocks
+            .at(self.pc as usize + 1)
+            .unwrap_or(self.blocks.end())
+    }
+
+    /// The block a jump to `target` goes to: the target's own block for a forward jump, a
+    /// block with the back-edge check of §4.5 for a backward one (emitted once the current
+    /// block is terminated, by [`Self::emit_back_edges`]).
+    fn branch_target(&mut self, target: u32) -> Block {
+        let destination = self.blocks.at(target as usize).unwrap_or(self.blocks.end());
+        if target > self.pc {
+            return destination;
+        }
+        let back_edge = self.builder.create_block();
+        self.back_edges.push((back_edge, destination));
+        back_edge
+    }
+
+    /// Emits the back-edge blocks the current instruction branches to: `budget -= 1`, and
+    /// when the flag `due` is set or the budget is spent, `rivet_jit_tick` at this site.
+    fn emit_back_edges(&mut self) {
+        for (back_edge, destination) in std::mem::take(&mut self.back_edges) {
+            self.builder.switch_to_block(back_edge);
+            let budget = self.builder.use_var(self.budget);
+            let budget = self.builder.ins().iadd_imm_s(budget, -1);
+            self.builder.def_var(self.budget, budget);
+            let due_pointer =
+                self.builder
+                    .ins()
+                    .load(types::I64, context_flags(), self.context, context::DUE);
+            // An atomic load, so that the flag is read anew at every back-edge (§4.5).
+            let due = self
+                .builder
+                .ins()
+                .atomic_load(types::I8, context_flags(), due_pointer);
+            let spent = self.builder.ins().icmp_imm_u(IntCC::Equal, budget, 0);
+            let due_set = self.builder.ins().icmp_imm_u(IntCC::NotEqual, due, 0);
+            let slow_needed = self.builder.ins().bor(spent, due_set);
+            let slow = self.builder.create_block();
+            self.builder.set_cold_block(slow);
+            self.builder
+                .ins()
+                .brif(slow_needed, slow, &[], destination, &[]);
+            self.builder.switch_to_block(slow);
+            let pou = self.builder.ins().iconst(types::I32, i64::from(self.pou));
+            let pc = self.builder.ins().iconst(types::I32, i64::from(self.pc));
+            let status = self.call_host(Import::Tick, &[self.context, pou, pc]);
+            self.return_if_faulted(status);
+            self.builder.ins().jump(destination, &[]);
+        }
+    }
+
+    /// Returns `Faulted` when `status` is not 0, else goes on in a new block.
+    pub(crate) fn return_if_faulted(&mut self, status: Value) {
+        let faulted = self.builder.create_block();
+        let next = self.builder.create_block();
+        self.builder.set_cold_block(faulted);
+        self.builder.ins().brif(status, faulted, &[], next, &[]);
+        self.builder.switch_to_block(faulted);
+        self.return_status(1);
+        self.builder.switch_to_block(next);
+    }
+
+    /// Branches to a cold block that records `kind` with `a`, `b`, `c` at the current
+    /// instruction and returns `Faulted` when `failed` is true; goes on otherwise.
+    pub(crate) fn fault_if(&mut self, failed: Value, kind: u32, details: [Option<Value>; 3]) {
+        let faulted = self.builder.create_block();
+        let next = self.builder.create_block();
+        self.builder.set_cold_block(faulted);
+        self.builder.ins().brif(failed, faulted, &[], next, &[]);
+        self.builder.switch_to_block(faulted);
+        self.record_fault(kind, details);
+        self.builder.switch_to_block(next);
+    }
+
+    /// Records a fault at the current instruction and returns `Faulted`.
+    pub(crate) fn record_fault(&mut self, kind: u32, details: [Option<Value>; 3]) {
+        let pou = self.builder.ins().iconst(types::I32, i64::from(self.pou));
+        let pc = self.builder.ins().iconst(types::I32, i64::from(self.pc));
+        let kind = self.builder.ins().iconst(types::I32, i64::from(kind));
+        let mut arguments = vec![self.context, pou, pc, kind];
+        for detail in details {
+            let value = detail.unwrap_or_else(|| self.builder.ins().iconst(types::I64, 0));
+            arguments.push(value);
+        }
+        self.call_host(Import::Fault, &arguments);
+        self.return_status(1);
+    }
+
+    /// Stores the budget back into the context and returns `status`.
+    pub(crate) fn return_status(&mut self, status: i64) {
+        let budget = self.builder.use_var(self.budget);
+        self.builder
+            .ins()
+            .store(context_flags(), budget, self.context, context::BUDGET);
+        let status = self.builder.ins().iconst(types::I32, status);
+        self.builder.ins().return_(&[status]);
+    }
+
+    fn reload_memory(&mut self) {
+        let memory =
+            self.builder
+                .ins()
+                .load(types::I64, context_flags(), self.context, context::MEMORY);
+        self.builder.def_var(self.memory, memory);
+    }
+
+    /// The absolute offset of a direct operand in the engine's memory, as a value.
+    pub(crate) fn absolute(&mut self, operand: Operand) -> Value {
+        match operand {
+            Operand::Instance(offset) => self
+                .builder
+                .ins()
+                .iadd_imm_u(self.instance, i64::from(offset)),
+            Operand::Frame(offset) => self.builder.ins().iadd_imm_u(self.frame, i64::from(offset)),
+            fixed => {
+                let at = self.layout.absolute(fixed).unwrap_or(0);
+                self.builder.ins().iconst(types::I64, at as i64)
+            }
+        }
+    }
+
+    /// The machine address of an absolute offset (a value), valid until the next call.
+    pub(crate) fn machine_address(&mut self, absolute: Value) -> Value {
+        let memory = self.builder.use_var(self.memory);
+        self.builder.ins().iadd(memory, absolute)
+    }
+
+    /// The machine address and displacement of a direct operand.
+    fn operand_address(&mut self, operand: Operand) -> (Value, i32) {
+        let memory = self.builder.use_var(self.memory);
+        let (base, offset) = match operand {
+            Operand::Instance(offset) => (Some(self.instance), u64::from(offset)),
+            Operand::Frame(offset) => (Some(self.frame), u64::from(offset)),
+            fixed => (None, self.layout.absolute(fixed).unwrap_or(0)),
+        };
+        let address = match base {
+            Some(base) => self.builder.ins().iadd(memory, base),
+            None => memory,
+        };
+        match i32::try_from(offset) {
+            Ok(displacement) => (address, displacement),
+            Err(_) => (self.builder.ins().iadd_imm_u(address, offset as i64), 0),
+        }
+    }
+
+    /// Loads a value of IR type `ty` from a direct operand.
+    pub(crate) fn load(&mut self, ty: Type, operand: Operand) -> Value {
+        if let Operand::Const(offset) = operand
+            && let Some(folded) = self.folded_constant(ty, offset)
+        {
+            return folded;
+        }
+        let (address, displacement) = self.operand_address(operand);
+        self.builder
+            .ins()
+            .load(ty, memory_flags(), address, displacement)
+    }
+
+    /// Stores a value into a direct operand.
+    pub(crate) fn store(&mut self, value: Value, operand: Operand) {
+        let (address, displacement) = self.operand_address(operand);
+        self.builder
+            .ins()
+            .store(memory_flags(), value, address, displacement);
+    }
+}
+
+/// The integer IR type of an elementary type's size (reals too: moves are bit copies).
+pub(crate) fn int_type(ty: Elementary) -> Type {
+    match ty.size_bytes() {
+        1 => types::I8,
+        2 => types::I16,
+        4 => types::I32,
+        _ => types::I64,
+    }
+}
+
+/// Whether an elementary type is an integer the interpreter computes with signed arithmetic.
+pub(crate) fn is_signed(ty: Elementary) -> bool {
+    ty.is_signed()
+}
+
+#[cfg(test)]
+mod tests;

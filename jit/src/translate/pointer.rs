@@ -1,0 +1,179 @@
+//! Pointer values: `Address`, `Element`, `Offset`, and resolving a pointer for `Load` and
+//! `Store` against the region spans (`docs/native-engine.md` §5.4, §7).
+
+use cranelift_codegen::ir::condcodes::IntCC;
+use cranelift_codegen::ir::{InstBuilder, Value, types};
+use program_image::{Elementary, Operand};
+
+use super::{Translator, context_flags, int_type, is_signed};
+use crate::context;
+use crate::fault_kind;
+use crate::layout::{POINTER_OFFSET_MASK, TAG_STACK};
+
+impl Translator<'_, '_> {
+    /// The pointer value of a direct place (`Address`): a constant for the fixed regions, made
+    /// at run time for instance and frame places, searching the spans in the runtime's order.
+    pub(crate) fn address_of(&mut self, place: Operand) -> Value {
+        let fixed = self.layout.absolute(place);
+        if let Some(at) = fixed {
+            // A fixed place inside its own region (or at an earlier empty one) matches it
+            // before the stack, so its pointer does not depend on the running task. One that
+            // matches no fixed span (the zero-size place at the end of the constant pool,
+            // which is where the first task's stack starts) is searched at run time like an
+            // instance or frame place, as the interpreter's `pointer_to` does.
+            let pointer = self.layout.pointer_to(at, 0);
+            if pointer != 0 {
+                return self.builder.ins().iconst(types::I64, pointer as i64);
+            }
+        }
+        let at = match fixed {
+            Some(at) => self.builder.ins().iconst(types::I64, at as i64),
+            None => self.absolute(place),
+        };
+        let stack_end = self.builder.ins().load(
+            types::I64,
+            context_flags(),
+            self.context,
+            context::STACK_END,
+        );
+        let stack_size = self.layout.stack_size;
+        // The stack span: `stack_end.saturating_sub(stack_size) .. stack_end`.
+        let room = self.builder.ins().icmp_imm_u(
+            IntCC::UnsignedGreaterThanOrEqual,
+            stack_end,
+            stack_size as i64,
+        );
+        let below = self
+            .builder
+            .ins()
+            .iadd_imm_s(stack_end, -(stack_size as i64));
+        let zero = self.builder.ins().iconst(types::I64, 0);
+        let stack_start = self.builder.ins().select(room, below, zero);
+        let stack_start_plus_one = self.builder.ins().iadd_imm_u(stack_start, 1);
+        let stack_limit = self.builder.ins().umax(stack_end, stack_start_plus_one);
+        // Built from the last span to the first, so the first match wins.
+        let mut pointer = self.span_pointer(at, TAG_STACK, stack_start, stack_limit, zero);
+        for (tag, start, end) in self.layout.fixed_spans().into_iter().rev() {
+            let start_value = self.builder.ins().iconst(types::I64, start as i64);
+            let limit = self
+                .builder
+                .ins()
+                .iconst(types::I64, end.max(start + 1) as i64);
+            pointer = self.span_pointer(at, tag, start_value, limit, pointer);
+        }
+        pointer
+    }
+
+    /// `(tag << 56) | (at - start)` when `start <= at < limit`, else `otherwise`.
+    fn span_pointer(
+        &mut self,
+        at: Value,
+        tag: u64,
+        start: Value,
+        limit: Value,
+        otherwise: Value,
+    ) -> Value {
+        let above = self
+            .builder
+            .ins()
+            .icmp(IntCC::UnsignedGreaterThanOrEqual, at, start);
+        let below = self.builder.ins().icmp(IntCC::UnsignedLessThan, at, limit);
+        let inside = self.builder.ins().band(above, below);
+        let offset = self.builder.ins().isub(at, start);
+        let tagged = self.builder.ins().bor_imm_u(offset, (tag << 56) as i64);
+        self.builder.ins().select(inside, tagged, otherwise)
+    }
+
+    /// `Element`: the index checked against `low ..= high` (a fault outside), then
+    /// `dst := base + (index − low) · stride`, wrapping.
+    pub(crate) fn element(
+        &mut self,
+        dst: Operand,
+        base: Operand,
+        (index, index_ty): (Operand, Elementary),
+        low: i64,
+        count: u64,
+        stride: u32,
+    ) {
+        let i = self.index_value(index, index_ty);
+        let high = low.saturating_add(i64::try_from(count.saturating_sub(1)).unwrap_or(i64::MAX));
+        let low_value = self.builder.ins().iconst(types::I64, low);
+        let high_value = self.builder.ins().iconst(types::I64, high);
+        let under = self.builder.ins().icmp(IntCC::SignedLessThan, i, low_value);
+        let over = self
+            .builder
+            .ins()
+            .icmp(IntCC::SignedGreaterThan, i, high_value);
+        let outside = self.builder.ins().bor(under, over);
+        self.fault_if(
+            outside,
+            fault_kind::INDEX_OUT_OF_BOUNDS,
+            [Some(i), Some(low_value), Some(high_value)],
+        );
+        let pointer = self.load(types::I64, base);
+        let from_low = self.builder.ins().isub(i, low_value);
+        let moved = self.builder.ins().imul_imm_u(from_low, i64::from(stride));
+        let result = self.builder.ins().iadd(pointer, moved);
+        self.store(result, dst);
+    }
+
+    /// An index operand as the interpreter reads it: extended to 64 bits by its type's
+    /// signedness (an `ULINT` above 2⁶³ becomes negative).
+    fn index_value(&mut self, index: Operand, index_ty: Elementary) -> Value {
+        let ir = int_type(index_ty);
+        let value = self.load(ir, index);
+        self.resized(value, ir, types::I64, is_signed(index_ty))
+    }
+
+    /// `Offset`: a null pointer faults; `dst := base + offset`, wrapping.
+    pub(crate) fn offset(&mut self, dst: Operand, base: Operand, offset: u32) {
+        let pointer = self.load(types::I64, base);
+        let tag = self.builder.ins().ushr_imm_u(pointer, 56);
+        let null = self.builder.ins().icmp_imm_u(IntCC::Equal, tag, 0);
+        self.fault_if(null, fault_kind::NULL_POINTER, [None; 3]);
+        let moved = self.builder.ins().iadd_imm_u(pointer, i64::from(offset));
+        self.store(moved, dst);
+    }
+
+    /// The absolute offset the pointer in `operand` reaches, checked for `size` bytes: tag 0
+    /// is `NullPointer`; a tag above 6 or a range past its region's end `BadPointer`.
+    pub(crate) fn resolve(&mut self, operand: Operand, size: u32) -> Value {
+        let pointer = self.load(types::I64, operand);
+        let tag = self.builder.ins().ushr_imm_u(pointer, 56);
+        let null = self.builder.ins().icmp_imm_u(IntCC::Equal, tag, 0);
+        self.fault_if(null, fault_kind::NULL_POINTER, [None; 3]);
+        let unknown = self
+            .builder
+            .ins()
+            .icmp_imm_u(IntCC::UnsignedGreaterThan, tag, 6);
+        self.fault_if(
+            unknown,
+            fault_kind::BAD_POINTER,
+            [Some(pointer), None, None],
+        );
+        // spans[tag] is at SPANS + 16 · tag in the context.
+        let span_offset = self.builder.ins().imul_imm_u(tag, 16);
+        let span = self.builder.ins().iadd(self.context, span_offset);
+        let start = self
+            .builder
+            .ins()
+            .load(types::I64, context_flags(), span, context::SPANS);
+        let end = self
+            .builder
+            .ins()
+            .load(types::I64, context_flags(), span, context::SPANS + 8);
+        let offset = self
+            .builder
+            .ins()
+            .band_imm_u(pointer, POINTER_OFFSET_MASK as i64);
+        // No overflow: the offset is below 2⁵⁶, start and size below 2³² · a few.
+        let at = self.builder.ins().iadd(start, offset);
+        let last = self.builder.ins().iadd_imm_u(at, i64::from(size));
+        let past = self
+            .builder
+            .ins()
+            .icmp(IntCC::UnsignedGreaterThan, last, end);
+        self.fault_if(past, fault_kind::BAD_POINTER, [Some(pointer), None, None]);
+        at
+    }
+}

@@ -1,0 +1,450 @@
+//! Operation codes, layouts, pure functions, library calls, forward jumps, the machine code's
+//! traps and constant folding.
+
+#![allow(clippy::unwrap_used, clippy::expect_used)] // A panic is a failed test.
+
+use super::real::real_code;
+use super::*;
+
+#[test]
+fn operation_codes_are_the_encoded_variant_indices() {
+    for code in 0..16 {
+        let unary = crate::unary_op_from_code(code).unwrap();
+        assert_eq!(crate::unary_op_code(unary), code);
+        let binary = crate::binary_op_from_code(code).unwrap();
+        assert_eq!(crate::binary_op_code(binary), code);
+    }
+    assert_eq!(crate::unary_op_code(UnaryOp::FromBcd), 15);
+    assert_eq!(crate::binary_op_code(BinaryOp::Atan2), 15);
+    assert!(crate::unary_op_from_code(16).is_none());
+}
+
+#[test]
+fn a_layout_that_is_not_the_images_is_refused() {
+    let image = image(vec![Instr::Return], vec![0; 16]);
+    let mut layout = Layout::of(&image, 1);
+    layout.constants += 8;
+    assert!(matches!(
+        Translation::new(&image, &layout, &PURE),
+        Err(crate::NativeUnsupported::LayoutMismatch { .. })
+    ));
+}
+
+#[test]
+fn pure_functions_carry_expt_bcd_and_the_real_library() {
+    let code = vec![
+        Instr::Binary {
+            op: BinaryOp::Expt,
+            ty: Int,
+            dst: I(16),
+            a: I(0),
+            b: I(2),
+        },
+        Instr::Unary {
+            op: UnaryOp::ToBcd,
+            ty: Word,
+            dst: I(18),
+            src: I(4),
+        },
+        Instr::Unary {
+            op: UnaryOp::FromBcd,
+            ty: Word,
+            dst: I(20),
+            src: I(6),
+        },
+        Instr::Unary {
+            op: UnaryOp::Ln,
+            ty: Lreal,
+            dst: I(24),
+            src: I(8),
+        },
+        Instr::Binary {
+            op: BinaryOp::Expt,
+            ty: Real,
+            dst: I(32),
+            a: I(36),
+            b: I(40),
+        },
+    ];
+    let fixture = Fixture::new(code);
+    let mut host = fixture.host();
+    host.put(0, 3, 2);
+    host.put(2, 5, 2);
+    host.put(4, 1234, 2);
+    host.put(6, 0x0987, 2);
+    host.put(8, 10f64.to_bits(), 8);
+    host.put(36, u64::from(2f32.to_bits()), 4);
+    host.put(40, u64::from(0.5f32.to_bits()), 4);
+    assert_eq!(fixture.run(&mut host), Status::Ok);
+    assert_eq!(host.get(16, 2), 243);
+    assert_eq!(host.get(18, 2), 0x1234);
+    assert_eq!(host.get(20, 2), 987);
+    assert_eq!(host.get(24, 8), 10f64.ln().to_bits());
+    assert_eq!(host.get(32, 4), u64::from(2f32.powf(0.5).to_bits()));
+}
+
+#[test]
+fn library_calls_other_than_the_float_roundings_are_foreign() {
+    use cranelift_codegen::ir::LibCall;
+    for call in [
+        LibCall::FloorF32,
+        LibCall::CeilF64,
+        LibCall::TruncF64,
+        LibCall::NearestF32,
+    ] {
+        let name = crate::translate::host_calls::libcall_name(call);
+        assert!(OUR_SYMBOLS.contains(&name.as_str()), "{name}");
+    }
+    for call in [
+        LibCall::Memcpy,
+        LibCall::Memset,
+        LibCall::FmaF64,
+        LibCall::Probestack,
+    ] {
+        let name = crate::translate::host_calls::libcall_name(call);
+        assert!(!OUR_SYMBOLS.contains(&name.as_str()), "{name}");
+    }
+}
+
+#[test]
+fn forward_jumps_skip_and_fall_through() {
+    // IF c THEN x := 1 END_IF; a jump to the next instruction; y := 2 after a Return is never run.
+    let code = vec![
+        Instr::JumpIfNot {
+            cond: I(0),
+            target: 2,
+        },
+        Instr::Move {
+            ty: Sint,
+            dst: I(1),
+            src: I(8),
+        },
+        Instr::JumpIf {
+            cond: I(0),
+            target: 3,
+        },
+        Instr::Jump { target: 5 },
+        Instr::Move {
+            ty: Sint,
+            dst: I(2),
+            src: I(8),
+        },
+        Instr::Return,
+        Instr::Move {
+            ty: Sint,
+            dst: I(3),
+            src: I(8),
+        },
+    ];
+    let fixture = Fixture::new(code);
+    for condition in [0u64, 1, 2] {
+        let mut host = fixture.host();
+        host.put(0, condition, 1);
+        host.put(8, 7, 1);
+        assert_eq!(fixture.run(&mut host), Status::Ok);
+        assert_eq!(host.get(1, 1), if condition != 0 { 7 } else { 0 });
+        assert_eq!(host.get(2, 1), 0);
+        assert_eq!(host.get(3, 1), 0);
+    }
+}
+
+#[test]
+fn generated_code_has_no_trap_but_the_backends_own_unreachable_division_checks() {
+    let mut images = vec![real_code(Real), real_code(Lreal)];
+    for ty in INTEGERS {
+        images.push(vec![
+            Instr::Binary {
+                op: BinaryOp::Div,
+                ty,
+                dst: I(16),
+                a: I(0),
+                b: I(8),
+            },
+            Instr::Binary {
+                op: BinaryOp::Mod,
+                ty,
+                dst: I(24),
+                a: I(0),
+                b: I(8),
+            },
+            Instr::Convert {
+                from: Lreal,
+                to: ty,
+                dst: I(32),
+                src: I(40),
+            },
+            Instr::Trunc {
+                from: Real,
+                to: ty,
+                dst: I(48),
+                src: I(40),
+            },
+            Instr::Load {
+                size: 8,
+                dst: I(56),
+                ptr: I(64),
+            },
+            Instr::Element {
+                dst: I(72),
+                base: I(80),
+                index: I(88),
+                index_ty: ty,
+                low: 0,
+                count: 10,
+                stride: 4,
+            },
+            Instr::Jump { target: 0 },
+        ]);
+    }
+    for code in images {
+        let divisions = code
+            .iter()
+            .filter(|instr| {
+                matches!(
+                    instr,
+                    Instr::Binary {
+                        op: BinaryOp::Div | BinaryOp::Mod,
+                        ..
+                    }
+                )
+            })
+            .count();
+        let fixture = Fixture::new(code);
+        let listing = &fixture.code.listings[0];
+        assert!(listing.contains("ret"), "{listing}");
+        let blocks = Listing::new(listing);
+        let checked = blocks.after_a_fault_check();
+        let mut trapping_blocks = Vec::new();
+        for (block, lines) in blocks.blocks.iter().enumerate() {
+            for line in lines.iter().filter(|line| line.contains("trap")) {
+                let instruction = line.trim_start();
+                // sdiv, srem, udiv and urem keep the backend's own zero test and the division
+                // instruction's own fault site; ours make both unreachable, because the only
+                // way into their block is past our own zero check.
+                let division = ["idiv", "div", "sdiv", "udiv"]
+                    .iter()
+                    .any(|name| instruction.starts_with(name));
+                // aarch64 tests a signed division for MIN / −1 itself (x86-64's lowering does
+                // not, so there an overflow trap would be a trapping conversion).
+                let overflow = cfg!(target_arch = "aarch64") && line.contains("int_ovf");
+                assert!(
+                    line.contains("int_divz") || overflow || division,
+                    "a trap in generated code: {line}\n{listing}"
+                );
+                assert!(
+                    checked.contains(&block),
+                    "a division trap not behind our zero check: {line}\n{listing}"
+                );
+                if !trapping_blocks.contains(&block) {
+                    trapping_blocks.push(block);
+                }
+            }
+        }
+        assert!(
+            trapping_blocks.len() <= divisions,
+            "{} blocks with traps for {divisions} divisions\n{listing}",
+            trapping_blocks.len()
+        );
+    }
+}
+
+/// The blocks of a machine code listing (`blockN:` lines start them, `labelN` names them).
+struct Listing<'a> {
+    blocks: Vec<Vec<&'a str>>,
+}
+
+impl<'a> Listing<'a> {
+    fn new(listing: &'a str) -> Self {
+        let mut blocks: Vec<Vec<&str>> = Vec::new();
+        for line in listing.lines() {
+            if line.starts_with("block") && line.ends_with(':') {
+                blocks.push(Vec::new());
+            } else if let Some(block) = blocks.last_mut() {
+                block.push(line);
+            }
+        }
+        Self { blocks }
+    }
+
+    /// Whether block `index` is one of our fault exits: it calls out (`rivet_jit_fault`) and
+    /// returns, going nowhere else.
+    fn is_fault_exit(&self, index: usize) -> bool {
+        self.blocks.get(index).is_some_and(|lines| {
+            let calls = lines
+                .iter()
+                .any(|line| line.contains("call") || line.contains("blr"));
+            let returns = lines
+                .iter()
+                .any(|line| line.trim_start().starts_with("ret"));
+            let goes_on = lines.iter().any(|line| line.contains("label"));
+            calls && returns && !goes_on
+        })
+    }
+
+    /// The blocks entered only from a two-way branch whose other way is a fault exit: the
+    /// code past one of our checks.
+    fn after_a_fault_check(&self) -> Vec<usize> {
+        let label = |word: &str| -> Option<usize> {
+            word.trim_matches(|c: char| !c.is_ascii_alphanumeric())
+                .strip_prefix("label")?
+                .parse()
+                .ok()
+        };
+        let mut entries: Vec<Vec<(usize, Vec<usize>)>> = vec![Vec::new(); self.blocks.len()];
+        for (from, lines) in self.blocks.iter().enumerate() {
+            for line in lines {
+                let targets: Vec<usize> = line.split_whitespace().filter_map(label).collect();
+                for target in &targets {
+                    if let Some(entry) = entries.get_mut(*target) {
+                        entry.push((from, targets.clone()));
+                    }
+                }
+            }
+        }
+        (0..self.blocks.len())
+            .filter(|block| {
+                let ways = &entries[*block];
+                !ways.is_empty()
+                    && ways.iter().all(|(_, targets)| {
+                        targets.len() == 2
+                            && targets
+                                .iter()
+                                .any(|other| other != block && self.is_fault_exit(*other))
+                    })
+            })
+            .collect()
+    }
+}
+
+fn constant_reads(first: Vec<Instr>) -> Vec<Instr> {
+    let c = Operand::Const;
+    first
+        .into_iter()
+        .chain([
+            Instr::Move {
+                ty: Real,
+                dst: I(0),
+                src: c(0),
+            },
+            Instr::Binary {
+                op: BinaryOp::Add,
+                ty: Dint,
+                dst: I(4),
+                a: c(4),
+                b: I(8),
+            },
+            Instr::Compare {
+                op: CompareOp::Ne,
+                ty: Lreal,
+                dst: I(12),
+                a: c(8),
+                b: c(8),
+            },
+            Instr::Move {
+                ty: Usint,
+                dst: I(13),
+                src: c(3),
+            },
+        ])
+        .collect()
+}
+
+#[test]
+fn constants_fold_only_when_nothing_can_write_the_pool() {
+    let mut pool = Vec::new();
+    pool.extend_from_slice(&0x7F80_0001u32.to_le_bytes()); // a signalling NaN
+    pool.extend_from_slice(&(-5i32).to_le_bytes());
+    pool.extend_from_slice(&f64::NAN.to_bits().to_le_bytes());
+    let harmless = vec![Instr::Move {
+        ty: Dint,
+        dst: I(100),
+        src: I(104),
+    }];
+    let written = vec![Instr::Move {
+        ty: Dint,
+        dst: Operand::Const(4),
+        src: I(104),
+    }];
+    // ADR(g) + SHL(LWORD#5, 56) + 4: a pointer moved from the data region into the pool's,
+    // then a store through it, as ST's pointer arithmetic allows.
+    let stored_through_a_pointer = vec![
+        Instr::Address {
+            dst: I(112),
+            place: Operand::Global(0),
+        },
+        Instr::Binary {
+            op: BinaryOp::Add,
+            ty: Lword,
+            dst: I(112),
+            a: I(112),
+            b: I(120),
+        },
+        Instr::Store {
+            size: 4,
+            ptr: I(112),
+            src: I(104),
+        },
+    ];
+    let read_only = |first: &[Instr]| {
+        crate::translate::scalar::constant_pool_is_read_only(&image(
+            constant_reads(first.to_vec()),
+            pool.clone(),
+        ))
+    };
+    assert!(read_only(&harmless));
+    assert!(!read_only(&written));
+    assert!(!read_only(&stored_through_a_pointer));
+    // Reading the pool through a pointer leaves it read-only.
+    assert!(read_only(&[Instr::Address {
+        dst: I(100),
+        place: Operand::Const(0),
+    }]));
+    // Every way to write through a pointer makes it writable.
+    for writer in [
+        Instr::CallBlock {
+            pou: 0,
+            instance: I(112),
+            indirect: true,
+        },
+        Instr::CallStdBlock {
+            block: program_image::StdBlock::RTrig,
+            long: false,
+            instance: I(112),
+            indirect: true,
+        },
+        Instr::CallFunction {
+            pou: 0,
+            instance: Some(I(112)),
+            inputs: Vec::new(),
+            outputs: Vec::new(),
+        },
+        Instr::CallVirtual {
+            table: Vec::new(),
+            interface: I(112),
+            inputs: Vec::new(),
+            outputs: Vec::new(),
+        },
+        Instr::Native {
+            block: "MC_Power".into(),
+        },
+    ] {
+        assert!(!read_only(std::slice::from_ref(&writer)), "{writer:?}");
+    }
+    for (first, expected_sum) in [
+        (harmless, -5i32 + 7),
+        (written, 9 + 7),
+        (stored_through_a_pointer, 9 + 7),
+    ] {
+        let fixture = Fixture::with_constants(constant_reads(first), pool.clone());
+        let mut host = fixture.host();
+        host.put(8, 7, 4);
+        host.put(104, 9, 4);
+        host.put(120, (5 << 56) + 4, 8);
+        assert_eq!(fixture.run(&mut host), Status::Ok);
+        assert!(host.faults.is_empty(), "{:?}", host.faults);
+        assert_eq!(host.get(0, 4), 0x7F80_0001);
+        assert_eq!(host.get(4, 4), u64::from(expected_sum as u32));
+        assert_eq!(host.get(12, 1), 1, "NaN is unequal to itself");
+        assert_eq!(host.get(13, 1), 0x7F);
+    }
+}
