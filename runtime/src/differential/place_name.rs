@@ -197,3 +197,54 @@ fn leaf_text(image: &ProgramImage, leaf: &Leaf, offset: usize, bytes: &[u8]) -> 
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use program_image::{Elementary, Symbol, SymbolFlags};
+
+    use super::*;
+
+    /// `Main.r` (REAL at 0) and `Main.s` (STRING(7) at 4) in the data region.
+    fn image() -> ProgramImage {
+        let symbol = |path: &str, ty: u32, offset: u32| Symbol {
+            path: path.to_owned(),
+            ty,
+            region: Region::Data,
+            offset,
+            bit: None,
+            flags: SymbolFlags(0),
+        };
+        ProgramImage {
+            types: vec![
+                TypeDef::Elementary(Elementary::Real),
+                TypeDef::String { length: 7 },
+            ],
+            symbols: vec![symbol("Main.r", 0, 0), symbol("Main.s", 1, 4)],
+            ..ProgramImage::default()
+        }
+    }
+
+    #[test]
+    fn two_nans_that_differ_in_their_payload_show_their_bits() {
+        let mut first = vec![0; 12];
+        let mut second = first.clone();
+        first[..4].copy_from_slice(&0x7FC0_0001_u32.to_le_bytes());
+        second[..4].copy_from_slice(&0x7FC0_0002_u32.to_le_bytes());
+        let named = name(&image(), Region::Data, 0, &first, &second);
+        assert_eq!(named.path.as_deref(), Some("Main.r"));
+        assert_eq!(named.first, "NaN (16#7FC00001)");
+        assert_eq!(named.second, "NaN (16#7FC00002)");
+    }
+
+    #[test]
+    fn a_string_that_differs_past_its_end_shows_the_differing_byte() {
+        let mut first = vec![0; 12];
+        first[4..7].copy_from_slice(b"abc");
+        let mut second = first.clone();
+        second[9] = b'x';
+        let named = name(&image(), Region::Data, 9, &first, &second);
+        assert_eq!(named.path.as_deref(), Some("Main.s"));
+        assert_eq!(named.first, "'abc', byte 5 = 16#00");
+        assert_eq!(named.second, "'abc', byte 5 = 16#78");
+    }
+}
