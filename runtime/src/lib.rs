@@ -10,6 +10,8 @@
 //! - [`stdlib`]: the standard library's pure functions (conversions, strings, dates).
 //! - [`value`]: values of symbols read and written by path, as IEC literals.
 //! - [`simulation`]: N cycles on a simulated clock, as `rivet simulate` runs them.
+//! - [`differential`]: one image under two engines, compared after every cycle
+//!   (`docs/native-engine.md` §11.1).
 //! - [`areas`]: the located areas `%I`, `%Q` and `%M` as bytes in the CODESYS layout, shared by
 //!   the engine and the Modbus server behind one mutex.
 //! - [`scheduler`]: the real-time scheduler that runs an engine's tasks on their own thread,
@@ -22,6 +24,7 @@
 //!   monitor, write, force, trace, statistics, faults) on that hook.
 
 pub mod areas;
+pub mod differential;
 pub mod engine;
 pub mod modbus;
 pub mod online;

@@ -5,13 +5,24 @@
 //! native twin with `Instant` over many repetitions, takes the median of several batches, and
 //! prints nanoseconds per statement (or loop iteration) and per instruction, the native figure
 //! and their ratio. The fixed cost of a cycle (the empty program) is shown on its own line and
-//! not subtracted. Then what the debugger costs a call-heavy cycle (`debugger_cost`).
+//! not subtracted. Then what the debugger costs a call-heavy cycle (`debugger_cost`), then the
+//! engines against the workloads' C twins (`c_twins`, `docs/native-engine.md` §11.3; gcc or
+//! `RIVET_CC` must be installed).
+//!
+//! `SCAN_SECTION=debugger` or `SCAN_SECTION=native` prints only that section.
 
-#![allow(clippy::unwrap_used, clippy::expect_used, clippy::print_stdout)] // A bench binary.
+// A bench binary: it prints its table, and says on standard error why it stopped.
+#![allow(
+    clippy::unwrap_used,
+    clippy::expect_used,
+    clippy::print_stdout,
+    clippy::print_stderr
+)]
 
 use std::hint::black_box;
 use std::time::Instant;
 
+mod c_twins;
 mod debugger_cost;
 mod workloads;
 
@@ -64,6 +75,11 @@ fn main() {
         debugger_cost::report(&|f| median_ns(f));
         return;
     }
+    // `SCAN_SECTION=native` only compares the engines with the C twins.
+    if std::env::var_os("SCAN_SECTION").is_some_and(|section| section == "native") {
+        c_twins::report(&|f| median_ns(f));
+        return;
+    }
     println!(
         "| workload | unit | units/cycle | instructions/cycle | runtime ns/cycle | runtime ns/unit | runtime ns/instruction | native ns/unit | ratio |"
     );
@@ -88,7 +104,10 @@ fn main() {
         let units = workload.units as f64;
         // A chart or a CASE runs a small part of its code per cycle, so its static size says
         // nothing of the instructions executed: those columns show the size, marked.
-        let branching = workload.name.starts_with("sfc_") || workload.name.starts_with("case_");
+        // The FB calls run the block's code too, which the program's size does not count.
+        let branching = workload.name.starts_with("sfc_")
+            || workload.name.starts_with("case_")
+            || workload.name == "fb_calls";
         let (executed_text, per_instruction) = if branching {
             (format!("{static_instructions} (static)"), "–".to_owned())
         } else {
@@ -111,6 +130,7 @@ fn main() {
         );
     }
     debugger_cost::report(&|f| median_ns(f));
+    c_twins::report(&|f| median_ns(f));
     if std::env::var_os("SCAN_DUMP").is_some() {
         for workload in workloads() {
             let image = compile(&workload);

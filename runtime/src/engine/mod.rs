@@ -206,6 +206,11 @@ impl Engine {
         &mut self.debug
     }
 
+    /// The motion kernel's view of each axis of the image, in the image's order.
+    pub(crate) fn axis_snapshots(&self) -> Vec<motion::kernel::AxisSnapshot> {
+        self.motion.axis_snapshots()
+    }
+
     /// The bytes of a region.
     pub fn region(&self, region: Region) -> &[u8] {
         view::region_bytes(&self.image, &self.regions, &self.memory, region)

@@ -11,6 +11,9 @@ use runtime::value::{self, Value};
 /// Statements per generated program, and iterations of the array loop.
 pub const COUNT: usize = 1000;
 
+/// Rounds of the string statements per cycle.
+pub const STRING_ROUNDS: usize = 100;
+
 /// One workload: the program and its native twin.
 pub struct Workload {
     /// A short name for tables and criterion ids.
@@ -38,6 +41,44 @@ pub struct Native {
     pub r: [f32; 3],
     /// The array `a[1..1000]`.
     pub a: Vec<i32>,
+    /// The `Accumulate` instances `f1` … `f4` of the FB calls workload.
+    pub blocks: [Accumulate; 4],
+    /// The STRING(80) `s` of the strings workload.
+    pub s: String,
+    /// The STRING(80) `t` of the strings workload.
+    pub t: String,
+    /// The DINT `n` of the strings workload.
+    pub n: i32,
+}
+
+/// An instance of the FB calls workload's `Accumulate`.
+#[derive(Clone, Copy, Debug)]
+pub struct Accumulate {
+    /// `VAR_INPUT in1`.
+    pub in1: i32,
+    /// `VAR_INPUT in2`.
+    pub in2: i32,
+    /// `VAR_OUTPUT q`, which the block also keeps as its state.
+    pub q: i32,
+    /// `VAR lim`, the bound above which `q` starts again from 0.
+    pub lim: i32,
+}
+
+impl Accumulate {
+    const NEW: Self = Self {
+        in1: 0,
+        in2: 0,
+        q: 0,
+        lim: 1_000_000,
+    };
+
+    /// `q := q + in1 * in2; IF q > lim THEN q := 0; END_IF`, wrapping as DINT does.
+    fn call(&mut self) {
+        self.q = self.q.wrapping_add(self.in1.wrapping_mul(self.in2));
+        if self.q > self.lim {
+            self.q = 0;
+        }
+    }
 }
 
 impl Default for Native {
@@ -47,6 +88,10 @@ impl Default for Native {
             i: [1, 2, 0],
             r: [1.0, 2.0, 0.0],
             a: vec![0; COUNT],
+            blocks: [Accumulate::NEW; 4],
+            s: String::new(),
+            t: STRING_T.to_owned(),
+            n: 0,
         }
     }
 }
@@ -89,8 +134,74 @@ const REAL_STATEMENTS: [&str; 4] = [
     "r3 := r3 - r1;",
 ];
 
+/// The function block of the FB calls workload, and the program calling it: two inputs, an
+/// output and a state, as `docs/native-engine.md` §11.3 describes it.
+const FB_DECLARATIONS: &str = "\
+FUNCTION_BLOCK Accumulate
+VAR_INPUT
+    in1 : DINT;
+    in2 : DINT;
+END_VAR
+VAR_OUTPUT
+    q : DINT;
+END_VAR
+VAR
+    lim : DINT := 1000000;
+END_VAR
+q := q + in1 * in2;
+IF q > lim THEN
+    q := 0;
+END_IF
+END_FUNCTION_BLOCK
+
+PROGRAM main
+VAR
+    f1, f2, f3, f4 : Accumulate;
+    i1 : DINT := 1;
+    i2 : DINT := 2;
+    i3 : DINT;
+END_VAR
+";
+
+/// The calls, repeated in turn; `native_fb_calls` does the same in Rust.
+const FB_CALL_STATEMENTS: [&str; 4] = [
+    "f1(in1 := i1, in2 := 3, q => i2);",
+    "f2(in1 := i2, in2 := 5, q => i3);",
+    "f3(in1 := i3, in2 := -7, q => i1);",
+    "f4(in1 := i1, in2 := i2, q => i3);",
+];
+
+/// The initial value of the strings workload's `t`: its first five characters hold a '1', so
+/// every round's FIND finds one and `n` moves on.
+const STRING_T: &str = "Cell1 packaging line";
+
+/// One round of the strings workload; `native_strings` does the same in Rust.
+const STRING_STATEMENTS: [&str; 2] = [
+    "s := CONCAT(LEFT(t, 5), DINT_TO_STRING(n));",
+    "n := n + FIND(s, '1');",
+];
+
+fn strings_program() -> String {
+    let mut source = format!(
+        "PROGRAM main\nVAR\n    s : STRING(80);\n    t : STRING(80) := '{STRING_T}';\n    n : DINT;\nEND_VAR\n"
+    );
+    for _ in 0..STRING_ROUNDS {
+        for line in STRING_STATEMENTS {
+            source.push_str(line);
+            source.push('\n');
+        }
+    }
+    source.push_str("END_PROGRAM\n");
+    source
+}
+
 fn program(statements: &[&str]) -> String {
-    let mut source = String::from(DECLARATIONS);
+    program_with(DECLARATIONS, statements)
+}
+
+/// `declarations`, then `COUNT` statements taken from `statements` in turn.
+fn program_with(declarations: &str, statements: &[&str]) -> String {
+    let mut source = String::from(declarations);
     for line in statements.iter().cycle().take(COUNT) {
         source.push_str(line);
         source.push('\n');
@@ -126,6 +237,44 @@ fn native_real(n: &mut Native) {
         r[0] = r[2] * 0.25 - r[1];
         r[1] = r[0] * 0.5 + 0.125;
         r[2] -= r[0];
+    }
+}
+
+fn native_fb_calls(n: &mut Native) {
+    for _ in 0..COUNT / 4 {
+        let (i, f) = black_box((&mut n.i, &mut n.blocks));
+        f[0].in1 = i[0];
+        f[0].in2 = 3;
+        f[0].call();
+        i[1] = f[0].q;
+        f[1].in1 = i[1];
+        f[1].in2 = 5;
+        f[1].call();
+        i[2] = f[1].q;
+        f[2].in1 = i[2];
+        f[2].in2 = -7;
+        f[2].call();
+        i[0] = f[2].q;
+        f[3].in1 = i[0];
+        f[3].in2 = i[1];
+        f[3].call();
+        i[2] = f[3].q;
+    }
+}
+
+/// The characters a STRING(80) holds: CONCAT's result is cut to them.
+const STRING_CAPACITY: usize = 80;
+
+fn native_strings(n: &mut Native) {
+    for _ in 0..STRING_ROUNDS {
+        let state = black_box(&mut *n);
+        // The workload's strings are ASCII, so characters and bytes are the same.
+        let head: String = state.t.chars().take(5).collect();
+        let mut s = head + &state.n.to_string();
+        s.truncate(STRING_CAPACITY);
+        let found = s.find('1').map_or(0, |at| at as i32 + 1);
+        state.s = s;
+        state.n = state.n.wrapping_add(found);
     }
 }
 
@@ -231,6 +380,22 @@ pub fn workloads() -> Vec<Workload> {
             check: "main.a[1000]",
         },
         Workload {
+            name: "fb_calls",
+            unit: "call",
+            source: program_with(FB_DECLARATIONS, &FB_CALL_STATEMENTS),
+            units: COUNT,
+            native: native_fb_calls,
+            check: "main.i3",
+        },
+        Workload {
+            name: "strings",
+            unit: "round",
+            source: strings_program(),
+            units: STRING_ROUNDS,
+            native: native_strings,
+            check: "main.n",
+        },
+        Workload {
             name: "sfc_1000_steps",
             unit: "cycle",
             source: sfc_chart(),
@@ -257,6 +422,8 @@ fn native_value(workload: &Workload, n: &Native) -> Value {
         "dint" => Value::Int(i128::from(n.i[2]), E::Dint),
         "real" => Value::Real(f64::from(n.r[2]), E::Real),
         "array_loop" => Value::Int(i128::from(n.a[COUNT - 1]), E::Dint),
+        "fb_calls" => Value::Int(i128::from(n.i[2]), E::Dint),
+        "strings" => Value::Int(i128::from(n.n), E::Dint),
         // The native step counter starts from the `i1` of the other workloads.
         "sfc_1000_steps" | "case_1000_states" => Value::Int(i128::from(n.i[0] - 1), E::Dint),
         _ => Value::Bool(n.b[0]),

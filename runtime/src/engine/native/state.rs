@@ -5,7 +5,7 @@ use std::collections::HashMap;
 
 use motion::axis::{AxisConfig, SoftwareLimits};
 use motion::fb::CamIn;
-use motion::kernel::{AxisId, Kernel};
+use motion::kernel::{AxisId, AxisSnapshot, Kernel};
 use motion::sync::CamId;
 use program_image::{ProgramImage, StructKind, TypeDef};
 
@@ -156,6 +156,16 @@ impl MotionState {
     /// The kernel's axis for `nAxisId`.
     pub(crate) fn axis(&self, id: usize) -> Option<AxisId> {
         self.axes.get(id).map(|link| link.id)
+    }
+
+    /// What the kernel shows of each axis of the image, in the image's order, for comparing
+    /// two engines' motion (`runtime::differential`). Every axis of the image is in the kernel
+    /// (`new` added them all), so none is left out.
+    pub(crate) fn axis_snapshots(&self) -> Vec<AxisSnapshot> {
+        self.axes
+            .iter()
+            .filter_map(|link| self.kernel.snapshot(link.id).ok())
+            .collect()
     }
 
     /// The kernel.

@@ -1,0 +1,149 @@
+//! One image run under two engines and compared after every cycle (`docs/native-engine.md`
+//! §11.1): the first engine is the interpreter, the reference; the second is the engine under
+//! test. After loading and after every cycle, [`run_both`] compares the data, `%I`, `%Q` and
+//! `%M` regions byte for byte, the faults (under the exceptions of §6.3) and the motion
+//! kernel's axes, and stops at the first [`Difference`], which names the cycle, the place by
+//! symbol path and both values.
+//!
+//! It lives in the runtime rather than in the `tests` crate's library because that library may
+//! not depend on `runtime`, and both `tests/tests` and `app/tests` use it.
+
+mod axes;
+mod difference;
+mod faults;
+mod place_name;
+
+use program_image::{ProgramImage, Region};
+
+pub use difference::{AxisQuantity, Difference, Subject};
+
+use crate::engine::{Engine, LoadError};
+use crate::simulation::Simulation;
+
+use faults::FaultVerdict;
+
+/// The regions compared after every cycle, in the order a difference is looked for.
+const COMPARED_REGIONS: [Region; 4] = [Region::Data, Region::Input, Region::Output, Region::Memory];
+
+/// Loads `image` in the interpreter and with `second`, runs both for `cycles` periods of the
+/// fastest task (as [`Simulation::run`] counts them), and compares them after the load and
+/// after every period. Before period `n` (from 1), `writes(n, engine)` is called on the first
+/// engine, then on the second: it writes what the test feeds the program (inputs, commands),
+/// and must write the same into both.
+///
+/// Returns the second engine's simulation when nothing differed, so a test goes on reading the
+/// values it read before. A load that fails in either engine is a [`Difference`] of cycle 0
+/// with [`Subject::Load`], even when both fail alike, since there is then no simulation to give
+/// back.
+///
+/// A cycle that ends in a watchdog, an abandoned halt or a stack overflow makes the memory and
+/// the axes depend on the engine's speed or build (§6.3): from that cycle on only the faults
+/// and the cycle counts are compared.
+pub fn run_both(
+    image: ProgramImage,
+    cycles: u64,
+    mut writes: impl FnMut(u64, &mut Engine),
+    second: impl FnOnce(ProgramImage) -> Result<Simulation, LoadError>,
+) -> Result<Simulation, Difference> {
+    let (mut first, mut second) = match (Simulation::new(image.clone()), second(image)) {
+        (Ok(first), Ok(second)) => (first, second),
+        (first, second) => {
+            return Err(Difference {
+                cycle: 0,
+                subject: Subject::Load,
+                first: load_outcome(&first),
+                second: load_outcome(&second),
+            });
+        }
+    };
+    compare_state(0, &first, &second)?;
+    let mut faults_seen = 0;
+    let mut state_compared = true;
+    for cycle in 1..=cycles {
+        writes(cycle, first.engine_mut());
+        writes(cycle, second.engine_mut());
+        first.run(1);
+        second.run(1);
+        let verdict = faults::compare(cycle, faults_seen, first.faults(), second.faults())?;
+        faults_seen = first.faults().len();
+        if verdict == FaultVerdict::Lenient {
+            state_compared = false;
+        }
+        compare_cycle_counts(cycle, &first, &second)?;
+        if state_compared {
+            compare_state(cycle, &first, &second)?;
+        }
+    }
+    Ok(second)
+}
+
+/// What a load gave, as a [`Difference`] shows it.
+fn load_outcome(load: &Result<Simulation, LoadError>) -> String {
+    match load {
+        Ok(_) => "loads".to_owned(),
+        Err(error) => format!("does not load: {error}"),
+    }
+}
+
+/// Compares the memory, then the axes, of the two simulations after `cycle`.
+fn compare_state(cycle: u64, first: &Simulation, second: &Simulation) -> Result<(), Difference> {
+    compare_memory(cycle, first.engine(), second.engine())?;
+    axes::compare(
+        cycle,
+        first.engine().image(),
+        &first.engine().axis_snapshots(),
+        &second.engine().axis_snapshots(),
+    )
+}
+
+/// Finds the first byte that differs in [`COMPARED_REGIONS`] and names it.
+fn compare_memory(cycle: u64, first: &Engine, second: &Engine) -> Result<(), Difference> {
+    for region in COMPARED_REGIONS {
+        let (a, b) = (first.region(region), second.region(region));
+        let differing = a
+            .iter()
+            .zip(b)
+            .position(|(x, y)| x != y)
+            .or_else(|| (a.len() != b.len()).then_some(a.len().min(b.len())));
+        if let Some(offset) = differing {
+            let named = place_name::name(first.image(), region, offset, a, b);
+            return Err(Difference {
+                cycle,
+                subject: Subject::Memory {
+                    region,
+                    offset,
+                    path: named.path,
+                },
+                first: named.first,
+                second: named.second,
+            });
+        }
+    }
+    Ok(())
+}
+
+/// The cycles each task has run: a task that stopped in one engine only shows here too.
+fn compare_cycle_counts(
+    cycle: u64,
+    first: &Simulation,
+    second: &Simulation,
+) -> Result<(), Difference> {
+    let tasks = &first.engine().image().tasks;
+    for (index, (a, b)) in first.cycles().iter().zip(second.cycles()).enumerate() {
+        if a != b {
+            let task = tasks
+                .get(index)
+                .map_or_else(|| format!("#{index}"), |task| task.name.clone());
+            return Err(Difference {
+                cycle,
+                subject: Subject::CycleCount { task },
+                first: a.to_string(),
+                second: b.to_string(),
+            });
+        }
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests;
