@@ -1,8 +1,8 @@
 //! One image run under two engines and compared after every cycle (`docs/native-engine.md`
 //! §11.1): the first engine is the interpreter, the reference; the second is the engine under
 //! test. After loading and after every cycle, [`run_both`] compares the data, `%I`, `%Q` and
-//! `%M` regions byte for byte, the faults (under the exceptions of §6.3) and the motion
-//! kernel's axes, and stops at the first [`Difference`], which names the cycle, the place by
+//! `%M` regions and the constant pool byte for byte, the faults (under the exceptions of §6.3)
+//! and the motion kernel's axes, and stops at the first [`Difference`], which names the cycle, the place by
 //! symbol path and both values.
 //!
 //! It lives in the runtime rather than in the `tests` crate's library because that library may
@@ -62,6 +62,18 @@ pub fn run_both(
     for cycle in 1..=cycles {
         writes(cycle, first.engine_mut());
         writes(cycle, second.engine_mut());
+        if state_compared {
+            // A test whose writes keep state could write differently into the two engines;
+            // that is the test's difference, not the engines'.
+            compare_memory(cycle, first.engine(), second.engine()).map_err(|difference| {
+                Difference {
+                    subject: Subject::Writes {
+                        place: Box::new(difference.subject),
+                    },
+                    ..difference
+                }
+            })?;
+        }
         first.run(1);
         second.run(1);
         let verdict = faults::compare(cycle, faults_seen, first.faults(), second.faults())?;
@@ -85,9 +97,11 @@ fn load_outcome(load: &Result<Simulation, LoadError>) -> String {
     }
 }
 
-/// Compares the memory, then the axes, of the two simulations after `cycle`.
+/// Compares the memory, the constant pool, then the axes, of the two simulations after
+/// `cycle`.
 fn compare_state(cycle: u64, first: &Simulation, second: &Simulation) -> Result<(), Difference> {
     compare_memory(cycle, first.engine(), second.engine())?;
+    compare_constants(cycle, first.engine(), second.engine())?;
     axes::compare(
         cycle,
         first.engine().image(),
@@ -122,6 +136,34 @@ fn compare_memory(cycle: u64, first: &Engine, second: &Engine) -> Result<(), Dif
     Ok(())
 }
 
+/// Finds the first byte of the constant pool that differs: the pool is read-only for the
+/// program's own code, but a store through a pointer reaches it (`docs/native-engine.md` §5.2).
+fn compare_constants(cycle: u64, first: &Engine, second: &Engine) -> Result<(), Difference> {
+    let (a, b) = (first.constants(), second.constants());
+    let differing = a
+        .iter()
+        .zip(b)
+        .position(|(x, y)| x != y)
+        .or_else(|| (a.len() != b.len()).then_some(a.len().min(b.len())));
+    match differing {
+        Some(offset) => {
+            let byte = |pool: &[u8]| {
+                pool.get(offset).map_or_else(
+                    || "no such byte".to_owned(),
+                    |byte| format!("16#{byte:02X}"),
+                )
+            };
+            Err(Difference {
+                cycle,
+                subject: Subject::Constants { offset },
+                first: byte(a),
+                second: byte(b),
+            })
+        }
+        None => Ok(()),
+    }
+}
+
 /// The cycles each task has run: a task that stopped in one engine only shows here too.
 fn compare_cycle_counts(
     cycle: u64,
@@ -129,6 +171,14 @@ fn compare_cycle_counts(
     second: &Simulation,
 ) -> Result<(), Difference> {
     let tasks = &first.engine().image().tasks;
+    if first.cycles().len() != second.cycles().len() {
+        return Err(Difference {
+            cycle,
+            subject: Subject::TaskCount,
+            first: first.cycles().len().to_string(),
+            second: second.cycles().len().to_string(),
+        });
+    }
     for (index, (a, b)) in first.cycles().iter().zip(second.cycles()).enumerate() {
         if a != b {
             let task = tasks

@@ -1,5 +1,6 @@
 //! The motion kernel's axes of two engines compared: state, power, positions, velocities,
-//! acceleration, error and reference, each bit for bit.
+//! acceleration, error, reference, period, overrides, the commanded position and the command
+//! in control, each bit for bit.
 
 use motion::kernel::AxisSnapshot;
 use program_image::ProgramImage;
@@ -10,8 +11,8 @@ use super::{AxisQuantity, Difference, Subject};
 pub(super) fn compare(
     cycle: u64,
     image: &ProgramImage,
-    first: &[AxisSnapshot],
-    second: &[AxisSnapshot],
+    first: &[Option<AxisSnapshot>],
+    second: &[Option<AxisSnapshot>],
 ) -> Result<(), Difference> {
     let name = |index: usize| {
         image
@@ -21,7 +22,7 @@ pub(super) fn compare(
             .map_or_else(String::new, |axis| axis.name.clone())
     };
     for index in 0..first.len().max(second.len()) {
-        let (Some(a), Some(b)) = (first.get(index), second.get(index)) else {
+        let (Some(Some(a)), Some(Some(b))) = (first.get(index), second.get(index)) else {
             return Err(Difference {
                 cycle,
                 subject: Subject::Axis {
@@ -49,9 +50,10 @@ pub(super) fn compare(
     Ok(())
 }
 
-fn presence(axis: Option<&AxisSnapshot>) -> String {
+fn presence(axis: Option<&Option<AxisSnapshot>>) -> String {
     match axis {
-        Some(axis) => format!("{:?}", axis.state),
+        Some(Some(axis)) => format!("{:?}", axis.state),
+        Some(None) => "no snapshot of the axis".to_owned(),
         None => "no such axis".to_owned(),
     }
 }
@@ -77,6 +79,27 @@ fn first_difference(a: &AxisSnapshot, b: &AxisSnapshot) -> Option<(AxisQuantity,
             AxisQuantity::SetAcceleration,
             a.set_acceleration,
             b.set_acceleration,
+        ),
+        (
+            AxisQuantity::CommandedPosition,
+            a.commanded_position,
+            b.commanded_position,
+        ),
+        (AxisQuantity::ModuloPeriod, a.modulo_period, b.modulo_period),
+        (
+            AxisQuantity::VelocityOverride,
+            a.overrides.velocity,
+            b.overrides.velocity,
+        ),
+        (
+            AxisQuantity::AccelerationOverride,
+            a.overrides.acceleration,
+            b.overrides.acceleration,
+        ),
+        (
+            AxisQuantity::JerkOverride,
+            a.overrides.jerk,
+            b.overrides.jerk,
         ),
     ];
     if a.state != b.state {
@@ -113,6 +136,22 @@ fn first_difference(a: &AxisSnapshot, b: &AxisSnapshot) -> Option<(AxisQuantity,
             b.is_homed.to_string(),
         ));
     }
+    if a.error != b.error {
+        return Some((
+            AxisQuantity::Error,
+            a.error.to_string(),
+            b.error.to_string(),
+        ));
+    }
+    if (a.active_command, a.active_command_id) != (b.active_command, b.active_command_id) {
+        let command = |axis: &AxisSnapshot| {
+            format!(
+                "{:?} (id {:?})",
+                axis.active_command, axis.active_command_id
+            )
+        };
+        return Some((AxisQuantity::ActiveCommand, command(a), command(b)));
+    }
     None
 }
 
@@ -142,7 +181,12 @@ mod tests {
     #[test]
     fn equal_axes_agree() {
         assert_eq!(
-            compare(1, &ProgramImage::default(), &[snapshot()], &[snapshot()]),
+            compare(
+                1,
+                &ProgramImage::default(),
+                &[Some(snapshot())],
+                &[Some(snapshot())]
+            ),
             Ok(())
         );
     }
@@ -152,7 +196,7 @@ mod tests {
         let a = snapshot();
         let mut b = a;
         b.set_velocity = 12.5;
-        let difference = compare(7, &ProgramImage::default(), &[a], &[b]).unwrap_err();
+        let difference = compare(7, &ProgramImage::default(), &[Some(a)], &[Some(b)]).unwrap_err();
         assert_eq!(difference.cycle, 7);
         assert_eq!(
             difference.subject,
@@ -165,7 +209,8 @@ mod tests {
         assert!(difference.second.starts_with("12.5 (16#"), "{difference}");
         let mut moved = a;
         moved.actual_position = -0.0;
-        let difference = compare(1, &ProgramImage::default(), &[a], &[moved]).unwrap_err();
+        let difference =
+            compare(1, &ProgramImage::default(), &[Some(a)], &[Some(moved)]).unwrap_err();
         assert!(
             matches!(
                 difference.subject,
@@ -178,13 +223,59 @@ mod tests {
         );
         let mut stopped = a;
         stopped.state = AxisState::ErrorStop;
-        let difference = compare(1, &ProgramImage::default(), &[a], &[stopped]).unwrap_err();
+        let difference =
+            compare(1, &ProgramImage::default(), &[Some(a)], &[Some(stopped)]).unwrap_err();
         assert!(difference.second.contains("ErrorStop"), "{difference}");
     }
 
     #[test]
     fn an_axis_missing_in_one_engine_is_a_difference() {
-        let difference = compare(0, &ProgramImage::default(), &[snapshot()], &[]).unwrap_err();
+        let difference =
+            compare(0, &ProgramImage::default(), &[Some(snapshot())], &[]).unwrap_err();
         assert_eq!(difference.second, "no such axis");
+        let difference =
+            compare(0, &ProgramImage::default(), &[Some(snapshot())], &[None]).unwrap_err();
+        assert_eq!(difference.second, "no snapshot of the axis");
+    }
+
+    #[test]
+    fn the_commanded_position_overrides_and_command_in_control_are_compared() {
+        let a = snapshot();
+        let mut based = a;
+        based.commanded_position = 90.0;
+        let difference =
+            compare(2, &ProgramImage::default(), &[Some(a)], &[Some(based)]).unwrap_err();
+        assert!(
+            matches!(
+                difference.subject,
+                Subject::Axis {
+                    quantity: AxisQuantity::CommandedPosition,
+                    ..
+                }
+            ),
+            "{difference}"
+        );
+        let mut slowed = a;
+        slowed.overrides.velocity = 0.5;
+        let difference =
+            compare(2, &ProgramImage::default(), &[Some(a)], &[Some(slowed)]).unwrap_err();
+        assert!(
+            matches!(
+                difference.subject,
+                Subject::Axis {
+                    quantity: AxisQuantity::VelocityOverride,
+                    ..
+                }
+            ),
+            "{difference}"
+        );
+        let mut commanded = a;
+        commanded.active_command = Some("MC_MoveAbsolute");
+        let difference =
+            compare(2, &ProgramImage::default(), &[Some(a)], &[Some(commanded)]).unwrap_err();
+        assert!(
+            difference.second.contains("MC_MoveAbsolute"),
+            "{difference}"
+        );
     }
 }

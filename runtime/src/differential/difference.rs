@@ -38,6 +38,20 @@ pub enum Subject {
         /// (`Main.s[2].b`); `None` where no symbol covers the byte.
         path: Option<String>,
     },
+    /// A byte of the constant pool as the engine holds it (a store through a pointer can
+    /// reach it).
+    Constants {
+        /// The first differing byte's offset in the pool.
+        offset: usize,
+    },
+    /// What the test's `writes` left in memory differs before the engines ran the cycle: the
+    /// test wrote differently into the two, which is no difference of the engines.
+    Writes {
+        /// The place that differs, as [`Subject::Memory`] names it.
+        place: Box<Subject>,
+    },
+    /// The number of tasks the two engines count cycles for.
+    TaskCount,
     /// The `index`-th fault of the run (from 0): present in one engine only, or different.
     Fault {
         /// Its position among the run's faults.
@@ -80,6 +94,20 @@ pub enum AxisQuantity {
     ErrorId,
     /// Whether the axis has a reference.
     Homed,
+    /// The last commanded target position, which MC_MoveAdditive adds to.
+    CommandedPosition,
+    /// The modulo period.
+    ModuloPeriod,
+    /// The velocity override factor.
+    VelocityOverride,
+    /// The acceleration override factor.
+    AccelerationOverride,
+    /// The jerk override factor.
+    JerkOverride,
+    /// Whether an axis error is pending.
+    Error,
+    /// The function block whose command controls the axis, and the command's id.
+    ActiveCommand,
 }
 
 impl fmt::Display for Subject {
@@ -96,6 +124,12 @@ impl fmt::Display for Subject {
                 offset,
                 path: None,
             } => write!(f, "{} byte {offset} (no variable)", region_name(*region)),
+            Self::Constants { offset } => write!(f, "constant pool byte {offset}"),
+            Self::Writes { place } => write!(
+                f,
+                "{place}, as the test's writes left it before the cycle (the test wrote differently into the two engines)"
+            ),
+            Self::TaskCount => write!(f, "the number of tasks"),
             Self::Fault { index } => write!(f, "fault {}", index + 1),
             Self::CycleCount { task } => write!(f, "the cycle count of task '{task}'"),
             Self::Axis {
@@ -119,6 +153,13 @@ impl fmt::Display for AxisQuantity {
             Self::SetAcceleration => "set acceleration",
             Self::ErrorId => "error id",
             Self::Homed => "homed flag",
+            Self::CommandedPosition => "commanded position",
+            Self::ModuloPeriod => "modulo period",
+            Self::VelocityOverride => "velocity override",
+            Self::AccelerationOverride => "acceleration override",
+            Self::JerkOverride => "jerk override",
+            Self::Error => "error flag",
+            Self::ActiveCommand => "command in control",
         };
         f.write_str(text)
     }

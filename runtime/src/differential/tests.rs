@@ -217,9 +217,12 @@ fn one_corrupted_byte_is_found_and_named_by_its_member_and_element_path() {
 
 #[test]
 fn a_difference_made_by_the_code_is_found_after_the_cycle_that_made_it() {
-    // The second engine adds 2 instead of 1: equal after loading, different after cycle 1.
+    // The second engine subtracts where the first adds: equal after loading, different after
+    // cycle 1.
     let second = |mut image: ProgramImage| {
-        image.constants[0] = 2;
+        if let Some(Instr::Binary { op, .. }) = image.pous[0].code.first_mut() {
+            *op = BinaryOp::Sub;
+        }
         Simulation::new(image)
     };
     let difference = differs(run_both(image(), 5, no_writes, second));
@@ -234,8 +237,40 @@ fn a_difference_made_by_the_code_is_found_after_the_cycle_that_made_it() {
     );
     assert_eq!(
         (difference.first.as_str(), difference.second.as_str()),
-        ("1 (16#00000001)", "2 (16#00000002)")
+        ("1 (16#00000001)", "-1 (16#FFFFFFFF)")
     );
+}
+
+#[test]
+fn a_changed_constant_pool_is_found_after_loading() {
+    let second = |mut image: ProgramImage| {
+        image.constants[4] = 99;
+        Simulation::new(image)
+    };
+    let difference = differs(run_both(image(), 5, no_writes, second));
+    assert_eq!(difference.cycle, 0);
+    assert_eq!(difference.subject, Subject::Constants { offset: 4 });
+    assert_eq!(
+        (difference.first.as_str(), difference.second.as_str()),
+        ("16#64", "16#63")
+    );
+}
+
+#[test]
+fn writes_that_differ_between_the_engines_are_the_tests_difference() {
+    // A writer that keeps state writes 7 into the first engine and 8 into the second.
+    let mut written = 6;
+    let writes = |_cycle: u64, engine: &mut Engine| {
+        written += 1;
+        engine.region_mut(Region::Data)[0..4].copy_from_slice(&i32::to_le_bytes(written));
+    };
+    let difference = differs(run_both(image(), 2, writes, Simulation::new));
+    assert_eq!(difference.cycle, 1);
+    assert!(
+        matches!(&difference.subject, Subject::Writes { place } if matches!(**place, Subject::Memory { offset: 0, .. })),
+        "{difference}"
+    );
+    assert!(difference.to_string().contains("Main.n"), "{difference}");
 }
 
 #[test]
@@ -321,7 +356,7 @@ fn a_load_that_fails_in_one_engine_is_a_difference_of_cycle_0() {
 /// [`image`] with a function `Recurse` (a frame of 8 bytes in the task's 64-byte stack) that
 /// adds `step` to `Main.s[3].b` and calls itself; `Main` calls it first, so its first cycle
 /// ends in a stack overflow after `Main.s[3].b` has grown by a few `step`s.
-fn recursive_image(step: i32) -> ProgramImage {
+fn recursive_image(op: BinaryOp) -> ProgramImage {
     let mut image = image();
     let recurse = Instr::CallFunction {
         pou: 1,
@@ -330,7 +365,7 @@ fn recursive_image(step: i32) -> ProgramImage {
         outputs: Vec::new(),
     };
     image.pous[0].code.insert(0, recurse.clone());
-    image.constants.extend(step.to_le_bytes());
+    image.constants.extend(1i32.to_le_bytes());
     let s3_b = Operand::Global(S2_B as u32 + 8);
     image.pous.push(Pou {
         name: "Recurse".to_owned(),
@@ -340,7 +375,7 @@ fn recursive_image(step: i32) -> ProgramImage {
         instance_size: 0,
         code: vec![
             Instr::Binary {
-                op: BinaryOp::Add,
+                op,
                 ty: Elementary::Dint,
                 dst: s3_b,
                 a: s3_b,
@@ -356,10 +391,11 @@ fn recursive_image(step: i32) -> ProgramImage {
 
 #[test]
 fn after_a_stack_overflow_the_memory_is_no_longer_compared_but_the_fault_is() {
-    // The second engine's recursion adds 2 where the first adds 1: after the overflow, which
-    // both report in the same task and POU, their memory legitimately differs.
-    let second = |_| Simulation::new(recursive_image(2));
-    let simulation = run_both(recursive_image(1), 3, no_writes, second).unwrap();
+    // The second engine's recursion subtracts 1 where the first adds 1 (the same constant
+    // pool, so only the memory can differ): after the overflow, which both report in the same
+    // task and POU, their memory legitimately differs.
+    let second = |_| Simulation::new(recursive_image(BinaryOp::Sub));
+    let simulation = run_both(recursive_image(BinaryOp::Add), 3, no_writes, second).unwrap();
     let faults = simulation.faults();
     assert_eq!(faults.len(), 1, "{faults:?}");
     assert_eq!(faults[0].kind, crate::engine::FaultKind::StackOverflow);
@@ -367,5 +403,5 @@ fn after_a_stack_overflow_the_memory_is_no_longer_compared_but_the_fault_is() {
     let Ok(Value::Int(grown, _)) = value::read(simulation.engine(), "Main.s[3].b") else {
         panic!("Main.s[3].b reads as a DINT");
     };
-    assert!(grown > 0 && grown % 2 == 0, "{grown}");
+    assert!(grown < 0, "{grown}");
 }

@@ -207,8 +207,16 @@ impl Engine {
     }
 
     /// The motion kernel's view of each axis of the image, in the image's order.
-    pub(crate) fn axis_snapshots(&self) -> Vec<motion::kernel::AxisSnapshot> {
+    pub(crate) fn axis_snapshots(&self) -> Vec<Option<motion::kernel::AxisSnapshot>> {
         self.motion.axis_snapshots()
+    }
+
+    /// The constants region: the image's constant pool as the engine holds it, which a store
+    /// through a pointer can reach, so the differential harness compares it too.
+    pub(crate) fn constants(&self) -> &[u8] {
+        self.memory
+            .get(self.regions.constants..self.regions.stacks)
+            .unwrap_or_default()
     }
 
     /// The bytes of a region.

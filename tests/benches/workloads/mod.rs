@@ -351,7 +351,9 @@ pub fn workloads() -> Vec<Workload> {
             source: program(&BOOL_STATEMENTS),
             units: COUNT,
             native: native_bool,
-            check: "main.b2",
+            // b4 turns TRUE in the first round; b2 stays FALSE throughout, and would pass for
+            // a twin that does nothing.
+            check: "main.b4",
         },
         Workload {
             name: "dint",
@@ -418,7 +420,7 @@ pub fn workloads() -> Vec<Workload> {
 fn native_value(workload: &Workload, n: &Native) -> Value {
     use program_image::Elementary as E;
     match workload.name {
-        "bool" => Value::Bool(n.b[1]),
+        "bool" => Value::Bool(n.b[3]),
         "dint" => Value::Int(i128::from(n.i[2]), E::Dint),
         "real" => Value::Real(f64::from(n.r[2]), E::Real),
         "array_loop" => Value::Int(i128::from(n.a[COUNT - 1]), E::Dint),

@@ -159,12 +159,12 @@ impl MotionState {
     }
 
     /// What the kernel shows of each axis of the image, in the image's order, for comparing
-    /// two engines' motion (`runtime::differential`). Every axis of the image is in the kernel
-    /// (`new` added them all), so none is left out.
-    pub(crate) fn axis_snapshots(&self) -> Vec<AxisSnapshot> {
+    /// two engines' motion (`runtime::differential`). An axis the kernel cannot show keeps its
+    /// place as `None`, so the axes after it keep their indices and names.
+    pub(crate) fn axis_snapshots(&self) -> Vec<Option<AxisSnapshot>> {
         self.axes
             .iter()
-            .filter_map(|link| self.kernel.snapshot(link.id).ok())
+            .map(|link| self.kernel.snapshot(link.id).ok())
             .collect()
     }
 
