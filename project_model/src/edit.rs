@@ -287,7 +287,23 @@ impl Edit {
                 &mut project.dialect,
                 dialect,
             ))),
-            Self::Tasks(edit) => Ok(Self::Tasks(edit.apply(&mut project.tasks)?)),
+            Self::Tasks(edit) => {
+                // A renamed task's vendor data follows it, as its place (`task:NAME`) names it;
+                // the inverse renames it back, so undo moves the entries back too.
+                let renamed = match &edit {
+                    ListEdit::Replace { index, item } => project
+                        .tasks
+                        .get(*index)
+                        .filter(|task| task.name != item.name)
+                        .map(|task| (task.name.clone(), item.name.clone())),
+                    _ => None,
+                };
+                let inverse = edit.apply(&mut project.tasks)?;
+                if let Some((old, new)) = renamed {
+                    project.vendor_data.rename_task(&old, &new);
+                }
+                Ok(Self::Tasks(inverse))
+            }
             Self::IoAreas(edit) => Ok(Self::IoAreas(edit.apply(&mut project.io_areas)?)),
             Self::SerialPorts(edit) => {
                 Ok(Self::SerialPorts(edit.apply(&mut project.serial_ports)?))

@@ -1,6 +1,8 @@
 //! What a rename carries along: everything else in the project that names the renamed task or
 //! serial port, so a rename never leaves a device, an axis or a trace on something that no
-//! longer exists. The edits are applied with the rename's own edit, in one undo step.
+//! longer exists. The edits are applied with the rename's own edit, in one undo step. Another
+//! tool's vendor data of a task (`task:NAME`) is not an edit of its own: `Edit::Tasks` moves it
+//! when it renames the task, as `Edit::Tree` does for an object's.
 
 use crate::{Edit, ListEdit, ModbusLink, Object, Project, same_identifier};
 
@@ -91,6 +93,12 @@ mod tests {
         // Names compare as IEC identifiers, so another spelling of the task is carried too.
         drive.task = Some("motiontask".into());
         project.modbus_devices.push(drive);
+        // Another tool's data of the task, as an import keeps it for the export.
+        project.vendor_data.entries.push(crate::VendorEntry {
+            place: "task:MotionTask".into(),
+            xml: "<data name=\"x\" handleUnknown=\"preserve\"/>".into(),
+            signature: None,
+        });
         let before = project.clone();
         let index = project
             .tasks
@@ -109,7 +117,16 @@ mod tests {
         history.apply(&mut project, "Rename task", edits).unwrap();
         let device = project.modbus_devices.last().unwrap();
         assert_eq!(device.task.as_deref(), Some("Motion"));
+        // The example has two axes in the task; both are carried.
+        assert_eq!(project.axes.len(), 2);
         assert!(project.axes.iter().all(|axis| axis.task == "Motion"));
+        let places: Vec<&str> = project
+            .vendor_data
+            .entries
+            .iter()
+            .map(|entry| entry.place.as_str())
+            .collect();
+        assert_eq!(places, ["task:Motion"]);
         // The studio device and other tasks' names are left alone.
         assert_eq!(project.modbus_devices[0].task, None);
         let trace_task = |name: &str| match project.application.object(name) {

@@ -83,15 +83,28 @@ impl VendorData {
         let (Some(old), Some(new)) = (vendor_prefix(kind, old), vendor_prefix(kind, new)) else {
             return;
         };
+        self.move_place(&old, &new);
+    }
+
+    /// Moves the entries of the task `old` (place `task:OLD`) to its new name `new`, as a
+    /// rename of the task does, with the same care for a deleted task's entries at `new` as
+    /// [`VendorData::rename_object`].
+    pub fn rename_task(&mut self, old: &str, new: &str) {
+        self.move_place(&format!("task:{old}"), &format!("task:{new}"));
+    }
+
+    /// Moves the entries at the place `old` and below it to `new`, detaching those already at
+    /// `new`, and keeps the entries ordered by place.
+    fn move_place(&mut self, old: &str, new: &str) {
         // A rename that changes only the case keeps the entries where they are.
-        let same_name = old.eq_ignore_ascii_case(&new);
+        let same_name = old.eq_ignore_ascii_case(new);
         for entry in &mut self.entries {
-            if !same_name && is_place_of(&entry.place, &new) {
+            if !same_name && is_place_of(&entry.place, new) {
                 entry.place = format!("detached:{}", entry.place);
             }
         }
         for entry in &mut self.entries {
-            if is_place_of(&entry.place, &old) {
+            if is_place_of(&entry.place, old) {
                 entry.place = format!("{new}{}", &entry.place[old.len()..]);
             }
         }

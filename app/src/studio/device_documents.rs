@@ -9,18 +9,47 @@ use project_model::Project;
 
 use super::command::{Command, Commands};
 use super::device_refusals::refusal_words;
+use super::documents::node_exists;
 use super::i18n::{DeviceText, Language, ModbusOnlineText};
 use super::modbus_online::device_online;
 use super::online::Online;
 use super::theme::colors;
 use super::tree_node::TreeNode;
 
-/// What the device editors keep between frames: each node's typed text and refusals. Not
-/// saved; kept while the studio runs (a few short strings per node opened).
+/// What the device editors keep between frames: each node's typed text, refusals and
+/// remembered links. Not saved; kept while the node exists (a few short strings per node
+/// opened), dropped when it is deleted or renamed and when another project is opened.
 #[derive(Default)]
 pub struct DeviceDocuments {
     /// The state of each node's editor.
     states: HashMap<TreeNode, DeviceEditorState>,
+}
+
+impl DeviceDocuments {
+    /// Forgets every node's state, as opening another project does: its nodes may have the
+    /// previous project's names without being the same devices.
+    pub fn clear(&mut self) {
+        self.states.clear();
+    }
+
+    /// Keeps the states in step with `project` after its change from `ports_before` (the serial
+    /// ports' names before the change): a port renamed in place carries its new name into
+    /// every remembered link, and the state of a node that no longer exists (deleted or
+    /// renamed) is dropped, so a new node reusing the name starts afresh.
+    pub fn follow_project(&mut self, ports_before: &[String], project: &Project) {
+        // A rename changes one name in place; an addition or removal changes the count, and a
+        // removed port has no new name to carry.
+        if ports_before.len() == project.serial_ports.len() {
+            for (old, port) in ports_before.iter().zip(&project.serial_ports) {
+                if *old != port.name {
+                    for state in self.states.values_mut() {
+                        state.serial_port_renamed(old, &port.name);
+                    }
+                }
+            }
+        }
+        self.states.retain(|node, _| node_exists(project, node));
+    }
 }
 
 /// Draws the editor of `node` (the controller, an I/O area, a Modbus device or an axis) and

@@ -2,7 +2,7 @@
 //! [`DeviceProblem`] mapped to a template of [`DeviceText`], so a new variant cannot compile without
 //! its words.
 
-use compiler::ide::{AddressError, ChannelBindingError, ChannelVariableError};
+use compiler::ide::{AddressError, ChannelBindingError, ChannelVariableError, Unplaceable};
 use editor::{Refusal, RefusalWords};
 use project_model::{ChannelDirection, DeviceProblem, ModbusTable};
 
@@ -303,9 +303,7 @@ fn describe_channel_variable(error: &ChannelVariableError, language: Language) -
             data_type,
             expected,
         } => {
-            // The fitting types come joined by the English "or": `UINT or WORD`.
-            let or = format!(" {} ", DeviceText::WordOr.get(language));
-            let expected = expected.replace(" or ", &or);
+            let expected = joined_by_or(expected, language);
             fill(
                 DeviceText::VariableTypeMismatch,
                 &[
@@ -327,6 +325,32 @@ fn describe_channel_binding(error: &ChannelBindingError, language: Language) -> 
         ChannelBindingError::NoSuchVariable(path) => {
             fill(DeviceText::NoSuchVariable, &[("path", path)])
         }
+        ChannelBindingError::NoFixedPlace { path, what } => fill(
+            DeviceText::BindingNoFixedPlace,
+            &[
+                ("path", path),
+                ("what", unplaceable_word(*what).get(language)),
+            ],
+        ),
+        ChannelBindingError::StaticElsewhere { path, symbol } => fill(
+            DeviceText::BindingStaticElsewhere,
+            &[("path", path), ("symbol", symbol)],
+        ),
+        ChannelBindingError::Constant { path } => {
+            fill(DeviceText::BindingConstant, &[("path", path)])
+        }
+        ChannelBindingError::AtBitAddress {
+            path,
+            address,
+            count,
+        } => fill(
+            DeviceText::BindingAtBitAddress,
+            &[
+                ("path", path),
+                ("address", address),
+                ("count", &count.to_string()),
+            ],
+        ),
         ChannelBindingError::Misfit { path, misfit } => {
             // The data type as the project file and the build's message spell it.
             let data_type = misfit.data_type.file_name();
@@ -341,9 +365,7 @@ fn describe_channel_binding(error: &ChannelBindingError, language: Language) -> 
                     ],
                 )
             };
-            // The fitting declarations come joined by the English "or".
-            let or = format!(" {} ", DeviceText::WordOr.get(language));
-            let expected = misfit.expected.replace(" or ", &or);
+            let expected = joined_by_or(&misfit.expected, language);
             let template = match misfit.direction {
                 ChannelDirection::Read => DeviceText::ChannelMisfitReads,
                 ChannelDirection::Write => DeviceText::ChannelMisfitWrites,
@@ -358,6 +380,24 @@ fn describe_channel_binding(error: &ChannelBindingError, language: Language) -> 
                 ],
             )
         }
+    }
+}
+
+/// The fitting types or declarations joined by the word "or" of `language`: `UINT or WORD`.
+fn joined_by_or(expected: &[String], language: Language) -> String {
+    expected.join(&format!(" {} ", DeviceText::WordOr.get(language)))
+}
+
+/// What a bound path names that has no place between cycles, in a sentence.
+fn unplaceable_word(what: Unplaceable) -> DeviceText {
+    match what {
+        Unplaceable::VarTemp => DeviceText::UnplaceableVarTemp,
+        Unplaceable::VarInOut => DeviceText::UnplaceableVarInOut,
+        Unplaceable::VarExternal => DeviceText::UnplaceableVarExternal,
+        Unplaceable::FunctionVariable => DeviceText::UnplaceableFunctionVariable,
+        Unplaceable::Method => DeviceText::UnplaceableMethod,
+        Unplaceable::Property => DeviceText::UnplaceableProperty,
+        Unplaceable::AxisOrCam => DeviceText::UnplaceableAxisOrCam,
     }
 }
 

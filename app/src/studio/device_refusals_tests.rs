@@ -166,28 +166,63 @@ fn every_refusal() -> Vec<Refusal> {
                 path: "GVL.x".into(),
                 declared: "REAL".into(),
                 data_type: "UINT".into(),
-                expected: "UINT or WORD".into(),
+                expected: vec!["UINT".into(), "WORD".into()],
             },
         ]
         .map(Refusal::from),
     );
-    let misfit = |direction, count, declared: &str, expected: &str| ChannelBindingError::Misfit {
-        path: "GVL.x".into(),
-        misfit: compiler::ide::ChannelMisfit {
-            direction,
-            data_type: ModbusDataType::Int16,
-            count,
-            declared: declared.into(),
-            expected: expected.into(),
-        },
-    };
+    let misfit =
+        |direction, count, declared: &str, expected: &[&str]| ChannelBindingError::Misfit {
+            path: "GVL.x".into(),
+            misfit: compiler::ide::ChannelMisfit {
+                direction,
+                data_type: ModbusDataType::Int16,
+                count,
+                declared: declared.into(),
+                expected: expected.iter().map(|name| (*name).to_owned()).collect(),
+            },
+        };
     refusals.extend(
         [
             ChannelBindingError::NoSuchVariable("GVL.x".into()),
-            misfit(ChannelDirection::Read, 1, "REAL", "INT"),
-            misfit(ChannelDirection::Write, 8, "INT", "ARRAY[0..7] OF INT"),
+            misfit(ChannelDirection::Read, 1, "REAL", &["INT"]),
+            misfit(
+                ChannelDirection::Write,
+                8,
+                "INT",
+                &["ARRAY[0..7] OF UINT", "ARRAY[0..7] OF WORD"],
+            ),
+            ChannelBindingError::StaticElsewhere {
+                path: "Main.fb.iShared".into(),
+                symbol: "FB_Base.iShared".into(),
+            },
+            ChannelBindingError::Constant {
+                path: "GVL.iLimit".into(),
+            },
+            ChannelBindingError::AtBitAddress {
+                path: "GVL.axBits".into(),
+                address: "%IX0.0".into(),
+                count: 8,
+            },
         ]
         .map(Refusal::from),
+    );
+    refusals.extend(
+        [
+            Unplaceable::VarTemp,
+            Unplaceable::VarInOut,
+            Unplaceable::VarExternal,
+            Unplaceable::FunctionVariable,
+            Unplaceable::Method,
+            Unplaceable::Property,
+            Unplaceable::AxisOrCam,
+        ]
+        .map(|what| {
+            Refusal::from(ChannelBindingError::NoFixedPlace {
+                path: "Main.x".into(),
+                what,
+            })
+        }),
     );
     refusals.extend([
         Refusal::BitTableAddress {
@@ -272,4 +307,31 @@ fn every_kind_and_field_word_the_checks_use_has_chinese_words() {
         assert_eq!(word(english, Language::English), english);
         assert_ne!(word(english, Language::SimplifiedChinese), english);
     }
+}
+
+#[test]
+fn a_chinese_misfit_joins_its_declarations_by_chinese_or_and_spaces_its_count_once() {
+    let misfit = |count, expected: &[&str]| {
+        Refusal::from(ChannelBindingError::Misfit {
+            path: "GVL.x".into(),
+            misfit: compiler::ide::ChannelMisfit {
+                direction: ChannelDirection::Write,
+                data_type: ModbusDataType::Uint16,
+                count,
+                declared: "INT".into(),
+                expected: expected.iter().map(|name| (*name).to_owned()).collect(),
+            },
+        })
+    };
+    assert_eq!(
+        describe_refusal(
+            &misfit(8, &["ARRAY[0..7] OF UINT", "ARRAY[0..7] OF WORD"]),
+            Language::SimplifiedChinese
+        ),
+        "'GVL.x'：通道写入 8 个 uint16 值，但变量声明为 INT：请将其声明为 ARRAY[0..7] OF UINT 或 ARRAY[0..7] OF WORD"
+    );
+    assert_eq!(
+        describe_refusal(&misfit(1, &["UINT", "WORD"]), Language::SimplifiedChinese),
+        "'GVL.x'：通道写入 1 个 uint16 值，但变量声明为 INT：请将其声明为 UINT 或 WORD"
+    );
 }

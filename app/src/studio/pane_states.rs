@@ -38,5 +38,6 @@ impl PaneStates {
     pub fn forget_documents(&mut self) {
         self.texts.clear();
         self.cams.clear();
+        self.devices.clear();
     }
 }

@@ -412,7 +412,7 @@ fn a_channel_s_misfit_is_said_in_chinese_when_chosen() {
     enter_text(&mut harness, "第 1 行的变量", "GVL_Machine.arSpeeds");
     assert_refused(
         &harness,
-        "'GVL_Machine.arSpeeds'：通道读取一个 real 值，但变量声明为 ARRAY[0..1] OF REAL：请将其声明为 REAL",
+        "'GVL_Machine.arSpeeds'：通道读取 1 个 real 值，但变量声明为 ARRAY[0..1] OF REAL：请将其声明为 REAL",
     );
     assert!(
         harness
@@ -482,7 +482,7 @@ fn the_waiting_rising_edge_asks_for_its_variable_in_chinese() {
     choose(&mut harness, "第 1 行的触发", "上升沿");
     assert!(
         harness
-            .query_by_label_contains("请填写 BOOL 变量，其上升沿发送该通道")
+            .query_by_label_contains("请填写 BOOL 触发变量：其上升沿时发送本通道")
             .is_some()
     );
     assert!(harness.query_by_label_contains("Name the BOOL").is_none());
@@ -669,5 +669,91 @@ fn a_value_refused_in_chinese_gives_its_reason_in_chinese() {
     assert_eq!(
         project(&harness).modbus_devices[0].bindings[0].variable,
         variable
+    );
+}
+
+/// The example with two serial ports and BeltDrive polled in the main task on the second.
+fn example_with_two_ports() -> tempfile::TempDir {
+    example_copy(|dir| {
+        let manifest = dir.join("rivet.toml");
+        let text = std::fs::read_to_string(&manifest).unwrap();
+        let ports = "[[serial_port]]\nname = \"Line1\"\ndevice = \"/dev/ttyS0\"\n\
+                     baud_rate = 19200\nparity = \"even\"\ndata_bits = 8\nstop_bits = 1\n\
+                     inter_frame_delay_us = 0\n\n[[serial_port]]\nname = \"Line2\"\n\
+                     device = \"/dev/ttyUSB0\"\nbaud_rate = 19200\nparity = \"even\"\n\
+                     data_bits = 8\nstop_bits = 1\ninter_frame_delay_us = 0\n\n";
+        let text = text
+            .replacen(
+                "[[modbus_device]]\n",
+                &format!("{ports}[[modbus_device]]\n"),
+                1,
+            )
+            .replacen(
+                "host = \"192.168.1.50\"\nport = 502\n",
+                "serial_port = \"Line2\"\ntask = \"MainTask\"\n",
+                1,
+            );
+        std::fs::write(&manifest, text).unwrap();
+    })
+}
+
+/// Renames the tree row `row` to `name` through its context menu's Rename dialog.
+fn rename_in_tree(harness: &mut Harness<'_, StudioApp>, row: &str, name: &str) {
+    crate::tree::menu(harness, row, "Rename");
+    crate::tree::set_text(harness, "Name", name);
+    harness.get_by_label("OK").click();
+    harness.run();
+}
+
+#[test]
+fn a_port_renamed_while_its_device_is_on_tcp_is_the_one_the_device_returns_to() {
+    let dir = example_with_two_ports();
+    let mut harness = studio(dir.path());
+    let drive = |harness: &Harness<'_, StudioApp>| project(harness).modbus_devices[0].clone();
+    open(&mut harness, TreeNode::ModbusDevice("BeltDrive".into()));
+    assert_eq!(drive(&harness).serial_port(), Some("Line2"));
+    choose(&mut harness, "Link of BeltDrive", "Modbus TCP");
+    assert_eq!(drive(&harness).serial_port(), None);
+
+    rename_in_tree(&mut harness, "Line2", "Bus2");
+    assert_eq!(project(&harness).serial_ports[1].name, "Bus2");
+    open(&mut harness, TreeNode::ModbusDevice("BeltDrive".into()));
+    choose(
+        &mut harness,
+        "Link of BeltDrive",
+        "Modbus RTU (serial port)",
+    );
+    // Not the first port, which stands in only for a port that is gone.
+    assert_eq!(drive(&harness).serial_port(), Some("Bus2"));
+}
+
+#[test]
+fn a_new_device_reusing_a_deleted_device_s_name_remembers_nothing_of_it() {
+    let dir = example_with_two_ports();
+    let mut harness = studio(dir.path());
+    open(&mut harness, TreeNode::ModbusDevice("BeltDrive".into()));
+    assert_eq!(
+        project(&harness).modbus_devices[0].serial_port(),
+        Some("Line2")
+    );
+    // On TCP, the editor remembers the port it was on; the row is marked as changed.
+    choose(&mut harness, "Link of BeltDrive", "Modbus TCP");
+    crate::tree::menu(&mut harness, "BeltDrive *", "Delete");
+    assert!(project(&harness).modbus_devices.is_empty());
+
+    crate::tree::menu(&mut harness, "Modbus devices *", "Add Modbus device");
+    let added = project(&harness).modbus_devices[0].name.clone();
+    rename_in_tree(&mut harness, &format!("{added} *"), "BeltDrive");
+    open(&mut harness, TreeNode::ModbusDevice("BeltDrive".into()));
+    choose(&mut harness, "I/O task of BeltDrive", "MainTask");
+    choose(
+        &mut harness,
+        "Link of BeltDrive",
+        "Modbus RTU (serial port)",
+    );
+    // The deleted device's port is not remembered for the new one: it takes the first port.
+    assert_eq!(
+        project(&harness).modbus_devices[0].serial_port(),
+        Some("Line1")
     );
 }

@@ -208,6 +208,8 @@ fn renaming_a_task_carries_into_its_axes_and_traces_in_the_same_undo_step() {
     enter_text(&mut harness, "Name", "Motion");
     let project_now = project(&harness);
     assert!(project_now.task("Motion").is_some());
+    // The example has two axes in the task, so the checks below cannot pass on no axes.
+    assert_eq!(project_now.axes.len(), 2);
     assert!(project_now.axes.iter().all(|axis| axis.task == "Motion"));
     let trace_task = |project: &Project| match project.application.object("TRC_Knife") {
         Some(Object::Trace(trace)) => trace.task.clone(),
@@ -216,6 +218,7 @@ fn renaming_a_task_carries_into_its_axes_and_traces_in_the_same_undo_step() {
     assert_eq!(trace_task(project_now), "Motion");
     shortcut(&mut harness, Key::Z);
     let project_now = project(&harness);
+    assert_eq!(project_now.axes.len(), 2);
     assert!(
         project_now
             .axes
@@ -422,6 +425,37 @@ fn the_task_editor_changes_interval_priority_and_calls_and_refuses_bad_values() 
             .is_some()
     );
     assert!(project(&harness).task("MainTask").is_some());
+}
+
+#[test]
+fn renaming_a_task_in_the_task_editor_carries_into_its_axes_and_traces_in_one_undo_step() {
+    let dir = example_copy();
+    let mut harness = studio(dir.path());
+    harness.state_mut().open(TreeNode::TaskConfiguration);
+    harness.run();
+    enter_text(&mut harness, "Name of MotionTask", "Motion");
+    let project_now = project(&harness);
+    assert!(project_now.task("MotionTask").is_none());
+    assert!(project_now.task("Motion").is_some());
+    assert_eq!(project_now.axes.len(), 2);
+    assert!(project_now.axes.iter().all(|axis| axis.task == "Motion"));
+    let trace_task = |project: &Project| match project.application.object("TRC_Knife") {
+        Some(Object::Trace(trace)) => trace.task.clone(),
+        _ => String::new(),
+    };
+    assert_eq!(trace_task(project_now), "Motion");
+
+    shortcut(&mut harness, Key::Z);
+    let project_now = project(&harness);
+    assert!(project_now.task("MotionTask").is_some());
+    assert_eq!(project_now.axes.len(), 2);
+    assert!(
+        project_now
+            .axes
+            .iter()
+            .all(|axis| axis.task == "MotionTask")
+    );
+    assert_eq!(trace_task(project_now), "MotionTask");
 }
 
 #[test]

@@ -16,6 +16,7 @@ mod modbus_round;
 mod outline;
 pub mod semantic;
 mod semantic_tokens;
+mod unplaceable;
 pub(crate) mod variable_type;
 
 use std::ops::Range;
@@ -40,9 +41,10 @@ pub use semantic::{
     definition, hover, monitor_paths, pou_diagnostics, references,
 };
 pub use semantic_tokens::{SemanticClass, SemanticToken, semantic_tokens};
+pub use unplaceable::Unplaceable;
 pub use variable_type::{
     ChannelBindingError, ChannelMisfit, ChannelVariableError, check_channel_binding,
-    check_channel_variable, variable_type,
+    check_channel_variable, variable_type, variable_values,
 };
 
 use crate::Diagnostic;

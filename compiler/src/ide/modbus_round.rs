@@ -11,7 +11,7 @@ use crate::sema::scope::Globals;
 
 /// `device` as the build writes it into section 14, also while it is being edited: a task, a
 /// serial port or a poll interval that the build would refuse is stood in for (index 0, every
-/// cycle), since the plan does not depend on them and the device checks report them.
+/// cycle), since the plan does not depend on them; the build reports each of them (E0143).
 pub fn modbus_device_def(project: &Project, device: &ModbusDevice) -> DeviceDef {
     let globals = Globals::new(project);
     let tasks: Vec<&str> = project
@@ -101,11 +101,27 @@ mod tests {
         project
             .serial_ports
             .push(SerialPort::new("RS485", "/dev/ttyS1"));
-        // The device is not yet in the project, names no task that exists, and has no
-        // interval: the editor still gets a definition, and so a count.
+        // Runtime devices on both ports put both into section 14, RS485 second.
+        for (name, port) in [("Meter", "RS232"), ("Valve", "RS485")] {
+            let mut other = device(vec![register("G.a", 0)]);
+            other.name = name.into();
+            other.link = ModbusLink::Rtu {
+                serial_port: port.into(),
+            };
+            project.modbus_devices.push(other);
+        }
         let mut drive = device(vec![register("G.a", 0)]);
         drive.link = ModbusLink::Rtu {
             serial_port: "rs485".into(),
+        };
+        assert_eq!(
+            modbus_device_def(&project, &drive).link,
+            Link::Rtu { serial_port: 1 }
+        );
+        // The device names a port and a task that do not exist, and has no interval: the
+        // editor still gets a definition, and so a count.
+        drive.link = ModbusLink::Rtu {
+            serial_port: "Nowhere".into(),
         };
         drive.poll_interval_ms = None;
         let def = modbus_device_def(&project, &drive);

@@ -9,6 +9,8 @@ use project_model::{
 };
 use thiserror::Error;
 
+use super::Unplaceable;
+use crate::sema::address::parse_address;
 use crate::sema::scope::{GlobalSymbol, Globals, inheritance_chain};
 use crate::sema::ty::Type;
 use crate::sema::types::Shape;
@@ -23,7 +25,8 @@ pub enum ChannelVariableError {
     NoSuchVariable(String),
     /// The variable's declared type is not the channel's.
     #[error(
-        "'{path}' is declared as {declared}, but the channel reads {data_type}: declare it as {expected}"
+        "'{path}' is declared as {declared}, but the channel reads {data_type}: declare it as {}",
+        expected.join(" or ")
     )]
     TypeMismatch {
         /// The variable's path.
@@ -32,13 +35,13 @@ pub enum ChannelVariableError {
         declared: String,
         /// The channel's data type, as the project file spells it.
         data_type: String,
-        /// The types that fit the channel, such as `UINT or WORD`.
-        expected: String,
+        /// The types that fit the channel, such as `UINT` and `WORD`.
+        expected: Vec<String>,
     },
 }
 
 /// Why a variable cannot be bound to a channel of some data type and count
-/// ([`check_channel_binding`]).
+/// ([`check_channel_binding`]): the build's reasons (E0140, E0141) for a channel's variable.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
 pub enum ChannelBindingError {
     /// The path names no variable of the project.
@@ -46,7 +49,36 @@ pub enum ChannelBindingError {
         "there is no variable '{0}': write the path of a global or program variable, such as GVL_IO.rSpeed"
     )]
     NoSuchVariable(String),
-    /// The variable's type does not fit the channel's data type and count.
+    /// The path names something without a fixed place between cycles (E0140).
+    #[error(
+        "the variable '{path}' is {what}: bind a global variable or a program's VAR, VAR_INPUT or VAR_OUTPUT"
+    )]
+    NoFixedPlace {
+        /// The variable's path.
+        path: String,
+        /// What it names.
+        what: Unplaceable,
+    },
+    /// The path names a `VAR_STAT` through an instance, or through a function block derived
+    /// from the one declaring it (E0140).
+    #[error(
+        "the variable '{path}' names a VAR_STAT, which all instances share under the name of the function block declaring it: bind '{symbol}' instead"
+    )]
+    StaticElsewhere {
+        /// The variable's path.
+        path: String,
+        /// The path of the one shared variable: `<declaring function block>.<name>`.
+        symbol: String,
+    },
+    /// A read channel's variable is `CONSTANT`, which the runtime would write (E0140).
+    #[error(
+        "the variable '{path}' is a CONSTANT, which the runtime cannot write: remove CONSTANT or bind another variable"
+    )]
+    Constant {
+        /// The variable's path.
+        path: String,
+    },
+    /// The variable's type does not fit the channel's data type and count (E0141).
     #[error("'{path}': {misfit}")]
     Misfit {
         /// The variable's path.
@@ -54,15 +86,29 @@ pub enum ChannelBindingError {
         /// How it does not fit.
         misfit: ChannelMisfit,
     },
+    /// A channel of several values is bound to a variable at a bit address, where the runtime
+    /// copies one bit (E0141).
+    #[error(
+        "the variable '{path}' is located at the bit address {address}, where the runtime copies one bit, but the channel holds {count} values: remove the AT address, or bind a variable of its own to each bit"
+    )]
+    AtBitAddress {
+        /// The variable's path.
+        path: String,
+        /// The declaration's address, as written (`%IX0.0`).
+        address: String,
+        /// How many values the channel holds.
+        count: u16,
+    },
 }
 
 /// How a variable's declared type misses a channel: the channel's values, the declared type and
 /// the declarations that would fit (`docs/modbus-master.md` §2.2).
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
 #[error(
-    "the channel {} {}, but the variable is declared as {declared}: declare it as {expected}",
+    "the channel {} {}, but the variable is declared as {declared}: declare it as {}",
     if *direction == ChannelDirection::Write { "writes" } else { "reads" },
-    values(*data_type, *count)
+    values(*data_type, *count),
+    expected.join(" or ")
 )]
 pub struct ChannelMisfit {
     /// Whether the channel reads or writes.
@@ -73,8 +119,8 @@ pub struct ChannelMisfit {
     pub count: u16,
     /// The variable's declared type, as the compiler spells it.
     pub declared: String,
-    /// The declarations that fit, such as `ARRAY[0..7] OF UINT or ARRAY[0..7] OF WORD`.
-    pub expected: String,
+    /// The declarations that fit, such as `ARRAY[0..7] OF UINT` and `ARRAY[0..7] OF WORD`.
+    pub expected: Vec<String>,
 }
 
 /// A variable path of a Modbus binding resolved against the project's declarations.
@@ -101,9 +147,10 @@ pub(crate) struct BoundPath<'p> {
 pub(crate) enum Unbound {
     /// It names no variable of the project.
     NoVariable,
-    /// It names something without a fixed place between cycles: the words say what, such as
-    /// `a VAR_TEMP`.
-    NoFixedPlace(&'static str),
+    /// It names something without a fixed place between cycles.
+    NoFixedPlace(Unplaceable),
+    /// It names a `CONSTANT` the runtime would write.
+    Constant,
     /// It names a `VAR_STAT` through an instance or through a function block derived from the
     /// one declaring it: the runtime's symbol of the one shared variable is
     /// `<declaring POU>.<name>`, the path the finding asks for.
@@ -116,6 +163,25 @@ pub(crate) enum Unbound {
 pub fn variable_type(project: &Project, path: &str) -> Option<String> {
     let globals = Globals::new(project);
     resolve(&globals, path).map(|ty| ty.to_string())
+}
+
+/// The elementary type of the values the variable at `path` holds and, for a one-dimensional
+/// array, its length: `("REAL", None)` for a `REAL` (or a subrange of its base),
+/// `("INT", Some(8))` for an `ARRAY[0..7] OF INT`; `None` when the path names no variable, or
+/// one of another type (a structure, an array of several dimensions or of structures). A
+/// channel editor takes a new channel's data type and count from it.
+pub fn variable_values(project: &Project, path: &str) -> Option<(&'static str, Option<u64>)> {
+    let globals = Globals::new(project);
+    match resolve(&globals, path)? {
+        Type::Array { element, dims } => match dims.as_slice() {
+            [Some((low, high))] => {
+                let length = u64::try_from(high - low + 1).ok()?;
+                Some((elementary_name(&element)?, Some(length)))
+            }
+            _ => None,
+        },
+        other => Some((elementary_name(&other)?, None)),
+    }
 }
 
 /// Checks that `path` names a variable whose declared type fits a channel of `data_type`: the
@@ -142,7 +208,7 @@ pub fn check_channel_variable(
         path: path.to_owned(),
         declared: ty.to_string(),
         data_type: data_type.iec_name().to_owned(),
-        expected: fitting.join(" or "),
+        expected: fitting.iter().map(|name| (*name).to_owned()).collect(),
     })
 }
 
@@ -155,19 +221,57 @@ pub fn check_channel_binding(
 ) -> Result<(), ChannelBindingError> {
     let globals = Globals::new(project);
     let path = binding.variable.trim();
-    let bound = bound_path(project, &globals, path)
-        .map_err(|_| ChannelBindingError::NoSuchVariable(path.to_owned()))?;
-    match channel_misfit(&bound.ty, binding) {
+    let written_by_runtime = binding.direction == ChannelDirection::Read;
+    let owned = || path.to_owned();
+    let bound =
+        bind_path(project, &globals, path, written_by_runtime).map_err(
+            |unbound| match unbound {
+                Unbound::NoVariable => ChannelBindingError::NoSuchVariable(owned()),
+                Unbound::NoFixedPlace(what) => ChannelBindingError::NoFixedPlace {
+                    path: owned(),
+                    what,
+                },
+                Unbound::StaticElsewhere(symbol) => ChannelBindingError::StaticElsewhere {
+                    path: owned(),
+                    symbol,
+                },
+                Unbound::Constant => ChannelBindingError::Constant { path: owned() },
+            },
+        )?;
+    match channel_misfit(&bound, binding) {
         None => Ok(()),
-        Some(misfit) => Err(ChannelBindingError::Misfit {
-            path: path.to_owned(),
-            misfit,
-        }),
+        Some(error) => Err(error),
     }
 }
 
-/// How `ty` misses the channel `binding`, or `None` when it fits.
-pub(crate) fn channel_misfit(ty: &Type, binding: &ModbusBinding) -> Option<ChannelMisfit> {
+/// How the variable `bound` misses the channel `binding`, or `None` when it fits: its type
+/// ([`ChannelBindingError::Misfit`]), or for several values a declaration at a bit address
+/// ([`ChannelBindingError::AtBitAddress`]). The build's E0141 and the device editor both ask
+/// this, so they agree.
+pub(crate) fn channel_misfit(
+    bound: &BoundPath<'_>,
+    binding: &ModbusBinding,
+) -> Option<ChannelBindingError> {
+    let path = binding.variable.trim();
+    if let Some(misfit) = type_misfit(&bound.ty, binding) {
+        return Some(ChannelBindingError::Misfit {
+            path: path.to_owned(),
+            misfit,
+        });
+    }
+    // The runtime copies a symbol at a bit address as that one bit, so the other values of an
+    // array there would be lost.
+    let address = bound.root.address.as_deref()?;
+    let located = parse_address(address).ok().flatten()?;
+    (binding.count > 1 && located.size_bits == 1).then(|| ChannelBindingError::AtBitAddress {
+        path: path.to_owned(),
+        address: address.trim().to_owned(),
+        count: binding.count,
+    })
+}
+
+/// How `ty` misses the channel `binding`'s data type and count, or `None` when it fits.
+fn type_misfit(ty: &Type, binding: &ModbusBinding) -> Option<ChannelMisfit> {
     let fitting = fitting_types(binding.data_type);
     let fits = |ty: &Type| elementary_name(ty).is_some_and(|name| fitting.contains(&name));
     let count = binding.count;
@@ -199,7 +303,7 @@ pub(crate) fn channel_misfit(ty: &Type, binding: &ModbusBinding) -> Option<Chann
         data_type: binding.data_type,
         count,
         declared: ty.to_string(),
-        expected: expected.join(" or "),
+        expected,
     })
 }
 
@@ -223,6 +327,22 @@ fn values(data_type: ModbusDataType, count: u16) -> String {
     } else {
         format!("{count} {name} values")
     }
+}
+
+/// Resolves a binding's `path` as [`bound_path`] does and refuses a `CONSTANT` when the
+/// runtime writes it (`written_by_runtime`: a read channel's variable, a status, an error
+/// flag): the decision the build's E0140 and the device editor share.
+pub(crate) fn bind_path<'p>(
+    project: &'p Project,
+    globals: &Globals<'p>,
+    path: &str,
+    written_by_runtime: bool,
+) -> Result<BoundPath<'p>, Unbound> {
+    let bound = bound_path(project, globals, path)?;
+    if bound.constant && written_by_runtime {
+        return Err(Unbound::Constant);
+    }
+    Ok(bound)
 }
 
 /// Resolves a binding's `path` (`GVL_Io.aiTemps`, `Main.fbDrive.xReady`, an unqualified global)
@@ -284,18 +404,14 @@ pub(crate) fn bound_path<'p>(
                     variable
                 }
                 PouKind::Function => {
-                    return Err(Unbound::NoFixedPlace(
-                        "a variable of a function, which has no place between calls",
-                    ));
+                    return Err(Unbound::NoFixedPlace(Unplaceable::FunctionVariable));
                 }
                 _ => return Err(Unbound::NoVariable),
             };
             (variable, path.to_owned(), &segments[2..])
         }
         Some(GlobalSymbol::Axis | GlobalSymbol::Cam) => {
-            return Err(Unbound::NoFixedPlace(
-                "an axis or cam table, which the motion kernel writes",
-            ));
+            return Err(Unbound::NoFixedPlace(Unplaceable::AxisOrCam));
         }
         _ => return Err(Unbound::NoVariable),
     };
@@ -350,15 +466,9 @@ fn pou_variable<'p>(
             .find(|v| v.name.eq_ignore_ascii_case(name))
         {
             return match variable.section {
-                VarSection::VarTemp => Err(Unbound::NoFixedPlace(
-                    "a VAR_TEMP, which has no place between cycles",
-                )),
-                VarSection::VarInOut => Err(Unbound::NoFixedPlace(
-                    "a VAR_IN_OUT, a reference to a caller's variable",
-                )),
-                VarSection::VarExternal => Err(Unbound::NoFixedPlace(
-                    "a VAR_EXTERNAL, a reference to a global variable",
-                )),
+                VarSection::VarTemp => Err(Unbound::NoFixedPlace(Unplaceable::VarTemp)),
+                VarSection::VarInOut => Err(Unbound::NoFixedPlace(Unplaceable::VarInOut)),
+                VarSection::VarExternal => Err(Unbound::NoFixedPlace(Unplaceable::VarExternal)),
                 _ => Ok((current, variable)),
             };
         }
@@ -367,18 +477,14 @@ fn pou_variable<'p>(
             .iter()
             .any(|m| m.name.eq_ignore_ascii_case(name))
         {
-            return Err(Unbound::NoFixedPlace(
-                "a method, whose variables have no place between calls",
-            ));
+            return Err(Unbound::NoFixedPlace(Unplaceable::Method));
         }
         if current
             .properties
             .iter()
             .any(|p| p.name.eq_ignore_ascii_case(name))
         {
-            return Err(Unbound::NoFixedPlace(
-                "a property, whose value its accessors compute",
-            ));
+            return Err(Unbound::NoFixedPlace(Unplaceable::Property));
         }
     }
     Err(Unbound::NoVariable)
@@ -519,5 +625,21 @@ mod tests {
             check_channel_binding(&project, &binding),
             Err(ChannelBindingError::NoSuchVariable("GVL.iNone".into()))
         );
+    }
+
+    #[test]
+    fn a_variable_s_values_are_its_element_type_and_an_array_s_length() {
+        let project = crate::SourceProject::new(
+            "VAR_GLOBAL\n    awRaw : ARRAY[1..4] OF WORD;\n    iOne : INT;\n    \
+             aaGrid : ARRAY[0..1, 0..1] OF INT;\nEND_VAR\n",
+        )
+        .project;
+        assert_eq!(
+            variable_values(&project, "GVL.awRaw"),
+            Some(("WORD", Some(4)))
+        );
+        assert_eq!(variable_values(&project, "GVL.iOne"), Some(("INT", None)));
+        assert_eq!(variable_values(&project, "GVL.aaGrid"), None);
+        assert_eq!(variable_values(&project, "GVL.iNone"), None);
     }
 }

@@ -16,12 +16,12 @@ use project_model::{
 };
 
 use super::ProjectDiagnostic;
-use super::address::parse_address;
 use super::scope::Globals;
 use super::ty::Type;
 use crate::diagnostic::{Code, Diagnostic};
 use crate::elementary::Elementary;
-use crate::ide::variable_type::{BoundPath, Unbound, bound_path, channel_misfit};
+use crate::ide::ChannelBindingError;
+use crate::ide::variable_type::{BoundPath, Unbound, bind_path, bound_path, channel_misfit};
 use crate::library::MODBUS_DEVICE_STATUS;
 use program_image::modbus_master::{MAX_CHANNELS_PER_DEVICE, MAX_DEVICES, MAX_SERIAL_PORTS};
 
@@ -378,22 +378,12 @@ fn check_channel<'p>(
         &binding.variable,
         found,
     ) {
-        if let Some(misfit) = channel_misfit(&bound.ty, binding) {
-            let message = format!("{prefix}: {misfit}");
-            found.push(finding(name, Code::ModbusChannelType, message));
-        } else if binding.count > 1
-            && let Some(address) = bound.root.address.as_deref()
-            && let Ok(Some(located)) = parse_address(address)
-            && located.size_bits == 1
-        {
-            // The runtime copies a symbol at a bit address as that one bit, so the other
-            // values of an array there would be lost.
-            let message = format!(
-                "{prefix}: the variable '{}' is located at the bit address {}, where the runtime copies one bit, but the channel holds {} values: remove the AT address, or bind a variable of its own to each bit",
-                binding.variable.trim(),
-                address.trim(),
-                binding.count
-            );
+        // The device editor refuses with the same check, so the two say the same.
+        if let Some(misfit) = channel_misfit(&bound, binding) {
+            let message = match misfit {
+                ChannelBindingError::Misfit { misfit, .. } => format!("{prefix}: {misfit}"),
+                other => format!("{prefix}: {other}"),
+            };
             found.push(finding(name, Code::ModbusChannelType, message));
         }
         if reads {
@@ -441,11 +431,13 @@ fn bind<'p>(
 ) -> Option<BoundPath<'p>> {
     let path = path.trim();
     let words = field.words();
-    let problem = match bound_path(project, globals, path) {
-        Ok(bound) if bound.constant && field.is_written_by_runtime(place.direction) => format!(
+    let written_by_runtime = field.is_written_by_runtime(place.direction);
+    // The device editor decides with the same function (`ide::check_channel_binding`).
+    let problem = match bind_path(project, globals, path, written_by_runtime) {
+        Ok(bound) => return Some(bound),
+        Err(Unbound::Constant) => format!(
             "{words} '{path}' is a CONSTANT, which the runtime cannot write: remove CONSTANT or bind another variable"
         ),
-        Ok(bound) => return Some(bound),
         Err(Unbound::NoVariable) => format!(
             "{words} '{path}' names no variable of the project: write the path of a global or program variable, such as GVL_IO.rSpeed"
         ),

@@ -558,3 +558,66 @@ fn w0016_finds_a_device_polled_faster_than_its_task_copies() {
         ]
     );
 }
+
+#[test]
+fn the_device_editor_refuses_a_channel_s_variable_with_the_build_s_reason() {
+    let source = format!(
+        "FUNCTION_BLOCK FB_Base\nVAR_STAT\n    iShared : INT;\nEND_VAR\nEND_FUNCTION_BLOCK\n\
+         FUNCTION F_Twice : INT\nVAR_INPUT\n    iValue : INT;\nEND_VAR\nF_Twice := iValue * 2;\nEND_FUNCTION\n{}",
+        SOURCE
+            .replace("iUnused : INT;", "iUnused : INT;\n    fbX : FB_Base;")
+            .replace(
+                "wRaw : WORD;",
+                "wRaw : WORD;\n    axBits AT %IX0.0 : ARRAY[0..7] OF BOOL;"
+            )
+    );
+    let bindings = vec![
+        read("Main.iScratch", 0, ModbusDataType::Int16),
+        read("Main.fbX.iShared", 1, ModbusDataType::Int16),
+        read("GVL.iLimit", 2, ModbusDataType::Int16),
+        read("F_Twice.iValue", 3, ModbusDataType::Int16),
+        ModbusBinding {
+            count: 8,
+            ..ModbusBinding::new("GVL.axBits", ModbusTable::Coil, 0, ModbusDataType::Bool)
+        },
+        read("GVL.rNothing", 4, ModbusDataType::Real),
+    ];
+    let project = project_from(&source, vec![device("BeltDrive", bindings.clone())]);
+    let editor: Vec<Option<String>> = bindings
+        .iter()
+        .map(|binding| {
+            crate::ide::check_channel_binding(&project, binding)
+                .err()
+                .map(|error| error.to_string())
+        })
+        .collect();
+    // Each refusal is the build's finding about the channel, after its prefix; only a
+    // variable that is not there is worded for the field (the build names the field).
+    let mut build: Vec<Option<String>> = vec![None; bindings.len()];
+    for finding in findings(&project) {
+        for (row, binding) in bindings.iter().enumerate() {
+            let prefix = format!(
+                "BeltDrive: Modbus device 'BeltDrive', channel {} ({}): ",
+                row + 1,
+                binding.variable
+            );
+            if let Some((_, message)) = finding.split_once(&prefix) {
+                build[row] = Some(message.to_owned());
+            }
+        }
+    }
+    assert_eq!(editor[..5], build[..5]);
+    assert!(editor.iter().all(Option::is_some), "{editor:?}");
+    assert_eq!(
+        editor[3].as_deref(),
+        Some(
+            "the variable 'F_Twice.iValue' is a variable of a function, which has no place between calls: bind a global variable or a program's VAR, VAR_INPUT or VAR_OUTPUT"
+        )
+    );
+    assert_eq!(
+        editor[5].as_deref(),
+        Some(
+            "there is no variable 'GVL.rNothing': write the path of a global or program variable, such as GVL_IO.rSpeed"
+        )
+    );
+}

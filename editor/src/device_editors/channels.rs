@@ -3,9 +3,13 @@
 //! trigger, error handling and error flag (`channel_master.rs`); rows added by naming a
 //! variable and deleted by a button.
 
-use compiler::ide::{check_channel_binding, check_channel_variable, variable_type};
+use compiler::ide::{
+    check_channel_binding, check_channel_variable, variable_type, variable_values,
+};
 use egui::Ui;
-use project_model::{ModbusBinding, ModbusDataType, ModbusTable, Project};
+use project_model::{
+    DeviceProblem, ModbusBinding, ModbusDataType, ModbusTable, Project, request_limit,
+};
 
 use super::channel_master::channel_master_cells_ui;
 use super::field::{DeviceEditorState, FieldId, reason_ui, text_field_ui};
@@ -101,7 +105,7 @@ pub(crate) fn channels_ui(
         keep(
             &mut out,
             text_field_ui(ui, state, texts, field, "", "", |text| {
-                let item = new_binding(project, bindings, text)?;
+                let item = new_binding(project, bindings, text, master)?;
                 let mut list = bindings.to_vec();
                 list.push(item);
                 let label = fill(&texts.add_row, &[("node", &texts.channels)]);
@@ -154,22 +158,28 @@ fn columns(texts: &DeviceTexts, master: bool) -> Vec<&str> {
 
 /// A channel for `variable`: the data type of its declared type, a coil for a BOOL and a
 /// holding register otherwise (both can be written), at the first address after that table's
-/// channels.
+/// channels. On a device the runtime masters (`master`), a one-dimensional array of a channel's
+/// type is one channel of the array's length, refused when one request cannot carry it.
 fn new_binding(
     project: &Project,
     bindings: &[ModbusBinding],
     variable: &str,
+    master: bool,
 ) -> Result<ModbusBinding, Refusal> {
-    let data_type = variable_type(project, variable)
-        .and_then(|declared| data_type_of(&declared))
-        .map_or_else(
+    let values = variable_values(project, variable)
+        .and_then(|(element, length)| Some((data_type_of(element)?, length)));
+    let (data_type, count) = match values {
+        Some((data_type, None)) => (data_type, 1),
+        // An array longer than a count holds is longer than any request carries: refused below.
+        Some((data_type, Some(length))) if master => {
+            (data_type, u16::try_from(length).unwrap_or(u16::MAX))
+        }
+        _ => {
             // The check says why: no such variable, or a type no channel holds.
-            || {
-                check_channel_variable(project, variable, ModbusDataType::Uint16)
-                    .map(|()| ModbusDataType::Uint16)
-            },
-            Ok,
-        )?;
+            check_channel_variable(project, variable, ModbusDataType::Uint16)?;
+            (ModbusDataType::Uint16, 1)
+        }
+    };
     let table = if data_type == ModbusDataType::Bool {
         ModbusTable::Coil
     } else {
@@ -184,7 +194,21 @@ fn new_binding(
         })
         .max()
         .unwrap_or(0);
-    Ok(ModbusBinding::new(variable, table, address, data_type))
+    let binding = ModbusBinding {
+        count,
+        ..ModbusBinding::new(variable, table, address, data_type)
+    };
+    let limit = request_limit(binding.table, binding.direction);
+    if binding.span() > limit {
+        return Err(DeviceProblem::ChannelTooLong {
+            row: bindings.len() + 1,
+            count,
+            span: binding.span(),
+            limit,
+        }
+        .into());
+    }
+    Ok(binding)
 }
 
 /// The data type a channel moved to `table` gets: BOOL in a bit table; in a register table,
@@ -222,6 +246,7 @@ fn data_type_of(declared: &str) -> Option<ModbusDataType> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use project_model::{Object, Variable};
 
     fn example() -> Project {
         project_model::load_project(&assets::example_project_dir())
@@ -233,29 +258,76 @@ mod tests {
     fn a_new_channel_takes_its_variable_s_type_and_the_next_free_address() {
         let project = example();
         let bindings = &project.modbus_devices[0].bindings;
-        let total = new_binding(&project, bindings, "GVL_Machine.udiTotalPackages").unwrap();
+        let total = new_binding(&project, bindings, "GVL_Machine.udiTotalPackages", false).unwrap();
         assert_eq!(total.table, ModbusTable::HoldingRegister);
         assert_eq!(total.data_type, ModbusDataType::Uint32);
         assert_eq!(total.address, 0);
         let mut more = bindings.clone();
         more.push(total);
-        let count = new_binding(&project, &more, "GVL_Machine.iPackagesInBatch").unwrap();
+        let count = new_binding(&project, &more, "GVL_Machine.iPackagesInBatch", false).unwrap();
         assert_eq!((count.address, count.data_type), (2, ModbusDataType::Int16));
-        let flag = new_binding(&project, &more, "GVL_Machine.xAcknowledge").unwrap();
+        let flag = new_binding(&project, &more, "GVL_Machine.xAcknowledge", false).unwrap();
         assert_eq!((flag.table, flag.address), (ModbusTable::Coil, 0));
     }
 
     #[test]
     fn a_new_channel_for_a_missing_variable_or_a_structure_is_refused() {
         let project = example();
-        let missing = new_binding(&project, &[], "GVL_Machine.xNothing")
+        let missing = new_binding(&project, &[], "GVL_Machine.xNothing", true)
             .unwrap_err()
             .to_string();
         assert!(missing.contains("there is no variable"), "{missing}");
-        let recipe = new_binding(&project, &[], "GVL_Machine.stRecipe")
+        let recipe = new_binding(&project, &[], "GVL_Machine.stRecipe", true)
             .unwrap_err()
             .to_string();
         assert!(recipe.contains("declared as ST_Recipe"), "{recipe}");
+    }
+
+    #[test]
+    fn a_new_channel_of_a_runtime_device_takes_an_array_s_length_as_its_count() {
+        let mut project = example();
+        let Some(Object::Gvl(gvl)) = project.application.object_mut("GVL_Machine") else {
+            panic!("the example has no GVL_Machine");
+        };
+        gvl.variables.extend([
+            Variable::new("arSpeeds", "ARRAY[1..3] OF REAL"),
+            Variable::new("axLamps", "ARRAY[0..7] OF BOOL"),
+            Variable::new("aiLog", "ARRAY[0..199] OF INT"),
+        ]);
+        let speeds = new_binding(&project, &[], "GVL_Machine.arSpeeds", true).unwrap();
+        assert_eq!(
+            (speeds.table, speeds.data_type, speeds.count),
+            (ModbusTable::HoldingRegister, ModbusDataType::Real, 3)
+        );
+        let lamps = new_binding(&project, &[], "GVL_Machine.axLamps", true).unwrap();
+        assert_eq!(
+            (lamps.table, lamps.data_type, lamps.count),
+            (ModbusTable::Coil, ModbusDataType::Bool, 8)
+        );
+        // The next channel of the table starts after all the array's registers.
+        let after = new_binding(&project, &[speeds], "GVL_Machine.iPackagesInBatch", true);
+        assert_eq!(after.map(|binding| binding.address), Ok(6));
+        assert_eq!(
+            check_channel_binding(&project, &lamps),
+            Ok(()),
+            "the inferred channel fits its variable"
+        );
+        // 200 registers are more than one read carries (125).
+        assert!(matches!(
+            new_binding(&project, &[], "GVL_Machine.aiLog", true),
+            Err(Refusal::Problem(DeviceProblem::ChannelTooLong {
+                count: 200,
+                ..
+            }))
+        ));
+        // The studio's own poll reads one value per channel.
+        let studio = new_binding(&project, &[], "GVL_Machine.arSpeeds", false)
+            .unwrap_err()
+            .to_string();
+        assert!(
+            studio.contains("declared as ARRAY[1..3] OF REAL"),
+            "{studio}"
+        );
     }
 
     #[test]

@@ -32,6 +32,14 @@ pub struct DeviceEditorState {
 }
 
 impl DeviceEditorState {
+    /// Carries a serial port's rename from `old` to `new` into what the editor remembers, so a
+    /// device switched to TCP and back onto RTU returns to the port it was on under its new
+    /// name; the studio calls it for every node's state when a port is renamed (or a rename is
+    /// undone).
+    pub fn serial_port_renamed(&mut self, old: &str, new: &str) {
+        self.links.serial_port_renamed(old, new);
+    }
+
     /// Forgets drafts and refusals when the node's value is no longer the one they were typed
     /// against.
     ///

@@ -29,6 +29,17 @@ impl LinkMemory {
             *slot = Some(link.clone());
         }
     }
+
+    /// Renames the remembered RTU link's serial port from `old` to `new` (names compare as
+    /// IEC identifiers), as the rename carries into the devices on the port: the memory names
+    /// the port as a device does, and a device on TCP is not one of them.
+    pub(crate) fn serial_port_renamed(&mut self, old: &str, new: &str) {
+        if let Some(ModbusLink::Rtu { serial_port }) = &mut self.rtu
+            && same_identifier(serial_port, old)
+        {
+            new.clone_into(serial_port);
+        }
+    }
 }
 
 /// The link a device gets when the user switches it to `rtu` (or back to TCP): the link of that
@@ -131,5 +142,18 @@ mod tests {
         // A port deleted meanwhile is not brought back: the first port stands in.
         project.serial_ports.pop();
         assert_eq!(switched_link(&project, true, &memory), Ok(rtu("RS232")));
+    }
+
+    #[test]
+    fn a_port_renamed_while_the_device_is_on_tcp_is_returned_to_under_its_new_name() {
+        let mut project = two_ports();
+        let mut memory = LinkMemory::default();
+        memory.remember(&rtu("RS485"));
+        memory.remember(&tcp("192.168.1.50", 502));
+        project.serial_ports[1].name = "Line2".into();
+        memory.serial_port_renamed("rs485", "Line2");
+        // Another port's rename leaves the memory alone.
+        memory.serial_port_renamed("RS232", "Line1");
+        assert_eq!(switched_link(&project, true, &memory), Ok(rtu("Line2")));
     }
 }

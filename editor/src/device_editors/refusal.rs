@@ -21,7 +21,8 @@ pub enum Refusal {
     /// The variable cannot be bound to the channel.
     #[error(transparent)]
     ChannelVariable(#[from] ChannelVariableError),
-    /// The variable does not fit a channel of the runtime master: its data type and count.
+    /// The variable cannot be a channel's of the runtime master: it has no place the runtime
+    /// copies, or does not fit the data type and count (the build's E0140 and E0141).
     #[error(transparent)]
     ChannelBinding(#[from] ChannelBindingError),
     /// A coil or discrete input range that does not start at bit 0 of a byte.

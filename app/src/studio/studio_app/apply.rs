@@ -19,14 +19,31 @@ pub(super) fn apply_commands(studio: &mut Studio, dock: &mut Dock, ctx: &egui::C
     if commands.is_empty() {
         return;
     }
+    let ports_before = serial_port_names(studio);
     for command in commands {
         apply(studio, dock, command, ctx);
     }
     if let Some(session) = &studio.shared.session {
         close_stale_documents(dock, &session.project);
+        studio
+            .panes
+            .devices
+            .follow_project(&ports_before, &session.project);
     }
     // What the commands changed shows in the next frame, without waiting for input.
     ctx.request_repaint();
+}
+
+/// The names of the open project's serial ports, in order (none without a project).
+fn serial_port_names(studio: &Studio) -> Vec<String> {
+    studio
+        .shared
+        .session
+        .as_ref()
+        .map_or_else(Vec::new, |session| {
+            let ports = &session.project.serial_ports;
+            ports.iter().map(|port| port.name.clone()).collect()
+        })
 }
 
 fn apply(studio: &mut Studio, dock: &mut Dock, command: Command, ctx: &egui::Context) {

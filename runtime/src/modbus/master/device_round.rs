@@ -111,7 +111,8 @@ impl DeviceRound {
         }
     }
 
-    /// Counts a connection attempt about to be made (`DeviceStatus::connection_attempts`, read through `Scheduler::modbus_connection_attempts`).
+    /// Counts a connection attempt about to be made (`DeviceStatus::connection_attempts`, read
+    /// through `Scheduler::modbus_connection_attempts`).
     pub fn connecting(&mut self) {
         let status = &mut self.results.status;
         status.connection_attempts = status.connection_attempts.wrapping_add(1);

@@ -19,7 +19,7 @@ use super::due::{Due, RoundKind};
 use super::line_port::{LineActivity, LinePort, StreamSlot};
 use super::round::{Answer, call_checked};
 use super::status::{Outcome, error_codes};
-use crate::serial::{SerialSettings, StopBits, open_port};
+use crate::serial::{SerialOpenError, SerialSettings, StopBits, open_port};
 use tokio_serial::SerialStream;
 
 /// A device of the line: its rounds and its schedule.
@@ -175,7 +175,7 @@ impl RtuLine {
                         round.not_sent(
                             &requests[position..],
                             error_codes::SERIAL_PORT_ERROR,
-                            &detail,
+                            &detail.to_string(),
                         );
                         break;
                     }
@@ -258,8 +258,8 @@ impl RtuLine {
     }
 }
 
-/// Opens the line's port with its settings, or says in words why it cannot.
-fn open(port: &SerialPortDef) -> Result<OpenPort, String> {
+/// Opens the line's port with its settings, or says why it cannot (naming the port's path).
+fn open(port: &SerialPortDef) -> Result<OpenPort, SerialOpenError> {
     let settings = SerialSettings {
         baud_rate: port.baud_rate,
         data_bits: port.data_bits,
@@ -274,7 +274,6 @@ fn open(port: &SerialPortDef) -> Result<OpenPort, String> {
             StopBits::One
         },
     };
-    let stream =
-        open_port(Path::new(&port.device), &settings).map_err(|error| error.to_string())?;
+    let stream = open_port(Path::new(&port.device), &settings)?;
     Ok(OpenPort::attach(stream, LineActivity::new()))
 }

@@ -8,6 +8,7 @@ use tokio_modbus::Slave;
 use tokio_modbus::client::Context;
 
 use super::backoff::Backoff;
+use super::connect_error::ConnectError;
 use super::device_round::DeviceRound;
 use super::due::Due;
 use super::round::{Answer, call_checked};
@@ -69,7 +70,7 @@ impl TcpDevice {
                             self.round.not_sent(
                                 &requests[position..],
                                 error_codes::TCP_COMMUNICATION_ERROR,
-                                &detail,
+                                &detail.to_string(),
                             );
                             break;
                         }
@@ -118,10 +119,12 @@ impl TcpDevice {
 }
 
 /// Opens the device's connection with `TCP_NODELAY` within `max(timeout_ms, 1000)` ms, or
-/// says in words why it could not.
-async fn connect(device: &DeviceDef, peer: &str) -> Result<Context, String> {
+/// says why it could not.
+async fn connect(device: &DeviceDef, peer: &str) -> Result<Context, ConnectError> {
     let Link::Tcp { host, port } = &device.link else {
-        return Err(format!("'{}' is not a TCP device", device.name));
+        return Err(ConnectError::NotTcp {
+            device: device.name.clone(),
+        });
     };
     let limit = Duration::from_millis(u64::from(device.timeout_ms)).max(MIN_CONNECT_TIMEOUT);
     let attempt = async {
@@ -135,12 +138,17 @@ async fn connect(device: &DeviceDef, peer: &str) -> Result<Context, String> {
             Slave(device.unit_id),
         )),
         Ok(Err(error)) if error.kind() == std::io::ErrorKind::ConnectionRefused => {
-            Err(format!("connection refused by {peer}"))
+            Err(ConnectError::Refused {
+                peer: peer.to_owned(),
+            })
         }
-        Ok(Err(error)) => Err(format!("cannot connect to {peer}: {error}")),
-        Err(_) => Err(format!(
-            "cannot connect to {peer} within {} ms",
-            limit.as_millis()
-        )),
+        Ok(Err(source)) => Err(ConnectError::Failed {
+            peer: peer.to_owned(),
+            source,
+        }),
+        Err(_) => Err(ConnectError::TimedOut {
+            peer: peer.to_owned(),
+            limit_ms: limit.as_millis(),
+        }),
     }
 }

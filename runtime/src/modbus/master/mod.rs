@@ -13,6 +13,7 @@
 //! - `wake.rs`: the `rivet-modbus-wake` thread between the scheduler and the tokio tasks.
 
 mod backoff;
+mod connect_error;
 pub mod copier;
 mod device_round;
 mod due;
@@ -21,6 +22,7 @@ mod line_port;
 mod line_rtu;
 mod link_tcp;
 pub mod resolve;
+mod resolve_problem;
 mod round;
 pub mod status;
 mod wake;
@@ -35,6 +37,7 @@ use program_image::{ProgramImage, TaskKind};
 pub use copier::{DeviceCopier, ProgramMemory};
 pub use exchange::DeviceExchange;
 pub use resolve::{DevicePlaces, ResolveError, resolve_section};
+pub use resolve_problem::ResolveProblem;
 pub use status::{DeviceState, DeviceStatus, error_codes};
 
 use device_round::DeviceRound;

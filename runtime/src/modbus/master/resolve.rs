@@ -8,6 +8,7 @@
 use program_image::modbus_master::{DeviceDef, Direction, MasterSection};
 use program_image::{Elementary, ProgramImage, Region, SymbolFlags, TypeDef, TypeId};
 
+use super::resolve_problem::ResolveProblem;
 use super::status::{STATUS_BYTES, STATUS_MEMBERS, STATUS_TYPE_NAME};
 use crate::value::{self, Place};
 
@@ -59,8 +60,8 @@ pub struct ResolveError {
     pub channel: String,
     /// The field: `variable`, `error_flag`, `trigger`, `status`, `task`.
     pub field: &'static str,
-    /// What is wrong, in words.
-    pub problem: String,
+    /// What is wrong.
+    pub problem: ResolveProblem,
 }
 
 /// Resolves every device of `section` in `image`.
@@ -97,7 +98,7 @@ fn resolve_device(
     device: &DeviceDef,
 ) -> Result<DevicePlaces, ResolveError> {
     let image = resolving.image;
-    let refuse = |channel: Option<usize>, field: &'static str, problem: String| ResolveError {
+    let refuse = |channel: Option<usize>, field: &'static str, problem| ResolveError {
         device: device.name.clone(),
         channel: channel.map_or_else(String::new, |index| {
             let path = device
@@ -111,7 +112,7 @@ fn resolve_device(
     };
     let task = device.task as usize;
     if task >= image.tasks.len() {
-        return Err(refuse(None, "task", format!("task {task} does not exist")));
+        return Err(refuse(None, "task", ResolveProblem::NoTask(task)));
     }
     let mut channels = Vec::with_capacity(device.channels.len());
     let mut trigger_paths: Vec<&str> = Vec::new();
@@ -167,12 +168,12 @@ fn resolve_device(
 }
 
 /// The place of `path`, or why there is none.
-fn lookup(image: &ProgramImage, path: &str) -> Result<Place, String> {
-    value::resolve(image, path).map_err(|error| error.to_string())
+fn lookup(image: &ProgramImage, path: &str) -> Result<Place, ResolveProblem> {
+    Ok(value::resolve(image, path)?)
 }
 
 /// Refuses a `CONSTANT` as the target of a read channel, a status or an error flag.
-fn writable(resolving: &Resolving<'_>, path: &str, place: Place) -> Result<(), String> {
+fn writable(resolving: &Resolving<'_>, path: &str, place: Place) -> Result<(), ResolveProblem> {
     let lower = path.to_ascii_lowercase();
     let constant = resolving.constants.iter().any(|(name, region)| {
         // The symbol the path starts with: its whole name, then nothing, a member or an index.
@@ -182,15 +183,19 @@ fn writable(resolving: &Resolving<'_>, path: &str, place: Place) -> Result<(), S
         names_it && *region == place.region
     });
     if constant {
-        return Err(format!(
-            "'{path}' is a constant, which the runtime cannot write"
-        ));
+        return Err(ResolveProblem::Constant {
+            path: path.to_owned(),
+        });
     }
     Ok(())
 }
 
 /// The place of a BOOL (an error flag, which must be writable, or a trigger).
-fn bool_place(resolving: &Resolving<'_>, path: &str, written: bool) -> Result<BytePlace, String> {
+fn bool_place(
+    resolving: &Resolving<'_>,
+    path: &str,
+    written: bool,
+) -> Result<BytePlace, ResolveProblem> {
     let image = resolving.image;
     let place = lookup(image, path)?;
     if written {
@@ -198,10 +203,10 @@ fn bool_place(resolving: &Resolving<'_>, path: &str, written: bool) -> Result<By
     }
     match image.types.get(place.ty as usize) {
         Some(TypeDef::Elementary(Elementary::Bool)) => Ok(byte_place(place, 1)),
-        _ => Err(format!(
-            "'{path}' is of type {}, not BOOL",
-            type_name(image, place.ty)
-        )),
+        _ => Err(ResolveProblem::NotBool {
+            path: path.to_owned(),
+            type_name: type_name(image, place.ty),
+        }),
     }
 }
 
@@ -222,7 +227,7 @@ fn fits_channel(
     ty: TypeId,
     value_type: Elementary,
     count: u16,
-) -> Result<(), String> {
+) -> Result<(), ResolveProblem> {
     let element = if count > 1 {
         match image.types.get(ty as usize) {
             Some(TypeDef::Array { element, dims })
@@ -233,11 +238,11 @@ fn fits_channel(
                 *element
             }
             _ => {
-                return Err(format!(
-                    "the channel has {count} {} values, but the variable is of type {}: expected an ARRAY of {count} elements",
-                    value_type.name(),
-                    type_name(image, ty)
-                ));
+                return Err(ResolveProblem::NotAnArrayOfCount {
+                    count,
+                    value_type,
+                    type_name: type_name(image, ty),
+                });
             }
         }
     } else {
@@ -258,17 +263,16 @@ fn fits_channel(
     if fits {
         Ok(())
     } else {
-        Err(format!(
-            "the channel carries {} values, but the variable's element type is {}",
-            value_type.name(),
-            type_name(image, element)
-        ))
+        Err(ResolveProblem::ElementType {
+            value_type,
+            type_name: type_name(image, element),
+        })
     }
 }
 
 /// Whether type `ty` is the `MODBUS_DEVICE_STATUS` of §3.1: a structure of that name with its
 /// members, their types and their offsets.
-fn status_fits(image: &ProgramImage, ty: TypeId) -> Result<(), String> {
+fn status_fits(image: &ProgramImage, ty: TypeId) -> Result<(), ResolveProblem> {
     let Some(TypeDef::Struct {
         name,
         size,
@@ -276,22 +280,19 @@ fn status_fits(image: &ProgramImage, ty: TypeId) -> Result<(), String> {
         ..
     }) = image.types.get(ty as usize)
     else {
-        return Err(format!(
-            "the status variable is of type {}, not {STATUS_TYPE_NAME}",
-            type_name(image, ty)
-        ));
+        return Err(ResolveProblem::StatusNotStruct {
+            type_name: type_name(image, ty),
+        });
     };
     if !name.eq_ignore_ascii_case(STATUS_TYPE_NAME) || *size as usize != STATUS_BYTES {
-        return Err(format!(
-            "the status variable is of type {name}, not {STATUS_TYPE_NAME} of {STATUS_BYTES} bytes"
-        ));
+        return Err(ResolveProblem::StatusOtherStruct { name: name.clone() });
     }
     for (expected, offset, elementary) in STATUS_MEMBERS {
         let Some(member) = members
             .iter()
             .find(|member| member.name.eq_ignore_ascii_case(expected))
         else {
-            return Err(format!("{STATUS_TYPE_NAME} has no member {expected}"));
+            return Err(ResolveProblem::StatusMemberMissing { member: expected });
         };
         let ty_fits = match image.types.get(member.ty as usize) {
             Some(TypeDef::Elementary(found)) => found.size_bytes() == elementary.size_bytes(),
@@ -300,10 +301,11 @@ fn status_fits(image: &ProgramImage, ty: TypeId) -> Result<(), String> {
             _ => false,
         };
         if member.offset != offset || !ty_fits || member.located.is_some() {
-            return Err(format!(
-                "{STATUS_TYPE_NAME}.{expected} is not a {} at offset {offset}",
-                elementary.name()
-            ));
+            return Err(ResolveProblem::StatusMemberMisplaced {
+                member: expected,
+                elementary,
+                offset,
+            });
         }
     }
     Ok(())

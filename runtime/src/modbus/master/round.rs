@@ -11,7 +11,7 @@ use std::time::Duration;
 
 use program_image::ModbusTable;
 use program_image::modbus_master::{
-    DeviceDef, Direction, OnError, PlannedRequest, bits_to_values, registers_to_values,
+    CodecError, DeviceDef, Direction, OnError, PlannedRequest, bits_to_values, registers_to_values,
     table_holds_bits, values_to_bits, values_to_registers,
 };
 use tokio_modbus::client::{Client, Context};
@@ -64,7 +64,7 @@ pub async fn call_checked(
         Err(problem) => {
             return Answer::Failed {
                 outcome: Outcome::Invalid(error_codes::RESPONSE_INVALID_DATA),
-                detail: problem,
+                detail: problem.to_string(),
                 close: false,
             };
         }
@@ -138,13 +138,25 @@ pub fn rtu_send_time(bytes: usize, baud_rate: u32) -> Duration {
     Duration::from_micros(micros)
 }
 
+/// Why a write's request could not be built from the program's bytes; the section was verified
+/// at load, so either means an inconsistent image, said in the device's status detail.
+#[derive(Debug, thiserror::Error)]
+enum BuildError {
+    /// A channel's values fall outside the request serving it.
+    #[error("a channel beyond its request")]
+    ChannelBeyondRequest,
+    /// A channel's values could not be converted into coils or registers.
+    #[error(transparent)]
+    Codec(#[from] CodecError),
+}
+
 /// The Modbus request for `request`, with a write's values converted from the program's bytes.
 fn build(
     request: &PlannedRequest,
     device: &DeviceDef,
     layout: &ValueLayout,
     values: &[u8],
-) -> Result<Request<'static>, String> {
+) -> Result<Request<'static>, BuildError> {
     let (start, quantity) = (request.start, request.quantity);
     if request.direction == Direction::Read {
         return Ok(match request.table {
@@ -162,9 +174,8 @@ fn build(
             let span = channel.span() as usize;
             let target = bits
                 .get_mut(at..at + span)
-                .ok_or("a channel beyond its request")?;
-            values_to_bits(layout.slice(values, served.channel), target)
-                .map_err(|error| error.to_string())?;
+                .ok_or(BuildError::ChannelBeyondRequest)?;
+            values_to_bits(layout.slice(values, served.channel), target)?;
         }
         return Ok(match request.function_code {
             5 => Request::WriteSingleCoil(start, bits.first().copied().unwrap_or(false)),
@@ -178,14 +189,13 @@ fn build(
         let span = channel.span() as usize;
         let target = words
             .get_mut(at..at + span)
-            .ok_or("a channel beyond its request")?;
+            .ok_or(BuildError::ChannelBeyondRequest)?;
         values_to_registers(
             layout.slice(values, served.channel),
             channel.value_type,
             device.word_order,
             target,
-        )
-        .map_err(|error| error.to_string())?;
+        )?;
     }
     Ok(match request.function_code {
         6 => Request::WriteSingleRegister(start, words.first().copied().unwrap_or(0)),
