@@ -806,7 +806,10 @@ impl BodyGen<'_, '_, '_> {
         Ok(match base {
             Place::Direct(op) => Place::Direct(shifted(op, offset)),
             Place::Element(element) => Place::Element(ElementPlace {
-                offset: element.offset + offset,
+                offset: element
+                    .offset
+                    .checked_add(offset)
+                    .ok_or("a member more than 4 GiB into its element")?,
                 ..element
             }),
             Place::Indirect(pointer) => {
@@ -906,8 +909,8 @@ impl BodyGen<'_, '_, '_> {
             })
             .collect();
         // An array at a direct place with one index known only when the code runs is reached
-        // without a pointer (`docs/native-engine.md` §10); several such indices keep the
-        // pointer of the first for the next.
+        // without a pointer (`docs/native-engine.md` §10); with several such indices each
+        // moves a pointer, as before.
         let fused = matches!(base.place, Place::Direct(_))
             && constants.iter().filter(|value| value.is_none()).count() == 1;
         let mut place = base.place;
