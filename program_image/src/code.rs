@@ -436,4 +436,53 @@ pub enum Instr {
         /// The TIME or LTIME written.
         dst: Operand,
     },
+    /// `dst := ` the `ty` value at `array + (index - low) * stride + offset`, a fault when
+    /// `index` is outside `low ..= low + count - 1`: [`Instr::Element`] and [`Instr::Load`] of
+    /// an elementary element (or of a member of a structure element) of an array that is a
+    /// direct place, in one instruction with no pointer (`docs/program-image.md` §7.1).
+    LoadElement {
+        /// The elementary type read.
+        ty: Elementary,
+        /// The value written.
+        dst: Operand,
+        /// The array's first element.
+        array: Operand,
+        /// The index, of type `index_ty`.
+        index: Operand,
+        /// The integer type of the index.
+        index_ty: Elementary,
+        /// The lowest index.
+        low: i64,
+        /// The number of elements.
+        count: u64,
+        /// Bytes per element.
+        stride: u32,
+        /// Bytes from the element's start to the value read (a member of a structure
+        /// element; 0 for the element itself).
+        offset: u32,
+    },
+    /// Stores the `ty` value `src` at `array + (index - low) * stride + offset`, a fault when
+    /// `index` is outside `low ..= low + count - 1`: the store counterpart of
+    /// [`Instr::LoadElement`].
+    StoreElement {
+        /// The elementary type written.
+        ty: Elementary,
+        /// The array's first element.
+        array: Operand,
+        /// The index, of type `index_ty`.
+        index: Operand,
+        /// The integer type of the index.
+        index_ty: Elementary,
+        /// The lowest index.
+        low: i64,
+        /// The number of elements.
+        count: u64,
+        /// Bytes per element.
+        stride: u32,
+        /// Bytes from the element's start to the value written (a member of a structure
+        /// element; 0 for the element itself).
+        offset: u32,
+        /// The value stored.
+        src: Operand,
+    },
 }

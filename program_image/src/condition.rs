@@ -67,13 +67,14 @@ impl BreakCondition {
         }
     }
 
-    /// Whether a condition may use `instr`: instructions 0–15, 20, 22, 23, 25, 26 and 28 of
-    /// `docs/program-image.md` §7.1 (no calls of POUs or blocks, no `Store`, no `Return`, no
-    /// `Native`).
+    /// Whether a condition may use `instr`: instructions 0–15, 20, 22, 23, 25, 26, 28 and 29
+    /// of `docs/program-image.md` §7.1 (no calls of POUs or blocks, no `Store` or
+    /// `StoreElement`, no `Return`, no `Native`).
     pub fn allows(instr: &Instr) -> bool {
         !matches!(
             instr,
             Instr::Store { .. }
+                | Instr::StoreElement { .. }
                 | Instr::CallFunction { .. }
                 | Instr::CallBlock { .. }
                 | Instr::CallStdBlock { .. }
@@ -237,6 +238,7 @@ fn written(instr: &Instr) -> Option<(Operand, u64)> {
             ..
         } => (*dst, (u64::from(*capacity) + 1) * if *wide { 2 } else { 1 }),
         Instr::FromText { to, dst, .. } => (*dst, size(to.size_bytes())),
+        Instr::LoadElement { ty, dst, .. } => (*dst, size(ty.size_bytes())),
         _ => return None,
     })
 }
@@ -245,6 +247,7 @@ fn written(instr: &Instr) -> Option<(Operand, u64)> {
 fn instr_name(instr: &Instr) -> &'static str {
     match instr {
         Instr::Store { .. } => "Store",
+        Instr::StoreElement { .. } => "StoreElement",
         Instr::CallFunction { .. } => "CallFunction",
         Instr::CallBlock { .. } => "CallBlock",
         Instr::CallStdBlock { .. } => "CallStdBlock",

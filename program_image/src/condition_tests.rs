@@ -126,12 +126,59 @@ fn calls_stores_returns_and_native_blocks_are_refused() {
         Instr::Native {
             block: "MC_Power".to_owned(),
         },
+        // Writing an element of the program's array is a store like any other.
+        Instr::StoreElement {
+            ty: Elementary::Dint,
+            array: Operand::Instance(0),
+            index: Operand::Const(0),
+            index_ty: Elementary::Dint,
+            low: 100,
+            count: 3,
+            stride: 4,
+            offset: 0,
+            src: Operand::Const(0),
+        },
     ];
     for instr in hostile {
         let mut condition = count_above_100();
         condition.code.push(instr);
         refused_at(&condition, 1, "not allowed in a condition");
     }
+}
+
+#[test]
+fn an_element_read_into_the_scratch_area_is_accepted_and_one_outside_it_refused() {
+    // `Main.values[Main.values[100]] > 100` over the instance's three DINTs from index 100.
+    let read = |dst| Instr::LoadElement {
+        ty: Elementary::Dint,
+        dst,
+        array: Operand::Instance(0),
+        index: Operand::Instance(0),
+        index_ty: Elementary::Dint,
+        low: 100,
+        count: 3,
+        stride: 4,
+        offset: 0,
+    };
+    let mut condition = count_above_100();
+    condition.scratch_bytes = 8;
+    condition.code = vec![
+        read(Operand::Frame(12)),
+        Instr::Compare {
+            op: CompareOp::Gt,
+            ty: Elementary::Dint,
+            dst: Operand::Frame(8),
+            a: Operand::Frame(12),
+            b: Operand::Const(0),
+        },
+    ];
+    assert_eq!(image().verify_condition(0, &condition), Ok(()));
+    condition.code[0] = read(Operand::Instance(4));
+    refused_at(
+        &condition,
+        0,
+        "writes Instance(4) (4 bytes) outside its scratch area",
+    );
 }
 
 #[test]

@@ -110,6 +110,15 @@ impl Elementary {
         )
     }
 
+    /// The integers and the bit strings wider than `BOOL` (`BYTE` … `LWORD`): the types an
+    /// array index may have in the fused element instructions (`docs/program-image.md` §7.2).
+    pub fn is_integer(self) -> bool {
+        matches!(
+            self,
+            Byte | Word | Dword | Lword | Sint | Int | Dint | Lint | Usint | Uint | Udint | Ulint
+        )
+    }
+
     /// `REAL` or `LREAL`.
     pub fn is_real(self) -> bool {
         matches!(self, Real | Lreal)

@@ -104,6 +104,38 @@ impl fmt::Display for Instr {
                 "element {dst} <- {base}[{index} {} from {low}, {count} of {stride}]",
                 index_ty.name()
             ),
+            Self::LoadElement {
+                ty,
+                dst,
+                array,
+                index,
+                index_ty,
+                low,
+                count,
+                stride,
+                offset,
+            } => write!(
+                f,
+                "loadelement {} {dst} <- {array}[{index} {} from {low}, {count} of {stride}]+{offset}",
+                ty.name(),
+                index_ty.name()
+            ),
+            Self::StoreElement {
+                ty,
+                array,
+                index,
+                index_ty,
+                low,
+                count,
+                stride,
+                offset,
+                src,
+            } => write!(
+                f,
+                "storeelement {} {array}[{index} {} from {low}, {count} of {stride}]+{offset} <- {src}",
+                ty.name(),
+                index_ty.name()
+            ),
             Self::Offset { dst, base, offset } => write!(f, "offset {dst} <- {base}+{offset}"),
             Self::Load { size, dst, ptr } => write!(f, "load {size} {dst} <- *{ptr}"),
             Self::Store { size, ptr, src } => write!(f, "store {size} *{ptr} <- {src}"),
@@ -269,6 +301,28 @@ mod tests {
                 long: true,
                 dst: Operand::Frame(32),
             },
+            Instr::LoadElement {
+                ty: Elementary::Real,
+                dst: Operand::Frame(40),
+                array: Operand::Instance(36),
+                index: Operand::Instance(32),
+                index_ty: Elementary::Dint,
+                low: -2,
+                count: 10,
+                stride: 8,
+                offset: 4,
+            },
+            Instr::StoreElement {
+                ty: Elementary::Dint,
+                array: Operand::Global(100),
+                index: Operand::Frame(8),
+                index_ty: Elementary::Ulint,
+                low: 1,
+                count: 1000,
+                stride: 4,
+                offset: 0,
+                src: Operand::Frame(40),
+            },
             Instr::Return,
         ];
         expect![[r#"
@@ -279,7 +333,9 @@ mod tests {
             4   callstd Ton on *F24
             5   call pou2 in [%M4@0:4] out []
             6   ltime F32
-            7   return
+            7   loadelement REAL F40 <- I36[I32 DINT from -2, 10 of 8]+4
+            8   storeelement DINT G100[F8 ULINT from 1, 1000 of 4]+0 <- F40
+            9   return
         "#]]
         .assert_eq(&listing(&code));
     }

@@ -351,6 +351,38 @@ impl ProgramImage {
                     operand(*base, 8, word)?;
                     operand(*index, u64::from(index_ty.size_bytes()), word)?;
                 }
+                Instr::LoadElement {
+                    ty,
+                    dst,
+                    array,
+                    index,
+                    index_ty,
+                    count,
+                    stride,
+                    offset,
+                    ..
+                } => {
+                    element_access(*ty, *array, *index_ty, *count, *stride, *offset, word)
+                        .and_then(|extent| operand(*array, extent, word))?;
+                    operand(*index, u64::from(index_ty.size_bytes()), word)?;
+                    operand(*dst, u64::from(ty.size_bytes()), word)?;
+                }
+                Instr::StoreElement {
+                    ty,
+                    array,
+                    index,
+                    index_ty,
+                    count,
+                    stride,
+                    offset,
+                    src,
+                    ..
+                } => {
+                    element_access(*ty, *array, *index_ty, *count, *stride, *offset, word)
+                        .and_then(|extent| operand(*array, extent, word))?;
+                    operand(*index, u64::from(index_ty.size_bytes()), word)?;
+                    operand(*src, u64::from(ty.size_bytes()), word)?;
+                }
                 Instr::Offset { dst, base, .. } => {
                     operand(*dst, 8, word)?;
                     operand(*base, 8, word)?;
@@ -538,6 +570,46 @@ impl ProgramImage {
         }
         Ok(())
     }
+}
+
+/// The checks of a `LoadElement` or `StoreElement` that need no region (§7.2): at least one
+/// element, an integer index, the value inside its element; gives the array's extent in bytes
+/// (`count * stride`, computed in `u64` so no count wraps it), which the caller checks against
+/// the array's region.
+fn element_access(
+    ty: crate::Elementary,
+    array: Operand,
+    index_ty: crate::Elementary,
+    count: u64,
+    stride: u32,
+    offset: u32,
+    word: usize,
+) -> Result<u64, String> {
+    if count == 0 {
+        return Err(format!("instruction {word}: an array of no elements"));
+    }
+    if !index_ty.is_integer() {
+        return Err(format!(
+            "instruction {word}: an index of type {}, which is not an integer",
+            index_ty.name()
+        ));
+    }
+    if u64::from(offset) + u64::from(ty.size_bytes()) > u64::from(stride) {
+        return Err(format!(
+            "instruction {word}: a {} at offset {offset} does not fit an element of {stride} bytes",
+            ty.name()
+        ));
+    }
+    // No region is larger than `u32::MAX` bytes, so a larger extent is refused here before
+    // the region check adds the array's offset to it.
+    count
+        .checked_mul(u64::from(stride))
+        .filter(|extent| *extent <= u64::from(u32::MAX))
+        .ok_or_else(|| {
+            format!(
+                "instruction {word}: the array {array:?} of {count} elements of {stride} bytes is larger than any region"
+            )
+        })
 }
 
 fn invalid<T>(message: String) -> Result<T, ImageError> {

@@ -14,6 +14,8 @@ use program_image::{
 use proptest::prelude::*;
 use sha2::{Digest, Sha256};
 
+#[path = "decode/element.rs"]
+mod element;
 #[path = "decode/modbus_master.rs"]
 mod modbus_master;
 

@@ -27,6 +27,10 @@ mod instruction_list;
 /// Bits and parts reached through pointers, references and properties; E0134.
 mod places;
 
+/// Array elements and string characters by a variable index: the fused instructions and the
+/// pointer path, their values and their faults.
+mod elements;
+
 /// Every standard function and function block compiled, run and checked against its value.
 mod standard_library;
 

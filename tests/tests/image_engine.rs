@@ -91,8 +91,10 @@ ptr^.x := ptr^.x + 1;
 p := ps[2];
 REPEAT
     k := k + 1;
+    ps[k MOD 4].y := ps[(k + 3) MOD 4].y + k;
 UNTIL k >= 3
 END_REPEAT
+ptr := ADR(ps[k MOD 4]);
 edge(CLK := p.x MOD 2 = 1);
 count(CU := edge.Q, PV := 5);
 END_PROGRAM
@@ -307,28 +309,42 @@ proptest! {
 
 #[test]
 fn an_array_element_of_extreme_bounds_does_not_panic() {
-    // The verifier accepts any non-zero count and any low bound; the engine must compute the
-    // bounds and the element offset without overflowing.
+    // The verifier accepts any non-zero count and any low bound for `Element`, and any low
+    // bound for the fused `LoadElement` and `StoreElement` (whose count it checks against the
+    // array's region); the engine must compute the bounds and the element offset without
+    // overflowing.
+    let (mut pointer_elements, mut fused_elements) = (0, 0);
     for (low, count) in [
         (1, 1u64 << 63),
         (i64::MIN, 1u64 << 63),
         (i64::MIN, u64::MAX),
         (i64::MAX, 2),
     ] {
-        let mut bytes = seeds()[0].clone();
-        bytes.extend_from_slice(&Sha256::digest(&bytes));
-        let mut image = ProgramImage::decode(&bytes).unwrap();
-        for pou in &mut image.pous {
-            for instr in &mut pou.code {
-                if let program_image::Instr::Element {
-                    low: l, count: c, ..
-                } = instr
-                {
-                    (*l, *c) = (low, count);
+        for seed in seeds() {
+            let mut bytes = seed.clone();
+            bytes.extend_from_slice(&Sha256::digest(&bytes));
+            let mut image = ProgramImage::decode(&bytes).unwrap();
+            for pou in &mut image.pous {
+                for instr in &mut pou.code {
+                    match instr {
+                        program_image::Instr::Element {
+                            low: l, count: c, ..
+                        } => {
+                            (*l, *c) = (low, count);
+                            pointer_elements += 1;
+                        }
+                        program_image::Instr::LoadElement { low: l, .. }
+                        | program_image::Instr::StoreElement { low: l, .. } => {
+                            *l = low;
+                            fused_elements += 1;
+                        }
+                        _ => {}
+                    }
                 }
             }
+            let content = image.encode();
+            load_and_run(&content[..content.len() - 32]);
         }
-        let content = image.encode();
-        load_and_run(&content[..content.len() - 32]);
     }
+    assert!(pointer_elements > 0 && fused_elements > 0);
 }

@@ -34,6 +34,32 @@ pub(crate) enum Place {
     /// (`p^.3`, `r.%X1` with `r : REFERENCE TO WORD`): read by loading the value, written by
     /// loading, setting the bit and storing the value back.
     PointedBit { pointer: Operand, ty: IE, bit: u8 },
+    /// An element, or a member of an element, of an array at a direct place, indexed by one
+    /// value only known when the code runs (`a[i]`, `a[i].x`, `s[i]` of a STRING): read with
+    /// `LoadElement` and written with `StoreElement` when it is elementary, and reached through
+    /// the pointer `Address` and `Element` give when its address is needed
+    /// (`docs/native-engine.md` §10).
+    Element(ElementPlace),
+}
+
+/// Where an element of an array at a direct place is, with the bounds its index is checked
+/// against: the fields of `Instr::LoadElement` and `Instr::StoreElement`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct ElementPlace {
+    /// The array's first element.
+    pub(crate) array: Operand,
+    /// The index, of type `index_ty`.
+    pub(crate) index: Operand,
+    /// The integer type of the index.
+    pub(crate) index_ty: IE,
+    /// The lowest index.
+    pub(crate) low: i64,
+    /// The number of elements.
+    pub(crate) count: u64,
+    /// Bytes per element.
+    pub(crate) stride: u32,
+    /// Bytes from the element's start to the place (a member of a structure element).
+    pub(crate) offset: u32,
 }
 
 /// A place with its type.
@@ -204,6 +230,7 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
             | Instr::Move { dst, ty, .. } => (dst, *ty),
             Instr::Compare { dst, .. } => (dst, IE::Bool),
             Instr::Convert { dst, to, .. } | Instr::Trunc { dst, to, .. } => (dst, *to),
+            Instr::LoadElement { dst, ty, .. } => (dst, *ty),
             _ => return false,
         };
         if *written != src || result_ty != ty {
@@ -342,7 +369,10 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
                 self.raw_references = true;
                 let slot = self.place(&target);
                 self.raw_references = false;
-                let slot = slot?;
+                let mut slot = slot?;
+                if self.may_run_code(&value) {
+                    slot = self.settled(slot)?;
+                }
                 let pointer = self.address_of(&value)?;
                 self.store(&slot, pointer)
             }
@@ -462,7 +492,9 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
         let (Some(target), Some(value)) = (target, value) else {
             return Ok(());
         };
+        // The element's index is checked whether or not the value sets it, as it always was.
         let target = self.place(&target)?;
+        let target = self.settled(target)?;
         let condition = self.expr_as(&value, &Type::BOOL)?;
         let skip = self.emit(Instr::JumpIfNot {
             cond: condition,
@@ -479,7 +511,10 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
         if let Some((owner, property, instance)) = self.property_of(target)? {
             return self.property_set(owner, property, instance, value);
         }
-        let target = self.place(target)?;
+        let mut target = self.place(target)?;
+        if self.may_run_code(value) {
+            target = self.settled(target)?;
+        }
         let operand = self.expr_as(value, &target.ty)?;
         self.store(&target, operand)
     }
@@ -632,7 +667,10 @@ impl<'b, 'g, 'p> BodyGen<'b, 'g, 'p> {
             return Err("a FOR loop needs a variable, a start and an end".into());
         };
         let step_node = stmt.by();
+        // The counter's place is computed once for the whole loop, whatever the body does to
+        // an index in it.
         let counter = self.place(&variable)?;
+        let counter = self.settled(counter)?;
         let ty = counter.ty.clone();
         let scalar = self
             .scalar_of(&ty)

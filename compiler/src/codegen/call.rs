@@ -215,6 +215,7 @@ impl<'p> BodyGen<'_, '_, 'p> {
                 let (instance, indirect) = match instance {
                     Place::Direct(op) => (op, false),
                     Place::Indirect(pointer) => (pointer, true),
+                    Place::Element(element) => (self.element_pointer(element)?, true),
                     Place::Bit { .. } | Place::PointedBit { .. } => {
                         return Err("an action of a bit".into());
                     }
@@ -338,6 +339,7 @@ impl<'p> BodyGen<'_, '_, 'p> {
                 .any(|a| a.name.eq_ignore_ascii_case(&member))
             {
                 let typed = self.place(&base)?;
+                let typed = self.settled(typed)?;
                 return Ok(Callee::Action {
                     owner: pou,
                     name: member,
@@ -346,6 +348,7 @@ impl<'p> BodyGen<'_, '_, 'p> {
             }
         }
         let typed = self.place(node)?;
+        let typed = self.settled(typed)?;
         match typed.lay.shape {
             LayShape::Pou(_) | LayShape::Std(..) => Ok(Callee::Instance(typed)),
             _ => Err(fail!("'{}' cannot be called", written(node))),
@@ -435,6 +438,7 @@ impl<'p> BodyGen<'_, '_, 'p> {
             };
             if arg.output {
                 let target = self.place(value)?;
+                let target = self.settled(target)?;
                 let temp = self.temp(slot.lay.size);
                 call.outputs.push(transfer(temp));
                 call.stores.push((temp, slot.ty.clone(), target));
@@ -540,6 +544,7 @@ impl<'p> BodyGen<'_, '_, 'p> {
         let (instance, indirect) = match typed.place {
             Place::Direct(op) => (op, false),
             Place::Indirect(pointer) => (pointer, true),
+            Place::Element(element) => (self.element_pointer(element)?, true),
             Place::Bit { .. } | Place::PointedBit { .. } => {
                 return Err("a bit is no instance".into());
             }

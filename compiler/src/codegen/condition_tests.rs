@@ -116,7 +116,14 @@ fn a_constant_the_image_does_not_have_lives_in_the_scratch_area() {
 #[test]
 fn a_function_condition_sees_its_parameters_and_locals_and_an_array_element_its_index() {
     compiled("Twice", "x = 3 AND t < 10");
-    compiled("Main", "a[i] = 0 OR fbA.count > big");
+    // The element is read without a pointer, into the condition's scratch area.
+    let element = compiled("Main", "a[i] = 0 OR fbA.count > big");
+    let listing = program_image::listing(&element.condition.code);
+    assert!(listing.contains("loadelement INT"), "{listing}");
+    assert_eq!(
+        image().verify_condition(element.pou, &element.condition),
+        Ok(())
+    );
     compiled("FB_Counter", "name = 'conveyor'");
 }
 

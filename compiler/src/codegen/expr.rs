@@ -3,17 +3,21 @@
 use program_image::{BinaryOp, CompareOp, Elementary as IE, Instr, Operand, UnaryOp};
 use project_model::VarSection;
 
-use super::body::{BodyGen, Gen, Place, Typed};
+use super::body::{BodyGen, ElementPlace, Gen, Place, Typed};
 use super::constant::{Value, evaluate_node, raw_of, text_bytes};
 use super::error::fail;
 use super::layout::{Lay, LayShape, located_of};
 use crate::elementary::Elementary;
 use crate::sema::scope::{GlobalSymbol, LocalSymbol};
+use crate::sema::signatures;
 use crate::sema::ty::{
     Type, bit_string_arithmetic, common_type, integer_real_type, mixed_sign_type,
 };
+use crate::sema::types::Shape;
 use crate::syntax::SyntaxKind;
-use crate::syntax::ast::{AstNode, BinaryExpr, Expr, FieldExpr, IndexExpr, NameExpr, UnaryExpr};
+use crate::syntax::ast::{
+    AstNode, BinaryExpr, CallExpr, Expr, FieldExpr, IndexExpr, NameExpr, UnaryExpr,
+};
 
 /// The text of an expression as written, for messages.
 pub(crate) fn written(node: &Expr) -> String {
@@ -58,15 +62,6 @@ pub(crate) fn located_place(located: program_image::Located) -> Place {
     }
 }
 
-/// Bit `bit` of the value of type `ty` at `place`, directly or through a pointer.
-fn bit_place(place: Place, ty: IE, bit: u8) -> Gen<Place> {
-    match place {
-        Place::Direct(operand) => Ok(Place::Bit { operand, ty, bit }),
-        Place::Indirect(pointer) => Ok(Place::PointedBit { pointer, ty, bit }),
-        Place::Bit { .. } | Place::PointedBit { .. } => Err("a bit has no bits".into()),
-    }
-}
-
 /// A literal's type made concrete by where it goes, or by IEC's defaults (DINT, LREAL).
 pub(crate) fn concrete(ty: &Type, want: Option<&Type>) -> Type {
     let wanted_number = want.filter(|w| {
@@ -95,10 +90,131 @@ pub(crate) fn concrete(ty: &Type, want: Option<&Type>) -> Type {
 }
 
 impl BodyGen<'_, '_, '_> {
+    /// Bit `bit` of the value of type `ty` at `place`, directly or through a pointer (an
+    /// element's bit through the element's pointer, as the image has no fused bit access).
+    fn bit_place(&mut self, place: Place, ty: IE, bit: u8) -> Gen<Place> {
+        match place {
+            Place::Direct(operand) => Ok(Place::Bit { operand, ty, bit }),
+            Place::Indirect(pointer) => Ok(Place::PointedBit { pointer, ty, bit }),
+            Place::Element(element) => Ok(Place::PointedBit {
+                pointer: self.element_pointer(element)?,
+                ty,
+                bit,
+            }),
+            Place::Bit { .. } | Place::PointedBit { .. } => Err("a bit has no bits".into()),
+        }
+    }
+
+    /// A pointer to an element place, made as before the fused instructions existed:
+    /// `Address` of the array, `Element` for the index, then `Offset` for a member. Where a
+    /// place's address is needed (`ADR`, a `VAR_IN_OUT` argument, a bit, a copy of a
+    /// structure element, an instance called) the element is reached this way.
+    pub(crate) fn element_pointer(&mut self, element: ElementPlace) -> Gen<Operand> {
+        let array = self.temp(8);
+        self.emit(Instr::Address {
+            dst: array,
+            place: element.array,
+        });
+        let dst = self.temp(8);
+        self.emit(Instr::Element {
+            dst,
+            base: array,
+            index: element.index,
+            index_ty: element.index_ty,
+            low: element.low,
+            count: element.count,
+            stride: element.stride,
+        });
+        match self.member_place(Place::Indirect(dst), element.offset)? {
+            Place::Indirect(pointer) => Ok(pointer),
+            _ => Err("an element's member is reached through its pointer".into()),
+        }
+    }
+
+    /// `typed` with an element place turned into the pointer to it, computed now: for a place
+    /// that is written after code that could change its index runs (a call's output, the
+    /// target of an assignment whose value calls, a FOR counter, an instance called), so the
+    /// element is the one the index named when the place was written down, and an index out
+    /// of bounds faults before that code runs, as it always did.
+    pub(crate) fn settled(&mut self, typed: Typed) -> Gen<Typed> {
+        match typed.place {
+            Place::Element(element) => Ok(Typed {
+                place: Place::Indirect(self.element_pointer(element)?),
+                ..typed
+            }),
+            _ => Ok(typed),
+        }
+    }
+
+    /// Whether evaluating `node` may run code of the program: a call of anything but a
+    /// standard function (`INT_TO_REAL`, `SQRT`, `LEN`, which change nothing but their
+    /// result), or a property read through its getter (a property of this POU by name, or a
+    /// member of an instance, which may be one).
+    pub(crate) fn may_run_code(&self, node: &Expr) -> bool {
+        node.syntax().descendants().any(|inner| match inner.kind() {
+            SyntaxKind::CALL_EXPR => !CallExpr::cast(inner)
+                .and_then(|call| call.callee())
+                .is_some_and(|callee| match callee {
+                    Expr::NameExpr(name) => name.ident().is_some_and(|name| {
+                        let name = name.text();
+                        self.scope.local(name).is_none()
+                            && self.scope.globals.pou(name).is_none()
+                            && signatures::function(name).is_some()
+                    }),
+                    _ => false,
+                }),
+            SyntaxKind::NAME_EXPR => NameExpr::cast(inner)
+                .and_then(|name| name.ident())
+                .is_some_and(|name| {
+                    matches!(
+                        self.scope.local(name.text()),
+                        Some(LocalSymbol::Property(_))
+                    )
+                }),
+            SyntaxKind::FIELD_EXPR => FieldExpr::cast(inner)
+                .and_then(|field| field.base())
+                .is_some_and(|base| match self.type_of(&base) {
+                    Type::Named(name) => !matches!(
+                        self.scope.globals.shape(&name),
+                        Some(Shape::Struct(_) | Shape::Enum(_))
+                    ),
+                    _ => false,
+                }),
+            _ => false,
+        })
+    }
+
     /// Reads a place into an operand.
     pub(crate) fn load(&mut self, typed: &Typed) -> Gen<Operand> {
         Ok(match typed.place {
             Place::Direct(op) => op,
+            Place::Element(element) => match typed.lay.shape {
+                LayShape::Scalar(ty) | LayShape::Enum(ty) => {
+                    let dst = self.temp(ty.size_bytes());
+                    self.emit(Instr::LoadElement {
+                        ty,
+                        dst,
+                        array: element.array,
+                        index: element.index,
+                        index_ty: element.index_ty,
+                        low: element.low,
+                        count: element.count,
+                        stride: element.stride,
+                        offset: element.offset,
+                    });
+                    dst
+                }
+                _ => {
+                    let pointer = self.element_pointer(element)?;
+                    let dst = self.temp(typed.lay.size);
+                    self.emit(Instr::Load {
+                        size: typed.lay.size,
+                        dst,
+                        ptr: pointer,
+                    });
+                    dst
+                }
+            },
             Place::Indirect(pointer) => {
                 let dst = self.temp(typed.lay.size);
                 self.emit(Instr::Load {
@@ -165,6 +281,29 @@ impl BodyGen<'_, '_, '_> {
                     src,
                 });
             }
+            Place::Element(element) => match typed.lay.shape {
+                LayShape::Scalar(ty) | LayShape::Enum(ty) => {
+                    self.emit(Instr::StoreElement {
+                        ty,
+                        array: element.array,
+                        index: element.index,
+                        index_ty: element.index_ty,
+                        low: element.low,
+                        count: element.count,
+                        stride: element.stride,
+                        offset: element.offset,
+                        src,
+                    });
+                }
+                _ => {
+                    let pointer = self.element_pointer(element)?;
+                    self.emit(Instr::Store {
+                        size: typed.lay.size,
+                        ptr: pointer,
+                        src,
+                    });
+                }
+            },
             Place::Bit { operand, ty, bit } => {
                 self.emit(Instr::SetBit {
                     ty,
@@ -208,6 +347,7 @@ impl BodyGen<'_, '_, '_> {
                 Ok(dst)
             }
             Place::Indirect(pointer) => Ok(pointer),
+            Place::Element(element) => self.element_pointer(element),
             // The checker refuses a bit passed by reference (E0135).
             Place::Bit { .. } | Place::PointedBit { .. } => {
                 Err("the address of a single bit cannot be taken (E0135)".into())
@@ -255,6 +395,10 @@ impl BodyGen<'_, '_, '_> {
     pub(crate) fn reference_value(&mut self, place: Place) -> Gen<Operand> {
         match place {
             Place::Direct(op) => Ok(op),
+            Place::Element(element) => {
+                let pointer = self.element_pointer(element)?;
+                self.reference_value(Place::Indirect(pointer))
+            }
             Place::Indirect(pointer) => {
                 let dst = self.temp(8);
                 self.emit(Instr::Load {
@@ -274,6 +418,14 @@ impl BodyGen<'_, '_, '_> {
     fn descriptor_operand(&mut self, typed: &Typed) -> Gen<Operand> {
         match typed.place {
             Place::Direct(descriptor) => Ok(descriptor),
+            Place::Element(element) => {
+                let pointer = self.element_pointer(element)?;
+                self.descriptor_operand(&Typed {
+                    place: Place::Indirect(pointer),
+                    ty: typed.ty.clone(),
+                    lay: typed.lay.clone(),
+                })
+            }
             Place::Indirect(pointer) => {
                 let dst = self.temp(typed.lay.size);
                 self.emit(Instr::Load {
@@ -571,7 +723,8 @@ impl BodyGen<'_, '_, '_> {
             if u32::from(bit) >= ty.size_bytes() * 8 {
                 return Err(fail!("{} has no bit {bit}", ty.name()));
             }
-            return self.typed(bit_place(base.place, ty, bit)?, Type::BOOL);
+            let place = self.bit_place(base.place, ty, bit)?;
+            return self.typed(place, Type::BOOL);
         }
         if let LayShape::Pou(pou_name) = &base.lay.shape
             && let Some(pou) = self.scope.globals.pou(pou_name)
@@ -623,7 +776,10 @@ impl BodyGen<'_, '_, '_> {
             return Err(fail!("{} has no {text}", ty.name()));
         }
         match part {
-            None => self.typed(bit_place(base.place, ty, index as u8)?, Type::BOOL),
+            None => {
+                let place = self.bit_place(base.place, ty, index as u8)?;
+                self.typed(place, Type::BOOL)
+            }
             Some(part) => {
                 // Parts are counted from the least significant end, which is the first byte
                 // in the image's little-endian layout.
@@ -649,6 +805,13 @@ impl BodyGen<'_, '_, '_> {
     pub(crate) fn member_place(&mut self, base: Place, offset: u32) -> Gen<Place> {
         Ok(match base {
             Place::Direct(op) => Place::Direct(shifted(op, offset)),
+            Place::Element(element) => Place::Element(ElementPlace {
+                offset: element
+                    .offset
+                    .checked_add(offset)
+                    .ok_or("a member more than 4 GiB into its element")?,
+                ..element
+            }),
             Place::Indirect(pointer) => {
                 if offset == 0 {
                     Place::Indirect(pointer)
@@ -738,10 +901,24 @@ impl BodyGen<'_, '_, '_> {
                 u32::try_from(high.abs_diff(*low).saturating_add(1)).unwrap_or(u32::MAX),
             );
         }
+        let constants: Vec<Option<Value>> = indices
+            .iter()
+            .map(|index| match evaluate_node(index, self.scope.globals) {
+                Some(value @ Value::Int(_)) => Some(value),
+                _ => None,
+            })
+            .collect();
+        // An array at a direct place with one index known only when the code runs is reached
+        // without a pointer (`docs/native-engine.md` §10); with several such indices each
+        // moves a pointer, as before.
+        let fused = matches!(base.place, Place::Direct(_))
+            && constants.iter().filter(|value| value.is_none()).count() == 1;
         let mut place = base.place;
         let mut constant_offset = 0u32;
-        for ((index, (low, high)), stride) in indices.iter().zip(&dims).zip(&strides) {
-            if let Some(Value::Int(value)) = evaluate_node(index, self.scope.globals) {
+        for (((index, (low, high)), stride), constant) in
+            indices.iter().zip(&dims).zip(&strides).zip(constants)
+        {
+            if let Some(Value::Int(value)) = constant {
                 let value = i64::try_from(value).map_err(|_| "index out of range")?;
                 if value < *low || value > *high {
                     return Err(fail!("the index {value} is outside {low}..{high}"));
@@ -753,15 +930,44 @@ impl BodyGen<'_, '_, '_> {
                 place = self.member_place(place, constant_offset)?;
                 constant_offset = 0;
             }
-            let base_pointer = self.pointer_to(&Typed {
-                place,
-                ty: base.ty.clone(),
-                lay: base.lay.clone(),
-            })?;
+            let count = high.abs_diff(*low).saturating_add(1);
+            let array = match place {
+                Place::Direct(array) if fused => Some(array),
+                _ => None,
+            };
+            // The pointer path takes the array's address before the index, as it always did.
+            let base_pointer = match array {
+                Some(_) => None,
+                None => Some(self.pointer_to(&Typed {
+                    place,
+                    ty: base.ty.clone(),
+                    lay: base.lay.clone(),
+                })?),
+            };
             let (index_value, index_ty) = self.expr(index, None)?;
             let index_scalar = self
                 .scalar_of(&index_ty)
                 .ok_or("an array index must be an integer")?;
+            let base_pointer = match (array, base_pointer) {
+                (Some(array), _) if index_scalar.is_integer() => {
+                    place = Place::Element(ElementPlace {
+                        array,
+                        index: index_value,
+                        index_ty: index_scalar,
+                        low: *low,
+                        count,
+                        stride: *stride,
+                        offset: 0,
+                    });
+                    continue;
+                }
+                (_, Some(pointer)) => pointer,
+                (_, None) => self.pointer_to(&Typed {
+                    place,
+                    ty: base.ty.clone(),
+                    lay: base.lay.clone(),
+                })?,
+            };
             let dst = self.temp(8);
             self.emit(Instr::Element {
                 dst,
@@ -769,7 +975,7 @@ impl BodyGen<'_, '_, '_> {
                 index: index_value,
                 index_ty: index_scalar,
                 low: *low,
-                count: high.abs_diff(*low).saturating_add(1),
+                count,
                 stride: *stride,
             });
             place = Place::Indirect(dst);
@@ -882,10 +1088,7 @@ impl BodyGen<'_, '_, '_> {
                     return self.property_get(owner, property, instance);
                 }
                 if let Type::Named(name) = &checked
-                    && matches!(
-                        self.scope.globals.shape(name),
-                        Some(crate::sema::types::Shape::Enum(_))
-                    )
+                    && matches!(self.scope.globals.shape(name), Some(Shape::Enum(_)))
                     && self.is_enum_value(node)
                 {
                     return self.literal(node, &checked, want);

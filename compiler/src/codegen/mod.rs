@@ -16,6 +16,8 @@ mod call;
 mod condition;
 mod constant;
 mod debug_info;
+#[cfg(test)]
+mod element_tests;
 mod error;
 mod expr;
 mod init;

@@ -12,7 +12,7 @@ use crate::{CompileError, SourceProject, compile_source};
 
 /// The listing of the POU `pou` compiled from `source`.
 #[track_caller]
-fn code_of(source: &str, pou: &str) -> String {
+pub(super) fn code_of(source: &str, pou: &str) -> String {
     let project = SourceProject::new(source);
     assert!(
         project.parse.errors().is_empty(),
@@ -235,11 +235,9 @@ fn array_indexing_checks_the_bounds_of_a_variable_index() {
         "a : ARRAY[1..5] OF INT; i : INT := 2; x : INT;",
         "a[i] := 4;\nx := a[3];",
         expect![[r#"
-            0   address F0 <- &I0
-            1   element F8 <- F0[I10 INT from 1, 5 of 2]
-            2   store 2 *F8 <- K0
-            3   move INT I12 <- I4
-            4   return
+            0   storeelement INT I0[I10 INT from 1, 5 of 2]+0 <- K0
+            1   move INT I12 <- I4
+            2   return
         "#]],
     );
 }
@@ -336,12 +334,9 @@ fn an_index_into_a_string_reads_its_bytes_from_0_with_the_terminator_inside_the_
         "s : STRING(4) := 'abcd'; w : WSTRING(2); j : INT; b : BYTE; c : WORD;",
         "b := s[j];\nc := w[1];",
         expect![[r#"
-            0   address F0 <- &I0
-            1   element F8 <- F0[I12 INT from 0, 5 of 1]
-            2   load 1 F16 <- *F8
-            3   move BYTE I14 <- F16
-            4   move WORD I16 <- I8
-            5   return
+            0   loadelement BYTE I14 <- I0[I12 INT from 0, 5 of 1]+0
+            1   move WORD I16 <- I8
+            2   return
         "#]],
     );
 }

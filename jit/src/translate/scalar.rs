@@ -43,6 +43,7 @@ pub(crate) fn constant_pool_is_read_only(image: &ProgramImage) -> bool {
             | Instr::OpenElement { dst, .. }
             | Instr::Now { dst }
             | Instr::Clock { dst, .. }
+            | Instr::LoadElement { dst, .. }
             | Instr::ToText { dst, .. }
             | Instr::FromText { dst, .. }
             | Instr::Address { dst, .. } => !writable(dst),
@@ -57,6 +58,9 @@ pub(crate) fn constant_pool_is_read_only(image: &ProgramImage) -> bool {
             | Instr::CallStdBlock {
                 instance, indirect, ..
             } => !indirect && !writable(instance),
+            // A fused element store writes inside its array's extent, which verification keeps
+            // in the array operand's region: a store into the pool only if the array is there.
+            Instr::StoreElement { array, .. } => !writable(array),
             Instr::Store { .. } | Instr::CallVirtual { .. } | Instr::Native { .. } => false,
             Instr::Jump { .. } | Instr::JumpIf { .. } | Instr::JumpIfNot { .. } | Instr::Return => {
                 true

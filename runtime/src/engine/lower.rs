@@ -316,6 +316,50 @@ fn lower(instr: &Instr, regions: &Regions, sizes: &[usize], at: u32) -> Result<O
                 Ok(Flow::Next)
             })
         }
+        Instr::LoadElement {
+            ty,
+            dst,
+            array,
+            index,
+            index_ty,
+            low,
+            count,
+            stride,
+            offset,
+        } => {
+            let access = ElementAccess::new(
+                a(array),
+                a(index),
+                *index_ty,
+                *low,
+                *count,
+                *stride,
+                *offset,
+            );
+            dispatch!(all ty, load_element(a(dst), access))
+        }
+        Instr::StoreElement {
+            ty,
+            array,
+            index,
+            index_ty,
+            low,
+            count,
+            stride,
+            offset,
+            src,
+        } => {
+            let access = ElementAccess::new(
+                a(array),
+                a(index),
+                *index_ty,
+                *low,
+                *count,
+                *stride,
+                *offset,
+            );
+            dispatch!(all ty, store_element(access, a(src)))
+        }
         Instr::Offset { dst, base, offset } => {
             let (dst, base, offset) = (a(dst), a(base), u64::from(*offset));
             Box::new(move |x| {
@@ -587,6 +631,87 @@ pub(crate) fn sign_extend(raw: u64, ty: E) -> i64 {
     } else {
         raw as i64
     }
+}
+
+/// The element (or member of an element) a `LoadElement` or `StoreElement` reaches: the
+/// array is a direct place, so the element's address is the array's plus a checked offset, with
+/// no pointer to resolve.
+#[derive(Clone, Copy)]
+struct ElementAccess {
+    array: Addr,
+    index: Addr,
+    index_ty: E,
+    low: i64,
+    /// The highest index, computed as `Instr::Element` computes it so a fault reports the same
+    /// bounds.
+    high: i64,
+    stride: u64,
+    offset: u32,
+}
+
+impl ElementAccess {
+    fn new(
+        array: Addr,
+        index: Addr,
+        index_ty: E,
+        low: i64,
+        count: u64,
+        stride: u32,
+        offset: u32,
+    ) -> Self {
+        let high = low.saturating_add(i64::try_from(count.saturating_sub(1)).unwrap_or(i64::MAX));
+        Self {
+            array,
+            index,
+            index_ty,
+            low,
+            high,
+            stride: u64::from(stride),
+            offset,
+        }
+    }
+
+    /// The address of the value, or the fault of an index outside the bounds.
+    #[inline(always)]
+    fn addr(&self, x: &Exec<'_>) -> Result<Addr, Fault> {
+        let raw = read_raw(x, self.index, self.index_ty)?;
+        let i = sign_extend(raw, self.index_ty);
+        if i < self.low || i > self.high {
+            return Err(Box::new(FaultKind::IndexOutOfBounds {
+                index: i,
+                low: self.low,
+                high: self.high,
+            }));
+        }
+        // The verifier checked that the whole array lies inside its region, so the element's
+        // offset fits; wrapping keeps a corrupted value a memory fault of `get`/`set` rather
+        // than a panic.
+        let element = (i.wrapping_sub(self.low) as u64).wrapping_mul(self.stride) as u32;
+        Ok(Addr {
+            base: self.array.base,
+            offset: self
+                .array
+                .offset
+                .wrapping_add(element)
+                .wrapping_add(self.offset),
+        })
+    }
+}
+
+fn load_element<T: Scalar>(dst: Addr, access: ElementAccess) -> Op {
+    Box::new(move |x| {
+        let value = x.get::<T>(access.addr(x)?)?;
+        x.set(dst, value)?;
+        Ok(Flow::Next)
+    })
+}
+
+fn store_element<T: Scalar>(access: ElementAccess, src: Addr) -> Op {
+    Box::new(move |x| {
+        let value = x.get::<T>(src)?;
+        x.set(access.addr(x)?, value)?;
+        Ok(Flow::Next)
+    })
 }
 
 fn mov<T: Scalar>(dst: Addr, src: Addr) -> Op {

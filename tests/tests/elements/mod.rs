@@ -1,0 +1,313 @@
+//! Array elements and string characters indexed by a value known only when the code runs:
+//! read and written with the fused `LoadElement` and `StoreElement` where the array is a direct
+//! place (`docs/native-engine.md` §10), and through the pointer of `Address` and `Element`
+//! where its address is needed or the array is reached through a pointer, both with the same
+//! values and the same faults.
+
+use program_image::Instr;
+use runtime::engine::FaultKind;
+
+use super::{check, compile, run, value};
+
+/// The instructions of POU `pou` in the image compiled from `source` that `wanted` accepts.
+#[track_caller]
+fn count_of(source: &str, pou: &str, wanted: fn(&Instr) -> bool) -> usize {
+    let image = compile(source);
+    let Some(found) = image.pous.iter().find(|p| p.name == pou) else {
+        panic!("no POU '{pou}'");
+    };
+    found.code.iter().filter(|instr| wanted(instr)).count()
+}
+
+fn is_fused(instr: &Instr) -> bool {
+    matches!(
+        instr,
+        Instr::LoadElement { .. } | Instr::StoreElement { .. }
+    )
+}
+
+fn is_pointer_element(instr: &Instr) -> bool {
+    matches!(instr, Instr::Element { .. })
+}
+
+/// The one fault of `s`, which must have stopped the task.
+#[track_caller]
+fn only_fault(s: &runtime::simulation::Simulation) -> &runtime::engine::FaultRecord {
+    let [fault] = s.faults() else {
+        panic!("one fault: {:?}", s.faults())
+    };
+    fault
+}
+
+#[test]
+fn arrays_of_every_elementary_type_are_written_and_read_by_a_variable_index() {
+    let types = [
+        ("BOOL", "TRUE"),
+        ("BYTE", "16#A5"),
+        ("WORD", "16#BEEF"),
+        ("DWORD", "16#DEADBEEF"),
+        ("LWORD", "16#0123456789ABCDEF"),
+        ("SINT", "-100"),
+        ("INT", "-30000"),
+        ("DINT", "-2000000000"),
+        ("LINT", "-9000000000000000000"),
+        ("USINT", "200"),
+        ("UINT", "60000"),
+        ("UDINT", "4000000000"),
+        ("ULINT", "18000000000000000000"),
+        ("REAL", "1.5"),
+        ("LREAL", "-2.25"),
+        ("TIME", "T#1s500ms"),
+        ("LTIME", "LTIME#2h3ns"),
+        ("DATE", "D#2024-02-29"),
+        ("LDATE", "LDATE#2024-02-29"),
+        ("TOD", "TOD#12:34:56"),
+        ("LTOD", "LTOD#01:02:03.5"),
+        ("DT", "DT#2024-02-29-12:00:00"),
+        ("LDT", "LDT#2024-02-29-12:00:00"),
+    ];
+    for (ty, literal) in types {
+        // The middle element of three from -1 is written and read back through a variable
+        // index; its neighbours keep the type's default, which `z` holds too.
+        let source = format!(
+            "PROGRAM main VAR a : ARRAY[-1..1] OF {ty}; v : {ty} := {literal}; z : {ty}; b : {ty}; i : DINT := 0; END_VAR
+             a[i] := v; b := a[i]; END_PROGRAM"
+        );
+        assert_eq!(count_of(&source, "main", is_fused), 2, "{ty}");
+        let s = run(&source, 1);
+        let written = value(&s, "main.v");
+        let default = value(&s, "main.z");
+        assert_ne!(written, default, "{ty}: the test value is the default");
+        check(
+            &s,
+            &[
+                ("main.b", &written),
+                ("main.a[0]", &written),
+                ("main.a[-1]", &default),
+                ("main.a[1]", &default),
+            ],
+        );
+    }
+}
+
+#[test]
+fn members_of_structure_elements_are_written_and_read_at_their_offsets() {
+    let source = "TYPE ST_Sample : STRUCT flag : BOOL; count : INT; level : REAL; total : LREAL; END_STRUCT END_TYPE
+         PROGRAM main
+         VAR samples : ARRAY[-2..2] OF ST_Sample; i : INT; counts : DINT; level : REAL; total : LREAL; flags : INT; END_VAR
+         FOR i := -2 TO 2 DO
+             samples[i].count := i * 10;
+             samples[i].level := INT_TO_REAL(i) / 2.0;
+             samples[i].total := samples[i].level * 4.0;
+             samples[i].flag := i > 0;
+         END_FOR
+         FOR i := -2 TO 2 DO
+             counts := counts + samples[i].count;
+             level := level + samples[i].level;
+             total := total + samples[i].total;
+             IF samples[i].flag THEN flags := flags + 1; END_IF
+         END_FOR
+         END_PROGRAM";
+    assert_eq!(count_of(source, "main", is_pointer_element), 0);
+    let s = run(source, 1);
+    check(
+        &s,
+        &[
+            ("main.samples[-2].count", "-20"),
+            ("main.samples[2].level", "1"),
+            ("main.samples[-1].level", "-0.5"),
+            ("main.samples[1].total", "2"),
+            ("main.samples[0].flag", "FALSE"),
+            ("main.samples[2].flag", "TRUE"),
+            ("main.counts", "0"),
+            ("main.level", "0"),
+            ("main.total", "0"),
+            ("main.flags", "2"),
+        ],
+    );
+}
+
+#[test]
+fn string_characters_are_written_and_read_by_a_variable_index() {
+    let source = "PROGRAM main VAR s : STRING(5) := 'hello'; w : WSTRING(3) := \"abc\"; i : ULINT; last : BYTE; END_VAR
+         FOR i := 0 TO 4 DO s[i] := s[i] - 32; END_FOR
+         FOR i := 0 TO 2 DO w[i] := w[2 - i]; END_FOR
+         i := 5; last := s[i];
+         END_PROGRAM";
+    assert_eq!(count_of(source, "main", is_pointer_element), 0);
+    let s = run(source, 1);
+    // The reversal overwrote the first character before the last was read from it.
+    check(
+        &s,
+        &[
+            ("main.s", "'HELLO'"),
+            ("main.w", "'cbc'"),
+            ("main.last", "0"),
+        ],
+    );
+    let s = run(
+        "PROGRAM main VAR s : STRING(5); i : INT := 6; END_VAR s[i] := 65; END_PROGRAM",
+        1,
+    );
+    assert_eq!(
+        only_fault(&s).kind,
+        FaultKind::IndexOutOfBounds {
+            index: 6,
+            low: 0,
+            high: 5
+        }
+    );
+}
+
+#[test]
+fn a_negative_low_bound_counts_elements_from_it_and_faults_below_it() {
+    let source =
+        "PROGRAM main VAR a : ARRAY[-5..-3] OF DINT; i : SINT; first : DINT; x : DINT; END_VAR
+         FOR i := -5 TO -3 DO a[i] := i * i; END_FOR
+         first := a[-5];
+         i := -6; x := a[i];
+         END_PROGRAM";
+    let s = run(source, 1);
+    assert_eq!(value(&s, "main.first"), "25");
+    assert_eq!(value(&s, "main.a[-3]"), "9");
+    let fault = only_fault(&s);
+    assert_eq!(
+        fault.kind,
+        FaultKind::IndexOutOfBounds {
+            index: -6,
+            low: -5,
+            high: -3
+        }
+    );
+    assert_eq!((fault.pou.as_str(), fault.line), ("main", Some(4)));
+}
+
+#[test]
+fn a_ulint_index_above_2_pow_63_is_a_negative_index_out_of_bounds() {
+    // The interpreter reads an index as i64, so 2^63 + 1 is below every low bound of 0.
+    let s = run(
+        "PROGRAM main VAR a : ARRAY[0..3] OF INT; u : ULINT := 16#8000000000000001; ok : ULINT := 3; x : INT; END_VAR
+         a[ok] := 7; x := a[ok];
+         a[u] := 1;
+         END_PROGRAM",
+        1,
+    );
+    assert_eq!(value(&s, "main.x"), "7");
+    let fault = only_fault(&s);
+    assert_eq!(
+        fault.kind,
+        FaultKind::IndexOutOfBounds {
+            index: i64::MIN + 1,
+            low: 0,
+            high: 3
+        }
+    );
+    assert_eq!(fault.line, Some(3));
+    let s = run(
+        "PROGRAM main VAR a : ARRAY[0..3] OF INT; u : ULINT := 16#FFFFFFFFFFFFFFFF; x : INT; END_VAR
+         x := a[u];
+         END_PROGRAM",
+        1,
+    );
+    assert_eq!(
+        only_fault(&s).kind,
+        FaultKind::IndexOutOfBounds {
+            index: -1,
+            low: 0,
+            high: 3
+        }
+    );
+}
+
+#[test]
+fn an_index_out_of_bounds_names_the_pou_and_line_of_the_read_or_the_write() {
+    let source = "FUNCTION_BLOCK FB_Ring
+         VAR_INPUT pos : INT; END_VAR
+         VAR data : ARRAY[1..4] OF INT; out : INT; END_VAR
+         out := data[pos];
+         data[pos + 1] := out + 1;
+         END_FUNCTION_BLOCK
+         PROGRAM main VAR ring : FB_Ring; n : INT; END_VAR
+         n := n + 1; ring(pos := n + 2);
+         END_PROGRAM";
+    assert_eq!(count_of(source, "FB_Ring", is_fused), 2);
+    // Cycle 1 reads 3 and writes 4; cycle 2 reads 4 and writes 5, outside.
+    let s = run(source, 3);
+    let fault = only_fault(&s);
+    assert_eq!(
+        fault.kind,
+        FaultKind::IndexOutOfBounds {
+            index: 5,
+            low: 1,
+            high: 4
+        }
+    );
+    assert_eq!(fault.pou, "FB_Ring");
+    // The task's second cycle, counted from 0.
+    assert_eq!(
+        (fault.file.as_deref(), fault.line, fault.cycle),
+        (Some("test.st"), Some(5), 1)
+    );
+    assert_eq!(value(&s, "main.ring.data[4]"), "1");
+    // The read faults first when its own index is outside.
+    let s = run(&source.replace("pos := n + 2", "pos := n + 4"), 1);
+    let fault = only_fault(&s);
+    assert_eq!(
+        fault.kind,
+        FaultKind::IndexOutOfBounds {
+            index: 5,
+            low: 1,
+            high: 4
+        }
+    );
+    assert_eq!((fault.pou.as_str(), fault.line), ("FB_Ring", Some(4)));
+}
+
+#[test]
+fn elements_reached_through_pointers_in_outs_bits_and_calls_keep_their_values() {
+    let source = "TYPE ST_Point : STRUCT x : INT; y : INT; END_STRUCT END_TYPE
+         FUNCTION Pick : INT VAR_IN_OUT arr : ARRAY[1..4] OF INT; END_VAR VAR_INPUT i : INT; END_VAR
+             Pick := arr[i]; arr[i] := arr[i] * 10;
+         END_FUNCTION
+         FUNCTION Bump : INT VAR_IN_OUT v : INT; END_VAR v := v + 1; Bump := 7; END_FUNCTION
+         FUNCTION_BLOCK FB_Count VAR_INPUT step : INT; END_VAR VAR_OUTPUT total : INT; END_VAR
+             total := total + step;
+         END_FUNCTION_BLOCK
+         PROGRAM main
+         VAR
+             a : ARRAY[1..4] OF INT := [1, 2, 3, 4]; p : POINTER TO ARRAY[1..4] OF INT;
+             r : REFERENCE TO ARRAY[1..4] OF INT; pw : POINTER TO WORD;
+             w : ARRAY[0..1] OF WORD; pts : ARRAY[0..2] OF ST_Point; q : ST_Point;
+             counters : ARRAY[1..2] OF FB_Count; i : INT := 2; j : INT; picked : INT; via : INT;
+             bit : BOOL; calls : ARRAY[1..4] OF INT; totals : INT;
+         END_VAR
+         picked := Pick(a, i);
+         p := ADR(a); via := p^[i + 1]; p^[i + 1] := 30;
+         r REF= a; r[4] := r[i] + 1;
+         pw := ADR(w[i - 1]); pw^ := 16#00F0; bit := w[i - 1].4; w[i - 1].0 := TRUE;
+         pts[i].x := 5; pts[i].y := 6; q := pts[i]; pts[i - 2] := q;
+         j := 1; calls[j] := Bump(j);
+         counters[i](step := 3); counters[i](step := 4); totals := counters[i].total;
+         END_PROGRAM";
+    let s = run(source, 1);
+    check(
+        &s,
+        &[
+            ("main.picked", "2"),
+            ("main.a[2]", "20"),
+            ("main.via", "3"),
+            ("main.a[3]", "30"),
+            ("main.a[4]", "21"),
+            ("main.w[1]", "241"),
+            ("main.bit", "TRUE"),
+            ("main.pts[0].x", "5"),
+            ("main.pts[0].y", "6"),
+            // The element is the one `j` named before `Bump` changed it.
+            ("main.calls[1]", "7"),
+            ("main.calls[2]", "0"),
+            ("main.j", "2"),
+            ("main.totals", "7"),
+            ("main.counters[1].total", "0"),
+        ],
+    );
+}
