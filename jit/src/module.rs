@@ -71,21 +71,85 @@ impl Translation {
                 return Err(NativeUnsupported::Module(error));
             }
         };
-        let environment = Environment {
-            pous: &image.pous,
-            layout,
-            imports: &imports,
-            folded_constants: crate::translate::scalar::constant_pool_is_read_only(image)
-                .then_some(image.constants.as_slice()),
-            signature: pou_signature(module.make_signature()),
-        };
+        let signature = pou_signature(module.make_signature());
+        // Every POU's function is declared before any is translated, so that a call can name
+        // its callee's function (§4.4); a POU whose function cannot be declared runs in the
+        // interpreter, and its callers hand their calls of it to the interpreter.
+        let mut untranslated = Vec::new();
+        let mut functions = Vec::with_capacity(image.pous.len());
+        for (index, pou) in image.pous.iter().enumerate() {
+            match module.declare_function(&format!("rivet_pou_{index}"), Linkage::Local, &signature)
+            {
+                Ok(id) => functions.push(Some(id)),
+                Err(error) => {
+                    untranslated.push(Untranslated {
+                        pou: index as u32,
+                        name: pou.name.clone(),
+                        instruction: None,
+                        reason: error.to_string(),
+                    });
+                    functions.push(None);
+                }
+            }
+        }
+        let folded_constants = crate::translate::scalar::constant_pool_is_read_only(image)
+            .then_some(image.constants.as_slice());
         let mut function_context = FunctionBuilderContext::new();
+        // Translated until no POU is refused anew: a refused callee has no function, so its
+        // callers are translated again with their calls of it handed to the interpreter.
+        let translated = loop {
+            let environment = Environment {
+                pous: &image.pous,
+                layout,
+                imports: &imports,
+                folded_constants,
+                signature: signature.clone(),
+                functions: &functions,
+            };
+            let mut translated = Vec::with_capacity(image.pous.len());
+            let mut refused_now = Vec::new();
+            for (index, pou) in image.pous.iter().enumerate() {
+                if functions[index].is_none() {
+                    translated.push(None);
+                    continue;
+                }
+                let index = index as u32;
+                // A translator bug must not take the loading thread down: the POU falls back
+                // to the interpreter with the reason (§8.2).
+                let result = std::panic::catch_unwind(AssertUnwindSafe(|| {
+                    translate_pou(&environment, index, &mut function_context, &mut module)
+                }));
+                match result {
+                    Ok(Ok(function)) => translated.push(Some(function)),
+                    Ok(Err(refusal)) => {
+                        refused_now.push(refusal);
+                        translated.push(None);
+                    }
+                    Err(_) => {
+                        refused_now.push(Untranslated {
+                            pou: index,
+                            name: pou.name.clone(),
+                            instruction: None,
+                            reason: "the translator failed on it (an internal error)".into(),
+                        });
+                        translated.push(None);
+                        function_context = FunctionBuilderContext::new();
+                    }
+                }
+            }
+            if refused_now.is_empty() {
+                break translated;
+            }
+            for refusal in refused_now {
+                functions[refusal.pou as usize] = None;
+                untranslated.push(refusal);
+            }
+        };
         let mut codegen = module.make_context();
         let mut defined = Vec::with_capacity(image.pous.len());
-        let mut untranslated = Vec::new();
         #[cfg(test)]
         let mut listings = Vec::new();
-        for (index, pou) in image.pous.iter().enumerate() {
+        for (index, (pou, function)) in image.pous.iter().zip(translated).enumerate() {
             let index = index as u32;
             let refused = |reason: String| Untranslated {
                 pou: index,
@@ -93,43 +157,17 @@ impl Translation {
                 instruction: None,
                 reason,
             };
-            // A translator bug must not take the loading thread down: the POU falls back to
-            // the interpreter with the reason (§8.2).
-            let translated = std::panic::catch_unwind(AssertUnwindSafe(|| {
-                translate_pou(&environment, index, &mut function_context, &mut module)
-            }));
-            let function = match translated {
-                Ok(Ok(function)) => function,
-                Ok(Err(refusal)) => {
-                    untranslated.push(refusal);
-                    defined.push(None);
-                    continue;
-                }
-                Err(_) => {
-                    untranslated.push(refused(
-                        "the translator failed on it (an internal error)".into(),
-                    ));
-                    defined.push(None);
-                    function_context = FunctionBuilderContext::new();
-                    continue;
-                }
-            };
-            let id = match module.declare_function(
-                &format!("rivet_pou_{index}"),
-                Linkage::Local,
-                &environment.signature,
-            ) {
-                Ok(id) => id,
-                Err(error) => {
-                    untranslated.push(refused(error.to_string()));
-                    defined.push(None);
-                    continue;
-                }
+            let (Some(function), Some(id)) = (function, functions[index as usize]) else {
+                defined.push(None);
+                continue;
             };
             codegen.func = function;
             // The tests read the machine code's listing (§7 rule 5: no reachable trap).
             codegen.set_disasm(cfg!(test));
-            // A Cranelift panic must not take the loading thread down either (§8.2).
+            // A Cranelift panic must not take the loading thread down either (§8.2). A
+            // function that fails here after a caller was made to call it leaves that call
+            // unresolved: finalising asks the symbol lookup for its name, which is foreign,
+            // and the whole image is refused (safe, and a code generator bug).
             let result = std::panic::catch_unwind(AssertUnwindSafe(|| {
                 module.define_function(id, &mut codegen).map_err(Box::new)
             }));
@@ -169,7 +207,7 @@ impl Translation {
             .iter()
             .map(|pou| (u64::from(pou.instance_size), u64::from(pou.frame_size)))
             .collect();
-        let machine = MachineCode::new(module, &defined, &environment.signature, sizes, *layout);
+        let machine = MachineCode::new(module, &defined, &signature, sizes, *layout);
         for (index, pou) in image.pous.iter().enumerate() {
             let index = index as u32;
             if defined[index as usize].is_some() && !machine.has(index) {
@@ -183,6 +221,7 @@ impl Translation {
                 });
             }
         }
+        untranslated.sort_by_key(|refusal| refusal.pou);
         Ok(Code {
             untranslated,
             code_bytes: code_bytes.load(Ordering::Relaxed),

@@ -17,11 +17,13 @@ use cranelift_codegen::ir::{
     Value, types,
 };
 use cranelift_frontend::{FunctionBuilder, FunctionBuilderContext, Variable};
+use cranelift_module::FuncId;
 use program_image::{Elementary, Instr, Operand, Pou};
 
 use crate::context;
 use crate::layout::Layout;
 use blocks::Blocks;
+use call::CallInstance;
 use host_calls::{Import, Imports};
 
 /// A POU the translator leaves to the interpreter, with the reason (`docs/native-engine.md`
@@ -75,6 +77,9 @@ pub(crate) struct Environment<'a> {
     pub(crate) folded_constants: Option<&'a [u8]>,
     /// The signature of a POU function on this machine.
     pub(crate) signature: Signature,
+    /// Per POU: its function in the module, when it has one (a call of a POU without one is
+    /// handed to the interpreter, §4.4).
+    pub(crate) functions: &'a [Option<FuncId>],
 }
 
 /// Translates POU `index` into a function, or says why it cannot.
@@ -121,6 +126,12 @@ pub(crate) struct Translator<'a, 'b> {
     module: &'a mut dyn cranelift_module::Module,
     /// Per import: its reference in this function, once declared in it.
     refs: Vec<Option<FuncRef>>,
+    /// The image's POUs.
+    pub(crate) pous: &'a [Pou],
+    /// Per POU: its function in the module, when it has one.
+    functions: &'a [Option<FuncId>],
+    /// Per POU: its function's reference in this function, once declared in it.
+    pou_refs: Vec<Option<FuncRef>>,
     /// This POU's index.
     pub(crate) pou: u32,
     /// This POU's instructions.
@@ -167,6 +178,9 @@ impl<'a, 'b> Translator<'a, 'b> {
             folded_constants: environment.folded_constants,
             module,
             refs: vec![None; Import::COUNT],
+            pous: environment.pous,
+            functions: environment.functions,
+            pou_refs: vec![None; environment.pous.len()],
             pou: index,
             code: &pou.code,
             blocks,
@@ -333,8 +347,47 @@ impl<'a, 'b> Translator<'a, 'b> {
                 self.store(now, *dst);
                 true
             }
-            // Calls, the runtime's blocks and functions, strings, the real clock and open
-            // arrays run in the interpreter in this wave (§5.1 "host").
+            Instr::CallFunction {
+                pou,
+                instance,
+                inputs,
+                outputs,
+            } => {
+                let this = match instance {
+                    Some(pointer) => CallInstance::Pointer(*pointer),
+                    None => CallInstance::Caller,
+                };
+                self.call_function(*pou, this, inputs, outputs)
+            }
+            Instr::CallBlock {
+                pou,
+                instance,
+                indirect,
+            } => {
+                let this = if *indirect {
+                    CallInstance::Pointer(*instance)
+                } else {
+                    CallInstance::Direct(*instance)
+                };
+                self.call_function(*pou, this, &[], &[])
+            }
+            Instr::CallVirtual {
+                table,
+                interface,
+                inputs,
+                outputs,
+            } => self.call_virtual(table, *interface, inputs, outputs),
+            Instr::OpenElement {
+                dst,
+                descriptor,
+                indices,
+                stride,
+            } => {
+                self.open_element(*dst, *descriptor, indices, *stride);
+                true
+            }
+            // The runtime's blocks and functions, strings, the real clock and the motion
+            // blocks run in the interpreter (§5.1 "host").
             _ => false,
         }
     }

@@ -4,6 +4,7 @@
 
 #![allow(clippy::unwrap_used, clippy::expect_used)] // A panic is a failed test.
 
+mod call;
 mod control;
 mod integer;
 mod module;
@@ -48,6 +49,11 @@ struct TestHost {
     memory_calls: usize,
     /// When set, `op` and `copy` panic with this message.
     panic: Option<&'static str>,
+    /// The frames prepared by `frame`: the POU and the frame's offset.
+    frames: Vec<(u32, u64)>,
+    /// What `frame` writes at a new frame after zeroing `FRAME_SIZE` bytes (the initial
+    /// runs of the POU the test calls).
+    frame_template: Vec<u8>,
 }
 
 impl Host for TestHost {
@@ -97,8 +103,11 @@ impl Host for TestHost {
         self.memory.copy_within(from..from + bytes, to);
         Status::Ok
     }
-    fn frame(&mut self, _: u32, frame: u64) -> Status {
+    fn frame(&mut self, pou: u32, frame: u64) -> Status {
+        self.frames.push((pou, frame));
         self.memory[frame as usize..][..FRAME_SIZE as usize].fill(0);
+        self.memory[frame as usize..][..self.frame_template.len()]
+            .copy_from_slice(&self.frame_template);
         Status::Ok
     }
 }
@@ -303,7 +312,12 @@ impl Fixture {
     }
 
     fn with_constants(code: Vec<Instr>, constants: Vec<u8>) -> Self {
-        let image = image(code, constants.clone());
+        Self::of_image(image(code, constants))
+    }
+
+    /// The translation of a whole image, every POU of which must be translated.
+    fn of_image(image: ProgramImage) -> Self {
+        let constants = image.constants.clone();
         let layout = Layout::of(&image, 1);
         let code = Translation::new(&image, &layout, &PURE).unwrap();
         assert!(code.untranslated().is_empty(), "{:?}", code.untranslated());
@@ -327,6 +341,8 @@ impl Fixture {
             decoy: None,
             memory_calls: 0,
             panic: None,
+            frames: Vec::new(),
+            frame_template: Vec::new(),
         }
     }
 
