@@ -301,6 +301,9 @@ impl Translator<'_, '_> {
         self.builder
             .ins()
             .store(context_flags(), deeper, self.context, context::DEPTH);
+        // The analysis promotes no place in a loop that calls; a callee still sees memory as
+        // the interpreter leaves it, whatever the analysis decided (§5.3).
+        self.write_back();
         let budget = self.builder.use_var(self.budget);
         self.builder
             .ins()
@@ -326,12 +329,15 @@ impl Translator<'_, '_> {
         self.builder
             .ins()
             .store(context_flags(), depth, self.context, context::DEPTH);
+        self.reload_promoted();
         status
     }
 
     /// Calls a host callback: the budget stored before, the memory and the budget loaded
     /// after (§4.2, §7 rule 3). Returns the callback's result, if it has one.
     pub(crate) fn call_host(&mut self, import: Import, arguments: &[Value]) -> Value {
+        // A callback sees memory as the interpreter leaves it, and may change it (§5.3).
+        self.write_back();
         let budget = self.builder.use_var(self.budget);
         self.builder
             .ins()
@@ -345,6 +351,7 @@ impl Translator<'_, '_> {
                 .ins()
                 .load(types::I32, context_flags(), self.context, context::BUDGET);
         self.builder.def_var(self.budget, budget);
+        self.reload_promoted();
         result.unwrap_or_else(|| self.builder.ins().iconst(types::I32, 0))
     }
 

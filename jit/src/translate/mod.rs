@@ -8,6 +8,7 @@ mod blocks;
 mod call;
 pub(crate) mod host_calls;
 mod pointer;
+mod promote;
 mod real;
 pub(crate) mod scalar;
 
@@ -153,6 +154,17 @@ pub(crate) struct Translator<'a, 'b> {
     /// Back-edge blocks of the current instruction and where each goes, to emit once the
     /// current block is terminated.
     back_edges: Vec<(Block, Block)>,
+    /// The loops whose places are kept in variables (§5.3), in code order.
+    promoted_loops: Vec<promote::PromotedLoop>,
+    /// Per promoted loop: the block every entry from outside goes through.
+    preheaders: Vec<Block>,
+    /// The promoted loop being emitted.
+    active_loop: Option<usize>,
+    /// Its places: the operand, its size, and the variable that holds it.
+    promoted: Vec<(Operand, u32, Variable)>,
+    /// Exit blocks of the current instruction out of the active loop and where each goes,
+    /// to emit once the current block is terminated.
+    exits: Vec<(Block, Block)>,
 }
 
 impl<'a, 'b> Translator<'a, 'b> {
@@ -164,6 +176,11 @@ impl<'a, 'b> Translator<'a, 'b> {
         module: &'a mut dyn cranelift_module::Module,
     ) -> Self {
         let blocks = Blocks::new(&pou.code, &mut builder);
+        let promoted_loops = promote::promotable_loops(&pou.code, environment.layout);
+        let preheaders = promoted_loops
+            .iter()
+            .map(|_| builder.create_block())
+            .collect();
         let entry = builder.create_block();
         builder.append_block_params_for_function_params(entry);
         builder.switch_to_block(entry);
@@ -191,6 +208,11 @@ impl<'a, 'b> Translator<'a, 'b> {
             budget,
             pc: 0,
             back_edges: Vec::new(),
+            promoted_loops,
+            preheaders,
+            active_loop: None,
+            promoted: Vec::new(),
+            exits: Vec::new(),
         };
         translator.reload_memory();
         let budget_now =
@@ -204,26 +226,17 @@ impl<'a, 'b> Translator<'a, 'b> {
 
     /// Emits every instruction, then the end (running past the last instruction returns).
     fn body(&mut self) {
-        let first = self.blocks.at(0);
-        if let Some(first) = first {
-            self.builder.ins().jump(first, &[]);
-        }
-        let mut reachable = false;
-        for index in 0..self.code.len() {
-            if let Some(block) = self.blocks.at(index) {
-                if reachable {
-                    self.builder.ins().jump(block, &[]);
-                }
-                self.builder.switch_to_block(block);
-                reachable = true;
-            }
-            if !reachable {
+        // The entry block falls into instruction 0.
+        let mut reachable = true;
+        let mut index = 0;
+        while index < self.code.len() {
+            if let Some(position) = self.loop_starting_at(index) {
+                reachable = self.promoted_loop(position, reachable);
+                index = self.promoted_loops[position].end as usize + 1;
                 continue;
             }
-            self.pc = index as u32;
-            let instr = &self.code[index];
-            reachable = self.instruction(instr);
-            self.emit_back_edges();
+            reachable = self.emit_at(index, reachable);
+            index += 1;
         }
         if let Some(end) = self.blocks.at(self.code.len()) {
             if reachable {
@@ -232,6 +245,29 @@ impl<'a, 'b> Translator<'a, 'b> {
             self.builder.switch_to_block(end);
             self.return_status(0);
         }
+    }
+
+    /// Emits instruction `index`, starting its block if it starts one; `reachable` says
+    /// whether control falls into it from the one before. Returns whether control falls
+    /// through to the next.
+    pub(crate) fn emit_at(&mut self, index: usize, reachable: bool) -> bool {
+        self.pc = index as u32;
+        let mut reachable = reachable;
+        if let Some(block) = self.blocks.at(index) {
+            if reachable {
+                self.builder.ins().jump(block, &[]);
+            }
+            self.builder.switch_to_block(block);
+            reachable = true;
+        }
+        if !reachable {
+            return false;
+        }
+        let instr = &self.code[index];
+        let falls_through = self.instruction(instr);
+        self.emit_back_edges();
+        self.emit_exits();
+        falls_through
     }
 
     /// Emits one instruction; false when control does not fall through to the next.
@@ -254,6 +290,7 @@ impl<'a, 'b> Translator<'a, 'b> {
                 false
             }
             Instr::Return => {
+                self.write_back();
                 self.return_status(0);
                 false
             }
@@ -276,8 +313,12 @@ impl<'a, 'b> Translator<'a, 'b> {
                 true
             }
             Instr::Copy { size, dst, src } => {
+                let reload = self.promoted_copy(*dst, *src, *size);
                 let (to, from) = (self.absolute(*dst), self.absolute(*src));
                 self.copy_bytes(to, from, *size);
+                if reload {
+                    self.reload_promoted();
+                }
                 true
             }
             Instr::Unary { op, ty, dst, src } => self.unary(*op, *ty, *dst, *src),
@@ -393,10 +434,12 @@ impl<'a, 'b> Translator<'a, 'b> {
     }
 
     /// The block after the current instruction (every branch ends a block, `blocks.rs`).
-    fn next_block(&self) -> Block {
-        self.blocks
+    fn next_block(&mut self) -> Block {
+        let next = self
+            .blocks
             .at(self.pc as usize + 1)
-            .unwrap_or(self.blocks.end())
+            .unwrap_or(self.blocks.end());
+        self.promoted_destination(self.pc + 1, next)
     }
 
     /// The block a jump to `target` goes to: the target's own block for a forward jump, a
@@ -404,6 +447,7 @@ impl<'a, 'b> Translator<'a, 'b> {
     /// block is terminated, by [`Self::emit_back_edges`]).
     fn branch_target(&mut self, target: u32) -> Block {
         let destination = self.blocks.at(target as usize).unwrap_or(self.blocks.end());
+        let destination = self.promoted_destination(target, destination);
         if target > self.pc {
             return destination;
         }
@@ -547,6 +591,9 @@ impl<'a, 'b> Translator<'a, 'b> {
         {
             return folded;
         }
+        if let Some(promoted) = self.promoted_load(ty, operand) {
+            return promoted;
+        }
         let (address, displacement) = self.operand_address(operand);
         self.builder
             .ins()
@@ -555,6 +602,9 @@ impl<'a, 'b> Translator<'a, 'b> {
 
     /// Stores a value into a direct operand.
     pub(crate) fn store(&mut self, value: Value, operand: Operand) {
+        if self.promoted_store(value, operand) {
+            return;
+        }
         let (address, displacement) = self.operand_address(operand);
         self.builder
             .ins()

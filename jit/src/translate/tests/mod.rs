@@ -9,6 +9,7 @@ mod control;
 mod integer;
 mod module;
 mod pointer;
+mod promote;
 mod real;
 
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -54,6 +55,10 @@ struct TestHost {
     /// What `frame` writes at a new frame after zeroing `FRAME_SIZE` bytes (the initial
     /// runs of the POU the test calls).
     frame_template: Vec<u8>,
+    /// The instance's first 16 bytes at each tick, to see what generated code left in memory.
+    tick_snapshots: Vec<Vec<u8>>,
+    /// A byte of the instance each tick writes, as a preempting task may.
+    tick_poke: Option<(u32, u8)>,
 }
 
 impl Host for TestHost {
@@ -66,6 +71,12 @@ impl Host for TestHost {
     }
     fn tick(&mut self, site: Site, counters: &mut Counters) -> Status {
         self.ticks.push((site, *counters));
+        let instance = INSTANCE_AT as usize;
+        self.tick_snapshots
+            .push(self.memory[instance..instance + 16].to_vec());
+        if let Some((offset, byte)) = self.tick_poke {
+            self.memory[instance + offset as usize] = byte;
+        }
         if counters.budget == 0 {
             counters.budget = 4096;
         }
@@ -343,6 +354,8 @@ impl Fixture {
             panic: None,
             frames: Vec::new(),
             frame_template: Vec::new(),
+            tick_snapshots: Vec::new(),
+            tick_poke: None,
         }
     }
 

@@ -1,0 +1,204 @@
+//! Loop promotion (`docs/native-engine.md` §5.3): which loops and places the analysis
+//! promotes, and that a promoted place holds the interpreter's value in memory after the
+//! loop, at a tick (and is read again after it) and at a fault.
+
+#![allow(clippy::unwrap_used, clippy::expect_used)] // A panic is a failed test.
+
+use super::*;
+use crate::translate::promote::{Guard, promotable_loops};
+
+const C: fn(u32) -> Operand = Operand::Const;
+const F: fn(u32) -> Operand = Operand::Frame;
+const G: fn(u32) -> Operand = Operand::Global;
+
+/// Constants: 1 at 0, 1000 at 4.
+fn constants() -> Vec<u8> {
+    let mut constants = vec![0; 16];
+    constants[0] = 1;
+    constants[4..8].copy_from_slice(&1000u32.to_le_bytes());
+    constants
+}
+
+fn binary(op: BinaryOp, dst: Operand, a: Operand, b: Operand) -> Instr {
+    Instr::Binary {
+        op,
+        ty: Dint,
+        dst,
+        a,
+        b,
+    }
+}
+
+/// `FOR i := 1 TO 1000 DO sum := sum + i; END_FOR` with `i` at I(0), `sum` at I(4) and the
+/// loop's condition at F(0).
+fn for_loop() -> Vec<Instr> {
+    vec![
+        Instr::Move {
+            ty: Dint,
+            dst: I(0),
+            src: C(0),
+        },
+        Instr::Compare {
+            op: CompareOp::Gt,
+            ty: Dint,
+            dst: F(0),
+            a: I(0),
+            b: C(4),
+        },
+        Instr::JumpIf {
+            cond: F(0),
+            target: 6,
+        },
+        binary(BinaryOp::Add, I(4), I(4), I(0)),
+        binary(BinaryOp::Add, I(0), I(0), C(0)),
+        Instr::Jump { target: 1 },
+        Instr::Return,
+    ]
+}
+
+/// [`for_loop`] with `extra` inserted at the start of its body.
+fn for_loop_with(extra: Instr) -> Vec<Instr> {
+    let mut code = for_loop();
+    code.insert(3, extra);
+    code[2] = Instr::JumpIf {
+        cond: F(0),
+        target: 7,
+    };
+    code[6] = Instr::Jump { target: 1 };
+    code
+}
+
+fn layout() -> Layout {
+    Layout::of(&image(Vec::new(), constants()), 1)
+}
+
+#[test]
+fn the_analysis_promotes_places_only_their_own_instructions_touch() {
+    let loops = promotable_loops(&for_loop(), &layout());
+    assert_eq!(loops.len(), 1);
+    assert_eq!((loops[0].start, loops[0].end), (1, 5));
+    assert_eq!(loops[0].places, vec![(F(0), 1), (I(4), 4), (I(0), 4)]);
+    // A store through a pointer may reach any place; a call may read any.
+    for intruder in [
+        Instr::Store {
+            size: 4,
+            ptr: I(8),
+            src: I(12),
+        },
+        Instr::CallFunction {
+            pou: 0,
+            instance: None,
+            inputs: Vec::new(),
+            outputs: Vec::new(),
+        },
+    ] {
+        let code = for_loop_with(intruder);
+        assert!(promotable_loops(&code, &layout()).is_empty(), "{code:?}");
+    }
+    // A copy over `sum`'s bytes keeps it in memory.
+    let code = for_loop_with(Instr::Copy {
+        size: 2,
+        dst: I(6),
+        src: I(40),
+    });
+    let loops = promotable_loops(&code, &layout());
+    assert_eq!(loops[0].places, vec![(F(0), 1), (I(0), 4)]);
+    // Places of different bases are disjoint when the guard says so on entry: it holds the
+    // ranges touched per base.
+    let code = for_loop_with(binary(BinaryOp::Add, G(300), G(300), I(0)));
+    let loops = promotable_loops(&code, &layout());
+    assert_eq!(
+        loops[0].places,
+        vec![(F(0), 1), (G(300), 4), (I(4), 4), (I(0), 4)]
+    );
+    let constants_at = layout().constants;
+    let guard = Guard {
+        instance: Some((0, 8)),
+        frame: Some((0, 1)),
+        fixed: Some((300, constants_at + 8)),
+    };
+    assert_eq!(loops[0].guard, Some(guard));
+    // One base, no guard.
+    let code = vec![
+        binary(BinaryOp::Add, I(0), I(0), I(4)),
+        Instr::Jump { target: 0 },
+    ];
+    assert_eq!(promotable_loops(&code, &layout())[0].guard, None);
+}
+
+#[test]
+fn a_loop_whose_places_overlap_across_bases_runs_on_memory() {
+    // The program's instance lies at data offset 256: G(260) is `sum`, G(264) is I(8). The
+    // guard sees the overlap and runs the unpromoted copy, which reads `sum` through G(260)
+    // as the interpreter does.
+    let code = for_loop_with(Instr::Move {
+        ty: Dint,
+        dst: G(INSTANCE_AT as u32 + 8),
+        src: G(INSTANCE_AT as u32 + 4),
+    });
+    let fixture = Fixture::with_constants(code, constants());
+    let mut host = fixture.host();
+    assert_eq!(fixture.run(&mut host), Status::Ok);
+    assert_eq!(host.get(0, 4), 1001);
+    assert_eq!(host.get(4, 4), 500_500);
+    // The Move runs before the addition: the sum up to 999.
+    assert_eq!(host.get(8, 4), 499_500);
+}
+
+#[test]
+fn promoted_places_are_in_memory_after_the_loop_and_at_a_tick() {
+    let fixture = Fixture::with_constants(for_loop(), constants());
+    let due = AtomicBool::new(false);
+    // The 100th backward jump spends the budget: a tick, after `i` became 101.
+    let mut counters = Counters {
+        depth: 0,
+        budget: 100,
+    };
+    let mut host = fixture.host();
+    assert_eq!(fixture.run_with(&mut host, &due, &mut counters), Status::Ok);
+    assert_eq!(host.get(0, 4), 1001);
+    assert_eq!(host.get(4, 4), 500_500);
+    assert_eq!(host.tick_snapshots.len(), 1);
+    let at_tick = &host.tick_snapshots[0];
+    assert_eq!(u32::from_le_bytes(at_tick[0..4].try_into().unwrap()), 101);
+    assert_eq!(u32::from_le_bytes(at_tick[4..8].try_into().unwrap()), 5050);
+    // What the tick wrote is read again after it: `sum` set to 0 then counts 101 ..= 1000.
+    let mut counters = Counters {
+        depth: 0,
+        budget: 100,
+    };
+    let mut host = fixture.host();
+    host.tick_poke = Some((4, 0));
+    // The poke clears only the lowest byte of 5050 (0x13BA): 0x1300 remains.
+    assert_eq!(fixture.run_with(&mut host, &due, &mut counters), Status::Ok);
+    assert_eq!(host.get(4, 4), 0x1300 + (101..=1000).sum::<u32>() as u64);
+}
+
+#[test]
+fn promoted_places_are_in_memory_at_a_fault() {
+    // LOOP i := i − 1; q := 1000 / i; END_LOOP: faults when `i` reaches 0.
+    let code = vec![
+        binary(BinaryOp::Sub, I(0), I(0), C(0)),
+        binary(BinaryOp::Div, I(4), C(4), I(0)),
+        Instr::Jump { target: 0 },
+    ];
+    let loops = promotable_loops(&code, &layout());
+    // `q` is only written: it stays in memory.
+    assert_eq!(loops[0].places, vec![(I(0), 4)]);
+    let fixture = Fixture::with_constants(code, constants());
+    let mut host = fixture.host();
+    host.put(0, 5, 4);
+    assert_eq!(fixture.run(&mut host), Status::Faulted);
+    assert_eq!(
+        host.faults,
+        vec![(
+            Site {
+                pou: 0,
+                instruction: 1
+            },
+            NativeFault::DivisionByZero
+        )]
+    );
+    assert_eq!(host.get(0, 4), 0);
+    assert_eq!(host.get(4, 4), 1000);
+}
