@@ -5,9 +5,11 @@ use std::panic::AssertUnwindSafe;
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::sync::{Arc, Mutex};
 
+use cranelift_codegen::control::ControlPlane;
+use cranelift_codegen::isa::TargetIsa;
 use cranelift_frontend::FunctionBuilderContext;
 use cranelift_jit::{JITBuilder, JITModule};
-use cranelift_module::{Linkage, Module};
+use cranelift_module::{FuncId, Linkage, Module, ModuleReloc};
 use program_image::ProgramImage;
 
 use crate::isa::{NativeUnsupported, host_isa};
@@ -95,9 +97,12 @@ impl Translation {
         let folded_constants = crate::translate::scalar::constant_pool_is_read_only(image)
             .then_some(image.constants.as_slice());
         let mut function_context = FunctionBuilderContext::new();
-        // Translated until no POU is refused anew: a refused callee has no function, so its
-        // callers are translated again with their calls of it handed to the interpreter.
-        let translated = loop {
+        let mut codegen = module.make_context();
+        // Translated and compiled until no POU is refused anew: a refused callee has no
+        // function, so its callers are translated again with their calls of it handed to the
+        // interpreter; only then is anything defined, so no machine code calls a function
+        // that is not defined (§8.2).
+        let compiled = loop {
             let environment = Environment {
                 pous: &image.pous,
                 layout,
@@ -106,91 +111,85 @@ impl Translation {
                 signature: signature.clone(),
                 functions: &functions,
             };
-            let mut translated = Vec::with_capacity(image.pous.len());
+            let mut compiled = Vec::with_capacity(image.pous.len());
             let mut refused_now = Vec::new();
             for (index, pou) in image.pous.iter().enumerate() {
-                if functions[index].is_none() {
-                    translated.push(None);
+                let Some(id) = functions[index] else {
+                    compiled.push(None);
                     continue;
-                }
+                };
                 let index = index as u32;
-                // A translator bug must not take the loading thread down: the POU falls back
-                // to the interpreter with the reason (§8.2).
+                let refused = |reason: String| Untranslated {
+                    pou: index,
+                    name: pou.name.clone(),
+                    instruction: None,
+                    reason,
+                };
+                // A translator or code generator bug must not take the loading thread down:
+                // the POU falls back to the interpreter with the reason (§8.2).
                 let result = std::panic::catch_unwind(AssertUnwindSafe(|| {
-                    translate_pou(&environment, index, &mut function_context, &mut module)
+                    let function =
+                        translate_pou(&environment, index, &mut function_context, &mut module)?;
+                    compile(&mut codegen, function, id, module.isa())
+                        .map_err(|reason| refused(reason.0))
                 }));
+                module.clear_context(&mut codegen);
                 match result {
-                    Ok(Ok(function)) => translated.push(Some(function)),
+                    Ok(Ok(function)) => compiled.push(Some(function)),
                     Ok(Err(refusal)) => {
                         refused_now.push(refusal);
-                        translated.push(None);
+                        compiled.push(None);
                     }
                     Err(_) => {
-                        refused_now.push(Untranslated {
-                            pou: index,
-                            name: pou.name.clone(),
-                            instruction: None,
-                            reason: "the translator failed on it (an internal error)".into(),
-                        });
-                        translated.push(None);
+                        refused_now.push(refused(
+                            "the translator or the code generator failed on it (an internal \
+                             error)"
+                                .into(),
+                        ));
+                        compiled.push(None);
                         function_context = FunctionBuilderContext::new();
+                        codegen = module.make_context();
                     }
                 }
             }
             if refused_now.is_empty() {
-                break translated;
+                break compiled;
             }
             for refusal in refused_now {
                 functions[refusal.pou as usize] = None;
                 untranslated.push(refusal);
             }
         };
-        let mut codegen = module.make_context();
         let mut defined = Vec::with_capacity(image.pous.len());
         #[cfg(test)]
         let mut listings = Vec::new();
-        for (index, (pou, function)) in image.pous.iter().zip(translated).enumerate() {
-            let index = index as u32;
-            let refused = |reason: String| Untranslated {
-                pou: index,
-                name: pou.name.clone(),
-                instruction: None,
-                reason,
-            };
-            let (Some(function), Some(id)) = (function, functions[index as usize]) else {
+        for (index, (pou, function)) in image.pous.iter().zip(compiled).enumerate() {
+            let (Some(function), Some(id)) = (function, functions[index]) else {
+                #[cfg(test)]
+                listings.push(String::new());
                 defined.push(None);
                 continue;
             };
-            codegen.func = function;
-            // The tests read the machine code's listing (§7 rule 5: no reachable trap).
-            codegen.set_disasm(cfg!(test));
-            // A Cranelift panic must not take the loading thread down either (§8.2). A
-            // function that fails here after a caller was made to call it leaves that call
-            // unresolved: finalising asks the symbol lookup for its name, which is foreign,
-            // and the whole image is refused (safe, and a code generator bug).
-            let result = std::panic::catch_unwind(AssertUnwindSafe(|| {
-                module.define_function(id, &mut codegen).map_err(Box::new)
-            }));
             #[cfg(test)]
-            listings.push(
-                codegen
-                    .compiled_code()
-                    .and_then(|compiled| compiled.vcode.clone())
-                    .unwrap_or_default(),
-            );
-            module.clear_context(&mut codegen);
-            match result {
-                Ok(Ok(())) => defined.push(Some(id)),
-                Ok(Err(error)) => {
-                    untranslated.push(refused(format!("{error:?}")));
+            listings.push(function.listing);
+            match module.define_function_bytes(
+                id,
+                function.alignment,
+                &function.bytes,
+                &function.relocations,
+            ) {
+                Ok(()) => defined.push(Some(id)),
+                Err(error) => {
+                    // Only a module error (no memory for the code) can fail here; a caller of
+                    // this POU then names a function that is not defined, finalising asks
+                    // the symbol lookup for it, and the whole image is refused.
+                    untranslated.push(Untranslated {
+                        pou: index as u32,
+                        name: pou.name.clone(),
+                        instruction: None,
+                        reason: error.to_string(),
+                    });
                     defined.push(None);
-                }
-                Err(_) => {
-                    untranslated.push(refused(
-                        "the code generator failed on it (an internal error)".into(),
-                    ));
-                    defined.push(None);
-                    codegen = module.make_context();
                 }
             }
         }
@@ -372,4 +371,53 @@ impl Code {
     ) -> Status {
         self.machine.run(pou, host, &entry, counters)
     }
+}
+
+/// One POU's compiled machine code, not yet defined in the module.
+struct Compiled {
+    /// The machine code.
+    bytes: Vec<u8>,
+    /// Its alignment in bytes.
+    alignment: u64,
+    /// Its relocations: the calls of the imports and of other POUs.
+    relocations: Vec<ModuleReloc>,
+    /// The machine code as text, for the tests.
+    #[cfg(test)]
+    listing: String,
+}
+
+/// Why the code generator refused a POU function.
+#[derive(Debug)]
+struct NotCompiled(String);
+
+/// Compiles POU function `function` (to be defined as `id`) for `isa`, or says why it cannot.
+fn compile(
+    codegen: &mut cranelift_codegen::Context,
+    function: cranelift_codegen::ir::Function,
+    id: FuncId,
+    isa: &dyn TargetIsa,
+) -> Result<Compiled, NotCompiled> {
+    codegen.func = function;
+    // The tests read the machine code's listing (§7 rule 5: no reachable trap).
+    codegen.set_disasm(cfg!(test));
+    codegen
+        .compile(isa, &mut ControlPlane::default())
+        .map_err(|error| NotCompiled(format!("{:?}", error.inner)))?;
+    // Read again through a shared borrow, beside the function the relocations name.
+    let compiled = codegen
+        .compiled_code()
+        .ok_or_else(|| NotCompiled("the code generator gave no code (an internal error)".into()))?;
+    let relocations = compiled
+        .buffer
+        .relocs()
+        .iter()
+        .map(|relocation| ModuleReloc::from_mach_reloc(relocation, &codegen.func, id))
+        .collect();
+    Ok(Compiled {
+        bytes: compiled.code_buffer().to_vec(),
+        alignment: u64::from(compiled.buffer.alignment),
+        relocations,
+        #[cfg(test)]
+        listing: compiled.vcode.clone().unwrap_or_default(),
+    })
 }

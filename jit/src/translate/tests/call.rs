@@ -420,3 +420,18 @@ fn open_element_checks_each_dimension() {
         }
     }
 }
+
+#[test]
+fn a_call_of_a_refused_pou_goes_to_the_interpreter() {
+    let mut refused = adder(16);
+    refused.name = crate::translate::REFUSED_IN_TESTS.into();
+    let fixture = fixture(vec![call_adder()], vec![refused], 512);
+    assert!(fixture.code.has(0));
+    assert!(!fixture.code.has(1));
+    let mut host = fixture.host();
+    assert_eq!(fixture.run(&mut host), Status::Ok);
+    assert_eq!(
+        host.ops,
+        vec![(site(0, 0), INSTANCE_AT, fixture.frame_at())]
+    );
+}
