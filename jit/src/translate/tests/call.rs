@@ -435,3 +435,70 @@ fn a_call_of_a_refused_pou_goes_to_the_interpreter() {
         vec![(site(0, 0), INSTANCE_AT, fixture.frame_at())]
     );
 }
+
+#[test]
+fn nested_calls_count_their_depth_and_copy_large_transfers() {
+    // `Outer(s)` passes its 100-byte `s` on to `Inner`, which returns it with its first
+    // byte incremented; the transfers over 64 bytes are made by the host's `copy`. With
+    // `due` set, each call's safe point shows the depth the interpreter counts there.
+    let inner = pou(
+        "Inner",
+        PouKind::Function,
+        104,
+        0,
+        vec![Instr::Binary {
+            op: BinaryOp::Add,
+            ty: Usint,
+            dst: F(0),
+            a: F(0),
+            b: Operand::Const(0),
+        }],
+    );
+    let outer = pou(
+        "Outer",
+        PouKind::Function,
+        104,
+        0,
+        vec![
+            Instr::Move {
+                ty: Dint,
+                dst: F(100),
+                src: F(0),
+            },
+            Instr::CallFunction {
+                pou: 2,
+                instance: None,
+                inputs: vec![transfer(F(0), 0, 100)],
+                outputs: vec![transfer(F(0), 0, 100)],
+            },
+        ],
+    );
+    let main = vec![Instr::CallFunction {
+        pou: 1,
+        instance: None,
+        inputs: vec![transfer(I(0), 0, 100)],
+        outputs: vec![transfer(I(100), 0, 100)],
+    }];
+    let mut image = image(main, vec![1; 16]);
+    image.layout.stack_size = 1024;
+    image.pous.extend([outer, inner]);
+    let fixture = Fixture::of_image(image);
+    let mut host = fixture.host();
+    for offset in 0..100 {
+        host.put(offset, u64::from(offset), 1);
+    }
+    assert_eq!(run_entry(&fixture, &mut host, 0, true), Status::Ok);
+    assert_eq!(host.get(100, 1), 1);
+    for offset in 1..100 {
+        assert_eq!(host.get(100 + offset, 1), u64::from(offset));
+    }
+    let depths: Vec<(Site, u32)> = host
+        .ticks
+        .iter()
+        .map(|(site, counters)| (*site, counters.depth))
+        .collect();
+    assert_eq!(depths, vec![(site(0, 0), 0), (site(1, 1), 1)]);
+    // Both frames are prepared by the host, being over 64 bytes.
+    let outer_frame = fixture.frame_at() + u64::from(FRAME_SIZE);
+    assert_eq!(host.frames, vec![(1, outer_frame), (2, outer_frame + 104)]);
+}
