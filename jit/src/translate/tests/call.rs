@@ -344,6 +344,9 @@ fn call_virtual_picks_the_first_method_of_the_class() {
             "class {class}"
         );
     }
+    for listing in &fixture.code.listings {
+        assert!(!listing.contains("trap"), "{listing}");
+    }
     // An unknown class is a bad pointer, a null interface a null pointer.
     let mut host = fixture.host();
     host.put(0, pointer, 8);
@@ -498,6 +501,10 @@ fn nested_calls_count_their_depth_and_copy_large_transfers() {
         .map(|(site, counters)| (*site, counters.depth))
         .collect();
     assert_eq!(depths, vec![(site(0, 0), 0), (site(1, 1), 1)]);
+    // Calls, frames and transfers emit no trap (§7 rule 5).
+    for listing in &fixture.code.listings {
+        assert!(!listing.contains("trap"), "{listing}");
+    }
     // Both frames are prepared by the host, being over 64 bytes.
     let outer_frame = fixture.frame_at() + u64::from(FRAME_SIZE);
     assert_eq!(host.frames, vec![(1, outer_frame), (2, outer_frame + 104)]);

@@ -143,6 +143,8 @@ fn a_loop_whose_places_overlap_across_bases_runs_on_memory() {
     assert_eq!(host.get(4, 4), 500_500);
     // The Move runs before the addition: the sum up to 999.
     assert_eq!(host.get(8, 4), 499_500);
+    // The guard, both copies of the loop and the write-backs emit no trap (§7 rule 5).
+    assert!(!fixture.code.listings[0].contains("trap"));
 }
 
 #[test]
