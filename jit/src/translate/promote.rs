@@ -21,6 +21,13 @@ use crate::layout::Layout;
 /// The largest copy made by inline loads and stores (a larger one is a callback, a call).
 const INLINE_COPY_BYTES: u32 = 64;
 
+#[cfg(test)]
+thread_local! {
+    /// Set by the tests to translate on the current thread without promotion, and compare.
+    pub(crate) static PROMOTION_OFF_IN_TESTS: std::cell::Cell<bool> =
+        const { std::cell::Cell::new(false) };
+}
+
 /// A loop whose places are promoted: instructions `start ..= end`, the backward jump at `end`.
 #[derive(Clone, Debug)]
 pub(crate) struct PromotedLoop {
@@ -177,6 +184,10 @@ fn jump_target(instr: &Instr) -> Option<u32> {
 /// The loops of `code` whose places may be promoted, disjoint, in code order. Inner loops are
 /// preferred: they run most often.
 pub(crate) fn promotable_loops(code: &[Instr], layout: &Layout) -> Vec<PromotedLoop> {
+    #[cfg(test)]
+    if PROMOTION_OFF_IN_TESTS.with(std::cell::Cell::get) {
+        return Vec::new();
+    }
     let mut regions: Vec<(u32, u32)> = code
         .iter()
         .enumerate()

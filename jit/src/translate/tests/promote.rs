@@ -204,3 +204,131 @@ fn promoted_places_are_in_memory_at_a_fault() {
     assert_eq!(host.get(0, 4), 0);
     assert_eq!(host.get(4, 4), 1000);
 }
+
+/// A small xorshift generator, so the random programs are the same in every run.
+struct Random(u64);
+
+impl Random {
+    fn next(&mut self) -> u64 {
+        self.0 ^= self.0 << 13;
+        self.0 ^= self.0 >> 7;
+        self.0 ^= self.0 << 17;
+        self.0
+    }
+    fn below(&mut self, bound: usize) -> usize {
+        (self.next() % bound as u64) as usize
+    }
+}
+
+/// A random counted loop over places that overlap in every way the analysis must see:
+/// within a base (I(2) over I(0) and I(4), a byte of I(5)), across bases (G(260) is I(4) of
+/// the program's instance at 256), and through copies; with divisions that may fault.
+fn random_loop(random: &mut Random) -> Vec<Instr> {
+    let places = [
+        I(0),
+        I(2),
+        I(4),
+        I(8),
+        F(4),
+        F(12),
+        G(INSTANCE_AT as u32 + 4),
+        G(100),
+        G(104),
+    ];
+    let counter = F(20);
+    let mut body = Vec::new();
+    for _ in 0..1 + random.below(6) {
+        let mut place = || places[random.below(places.len())];
+        let (dst, a, b) = (place(), place(), place());
+        let instr = match random.below(6) {
+            0 => Instr::Move {
+                ty: Dint,
+                dst,
+                src: a,
+            },
+            1 => Instr::Copy {
+                size: [2, 4, 6][random.below(3)],
+                dst,
+                src: a,
+            },
+            2 => Instr::Move {
+                ty: Usint,
+                dst: I(5),
+                src: a,
+            },
+            3 => binary(BinaryOp::Div, dst, a, b),
+            4 => binary(BinaryOp::Add, dst, a, counter),
+            _ => binary(
+                [BinaryOp::Sub, BinaryOp::Xor, BinaryOp::Mul][random.below(3)],
+                dst,
+                a,
+                b,
+            ),
+        };
+        body.push(instr);
+    }
+    let end = 3 + body.len() as u32 + 2;
+    let mut code = vec![
+        Instr::Move {
+            ty: Dint,
+            dst: counter,
+            src: C(0),
+        },
+        Instr::Compare {
+            op: CompareOp::Gt,
+            ty: Dint,
+            dst: F(0),
+            a: counter,
+            b: C(8),
+        },
+        Instr::JumpIf {
+            cond: F(0),
+            target: end,
+        },
+    ];
+    code.extend(body);
+    code.push(binary(BinaryOp::Add, counter, counter, C(0)));
+    code.push(Instr::Jump { target: 1 });
+    code.push(Instr::Return);
+    code
+}
+
+#[test]
+fn random_loops_run_alike_with_and_without_promotion() {
+    let mut random = Random(0x2545_F491_4F6C_DD1D);
+    let mut constants = constants();
+    constants[8] = 40; // The loops count 1 ..= 40.
+    let mut promoted_loops = 0;
+    for program in 0..300 {
+        let code = random_loop(&mut random);
+        let layout = Layout::of(&image(Vec::new(), constants.clone()), 1);
+        promoted_loops += usize::from(!promotable_loops(&code, &layout).is_empty());
+        let promoted = Fixture::with_constants(code.clone(), constants.clone());
+        crate::translate::promote::PROMOTION_OFF_IN_TESTS.with(|off| off.set(true));
+        let plain = Fixture::with_constants(code.clone(), constants.clone());
+        crate::translate::promote::PROMOTION_OFF_IN_TESTS.with(|off| off.set(false));
+        let mut memory = promoted.host().memory;
+        for byte in memory.iter_mut().take(layout.constants as usize) {
+            *byte = random.next() as u8;
+        }
+        for byte in memory.iter_mut().skip(layout.stacks as usize) {
+            *byte = random.next() as u8;
+        }
+        let mut results = Vec::new();
+        for fixture in [&promoted, &plain] {
+            let mut host = fixture.host();
+            host.memory.clone_from(&memory);
+            let due = AtomicBool::new(false);
+            // A tick every 7 backward jumps, which looks at memory.
+            let mut counters = Counters {
+                depth: 0,
+                budget: 7,
+            };
+            let status = fixture.run_with(&mut host, &due, &mut counters);
+            results.push((status, host.faults, host.tick_snapshots, host.memory));
+        }
+        assert!(results[0] == results[1], "program {program}: {code:?}");
+    }
+    // The programs exercise promotion, not only its refusal.
+    assert!(promoted_loops > 100, "{promoted_loops} promoted");
+}
