@@ -166,7 +166,8 @@ fn accesses(instr: &Instr) -> Option<Vec<(Operand, u32, Access)>> {
         ],
         Instr::Offset { dst, base, .. } => vec![(*base, 8, Read), (*dst, 8, Write)],
         Instr::Now { dst } => vec![(*dst, 8, Write)],
-        Instr::Jump { .. } => Vec::new(),
+        // A return writes the places back first.
+        Instr::Jump { .. } | Instr::Return => Vec::new(),
         Instr::JumpIf { cond, .. } | Instr::JumpIfNot { cond, .. } => vec![(*cond, 1, Read)],
         _ => return None,
     })

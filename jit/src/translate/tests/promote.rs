@@ -332,3 +332,32 @@ fn random_loops_run_alike_with_and_without_promotion() {
     // The programs exercise promotion, not only its refusal.
     assert!(promoted_loops > 100, "{promoted_loops} promoted");
 }
+
+#[test]
+fn a_return_inside_a_promoted_loop_writes_its_places_back() {
+    // LOOP i := i + 1; IF i > limit THEN RETURN; END_IF; END_LOOP
+    let code = vec![
+        binary(BinaryOp::Add, I(0), I(0), C(0)),
+        Instr::Compare {
+            op: CompareOp::Gt,
+            ty: Dint,
+            dst: F(0),
+            a: I(0),
+            b: I(4),
+        },
+        Instr::JumpIfNot {
+            cond: F(0),
+            target: 4,
+        },
+        Instr::Return,
+        Instr::Jump { target: 0 },
+    ];
+    let loops = promotable_loops(&code, &layout());
+    assert_eq!(loops[0].places, vec![(I(0), 4), (F(0), 1)]);
+    let fixture = Fixture::with_constants(code, constants());
+    let mut host = fixture.host();
+    host.put(4, 10, 4);
+    assert_eq!(fixture.run(&mut host), Status::Ok);
+    assert_eq!(host.get(0, 4), 11);
+    assert_eq!(host.memory[fixture.frame_at() as usize], 1);
+}
