@@ -35,21 +35,18 @@ pub struct Context {
 /// Offset of [`Context::memory`].
 pub(crate) const MEMORY: i32 = offset_of!(Context, memory) as i32;
 /// Offset of [`Context::memory_len`].
-#[allow(dead_code)] // Read by the inline calls of wave 2 (§4.4 step 4).
 pub(crate) const MEMORY_LEN: i32 = offset_of!(Context, memory_len) as i32;
 /// Offset of [`Context::spans`].
 pub(crate) const SPANS: i32 = offset_of!(Context, spans) as i32;
 /// Offset of [`Context::stack_end`].
 pub(crate) const STACK_END: i32 = offset_of!(Context, stack_end) as i32;
 /// Offset of [`Context::native_stack_limit`].
-#[allow(dead_code)] // Read by the inline calls of wave 2 (§4.4 step 3).
 pub(crate) const NATIVE_STACK_LIMIT: i32 = offset_of!(Context, native_stack_limit) as i32;
 /// Offset of [`Context::due`].
 pub(crate) const DUE: i32 = offset_of!(Context, due) as i32;
 /// Offset of [`Context::now_ns`].
 pub(crate) const NOW_NS: i32 = offset_of!(Context, now_ns) as i32;
 /// Offset of [`Context::depth`].
-#[allow(dead_code)] // Counted by the inline calls of wave 2 (§4.4 step 7).
 pub(crate) const DEPTH: i32 = offset_of!(Context, depth) as i32;
 /// Offset of [`Context::budget`].
 pub(crate) const BUDGET: i32 = offset_of!(Context, budget) as i32;

@@ -138,6 +138,8 @@ pub(crate) mod fault_kind {
     pub const NULL_POINTER: u32 = 3;
     /// [`super::NativeFault::BadPointer`].
     pub const BAD_POINTER: u32 = 4;
+    /// [`super::NativeFault::StackOverflow`].
+    pub const STACK_OVERFLOW: u32 = 5;
     /// [`super::NativeFault::Memory`].
     pub const MEMORY: u32 = 6;
 }

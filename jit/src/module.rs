@@ -5,9 +5,11 @@ use std::panic::AssertUnwindSafe;
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::sync::{Arc, Mutex};
 
+use cranelift_codegen::control::ControlPlane;
+use cranelift_codegen::isa::TargetIsa;
 use cranelift_frontend::FunctionBuilderContext;
 use cranelift_jit::{JITBuilder, JITModule};
-use cranelift_module::{Linkage, Module};
+use cranelift_module::{FuncId, Linkage, Module, ModuleReloc};
 use program_image::ProgramImage;
 
 use crate::isa::{NativeUnsupported, host_isa};
@@ -71,88 +73,123 @@ impl Translation {
                 return Err(NativeUnsupported::Module(error));
             }
         };
-        let environment = Environment {
-            pous: &image.pous,
-            layout,
-            imports: &imports,
-            folded_constants: crate::translate::scalar::constant_pool_is_read_only(image)
-                .then_some(image.constants.as_slice()),
-            signature: pou_signature(module.make_signature()),
-        };
+        let signature = pou_signature(module.make_signature());
+        // Every POU's function is declared before any is translated, so that a call can name
+        // its callee's function (§4.4); a POU whose function cannot be declared runs in the
+        // interpreter, and its callers hand their calls of it to the interpreter.
+        let mut untranslated = Vec::new();
+        let mut functions = Vec::with_capacity(image.pous.len());
+        for (index, pou) in image.pous.iter().enumerate() {
+            match module.declare_function(&format!("rivet_pou_{index}"), Linkage::Local, &signature)
+            {
+                Ok(id) => functions.push(Some(id)),
+                Err(error) => {
+                    untranslated.push(Untranslated {
+                        pou: index as u32,
+                        name: pou.name.clone(),
+                        instruction: None,
+                        reason: error.to_string(),
+                    });
+                    functions.push(None);
+                }
+            }
+        }
+        let folded_constants = crate::translate::scalar::constant_pool_is_read_only(image)
+            .then_some(image.constants.as_slice());
         let mut function_context = FunctionBuilderContext::new();
         let mut codegen = module.make_context();
+        // Translated and compiled until no POU is refused anew: a refused callee has no
+        // function, so its callers are translated again with their calls of it handed to the
+        // interpreter; only then is anything defined, so no machine code calls a function
+        // that is not defined (§8.2).
+        let compiled = loop {
+            let environment = Environment {
+                pous: &image.pous,
+                layout,
+                imports: &imports,
+                folded_constants,
+                signature: signature.clone(),
+                functions: &functions,
+            };
+            let mut compiled = Vec::with_capacity(image.pous.len());
+            let mut refused_now = Vec::new();
+            for (index, pou) in image.pous.iter().enumerate() {
+                let Some(id) = functions[index] else {
+                    compiled.push(None);
+                    continue;
+                };
+                let index = index as u32;
+                let refused = |reason: String| Untranslated {
+                    pou: index,
+                    name: pou.name.clone(),
+                    instruction: None,
+                    reason,
+                };
+                // A translator or code generator bug must not take the loading thread down:
+                // the POU falls back to the interpreter with the reason (§8.2).
+                let result = std::panic::catch_unwind(AssertUnwindSafe(|| {
+                    let function =
+                        translate_pou(&environment, index, &mut function_context, &mut module)?;
+                    compile(&mut codegen, function, id, module.isa())
+                        .map_err(|reason| refused(reason.0))
+                }));
+                module.clear_context(&mut codegen);
+                match result {
+                    Ok(Ok(function)) => compiled.push(Some(function)),
+                    Ok(Err(refusal)) => {
+                        refused_now.push(refusal);
+                        compiled.push(None);
+                    }
+                    Err(_) => {
+                        refused_now.push(refused(
+                            "the translator or the code generator failed on it (an internal \
+                             error)"
+                                .into(),
+                        ));
+                        compiled.push(None);
+                        function_context = FunctionBuilderContext::new();
+                        codegen = module.make_context();
+                    }
+                }
+            }
+            if refused_now.is_empty() {
+                break compiled;
+            }
+            for refusal in refused_now {
+                functions[refusal.pou as usize] = None;
+                untranslated.push(refusal);
+            }
+        };
         let mut defined = Vec::with_capacity(image.pous.len());
-        let mut untranslated = Vec::new();
         #[cfg(test)]
         let mut listings = Vec::new();
-        for (index, pou) in image.pous.iter().enumerate() {
-            let index = index as u32;
-            let refused = |reason: String| Untranslated {
-                pou: index,
-                name: pou.name.clone(),
-                instruction: None,
-                reason,
+        for (index, (pou, function)) in image.pous.iter().zip(compiled).enumerate() {
+            let (Some(function), Some(id)) = (function, functions[index]) else {
+                #[cfg(test)]
+                listings.push(String::new());
+                defined.push(None);
+                continue;
             };
-            // A translator bug must not take the loading thread down: the POU falls back to
-            // the interpreter with the reason (§8.2).
-            let translated = std::panic::catch_unwind(AssertUnwindSafe(|| {
-                translate_pou(&environment, index, &mut function_context, &mut module)
-            }));
-            let function = match translated {
-                Ok(Ok(function)) => function,
-                Ok(Err(refusal)) => {
-                    untranslated.push(refusal);
-                    defined.push(None);
-                    continue;
-                }
-                Err(_) => {
-                    untranslated.push(refused(
-                        "the translator failed on it (an internal error)".into(),
-                    ));
-                    defined.push(None);
-                    function_context = FunctionBuilderContext::new();
-                    continue;
-                }
-            };
-            let id = match module.declare_function(
-                &format!("rivet_pou_{index}"),
-                Linkage::Local,
-                &environment.signature,
-            ) {
-                Ok(id) => id,
-                Err(error) => {
-                    untranslated.push(refused(error.to_string()));
-                    defined.push(None);
-                    continue;
-                }
-            };
-            codegen.func = function;
-            // The tests read the machine code's listing (§7 rule 5: no reachable trap).
-            codegen.set_disasm(cfg!(test));
-            // A Cranelift panic must not take the loading thread down either (§8.2).
-            let result = std::panic::catch_unwind(AssertUnwindSafe(|| {
-                module.define_function(id, &mut codegen).map_err(Box::new)
-            }));
             #[cfg(test)]
-            listings.push(
-                codegen
-                    .compiled_code()
-                    .and_then(|compiled| compiled.vcode.clone())
-                    .unwrap_or_default(),
-            );
-            module.clear_context(&mut codegen);
-            match result {
-                Ok(Ok(())) => defined.push(Some(id)),
-                Ok(Err(error)) => {
-                    untranslated.push(refused(format!("{error:?}")));
+            listings.push(function.listing);
+            match module.define_function_bytes(
+                id,
+                function.alignment,
+                &function.bytes,
+                &function.relocations,
+            ) {
+                Ok(()) => defined.push(Some(id)),
+                Err(error) => {
+                    // Only a module error (no memory for the code) can fail here; a caller of
+                    // this POU then names a function that is not defined, finalising asks
+                    // the symbol lookup for it, and the whole image is refused.
+                    untranslated.push(Untranslated {
+                        pou: index as u32,
+                        name: pou.name.clone(),
+                        instruction: None,
+                        reason: error.to_string(),
+                    });
                     defined.push(None);
-                }
-                Err(_) => {
-                    untranslated.push(refused(
-                        "the code generator failed on it (an internal error)".into(),
-                    ));
-                    defined.push(None);
-                    codegen = module.make_context();
                 }
             }
         }
@@ -169,7 +206,7 @@ impl Translation {
             .iter()
             .map(|pou| (u64::from(pou.instance_size), u64::from(pou.frame_size)))
             .collect();
-        let machine = MachineCode::new(module, &defined, &environment.signature, sizes, *layout);
+        let machine = MachineCode::new(module, &defined, &signature, sizes, *layout);
         for (index, pou) in image.pous.iter().enumerate() {
             let index = index as u32;
             if defined[index as usize].is_some() && !machine.has(index) {
@@ -183,6 +220,7 @@ impl Translation {
                 });
             }
         }
+        untranslated.sort_by_key(|refusal| refusal.pou);
         Ok(Code {
             untranslated,
             code_bytes: code_bytes.load(Ordering::Relaxed),
@@ -333,4 +371,53 @@ impl Code {
     ) -> Status {
         self.machine.run(pou, host, &entry, counters)
     }
+}
+
+/// One POU's compiled machine code, not yet defined in the module.
+struct Compiled {
+    /// The machine code.
+    bytes: Vec<u8>,
+    /// Its alignment in bytes.
+    alignment: u64,
+    /// Its relocations: the calls of the imports and of other POUs.
+    relocations: Vec<ModuleReloc>,
+    /// The machine code as text, for the tests.
+    #[cfg(test)]
+    listing: String,
+}
+
+/// Why the code generator refused a POU function.
+#[derive(Debug)]
+struct NotCompiled(String);
+
+/// Compiles POU function `function` (to be defined as `id`) for `isa`, or says why it cannot.
+fn compile(
+    codegen: &mut cranelift_codegen::Context,
+    function: cranelift_codegen::ir::Function,
+    id: FuncId,
+    isa: &dyn TargetIsa,
+) -> Result<Compiled, NotCompiled> {
+    codegen.func = function;
+    // The tests read the machine code's listing (§7 rule 5: no reachable trap).
+    codegen.set_disasm(cfg!(test));
+    codegen
+        .compile(isa, &mut ControlPlane::default())
+        .map_err(|error| NotCompiled(format!("{:?}", error.inner)))?;
+    // Read again through a shared borrow, beside the function the relocations name.
+    let compiled = codegen
+        .compiled_code()
+        .ok_or_else(|| NotCompiled("the code generator gave no code (an internal error)".into()))?;
+    let relocations = compiled
+        .buffer
+        .relocs()
+        .iter()
+        .map(|relocation| ModuleReloc::from_mach_reloc(relocation, &codegen.func, id))
+        .collect();
+    Ok(Compiled {
+        bytes: compiled.code_buffer().to_vec(),
+        alignment: u64::from(compiled.buffer.alignment),
+        relocations,
+        #[cfg(test)]
+        listing: compiled.vcode.clone().unwrap_or_default(),
+    })
 }

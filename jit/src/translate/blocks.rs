@@ -54,4 +54,30 @@ impl Blocks {
     pub(crate) fn at(&self, index: usize) -> Option<Block> {
         self.starts.get(index).copied().flatten()
     }
+
+    /// Gives instructions `start ..= end` new blocks, for a second copy of them (the
+    /// unpromoted copy of a loop, `promote.rs`); returns the blocks they had, for
+    /// [`Self::restore`].
+    pub(crate) fn renew(
+        &mut self,
+        start: usize,
+        end: usize,
+        builder: &mut FunctionBuilder<'_>,
+    ) -> Vec<Option<Block>> {
+        let mut saved = Vec::new();
+        for slot in self.starts.iter_mut().take(end + 1).skip(start) {
+            saved.push(*slot);
+            if slot.is_some() {
+                *slot = Some(builder.create_block());
+            }
+        }
+        saved
+    }
+
+    /// Gives instructions from `start` on the blocks [`Self::renew`] returned.
+    pub(crate) fn restore(&mut self, start: usize, saved: Vec<Option<Block>>) {
+        for (slot, block) in self.starts.iter_mut().skip(start).zip(saved) {
+            *slot = block;
+        }
+    }
 }

@@ -8,6 +8,7 @@ mod blocks;
 mod call;
 pub(crate) mod host_calls;
 mod pointer;
+mod promote;
 mod real;
 pub(crate) mod scalar;
 
@@ -17,11 +18,13 @@ use cranelift_codegen::ir::{
     Value, types,
 };
 use cranelift_frontend::{FunctionBuilder, FunctionBuilderContext, Variable};
+use cranelift_module::FuncId;
 use program_image::{Elementary, Instr, Operand, Pou};
 
 use crate::context;
 use crate::layout::Layout;
 use blocks::Blocks;
+use call::CallInstance;
 use host_calls::{Import, Imports};
 
 /// A POU the translator leaves to the interpreter, with the reason (`docs/native-engine.md`
@@ -42,6 +45,10 @@ pub struct Untranslated {
 fn instruction_text(instruction: Option<u32>) -> String {
     instruction.map_or(String::new(), |index| format!("instruction {index}: "))
 }
+
+/// The name of a POU the translator refuses in the tests.
+#[cfg(test)]
+pub(crate) const REFUSED_IN_TESTS: &str = "RefusedInTests";
 
 /// The one signature of every POU function: `(context, instance, frame) -> status`.
 pub(crate) fn pou_signature(mut signature: Signature) -> Signature {
@@ -75,6 +82,9 @@ pub(crate) struct Environment<'a> {
     pub(crate) folded_constants: Option<&'a [u8]>,
     /// The signature of a POU function on this machine.
     pub(crate) signature: Signature,
+    /// Per POU: its function in the module, when it has one (a call of a POU without one is
+    /// handed to the interpreter, §4.4).
+    pub(crate) functions: &'a [Option<FuncId>],
 }
 
 /// Translates POU `index` into a function, or says why it cannot.
@@ -93,6 +103,16 @@ pub(crate) fn translate_pou(
             instruction: None,
             reason: "no such POU".into(),
         })?;
+    // The tests see a refused callee's callers translated again with the call handed over.
+    #[cfg(test)]
+    if pou.name == REFUSED_IN_TESTS {
+        return Err(Untranslated {
+            pou: index,
+            name: pou.name.clone(),
+            instruction: None,
+            reason: "refused by the tests".into(),
+        });
+    }
     let mut function =
         Function::with_name_signature(UserFuncName::user(0, index), environment.signature.clone());
     {
@@ -121,6 +141,12 @@ pub(crate) struct Translator<'a, 'b> {
     module: &'a mut dyn cranelift_module::Module,
     /// Per import: its reference in this function, once declared in it.
     refs: Vec<Option<FuncRef>>,
+    /// The image's POUs.
+    pub(crate) pous: &'a [Pou],
+    /// Per POU: its function in the module, when it has one.
+    functions: &'a [Option<FuncId>],
+    /// Per POU: its function's reference in this function, once declared in it.
+    pou_refs: Vec<Option<FuncRef>>,
     /// This POU's index.
     pub(crate) pou: u32,
     /// This POU's instructions.
@@ -142,6 +168,17 @@ pub(crate) struct Translator<'a, 'b> {
     /// Back-edge blocks of the current instruction and where each goes, to emit once the
     /// current block is terminated.
     back_edges: Vec<(Block, Block)>,
+    /// The loops whose places are kept in variables (§5.3), in code order.
+    promoted_loops: Vec<promote::PromotedLoop>,
+    /// Per promoted loop: the block every entry from outside goes through.
+    preheaders: Vec<Block>,
+    /// The promoted loop being emitted.
+    active_loop: Option<usize>,
+    /// Its places: the operand, its size, and the variable that holds it.
+    promoted: Vec<(Operand, u32, Variable)>,
+    /// Exit blocks of the current instruction out of the active loop and where each goes,
+    /// to emit once the current block is terminated.
+    exits: Vec<(Block, Block)>,
 }
 
 impl<'a, 'b> Translator<'a, 'b> {
@@ -153,6 +190,11 @@ impl<'a, 'b> Translator<'a, 'b> {
         module: &'a mut dyn cranelift_module::Module,
     ) -> Self {
         let blocks = Blocks::new(&pou.code, &mut builder);
+        let promoted_loops = promote::promotable_loops(&pou.code, environment.layout);
+        let preheaders = promoted_loops
+            .iter()
+            .map(|_| builder.create_block())
+            .collect();
         let entry = builder.create_block();
         builder.append_block_params_for_function_params(entry);
         builder.switch_to_block(entry);
@@ -167,6 +209,9 @@ impl<'a, 'b> Translator<'a, 'b> {
             folded_constants: environment.folded_constants,
             module,
             refs: vec![None; Import::COUNT],
+            pous: environment.pous,
+            functions: environment.functions,
+            pou_refs: vec![None; environment.pous.len()],
             pou: index,
             code: &pou.code,
             blocks,
@@ -177,6 +222,11 @@ impl<'a, 'b> Translator<'a, 'b> {
             budget,
             pc: 0,
             back_edges: Vec::new(),
+            promoted_loops,
+            preheaders,
+            active_loop: None,
+            promoted: Vec::new(),
+            exits: Vec::new(),
         };
         translator.reload_memory();
         let budget_now =
@@ -190,26 +240,17 @@ impl<'a, 'b> Translator<'a, 'b> {
 
     /// Emits every instruction, then the end (running past the last instruction returns).
     fn body(&mut self) {
-        let first = self.blocks.at(0);
-        if let Some(first) = first {
-            self.builder.ins().jump(first, &[]);
-        }
-        let mut reachable = false;
-        for index in 0..self.code.len() {
-            if let Some(block) = self.blocks.at(index) {
-                if reachable {
-                    self.builder.ins().jump(block, &[]);
-                }
-                self.builder.switch_to_block(block);
-                reachable = true;
-            }
-            if !reachable {
+        // The entry block falls into instruction 0.
+        let mut reachable = true;
+        let mut index = 0;
+        while index < self.code.len() {
+            if let Some(position) = self.loop_starting_at(index) {
+                reachable = self.promoted_loop(position, reachable);
+                index = self.promoted_loops[position].end as usize + 1;
                 continue;
             }
-            self.pc = index as u32;
-            let instr = &self.code[index];
-            reachable = self.instruction(instr);
-            self.emit_back_edges();
+            reachable = self.emit_at(index, reachable);
+            index += 1;
         }
         if let Some(end) = self.blocks.at(self.code.len()) {
             if reachable {
@@ -218,6 +259,29 @@ impl<'a, 'b> Translator<'a, 'b> {
             self.builder.switch_to_block(end);
             self.return_status(0);
         }
+    }
+
+    /// Emits instruction `index`, starting its block if it starts one; `reachable` says
+    /// whether control falls into it from the one before. Returns whether control falls
+    /// through to the next.
+    pub(crate) fn emit_at(&mut self, index: usize, reachable: bool) -> bool {
+        self.pc = index as u32;
+        let mut reachable = reachable;
+        if let Some(block) = self.blocks.at(index) {
+            if reachable {
+                self.builder.ins().jump(block, &[]);
+            }
+            self.builder.switch_to_block(block);
+            reachable = true;
+        }
+        if !reachable {
+            return false;
+        }
+        let instr = &self.code[index];
+        let falls_through = self.instruction(instr);
+        self.emit_back_edges();
+        self.emit_exits();
+        falls_through
     }
 
     /// Emits one instruction; false when control does not fall through to the next.
@@ -240,6 +304,7 @@ impl<'a, 'b> Translator<'a, 'b> {
                 false
             }
             Instr::Return => {
+                self.write_back();
                 self.return_status(0);
                 false
             }
@@ -262,8 +327,12 @@ impl<'a, 'b> Translator<'a, 'b> {
                 true
             }
             Instr::Copy { size, dst, src } => {
+                let reload = self.promoted_copy(*dst, *src, *size);
                 let (to, from) = (self.absolute(*dst), self.absolute(*src));
                 self.copy_bytes(to, from, *size);
+                if reload {
+                    self.reload_promoted();
+                }
                 true
             }
             Instr::Unary { op, ty, dst, src } => self.unary(*op, *ty, *dst, *src),
@@ -333,17 +402,58 @@ impl<'a, 'b> Translator<'a, 'b> {
                 self.store(now, *dst);
                 true
             }
-            // Calls, the runtime's blocks and functions, strings, the real clock and open
-            // arrays run in the interpreter in this wave (§5.1 "host").
+            Instr::CallFunction {
+                pou,
+                instance,
+                inputs,
+                outputs,
+            } => {
+                let this = match instance {
+                    Some(pointer) => CallInstance::Pointer(*pointer),
+                    None => CallInstance::Caller,
+                };
+                self.call_function(*pou, this, inputs, outputs)
+            }
+            Instr::CallBlock {
+                pou,
+                instance,
+                indirect,
+            } => {
+                let this = if *indirect {
+                    CallInstance::Pointer(*instance)
+                } else {
+                    CallInstance::Direct(*instance)
+                };
+                self.call_function(*pou, this, &[], &[])
+            }
+            Instr::CallVirtual {
+                table,
+                interface,
+                inputs,
+                outputs,
+            } => self.call_virtual(table, *interface, inputs, outputs),
+            Instr::OpenElement {
+                dst,
+                descriptor,
+                indices,
+                stride,
+            } => {
+                self.open_element(*dst, *descriptor, indices, *stride);
+                true
+            }
+            // The runtime's blocks and functions, strings, the real clock and the motion
+            // blocks run in the interpreter (§5.1 "host").
             _ => false,
         }
     }
 
     /// The block after the current instruction (every branch ends a block, `blocks.rs`).
-    fn next_block(&self) -> Block {
-        self.blocks
+    fn next_block(&mut self) -> Block {
+        let next = self
+            .blocks
             .at(self.pc as usize + 1)
-            .unwrap_or(self.blocks.end())
+            .unwrap_or(self.blocks.end());
+        self.promoted_destination(self.pc + 1, next)
     }
 
     /// The block a jump to `target` goes to: the target's own block for a forward jump, a
@@ -351,6 +461,7 @@ impl<'a, 'b> Translator<'a, 'b> {
     /// block is terminated, by [`Self::emit_back_edges`]).
     fn branch_target(&mut self, target: u32) -> Block {
         let destination = self.blocks.at(target as usize).unwrap_or(self.blocks.end());
+        let destination = self.promoted_destination(target, destination);
         if target > self.pc {
             return destination;
         }
@@ -494,6 +605,9 @@ impl<'a, 'b> Translator<'a, 'b> {
         {
             return folded;
         }
+        if let Some(promoted) = self.promoted_load(ty, operand) {
+            return promoted;
+        }
         let (address, displacement) = self.operand_address(operand);
         self.builder
             .ins()
@@ -502,6 +616,9 @@ impl<'a, 'b> Translator<'a, 'b> {
 
     /// Stores a value into a direct operand.
     pub(crate) fn store(&mut self, value: Value, operand: Operand) {
+        if self.promoted_store(value, operand) {
+            return;
+        }
         let (address, displacement) = self.operand_address(operand);
         self.builder
             .ins()

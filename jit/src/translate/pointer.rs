@@ -5,6 +5,7 @@ use cranelift_codegen::ir::condcodes::IntCC;
 use cranelift_codegen::ir::{InstBuilder, Value, types};
 use program_image::{Elementary, Operand};
 
+use super::call::displaced;
 use super::{Translator, context_flags, int_type, is_signed};
 use crate::context;
 use crate::fault_kind;
@@ -113,6 +114,43 @@ impl Translator<'_, '_> {
         let pointer = self.load(types::I64, base);
         let from_low = self.builder.ins().isub(i, low_value);
         let moved = self.builder.ins().imul_imm_u(from_low, i64::from(stride));
+        let result = self.builder.ins().iadd(pointer, moved);
+        self.store(result, dst);
+    }
+
+    /// `OpenElement`: per dimension, the bounds read from the descriptor (pointer, then low
+    /// and high of each dimension as `i64`), the index checked against them (a fault outside,
+    /// with the bounds read), the linear index `linear · count + (index − low)` wrapping; then
+    /// `dst := pointer + linear · stride`, wrapping, as the interpreter computes it.
+    pub(crate) fn open_element(
+        &mut self,
+        dst: Operand,
+        descriptor: Operand,
+        indices: &[(Operand, Elementary)],
+        stride: u32,
+    ) {
+        let pointer = self.load(types::I64, descriptor);
+        let mut linear = self.builder.ins().iconst(types::I64, 0);
+        for (dimension, (index, index_ty)) in indices.iter().enumerate() {
+            let bounds = 8 + 16 * dimension as u32;
+            let low = self.load(types::I64, displaced(descriptor, bounds));
+            let high = self.load(types::I64, displaced(descriptor, bounds + 8));
+            let i = self.index_value(*index, *index_ty);
+            let under = self.builder.ins().icmp(IntCC::SignedLessThan, i, low);
+            let over = self.builder.ins().icmp(IntCC::SignedGreaterThan, i, high);
+            let outside = self.builder.ins().bor(under, over);
+            self.fault_if(
+                outside,
+                fault_kind::INDEX_OUT_OF_BOUNDS,
+                [Some(i), Some(low), Some(high)],
+            );
+            let span = self.builder.ins().isub(high, low);
+            let count = self.builder.ins().iadd_imm_u(span, 1);
+            let scaled = self.builder.ins().imul(linear, count);
+            let from_low = self.builder.ins().isub(i, low);
+            linear = self.builder.ins().iadd(scaled, from_low);
+        }
+        let moved = self.builder.ins().imul_imm_u(linear, i64::from(stride));
         let result = self.builder.ins().iadd(pointer, moved);
         self.store(result, dst);
     }

@@ -4,10 +4,12 @@
 
 #![allow(clippy::unwrap_used, clippy::expect_used)] // A panic is a failed test.
 
+mod call;
 mod control;
 mod integer;
 mod module;
 mod pointer;
+mod promote;
 mod real;
 
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -20,7 +22,7 @@ use program_image::{
 
 use crate::{
     Code, Counters, Entry, Host, Layout, NativeFault, OUR_SYMBOLS, PureFunctions, Site, Status,
-    Translation,
+    Translation, Untranslated,
 };
 
 const DATA: u32 = 512;
@@ -48,6 +50,15 @@ struct TestHost {
     memory_calls: usize,
     /// When set, `op` and `copy` panic with this message.
     panic: Option<&'static str>,
+    /// The frames prepared by `frame`: the POU and the frame's offset.
+    frames: Vec<(u32, u64)>,
+    /// What `frame` writes at a new frame after zeroing `FRAME_SIZE` bytes (the initial
+    /// runs of the POU the test calls).
+    frame_template: Vec<u8>,
+    /// The instance's first 16 bytes at each tick, to see what generated code left in memory.
+    tick_snapshots: Vec<Vec<u8>>,
+    /// A byte of the instance each tick writes, as a preempting task may.
+    tick_poke: Option<(u32, u8)>,
 }
 
 impl Host for TestHost {
@@ -60,6 +71,12 @@ impl Host for TestHost {
     }
     fn tick(&mut self, site: Site, counters: &mut Counters) -> Status {
         self.ticks.push((site, *counters));
+        let instance = INSTANCE_AT as usize;
+        self.tick_snapshots
+            .push(self.memory[instance..instance + 16].to_vec());
+        if let Some((offset, byte)) = self.tick_poke {
+            self.memory[instance + offset as usize] = byte;
+        }
         if counters.budget == 0 {
             counters.budget = 4096;
         }
@@ -97,8 +114,11 @@ impl Host for TestHost {
         self.memory.copy_within(from..from + bytes, to);
         Status::Ok
     }
-    fn frame(&mut self, _: u32, frame: u64) -> Status {
+    fn frame(&mut self, pou: u32, frame: u64) -> Status {
+        self.frames.push((pou, frame));
         self.memory[frame as usize..][..FRAME_SIZE as usize].fill(0);
+        self.memory[frame as usize..][..self.frame_template.len()]
+            .copy_from_slice(&self.frame_template);
         Status::Ok
     }
 }
@@ -303,10 +323,20 @@ impl Fixture {
     }
 
     fn with_constants(code: Vec<Instr>, constants: Vec<u8>) -> Self {
-        let image = image(code, constants.clone());
+        Self::of_image(image(code, constants))
+    }
+
+    /// The translation of a whole image, every POU of which must be translated.
+    fn of_image(image: ProgramImage) -> Self {
+        let constants = image.constants.clone();
         let layout = Layout::of(&image, 1);
         let code = Translation::new(&image, &layout, &PURE).unwrap();
-        assert!(code.untranslated().is_empty(), "{:?}", code.untranslated());
+        let refused: Vec<&Untranslated> = code
+            .untranslated()
+            .iter()
+            .filter(|refusal| refusal.name != crate::translate::REFUSED_IN_TESTS)
+            .collect();
+        assert!(refused.is_empty(), "{refused:?}");
         Self {
             code,
             layout,
@@ -327,6 +357,10 @@ impl Fixture {
             decoy: None,
             memory_calls: 0,
             panic: None,
+            frames: Vec::new(),
+            frame_template: Vec::new(),
+            tick_snapshots: Vec::new(),
+            tick_poke: None,
         }
     }
 

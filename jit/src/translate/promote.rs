@@ -1,0 +1,533 @@
+//! Loop promotion (`docs/native-engine.md` §5.3): a scalar place read and written in a loop
+//! is kept in an SSA variable across the loop's iterations, so that a `FOR` variable or an
+//! accumulator does not put a store-to-load dependency on every iteration.
+//!
+//! The analysis finds loops from backward jumps, keeps those whose body makes no call and
+//! reaches no memory through a pointer, and promotes the places every access of which in the
+//! body is the same direct operand of the same size, all other accesses being provably
+//! disjoint from it. The translator then loads the places on entry to the loop (a preheader
+//! block that every entry from outside goes through), writes them back on every exit, on
+//! every fault, and before every callback (the back-edge's `rivet_jit_tick` among them), and
+//! loads them again after a callback: at every safe point, call and fault, memory holds what
+//! the interpreter's memory holds.
+
+use cranelift_codegen::ir::condcodes::IntCC;
+use cranelift_codegen::ir::{Block, InstBuilder, MemFlagsData, Type, Value, types};
+use program_image::{Elementary, Instr, Operand};
+
+use super::{Translator, memory_flags};
+use crate::layout::Layout;
+
+/// The largest copy made by inline loads and stores (a larger one is a callback, a call).
+const INLINE_COPY_BYTES: u32 = 64;
+
+#[cfg(test)]
+thread_local! {
+    /// Set by the tests to translate on the current thread without promotion, and compare.
+    pub(crate) static PROMOTION_OFF_IN_TESTS: std::cell::Cell<bool> =
+        const { std::cell::Cell::new(false) };
+}
+
+/// A loop whose places are promoted: instructions `start ..= end`, the backward jump at `end`.
+#[derive(Clone, Debug)]
+pub(crate) struct PromotedLoop {
+    /// The loop's first instruction, the target of its backward jump.
+    pub(crate) start: u32,
+    /// The backward jump that closes it.
+    pub(crate) end: u32,
+    /// The places kept in variables: a direct operand and its size in bytes.
+    pub(crate) places: Vec<(Operand, u32)>,
+    /// The byte ranges the loop touches per base, when it touches places of more than one
+    /// base: the analysis takes places of different bases as disjoint, which a test on entry
+    /// confirms, running an unpromoted copy of the loop when they are not.
+    pub(crate) guard: Option<Guard>,
+}
+
+/// The smallest ranges holding every place a loop touches, per base: offsets from the
+/// instance, offsets from the frame, absolute offsets of the fixed regions.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub(crate) struct Guard {
+    /// From the instance: first byte and end.
+    pub(crate) instance: Option<(u64, u64)>,
+    /// From the frame.
+    pub(crate) frame: Option<(u64, u64)>,
+    /// In the memory.
+    pub(crate) fixed: Option<(u64, u64)>,
+}
+
+/// How an instruction touches a direct place.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Access {
+    /// Loaded through the translator's `load`.
+    Read,
+    /// Stored through the translator's `store`.
+    Write,
+    /// Read or written as bytes by an inline copy, which bypasses `load` and `store`.
+    Raw,
+}
+
+/// Where a direct place lies: at a fixed offset of the memory, or at an offset from the
+/// instance or the frame, which are only known at run time.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Base {
+    Fixed(u64),
+    Instance(u64),
+    Frame(u64),
+}
+
+fn base(operand: Operand, layout: &Layout) -> Base {
+    match operand {
+        Operand::Instance(offset) => Base::Instance(u64::from(offset)),
+        Operand::Frame(offset) => Base::Frame(u64::from(offset)),
+        fixed => Base::Fixed(layout.absolute(fixed).unwrap_or(0)),
+    }
+}
+
+/// Whether `size_a` bytes at `a` and `size_b` bytes at `b` may share a byte, in a promoted
+/// loop: places of the same base are compared by offset; places of different bases are
+/// disjoint, as the loop's [`Guard`] confirms on entry.
+fn may_overlap(layout: &Layout, (a, size_a): (Operand, u32), (b, size_b): (Operand, u32)) -> bool {
+    let overlap = |x: u64, y: u64| x < y + u64::from(size_b) && y < x + u64::from(size_a);
+    match (base(a, layout), base(b, layout)) {
+        (Base::Fixed(x), Base::Fixed(y))
+        | (Base::Instance(x), Base::Instance(y))
+        | (Base::Frame(x), Base::Frame(y)) => overlap(x, y),
+        _ => false,
+    }
+}
+
+/// The guard of the places `all` a loop touches: `None` when they all have one base.
+fn guard(layout: &Layout, all: &[(Operand, u32, Access)]) -> Option<Guard> {
+    let mut guard = Guard::default();
+    let widen = |range: &mut Option<(u64, u64)>, at: u64, size: u32| {
+        let end = at + u64::from(size);
+        *range = Some(match *range {
+            Some((first, last)) => (first.min(at), last.max(end)),
+            None => (at, end),
+        });
+    };
+    for (operand, size, _) in all {
+        match base(*operand, layout) {
+            Base::Instance(at) => widen(&mut guard.instance, at, *size),
+            Base::Frame(at) => widen(&mut guard.frame, at, *size),
+            Base::Fixed(at) => widen(&mut guard.fixed, at, *size),
+        }
+    }
+    let bases = [guard.instance, guard.frame, guard.fixed]
+        .iter()
+        .filter(|range| range.is_some())
+        .count();
+    (bases > 1).then_some(guard)
+}
+
+/// The direct places an instruction touches, as the translator emits it; `None` for an
+/// instruction a promoting loop must not contain: a call of any kind (a host operation, a
+/// copy larger than 64 bytes) or an access through a pointer, which may reach any place.
+fn accesses(instr: &Instr) -> Option<Vec<(Operand, u32, Access)>> {
+    use Access::{Raw, Read, Write};
+    let size = |ty: &Elementary| ty.size_bytes();
+    Some(match instr {
+        Instr::Move { ty, dst, src } => vec![(*src, size(ty), Read), (*dst, size(ty), Write)],
+        Instr::Copy { size, dst, src } if *size <= INLINE_COPY_BYTES => {
+            vec![(*src, *size, Raw), (*dst, *size, Raw)]
+        }
+        Instr::Unary { ty, dst, src, .. } => {
+            vec![(*src, size(ty), Read), (*dst, size(ty), Write)]
+        }
+        Instr::Binary { ty, dst, a, b, .. } => vec![
+            (*a, size(ty), Read),
+            (*b, size(ty), Read),
+            (*dst, size(ty), Write),
+        ],
+        Instr::Compare { ty, dst, a, b, .. } => {
+            vec![(*a, size(ty), Read), (*b, size(ty), Read), (*dst, 1, Write)]
+        }
+        Instr::Convert { from, to, dst, src } | Instr::Trunc { from, to, dst, src } => {
+            vec![(*src, size(from), Read), (*dst, size(to), Write)]
+        }
+        Instr::GetBit { ty, dst, src, .. } => vec![(*src, size(ty), Read), (*dst, 1, Write)],
+        Instr::SetBit { ty, dst, src, .. } => vec![
+            (*dst, size(ty), Read),
+            (*src, 1, Read),
+            (*dst, size(ty), Write),
+        ],
+        // The place's address is made, not read.
+        Instr::Address { dst, .. } => vec![(*dst, 8, Write)],
+        Instr::Element {
+            dst,
+            base,
+            index,
+            index_ty,
+            ..
+        } => vec![
+            (*index, size(index_ty), Read),
+            (*base, 8, Read),
+            (*dst, 8, Write),
+        ],
+        Instr::Offset { dst, base, .. } => vec![(*base, 8, Read), (*dst, 8, Write)],
+        Instr::Now { dst } => vec![(*dst, 8, Write)],
+        // A return writes the places back first.
+        Instr::Jump { .. } | Instr::Return => Vec::new(),
+        Instr::JumpIf { cond, .. } | Instr::JumpIfNot { cond, .. } => vec![(*cond, 1, Read)],
+        _ => return None,
+    })
+}
+
+fn jump_target(instr: &Instr) -> Option<u32> {
+    match instr {
+        Instr::Jump { target } | Instr::JumpIf { target, .. } | Instr::JumpIfNot { target, .. } => {
+            Some(*target)
+        }
+        _ => None,
+    }
+}
+
+/// The loops of `code` whose places may be promoted, disjoint, in code order. Inner loops are
+/// preferred: they run most often.
+pub(crate) fn promotable_loops(code: &[Instr], layout: &Layout) -> Vec<PromotedLoop> {
+    #[cfg(test)]
+    if PROMOTION_OFF_IN_TESTS.with(std::cell::Cell::get) {
+        return Vec::new();
+    }
+    let mut regions: Vec<(u32, u32)> = code
+        .iter()
+        .enumerate()
+        .filter_map(|(pc, instr)| {
+            let target = jump_target(instr)?;
+            (target as usize <= pc).then_some((target, pc as u32))
+        })
+        .collect();
+    regions.sort_by_key(|(start, end)| (end - start, *start));
+    let mut chosen: Vec<PromotedLoop> = Vec::new();
+    for (start, end) in regions {
+        if chosen
+            .iter()
+            .any(|known| start <= known.end && known.start <= end)
+        {
+            continue;
+        }
+        if let Some(promoted) = analyse(code, layout, start, end) {
+            chosen.push(promoted);
+        }
+    }
+    chosen.sort_by_key(|promoted| promoted.start);
+    chosen
+}
+
+/// The places of loop `start ..= end` that may be promoted, if it has any.
+fn analyse(code: &[Instr], layout: &Layout, start: u32, end: u32) -> Option<PromotedLoop> {
+    let inside = |index: u32| (start..=end).contains(&index);
+    // Entered only at its start: a jump from outside into its middle would skip the loads.
+    for (pc, instr) in code.iter().enumerate() {
+        if let Some(target) = jump_target(instr)
+            && !inside(pc as u32)
+            && target > start
+            && target <= end
+        {
+            return None;
+        }
+    }
+    let mut all = Vec::new();
+    for pc in start..=end {
+        let instr = code.get(pc as usize)?;
+        // A jump out backwards would leave through a back-edge; the enclosing loop may be
+        // promoted instead.
+        if jump_target(instr).is_some_and(|target| target < start) {
+            return None;
+        }
+        all.extend(accesses(instr)?);
+    }
+    let mut places: Vec<(Operand, u32)> = Vec::new();
+    for (operand, size, access) in &all {
+        let place = (*operand, *size);
+        if *access != Access::Write
+            || matches!(operand, Operand::Const(_))
+            || places.contains(&place)
+        {
+            continue;
+        }
+        let read = all.iter().any(|(other, other_size, kind)| {
+            (*other, *other_size) == place && *kind == Access::Read
+        });
+        let alone = all.iter().all(|(other, other_size, kind)| {
+            let same = (*other, *other_size) == place && *kind != Access::Raw;
+            same || !may_overlap(layout, place, (*other, *other_size))
+        });
+        if read && alone {
+            places.push(place);
+        }
+    }
+    (!places.is_empty()).then(|| PromotedLoop {
+        start,
+        end,
+        places,
+        guard: guard(layout, &all),
+    })
+}
+
+/// The integer IR type of a promoted place's size.
+fn place_type(size: u32) -> Type {
+    match size {
+        1 => types::I8,
+        2 => types::I16,
+        4 => types::I32,
+        _ => types::I64,
+    }
+}
+
+impl Translator<'_, '_> {
+    /// The promoted loop that starts at instruction `index`, if any.
+    pub(crate) fn loop_starting_at(&self, index: usize) -> Option<usize> {
+        self.promoted_loops
+            .iter()
+            .position(|promoted| promoted.start as usize == index)
+    }
+
+    /// Emits promoted loop `position`: its preheader (every entry from outside goes through
+    /// it), which tests the guard and runs an unpromoted copy of the loop when its places of
+    /// different bases overlap, else loads the places into variables; then the loop on those
+    /// variables, which writes them back on every way out. Returns whether control falls
+    /// through past the loop's end.
+    pub(crate) fn promoted_loop(&mut self, position: usize, reachable: bool) -> bool {
+        let promoted = self.promoted_loops[position].clone();
+        let (start, end) = (promoted.start as usize, promoted.end as usize);
+        let preheader = self.preheaders[position];
+        if reachable {
+            self.builder.ins().jump(preheader, &[]);
+        }
+        self.builder.switch_to_block(preheader);
+        if let Some(guard) = promoted.guard {
+            let overlapping = self.guard_fails(&guard);
+            let saved = self.blocks.renew(start, end, &mut self.builder);
+            let copy = self.blocks.at(start).unwrap_or(self.blocks.end());
+            let on_variables = self.builder.create_block();
+            self.builder
+                .ins()
+                .brif(overlapping, copy, &[], on_variables, &[]);
+            // The copy works on memory; its backward jumps to the start go through the
+            // preheader, which tests the guard again.
+            let mut falls_through = false;
+            for index in start..=end {
+                falls_through = self.emit_at(index, falls_through);
+            }
+            self.blocks.restore(start, saved);
+            if falls_through {
+                let next = self.blocks.at(end + 1).unwrap_or(self.blocks.end());
+                self.builder.ins().jump(next, &[]);
+            }
+            self.builder.switch_to_block(on_variables);
+        }
+        self.promoted = promoted
+            .places
+            .iter()
+            .map(|(operand, size)| {
+                let variable = self.builder.declare_var(place_type(*size));
+                (*operand, *size, variable)
+            })
+            .collect();
+        self.active_loop = Some(position);
+        self.reload_promoted();
+        let header = self.blocks.at(start).unwrap_or(self.blocks.end());
+        self.builder.ins().jump(header, &[]);
+        let mut falls_through = false;
+        for index in start..=end {
+            falls_through = self.emit_at(index, falls_through);
+        }
+        if falls_through {
+            self.write_back();
+        }
+        self.active_loop = None;
+        self.promoted.clear();
+        falls_through
+    }
+
+    /// Whether the ranges of a guard overlap, for this call's instance and frame.
+    fn guard_fails(&mut self, guard: &Guard) -> Value {
+        let mut ranges = Vec::new();
+        for (base, range) in [
+            (Some(self.instance), guard.instance),
+            (Some(self.frame), guard.frame),
+            (None, guard.fixed),
+        ] {
+            let Some((first, last)) = range else {
+                continue;
+            };
+            let (first, last) = match base {
+                Some(base) => (
+                    self.builder.ins().iadd_imm_u(base, first as i64),
+                    self.builder.ins().iadd_imm_u(base, last as i64),
+                ),
+                None => (
+                    self.builder.ins().iconst(types::I64, first as i64),
+                    self.builder.ins().iconst(types::I64, last as i64),
+                ),
+            };
+            ranges.push((first, last));
+        }
+        let mut any = self.builder.ins().iconst(types::I8, 0);
+        for (index, (first_a, last_a)) in ranges.iter().enumerate() {
+            for (first_b, last_b) in ranges.iter().skip(index + 1) {
+                let a_before_b_ends =
+                    self.builder
+                        .ins()
+                        .icmp(IntCC::UnsignedLessThan, *first_a, *last_b);
+                let b_before_a_ends =
+                    self.builder
+                        .ins()
+                        .icmp(IntCC::UnsignedLessThan, *first_b, *last_a);
+                let overlap = self.builder.ins().band(a_before_b_ends, b_before_a_ends);
+                any = self.builder.ins().bor(any, overlap);
+            }
+        }
+        any
+    }
+
+    /// Where a jump from the current instruction to `index` goes instead of the instruction's
+    /// own block: the preheader of a promoted loop entered from outside, or an exit block
+    /// that writes the places back when it leaves the active loop.
+    pub(crate) fn promoted_destination(&mut self, index: u32, destination: Block) -> Block {
+        let active = self.active_loop.map(|position| {
+            (
+                self.promoted_loops[position].start,
+                self.promoted_loops[position].end,
+            )
+        });
+        let leaves_active = active.is_some_and(|(_, end)| index > end);
+        let inside_active = active.is_some_and(|(start, end)| (start..=end).contains(&index));
+        let destination = match self
+            .promoted_loops
+            .iter()
+            .position(|promoted| promoted.start == index)
+        {
+            Some(position) if !inside_active => self.preheaders[position],
+            _ => destination,
+        };
+        if !leaves_active {
+            return destination;
+        }
+        let exit = self.builder.create_block();
+        self.exits.push((exit, destination));
+        exit
+    }
+
+    /// Emits the exit blocks of the current instruction: the places written back, then on.
+    pub(crate) fn emit_exits(&mut self) {
+        for (exit, destination) in std::mem::take(&mut self.exits) {
+            self.builder.switch_to_block(exit);
+            self.write_back();
+            self.builder.ins().jump(destination, &[]);
+        }
+    }
+
+    /// Stores every promoted place's variable to memory.
+    pub(crate) fn write_back(&mut self) {
+        for (operand, _, variable) in self.promoted.clone() {
+            let value = self.builder.use_var(variable);
+            self.raw_store(value, operand);
+        }
+    }
+
+    /// Loads every promoted place from memory into its variable.
+    pub(crate) fn reload_promoted(&mut self) {
+        for (operand, size, variable) in self.promoted.clone() {
+            let value = self.raw_load(place_type(size), operand);
+            self.builder.def_var(variable, value);
+        }
+    }
+
+    /// A load of `ty` from `operand` answered by a promoted place's variable; `None` for a
+    /// place not promoted. A load of bytes a promoted place shares in another shape (which
+    /// the analysis excludes) first writes the places back, so memory is current.
+    pub(crate) fn promoted_load(&mut self, ty: Type, operand: Operand) -> Option<Value> {
+        if self.promoted.is_empty() {
+            return None;
+        }
+        let size = ty.bytes();
+        if let Some((_, _, variable)) = self
+            .promoted
+            .iter()
+            .find(|(place, place_size, _)| *place == operand && *place_size == size)
+        {
+            let value = self.builder.use_var(*variable);
+            return Some(if ty.is_float() {
+                self.builder.ins().bitcast(ty, MemFlagsData::new(), value)
+            } else {
+                value
+            });
+        }
+        if self.aliases_promoted(operand, size) {
+            self.write_back();
+        }
+        None
+    }
+
+    /// A store into `operand` made to a promoted place's variable: true when it was. A store
+    /// to bytes a promoted place shares in another shape (which the analysis excludes) is
+    /// made to memory between a write-back and a reload, and is also true.
+    pub(crate) fn promoted_store(&mut self, value: Value, operand: Operand) -> bool {
+        if self.promoted.is_empty() {
+            return false;
+        }
+        let ty = self.builder.func.dfg.value_type(value);
+        let size = ty.bytes();
+        if let Some((_, _, variable)) = self
+            .promoted
+            .iter()
+            .find(|(place, place_size, _)| *place == operand && *place_size == size)
+        {
+            let variable = *variable;
+            let value = if ty.is_float() {
+                self.builder
+                    .ins()
+                    .bitcast(place_type(size), MemFlagsData::new(), value)
+            } else {
+                value
+            };
+            self.builder.def_var(variable, value);
+            return true;
+        }
+        if !self.aliases_promoted(operand, size) {
+            return false;
+        }
+        self.write_back();
+        self.raw_store(value, operand);
+        self.reload_promoted();
+        true
+    }
+
+    /// Before an inline copy of `size` bytes between direct places: the places written back
+    /// when the copy may read or write one (which the analysis excludes). Returns whether the
+    /// places must be loaded again after it (it may write one).
+    pub(crate) fn promoted_copy(&mut self, dst: Operand, src: Operand, size: u32) -> bool {
+        if self.promoted.is_empty() || size == 0 {
+            return false;
+        }
+        let writes = self.aliases_promoted(dst, size);
+        if writes || self.aliases_promoted(src, size) {
+            self.write_back();
+        }
+        writes
+    }
+
+    fn aliases_promoted(&self, operand: Operand, size: u32) -> bool {
+        self.promoted.iter().any(|(place, place_size, _)| {
+            may_overlap(self.layout, (*place, *place_size), (operand, size))
+        })
+    }
+
+    /// A store to memory that bypasses promotion.
+    fn raw_store(&mut self, value: Value, operand: Operand) {
+        let (address, displacement) = self.operand_address(operand);
+        self.builder
+            .ins()
+            .store(memory_flags(), value, address, displacement);
+    }
+
+    /// A load from memory that bypasses promotion.
+    fn raw_load(&mut self, ty: Type, operand: Operand) -> Value {
+        let (address, displacement) = self.operand_address(operand);
+        self.builder
+            .ins()
+            .load(ty, memory_flags(), address, displacement)
+    }
+}
