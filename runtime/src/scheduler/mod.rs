@@ -366,33 +366,24 @@ impl Scheduler {
     /// The loaded program's Modbus devices with their state and counters, in the image's
     /// order (`docs/modbus-master.md` §9.1); empty without a program or without devices.
     pub fn modbus_devices(&self) -> Vec<online_protocol::ModbusDeviceReport> {
-        self.modbus_devices
-            .lock()
-            .unwrap_or_else(PoisonError::into_inner)
-            .iter()
-            .map(|device| {
-                device
-                    .lock()
-                    .unwrap_or_else(PoisonError::into_inner)
-                    .snapshot()
-            })
-            .collect()
+        self.each_modbus_device(DeviceStatus::snapshot)
     }
 
     /// How many connections each loaded Modbus device has tried to open (TCP; 0 on a serial
     /// line), in the image's order. `MODBUS_DEVICES` does not carry the count: it is for the
     /// runtime's own readers and the tests that check the back-off (§6.8).
     pub fn modbus_connection_attempts(&self) -> Vec<u32> {
+        self.each_modbus_device(|status| status.connection_attempts)
+    }
+
+    /// `read` of each loaded Modbus device's status, in the image's order. A poisoned lock
+    /// still holds the last status written, which is what a reader wants to see.
+    fn each_modbus_device<T>(&self, read: impl Fn(&DeviceStatus) -> T) -> Vec<T> {
         self.modbus_devices
             .lock()
             .unwrap_or_else(PoisonError::into_inner)
             .iter()
-            .map(|device| {
-                device
-                    .lock()
-                    .unwrap_or_else(PoisonError::into_inner)
-                    .connection_attempts
-            })
+            .map(|device| read(&device.lock().unwrap_or_else(PoisonError::into_inner)))
             .collect()
     }
 
