@@ -57,6 +57,12 @@ impl EngineChoice {
         }
     }
 
+    /// Whether this machine has a native code generator (`jit::native_support`), so that
+    /// [`EngineChoice::Native`] makes machine code here.
+    pub fn native_available() -> bool {
+        jit::native_support().is_ok()
+    }
+
     /// The engine `--engine value` asks for, on a machine whose support of the native engine
     /// `support` tells (`jit::native_support` in the programs; a fake answer in tests). An
     /// explicit `native` on a machine without a backend is refused before anything loads.

@@ -98,8 +98,7 @@ fn compile(source: &str, networks: Vec<Network>) -> ProgramImage {
 #[track_caller]
 fn run(source: &str, networks: Vec<Network>, cycles: usize) -> HashMap<String, Vec<bool>> {
     let image = compile(source, networks);
-    let mut simulation = Simulation::new(image).expect("the image loads");
-    simulation.run(cycles as u64 + 1);
+    let simulation = crate::simulate(image, cycles as u64 + 1);
     assert!(simulation.faults().is_empty(), "{:?}", simulation.faults());
     let mut values = HashMap::new();
     for symbol in &simulation.engine().image().symbols {
@@ -801,8 +800,7 @@ END_PROGRAM
         Ok(image) => image,
         Err(error) => panic!("{error}: {error:?}"),
     };
-    let mut simulation = Simulation::new(image).expect("the image loads");
-    simulation.run(cycles);
+    let simulation = crate::simulate(image, cycles);
     assert!(simulation.faults().is_empty(), "{:?}", simulation.faults());
     simulation
 }
@@ -920,8 +918,7 @@ fn fbd_pins_negate_and_detect_edges_and_functions_nest() {
         Ok(image) => image,
         Err(error) => panic!("{error}: {error:?}"),
     };
-    let mut simulation = Simulation::new(image).expect("the image loads");
-    simulation.run(11);
+    let simulation = crate::simulate(image, 11);
     let read = |path: &str| -> Vec<bool> {
         let text = runtime::value::read(simulation.engine(), path)
             .unwrap()
