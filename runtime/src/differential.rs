@@ -66,7 +66,9 @@ fn fallback(report: &NativeReport) -> Option<String> {
     if report.runs_natively() && report.fallbacks.is_empty() {
         return None;
     }
-    Some(format!("falls back: {}", report.lines().join("; ")))
+    let mut lines = vec![report.summary()];
+    lines.extend(report.lines());
+    Some(format!("falls back: {}", lines.join("; ")))
 }
 
 /// Loads `image` in the interpreter and with `second`, runs both for `cycles` periods of the

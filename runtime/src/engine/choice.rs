@@ -63,6 +63,12 @@ impl EngineChoice {
         jit::native_support().is_ok()
     }
 
+    /// The engine `--engine value` asks for on this machine ([`EngineChoice::from_command_line`]
+    /// with `jit::native_support`).
+    pub fn for_this_machine(value: &str) -> Result<Self, EngineChoiceError> {
+        Self::from_command_line(value, jit::native_support)
+    }
+
     /// The engine `--engine value` asks for, on a machine whose support of the native engine
     /// `support` tells (`jit::native_support` in the programs; a fake answer in tests). An
     /// explicit `native` on a machine without a backend is refused before anything loads.
@@ -185,28 +191,41 @@ impl NativeReport {
         self.chosen == EngineChoice::Native && self.unavailable.is_none()
     }
 
-    /// The report as lines for standard error, without a prefix (`rivet simulate` puts
-    /// `note: ` before each): one summary line, then one line per POU that fell back.
-    pub fn lines(&self) -> Vec<String> {
+    /// One line saying which engine runs the image, for `rivet-runtime`'s load message.
+    pub fn summary(&self) -> String {
         if self.chosen == EngineChoice::Interpreter {
-            return vec![format!(
+            return format!(
                 "engine: the interpreter runs all {} POUs (--engine interpreter)",
                 self.pous
-            )];
+            );
         }
         if let Some(reason) = &self.unavailable {
-            return vec![format!(
+            return format!(
                 "native engine: not available, the interpreter runs all {} POUs: {reason}",
                 self.pous
-            )];
+            );
         }
         let native = self.pous - self.fallbacks.len().min(self.pous);
-        let mut lines = vec![format!(
+        format!(
             "native engine: {native} of {} POUs run as machine code ({} bytes, translated in {:.1} ms)",
             self.pous,
             self.code_bytes,
             self.translation_time.as_secs_f64() * 1000.0
-        )];
+        )
+    }
+
+    /// What a user may act on, as lines for standard error without a prefix (`rivet simulate`
+    /// puts `note: ` before each): one line per POU that fell back to the interpreter, or one
+    /// line when the native engine was chosen and could make no code at all; none when
+    /// everything runs as chosen.
+    pub fn lines(&self) -> Vec<String> {
+        if self.chosen == EngineChoice::Interpreter {
+            return Vec::new();
+        }
+        if self.unavailable.is_some() {
+            return vec![self.summary()];
+        }
+        let mut lines = Vec::new();
         lines.extend(self.fallbacks.iter().map(|fallback| {
             let instruction = fallback
                 .instruction
@@ -298,12 +317,20 @@ mod tests {
             closures: 120,
         };
         assert_eq!(
+            report.summary(),
+            "native engine: 2 of 3 POUs run as machine code (4096 bytes, translated in 2.5 ms)"
+        );
+        assert_eq!(
             report.lines(),
             [
-                "native engine: 2 of 3 POUs run as machine code (4096 bytes, translated in 2.5 ms)",
                 "native engine: POU 'FB_Filter' runs in the interpreter: instruction 41 (CallVirtual): a Cranelift error",
             ]
         );
+        let all_native = NativeReport {
+            fallbacks: Vec::new(),
+            ..report.clone()
+        };
+        assert!(all_native.lines().is_empty());
         assert!(report.runs_natively());
         let unavailable = NativeReport {
             unavailable: Some("this machine (riscv64) has no native code generator".into()),
@@ -322,9 +349,10 @@ mod tests {
             ..unavailable
         };
         assert_eq!(
-            interpreter.lines(),
-            ["engine: the interpreter runs all 3 POUs (--engine interpreter)"]
+            interpreter.summary(),
+            "engine: the interpreter runs all 3 POUs (--engine interpreter)"
         );
+        assert!(interpreter.lines().is_empty());
     }
 
     #[test]
