@@ -348,7 +348,11 @@ fn simulate_runs_under_either_engine_once_and_refuses_an_unknown_one() {
             engine,
         ]);
         assert!(output.status.success(), "{}", text_of(&output.stderr));
-        assert_eq!(text_of(&output.stdout), "main.n = 4\nmain.r = 2\n", "{engine}");
+        assert_eq!(
+            text_of(&output.stdout),
+            "main.n = 4\nmain.r = 2\n",
+            "{engine}"
+        );
         // Every POU runs as chosen: nothing to note.
         assert_eq!(text_of(&output.stderr), "", "{engine}");
     }
