@@ -181,3 +181,92 @@ impl jit::Host for Exec<'_> {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    #![allow(clippy::unwrap_used, clippy::expect_used)] // A panic is a failed test.
+
+    use super::*;
+    use crate::engine::exec::NEVER_DUE;
+    use crate::engine::{Engine, EngineChoice};
+    use crate::test_images::{TestTask, image};
+
+    #[test]
+    fn an_instance_outside_the_memory_is_a_memory_fault_at_the_pous_first_instruction() {
+        let (mut engine, report) = Engine::with_choice(
+            image(&[TestTask::cyclic(1_000_000, 0)], &[]),
+            EngineChoice::Native,
+        )
+        .unwrap();
+        if !report.runs_natively() {
+            // No machine code on this machine: nothing of the native engine to test.
+            assert!(!EngineChoice::native_available());
+            return;
+        }
+        let pou = engine.image.tasks[0].programs[0].pou as usize;
+        let Engine {
+            image,
+            regions,
+            code,
+            memory,
+            motion,
+            debug,
+            ..
+        } = &mut engine;
+        // Past the end even for a program whose instance is empty.
+        let beyond = memory.len() + 1;
+        let mut exec = Exec::new(
+            memory,
+            image,
+            regions,
+            code,
+            regions.stack(0),
+            0,
+            None,
+            motion,
+            (&NEVER_DUE, None),
+            (0, debug),
+        );
+        // The generated code checks its bases once when it is entered (native-engine.md §7
+        // rule 2); an instance past the memory's end is refused there, at instruction 0.
+        exec.bases[usize::from(INSTANCE)] = beyond;
+        let entries = code.native_entries.load(Ordering::Relaxed);
+        assert_eq!(exec.run(pou, 0), Err(FaultKind::Memory));
+        assert_eq!(exec.fault_at, Some((pou, 0)));
+        assert_eq!(code.native_entries.load(Ordering::Relaxed), entries + 1);
+        // The counters came back as they went in.
+        assert_eq!(exec.depth, 0);
+    }
+
+    #[test]
+    fn every_native_fault_is_the_interpreters_kind() {
+        assert_eq!(
+            fault_kind(jit::NativeFault::IndexOutOfBounds {
+                index: 11,
+                low: 1,
+                high: 10
+            }),
+            FaultKind::IndexOutOfBounds {
+                index: 11,
+                low: 1,
+                high: 10
+            }
+        );
+        assert_eq!(
+            fault_kind(jit::NativeFault::BadPointer(7 << 56)),
+            FaultKind::BadPointer(7 << 56)
+        );
+        assert_eq!(
+            fault_kind(jit::NativeFault::HostPanicked),
+            FaultKind::Internal("a host callback panicked".into())
+        );
+        for (native, kind) in [
+            (jit::NativeFault::DivisionByZero, FaultKind::DivisionByZero),
+            (jit::NativeFault::NullPointer, FaultKind::NullPointer),
+            (jit::NativeFault::StackOverflow, FaultKind::StackOverflow),
+            (jit::NativeFault::Memory, FaultKind::Memory),
+        ] {
+            assert_eq!(fault_kind(native), kind);
+        }
+    }
+}
