@@ -115,6 +115,23 @@ fn an_array_index_outside_its_bounds_faults_with_the_bounds() {
 }
 
 #[test]
+fn a_string_character_index_past_the_capacity_faults() {
+    // A STRING(4) has characters 0 to 4: the terminator's place is addressable.
+    faults(
+        "PROGRAM bad VAR s : STRING(4); b : BYTE; i : INT := 5; END_VAR
+         b := s[i]; (* character *)
+         END_PROGRAM",
+        "character",
+        "bad",
+        FaultKind::IndexOutOfBounds {
+            index: 5,
+            low: 0,
+            high: 4,
+        },
+    );
+}
+
+#[test]
 fn an_open_array_index_outside_its_bounds_faults_in_the_function() {
     faults(
         "FUNCTION Get : INT VAR_IN_OUT v : ARRAY[*] OF INT; END_VAR VAR_INPUT i : DINT; END_VAR
