@@ -983,6 +983,9 @@ fn the_example_project_s_ladder_and_fbd_programs_run_in_its_tasks() {
         Ok(image) => image,
         Err(error) => panic!("{error}"),
     };
+    // The example under both engines first, compared after each of 1,000 cycles without
+    // inputs; the checks below write between runs, on the default engine.
+    crate::simulate(image.clone(), 1000);
     let mut simulation = Simulation::new(image).expect("the image loads");
     let read = |simulation: &Simulation, path: &str| {
         runtime::value::read(simulation.engine(), path)
