@@ -9,6 +9,7 @@ use anyhow::Context as _;
 use compiler::CompileError;
 use program_image::ProgramImage;
 use project_model::load_project;
+use runtime::engine::EngineChoice;
 use runtime::simulation::Simulation;
 
 use crate::simulation_writes::SimulationWrite;
@@ -64,13 +65,15 @@ pub fn build(path: &Path, output: &Path) -> anyhow::Result<()> {
     Ok(())
 }
 
-/// `rivet simulate PATH --cycles N --watch A,B [--set CYCLE:PATH=VALUE]… [--json]`.
+/// `rivet simulate PATH --cycles N --watch A,B [--set CYCLE:PATH=VALUE]… [--json]
+/// [--engine native|interpreter]`.
 pub fn simulate(
     path: &Path,
     cycles: u64,
     watch: &[String],
     writes: &[String],
     json: bool,
+    engine: EngineChoice,
 ) -> anyhow::Result<()> {
     let image = compile_path(path)?;
     // Unknown variables and values that do not fit are refused before anything runs.
@@ -82,7 +85,13 @@ pub fn simulate(
         .iter()
         .map(|write| SimulationWrite::parse(write, &image, cycles))
         .collect::<anyhow::Result<Vec<_>>>()?;
-    let mut simulation = Simulation::new(image).context("the compiled image does not load")?;
+    let (mut simulation, report) =
+        Simulation::with_choice(image, engine).context("the compiled image does not load")?;
+    // Standard output stays the watched values; what runs in the interpreter although the
+    // native engine was chosen is a note on standard error (docs/native-engine.md §8.2).
+    for line in report.lines() {
+        eprintln!("note: {line}");
+    }
     // The cycles run in stretches from one write to the next; the writes of one cycle are made
     // in the order given, so a later one wins.
     let mut cycles_run = 0;

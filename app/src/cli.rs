@@ -11,6 +11,7 @@ use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
 use project_model::{LoadError, load_project, save_project};
+use runtime::engine::EngineChoice;
 
 use crate::debug_cli::{self, DebugCommand};
 use crate::online_cli::{self, OnlineCommand, Target};
@@ -76,6 +77,11 @@ pub enum Command {
         /// Print one JSON object mapping each watched path to its value.
         #[arg(long)]
         json: bool,
+        /// The engine that runs the program: `native` (machine code made at load; a POU it
+        /// cannot translate runs in the interpreter, said in a `note:` line) or `interpreter`.
+        /// The default is `native` on x86-64 and aarch64 and `interpreter` elsewhere.
+        #[arg(long, value_name = "native|interpreter", value_parser = ["native", "interpreter"])]
+        engine: Option<String>,
     },
     /// Import a PLCopen XML file (CODESYS, Beremiz, OpenPLC) into a new project, or merge it
     /// into an existing one; print the import report. Nothing is written unless the whole
@@ -277,7 +283,19 @@ pub fn run(command: Command) -> ExitCode {
             watch,
             writes,
             json,
-        } => crate::build_cli::simulate(&project, cycles, &watch, &writes, json),
+            engine,
+        } => {
+            // Refused before anything compiles or loads, as a wrong argument is.
+            let engine = match engine.as_deref().map(EngineChoice::for_this_machine) {
+                None => EngineChoice::default(),
+                Some(Ok(engine)) => engine,
+                Some(Err(refusal)) => {
+                    eprintln!("error: {refusal}");
+                    return ExitCode::from(2);
+                }
+            };
+            crate::build_cli::simulate(&project, cycles, &watch, &writes, json, engine)
+        }
         Command::Import {
             file,
             output,

@@ -327,6 +327,58 @@ fn simulate_prints_watched_values_as_text_and_json() {
     );
 }
 
+#[test]
+fn simulate_runs_under_either_engine_once_and_refuses_an_unknown_one() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("count.st");
+    fs::write(
+        &file,
+        "PROGRAM main VAR n : DINT; r : REAL; END_VAR n := n + 1; r := r + 0.5; END_PROGRAM",
+    )
+    .unwrap();
+    for engine in ["native", "interpreter"] {
+        let output = rivet(&[
+            "simulate",
+            path_str(&file),
+            "--cycles",
+            "4",
+            "--watch",
+            "main.n,main.r",
+            "--engine",
+            engine,
+        ]);
+        assert!(output.status.success(), "{}", text_of(&output.stderr));
+        assert_eq!(
+            text_of(&output.stdout),
+            "main.n = 4\nmain.r = 2\n",
+            "{engine}"
+        );
+        // Every POU runs as chosen: nothing to note.
+        assert_eq!(text_of(&output.stderr), "", "{engine}");
+    }
+    let output = rivet(&["simulate", path_str(&file), "--engine", "fast"]);
+    assert!(!output.status.success());
+    assert!(
+        text_of(&output.stderr).contains("invalid value 'fast' for '--engine"),
+        "{}",
+        text_of(&output.stderr)
+    );
+    let output = rivet(&[
+        "simulate",
+        path_str(&file),
+        "--engine",
+        "native",
+        "--engine",
+        "interpreter",
+    ]);
+    assert!(!output.status.success());
+    assert!(
+        text_of(&output.stderr).contains("cannot be used multiple times"),
+        "{}",
+        text_of(&output.stderr)
+    );
+}
+
 /// A project whose program `Counter` is a CFC chart: an ADD whose output feeds its own input
 /// (run second) and a MOVE reading that output first, so it sees the previous cycle's count.
 const CFC_COUNTER: &str = r#"kind = "program"

@@ -57,6 +57,13 @@ pub enum SettingsError {
     Isa(#[source] cranelift_codegen::CodegenError),
 }
 
+/// Whether this machine can run generated code: `Ok` when the instruction set of §8.1 can be
+/// made here, else why not. The runtime asks before it loads anything, so that an explicit
+/// `--engine native` on a machine without a backend is refused at once (§8.3).
+pub fn native_support() -> Result<(), NativeUnsupported> {
+    host_isa().map(drop)
+}
+
 /// The instruction set of this machine with the flags of §8.1.
 pub(crate) fn host_isa() -> Result<OwnedTargetIsa, NativeUnsupported> {
     let machine = std::env::consts::ARCH;

@@ -37,7 +37,7 @@ mod machine;
 mod module;
 mod translate;
 
-pub use isa::{NativeUnsupported, SettingsError};
+pub use isa::{NativeUnsupported, SettingsError, native_support};
 pub use layout::Layout;
 pub use module::{Code, Translation, Untranslated};
 pub use translate::host_calls::{

@@ -17,13 +17,59 @@ use program_image::{ProgramImage, Region};
 
 pub use difference::{AxisQuantity, Difference, Subject};
 
-use crate::engine::{Engine, LoadError};
+use crate::engine::{Engine, EngineChoice, LoadError, NativeReport};
 use crate::simulation::Simulation;
 
 use faults::FaultVerdict;
 
 /// The regions compared after every cycle, in the order a difference is looked for.
 const COMPARED_REGIONS: [Region; 4] = [Region::Data, Region::Input, Region::Output, Region::Memory];
+
+/// Loads `image` in the interpreter and in the native engine, runs both for `cycles` periods
+/// of the fastest task and compares them after the load and after every period, as
+/// [`run_against`] does with the native engine as the second.
+///
+/// The native load must translate every POU: a POU that fell back to the interpreter, or an
+/// image for which no machine code could be made on a machine that has a native code
+/// generator, is a [`Difference`] of cycle 0 with [`Subject::Load`] naming the fallbacks. (A
+/// test that expects a fallback calls [`run_against`] and says so.)
+pub fn run_both(
+    image: ProgramImage,
+    cycles: u64,
+    writes: impl FnMut(u64, &mut Engine),
+) -> Result<Simulation, Difference> {
+    let mut report = None;
+    let compared = run_against(image, cycles, writes, |image| {
+        let (simulation, native) = Simulation::with_choice(image, EngineChoice::Native)?;
+        report = Some(native);
+        Ok(simulation)
+    });
+    if let Some(report) = report
+        && let Some(fallback) = fallback(&report)
+    {
+        return Err(Difference {
+            cycle: 0,
+            subject: Subject::Load,
+            first: "runs in the interpreter".to_owned(),
+            second: fallback,
+        });
+    }
+    compared
+}
+
+/// What of the image does not run natively although it could, as one text; `None` when every
+/// POU runs as machine code, or when this machine has no native code generator at all.
+fn fallback(report: &NativeReport) -> Option<String> {
+    if report.unavailable.is_some() && jit::native_support().is_err() {
+        return None;
+    }
+    if report.runs_natively() && report.fallbacks.is_empty() {
+        return None;
+    }
+    let mut lines = vec![report.summary()];
+    lines.extend(report.lines());
+    Some(format!("falls back: {}", lines.join("; ")))
+}
 
 /// Loads `image` in the interpreter and with `second`, runs both for `cycles` periods of the
 /// fastest task (as [`Simulation::run`] counts them), and compares them after the load and
@@ -39,13 +85,15 @@ const COMPARED_REGIONS: [Region; 4] = [Region::Data, Region::Input, Region::Outp
 /// A cycle that ends in a watchdog, an abandoned halt or a stack overflow makes the memory and
 /// the axes depend on the engine's speed or build (§6.3): from that cycle on only the faults
 /// and the cycle counts are compared.
-pub fn run_both(
+pub fn run_against(
     image: ProgramImage,
     cycles: u64,
     mut writes: impl FnMut(u64, &mut Engine),
     second: impl FnOnce(ProgramImage) -> Result<Simulation, LoadError>,
 ) -> Result<Simulation, Difference> {
-    let (mut first, mut second) = match (Simulation::new(image.clone()), second(image)) {
+    let first = Simulation::with_choice(image.clone(), EngineChoice::Interpreter)
+        .map(|(simulation, _)| simulation);
+    let (mut first, mut second) = match (first, second(image)) {
         (Ok(first), Ok(second)) => (first, second),
         (first, second) => {
             return Err(Difference {

@@ -3,7 +3,7 @@
 
 use program_image::{ProgramImage, TaskKind};
 
-use crate::engine::{Engine, FaultRecord, LoadError};
+use crate::engine::{Engine, EngineChoice, FaultRecord, LoadError, NativeReport};
 
 /// The interval a freewheeling or event task gets in simulation, where nothing else paces it.
 pub const FREEWHEELING_INTERVAL_NS: u64 = 1_000_000;
@@ -22,18 +22,31 @@ pub struct Simulation {
 }
 
 impl Simulation {
-    /// Loads `image` at time 0.
+    /// Loads `image` at time 0 with the default engine ([`EngineChoice::default`]).
     pub fn new(image: ProgramImage) -> Result<Self, LoadError> {
-        let engine = Engine::new(image)?;
+        Self::with_choice(image, EngineChoice::default()).map(|(simulation, _)| simulation)
+    }
+
+    /// Loads `image` at time 0, run by the engine `choice` names; the report says what the
+    /// native engine made of it ([`Engine::with_choice`]).
+    pub fn with_choice(
+        image: ProgramImage,
+        choice: EngineChoice,
+    ) -> Result<(Self, NativeReport), LoadError> {
+        let (engine, report) = Engine::with_choice(image, choice)?;
+        Ok((Self::of_engine(engine), report))
+    }
+
+    fn of_engine(engine: Engine) -> Self {
         let tasks = engine.image().tasks.len();
-        Ok(Self {
+        Self {
             engine,
             now_ns: 0,
             horizon_ns: 0,
             next_due_ns: vec![0; tasks],
             cycles: vec![0; tasks],
             faults: Vec::new(),
-        })
+        }
     }
 
     /// The engine, for reading values.

@@ -494,6 +494,45 @@ async fn a_runtime_started_stopped_loads_its_image_and_runs_nothing() {
     );
 }
 
+#[test]
+fn the_load_says_which_engine_runs_the_image_and_an_unknown_engine_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let image = write_image(dir.path(), &image().encode());
+    for (engine, said) in [
+        (
+            "native",
+            "rivet-runtime: native engine: 1 of 1 POUs run as machine code (",
+        ),
+        (
+            "interpreter",
+            "rivet-runtime: engine: the interpreter runs all 1 POUs (--engine interpreter)",
+        ),
+    ] {
+        if engine == "native" && !runtime::engine::EngineChoice::native_available() {
+            continue;
+        }
+        let mut runtime = Runtime::start(
+            &dir.path().join("data"),
+            Some(&image),
+            &["--stopped", "--engine", engine],
+        );
+        let line = runtime.wait_for_message("engine");
+        assert!(line.starts_with(said), "{line}");
+        runtime.terminate();
+    }
+    let output = Command::new(env!("CARGO_BIN_EXE_rivet-runtime"))
+        .args(["--listen", "127.0.0.1:0", "--engine", "fast", "--data-dir"])
+        .arg(dir.path())
+        .output()
+        .unwrap();
+    assert!(!output.status.success());
+    let said = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        said.contains("invalid value 'fast' for '--engine"),
+        "{said}"
+    );
+}
+
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn a_fault_is_reported_on_standard_error_and_modbus_goes_on() {
     let dir = tempfile::tempdir().unwrap();

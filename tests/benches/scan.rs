@@ -2,8 +2,9 @@
 //! `cargo bench -p tests --bench scan`.
 //!
 //! Each workload is one task cycle of a generated ST program (1000 BOOL, DINT or REAL
-//! statements, or a 1000-iteration array loop) run by `runtime::engine::Engine`, next to the
-//! same computation in plain Rust. `cargo bench -p tests --bench scan_report` prints the
+//! statements, or a 1000-iteration array loop) run by `runtime::engine::Engine` in the
+//! interpreter (`…/runtime`) and in the native engine (`…/native`), next to the same
+//! computation in plain Rust (`…/rust`). `cargo bench -p tests --bench scan_report` prints the
 //! figures per statement as a table.
 
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::print_stdout)] // A bench binary.
@@ -16,7 +17,8 @@ use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 #[allow(dead_code)] // Parts used only by scan_report.
 mod workloads;
 
-use workloads::{Native, engine, workloads};
+use runtime::engine::EngineChoice;
+use workloads::{RustTwin, engine, engine_with, workloads};
 
 fn scan(c: &mut Criterion) {
     let mut group = c.benchmark_group("scan");
@@ -30,9 +32,17 @@ fn scan(c: &mut Criterion) {
                 engine.run_cycle(0, 0, cycle).is_ok()
             })
         });
-        let mut native = Native::default();
+        let mut native = engine_with(&workload, EngineChoice::Native);
+        let mut cycle = 0;
         group.bench_function(format!("{}/native", workload.name), |b| {
-            b.iter(|| (workload.native)(&mut native))
+            b.iter(|| {
+                cycle += 1;
+                native.run_cycle(0, 0, cycle).is_ok()
+            })
+        });
+        let mut rust = RustTwin::default();
+        group.bench_function(format!("{}/rust", workload.name), |b| {
+            b.iter(|| (workload.rust)(&mut rust))
         });
     }
     group.finish();

@@ -1,10 +1,11 @@
 //! The scan-time figures as a table to paste into a note:
 //! `cargo bench -p tests --bench scan_report`.
 //!
-//! Times one task cycle of each workload of `workloads` (the runtime) and one call of its
-//! native twin with `Instant` over many repetitions, takes the median of several batches, and
-//! prints nanoseconds per statement (or loop iteration) and per instruction, the native figure
-//! and their ratio. The fixed cost of a cycle (the empty program) is shown on its own line and
+//! Times one task cycle of each workload of `workloads` in the interpreter (the "runtime"
+//! columns) and in the native engine, and one call of its Rust twin, with `Instant` over many
+//! repetitions, takes the median of several batches, and prints nanoseconds per statement (or
+//! loop iteration) and per instruction, the native engine's and the Rust figure, and the
+//! interpreter's ratio to Rust. The fixed cost of a cycle (the empty program) is shown on its own line and
 //! not subtracted. Then what the debugger costs a call-heavy cycle (`debugger_cost`), then the
 //! engines against the workloads' C twins (`c_twins`, `docs/native-engine.md` §11.3; gcc or
 //! `RIVET_CC` must be installed).
@@ -26,7 +27,8 @@ mod c_twins;
 mod debugger_cost;
 mod workloads;
 
-use workloads::{Native, compile, engine, instructions, workloads};
+use runtime::engine::EngineChoice;
+use workloads::{RustTwin, compile, engine, engine_with, instructions, workloads};
 
 /// Batches timed per figure; the median is reported.
 const BATCHES: usize = 15;
@@ -81,9 +83,9 @@ fn main() {
         return;
     }
     println!(
-        "| workload | unit | units/cycle | instructions/cycle | runtime ns/cycle | runtime ns/unit | runtime ns/instruction | native ns/unit | ratio |"
+        "| workload | unit | units/cycle | instructions/cycle | runtime ns/cycle | runtime ns/unit | runtime ns/instruction | native engine ns/unit | Rust ns/unit | runtime ÷ Rust |"
     );
-    println!("|---|---|---:|---:|---:|---:|---:|---:|---:|");
+    println!("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|");
     for workload in workloads() {
         let image = compile(&workload);
         let static_instructions = instructions(&image);
@@ -93,8 +95,14 @@ fn main() {
             cycle += 1;
             black_box(engine.run_cycle(0, 0, cycle)).ok();
         });
-        let mut native = Native::default();
-        let native_ns = median_ns(|| (workload.native)(black_box(&mut native)));
+        let mut native = engine_with(&workload, EngineChoice::Native);
+        let mut native_cycle = 0;
+        let native_ns = median_ns(|| {
+            native_cycle += 1;
+            black_box(native.run_cycle(0, 0, native_cycle)).ok();
+        });
+        let mut rust = RustTwin::default();
+        let rust_ns = median_ns(|| (workload.rust)(black_box(&mut rust)));
         // A loop runs its body's instructions once per iteration; the others run each once.
         let executed = if workload.name == "array_loop" {
             executed_loop_instructions(&image)
@@ -117,7 +125,7 @@ fn main() {
             )
         };
         println!(
-            "| {} | {} | {} | {} | {:.0} | {:.2} | {} | {:.3} | {:.0} |",
+            "| {} | {} | {} | {} | {:.0} | {:.2} | {} | {:.3} | {:.3} | {:.0} |",
             workload.name,
             workload.unit,
             workload.units,
@@ -126,7 +134,8 @@ fn main() {
             runtime / units,
             per_instruction,
             native_ns / units,
-            runtime / native_ns.max(f64::MIN_POSITIVE),
+            rust_ns / units,
+            runtime / rust_ns.max(f64::MIN_POSITIVE),
         );
     }
     debugger_cost::report(&|f| median_ns(f));

@@ -34,6 +34,9 @@ mod elements;
 /// Every standard function and function block compiled, run and checked against its value.
 mod standard_library;
 
+/// Every fault of the native engine's checks, under both engines, with its task and line.
+mod native_faults;
+
 use program_image::ProgramImage;
 use runtime::simulation::Simulation;
 
@@ -63,9 +66,26 @@ fn run(source: &str, cycles: u64) -> Simulation {
     // Every image the compiler writes survives its own encoding.
     let decoded = ProgramImage::decode(&image.encode()).expect("the image decodes");
     assert_eq!(decoded, image);
-    let mut simulation = Simulation::new(image).expect("the image loads");
-    simulation.run(cycles);
-    simulation
+    simulate(image, cycles)
+}
+
+/// Runs `image` for `cycles` periods of its fastest task under both engines, compared after
+/// every period (`runtime::differential::run_both`, `docs/native-engine.md` §11.1), and
+/// returns the native engine's simulation; every POU must run natively.
+#[track_caller]
+fn simulate(image: ProgramImage, cycles: u64) -> Simulation {
+    simulate_with(image, cycles, |_, _| {})
+}
+
+/// [`simulate`] with `writes(n, engine)` before period `n` (from 1) in both engines.
+#[track_caller]
+fn simulate_with(
+    image: ProgramImage,
+    cycles: u64,
+    writes: impl FnMut(u64, &mut runtime::engine::Engine),
+) -> Simulation {
+    runtime::differential::run_both(image, cycles, writes)
+        .unwrap_or_else(|difference| panic!("the engines differ: {difference}"))
 }
 
 /// The value of `path` as an IEC literal.

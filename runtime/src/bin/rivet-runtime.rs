@@ -18,6 +18,7 @@ use anyhow::Context;
 use clap::Parser;
 use program_image::ProgramImage;
 use runtime::areas::LocatedAreas;
+use runtime::engine::EngineChoice;
 use runtime::modbus::master::MasterOptions;
 use runtime::modbus::rtu_slave::{
     DamagedFrameReports, RtuPortEvent, RtuSlaveCounters, RtuSlaveOptions, serve_rtu_port,
@@ -101,6 +102,12 @@ struct Arguments {
     #[arg(long, value_name = "1-247", default_value_t = 1, requires = "modbus_rtu",
           value_parser = clap::value_parser!(u8).range(1..=247))]
     modbus_rtu_unit: u8,
+    /// The engine that runs the program (`docs/native-engine.md` §8.3): `native` translates it
+    /// to machine code at load (a POU it cannot translate runs in the interpreter), or
+    /// `interpreter`. The default is `native` on x86-64 and aarch64 and `interpreter`
+    /// elsewhere; `native` on a machine without a native code generator is refused.
+    #[arg(long, value_name = "native|interpreter", value_parser = ["native", "interpreter"])]
+    engine: Option<String>,
     /// No longer accepted (visible in the process list): refused with a message saying where
     /// the password goes now.
     #[arg(long, hide = true)]
@@ -124,14 +131,25 @@ const FAULT_REPORT_INTERVAL: Duration = Duration::from_millis(100);
 
 fn main() -> anyhow::Result<()> {
     let arguments = Arguments::parse();
+    // Refused before anything loads, as a wrong argument is (exit status 2).
+    let engine = match &arguments.engine {
+        None => EngineChoice::default(),
+        Some(value) => match EngineChoice::for_this_machine(value) {
+            Ok(engine) => engine,
+            Err(refusal) => {
+                eprintln!("error: {refusal}");
+                std::process::exit(2);
+            }
+        },
+    };
     tokio::runtime::Builder::new_current_thread()
         .enable_all()
         .build()
         .context("cannot start the async runtime")?
-        .block_on(run(arguments))
+        .block_on(run(arguments, engine))
 }
 
-async fn run(arguments: Arguments) -> anyhow::Result<()> {
+async fn run(arguments: Arguments, engine: EngineChoice) -> anyhow::Result<()> {
     let password = read_password(
         arguments.password.as_deref(),
         arguments.password_file.as_deref(),
@@ -167,6 +185,7 @@ async fn run(arguments: Arguments) -> anyhow::Result<()> {
             // One line per change of a device's state, never per request (§4.2).
             state_lines: Some(Arc::new(|line: &str| eprintln!("{line}"))),
         },
+        engine,
         ..SchedulerOptions::default()
     };
     let scheduler = Arc::new(Scheduler::spawn(Arc::clone(&areas), options)?);
@@ -340,6 +359,10 @@ fn load(scheduler: &Scheduler, path: &Path) -> Option<ModbusMap> {
     match scheduler.load(image) {
         Ok(report) => {
             eprintln!("rivet-runtime: loaded {}", path.display());
+            eprintln!("rivet-runtime: {}", report.native.summary());
+            for line in report.native.lines() {
+                eprintln!("rivet-runtime: {line}");
+            }
             if let Some(retain) = report.retain {
                 eprintln!("rivet-runtime: {retain}");
             }

@@ -1,4 +1,4 @@
-//! [`super::run_both`] on a hand-made image, with two interpreters and with a second engine
+//! [`super::run_against`] on a hand-made image, with two interpreters and with a second engine
 //! corrupted on purpose.
 
 #![allow(clippy::unwrap_used)] // A panic is a failed test.
@@ -180,7 +180,7 @@ fn zero_divisor_before_cycle_3(cycle: u64, engine: &mut Engine) {
 
 #[test]
 fn two_equal_engines_agree_and_the_second_simulation_is_given_back() {
-    let simulation = run_both(image(), 5, no_writes, Simulation::new).unwrap();
+    let simulation = run_against(image(), 5, no_writes, Simulation::new).unwrap();
     assert_eq!(simulation.cycles(), [5]);
     assert_eq!(
         value::read(simulation.engine(), "Main.n"),
@@ -196,7 +196,7 @@ fn two_equal_engines_agree_and_the_second_simulation_is_given_back() {
 #[test]
 fn one_corrupted_byte_is_found_and_named_by_its_member_and_element_path() {
     let second = corrupted(|engine| engine.region_mut(Region::Data)[S2_B] ^= 1);
-    let difference = differs(run_both(image(), 5, no_writes, second));
+    let difference = differs(run_against(image(), 5, no_writes, second));
     assert_eq!(difference.cycle, 0);
     assert_eq!(
         difference.subject,
@@ -225,7 +225,7 @@ fn a_difference_made_by_the_code_is_found_after_the_cycle_that_made_it() {
         }
         Simulation::new(image)
     };
-    let difference = differs(run_both(image(), 5, no_writes, second));
+    let difference = differs(run_against(image(), 5, no_writes, second));
     assert_eq!(difference.cycle, 1);
     assert_eq!(
         difference.subject,
@@ -247,7 +247,7 @@ fn a_changed_constant_pool_is_found_after_loading() {
         image.constants[4] = 99;
         Simulation::new(image)
     };
-    let difference = differs(run_both(image(), 5, no_writes, second));
+    let difference = differs(run_against(image(), 5, no_writes, second));
     assert_eq!(difference.cycle, 0);
     assert_eq!(difference.subject, Subject::Constants { offset: 4 });
     assert_eq!(
@@ -264,7 +264,7 @@ fn writes_that_differ_between_the_engines_are_the_tests_difference() {
         written += 1;
         engine.region_mut(Region::Data)[0..4].copy_from_slice(&i32::to_le_bytes(written));
     };
-    let difference = differs(run_both(image(), 2, writes, Simulation::new));
+    let difference = differs(run_against(image(), 2, writes, Simulation::new));
     assert_eq!(difference.cycle, 1);
     assert!(
         matches!(&difference.subject, Subject::Writes { place } if matches!(**place, Subject::Memory { offset: 0, .. })),
@@ -276,7 +276,7 @@ fn writes_that_differ_between_the_engines_are_the_tests_difference() {
 #[test]
 fn padding_and_bytes_no_symbol_covers_are_named_as_such() {
     let second = corrupted(|engine| engine.region_mut(Region::Data)[PADDING] = 0x5A);
-    let difference = differs(run_both(image(), 1, no_writes, second));
+    let difference = differs(run_against(image(), 1, no_writes, second));
     assert_eq!(
         difference.subject.to_string(),
         "Main (padding) (data byte 13)"
@@ -286,7 +286,7 @@ fn padding_and_bytes_no_symbol_covers_are_named_as_such() {
         ("byte 16#00", "byte 16#5A")
     );
     let second = corrupted(|engine| engine.region_mut(Region::Input)[3] = 7);
-    let difference = differs(run_both(image(), 1, no_writes, second));
+    let difference = differs(run_against(image(), 1, no_writes, second));
     assert_eq!(difference.subject.to_string(), "%I byte 3 (no variable)");
     assert_eq!(difference.second, "byte 16#07");
 }
@@ -294,7 +294,7 @@ fn padding_and_bytes_no_symbol_covers_are_named_as_such() {
 #[test]
 fn a_located_bit_is_named_when_it_differs_and_its_word_otherwise() {
     let second = corrupted(|engine| engine.region_mut(Region::Input)[0] |= 1 << 3);
-    let difference = differs(run_both(image(), 1, no_writes, second));
+    let difference = differs(run_against(image(), 1, no_writes, second));
     assert_eq!(
         difference.subject,
         Subject::Memory {
@@ -308,14 +308,14 @@ fn a_located_bit_is_named_when_it_differs_and_its_word_otherwise() {
         ("FALSE", "TRUE")
     );
     let second = corrupted(|engine| engine.region_mut(Region::Input)[0] |= 1 << 5);
-    let difference = differs(run_both(image(), 1, no_writes, second));
+    let difference = differs(run_against(image(), 1, no_writes, second));
     assert_eq!(difference.subject.to_string(), "In_word (%I byte 0)");
     assert_eq!(difference.second, "32 (16#0020)");
 }
 
 #[test]
 fn writes_reach_both_engines_and_an_equal_fault_is_no_difference() {
-    let simulation = run_both(image(), 5, zero_divisor_before_cycle_3, Simulation::new).unwrap();
+    let simulation = run_against(image(), 5, zero_divisor_before_cycle_3, Simulation::new).unwrap();
     let faults = simulation.faults();
     assert_eq!(faults.len(), 1, "{faults:?}");
     assert_eq!(faults[0].kind, crate::engine::FaultKind::DivisionByZero);
@@ -330,7 +330,7 @@ fn a_fault_at_another_line_is_a_difference_of_its_cycle() {
         image.pous[0].lines[2].line = 6;
         Simulation::new(image)
     };
-    let difference = differs(run_both(image(), 5, zero_divisor_before_cycle_3, second));
+    let difference = differs(run_against(image(), 5, zero_divisor_before_cycle_3, second));
     assert_eq!(difference.cycle, 3);
     assert_eq!(difference.subject, Subject::Fault { index: 0 });
     assert!(difference.first.contains("main.st:5"), "{difference}");
@@ -343,7 +343,7 @@ fn a_load_that_fails_in_one_engine_is_a_difference_of_cycle_0() {
         image.tasks[0].programs[0].pou = 9;
         Simulation::new(image)
     };
-    let difference = differs(run_both(image(), 5, no_writes, second));
+    let difference = differs(run_against(image(), 5, no_writes, second));
     assert_eq!(difference.cycle, 0);
     assert_eq!(difference.subject, Subject::Load);
     assert_eq!(difference.first, "loads");
@@ -395,7 +395,7 @@ fn after_a_stack_overflow_the_memory_is_no_longer_compared_but_the_fault_is() {
     // pool, so only the memory can differ): after the overflow, which both report in the same
     // task and POU, their memory legitimately differs.
     let second = |_| Simulation::new(recursive_image(BinaryOp::Sub));
-    let simulation = run_both(recursive_image(BinaryOp::Add), 3, no_writes, second).unwrap();
+    let simulation = run_against(recursive_image(BinaryOp::Add), 3, no_writes, second).unwrap();
     let faults = simulation.faults();
     assert_eq!(faults.len(), 1, "{faults:?}");
     assert_eq!(faults[0].kind, crate::engine::FaultKind::StackOverflow);
@@ -404,4 +404,18 @@ fn after_a_stack_overflow_the_memory_is_no_longer_compared_but_the_fault_is() {
         panic!("Main.s[3].b reads as a DINT");
     };
     assert!(grown < 0, "{grown}");
+}
+
+#[test]
+fn the_native_engine_agrees_with_the_interpreter_and_runs_the_image_natively() {
+    let simulation = run_both(image(), 5, zero_divisor_before_cycle_3).unwrap();
+    assert_eq!(simulation.faults().len(), 1);
+    assert_eq!(
+        simulation.faults()[0].kind,
+        crate::engine::FaultKind::DivisionByZero
+    );
+    if jit::native_support().is_ok() {
+        assert!(simulation.engine().native_report().runs_natively());
+        assert!(simulation.engine().native_entries() > 0);
+    }
 }

@@ -64,7 +64,7 @@ pub(crate) struct Exec<'a> {
     /// The image, lent with the memory to a task that interrupts this cycle.
     pub(super) image: &'a Arc<ProgramImage>,
     /// Set when a task of higher priority may be due; read at every safe point.
-    due: &'a AtomicBool,
+    pub(super) due: &'a AtomicBool,
     /// Runs the tasks that interrupt this cycle, and serves a halt; `None` when nothing may.
     pub(super) hook: Option<&'a mut dyn Preempt>,
     /// The task whose cycle this is.
@@ -86,10 +86,16 @@ pub(crate) struct Exec<'a> {
     /// stands still during a cycle. `TIME()` and `LTIME()` add the time elapsed since.
     pub(crate) clock_started: Option<Instant>,
     pub(crate) deadline: Option<(Instant, u64)>,
-    budget: u32,
-    depth: u32,
+    /// Backward jumps left before the watchdog looks at the clock; carried into and out of
+    /// generated code (`docs/native-engine.md` §4.2).
+    pub(super) budget: u32,
+    /// Calls nested; carried into and out of generated code like the budget.
+    pub(super) depth: u32,
     /// Where the first fault happened: POU index and instruction index.
     pub(crate) fault_at: Option<(usize, usize)>,
+    /// The fault a callback of generated code recorded, kept until the `Code::run` that
+    /// entered the code returns `Faulted` ([`Exec::run_native`]).
+    pub(super) native_fault: Option<FaultKind>,
     /// [`stack_position`] when the cycle started.
     native_base: usize,
     /// The motion kernel and the state of the native motion blocks.
@@ -134,6 +140,7 @@ impl<'a> Exec<'a> {
             budget: WATCHDOG_STRIDE,
             depth: 0,
             fault_at: None,
+            native_fault: None,
             native_base: stack_position(),
             motion,
         }
@@ -205,6 +212,14 @@ impl<'a> Exec<'a> {
     pub(super) fn tick(&mut self, pc: usize) -> Result<bool, FaultKind> {
         let watched = self.safe_point(pc)?;
         self.budget -= 1;
+        self.look_at_the_clock()?;
+        Ok(watched)
+    }
+
+    /// When the budget of backward jumps is spent: its reset, and the watchdog's look at the
+    /// clock. Generated code counts the budget itself and calls this through its tick.
+    #[inline(always)]
+    pub(super) fn look_at_the_clock(&mut self) -> Result<(), FaultKind> {
         if self.budget == 0 {
             self.budget = WATCHDOG_STRIDE;
             if let Some((deadline, limit_us)) = self.deadline
@@ -213,7 +228,7 @@ impl<'a> Exec<'a> {
                 return Err(FaultKind::Watchdog { limit_us });
             }
         }
-        Ok(watched)
+        Ok(())
     }
 
     /// Lets the tasks of higher priority that are due run, when the alarm says one may be;
@@ -222,7 +237,7 @@ impl<'a> Exec<'a> {
     /// the scheduler abandoned the cycles in progress meanwhile (a stop while a task is
     /// halted).
     #[inline(always)]
-    fn safe_point(&mut self, at: usize) -> Result<bool, FaultKind> {
+    pub(super) fn safe_point(&mut self, at: usize) -> Result<bool, FaultKind> {
         if self.due.load(Ordering::Relaxed) {
             return self.preempt(at);
         }
@@ -274,6 +289,13 @@ impl<'a> Exec<'a> {
             return self.run_watched(index, call_site);
         }
         let code = self.code;
+        // The one dispatch between the engines (`docs/native-engine.md` §1.3): a cycle
+        // without the debugger runs each POU that has machine code natively.
+        if let Some(native) = &code.native
+            && native.has(index as u32)
+        {
+            return self.run_native(native, index);
+        }
         let Some(pou) = code.pous.get(index) else {
             return Err(FaultKind::Memory);
         };
@@ -318,6 +340,17 @@ impl<'a> Exec<'a> {
         {
             return Err(FaultKind::StackOverflow);
         }
+        self.prepare_frame(index, frame)?;
+        self.sp = end;
+        self.depth += 1;
+        Ok(frame)
+    }
+
+    /// Zeroes the frame of POU `index` at `frame` and writes its initial values.
+    pub(super) fn prepare_frame(&mut self, index: usize, frame: usize) -> Result<(), FaultKind> {
+        let code = self.code;
+        let pou = code.pous.get(index).ok_or(FaultKind::Memory)?;
+        let end = frame.checked_add(pou.frame_size).ok_or(FaultKind::Memory)?;
         let bytes = self.mem.get_mut(frame..end).ok_or(FaultKind::Memory)?;
         bytes.fill(0);
         for (offset, init) in &pou.frame_init {
@@ -325,9 +358,13 @@ impl<'a> Exec<'a> {
                 place.copy_from_slice(init);
             }
         }
-        self.sp = end;
-        self.depth += 1;
-        Ok(frame)
+        Ok(())
+    }
+
+    /// The lowest native stack pointer generated code may call from: the same bound
+    /// [`Exec::push_frame`] measures against, so a cycle that mixes engines is bounded once.
+    pub(super) fn native_stack_limit(&self) -> u64 {
+        self.native_base.saturating_sub(NATIVE_STACK_BUDGET) as u64
     }
 
     /// Undoes the depth count of [`Exec::push_frame`].

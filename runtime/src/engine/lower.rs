@@ -47,6 +47,13 @@ pub(crate) struct CompiledPou {
 /// Every POU of an image ready to run.
 pub(crate) struct Compiled {
     pub(crate) pous: Vec<CompiledPou>,
+    /// The machine code of the POUs the native engine translated, when it was chosen and could
+    /// make code (`docs/native-engine.md` §1.3); the closures above stay for every POU.
+    pub(crate) native: Option<jit::Code>,
+    /// How many times generated code was entered from the interpreter, counted for the tests
+    /// that a cycle runs natively (one thread runs an engine at a time, so a relaxed load and
+    /// store count exactly, without a locked instruction).
+    pub(crate) native_entries: std::sync::atomic::AtomicU64,
 }
 
 /// Why an instruction cannot run (a type the operation does not apply to).
@@ -97,7 +104,11 @@ impl Compiled {
                     .collect(),
             });
         }
-        Ok(Self { pous })
+        Ok(Self {
+            pous,
+            native: None,
+            native_entries: std::sync::atomic::AtomicU64::new(0),
+        })
     }
 }
 
@@ -788,7 +799,18 @@ fn arith1<T: Arith>(dst: Addr, src: Addr, f: fn(T) -> T) -> Op {
 }
 
 fn real1<T: Real>(op: UnaryOp, dst: Addr, src: Addr) -> Op {
-    let f: fn(f64) -> f64 = match op {
+    let f = real_function(op);
+    Box::new(move |x| {
+        let value = x.get::<T>(src)?.apply(f);
+        x.set(dst, value)?;
+        Ok(Flow::Next)
+    })
+}
+
+/// The `f64` function a unary operation applies to a real (computed in `f64` and rounded back
+/// for REAL); the native engine's pure functions call the same (`engine/jit_pure.rs`).
+pub(crate) fn real_function(op: UnaryOp) -> fn(f64) -> f64 {
+    match op {
         UnaryOp::Sqrt => f64::sqrt,
         UnaryOp::Ln => f64::ln,
         UnaryOp::Log => f64::log10,
@@ -803,12 +825,7 @@ fn real1<T: Real>(op: UnaryOp, dst: Addr, src: Addr) -> Op {
         UnaryOp::Neg => |v| -v,
         UnaryOp::Abs => f64::abs,
         UnaryOp::Not | UnaryOp::ToBcd | UnaryOp::FromBcd => |v| v,
-    };
-    Box::new(move |x| {
-        let value = x.get::<T>(src)?.apply(f);
-        x.set(dst, value)?;
-        Ok(Flow::Next)
-    })
+    }
 }
 
 fn binary(op: BinaryOp, ty: E, dst: Addr, a: Addr, b: Addr) -> Result<Op, String> {

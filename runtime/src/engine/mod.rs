@@ -8,10 +8,13 @@
 
 mod blocks;
 mod carry;
+mod choice;
 mod debug;
 mod exec;
 mod exec_debug;
 mod fault;
+mod jit_host;
+mod jit_pure;
 mod lower;
 mod memory;
 mod native;
@@ -26,6 +29,7 @@ use std::sync::Arc;
 use program_image::{InitRun, ProgramImage, Region};
 
 pub use carry::carry_retained;
+pub use choice::{EngineChoice, EngineChoiceError, NativeReport, PouFallback};
 pub use debug::{
     Breakpoint, BreakpointSpec, DebugError, DebugState, FlowRecording, FlowRecordings, FlowTrack,
     Halt, HaltReason, HitMode, MAX_BREAKPOINTS, MAX_FLOW_TRACKS, StackFrame, StepKind, TaskDebug,
@@ -64,6 +68,8 @@ pub struct Engine {
     memory: Vec<u8>,
     motion: native::MotionState,
     debug: DebugState,
+    /// What the engine choice made of the image at load.
+    native_report: NativeReport,
 }
 
 /// Why an image cannot be loaded.
@@ -81,12 +87,41 @@ pub enum LoadError {
 }
 
 impl Engine {
-    /// Verifies and loads `image`, with memory as after a cold start.
+    /// Verifies and loads `image`, with memory as after a cold start, with the default engine
+    /// ([`EngineChoice::default`]).
     pub fn new(image: ProgramImage) -> Result<Self, LoadError> {
+        Self::with_choice(image, EngineChoice::default()).map(|(engine, _)| engine)
+    }
+
+    /// Verifies and loads `image`, with memory as after a cold start, run by the engine
+    /// `choice` names (`docs/native-engine.md` §8). With [`EngineChoice::Native`] the image is
+    /// translated here, on the loading thread; a POU the translator refuses, or the whole image
+    /// when no machine code can be made, runs in the interpreter, which the report says.
+    pub fn with_choice(
+        image: ProgramImage,
+        choice: EngineChoice,
+    ) -> Result<(Self, NativeReport), LoadError> {
         image.verify()?;
         let regions = Regions::of(&image, image.tasks.len());
-        let code = Compiled::new(&image, &regions)?;
+        let mut code = Compiled::new(&image, &regions)?;
         let motion = native::MotionState::new(&image)?;
+        let native_report = match choice {
+            EngineChoice::Interpreter => NativeReport::interpreter(&image),
+            EngineChoice::Native => {
+                let started = std::time::Instant::now();
+                let layout = jit::Layout::of(&image, image.tasks.len());
+                match jit::Translation::new(&image, &layout, &jit_pure::PURE_FUNCTIONS) {
+                    Ok(native) => {
+                        let report = NativeReport::native(&image, &native, started.elapsed());
+                        code.native = Some(native);
+                        report
+                    }
+                    Err(unsupported) => {
+                        NativeReport::unavailable(&image, &unsupported, started.elapsed())
+                    }
+                }
+            }
+        };
         let mut engine = Self {
             debug: DebugState::new(&image),
             memory: vec![0; regions.total],
@@ -94,9 +129,23 @@ impl Engine {
             regions,
             code,
             motion,
+            native_report: native_report.clone(),
         };
         engine.reset(ResetKind::Origin);
-        Ok(engine)
+        Ok((engine, native_report))
+    }
+
+    /// What the engine choice made of the image at load.
+    pub fn native_report(&self) -> &NativeReport {
+        &self.native_report
+    }
+
+    /// How many times generated code was entered from the interpreter since the image loaded:
+    /// 0 unless the native engine runs, and it does not in a cycle the debugger watches.
+    pub fn native_entries(&self) -> u64 {
+        self.code
+            .native_entries
+            .load(std::sync::atomic::Ordering::Relaxed)
     }
 
     /// The image being run.

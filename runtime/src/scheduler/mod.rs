@@ -60,7 +60,10 @@ use std::time::Duration;
 use program_image::{ImageHash, ProgramImage};
 
 use crate::areas::LocatedAreas;
-use crate::engine::{AppliedChange, Engine, FaultRecord, LoadError, OnlineChangePlan, ResetKind};
+use crate::engine::{
+    AppliedChange, Engine, EngineChoice, FaultRecord, LoadError, NativeReport, OnlineChangePlan,
+    ResetKind,
+};
 use crate::modbus::master::{DeviceStatus, Master, MasterError, MasterHandle, MasterOptions};
 use crate::online::{Forces, Memory, Trace};
 use crate::retain::{RetainError, RetainRestore};
@@ -111,6 +114,9 @@ pub struct SchedulerOptions {
     /// The Modbus master of an image with runtime devices (`docs/modbus-master.md` §6.11): on
     /// or off, the serial ports' device files on this machine, where state lines go.
     pub modbus_master: MasterOptions,
+    /// The engine every image is loaded with: by [`Scheduler::load`], and by the online
+    /// services for a download or an online change (`docs/native-engine.md` §8.3).
+    pub engine: EngineChoice,
 }
 
 /// A snapshot of the scheduler's state, statistics and faults.
@@ -153,6 +159,9 @@ pub struct LoadReport {
     /// How many RETAIN and PERSISTENT variables of the program loaded before kept their
     /// values because they kept their path and type.
     pub carried: usize,
+    /// What the engine choice made of the image (`docs/native-engine.md` §8.2); the online
+    /// services do not send it in protocol version 3.
+    pub native: NativeReport,
 }
 
 /// What an online change did (`docs/protocol.md` §7, `ONLINE_CHANGE_APPLY`).
@@ -241,6 +250,8 @@ pub struct Scheduler {
     modbus_devices: ModbusDevices,
     /// How the masters run; each load's master is prepared on the caller's thread.
     modbus_master: MasterOptions,
+    /// The engine every image is loaded with.
+    engine: EngineChoice,
     thread: Option<JoinHandle<()>>,
 }
 
@@ -251,7 +262,7 @@ pub(crate) type ModbusDevices = Arc<Mutex<Vec<Arc<Mutex<DeviceStatus>>>>>;
 impl Default for SchedulerOptions {
     /// No data directory; retained values saved every second; a freewheeling task pauses
     /// 500 µs; event triggers looked at every millisecond at least; no spinning; preemption on;
-    /// no cycle log; normal scheduling; the Modbus master on.
+    /// no cycle log; normal scheduling; the Modbus master on; the default engine.
     fn default() -> Self {
         Self {
             data_dir: None,
@@ -263,6 +274,7 @@ impl Default for SchedulerOptions {
             cycle_log: None,
             realtime_priority: None,
             modbus_master: MasterOptions::default(),
+            engine: EngineChoice::default(),
         }
     }
 }
@@ -285,6 +297,7 @@ impl Scheduler {
         }));
         let realtime_priority = options.realtime_priority;
         let modbus_master = options.modbus_master.clone();
+        let engine = options.engine;
         let modbus_devices = ModbusDevices::default();
         let worker = worker::Worker::new(
             areas,
@@ -316,6 +329,7 @@ impl Scheduler {
             status,
             modbus_devices,
             modbus_master,
+            engine,
             thread: Some(thread),
         })
     }
@@ -325,7 +339,8 @@ impl Scheduler {
     /// it ran. When the image is refused, everything stays as it was.
     pub fn load(&self, image: ProgramImage) -> Result<LoadReport, SchedulerError> {
         let identity = image.identity();
-        let engine = Engine::new(image)?;
+        // Translated here, on the caller's thread: the tasks go on meanwhile.
+        let (engine, _) = Engine::with_choice(image, self.engine)?;
         // The new master is made here, not on the scheduler's thread, which may run at
         // real-time priority and must not wait for threads to start; its devices begin
         // polling once the old master has closed its connections and ports.
@@ -336,6 +351,12 @@ impl Scheduler {
         drop(retired);
         starter.go();
         loaded
+    }
+
+    /// The engine every image is loaded with ([`SchedulerOptions::engine`]); an online change
+    /// prepares its new engine with it too.
+    pub fn engine_choice(&self) -> EngineChoice {
+        self.engine
     }
 
     /// Replaces the running program, made from the image `from`, with `engine` (made from

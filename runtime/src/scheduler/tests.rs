@@ -102,6 +102,70 @@ fn a_cyclic_task_keeps_statistics_and_writes_its_outputs() {
 }
 
 #[test]
+fn a_native_endless_loop_is_ended_by_its_watchdog_at_a_backward_jump() {
+    let options = SchedulerOptions {
+        engine: EngineChoice::Native,
+        ..SchedulerOptions::default()
+    };
+    let (scheduler, areas) = scheduler(options);
+    let slow = TestTask {
+        watchdog_ns: 10 * MS,
+        watchdog_sensitivity: 1,
+        body: Body::Slow,
+        ..TestTask::cyclic(100 * MS, 3)
+    };
+    let report = scheduler
+        .load(image(&[slow, TestTask::cyclic(MS, 0)], &[]))
+        .unwrap();
+    if jit::native_support().is_err() {
+        // Nothing runs natively on this machine; the interpreter's watchdog is tested above.
+        assert!(!report.native.runs_natively());
+        return;
+    }
+    assert!(report.native.runs_natively(), "{:?}", report.native);
+    assert!(report.native.fallbacks.is_empty(), "{:?}", report.native);
+    // Natively too, i32::MAX rounds take far longer than 10 ms.
+    areas
+        .lock()
+        .unwrap()
+        .write_bytes(Area::Memory, 0, &i32::MAX.to_le_bytes())
+        .unwrap();
+    scheduler.start().unwrap();
+    let status = wait_for(&scheduler, "the watchdog", |status| {
+        !status.faults.is_empty()
+    });
+    let fault = &status.faults[0];
+    assert_eq!(fault.task, "Task0");
+    assert_eq!(fault.pou, "Program0");
+    assert_eq!(
+        fault.kind,
+        crate::engine::FaultKind::Watchdog { limit_us: 10_000 }
+    );
+    // The watchdog looks at the clock at a backward jump only.
+    let image = scheduler
+        .between(|between| between.memory.as_ref().unwrap().engine.shared_image())
+        .unwrap();
+    let pou = image
+        .pous
+        .iter()
+        .find(|pou| pou.name == "Program0")
+        .unwrap();
+    assert!(
+        matches!(
+            pou.code[fault.instruction as usize],
+            program_image::Instr::Jump { target } if target <= fault.instruction
+        ),
+        "{fault}: {:?}",
+        pou.code[fault.instruction as usize]
+    );
+    // The other task goes on.
+    let cycles = status.tasks[1].cycles;
+    wait_for(&scheduler, "the other task to go on", |status| {
+        status.tasks[1].cycles >= cycles + 10
+    });
+}
+
+#[test]
 fn a_task_past_its_watchdog_faults_and_the_others_go_on() {
     let (scheduler, areas) = scheduler(SchedulerOptions::default());
     let slow = TestTask {

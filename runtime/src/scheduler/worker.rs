@@ -402,6 +402,7 @@ impl Worker {
             areas.forget_writes();
         }
         let plans = engine.image().tasks.iter().map(TaskPlan::new).collect();
+        let native = engine.native_report().clone();
         let old = self.program.replace(Program {
             engine,
             plans,
@@ -416,7 +417,11 @@ impl Worker {
             self.start()?;
         }
         saved?;
-        Ok(LoadReport { retain, carried })
+        Ok(LoadReport {
+            retain,
+            carried,
+            native,
+        })
     }
 
     fn start(&mut self) -> Result<(), SchedulerError> {

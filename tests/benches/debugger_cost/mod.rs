@@ -95,7 +95,11 @@ fn breakpoint(image: &ProgramImage, pou: &str, condition: Vec<u8>) -> Breakpoint
 fn engine(way: Way) -> Engine {
     let project = compiler::SourceProject::new(SOURCE);
     let image = compiler::compile_source(&project, "debugger.st").expect("the program compiles");
-    let mut engine = Engine::new(image.clone()).expect("the image loads");
+    // The interpreter, as the debugger's cost is measured against it; a cycle without a
+    // session would run natively by default (docs/native-engine.md §1.3).
+    let (mut engine, _) =
+        Engine::with_choice(image.clone(), runtime::engine::EngineChoice::Interpreter)
+            .expect("the image loads");
     match way {
         Way::NoSession => {}
         Way::SessionWithoutBreakpoints => engine.debug_mut().begin_session(),

@@ -1,11 +1,11 @@
 //! The scan-time workloads shared by the `scan` (criterion) and `scan_report` (table) benches:
 //! each is an ST program generated here, compiled and loaded into an engine, and the same
-//! computation written in plain Rust as the native reference.
+//! computation written in plain Rust as the Rust reference.
 
 use std::hint::black_box;
 
 use program_image::{Instr, ProgramImage};
-use runtime::engine::Engine;
+use runtime::engine::{Engine, EngineChoice};
 use runtime::value::{self, Value};
 
 /// Statements per generated program, and iterations of the array loop.
@@ -14,7 +14,7 @@ pub const COUNT: usize = 1000;
 /// Rounds of the string statements per cycle.
 pub const STRING_ROUNDS: usize = 100;
 
-/// One workload: the program and its native twin.
+/// One workload: the program and its Rust twin.
 pub struct Workload {
     /// A short name for tables and criterion ids.
     pub name: &'static str,
@@ -24,15 +24,15 @@ pub struct Workload {
     pub source: String,
     /// Units of work in one cycle.
     pub units: usize,
-    /// The native reference: one call does what one cycle does.
-    pub native: fn(&mut Native),
-    /// A variable whose value after a few cycles the engine and the native twin must agree on.
+    /// The Rust reference: one call does what one cycle does.
+    pub rust: fn(&mut RustTwin),
+    /// A variable whose value after a few cycles the engine and the Rust twin must agree on.
     pub check: &'static str,
 }
 
-/// The native reference's variables, one field per ST variable.
+/// The Rust reference's variables, one field per ST variable.
 #[derive(Clone, Debug)]
-pub struct Native {
+pub struct RustTwin {
     /// BOOLs `b1` … `b5`.
     pub b: [bool; 5],
     /// DINTs `i1` … `i3`.
@@ -81,7 +81,7 @@ impl Accumulate {
     }
 }
 
-impl Default for Native {
+impl Default for RustTwin {
     fn default() -> Self {
         Self {
             b: [true, false, false, false, false],
@@ -112,7 +112,7 @@ VAR
 END_VAR
 ";
 
-/// The BOOL statements, repeated in turn; `native_bool` does the same in Rust.
+/// The BOOL statements, repeated in turn; `rust_bool` does the same in Rust.
 const BOOL_STATEMENTS: [&str; 4] = [
     "b3 := b1 AND NOT b2;",
     "b4 := b3 OR b2;",
@@ -163,7 +163,7 @@ VAR
 END_VAR
 ";
 
-/// The calls, repeated in turn; `native_fb_calls` does the same in Rust.
+/// The calls, repeated in turn; `rust_fb_calls` does the same in Rust.
 const FB_CALL_STATEMENTS: [&str; 4] = [
     "f1(in1 := i1, in2 := 3, q => i2);",
     "f2(in1 := i2, in2 := 5, q => i3);",
@@ -175,7 +175,7 @@ const FB_CALL_STATEMENTS: [&str; 4] = [
 /// every round's FIND finds one and `n` moves on.
 const STRING_T: &str = "Cell1 packaging line";
 
-/// One round of the strings workload; `native_strings` does the same in Rust.
+/// One round of the strings workload; `rust_strings` does the same in Rust.
 const STRING_STATEMENTS: [&str; 2] = [
     "s := CONCAT(LEFT(t, 5), DINT_TO_STRING(n));",
     "n := n + FIND(s, '1');",
@@ -210,7 +210,7 @@ fn program_with(declarations: &str, statements: &[&str]) -> String {
     source
 }
 
-fn native_bool(n: &mut Native) {
+fn rust_bool(n: &mut RustTwin) {
     for _ in 0..COUNT / 4 {
         let b = black_box(&mut n.b);
         b[2] = b[0] & !b[1];
@@ -220,7 +220,7 @@ fn native_bool(n: &mut Native) {
     }
 }
 
-fn native_int(n: &mut Native) {
+fn rust_int(n: &mut RustTwin) {
     for _ in 0..COUNT / 4 {
         let i = black_box(&mut n.i);
         i[2] = i[0].wrapping_add(i[1]);
@@ -230,7 +230,7 @@ fn native_int(n: &mut Native) {
     }
 }
 
-fn native_real(n: &mut Native) {
+fn rust_real(n: &mut RustTwin) {
     for _ in 0..COUNT / 4 {
         let r = black_box(&mut n.r);
         r[2] = r[0] * 1.5 + r[1];
@@ -240,7 +240,7 @@ fn native_real(n: &mut Native) {
     }
 }
 
-fn native_fb_calls(n: &mut Native) {
+fn rust_fb_calls(n: &mut RustTwin) {
     for _ in 0..COUNT / 4 {
         let (i, f) = black_box((&mut n.i, &mut n.blocks));
         f[0].in1 = i[0];
@@ -265,7 +265,7 @@ fn native_fb_calls(n: &mut Native) {
 /// The characters a STRING(80) holds: CONCAT's result is cut to them.
 const STRING_CAPACITY: usize = 80;
 
-fn native_strings(n: &mut Native) {
+fn rust_strings(n: &mut RustTwin) {
     for _ in 0..STRING_ROUNDS {
         let state = black_box(&mut *n);
         // The workload's strings are ASCII, so characters and bytes are the same.
@@ -278,7 +278,7 @@ fn native_strings(n: &mut Native) {
     }
 }
 
-fn native_array(n: &mut Native) {
+fn rust_array(n: &mut RustTwin) {
     let a = black_box(&mut n.a);
     for (index, element) in a.iter_mut().enumerate() {
         *element = element.wrapping_add(index as i32 + 1);
@@ -325,12 +325,12 @@ fn case_machine() -> String {
     source
 }
 
-fn native_step(n: &mut Native) {
+fn rust_step(n: &mut RustTwin) {
     let i = black_box(&mut n.i);
     i[0] = i[0].wrapping_add(1);
 }
 
-fn native_empty(n: &mut Native) {
+fn rust_empty(n: &mut RustTwin) {
     black_box(n);
 }
 
@@ -342,7 +342,7 @@ pub fn workloads() -> Vec<Workload> {
             unit: "cycle",
             source: format!("{DECLARATIONS}END_PROGRAM\n"),
             units: 1,
-            native: native_empty,
+            rust: rust_empty,
             check: "main.b1",
         },
         Workload {
@@ -350,7 +350,7 @@ pub fn workloads() -> Vec<Workload> {
             unit: "statement",
             source: program(&BOOL_STATEMENTS),
             units: COUNT,
-            native: native_bool,
+            rust: rust_bool,
             // b4 turns TRUE in the first round; b2 stays FALSE throughout, and would pass for
             // a twin that does nothing.
             check: "main.b4",
@@ -360,7 +360,7 @@ pub fn workloads() -> Vec<Workload> {
             unit: "statement",
             source: program(&INT_STATEMENTS),
             units: COUNT,
-            native: native_int,
+            rust: rust_int,
             check: "main.i3",
         },
         Workload {
@@ -368,7 +368,7 @@ pub fn workloads() -> Vec<Workload> {
             unit: "statement",
             source: program(&REAL_STATEMENTS),
             units: COUNT,
-            native: native_real,
+            rust: rust_real,
             check: "main.r3",
         },
         Workload {
@@ -378,7 +378,7 @@ pub fn workloads() -> Vec<Workload> {
                 "{DECLARATIONS}FOR i := 1 TO {COUNT} DO\n    a[i] := a[i] + i;\nEND_FOR\nEND_PROGRAM\n"
             ),
             units: COUNT,
-            native: native_array,
+            rust: rust_array,
             check: "main.a[1000]",
         },
         Workload {
@@ -386,7 +386,7 @@ pub fn workloads() -> Vec<Workload> {
             unit: "call",
             source: program_with(FB_DECLARATIONS, &FB_CALL_STATEMENTS),
             units: COUNT,
-            native: native_fb_calls,
+            rust: rust_fb_calls,
             check: "main.i3",
         },
         Workload {
@@ -394,7 +394,7 @@ pub fn workloads() -> Vec<Workload> {
             unit: "round",
             source: strings_program(),
             units: STRING_ROUNDS,
-            native: native_strings,
+            rust: rust_strings,
             check: "main.n",
         },
         Workload {
@@ -402,7 +402,7 @@ pub fn workloads() -> Vec<Workload> {
             unit: "cycle",
             source: sfc_chart(),
             units: 1,
-            native: native_step,
+            rust: rust_step,
             check: "main.n",
         },
         Workload {
@@ -410,14 +410,14 @@ pub fn workloads() -> Vec<Workload> {
             unit: "cycle",
             source: case_machine(),
             units: 1,
-            native: native_step,
+            rust: rust_step,
             check: "main.n",
         },
     ]
 }
 
-/// The value of the checked variable in the native twin.
-fn native_value(workload: &Workload, n: &Native) -> Value {
+/// The value of the checked variable in the Rust twin.
+fn rust_value(workload: &Workload, n: &RustTwin) -> Value {
     use program_image::Elementary as E;
     match workload.name {
         "bool" => Value::Bool(n.b[3]),
@@ -426,7 +426,7 @@ fn native_value(workload: &Workload, n: &Native) -> Value {
         "array_loop" => Value::Int(i128::from(n.a[COUNT - 1]), E::Dint),
         "fb_calls" => Value::Int(i128::from(n.i[2]), E::Dint),
         "strings" => Value::Int(i128::from(n.n), E::Dint),
-        // The native step counter starts from the `i1` of the other workloads.
+        // The Rust twin's step counter starts from the `i1` of the other workloads.
         "sfc_1000_steps" | "case_1000_states" => Value::Int(i128::from(n.i[0] - 1), E::Dint),
         _ => Value::Bool(n.b[0]),
     }
@@ -456,32 +456,50 @@ pub fn instructions(image: &ProgramImage) -> usize {
         .sum()
 }
 
-/// A loaded engine, after checking that a few cycles compute what the native twin computes.
+/// A loaded interpreter, after checking that a few cycles compute what the Rust twin
+/// computes.
 pub fn engine(workload: &Workload) -> Engine {
+    engine_with(workload, EngineChoice::Interpreter)
+}
+
+/// A loaded engine of the kind `choice` names, after checking that a few cycles compute what
+/// the Rust twin computes; the native engine must translate every POU.
+pub fn engine_with(workload: &Workload, choice: EngineChoice) -> Engine {
     let image = compile(workload);
-    let mut engine = match Engine::new(image.clone()) {
-        Ok(engine) => engine,
+    let load = |image| match Engine::with_choice(image, choice) {
+        Ok((engine, report)) => {
+            if choice == EngineChoice::Native
+                && EngineChoice::native_available()
+                && !(report.runs_natively() && report.fallbacks.is_empty())
+            {
+                panic!(
+                    "the {} workload does not run natively: {}; {:?}",
+                    workload.name,
+                    report.summary(),
+                    report.lines()
+                );
+            }
+            engine
+        }
         Err(error) => panic!("the {} workload does not load: {error}", workload.name),
     };
-    let mut native = Native::default();
+    let mut engine = load(image.clone());
+    let mut rust = RustTwin::default();
     for cycle in 0..3 {
         if let Err(fault) = engine.run_cycle(0, 0, cycle) {
             panic!("the {} workload faults: {fault}", workload.name);
         }
-        (workload.native)(&mut native);
+        (workload.rust)(&mut rust);
     }
     let engine_value = value::read(&engine, workload.check);
-    let native_value = native_value(workload, &native);
+    let rust_value = rust_value(workload, &rust);
     assert_eq!(
         engine_value.as_ref().ok(),
-        Some(&native_value),
-        "the engine and the native twin of {} disagree",
+        Some(&rust_value),
+        "the engine and the Rust twin of {} disagree",
         workload.name
     );
-    let mut fresh = match Engine::new(image) {
-        Ok(engine) => engine,
-        Err(error) => panic!("the {} workload does not load: {error}", workload.name),
-    };
+    let mut fresh = load(image);
     // Warm the engine up so the first measured cycle is like the others.
     for cycle in 0..3 {
         let _ = fresh.run_cycle(0, 0, cycle);

@@ -99,8 +99,7 @@ fn run(elements: Vec<CfcElement>, wires: Vec<Wire>, cycles: u64) -> Simulation {
         }
         Err(error) => panic!("the chart does not compile: {error}"),
     };
-    let mut simulation = Simulation::new(image).expect("the image loads");
-    simulation.run(cycles);
+    let simulation = crate::simulate(image, cycles);
     assert!(simulation.faults().is_empty(), "{:?}", simulation.faults());
     simulation
 }

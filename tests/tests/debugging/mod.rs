@@ -8,8 +8,8 @@ use std::sync::atomic::AtomicBool;
 
 use program_image::ProgramImage;
 use runtime::engine::{
-    BreakpointSpec, Engine, EngineView, HaltReason, HitMode, Preempt, Preemption, StepKind,
-    TaskClock,
+    BreakpointSpec, Engine, EngineChoice, EngineView, HaltReason, HitMode, Preempt, Preemption,
+    StepKind, TaskClock,
 };
 
 use super::compile;
@@ -450,4 +450,42 @@ fn only_the_halted_task_may_step_and_ending_the_session_lets_it_go_on() {
             .to_string(),
         "3"
     );
+}
+
+#[test]
+fn a_cycle_without_the_debugger_runs_natively_and_one_with_a_breakpoint_in_the_interpreter() {
+    let image = compile(SOURCE);
+    let (mut engine, report) =
+        Engine::with_choice(image.clone(), EngineChoice::Native).expect("the image loads");
+    if !EngineChoice::native_available() {
+        // Nothing runs natively on this machine: every cycle is the interpreter's.
+        assert!(!report.runs_natively());
+        return;
+    }
+    assert!(
+        report.runs_natively() && report.fallbacks.is_empty(),
+        "{report:?}"
+    );
+    let mut script = Script {
+        actions: Vec::new(),
+        seen: Vec::new(),
+    };
+    run_cycles(&mut engine, &mut script, 2);
+    let native = engine.native_entries();
+    assert!(native > 0, "no cycle entered generated code");
+    // With a breakpoint the debugger watches the cycle: it runs entirely in the interpreter,
+    // and sees what the native cycles before it left.
+    engine.debug_mut().begin_session();
+    engine
+        .view()
+        .set_breakpoint(spec(&image, "Main", "n := n + 1;"))
+        .expect("the breakpoint is set");
+    run_cycles(&mut engine, &mut script, 1);
+    assert_eq!(engine.native_entries(), native);
+    assert_eq!(script.seen.len(), 1, "{:#?}", script.seen);
+    assert_eq!(script.seen[0].n, "2");
+    // Once the session ends, cycles run natively again.
+    engine.debug_mut().end_session();
+    run_cycles(&mut engine, &mut script, 1);
+    assert!(engine.native_entries() > native);
 }

@@ -48,8 +48,7 @@ fn run(declarations: &str, bodies: &[(&str, &str)], cycles: u64) -> Simulation {
         }
         Err(error) => panic!("the IL does not compile: {error}"),
     };
-    let mut simulation = Simulation::new(image).expect("the image loads");
-    simulation.run(cycles);
+    let simulation = crate::simulate(image, cycles);
     assert!(simulation.faults().is_empty(), "{:?}", simulation.faults());
     simulation
 }

@@ -98,8 +98,7 @@ fn compile(source: &str, networks: Vec<Network>) -> ProgramImage {
 #[track_caller]
 fn run(source: &str, networks: Vec<Network>, cycles: usize) -> HashMap<String, Vec<bool>> {
     let image = compile(source, networks);
-    let mut simulation = Simulation::new(image).expect("the image loads");
-    simulation.run(cycles as u64 + 1);
+    let simulation = crate::simulate(image, cycles as u64 + 1);
     assert!(simulation.faults().is_empty(), "{:?}", simulation.faults());
     let mut values = HashMap::new();
     for symbol in &simulation.engine().image().symbols {
@@ -801,8 +800,7 @@ END_PROGRAM
         Ok(image) => image,
         Err(error) => panic!("{error}: {error:?}"),
     };
-    let mut simulation = Simulation::new(image).expect("the image loads");
-    simulation.run(cycles);
+    let simulation = crate::simulate(image, cycles);
     assert!(simulation.faults().is_empty(), "{:?}", simulation.faults());
     simulation
 }
@@ -920,8 +918,7 @@ fn fbd_pins_negate_and_detect_edges_and_functions_nest() {
         Ok(image) => image,
         Err(error) => panic!("{error}: {error:?}"),
     };
-    let mut simulation = Simulation::new(image).expect("the image loads");
-    simulation.run(11);
+    let simulation = crate::simulate(image, 11);
     let read = |path: &str| -> Vec<bool> {
         let text = runtime::value::read(simulation.engine(), path)
             .unwrap()
@@ -986,6 +983,9 @@ fn the_example_project_s_ladder_and_fbd_programs_run_in_its_tasks() {
         Ok(image) => image,
         Err(error) => panic!("{error}"),
     };
+    // The example under both engines first, compared after each of 1,000 cycles without
+    // inputs; the checks below write between runs, on the default engine.
+    crate::simulate(image.clone(), 1000);
     let mut simulation = Simulation::new(image).expect("the image loads");
     let read = |simulation: &Simulation, path: &str| {
         runtime::value::read(simulation.engine(), path)

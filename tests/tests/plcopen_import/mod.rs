@@ -24,7 +24,9 @@ fn import_errors(relative: &str) -> (usize, Vec<String>) {
 }
 
 /// `project` compiled and loaded into a simulation; a project that does not check panics with
-/// its errors as `file: message`.
+/// its errors as `file: message`. The tests write between their runs, so the image is first
+/// run for 20 cycles without writes under both engines and compared (`crate::simulate`), and the
+/// simulation given back is a fresh one with the default engine.
 #[track_caller]
 fn simulation_of(project: &project_model::Project) -> runtime::simulation::Simulation {
     let image = match compiler::compile_project(project) {
@@ -39,6 +41,7 @@ fn simulation_of(project: &project_model::Project) -> runtime::simulation::Simul
         }
         Err(error) => panic!("the project does not compile: {error}"),
     };
+    crate::simulate(image.clone(), 20);
     runtime::simulation::Simulation::new(image).unwrap_or_else(|error| panic!("{error}"))
 }
 

@@ -71,8 +71,7 @@ fn simulate_chart(
         }
         Err(error) => panic!("the chart does not compile: {error}"),
     };
-    let mut simulation = Simulation::new(image).expect("the image loads");
-    simulation.run(cycles);
+    let simulation = crate::simulate(image, cycles);
     assert!(simulation.faults().is_empty(), "{:?}", simulation.faults());
     simulation
 }

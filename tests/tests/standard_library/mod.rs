@@ -747,8 +747,9 @@ fn run_case(case: &Case) -> Result<(), String> {
         }
         Err(error) => return Err(format!("does not compile: {error}")),
     };
-    let mut simulation = Simulation::new(image).map_err(|e| format!("does not load: {e}"))?;
-    simulation.run(2);
+    // Both engines, compared after each cycle (`docs/native-engine.md` §11.1).
+    let simulation = runtime::differential::run_both(image, 2, |_, _| {})
+        .map_err(|difference| format!("the engines differ: {difference}"))?;
     if !simulation.faults().is_empty() {
         return Err(format!("faults: {:?}", simulation.faults()));
     }
@@ -933,16 +934,13 @@ fn every_conversion_the_checker_accepts_compiles_and_runs() {
                 match compiler::compile_source(&project, "test.st") {
                     Ok(image) => {
                         compiled += 1;
-                        match Simulation::new(image) {
-                            Ok(mut simulation) => {
-                                simulation.run(1);
+                        match runtime::differential::run_both(image, 1, |_, _| {}) {
+                            Ok(simulation) => {
                                 if !simulation.faults().is_empty() {
                                     failures.push(format!("{function}: {:?}", simulation.faults()));
                                 }
                             }
-                            Err(error) => {
-                                failures.push(format!("{function}: does not load: {error}"))
-                            }
+                            Err(difference) => failures.push(format!("{function}: {difference}")),
                         }
                     }
                     // Refused by the checker, with its code: not the code generator's concern.
@@ -978,9 +976,8 @@ fn rtc_counts_seconds_from_its_preset_and_resets_when_disabled() {
         }
         Err(error) => panic!("RTC does not compile: {error}"),
     };
-    let mut simulation = Simulation::new(image).unwrap();
     // Cycles every 10 ms: the 151st is 1.5 s after the first, the rising edge of EN.
-    simulation.run(151);
+    let mut simulation = crate::simulate(image, 151);
     let read = |simulation: &Simulation, path: &str| {
         runtime::value::read(simulation.engine(), path)
             .unwrap()

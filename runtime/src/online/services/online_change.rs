@@ -52,7 +52,8 @@ impl OnlineServices {
         ModbusMap::for_image(&image)
             .map_err(|error| refused(format!("the image's Modbus map is refused: {error}")))?;
         let to = image.identity();
-        let engine = Engine::new(image.clone())
+        let engine = Engine::with_choice(image.clone(), self.scheduler.engine_choice())
+            .map(|(engine, _)| engine)
             .map_err(|error| refused(format!("the program image cannot be loaded: {error}")))?;
         let identity = self.scheduler.status().image;
         let running = self.between(move |between| {

@@ -1,0 +1,272 @@
+//! The runtime's side of generated code (`docs/native-engine.md` §4.3): [`Exec`] entering a
+//! POU's machine code, and answering its callbacks as the interpreter would at the same
+//! instruction.
+//!
+//! The counters (`depth`, `budget`) travel with control: they are handed to generated code on
+//! entry and taken back on return, taken from each callback before it runs and handed back
+//! after, so an interpreted call inside a native one counts on the same numbers as a purely
+//! interpreted cycle. A fault is recorded as [`Exec::run`] records it (`fault_at` keeps the
+//! innermost site) and kept in `native_fault` until [`Exec::run_native`] returns it.
+
+use std::sync::atomic::Ordering;
+
+use super::exec::{Exec, FRAME, INSTANCE};
+use super::fault::FaultKind;
+use super::lower::Flow;
+
+impl Exec<'_> {
+    /// Runs POU `index`'s machine code with the current bases: the native half of the one
+    /// dispatch in [`Exec::run`].
+    pub(super) fn run_native(&mut self, code: &jit::Code, index: usize) -> Result<(), FaultKind> {
+        let entries = &self.code.native_entries;
+        entries.store(
+            entries.load(Ordering::Relaxed).wrapping_add(1),
+            Ordering::Relaxed,
+        );
+        let entry = jit::Entry {
+            instance: self.bases[usize::from(INSTANCE)] as u64,
+            frame: self.bases[usize::from(FRAME)] as u64,
+            stack_end: self.stack_end as u64,
+            native_stack_limit: self.native_stack_limit(),
+            due: self.due,
+            now_ns: self.now_ns,
+        };
+        let mut counters = jit::Counters {
+            depth: self.depth,
+            budget: self.budget,
+        };
+        // The callbacks move the bases and the stack pointer for the instructions they run;
+        // the interpreted caller goes on with its own.
+        let saved = (self.bases, self.sp);
+        let status = code.run(index as u32, self, entry, &mut counters);
+        (self.bases, self.sp) = saved;
+        self.depth = counters.depth;
+        self.budget = counters.budget;
+        let fault = self.native_fault.take();
+        match status {
+            jit::Status::Ok => Ok(()),
+            jit::Status::Faulted => Err(fault.unwrap_or_else(|| {
+                // Code::run records its own entry faults through `fault`, so a fault without
+                // a kind is a bug of the engine, kept as one rather than hidden.
+                self.fault_at.get_or_insert((index, 0));
+                FaultKind::Internal("generated code faulted without recording a fault".into())
+            })),
+        }
+    }
+
+    /// Records `kind` at `site`, as [`Exec::run`] records the fault of an instruction.
+    fn record_native_fault(&mut self, site: jit::Site, kind: FaultKind) -> jit::Status {
+        self.fault_at
+            .get_or_insert((site.pou as usize, site.instruction as usize));
+        self.native_fault = Some(kind);
+        jit::Status::Faulted
+    }
+
+    /// Takes the counters from generated code before a callback runs.
+    fn take_counters(&mut self, counters: &jit::Counters) {
+        self.depth = counters.depth;
+        self.budget = counters.budget;
+    }
+
+    /// Gives the counters back to generated code after a callback ran.
+    fn give_counters(&self, counters: &mut jit::Counters) {
+        counters.depth = self.depth;
+        counters.budget = self.budget;
+    }
+}
+
+/// The runtime's [`FaultKind`] of a fault generated code found (`docs/native-engine.md` §4.7).
+fn fault_kind(fault: jit::NativeFault) -> FaultKind {
+    match fault {
+        jit::NativeFault::DivisionByZero => FaultKind::DivisionByZero,
+        jit::NativeFault::IndexOutOfBounds { index, low, high } => {
+            FaultKind::IndexOutOfBounds { index, low, high }
+        }
+        jit::NativeFault::NullPointer => FaultKind::NullPointer,
+        jit::NativeFault::BadPointer(pointer) => FaultKind::BadPointer(pointer),
+        jit::NativeFault::StackOverflow => FaultKind::StackOverflow,
+        jit::NativeFault::Memory => FaultKind::Memory,
+        jit::NativeFault::HostPanicked => FaultKind::Internal("a host callback panicked".into()),
+    }
+}
+
+impl jit::Host for Exec<'_> {
+    fn memory(&mut self) -> &mut [u8] {
+        self.mem
+    }
+
+    fn tick(&mut self, site: jit::Site, counters: &mut jit::Counters) -> jit::Status {
+        // Generated code has counted this backward jump already; what is left of
+        // `Exec::tick` is the safe point and, with the budget spent, the watchdog.
+        self.take_counters(counters);
+        let result = self
+            .safe_point(site.instruction as usize)
+            .and_then(|_| self.look_at_the_clock());
+        self.give_counters(counters);
+        match result {
+            Ok(()) => jit::Status::Ok,
+            Err(kind) => self.record_native_fault(site, kind),
+        }
+    }
+
+    fn preempt(&mut self, site: jit::Site, counters: &mut jit::Counters) -> jit::Status {
+        self.take_counters(counters);
+        let result = self.safe_point(site.instruction as usize);
+        self.give_counters(counters);
+        match result {
+            Ok(_) => jit::Status::Ok,
+            Err(kind) => self.record_native_fault(site, kind),
+        }
+    }
+
+    fn op(
+        &mut self,
+        site: jit::Site,
+        instance: u64,
+        frame: u64,
+        counters: &mut jit::Counters,
+    ) -> jit::Status {
+        let code = self.code;
+        let (pou, pc) = (site.pou as usize, site.instruction as usize);
+        let Some(compiled) = code.pous.get(pou) else {
+            return self.record_native_fault(site, FaultKind::Memory);
+        };
+        let Some(op) = compiled.ops.get(pc) else {
+            return self.record_native_fault(site, FaultKind::Memory);
+        };
+        // During a POU's body the interpreter's stack pointer is its frame's end.
+        let (instance, frame) = (instance as usize, frame as usize);
+        self.bases = [0, instance, frame];
+        self.sp = frame.saturating_add(compiled.frame_size);
+        self.take_counters(counters);
+        let result = op(self);
+        self.give_counters(counters);
+        match result {
+            Ok(Flow::Next) => jit::Status::Ok,
+            Ok(flow) => self.record_native_fault(
+                site,
+                FaultKind::Internal(format!(
+                    "an instruction handed over by generated code went on as {flow:?}"
+                )),
+            ),
+            Err(fault) => self.record_native_fault(site, *fault),
+        }
+    }
+
+    fn fault(&mut self, site: jit::Site, fault: jit::NativeFault) {
+        self.record_native_fault(site, fault_kind(fault));
+    }
+
+    fn copy(&mut self, to: u64, from: u64, bytes: u64) -> jit::Status {
+        let (Ok(to), Ok(from), Ok(bytes)) = (
+            usize::try_from(to),
+            usize::try_from(from),
+            usize::try_from(bytes),
+        ) else {
+            return jit::Status::Faulted;
+        };
+        match Exec::copy(self, to, from, bytes) {
+            Ok(()) => jit::Status::Ok,
+            Err(_) => jit::Status::Faulted,
+        }
+    }
+
+    fn frame(&mut self, pou: u32, frame: u64) -> jit::Status {
+        let Ok(frame) = usize::try_from(frame) else {
+            return jit::Status::Faulted;
+        };
+        match self.prepare_frame(pou as usize, frame) {
+            Ok(()) => jit::Status::Ok,
+            Err(_) => jit::Status::Faulted,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #![allow(clippy::unwrap_used, clippy::expect_used)] // A panic is a failed test.
+
+    use super::*;
+    use crate::engine::exec::NEVER_DUE;
+    use crate::engine::{Engine, EngineChoice};
+    use crate::test_images::{TestTask, image};
+
+    #[test]
+    fn an_instance_outside_the_memory_is_a_memory_fault_at_the_pous_first_instruction() {
+        let (mut engine, report) = Engine::with_choice(
+            image(&[TestTask::cyclic(1_000_000, 0)], &[]),
+            EngineChoice::Native,
+        )
+        .unwrap();
+        if !report.runs_natively() {
+            // No machine code on this machine: nothing of the native engine to test.
+            assert!(!EngineChoice::native_available());
+            return;
+        }
+        let pou = engine.image.tasks[0].programs[0].pou as usize;
+        let Engine {
+            image,
+            regions,
+            code,
+            memory,
+            motion,
+            debug,
+            ..
+        } = &mut engine;
+        // Past the end even for a program whose instance is empty.
+        let beyond = memory.len() + 1;
+        let mut exec = Exec::new(
+            memory,
+            image,
+            regions,
+            code,
+            regions.stack(0),
+            0,
+            None,
+            motion,
+            (&NEVER_DUE, None),
+            (0, debug),
+        );
+        // The generated code checks its bases once when it is entered (native-engine.md §7
+        // rule 2); an instance past the memory's end is refused there, at instruction 0.
+        exec.bases[usize::from(INSTANCE)] = beyond;
+        let entries = code.native_entries.load(Ordering::Relaxed);
+        assert_eq!(exec.run(pou, 0), Err(FaultKind::Memory));
+        assert_eq!(exec.fault_at, Some((pou, 0)));
+        assert_eq!(code.native_entries.load(Ordering::Relaxed), entries + 1);
+        // The counters came back as they went in.
+        assert_eq!(exec.depth, 0);
+    }
+
+    #[test]
+    fn every_native_fault_is_the_interpreters_kind() {
+        assert_eq!(
+            fault_kind(jit::NativeFault::IndexOutOfBounds {
+                index: 11,
+                low: 1,
+                high: 10
+            }),
+            FaultKind::IndexOutOfBounds {
+                index: 11,
+                low: 1,
+                high: 10
+            }
+        );
+        assert_eq!(
+            fault_kind(jit::NativeFault::BadPointer(7 << 56)),
+            FaultKind::BadPointer(7 << 56)
+        );
+        assert_eq!(
+            fault_kind(jit::NativeFault::HostPanicked),
+            FaultKind::Internal("a host callback panicked".into())
+        );
+        for (native, kind) in [
+            (jit::NativeFault::DivisionByZero, FaultKind::DivisionByZero),
+            (jit::NativeFault::NullPointer, FaultKind::NullPointer),
+            (jit::NativeFault::StackOverflow, FaultKind::StackOverflow),
+            (jit::NativeFault::Memory, FaultKind::Memory),
+        ] {
+            assert_eq!(fault_kind(native), kind);
+        }
+    }
+}
