@@ -190,7 +190,8 @@ impl<'a, 'b> Translator<'a, 'b> {
         module: &'a mut dyn cranelift_module::Module,
     ) -> Self {
         let blocks = Blocks::new(&pou.code, &mut builder);
-        let promoted_loops = promote::promotable_loops(&pou.code, environment.layout);
+        let promoted_loops =
+            promote::promotable_loops(&pou.code, environment.layout, environment.folded_constants);
         let preheaders = promoted_loops
             .iter()
             .map(|_| builder.create_block())
@@ -500,6 +501,8 @@ impl<'a, 'b> Translator<'a, 'b> {
             let pc = self.builder.ins().iconst(types::I32, i64::from(self.pc));
             let status = self.call_host(Import::Tick, &[self.context, pou, pc]);
             self.return_if_faulted(status);
+            // Only once the tick succeeded: the memory is then as long as it was checked.
+            self.reload_promoted();
             self.builder.ins().jump(destination, &[]);
         }
     }

@@ -111,8 +111,6 @@ fn a_function_gets_a_prepared_frame_and_its_transfers() {
         // The callee's frame holds old bytes, which a new frame does not show.
         let callee_frame = fixture.frame_at() + u64::from(FRAME_SIZE);
         host.memory[callee_frame as usize..][..frame_size as usize].fill(0xAA);
-        // The initial run written by the host, for the large frame.
-        host.frame_template = vec![0, 0, 0, 0, 0, 0, 0, 0, 7];
         assert_eq!(fixture.run(&mut host), Status::Ok);
         assert_eq!(host.get(8, 4), 42, "frame of {frame_size} bytes");
         assert_eq!(host.get(12, 4), 0, "frame of {frame_size} bytes");
