@@ -50,6 +50,14 @@ fn instruction_text(instruction: Option<u32>) -> String {
 #[cfg(test)]
 pub(crate) const REFUSED_IN_TESTS: &str = "RefusedInTests";
 
+#[cfg(test)]
+thread_local! {
+    /// The POUs translated on the current thread, in order, for the tests to see which are
+    /// translated again after a refusal.
+    pub(crate) static TRANSLATED_IN_TESTS: std::cell::RefCell<Vec<u32>> =
+        const { std::cell::RefCell::new(Vec::new()) };
+}
+
 /// The one signature of every POU function: `(context, instance, frame) -> status`.
 pub(crate) fn pou_signature(mut signature: Signature) -> Signature {
     signature.params.push(AbiParam::new(types::I64));
@@ -103,6 +111,8 @@ pub(crate) fn translate_pou(
             instruction: None,
             reason: "no such POU".into(),
         })?;
+    #[cfg(test)]
+    TRANSLATED_IN_TESTS.with(|translated| translated.borrow_mut().push(index));
     // The tests see a refused callee's callers translated again with the call handed over.
     #[cfg(test)]
     if pou.name == REFUSED_IN_TESTS {
