@@ -45,6 +45,12 @@ pub use translate::host_calls::{
     unary_op_from_code,
 };
 
+/// The limit of nested calls generated code enforces (`docs/native-engine.md` §4.4 step 3):
+/// a call made at this depth or deeper is `StackOverflow`. It must equal the interpreter's
+/// `MAX_CALL_DEPTH` (`runtime/src/engine/exec.rs`), and the runtime asserts that it does, so
+/// that both engines fault at the same call.
+pub const MAX_CALL_DEPTH: u32 = 2000;
+
 /// What a POU function, a callback or [`Code::run`] returns (`docs/native-engine.md` §4.1).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[repr(u32)]

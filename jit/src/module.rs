@@ -99,10 +99,17 @@ impl Translation {
         let mut function_context = FunctionBuilderContext::new();
         let mut codegen = module.make_context();
         // Translated and compiled until no POU is refused anew: a refused callee has no
-        // function, so its callers are translated again with their calls of it handed to the
-        // interpreter; only then is anything defined, so no machine code calls a function
-        // that is not defined (§8.2).
-        let compiled = loop {
+        // function, so its callers (only they) are translated again with their calls of it
+        // handed to the interpreter; only then is anything defined, so no machine code calls
+        // a function that is not defined (§8.2).
+        let callees: Vec<Vec<u32>> = image
+            .pous
+            .iter()
+            .map(|pou| called_pous(&pou.code))
+            .collect();
+        let mut compiled: Vec<Option<Compiled>> = image.pous.iter().map(|_| None).collect();
+        let mut pending = vec![true; image.pous.len()];
+        loop {
             let environment = Environment {
                 pous: &image.pous,
                 layout,
@@ -111,13 +118,16 @@ impl Translation {
                 signature: signature.clone(),
                 functions: &functions,
             };
-            let mut compiled = Vec::with_capacity(image.pous.len());
             let mut refused_now = Vec::new();
             for (index, pou) in image.pous.iter().enumerate() {
+                if !std::mem::take(&mut pending[index]) {
+                    continue;
+                }
                 let Some(id) = functions[index] else {
-                    compiled.push(None);
+                    compiled[index] = None;
                     continue;
                 };
+                let at = index;
                 let index = index as u32;
                 let refused = |reason: String| Untranslated {
                     pou: index,
@@ -134,11 +144,11 @@ impl Translation {
                         .map_err(|reason| refused(reason.0))
                 }));
                 module.clear_context(&mut codegen);
-                match result {
-                    Ok(Ok(function)) => compiled.push(Some(function)),
+                compiled[at] = match result {
+                    Ok(Ok(function)) => Some(function),
                     Ok(Err(refusal)) => {
                         refused_now.push(refusal);
-                        compiled.push(None);
+                        None
                     }
                     Err(_) => {
                         refused_now.push(refused(
@@ -146,20 +156,27 @@ impl Translation {
                              error)"
                                 .into(),
                         ));
-                        compiled.push(None);
                         function_context = FunctionBuilderContext::new();
                         codegen = module.make_context();
+                        None
                     }
-                }
+                };
             }
             if refused_now.is_empty() {
-                break compiled;
+                break;
             }
+            let newly_refused: Vec<u32> = refused_now.iter().map(|refusal| refusal.pou).collect();
             for refusal in refused_now {
                 functions[refusal.pou as usize] = None;
                 untranslated.push(refusal);
             }
-        };
+            // The code of a POU that calls none of the newly refused ones names only
+            // functions that are still there, and is kept.
+            for (index, called) in callees.iter().enumerate() {
+                pending[index] = functions[index].is_some()
+                    && called.iter().any(|callee| newly_refused.contains(callee));
+            }
+        }
         let mut defined = Vec::with_capacity(image.pous.len());
         #[cfg(test)]
         let mut listings = Vec::new();
@@ -374,6 +391,25 @@ impl Code {
 }
 
 /// One POU's compiled machine code, not yet defined in the module.
+/// The POUs `code` may call directly: those its `CallFunction`, `CallBlock` and
+/// `CallVirtual` instructions name.
+fn called_pous(code: &[program_image::Instr]) -> Vec<u32> {
+    use program_image::Instr;
+    let mut called = Vec::new();
+    for instr in code {
+        match instr {
+            Instr::CallFunction { pou, .. } | Instr::CallBlock { pou, .. } => called.push(*pou),
+            Instr::CallVirtual { table, .. } => {
+                called.extend(table.iter().map(|(_, method)| *method));
+            }
+            _ => {}
+        }
+    }
+    called.sort_unstable();
+    called.dedup();
+    called
+}
+
 struct Compiled {
     /// The machine code.
     bytes: Vec<u8>,

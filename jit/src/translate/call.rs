@@ -10,10 +10,7 @@ use program_image::{Operand, Transfer};
 
 use super::host_calls::Import;
 use super::{Translator, context, context_flags, memory_flags};
-use crate::fault_kind;
-
-/// The interpreter's limit of nested calls (`MAX_CALL_DEPTH` in `engine/exec.rs`).
-const MAX_CALL_DEPTH: u32 = 2000;
+use crate::{MAX_CALL_DEPTH, fault_kind};
 
 /// The largest frame prepared by inline stores; a larger one is prepared by `rivet_jit_frame`
 /// (§4.4 step 5), so that a call does not grow the code by more than a few stores.
@@ -40,6 +37,7 @@ impl Translator<'_, '_> {
             &[self.context, pou, pc, self.instance, self.frame],
         );
         self.return_if_faulted(status);
+        self.reload_promoted();
     }
 
     /// `CallFunction` and `CallBlock` (block calls have no transfers): inline when the callee
@@ -129,6 +127,14 @@ impl Translator<'_, '_> {
         inputs: &[Transfer],
         outputs: &[Transfer],
     ) {
+        // The analysis promotes no place in a loop that calls (§5.3), so the instance, the
+        // inputs and the callee all read memory as the interpreter leaves it.
+        debug_assert!(
+            self.promoted.is_empty(),
+            "a call inside a promoted loop (pou {}, instruction {})",
+            self.pou,
+            self.pc
+        );
         let pous = self.pous;
         let called = &pous[callee as usize];
         let caller_frame_size = pous[self.pou as usize].frame_size;
@@ -239,6 +245,7 @@ impl Translator<'_, '_> {
         let pc = self.builder.ins().iconst(types::I32, i64::from(self.pc));
         let status = self.call_host(Import::Preempt, &[self.context, pou, pc]);
         self.return_if_faulted(status);
+        self.reload_promoted();
         self.builder.ins().jump(next, &[]);
         self.builder.switch_to_block(next);
     }
@@ -257,6 +264,7 @@ impl Translator<'_, '_> {
             let status = self.call_host(Import::Frame, &[self.context, pou, callee_frame]);
             // Like a copy, the callback has no site: a failure is recorded here (§4.3).
             self.fault_if(status, fault_kind::MEMORY, [None; 3]);
+            self.reload_promoted();
             return;
         }
         let mut bytes = vec![0u8; size as usize];
@@ -301,9 +309,6 @@ impl Translator<'_, '_> {
         self.builder
             .ins()
             .store(context_flags(), deeper, self.context, context::DEPTH);
-        // The analysis promotes no place in a loop that calls; a callee still sees memory as
-        // the interpreter leaves it, whatever the analysis decided (§5.3).
-        self.write_back();
         let budget = self.builder.use_var(self.budget);
         self.builder
             .ins()
@@ -329,12 +334,17 @@ impl Translator<'_, '_> {
         self.builder
             .ins()
             .store(context_flags(), depth, self.context, context::DEPTH);
-        self.reload_promoted();
         status
     }
 
-    /// Calls a host callback: the budget stored before, the memory and the budget loaded
-    /// after (§4.2, §7 rule 3). Returns the callback's result, if it has one.
+    /// Calls a host callback: the promoted places written back and the budget stored before,
+    /// the memory's address and the budget loaded after (§4.2, §7 rule 3). Returns the
+    /// callback's result, if it has one.
+    ///
+    /// The promoted places are not loaded again here: after a failed callback the memory may
+    /// be shorter than the code was checked against, or its address stale (a host that
+    /// panicked), and the code only returns. The caller calls `reload_promoted` on the
+    /// success path, after testing the status (§7 rules 1 and 3).
     pub(crate) fn call_host(&mut self, import: Import, arguments: &[Value]) -> Value {
         // A callback sees memory as the interpreter leaves it, and may change it (§5.3).
         self.write_back();
@@ -351,7 +361,6 @@ impl Translator<'_, '_> {
                 .ins()
                 .load(types::I32, context_flags(), self.context, context::BUDGET);
         self.builder.def_var(self.budget, budget);
-        self.reload_promoted();
         result.unwrap_or_else(|| self.builder.ins().iconst(types::I32, 0))
     }
 

@@ -50,6 +50,14 @@ fn instruction_text(instruction: Option<u32>) -> String {
 #[cfg(test)]
 pub(crate) const REFUSED_IN_TESTS: &str = "RefusedInTests";
 
+#[cfg(test)]
+thread_local! {
+    /// The POUs translated on the current thread, in order, for the tests to see which are
+    /// translated again after a refusal.
+    pub(crate) static TRANSLATED_IN_TESTS: std::cell::RefCell<Vec<u32>> =
+        const { std::cell::RefCell::new(Vec::new()) };
+}
+
 /// The one signature of every POU function: `(context, instance, frame) -> status`.
 pub(crate) fn pou_signature(mut signature: Signature) -> Signature {
     signature.params.push(AbiParam::new(types::I64));
@@ -103,6 +111,8 @@ pub(crate) fn translate_pou(
             instruction: None,
             reason: "no such POU".into(),
         })?;
+    #[cfg(test)]
+    TRANSLATED_IN_TESTS.with(|translated| translated.borrow_mut().push(index));
     // The tests see a refused callee's callers translated again with the call handed over.
     #[cfg(test)]
     if pou.name == REFUSED_IN_TESTS {
@@ -190,7 +200,8 @@ impl<'a, 'b> Translator<'a, 'b> {
         module: &'a mut dyn cranelift_module::Module,
     ) -> Self {
         let blocks = Blocks::new(&pou.code, &mut builder);
-        let promoted_loops = promote::promotable_loops(&pou.code, environment.layout);
+        let promoted_loops =
+            promote::promotable_loops(&pou.code, environment.layout, environment.folded_constants);
         let preheaders = promoted_loops
             .iter()
             .map(|_| builder.create_block())
@@ -500,6 +511,8 @@ impl<'a, 'b> Translator<'a, 'b> {
             let pc = self.builder.ins().iconst(types::I32, i64::from(self.pc));
             let status = self.call_host(Import::Tick, &[self.context, pou, pc]);
             self.return_if_faulted(status);
+            // Only once the tick succeeded: the memory is then as long as it was checked.
+            self.reload_promoted();
             self.builder.ins().jump(destination, &[]);
         }
     }

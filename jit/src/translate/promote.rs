@@ -44,15 +44,29 @@ pub(crate) struct PromotedLoop {
 }
 
 /// The smallest ranges holding every place a loop touches, per base: offsets from the
-/// instance, offsets from the frame, absolute offsets of the fixed regions.
+/// instance, offsets from the frame, absolute offsets in each fixed region.
+///
+/// The fixed regions get one range each because they are disjoint by the layout and a place
+/// in one is compared with places in the others by offset: one range around all of them
+/// would span the data region's program instances up to the constant pool and meet the
+/// instance whenever a loop touches a global and a constant.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub(crate) struct Guard {
     /// From the instance: first byte and end.
     pub(crate) instance: Option<(u64, u64)>,
     /// From the frame.
     pub(crate) frame: Option<(u64, u64)>,
-    /// In the memory.
-    pub(crate) fixed: Option<(u64, u64)>,
+    /// In the memory, per fixed region: data, `%I`, `%Q`, `%M`, constants.
+    pub(crate) fixed: [Option<(u64, u64)>; 5],
+}
+
+#[cfg(test)]
+thread_local! {
+    /// The guards' outcomes on the current thread: entries into the promoted copy of a
+    /// guarded loop and into its unpromoted copy. Generated code translated in a test adds to
+    /// them, so that a test sees which copy ran.
+    pub(crate) static GUARD_OUTCOMES_IN_TESTS: [std::sync::atomic::AtomicU64; 2] =
+        const { [std::sync::atomic::AtomicU64::new(0), std::sync::atomic::AtomicU64::new(0)] };
 }
 
 /// How an instruction touches a direct place.
@@ -96,7 +110,19 @@ fn may_overlap(layout: &Layout, (a, size_a): (Operand, u32), (b, size_b): (Opera
     }
 }
 
-/// The guard of the places `all` a loop touches: `None` when they all have one base.
+/// The index in [`Guard::fixed`] of a fixed operand's region.
+fn fixed_region(operand: Operand) -> usize {
+    match operand {
+        Operand::Input(_) => 1,
+        Operand::Output(_) => 2,
+        Operand::Memory(_) => 3,
+        Operand::Const(_) => 4,
+        _ => 0,
+    }
+}
+
+/// The guard of the places `all` a loop touches: `None` when they all have one base (the
+/// fixed regions being one base, disjoint by the layout).
 fn guard(layout: &Layout, all: &[(Operand, u32, Access)]) -> Option<Guard> {
     let mut guard = Guard::default();
     let widen = |range: &mut Option<(u64, u64)>, at: u64, size: u32| {
@@ -110,13 +136,13 @@ fn guard(layout: &Layout, all: &[(Operand, u32, Access)]) -> Option<Guard> {
         match base(*operand, layout) {
             Base::Instance(at) => widen(&mut guard.instance, at, *size),
             Base::Frame(at) => widen(&mut guard.frame, at, *size),
-            Base::Fixed(at) => widen(&mut guard.fixed, at, *size),
+            Base::Fixed(at) => widen(&mut guard.fixed[fixed_region(*operand)], at, *size),
         }
     }
-    let bases = [guard.instance, guard.frame, guard.fixed]
-        .iter()
-        .filter(|range| range.is_some())
-        .count();
+    let fixed = guard.fixed.iter().any(Option::is_some);
+    let bases = usize::from(guard.instance.is_some())
+        + usize::from(guard.frame.is_some())
+        + usize::from(fixed);
     (bases > 1).then_some(guard)
 }
 
@@ -183,8 +209,13 @@ fn jump_target(instr: &Instr) -> Option<u32> {
 }
 
 /// The loops of `code` whose places may be promoted, disjoint, in code order. Inner loops are
-/// preferred: they run most often.
-pub(crate) fn promotable_loops(code: &[Instr], layout: &Layout) -> Vec<PromotedLoop> {
+/// preferred: they run most often. `folded_constants` is the constant pool when its values
+/// are folded into the code: reads of it then touch no memory and need no guard.
+pub(crate) fn promotable_loops(
+    code: &[Instr],
+    layout: &Layout,
+    folded_constants: Option<&[u8]>,
+) -> Vec<PromotedLoop> {
     #[cfg(test)]
     if PROMOTION_OFF_IN_TESTS.with(std::cell::Cell::get) {
         return Vec::new();
@@ -206,7 +237,7 @@ pub(crate) fn promotable_loops(code: &[Instr], layout: &Layout) -> Vec<PromotedL
         {
             continue;
         }
-        if let Some(promoted) = analyse(code, layout, start, end) {
+        if let Some(promoted) = analyse(code, layout, folded_constants, start, end) {
             chosen.push(promoted);
         }
     }
@@ -215,7 +246,13 @@ pub(crate) fn promotable_loops(code: &[Instr], layout: &Layout) -> Vec<PromotedL
 }
 
 /// The places of loop `start ..= end` that may be promoted, if it has any.
-fn analyse(code: &[Instr], layout: &Layout, start: u32, end: u32) -> Option<PromotedLoop> {
+fn analyse(
+    code: &[Instr],
+    layout: &Layout,
+    folded_constants: Option<&[u8]>,
+    start: u32,
+    end: u32,
+) -> Option<PromotedLoop> {
     let inside = |index: u32| (start..=end).contains(&index);
     // Entered only at its start: a jump from outside into its middle would skip the loads.
     for (pc, instr) in code.iter().enumerate() {
@@ -237,6 +274,18 @@ fn analyse(code: &[Instr], layout: &Layout, start: u32, end: u32) -> Option<Prom
         }
         all.extend(accesses(instr)?);
     }
+    // A read the translator answers with an immediate (`Translator::load`) touches no
+    // memory: it can neither meet a promoted place nor widen the guard.
+    all.retain(
+        |(operand, size, access)| match (operand, access, folded_constants) {
+            (Operand::Const(offset), Access::Read, Some(pool)) => {
+                let first = *offset as usize;
+                pool.get(first..first.saturating_add(*size as usize))
+                    .is_none()
+            }
+            _ => true,
+        },
+    );
     let mut places: Vec<(Operand, u32)> = Vec::new();
     for (operand, size, access) in &all {
         let place = (*operand, *size);
@@ -301,9 +350,12 @@ impl Translator<'_, '_> {
             let saved = self.blocks.renew(start, end, &mut self.builder);
             let copy = self.blocks.at(start).unwrap_or(self.blocks.end());
             let on_variables = self.builder.create_block();
+            #[cfg(not(test))]
             self.builder
                 .ins()
                 .brif(overlapping, copy, &[], on_variables, &[]);
+            #[cfg(test)]
+            self.counted_guard(overlapping, copy, on_variables);
             // The copy works on memory; its backward jumps to the start go through the
             // preheader, which tests the guard again.
             let mut falls_through = false;
@@ -311,10 +363,11 @@ impl Translator<'_, '_> {
                 falls_through = self.emit_at(index, falls_through);
             }
             self.blocks.restore(start, saved);
-            if falls_through {
-                let next = self.blocks.at(end + 1).unwrap_or(self.blocks.end());
-                self.builder.ins().jump(next, &[]);
-            }
+            // The loop ends with its backward jump, after which control never falls.
+            debug_assert!(
+                !falls_through,
+                "a loop that falls through its backward jump"
+            );
             self.builder.switch_to_block(on_variables);
         }
         self.promoted = promoted
@@ -341,43 +394,73 @@ impl Translator<'_, '_> {
         falls_through
     }
 
-    /// Whether the ranges of a guard overlap, for this call's instance and frame.
+    /// In tests, the guard's branch through blocks that count its outcome in
+    /// [`GUARD_OUTCOMES_IN_TESTS`] on the way to `copy` or `on_variables`.
+    #[cfg(test)]
+    fn counted_guard(&mut self, overlapping: Value, copy: Block, on_variables: Block) {
+        use cranelift_codegen::ir::AtomicRmwOp;
+        let counting = [self.builder.create_block(), self.builder.create_block()];
+        self.builder
+            .ins()
+            .brif(overlapping, counting[1], &[], counting[0], &[]);
+        for (outcome, destination) in [on_variables, copy].into_iter().enumerate() {
+            self.builder.switch_to_block(counting[outcome]);
+            let counter = GUARD_OUTCOMES_IN_TESTS
+                .with(|outcomes| std::ptr::from_ref(&outcomes[outcome]) as i64);
+            let address = self.builder.ins().iconst(types::I64, counter);
+            let one = self.builder.ins().iconst(types::I64, 1);
+            self.builder.ins().atomic_rmw(
+                types::I64,
+                MemFlagsData::trusted(),
+                AtomicRmwOp::Add,
+                address,
+                one,
+            );
+            self.builder.ins().jump(destination, &[]);
+        }
+    }
+
+    /// Whether the ranges of a guard overlap, for this call's instance and frame: the
+    /// instance's range with the frame's, and each with every fixed region's range (the fixed
+    /// regions are disjoint by the layout).
     fn guard_fails(&mut self, guard: &Guard) -> Value {
-        let mut ranges = Vec::new();
-        for (base, range) in [
-            (Some(self.instance), guard.instance),
-            (Some(self.frame), guard.frame),
-            (None, guard.fixed),
-        ] {
-            let Some((first, last)) = range else {
-                continue;
-            };
-            let (first, last) = match base {
-                Some(base) => (
+        let mut moving = Vec::new();
+        for (base, range) in [(self.instance, guard.instance), (self.frame, guard.frame)] {
+            if let Some((first, last)) = range {
+                moving.push((
                     self.builder.ins().iadd_imm_u(base, first as i64),
                     self.builder.ins().iadd_imm_u(base, last as i64),
-                ),
-                None => (
-                    self.builder.ins().iconst(types::I64, first as i64),
-                    self.builder.ins().iconst(types::I64, last as i64),
-                ),
-            };
-            ranges.push((first, last));
+                ));
+            }
+        }
+        let mut fixed = Vec::new();
+        for (first, last) in guard.fixed.iter().flatten() {
+            fixed.push((
+                self.builder.ins().iconst(types::I64, *first as i64),
+                self.builder.ins().iconst(types::I64, *last as i64),
+            ));
+        }
+        let mut pairs = Vec::new();
+        if let [instance, frame] = moving[..] {
+            pairs.push((instance, frame));
+        }
+        for moving_range in &moving {
+            for fixed_range in &fixed {
+                pairs.push((*moving_range, *fixed_range));
+            }
         }
         let mut any = self.builder.ins().iconst(types::I8, 0);
-        for (index, (first_a, last_a)) in ranges.iter().enumerate() {
-            for (first_b, last_b) in ranges.iter().skip(index + 1) {
-                let a_before_b_ends =
-                    self.builder
-                        .ins()
-                        .icmp(IntCC::UnsignedLessThan, *first_a, *last_b);
-                let b_before_a_ends =
-                    self.builder
-                        .ins()
-                        .icmp(IntCC::UnsignedLessThan, *first_b, *last_a);
-                let overlap = self.builder.ins().band(a_before_b_ends, b_before_a_ends);
-                any = self.builder.ins().bor(any, overlap);
-            }
+        for ((first_a, last_a), (first_b, last_b)) in pairs {
+            let a_before_b_ends = self
+                .builder
+                .ins()
+                .icmp(IntCC::UnsignedLessThan, first_a, last_b);
+            let b_before_a_ends = self
+                .builder
+                .ins()
+                .icmp(IntCC::UnsignedLessThan, first_b, last_a);
+            let overlap = self.builder.ins().band(a_before_b_ends, b_before_a_ends);
+            any = self.builder.ins().bor(any, overlap);
         }
         any
     }

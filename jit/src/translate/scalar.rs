@@ -107,6 +107,7 @@ impl Translator<'_, '_> {
             let bytes = self.builder.ins().iconst(types::I64, i64::from(size));
             let status = self.call_host(Import::Copy, &[self.context, to, from, bytes]);
             self.fault_if(status, fault_kind::MEMORY, [None; 3]);
+            self.reload_promoted();
             return;
         }
         let mut chunks = Vec::new();

@@ -111,8 +111,6 @@ fn a_function_gets_a_prepared_frame_and_its_transfers() {
         // The callee's frame holds old bytes, which a new frame does not show.
         let callee_frame = fixture.frame_at() + u64::from(FRAME_SIZE);
         host.memory[callee_frame as usize..][..frame_size as usize].fill(0xAA);
-        // The initial run written by the host, for the large frame.
-        host.frame_template = vec![0, 0, 0, 0, 0, 0, 0, 0, 7];
         assert_eq!(fixture.run(&mut host), Status::Ok);
         assert_eq!(host.get(8, 4), 42, "frame of {frame_size} bytes");
         assert_eq!(host.get(12, 4), 0, "frame of {frame_size} bytes");
@@ -428,9 +426,15 @@ fn open_element_checks_each_dimension() {
 fn a_call_of_a_refused_pou_goes_to_the_interpreter() {
     let mut refused = adder(16);
     refused.name = crate::translate::REFUSED_IN_TESTS.into();
-    let fixture = fixture(vec![call_adder()], vec![refused], 512);
+    // POU 2 calls nothing: only POU 0, the refused POU's caller, is translated again.
+    let unrelated = adder(16);
+    crate::translate::TRANSLATED_IN_TESTS.with(|translated| translated.borrow_mut().clear());
+    let fixture = fixture(vec![call_adder()], vec![refused, unrelated], 512);
+    let translated = crate::translate::TRANSLATED_IN_TESTS.with(|translated| translated.take());
+    assert_eq!(translated, vec![0, 1, 2, 0]);
     assert!(fixture.code.has(0));
     assert!(!fixture.code.has(1));
+    assert!(fixture.code.has(2));
     let mut host = fixture.host();
     assert_eq!(fixture.run(&mut host), Status::Ok);
     assert_eq!(

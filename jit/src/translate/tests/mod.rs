@@ -16,8 +16,8 @@ use std::sync::atomic::{AtomicBool, Ordering};
 
 use program_image::Elementary::{self, *};
 use program_image::{
-    BinaryOp, CompareOp, Instr, Layout as Sizes, Operand, Pou, PouKind, ProgramImage, StdFunction,
-    UnaryOp,
+    BinaryOp, CompareOp, InitRun, Instr, Layout as Sizes, Operand, Pou, PouKind, ProgramImage,
+    StdFunction, UnaryOp,
 };
 
 use crate::{
@@ -52,13 +52,20 @@ struct TestHost {
     panic: Option<&'static str>,
     /// The frames prepared by `frame`: the POU and the frame's offset.
     frames: Vec<(u32, u64)>,
-    /// What `frame` writes at a new frame after zeroing `FRAME_SIZE` bytes (the initial
-    /// runs of the POU the test calls).
-    frame_template: Vec<u8>,
+    /// Every POU's frame size and initial runs, from the image: what `frame` prepares for
+    /// the POU it is given, as the interpreter's `push_frame` does.
+    frame_shapes: Vec<(u32, Vec<InitRun>)>,
     /// The instance's first 16 bytes at each tick, to see what generated code left in memory.
     tick_snapshots: Vec<Vec<u8>>,
     /// A byte of the instance each tick writes, as a preempting task may.
     tick_poke: Option<(u32, u8)>,
+    /// When set, the first tick takes the memory away (`memory` then gives an empty buffer)
+    /// and, if this is true, panics.
+    tick_releases_memory: Option<bool>,
+    /// The instance's first 16 bytes at each `op`, as at a tick.
+    op_snapshots: Vec<Vec<u8>>,
+    /// A byte of the instance each `op` writes, as the interpreter's instruction may.
+    op_poke: Option<(u32, u8)>,
 }
 
 impl Host for TestHost {
@@ -71,6 +78,14 @@ impl Host for TestHost {
     }
     fn tick(&mut self, site: Site, counters: &mut Counters) -> Status {
         self.ticks.push((site, *counters));
+        if let Some(panics) = self.tick_releases_memory.take() {
+            // A large buffer is unmapped when freed: code reading it after this faults.
+            self.memory = Vec::new();
+            if panics {
+                panic!("the test host panics in a tick");
+            }
+            return Status::Ok;
+        }
         let instance = INSTANCE_AT as usize;
         self.tick_snapshots
             .push(self.memory[instance..instance + 16].to_vec());
@@ -94,6 +109,11 @@ impl Host for TestHost {
             panic!("{message}");
         }
         self.ops.push((site, instance, frame));
+        let at = INSTANCE_AT as usize;
+        self.op_snapshots.push(self.memory[at..at + 16].to_vec());
+        if let Some((offset, byte)) = self.op_poke {
+            self.memory[at + offset as usize] = byte;
+        }
         Status::Ok
     }
     fn fault(&mut self, site: Site, fault: NativeFault) {
@@ -116,9 +136,22 @@ impl Host for TestHost {
     }
     fn frame(&mut self, pou: u32, frame: u64) -> Status {
         self.frames.push((pou, frame));
-        self.memory[frame as usize..][..FRAME_SIZE as usize].fill(0);
-        self.memory[frame as usize..][..self.frame_template.len()]
-            .copy_from_slice(&self.frame_template);
+        let Some((size, runs)) = self.frame_shapes.get(pou as usize) else {
+            return Status::Faulted;
+        };
+        let Some(bytes) = self
+            .memory
+            .get_mut(frame as usize..frame as usize + *size as usize)
+        else {
+            return Status::Faulted;
+        };
+        bytes.fill(0);
+        for run in runs {
+            let start = run.offset as usize;
+            if let Some(place) = bytes.get_mut(start..start + run.bytes.len()) {
+                place.copy_from_slice(&run.bytes);
+            }
+        }
         Status::Ok
     }
 }
@@ -315,6 +348,8 @@ struct Fixture {
     code: Code,
     layout: Layout,
     constants: Vec<u8>,
+    /// Every POU's frame size and initial runs.
+    frame_shapes: Vec<(u32, Vec<InitRun>)>,
 }
 
 impl Fixture {
@@ -329,6 +364,11 @@ impl Fixture {
     /// The translation of a whole image, every POU of which must be translated.
     fn of_image(image: ProgramImage) -> Self {
         let constants = image.constants.clone();
+        let frame_shapes = image
+            .pous
+            .iter()
+            .map(|pou| (pou.frame_size, pou.frame_init.clone()))
+            .collect();
         let layout = Layout::of(&image, 1);
         let code = Translation::new(&image, &layout, &PURE).unwrap();
         let refused: Vec<&Untranslated> = code
@@ -341,6 +381,7 @@ impl Fixture {
             code,
             layout,
             constants,
+            frame_shapes,
         }
     }
 
@@ -358,9 +399,12 @@ impl Fixture {
             memory_calls: 0,
             panic: None,
             frames: Vec::new(),
-            frame_template: Vec::new(),
+            frame_shapes: self.frame_shapes.clone(),
             tick_snapshots: Vec::new(),
             tick_poke: None,
+            tick_releases_memory: None,
+            op_snapshots: Vec::new(),
+            op_poke: None,
         }
     }
 

@@ -5,7 +5,7 @@
 #![allow(clippy::unwrap_used, clippy::expect_used)] // A panic is a failed test.
 
 use super::*;
-use crate::translate::promote::{Guard, promotable_loops};
+use crate::translate::promote::{GUARD_OUTCOMES_IN_TESTS, Guard, promotable_loops};
 
 const C: fn(u32) -> Operand = Operand::Const;
 const F: fn(u32) -> Operand = Operand::Frame;
@@ -68,13 +68,24 @@ fn for_loop_with(extra: Instr) -> Vec<Instr> {
     code
 }
 
+/// How often, on this thread so far, a guard sent its loop to the promoted copy and to the
+/// unpromoted one.
+fn guard_outcomes() -> (u64, u64) {
+    GUARD_OUTCOMES_IN_TESTS.with(|outcomes| {
+        (
+            outcomes[0].load(Ordering::Relaxed),
+            outcomes[1].load(Ordering::Relaxed),
+        )
+    })
+}
+
 fn layout() -> Layout {
     Layout::of(&image(Vec::new(), constants()), 1)
 }
 
 #[test]
 fn the_analysis_promotes_places_only_their_own_instructions_touch() {
-    let loops = promotable_loops(&for_loop(), &layout());
+    let loops = promotable_loops(&for_loop(), &layout(), None);
     assert_eq!(loops.len(), 1);
     assert_eq!((loops[0].start, loops[0].end), (1, 5));
     assert_eq!(loops[0].places, vec![(F(0), 1), (I(4), 4), (I(0), 4)]);
@@ -93,7 +104,10 @@ fn the_analysis_promotes_places_only_their_own_instructions_touch() {
         },
     ] {
         let code = for_loop_with(intruder);
-        assert!(promotable_loops(&code, &layout()).is_empty(), "{code:?}");
+        assert!(
+            promotable_loops(&code, &layout(), None).is_empty(),
+            "{code:?}"
+        );
     }
     // A copy over `sum`'s bytes keeps it in memory.
     let code = for_loop_with(Instr::Copy {
@@ -101,12 +115,12 @@ fn the_analysis_promotes_places_only_their_own_instructions_touch() {
         dst: I(6),
         src: I(40),
     });
-    let loops = promotable_loops(&code, &layout());
+    let loops = promotable_loops(&code, &layout(), None);
     assert_eq!(loops[0].places, vec![(F(0), 1), (I(0), 4)]);
     // Places of different bases are disjoint when the guard says so on entry: it holds the
     // ranges touched per base.
     let code = for_loop_with(binary(BinaryOp::Add, G(300), G(300), I(0)));
-    let loops = promotable_loops(&code, &layout());
+    let loops = promotable_loops(&code, &layout(), None);
     assert_eq!(
         loops[0].places,
         vec![(F(0), 1), (G(300), 4), (I(4), 4), (I(0), 4)]
@@ -115,7 +129,13 @@ fn the_analysis_promotes_places_only_their_own_instructions_touch() {
     let guard = Guard {
         instance: Some((0, 8)),
         frame: Some((0, 1)),
-        fixed: Some((300, constants_at + 8)),
+        fixed: [
+            Some((300, 304)),
+            None,
+            None,
+            None,
+            Some((constants_at, constants_at + 8)),
+        ],
     };
     assert_eq!(loops[0].guard, Some(guard));
     // One base, no guard.
@@ -123,7 +143,7 @@ fn the_analysis_promotes_places_only_their_own_instructions_touch() {
         binary(BinaryOp::Add, I(0), I(0), I(4)),
         Instr::Jump { target: 0 },
     ];
-    assert_eq!(promotable_loops(&code, &layout())[0].guard, None);
+    assert_eq!(promotable_loops(&code, &layout(), None)[0].guard, None);
 }
 
 #[test]
@@ -138,7 +158,11 @@ fn a_loop_whose_places_overlap_across_bases_runs_on_memory() {
     });
     let fixture = Fixture::with_constants(code, constants());
     let mut host = fixture.host();
+    let before = guard_outcomes();
     assert_eq!(fixture.run(&mut host), Status::Ok);
+    // Every iteration goes back through the guard, which fails each time.
+    let (promoted, unpromoted) = guard_outcomes();
+    assert_eq!((promoted - before.0, unpromoted - before.1), (0, 1001));
     assert_eq!(host.get(0, 4), 1001);
     assert_eq!(host.get(4, 4), 500_500);
     // The Move runs before the addition: the sum up to 999.
@@ -157,7 +181,12 @@ fn promoted_places_are_in_memory_after_the_loop_and_at_a_tick() {
         budget: 100,
     };
     let mut host = fixture.host();
+    let before = guard_outcomes();
     assert_eq!(fixture.run_with(&mut host, &due, &mut counters), Status::Ok);
+    // The instance and the frame are disjoint: the loop, entered once, runs promoted (the
+    // tick is on its back-edge, inside it).
+    let (promoted, unpromoted) = guard_outcomes();
+    assert_eq!((promoted - before.0, unpromoted - before.1), (1, 0));
     assert_eq!(host.get(0, 4), 1001);
     assert_eq!(host.get(4, 4), 500_500);
     assert_eq!(host.tick_snapshots.len(), 1);
@@ -184,7 +213,7 @@ fn promoted_places_are_in_memory_at_a_fault() {
         binary(BinaryOp::Div, I(4), C(4), I(0)),
         Instr::Jump { target: 0 },
     ];
-    let loops = promotable_loops(&code, &layout());
+    let loops = promotable_loops(&code, &layout(), None);
     // `q` is only written: it stays in memory.
     assert_eq!(loops[0].places, vec![(I(0), 4)]);
     let fixture = Fixture::with_constants(code, constants());
@@ -299,10 +328,12 @@ fn random_loops_run_alike_with_and_without_promotion() {
     let mut constants = constants();
     constants[8] = 40; // The loops count 1 ..= 40.
     let mut promoted_loops = 0;
+    let mut promoted_runs = 0;
+    let mut unpromoted_runs = 0;
     for program in 0..300 {
         let code = random_loop(&mut random);
         let layout = Layout::of(&image(Vec::new(), constants.clone()), 1);
-        promoted_loops += usize::from(!promotable_loops(&code, &layout).is_empty());
+        promoted_loops += usize::from(!promotable_loops(&code, &layout, None).is_empty());
         let promoted = Fixture::with_constants(code.clone(), constants.clone());
         crate::translate::promote::PROMOTION_OFF_IN_TESTS.with(|off| off.set(true));
         let plain = Fixture::with_constants(code.clone(), constants.clone());
@@ -315,6 +346,7 @@ fn random_loops_run_alike_with_and_without_promotion() {
             *byte = random.next() as u8;
         }
         let mut results = Vec::new();
+        let before = guard_outcomes();
         for fixture in [&promoted, &plain] {
             let mut host = fixture.host();
             host.memory.clone_from(&memory);
@@ -328,9 +360,19 @@ fn random_loops_run_alike_with_and_without_promotion() {
             results.push((status, host.faults, host.tick_snapshots, host.memory));
         }
         assert!(results[0] == results[1], "program {program}: {code:?}");
+        // Only the promoting translation has a guard; a guarded loop is entered once.
+        let (entered_promoted, entered_unpromoted) = guard_outcomes();
+        promoted_runs += entered_promoted - before.0;
+        unpromoted_runs += entered_unpromoted - before.1;
     }
-    // The programs exercise promotion, not only its refusal.
+    // The programs exercise promotion, not only its refusal: the analysis accepts many of
+    // the loops, and the guard lets many of those run on variables.
     assert!(promoted_loops > 100, "{promoted_loops} promoted");
+    assert!(
+        promoted_runs > 100,
+        "{promoted_runs} runs on the promoted path"
+    );
+    assert!(unpromoted_runs > 0, "the guard never failed");
 }
 
 #[test]
@@ -352,7 +394,7 @@ fn a_return_inside_a_promoted_loop_writes_its_places_back() {
         Instr::Return,
         Instr::Jump { target: 0 },
     ];
-    let loops = promotable_loops(&code, &layout());
+    let loops = promotable_loops(&code, &layout(), None);
     assert_eq!(loops[0].places, vec![(I(0), 4), (F(0), 1)]);
     let fixture = Fixture::with_constants(code, constants());
     let mut host = fixture.host();
@@ -360,4 +402,140 @@ fn a_return_inside_a_promoted_loop_writes_its_places_back() {
     assert_eq!(fixture.run(&mut host), Status::Ok);
     assert_eq!(host.get(0, 4), 11);
     assert_eq!(host.memory[fixture.frame_at() as usize], 1);
+}
+
+#[test]
+fn a_loop_over_a_global_an_instance_variable_and_constants_runs_promoted() {
+    // `g := g + i` with `g` at G(100), in the data region below the program's instance at
+    // 256, the constants 1 and 1000 read by the loop, and 4 bytes of the pool copied to
+    // F(8) (a copy reads memory even when the pool is folded): each fixed region has its own
+    // range, and the folded constants touch no memory.
+    let mut code = for_loop_with(binary(BinaryOp::Add, G(100), G(100), I(0)));
+    code.insert(
+        3,
+        Instr::Copy {
+            size: 4,
+            dst: F(8),
+            src: C(4),
+        },
+    );
+    code[2] = Instr::JumpIf {
+        cond: F(0),
+        target: 8,
+    };
+    code[7] = Instr::Jump { target: 1 };
+    let loops = promotable_loops(&code, &layout(), Some(&constants()));
+    let constants_at = layout().constants;
+    let guard = Guard {
+        instance: Some((0, 8)),
+        frame: Some((0, 12)),
+        fixed: [
+            Some((100, 104)),
+            None,
+            None,
+            None,
+            Some((constants_at + 4, constants_at + 8)),
+        ],
+    };
+    assert_eq!(loops[0].guard, Some(guard));
+    let fixture = Fixture::with_constants(code.clone(), constants());
+    let mut host = fixture.host();
+    let before = guard_outcomes();
+    assert_eq!(fixture.run(&mut host), Status::Ok);
+    let (promoted, unpromoted) = guard_outcomes();
+    assert_eq!((promoted - before.0, unpromoted - before.1), (1, 0));
+    let global = |at: usize| u32::from_le_bytes(host.memory[at..at + 4].try_into().unwrap());
+    assert_eq!(global(fixture.layout.data as usize + 100), 500_500);
+    assert_eq!(host.get(4, 4), 500_500);
+    let frame = fixture.frame_at() as usize + 8;
+    assert_eq!(host.memory[frame..frame + 4], 1000u32.to_le_bytes());
+    // Unfolded, the constants read are in the pool's range too.
+    let loops = promotable_loops(&code, &layout(), None);
+    assert_eq!(
+        loops[0].guard.map(|guard| guard.fixed[4]),
+        Some(Some((constants_at, constants_at + 8)))
+    );
+}
+
+/// Runs [`for_loop`] with a tick at the 10th backward jump that takes the host's memory away
+/// (returning `Ok` with an empty memory, or panicking): the code must end there without
+/// reading the promoted places again (§7 rules 1 and 3).
+#[test]
+fn a_tick_that_takes_the_memory_away_ends_a_promoted_loop_without_reading_it() {
+    for panics in [false, true] {
+        let fixture = Fixture::with_constants(for_loop(), constants());
+        let mut host = fixture.host();
+        // Above glibc's largest mmap threshold (32 MiB): the buffer is unmapped when freed,
+        // so a read through its old address faults the test process.
+        host.memory.resize(64 << 20, 0);
+        host.tick_releases_memory = Some(panics);
+        let due = AtomicBool::new(false);
+        let mut counters = Counters {
+            depth: 0,
+            budget: 10,
+        };
+        let status = fixture.run_with(&mut host, &due, &mut counters);
+        assert_eq!(status, Status::Faulted, "panics: {panics}");
+        let fault = if panics {
+            NativeFault::HostPanicked
+        } else {
+            NativeFault::Memory
+        };
+        let site = Site {
+            pou: 0,
+            instruction: 5,
+        };
+        assert_eq!(host.faults, vec![(site, fault)]);
+        assert!(host.memory.is_empty());
+    }
+}
+
+/// Instructions the analysis lets into a promoted loop that the host runs (integer ATAN2,
+/// NOT of a real, arithmetic on BOOL): the places are in memory when the host runs them, and
+/// what it writes is read again after.
+#[test]
+fn an_instruction_run_by_the_host_sees_and_changes_the_promoted_places() {
+    for host_instruction in [
+        binary(BinaryOp::Atan2, I(8), I(0), I(4)),
+        Instr::Unary {
+            op: UnaryOp::Not,
+            ty: Real,
+            dst: I(8),
+            src: I(12),
+        },
+        Instr::Binary {
+            op: BinaryOp::Add,
+            ty: Bool,
+            dst: I(8),
+            a: I(12),
+            b: I(13),
+        },
+    ] {
+        let code = for_loop_with(host_instruction.clone());
+        let loops = promotable_loops(&code, &layout(), Some(&constants()));
+        assert!(
+            loops[0].places.contains(&(I(4), 4)),
+            "{host_instruction:?} is allowed in a promoted loop"
+        );
+        let fixture = Fixture::with_constants(code, constants());
+        let mut host = fixture.host();
+        let before = guard_outcomes();
+        // Each op sets `sum`'s byte 3: from the 2nd iteration on, `sum` carries 0x0100_0000.
+        host.op_poke = Some((7, 1));
+        assert_eq!(fixture.run(&mut host), Status::Ok, "{host_instruction:?}");
+        let (promoted, unpromoted) = guard_outcomes();
+        assert_eq!((promoted - before.0, unpromoted - before.1), (1, 0));
+        assert_eq!(host.op_snapshots.len(), 1000);
+        // The op of iteration `i` sees `i` and the sum up to `i - 1` (with the poked byte).
+        for (i, snapshot) in (1u32..).zip(&host.op_snapshots) {
+            let at = |offset: usize| {
+                u32::from_le_bytes(snapshot[offset..offset + 4].try_into().unwrap())
+            };
+            let sum = (1..i).sum::<u32>() & 0x00FF_FFFF | if i > 1 { 0x0100_0000 } else { 0 };
+            assert_eq!((at(0), at(4)), (i, sum), "{host_instruction:?}");
+        }
+        let expected = ((1..=1000).sum::<u32>() & 0x00FF_FFFF) | 0x0100_0000;
+        assert_eq!(host.get(4, 4), u64::from(expected));
+        assert_eq!(host.get(0, 4), 1001);
+    }
 }
