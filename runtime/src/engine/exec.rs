@@ -38,6 +38,10 @@ const WATCHDOG_STRIDE: u32 = 4096;
 /// before the thread's own stack would.
 pub(crate) const MAX_CALL_DEPTH: u32 = 2000;
 
+// The native engine checks the same depth in its own code (`docs/native-engine.md` §4.4); the
+// two must never drift apart, or a recursion would fault at different depths in the engines.
+const _: () = assert!(MAX_CALL_DEPTH == jit::MAX_CALL_DEPTH);
+
 /// The native stack a cycle may use. Every PLC call nests a few Rust calls, so deep recursion
 /// in a user program would exhaust the thread's stack (and abort the process) before the
 /// PLC stack fills; measured against the address of a local at the start of the cycle, this
