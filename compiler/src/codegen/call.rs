@@ -114,7 +114,16 @@ impl<'p> BodyGen<'_, '_, 'p> {
             })
             .cloned()
             .collect();
-        // EN = FALSE skips the call (a result reads as zero) and ENO tells whether it ran.
+        // EN = FALSE skips the call (a result reads as zero) and ENO tells whether it ran. Both
+        // branches store into ENO's place, so it is computed (and an element's index checked)
+        // here, before the skip, where both branches pass.
+        let enabled_place = match &enabled_out {
+            Some(target) => {
+                let place = self.place(target)?;
+                Some(self.settled(place)?)
+            }
+            None => None,
+        };
         let skip = match &enable {
             Some(condition) => {
                 let condition = self.expr_as(condition, &Type::BOOL)?;
@@ -126,10 +135,6 @@ impl<'p> BodyGen<'_, '_, 'p> {
             None => None,
         };
         let result = self.call_callee(callee, &args, Some((node, want)))?;
-        let enabled_place = match &enabled_out {
-            Some(target) => Some(self.place(target)?),
-            None => None,
-        };
         if let Some(place) = &enabled_place {
             let on = self.build.constant(&[1]);
             self.store(place, on)?;

@@ -150,6 +150,11 @@ impl BodyGen<'_, '_, '_> {
     /// standard function (`INT_TO_REAL`, `SQRT`, `LEN`, which change nothing but their
     /// result), or a property read through its getter (a property of this POU by name, or a
     /// member of an instance, which may be one).
+    ///
+    /// Standard functions count as free of effects even though `__QUERYINTERFACE`,
+    /// `__QUERYPOINTER` and `__DELETE` write an argument: what they write is an interface, a
+    /// pointer or a pointer variable set to null, never an integer, so they cannot change the
+    /// index of an element place settled before them.
     pub(crate) fn may_run_code(&self, node: &Expr) -> bool {
         node.syntax().descendants().any(|inner| match inner.kind() {
             SyntaxKind::CALL_EXPR => !CallExpr::cast(inner)

@@ -395,7 +395,10 @@ impl BodyGen<'_, '_, '_> {
                     _ => return Err(fail!("{name}'s dimension must be a constant from 1")),
                 };
                 let upper = upper == "UPPER_BOUND";
+                // The bounds are the type's, but an element such as `arrs[i]` is still settled
+                // so its index is checked: a bad `i` faults as any other use of the element.
                 let typed = self.place(array)?;
+                let typed = self.settled(typed)?;
                 let scalar = self.scalar_of(&result_ty).unwrap_or(IE::Dint);
                 let bound = match (&typed.lay.shape, typed.place) {
                     (LayShape::OpenArray { rank, .. }, Place::Direct(descriptor))

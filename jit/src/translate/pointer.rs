@@ -100,17 +100,7 @@ impl Translator<'_, '_> {
         let high = low.saturating_add(i64::try_from(count.saturating_sub(1)).unwrap_or(i64::MAX));
         let low_value = self.builder.ins().iconst(types::I64, low);
         let high_value = self.builder.ins().iconst(types::I64, high);
-        let under = self.builder.ins().icmp(IntCC::SignedLessThan, i, low_value);
-        let over = self
-            .builder
-            .ins()
-            .icmp(IntCC::SignedGreaterThan, i, high_value);
-        let outside = self.builder.ins().bor(under, over);
-        self.fault_if(
-            outside,
-            fault_kind::INDEX_OUT_OF_BOUNDS,
-            [Some(i), Some(low_value), Some(high_value)],
-        );
+        self.check_index(i, index_ty, low_value, high_value);
         let pointer = self.load(types::I64, base);
         let from_low = self.builder.ins().isub(i, low_value);
         let moved = self.builder.ins().imul_imm_u(from_low, i64::from(stride));
@@ -136,14 +126,7 @@ impl Translator<'_, '_> {
             let low = self.load(types::I64, displaced(descriptor, bounds));
             let high = self.load(types::I64, displaced(descriptor, bounds + 8));
             let i = self.index_value(*index, *index_ty);
-            let under = self.builder.ins().icmp(IntCC::SignedLessThan, i, low);
-            let over = self.builder.ins().icmp(IntCC::SignedGreaterThan, i, high);
-            let outside = self.builder.ins().bor(under, over);
-            self.fault_if(
-                outside,
-                fault_kind::INDEX_OUT_OF_BOUNDS,
-                [Some(i), Some(low), Some(high)],
-            );
+            self.check_index(i, *index_ty, low, high);
             let span = self.builder.ins().isub(high, low);
             let count = self.builder.ins().iadd_imm_u(span, 1);
             let scaled = self.builder.ins().imul(linear, count);
@@ -155,8 +138,30 @@ impl Translator<'_, '_> {
         self.store(result, dst);
     }
 
+    /// Faults unless the index `i` (from [`Self::index_value`]) lies in `low ..= high`, as the
+    /// interpreter checks it. An unsigned 64-bit index (`ULINT`, `LWORD`) above `i64::MAX`
+    /// reads as negative in `i`, so it is refused on its own (a negative low bound would let
+    /// it pass) and reported saturated, as index `i64::MAX`.
+    fn check_index(&mut self, i: Value, index_ty: Elementary, low: Value, high: Value) {
+        let under = self.builder.ins().icmp(IntCC::SignedLessThan, i, low);
+        let over = self.builder.ins().icmp(IntCC::SignedGreaterThan, i, high);
+        let mut outside = self.builder.ins().bor(under, over);
+        let mut reported = i;
+        if !is_signed(index_ty) && index_ty.size_bytes() == 8 {
+            let beyond_i64 = self.builder.ins().icmp_imm_s(IntCC::SignedLessThan, i, 0);
+            outside = self.builder.ins().bor(outside, beyond_i64);
+            let saturated = self.builder.ins().iconst(types::I64, i64::MAX);
+            reported = self.builder.ins().select(beyond_i64, saturated, i);
+        }
+        self.fault_if(
+            outside,
+            fault_kind::INDEX_OUT_OF_BOUNDS,
+            [Some(reported), Some(low), Some(high)],
+        );
+    }
+
     /// An index operand as the interpreter reads it: extended to 64 bits by its type's
-    /// signedness (an `ULINT` above 2⁶³ becomes negative).
+    /// signedness (an `ULINT` above 2⁶³ becomes negative, which [`Self::check_index`] refuses).
     fn index_value(&mut self, index: Operand, index_ty: Elementary) -> Value {
         let ir = int_type(index_ty);
         let value = self.load(ir, index);

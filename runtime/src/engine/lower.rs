@@ -312,15 +312,7 @@ fn lower(instr: &Instr, regions: &Regions, sizes: &[usize], at: u32) -> Result<O
             let high =
                 low.saturating_add(i64::try_from(count.saturating_sub(1)).unwrap_or(i64::MAX));
             Box::new(move |x| {
-                let raw = read_raw(x, index, index_ty)?;
-                let i = sign_extend(raw, index_ty);
-                if i < low || i > high {
-                    return Err(Box::new(FaultKind::IndexOutOfBounds {
-                        index: i,
-                        low,
-                        high,
-                    }));
-                }
+                let i = checked_index(read_raw(x, index, index_ty)?, index_ty, low, high)?;
                 let pointer = x.get::<u64>(base)?;
                 let moved = pointer.wrapping_add((i.wrapping_sub(low) as u64).wrapping_mul(stride));
                 x.set::<u64>(dst, moved)?;
@@ -508,14 +500,7 @@ fn lower(instr: &Instr, regions: &Regions, sizes: &[usize], at: u32) -> Result<O
                         ..descriptor
                     };
                     let (low, high) = (x.get::<i64>(bound(0))?, x.get::<i64>(bound(8))?);
-                    let i = sign_extend(read_raw(x, *index, *ty)?, *ty);
-                    if i < low || i > high {
-                        return Err(Box::new(FaultKind::IndexOutOfBounds {
-                            index: i,
-                            low,
-                            high,
-                        }));
-                    }
+                    let i = checked_index(read_raw(x, *index, *ty)?, *ty, low, high)?;
                     let count = high.wrapping_sub(low).wrapping_add(1) as u64;
                     linear = linear
                         .wrapping_mul(count)
@@ -644,6 +629,27 @@ pub(crate) fn sign_extend(raw: u64, ty: E) -> i64 {
     }
 }
 
+/// An index's raw bits as the number checked against `low ..= high`, or the fault of an index
+/// outside them. An unsigned 64-bit index (`ULINT`, `LWORD`) above `i64::MAX` is outside every
+/// array: read as `i64` it would be negative and could pass a negative low bound, so it is
+/// refused before the comparison and reported saturated, as index `i64::MAX`.
+fn checked_index(raw: u64, ty: E, low: i64, high: i64) -> Result<i64, Fault> {
+    let beyond_i64 = !ty.is_signed() && raw > i64::MAX as u64;
+    let i = if beyond_i64 {
+        i64::MAX
+    } else {
+        sign_extend(raw, ty)
+    };
+    if beyond_i64 || i < low || i > high {
+        return Err(Box::new(FaultKind::IndexOutOfBounds {
+            index: i,
+            low,
+            high,
+        }));
+    }
+    Ok(i)
+}
+
 /// The element (or member of an element) a `LoadElement` or `StoreElement` reaches: the
 /// array is a direct place, so the element's address is the array's plus a checked offset, with
 /// no pointer to resolve.
@@ -686,14 +692,7 @@ impl ElementAccess {
     #[inline(always)]
     fn addr(&self, x: &Exec<'_>) -> Result<Addr, Fault> {
         let raw = read_raw(x, self.index, self.index_ty)?;
-        let i = sign_extend(raw, self.index_ty);
-        if i < self.low || i > self.high {
-            return Err(Box::new(FaultKind::IndexOutOfBounds {
-                index: i,
-                low: self.low,
-                high: self.high,
-            }));
-        }
+        let i = checked_index(raw, self.index_ty, self.low, self.high)?;
         // The verifier checked that the whole array lies inside its region, so the element's
         // offset fits; wrapping keeps a corrupted value a memory fault of `get`/`set` rather
         // than a panic.
@@ -908,5 +907,41 @@ fn arith2<T: Arith>(op: BinaryOp, dst: Addr, a: Addr, b: Addr) -> Op {
         BinaryOp::Expt => total!(T::expt),
         BinaryOp::Min => total!(|l: T, r: T| if r < l { r } else { l }),
         _ => total!(|l: T, r: T| if r > l { r } else { l }),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn outside(index: i64, low: i64, high: i64) -> Result<i64, Fault> {
+        Err(Box::new(FaultKind::IndexOutOfBounds { index, low, high }))
+    }
+
+    #[test]
+    fn an_unsigned_64_bit_index_above_i64_max_is_outside_even_a_negative_low_bound() {
+        // Read as i64 these would be -1, -2 and i64::MIN; the first two lie in -2..=2.
+        for ty in [E::Ulint, E::Lword] {
+            for raw in [u64::MAX, u64::MAX - 1, 1 << 63] {
+                assert_eq!(
+                    checked_index(raw, ty, -2, 2),
+                    outside(i64::MAX, -2, 2),
+                    "{ty:?} {raw}"
+                );
+            }
+            assert_eq!(
+                checked_index(i64::MAX as u64, ty, -2, 2),
+                outside(i64::MAX, -2, 2)
+            );
+            assert_eq!(checked_index(2, ty, -2, 2), Ok(2));
+        }
+        // Signed and narrower types keep their values: LINT -1 and UDINT 2^32 - 1.
+        assert_eq!(checked_index(u64::MAX, E::Lint, -2, 2), Ok(-1));
+        assert_eq!(checked_index(u64::MAX, E::Sint, -2, 2), Ok(-1));
+        assert_eq!(
+            checked_index(u64::from(u32::MAX), E::Udint, -2, 2),
+            outside(i64::from(u32::MAX), -2, 2)
+        );
+        assert_eq!(checked_index(0xFF, E::Sint, -2, 2), Ok(-1));
     }
 }

@@ -183,8 +183,9 @@ fn a_negative_low_bound_counts_elements_from_it_and_faults_below_it() {
 }
 
 #[test]
-fn a_ulint_index_above_2_pow_63_is_a_negative_index_out_of_bounds() {
-    // The interpreter reads an index as i64, so 2^63 + 1 is below every low bound of 0.
+fn a_ulint_index_above_2_pow_63_is_out_of_bounds_and_reported_as_i64_max() {
+    // Read as i64, 2^63 + 1 would be negative; it is outside whatever the bounds, and the
+    // fault reports it saturated (docs/program-image.md, Element).
     let s = run(
         "PROGRAM main VAR a : ARRAY[0..3] OF INT; u : ULINT := 16#8000000000000001; ok : ULINT := 3; x : INT; END_VAR
          a[ok] := 7; x := a[ok];
@@ -197,25 +198,70 @@ fn a_ulint_index_above_2_pow_63_is_a_negative_index_out_of_bounds() {
     assert_eq!(
         fault.kind,
         FaultKind::IndexOutOfBounds {
-            index: i64::MIN + 1,
+            index: i64::MAX,
             low: 0,
             high: 3
         }
     );
     assert_eq!(fault.line, Some(3));
-    let s = run(
-        "PROGRAM main VAR a : ARRAY[0..3] OF INT; u : ULINT := 16#FFFFFFFFFFFFFFFF; x : INT; END_VAR
+}
+
+/// The one fault of `source` run for a cycle, with the value of `main.a[-1]` after it.
+#[track_caller]
+fn fault_and_minus_one(source: &str) -> (FaultKind, Option<u32>, String) {
+    let s = run(source, 1);
+    let fault = only_fault(&s);
+    (fault.kind.clone(), fault.line, value(&s, "main.a[-1]"))
+}
+
+#[test]
+fn an_unsigned_64_bit_index_of_2_pow_64_minus_1_does_not_reach_index_minus_1() {
+    // 2^64 - 1 read as i64 is -1, inside -2..2: the fused read and write, the pointer of
+    // Element (a VAR_IN_OUT array) and OpenElement (an ARRAY[*]) must all fault instead.
+    let expected = FaultKind::IndexOutOfBounds {
+        index: i64::MAX,
+        low: -2,
+        high: 2,
+    };
+    // ST takes only integers as indices; LWORD is pinned by the jit's and the runtime's own
+    // tests, where an image may carry it.
+    let read = "PROGRAM main VAR a : ARRAY[-2..2] OF INT; u : ULINT := 16#FFFFFFFFFFFFFFFF; x : INT; END_VAR
+         a[-1] := 5;
          x := a[u];
-         END_PROGRAM",
-        1,
-    );
+         END_PROGRAM";
+    assert_eq!(count_of(read, "main", is_fused), 1);
     assert_eq!(
-        only_fault(&s).kind,
-        FaultKind::IndexOutOfBounds {
-            index: -1,
-            low: 0,
-            high: 3
-        }
+        fault_and_minus_one(read),
+        (expected.clone(), Some(3), "5".to_string()),
+        "read"
+    );
+    let write = read.replace("x := a[u];", "a[u] := 9;");
+    assert_eq!(count_of(&write, "main", is_fused), 1);
+    assert_eq!(
+        fault_and_minus_one(&write),
+        (expected.clone(), Some(3), "5".to_string()),
+        "write"
+    );
+    let through_pointer = "FUNCTION Put : BOOL VAR_IN_OUT v : ARRAY[-2..2] OF INT; END_VAR VAR_INPUT i : ULINT; END_VAR
+         v[i] := 9;
+         END_FUNCTION
+         PROGRAM main VAR a : ARRAY[-2..2] OF INT; u : ULINT := 16#FFFFFFFFFFFFFFFF; END_VAR
+         a[-1] := 5;
+         Put(v := a, i := u);
+         END_PROGRAM";
+    assert_eq!(count_of(through_pointer, "Put", is_pointer_element), 1);
+    assert_eq!(
+        fault_and_minus_one(through_pointer),
+        (expected.clone(), Some(2), "5".to_string()),
+        "through Element"
+    );
+    let open = through_pointer.replace("v : ARRAY[-2..2] OF INT", "v : ARRAY[*] OF INT");
+    let is_open = |instr: &Instr| matches!(instr, Instr::OpenElement { .. });
+    assert_eq!(count_of(&open, "Put", is_open), 1);
+    assert_eq!(
+        fault_and_minus_one(&open),
+        (expected, Some(2), "5".to_string()),
+        "through OpenElement"
     );
 }
 
@@ -310,4 +356,159 @@ fn elements_reached_through_pointers_in_outs_bits_and_calls_keep_their_values() 
             ("main.counters[1].total", "0"),
         ],
     );
+}
+
+#[test]
+fn eno_into_an_element_is_computed_before_en_skips_the_call() {
+    // Both branches of `EN` store into ENO's place, so its index is computed before the skip:
+    // with EN FALSE, `ok[k + 1]` is ok[2], and an index outside faults even then.
+    let source = "FUNCTION Twice : INT VAR_INPUT v : INT; END_VAR Twice := v * 2; END_FUNCTION
+         PROGRAM main VAR ok : ARRAY[0..3] OF BOOL; k : INT := 1; r : INT := 7; e : BOOL := FALSE; j : INT; END_VAR
+         FOR j := 0 TO 3 DO ok[j] := TRUE; END_FOR
+         r := Twice(EN := e, v := 5, ENO => ok[k + 1]);
+         END_PROGRAM";
+    let s = run(source, 1);
+    assert!(s.faults().is_empty(), "{:?}", s.faults());
+    check(
+        &s,
+        &[
+            ("main.r", "0"),
+            ("main.ok[0]", "TRUE"),
+            ("main.ok[1]", "TRUE"),
+            ("main.ok[2]", "FALSE"),
+            ("main.ok[3]", "TRUE"),
+        ],
+    );
+    let s = run(&source.replace("e : BOOL := FALSE", "e : BOOL := TRUE"), 1);
+    check(&s, &[("main.r", "10"), ("main.ok[2]", "TRUE")]);
+    let s = run(&source.replace("k : INT := 1", "k : INT := 3"), 1);
+    let fault = only_fault(&s);
+    assert_eq!(
+        fault.kind,
+        FaultKind::IndexOutOfBounds {
+            index: 4,
+            low: 0,
+            high: 3
+        }
+    );
+    assert_eq!(fault.line, Some(4));
+}
+
+#[test]
+fn an_assignment_whose_value_runs_no_code_stops_at_the_value_s_fault_first() {
+    // docs/native-engine.md §10: the target's index is checked by the store, after the value.
+    let source = "PROGRAM main VAR a : ARRAY[0..3] OF INT; b : ARRAY[1..2] OF INT; i : INT := 7; j : INT := 9; x : INT := 5; z : INT; END_VAR
+         a[i] := b[j];
+         END_PROGRAM";
+    let s = run(source, 1);
+    assert_eq!(
+        only_fault(&s).kind,
+        FaultKind::IndexOutOfBounds {
+            index: 9,
+            low: 1,
+            high: 2
+        }
+    );
+    let s = run(&source.replace("a[i] := b[j];", "a[i] := x / z;"), 1);
+    let fault = only_fault(&s);
+    assert_eq!(fault.kind, FaultKind::DivisionByZero);
+    assert_eq!(fault.line, Some(2));
+    // With a good index the value's fault still comes first, and a good value lets the
+    // target's index fault at the store.
+    let s = run(&source.replace("a[i] := b[j];", "a[i] := b[2];"), 1);
+    assert_eq!(
+        only_fault(&s).kind,
+        FaultKind::IndexOutOfBounds {
+            index: 7,
+            low: 0,
+            high: 3
+        }
+    );
+}
+
+#[test]
+fn code_that_changes_the_index_runs_after_the_element_written_is_chosen() {
+    // Each statement's value (or end, or output) runs code that increments the global i; the
+    // element written is the one i named before that code ran, as before the fused form.
+    let s = run(
+        "VAR_GLOBAL i : INT; END_VAR
+         FUNCTION Bump : INT i := i + 1; Bump := i; END_FUNCTION
+         FUNCTION Emit : BOOL VAR_OUTPUT x : INT; END_VAR i := i + 1; x := 100 + i; Emit := TRUE; END_FUNCTION
+         FUNCTION_BLOCK FB_Bump VAR own : ARRAY[0..9] OF INT; END_VAR
+         PROPERTY Next : INT
+         GET i := i + 1; Next := 10 * i; END_GET
+         END_PROPERTY
+         METHOD Step : INT i := i + 1; Step := 20 * i; END_METHOD
+         METHOD Fill : BOOL own[i] := Next; Fill := TRUE; END_METHOD
+         END_FUNCTION_BLOCK
+         PROGRAM main VAR b : FB_Bump; a : ARRAY[0..9] OF INT; c : ARRAY[0..9] OF INT; refs : ARRAY[0..9] OF REFERENCE TO INT; seen : INT; END_VAR
+         i := 0;
+         a[i] := b.Next;
+         a[i] := b.Step();
+         b.Fill();
+         refs[i] REF= c[Bump()];
+         c[4] := 77; seen := refs[3]^;
+         FOR a[i] := 1 TO Bump() DO END_FOR
+         FOR c[i] := 1 TO 3 DO i := i + 1; END_FOR
+         Emit(x => a[i]);
+         END_PROGRAM",
+        1,
+    );
+    assert!(s.faults().is_empty(), "{:?}", s.faults());
+    check(
+        &s,
+        &[
+            // The property read through the instance: i was 0.
+            ("main.a[0]", "10"),
+            // The method: i was 1.
+            ("main.a[1]", "40"),
+            // The property of the method's own POU, by name: i was 2.
+            ("main.b.own[2]", "30"),
+            ("main.b.own[3]", "0"),
+            // REF= into refs[3] (a null refs[3] would fault) while Bump made i 4.
+            ("main.seen", "77"),
+            // The FOR counter a[4], its end Bump() = 5: the counter ends past it at 6.
+            ("main.a[4]", "6"),
+            ("main.a[5]", "0"),
+            // The counter c[5] stays c[5] while the body moves i from 5 to 8.
+            ("main.c[5]", "4"),
+            // The function's output into a[8], i 9 when it ends.
+            ("main.a[8]", "109"),
+            ("main.a[9]", "0"),
+            ("GVL.i", "9"),
+        ],
+    );
+}
+
+#[test]
+fn lower_and_upper_bound_of_an_element_check_its_index() {
+    let source = "PROGRAM main VAR arrs : ARRAY[0..2] OF ARRAY[-1..4] OF INT; i : INT := 1; lo : DINT; hi : DINT; END_VAR
+         lo := LOWER_BOUND(arrs[i], 1);
+         hi := UPPER_BOUND(arrs[i], 1);
+         END_PROGRAM";
+    let s = run(source, 1);
+    check(&s, &[("main.lo", "-1"), ("main.hi", "4")]);
+    for (line, call) in [(2, "LOWER_BOUND"), (3, "UPPER_BOUND")] {
+        let other = if call == "LOWER_BOUND" {
+            "UPPER_BOUND"
+        } else {
+            "LOWER_BOUND"
+        };
+        // Only this line's index is bad: the other reads arrs[0].
+        let bad = source
+            .replace(&format!("{call}(arrs[i]"), &format!("{call}(arrs[i + 5]"))
+            .replace(&format!("{other}(arrs[i]"), &format!("{other}(arrs[0]"));
+        let s = run(&bad, 1);
+        let fault = only_fault(&s);
+        assert_eq!(
+            fault.kind,
+            FaultKind::IndexOutOfBounds {
+                index: 6,
+                low: 0,
+                high: 2
+            },
+            "{call}"
+        );
+        assert_eq!(fault.line, Some(line), "{call}");
+    }
 }

@@ -41,20 +41,80 @@ fn element_checks_its_bounds() {
             assert_eq!(host.faults, vec![(site, fault)]);
         }
     }
-    // A ULINT above 2⁶³ reads as negative, as in the interpreter.
-    let fixture = Fixture::new(vec![element(Ulint)]);
+}
+
+/// The fault of an index outside −2 ..= 2, as the interpreter reports it.
+fn outside(index: i64) -> Vec<(Site, NativeFault)> {
+    let site = Site {
+        pou: 0,
+        instruction: 0,
+    };
+    let fault = NativeFault::IndexOutOfBounds {
+        index,
+        low: -2,
+        high: 2,
+    };
+    vec![(site, fault)]
+}
+
+#[test]
+fn an_unsigned_64_bit_index_above_i64_max_is_outside_even_a_negative_low_bound() {
+    // Read as i64, 2⁶⁴ − 1 would be −1, inside −2 ..= 2: it is refused and reported as
+    // i64::MAX, as the interpreter does, for ULINT and LWORD alike.
+    for index_ty in [Ulint, Lword] {
+        let fixture = Fixture::new(vec![element(index_ty)]);
+        for raw in [u64::MAX, u64::MAX - 1, 1 << 63] {
+            let mut host = fixture.host();
+            host.put(0, 1 << 56 | 100, 8);
+            host.put(8, raw, 8);
+            assert_eq!(
+                fixture.run(&mut host),
+                Status::Faulted,
+                "{index_ty:?} {raw}"
+            );
+            assert_eq!(host.faults, outside(i64::MAX));
+        }
+        // 2 still reaches the last element.
+        let mut host = fixture.host();
+        host.put(0, 1 << 56 | 100, 8);
+        host.put(8, 2, 8);
+        assert_eq!(fixture.run(&mut host), Status::Ok);
+        assert_eq!(host.get(16, 8), (1 << 56 | 100) + 16);
+    }
+    // A signed LINT −1 stays −1, inside.
+    let fixture = Fixture::new(vec![element(Lint)]);
     let mut host = fixture.host();
-    host.put(8, u64::MAX - 5, 8);
-    assert_eq!(fixture.run(&mut host), Status::Faulted);
-    assert!(matches!(
-        host.faults[0].1,
-        NativeFault::IndexOutOfBounds { index: -6, .. }
-    ));
-    // And 2⁶⁴ − 1 is −1, inside −2 ..= 2.
-    let mut host = fixture.host();
+    host.put(0, 1 << 56 | 100, 8);
     host.put(8, u64::MAX, 8);
     assert_eq!(fixture.run(&mut host), Status::Ok);
-    assert_eq!(host.get(16, 8), 4);
+    assert_eq!(host.get(16, 8), (1 << 56 | 100) + 4);
+}
+
+#[test]
+fn open_element_refuses_an_unsigned_64_bit_index_above_i64_max() {
+    // ARRAY[-2..2] OF DINT through a descriptor at I(0) (pointer, low, high), the ULINT
+    // index at I(24), the element pointer written at I(32).
+    let fixture = Fixture::new(vec![Instr::OpenElement {
+        dst: I(32),
+        descriptor: I(0),
+        indices: vec![(I(24), Ulint)],
+        stride: 4,
+    }]);
+    let array = 1 << 56 | 100;
+    let prepared = |raw: u64| {
+        let mut host = fixture.host();
+        host.put(0, array, 8);
+        host.put(8, (-2i64) as u64, 8);
+        host.put(16, 2, 8);
+        host.put(24, raw, 8);
+        host
+    };
+    let mut host = prepared(u64::MAX);
+    assert_eq!(fixture.run(&mut host), Status::Faulted);
+    assert_eq!(host.faults, outside(i64::MAX));
+    let mut host = prepared(1);
+    assert_eq!(fixture.run(&mut host), Status::Ok);
+    assert_eq!(host.get(32, 8), array + 3 * 4);
 }
 
 #[test]
