@@ -6,6 +6,8 @@
 //! same with a 10 ms task of lower priority and a freewheeling task of the lowest priority.
 //! Each runs once sleeping until a start and once spinning the last 200 µs before it.
 //! The figures depend on the machine and its load; nothing is asserted.
+//! The scheduler runs the default engine (`EngineChoice::default`: native on x86-64 and
+//! aarch64).
 
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::print_stdout)] // A bench binary.
 

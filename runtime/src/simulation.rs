@@ -37,6 +37,8 @@ impl Simulation {
         Ok((Self::of_engine(engine), report))
     }
 
+    /// A simulation of the freshly loaded `engine` at time 0, every task due at once and
+    /// none faulted.
     fn of_engine(engine: Engine) -> Self {
         let tasks = engine.image().tasks.len();
         Self {

@@ -7,6 +7,8 @@
 //! the last 200 µs before it), and prints the 2 ms task's start jitter
 //! (median, 95th and 99th percentile, maximum) from the scheduler's cycle log. The figures
 //! depend on the machine and its load (printed first); nothing is asserted.
+//! Both the calibration and the scheduler run the default engine (`EngineChoice::default`:
+//! native on x86-64 and aarch64), so the loop is sized for the engine that is measured.
 
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::print_stdout)] // A bench binary.
 

@@ -89,24 +89,41 @@ pub fn add_cam(dir: &tempfile::TempDir, name: &str, text: &str) {
     fs::write(&manifest, listed).unwrap();
 }
 
-/// Runs `cycles` cycles of the fastest task and returns the watched values.
+/// Runs `cycles` cycles of the fastest task with the default engine (native where there is a
+/// backend) and returns the watched values, after checking that the interpreter prints exactly
+/// the same text, so that every case covers both engines.
 #[track_caller]
 pub fn simulate(
     dir: &tempfile::TempDir,
     cycles: u32,
     watch: &[&str],
 ) -> serde_json::Map<String, Value> {
-    let output = Command::new(env!("CARGO_BIN_EXE_rivet"))
-        .args(["simulate", dir.path().to_str().unwrap()])
-        .args(["--cycles", &cycles.to_string(), "--json", "--watch"])
-        .arg(watch.join(","))
-        .output()
-        .unwrap();
+    let run = |engine: &[&str]| {
+        Command::new(env!("CARGO_BIN_EXE_rivet"))
+            .args(["simulate", dir.path().to_str().unwrap()])
+            .args(engine)
+            .args(["--cycles", &cycles.to_string(), "--json", "--watch"])
+            .arg(watch.join(","))
+            .output()
+            .unwrap()
+    };
+    let output = run(&[]);
     let stdout = String::from_utf8_lossy(&output.stdout);
     assert!(
         output.status.success(),
         "{stdout}{}",
         String::from_utf8_lossy(&output.stderr)
+    );
+    let interpreted = run(&["--engine", "interpreter"]);
+    assert!(
+        interpreted.status.success(),
+        "the interpreter: {}",
+        String::from_utf8_lossy(&interpreted.stderr)
+    );
+    assert_eq!(
+        String::from_utf8_lossy(&interpreted.stdout),
+        stdout,
+        "the interpreter (left) and the default engine (right) differ"
     );
     match serde_json::from_str(stdout.trim()).unwrap() {
         Value::Object(map) => map,

@@ -1,14 +1,15 @@
 //! Fuzzes loading a program image: any bytes, given a correct identity hash so that they reach
 //! the section decoders and the verifier, must be refused with an error or decode to an image
 //! that the engine either refuses or loads and runs for one cycle of every task, all without a
-//! panic. A watchdog of 10 ms ends any cycle that loops. The bytes are also tried as a
+//! panic, in the interpreter and in the native engine (whose outcomes are not compared here:
+//! the differential harness does that). A watchdog of 10 ms ends any cycle that loops. The bytes are also tried as a
 //! breakpoint condition of every POU of a decoded image.
 
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
 use program_image::{BreakCondition, ProgramImage};
-use runtime::engine::Engine;
+use runtime::engine::{Engine, EngineChoice};
 use sha2::{Digest, Sha256};
 
 fuzz_target!(|data: &[u8]| {
@@ -31,10 +32,12 @@ fuzz_target!(|data: &[u8]| {
         task.watchdog_ns = 10_000_000;
         task.watchdog_sensitivity = 1;
     }
-    let Ok(mut engine) = Engine::new(image) else {
-        return;
-    };
-    for task in 0..engine.image().tasks.len() {
-        let _ = engine.run_cycle(task, 1_000_000, 0);
+    for choice in [EngineChoice::Interpreter, EngineChoice::Native] {
+        let Ok((mut engine, _)) = Engine::with_choice(image.clone(), choice) else {
+            return;
+        };
+        for task in 0..engine.image().tasks.len() {
+            let _ = engine.run_cycle(task, 1_000_000, 0);
+        }
     }
 });

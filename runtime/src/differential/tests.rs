@@ -1,5 +1,6 @@
-//! [`super::run_against`] on a hand-made image, with two interpreters and with a second engine
-//! corrupted on purpose.
+//! [`super::run_against`] on a hand-made image, with two interpreters and with a second
+//! interpreter corrupted on purpose; one test compares the interpreter with the native engine
+//! ([`super::run_both`]).
 
 #![allow(clippy::unwrap_used)] // A panic is a failed test.
 
@@ -160,12 +161,18 @@ fn differs(run: Result<Simulation, Difference>) -> Difference {
 
 fn no_writes(_cycle: u64, _engine: &mut Engine) {}
 
+/// `image` loaded in the interpreter, whatever the default engine: the second engine of the
+/// tests that compare two interpreters.
+fn interpreted(image: ProgramImage) -> Result<Simulation, LoadError> {
+    Simulation::with_choice(image, EngineChoice::Interpreter).map(|(simulation, _)| simulation)
+}
+
 /// A second engine that is the interpreter with `corrupt` applied to its memory after loading.
 fn corrupted(
     corrupt: impl FnOnce(&mut Engine),
 ) -> impl FnOnce(ProgramImage) -> Result<Simulation, LoadError> {
     move |image| {
-        let mut simulation = Simulation::new(image)?;
+        let mut simulation = interpreted(image)?;
         corrupt(simulation.engine_mut());
         Ok(simulation)
     }
@@ -180,7 +187,7 @@ fn zero_divisor_before_cycle_3(cycle: u64, engine: &mut Engine) {
 
 #[test]
 fn two_equal_engines_agree_and_the_second_simulation_is_given_back() {
-    let simulation = run_against(image(), 5, no_writes, Simulation::new).unwrap();
+    let simulation = run_against(image(), 5, no_writes, interpreted).unwrap();
     assert_eq!(simulation.cycles(), [5]);
     assert_eq!(
         value::read(simulation.engine(), "Main.n"),
@@ -223,7 +230,7 @@ fn a_difference_made_by_the_code_is_found_after_the_cycle_that_made_it() {
         if let Some(Instr::Binary { op, .. }) = image.pous[0].code.first_mut() {
             *op = BinaryOp::Sub;
         }
-        Simulation::new(image)
+        interpreted(image)
     };
     let difference = differs(run_against(image(), 5, no_writes, second));
     assert_eq!(difference.cycle, 1);
@@ -245,7 +252,7 @@ fn a_difference_made_by_the_code_is_found_after_the_cycle_that_made_it() {
 fn a_changed_constant_pool_is_found_after_loading() {
     let second = |mut image: ProgramImage| {
         image.constants[4] = 99;
-        Simulation::new(image)
+        interpreted(image)
     };
     let difference = differs(run_against(image(), 5, no_writes, second));
     assert_eq!(difference.cycle, 0);
@@ -264,7 +271,7 @@ fn writes_that_differ_between_the_engines_are_the_tests_difference() {
         written += 1;
         engine.region_mut(Region::Data)[0..4].copy_from_slice(&i32::to_le_bytes(written));
     };
-    let difference = differs(run_against(image(), 2, writes, Simulation::new));
+    let difference = differs(run_against(image(), 2, writes, interpreted));
     assert_eq!(difference.cycle, 1);
     assert!(
         matches!(&difference.subject, Subject::Writes { place } if matches!(**place, Subject::Memory { offset: 0, .. })),
@@ -315,7 +322,7 @@ fn a_located_bit_is_named_when_it_differs_and_its_word_otherwise() {
 
 #[test]
 fn writes_reach_both_engines_and_an_equal_fault_is_no_difference() {
-    let simulation = run_against(image(), 5, zero_divisor_before_cycle_3, Simulation::new).unwrap();
+    let simulation = run_against(image(), 5, zero_divisor_before_cycle_3, interpreted).unwrap();
     let faults = simulation.faults();
     assert_eq!(faults.len(), 1, "{faults:?}");
     assert_eq!(faults[0].kind, crate::engine::FaultKind::DivisionByZero);
@@ -328,7 +335,7 @@ fn writes_reach_both_engines_and_an_equal_fault_is_no_difference() {
 fn a_fault_at_another_line_is_a_difference_of_its_cycle() {
     let second = |mut image: ProgramImage| {
         image.pous[0].lines[2].line = 6;
-        Simulation::new(image)
+        interpreted(image)
     };
     let difference = differs(run_against(image(), 5, zero_divisor_before_cycle_3, second));
     assert_eq!(difference.cycle, 3);
@@ -341,7 +348,7 @@ fn a_fault_at_another_line_is_a_difference_of_its_cycle() {
 fn a_load_that_fails_in_one_engine_is_a_difference_of_cycle_0() {
     let second = |mut image: ProgramImage| {
         image.tasks[0].programs[0].pou = 9;
-        Simulation::new(image)
+        interpreted(image)
     };
     let difference = differs(run_against(image(), 5, no_writes, second));
     assert_eq!(difference.cycle, 0);
@@ -394,7 +401,7 @@ fn after_a_stack_overflow_the_memory_is_no_longer_compared_but_the_fault_is() {
     // The second engine's recursion subtracts 1 where the first adds 1 (the same constant
     // pool, so only the memory can differ): after the overflow, which both report in the same
     // task and POU, their memory legitimately differs.
-    let second = |_| Simulation::new(recursive_image(BinaryOp::Sub));
+    let second = |_| interpreted(recursive_image(BinaryOp::Sub));
     let simulation = run_against(recursive_image(BinaryOp::Add), 3, no_writes, second).unwrap();
     let faults = simulation.faults();
     assert_eq!(faults.len(), 1, "{faults:?}");

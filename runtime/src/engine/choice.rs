@@ -142,7 +142,7 @@ impl NativeReport {
     /// be made, for `reason`.
     pub(crate) fn unavailable(
         image: &ProgramImage,
-        reason: &jit::NativeUnsupported,
+        reason: &dyn std::fmt::Display,
         translation_time: Duration,
     ) -> Self {
         Self {

@@ -53,6 +53,9 @@ extern "C" fn real_binary_f64(op: u32, a: f64, b: f64) -> f64 {
     real_binary(op, a, b)
 }
 
+/// `MOD`, `EXPT` or `ATAN2` (the operation's code, `jit::binary_op_code`) of two reals of
+/// either width, by the interpreter's own `Arith` and `Real` methods so both engines round
+/// alike; an operation code of anything else gives `a` back, which the translator never emits.
 fn real_binary<T: Real>(op: u32, a: T, b: T) -> T {
     match jit::binary_op_from_code(op) {
         // A real remainder never fails (`Arith::rem` of a real is always `Some`).

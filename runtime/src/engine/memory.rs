@@ -51,6 +51,22 @@ impl Regions {
         }
     }
 
+    /// The same layout as the native engine takes it (`docs/native-engine.md` §4.2): built from
+    /// these regions rather than computed again, so that generated code and the interpreter
+    /// address the same bytes.
+    pub(crate) fn jit_layout(&self) -> jit::Layout {
+        jit::Layout {
+            data: self.data as u64,
+            input: self.input as u64,
+            output: self.output as u64,
+            memory: self.memory as u64,
+            constants: self.constants as u64,
+            stacks: self.stacks as u64,
+            stack_size: self.stack_size as u64,
+            total: self.total as u64,
+        }
+    }
+
     /// The start of a symbol region.
     pub(crate) fn start(&self, region: Region) -> usize {
         match region {
@@ -114,5 +130,48 @@ impl Regions {
             }
         }
         Err(FaultKind::BadPointer(pointer))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::test_images::{self, TestTask};
+
+    #[test]
+    fn the_native_layout_agrees_with_the_regions_for_every_region_and_task_stack() {
+        let tasks = [
+            TestTask::cyclic(1_000_000, 1),
+            TestTask::cyclic(2_000_000, 2),
+            TestTask::cyclic(4_000_000, 3),
+        ];
+        let mut image = test_images::image(&tasks, &[]);
+        // Every region is present and of a different size, so that a region swapped or left
+        // out in either computation moves the ones after it.
+        image.layout.data_size = image.layout.data_size.max(64);
+        image.layout.input_size = 12;
+        image.layout.output_size = 20;
+        image.layout.memory_size = 28;
+        image.layout.stack_size = 256;
+        image.constants = vec![7; 36];
+        let regions = Regions::of(&image, tasks.len());
+        let layout = regions.jit_layout();
+        assert_eq!(layout, jit::Layout::of(&image, tasks.len()));
+        let data = u64::from(image.layout.data_size);
+        assert_eq!(
+            (
+                layout.input,
+                layout.output,
+                layout.memory,
+                layout.constants,
+                layout.stacks
+            ),
+            (data, data + 12, data + 32, data + 60, data + 96)
+        );
+        assert_eq!(layout.total, data + 96 + 3 * 256);
+        assert_eq!(
+            regions.stack(2),
+            ((data + 96 + 512) as usize, layout.total as usize)
+        );
     }
 }

@@ -18,6 +18,7 @@ mod jit_pure;
 mod lower;
 mod memory;
 mod native;
+mod native_load;
 mod online_change;
 mod scalar;
 mod strings;
@@ -108,18 +109,9 @@ impl Engine {
         let native_report = match choice {
             EngineChoice::Interpreter => NativeReport::interpreter(&image),
             EngineChoice::Native => {
-                let started = std::time::Instant::now();
-                let layout = jit::Layout::of(&image, image.tasks.len());
-                match jit::Translation::new(&image, &layout, &jit_pure::PURE_FUNCTIONS) {
-                    Ok(native) => {
-                        let report = NativeReport::native(&image, &native, started.elapsed());
-                        code.native = Some(native);
-                        report
-                    }
-                    Err(unsupported) => {
-                        NativeReport::unavailable(&image, &unsupported, started.elapsed())
-                    }
-                }
+                let (native, report) = native_load::translate(&image, &regions);
+                code.native = native;
+                report
             }
         };
         let mut engine = Self {

@@ -59,6 +59,14 @@ impl EngineView<'_> {
         self.image
     }
 
+    /// How many times generated code was entered since the image loaded
+    /// ([`super::Engine::native_entries`]), for the scheduler's views of the engine.
+    pub fn native_entries(&self) -> u64 {
+        self.code
+            .native_entries
+            .load(std::sync::atomic::Ordering::Relaxed)
+    }
+
     /// The image being run, shared rather than copied (an online change's check keeps it
     /// while it compares, away from the scheduler's thread).
     pub fn shared_image(&self) -> Arc<ProgramImage> {

@@ -489,6 +489,9 @@ impl OnlineServices {
         // The map is checked before loading, so that a refused map changes nothing.
         let map = ModbusMap::for_image(&image)
             .map_err(|error| refused(format!("the image's Modbus map is refused: {error}")))?;
+        // The load report's native part is not printed or sent: the services run in a library
+        // without a console of their own, and protocol version 3 has no field for it
+        // (`docs/native-engine.md` §8.2, §13).
         let report = self
             .scheduler
             .load(image)

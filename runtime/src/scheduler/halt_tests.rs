@@ -346,13 +346,21 @@ enum Release {
 fn a_higher_task_halted_inside_a_looping_lower_one_goes_on_cleanly() {
     for release in [Release::Continue, Release::EndSession, Release::Stop] {
         without_hanging(move || {
+            // The default engine, which makes machine code where there is a backend.
             let (scheduler, _areas) = scheduler(SchedulerOptions::default());
-            scheduler
+            let report = scheduler
                 .load(debuggable(&[
                     TestTask::cyclic(MS, 1),
                     endless(60_000 * MS, 10),
                 ]))
                 .expect("loads");
+            let native = jit::native_support().is_ok();
+            assert_eq!(
+                report.native.runs_natively(),
+                native,
+                "{:#?}",
+                report.native
+            );
             // Task 0 runs first, then task 1 loops; task 0's third cycle halts inside it.
             break_at_hit(&scheduler, 0, 3);
             scheduler.start().expect("starts");
@@ -374,6 +382,20 @@ fn a_higher_task_halted_inside_a_looping_lower_one_goes_on_cleanly() {
                     assert_eq!(scheduler.status().state, SchedulerState::Stopped);
                     assert!(!debug(&scheduler, |debug| debug.is_halted(0)));
                     assert_eq!(counts(&scheduler)[0], 2, "the abandoned cycle went on");
+                    let entries = scheduler
+                        .between(|between| {
+                            between
+                                .memory
+                                .as_ref()
+                                .map_or(0, |memory| memory.engine.native_entries())
+                        })
+                        .expect("served");
+                    // No machine code ran, although it was made: task 1 may be interrupted by
+                    // task 0, which may halt, so its cycle runs with the debugger
+                    // (`DebugState::cycle_needs_debugger`), in the interpreter. A halt is
+                    // therefore never abandoned through a native frame beneath it.
+                    assert_eq!(entries, 0, "{entries} native entries");
+                    assert!(scheduler.status().faults.is_empty());
                     return;
                 }
             }

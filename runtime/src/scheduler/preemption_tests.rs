@@ -49,7 +49,7 @@ fn logged_in(
         // LONG and the loops below are sized so that an interpreted cycle outlasts a few
         // periods of the tasks that interrupt it; the native engine runs them several times
         // faster, so these tests pin the interpreter until they are sized for both engines
-        // (issue 20, wave 3). The test sized by measurement runs under both.
+        // (issue 20, wave 3). The tests sized by measurement run under both.
         engine,
         ..SchedulerOptions::default()
     };
@@ -171,7 +171,6 @@ fn three_priorities_nest() {
 #[test]
 fn a_fault_of_a_preempting_task_leaves_the_interrupted_cycle_going() {
     let (options, records) = logged(true);
-
     let (scheduler, _areas) = scheduler(options);
     // Every cycle of task 1 overruns its 1 ns watchdog: its third faults it. Its first runs
     // before the long cycle, the other two inside it.
@@ -253,7 +252,14 @@ fn preempting_time_is_not_counted(engine: EngineChoice) {
     };
     let (options, records) = logged_in(true, engine);
     let (scheduler, _areas) = scheduler(options);
-    scheduler.load(image(&[low, high], &[])).unwrap();
+    let report = scheduler.load(image(&[low, high], &[])).unwrap();
+    // Where this machine makes machine code, the native run must really be native, or the
+    // test would measure the interpreter twice.
+    if engine == EngineChoice::Native && jit::native_support().is_ok() {
+        assert!(report.native.runs_natively(), "{:#?}", report.native);
+        assert!(report.native.fallbacks.is_empty(), "{:#?}", report.native);
+    }
+    assert_eq!(report.native.chosen, engine);
     scheduler.start().unwrap();
     let received = records_until(&records, "the low cycle", |received| {
         received.iter().any(|record| record.task == 0)
@@ -274,10 +280,28 @@ fn preempting_time_is_not_counted(engine: EngineChoice) {
 
 #[test]
 fn forces_hold_and_the_trace_samples_in_nested_cycles() {
-    let (options, records) = logged(true);
+    forces_hold_in_nested_cycles(EngineChoice::Interpreter, LONG);
+}
+
+#[test]
+fn forces_hold_and_the_trace_samples_in_nested_cycles_of_the_native_engine() {
+    // The long cycle is sized by measurement, as the native engine runs LONG iterations in a
+    // fraction of the interpreter's time: about 100 ms, a hundred periods of the 1 ms task.
+    let iterations = (100.0 * 1e6 / iteration_ns(EngineChoice::Native)) as i32;
+    forces_hold_in_nested_cycles(EngineChoice::Native, iterations.max(LONG));
+}
+
+/// A forced place holds, and the trace samples it, in the cycles of a 1 ms task nested in a
+/// cycle of `long_iterations` of a lower one, both run by `engine`.
+fn forces_hold_in_nested_cycles(engine: EngineChoice, long_iterations: i32) {
+    let (options, records) = logged_in(true, engine);
     let (scheduler, areas) = scheduler(options);
-    let tasks = [watch(LONG, MINUTE, 10), TestTask::cyclic(MS, 1)];
-    scheduler.load(image(&tasks, &[])).unwrap();
+    let tasks = [watch(long_iterations, MINUTE, 10), TestTask::cyclic(MS, 1)];
+    let report = scheduler.load(image(&tasks, &[])).unwrap();
+    if engine == EngineChoice::Native && jit::native_support().is_ok() {
+        assert!(report.native.runs_natively(), "{:#?}", report.native);
+        assert!(report.native.fallbacks.is_empty(), "{:#?}", report.native);
+    }
     let counted = Place {
         region: 0,
         offset: count(1),

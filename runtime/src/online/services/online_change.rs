@@ -52,6 +52,9 @@ impl OnlineServices {
         ModbusMap::for_image(&image)
             .map_err(|error| refused(format!("the image's Modbus map is refused: {error}")))?;
         let to = image.identity();
+        // The native report is kept by the engine but printed nowhere: the services run in a
+        // library without a console of their own, and protocol version 3 has no field for it
+        // (`docs/native-engine.md` §8.2, §13).
         let engine = Engine::with_choice(image.clone(), self.scheduler.engine_choice())
             .map(|(engine, _)| engine)
             .map_err(|error| refused(format!("the program image cannot be loaded: {error}")))?;
