@@ -452,6 +452,46 @@ impl<'a, 'b> Translator<'a, 'b> {
                 self.open_element(*dst, *descriptor, indices, *stride);
                 true
             }
+            Instr::LoadElement {
+                ty,
+                dst,
+                array,
+                index,
+                index_ty,
+                low,
+                count,
+                stride,
+                offset,
+            } => {
+                self.load_element(
+                    (int_type(*ty), *dst),
+                    *array,
+                    (*index, *index_ty),
+                    (*low, *count, *stride),
+                    *offset,
+                );
+                true
+            }
+            Instr::StoreElement {
+                ty,
+                array,
+                index,
+                index_ty,
+                low,
+                count,
+                stride,
+                offset,
+                src,
+            } => {
+                self.store_element(
+                    (int_type(*ty), *src),
+                    *array,
+                    (*index, *index_ty),
+                    (*low, *count, *stride),
+                    *offset,
+                );
+                true
+            }
             // The runtime's blocks and functions, strings, the real clock and the motion
             // blocks run in the interpreter (§5.1 "host").
             _ => false,

@@ -1,12 +1,14 @@
 //! Pointer values: `Address`, `Element`, `Offset`, and resolving a pointer for `Load` and
-//! `Store` against the region spans (`docs/native-engine.md` §5.4, §7).
+//! `Store` against the region spans; the fused element accesses `LoadElement` and
+//! `StoreElement`, which check their index as `Element` does (`docs/native-engine.md` §5.4,
+//! §7, §10).
 
 use cranelift_codegen::ir::condcodes::IntCC;
-use cranelift_codegen::ir::{InstBuilder, Value, types};
+use cranelift_codegen::ir::{InstBuilder, Type, Value, types};
 use program_image::{Elementary, Operand};
 
 use super::call::displaced;
-use super::{Translator, context_flags, int_type, is_signed};
+use super::{Translator, context_flags, int_type, is_signed, memory_flags};
 use crate::context;
 use crate::fault_kind;
 use crate::layout::{POINTER_OFFSET_MASK, TAG_STACK};
@@ -96,16 +98,88 @@ impl Translator<'_, '_> {
         count: u64,
         stride: u32,
     ) {
+        let moved = self.checked_element_offset((index, index_ty), low, count, stride);
+        let pointer = self.load(types::I64, base);
+        let result = self.builder.ins().iadd(pointer, moved);
+        self.store(result, dst);
+    }
+
+    /// The bytes from an array's first element to element `index`, `(index − low) · stride`,
+    /// after checking the index against `low ..= high` with `high` computed as the
+    /// interpreter computes it, so a fault reports the same bounds.
+    fn checked_element_offset(
+        &mut self,
+        (index, index_ty): (Operand, Elementary),
+        low: i64,
+        count: u64,
+        stride: u32,
+    ) -> Value {
         let i = self.index_value(index, index_ty);
         let high = low.saturating_add(i64::try_from(count.saturating_sub(1)).unwrap_or(i64::MAX));
         let low_value = self.builder.ins().iconst(types::I64, low);
         let high_value = self.builder.ins().iconst(types::I64, high);
         self.check_index(i, index_ty, low_value, high_value);
-        let pointer = self.load(types::I64, base);
         let from_low = self.builder.ins().isub(i, low_value);
-        let moved = self.builder.ins().imul_imm_u(from_low, i64::from(stride));
-        let result = self.builder.ins().iadd(pointer, moved);
-        self.store(result, dst);
+        self.builder.ins().imul_imm_u(from_low, i64::from(stride))
+    }
+
+    /// The machine address and displacement of the value a `LoadElement` or `StoreElement`
+    /// reaches: the array's own address (a direct place, as any operand's) plus the checked
+    /// element offset, with the member's `offset` as the displacement. The verifier checked
+    /// that the whole array lies inside its region, and the index is checked, so the access
+    /// stays inside the region as the interpreter's does (§7).
+    fn element_address(
+        &mut self,
+        array: Operand,
+        index: (Operand, Elementary),
+        (low, count, stride): (i64, u64, u32),
+        offset: u32,
+    ) -> (Value, i32) {
+        let moved = self.checked_element_offset(index, low, count, stride);
+        let (address, displacement) = self.operand_address(array);
+        let element = self.builder.ins().iadd(address, moved);
+        match displacement.checked_add_unsigned(offset) {
+            Some(displacement) => (element, displacement),
+            None => {
+                let reach = i64::from(displacement) + i64::from(offset);
+                (self.builder.ins().iadd_imm_s(element, reach), 0)
+            }
+        }
+    }
+
+    /// `LoadElement`: the index checked as `Element`, then `dst :=` the `ty` value at
+    /// `array + (index − low) · stride + offset`.
+    pub(crate) fn load_element(
+        &mut self,
+        (ty, dst): (Type, Operand),
+        array: Operand,
+        index: (Operand, Elementary),
+        bounds: (i64, u64, u32),
+        offset: u32,
+    ) {
+        let (address, displacement) = self.element_address(array, index, bounds, offset);
+        let value = self
+            .builder
+            .ins()
+            .load(ty, memory_flags(), address, displacement);
+        self.store(value, dst);
+    }
+
+    /// `StoreElement`: the value `src` read first, as the interpreter reads it, then the index
+    /// checked as `Element` and the value stored at `array + (index − low) · stride + offset`.
+    pub(crate) fn store_element(
+        &mut self,
+        (ty, src): (Type, Operand),
+        array: Operand,
+        index: (Operand, Elementary),
+        bounds: (i64, u64, u32),
+        offset: u32,
+    ) {
+        let value = self.load(ty, src);
+        let (address, displacement) = self.element_address(array, index, bounds, offset);
+        self.builder
+            .ins()
+            .store(memory_flags(), value, address, displacement);
     }
 
     /// `OpenElement`: per dimension, the bounds read from the descriptor (pointer, then low

@@ -76,7 +76,8 @@ enum Access {
     Read,
     /// Stored through the translator's `store`.
     Write,
-    /// Read or written as bytes by an inline copy, which bypasses `load` and `store`.
+    /// Read or written as bytes by an inline copy or an element access, which bypass `load`
+    /// and `store`.
     Raw,
 }
 
@@ -148,7 +149,8 @@ fn guard(layout: &Layout, all: &[(Operand, u32, Access)]) -> Option<Guard> {
 
 /// The direct places an instruction touches, as the translator emits it; `None` for an
 /// instruction a promoting loop must not contain: a call of any kind (a host operation, a
-/// copy larger than 64 bytes) or an access through a pointer, which may reach any place.
+/// copy larger than 64 bytes) or an access through a pointer, which may reach any place. An
+/// element access (`LoadElement`, `StoreElement`) touches its whole array.
 fn accesses(instr: &Instr) -> Option<Vec<(Operand, u32, Access)>> {
     use Access::{Raw, Read, Write};
     let size = |ty: &Elementary| ty.size_bytes();
@@ -191,12 +193,48 @@ fn accesses(instr: &Instr) -> Option<Vec<(Operand, u32, Access)>> {
             (*dst, 8, Write),
         ],
         Instr::Offset { dst, base, .. } => vec![(*base, 8, Read), (*dst, 8, Write)],
+        // The element itself is reached at a computed address, past `load` and `store`: the
+        // whole array is touched as bytes, so no place inside it is promoted and the guard
+        // covers it. An array too large to name in one access is not promoted.
+        Instr::LoadElement {
+            ty,
+            dst,
+            array,
+            index,
+            index_ty,
+            count,
+            stride,
+            ..
+        } => vec![
+            (*index, size(index_ty), Read),
+            (*array, array_extent(*count, *stride)?, Raw),
+            (*dst, size(ty), Write),
+        ],
+        Instr::StoreElement {
+            ty,
+            array,
+            index,
+            index_ty,
+            count,
+            stride,
+            src,
+            ..
+        } => vec![
+            (*src, size(ty), Read),
+            (*index, size(index_ty), Read),
+            (*array, array_extent(*count, *stride)?, Raw),
+        ],
         Instr::Now { dst } => vec![(*dst, 8, Write)],
         // A return writes the places back first.
         Instr::Jump { .. } | Instr::Return => Vec::new(),
         Instr::JumpIf { cond, .. } | Instr::JumpIfNot { cond, .. } => vec![(*cond, 1, Read)],
         _ => return None,
     })
+}
+
+/// The bytes an array of `count` elements of `stride` bytes spans, when they fit a `u32`.
+fn array_extent(count: u64, stride: u32) -> Option<u32> {
+    u32::try_from(count.checked_mul(u64::from(stride))?).ok()
 }
 
 fn jump_target(instr: &Instr) -> Option<u32> {

@@ -6,6 +6,7 @@
 
 mod call;
 mod control;
+mod elements;
 mod integer;
 mod module;
 mod pointer;
