@@ -150,6 +150,8 @@ fn main() -> anyhow::Result<()> {
 }
 
 async fn run(arguments: Arguments, engine: EngineChoice) -> anyhow::Result<()> {
+    // Before anything slow (the image's load and translation), so that an early stop is one.
+    let ended = end_signal();
     let password = read_password(
         arguments.password.as_deref(),
         arguments.password_file.as_deref(),
@@ -235,7 +237,7 @@ async fn run(arguments: Arguments, engine: EngineChoice) -> anyhow::Result<()> {
     let server = serve(listener, areas, map, server_options);
     let mut reported_faults = 0;
     let mut fault_check = tokio::time::interval(FAULT_REPORT_INTERVAL);
-    let mut ended = std::pin::pin!(end_signal());
+    let mut ended = std::pin::pin!(ended);
     let mut server = Box::pin(server);
     let mut rtu_slave = std::pin::pin!(rtu_slave);
     let outcome = loop {
@@ -372,24 +374,38 @@ fn load(scheduler: &Scheduler, path: &Path) -> Option<ModbusMap> {
     }
 }
 
-/// Waits for SIGINT (Ctrl+C) or, on Unix, SIGTERM, and names it.
-async fn end_signal() -> &'static str {
-    let interrupted = async {
+/// Installs the handlers of SIGINT (Ctrl+C) and, on Unix, SIGTERM at once, and returns the wait
+/// for the first of them, named. Installing them before the image loads matters: a signal that
+/// arrived before the handlers would get the default action, which ends the process on the spot.
+fn end_signal() -> impl Future<Output = &'static str> {
+    #[cfg(unix)]
+    {
+        use tokio::signal::unix::{Signal, SignalKind, signal};
+        /// The next delivery of `signal`; never, without a handler.
+        async fn next(signal: &mut Option<Signal>) {
+            let delivered = match signal {
+                Some(signal) => signal.recv().await.is_some(),
+                None => false,
+            };
+            if !delivered {
+                std::future::pending::<()>().await;
+            }
+        }
+        let mut interrupt = signal(SignalKind::interrupt()).ok();
+        let mut terminate = signal(SignalKind::terminate()).ok();
+        async move {
+            tokio::select! {
+                () = next(&mut interrupt) => "interrupted",
+                () = next(&mut terminate) => "terminated",
+            }
+        }
+    }
+    #[cfg(not(unix))]
+    async {
         // Without a handler there is no interruption to wait for.
         if tokio::signal::ctrl_c().await.is_err() {
             std::future::pending::<()>().await;
         }
-    };
-    #[cfg(unix)]
-    {
-        use tokio::signal::unix::{SignalKind, signal};
-        if let Ok(mut terminate) = signal(SignalKind::terminate()) {
-            return tokio::select! {
-                () = interrupted => "interrupted",
-                _ = terminate.recv() => "terminated",
-            };
-        }
+        "interrupted"
     }
-    interrupted.await;
-    "interrupted"
 }
