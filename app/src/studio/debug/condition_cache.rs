@@ -68,7 +68,7 @@ impl ConditionCache {
         keys.iter().all(|key| self.outcomes.contains_key(key))
     }
 
-    /// Starts compiling those of `keys` that are not compiled yet on a worker thread, which
+    /// Starts compiling those of `keys` still waiting to be compiled on a worker thread, which
     /// calls `wake` when done (unless a compile is under way already: the rest waits for it).
     /// Outcomes of other images than `keys`' are forgotten. Returns whether some of `keys`
     /// are still to come, to be taken with [`ConditionCache::take_finished`].

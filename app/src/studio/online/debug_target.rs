@@ -239,8 +239,9 @@ impl Online {
     }
 
     /// Replaces the target's breakpoints with the studio's; one that does not convert is
-    /// reported with its place and not sent. Conditions not compiled yet are compiled on a
-    /// worker thread first, and the list goes once they are ([`Online::poll_conditions`]).
+    /// reported with its place and not sent. Conditions still waiting to be compiled are
+    /// compiled on a worker thread first, and the list goes once they are
+    /// ([`Online::poll_conditions`]).
     fn send_breakpoints(&mut self) {
         let Some(image) = &self.image else { return };
         let mut specs = Vec::new();
