@@ -23,7 +23,7 @@ pub(crate) fn slot(task: usize) -> u32 {
 }
 
 /// The offset of task `task`'s cycle count.
-pub(crate) fn count(task: usize) -> u32 {
+pub(crate) const fn count(task: usize) -> u32 {
     8 * task as u32 + 8
 }
 
@@ -49,20 +49,25 @@ pub(crate) enum Body {
     /// own cycles; it leaves the sequence counter alone. With `sets_trigger`, it sets the
     /// event trigger `%MX4.0` (by writing 1 to `%MD1`) instead of the first note.
     Watch { iterations: i32, sets_trigger: bool },
+    /// As [`Body::Watch`] without a trigger, but loops until task `task`'s cycle count (at
+    /// [`count`]) has reached `cycles`: a cycle that ends only after another task ran, which
+    /// it can only do nested in it, so a test of preemption needs no loop sized to this
+    /// machine's speed.
+    WaitFor { task: usize, cycles: i32 },
 }
 
 /// Where watching task `task` notes the sequence counter before its loop.
-pub(crate) fn seen_at_start(task: usize) -> u32 {
+pub(crate) const fn seen_at_start(task: usize) -> u32 {
     WATCH_SLOTS + 16 * task as u32
 }
 
 /// Where watching task `task` notes the sequence counter after its loop.
-pub(crate) fn seen_at_end(task: usize) -> u32 {
+pub(crate) const fn seen_at_end(task: usize) -> u32 {
     seen_at_start(task) + 4
 }
 
 /// The loop counter of watching task `task`.
-pub(crate) fn watch_counter(task: usize) -> u32 {
+pub(crate) const fn watch_counter(task: usize) -> u32 {
     seen_at_start(task) + 8
 }
 
@@ -106,6 +111,7 @@ pub(crate) fn image(tasks: &[TestTask], retained: &[(u32, u32)]) -> ProgramImage
         .iter()
         .map(|task| match task.body {
             Body::Watch { iterations, .. } => iterations,
+            Body::WaitFor { cycles, .. } => cycles,
             Body::Count | Body::Slow => 0,
         })
         .collect();
@@ -156,8 +162,21 @@ pub(crate) fn image(tasks: &[TestTask], retained: &[(u32, u32)]) -> ProgramImage
                     add_one(Operand::Global(count(index)), one),
                     Instr::Return,
                 ],
-                Body::Watch { sets_trigger, .. } => {
+                Body::Watch { .. } | Body::WaitFor { .. } => {
+                    let sets_trigger = matches!(
+                        task.body,
+                        Body::Watch {
+                            sets_trigger: true,
+                            ..
+                        }
+                    );
                     let counter = Operand::Global(watch_counter(index));
+                    // What the loop compares with its limit: its own counter, or the cycle
+                    // count of the task it waits for.
+                    let compared = match task.body {
+                        Body::WaitFor { task, .. } => Operand::Global(count(task)),
+                        _ => counter,
+                    };
                     let done = Operand::Global(watch_counter(index) + 4);
                     let (first, value) = if sets_trigger {
                         (Operand::Memory(4), Operand::Const(0))
@@ -182,7 +201,7 @@ pub(crate) fn image(tasks: &[TestTask], retained: &[(u32, u32)]) -> ProgramImage
                             op: CompareOp::Ge,
                             ty: Elementary::Dint,
                             dst: done,
-                            a: counter,
+                            a: compared,
                             b: Operand::Const(8 + 4 * index as u32),
                         },
                         Instr::JumpIf {
@@ -247,7 +266,7 @@ pub(crate) fn image(tasks: &[TestTask], retained: &[(u32, u32)]) -> ProgramImage
             flags: SymbolFlags(SymbolFlags::LOCATED | SymbolFlags::GLOBAL),
         }],
         pous,
-        // 1, 0, then the iterations of each watching task.
+        // 1, 0, then the iterations (or cycles waited for) of each watching task.
         constants: [1_i32, 0]
             .into_iter()
             .chain(iterations)
