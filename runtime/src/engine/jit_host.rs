@@ -269,4 +269,89 @@ mod tests {
             assert_eq!(fault_kind(native), kind);
         }
     }
+
+    /// A hand-made image whose program (task 0) calls a method without an instance, so the
+    /// method runs on the program's instance, which is far smaller than the method's: the
+    /// method's last instance byte lies past the end of the memory. Task 1 counts.
+    fn method_beyond_the_memory() -> program_image::ProgramImage {
+        use program_image::{Elementary, Instr, Operand, Pou, PouKind};
+        const METHOD_INSTANCE_BYTES: u32 = 1 << 20;
+        let mut image = image(
+            &[
+                TestTask::cyclic(1_000_000, 1),
+                TestTask::cyclic(1_000_000, 2),
+            ],
+            &[],
+        );
+        image.pous[0].code = vec![
+            Instr::CallFunction {
+                pou: 2,
+                instance: None,
+                inputs: Vec::new(),
+                outputs: Vec::new(),
+            },
+            Instr::Return,
+        ];
+        image.pous.push(Pou {
+            name: "Beyond".to_owned(),
+            kind: PouKind::Method,
+            frame_size: 0,
+            frame_init: Vec::new(),
+            instance_size: METHOD_INSTANCE_BYTES,
+            code: vec![
+                Instr::Move {
+                    ty: Elementary::Dint,
+                    dst: Operand::Instance(METHOD_INSTANCE_BYTES - 4),
+                    src: Operand::Const(0),
+                },
+                Instr::Return,
+            ],
+            lines: Vec::new(),
+        });
+        image
+    }
+
+    #[test]
+    fn a_method_whose_instance_passes_the_memorys_end_is_a_memory_fault_at_the_call() {
+        let image = method_beyond_the_memory();
+        let (mut native, report) =
+            crate::simulation::Simulation::with_choice(image.clone(), EngineChoice::Native)
+                .unwrap();
+        if !report.runs_natively() {
+            assert!(!EngineChoice::native_available());
+            return;
+        }
+        assert!(report.fallbacks.is_empty(), "{report:#?}");
+        assert!(
+            image.layout.data_size < 1 << 20,
+            "the memory must be smaller than the method's instance"
+        );
+        native.run(3);
+        // The native engine checks the callee's instance once, at the call
+        // (native-engine.md 4.4 step 4): the fault is the caller's, at its call instruction.
+        let [fault] = native.faults() else {
+            panic!("one fault: {:?}", native.faults())
+        };
+        assert_eq!(
+            (fault.task.as_str(), &fault.kind, fault.pou.as_str()),
+            ("Task0", &FaultKind::Memory, "Program0")
+        );
+        assert_eq!((fault.instruction, fault.cycle), (0, 0));
+        assert!(native.engine().native_entries() > 0);
+        // The runtime lives: the other task goes on.
+        assert_eq!(native.cycles(), [1, 3]);
+        // The interpreter checks each access instead and faults Memory at the method's store
+        // past the memory's end (native-engine.md 7 rule 2: both safe, the sites differ).
+        let (mut interpreted, _) =
+            crate::simulation::Simulation::with_choice(image, EngineChoice::Interpreter).unwrap();
+        interpreted.run(3);
+        let [fault] = interpreted.faults() else {
+            panic!("one fault: {:?}", interpreted.faults())
+        };
+        assert_eq!(
+            (&fault.kind, fault.pou.as_str(), fault.instruction),
+            (&FaultKind::Memory, "Beyond", 0)
+        );
+        assert_eq!(interpreted.cycles(), [1, 3]);
+    }
 }
