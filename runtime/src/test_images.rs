@@ -49,10 +49,11 @@ pub(crate) enum Body {
     /// own cycles; it leaves the sequence counter alone. With `sets_trigger`, it sets the
     /// event trigger `%MX4.0` (by writing 1 to `%MD1`) instead of the first note.
     Watch { iterations: i32, sets_trigger: bool },
-    /// As [`Body::Watch`] without a trigger, but loops until task `task`'s cycle count (at
-    /// [`count`]) has reached `cycles`: a cycle that ends only after another task ran, which
-    /// it can only do nested in it, so a test of preemption needs no loop sized to this
-    /// machine's speed.
+    /// Notes task `task`'s cycle count (at [`count`]) at [`seen_at_start`], loops until it
+    /// has moved on by `cycles` (the difference in [`watch_counter`]), notes it again at
+    /// [`seen_at_end`], and counts its own cycles: a cycle that ends only after `cycles` cycles
+    /// of task `task` ran after it started, which they can only do nested in it, so a test of
+    /// preemption needs no loop sized to this machine's speed.
     WaitFor { task: usize, cycles: i32 },
 }
 
@@ -162,21 +163,8 @@ pub(crate) fn image(tasks: &[TestTask], retained: &[(u32, u32)]) -> ProgramImage
                     add_one(Operand::Global(count(index)), one),
                     Instr::Return,
                 ],
-                Body::Watch { .. } | Body::WaitFor { .. } => {
-                    let sets_trigger = matches!(
-                        task.body,
-                        Body::Watch {
-                            sets_trigger: true,
-                            ..
-                        }
-                    );
+                Body::Watch { sets_trigger, .. } => {
                     let counter = Operand::Global(watch_counter(index));
-                    // What the loop compares with its limit: its own counter, or the cycle
-                    // count of the task it waits for.
-                    let compared = match task.body {
-                        Body::WaitFor { task, .. } => Operand::Global(count(task)),
-                        _ => counter,
-                    };
                     let done = Operand::Global(watch_counter(index) + 4);
                     let (first, value) = if sets_trigger {
                         (Operand::Memory(4), Operand::Const(0))
@@ -201,7 +189,7 @@ pub(crate) fn image(tasks: &[TestTask], retained: &[(u32, u32)]) -> ProgramImage
                             op: CompareOp::Ge,
                             ty: Elementary::Dint,
                             dst: done,
-                            a: compared,
+                            a: counter,
                             b: Operand::Const(8 + 4 * index as u32),
                         },
                         Instr::JumpIf {
@@ -214,6 +202,44 @@ pub(crate) fn image(tasks: &[TestTask], retained: &[(u32, u32)]) -> ProgramImage
                             ty: Elementary::Dint,
                             dst: Operand::Global(seen_at_end(index)),
                             src: Operand::Global(SEQUENCE),
+                        },
+                        add_one(Operand::Global(count(index)), one),
+                        Instr::Return,
+                    ]
+                }
+                Body::WaitFor { task, .. } => {
+                    let counted = Operand::Global(count(task));
+                    let noted = Operand::Global(seen_at_start(index));
+                    let moved = Operand::Global(watch_counter(index));
+                    let done = Operand::Global(watch_counter(index) + 4);
+                    vec![
+                        Instr::Move {
+                            ty: Elementary::Dint,
+                            dst: noted,
+                            src: counted,
+                        },
+                        Instr::Binary {
+                            op: BinaryOp::Sub,
+                            ty: Elementary::Dint,
+                            dst: moved,
+                            a: counted,
+                            b: noted,
+                        },
+                        Instr::Compare {
+                            op: CompareOp::Ge,
+                            ty: Elementary::Dint,
+                            dst: done,
+                            a: moved,
+                            b: Operand::Const(8 + 4 * index as u32),
+                        },
+                        Instr::JumpIfNot {
+                            cond: done,
+                            target: 1,
+                        },
+                        Instr::Move {
+                            ty: Elementary::Dint,
+                            dst: Operand::Global(seen_at_end(index)),
+                            src: counted,
                         },
                         add_one(Operand::Global(count(index)), one),
                         Instr::Return,
