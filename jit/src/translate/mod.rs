@@ -11,6 +11,7 @@ mod pointer;
 mod promote;
 mod real;
 pub(crate) mod scalar;
+pub(crate) mod stub;
 
 use cranelift_codegen::ir::condcodes::IntCC;
 use cranelift_codegen::ir::{
@@ -93,6 +94,8 @@ pub(crate) struct Environment<'a> {
     /// Per POU: its function in the module, when it has one (a call of a POU without one is
     /// handed to the interpreter, §4.4).
     pub(crate) functions: &'a [Option<FuncId>],
+    /// Per POU: its entry stubs (§4.4), indexed by `stub::StubKind`, those some call needs.
+    pub(crate) stubs: &'a [[Option<FuncId>; 2]],
 }
 
 /// Translates POU `index` into a function, or says why it cannot.
@@ -157,6 +160,10 @@ pub(crate) struct Translator<'a, 'b> {
     functions: &'a [Option<FuncId>],
     /// Per POU: its function's reference in this function, once declared in it.
     pou_refs: Vec<Option<FuncRef>>,
+    /// Per POU: its entry stubs in the module, indexed by `stub::StubKind`.
+    stubs: &'a [[Option<FuncId>; 2]],
+    /// Per POU: its stubs' references in this function, once declared in it.
+    stub_refs: Vec<[Option<FuncRef>; 2]>,
     /// This POU's index.
     pub(crate) pou: u32,
     /// This POU's instructions.
@@ -223,6 +230,8 @@ impl<'a, 'b> Translator<'a, 'b> {
             pous: environment.pous,
             functions: environment.functions,
             pou_refs: vec![None; environment.pous.len()],
+            stubs: environment.stubs,
+            stub_refs: vec![[None; 2]; environment.pous.len()],
             pou: index,
             code: &pou.code,
             blocks,
