@@ -15,8 +15,8 @@ pub(crate) mod stub;
 
 use cranelift_codegen::ir::condcodes::IntCC;
 use cranelift_codegen::ir::{
-    AbiParam, Block, FuncRef, Function, InstBuilder, MemFlagsData, Signature, Type, UserFuncName,
-    Value, types,
+    AbiParam, Block, BlockArg, FuncRef, Function, InstBuilder, MemFlagsData, Signature, Type,
+    UserFuncName, Value, types,
 };
 use cranelift_frontend::{FunctionBuilder, FunctionBuilderContext, Variable};
 use cranelift_module::FuncId;
@@ -196,6 +196,13 @@ pub(crate) struct Translator<'a, 'b> {
     /// Exit blocks of the current instruction out of the active loop and where each goes,
     /// to emit once the current block is terminated.
     exits: Vec<(Block, Block)>,
+    /// The function's one block that returns `Faulted`, once something branches to it: every
+    /// faulted path shares it, rather than each repeating the function's epilogue.
+    faulted_exit: Option<Block>,
+    /// The function's shared blocks that record a fault and return `Faulted` (§4.7), once
+    /// something branches to them: without details, with the parameter `site` (the kind in
+    /// the high 32 bits, the instruction in the low), and with details, with `site, a, b, c`.
+    fault_exits: [Option<Block>; 2],
 }
 
 impl<'a, 'b> Translator<'a, 'b> {
@@ -247,6 +254,8 @@ impl<'a, 'b> Translator<'a, 'b> {
             active_loop: None,
             promoted: Vec::new(),
             exits: Vec::new(),
+            faulted_exit: None,
+            fault_exits: [None; 2],
         };
         translator.reload_memory();
         let budget_now =
@@ -279,6 +288,66 @@ impl<'a, 'b> Translator<'a, 'b> {
             self.builder.switch_to_block(end);
             self.return_status(0);
         }
+        self.emit_shared_exits();
+    }
+
+    /// Emits the shared fault blocks and the shared `Faulted` return, those something
+    /// branched to. No loop is active here, so recording a fault writes nothing back.
+    fn emit_shared_exits(&mut self) {
+        for (at, detailed) in [(0, false), (1, true)] {
+            let Some(block) = self.fault_exits[at] else {
+                continue;
+            };
+            self.builder.switch_to_block(block);
+            let params = self.builder.block_params(block).to_vec();
+            let site = params[0];
+            let pc = self.builder.ins().ireduce(types::I32, site);
+            let kind = self.builder.ins().ushr_imm_u(site, 32);
+            let kind = self.builder.ins().ireduce(types::I32, kind);
+            let pou = self.builder.ins().iconst(types::I32, i64::from(self.pou));
+            let mut arguments = vec![self.context, pou, pc, kind];
+            if detailed {
+                arguments.extend_from_slice(&params[1..4]);
+            } else {
+                let zero = self.builder.ins().iconst(types::I64, 0);
+                arguments.extend([zero, zero, zero]);
+            }
+            self.call_host(Import::Fault, &arguments);
+            let faulted = self.faulted_exit();
+            self.builder.ins().jump(faulted, &[]);
+        }
+        if let Some(block) = self.faulted_exit {
+            self.builder.switch_to_block(block);
+            self.return_status(1);
+        }
+    }
+
+    /// The shared block that returns `Faulted`.
+    fn faulted_exit(&mut self) -> Block {
+        if let Some(block) = self.faulted_exit {
+            return block;
+        }
+        let block = self.builder.create_block();
+        self.builder.set_cold_block(block);
+        self.faulted_exit = Some(block);
+        block
+    }
+
+    /// The shared block that records a fault with (`detailed`) or without details.
+    fn fault_exit(&mut self, detailed: bool) -> Block {
+        if let Some(block) = self.fault_exits[usize::from(detailed)] {
+            return block;
+        }
+        let block = self.builder.create_block();
+        self.builder.set_cold_block(block);
+        self.builder.append_block_param(block, types::I64);
+        if detailed {
+            for _ in 0..3 {
+                self.builder.append_block_param(block, types::I64);
+            }
+        }
+        self.fault_exits[usize::from(detailed)] = Some(block);
+        block
     }
 
     /// Emits instruction `index`, starting its block if it starts one; `reachable` says
@@ -568,12 +637,9 @@ impl<'a, 'b> Translator<'a, 'b> {
 
     /// Returns `Faulted` when `status` is not 0, else goes on in a new block.
     pub(crate) fn return_if_faulted(&mut self, status: Value) {
-        let faulted = self.builder.create_block();
+        let faulted = self.faulted_exit();
         let next = self.builder.create_block();
-        self.builder.set_cold_block(faulted);
         self.builder.ins().brif(status, faulted, &[], next, &[]);
-        self.builder.switch_to_block(faulted);
-        self.return_status(1);
         self.builder.switch_to_block(next);
     }
 
@@ -589,8 +655,27 @@ impl<'a, 'b> Translator<'a, 'b> {
         self.builder.switch_to_block(next);
     }
 
-    /// Records a fault at the current instruction and returns `Faulted`.
+    /// Records a fault at the current instruction and returns `Faulted`. Outside a promoted
+    /// loop this is a jump to the function's shared fault block with the site as a constant;
+    /// inside one the promoted places are written back first, so the fault is recorded here.
     pub(crate) fn record_fault(&mut self, kind: u32, details: [Option<Value>; 3]) {
+        if self.promoted.is_empty() {
+            let site = (u64::from(kind) << 32 | u64::from(self.pc)) as i64;
+            let site = self.builder.ins().iconst(types::I64, site);
+            if details.iter().all(Option::is_none) {
+                let shared = self.fault_exit(false);
+                self.builder.ins().jump(shared, &[BlockArg::Value(site)]);
+            } else {
+                let mut arguments = vec![BlockArg::Value(site)];
+                for detail in details {
+                    let value = detail.unwrap_or_else(|| self.builder.ins().iconst(types::I64, 0));
+                    arguments.push(BlockArg::Value(value));
+                }
+                let shared = self.fault_exit(true);
+                self.builder.ins().jump(shared, &arguments);
+            }
+            return;
+        }
         let pou = self.builder.ins().iconst(types::I32, i64::from(self.pou));
         let pc = self.builder.ins().iconst(types::I32, i64::from(self.pc));
         let kind = self.builder.ins().iconst(types::I32, i64::from(kind));
@@ -600,7 +685,8 @@ impl<'a, 'b> Translator<'a, 'b> {
             arguments.push(value);
         }
         self.call_host(Import::Fault, &arguments);
-        self.return_status(1);
+        let faulted = self.faulted_exit();
+        self.builder.ins().jump(faulted, &[]);
     }
 
     /// Stores the budget back into the context and returns `status`.
