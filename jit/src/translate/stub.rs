@@ -7,7 +7,8 @@
 
 use cranelift_codegen::ir::condcodes::IntCC;
 use cranelift_codegen::ir::{
-    AbiParam, Function, InstBuilder, Signature, UserFuncName, Value, types,
+    AbiParam, BlockArg, Function, InstBuilder, Signature, StackSlotData, StackSlotKind,
+    UserFuncName, Value, types,
 };
 use cranelift_frontend::{FunctionBuilder, FunctionBuilderContext};
 use cranelift_module::{FuncId, Module};
@@ -118,6 +119,69 @@ pub(crate) fn translate_stub(
     builder.append_block_params_for_function_params(entry);
     builder.switch_to_block(entry);
     let params = builder.block_params(entry).to_vec();
+    let mut import = |import: Import, builder: &mut FunctionBuilder<'_>| {
+        module.declare_func_in_func(target.imports.id(import), builder.func)
+    };
+    // Step 4: the safe point, at the call site.
+    let due_pointer = builder
+        .ins()
+        .load(types::I64, context_flags(), params[0], context::DUE);
+    // An atomic load, read anew at every call (§4.5).
+    let due = builder
+        .ins()
+        .atomic_load(types::I8, context_flags(), due_pointer);
+    let preempt = builder.create_block();
+    // The checks take the parameters as block parameters, so that on the cold path they come
+    // back from a stack slot after the callback rather than living across it: a value live
+    // across a call takes a callee-saved register, which every call would save and restore.
+    let checks = builder.create_block();
+    let types_of_params = [types::I64, types::I64, types::I64, types::I32, types::I32];
+    for ty in types_of_params {
+        builder.append_block_param(checks, ty);
+    }
+    let arguments: Vec<BlockArg> = params.iter().copied().map(BlockArg::Value).collect();
+    builder.set_cold_block(preempt);
+    builder.ins().brif(due, preempt, &[], checks, &arguments);
+    builder.switch_to_block(preempt);
+    let slot = builder.create_sized_stack_slot(StackSlotData::new(
+        StackSlotKind::ExplicitSlot,
+        8 * params.len() as u32,
+        3,
+    ));
+    for (at, param) in params.iter().enumerate() {
+        builder
+            .ins()
+            .stack_store(types::I64, *param, slot, 8 * at as i32);
+    }
+    let preempt_ref = import(Import::Preempt, &mut builder);
+    let call = builder
+        .ins()
+        .call(preempt_ref, &[params[0], params[3], params[4]]);
+    let status = builder.inst_results(call)[0];
+    let faulted = builder.create_block();
+    let resume = builder.create_block();
+    builder.set_cold_block(faulted);
+    builder.set_cold_block(resume);
+    builder.ins().brif(status, faulted, &[], resume, &[]);
+    builder.switch_to_block(faulted);
+    // The host recorded the safe point's fault (`Watchdog`, `Abandoned`).
+    let one = builder.ins().iconst(types::I32, 1);
+    builder.ins().return_(&[one]);
+    builder.switch_to_block(resume);
+    let reloaded: Vec<BlockArg> = types_of_params
+        .iter()
+        .enumerate()
+        .map(|(at, ty)| {
+            BlockArg::Value(
+                builder
+                    .ins()
+                    .stack_load(types::I64, *ty, slot, 8 * at as i32),
+            )
+        })
+        .collect();
+    builder.ins().jump(checks, &reloaded);
+    builder.switch_to_block(checks);
+    let params = builder.block_params(checks).to_vec();
     let stub = Stub {
         context: params[0],
         instance: params[1],
@@ -125,36 +189,7 @@ pub(crate) fn translate_stub(
         site_pou: params[3],
         site_pc: params[4],
     };
-    let mut import = |import: Import, builder: &mut FunctionBuilder<'_>| {
-        module.declare_func_in_func(target.imports.id(import), builder.func)
-    };
-    // Step 4: the safe point, at the call site.
-    let due_pointer = builder
-        .ins()
-        .load(types::I64, context_flags(), stub.context, context::DUE);
-    // An atomic load, read anew at every call (§4.5).
-    let due = builder
-        .ins()
-        .atomic_load(types::I8, context_flags(), due_pointer);
-    let preempt = builder.create_block();
-    let checks = builder.create_block();
-    builder.set_cold_block(preempt);
-    builder.ins().brif(due, preempt, &[], checks, &[]);
-    builder.switch_to_block(preempt);
-    let preempt_ref = import(Import::Preempt, &mut builder);
-    let call = builder
-        .ins()
-        .call(preempt_ref, &[stub.context, stub.site_pou, stub.site_pc]);
-    let status = builder.inst_results(call)[0];
-    let faulted = builder.create_block();
-    builder.set_cold_block(faulted);
-    builder.ins().brif(status, faulted, &[], checks, &[]);
-    builder.switch_to_block(faulted);
-    // The host recorded the safe point's fault (`Watchdog`, `Abandoned`).
-    let one = builder.ins().iconst(types::I32, 1);
-    builder.ins().return_(&[one]);
     // Step 5: the stack, the depth and the machine's stack.
-    builder.switch_to_block(checks);
     let frame_end = builder
         .ins()
         .iadd_imm_u(stub.frame, i64::from(target.pou.frame_size));
@@ -210,11 +245,16 @@ pub(crate) fn translate_stub(
     } else if size > 0 {
         stub.store_frame(&mut builder, target.pou);
     }
-    // Step 7: the depth, counted where `push_frame` counts it. Read again: a callback of
-    // steps 4 and 6 hands the counters to the host and takes them back.
-    let depth = builder
-        .ins()
-        .load(types::I32, context_flags(), stub.context, context::DEPTH);
+    // Step 7: the depth, counted where `push_frame` counts it. Read again after the frame's
+    // callback, which hands the counters to the host and takes them back; step 4's callback
+    // came before the checks read it.
+    let depth = if size > INLINE_FRAME_BYTES {
+        builder
+            .ins()
+            .load(types::I32, context_flags(), stub.context, context::DEPTH)
+    } else {
+        depth
+    };
     let deeper = builder.ins().iadd_imm_u(depth, 1);
     builder
         .ins()

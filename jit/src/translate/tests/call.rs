@@ -581,9 +581,13 @@ fn the_enter_stub_reports_a_frame_past_the_stack_at_its_call_site() {
     );
     assert_eq!(host.faults, vec![(site(0, 0), NativeFault::StackOverflow)]);
     // With `due` set, both stubs make their safe point at their call sites, at the depth
-    // counted before them.
+    // counted before them, and the calls go on with their instances and frames.
     let mut host = fixture.host();
+    host.put(32, 5, 4);
+    host.put(36, 3, 4);
     assert_eq!(run_entry(&fixture, &mut host, 0, true), Status::Ok);
+    assert_eq!(host.get(32, 4), 8);
+    assert_eq!(host.get(44, 4), 5);
     let depths: Vec<(Site, u32)> = host
         .ticks
         .iter()
