@@ -234,18 +234,11 @@ impl Translator<'_, '_> {
     /// Calls generated code (a stub or a POU function): the budget stored before, the
     /// memory's address and the budget loaded after (§4.2, §7 rule 3). Returns its status.
     fn call_counted(&mut self, function: FuncRef, arguments: &[Value]) -> Value {
-        let budget = self.builder.use_var(self.budget);
-        self.builder
-            .ins()
-            .store(context_flags(), budget, self.context, context::BUDGET);
+        self.store_budget();
         let call = self.builder.ins().call(function, arguments);
         let status = self.builder.inst_results(call)[0];
         self.reload_memory();
-        let budget =
-            self.builder
-                .ins()
-                .load(types::I32, context_flags(), self.context, context::BUDGET);
-        self.builder.def_var(self.budget, budget);
+        self.load_budget();
         status
     }
 
@@ -260,19 +253,12 @@ impl Translator<'_, '_> {
     pub(crate) fn call_host(&mut self, import: Import, arguments: &[Value]) -> Value {
         // A callback sees memory as the interpreter leaves it, and may change it (§5.3).
         self.write_back();
-        let budget = self.builder.use_var(self.budget);
-        self.builder
-            .ins()
-            .store(context_flags(), budget, self.context, context::BUDGET);
+        self.store_budget();
         let callee = self.func_ref(import);
         let call = self.builder.ins().call(callee, arguments);
         let result = self.builder.inst_results(call).first().copied();
         self.reload_memory();
-        let budget =
-            self.builder
-                .ins()
-                .load(types::I32, context_flags(), self.context, context::BUDGET);
-        self.builder.def_var(self.budget, budget);
+        self.load_budget();
         result.unwrap_or_else(|| self.builder.ins().iconst(types::I32, 0))
     }
 

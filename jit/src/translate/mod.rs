@@ -180,6 +180,10 @@ pub(crate) struct Translator<'a, 'b> {
     memory: Variable,
     /// Backward jumps left before the watchdog looks at the clock.
     budget: Variable,
+    /// Whether the budget lives in `budget` at all: only a POU with a backward jump counts it
+    /// down. In any other the variable would only ever hold what the context holds, so it
+    /// is neither loaded nor stored, around calls or on return (§4.2).
+    counts_budget: bool,
     /// The instruction being translated.
     pub(crate) pc: u32,
     /// Back-edge blocks of the current instruction and where each goes, to emit once the
@@ -247,6 +251,13 @@ impl<'a, 'b> Translator<'a, 'b> {
             frame,
             memory,
             budget,
+            counts_budget: pou.code.iter().enumerate().any(|(pc, instr)| {
+                matches!(
+                    instr,
+                    Instr::Jump { target } | Instr::JumpIf { target, .. } | Instr::JumpIfNot { target, .. }
+                        if *target as usize <= pc
+                )
+            }),
             pc: 0,
             back_edges: Vec::new(),
             promoted_loops,
@@ -258,12 +269,7 @@ impl<'a, 'b> Translator<'a, 'b> {
             fault_exits: [None; 2],
         };
         translator.reload_memory();
-        let budget_now =
-            translator
-                .builder
-                .ins()
-                .load(types::I32, context_flags(), context, context::BUDGET);
-        translator.builder.def_var(budget, budget_now);
+        translator.load_budget();
         translator
     }
 
@@ -292,7 +298,7 @@ impl<'a, 'b> Translator<'a, 'b> {
     }
 
     /// Emits the shared fault blocks and the shared `Faulted` return, those something
-    /// branched to. No loop is active here, so recording a fault writes nothing back.
+    /// branched to. No loop is active here, so recording a fault has nothing to write back.
     fn emit_shared_exits(&mut self) {
         for (at, detailed) in [(0, false), (1, true)] {
             let Some(block) = self.fault_exits[at] else {
@@ -312,9 +318,14 @@ impl<'a, 'b> Translator<'a, 'b> {
                 let zero = self.builder.ins().iconst(types::I64, 0);
                 arguments.extend([zero, zero, zero]);
             }
-            self.call_host(Import::Fault, &arguments);
-            let faulted = self.faulted_exit();
-            self.builder.ins().jump(faulted, &[]);
+            // The callback is the function's last act: nothing is read after it (the host
+            // keeps the counters it was given), so nothing but its arguments lives across it
+            // and a POU whose only calls are its faults saves no register for them.
+            self.store_budget();
+            let fault = self.func_ref(Import::Fault);
+            self.builder.ins().call(fault, &arguments);
+            let status = self.builder.ins().iconst(types::I32, 1);
+            self.builder.ins().return_(&[status]);
         }
         if let Some(block) = self.faulted_exit {
             self.builder.switch_to_block(block);
@@ -691,12 +702,32 @@ impl<'a, 'b> Translator<'a, 'b> {
 
     /// Stores the budget back into the context and returns `status`.
     pub(crate) fn return_status(&mut self, status: i64) {
-        let budget = self.builder.use_var(self.budget);
-        self.builder
-            .ins()
-            .store(context_flags(), budget, self.context, context::BUDGET);
+        self.store_budget();
         let status = self.builder.ins().iconst(types::I32, status);
         self.builder.ins().return_(&[status]);
+    }
+
+    /// Stores the budget into the context, before a call or a return, where this POU counts
+    /// it.
+    pub(crate) fn store_budget(&mut self) {
+        if self.counts_budget {
+            let budget = self.builder.use_var(self.budget);
+            self.builder
+                .ins()
+                .store(context_flags(), budget, self.context, context::BUDGET);
+        }
+    }
+
+    /// Loads the budget from the context, on entry and after a call, where this POU counts
+    /// it.
+    pub(crate) fn load_budget(&mut self) {
+        if self.counts_budget {
+            let budget =
+                self.builder
+                    .ins()
+                    .load(types::I32, context_flags(), self.context, context::BUDGET);
+            self.builder.def_var(self.budget, budget);
+        }
     }
 
     fn reload_memory(&mut self) {
