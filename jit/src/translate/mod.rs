@@ -200,9 +200,10 @@ pub(crate) struct Translator<'a, 'b> {
     /// Exit blocks of the current instruction out of the active loop and where each goes,
     /// to emit once the current block is terminated.
     exits: Vec<(Block, Block)>,
-    /// The function's one block that returns `Faulted`, once something branches to it: every
-    /// faulted path shares it, rather than each repeating the function's epilogue.
-    faulted_exit: Option<Block>,
+    /// The function's one block that returns, with the status as its parameter, once
+    /// something branches to it: every return shares it, rather than each repeating the
+    /// function's epilogue.
+    exit: Option<Block>,
     /// The function's shared blocks that record a fault and return `Faulted` (§4.7), once
     /// something branches to them: without details, with the parameter `site` (the kind in
     /// the high 32 bits, the instruction in the low), and with details, with `site, a, b, c`.
@@ -265,7 +266,7 @@ impl<'a, 'b> Translator<'a, 'b> {
             active_loop: None,
             promoted: Vec::new(),
             exits: Vec::new(),
-            faulted_exit: None,
+            exit: None,
             fault_exits: [None; 2],
         };
         translator.reload_memory();
@@ -324,23 +325,24 @@ impl<'a, 'b> Translator<'a, 'b> {
             self.store_budget();
             let fault = self.func_ref(Import::Fault);
             self.builder.ins().call(fault, &arguments);
-            let status = self.builder.ins().iconst(types::I32, 1);
-            self.builder.ins().return_(&[status]);
-        }
-        if let Some(block) = self.faulted_exit {
-            self.builder.switch_to_block(block);
             self.return_status(1);
+        }
+        if let Some(block) = self.exit {
+            self.builder.switch_to_block(block);
+            self.store_budget();
+            let status = self.builder.block_params(block)[0];
+            self.builder.ins().return_(&[status]);
         }
     }
 
-    /// The shared block that returns `Faulted`.
-    fn faulted_exit(&mut self) -> Block {
-        if let Some(block) = self.faulted_exit {
+    /// The shared block that stores the budget and returns its parameter.
+    fn exit_block(&mut self) -> Block {
+        if let Some(block) = self.exit {
             return block;
         }
         let block = self.builder.create_block();
-        self.builder.set_cold_block(block);
-        self.faulted_exit = Some(block);
+        self.builder.append_block_param(block, types::I32);
+        self.exit = Some(block);
         block
     }
 
@@ -648,9 +650,12 @@ impl<'a, 'b> Translator<'a, 'b> {
 
     /// Returns `Faulted` when `status` is not 0, else goes on in a new block.
     pub(crate) fn return_if_faulted(&mut self, status: Value) {
-        let faulted = self.faulted_exit();
+        // A status that is not 0 is 1, `Faulted` (§4.1): it is returned as it is.
+        let exit = self.exit_block();
         let next = self.builder.create_block();
-        self.builder.ins().brif(status, faulted, &[], next, &[]);
+        self.builder
+            .ins()
+            .brif(status, exit, &[BlockArg::Value(status)], next, &[]);
         self.builder.switch_to_block(next);
     }
 
@@ -696,15 +701,14 @@ impl<'a, 'b> Translator<'a, 'b> {
             arguments.push(value);
         }
         self.call_host(Import::Fault, &arguments);
-        let faulted = self.faulted_exit();
-        self.builder.ins().jump(faulted, &[]);
+        self.return_status(1);
     }
 
     /// Stores the budget back into the context and returns `status`.
     pub(crate) fn return_status(&mut self, status: i64) {
-        self.store_budget();
         let status = self.builder.ins().iconst(types::I32, status);
-        self.builder.ins().return_(&[status]);
+        let exit = self.exit_block();
+        self.builder.ins().jump(exit, &[BlockArg::Value(status)]);
     }
 
     /// Stores the budget into the context, before a call or a return, where this POU counts

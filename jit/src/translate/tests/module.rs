@@ -254,13 +254,22 @@ struct Listing<'a> {
 }
 
 impl<'a> Listing<'a> {
+    /// The blocks by their numbers (the listing puts cold blocks last, out of order).
     fn new(listing: &'a str) -> Self {
         let mut blocks: Vec<Vec<&str>> = Vec::new();
+        let mut current = None;
         for line in listing.lines() {
-            if line.starts_with("block") && line.ends_with(':') {
-                blocks.push(Vec::new());
-            } else if let Some(block) = blocks.last_mut() {
-                block.push(line);
+            let number = line
+                .strip_prefix("block")
+                .and_then(|rest| rest.strip_suffix(':'))
+                .and_then(|number| number.parse::<usize>().ok());
+            if let Some(number) = number {
+                if blocks.len() <= number {
+                    blocks.resize(number + 1, Vec::new());
+                }
+                current = Some(number);
+            } else if let Some(block) = current {
+                blocks[block].push(line);
             }
         }
         Self { blocks }
