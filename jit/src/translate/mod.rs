@@ -671,37 +671,26 @@ impl<'a, 'b> Translator<'a, 'b> {
         self.builder.switch_to_block(next);
     }
 
-    /// Records a fault at the current instruction and returns `Faulted`. Outside a promoted
-    /// loop this is a jump to the function's shared fault block with the site as a constant;
-    /// inside one the promoted places are written back first, so the fault is recorded here.
+    /// Records a fault at the current instruction and returns `Faulted`: a jump to the
+    /// function's shared fault block with the site as a constant, after writing the promoted
+    /// places back inside a promoted loop (§5.3), so the host sees memory as the interpreter
+    /// leaves it.
     pub(crate) fn record_fault(&mut self, kind: u32, details: [Option<Value>; 3]) {
-        if self.promoted.is_empty() {
-            let site = (u64::from(kind) << 32 | u64::from(self.pc)) as i64;
-            let site = self.builder.ins().iconst(types::I64, site);
-            if details.iter().all(Option::is_none) {
-                let shared = self.fault_exit(false);
-                self.builder.ins().jump(shared, &[BlockArg::Value(site)]);
-            } else {
-                let mut arguments = vec![BlockArg::Value(site)];
-                for detail in details {
-                    let value = detail.unwrap_or_else(|| self.builder.ins().iconst(types::I64, 0));
-                    arguments.push(BlockArg::Value(value));
-                }
-                let shared = self.fault_exit(true);
-                self.builder.ins().jump(shared, &arguments);
+        self.write_back();
+        let site = (u64::from(kind) << 32 | u64::from(self.pc)) as i64;
+        let site = self.builder.ins().iconst(types::I64, site);
+        if details.iter().all(Option::is_none) {
+            let shared = self.fault_exit(false);
+            self.builder.ins().jump(shared, &[BlockArg::Value(site)]);
+        } else {
+            let mut arguments = vec![BlockArg::Value(site)];
+            for detail in details {
+                let value = detail.unwrap_or_else(|| self.builder.ins().iconst(types::I64, 0));
+                arguments.push(BlockArg::Value(value));
             }
-            return;
+            let shared = self.fault_exit(true);
+            self.builder.ins().jump(shared, &arguments);
         }
-        let pou = self.builder.ins().iconst(types::I32, i64::from(self.pou));
-        let pc = self.builder.ins().iconst(types::I32, i64::from(self.pc));
-        let kind = self.builder.ins().iconst(types::I32, i64::from(kind));
-        let mut arguments = vec![self.context, pou, pc, kind];
-        for detail in details {
-            let value = detail.unwrap_or_else(|| self.builder.ins().iconst(types::I64, 0));
-            arguments.push(value);
-        }
-        self.call_host(Import::Fault, &arguments);
-        self.return_status(1);
     }
 
     /// Stores the budget back into the context and returns `status`.
