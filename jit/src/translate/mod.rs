@@ -11,11 +11,12 @@ mod pointer;
 mod promote;
 mod real;
 pub(crate) mod scalar;
+pub(crate) mod stub;
 
 use cranelift_codegen::ir::condcodes::IntCC;
 use cranelift_codegen::ir::{
-    AbiParam, Block, FuncRef, Function, InstBuilder, MemFlagsData, Signature, Type, UserFuncName,
-    Value, types,
+    AbiParam, Block, BlockArg, FuncRef, Function, InstBuilder, MemFlagsData, Signature, Type,
+    UserFuncName, Value, types,
 };
 use cranelift_frontend::{FunctionBuilder, FunctionBuilderContext, Variable};
 use cranelift_module::FuncId;
@@ -93,6 +94,8 @@ pub(crate) struct Environment<'a> {
     /// Per POU: its function in the module, when it has one (a call of a POU without one is
     /// handed to the interpreter, §4.4).
     pub(crate) functions: &'a [Option<FuncId>],
+    /// Per POU: its entry stubs (§4.4), indexed by `stub::StubKind`, those some call needs.
+    pub(crate) stubs: &'a [[Option<FuncId>; 2]],
 }
 
 /// Translates POU `index` into a function, or says why it cannot.
@@ -157,6 +160,10 @@ pub(crate) struct Translator<'a, 'b> {
     functions: &'a [Option<FuncId>],
     /// Per POU: its function's reference in this function, once declared in it.
     pou_refs: Vec<Option<FuncRef>>,
+    /// Per POU: its entry stubs in the module, indexed by `stub::StubKind`.
+    stubs: &'a [[Option<FuncId>; 2]],
+    /// Per POU: its stubs' references in this function, once declared in it.
+    stub_refs: Vec<[Option<FuncRef>; 2]>,
     /// This POU's index.
     pub(crate) pou: u32,
     /// This POU's instructions.
@@ -173,6 +180,10 @@ pub(crate) struct Translator<'a, 'b> {
     memory: Variable,
     /// Backward jumps left before the watchdog looks at the clock.
     budget: Variable,
+    /// Whether the budget lives in `budget` at all: only a POU with a backward jump counts it
+    /// down. In any other the variable would only ever hold what the context holds, so it
+    /// is neither loaded nor stored, around calls or on return (§4.2).
+    counts_budget: bool,
     /// The instruction being translated.
     pub(crate) pc: u32,
     /// Back-edge blocks of the current instruction and where each goes, to emit once the
@@ -189,6 +200,14 @@ pub(crate) struct Translator<'a, 'b> {
     /// Exit blocks of the current instruction out of the active loop and where each goes,
     /// to emit once the current block is terminated.
     exits: Vec<(Block, Block)>,
+    /// The function's one block that returns, with the status as its parameter, once
+    /// something branches to it: every return shares it, rather than each repeating the
+    /// function's epilogue.
+    exit: Option<Block>,
+    /// The function's shared blocks that record a fault and return `Faulted` (§4.7), once
+    /// something branches to them: without details, with the parameter `site` (the kind in
+    /// the high 32 bits, the instruction in the low), and with details, with `site, a, b, c`.
+    fault_exits: [Option<Block>; 2],
 }
 
 impl<'a, 'b> Translator<'a, 'b> {
@@ -223,6 +242,8 @@ impl<'a, 'b> Translator<'a, 'b> {
             pous: environment.pous,
             functions: environment.functions,
             pou_refs: vec![None; environment.pous.len()],
+            stubs: environment.stubs,
+            stub_refs: vec![[None; 2]; environment.pous.len()],
             pou: index,
             code: &pou.code,
             blocks,
@@ -231,6 +252,13 @@ impl<'a, 'b> Translator<'a, 'b> {
             frame,
             memory,
             budget,
+            counts_budget: pou.code.iter().enumerate().any(|(pc, instr)| {
+                matches!(
+                    instr,
+                    Instr::Jump { target } | Instr::JumpIf { target, .. } | Instr::JumpIfNot { target, .. }
+                        if *target as usize <= pc
+                )
+            }),
             pc: 0,
             back_edges: Vec::new(),
             promoted_loops,
@@ -238,14 +266,11 @@ impl<'a, 'b> Translator<'a, 'b> {
             active_loop: None,
             promoted: Vec::new(),
             exits: Vec::new(),
+            exit: None,
+            fault_exits: [None; 2],
         };
         translator.reload_memory();
-        let budget_now =
-            translator
-                .builder
-                .ins()
-                .load(types::I32, context_flags(), context, context::BUDGET);
-        translator.builder.def_var(budget, budget_now);
+        translator.load_budget();
         translator
     }
 
@@ -270,6 +295,72 @@ impl<'a, 'b> Translator<'a, 'b> {
             self.builder.switch_to_block(end);
             self.return_status(0);
         }
+        self.emit_shared_exits();
+    }
+
+    /// Emits the shared fault blocks and the shared `Faulted` return, those something
+    /// branched to. No loop is active here, so recording a fault has nothing to write back.
+    fn emit_shared_exits(&mut self) {
+        for (at, detailed) in [(0, false), (1, true)] {
+            let Some(block) = self.fault_exits[at] else {
+                continue;
+            };
+            self.builder.switch_to_block(block);
+            let params = self.builder.block_params(block).to_vec();
+            let site = params[0];
+            let pc = self.builder.ins().ireduce(types::I32, site);
+            let kind = self.builder.ins().ushr_imm_u(site, 32);
+            let kind = self.builder.ins().ireduce(types::I32, kind);
+            let pou = self.builder.ins().iconst(types::I32, i64::from(self.pou));
+            let mut arguments = vec![self.context, pou, pc, kind];
+            if detailed {
+                arguments.extend_from_slice(&params[1..4]);
+            } else {
+                let zero = self.builder.ins().iconst(types::I64, 0);
+                arguments.extend([zero, zero, zero]);
+            }
+            // The callback is the function's last act: nothing is read after it (the host
+            // keeps the counters it was given), so nothing but its arguments lives across it
+            // and a POU whose only calls are its faults saves no register for them.
+            self.store_budget();
+            let fault = self.func_ref(Import::Fault);
+            self.builder.ins().call(fault, &arguments);
+            self.return_status(1);
+        }
+        if let Some(block) = self.exit {
+            self.builder.switch_to_block(block);
+            self.store_budget();
+            let status = self.builder.block_params(block)[0];
+            self.builder.ins().return_(&[status]);
+        }
+    }
+
+    /// The shared block that stores the budget and returns its parameter.
+    fn exit_block(&mut self) -> Block {
+        if let Some(block) = self.exit {
+            return block;
+        }
+        let block = self.builder.create_block();
+        self.builder.append_block_param(block, types::I32);
+        self.exit = Some(block);
+        block
+    }
+
+    /// The shared block that records a fault with (`detailed`) or without details.
+    fn fault_exit(&mut self, detailed: bool) -> Block {
+        if let Some(block) = self.fault_exits[usize::from(detailed)] {
+            return block;
+        }
+        let block = self.builder.create_block();
+        self.builder.set_cold_block(block);
+        self.builder.append_block_param(block, types::I64);
+        if detailed {
+            for _ in 0..3 {
+                self.builder.append_block_param(block, types::I64);
+            }
+        }
+        self.fault_exits[usize::from(detailed)] = Some(block);
+        block
     }
 
     /// Emits instruction `index`, starting its block if it starts one; `reachable` says
@@ -559,12 +650,12 @@ impl<'a, 'b> Translator<'a, 'b> {
 
     /// Returns `Faulted` when `status` is not 0, else goes on in a new block.
     pub(crate) fn return_if_faulted(&mut self, status: Value) {
-        let faulted = self.builder.create_block();
+        // A status that is not 0 is 1, `Faulted` (§4.1): it is returned as it is.
+        let exit = self.exit_block();
         let next = self.builder.create_block();
-        self.builder.set_cold_block(faulted);
-        self.builder.ins().brif(status, faulted, &[], next, &[]);
-        self.builder.switch_to_block(faulted);
-        self.return_status(1);
+        self.builder
+            .ins()
+            .brif(status, exit, &[BlockArg::Value(status)], next, &[]);
         self.builder.switch_to_block(next);
     }
 
@@ -580,28 +671,56 @@ impl<'a, 'b> Translator<'a, 'b> {
         self.builder.switch_to_block(next);
     }
 
-    /// Records a fault at the current instruction and returns `Faulted`.
+    /// Records a fault at the current instruction and returns `Faulted`: a jump to the
+    /// function's shared fault block with the site as a constant, after writing the promoted
+    /// places back inside a promoted loop (§5.3), so the host sees memory as the interpreter
+    /// leaves it.
     pub(crate) fn record_fault(&mut self, kind: u32, details: [Option<Value>; 3]) {
-        let pou = self.builder.ins().iconst(types::I32, i64::from(self.pou));
-        let pc = self.builder.ins().iconst(types::I32, i64::from(self.pc));
-        let kind = self.builder.ins().iconst(types::I32, i64::from(kind));
-        let mut arguments = vec![self.context, pou, pc, kind];
-        for detail in details {
-            let value = detail.unwrap_or_else(|| self.builder.ins().iconst(types::I64, 0));
-            arguments.push(value);
+        self.write_back();
+        let site = (u64::from(kind) << 32 | u64::from(self.pc)) as i64;
+        let site = self.builder.ins().iconst(types::I64, site);
+        if details.iter().all(Option::is_none) {
+            let shared = self.fault_exit(false);
+            self.builder.ins().jump(shared, &[BlockArg::Value(site)]);
+        } else {
+            let mut arguments = vec![BlockArg::Value(site)];
+            for detail in details {
+                let value = detail.unwrap_or_else(|| self.builder.ins().iconst(types::I64, 0));
+                arguments.push(BlockArg::Value(value));
+            }
+            let shared = self.fault_exit(true);
+            self.builder.ins().jump(shared, &arguments);
         }
-        self.call_host(Import::Fault, &arguments);
-        self.return_status(1);
     }
 
     /// Stores the budget back into the context and returns `status`.
     pub(crate) fn return_status(&mut self, status: i64) {
-        let budget = self.builder.use_var(self.budget);
-        self.builder
-            .ins()
-            .store(context_flags(), budget, self.context, context::BUDGET);
         let status = self.builder.ins().iconst(types::I32, status);
-        self.builder.ins().return_(&[status]);
+        let exit = self.exit_block();
+        self.builder.ins().jump(exit, &[BlockArg::Value(status)]);
+    }
+
+    /// Stores the budget into the context, before a call or a return, where this POU counts
+    /// it.
+    pub(crate) fn store_budget(&mut self) {
+        if self.counts_budget {
+            let budget = self.builder.use_var(self.budget);
+            self.builder
+                .ins()
+                .store(context_flags(), budget, self.context, context::BUDGET);
+        }
+    }
+
+    /// Loads the budget from the context, on entry and after a call, where this POU counts
+    /// it.
+    pub(crate) fn load_budget(&mut self) {
+        if self.counts_budget {
+            let budget =
+                self.builder
+                    .ins()
+                    .load(types::I32, context_flags(), self.context, context::BUDGET);
+            self.builder.def_var(self.budget, budget);
+        }
     }
 
     fn reload_memory(&mut self) {

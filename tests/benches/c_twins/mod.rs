@@ -240,18 +240,24 @@ pub fn report(median_ns: &dyn Fn(&mut dyn FnMut()) -> f64) {
         ));
     }
     println!(
-        "\n| workload | instructions in main | bytecode bytes | translation ms | code bytes |"
+        "\n| workload | instructions in main | bytecode bytes | translation ms | code bytes | code ÷ bytecode (goal < 10) |"
     );
-    println!("|---|---:|---:|---:|---:|");
+    println!("|---|---:|---:|---:|---:|---:|");
     for (name, instructions, bytecode, translation_ms, code_bytes) in sizes {
+        let ratio = bytecode.map_or_else(
+            || "–".to_owned(),
+            |bytes| format!("{:.2}", code_bytes as f64 / bytes.max(1) as f64),
+        );
         let bytecode = bytecode.map_or_else(|| "–".to_owned(), |bytes| bytes.to_string());
-        println!("| {name} | {instructions} | {bytecode} | {translation_ms:.1} | {code_bytes} |");
+        println!(
+            "| {name} | {instructions} | {bytecode} | {translation_ms:.1} | {code_bytes} | {ratio} |"
+        );
     }
 }
 
 /// The size of the encoded image's code section payload (section 5, `docs/program-image.md`
 /// §3), the "bytecode" of `docs/native-engine.md` §9.2.
-fn code_section_bytes(image: &program_image::ProgramImage) -> Option<usize> {
+pub fn code_section_bytes(image: &program_image::ProgramImage) -> Option<usize> {
     const CODE_SECTION: u16 = 5;
     let bytes = image.encode();
     // The header: magic (8), version (2), flags (2), section count (4).
