@@ -90,7 +90,7 @@ fn compound(scope: Scope, ty: Ty, below: &[BoxedStrategy<String>]) -> BoxedStrat
         ));
     }
     match ty {
-        Ty::Bool => choices.extend(boolean(below)),
+        Ty::Bool => choices.extend(boolean(scope, below)),
         Ty::Time => choices.extend(duration(below)),
         Ty::Real | Ty::Lreal => choices.extend(real(scope, ty, below)),
         integer => choices.extend(integer_operators(scope, integer, below)),
@@ -126,6 +126,15 @@ fn integer_operators(
     if ty == Ty::Dint {
         choices.push((1, call("TRUNC", vec![real_of_either_width(below)])));
     }
+    choices.push((2, real_into(ty, below)));
+    // From binary-coded decimal (the `FROM_BCD` instruction); most values are no BCD, which
+    // the conversion must treat alike in both engines. The way back, `*_TO_BCD`, has the
+    // type of where it goes, so it is an assignment of its own (`statements.rs`).
+    let from_bcd = format!("BCD_TO_{}", ty.name());
+    choices.push((
+        1,
+        e(ty).prop_map(move |x| format!("{from_bcd}({x})")).boxed(),
+    ));
     if ty == Ty::Lint && scope.calls_int_function() {
         choices.push((2, int_function_call(below)));
     }
@@ -142,6 +151,7 @@ fn real(
     let mut choices = vec![
         (5, binary(e(ty), &["+", "-", "*", "/"], e(ty))),
         (1, binary(e(ty), &["**"], e(ty))),
+        (1, call("ATAN2", vec![e(ty), e(ty)])),
         (1, e(ty).prop_map(|x| format!("(-{x})")).boxed()),
         (
             2,
@@ -160,7 +170,7 @@ fn real(
 }
 
 /// The operators of BOOL: logic, short-circuit logic and comparisons of every type.
-fn boolean(below: &[BoxedStrategy<String>]) -> Vec<(u32, BoxedStrategy<String>)> {
+fn boolean(scope: Scope, below: &[BoxedStrategy<String>]) -> Vec<(u32, BoxedStrategy<String>)> {
     let e = |t: Ty| below[t.index()].clone();
     let comparisons = ALL
         .iter()
@@ -177,7 +187,19 @@ fn boolean(below: &[BoxedStrategy<String>]) -> Vec<(u32, BoxedStrategy<String>)>
         ),
         (1, e(Ty::Bool).prop_map(|x| format!("(NOT {x})")).boxed()),
         (5, Union::new(comparisons).boxed()),
+        (1, bit_of_integer(scope)),
     ]
+}
+
+/// One bit of an integer variable (`c_udint.31`, the `GetBit` instruction).
+pub fn bit_of_integer(scope: Scope) -> BoxedStrategy<String> {
+    Union::new(INTEGERS.iter().map(|ty| {
+        let width = ty.width_bits();
+        (proptest::sample::select(scope.readable(*ty)), 0..width)
+            .prop_map(|(variable, bit)| format!("{variable}.{bit}"))
+            .boxed()
+    }))
+    .boxed()
 }
 
 /// The operators of TIME: sums and differences, and scaling by a DINT.
@@ -254,6 +276,18 @@ fn conversion_into(ty: Ty, below: &[BoxedStrategy<String>]) -> BoxedStrategy<Str
                 .boxed()
         })
         .collect::<Vec<_>>();
+    Union::new(conversions).boxed()
+}
+
+/// A REAL or LREAL converted into the integer type `ty`, half the time straight from a
+/// literal, so the edges of §6.2 (halves, ±2⁶³, values past every width) meet every target.
+fn real_into(ty: Ty, below: &[BoxedStrategy<String>]) -> BoxedStrategy<String> {
+    let conversions = [Ty::Real, Ty::Lreal].map(|from| {
+        let name = format!("{}_TO_{}", from.name(), ty.name());
+        Union::new(vec![below[from.index()].clone(), types::literal(from)])
+            .prop_map(move |x| format!("{name}({x})"))
+            .boxed()
+    });
     Union::new(conversions).boxed()
 }
 

@@ -61,8 +61,11 @@ fn the_generator_writes_every_construct_the_spec_lists() {
         "EXP(",
         "SIN(",
         "ATAN(",
+        "ATAN2(",
         "ROUND(",
         "TRUNC(",
+        "_TO_BCD(",
+        "BCD_TO_",
         // Conversions, REAL to integer among them.
         "REAL_TO_LINT(",
         "LREAL_TO_ULINT(",
@@ -118,6 +121,21 @@ fn the_generator_writes_every_construct_the_spec_lists() {
             .filter(|name| !matches!(name.as_str(), "BOOL#" | "TIME#"))
             .map(String::as_str),
     );
+    // One bit of an integer read (`a_dint.5`) and one set (`c_udint.31 := …`).
+    let bit = |program: &str, assigned: bool| {
+        program.lines().any(|line| {
+            line.split(|c: char| !(c.is_alphanumeric() || c == '_' || c == '.'))
+                .any(|word| {
+                    word.split_once('.').is_some_and(|(name, bit)| {
+                        name.contains('_')
+                            && bit.parse::<u32>().is_ok()
+                            && (!assigned || line.trim_start().starts_with(word))
+                    })
+                })
+        })
+    };
+    assert!(programs.iter().any(|p| bit(p, false)), "no bit read");
+    assert!(programs.iter().any(|p| bit(p, true)), "no bit set");
     let missing = constructs
         .iter()
         .filter(|construct| !programs.iter().any(|program| program.contains(**construct)))

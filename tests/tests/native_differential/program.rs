@@ -16,10 +16,12 @@ const PROGRAM_NESTING: usize = 3;
 
 /// The strategy of whole sources, one program each, that the compiler must accept.
 pub fn source() -> BoxedStrategy<String> {
-    let int_function = pou(Scope::FunctionInt, PROGRAM_NESTING - 1, 1..=4);
-    let real_function = pou(Scope::FunctionReal, PROGRAM_NESTING - 1, 1..=4);
-    let block = pou(Scope::Block, PROGRAM_NESTING - 1, 1..=5);
-    let program = pou(Scope::Program, PROGRAM_NESTING, 2..=8);
+    // The lists may shrink to nothing but the program's one statement, so a failing case
+    // shrinks to the statements it needs.
+    let int_function = pou(Scope::FunctionInt, PROGRAM_NESTING - 1, 0..=4);
+    let real_function = pou(Scope::FunctionReal, PROGRAM_NESTING - 1, 0..=4);
+    let block = pou(Scope::Block, PROGRAM_NESTING - 1, 0..=5);
+    let program = pou(Scope::Program, PROGRAM_NESTING, 1..=8);
     (int_function, real_function, block, program)
         .prop_map(|(int_function, real_function, block, program)| {
             format!("{int_function}\n{real_function}\n{block}\n{program}\n")

@@ -79,7 +79,40 @@ fn simple(scope: Scope, expressions: &Expressions, in_loop: bool) -> BoxedStrate
                 .boxed()
         })
         .collect::<Vec<_>>();
-    let mut choices = vec![(8, Union::new(assignments).boxed())];
+    // One bit of an integer variable set (the `SetBit` instruction).
+    let bits = Union::new(INTEGERS.iter().map(|ty| {
+        let width = ty.width_bits();
+        (
+            // Variables only: not the function's result.
+            proptest::sample::select(
+                scope
+                    .writable(*ty)
+                    .into_iter()
+                    .filter(|name| name.contains('_'))
+                    .collect::<Vec<_>>(),
+            ),
+            0..width,
+            expressions.of(Ty::Bool),
+        )
+            .prop_map(|(variable, bit, value)| format!("{variable}.{bit} := {value};"))
+            .boxed()
+    }));
+    // A conversion into BCD (the `TO_BCD` instruction) takes the type of its target, which
+    // an operand of an operator does not give it, so it is assigned straight.
+    let to_bcd = Union::new(INTEGERS.iter().map(|ty| {
+        let name = format!("{}_TO_BCD", ty.name());
+        (
+            proptest::sample::select(scope.writable(*ty)),
+            expressions.of(*ty),
+        )
+            .prop_map(move |(target, value)| format!("{target} := {name}({value});"))
+            .boxed()
+    }));
+    let mut choices = vec![
+        (8, Union::new(assignments).boxed()),
+        (1, bits.boxed()),
+        (1, to_bcd.boxed()),
+    ];
     if scope.has_pointers() {
         let pointers = ALL
             .iter()

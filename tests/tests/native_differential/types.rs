@@ -105,6 +105,16 @@ impl Ty {
         }
     }
 
+    /// The width in bits of an integer type.
+    pub fn width_bits(self) -> u32 {
+        let (_, max) = self.range();
+        if self.is_signed() {
+            max.count_ones() + 1
+        } else {
+            max.count_ones()
+        }
+    }
+
     /// Whether `value` is a value of this integer type.
     pub fn holds(self, value: i128) -> bool {
         let (min, max) = self.range();
