@@ -6,17 +6,29 @@ use proptest::strategy::Union;
 /// An elementary type of the generated programs (`docs/native-engine.md` §11.2).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Ty {
+    /// 8-bit signed integer.
     Sint,
+    /// 16-bit signed integer.
     Int,
+    /// 32-bit signed integer.
     Dint,
+    /// 64-bit signed integer.
     Lint,
+    /// 8-bit unsigned integer.
     Usint,
+    /// 16-bit unsigned integer.
     Uint,
+    /// 32-bit unsigned integer.
     Udint,
+    /// 64-bit unsigned integer.
     Ulint,
+    /// Boolean.
     Bool,
+    /// 32-bit IEEE 754 real.
     Real,
+    /// 64-bit IEEE 754 real.
     Lreal,
+    /// Duration in milliseconds, stored as a DINT.
     Time,
 }
 
