@@ -45,7 +45,7 @@ pub use translate::host_calls::{
     unary_op_from_code,
 };
 
-/// The limit of nested calls generated code enforces (`docs/native-engine.md` §4.4 step 3):
+/// The limit of nested calls generated code enforces (`docs/native-engine.md` §4.4, the entry stub's depth check):
 /// a call made at this depth or deeper is `StackOverflow`. It must equal the interpreter's
 /// `MAX_CALL_DEPTH` (`runtime/src/engine/exec.rs`), and the runtime asserts that it does, so
 /// that both engines fault at the same call.

@@ -441,7 +441,7 @@ mod tests {
         );
         native.run(3);
         // The native engine checks the callee's instance once, at the call
-        // (native-engine.md 4.4 step 4): the fault is the caller's, at its call instruction.
+        // (native-engine.md 4.4, the memory check at the call site): the fault is the caller's, at its call instruction.
         let [fault] = native.faults() else {
             panic!("one fault: {:?}", native.faults())
         };
