@@ -6,16 +6,16 @@
 
 mod blocks;
 mod call;
+mod counted;
 pub(crate) mod host_calls;
 mod pointer;
 mod promote;
 mod real;
 pub(crate) mod scalar;
 
-use cranelift_codegen::ir::condcodes::IntCC;
 use cranelift_codegen::ir::{
-    AbiParam, Block, FuncRef, Function, InstBuilder, MemFlagsData, Signature, Type, UserFuncName,
-    Value, types,
+    AbiParam, Block, BlockArg, FuncRef, Function, InstBuilder, MemFlagsData, Signature, Type,
+    UserFuncName, Value, types,
 };
 use cranelift_frontend::{FunctionBuilder, FunctionBuilderContext, Variable};
 use cranelift_module::FuncId;
@@ -173,11 +173,21 @@ pub(crate) struct Translator<'a, 'b> {
     memory: Variable,
     /// Backward jumps left before the watchdog looks at the clock.
     budget: Variable,
+    /// The address of the preemption flag `due`, read from the context once on entry: the
+    /// context does not change while the function runs, so a back-edge reads only the flag.
+    due_pointer: Value,
+    /// The block every return goes through (its parameter is the status): the budget stored
+    /// and the function left in one place, so that the epilogue is emitted once.
+    exit: Option<Block>,
+    /// The block every fault goes through after its own write-back (its parameters are the
+    /// instruction, the kind and the three details): one call of `rivet_jit_fault` per
+    /// function rather than one per check.
+    fault_tail: Option<Block>,
     /// The instruction being translated.
     pub(crate) pc: u32,
-    /// Back-edge blocks of the current instruction and where each goes, to emit once the
-    /// current block is terminated.
-    back_edges: Vec<(Block, Block)>,
+    /// Back-edge blocks of the current instruction, where each goes and its target
+    /// instruction, to emit once the current block is terminated.
+    back_edges: Vec<(Block, Block, u32)>,
     /// The loops whose places are kept in variables (§5.3), in code order.
     promoted_loops: Vec<promote::PromotedLoop>,
     /// Per promoted loop: the block every entry from outside goes through.
@@ -186,6 +196,8 @@ pub(crate) struct Translator<'a, 'b> {
     active_loop: Option<usize>,
     /// Its places: the operand, its size, and the variable that holds it.
     promoted: Vec<(Operand, u32, Variable)>,
+    /// While the promoted copy of a counted loop is emitted: what its preheader checked.
+    hoisted: Option<counted::Hoisted>,
     /// Exit blocks of the current instruction out of the active loop and where each goes,
     /// to emit once the current block is terminated.
     exits: Vec<(Block, Block)>,
@@ -213,6 +225,9 @@ impl<'a, 'b> Translator<'a, 'b> {
         let (context, instance, frame) = (params[0], params[1], params[2]);
         let memory = builder.declare_var(types::I64);
         let budget = builder.declare_var(types::I32);
+        let due_pointer = builder
+            .ins()
+            .load(types::I64, context_flags(), context, context::DUE);
         let mut translator = Self {
             builder,
             layout: environment.layout,
@@ -231,12 +246,16 @@ impl<'a, 'b> Translator<'a, 'b> {
             frame,
             memory,
             budget,
+            due_pointer,
+            exit: None,
+            fault_tail: None,
             pc: 0,
             back_edges: Vec::new(),
             promoted_loops,
             preheaders,
             active_loop: None,
             promoted: Vec::new(),
+            hoisted: None,
             exits: Vec::new(),
         };
         translator.reload_memory();
@@ -270,6 +289,8 @@ impl<'a, 'b> Translator<'a, 'b> {
             self.builder.switch_to_block(end);
             self.return_status(0);
         }
+        self.emit_fault_tail();
+        self.emit_exit();
     }
 
     /// Emits instruction `index`, starting its block if it starts one; `reachable` says
@@ -517,40 +538,42 @@ impl<'a, 'b> Translator<'a, 'b> {
             return destination;
         }
         let back_edge = self.builder.create_block();
-        self.back_edges.push((back_edge, destination));
+        self.back_edges.push((back_edge, destination, target));
         back_edge
     }
 
     /// Emits the back-edge blocks the current instruction branches to: `budget -= 1`, and
-    /// when the flag `due` is set or the budget is spent, `rivet_jit_tick` at this site.
+    /// when the budget is spent or the flag `due` is set, `rivet_jit_tick` at this site. The
+    /// two tests are two branches (a decrement and a jump on zero, a byte compared in memory
+    /// and a jump), so that the common case is one load of the flag and no other memory.
     fn emit_back_edges(&mut self) {
-        for (back_edge, destination) in std::mem::take(&mut self.back_edges) {
+        for (back_edge, destination, target) in std::mem::take(&mut self.back_edges) {
             self.builder.switch_to_block(back_edge);
             let budget = self.builder.use_var(self.budget);
             let budget = self.builder.ins().iadd_imm_s(budget, -1);
             self.builder.def_var(self.budget, budget);
-            let due_pointer =
-                self.builder
-                    .ins()
-                    .load(types::I64, context_flags(), self.context, context::DUE);
+            let slow = self.builder.create_block();
+            self.builder.set_cold_block(slow);
+            let flag = self.builder.create_block();
+            self.builder.ins().brif(budget, flag, &[], slow, &[]);
+            self.builder.switch_to_block(flag);
             // An atomic load, so that the flag is read anew at every back-edge (§4.5).
             let due = self
                 .builder
                 .ins()
-                .atomic_load(types::I8, context_flags(), due_pointer);
-            let spent = self.builder.ins().icmp_imm_u(IntCC::Equal, budget, 0);
-            let due_set = self.builder.ins().icmp_imm_u(IntCC::NotEqual, due, 0);
-            let slow_needed = self.builder.ins().bor(spent, due_set);
-            let slow = self.builder.create_block();
-            self.builder.set_cold_block(slow);
-            self.builder
-                .ins()
-                .brif(slow_needed, slow, &[], destination, &[]);
+                .atomic_load(types::I8, context_flags(), self.due_pointer);
+            self.builder.ins().brif(due, slow, &[], destination, &[]);
             self.builder.switch_to_block(slow);
             let pou = self.builder.ins().iconst(types::I32, i64::from(self.pou));
             let pc = self.builder.ins().iconst(types::I32, i64::from(self.pc));
             let status = self.call_host(Import::Tick, &[self.context, pou, pc]);
             self.return_if_faulted(status);
+            // A tick may change memory: a loop whose checks were made once in its preheader
+            // goes back there, to make them again on what memory holds now (§5.3).
+            if let Some(preheader) = self.recheck_after_tick(target) {
+                self.builder.ins().jump(preheader, &[]);
+                continue;
+            }
             // Only once the tick succeeded: the memory is then as long as it was checked.
             self.reload_promoted();
             self.builder.ins().jump(destination, &[]);
@@ -559,12 +582,12 @@ impl<'a, 'b> Translator<'a, 'b> {
 
     /// Returns `Faulted` when `status` is not 0, else goes on in a new block.
     pub(crate) fn return_if_faulted(&mut self, status: Value) {
-        let faulted = self.builder.create_block();
+        let exit = self.exit_block();
         let next = self.builder.create_block();
-        self.builder.set_cold_block(faulted);
-        self.builder.ins().brif(status, faulted, &[], next, &[]);
-        self.builder.switch_to_block(faulted);
-        self.return_status(1);
+        let faulted = self.builder.ins().iconst(types::I32, 1);
+        self.builder
+            .ins()
+            .brif(status, exit, &[BlockArg::Value(faulted)], next, &[]);
         self.builder.switch_to_block(next);
     }
 
@@ -580,27 +603,82 @@ impl<'a, 'b> Translator<'a, 'b> {
         self.builder.switch_to_block(next);
     }
 
-    /// Records a fault at the current instruction and returns `Faulted`.
+    /// Records a fault at the current instruction and returns `Faulted`: the promoted places
+    /// written back here, then the shared tail with this site, the kind and the details.
     pub(crate) fn record_fault(&mut self, kind: u32, details: [Option<Value>; 3]) {
-        let pou = self.builder.ins().iconst(types::I32, i64::from(self.pou));
+        self.write_back();
         let pc = self.builder.ins().iconst(types::I32, i64::from(self.pc));
         let kind = self.builder.ins().iconst(types::I32, i64::from(kind));
-        let mut arguments = vec![self.context, pou, pc, kind];
+        let mut arguments = vec![BlockArg::Value(pc), BlockArg::Value(kind)];
         for detail in details {
             let value = detail.unwrap_or_else(|| self.builder.ins().iconst(types::I64, 0));
-            arguments.push(value);
+            arguments.push(BlockArg::Value(value));
         }
+        let tail = self.fault_tail_block();
+        self.builder.ins().jump(tail, &arguments);
+    }
+
+    /// Returns `status` through the shared exit block.
+    pub(crate) fn return_status(&mut self, status: i64) {
+        let exit = self.exit_block();
+        let status = self.builder.ins().iconst(types::I32, status);
+        self.builder.ins().jump(exit, &[BlockArg::Value(status)]);
+    }
+
+    /// The shared exit block, made on first use.
+    fn exit_block(&mut self) -> Block {
+        if let Some(exit) = self.exit {
+            return exit;
+        }
+        let exit = self.builder.create_block();
+        self.builder.append_block_param(exit, types::I32);
+        self.exit = Some(exit);
+        exit
+    }
+
+    /// The shared fault block, made on first use; cold.
+    fn fault_tail_block(&mut self) -> Block {
+        if let Some(tail) = self.fault_tail {
+            return tail;
+        }
+        let tail = self.builder.create_block();
+        self.builder.set_cold_block(tail);
+        for ty in [types::I32, types::I32, types::I64, types::I64, types::I64] {
+            self.builder.append_block_param(tail, ty);
+        }
+        self.fault_tail = Some(tail);
+        tail
+    }
+
+    /// Emits the shared fault block, if a fault uses it: `rivet_jit_fault` at the site its
+    /// parameters name, then `Faulted`. It runs after every promoted loop's write-back, so
+    /// it writes nothing back itself.
+    fn emit_fault_tail(&mut self) {
+        let Some(tail) = self.fault_tail else {
+            return;
+        };
+        debug_assert!(self.promoted.is_empty(), "the fault tail inside a loop");
+        self.builder.switch_to_block(tail);
+        let parameters = self.builder.block_params(tail).to_vec();
+        let pou = self.builder.ins().iconst(types::I32, i64::from(self.pou));
+        let mut arguments = vec![self.context, pou];
+        arguments.extend(parameters);
         self.call_host(Import::Fault, &arguments);
         self.return_status(1);
     }
 
-    /// Stores the budget back into the context and returns `status`.
-    pub(crate) fn return_status(&mut self, status: i64) {
+    /// Emits the shared exit block, if anything returns: the budget stored back into the
+    /// context, then the status returned.
+    fn emit_exit(&mut self) {
+        let Some(exit) = self.exit else {
+            return;
+        };
+        self.builder.switch_to_block(exit);
+        let status = self.builder.block_params(exit)[0];
         let budget = self.builder.use_var(self.budget);
         self.builder
             .ins()
             .store(context_flags(), budget, self.context, context::BUDGET);
-        let status = self.builder.ins().iconst(types::I32, status);
         self.builder.ins().return_(&[status]);
     }
 
@@ -657,6 +735,9 @@ impl<'a, 'b> Translator<'a, 'b> {
             && let Some(folded) = self.folded_constant(ty, offset)
         {
             return folded;
+        }
+        if let Some(checked) = self.invariant(ty, operand) {
+            return checked;
         }
         if let Some(promoted) = self.promoted_load(ty, operand) {
             return promoted;

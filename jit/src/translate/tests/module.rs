@@ -254,42 +254,73 @@ struct Listing<'a> {
 }
 
 impl<'a> Listing<'a> {
+    /// The listing's blocks by their number, which labels name: cold blocks are listed
+    /// last, so the order of the listing is not the numbers' order.
     fn new(listing: &'a str) -> Self {
         let mut blocks: Vec<Vec<&str>> = Vec::new();
+        let mut current = None;
         for line in listing.lines() {
-            if line.starts_with("block") && line.ends_with(':') {
-                blocks.push(Vec::new());
-            } else if let Some(block) = blocks.last_mut() {
-                block.push(line);
+            let number = line
+                .strip_prefix("block")
+                .and_then(|rest| rest.strip_suffix(':'))
+                .and_then(|digits| digits.parse::<usize>().ok());
+            if let Some(number) = number {
+                if blocks.len() <= number {
+                    blocks.resize(number + 1, Vec::new());
+                }
+                current = Some(number);
+            } else if let Some(number) = current {
+                blocks[number].push(line);
             }
         }
         Self { blocks }
     }
 
-    /// Whether block `index` is one of our fault exits: it calls out (`rivet_jit_fault`) and
-    /// returns, going nowhere else.
+    /// Whether block `index` is one of our fault exits: without a condition it calls out
+    /// (`rivet_jit_fault`, in the function's shared fault block) and returns (through the
+    /// shared exit block), going nowhere else.
     fn is_fault_exit(&self, index: usize) -> bool {
-        self.blocks.get(index).is_some_and(|lines| {
-            let calls = lines
+        let mut called = false;
+        let mut at = index;
+        // Every block is visited at most once on an unconditional path.
+        for _ in 0..self.blocks.len() {
+            let Some(lines) = self.blocks.get(at) else {
+                return false;
+            };
+            let targets: Vec<usize> = lines
+                .iter()
+                .flat_map(|line| line.split_whitespace())
+                .filter_map(Self::label)
+                .collect();
+            called |= lines
                 .iter()
                 .any(|line| line.contains("call") || line.contains("blr"));
-            let returns = lines
+            if lines
                 .iter()
-                .any(|line| line.trim_start().starts_with("ret"));
-            let goes_on = lines.iter().any(|line| line.contains("label"));
-            calls && returns && !goes_on
-        })
+                .any(|line| line.trim_start().starts_with("ret"))
+            {
+                return called && targets.is_empty();
+            }
+            match targets[..] {
+                [next] => at = next,
+                _ => return false,
+            }
+        }
+        false
+    }
+
+    /// The block number a word of the listing names (`label12`), if it names one.
+    fn label(word: &str) -> Option<usize> {
+        word.trim_matches(|c: char| !c.is_ascii_alphanumeric())
+            .strip_prefix("label")?
+            .parse()
+            .ok()
     }
 
     /// The blocks entered only from a two-way branch whose other way is a fault exit: the
     /// code past one of our checks.
     fn after_a_fault_check(&self) -> Vec<usize> {
-        let label = |word: &str| -> Option<usize> {
-            word.trim_matches(|c: char| !c.is_ascii_alphanumeric())
-                .strip_prefix("label")?
-                .parse()
-                .ok()
-        };
+        let label = Self::label;
         let mut entries: Vec<Vec<(usize, Vec<usize>)>> = vec![Vec::new(); self.blocks.len()];
         for (from, lines) in self.blocks.iter().enumerate() {
             for line in lines {
