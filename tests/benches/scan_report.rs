@@ -8,7 +8,8 @@
 //! interpreter's ratio to Rust. The fixed cost of a cycle (the empty program) is shown on its own line and
 //! not subtracted. Then what the debugger costs a call-heavy cycle (`debugger_cost`), then the
 //! engines against the workloads' C twins (`c_twins`, `docs/native-engine.md` §11.3; gcc or
-//! `RIVET_CC` must be installed).
+//! `RIVET_CC` must be installed), then the native engine's translation time on the 50,000-line
+//! project (`translation_time`, §9.3).
 //!
 //! `SCAN_SECTION=debugger` or `SCAN_SECTION=native` prints only that section.
 
@@ -25,6 +26,8 @@ use std::time::Instant;
 
 mod c_twins;
 mod debugger_cost;
+mod large_project;
+mod translation_time;
 mod workloads;
 
 use runtime::engine::EngineChoice;
@@ -80,6 +83,7 @@ fn main() {
     // `SCAN_SECTION=native` only compares the engines with the C twins.
     if std::env::var_os("SCAN_SECTION").is_some_and(|section| section == "native") {
         c_twins::report(&|f| median_ns(f));
+        translation_time::report();
         return;
     }
     println!(
@@ -140,6 +144,7 @@ fn main() {
     }
     debugger_cost::report(&|f| median_ns(f));
     c_twins::report(&|f| median_ns(f));
+    translation_time::report();
     if std::env::var_os("SCAN_DUMP").is_some() {
         for workload in workloads() {
             let image = compile(&workload);

@@ -251,7 +251,7 @@ pub fn report(median_ns: &dyn Fn(&mut dyn FnMut()) -> f64) {
 
 /// The size of the encoded image's code section payload (section 5, `docs/program-image.md`
 /// §3), the "bytecode" of `docs/native-engine.md` §9.2.
-fn code_section_bytes(image: &program_image::ProgramImage) -> Option<usize> {
+pub fn code_section_bytes(image: &program_image::ProgramImage) -> Option<usize> {
     const CODE_SECTION: u16 = 5;
     let bytes = image.encode();
     // The header: magic (8), version (2), flags (2), section count (4).
