@@ -11,7 +11,8 @@
 //! `RIVET_CC` must be installed), then the native engine's translation time on the 50,000-line
 //! project (`translation_time`, §9.3).
 //!
-//! `SCAN_SECTION=debugger` or `SCAN_SECTION=native` prints only that section.
+//! `SCAN_SECTION=debugger`, `SCAN_SECTION=native` or `SCAN_SECTION=translation` prints only
+//! that section.
 
 // A bench binary: it prints its table, and says on standard error why it stopped.
 #![allow(
@@ -78,6 +79,12 @@ fn main() {
     // to the engine's debug forms moves.
     if std::env::var_os("SCAN_SECTION").is_some_and(|section| section == "debugger") {
         debugger_cost::report(&|f| median_ns(f));
+        return;
+    }
+    // `SCAN_SECTION=translation` only times the native engine's translation of the
+    // 50,000-line project, the figure a change to the translator moves (and a profiler's run).
+    if std::env::var_os("SCAN_SECTION").is_some_and(|section| section == "translation") {
+        translation_time::report();
         return;
     }
     // `SCAN_SECTION=native` only compares the engines with the C twins.

@@ -176,9 +176,12 @@ pub(crate) struct Translator<'a, 'b> {
     /// The address of the preemption flag `due`, read from the context once on entry: the
     /// context does not change while the function runs, so a back-edge reads only the flag.
     due_pointer: Value,
-    /// The block every return goes through (its parameter is the status): the budget stored
-    /// and the function left in one place, so that the epilogue is emitted once.
-    exit: Option<Block>,
+    /// The blocks every return goes through, returning `Ok` and `Faulted`, so that the
+    /// epilogue is emitted twice per function rather than at every check. They take no
+    /// parameter (a status passed from thousands of call sites would cost the register
+    /// allocator far more than the two blocks), and the budget is in the context when they
+    /// are entered: stored by the return, or by the call whose failure it returns.
+    returns: [Option<Block>; 2],
     /// The block every fault goes through after its own write-back (its parameters are the
     /// instruction, the kind and the three details): one call of `rivet_jit_fault` per
     /// function rather than one per check.
@@ -247,7 +250,7 @@ impl<'a, 'b> Translator<'a, 'b> {
             memory,
             budget,
             due_pointer,
-            exit: None,
+            returns: [None; 2],
             fault_tail: None,
             pc: 0,
             back_edges: Vec::new(),
@@ -290,7 +293,7 @@ impl<'a, 'b> Translator<'a, 'b> {
             self.return_status(0);
         }
         self.emit_fault_tail();
-        self.emit_exit();
+        self.emit_returns();
     }
 
     /// Emits instruction `index`, starting its block if it starts one; `reachable` says
@@ -580,14 +583,15 @@ impl<'a, 'b> Translator<'a, 'b> {
         }
     }
 
-    /// Returns `Faulted` when `status` is not 0, else goes on in a new block.
+    /// Returns `Faulted` when `status` is not 0, else goes on in a new block. Called right
+    /// after a call (a callback or a POU function), after which the context holds the
+    /// budget, so the way out stores nothing: the budget does not flow into the shared exit
+    /// block, which keeps the register allocator's work small in functions with thousands of
+    /// calls.
     pub(crate) fn return_if_faulted(&mut self, status: Value) {
-        let exit = self.exit_block();
+        let exit = self.exit_block(1);
         let next = self.builder.create_block();
-        let faulted = self.builder.ins().iconst(types::I32, 1);
-        self.builder
-            .ins()
-            .brif(status, exit, &[BlockArg::Value(faulted)], next, &[]);
+        self.builder.ins().brif(status, exit, &[], next, &[]);
         self.builder.switch_to_block(next);
     }
 
@@ -618,21 +622,25 @@ impl<'a, 'b> Translator<'a, 'b> {
         self.builder.ins().jump(tail, &arguments);
     }
 
-    /// Returns `status` through the shared exit block.
-    pub(crate) fn return_status(&mut self, status: i64) {
-        let exit = self.exit_block();
-        let status = self.builder.ins().iconst(types::I32, status);
-        self.builder.ins().jump(exit, &[BlockArg::Value(status)]);
+    /// Stores the budget into the context and returns `status` (0 `Ok`, 1 `Faulted`) through
+    /// its shared exit block.
+    pub(crate) fn return_status(&mut self, status: usize) {
+        self.store_budget();
+        let exit = self.exit_block(status);
+        self.builder.ins().jump(exit, &[]);
     }
 
-    /// The shared exit block, made on first use.
-    fn exit_block(&mut self) -> Block {
-        if let Some(exit) = self.exit {
+    /// The shared exit block returning `status`, made on first use; the one of `Faulted` is
+    /// cold.
+    fn exit_block(&mut self, status: usize) -> Block {
+        if let Some(exit) = self.returns[status] {
             return exit;
         }
         let exit = self.builder.create_block();
-        self.builder.append_block_param(exit, types::I32);
-        self.exit = Some(exit);
+        if status != 0 {
+            self.builder.set_cold_block(exit);
+        }
+        self.returns[status] = Some(exit);
         exit
     }
 
@@ -663,23 +671,29 @@ impl<'a, 'b> Translator<'a, 'b> {
         let pou = self.builder.ins().iconst(types::I32, i64::from(self.pou));
         let mut arguments = vec![self.context, pou];
         arguments.extend(parameters);
+        // The callback takes the budget and gives it back in the context.
         self.call_host(Import::Fault, &arguments);
-        self.return_status(1);
+        let exit = self.exit_block(1);
+        self.builder.ins().jump(exit, &[]);
     }
 
-    /// Emits the shared exit block, if anything returns: the budget stored back into the
-    /// context, then the status returned.
-    fn emit_exit(&mut self) {
-        let Some(exit) = self.exit else {
-            return;
-        };
-        self.builder.switch_to_block(exit);
-        let status = self.builder.block_params(exit)[0];
+    /// Emits the shared exit blocks that something returns through.
+    fn emit_returns(&mut self) {
+        for (status, exit) in self.returns.into_iter().enumerate() {
+            if let Some(exit) = exit {
+                self.builder.switch_to_block(exit);
+                let status = self.builder.ins().iconst(types::I32, status as i64);
+                self.builder.ins().return_(&[status]);
+            }
+        }
+    }
+
+    /// Stores the budget variable into the context.
+    fn store_budget(&mut self) {
         let budget = self.builder.use_var(self.budget);
         self.builder
             .ins()
             .store(context_flags(), budget, self.context, context::BUDGET);
-        self.builder.ins().return_(&[status]);
     }
 
     fn reload_memory(&mut self) {
