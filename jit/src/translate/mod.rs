@@ -171,6 +171,10 @@ pub(crate) struct Translator<'a, 'b> {
     pub(crate) frame: Value,
     /// The memory's address, reloaded after every call.
     memory: Variable,
+    /// The machine addresses of the instance and of the frame (`memory` plus each),
+    /// redefined with `memory`: an element access reaches its element in one addressing
+    /// mode from them, and in a loop without calls the addition stays out of the loop.
+    bases: [Variable; 2],
     /// Backward jumps left before the watchdog looks at the clock.
     budget: Variable,
     /// The address of the preemption flag `due`, read from the context once on entry: the
@@ -227,6 +231,10 @@ impl<'a, 'b> Translator<'a, 'b> {
         let params = builder.block_params(entry).to_vec();
         let (context, instance, frame) = (params[0], params[1], params[2]);
         let memory = builder.declare_var(types::I64);
+        let bases = [
+            builder.declare_var(types::I64),
+            builder.declare_var(types::I64),
+        ];
         let budget = builder.declare_var(types::I32);
         let due_pointer = builder
             .ins()
@@ -248,6 +256,7 @@ impl<'a, 'b> Translator<'a, 'b> {
             instance,
             frame,
             memory,
+            bases,
             budget,
             due_pointer,
             returns: [None; 2],
@@ -702,6 +711,25 @@ impl<'a, 'b> Translator<'a, 'b> {
                 .ins()
                 .load(types::I64, context_flags(), self.context, context::MEMORY);
         self.builder.def_var(self.memory, memory);
+        for (variable, base) in self.bases.into_iter().zip([self.instance, self.frame]) {
+            let address = self.builder.ins().iadd(memory, base);
+            self.builder.def_var(variable, address);
+        }
+    }
+
+    /// The machine address and displacement of a direct operand, from the instance's or the
+    /// frame's machine address for their places: one register and a displacement.
+    pub(crate) fn based_operand_address(&mut self, operand: Operand) -> (Value, i32) {
+        let (variable, offset) = match operand {
+            Operand::Instance(offset) => (self.bases[0], offset),
+            Operand::Frame(offset) => (self.bases[1], offset),
+            fixed => return self.operand_address(fixed),
+        };
+        let address = self.builder.use_var(variable);
+        match i32::try_from(offset) {
+            Ok(displacement) => (address, displacement),
+            Err(_) => (self.builder.ins().iadd_imm_u(address, i64::from(offset)), 0),
+        }
     }
 
     /// The absolute offset of a direct operand in the engine's memory, as a value.

@@ -155,7 +155,7 @@ impl Translator<'_, '_> {
         offset: u32,
     ) -> (Value, i32) {
         let (scaled, bias) = self.checked_scaled_index(index, low, count, stride);
-        let (address, displacement) = self.operand_address(array);
+        let (address, displacement) = self.based_operand_address(array);
         let element = self.builder.ins().iadd(address, scaled);
         // The displacement, the member's offset and the bias, wrapping as the address does.
         let reach = i64::from(displacement)
