@@ -236,9 +236,12 @@ impl<'a, 'b> Translator<'a, 'b> {
             builder.declare_var(types::I64),
         ];
         let budget = builder.declare_var(types::I32);
+        // The field never changes while generated code runs, so the load may be moved and
+        // is removed where nothing uses it (a function without a backward jump).
+        let unchanging = context_flags().with_readonly().with_can_move();
         let due_pointer = builder
             .ins()
-            .load(types::I64, context_flags(), context, context::DUE);
+            .load(types::I64, unchanging, context, context::DUE);
         let mut translator = Self {
             builder,
             layout: environment.layout,
