@@ -177,9 +177,10 @@ pub(crate) struct Translator<'a, 'b> {
     bases: [Variable; 2],
     /// Backward jumps left before the watchdog looks at the clock.
     budget: Variable,
-    /// The address of the preemption flag `due`, read from the context once on entry: the
-    /// context does not change while the function runs, so a back-edge reads only the flag.
-    due_pointer: Value,
+    /// The address of the preemption flag `due`, read from the context once on entry when
+    /// the POU has a backward jump: the context does not change while the function runs, so
+    /// a back-edge reads only the flag.
+    due_pointer: Option<Value>,
     /// The blocks every return goes through, returning `Ok` and `Faulted`, so that the
     /// epilogue is emitted twice per function rather than at every check. They take no
     /// parameter (a status passed from thousands of call sites would cost the register
@@ -236,12 +237,16 @@ impl<'a, 'b> Translator<'a, 'b> {
             builder.declare_var(types::I64),
         ];
         let budget = builder.declare_var(types::I32);
-        // The field never changes while generated code runs, so the load may be moved and
-        // is removed where nothing uses it (a function without a backward jump).
-        let unchanging = context_flags().with_readonly().with_can_move();
-        let due_pointer = builder
-            .ins()
-            .load(types::I64, unchanging, context, context::DUE);
+        // Only where a back-edge reads it: a load the code generator keeps even unused, and
+        // one it may move (read-only) it copies to every back-edge of a large function.
+        let backward = pou.code.iter().enumerate().any(|(at, instr)| {
+            promote::jump_target(instr).is_some_and(|target| target as usize <= at)
+        });
+        let due_pointer = backward.then(|| {
+            builder
+                .ins()
+                .load(types::I64, context_flags(), context, context::DUE)
+        });
         let mut translator = Self {
             builder,
             layout: environment.layout,
@@ -572,11 +577,19 @@ impl<'a, 'b> Translator<'a, 'b> {
             let flag = self.builder.create_block();
             self.builder.ins().brif(budget, flag, &[], slow, &[]);
             self.builder.switch_to_block(flag);
+            let due_pointer = match self.due_pointer {
+                Some(loaded) => loaded,
+                None => {
+                    self.builder
+                        .ins()
+                        .load(types::I64, context_flags(), self.context, context::DUE)
+                }
+            };
             // An atomic load, so that the flag is read anew at every back-edge (§4.5).
             let due = self
                 .builder
                 .ins()
-                .atomic_load(types::I8, context_flags(), self.due_pointer);
+                .atomic_load(types::I8, context_flags(), due_pointer);
             self.builder.ins().brif(due, slow, &[], destination, &[]);
             self.builder.switch_to_block(slow);
             let pou = self.builder.ins().iconst(types::I32, i64::from(self.pou));
