@@ -696,7 +696,7 @@ impl Translator<'_, '_> {
     }
 
     /// A load from memory that bypasses promotion.
-    pub(crate) fn raw_load(&mut self, ty: Type, operand: Operand) -> Value {
+    fn raw_load(&mut self, ty: Type, operand: Operand) -> Value {
         let (address, displacement) = self.operand_address(operand);
         self.builder
             .ins()
