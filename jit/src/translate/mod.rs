@@ -187,10 +187,13 @@ pub(crate) struct Translator<'a, 'b> {
     /// allocator far more than the two blocks), and the budget is in the context when they
     /// are entered: stored by the return, or by the call whose failure it returns.
     returns: [Option<Block>; 2],
-    /// The block every fault goes through after its own write-back (its parameters are the
-    /// instruction, the kind and the three details): one call of `rivet_jit_fault` per
-    /// function rather than one per check.
-    fault_tail: Option<Block>,
+    /// The blocks every fault goes through after its own write-back, so that a function
+    /// makes one call of `rivet_jit_fault` per kind of tail rather than one per check: the
+    /// first takes the instruction and the kind packed in one parameter
+    /// ([`pack_site`]) and passes zeros as the details, the second takes the three details
+    /// too. Most checks (stack, memory, null pointers, divisions) have no details, and one
+    /// argument is one move at the check.
+    fault_tails: [Option<Block>; 2],
     /// The instruction being translated.
     pub(crate) pc: u32,
     /// Back-edge blocks of the current instruction, where each goes and its target
@@ -268,7 +271,7 @@ impl<'a, 'b> Translator<'a, 'b> {
             budget,
             due_pointer,
             returns: [None; 2],
-            fault_tail: None,
+            fault_tails: [None; 2],
             pc: 0,
             back_edges: Vec::new(),
             promoted_loops,
@@ -309,7 +312,7 @@ impl<'a, 'b> Translator<'a, 'b> {
             self.builder.switch_to_block(end);
             self.return_status(0);
         }
-        self.emit_fault_tail();
+        self.emit_fault_tails();
         self.emit_returns();
     }
 
@@ -636,14 +639,19 @@ impl<'a, 'b> Translator<'a, 'b> {
     /// written back here, then the shared tail with this site, the kind and the details.
     pub(crate) fn record_fault(&mut self, kind: u32, details: [Option<Value>; 3]) {
         self.write_back();
-        let pc = self.builder.ins().iconst(types::I32, i64::from(self.pc));
-        let kind = self.builder.ins().iconst(types::I32, i64::from(kind));
-        let mut arguments = vec![BlockArg::Value(pc), BlockArg::Value(kind)];
-        for detail in details {
-            let value = detail.unwrap_or_else(|| self.builder.ins().iconst(types::I64, 0));
-            arguments.push(BlockArg::Value(value));
+        let site = self
+            .builder
+            .ins()
+            .iconst(types::I64, pack_site(self.pc, kind));
+        let mut arguments = vec![BlockArg::Value(site)];
+        let detailed = details.iter().any(Option::is_some);
+        if detailed {
+            for detail in details {
+                let value = detail.unwrap_or_else(|| self.builder.ins().iconst(types::I64, 0));
+                arguments.push(BlockArg::Value(value));
+            }
         }
-        let tail = self.fault_tail_block();
+        let tail = self.fault_tail_block(usize::from(detailed));
         self.builder.ins().jump(tail, &arguments);
     }
 
@@ -669,37 +677,48 @@ impl<'a, 'b> Translator<'a, 'b> {
         exit
     }
 
-    /// The shared fault block, made on first use; cold.
-    fn fault_tail_block(&mut self) -> Block {
-        if let Some(tail) = self.fault_tail {
+    /// The shared fault block without details (`detailed` 0) or with them (1), made on first
+    /// use; cold.
+    fn fault_tail_block(&mut self, detailed: usize) -> Block {
+        if let Some(tail) = self.fault_tails[detailed] {
             return tail;
         }
         let tail = self.builder.create_block();
         self.builder.set_cold_block(tail);
-        for ty in [types::I32, types::I32, types::I64, types::I64, types::I64] {
-            self.builder.append_block_param(tail, ty);
+        let parameters = if detailed == 0 { 1 } else { 4 };
+        for _ in 0..parameters {
+            self.builder.append_block_param(tail, types::I64);
         }
-        self.fault_tail = Some(tail);
+        self.fault_tails[detailed] = Some(tail);
         tail
     }
 
-    /// Emits the shared fault block, if a fault uses it: `rivet_jit_fault` at the site its
-    /// parameters name, then `Faulted`. It runs after every promoted loop's write-back, so
-    /// it writes nothing back itself.
-    fn emit_fault_tail(&mut self) {
-        let Some(tail) = self.fault_tail else {
-            return;
-        };
-        debug_assert!(self.promoted.is_empty(), "the fault tail inside a loop");
-        self.builder.switch_to_block(tail);
-        let parameters = self.builder.block_params(tail).to_vec();
-        let pou = self.builder.ins().iconst(types::I32, i64::from(self.pou));
-        let mut arguments = vec![self.context, pou];
-        arguments.extend(parameters);
-        // The callback takes the budget and gives it back in the context.
-        self.call_host(Import::Fault, &arguments);
-        let exit = self.exit_block(1);
-        self.builder.ins().jump(exit, &[]);
+    /// Emits the shared fault blocks that faults use: `rivet_jit_fault` at the site their
+    /// parameters name, then `Faulted`. They run after every promoted loop's write-back, so
+    /// they write nothing back themselves.
+    fn emit_fault_tails(&mut self) {
+        debug_assert!(self.promoted.is_empty(), "a fault tail inside a loop");
+        for tail in self.fault_tails.into_iter().flatten() {
+            self.builder.switch_to_block(tail);
+            let parameters = self.builder.block_params(tail).to_vec();
+            let pou = self.builder.ins().iconst(types::I32, i64::from(self.pou));
+            let pc = self.builder.ins().ushr_imm_u(parameters[0], 8);
+            let pc = self.builder.ins().ireduce(types::I32, pc);
+            let kind = self.builder.ins().band_imm_u(parameters[0], 0xFF);
+            let kind = self.builder.ins().ireduce(types::I32, kind);
+            let mut arguments = vec![self.context, pou, pc, kind];
+            match parameters[1..] {
+                [a, b, c] => arguments.extend([a, b, c]),
+                _ => {
+                    let zero = self.builder.ins().iconst(types::I64, 0);
+                    arguments.extend([zero, zero, zero]);
+                }
+            }
+            // The callback takes the budget and gives it back in the context.
+            self.call_host(Import::Fault, &arguments);
+            let exit = self.exit_block(1);
+            self.builder.ins().jump(exit, &[]);
+        }
     }
 
     /// Emits the shared exit blocks that something returns through.
@@ -816,6 +835,12 @@ impl<'a, 'b> Translator<'a, 'b> {
             .ins()
             .store(memory_flags(), value, address, displacement);
     }
+}
+
+/// An instruction index and a fault kind (below 256, `fault_kind`) as the one parameter of
+/// a shared fault block: the index in the upper bits, the kind in the lowest byte.
+fn pack_site(pc: u32, kind: u32) -> i64 {
+    (i64::from(pc) << 8) | i64::from(kind & 0xFF)
 }
 
 /// The integer IR type of an elementary type's size (reals too: moves are bit copies).
