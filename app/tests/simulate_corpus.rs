@@ -1,5 +1,7 @@
 //! The ironplc execution cases (`../shared/corpora/ironplc/extracted/e2e_cases.json`) run
-//! through `rivet simulate --json` and compared with their expected values.
+//! through `rivet simulate --json` and compared with their expected values, and each case that
+//! compiles also run in-process under both engines and compared after every cycle
+//! (`runtime::differential::run_both`, `docs/native-engine.md` §11.1).
 
 use std::path::PathBuf;
 use std::process::Command;
@@ -76,6 +78,23 @@ fn number(value: &Value) -> Option<f64> {
     }
 }
 
+/// Compiles `source` in-process as `rivet simulate` does with a `.st` file and runs it for
+/// `cycles` cycles under the interpreter and the native engine, compared after the load and
+/// after every cycle. `None` when the source does not compile: there is nothing to run, and
+/// the checks of the command's output judge the case.
+fn compare_engines(source: &str, id: &str, cycles: u64) -> Option<Result<(), String>> {
+    let project = compiler::SourceProject::new(source);
+    if !project.parse.errors().is_empty() {
+        return None;
+    }
+    let image = compiler::compile_source(&project, &format!("{id}.st")).ok()?;
+    Some(
+        runtime::differential::run_both(image, cycles, |_, _| {})
+            .map(|_| ())
+            .map_err(|difference| format!("the engines differ: {difference}")),
+    )
+}
+
 #[test]
 fn every_ironplc_execution_case_matches_or_is_a_documented_difference() {
     let text = std::fs::read_to_string(corpus()).expect("the ironplc corpus is beside the project");
@@ -84,6 +103,8 @@ fn every_ironplc_execution_case_matches_or_is_a_documented_difference() {
     let dir = tempfile::tempdir().unwrap();
     let mut failures = Vec::new();
     let mut matched = 0;
+    // Cases run in-process under both engines and compared cycle by cycle.
+    let mut compared = 0;
     for case in &cases {
         let id = case["id"].as_str().unwrap();
         let source = case["source"].as_str().unwrap();
@@ -126,6 +147,11 @@ fn every_ironplc_execution_case_matches_or_is_a_documented_difference() {
                 String::from_utf8_lossy(&output.stdout),
                 output.status.code()
             ));
+        }
+        match compare_engines(source, id, case["scans"].as_u64().unwrap()) {
+            Some(Ok(())) => compared += 1,
+            Some(Err(difference)) => failures.push(format!("{id}: {difference}")),
+            None => {}
         }
         let deliberate = DELIBERATE
             .iter()
@@ -190,4 +216,10 @@ fn every_ironplc_execution_case_matches_or_is_a_documented_difference() {
         failures.join("\n")
     );
     assert_eq!(matched + DELIBERATE.len(), cases.len());
+    // Every case that runs (all but those refused) went through the differential harness.
+    let refused = DELIBERATE
+        .iter()
+        .filter(|(_, difference, _)| matches!(difference, Difference::Refused(_)))
+        .count();
+    assert_eq!(compared + refused, cases.len());
 }

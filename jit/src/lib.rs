@@ -185,6 +185,14 @@ pub trait Host {
     fn op(&mut self, site: Site, instance: u64, frame: u64, counters: &mut Counters) -> Status;
     /// Records a fault generated code found at `site`.
     fn fault(&mut self, site: Site, fault: NativeFault);
+    /// Records that a callback at `site` panicked with `message` (the panic's text, or a
+    /// note that it had none), caught in its shim (`docs/native-engine.md` §4.3). The default
+    /// records [`NativeFault::HostPanicked`] through [`Host::fault`], without the message; a
+    /// host that shows faults to a user keeps the message, which says what went wrong.
+    fn host_panicked(&mut self, site: Site, message: &str) {
+        let _ = message;
+        self.fault(site, NativeFault::HostPanicked);
+    }
     /// Copies `bytes` bytes from offset `from` to offset `to` as `memmove` does; `Faulted`
     /// (without recording anything) when either range is outside the memory.
     fn copy(&mut self, to: u64, from: u64, bytes: u64) -> Status;

@@ -113,7 +113,7 @@ impl MachineCode {
     ) -> Status {
         let mut cell = HostCell {
             host,
-            panicked: false,
+            panicked: None,
         };
         // The one borrow of the memory the entry's checks and the generated code share; it
         // is taken through the cell, whose address the context keeps, so the shims' later
@@ -274,16 +274,17 @@ struct Checked {
 struct HostCell<'h> {
     /// The host.
     host: &'h mut dyn Host,
-    /// Set when `rivet_jit_copy`'s callback panicked.
-    panicked: bool,
+    /// The panic's message when `rivet_jit_copy`'s callback panicked, until the fault
+    /// generated code then records takes it.
+    panicked: Option<String>,
 }
 
 /// Runs one callback with the host and the counters of the context, then refreshes the
 /// memory's address from the host (rule 3). Returns `Faulted` (after recording `Memory` at
 /// `site`, when there is one) if the host's memory became shorter than the code may address.
-/// A panic in the host is caught here, never unwound into generated code: it is recorded as
-/// [`NativeFault::HostPanicked`] at `site` (or marked in the cell for the fault generated code
-/// records next) and the callback is `Faulted`.
+/// A panic in the host is caught here, never unwound into generated code: it is recorded with
+/// its message through [`Host::host_panicked`] at `site` (or its message kept in the cell for
+/// the fault generated code records next) and the callback is `Faulted`.
 ///
 /// # Safety
 ///
@@ -312,14 +313,18 @@ unsafe fn with_host(
     }));
     context.depth = counters.depth;
     context.budget = counters.budget;
-    let Ok((mut status, memory_address, memory_len)) = outcome else {
-        // The memory's address is not refreshed: generated code returns at once and reads no
-        // memory on its way out.
-        match site {
-            Some(site) => record(host, site, NativeFault::HostPanicked),
-            None => cell.panicked = true,
+    let (mut status, memory_address, memory_len) = match outcome {
+        Ok(outcome) => outcome,
+        Err(payload) => {
+            // The memory's address is not refreshed: generated code returns at once and
+            // reads no memory on its way out.
+            let message = panic_message(payload);
+            match site {
+                Some(site) => record_panic(host, site, &message),
+                None => cell.panicked = Some(message),
+            }
+            return Status::Faulted as u32;
         }
-        return Status::Faulted as u32;
     };
     context.memory = memory_address;
     if memory_len < context.memory_len {
@@ -336,6 +341,29 @@ unsafe fn with_host(
 /// `Faulted` anyway, and no panic may cross into generated code).
 fn record(host: &mut dyn Host, site: Site, fault: NativeFault) {
     let _ = catch_unwind(AssertUnwindSafe(|| host.fault(site, fault)));
+}
+
+/// Records at `site` that a callback panicked with `message`, swallowing a panic of the host's
+/// own as [`record`] does.
+fn record_panic(host: &mut dyn Host, site: Site, message: &str) {
+    let _ = catch_unwind(AssertUnwindSafe(|| host.host_panicked(site, message)));
+}
+
+/// The text of a caught panic (`panic!` with a literal or a formatted message), or a note that
+/// it had none. The payload is dropped under `catch_unwind` too: a payload whose `Drop` panics
+/// must not unwind into generated code either, and is leaked instead.
+fn panic_message(payload: Box<dyn std::any::Any + Send>) -> String {
+    let message = if let Some(text) = payload.downcast_ref::<&str>() {
+        (*text).to_owned()
+    } else if let Some(text) = payload.downcast_ref::<String>() {
+        text.clone()
+    } else {
+        "a panic without a message".to_owned()
+    };
+    if let Err(again) = catch_unwind(AssertUnwindSafe(|| drop(payload))) {
+        std::mem::forget(again);
+    }
+    message
 }
 
 /// `rivet_jit_tick` (§4.3).
@@ -398,8 +426,8 @@ unsafe extern "C" fn rivet_jit_op(
     }
 }
 
-/// `rivet_jit_fault` (§4.3, §4.7): a fault found by generated code, or
-/// [`NativeFault::HostPanicked`] when the callback it follows panicked.
+/// `rivet_jit_fault` (§4.3, §4.7): a fault found by generated code, or, when the callback it
+/// follows panicked, that panic with its message ([`Host::host_panicked`]).
 ///
 /// # Safety
 ///
@@ -417,17 +445,16 @@ unsafe extern "C" fn rivet_jit_fault(
         pou,
         instruction: pc,
     };
-    // SAFETY: as in `with_host`: `context` is `run`'s, and its `host` field `run`'s cell.
-    let panicked = unsafe { (*(*context).host.cast::<HostCell<'_>>()).panicked };
-    let fault = if panicked {
-        NativeFault::HostPanicked
-    } else {
-        NativeFault::from_code(kind, a, b, c)
-    };
+    // SAFETY: as in `with_host`: `context` is `run`'s, and its `host` field `run`'s cell;
+    // the reference ends with this statement, before `with_host` takes the cell again.
+    let panicked = unsafe { (*(*context).host.cast::<HostCell<'_>>()).panicked.take() };
     // SAFETY: this function's own precondition is `with_host`'s.
     unsafe {
         with_host(context, None, |host, _| {
-            host.fault(site, fault);
+            match &panicked {
+                Some(message) => host.host_panicked(site, message),
+                None => host.fault(site, NativeFault::from_code(kind, a, b, c)),
+            }
             Status::Faulted
         })
     };

@@ -16,6 +16,7 @@ use crate::isa::{NativeUnsupported, host_isa};
 use crate::layout::Layout;
 use crate::machine::{self, CountingMemory, MachineCode};
 use crate::translate::host_calls::{Imports, PureFunctions, libcall_name, libcall_symbols};
+use crate::translate::stub::{StubKind, StubTarget, stub_signature, stubs_needed, translate_stub};
 use crate::translate::{Environment, pou_signature, translate_pou};
 use crate::{Counters, Entry, Host, Status};
 
@@ -74,6 +75,7 @@ impl Translation {
             }
         };
         let signature = pou_signature(module.make_signature());
+        let stub_signature = stub_signature(module.make_signature());
         // Every POU's function is declared before any is translated, so that a call can name
         // its callee's function (§4.4); a POU whose function cannot be declared runs in the
         // interpreter, and its callers hand their calls of it to the interpreter.
@@ -94,6 +96,34 @@ impl Translation {
                 }
             }
         }
+        // The entry stubs some call needs (§4.4), declared beside their callees; a callee
+        // without a function has none.
+        let needed = stubs_needed(&image.pous);
+        let mut stubs: Vec<[Option<FuncId>; 2]> = Vec::with_capacity(image.pous.len());
+        for (index, kinds) in needed.iter().enumerate() {
+            let mut ids = [None; 2];
+            for kind in [StubKind::Enter, StubKind::Prepare] {
+                if !kinds[kind as usize] || functions[index].is_none() {
+                    continue;
+                }
+                match module.declare_function(&kind.name(index), Linkage::Local, &stub_signature) {
+                    Ok(id) => ids[kind as usize] = Some(id),
+                    Err(error) => {
+                        // The callee's calls then cannot be made by generated code at all.
+                        untranslated.push(Untranslated {
+                            pou: index as u32,
+                            name: image.pous[index].name.clone(),
+                            instruction: None,
+                            reason: error.to_string(),
+                        });
+                        functions[index] = None;
+                        ids = [None; 2];
+                        break;
+                    }
+                }
+            }
+            stubs.push(ids);
+        }
         let folded_constants = crate::translate::scalar::constant_pool_is_read_only(image)
             .then_some(image.constants.as_slice());
         let mut function_context = FunctionBuilderContext::new();
@@ -108,6 +138,8 @@ impl Translation {
             .map(|pou| called_pous(&pou.code))
             .collect();
         let mut compiled: Vec<Option<Compiled>> = image.pous.iter().map(|_| None).collect();
+        let mut compiled_stubs: Vec<[Option<Compiled>; 2]> =
+            image.pous.iter().map(|_| [None, None]).collect();
         let mut pending = vec![true; image.pous.len()];
         loop {
             let environment = Environment {
@@ -117,6 +149,7 @@ impl Translation {
                 folded_constants,
                 signature: signature.clone(),
                 functions: &functions,
+                stubs: &stubs,
             };
             let mut refused_now = Vec::new();
             for (index, pou) in image.pous.iter().enumerate() {
@@ -140,12 +173,39 @@ impl Translation {
                 let result = std::panic::catch_unwind(AssertUnwindSafe(|| {
                     let function =
                         translate_pou(&environment, index, &mut function_context, &mut module)?;
-                    compile(&mut codegen, function, id, module.isa())
-                        .map_err(|reason| refused(reason.0))
+                    let body = compile(&mut codegen, function, id, module.isa())
+                        .map_err(|reason| refused(reason.0));
+                    module.clear_context(&mut codegen);
+                    let body = body?;
+                    // The callee's stubs are its own: one that cannot be made leaves the
+                    // callee to the interpreter, with its callers' calls.
+                    let target = StubTarget {
+                        pou,
+                        index,
+                        function: id,
+                        imports: &imports,
+                        signature: stub_signature.clone(),
+                    };
+                    let mut made = [None, None];
+                    for kind in [StubKind::Enter, StubKind::Prepare] {
+                        let Some(stub_id) = stubs[at][kind as usize] else {
+                            continue;
+                        };
+                        let stub =
+                            translate_stub(&target, kind, &mut function_context, &mut module);
+                        let stub = compile(&mut codegen, stub, stub_id, module.isa())
+                            .map_err(|reason| refused(reason.0));
+                        module.clear_context(&mut codegen);
+                        made[kind as usize] = Some(stub?);
+                    }
+                    Ok((body, made))
                 }));
                 module.clear_context(&mut codegen);
                 compiled[at] = match result {
-                    Ok(Ok(function)) => Some(function),
+                    Ok(Ok((function, made))) => {
+                        compiled_stubs[at] = made;
+                        Some(function)
+                    }
                     Ok(Err(refusal)) => {
                         refused_now.push(refusal);
                         None
@@ -168,6 +228,8 @@ impl Translation {
             let newly_refused: Vec<u32> = refused_now.iter().map(|refusal| refusal.pou).collect();
             for refusal in refused_now {
                 functions[refusal.pou as usize] = None;
+                stubs[refusal.pou as usize] = [None; 2];
+                compiled_stubs[refusal.pou as usize] = [None, None];
                 untranslated.push(refusal);
             }
             // The code of a POU that calls none of the newly refused ones names only
@@ -180,7 +242,13 @@ impl Translation {
         let mut defined = Vec::with_capacity(image.pous.len());
         #[cfg(test)]
         let mut listings = Vec::new();
-        for (index, (pou, function)) in image.pous.iter().zip(compiled).enumerate() {
+        for (index, ((pou, function), made)) in image
+            .pous
+            .iter()
+            .zip(compiled)
+            .zip(compiled_stubs)
+            .enumerate()
+        {
             let (Some(function), Some(id)) = (function, functions[index]) else {
                 #[cfg(test)]
                 listings.push(String::new());
@@ -188,15 +256,28 @@ impl Translation {
                 continue;
             };
             #[cfg(test)]
-            listings.push(function.listing);
-            match module.define_function_bytes(
-                id,
-                function.alignment,
-                &function.bytes,
-                &function.relocations,
-            ) {
-                Ok(()) => defined.push(Some(id)),
-                Err(error) => {
+            listings.push(function.listing.clone());
+            // The stubs first, then the function: a POU counts as defined with all of them.
+            let pieces = [StubKind::Enter, StubKind::Prepare]
+                .into_iter()
+                .zip(made)
+                .filter_map(|(kind, stub)| Some((stubs[index][kind as usize]?, stub?)))
+                .chain([(id, function)]);
+            let mut failure = None;
+            for (piece_id, piece) in pieces {
+                if let Err(error) = module.define_function_bytes(
+                    piece_id,
+                    piece.alignment,
+                    &piece.bytes,
+                    &piece.relocations,
+                ) {
+                    failure = Some(error.to_string());
+                    break;
+                }
+            }
+            match failure {
+                None => defined.push(Some(id)),
+                Some(error) => {
                     // Only a module error (no memory for the code) can fail here; a caller of
                     // this POU then names a function that is not defined, finalising asks
                     // the symbol lookup for it, and the whole image is refused.
@@ -204,7 +285,7 @@ impl Translation {
                         pou: index as u32,
                         name: pou.name.clone(),
                         instruction: None,
-                        reason: error.to_string(),
+                        reason: error,
                     });
                     defined.push(None);
                 }

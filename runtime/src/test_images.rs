@@ -23,7 +23,7 @@ pub(crate) fn slot(task: usize) -> u32 {
 }
 
 /// The offset of task `task`'s cycle count.
-pub(crate) fn count(task: usize) -> u32 {
+pub(crate) const fn count(task: usize) -> u32 {
     8 * task as u32 + 8
 }
 
@@ -49,20 +49,26 @@ pub(crate) enum Body {
     /// own cycles; it leaves the sequence counter alone. With `sets_trigger`, it sets the
     /// event trigger `%MX4.0` (by writing 1 to `%MD1`) instead of the first note.
     Watch { iterations: i32, sets_trigger: bool },
+    /// Notes task `task`'s cycle count (at [`count`]) at [`seen_at_start`], loops until it
+    /// has moved on by `cycles` (the difference in [`watch_counter`]), notes it again at
+    /// [`seen_at_end`], and counts its own cycles: a cycle that ends only after `cycles` cycles
+    /// of task `task` ran after it started, which they can only do nested in it, so a test of
+    /// preemption needs no loop sized to this machine's speed.
+    WaitFor { task: usize, cycles: i32 },
 }
 
 /// Where watching task `task` notes the sequence counter before its loop.
-pub(crate) fn seen_at_start(task: usize) -> u32 {
+pub(crate) const fn seen_at_start(task: usize) -> u32 {
     WATCH_SLOTS + 16 * task as u32
 }
 
 /// Where watching task `task` notes the sequence counter after its loop.
-pub(crate) fn seen_at_end(task: usize) -> u32 {
+pub(crate) const fn seen_at_end(task: usize) -> u32 {
     seen_at_start(task) + 4
 }
 
 /// The loop counter of watching task `task`.
-pub(crate) fn watch_counter(task: usize) -> u32 {
+pub(crate) const fn watch_counter(task: usize) -> u32 {
     seen_at_start(task) + 8
 }
 
@@ -106,6 +112,7 @@ pub(crate) fn image(tasks: &[TestTask], retained: &[(u32, u32)]) -> ProgramImage
         .iter()
         .map(|task| match task.body {
             Body::Watch { iterations, .. } => iterations,
+            Body::WaitFor { cycles, .. } => cycles,
             Body::Count | Body::Slow => 0,
         })
         .collect();
@@ -200,6 +207,44 @@ pub(crate) fn image(tasks: &[TestTask], retained: &[(u32, u32)]) -> ProgramImage
                         Instr::Return,
                     ]
                 }
+                Body::WaitFor { task, .. } => {
+                    let counted = Operand::Global(count(task));
+                    let noted = Operand::Global(seen_at_start(index));
+                    let moved = Operand::Global(watch_counter(index));
+                    let done = Operand::Global(watch_counter(index) + 4);
+                    vec![
+                        Instr::Move {
+                            ty: Elementary::Dint,
+                            dst: noted,
+                            src: counted,
+                        },
+                        Instr::Binary {
+                            op: BinaryOp::Sub,
+                            ty: Elementary::Dint,
+                            dst: moved,
+                            a: counted,
+                            b: noted,
+                        },
+                        Instr::Compare {
+                            op: CompareOp::Ge,
+                            ty: Elementary::Dint,
+                            dst: done,
+                            a: moved,
+                            b: Operand::Const(8 + 4 * index as u32),
+                        },
+                        Instr::JumpIfNot {
+                            cond: done,
+                            target: 1,
+                        },
+                        Instr::Move {
+                            ty: Elementary::Dint,
+                            dst: Operand::Global(seen_at_end(index)),
+                            src: counted,
+                        },
+                        add_one(Operand::Global(count(index)), one),
+                        Instr::Return,
+                    ]
+                }
             };
             Pou {
                 name: format!("Program{index}"),
@@ -247,7 +292,7 @@ pub(crate) fn image(tasks: &[TestTask], retained: &[(u32, u32)]) -> ProgramImage
             flags: SymbolFlags(SymbolFlags::LOCATED | SymbolFlags::GLOBAL),
         }],
         pous,
-        // 1, 0, then the iterations of each watching task.
+        // 1, 0, then the iterations (or cycles waited for) of each watching task.
         constants: [1_i32, 0]
             .into_iter()
             .chain(iterations)

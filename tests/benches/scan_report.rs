@@ -8,8 +8,9 @@
 //! interpreter's ratio to Rust. The fixed cost of a cycle (the empty program) is shown on its own line and
 //! not subtracted. Then what the debugger costs a call-heavy cycle (`debugger_cost`), then the
 //! engines against the workloads' C twins (`c_twins`, `docs/native-engine.md` §11.3; gcc or
-//! `RIVET_CC` must be installed), then the native engine's translation time on the 50,000-line
-//! project (`translation_time`, §9.3).
+//! `RIVET_CC` must be installed), then the native engine on whole projects, the example project
+//! and the generated 50,000-line project: their bytecode, machine code and translation time
+//! (`native_images`, §9.2, §9.3).
 //!
 //! `SCAN_SECTION=debugger`, `SCAN_SECTION=native` or `SCAN_SECTION=translation` prints only
 //! that section.
@@ -28,7 +29,7 @@ use std::time::Instant;
 mod c_twins;
 mod debugger_cost;
 mod large_project;
-mod translation_time;
+mod native_images;
 mod workloads;
 
 use runtime::engine::EngineChoice;
@@ -81,16 +82,16 @@ fn main() {
         debugger_cost::report(&|f| median_ns(f));
         return;
     }
-    // `SCAN_SECTION=translation` only times the native engine's translation of the
-    // 50,000-line project, the figure a change to the translator moves (and a profiler's run).
+    // `SCAN_SECTION=translation` only loads the whole projects natively, the figures a change
+    // to the translator moves (and a profiler's run).
     if std::env::var_os("SCAN_SECTION").is_some_and(|section| section == "translation") {
-        translation_time::report();
+        native_images::report();
         return;
     }
     // `SCAN_SECTION=native` only compares the engines with the C twins.
     if std::env::var_os("SCAN_SECTION").is_some_and(|section| section == "native") {
         c_twins::report(&|f| median_ns(f));
-        translation_time::report();
+        native_images::report();
         return;
     }
     println!(
@@ -151,7 +152,7 @@ fn main() {
     }
     debugger_cost::report(&|f| median_ns(f));
     c_twins::report(&|f| median_ns(f));
-    translation_time::report();
+    native_images::report();
     if std::env::var_os("SCAN_DUMP").is_some() {
         for workload in workloads() {
             let image = compile(&workload);

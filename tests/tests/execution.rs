@@ -37,6 +37,9 @@ mod standard_library;
 /// Every fault of the native engine's checks, under both engines, with its task and line.
 mod native_faults;
 
+/// Random well-typed programs run under both engines and compared cycle by cycle.
+mod native_differential;
+
 use program_image::ProgramImage;
 use runtime::simulation::Simulation;
 

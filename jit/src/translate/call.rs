@@ -1,6 +1,7 @@
 //! Calls out of generated code (`docs/native-engine.md` §4.3, §4.4): a call of a POU with a
-//! function is made inline, in the interpreter's order (`Exec::call_block`, `call_frame`,
-//! `push_frame`); every other call instruction is handed to the interpreter through
+//! function is made through the callee's entry stub (`stub.rs`), in the interpreter's order
+//! (`Exec::call_block`, `call_frame`, `push_frame`); every other call instruction is handed
+//! to the interpreter through
 //! `rivet_jit_op`, which runs the whole call (and may enter generated code again for a callee
 //! further down).
 
@@ -9,12 +10,22 @@ use cranelift_codegen::ir::{FuncRef, InstBuilder, Value, types};
 use program_image::{Operand, Transfer};
 
 use super::host_calls::Import;
-use super::{Translator, context, context_flags, memory_flags};
-use crate::{MAX_CALL_DEPTH, fault_kind};
+use super::stub::{StubKind, count_down};
+use super::{Translator, context, context_flags};
+use crate::fault_kind;
 
-/// The largest frame prepared by inline stores; a larger one is prepared by `rivet_jit_frame`
-/// (§4.4 step 5), so that a call does not grow the code by more than a few stores.
-const INLINE_FRAME_BYTES: u32 = 64;
+/// What a call of a POU with a function names (§4.4).
+#[derive(Clone, Copy, Debug)]
+struct CalleeRefs {
+    /// The callee's index.
+    callee: u32,
+    /// The callee's function, which the call site calls itself after `prepare_N`.
+    body: FuncRef,
+    /// The callee's stub of the call's form.
+    stub: FuncRef,
+    /// Which form.
+    kind: StubKind,
+}
 
 /// Where a called POU's instance comes from (§4.4 step 1).
 #[derive(Clone, Copy, Debug)]
@@ -50,16 +61,22 @@ impl Translator<'_, '_> {
         inputs: &[Transfer],
         outputs: &[Transfer],
     ) -> bool {
-        let Some(function) = self.pou_function(callee) else {
+        let Some(refs) = self.callee_refs(callee, !inputs.is_empty()) else {
             return false;
         };
         let instance_size = self.pous[callee as usize].instance_size;
         let this = match instance {
-            CallInstance::Caller => self.instance,
+            CallInstance::Caller => {
+                // §4.4 step 2: the caller's instance was checked for the caller's size only.
+                if instance_size > self.pous[self.pou as usize].instance_size {
+                    self.check_instance(self.instance, instance_size);
+                }
+                self.instance
+            }
             CallInstance::Direct(place) => self.absolute(place),
             CallInstance::Pointer(pointer) => self.resolve(pointer, instance_size),
         };
-        self.call_frame(callee, function, this, inputs, outputs);
+        self.call_frame(refs, this, inputs, outputs);
         true
     }
 
@@ -75,10 +92,10 @@ impl Translator<'_, '_> {
         inputs: &[Transfer],
         outputs: &[Transfer],
     ) -> bool {
-        let mut functions = Vec::with_capacity(table.len());
+        let mut callees = Vec::with_capacity(table.len());
         for (_, method) in table {
-            match self.pou_function(*method) {
-                Some(function) => functions.push(function),
+            match self.callee_refs(*method, !inputs.is_empty()) {
+                Some(refs) => callees.push(refs),
                 None => return false,
             }
         }
@@ -86,7 +103,7 @@ impl Translator<'_, '_> {
         let class = self.load(types::I32, displaced(interface, 8));
         self.resolve(interface, 0);
         let merge = self.builder.create_block();
-        for ((known, method), function) in table.iter().zip(functions) {
+        for ((known, method), refs) in table.iter().zip(callees) {
             let matches = self
                 .builder
                 .ins()
@@ -97,13 +114,36 @@ impl Translator<'_, '_> {
             self.builder.switch_to_block(call);
             let instance_size = self.pous[*method as usize].instance_size;
             let this = self.resolve(interface, instance_size);
-            self.call_frame(*method, function, this, inputs, outputs);
+            self.call_frame(refs, this, inputs, outputs);
             self.builder.ins().jump(merge, &[]);
             self.builder.switch_to_block(next);
         }
         self.record_fault(fault_kind::BAD_POINTER, [Some(pointer), None, None]);
         self.builder.switch_to_block(merge);
         true
+    }
+
+    /// The references a call of POU `callee` needs in this function (its function and the
+    /// stub of the call's form), when the callee has a function.
+    fn callee_refs(&mut self, callee: u32, has_inputs: bool) -> Option<CalleeRefs> {
+        let kind = StubKind::for_call(has_inputs);
+        let body = self.pou_function(callee)?;
+        let at = callee as usize;
+        let stub = match self.stub_refs.get(at).and_then(|refs| refs[kind as usize]) {
+            Some(known) => known,
+            None => {
+                let id = self.stubs.get(at)?[kind as usize]?;
+                let reference = self.module.declare_func_in_func(id, self.builder.func);
+                self.stub_refs[at][kind as usize] = Some(reference);
+                reference
+            }
+        };
+        Some(CalleeRefs {
+            callee,
+            body,
+            stub,
+            kind,
+        })
     }
 
     /// The reference to POU `callee`'s function in this function, when it has one.
@@ -117,12 +157,29 @@ impl Translator<'_, '_> {
         Some(reference)
     }
 
-    /// Steps 2 to 8 of §4.4: the safe point, the frame's checks and preparation, the input
-    /// transfers, the call counted in `depth`, and the output transfers when it did not fault.
+    /// `Memory` at the call site when `instance + size` lies past the memory (§4.4 step 2,
+    /// §7 rule 2).
+    fn check_instance(&mut self, instance: Value, size: u32) {
+        let memory_len = self.builder.ins().load(
+            types::I64,
+            context_flags(),
+            self.context,
+            context::MEMORY_LEN,
+        );
+        let end = self.builder.ins().iadd_imm_u(instance, i64::from(size));
+        let outside = self
+            .builder
+            .ins()
+            .icmp(IntCC::UnsignedGreaterThan, end, memory_len);
+        self.fault_if(outside, fault_kind::MEMORY, [None; 3]);
+    }
+
+    /// The call site's part of §4.4 (steps 2, 3, 9 and 10): the callee's frame, its stub
+    /// called with this site, then for `prepare_N` the input transfers, the body and the
+    /// depth counted down; the output transfers when it did not fault.
     fn call_frame(
         &mut self,
-        callee: u32,
-        function: FuncRef,
+        refs: CalleeRefs,
         this: Value,
         inputs: &[Transfer],
         outputs: &[Transfer],
@@ -135,86 +192,35 @@ impl Translator<'_, '_> {
             self.pou,
             self.pc
         );
-        let pous = self.pous;
-        let called = &pous[callee as usize];
-        let caller_frame_size = pous[self.pou as usize].frame_size;
-        self.preempt_if_due();
+        let caller_frame_size = self.pous[self.pou as usize].frame_size;
         // During a POU's body the interpreter's `sp` is its frame's end, where the callee's
         // frame starts.
         let callee_frame = self
             .builder
             .ins()
             .iadd_imm_u(self.frame, i64::from(caller_frame_size));
-        let frame_end = self
-            .builder
-            .ins()
-            .iadd_imm_u(callee_frame, i64::from(called.frame_size));
-        let stack_end = self.builder.ins().load(
-            types::I64,
-            context_flags(),
-            self.context,
-            context::STACK_END,
-        );
-        let past_stack = self
-            .builder
-            .ins()
-            .icmp(IntCC::UnsignedGreaterThan, frame_end, stack_end);
-        let depth =
-            self.builder
-                .ins()
-                .load(types::I32, context_flags(), self.context, context::DEPTH);
-        let too_deep = self.builder.ins().icmp_imm_u(
-            IntCC::UnsignedGreaterThanOrEqual,
-            depth,
-            i64::from(MAX_CALL_DEPTH),
-        );
-        // The machine's own stack: the bound the interpreter measures against (§4.4).
-        let stack_pointer = self.builder.ins().get_stack_pointer(types::I64);
-        let native_limit = self.builder.ins().load(
-            types::I64,
-            context_flags(),
-            self.context,
-            context::NATIVE_STACK_LIMIT,
-        );
-        let native_low =
-            self.builder
-                .ins()
-                .icmp(IntCC::UnsignedLessThan, stack_pointer, native_limit);
-        let overflow = self.builder.ins().bor(past_stack, too_deep);
-        let overflow = self.builder.ins().bor(overflow, native_low);
-        self.fault_if(overflow, fault_kind::STACK_OVERFLOW, [None; 3]);
-        // §7 rule 2: one check of the callee's bases covers every direct access of its body.
-        let memory_len = self.builder.ins().load(
-            types::I64,
-            context_flags(),
-            self.context,
-            context::MEMORY_LEN,
-        );
-        let instance_end = self
-            .builder
-            .ins()
-            .iadd_imm_u(this, i64::from(called.instance_size));
-        let instance_outside =
-            self.builder
-                .ins()
-                .icmp(IntCC::UnsignedGreaterThan, instance_end, memory_len);
-        let frame_outside =
-            self.builder
-                .ins()
-                .icmp(IntCC::UnsignedGreaterThan, frame_end, memory_len);
-        let outside = self.builder.ins().bor(instance_outside, frame_outside);
-        self.fault_if(outside, fault_kind::MEMORY, [None; 3]);
-        self.prepare_frame(callee, callee_frame);
-        for transfer in inputs {
-            let to = self
-                .builder
-                .ins()
-                .iadd_imm_u(callee_frame, i64::from(transfer.callee_offset));
-            let from = self.absolute(transfer.caller);
-            self.copy_bytes(to, from, transfer.size);
-        }
-        let status = self.call_counted(function, this, callee_frame);
+        let pou = self.builder.ins().iconst(types::I32, i64::from(self.pou));
+        let pc = self.builder.ins().iconst(types::I32, i64::from(self.pc));
+        let status = self.call_counted(refs.stub, &[self.context, this, callee_frame, pou, pc]);
         self.return_if_faulted(status);
+        if refs.kind == StubKind::Prepare {
+            for transfer in inputs {
+                let to = self
+                    .builder
+                    .ins()
+                    .iadd_imm_u(callee_frame, i64::from(transfer.callee_offset));
+                let from = self.absolute(transfer.caller);
+                self.copy_bytes(to, from, transfer.size);
+            }
+            let status = self.call_counted(refs.body, &[self.context, this, callee_frame]);
+            count_down(&mut self.builder, self.context);
+            self.return_if_faulted(status);
+        }
+        debug_assert!(
+            refs.kind == StubKind::Prepare || inputs.is_empty(),
+            "inputs of a call of POU {} through its enter stub",
+            refs.callee
+        );
         for transfer in outputs {
             let to = self.absolute(transfer.caller);
             let from = self
@@ -225,115 +231,14 @@ impl Translator<'_, '_> {
         }
     }
 
-    /// At a call, the safe point: `rivet_jit_preempt` when `due` is set (§4.5).
-    fn preempt_if_due(&mut self) {
-        let due_pointer =
-            self.builder
-                .ins()
-                .load(types::I64, context_flags(), self.context, context::DUE);
-        // An atomic load, read anew at every call (§4.5).
-        let due = self
-            .builder
-            .ins()
-            .atomic_load(types::I8, context_flags(), due_pointer);
-        let slow = self.builder.create_block();
-        let next = self.builder.create_block();
-        self.builder.set_cold_block(slow);
-        self.builder.ins().brif(due, slow, &[], next, &[]);
-        self.builder.switch_to_block(slow);
-        let pou = self.builder.ins().iconst(types::I32, i64::from(self.pou));
-        let pc = self.builder.ins().iconst(types::I32, i64::from(self.pc));
-        let status = self.call_host(Import::Preempt, &[self.context, pou, pc]);
-        self.return_if_faulted(status);
-        self.reload_promoted();
-        self.builder.ins().jump(next, &[]);
-        self.builder.switch_to_block(next);
-    }
-
-    /// The new frame zeroed and its `frame_init` runs written, as `push_frame` does (a run
-    /// that does not fit the frame is skipped there too): by inline stores of the bytes the
-    /// translation computes for a small frame, by `rivet_jit_frame` for a larger one.
-    fn prepare_frame(&mut self, callee: u32, callee_frame: Value) {
-        let called = &self.pous[callee as usize];
-        let size = called.frame_size;
-        if size == 0 {
-            return;
-        }
-        if size > INLINE_FRAME_BYTES {
-            let pou = self.builder.ins().iconst(types::I32, i64::from(callee));
-            let status = self.call_host(Import::Frame, &[self.context, pou, callee_frame]);
-            // Like a copy, the callback has no site: a failure is recorded here (§4.3).
-            self.fault_if(status, fault_kind::MEMORY, [None; 3]);
-            self.reload_promoted();
-            return;
-        }
-        let mut bytes = vec![0u8; size as usize];
-        for run in &called.frame_init {
-            let start = run.offset as usize;
-            let end = start.saturating_add(run.bytes.len());
-            if let Some(place) = bytes.get_mut(start..end) {
-                place.copy_from_slice(&run.bytes);
-            }
-        }
-        let base = self.machine_address(callee_frame);
-        let mut done = 0usize;
-        while done < bytes.len() {
-            let (ty, width) = match bytes.len() - done {
-                8.. => (types::I64, 8),
-                4.. => (types::I32, 4),
-                2.. => (types::I16, 2),
-                _ => (types::I8, 1),
-            };
-            let mut raw = [0u8; 8];
-            raw[..width].copy_from_slice(&bytes[done..done + width]);
-            let value = self
-                .builder
-                .ins()
-                .iconst(ty, u64::from_le_bytes(raw) as i64);
-            self.builder
-                .ins()
-                .store(memory_flags(), value, base, done as i32);
-            done += width;
-        }
-    }
-
-    /// Step 7 of §4.4: `depth += 1`, the call, `depth -= 1` whatever its result (the
-    /// interpreter's `pop_depth`, saturating); the budget travels through the context as
-    /// around a callback. Returns the callee's status.
-    fn call_counted(&mut self, function: FuncRef, this: Value, callee_frame: Value) -> Value {
-        let depth =
-            self.builder
-                .ins()
-                .load(types::I32, context_flags(), self.context, context::DEPTH);
-        let deeper = self.builder.ins().iadd_imm_u(depth, 1);
-        self.builder
-            .ins()
-            .store(context_flags(), deeper, self.context, context::DEPTH);
-        let budget = self.builder.use_var(self.budget);
-        self.builder
-            .ins()
-            .store(context_flags(), budget, self.context, context::BUDGET);
-        let call = self
-            .builder
-            .ins()
-            .call(function, &[self.context, this, callee_frame]);
+    /// Calls generated code (a stub or a POU function): the budget stored before, the
+    /// memory's address and the budget loaded after (§4.2, §7 rule 3). Returns its status.
+    fn call_counted(&mut self, function: FuncRef, arguments: &[Value]) -> Value {
+        self.store_budget();
+        let call = self.builder.ins().call(function, arguments);
         let status = self.builder.inst_results(call)[0];
         self.reload_memory();
-        let budget =
-            self.builder
-                .ins()
-                .load(types::I32, context_flags(), self.context, context::BUDGET);
-        self.builder.def_var(self.budget, budget);
-        let depth =
-            self.builder
-                .ins()
-                .load(types::I32, context_flags(), self.context, context::DEPTH);
-        let at_zero = self.builder.ins().icmp_imm_u(IntCC::Equal, depth, 0);
-        let shallower = self.builder.ins().iadd_imm_s(depth, -1);
-        let depth = self.builder.ins().select(at_zero, depth, shallower);
-        self.builder
-            .ins()
-            .store(context_flags(), depth, self.context, context::DEPTH);
+        self.load_budget();
         status
     }
 
@@ -348,19 +253,12 @@ impl Translator<'_, '_> {
     pub(crate) fn call_host(&mut self, import: Import, arguments: &[Value]) -> Value {
         // A callback sees memory as the interpreter leaves it, and may change it (§5.3).
         self.write_back();
-        let budget = self.builder.use_var(self.budget);
-        self.builder
-            .ins()
-            .store(context_flags(), budget, self.context, context::BUDGET);
+        self.store_budget();
         let callee = self.func_ref(import);
         let call = self.builder.ins().call(callee, arguments);
         let result = self.builder.inst_results(call).first().copied();
         self.reload_memory();
-        let budget =
-            self.builder
-                .ins()
-                .load(types::I32, context_flags(), self.context, context::BUDGET);
-        self.builder.def_var(self.budget, budget);
+        self.load_budget();
         result.unwrap_or_else(|| self.builder.ins().iconst(types::I32, 0))
     }
 

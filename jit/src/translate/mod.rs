@@ -2,7 +2,8 @@
 //!
 //! The function has the one signature of §4.1, `(context, instance, frame) -> status`. The
 //! memory's address lives in a variable reloaded from the context after every call (§7 rule 3),
-//! the watchdog budget in a variable stored to the context around every call (§4.2).
+//! the watchdog budget, in a POU with a backward jump, in a variable stored to the context
+//! around every call (§4.2).
 
 mod blocks;
 mod call;
@@ -12,6 +13,7 @@ mod pointer;
 mod promote;
 mod real;
 pub(crate) mod scalar;
+pub(crate) mod stub;
 
 use cranelift_codegen::ir::{
     AbiParam, Block, BlockArg, FuncRef, Function, InstBuilder, MemFlagsData, Signature, Type,
@@ -93,6 +95,8 @@ pub(crate) struct Environment<'a> {
     /// Per POU: its function in the module, when it has one (a call of a POU without one is
     /// handed to the interpreter, §4.4).
     pub(crate) functions: &'a [Option<FuncId>],
+    /// Per POU: its entry stubs (§4.4), indexed by `stub::StubKind`, those some call needs.
+    pub(crate) stubs: &'a [[Option<FuncId>; 2]],
 }
 
 /// Translates POU `index` into a function, or says why it cannot.
@@ -157,6 +161,10 @@ pub(crate) struct Translator<'a, 'b> {
     functions: &'a [Option<FuncId>],
     /// Per POU: its function's reference in this function, once declared in it.
     pou_refs: Vec<Option<FuncRef>>,
+    /// Per POU: its entry stubs in the module, indexed by `stub::StubKind`.
+    stubs: &'a [[Option<FuncId>; 2]],
+    /// Per POU: its stubs' references in this function, once declared in it.
+    stub_refs: Vec<[Option<FuncRef>; 2]>,
     /// This POU's index.
     pub(crate) pou: u32,
     /// This POU's instructions.
@@ -177,6 +185,10 @@ pub(crate) struct Translator<'a, 'b> {
     bases: [Variable; 2],
     /// Backward jumps left before the watchdog looks at the clock.
     budget: Variable,
+    /// Whether the budget lives in `budget` at all: only a POU with a backward jump counts it
+    /// down. In any other the variable would only ever hold what the context holds, so it
+    /// is neither loaded nor stored, around calls or on return (§4.2).
+    counts_budget: bool,
     /// The address of the preemption flag `due`, read from the context once on entry when
     /// the POU has a backward jump: the context does not change while the function runs, so
     /// a back-edge reads only the flag.
@@ -185,7 +197,8 @@ pub(crate) struct Translator<'a, 'b> {
     /// epilogue is emitted twice per function rather than at every check. They take no
     /// parameter (a status passed from thousands of call sites would cost the register
     /// allocator far more than the two blocks), and the budget is in the context when they
-    /// are entered: stored by the return, or by the call whose failure it returns.
+    /// are entered: stored by the return or the fault, kept there by the call whose failure
+    /// it returns, or never anywhere else in a POU that does not count it.
     returns: [Option<Block>; 2],
     /// The blocks every fault goes through after its own write-back, so that a function
     /// makes one call of `rivet_jit_fault` per kind of tail rather than one per check: the
@@ -240,8 +253,10 @@ impl<'a, 'b> Translator<'a, 'b> {
             builder.declare_var(types::I64),
         ];
         let budget = builder.declare_var(types::I32);
-        // Only where a back-edge reads it: a load the code generator keeps even unused, and
-        // one it may move (read-only) it copies to every back-edge of a large function.
+        // A POU with a backward jump counts the budget and reads the flag `due` at its
+        // back-edges; any other does neither. The flag's address is loaded only where a
+        // back-edge reads it: a load the code generator keeps even unused, and one it may
+        // move (read-only) it copies to every back-edge of a large function.
         let backward = pou.code.iter().enumerate().any(|(at, instr)| {
             promote::jump_target(instr).is_some_and(|target| target as usize <= at)
         });
@@ -260,6 +275,8 @@ impl<'a, 'b> Translator<'a, 'b> {
             pous: environment.pous,
             functions: environment.functions,
             pou_refs: vec![None; environment.pous.len()],
+            stubs: environment.stubs,
+            stub_refs: vec![[None; 2]; environment.pous.len()],
             pou: index,
             code: &pou.code,
             blocks,
@@ -269,6 +286,7 @@ impl<'a, 'b> Translator<'a, 'b> {
             memory,
             bases,
             budget,
+            counts_budget: backward,
             due_pointer,
             returns: [None; 2],
             fault_tails: [None; 2],
@@ -282,12 +300,7 @@ impl<'a, 'b> Translator<'a, 'b> {
             exits: Vec::new(),
         };
         translator.reload_memory();
-        let budget_now =
-            translator
-                .builder
-                .ins()
-                .load(types::I32, context_flags(), context, context::BUDGET);
-        translator.builder.def_var(budget, budget_now);
+        translator.load_budget();
         translator
     }
 
@@ -612,8 +625,9 @@ impl<'a, 'b> Translator<'a, 'b> {
     }
 
     /// Returns `Faulted` when `status` is not 0, else goes on in a new block. Called right
-    /// after a call (a callback or a POU function), after which the context holds the
-    /// budget, so the way out stores nothing: the budget does not flow into the shared exit
+    /// after a call (a callback, an entry stub or a POU function), after which the context
+    /// holds the budget (the call stored it where this POU counts it, and the callee leaves
+    /// it there on every return), so the way out stores nothing: the budget does not flow into the shared exit
     /// block, which keeps the register allocator's work small in functions with thousands of
     /// calls.
     pub(crate) fn return_if_faulted(&mut self, status: Value) {
@@ -714,8 +728,13 @@ impl<'a, 'b> Translator<'a, 'b> {
                     arguments.extend([zero, zero, zero]);
                 }
             }
-            // The callback takes the budget and gives it back in the context.
-            self.call_host(Import::Fault, &arguments);
+            // The callback is the function's last act: nothing is read after it (the host
+            // keeps the budget it was given), so nothing but its arguments lives across it
+            // and a POU whose only calls are its faults saves no register for them. The
+            // budget is stored first, so it is in the context when `Faulted` is returned.
+            self.store_budget();
+            let fault = self.func_ref(Import::Fault);
+            self.builder.ins().call(fault, &arguments);
             let exit = self.exit_block(1);
             self.builder.ins().jump(exit, &[]);
         }
@@ -732,12 +751,27 @@ impl<'a, 'b> Translator<'a, 'b> {
         }
     }
 
-    /// Stores the budget variable into the context.
-    fn store_budget(&mut self) {
-        let budget = self.builder.use_var(self.budget);
-        self.builder
-            .ins()
-            .store(context_flags(), budget, self.context, context::BUDGET);
+    /// Stores the budget into the context, before a call, a fault or a return, where this POU
+    /// counts it.
+    pub(crate) fn store_budget(&mut self) {
+        if self.counts_budget {
+            let budget = self.builder.use_var(self.budget);
+            self.builder
+                .ins()
+                .store(context_flags(), budget, self.context, context::BUDGET);
+        }
+    }
+
+    /// Loads the budget from the context, on entry and after a call, where this POU counts
+    /// it.
+    pub(crate) fn load_budget(&mut self) {
+        if self.counts_budget {
+            let budget =
+                self.builder
+                    .ins()
+                    .load(types::I32, context_flags(), self.context, context::BUDGET);
+            self.builder.def_var(self.budget, budget);
+        }
     }
 
     fn reload_memory(&mut self) {

@@ -84,6 +84,26 @@ impl Translator<'_, '_> {
         true
     }
 
+    /// A real operand loaded as the integer of its size and moved into a float register.
+    ///
+    /// For the left operand of `fadd` and `fmul`: Cranelift's x64 backend folds a load on
+    /// the left of these commutative operations into the instruction by swapping the operands
+    /// (`vmulsd [l], r`), and of two NaNs x86 keeps the first operand's, so the result would
+    /// carry the right operand's NaN where the interpreter's `l * r` carries the left one's
+    /// (§6.1). A bitcast is no load it can fold; a folded constant or a promoted place stays
+    /// what it was.
+    fn load_unfoldable(&mut self, ir: Type, operand: Operand) -> Value {
+        let bits_type = if ir == types::F32 {
+            types::I32
+        } else {
+            types::I64
+        };
+        let bits = self.load(bits_type, operand);
+        self.builder
+            .ins()
+            .bitcast(ir, cranelift_codegen::ir::MemFlagsData::new(), bits)
+    }
+
     /// `Binary` on a real; false to leave it to the host.
     pub(crate) fn real_binary(
         &mut self,
@@ -108,7 +128,11 @@ impl Translator<'_, '_> {
             // Bit operations on reals are refused by the interpreter at load.
             return false;
         }
-        let l = self.load(ir, a);
+        let l = if matches!(op, BinaryOp::Add | BinaryOp::Mul) {
+            self.load_unfoldable(ir, a)
+        } else {
+            self.load(ir, a)
+        };
         let r = self.load(ir, b);
         let result = match op {
             BinaryOp::Add => self.builder.ins().fadd(l, r),

@@ -96,6 +96,8 @@ impl jit::Host for Exec<'_> {
     }
 
     fn tick(&mut self, site: jit::Site, counters: &mut jit::Counters) -> jit::Status {
+        #[cfg(test)]
+        tests::panic_if_asked("tick");
         // Generated code has counted this backward jump already; what is left of
         // `Exec::tick` is the safe point and, with the budget spent, the watchdog.
         self.take_counters(counters);
@@ -157,7 +159,16 @@ impl jit::Host for Exec<'_> {
         self.record_native_fault(site, fault_kind(fault));
     }
 
+    fn host_panicked(&mut self, site: jit::Site, message: &str) {
+        self.record_native_fault(
+            site,
+            FaultKind::Internal(format!("a host callback panicked: {message}")),
+        );
+    }
+
     fn copy(&mut self, to: u64, from: u64, bytes: u64) -> jit::Status {
+        #[cfg(test)]
+        tests::panic_if_asked("copy");
         let (Ok(to), Ok(from), Ok(bytes)) = (
             usize::try_from(to),
             usize::try_from(from),
@@ -186,10 +197,112 @@ impl jit::Host for Exec<'_> {
 mod tests {
     #![allow(clippy::unwrap_used, clippy::expect_used)] // A panic is a failed test.
 
+    use std::cell::Cell;
+
     use super::*;
     use crate::engine::exec::NEVER_DUE;
     use crate::engine::{Engine, EngineChoice};
-    use crate::test_images::{TestTask, image};
+    use crate::test_images::{Body, TestTask, image};
+
+    thread_local! {
+        /// Whether the next `tick` or `copy` callback on this thread panics, as a bug of the
+        /// runtime's side would.
+        static PANIC_IN_CALLBACK: Cell<bool> = const { Cell::new(false) };
+    }
+
+    /// Panics when the running test asked for it, inside callback `callback`: a literal
+    /// message from `tick`, a formatted one from `copy` (the two kinds of panic payload).
+    pub(super) fn panic_if_asked(callback: &str) {
+        if PANIC_IN_CALLBACK.with(|asked| asked.replace(false)) {
+            if callback == "tick" {
+                panic!("tick panicked (injected by a test)");
+            }
+            panic!("{callback} panicked (injected by a test)");
+        }
+    }
+
+    /// The fault of the one cycle of task 0 of `image` under the native engine, with a
+    /// callback made to panic; `None` where this machine makes no machine code.
+    fn fault_of_a_panicking_callback(
+        image: program_image::ProgramImage,
+    ) -> Option<crate::engine::FaultRecord> {
+        let (mut engine, report) = Engine::with_choice(image, EngineChoice::Native).unwrap();
+        if !report.runs_natively() {
+            assert!(!EngineChoice::native_available());
+            return None;
+        }
+        PANIC_IN_CALLBACK.with(|asked| asked.set(true));
+        let fault = engine
+            .run_cycle(0, 0, 0)
+            .expect_err("the callback panicked");
+        assert!(!PANIC_IN_CALLBACK.with(Cell::get), "no callback was made");
+        // The runtime lives: the next cycle runs, and the panic is not asked for again.
+        engine.run_cycle(0, 0, 1).unwrap();
+        Some(fault)
+    }
+
+    #[test]
+    fn a_panic_in_a_callback_with_a_site_is_an_internal_fault_with_its_message() {
+        // A loop of more than one budget of backward jumps: its tick with the budget spent
+        // panics at the back-edge.
+        let watching = TestTask {
+            body: Body::Watch {
+                iterations: 10_000,
+                sets_trigger: false,
+            },
+            ..TestTask::cyclic(1_000_000, 1)
+        };
+        let image = image(&[watching], &[]);
+        let back_edge = image.pous[0]
+            .code
+            .iter()
+            .position(|instr| matches!(instr, program_image::Instr::Jump { .. }))
+            .unwrap() as u32;
+        let Some(fault) = fault_of_a_panicking_callback(image) else {
+            return;
+        };
+        assert_eq!(
+            fault.kind,
+            FaultKind::Internal(
+                "a host callback panicked: tick panicked (injected by a test)".into()
+            )
+        );
+        assert_eq!(
+            (fault.pou.as_str(), fault.instruction),
+            ("Program0", back_edge)
+        );
+    }
+
+    #[test]
+    fn a_panic_in_a_large_copy_is_an_internal_fault_with_its_message_at_the_copy() {
+        use program_image::{Instr, Operand};
+        // A copy of more than 64 bytes goes to the host, which has no site of its own: the
+        // fault generated code records at the Copy carries the panic's message.
+        let mut image = image(&[TestTask::cyclic(1_000_000, 1)], &[]);
+        image.pous[0].code = vec![
+            Instr::Move {
+                ty: program_image::Elementary::Dint,
+                dst: Operand::Global(0),
+                src: Operand::Const(0),
+            },
+            Instr::Copy {
+                size: 100,
+                dst: Operand::Global(900),
+                src: Operand::Global(0),
+            },
+            Instr::Return,
+        ];
+        let Some(fault) = fault_of_a_panicking_callback(image) else {
+            return;
+        };
+        assert_eq!(
+            fault.kind,
+            FaultKind::Internal(
+                "a host callback panicked: copy panicked (injected by a test)".into()
+            )
+        );
+        assert_eq!((fault.pou.as_str(), fault.instruction), ("Program0", 1));
+    }
 
     #[test]
     fn an_instance_outside_the_memory_is_a_memory_fault_at_the_pous_first_instruction() {
@@ -268,5 +381,90 @@ mod tests {
         ] {
             assert_eq!(fault_kind(native), kind);
         }
+    }
+
+    /// A hand-made image whose program (task 0) calls a method without an instance, so the
+    /// method runs on the program's instance, which is far smaller than the method's: the
+    /// method's last instance byte lies past the end of the memory. Task 1 counts.
+    fn method_beyond_the_memory() -> program_image::ProgramImage {
+        use program_image::{Elementary, Instr, Operand, Pou, PouKind};
+        const METHOD_INSTANCE_BYTES: u32 = 1 << 20;
+        let mut image = image(
+            &[
+                TestTask::cyclic(1_000_000, 1),
+                TestTask::cyclic(1_000_000, 2),
+            ],
+            &[],
+        );
+        image.pous[0].code = vec![
+            Instr::CallFunction {
+                pou: 2,
+                instance: None,
+                inputs: Vec::new(),
+                outputs: Vec::new(),
+            },
+            Instr::Return,
+        ];
+        image.pous.push(Pou {
+            name: "Beyond".to_owned(),
+            kind: PouKind::Method,
+            frame_size: 0,
+            frame_init: Vec::new(),
+            instance_size: METHOD_INSTANCE_BYTES,
+            code: vec![
+                Instr::Move {
+                    ty: Elementary::Dint,
+                    dst: Operand::Instance(METHOD_INSTANCE_BYTES - 4),
+                    src: Operand::Const(0),
+                },
+                Instr::Return,
+            ],
+            lines: Vec::new(),
+        });
+        image
+    }
+
+    #[test]
+    fn a_method_whose_instance_passes_the_memorys_end_is_a_memory_fault_at_the_call() {
+        let image = method_beyond_the_memory();
+        let (mut native, report) =
+            crate::simulation::Simulation::with_choice(image.clone(), EngineChoice::Native)
+                .unwrap();
+        if !report.runs_natively() {
+            assert!(!EngineChoice::native_available());
+            return;
+        }
+        assert!(report.fallbacks.is_empty(), "{report:#?}");
+        assert!(
+            image.layout.data_size < 1 << 20,
+            "the memory must be smaller than the method's instance"
+        );
+        native.run(3);
+        // The native engine checks the callee's instance once, at the call
+        // (native-engine.md 4.4 step 4): the fault is the caller's, at its call instruction.
+        let [fault] = native.faults() else {
+            panic!("one fault: {:?}", native.faults())
+        };
+        assert_eq!(
+            (fault.task.as_str(), &fault.kind, fault.pou.as_str()),
+            ("Task0", &FaultKind::Memory, "Program0")
+        );
+        assert_eq!((fault.instruction, fault.cycle), (0, 0));
+        assert!(native.engine().native_entries() > 0);
+        // The runtime lives: the other task goes on.
+        assert_eq!(native.cycles(), [1, 3]);
+        // The interpreter checks each access instead and faults Memory at the method's store
+        // past the memory's end (native-engine.md 7 rule 2: both safe, the sites differ).
+        let (mut interpreted, _) =
+            crate::simulation::Simulation::with_choice(image, EngineChoice::Interpreter).unwrap();
+        interpreted.run(3);
+        let [fault] = interpreted.faults() else {
+            panic!("one fault: {:?}", interpreted.faults())
+        };
+        assert_eq!(
+            (&fault.kind, fault.pou.as_str(), fault.instruction),
+            (&FaultKind::Memory, "Beyond", 0)
+        );
+        assert_eq!(interpreted.cycles(), [1, 3]);
     }
 }

@@ -1,6 +1,9 @@
-//! Preemption on the real clock. Who interrupted whom is read from the cycle log and from the
-//! programs' own notes; no assertion depends on how fast this machine is, except that the
-//! watchdog test sizes its loops from a measurement with wide margins.
+//! Preemption on the real clock, under both engines. Who interrupted whom is read from the
+//! cycle log and from the programs' own notes; no assertion depends on how fast this machine
+//! is, except that the watchdog test sizes its loops from a measurement with wide margins: a
+//! cycle that must be interrupted waits for the interrupting task's cycles ([`Body::WaitFor`])
+//! rather than looping for a time sized to one engine. Where a safe point is reached (a
+//! back-edge, a call) is shown on the engine alone, with a hook standing in for the scheduler.
 
 use std::sync::mpsc;
 use std::time::Instant;
@@ -32,12 +35,34 @@ fn watch(iterations: i32, interval_ns: u64, priority: u8) -> TestTask {
     }
 }
 
-/// Default options with a cycle log, and the log's receiver.
-fn logged(preemption: bool) -> (SchedulerOptions, mpsc::Receiver<CycleRecord>) {
-    logged_in(preemption, EngineChoice::Interpreter)
+/// Both engines, for the tests that run under each; the native engine falls back to the
+/// interpreter on a machine without a native code generator, which [`loaded`] checks.
+const ENGINES: [EngineChoice; 2] = [EngineChoice::Interpreter, EngineChoice::Native];
+
+/// A task of `priority` whose one cycle (it runs once) waits until task `task` has run
+/// `cycles` cycles after it started.
+fn waiting_for(task: usize, cycles: i32, priority: u8) -> TestTask {
+    TestTask {
+        body: Body::WaitFor { task, cycles },
+        ..TestTask::cyclic(MINUTE, priority)
+    }
 }
 
-/// [`logged`] with the engine `engine`.
+/// Loads `image` in `scheduler` and checks that it runs under `engine` as chosen: natively
+/// for every POU where this machine makes machine code.
+#[track_caller]
+fn loaded(scheduler: &Scheduler, image: ProgramImage, engine: EngineChoice) {
+    let report = scheduler.load(image).unwrap();
+    assert_eq!(report.native.chosen, engine);
+    if engine == EngineChoice::Native && jit::native_support().is_ok() {
+        assert!(report.native.runs_natively(), "{:#?}", report.native);
+        assert!(report.native.fallbacks.is_empty(), "{:#?}", report.native);
+    } else {
+        assert!(!report.native.runs_natively(), "{:#?}", report.native);
+    }
+}
+
+/// Default options with a cycle log for `engine`, and the log's receiver.
 fn logged_in(
     preemption: bool,
     engine: EngineChoice,
@@ -46,10 +71,6 @@ fn logged_in(
     let options = SchedulerOptions {
         preemption,
         cycle_log: Some(sender),
-        // LONG and the loops below are sized so that an interpreted cycle outlasts a few
-        // periods of the tasks that interrupt it; the native engine runs them several times
-        // faster, so these tests pin the interpreter until they are sized for both engines
-        // (issue 20, wave 3). The tests sized by measurement run under both.
         engine,
         ..SchedulerOptions::default()
     };
@@ -90,116 +111,149 @@ fn records_until(
 
 #[test]
 fn a_higher_priority_task_runs_inside_a_long_cycle_of_a_lower_one_only_with_preemption() {
-    for preemption in [true, false] {
-        let (options, records) = logged(preemption);
-        let (scheduler, _areas) = scheduler(options);
-        // Task 0 watches (priority 10, once); task 1 counts the sequence every millisecond.
-        let tasks = [watch(LONG, MINUTE, 10), TestTask::cyclic(MS, 1)];
-        scheduler.load(image(&tasks, &[])).unwrap();
-        scheduler.start().unwrap();
-        wait_for(&scheduler, "the long cycle", |status| {
-            status.tasks[0].cycles == 1
-        });
-        scheduler.stop().unwrap();
-        let noted = data(
-            &scheduler,
-            &[seen_at_start(0), seen_at_end(0), watch_counter(0), count(0)],
-        );
-        // The interrupted cycle's own results are whole.
-        assert_eq!((noted[2], noted[3]), (LONG, 1), "preemption {preemption}");
-        let nested = records
-            .try_iter()
-            .filter(|record| record.task == 1 && record.interrupted == Some(0))
-            .count();
-        if preemption {
-            // Cycles of the counting task ran between the two notes (a few may have run at
-            // the call of the program, before the first note).
-            let counted = usize::try_from(noted[1] - noted[0]).unwrap();
-            assert!(
-                counted > 0 && counted <= nested,
-                "{noted:?}, {nested} nested"
+    for engine in ENGINES {
+        for preemption in [true, false] {
+            let (options, records) = logged_in(preemption, engine);
+            let (scheduler, _areas) = scheduler(options);
+            // Task 0 (priority 10, once) waits for three cycles of task 1, which counts the
+            // sequence every millisecond: with preemption those cycles can only run nested in
+            // it. Without, task 0 loops LONG times instead (waiting would never end), and
+            // nothing may run inside it, whatever the time it takes.
+            let low = if preemption {
+                waiting_for(1, 3, 10)
+            } else {
+                watch(LONG, MINUTE, 10)
+            };
+            loaded(
+                &scheduler,
+                image(&[low, TestTask::cyclic(MS, 1)], &[]),
+                engine,
             );
-        } else {
-            assert_eq!((noted[0], nested), (noted[1], 0));
+            scheduler.start().unwrap();
+            wait_for(&scheduler, "the long cycle", |status| {
+                status.tasks[0].cycles == 1
+            });
+            scheduler.stop().unwrap();
+            let noted = data(
+                &scheduler,
+                &[seen_at_start(0), seen_at_end(0), watch_counter(0), count(0)],
+            );
+            let nested = records
+                .try_iter()
+                .filter(|record| record.task == 1 && record.interrupted == Some(0))
+                .count();
+            let case = format!("{engine:?}, preemption {preemption}");
+            if preemption {
+                // At least three cycles of task 1 ran nested, between the two notes of its
+                // cycle count (one more may have run at the call of the program, before the
+                // first note).
+                assert_eq!(noted[3], 1, "{case}");
+                let counted = usize::try_from(noted[1] - noted[0]).unwrap();
+                assert!(
+                    counted >= 3 && counted <= nested,
+                    "{case}: {noted:?}, {nested} nested"
+                );
+            } else {
+                // The interrupted cycle's own results are whole.
+                assert_eq!((noted[2], noted[3]), (LONG, 1), "{case}");
+                assert_eq!((noted[0], nested), (noted[1], 0), "{case}");
+            }
         }
     }
 }
 
 #[test]
 fn a_task_of_equal_priority_waits_for_the_running_cycle() {
-    let (options, records) = logged(true);
-    let (scheduler, _areas) = scheduler(options);
-    let tasks = [watch(LONG, MINUTE, 5), TestTask::cyclic(MS, 5)];
-    scheduler.load(image(&tasks, &[])).unwrap();
-    scheduler.start().unwrap();
-    wait_for(&scheduler, "the long cycle", |status| {
-        status.tasks[0].cycles == 1
-    });
-    scheduler.stop().unwrap();
-    let noted = data(&scheduler, &[seen_at_start(0), seen_at_end(0)]);
-    assert_eq!(noted[0], noted[1]);
-    assert!(
-        records
-            .try_iter()
-            .all(|record| record.interrupted.is_none())
-    );
+    for engine in ENGINES {
+        let (options, records) = logged_in(true, engine);
+        let (scheduler, _areas) = scheduler(options);
+        let tasks = [watch(LONG, MINUTE, 5), TestTask::cyclic(MS, 5)];
+        loaded(&scheduler, image(&tasks, &[]), engine);
+        scheduler.start().unwrap();
+        wait_for(&scheduler, "the long cycle", |status| {
+            status.tasks[0].cycles == 1
+        });
+        scheduler.stop().unwrap();
+        let noted = data(&scheduler, &[seen_at_start(0), seen_at_end(0)]);
+        assert_eq!(noted[0], noted[1], "{engine:?}");
+        assert!(
+            records
+                .try_iter()
+                .all(|record| record.interrupted.is_none()),
+            "{engine:?}"
+        );
+    }
 }
 
 #[test]
 fn three_priorities_nest() {
-    let (options, records) = logged(true);
-    let (scheduler, _areas) = scheduler(options);
-    // The lowest task loops until its watchdog (its own time only) ends it; the middle one
-    // comes every 100 ms with a short loop; the highest counts every millisecond.
-    let low = TestTask {
-        watchdog_ns: 300 * MS,
-        ..watch(i32::MAX, MINUTE, 20)
-    };
-    let tasks = [low, watch(20_000, 100 * MS, 10), TestTask::cyclic(MS, 1)];
-    scheduler.load(image(&tasks, &[])).unwrap();
-    scheduler.start().unwrap();
-    records_until(&records, "two levels of nesting", |received| {
-        let interrupted = |task, by| {
-            received
-                .iter()
-                .any(|record| record.task == by && record.interrupted == Some(task))
+    for engine in ENGINES {
+        let (options, records) = logged_in(true, engine);
+        let (scheduler, _areas) = scheduler(options);
+        // The highest task counts every millisecond. The middle one comes every 100 ms; its
+        // first cycle waits for four cycles of the highest, which run nested in it. The lowest
+        // starts after that and waits for one more cycle of the middle task, which can only
+        // run nested in it, 100 ms later.
+        let middle = TestTask {
+            interval_ns: 100 * MS,
+            ..waiting_for(2, 4, 10)
         };
-        interrupted(1, 2) && interrupted(0, 1)
-    });
+        let tasks = [waiting_for(1, 1, 20), middle, TestTask::cyclic(MS, 1)];
+        loaded(&scheduler, image(&tasks, &[]), engine);
+        scheduler.start().unwrap();
+        records_until(&records, "two levels of nesting", |received| {
+            let interrupted = |task, by| {
+                received
+                    .iter()
+                    .any(|record| record.task == by && record.interrupted == Some(task))
+            };
+            interrupted(1, 2) && interrupted(0, 1)
+        });
+        scheduler.stop().unwrap();
+    }
 }
 
 #[test]
 fn a_fault_of_a_preempting_task_leaves_the_interrupted_cycle_going() {
-    let (options, records) = logged(true);
-    let (scheduler, _areas) = scheduler(options);
-    // Every cycle of task 1 overruns its 1 ns watchdog: its third faults it. Its first runs
-    // before the long cycle, the other two inside it.
-    let failing = TestTask {
-        watchdog_ns: 1,
-        watchdog_sensitivity: 3,
-        ..TestTask::cyclic(MS, 1)
-    };
-    scheduler
-        .load(image(&[watch(LONG, MINUTE, 10), failing], &[]))
-        .unwrap();
-    scheduler.start().unwrap();
-    let status = wait_for(&scheduler, "the long cycle", |status| {
-        status.tasks[0].cycles == 1
-    });
-    scheduler.stop().unwrap();
-    assert_eq!(status.state, SchedulerState::Faulted);
-    assert!(status.tasks[1].faulted && !status.tasks[0].faulted);
-    assert_eq!(status.tasks[1].cycles, 3);
-    assert_eq!(status.faults.len(), 1);
-    assert_eq!(status.faults[0].task, "Task1");
-    let third = records
-        .try_iter()
-        .filter(|record| record.task == 1)
-        .nth(2)
-        .unwrap();
-    assert_eq!(third.interrupted, Some(0));
-    let noted = data(&scheduler, &[watch_counter(0), count(0)]);
-    assert_eq!(noted, [LONG, 1]);
+    for engine in ENGINES {
+        let (options, records) = logged_in(true, engine);
+        let (scheduler, _areas) = scheduler(options);
+        // Every cycle of task 1 overruns its 1 ns watchdog: its third faults it. Its first
+        // runs before the long cycle of task 0 (a higher priority, due at once), which waits
+        // for two more, so they run inside it.
+        let failing = TestTask {
+            watchdog_ns: 1,
+            watchdog_sensitivity: 3,
+            ..TestTask::cyclic(MS, 1)
+        };
+        loaded(
+            &scheduler,
+            image(&[waiting_for(1, 2, 10), failing], &[]),
+            engine,
+        );
+        scheduler.start().unwrap();
+        let status = wait_for(&scheduler, "the long cycle", |status| {
+            status.tasks[0].cycles == 1
+        });
+        scheduler.stop().unwrap();
+        assert_eq!(status.state, SchedulerState::Faulted, "{engine:?}");
+        assert!(
+            status.tasks[1].faulted && !status.tasks[0].faulted,
+            "{engine:?}"
+        );
+        assert_eq!(status.tasks[1].cycles, 3, "{engine:?}");
+        assert_eq!(status.faults.len(), 1, "{engine:?}");
+        assert_eq!(status.faults[0].task, "Task1", "{engine:?}");
+        let third = records
+            .try_iter()
+            .filter(|record| record.task == 1)
+            .nth(2)
+            .unwrap();
+        assert_eq!(third.interrupted, Some(0), "{engine:?}");
+        // The interrupted cycle went on to its end after the fault.
+        let noted = data(&scheduler, &[count(1), count(0)]);
+        assert_eq!(noted, [3, 1], "{engine:?}");
+    }
 }
 
 /// Nanoseconds one iteration of a watching task's loop takes here in `engine`: the fastest of
@@ -354,4 +408,189 @@ fn forces_hold_in_nested_cycles(engine: EngineChoice, long_iterations: i32) {
     }
     // Within each cycle the program added one to the forced count and copied that out.
     assert_eq!(dword(&areas.lock().unwrap().output, count_in_output(1)), 8);
+}
+
+/// Where the hand-made programs below note that their body started.
+const STARTED: u32 = seen_at_start(0);
+/// Where they note the sequence counter at their end.
+const ENDED: u32 = seen_at_end(0);
+/// Their loop counter, or the sequence counter before their call.
+const NOTED: u32 = watch_counter(0);
+/// Where the loop's test goes, or where the called function notes that it ran.
+const SCRATCH: u32 = watch_counter(0) + 4;
+
+/// The scheduler's part for [`interrupted`]: at the first safe point after the program's body
+/// started, notes the DINT at [`NOTED`] and [`SCRATCH`] and runs one cycle of counting task 1
+/// on the interrupted cycle's memory, as the scheduler runs a task that became due.
+struct Interrupter<'d> {
+    due: &'d std::sync::atomic::AtomicBool,
+    /// The DINTs at [`NOTED`] and [`SCRATCH`] at each interruption.
+    seen: Vec<(i32, i32)>,
+}
+
+impl crate::engine::Preempt for Interrupter<'_> {
+    fn preempt(&mut self, mut engine: crate::engine::EngineView<'_>) {
+        let data = engine.region(Region::Data);
+        // The safe point at the program's own call comes before its body: the task stays due.
+        if dint(data, STARTED) == 0 {
+            return;
+        }
+        self.seen.push((dint(data, NOTED), dint(data, SCRATCH)));
+        engine
+            .run_cycle(1, 0, crate::engine::TaskClock::Simulated, 0, None)
+            .unwrap();
+        self.due.store(false, std::sync::atomic::Ordering::Relaxed);
+    }
+}
+
+/// Task 0 runs `code` (and POU 2 is a function doing `called`) once under `engine` with task 1
+/// (counting) due from the start; returns the interruptions the hook saw, the data region after
+/// the cycle, and how often machine code was entered.
+fn interrupted(
+    engine: EngineChoice,
+    code: Vec<program_image::Instr>,
+    called: Vec<program_image::Instr>,
+) -> (Vec<(i32, i32)>, Vec<u8>, u64) {
+    let mut image = image(&[TestTask::cyclic(MS, 10), TestTask::cyclic(MS, 1)], &[]);
+    image.pous[0].code = code;
+    image.pous.push(program_image::Pou {
+        name: "Called".to_owned(),
+        kind: program_image::PouKind::Function,
+        frame_size: 0,
+        frame_init: Vec::new(),
+        instance_size: 0,
+        code: called,
+        lines: Vec::new(),
+    });
+    // Const(16): the loop's 10 iterations.
+    image.constants.extend(10_i32.to_le_bytes());
+    let (mut engine, report) = Engine::with_choice(image, engine).unwrap();
+    if report.chosen == EngineChoice::Native {
+        assert_eq!(
+            report.runs_natively(),
+            jit::native_support().is_ok(),
+            "{report:#?}"
+        );
+        assert!(report.fallbacks.is_empty(), "{report:#?}");
+    }
+    let due = std::sync::atomic::AtomicBool::new(true);
+    let mut hook = Interrupter {
+        due: &due,
+        seen: Vec::new(),
+    };
+    engine
+        .view()
+        .run_cycle(
+            0,
+            0,
+            crate::engine::TaskClock::Simulated,
+            0,
+            Some(crate::engine::Preemption {
+                due: &due,
+                hook: &mut hook,
+            }),
+        )
+        .unwrap();
+    let seen = hook.seen;
+    let data = engine.region(Region::Data).to_vec();
+    (seen, data, engine.native_entries())
+}
+
+/// `place := src` on DINTs.
+fn set(place: u32, src: program_image::Operand) -> program_image::Instr {
+    program_image::Instr::Move {
+        ty: program_image::Elementary::Dint,
+        dst: program_image::Operand::Global(place),
+        src,
+    }
+}
+
+/// Checks that the native run entered machine code where this machine makes it, and left the
+/// same data as the interpreter's.
+#[track_caller]
+fn as_interpreted(
+    native: &(Vec<(i32, i32)>, Vec<u8>, u64),
+    interpreted: &(Vec<(i32, i32)>, Vec<u8>, u64),
+) {
+    assert_eq!(interpreted.2, 0);
+    if jit::native_support().is_ok() {
+        assert!(native.2 > 0, "no machine code was entered");
+    }
+    assert_eq!(native.0, interpreted.0);
+    assert!(native.1 == interpreted.1, "the data regions differ");
+}
+
+#[test]
+fn a_cycle_is_interrupted_at_its_first_loop_back_edge_under_both_engines() {
+    use program_image::{CompareOp, Elementary, Instr, Operand};
+    let (one, zero, ten) = (Operand::Const(0), Operand::Const(4), Operand::Const(16));
+    let counter = Operand::Global(NOTED);
+    let done = Operand::Global(SCRATCH);
+    // started := 1; i := 0; REPEAT i := i + 1 UNTIL i >= 10; ended := sequence.
+    let code = vec![
+        set(STARTED, one),
+        set(NOTED, zero),
+        Instr::Binary {
+            op: program_image::BinaryOp::Add,
+            ty: Elementary::Dint,
+            dst: counter,
+            a: counter,
+            b: one,
+        },
+        Instr::Compare {
+            op: CompareOp::Ge,
+            ty: Elementary::Dint,
+            dst: done,
+            a: counter,
+            b: ten,
+        },
+        Instr::JumpIfNot {
+            cond: done,
+            target: 2,
+        },
+        set(ENDED, Operand::Global(crate::test_images::SEQUENCE)),
+        Instr::Return,
+    ];
+    let runs = ENGINES.map(|engine| interrupted(engine, code.clone(), vec![Instr::Return]));
+    let [interpreted, native] = &runs;
+    for (seen, data, _) in &runs {
+        // Interrupted once, at the first backward jump: the loop ran once, and its counter,
+        // which the native engine may keep in a register, was in memory for the scheduler.
+        assert_eq!(seen, &[(1, 0)]);
+        // The rest of the cycle read what the interrupting task wrote.
+        assert_eq!(dint(data, ENDED), 1);
+        assert_eq!(dint(data, NOTED), 10);
+        assert_eq!(dint(data, count(1)), 1);
+    }
+    as_interpreted(native, interpreted);
+}
+
+#[test]
+fn a_cycle_is_interrupted_at_a_call_under_both_engines() {
+    use program_image::{Instr, Operand};
+    let sequence = Operand::Global(crate::test_images::SEQUENCE);
+    // started := 1; noted := sequence; Called(); ended := sequence. Called sets SCRATCH.
+    let code = vec![
+        set(STARTED, Operand::Const(0)),
+        set(NOTED, sequence),
+        Instr::CallFunction {
+            pou: 2,
+            instance: None,
+            inputs: Vec::new(),
+            outputs: Vec::new(),
+        },
+        set(ENDED, sequence),
+        Instr::Return,
+    ];
+    let called = vec![set(SCRATCH, Operand::Const(0)), Instr::Return];
+    let runs = ENGINES.map(|engine| interrupted(engine, code.clone(), called.clone()));
+    let [interpreted, native] = &runs;
+    for (seen, data, _) in &runs {
+        // Interrupted once, at the call: after the note before it, before the callee's body.
+        assert_eq!(seen, &[(0, 0)]);
+        assert_eq!(dint(data, ENDED), 1);
+        assert_eq!(dint(data, SCRATCH), 1);
+        assert_eq!(dint(data, count(1)), 1);
+    }
+    as_interpreted(native, interpreted);
 }

@@ -103,6 +103,42 @@ fn a_cyclic_task_keeps_statistics_and_writes_its_outputs() {
 
 #[test]
 fn a_native_endless_loop_is_ended_by_its_watchdog_at_a_backward_jump() {
+    // Natively too, i32::MAX rounds of the slow loop take far longer than 10 ms.
+    ended_by_a_native_watchdog(None, |areas| {
+        areas
+            .lock()
+            .unwrap()
+            .write_bytes(Area::Memory, 0, &i32::MAX.to_le_bytes())
+            .unwrap();
+    });
+}
+
+#[test]
+fn a_native_while_true_is_ended_by_a_10_ms_watchdog() {
+    use program_image::{BinaryOp, Elementary, Instr, Operand};
+    // WHILE TRUE DO n := n + 1; END_WHILE: a loop without an exit.
+    let n = Operand::Global(crate::test_images::count(0));
+    let endless = vec![
+        Instr::Binary {
+            op: BinaryOp::Add,
+            ty: Elementary::Dint,
+            dst: n,
+            a: n,
+            b: Operand::Const(0),
+        },
+        Instr::Jump { target: 0 },
+    ];
+    ended_by_a_native_watchdog(Some(endless), |_| {});
+}
+
+/// Task 0 (10 ms watchdog, every 100 ms) runs the slow program, or `code` in its place, under
+/// the native engine beside a counting task every millisecond; `prepare` sets the located
+/// areas before the start. The loop must end by the watchdog at a backward jump, and the
+/// other task go on.
+fn ended_by_a_native_watchdog(
+    code: Option<Vec<program_image::Instr>>,
+    prepare: impl FnOnce(&Arc<Mutex<LocatedAreas>>),
+) {
     let options = SchedulerOptions {
         engine: EngineChoice::Native,
         ..SchedulerOptions::default()
@@ -114,22 +150,19 @@ fn a_native_endless_loop_is_ended_by_its_watchdog_at_a_backward_jump() {
         body: Body::Slow,
         ..TestTask::cyclic(100 * MS, 3)
     };
-    let report = scheduler
-        .load(image(&[slow, TestTask::cyclic(MS, 0)], &[]))
-        .unwrap();
+    let mut image = image(&[slow, TestTask::cyclic(MS, 0)], &[]);
+    if let Some(code) = code {
+        image.pous[0].code = code;
+    }
+    let report = scheduler.load(image).unwrap();
     if jit::native_support().is_err() {
-        // Nothing runs natively on this machine; the interpreter's watchdog is tested above.
+        // Nothing runs natively on this machine; the interpreter's watchdog is tested below.
         assert!(!report.native.runs_natively());
         return;
     }
     assert!(report.native.runs_natively(), "{:?}", report.native);
     assert!(report.native.fallbacks.is_empty(), "{:?}", report.native);
-    // Natively too, i32::MAX rounds take far longer than 10 ms.
-    areas
-        .lock()
-        .unwrap()
-        .write_bytes(Area::Memory, 0, &i32::MAX.to_le_bytes())
-        .unwrap();
+    prepare(&areas);
     scheduler.start().unwrap();
     let status = wait_for(&scheduler, "the watchdog", |status| {
         !status.faults.is_empty()
@@ -158,6 +191,16 @@ fn a_native_endless_loop_is_ended_by_its_watchdog_at_a_backward_jump() {
         "{fault}: {:?}",
         pou.code[fault.instruction as usize]
     );
+    // Machine code ran the loop.
+    let entries = scheduler
+        .between(|between| {
+            between
+                .memory
+                .as_ref()
+                .map_or(0, |memory| memory.engine.native_entries())
+        })
+        .unwrap();
+    assert!(entries > 0);
     // The other task goes on.
     let cycles = status.tasks[1].cycles;
     wait_for(&scheduler, "the other task to go on", |status| {

@@ -240,12 +240,18 @@ pub fn report(median_ns: &dyn Fn(&mut dyn FnMut()) -> f64) {
         ));
     }
     println!(
-        "\n| workload | instructions in main | bytecode bytes | translation ms | code bytes |"
+        "\n| workload | instructions in main | bytecode bytes | translation ms | code bytes | code ÷ bytecode (goal < 10) |"
     );
-    println!("|---|---:|---:|---:|---:|");
+    println!("|---|---:|---:|---:|---:|---:|");
     for (name, instructions, bytecode, translation_ms, code_bytes) in sizes {
+        let ratio = bytecode.map_or_else(
+            || "–".to_owned(),
+            |bytes| format!("{:.2}", code_bytes as f64 / bytes.max(1) as f64),
+        );
         let bytecode = bytecode.map_or_else(|| "–".to_owned(), |bytes| bytes.to_string());
-        println!("| {name} | {instructions} | {bytecode} | {translation_ms:.1} | {code_bytes} |");
+        println!(
+            "| {name} | {instructions} | {bytecode} | {translation_ms:.1} | {code_bytes} | {ratio} |"
+        );
     }
 }
 

@@ -263,3 +263,50 @@ fn a_halted_tasks_axis_resumes_by_one_cycle_and_another_tasks_axis_keeps_its_tim
         );
     }
 }
+
+#[test]
+fn without_a_session_both_axes_turn_alike_under_both_engines_cycle_by_cycle() {
+    // The same machine without the debugger: every cycle runs natively, and the harness
+    // compares the axes and the memory of both engines after each (`docs/native-engine.md`
+    // §11.1); the positions before each period are read from the native engine as the
+    // harness feeds it.
+    let image = compiler::compile_project(&project()).expect("the project compiles");
+    let (master_at, spare_at) = (
+        position_offset(&image, "Master"),
+        position_offset(&image, "Spare"),
+    );
+    let mut positions: Vec<(f64, f64)> = Vec::new();
+    let mut calls = 0u64;
+    let cycles = u64::from(HALTING_CYCLE) + 20;
+    let simulation = runtime::differential::run_both(image, cycles, |_, engine| {
+        calls += 1;
+        // Each period feeds the interpreter first, then the native engine.
+        if calls.is_multiple_of(2) {
+            let data = engine.region(Region::Data);
+            positions.push((lreal(data, master_at), lreal(data, spare_at)));
+        }
+    })
+    .unwrap_or_else(|difference| panic!("the engines differ: {difference}"));
+    assert!(simulation.faults().is_empty(), "{:?}", simulation.faults());
+    assert_eq!(positions.len() as u64, cycles);
+    if runtime::engine::EngineChoice::native_available() {
+        assert!(simulation.engine().native_entries() > 0);
+    }
+    // Both at full speed long before the end: Master one MotionTask cycle's travel per period,
+    // Spare one MainTask cycle's travel every fifth period.
+    let per_cycle = VELOCITY * MOTION_NS as f64 / 1e9;
+    let spare_per_cycle = VELOCITY * MAIN_NS as f64 / 1e9;
+    let periods_per_main = (MAIN_NS / MOTION_NS) as usize;
+    let late = &positions[200..];
+    for pair in late.windows(2) {
+        let step = moved(pair[0].0, pair[1].0);
+        assert!((step - per_cycle).abs() < 1e-6, "Master moved {step}°");
+    }
+    for pair in late.windows(periods_per_main + 1) {
+        let step = moved(pair[0].1, pair[periods_per_main].1);
+        assert!(
+            (step - spare_per_cycle).abs() < 1e-6,
+            "Spare moved {step}° in one MainTask period"
+        );
+    }
+}

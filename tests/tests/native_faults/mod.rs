@@ -1,8 +1,9 @@
 //! Every fault the native engine's checks raise (`docs/native-engine.md` §4.7, §11.2), each
 //! instruction that raises it: compiled, run under both engines and compared
 //! (`runtime::differential::run_both`), then the one fault checked for its task, kind, POU,
-//! file and line, and the other task seen to go on.
+//! file, line and the instruction that raised it, and the other task seen to go on.
 
+use program_image::{BinaryOp, Instr};
 use runtime::engine::{FaultKind, FaultRecord};
 
 /// A program that counts its cycles in a task of its own, beside the faulting one.
@@ -14,10 +15,11 @@ const CYCLES: u64 = 3;
 /// Compiles `source` (which declares a program `bad` that faults in its first cycle at the line
 /// holding `marker`) with [`TICK`], each program in a task of its own (`Bad`, then `Fast`), runs
 /// it under both engines and checks the fault: task `Bad`, kind `kind`, POU `pou`, file
-/// `test.st` at `marker`'s line; `tick` ran every cycle.
+/// `test.st` at `marker`'s line, raised by an instruction `raised_by` accepts; `tick` ran every
+/// cycle.
 #[track_caller]
-fn faults(source: &str, marker: &str, pou: &str, kind: FaultKind) {
-    faults_as(source, marker, pou, |found| *found == kind);
+fn faults(source: &str, marker: &str, pou: &str, raised_by: fn(&Instr) -> bool, kind: FaultKind) {
+    faults_as(source, marker, pou, raised_by, |found| *found == kind);
 }
 
 /// [`faults`] with the kind checked by `is_expected`, for a kind whose value depends on the
@@ -27,6 +29,7 @@ fn faults_as(
     source: &str,
     marker: &str,
     pou: &str,
+    raised_by: fn(&Instr) -> bool,
     is_expected: impl Fn(&FaultKind) -> bool,
 ) -> FaultRecord {
     let text = format!("{source}\n{TICK}\n");
@@ -50,7 +53,7 @@ fn faults_as(
         Ok(image) => image,
         Err(error) => panic!("the source does not compile: {error:?}"),
     };
-    let simulation = crate::simulate(image, CYCLES);
+    let simulation = crate::simulate(image.clone(), CYCLES);
     let [fault] = simulation.faults() else {
         panic!("one fault expected: {:?}", simulation.faults())
     };
@@ -65,6 +68,15 @@ fn faults_as(
     assert_eq!(fault.file.as_deref(), Some("test.st"), "{fault}");
     assert_eq!(fault.line, Some(line), "{fault}");
     assert_eq!(fault.cycle, 0, "{fault}");
+    let instruction = image
+        .pous
+        .iter()
+        .find(|found| found.name == fault.pou)
+        .and_then(|found| found.code.get(fault.instruction as usize));
+    assert!(
+        instruction.is_some_and(raised_by),
+        "{fault}: raised by {instruction:?}"
+    );
     assert_eq!(crate::value(&simulation, "tick.n"), CYCLES.to_string());
     assert_eq!(simulation.cycles()[1], CYCLES);
     fault.clone()
@@ -81,7 +93,34 @@ fn div_and_mod_by_zero_fault_in_every_integer_width() {
                  c := a {op} b; (* faults *)
                  END_PROGRAM"
             );
-            faults(&source, "faults", "bad", FaultKind::DivisionByZero);
+            let raised_by: fn(&Instr) -> bool = if op == "/" {
+                |instr| {
+                    matches!(
+                        instr,
+                        Instr::Binary {
+                            op: BinaryOp::Div,
+                            ..
+                        }
+                    )
+                }
+            } else {
+                |instr| {
+                    matches!(
+                        instr,
+                        Instr::Binary {
+                            op: BinaryOp::Mod,
+                            ..
+                        }
+                    )
+                }
+            };
+            faults(
+                &source,
+                "faults",
+                "bad",
+                raised_by,
+                FaultKind::DivisionByZero,
+            );
         }
     }
 }
@@ -94,6 +133,7 @@ fn an_array_index_outside_its_bounds_faults_with_the_bounds() {
          END_PROGRAM",
         "read",
         "bad",
+        |instr| matches!(instr, Instr::LoadElement { .. }),
         FaultKind::IndexOutOfBounds {
             index: 11,
             low: 1,
@@ -106,6 +146,7 @@ fn an_array_index_outside_its_bounds_faults_with_the_bounds() {
          END_PROGRAM",
         "write",
         "bad",
+        |instr| matches!(instr, Instr::StoreElement { .. }),
         FaultKind::IndexOutOfBounds {
             index: -6,
             low: -5,
@@ -123,6 +164,7 @@ fn a_string_character_index_past_the_capacity_faults() {
          END_PROGRAM",
         "character",
         "bad",
+        |instr| matches!(instr, Instr::LoadElement { .. }),
         FaultKind::IndexOutOfBounds {
             index: 5,
             low: 0,
@@ -142,6 +184,7 @@ fn an_open_array_index_outside_its_bounds_faults_in_the_function() {
          END_PROGRAM",
         "open",
         "Get",
+        |instr| matches!(instr, Instr::OpenElement { .. }),
         FaultKind::IndexOutOfBounds {
             index: 4,
             low: 0,
@@ -158,6 +201,7 @@ fn null_pointers_fault_when_read_written_or_moved_into() {
          END_PROGRAM",
         "load",
         "bad",
+        |instr| matches!(instr, Instr::Load { .. }),
         FaultKind::NullPointer,
     );
     faults(
@@ -166,6 +210,7 @@ fn null_pointers_fault_when_read_written_or_moved_into() {
          END_PROGRAM",
         "store",
         "bad",
+        |instr| matches!(instr, Instr::Store { .. }),
         FaultKind::NullPointer,
     );
     faults(
@@ -175,6 +220,7 @@ fn null_pointers_fault_when_read_written_or_moved_into() {
          END_PROGRAM",
         "member",
         "bad",
+        |instr| matches!(instr, Instr::Offset { .. }),
         FaultKind::NullPointer,
     );
 }
@@ -188,6 +234,7 @@ fn calls_through_null_instances_fault_at_the_call() {
          END_PROGRAM",
         "indirect",
         "bad",
+        |instr| matches!(instr, Instr::CallBlock { indirect: true, .. }),
         FaultKind::NullPointer,
     );
     faults(
@@ -199,6 +246,15 @@ fn calls_through_null_instances_fault_at_the_call() {
          END_PROGRAM",
         "method",
         "bad",
+        |instr| {
+            matches!(
+                instr,
+                Instr::CallFunction {
+                    instance: Some(_),
+                    ..
+                }
+            )
+        },
         FaultKind::NullPointer,
     );
     faults(
@@ -208,6 +264,7 @@ fn calls_through_null_instances_fault_at_the_call() {
          END_PROGRAM",
         "virtual",
         "bad",
+        |instr| matches!(instr, Instr::CallVirtual { .. }),
         FaultKind::NullPointer,
     );
 }
@@ -222,6 +279,7 @@ fn a_pointer_of_an_unknown_region_is_a_bad_pointer() {
          END_PROGRAM",
         "bad *",
         "bad",
+        |instr| matches!(instr, Instr::Load { .. }),
         FaultKind::BadPointer(0x0700_0000_0000_0004),
     );
 }
@@ -237,6 +295,41 @@ fn endless_recursion_overflows_the_stack() {
          END_PROGRAM",
         "recursion",
         "Deep",
+        |instr| matches!(instr, Instr::CallFunction { .. }),
         FaultKind::StackOverflow,
+    );
+}
+
+#[test]
+fn an_element_reached_through_the_pointer_path_faults_with_its_bounds() {
+    // Two variable indices keep the pointer path (`Address`, then an `Element` per index):
+    // the second index is outside.
+    faults(
+        "PROGRAM bad VAR a : ARRAY[1..2, 1..3] OF INT; i : INT := 1; j : INT := 4; x : INT; END_VAR
+         x := a[i, j]; (* element *)
+         END_PROGRAM",
+        "element",
+        "bad",
+        |instr| matches!(instr, Instr::Element { .. }),
+        FaultKind::IndexOutOfBounds {
+            index: 4,
+            low: 1,
+            high: 3,
+        },
+    );
+    // An array reached through a pointer, one index.
+    faults(
+        "PROGRAM bad VAR a : ARRAY[0..3] OF DINT; p : POINTER TO ARRAY[0..3] OF DINT; i : DINT := -1; x : DINT; END_VAR
+         p := ADR(a);
+         x := p^[i]; (* through *)
+         END_PROGRAM",
+        "through",
+        "bad",
+        |instr| matches!(instr, Instr::Element { .. }),
+        FaultKind::IndexOutOfBounds {
+            index: -1,
+            low: 0,
+            high: 3,
+        },
     );
 }

@@ -513,3 +513,204 @@ fn nested_calls_count_their_depth_and_copy_large_transfers() {
     let outer_frame = fixture.frame_at() + u64::from(FRAME_SIZE);
     assert_eq!(host.frames, vec![(1, outer_frame), (2, outer_frame + 104)]);
 }
+
+/// `Nest` (POU 1) calls `Leaf` (POU 2) through `Leaf`'s enter stub at its instruction 1,
+/// after a move; `Leaf` adds its instance's second DINT to its first.
+fn nested_block_calls(leaf_frame_size: u32) -> Vec<Pou> {
+    let nest = pou(
+        "Nest",
+        PouKind::FunctionBlock,
+        8,
+        16,
+        vec![
+            Instr::Move {
+                ty: Dint,
+                dst: I(12),
+                src: I(0),
+            },
+            Instr::CallBlock {
+                pou: 2,
+                instance: I(0),
+                indirect: false,
+            },
+        ],
+    );
+    let leaf = pou(
+        "Leaf",
+        PouKind::FunctionBlock,
+        leaf_frame_size,
+        8,
+        vec![add(I(0), I(0), I(4))],
+    );
+    vec![nest, leaf]
+}
+
+fn call_nest() -> Instr {
+    Instr::CallBlock {
+        pou: 1,
+        instance: I(32),
+        indirect: false,
+    }
+}
+
+#[test]
+fn the_enter_stub_reports_a_frame_past_the_stack_at_its_call_site() {
+    // The program's frame is 128 bytes of a 256-byte stack, `Nest`'s 8 follow; `Leaf`'s 200
+    // do not fit, 16 do.
+    let fixture = fixture(vec![call_nest()], nested_block_calls(200), 256);
+    let mut host = fixture.host();
+    host.put(32, 5, 4);
+    host.put(36, 3, 4);
+    assert_eq!(run_entry(&fixture, &mut host, 0, false), Status::Faulted);
+    assert_eq!(host.faults, vec![(site(1, 1), NativeFault::StackOverflow)]);
+    // Nothing of `Leaf` ran, and the move before the call did.
+    assert_eq!(host.get(32, 4), 5);
+    assert_eq!(host.get(44, 4), 5);
+    assert!(host.frames.is_empty());
+    let fixture = self::fixture(vec![call_nest()], nested_block_calls(16), 256);
+    let mut host = fixture.host();
+    host.put(32, 5, 4);
+    host.put(36, 3, 4);
+    assert_eq!(run_entry(&fixture, &mut host, 0, false), Status::Ok);
+    assert_eq!(host.get(32, 4), 8);
+    // A machine stack below its limit is found by the stub at the first call site.
+    let mut host = fixture.host();
+    assert_eq!(
+        run_entry(&fixture, &mut host, u64::MAX, false),
+        Status::Faulted
+    );
+    assert_eq!(host.faults, vec![(site(0, 0), NativeFault::StackOverflow)]);
+    // With `due` set, both stubs make their safe point at their call sites, at the depth
+    // counted before them, and the calls go on with their instances and frames.
+    let mut host = fixture.host();
+    host.put(32, 5, 4);
+    host.put(36, 3, 4);
+    assert_eq!(run_entry(&fixture, &mut host, 0, true), Status::Ok);
+    assert_eq!(host.get(32, 4), 8);
+    assert_eq!(host.get(44, 4), 5);
+    let depths: Vec<(Site, u32)> = host
+        .ticks
+        .iter()
+        .map(|(site, counters)| (*site, counters.depth))
+        .collect();
+    assert_eq!(depths, vec![(site(0, 0), 0), (site(1, 1), 1)]);
+}
+
+#[test]
+fn a_block_calling_itself_faults_at_depth_2000_through_its_enter_stub() {
+    // `Again` counts itself in its instance, then calls itself on the same instance.
+    let again = pou(
+        "Again",
+        PouKind::FunctionBlock,
+        8,
+        8,
+        vec![
+            add(I(0), I(0), I(4)),
+            Instr::CallBlock {
+                pou: 1,
+                instance: I(0),
+                indirect: false,
+            },
+        ],
+    );
+    let main = vec![Instr::CallBlock {
+        pou: 1,
+        instance: I(32),
+        indirect: false,
+    }];
+    let fixture = fixture(main, vec![again], 32_768);
+    let mut host = fixture.host();
+    host.put(36, 1, 4);
+    let mut counters = Counters {
+        depth: 0,
+        budget: 4096,
+    };
+    let due = AtomicBool::new(false);
+    assert_eq!(
+        fixture.run_with(&mut host, &due, &mut counters),
+        Status::Faulted
+    );
+    assert_eq!(host.get(32, 4), 2000);
+    assert_eq!(host.faults, vec![(site(1, 1), NativeFault::StackOverflow)]);
+    assert_eq!(counters.depth, 0);
+    // Entered at depth 1 (an interpreted caller counted the program's call), one call less.
+    let mut host = fixture.host();
+    host.put(36, 1, 4);
+    counters.depth = 1;
+    assert_eq!(
+        fixture.run_with(&mut host, &due, &mut counters),
+        Status::Faulted
+    );
+    assert_eq!(host.get(32, 4), 1999);
+    assert_eq!(counters.depth, 1);
+}
+
+#[test]
+fn a_callee_instance_past_the_memory_is_a_memory_fault_at_the_call_site() {
+    // A function on the caller's instance (256 bytes at 256) whose instance is larger than
+    // the caller's: checked at the call site, as the caller's own instance covers only its
+    // own size.
+    let wide = |instance_size: u32| {
+        let mut wide = adder(16);
+        wide.instance_size = instance_size;
+        wide
+    };
+    let main = vec![
+        Instr::Move {
+            ty: Dint,
+            dst: I(20),
+            src: I(0),
+        },
+        call_adder(),
+    ];
+    let fixture = fixture(main.clone(), vec![wide(1 << 20)], 512);
+    let mut host = fixture.host();
+    host.put(0, 35, 4);
+    assert_eq!(fixture.run(&mut host), Status::Faulted);
+    assert_eq!(host.faults, vec![(site(0, 1), NativeFault::Memory)]);
+    assert_eq!(host.get(8, 4), 0);
+    // A larger instance that still lies inside the memory is called.
+    let fixture = self::fixture(main, vec![wide(INSTANCE_SIZE + 64)], 512);
+    let mut host = fixture.host();
+    host.put(0, 35, 4);
+    assert_eq!(fixture.run(&mut host), Status::Ok);
+    assert_eq!(host.get(8, 4), 42);
+}
+
+#[test]
+fn a_large_frame_the_host_cannot_prepare_is_a_memory_fault_at_the_call_site() {
+    // `Leaf`'s 100-byte frame is prepared by `rivet_jit_frame`; a host that fails it (here
+    // one that knows no POU's frame) makes the stub record `Memory` at `Nest`'s call.
+    let fixture = fixture(vec![call_nest()], nested_block_calls(100), 512);
+    let mut host = fixture.host();
+    host.frame_shapes.clear();
+    host.put(32, 5, 4);
+    assert_eq!(run_entry(&fixture, &mut host, 0, false), Status::Faulted);
+    assert_eq!(host.faults, vec![(site(1, 1), NativeFault::Memory)]);
+    assert_eq!(host.frames.len(), 1);
+    // With the frame prepared, the call runs.
+    let mut host = fixture.host();
+    host.put(32, 5, 4);
+    host.put(36, 3, 4);
+    assert_eq!(run_entry(&fixture, &mut host, 0, false), Status::Ok);
+    assert_eq!(host.get(32, 4), 8);
+}
+
+#[test]
+fn call_sites_share_their_callee_stub() {
+    // The code a call site adds stays small: the checks, the frame and the depth are the
+    // stub's, made once per callee (§9.2). Measured as the bytes 100 more call sites add.
+    let calls = |count: usize| -> u64 {
+        let main = (0..count)
+            .map(|at| Instr::CallBlock {
+                pou: 1,
+                instance: I(32 + 8 * (at as u32 % 8)),
+                indirect: false,
+            })
+            .collect();
+        fixture(main, vec![block()], 512).code.code_bytes()
+    };
+    let per_site = (calls(200) - calls(100)) / 100;
+    // 49 bytes on x86-64 when written; aarch64 instructions take 4 bytes each.
+    assert!(per_site <= 96, "{per_site} bytes per call site");
+}

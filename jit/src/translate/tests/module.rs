@@ -254,8 +254,7 @@ struct Listing<'a> {
 }
 
 impl<'a> Listing<'a> {
-    /// The listing's blocks by their number, which labels name: cold blocks are listed
-    /// last, so the order of the listing is not the numbers' order.
+    /// The blocks by their numbers (the listing puts cold blocks last, out of order).
     fn new(listing: &'a str) -> Self {
         let mut blocks: Vec<Vec<&str>> = Vec::new();
         let mut current = None;
@@ -263,64 +262,57 @@ impl<'a> Listing<'a> {
             let number = line
                 .strip_prefix("block")
                 .and_then(|rest| rest.strip_suffix(':'))
-                .and_then(|digits| digits.parse::<usize>().ok());
+                .and_then(|number| number.parse::<usize>().ok());
             if let Some(number) = number {
                 if blocks.len() <= number {
                     blocks.resize(number + 1, Vec::new());
                 }
                 current = Some(number);
-            } else if let Some(number) = current {
-                blocks[number].push(line);
+            } else if let Some(block) = current {
+                blocks[block].push(line);
             }
         }
         Self { blocks }
     }
 
-    /// Whether block `index` is one of our fault exits: without a condition it calls out
-    /// (`rivet_jit_fault`, in the function's shared fault block) and returns (through the
-    /// shared exit block), going nowhere else.
+    /// Whether block `index` is one of our fault exits: from it, jumps only (no two-way
+    /// branch) lead through a call out (`rivet_jit_fault`, in the function's shared fault
+    /// block) to a return.
     fn is_fault_exit(&self, index: usize) -> bool {
-        let mut called = false;
+        let mut seen = Vec::new();
+        let mut calls = false;
         let mut at = index;
-        // Every block is visited at most once on an unconditional path.
-        for _ in 0..self.blocks.len() {
+        loop {
+            if seen.contains(&at) {
+                return false;
+            }
+            seen.push(at);
             let Some(lines) = self.blocks.get(at) else {
                 return false;
             };
-            let targets: Vec<usize> = lines
-                .iter()
-                .flat_map(|line| line.split_whitespace())
-                .filter_map(Self::label)
-                .collect();
-            called |= lines
+            calls |= lines
                 .iter()
                 .any(|line| line.contains("call") || line.contains("blr"));
             if lines
                 .iter()
                 .any(|line| line.trim_start().starts_with("ret"))
             {
-                return called && targets.is_empty();
+                return calls;
             }
-            match targets[..] {
-                [next] => at = next,
+            let targets: Vec<usize> = lines
+                .iter()
+                .flat_map(|line| line.split_whitespace().filter_map(label))
+                .collect();
+            match targets.as_slice() {
+                [next] => at = *next,
                 _ => return false,
             }
         }
-        false
-    }
-
-    /// The block number a word of the listing names (`label12`), if it names one.
-    fn label(word: &str) -> Option<usize> {
-        word.trim_matches(|c: char| !c.is_ascii_alphanumeric())
-            .strip_prefix("label")?
-            .parse()
-            .ok()
     }
 
     /// The blocks entered only from a two-way branch whose other way is a fault exit: the
     /// code past one of our checks.
     fn after_a_fault_check(&self) -> Vec<usize> {
-        let label = Self::label;
         let mut entries: Vec<Vec<(usize, Vec<usize>)>> = vec![Vec::new(); self.blocks.len()];
         for (from, lines) in self.blocks.iter().enumerate() {
             for line in lines {
@@ -345,6 +337,14 @@ impl<'a> Listing<'a> {
             })
             .collect()
     }
+}
+
+/// The block a word of a listing names (`label12`), if it names one.
+fn label(word: &str) -> Option<usize> {
+    word.trim_matches(|c: char| !c.is_ascii_alphanumeric())
+        .strip_prefix("label")?
+        .parse()
+        .ok()
 }
 
 fn constant_reads(first: Vec<Instr>) -> Vec<Instr> {
