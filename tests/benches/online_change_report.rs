@@ -23,16 +23,12 @@ use online::{Client, TraceConfig, Trigger};
 use runtime::scheduler::{Scheduler, SchedulerOptions};
 
 mod bench_runtime;
+mod large_project;
 
-#[path = "../../compiler/benches/generate/mod.rs"]
-mod generate;
+use large_project::{EDITED, INTERVAL_US, image, source};
 
 /// The password the runtime is given, so that every changing request carries a token.
 const PASSWORD: &str = "online-change-benchmark";
-/// The interval of the task that runs the project.
-const INTERVAL_US: u32 = 10_000;
-/// The function block whose expression is changed and which gets a variable.
-const EDITED: &str = "FB_Station500";
 /// The samples the trace keeps: 20 s of the 10 ms task, more than the change takes.
 const TRACE_SAMPLES: u32 = 2000;
 /// Online changes measured: the edit, its undoing, and so on.
@@ -47,64 +43,6 @@ fn main() {
         .build()
         .unwrap();
     runtime.block_on(bench());
-}
-
-/// The generated 50,000 lines with a program `Main` calling an instance of every function
-/// block; `edited` applies the change to [`EDITED`].
-fn source(edited: bool) -> (String, usize) {
-    let (mut source, pairs) = generate::project_source(50_000);
-    let mut main = String::from("PROGRAM Main\nVAR\n    n : UDINT;\n");
-    for index in 0..pairs {
-        main.push_str(&format!("    fb{index} : FB_Station{index};\n"));
-    }
-    main.push_str("END_VAR\nn := n + 1;\n");
-    // The blocks run with their timers off: the generated code is written to be checked, and
-    // after its timer's 500 ms its loops index past their arrays, which would fault the task.
-    for index in 0..pairs {
-        main.push_str(&format!(
-            "fb{index}(xEnable := FALSE, iMode := {});\n",
-            index % 7
-        ));
-    }
-    main.push_str("END_PROGRAM\n");
-    if edited {
-        let start = source
-            .find(&format!("FUNCTION_BLOCK {EDITED}\n"))
-            .expect("the generated project has the edited function block");
-        let end = start
-            + source[start..]
-                .find("END_FUNCTION_BLOCK")
-                .expect("the function block ends");
-        let block = source[start..end]
-            .replace(
-                "    iState : INT;\n",
-                "    iState : INT;\n    rLast : REAL;\n",
-            )
-            .replace(
-                "rSum := rSum + aValues[i]",
-                "rLast := rSum;\n        rSum := rSum - aValues[i]",
-            );
-        assert_ne!(block, source[start..end], "the edit changes the block");
-        source.replace_range(start..end, &block);
-    }
-    source.push_str(&main);
-    (source, pairs)
-}
-
-/// The project's image, with `Main` in a cyclic task of [`INTERVAL_US`].
-fn image(source: &str) -> Vec<u8> {
-    let built = compiler::SourceProject::new(source);
-    let mut project = built.project.clone();
-    project.tasks = vec![project_model::Task {
-        name: "Main10ms".to_owned(),
-        kind: project_model::TaskKind::Cyclic {
-            interval_us: INTERVAL_US,
-        },
-        priority: 0,
-        watchdog: None,
-        programs: vec!["Main".to_owned()],
-    }];
-    compiler::compile_project(&project).unwrap().encode()
 }
 
 /// Milliseconds of a duration, for the tables.

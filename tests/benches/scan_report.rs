@@ -8,10 +8,12 @@
 //! interpreter's ratio to Rust. The fixed cost of a cycle (the empty program) is shown on its own line and
 //! not subtracted. Then what the debugger costs a call-heavy cycle (`debugger_cost`), then the
 //! engines against the workloads' C twins (`c_twins`, `docs/native-engine.md` §11.3; gcc or
-//! `RIVET_CC` must be installed), and the native engine's code size for the example project and
-//! the generated 50,000-line project (`native_images`).
+//! `RIVET_CC` must be installed), then the native engine on whole projects, the example project
+//! and the generated 50,000-line project: their bytecode, machine code and translation time
+//! (`native_images`, §9.2, §9.3).
 //!
-//! `SCAN_SECTION=debugger` or `SCAN_SECTION=native` prints only that section.
+//! `SCAN_SECTION=debugger`, `SCAN_SECTION=native` or `SCAN_SECTION=translation` prints only
+//! that section.
 
 // A bench binary: it prints its table, and says on standard error why it stopped.
 #![allow(
@@ -26,8 +28,7 @@ use std::time::Instant;
 
 mod c_twins;
 mod debugger_cost;
-#[path = "../../compiler/benches/generate/mod.rs"]
-mod generate;
+mod large_project;
 mod native_images;
 mod workloads;
 
@@ -79,6 +80,12 @@ fn main() {
     // to the engine's debug forms moves.
     if std::env::var_os("SCAN_SECTION").is_some_and(|section| section == "debugger") {
         debugger_cost::report(&|f| median_ns(f));
+        return;
+    }
+    // `SCAN_SECTION=translation` only loads the whole projects natively, the figures a change
+    // to the translator moves (and a profiler's run).
+    if std::env::var_os("SCAN_SECTION").is_some_and(|section| section == "translation") {
+        native_images::report();
         return;
     }
     // `SCAN_SECTION=native` only compares the engines with the C twins.

@@ -2,10 +2,12 @@
 //!
 //! The function has the one signature of §4.1, `(context, instance, frame) -> status`. The
 //! memory's address lives in a variable reloaded from the context after every call (§7 rule 3),
-//! the watchdog budget in a variable stored to the context around every call (§4.2).
+//! the watchdog budget, in a POU with a backward jump, in a variable stored to the context
+//! around every call (§4.2).
 
 mod blocks;
 mod call;
+mod counted;
 pub(crate) mod host_calls;
 mod pointer;
 mod promote;
@@ -13,7 +15,6 @@ mod real;
 pub(crate) mod scalar;
 pub(crate) mod stub;
 
-use cranelift_codegen::ir::condcodes::IntCC;
 use cranelift_codegen::ir::{
     AbiParam, Block, BlockArg, FuncRef, Function, InstBuilder, MemFlagsData, Signature, Type,
     UserFuncName, Value, types,
@@ -178,17 +179,39 @@ pub(crate) struct Translator<'a, 'b> {
     pub(crate) frame: Value,
     /// The memory's address, reloaded after every call.
     memory: Variable,
+    /// The machine addresses of the instance and of the frame (`memory` plus each),
+    /// redefined with `memory`: an element access reaches its element in one addressing
+    /// mode from them, and in a loop without calls the addition stays out of the loop.
+    bases: [Variable; 2],
     /// Backward jumps left before the watchdog looks at the clock.
     budget: Variable,
     /// Whether the budget lives in `budget` at all: only a POU with a backward jump counts it
     /// down. In any other the variable would only ever hold what the context holds, so it
     /// is neither loaded nor stored, around calls or on return (§4.2).
     counts_budget: bool,
+    /// The address of the preemption flag `due`, read from the context once on entry when
+    /// the POU has a backward jump: the context does not change while the function runs, so
+    /// a back-edge reads only the flag.
+    due_pointer: Option<Value>,
+    /// The blocks every return goes through, returning `Ok` and `Faulted`, so that the
+    /// epilogue is emitted twice per function rather than at every check. They take no
+    /// parameter (a status passed from thousands of call sites would cost the register
+    /// allocator far more than the two blocks), and the budget is in the context when they
+    /// are entered: stored by the return or the fault, kept there by the call whose failure
+    /// it returns, or never anywhere else in a POU that does not count it.
+    returns: [Option<Block>; 2],
+    /// The blocks every fault goes through after its own write-back, so that a function
+    /// makes one call of `rivet_jit_fault` per kind of tail rather than one per check: the
+    /// first takes the instruction and the kind packed in one parameter
+    /// ([`pack_site`]) and passes zeros as the details, the second takes the three details
+    /// too. Most checks (stack, memory, null pointers, divisions) have no details, and one
+    /// argument is one move at the check.
+    fault_tails: [Option<Block>; 2],
     /// The instruction being translated.
     pub(crate) pc: u32,
-    /// Back-edge blocks of the current instruction and where each goes, to emit once the
-    /// current block is terminated.
-    back_edges: Vec<(Block, Block)>,
+    /// Back-edge blocks of the current instruction, where each goes and its target
+    /// instruction, to emit once the current block is terminated.
+    back_edges: Vec<(Block, Block, u32)>,
     /// The loops whose places are kept in variables (§5.3), in code order.
     promoted_loops: Vec<promote::PromotedLoop>,
     /// Per promoted loop: the block every entry from outside goes through.
@@ -197,17 +220,11 @@ pub(crate) struct Translator<'a, 'b> {
     active_loop: Option<usize>,
     /// Its places: the operand, its size, and the variable that holds it.
     promoted: Vec<(Operand, u32, Variable)>,
+    /// While the promoted copy of a counted loop is emitted: what its preheader checked.
+    hoisted: Option<counted::Hoisted>,
     /// Exit blocks of the current instruction out of the active loop and where each goes,
     /// to emit once the current block is terminated.
     exits: Vec<(Block, Block)>,
-    /// The function's one block that returns, with the status as its parameter, once
-    /// something branches to it: every return shares it, rather than each repeating the
-    /// function's epilogue.
-    exit: Option<Block>,
-    /// The function's shared blocks that record a fault and return `Faulted` (§4.7), once
-    /// something branches to them: without details, with the parameter `site` (the kind in
-    /// the high 32 bits, the instruction in the low), and with details, with `site, a, b, c`.
-    fault_exits: [Option<Block>; 2],
 }
 
 impl<'a, 'b> Translator<'a, 'b> {
@@ -231,7 +248,23 @@ impl<'a, 'b> Translator<'a, 'b> {
         let params = builder.block_params(entry).to_vec();
         let (context, instance, frame) = (params[0], params[1], params[2]);
         let memory = builder.declare_var(types::I64);
+        let bases = [
+            builder.declare_var(types::I64),
+            builder.declare_var(types::I64),
+        ];
         let budget = builder.declare_var(types::I32);
+        // A POU with a backward jump counts the budget and reads the flag `due` at its
+        // back-edges; any other does neither. The flag's address is loaded only where a
+        // back-edge reads it: a load the code generator keeps even unused, and one it may
+        // move (read-only) it copies to every back-edge of a large function.
+        let backward = pou.code.iter().enumerate().any(|(at, instr)| {
+            promote::jump_target(instr).is_some_and(|target| target as usize <= at)
+        });
+        let due_pointer = backward.then(|| {
+            builder
+                .ins()
+                .load(types::I64, context_flags(), context, context::DUE)
+        });
         let mut translator = Self {
             builder,
             layout: environment.layout,
@@ -251,23 +284,20 @@ impl<'a, 'b> Translator<'a, 'b> {
             instance,
             frame,
             memory,
+            bases,
             budget,
-            counts_budget: pou.code.iter().enumerate().any(|(pc, instr)| {
-                matches!(
-                    instr,
-                    Instr::Jump { target } | Instr::JumpIf { target, .. } | Instr::JumpIfNot { target, .. }
-                        if *target as usize <= pc
-                )
-            }),
+            counts_budget: backward,
+            due_pointer,
+            returns: [None; 2],
+            fault_tails: [None; 2],
             pc: 0,
             back_edges: Vec::new(),
             promoted_loops,
             preheaders,
             active_loop: None,
             promoted: Vec::new(),
+            hoisted: None,
             exits: Vec::new(),
-            exit: None,
-            fault_exits: [None; 2],
         };
         translator.reload_memory();
         translator.load_budget();
@@ -295,72 +325,8 @@ impl<'a, 'b> Translator<'a, 'b> {
             self.builder.switch_to_block(end);
             self.return_status(0);
         }
-        self.emit_shared_exits();
-    }
-
-    /// Emits the shared fault blocks and the shared `Faulted` return, those something
-    /// branched to. No loop is active here, so recording a fault has nothing to write back.
-    fn emit_shared_exits(&mut self) {
-        for (at, detailed) in [(0, false), (1, true)] {
-            let Some(block) = self.fault_exits[at] else {
-                continue;
-            };
-            self.builder.switch_to_block(block);
-            let params = self.builder.block_params(block).to_vec();
-            let site = params[0];
-            let pc = self.builder.ins().ireduce(types::I32, site);
-            let kind = self.builder.ins().ushr_imm_u(site, 32);
-            let kind = self.builder.ins().ireduce(types::I32, kind);
-            let pou = self.builder.ins().iconst(types::I32, i64::from(self.pou));
-            let mut arguments = vec![self.context, pou, pc, kind];
-            if detailed {
-                arguments.extend_from_slice(&params[1..4]);
-            } else {
-                let zero = self.builder.ins().iconst(types::I64, 0);
-                arguments.extend([zero, zero, zero]);
-            }
-            // The callback is the function's last act: nothing is read after it (the host
-            // keeps the counters it was given), so nothing but its arguments lives across it
-            // and a POU whose only calls are its faults saves no register for them.
-            self.store_budget();
-            let fault = self.func_ref(Import::Fault);
-            self.builder.ins().call(fault, &arguments);
-            self.return_status(1);
-        }
-        if let Some(block) = self.exit {
-            self.builder.switch_to_block(block);
-            self.store_budget();
-            let status = self.builder.block_params(block)[0];
-            self.builder.ins().return_(&[status]);
-        }
-    }
-
-    /// The shared block that stores the budget and returns its parameter.
-    fn exit_block(&mut self) -> Block {
-        if let Some(block) = self.exit {
-            return block;
-        }
-        let block = self.builder.create_block();
-        self.builder.append_block_param(block, types::I32);
-        self.exit = Some(block);
-        block
-    }
-
-    /// The shared block that records a fault with (`detailed`) or without details.
-    fn fault_exit(&mut self, detailed: bool) -> Block {
-        if let Some(block) = self.fault_exits[usize::from(detailed)] {
-            return block;
-        }
-        let block = self.builder.create_block();
-        self.builder.set_cold_block(block);
-        self.builder.append_block_param(block, types::I64);
-        if detailed {
-            for _ in 0..3 {
-                self.builder.append_block_param(block, types::I64);
-            }
-        }
-        self.fault_exits[usize::from(detailed)] = Some(block);
-        block
+        self.emit_fault_tails();
+        self.emit_returns();
     }
 
     /// Emits instruction `index`, starting its block if it starts one; `reachable` says
@@ -608,54 +574,66 @@ impl<'a, 'b> Translator<'a, 'b> {
             return destination;
         }
         let back_edge = self.builder.create_block();
-        self.back_edges.push((back_edge, destination));
+        self.back_edges.push((back_edge, destination, target));
         back_edge
     }
 
     /// Emits the back-edge blocks the current instruction branches to: `budget -= 1`, and
-    /// when the flag `due` is set or the budget is spent, `rivet_jit_tick` at this site.
+    /// when the budget is spent or the flag `due` is set, `rivet_jit_tick` at this site. The
+    /// two tests are two branches (a decrement and a jump on zero, a byte compared in memory
+    /// and a jump), so that the common case is one load of the flag and no other memory.
     fn emit_back_edges(&mut self) {
-        for (back_edge, destination) in std::mem::take(&mut self.back_edges) {
+        for (back_edge, destination, target) in std::mem::take(&mut self.back_edges) {
             self.builder.switch_to_block(back_edge);
             let budget = self.builder.use_var(self.budget);
             let budget = self.builder.ins().iadd_imm_s(budget, -1);
             self.builder.def_var(self.budget, budget);
-            let due_pointer =
-                self.builder
-                    .ins()
-                    .load(types::I64, context_flags(), self.context, context::DUE);
+            let slow = self.builder.create_block();
+            self.builder.set_cold_block(slow);
+            let flag = self.builder.create_block();
+            self.builder.ins().brif(budget, flag, &[], slow, &[]);
+            self.builder.switch_to_block(flag);
+            let due_pointer = match self.due_pointer {
+                Some(loaded) => loaded,
+                None => {
+                    self.builder
+                        .ins()
+                        .load(types::I64, context_flags(), self.context, context::DUE)
+                }
+            };
             // An atomic load, so that the flag is read anew at every back-edge (§4.5).
             let due = self
                 .builder
                 .ins()
                 .atomic_load(types::I8, context_flags(), due_pointer);
-            let spent = self.builder.ins().icmp_imm_u(IntCC::Equal, budget, 0);
-            let due_set = self.builder.ins().icmp_imm_u(IntCC::NotEqual, due, 0);
-            let slow_needed = self.builder.ins().bor(spent, due_set);
-            let slow = self.builder.create_block();
-            self.builder.set_cold_block(slow);
-            self.builder
-                .ins()
-                .brif(slow_needed, slow, &[], destination, &[]);
+            self.builder.ins().brif(due, slow, &[], destination, &[]);
             self.builder.switch_to_block(slow);
             let pou = self.builder.ins().iconst(types::I32, i64::from(self.pou));
             let pc = self.builder.ins().iconst(types::I32, i64::from(self.pc));
             let status = self.call_host(Import::Tick, &[self.context, pou, pc]);
             self.return_if_faulted(status);
+            // A tick may change memory: a loop whose checks were made once in its preheader
+            // goes back there, to make them again on what memory holds now (§5.3).
+            if let Some(preheader) = self.recheck_after_tick(target) {
+                self.builder.ins().jump(preheader, &[]);
+                continue;
+            }
             // Only once the tick succeeded: the memory is then as long as it was checked.
             self.reload_promoted();
             self.builder.ins().jump(destination, &[]);
         }
     }
 
-    /// Returns `Faulted` when `status` is not 0, else goes on in a new block.
+    /// Returns `Faulted` when `status` is not 0, else goes on in a new block. Called right
+    /// after a call (a callback, an entry stub or a POU function), after which the context
+    /// holds the budget (the call stored it where this POU counts it, and the callee leaves
+    /// it there on every return), so the way out stores nothing: the budget does not flow into the shared exit
+    /// block, which keeps the register allocator's work small in functions with thousands of
+    /// calls.
     pub(crate) fn return_if_faulted(&mut self, status: Value) {
-        // A status that is not 0 is 1, `Faulted` (§4.1): it is returned as it is.
-        let exit = self.exit_block();
+        let exit = self.exit_block(1);
         let next = self.builder.create_block();
-        self.builder
-            .ins()
-            .brif(status, exit, &[BlockArg::Value(status)], next, &[]);
+        self.builder.ins().brif(status, exit, &[], next, &[]);
         self.builder.switch_to_block(next);
     }
 
@@ -671,37 +649,110 @@ impl<'a, 'b> Translator<'a, 'b> {
         self.builder.switch_to_block(next);
     }
 
-    /// Records a fault at the current instruction and returns `Faulted`: a jump to the
-    /// function's shared fault block with the site as a constant, after writing the promoted
-    /// places back inside a promoted loop (§5.3), so the host sees memory as the interpreter
-    /// leaves it.
+    /// Records a fault at the current instruction and returns `Faulted`: the promoted places
+    /// written back here, then the shared tail with this site, the kind and the details.
     pub(crate) fn record_fault(&mut self, kind: u32, details: [Option<Value>; 3]) {
         self.write_back();
-        let site = (u64::from(kind) << 32 | u64::from(self.pc)) as i64;
-        let site = self.builder.ins().iconst(types::I64, site);
-        if details.iter().all(Option::is_none) {
-            let shared = self.fault_exit(false);
-            self.builder.ins().jump(shared, &[BlockArg::Value(site)]);
-        } else {
-            let mut arguments = vec![BlockArg::Value(site)];
+        let site = self
+            .builder
+            .ins()
+            .iconst(types::I64, pack_site(self.pc, kind));
+        let mut arguments = vec![BlockArg::Value(site)];
+        let detailed = details.iter().any(Option::is_some);
+        if detailed {
             for detail in details {
                 let value = detail.unwrap_or_else(|| self.builder.ins().iconst(types::I64, 0));
                 arguments.push(BlockArg::Value(value));
             }
-            let shared = self.fault_exit(true);
-            self.builder.ins().jump(shared, &arguments);
+        }
+        let tail = self.fault_tail_block(usize::from(detailed));
+        self.builder.ins().jump(tail, &arguments);
+    }
+
+    /// Stores the budget into the context and returns `status` (0 `Ok`, 1 `Faulted`) through
+    /// its shared exit block.
+    pub(crate) fn return_status(&mut self, status: usize) {
+        self.store_budget();
+        let exit = self.exit_block(status);
+        self.builder.ins().jump(exit, &[]);
+    }
+
+    /// The shared exit block returning `status`, made on first use; the one of `Faulted` is
+    /// cold.
+    fn exit_block(&mut self, status: usize) -> Block {
+        if let Some(exit) = self.returns[status] {
+            return exit;
+        }
+        let exit = self.builder.create_block();
+        if status != 0 {
+            self.builder.set_cold_block(exit);
+        }
+        self.returns[status] = Some(exit);
+        exit
+    }
+
+    /// The shared fault block without details (`detailed` 0) or with them (1), made on first
+    /// use; cold.
+    fn fault_tail_block(&mut self, detailed: usize) -> Block {
+        if let Some(tail) = self.fault_tails[detailed] {
+            return tail;
+        }
+        let tail = self.builder.create_block();
+        self.builder.set_cold_block(tail);
+        let parameters = if detailed == 0 { 1 } else { 4 };
+        for _ in 0..parameters {
+            self.builder.append_block_param(tail, types::I64);
+        }
+        self.fault_tails[detailed] = Some(tail);
+        tail
+    }
+
+    /// Emits the shared fault blocks that faults use: `rivet_jit_fault` at the site their
+    /// parameters name, then `Faulted`. They run after every promoted loop's write-back, so
+    /// they write nothing back themselves.
+    fn emit_fault_tails(&mut self) {
+        debug_assert!(self.promoted.is_empty(), "a fault tail inside a loop");
+        for tail in self.fault_tails.into_iter().flatten() {
+            self.builder.switch_to_block(tail);
+            let parameters = self.builder.block_params(tail).to_vec();
+            let pou = self.builder.ins().iconst(types::I32, i64::from(self.pou));
+            let pc = self.builder.ins().ushr_imm_u(parameters[0], 8);
+            let pc = self.builder.ins().ireduce(types::I32, pc);
+            let kind = self.builder.ins().band_imm_u(parameters[0], 0xFF);
+            let kind = self.builder.ins().ireduce(types::I32, kind);
+            let mut arguments = vec![self.context, pou, pc, kind];
+            match parameters[1..] {
+                [a, b, c] => arguments.extend([a, b, c]),
+                _ => {
+                    let zero = self.builder.ins().iconst(types::I64, 0);
+                    arguments.extend([zero, zero, zero]);
+                }
+            }
+            // The callback is the function's last act: nothing is read after it (the host
+            // keeps the budget it was given), so nothing but its arguments lives across it
+            // and a POU whose only calls are its faults saves no register for them. The
+            // budget is stored first, so it is in the context when `Faulted` is returned.
+            self.store_budget();
+            let fault = self.func_ref(Import::Fault);
+            self.builder.ins().call(fault, &arguments);
+            let exit = self.exit_block(1);
+            self.builder.ins().jump(exit, &[]);
         }
     }
 
-    /// Stores the budget back into the context and returns `status`.
-    pub(crate) fn return_status(&mut self, status: i64) {
-        let status = self.builder.ins().iconst(types::I32, status);
-        let exit = self.exit_block();
-        self.builder.ins().jump(exit, &[BlockArg::Value(status)]);
+    /// Emits the shared exit blocks that something returns through.
+    fn emit_returns(&mut self) {
+        for (status, exit) in self.returns.into_iter().enumerate() {
+            if let Some(exit) = exit {
+                self.builder.switch_to_block(exit);
+                let status = self.builder.ins().iconst(types::I32, status as i64);
+                self.builder.ins().return_(&[status]);
+            }
+        }
     }
 
-    /// Stores the budget into the context, before a call or a return, where this POU counts
-    /// it.
+    /// Stores the budget into the context, before a call, a fault or a return, where this POU
+    /// counts it.
     pub(crate) fn store_budget(&mut self) {
         if self.counts_budget {
             let budget = self.builder.use_var(self.budget);
@@ -729,6 +780,25 @@ impl<'a, 'b> Translator<'a, 'b> {
                 .ins()
                 .load(types::I64, context_flags(), self.context, context::MEMORY);
         self.builder.def_var(self.memory, memory);
+        for (variable, base) in self.bases.into_iter().zip([self.instance, self.frame]) {
+            let address = self.builder.ins().iadd(memory, base);
+            self.builder.def_var(variable, address);
+        }
+    }
+
+    /// The machine address and displacement of a direct operand, from the instance's or the
+    /// frame's machine address for their places: one register and a displacement.
+    pub(crate) fn based_operand_address(&mut self, operand: Operand) -> (Value, i32) {
+        let (variable, offset) = match operand {
+            Operand::Instance(offset) => (self.bases[0], offset),
+            Operand::Frame(offset) => (self.bases[1], offset),
+            fixed => return self.operand_address(fixed),
+        };
+        let address = self.builder.use_var(variable);
+        match i32::try_from(offset) {
+            Ok(displacement) => (address, displacement),
+            Err(_) => (self.builder.ins().iadd_imm_u(address, i64::from(offset)), 0),
+        }
     }
 
     /// The absolute offset of a direct operand in the engine's memory, as a value.
@@ -777,6 +847,9 @@ impl<'a, 'b> Translator<'a, 'b> {
         {
             return folded;
         }
+        if let Some(checked) = self.invariant(ty, operand) {
+            return checked;
+        }
         if let Some(promoted) = self.promoted_load(ty, operand) {
             return promoted;
         }
@@ -796,6 +869,12 @@ impl<'a, 'b> Translator<'a, 'b> {
             .ins()
             .store(memory_flags(), value, address, displacement);
     }
+}
+
+/// An instruction index and a fault kind (below 256, `fault_kind`) as the one parameter of
+/// a shared fault block: the index in the upper bits, the kind in the lowest byte.
+fn pack_site(pc: u32, kind: u32) -> i64 {
+    (i64::from(pc) << 8) | i64::from(kind & 0xFF)
 }
 
 /// The integer IR type of an elementary type's size (reals too: moves are bit copies).

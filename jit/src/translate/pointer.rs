@@ -8,6 +8,7 @@ use cranelift_codegen::ir::{InstBuilder, Type, Value, types};
 use program_image::{Elementary, Operand};
 
 use super::call::displaced;
+use super::counted::interpreter_high;
 use super::{Translator, context_flags, int_type, is_signed, memory_flags};
 use crate::context;
 use crate::fault_kind;
@@ -109,18 +110,36 @@ impl Translator<'_, '_> {
     /// interpreter computes it, so a fault reports the same bounds.
     fn checked_element_offset(
         &mut self,
-        (index, index_ty): (Operand, Elementary),
+        index: (Operand, Elementary),
         low: i64,
         count: u64,
         stride: u32,
     ) -> Value {
+        let (scaled, bias) = self.checked_scaled_index(index, low, count, stride);
+        self.builder.ins().iadd_imm_s(scaled, bias)
+    }
+
+    /// The checked element offset as `index · stride` and the constant `−low · stride`, whose
+    /// wrapping sum it is: the constant can then join an access's displacement, leaving one
+    /// addressing mode (base, index scaled, displacement) per element access.
+    fn checked_scaled_index(
+        &mut self,
+        (index, index_ty): (Operand, Elementary),
+        low: i64,
+        count: u64,
+        stride: u32,
+    ) -> (Value, i64) {
         let i = self.index_value(index, index_ty);
-        let high = low.saturating_add(i64::try_from(count.saturating_sub(1)).unwrap_or(i64::MAX));
-        let low_value = self.builder.ins().iconst(types::I64, low);
-        let high_value = self.builder.ins().iconst(types::I64, high);
-        self.check_index(i, index_ty, low_value, high_value);
-        let from_low = self.builder.ins().isub(i, low_value);
-        self.builder.ins().imul_imm_u(from_low, i64::from(stride))
+        // In a counted loop's promoted copy the preheader checked this index for every value
+        // the counter takes (`counted.rs`).
+        if !self.check_made_in_preheader() {
+            let low_value = self.builder.ins().iconst(types::I64, low);
+            let high = interpreter_high(low, count);
+            let high_value = self.builder.ins().iconst(types::I64, high);
+            self.check_index(i, index_ty, low_value, high_value);
+        }
+        let scaled = self.builder.ins().imul_imm_u(i, i64::from(stride));
+        (scaled, low.wrapping_mul(i64::from(stride)).wrapping_neg())
     }
 
     /// The machine address and displacement of the value a `LoadElement` or `StoreElement`
@@ -135,15 +154,16 @@ impl Translator<'_, '_> {
         (low, count, stride): (i64, u64, u32),
         offset: u32,
     ) -> (Value, i32) {
-        let moved = self.checked_element_offset(index, low, count, stride);
-        let (address, displacement) = self.operand_address(array);
-        let element = self.builder.ins().iadd(address, moved);
-        match displacement.checked_add_unsigned(offset) {
-            Some(displacement) => (element, displacement),
-            None => {
-                let reach = i64::from(displacement) + i64::from(offset);
-                (self.builder.ins().iadd_imm_s(element, reach), 0)
-            }
+        let (scaled, bias) = self.checked_scaled_index(index, low, count, stride);
+        let (address, displacement) = self.based_operand_address(array);
+        let element = self.builder.ins().iadd(address, scaled);
+        // The displacement, the member's offset and the bias, wrapping as the address does.
+        let reach = i64::from(displacement)
+            .wrapping_add(i64::from(offset))
+            .wrapping_add(bias);
+        match i32::try_from(reach) {
+            Ok(displacement) => (element, displacement),
+            Err(_) => (self.builder.ins().iadd_imm_s(element, reach), 0),
         }
     }
 

@@ -15,6 +15,7 @@ use cranelift_codegen::ir::condcodes::IntCC;
 use cranelift_codegen::ir::{Block, InstBuilder, MemFlagsData, Type, Value, types};
 use program_image::{Elementary, Instr, Operand};
 
+use super::counted::{CountedLoop, Hoisted, counted_loop};
 use super::{Translator, memory_flags};
 use crate::layout::Layout;
 
@@ -41,6 +42,9 @@ pub(crate) struct PromotedLoop {
     /// base: the analysis takes places of different bases as disjoint, which a test on entry
     /// confirms, running an unpromoted copy of the loop when they are not.
     pub(crate) guard: Option<Guard>,
+    /// When the loop is a counted `FOR` loop, the element accesses by its counter whose
+    /// checks its preheader makes (`counted.rs`).
+    pub(crate) counted: Option<CountedLoop>,
 }
 
 /// The smallest ranges holding every place a loop touches, per base: offsets from the
@@ -71,7 +75,7 @@ thread_local! {
 
 /// How an instruction touches a direct place.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Access {
+pub(crate) enum Access {
     /// Loaded through the translator's `load`.
     Read,
     /// Stored through the translator's `store`.
@@ -101,7 +105,11 @@ fn base(operand: Operand, layout: &Layout) -> Base {
 /// Whether `size_a` bytes at `a` and `size_b` bytes at `b` may share a byte, in a promoted
 /// loop: places of the same base are compared by offset; places of different bases are
 /// disjoint, as the loop's [`Guard`] confirms on entry.
-fn may_overlap(layout: &Layout, (a, size_a): (Operand, u32), (b, size_b): (Operand, u32)) -> bool {
+pub(crate) fn may_overlap(
+    layout: &Layout,
+    (a, size_a): (Operand, u32),
+    (b, size_b): (Operand, u32),
+) -> bool {
     let overlap = |x: u64, y: u64| x < y + u64::from(size_b) && y < x + u64::from(size_a);
     match (base(a, layout), base(b, layout)) {
         (Base::Fixed(x), Base::Fixed(y))
@@ -151,7 +159,7 @@ fn guard(layout: &Layout, all: &[(Operand, u32, Access)]) -> Option<Guard> {
 /// instruction a promoting loop must not contain: a call of any kind (a host operation, a
 /// copy larger than 64 bytes) or an access through a pointer, which may reach any place. An
 /// element access (`LoadElement`, `StoreElement`) touches its whole array.
-fn accesses(instr: &Instr) -> Option<Vec<(Operand, u32, Access)>> {
+pub(crate) fn accesses(instr: &Instr) -> Option<Vec<(Operand, u32, Access)>> {
     use Access::{Raw, Read, Write};
     let size = |ty: &Elementary| ty.size_bytes();
     Some(match instr {
@@ -237,7 +245,7 @@ fn array_extent(count: u64, stride: u32) -> Option<u32> {
     u32::try_from(count.checked_mul(u64::from(stride))?).ok()
 }
 
-fn jump_target(instr: &Instr) -> Option<u32> {
+pub(crate) fn jump_target(instr: &Instr) -> Option<u32> {
     match instr {
         Instr::Jump { target } | Instr::JumpIf { target, .. } | Instr::JumpIfNot { target, .. } => {
             Some(*target)
@@ -344,11 +352,16 @@ fn analyse(
             places.push(place);
         }
     }
-    (!places.is_empty()).then(|| PromotedLoop {
+    if places.is_empty() {
+        return None;
+    }
+    let counted = counted_loop(code, layout, (start, end), &places);
+    Some(PromotedLoop {
         start,
         end,
         places,
         guard: guard(layout, &all),
+        counted,
     })
 }
 
@@ -371,10 +384,10 @@ impl Translator<'_, '_> {
     }
 
     /// Emits promoted loop `position`: its preheader (every entry from outside goes through
-    /// it), which tests the guard and runs an unpromoted copy of the loop when its places of
-    /// different bases overlap, else loads the places into variables; then the loop on those
-    /// variables, which writes them back on every way out. Returns whether control falls
-    /// through past the loop's end.
+    /// it), which tests the guard and, for a counted loop, the checks it makes for the whole
+    /// loop, and runs an unpromoted copy of the loop when either fails, else loads the places
+    /// into variables; then the loop on those variables, which writes them back on every way
+    /// out. Returns whether control falls through past the loop's end.
     pub(crate) fn promoted_loop(&mut self, position: usize, reachable: bool) -> bool {
         let promoted = self.promoted_loops[position].clone();
         let (start, end) = (promoted.start as usize, promoted.end as usize);
@@ -383,17 +396,26 @@ impl Translator<'_, '_> {
             self.builder.ins().jump(preheader, &[]);
         }
         self.builder.switch_to_block(preheader);
-        if let Some(guard) = promoted.guard {
-            let overlapping = self.guard_fails(&guard);
+        let overlapping = promoted.guard.map(|guard| self.guard_fails(&guard));
+        let counted = promoted
+            .counted
+            .as_ref()
+            .map(|counted| self.counted_checks_fail(counted));
+        let fails = match (overlapping, counted.map(|(fails, _)| fails)) {
+            (Some(overlapping), Some(unchecked)) => {
+                Some(self.builder.ins().bor(overlapping, unchecked))
+            }
+            (one, other) => one.or(other),
+        };
+        // The unpromoted copy is emitted only when something can send the loop to it.
+        if let Some(fails) = fails {
             let saved = self.blocks.renew(start, end, &mut self.builder);
             let copy = self.blocks.at(start).unwrap_or(self.blocks.end());
             let on_variables = self.builder.create_block();
             #[cfg(not(test))]
-            self.builder
-                .ins()
-                .brif(overlapping, copy, &[], on_variables, &[]);
+            self.builder.ins().brif(fails, copy, &[], on_variables, &[]);
             #[cfg(test)]
-            self.counted_guard(overlapping, copy, on_variables);
+            self.counted_guard(fails, copy, on_variables);
             // The copy works on memory; its backward jumps to the start go through the
             // preheader, which tests the guard again.
             let mut falls_through = false;
@@ -417,6 +439,29 @@ impl Translator<'_, '_> {
             })
             .collect();
         self.active_loop = Some(position);
+        if let (Some(counted_loop), Some((_, [counter, end_value, step]))) =
+            (promoted.counted.as_ref(), counted)
+        {
+            let ty = place_type(counted_loop.ty.size_bytes());
+            self.hoisted = Some(Hoisted {
+                start: promoted.start,
+                preheader,
+                counter: counted_loop.counter,
+                accesses: counted_loop.accesses.clone(),
+                invariants: vec![
+                    (counted_loop.end, ty, end_value),
+                    (counted_loop.step, ty, step),
+                ],
+            });
+            // The counter starts from the value the checks were made for.
+            if let Some((_, _, variable)) = self
+                .promoted
+                .iter()
+                .find(|(place, _, _)| *place == counted_loop.counter)
+            {
+                self.builder.def_var(*variable, counter);
+            }
+        }
         self.reload_promoted();
         let header = self.blocks.at(start).unwrap_or(self.blocks.end());
         self.builder.ins().jump(header, &[]);
@@ -428,6 +473,7 @@ impl Translator<'_, '_> {
             self.write_back();
         }
         self.active_loop = None;
+        self.hoisted = None;
         self.promoted.clear();
         falls_through
     }
@@ -548,9 +594,14 @@ impl Translator<'_, '_> {
         }
     }
 
-    /// Loads every promoted place from memory into its variable.
+    /// Loads every promoted place from memory into its variable, but the counter of a counted
+    /// loop, which only its preheader and its increment set (`counted.rs`).
     pub(crate) fn reload_promoted(&mut self) {
+        let counter = self.hoisted_counter();
         for (operand, size, variable) in self.promoted.clone() {
+            if Some(operand) == counter {
+                continue;
+            }
             let value = self.raw_load(place_type(size), operand);
             self.builder.def_var(variable, value);
         }

@@ -512,3 +512,126 @@ fn lower_and_upper_bound_of_an_element_check_its_index() {
         assert_eq!(fault.line, Some(line), "{call}");
     }
 }
+
+/// The loops of POU `main` in `source`: the instructions from each backward jump's target to
+/// the jump.
+fn loops_of(source: &str) -> Vec<Vec<Instr>> {
+    let image = compile(source);
+    let Some(main) = image.pous.iter().find(|p| p.name == "main") else {
+        panic!("no POU 'main'");
+    };
+    main.code
+        .iter()
+        .enumerate()
+        .filter_map(|(at, instr)| match instr {
+            Instr::Jump { target } if *target as usize <= at => {
+                Some(main.code[*target as usize..=at].to_vec())
+            }
+            _ => None,
+        })
+        .collect()
+}
+
+#[test]
+fn a_for_loop_with_a_constant_step_has_the_shape_whose_element_checks_the_native_engine_hoists() {
+    // `jit::translate::counted` (docs/native-engine.md §5.3) recognises this shape: at the
+    // loop's start the counter compared with the end (Gt counting up, Lt counting down) and
+    // a JumpIf out, before the backward jump the step added to the counter. A change of
+    // the compiler's FOR loop that this test sees leaves those loops checked at every access.
+    for (source, upward) in [
+        (
+            "PROGRAM main VAR a : ARRAY[1..10] OF DINT; i, n : DINT; END_VAR
+             n := 10;
+             FOR i := 1 TO n DO a[i] := a[i] + i; END_FOR
+             END_PROGRAM",
+            true,
+        ),
+        (
+            "PROGRAM main VAR a : ARRAY[1..10] OF INT; i : INT; END_VAR
+             FOR i := 10 TO 1 BY -3 DO a[i] := i; END_FOR
+             END_PROGRAM",
+            false,
+        ),
+    ] {
+        let loops = loops_of(source);
+        let [body] = &loops[..] else {
+            panic!("one loop: {loops:?}")
+        };
+        let Instr::Compare { op, a: counter, .. } = body[0] else {
+            panic!("the test first: {body:?}")
+        };
+        let expected = if upward {
+            program_image::CompareOp::Gt
+        } else {
+            program_image::CompareOp::Lt
+        };
+        assert_eq!(op, expected);
+        assert!(matches!(body[1], Instr::JumpIf { .. }), "{body:?}");
+        let increment = &body[body.len() - 2];
+        assert!(
+            matches!(
+                increment,
+                Instr::Binary { op: program_image::BinaryOp::Add, dst, a, .. }
+                    if *dst == counter && *a == counter
+            ),
+            "{body:?}"
+        );
+        assert!(
+            body.iter().any(|instr| matches!(
+                instr,
+                Instr::LoadElement { index, .. } | Instr::StoreElement { index, .. }
+                    if *index == counter
+            )),
+            "{body:?}"
+        );
+    }
+}
+
+#[test]
+fn counted_for_loops_over_arrays_fault_at_the_interpreters_line_and_index() {
+    // Under the native engine each loop's index checks are made once before it; a loop that
+    // would leave its array runs its checked copy and stops at the same line, index and
+    // memory as the interpreter (`run` compares both engines after every cycle).
+    let source = "PROGRAM main VAR a : ARRAY[1..10] OF DINT; i, j, n, sum : DINT; END_VAR
+         n := 10;
+         FOR j := 1 TO 3 DO FOR i := 1 TO n DO a[i] := a[i] + i; END_FOR END_FOR
+         FOR i := 10 TO 1 BY -2 DO sum := sum + a[i]; END_FOR
+         END_PROGRAM";
+    let s = run(source, 2);
+    assert!(s.faults().is_empty(), "{:?}", s.faults());
+    assert_eq!(value(&s, "main.a[7]"), "42");
+    assert_eq!(value(&s, "main.sum"), "270");
+    assert_eq!(value(&s, "main.i"), "0");
+    for (loop_text, index, at) in [
+        ("FOR i := 1 TO n DO", 11, "main.a[10]"),
+        ("FOR i := n - 1 TO 0 BY -1 DO", 0, "main.a[1]"),
+    ] {
+        let source = format!(
+            "PROGRAM main VAR a : ARRAY[1..10] OF DINT; i, n : DINT; END_VAR
+             n := 11;
+             {loop_text}
+                 a[i] := a[i] + i;
+             END_FOR
+             END_PROGRAM"
+        );
+        let s = run(&source, 1);
+        let fault = only_fault(&s);
+        assert_eq!(
+            fault.kind,
+            FaultKind::IndexOutOfBounds {
+                index,
+                low: 1,
+                high: 10
+            },
+            "{loop_text}"
+        );
+        assert_eq!(
+            (fault.pou.as_str(), fault.line),
+            ("main", Some(4)),
+            "{loop_text}"
+        );
+        assert_eq!(value(&s, "main.i"), index.to_string(), "{loop_text}");
+        // The element next to the bound was reached before the fault.
+        assert_ne!(value(&s, at), "0", "{loop_text}");
+    }
+}

@@ -6,6 +6,7 @@
 
 mod call;
 mod control;
+mod counted;
 mod elements;
 mod integer;
 mod module;
@@ -67,6 +68,8 @@ struct TestHost {
     op_snapshots: Vec<Vec<u8>>,
     /// A byte of the instance each `op` writes, as the interpreter's instruction may.
     op_poke: Option<(u32, u8)>,
+    /// When set, a tick after this many fails, as the watchdog ends an endless loop.
+    watchdog_after_ticks: Option<usize>,
 }
 
 impl Host for TestHost {
@@ -79,6 +82,12 @@ impl Host for TestHost {
     }
     fn tick(&mut self, site: Site, counters: &mut Counters) -> Status {
         self.ticks.push((site, *counters));
+        if self
+            .watchdog_after_ticks
+            .is_some_and(|limit| self.ticks.len() > limit)
+        {
+            return Status::Faulted;
+        }
         if let Some(panics) = self.tick_releases_memory.take() {
             // A large buffer is unmapped when freed: code reading it after this faults.
             self.memory = Vec::new();
@@ -406,6 +415,7 @@ impl Fixture {
             tick_releases_memory: None,
             op_snapshots: Vec::new(),
             op_poke: None,
+            watchdog_after_ticks: None,
         }
     }
 
