@@ -53,8 +53,14 @@ pub(crate) enum Body {
     /// has moved on by `cycles` (the difference in [`watch_counter`]), notes it again at
     /// [`seen_at_end`], and counts its own cycles: a cycle that ends only after `cycles` cycles
     /// of task `task` ran after it started, which they can only do nested in it, so a test of
-    /// preemption needs no loop sized to this machine's speed.
-    WaitFor { task: usize, cycles: i32 },
+    /// preemption needs no loop sized to this machine's speed. With `sets_trigger`, it first
+    /// sets the event trigger `%MX4.0` (by writing 1 to `%MD1`), so that an event task
+    /// triggered by it can only run after this cycle started.
+    WaitFor {
+        task: usize,
+        cycles: i32,
+        sets_trigger: bool,
+    },
 }
 
 /// Where watching task `task` notes the sequence counter before its loop.
@@ -70,6 +76,11 @@ pub(crate) const fn seen_at_end(task: usize) -> u32 {
 /// The loop counter of watching task `task`.
 pub(crate) const fn watch_counter(task: usize) -> u32 {
     seen_at_start(task) + 8
+}
+
+/// Where the loop of watching task `task` writes whether it is done.
+const fn watch_done(task: usize) -> u32 {
+    seen_at_start(task) + 12
 }
 
 /// Where the watching tasks' slots start in the data region, past everything else.
@@ -165,7 +176,7 @@ pub(crate) fn image(tasks: &[TestTask], retained: &[(u32, u32)]) -> ProgramImage
                 ],
                 Body::Watch { sets_trigger, .. } => {
                     let counter = Operand::Global(watch_counter(index));
-                    let done = Operand::Global(watch_counter(index) + 4);
+                    let done = Operand::Global(watch_done(index));
                     let (first, value) = if sets_trigger {
                         (Operand::Memory(4), Operand::Const(0))
                     } else {
@@ -207,43 +218,55 @@ pub(crate) fn image(tasks: &[TestTask], retained: &[(u32, u32)]) -> ProgramImage
                         Instr::Return,
                     ]
                 }
-                Body::WaitFor { task, .. } => {
+                Body::WaitFor {
+                    task, sets_trigger, ..
+                } => {
                     let counted = Operand::Global(count(task));
                     let noted = Operand::Global(seen_at_start(index));
                     let moved = Operand::Global(watch_counter(index));
-                    let done = Operand::Global(watch_counter(index) + 4);
-                    vec![
-                        Instr::Move {
-                            ty: Elementary::Dint,
-                            dst: noted,
-                            src: counted,
-                        },
-                        Instr::Binary {
-                            op: BinaryOp::Sub,
-                            ty: Elementary::Dint,
-                            dst: moved,
-                            a: counted,
-                            b: noted,
-                        },
-                        Instr::Compare {
-                            op: CompareOp::Ge,
-                            ty: Elementary::Dint,
-                            dst: done,
-                            a: moved,
-                            b: Operand::Const(8 + 4 * index as u32),
-                        },
-                        Instr::JumpIfNot {
-                            cond: done,
-                            target: 1,
-                        },
-                        Instr::Move {
-                            ty: Elementary::Dint,
-                            dst: Operand::Global(seen_at_end(index)),
-                            src: counted,
-                        },
-                        add_one(Operand::Global(count(index)), one),
-                        Instr::Return,
-                    ]
+                    let done = Operand::Global(watch_done(index));
+                    // The trigger, when set, comes first and moves the loop on by one.
+                    let first = u32::from(sets_trigger);
+                    let trigger = sets_trigger.then_some(Instr::Move {
+                        ty: Elementary::Dint,
+                        dst: Operand::Memory(4),
+                        src: Operand::Const(0),
+                    });
+                    trigger
+                        .into_iter()
+                        .chain([
+                            Instr::Move {
+                                ty: Elementary::Dint,
+                                dst: noted,
+                                src: counted,
+                            },
+                            Instr::Binary {
+                                op: BinaryOp::Sub,
+                                ty: Elementary::Dint,
+                                dst: moved,
+                                a: counted,
+                                b: noted,
+                            },
+                            Instr::Compare {
+                                op: CompareOp::Ge,
+                                ty: Elementary::Dint,
+                                dst: done,
+                                a: moved,
+                                b: Operand::Const(8 + 4 * index as u32),
+                            },
+                            Instr::JumpIfNot {
+                                cond: done,
+                                target: first + 1,
+                            },
+                            Instr::Move {
+                                ty: Elementary::Dint,
+                                dst: Operand::Global(seen_at_end(index)),
+                                src: counted,
+                            },
+                            add_one(Operand::Global(count(index)), one),
+                            Instr::Return,
+                        ])
+                        .collect()
                 }
             };
             Pou {

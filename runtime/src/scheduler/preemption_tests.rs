@@ -43,7 +43,11 @@ const ENGINES: [EngineChoice; 2] = [EngineChoice::Interpreter, EngineChoice::Nat
 /// `cycles` cycles after it started.
 fn waiting_for(task: usize, cycles: i32, priority: u8) -> TestTask {
     TestTask {
-        body: Body::WaitFor { task, cycles },
+        body: Body::WaitFor {
+            task,
+            cycles,
+            sets_trigger: false,
+        },
         ..TestTask::cyclic(MINUTE, priority)
     }
 }
@@ -218,19 +222,26 @@ fn a_fault_of_a_preempting_task_leaves_the_interrupted_cycle_going() {
     for engine in ENGINES {
         let (options, records) = logged_in(true, engine);
         let (scheduler, _areas) = scheduler(options);
-        // Every cycle of task 1 overruns its 1 ns watchdog: its third faults it. Its first
-        // runs before the long cycle of task 0 (a higher priority, due at once), which waits
-        // for two more, so they run inside it.
-        let failing = TestTask {
-            watchdog_ns: 1,
-            watchdog_sensitivity: 3,
-            ..TestTask::cyclic(MS, 1)
+        // Task 0 (priority 10, once) first sets the trigger of event task 1 (priority 1), so
+        // task 1 can only run once task 0's cycle has started, then waits for one cycle of it,
+        // which runs nested at the next look at the triggers. That cycle overruns its 1 ns
+        // watchdog, which faults task 1 at once (sensitivity 1). Should task 1 never come,
+        // task 0's own watchdog ends its cycle, and the test fails rather than hangs.
+        let low = TestTask {
+            watchdog_ns: 2_000 * MS,
+            body: Body::WaitFor {
+                task: 1,
+                cycles: 1,
+                sets_trigger: true,
+            },
+            ..TestTask::cyclic(MINUTE, 10)
         };
-        loaded(
-            &scheduler,
-            image(&[waiting_for(1, 2, 10), failing], &[]),
-            engine,
-        );
+        let failing = TestTask {
+            kind: TaskKind::Event,
+            watchdog_ns: 1,
+            ..TestTask::cyclic(0, 1)
+        };
+        loaded(&scheduler, image(&[low, failing], &[]), engine);
         scheduler.start().unwrap();
         let status = wait_for(&scheduler, "the long cycle", |status| {
             status.tasks[0].cycles == 1
@@ -239,20 +250,32 @@ fn a_fault_of_a_preempting_task_leaves_the_interrupted_cycle_going() {
         assert_eq!(status.state, SchedulerState::Faulted, "{engine:?}");
         assert!(
             status.tasks[1].faulted && !status.tasks[0].faulted,
-            "{engine:?}"
+            "{engine:?}: {status:#?}"
         );
-        assert_eq!(status.tasks[1].cycles, 3, "{engine:?}");
+        assert_eq!(status.tasks[1].cycles, 1, "{engine:?}");
         assert_eq!(status.faults.len(), 1, "{engine:?}");
         assert_eq!(status.faults[0].task, "Task1", "{engine:?}");
-        let third = records
+        assert!(
+            matches!(
+                status.faults[0].kind,
+                crate::engine::FaultKind::Watchdog { .. }
+            ),
+            "{engine:?}: {:?}",
+            status.faults[0]
+        );
+        let preempting: Vec<CycleRecord> = records
             .try_iter()
             .filter(|record| record.task == 1)
-            .nth(2)
-            .unwrap();
-        assert_eq!(third.interrupted, Some(0), "{engine:?}");
-        // The interrupted cycle went on to its end after the fault.
-        let noted = data(&scheduler, &[count(1), count(0)]);
-        assert_eq!(noted, [3, 1], "{engine:?}");
+            .collect();
+        assert_eq!(preempting.len(), 1, "{engine:?}: {preempting:#?}");
+        assert_eq!(preempting[0].interrupted, Some(0), "{engine:?}");
+        // The interrupted cycle went on to its end after the fault: it noted task 1's count
+        // before (0) and after (1) the nested cycle, and counted itself.
+        let noted = data(
+            &scheduler,
+            &[seen_at_start(0), seen_at_end(0), count(1), count(0)],
+        );
+        assert_eq!(noted, [0, 1, 1, 1], "{engine:?}");
     }
 }
 
