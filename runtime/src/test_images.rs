@@ -7,7 +7,8 @@
 //! the located areas. A counting task also copies the sequence number to `%MD(2 + i)` and its
 //! cycle count to `%QD(i)`, where tests see them through the shared areas. A "watching" task
 //! loops a fixed number of times, with its own counter, and notes the sequence counter before
-//! and after its loop: a task that interrupted it shows as a difference.
+//! and after its loop: a task that interrupted it shows as a difference. A "lasting" task does
+//! the same, looping for a time rather than a number of iterations.
 
 use program_image::{
     BinaryOp, CompareOp, Elementary, Instr, Layout, Operand, Pou, PouKind, ProgramCall,
@@ -61,11 +62,18 @@ pub(crate) enum Body {
         cycles: i32,
         sets_trigger: bool,
     },
+    /// Notes the sequence counter at [`seen_at_start`], loops until `TIME()` has moved on by
+    /// `ms` milliseconds since the loop started (the milliseconds passed at its last look in
+    /// [`watch_counter`]), notes the sequence counter again at [`seen_at_end`], and counts its
+    /// own cycles: a cycle that lasts as long under either engine, however fast each runs the
+    /// loop (on the scheduler's real clock; on a simulated clock, which stands still during a
+    /// cycle, it never ends).
+    Lasting { ms: i32 },
 }
 
 /// Where watching task `task` notes the sequence counter before its loop.
 pub(crate) const fn seen_at_start(task: usize) -> u32 {
-    WATCH_SLOTS + 16 * task as u32
+    WATCH_SLOTS + WATCH_SLOT_BYTES * task as u32
 }
 
 /// Where watching task `task` notes the sequence counter after its loop.
@@ -73,7 +81,7 @@ pub(crate) const fn seen_at_end(task: usize) -> u32 {
     seen_at_start(task) + 4
 }
 
-/// The loop counter of watching task `task`.
+/// The loop counter of watching task `task` (for a lasting task, the milliseconds passed).
 pub(crate) const fn watch_counter(task: usize) -> u32 {
     seen_at_start(task) + 8
 }
@@ -83,8 +91,17 @@ const fn watch_done(task: usize) -> u32 {
     seen_at_start(task) + 12
 }
 
+/// Where lasting task `task` keeps `TIME()` at the start of its loop.
+const fn lasting_since(task: usize) -> u32 {
+    seen_at_start(task) + 16
+}
+
 /// Where the watching tasks' slots start in the data region, past everything else.
 const WATCH_SLOTS: u32 = 1024;
+
+/// The bytes of each task's watching slots: the two notes, the loop counter, the loop's test
+/// and a lasting task's start, rounded up.
+const WATCH_SLOT_BYTES: u32 = 32;
 
 /// A task of a test image.
 #[derive(Clone, Debug)]
@@ -124,6 +141,7 @@ pub(crate) fn image(tasks: &[TestTask], retained: &[(u32, u32)]) -> ProgramImage
         .map(|task| match task.body {
             Body::Watch { iterations, .. } => iterations,
             Body::WaitFor { cycles, .. } => cycles,
+            Body::Lasting { ms } => ms,
             Body::Count | Body::Slow => 0,
         })
         .collect();
@@ -267,6 +285,51 @@ pub(crate) fn image(tasks: &[TestTask], retained: &[(u32, u32)]) -> ProgramImage
                             Instr::Return,
                         ])
                         .collect()
+                }
+                Body::Lasting { .. } => {
+                    let since = Operand::Global(lasting_since(index));
+                    let passed = Operand::Global(watch_counter(index));
+                    let done = Operand::Global(watch_done(index));
+                    vec![
+                        Instr::Move {
+                            ty: Elementary::Dint,
+                            dst: Operand::Global(seen_at_start(index)),
+                            src: Operand::Global(SEQUENCE),
+                        },
+                        Instr::Clock {
+                            long: false,
+                            dst: since,
+                        },
+                        Instr::Clock {
+                            long: false,
+                            dst: passed,
+                        },
+                        Instr::Binary {
+                            op: BinaryOp::Sub,
+                            ty: Elementary::Dint,
+                            dst: passed,
+                            a: passed,
+                            b: since,
+                        },
+                        Instr::Compare {
+                            op: CompareOp::Ge,
+                            ty: Elementary::Dint,
+                            dst: done,
+                            a: passed,
+                            b: Operand::Const(8 + 4 * index as u32),
+                        },
+                        Instr::JumpIfNot {
+                            cond: done,
+                            target: 2,
+                        },
+                        Instr::Move {
+                            ty: Elementary::Dint,
+                            dst: Operand::Global(seen_at_end(index)),
+                            src: Operand::Global(SEQUENCE),
+                        },
+                        add_one(Operand::Global(count(index)), one),
+                        Instr::Return,
+                    ]
                 }
             };
             Pou {
