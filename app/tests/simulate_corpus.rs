@@ -80,19 +80,20 @@ fn number(value: &Value) -> Option<f64> {
 
 /// Compiles `source` in-process as `rivet simulate` does with a `.st` file and runs it for
 /// `cycles` cycles under the interpreter and the native engine, compared after the load and
-/// after every cycle. `None` when the source does not compile: there is nothing to run, and
-/// the checks of the command's output judge the case.
-fn compare_engines(source: &str, id: &str, cycles: u64) -> Option<Result<(), String>> {
+/// after every cycle, giving the first [`Difference`](runtime::differential::Difference) the
+/// harness found. `None` when the source does not compile: there is nothing to run, and the
+/// checks of the command's output judge the case.
+fn compare_engines(
+    source: &str,
+    id: &str,
+    cycles: u64,
+) -> Option<Result<(), runtime::differential::Difference>> {
     let project = compiler::SourceProject::new(source);
     if !project.parse.errors().is_empty() {
         return None;
     }
     let image = compiler::compile_source(&project, &format!("{id}.st")).ok()?;
-    Some(
-        runtime::differential::run_both(image, cycles, |_, _| {})
-            .map(|_| ())
-            .map_err(|difference| format!("the engines differ: {difference}")),
-    )
+    Some(runtime::differential::run_both(image, cycles, |_, _| {}).map(|_| ()))
 }
 
 #[test]
@@ -150,19 +151,20 @@ fn every_ironplc_execution_case_matches_or_is_a_documented_difference() {
         }
         match compare_engines(source, id, case["scans"].as_u64().unwrap()) {
             Some(Ok(())) => compared += 1,
-            Some(Err(difference)) => failures.push(format!("{id}: {difference}")),
+            Some(Err(difference)) => {
+                failures.push(format!("{id}: the engines differ: {difference}"));
+            }
             None => {}
         }
         let deliberate = DELIBERATE
             .iter()
             .find(|(known, _, _)| *known == id)
             .map(|(_, difference, _)| *difference);
-        let outcome: Result<(), String> = (|| {
+        let outcome: anyhow::Result<()> = (|| {
             if !output.status.success() {
-                return Err(String::from_utf8_lossy(&output.stderr).into_owned());
+                anyhow::bail!("{}", String::from_utf8_lossy(&output.stderr));
             }
-            let values: Value =
-                serde_json::from_slice(&output.stdout).map_err(|e| e.to_string())?;
+            let values: Value = serde_json::from_slice(&output.stdout)?;
             let tolerance = case["tolerance"]
                 .as_str()
                 .and_then(|t| t.parse::<f64>().ok())
@@ -170,16 +172,18 @@ fn every_ironplc_execution_case_matches_or_is_a_documented_difference() {
                 .unwrap_or(0.0);
             let kind = case["kind"].as_str().unwrap_or_default();
             for (e, path) in expect.iter().zip(&paths) {
-                let expected = e["value_num"].as_f64().ok_or("no expected number")?;
-                let got =
-                    number(&values[path]).ok_or_else(|| format!("{path} = {}", values[path]))?;
+                let expected = e["value_num"]
+                    .as_f64()
+                    .ok_or_else(|| anyhow::anyhow!("{path}: no expected number"))?;
+                let got = number(&values[path])
+                    .ok_or_else(|| anyhow::anyhow!("{path} = {}", values[path]))?;
                 // The corpus keeps integers in 32- or 64-bit signed slots.
                 let got = match kind {
                     "e2e_i32" => f64::from(got as i64 as i32),
                     _ => got,
                 };
                 if (got - expected).abs() > tolerance {
-                    return Err(format!("{path} = {got}, expected {expected}"));
+                    anyhow::bail!("{path} = {got}, expected {expected}");
                 }
             }
             Ok(())

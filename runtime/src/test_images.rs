@@ -7,7 +7,8 @@
 //! the located areas. A counting task also copies the sequence number to `%MD(2 + i)` and its
 //! cycle count to `%QD(i)`, where tests see them through the shared areas. A "watching" task
 //! loops a fixed number of times, with its own counter, and notes the sequence counter before
-//! and after its loop: a task that interrupted it shows as a difference.
+//! and after its loop: a task that interrupted it shows as a difference. A "lasting" task does
+//! the same, looping for a time rather than a number of iterations.
 
 use program_image::{
     BinaryOp, CompareOp, Elementary, Instr, Layout, Operand, Pou, PouKind, ProgramCall,
@@ -53,13 +54,26 @@ pub(crate) enum Body {
     /// has moved on by `cycles` (the difference in [`watch_counter`]), notes it again at
     /// [`seen_at_end`], and counts its own cycles: a cycle that ends only after `cycles` cycles
     /// of task `task` ran after it started, which they can only do nested in it, so a test of
-    /// preemption needs no loop sized to this machine's speed.
-    WaitFor { task: usize, cycles: i32 },
+    /// preemption needs no loop sized to this machine's speed. With `sets_trigger`, it first
+    /// sets the event trigger `%MX4.0` (by writing 1 to `%MD1`), so that an event task
+    /// triggered by it can only run after this cycle started.
+    WaitFor {
+        task: usize,
+        cycles: i32,
+        sets_trigger: bool,
+    },
+    /// Notes the sequence counter at [`seen_at_start`], loops until `TIME()` has moved on by
+    /// `ms` milliseconds since the loop started (the milliseconds passed at its last look in
+    /// [`watch_counter`]), notes the sequence counter again at [`seen_at_end`], and counts its
+    /// own cycles: a cycle that lasts as long under either engine, however fast each runs the
+    /// loop (on the scheduler's real clock; on a simulated clock, which stands still during a
+    /// cycle, it never ends).
+    Lasting { ms: i32 },
 }
 
 /// Where watching task `task` notes the sequence counter before its loop.
 pub(crate) const fn seen_at_start(task: usize) -> u32 {
-    WATCH_SLOTS + 16 * task as u32
+    WATCH_SLOTS + WATCH_SLOT_BYTES * task as u32
 }
 
 /// Where watching task `task` notes the sequence counter after its loop.
@@ -67,13 +81,27 @@ pub(crate) const fn seen_at_end(task: usize) -> u32 {
     seen_at_start(task) + 4
 }
 
-/// The loop counter of watching task `task`.
+/// The loop counter of watching task `task` (for a lasting task, the milliseconds passed).
 pub(crate) const fn watch_counter(task: usize) -> u32 {
     seen_at_start(task) + 8
 }
 
+/// Where the loop of watching task `task` writes whether it is done.
+const fn watch_done(task: usize) -> u32 {
+    seen_at_start(task) + 12
+}
+
+/// Where lasting task `task` keeps `TIME()` at the start of its loop.
+const fn lasting_since(task: usize) -> u32 {
+    seen_at_start(task) + 16
+}
+
 /// Where the watching tasks' slots start in the data region, past everything else.
 const WATCH_SLOTS: u32 = 1024;
+
+/// The bytes of each task's watching slots: the two notes, the loop counter, the loop's test
+/// and a lasting task's start, rounded up.
+const WATCH_SLOT_BYTES: u32 = 32;
 
 /// A task of a test image.
 #[derive(Clone, Debug)]
@@ -113,6 +141,7 @@ pub(crate) fn image(tasks: &[TestTask], retained: &[(u32, u32)]) -> ProgramImage
         .map(|task| match task.body {
             Body::Watch { iterations, .. } => iterations,
             Body::WaitFor { cycles, .. } => cycles,
+            Body::Lasting { ms } => ms,
             Body::Count | Body::Slow => 0,
         })
         .collect();
@@ -165,7 +194,7 @@ pub(crate) fn image(tasks: &[TestTask], retained: &[(u32, u32)]) -> ProgramImage
                 ],
                 Body::Watch { sets_trigger, .. } => {
                     let counter = Operand::Global(watch_counter(index));
-                    let done = Operand::Global(watch_counter(index) + 4);
+                    let done = Operand::Global(watch_done(index));
                     let (first, value) = if sets_trigger {
                         (Operand::Memory(4), Operand::Const(0))
                     } else {
@@ -207,39 +236,96 @@ pub(crate) fn image(tasks: &[TestTask], retained: &[(u32, u32)]) -> ProgramImage
                         Instr::Return,
                     ]
                 }
-                Body::WaitFor { task, .. } => {
+                Body::WaitFor {
+                    task, sets_trigger, ..
+                } => {
                     let counted = Operand::Global(count(task));
                     let noted = Operand::Global(seen_at_start(index));
                     let moved = Operand::Global(watch_counter(index));
-                    let done = Operand::Global(watch_counter(index) + 4);
+                    let done = Operand::Global(watch_done(index));
+                    // The trigger, when set, comes first and moves the loop on by one.
+                    let first = u32::from(sets_trigger);
+                    let trigger = sets_trigger.then_some(Instr::Move {
+                        ty: Elementary::Dint,
+                        dst: Operand::Memory(4),
+                        src: Operand::Const(0),
+                    });
+                    trigger
+                        .into_iter()
+                        .chain([
+                            Instr::Move {
+                                ty: Elementary::Dint,
+                                dst: noted,
+                                src: counted,
+                            },
+                            Instr::Binary {
+                                op: BinaryOp::Sub,
+                                ty: Elementary::Dint,
+                                dst: moved,
+                                a: counted,
+                                b: noted,
+                            },
+                            Instr::Compare {
+                                op: CompareOp::Ge,
+                                ty: Elementary::Dint,
+                                dst: done,
+                                a: moved,
+                                b: Operand::Const(8 + 4 * index as u32),
+                            },
+                            Instr::JumpIfNot {
+                                cond: done,
+                                target: first + 1,
+                            },
+                            Instr::Move {
+                                ty: Elementary::Dint,
+                                dst: Operand::Global(seen_at_end(index)),
+                                src: counted,
+                            },
+                            add_one(Operand::Global(count(index)), one),
+                            Instr::Return,
+                        ])
+                        .collect()
+                }
+                Body::Lasting { .. } => {
+                    let since = Operand::Global(lasting_since(index));
+                    let passed = Operand::Global(watch_counter(index));
+                    let done = Operand::Global(watch_done(index));
                     vec![
                         Instr::Move {
                             ty: Elementary::Dint,
-                            dst: noted,
-                            src: counted,
+                            dst: Operand::Global(seen_at_start(index)),
+                            src: Operand::Global(SEQUENCE),
+                        },
+                        Instr::Clock {
+                            long: false,
+                            dst: since,
+                        },
+                        Instr::Clock {
+                            long: false,
+                            dst: passed,
                         },
                         Instr::Binary {
                             op: BinaryOp::Sub,
                             ty: Elementary::Dint,
-                            dst: moved,
-                            a: counted,
-                            b: noted,
+                            dst: passed,
+                            a: passed,
+                            b: since,
                         },
                         Instr::Compare {
                             op: CompareOp::Ge,
                             ty: Elementary::Dint,
                             dst: done,
-                            a: moved,
+                            a: passed,
                             b: Operand::Const(8 + 4 * index as u32),
                         },
                         Instr::JumpIfNot {
                             cond: done,
-                            target: 1,
+                            target: 2,
                         },
                         Instr::Move {
                             ty: Elementary::Dint,
                             dst: Operand::Global(seen_at_end(index)),
-                            src: counted,
+                            src: Operand::Global(SEQUENCE),
                         },
                         add_one(Operand::Global(count(index)), one),
                         Instr::Return,

@@ -2,8 +2,10 @@
 //! cycle log and from the programs' own notes; no assertion depends on how fast this machine
 //! is, except that the watchdog test sizes its loops from a measurement with wide margins: a
 //! cycle that must be interrupted waits for the interrupting task's cycles ([`Body::WaitFor`])
-//! rather than looping for a time sized to one engine. Where a safe point is reached (a
-//! back-edge, a call) is shown on the engine alone, with a hook standing in for the scheduler.
+//! rather than looping for a time sized to one engine, and a cycle that must not be interrupted
+//! lasts a time by the clock ([`Body::Lasting`]), during which the log shows the other task
+//! come due. Where a safe point is reached (a back-edge, a call) is shown on the engine alone,
+//! with a hook standing in for the scheduler.
 
 use std::sync::mpsc;
 use std::time::Instant;
@@ -21,6 +23,9 @@ use crate::test_images::{
 /// optimised build.
 const LONG: i32 = 1_000_000;
 
+/// The milliseconds a lasting cycle runs: twenty periods of a task every millisecond.
+const LASTING_MS: i32 = 20;
+
 /// An interval longer than any test: the task runs once, when started.
 const MINUTE: u64 = 60_000 * MS;
 
@@ -35,6 +40,14 @@ fn watch(iterations: i32, interval_ns: u64, priority: u8) -> TestTask {
     }
 }
 
+/// A task of `priority` whose one cycle (it runs once) lasts [`LASTING_MS`] by the clock.
+fn lasting(priority: u8) -> TestTask {
+    TestTask {
+        body: Body::Lasting { ms: LASTING_MS },
+        ..TestTask::cyclic(MINUTE, priority)
+    }
+}
+
 /// Both engines, for the tests that run under each; the native engine falls back to the
 /// interpreter on a machine without a native code generator, which [`loaded`] checks.
 const ENGINES: [EngineChoice; 2] = [EngineChoice::Interpreter, EngineChoice::Native];
@@ -43,7 +56,11 @@ const ENGINES: [EngineChoice; 2] = [EngineChoice::Interpreter, EngineChoice::Nat
 /// `cycles` cycles after it started.
 fn waiting_for(task: usize, cycles: i32, priority: u8) -> TestTask {
     TestTask {
-        body: Body::WaitFor { task, cycles },
+        body: Body::WaitFor {
+            task,
+            cycles,
+            sets_trigger: false,
+        },
         ..TestTask::cyclic(MINUTE, priority)
     }
 }
@@ -109,6 +126,34 @@ fn records_until(
     received
 }
 
+/// The record of task 0's cycle among `received`, if it ended.
+fn cycle_of_task_0(received: &[CycleRecord]) -> Option<&CycleRecord> {
+    received.iter().find(|record| record.task == 0)
+}
+
+/// Whether task 0's cycle ended and a cycle of task 1 started after it, so that `received`
+/// holds every cycle of task 1 that was due while task 0's ran.
+fn followed(received: &[CycleRecord]) -> bool {
+    cycle_of_task_0(received).is_some_and(|long| {
+        received
+            .iter()
+            .any(|record| record.task == 1 && record.started_ns >= long.ended_ns)
+    })
+}
+
+/// Checks that a cycle of task 1 was due before task 0's cycle ended and started only after
+/// it: it waited for that cycle, however fast the engine ran it.
+#[track_caller]
+fn waited_for_task_0(received: &[CycleRecord], case: &str) {
+    let long = cycle_of_task_0(received).unwrap();
+    assert!(
+        received.iter().any(|record| record.task == 1
+            && record.planned_ns < long.ended_ns
+            && record.started_ns >= long.ended_ns),
+        "{case}: task 1 did not wait for task 0: {received:#?}"
+    );
+}
+
 #[test]
 fn a_higher_priority_task_runs_inside_a_long_cycle_of_a_lower_one_only_with_preemption() {
     for engine in ENGINES {
@@ -117,12 +162,12 @@ fn a_higher_priority_task_runs_inside_a_long_cycle_of_a_lower_one_only_with_pree
             let (scheduler, _areas) = scheduler(options);
             // Task 0 (priority 10, once) waits for three cycles of task 1, which counts the
             // sequence every millisecond: with preemption those cycles can only run nested in
-            // it. Without, task 0 loops LONG times instead (waiting would never end), and
-            // nothing may run inside it, whatever the time it takes.
+            // it. Without, task 0 lasts LASTING_MS instead (waiting would never end), during
+            // which task 1 comes due, and nothing may run inside it.
             let low = if preemption {
                 waiting_for(1, 3, 10)
             } else {
-                watch(LONG, MINUTE, 10)
+                lasting(10)
             };
             loaded(
                 &scheduler,
@@ -130,16 +175,14 @@ fn a_higher_priority_task_runs_inside_a_long_cycle_of_a_lower_one_only_with_pree
                 engine,
             );
             scheduler.start().unwrap();
-            wait_for(&scheduler, "the long cycle", |status| {
-                status.tasks[0].cycles == 1
-            });
+            let received = records_until(&records, "the long cycle and one after", followed);
             scheduler.stop().unwrap();
             let noted = data(
                 &scheduler,
                 &[seen_at_start(0), seen_at_end(0), watch_counter(0), count(0)],
             );
-            let nested = records
-                .try_iter()
+            let nested = received
+                .iter()
                 .filter(|record| record.task == 1 && record.interrupted == Some(0))
                 .count();
             let case = format!("{engine:?}, preemption {preemption}");
@@ -154,8 +197,11 @@ fn a_higher_priority_task_runs_inside_a_long_cycle_of_a_lower_one_only_with_pree
                     "{case}: {noted:?}, {nested} nested"
                 );
             } else {
-                // The interrupted cycle's own results are whole.
-                assert_eq!((noted[2], noted[3]), (LONG, 1), "{case}");
+                // The long cycle lasted its time, during which task 1 came due; its own
+                // results are whole.
+                assert!(noted[2] >= LASTING_MS, "{case}: {noted:?}");
+                waited_for_task_0(&received, &case);
+                assert_eq!(noted[3], 1, "{case}");
                 assert_eq!((noted[0], nested), (noted[1], 0), "{case}");
             }
         }
@@ -167,20 +213,19 @@ fn a_task_of_equal_priority_waits_for_the_running_cycle() {
     for engine in ENGINES {
         let (options, records) = logged_in(true, engine);
         let (scheduler, _areas) = scheduler(options);
-        let tasks = [watch(LONG, MINUTE, 5), TestTask::cyclic(MS, 5)];
+        // Both are due at the start; the first in the task table runs first and lasts
+        // LASTING_MS, while task 1 (every millisecond) is due.
+        let tasks = [lasting(5), TestTask::cyclic(MS, 5)];
         loaded(&scheduler, image(&tasks, &[]), engine);
         scheduler.start().unwrap();
-        wait_for(&scheduler, "the long cycle", |status| {
-            status.tasks[0].cycles == 1
-        });
+        let received = records_until(&records, "the long cycle and one after", followed);
         scheduler.stop().unwrap();
         let noted = data(&scheduler, &[seen_at_start(0), seen_at_end(0)]);
         assert_eq!(noted[0], noted[1], "{engine:?}");
+        waited_for_task_0(&received, &format!("{engine:?}"));
         assert!(
-            records
-                .try_iter()
-                .all(|record| record.interrupted.is_none()),
-            "{engine:?}"
+            received.iter().all(|record| record.interrupted.is_none()),
+            "{engine:?}: {received:#?}"
         );
     }
 }
@@ -218,19 +263,26 @@ fn a_fault_of_a_preempting_task_leaves_the_interrupted_cycle_going() {
     for engine in ENGINES {
         let (options, records) = logged_in(true, engine);
         let (scheduler, _areas) = scheduler(options);
-        // Every cycle of task 1 overruns its 1 ns watchdog: its third faults it. Its first
-        // runs before the long cycle of task 0 (a higher priority, due at once), which waits
-        // for two more, so they run inside it.
-        let failing = TestTask {
-            watchdog_ns: 1,
-            watchdog_sensitivity: 3,
-            ..TestTask::cyclic(MS, 1)
+        // Task 0 (priority 10, once) first sets the trigger of event task 1 (priority 1), so
+        // task 1 can only run once task 0's cycle has started, then waits for one cycle of it,
+        // which runs nested at the next look at the triggers. That cycle overruns its 1 ns
+        // watchdog, which faults task 1 at once (sensitivity 1). Should task 1 never come,
+        // task 0's own watchdog ends its cycle, and the test fails rather than hangs.
+        let low = TestTask {
+            watchdog_ns: 2_000 * MS,
+            body: Body::WaitFor {
+                task: 1,
+                cycles: 1,
+                sets_trigger: true,
+            },
+            ..TestTask::cyclic(MINUTE, 10)
         };
-        loaded(
-            &scheduler,
-            image(&[waiting_for(1, 2, 10), failing], &[]),
-            engine,
-        );
+        let failing = TestTask {
+            kind: TaskKind::Event,
+            watchdog_ns: 1,
+            ..TestTask::cyclic(0, 1)
+        };
+        loaded(&scheduler, image(&[low, failing], &[]), engine);
         scheduler.start().unwrap();
         let status = wait_for(&scheduler, "the long cycle", |status| {
             status.tasks[0].cycles == 1
@@ -239,20 +291,32 @@ fn a_fault_of_a_preempting_task_leaves_the_interrupted_cycle_going() {
         assert_eq!(status.state, SchedulerState::Faulted, "{engine:?}");
         assert!(
             status.tasks[1].faulted && !status.tasks[0].faulted,
-            "{engine:?}"
+            "{engine:?}: {status:#?}"
         );
-        assert_eq!(status.tasks[1].cycles, 3, "{engine:?}");
+        assert_eq!(status.tasks[1].cycles, 1, "{engine:?}");
         assert_eq!(status.faults.len(), 1, "{engine:?}");
         assert_eq!(status.faults[0].task, "Task1", "{engine:?}");
-        let third = records
+        assert!(
+            matches!(
+                status.faults[0].kind,
+                crate::engine::FaultKind::Watchdog { .. }
+            ),
+            "{engine:?}: {:?}",
+            status.faults[0]
+        );
+        let preempting: Vec<CycleRecord> = records
             .try_iter()
             .filter(|record| record.task == 1)
-            .nth(2)
-            .unwrap();
-        assert_eq!(third.interrupted, Some(0), "{engine:?}");
-        // The interrupted cycle went on to its end after the fault.
-        let noted = data(&scheduler, &[count(1), count(0)]);
-        assert_eq!(noted, [3, 1], "{engine:?}");
+            .collect();
+        assert_eq!(preempting.len(), 1, "{engine:?}: {preempting:#?}");
+        assert_eq!(preempting[0].interrupted, Some(0), "{engine:?}");
+        // The interrupted cycle went on to its end after the fault: it noted task 1's count
+        // before (0) and after (1) the nested cycle, and counted itself.
+        let noted = data(
+            &scheduler,
+            &[seen_at_start(0), seen_at_end(0), count(1), count(0)],
+        );
+        assert_eq!(noted, [0, 1, 1, 1], "{engine:?}");
     }
 }
 

@@ -696,6 +696,194 @@ fn a_large_frame_the_host_cannot_prepare_is_a_memory_fault_at_the_call_site() {
     assert_eq!(host.get(32, 4), 8);
 }
 
+/// `Pass` (POU 1, a function on its caller's instance, of which it reads and writes the first
+/// 128 bytes) notes its DINT input at I(12), then at
+/// its instruction 1 calls `Sum` (POU 2) through `Sum`'s prepare stub, with the
+/// `input_bytes` bytes at I(16) as `Sum`'s input and `Sum`'s result copied back into I(8).
+/// `Sum` (a frame of `sum_frame_size` bytes) adds the input's last DINT to its first.
+fn calls_with_inputs(input_bytes: u32, sum_frame_size: u32) -> Vec<Pou> {
+    let pass = pou(
+        "Pass",
+        PouKind::Function,
+        8,
+        128,
+        vec![
+            Instr::Move {
+                ty: Dint,
+                dst: I(12),
+                src: F(0),
+            },
+            Instr::CallFunction {
+                pou: 2,
+                instance: None,
+                inputs: vec![transfer(I(16), 0, input_bytes)],
+                outputs: vec![transfer(I(8), input_bytes, 4)],
+            },
+        ],
+    );
+    let sum = pou(
+        "Sum",
+        PouKind::Function,
+        sum_frame_size,
+        0,
+        vec![add(F(input_bytes), F(0), F(input_bytes - 4))],
+    );
+    vec![pass, sum]
+}
+
+/// The program's call of `Pass` through `Pass`'s prepare stub, with I(0) as its input.
+fn call_pass() -> Instr {
+    Instr::CallFunction {
+        pou: 1,
+        instance: None,
+        inputs: vec![transfer(I(0), 0, 4)],
+        outputs: Vec::new(),
+    }
+}
+
+/// A host for [`calls_with_inputs`]`(input_bytes, _)`: `Pass`'s input 5, `Sum`'s first and
+/// last input DINTs 3 and 4, 99 where `Sum`'s result goes, and the stack past the program's
+/// frame (`Pass`'s frame, then `Sum`'s) filled with 0xAA, so that a frame prepared or an input
+/// copied shows.
+fn host_with_inputs(fixture: &Fixture, input_bytes: u32) -> TestHost {
+    let mut host = fixture.host();
+    host.put(0, 5, 4);
+    host.put(16, 3, 4);
+    host.put(16 + input_bytes - 4, 4, 4);
+    host.put(8, 99, 4);
+    let callee_frames = fixture.frame_at() + u64::from(FRAME_SIZE);
+    let stack_end = fixture.layout.stacks + fixture.layout.stack_size;
+    host.memory[callee_frames as usize..stack_end as usize].fill(0xAA);
+    host
+}
+
+/// Whether the stack from `from` to its end still holds the filler of [`host_with_inputs`].
+fn untouched_from(fixture: &Fixture, host: &TestHost, from: u64) -> bool {
+    let stack_end = fixture.layout.stacks + fixture.layout.stack_size;
+    host.memory[from as usize..stack_end as usize]
+        .iter()
+        .all(|byte| *byte == 0xAA)
+}
+
+#[test]
+fn the_prepare_stub_reports_a_frame_past_the_stack_at_its_call_site() {
+    // The program's frame is 128 bytes of a 256-byte stack, `Pass`'s 8 follow; `Sum`'s 200
+    // do not fit, 12 do.
+    let fixture = fixture(vec![call_pass()], calls_with_inputs(8, 200), 256);
+    let sum_frame = fixture.frame_at() + u64::from(FRAME_SIZE) + 8;
+    let mut host = host_with_inputs(&fixture, 8);
+    assert_eq!(run_entry(&fixture, &mut host, 0, false), Status::Faulted);
+    assert_eq!(host.faults, vec![(site(1, 1), NativeFault::StackOverflow)]);
+    // `Pass` ran up to its call; `Sum`'s frame was neither prepared nor given its input, and
+    // nothing was copied back.
+    assert_eq!(host.get(12, 4), 5);
+    assert!(untouched_from(&fixture, &host, sum_frame));
+    assert_eq!(host.get(8, 4), 99);
+    assert!(host.frames.is_empty() && host.copies.is_empty());
+    let fixture = self::fixture(vec![call_pass()], calls_with_inputs(8, 12), 256);
+    let mut host = host_with_inputs(&fixture, 8);
+    assert_eq!(run_entry(&fixture, &mut host, 0, false), Status::Ok);
+    assert_eq!(host.get(8, 4), 7);
+    // A machine stack below its limit is found by the program's own call site's stub, before
+    // `Pass`'s input is copied.
+    let mut host = host_with_inputs(&fixture, 8);
+    assert_eq!(
+        run_entry(&fixture, &mut host, u64::MAX, false),
+        Status::Faulted
+    );
+    assert_eq!(host.faults, vec![(site(0, 0), NativeFault::StackOverflow)]);
+    let pass_frame = fixture.frame_at() + u64::from(FRAME_SIZE);
+    assert!(untouched_from(&fixture, &host, pass_frame));
+    assert_eq!(host.get(12, 4), 0);
+    // With `due` set, both stubs make their safe point at their call sites, at the depth
+    // counted before them, and the calls go on with their inputs.
+    let mut host = host_with_inputs(&fixture, 8);
+    assert_eq!(run_entry(&fixture, &mut host, 0, true), Status::Ok);
+    assert_eq!((host.get(12, 4), host.get(8, 4)), (5, 7));
+    let depths: Vec<(Site, u32)> = host
+        .ticks
+        .iter()
+        .map(|(site, counters)| (*site, counters.depth))
+        .collect();
+    assert_eq!(depths, vec![(site(0, 0), 0), (site(1, 1), 1)]);
+}
+
+#[test]
+fn a_call_with_inputs_stops_at_its_call_site_when_the_safe_point_ends_the_cycle() {
+    let fixture = fixture(vec![call_pass()], calls_with_inputs(8, 12), 256);
+    let pass_frame = fixture.frame_at() + u64::from(FRAME_SIZE);
+    // The cycle ends at the program's call of `Pass`, then at `Pass`'s call of `Sum`.
+    for (stop, untouched_stack, noted_input) in
+        [(site(0, 0), pass_frame, 0), (site(1, 1), pass_frame + 8, 5)]
+    {
+        let mut host = host_with_inputs(&fixture, 8);
+        host.stop_at = Some(stop);
+        // `run_entry` checks that the depth counted in by the outer stub is counted out.
+        assert_eq!(run_entry(&fixture, &mut host, 0, true), Status::Faulted);
+        let depths: Vec<(Site, u32)> = host
+            .ticks
+            .iter()
+            .map(|(site, counters)| (*site, counters.depth))
+            .collect();
+        let expected = [(site(0, 0), 0), (site(1, 1), 1)];
+        let reached = if stop == site(0, 0) { 1 } else { 2 };
+        assert_eq!(depths, expected[..reached], "stopped at {stop:?}");
+        // The host records the safe point's fault; the stub records none of its own.
+        assert!(host.faults.is_empty(), "stopped at {stop:?}");
+        // The stopped call's frame was neither prepared nor given its input, and the caller
+        // went no further.
+        assert!(
+            untouched_from(&fixture, &host, untouched_stack),
+            "stopped at {stop:?}"
+        );
+        assert_eq!(host.get(12, 4), noted_input, "stopped at {stop:?}");
+        assert_eq!(host.get(8, 4), 99, "stopped at {stop:?}");
+    }
+}
+
+#[test]
+fn an_input_over_64_bytes_is_copied_by_the_host_into_the_prepared_frame() {
+    // `Sum` takes 100 bytes and its frame is 104: the host prepares the frame (over 64
+    // bytes), then copies the input into it (over 64 bytes), after the stub's checks.
+    let fixture = fixture(vec![call_pass()], calls_with_inputs(100, 104), 256);
+    let sum_frame = fixture.frame_at() + u64::from(FRAME_SIZE) + 8;
+    let input = INSTANCE_AT + 16;
+    let mut host = host_with_inputs(&fixture, 100);
+    assert_eq!(run_entry(&fixture, &mut host, 0, true), Status::Ok);
+    // Zeroed after the copy, the frame would hold no input and the sum would be 0.
+    assert_eq!(host.get(8, 4), 7);
+    assert_eq!(host.frames, vec![(2, sum_frame)]);
+    // `Pass`'s 4-byte input is copied inline.
+    assert_eq!(host.copies, vec![(sum_frame, input, 100)]);
+    let depths: Vec<(Site, u32)> = host
+        .ticks
+        .iter()
+        .map(|(site, counters)| (*site, counters.depth))
+        .collect();
+    assert_eq!(depths, vec![(site(0, 0), 0), (site(1, 1), 1)]);
+    // A copy the host refuses is `Memory` at `Pass`'s call site; `Sum` does not run, and
+    // its depth stays counted, as the interpreter's `?` leaves it after `push_frame` (§4.4):
+    // the program's call of `Pass` counts its own out.
+    let mut host = host_with_inputs(&fixture, 100);
+    host.refuse_copies = true;
+    let mut counters = Counters {
+        depth: 0,
+        budget: 4096,
+    };
+    let due = AtomicBool::new(false);
+    assert_eq!(
+        fixture.run_with(&mut host, &due, &mut counters),
+        Status::Faulted
+    );
+    assert_eq!(host.faults, vec![(site(1, 1), NativeFault::Memory)]);
+    assert_eq!(host.copies, vec![(sum_frame, input, 100)]);
+    assert_eq!(host.get(8, 4), 99);
+    // The prepared frame holds zeros where the sum would be.
+    let result = &host.memory[sum_frame as usize + 100..][..4];
+    assert_eq!(result, [0; 4]);
+    assert_eq!(counters.depth, 1);
+}
+
 #[test]
 fn call_sites_share_their_callee_stub() {
     // The code a call site adds stays small: the checks, the frame and the depth are the

@@ -70,6 +70,14 @@ struct TestHost {
     op_poke: Option<(u32, u8)>,
     /// When set, a tick after this many fails, as the watchdog ends an endless loop.
     watchdog_after_ticks: Option<usize>,
+    /// A call site whose safe point ends the cycle, as the runtime's host ends it there for
+    /// `Watchdog` or `Abandoned`: `preempt` at that site returns `Faulted`, the fault being the
+    /// host's to record (this host records only the tick).
+    stop_at: Option<Site>,
+    /// The copies made by `copy`: the target, the source and the bytes.
+    copies: Vec<(u64, u64, u64)>,
+    /// When true, `copy` fails as for a place outside the memory.
+    refuse_copies: bool,
 }
 
 impl Host for TestHost {
@@ -112,6 +120,9 @@ impl Host for TestHost {
     }
     fn preempt(&mut self, site: Site, counters: &mut Counters) -> Status {
         self.ticks.push((site, *counters));
+        if self.stop_at == Some(site) {
+            return Status::Faulted;
+        }
         Status::Ok
     }
     fn op(&mut self, site: Site, instance: u64, frame: u64, _: &mut Counters) -> Status {
@@ -132,6 +143,10 @@ impl Host for TestHost {
     fn copy(&mut self, to: u64, from: u64, bytes: u64) -> Status {
         if let Some(message) = self.panic {
             panic!("{message}");
+        }
+        self.copies.push((to, from, bytes));
+        if self.refuse_copies {
+            return Status::Faulted;
         }
         let (to, from, bytes) = (to as usize, from as usize, bytes as usize);
         let inside = |at: usize| {
@@ -416,6 +431,9 @@ impl Fixture {
             op_snapshots: Vec::new(),
             op_poke: None,
             watchdog_after_ticks: None,
+            stop_at: None,
+            copies: Vec::new(),
+            refuse_copies: false,
         }
     }
 
