@@ -6,6 +6,7 @@ use cranelift_codegen::ir::{BlockArg, InstBuilder, Type, Value, types};
 use program_image::{BinaryOp, Elementary, Operand, UnaryOp};
 
 use super::host_calls::{Import, binary_op_code, unary_op_code};
+use super::promote::{self, Access};
 use super::{Translator, int_type, is_signed};
 
 /// 2⁶³ as a double: below it in magnitude an integral double converts to `i64` exactly.
@@ -104,6 +105,56 @@ impl Translator<'_, '_> {
             .bitcast(ir, cranelift_codegen::ir::MemFlagsData::new(), bits)
     }
 
+    /// Whether the left operand `a` of a REAL or LREAL `fadd` or `fmul` must be loaded by
+    /// [`Self::load_unfoldable`], because the code generator could fold its load into the
+    /// instruction by swapping the operands (§6.1).
+    ///
+    /// The backend folds a load only when no other load or store comes between it and the
+    /// operation. The left operand is loaded first, so a load of the right operand that stays
+    /// in the code keeps the left one's in place, and the float load, which the code
+    /// generator can forward from the store of the instruction before (the temporaries of an
+    /// expression), is kept. The right operand's load may vanish when it is a constant, a
+    /// place a loop keeps in a variable, or the place the
+    /// instruction before wrote (its store is forwarded to the load), and at the start of a
+    /// block, where the store before is not known here; then the left operand's order is
+    /// kept by the integer load, except when the right one is a constant that is no NaN:
+    /// of a NaN and a number, either order gives the NaN.
+    fn left_could_be_folded(&self, ir: Type, a: Operand, b: Operand) -> bool {
+        if a == b {
+            // The same value on both sides: the order cannot show.
+            return false;
+        }
+        if let Operand::Const(offset) = b {
+            let not_nan = self.folded_constants.and_then(|pool| {
+                let bytes = pool.get(offset as usize..)?;
+                Some(if ir == types::F32 {
+                    let raw: [u8; 4] = bytes.get(..4)?.try_into().ok()?;
+                    !f32::from_le_bytes(raw).is_nan()
+                } else {
+                    let raw: [u8; 8] = bytes.get(..8)?.try_into().ok()?;
+                    !f64::from_le_bytes(raw).is_nan()
+                })
+            });
+            return not_nan != Some(true);
+        }
+        let size = ir.bytes();
+        let kept_in_a_variable = self
+            .promoted
+            .iter()
+            .any(|(place, place_size, _)| *place == b && *place_size == size);
+        let pc = self.pc as usize;
+        let written_just_before = pc
+            .checked_sub(1)
+            .and_then(|before| self.code.get(before))
+            .and_then(promote::accesses)
+            .is_some_and(|accesses| {
+                accesses
+                    .iter()
+                    .any(|(place, _, access)| *place == b && *access != Access::Read)
+            });
+        kept_in_a_variable || written_just_before || self.blocks.at(pc).is_some()
+    }
+
     /// `Binary` on a real; false to leave it to the host.
     pub(crate) fn real_binary(
         &mut self,
@@ -128,11 +179,12 @@ impl Translator<'_, '_> {
             // Bit operations on reals are refused by the interpreter at load.
             return false;
         }
-        let l = if matches!(op, BinaryOp::Add | BinaryOp::Mul) {
-            self.load_unfoldable(ir, a)
-        } else {
-            self.load(ir, a)
-        };
+        let l =
+            if matches!(op, BinaryOp::Add | BinaryOp::Mul) && self.left_could_be_folded(ir, a, b) {
+                self.load_unfoldable(ir, a)
+            } else {
+                self.load(ir, a)
+            };
         let r = self.load(ir, b);
         let result = match op {
             BinaryOp::Add => self.builder.ins().fadd(l, r),

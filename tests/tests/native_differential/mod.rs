@@ -106,24 +106,32 @@ proptest! {
 /// the instruction when the right one is no load (`vmulsd [x], y`), which swaps the operands,
 /// and of two NaNs x86 keeps the first operand's: the native engine gave the right operand's
 /// NaN where the interpreter's `l * r` gives the left one's (`docs/native-engine.md` §6.1).
-/// The NaNs are made in the first cycle and read from memory in the later ones; the last
-/// line checks that `(-x) * (-y)` is not taken for `x * y`, which would turn a NaN's sign.
+/// The NaNs are made in the first cycle and read from memory in the later ones; the line of
+/// `negated` checks that `(-x) * (-y)` is not taken for `x * y`, which would turn a NaN's sign.
+/// The last two lines cover the translator's choice of which left operands to load as
+/// integers (`translate/real.rs`, `left_could_be_folded`): both operands read from memory,
+/// where the right one's load keeps the left one's in place, and a right operand that a loop
+/// keeps in a variable, which is no load.
 #[test]
 fn sums_and_products_of_nans_keep_the_left_operands_nan() {
     same_under_both_engines(
         "PROGRAM main
          VAR n : INT; two : LREAL := 2.0; neg : LREAL; pos : LREAL; sum : LREAL; product : LREAL;
            negated : LREAL; rneg : REAL; rpos : REAL; rsum : REAL; rproduct : REAL; x : LREAL;
-           y : LREAL; z : LREAL; END_VAR
+           y : LREAL; z : LREAL; rest : LREAL; other : LREAL; rrest : REAL; rother : REAL;
+           moved : LREAL; kept : LREAL; i : INT; END_VAR
          n := n + 1;
          IF n = 1 THEN
            neg := LREAL#0.0 / LREAL#0.0; pos := -neg;
            rneg := REAL#0.0 / REAL#0.0; rpos := -rneg;
+           rest := -pos; rrest := -rpos; moved := -pos;
          END_IF;
          sum := pos + (-pos); product := pos * (-pos);
          rsum := rpos + (-rpos); rproduct := rpos * (-rpos);
          x := LREAL#0.0 / LREAL#0.0; y := -x; z := x * y;
          negated := (-pos) * (-two);
+         other := pos * rest; rother := rpos + rrest;
+         FOR i := 1 TO 2 DO two := two + 1.0; kept := pos * moved; moved := -pos; END_FOR;
          END_PROGRAM",
     );
 }
