@@ -30,6 +30,7 @@
 
 use std::sync::atomic::AtomicBool;
 
+mod compile;
 mod context;
 mod isa;
 mod layout;
