@@ -1,5 +1,6 @@
-//! Building the code module of one image: every POU translated and defined, the module
-//! finalised, and the code-size count (`docs/native-engine.md` §8.2, §9.2).
+//! Building the code module of one image: every POU translated, compiled (on several threads,
+//! `compile.rs`) and defined in order, the module finalised, and the code-size count
+//! (`docs/native-engine.md` §8.2, §9.2, §9.3).
 
 use std::panic::AssertUnwindSafe;
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
