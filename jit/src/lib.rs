@@ -3,9 +3,11 @@
 //!
 //! [`Translation::new`] turns a [`program_image::ProgramImage`] into a [`Code`]: one machine
 //! function per POU it accepts, and an [`Untranslated`] entry for each POU it leaves to the
-//! interpreter. [`Code::run`] enters one POU function with an [`Entry`]; generated code calls
-//! back into the runtime through the [`Host`] trait for safe points, the watchdog, the
-//! instructions it leaves to the interpreter, copies larger than 64 bytes and faults.
+//! interpreter; the functions are compiled on several threads when the image has many
+//! (`docs/native-engine.md` §9.3), into the same machine code as on one. [`Code::run`] enters
+//! one POU function with an [`Entry`]; generated code calls back into the runtime through the
+//! [`Host`] trait for safe points, the watchdog, the instructions it leaves to the
+//! interpreter, copies larger than 64 bytes and faults.
 //!
 //! # The invariants this crate keeps (`docs/native-engine.md` §7)
 //!
@@ -30,6 +32,7 @@
 
 use std::sync::atomic::AtomicBool;
 
+mod compile;
 mod context;
 mod isa;
 mod layout;

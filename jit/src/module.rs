@@ -1,16 +1,17 @@
-//! Building the code module of one image: every POU translated and defined, the module
-//! finalised, and the code-size count (`docs/native-engine.md` §8.2, §9.2).
+//! Building the code module of one image: every POU translated, compiled (on several threads,
+//! `compile.rs`) and defined in order, the module finalised, and the code-size count
+//! (`docs/native-engine.md` §8.2, §9.2, §9.3).
 
 use std::panic::AssertUnwindSafe;
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::sync::{Arc, Mutex};
 
-use cranelift_codegen::control::ControlPlane;
-use cranelift_codegen::isa::TargetIsa;
 use cranelift_frontend::FunctionBuilderContext;
 use cranelift_jit::{JITBuilder, JITModule};
-use cranelift_module::{FuncId, Linkage, Module, ModuleReloc};
+use cranelift_module::{FuncId, Linkage, Module};
 use program_image::ProgramImage;
+
+use crate::compile::{Compiled, NotCompiled, Piece, Threads, compile_all};
 
 use crate::isa::{NativeUnsupported, host_isa};
 use crate::layout::Layout;
@@ -37,15 +38,17 @@ impl Translation {
         layout: &Layout,
         pure: &PureFunctions,
     ) -> Result<Code, NativeUnsupported> {
-        Self::with_symbols(image, layout, our_symbols(pure))
+        Self::with_symbols(image, layout, our_symbols(pure), Threads::Host)
     }
 
     /// [`Translation::new`] with the symbols the module may import given as a table of names
-    /// and addresses; the tests leave one out to see it refused as foreign.
+    /// and addresses (the tests leave one out to see it refused as foreign), and the threads
+    /// the functions are compiled on (the tests compare one with several).
     pub(crate) fn with_symbols(
         image: &ProgramImage,
         layout: &Layout,
         table: Vec<(&'static str, usize)>,
+        threads: Threads,
     ) -> Result<Code, NativeUnsupported> {
         // The translator relies on verification (operands inside their regions, jump targets
         // inside the POU, bits below their widths, §2); checking again keeps `Code` sound
@@ -127,7 +130,6 @@ impl Translation {
         let folded_constants = crate::translate::scalar::constant_pool_is_read_only(image)
             .then_some(image.constants.as_slice());
         let mut function_context = FunctionBuilderContext::new();
-        let mut codegen = module.make_context();
         // Translated and compiled until no POU is refused anew: a refused callee has no
         // function, so its callers (only they) are translated again with their calls of it
         // handed to the interpreter; only then is anything defined, so no machine code calls
@@ -152,33 +154,26 @@ impl Translation {
                 stubs: &stubs,
             };
             let mut refused_now = Vec::new();
+            // Every pending POU's function and stubs are built first, in order, on this
+            // thread (naming a callee needs the module), then compiled together on as many
+            // threads as `threads` gives (§9.3).
+            let mut pieces = Vec::new();
+            let mut built = Vec::new();
             for (index, pou) in image.pous.iter().enumerate() {
                 if !std::mem::take(&mut pending[index]) {
                     continue;
                 }
+                compiled[index] = None;
                 let Some(id) = functions[index] else {
-                    compiled[index] = None;
                     continue;
                 };
                 let at = index;
                 let index = index as u32;
-                let refused = |reason: String| Untranslated {
-                    pou: index,
-                    name: pou.name.clone(),
-                    instruction: None,
-                    reason,
-                };
-                // A translator or code generator bug must not take the loading thread down:
-                // the POU falls back to the interpreter with the reason (§8.2).
+                // A translator bug must not take the loading thread down: the POU falls back
+                // to the interpreter with the reason (§8.2).
                 let result = std::panic::catch_unwind(AssertUnwindSafe(|| {
                     let function =
                         translate_pou(&environment, index, &mut function_context, &mut module)?;
-                    let body = compile(&mut codegen, function, id, module.isa())
-                        .map_err(|reason| refused(reason.0));
-                    module.clear_context(&mut codegen);
-                    let body = body?;
-                    // The callee's stubs are its own: one that cannot be made leaves the
-                    // callee to the interpreter, with its callers' calls.
                     let target = StubTarget {
                         pou,
                         index,
@@ -186,41 +181,77 @@ impl Translation {
                         imports: &imports,
                         signature: stub_signature.clone(),
                     };
-                    let mut made = [None, None];
+                    let mut made = Vec::with_capacity(2);
                     for kind in [StubKind::Enter, StubKind::Prepare] {
-                        let Some(stub_id) = stubs[at][kind as usize] else {
-                            continue;
-                        };
-                        let stub =
-                            translate_stub(&target, kind, &mut function_context, &mut module);
-                        let stub = compile(&mut codegen, stub, stub_id, module.isa())
-                            .map_err(|reason| refused(reason.0));
-                        module.clear_context(&mut codegen);
-                        made[kind as usize] = Some(stub?);
+                        if let Some(stub_id) = stubs[at][kind as usize] {
+                            let stub =
+                                translate_stub(&target, kind, &mut function_context, &mut module);
+                            made.push((stub_id, stub));
+                        }
                     }
-                    Ok((body, made))
+                    Ok((function, made))
                 }));
-                module.clear_context(&mut codegen);
-                compiled[at] = match result {
+                match result {
                     Ok(Ok((function, made))) => {
-                        compiled_stubs[at] = made;
-                        Some(function)
+                        // The function first, then its stubs in the order of `StubKind`: the
+                        // order they are taken back in below.
+                        let pieces_of_pou = std::iter::once((id, function)).chain(made);
+                        pieces.extend(pieces_of_pou.map(|(id, function)| Piece {
+                            function,
+                            id,
+                            #[cfg(test)]
+                            panics: pou.name == crate::compile::COMPILE_PANICS_IN_TESTS,
+                        }));
+                        built.push(at);
                     }
-                    Ok(Err(refusal)) => {
-                        refused_now.push(refusal);
-                        None
-                    }
+                    Ok(Err(refusal)) => refused_now.push(refusal),
                     Err(_) => {
-                        refused_now.push(refused(
-                            "the translator or the code generator failed on it (an internal \
-                             error)"
-                                .into(),
-                        ));
+                        refused_now.push(Untranslated {
+                            pou: index,
+                            name: pou.name.clone(),
+                            instruction: None,
+                            reason: "the translator failed on it (an internal error)".into(),
+                        });
                         function_context = FunctionBuilderContext::new();
-                        codegen = module.make_context();
-                        None
                     }
-                };
+                }
+            }
+            let mut results = compile_all(pieces, module.isa(), threads).into_iter();
+            let mut next_result = || {
+                results.next().unwrap_or_else(|| {
+                    Err(NotCompiled(
+                        "its machine code was lost (an internal error)".into(),
+                    ))
+                })
+            };
+            for at in built {
+                let function = next_result();
+                let made = [StubKind::Enter, StubKind::Prepare]
+                    .map(|kind| stubs[at][kind as usize].map(|_| next_result()));
+                // The callee's stubs are its own: one that cannot be made leaves the callee
+                // to the interpreter, with its callers' calls. The function's reason comes
+                // first, then its stubs' in order.
+                let outcome = function.and_then(|function| {
+                    let mut ready = [None, None];
+                    for (slot, stub) in made.into_iter().enumerate() {
+                        if let Some(stub) = stub {
+                            ready[slot] = Some(stub?);
+                        }
+                    }
+                    Ok((function, ready))
+                });
+                match outcome {
+                    Ok((function, ready)) => {
+                        compiled[at] = Some(function);
+                        compiled_stubs[at] = ready;
+                    }
+                    Err(NotCompiled(reason)) => refused_now.push(Untranslated {
+                        pou: at as u32,
+                        name: image.pous[at].name.clone(),
+                        instruction: None,
+                        reason,
+                    }),
+                }
             }
             if refused_now.is_empty() {
                 break;
@@ -242,6 +273,8 @@ impl Translation {
         let mut defined = Vec::with_capacity(image.pous.len());
         #[cfg(test)]
         let mut listings = Vec::new();
+        #[cfg(test)]
+        let mut defined_pieces = Vec::new();
         for (index, ((pou, function), made)) in image
             .pous
             .iter()
@@ -265,6 +298,8 @@ impl Translation {
                 .chain([(id, function)]);
             let mut failure = None;
             for (piece_id, piece) in pieces {
+                #[cfg(test)]
+                defined_pieces.push(DefinedPiece::of(piece_id, &piece));
                 if let Err(error) = module.define_function_bytes(
                     piece_id,
                     piece.alignment,
@@ -326,6 +361,8 @@ impl Translation {
             freed,
             #[cfg(test)]
             listings,
+            #[cfg(test)]
+            defined_pieces,
             machine,
         })
     }
@@ -413,6 +450,10 @@ pub struct Code {
     /// The machine code of each POU as text, for the tests.
     #[cfg(test)]
     pub(crate) listings: Vec<String>,
+    /// Every function and stub given to the module, in the order they were defined, for the
+    /// tests to compare translations.
+    #[cfg(test)]
+    pub(crate) defined_pieces: Vec<DefinedPiece>,
     /// The functions and the module; its `Drop` frees the machine code.
     machine: MachineCode,
 }
@@ -471,7 +512,6 @@ impl Code {
     }
 }
 
-/// One POU's compiled machine code, not yet defined in the module.
 /// The POUs `code` may call directly: those its `CallFunction`, `CallBlock` and
 /// `CallVirtual` instructions name.
 fn called_pous(code: &[program_image::Instr]) -> Vec<u32> {
@@ -491,50 +531,39 @@ fn called_pous(code: &[program_image::Instr]) -> Vec<u32> {
     called
 }
 
-struct Compiled {
-    /// The machine code.
-    bytes: Vec<u8>,
+/// A function or stub as it was given to the module: its id, machine code and relocations,
+/// for the tests to compare translations made on different numbers of threads.
+#[cfg(test)]
+#[derive(Debug, PartialEq, Eq)]
+pub(crate) struct DefinedPiece {
+    /// Its id in the module.
+    pub(crate) id: u32,
+    /// Its machine code, before relocation.
+    pub(crate) bytes: Vec<u8>,
     /// Its alignment in bytes.
-    alignment: u64,
-    /// Its relocations: the calls of the imports and of other POUs.
-    relocations: Vec<ModuleReloc>,
-    /// The machine code as text, for the tests.
-    #[cfg(test)]
-    listing: String,
+    pub(crate) alignment: u64,
+    /// Its relocations: offset, kind, target and addend of each.
+    pub(crate) relocations: Vec<String>,
 }
 
-/// Why the code generator refused a POU function.
-#[derive(Debug)]
-struct NotCompiled(String);
-
-/// Compiles POU function `function` (to be defined as `id`) for `isa`, or says why it cannot.
-fn compile(
-    codegen: &mut cranelift_codegen::Context,
-    function: cranelift_codegen::ir::Function,
-    id: FuncId,
-    isa: &dyn TargetIsa,
-) -> Result<Compiled, NotCompiled> {
-    codegen.func = function;
-    // The tests read the machine code's listing (§7 rule 5: no reachable trap).
-    codegen.set_disasm(cfg!(test));
-    codegen
-        .compile(isa, &mut ControlPlane::default())
-        .map_err(|error| NotCompiled(format!("{:?}", error.inner)))?;
-    // Read again through a shared borrow, beside the function the relocations name.
-    let compiled = codegen
-        .compiled_code()
-        .ok_or_else(|| NotCompiled("the code generator gave no code (an internal error)".into()))?;
-    let relocations = compiled
-        .buffer
-        .relocs()
-        .iter()
-        .map(|relocation| ModuleReloc::from_mach_reloc(relocation, &codegen.func, id))
-        .collect();
-    Ok(Compiled {
-        bytes: compiled.code_buffer().to_vec(),
-        alignment: u64::from(compiled.buffer.alignment),
-        relocations,
-        #[cfg(test)]
-        listing: compiled.vcode.clone().unwrap_or_default(),
-    })
+#[cfg(test)]
+impl DefinedPiece {
+    /// The record of `piece`, defined as `id`.
+    fn of(id: FuncId, piece: &Compiled) -> Self {
+        Self {
+            id: id.as_u32(),
+            bytes: piece.bytes.clone(),
+            alignment: piece.alignment,
+            relocations: piece
+                .relocations
+                .iter()
+                .map(|relocation| {
+                    format!(
+                        "{} {:?} {:?} {}",
+                        relocation.offset, relocation.kind, relocation.name, relocation.addend
+                    )
+                })
+                .collect(),
+        }
+    }
 }

@@ -387,12 +387,17 @@ fn an_image_needing_a_symbol_outside_the_table_is_refused() {
         .into_iter()
         .filter(|(name, _)| *name != "rivet_jit_fault")
         .collect();
-    match Translation::with_symbols(&image, &layout, table) {
+    match Translation::with_symbols(&image, &layout, table, crate::compile::Threads::Host) {
         Err(crate::NativeUnsupported::ForeignSymbol(name)) => assert_eq!(name, "rivet_jit_fault"),
         other => panic!("not refused: {other:?}"),
     }
-    let accepted =
-        Translation::with_symbols(&image, &layout, crate::module::our_symbols(&PURE)).unwrap();
+    let accepted = Translation::with_symbols(
+        &image,
+        &layout,
+        crate::module::our_symbols(&PURE),
+        crate::compile::Threads::Host,
+    )
+    .unwrap();
     assert_eq!(
         accepted.imported_symbols(),
         &["rivet_jit_fault".to_string()]

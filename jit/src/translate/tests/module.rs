@@ -3,6 +3,8 @@
 
 #![allow(clippy::unwrap_used, clippy::expect_used)] // A panic is a failed test.
 
+use program_image::Transfer;
+
 use super::real::real_code;
 use super::*;
 
@@ -477,5 +479,167 @@ fn constants_fold_only_when_nothing_can_write_the_pool() {
         assert_eq!(host.get(4, 4), u64::from(expected_sum as u32));
         assert_eq!(host.get(12, 1), 1, "NaN is unequal to itself");
         assert_eq!(host.get(13, 1), 0x7F);
+    }
+}
+
+/// An image of 43 POUs: `Main` (POU 0) runs a `FOR` loop and calls the function blocks
+/// 1 ..= 30 (every fifth of which calls the next one too), the functions 31 ..= 40, the
+/// function 41 the translator refuses and the function block 42 the code generator panics
+/// on; so `Main` is translated again after the first round, and the blocks get enter stubs,
+/// the functions prepare stubs.
+fn many_pous() -> ProgramImage {
+    let add = |dst, a, b| Instr::Binary {
+        op: BinaryOp::Add,
+        ty: Dint,
+        dst,
+        a,
+        b,
+    };
+    let block_call = |pou, instance| Instr::CallBlock {
+        pou,
+        instance,
+        indirect: false,
+    };
+    let function_call = |pou| Instr::CallFunction {
+        pou,
+        instance: None,
+        inputs: vec![Transfer {
+            caller: I(8),
+            callee_offset: 0,
+            size: 4,
+        }],
+        outputs: vec![Transfer {
+            caller: I(12),
+            callee_offset: 4,
+            size: 4,
+        }],
+    };
+    let pou = |name: String, kind, frame_size, instance_size, code| Pou {
+        name,
+        kind,
+        frame_size,
+        frame_init: Vec::new(),
+        instance_size,
+        code,
+        lines: Vec::new(),
+    };
+    // FOR I(0) := 1 TO 1000 DO I(4) := I(4) + I(0); END_FOR, the constants 1 and 1000.
+    let mut main = vec![
+        Instr::Move {
+            ty: Dint,
+            dst: I(0),
+            src: Operand::Const(0),
+        },
+        Instr::Compare {
+            op: CompareOp::Gt,
+            ty: Dint,
+            dst: Operand::Frame(0),
+            a: I(0),
+            b: Operand::Const(4),
+        },
+        Instr::JumpIf {
+            cond: Operand::Frame(0),
+            target: 6,
+        },
+        add(I(4), I(4), I(0)),
+        add(I(0), I(0), Operand::Const(0)),
+        Instr::Jump { target: 1 },
+    ];
+    main.extend((1..=30).map(|block| block_call(block, I(64 + 8 * (block % 20)))));
+    main.extend((31..=41).map(function_call));
+    main.push(block_call(42, I(56)));
+    let mut constants = vec![0; 16];
+    constants[0] = 1;
+    constants[4..8].copy_from_slice(&1000u32.to_le_bytes());
+    let mut image = image(main, constants);
+    image.layout.stack_size = 1024;
+    for block in 1..=30u32 {
+        // Bodies of different sizes, so that the threads take pieces of different sizes.
+        let mut code: Vec<Instr> = (0..=block % 6).map(|_| add(I(0), I(0), I(4))).collect();
+        if block % 5 == 0 && block < 30 {
+            code.push(block_call(block + 1, I(0)));
+        }
+        image.pous.push(pou(
+            format!("Block{block}"),
+            PouKind::FunctionBlock,
+            8,
+            8,
+            code,
+        ));
+    }
+    for function in 31..=40 {
+        image.pous.push(pou(
+            format!("Function{function}"),
+            PouKind::Function,
+            16,
+            0,
+            vec![add(Operand::Frame(4), Operand::Frame(0), Operand::Frame(0))],
+        ));
+    }
+    image.pous.push(pou(
+        crate::translate::REFUSED_IN_TESTS.into(),
+        PouKind::Function,
+        16,
+        0,
+        vec![add(Operand::Frame(4), Operand::Frame(0), Operand::Frame(0))],
+    ));
+    image.pous.push(pou(
+        crate::compile::COMPILE_PANICS_IN_TESTS.into(),
+        PouKind::FunctionBlock,
+        8,
+        8,
+        vec![add(I(0), I(0), I(4))],
+    ));
+    image
+}
+
+#[test]
+fn parallel_compilation_defines_the_same_bytes_as_one_thread() {
+    use crate::compile::{THREADS_IN_TESTS, Threads};
+    let image = many_pous();
+    let layout = Layout::of(&image, 1);
+    let translate = |threads| {
+        crate::translate::TRANSLATED_IN_TESTS.with(|translated| translated.borrow_mut().clear());
+        THREADS_IN_TESTS.with(|counts| counts.borrow_mut().clear());
+        let table = crate::module::our_symbols(&PURE);
+        let code = Translation::with_symbols(&image, &layout, table, threads).unwrap();
+        let translated = crate::translate::TRANSLATED_IN_TESTS.with(|translated| translated.take());
+        let counts = THREADS_IN_TESTS.with(|counts| counts.take());
+        (code, translated, counts)
+    };
+    let (one, one_translated, one_threads) = translate(Threads::Exactly(1));
+    let (four, four_translated, four_threads) = translate(Threads::Exactly(4));
+    // Two rounds each: every POU, then `Main` again with its calls of the refused two handed
+    // to the interpreter; the first round on four threads, the second (one function) on one.
+    let expected_translated: Vec<u32> = (0..=42).chain([0]).collect();
+    assert_eq!(one_translated, expected_translated);
+    assert_eq!(four_translated, expected_translated);
+    assert_eq!(one_threads, vec![1, 1]);
+    assert_eq!(four_threads, vec![4, 1]);
+    let refused: Vec<(u32, &str)> = four
+        .untranslated()
+        .iter()
+        .map(|refusal| (refusal.pou, refusal.reason.as_str()))
+        .collect();
+    assert_eq!(
+        refused,
+        vec![
+            (41, "refused by the tests"),
+            (42, "the code generator failed on it (an internal error)"),
+        ]
+    );
+    assert_eq!(one.untranslated(), four.untranslated());
+    // 41 functions, the 30 blocks' enter stubs and the 10 functions' prepare stubs.
+    assert_eq!(four.defined_pieces.len(), 81);
+    assert!(
+        four.defined_pieces
+            .iter()
+            .all(|piece| !piece.bytes.is_empty())
+    );
+    assert_eq!(one.defined_pieces, four.defined_pieces);
+    assert_eq!(one.listings, four.listings);
+    for code in [&one, &four] {
+        assert!((0..=40).all(|pou| code.has(pou)));
+        assert!(!code.has(41) && !code.has(42));
     }
 }

@@ -1,0 +1,251 @@
+//! Compiling an image's Cranelift functions into machine code on scoped threads
+//! (`docs/native-engine.md` §9.3). The module builds every function on the loading thread
+//! (naming a callee needs `&mut JITModule`); the code generator needs only the function and
+//! the ISA, so the functions are compiled in parallel, each thread with its own
+//! `cranelift_codegen::Context`, and the results come back in the functions' order, so the
+//! module defines the same bytes in the same order whatever the number of threads.
+
+use std::panic::AssertUnwindSafe;
+use std::sync::{Mutex, PoisonError};
+
+use cranelift_codegen::control::ControlPlane;
+use cranelift_codegen::ir::Function;
+use cranelift_codegen::isa::TargetIsa;
+use cranelift_module::{FuncId, ModuleReloc};
+
+/// The most threads one translation compiles on: past this the e-graph and register
+/// allocation of a typical project's functions are done faster than the threads start, and a
+/// large machine is left to the tasks it runs.
+const MAX_THREADS: usize = 8;
+
+/// Fewer functions than this are compiled on the loading thread alone: a small image (or a
+/// round that compiles again only the callers of a refused POU) compiles in less time than
+/// starting threads costs.
+const FEWEST_FUNCTIONS_FOR_THREADS: usize = 16;
+
+/// The stack of each compiling thread: a main thread's usual 8 MiB, so that a function the
+/// loading thread could compile compiles on any thread (the memory is reserved, not used).
+const THREAD_STACK_BYTES: usize = 8 << 20;
+
+/// The name of a POU whose function makes the code generator panic in the tests.
+#[cfg(test)]
+pub(crate) const COMPILE_PANICS_IN_TESTS: &str = "CompilePanicsInTests";
+
+#[cfg(test)]
+thread_local! {
+    /// The number of threads each call of [`compile_all`] on the current thread compiled on,
+    /// in order, for the tests to see the parallel path taken.
+    pub(crate) static THREADS_IN_TESTS: std::cell::RefCell<Vec<usize>> =
+        const { std::cell::RefCell::new(Vec::new()) };
+}
+
+/// How many threads compile an image's functions.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Threads {
+    /// As many as the host offers to this process (`available_parallelism`, which on Linux
+    /// counts only the processors the process may run on), at most [`MAX_THREADS`] and at most
+    /// one per function; one (no thread started) for fewer than
+    /// [`FEWEST_FUNCTIONS_FOR_THREADS`] functions.
+    Host,
+    /// This many (at least one, at most one per function), whatever the number of functions:
+    /// the tests compare one thread with several.
+    #[cfg(test)]
+    Exactly(usize),
+}
+
+impl Threads {
+    /// The threads that compile `functions` functions, the loading thread included.
+    pub(crate) fn count(self, functions: usize) -> usize {
+        match self {
+            Threads::Host if functions < FEWEST_FUNCTIONS_FOR_THREADS => 1,
+            Threads::Host => std::thread::available_parallelism()
+                .map_or(1, std::num::NonZeroUsize::get)
+                .min(MAX_THREADS)
+                .min(functions),
+            #[cfg(test)]
+            Threads::Exactly(threads) => threads.min(functions).max(1),
+        }
+    }
+}
+
+/// A function to compile and the id the module will define it as.
+pub(crate) struct Piece {
+    /// The function's Cranelift IR.
+    pub(crate) function: Function,
+    /// Its id in the module, which its relocations name it by.
+    pub(crate) id: FuncId,
+    /// Whether the code generator is made to panic on it (a POU named
+    /// [`COMPILE_PANICS_IN_TESTS`]).
+    #[cfg(test)]
+    pub(crate) panics: bool,
+}
+
+/// One function's compiled machine code, not yet defined in the module.
+pub(crate) struct Compiled {
+    /// The machine code.
+    pub(crate) bytes: Vec<u8>,
+    /// Its alignment in bytes.
+    pub(crate) alignment: u64,
+    /// Its relocations: the calls of the imports and of other POUs.
+    pub(crate) relocations: Vec<ModuleReloc>,
+    /// The machine code as text, for the tests.
+    #[cfg(test)]
+    pub(crate) listing: String,
+}
+
+/// Why the code generator refused a function.
+#[derive(Debug)]
+pub(crate) struct NotCompiled(pub(crate) String);
+
+/// The work still to be taken: the pieces' indices with the pieces, largest first.
+type Queue = Mutex<std::vec::IntoIter<(usize, Piece)>>;
+
+/// The compiled pieces, each with its index in the pieces given.
+type Done = Vec<(usize, Result<Compiled, NotCompiled>)>;
+
+/// Compiles every piece for `isa` on [`Threads::count`] threads (the calling thread one of
+/// them) and gives each piece's machine code, or why there is none, in the pieces' order.
+///
+/// The threads take the pieces largest first (the most IR instructions; a project's
+/// functions range from a few instructions to thousands), so that no thread is left with a
+/// large one at the end; which thread compiles a piece does not change its bytes. A panic of
+/// the code generator refuses that piece only; a thread that cannot be started leaves its
+/// share to the others.
+pub(crate) fn compile_all(
+    pieces: Vec<Piece>,
+    isa: &dyn TargetIsa,
+    threads: Threads,
+) -> Vec<Result<Compiled, NotCompiled>> {
+    let count = pieces.len();
+    let threads = threads.count(count);
+    let mut largest_first: Vec<(usize, Piece)> = pieces.into_iter().enumerate().collect();
+    largest_first.sort_by_key(|(_, piece)| std::cmp::Reverse(piece.function.dfg.num_insts()));
+    let queue: Queue = Mutex::new(largest_first.into_iter());
+    let mut parts: Vec<Done> = Vec::with_capacity(threads);
+    if threads <= 1 {
+        parts.push(compile_queued(&queue, isa));
+        #[cfg(test)]
+        THREADS_IN_TESTS.with(|counts| counts.borrow_mut().push(1));
+    } else {
+        std::thread::scope(|scope| {
+            let helpers: Vec<_> = (1..threads)
+                .filter_map(|number| {
+                    std::thread::Builder::new()
+                        .name(format!("rivet-jit-{number}"))
+                        .stack_size(THREAD_STACK_BYTES)
+                        .spawn_scoped(scope, || compile_queued(&queue, isa))
+                        .ok()
+                })
+                .collect();
+            #[cfg(test)]
+            THREADS_IN_TESTS.with(|counts| counts.borrow_mut().push(1 + helpers.len()));
+            parts.push(compile_queued(&queue, isa));
+            // Joined here, so that a thread that panicked outside its pieces' catch (which
+            // nothing in `compile_queued` does) loses only its results instead of panicking
+            // the scope: its pieces are then refused below.
+            parts.extend(helpers.into_iter().filter_map(|helper| helper.join().ok()));
+        });
+    }
+    let mut results: Vec<Option<Result<Compiled, NotCompiled>>> =
+        (0..count).map(|_| None).collect();
+    for (index, result) in parts.into_iter().flatten() {
+        results[index] = Some(result);
+    }
+    results
+        .into_iter()
+        .map(|result| {
+            result.unwrap_or_else(|| {
+                Err(NotCompiled(
+                    "its compiling thread failed (an internal error)".into(),
+                ))
+            })
+        })
+        .collect()
+}
+
+/// Compiles pieces taken from `queue` until it is empty, with one context, and gives them
+/// with their indices.
+fn compile_queued(queue: &Queue, isa: &dyn TargetIsa) -> Done {
+    let mut codegen = cranelift_codegen::Context::new();
+    let mut done = Vec::new();
+    loop {
+        // The lock is held only to take the next piece (a lock poisoned by another thread's
+        // panic still holds a sound iterator: `next` does not panic halfway).
+        let next = queue.lock().unwrap_or_else(PoisonError::into_inner).next();
+        let Some((index, piece)) = next else {
+            return done;
+        };
+        // A code generator bug must not take the loading thread down: the POU falls back to
+        // the interpreter with the reason (§8.2).
+        let result = std::panic::catch_unwind(AssertUnwindSafe(|| {
+            #[cfg(test)]
+            if piece.panics {
+                panic!("the code generator fails (injected by a test)");
+            }
+            compile(&mut codegen, piece.function, piece.id, isa)
+        }));
+        let result = match result {
+            Ok(result) => {
+                codegen.clear();
+                result
+            }
+            Err(_) => {
+                // The context may be left halfway through a compilation.
+                codegen = cranelift_codegen::Context::new();
+                Err(NotCompiled(
+                    "the code generator failed on it (an internal error)".into(),
+                ))
+            }
+        };
+        done.push((index, result));
+    }
+}
+
+/// Compiles function `function` (to be defined as `id`) for `isa`, or says why it cannot.
+fn compile(
+    codegen: &mut cranelift_codegen::Context,
+    function: Function,
+    id: FuncId,
+    isa: &dyn TargetIsa,
+) -> Result<Compiled, NotCompiled> {
+    codegen.func = function;
+    // The tests read the machine code's listing (§7 rule 5: no reachable trap).
+    codegen.set_disasm(cfg!(test));
+    codegen
+        .compile(isa, &mut ControlPlane::default())
+        .map_err(|error| NotCompiled(format!("{:?}", error.inner)))?;
+    // Read again through a shared borrow, beside the function the relocations name.
+    let compiled = codegen
+        .compiled_code()
+        .ok_or_else(|| NotCompiled("the code generator gave no code (an internal error)".into()))?;
+    let relocations = compiled
+        .buffer
+        .relocs()
+        .iter()
+        .map(|relocation| ModuleReloc::from_mach_reloc(relocation, &codegen.func, id))
+        .collect();
+    Ok(Compiled {
+        bytes: compiled.code_buffer().to_vec(),
+        alignment: u64::from(compiled.buffer.alignment),
+        relocations,
+        #[cfg(test)]
+        listing: compiled.vcode.clone().unwrap_or_default(),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn few_functions_are_compiled_on_the_loading_thread_many_on_at_most_eight() {
+        let offered = std::thread::available_parallelism().map_or(1, std::num::NonZeroUsize::get);
+        assert_eq!(Threads::Host.count(0), 1);
+        assert_eq!(Threads::Host.count(15), 1);
+        assert_eq!(Threads::Host.count(16), offered.min(8));
+        assert_eq!(Threads::Host.count(5_000), offered.min(8));
+        assert_eq!(Threads::Exactly(4).count(2), 2);
+        assert_eq!(Threads::Exactly(4).count(0), 1);
+        assert_eq!(Threads::Exactly(0).count(40), 1);
+    }
+}
