@@ -23,7 +23,8 @@ use crate::workloads::{compile, engine, engine_with, instructions, workloads};
 /// The workloads that have a C twin (`<name>.c` beside this file).
 pub const NAMES: [&str; 6] = ["array_loop", "dint", "real", "bool", "fb_calls", "strings"];
 
-/// The workloads whose goal is native ÷ C `-O2` ≤ 2 (§11.3).
+/// The workloads whose goal is native ÷ C `-O2` ≤ 2 (§11.3), read against the scalar twin
+/// where gcc vectorises (§13, question 1).
 const GOAL_WORKLOADS: [&str; 3] = ["array_loop", "dint", "real"];
 
 /// The optimisation flags a twin is built with.
@@ -219,6 +220,10 @@ pub fn report(median_ns: &dyn Fn(&mut dyn FnMut()) -> f64) {
             ""
         } else if native_ns / o2 <= 2.0 {
             "met"
+        } else if native_ns / scalar <= 2.0 {
+            // gcc vectorises at -O2 where Cranelift emits scalar code; the goal is read
+            // against the scalar twin then (`docs/native-engine.md` §13, question 1).
+            "met against the scalar twin (vectorised: not met)"
         } else {
             "not met"
         };
