@@ -463,9 +463,15 @@ impl BodyGen<'_, '_, '_> {
                 )))
             }
             "ISVALIDREF" | "__ISVALIDREF" => {
-                // A reference is valid when it points somewhere: its address is not 0.
+                // A reference is valid when it points somewhere: its address is not 0. A
+                // reference variable or member comes back followed to its target, whose
+                // address is the reference's value; an element of an array of references
+                // comes back as the slot itself, which holds that value.
                 let typed = self.place(&first()?)?;
-                let pointer = self.pointer_to(&typed)?;
+                let pointer = match typed.ty {
+                    Type::Reference(_) => self.reference_value(typed.place)?,
+                    _ => self.pointer_to(&typed)?,
+                };
                 let null = self.build.scalar_constant(0, IE::Lword);
                 let dst = self.temp(1);
                 self.emit(Instr::Compare {

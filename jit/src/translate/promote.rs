@@ -681,7 +681,7 @@ impl Translator<'_, '_> {
         writes
     }
 
-    fn aliases_promoted(&self, operand: Operand, size: u32) -> bool {
+    pub(crate) fn aliases_promoted(&self, operand: Operand, size: u32) -> bool {
         self.promoted.iter().any(|(place, place_size, _)| {
             may_overlap(self.layout, (*place, *place_size), (operand, size))
         })

@@ -3,10 +3,9 @@
 
 use cranelift_codegen::ir::condcodes::{FloatCC, IntCC};
 use cranelift_codegen::ir::{BlockArg, InstBuilder, Type, Value, types};
-use program_image::{BinaryOp, Elementary, Operand, UnaryOp};
+use program_image::{BinaryOp, Elementary, Instr, Operand, UnaryOp};
 
 use super::host_calls::{Import, binary_op_code, unary_op_code};
-use super::promote::{self, Access};
 use super::{Translator, int_type, is_signed};
 
 /// 2⁶³ as a double: below it in magnitude an integral double converts to `i64` exactly.
@@ -105,54 +104,77 @@ impl Translator<'_, '_> {
             .bitcast(ir, cranelift_codegen::ir::MemFlagsData::new(), bits)
     }
 
-    /// Whether the left operand `a` of a REAL or LREAL `fadd` or `fmul` must be loaded by
-    /// [`Self::load_unfoldable`], because the code generator could fold its load into the
+    /// Whether the left operand `a` of a REAL or LREAL (`ty`) `fadd` or `fmul` must be loaded
+    /// by [`Self::load_unfoldable`], because the code generator could fold its load into the
     /// instruction by swapping the operands (§6.1).
     ///
-    /// The backend folds a load only when no other load or store comes between it and the
-    /// operation. The left operand is loaded first, so a load of the right operand that stays
-    /// in the code keeps the left one's in place, and the float load, which the code
-    /// generator can forward from the store of the instruction before (the temporaries of an
-    /// expression), is kept. The right operand's load may vanish when it is a constant, a
-    /// place a loop keeps in a variable, or the place the
-    /// instruction before wrote (its store is forwarded to the load), and at the start of a
-    /// block, where the store before is not known here; then the left operand's order is
-    /// kept by the integer load, except when the right one is a constant that is no NaN:
-    /// of a NaN and a number, either order gives the NaN.
-    fn left_could_be_folded(&self, ir: Type, a: Operand, b: Operand) -> bool {
+    /// The backend folds a load that is the last load or store before the operation, and the
+    /// code generator's alias analysis removes loads it can prove redundant (a place loaded or
+    /// stored before, with no store since, even across blocks and instructions), so whether the
+    /// right operand's load stays between them cannot be told here. The float load is kept
+    /// only where no swap can show or no load of the left operand is left: the same place on
+    /// both sides, a right operand that is a folded constant and no NaN (of a NaN and a
+    /// number, either order gives the NaN), a left operand that is a folded constant or a
+    /// place a loop keeps in a variable, and a left operand the instruction just before
+    /// computed with an inline real operation and stored, whose store is then the last one and
+    /// is forwarded to the load (the temporaries of an expression, where keeping the value in
+    /// a register matters most).
+    fn left_could_be_folded(&self, ty: Elementary, a: Operand, b: Operand) -> bool {
         if a == b {
             // The same value on both sides: the order cannot show.
             return false;
         }
-        if let Operand::Const(offset) = b {
-            let not_nan = self.folded_constants.and_then(|pool| {
-                let bytes = pool.get(offset as usize..)?;
-                Some(if ir == types::F32 {
-                    let raw: [u8; 4] = bytes.get(..4)?.try_into().ok()?;
-                    !f32::from_le_bytes(raw).is_nan()
-                } else {
-                    let raw: [u8; 8] = bytes.get(..8)?.try_into().ok()?;
-                    !f64::from_le_bytes(raw).is_nan()
-                })
-            });
-            return not_nan != Some(true);
+        let ir = float_type(ty);
+        if let Operand::Const(offset) = b
+            && self.constant_is_a_number(ir, offset)
+        {
+            return false;
+        }
+        if matches!(a, Operand::Const(_)) && self.folded_constants.is_some() {
+            return false;
         }
         let size = ir.bytes();
-        let kept_in_a_variable = self
+        if self
             .promoted
             .iter()
-            .any(|(place, place_size, _)| *place == b && *place_size == size);
+            .any(|(place, place_size, _)| *place == a && *place_size == size)
+        {
+            return false;
+        }
         let pc = self.pc as usize;
-        let written_just_before = pc
-            .checked_sub(1)
-            .and_then(|before| self.code.get(before))
-            .and_then(promote::accesses)
-            .is_some_and(|accesses| {
-                accesses
-                    .iter()
-                    .any(|(place, _, access)| *place == b && *access != Access::Read)
-            });
-        kept_in_a_variable || written_just_before || self.blocks.at(pc).is_some()
+        let computed_just_before = self.blocks.at(pc).is_none()
+            && !self.aliases_promoted(a, size)
+            && pc
+                .checked_sub(1)
+                .and_then(|before| self.code.get(before))
+                .is_some_and(|instr| {
+                    matches!(
+                        instr,
+                        Instr::Binary {
+                            op: BinaryOp::Add | BinaryOp::Sub | BinaryOp::Mul | BinaryOp::Div,
+                            ty: computed,
+                            dst,
+                            ..
+                        } if *dst == a && *computed == ty
+                    )
+                });
+        !computed_just_before
+    }
+
+    /// Whether the constant pool is folded and holds a number (no NaN) of type `ir` at
+    /// `offset`.
+    fn constant_is_a_number(&self, ir: Type, offset: u32) -> bool {
+        let number = self.folded_constants.and_then(|pool| {
+            let bytes = pool.get(offset as usize..)?;
+            Some(if ir == types::F32 {
+                let raw: [u8; 4] = bytes.get(..4)?.try_into().ok()?;
+                !f32::from_le_bytes(raw).is_nan()
+            } else {
+                let raw: [u8; 8] = bytes.get(..8)?.try_into().ok()?;
+                !f64::from_le_bytes(raw).is_nan()
+            })
+        });
+        number == Some(true)
     }
 
     /// `Binary` on a real; false to leave it to the host.
@@ -180,7 +202,7 @@ impl Translator<'_, '_> {
             return false;
         }
         let l =
-            if matches!(op, BinaryOp::Add | BinaryOp::Mul) && self.left_could_be_folded(ir, a, b) {
+            if matches!(op, BinaryOp::Add | BinaryOp::Mul) && self.left_could_be_folded(ty, a, b) {
                 self.load_unfoldable(ir, a)
             } else {
                 self.load(ir, a)

@@ -108,10 +108,12 @@ proptest! {
 /// NaN where the interpreter's `l * r` gives the left one's (`docs/native-engine.md` §6.1).
 /// The NaNs are made in the first cycle and read from memory in the later ones; the line of
 /// `negated` checks that `(-x) * (-y)` is not taken for `x * y`, which would turn a NaN's sign.
-/// The last two lines cover the translator's choice of which left operands to load as
-/// integers (`translate/real.rs`, `left_could_be_folded`): both operands read from memory,
-/// where the right one's load keeps the left one's in place, and a right operand that a loop
-/// keeps in a variable, which is no load.
+/// The last lines cover the translator's choice of which left operands to load as integers
+/// (`translate/real.rs`, `left_could_be_folded`): both operands read from memory; a right
+/// operand that a loop keeps in a variable, which is no load; and a right operand read before
+/// in the same loop, whose second load the code generator drops as redundant (found by
+/// review: the rule before this one, which only looked for a right operand written by the
+/// instruction before, failed it).
 #[test]
 fn sums_and_products_of_nans_keep_the_left_operands_nan() {
     same_under_both_engines(
@@ -119,7 +121,7 @@ fn sums_and_products_of_nans_keep_the_left_operands_nan() {
          VAR n : INT; two : LREAL := 2.0; neg : LREAL; pos : LREAL; sum : LREAL; product : LREAL;
            negated : LREAL; rneg : REAL; rpos : REAL; rsum : REAL; rproduct : REAL; x : LREAL;
            y : LREAL; z : LREAL; rest : LREAL; other : LREAL; rrest : REAL; rother : REAL;
-           moved : LREAL; kept : LREAL; i : INT; END_VAR
+           moved : LREAL; kept : LREAL; i : INT; acc : LREAL; again : LREAL; END_VAR
          n := n + 1;
          IF n = 1 THEN
            neg := LREAL#0.0 / LREAL#0.0; pos := -neg;
@@ -132,6 +134,7 @@ fn sums_and_products_of_nans_keep_the_left_operands_nan() {
          negated := (-pos) * (-two);
          other := pos * rest; rother := rpos + rrest;
          FOR i := 1 TO 2 DO two := two + 1.0; kept := pos * moved; moved := -pos; END_FOR;
+         FOR i := 1 TO 2 DO acc := acc + rest; again := pos * rest; END_FOR;
          END_PROGRAM",
     );
 }

@@ -616,6 +616,12 @@ fn cases() -> Vec<Case> {
             "r REF= x; a := __ISVALIDREF(r);",
             vec![("a", Is("TRUE"))],
         ),
+        case(
+            "ISVALIDREF",
+            "x : INT; refs : ARRAY[1..3] OF REFERENCE TO INT; a : BOOL; b : BOOL;",
+            "refs[1] REF= x; a := ISVALIDREF(refs[1]); b := ISVALIDREF(refs[3]);",
+            vec![("a", Is("TRUE")), ("b", Is("FALSE"))],
+        ),
         // Standard function blocks: two cycles of 10 ms each.
         case(
             "TON",
