@@ -97,7 +97,10 @@ impl BodyGen<'_, '_, '_> {
         let upper = name.to_ascii_uppercase();
         let values = self.ordered(&upper, args)?;
         let result_ty = match self.type_of(&Expr::CallExpr(node.clone())) {
-            // A generic result (`INT_TO_BCD` gives ANY_BIT) takes the type of where it goes.
+            // No standard function has a generic result any more (a `*_TO_BCD` result is the
+            // bit string of its argument's width, or the bit string type the checker recorded
+            // for where it goes: `sema/body/bcd_target.rs`); one left untyped takes the type of
+            // where it goes.
             Type::Generic(_) | Type::Error => {
                 want.cloned().unwrap_or(Type::Elementary(Elementary::Word))
             }

@@ -360,6 +360,28 @@ END_PROGRAM
         assert_eq!(hover, "xRunning : BOOL\ndeclared in FB_Motor");
     }
 
+    /// A BCD conversion's result is the bit string of its argument's width, not ANY_BIT.
+    #[test]
+    fn hover_shows_the_width_of_a_bcd_code() {
+        let source = SourceProject::new(
+            "PROGRAM Main\nVAR w : WORD; l : LWORD; i : INT; END_VAR\n\
+             w := INT_TO_BCD(i) OR w; l := LINT_TO_BCD(LINT#5) XOR l;\nEND_PROGRAM\n",
+        );
+        let body = project_model::st_body_files(&source.project)
+            .into_iter()
+            .find(|body| body.pou.name == "Main")
+            .expect("Main has a body");
+        let text = body.text.to_owned();
+        assert_eq!(
+            hover_text(&source, &body.target, at(&text, "INT_TO_BCD")),
+            "FUNCTION INT_TO_BCD(IN : ANY_INT) : WORD"
+        );
+        assert_eq!(
+            hover_text(&source, &body.target, at(&text, "LINT_TO_BCD")),
+            "FUNCTION LINT_TO_BCD(IN : LINT) : LWORD"
+        );
+    }
+
     fn hover_text(source: &SourceProject, target: &TextTarget, offset: usize) -> String {
         hover(&source.project, target, offset).expect("hover").text
     }

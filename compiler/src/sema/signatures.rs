@@ -170,8 +170,9 @@ pub(crate) fn function(name: &str) -> Option<FunctionSig> {
         "TRUNC_INT" => sig(&[("IN", Class(G::Real))], E(Int)),
         "ROUND" => one(G::Real, T(G::Real)),
         "BCD_TO_INT" => sig(&[("IN", Class(G::Bit))], E(Int)),
-        // The width of a BCD result depends on where it goes.
-        "INT_TO_BCD" => sig(&[("IN", Class(G::Int))], Class(G::Bit)),
+        // The argument is converted to INT, so the result is a WORD; an assignment or input of
+        // another bit string type gives it that type (`bcd_target.rs`).
+        "INT_TO_BCD" => sig(&[("IN", Class(G::Int))], E(bcd_code(Int))),
         "ADR" | "ADRINST" | "__NEW" => sig(&[("IN", Class(G::Any))], Pointer),
         "BITADR" => sig(&[("IN", Class(G::Any))], E(Dword)),
         "SIZEOF" | "XSIZEOF" => sig(&[("IN", Class(G::Any))], AnyInt),
@@ -205,15 +206,44 @@ fn conversion(upper: &str) -> Option<FunctionSig> {
                 other => E(other),
             }),
         };
-        let to_sig = match to {
-            "BCD" => Some(Class(Generic::Bit)),
-            _ => target(to),
+        let (from_sig, to_sig) = match to {
+            "BCD" => bcd_conversion(from),
+            _ => (from_sig, target(to)),
         };
         if let (Some(from), Some(to)) = (from_sig, to_sig) {
             return Some(sig(&[("IN", from)], to));
         }
     }
     None
+}
+
+/// The input and result of `from_TO_BCD`: the bit string of the integer's width, as IEC
+/// 61131-3 ed. 3 names them (table 22: `USINT_TO_BCD_BYTE`, `UINT_TO_BCD_WORD`,
+/// `UDINT_TO_BCD_DWORD`, `ULINT_TO_BCD_LWORD`), and CODESYS's `BYTE_TO_BCD`, `WORD_TO_BCD`,
+/// `DWORD_TO_BCD` code a bit string's unsigned value. Decimal digits code integers only: from
+/// any other type the input wants an integer, so `REAL_TO_BCD(r)` is refused as a type
+/// mismatch.
+fn bcd_conversion(from: &str) -> (Option<Sig>, Option<Sig>) {
+    let Some(from) = Elementary::from_name(from) else {
+        return (None, None);
+    };
+    let input = if from.is_integer() || (from.is_bit_string() && from != Bool) {
+        Sig::E(from)
+    } else {
+        Sig::Class(Generic::Int)
+    };
+    (Some(input), Some(Sig::E(bcd_code(from))))
+}
+
+/// The bit string as wide as `from` (a character or string: as one of its characters), which
+/// holds the BCD code of an integer of that type.
+fn bcd_code(from: Elementary) -> Elementary {
+    match from.size_bits() {
+        8 => Byte,
+        16 => Word,
+        32 => Dword,
+        _ => Lword,
+    }
 }
 
 /// A standard function block's interface.
@@ -361,6 +391,34 @@ mod tests {
             Sig::E(TimeOfDay)
         );
         assert!(function("REAL_TO_FOO").is_none());
+    }
+
+    /// A BCD code is the bit string of its integer's width, so a call inside an operator has a
+    /// type; only integers (and CODESYS's bit strings) have decimal digits to code.
+    #[test]
+    fn a_bcd_code_is_as_wide_as_its_integer() {
+        for (name, input, result) in [
+            ("USINT_TO_BCD", Sig::E(Usint), Byte),
+            ("SINT_TO_BCD", Sig::E(Sint), Byte),
+            ("INT_TO_BCD", Sig::Class(Generic::Int), Word),
+            ("UINT_TO_BCD", Sig::E(Uint), Word),
+            ("DINT_TO_BCD", Sig::E(Dint), Dword),
+            ("udint_to_bcd", Sig::E(Udint), Dword),
+            ("LINT_TO_BCD", Sig::E(Lint), Lword),
+            ("ULINT_TO_BCD", Sig::E(Ulint), Lword),
+            ("WORD_TO_BCD", Sig::E(Word), Word),
+            ("REAL_TO_BCD", Sig::Class(Generic::Int), Dword),
+            ("BOOL_TO_BCD", Sig::Class(Generic::Int), Byte),
+        ] {
+            let signature = function(name).unwrap();
+            assert_eq!(signature.inputs[0].1, input, "{name}");
+            assert_eq!(signature.result, Sig::E(result), "{name}");
+        }
+        assert_eq!(
+            function("BCD_TO_LINT").unwrap().inputs[0].1,
+            Sig::Class(Generic::Bit)
+        );
+        assert!(function("FOO_TO_BCD").is_none());
     }
 
     #[test]

@@ -128,12 +128,23 @@ fn integer_operators(
     }
     choices.push((2, real_into(ty, below)));
     // From binary-coded decimal (the `FROM_BCD` instruction); most values are no BCD, which
-    // the conversion must treat alike in both engines. The way back, `*_TO_BCD`, has the
-    // type of where it goes, so it is an assignment of its own (`statements.rs`).
+    // the conversion must treat alike in both engines.
     let from_bcd = format!("BCD_TO_{}", ty.name());
+    let from = from_bcd.clone();
+    choices.push((1, e(ty).prop_map(move |x| format!("{from}({x})")).boxed()));
+    // The way there, `*_TO_BCD` (the `TO_BCD` instruction), gives the bit string of its
+    // argument's width, so its codes are operands of the bit operators and the result is
+    // decoded back into the integer type (negative values code their bits as unsigned).
+    let to_bcd = format!("{}_TO_BCD", ty.name());
     choices.push((
         1,
-        e(ty).prop_map(move |x| format!("{from_bcd}({x})")).boxed(),
+        (
+            e(ty),
+            proptest::sample::select(vec!["AND", "OR", "XOR"]),
+            e(ty),
+        )
+            .prop_map(move |(x, op, y)| format!("{from_bcd}({to_bcd}({x}) {op} {to_bcd}({y}))"))
+            .boxed(),
     ));
     if ty == Ty::Lint && scope.calls_int_function() {
         choices.push((2, int_function_call(below)));

@@ -136,6 +136,16 @@ fn the_generator_writes_every_construct_the_spec_lists() {
     };
     assert!(programs.iter().any(|p| bit(p, false)), "no bit read");
     assert!(programs.iter().any(|p| bit(p, true)), "no bit set");
+    // A BCD code inside an operator, decoded again (`BCD_TO_INT(INT_TO_BCD(…) OR …)`).
+    let bcd_operand = |program: &str| {
+        super::types::INTEGERS
+            .iter()
+            .any(|ty| program.contains(&format!("BCD_TO_{0}({0}_TO_BCD(", ty.name())))
+    };
+    assert!(
+        programs.iter().any(|p| bcd_operand(p)),
+        "no BCD code in an operator"
+    );
     let missing = constructs
         .iter()
         .filter(|construct| !programs.iter().any(|program| program.contains(**construct)))

@@ -97,15 +97,24 @@ fn simple(scope: Scope, expressions: &Expressions, in_loop: bool) -> BoxedStrate
             .prop_map(|(variable, bit, value)| format!("{variable}.{bit} := {value};"))
             .boxed()
     }));
-    // A conversion into BCD (the `TO_BCD` instruction) takes the type of its target, which
-    // an operand of an operator does not give it, so it is assigned straight.
+    // A conversion into BCD (the `TO_BCD` instruction) kept whole: its code is the bit string
+    // of the argument's width, converted explicitly into the integer of that width (as every
+    // change of type the generator writes is explicit); inside expressions it is written by
+    // `expressions.rs`.
     let to_bcd = Union::new(INTEGERS.iter().map(|ty| {
         let name = format!("{}_TO_BCD", ty.name());
+        let code = match ty.width_bits() {
+            8 => "BYTE",
+            16 => "WORD",
+            32 => "DWORD",
+            _ => "LWORD",
+        };
+        let back = format!("{code}_TO_{}", ty.name());
         (
             proptest::sample::select(scope.writable(*ty)),
             expressions.of(*ty),
         )
-            .prop_map(move |(target, value)| format!("{target} := {name}({value});"))
+            .prop_map(move |(target, value)| format!("{target} := {back}({name}({value}));"))
             .boxed()
     }));
     let mut choices = vec![

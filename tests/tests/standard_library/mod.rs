@@ -44,6 +44,8 @@ fn case(
 
 use Want::{Is, Near};
 
+mod bcd;
+
 /// The cases, one or more for each standard name, with the argument types where the result
 /// depends on them.
 fn cases() -> Vec<Case> {
@@ -728,6 +730,13 @@ const REFUSED: &[(&str, &str, &str, &str)] = &[
         "E0131",
     ),
     ("BITADR", "x : BOOL; a : DWORD;", "a := BITADR(x);", "E0132"),
+    // Decimal digits code integers only.
+    (
+        "INT_TO_BCD",
+        "r : REAL; w : WORD;",
+        "w := INT_TO_BCD(r);",
+        "E0104",
+    ),
 ];
 
 /// A value computed by Rust, as the literal the runtime prints.

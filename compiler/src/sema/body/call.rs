@@ -438,6 +438,9 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
             self.error(code, range_of(node), message);
             return Type::Error;
         }
+        if upper.ends_with("_TO_BCD") {
+            self.note_bcd_call(node.text_range());
+        }
         // Arguments by position, or by formal name (`IN1 := …`).
         let mut typed: Vec<(Sig, Type, Expr)> = Vec::new();
         let mut given: HashMap<usize, String> = HashMap::new();

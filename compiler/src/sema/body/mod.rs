@@ -5,6 +5,7 @@
 //! This file holds the checker and the statements; `expression.rs` types expressions, `call.rs`
 //! checks calls, `resolution.rs` records what names refer to.
 
+mod bcd_target;
 mod call;
 mod expression;
 mod refused_call;
@@ -78,6 +79,10 @@ pub(crate) struct BodyChecker<'s, 'a, 'p> {
     /// The ranges of the expressions checked so far that name a BOOL located at a bit address
     /// (`x AT %IX0.1`), for `refuse_unwritable_place`; lives as long as the body's check.
     bit_nodes: std::collections::HashSet<rowan::TextRange>,
+    /// The ranges of the standard `*_TO_BCD` calls checked so far, whose result takes a bit
+    /// string type an assignment or input gives (`bcd_target.rs`); lives as long as the
+    /// body's check.
+    bcd_calls: std::collections::HashSet<rowan::TextRange>,
 }
 
 fn range_of(node: &SyntaxNode) -> Range<usize> {
@@ -134,6 +139,7 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
             local_types: std::cell::RefCell::default(),
             property_nodes: std::collections::HashSet::new(),
             bit_nodes: std::collections::HashSet::new(),
+            bcd_calls: std::collections::HashSet::new(),
         }
     }
 
@@ -490,6 +496,9 @@ impl<'s, 'a, 'p> BodyChecker<'s, 'a, 'p> {
         context: &str,
         copied: bool,
     ) {
+        if copied && self.bcd_call_takes_target(node, value, expected) {
+            return;
+        }
         if self.converts(value, expected) {
             return;
         }
