@@ -1,9 +1,10 @@
-//! Compiling an image's Cranelift functions into machine code on scoped threads
-//! (`docs/native-engine.md` §9.3). The module builds every function on the loading thread
-//! (naming a callee needs `&mut JITModule`); the code generator needs only the function and
-//! the ISA, so the functions are compiled in parallel, each thread with its own
-//! `cranelift_codegen::Context`, and the results come back in the functions' order, so the
-//! module defines the same bytes in the same order whatever the number of threads.
+//! Translating an image's POUs into Cranelift functions and compiling those into machine code
+//! on scoped threads (`docs/native-engine.md` §9.3). Building a function reads the module's
+//! declarations only (`FunctionDeclarations`) and the code generator needs only the function
+//! and the ISA, so each thread builds a POU's functions with its own `FunctionBuilderContext`
+//! and compiles them with its own `cranelift_codegen::Context`, and the results come back in
+//! the POUs' order, so the module defines the same bytes in the same order whatever the
+//! number of threads.
 
 use std::panic::AssertUnwindSafe;
 use std::sync::{Mutex, PoisonError};
@@ -11,7 +12,10 @@ use std::sync::{Mutex, PoisonError};
 use cranelift_codegen::control::ControlPlane;
 use cranelift_codegen::ir::Function;
 use cranelift_codegen::isa::TargetIsa;
+use cranelift_frontend::FunctionBuilderContext;
 use cranelift_module::{FuncId, ModuleReloc};
+
+use crate::translate::Untranslated;
 
 /// The most threads one translation compiles on: past this the e-graph and register
 /// allocation of a typical project's functions are done faster than the threads start, and a
@@ -39,7 +43,7 @@ thread_local! {
         const { std::cell::RefCell::new(Vec::new()) };
 }
 
-/// How many threads compile an image's functions.
+/// How many threads translate and compile an image's functions.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum Threads {
     /// As many as the host offers to this process (`available_parallelism`, which on Linux
@@ -68,7 +72,18 @@ impl Threads {
     }
 }
 
-/// A function to compile and the id the module will define it as.
+/// A POU to translate and compile.
+pub(crate) struct Task {
+    /// The POU's index in the image.
+    pub(crate) pou: usize,
+    /// Its bytecode instructions: the threads take the largest POUs first.
+    pub(crate) instructions: usize,
+    /// The functions it will be built into (its own and its entry stubs'), which decide how
+    /// many threads are worth starting.
+    pub(crate) functions: usize,
+}
+
+/// A function built from a POU, to compile, and the id the module will define it as.
 pub(crate) struct Piece {
     /// The function's Cranelift IR.
     pub(crate) function: Function,
@@ -97,33 +112,60 @@ pub(crate) struct Compiled {
 #[derive(Debug)]
 pub(crate) struct NotCompiled(pub(crate) String);
 
-/// The work still to be taken: the pieces' indices with the pieces, largest first.
-type Queue = Mutex<std::vec::IntoIter<(usize, Piece)>>;
+/// What became of one POU's task.
+pub(crate) enum Built {
+    /// The translator refused the POU.
+    Refused(Untranslated),
+    /// The translator panicked on it (an internal error).
+    Failed,
+    /// Each function built from it, in the order built: its machine code, or why the code
+    /// generator made none.
+    Compiled(Vec<Result<Compiled, NotCompiled>>),
+}
 
-/// The compiled pieces, each with its index in the pieces given.
-type Done = Vec<(usize, Result<Compiled, NotCompiled>)>;
+/// The work still to be taken: the tasks' positions with the tasks, largest first.
+type Queue = Mutex<std::vec::IntoIter<(usize, Task)>>;
 
-/// Compiles every piece for `isa` on [`Threads::count`] threads (the calling thread one of
-/// them) and gives each piece's machine code, or why there is none, in the pieces' order.
+/// One thread's finished tasks, each with its position in the tasks given (and, in the
+/// tests, the POUs its translation recorded).
+type Done = Vec<(usize, Built, Recorded)>;
+
+/// The POUs a task's translation recorded as translated, for the tests.
+#[cfg(test)]
+type Recorded = Vec<u32>;
+/// Nothing is recorded outside the tests.
+#[cfg(not(test))]
+type Recorded = ();
+
+/// Translates and compiles every task's POU for `isa` on the [`Threads::count`] of their
+/// functions, at most one thread per POU (the calling thread one of them), and gives what
+/// became of each in the tasks' order.
 ///
-/// The threads take the pieces largest first (the most IR instructions; a project's
-/// functions range from a few instructions to thousands), so that no thread is left with a
-/// large one at the end; which thread compiles a piece does not change its bytes. A panic of
-/// the code generator refuses that piece only; a thread that cannot be started leaves its
-/// share to the others.
-pub(crate) fn compile_all(
-    pieces: Vec<Piece>,
+/// `build` makes a POU's functions (its own, then its stubs') with the thread's builder
+/// context; each thread then compiles them with its own `cranelift_codegen::Context`. The
+/// threads take the POUs largest first (the most bytecode instructions; a project's POUs range
+/// from a few instructions to thousands), so that no thread is left with a large one at the
+/// end; which thread builds and compiles a POU does not change its bytes. A panic of the
+/// translator or of the code generator refuses that POU only; a thread that cannot be started
+/// leaves its share to the others.
+pub(crate) fn compile_all<B>(
+    tasks: Vec<Task>,
+    build: &B,
     isa: &dyn TargetIsa,
     threads: Threads,
-) -> Vec<Result<Compiled, NotCompiled>> {
-    let count = pieces.len();
-    let threads = threads.count(count);
-    let mut largest_first: Vec<(usize, Piece)> = pieces.into_iter().enumerate().collect();
-    largest_first.sort_by_key(|(_, piece)| std::cmp::Reverse(piece.function.dfg.num_insts()));
+) -> Vec<Built>
+where
+    B: Fn(usize, &mut FunctionBuilderContext) -> Result<Vec<Piece>, Untranslated> + Sync,
+{
+    let count = tasks.len();
+    let functions = tasks.iter().map(|task| task.functions).sum();
+    let threads = threads.count(functions).min(count).max(1);
+    let mut largest_first: Vec<(usize, Task)> = tasks.into_iter().enumerate().collect();
+    largest_first.sort_by_key(|(_, task)| std::cmp::Reverse(task.instructions));
     let queue: Queue = Mutex::new(largest_first.into_iter());
     let mut parts: Vec<Done> = Vec::with_capacity(threads);
     if threads <= 1 {
-        parts.push(compile_queued(&queue, isa));
+        parts.push(compile_queued(&queue, build, isa));
         #[cfg(test)]
         THREADS_IN_TESTS.with(|counts| counts.borrow_mut().push(1));
     } else {
@@ -133,71 +175,114 @@ pub(crate) fn compile_all(
                     std::thread::Builder::new()
                         .name(format!("rivet-jit-{number}"))
                         .stack_size(THREAD_STACK_BYTES)
-                        .spawn_scoped(scope, || compile_queued(&queue, isa))
+                        .spawn_scoped(scope, || compile_queued(&queue, build, isa))
                         .ok()
                 })
                 .collect();
             #[cfg(test)]
             THREADS_IN_TESTS.with(|counts| counts.borrow_mut().push(1 + helpers.len()));
-            parts.push(compile_queued(&queue, isa));
-            // Joined here, so that a thread that panicked outside its pieces' catch (which
+            parts.push(compile_queued(&queue, build, isa));
+            // Joined here, so that a thread that panicked outside its tasks' catch (which
             // nothing in `compile_queued` does) loses only its results instead of panicking
-            // the scope: its pieces are then refused below.
+            // the scope: its POUs are then refused below.
             parts.extend(helpers.into_iter().filter_map(|helper| helper.join().ok()));
         });
     }
-    let mut results: Vec<Option<Result<Compiled, NotCompiled>>> =
-        (0..count).map(|_| None).collect();
-    for (index, result) in parts.into_iter().flatten() {
-        results[index] = Some(result);
+    let mut results: Vec<Option<(Built, Recorded)>> = (0..count).map(|_| None).collect();
+    for (position, built, recorded) in parts.into_iter().flatten() {
+        results[position] = Some((built, recorded));
     }
     results
         .into_iter()
         .map(|result| {
-            result.unwrap_or_else(|| {
-                Err(NotCompiled(
-                    "its compiling thread failed (an internal error)".into(),
-                ))
-            })
+            let (built, _recorded) = result.unwrap_or_else(|| {
+                let lost = NotCompiled("its compiling thread failed (an internal error)".into());
+                (Built::Compiled(vec![Err(lost)]), Recorded::default())
+            });
+            // The POUs translated on the other threads are recorded on this one, in the
+            // tasks' order, as one thread would have.
+            #[cfg(test)]
+            crate::translate::TRANSLATED_IN_TESTS
+                .with(|translated| translated.borrow_mut().extend(_recorded));
+            built
         })
         .collect()
 }
 
-/// Compiles pieces taken from `queue` until it is empty, with one context, and gives them
-/// with their indices.
-fn compile_queued(queue: &Queue, isa: &dyn TargetIsa) -> Done {
+/// Translates and compiles the POUs of tasks taken from `queue` until it is empty, with one
+/// builder context and one code generator context, and gives them with their positions.
+fn compile_queued<B>(queue: &Queue, build: &B, isa: &dyn TargetIsa) -> Done
+where
+    B: Fn(usize, &mut FunctionBuilderContext) -> Result<Vec<Piece>, Untranslated> + Sync,
+{
+    let mut function_context = FunctionBuilderContext::new();
     let mut codegen = cranelift_codegen::Context::new();
     let mut done = Vec::new();
     loop {
-        // The lock is held only to take the next piece (a lock poisoned by another thread's
+        // The lock is held only to take the next task (a lock poisoned by another thread's
         // panic still holds a sound iterator: `next` does not panic halfway).
         let next = queue.lock().unwrap_or_else(PoisonError::into_inner).next();
-        let Some((index, piece)) = next else {
+        let Some((position, task)) = next else {
             return done;
         };
-        // A code generator bug must not take the loading thread down: the POU falls back to
-        // the interpreter with the reason (§8.2).
-        let result = std::panic::catch_unwind(AssertUnwindSafe(|| {
-            #[cfg(test)]
-            if piece.panics {
-                panic!("the code generator fails (injected by a test)");
-            }
-            compile(&mut codegen, piece.function, piece.id, isa)
-        }));
-        let result = match result {
-            Ok(result) => {
-                codegen.clear();
-                result
-            }
+        // This thread's record (the loading thread's own, when it is this one) is set aside
+        // while the task's translation records into it.
+        #[cfg(test)]
+        let earlier = crate::translate::TRANSLATED_IN_TESTS.with(|translated| translated.take());
+        // A translator bug must not take the loading thread down: the POU falls back to the
+        // interpreter with the reason (§8.2).
+        let pieces =
+            std::panic::catch_unwind(AssertUnwindSafe(|| build(task.pou, &mut function_context)));
+        #[cfg(test)]
+        let recorded =
+            crate::translate::TRANSLATED_IN_TESTS.with(|translated| translated.replace(earlier));
+        #[cfg(not(test))]
+        let recorded = ();
+        let built = match pieces {
+            Ok(Ok(pieces)) => Built::Compiled(
+                pieces
+                    .into_iter()
+                    .map(|piece| compile_caught(&mut codegen, piece, isa))
+                    .collect(),
+            ),
+            Ok(Err(refusal)) => Built::Refused(refusal),
             Err(_) => {
-                // The context may be left halfway through a compilation.
-                codegen = cranelift_codegen::Context::new();
-                Err(NotCompiled(
-                    "the code generator failed on it (an internal error)".into(),
-                ))
+                // The builder context may be left halfway through a function.
+                function_context = FunctionBuilderContext::new();
+                Built::Failed
             }
         };
-        done.push((index, result));
+        done.push((position, built, recorded));
+    }
+}
+
+/// Compiles `piece` with `codegen`, a panic of the code generator caught as its refusal.
+fn compile_caught(
+    codegen: &mut cranelift_codegen::Context,
+    piece: Piece,
+    isa: &dyn TargetIsa,
+) -> Result<Compiled, NotCompiled> {
+    // A code generator bug must not take the loading thread down: the POU falls back to the
+    // interpreter with the reason (§8.2).
+    let result = std::panic::catch_unwind(AssertUnwindSafe(|| {
+        #[cfg(test)]
+        if piece.panics {
+            panic!("the code generator fails (injected by a test)");
+        }
+        compile(codegen, piece.function, piece.id, isa)
+    }));
+    match result {
+        Ok(result) => {
+            codegen.clear();
+            result
+        }
+        Err(_) => {
+            // The context may be left halfway through a compilation.
+            *codegen = cranelift_codegen::Context::new();
+            Err(NotCompiled(
+                "the code generator failed on it (an internal error)".into(),
+            ))
+        }
     }
 }
 

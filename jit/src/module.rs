@@ -2,20 +2,21 @@
 //! `compile.rs`) and defined in order, the module finalised, and the code-size count
 //! (`docs/native-engine.md` §8.2, §9.2, §9.3).
 
-use std::panic::AssertUnwindSafe;
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::sync::{Arc, Mutex};
 
+use cranelift_codegen::ir::Signature;
 use cranelift_frontend::FunctionBuilderContext;
 use cranelift_jit::{JITBuilder, JITModule};
 use cranelift_module::{FuncId, Linkage, Module};
 use program_image::ProgramImage;
 
-use crate::compile::{Compiled, NotCompiled, Piece, Threads, compile_all};
+use crate::compile::{Built, Compiled, NotCompiled, Piece, Task, Threads, compile_all};
 
 use crate::isa::{NativeUnsupported, host_isa};
 use crate::layout::Layout;
 use crate::machine::{self, CountingMemory, MachineCode};
+use crate::translate::declarations::FunctionDeclarations;
 use crate::translate::host_calls::{Imports, PureFunctions, libcall_name, libcall_symbols};
 use crate::translate::stub::{StubKind, StubTarget, stub_signature, stubs_needed, translate_stub};
 use crate::translate::{Environment, pou_signature, translate_pou};
@@ -129,7 +130,6 @@ impl Translation {
         }
         let folded_constants = crate::translate::scalar::constant_pool_is_read_only(image)
             .then_some(image.constants.as_slice());
-        let mut function_context = FunctionBuilderContext::new();
         // Translated and compiled until no POU is refused anew: a refused callee has no
         // function, so its callers (only they) are translated again with their calls of it
         // handed to the interpreter; only then is anything defined, so no machine code calls
@@ -144,87 +144,73 @@ impl Translation {
             image.pous.iter().map(|_| [None, None]).collect();
         let mut pending = vec![true; image.pous.len()];
         loop {
-            let environment = Environment {
-                pous: &image.pous,
-                layout,
-                imports: &imports,
-                folded_constants,
-                signature: signature.clone(),
-                functions: &functions,
-                stubs: &stubs,
-            };
-            let mut refused_now = Vec::new();
-            // Every pending POU's function and stubs are built first, in order, on this
-            // thread (naming a callee needs the module), then compiled together on as many
-            // threads as `threads` gives (§9.3).
-            let mut pieces = Vec::new();
-            let mut built = Vec::new();
+            // Every pending POU with a function is a task: its function and stubs are built
+            // and compiled together on as many threads as `threads` gives (§9.3).
+            let mut tasks = Vec::new();
             for (index, pou) in image.pous.iter().enumerate() {
                 if !std::mem::take(&mut pending[index]) {
                     continue;
                 }
                 compiled[index] = None;
-                let Some(id) = functions[index] else {
-                    continue;
+                if functions[index].is_some() {
+                    let stub_count = stubs[index].iter().flatten().count();
+                    tasks.push(Task {
+                        pou: index,
+                        instructions: pou.code.len(),
+                        functions: 1 + stub_count,
+                    });
+                }
+            }
+            let built_pous: Vec<usize> = tasks.iter().map(|task| task.pou).collect();
+            let results = {
+                let environment = Environment {
+                    pous: &image.pous,
+                    layout,
+                    imports: &imports,
+                    folded_constants,
+                    signature: signature.clone(),
+                    functions: &functions,
+                    stubs: &stubs,
                 };
-                let at = index;
-                let index = index as u32;
-                // A translator bug must not take the loading thread down: the POU falls back
-                // to the interpreter with the reason (§8.2).
-                let result = std::panic::catch_unwind(AssertUnwindSafe(|| {
-                    let function =
-                        translate_pou(&environment, index, &mut function_context, &mut module)?;
-                    let target = StubTarget {
-                        pou,
-                        index,
-                        function: id,
-                        imports: &imports,
-                        signature: stub_signature.clone(),
-                    };
-                    let mut made = Vec::with_capacity(2);
-                    for kind in [StubKind::Enter, StubKind::Prepare] {
-                        if let Some(stub_id) = stubs[at][kind as usize] {
-                            let stub =
-                                translate_stub(&target, kind, &mut function_context, &mut module);
-                            made.push((stub_id, stub));
-                        }
+                // Read-only from here until every function is compiled: the threads name
+                // callees and imports from the declarations alone.
+                let declarations = FunctionDeclarations::of(&module);
+                let build = |at: usize, function_context: &mut FunctionBuilderContext| {
+                    build_pou(
+                        &environment,
+                        &declarations,
+                        at,
+                        &stub_signature,
+                        function_context,
+                    )
+                };
+                compile_all(tasks, &build, module.isa(), threads)
+            };
+            let mut refused_now = Vec::new();
+            for (at, built) in built_pous.into_iter().zip(results) {
+                let mut results = match built {
+                    Built::Compiled(results) => results.into_iter(),
+                    Built::Refused(refusal) => {
+                        refused_now.push(refusal);
+                        continue;
                     }
-                    Ok((function, made))
-                }));
-                match result {
-                    Ok(Ok((function, made))) => {
-                        // The function first, then its stubs in the order of `StubKind`: the
-                        // order they are taken back in below.
-                        let pieces_of_pou = std::iter::once((id, function)).chain(made);
-                        pieces.extend(pieces_of_pou.map(|(id, function)| Piece {
-                            function,
-                            id,
-                            #[cfg(test)]
-                            panics: pou.name == crate::compile::COMPILE_PANICS_IN_TESTS,
-                        }));
-                        built.push(at);
-                    }
-                    Ok(Err(refusal)) => refused_now.push(refusal),
-                    Err(_) => {
+                    Built::Failed => {
                         refused_now.push(Untranslated {
-                            pou: index,
-                            name: pou.name.clone(),
+                            pou: at as u32,
+                            name: image.pous[at].name.clone(),
                             instruction: None,
                             reason: "the translator failed on it (an internal error)".into(),
                         });
-                        function_context = FunctionBuilderContext::new();
+                        continue;
                     }
-                }
-            }
-            let mut results = compile_all(pieces, module.isa(), threads).into_iter();
-            let mut next_result = || {
-                results.next().unwrap_or_else(|| {
-                    Err(NotCompiled(
-                        "its machine code was lost (an internal error)".into(),
-                    ))
-                })
-            };
-            for at in built {
+                };
+                let mut next_result = || {
+                    results.next().unwrap_or_else(|| {
+                        Err(NotCompiled(
+                            "its machine code was lost (an internal error)".into(),
+                        ))
+                    })
+                };
                 let function = next_result();
                 let made = [StubKind::Enter, StubKind::Prepare]
                     .map(|kind| stubs[at][kind as usize].map(|_| next_result()));
@@ -366,6 +352,57 @@ impl Translation {
             machine,
         })
     }
+}
+
+/// Builds POU `at`'s function and then its entry stubs, in the order of `StubKind` (the order
+/// their machine code is taken back in), with `function_context`, or says why the translator
+/// refuses it.
+fn build_pou(
+    environment: &Environment<'_>,
+    declarations: &FunctionDeclarations<'_>,
+    at: usize,
+    stub_signature: &Signature,
+    function_context: &mut FunctionBuilderContext,
+) -> Result<Vec<Piece>, Untranslated> {
+    let index = at as u32;
+    let (Some(pou), Some(Some(id))) = (environment.pous.get(at), environment.functions.get(at))
+    else {
+        // Only a POU with a function is given to the threads.
+        return Err(Untranslated {
+            pou: index,
+            name: String::new(),
+            instruction: None,
+            reason: "it has no function to translate into (an internal error)".into(),
+        });
+    };
+    #[cfg(test)]
+    let panics = pou.name == crate::compile::COMPILE_PANICS_IN_TESTS;
+    let function = translate_pou(environment, index, function_context, declarations)?;
+    let mut pieces = vec![Piece {
+        function,
+        id: *id,
+        #[cfg(test)]
+        panics,
+    }];
+    let target = StubTarget {
+        pou,
+        index,
+        function: *id,
+        imports: environment.imports,
+        signature: stub_signature.clone(),
+    };
+    let ids = environment.stubs.get(at).copied().unwrap_or_default();
+    for kind in [StubKind::Enter, StubKind::Prepare] {
+        if let Some(stub_id) = ids[kind as usize] {
+            pieces.push(Piece {
+                function: translate_stub(&target, kind, function_context, declarations),
+                id: stub_id,
+                #[cfg(test)]
+                panics,
+            });
+        }
+    }
+    Ok(pieces)
 }
 
 /// The names and addresses of every symbol generated code may import: the callbacks, the

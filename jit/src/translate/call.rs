@@ -133,7 +133,7 @@ impl Translator<'_, '_> {
             Some(known) => known,
             None => {
                 let id = self.stubs.get(at)?[kind as usize]?;
-                let reference = self.module.declare_func_in_func(id, self.builder.func);
+                let reference = self.declarations.declare_in(id, self.builder.func);
                 self.stub_refs[at][kind as usize] = Some(reference);
                 reference
             }
@@ -152,7 +152,7 @@ impl Translator<'_, '_> {
             return Some(*known);
         }
         let id = (*self.functions.get(callee as usize)?)?;
-        let reference = self.module.declare_func_in_func(id, self.builder.func);
+        let reference = self.declarations.declare_in(id, self.builder.func);
         self.pou_refs[callee as usize] = Some(reference);
         Some(reference)
     }
@@ -277,7 +277,7 @@ impl Translator<'_, '_> {
             return known;
         }
         let id = self.imports.id(import);
-        let reference = self.module.declare_func_in_func(id, self.builder.func);
+        let reference = self.declarations.declare_in(id, self.builder.func);
         self.refs[import as usize] = Some(reference);
         reference
     }

@@ -8,6 +8,7 @@
 mod blocks;
 mod call;
 mod counted;
+pub(crate) mod declarations;
 pub(crate) mod host_calls;
 mod pointer;
 mod promote;
@@ -27,6 +28,7 @@ use crate::context;
 use crate::layout::Layout;
 use blocks::Blocks;
 use call::CallInstance;
+use declarations::FunctionDeclarations;
 use host_calls::{Import, Imports};
 
 /// A POU the translator leaves to the interpreter, with the reason (`docs/native-engine.md`
@@ -99,12 +101,13 @@ pub(crate) struct Environment<'a> {
     pub(crate) stubs: &'a [[Option<FuncId>; 2]],
 }
 
-/// Translates POU `index` into a function, or says why it cannot.
+/// Translates POU `index` into a function, naming its callees and imports as `declarations`
+/// declare them, or says why it cannot.
 pub(crate) fn translate_pou(
     environment: &Environment<'_>,
     index: u32,
     function_context: &mut FunctionBuilderContext,
-    module: &mut dyn cranelift_module::Module,
+    declarations: &FunctionDeclarations<'_>,
 ) -> Result<Function, Untranslated> {
     let pou = environment
         .pous
@@ -131,12 +134,11 @@ pub(crate) fn translate_pou(
         Function::with_name_signature(UserFuncName::user(0, index), environment.signature.clone());
     {
         let builder = FunctionBuilder::new(&mut function, function_context);
-        let config = module.target_config();
-        let mut translator = Translator::new(environment, index, pou, builder, module);
+        let mut translator = Translator::new(environment, index, pou, builder, *declarations);
         translator.body();
         let Translator { mut builder, .. } = translator;
         builder.seal_all_blocks();
-        builder.finalize(config);
+        builder.finalize(declarations.target_config());
     }
     Ok(function)
 }
@@ -151,8 +153,9 @@ pub(crate) struct Translator<'a, 'b> {
     imports: &'a Imports,
     /// The constant pool, when its values may be folded.
     folded_constants: Option<&'a [u8]>,
-    /// The module the function is made for, which declares the imports in it.
-    module: &'a mut dyn cranelift_module::Module,
+    /// The functions of the module the function is made for, which it declares its imports
+    /// and callees from.
+    declarations: FunctionDeclarations<'a>,
     /// Per import: its reference in this function, once declared in it.
     refs: Vec<Option<FuncRef>>,
     /// The image's POUs.
@@ -233,7 +236,7 @@ impl<'a, 'b> Translator<'a, 'b> {
         index: u32,
         pou: &'a Pou,
         mut builder: FunctionBuilder<'b>,
-        module: &'a mut dyn cranelift_module::Module,
+        declarations: FunctionDeclarations<'a>,
     ) -> Self {
         let blocks = Blocks::new(&pou.code, &mut builder);
         let promoted_loops =
@@ -270,7 +273,7 @@ impl<'a, 'b> Translator<'a, 'b> {
             layout: environment.layout,
             imports: environment.imports,
             folded_constants: environment.folded_constants,
-            module,
+            declarations,
             refs: vec![None; Import::COUNT],
             pous: environment.pous,
             functions: environment.functions,

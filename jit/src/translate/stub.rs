@@ -11,9 +11,10 @@ use cranelift_codegen::ir::{
     UserFuncName, Value, types,
 };
 use cranelift_frontend::{FunctionBuilder, FunctionBuilderContext};
-use cranelift_module::{FuncId, Module};
+use cranelift_module::FuncId;
 use program_image::{Instr, Pou};
 
+use super::declarations::FunctionDeclarations;
 use super::host_calls::{Import, Imports};
 use super::{context_flags, memory_flags};
 use crate::{MAX_CALL_DEPTH, context, fault_kind};
@@ -102,25 +103,26 @@ pub(crate) struct StubTarget<'a> {
     pub(crate) signature: Signature,
 }
 
-/// Translates the `kind` stub of `target` into a function (§4.4 steps 4–8).
+/// Translates the `kind` stub of `target` into a function (§4.4 steps 4–8), naming the
+/// callee and the callbacks as `declarations` declare them.
 pub(crate) fn translate_stub(
     target: &StubTarget<'_>,
     kind: StubKind,
     function_context: &mut FunctionBuilderContext,
-    module: &mut dyn Module,
+    declarations: &FunctionDeclarations<'_>,
 ) -> Function {
     let mut function = Function::with_name_signature(
         UserFuncName::user(1 + kind as u32, target.index),
         target.signature.clone(),
     );
-    let config = module.target_config();
+    let config = declarations.target_config();
     let mut builder = FunctionBuilder::new(&mut function, function_context);
     let entry = builder.create_block();
     builder.append_block_params_for_function_params(entry);
     builder.switch_to_block(entry);
     let params = builder.block_params(entry).to_vec();
-    let mut import = |import: Import, builder: &mut FunctionBuilder<'_>| {
-        module.declare_func_in_func(target.imports.id(import), builder.func)
+    let import = |import: Import, builder: &mut FunctionBuilder<'_>| {
+        declarations.declare_in(target.imports.id(import), builder.func)
     };
     // Step 4: the safe point, at the call site.
     let due_pointer = builder
@@ -266,7 +268,7 @@ pub(crate) fn translate_stub(
         }
         StubKind::Enter => {
             // Step 8: the body, then the depth counted down whatever its result.
-            let body = module.declare_func_in_func(target.function, builder.func);
+            let body = declarations.declare_in(target.function, builder.func);
             let call = builder
                 .ins()
                 .call(body, &[stub.context, stub.instance, stub.frame]);
