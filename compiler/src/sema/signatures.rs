@@ -220,19 +220,19 @@ fn conversion(upper: &str) -> Option<FunctionSig> {
 /// The input and result of `from_TO_BCD`: the bit string of the integer's width, as IEC
 /// 61131-3 ed. 3 names them (table 22: `USINT_TO_BCD_BYTE`, `UINT_TO_BCD_WORD`,
 /// `UDINT_TO_BCD_DWORD`, `ULINT_TO_BCD_LWORD`), and CODESYS's `BYTE_TO_BCD`, `WORD_TO_BCD`,
-/// `DWORD_TO_BCD` code a bit string's unsigned value. Decimal digits code integers only: from
-/// any other type the input wants an integer, so `REAL_TO_BCD(r)` is refused as a type
-/// mismatch.
+/// `DWORD_TO_BCD` code a bit string's unsigned value. Decimal digits code integers only: a
+/// name from any other type (`REAL_TO_BCD`) is no function.
 fn bcd_conversion(from: &str) -> (Option<Sig>, Option<Sig>) {
     let Some(from) = Elementary::from_name(from) else {
         return (None, None);
     };
-    let input = if from.is_integer() || (from.is_bit_string() && from != Bool) {
-        Sig::E(from)
-    } else {
-        Sig::Class(Generic::Int)
-    };
-    (Some(input), Some(Sig::E(bcd_code(from))))
+    // Decimal digits code integers (and, as CODESYS has it, a bit string's unsigned value);
+    // `REAL_TO_BCD`, `TIME_TO_BCD` or `STRING_TO_BCD` is no function at all, so the checker
+    // refuses the name rather than the code generator a call it cannot make.
+    if !(from.is_integer() || (from.is_bit_string() && from != Bool)) {
+        return (None, None);
+    }
+    (Some(Sig::E(from)), Some(Sig::E(bcd_code(from))))
 }
 
 /// The bit string as wide as `from` (a character or string: as one of its characters), which
@@ -407,8 +407,6 @@ mod tests {
             ("LINT_TO_BCD", Sig::E(Lint), Lword),
             ("ULINT_TO_BCD", Sig::E(Ulint), Lword),
             ("WORD_TO_BCD", Sig::E(Word), Word),
-            ("REAL_TO_BCD", Sig::Class(Generic::Int), Dword),
-            ("BOOL_TO_BCD", Sig::Class(Generic::Int), Byte),
         ] {
             let signature = function(name).unwrap();
             assert_eq!(signature.inputs[0].1, input, "{name}");
@@ -419,6 +417,9 @@ mod tests {
             Sig::Class(Generic::Bit)
         );
         assert!(function("FOO_TO_BCD").is_none());
+        for name in ["REAL_TO_BCD", "BOOL_TO_BCD", "TIME_TO_BCD", "STRING_TO_BCD"] {
+            assert!(function(name).is_none(), "{name}");
+        }
     }
 
     #[test]

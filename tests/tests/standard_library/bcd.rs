@@ -42,21 +42,25 @@ fn a_bcd_result_inside_an_expression_has_its_arguments_width() {
 /// Where an assignment or an input gives a bit string type, the value is converted to that type
 /// first (as `*_TO_<type>` does: a narrower type keeps the low bits) and coded there: the BCD of
 /// a value the target holds is the same number widened, 12345 into a DWORD keeps its five digits
-/// (in a WORD it would lose the 1), and 123456789012 into a WORD codes its low 16 bits, 6676.
+/// (in a WORD it would lose the 1), and 123456789012 into a WORD codes its low 16 bits, 6676. An
+/// integer target is coded in alike (`d := INT_TO_BCD(k)` with `d` a DINT keeps the five digits).
 #[test]
 fn a_bcd_result_assigned_takes_the_targets_width() {
     let case = case(
         "INT_TO_BCD",
         "j : INT := 1234; k : INT := 12345; i : INT := 42; l : LINT := 123456789012; \
-         dw : DWORD; dk : DWORD; b : BYTE; w : WORD; n : UINT;",
+         dw : DWORD; dk : DWORD; b : BYTE; w : WORD; n : UINT; d : DINT; o : INT;",
         "dw := INT_TO_BCD(j); dk := (INT_TO_BCD(k)); b := INT_TO_BCD(i); \
-         w := LINT_TO_BCD(l); n := WORD_TO_UINT(INT_TO_BCD(i));",
+         w := LINT_TO_BCD(l); n := WORD_TO_UINT(INT_TO_BCD(i)); d := INT_TO_BCD(k); \
+         o := INT_TO_BCD(i);",
         vec![
             ("dw", Is(leak(0x1234u32))),
             ("dk", Is(leak(0x1_2345u32))),
             ("b", Is(leak(0x42u8))),
             ("w", Is(leak(0x6676u16))),
             ("n", Is(leak(0x42u16))),
+            ("d", Is(leak(0x1_2345u32))),
+            ("o", Is(leak(0x42u16))),
         ],
     );
     if let Err(error) = run_case(&case) {

@@ -2,9 +2,9 @@
 //! result is the bit string of its argument's width (`signatures::bcd_conversion`: `INT_TO_BCD`
 //! gives a WORD), which is its type inside an operator, a comparison or a generic function's
 //! argument. Assigned, or passed to an input of another bit string type, it takes that type
-//! instead: the argument is converted to it (a narrower type keeps the low bits, as
-//! `*_TO_<type>` does) and coded there, so `dw := INT_TO_BCD(12345)` codes all five digits in
-//! the DWORD. That is what the code generator did before the result had a width of its own, and
+//! instead, or of an integer type (`iOut := INT_TO_BCD(iIn)`): the argument is converted to
+//! it (a narrower type keeps the low bits, as `*_TO_<type>` does) and coded there, so
+//! `dw := INT_TO_BCD(12345)` and `d := INT_TO_BCD(12345)` (a DINT) code all five digits. That is what the code generator did before the result had a width of its own, and
 //! CODESYS's `INT_TO_BCD` is assigned to a BYTE or WORD alike.
 
 use rowan::TextRange;
@@ -36,7 +36,12 @@ impl BodyChecker<'_, '_, '_> {
             ty.as_elementary()
                 .is_some_and(|e| e.is_bit_string() && e != Elementary::Bool)
         };
-        if !is_code_type(value_ty) || !is_code_type(expected) || value_ty == expected {
+        // An integer target is coded in too (`iOut := INT_TO_BCD(iIn)`, a common idiom): the
+        // code is then the integer's bits, with every digit that fits, and no conversion of a
+        // bit string into an integer for the checker to warn about.
+        let takes_code =
+            |ty: &Type| is_code_type(ty) || ty.as_elementary().is_some_and(Elementary::is_integer);
+        if !is_code_type(value_ty) || !takes_code(expected) || value_ty == expected {
             return false;
         }
         let mut levels = Vec::new();
