@@ -163,6 +163,7 @@ where
     let mut largest_first: Vec<(usize, Task)> = tasks.into_iter().enumerate().collect();
     largest_first.sort_by_key(|(_, task)| std::cmp::Reverse(task.instructions));
     let queue: Queue = Mutex::new(largest_first.into_iter());
+    let settings = TestSettings::of_this_thread();
     let mut parts: Vec<Done> = Vec::with_capacity(threads);
     if threads <= 1 {
         parts.push(compile_queued(&queue, build, isa));
@@ -175,7 +176,10 @@ where
                     std::thread::Builder::new()
                         .name(format!("rivet-jit-{number}"))
                         .stack_size(THREAD_STACK_BYTES)
-                        .spawn_scoped(scope, || compile_queued(&queue, build, isa))
+                        .spawn_scoped(scope, || {
+                            settings.apply();
+                            compile_queued(&queue, build, isa)
+                        })
                         .ok()
                 })
                 .collect();
@@ -207,6 +211,45 @@ where
             built
         })
         .collect()
+}
+
+/// What the tests set on the loading thread that building a POU reads (thread-locals, so
+/// that tests running at once do not meet), carried to the compiling threads; nothing outside
+/// the tests.
+#[derive(Clone, Copy)]
+struct TestSettings {
+    /// Whether loops are left unpromoted (`PROMOTION_OFF_IN_TESTS`).
+    #[cfg(test)]
+    promotion_off: bool,
+    /// Where guards count their outcomes: the loading thread's counters, which the test reads
+    /// and which outlive the compiling threads.
+    #[cfg(test)]
+    guard_outcomes_at: usize,
+}
+
+impl TestSettings {
+    /// The settings of the current thread.
+    fn of_this_thread() -> Self {
+        Self {
+            #[cfg(test)]
+            promotion_off: crate::translate::promote::PROMOTION_OFF_IN_TESTS
+                .with(std::cell::Cell::get),
+            #[cfg(test)]
+            guard_outcomes_at: crate::translate::promote::guard_outcomes_address_in_tests(),
+        }
+    }
+
+    /// Makes them the current thread's.
+    #[cfg_attr(not(test), allow(clippy::unused_self))]
+    fn apply(self) {
+        #[cfg(test)]
+        {
+            crate::translate::promote::PROMOTION_OFF_IN_TESTS
+                .with(|off| off.set(self.promotion_off));
+            crate::translate::promote::GUARD_OUTCOMES_AT_IN_TESTS
+                .with(|at| at.set(Some(self.guard_outcomes_at)));
+        }
+    }
 }
 
 /// Translates and compiles the POUs of tasks taken from `queue` until it is empty, with one
@@ -332,5 +375,35 @@ mod tests {
         assert_eq!(Threads::Exactly(4).count(2), 2);
         assert_eq!(Threads::Exactly(4).count(0), 1);
         assert_eq!(Threads::Exactly(0).count(40), 1);
+    }
+
+    /// A compiling thread builds with the test's settings: loops unpromoted when the test says
+    /// so, and guards counting in the test thread's counters, which outlive the compiling
+    /// thread (its own would be freed with it, and the test would read nothing).
+    #[test]
+    fn compiling_threads_build_with_the_tests_settings() {
+        use crate::translate::promote::{PROMOTION_OFF_IN_TESTS, guard_outcomes_address_in_tests};
+        let seen_on_a_thread = |settings: Option<TestSettings>| {
+            std::thread::spawn(move || {
+                if let Some(settings) = settings {
+                    settings.apply();
+                }
+                (
+                    PROMOTION_OFF_IN_TESTS.with(std::cell::Cell::get),
+                    guard_outcomes_address_in_tests(),
+                )
+            })
+            .join()
+            .unwrap()
+        };
+        PROMOTION_OFF_IN_TESTS.with(|off| off.set(true));
+        let settings = TestSettings::of_this_thread();
+        PROMOTION_OFF_IN_TESTS.with(|off| off.set(false));
+        let here = guard_outcomes_address_in_tests();
+        assert_eq!(seen_on_a_thread(Some(settings)), (true, here));
+        // Without them a thread has its own.
+        let (off, counters) = seen_on_a_thread(None);
+        assert!(!off);
+        assert_ne!(counters, here);
     }
 }

@@ -11,7 +11,7 @@ mod counted;
 pub(crate) mod declarations;
 pub(crate) mod host_calls;
 mod pointer;
-mod promote;
+pub(crate) mod promote;
 mod real;
 pub(crate) mod scalar;
 pub(crate) mod stub;

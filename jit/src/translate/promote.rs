@@ -71,6 +71,21 @@ thread_local! {
     /// them, so that a test sees which copy ran.
     pub(crate) static GUARD_OUTCOMES_IN_TESTS: [std::sync::atomic::AtomicU64; 2] =
         const { [std::sync::atomic::AtomicU64::new(0), std::sync::atomic::AtomicU64::new(0)] };
+    /// Where the guards built on the current thread count their outcomes, when not in its own
+    /// [`GUARD_OUTCOMES_IN_TESTS`]: a compiling thread (`compile.rs`) counts in the loading
+    /// thread's, which outlives it and which the test reads.
+    pub(crate) static GUARD_OUTCOMES_AT_IN_TESTS: std::cell::Cell<Option<usize>> =
+        const { std::cell::Cell::new(None) };
+}
+
+/// The address of the outcome counters the guards built on the current thread add to.
+#[cfg(test)]
+pub(crate) fn guard_outcomes_address_in_tests() -> usize {
+    GUARD_OUTCOMES_AT_IN_TESTS
+        .with(std::cell::Cell::get)
+        .unwrap_or_else(|| {
+            GUARD_OUTCOMES_IN_TESTS.with(|outcomes| std::ptr::from_ref(outcomes) as usize)
+        })
 }
 
 /// How an instruction touches a direct place.
@@ -489,8 +504,9 @@ impl Translator<'_, '_> {
             .brif(overlapping, counting[1], &[], counting[0], &[]);
         for (outcome, destination) in [on_variables, copy].into_iter().enumerate() {
             self.builder.switch_to_block(counting[outcome]);
-            let counter = GUARD_OUTCOMES_IN_TESTS
-                .with(|outcomes| std::ptr::from_ref(&outcomes[outcome]) as i64);
+            let counter = (guard_outcomes_address_in_tests()
+                + outcome * size_of::<std::sync::atomic::AtomicU64>())
+                as i64;
             let address = self.builder.ins().iconst(types::I64, counter);
             let one = self.builder.ins().iconst(types::I64, 1);
             self.builder.ins().atomic_rmw(
