@@ -54,6 +54,11 @@ fn instruction_text(instruction: Option<u32>) -> String {
 #[cfg(test)]
 pub(crate) const REFUSED_IN_TESTS: &str = "RefusedInTests";
 
+/// The name of a POU whose translation panics in the tests, after its function's builder was
+/// made.
+#[cfg(test)]
+pub(crate) const TRANSLATE_PANICS_IN_TESTS: &str = "TranslatePanicsInTests";
+
 #[cfg(test)]
 thread_local! {
     /// The POUs translated on the current thread, in order, for the tests to see which are
@@ -135,6 +140,12 @@ pub(crate) fn translate_pou(
     {
         let builder = FunctionBuilder::new(&mut function, function_context);
         let mut translator = Translator::new(environment, index, pou, builder, *declarations);
+        // The tests see a translator that panics halfway through a function, with the
+        // builder's context in use, and the POUs built after it on the same thread.
+        #[cfg(test)]
+        if pou.name == TRANSLATE_PANICS_IN_TESTS {
+            panic!("a translator panic the tests ask for");
+        }
         translator.body();
         let Translator { mut builder, .. } = translator;
         builder.seal_all_blocks();

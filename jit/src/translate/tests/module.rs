@@ -482,11 +482,13 @@ fn constants_fold_only_when_nothing_can_write_the_pool() {
     }
 }
 
-/// An image of 43 POUs: `Main` (POU 0) runs a `FOR` loop and calls the function blocks
+/// An image of 44 POUs: `Main` (POU 0) runs a `FOR` loop and calls the function blocks
 /// 1 ..= 30 (every fifth of which calls the next one too), the functions 31 ..= 40, the
 /// function 41 the translator refuses and the function block 42 the code generator panics
 /// on; so `Main` is translated again after the first round, and the blocks get enter stubs,
-/// the functions prepare stubs.
+/// the functions prepare stubs. The function block 43, which nothing calls, panics in the
+/// translator halfway through its function, and the POUs built after it on the same thread
+/// must come out as on one thread.
 fn many_pous() -> ProgramImage {
     let add = |dst, a, b| Instr::Binary {
         op: BinaryOp::Add,
@@ -590,6 +592,13 @@ fn many_pous() -> ProgramImage {
         8,
         vec![add(I(0), I(0), I(4))],
     ));
+    image.pous.push(pou(
+        crate::translate::TRANSLATE_PANICS_IN_TESTS.into(),
+        PouKind::FunctionBlock,
+        8,
+        8,
+        vec![add(I(0), I(0), I(4))],
+    ));
     image
 }
 
@@ -611,7 +620,7 @@ fn parallel_compilation_defines_the_same_bytes_as_one_thread() {
     let (four, four_translated, four_threads) = translate(Threads::Exactly(4));
     // Two rounds each: every POU, then `Main` again with its calls of the refused two handed
     // to the interpreter; the first round on four threads, the second (one function) on one.
-    let expected_translated: Vec<u32> = (0..=42).chain([0]).collect();
+    let expected_translated: Vec<u32> = (0..=43).chain([0]).collect();
     assert_eq!(one_translated, expected_translated);
     assert_eq!(four_translated, expected_translated);
     assert_eq!(one_threads, vec![1, 1]);
@@ -626,6 +635,7 @@ fn parallel_compilation_defines_the_same_bytes_as_one_thread() {
         vec![
             (41, "refused by the tests"),
             (42, "the code generator failed on it (an internal error)"),
+            (43, "the translator failed on it (an internal error)"),
         ]
     );
     assert_eq!(one.untranslated(), four.untranslated());
@@ -640,6 +650,6 @@ fn parallel_compilation_defines_the_same_bytes_as_one_thread() {
     assert_eq!(one.listings, four.listings);
     for code in [&one, &four] {
         assert!((0..=40).all(|pou| code.has(pou)));
-        assert!(!code.has(41) && !code.has(42));
+        assert!(!code.has(41) && !code.has(42) && !code.has(43));
     }
 }
