@@ -112,7 +112,7 @@ pub enum Event {
     /// state after it.
     ChangeApplied(ChangeApplied, TargetState),
     /// The answer to [`Command::Resolve`]: each path with what the target said about it.
-    Resolved(Vec<(String, Result<Resolved, String>)>),
+    Resolved(Vec<(String, Result<Resolved, OnlineError>)>),
     /// The answer to [`Command::Forces`]: every forced place with its value.
     Forces(Vec<(Place, Vec<u8>)>),
     /// The answer to [`Command::Tasks`].
@@ -148,7 +148,7 @@ pub enum Event {
     },
     /// The answer to [`DebugCommand::SetBreakpoints`]: each breakpoint's id or why the target
     /// refused it, in the order given.
-    BreakpointsSet(Vec<Result<u16, String>>),
+    BreakpointsSet(Vec<Result<u16, OnlineError>>),
     /// The answer to [`DebugCommand::FrameRead`]: the bytes of each range asked for.
     FrameRead {
         /// The task.
@@ -380,7 +380,7 @@ async fn run(
                                         lost = Some(error);
                                         break;
                                     }
-                                    Err(error) => answers.push((path, Err(error.to_string()))),
+                                    Err(error) => answers.push((path, Err(error))),
                                 }
                             }
                             match lost {

@@ -162,23 +162,14 @@ impl ProgramImage {
             lines: Vec::new(),
             ..owner.clone()
         };
-        self.verify_code(&scope).map_err(|message| {
-            let (instruction, reason) = split_instruction(&message);
+        self.verify_code(&scope).map_err(|error| {
+            let (instruction, reason) = error.into_instruction_reason();
             ConditionError::Refused {
                 instruction,
                 reason,
             }
         })
     }
-}
-
-/// The verifier's "instruction N: why" split into its parts (0 when it names none).
-fn split_instruction(message: &str) -> (usize, String) {
-    message
-        .strip_prefix("instruction ")
-        .and_then(|rest| rest.split_once(": "))
-        .and_then(|(number, reason)| Some((number.parse().ok()?, reason.to_owned())))
-        .unwrap_or((0, message.to_owned()))
 }
 
 /// The target of a jump instruction.

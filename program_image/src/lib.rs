@@ -14,6 +14,7 @@
 //! section of the devices the runtime masters over Modbus, with their request plan and value codec.
 
 pub mod code;
+mod code_error;
 mod condition;
 mod debug;
 mod elementary;

@@ -3,6 +3,7 @@
 //! by the name of what is wrong.
 
 use crate::code::{Instr, Operand, StdFunction};
+use crate::code_error::{CodeError, InstructionFault};
 use crate::encoding::ImageError;
 use crate::image::{InitRun, Pou, PouKind, Region};
 use crate::types::TypeDef;
@@ -114,7 +115,7 @@ impl ProgramImage {
         }
         for pou in &self.pous {
             self.verify_code(pou)
-                .map_err(|message| ImageError::Invalid(format!("POU '{}': {message}", pou.name)))?;
+                .map_err(|error| ImageError::Invalid(format!("POU '{}': {error}", pou.name)))?;
         }
         for task in &self.tasks {
             if task.priority > 31 {
@@ -232,25 +233,29 @@ impl ProgramImage {
 
     /// Checks the code of `pou` (the image's own, or a breakpoint condition in its POU's
     /// scope); the error names the instruction.
-    pub(crate) fn verify_code(&self, pou: &Pou) -> Result<(), String> {
+    pub(crate) fn verify_code(&self, pou: &Pou) -> Result<(), CodeError> {
         if pou.frame_size > self.layout.stack_size {
-            return Err(format!(
-                "its frame of {} bytes exceeds the stack",
-                pou.frame_size
-            ));
+            return Err(CodeError::FrameExceedsStack {
+                frame_bytes: pou.frame_size,
+            });
         }
         for run in &pou.frame_init {
             if u64::from(run.offset) + run.bytes.len() as u64 > u64::from(pou.frame_size) {
-                return Err("an initial value lies outside its frame".to_owned());
+                return Err(CodeError::InitialOutsideFrame);
             }
         }
         // Without the optional `sources` section, faults name the POU and instruction only.
         for entry in &pou.lines {
             if !self.sources.is_empty() && entry.file as usize >= self.sources.len() {
-                return Err("its line table names an unknown file".to_owned());
+                return Err(CodeError::UnknownLineFile);
             }
         }
-        let operand = |op: Operand, size: u64, word: usize| -> Result<(), String> {
+        // Every refusal below names the instruction it is about.
+        let at = |instruction: usize, fault: InstructionFault| CodeError::Instruction {
+            instruction,
+            fault,
+        };
+        let operand = |op: Operand, size: u64, word: usize| -> Result<(), CodeError> {
             let (offset, limit) = match op {
                 Operand::Global(o) => (o, self.layout.data_size),
                 Operand::Instance(o) => (o, pou.instance_size),
@@ -261,8 +266,12 @@ impl ProgramImage {
                 Operand::Memory(o) => (o, self.layout.memory_size),
             };
             if u64::from(offset) + size > u64::from(limit) {
-                return Err(format!(
-                    "instruction {word}: operand {op:?} of {size} bytes is outside its region"
+                return Err(at(
+                    word,
+                    InstructionFault::OperandOutside {
+                        operand: op,
+                        size_bytes: size,
+                    },
                 ));
             }
             Ok(())
@@ -271,15 +280,13 @@ impl ProgramImage {
             if (t as usize) < pou.code.len() {
                 Ok(())
             } else {
-                Err(format!(
-                    "instruction {word}: jump target {t} is outside the code"
-                ))
+                Err(at(word, InstructionFault::JumpOutside { target: t }))
             }
         };
         let callee = |p: u32, word: usize| {
             self.pous
                 .get(p as usize)
-                .ok_or_else(|| format!("instruction {word}: calls POU {p}, which does not exist"))
+                .ok_or_else(|| at(word, InstructionFault::UnknownPou { pou: p }))
         };
         for (word, instr) in pou.code.iter().enumerate() {
             match instr {
@@ -315,14 +322,20 @@ impl ProgramImage {
                 }
                 Instr::GetBit { ty, dst, src, bit } => {
                     if u32::from(*bit) >= ty.size_bytes() * 8 {
-                        return Err(format!("instruction {word}: bit {bit} of a {}", ty.name()));
+                        return Err(at(
+                            word,
+                            InstructionFault::BitOutside { bit: *bit, ty: *ty },
+                        ));
                     }
                     operand(*dst, 1, word)?;
                     operand(*src, u64::from(ty.size_bytes()), word)?;
                 }
                 Instr::SetBit { ty, dst, bit, src } => {
                     if u32::from(*bit) >= ty.size_bytes() * 8 {
-                        return Err(format!("instruction {word}: bit {bit} of a {}", ty.name()));
+                        return Err(at(
+                            word,
+                            InstructionFault::BitOutside { bit: *bit, ty: *ty },
+                        ));
                     }
                     operand(*dst, u64::from(ty.size_bytes()), word)?;
                     operand(*src, 1, word)?;
@@ -345,7 +358,7 @@ impl ProgramImage {
                     ..
                 } => {
                     if *count == 0 {
-                        return Err(format!("instruction {word}: an array of no elements"));
+                        return Err(at(word, InstructionFault::EmptyArray));
                     }
                     operand(*dst, 8, word)?;
                     operand(*base, 8, word)?;
@@ -403,9 +416,11 @@ impl ProgramImage {
                 } => {
                     let callee = callee(*p, word)?;
                     if !matches!(callee.kind, PouKind::Function | PouKind::Method) {
-                        return Err(format!(
-                            "instruction {word}: calls '{}' as a function",
-                            callee.name
+                        return Err(at(
+                            word,
+                            InstructionFault::NotAFunction {
+                                callee: callee.name.clone(),
+                            },
                         ));
                     }
                     if let Some(instance) = instance {
@@ -416,9 +431,11 @@ impl ProgramImage {
                         if u64::from(transfer.callee_offset) + u64::from(transfer.size)
                             > u64::from(callee.frame_size)
                         {
-                            return Err(format!(
-                                "instruction {word}: a parameter lies outside the frame of '{}'",
-                                callee.name
+                            return Err(at(
+                                word,
+                                InstructionFault::ParameterOutsideFrame {
+                                    callee: callee.name.clone(),
+                                },
                             ));
                         }
                     }
@@ -433,9 +450,11 @@ impl ProgramImage {
                         callee.kind,
                         PouKind::Program | PouKind::FunctionBlock | PouKind::Action
                     ) {
-                        return Err(format!(
-                            "instruction {word}: calls '{}' as a block",
-                            callee.name
+                        return Err(at(
+                            word,
+                            InstructionFault::NotABlock {
+                                callee: callee.name.clone(),
+                            },
                         ));
                     }
                     let size = if *indirect {
@@ -477,8 +496,11 @@ impl ProgramImage {
                         StdFunction::Len | StdFunction::Find | StdFunction::Compare
                     );
                     if integer_result != (dst.1 == 0) {
-                        return Err(format!(
-                            "instruction {word}: {function:?} gives the wrong kind of result"
+                        return Err(at(
+                            word,
+                            InstructionFault::WrongResultKind {
+                                function: *function,
+                            },
                         ));
                     }
                     // A recoded string's result has the other width.
@@ -504,9 +526,11 @@ impl ProgramImage {
                         callee(*class, word)?;
                         let target = callee(*method, word)?;
                         if target.kind != PouKind::Method {
-                            return Err(format!(
-                                "instruction {word}: '{}' is not a method",
-                                target.name
+                            return Err(at(
+                                word,
+                                InstructionFault::NotAMethod {
+                                    callee: target.name.clone(),
+                                },
                             ));
                         }
                         for transfer in inputs.iter().chain(outputs) {
@@ -514,9 +538,11 @@ impl ProgramImage {
                             if u64::from(transfer.callee_offset) + u64::from(transfer.size)
                                 > u64::from(target.frame_size)
                             {
-                                return Err(format!(
-                                    "instruction {word}: a parameter lies outside the frame of '{}'",
-                                    target.name
+                                return Err(at(
+                                    word,
+                                    InstructionFault::ParameterOutsideFrame {
+                                        callee: target.name.clone(),
+                                    },
                                 ));
                             }
                         }
@@ -529,9 +555,11 @@ impl ProgramImage {
                     ..
                 } => {
                     if indices.is_empty() || indices.len() > 8 {
-                        return Err(format!(
-                            "instruction {word}: an open array of {} dimensions",
-                            indices.len()
+                        return Err(at(
+                            word,
+                            InstructionFault::OpenArrayDimensions {
+                                dimensions: indices.len(),
+                            },
                         ));
                     }
                     operand(*dst, 8, word)?;
@@ -584,21 +612,19 @@ fn element_access(
     stride: u32,
     offset: u32,
     word: usize,
-) -> Result<u64, String> {
+) -> Result<u64, CodeError> {
+    let at = |fault: InstructionFault| CodeError::Instruction {
+        instruction: word,
+        fault,
+    };
     if count == 0 {
-        return Err(format!("instruction {word}: an array of no elements"));
+        return Err(at(InstructionFault::EmptyArray));
     }
     if !index_ty.is_integer() {
-        return Err(format!(
-            "instruction {word}: an index of type {}, which is not an integer",
-            index_ty.name()
-        ));
+        return Err(at(InstructionFault::IndexNotInteger { index_ty }));
     }
     if u64::from(offset) + u64::from(ty.size_bytes()) > u64::from(stride) {
-        return Err(format!(
-            "instruction {word}: a {} at offset {offset} does not fit an element of {stride} bytes",
-            ty.name()
-        ));
+        return Err(at(InstructionFault::ElementTooSmall { ty, offset, stride }));
     }
     // No region is larger than `u32::MAX` bytes, so a larger extent is refused here before
     // the region check adds the array's offset to it.
@@ -606,9 +632,11 @@ fn element_access(
         .checked_mul(u64::from(stride))
         .filter(|extent| *extent <= u64::from(u32::MAX))
         .ok_or_else(|| {
-            format!(
-                "instruction {word}: the array {array:?} of {count} elements of {stride} bytes is larger than any region"
-            )
+            at(InstructionFault::ArrayTooLarge {
+                array,
+                count,
+                stride,
+            })
         })
 }
 

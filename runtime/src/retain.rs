@@ -19,6 +19,9 @@ use sha2::{Digest, Sha256};
 
 use crate::engine::Engine;
 
+mod file_error;
+use file_error::RetainFileError;
+
 /// The SHA-256 that says whether saved retain data fits an image: see [`layout_hash`].
 pub type LayoutHash = [u8; 32];
 
@@ -172,7 +175,12 @@ impl RetainStore {
                 return RetainRestore::LayoutChanged { path };
             }
             Ok((_, saved)) => saved,
-            Err(reason) => return RetainRestore::Unreadable { path, reason },
+            Err(error) => {
+                return RetainRestore::Unreadable {
+                    path,
+                    reason: error.to_string(),
+                };
+            }
         };
         let expected: usize = ranges.iter().map(|&(_, length)| length as usize).sum();
         if saved.len() != expected {
@@ -328,32 +336,32 @@ fn encode(hash: &LayoutHash, retained: &[u8]) -> Vec<u8> {
 }
 
 /// The layout hash and retained bytes of a retain file, or what is wrong with it.
-fn parse(bytes: &[u8]) -> Result<(LayoutHash, &[u8]), String> {
+fn parse(bytes: &[u8]) -> Result<(LayoutHash, &[u8]), RetainFileError> {
     if bytes.len() < HEADER_BYTES + 32 {
-        return Err(format!("it is truncated: {} bytes", bytes.len()));
+        return Err(RetainFileError::Truncated {
+            length_bytes: bytes.len(),
+        });
     }
     if !bytes.starts_with(MAGIC) {
-        return Err("it does not start with \"RIVETRET\"".to_owned());
+        return Err(RetainFileError::BadMagic);
     }
     let version = u16::from_le_bytes([bytes[8], bytes[9]]);
     if version != VERSION {
-        return Err(format!(
-            "it has format version {version}, this runtime reads version {VERSION}"
-        ));
+        return Err(RetainFileError::WrongVersion { found: version });
     }
     let (content, checksum) = bytes.split_at(bytes.len() - 32);
     if Sha256::digest(content).as_slice() != checksum {
-        return Err("it is corrupted: its SHA-256 does not match its content".to_owned());
+        return Err(RetainFileError::Corrupted);
     }
     let mut hash = [0; 32];
     hash.copy_from_slice(&content[10..42]);
     let length = u32::from_le_bytes([content[42], content[43], content[44], content[45]]);
     let retained = &content[HEADER_BYTES..];
     if retained.len() != length as usize {
-        return Err(format!(
-            "it announces {length} bytes and holds {}",
-            retained.len()
-        ));
+        return Err(RetainFileError::WrongLength {
+            announced: length,
+            held: retained.len(),
+        });
     }
     Ok((hash, retained))
 }

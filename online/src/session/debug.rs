@@ -150,7 +150,7 @@ pub(super) async fn run(
                     Err(error @ (OnlineError::Io(..) | OnlineError::Timeout(..))) => {
                         return Err(error);
                     }
-                    Err(error) => ids.push(Err(error.to_string())),
+                    Err(error) => ids.push(Err(error)),
                 }
             }
             Ok(Some(Event::BreakpointsSet(ids)))

@@ -196,8 +196,8 @@ async fn breakpoints_are_replaced_and_each_refusal_is_named_in_its_place() {
         .unwrap();
     match next(&mut events).await {
         Event::BreakpointsSet(ids) => {
-            assert_eq!(ids[0], Ok(1));
-            let refused = ids[1].as_ref().unwrap_err();
+            assert!(matches!(ids[0], Ok(1)), "{ids:?}");
+            let refused = ids[1].as_ref().unwrap_err().to_string();
             assert!(refused.contains("BREAK_SET"), "{refused}");
             assert!(refused.contains("POU 9"), "{refused}");
         }

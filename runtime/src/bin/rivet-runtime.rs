@@ -115,12 +115,12 @@ struct Arguments {
 }
 
 /// Reads `NAME=PATH` of `--serial-port`.
-fn parse_serial_port(text: &str) -> Result<(String, String), String> {
+fn parse_serial_port(text: &str) -> anyhow::Result<(String, String)> {
     match text.split_once('=') {
         Some((name, path)) if !name.trim().is_empty() && !path.trim().is_empty() => {
             Ok((name.trim().to_owned(), path.trim().to_owned()))
         }
-        _ => Err(format!(
+        _ => Err(anyhow::anyhow!(
             "'{text}' is not NAME=PATH (a serial port's name in the project, then its device file)"
         )),
     }

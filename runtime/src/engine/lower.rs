@@ -10,6 +10,7 @@ use super::blocks;
 use super::debug::LoweredCondition;
 use super::exec::{ABSOLUTE, Addr, Exec, FRAME, INSTANCE};
 use super::fault::FaultKind;
+use super::lower_refusal::LowerRefusal;
 use super::memory::Regions;
 use super::scalar::{Arith, Bits, Real, Scalar};
 use super::strings;
@@ -58,11 +59,11 @@ pub(crate) struct Compiled {
 
 /// Why an instruction cannot run (a type the operation does not apply to).
 #[derive(Debug, thiserror::Error)]
-#[error("POU '{pou}', instruction {index}: {message}")]
+#[error("POU '{pou}', instruction {index}: {reason}")]
 pub struct LowerError {
     pou: String,
     index: usize,
-    message: String,
+    reason: LowerRefusal,
 }
 
 impl Compiled {
@@ -81,10 +82,10 @@ impl Compiled {
                     Instr::Native { block } => super::native::lower(block, &pou.name, image),
                     other => lower(other, regions, &sizes, index as u32),
                 };
-                ops.push(op.map_err(|message| LowerError {
+                ops.push(op.map_err(|reason| LowerError {
                     pou: pou.name.clone(),
                     index,
-                    message,
+                    reason,
                 })?);
             }
             let mut statement_starts = vec![false; ops.len()];
@@ -125,7 +126,7 @@ pub(crate) fn lower_condition(
             lower(instr, regions, &[], instruction as u32).map_err(|reason| {
                 ConditionError::Refused {
                     instruction,
-                    reason,
+                    reason: reason.to_string(),
                 }
             })
         })
@@ -175,7 +176,7 @@ macro_rules! dispatch {
         match $ty {
             E::Real => Ok($f::<f32>($($arg),*)),
             E::Lreal => Ok($f::<f64>($($arg),*)),
-            E::Bool => Err(format!("arithmetic on {}", $ty.name())),
+            E::Bool => Err(LowerRefusal::Arithmetic { ty: $ty }),
             other => Ok(dispatch!(bits other, $f($($arg),*))),
         }
     };
@@ -199,7 +200,7 @@ macro_rules! dispatch {
 
 /// `at` is the instruction's own index in its POU, which a call gives the debugger as the
 /// caller's call site (the instruction a caller's frame shows on the call stack).
-fn lower(instr: &Instr, regions: &Regions, sizes: &[usize], at: u32) -> Result<Op, String> {
+fn lower(instr: &Instr, regions: &Regions, sizes: &[usize], at: u32) -> Result<Op, LowerRefusal> {
     let a = |operand: &Operand| addr(*operand, regions);
     Ok(match instr {
         Instr::Move { ty, dst, src } => dispatch!(all ty, mov(a(dst), a(src))),
@@ -511,9 +512,9 @@ fn lower(instr: &Instr, regions: &Regions, sizes: &[usize], at: u32) -> Result<O
             })
         }
         Instr::Native { block } => {
-            return Err(format!(
-                "the native block '{block}' needs its function block's instance type"
-            ));
+            return Err(LowerRefusal::NativeWithoutInstance {
+                block: block.clone(),
+            });
         }
         Instr::Now { dst } => {
             let dst = a(dst);
@@ -752,7 +753,7 @@ fn compare<T: Scalar>(op: CompareOp, dst: Addr, a: Addr, b: Addr) -> Op {
     }
 }
 
-fn unary(op: UnaryOp, ty: E, dst: Addr, src: Addr) -> Result<Op, String> {
+fn unary(op: UnaryOp, ty: E, dst: Addr, src: Addr) -> Result<Op, LowerRefusal> {
     match op {
         UnaryOp::Not if ty == E::Bool => Ok(Box::new(move |x| {
             let value = x.get::<u8>(src)?;
@@ -777,7 +778,7 @@ fn unary(op: UnaryOp, ty: E, dst: Addr, src: Addr) -> Result<Op, String> {
         UnaryOp::Abs => dispatch!(num ty, arith1(dst, src, Arith::abs)),
         _ if ty == E::Real => Ok(real1::<f32>(op, dst, src)),
         _ if ty == E::Lreal => Ok(real1::<f64>(op, dst, src)),
-        _ => Err(format!("{op:?} on {}", ty.name())),
+        _ => Err(LowerRefusal::Unary { op, ty }),
     }
 }
 
@@ -827,7 +828,7 @@ pub(crate) fn real_function(op: UnaryOp) -> fn(f64) -> f64 {
     }
 }
 
-fn binary(op: BinaryOp, ty: E, dst: Addr, a: Addr, b: Addr) -> Result<Op, String> {
+fn binary(op: BinaryOp, ty: E, dst: Addr, a: Addr, b: Addr) -> Result<Op, LowerRefusal> {
     let bit_op = matches!(
         op,
         BinaryOp::And
@@ -842,12 +843,12 @@ fn binary(op: BinaryOp, ty: E, dst: Addr, a: Addr, b: Addr) -> Result<Op, String
         return match ty {
             E::Real => Ok(real2::<f32>(dst, a, b, f64::atan2)),
             E::Lreal => Ok(real2::<f64>(dst, a, b, f64::atan2)),
-            _ => Err(format!("{op:?} on {}", ty.name())),
+            _ => Err(LowerRefusal::Binary { op, ty }),
         };
     }
     if bit_op {
         if ty.is_real() {
-            return Err(format!("{op:?} on {}", ty.name()));
+            return Err(LowerRefusal::Binary { op, ty });
         }
         return Ok(dispatch!(bits ty, bits2(op, dst, a, b)));
     }

@@ -16,6 +16,7 @@ mod fault;
 mod jit_host;
 mod jit_pure;
 mod lower;
+mod lower_refusal;
 mod memory;
 mod native;
 mod native_load;

@@ -7,6 +7,7 @@ use program_image::{Elementary, StdFunction};
 use super::exec::{Addr, Exec};
 use super::fault::FaultKind;
 use super::lower::{Flow, Op};
+use super::lower_refusal::LowerRefusal;
 use crate::stdlib::{string, text};
 
 /// An argument of a string function: a string of some capacity, or an integer (DINT).
@@ -68,7 +69,7 @@ pub(crate) fn lower(
     wide: bool,
     dst: (Addr, u32),
     args: Vec<(Addr, u32)>,
-) -> Result<Op, String> {
+) -> Result<Op, LowerRefusal> {
     let args: Vec<Arg> = args
         .into_iter()
         .map(|(at, capacity)| {
@@ -94,7 +95,7 @@ pub(crate) fn lower(
             .zip(expected)
             .all(|(arg, text)| matches!(arg, Arg::Text(..)) == *text);
     if !shape_ok {
-        return Err(format!("{function:?} has the wrong arguments"));
+        return Err(LowerRefusal::StringArguments { function });
     }
     if function == StdFunction::Recode {
         return Ok(recode(wide, dst, &args));

@@ -79,13 +79,23 @@ fn fifo_refusal(_priority: u8) -> Option<String> {
     Some("real-time scheduling is offered on Linux only".to_owned())
 }
 
+/// Why the system refused to change a thread's scheduling: the `thread-priority` crate's error,
+/// whose text names the system's error number.
+#[cfg(unix)]
+pub(crate) type SchedulingError = thread_priority::Error;
+
+/// Scheduling is never changed where real-time scheduling is not offered, so nothing is
+/// refused.
+#[cfg(not(unix))]
+pub(crate) type SchedulingError = std::convert::Infallible;
+
 /// Puts the calling thread back to normal scheduling (`SCHED_OTHER`, nice 0) when it inherited
 /// a real-time policy, and leaves a normal thread as it is; says why when the system refuses.
 ///
 /// A thread started by a `SCHED_FIFO` thread inherits its policy: the Modbus master's threads,
 /// which may be started while the scheduler's thread runs at real-time priority, call this
 /// first, so a busy network or a slow name lookup never competes with the tasks.
-pub(crate) fn make_current_thread_normal() -> Result<(), String> {
+pub(crate) fn make_current_thread_normal() -> Result<(), SchedulingError> {
     #[cfg(unix)]
     {
         use thread_priority::unix::{
@@ -97,7 +107,7 @@ pub(crate) fn make_current_thread_normal() -> Result<(), String> {
         match thread_schedule_policy() {
             Ok(ThreadSchedulePolicy::Normal(_)) => return Ok(()),
             Ok(_) => {}
-            Err(error) => return Err(error.to_string()),
+            Err(error) => return Err(error),
         }
         // The crate maps its portable priorities to nice values for normal policies: the one
         // that gives nice 0, a new thread's default.
@@ -107,7 +117,6 @@ pub(crate) fn make_current_thread_normal() -> Result<(), String> {
             .find(|priority| priority.to_posix(normal).is_ok_and(|nice| nice == 0))
             .unwrap_or(ThreadPriority::Min);
         set_thread_priority_and_policy(thread_native_id(), nice_zero, normal)
-            .map_err(|error| error.to_string())
     }
     #[cfg(not(unix))]
     Ok(())

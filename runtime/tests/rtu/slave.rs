@@ -21,7 +21,7 @@ const NO_ANSWER: Duration = Duration::from_millis(300);
 
 /// mbpoll as a one-shot RTU master on `port` at 19200-8N1 with a timeout of 1 s, writing
 /// `values` if any, and its output when it succeeds or `Err` with everything it said.
-async fn mbpoll(port: &std::path::Path, args: &[&str], values: &[&str]) -> Result<String, String> {
+async fn mbpoll(port: &std::path::Path, args: &[&str], values: &[&str]) -> anyhow::Result<String> {
     let mut command = Command::new(required_program("mbpoll"));
     command
         .args([
@@ -42,7 +42,7 @@ async fn mbpoll(port: &std::path::Path, args: &[&str], values: &[&str]) -> Resul
     if output.status.success() {
         Ok(said)
     } else {
-        Err(said)
+        Err(anyhow::Error::msg(said))
     }
 }
 
@@ -147,7 +147,7 @@ async fn mbpoll_reads_and_writes_the_runtime_over_rtu_and_bad_frames_get_no_answ
     assert!(
         other
             .as_ref()
-            .is_err_and(|said| said.contains("failed: Connection timed out")),
+            .is_err_and(|said| said.to_string().contains("failed: Connection timed out")),
         "unit 2 was answered, or mbpoll failed otherwise: {other:?}"
     );
     mbpoll(&cable.master, &read_counter, &[]).await.unwrap();

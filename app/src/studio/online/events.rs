@@ -190,7 +190,10 @@ impl Online {
             Event::Resolved(answers) => {
                 for (path, answer) in answers {
                     self.resolving.remove(&path);
-                    self.resolved.insert(path, answer);
+                    // The studio shows a refusal in the target's words, as the session's
+                    // error says them.
+                    self.resolved
+                        .insert(path, answer.map_err(|error| error.to_string()));
                 }
                 self.refresh_watch();
                 self.advance_trace();
@@ -207,7 +210,11 @@ impl Online {
             Event::DebugAttached(_) => self.debug_attached(),
             Event::Halted(tasks) => self.debug_halted(tasks),
             Event::Flow { bitmaps, .. } => self.debug_flow(&bitmaps),
-            Event::BreakpointsSet(ids) => self.breakpoints_set(ids),
+            Event::BreakpointsSet(ids) => self.breakpoints_set(
+                ids.into_iter()
+                    .map(|id| id.map_err(|error| error.to_string()))
+                    .collect(),
+            ),
             Event::FrameRead {
                 task,
                 frame,

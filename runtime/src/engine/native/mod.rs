@@ -19,6 +19,7 @@ use program_image::{ProgramImage, StructKind, TypeDef};
 use super::exec::Exec;
 use super::fault::FaultKind;
 use super::lower::{Flow, Op};
+use super::lower_refusal::LowerRefusal;
 
 use blocks::{Adapter, NativeBlock};
 pub use state::MotionLoadError;
@@ -28,9 +29,10 @@ use io::{Io, LibraryOffsets, Members};
 
 /// The instruction that runs native block `block` on the instance of the function block
 /// `pou`, whose members are found in the image's type table.
-pub(crate) fn lower(block: &str, pou: &str, image: &ProgramImage) -> Result<Op, String> {
-    let native = NativeBlock::from_name(block)
-        .ok_or_else(|| format!("this runtime has no native function block '{block}'"))?;
+pub(crate) fn lower(block: &str, pou: &str, image: &ProgramImage) -> Result<Op, LowerRefusal> {
+    let native = NativeBlock::from_name(block).ok_or_else(|| LowerRefusal::UnknownNativeBlock {
+        block: block.to_owned(),
+    })?;
     let members = image
         .types
         .iter()
@@ -43,7 +45,9 @@ pub(crate) fn lower(block: &str, pou: &str, image: &ProgramImage) -> Result<Op, 
             } if name == pou => Some(Members::of(members)),
             _ => None,
         })
-        .ok_or_else(|| format!("the instance type of '{pou}' is missing"))?;
+        .ok_or_else(|| LowerRefusal::MissingInstanceType {
+            pou: pou.to_owned(),
+        })?;
     let library = LibraryOffsets::of(image);
     Ok(Box::new(move |x: &mut Exec<'_>| {
         call(x, native, &members, library).map_err(Box::new)?;
