@@ -98,9 +98,9 @@ impl Converter<'_> {
                     );
                 }
                 let base = match base {
-                    Some(base) => {
-                        Some(type_text(base).map_err(|message| inexpressible(self, message))?)
-                    }
+                    Some(base) => Some(
+                        type_text(base).map_err(|error| inexpressible(self, error.to_string()))?,
+                    ),
                     None => None,
                 };
                 TypeDefinition::Enum {
@@ -116,7 +116,7 @@ impl Converter<'_> {
                 }
             }
             other => TypeDefinition::Alias {
-                ty: type_text(other).map_err(|message| inexpressible(self, message))?,
+                ty: type_text(other).map_err(|error| inexpressible(self, error.to_string()))?,
                 initial: declaration.initial_value.as_ref().map(value_text),
             },
         })

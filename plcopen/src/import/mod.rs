@@ -31,6 +31,7 @@ mod sfc_nested;
 mod sfc_step;
 mod tasks;
 mod type_text;
+mod unconverted_body;
 mod variables;
 mod vendor_places;
 

@@ -12,6 +12,7 @@ use super::report::Outcome;
 use super::rivet_attributes::rivet_attributes;
 use super::sfc_chart::SfcChartBuilder;
 use super::type_text::type_text;
+use super::unconverted_body::UnconvertedBody;
 use super::vendor_places::element_place;
 use crate::body::{Body as XmlBody, BodyContent};
 use crate::interface::Interface;
@@ -106,8 +107,13 @@ impl Converter<'_> {
             Some(first) => match self.body(first, &place, &what, &mut synthesized)? {
                 Ok(body) => body,
                 Err(note) => {
-                    self.report
-                        .push(Outcome::NotConverted, what, &place.path, place.line, note);
+                    self.report.push(
+                        Outcome::NotConverted,
+                        what,
+                        &place.path,
+                        place.line,
+                        note.to_string(),
+                    );
                     return Ok(());
                 }
             },
@@ -172,7 +178,7 @@ impl Converter<'_> {
                     what,
                     &action_path,
                     action.body.line,
-                    note,
+                    note.to_string(),
                 ),
             }
         }
@@ -207,7 +213,7 @@ impl Converter<'_> {
                     what,
                     &transition_path,
                     transition.body.line,
-                    note,
+                    note.to_string(),
                 ),
             }
         }
@@ -236,7 +242,7 @@ impl Converter<'_> {
                             what,
                             &method_path,
                             place.line,
-                            note,
+                            note.to_string(),
                         );
                         continue;
                     }
@@ -291,7 +297,7 @@ impl Converter<'_> {
         holder: &Place,
         what: &str,
         synthesized: &mut PouObjects,
-    ) -> Result<Result<Body, String>, ImportError> {
+    ) -> Result<Result<Body, UnconvertedBody>, ImportError> {
         let body_path = format!("{}/body", holder.path);
         let at = BodyAt {
             holder,
@@ -310,7 +316,7 @@ impl Converter<'_> {
         at: &BodyAt<'_>,
         what: &str,
         synthesized: &mut PouObjects,
-    ) -> Result<Result<Body, String>, ImportError> {
+    ) -> Result<Result<Body, UnconvertedBody>, ImportError> {
         if let Some(text) = st_text(body) {
             return Ok(Ok(Body::St { text }));
         }
@@ -342,10 +348,10 @@ impl Converter<'_> {
                 }
                 Some(NetworkOutcome::NotANetwork { reason }) => {
                     if !matches!(body.content, BodyContent::Fbd(_)) {
-                        return Ok(Err(format!(
-                            "its {} body is not a set of networks: {reason}",
-                            language(body)
-                        )));
+                        return Ok(Err(UnconvertedBody::NotNetworks {
+                            language: language(body),
+                            reason,
+                        }));
                     }
                     fallback_note = Some(reason);
                 }
@@ -396,10 +402,9 @@ impl Converter<'_> {
             )
             .map(|chart| Body::Cfc { chart }),
             _ => {
-                return Ok(Err(format!(
-                    "its body is {}, which Rivet does not convert",
-                    language(body)
-                )));
+                return Ok(Err(UnconvertedBody::UnsupportedLanguage {
+                    language: language(body),
+                }));
             }
         };
         if let (Ok(_), Some(reason)) = (&converted, &fallback_note) {
@@ -418,11 +423,15 @@ impl Converter<'_> {
                 Ok(Ok(converted))
             }
             Err(BodyFault::NotConverted(reason)) => Ok(Err(match fallback_note {
-                Some(network_reason) => format!(
-                    "its body is {}: it is not a set of networks ({network_reason}), nor a CFC chart: {reason}",
-                    language(body)
-                ),
-                None => format!("its body is {}: {reason}", language(body)),
+                Some(network_reason) => UnconvertedBody::NeitherNetworksNorCfc {
+                    language: language(body),
+                    network_reason,
+                    reason,
+                },
+                None => UnconvertedBody::NotConvertible {
+                    language: language(body),
+                    reason,
+                },
             })),
             Err(BodyFault::Error(place, kind)) => Err(self.error(&place, kind)),
         }
@@ -581,8 +590,8 @@ impl Converter<'_> {
             return Ok((Vec::new(), None));
         };
         let return_type = match &interface.return_type {
-            Some(data_type) => Some(type_text(data_type).map_err(|message| {
-                self.error(place, ImportErrorKind::InexpressibleType(message))
+            Some(data_type) => Some(type_text(data_type).map_err(|error| {
+                self.error(place, ImportErrorKind::InexpressibleType(error.to_string()))
             })?),
             None => None,
         };

@@ -41,7 +41,7 @@ impl NestedBodies for Converter<'_> {
     ) -> Result<Body, BodyFault> {
         match self.body_at(body, at, what, synthesized) {
             Ok(Ok(converted)) => Ok(converted),
-            Ok(Err(reason)) => Err(BodyFault::NotConverted(reason)),
+            Ok(Err(reason)) => Err(BodyFault::NotConverted(reason.to_string())),
             Err(error) => Err(BodyFault::Error(
                 Place {
                     path: error.path,

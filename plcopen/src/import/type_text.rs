@@ -1,10 +1,22 @@
 //! Types and values of the document written as the IEC text Rivet's declarations hold.
 
+use thiserror::Error;
+
 use crate::data_type::{DataType, Value, ValueItem};
 
-/// The IEC text of `data_type` where a variable's type stands, or a message saying why it cannot
-/// be written there (a structure declared inline).
-pub(super) fn type_text(data_type: &DataType) -> Result<String, String> {
+/// Why a type of the document cannot be written where a variable's type stands.
+#[derive(Debug, Error, PartialEq, Eq)]
+pub(super) enum TypeTextError {
+    /// A structure declared inside a variable: Rivet declares structures only as data types.
+    #[error(
+        "a structure declared inside a variable cannot be written as a Rivet type; declare it in `types/dataTypes`"
+    )]
+    InlineStruct,
+}
+
+/// The IEC text of `data_type` where a variable's type stands, or why it cannot be written
+/// there (a structure declared inline).
+pub(super) fn type_text(data_type: &DataType) -> Result<String, TypeTextError> {
     Ok(match data_type {
         DataType::Elementary(name) => name.clone(),
         DataType::String { wide, length } => {
@@ -38,10 +50,7 @@ pub(super) fn type_text(data_type: &DataType) -> Result<String, String> {
             }
         }
         DataType::Struct { .. } => {
-            return Err(
-                "a structure declared inside a variable cannot be written as a Rivet type; declare it in `types/dataTypes`"
-                    .to_owned(),
-            );
+            return Err(TypeTextError::InlineStruct);
         }
         DataType::Subrange {
             lower, upper, base, ..
@@ -127,7 +136,14 @@ mod tests {
             base: None,
         };
         assert_eq!(type_text(&colours).as_deref(), Ok("(Red := 1, Green)"));
-        assert!(type_text(&DataType::Struct { members: vec![] }).is_err());
+        assert_eq!(
+            type_text(&DataType::Struct { members: vec![] }),
+            Err(TypeTextError::InlineStruct)
+        );
+        assert_eq!(
+            TypeTextError::InlineStruct.to_string(),
+            "a structure declared inside a variable cannot be written as a Rivet type; declare it in `types/dataTypes`"
+        );
     }
 
     #[test]

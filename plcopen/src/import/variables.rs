@@ -61,8 +61,11 @@ impl Converter<'_> {
                     line: variable.line,
                     column: variable.column,
                 };
-                let mut ty = type_text(&variable.data_type).map_err(|message| {
-                    self.error(&place, ImportErrorKind::InexpressibleType(message))
+                let mut ty = type_text(&variable.data_type).map_err(|error| {
+                    self.error(
+                        &place,
+                        ImportErrorKind::InexpressibleType(error.to_string()),
+                    )
                 })?;
                 let mut variable_section = section;
                 // CODESYS writes a variable-length array (`VAR_IN_OUT a : ARRAY[*] OF INT`) as

@@ -14,9 +14,10 @@ const MAX_INLINE_WIDTH: usize = 100;
 /// structures or would not fit on a line becomes a standard table; a list of plain values that
 /// would not fit on a line puts one value on each line. The chain (`rung`) and `output` lists
 /// of an LD/FBD network are an indented tree of inline tables instead, one element a line, so
-/// the structure reads at a glance and an edit is a small diff.
-pub(crate) fn to_canonical_toml<T: Serialize>(value: &T) -> Result<String, String> {
-    let document = toml_edit::ser::to_document(value).map_err(|error| error.to_string())?;
+/// the structure reads at a glance and an edit is a small diff. Fails with the serialiser's
+/// error when `value` has no TOML form.
+pub(crate) fn to_canonical_toml<T: Serialize>(value: &T) -> Result<String, toml_edit::ser::Error> {
+    let document = toml_edit::ser::to_document(value)?;
     let mut root = document.as_table().clone();
     expand(&mut root);
     Ok(DocumentMut::from(root).to_string())

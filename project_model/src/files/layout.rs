@@ -2,6 +2,8 @@
 
 use std::path::PathBuf;
 
+use thiserror::Error;
+
 use super::APPLICATION_DIR;
 use super::canonical::to_canonical_toml;
 use crate::{Body, Folder, Node, Object, ObjectKind, Pou, Project};
@@ -109,8 +111,8 @@ pub(crate) fn bodies_mut(pou: &mut Pou) -> Vec<&mut Body> {
     bodies
 }
 
-/// Serialises an object to the text of its TOML file.
-pub(crate) fn object_toml(object: &Object) -> Result<String, String> {
+/// Serialises an object to the text of its TOML file, or gives the serialiser's error.
+pub(crate) fn object_toml(object: &Object) -> Result<String, toml_edit::ser::Error> {
     match object {
         Object::Pou(pou) => to_canonical_toml(pou),
         Object::Gvl(gvl) => to_canonical_toml(gvl),
@@ -136,11 +138,46 @@ pub(crate) enum Entry {
     },
 }
 
+/// Why a manifest entry names no folder or object; the text ends by saying what was expected.
+#[derive(Debug, Error)]
+pub(crate) enum EntryError {
+    /// The entry is an empty string.
+    #[error("empty entry; expected a path below application/ such as 'Main.pou.toml' or 'Motion/'")]
+    Empty,
+    /// A folder of the entry's path is not an identifier.
+    #[error(
+        "'{folder}' in '{entry}' is not a valid folder name (letters, digits and '_'); expected \
+         a path below application/ such as 'Main.pou.toml' or 'Motion/'"
+    )]
+    BadFolderName {
+        /// The folder name that is not an identifier.
+        folder: String,
+        /// The whole entry.
+        entry: String,
+    },
+    /// The file name ends in none of the object suffixes.
+    #[error(
+        "'{entry}' has no known object suffix; expected one of .pou.toml, .gvl.toml, \
+         .type.toml, .cam.toml, .trace.toml, .watch.toml, or '/' for a folder"
+    )]
+    UnknownSuffix {
+        /// The whole entry.
+        entry: String,
+    },
+    /// The object's name, the file name without its suffix, is not an identifier.
+    #[error("'{name}' in '{entry}' is not a valid object name (letters, digits and '_')")]
+    BadObjectName {
+        /// The object name that is not an identifier.
+        name: String,
+        /// The whole entry.
+        entry: String,
+    },
+}
+
 /// Parses a manifest entry, or explains what is wrong with it.
-pub(crate) fn parse_entry(entry: &str) -> Result<Entry, String> {
-    let expected = "expected a path below application/ such as 'Main.pou.toml' or 'Motion/'";
+pub(crate) fn parse_entry(entry: &str) -> Result<Entry, EntryError> {
     if entry.is_empty() {
-        return Err(format!("empty entry; {expected}"));
+        return Err(EntryError::Empty);
     }
     let (folder_part, file_part) = match entry.strip_suffix('/') {
         Some(folder) => (folder, None),
@@ -155,9 +192,10 @@ pub(crate) fn parse_entry(entry: &str) -> Result<Entry, String> {
         folder_part.split('/').map(str::to_owned).collect()
     };
     if let Some(bad) = folder.iter().find(|name| !crate::is_valid_identifier(name)) {
-        return Err(format!(
-            "'{bad}' in '{entry}' is not a valid folder name (letters, digits and '_'); {expected}"
-        ));
+        return Err(EntryError::BadFolderName {
+            folder: bad.clone(),
+            entry: entry.to_owned(),
+        });
     }
     let Some(file) = file_part else {
         return Ok(Entry::Folder(folder));
@@ -166,15 +204,15 @@ pub(crate) fn parse_entry(entry: &str) -> Result<Entry, String> {
         file.strip_suffix(kind.file_suffix())
             .map(|name| (*kind, name))
     }) else {
-        return Err(format!(
-            "'{entry}' has no known object suffix; expected one of .pou.toml, .gvl.toml, \
-             .type.toml, .cam.toml, .trace.toml, .watch.toml, or '/' for a folder"
-        ));
+        return Err(EntryError::UnknownSuffix {
+            entry: entry.to_owned(),
+        });
     };
     if !crate::is_valid_identifier(name) {
-        return Err(format!(
-            "'{name}' in '{entry}' is not a valid object name (letters, digits and '_')"
-        ));
+        return Err(EntryError::BadObjectName {
+            name: name.to_owned(),
+            entry: entry.to_owned(),
+        });
     }
     Ok(Entry::Object {
         folder,
@@ -280,4 +318,39 @@ pub fn object_files(project: &Project) -> Vec<(PathBuf, &Object)> {
     let mut out = Vec::new();
     walk(&project.application, &mut Vec::new(), &mut out);
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{EntryError, parse_entry};
+
+    fn refusal(entry: &str) -> String {
+        parse_entry(entry)
+            .err()
+            .map(|error: EntryError| error.to_string())
+            .unwrap_or_default()
+    }
+
+    #[test]
+    fn a_bad_entry_is_explained_word_for_word() {
+        let expected = "expected a path below application/ such as 'Main.pou.toml' or 'Motion/'";
+        assert_eq!(refusal(""), format!("empty entry; {expected}"));
+        assert_eq!(
+            refusal("Mo tion/Main.pou.toml"),
+            format!(
+                "'Mo tion' in 'Mo tion/Main.pou.toml' is not a valid folder name (letters, \
+                 digits and '_'); {expected}"
+            )
+        );
+        assert_eq!(
+            refusal("Main.txt"),
+            "'Main.txt' has no known object suffix; expected one of .pou.toml, .gvl.toml, \
+             .type.toml, .cam.toml, .trace.toml, .watch.toml, or '/' for a folder"
+        );
+        assert_eq!(
+            refusal("Motion/1st.pou.toml"),
+            "'1st' in 'Motion/1st.pou.toml' is not a valid object name (letters, digits and '_')"
+        );
+        assert!(parse_entry("Motion/Main.pou.toml").is_ok());
+    }
 }

@@ -219,7 +219,7 @@ impl Loader<'_> {
         let entry_error = |message: String| LoadProblem::error(manifest, Some(line), message);
         let parsed = match parse_entry(entry) {
             Ok(parsed) => parsed,
-            Err(message) => return self.problems.push(entry_error(message)),
+            Err(error) => return self.problems.push(entry_error(error.to_string())),
         };
         let folder_path: Vec<String> = match &parsed {
             Entry::Folder(path) => path[..path.len().saturating_sub(1)].to_vec(),

@@ -7,6 +7,8 @@
 //! The chart's label and comment, which a CFC chart no longer has, become a label element run
 //! first and a comment element, so nothing written is lost.
 
+use thiserror::Error;
+
 use super::graph_chart::{Chart, ChartElement, ChartElementKind};
 use crate::{
     CfcBox, CfcChart, CfcElement, CfcElementKind, CfcPin, CoilKind, EN_PIN, ENO_PIN, ElementId,
@@ -68,7 +70,7 @@ pub(crate) fn cfc_from_graph(graph: &Chart) -> Result<CfcChart, Vec<String>> {
                     kind,
                 },
             )),
-            Err(problem) => problems.push(problem),
+            Err(problem) => problems.push(problem.to_string()),
         }
     }
     if !problems.is_empty() {
@@ -98,8 +100,25 @@ pub(crate) fn cfc_from_graph(graph: &Chart) -> Result<CfcChart, Vec<String>> {
     Ok(chart)
 }
 
+/// Why an element of an old CFC graph has no CFC kind.
+#[derive(Debug, Error)]
+enum NotCfc {
+    /// A rail, contact or coil: an element of a ladder diagram.
+    #[error("element {element}: an LD element cannot be part of a CFC chart")]
+    LdElement {
+        /// The element's id.
+        element: u32,
+    },
+    /// A step, transition, branch or step jump: an element of a sequential function chart.
+    #[error("element {element}: an SFC element cannot be part of a CFC chart")]
+    SfcElement {
+        /// The element's id.
+        element: u32,
+    },
+}
+
 /// The CFC kind of one old element, or why it has none.
-fn cfc_kind(element: &ChartElement) -> Result<CfcElementKind, String> {
+fn cfc_kind(element: &ChartElement) -> Result<CfcElementKind, NotCfc> {
     let pin = |name: &String| CfcPin::named(name.clone());
     Ok(match &element.kind {
         ChartElementKind::Input { expression } => CfcElementKind::Input {
@@ -157,20 +176,18 @@ fn cfc_kind(element: &ChartElement) -> Result<CfcElementKind, String> {
         | ChartElementKind::RightRail { .. }
         | ChartElementKind::Contact { .. }
         | ChartElementKind::Coil { .. } => {
-            return Err(format!(
-                "element {}: an LD element cannot be part of a CFC chart",
-                element.id.0
-            ));
+            return Err(NotCfc::LdElement {
+                element: element.id.0,
+            });
         }
         ChartElementKind::Step { .. }
         | ChartElementKind::Transition { .. }
         | ChartElementKind::Divergence { .. }
         | ChartElementKind::Convergence { .. }
         | ChartElementKind::StepJump { .. } => {
-            return Err(format!(
-                "element {}: an SFC element cannot be part of a CFC chart",
-                element.id.0
-            ));
+            return Err(NotCfc::SfcElement {
+                element: element.id.0,
+            });
         }
     })
 }
@@ -179,4 +196,21 @@ fn cfc_kind(element: &ChartElement) -> Result<CfcElementKind, String> {
 /// no structured equivalent (`older_sfc.rs`).
 pub(crate) fn sfc_from_graph(graph: &Chart) -> Result<SfcChart, Vec<String>> {
     super::older_sfc::sfc_from_graph(graph)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::NotCfc;
+
+    #[test]
+    fn an_element_without_a_cfc_kind_is_named_with_its_language() {
+        assert_eq!(
+            NotCfc::LdElement { element: 4 }.to_string(),
+            "element 4: an LD element cannot be part of a CFC chart"
+        );
+        assert_eq!(
+            NotCfc::SfcElement { element: 7 }.to_string(),
+            "element 7: an SFC element cannot be part of a CFC chart"
+        );
+    }
 }

@@ -42,12 +42,12 @@ pub enum SaveError {
     #[error("cannot save: {0}")]
     Invalid(String),
     /// Serialisation failed.
-    #[error("cannot save {path}: {message}")]
+    #[error("cannot save {path}: {source}")]
     Serialize {
         /// The file.
         path: PathBuf,
-        /// The serialiser's message.
-        message: String,
+        /// The serialiser's error.
+        source: toml_edit::ser::Error,
     },
 }
 
@@ -149,16 +149,16 @@ fn render(
             .collect(),
         axes: project.axes.clone(),
     };
-    let text = to_canonical_toml(&manifest).map_err(|message| SaveError::Serialize {
+    let text = to_canonical_toml(&manifest).map_err(|source| SaveError::Serialize {
         path: MANIFEST_FILE_NAME.into(),
-        message,
+        source,
     })?;
     files.insert(PathBuf::from(MANIFEST_FILE_NAME), text);
     if !project.vendor_data.is_empty() {
         let text =
-            to_canonical_toml(&project.vendor_data).map_err(|message| SaveError::Serialize {
+            to_canonical_toml(&project.vendor_data).map_err(|source| SaveError::Serialize {
                 path: VENDOR_DATA_FILE_NAME.into(),
-                message,
+                source,
             })?;
         files.insert(PathBuf::from(VENDOR_DATA_FILE_NAME), text);
     }
@@ -213,9 +213,9 @@ fn render_object(
         return Err(SaveError::Invalid(problem));
     }
     let file = object_file(folder, name, object.kind());
-    let text = object_toml(object).map_err(|error| SaveError::Serialize {
+    let text = object_toml(object).map_err(|source| SaveError::Serialize {
         path: file.clone(),
-        message: error,
+        source,
     })?;
     files.insert(file, text);
     if let Object::Pou(pou) = object {

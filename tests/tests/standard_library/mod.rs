@@ -5,6 +5,7 @@
 
 use std::collections::BTreeSet;
 
+use anyhow::{anyhow, bail};
 use program_image::ProgramImage;
 use runtime::simulation::Simulation;
 
@@ -745,33 +746,33 @@ fn leak(value: impl std::fmt::Display) -> &'static str {
 }
 
 /// Compiles and runs one case for two cycles, or says why it could not.
-fn run_case(case: &Case) -> Result<(), String> {
+fn run_case(case: &Case) -> anyhow::Result<()> {
     let source = format!(
         "PROGRAM main VAR {} END_VAR\n{}\nEND_PROGRAM",
         case.vars, case.body
     );
     let project = compiler::SourceProject::new(&source);
     if !project.parse.errors().is_empty() {
-        return Err(format!("syntax errors: {:?}", project.parse.errors()));
+        bail!("syntax errors: {:?}", project.parse.errors());
     }
     let image: ProgramImage = match compiler::compile_source(&project, "test.st") {
         Ok(image) => image,
         Err(compiler::CompileError::Diagnostics(found)) => {
             let errors: Vec<String> = found.iter().map(|d| d.diagnostic.message.clone()).collect();
-            return Err(format!("does not check: {errors:?}"));
+            bail!("does not check: {errors:?}");
         }
-        Err(error) => return Err(format!("does not compile: {error}")),
+        Err(error) => bail!("does not compile: {error}"),
     };
     // Both engines, compared after each cycle (`docs/native-engine.md` §11.1).
     let simulation = runtime::differential::run_both(image, 2, |_, _| {})
-        .map_err(|difference| format!("the engines differ: {difference}"))?;
+        .map_err(|difference| anyhow!("the engines differ: {difference}"))?;
     if !simulation.faults().is_empty() {
-        return Err(format!("faults: {:?}", simulation.faults()));
+        bail!("faults: {:?}", simulation.faults());
     }
     for (variable, want) in &case.want {
         let path = format!("main.{variable}");
         let got = runtime::value::read(simulation.engine(), &path)
-            .map_err(|e| format!("{path}: {e}"))?
+            .map_err(|e| anyhow!("{path}: {e}"))?
             .to_string();
         let ok = match want {
             Is(text) => got == *text,
@@ -784,7 +785,7 @@ fn run_case(case: &Case) -> Result<(), String> {
                 Is(text) => (*text).to_owned(),
                 Near(value) => format!("about {value}"),
             };
-            return Err(format!("{path} is {got}, expected {expected}"));
+            bail!("{path} is {got}, expected {expected}");
         }
     }
     Ok(())
