@@ -4,8 +4,9 @@
 
 use egui::{Grid, Ui};
 use project_model::{CamCompileFormat, CamRange, CamTable};
+use thiserror::Error;
 
-use crate::cam_edit::{key_points, set_key_point};
+use crate::cam_edit::{CamEditError, key_points, set_key_point};
 use crate::convert::{Curve, curve_of};
 use crate::editor::{Frame, Gesture};
 use crate::number_field::{Drafts, number_text, parse_number};
@@ -44,7 +45,7 @@ pub(crate) fn properties_ui(
                     {
                         match range_edit(cam, is_master, which == 0, &text, texts) {
                             Ok(changed) => gesture = Some(Gesture::edit(label, changed)),
-                            Err(reason) => drafts.refuse(&label, text, reason),
+                            Err(reason) => drafts.refuse(&label, text, reason.to_string()),
                         }
                     }
                 }
@@ -199,6 +200,29 @@ pub(crate) fn properties_ui(
     gesture
 }
 
+/// Why a range end typed into the properties was refused. The texts are the editor's, already in
+/// the user's language, so the refusal reads as it is shown.
+#[derive(Debug, Error)]
+enum RangeEditError {
+    /// The text is not a number.
+    #[error("\"{text}\" {not_a_number}")]
+    NotANumber {
+        /// The typed text, trimmed.
+        text: String,
+        /// The translated "is not a number".
+        not_a_number: String,
+    },
+    /// The start would not be below the end; the translated reason.
+    #[error("{0}")]
+    StartNotBelowEnd(String),
+    /// The cam has no key point to hold the master range end; the translated reason.
+    #[error("{0}")]
+    InvalidCam(String),
+    /// Moving the key point would leave an invalid cam.
+    #[error(transparent)]
+    Edit(#[from] CamEditError),
+}
+
 /// The cam with one end of the master or slave range set from `text`. The master range's ends
 /// are the first and the last key point, so they move too, and the cam must stay valid.
 fn range_edit(
@@ -207,9 +231,11 @@ fn range_edit(
     is_start: bool,
     text: &str,
     texts: &CamEditorTexts,
-) -> Result<CamTable, String> {
-    let value =
-        parse_number(text).ok_or_else(|| format!("\"{}\" {}", text.trim(), texts.not_a_number))?;
+) -> Result<CamTable, RangeEditError> {
+    let value = parse_number(text).ok_or_else(|| RangeEditError::NotANumber {
+        text: text.trim().to_owned(),
+        not_a_number: texts.not_a_number.clone(),
+    })?;
     let range = if is_master { &cam.master } else { &cam.slave };
     let (start, end) = if is_start {
         (value, range.end)
@@ -217,7 +243,9 @@ fn range_edit(
         (range.start, value)
     };
     if start >= end {
-        return Err(texts.start_not_below_end.clone());
+        return Err(RangeEditError::StartNotBelowEnd(
+            texts.start_not_below_end.clone(),
+        ));
     }
     if !is_master {
         let mut changed = cam.clone();
@@ -235,13 +263,13 @@ fn range_edit(
         points.len().saturating_sub(1)
     };
     let Some(point) = points.get(index) else {
-        return Err(texts.invalid_cam.clone());
+        return Err(RangeEditError::InvalidCam(texts.invalid_cam.clone()));
     };
     let moved = project_model::CamKeyPoint {
         master: value,
         ..*point
     };
-    set_key_point(cam, index, moved).map_err(|error| error.to_string())
+    Ok(set_key_point(cam, index, moved)?)
 }
 
 /// The cam with another compile format. XYVA holds only Line and Poly5 segments, so a cam with
@@ -256,4 +284,23 @@ fn format_edit(cam: &CamTable, format: CamCompileFormat, label: &str) -> Gesture
         return Gesture::Refused(label.to_owned(), error.to_string());
     }
     Gesture::edit(label.to_owned(), changed)
+}
+
+#[cfg(test)]
+mod tests {
+    #![allow(clippy::unwrap_used, clippy::expect_used)]
+
+    use super::*;
+
+    #[test]
+    fn a_refused_range_end_names_the_text_or_the_reason() {
+        let cam = CamTable::codesys_default("Cam");
+        let texts = CamEditorTexts::default();
+        let refused = range_edit(&cam, true, true, " 12x ", &texts).unwrap_err();
+        assert_eq!(refused.to_string(), "\"12x\" is not a number");
+        let refused = range_edit(&cam, false, true, "1e9", &texts).unwrap_err();
+        assert_eq!(refused.to_string(), "the start must be below the end");
+        let changed = range_edit(&cam, false, false, "1e9", &texts).unwrap();
+        assert_eq!(changed.slave.end, 1e9);
+    }
 }

@@ -9,7 +9,7 @@ use plcopen::{Outcome, ReportEntry};
 use project_model::{ClashChoice, IgnoredPart, MergeItem, MergePlan, ObjectKind, Project};
 
 use super::i18n::{ImportText, Language, Text};
-use crate::plcopen_import::{ImportedFile, import_file, outcome_counts};
+use crate::plcopen_import::{ImportFailure, ImportedFile, import_file, outcome_counts};
 
 /// The dialog's width in points: room for an element path and a note on one line.
 const DIALOG_WIDTH: f32 = 760.0;
@@ -23,7 +23,7 @@ pub(crate) struct ImportDialog {
     /// The file chosen.
     pub(crate) path: PathBuf,
     /// The file read and converted, or why it could not be (`FILE:LINE:COLUMN: PATH: message`).
-    pub(crate) outcome: Result<ImportedFile, String>,
+    pub(crate) outcome: Result<ImportedFile, ImportFailure>,
     /// The plan against the project open when the dialog opened; `None` without a project.
     pub(crate) plan: Option<MergePlan>,
     /// Why the last attempt to write a new project failed, shown until the next attempt.
@@ -44,7 +44,7 @@ pub(crate) enum ImportAction {
 impl ImportDialog {
     /// Reads and converts `path`, and plans its merge into `project` when one is open.
     pub(crate) fn open(path: PathBuf, project: Option<&Project>) -> Self {
-        let outcome = import_file(&path).map_err(|error| error.to_string());
+        let outcome = import_file(&path);
         let plan = match (&outcome, project) {
             (Ok(file), Some(project)) => Some(MergePlan::new(project, &file.imported.project)),
             _ => None,
@@ -82,7 +82,7 @@ impl ImportDialog {
                         ui.visuals().error_fg_color,
                         ImportText::Failed.get(language),
                     );
-                    ui.label(RichText::new(error).monospace());
+                    ui.label(RichText::new(error.to_string()).monospace());
                 }
             }
             if let Some(error) = &self.error {

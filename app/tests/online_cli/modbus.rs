@@ -17,9 +17,9 @@ use super::{ok, start_runtime, start_runtime_with, value_of};
 const PATIENCE: Duration = Duration::from_secs(30);
 
 /// Waits until `condition` holds, asking again every 50 ms, or panics with `what` and the
-/// last thing `condition` saw.
+/// last thing `condition` saw (its error's text).
 #[track_caller]
-fn wait_until(what: &str, mut condition: impl FnMut() -> Result<(), String>) {
+fn wait_until(what: &str, mut condition: impl FnMut() -> anyhow::Result<()>) {
     let deadline = Instant::now() + PATIENCE;
     loop {
         let seen = match condition() {
@@ -180,13 +180,13 @@ fn wait_for_the_round_trip(slave: &mut PymodbusServer, value: u16, target: &str)
         let read = read(&["Main.iOut"], target);
         (value_of(&read, "Main.iOut") == doubled)
             .then_some(())
-            .ok_or(read)
+            .ok_or_else(|| anyhow::Error::msg(read))
     });
     wait_until(&format!("hr 10 = {doubled} in the slave"), || {
         let held = slave.get("hr", 10);
         (i64::from(held) == doubled)
             .then_some(())
-            .ok_or_else(|| held.to_string())
+            .ok_or_else(|| anyhow::Error::msg(held.to_string()))
     });
 }
 
@@ -240,14 +240,14 @@ fn modbus_tcp_master_against_pymodbus_values_both_ways_status_and_devices() {
             && text_of(&first, "GVL.stDev.xError") == "FALSE"
             && text_of(&first, "GVL.xInError") == "FALSE")
             .then_some(())
-            .ok_or(first.clone())
+            .ok_or_else(|| anyhow::Error::msg(first.clone()))
     });
     let rounds = value_of(&first, "GVL.stDev.udiRounds");
     wait_until("udiRounds growing", || {
         let again = read(&status, target);
         (value_of(&again, "GVL.stDev.udiRounds") > rounds)
             .then_some(())
-            .ok_or(again)
+            .ok_or_else(|| anyhow::Error::msg(again))
     });
 
     // `rivet devices` says what the status variable says, and its counters grow too.
@@ -257,7 +257,7 @@ fn modbus_tcp_master_against_pymodbus_values_both_ways_status_and_devices() {
         line = devices_line(target);
         line.starts_with("device 'Slave': communicating, last error ")
             .then_some(())
-            .ok_or(line.clone())
+            .ok_or_else(|| anyhow::Error::msg(line.clone()))
     });
     let devices_rounds = counter_of(&line, "rounds");
     assert!(devices_rounds > 0, "{line}");
@@ -265,7 +265,7 @@ fn modbus_tcp_master_against_pymodbus_values_both_ways_status_and_devices() {
         let again = devices_line(target);
         (counter_of(&again, "rounds") > devices_rounds)
             .then_some(())
-            .ok_or(again)
+            .ok_or_else(|| anyhow::Error::msg(again))
     });
 }
 
@@ -292,7 +292,7 @@ fn wait_for_more_cycles(cycles: i64, target: &str) {
         let seen = read(&["Main.udiCycles"], target);
         (value_of(&seen, "Main.udiCycles") > cycles)
             .then_some(())
-            .ok_or(seen)
+            .ok_or_else(|| anyhow::Error::msg(seen))
     });
 }
 
@@ -337,7 +337,9 @@ fn modbus_tcp_master_rides_out_a_stopped_slave_and_exceptions_while_the_task_run
             && value_of(&seen, "Main.iOut") == 0
             && value_of(&seen, "Main.iKept") == 77
             && value_of(&seen, "Main.udiCycles") > cycles;
-        reported.then_some(()).ok_or(seen)
+        reported
+            .then_some(())
+            .ok_or_else(|| anyhow::Error::msg(seen))
     });
     let line = devices_line(target);
     assert!(
@@ -352,13 +354,13 @@ fn modbus_tcp_master_rides_out_a_stopped_slave_and_exceptions_while_the_task_run
         let seen = read(&["GVL.stDev.udiConsecutiveErrors"], target);
         (value_of(&seen, "GVL.stDev.udiConsecutiveErrors") > errors)
             .then_some(())
-            .ok_or(seen)
+            .ok_or_else(|| anyhow::Error::msg(seen))
     });
     wait_until("rivet devices counting them too", || {
         let line = devices_line(target);
         (counter_of(&line, "consecutive errors") > errors as u64)
             .then_some(())
-            .ok_or(line)
+            .ok_or_else(|| anyhow::Error::msg(line))
     });
 
     // The slave comes back, on a port of its own behind the proxy: the master reconnects to
@@ -373,7 +375,7 @@ fn modbus_tcp_master_rides_out_a_stopped_slave_and_exceptions_while_the_task_run
         let seen = read(&["GVL.stDev.xError", "GVL.xInError"], target);
         (text_of(&seen, "GVL.stDev.xError") == "FALSE" && text_of(&seen, "GVL.xInError") == "FALSE")
             .then_some(())
-            .ok_or(seen)
+            .ok_or_else(|| anyhow::Error::msg(seen))
     });
 
     // Exceptions: still connected, the exception code kept, the status and `rivet devices`
@@ -396,7 +398,9 @@ fn modbus_tcp_master_rides_out_a_stopped_slave_and_exceptions_while_the_task_run
             && value_of(&seen, "GVL.stDev.byLastException") == 2
             && text_of(&seen, "GVL.stDev.eLastError") == "ILLEGAL_DATA_ADDRESS"
             && text_of(&seen, "GVL.xInError") == "TRUE";
-        reported.then_some(()).ok_or(seen)
+        reported
+            .then_some(())
+            .ok_or_else(|| anyhow::Error::msg(seen))
     });
     wait_until("rivet devices reporting the exception", || {
         let line = devices_line(target);
@@ -404,7 +408,7 @@ fn modbus_tcp_master_rides_out_a_stopped_slave_and_exceptions_while_the_task_run
             "device 'Slave': answering with errors, last error ILLEGAL_DATA_ADDRESS, last exception 2",
         )
         .then_some(())
-        .ok_or(line)
+        .ok_or_else(|| anyhow::Error::msg(line))
     });
     wait_for_more_cycles(cycles, target);
     slave.exceptions(false);
@@ -413,7 +417,7 @@ fn modbus_tcp_master_rides_out_a_stopped_slave_and_exceptions_while_the_task_run
         let line = devices_line(target);
         line.starts_with("device 'Slave': communicating")
             .then_some(())
-            .ok_or(line)
+            .ok_or_else(|| anyhow::Error::msg(line))
     });
 }
 
@@ -456,7 +460,9 @@ fn modbus_tcp_master_a_channel_at_an_address_the_slave_lacks_fails_alone() {
     let mut seen = String::new();
     wait_until("exception 2 for the missing channel only", || {
         seen = read(&fields, target);
-        failing_alone(&seen).then_some(()).ok_or(seen.clone())
+        failing_alone(&seen)
+            .then_some(())
+            .ok_or_else(|| anyhow::Error::msg(seen.clone()))
     });
 
     // From then on, the other channels deliver both ways a value set only now, round after
@@ -473,7 +479,7 @@ fn modbus_tcp_master_a_channel_at_an_address_the_slave_lacks_fails_alone() {
                 && value_of(&after, "GVL.stDev.udiRounds") > rounds
                 && value_of(&after, "Main.udiCycles") > cycles)
                 .then_some(())
-                .ok_or(after)
+                .ok_or_else(|| anyhow::Error::msg(after))
         },
     );
     wait_until("rivet devices agreeing", || {
@@ -483,14 +489,16 @@ fn modbus_tcp_master_a_channel_at_an_address_the_slave_lacks_fails_alone() {
         ) && counter_of(&line, "rounds") > rounds as u64
             && counter_of(&line, "errors") > 0)
             .then_some(())
-            .ok_or(line)
+            .ok_or_else(|| anyhow::Error::msg(line))
     });
 
     // And the values go on following the slave.
     wait_for_the_round_trip(&mut slave, 60, target);
     wait_until("the missing channel still failing alone", || {
         let last = read(&fields, target);
-        failing_alone(&last).then_some(()).ok_or(last)
+        failing_alone(&last)
+            .then_some(())
+            .ok_or_else(|| anyhow::Error::msg(last))
     });
 }
 
@@ -564,7 +572,7 @@ fn modbus_tcp_master_against_a_second_rivet_runtime_as_the_slave() {
                 let copy = value_of(&read_slave, "Slave.copy");
                 (copy > last_copy && copy % 2 == 0 && copy / 2 <= counter)
                     .then(|| last_copy = copy)
-                    .ok_or(read_slave)
+                    .ok_or_else(|| anyhow::Error::msg(read_slave))
             },
         );
     }
@@ -583,13 +591,13 @@ fn modbus_tcp_master_against_a_second_rivet_runtime_as_the_slave() {
             && text_of(&read_master, "GVL.stDev.xConnected") == "TRUE"
             && text_of(&read_master, "GVL.stDev.xError") == "FALSE")
             .then_some(())
-            .ok_or(read_master)
+            .ok_or_else(|| anyhow::Error::msg(read_master))
     });
     wait_until("rivet devices saying communicating", || {
         let line = devices_line(target);
         line.starts_with("device 'Slave': communicating")
             .then_some(())
-            .ok_or(line)
+            .ok_or_else(|| anyhow::Error::msg(line))
     });
 }
 
@@ -655,7 +663,7 @@ fn wait_for_the_slave(slave: &mut PymodbusServer, table: &str, address: u16, val
         let held = slave.get(table, address);
         (held == value)
             .then_some(())
-            .ok_or_else(|| held.to_string())
+            .ok_or_else(|| anyhow::Error::msg(held.to_string()))
     });
 }
 
@@ -664,7 +672,9 @@ fn wait_for_the_slave(slave: &mut PymodbusServer, table: &str, address: u16, val
 fn wait_for_the_program(path: &str, value: i64, target: &str) {
     wait_until(&format!("{path} = {value}"), || {
         let seen = read(&[path], target);
-        (value_of(&seen, path) == value).then_some(()).ok_or(seen)
+        (value_of(&seen, path) == value)
+            .then_some(())
+            .ok_or_else(|| anyhow::Error::msg(seen))
     });
 }
 
@@ -709,7 +719,7 @@ fn modbus_rtu_master_with_two_units_on_a_socat_cable_and_a_pulled_cable() {
         (text_of(&status, "GVL.stOne.xConnected") == "TRUE"
             && text_of(&status, "GVL.stTwo.xConnected") == "TRUE")
             .then_some(())
-            .ok_or(status)
+            .ok_or_else(|| anyhow::Error::msg(status))
     });
     wait_until("rivet devices listing both devices communicating", || {
         let devices = ok(&["devices", "--target", target]);
@@ -718,7 +728,7 @@ fn modbus_rtu_master_with_two_units_on_a_socat_cable_and_a_pulled_cable() {
                 .lines()
                 .all(|line| line.contains(": communicating, last error ")))
         .then_some(())
-        .ok_or(devices)
+        .ok_or_else(|| anyhow::Error::msg(devices))
     });
 
     // The cable pulled: both devices of the port report a serial port error while the task
@@ -738,7 +748,9 @@ fn modbus_rtu_master_with_two_units_on_a_socat_cable_and_a_pulled_cable() {
         let reported = text_of(&seen, "GVL.stOne.eLastError").contains("SERIAL_PORT_ERROR")
             && text_of(&seen, "GVL.stTwo.eLastError").contains("SERIAL_PORT_ERROR")
             && value_of(&seen, "Main.udiCycles") > cycles;
-        reported.then_some(()).ok_or(seen)
+        reported
+            .then_some(())
+            .ok_or_else(|| anyhow::Error::msg(seen))
     });
     let devices = ok(&["devices", "--target", target]);
     assert!(
@@ -788,7 +800,9 @@ fn modbus_tcp_master_behind_a_slow_proxy_and_a_pulled_cable_reports_timeouts_and
             && text_of(&seen, "GVL.stDev.eLastError") == "RESPONSE_TIMEOUT"
             && value_of(&seen, "Main.udiCycles") > cycles
             && proxy.connections() > connections + 1;
-        reported.then_some(()).ok_or(seen)
+        reported
+            .then_some(())
+            .ok_or_else(|| anyhow::Error::msg(seen))
     });
     let line = devices_line(target);
     assert!(
@@ -803,7 +817,7 @@ fn modbus_tcp_master_behind_a_slow_proxy_and_a_pulled_cable_reports_timeouts_and
         let line = devices_line(target);
         line.starts_with("device 'Slave': communicating")
             .then_some(())
-            .ok_or(line)
+            .ok_or_else(|| anyhow::Error::msg(line))
     });
 
     // The cable pulled (§4.2): the request on the open connection times out, then so do the
@@ -833,13 +847,13 @@ fn modbus_tcp_master_behind_a_slow_proxy_and_a_pulled_cable_reports_timeouts_and
         let seen = read(&fields, target);
         pulled(&seen, &["RESPONSE_TIMEOUT", "TCP_COMMUNICATION_ERROR"])
             .then_some(())
-            .ok_or(seen)
+            .ok_or_else(|| anyhow::Error::msg(seen))
     });
     wait_until("then the connection attempts timing out", || {
         let seen = read(&fields, target);
         pulled(&seen, &["TCP_COMMUNICATION_ERROR"])
             .then_some(())
-            .ok_or(seen)
+            .ok_or_else(|| anyhow::Error::msg(seen))
     });
     // The detail is cut to 48 bytes on the wire (§9.1): its beginning names the timeout.
     let timed_out = format!(": cannot connect to {} within", proxy.address());
@@ -850,7 +864,7 @@ fn modbus_tcp_master_behind_a_slow_proxy_and_a_pulled_cable_reports_timeouts_and
             (line.starts_with("device 'Slave': not answering, last error TCP_COMMUNICATION_ERROR")
                 && line.contains(&timed_out))
             .then_some(())
-            .ok_or(line)
+            .ok_or_else(|| anyhow::Error::msg(line))
         },
     );
     wait_for_more_cycles(cycles, target);
@@ -862,6 +876,6 @@ fn modbus_tcp_master_behind_a_slow_proxy_and_a_pulled_cable_reports_timeouts_and
         let line = devices_line(target);
         line.starts_with("device 'Slave': communicating")
             .then_some(())
-            .ok_or(line)
+            .ok_or_else(|| anyhow::Error::msg(line))
     });
 }

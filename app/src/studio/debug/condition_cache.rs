@@ -7,6 +7,7 @@ use std::collections::HashMap;
 use std::sync::Arc;
 use std::sync::mpsc::{Receiver, TryRecvError, channel};
 
+use compiler::ConditionCompileError;
 use program_image::ImageHash;
 use project_model::Project;
 
@@ -33,8 +34,9 @@ pub struct CompiledCondition {
     pub image: ImageHash,
 }
 
-/// A condition compiled, or the compiler's message saying why it does not compile.
-pub type ConditionOutcome = Result<CompiledCondition, String>;
+/// A condition compiled, or the compiler's error saying why it does not compile, shared by
+/// the cache and every breakpoint with the same condition.
+pub type ConditionOutcome = Result<CompiledCondition, Arc<ConditionCompileError>>;
 
 /// Compiles `key`'s condition against `project`, on the calling thread.
 pub fn compile_condition(project: &Project, key: &ConditionKey) -> ConditionOutcome {
@@ -44,7 +46,7 @@ pub fn compile_condition(project: &Project, key: &ConditionKey) -> ConditionOutc
             bytes: compiled.condition.encode(),
             image: compiled.image,
         })
-        .map_err(|error| error.to_string())
+        .map_err(Arc::new)
 }
 
 /// The outcomes known, and the conditions compiling; lives with the login, never saved.

@@ -177,7 +177,7 @@ pub fn breakpoint_spec_with(
                 pou: statement.pou_name.clone(),
                 condition: expression.to_owned(),
             };
-            let compiled = compile(&key).map_err(failed)?;
+            let compiled = compile(&key).map_err(|error| failed(error.to_string()))?;
             if compiled.pou != statement.pou || compiled.image != key.image {
                 return Err(BreakpointError::OtherBuild {
                     place: place.clone(),

@@ -223,14 +223,17 @@ impl Online {
     }
 
     /// Reports the breakpoints the target refused, naming each one's place.
-    pub(super) fn breakpoints_set(&mut self, ids: Vec<Result<u16, String>>) {
+    pub(super) fn breakpoints_set<Refusal: std::fmt::Display>(
+        &mut self,
+        ids: Vec<Result<u16, Refusal>>,
+    ) {
         // The session answers each replacement in the order they were sent.
         let places = self.debugging.sent.pop_front().unwrap_or_default();
         for (place, id) in places.iter().zip(ids) {
             if let Err(reason) = id {
                 let text = DebugText::BreakpointNotSet.fill(
                     self.language,
-                    &[("place", &place.label()), ("reason", &reason)],
+                    &[("place", &place.label()), ("reason", &reason.to_string())],
                 );
                 self.debugging.problems.push((place.clone(), text.clone()));
                 self.error(text);

@@ -11,6 +11,7 @@ use online::device::Device;
 use project_model::{ModbusDevice, ModbusLink};
 use tokio::sync::mpsc as async_mpsc;
 
+use super::device_problem::DeviceProblem;
 use super::{LiveValue, Waker};
 use crate::modbus_devices::{ConnectError, channel_index, polled_bindings};
 use crate::studio::i18n::{Language, Text};
@@ -34,7 +35,7 @@ enum DeviceEvent {
     /// The device cannot be reached or refused something; the task tries again.
     Problem(String),
     /// A trace by polling ended: every poll with its time, or why it stopped.
-    Trace(Result<Vec<online::device::DeviceSnapshot>, String>),
+    Trace(Result<Vec<online::device::DeviceSnapshot>, online::OnlineError>),
 }
 
 /// One device being polled.
@@ -47,7 +48,7 @@ struct DeviceLink {
     forced: Vec<usize>,
     problem: Option<String>,
     /// A finished trace, until it is taken.
-    trace: Option<Result<Vec<online::device::DeviceSnapshot>, String>>,
+    trace: Option<Result<Vec<online::device::DeviceSnapshot>, online::OnlineError>>,
     task: tokio::task::JoinHandle<()>,
 }
 
@@ -225,10 +226,17 @@ impl DeviceLinks {
     }
 
     /// The last value of channel `index` of a polled `device`, or why there is none.
-    pub fn value(&self, device: &ModbusDevice, index: usize) -> Option<Result<&LiveValue, String>> {
+    pub fn value(
+        &self,
+        device: &ModbusDevice,
+        index: usize,
+    ) -> Option<Result<&LiveValue, DeviceProblem>> {
         let link = self.links.get(&device.name)?;
         if let Some(problem) = &link.problem {
-            return Some(Err(format!("{}: {problem}", device.name)));
+            return Some(Err(DeviceProblem::Unreachable {
+                device: device.name.clone(),
+                problem: problem.clone(),
+            }));
         }
         link.values.get(index).and_then(Option::as_ref).map(Ok)
     }
@@ -241,7 +249,7 @@ impl DeviceLinks {
         bytes: Vec<u8>,
         force: bool,
         language: Language,
-    ) -> Result<(), String> {
+    ) -> Result<(), DeviceProblem> {
         let link = self
             .links
             .get(&device.name)
@@ -263,7 +271,7 @@ impl DeviceLinks {
         samples: usize,
         interval: Duration,
         language: Language,
-    ) -> Result<(), String> {
+    ) -> Result<(), DeviceProblem> {
         let link = self
             .links
             .get_mut(device)
@@ -278,7 +286,7 @@ impl DeviceLinks {
     pub fn take_trace(
         &mut self,
         device: &str,
-    ) -> Option<Result<Vec<online::device::DeviceSnapshot>, String>> {
+    ) -> Option<Result<Vec<online::device::DeviceSnapshot>, online::OnlineError>> {
         self.links
             .get_mut(device)
             .and_then(|link| link.trace.take())
@@ -389,7 +397,7 @@ fn start(
                             Some(DeviceCommand::Trace(samples, every)) => {
                                 let traced = connected.trace(samples, every).await;
                                 let failed = traced.is_err();
-                                if !report(DeviceEvent::Trace(traced.map_err(|e| e.to_string()))) {
+                                if !report(DeviceEvent::Trace(traced)) {
                                     return;
                                 }
                                 if failed {
@@ -437,15 +445,19 @@ fn connect_problem(error: &ConnectError, language: Language) -> String {
 }
 
 /// Why a device cannot be written or traced: nothing polls it.
-fn not_polled(device: &str, language: Language) -> String {
-    Text::DeviceNotPolled
-        .get(language)
-        .replace("{device}", device)
+fn not_polled(device: &str, language: Language) -> DeviceProblem {
+    DeviceProblem::NotPolled {
+        device: device.to_owned(),
+        language,
+    }
 }
 
 /// Why a device command was refused: the device's queue is full.
-fn busy(device: &str, language: Language) -> String {
-    Text::DeviceBusy.get(language).replace("{device}", device)
+fn busy(device: &str, language: Language) -> DeviceProblem {
+    DeviceProblem::Busy {
+        device: device.to_owned(),
+        language,
+    }
 }
 
 #[cfg(test)]

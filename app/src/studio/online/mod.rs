@@ -6,6 +6,7 @@
 
 mod background;
 mod debug_target;
+mod device_problem;
 pub(crate) mod devices;
 mod events;
 mod frame_locals;
@@ -14,6 +15,7 @@ mod login_change;
 mod login_choice;
 pub(crate) mod modbus_reports;
 mod simulator;
+mod trace_problem;
 mod trace_run;
 mod tracing;
 mod writes;
@@ -566,7 +568,7 @@ impl Online {
         match self.bound(path) {
             Some(devices::Bound::Polled(device, channel)) => {
                 match self.devices.value(device, channel) {
-                    Some(Err(problem)) => Some(problem),
+                    Some(Err(problem)) => Some(problem.to_string()),
                     _ => None,
                 }
             }

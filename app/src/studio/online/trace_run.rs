@@ -6,7 +6,8 @@ use std::collections::HashMap;
 use online::{Resolved, Sample, TraceConfig, TraceState, TraceStatus, Trigger};
 use project_model::TraceTriggerCondition;
 
-use crate::studio::i18n::{Language, Text};
+use super::trace_problem::TraceProblem;
+use crate::studio::i18n::Language;
 use crate::value_text::is_bool;
 
 /// Where a trace is.
@@ -93,23 +94,26 @@ impl TraceRun {
         config: &project_model::TraceConfig,
         tasks: &[String],
         language: Language,
-    ) -> Result<Vec<String>, String> {
-        let text = |text: Text| text.get(language);
+    ) -> Result<Vec<String>, TraceProblem> {
         let task = tasks
             .iter()
             .position(|task| task.eq_ignore_ascii_case(&config.task))
-            .ok_or_else(|| text(Text::ProgramHasNoTask).replace("{task}", &config.task))?;
-        let task_index = u8::try_from(task).map_err(|_| text(Text::TooManyTasks).to_owned())?;
+            .ok_or_else(|| TraceProblem::NoSuchTask {
+                task: config.task.clone(),
+                language,
+            })?;
+        let task_index = u8::try_from(task).map_err(|_| TraceProblem::TooManyTasks { language })?;
         if config.variables.is_empty() {
-            return Err(text(Text::NoVariablesToRecord).to_owned());
+            return Err(TraceProblem::NoVariables { language });
         }
         if config.record_count == 0 {
-            return Err(text(Text::RecordCountZero).to_owned());
+            return Err(TraceProblem::RecordCountZero { language });
         }
         if config.every_n_cycles == 0 || config.every_n_cycles > u32::from(u16::MAX) {
-            return Err(text(Text::EveryNthRange)
-                .replace("{max}", &u16::MAX.to_string())
-                .replace("{value}", &config.every_n_cycles.to_string()));
+            return Err(TraceProblem::EveryNthOutOfRange {
+                every_n_cycles: config.every_n_cycles,
+                language,
+            });
         }
         let mut paths: Vec<String> = config.variables.iter().map(|v| v.path.clone()).collect();
         if let Some(trigger) = &config.trigger {
@@ -125,23 +129,27 @@ impl TraceRun {
         Ok(paths)
     }
 
-    /// The configuration to send, once every path is resolved (once per run).
-    pub fn configuration(
+    /// The configuration to send, once every path is resolved (once per run). `resolved` holds
+    /// the session's answers; a refused path is reported with the session's reason.
+    pub fn configuration<ResolveError: std::fmt::Display>(
         &mut self,
-        resolved: &HashMap<String, Result<Resolved, String>>,
+        resolved: &HashMap<String, Result<Resolved, ResolveError>>,
         language: Language,
-    ) -> Result<Option<TraceConfig>, String> {
+    ) -> Result<Option<TraceConfig>, TraceProblem> {
         if self.phase != TracePhase::Resolving {
             return Ok(None);
         }
         let Some(config) = &self.config else {
             return Ok(None);
         };
-        let lookup = |path: &str| -> Result<Option<Resolved>, String> {
+        let lookup = |path: &str| -> Result<Option<Resolved>, TraceProblem> {
             match resolved.get(path) {
                 None => Ok(None),
                 Some(Ok(resolved)) => Ok(Some(*resolved)),
-                Some(Err(reason)) => Err(format!("{path}: {reason}")),
+                Some(Err(reason)) => Err(TraceProblem::NotResolved {
+                    path: path.to_owned(),
+                    reason: reason.to_string(),
+                }),
             }
         };
         let mut variables = Vec::new();
@@ -159,9 +167,10 @@ impl TraceRun {
                 };
                 if !is_bool(&found) {
                     self.phase = TracePhase::Idle;
-                    return Err(Text::TriggerNotBool
-                        .get(language)
-                        .replace("{name}", &trigger.variable));
+                    return Err(TraceProblem::TriggerNotBool {
+                        name: trigger.variable.clone(),
+                        language,
+                    });
                 }
                 match trigger.condition {
                     TraceTriggerCondition::Rising => Trigger::Rising(found.place),

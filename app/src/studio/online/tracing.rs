@@ -7,6 +7,7 @@ use online::{Place, Resolved};
 
 use super::Online;
 use super::devices::Bound;
+use super::trace_problem::TraceProblem;
 use crate::studio::i18n::Text;
 
 impl Online {
@@ -39,28 +40,37 @@ impl Online {
     }
 
     /// Starts recording a trace of device channels by polling the device.
-    fn device_trace_start(&mut self, config: &project_model::TraceConfig) -> Result<(), String> {
+    fn device_trace_start(
+        &mut self,
+        config: &project_model::TraceConfig,
+    ) -> Result<(), TraceProblem> {
+        let language = self.language;
         let mut device_name = None;
         let mut variables = Vec::new();
         for variable in &config.variables {
             let (device, index) = match self.bound(&variable.path) {
                 Some(Bound::Polled(device, index)) => (device, index),
                 Some(Bound::SeveralValues(_, count)) => {
-                    return Err(self.several_values(&variable.path, count));
+                    return Err(TraceProblem::SeveralValues {
+                        path: variable.path.clone(),
+                        count,
+                        language,
+                    });
                 }
                 _ => {
-                    return Err(self
-                        .text(Text::NotBoundToDevice)
-                        .replace("{path}", &variable.path));
+                    return Err(TraceProblem::NotBoundToDevice {
+                        path: variable.path.clone(),
+                        language,
+                    });
                 }
             };
             if device_name.get_or_insert_with(|| device.name.clone()) != &device.name {
-                return Err(self.text(Text::DifferentDevices).to_owned());
+                return Err(TraceProblem::DifferentDevices { language });
             }
             let channels = crate::modbus_devices::channels_of(device);
             let channel = channels
                 .get(index)
-                .ok_or(self.text(Text::BindingNoChannel))?;
+                .ok_or(TraceProblem::BindingNoChannel { language })?;
             let resolved = Resolved {
                 place: Place {
                     region: 0,
@@ -74,14 +84,14 @@ impl Online {
             variables.push((variable.path.clone(), resolved));
         }
         if config.trigger.is_some() {
-            return Err(self.text(Text::DeviceTraceNoTrigger).to_owned());
+            return Err(TraceProblem::DeviceTraceNoTrigger { language });
         }
-        let device_name = device_name.ok_or(self.text(Text::NoVariablesToRecord))?;
+        let device_name = device_name.ok_or(TraceProblem::NoVariables { language })?;
         let device = self
             .project_devices
             .iter()
             .find(|d| d.name == device_name)
-            .ok_or(self.text(Text::DeviceGone))?;
+            .ok_or(TraceProblem::DeviceGone { language })?;
         let interval = Duration::from_millis(
             u64::from(device.studio_poll_interval_ms().max(10))
                 * u64::from(config.every_n_cycles.max(1)),

@@ -2,12 +2,23 @@
 
 use online::Place;
 use online::session::Command;
+use thiserror::Error;
 
 use super::devices::Bound;
 use super::{ForceSource, ForcedValue, Online, Refusal, devices};
 use crate::studio::error_texts::value_error_text;
 use crate::studio::i18n::Text;
 use crate::value_text::{describe_place, show};
+
+/// Why a typed value was refused before it was sent: the reason as the watch shows it, in the
+/// interface language (its type's refusal, a channel the studio does not read, or a path the
+/// target does not know).
+#[derive(Debug, Error)]
+#[error("{reason}")]
+pub struct ValueRefused {
+    /// The reason, already in the interface language.
+    pub reason: String,
+}
 
 /// Typed values turned into bytes, by where they go.
 #[derive(Default)]
@@ -76,10 +87,12 @@ impl Online {
     }
 
     /// Checks a typed value against its variable's type without sending it.
-    pub fn check_value(&self, path: &str, text: &str) -> Result<(), String> {
+    pub fn check_value(&self, path: &str, text: &str) -> Result<(), ValueRefused> {
         match self.encode(&[(path.to_owned(), text.to_owned())]) {
             Ok(_) => Ok(()),
-            Err(mut refused) => Err(refused.pop().map(|(_, reason)| reason).unwrap_or_default()),
+            Err(mut refused) => Err(ValueRefused {
+                reason: refused.pop().map(|(_, reason)| reason).unwrap_or_default(),
+            }),
         }
     }
 
@@ -115,7 +128,7 @@ impl Online {
                 .devices
                 .send(device, index, bytes, force, self.language)
             {
-                refused.push((path, reason));
+                refused.push((path, reason.to_string()));
             }
         }
         if !encoded.target.is_empty() {

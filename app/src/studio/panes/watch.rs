@@ -306,7 +306,7 @@ fn prepared_cell(
                     state.typing.remove(&entry.path);
                     committed = Some(text.trim().to_owned());
                 }
-                Err(reason) => state.refused.push((entry.path.clone(), reason)),
+                Err(refusal) => state.refused.push((entry.path.clone(), refusal.reason)),
             }
         } else if field.lost_focus() {
             state.typing.remove(&entry.path);
