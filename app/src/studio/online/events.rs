@@ -192,8 +192,7 @@ impl Online {
                     self.resolving.remove(&path);
                     // The studio shows a refusal in the target's words, as the session's
                     // error says them.
-                    self.resolved
-                        .insert(path, answer.map_err(|error| error.to_string()));
+                    self.resolved.insert(path, answer);
                 }
                 self.refresh_watch();
                 self.advance_trace();

@@ -167,7 +167,7 @@ pub struct Online {
     target_state: Option<TargetState>,
     target_identity: Option<Identity>,
     image: Option<BuiltImage>,
-    resolved: HashMap<String, Result<Resolved, String>>,
+    resolved: HashMap<String, Result<Resolved, online::OnlineError>>,
     resolving: HashSet<String>,
     /// The paths whose places were last sent as the watch list, in that order.
     watched: Vec<String>,
@@ -575,7 +575,7 @@ impl Online {
             Some(devices::Bound::SeveralValues(_, count)) => Some(self.several_values(path, count)),
             Some(devices::Bound::RuntimeWhenLoggedIn) => None,
             Some(devices::Bound::Runtime) | None => match self.resolved.get(path) {
-                Some(Err(reason)) => Some(reason.clone()),
+                Some(Err(reason)) => Some(reason.to_string()),
                 _ => None,
             },
         }

@@ -75,7 +75,7 @@ impl Online {
                         }
                     }
                 }
-                Some(Err(reason)) => refused.push((path.clone(), reason.clone())),
+                Some(Err(reason)) => refused.push((path.clone(), reason.to_string())),
                 None => refused.push((path.clone(), self.text(Text::NotKnownOnTarget).to_owned())),
             }
         }
