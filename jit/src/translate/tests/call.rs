@@ -499,11 +499,7 @@ fn nested_calls_count_their_depth_and_copy_large_transfers() {
     for offset in 1..100 {
         assert_eq!(host.get(100 + offset, 1), u64::from(offset));
     }
-    let depths: Vec<(Site, u32)> = host
-        .ticks
-        .iter()
-        .map(|(site, counters)| (*site, counters.depth))
-        .collect();
+    let depths = tick_depths(&host);
     assert_eq!(depths, vec![(site(0, 0), 0), (site(1, 1), 1)]);
     // Calls, frames and transfers emit no trap (§7 rule 5).
     for listing in &fixture.code.listings {
@@ -588,11 +584,7 @@ fn the_enter_stub_reports_a_frame_past_the_stack_at_its_call_site() {
     assert_eq!(run_entry(&fixture, &mut host, 0, true), Status::Ok);
     assert_eq!(host.get(32, 4), 8);
     assert_eq!(host.get(44, 4), 5);
-    let depths: Vec<(Site, u32)> = host
-        .ticks
-        .iter()
-        .map(|(site, counters)| (*site, counters.depth))
-        .collect();
+    let depths = tick_depths(&host);
     assert_eq!(depths, vec![(site(0, 0), 0), (site(1, 1), 1)]);
 }
 
@@ -800,11 +792,7 @@ fn the_prepare_stub_reports_a_frame_past_the_stack_at_its_call_site() {
     let mut host = host_with_inputs(&fixture, 8);
     assert_eq!(run_entry(&fixture, &mut host, 0, true), Status::Ok);
     assert_eq!((host.get(12, 4), host.get(8, 4)), (5, 7));
-    let depths: Vec<(Site, u32)> = host
-        .ticks
-        .iter()
-        .map(|(site, counters)| (*site, counters.depth))
-        .collect();
+    let depths = tick_depths(&host);
     assert_eq!(depths, vec![(site(0, 0), 0), (site(1, 1), 1)]);
 }
 
@@ -820,11 +808,7 @@ fn a_call_with_inputs_stops_at_its_call_site_when_the_safe_point_ends_the_cycle(
         host.stop_at = Some(stop);
         // `run_entry` checks that the depth counted in by the outer stub is counted out.
         assert_eq!(run_entry(&fixture, &mut host, 0, true), Status::Faulted);
-        let depths: Vec<(Site, u32)> = host
-            .ticks
-            .iter()
-            .map(|(site, counters)| (*site, counters.depth))
-            .collect();
+        let depths = tick_depths(&host);
         let expected = [(site(0, 0), 0), (site(1, 1), 1)];
         let reached = if stop == site(0, 0) { 1 } else { 2 };
         assert_eq!(depths, expected[..reached], "stopped at {stop:?}");
@@ -855,11 +839,7 @@ fn an_input_over_64_bytes_is_copied_by_the_host_into_the_prepared_frame() {
     assert_eq!(host.frames, vec![(2, sum_frame)]);
     // `Pass`'s 4-byte input is copied inline.
     assert_eq!(host.copies, vec![(sum_frame, input, 100)]);
-    let depths: Vec<(Site, u32)> = host
-        .ticks
-        .iter()
-        .map(|(site, counters)| (*site, counters.depth))
-        .collect();
+    let depths = tick_depths(&host);
     assert_eq!(depths, vec![(site(0, 0), 0), (site(1, 1), 1)]);
     // A copy the host refuses is `Memory` at `Pass`'s call site; `Sum` does not run, and
     // its depth stays counted, as the interpreter's `?` leaves it after `push_frame` (§4.4):
@@ -901,4 +881,12 @@ fn call_sites_share_their_callee_stub() {
     let per_site = (calls(200) - calls(100)) / 100;
     // 49 bytes on x86-64 when written; aarch64 instructions take 4 bytes each.
     assert!(per_site <= 96, "{per_site} bytes per call site");
+}
+
+/// The site and the call depth of every tick the host saw, in order.
+fn tick_depths(host: &TestHost) -> Vec<(Site, u32)> {
+    host.ticks
+        .iter()
+        .map(|(site, counters)| (*site, counters.depth))
+        .collect()
 }
