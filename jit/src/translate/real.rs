@@ -164,17 +164,13 @@ impl Translator<'_, '_> {
     /// Whether the constant pool is folded and holds a number (no NaN) of type `ir` at
     /// `offset`.
     fn constant_is_a_number(&self, ir: Type, offset: u32) -> bool {
-        let number = self.folded_constants.and_then(|pool| {
-            let bytes = pool.get(offset as usize..)?;
-            Some(if ir == types::F32 {
-                let raw: [u8; 4] = bytes.get(..4)?.try_into().ok()?;
-                !f32::from_le_bytes(raw).is_nan()
+        self.folded_bits(ir, offset).is_some_and(|bits| {
+            if ir == types::F32 {
+                !f32::from_bits(bits as u32).is_nan()
             } else {
-                let raw: [u8; 8] = bytes.get(..8)?.try_into().ok()?;
-                !f64::from_le_bytes(raw).is_nan()
-            })
-        });
-        number == Some(true)
+                !f64::from_bits(bits).is_nan()
+            }
+        })
     }
 
     /// `Binary` on a real; false to leave it to the host.

@@ -72,17 +72,23 @@ impl Translator<'_, '_> {
     /// The value of type `ty` at `offset` of the constant pool as an immediate, when the pool
     /// may be folded; floats keep their stored bits.
     pub(crate) fn folded_constant(&mut self, ty: Type, offset: u32) -> Option<Value> {
-        let pool = self.folded_constants?;
-        let size = ty.bytes() as usize;
-        let bytes = pool.get(offset as usize..)?.get(..size)?;
-        let mut raw = [0u8; 8];
-        raw[..size].copy_from_slice(bytes);
-        let bits = u64::from_le_bytes(raw);
+        let bits = self.folded_bits(ty, offset)?;
         Some(match ty {
             types::F32 => self.builder.ins().f32const(Ieee32::with_bits(bits as u32)),
             types::F64 => self.builder.ins().f64const(Ieee64::with_bits(bits)),
             _ => self.builder.ins().iconst(ty, bits as i64),
         })
+    }
+
+    /// The bits of the `ty` value at `offset` of the constant pool, when the pool may be
+    /// folded.
+    pub(crate) fn folded_bits(&self, ty: Type, offset: u32) -> Option<u64> {
+        let pool = self.folded_constants?;
+        let size = ty.bytes() as usize;
+        let bytes = pool.get(offset as usize..)?.get(..size)?;
+        let mut raw = [0u8; 8];
+        raw[..size].copy_from_slice(bytes);
+        Some(u64::from_le_bytes(raw))
     }
 
     /// `value` of integer type `from` as integer type `to`: narrowed to its low bits, or

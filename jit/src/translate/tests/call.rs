@@ -12,18 +12,6 @@ const F: fn(u32) -> Operand = Operand::Frame;
 /// A data offset the methods' instances lie at (below the program's instance).
 const OBJECT_AT: u64 = 100;
 
-fn pou(name: &str, kind: PouKind, frame_size: u32, instance_size: u32, code: Vec<Instr>) -> Pou {
-    Pou {
-        name: name.into(),
-        kind,
-        frame_size,
-        frame_init: Vec::new(),
-        instance_size,
-        code,
-        lines: Vec::new(),
-    }
-}
-
 /// An image of the program `main` (POU 0, on the fixture's instance) and `callees`.
 fn fixture(main: Vec<Instr>, callees: Vec<Pou>, stack_size: u32) -> Fixture {
     let mut image = image(main, vec![0; 16]);

@@ -345,6 +345,19 @@ const PURE: PureFunctions = PureFunctions {
     trunc,
 };
 
+/// A POU of `kind` with `code`, its frame and instance sizes, and nothing else.
+fn pou(name: &str, kind: PouKind, frame_size: u32, instance_size: u32, code: Vec<Instr>) -> Pou {
+    Pou {
+        name: name.into(),
+        kind,
+        frame_size,
+        frame_init: Vec::new(),
+        instance_size,
+        code,
+        lines: Vec::new(),
+    }
+}
+
 fn image(code: Vec<Instr>, constants: Vec<u8>) -> ProgramImage {
     ProgramImage {
         layout: Sizes {

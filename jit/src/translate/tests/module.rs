@@ -516,15 +516,6 @@ fn many_pous() -> ProgramImage {
             size: 4,
         }],
     };
-    let pou = |name: String, kind, frame_size, instance_size, code| Pou {
-        name,
-        kind,
-        frame_size,
-        frame_init: Vec::new(),
-        instance_size,
-        code,
-        lines: Vec::new(),
-    };
     // FOR I(0) := 1 TO 1000 DO I(4) := I(4) + I(0); END_FOR, the constants 1 and 1000.
     let mut main = vec![
         Instr::Move {
@@ -562,7 +553,7 @@ fn many_pous() -> ProgramImage {
             code.push(block_call(block + 1, I(0)));
         }
         image.pous.push(pou(
-            format!("Block{block}"),
+            &format!("Block{block}"),
             PouKind::FunctionBlock,
             8,
             8,
@@ -571,7 +562,7 @@ fn many_pous() -> ProgramImage {
     }
     for function in 31..=40 {
         image.pous.push(pou(
-            format!("Function{function}"),
+            &format!("Function{function}"),
             PouKind::Function,
             16,
             0,
@@ -579,21 +570,21 @@ fn many_pous() -> ProgramImage {
         ));
     }
     image.pous.push(pou(
-        crate::translate::REFUSED_IN_TESTS.into(),
+        crate::translate::REFUSED_IN_TESTS,
         PouKind::Function,
         16,
         0,
         vec![add(Operand::Frame(4), Operand::Frame(0), Operand::Frame(0))],
     ));
     image.pous.push(pou(
-        crate::compile::COMPILE_PANICS_IN_TESTS.into(),
+        crate::compile::COMPILE_PANICS_IN_TESTS,
         PouKind::FunctionBlock,
         8,
         8,
         vec![add(I(0), I(0), I(4))],
     ));
     image.pous.push(pou(
-        crate::translate::TRANSLATE_PANICS_IN_TESTS.into(),
+        crate::translate::TRANSLATE_PANICS_IN_TESTS,
         PouKind::FunctionBlock,
         8,
         8,
