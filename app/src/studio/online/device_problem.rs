@@ -9,7 +9,7 @@ use crate::studio::i18n::{Language, Text};
 #[derive(Debug, Error)]
 pub enum DeviceProblem {
     /// Nothing polls the device, so it cannot be written or traced.
-    #[error("{}", Text::DeviceNotPolled.get(*language).replace("{device}", device))]
+    #[error("{}", Text::DeviceNotPolled.fill(*language, &[("device", device)]))]
     NotPolled {
         /// The device's name.
         device: String,
@@ -17,7 +17,7 @@ pub enum DeviceProblem {
         language: Language,
     },
     /// The device's queue of commands is full.
-    #[error("{}", Text::DeviceBusy.get(*language).replace("{device}", device))]
+    #[error("{}", Text::DeviceBusy.fill(*language, &[("device", device)]))]
     Busy {
         /// The device's name.
         device: String,

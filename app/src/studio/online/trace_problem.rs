@@ -10,7 +10,7 @@ use crate::studio::i18n::{Language, Text};
 #[derive(Debug, Error)]
 pub enum TraceProblem {
     /// The trace's task is not one of the program's tasks.
-    #[error("{}", Text::ProgramHasNoTask.get(*language).replace("{task}", task))]
+    #[error("{}", Text::ProgramHasNoTask.fill(*language, &[("task", task)]))]
     NoSuchTask {
         /// The task the trace names.
         task: String,
@@ -38,10 +38,10 @@ pub enum TraceProblem {
     /// Every n-th cycle is 0 or beyond the protocol's 16 bits.
     #[error(
         "{}",
-        Text::EveryNthRange
-            .get(*language)
-            .replace("{max}", &u16::MAX.to_string())
-            .replace("{value}", &every_n_cycles.to_string())
+        Text::EveryNthRange.fill(
+            *language,
+            &[("max", &u16::MAX.to_string()), ("value", &every_n_cycles.to_string())]
+        )
     )]
     EveryNthOutOfRange {
         /// The configured number of cycles between two samples.
@@ -58,7 +58,7 @@ pub enum TraceProblem {
         reason: String,
     },
     /// The trigger variable is not a BOOL.
-    #[error("{}", Text::TriggerNotBool.get(*language).replace("{name}", name))]
+    #[error("{}", Text::TriggerNotBool.fill(*language, &[("name", name)]))]
     TriggerNotBool {
         /// The trigger variable's path.
         name: String,
@@ -80,7 +80,7 @@ pub enum TraceProblem {
         language: Language,
     },
     /// A variable of a device trace is bound to no device the studio polls.
-    #[error("{}", Text::NotBoundToDevice.get(*language).replace("{path}", path))]
+    #[error("{}", Text::NotBoundToDevice.fill(*language, &[("path", path)]))]
     NotBoundToDevice {
         /// The variable's path.
         path: String,
